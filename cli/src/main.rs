@@ -1,0 +1,2 @@
+//! The `nyquist` command line (filled in by the foundation work).
+fn main() {}

@@ -1,0 +1,1 @@
+//! Reconstruction filters (filled in by the filters work).

@@ -1,0 +1,54 @@
+//! # nyquist
+//!
+//! Sampling and reconstruction for image synthesis, as a `#![no_std]` library that never
+//! allocates: radical inverses and the Halton, Hammersley, Zaremba, Sobol and (0,2) point sets,
+//! stratified and Latin-hypercube sampling over caller buffers, and reconstruction filters.
+//!
+//! ```
+//! use nyquist::sequence::{Halton, Sequence};
+//!
+//! let halton = Halton::new(2).unwrap();
+//! // Point 1 of the Halton sequence is (1/2, 1/3).
+//! assert_eq!(halton.sample(1, 0), 0.5);
+//! assert!((halton.sample(1, 1) - 1.0 / 3.0).abs() < 1e-7);
+//! ```
+//!
+//! ## Conventions
+//!
+//! - Every value a generator returns lies in `[0, 1)`: results are clamped to
+//!   [`ONE_MINUS_EPSILON`] (`f32`) or [`ONE_MINUS_EPSILON_F64`].
+//! - Sequence indices are `u64`; dimensions are `u32`.
+//! - Functions that can be handed bad input return [`Result`] with [`Error`]; per-value functions
+//!   are total and document what they do with out-of-range arguments (they never panic).
+//!
+//! ## Limits
+//!
+//! - Radical-inverse based sets (Halton and friends) have 1024 dimensions, one per prime
+//!   2 … 8161; Sobol has 1024 dimensions (Joe–Kuo `new-joe-kuo-6.21201`) and 32-bit indices.
+//!
+//! ## `no_std`
+//!
+//! The crate is always `#![no_std]` and uses no `alloc`; `tests/nostd-probe` in the repository
+//! proves it by linking the crate into a staticlib that has neither. There is no `unsafe` code.
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+#![doc(test(attr(deny(warnings))))]
+
+#[cfg(test)]
+extern crate std;
+
+pub mod error;
+pub mod filter;
+pub mod hash;
+pub mod math;
+pub mod radical;
+pub mod rng;
+pub mod sequence;
+pub mod stratify;
+
+#[cfg(test)]
+mod tests;
+
+pub use error::Error;
+pub use math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};

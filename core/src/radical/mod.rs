@@ -1,0 +1,1 @@
+//! Radical inverses (filled in by the foundation work).

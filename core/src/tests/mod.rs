@@ -1,0 +1,1 @@
+//! Naive oracles shared by the unit tests (test builds only).

@@ -1,0 +1,3 @@
+//! Cross-crate conformance tests: one test binary, a module per topic.
+
+mod helpers;
