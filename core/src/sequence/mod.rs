@@ -26,8 +26,8 @@ mod zero_two;
 // pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 // pub use hammersley::{Hammersley, HammersleyZaremba};
 
-// pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
-// pub use zero_two::ZeroTwo;
+pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
+pub use zero_two::ZeroTwo;
 
 /// A deterministic point set in `[0, 1)^d`, addressed by index.
 ///
@@ -122,9 +122,9 @@ pub fn check_fill(
         });
     }
     let n = u64::try_from(len / dims as usize).map_err(|_| Error::TooMany { what: "points" })?;
-    let end = first
-        .checked_add(n)
-        .ok_or(Error::TooMany { what: "index range" })?;
+    let end = first.checked_add(n).ok_or(Error::TooMany {
+        what: "index range",
+    })?;
     if let Some(count) = point_count
         && end > count
     {
