@@ -1,0 +1,239 @@
+//! Stratified sampling in one and two dimensions: one sample per stratum, jittered or centred.
+
+use rand_core::Rng;
+
+use super::place;
+use crate::{Error, rng::uniform_f32};
+
+/// Where a stratified sample sits inside its stratum.
+///
+/// ```
+/// use nyquist::rng::default_rng;
+/// use nyquist::stratify::{Jitter, stratified_1d};
+/// let mut xs = [0.0f32; 4];
+/// stratified_1d(&mut xs, Jitter::Centered, &mut default_rng(0)).unwrap();
+/// assert_eq!(xs, [0.125, 0.375, 0.625, 0.875]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Jitter {
+    /// Uniformly random inside the stratum (one generator draw per coordinate).
+    Jittered,
+    /// At the stratum's centre, `(k + ½) / n`: the seed's "uniform" baseline; draws nothing.
+    Centered,
+}
+
+/// Fills `out` with `n = out.len()` stratified samples of `[0, 1)`: sample `k` lies in stratum
+/// `[k/n, (k+1)/n)`, in stratum order (shuffle them with [`super::shuffle`] if needed).
+/// Values are in `[0, 1)`. Allocates: no.
+///
+/// # Errors
+/// [`Error::ZeroSize`] if `out` is empty; [`Error::TooMany`] if `out.len()` exceeds `u32::MAX`.
+///
+/// ```
+/// use nyquist::rng::default_rng;
+/// use nyquist::stratify::{Jitter, stratified_1d};
+/// let mut xs = [0.0f32; 10];
+/// stratified_1d(&mut xs, Jitter::Jittered, &mut default_rng(3)).unwrap();
+/// for (k, &x) in xs.iter().enumerate() {
+///     assert_eq!((x * 10.0) as usize, k);
+/// }
+/// assert!(stratified_1d(&mut [], Jitter::Jittered, &mut default_rng(3)).is_err());
+/// ```
+pub fn stratified_1d<R: Rng + ?Sized>(
+    out: &mut [f32],
+    jitter: Jitter,
+    rng: &mut R,
+) -> Result<(), Error> {
+    if out.is_empty() {
+        return Err(Error::ZeroSize { what: "samples" });
+    }
+    let n = u32::try_from(out.len()).map_err(|_| Error::TooMany { what: "samples" })?;
+    let inv = 1.0 / n as f32;
+    match jitter {
+        Jitter::Jittered => {
+            for (k, x) in (0..n).zip(out.iter_mut()) {
+                *x = place(k, uniform_f32(rng), n, inv);
+            }
+        }
+        Jitter::Centered => {
+            for (k, x) in (0..n).zip(out.iter_mut()) {
+                *x = place(k, 0.5, n, inv);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Fills `out` with one point per cell of an `nx × ny` grid over `[0, 1)²`, as
+/// `[x0, y0, x1, y1, …]`, cell `(i, j)` (column `i`, row `j`) at point `j · nx + i`.
+/// `out.len()` must be exactly `2 · nx · ny`. Values are in `[0, 1)`. Allocates: no.
+///
+/// # Errors
+/// [`Error::ZeroSize`] if `nx` or `ny` is 0; [`Error::TooMany`] if `2 · nx · ny` overflows
+/// `usize`; [`Error::BufferTooShort`] if `out` is shorter than `2 · nx · ny`;
+/// [`Error::BufferLength`] if it is longer.
+///
+/// ```
+/// use nyquist::{Error, rng::default_rng, stratify::{Jitter, stratified_2d}};
+/// let mut rng = default_rng(5);
+/// let mut pts = [0.0f32; 2 * 3 * 2];
+/// stratified_2d(&mut pts, 3, 2, Jitter::Centered, &mut rng).unwrap();
+/// assert_eq!(&pts[..4], &[1.0 / 6.0, 0.25, 0.5, 0.25]);
+/// assert_eq!(
+///     stratified_2d(&mut pts, 4, 2, Jitter::Jittered, &mut rng),
+///     Err(Error::BufferTooShort { needed: 16, actual: 12 })
+/// );
+/// ```
+pub fn stratified_2d<R: Rng + ?Sized>(
+    out: &mut [f32],
+    nx: u32,
+    ny: u32,
+    jitter: Jitter,
+    rng: &mut R,
+) -> Result<(), Error> {
+    if nx == 0 {
+        return Err(Error::ZeroSize { what: "nx" });
+    }
+    if ny == 0 {
+        return Err(Error::ZeroSize { what: "ny" });
+    }
+    let needed = (nx as usize)
+        .checked_mul(ny as usize)
+        .and_then(|c| c.checked_mul(2))
+        .ok_or(Error::TooMany { what: "nx * ny" })?;
+    if out.len() < needed {
+        return Err(Error::BufferTooShort {
+            needed,
+            actual: out.len(),
+        });
+    }
+    if out.len() > needed {
+        return Err(Error::BufferLength {
+            multiple_of: needed,
+            actual: out.len(),
+        });
+    }
+    let (inv_x, inv_y) = (1.0 / nx as f32, 1.0 / ny as f32);
+    let mut points = out.chunks_exact_mut(2);
+    for j in 0..ny {
+        match jitter {
+            Jitter::Jittered => {
+                for (i, p) in (0..nx).zip(&mut points) {
+                    let (u, v) = (uniform_f32(rng), uniform_f32(rng));
+                    p[0] = place(i, u, nx, inv_x);
+                    p[1] = place(j, v, ny, inv_y);
+                }
+            }
+            Jitter::Centered => {
+                let y = place(j, 0.5, ny, inv_y);
+                for (i, p) in (0..nx).zip(&mut points) {
+                    p[0] = place(i, 0.5, nx, inv_x);
+                    p[1] = y;
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::default_rng;
+    use proptest::prelude::*;
+
+    fn stratum(x: f32, n: u32) -> u32 {
+        (f64::from(x) * f64::from(n)) as u32
+    }
+
+    proptest! {
+        #[test]
+        fn one_sample_per_stratum_1d(n in 1usize..600, seed: u64, centered: bool) {
+            let jitter = if centered { Jitter::Centered } else { Jitter::Jittered };
+            let mut buf = std::vec![0.0f32; n];
+            stratified_1d(&mut buf, jitter, &mut default_rng(seed)).unwrap();
+            for (k, &x) in buf.iter().enumerate() {
+                prop_assert!((0.0..1.0).contains(&x));
+                prop_assert_eq!(stratum(x, n as u32), k as u32);
+            }
+        }
+
+        #[test]
+        fn one_point_per_cell_2d(nx in 1u32..50, ny in 1u32..50, seed: u64, centered: bool) {
+            let jitter = if centered { Jitter::Centered } else { Jitter::Jittered };
+            let mut buf = std::vec![0.0f32; (2 * nx * ny) as usize];
+            stratified_2d(&mut buf, nx, ny, jitter, &mut default_rng(seed)).unwrap();
+            for (c, p) in buf.chunks_exact(2).enumerate() {
+                prop_assert!((0.0..1.0).contains(&p[0]) && (0.0..1.0).contains(&p[1]));
+                prop_assert_eq!(stratum(p[0], nx), c as u32 % nx);
+                prop_assert_eq!(stratum(p[1], ny), c as u32 / nx);
+            }
+        }
+
+        #[test]
+        fn bad_sizes_are_errors(len in 0usize..64, nx in 0u32..6, ny in 0u32..6) {
+            let mut buf = std::vec![0.0f32; len];
+            let r = stratified_2d(&mut buf, nx, ny, Jitter::Jittered, &mut default_rng(0));
+            let needed = 2 * (nx * ny) as usize;
+            let expected = if nx == 0 {
+                Err(Error::ZeroSize { what: "nx" })
+            } else if ny == 0 {
+                Err(Error::ZeroSize { what: "ny" })
+            } else if len < needed {
+                Err(Error::BufferTooShort { needed, actual: len })
+            } else if len > needed {
+                Err(Error::BufferLength { multiple_of: needed, actual: len })
+            } else {
+                Ok(())
+            };
+            prop_assert_eq!(r, expected);
+        }
+    }
+
+    #[test]
+    fn overflowing_grid_is_too_many_not_a_panic() {
+        let mut buf = [0.0f32; 4];
+        let r = stratified_2d(
+            &mut buf,
+            u32::MAX,
+            u32::MAX,
+            Jitter::Jittered,
+            &mut default_rng(0),
+        );
+        if usize::BITS <= 64 {
+            assert_eq!(r, Err(Error::TooMany { what: "nx * ny" }));
+        }
+        assert_eq!(
+            stratified_1d(&mut [], Jitter::Centered, &mut default_rng(0)),
+            Err(Error::ZeroSize { what: "samples" })
+        );
+    }
+
+    #[test]
+    fn centered_is_cell_centres_and_draws_nothing() {
+        let mut rng = default_rng(9);
+        let mut pts = [0.0f32; 2 * 2 * 2];
+        stratified_2d(&mut pts, 2, 2, Jitter::Centered, &mut rng).unwrap();
+        assert_eq!(pts, [0.25, 0.25, 0.75, 0.25, 0.25, 0.75, 0.75, 0.75]);
+        let mut untouched = default_rng(9);
+        assert_eq!(rng.next_u32(), untouched.next_u32());
+    }
+
+    #[test]
+    fn jittered_mean_is_unbiased() {
+        // Within each of 4 strata the jitter is uniform: mean offset ≈ ½ (100000 draws).
+        let mut rng = default_rng(4);
+        let mut sum = 0.0f64;
+        let mut buf = [0.0f32; 4];
+        for _ in 0..25_000 {
+            stratified_1d(&mut buf, Jitter::Jittered, &mut rng).unwrap();
+            sum += buf
+                .iter()
+                .enumerate()
+                .map(|(k, &x)| f64::from(x) * 4.0 - k as f64)
+                .sum::<f64>();
+        }
+        let mean = sum / 100_000.0;
+        assert!((mean - 0.5).abs() < 0.005, "mean {mean}");
+    }
+}
