@@ -3,7 +3,7 @@
 //! Workloads: 64 dimensions (0..63) × 1024 indices, once with coherent indices `0..1024` (few set
 //! bits, the case of a sampler walking a pixel's samples) and once with incoherent, hashed 32-bit
 //! indices (16 set bits on average, the case of a global sequence over a large image). Every
-//! kernel reads the same `[[u32; 32]; 64]` columns. Throughput is per value.
+//!
 
 use std::hint::black_box;
 
@@ -22,7 +22,7 @@ fn columns() -> Vec<[u32; 32]> {
 }
 
 /// Peer 1: the naive product, one test per bit over all 32 bits.
-#[inline(never)]
+#[inline]
 fn naive_all_bits(m: &[u32; 32], index: u32) -> u32 {
     let mut v = 0;
     for (k, &col) in m.iter().enumerate() {
@@ -34,7 +34,7 @@ fn naive_all_bits(m: &[u32; 32], index: u32) -> u32 {
 }
 
 /// Peer 2: the classic loop (pbrt-v3 `MultiplyGenerator`): shift the index until it is zero.
-#[inline(never)]
+#[inline]
 fn shift_loop(m: &[u32; 32], mut index: u32) -> u32 {
     let mut v = 0;
     let mut k = 0;
@@ -49,7 +49,7 @@ fn shift_loop(m: &[u32; 32], mut index: u32) -> u32 {
 }
 
 /// Candidate: visit only the set bits via trailing zeros.
-#[inline(never)]
+#[inline]
 fn trailing_zeros_loop(m: &[u32; 32], mut index: u32) -> u32 {
     let mut v = 0;
     while index != 0 {
@@ -59,10 +59,63 @@ fn trailing_zeros_loop(m: &[u32; 32], mut index: u32) -> u32 {
     v
 }
 
+/// Candidate: branch-free masks from a compare (SSE2-friendly: and + cmpeq per 4 columns).
+#[inline]
+fn compare_mask(m: &[u32; 32], index: u32) -> u32 {
+    let mut v = 0;
+    for (k, &col) in m.iter().enumerate() {
+        let bit = 1u32 << k;
+        let mask = if index & bit == bit { u32::MAX } else { 0 };
+        v ^= col & mask;
+    }
+    v
+}
+
+/// Candidate: the 32 columns as 8 nibble tables of 16 precomputed XORs (512 bytes per dim).
+#[inline]
+fn nibble_tables(t: &[[u32; 16]; 8], index: u32) -> u32 {
+    let mut v = 0;
+    for (j, tab) in t.iter().enumerate() {
+        v ^= tab[((index >> (4 * j)) & 15) as usize];
+    }
+    v
+}
+
+/// Candidate: 4 byte tables of 256 precomputed XORs (4 KiB per dim).
+#[inline]
+fn byte_tables(t: &[[u32; 256]; 4], index: u32) -> u32 {
+    t[0][(index & 255) as usize]
+        ^ t[1][((index >> 8) & 255) as usize]
+        ^ t[2][((index >> 16) & 255) as usize]
+        ^ t[3][(index >> 24) as usize]
+}
+
 fn indices(coherent: bool) -> Vec<u32> {
     (0..POINTS)
         .map(|i| if coherent { i } else { mix32(i ^ 0x9e37_79b9) })
         .collect()
+}
+
+/// Runs `kernel` over every dimension's table and every index; generic so the kernel inlines
+/// exactly as our own `sobol_u32` does.
+fn bench_kernel<T>(
+    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    name: &str,
+    tables: &[T],
+    idx: &[u32],
+    kernel: impl Fn(&T, u32) -> u32,
+) {
+    g.bench_function(name, |b| {
+        b.iter(|| {
+            let mut acc = 0u32;
+            for t in tables {
+                for &i in idx {
+                    acc ^= kernel(t, black_box(i));
+                }
+            }
+            acc
+        })
+    });
 }
 
 fn bench_kernels(c: &mut Criterion) {
@@ -94,25 +147,46 @@ fn bench_kernels(c: &mut Criterion) {
                 acc
             })
         });
-        type Kernel = fn(&[u32; 32], u32) -> u32;
-        let peers: [(&str, Kernel); 3] = [
-            ("peer_naive_all_32_bits", naive_all_bits),
-            ("peer_while_index_shift_loop", shift_loop),
-            ("candidate_trailing_zeros_loop", trailing_zeros_loop),
-        ];
-        for (peer, kernel) in peers {
-            g.bench_function(peer, |b| {
-                b.iter(|| {
-                    let mut acc = 0u32;
-                    for m in &cols {
-                        for &i in &idx {
-                            acc ^= kernel(m, black_box(i));
-                        }
-                    }
-                    acc
+        bench_kernel(
+            &mut g,
+            "peer_naive_all_32_bits",
+            &cols,
+            &idx,
+            naive_all_bits,
+        );
+        bench_kernel(
+            &mut g,
+            "peer_while_index_shift_loop",
+            &cols,
+            &idx,
+            shift_loop,
+        );
+        bench_kernel(
+            &mut g,
+            "candidate_trailing_zeros_loop",
+            &cols,
+            &idx,
+            trailing_zeros_loop,
+        );
+        bench_kernel(&mut g, "candidate_compare_mask", &cols, &idx, compare_mask);
+        let nib: Vec<[[u32; 16]; 8]> = cols
+            .iter()
+            .map(|m| {
+                core::array::from_fn(|j| {
+                    core::array::from_fn(|x| trailing_zeros_loop(m, (x as u32) << (4 * j)))
                 })
-            });
-        }
+            })
+            .collect();
+        bench_kernel(&mut g, "candidate_nibble_tables", &nib, &idx, nibble_tables);
+        let bytes: Vec<[[u32; 256]; 4]> = cols
+            .iter()
+            .map(|m| {
+                core::array::from_fn(|j| {
+                    core::array::from_fn(|x| trailing_zeros_loop(m, (x as u32) << (8 * j)))
+                })
+            })
+            .collect();
+        bench_kernel(&mut g, "candidate_byte_tables", &bytes, &idx, byte_tables);
         g.finish();
     }
 }
