@@ -2,8 +2,8 @@
 
 use rand_core::Rng;
 
-use super::place;
-use crate::{Error, rng::uniform_f32};
+use super::Strata;
+use crate::Error;
 
 /// Where a stratified sample sits inside its stratum.
 ///
@@ -24,7 +24,9 @@ pub enum Jitter {
 
 /// Fills `out` with `n = out.len()` stratified samples of `[0, 1)`: sample `k` lies in stratum
 /// `[k/n, (k+1)/n)`, in stratum order (shuffle them with [`super::shuffle`] if needed).
-/// Values are in `[0, 1)`. Allocates: no.
+/// Values are in `[0, 1)`. The jitter is quantised to `2^(22 − ⌈log₂ n⌉)` levels per stratum,
+/// which keeps every value provably inside its stratum (see the module docs); one generator
+/// draw per sample. Allocates: no.
 ///
 /// # Errors
 /// [`Error::ZeroSize`] if `out` is empty; [`Error::TooMany`] if `out.len()` exceeds `u32::MAX`.
@@ -48,16 +50,17 @@ pub fn stratified_1d<R: Rng + ?Sized>(
         return Err(Error::ZeroSize { what: "samples" });
     }
     let n = u32::try_from(out.len()).map_err(|_| Error::TooMany { what: "samples" })?;
-    let inv = 1.0 / n as f32;
+    let strata = Strata::new(n);
     match jitter {
         Jitter::Jittered => {
+            let shift = 32 - strata.jitter_bits();
             for (k, x) in (0..n).zip(out.iter_mut()) {
-                *x = place(k, uniform_f32(rng), n, inv);
+                *x = strata.jittered(k, rng.next_u32() >> shift);
             }
         }
         Jitter::Centered => {
             for (k, x) in (0..n).zip(out.iter_mut()) {
-                *x = place(k, 0.5, n, inv);
+                *x = strata.centre(k);
             }
         }
     }
@@ -66,7 +69,9 @@ pub fn stratified_1d<R: Rng + ?Sized>(
 
 /// Fills `out` with one point per cell of an `nx × ny` grid over `[0, 1)²`, as
 /// `[x0, y0, x1, y1, …]`, cell `(i, j)` (column `i`, row `j`) at point `j · nx + i`.
-/// `out.len()` must be exactly `2 · nx · ny`. Values are in `[0, 1)`. Allocates: no.
+/// `out.len()` must be exactly `2 · nx · ny`. Values are in `[0, 1)`. Jittered points cost one
+/// 32-bit generator draw each: 16 jitter bits per axis (`22 − ⌈log₂ n⌉` when fewer), i.e. a
+/// jitter resolution of `2⁻¹⁶` of a cell. Allocates: no.
 ///
 /// # Errors
 /// [`Error::ZeroSize`] if `nx` or `ny` is 0; [`Error::TooMany`] if `2 · nx · ny` overflows
@@ -113,22 +118,49 @@ pub fn stratified_2d<R: Rng + ?Sized>(
             actual: out.len(),
         });
     }
-    let (inv_x, inv_y) = (1.0 / nx as f32, 1.0 / ny as f32);
-    let mut points = out.chunks_exact_mut(2);
-    for j in 0..ny {
-        match jitter {
-            Jitter::Jittered => {
-                for (i, p) in (0..nx).zip(&mut points) {
-                    let (u, v) = (uniform_f32(rng), uniform_f32(rng));
-                    p[0] = place(i, u, nx, inv_x);
-                    p[1] = place(j, v, ny, inv_y);
+    let (sx, sy) = (Strata::new(nx), Strata::new(ny));
+    let (points, _) = out.as_chunks_mut::<2>();
+    let mut points = points.iter_mut();
+    match jitter {
+        Jitter::Jittered => {
+            // One 32-bit draw per point: x takes the high 16 jitter bits, y the low 16 (fewer
+            // when an axis has more than 64 strata, see `Strata::jitter_bits`); the jitter's
+            // missing low bits are zero. Written as masks on the fixed-point numerators so the
+            // loop is a handful of integer operations per point.
+            let (bx, by) = (sx.jitter_bits().min(16), sy.jitter_bits().min(16));
+            // x: bits 31..32-bx of r land at bits jitter_bits_x..jitter_bits_x-bx+1.
+            let shr_x = 31 - sx.jitter_bits();
+            let mask_x = ((1u32 << bx) - 1) << (sx.jitter_bits() - bx + 1);
+            // y: bits by-1..0 of r land at bits jitter_bits_y..jitter_bits_y-by+1.
+            let shl_y = sy.jitter_bits() - by + 1;
+            let mask_y = ((1u32 << by) - 1) << shl_y;
+            if sx.is_exact() && sy.is_exact() {
+                let (scale_x, scale_y) = (sx.scale(), sy.scale());
+                for j in 0..ny {
+                    let base_y = sy.base(j);
+                    for (i, p) in (0..nx).zip(&mut points) {
+                        let r = rng.next_u32();
+                        let x = sx.base(i) | ((r >> shr_x) & mask_x);
+                        let y = base_y | ((r << shl_y) & mask_y);
+                        *p = [x as f32 * scale_x, y as f32 * scale_y];
+                    }
+                }
+            } else {
+                for j in 0..ny {
+                    for (i, p) in (0..nx).zip(&mut points) {
+                        let r = rng.next_u32();
+                        let jx = (r >> shr_x & mask_x) >> 1;
+                        let jy = (r << shl_y & mask_y) >> 1;
+                        *p = [sx.jittered(i, jx), sy.jittered(j, jy)];
+                    }
                 }
             }
-            Jitter::Centered => {
-                let y = place(j, 0.5, ny, inv_y);
+        }
+        Jitter::Centered => {
+            for j in 0..ny {
+                let y = sy.centre(j);
                 for (i, p) in (0..nx).zip(&mut points) {
-                    p[0] = place(i, 0.5, nx, inv_x);
-                    p[1] = y;
+                    *p = [sx.centre(i), y];
                 }
             }
         }

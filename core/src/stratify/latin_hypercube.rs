@@ -3,11 +3,8 @@
 
 use rand_core::Rng;
 
-use super::place;
-use crate::{
-    Error, hash,
-    rng::{uniform_below, uniform_f32},
-};
+use super::Strata;
+use crate::{Error, hash, rng::uniform_below};
 
 /// Validates a point-major buffer of `dims`-dimensional points; returns the point count.
 fn points_in(len: usize, dims: u32) -> Result<u32, Error> {
@@ -30,7 +27,9 @@ fn points_in(len: usize, dims: u32) -> Result<u32, Error> {
 /// independent uniform permutation per dimension. Values are in `[0, 1)`. Allocates: no.
 ///
 /// One pass per dimension: the stratum values are written straight into a uniformly shuffled
-/// position (the "inside-out" Fisher–Yates), with unbiased bounded draws.
+/// position (the "inside-out" Fisher–Yates), with unbiased bounded draws
+/// ([`crate::rng::uniform_below`]). Jitters have 16 random bits (`22 − ⌈log₂ n⌉` when that is
+/// fewer), two per generator draw.
 ///
 /// # Errors
 /// [`Error::ZeroSize`] if `dims == 0`; [`Error::BufferLength`] if `out` is empty or its length
@@ -53,12 +52,24 @@ pub fn latin_hypercube<R: Rng + ?Sized>(
 ) -> Result<u32, Error> {
     let n = points_in(out.len(), dims)?;
     let d = dims as usize;
-    let inv = 1.0 / n as f32;
+    let strata = Strata::new(n);
+    // Jitters come 16 bits at a time, two per 32-bit draw (fewer bits when n > 64 leaves less
+    // room, see `Strata::jitter_bits`); the missing low bits are zero.
+    let bits = strata.jitter_bits().min(16);
+    let lift = strata.jitter_bits() - bits;
+    let mask = (1u32 << bits) - 1;
+    let mut word = 0u32;
     for dim in 0..d {
         // Inside-out Fisher–Yates over the column: after step k, positions 0..=k hold a uniform
         // permutation of the strata 0..=k.
         for k in 0..n {
-            let value = place(k, uniform_f32(rng), n, inv);
+            let half = if k & 1 == 0 {
+                word = rng.next_u32();
+                word >> 16
+            } else {
+                word
+            };
+            let value = strata.jittered(k, (half & mask) << lift);
             let j = uniform_below(rng, k + 1) as usize;
             let (kk, jj) = (k as usize * d + dim, j * d + dim);
             out[kk] = out[jj];
@@ -142,14 +153,15 @@ impl LatinHypercube {
     /// ```
     pub fn fill(&self, out: &mut [f32]) -> Result<u32, Error> {
         let n = points_in(out.len(), self.dims)?;
-        let inv = 1.0 / n as f32;
+        let strata = Strata::new(n);
+        let discard = 32 - strata.jitter_bits();
         for (dim, x0) in (0..self.dims).zip(0..) {
             let key = hash::hash2(self.seed, u64::from(dim));
             let perm_seed = (key >> 32) as u32;
             for (i, point) in (0..n).zip(out.chunks_exact_mut(self.dims as usize)) {
                 let stratum = hash::permute(i, n, perm_seed);
-                let jitter = hash::unit_f32((hash::hash2(key, u64::from(i)) >> 32) as u32);
-                point[x0] = place(stratum, jitter, n, inv);
+                let jitter = (hash::hash2(key, u64::from(i)) >> 32) as u32 >> discard;
+                point[x0] = strata.jittered(stratum, jitter);
             }
         }
         Ok(n)
