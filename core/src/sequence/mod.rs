@@ -26,8 +26,8 @@ mod zero_two;
 // pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 // pub use hammersley::{Hammersley, HammersleyZaremba};
 
-// pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
-// pub use zero_two::ZeroTwo;
+pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
+pub use zero_two::ZeroTwo;
 
 /// A deterministic point set in `[0, 1)^d`, addressed by index.
 ///
