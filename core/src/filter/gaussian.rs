@@ -55,7 +55,7 @@ impl Gaussian {
     /// `what = "sigma"` unless `sigma > 0` is finite and `1/(2σ²)` is a finite, normal `f32`.
     ///
     /// ```
-    /// use nyquist::filter::{Filter, Gaussian};
+    /// use nyquist::filter::Gaussian;
     /// let g = Gaussian::with_sigma([1.5, 1.5], 0.5).unwrap();
     /// assert_eq!(g.alpha(), 2.0);
     /// assert!(Gaussian::with_sigma([1.5, 1.5], -0.5).is_err());

@@ -19,7 +19,7 @@ use core::fmt;
 /// back to the same filter.
 ///
 /// ```
-/// use nyquist::filter::{Filter, FilterKind, Mitchell};
+/// use nyquist::filter::{FilterKind, Mitchell};
 /// let f = FilterKind::parse("mitchell:b=0.5,c=0.25").unwrap();
 /// assert_eq!(f, FilterKind::Mitchell(Mitchell::new([2.0, 2.0], 0.5, 0.25).unwrap()));
 /// assert_eq!(FilterKind::parse(&f.to_string()).unwrap(), f);
