@@ -80,10 +80,9 @@ impl Gaussian {
 
     #[inline(always)]
     fn axis(&self, i: usize, x: f32) -> f32 {
-        if !(x.abs() <= self.radius[i]) {
-            return 0.0;
-        }
-        (math::exp_f32(-self.alpha * x * x) - self.offset[i]).max(0.0)
+        let v = (math::exp_f32(-self.alpha * x * x) - self.offset[i]).max(0.0);
+        // Select, not branch; NaN fails the comparison: weight 0.
+        if x.abs() <= self.radius[i] { v } else { 0.0 }
     }
 
     /// `∫_{−r}^{r} (e^(−αx²) − e^(−αr²)) dx` in `f64`.

@@ -29,10 +29,11 @@ fn sinc_reduced(r: f32) -> f32 {
 
 /// The normalised sinc, `sin(πx)/(πx)`, with `sinc(0) = 1`.
 ///
-/// Total: no division by zero near 0 (a polynomial there), and 0 for NaN, ±∞ and
-/// `|x| ≥ 2²³` (every such `f32` is an integer, where `sin(πx) = 0`). The argument is reduced
-/// exactly to `x = n + r`, `|r| ≤ ½`, so the result stays accurate near the zeros: within a few
-/// `f32` ulps of `|sinc|` or `10⁻⁷` absolute.
+/// Total and branch-free: no division by zero near 0 (a polynomial there), and 0 for NaN, ±∞
+/// and `|x| ≥ 2²²` (where every `f32` is a multiple of ½, so the true value is 0 or below
+/// `1/(π·2²²) < 10⁻⁷` in magnitude). The argument is reduced exactly to `x = n + r`, `|r| ≤ ½`,
+/// so the result stays accurate near the zeros: within `4·10⁻⁷` relative or `10⁻⁷` absolute of
+/// the true value.
 ///
 /// ```
 /// use nyquist::filter::sinc;
@@ -44,18 +45,19 @@ fn sinc_reduced(r: f32) -> f32 {
 #[inline]
 pub fn sinc(x: f32) -> f32 {
     let ax = x.abs();
-    if !(ax < 8_388_608.0) {
-        return 0.0;
-    }
-    // ax + 0.5 is exact below 2²³ except for one rounding near ½, which leaves |r| ≤ ½ + 2⁻²⁴.
-    let n = (ax + 0.5) as u32;
-    if n == 0 {
-        return sinc_reduced(ax);
-    }
-    let r = ax - n as f32; // exact
-    // sin(π(n + r)) = (−1)ⁿ sin(πr) = (−1)ⁿ πr·sinc(r), and πr/(π·ax) = r/ax.
-    let s = r * sinc_reduced(r) / ax;
-    if n & 1 == 1 { -s } else { s }
+    let in_range = ax < 4_194_304.0; // false for NaN and ±∞ too
+    let a = if in_range { ax } else { 0.0 };
+    // n = round(a) (ties to even) from the mantissa of a + 1.5·2²³; r = a − n is exact.
+    let m = a + 12_582_912.0;
+    let n = m.to_bits().wrapping_sub(0x4B40_0000);
+    let r = a - (m - 12_582_912.0);
+    // sin(π(n + r)) = (−1)ⁿ sin(πr) = (−1)ⁿ πr·sinc(r), and πr/(π·a) = r/a; for n = 0 the
+    // polynomial alone is the answer (no 0/0).
+    let p = sinc_reduced(r);
+    let zero = n == 0;
+    let s = if zero { 1.0 } else { r } * p / if zero { 1.0 } else { a };
+    let s = f32::from_bits(s.to_bits() ^ ((n & 1) << 31));
+    if in_range { s } else { 0.0 }
 }
 
 /// `sin(πx)/(πx)` in `f64` (for the numeric integral).
@@ -113,6 +115,7 @@ fn gauss_legendre_8() -> [(f64, f64); 4] {
 pub struct Lanczos {
     radius: [f32; 2],
     tau: f32,
+    inv_tau: f32,
 }
 
 impl Lanczos {
@@ -129,9 +132,12 @@ impl Lanczos {
     /// assert_eq!(Lanczos::new([3.0, 3.0], -1.0), Err(Error::OutOfRange { what: "tau" }));
     /// ```
     pub fn new(radius: [f32; 2], tau: f32) -> Result<Lanczos, Error> {
+        let tau = check(tau, "tau", f32::MIN_POSITIVE, f32::MAX)?;
         Ok(Lanczos {
             radius: check_radius(radius)?,
-            tau: check(tau, "tau", f32::MIN_POSITIVE, f32::MAX)?,
+            tau,
+            // ∞ for subnormal-ish τ: sinc(x·∞) is then 0 (or NaN → 0 at x = 0, masked below).
+            inv_tau: 1.0 / tau,
         })
     }
 
@@ -146,10 +152,12 @@ impl Lanczos {
 
     #[inline(always)]
     fn axis(&self, i: usize, x: f32) -> f32 {
-        if !(x.abs() <= self.radius[i]) {
-            return 0.0;
-        }
-        sinc(x) * sinc(x / self.tau)
+        // x·(1/τ) at x = 0 and 1/τ = ∞ is NaN, and sinc(NaN) = 0: keep the window's 1 there.
+        let w = sinc(x * self.inv_tau);
+        let w = if x == 0.0 { 1.0 } else { w };
+        let v = sinc(x) * w;
+        // Select rather than branch: offsets past the radius are common in a film.
+        if x.abs() <= self.radius[i] { v } else { 0.0 }
     }
 
     /// `∫_{−r}^{r} sinc(x)·sinc(x/τ) dx`: 8-point Gauss–Legendre on segments of width at most
@@ -179,6 +187,7 @@ impl Default for Lanczos {
         Lanczos {
             radius: [4.0, 4.0],
             tau: 3.0,
+            inv_tau: 1.0 / 3.0,
         }
     }
 }

@@ -95,36 +95,76 @@ fn finite_or_zero(v: f32) -> f32 {
     if v.is_finite() { v } else { 0.0 }
 }
 
-/// Table coordinate of a folded offset `a = |d| ≤ r`: in `[0, n − 1]`.
-#[inline(always)]
-fn coord(a: f32, scale: f32, n: usize) -> f32 {
-    (a * scale).min((n - 1) as f32)
+/// Per-size constants of a lookup: entries per axis, the last coordinate `n − 1` and the snap
+/// tolerance, computed once (a `usize → f32` conversion is not free on x86-64).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Grid {
+    n: usize,
+    last: f32,
+    eps: f32,
 }
 
-/// The interpolation parameter `t = c − k` snapped to 0 or 1 when it is within a few rounding
-/// errors of the coordinate (`(n − 1)·2⁻²¹`) of either: a sample point whose coordinate
-/// `x·scale` rounded to just below or above its index still reads its entry exactly.
-#[inline(always)]
-fn snap(t: f32, n: usize) -> f32 {
-    let eps = (n - 1) as f32 * (1.0 / 2_097_152.0);
-    if t < eps {
-        0.0
-    } else if t > 1.0 - eps {
-        1.0
-    } else {
-        t
+impl Grid {
+    #[inline(always)]
+    const fn new(n: usize) -> Grid {
+        Grid {
+            n,
+            last: (n - 1) as f32,
+            eps: (n - 1) as f32 * (1.0 / 2_097_152.0),
+        }
+    }
+
+    /// Table coordinate of a folded offset `a = |d|`: in `[0, n − 1]` for every input (NaN and
+    /// ∞ give `n − 1`; the caller masks them out), so the index arithmetic never sees them.
+    #[inline(always)]
+    fn coord(&self, a: f32, scale: f32) -> f32 {
+        // f32::min returns the non-NaN operand.
+        (a * scale).min(self.last)
+    }
+
+    /// Cell `k ∈ [0, n − 2]` and position `t ∈ [0, 1]` of coordinate `c ∈ [0, n − 1]`, with
+    /// `t` snapped to 0 or 1 when it is within `(n − 1)·2⁻²¹` (a few rounding errors of
+    /// `x·scale`) of either: a sample point whose coordinate rounded to just below or above its
+    /// index still reads its entry exactly. Compiles to selects, not branches.
+    #[inline(always)]
+    fn cell(&self, c: f32) -> (usize, f32) {
+        let (k, kf) = round_index(c - 0.5);
+        let last_cell = self.last - 1.0;
+        let (k, kf) = if kf > last_cell {
+            (self.n - 2, last_cell)
+        } else {
+            (k, kf)
+        };
+        let t = c - kf;
+        let t = if t < self.eps { 0.0 } else { t };
+        let t = if t > 1.0 - self.eps { 1.0 } else { t };
+        (k, t)
+    }
+
+    /// Nearest index of coordinate `c ∈ [0, n − 1]`.
+    #[inline(always)]
+    fn nearest(&self, c: f32) -> usize {
+        round_index(c).0.min(self.n - 1)
     }
 }
 
-/// 1D lookup at table coordinate `c ∈ [0, n − 1]`; `v.len() ≥ 2`.
+/// `c` rounded to the nearest integer (ties to even) for `−½ ≤ c < 2²²`, as an index and as a
+/// float: adding `1.5·2²³` leaves the integer in the low mantissa bits. Two adds, no
+/// saturating float-to-int conversion.
 #[inline(always)]
-fn lookup_1d(v: &[f32], c: f32, interp: Interpolation) -> f32 {
-    let n = v.len();
+fn round_index(c: f32) -> (usize, f32) {
+    const MAGIC: f32 = 12_582_912.0;
+    let m = c + MAGIC;
+    (m.to_bits().wrapping_sub(0x4B40_0000) as usize, m - MAGIC)
+}
+
+/// 1D lookup at table coordinate `c ∈ [0, n − 1]`; `v.len() == g.n ≥ 2`.
+#[inline(always)]
+fn lookup_1d(v: &[f32], g: Grid, c: f32, interp: Interpolation) -> f32 {
     match interp {
-        Interpolation::Nearest => v[((c + 0.5) as usize).min(n - 1)],
+        Interpolation::Nearest => v[g.nearest(c)],
         Interpolation::Linear => {
-            let k = (c as usize).min(n - 2);
-            let t = snap(c - k as f32, n);
+            let (k, t) = g.cell(c);
             // (1 − t)·a + t·b is exact at t = 0 and t = 1.
             (1.0 - t) * v[k] + t * v[k + 1]
         }
@@ -133,17 +173,13 @@ fn lookup_1d(v: &[f32], c: f32, interp: Interpolation) -> f32 {
 
 /// 2D lookup in a row-major `n × n` grid (`v[j·n + i]`, `i` along x).
 #[inline(always)]
-fn lookup_2d(v: &[f32], n: usize, cx: f32, cy: f32, interp: Interpolation) -> f32 {
+fn lookup_2d(v: &[f32], g: Grid, cx: f32, cy: f32, interp: Interpolation) -> f32 {
+    let n = g.n;
     match interp {
-        Interpolation::Nearest => {
-            let i = ((cx + 0.5) as usize).min(n - 1);
-            let j = ((cy + 0.5) as usize).min(n - 1);
-            v[j * n + i]
-        }
+        Interpolation::Nearest => v[g.nearest(cy) * n + g.nearest(cx)],
         Interpolation::Linear => {
-            let i = (cx as usize).min(n - 2);
-            let j = (cy as usize).min(n - 2);
-            let (tx, ty) = (snap(cx - i as f32, n), snap(cy - j as f32, n));
+            let (i, tx) = g.cell(cx);
+            let (j, ty) = g.cell(cy);
             let r0 = &v[j * n + i..j * n + i + 2];
             let r1 = &v[(j + 1) * n + i..(j + 1) * n + i + 2];
             let a = (1.0 - tx) * r0[0] + tx * r0[1];
@@ -176,7 +212,7 @@ pub struct SeparableTable<const N: usize = 16> {
 
 impl<const N: usize> SeparableTable<N> {
     /// Tabulates `filter`'s separable form ([`Filter::eval_1d`]) at `N` points per axis, and
-    /// stores [`Filter::integral`]. `N < 2` does not compile.
+    /// stores [`Filter::integral`]. `N < 2` (or `N ≥ 2²²`) does not compile.
     ///
     /// # Errors
     /// [`Error::OutOfRange`] if the filter is not separable or its radius is not finite and
@@ -191,7 +227,12 @@ impl<const N: usize> SeparableTable<N> {
         filter: &F,
         interp: Interpolation,
     ) -> Result<SeparableTable<N>, Error> {
-        const { assert!(N >= 2, "a filter table needs at least 2 entries per axis") };
+        const {
+            assert!(
+                N >= 2 && N < 1 << 22,
+                "a filter table needs 2 ≤ N < 2²² entries per axis"
+            )
+        };
         let radius = table_radius(filter)?;
         if !filter.is_separable() {
             return Err(Error::OutOfRange {
@@ -227,12 +268,14 @@ impl<const N: usize> SeparableTable<N> {
     #[inline]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
-        if !(ax <= self.radius[0] && ay <= self.radius[1]) {
-            return 0.0;
-        }
-        let cx = coord(ax, self.scale[0], N);
-        let cy = coord(ay, self.scale[1], N);
-        lookup_1d(&self.values[0], cx, self.interp) * lookup_1d(&self.values[1], cy, self.interp)
+        // Look up unconditionally (coordinates are clamped), then mask: no branch to mispredict.
+        let inside = (ax <= self.radius[0]) & (ay <= self.radius[1]);
+        let g = const { Grid::new(N) };
+        let cx = g.coord(ax, self.scale[0]);
+        let cy = g.coord(ay, self.scale[1]);
+        let w = lookup_1d(&self.values[0], g, cx, self.interp)
+            * lookup_1d(&self.values[1], g, cy, self.interp);
+        if inside { w } else { 0.0 }
     }
 
     /// The 1D factor along `axis` at offset `d`, so that
@@ -250,7 +293,8 @@ impl<const N: usize> SeparableTable<N> {
         if !(ad <= self.radius[a]) {
             return 0.0;
         }
-        lookup_1d(&self.values[a], coord(ad, self.scale[a], N), self.interp)
+        let g = const { Grid::new(N) };
+        lookup_1d(&self.values[a], g, g.coord(ad, self.scale[a]), self.interp)
     }
 
     /// The stored values along `axis`: entry `i` is the filter's 1D factor at
@@ -306,6 +350,7 @@ impl<const N: usize> SeparableTable<N> {
             scale: self.scale,
             integral: self.integral,
             interp: self.interp,
+            grid: Grid::new(N),
             data: ViewData::Separable(&self.values[0], &self.values[1]),
         }
     }
@@ -331,8 +376,8 @@ pub struct Table2d<const N: usize = 16> {
 }
 
 impl<const N: usize> Table2d<N> {
-    /// Tabulates `filter.eval` at `N × N` points and stores [`Filter::integral`]. `N < 2` does
-    /// not compile.
+    /// Tabulates `filter.eval` at `N × N` points and stores [`Filter::integral`]. `N < 2` (or
+    /// `N ≥ 2²²`) does not compile.
     ///
     /// # Errors
     /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0`. Non-finite values
@@ -343,7 +388,12 @@ impl<const N: usize> Table2d<N> {
     /// assert!(Table2d::<8>::new(&Boxcar::default(), Interpolation::Nearest).is_ok());
     /// ```
     pub fn new<F: Filter + ?Sized>(filter: &F, interp: Interpolation) -> Result<Table2d<N>, Error> {
-        const { assert!(N >= 2, "a filter table needs at least 2 entries per axis") };
+        const {
+            assert!(
+                N >= 2 && N < 1 << 22,
+                "a filter table needs 2 ≤ N < 2²² entries per axis"
+            )
+        };
         let radius = table_radius(filter)?;
         let scale = [table_scale(radius[0], N), table_scale(radius[1], N)];
         let mut values = [[0.0f32; N]; N];
@@ -375,12 +425,12 @@ impl<const N: usize> Table2d<N> {
     #[inline]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
-        if !(ax <= self.radius[0] && ay <= self.radius[1]) {
-            return 0.0;
-        }
-        let cx = coord(ax, self.scale[0], N);
-        let cy = coord(ay, self.scale[1], N);
-        lookup_2d(self.values.as_flattened(), N, cx, cy, self.interp)
+        let inside = (ax <= self.radius[0]) & (ay <= self.radius[1]);
+        let g = const { Grid::new(N) };
+        let cx = g.coord(ax, self.scale[0]);
+        let cy = g.coord(ay, self.scale[1]);
+        let w = lookup_2d(self.values.as_flattened(), g, cx, cy, self.interp);
+        if inside { w } else { 0.0 }
     }
 
     /// The stored values, `values()[j][i]` at ([`sample_point(X, i)`](Self::sample_point),
@@ -424,7 +474,8 @@ impl<const N: usize> Table2d<N> {
             scale: self.scale,
             integral: self.integral,
             interp: self.interp,
-            data: ViewData::Full(self.values.as_flattened(), N),
+            grid: Grid::new(N),
+            data: ViewData::Full(self.values.as_flattened()),
         }
     }
 }
@@ -544,7 +595,7 @@ impl<const N: usize> FilterTable<N> {
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum ViewData<'a> {
     Separable(&'a [f32], &'a [f32]),
-    Full(&'a [f32], usize),
+    Full(&'a [f32]),
 }
 
 /// A borrowed, size-erased view of any table ([`FilterTable`], [`SeparableTable`],
@@ -563,6 +614,7 @@ pub struct TableView<'a> {
     scale: [f32; 2],
     integral: f32,
     interp: Interpolation,
+    grid: Grid,
     data: ViewData<'a>,
 }
 
@@ -577,21 +629,17 @@ impl TableView<'_> {
     #[inline]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
-        if !(ax <= self.radius[0] && ay <= self.radius[1]) {
-            return 0.0;
-        }
-        match self.data {
+        let inside = (ax <= self.radius[0]) & (ay <= self.radius[1]);
+        let g = self.grid;
+        let cx = g.coord(ax, self.scale[0]);
+        let cy = g.coord(ay, self.scale[1]);
+        let w = match self.data {
             ViewData::Separable(x, y) => {
-                let cx = coord(ax, self.scale[0], x.len());
-                let cy = coord(ay, self.scale[1], y.len());
-                lookup_1d(x, cx, self.interp) * lookup_1d(y, cy, self.interp)
+                lookup_1d(x, g, cx, self.interp) * lookup_1d(y, g, cy, self.interp)
             }
-            ViewData::Full(v, n) => {
-                let cx = coord(ax, self.scale[0], n);
-                let cy = coord(ay, self.scale[1], n);
-                lookup_2d(v, n, cx, cy, self.interp)
-            }
-        }
+            ViewData::Full(v) => lookup_2d(v, g, cx, cy, self.interp),
+        };
+        if inside { w } else { 0.0 }
     }
 
     /// The 1D factor along `axis` for separable tables (so `weight(dx, dy) ==
@@ -615,7 +663,62 @@ impl TableView<'_> {
         if !(ad <= self.radius[a]) {
             return Some(0.0);
         }
-        Some(lookup_1d(v, coord(ad, self.scale[a], v.len()), self.interp))
+        let g = self.grid;
+        Some(lookup_1d(v, g, g.coord(ad, self.scale[a]), self.interp))
+    }
+
+    /// The weights of a whole footprint at once: `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`
+    /// for `j < out.len() / nx` — the offsets from one sample to a block of pixel centres.
+    /// Identical to calling [`weight`](Self::weight) per entry, but a separable table does
+    /// `nx + ny` 1D lookups and one multiply per weight. This is the film's fast path.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
+    ///
+    /// ```
+    /// use nyquist::filter::{FilterTable, Interpolation, Mitchell};
+    /// let t: FilterTable = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// let mut w = [0.0f32; 16];
+    /// t.view().footprint([-1.7, -1.2], 4, &mut w).unwrap();
+    /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
+    /// ```
+    pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        if nx == 0 || out.is_empty() || out.len() % nx != 0 {
+            return Err(Error::BufferLength {
+                multiple_of: nx,
+                actual: out.len(),
+            });
+        }
+        match self.data {
+            ViewData::Separable(..) => {
+                // Row 0 holds the x factors until it is scaled last.
+                let (first, rest) = out.split_at_mut(nx);
+                for (i, w) in first.iter_mut().enumerate() {
+                    *w = self.weight_1d(Axis::X, d0[0] + i as f32).unwrap_or(0.0);
+                }
+                for (j, row) in rest.chunks_exact_mut(nx).enumerate() {
+                    let wy = self
+                        .weight_1d(Axis::Y, d0[1] + (j + 1) as f32)
+                        .unwrap_or(0.0);
+                    for (w, &wx) in row.iter_mut().zip(first.iter()) {
+                        *w = wx * wy;
+                    }
+                }
+                let wy = self.weight_1d(Axis::Y, d0[1]).unwrap_or(0.0);
+                for w in first.iter_mut() {
+                    *w *= wy;
+                }
+            }
+            ViewData::Full(_) => {
+                for (j, row) in out.chunks_exact_mut(nx).enumerate() {
+                    let dy = d0[1] + j as f32;
+                    for (i, w) in row.iter_mut().enumerate() {
+                        *w = self.weight(d0[0] + i as f32, dy);
+                    }
+                }
+            }
+        }
+        Ok(())
     }
 
     /// Whether the viewed table is two 1D tables.
@@ -626,10 +729,7 @@ impl TableView<'_> {
     /// Entries per axis (`N`).
     #[allow(clippy::len_without_is_empty)] // never empty: N ≥ 2
     pub fn len(&self) -> usize {
-        match self.data {
-            ViewData::Separable(x, _) => x.len(),
-            ViewData::Full(_, n) => n,
-        }
+        self.grid.n
     }
 
     /// The offset of sample `i` along `axis` (`i ≥ len()` gives the radius).
@@ -658,7 +758,7 @@ impl TableView<'_> {
         let (i, j) = (i.min(n - 1), j.min(n - 1));
         match self.data {
             ViewData::Separable(x, y) => x[i] * y[j],
-            ViewData::Full(v, n) => v[j * n + i],
+            ViewData::Full(v) => v[j * n + i],
         }
     }
 

@@ -497,6 +497,35 @@ fn separable_table_factors_multiply_to_the_weight() {
 }
 
 #[test]
+fn footprint_equals_per_weight_lookups() {
+    let mut rng = default_rng(21);
+    for f in [
+        FilterKind::parse("mitchell").unwrap(),
+        FilterKind::parse("lanczos:rx=3,ry=1.5").unwrap(),
+    ] {
+        let sep: FilterTable = FilterTable::new(&f, Interpolation::Linear).unwrap();
+        let full: FilterTable = FilterTable::new(&Cone, Interpolation::Nearest).unwrap();
+        for t in [sep, full] {
+            let v = t.view();
+            for _ in 0..200 {
+                let d0 = [uniform_f32(&mut rng) * -5.0, uniform_f32(&mut rng) * -3.0];
+                let mut out = [0.0f32; 7 * 5];
+                v.footprint(d0, 7, &mut out).unwrap();
+                for j in 0..5 {
+                    for i in 0..7 {
+                        let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+                        assert_eq!(out[j * 7 + i], t.weight(dx, dy), "({i}, {j}) from {d0:?}");
+                    }
+                }
+            }
+            let mut bad = [0.0f32; 10];
+            assert!(v.footprint([0.0, 0.0], 3, &mut bad).is_err());
+            assert!(v.footprint([0.0, 0.0], 0, &mut bad).is_err());
+        }
+    }
+}
+
+#[test]
 fn user_filter_tabulates_like_a_builtin() {
     for interp in [Interpolation::Nearest, Interpolation::Linear] {
         let t: FilterTable = FilterTable::new(&Cone as &dyn Filter, interp).unwrap();
