@@ -683,7 +683,7 @@ impl TableView<'_> {
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
     /// ```
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        if nx == 0 || out.is_empty() || out.len() % nx != 0 {
+        if nx == 0 || out.is_empty() || !out.len().is_multiple_of(nx) {
             return Err(Error::BufferLength {
                 multiple_of: nx,
                 actual: out.len(),
