@@ -1,2 +1,79 @@
-//! The `nyquist` command line (filled in by the foundation work).
-fn main() {}
+//! The `nyquist` command line: parse → configure → call the library → exit code.
+//!
+//! Every error is one line on stderr and exit status 2; output files are written to a temporary
+//! file beside the target and renamed into place, so a failure leaves nothing behind.
+#![forbid(unsafe_code)]
+
+mod output;
+mod points;
+mod scene;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Sampling and reconstruction for image synthesis: emit and analyse point sets.
+#[derive(Debug, Parser)]
+#[command(name = "nyquist", version, about, max_term_width = 100)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Print the points of a sequence or sampler.
+    ///
+    /// Example: nyquist points --sampler halton --count 16 --dims 2
+    Points(points::PointsArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return clap_exit(&e),
+    };
+    let result = match &cli.command {
+        Command::Points(args) => points::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("nyquist: {}", one_line(&format!("{e:#}")));
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Help and version go to stdout with status 0; every parse error becomes one line, status 2.
+fn clap_exit(e: &clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    match e.kind() {
+        ErrorKind::DisplayHelp
+        | ErrorKind::DisplayVersion
+        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                ExitCode::from(2)
+            } else {
+                ExitCode::SUCCESS
+            }
+        }
+        _ => {
+            let text = e.render().to_string();
+            let text = text.strip_prefix("error: ").unwrap_or(&text);
+            eprintln!("nyquist: {}", one_line(text));
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// Folds a multi-line message into one line, dropping clap's usage and "--help" hints.
+fn one_line(text: &str) -> String {
+    text.lines()
+        .map(str::trim)
+        .filter(|l| {
+            !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more information")
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
+}

@@ -1,3 +1,5 @@
 //! Cross-crate conformance tests: one test binary, a module per topic.
 
 mod helpers;
+mod sequences;
+mod stratify;

@@ -115,7 +115,7 @@ pub fn check_fill(
             dims: set_dims,
         });
     }
-    if len == 0 || len % dims as usize != 0 {
+    if len == 0 || !len.is_multiple_of(dims as usize) {
         return Err(Error::BufferLength {
             multiple_of: dims as usize,
             actual: len,

@@ -1,0 +1,266 @@
+//! `nyquist points`: print the points of a sequence or sampler.
+
+use anyhow::{Result, bail};
+use clap::{Args, ValueEnum};
+use nyquist::rng::{default_rng, uniform_f32};
+use nyquist::sequence::{
+    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, Sequence, Sobol, VanDerCorput, ZeroTwo,
+};
+use nyquist::stratify::{self, Jitter};
+use std::io::Write;
+use std::path::PathBuf;
+
+/// The most values (`count × dims`) one call prints: 2²⁸ (1 GiB of `f32`).
+const MAX_VALUES: u64 = 1 << 28;
+
+/// Point sets and samplers by their command-line names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SamplerName {
+    /// Independent uniform random points (PCG32).
+    Random,
+    /// Cell centres of a regular grid (stratified without jitter).
+    Uniform,
+    /// Jittered stratified points, one per grid cell.
+    Stratified,
+    /// Latin hypercube: every dimension's strata hit once.
+    Lhs,
+    /// Van der Corput sequence (base 2, one dimension).
+    Vdc,
+    /// Halton sequence.
+    Halton,
+    /// Hammersley set (needs --count).
+    Hammersley,
+    /// Halton sequence with the folded (Zaremba) radical inverse.
+    HaltonZaremba,
+    /// Hammersley set with the folded radical inverse (needs --count).
+    HammersleyZaremba,
+    /// Scrambled (0,2)-sequence (two dimensions).
+    ZeroTwo,
+    /// Sobol sequence (Joe–Kuo, 1024 dimensions).
+    Sobol,
+}
+
+/// Output formats of `points`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    /// One point per line, values separated by commas, no header.
+    Csv,
+    /// One JSON array of points, each an array of numbers.
+    Json,
+}
+
+/// Arguments of `nyquist points`.
+#[derive(Debug, Args)]
+#[command(after_help = "Example: nyquist points --sampler sobol --count 8 --dims 3")]
+pub struct PointsArgs {
+    /// Which point set or sampler.
+    #[arg(long, value_enum, default_value = "halton")]
+    pub sampler: SamplerName,
+    /// Number of points [default: 16; required for hammersley].
+    #[arg(long)]
+    pub count: Option<u64>,
+    /// Dimensions per point.
+    #[arg(long, default_value_t = 2)]
+    pub dims: u32,
+    /// Seed of random and scrambled sets.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Index of the first point of a sequence (sequences and random only).
+    #[arg(long, default_value_t = 0)]
+    pub skip: u64,
+    /// Grid `NXxNY` for 2D uniform/stratified sets whose count is not a square.
+    #[arg(long, value_parser = parse_grid)]
+    pub grid: Option<(u32, u32)>,
+    /// Output format.
+    #[arg(long, value_enum, default_value = "csv")]
+    pub format: Format,
+    /// Write to this file instead of stdout.
+    #[arg(long)]
+    pub output: Option<PathBuf>,
+}
+
+/// Parses `NXxNY` (e.g. `4x3`) into positive grid sizes.
+pub fn parse_grid(s: &str) -> Result<(u32, u32), String> {
+    let (a, b) = s
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("'{s}' is not NXxNY (e.g. 4x4)"))?;
+    let parse = |t: &str| -> Result<u32, String> {
+        match t.trim().parse::<u32>() {
+            Ok(0) | Err(_) => Err(format!("'{s}' is not NXxNY with positive sizes (e.g. 4x4)")),
+            Ok(v) => Ok(v),
+        }
+    };
+    Ok((parse(a)?, parse(b)?))
+}
+
+/// Runs `nyquist points`.
+pub fn run(args: &PointsArgs) -> Result<()> {
+    let (points, dims) = generate(args)?;
+    crate::output::to_stdout_or_file(args.output.as_deref(), |w| {
+        write_points(w, &points, dims, args.format)
+    })
+}
+
+/// Generates the points `args` asks for, point-major, and their dimension count.
+pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
+    use SamplerName as S;
+    let dims = args.dims;
+    if dims == 0 {
+        bail!("--dims 0: a point needs at least one dimension");
+    }
+    let count = match (args.count, args.sampler, args.grid) {
+        (Some(0), ..) => bail!("--count 0: need at least one point"),
+        (Some(c), ..) => c,
+        (None, S::Hammersley | S::HammersleyZaremba, _) => {
+            bail!(
+                "--count is required for {}: the set's size is part of its definition",
+                name(args.sampler)
+            )
+        }
+        (None, _, Some((nx, ny))) => u64::from(nx) * u64::from(ny),
+        (None, ..) => 16,
+    };
+    let values = count
+        .checked_mul(u64::from(dims))
+        .filter(|&v| v <= MAX_VALUES)
+        .ok_or_else(|| {
+            anyhow::anyhow!("--count {count} × --dims {dims} is more than {MAX_VALUES} values")
+        })?;
+    if args.skip != 0 && matches!(args.sampler, S::Uniform | S::Stratified | S::Lhs) {
+        bail!(
+            "--skip applies to sequences and random, not to {}",
+            name(args.sampler)
+        );
+    }
+    if args.grid.is_some() && !matches!(args.sampler, S::Uniform | S::Stratified) {
+        bail!(
+            "--grid applies to uniform and stratified, not to {}",
+            name(args.sampler)
+        );
+    }
+    let mut out = vec![0.0f32; values as usize];
+    let set_error = |e: nyquist::Error| anyhow::anyhow!("{}: {e}", name(args.sampler));
+    match args.sampler {
+        S::Random => {
+            let mut rng = default_rng(args.seed);
+            for _ in 0..args.skip.saturating_mul(u64::from(dims)) {
+                uniform_f32(&mut rng);
+            }
+            out.iter_mut().for_each(|x| *x = uniform_f32(&mut rng));
+        }
+        S::Uniform | S::Stratified => {
+            let jitter = if args.sampler == S::Uniform {
+                Jitter::Centered
+            } else {
+                Jitter::Jittered
+            };
+            let mut rng = default_rng(args.seed);
+            match dims {
+                1 => stratify::stratified_1d(&mut out, jitter, &mut rng).map_err(set_error)?,
+                2 => {
+                    let (nx, ny) = match args.grid {
+                        Some((nx, ny)) if u64::from(nx) * u64::from(ny) == count => (nx, ny),
+                        Some((nx, ny)) => bail!(
+                            "--grid {nx}x{ny} has {} cells but --count is {count}",
+                            u64::from(nx) * u64::from(ny)
+                        ),
+                        None => {
+                            let side = count.isqrt();
+                            if side * side != count {
+                                bail!(
+                                    "--count {count} is not a square: give --grid NXxNY for 2D {}",
+                                    name(args.sampler)
+                                );
+                            }
+                            (side as u32, side as u32)
+                        }
+                    };
+                    stratify::stratified_2d(&mut out, nx, ny, jitter, &mut rng)
+                        .map_err(set_error)?;
+                }
+                _ => bail!(
+                    "--dims {dims}: {} supports 1 or 2 dimensions (use lhs for more)",
+                    name(args.sampler)
+                ),
+            }
+        }
+        S::Lhs => {
+            stratify::latin_hypercube(&mut out, dims, &mut default_rng(args.seed))
+                .map_err(set_error)?;
+        }
+        S::Vdc => fill(&VanDerCorput, args, &mut out)?,
+        S::Halton => fill(&Halton::new(dims).map_err(set_error)?, args, &mut out)?,
+        S::HaltonZaremba => fill(
+            &HaltonZaremba::new(dims).map_err(set_error)?,
+            args,
+            &mut out,
+        )?,
+        S::Hammersley => fill(
+            &Hammersley::new(count, dims).map_err(set_error)?,
+            args,
+            &mut out,
+        )?,
+        S::HammersleyZaremba => fill(
+            &HammersleyZaremba::new(count, dims).map_err(set_error)?,
+            args,
+            &mut out,
+        )?,
+        S::ZeroTwo => fill(&ZeroTwo::from_seed(args.seed), args, &mut out)?,
+        S::Sobol => fill(&Sobol::new(dims).map_err(set_error)?, args, &mut out)?,
+    }
+    Ok((out, dims as usize))
+}
+
+fn fill(set: &dyn Sequence, args: &PointsArgs, out: &mut [f32]) -> Result<()> {
+    if args.dims > set.dims() {
+        bail!(
+            "--dims {}: {} has {} dimension{}",
+            args.dims,
+            name(args.sampler),
+            set.dims(),
+            if set.dims() == 1 { "" } else { "s" }
+        );
+    }
+    set.fill(args.skip, args.dims, out).map_err(|e| {
+        anyhow::anyhow!("--skip {} --count: {}: {e}", args.skip, name(args.sampler))
+    })?;
+    Ok(())
+}
+
+/// The command-line name of a sampler.
+pub fn name(s: SamplerName) -> String {
+    s.to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_owned())
+}
+
+/// Writes points in `format`; each value is the shortest decimal that reads back to the same `f32`.
+pub fn write_points(w: &mut dyn Write, points: &[f32], dims: usize, format: Format) -> Result<()> {
+    match format {
+        Format::Csv => {
+            for p in points.chunks_exact(dims) {
+                for (i, v) in p.iter().enumerate() {
+                    if i > 0 {
+                        w.write_all(b",")?;
+                    }
+                    write!(w, "{v}")?;
+                }
+                w.write_all(b"\n")?;
+            }
+        }
+        Format::Json => {
+            w.write_all(b"[")?;
+            for (k, p) in points.chunks_exact(dims).enumerate() {
+                w.write_all(if k == 0 { b"[" } else { b",[" })?;
+                for (i, v) in p.iter().enumerate() {
+                    if i > 0 {
+                        w.write_all(b",")?;
+                    }
+                    write!(w, "{v}")?;
+                }
+                w.write_all(b"]")?;
+            }
+            w.write_all(b"]\n")?;
+        }
+    }
+    Ok(())
+}
