@@ -19,7 +19,9 @@ pub enum Format {
 
 /// Arguments of `nyquist filter`.
 #[derive(Debug, Args)]
-#[command(after_help = "Example: nyquist filter --filter mitchell:b=0.5,c=0.25 --grid 9 --plot m.png")]
+#[command(
+    after_help = "Example: nyquist filter --filter mitchell:b=0.5,c=0.25 --grid 9 --plot m.png"
+)]
 pub struct FilterArgs {
     /// Filter spec `name[:key=value,…]`: box, triangle, gaussian, mitchell, lanczos; keys
     /// radius, rx, ry, alpha, sigma (gaussian), b, c (mitchell), tau (lanczos).
@@ -64,7 +66,11 @@ pub fn run(args: &FilterArgs) -> Result<()> {
     } else {
         let n = args.grid;
         let at = |k: u32, r: f32| {
-            if n == 1 { 0.0 } else { (-f64::from(r) + 2.0 * f64::from(r) * f64::from(k) / f64::from(n - 1)) as f32 }
+            if n == 1 {
+                0.0
+            } else {
+                (-f64::from(r) + 2.0 * f64::from(r) * f64::from(k) / f64::from(n - 1)) as f32
+            }
         };
         let mut rows = Vec::with_capacity((n as usize) * (n as usize));
         for j in 0..n {
@@ -138,9 +144,13 @@ fn plot(f: &FilterKind, path: &Path) -> Result<()> {
         }
     };
     let r = f64::from(f.radius()[0]);
-    let xs: Vec<f64> = (0..W - 2 * M).map(|i| -r + 2.0 * r * i as f64 / (W - 2 * M - 1) as f64).collect();
+    let xs: Vec<f64> = (0..W - 2 * M)
+        .map(|i| -r + 2.0 * r * i as f64 / (W - 2 * M - 1) as f64)
+        .collect();
     let prof: Vec<f64> = xs.iter().map(|&x| profile(f, x as f32)).collect();
-    let nus: Vec<f64> = (0..W - 2 * M).map(|i| 2.0 * i as f64 / (W - 2 * M - 1) as f64).collect();
+    let nus: Vec<f64> = (0..W - 2 * M)
+        .map(|i| 2.0 * i as f64 / (W - 2 * M - 1) as f64)
+        .collect();
     let spec: Vec<f64> = nus.iter().map(|&nu| spectrum(f, nu)).collect();
     for (panel, values, nyquist) in [(0usize, &prof, None), (1, &spec, Some(0.5 / 2.0))] {
         let x0 = panel * W + M;
@@ -157,7 +167,11 @@ fn plot(f: &FilterKind, path: &Path) -> Result<()> {
         for y in M..H - M {
             put(x0, y, [0, 0, 0]);
             if let Some(t) = nyquist {
-                put(x0 + ((W - 2 * M - 1) as f64 * t) as usize, y, [200, 200, 200]);
+                put(
+                    x0 + ((W - 2 * M - 1) as f64 * t) as usize,
+                    y,
+                    [200, 200, 200],
+                );
             }
         }
         // The curve, joined vertically between neighbouring columns.

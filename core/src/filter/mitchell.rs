@@ -93,6 +93,8 @@ impl Mitchell {
         let near = (a3 * t + a2) * (t * t) + a0;
         let far = ((b3 * t + b2) * t + b1) * t + b0;
         let v = if t < 1.0 { near } else { far };
+        // M(2) = 0 exactly, not the cubic's rounding noise at the radius.
+        let v = if t < 2.0 { v } else { 0.0 };
         // NaN fails the comparison: weight 0. (t < 2 at |x| ≤ r up to rounding; M(2) = 0.)
         if ax <= self.radius[i] { v } else { 0.0 }
     }
