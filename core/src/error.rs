@@ -63,7 +63,10 @@ impl fmt::Display for Error {
             Error::NonFinite { what } => write!(f, "{what} must be finite (got NaN or infinity)"),
             Error::OutOfRange { what } => write!(f, "{what} is out of range"),
             Error::DimensionOutOfRange { dim, dims } => {
-                write!(f, "dimension {dim} is out of range: the set has {dims} dimensions")
+                write!(
+                    f,
+                    "dimension {dim} is out of range: the set has {dims} dimensions"
+                )
             }
             Error::BufferLength {
                 multiple_of,
@@ -73,7 +76,10 @@ impl fmt::Display for Error {
                 "buffer length {actual} is not a positive multiple of {multiple_of}"
             ),
             Error::BufferTooShort { needed, actual } => {
-                write!(f, "buffer too short: {needed} elements needed, {actual} given")
+                write!(
+                    f,
+                    "buffer too short: {needed} elements needed, {actual} given"
+                )
             }
             Error::TooMany { what } => write!(f, "{what} is too large"),
         }
@@ -93,9 +99,16 @@ mod tests {
             multiple_of: 3,
             actual: 7,
         };
-        assert_eq!(e.to_string(), "buffer length 7 is not a positive multiple of 3");
+        assert_eq!(
+            e.to_string(),
+            "buffer length 7 is not a positive multiple of 3"
+        );
         let e = Error::DimensionOutOfRange { dim: 9, dims: 2 };
         assert!(e.to_string().contains('9') && e.to_string().contains('2'));
-        assert!(Error::ZeroSize { what: "dims" }.to_string().contains("dims"));
+        assert!(
+            Error::ZeroSize { what: "dims" }
+                .to_string()
+                .contains("dims")
+        );
     }
 }

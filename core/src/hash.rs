@@ -187,6 +187,9 @@ mod tests {
         for seed in 0..1000u32 {
             fixed += (0..256u32).filter(|&i| permute(i, 256, seed) == i).count();
         }
-        assert!(fixed < 2000, "{fixed} fixed points in 1000 permutations of 256");
+        assert!(
+            fixed < 2000,
+            "{fixed} fixed points in 1000 permutations of 256"
+        );
     }
 }

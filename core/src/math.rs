@@ -30,7 +30,11 @@ pub const TWO_POW_MINUS_32: f64 = 1.0 / 4_294_967_296.0;
 #[inline]
 pub fn clamp_unit(x: f32) -> f32 {
     if x >= 0.0 {
-        if x < ONE_MINUS_EPSILON { x } else { ONE_MINUS_EPSILON }
+        if x < ONE_MINUS_EPSILON {
+            x
+        } else {
+            ONE_MINUS_EPSILON
+        }
     } else {
         0.0
     }
@@ -44,7 +48,11 @@ pub fn clamp_unit(x: f32) -> f32 {
 #[inline]
 pub fn clamp_unit_f64(x: f64) -> f64 {
     if x >= 0.0 {
-        if x < ONE_MINUS_EPSILON_F64 { x } else { ONE_MINUS_EPSILON_F64 }
+        if x < ONE_MINUS_EPSILON_F64 {
+            x
+        } else {
+            ONE_MINUS_EPSILON_F64
+        }
     } else {
         0.0
     }

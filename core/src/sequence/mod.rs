@@ -122,9 +122,9 @@ pub fn check_fill(
         });
     }
     let n = u64::try_from(len / dims as usize).map_err(|_| Error::TooMany { what: "points" })?;
-    let end = first
-        .checked_add(n)
-        .ok_or(Error::TooMany { what: "index range" })?;
+    let end = first.checked_add(n).ok_or(Error::TooMany {
+        what: "index range",
+    })?;
     if let Some(count) = point_count
         && end > count
     {

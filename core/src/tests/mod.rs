@@ -1,1 +1,2 @@
 //! Naive oracles shared by the unit tests (test builds only).
+mod radical_oracle;
