@@ -1,7 +1,7 @@
 //! Film tiles: owned by one thread, filled with samples, merged back into the film.
 
-use crate::film::{FilmStats, Setup, TileSpec};
 use crate::Bounds;
+use crate::film::{FilmStats, Setup, TileSpec};
 use std::sync::Arc;
 
 /// Accumulated sums of one pixel: Σ f·w·L per channel and Σ f, in `f64`.
@@ -168,8 +168,7 @@ impl FilmTile {
     /// `f(centre − p)·rgb`, and the film divides splats by the filter integral when it resolves.
     /// Non-finite values are dropped and counted as rejected.
     pub fn add_splat(&mut self, p_film: [f32; 2], rgb: [f32; 3]) {
-        if !(rgb.iter().all(|c| c.is_finite()) && p_film[0].is_finite() && p_film[1].is_finite())
-        {
+        if !(rgb.iter().all(|c| c.is_finite()) && p_film[0].is_finite() && p_film[1].is_finite()) {
             self.stats.rejected += 1;
             return;
         }
