@@ -35,12 +35,12 @@ pub fn fresnel(t: f64) -> (f64, f64) {
         let mut k = 0u32;
         loop {
             let contribution = term / f64::from(2 * k + 1);
-            let signed = if (k / 2) % 2 == 0 {
+            let signed = if (k / 2).is_multiple_of(2) {
                 contribution
             } else {
                 -contribution
             };
-            if k % 2 == 0 {
+            if k.is_multiple_of(2) {
                 c += signed
             } else {
                 s += signed

@@ -159,7 +159,7 @@ impl Film {
             )));
         }
         let c = config.crop_window;
-        if !c.iter().all(|v| (0.0..=1.0).contains(v)) || !(c[0] < c[1] && c[2] < c[3]) {
+        if !(c.iter().all(|v| (0.0..=1.0).contains(v)) && c[0] < c[1] && c[2] < c[3]) {
             return Err(Error::Config(format!(
                 "crop window {c:?} must be [x0, x1, y0, y1] with 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1"
             )));
@@ -171,7 +171,8 @@ impl Film {
                 "max component {m} must be finite and positive"
             )));
         }
-        let ceil = |v: f32, n: u32| (f64::from(v) * f64::from(n)).ceil() as i64;
+        // In f32, as pbrt does, so that 0.2 × 10 is 2 (not 2.0000000298 → 3).
+        let ceil = |v: f32, n: u32| (v * n as f32).ceil() as i64;
         let pixel_bounds = Bounds::new(ceil(c[0], w), ceil(c[2], h), ceil(c[1], w), ceil(c[3], h));
         if pixel_bounds.is_empty() {
             return Err(Error::Config(format!(

@@ -54,7 +54,12 @@ impl FilmTile {
             (b.x1 as f64 - 0.5 + f64::from(rx)).floor() as i64 + 1,
             (b.y1 as f64 - 0.5 + f64::from(ry)).floor() as i64 + 1,
         );
-        let pixel_bounds = grown.intersect(&setup.pixel_bounds);
+        let fb = setup.pixel_bounds;
+        let mut pixel_bounds = grown.intersect(&fb);
+        if pixel_bounds.is_empty() || b.is_empty() {
+            // Nothing to store: an empty rectangle at the film's corner keeps merges trivial.
+            pixel_bounds = Bounds::new(fb.x0, fb.y0, fb.x0, fb.y0);
+        }
         let n = pixel_bounds.area() as usize;
         FilmTile {
             spec,
@@ -105,8 +110,10 @@ impl FilmTile {
     /// dropped and counted ([`FilmTile::rejected`]); with the film's `max_component` set, a
     /// brighter sample is scaled down to it. Pixels outside the tile's pixel bounds are skipped.
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
-        if !(rgb.iter().all(|c| c.is_finite()) && weight.is_finite())
-            || !(p_film[0].is_finite() && p_film[1].is_finite())
+        if !(rgb.iter().all(|c| c.is_finite())
+            && weight.is_finite()
+            && p_film[0].is_finite()
+            && p_film[1].is_finite())
         {
             self.stats.rejected += 1;
             return;

@@ -8,7 +8,7 @@ use crate::Error;
 use crate::math::{clamp_unit, clamp_unit_f64};
 use crate::radical::{
     PRIME_COUNT, folded_radical_inverse, folded_radical_inverse_f64, radical_inverse,
-    radical_inverse_f64,
+    radical_inverse_f64, ratio_f32, ratio_f64,
 };
 
 /// Validates `(n, dims)` for the Hammersley sets: `n ≥ 1`, `1 ≤ dims ≤ 1025`.
@@ -28,11 +28,14 @@ fn check(n: u64, dims: u32) -> Result<(), Error> {
     Ok(())
 }
 
-/// `(k + ½)/n` for `k < n`, in `[0, 1)`.
+/// `(k + ½)/n` for `k < n`, correctly rounded, in `[0, 1)`.
 fn first_f64(k: u64, n: u64) -> f64 {
-    // (2k + 1) / (2n) with the numerator and denominator exact in u128, then one rounding.
-    let v = (2 * u128::from(k) + 1) as f64 / (2 * u128::from(n)) as f64;
-    clamp_unit_f64(v)
+    clamp_unit_f64(ratio_f64(2 * u128::from(k) + 1, 2 * u128::from(n)))
+}
+
+/// `(k + ½)/n` for `k < n`, correctly rounded to `f32`, in `[0, 1)`.
+fn first_f32(k: u64, n: u64) -> f32 {
+    clamp_unit(ratio_f32(2 * u128::from(k) + 1, 2 * u128::from(n)))
 }
 
 macro_rules! hammersley {
@@ -69,7 +72,7 @@ macro_rules! hammersley {
             fn sample(&self, index: u64, dim: u32) -> f32 {
                 let k = index % self.n;
                 match dim % self.dims {
-                    0 => clamp_unit(first_f64(k, self.n) as f32),
+                    0 => first_f32(k, self.n),
                     d => $phi(d - 1, k),
                 }
             }
