@@ -564,12 +564,11 @@ fn scrambled_fraction(d: usize, mut a: u64, seed: u64) -> (u128, u128) {
 ///
 /// ```
 /// use nyquist::radical::scrambled_radical_inverse;
-/// // Digit permutation keeps the first-digit strata: points 0..3 in base 3 hit each third once.
-/// let mut seen = [false; 3];
-/// for a in 0..3 {
-///     seen[(scrambled_radical_inverse(1, a, 7) * 3.0) as usize] = true;
-/// }
-/// assert_eq!(seen, [true; 3]);
+/// // Digit permutation keeps the strata: points 0..9 in base 3 sit one per ninth, all at the
+/// // same offset inside their cell.
+/// let mut xs: Vec<f64> = (0..9).map(|a| f64::from(scrambled_radical_inverse(1, a, 7))).collect();
+/// xs.sort_by(f64::total_cmp);
+/// assert!(xs.windows(2).all(|w| (w[1] - w[0] - 1.0 / 9.0).abs() < 1e-6));
 /// ```
 pub fn scrambled_radical_inverse(dim: u32, a: u64, seed: u64) -> f32 {
     let d = (dim % PRIME_COUNT) as usize;

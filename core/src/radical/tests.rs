@@ -48,9 +48,9 @@ fn tables_are_consistent() {
             );
             assert_eq!(ROW.inv[row], 1.0 / p as f64);
         }
-        for len in 1..=32usize {
+        for (len, &n) in DIGITS[d].iter().enumerate().skip(1) {
             // DIGITS[d][len] digits hold every chunk of that bit length below b^k.
-            let n = u32::from(DIGITS[d][len]);
+            let n = u32::from(n);
             let largest = ((1u64 << len) - 1).min(info.big - 1);
             assert!(largest < b.pow(n), "base {b}, len {len}");
         }

@@ -23,8 +23,8 @@ mod sobol;
 mod sobol_table;
 mod zero_two;
 
-// pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
-// pub use hammersley::{Hammersley, HammersleyZaremba};
+pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
+pub use hammersley::{Hammersley, HammersleyZaremba};
 
 // pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
 // pub use zero_two::ZeroTwo;
