@@ -185,17 +185,33 @@ static DIGITS: [[u8; 33]; 1024] = build_digits();
 // Digit engine.
 
 /// The digits of `x < bⁿ` (`n ≤ k`) reversed: `Σ_j d_j·b^(n−1−j)`, exactly.
+///
+/// Two digits per step: the high word of `y·b²` is the next digit pair `D = d·b + d'` (`d` the
+/// more significant), split by an exact multiply-shift `d = ⌊D·⌈2⁴⁰/b⌉ / 2⁴⁰⌋` (exact because
+/// `D < b² ` and `b³ < 2⁴⁰`), and the swapped pair `d + d'·b = b·D − (b² − 1)·d` is added at its
+/// weight.
 #[inline(always)]
 fn reverse_chunk(b: u64, x: u64, n: u32, magic: u64) -> u64 {
     // y = x/bⁿ as a 64-bit fraction (no overflow: x·magic < 2⁶⁴ because b²ⁿ < 2⁶⁴).
     let mut y = x.wrapping_mul(magic);
     let mut rev = 0u64;
     let mut weight = 1u64;
-    for _ in 0..n {
+    if n & 1 == 1 {
         let t = u128::from(y) * u128::from(b);
-        rev = rev.wrapping_add(((t >> 64) as u64).wrapping_mul(weight));
+        rev = (t >> 64) as u64;
         y = t as u64;
-        weight = weight.wrapping_mul(b);
+        weight = b;
+    }
+    let b2 = b * b;
+    let split = (1u64 << 40).div_ceil(b);
+    for _ in 0..n / 2 {
+        let t = u128::from(y) * u128::from(b2);
+        let pair = (t >> 64) as u64;
+        y = t as u64;
+        let hi = (pair * split) >> 40;
+        let swapped = (b * pair).wrapping_sub((b2 - 1) * hi);
+        rev = rev.wrapping_add(swapped.wrapping_mul(weight));
+        weight = weight.wrapping_mul(b2);
     }
     rev
 }
@@ -313,15 +329,21 @@ pub(crate) fn ratio_f64(num: u128, den: u128) -> f64 {
 pub fn radical_inverse(dim: u32, a: u64) -> f32 {
     let d = (dim % PRIME_COUNT) as usize;
     if d == 0 {
-        return ((a.reverse_bits() as f32) * (1.0 / 18_446_744_073_709_551_616.0))
-            .min(ONE_MINUS_EPSILON);
+        // When the top bit is set, halve the reversal keeping the lost bit as a sticky bit (the
+        // value then has 63 significant bits, so rounding is unchanged): the signed conversion
+        // is one instruction, and no branch depends on the index.
+        let r = a.reverse_bits();
+        let top = r >> 63;
+        let m = ((r >> top) | (r & top)) as i64;
+        let scale = f32::from_bits(((127 - 64 + top as u32) << 23) as u32);
+        return ((m as f32) * scale).min(ONE_MINUS_EPSILON);
     }
     let info = &BASES[d];
     if a < info.big {
         let (rev, row) = single_chunk(d, info, a);
         // rev < 2³² is exact in f64; the f64 product is within 2⁻⁵² relative, far below f32's
         // rounding step, so the narrowed result is within 1 ulp.
-        return ((rev as f64 * ROW.inv[row]) as f32).min(ONE_MINUS_EPSILON);
+        return ((rev as i64 as f64 * ROW.inv[row]) as f32).min(ONE_MINUS_EPSILON);
     }
     let (num, den) = phi_fraction(d, a);
     fraction_f32(num, den, 0, false)
@@ -341,14 +363,17 @@ pub fn radical_inverse(dim: u32, a: u64) -> f32 {
 pub fn radical_inverse_f64(dim: u32, a: u64) -> f64 {
     let d = (dim % PRIME_COUNT) as usize;
     if d == 0 {
-        return ((a.reverse_bits() as f64) * (1.0 / 18_446_744_073_709_551_616.0))
-            .min(ONE_MINUS_EPSILON_F64);
+        let r = a.reverse_bits();
+        let top = r >> 63;
+        let m = ((r >> top) | (r & top)) as i64;
+        let scale = f64::from_bits((1023 - 64 + top) << 52);
+        return ((m as f64) * scale).min(ONE_MINUS_EPSILON_F64);
     }
     let info = &BASES[d];
     if a < info.big {
         let (rev, row) = single_chunk(d, info, a);
         // Both operands are exact (< 2³²): one correctly rounded division.
-        return (rev as f64 / ROW.pow[row] as f64).min(ONE_MINUS_EPSILON_F64);
+        return (rev as i64 as f64 / ROW.pow[row] as i64 as f64).min(ONE_MINUS_EPSILON_F64);
     }
     let (num, den) = phi_fraction(d, a);
     fraction_f64(num, den, 0, false)
