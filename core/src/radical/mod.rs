@@ -335,7 +335,7 @@ pub fn radical_inverse(dim: u32, a: u64) -> f32 {
         let r = a.reverse_bits();
         let top = r >> 63;
         let m = ((r >> top) | (r & top)) as i64;
-        let scale = f32::from_bits(((127 - 64 + top as u32) << 23) as u32);
+        let scale = f32::from_bits((127 - 64 + top as u32) << 23);
         return ((m as f32) * scale).min(ONE_MINUS_EPSILON);
     }
     let info = &BASES[d];
