@@ -66,6 +66,10 @@ pub fn prime(dim: u32) -> u32 {
 #[derive(Clone, Copy)]
 struct BaseInfo {
     b: u64,
+    /// `b²`.
+    b2: u64,
+    /// `⌈2⁴⁰/b⌉`: `⌊D·split/2⁴⁰⌋ = ⌊D/b⌋` for every `D < b²` (the error term is below `b³ < 2⁴⁰`).
+    split: u64,
     k: u32,
     big: u64,
     off: u32,
@@ -97,6 +101,8 @@ const ROWS: usize = total_rows();
 const fn build_bases() -> [BaseInfo; 1024] {
     let mut out = [BaseInfo {
         b: 0,
+        b2: 0,
+        split: 0,
         k: 0,
         big: 0,
         off: 0,
@@ -108,6 +114,8 @@ const fn build_bases() -> [BaseInfo; 1024] {
         let k = chunk_digits(b);
         out[i] = BaseInfo {
             b,
+            b2: b * b,
+            split: (1u64 << 40).div_ceil(b),
             k,
             big: b.pow(k),
             off,
@@ -191,7 +199,8 @@ static DIGITS: [[u8; 33]; 1024] = build_digits();
 /// `D < b² ` and `b³ < 2⁴⁰`), and the swapped pair `d + d'·b = b·D − (b² − 1)·d` is added at its
 /// weight.
 #[inline(always)]
-fn reverse_chunk(b: u64, x: u64, n: u32, magic: u64) -> u64 {
+fn reverse_chunk(info: &BaseInfo, x: u64, n: u32, magic: u64) -> u64 {
+    let (b, b2, split) = (info.b, info.b2, info.split);
     // y = x/bⁿ as a 64-bit fraction (no overflow: x·magic < 2⁶⁴ because b²ⁿ < 2⁶⁴).
     let mut y = x.wrapping_mul(magic);
     let mut rev = 0u64;
@@ -202,8 +211,6 @@ fn reverse_chunk(b: u64, x: u64, n: u32, magic: u64) -> u64 {
         y = t as u64;
         weight = b;
     }
-    let b2 = b * b;
-    let split = (1u64 << 40).div_ceil(b);
     for _ in 0..n / 2 {
         let t = u128::from(y) * u128::from(b2);
         let pair = (t >> 64) as u64;
@@ -227,7 +234,7 @@ fn bit_len(x: u64) -> usize {
 fn single_chunk(d: usize, info: &BaseInfo, x: u64) -> (u64, usize) {
     let n = u32::from(DIGITS[d][bit_len(x)]);
     let row = (info.off + n) as usize;
-    (reverse_chunk(info.b, x, n, ROW.magic[row]), row)
+    (reverse_chunk(info, x, n, ROW.magic[row]), row)
 }
 
 /// Φ_b(a) as an exact fraction `num / den` (`num < den < 2⁹⁶`) for any `u64` index.
@@ -238,12 +245,7 @@ fn phi_fraction(d: usize, mut a: u64) -> (u128, u128) {
     while a >= info.big {
         let chunk = a % info.big;
         a /= info.big;
-        let rev = reverse_chunk(
-            info.b,
-            chunk,
-            info.k,
-            ROW.magic[(info.off + info.k) as usize],
-        );
+        let rev = reverse_chunk(info, chunk, info.k, ROW.magic[(info.off + info.k) as usize]);
         num = num * u128::from(info.big) + u128::from(rev);
         den *= u128::from(info.big);
     }

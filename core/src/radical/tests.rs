@@ -295,3 +295,14 @@ proptest! {
         prop_assert!((f64::from(f) - g).abs() <= f64::from(f32::EPSILON) * g.max(1e-30));
     }
 }
+
+#[test]
+fn pair_split_is_exact_for_every_pair_of_small_bases_and_sampled_large_ones() {
+    for (d, info) in BASES.iter().enumerate() {
+        let b = info.b;
+        let step = if d < 64 { 1 } else { (b * b / 5000).max(1) };
+        for pair in (0..b * b).step_by(step as usize).chain([b * b - 1]) {
+            assert_eq!((pair * info.split) >> 40, pair / b, "b={b} D={pair}");
+        }
+    }
+}
