@@ -128,30 +128,33 @@ const fn build_bases() -> [BaseInfo; 1024] {
 
 static BASES: [BaseInfo; 1024] = build_bases();
 
-/// `bⁿ`, `⌈2⁶⁴/bⁿ⌉` (0 for `n = 0`, unused) and `1/bⁿ` (correctly rounded), per base and `n`.
-struct Rows {
-    pow: [u64; ROWS],
-    magic: [u64; ROWS],
-    inv: [f64; ROWS],
+/// `bⁿ`, `⌈2⁶⁴/bⁿ⌉` (0 for `n = 0`, unused) and `1/bⁿ` (correctly rounded), per base and `n`;
+/// one row holds all three so the hot path reads one cache line.
+#[derive(Clone, Copy)]
+struct Row {
+    pow: u64,
+    magic: u64,
+    inv: f64,
 }
 
-const fn build_rows() -> Rows {
+const fn build_rows() -> [Row; ROWS] {
     let bases = build_bases();
-    let mut rows = Rows {
-        pow: [0; ROWS],
-        magic: [0; ROWS],
-        inv: [0.0; ROWS],
-    };
+    let mut rows = [Row {
+        pow: 0,
+        magic: 0,
+        inv: 0.0,
+    }; ROWS];
     let mut i = 0;
     while i < 1024 {
         let info = bases[i];
         let mut n = 0;
         let mut p = 1u64;
         while n <= info.k {
-            let row = (info.off + n) as usize;
-            rows.pow[row] = p;
-            rows.magic[row] = if n == 0 { 0 } else { u64::MAX / p + 1 };
-            rows.inv[row] = 1.0 / p as f64;
+            rows[(info.off + n) as usize] = Row {
+                pow: p,
+                magic: if n == 0 { 0 } else { u64::MAX / p + 1 },
+                inv: 1.0 / p as f64,
+            };
             p = p.wrapping_mul(info.b);
             n += 1;
         }
@@ -160,7 +163,7 @@ const fn build_rows() -> Rows {
     rows
 }
 
-static ROW: Rows = build_rows();
+static ROW: [Row; ROWS] = build_rows();
 
 /// `DIGITS[d][L]`: the number of base-`b` digits of `2^L − 1`, capped at `k` — an upper bound on
 /// the digit count of any chunk of bit length `L` (one more than needed at most, which only
@@ -231,10 +234,10 @@ fn bit_len(x: u64) -> usize {
 
 /// Reversed digits of a single chunk `x < b^k`, and the row (`off + n`) of its digit count.
 #[inline(always)]
-fn single_chunk(d: usize, info: &BaseInfo, x: u64) -> (u64, usize) {
+fn single_chunk(d: usize, info: &BaseInfo, x: u64) -> (u64, &'static Row) {
     let n = u32::from(DIGITS[d][bit_len(x)]);
-    let row = (info.off + n) as usize;
-    (reverse_chunk(info, x, n, ROW.magic[row]), row)
+    let row = &ROW[(info.off + n) as usize];
+    (reverse_chunk(info, x, n, row.magic), row)
 }
 
 /// Φ_b(a) as an exact fraction `num / den` (`num < den < 2⁹⁶`) for any `u64` index.
@@ -245,12 +248,12 @@ fn phi_fraction(d: usize, mut a: u64) -> (u128, u128) {
     while a >= info.big {
         let chunk = a % info.big;
         a /= info.big;
-        let rev = reverse_chunk(info, chunk, info.k, ROW.magic[(info.off + info.k) as usize]);
+        let rev = reverse_chunk(info, chunk, info.k, ROW[(info.off + info.k) as usize].magic);
         num = num * u128::from(info.big) + u128::from(rev);
         den *= u128::from(info.big);
     }
     let (rev, row) = single_chunk(d, info, a);
-    let p = u128::from(ROW.pow[row]);
+    let p = u128::from(row.pow);
     (num * p + u128::from(rev), den * p)
 }
 
@@ -345,7 +348,7 @@ pub fn radical_inverse(dim: u32, a: u64) -> f32 {
         let (rev, row) = single_chunk(d, info, a);
         // rev < 2³² is exact in f64; the f64 product is within 2⁻⁵² relative, far below f32's
         // rounding step, so the narrowed result is within 1 ulp.
-        return ((rev as i64 as f64 * ROW.inv[row]) as f32).min(ONE_MINUS_EPSILON);
+        return ((rev as i64 as f64 * row.inv) as f32).min(ONE_MINUS_EPSILON);
     }
     let (num, den) = phi_fraction(d, a);
     fraction_f32(num, den, 0, false)
@@ -375,7 +378,7 @@ pub fn radical_inverse_f64(dim: u32, a: u64) -> f64 {
     if a < info.big {
         let (rev, row) = single_chunk(d, info, a);
         // Both operands are exact (< 2³²): one correctly rounded division.
-        return (rev as i64 as f64 / ROW.pow[row] as i64 as f64).min(ONE_MINUS_EPSILON_F64);
+        return (rev as i64 as f64 / row.pow as i64 as f64).min(ONE_MINUS_EPSILON_F64);
     }
     let (num, den) = phi_fraction(d, a);
     fraction_f64(num, den, 0, false)

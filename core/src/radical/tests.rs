@@ -41,12 +41,12 @@ fn tables_are_consistent() {
         for n in 1..=info.k {
             let row = (info.off + n) as usize;
             let p = b.pow(n);
-            assert_eq!(ROW.pow[row], p);
+            assert_eq!(ROW[row].pow, p);
             assert_eq!(
-                u128::from(ROW.magic[row]),
+                u128::from(ROW[row].magic),
                 (1u128 << 64).div_ceil(u128::from(p))
             );
-            assert_eq!(ROW.inv[row], 1.0 / p as f64);
+            assert_eq!(ROW[row].inv, 1.0 / p as f64);
         }
         for (len, &n) in DIGITS[d].iter().enumerate().skip(1) {
             // DIGITS[d][len] digits hold every chunk of that bit length below b^k.
