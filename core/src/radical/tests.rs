@@ -41,16 +41,16 @@ fn tables_are_consistent() {
         for n in 1..=info.k {
             let row = (info.off + n) as usize;
             let p = b.pow(n);
-            assert_eq!(ROW.pow[row], p);
+            assert_eq!(ROW[row].pow, p);
             assert_eq!(
-                u128::from(ROW.magic[row]),
+                u128::from(ROW[row].magic),
                 (1u128 << 64).div_ceil(u128::from(p))
             );
-            assert_eq!(ROW.inv[row], 1.0 / p as f64);
+            assert_eq!(ROW[row].inv, 1.0 / p as f64);
         }
-        for len in 1..=32usize {
+        for (len, &n) in DIGITS[d].iter().enumerate().skip(1) {
             // DIGITS[d][len] digits hold every chunk of that bit length below b^k.
-            let n = u32::from(DIGITS[d][len]);
+            let n = u32::from(n);
             let largest = ((1u64 << len) - 1).min(info.big - 1);
             assert!(largest < b.pow(n), "base {b}, len {len}");
         }
@@ -293,5 +293,16 @@ proptest! {
         let f = radical_inverse(dim, a);
         let g = radical_inverse_f64(dim, a);
         prop_assert!((f64::from(f) - g).abs() <= f64::from(f32::EPSILON) * g.max(1e-30));
+    }
+}
+
+#[test]
+fn pair_split_is_exact_for_every_pair_of_small_bases_and_sampled_large_ones() {
+    for (d, info) in BASES.iter().enumerate() {
+        let b = info.b;
+        let step = if d < 64 { 1 } else { (b * b / 5000).max(1) };
+        for pair in (0..b * b).step_by(step as usize).chain([b * b - 1]) {
+            assert_eq!((pair * info.split) >> 40, pair / b, "b={b} D={pair}");
+        }
     }
 }
