@@ -21,13 +21,19 @@
 //! | sampler | values |
 //! |---|---|
 //! | [`RandomSampler`] | independent PCG32 values |
+//! | [`AdaptiveSampler`] | wraps another: minimum spp, maximum where the first samples disagree |
+//! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
 //! | [`StratifiedSampler`] | jittered (or centred: [`StratifiedSampler::uniform`]) strata, hash-permuted per dimension |
 
+mod adaptive;
+pub mod best_candidate;
 mod random;
 mod stratified;
 
 pub mod layout;
 
+pub use adaptive::{ADAPTIVE_CHANNELS, AdaptiveSampler};
+pub use best_candidate::BestCandidateSampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use random::RandomSampler;
 pub use stratified::{Jitter, StratifiedSampler};
