@@ -2,7 +2,7 @@
 
 use super::{Sampler, pixel_hash};
 use crate::Error;
-use crate::hash::{hash2, hash3, permute, unit_f32};
+use crate::hash::{hash2, hash3, mix64, permute, unit_f32};
 use crate::math::clamp_unit;
 
 /// Where a sample sits inside its stratum.
@@ -49,12 +49,22 @@ pub struct StratifiedSampler {
     xs: u32,
     ys: u32,
     spp: u32,
+    /// `[1/xs, 1/ys, 1/spp]`: multiplications instead of divisions in the hot path.
+    inv: [f32; 3],
     jitter: Jitter,
     seed: u64,
     pixel: [u32; 2],
+    /// `hash(pixel, seed)`, cached across samples of one pixel.
+    pixel_key: u64,
+    /// `hash(pixel_key, index)`: the jitter source of the current sample.
+    sample_key: u64,
     index: u32,
     dim: u32,
 }
+
+/// Odd constants separating dimensions in the per-dimension hashes.
+const DIM_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
+const JITTER_STEP: u64 = 0xc2b2_ae3d_27d4_eb4f;
 
 impl StratifiedSampler {
     /// A stratified sampler with `x_samples × y_samples` samples per pixel.
@@ -79,9 +89,16 @@ impl StratifiedSampler {
             xs: x_samples,
             ys: y_samples,
             spp,
+            inv: [
+                1.0 / x_samples as f32,
+                1.0 / y_samples as f32,
+                1.0 / spp as f32,
+            ],
             jitter,
             seed,
             pixel: [0; 2],
+            pixel_key: pixel_hash([0; 2], seed, 0x7374_7261),
+            sample_key: 0,
             index: 0,
             dim: 0,
         })
@@ -124,17 +141,30 @@ impl StratifiedSampler {
         [self.xs, self.ys]
     }
 
+    /// Two jitters (high and low 32 bits of one hash) for dimension `dim` of this sample.
     #[inline]
-    fn offset(&self, key: u64) -> f32 {
+    fn jitters(&self, dim: u32) -> [f32; 2] {
         match self.jitter {
-            Jitter::Jittered => unit_f32((key >> 32) as u32),
-            Jitter::Centered => 0.5,
+            Jitter::Jittered => {
+                let h = mix64(self.sample_key ^ u64::from(dim).wrapping_mul(JITTER_STEP));
+                [unit_f32((h >> 32) as u32), unit_f32(h as u32)]
+            }
+            Jitter::Centered => [0.5, 0.5],
         }
     }
 
+    /// This sample's stratum in dimension `dim`: a per-(pixel, dim) permutation of the sample
+    /// index; dimension 0 (the image sample) needs none and takes `index mod spp`.
     #[inline]
     fn stratum(&self, dim: u32) -> u32 {
-        let key = pixel_hash(self.pixel, u64::from(dim), self.seed);
+        if dim == 0 {
+            return if self.index < self.spp {
+                self.index
+            } else {
+                self.index % self.spp
+            };
+        }
+        let key = mix64(self.pixel_key ^ u64::from(dim).wrapping_mul(DIM_STEP));
         permute(self.index, self.spp, key as u32 ^ (key >> 32) as u32)
     }
 
@@ -142,29 +172,31 @@ impl StratifiedSampler {
     fn value_2d(&self, dim: u32) -> [f32; 2] {
         let s = self.stratum(dim);
         let (cx, cy) = (s % self.xs, s / self.xs);
-        let key = pixel_hash(
-            self.pixel,
-            hash2(u64::from(self.index), u64::from(dim)),
-            self.seed,
-        );
-        let jx = self.offset(key);
-        let jy = self.offset(key << 32);
+        let [jx, jy] = self.jitters(dim);
         [
-            clamp_unit((cx as f32 + jx) / self.xs as f32),
-            clamp_unit((cy as f32 + jy) / self.ys as f32),
+            clamp_unit((cx as f32 + jx) * self.inv[0]),
+            clamp_unit((cy as f32 + jy) * self.inv[1]),
         ]
     }
 }
 
-/// A Latin hypercube axis: value `j` of `n` is `(permute(j, n, key) + jitter) / n`.
+/// A Latin hypercube axis: value `j` of `n` is `(permute(j, n, key) + offset) / n`.
 #[inline]
-fn lhs_value(j: u32, n: u32, key: u64, jitter: Jitter) -> f32 {
+fn lhs_value(j: u32, n: u32, key: u64, offset: f32) -> f32 {
     let s = permute(j, n, key as u32 ^ (key >> 32) as u32);
-    let o = match jitter {
-        Jitter::Jittered => unit_f32((hash2(key, u64::from(j)) >> 32) as u32),
-        Jitter::Centered => 0.5,
-    };
-    clamp_unit((s as f32 + o) / n as f32)
+    clamp_unit((s as f32 + offset) / n as f32)
+}
+
+/// Jitters for point `j` of an array keyed by `key` (two per hash).
+#[inline]
+fn lhs_jitters(key: u64, j: u32, jitter: Jitter) -> [f32; 2] {
+    match jitter {
+        Jitter::Jittered => {
+            let h = mix64(key ^ u64::from(j).wrapping_mul(JITTER_STEP));
+            [unit_f32((h >> 32) as u32), unit_f32(h as u32)]
+        }
+        Jitter::Centered => [0.5, 0.5],
+    }
 }
 
 impl Sampler for StratifiedSampler {
@@ -173,8 +205,12 @@ impl Sampler for StratifiedSampler {
     }
 
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
-        self.pixel = pixel;
+        if pixel != self.pixel {
+            self.pixel = pixel;
+            self.pixel_key = pixel_hash(pixel, self.seed, 0x7374_7261);
+        }
         self.index = sample_index;
+        self.sample_key = mix64(self.pixel_key ^ u64::from(sample_index).wrapping_mul(DIM_STEP));
         self.dim = dim;
     }
 
@@ -182,12 +218,7 @@ impl Sampler for StratifiedSampler {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
         let s = self.stratum(dim);
-        let key = pixel_hash(
-            self.pixel,
-            hash2(u64::from(self.index), u64::from(dim)),
-            self.seed,
-        );
-        clamp_unit((s as f32 + self.offset(key)) / self.spp as f32)
+        clamp_unit((s as f32 + self.jitters(dim)[0]) * self.inv[2])
     }
 
     fn get_2d(&mut self) -> [f32; 2] {
@@ -205,13 +236,9 @@ impl Sampler for StratifiedSampler {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
         let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
-        let key = hash3(
-            pixel_hash(self.pixel, u64::from(self.index), u64::from(dim)),
-            self.seed,
-            0x6c68_7331,
-        );
+        let key = hash3(self.sample_key, u64::from(dim), 0x6c68_7331);
         for (j, x) in (0..n).zip(out) {
-            *x = lhs_value(j, n, key, self.jitter);
+            *x = lhs_value(j, n, key, lhs_jitters(key, j, self.jitter)[0]);
         }
     }
 
@@ -219,15 +246,12 @@ impl Sampler for StratifiedSampler {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(2);
         let n = u32::try_from(out.len() / 2).unwrap_or(u32::MAX);
-        let kx = hash3(
-            pixel_hash(self.pixel, u64::from(self.index), u64::from(dim)),
-            self.seed,
-            0x6c68_7332,
-        );
+        let kx = hash3(self.sample_key, u64::from(dim), 0x6c68_7332);
         let ky = hash2(kx, 0x6c68_7379);
         for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
-            p[0] = lhs_value(j, n, kx, self.jitter);
-            p[1] = lhs_value(j, n, ky, self.jitter);
+            let [ox, oy] = lhs_jitters(kx, j, self.jitter);
+            p[0] = lhs_value(j, n, kx, ox);
+            p[1] = lhs_value(j, n, ky, oy);
         }
     }
 }
