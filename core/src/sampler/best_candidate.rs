@@ -59,8 +59,21 @@ pub struct BestCandidateSampler {
     spp: u32,
     seed: u64,
     pixel: [u32; 2],
+    /// Time and lens Cranley–Patterson shifts of the current pixel.
+    shifts: [f32; 3],
     index: u32,
     dim: u32,
+}
+
+/// The per-pixel time and lens shifts.
+fn shifts(pixel: [u32; 2], seed: u64) -> [f32; 3] {
+    let h = pixel_hash(pixel, seed, 0x6370);
+    let g = hash2(h, 1);
+    [
+        unit_f32((h >> 32) as u32),
+        unit_f32(h as u32),
+        unit_f32((g >> 32) as u32),
+    ]
 }
 
 impl BestCandidateSampler {
@@ -84,6 +97,7 @@ impl BestCandidateSampler {
             spp,
             seed,
             pixel: [0; 2],
+            shifts: shifts([0; 2], seed),
             index: 0,
             dim: 0,
         })
@@ -103,9 +117,7 @@ impl BestCandidateSampler {
         if dim < 2 {
             return v;
         }
-        let shift = unit_f32(
-            (hash2(pixel_hash(self.pixel, self.seed, 0x6370), u64::from(dim)) >> 32) as u32,
-        );
+        let shift = self.shifts[(dim - 2) as usize];
         let s = v + shift;
         clamp_unit(if s >= 1.0 { s - 1.0 } else { s })
     }
@@ -117,7 +129,10 @@ impl Sampler for BestCandidateSampler {
     }
 
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
-        self.pixel = pixel;
+        if pixel != self.pixel {
+            self.pixel = pixel;
+            self.shifts = shifts(pixel, self.seed);
+        }
         self.index = sample_index;
         self.dim = dim;
     }
