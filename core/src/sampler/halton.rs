@@ -67,6 +67,9 @@ pub struct HaltonSampler {
     stride: u64,
     /// `3^k · (3^k)⁻¹ mod 2^j` and `2^j · (2^j)⁻¹ mod 3^k`: the CRT basis.
     basis: [u64; 2],
+    /// The last pixel started and its offset `h(p)`, cached across its samples.
+    pixel: [u32; 2],
+    offset: u64,
     index: u64,
     dim: u32,
 }
@@ -115,6 +118,8 @@ impl HaltonSampler {
             scales,
             stride,
             basis,
+            pixel: [0; 2],
+            offset: 0,
             index: 0,
             dim: 0,
         })
@@ -142,6 +147,11 @@ impl HaltonSampler {
     /// assert_eq!(s.sequence_index([1, 0], 2), 15);
     /// ```
     pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u64 {
+        self.pixel_offset(pixel) + u64::from(sample_index) * self.stride
+    }
+
+    /// `h(p)`: the index of the pixel's first sample.
+    fn pixel_offset(&self, pixel: [u32; 2]) -> u64 {
         let mut offset = 0u64;
         for axis in 0..2 {
             let pm = u64::from(pixel[axis]) % self.scales[axis];
@@ -149,7 +159,7 @@ impl HaltonSampler {
             // `digits < scale ≤ 243` and `basis < stride ≤ 31104`: no overflow.
             offset = (offset + digits * self.basis[axis]) % self.stride;
         }
-        offset + u64::from(sample_index) * self.stride
+        offset
     }
 
     #[inline]
@@ -177,7 +187,11 @@ impl Sampler for HaltonSampler {
     }
 
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
-        self.index = self.sequence_index(pixel, sample_index);
+        if pixel != self.pixel {
+            self.pixel = pixel;
+            self.offset = self.pixel_offset(pixel);
+        }
+        self.index = self.offset + u64::from(sample_index) * self.stride;
         self.dim = dim;
     }
 

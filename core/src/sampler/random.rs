@@ -26,6 +26,7 @@ pub struct RandomSampler {
     spp: u32,
     seed: u64,
     rng: Pcg32,
+    pixel: [u32; 2],
     key: u64,
     base: u64,
     dim: u32,
@@ -51,7 +52,8 @@ impl RandomSampler {
             spp,
             seed,
             rng: Pcg32::new(0, STREAM),
-            key: 0,
+            pixel: [0; 2],
+            key: pixel_hash([0; 2], seed, 0x7261_6e64),
             base: 0,
             dim: 0,
         })
@@ -70,7 +72,10 @@ impl Sampler for RandomSampler {
     }
 
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
-        self.key = pixel_hash(pixel, self.seed, 0x7261_6e64);
+        if pixel != self.pixel {
+            self.pixel = pixel;
+            self.key = pixel_hash(pixel, self.seed, 0x7261_6e64);
+        }
         self.base = u64::from(sample_index) * 65536;
         self.dim = dim;
         self.rng = self.at(dim);
@@ -92,6 +97,10 @@ impl Sampler for RandomSampler {
     }
 
     fn get_pixel_2d(&mut self) -> [f32; 2] {
+        if self.dim == 0 {
+            // The cursor is already at dimension 0 (as after `camera_sample`'s start).
+            return self.get_2d();
+        }
         let mut rng = self.at(0);
         let p = [uniform_f32(&mut rng), uniform_f32(&mut rng)];
         if self.dim < 2 {
