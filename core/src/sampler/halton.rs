@@ -153,11 +153,12 @@ impl HaltonSampler {
     /// `h(p)`: the index of the pixel's first sample.
     fn pixel_offset(&self, pixel: [u32; 2]) -> u64 {
         let mut offset = 0u64;
-        for axis in 0..2 {
-            let pm = u64::from(pixel[axis]) % self.scales[axis];
-            let digits = inverse_radical_inverse(axis as u32, pm, self.exponents[axis]);
+        for (axis, p) in (0u32..).zip(pixel) {
+            let a = axis as usize;
+            let pm = u64::from(p) % self.scales[a];
+            let digits = inverse_radical_inverse(axis, pm, self.exponents[a]);
             // `digits < scale ≤ 243` and `basis < stride ≤ 31104`: no overflow.
-            offset = (offset + digits * self.basis[axis]) % self.stride;
+            offset = (offset + digits * self.basis[a]) % self.stride;
         }
         offset
     }

@@ -123,7 +123,7 @@ pub(crate) fn image_strata_hit<S: Sampler>(s: &mut S, pixel: [u32; 2], n: u32) -
 
 /// Whether `points` (pairs in `[0,1)²`, a power-of-two count `n = 2^m`) has exactly one point
 /// in every elementary interval of area `1/n`: `2^a × 2^(m−a)` grids for every `a`.
-#[allow(dead_code)] // used once the (0,2) samplers land
+#[allow(dead_code)] // used by the (0,2) and Sobol samplers' tests
 pub(crate) fn is_zero_two_net(points: &[[f32; 2]]) -> bool {
     let n = points.len();
     assert!(n.is_power_of_two());
@@ -246,5 +246,49 @@ fn sampler_is_object_safe() {
     for s in all {
         let c = camera_sample(s, [1, 2], 0);
         assert!(c.p_film[0] >= 1.0 && c.p_film[0] < 2.0);
+    }
+}
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn all_in_unit<S: Sampler>(s: &mut S, pixel: [u32; 2], index: u32, dim: u32) -> bool {
+        s.start_pixel_sample(pixel, index, dim);
+        let mut v = std::vec![s.get_1d()];
+        v.extend_from_slice(&s.get_2d());
+        v.extend_from_slice(&s.get_pixel_2d());
+        let mut a = [0.0f32; 6];
+        s.get_array_2d(&mut a);
+        v.extend_from_slice(&a);
+        s.get_array_1d(&mut a[..3]);
+        v.extend_from_slice(&a[..3]);
+        v.iter().all(|x| (0.0..1.0).contains(x))
+    }
+
+    proptest! {
+        #[test]
+        fn every_value_is_in_unit_interval(
+            px in any::<u32>(), py in any::<u32>(), index in any::<u32>(),
+            dim in any::<u32>(), seed in any::<u64>(), spp in 1u32..300,
+        ) {
+            let p = [px, py];
+            prop_assert!(all_in_unit(&mut RandomSampler::new(spp, seed).unwrap(), p, index, dim));
+            let side = spp.isqrt().max(1);
+            for j in [Jitter::Jittered, Jitter::Centered] {
+                let mut s = StratifiedSampler::new(side, spp / side, j, seed).unwrap();
+                prop_assert!(all_in_unit(&mut s, p, index, dim));
+            }
+            prop_assert!(all_in_unit(&mut BestCandidateSampler::new(spp, seed).unwrap(), p, index, dim));
+        }
+
+        #[test]
+        fn camera_sample_stays_in_its_pixel(
+            px in any::<u32>(), py in any::<u32>(), index in any::<u32>(), seed in any::<u64>(),
+        ) {
+            let c = camera_sample(&mut RandomSampler::new(4, seed).unwrap(), [px, py], index);
+            prop_assert!(c.p_film[0] >= px as f32 && c.p_film[1] >= py as f32);
+            prop_assert!(c.p_film[0] < px as f32 + 1.0 || c.p_film[0] == px as f32);
+        }
     }
 }
