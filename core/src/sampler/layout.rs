@@ -425,7 +425,8 @@ impl<S: Sampler> PixelRangeSampler<S> {
         if self.done {
             return false;
         }
-        if self.index >= self.sampler.pixel_samples(self.pixel) {
+        // A pixel may take no samples at all (a sampler's `pixel_samples` can return 0).
+        while self.index >= self.sampler.pixel_samples(self.pixel) {
             self.index = 0;
             self.pixel[0] += 1;
             if self.pixel[0] >= self.end[0] {
