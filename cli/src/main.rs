@@ -6,6 +6,7 @@
 
 mod output;
 mod points;
+mod svg;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
