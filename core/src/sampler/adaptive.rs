@@ -4,6 +4,10 @@ use super::Sampler;
 use crate::Error;
 
 /// Channels of reported radiance that the contrast test looks at.
+///
+/// ```
+/// assert_eq!(nyquist::sampler::ADAPTIVE_CHANNELS, 4);
+/// ```
 pub const ADAPTIVE_CHANNELS: usize = 4;
 
 /// Wraps a sampler and takes `min_spp` samples per pixel, or the wrapped sampler's full

@@ -16,6 +16,11 @@ use crate::math::clamp_unit;
 mod table;
 
 /// Rows in the baked table.
+///
+/// ```
+/// use nyquist::sampler::{best_candidate::TABLE_SIZE, BestCandidateSampler};
+/// assert!(BestCandidateSampler::new(TABLE_SIZE, 0).is_ok());
+/// ```
 pub const TABLE_SIZE: u32 = 4096;
 
 /// Row `k` of the baked table as `[x, y, time, u, v]` in `[0, 1)`: stored value `q` reads as

@@ -17,6 +17,10 @@ use super::{Sampler, camera_sample};
 use crate::Error;
 
 /// Floats of a [`Sample`] before the arrays: film x, y, lens u, v, time.
+///
+/// ```
+/// assert_eq!(nyquist::sampler::SampleLayout::<0>::new().len(), nyquist::sampler::layout::CAMERA_LEN);
+/// ```
 pub const CAMERA_LEN: usize = 5;
 
 /// One array request in a [`SampleLayout`].

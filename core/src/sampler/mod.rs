@@ -58,24 +58,71 @@ pub use stratified::{Jitter, StratifiedSampler};
 /// ```
 pub trait Sampler {
     /// Samples per pixel.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let s = RandomSampler::new(4, 7).unwrap();
+    /// assert_eq!(s.samples_per_pixel(), 4);
+    /// ```
     fn samples_per_pixel(&self) -> u32;
 
     /// Moves the cursor to sample `sample_index` of `pixel`, at dimension `dim`.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([1, 2], 0, 3);
+    /// let a = s.get_1d();
+    /// s.start_pixel_sample([1, 2], 0, 2);
+    /// s.get_1d();
+    /// assert_eq!(s.get_1d(), a); // dimension 3 either way
+    /// ```
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32);
 
     /// The value of the current dimension, in `[0, 1)`; advances the cursor by one.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 9);
+    /// assert!((0.0..1.0).contains(&s.get_1d()));
+    /// ```
     fn get_1d(&mut self) -> f32;
 
     /// The values of the current and the next dimension, in `[0, 1)²`; advances by two.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// let [u, v] = s.get_2d();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// assert_eq!([s.get_1d(), s.get_1d()], [u, v]);
+    /// ```
     fn get_2d(&mut self) -> [f32; 2];
 
     /// The image sample: the offset inside the pixel, in `[0, 1)²` (dimensions 0 and 1 whatever
     /// the cursor). Moves the cursor to `max(cursor, 2)`.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 1, 7);
+    /// let a = s.get_pixel_2d();
+    /// s.start_pixel_sample([0, 0], 1, 0);
+    /// assert_eq!(s.get_pixel_2d(), a);
+    /// ```
     fn get_pixel_2d(&mut self) -> [f32; 2];
 
     /// The array size this sampler prefers for a request of `n` values (pbrt-v2's `RoundSize`):
     /// `n` itself unless the sampler's arrays need, e.g., a power of two. Total: never returns 0
     /// for `n > 0`; saturates at the largest size the sampler supports.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let s = RandomSampler::new(4, 7).unwrap();
+    /// assert_eq!(s.round_size(7), 7);
+    /// ```
     fn round_size(&self, n: u32) -> u32 {
         n
     }
@@ -83,6 +130,15 @@ pub trait Sampler {
     /// Fills `out` with an array of `out.len()` values for the current sample, at the current
     /// dimension. The default takes one dimension per value; stratified samplers override it to
     /// stratify the array (taking one dimension in all). Allocates: no.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// let mut a = [2.0f32; 3];
+    /// s.get_array_1d(&mut a);
+    /// assert!(a.iter().all(|x| (0.0..1.0).contains(x)));
+    /// ```
     fn get_array_1d(&mut self, out: &mut [f32]) {
         for x in out {
             *x = self.get_1d();
@@ -92,6 +148,15 @@ pub trait Sampler {
     /// Fills `out` (pairs `[u0, v0, u1, v1, …]`, `out.len() / 2` points; an odd last value is
     /// left untouched) with an array of 2D values for the current sample. The default takes two
     /// dimensions per point; stratified samplers override it (taking two dimensions in all).
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// let mut a = [2.0f32; 5];
+    /// s.get_array_2d(&mut a);
+    /// assert!(a[..4].iter().all(|x| (0.0..1.0).contains(x)) && a[4] == 2.0);
+    /// ```
     fn get_array_2d(&mut self, out: &mut [f32]) {
         for p in out.chunks_exact_mut(2) {
             let [u, v] = self.get_2d();
@@ -103,6 +168,12 @@ pub trait Sampler {
     /// How many samples `pixel` takes, given what was [reported](Sampler::report) for it so far.
     /// The default is [`Sampler::samples_per_pixel`]; adaptive samplers answer between their
     /// minimum and maximum.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let s = RandomSampler::new(4, 7).unwrap();
+    /// assert_eq!(s.pixel_samples([5, 5]), 4);
+    /// ```
     fn pixel_samples(&self, pixel: [u32; 2]) -> u32 {
         let _ = pixel;
         self.samples_per_pixel()
@@ -111,6 +182,13 @@ pub trait Sampler {
     /// Reports the radiance (any number of channels) that sample `sample_index` of `pixel`
     /// produced. The default ignores it; adaptive samplers use it to decide
     /// [`Sampler::pixel_samples`].
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.report([0, 0], 0, &[1.0, 0.0, 0.0]); // ignored
+    /// assert_eq!(s.pixel_samples([0, 0]), 4);
+    /// ```
     fn report(&mut self, pixel: [u32; 2], sample_index: u32, radiance: &[f32]) {
         let _ = (pixel, sample_index, radiance);
     }
