@@ -7,9 +7,11 @@ use rand_pcg::Pcg32;
 
 /// Independent uniform random samples from PCG32 (O'Neill 2014).
 ///
-/// For sample `i` of pixel `p`, dimension `d` is output `i · 65536 + d` of a PCG32 stream seeded
-/// by a hash of (`p`, seed): reached with PCG's O(log n) jump-ahead, so any value can be asked
-/// for first. Dimensions wrap modulo 65536; every `sample_index` gives new values (no wrap at
+/// For sample `i` of pixel `p`, dimension `d` is output `d` of a PCG32 generator whose state
+/// is a hash of (`p`, `i`, seed), reached with PCG's O(log d) jump-ahead, so any value can be
+/// asked for first. (Hashing the sample index into the state, rather than jumping `i · 65536`
+/// ahead in one per-pixel stream, keeps the jump short: the camera sample needs none.)
+/// Dimensions wrap modulo 65536; every `sample_index` gives new values (no wrap at
 /// `samples_per_pixel`).
 ///
 /// ```
@@ -27,7 +29,9 @@ pub struct RandomSampler {
     seed: u64,
     rng: Pcg32,
     pixel: [u32; 2],
+    /// `hash(pixel, seed)`.
     key: u64,
+    /// `hash(key, sample index)`: the generator state at dimension 0.
     base: u64,
     dim: u32,
 }
@@ -60,8 +64,11 @@ impl RandomSampler {
     }
 
     fn at(&self, dim: u32) -> Pcg32 {
-        let mut rng = Pcg32::new(self.key, STREAM);
-        rng.advance(self.base + u64::from(dim & 0xffff));
+        let mut rng = Pcg32::new(self.base, STREAM);
+        let d = dim & 0xffff;
+        if d != 0 {
+            rng.advance(u64::from(d));
+        }
         rng
     }
 }
@@ -76,7 +83,9 @@ impl Sampler for RandomSampler {
             self.pixel = pixel;
             self.key = pixel_hash(pixel, self.seed, 0x7261_6e64);
         }
-        self.base = u64::from(sample_index) * 65536;
+        self.base = crate::hash::mix64(
+            self.key ^ u64::from(sample_index).wrapping_mul(0x9e37_79b9_7f4a_7c15),
+        );
         self.dim = dim;
         self.rng = self.at(dim);
     }
