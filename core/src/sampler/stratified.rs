@@ -49,6 +49,8 @@ pub struct StratifiedSampler {
     xs: u32,
     ys: u32,
     spp: u32,
+    /// Lemire's `⌊2⁶⁴ / xs⌋ + 1` (0 when `xs == 1`): `s / xs` by one multiplication.
+    div_xs: u64,
     /// `[1/xs, 1/ys, 1/spp]`: multiplications instead of divisions in the hot path.
     inv: [f32; 3],
     jitter: Jitter,
@@ -56,6 +58,8 @@ pub struct StratifiedSampler {
     pixel: [u32; 2],
     /// `hash(pixel, seed)`, cached across samples of one pixel.
     pixel_key: u64,
+    /// The permutation keys of dimensions 2 (time) and 3 (lens) for the current pixel.
+    camera_keys: [u32; 2],
     /// `hash(pixel_key, index)`: the jitter source of the current sample.
     sample_key: u64,
     index: u32,
@@ -65,6 +69,17 @@ pub struct StratifiedSampler {
 /// Odd constants separating dimensions in the per-dimension hashes.
 const DIM_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
 const JITTER_STEP: u64 = 0xc2b2_ae3d_27d4_eb4f;
+
+/// The permutation key of dimension `dim` of the pixel keyed by `pixel_key`.
+#[inline]
+fn dim_key(pixel_key: u64, dim: u32) -> u32 {
+    let key = mix64(pixel_key ^ u64::from(dim).wrapping_mul(DIM_STEP));
+    key as u32 ^ (key >> 32) as u32
+}
+
+fn camera_keys(pixel_key: u64) -> [u32; 2] {
+    [dim_key(pixel_key, 2), dim_key(pixel_key, 3)]
+}
 
 impl StratifiedSampler {
     /// A stratified sampler with `x_samples × y_samples` samples per pixel.
@@ -89,6 +104,7 @@ impl StratifiedSampler {
             xs: x_samples,
             ys: y_samples,
             spp,
+            div_xs: (u64::MAX / u64::from(x_samples)).wrapping_add(1),
             inv: [
                 1.0 / x_samples as f32,
                 1.0 / y_samples as f32,
@@ -98,6 +114,7 @@ impl StratifiedSampler {
             seed,
             pixel: [0; 2],
             pixel_key: pixel_hash([0; 2], seed, 0x7374_7261),
+            camera_keys: camera_keys(pixel_hash([0; 2], seed, 0x7374_7261)),
             sample_key: 0,
             index: 0,
             dim: 0,
@@ -164,14 +181,29 @@ impl StratifiedSampler {
                 self.index % self.spp
             };
         }
-        let key = mix64(self.pixel_key ^ u64::from(dim).wrapping_mul(DIM_STEP));
-        permute(self.index, self.spp, key as u32 ^ (key >> 32) as u32)
+        let key = match dim {
+            // The camera's time and lens permutations, cached per pixel.
+            2 | 3 => self.camera_keys[(dim - 2) as usize],
+            _ => dim_key(self.pixel_key, dim),
+        };
+        permute(self.index, self.spp, key)
+    }
+
+    /// Stratum `s` as a grid cell `(s % xs, s / xs)`, dividing by multiplication (Lemire, Kaser
+    /// & Kurz 2019, "Faster remainder by direct computation": exact for every `u32` `s`).
+    #[inline]
+    fn cell(&self, s: u32) -> (u32, u32) {
+        if self.xs == 1 {
+            return (0, s);
+        }
+        let q = ((u128::from(self.div_xs) * u128::from(s)) >> 64) as u32;
+        (s - q * self.xs, q)
     }
 
     #[inline]
     fn value_2d(&self, dim: u32) -> [f32; 2] {
         let s = self.stratum(dim);
-        let (cx, cy) = (s % self.xs, s / self.xs);
+        let (cx, cy) = self.cell(s);
         let [jx, jy] = self.jitters(dim);
         [
             clamp_unit((cx as f32 + jx) * self.inv[0]),
@@ -208,6 +240,7 @@ impl Sampler for StratifiedSampler {
         if pixel != self.pixel {
             self.pixel = pixel;
             self.pixel_key = pixel_hash(pixel, self.seed, 0x7374_7261);
+            self.camera_keys = camera_keys(self.pixel_key);
         }
         self.index = sample_index;
         self.sample_key = mix64(self.pixel_key ^ u64::from(sample_index).wrapping_mul(DIM_STEP));
@@ -252,6 +285,31 @@ impl Sampler for StratifiedSampler {
             let [ox, oy] = lhs_jitters(kx, j, self.jitter);
             p[0] = lhs_value(j, n, kx, ox);
             p[1] = lhs_value(j, n, ky, oy);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cell_division_is_exact() {
+        for xs in [1u32, 2, 3, 5, 7, 16, 17, 1000, 65_535, u32::MAX] {
+            let s = StratifiedSampler::new(xs, 1, Jitter::Jittered, 0).unwrap();
+            for v in [
+                0u32,
+                1,
+                2,
+                xs - 1,
+                xs,
+                xs.wrapping_add(1),
+                12_345_678,
+                u32::MAX - 1,
+                u32::MAX,
+            ] {
+                assert_eq!(s.cell(v), (v % xs, v / xs), "{v} / {xs}");
+            }
         }
     }
 }
