@@ -4,8 +4,10 @@
 //! file beside the target and renamed into place, so a failure leaves nothing behind.
 #![forbid(unsafe_code)]
 
+mod filter;
 mod output;
 mod points;
+mod scene;
 mod svg;
 
 use clap::{Parser, Subcommand};
@@ -25,6 +27,10 @@ enum Command {
     ///
     /// Example: nyquist points --sampler halton --count 16 --dims 2
     Points(points::PointsArgs),
+    /// Print a reconstruction filter on a grid or as its lookup table; plot its spectrum.
+    ///
+    /// Example: nyquist filter --filter mitchell:b=0.5,c=0.25 --grid 5
+    Filter(filter::FilterArgs),
 }
 
 fn main() -> ExitCode {
@@ -34,6 +40,7 @@ fn main() -> ExitCode {
     };
     let result = match &cli.command {
         Command::Points(args) => points::run(args),
+        Command::Filter(args) => filter::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

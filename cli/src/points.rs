@@ -162,11 +162,11 @@ pub fn pixel_mode(args: &PointsArgs) -> bool {
 /// The samples of one pixel from a [`nyquist::sampler::Sampler`]: point-major values, their
 /// dimension count and the strata grid to draw (if any).
 pub fn pixel_samples(args: &PointsArgs) -> Result<(Vec<f32>, usize, Option<(u32, u32)>)> {
+    use SamplerName as S;
     use nyquist::sampler::{
         AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
         RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler,
     };
-    use SamplerName as S;
     let n = name(args.sampler);
     let dims = args.dims;
     if dims == 0 {

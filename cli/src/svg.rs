@@ -28,7 +28,10 @@ pub fn write_svg(
     writeln!(w, r#"<rect width="{size}" height="{size}" fill="white"/>"#)?;
     if let Some((nx, ny)) = grid {
         // Strata lines; at most 256 per axis so the picture stays readable.
-        write!(w, r##"<path stroke="#bbb" stroke-width="0.5" fill="none" d=""##)?;
+        write!(
+            w,
+            r##"<path stroke="#bbb" stroke-width="0.5" fill="none" d=""##
+        )?;
         if nx > 1 && nx <= 256 {
             for i in 1..nx {
                 let x = MARGIN + SIDE * f64::from(i) / f64::from(nx);
@@ -73,7 +76,14 @@ mod tests {
     #[test]
     fn svg_has_one_circle_per_point_and_the_grid() {
         let mut out = Vec::new();
-        write_svg(&mut out, &[0.1, 0.2, 0.6, 0.7, 0.3, 0.9], 2, Some((2, 3)), "a<b").unwrap();
+        write_svg(
+            &mut out,
+            &[0.1, 0.2, 0.6, 0.7, 0.3, 0.9],
+            2,
+            Some((2, 3)),
+            "a<b",
+        )
+        .unwrap();
         let s = String::from_utf8(out).unwrap();
         assert!(s.starts_with("<svg") && s.trim_end().ends_with("</svg>"));
         assert_eq!(s.matches("<circle").count(), 3);

@@ -21,7 +21,10 @@ fn assert_one_line_error(o: &Output, mentions: &str) {
     let err = String::from_utf8(o.stderr.clone()).unwrap();
     assert_eq!(o.status.code(), Some(2), "stderr: {err}");
     assert_eq!(err.lines().count(), 1, "not one line: {err:?}");
-    assert!(err.contains(mentions), "{err:?} does not mention {mentions:?}");
+    assert!(
+        err.contains(mentions),
+        "{err:?} does not mention {mentions:?}"
+    );
     assert!(o.stdout.is_empty());
 }
 
@@ -39,14 +42,27 @@ fn every_pixel_sampler_prints_spp_points_in_the_unit_cube() {
         ("adaptive", 16),
     ] {
         let mut args = vec![
-            "points", "--sampler", s, "--spp", "16", "--pixel", "3,2", "--dims", "5", "--seed",
+            "points",
+            "--sampler",
+            s,
+            "--spp",
+            "16",
+            "--pixel",
+            "3,2",
+            "--dims",
+            "5",
+            "--seed",
             "1",
         ];
         if ["halton", "hammersley", "sobol"].contains(&s) {
             args.extend(["--resolution", "8x8"]);
         }
         let o = nyquist(&args);
-        assert!(o.status.success(), "{s}: {}", String::from_utf8_lossy(&o.stderr));
+        assert!(
+            o.status.success(),
+            "{s}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
         let r = rows(&o);
         assert_eq!(r.len(), spp, "{s}");
         assert!(r.iter().all(|p| p.len() == 5), "{s}");
@@ -56,7 +72,15 @@ fn every_pixel_sampler_prints_spp_points_in_the_unit_cube() {
 
 #[test]
 fn stratified_pixel_samples_fill_one_stratum_each() {
-    let o = nyquist(&["points", "--sampler", "stratified", "--spp", "16", "--pixel", "5,5"]);
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "stratified",
+        "--spp",
+        "16",
+        "--pixel",
+        "5,5",
+    ]);
     let mut seen = [false; 16];
     for p in rows(&o) {
         seen[(p[1] * 4.0) as usize * 4 + (p[0] * 4.0) as usize] = true;
@@ -76,35 +100,74 @@ fn zero_two_rounds_spp_with_a_notice() {
 #[test]
 fn svg_draws_points_and_strata() {
     let o = nyquist(&[
-        "points", "--sampler", "stratified", "--spp", "12", "--grid", "4x3", "--format", "svg",
+        "points",
+        "--sampler",
+        "stratified",
+        "--spp",
+        "12",
+        "--grid",
+        "4x3",
+        "--format",
+        "svg",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let s = String::from_utf8(o.stdout).unwrap();
     assert!(s.starts_with("<svg"));
     assert_eq!(s.matches("<circle").count(), 12);
-    let o = nyquist(&["points", "--sampler", "halton", "--count", "20", "--format", "svg"]);
-    assert_eq!(String::from_utf8(o.stdout).unwrap().matches("<circle").count(), 20);
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "halton",
+        "--count",
+        "20",
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(
+        String::from_utf8(o.stdout)
+            .unwrap()
+            .matches("<circle")
+            .count(),
+        20
+    );
 }
 
 #[test]
 fn pixel_sampler_bad_input_is_one_line_and_status_2() {
-    assert_one_line_error(&nyquist(&["points", "--sampler", "best-candidate"]), "--spp");
+    assert_one_line_error(
+        &nyquist(&["points", "--sampler", "best-candidate"]),
+        "--spp",
+    );
     assert_one_line_error(
         &nyquist(&["points", "--sampler", "hammersley", "--spp", "4"]),
         "--resolution",
     );
     assert_one_line_error(
         &nyquist(&[
-            "points", "--sampler", "sobol", "--spp", "4", "--resolution", "4x4", "--pixel", "4,0",
+            "points",
+            "--sampler",
+            "sobol",
+            "--spp",
+            "4",
+            "--resolution",
+            "4x4",
+            "--pixel",
+            "4,0",
         ]),
         "outside",
     );
-    assert_one_line_error(&nyquist(&["points", "--sampler", "lhs", "--spp", "4"]), "pixel sampler");
+    assert_one_line_error(
+        &nyquist(&["points", "--sampler", "lhs", "--spp", "4"]),
+        "pixel sampler",
+    );
     assert_one_line_error(
         &nyquist(&["points", "--sampler", "stratified", "--spp", "10"]),
         "--grid",
     );
-    assert_one_line_error(&nyquist(&["points", "--spp", "4", "--pixel", "x"]), "--pixel");
+    assert_one_line_error(
+        &nyquist(&["points", "--spp", "4", "--pixel", "x"]),
+        "--pixel",
+    );
     assert_one_line_error(
         &nyquist(&["points", "--sampler", "best-candidate", "--spp", "5000"]),
         "best-candidate",

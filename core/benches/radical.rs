@@ -1,7 +1,143 @@
-//! Placeholder bench, replaced by the foundation work.
-use criterion::{Criterion, criterion_group, criterion_main};
+//! Radical-inverse throughput: ours against plain digit loops (base as a compile-time constant,
+//! and base at run time), on the same random indices below 10⁷ and the same dimensions.
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use nyquist::radical::{
+    PRIMES, folded_radical_inverse, radical_inverse, scrambled_radical_inverse,
+};
+use std::hint::black_box;
 
-fn placeholder(_c: &mut Criterion) {}
+const DIMS: usize = 64;
+const INDICES: usize = 256;
 
-criterion_group!(benches, placeholder);
+/// A plain digit loop with the base a compile-time constant (the compiler turns `/ B` into a
+/// multiply-shift).
+#[inline(always)]
+fn ri_const<const B: u64>(mut a: u64) -> f32 {
+    let inv_base = 1.0 / B as f32;
+    let mut reversed = 0u64;
+    let mut inv_base_n = 1.0f32;
+    while a != 0 {
+        let next = a / B;
+        let digit = a - next * B;
+        reversed = reversed * B + digit;
+        inv_base_n *= inv_base;
+        a = next;
+    }
+    (reversed as f32 * inv_base_n).min(nyquist::ONE_MINUS_EPSILON)
+}
+
+/// The same loop with the base known only at run time (hardware division).
+#[inline(never)]
+fn ri_runtime(base: u64, mut a: u64) -> f32 {
+    let inv_base = 1.0 / base as f32;
+    let mut reversed = 0u64;
+    let mut inv_base_n = 1.0f32;
+    while a != 0 {
+        let next = a / base;
+        let digit = a - next * base;
+        reversed = reversed * base + digit;
+        inv_base_n *= inv_base;
+        a = next;
+    }
+    (reversed as f32 * inv_base_n).min(nyquist::ONE_MINUS_EPSILON)
+}
+
+macro_rules! dispatch {
+    ($dim:expr, $a:expr; $($d:literal => $p:literal),* $(,)?) => {
+        match $dim { $($d => ri_const::<$p>($a),)* _ => 0.0 }
+    };
+}
+
+#[inline(never)]
+fn ri_const_dispatch(dim: u32, a: u64) -> f32 {
+    dispatch!(dim, a;
+        0 => 2, 1 => 3, 2 => 5, 3 => 7, 4 => 11, 5 => 13, 6 => 17, 7 => 19, 8 => 23, 9 => 29,
+        10 => 31, 11 => 37, 12 => 41, 13 => 43, 14 => 47, 15 => 53, 16 => 59, 17 => 61,
+        18 => 67, 19 => 71, 20 => 73, 21 => 79, 22 => 83, 23 => 89, 24 => 97, 25 => 101,
+        26 => 103, 27 => 107, 28 => 109, 29 => 113, 30 => 127, 31 => 131, 32 => 137, 33 => 139,
+        34 => 149, 35 => 151, 36 => 157, 37 => 163, 38 => 167, 39 => 173, 40 => 179, 41 => 181,
+        42 => 191, 43 => 193, 44 => 197, 45 => 199, 46 => 211, 47 => 223, 48 => 227, 49 => 229,
+        50 => 233, 51 => 239, 52 => 241, 53 => 251, 54 => 257, 55 => 263, 56 => 269, 57 => 271,
+        58 => 277, 59 => 281, 60 => 283, 61 => 293, 62 => 307, 63 => 311,
+    )
+}
+
+fn indices() -> Vec<u64> {
+    let mut state = 0x1234_5678_9abc_def0u64;
+    (0..INDICES)
+        .map(|_| {
+            state = nyquist::hash::mix64(state.wrapping_add(0x9e37_79b9_7f4a_7c15));
+            state % 10_000_000
+        })
+        .collect()
+}
+
+fn run(out: &mut [f32], idx: &[u64], f: impl Fn(u32, u64) -> f32) {
+    for (row, &a) in out.chunks_exact_mut(DIMS).zip(idx) {
+        for (dim, x) in row.iter_mut().enumerate() {
+            *x = f(dim as u32, black_box(a));
+        }
+    }
+}
+
+fn halton(c: &mut Criterion) {
+    // Sanity: the const-generic table matches the primes.
+    assert_eq!(PRIMES[63], 311);
+    assert_eq!(ri_const_dispatch(63, 12345), ri_runtime(311, 12345));
+    let idx = indices();
+    let mut out = vec![0.0f32; DIMS * INDICES];
+    let mut g = c.benchmark_group("halton_f32_dims0-63");
+    g.throughput(Throughput::Elements((DIMS * INDICES) as u64));
+    g.bench_function("nyquist", |b| {
+        b.iter(|| run(&mut out, black_box(&idx), radical_inverse))
+    });
+    g.bench_function("const_base_loop", |b| {
+        b.iter(|| run(&mut out, black_box(&idx), ri_const_dispatch))
+    });
+    g.bench_function("runtime_base_loop", |b| {
+        b.iter(|| {
+            run(&mut out, black_box(&idx), |d, a| {
+                ri_runtime(u64::from(PRIMES[d as usize]), a)
+            })
+        })
+    });
+    g.finish();
+
+    let mut out = vec![0.0f32; INDICES * 4];
+    let big: Vec<u64> = (0..INDICES * 4)
+        .map(|i| nyquist::hash::mix64(i as u64 + 1))
+        .collect();
+    let mut g = c.benchmark_group("base2");
+    g.throughput(Throughput::Elements(big.len() as u64));
+    g.bench_function("nyquist", |b| {
+        b.iter(|| {
+            for (x, &a) in out.iter_mut().zip(black_box(&big)) {
+                *x = radical_inverse(0, a);
+            }
+        })
+    });
+    g.bench_function("naive_loop", |b| {
+        b.iter(|| {
+            for (x, &a) in out.iter_mut().zip(black_box(&big)) {
+                *x = ri_const::<2>(a);
+            }
+        })
+    });
+    g.finish();
+
+    let mut out = vec![0.0f32; DIMS * INDICES];
+    let mut g = c.benchmark_group("forms_f32_dims0-63_info");
+    g.throughput(Throughput::Elements((DIMS * INDICES) as u64));
+    for (name, f) in [
+        ("folded", folded_radical_inverse as fn(u32, u64) -> f32),
+        ("scrambled", |d, a| scrambled_radical_inverse(d, a, 7)),
+    ] {
+        g.bench_function(BenchmarkId::from_parameter(name), |b| {
+            b.iter(|| run(&mut out, black_box(&idx), f))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, halton);
 criterion_main!(benches);

@@ -176,7 +176,7 @@ mod tests {
         assert_ne!(a, b);
         assert_eq!(permute(64 + 5, 64, 1), permute(5, 64, 1));
         assert_eq!(permute(3, 0, 9), 0);
-        assert_eq!(permute(u32::MAX, u32::MAX, 9) < u32::MAX, true);
+        assert!(permute(u32::MAX, u32::MAX, 9) < u32::MAX);
     }
 
     #[test]

@@ -1,11 +1,38 @@
 //! # nyquist-film
 //!
-//! Film accumulation and image output for renderers built on [`nyquist`]. This crate grows with
-//! the film work; today it holds the pixel geometry shared by the CLI.
+//! Film accumulation and image output for renderers built on [`nyquist`]: an [`Image`] of linear
+//! RGB `f32` pixels and writers for PNG (8-bit sRGB), OpenEXR (f32 or f16) and PFM, each taking
+//! any [`std::io::Write`]; [`write_image_file`] picks the format from the extension and writes a
+//! temporary file beside the target that is renamed into place, so a failure leaves nothing behind.
+//!
+//! ```
+//! use nyquist_film::{Image, output::png::{write_png, PngOptions}};
+//! let img = Image::from_fn(2, 1, |x, _| [x as f32; 3]);
+//! let mut bytes = Vec::new();
+//! write_png(&mut bytes, &img, &PngOptions::default()).unwrap();
+//! assert_eq!(&bytes[1..4], b"PNG");
+//! ```
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
-/// Film-space bounds of pixel `(x, y)`: it covers `[x, x+1) × [y, y+1)`, centre `(x+½, y+½)`.
+mod bounds;
+mod error;
+mod film;
+mod image;
+pub mod output;
+mod render;
+mod tile;
+mod weights;
+
+pub use bounds::Bounds;
+pub use error::Error;
+pub use film::{Film, FilmConfig, FilmStats, ResolveStats, TileSpec};
+pub use image::Image;
+pub use output::{ImageFormat, write_image, write_image_file};
+pub use render::render_tiles;
+pub use tile::{FilmTile, Pixel};
+
+/// Film-space centre of pixel `(x, y)`: pixel `(x, y)` covers `[x, x+1) × [y, y+1)`.
 ///
 /// ```
 /// assert_eq!(nyquist_film::pixel_center(3, 4), (3.5, 4.5));

@@ -1,1 +1,602 @@
-//! Radical inverses (filled in by the foundation work).
+//! Radical inverses Φ_b(a) for the first 1024 prime bases, with `u64` indices, in `f32` and `f64`:
+//! the plain form, the folded (Zaremba) form Ψ_b, a digit-permutation scrambled form, and the
+//! inverse.
+//!
+//! Dimension `d` uses base [`prime`]`(d)`; dimension 0 is base 2. Every function here is total:
+//! `dim >= 1024` wraps to `dim % 1024`, every `u64` index is valid, and results lie in `[0, 1)`
+//! (clamped to [`ONE_MINUS_EPSILON`] / [`ONE_MINUS_EPSILON_F64`]). Allocates: never.
+//!
+//! # How the digits are found
+//!
+//! Digits come from exact integer arithmetic, never from a rounded floating-point reciprocal.
+//! An index is cut into chunks below `B = b^k < 2³²` (at most three chunks for any `u64` and any of
+//! the 1024 bases). Inside a chunk `x` with `n` digits, `y = x·⌈2⁶⁴/bⁿ⌉` is the 64-bit fixed-point
+//! fraction `x/bⁿ`; multiplying it by `b` hands out one digit per step in the high word, most
+//! significant first (the digit-extraction idea of fast integer printing, e.g. Lemire's and
+//! Anhalt's decimal printers). The fraction is exact enough because `b²ⁿ < 2⁶⁴`: its error
+//! `x·ε < bⁿ` grows by `b` per step and stays below the gap `2⁶⁴/b^(n−j)` to the next digit.
+//! Only as many digits as the chunk's bit length can need are extracted. Base 2 is a bit reversal.
+//!
+//! # Accuracy
+//!
+//! - [`radical_inverse`], [`radical_inverse_f64`], the scrambled forms: within 1 ulp of the exact
+//!   rational value (the `f64` forms and every multi-chunk index are correctly rounded); base 2 is
+//!   the correctly rounded bit reversal.
+//! - The folded forms: within 1 ulp of the exact (infinite-sum) value; the periodic tail is
+//!   summed in closed form to 128 fractional bits.
+//!
+//! Sources: the radical inverse and Halton's sequence (Halton 1960), the folded radical inverse
+//! (Braaten & Weller 1979; Kocis & Whiten 1997, as the "Halton–Zaremba" sequence), digit
+//! permutations of the radical inverse (Faure 1992; Kollig & Keller 2002), and pbrt-v3 §7.4 for
+//! `InverseRadicalInverse` semantics.
+
+mod primes;
+
+use crate::hash;
+use crate::math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};
+use primes::PRIME_TABLE;
+pub use primes::PRIMES;
+
+/// The number of prime bases (and radical-inverse dimensions): 1024.
+///
+/// ```
+/// assert_eq!(nyquist::radical::PRIME_COUNT as usize, nyquist::radical::PRIMES.len());
+/// ```
+pub const PRIME_COUNT: u32 = 1024;
+
+/// The base of radical-inverse dimension `dim`: the `dim`-th prime (0-based), so `prime(0) == 2`.
+///
+/// Total: `dim >= 1024` wraps to `dim % 1024`.
+///
+/// ```
+/// use nyquist::radical::prime;
+/// assert_eq!((prime(0), prime(1), prime(2), prime(1023)), (2, 3, 5, 8161));
+/// assert_eq!(prime(1024 + 1), 3);
+/// ```
+#[inline]
+pub fn prime(dim: u32) -> u32 {
+    PRIMES[(dim % PRIME_COUNT) as usize]
+}
+
+// ---------------------------------------------------------------------------------------------
+// Per-base tables, evaluated at compile time.
+
+/// Per-base constants: the base, the digits per chunk `k` (the largest with `b^k < 2³²`), the
+/// chunk modulus `b^k`, and the offset of this base's rows in the flat tables below.
+#[derive(Clone, Copy)]
+struct BaseInfo {
+    b: u64,
+    k: u32,
+    big: u64,
+    off: u32,
+}
+
+const fn chunk_digits(b: u64) -> u32 {
+    let mut k = 0;
+    let mut p = 1u64;
+    while p * b < (1u64 << 32) {
+        p *= b;
+        k += 1;
+    }
+    k
+}
+
+const fn total_rows() -> usize {
+    let mut total = 0;
+    let mut i = 0;
+    while i < PRIME_TABLE.len() {
+        total += chunk_digits(PRIME_TABLE[i] as u64) as usize + 1;
+        i += 1;
+    }
+    total
+}
+
+/// Rows in the flat tables: `k + 1` per base (`n = 0 ..= k` digits).
+const ROWS: usize = total_rows();
+
+const fn build_bases() -> [BaseInfo; 1024] {
+    let mut out = [BaseInfo {
+        b: 0,
+        k: 0,
+        big: 0,
+        off: 0,
+    }; 1024];
+    let mut off = 0u32;
+    let mut i = 0;
+    while i < 1024 {
+        let b = PRIME_TABLE[i] as u64;
+        let k = chunk_digits(b);
+        out[i] = BaseInfo {
+            b,
+            k,
+            big: b.pow(k),
+            off,
+        };
+        off += k + 1;
+        i += 1;
+    }
+    out
+}
+
+static BASES: [BaseInfo; 1024] = build_bases();
+
+/// `bⁿ`, `⌈2⁶⁴/bⁿ⌉` (0 for `n = 0`, unused) and `1/bⁿ` (correctly rounded), per base and `n`.
+struct Rows {
+    pow: [u64; ROWS],
+    magic: [u64; ROWS],
+    inv: [f64; ROWS],
+}
+
+const fn build_rows() -> Rows {
+    let bases = build_bases();
+    let mut rows = Rows {
+        pow: [0; ROWS],
+        magic: [0; ROWS],
+        inv: [0.0; ROWS],
+    };
+    let mut i = 0;
+    while i < 1024 {
+        let info = bases[i];
+        let mut n = 0;
+        let mut p = 1u64;
+        while n <= info.k {
+            let row = (info.off + n) as usize;
+            rows.pow[row] = p;
+            rows.magic[row] = if n == 0 { 0 } else { u64::MAX / p + 1 };
+            rows.inv[row] = 1.0 / p as f64;
+            p = p.wrapping_mul(info.b);
+            n += 1;
+        }
+        i += 1;
+    }
+    rows
+}
+
+static ROW: Rows = build_rows();
+
+/// `DIGITS[d][L]`: the number of base-`b` digits of `2^L − 1`, capped at `k` — an upper bound on
+/// the digit count of any chunk of bit length `L` (one more than needed at most, which only
+/// costs a zero digit).
+const fn build_digits() -> [[u8; 33]; 1024] {
+    let bases = build_bases();
+    let mut out = [[0u8; 33]; 1024];
+    let mut i = 0;
+    while i < 1024 {
+        let info = bases[i];
+        let mut len = 1;
+        while len <= 32 {
+            let mut x = (1u64 << len) - 1;
+            let mut n = 0u32;
+            while x > 0 {
+                x /= info.b;
+                n += 1;
+            }
+            out[i][len] = if n < info.k { n } else { info.k } as u8;
+            len += 1;
+        }
+        i += 1;
+    }
+    out
+}
+
+static DIGITS: [[u8; 33]; 1024] = build_digits();
+
+// ---------------------------------------------------------------------------------------------
+// Digit engine.
+
+/// The digits of `x < bⁿ` (`n ≤ k`) reversed: `Σ_j d_j·b^(n−1−j)`, exactly.
+#[inline(always)]
+fn reverse_chunk(b: u64, x: u64, n: u32, magic: u64) -> u64 {
+    // y = x/bⁿ as a 64-bit fraction (no overflow: x·magic < 2⁶⁴ because b²ⁿ < 2⁶⁴).
+    let mut y = x.wrapping_mul(magic);
+    let mut rev = 0u64;
+    let mut weight = 1u64;
+    for _ in 0..n {
+        let t = u128::from(y) * u128::from(b);
+        rev = rev.wrapping_add(((t >> 64) as u64).wrapping_mul(weight));
+        y = t as u64;
+        weight = weight.wrapping_mul(b);
+    }
+    rev
+}
+
+/// Bit length of `x` (0 for 0).
+#[inline(always)]
+fn bit_len(x: u64) -> usize {
+    (64 - x.leading_zeros()) as usize
+}
+
+/// Reversed digits of a single chunk `x < b^k`, and the row (`off + n`) of its digit count.
+#[inline(always)]
+fn single_chunk(d: usize, info: &BaseInfo, x: u64) -> (u64, usize) {
+    let n = u32::from(DIGITS[d][bit_len(x)]);
+    let row = (info.off + n) as usize;
+    (reverse_chunk(info.b, x, n, ROW.magic[row]), row)
+}
+
+/// Φ_b(a) as an exact fraction `num / den` (`num < den < 2⁹⁶`) for any `u64` index.
+fn phi_fraction(d: usize, mut a: u64) -> (u128, u128) {
+    let info = &BASES[d];
+    let mut num = 0u128;
+    let mut den = 1u128;
+    while a >= info.big {
+        let chunk = a % info.big;
+        a /= info.big;
+        let rev = reverse_chunk(
+            info.b,
+            chunk,
+            info.k,
+            ROW.magic[(info.off + info.k) as usize],
+        );
+        num = num * u128::from(info.big) + u128::from(rev);
+        den *= u128::from(info.big);
+    }
+    let (rev, row) = single_chunk(d, info, a);
+    let p = u128::from(ROW.pow[row]);
+    (num * p + u128::from(rev), den * p)
+}
+
+/// `2^e` as an `f64`, for `-1022 <= e <= 1023`.
+#[inline]
+fn pow2(e: i32) -> f64 {
+    f64::from_bits(((e + 1023) as u64) << 52)
+}
+
+/// Long division of `(num + frac·2⁻¹²⁸) / den` (`num < den < 2⁹⁶`) into a 64-bit mantissa whose
+/// lowest bit is sticky, and its binary exponent: value ≈ `m · 2^e`, such that rounding `m` to 24
+/// or 53 bits rounds the value correctly (given `frac` exact and `inexact == false`).
+fn long_divide(num: u128, den: u128, mut frac: u128, inexact: bool) -> (u64, i32) {
+    let mut r = num;
+    let mut acc = 0u128;
+    let mut exp = 0i32;
+    let mut words = 0;
+    // The value is 0 or at least 2⁻²⁰⁰ for every caller, so 10 words reach 66 significant bits.
+    while acc < (1u128 << 66) && words < 10 {
+        let t = (r << 32) | (frac >> 96);
+        frac <<= 32;
+        acc = (acc << 32) | (t / den);
+        r = t % den;
+        exp -= 32;
+        words += 1;
+    }
+    let sticky = r != 0 || frac != 0 || inexact;
+    let shift = (128 - acc.leading_zeros()).saturating_sub(64);
+    let lost = acc & ((1u128 << shift) - 1) != 0;
+    let m = (acc >> shift) as u64 | u64::from(lost || sticky);
+    (m, exp + shift as i32)
+}
+
+/// `num / den` rounded to `f32` (correctly, when `inexact` is false), clamped below 1.
+fn fraction_f32(num: u128, den: u128, frac: u128, inexact: bool) -> f32 {
+    let (m, e) = long_divide(num, den, frac, inexact);
+    // `m as f32` rounds once; scaling by a power of two in f64 is exact, and so is the narrowing
+    // (the value is 0 or far above f32's smallest normal).
+    (((m as f32) as f64 * pow2(e)) as f32).min(ONE_MINUS_EPSILON)
+}
+
+/// `num / den` rounded to `f64` (correctly, when `inexact` is false), clamped below 1.
+fn fraction_f64(num: u128, den: u128, frac: u128, inexact: bool) -> f64 {
+    let (m, e) = long_divide(num, den, frac, inexact);
+    ((m as f64) * pow2(e)).min(ONE_MINUS_EPSILON_F64)
+}
+
+/// `num / den` correctly rounded to `f32` for `num < den < 2⁹⁶` (crate-internal helper, used by
+/// Hammersley's first coordinate).
+pub(crate) fn ratio_f32(num: u128, den: u128) -> f32 {
+    fraction_f32(num, den, 0, false)
+}
+
+/// `num / den` correctly rounded to `f64` for `num < den < 2⁹⁶`.
+pub(crate) fn ratio_f64(num: u128, den: u128) -> f64 {
+    fraction_f64(num, den, 0, false)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Φ_b.
+
+/// Φ_b(a), the radical inverse of `a` in base `b = prime(dim)`, as an `f32` in `[0, 1)`.
+///
+/// The base-`b` digits of `a` mirrored about the radix point: `a = Σ a_j b^j` gives
+/// `Φ_b(a) = Σ a_j b^−(j+1)`. Within 1 ulp of the exact value; base 2 (`dim % 1024 == 0`) is the
+/// bit reversal of the 64-bit index, correctly rounded (for `a < 2³²` that is
+/// `reverse_bits(a as u32) · 2⁻³²` rounded to `f32`). Total: `dim >= 1024` wraps modulo 1024; a
+/// value that would round to 1 is clamped to [`ONE_MINUS_EPSILON`].
+///
+/// ```
+/// use nyquist::radical::radical_inverse;
+/// let vdc: Vec<f32> = (0..8).map(|i| radical_inverse(0, i)).collect();
+/// assert_eq!(vdc, [0.0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875]);
+/// assert_eq!(radical_inverse(1, 5), 7.0 / 9.0); // 5 = 12₃ → 0.21₃
+/// assert!(radical_inverse(1023, u64::MAX) < 1.0);
+/// ```
+#[inline]
+pub fn radical_inverse(dim: u32, a: u64) -> f32 {
+    let d = (dim % PRIME_COUNT) as usize;
+    if d == 0 {
+        return ((a.reverse_bits() as f32) * (1.0 / 18_446_744_073_709_551_616.0))
+            .min(ONE_MINUS_EPSILON);
+    }
+    let info = &BASES[d];
+    if a < info.big {
+        let (rev, row) = single_chunk(d, info, a);
+        // rev < 2³² is exact in f64; the f64 product is within 2⁻⁵² relative, far below f32's
+        // rounding step, so the narrowed result is within 1 ulp.
+        return ((rev as f64 * ROW.inv[row]) as f32).min(ONE_MINUS_EPSILON);
+    }
+    let (num, den) = phi_fraction(d, a);
+    fraction_f32(num, den, 0, false)
+}
+
+/// Φ_b(a) as an `f64` in `[0, 1)`, correctly rounded (so within ½ ulp).
+///
+/// Same digits and wrapping rules as [`radical_inverse`].
+///
+/// ```
+/// use nyquist::radical::radical_inverse_f64;
+/// assert_eq!(radical_inverse_f64(0, 3), 0.75);
+/// assert_eq!(radical_inverse_f64(1, 1), 1.0 / 3.0);
+/// assert_eq!(radical_inverse_f64(2, 7), 11.0 / 25.0); // 7 = 12₅ → 0.21₅
+/// ```
+#[inline]
+pub fn radical_inverse_f64(dim: u32, a: u64) -> f64 {
+    let d = (dim % PRIME_COUNT) as usize;
+    if d == 0 {
+        return ((a.reverse_bits() as f64) * (1.0 / 18_446_744_073_709_551_616.0))
+            .min(ONE_MINUS_EPSILON_F64);
+    }
+    let info = &BASES[d];
+    if a < info.big {
+        let (rev, row) = single_chunk(d, info, a);
+        // Both operands are exact (< 2³²): one correctly rounded division.
+        return (rev as f64 / ROW.pow[row] as f64).min(ONE_MINUS_EPSILON_F64);
+    }
+    let (num, den) = phi_fraction(d, a);
+    fraction_f64(num, den, 0, false)
+}
+
+/// The index whose first `n_digits` base-`b` digits, reversed, are the low `n_digits` digits of
+/// `inverse` (`b = prime(dim)`): the integer inverse of the radical inverse, with pbrt-v3's
+/// `InverseRadicalInverse` semantics.
+///
+/// If `rev` is `Φ_b(a)·bⁿ` for an index `a < bⁿ`, then `inverse_radical_inverse(dim, rev, n) == a`.
+/// Digits of `inverse` above the first `n_digits` are ignored. Total: when the result does not fit
+/// a `u64` (more than 64 bits of digits), it wraps modulo 2⁶⁴ — the arithmetic is
+/// `index = index·b + digit` with wrapping. `dim >= 1024` wraps modulo 1024.
+///
+/// ```
+/// use nyquist::radical::inverse_radical_inverse;
+/// // 6 = 110₂ reversed over 3 digits is 011₂ = 3.
+/// assert_eq!(inverse_radical_inverse(0, 6, 3), 3);
+/// // 5 = 12₃ reversed over 2 digits is 21₃ = 7.
+/// assert_eq!(inverse_radical_inverse(1, 5, 2), 7);
+/// assert_eq!(inverse_radical_inverse(1, 5, 0), 0);
+/// ```
+pub fn inverse_radical_inverse(dim: u32, mut inverse: u64, n_digits: u32) -> u64 {
+    let b = u64::from(prime(dim));
+    let mut index = 0u64;
+    for done in 0..n_digits {
+        if inverse == 0 {
+            // Only zero digits remain: multiply by b once per digit, in O(log n) steps.
+            return index.wrapping_mul(b.wrapping_pow(n_digits - done));
+        }
+        let digit = inverse % b;
+        inverse /= b;
+        index = index.wrapping_mul(b).wrapping_add(digit);
+    }
+    index
+}
+
+// ---------------------------------------------------------------------------------------------
+// Folded (Zaremba) form Ψ_b.
+
+/// Bases up to this index (`b ≤ 23`) take the periodic tail from a const table; above it the
+/// closed form below is accurate to 2⁻¹²⁷ because `b^−b < 2⁻¹⁴⁰`.
+const SMALL_FOLD_BASES: usize = 9;
+
+/// `T_b(r) · 2¹²⁸` for `b ≤ 23`, where `T_b(r) = Σ_{i≥0} ((r+i) mod b)·b^−(i+1)`, summed by
+/// Horner from 150 digits out (truncation error below 2⁻¹²⁷).
+const fn build_fold_tails() -> [[u128; 23]; SMALL_FOLD_BASES] {
+    let mut out = [[0u128; 23]; SMALL_FOLD_BASES];
+    let mut d = 0;
+    while d < SMALL_FOLD_BASES {
+        let b = PRIME_TABLE[d] as u128;
+        let mut r = 0;
+        while r < b {
+            let mut v = 0u128;
+            let mut i = 150u128;
+            while i > 0 {
+                i -= 1;
+                let c = (r + i) % b;
+                // v ← (c + v)/b in 128-bit fixed point, by two 64-bit long-division steps.
+                let hi = (c << 64) | (v >> 64);
+                let qh = hi / b;
+                let lo = ((hi % b) << 64) | (v & (u64::MAX as u128));
+                v = (qh << 64) | (lo / b);
+            }
+            out[d][r as usize] = v;
+            r += 1;
+        }
+        d += 1;
+    }
+    out
+}
+
+static FOLD_TAILS: [[u128; 23]; SMALL_FOLD_BASES] = build_fold_tails();
+
+/// The folded tail `T_b(r) = Σ_{i≥0} ((r+i) mod b)·b^−(i+1)` as a 128-bit fraction (error below
+/// 2⁻¹²⁶). For `b ≥ 29`, by the closed form
+/// `T = (r(b−1)+1)/(b−1)² − b^−(b−1−r)/((b−1)(1−b^−b))` with the `b^−b` term dropped.
+fn fold_tail(d: usize, b: u64, r: u64) -> u128 {
+    if d < SMALL_FOLD_BASES {
+        return FOLD_TAILS[d][r as usize];
+    }
+    let q = u128::from((b - 1) * (b - 1));
+    let p = u128::from(r * (b - 1) + 1) % q;
+    // frac(p/q)·2¹²⁸ by long division (p < q < 2²⁶).
+    let hi = (p << 64) / q;
+    let lo = (((p << 64) % q) << 64) / q;
+    let first = (hi << 64) | lo;
+    // b^−s/(b−1) · 2¹²⁸, s = b−1−r, or 0 when it is below 2⁻¹²⁸.
+    let s = b - 1 - r;
+    let mut den = u128::from(b - 1);
+    let mut second = 0u128;
+    let mut ok = true;
+    for _ in 0..s {
+        match den.checked_mul(u128::from(b)) {
+            Some(v) => den = v,
+            None => {
+                ok = false;
+                break;
+            }
+        }
+    }
+    if ok {
+        second = u128::MAX / den;
+    }
+    // T < 1, so the difference taken modulo 2¹²⁸ is T·2¹²⁸ (the integer part of the first term
+    // cancels).
+    first.wrapping_sub(second)
+}
+
+/// Ψ_b(a) as `(R, bⁿ, T·2¹²⁸)`: value = `(R + T)/bⁿ`.
+fn folded_parts(d: usize, mut a: u64) -> (u128, u128, u128) {
+    let b = BASES[d].b;
+    let mut num = 0u128;
+    let mut den = 1u128;
+    let mut jm = 0u64; // j mod b
+    while a > 0 {
+        let digit = a % b;
+        a /= b;
+        let mut f = digit + jm;
+        if f >= b {
+            f -= b;
+        }
+        num = num * u128::from(b) + u128::from(f);
+        den *= u128::from(b);
+        jm += 1;
+        if jm == b {
+            jm = 0;
+        }
+    }
+    (num, den, fold_tail(d, b, jm))
+}
+
+/// Ψ_b(a), the folded radical inverse (Zaremba's form), as an `f32` in `[0, 1)`.
+///
+/// `Ψ_b(a) = Σ_{j≥0} ((a_j + j) mod b)·b^−(j+1)` with `a_j` the base-`b` digits of `a`
+/// (`b = prime(dim)`), the sum continued past `a`'s last digit (where `a_j = 0`) to infinity, so
+/// `Ψ₂(0) = 1/3`. The infinite tail is periodic and summed in closed form. Within 1 ulp. Total:
+/// `dim` wraps modulo 1024; clamped below 1.
+///
+/// ```
+/// use nyquist::radical::folded_radical_inverse;
+/// assert_eq!(folded_radical_inverse(0, 0), 1.0 / 3.0);
+/// assert_eq!(folded_radical_inverse(0, 1), 5.0 / 6.0);
+/// assert_eq!(folded_radical_inverse(0, 2), 1.0 / 12.0);
+/// ```
+pub fn folded_radical_inverse(dim: u32, a: u64) -> f32 {
+    let d = (dim % PRIME_COUNT) as usize;
+    let (num, den, tail) = folded_parts(d, a);
+    fraction_f32(num, den, tail, true)
+}
+
+/// Ψ_b(a) as an `f64` in `[0, 1)`, within 1 ulp. See [`folded_radical_inverse`].
+///
+/// ```
+/// use nyquist::radical::folded_radical_inverse_f64;
+/// assert_eq!(folded_radical_inverse_f64(0, 3), 7.0 / 12.0);
+/// // Ψ₃(0) has the periodic digits 0.012012…₃ = 5/26.
+/// assert!((folded_radical_inverse_f64(1, 0) - 5.0 / 26.0).abs() <= f64::EPSILON / 8.0);
+/// ```
+pub fn folded_radical_inverse_f64(dim: u32, a: u64) -> f64 {
+    let d = (dim % PRIME_COUNT) as usize;
+    let (num, den, tail) = folded_parts(d, a);
+    fraction_f64(num, den, tail, true)
+}
+
+// ---------------------------------------------------------------------------------------------
+// Digit-permutation scrambling.
+
+/// The permutation key of base `b` under `seed`: 32 bits for [`hash::permute`] and 32 bits for
+/// a rotation.
+#[inline]
+fn permutation_key(seed: u64, b: u64) -> u64 {
+    hash::hash2(seed, b)
+}
+
+/// π(digit) for base `b` and `key`: [`hash::permute`] followed by a rotation by a uniform offset.
+/// The rotation makes every digit's image exactly uniform over keys (up to 2⁻³²): `permute` alone
+/// favours some images for small `n` (e.g. `permute(0, 3, k)` is 0 for about 25% of keys).
+#[inline]
+fn digit_permutation(digit: u32, b: u32, key: u64) -> u32 {
+    let p = hash::permute(digit, b, key as u32);
+    let offset = ((key >> 32) * u64::from(b)) >> 32;
+    let q = p + offset as u32;
+    if q >= b { q - b } else { q }
+}
+
+/// Scrambled Φ as `(num, den)`: `(R·(b−1) + π(0)) / ((b−1)·bⁿ)`.
+fn scrambled_fraction(d: usize, mut a: u64, seed: u64) -> (u128, u128) {
+    let b = BASES[d].b;
+    let b32 = b as u32;
+    let key = permutation_key(seed, b);
+    let mut num = 0u128;
+    let mut den = 1u128;
+    while a > 0 {
+        let digit = (a % b) as u32;
+        a /= b;
+        num = num * u128::from(b) + u128::from(digit_permutation(digit, b32, key));
+        den *= u128::from(b);
+    }
+    let tail = u128::from(digit_permutation(0, b32, key));
+    (num * u128::from(b - 1) + tail, den * u128::from(b - 1))
+}
+
+/// Φ_b(a) with every digit passed through one random permutation π of `0..b`, as an `f32` in
+/// `[0, 1)`: `Σ_{j≥0} π(a_j)·b^−(j+1)`, including the infinitely many leading zeros of `a`, whose
+/// sum `π(0)·b^−n/(b−1)` is added in closed form — so every seed gives a uniformly distributed,
+/// still stratified point set.
+///
+/// π is chosen per (base, seed) by [`hash::permute`] composed with a hashed rotation: no table,
+/// no state. Within 1 ulp. Total:
+/// `dim` wraps modulo 1024; every seed is valid; the value is clamped below 1 (it reaches 1 only
+/// for `a = 0` when `π(0) = b − 1`).
+///
+/// ```
+/// use nyquist::radical::scrambled_radical_inverse;
+/// let x = scrambled_radical_inverse(1, 5, 7);
+/// assert!((0.0..1.0).contains(&x));
+/// assert_eq!(x, scrambled_radical_inverse(1, 5, 7)); // stateless: same inputs, same bits
+/// // Known defect (open): when π(0) = b − 1 the zero tail adds exactly b⁻ⁿ and shifts the
+/// // points by one stratum, so first-digit stratification holds only for π(0) < b − 1.
+/// ```
+pub fn scrambled_radical_inverse(dim: u32, a: u64, seed: u64) -> f32 {
+    let d = (dim % PRIME_COUNT) as usize;
+    let (num, den) = scrambled_fraction(d, a, seed);
+    if den < (1 << 53) {
+        // Both exact in f64: one correctly rounded division, then one narrowing (within 1 ulp).
+        return ((num as f64 / den as f64) as f32).min(ONE_MINUS_EPSILON);
+    }
+    fraction_f32(num, den, 0, false)
+}
+
+/// The scrambled radical inverse as an `f64` in `[0, 1)`, correctly rounded. See
+/// [`scrambled_radical_inverse`].
+///
+/// ```
+/// use nyquist::radical::{scrambled_radical_inverse, scrambled_radical_inverse_f64};
+/// let x = scrambled_radical_inverse_f64(5, 12345, 99);
+/// assert!((0.0..1.0).contains(&x));
+/// assert!((x - f64::from(scrambled_radical_inverse(5, 12345, 99))).abs() < 1e-7);
+/// ```
+pub fn scrambled_radical_inverse_f64(dim: u32, a: u64, seed: u64) -> f64 {
+    let d = (dim % PRIME_COUNT) as usize;
+    let (num, den) = scrambled_fraction(d, a, seed);
+    if den < (1 << 53) {
+        return (num as f64 / den as f64).min(ONE_MINUS_EPSILON_F64);
+    }
+    fraction_f64(num, den, 0, false)
+}
+
+#[cfg(test)]
+mod tests;

@@ -27,16 +27,24 @@
 
 mod adaptive;
 pub mod best_candidate;
+mod halton;
+mod hammersley;
 mod random;
+mod sobol;
 mod stratified;
+mod zero_two;
 
 pub mod layout;
 
 pub use adaptive::{ADAPTIVE_CHANNELS, AdaptiveSampler};
 pub use best_candidate::BestCandidateSampler;
+pub use halton::{HaltonSampler, HaltonScramble};
+pub use hammersley::HammersleySampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use random::RandomSampler;
+pub use sobol::SobolSampler;
 pub use stratified::{Jitter, StratifiedSampler};
+pub use zero_two::ZeroTwoSampler;
 
 /// A source of sample values addressed by (pixel, sample index, dimension).
 ///

@@ -5,19 +5,7 @@ use crate::Error;
 use crate::hash::{hash2, hash3, mix64, permute, unit_f32};
 use crate::math::clamp_unit;
 
-/// Where a sample sits inside its stratum.
-///
-/// ```
-/// use nyquist::sampler::Jitter;
-/// assert_ne!(Jitter::Jittered, Jitter::Centered);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Jitter {
-    /// Uniformly random inside the stratum.
-    Jittered,
-    /// At the stratum's centre (the aliasing baseline).
-    Centered,
-}
+pub use crate::stratify::Jitter;
 
 /// Stratified sampling: `x_samples × y_samples` strata per pixel (pbrt's `StratifiedSampler`).
 ///

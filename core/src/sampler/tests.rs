@@ -123,7 +123,6 @@ pub(crate) fn image_strata_hit<S: Sampler>(s: &mut S, pixel: [u32; 2], n: u32) -
 
 /// Whether `points` (pairs in `[0,1)²`, a power-of-two count `n = 2^m`) has exactly one point
 /// in every elementary interval of area `1/n`: `2^a × 2^(m−a)` grids for every `a`.
-#[allow(dead_code)] // used by the (0,2) and Sobol samplers' tests
 pub(crate) fn is_zero_two_net(points: &[[f32; 2]]) -> bool {
     let n = points.len();
     assert!(n.is_power_of_two());

@@ -1,1 +1,296 @@
-//! placeholder
+//! The van der Corput and Halton sequences and their folded (Halton–Zaremba) and digit-scrambled
+//! variants: point `i`, dimension `d` is a radical inverse of `i` in the `d`-th prime base.
+//!
+//! Sources: van der Corput (1935); Halton (1960); Kocis & Whiten (1997) for the Halton–Zaremba
+//! (folded) form; Kollig & Keller (2002) for scrambling by digit permutation.
+
+use super::Sequence;
+use crate::Error;
+use crate::radical::{
+    PRIME_COUNT, folded_radical_inverse, folded_radical_inverse_f64, radical_inverse,
+    radical_inverse_f64, scrambled_radical_inverse, scrambled_radical_inverse_f64,
+};
+
+/// Validates a dimension count for the radical-inverse sets: `1 ..= 1024`.
+fn check_dims(dims: u32) -> Result<u32, Error> {
+    match dims {
+        0 => Err(Error::ZeroSize { what: "dims" }),
+        d if d > PRIME_COUNT => Err(Error::OutOfRange { what: "dims" }),
+        d => Ok(d),
+    }
+}
+
+/// The van der Corput sequence: Φ₂(i), one dimension, every `u64` index its own point.
+///
+/// ```
+/// use nyquist::sequence::{Sequence, VanDerCorput};
+/// assert_eq!(VanDerCorput.sample(6, 0), 0.375); // 110₂ → 0.011₂
+/// assert_eq!(VanDerCorput.sample(6, 5), 0.375); // every dim reads dimension 0
+/// assert_eq!(VanDerCorput.point_count(), None);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct VanDerCorput;
+
+impl Sequence for VanDerCorput {
+    fn dims(&self) -> u32 {
+        1
+    }
+
+    fn point_count(&self) -> Option<u64> {
+        None
+    }
+
+    #[inline]
+    fn sample(&self, index: u64, _dim: u32) -> f32 {
+        radical_inverse(0, index)
+    }
+
+    #[inline]
+    fn sample_f64(&self, index: u64, _dim: u32) -> f64 {
+        radical_inverse_f64(0, index)
+    }
+}
+
+/// The Halton sequence: point `i` is `(Φ₂(i), Φ₃(i), Φ₅(i), …)`, dimension `d` in base
+/// [`prime`](crate::radical::prime)`(d)`, up to 1024 dimensions; every `u64` index is a point.
+///
+/// ```
+/// use nyquist::sequence::{Halton, Sequence};
+/// let h = Halton::new(3).unwrap();
+/// assert_eq!((h.sample(3, 0), h.sample(3, 1)), (0.75, 1.0 / 9.0));
+/// assert_eq!(h.sample(3, 3), h.sample(3, 0)); // dim wraps modulo dims
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Halton {
+    dims: u32,
+}
+
+impl Halton {
+    /// A Halton sequence with `dims` dimensions.
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `dims == 0`; [`Error::OutOfRange`] (`what: "dims"`) if `dims > 1024`.
+    ///
+    /// ```
+    /// use nyquist::{sequence::Halton, Error};
+    /// assert!(Halton::new(1024).is_ok());
+    /// assert_eq!(Halton::new(0), Err(Error::ZeroSize { what: "dims" }));
+    /// assert_eq!(Halton::new(1025), Err(Error::OutOfRange { what: "dims" }));
+    /// ```
+    pub fn new(dims: u32) -> Result<Halton, Error> {
+        Ok(Halton {
+            dims: check_dims(dims)?,
+        })
+    }
+}
+
+impl Sequence for Halton {
+    fn dims(&self) -> u32 {
+        self.dims
+    }
+
+    fn point_count(&self) -> Option<u64> {
+        None
+    }
+
+    #[inline]
+    fn sample(&self, index: u64, dim: u32) -> f32 {
+        radical_inverse(dim % self.dims, index)
+    }
+
+    #[inline]
+    fn sample_f64(&self, index: u64, dim: u32) -> f64 {
+        radical_inverse_f64(dim % self.dims, index)
+    }
+}
+
+/// The Halton–Zaremba sequence: Halton with the folded radical inverse Ψ_b in place of Φ_b.
+///
+/// ```
+/// use nyquist::sequence::{HaltonZaremba, Sequence};
+/// let h = HaltonZaremba::new(2).unwrap();
+/// assert_eq!(h.sample(0, 0), 1.0 / 3.0); // Ψ₂(0) = 0.0101…₂
+/// assert_eq!(h.sample(1, 0), 5.0 / 6.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HaltonZaremba {
+    dims: u32,
+}
+
+impl HaltonZaremba {
+    /// A Halton–Zaremba sequence with `dims` dimensions.
+    ///
+    /// # Errors
+    /// As [`Halton::new`].
+    ///
+    /// ```
+    /// assert!(nyquist::sequence::HaltonZaremba::new(0).is_err());
+    /// ```
+    pub fn new(dims: u32) -> Result<HaltonZaremba, Error> {
+        Ok(HaltonZaremba {
+            dims: check_dims(dims)?,
+        })
+    }
+}
+
+impl Sequence for HaltonZaremba {
+    fn dims(&self) -> u32 {
+        self.dims
+    }
+
+    fn point_count(&self) -> Option<u64> {
+        None
+    }
+
+    fn sample(&self, index: u64, dim: u32) -> f32 {
+        folded_radical_inverse(dim % self.dims, index)
+    }
+
+    fn sample_f64(&self, index: u64, dim: u32) -> f64 {
+        folded_radical_inverse_f64(dim % self.dims, index)
+    }
+}
+
+/// The Halton sequence scrambled by one random digit permutation per base, chosen by `seed`
+/// (see [`scrambled_radical_inverse`]). Every seed gives a stratified, uniformly distributed set.
+///
+/// ```
+/// use nyquist::sequence::{ScrambledHalton, Sequence};
+/// let a = ScrambledHalton::new(4, 1).unwrap();
+/// let b = ScrambledHalton::new(4, 2).unwrap();
+/// assert_ne!(a.sample(5, 2), b.sample(5, 2));
+/// assert_eq!(a.sample(5, 2), ScrambledHalton::new(4, 1).unwrap().sample(5, 2));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ScrambledHalton {
+    dims: u32,
+    seed: u64,
+}
+
+impl ScrambledHalton {
+    /// A scrambled Halton sequence with `dims` dimensions; every `seed` is valid.
+    ///
+    /// # Errors
+    /// As [`Halton::new`].
+    ///
+    /// ```
+    /// assert!(nyquist::sequence::ScrambledHalton::new(2000, 0).is_err());
+    /// ```
+    pub fn new(dims: u32, seed: u64) -> Result<ScrambledHalton, Error> {
+        Ok(ScrambledHalton {
+            dims: check_dims(dims)?,
+            seed,
+        })
+    }
+}
+
+impl Sequence for ScrambledHalton {
+    fn dims(&self) -> u32 {
+        self.dims
+    }
+
+    fn point_count(&self) -> Option<u64> {
+        None
+    }
+
+    fn sample(&self, index: u64, dim: u32) -> f32 {
+        scrambled_radical_inverse(dim % self.dims, index, self.seed)
+    }
+
+    fn sample_f64(&self, index: u64, dim: u32) -> f64 {
+        scrambled_radical_inverse_f64(dim % self.dims, index, self.seed)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn sets() -> [(&'static str, std::boxed::Box<dyn Sequence>); 4] {
+        [
+            ("vdc", std::boxed::Box::new(VanDerCorput)),
+            ("halton", std::boxed::Box::new(Halton::new(7).unwrap())),
+            (
+                "zaremba",
+                std::boxed::Box::new(HaltonZaremba::new(7).unwrap()),
+            ),
+            (
+                "scrambled",
+                std::boxed::Box::new(ScrambledHalton::new(7, 3).unwrap()),
+            ),
+        ]
+    }
+
+    #[test]
+    fn halton_points_are_the_radical_inverses_of_the_primes() {
+        let h = Halton::new(1024).unwrap();
+        for i in [0u64, 1, 2, 17, 1 << 40] {
+            for d in [0u32, 1, 2, 100, 1023] {
+                assert_eq!(h.sample(i, d), radical_inverse(d, i));
+                assert_eq!(h.sample_f64(i, d), radical_inverse_f64(d, i));
+            }
+        }
+        // The first Halton points in 2D.
+        let expect = [
+            (0.0, 0.0),
+            (0.5, 1.0 / 3.0),
+            (0.25, 2.0 / 3.0),
+            (0.75, 1.0 / 9.0),
+        ];
+        for (i, &(x, y)) in expect.iter().enumerate() {
+            assert_eq!(h.sample_f64(i as u64, 0), x);
+            assert_eq!(h.sample_f64(i as u64, 1), y);
+        }
+    }
+
+    #[test]
+    fn constructors_validate_dims() {
+        assert_eq!(Halton::new(0), Err(Error::ZeroSize { what: "dims" }));
+        assert_eq!(Halton::new(1025), Err(Error::OutOfRange { what: "dims" }));
+        assert!(HaltonZaremba::new(1025).is_err());
+        assert!(ScrambledHalton::new(0, 1).is_err());
+        assert_eq!(Halton::new(1024).unwrap().dims(), 1024);
+    }
+
+    #[test]
+    fn fill_equals_repeated_sample() {
+        for (name, set) in sets() {
+            let dims = set.dims().min(3);
+            let mut buf = [0.0f32; 30];
+            let n = set.fill(1000, dims, &mut buf).unwrap();
+            assert_eq!(n, 30 / u64::from(dims));
+            for (p, point) in buf.chunks_exact(dims as usize).enumerate() {
+                for (d, &x) in point.iter().enumerate() {
+                    assert_eq!(x, set.sample(1000 + p as u64, d as u32), "{name}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn halton_2d_first_points_are_stratified() {
+        // The first 2^a·3^b Halton points fall one per cell of a 2^a × 3^b grid.
+        let h = Halton::new(2).unwrap();
+        let (nx, ny) = (16usize, 9usize);
+        let mut seen = [[false; 9]; 16];
+        for i in 0..(nx * ny) as u64 {
+            let cx = (h.sample_f64(i, 0) * nx as f64) as usize;
+            let cy = (h.sample_f64(i, 1) * ny as f64) as usize;
+            assert!(!seen[cx][cy], "cell ({cx}, {cy}) twice");
+            seen[cx][cy] = true;
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn values_are_in_unit_interval(index in any::<u64>(), dim in any::<u32>()) {
+            for (_, set) in sets() {
+                let x = set.sample(index, dim);
+                prop_assert!((0.0..1.0).contains(&x));
+                let y = set.sample_f64(index, dim);
+                prop_assert!((0.0..1.0).contains(&y));
+            }
+        }
+    }
+}

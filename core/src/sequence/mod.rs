@@ -23,11 +23,11 @@ mod sobol;
 mod sobol_table;
 mod zero_two;
 
-// pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
-// pub use hammersley::{Hammersley, HammersleyZaremba};
+pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
+pub use hammersley::{Hammersley, HammersleyZaremba};
 
-// pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
-// pub use zero_two::ZeroTwo;
+pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
+pub use zero_two::ZeroTwo;
 
 /// A deterministic point set in `[0, 1)^d`, addressed by index.
 ///
@@ -115,7 +115,7 @@ pub fn check_fill(
             dims: set_dims,
         });
     }
-    if len == 0 || len % dims as usize != 0 {
+    if len == 0 || !len.is_multiple_of(dims as usize) {
         return Err(Error::BufferLength {
             multiple_of: dims as usize,
             actual: len,

@@ -1,0 +1,221 @@
+//! Filter importance sampling (pbrt-v4 style): offsets drawn with density ∝ `|f|`.
+
+use super::{Filter, radius_or_zero};
+use crate::{Error, math::clamp_unit};
+
+/// An offset drawn by [`FilterSampler::sample`] and its weight `f(offset)/pdf(offset)`.
+///
+/// ```
+/// use nyquist::filter::FilterSample;
+/// let s = FilterSample { offset: [0.25, -0.5], weight: 1.0 };
+/// assert_eq!(s.offset[1], -0.5);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FilterSample {
+    /// Offset `[x, y]` from the pixel centre, in pixels, inside the filter's support.
+    pub offset: [f32; 2],
+    /// `f(offset) / pdf(offset)`, sign included (negative in a negative lobe). Finite.
+    pub weight: f32,
+}
+
+/// Importance sampling of a filter: a piecewise-constant 2D distribution over the support
+/// `[−rx, rx] × [−ry, ry]` on an `N × N` grid (default 32 × 32), proportional to `|f|` at each
+/// cell centre (a cell whose centre is a zero of `f` uses the mean of its corners, so no part of
+/// the support where `f ≠ 0` gets zero density).
+///
+/// [`sample`](Self::sample) returns the weight `f(p)/pdf(p)` with `f` evaluated directly at the
+/// drawn point, so the estimator `Σ weight·g(offset) / n` is unbiased for `∫∫ f·g` whatever `N`
+/// is; `N` only changes the variance. A renderer can trace one camera ray per filter sample
+/// instead of splatting each sample into all pixels the filter covers.
+///
+/// The tables live inline (`4·N·(N + 1)` bytes: 4.2 KB at the default size). Allocates: no.
+/// The filter is stored by value; pass `&F` or `&dyn Filter` to borrow it. No symmetry is
+/// assumed.
+///
+/// # Examples
+///
+/// ```
+/// use nyquist::filter::{Filter, FilterSampler, Mitchell};
+/// let m = Mitchell::default();
+/// let sampler: FilterSampler<_> = FilterSampler::new(m).unwrap();
+/// let s = sampler.sample([0.3, 0.7]);
+/// assert!(s.offset[0].abs() <= 2.0 && s.offset[1].abs() <= 2.0);
+/// // weight = f / pdf
+/// let pdf = sampler.pdf(s.offset);
+/// assert!((s.weight - m.eval(s.offset[0], s.offset[1]) / pdf).abs() < 1e-4);
+/// ```
+#[derive(Clone, Debug)]
+pub struct FilterSampler<F, const N: usize = 32> {
+    filter: F,
+    radius: [f32; 2],
+    /// Cell size `[hx, hy]`.
+    cell: [f32; 2],
+    /// Marginal CDF over rows (y): `marginal[j]` = mass of rows `0..=j`; the last is 1.
+    marginal: [f32; N],
+    /// Conditional CDF within each row: `conditional[j][i]` = share of cells `0..=i` in row `j`.
+    conditional: [[f32; N]; N],
+    /// Whether `|f|` had any mass at all.
+    nonzero: bool,
+}
+
+impl<F: Filter, const N: usize> FilterSampler<F, N> {
+    /// Tabulates `|filter|` on an `N × N` grid (about `N²` evaluations). `N = 0` does not
+    /// compile.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Filter, FilterSampler, Lanczos};
+    /// let l = Lanczos::default();
+    /// let s = FilterSampler::<&dyn Filter, 64>::new(&l).unwrap();
+    /// assert_eq!(s.radius(), [4.0, 4.0]);
+    /// ```
+    pub fn new(filter: F) -> Result<FilterSampler<F, N>, Error> {
+        const { assert!(N >= 1, "a filter sampler needs at least one cell per axis") };
+        let [rx, ry] = radius_or_zero(&filter);
+        if rx == 0.0 || ry == 0.0 {
+            return Err(Error::OutOfRange {
+                what: "filter radius (must be finite and > 0)",
+            });
+        }
+        let hx = 2.0 * f64::from(rx) / N as f64;
+        let hy = 2.0 * f64::from(ry) / N as f64;
+        let at = |i: f64, j: f64| -> f64 {
+            let x = (-f64::from(rx) + i * hx) as f32;
+            let y = (-f64::from(ry) + j * hy) as f32;
+            let v = f64::from(filter.eval(x, y)).abs();
+            if v.is_finite() { v } else { 0.0 }
+        };
+        let mut conditional = [[0.0f32; N]; N];
+        let mut row_mass = [0.0f64; N];
+        for (j, row) in conditional.iter_mut().enumerate() {
+            let mut sum = 0.0f64;
+            // First pass: cumulative |f| in f64, stored temporarily as f32 after normalising.
+            let mut cum = [0.0f64; N];
+            for (i, c) in cum.iter_mut().enumerate() {
+                let (fi, fj) = (i as f64, j as f64);
+                let mut v = at(fi + 0.5, fj + 0.5);
+                if v == 0.0 {
+                    v = 0.25
+                        * (at(fi, fj)
+                            + at(fi + 1.0, fj)
+                            + at(fi, fj + 1.0)
+                            + at(fi + 1.0, fj + 1.0));
+                }
+                sum += v;
+                *c = sum;
+            }
+            row_mass[j] = sum;
+            if sum > 0.0 {
+                for (r, c) in row.iter_mut().zip(cum) {
+                    *r = (c / sum) as f32;
+                }
+            } else {
+                for (i, r) in row.iter_mut().enumerate() {
+                    *r = (i + 1) as f32 / N as f32;
+                }
+            }
+            row[N - 1] = 1.0;
+        }
+        let total: f64 = row_mass.iter().sum();
+        let mut marginal = [0.0f32; N];
+        let nonzero = total > 0.0 && total.is_finite();
+        let mut cum = 0.0f64;
+        for (m, mass) in marginal.iter_mut().zip(row_mass) {
+            cum += mass;
+            *m = if nonzero { (cum / total) as f32 } else { 0.0 };
+        }
+        if nonzero {
+            marginal[N - 1] = 1.0;
+        }
+        Ok(FilterSampler {
+            filter,
+            radius: [rx, ry],
+            cell: [hx as f32, hy as f32],
+            marginal,
+            conditional,
+            nonzero,
+        })
+    }
+
+    /// Draws an offset from `u ∈ [0, 1)²` (values outside are clamped into it; NaN counts as
+    /// 0) with density `pdf(offset)` ∝ the tabulated `|f|`, and returns it with the weight
+    /// `f(offset)/pdf(offset)`. A filter that is zero everywhere gives offset `[0, 0]` and
+    /// weight 0.
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, FilterSampler};
+    /// let s: FilterSampler<_> = FilterSampler::new(Boxcar::default()).unwrap();
+    /// let fs = s.sample([0.5, 0.25]);
+    /// assert_eq!(fs.weight, 1.0); // box: pdf = 1/area = 1
+    /// assert_eq!(fs.offset, [0.0, -0.25]);
+    /// ```
+    #[inline]
+    pub fn sample(&self, u: [f32; 2]) -> FilterSample {
+        if !self.nonzero {
+            return FilterSample {
+                offset: [0.0, 0.0],
+                weight: 0.0,
+            };
+        }
+        let (j, fy, py) = invert(&self.marginal, clamp_unit(u[1]));
+        let (i, fx, px) = invert(&self.conditional[j], clamp_unit(u[0]));
+        let x = (-self.radius[0] + (i as f32 + fx) * self.cell[0])
+            .clamp(-self.radius[0], self.radius[0]);
+        let y = (-self.radius[1] + (j as f32 + fy) * self.cell[1])
+            .clamp(-self.radius[1], self.radius[1]);
+        let pdf = px * py / (self.cell[0] * self.cell[1]);
+        let w = self.filter.eval(x, y) / pdf;
+        FilterSample {
+            offset: [x, y],
+            weight: if w.is_finite() { w } else { 0.0 },
+        }
+    }
+
+    /// The density [`sample`](Self::sample) draws `offset` with (0 outside the support, for
+    /// NaN, and for a filter that is zero everywhere).
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, FilterSampler};
+    /// let s: FilterSampler<_> = FilterSampler::new(Boxcar::default()).unwrap();
+    /// assert_eq!(s.pdf([0.1, 0.1]), 1.0);
+    /// assert_eq!(s.pdf([0.6, 0.1]), 0.0);
+    /// ```
+    pub fn pdf(&self, offset: [f32; 2]) -> f32 {
+        let [rx, ry] = self.radius;
+        let [x, y] = offset;
+        if !(self.nonzero && x.abs() <= rx && y.abs() <= ry) {
+            return 0.0;
+        }
+        let cell = |v: f32, r: f32, h: f32| (((v + r) / h) as usize).min(N - 1);
+        let (i, j) = (cell(x, rx, self.cell[0]), cell(y, ry, self.cell[1]));
+        let mass = |cdf: &[f32; N], k: usize| cdf[k] - if k == 0 { 0.0 } else { cdf[k - 1] };
+        mass(&self.marginal, j) * mass(&self.conditional[j], i) / (self.cell[0] * self.cell[1])
+    }
+
+    /// The filter's radius `[rx, ry]`.
+    pub fn radius(&self) -> [f32; 2] {
+        self.radius
+    }
+
+    /// The filter being sampled.
+    pub fn filter(&self) -> &F {
+        &self.filter
+    }
+}
+
+/// Inverts a CDF (`cdf[N − 1] = 1`, non-decreasing) at `u ∈ [0, 1)`: the cell `k` with
+/// `cdf[k − 1] ≤ u < cdf[k]`, the position `[0, 1)` within it, and its probability.
+#[inline(always)]
+fn invert<const N: usize>(cdf: &[f32; N], u: f32) -> (usize, f32, f32) {
+    let k = cdf.partition_point(|&c| c <= u).min(N - 1);
+    let lo = if k == 0 { 0.0 } else { cdf[k - 1] };
+    let p = cdf[k] - lo;
+    let t = if p > 0.0 {
+        clamp_unit((u - lo) / p)
+    } else {
+        0.0
+    };
+    (k, t, p)
+}

@@ -1,0 +1,961 @@
+//! Tests of the filters against f64 oracles, published integrals and invariants.
+
+use super::*;
+use crate::rng::{default_rng, uniform_f32, uniform_f64};
+use proptest::prelude::*;
+use std::string::ToString;
+use std::vec::Vec;
+
+// ---------------------------------------------------------------------------------------------
+// f64 oracles: the closed-form definitions of DESIGN.md, written independently of the
+// implementations.
+
+fn sinc64(x: f64) -> f64 {
+    if x == 0.0 {
+        1.0
+    } else {
+        (core::f64::consts::PI * x).sin() / (core::f64::consts::PI * x)
+    }
+}
+
+fn mitchell64(t: f64, b: f64, c: f64) -> f64 {
+    let t = t.abs();
+    if t < 1.0 {
+        ((12.0 - 9.0 * b - 6.0 * c) * t * t * t
+            + (-18.0 + 12.0 * b + 6.0 * c) * t * t
+            + (6.0 - 2.0 * b))
+            / 6.0
+    } else if t < 2.0 {
+        ((-b - 6.0 * c) * t * t * t
+            + (6.0 * b + 30.0 * c) * t * t
+            + (-12.0 * b - 48.0 * c) * t
+            + (8.0 * b + 24.0 * c))
+            / 6.0
+    } else {
+        0.0
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Oracle {
+    Box,
+    Triangle,
+    Gaussian(f64),
+    Mitchell(f64, f64),
+    Lanczos(f64),
+}
+
+impl Oracle {
+    fn axis(self, r: f64, x: f64) -> f64 {
+        if !(x.abs() <= r) {
+            return 0.0;
+        }
+        match self {
+            Oracle::Box => 1.0,
+            Oracle::Triangle => (r - x.abs()).max(0.0),
+            Oracle::Gaussian(a) => ((-a * x * x).exp() - (-a * r * r).exp()).max(0.0),
+            Oracle::Mitchell(b, c) => mitchell64(2.0 * x / r, b, c),
+            Oracle::Lanczos(tau) => sinc64(x) * sinc64(x / tau),
+        }
+    }
+    fn eval(self, r: [f32; 2], x: f32, y: f32) -> f64 {
+        self.axis(f64::from(r[0]), f64::from(x)) * self.axis(f64::from(r[1]), f64::from(y))
+    }
+}
+
+/// Every built-in with a few parameter sets, paired with its oracle.
+fn cases() -> Vec<(FilterKind, Oracle)> {
+    let mut v = Vec::new();
+    for r in [
+        [0.5, 0.5],
+        [1.0, 1.0],
+        [1.5, 0.25],
+        [0.33, 5.2],
+        [3.0, 3.0],
+        [2.0, 2.0],
+    ] {
+        v.push((FilterKind::Boxcar(Boxcar::new(r).unwrap()), Oracle::Box));
+        v.push((
+            FilterKind::Triangle(Triangle::new(r).unwrap()),
+            Oracle::Triangle,
+        ));
+        for a in [0.5f32, 2.0, 7.0] {
+            let g = Gaussian::new(r, a).unwrap();
+            v.push((FilterKind::Gaussian(g), Oracle::Gaussian(f64::from(a))));
+        }
+        for (b, c) in [(1.0 / 3.0, 1.0 / 3.0), (0.0, 0.5), (1.0, 0.0), (0.5, 0.25)] {
+            let m = Mitchell::new(r, b, c).unwrap();
+            v.push((
+                FilterKind::Mitchell(m),
+                Oracle::Mitchell(f64::from(b), f64::from(c)),
+            ));
+        }
+        for tau in [3.0f32, 2.0, 1.0] {
+            let l = Lanczos::new(r, tau).unwrap();
+            v.push((FilterKind::Lanczos(l), Oracle::Lanczos(f64::from(tau))));
+        }
+    }
+    v
+}
+
+fn peak(o: Oracle, r: [f32; 2]) -> f64 {
+    (o.eval(r, 0.0, 0.0).abs()).max(1.0)
+}
+
+#[test]
+fn eval_matches_the_f64_oracle() {
+    let mut rng = default_rng(11);
+    for (f, o) in cases() {
+        let r = f.radius();
+        let tol = 4e-6 * peak(o, r);
+        let check = |x: f32, y: f32| {
+            let got = f64::from(f.eval(x, y));
+            let want = o.eval(r, x, y);
+            assert!(
+                (got - want).abs() <= tol,
+                "{f}: eval({x}, {y}) = {got}, oracle {want}"
+            );
+            // The separable form multiplies to eval exactly.
+            let sep = f.eval_1d(Axis::X, x).unwrap() * f.eval_1d(Axis::Y, y).unwrap();
+            assert_eq!(sep.to_bits(), f.eval(x, y).to_bits(), "{f} at ({x}, {y})");
+        };
+        for _ in 0..2000 {
+            let x = (2.4 * uniform_f32(&mut rng) - 1.2) * r[0];
+            let y = (2.4 * uniform_f32(&mut rng) - 1.2) * r[1];
+            check(x, y);
+        }
+        for k in -8..=8 {
+            let t = k as f32 / 8.0;
+            check(t * r[0], 0.0);
+            check(0.0, t * r[1]);
+            check(t * r[0], -t * r[1]);
+        }
+    }
+}
+
+#[test]
+fn zero_just_past_the_radius_on_every_edge_and_corner() {
+    // pbrt-v4's ZeroPastRadius: points 1e-3 outside.
+    for r in [[1.0, 1.0], [1.5, 0.25], [0.33, 5.2], [0.1, 0.1], [3.0, 3.0]] {
+        let filters: [FilterKind; 5] = [
+            FilterKind::Boxcar(Boxcar::new(r).unwrap()),
+            FilterKind::Triangle(Triangle::new(r).unwrap()),
+            FilterKind::Gaussian(Gaussian::new(r, 2.0).unwrap()),
+            FilterKind::Mitchell(Mitchell::default_with_radius(r)),
+            FilterKind::Lanczos(Lanczos::new(r, 3.0).unwrap()),
+        ];
+        for f in filters {
+            let table: FilterTable = FilterTable::new(&f, Interpolation::Linear).unwrap();
+            let full: Table2d = Table2d::new(&f, Interpolation::Nearest).unwrap();
+            let (ox, oy) = (r[0] + 1e-3, r[1] + 1e-3);
+            let mut points = Vec::new();
+            for s in [-1.0f32, 1.0] {
+                points.push((s * ox, 0.0));
+                points.push((0.0, s * oy));
+                for t in [-1.0f32, 1.0] {
+                    points.push((s * ox, t * oy)); // corners
+                    points.push((s * ox, t * r[1] * 0.5)); // along the edges
+                    points.push((s * r[0] * 0.5, t * oy));
+                    points.push((s * ox, t * r[1]));
+                    points.push((s * r[0], t * oy));
+                }
+            }
+            for (x, y) in points {
+                assert_eq!(f.eval(x, y), 0.0, "{f} at ({x}, {y})");
+                assert_eq!(table.weight(x, y), 0.0, "{f} table at ({x}, {y})");
+                assert_eq!(full.weight(x, y), 0.0, "{f} 2D table at ({x}, {y})");
+            }
+        }
+    }
+}
+
+impl Mitchell {
+    fn default_with_radius(r: [f32; 2]) -> Mitchell {
+        Mitchell::new(r, 1.0 / 3.0, 1.0 / 3.0).unwrap()
+    }
+}
+
+/// 256 × 256 jittered stratified quadrature of `eval` over the support, in f64.
+fn stratified_integral(f: &dyn Filter, seed: u64) -> f64 {
+    const N: u32 = 256;
+    let [rx, ry] = f.radius().map(f64::from);
+    let (hx, hy) = (2.0 * rx / f64::from(N), 2.0 * ry / f64::from(N));
+    let mut rng = default_rng(seed);
+    let mut sum = 0.0;
+    for j in 0..N {
+        for i in 0..N {
+            let x = -rx + (f64::from(i) + uniform_f64(&mut rng)) * hx;
+            let y = -ry + (f64::from(j) + uniform_f64(&mut rng)) * hy;
+            sum += f64::from(f.eval(x as f32, y as f32));
+        }
+    }
+    sum * hx * hy
+}
+
+#[test]
+fn integrals_match_stratified_quadrature_within_one_percent() {
+    for (k, (f, _)) in cases().into_iter().enumerate() {
+        let exact = f64::from(f.integral());
+        let q = stratified_integral(&f, k as u64);
+        assert!(
+            (q - exact).abs() <= 0.01 * exact.abs(),
+            "{f}: integral {exact}, quadrature {q}"
+        );
+    }
+}
+
+#[test]
+fn integrals_match_known_values() {
+    let close = |got: f32, want: f64, rel: f64| {
+        assert!(
+            (f64::from(got) - want).abs() <= rel * want.abs(),
+            "{got} vs {want}"
+        );
+    };
+    for r in [[0.5f32, 0.5], [1.0, 2.0], [0.25, 3.5]] {
+        let (rx, ry) = (f64::from(r[0]), f64::from(r[1]));
+        close(Boxcar::new(r).unwrap().integral(), 4.0 * rx * ry, 1e-7);
+        close(
+            Triangle::new(r).unwrap().integral(),
+            rx * rx * ry * ry,
+            1e-7,
+        );
+        for (b, c) in [(1.0 / 3.0, 1.0 / 3.0), (0.0, 0.5), (1.0, 0.0), (-0.5, 2.0)] {
+            let m = Mitchell::new(r, b, c).unwrap();
+            close(m.integral(), rx * ry / 4.0, 1e-7);
+            // And numerically, for any (B, C).
+            let q = numeric_integral(&m as &dyn Filter);
+            assert!(
+                (q - rx * ry / 4.0).abs() < 1e-5 * (rx * ry),
+                "mitchell {r:?} {b} {c}: {q}"
+            );
+        }
+    }
+    assert_eq!(Triangle::default().integral(), 16.0);
+    assert_eq!(Mitchell::default().integral(), 1.0);
+    close(Gaussian::default().integral(), 1.567_235_830_0, 1e-7);
+    close(Lanczos::default().integral(), 1.023_834_842_0, 1e-7);
+    // σ form: σ = 0.5 is α = 2.
+    close(
+        Gaussian::with_sigma([2.0, 2.0], 0.5).unwrap().integral(),
+        1.567_235_830_0,
+        1e-7,
+    );
+    // Tiny α uses the series: compare with quadrature.
+    let g = Gaussian::new([2.0, 1.0], 1e-5).unwrap();
+    let axis = |r: f64| {
+        let n = 100_000;
+        let h = 2.0 * r / f64::from(n);
+        (0..n)
+            .map(|i| Oracle::Gaussian(1e-5).axis(r, -r + (f64::from(i) + 0.5) * h))
+            .sum::<f64>()
+            * h
+    };
+    let q = axis(2.0) * axis(1.0);
+    assert!(
+        (f64::from(g.integral()) - q).abs() < 1e-3 * q,
+        "{} vs {q}",
+        g.integral()
+    );
+    // Lanczos at other parameters against the f64 quadrature of the oracle.
+    for (r, tau) in [(3.0f64, 3.0f64), (2.0, 2.0), (4.0, 1.0), (1.3, 0.7)] {
+        let n = 200_000;
+        let h = 2.0 * r / f64::from(n);
+        let s: f64 = (0..n)
+            .map(|i| Oracle::Lanczos(tau).axis(r, -r + (f64::from(i) + 0.5) * h))
+            .sum::<f64>()
+            * h;
+        let l = Lanczos::new([r as f32, r as f32], tau as f32).unwrap();
+        close(l.integral(), s * s, 1e-6);
+    }
+}
+
+#[test]
+fn default_integral_is_numeric_for_plugins() {
+    // The trait's provided integral, separable and not.
+    #[derive(Debug)]
+    struct Sep;
+    impl Filter for Sep {
+        fn radius(&self) -> [f32; 2] {
+            [1.0, 2.0]
+        }
+        fn eval(&self, x: f32, y: f32) -> f32 {
+            self.eval_1d(Axis::X, x).unwrap() * self.eval_1d(Axis::Y, y).unwrap()
+        }
+        fn eval_1d(&self, axis: Axis, x: f32) -> Option<f32> {
+            let r = self.radius()[axis.index()];
+            Some(if x.abs() <= r { r - x.abs() } else { 0.0 })
+        }
+    }
+    assert!(Sep.is_separable());
+    assert!((Sep.integral() - 4.0).abs() < 1e-5);
+    assert!(!Cone.is_separable());
+    assert!((Cone.integral() - core::f32::consts::FRAC_PI_2).abs() < 1e-3);
+}
+
+#[test]
+fn defaults_are_designs() {
+    assert_eq!(Boxcar::default(), Boxcar::new([0.5, 0.5]).unwrap());
+    assert_eq!(Triangle::default(), Triangle::new([2.0, 2.0]).unwrap());
+    assert_eq!(Gaussian::default(), Gaussian::new([2.0, 2.0], 2.0).unwrap());
+    assert_eq!(
+        Mitchell::default(),
+        Mitchell::new([2.0, 2.0], 1.0 / 3.0, 1.0 / 3.0).unwrap()
+    );
+    assert_eq!(Lanczos::default(), Lanczos::new([4.0, 4.0], 3.0).unwrap());
+    for (spec, kind) in [
+        ("box", FilterKind::Boxcar(Boxcar::default())),
+        ("triangle", FilterKind::Triangle(Triangle::default())),
+        ("gaussian", FilterKind::Gaussian(Gaussian::default())),
+        ("mitchell", FilterKind::Mitchell(Mitchell::default())),
+        ("lanczos", FilterKind::Lanczos(Lanczos::default())),
+    ] {
+        assert_eq!(FilterKind::parse(spec).unwrap(), kind);
+    }
+}
+
+#[test]
+fn mitchell_values_and_partition_of_unity() {
+    for (b, c) in [
+        (1.0f32 / 3.0, 1.0f32 / 3.0),
+        (0.0, 0.5),
+        (1.0, 0.0),
+        (0.5, 0.25),
+        (0.2, 0.7),
+    ] {
+        let m = Mitchell::new([2.0, 2.0], b, c).unwrap();
+        let f = |x: f32| m.eval_1d(Axis::X, x).unwrap();
+        assert!((f(0.0) - (1.0 - b / 3.0)).abs() < 1e-6, "M(0), B = {b}");
+        assert!((f(1.0) - b / 6.0).abs() < 1e-6, "M(1), B = {b}");
+        assert!((f(-1.0) - b / 6.0).abs() < 1e-6, "M(-1), B = {b}");
+        assert!(f(2.0).abs() < 1e-6);
+        for i in 0..=1000 {
+            let x = i as f32 / 1000.0;
+            let sum: f32 = (-3..=3).map(|k| f(x + k as f32)).sum();
+            assert!(
+                (sum - 1.0).abs() < 2e-6,
+                "B = {b}, C = {c}: Σ M({x} + k) = {sum}"
+            );
+        }
+    }
+}
+
+#[test]
+fn sinc_decreases_over_the_first_ten_thousand_floats() {
+    let mut prev = sinc(0.0);
+    assert_eq!(prev, 1.0);
+    for bits in 1..=10_000u32 {
+        let x = f32::from_bits(bits);
+        let s = sinc(x);
+        assert!(
+            s.is_finite() && s <= prev && s <= 1.0,
+            "sinc({x:e}) = {s} after {prev}"
+        );
+        prev = s;
+    }
+    // And just above 0 at normal sizes it decreases strictly over a coarse grid.
+    let mut prev = 1.0;
+    for i in 1..=1000 {
+        let s = sinc(i as f32 * 1e-3);
+        assert!(s < prev);
+        prev = s;
+    }
+}
+
+#[test]
+fn sinc_matches_the_oracle_near_zeros_and_far_out() {
+    let mut rng = default_rng(5);
+    for _ in 0..100_000 {
+        let x = (uniform_f32(&mut rng) - 0.5) * 200.0;
+        let want = sinc64(f64::from(x));
+        let got = f64::from(sinc(x));
+        assert!(
+            (got - want).abs() < 1e-7 + 4e-7 * want.abs(),
+            "sinc({x}) = {got}, want {want}"
+        );
+    }
+    for n in 1..100 {
+        assert_eq!(sinc(n as f32), 0.0);
+        assert_eq!(sinc(-(n as f32)), 0.0);
+    }
+    assert_eq!(sinc(f32::INFINITY), 0.0);
+    assert_eq!(sinc(1e30), 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Tables.
+
+/// A user-defined, non-separable filter: the cone `max(0, 1 − x² − y²)`.
+#[derive(Debug, Clone, Copy)]
+struct Cone;
+impl Filter for Cone {
+    fn radius(&self) -> [f32; 2] {
+        [1.0, 1.0]
+    }
+    fn eval(&self, x: f32, y: f32) -> f32 {
+        let d = 1.0 - (x * x + y * y);
+        if d > 0.0 { d } else { 0.0 }
+    }
+}
+
+/// Max |lookup − eval| over a (2k+1)² grid on [−r, r]².
+fn table_error(f: &dyn Filter, t: TableView<'_>, k: i32) -> f64 {
+    let [rx, ry] = f.radius();
+    let mut worst = 0.0f64;
+    for j in -k..=k {
+        let y = j as f32 / k as f32 * ry;
+        for i in -k..=k {
+            let x = i as f32 / k as f32 * rx;
+            let e = (f64::from(t.weight(x, y)) - f64::from(f.eval(x, y))).abs();
+            worst = worst.max(e);
+        }
+    }
+    worst
+}
+
+#[test]
+fn documented_table_error_bounds() {
+    // The bounds in table.rs's docs: (nearest, linear) at the default size, defaults.
+    let rows: [(FilterKind, f64, f64); 5] = [
+        (FilterKind::parse("box").unwrap(), 0.0, 0.0),
+        (FilterKind::parse("triangle").unwrap(), 0.26, 7.2e-7),
+        (FilterKind::parse("gaussian").unwrap(), 0.113, 0.0171),
+        (FilterKind::parse("mitchell").unwrap(), 0.089, 0.0138),
+        (FilterKind::parse("lanczos").unwrap(), 0.223, 0.0575),
+    ];
+    for (f, nearest, linear) in rows {
+        let tn: FilterTable = FilterTable::new(&f, Interpolation::Nearest).unwrap();
+        let tl: FilterTable = FilterTable::new(&f, Interpolation::Linear).unwrap();
+        let (en, el) = (
+            table_error(&f, tn.view(), 1000),
+            table_error(&f, tl.view(), 1000),
+        );
+        std::println!("{f}: nearest {en:.3e}, linear {el:.3e}");
+        assert!(
+            en <= nearest,
+            "{f}: nearest error {en} above the documented {nearest}"
+        );
+        assert!(
+            el <= linear,
+            "{f}: linear error {el} above the documented {linear}"
+        );
+    }
+}
+
+#[test]
+fn tables_are_exact_at_sample_points() {
+    let mut filters: Vec<(std::boxed::Box<dyn Filter>, bool)> = Vec::new();
+    for (f, _) in cases() {
+        filters.push((std::boxed::Box::new(f), true));
+    }
+    filters.push((std::boxed::Box::new(Cone), false));
+    let mut inexact = 0;
+    for (f, separable) in &filters {
+        let f: &dyn Filter = f.as_ref();
+        for interp in [Interpolation::Nearest, Interpolation::Linear] {
+            let t: FilterTable = FilterTable::new(f, interp).unwrap();
+            assert_eq!(t.is_separable(), *separable);
+            let full: Table2d = Table2d::new(f, interp).unwrap();
+            let v = t.view();
+            for j in 0..16 {
+                let y = v.sample_point(Axis::Y, j);
+                for i in 0..16 {
+                    let x = v.sample_point(Axis::X, i);
+                    let want = f.eval(x, y);
+                    assert_eq!(t.weight(x, y), v.weight(x, y));
+                    assert_eq!(v.entry(i, j), want, "entry ({i}, {j})");
+                    assert_eq!(t.weight(-x, y), t.weight(x, y));
+                    assert_eq!(full.weight(x, -y), full.weight(x, y));
+                    if t.weight(x, y) != want || full.weight(x, y) != want {
+                        inexact += 1;
+                        // Only possible where no float maps exactly onto the sample: still close.
+                        assert!((t.weight(x, y) - want).abs() < 1e-6 * want.abs().max(1.0));
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(inexact, 0, "lookups not bit-exact at sample points");
+}
+
+#[test]
+fn separable_table_factors_multiply_to_the_weight() {
+    let m = Mitchell::default();
+    let t: FilterTable = FilterTable::new(&m, Interpolation::Linear).unwrap();
+    let v = t.view();
+    let mut rng = default_rng(3);
+    for _ in 0..10_000 {
+        let x = (uniform_f32(&mut rng) - 0.5) * 5.0;
+        let y = (uniform_f32(&mut rng) - 0.5) * 5.0;
+        let w = v.weight_1d(Axis::X, x).unwrap() * v.weight_1d(Axis::Y, y).unwrap();
+        assert_eq!(w, t.weight(x, y)); // −0 and 0 are equal
+        assert_eq!(t.weight_1d(Axis::X, x), v.weight_1d(Axis::X, x));
+    }
+    assert_eq!(t.integral(), 1.0);
+    let full: FilterTable = FilterTable::new(&Cone, Interpolation::Linear).unwrap();
+    assert_eq!(full.view().weight_1d(Axis::X, 0.0), None);
+}
+
+#[test]
+fn footprint_equals_per_weight_lookups() {
+    let mut rng = default_rng(21);
+    for f in [
+        FilterKind::parse("mitchell").unwrap(),
+        FilterKind::parse("lanczos:rx=3,ry=1.5").unwrap(),
+    ] {
+        let sep: FilterTable = FilterTable::new(&f, Interpolation::Linear).unwrap();
+        let full: FilterTable = FilterTable::new(&Cone, Interpolation::Nearest).unwrap();
+        for t in [sep, full] {
+            let v = t.view();
+            for _ in 0..200 {
+                let d0 = [uniform_f32(&mut rng) * -5.0, uniform_f32(&mut rng) * -3.0];
+                let mut out = [0.0f32; 7 * 5];
+                v.footprint(d0, 7, &mut out).unwrap();
+                for j in 0..5 {
+                    for i in 0..7 {
+                        let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+                        assert_eq!(out[j * 7 + i], t.weight(dx, dy), "({i}, {j}) from {d0:?}");
+                    }
+                }
+            }
+            let mut bad = [0.0f32; 10];
+            assert!(v.footprint([0.0, 0.0], 3, &mut bad).is_err());
+            assert!(v.footprint([0.0, 0.0], 0, &mut bad).is_err());
+        }
+    }
+}
+
+#[test]
+fn user_filter_tabulates_like_a_builtin() {
+    for interp in [Interpolation::Nearest, Interpolation::Linear] {
+        let t: FilterTable = FilterTable::new(&Cone as &dyn Filter, interp).unwrap();
+        let bound = if interp == Interpolation::Linear {
+            0.04
+        } else {
+            0.14
+        };
+        let e = table_error(&Cone, t.view(), 500);
+        assert!(e <= bound, "{interp:?}: {e}");
+        assert!((t.integral() - core::f32::consts::FRAC_PI_2).abs() < 1e-3);
+        assert_eq!(t.weight(1.001, 0.0), 0.0);
+        assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
+    }
+    // A plugin that breaks the contract is refused (radius) or sanitised (values).
+    #[derive(Debug)]
+    struct Bad(f32);
+    impl Filter for Bad {
+        fn radius(&self) -> [f32; 2] {
+            [self.0, 1.0]
+        }
+        fn eval(&self, _: f32, _: f32) -> f32 {
+            f32::NAN
+        }
+    }
+    assert!(FilterTable::<16>::new(&Bad(f32::NAN), Interpolation::Linear).is_err());
+    assert!(FilterTable::<16>::new(&Bad(-1.0), Interpolation::Linear).is_err());
+    let t = FilterTable::<16>::new(&Bad(1.0), Interpolation::Linear).unwrap();
+    assert_eq!(t.weight(0.5, 0.5), 0.0);
+    assert!(FilterSampler::<_, 8>::new(Bad(0.0)).is_err());
+    let s = FilterSampler::<_, 8>::new(Bad(1.0)).unwrap();
+    assert_eq!(s.sample([0.5, 0.5]).weight, 0.0);
+}
+
+#[test]
+fn other_table_sizes() {
+    let l = Lanczos::default();
+    let t2 = FilterTable::<2>::new(&l, Interpolation::Linear).unwrap();
+    assert_eq!(t2.weight(0.0, 0.0), 1.0);
+    let t256 = FilterTable::<256>::new(&l, Interpolation::Linear).unwrap();
+    assert!(table_error(&l, t256.view(), 700) < 5e-4);
+    assert_eq!(t256.view().len(), 256);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Importance sampling.
+
+/// χ² of sampled offsets against |f|/∫|f| on an 8 × 8 histogram.
+fn chi_square<F: Filter, const N: usize>(
+    s: &FilterSampler<F, N>,
+    samples: u32,
+    seed: u64,
+) -> (f64, usize) {
+    const B: usize = 8;
+    let f = s.filter();
+    let [rx, ry] = f.radius().map(f64::from);
+    // Expected bin probabilities by fine midpoint quadrature of |f|.
+    let mut expected = [[0.0f64; B]; B];
+    const Q: usize = 64;
+    for (bj, row) in expected.iter_mut().enumerate() {
+        for (bi, e) in row.iter_mut().enumerate() {
+            for qj in 0..Q {
+                for qi in 0..Q {
+                    let x = -rx + ((bi * Q + qi) as f64 + 0.5) * 2.0 * rx / (B * Q) as f64;
+                    let y = -ry + ((bj * Q + qj) as f64 + 0.5) * 2.0 * ry / (B * Q) as f64;
+                    *e += f64::from(f.eval(x as f32, y as f32)).abs();
+                }
+            }
+        }
+    }
+    let total: f64 = expected.iter().flatten().sum();
+    let mut counts = [[0u32; B]; B];
+    let mut rng = default_rng(seed);
+    for _ in 0..samples {
+        let fs = s.sample([uniform_f32(&mut rng), uniform_f32(&mut rng)]);
+        let [x, y] = fs.offset;
+        assert!(x.abs() <= rx as f32 && y.abs() <= ry as f32);
+        let bi = (((f64::from(x) + rx) / (2.0 * rx) * B as f64) as usize).min(B - 1);
+        let bj = (((f64::from(y) + ry) / (2.0 * ry) * B as f64) as usize).min(B - 1);
+        counts[bj][bi] += 1;
+    }
+    // Bins with fewer than 5 expected counts are pooled.
+    let (mut chi2, mut dof) = (0.0, 0usize);
+    let (mut pool_e, mut pool_o) = (0.0, 0.0);
+    for j in 0..B {
+        for i in 0..B {
+            let e = expected[j][i] / total * f64::from(samples);
+            let o = f64::from(counts[j][i]);
+            if e < 5.0 {
+                pool_e += e;
+                pool_o += o;
+            } else {
+                chi2 += (o - e) * (o - e) / e;
+                dof += 1;
+            }
+        }
+    }
+    if pool_e >= 5.0 {
+        chi2 += (pool_o - pool_e) * (pool_o - pool_e) / pool_e;
+        dof += 1;
+    }
+    (chi2, dof - 1)
+}
+
+#[test]
+fn sampled_offsets_follow_abs_f() {
+    let n = 200_000;
+    // χ² critical values at p = 0.001 are below dof + 3.1·√(2·dof) + 10 for these sizes.
+    let crit = |dof: usize| dof as f64 + 3.1 * (2.0 * dof as f64).sqrt() + 10.0;
+    type Run<'a> = &'a dyn Fn() -> (f64, usize);
+    let cases: [(Run<'_>, &str); 5] = [
+        (
+            &|| {
+                chi_square(
+                    &FilterSampler::<_, 32>::new(Mitchell::default()).unwrap(),
+                    n,
+                    1,
+                )
+            },
+            "mitchell",
+        ),
+        (
+            &|| {
+                chi_square(
+                    &FilterSampler::<_, 64>::new(Lanczos::default()).unwrap(),
+                    n,
+                    2,
+                )
+            },
+            "lanczos",
+        ),
+        (
+            &|| {
+                chi_square(
+                    &FilterSampler::<_, 32>::new(Gaussian::default()).unwrap(),
+                    n,
+                    3,
+                )
+            },
+            "gaussian",
+        ),
+        (
+            &|| {
+                chi_square(
+                    &FilterSampler::<_, 32>::new(Triangle::new([1.5, 0.5]).unwrap()).unwrap(),
+                    n,
+                    4,
+                )
+            },
+            "triangle",
+        ),
+        (
+            &|| chi_square(&FilterSampler::<&dyn Filter, 32>::new(&Cone).unwrap(), n, 5),
+            "cone (user)",
+        ),
+    ];
+    for (run, name) in cases {
+        let (chi2, dof) = run();
+        assert!(chi2 < crit(dof), "{name}: χ² = {chi2:.1} with {dof} dof");
+    }
+}
+
+#[test]
+fn estimator_converges_to_integral_of_f_times_g() {
+    let g = |x: f64, y: f64| (0.7 * x).cos() * (1.0 + 0.3 * y) + 0.2 * x * x + 0.1 * x * y;
+    let check = |f: &dyn Filter, sample: &dyn Fn([f32; 2]) -> FilterSample, name: &str| {
+        let [rx, ry] = f.radius().map(f64::from);
+        // Truth by 1024² midpoint quadrature.
+        const Q: u32 = 1024;
+        let (hx, hy) = (2.0 * rx / f64::from(Q), 2.0 * ry / f64::from(Q));
+        let mut truth = 0.0;
+        for j in 0..Q {
+            for i in 0..Q {
+                let x = -rx + (f64::from(i) + 0.5) * hx;
+                let y = -ry + (f64::from(j) + 0.5) * hy;
+                truth += f64::from(f.eval(x as f32, y as f32)) * g(x, y);
+            }
+        }
+        truth *= hx * hy;
+        let n = 1 << 18;
+        let mut rng = default_rng(17);
+        let (mut sum, mut sum2) = (0.0f64, 0.0f64);
+        for _ in 0..n {
+            let s = sample([uniform_f32(&mut rng), uniform_f32(&mut rng)]);
+            let v = f64::from(s.weight) * g(f64::from(s.offset[0]), f64::from(s.offset[1]));
+            sum += v;
+            sum2 += v * v;
+        }
+        let mean = sum / f64::from(n);
+        let sd = ((sum2 / f64::from(n) - mean * mean) / f64::from(n)).sqrt();
+        assert!(
+            (mean - truth).abs() < 5.0 * sd + 1e-4 * truth.abs()
+                && (mean - truth).abs() < 0.01 * truth.abs(),
+            "{name}: estimate {mean} ± {sd}, truth {truth}"
+        );
+    };
+    let m = FilterSampler::<_, 32>::new(Mitchell::default()).unwrap();
+    check(&Mitchell::default(), &|u| m.sample(u), "mitchell");
+    let l = FilterSampler::<_, 16>::new(Lanczos::default()).unwrap();
+    check(
+        &Lanczos::default(),
+        &|u| l.sample(u),
+        "lanczos, coarse grid",
+    );
+    let c = FilterSampler::<&dyn Filter, 32>::new(&Cone).unwrap();
+    check(&Cone, &|u| c.sample(u), "cone (user)");
+    let b = FilterSampler::<_, 4>::new(Boxcar::new([1.0, 2.0]).unwrap()).unwrap();
+    check(&Boxcar::new([1.0, 2.0]).unwrap(), &|u| b.sample(u), "box");
+}
+
+#[test]
+fn sampler_weight_is_f_over_pdf_and_pdf_integrates_to_one() {
+    let s = FilterSampler::<_, 32>::new(Mitchell::default()).unwrap();
+    let f = *s.filter();
+    let mut rng = default_rng(9);
+    for _ in 0..10_000 {
+        let fs = s.sample([uniform_f32(&mut rng), uniform_f32(&mut rng)]);
+        let [x, y] = fs.offset;
+        let want = f.eval(x, y) / s.pdf(fs.offset);
+        assert!(
+            (fs.weight - want).abs() <= 1e-5 * want.abs().max(1.0),
+            "{fs:?} vs {want}"
+        );
+        assert!(fs.weight.signum() == f.eval(x, y).signum() || fs.weight == 0.0);
+    }
+    let pdf_integral = {
+        let n = 512;
+        let h = 4.0 / n as f64;
+        let mut sum = 0.0;
+        for j in 0..n {
+            for i in 0..n {
+                let x = -2.0 + (i as f64 + 0.5) * h;
+                let y = -2.0 + (j as f64 + 0.5) * h;
+                sum += f64::from(s.pdf([x as f32, y as f32]));
+            }
+        }
+        sum * h * h
+    };
+    assert!((pdf_integral - 1.0).abs() < 1e-4, "{pdf_integral}");
+    // Clamped and non-finite u stay in the support.
+    for u in [[1.0, 1.0], [f32::NAN, -3.0], [f32::INFINITY, 0.999_999_9]] {
+        let fs = s.sample(u);
+        assert!(fs.offset[0].abs() <= 2.0 && fs.offset[1].abs() <= 2.0 && fs.weight.is_finite());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Specs.
+
+#[test]
+fn spec_errors_name_the_offence() {
+    use SpecError::*;
+    assert_eq!(FilterKind::parse(""), Err(Empty));
+    assert_eq!(FilterKind::parse(":b=1"), Err(Empty));
+    assert_eq!(
+        FilterKind::parse("sinc"),
+        Err(UnknownFilter { name: "sinc" })
+    );
+    assert_eq!(
+        FilterKind::parse("box:tau=1"),
+        Err(UnknownKey {
+            filter: "box",
+            key: "tau"
+        })
+    );
+    assert_eq!(
+        FilterKind::parse("mitchell:b"),
+        Err(MissingValue { item: "b" })
+    );
+    assert_eq!(
+        FilterKind::parse("mitchell:b="),
+        Err(MissingValue { item: "b=" })
+    );
+    assert_eq!(
+        FilterKind::parse("mitchell:b=1,"),
+        Err(MissingValue { item: "" })
+    );
+    assert_eq!(
+        FilterKind::parse("gaussian:alpha=1x"),
+        Err(BadNumber {
+            key: "alpha",
+            value: "1x"
+        })
+    );
+    assert_eq!(
+        FilterKind::parse("gaussian:alpha=1,sigma=2"),
+        Err(Conflict {
+            first: "alpha",
+            second: "sigma"
+        })
+    );
+    assert_eq!(
+        FilterKind::parse("gaussian:sigma=0"),
+        Err(Invalid {
+            key: "sigma",
+            value: "0",
+            error: crate::Error::OutOfRange { what: "sigma" }
+        })
+    );
+    assert_eq!(
+        FilterKind::parse("lanczos:radius=2,ry=nan"),
+        Err(Invalid {
+            key: "ry",
+            value: "nan",
+            error: crate::Error::NonFinite { what: "ry" }
+        })
+    );
+    assert_eq!(
+        FilterKind::parse("mitchell:c=1e9"),
+        Err(Invalid {
+            key: "c",
+            value: "1e9",
+            error: crate::Error::OutOfRange { what: "c" }
+        })
+    );
+    let e = FilterKind::parse("triangle:radius=0")
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("radius") && e.contains('0'), "{e}");
+}
+
+#[test]
+fn specs_parse_and_round_trip() {
+    let g = FilterKind::parse(" Gaussian : radius = 1.5 , sigma = 0.5 ").unwrap();
+    assert_eq!(
+        g,
+        FilterKind::Gaussian(Gaussian::with_sigma([1.5, 1.5], 0.5).unwrap())
+    );
+    let t = FilterKind::parse("tent:radius=3,ry=1").unwrap();
+    assert_eq!(t.radius(), [3.0, 1.0]);
+    assert_eq!(
+        FilterKind::parse("boxcar:").unwrap(),
+        FilterKind::Boxcar(Boxcar::default())
+    );
+    for spec in [
+        "box:rx=0.7",
+        "triangle",
+        "gaussian:alpha=3.3",
+        "mitchell:b=0.1,c=0.45,radius=2.5",
+        "lanczos:tau=2,rx=3",
+    ] {
+        let f = FilterKind::parse(spec).unwrap();
+        assert_eq!(
+            FilterKind::parse(&std::format!("{f}")).unwrap(),
+            f,
+            "{spec}"
+        );
+        assert_eq!(f.as_dyn().eval(0.1, 0.2), f.eval(0.1, 0.2));
+        assert!(f.is_separable());
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Properties.
+
+fn any_f32() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        prop::num::f32::ANY,
+        -10.0f32..10.0,
+        Just(f32::NAN),
+        Just(f32::INFINITY),
+        Just(f32::NEG_INFINITY),
+        Just(0.0),
+    ]
+}
+
+fn radius() -> impl Strategy<Value = [f32; 2]> {
+    [MIN_RADIUS..=MAX_RADIUS, MIN_RADIUS..=8.0f32]
+}
+
+fn valid_filter() -> impl Strategy<Value = FilterKind> {
+    prop_oneof![
+        radius().prop_map(|r| FilterKind::Boxcar(Boxcar::new(r).unwrap())),
+        radius().prop_map(|r| FilterKind::Triangle(Triangle::new(r).unwrap())),
+        (
+            radius(),
+            prop_oneof![f32::MIN_POSITIVE..=f32::MAX, 1e-6f32..100.0]
+        )
+            .prop_map(|(r, a)| FilterKind::Gaussian(Gaussian::new(r, a).unwrap())),
+        (radius(), -1000.0f32..=1000.0, -1000.0f32..=1000.0)
+            .prop_map(|(r, b, c)| FilterKind::Mitchell(Mitchell::new(r, b, c).unwrap())),
+        (
+            radius(),
+            prop_oneof![f32::MIN_POSITIVE..=f32::MAX, 0.1f32..10.0]
+        )
+            .prop_map(|(r, t)| FilterKind::Lanczos(Lanczos::new(r, t).unwrap())),
+    ]
+}
+
+proptest! {
+    #[test]
+    fn eval_is_finite_and_zero_past_the_radius(f in valid_filter(), x in any_f32(), y in any_f32()) {
+        let v = f.eval(x, y);
+        prop_assert!(v.is_finite(), "{f}: eval({x}, {y}) = {v}");
+        let [rx, ry] = f.radius();
+        if !(x.abs() <= rx && y.abs() <= ry) {
+            prop_assert_eq!(v, 0.0);
+        }
+        prop_assert!(f.integral().is_finite());
+        prop_assert!(f.eval_1d(Axis::X, x).unwrap().is_finite());
+    }
+
+    #[test]
+    fn constructors_never_panic(r in [any_f32(), any_f32()], p in any_f32(), q in any_f32()) {
+        for f in [
+            Boxcar::new(r).map(FilterKind::Boxcar),
+            Triangle::new(r).map(FilterKind::Triangle),
+            Gaussian::new(r, p).map(FilterKind::Gaussian),
+            Gaussian::with_sigma(r, p).map(FilterKind::Gaussian),
+            Mitchell::new(r, p, q).map(FilterKind::Mitchell),
+            Lanczos::new(r, p).map(FilterKind::Lanczos),
+        ].into_iter().flatten() {
+            prop_assert!(f.eval(0.0, 0.0).is_finite());
+            prop_assert!(f.integral().is_finite());
+        }
+    }
+
+    #[test]
+    fn spec_parser_never_panics(s in "\\PC{0,40}") {
+        let _ = FilterKind::parse(&s);
+    }
+
+    #[test]
+    fn table_and_sampler_outputs_are_finite(f in valid_filter(), x in any_f32(), y in any_f32(), u in [any_f32(), any_f32()]) {
+        let t = FilterTable::<8>::new(&f, Interpolation::Linear).unwrap();
+        prop_assert!(t.weight(x, y).is_finite());
+        let s = FilterSampler::<_, 4>::new(f).unwrap();
+        let fs = s.sample(u);
+        prop_assert!(fs.weight.is_finite());
+        let [rx, ry] = f.radius();
+        prop_assert!(fs.offset[0].abs() <= rx && fs.offset[1].abs() <= ry);
+    }
+}

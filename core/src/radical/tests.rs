@@ -1,0 +1,297 @@
+use super::*;
+use proptest::prelude::*;
+
+#[test]
+fn primes_match_a_sieve() {
+    let mut sieve = std::vec![true; 8162];
+    sieve[0] = false;
+    sieve[1] = false;
+    for i in 2..sieve.len() {
+        if sieve[i] {
+            for j in (i * i..sieve.len()).step_by(i) {
+                sieve[j] = false;
+            }
+        }
+    }
+    let primes: std::vec::Vec<u32> = (0..sieve.len() as u32)
+        .filter(|&i| sieve[i as usize])
+        .collect();
+    assert_eq!(primes.len(), 1024);
+    assert_eq!(&primes[..], &PRIMES[..]);
+    assert_eq!(prime(0), 2);
+    assert_eq!(prime(1023), 8161);
+    assert_eq!(prime(1024), 2);
+    assert_eq!(prime(u32::MAX), PRIMES[(u32::MAX % 1024) as usize]);
+}
+
+#[test]
+fn tables_are_consistent() {
+    let mut total = 0;
+    for (d, info) in BASES.iter().enumerate() {
+        let b = u64::from(PRIMES[d]);
+        assert_eq!(info.b, b);
+        assert!(
+            info.big < 1 << 32 && info.big * b >= 1 << 32,
+            "k of base {b}"
+        );
+        // b^(2k) < 2^64: the fixed-point digit extraction is exact.
+        assert!(info.big.checked_mul(info.big).is_some());
+        assert_eq!(info.off as usize, total);
+        total += info.k as usize + 1;
+        for n in 1..=info.k {
+            let row = (info.off + n) as usize;
+            let p = b.pow(n);
+            assert_eq!(ROW.pow[row], p);
+            assert_eq!(
+                u128::from(ROW.magic[row]),
+                (1u128 << 64).div_ceil(u128::from(p))
+            );
+            assert_eq!(ROW.inv[row], 1.0 / p as f64);
+        }
+        for len in 1..=32usize {
+            // DIGITS[d][len] digits hold every chunk of that bit length below b^k.
+            let n = u32::from(DIGITS[d][len]);
+            let largest = ((1u64 << len) - 1).min(info.big - 1);
+            assert!(largest < b.pow(n), "base {b}, len {len}");
+        }
+    }
+    assert_eq!(total, ROWS);
+}
+
+#[test]
+fn van_der_corput_table_is_exact() {
+    let expected = [
+        0.0, 0.5, 0.25, 0.75, 0.125, 0.625, 0.375, 0.875, 0.0625, 0.5625, 0.3125, 0.8125, 0.1875,
+        0.6875, 0.4375, 0.9375,
+    ];
+    for (a, &e) in expected.iter().enumerate() {
+        assert_eq!(radical_inverse(0, a as u64), e as f32);
+        assert_eq!(radical_inverse_f64(0, a as u64), e);
+    }
+}
+
+#[test]
+fn base_two_equals_reverse_bits_times_two_pow_minus_32_for_every_a_below_2_16() {
+    for a in 0..1u64 << 16 {
+        let expected = ((a as u32).reverse_bits() as f64 * crate::math::TWO_POW_MINUS_32) as f32;
+        assert_eq!(
+            radical_inverse(0, a),
+            expected.min(ONE_MINUS_EPSILON),
+            "a={a}"
+        );
+        assert_eq!(
+            radical_inverse_f64(0, a),
+            (a as u32).reverse_bits() as f64 * crate::math::TWO_POW_MINUS_32
+        );
+    }
+    // Large indices: the top bits of the 64-bit reversal.
+    assert_eq!(radical_inverse_f64(0, 1 << 63), 2f64.powi(-64));
+    assert_eq!(radical_inverse(0, u64::MAX), ONE_MINUS_EPSILON);
+}
+
+#[test]
+fn base_three_and_five_known_values() {
+    // 1 → 1/3, 2 → 2/3, 3 = 10₃ → 1/9, 4 = 11₃ → 4/9, 5 = 12₃ → 7/9.
+    let thirds = [0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0 / 9.0, 4.0 / 9.0, 7.0 / 9.0];
+    for (a, &e) in thirds.iter().enumerate() {
+        assert_eq!(radical_inverse_f64(1, a as u64), e);
+        assert_eq!(radical_inverse(1, a as u64), e as f32);
+    }
+    assert_eq!(radical_inverse_f64(2, 6), 6.0 / 25.0);
+    // dims wrap modulo 1024
+    assert_eq!(radical_inverse(1025, 5), radical_inverse(1, 5));
+}
+
+#[test]
+fn folded_base_two_matches_published_values() {
+    let expected = [
+        1.0 / 3.0,
+        5.0 / 6.0,
+        1.0 / 12.0,
+        7.0 / 12.0,
+        11.0 / 24.0,
+        23.0 / 24.0,
+        5.0 / 24.0,
+        17.0 / 24.0,
+    ];
+    for (a, &e) in expected.iter().enumerate() {
+        let f = folded_radical_inverse_f64(0, a as u64);
+        assert!((f - e).abs() <= e * f64::EPSILON, "Ψ₂({a}) = {f}, want {e}");
+        let f = folded_radical_inverse(0, a as u64);
+        assert!(
+            (f - e as f32).abs() <= e as f32 * f32::EPSILON,
+            "Ψ₂({a}) = {f}, want {e}"
+        );
+    }
+}
+
+#[test]
+fn folded_tail_closed_form_matches_direct_sum() {
+    // Compare the 128-bit tail with a direct f64 sum for a few large bases and every r.
+    for d in [9usize, 10, 50, 500, 1023] {
+        let b = BASES[d].b;
+        for r in (0..b)
+            .step_by((b as usize / 40).max(1))
+            .chain([b - 1, b - 2])
+        {
+            let mut sum = 0.0f64;
+            let mut w = 1.0 / b as f64;
+            for i in 0..40 {
+                sum += ((r + i) % b) as f64 * w;
+                w /= b as f64;
+            }
+            let t = fold_tail(d, b, r) as f64 / 2f64.powi(128);
+            assert!((t - sum).abs() < 1e-15, "b={b} r={r}: {t} vs {sum}");
+        }
+    }
+}
+
+#[test]
+fn inverse_radical_inverse_round_trips() {
+    let mut r = crate::rng::default_rng(5);
+    for dim in [0u32, 1, 2, 3, 63, 1023] {
+        let b = u64::from(prime(dim));
+        for _ in 0..200 {
+            let a = rand_core::Rng::next_u64(&mut r) >> 40;
+            let n = {
+                let mut n = 0;
+                let mut x = a;
+                while x > 0 {
+                    x /= b;
+                    n += 1;
+                }
+                n
+            };
+            // Reverse a's digits as an integer, then undo it.
+            let mut rev = 0u64;
+            let mut x = a;
+            for _ in 0..n {
+                rev = rev * b + x % b;
+                x /= b;
+            }
+            assert_eq!(inverse_radical_inverse(dim, rev, n), a);
+            if n > 0 {
+                assert_eq!(
+                    radical_inverse_f64(dim, a),
+                    rev as f64 / (b as f64).powi(n as i32)
+                );
+            }
+        }
+    }
+    // Wrapping past 64 bits: 1 reversed over 70 binary digits is 2^69, which wraps to 0;
+    // u64::MAX over 70 digits is (2^64 − 1)·2^6 modulo 2^64.
+    assert_eq!(inverse_radical_inverse(0, 1, 70), 0);
+    assert_eq!(inverse_radical_inverse(0, u64::MAX, 70), u64::MAX << 6);
+    // A huge digit count is cheap and wraps like the digit loop would.
+    let b = u64::from(prime(1023));
+    let x = inverse_radical_inverse(1023, 12_345, 40);
+    assert_eq!(inverse_radical_inverse(1023, 12_345, 41), x.wrapping_mul(b));
+    assert_eq!(
+        inverse_radical_inverse(1023, 12_345, u32::MAX),
+        x.wrapping_mul(b.wrapping_pow(u32::MAX - 40))
+    );
+}
+
+#[test]
+fn scrambled_first_digit_strata_are_hit_uniformly_over_seeds() {
+    // For a fixed index, over many seeds the first digit π(a_0) is uniform on 0..b.
+    for dim in [1u32, 2, 3] {
+        let b = prime(dim) as usize;
+        let mut counts = std::vec![0u32; b];
+        let seeds = 3000u64;
+        for seed in 0..seeds {
+            let x = scrambled_radical_inverse(dim, 12, seed);
+            counts[(x * b as f32) as usize] += 1;
+        }
+        let expect = seeds as f64 / b as f64;
+        for &c in &counts {
+            assert!(
+                (f64::from(c) - expect).abs() < 5.0 * expect.sqrt(),
+                "{counts:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn scrambled_points_keep_their_stratification() {
+    // The first b^k points of each seed fall one per stratum of width b^−k: point a is
+    // (m + t)·b^−k with m its permuted digits and t = π(0)/(b−1) the common tail (t = 1 puts
+    // every point on its stratum's right edge, the closed interval's end).
+    for (dim, k) in [(0u32, 10u32), (1, 6), (2, 4), (5, 2), (40, 1)] {
+        let b = u64::from(prime(dim));
+        let n = b.pow(k);
+        for seed in [0u64, 1, 2, 3, 99, u64::MAX] {
+            let key = permutation_key(seed, b);
+            let t = f64::from(digit_permutation(0, b as u32, key)) / (b - 1) as f64;
+            let mut seen = std::vec![false; n as usize];
+            for a in 0..n {
+                let x = scrambled_radical_inverse_f64(dim, a, seed);
+                let m = x * n as f64 - t;
+                let s = m.round() as usize;
+                assert!(
+                    (m - s as f64).abs() < 1e-6 && s < n as usize,
+                    "dim {dim}: {m}"
+                );
+                assert!(!seen[s], "dim {dim} seed {seed}: stratum {s} twice");
+                seen[s] = true;
+            }
+        }
+    }
+}
+
+#[test]
+fn scrambled_depends_on_seed() {
+    let a: std::vec::Vec<f32> = (0..32)
+        .map(|i| scrambled_radical_inverse(3, i, 1))
+        .collect();
+    let b: std::vec::Vec<f32> = (0..32)
+        .map(|i| scrambled_radical_inverse(3, i, 2))
+        .collect();
+    assert_ne!(a, b);
+}
+
+#[test]
+fn multi_chunk_indices_are_continuous_with_single_chunk_ones() {
+    // Φ(a + B) for a < B and B the chunk modulus: digit k is 1, so Φ(a + B) = Φ(a) + b^−(k+1).
+    for d in [1usize, 2, 63, 1023] {
+        let info = BASES[d];
+        for a in [0u64, 1, 12345 % info.big, info.big - 1] {
+            let x = radical_inverse_f64(d as u32, a + info.big);
+            let full = radical_inverse_f64(d as u32, a);
+            // full is Φ over a's own digits; padded to k digits the value is unchanged.
+            let expect = full + (info.big as f64 * info.b as f64).recip();
+            assert!(
+                (x - expect).abs() <= 2.0 * f64::EPSILON * expect,
+                "d={d} a={a}"
+            );
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn every_form_is_in_unit_interval(dim in any::<u32>(), a in any::<u64>(), seed in any::<u64>()) {
+        for x in [
+            radical_inverse(dim, a),
+            folded_radical_inverse(dim, a),
+            scrambled_radical_inverse(dim, a, seed),
+        ] {
+            prop_assert!((0.0..1.0).contains(&x));
+        }
+        for x in [
+            radical_inverse_f64(dim, a),
+            folded_radical_inverse_f64(dim, a),
+            scrambled_radical_inverse_f64(dim, a, seed),
+        ] {
+            prop_assert!((0.0..1.0).contains(&x));
+        }
+    }
+
+    #[test]
+    fn f32_is_the_f64_value_to_within_one_f32_ulp(dim in any::<u32>(), a in any::<u64>()) {
+        let f = radical_inverse(dim, a);
+        let g = radical_inverse_f64(dim, a);
+        prop_assert!((f64::from(f) - g).abs() <= f64::from(f32::EPSILON) * g.max(1e-30));
+    }
+}

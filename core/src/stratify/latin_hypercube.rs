@@ -1,0 +1,252 @@
+//! Latin hypercube sampling: `n` points in `dims` dimensions whose projection on every axis puts
+//! exactly one point in each of the `n` strata.
+
+use rand_core::Rng;
+
+use super::Strata;
+use crate::{Error, hash, rng::uniform_below};
+
+/// Validates a point-major buffer of `dims`-dimensional points; returns the point count.
+fn points_in(len: usize, dims: u32) -> Result<u32, Error> {
+    if dims == 0 {
+        return Err(Error::ZeroSize { what: "dims" });
+    }
+    let d = dims as usize;
+    if len == 0 || !len.is_multiple_of(d) {
+        return Err(Error::BufferLength {
+            multiple_of: d,
+            actual: len,
+        });
+    }
+    u32::try_from(len / d).map_err(|_| Error::TooMany { what: "points" })
+}
+
+/// Fills `out` with `n = out.len() / dims` Latin-hypercube points, point-major
+/// (`[x0, y0, z0, x1, …]`), and returns `n`. In every dimension the `n` values fall one in each
+/// stratum `[k/n, (k+1)/n)`, jittered uniformly inside it, the strata assigned to points by an
+/// independent uniform permutation per dimension. Values are in `[0, 1)`. Allocates: no.
+///
+/// One pass per dimension: the stratum values are written straight into a uniformly shuffled
+/// position (the "inside-out" Fisher–Yates), with unbiased bounded draws
+/// ([`crate::rng::uniform_below`]). Jitters have 16 random bits (`22 − ⌈log₂ n⌉` when that is
+/// fewer), two per generator draw.
+///
+/// # Errors
+/// [`Error::ZeroSize`] if `dims == 0`; [`Error::BufferLength`] if `out` is empty or its length
+/// is not a multiple of `dims`; [`Error::TooMany`] if there are more than `u32::MAX` points.
+///
+/// ```
+/// use nyquist::rng::default_rng;
+/// use nyquist::stratify::latin_hypercube;
+/// let mut pts = [0.0f32; 8 * 3];
+/// assert_eq!(latin_hypercube(&mut pts, 3, &mut default_rng(2)), Ok(8));
+/// let mut strata: Vec<u32> = pts.chunks_exact(3).map(|p| (p[1] * 8.0) as u32).collect();
+/// strata.sort();
+/// assert_eq!(strata, [0, 1, 2, 3, 4, 5, 6, 7]);
+/// assert!(latin_hypercube(&mut pts, 5, &mut default_rng(2)).is_err());
+/// ```
+pub fn latin_hypercube<R: Rng + ?Sized>(
+    out: &mut [f32],
+    dims: u32,
+    rng: &mut R,
+) -> Result<u32, Error> {
+    let n = points_in(out.len(), dims)?;
+    let d = dims as usize;
+    let strata = Strata::new(n);
+    // Jitters come 16 bits at a time, two per 32-bit draw (fewer bits when n > 64 leaves less
+    // room, see `Strata::jitter_bits`); the missing low bits are zero.
+    let bits = strata.jitter_bits().min(16);
+    let lift = strata.jitter_bits() - bits;
+    let mask = (1u32 << bits) - 1;
+    let mut word = 0u32;
+    for dim in 0..d {
+        // Inside-out Fisher–Yates over the column: after step k, positions 0..=k hold a uniform
+        // permutation of the strata 0..=k.
+        for k in 0..n {
+            let half = if k & 1 == 0 {
+                word = rng.next_u32();
+                word >> 16
+            } else {
+                word
+            };
+            let value = strata.jittered(k, (half & mask) << lift);
+            let j = uniform_below(rng, k + 1) as usize;
+            let (kk, jj) = (k as usize * d + dim, j * d + dim);
+            out[kk] = out[jj];
+            out[jj] = value;
+        }
+    }
+    Ok(n)
+}
+
+/// A stateless Latin hypercube: point `i`'s coordinate in dimension `d` is stratum
+/// `permute(i, n, hash(seed, d))` jittered by a hash of `(seed, i, d)`. No generator, `&self`
+/// only: any thread can fill any batch and get the same bits.
+///
+/// ```
+/// use nyquist::stratify::LatinHypercube;
+/// let lhs = LatinHypercube::new(2, 7).unwrap();
+/// let mut pts = [0.0f32; 2 * 16];
+/// assert_eq!(lhs.required_len(16), Some(32));
+/// assert_eq!(lhs.fill(&mut pts), Ok(16));
+/// let mut again = [0.0f32; 32];
+/// lhs.fill(&mut again).unwrap();
+/// assert_eq!(pts, again);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LatinHypercube {
+    dims: u32,
+    seed: u64,
+}
+
+impl LatinHypercube {
+    /// A Latin hypercube in `dims` dimensions chosen by `seed` (every seed is valid).
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `dims == 0`.
+    ///
+    /// ```
+    /// use nyquist::{Error, stratify::LatinHypercube};
+    /// assert_eq!(LatinHypercube::new(0, 1), Err(Error::ZeroSize { what: "dims" }));
+    /// assert_eq!(LatinHypercube::new(3, 1).unwrap().dims(), 3);
+    /// ```
+    pub fn new(dims: u32, seed: u64) -> Result<LatinHypercube, Error> {
+        if dims == 0 {
+            return Err(Error::ZeroSize { what: "dims" });
+        }
+        Ok(LatinHypercube { dims, seed })
+    }
+
+    /// The number of dimensions.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::stratify::LatinHypercube::new(4, 0).unwrap().dims(), 4);
+    /// ```
+    pub fn dims(&self) -> u32 {
+        self.dims
+    }
+
+    /// Floats needed for `points` points, or `None` on overflow.
+    ///
+    /// ```
+    /// let lhs = nyquist::stratify::LatinHypercube::new(3, 0).unwrap();
+    /// assert_eq!(lhs.required_len(10), Some(30));
+    /// ```
+    pub fn required_len(&self, points: u32) -> Option<usize> {
+        (points as usize).checked_mul(self.dims as usize)
+    }
+
+    /// Fills `out` with `out.len() / dims` points, point-major (`[x0, y0, z0, x1, …]`), and
+    /// returns the number of points. Values are in `[0, 1)`; every dimension's `n` strata are
+    /// hit once. Allocates: no.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] if `out` is empty or not a multiple of `dims`;
+    /// [`Error::TooMany`] for more than `u32::MAX` points.
+    ///
+    /// ```
+    /// use nyquist::stratify::LatinHypercube;
+    /// let lhs = LatinHypercube::new(3, 1).unwrap();
+    /// let mut buf = [0.0f32; 7];
+    /// assert!(lhs.fill(&mut buf).is_err());
+    /// assert_eq!(lhs.fill(&mut buf[..6]), Ok(2));
+    /// ```
+    pub fn fill(&self, out: &mut [f32]) -> Result<u32, Error> {
+        let n = points_in(out.len(), self.dims)?;
+        let strata = Strata::new(n);
+        let discard = 32 - strata.jitter_bits();
+        for (dim, x0) in (0..self.dims).zip(0..) {
+            let key = hash::hash2(self.seed, u64::from(dim));
+            let perm_seed = (key >> 32) as u32;
+            for (i, point) in (0..n).zip(out.chunks_exact_mut(self.dims as usize)) {
+                let stratum = hash::permute(i, n, perm_seed);
+                let jitter = (hash::hash2(key, u64::from(i)) >> 32) as u32 >> discard;
+                point[x0] = strata.jittered(stratum, jitter);
+            }
+        }
+        Ok(n)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::default_rng;
+    use proptest::prelude::*;
+
+    fn assert_latin(buf: &[f32], dims: usize) {
+        let n = buf.len() / dims;
+        for d in 0..dims {
+            let mut seen = std::vec![false; n];
+            for p in buf.chunks_exact(dims) {
+                assert!((0.0..1.0).contains(&p[d]));
+                let s = (f64::from(p[d]) * n as f64) as usize;
+                assert!(
+                    !core::mem::replace(&mut seen[s], true),
+                    "dim {d}: stratum {s} twice"
+                );
+            }
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn every_dimension_hits_every_stratum_once(n in 1usize..400, dims in 1u32..9, seed: u64) {
+            let mut buf = std::vec![0.0f32; n * dims as usize];
+            prop_assert_eq!(latin_hypercube(&mut buf, dims, &mut default_rng(seed)), Ok(n as u32));
+            assert_latin(&buf, dims as usize);
+            let lhs = LatinHypercube::new(dims, seed).unwrap();
+            prop_assert_eq!(lhs.fill(&mut buf), Ok(n as u32));
+            assert_latin(&buf, dims as usize);
+        }
+
+        #[test]
+        fn bad_sizes_are_errors(len in 0usize..50, dims in 0u32..7) {
+            let mut buf = std::vec![0.0f32; len];
+            let expected = if dims == 0 {
+                Err(Error::ZeroSize { what: "dims" })
+            } else if len == 0 || len % dims as usize != 0 {
+                Err(Error::BufferLength { multiple_of: dims as usize, actual: len })
+            } else {
+                Ok((len / dims as usize) as u32)
+            };
+            prop_assert_eq!(latin_hypercube(&mut buf, dims, &mut default_rng(1)), expected);
+            if dims > 0 {
+                prop_assert_eq!(LatinHypercube::new(dims, 3).unwrap().fill(&mut buf), expected);
+            }
+        }
+    }
+
+    #[test]
+    fn stratum_permutation_is_uniform() {
+        // n = 3 points in 1 dimension: the 6 stratum orders are equally likely
+        // (chi-square, 5 dof, 0.999 quantile 20.5; 60000 trials).
+        let mut rng = default_rng(17);
+        let mut counts = [0u32; 27];
+        let mut buf = [0.0f32; 3];
+        for _ in 0..60_000 {
+            latin_hypercube(&mut buf, 1, &mut rng).unwrap();
+            let s = buf.map(|x| (x * 3.0) as usize);
+            counts[s[0] * 9 + s[1] * 3 + s[2]] += 1;
+        }
+        let hit: std::vec::Vec<u32> = counts.iter().copied().filter(|&c| c > 0).collect();
+        assert_eq!(hit.len(), 6);
+        let chi: f64 = hit
+            .iter()
+            .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
+            .sum();
+        assert!(chi < 20.5, "chi2 {chi}");
+    }
+
+    #[test]
+    fn dimensions_are_decorrelated() {
+        // With 64 points, the strata of dims 0 and 1 should not be equal for most points.
+        let mut buf = [0.0f32; 64 * 2];
+        latin_hypercube(&mut buf, 2, &mut default_rng(8)).unwrap();
+        let same = buf
+            .chunks_exact(2)
+            .filter(|p| (p[0] * 64.0) as u32 == (p[1] * 64.0) as u32)
+            .count();
+        assert!(same < 8, "{same}");
+    }
+}

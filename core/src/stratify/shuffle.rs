@@ -1,0 +1,167 @@
+//! Uniform shuffles of blocks of values (pbrt's `Shuffle`).
+
+use rand_core::Rng;
+
+use crate::{
+    Error,
+    rng::{uniform_below, uniform_below_u64},
+};
+
+/// Permutes `count` blocks of `dims` consecutive values of `buf` uniformly at random, keeping
+/// every block intact (Fisher–Yates with unbiased bounded draws). `buf.len()` must be exactly
+/// `count · dims`. Allocates: no.
+///
+/// # Errors
+/// [`Error::ZeroSize`] if `dims == 0`; [`Error::TooMany`] if `count · dims` overflows;
+/// [`Error::BufferLength`] if `buf.len()` is not a multiple of `dims`;
+/// [`Error::BufferTooShort`] if it is shorter than `count · dims`; [`Error::OutOfRange`]
+/// (`count`) if it is longer.
+///
+/// ```
+/// use nyquist::{rng::default_rng, stratify::shuffle};
+/// let mut pairs = [0, 1, 10, 11, 20, 21];
+/// shuffle(&mut pairs, 3, 2, &mut default_rng(4)).unwrap();
+/// let mut blocks: Vec<[i32; 2]> = pairs.chunks_exact(2).map(|b| [b[0], b[1]]).collect();
+/// blocks.sort();
+/// assert_eq!(blocks, [[0, 1], [10, 11], [20, 21]]);
+/// assert!(shuffle(&mut pairs, 4, 2, &mut default_rng(4)).is_err());
+/// ```
+pub fn shuffle<T, R: Rng + ?Sized>(
+    buf: &mut [T],
+    count: usize,
+    dims: usize,
+    rng: &mut R,
+) -> Result<(), Error> {
+    if dims == 0 {
+        return Err(Error::ZeroSize { what: "dims" });
+    }
+    let needed = count.checked_mul(dims).ok_or(Error::TooMany {
+        what: "count * dims",
+    })?;
+    let len = buf.len();
+    if !len.is_multiple_of(dims) {
+        return Err(Error::BufferLength {
+            multiple_of: dims,
+            actual: len,
+        });
+    }
+    if len < needed {
+        return Err(Error::BufferTooShort {
+            needed,
+            actual: len,
+        });
+    }
+    if len > needed {
+        return Err(Error::OutOfRange { what: "count" });
+    }
+    if dims == 1 {
+        // The common case, kept as a tight scalar loop.
+        for i in (1..count).rev() {
+            let j = below(rng, i + 1);
+            buf.swap(i, j);
+        }
+    } else {
+        for i in (1..count).rev() {
+            let j = below(rng, i + 1);
+            if j != i {
+                // j < i: split so the two blocks are disjoint borrows.
+                let (head, tail) = buf.split_at_mut(i * dims);
+                head[j * dims..(j + 1) * dims].swap_with_slice(&mut tail[..dims]);
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A uniform index in `0..n` for `1 ≤ n`, using the 32-bit draw whenever `n` fits.
+#[inline(always)]
+fn below<R: Rng + ?Sized>(rng: &mut R, n: usize) -> usize {
+    match u32::try_from(n) {
+        Ok(n) => uniform_below(rng, n) as usize,
+        Err(_) => uniform_below_u64(rng, n as u64) as usize,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::default_rng;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn permutes_whole_blocks(count in 0usize..300, dims in 1usize..6, seed: u64) {
+            let mut buf: std::vec::Vec<u32> = (0..(count * dims) as u32).collect();
+            shuffle(&mut buf, count, dims, &mut default_rng(seed)).unwrap();
+            let mut firsts = std::vec::Vec::new();
+            for b in buf.chunks_exact(dims) {
+                prop_assert!(b.windows(2).all(|w| w[1] == w[0] + 1), "block torn: {:?}", b);
+                prop_assert_eq!(b[0] % dims as u32, 0);
+                firsts.push(b[0]);
+            }
+            firsts.sort_unstable();
+            let expected: std::vec::Vec<u32> = (0..count as u32).map(|k| k * dims as u32).collect();
+            prop_assert_eq!(firsts, expected);
+        }
+
+        #[test]
+        fn bad_sizes_are_errors_never_panics(len in 0usize..40, count in 0usize..40, dims in 0usize..6) {
+            let mut buf = std::vec![0u8; len];
+            let r = shuffle(&mut buf, count, dims, &mut default_rng(0));
+            let expected = if dims == 0 {
+                Err(Error::ZeroSize { what: "dims" })
+            } else if len % dims != 0 {
+                Err(Error::BufferLength { multiple_of: dims, actual: len })
+            } else if len < count * dims {
+                Err(Error::BufferTooShort { needed: count * dims, actual: len })
+            } else if len > count * dims {
+                Err(Error::OutOfRange { what: "count" })
+            } else {
+                Ok(())
+            };
+            prop_assert_eq!(r, expected);
+        }
+    }
+
+    #[test]
+    fn overflow_is_too_many() {
+        let mut buf = [0u8; 4];
+        assert_eq!(
+            shuffle(&mut buf, usize::MAX, 2, &mut default_rng(0)),
+            Err(Error::TooMany {
+                what: "count * dims"
+            })
+        );
+    }
+
+    #[test]
+    fn three_elements_give_all_six_orders_uniformly() {
+        // Chi-square over the 6 orders, 5 degrees of freedom: 20.52 is the 0.999 quantile.
+        for (seed, dims) in [(99u64, 1usize), (7, 2)] {
+            let mut rng = default_rng(seed);
+            let mut counts = [0u32; 6];
+            let orders = [
+                [0, 1, 2],
+                [0, 2, 1],
+                [1, 0, 2],
+                [1, 2, 0],
+                [2, 0, 1],
+                [2, 1, 0],
+            ];
+            for _ in 0..60_000 {
+                let mut v = [0u8; 6];
+                for (k, x) in v[..3 * dims].iter_mut().enumerate() {
+                    *x = (k / dims) as u8;
+                }
+                shuffle(&mut v[..3 * dims], 3, dims, &mut rng).unwrap();
+                let order = [v[0], v[dims], v[2 * dims]];
+                counts[orders.iter().position(|o| *o == order).unwrap()] += 1;
+            }
+            let chi: f64 = counts
+                .iter()
+                .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
+                .sum();
+            assert!(chi < 20.52, "dims {dims}: chi2 {chi}, counts {counts:?}");
+        }
+    }
+}

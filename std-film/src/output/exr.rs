@@ -1,0 +1,112 @@
+//! OpenEXR output and read-back through the `exr` crate (single-threaded, so the bytes are
+//! deterministic).
+
+use crate::{Error, Image};
+use ::exr::prelude::{self as x, ReadChannels, ReadLayers, ReadSpecificChannel, WritableImage};
+use std::io::{Cursor, Read, Write};
+
+/// Channel precision of an OpenEXR file.
+///
+/// ```
+/// use nyquist_film::output::exr::ExrPrecision;
+/// assert_ne!(ExrPrecision::F32, ExrPrecision::F16);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ExrPrecision {
+    /// 32-bit float channels (lossless for an [`Image`]).
+    F32,
+    /// 16-bit half-float channels.
+    F16,
+}
+
+/// Writes `image` as an RGB OpenEXR file with ZIP compression.
+///
+/// # Errors
+/// [`Error::Format`] if the encoder fails, [`Error::Io`] if writing fails.
+///
+/// ```
+/// use nyquist_film::{output::exr::{read_exr, write_exr, ExrPrecision}, Image};
+/// let img = Image::from_fn(3, 2, |x, y| [x as f32 * 0.25, y as f32, -1.5]);
+/// let mut bytes = Vec::new();
+/// write_exr(&mut bytes, &img, ExrPrecision::F32).unwrap();
+/// assert_eq!(read_exr(&mut bytes.as_slice()).unwrap(), img);
+/// ```
+pub fn write_exr(w: &mut dyn Write, image: &Image, precision: ExrPrecision) -> Result<(), Error> {
+    let size = (image.width() as usize, image.height() as usize);
+    let mut buffer = Cursor::new(Vec::new());
+    let fmt = |e: ::exr::error::Error| Error::Format(format!("OpenEXR: {e}"));
+    let encoding = x::Encoding::SMALL_LOSSLESS;
+    match precision {
+        ExrPrecision::F32 => {
+            let channels = x::SpecificChannels::rgb(|p: x::Vec2<usize>| {
+                let [r, g, b] = image.get(p.x() as u32, p.y() as u32);
+                (r, g, b)
+            });
+            let layer = x::Layer::new(size, x::LayerAttributes::default(), encoding, channels);
+            x::Image::from_layer(layer)
+                .write()
+                .non_parallel()
+                .to_buffered(&mut buffer)
+                .map_err(fmt)?;
+        }
+        ExrPrecision::F16 => {
+            let channels = x::SpecificChannels::rgb(|p: x::Vec2<usize>| {
+                let [r, g, b] = image.get(p.x() as u32, p.y() as u32);
+                (
+                    x::f16::from_f32(r),
+                    x::f16::from_f32(g),
+                    x::f16::from_f32(b),
+                )
+            });
+            let layer = x::Layer::new(size, x::LayerAttributes::default(), encoding, channels);
+            x::Image::from_layer(layer)
+                .write()
+                .non_parallel()
+                .to_buffered(&mut buffer)
+                .map_err(fmt)?;
+        }
+    }
+    w.write_all(buffer.get_ref())?;
+    Ok(())
+}
+
+/// Reads the first RGB layer of an OpenEXR file (any channel precision, converted to `f32`).
+///
+/// # Errors
+/// [`Error::Format`] if the data is not a readable OpenEXR file with R, G and B channels.
+///
+/// ```
+/// assert!(nyquist_film::output::exr::read_exr(&mut b"not exr".as_slice()).is_err());
+/// ```
+pub fn read_exr(r: &mut dyn Read) -> Result<Image, Error> {
+    let mut all = Vec::new();
+    r.read_to_end(&mut all)?;
+    let fmt = |e: ::exr::error::Error| Error::Format(format!("OpenEXR: {e}"));
+    let read = x::read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .specific_channels()
+        .required("R")
+        .required("G")
+        .required("B")
+        .collect_pixels(
+            |res: x::Vec2<usize>, _| (res.width(), vec![0.0f32; res.width() * res.height() * 3]),
+            |(w, data): &mut (usize, Vec<f32>), p: x::Vec2<usize>, (r, g, b): (f32, f32, f32)| {
+                let o = (p.y() * *w + p.x()) * 3;
+                data[o..o + 3].copy_from_slice(&[r, g, b]);
+            },
+        )
+        .first_valid_layer()
+        .all_attributes()
+        .non_parallel()
+        .from_buffered(Cursor::new(all))
+        .map_err(fmt)?;
+    let layer = read.layer_data;
+    let size = layer.size;
+    let (_, data) = layer.channel_data.pixels;
+    let (w, h) = (
+        u32::try_from(size.width()).map_err(|_| Error::Format("OpenEXR: too wide".into()))?,
+        u32::try_from(size.height()).map_err(|_| Error::Format("OpenEXR: too tall".into()))?,
+    );
+    Image::from_rgb(w, h, data)
+}

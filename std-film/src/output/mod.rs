@@ -1,0 +1,140 @@
+//! Image writers and readers: PNG (8-bit sRGB), OpenEXR (f32 or f16) and PFM.
+//!
+//! Writers take any [`Write`]; [`write_image_file`] adds the safe file handling: the bytes go to a
+//! temporary file in the target's folder, which is renamed into place only after a complete write,
+//! so a failure never leaves a half-written image.
+
+pub mod exr;
+pub mod pfm;
+pub mod png;
+
+use crate::{Error, Image};
+use std::io::Write;
+use std::path::Path;
+
+/// The image file formats, chosen by extension.
+///
+/// ```
+/// use nyquist_film::ImageFormat;
+/// assert_eq!(ImageFormat::from_path("a/b.PNG".as_ref()).unwrap(), ImageFormat::Png);
+/// assert!(ImageFormat::from_path("a.tiff".as_ref()).is_err());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImageFormat {
+    /// 8-bit sRGB PNG.
+    Png,
+    /// OpenEXR, 32-bit float channels.
+    Exr,
+    /// OpenEXR, 16-bit half-float channels.
+    ExrHalf,
+    /// Portable float map, 32-bit float RGB.
+    Pfm,
+}
+
+impl ImageFormat {
+    /// The format for a path's extension (`.png`, `.exr`, `.pfm`, case-insensitive).
+    ///
+    /// # Errors
+    /// [`Error::Config`] for any other extension.
+    pub fn from_path(path: &Path) -> Result<ImageFormat, Error> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("png") => Ok(ImageFormat::Png),
+            Some("exr") => Ok(ImageFormat::Exr),
+            Some("pfm") => Ok(ImageFormat::Pfm),
+            _ => Err(Error::Config(format!(
+                "{}: unknown image extension (expected .png, .exr or .pfm)",
+                path.display()
+            ))),
+        }
+    }
+}
+
+/// Writes `image` in `format` to `w` (PNG with default options).
+///
+/// # Errors
+/// [`Error::Io`] if writing fails, [`Error::Format`] if the encoder rejects the image.
+///
+/// ```
+/// use nyquist_film::{write_image, Image, ImageFormat};
+/// let mut out = Vec::new();
+/// write_image(&mut out, &Image::new(2, 2).unwrap(), ImageFormat::Pfm).unwrap();
+/// assert!(out.starts_with(b"PF\n2 2\n"));
+/// ```
+pub fn write_image(w: &mut dyn Write, image: &Image, format: ImageFormat) -> Result<(), Error> {
+    match format {
+        ImageFormat::Png => png::write_png(w, image, &png::PngOptions::default()),
+        ImageFormat::Exr => exr::write_exr(w, image, exr::ExrPrecision::F32),
+        ImageFormat::ExrHalf => exr::write_exr(w, image, exr::ExrPrecision::F16),
+        ImageFormat::Pfm => pfm::write_pfm(w, image),
+    }
+}
+
+/// Writes `image` to `path` in the format its extension names, atomically: a temporary file in
+/// the same folder, renamed into place after a complete write; on error nothing is left behind.
+///
+/// # Errors
+/// [`Error::Config`] for an unknown extension, [`Error::Io`] for an unwritable folder,
+/// [`Error::Format`] if the encoder fails.
+///
+/// ```
+/// let dir = std::env::temp_dir();
+/// let path = dir.join(format!("nyquist-doc-{}.pfm", std::process::id()));
+/// let img = nyquist_film::Image::new(1, 1).unwrap();
+/// nyquist_film::write_image_file(&path, &img).unwrap();
+/// assert!(path.exists());
+/// std::fs::remove_file(&path).unwrap();
+/// assert!(nyquist_film::write_image_file(&dir.join("missing/x.png"), &img).is_err());
+/// ```
+pub fn write_image_file(path: &Path, image: &Image) -> Result<(), Error> {
+    let format = ImageFormat::from_path(path)?;
+    write_file_atomic(path, |w| write_image(w, image, format))
+}
+
+/// Runs `write` on a temporary file beside `path` and renames it into place on success; removes
+/// it on failure.
+///
+/// # Errors
+/// Whatever `write` returns, or [`Error::Io`] for create/flush/rename failures.
+///
+/// ```
+/// use std::io::Write;
+/// let path = std::env::temp_dir().join(format!("nyquist-atomic-{}.txt", std::process::id()));
+/// let r = nyquist_film::output::write_file_atomic(&path, |_| {
+///     Err(nyquist_film::Error::Format("refused".into()))
+/// });
+/// assert!(r.is_err() && !path.exists());
+/// ```
+pub fn write_file_atomic(
+    path: &Path,
+    write: impl FnOnce(&mut dyn Write) -> Result<(), Error>,
+) -> Result<(), Error> {
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let name = path
+        .file_name()
+        .ok_or_else(|| Error::Config(format!("{}: not a file name", path.display())))?;
+    let tmp = dir.join(format!(
+        ".{}.tmp-{}",
+        name.to_string_lossy(),
+        std::process::id()
+    ));
+    let result = (|| {
+        let file = std::fs::File::create(&tmp)?;
+        let mut w = std::io::BufWriter::new(file);
+        write(&mut w)?;
+        let file = w.into_inner().map_err(|e| Error::Io(e.into_error()))?;
+        file.sync_all()?;
+        std::fs::rename(&tmp, path)?;
+        Ok(())
+    })();
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result
+}

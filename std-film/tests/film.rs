@@ -1,0 +1,311 @@
+//! Film conservation laws, determinism across threads and schedules, and bad samples.
+
+use nyquist::filter::{Boxcar, Filter, Gaussian, Lanczos, Mitchell, Triangle};
+use nyquist_film::{Bounds, Film, FilmConfig, FilmTile, render_tiles};
+use proptest::prelude::*;
+
+fn filters() -> Vec<(&'static str, Box<dyn Filter + Sync>)> {
+    vec![
+        ("box", Box::new(Boxcar::default())),
+        ("triangle", Box::new(Triangle::default())),
+        ("gaussian", Box::new(Gaussian::default())),
+        ("mitchell", Box::new(Mitchell::default())),
+        ("lanczos", Box::new(Lanczos::default())),
+    ]
+}
+
+/// `k × k` stratified samples in every pixel of the tile, radiance from `l`.
+fn fill_tile(tile: &mut FilmTile, k: u32, l: impl Fn(f32, f32) -> [f32; 3]) {
+    let b = tile.bounds();
+    for y in b.y0..b.y1 {
+        for x in b.x0..b.x1 {
+            for j in 0..k {
+                for i in 0..k {
+                    let p = [
+                        x as f32 + (i as f32 + 0.5) / k as f32,
+                        y as f32 + (j as f32 + 0.5) / k as f32,
+                    ];
+                    tile.add_sample(p, l(p[0], p[1]), 1.0);
+                }
+            }
+        }
+    }
+}
+
+fn bits(film: &mut Film) -> Vec<u32> {
+    film.image().0.data().iter().map(|v| v.to_bits()).collect()
+}
+
+#[test]
+fn constant_radiance_gives_that_constant_in_every_pixel_for_every_filter() {
+    for (name, filter) in filters() {
+        let mut film = Film::new(FilmConfig::new(13, 9), filter.as_ref()).unwrap();
+        render_tiles(
+            &mut film,
+            4,
+            2,
+            |t| fill_tile(t, 3, |_, _| [0.3, 1.0, 7.5]),
+            |_, _| {},
+        )
+        .unwrap();
+        let (image, stats) = film.image();
+        assert_eq!(stats.zero_weight_pixels, 0, "{name}");
+        for px in image.data().chunks_exact(3) {
+            for (v, want) in px.iter().zip([0.3f32, 1.0, 7.5]) {
+                assert!(((v - want) / want).abs() < 1e-6, "{name}: {v} vs {want}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_single_sample_with_the_box_filter_lands_in_one_pixel_only() {
+    let mut film = Film::new(FilmConfig::new(8, 8), &Boxcar::default()).unwrap();
+    let spec = film.tiles(8).unwrap()[0];
+    let mut tile = film.tile(spec);
+    tile.add_sample([3.3, 5.9], [2.0, 2.0, 2.0], 1.0);
+    film.merge(tile).unwrap();
+    for y in 0..8 {
+        for x in 0..8 {
+            let p = film.pixel(x, y).unwrap();
+            if (x, y) == (3, 5) {
+                assert_eq!(p.weight_sum, 1.0);
+                assert_eq!(p.rgb_sum, [2.0; 3]);
+            } else {
+                assert_eq!(p.weight_sum, 0.0, "({x}, {y})");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_pixels_weight_sum_is_the_sum_of_the_filter_weights_that_reach_it() {
+    let mitchell = Mitchell::default();
+    let mut film = Film::new(FilmConfig::new(6, 6), &mitchell).unwrap();
+    let spec = film.tiles(6).unwrap()[0];
+    let mut tile = film.tile(spec);
+    let samples = [[2.2f32, 2.7], [3.9, 1.1], [0.4, 5.5], [2.5, 2.5]];
+    for p in samples {
+        tile.add_sample(p, [1.0, 0.0, 0.0], 1.0);
+    }
+    film.merge(tile).unwrap();
+    for y in 0..6i64 {
+        for x in 0..6i64 {
+            let want: f64 = samples
+                .iter()
+                .map(|p| {
+                    f64::from(film.filter_weight(x as f32 + 0.5 - p[0], y as f32 + 0.5 - p[1]))
+                })
+                .sum();
+            let got = film.pixel(x, y).unwrap().weight_sum;
+            assert!((got - want).abs() < 1e-6, "({x},{y}): {got} vs {want}");
+        }
+    }
+}
+
+#[test]
+fn table_weights_track_the_filter() {
+    for (name, filter) in filters() {
+        let film = Film::new(FilmConfig::new(4, 4), filter.as_ref()).unwrap();
+        let [rx, ry] = filter.radius();
+        for k in 0..50 {
+            let (x, y) = (
+                rx * (k as f32 / 25.0 - 1.0),
+                ry * ((k * 7 % 50) as f32 / 25.0 - 1.0),
+            );
+            let (t, d) = (film.filter_weight(x, y), filter.eval(x, y));
+            assert!(
+                (t - d).abs() < 0.02,
+                "{name} ({x},{y}): table {t} direct {d}"
+            );
+        }
+    }
+}
+
+fn zoneplate(x: f32, y: f32) -> [f32; 3] {
+    let (dx, dy) = (x - 20.0, y - 15.0);
+    let v = 0.5 + 0.5 * (std::f32::consts::PI * (dx * dx + dy * dy) / 40.0).cos();
+    [v, v * 0.5, 1.0 - v]
+}
+
+#[test]
+fn image_is_bit_identical_for_any_thread_count_and_tile_order() {
+    let reference = {
+        let mut film = Film::new(FilmConfig::new(40, 30), &Mitchell::default()).unwrap();
+        render_tiles(&mut film, 7, 1, |t| fill_tile(t, 2, zoneplate), |_, _| {}).unwrap();
+        bits(&mut film)
+    };
+    for threads in [1, 2, 8, 16] {
+        for _ in 0..2 {
+            let mut film = Film::new(FilmConfig::new(40, 30), &Mitchell::default()).unwrap();
+            render_tiles(
+                &mut film,
+                7,
+                threads,
+                |t| fill_tile(t, 2, zoneplate),
+                |_, _| {},
+            )
+            .unwrap();
+            assert_eq!(bits(&mut film), reference, "threads {threads}");
+        }
+    }
+    // Any merge order: reversed and interleaved.
+    for order in [Order::Reversed, Order::Interleaved] {
+        let mut film = Film::new(FilmConfig::new(40, 30), &Mitchell::default()).unwrap();
+        let mut tiles: Vec<FilmTile> = film
+            .tiles(7)
+            .unwrap()
+            .into_iter()
+            .map(|s| {
+                let mut t = film.tile(s);
+                fill_tile(&mut t, 2, zoneplate);
+                t
+            })
+            .collect();
+        match order {
+            Order::Reversed => tiles.reverse(),
+            Order::Interleaved => {
+                let (even, odd): (Vec<_>, Vec<_>) =
+                    tiles.into_iter().partition(|t| t.index() % 2 == 0);
+                tiles = odd.into_iter().chain(even).collect();
+            }
+        }
+        for t in tiles {
+            film.merge(t).unwrap();
+        }
+        assert_eq!(bits(&mut film), reference, "{order:?}");
+    }
+}
+
+#[derive(Debug, Clone, Copy)]
+enum Order {
+    Reversed,
+    Interleaved,
+}
+
+#[test]
+fn non_finite_samples_never_reach_a_pixel_and_are_counted_exactly() {
+    let mut film = Film::new(FilmConfig::new(4, 4), &Gaussian::default()).unwrap();
+    let spec = film.tiles(4).unwrap()[0];
+    let mut tile = film.tile(spec);
+    let bad = [f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
+    let mut expected = 0;
+    for &b in &bad {
+        tile.add_sample([1.5, 1.5], [b, 0.0, 0.0], 1.0);
+        tile.add_sample([1.5, 1.5], [0.0, 0.0, b], 1.0);
+        tile.add_sample([1.5, 1.5], [1.0, 1.0, 1.0], b);
+        tile.add_sample([b, 1.5], [1.0, 1.0, 1.0], 1.0);
+        tile.add_splat([1.5, 1.5], [b, 1.0, 1.0]);
+        expected += 5;
+    }
+    tile.add_sample([1.5, 1.5], [0.5, 0.5, 0.5], 1.0);
+    assert_eq!(tile.rejected(), expected);
+    film.merge(tile).unwrap();
+    assert_eq!(film.rejected(), expected);
+    assert_eq!(film.stats().samples, 1);
+    let (image, _) = film.image();
+    assert!(image.data().iter().all(|v| v.is_finite()));
+    assert!((image.get(1, 1)[0] - 0.5).abs() < 1e-6);
+    // A pixel nothing reached resolves to 0 (weight sum 0), not NaN.
+    let mut empty = Film::new(FilmConfig::new(2, 2), &Boxcar::default()).unwrap();
+    let (img, stats) = empty.image();
+    assert_eq!(img.data(), [0.0; 12]);
+    assert_eq!(stats.zero_weight_pixels, 4);
+}
+
+#[test]
+fn negative_lobes_resolve_to_zero_and_are_counted() {
+    // Lanczos has negative lobes: a sample 1.5 pixels away gives a negative weight.
+    let mut film = Film::new(FilmConfig::new(8, 1), &Lanczos::default()).unwrap();
+    let spec = film.tiles(8).unwrap()[0];
+    let mut tile = film.tile(spec);
+    tile.add_sample([5.0, 0.5], [1.0, 1.0, 1.0], 1.0);
+    tile.add_sample([0.5, 0.5], [1.0, 1.0, 1.0], 1.0);
+    film.merge(tile).unwrap();
+    let (image, stats) = film.image();
+    assert!(stats.negative_components > 0 || stats.zero_weight_pixels > 0);
+    assert!(image.data().iter().all(|&v| v >= 0.0 && v.is_finite()));
+}
+
+#[test]
+fn max_component_clamp_scales_bright_samples() {
+    let mut config = FilmConfig::new(2, 2);
+    config.max_component = Some(2.0);
+    let mut film = Film::new(config, &Boxcar::default()).unwrap();
+    let spec = film.tiles(2).unwrap()[0];
+    let mut tile = film.tile(spec);
+    tile.add_sample([0.5, 0.5], [8.0, 4.0, 1.0], 1.0);
+    tile.add_sample([1.5, 0.5], [1.0, 1.0, 1.0], 1.0);
+    film.merge(tile).unwrap();
+    assert_eq!(film.stats().clamped, 1);
+    let (image, _) = film.image();
+    assert_eq!(image.get(0, 0), [2.0, 1.0, 0.25]);
+    assert_eq!(image.get(1, 0), [1.0, 1.0, 1.0]);
+}
+
+#[test]
+fn crop_window_stores_only_its_pixels() {
+    let mut config = FilmConfig::new(10, 10);
+    config.crop_window = [0.2, 0.5, 0.0, 0.35];
+    let film = Film::new(config, &Boxcar::default()).unwrap();
+    assert_eq!(film.pixel_bounds(), Bounds::new(2, 0, 5, 4));
+    for bad in [
+        [0.5, 0.2, 0.0, 1.0],
+        [-0.1, 1.0, 0.0, 1.0],
+        [0.0, 1.0, 0.0, f32::NAN],
+    ] {
+        config.crop_window = bad;
+        assert!(Film::new(config, &Boxcar::default()).is_err(), "{bad:?}");
+    }
+    assert!(Film::new(FilmConfig::new(0, 3), &Boxcar::default()).is_err());
+}
+
+#[test]
+fn merging_a_tile_twice_is_an_error() {
+    let mut film = Film::new(FilmConfig::new(4, 4), &Boxcar::default()).unwrap();
+    let spec = film.tiles(2).unwrap()[0];
+    film.merge(film.tile(spec)).unwrap();
+    assert!(film.merge(film.tile(spec)).is_err());
+    let later = film.tiles(2).unwrap()[3];
+    film.merge(film.tile(later)).unwrap();
+    assert!(film.merge(film.tile(later)).is_err());
+}
+
+#[test]
+fn splats_are_normalised_by_the_filter_integral() {
+    // A uniform grid of splats, one per pixel with value v: each pixel gets Σ f·v ≈ v·∫f.
+    let mut film = Film::new(FilmConfig::new(16, 16), &Triangle::default()).unwrap();
+    let spec = film.tiles(16).unwrap()[0];
+    let mut tile = film.tile(spec);
+    for y in 0..16 {
+        for x in 0..16 {
+            for (i, j) in [(0.25f32, 0.25f32), (0.75, 0.25), (0.25, 0.75), (0.75, 0.75)] {
+                tile.add_splat([x as f32 + i, y as f32 + j], [0.25, 0.25, 0.25]);
+            }
+        }
+    }
+    film.merge(tile).unwrap();
+    let (image, _) = film.image();
+    // Away from the edges (radius 2), the splat sum equals the value.
+    let v = image.get(8, 8)[0];
+    assert!((v - 1.0).abs() < 1e-3, "{v}");
+}
+
+proptest! {
+    #[test]
+    fn any_tile_rectangle_and_any_sample_keeps_pixels_finite(
+        x0 in -5i64..20, y0 in -5i64..20, w in 0i64..12, h in 0i64..12,
+        samples in proptest::collection::vec((-10.0f32..30.0, -10.0f32..30.0, -1e30f32..1e30, any::<bool>()), 0..30),
+    ) {
+        let mut film = Film::new(FilmConfig::new(16, 12), &Mitchell::default()).unwrap();
+        let spec = nyquist_film::TileSpec { index: 0, bounds: Bounds::new(x0, y0, x0 + w, y0 + h) };
+        let mut tile = film.tile(spec);
+        for (x, y, l, nan) in samples {
+            let l = if nan { f32::NAN } else { l };
+            tile.add_sample([x, y], [l, l.abs(), 1.0], 1.0);
+        }
+        film.merge(tile).unwrap();
+        let (image, _) = film.image();
+        prop_assert!(image.data().iter().all(|v| v.is_finite() && *v >= 0.0));
+    }
+}

@@ -1,0 +1,167 @@
+//! Image writers: round trips, exact sRGB bytes, determinism and no half-written files.
+
+use nyquist_film::output::exr::{ExrPrecision, read_exr, write_exr};
+use nyquist_film::output::pfm::{read_pfm, write_pfm};
+use nyquist_film::output::png::{PngOptions, write_png};
+use nyquist_film::{Image, write_image_file};
+use proptest::prelude::*;
+
+fn decode_png(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
+    let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    let mut reader = decoder.read_info().unwrap();
+    let mut buf = vec![0; reader.output_buffer_size().unwrap()];
+    let info = reader.next_frame(&mut buf).unwrap();
+    assert_eq!(info.color_type, png::ColorType::Rgb);
+    assert_eq!(info.bit_depth, png::BitDepth::Eight);
+    buf.truncate(info.buffer_size());
+    (info.width, info.height, buf)
+}
+
+fn test_image() -> Image {
+    Image::from_fn(5, 3, |x, y| {
+        [x as f32 * 0.3 - 0.2, y as f32 * 1e-3, 1e30 * (x + y) as f32]
+    })
+}
+
+#[test]
+fn png_bytes_are_the_srgb_codes_of_known_linear_values() {
+    let img = Image::from_rgb(
+        2,
+        2,
+        vec![
+            0.0,
+            1.0,
+            0.5,
+            2.0,
+            -1.0,
+            f32::NAN,
+            0.0031308,
+            0.2140,
+            1e-9,
+            f32::INFINITY,
+            0.25,
+            0.75,
+        ],
+    )
+    .unwrap();
+    let mut bytes = Vec::new();
+    write_png(&mut bytes, &img, &PngOptions::default()).unwrap();
+    let (w, h, px) = decode_png(&bytes);
+    assert_eq!((w, h), (2, 2));
+    // 0.0031308 → 12.92·x = 0.04045 → 10.31 → 10; 0.2140 → 127.49 → 127;
+    // 0.25 → 0.5371 → 137; 0.75 → 0.8808 → 225.
+    assert_eq!(px, [0, 255, 188, 255, 0, 0, 10, 127, 0, 255, 137, 225]);
+}
+
+#[test]
+fn dithered_png_stays_within_one_code_and_averages_to_the_value() {
+    let img = Image::from_fn(64, 64, |_, _| [0.2, 0.2, 0.2]);
+    let mut bytes = Vec::new();
+    write_png(&mut bytes, &img, &PngOptions { dither: Some(3) }).unwrap();
+    let (_, _, px) = decode_png(&bytes);
+    let exact = 255.0 * nyquist_film::output::png::linear_to_srgb(0.2) as f64;
+    assert!(px.iter().all(|&b| (f64::from(b) - exact).abs() < 1.0));
+    let mean = px.iter().map(|&b| f64::from(b)).sum::<f64>() / px.len() as f64;
+    assert!((mean - exact).abs() < 0.05, "mean {mean} vs {exact}");
+}
+
+#[test]
+fn pfm_and_exr_f32_round_trip_exactly() {
+    let img = test_image();
+    let mut pfm = Vec::new();
+    write_pfm(&mut pfm, &img).unwrap();
+    assert_eq!(read_pfm(&mut pfm.as_slice()).unwrap(), img);
+    let mut exr = Vec::new();
+    write_exr(&mut exr, &img, ExrPrecision::F32).unwrap();
+    let back = read_exr(&mut exr.as_slice()).unwrap();
+    assert_eq!(
+        back.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        img.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn exr_f16_round_trips_half_representable_values() {
+    let img = Image::from_fn(4, 4, |x, y| [x as f32 * 0.5, y as f32 * 0.25, 1024.0]);
+    let mut exr = Vec::new();
+    write_exr(&mut exr, &img, ExrPrecision::F16).unwrap();
+    assert_eq!(read_exr(&mut exr.as_slice()).unwrap(), img);
+    let mut exr32 = Vec::new();
+    write_exr(&mut exr32, &img, ExrPrecision::F32).unwrap();
+    assert_ne!(exr, exr32);
+}
+
+#[test]
+fn encoders_are_byte_deterministic() {
+    let img = test_image();
+    let enc = |f: &dyn Fn(&mut Vec<u8>)| {
+        let mut v = Vec::new();
+        f(&mut v);
+        v
+    };
+    for _ in 0..3 {
+        assert_eq!(
+            enc(&|v| write_exr(v, &img, ExrPrecision::F32).unwrap()),
+            enc(&|v| write_exr(v, &img, ExrPrecision::F32).unwrap())
+        );
+        assert_eq!(
+            enc(&|v| write_png(v, &img, &PngOptions { dither: Some(1) }).unwrap()),
+            enc(&|v| write_png(v, &img, &PngOptions { dither: Some(1) }).unwrap())
+        );
+    }
+}
+
+#[test]
+fn writing_into_a_missing_or_read_only_folder_fails_and_leaves_nothing() {
+    let img = test_image();
+    let dir = std::env::temp_dir().join(format!("nyquist-film-out-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    for ext in ["png", "exr", "pfm"] {
+        let missing = dir.join("missing").join(format!("x.{ext}"));
+        assert!(write_image_file(&missing, &img).is_err());
+        assert!(!missing.exists());
+        // /proc is read-only even for root.
+        let read_only = std::path::Path::new("/proc").join(format!("nyquist-{ext}.{ext}"));
+        if std::path::Path::new("/proc/self").exists() {
+            assert!(write_image_file(&read_only, &img).is_err());
+            assert!(!read_only.exists());
+        }
+        let ok = dir.join(format!("x.{ext}"));
+        write_image_file(&ok, &img).unwrap();
+        assert!(ok.exists());
+    }
+    assert!(write_image_file(&dir.join("x.tiff"), &img).is_err());
+    assert_eq!(
+        std::fs::read_dir(&dir).unwrap().count(),
+        3,
+        "stray temporary files"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn malformed_inputs_are_errors() {
+    assert!(read_pfm(&mut b"PF\n2 2\n-1.0\n\0\0".as_slice()).is_err());
+    assert!(read_pfm(&mut b"PF\nx 2\n-1.0\n".as_slice()).is_err());
+    assert!(read_pfm(&mut b"".as_slice()).is_err());
+    assert!(read_exr(&mut b"\x76\x2f\x31\x01garbage".as_slice()).is_err());
+    assert!(Image::new(0, 5).is_err());
+}
+
+proptest! {
+    #[test]
+    fn pfm_round_trips_any_floats(w in 1u32..6, h in 1u32..6, seed: u64) {
+        let mut rng = nyquist::rng::default_rng(seed);
+        let data: Vec<f32> = (0..w * h * 3).map(|_| f32::from_bits(rand_bits(&mut rng))).collect();
+        let img = Image::from_rgb(w, h, data).unwrap();
+        let mut bytes = Vec::new();
+        write_pfm(&mut bytes, &img).unwrap();
+        let back = read_pfm(&mut bytes.as_slice()).unwrap();
+        prop_assert_eq!(back.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+                        img.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>());
+    }
+}
+
+fn rand_bits(rng: &mut nyquist::rng::DefaultRng) -> u32 {
+    (nyquist::rng::uniform_f64(rng) * 4_294_967_296.0) as u32
+}
