@@ -8,6 +8,7 @@ mod filter;
 mod output;
 mod points;
 mod scene;
+mod svg;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;

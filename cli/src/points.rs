@@ -38,6 +38,10 @@ pub enum SamplerName {
     ZeroTwo,
     /// Sobol sequence (Joe–Kuo, 1024 dimensions).
     Sobol,
+    /// Mitchell's best-candidate blue noise from the baked table (pixel sampler: --spp).
+    BestCandidate,
+    /// Adaptive: wraps zero-two, minimum spp/4, maximum spp (pixel sampler: --spp).
+    Adaptive,
 }
 
 /// Output formats of `points`.
@@ -47,6 +51,9 @@ pub enum Format {
     Csv,
     /// One JSON array of points, each an array of numbers.
     Json,
+    /// An SVG picture of dimensions 0 and 1 in the unit square (the pixel for --spp), with the
+    /// strata grid where the sampler has one.
+    Svg,
 }
 
 /// Arguments of `nyquist points`.
@@ -71,6 +78,18 @@ pub struct PointsArgs {
     /// Grid `NXxNY` for 2D uniform/stratified sets whose count is not a square.
     #[arg(long, value_parser = parse_grid)]
     pub grid: Option<(u32, u32)>,
+    /// Pixel-sampler mode: print the SPP samples of one pixel (--pixel) from the sampler of
+    /// the renderer instead of a sequence's points. Each point is the image sample (offset in
+    /// the pixel) followed by dimensions 2, 3, … (time, lens u, lens v, …).
+    #[arg(long)]
+    pub spp: Option<u32>,
+    /// The pixel `X,Y` whose samples --spp prints [default: 0,0].
+    #[arg(long, value_parser = parse_pixel)]
+    pub pixel: Option<(u32, u32)>,
+    /// Image size `WxH` of the samplers that cover the whole image (halton, hammersley, sobol;
+    /// required for them with --spp).
+    #[arg(long, value_parser = parse_grid)]
+    pub resolution: Option<(u32, u32)>,
     /// Output format.
     #[arg(long, value_enum, default_value = "csv")]
     pub format: Format,
@@ -93,12 +112,188 @@ pub fn parse_grid(s: &str) -> Result<(u32, u32), String> {
     Ok((parse(a)?, parse(b)?))
 }
 
+/// Parses `X,Y` (e.g. `3,4`) into pixel coordinates.
+pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("'{s}' is not X,Y with non-negative integers (e.g. 3,4)");
+    let (a, b) = s.split_once(',').ok_or_else(bad)?;
+    let x = a.trim().parse::<u32>().map_err(|_| bad())?;
+    let y = b.trim().parse::<u32>().map_err(|_| bad())?;
+    Ok((x, y))
+}
+
 /// Runs `nyquist points`.
 pub fn run(args: &PointsArgs) -> Result<()> {
-    let (points, dims) = generate(args)?;
-    crate::output::to_stdout_or_file(args.output.as_deref(), |w| {
-        write_points(w, &points, dims, args.format)
+    let (points, dims, grid) = if pixel_mode(args) {
+        pixel_samples(args)?
+    } else {
+        let (points, dims) = generate(args)?;
+        let grid = match (args.sampler, args.grid) {
+            (SamplerName::Uniform | SamplerName::Stratified, Some(g)) => Some(g),
+            (SamplerName::Uniform | SamplerName::Stratified, None) if dims == 2 => {
+                let side = (points.len() / 2).isqrt() as u32;
+                Some((side, side))
+            }
+            (SamplerName::Uniform | SamplerName::Stratified, None) => {
+                Some(((points.len() / dims) as u32, 1))
+            }
+            _ => None,
+        };
+        (points, dims, grid)
+    };
+    let title = format!("nyquist points --sampler {}", name(args.sampler));
+    crate::output::to_stdout_or_file(args.output.as_deref(), |w| match args.format {
+        Format::Svg => crate::svg::write_svg(w, &points, dims, grid, &title),
+        f => write_points(w, &points, dims, f),
     })
+}
+
+/// Whether `args` asks for one pixel's samples from a renderer's sampler (`--spp`, or a sampler
+/// that exists only in that form).
+pub fn pixel_mode(args: &PointsArgs) -> bool {
+    args.spp.is_some()
+        || args.pixel.is_some()
+        || args.resolution.is_some()
+        || matches!(
+            args.sampler,
+            SamplerName::BestCandidate | SamplerName::Adaptive
+        )
+}
+
+/// The samples of one pixel from a [`nyquist::sampler::Sampler`]: point-major values, their
+/// dimension count and the strata grid to draw (if any).
+pub fn pixel_samples(args: &PointsArgs) -> Result<(Vec<f32>, usize, Option<(u32, u32)>)> {
+    use SamplerName as S;
+    use nyquist::sampler::{
+        AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
+        RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler,
+    };
+    let n = name(args.sampler);
+    let dims = args.dims;
+    if dims == 0 {
+        bail!("--dims 0: a point needs at least one dimension");
+    }
+    if dims > 1024 {
+        bail!("--dims {dims}: samplers have at most 1024 dimensions");
+    }
+    if args.count.is_some() {
+        bail!("--count does not apply with --spp: a pixel takes spp samples");
+    }
+    if args.skip != 0 {
+        bail!("--skip does not apply with --spp");
+    }
+    let Some(spp) = args.spp else {
+        bail!("--spp is required for {n}: it samples pixels");
+    };
+    if spp == 0 {
+        bail!("--spp 0: need at least one sample per pixel");
+    }
+    if u64::from(spp) * u64::from(dims) > MAX_VALUES {
+        bail!("--spp {spp} × --dims {dims} is more than {MAX_VALUES} values");
+    }
+    let (px, py) = args.pixel.unwrap_or((0, 0));
+    let global = matches!(args.sampler, S::Halton | S::Hammersley | S::Sobol);
+    let resolution = match (args.resolution, global) {
+        (Some((w, h)), _) => {
+            if px >= w || py >= h {
+                bail!("--pixel {px},{py} is outside --resolution {w}x{h}");
+            }
+            [w, h]
+        }
+        (None, true) => bail!(
+            "--resolution WxH is required for {n} with --spp: its samples cover the whole image"
+        ),
+        (None, false) => [px.saturating_add(1), py.saturating_add(1)],
+    };
+    if args.resolution.is_some() && !global {
+        bail!("--resolution applies to halton, hammersley and sobol, not to {n}");
+    }
+    if args.grid.is_some() && !matches!(args.sampler, S::Uniform | S::Stratified) {
+        bail!("--grid applies to uniform and stratified, not to {n}");
+    }
+    let err = |e: nyquist::Error| anyhow::anyhow!("{n}: {e}");
+    let notice = |rounded: (u32, bool)| {
+        if rounded.1 {
+            eprintln!(
+                "nyquist: note: {n} uses a power-of-two spp: --spp {spp} rounded up to {}",
+                rounded.0
+            );
+        }
+    };
+    let mut grid = None;
+    let mut sampler: Box<dyn Sampler> = match args.sampler {
+        S::Random => Box::new(RandomSampler::new(spp, args.seed).map_err(err)?),
+        S::Uniform | S::Stratified => {
+            let (nx, ny) = match args.grid {
+                Some((nx, ny)) if u64::from(nx) * u64::from(ny) == u64::from(spp) => (nx, ny),
+                Some((nx, ny)) => bail!(
+                    "--grid {nx}x{ny} has {} cells but --spp is {spp}",
+                    u64::from(nx) * u64::from(ny)
+                ),
+                None => {
+                    let side = spp.isqrt();
+                    if side * side != spp {
+                        bail!("--spp {spp} is not a square: give --grid NXxNY for {n}");
+                    }
+                    (side, side)
+                }
+            };
+            grid = Some((nx, ny));
+            Box::new(if args.sampler == S::Uniform {
+                StratifiedSampler::uniform(nx, ny, args.seed).map_err(err)?
+            } else {
+                StratifiedSampler::new(nx, ny, nyquist::sampler::Jitter::Jittered, args.seed)
+                    .map_err(err)?
+            })
+        }
+        S::ZeroTwo => {
+            notice(ZeroTwoSampler::rounded_spp(spp));
+            Box::new(ZeroTwoSampler::new(spp, args.seed).map_err(err)?)
+        }
+        S::Sobol => {
+            notice(SobolSampler::rounded_spp(spp));
+            Box::new(SobolSampler::new(resolution, spp, args.seed).map_err(err)?)
+        }
+        S::Halton => Box::new(
+            HaltonSampler::new(
+                resolution,
+                spp,
+                if args.seed == 0 {
+                    HaltonScramble::None
+                } else {
+                    HaltonScramble::PermuteDigits
+                },
+                args.seed,
+            )
+            .map_err(err)?,
+        ),
+        S::Hammersley => Box::new(
+            HammersleySampler::new(resolution, spp, args.seed != 0, args.seed).map_err(err)?,
+        ),
+        S::BestCandidate => Box::new(BestCandidateSampler::new(spp, args.seed).map_err(err)?),
+        S::Adaptive => {
+            notice(ZeroTwoSampler::rounded_spp(spp));
+            let inner = ZeroTwoSampler::new(spp, args.seed).map_err(err)?;
+            let min = (inner.samples_per_pixel() / 4).max(1);
+            Box::new(AdaptiveSampler::new(inner, min, 0.1).map_err(err)?)
+        }
+        S::Lhs | S::Vdc | S::HaltonZaremba | S::HammersleyZaremba => bail!(
+            "{n} is a point set, not a pixel sampler: drop --spp/--pixel/--resolution and use --count"
+        ),
+    };
+    let spp = sampler.samples_per_pixel();
+    let mut out = Vec::with_capacity(spp as usize * dims as usize);
+    for i in 0..spp {
+        sampler.start_pixel_sample([px, py], i, 0);
+        let [x, y] = sampler.get_pixel_2d();
+        out.push(x);
+        if dims >= 2 {
+            out.push(y);
+        }
+        for _ in 2..dims {
+            out.push(sampler.get_1d());
+        }
+    }
+    Ok((out, dims as usize, grid))
 }
 
 /// Generates the points `args` asks for, point-major, and their dimension count.
@@ -207,6 +402,9 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
         )?,
         S::ZeroTwo => fill(&ZeroTwo::from_seed(args.seed), args, &mut out)?,
         S::Sobol => fill(&Sobol::new(dims).map_err(set_error)?, args, &mut out)?,
+        S::BestCandidate | S::Adaptive => {
+            bail!("{} is a pixel sampler: give --spp", name(args.sampler))
+        }
     }
     Ok((out, dims as usize))
 }
@@ -261,6 +459,7 @@ pub fn write_points(w: &mut dyn Write, points: &[f32], dims: usize, format: Form
             }
             w.write_all(b"]\n")?;
         }
+        Format::Svg => crate::svg::write_svg(w, points, dims, None, "nyquist points")?,
     }
     Ok(())
 }

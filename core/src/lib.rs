@@ -44,6 +44,7 @@ pub mod hash;
 pub mod math;
 pub mod radical;
 pub mod rng;
+pub mod sampler;
 pub mod sequence;
 pub mod stratify;
 

@@ -1,0 +1,175 @@
+//! End-to-end tests of `nyquist points --spp` (pixel samplers) and `--format svg`.
+
+use std::process::{Command, Output};
+
+fn nyquist(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_nyquist"))
+        .args(args)
+        .output()
+        .expect("run nyquist")
+}
+
+fn rows(o: &Output) -> Vec<Vec<f32>> {
+    String::from_utf8(o.stdout.clone())
+        .unwrap()
+        .lines()
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect()
+}
+
+fn assert_one_line_error(o: &Output, mentions: &str) {
+    let err = String::from_utf8(o.stderr.clone()).unwrap();
+    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
+    assert_eq!(err.lines().count(), 1, "not one line: {err:?}");
+    assert!(
+        err.contains(mentions),
+        "{err:?} does not mention {mentions:?}"
+    );
+    assert!(o.stdout.is_empty());
+}
+
+#[test]
+fn every_pixel_sampler_prints_spp_points_in_the_unit_cube() {
+    for (s, spp) in [
+        ("random", 16),
+        ("uniform", 16),
+        ("stratified", 16),
+        ("zero-two", 16),
+        ("halton", 16),
+        ("hammersley", 16),
+        ("sobol", 16),
+        ("best-candidate", 16),
+        ("adaptive", 16),
+    ] {
+        let mut args = vec![
+            "points",
+            "--sampler",
+            s,
+            "--spp",
+            "16",
+            "--pixel",
+            "3,2",
+            "--dims",
+            "5",
+            "--seed",
+            "1",
+        ];
+        if ["halton", "hammersley", "sobol"].contains(&s) {
+            args.extend(["--resolution", "8x8"]);
+        }
+        let o = nyquist(&args);
+        assert!(
+            o.status.success(),
+            "{s}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let r = rows(&o);
+        assert_eq!(r.len(), spp, "{s}");
+        assert!(r.iter().all(|p| p.len() == 5), "{s}");
+        assert!(r.iter().flatten().all(|v| (0.0..1.0).contains(v)), "{s}");
+    }
+}
+
+#[test]
+fn stratified_pixel_samples_fill_one_stratum_each() {
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "stratified",
+        "--spp",
+        "16",
+        "--pixel",
+        "5,5",
+    ]);
+    let mut seen = [false; 16];
+    for p in rows(&o) {
+        seen[(p[1] * 4.0) as usize * 4 + (p[0] * 4.0) as usize] = true;
+    }
+    assert!(seen.iter().all(|&b| b));
+}
+
+#[test]
+fn zero_two_rounds_spp_with_a_notice() {
+    let o = nyquist(&["points", "--sampler", "zero-two", "--spp", "6"]);
+    assert!(o.status.success());
+    assert_eq!(rows(&o).len(), 8);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert!(err.contains("rounded up to 8"), "{err}");
+}
+
+#[test]
+fn svg_draws_points_and_strata() {
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "stratified",
+        "--spp",
+        "12",
+        "--grid",
+        "4x3",
+        "--format",
+        "svg",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = String::from_utf8(o.stdout).unwrap();
+    assert!(s.starts_with("<svg"));
+    assert_eq!(s.matches("<circle").count(), 12);
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "halton",
+        "--count",
+        "20",
+        "--format",
+        "svg",
+    ]);
+    assert_eq!(
+        String::from_utf8(o.stdout)
+            .unwrap()
+            .matches("<circle")
+            .count(),
+        20
+    );
+}
+
+#[test]
+fn pixel_sampler_bad_input_is_one_line_and_status_2() {
+    assert_one_line_error(
+        &nyquist(&["points", "--sampler", "best-candidate"]),
+        "--spp",
+    );
+    assert_one_line_error(
+        &nyquist(&["points", "--sampler", "hammersley", "--spp", "4"]),
+        "--resolution",
+    );
+    assert_one_line_error(
+        &nyquist(&[
+            "points",
+            "--sampler",
+            "sobol",
+            "--spp",
+            "4",
+            "--resolution",
+            "4x4",
+            "--pixel",
+            "4,0",
+        ]),
+        "outside",
+    );
+    assert_one_line_error(
+        &nyquist(&["points", "--sampler", "lhs", "--spp", "4"]),
+        "pixel sampler",
+    );
+    assert_one_line_error(
+        &nyquist(&["points", "--sampler", "stratified", "--spp", "10"]),
+        "--grid",
+    );
+    assert_one_line_error(
+        &nyquist(&["points", "--spp", "4", "--pixel", "x"]),
+        "--pixel",
+    );
+    assert_one_line_error(
+        &nyquist(&["points", "--sampler", "best-candidate", "--spp", "5000"]),
+        "best-candidate",
+    );
+}

@@ -1,0 +1,295 @@
+//! pbrt-v3/v4's Halton sampler: one Halton sequence over the whole image.
+
+use super::Sampler;
+use crate::Error;
+use crate::radical::{inverse_radical_inverse, radical_inverse, scrambled_radical_inverse};
+
+/// Scrambling of [`HaltonSampler`]'s values.
+///
+/// ```
+/// use nyquist::sampler::HaltonScramble;
+/// assert_ne!(HaltonScramble::None, HaltonScramble::PermuteDigits);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum HaltonScramble {
+    /// Plain radical inverses.
+    None,
+    /// Seeded random digit permutations per base
+    /// ([`scrambled_radical_inverse`](crate::radical::scrambled_radical_inverse)).
+    PermuteDigits,
+}
+
+/// The largest scale per axis: pixels repeat their sample pattern every 128 (x) and 243 (y)
+/// pixels, as in pbrt.
+const MAX_RESOLUTION: u32 = 128;
+
+/// Extended Euclid: the inverse of `a` modulo `n` (`a`, `n` coprime, `n ≥ 1`).
+fn mod_inverse(a: u64, n: u64) -> u64 {
+    let (mut r0, mut r1) = (i128::from(n), i128::from(a % n));
+    let (mut t0, mut t1) = (0i128, 1i128);
+    while r1 != 0 {
+        let q = r0 / r1;
+        (r0, r1) = (r1, r0 - q * r1);
+        (t0, t1) = (t1, t0 - q * t1);
+    }
+    t0.rem_euclid(i128::from(n)) as u64
+}
+
+/// Halton sampling over the whole image (pbrt-v3's `HaltonSampler`).
+///
+/// Dimension 0 and 1 of the Halton sequence are scaled by `2^j ≥ min(width, 128)` and
+/// `3^k ≥ min(height, 128)`, so each pixel of a `2^j × 3^k` block owns every `(2^j·3^k)`-th
+/// point. Sample `s` of pixel `p` is sequence index `idx = h(p) + s·2^j·3^k`, where `h(p)` is the
+/// unique value modulo `2^j·3^k` whose last `j` base-2 digits reversed are `p.x mod 2^j` and last
+/// `k` base-3 digits reversed are `p.y mod 3^k` (Chinese remainder theorem with inverses computed
+/// at construction). The image sample is `(Φ₂(idx >> j), Φ₃(idx / 3^k))` — the exact fractional
+/// part of the scaled radical inverses; dimension `d ≥ 2` is `Φ_{prime(d)}(idx)` (dimensions
+/// wrap modulo 1024). With [`HaltonScramble::PermuteDigits`], every dimension's digits go through
+/// a seeded permutation.
+///
+/// All index arithmetic is `u64`: no overflow for any `u32` pixel and sample index. Every sample
+/// index gives a new point (no wrap at `samples_per_pixel`).
+///
+/// ```
+/// use nyquist::sampler::{HaltonSampler, HaltonScramble, Sampler};
+/// let mut s = HaltonSampler::new([64, 64], 16, HaltonScramble::None, 0).unwrap();
+/// // Pixel (0, 0), sample 0 is index 0: the origin.
+/// s.start_pixel_sample([0, 0], 0, 0);
+/// assert_eq!(s.get_pixel_2d(), [0.0, 0.0]);
+/// ```
+#[derive(Clone, Debug)]
+pub struct HaltonSampler {
+    spp: u32,
+    scramble: HaltonScramble,
+    seed: u64,
+    exponents: [u32; 2],
+    scales: [u64; 2],
+    stride: u64,
+    /// `3^k · (3^k)⁻¹ mod 2^j` and `2^j · (2^j)⁻¹ mod 3^k`: the CRT basis.
+    basis: [u64; 2],
+    /// The last pixel started and its offset `h(p)`, cached across its samples.
+    pixel: [u32; 2],
+    offset: u64,
+    index: u64,
+    dim: u32,
+}
+
+impl HaltonSampler {
+    /// A Halton sampler for an image of `resolution` pixels.
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0.
+    ///
+    /// ```
+    /// use nyquist::sampler::{HaltonSampler, HaltonScramble};
+    /// assert!(HaltonSampler::new([0, 4], 1, HaltonScramble::None, 0).is_err());
+    /// ```
+    pub fn new(
+        resolution: [u32; 2],
+        spp: u32,
+        scramble: HaltonScramble,
+        seed: u64,
+    ) -> Result<Self, Error> {
+        if spp == 0 {
+            return Err(Error::ZeroSize { what: "spp" });
+        }
+        if resolution[0] == 0 || resolution[1] == 0 {
+            return Err(Error::ZeroSize { what: "resolution" });
+        }
+        let mut exponents = [0u32; 2];
+        let mut scales = [1u64; 2];
+        for (axis, base) in [(0usize, 2u64), (1, 3)] {
+            let target = u64::from(resolution[axis].min(MAX_RESOLUTION));
+            while scales[axis] < target {
+                scales[axis] *= base;
+                exponents[axis] += 1;
+            }
+        }
+        let stride = scales[0] * scales[1];
+        let basis = [
+            scales[1] * mod_inverse(scales[1], scales[0]),
+            scales[0] * mod_inverse(scales[0], scales[1]),
+        ];
+        Ok(Self {
+            spp,
+            scramble,
+            seed,
+            exponents,
+            scales,
+            stride,
+            basis,
+            pixel: [0; 2],
+            offset: 0,
+            index: 0,
+            dim: 0,
+        })
+    }
+
+    /// The scales `[2^j, 3^k]`: the pattern repeats every `2^j` pixels in x and `3^k` in y.
+    ///
+    /// ```
+    /// use nyquist::sampler::{HaltonSampler, HaltonScramble};
+    /// let s = HaltonSampler::new([100, 30], 1, HaltonScramble::None, 0).unwrap();
+    /// assert_eq!(s.scales(), [128, 81]);
+    /// ```
+    pub fn scales(&self) -> [u64; 2] {
+        self.scales
+    }
+
+    /// The global Halton index of sample `sample_index` of `pixel`.
+    ///
+    /// ```
+    /// use nyquist::sampler::{HaltonSampler, HaltonScramble};
+    /// let s = HaltonSampler::new([2, 3], 1, HaltonScramble::None, 0).unwrap();
+    /// // 2 × 3 pixels, stride 6: pixel (1, 0) owns the indices whose base-2 last digit is 1
+    /// // and whose base-3 last digit is 0 — 3, 9, 15, …
+    /// assert_eq!(s.sequence_index([1, 0], 0), 3);
+    /// assert_eq!(s.sequence_index([1, 0], 2), 15);
+    /// ```
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u64 {
+        self.pixel_offset(pixel) + u64::from(sample_index) * self.stride
+    }
+
+    /// `h(p)`: the index of the pixel's first sample.
+    fn pixel_offset(&self, pixel: [u32; 2]) -> u64 {
+        let mut offset = 0u64;
+        for (axis, p) in (0u32..).zip(pixel) {
+            let a = axis as usize;
+            let pm = u64::from(p) % self.scales[a];
+            let digits = inverse_radical_inverse(axis, pm, self.exponents[a]);
+            // `digits < scale ≤ 243` and `basis < stride ≤ 31104`: no overflow.
+            offset = (offset + digits * self.basis[a]) % self.stride;
+        }
+        offset
+    }
+
+    #[inline]
+    fn value(&self, dim: u32, a: u64) -> f32 {
+        match self.scramble {
+            HaltonScramble::None => radical_inverse(dim, a),
+            HaltonScramble::PermuteDigits => scrambled_radical_inverse(dim, a, self.seed),
+        }
+    }
+
+    #[inline]
+    fn sample(&self, dim: u32) -> f32 {
+        let dim = dim % 1024;
+        match dim {
+            0 => self.value(0, self.index >> self.exponents[0]),
+            1 => self.value(1, self.index / self.scales[1]),
+            _ => self.value(dim, self.index),
+        }
+    }
+}
+
+impl Sampler for HaltonSampler {
+    fn samples_per_pixel(&self) -> u32 {
+        self.spp
+    }
+
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        if pixel != self.pixel {
+            self.pixel = pixel;
+            self.offset = self.pixel_offset(pixel);
+        }
+        self.index = self.offset + u64::from(sample_index) * self.stride;
+        self.dim = dim;
+    }
+
+    fn get_1d(&mut self) -> f32 {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(1);
+        self.sample(d)
+    }
+
+    fn get_2d(&mut self) -> [f32; 2] {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(2);
+        [self.sample(d), self.sample(d.wrapping_add(1))]
+    }
+
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.dim = self.dim.max(2);
+        [self.sample(0), self.sample(1)]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampler::tests::{consistent_values, threads_agree};
+
+    #[test]
+    fn halton_is_consistent_and_thread_independent() {
+        for scramble in [HaltonScramble::None, HaltonScramble::PermuteDigits] {
+            let s = HaltonSampler::new([64, 48], 16, scramble, 5).unwrap();
+            consistent_values(&s);
+            threads_agree(&s);
+        }
+    }
+
+    #[test]
+    fn halton_image_sample_is_the_scaled_global_point() {
+        // Film position / resolution scale equals (Φ₂(idx), Φ₃(idx)) of the global sequence.
+        let s0 = HaltonSampler::new([8, 9], 4, HaltonScramble::None, 0).unwrap();
+        let mut s = s0.clone();
+        let mut hit = std::vec![false; 8 * 9 * 4];
+        for y in 0..9u32 {
+            for x in 0..8u32 {
+                for i in 0..4 {
+                    let idx = s.sequence_index([x, y], i);
+                    s.start_pixel_sample([x, y], i, 0);
+                    let [u, v] = s.get_pixel_2d();
+                    let gx = f64::from(radical_inverse(0, idx)) * 8.0;
+                    let gy = f64::from(radical_inverse(1, idx)) * 9.0;
+                    assert!(
+                        (gx - (f64::from(x) + f64::from(u))).abs() < 1e-4,
+                        "x {x} {y} {i}"
+                    );
+                    assert!(
+                        (gy - (f64::from(y) + f64::from(v))).abs() < 1e-4,
+                        "y {x} {y} {i}"
+                    );
+                    hit[idx as usize] = true;
+                }
+            }
+        }
+        // The 8 × 9 pixels × 4 samples are exactly the first 288 Halton points.
+        assert!(hit.iter().all(|&b| b));
+    }
+
+    #[test]
+    fn halton_corner_pixel_of_a_huge_image() {
+        let mut s = HaltonSampler::new([16384, 16384], 65536, HaltonScramble::None, 0).unwrap();
+        let mut seen = std::vec::Vec::new();
+        for dim in [0u32, 2] {
+            s.start_pixel_sample([16383, 16383], 65535, dim);
+            let v = if dim == 0 {
+                s.get_pixel_2d()
+            } else {
+                s.get_2d()
+            };
+            for x in v {
+                assert!(x.is_finite() && (0.0..1.0).contains(&x), "{x}");
+                assert!(!seen.contains(&x.to_bits()), "{x} twice");
+                seen.push(x.to_bits());
+            }
+        }
+        let mut t =
+            HaltonSampler::new([16384, 16384], 65536, HaltonScramble::PermuteDigits, 3).unwrap();
+        let a = super::super::tests::record(&mut t, [16383, 16383], 65535);
+        assert!(a.iter().all(|x| (0.0..1.0).contains(x)));
+        let b = super::super::tests::record(&mut t, [16383, 16383], 65534);
+        assert_ne!(a, b);
+        // u64 index math: stride 2⁷·3⁵ = 31104, and the largest sample index passes 2³².
+        assert!(s.sequence_index([16383, 16383], 65535) >= 65535 * 31104);
+        assert!(s.sequence_index([16383, 16383], u32::MAX) > u64::from(u32::MAX));
+    }
+
+    #[test]
+    fn mod_inverse_is_an_inverse() {
+        for (a, n) in [(3u64, 4u64), (243, 128), (128, 243), (9, 2), (2, 9), (1, 1)] {
+            assert_eq!((a * mod_inverse(a, n)) % n, 1 % n, "{a} mod {n}");
+        }
+    }
+}

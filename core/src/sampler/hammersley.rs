@@ -1,0 +1,191 @@
+//! One Hammersley set over the whole image.
+
+use super::Sampler;
+use crate::Error;
+use crate::math::clamp_unit;
+use crate::radical::{radical_inverse, scrambled_radical_inverse};
+
+/// Hammersley sampling over the whole image: the `N = width · H · spp` points of one Hammersley
+/// set `((k + ½)/N, Φ₂(k), Φ₃(k), Φ₅(k), …)`, scaled to `width × H` pixels, where
+/// `H = 2^j ≥ height` pads the height to a power of two.
+///
+/// Sample `s` of pixel `(px, py)` is point `k = px · H · spp + rev_j(py) + s · 2^j`
+/// (`rev_j` reverses `j` bits). Because `Φ₂(k) · 2^j = rev_j(k mod 2^j) + Φ₂(k >> j)` and
+/// `k mod 2^j = rev_j(py)`, its film position
+/// `(px + (rev_j(py) + s·2^j + ½) / (H·spp), py + Φ₂(k >> j))` lies in the pixel, and
+/// `(px, py, s) ↦ k` is a bijection onto `0..N`: the pixels' samples together are exactly the
+/// Hammersley set (the rows `py ≥ height` of the padding are never asked for).
+///
+/// Dimension `d ≥ 2` is `Φ_{prime(d − 1)}(k)` (base 3, 5, …; wrapping after 1024 bases), with a
+/// seeded digit permutation when `scramble` is set. `sample_index >= spp` wraps modulo `spp`.
+/// Index arithmetic is `u64` (`N` reaches 2⁴⁴ at 16384² pixels × 65536 spp).
+///
+/// ```
+/// use nyquist::sampler::{HammersleySampler, Sampler};
+/// let mut s = HammersleySampler::new([4, 4], 2, false, 0).unwrap();
+/// s.start_pixel_sample([2, 3], 1, 0);
+/// let [x, y] = s.get_pixel_2d();
+/// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
+/// ```
+#[derive(Clone, Debug)]
+pub struct HammersleySampler {
+    spp: u32,
+    scramble: bool,
+    seed: u64,
+    j: u32,
+    /// `H · spp`: points per pixel column.
+    column: u64,
+    k: u64,
+    film_x: f32,
+    dim: u32,
+}
+
+impl HammersleySampler {
+    /// A Hammersley sampler for an image of `resolution` pixels; `scramble` turns on seeded
+    /// digit permutations of dimensions ≥ 2.
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0.
+    ///
+    /// ```
+    /// use nyquist::sampler::HammersleySampler;
+    /// assert!(HammersleySampler::new([4, 0], 1, false, 0).is_err());
+    /// ```
+    pub fn new(resolution: [u32; 2], spp: u32, scramble: bool, seed: u64) -> Result<Self, Error> {
+        if spp == 0 {
+            return Err(Error::ZeroSize { what: "spp" });
+        }
+        if resolution[0] == 0 || resolution[1] == 0 {
+            return Err(Error::ZeroSize { what: "resolution" });
+        }
+        let j = 32 - (resolution[1] - 1).leading_zeros();
+        Ok(Self {
+            spp,
+            scramble,
+            seed,
+            j,
+            column: (1u64 << j) * u64::from(spp),
+            k: 0,
+            film_x: 0.0,
+            dim: 0,
+        })
+    }
+
+    /// The Hammersley index `k` of sample `sample_index` (modulo spp) of `pixel`; `pixel[1]`
+    /// wraps modulo `2^j`.
+    ///
+    /// ```
+    /// use nyquist::sampler::HammersleySampler;
+    /// let s = HammersleySampler::new([2, 2], 1, false, 0).unwrap();
+    /// // H = 2: pixel (0, 1) takes k = rev₁(1) = 1; pixel (1, 0) takes k = 2.
+    /// assert_eq!(s.point_index([0, 1], 0), 1);
+    /// assert_eq!(s.point_index([1, 0], 0), 2);
+    /// ```
+    pub fn point_index(&self, pixel: [u32; 2], sample_index: u32) -> u64 {
+        u64::from(pixel[0]) * self.column + self.row_offset(pixel[1], sample_index)
+    }
+
+    fn row_offset(&self, py: u32, sample_index: u32) -> u64 {
+        let rev = if self.j == 0 {
+            0
+        } else {
+            u64::from(py.reverse_bits() >> (32 - self.j))
+        };
+        rev + (u64::from(sample_index % self.spp) << self.j)
+    }
+
+    #[inline]
+    fn sample(&self, dim: u32) -> f32 {
+        match dim {
+            0 => self.film_x,
+            1 => radical_inverse(0, self.k >> self.j),
+            _ => {
+                let d = (dim - 1) % 1024;
+                if self.scramble {
+                    scrambled_radical_inverse(d, self.k, self.seed)
+                } else {
+                    radical_inverse(d, self.k)
+                }
+            }
+        }
+    }
+}
+
+impl Sampler for HammersleySampler {
+    fn samples_per_pixel(&self) -> u32 {
+        self.spp
+    }
+
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        let r = self.row_offset(pixel[1], sample_index);
+        self.k = u64::from(pixel[0]) * self.column + r;
+        self.film_x = clamp_unit(((r as f64 + 0.5) / self.column as f64) as f32);
+        self.dim = dim;
+    }
+
+    fn get_1d(&mut self) -> f32 {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(1);
+        self.sample(d)
+    }
+
+    fn get_2d(&mut self) -> [f32; 2] {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(2);
+        [self.sample(d), self.sample(d.wrapping_add(1))]
+    }
+
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.dim = self.dim.max(2);
+        [self.sample(0), self.sample(1)]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampler::tests::{consistent_values, threads_agree};
+
+    #[test]
+    fn hammersley_is_consistent_and_thread_independent() {
+        for scramble in [false, true] {
+            let s = HammersleySampler::new([20, 30], 8, scramble, 3).unwrap();
+            consistent_values(&s);
+            threads_agree(&s);
+        }
+    }
+
+    #[test]
+    fn hammersley_samples_land_in_their_pixel_and_form_the_whole_set() {
+        let (w, h, spp) = (5u32, 8u32, 4u32);
+        let n = u64::from(w * h * spp);
+        let mut s = HammersleySampler::new([w, h], spp, false, 0).unwrap();
+        let mut hit = std::vec![false; n as usize];
+        for py in 0..h {
+            for px in 0..w {
+                for i in 0..spp {
+                    let k = s.point_index([px, py], i);
+                    assert!(!core::mem::replace(&mut hit[k as usize], true));
+                    let c = crate::sampler::camera_sample(&mut s, [px, py], i);
+                    // The Hammersley point k of N, scaled to the image.
+                    let gx = (k as f64 + 0.5) / n as f64 * f64::from(w);
+                    let gy = f64::from(radical_inverse(0, k)) * f64::from(h);
+                    assert!((f64::from(c.p_film[0]) - gx).abs() < 1e-5, "{px} {py} {i}");
+                    assert!((f64::from(c.p_film[1]) - gy).abs() < 1e-5, "{px} {py} {i}");
+                    assert!(c.p_film[0] >= px as f32 && c.p_film[0] < (px + 1) as f32);
+                    assert!(c.p_film[1] >= py as f32 && c.p_film[1] < (py + 1) as f32);
+                    assert_eq!(c.time, radical_inverse(1, k));
+                }
+            }
+        }
+        assert!(hit.iter().all(|&b| b));
+    }
+
+    #[test]
+    fn hammersley_huge_image_corner() {
+        let mut s = HammersleySampler::new([16384, 16384], 65536, true, 1).unwrap();
+        let r = crate::sampler::tests::record(&mut s, [16383, 16383], 65535);
+        assert!(r.iter().all(|x| (0.0..1.0).contains(x)));
+        assert_eq!(s.point_index([16383, 16383], 65535), (1u64 << 44) - 1);
+    }
+}

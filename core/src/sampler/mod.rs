@@ -1,0 +1,268 @@
+//! Samplers: the values a renderer needs for each pixel sample.
+//!
+//! Two layers over the same generators:
+//!
+//! 1. **Stateless, random access** (pbrt-v4's `StartPixelSample` / `Get1D` / `Get2D`): the
+//!    [`Sampler`] trait. A sampler is a small `Clone` cursor; after
+//!    [`Sampler::start_pixel_sample`] its values depend only on (pixel, sample index, dimension,
+//!    seed, construction parameters), so every thread clones its own and replays bit-identical
+//!    values in any order. Per-pixel permutations and scrambles come from [`crate::hash`]: no
+//!    tables, no shared state.
+//! 2. **Request and fill** (pbrt-v2's `Sample`, `Add1D`/`Add2D`, `RoundSize`, `GetNextSample`):
+//!    [`SampleLayout`], [`Sample`] and [`PixelRangeSampler`] in [`layout`].
+//!
+//! ## Dimensions
+//!
+//! Dimensions 0 and 1 are the image sample, returned by [`Sampler::get_pixel_2d`] whatever the
+//! cursor. [`camera_sample`] starts at dimension 0 and takes the image sample (dimensions 0, 1),
+//! then time ([`Sampler::get_1d`], dimension 2), then the lens ([`Sampler::get_2d`], dimensions
+//! 3, 4); an integrator's own values follow from dimension 5.
+//!
+//! | sampler | values |
+//! |---|---|
+//! | [`RandomSampler`] | independent PCG32 values |
+//! | [`AdaptiveSampler`] | wraps another: minimum spp, maximum where the first samples disagree |
+//! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
+//! | [`StratifiedSampler`] | jittered (or centred: [`StratifiedSampler::uniform`]) strata, hash-permuted per dimension |
+
+mod adaptive;
+pub mod best_candidate;
+mod halton;
+mod hammersley;
+mod random;
+mod sobol;
+mod stratified;
+mod zero_two;
+
+pub mod layout;
+
+pub use adaptive::{ADAPTIVE_CHANNELS, AdaptiveSampler};
+pub use best_candidate::BestCandidateSampler;
+pub use halton::{HaltonSampler, HaltonScramble};
+pub use hammersley::HammersleySampler;
+pub use layout::{PixelRangeSampler, Sample, SampleLayout};
+pub use random::RandomSampler;
+pub use sobol::SobolSampler;
+pub use stratified::{Jitter, StratifiedSampler};
+pub use zero_two::ZeroTwoSampler;
+
+/// A source of sample values addressed by (pixel, sample index, dimension).
+///
+/// Contract for every implementation:
+/// - every value is in `[0, 1)` and never NaN;
+/// - after `start_pixel_sample(pixel, index, dim)` the values returned depend only on those
+///   arguments, the calls made since, and the construction parameters (seed, sizes);
+/// - `sample_index >= samples_per_pixel()` is allowed: samplers with a fixed per-pixel pattern
+///   wrap it modulo `samples_per_pixel()` (each documents what it does);
+/// - the trait is object safe: a renderer may hold a `&mut dyn Sampler`.
+///
+/// ```
+/// use nyquist::sampler::{RandomSampler, Sampler};
+/// let mut s = RandomSampler::new(4, 7).unwrap();
+/// s.start_pixel_sample([3, 5], 2, 0);
+/// let a = s.get_2d();
+/// s.start_pixel_sample([3, 5], 2, 0);
+/// assert_eq!(s.get_2d(), a);
+/// ```
+pub trait Sampler {
+    /// Samples per pixel.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let s = RandomSampler::new(4, 7).unwrap();
+    /// assert_eq!(s.samples_per_pixel(), 4);
+    /// ```
+    fn samples_per_pixel(&self) -> u32;
+
+    /// Moves the cursor to sample `sample_index` of `pixel`, at dimension `dim`.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([1, 2], 0, 3);
+    /// let a = s.get_1d();
+    /// s.start_pixel_sample([1, 2], 0, 2);
+    /// s.get_1d();
+    /// assert_eq!(s.get_1d(), a); // dimension 3 either way
+    /// ```
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32);
+
+    /// The value of the current dimension, in `[0, 1)`; advances the cursor by one.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 9);
+    /// assert!((0.0..1.0).contains(&s.get_1d()));
+    /// ```
+    fn get_1d(&mut self) -> f32;
+
+    /// The values of the current and the next dimension, in `[0, 1)²`; advances by two.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// let [u, v] = s.get_2d();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// assert_eq!([s.get_1d(), s.get_1d()], [u, v]);
+    /// ```
+    fn get_2d(&mut self) -> [f32; 2];
+
+    /// The image sample: the offset inside the pixel, in `[0, 1)²` (dimensions 0 and 1 whatever
+    /// the cursor). Moves the cursor to `max(cursor, 2)`.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 1, 7);
+    /// let a = s.get_pixel_2d();
+    /// s.start_pixel_sample([0, 0], 1, 0);
+    /// assert_eq!(s.get_pixel_2d(), a);
+    /// ```
+    fn get_pixel_2d(&mut self) -> [f32; 2];
+
+    /// The array size this sampler prefers for a request of `n` values (pbrt-v2's `RoundSize`):
+    /// `n` itself unless the sampler's arrays need, e.g., a power of two. Total: never returns 0
+    /// for `n > 0`; saturates at the largest size the sampler supports.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let s = RandomSampler::new(4, 7).unwrap();
+    /// assert_eq!(s.round_size(7), 7);
+    /// ```
+    fn round_size(&self, n: u32) -> u32 {
+        n
+    }
+
+    /// Fills `out` with an array of `out.len()` values for the current sample, at the current
+    /// dimension. The default takes one dimension per value; stratified samplers override it to
+    /// stratify the array (taking one dimension in all). Allocates: no.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// let mut a = [2.0f32; 3];
+    /// s.get_array_1d(&mut a);
+    /// assert!(a.iter().all(|x| (0.0..1.0).contains(x)));
+    /// ```
+    fn get_array_1d(&mut self, out: &mut [f32]) {
+        for x in out {
+            *x = self.get_1d();
+        }
+    }
+
+    /// Fills `out` (pairs `[u0, v0, u1, v1, …]`, `out.len() / 2` points; an odd last value is
+    /// left untouched) with an array of 2D values for the current sample. The default takes two
+    /// dimensions per point; stratified samplers override it (taking two dimensions in all).
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([0, 0], 0, 5);
+    /// let mut a = [2.0f32; 5];
+    /// s.get_array_2d(&mut a);
+    /// assert!(a[..4].iter().all(|x| (0.0..1.0).contains(x)) && a[4] == 2.0);
+    /// ```
+    fn get_array_2d(&mut self, out: &mut [f32]) {
+        for p in out.chunks_exact_mut(2) {
+            let [u, v] = self.get_2d();
+            p[0] = u;
+            p[1] = v;
+        }
+    }
+
+    /// How many samples `pixel` takes, given what was [reported](Sampler::report) for it so far.
+    /// The default is [`Sampler::samples_per_pixel`]; adaptive samplers answer between their
+    /// minimum and maximum.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let s = RandomSampler::new(4, 7).unwrap();
+    /// assert_eq!(s.pixel_samples([5, 5]), 4);
+    /// ```
+    fn pixel_samples(&self, pixel: [u32; 2]) -> u32 {
+        let _ = pixel;
+        self.samples_per_pixel()
+    }
+
+    /// Reports the radiance (any number of channels) that sample `sample_index` of `pixel`
+    /// produced. The default ignores it; adaptive samplers use it to decide
+    /// [`Sampler::pixel_samples`].
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// s.report([0, 0], 0, &[1.0, 0.0, 0.0]); // ignored
+    /// assert_eq!(s.pixel_samples([0, 0]), 4);
+    /// ```
+    fn report(&mut self, pixel: [u32; 2], sample_index: u32, radiance: &[f32]) {
+        let _ = (pixel, sample_index, radiance);
+    }
+}
+
+/// What a camera needs for one pixel sample.
+///
+/// ```
+/// use nyquist::sampler::{camera_sample, RandomSampler};
+/// let c = camera_sample(&mut RandomSampler::new(1, 0).unwrap(), [10, 20], 0);
+/// assert!(c.p_film[0] >= 10.0 && c.p_film[0] < 11.0);
+/// assert!((0.0..1.0).contains(&c.time));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CameraSample {
+    /// Film position in pixels: the pixel's corner plus the image sample.
+    pub p_film: [f32; 2],
+    /// Lens position, in `[0, 1)²`.
+    pub lens: [f32; 2],
+    /// Time, in `[0, 1)`.
+    pub time: f32,
+}
+
+/// The camera sample of `pixel`, sample `sample_index`: image sample (dimensions 0, 1), then
+/// time (dimension 2), then lens (dimensions 3, 4). Leaves the cursor at dimension 5.
+///
+/// `p_film` is `pixel + image sample` in `f32`, kept inside the pixel (rounding can never carry
+/// it to the next pixel's corner).
+///
+/// ```
+/// use nyquist::sampler::{camera_sample, StratifiedSampler, Sampler, Jitter};
+/// let mut s = StratifiedSampler::new(2, 2, Jitter::Jittered, 1).unwrap();
+/// let c = camera_sample(&mut s, [0, 0], 3);
+/// assert!(c.p_film[0] < 1.0 && c.p_film[1] < 1.0);
+/// assert!((0.0..1.0).contains(&s.get_1d())); // dimension 5
+/// ```
+pub fn camera_sample<S: Sampler + ?Sized>(
+    s: &mut S,
+    pixel: [u32; 2],
+    sample_index: u32,
+) -> CameraSample {
+    s.start_pixel_sample(pixel, sample_index, 0);
+    let p = s.get_pixel_2d();
+    let time = s.get_1d();
+    let lens = s.get_2d();
+    CameraSample {
+        p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+        lens,
+        time,
+    }
+}
+
+/// `pixel + offset` in `f32`, kept inside the pixel: below `pixel + 1` unless `f32` cannot
+/// represent a value between (huge coordinates), then `pixel` itself.
+#[inline]
+pub(crate) fn film(pixel: u32, offset: f32) -> f32 {
+    let base = pixel as f32;
+    let x = base + offset;
+    if x < base + 1.0 { x } else { base }
+}
+
+/// Hash of a pixel's coordinates with two more words (dimension, seed, …).
+#[inline]
+pub(crate) fn pixel_hash(pixel: [u32; 2], a: u64, b: u64) -> u64 {
+    crate::hash::hash3((u64::from(pixel[1]) << 32) | u64::from(pixel[0]), a, b)
+}
+
+#[cfg(test)]
+pub(crate) mod tests;

@@ -1,0 +1,288 @@
+//! pbrt-v3's Sobol sampler: one Sobol sequence over the whole image.
+
+use super::Sampler;
+use crate::Error;
+use crate::hash::hash2;
+use crate::sequence::sobol_u32;
+
+/// Number of Sobol dimensions ([`crate::sequence::Sobol`]); higher dimensions wrap.
+const DIMS: u32 = 1024;
+
+/// Sobol sampling over the whole image (pbrt-v3's `SobolSampler`).
+///
+/// The image is embedded in a `2^m × 2^m` square, `m = ⌈log₂ max(width, height)⌉`, and
+/// dimensions 0 and 1 of the Sobol sequence (a (0,2)-sequence) are scaled by `2^m`: among the
+/// first `2^(2m)` points each pixel of the square owns exactly one, and among the first
+/// `spp · 2^(2m)` exactly `spp`, which form a (0, log₂ spp, 2)-net inside the pixel. Sample `s`
+/// of pixel `p` is index `idx = s · 2^(2m) + low`, where `low` solves the `2m × 2m` GF(2) system
+/// "top `m` bits of dimensions 0 and 1 equal `p`" after the contribution of `s · 2^(2m)` is
+/// XOR-ed out; the inverse matrix is computed once, at construction, by Gaussian elimination.
+///
+/// Image sample: the fractional part of `(x · 2^m − p.x, y · 2^m − p.y)`; dimension `d ≥ 2` is
+/// Sobol dimension `d` (wrapping modulo 1024) at `idx`. A nonzero seed adds a digital shift
+/// (XOR) from `hash(seed, d)` to every dimension — for dimensions 0 and 1 only below the top
+/// `m` bits, so pixels keep their samples. Digital shifts keep every net a net.
+///
+/// `spp` is rounded up to a power of two ([`SobolSampler::rounded_spp`]); since Sobol indices
+/// here are 32-bit, `spp · 2^(2m) ≤ 2³²` is required (e.g. 16 spp at 16384², 65536 spp at
+/// 256²). `sample_index >= spp` wraps modulo `spp`.
+///
+/// ```
+/// use nyquist::sampler::{Sampler, SobolSampler};
+/// let mut s = SobolSampler::new([4, 4], 4, 0).unwrap();
+/// s.start_pixel_sample([3, 1], 2, 0);
+/// let [x, y] = s.get_pixel_2d();
+/// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
+/// ```
+#[derive(Clone, Debug)]
+pub struct SobolSampler {
+    spp: u32,
+    seed: u64,
+    m: u32,
+    /// `inverse[r]`: the low index bits that flip target bit `r` (bits `0..m` are x's top bits,
+    /// `m..2m` are y's).
+    inverse: [u32; 32],
+    shift: [u32; 2],
+    index: u32,
+    dim: u32,
+}
+
+/// The top `m` bits of `v`, as an `m`-bit number.
+#[inline]
+fn top(v: u32, m: u32) -> u32 {
+    if m == 0 { 0 } else { v >> (32 - m) }
+}
+
+impl SobolSampler {
+    /// As [`ZeroTwoSampler::rounded_spp`](super::ZeroTwoSampler::rounded_spp): the next power
+    /// of two and whether it differs from `requested`.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::sampler::SobolSampler::rounded_spp(5), (8, true));
+    /// ```
+    pub fn rounded_spp(requested: u32) -> (u32, bool) {
+        super::ZeroTwoSampler::rounded_spp(requested)
+    }
+
+    /// A Sobol sampler for an image of `resolution` pixels, `spp` rounded up to a power of two.
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
+    /// `spp · 2^(2m)` passes 2³² (see above).
+    ///
+    /// ```
+    /// use nyquist::sampler::SobolSampler;
+    /// assert!(SobolSampler::new([16384, 16384], 16, 0).is_ok());
+    /// assert!(SobolSampler::new([16384, 16384], 32, 0).is_err());
+    /// ```
+    pub fn new(resolution: [u32; 2], spp: u32, seed: u64) -> Result<Self, Error> {
+        if spp == 0 {
+            return Err(Error::ZeroSize { what: "spp" });
+        }
+        if resolution[0] == 0 || resolution[1] == 0 {
+            return Err(Error::ZeroSize { what: "resolution" });
+        }
+        let (spp, _) = Self::rounded_spp(spp);
+        let side = resolution[0].max(resolution[1]);
+        let m = 32 - (side - 1).leading_zeros();
+        if spp == 0 || 2 * m + spp.trailing_zeros() > 32 {
+            return Err(Error::TooMany {
+                what: "spp × pixels of the power-of-two square",
+            });
+        }
+        let shift = if seed == 0 {
+            [0; 2]
+        } else {
+            let low = |d: u64| {
+                let h = hash2(seed, d) as u32;
+                if m == 0 { h } else { h & (u32::MAX >> m) }
+            };
+            [low(0), low(1)]
+        };
+        Ok(Self {
+            spp,
+            seed,
+            m,
+            inverse: Self::invert(m),
+            shift,
+            index: 0,
+            dim: 0,
+        })
+    }
+
+    /// Gauss–Jordan elimination over GF(2) of the map "low 2m index bits → top m bits of
+    /// dimensions 0 and 1".
+    fn invert(m: u32) -> [u32; 32] {
+        let n = (2 * m) as usize;
+        // rows[i]: low 32 bits = row i of the map (which index bits feed target bit i),
+        // high 32 bits = row i of the identity, becoming the inverse.
+        let mut rows = [0u64; 32];
+        for c in 0..n as u32 {
+            let x = top(sobol_u32(1 << c, 0), m);
+            let y = top(sobol_u32(1 << c, 1), m);
+            let target = u64::from(x) | (u64::from(y) << m);
+            for (i, row) in rows.iter_mut().enumerate().take(n) {
+                if target >> i & 1 == 1 {
+                    *row |= 1 << c;
+                }
+            }
+        }
+        for (i, row) in rows.iter_mut().enumerate().take(n) {
+            *row |= 1 << (32 + i);
+        }
+        for col in 0..n {
+            // Dimensions 0 and 1 of Sobol form a (0,2)-sequence, so the map is invertible and
+            // a pivot always exists; `unwrap_or` keeps this total regardless.
+            let pivot = (col..n).find(|&r| rows[r] >> col & 1 == 1).unwrap_or(col);
+            rows.swap(col, pivot);
+            for r in 0..n {
+                if r != col && rows[r] >> col & 1 == 1 {
+                    rows[r] ^= rows[col];
+                }
+            }
+        }
+        // Row i of the inverse says which target bits feed low bit i; transpose to columns.
+        let mut inverse = [0u32; 32];
+        for (i, row) in rows.iter().enumerate().take(n) {
+            let inv_row = (row >> 32) as u32;
+            for (r, col) in inverse.iter_mut().enumerate().take(n) {
+                if inv_row >> r & 1 == 1 {
+                    *col |= 1 << i;
+                }
+            }
+        }
+        inverse
+    }
+
+    /// The global Sobol index of sample `sample_index` (modulo spp) of `pixel` (coordinates
+    /// wrap modulo `2^m`).
+    ///
+    /// ```
+    /// use nyquist::sampler::SobolSampler;
+    /// let s = SobolSampler::new([2, 2], 1, 0).unwrap();
+    /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
+    /// all.sort();
+    /// assert_eq!(all, [0, 1, 2, 3]);
+    /// ```
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u32 {
+        let m = self.m;
+        let s = sample_index % self.spp;
+        let high = if 2 * m >= 32 { 0 } else { s << (2 * m) };
+        let mask = if m == 0 { 0 } else { u32::MAX >> (32 - m) };
+        let want = (pixel[0] & mask) | ((pixel[1] & mask) << m);
+        let have = top(sobol_u32(high, 0), m) | (top(sobol_u32(high, 1), m) << m);
+        let mut t = want ^ have;
+        let mut low = 0u32;
+        while t != 0 {
+            low ^= self.inverse[t.trailing_zeros() as usize];
+            t &= t - 1;
+        }
+        high | low
+    }
+
+    #[inline]
+    fn sample(&self, dim: u32) -> f32 {
+        let dim = dim % DIMS;
+        let mut v = sobol_u32(self.index, dim);
+        if dim < 2 {
+            // `m ≤ 16` (checked in `new`): keep the bits below the pixel's.
+            v = (v ^ self.shift[dim as usize]) << self.m;
+        } else if self.seed != 0 {
+            v ^= hash2(self.seed, u64::from(dim)) as u32;
+        }
+        (v >> 8) as f32 * (1.0 / 16_777_216.0)
+    }
+}
+
+impl Sampler for SobolSampler {
+    fn samples_per_pixel(&self) -> u32 {
+        self.spp
+    }
+
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        self.index = self.sequence_index(pixel, sample_index);
+        self.dim = dim;
+    }
+
+    fn get_1d(&mut self) -> f32 {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(1);
+        self.sample(d)
+    }
+
+    fn get_2d(&mut self) -> [f32; 2] {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(2);
+        [self.sample(d), self.sample(d.wrapping_add(1))]
+    }
+
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.dim = self.dim.max(2);
+        [self.sample(0), self.sample(1)]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampler::tests::{consistent_values, is_zero_two_net, threads_agree};
+    use std::vec::Vec;
+
+    #[test]
+    fn sobol_is_consistent_and_thread_independent() {
+        for seed in [0, 9] {
+            let s = SobolSampler::new([40, 30], 16, seed).unwrap();
+            consistent_values(&s);
+            threads_agree(&s);
+        }
+    }
+
+    #[test]
+    fn sobol_pixel_samples_are_nets_for_every_power_of_two_up_to_1024() {
+        for m in 0..=10 {
+            for seed in [0, 5] {
+                let mut s = SobolSampler::new([37, 20], 1 << m, seed).unwrap();
+                for pixel in [[0, 0], [36, 19], [5, 11]] {
+                    let pts: Vec<[f32; 2]> = (0..1u32 << m)
+                        .map(|i| {
+                            s.start_pixel_sample(pixel, i, 0);
+                            s.get_pixel_2d()
+                        })
+                        .collect();
+                    assert!(is_zero_two_net(&pts), "spp 2^{m} seed {seed} {pixel:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn sobol_pixels_own_their_global_points() {
+        // Over a 4 × 4 image, the 4 × 4 × 4 samples are exactly Sobol indices 0..64, and each
+        // sample's film position is the global point scaled by 4.
+        let mut s = SobolSampler::new([4, 4], 4, 0).unwrap();
+        let mut hit = [false; 64];
+        for y in 0..4u32 {
+            for x in 0..4u32 {
+                for i in 0..4 {
+                    let idx = s.sequence_index([x, y], i);
+                    hit[idx as usize] = true;
+                    s.start_pixel_sample([x, y], i, 0);
+                    let [u, v] = s.get_pixel_2d();
+                    let gx = f64::from(sobol_u32(idx, 0)) / 4_294_967_296.0 * 4.0;
+                    let gy = f64::from(sobol_u32(idx, 1)) / 4_294_967_296.0 * 4.0;
+                    assert!((gx - f64::from(x) - f64::from(u)).abs() < 1e-6);
+                    assert!((gy - f64::from(y) - f64::from(v)).abs() < 1e-6);
+                }
+            }
+        }
+        assert!(hit.iter().all(|&b| b));
+    }
+
+    #[test]
+    fn sobol_large_image_limit() {
+        let mut s = SobolSampler::new([16384, 16384], 16, 1).unwrap();
+        let r = crate::sampler::tests::record(&mut s, [16383, 16383], 15);
+        assert!(r.iter().all(|x| (0.0..1.0).contains(x)));
+        assert_eq!(SobolSampler::rounded_spp(3), (4, true));
+    }
+}

@@ -1,0 +1,293 @@
+//! Checks every sampler must pass: ConsistentValues (pbrt-v4), thread independence, range.
+
+use super::*;
+use std::vec::Vec;
+
+/// Values recorded for one pixel sample: camera sample, a few 1D/2D values and two arrays.
+pub(crate) fn record<S: Sampler + ?Sized>(s: &mut S, pixel: [u32; 2], index: u32) -> Vec<f32> {
+    let c = camera_sample(s, pixel, index);
+    let mut v = std::vec![
+        c.p_film[0] - pixel[0] as f32,
+        c.p_film[1] - pixel[1] as f32,
+        c.time,
+        c.lens[0],
+        c.lens[1],
+    ];
+    for _ in 0..3 {
+        v.push(s.get_1d());
+        v.extend_from_slice(&s.get_2d());
+    }
+    let mut a1 = [0.0f32; 5];
+    s.get_array_1d(&mut a1);
+    v.extend_from_slice(&a1);
+    let mut a2 = [0.0f32; 8];
+    s.get_array_2d(&mut a2);
+    v.extend_from_slice(&a2);
+    v.push(s.get_1d());
+    v
+}
+
+fn bits(v: &[f32]) -> Vec<u32> {
+    v.iter().map(|x| x.to_bits()).collect()
+}
+
+const PIXELS: [[u32; 2]; 6] = [[0, 0], [1, 0], [0, 1], [5, 3], [17, 11], [2, 9]];
+
+/// pbrt-v4's ConsistentValues: record, visit other pixels, replay in another order; also checks
+/// every value lies in `[0, 1)`.
+pub(crate) fn consistent_values<S: Sampler + Clone>(sampler: &S) {
+    let mut s = sampler.clone();
+    let spp = s.samples_per_pixel().min(16);
+    let mut first = Vec::new();
+    for &p in &PIXELS {
+        for i in 0..spp {
+            let v = record(&mut s, p, i);
+            for (k, &x) in v.iter().enumerate() {
+                assert!(
+                    (0.0..1.0).contains(&x),
+                    "pixel {p:?} sample {i} value {k}: {x}"
+                );
+            }
+            first.push(bits(&v));
+        }
+    }
+    // Replay in reverse, interleaving visits to unrelated pixels, on a fresh clone.
+    let mut t = sampler.clone();
+    let mut k = first.len();
+    for &p in PIXELS.iter().rev() {
+        for i in (0..spp).rev() {
+            record(&mut t, [p[0] + 100, p[1] + 7], i);
+            k -= 1;
+            assert_eq!(
+                bits(&record(&mut t, p, i)),
+                first[k],
+                "pixel {p:?} sample {i}"
+            );
+        }
+    }
+    // Starting mid-way (at dimension 5) gives the values recorded after the camera sample.
+    let mut u = sampler.clone();
+    u.start_pixel_sample(PIXELS[3], 0, 5);
+    let x = u.get_1d();
+    assert_eq!(x.to_bits(), first[3 * spp as usize][5], "start at dim 5");
+}
+
+/// Same values from one thread and from four.
+pub(crate) fn threads_agree<S: Sampler + Clone + Send + Sync>(sampler: &S) {
+    let spp = sampler.samples_per_pixel().min(8);
+    let pixels: Vec<[u32; 2]> = (0..8).flat_map(|y| (0..8).map(move |x| [x, y])).collect();
+    let mut one = sampler.clone();
+    let serial: Vec<Vec<u32>> = pixels
+        .iter()
+        .flat_map(|&p| (0..spp).map(move |i| (p, i)))
+        .map(|(p, i)| bits(&record(&mut one, p, i)))
+        .collect();
+    let per = pixels.len() / 4;
+    let mut parallel: Vec<Vec<Vec<u32>>> = Vec::new();
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..4)
+            .rev()
+            .map(|t| {
+                let chunk = &pixels[t * per..(t + 1) * per];
+                let mut s = sampler.clone();
+                scope.spawn(move || {
+                    let mut out = Vec::new();
+                    for &p in chunk {
+                        for i in 0..spp {
+                            out.push(bits(&record(&mut s, p, i)));
+                        }
+                    }
+                    out
+                })
+            })
+            .collect();
+        for h in handles {
+            parallel.push(h.join().unwrap());
+        }
+    });
+    parallel.reverse();
+    let parallel: Vec<Vec<u32>> = parallel.into_iter().flatten().collect();
+    assert_eq!(serial, parallel);
+}
+
+/// Fraction of the `n × n` image-sample strata of a pixel hit by its first `n²` samples.
+pub(crate) fn image_strata_hit<S: Sampler>(s: &mut S, pixel: [u32; 2], n: u32) -> usize {
+    let mut seen = std::vec![false; (n * n) as usize];
+    for i in 0..n * n {
+        s.start_pixel_sample(pixel, i, 0);
+        let [x, y] = s.get_pixel_2d();
+        seen[((y * n as f32) as u32 * n + (x * n as f32) as u32) as usize] = true;
+    }
+    seen.iter().filter(|&&b| b).count()
+}
+
+/// Whether `points` (pairs in `[0,1)²`, a power-of-two count `n = 2^m`) has exactly one point
+/// in every elementary interval of area `1/n`: `2^a × 2^(m−a)` grids for every `a`.
+pub(crate) fn is_zero_two_net(points: &[[f32; 2]]) -> bool {
+    let n = points.len();
+    assert!(n.is_power_of_two());
+    let m = n.trailing_zeros();
+    (0..=m).all(|a| {
+        let (nx, ny) = (1u64 << a, 1u64 << (m - a));
+        let mut seen = std::vec![false; n];
+        points.iter().all(|&[x, y]| {
+            let cx = (f64::from(x) * nx as f64) as u64;
+            let cy = (f64::from(y) * ny as f64) as u64;
+            !core::mem::replace(&mut seen[(cy * nx + cx) as usize], true)
+        })
+    })
+}
+
+/// Whether each of `n` strata of every axis of the 1D array / 2D array holds one value.
+pub(crate) fn is_latin(values: &[f32], dims: usize) -> bool {
+    let n = values.len() / dims;
+    (0..dims).all(|d| {
+        let mut seen = std::vec![false; n];
+        values
+            .chunks_exact(dims)
+            .all(|p| !core::mem::replace(&mut seen[(p[d] * n as f32) as usize], true))
+    })
+}
+
+#[test]
+fn random_is_consistent_and_thread_independent() {
+    let s = RandomSampler::new(8, 3).unwrap();
+    consistent_values(&s);
+    threads_agree(&s);
+}
+
+#[test]
+fn random_depends_on_pixel_index_and_seed() {
+    let mut a = RandomSampler::new(8, 3).unwrap();
+    let mut b = RandomSampler::new(8, 4).unwrap();
+    let r = record(&mut a, [1, 1], 0);
+    assert_ne!(r, record(&mut a, [1, 2], 0));
+    assert_ne!(r, record(&mut a, [1, 1], 1));
+    assert_ne!(r, record(&mut b, [1, 1], 0));
+}
+
+#[test]
+fn stratified_and_uniform_are_consistent_and_thread_independent() {
+    for jitter in [Jitter::Jittered, Jitter::Centered] {
+        let s = StratifiedSampler::new(4, 3, jitter, 5).unwrap();
+        consistent_values(&s);
+        threads_agree(&s);
+    }
+}
+
+#[test]
+fn stratified_one_image_sample_per_stratum_per_pixel() {
+    for n in [1u32, 2, 3, 4, 7, 16] {
+        let mut s = StratifiedSampler::new(n, n, Jitter::Jittered, 11).unwrap();
+        for &p in &PIXELS {
+            assert_eq!(
+                image_strata_hit(&mut s, p, n),
+                (n * n) as usize,
+                "n={n} {p:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn stratified_1d_and_2d_dimensions_are_stratified_and_shuffled() {
+    let mut s = StratifiedSampler::new(4, 4, Jitter::Jittered, 2).unwrap();
+    let mut time = Vec::new();
+    let mut lens = Vec::new();
+    let mut image = Vec::new();
+    for i in 0..16 {
+        let c = camera_sample(&mut s, [3, 4], i);
+        time.push(c.time);
+        lens.extend_from_slice(&c.lens);
+        image.push(c.p_film);
+    }
+    assert!(is_latin(&time, 1));
+    let mut seen = [false; 16];
+    for l in lens.chunks_exact(2) {
+        seen[(l[1] * 4.0) as usize * 4 + (l[0] * 4.0) as usize] = true;
+    }
+    assert!(seen.iter().all(|&b| b));
+    // Shuffled: the time stratum is not a function of the image stratum's order.
+    let order: Vec<usize> = time.iter().map(|t| (t * 16.0) as usize).collect();
+    assert_ne!(order, (0..16).collect::<Vec<_>>());
+}
+
+#[test]
+fn stratified_arrays_are_latin_hypercubes_of_any_size() {
+    let mut s = StratifiedSampler::new(2, 2, Jitter::Jittered, 1).unwrap();
+    for n in [1usize, 2, 5, 7, 16, 33] {
+        s.start_pixel_sample([9, 9], 1, 5);
+        let mut a1 = std::vec![0.0f32; n];
+        s.get_array_1d(&mut a1);
+        assert!(is_latin(&a1, 1), "1D n={n}");
+        let mut a2 = std::vec![0.0f32; 2 * n];
+        s.get_array_2d(&mut a2);
+        assert!(is_latin(&a2, 2), "2D n={n}");
+    }
+}
+
+#[test]
+fn uniform_is_cell_centres() {
+    let mut s = StratifiedSampler::uniform(4, 2, 0).unwrap();
+    for i in 0..8 {
+        s.start_pixel_sample([0, 0], i, 0);
+        let [x, y] = s.get_pixel_2d();
+        assert_eq!((x * 4.0).fract(), 0.5);
+        assert_eq!((y * 2.0).fract(), 0.5);
+    }
+}
+
+#[test]
+fn sampler_is_object_safe() {
+    let mut r = RandomSampler::new(4, 0).unwrap();
+    let mut st = StratifiedSampler::new(2, 2, Jitter::Jittered, 0).unwrap();
+    let all: [&mut dyn Sampler; 2] = [&mut r, &mut st];
+    for s in all {
+        let c = camera_sample(s, [1, 2], 0);
+        assert!(c.p_film[0] >= 1.0 && c.p_film[0] < 2.0);
+    }
+}
+
+mod properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    fn all_in_unit<S: Sampler>(s: &mut S, pixel: [u32; 2], index: u32, dim: u32) -> bool {
+        s.start_pixel_sample(pixel, index, dim);
+        let mut v = std::vec![s.get_1d()];
+        v.extend_from_slice(&s.get_2d());
+        v.extend_from_slice(&s.get_pixel_2d());
+        let mut a = [0.0f32; 6];
+        s.get_array_2d(&mut a);
+        v.extend_from_slice(&a);
+        s.get_array_1d(&mut a[..3]);
+        v.extend_from_slice(&a[..3]);
+        v.iter().all(|x| (0.0..1.0).contains(x))
+    }
+
+    proptest! {
+        #[test]
+        fn every_value_is_in_unit_interval(
+            px in any::<u32>(), py in any::<u32>(), index in any::<u32>(),
+            dim in any::<u32>(), seed in any::<u64>(), spp in 1u32..300,
+        ) {
+            let p = [px, py];
+            prop_assert!(all_in_unit(&mut RandomSampler::new(spp, seed).unwrap(), p, index, dim));
+            let side = spp.isqrt().max(1);
+            for j in [Jitter::Jittered, Jitter::Centered] {
+                let mut s = StratifiedSampler::new(side, spp / side, j, seed).unwrap();
+                prop_assert!(all_in_unit(&mut s, p, index, dim));
+            }
+            prop_assert!(all_in_unit(&mut BestCandidateSampler::new(spp, seed).unwrap(), p, index, dim));
+        }
+
+        #[test]
+        fn camera_sample_stays_in_its_pixel(
+            px in any::<u32>(), py in any::<u32>(), index in any::<u32>(), seed in any::<u64>(),
+        ) {
+            let c = camera_sample(&mut RandomSampler::new(4, seed).unwrap(), [px, py], index);
+            prop_assert!(c.p_film[0] >= px as f32 && c.p_film[1] >= py as f32);
+            prop_assert!(c.p_film[0] < px as f32 + 1.0 || c.p_film[0] == px as f32);
+        }
+    }
+}
