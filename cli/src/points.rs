@@ -56,6 +56,9 @@ pub enum Format {
     Svg,
 }
 
+/// Points, their dimension count, and the stratum grid to draw (if any).
+pub type PixelPoints = (Vec<f32>, usize, Option<(u32, u32)>);
+
 /// Arguments of `nyquist points`.
 #[derive(Debug, Args)]
 #[command(after_help = "Example: nyquist points --sampler sobol --count 8 --dims 3")]
@@ -161,7 +164,7 @@ pub fn pixel_mode(args: &PointsArgs) -> bool {
 
 /// The samples of one pixel from a [`nyquist::sampler::Sampler`]: point-major values, their
 /// dimension count and the strata grid to draw (if any).
-pub fn pixel_samples(args: &PointsArgs) -> Result<(Vec<f32>, usize, Option<(u32, u32)>)> {
+pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
     use SamplerName as S;
     use nyquist::sampler::{
         AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
