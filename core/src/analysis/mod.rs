@@ -83,7 +83,7 @@ impl<'a> PointSet<'a> {
         if coords.is_empty() {
             return Err(Error::ZeroSize { what: "points" });
         }
-        if coords.len() % dims != 0 {
+        if !coords.len().is_multiple_of(dims) {
             return Err(Error::BufferLength {
                 multiple_of: dims,
                 actual: coords.len(),

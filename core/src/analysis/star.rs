@@ -352,8 +352,7 @@ pub fn star_discrepancy_bounds(
         closed[ic] += 1;
     }
     // Inclusive prefix sums along every axis: count at g = points binned at or below g.
-    for k in 0..d {
-        let st = stride[k];
+    for &st in &stride[..d] {
         for flat in 0..cells {
             if (flat / st) % side != 0 {
                 open[flat] += open[flat - st];
@@ -364,8 +363,8 @@ pub fn star_discrepancy_bounds(
     let inv_n = 1.0 / points.len() as f64;
     let volume = |flat: usize| {
         let mut v = 1.0;
-        for k in 0..d {
-            v *= grid((flat / stride[k]) % side);
+        for &st in &stride[..d] {
+            v *= grid((flat / st) % side);
         }
         v
     };
