@@ -243,3 +243,169 @@ pub fn min_distance(
         relative_radius: rho(d),
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::testsets::random;
+    use proptest::prelude::*;
+    use std::vec;
+    use std::vec::Vec;
+
+    fn grid_min(pts: &[f64], t: Topology) -> MinDistance {
+        let set = PointSet::new(pts, 2).unwrap();
+        let mut s = vec![0u32; min_distance_scratch_len(set.len()).unwrap()];
+        min_distance(&set, t, &mut s).unwrap()
+    }
+
+    fn brute(pts: &[f64], t: Topology) -> f64 {
+        let n = pts.len() / 2;
+        let mut best = f64::INFINITY;
+        for i in 0..n {
+            for j in i + 1..n {
+                let mut dx = (pts[2 * i] - pts[2 * j]).abs();
+                let mut dy = (pts[2 * i + 1] - pts[2 * j + 1]).abs();
+                if t == Topology::Torus {
+                    dx = dx.min(1.0 - dx);
+                    dy = dy.min(1.0 - dy);
+                }
+                best = best.min((dx * dx + dy * dy).sqrt());
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn grid_search_matches_brute_force() {
+        for seed in 0..200u64 {
+            let n = 2 + (seed as usize * 13) % 300;
+            let mut pts = random(n, 2, seed);
+            let mut rng = crate::rng::default_rng(seed ^ 0xabc);
+            match seed % 4 {
+                // a duplicate pair
+                0 => {
+                    let j = crate::rng::uniform_below(&mut rng, n as u32 - 1) as usize;
+                    pts[2 * n - 2] = pts[2 * j];
+                    pts[2 * n - 1] = pts[2 * j + 1];
+                }
+                // boundary values, some meeting across the torus edge
+                1 => {
+                    for v in pts.iter_mut().step_by(3) {
+                        *v = if crate::rng::uniform_below(&mut rng, 2) == 0 {
+                            0.0
+                        } else {
+                            1.0
+                        };
+                    }
+                }
+                // a tight cluster plus a few far points
+                2 => {
+                    for v in pts.iter_mut().skip(6) {
+                        *v = 0.3 + *v * 1e-3;
+                    }
+                }
+                _ => {}
+            }
+            for t in [Topology::Square, Topology::Torus] {
+                let g = grid_min(&pts, t);
+                let b = brute(&pts, t);
+                assert_eq!(g.distance, b, "seed {seed} n {n} {t:?}");
+                let hex = (2.0 / (3f64.sqrt() * n as f64)).sqrt();
+                assert!((g.relative_radius - b / hex).abs() < 1e-12);
+            }
+        }
+    }
+
+    #[test]
+    fn regular_grid_has_known_relative_radius() {
+        // k×k cell centres: d_min = 1/k, so ρ = √(√3/2) ≈ 0.9306 (square and torus alike).
+        for k in [2usize, 7, 32, 100] {
+            let pts: Vec<f64> = (0..k * k)
+                .flat_map(|i| {
+                    [
+                        ((i % k) as f64 + 0.5) / k as f64,
+                        ((i / k) as f64 + 0.5) / k as f64,
+                    ]
+                })
+                .collect();
+            for t in [Topology::Square, Topology::Torus] {
+                let r = grid_min(&pts, t);
+                assert!((r.distance - 1.0 / k as f64).abs() < 1e-12);
+                assert!((r.relative_radius - (3f64.sqrt() / 2.0).sqrt()).abs() < 1e-9);
+            }
+        }
+        // A hexagonal lattice, columns a apart, rows a·√3/2 apart, odd rows shifted by a/2:
+        // ρ ≈ 1 up to the fit of the lattice in the square (here ρ ≈ 0.987).
+        let (cols, rows) = (16usize, 18usize);
+        let a = 1.0 / cols as f64;
+        let h = a * 3f64.sqrt() / 2.0;
+        let pts: Vec<f64> = (0..rows * cols)
+            .flat_map(|i| {
+                let (r, c) = (i / cols, i % cols);
+                let shift = if r % 2 == 1 { 0.5 * a } else { 0.0 };
+                [c as f64 * a + shift, r as f64 * h]
+            })
+            .collect();
+        let r = grid_min(&pts, Topology::Square);
+        assert!((r.distance - a).abs() < 1e-12);
+        // N = 288, d_hex = √(2/(√3·288)); ρ = a / d_hex.
+        let expected = a / (2.0 / (3f64.sqrt() * 288.0)).sqrt();
+        assert!((r.relative_radius - expected).abs() < 1e-12 && expected > 0.98);
+    }
+
+    #[test]
+    fn single_points_duplicates_and_lines() {
+        let one = grid_min(&[0.3, 0.3], Topology::Square);
+        assert_eq!(one.distance, core::f64::consts::SQRT_2);
+        let dup = grid_min(&[0.5, 0.5, 0.2, 0.1, 0.5, 0.5], Topology::Torus);
+        assert_eq!((dup.distance, dup.relative_radius), (0.0, 0.0));
+        let same = [0.25; 200];
+        assert_eq!(grid_min(&same, Topology::Square).distance, 0.0);
+        // All on a vertical line: the grid degenerates to one column.
+        let line: Vec<f64> = (0..50).flat_map(|i| [0.5, f64::from(i) / 49.0]).collect();
+        assert!((grid_min(&line, Topology::Square).distance - 1.0 / 49.0).abs() < 1e-15);
+        // 0 and 1 are the same point on the torus.
+        assert_eq!(
+            grid_min(&[0.0, 0.5, 1.0, 0.5], Topology::Torus).distance,
+            0.0
+        );
+        assert_eq!(
+            grid_min(&[0.0, 0.5, 1.0, 0.5], Topology::Square).distance,
+            1.0
+        );
+    }
+
+    #[test]
+    fn errors_are_typed() {
+        let set = PointSet::new(&[0.5, 0.5, 0.25, 0.75], 2).unwrap();
+        let mut s = [0u32; 4];
+        assert_eq!(
+            min_distance(&set, Topology::Square, &mut s),
+            Err(Error::BufferTooShort {
+                needed: 5,
+                actual: 4
+            })
+        );
+        let set3 = PointSet::new(&[0.5; 3], 3).unwrap();
+        assert_eq!(
+            min_distance(&set3, Topology::Square, &mut [0u32; 8]),
+            Err(Error::OutOfRange { what: "dims" })
+        );
+    }
+
+    proptest! {
+        #[test]
+        fn any_set_matches_brute_force(
+            raw in proptest::collection::vec(
+                prop_oneof![Just(0.0f64), Just(1.0f64), Just(0.5f64), 0.0f64..=1.0, 0.49f64..0.51], 4..120),
+        ) {
+            let n = raw.len() / 2;
+            let pts = &raw[..2 * n];
+            for t in [Topology::Square, Topology::Torus] {
+                let g = grid_min(pts, t);
+                prop_assert_eq!(g.distance, brute(pts, t));
+                prop_assert!(g.relative_radius.is_finite() && g.relative_radius >= 0.0);
+            }
+        }
+    }
+}
