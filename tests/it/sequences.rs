@@ -12,10 +12,19 @@ fn all_sets() -> Vec<(&'static str, Box<dyn Sequence>)> {
     vec![
         ("vdc", Box::new(VanDerCorput)),
         ("halton", Box::new(Halton::new(1024).unwrap())),
-        ("halton-zaremba", Box::new(HaltonZaremba::new(1024).unwrap())),
-        ("scrambled-halton", Box::new(ScrambledHalton::new(1024, 9).unwrap())),
+        (
+            "halton-zaremba",
+            Box::new(HaltonZaremba::new(1024).unwrap()),
+        ),
+        (
+            "scrambled-halton",
+            Box::new(ScrambledHalton::new(1024, 9).unwrap()),
+        ),
         ("hammersley", Box::new(Hammersley::new(1000, 1025).unwrap())),
-        ("hammersley-zaremba", Box::new(HammersleyZaremba::new(1000, 1025).unwrap())),
+        (
+            "hammersley-zaremba",
+            Box::new(HammersleyZaremba::new(1000, 1025).unwrap()),
+        ),
         ("sobol", Box::new(Sobol::new(1024).unwrap())),
         ("zero-two", Box::new(ZeroTwo::from_seed(5))),
     ]
@@ -75,7 +84,11 @@ fn sobol_and_zero_two_are_0_2_nets_for_every_power_of_two() {
             let pts: Vec<(f64, f64)> = (0..n)
                 .map(|i| (z.sample_f64(i, 0), z.sample_f64(i, 1)))
                 .collect();
-            assert_eq!(elementary_intervals(&pts, m), Ok(()), "zero-two seed={seed} m={m}");
+            assert_eq!(
+                elementary_intervals(&pts, m),
+                Ok(()),
+                "zero-two seed={seed} m={m}"
+            );
         }
     }
 }
@@ -84,7 +97,9 @@ fn sobol_and_zero_two_are_0_2_nets_for_every_power_of_two() {
 fn halton_and_zaremba_differ_but_both_stratify_base_2() {
     let h = Halton::new(2).unwrap();
     let z = HaltonZaremba::new(2).unwrap();
-    let differ = (0..64).filter(|&i| h.sample(i, 1) != z.sample(i, 1)).count();
+    let differ = (0..64)
+        .filter(|&i| h.sample(i, 1) != z.sample(i, 1))
+        .count();
     assert!(differ > 32);
     // The first 2^m points of any base-2 digit-wise form hit every 1/2^m stratum once.
     for set in [&h as &dyn Sequence, &z] {

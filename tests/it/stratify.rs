@@ -74,6 +74,9 @@ fn shuffle_of_three_gives_all_six_orders_uniformly() {
         *counts.entry(v).or_insert(0u32) += 1;
     }
     assert_eq!(counts.len(), 6);
-    let chi: f64 = counts.values().map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0).sum();
+    let chi: f64 = counts
+        .values()
+        .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
+        .sum();
     assert!(chi < 20.5, "chi2 = {chi}");
 }

@@ -295,7 +295,7 @@ mod tests {
             pts.resize(n * dims, 1.0);
             let s = set(&pts, dims);
             for v in [l2_star_discrepancy(&s), centered_l2_discrepancy(&s), wraparound_l2_discrepancy(&s)] {
-                prop_assert!(v.is_finite() && v >= 0.0 && v <= 2.0);
+                prop_assert!(v.is_finite() && (0.0..=2.0).contains(&v));
             }
         }
     }
