@@ -3,7 +3,7 @@
 //! `N` points in the unit square (Lagae & Dutré, "A comparison of methods for generating Poisson
 //! disk distributions", CGF 2008).
 //!
-//! Method: a counting sort of the point indices into a uniform grid of about `N/2` cells
+//! Method: a counting sort of the coordinates into a uniform grid of about `N/2` cells
 //! (caller scratch), then for each point a search over rings of cells that stops as soon as the
 //! next ring is farther than the best distance so far. For well-spread sets that is O(N).
 //! Duplicates end the search at once (distance 0). A set crowded into very few cells (a tight
@@ -32,14 +32,15 @@ pub struct MinDistance {
     pub relative_radius: f64,
 }
 
-/// `u32` scratch needed by [`min_distance`] for `n` points: `2n + 1` (`n` indices and up to
-/// `n + 1` cell offsets), or `None` on overflow.
+/// `u64` scratch needed by [`min_distance`] for `n` points: `3n + 1` (the coordinates
+/// reordered by cell, stored as `f64` bits, and up to `n + 1` cell offsets), or `None` on
+/// overflow.
 ///
 /// ```
-/// assert_eq!(nyquist::analysis::min_distance_scratch_len(100), Some(201));
+/// assert_eq!(nyquist::analysis::min_distance_scratch_len(100), Some(301));
 /// ```
 pub fn min_distance_scratch_len(n: usize) -> Option<usize> {
-    n.checked_mul(2)?.checked_add(1)
+    n.checked_mul(3)?.checked_add(1)
 }
 
 /// Grid geometry shared by binning and search.
@@ -129,7 +130,7 @@ impl Grid {
 /// use nyquist::analysis::{min_distance, PointSet, Topology};
 /// let pts = [[0.05, 0.5], [0.95, 0.5], [0.5, 0.5]];
 /// let set = PointSet::from_2d(&pts).unwrap();
-/// let mut s = [0u32; 7];
+/// let mut s = [0u64; 10];
 /// let sq = min_distance(&set, Topology::Square, &mut s).unwrap();
 /// let torus = min_distance(&set, Topology::Torus, &mut s).unwrap();
 /// assert!((sq.distance - 0.45).abs() < 1e-12);
@@ -138,7 +139,7 @@ impl Grid {
 pub fn min_distance(
     points: &PointSet<'_>,
     topology: Topology,
-    scratch: &mut [u32],
+    scratch: &mut [u64],
 ) -> Result<MinDistance, Error> {
     if points.dims() != 2 {
         return Err(Error::OutOfRange { what: "dims" });
@@ -160,26 +161,36 @@ pub fn min_distance(
     let grid = Grid::new(points, topology);
     let [gx, gy] = grid.cells;
     let cells = gx * gy;
-    let (index, rest) = buf.split_at_mut(n);
+    let (sorted, rest) = buf.split_at_mut(2 * n);
     let start = &mut rest[..cells + 1];
-    let coords = points.coords();
-    // Counting sort: start[c] becomes the first slot of cell c, start[cells] = n.
+    // Counting sort of the coordinates by cell (raster order): afterwards cell c holds the
+    // points in slots start[c]..start[c + 1], so neighbours are contiguous in memory.
     start.fill(0);
-    for p in coords.chunks_exact(2) {
+    for p in points.coords().chunks_exact(2) {
         let [cx, cy] = grid.cell(p);
         start[cy * gx + cx] += 1;
     }
-    let mut sum = 0u32;
+    let mut sum = 0u64;
     for s in start.iter_mut() {
         sum += *s;
         *s = sum;
     }
-    for (i, p) in coords.chunks_exact(2).enumerate().rev() {
+    for p in points.coords().chunks_exact(2).rev() {
         let [cx, cy] = grid.cell(p);
         let c = cy * gx + cx;
         start[c] -= 1;
-        index[start[c] as usize] = i as u32;
+        let at = 2 * start[c] as usize;
+        sorted[at] = p[0].to_bits();
+        sorted[at + 1] = p[1].to_bits();
     }
+    let start = &*start;
+    let sorted = &*sorted;
+    let at = |slot: usize| {
+        [
+            f64::from_bits(sorted[2 * slot]),
+            f64::from_bits(sorted[2 * slot + 1]),
+        ]
+    };
     let (cw, ch) = (grid.extent[0] / gx as f64, grid.extent[1] / gy as f64);
     let ring_gap = match (gx > 1, gy > 1) {
         (true, true) => cw.min(ch),
@@ -192,38 +203,43 @@ pub fn min_distance(
     } else {
         gx.max(gy)
     };
+    let (gxi, gyi) = (gx as isize, gy as isize);
     let mut best2 = f64::INFINITY;
     for c in 0..cells {
         let (cx, cy) = ((c % gx) as isize, (c / gx) as isize);
-        for slot in start[c]..start[c + 1] {
-            let i = index[slot as usize] as usize;
-            let p = &coords[2 * i..2 * i + 2];
+        for i in start[c] as usize..start[c + 1] as usize {
+            let p = at(i);
             let mut r = 0isize;
             loop {
                 for dy in -r..=r {
-                    let edge = dy.abs() == r;
-                    let step = if edge || r == 0 { 1 } else { 2 * r as usize };
-                    for dx in (-r..=r).step_by(step.max(1)) {
+                    let step = if dy.abs() == r || r == 0 {
+                        1
+                    } else {
+                        2 * r as usize
+                    };
+                    for dx in (-r..=r).step_by(step) {
                         let (mut x, mut y) = (cx + dx, cy + dy);
                         if grid.wrap {
-                            x = x.rem_euclid(gx as isize);
-                            y = y.rem_euclid(gy as isize);
-                        } else if x < 0 || y < 0 || x >= gx as isize || y >= gy as isize {
+                            x = x.rem_euclid(gxi);
+                            y = y.rem_euclid(gyi);
+                        } else if x < 0 || y < 0 || x >= gxi || y >= gyi {
                             continue;
                         }
                         let cc = y as usize * gx + x as usize;
-                        for &j in &index[start[cc] as usize..start[cc + 1] as usize] {
-                            let j = j as usize;
-                            if j > i {
-                                let d2 = grid.dist2(p, &coords[2 * j..2 * j + 2]);
-                                if d2 < best2 {
-                                    best2 = d2;
-                                    if d2 == 0.0 {
-                                        return Ok(MinDistance {
-                                            distance: 0.0,
-                                            relative_radius: 0.0,
-                                        });
-                                    }
+                        // Each pair once: only slots after i (earlier cells come first).
+                        if cc < c {
+                            continue;
+                        }
+                        let from = (start[cc] as usize).max(i + 1);
+                        for j in from..start[cc + 1] as usize {
+                            let d2 = grid.dist2(&p, &at(j));
+                            if d2 < best2 {
+                                best2 = d2;
+                                if d2 == 0.0 {
+                                    return Ok(MinDistance {
+                                        distance: 0.0,
+                                        relative_radius: 0.0,
+                                    });
                                 }
                             }
                         }
@@ -254,7 +270,7 @@ mod tests {
 
     fn grid_min(pts: &[f64], t: Topology) -> MinDistance {
         let set = PointSet::new(pts, 2).unwrap();
-        let mut s = vec![0u32; min_distance_scratch_len(set.len()).unwrap()];
+        let mut s = vec![0u64; min_distance_scratch_len(set.len()).unwrap()];
         min_distance(&set, t, &mut s).unwrap()
     }
 
@@ -378,17 +394,17 @@ mod tests {
     #[test]
     fn errors_are_typed() {
         let set = PointSet::new(&[0.5, 0.5, 0.25, 0.75], 2).unwrap();
-        let mut s = [0u32; 4];
+        let mut s = [0u64; 6];
         assert_eq!(
             min_distance(&set, Topology::Square, &mut s),
             Err(Error::BufferTooShort {
-                needed: 5,
-                actual: 4
+                needed: 7,
+                actual: 6
             })
         );
         let set3 = PointSet::new(&[0.5; 3], 3).unwrap();
         assert_eq!(
-            min_distance(&set3, Topology::Square, &mut [0u32; 8]),
+            min_distance(&set3, Topology::Square, &mut [0u64; 16]),
             Err(Error::OutOfRange { what: "dims" })
         );
     }
