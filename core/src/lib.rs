@@ -38,6 +38,7 @@
 #[cfg(test)]
 extern crate std;
 
+pub mod analysis;
 pub mod error;
 pub mod filter;
 pub mod hash;

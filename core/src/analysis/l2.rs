@@ -1,0 +1,330 @@
+//! L2 discrepancies by their closed forms, O(d·N²) time, no scratch.
+//!
+//! - L2-star (Warnock 1972):
+//!   `T² = 3^−d − (2^{1−d}/N) Σ_i Π_k (1 − x_ik²) + (1/N²) Σ_i Σ_j Π_k (1 − max(x_ik, x_jk))`.
+//! - Centered L2 (Hickernell 1998, eq. 5.1c):
+//!   `CD² = (13/12)^d − (2/N) Σ_i Π_k (1 + ½|x_ik − ½| − ½|x_ik − ½|²)
+//!   + (1/N²) Σ_i Σ_j Π_k (1 + ½|x_ik − ½| + ½|x_jk − ½| − ½|x_ik − x_jk|)`.
+//! - Wrap-around L2 (Hickernell 1998, eq. 5.1d):
+//!   `WD² = −(4/3)^d + (1/N²) Σ_i Σ_j Π_k (3/2 − |x_ik − x_jk| (1 − |x_ik − x_jk|))`.
+//!
+//! The double sums use the symmetry of the kernel (diagonal once, each pair twice). The result is
+//! the square root of the formula, clamped at 0 against rounding.
+
+use super::PointSet;
+use crate::math::{pow, sqrt};
+
+/// `Σ_i Σ_j K(x_i, x_j)` for a symmetric kernel: each row summed in four lanes (less rounding,
+/// and the lanes vectorise), the rows added with Neumaier's compensated summation. The result
+/// is a small difference of O(1) terms, so summation error would otherwise dominate for large N.
+/// Dimensions 1–4 get a copy with the dimension fixed at compile time (unrolled kernels).
+#[inline]
+fn double_sum(points: &PointSet<'_>, kernel: impl Fn(&[f64], &[f64]) -> f64) -> f64 {
+    let c = points.coords();
+    match points.dims() {
+        1 => double_sum_fixed::<1>(c, &kernel),
+        2 => double_sum_fixed::<2>(c, &kernel),
+        3 => double_sum_fixed::<3>(c, &kernel),
+        4 => double_sum_fixed::<4>(c, &kernel),
+        d => {
+            let mut total = Neumaier::default();
+            for (i, p) in c.chunks_exact(d).enumerate() {
+                let mut row = 0.0;
+                for q in c[(i + 1) * d..].chunks_exact(d) {
+                    row += kernel(p, q);
+                }
+                total.add(2.0 * row);
+                total.add(kernel(p, p));
+            }
+            total.sum()
+        }
+    }
+}
+
+#[inline(always)]
+fn double_sum_fixed<const D: usize>(c: &[f64], kernel: &impl Fn(&[f64], &[f64]) -> f64) -> f64 {
+    let (pts, _) = c.as_chunks::<D>();
+    let mut total = Neumaier::default();
+    for (i, p) in pts.iter().enumerate() {
+        let mut lanes = [0.0f64; 4];
+        let (quads, tail) = pts[i + 1..].as_chunks::<4>();
+        for quad in quads {
+            for (lane, q) in lanes.iter_mut().zip(quad) {
+                *lane += kernel(p, q);
+            }
+        }
+        for q in tail {
+            lanes[0] += kernel(p, q);
+        }
+        let row = (lanes[0] + lanes[1]) + (lanes[2] + lanes[3]);
+        total.add(2.0 * row);
+        total.add(kernel(p, p));
+    }
+    total.sum()
+}
+
+/// `max(a, b)` for non-NaN inputs, written so it vectorises (`f64::max` carries NaN rules).
+#[inline(always)]
+fn max2(a: f64, b: f64) -> f64 {
+    if a > b { a } else { b }
+}
+
+/// Neumaier's improved Kahan summation.
+#[derive(Default)]
+struct Neumaier {
+    sum: f64,
+    carry: f64,
+}
+
+impl Neumaier {
+    #[inline]
+    fn add(&mut self, x: f64) {
+        let t = self.sum + x;
+        if self.sum.abs() >= x.abs() {
+            self.carry += (self.sum - t) + x;
+        } else {
+            self.carry += (x - t) + self.sum;
+        }
+        self.sum = t;
+    }
+
+    #[inline]
+    fn sum(&self) -> f64 {
+        self.sum + self.carry
+    }
+}
+
+/// `Σ_i f(x_i)`, compensated.
+#[inline]
+fn single_sum(points: &PointSet<'_>, f: impl Fn(&[f64]) -> f64) -> f64 {
+    let mut total = Neumaier::default();
+    for p in points.coords().chunks_exact(points.dims()) {
+        total.add(f(p));
+    }
+    total.sum()
+}
+
+/// L2-star discrepancy `T_N` by Warnock's formula (module docs). O(d·N²); allocates: no.
+/// `N·T_N` for the van der Corput set of `N = 2^m` points is `1/√3`.
+///
+/// ```
+/// use nyquist::analysis::{l2_star_discrepancy, PointSet};
+/// // One point at the origin: T² = 1/3 − 1 + 1.
+/// let t = l2_star_discrepancy(&PointSet::new(&[0.0], 1).unwrap());
+/// assert!((t - (1.0f64 / 3.0).sqrt()).abs() < 1e-15);
+/// ```
+pub fn l2_star_discrepancy(points: &PointSet<'_>) -> f64 {
+    let d = points.dims() as f64;
+    let n = points.len() as f64;
+    let single = single_sum(points, |p| p.iter().map(|&x| 1.0 - x * x).product());
+    let pairs = double_sum(points, |p, q| {
+        p.iter().zip(q).map(|(&a, &b)| 1.0 - max2(a, b)).product()
+    });
+    let t2 = pow(3.0, -d) - pow(2.0, 1.0 - d) / n * single + pairs / (n * n);
+    sqrt(t2.max(0.0))
+}
+
+/// Centered L2 discrepancy (Hickernell 1998; module docs): invariant under reflections
+/// `x_k → 1 − x_k`. O(d·N²); allocates: no.
+///
+/// ```
+/// use nyquist::analysis::{centered_l2_discrepancy, PointSet};
+/// let a = centered_l2_discrepancy(&PointSet::new(&[0.1, 0.7], 1).unwrap());
+/// let b = centered_l2_discrepancy(&PointSet::new(&[0.9, 0.3], 1).unwrap());
+/// assert!((a - b).abs() < 1e-15);
+/// ```
+pub fn centered_l2_discrepancy(points: &PointSet<'_>) -> f64 {
+    let d = points.dims() as f64;
+    let n = points.len() as f64;
+    let single = single_sum(points, |p| {
+        p.iter()
+            .map(|&x| {
+                let a = (x - 0.5).abs();
+                1.0 + 0.5 * a - 0.5 * a * a
+            })
+            .product()
+    });
+    let pairs = double_sum(points, |p, q| {
+        p.iter()
+            .zip(q)
+            .map(|(&a, &b)| {
+                1.0 + 0.5 * (a - 0.5).abs() + 0.5 * (b - 0.5).abs() - 0.5 * (a - b).abs()
+            })
+            .product()
+    });
+    let c2 = pow(13.0 / 12.0, d) - 2.0 / n * single + pairs / (n * n);
+    sqrt(c2.max(0.0))
+}
+
+/// Wrap-around L2 discrepancy (Hickernell 1998; module docs): invariant under toroidal shifts.
+/// O(d·N²); allocates: no.
+///
+/// ```
+/// use nyquist::analysis::{wraparound_l2_discrepancy, PointSet};
+/// // Evenly spaced points on the circle have the least wrap-around discrepancy, wherever they start.
+/// let a = wraparound_l2_discrepancy(&PointSet::new(&[0.0, 0.5], 1).unwrap());
+/// let b = wraparound_l2_discrepancy(&PointSet::new(&[0.3, 0.8], 1).unwrap());
+/// assert!((a - b).abs() < 1e-15);
+/// ```
+pub fn wraparound_l2_discrepancy(points: &PointSet<'_>) -> f64 {
+    let d = points.dims() as f64;
+    let n = points.len() as f64;
+    let pairs = double_sum(points, |p, q| {
+        p.iter()
+            .zip(q)
+            .map(|(&a, &b)| {
+                let t = (a - b).abs();
+                1.5 - t * (1.0 - t)
+            })
+            .product()
+    });
+    let w2 = -pow(4.0 / 3.0, d) + pairs / (n * n);
+    sqrt(w2.max(0.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::testsets::{hammersley, random, van_der_corput};
+    use proptest::prelude::*;
+    use std::vec::Vec;
+
+    fn set(c: &[f64], d: usize) -> PointSet<'_> {
+        PointSet::new(c, d).unwrap()
+    }
+
+    #[test]
+    fn van_der_corput_l2_star_is_one_over_sqrt3_n() {
+        for m in 0..=12u32 {
+            let n = 1u32 << m;
+            let t = l2_star_discrepancy(&set(&van_der_corput(n), 1));
+            let expected = 1.0 / (3f64.sqrt() * f64::from(n));
+            assert!((t - expected).abs() < 1e-9 * expected, "m = {m}: {t}");
+        }
+    }
+
+    #[test]
+    fn hammersley_l2_star_matches_closed_form() {
+        for m in 1..=12i32 {
+            let n = f64::from(1u32 << m);
+            let mf = f64::from(m);
+            let expected = mf * mf / 64.0 + 29.0 * mf / 192.0 + 3.0 / 8.0 - mf / 2f64.powi(m + 4)
+                + 1.0 / 2f64.powi(m + 2)
+                - 1.0 / (72.0 * 4f64.powi(m));
+            let t = l2_star_discrepancy(&set(&hammersley(1 << m), 2));
+            let got = (n * t).powi(2);
+            assert!(
+                (got - expected).abs() < 1e-9 * expected,
+                "m = {m}: {got} vs {expected}"
+            );
+        }
+    }
+
+    #[test]
+    fn l2_star_in_1d_matches_the_sorted_closed_form() {
+        // T² = 1/(12N²) + (1/N) Σ (x_(i) − (2i−1)/(2N))² (Niederreiter 1992, Thm. 2.14).
+        for seed in 0..20 {
+            let n = 1 + seed * 5;
+            let mut xs = random(n, 1, seed as u64);
+            let t = l2_star_discrepancy(&set(&xs, 1));
+            xs.sort_by(f64::total_cmp);
+            let nf = n as f64;
+            let s: f64 = xs
+                .iter()
+                .enumerate()
+                .map(|(i, &x)| (x - (2 * i + 1) as f64 / (2.0 * nf)).powi(2))
+                .sum();
+            let expected = (1.0 / (12.0 * nf * nf) + s / nf).sqrt();
+            assert!((t - expected).abs() < 1e-12, "{t} vs {expected}");
+        }
+    }
+
+    #[test]
+    fn random_sets_average_the_expected_squared_l2_star() {
+        // E[T²] = (2^−d − 3^−d)/N for N independent uniform points.
+        const SETS: usize = 2000;
+        const N: usize = 32;
+        for d in 1..=4usize {
+            let samples: Vec<f64> = (0..SETS)
+                .map(|s| {
+                    let pts = random(N, d, (d * 100_000 + s) as u64);
+                    l2_star_discrepancy(&set(&pts, d)).powi(2)
+                })
+                .collect();
+            let mean = samples.iter().sum::<f64>() / SETS as f64;
+            let var = samples.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (SETS - 1) as f64;
+            let se = (var / SETS as f64).sqrt();
+            let expected = (0.5f64.powi(d as i32) - (1.0 / 3.0f64).powi(d as i32)) / N as f64;
+            assert!(
+                (mean - expected).abs() < 3.0 * se,
+                "d {d}: {mean} vs {expected} ± {se}"
+            );
+        }
+    }
+
+    #[test]
+    fn centered_l2_matches_scipy_example() {
+        // scipy.stats.qmc.discrepancy docs: the 6-point design [[1,3],[2,6],[3,2],[4,5],[5,1],
+        // [6,4]] scaled from [0.5, 6.5]² gives CD² = 0.008142039609053464.
+        let raw = [
+            [1.0, 3.0],
+            [2.0, 6.0],
+            [3.0, 2.0],
+            [4.0, 5.0],
+            [5.0, 1.0],
+            [6.0, 4.0],
+        ];
+        let pts: Vec<f64> = raw
+            .iter()
+            .flat_map(|p| p.map(|v: f64| (v - 0.5) / 6.0))
+            .collect();
+        let cd = centered_l2_discrepancy(&set(&pts, 2));
+        assert!(
+            (cd * cd - 0.008142039609053464).abs() < 1e-15,
+            "{}",
+            cd * cd
+        );
+    }
+
+    #[test]
+    fn wraparound_is_shift_invariant_and_centered_reflection_invariant() {
+        for seed in 0..10u64 {
+            let pts = random(25, 3, seed);
+            let shifted: Vec<f64> = pts.iter().map(|&x| (x + 0.37) % 1.0).collect();
+            let reflected: Vec<f64> = pts.iter().map(|&x| 1.0 - x).collect();
+            let (w, ws) = (
+                wraparound_l2_discrepancy(&set(&pts, 3)),
+                wraparound_l2_discrepancy(&set(&shifted, 3)),
+            );
+            assert!((w - ws).abs() < 1e-12);
+            let (c, cr) = (
+                centered_l2_discrepancy(&set(&pts, 3)),
+                centered_l2_discrepancy(&set(&reflected, 3)),
+            );
+            assert!((c - cr).abs() < 1e-12);
+            // L2-star is not reflection invariant: the check is not vacuous.
+            assert!(
+                (l2_star_discrepancy(&set(&pts, 3)) - l2_star_discrepancy(&set(&reflected, 3)))
+                    .abs()
+                    > 1e-6
+            );
+        }
+    }
+
+    proptest! {
+        #[test]
+        fn l2_measures_are_finite_and_nonnegative(
+            dims in 1usize..5,
+            raw in proptest::collection::vec(
+                prop_oneof![Just(0.0f64), Just(1.0f64), 0.0f64..=1.0], 1..40),
+        ) {
+            let n = (raw.len() / dims).max(1);
+            let mut pts = raw.clone();
+            pts.resize(n * dims, 1.0);
+            let s = set(&pts, dims);
+            for v in [l2_star_discrepancy(&s), centered_l2_discrepancy(&s), wraparound_l2_discrepancy(&s)] {
+                prop_assert!(v.is_finite() && (0.0..=2.0).contains(&v));
+            }
+        }
+    }
+}

@@ -1,0 +1,656 @@
+//! Star discrepancy: exact in 1D (sorting), exact in 2D (an O(N²) sweep), exact in d dimensions
+//! by enumerating critical boxes (small sets), and a grid bracket `[lower, upper]` for the rest.
+//!
+//! All exact methods evaluate the local discrepancy on the critical grid
+//! `Γ̄ = ∏_k ({x_ik} ∪ {1})`: the open-box deficit `λ([0,q)) − A([0,q))/N` and the closed-box
+//! excess `A([0,q])/N − λ([0,q])`. Their maximum is `D*_N` (Niederreiter 1992, §2.1;
+//! Gnewuch, Srivastav & Winzen 2009, Lemma 1).
+
+use super::{PointSet, check_scratch};
+use crate::Error;
+
+/// Most dimensions [`star_discrepancy_enumerate`] and [`star_discrepancy_bounds`] accept.
+pub const MAX_DIMS: usize = 32;
+
+/// Work limit of [`star_discrepancy_enumerate`]: the estimated cost
+/// `d · N · ∏_{k<d−1} (distinct values on axis k + 1)` must not exceed it (about a few seconds).
+pub const ENUMERATION_LIMIT: u64 = 1 << 32;
+
+/// `f64` scratch that every exact star-discrepancy function accepts for `n` points in `dims`
+/// dimensions, `2n + (dims − 1)(n + 1)`, or `None` on overflow or `dims == 0`. (The 1D and 2D
+/// functions need only `n` and `3n`.)
+///
+/// ```
+/// use nyquist::analysis::star_discrepancy_scratch_len;
+/// assert_eq!(star_discrepancy_scratch_len(10, 1), Some(20));
+/// assert_eq!(star_discrepancy_scratch_len(10, 2), Some(31));
+/// assert_eq!(star_discrepancy_scratch_len(10, 3), Some(42));
+/// ```
+pub fn star_discrepancy_scratch_len(n: usize, dims: usize) -> Option<usize> {
+    let extra = dims.checked_sub(1)?.checked_mul(n.checked_add(1)?)?;
+    n.checked_mul(2)?.checked_add(extra)
+}
+
+/// Exact star discrepancy `D*_N`, choosing the method by dimension: [`star_discrepancy_1d`],
+/// [`star_discrepancy_2d`] or [`star_discrepancy_enumerate`]. Result in `[0, 1]`.
+/// Allocates: no.
+///
+/// # Errors
+/// [`Error::BufferTooShort`] if `scratch` is shorter than [`star_discrepancy_scratch_len`];
+/// [`Error::TooMany`] when enumeration (3 or more dimensions) would exceed
+/// [`ENUMERATION_LIMIT`] — use [`star_discrepancy_bounds`] then.
+///
+/// ```
+/// use nyquist::analysis::{star_discrepancy, PointSet};
+/// let pts = [[0.25, 0.25], [0.75, 0.75]];
+/// let mut scratch = [0.0; 6];
+/// let d = star_discrepancy(&PointSet::from_2d(&pts).unwrap(), &mut scratch).unwrap();
+/// // The closed box [0, 0.75] × [0, 0.75] holds both points and has area 9/16: 1 − 9/16.
+/// assert!((d - 0.4375).abs() < 1e-15);
+/// ```
+pub fn star_discrepancy(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f64, Error> {
+    match points.dims() {
+        1 => star_discrepancy_1d(points, scratch),
+        2 => star_discrepancy_2d(points, scratch),
+        _ => star_discrepancy_enumerate(points, scratch),
+    }
+}
+
+/// Exact 1D star discrepancy, `1/(2N) + max_i |x_(i) − (2i−1)/(2N)|` over the sorted points
+/// (Niederreiter 1992, Thm. 2.6). O(N log N); `scratch` needs `N` elements. Allocates: no.
+///
+/// # Errors
+/// [`Error::OutOfRange`] (`"dims"`) unless the set is 1D; [`Error::BufferTooShort`].
+///
+/// ```
+/// use nyquist::analysis::{star_discrepancy_1d, PointSet};
+/// // The midpoint rule {1/4, 3/4} has the optimal D* = 1/(2N).
+/// let mut s = [0.0; 2];
+/// let d = star_discrepancy_1d(&PointSet::new(&[0.75, 0.25], 1).unwrap(), &mut s).unwrap();
+/// assert_eq!(d, 0.25);
+/// ```
+pub fn star_discrepancy_1d(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f64, Error> {
+    if points.dims() != 1 {
+        return Err(Error::OutOfRange { what: "dims" });
+    }
+    let n = points.len();
+    let xs = check_scratch(scratch, n)?;
+    xs.copy_from_slice(points.coords());
+    xs.sort_unstable_by(f64::total_cmp);
+    let inv2n = 0.5 / n as f64;
+    let mut worst = 0.0f64;
+    for (i, &x) in xs.iter().enumerate() {
+        worst = worst.max((x - (2 * i + 1) as f64 * inv2n).abs());
+    }
+    Ok((inv2n + worst).min(1.0))
+}
+
+/// Exact 2D star discrepancy by a sweep over the sorted x-coordinates: for each critical x it
+/// scans the sorted y-coordinates of the points to its left (kept sorted by insertion), with
+/// open counts before and closed counts after inserting the points on that x. O(N²) time,
+/// `scratch` of `3N` elements (`2N` for the x-sorted points, `N` for the y list). Allocates: no.
+///
+/// # Errors
+/// [`Error::OutOfRange`] (`"dims"`) unless the set is 2D; [`Error::BufferTooShort`].
+///
+/// ```
+/// use nyquist::analysis::{star_discrepancy_2d, PointSet};
+/// let mut s = [0.0; 3];
+/// let d = star_discrepancy_2d(&PointSet::from_2d(&[[0.5, 0.5]]).unwrap(), &mut s).unwrap();
+/// // [0, 1) × [0, 0.5) is empty and has area 1/2; the closed box [0, ½]² holds the point.
+/// assert_eq!(d, 0.75);
+/// ```
+pub fn star_discrepancy_2d(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f64, Error> {
+    if points.dims() != 2 {
+        return Err(Error::OutOfRange { what: "dims" });
+    }
+    let n = points.len();
+    let buf = check_scratch(scratch, 3 * n)?;
+    let (sorted, ys) = buf.split_at_mut(2 * n);
+    sorted.copy_from_slice(points.coords());
+    let (pairs, _) = sorted.as_chunks_mut::<2>();
+    pairs.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
+    let inv_n = 1.0 / n as f64;
+    let mut worst = 0.0f64;
+    let mut filled = 0usize;
+    let mut i = 0usize;
+    while i < n {
+        let xi = pairs[i][0];
+        worst = worst.max(open_scan(xi, &ys[..filled], inv_n));
+        while i < n && pairs[i][0] == xi {
+            let y = pairs[i][1];
+            let at = ys[..filled].partition_point(|&v| v <= y);
+            ys.copy_within(at..filled, at + 1);
+            ys[at] = y;
+            filled += 1;
+            i += 1;
+        }
+        worst = worst.max(closed_scan(xi, &ys[..filled], inv_n));
+    }
+    worst = worst.max(open_scan(1.0, &ys[..filled], inv_n));
+    Ok(worst.min(1.0))
+}
+
+/// `max_k (v·y_k − k/N)` and `v − len/N`: open boxes `[0, ξ) × [0, η)` with area factor `v = ξ`.
+#[inline]
+fn open_scan(v: f64, ys: &[f64], inv_n: f64) -> f64 {
+    let mut worst = v - ys.len() as f64 * inv_n;
+    for (k, &y) in ys.iter().enumerate() {
+        worst = worst.max(v * y - k as f64 * inv_n);
+    }
+    worst
+}
+
+/// `max_k ((k+1)/N − v·y_k)`: closed boxes `[0, ξ] × [0, y_k]`.
+#[inline]
+fn closed_scan(v: f64, ys: &[f64], inv_n: f64) -> f64 {
+    let mut worst = f64::NEG_INFINITY;
+    for (k, &y) in ys.iter().enumerate() {
+        worst = worst.max((k + 1) as f64 * inv_n - v * y);
+    }
+    worst
+}
+
+/// Exact star discrepancy in any dimension by enumerating the critical grid of the first
+/// `d − 1` axes (distinct coordinates and 1) and scanning the last axis in sorted order, as in
+/// the 2D sweep. O(d · N · ∏_{k<d−1} M_k) with `M_k ≤ N + 1` the critical values of axis k, i.e.
+/// O(d · N^d); `scratch` as [`star_discrepancy_scratch_len`]. Works for `d = 1` and `2` too
+/// (slower than the dedicated functions). Allocates: no.
+///
+/// # Errors
+/// [`Error::OutOfRange`] (`"dims"`) above [`MAX_DIMS`]; [`Error::TooMany`] when the cost exceeds
+/// [`ENUMERATION_LIMIT`]; [`Error::BufferTooShort`].
+///
+/// ```
+/// use nyquist::analysis::{star_discrepancy_enumerate, PointSet};
+/// let mut s = [0.0; 2 + 2 * 2];
+/// let set = PointSet::new(&[0.5, 0.5, 0.5], 3).unwrap();
+/// // The closed box [0, ½]³ holds the only point: 1 − 1/8.
+/// assert_eq!(star_discrepancy_enumerate(&set, &mut s).unwrap(), 0.875);
+/// ```
+pub fn star_discrepancy_enumerate(
+    points: &PointSet<'_>,
+    scratch: &mut [f64],
+) -> Result<f64, Error> {
+    let d = points.dims();
+    if d > MAX_DIMS {
+        return Err(Error::OutOfRange { what: "dims" });
+    }
+    let n = points.len();
+    let needed = star_discrepancy_scratch_len(n, d).ok_or(Error::TooMany { what: "points" })?;
+    let buf = check_scratch(scratch, needed)?;
+    let (order, axes) = buf.split_at_mut(2 * n);
+    let coords = points.coords();
+    let last = d - 1;
+    // (last coordinate, point index) sorted by the last coordinate; indices < 2^32 are exact.
+    let (pairs, _) = order.as_chunks_mut::<2>();
+    for (i, p) in pairs.iter_mut().enumerate() {
+        *p = [coords[i * d + last], i as f64];
+    }
+    pairs.sort_unstable_by(|a, b| a[0].total_cmp(&b[0]));
+    // Critical values of the first d − 1 axes: sorted, distinct, then 1.
+    let mut counts = [0usize; MAX_DIMS];
+    let mut work: u64 = (d as u64).saturating_mul(n as u64);
+    for k in 0..last {
+        let axis = &mut axes[k * (n + 1)..(k + 1) * (n + 1)];
+        for (i, a) in axis[..n].iter_mut().enumerate() {
+            *a = coords[i * d + k];
+        }
+        axis[..n].sort_unstable_by(f64::total_cmp);
+        let mut m = 1usize;
+        for i in 1..n {
+            if axis[i] != axis[m - 1] {
+                axis[m] = axis[i];
+                m += 1;
+            }
+        }
+        if axis[m - 1] < 1.0 {
+            axis[m] = 1.0;
+            m += 1;
+        }
+        counts[k] = m;
+        work = work.saturating_mul(m as u64);
+    }
+    if work > ENUMERATION_LIMIT {
+        return Err(Error::TooMany { what: "points" });
+    }
+    let inv_n = 1.0 / n as f64;
+    let mut idx = [0usize; MAX_DIMS];
+    let mut q = [0.0f64; MAX_DIMS];
+    let mut worst = 0.0f64;
+    loop {
+        let mut v = 1.0;
+        for k in 0..last {
+            q[k] = axes[k * (n + 1) + idx[k]];
+            v *= q[k];
+        }
+        let (mut open, mut closed) = (0usize, 0usize);
+        for &[y, i] in pairs.iter() {
+            let p = &coords[i as usize * d..i as usize * d + last];
+            let mut is_open = true;
+            let mut is_closed = true;
+            for (&pk, &qk) in p.iter().zip(&q[..last]) {
+                is_open &= pk < qk;
+                is_closed &= pk <= qk;
+            }
+            if is_open {
+                worst = worst.max(v * y - open as f64 * inv_n);
+                open += 1;
+            }
+            if is_closed {
+                closed += 1;
+                worst = worst.max(closed as f64 * inv_n - v * y);
+            }
+        }
+        worst = worst.max(v - open as f64 * inv_n);
+        // Odometer over the critical grid.
+        let mut k = 0;
+        loop {
+            if k == last {
+                return Ok(worst.min(1.0));
+            }
+            idx[k] += 1;
+            if idx[k] < counts[k] {
+                break;
+            }
+            idx[k] = 0;
+            k += 1;
+        }
+    }
+}
+
+/// A bracket `lower ≤ D*_N ≤ upper` from [`star_discrepancy_bounds`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StarBounds {
+    /// The largest local discrepancy over grid boxes: a true lower bound.
+    pub lower: f64,
+    /// An upper bound; `upper − lower ≤ 1 − (1 − 1/m)^d ≤ d/m`.
+    pub upper: f64,
+}
+
+/// `u32` scratch needed by [`star_discrepancy_bounds`]: `2 (m + 1)^dims`, or `None` on overflow
+/// or zero arguments.
+///
+/// ```
+/// assert_eq!(nyquist::analysis::star_bounds_scratch_len(2, 8), Some(2 * 81));
+/// ```
+pub fn star_bounds_scratch_len(dims: usize, m: u32) -> Option<usize> {
+    if dims == 0 || m == 0 {
+        return None;
+    }
+    let side = usize::try_from(m).ok()?.checked_add(1)?;
+    let mut cells = 1usize;
+    for _ in 0..dims {
+        cells = cells.checked_mul(side)?;
+    }
+    cells.checked_mul(2)
+}
+
+/// Brackets the star discrepancy with a regular grid of `m` cells per axis (grid values
+/// `j/m`): counts of open and closed anchored boxes at every grid point come from a
+/// d-dimensional histogram and prefix sums. Every `t` lies in a cell `[a, a + 1/m]`, and
+/// `A([0,t))` lies between the open count at `a` and the closed count at `a + 1/m`, so
+///
+/// - `lower = max_g max(λ(g) − A_open(g)/N, A_closed(g)/N − λ(g))` over grid points (real boxes),
+/// - `upper = max_a max(A_closed(a⁺)/N − λ(a), λ(a⁺) − A_open(a)/N)` over cells,
+///
+/// and `upper − lower ≤ 1 − (1 − 1/m)^d`. Exact results need [`star_discrepancy`]; this is the
+/// method for large `N·d` (cost O(N·d + d·(m+1)^d)). Allocates: no.
+///
+/// # Errors
+/// [`Error::ZeroSize`] (`"m"`) for `m == 0`; [`Error::OutOfRange`] (`"dims"`) above
+/// [`MAX_DIMS`]; [`Error::TooMany`] if the grid size overflows; [`Error::BufferTooShort`].
+///
+/// ```
+/// use nyquist::analysis::{star_discrepancy_bounds, PointSet};
+/// let set = PointSet::from_2d(&[[0.25, 0.25], [0.75, 0.75]]).unwrap();
+/// let mut s = [0u32; 2 * 17 * 17];
+/// let b = star_discrepancy_bounds(&set, 16, &mut s).unwrap();
+/// assert!(b.lower <= 0.4375 && 0.4375 <= b.upper && b.upper - b.lower <= 2.0 / 16.0);
+/// ```
+pub fn star_discrepancy_bounds(
+    points: &PointSet<'_>,
+    m: u32,
+    scratch: &mut [u32],
+) -> Result<StarBounds, Error> {
+    if m == 0 {
+        return Err(Error::ZeroSize { what: "m" });
+    }
+    let d = points.dims();
+    if d > MAX_DIMS {
+        return Err(Error::OutOfRange { what: "dims" });
+    }
+    let needed = star_bounds_scratch_len(d, m).ok_or(Error::TooMany { what: "m" })?;
+    let buf = check_scratch(scratch, needed)?;
+    buf.fill(0);
+    let cells = needed / 2;
+    let (open, closed) = buf.split_at_mut(cells);
+    let side = m as usize + 1;
+    let mf = f64::from(m);
+    let grid = |j: usize| j as f64 / mf;
+    let mut stride = [0usize; MAX_DIMS];
+    let mut s = 1usize;
+    for st in stride[..d].iter_mut() {
+        *st = s;
+        s *= side;
+    }
+    for p in points.coords().chunks_exact(d) {
+        let (mut io, mut ic, mut in_open) = (0usize, 0usize, true);
+        for (k, &x) in p.iter().enumerate() {
+            let (jo, jc) = grid_indices(x, m);
+            ic += jc * stride[k];
+            if jo > m as usize {
+                // x = 1: no open box [0, g) holds the point.
+                in_open = false;
+            } else {
+                io += jo * stride[k];
+            }
+        }
+        if in_open {
+            open[io] += 1;
+        }
+        closed[ic] += 1;
+    }
+    // Inclusive prefix sums along every axis: count at g = points binned at or below g.
+    for &st in &stride[..d] {
+        for flat in 0..cells {
+            if (flat / st) % side != 0 {
+                open[flat] += open[flat - st];
+                closed[flat] += closed[flat - st];
+            }
+        }
+    }
+    let inv_n = 1.0 / points.len() as f64;
+    let volume = |flat: usize| {
+        let mut v = 1.0;
+        for &st in &stride[..d] {
+            v *= grid((flat / st) % side);
+        }
+        v
+    };
+    let (mut lower, mut upper) = (0.0f64, 0.0f64);
+    let mut upper_offset = 0usize;
+    for st in &stride[..d] {
+        upper_offset += st;
+    }
+    for flat in 0..cells {
+        let v = volume(flat);
+        let o = f64::from(open[flat]) * inv_n;
+        let c = f64::from(closed[flat]) * inv_n;
+        lower = lower.max(v - o).max(c - v);
+        let is_lower_corner = (0..d).all(|k| (flat / stride[k]) % side < m as usize);
+        if is_lower_corner {
+            let up = flat + upper_offset;
+            let vu = volume(up);
+            let cu = f64::from(closed[up]) * inv_n;
+            upper = upper.max(cu - v).max(vu - o);
+        }
+    }
+    Ok(StarBounds {
+        lower: lower.min(1.0),
+        upper: upper.clamp(lower, 1.0),
+    })
+}
+
+/// For `x ∈ [0, 1]`: the smallest `j` with `j/m > x` (open; `m + 1` if none) and the smallest
+/// `j` with `j/m ≥ x` (closed), computed from the same `j as f64 / m` values the volumes use.
+fn grid_indices(x: f64, m: u32) -> (usize, usize) {
+    let mf = f64::from(m);
+    let m = m as usize;
+    let grid = |j: usize| j as f64 / mf;
+    let mut jo = (crate::math::floor(x * mf) as usize + 1).min(m + 1);
+    while jo > 0 && grid(jo - 1) > x {
+        jo -= 1;
+    }
+    while jo <= m && grid(jo) <= x {
+        jo += 1;
+    }
+    let mut jc = (crate::math::ceil(x * mf) as usize).min(m);
+    while jc > 0 && grid(jc - 1) >= x {
+        jc -= 1;
+    }
+    while jc < m && grid(jc) < x {
+        jc += 1;
+    }
+    (jo, jc)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::analysis::testsets::{hammersley, random, van_der_corput};
+    use proptest::prelude::*;
+    use std::vec;
+    use std::vec::Vec;
+
+    fn exact(coords: &[f64], dims: usize) -> f64 {
+        let set = PointSet::new(coords, dims).unwrap();
+        let mut s = vec![0.0; star_discrepancy_scratch_len(set.len(), dims).unwrap()];
+        star_discrepancy(&set, &mut s).unwrap()
+    }
+
+    fn enumerate(coords: &[f64], dims: usize) -> f64 {
+        let set = PointSet::new(coords, dims).unwrap();
+        let mut s = vec![0.0; star_discrepancy_scratch_len(set.len(), dims).unwrap()];
+        star_discrepancy_enumerate(&set, &mut s).unwrap()
+    }
+
+    fn bounds(coords: &[f64], dims: usize, m: u32) -> StarBounds {
+        let set = PointSet::new(coords, dims).unwrap();
+        let mut s = vec![0u32; star_bounds_scratch_len(dims, m).unwrap()];
+        star_discrepancy_bounds(&set, m, &mut s).unwrap()
+    }
+
+    /// O(N^(d+1)) oracle: every grid point of ∏({x_ik} ∪ {1}), counts by direct scans.
+    fn brute(coords: &[f64], d: usize) -> f64 {
+        let n = coords.len() / d;
+        let axes: Vec<Vec<f64>> = (0..d)
+            .map(|k| {
+                let mut a: Vec<f64> = (0..n).map(|i| coords[i * d + k]).collect();
+                a.push(1.0);
+                a
+            })
+            .collect();
+        let mut idx = vec![0usize; d];
+        let mut worst = 0.0f64;
+        loop {
+            let q: Vec<f64> = (0..d).map(|k| axes[k][idx[k]]).collect();
+            let v: f64 = q.iter().product();
+            let pts = coords.chunks_exact(d);
+            let open = pts.clone().filter(|p| p.iter().zip(&q).all(|(a, b)| a < b));
+            let closed = pts.filter(|p| p.iter().zip(&q).all(|(a, b)| a <= b));
+            worst = worst
+                .max(v - open.count() as f64 / n as f64)
+                .max(closed.count() as f64 / n as f64 - v);
+            let mut k = 0;
+            loop {
+                if k == d {
+                    return worst;
+                }
+                idx[k] += 1;
+                if idx[k] <= n {
+                    break;
+                }
+                idx[k] = 0;
+                k += 1;
+            }
+        }
+    }
+
+    /// Random points, some snapped to 0, 1 or a coarse grid so ties and boundaries occur.
+    fn nasty(n: usize, d: usize, seed: u64) -> Vec<f64> {
+        let mut rng = crate::rng::default_rng(seed);
+        (0..n * d)
+            .map(|_| match crate::rng::uniform_below(&mut rng, 8) {
+                0 => 0.0,
+                1 => 1.0,
+                2 | 3 => f64::from(crate::rng::uniform_below(&mut rng, 5)) / 4.0,
+                _ => crate::rng::uniform_f64(&mut rng),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn van_der_corput_n_times_star_matches_published_values() {
+        let expected = [
+            1.0, 1.0, 1.5, 1.0, 1.75, 1.5, 1.75, 1.0, 1.875, 1.75, 2.125, 1.5, 2.125, 1.75, 1.875,
+            1.0,
+        ];
+        for (n, &e) in (1..=16u32).zip(&expected) {
+            let pts = van_der_corput(n);
+            let d = exact(&pts, 1);
+            assert!(
+                (f64::from(n) * d - e).abs() < 1e-12,
+                "N = {n}: {}",
+                f64::from(n) * d
+            );
+            assert!((enumerate(&pts, 1) - d).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn hammersley_star_matches_de_clerck() {
+        for m in 2..=12u32 {
+            let n = 1u32 << m;
+            let nf = f64::from(n);
+            let sign = if m % 2 == 0 { 1.0 } else { -1.0 };
+            let expected = (f64::from(m) / 3.0 + 13.0 / 9.0 - sign * 4.0 / (9.0 * nf)) / nf;
+            let got = exact(&hammersley(n), 2);
+            assert!(
+                (got - expected).abs() < 1e-12,
+                "m = {m}: {got} vs {expected}"
+            );
+        }
+    }
+
+    #[test]
+    fn exact_2d_and_enumeration_agree_with_brute_force() {
+        for seed in 0..60u64 {
+            let n = 1 + (seed as usize * 7) % 64;
+            for pts in [random(n, 2, seed), nasty(n, 2, seed)] {
+                let b = brute(&pts, 2);
+                assert!((exact(&pts, 2) - b).abs() < 1e-14, "seed {seed} n {n}");
+                assert!((enumerate(&pts, 2) - b).abs() < 1e-14, "seed {seed} n {n}");
+            }
+        }
+    }
+
+    #[test]
+    fn enumeration_in_3d_and_4d_agrees_with_brute_force() {
+        for seed in 0..12u64 {
+            let n = 1 + seed as usize * 2;
+            for d in [3, 4] {
+                for pts in [random(n, d, seed), nasty(n, d, seed + 100)] {
+                    let b = brute(&pts, d);
+                    assert!((exact(&pts, d) - b).abs() < 1e-14, "seed {seed} d {d}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn points_on_a_line_reduce_to_the_1d_formula_or_to_one() {
+        // A 2D set is at least as discrepant as each projection (boxes [0,ξ) × [0,1]).
+        for seed in 0..20u64 {
+            let pts = random(40, 2, seed);
+            let xs: Vec<f64> = pts.iter().step_by(2).copied().collect();
+            let ys: Vec<f64> = pts.iter().skip(1).step_by(2).copied().collect();
+            let d2 = exact(&pts, 2);
+            assert!(d2 >= exact(&xs, 1) - 1e-15 && d2 >= exact(&ys, 1) - 1e-15);
+            // The same x's at y = 1: closed boxes [0,ξ] × [0,1] give the 1D excess, but the
+            // empty box [0,1) × [0,1) has area 1, so D* = 1 (the brief's "equals 1D" fails here).
+            let line: Vec<f64> = xs.iter().flat_map(|&x| [x, 1.0]).collect();
+            assert_eq!(exact(&line, 2), 1.0);
+            // Points (x, x) on the diagonal: every anchored box [0,ξ)×[0,η) holds the points
+            // below min(ξ, η), so D* = max(1D deficit with area ξη, …); the 1D set bounds it below.
+            let diag: Vec<f64> = xs.iter().flat_map(|&x| [x, x]).collect();
+            assert!((exact(&diag, 2) - brute(&diag, 2)).abs() < 1e-14);
+        }
+        // In 1D the enumerator is the 1D formula.
+        for seed in 0..20u64 {
+            let xs = nasty(1 + seed as usize, 1, seed);
+            assert!((enumerate(&xs, 1) - exact(&xs, 1)).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn bounds_bracket_the_exact_value_and_tighten_with_m() {
+        for seed in 0..10u64 {
+            for d in [1usize, 2, 3] {
+                let pts = nasty(30, d, seed);
+                let e = exact(&pts, d);
+                for m in [1u32, 4, 16, 64] {
+                    if d == 3 && m == 64 {
+                        continue;
+                    }
+                    let b = bounds(&pts, d, m);
+                    assert!(b.lower <= e + 1e-14 && e <= b.upper + 1e-14, "{b:?} vs {e}");
+                    let gap = 1.0 - (1.0 - 1.0 / f64::from(m)).powi(d as i32);
+                    assert!(b.upper - b.lower <= gap + 1e-14, "{b:?} m {m} d {d}");
+                }
+            }
+        }
+        // Hammersley: 2^m points on the 1/2^m grid in x — the bracket is tight in practice.
+        let b = bounds(&hammersley(256), 2, 512);
+        let e = exact(&hammersley(256), 2);
+        assert!(b.lower <= e && e <= b.upper && b.upper - b.lower < 0.004);
+    }
+
+    #[test]
+    fn errors_are_typed() {
+        let set = PointSet::new(&[0.5, 0.5, 0.25, 0.75], 2).unwrap();
+        let mut s = [0.0; 5];
+        assert_eq!(
+            star_discrepancy_2d(&set, &mut s),
+            Err(Error::BufferTooShort {
+                needed: 6,
+                actual: 5
+            })
+        );
+        assert_eq!(
+            star_discrepancy_1d(&set, &mut s),
+            Err(Error::OutOfRange { what: "dims" })
+        );
+        let mut u = [0u32; 3];
+        assert!(matches!(
+            star_discrepancy_bounds(&set, 4, &mut u),
+            Err(Error::BufferTooShort { .. })
+        ));
+        assert_eq!(
+            star_discrepancy_bounds(&set, 0, &mut u),
+            Err(Error::ZeroSize { what: "m" })
+        );
+        // 200 points in 6D: 200^5 · 1200 critical-box work is far beyond the limit.
+        let pts = random(200, 6, 1);
+        let set = PointSet::new(&pts, 6).unwrap();
+        let mut s = vec![0.0; star_discrepancy_scratch_len(200, 6).unwrap()];
+        assert_eq!(
+            star_discrepancy(&set, &mut s),
+            Err(Error::TooMany { what: "points" })
+        );
+        assert_eq!(star_bounds_scratch_len(MAX_DIMS, u32::MAX), None);
+    }
+
+    proptest! {
+        #[test]
+        fn any_set_gives_star_in_unit_interval(
+            dims in 1usize..4,
+            raw in proptest::collection::vec(
+                prop_oneof![Just(0.0f64), Just(1.0f64), 0.0f64..=1.0, Just(0.5f64)], 1..40),
+            m in 1u32..20,
+        ) {
+            let n = (raw.len() / dims).max(1);
+            let mut pts = raw.clone();
+            pts.resize(n * dims, 0.5);
+            let e = exact(&pts, dims);
+            prop_assert!((0.0..=1.0).contains(&e));
+            prop_assert!(e >= 0.5 / n as f64 - 1e-15); // D* ≥ 1/(2N) for any set
+            let b = bounds(&pts, dims, m);
+            prop_assert!(b.lower <= e + 1e-14 && e <= b.upper + 1e-14);
+            prop_assert!((0.0..=1.0).contains(&b.lower) && (0.0..=1.0).contains(&b.upper));
+            if dims == 2 && n <= 12 {
+                prop_assert!((e - brute(&pts, 2)).abs() < 1e-14);
+            }
+        }
+    }
+}
