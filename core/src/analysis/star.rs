@@ -45,8 +45,8 @@ pub fn star_discrepancy_scratch_len(n: usize, dims: usize) -> Option<usize> {
 /// let pts = [[0.25, 0.25], [0.75, 0.75]];
 /// let mut scratch = [0.0; 6];
 /// let d = star_discrepancy(&PointSet::from_2d(&pts).unwrap(), &mut scratch).unwrap();
-/// // The box [0, 0.75) × [0, 0.75) holds one point of two and has area 9/16.
-/// assert!((d - 0.5625).abs() < 1e-15);
+/// // The closed box [0, ¾]² holds both points and has area 9/16: 1 − 9/16.
+/// assert!((d - 0.4375).abs() < 1e-15);
 /// ```
 pub fn star_discrepancy(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f64, Error> {
     match points.dims() {
@@ -306,7 +306,7 @@ pub fn star_bounds_scratch_len(dims: usize, m: u32) -> Option<usize> {
 /// let set = PointSet::from_2d(&[[0.25, 0.25], [0.75, 0.75]]).unwrap();
 /// let mut s = [0u32; 2 * 17 * 17];
 /// let b = star_discrepancy_bounds(&set, 16, &mut s).unwrap();
-/// assert!(b.lower <= 0.5625 && 0.5625 <= b.upper && b.upper - b.lower <= 2.0 / 16.0);
+/// assert!(b.lower <= 0.4375 && 0.4375 <= b.upper && b.upper - b.lower <= 2.0 / 16.0);
 /// ```
 pub fn star_discrepancy_bounds(
     points: &PointSet<'_>,
