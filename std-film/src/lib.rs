@@ -40,3 +40,5 @@ pub use tile::{FilmTile, Pixel};
 pub fn pixel_center(x: u32, y: u32) -> (f64, f64) {
     (f64::from(x) + 0.5, f64::from(y) + 0.5)
 }
+
+pub mod periodogram;
