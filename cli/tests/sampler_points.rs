@@ -1,32 +1,8 @@
 //! End-to-end tests of `nyquist points --spp` (pixel samplers) and `--format svg`.
 
-use std::process::{Command, Output};
+mod common;
 
-fn nyquist(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_nyquist"))
-        .args(args)
-        .output()
-        .expect("run nyquist")
-}
-
-fn rows(o: &Output) -> Vec<Vec<f32>> {
-    String::from_utf8(o.stdout.clone())
-        .unwrap()
-        .lines()
-        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
-        .collect()
-}
-
-fn assert_one_line_error(o: &Output, mentions: &str) {
-    let err = String::from_utf8(o.stderr.clone()).unwrap();
-    assert_eq!(o.status.code(), Some(2), "stderr: {err}");
-    assert_eq!(err.lines().count(), 1, "not one line: {err:?}");
-    assert!(
-        err.contains(mentions),
-        "{err:?} does not mention {mentions:?}"
-    );
-    assert!(o.stdout.is_empty());
-}
+use common::{assert_one_line_error, nyquist, rows};
 
 #[test]
 fn every_pixel_sampler_prints_spp_points_in_the_unit_cube() {
