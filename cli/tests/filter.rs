@@ -1,0 +1,97 @@
+//! End-to-end tests of `nyquist filter`.
+
+mod common;
+
+use common::{assert_one_line_error, nyquist, stdout};
+
+#[test]
+fn grid_csv_has_n_squared_rows_over_the_closed_support() {
+    let o = nyquist(&["filter", "--filter", "triangle", "--grid", "5"]);
+    assert!(o.status.success());
+    let rows: Vec<Vec<f64>> = stdout(&o)
+        .lines()
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 25);
+    // Triangle r = 2: corners at (±2, ±2) are 0, the centre is 2·2 = 4.
+    assert_eq!(rows[0][..2], [-2.0, -2.0]);
+    assert_eq!(rows[0][2], 0.0);
+    assert_eq!(rows[12], [0.0, 0.0, 4.0]);
+    assert_eq!(rows[24][..2], [2.0, 2.0]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    let integral: f64 = err
+        .lines()
+        .find_map(|l| l.strip_prefix("integral "))
+        .expect("an integral line on stderr")
+        .trim()
+        .parse()
+        .unwrap();
+    assert!((integral - 16.0).abs() < 1e-4, "{integral}");
+}
+
+#[test]
+fn mitchell_centre_is_one_minus_b_over_three_squared() {
+    let o = nyquist(&["filter", "--filter", "mitchell:b=0.5,c=0.25", "--grid", "3"]);
+    assert!(o.status.success());
+    let centre: f64 = stdout(&o)
+        .lines()
+        .nth(4)
+        .unwrap()
+        .rsplit(',')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    let m0 = 1.0 - 0.5 / 3.0;
+    assert!((centre - m0 * m0).abs() < 1e-6, "{centre}");
+}
+
+#[test]
+fn plot_writes_a_png_and_bad_output_leaves_nothing() {
+    let dir = std::env::temp_dir().join(format!("nyquist-filter-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let png = dir.join("f.png");
+    let o = nyquist(&[
+        "filter",
+        "--filter",
+        "lanczos",
+        "--plot",
+        png.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+    let missing = dir.join("missing").join("f.png");
+    let o = nyquist(&[
+        "filter",
+        "--filter",
+        "box",
+        "--plot",
+        missing.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(!missing.exists());
+    assert_eq!(
+        std::fs::read_dir(&dir).unwrap().count(),
+        1,
+        "stray temporary files"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_specs_are_one_line_errors_naming_the_flag() {
+    for spec in [
+        "nope",
+        "mitchell:b=x",
+        "gaussian:sigma=0",
+        "box:radius=-1",
+        "lanczos:tau=nan",
+        "triangle:q=1",
+    ] {
+        assert_one_line_error(&nyquist(&["filter", "--filter", spec]), "--filter");
+    }
+    assert_one_line_error(
+        &nyquist(&["filter", "--filter", "box", "--grid", "0"]),
+        "--grid",
+    );
+}
