@@ -25,6 +25,32 @@
 //! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
 //! | [`StratifiedSampler`] | jittered (or centred: [`StratifiedSampler::uniform`]) strata, hash-permuted per dimension |
 
+/// `get_1d`, `get_2d` and `get_pixel_2d` for samplers that read dimension `d` of one point
+/// through `self.sample(d)` and keep their next dimension in `self.dim` (the global Halton,
+/// Hammersley and Sobol samplers): dimensions are consumed in order, and the pixel sample is
+/// always dimensions 0 and 1.
+macro_rules! global_point_dimensions {
+    () => {
+        fn get_1d(&mut self) -> f32 {
+            let d = self.dim;
+            self.dim = self.dim.wrapping_add(1);
+            self.sample(d)
+        }
+
+        fn get_2d(&mut self) -> [f32; 2] {
+            let d = self.dim;
+            self.dim = self.dim.wrapping_add(2);
+            [self.sample(d), self.sample(d.wrapping_add(1))]
+        }
+
+        fn get_pixel_2d(&mut self) -> [f32; 2] {
+            self.dim = self.dim.max(2);
+            [self.sample(0), self.sample(1)]
+        }
+    };
+}
+pub(crate) use global_point_dimensions;
+
 mod adaptive;
 pub mod best_candidate;
 mod halton;

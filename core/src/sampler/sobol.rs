@@ -204,22 +204,7 @@ impl Sampler for SobolSampler {
         self.dim = dim;
     }
 
-    fn get_1d(&mut self) -> f32 {
-        let d = self.dim;
-        self.dim = self.dim.wrapping_add(1);
-        self.sample(d)
-    }
-
-    fn get_2d(&mut self) -> [f32; 2] {
-        let d = self.dim;
-        self.dim = self.dim.wrapping_add(2);
-        [self.sample(d), self.sample(d.wrapping_add(1))]
-    }
-
-    fn get_pixel_2d(&mut self) -> [f32; 2] {
-        self.dim = self.dim.max(2);
-        [self.sample(0), self.sample(1)]
-    }
+    super::global_point_dimensions!();
 }
 
 #[cfg(test)]
