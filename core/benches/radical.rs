@@ -2,8 +2,10 @@
 //! and base at run time), on the same random indices below 10⁷ and the same dimensions.
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::radical::{
-    PRIMES, folded_radical_inverse, radical_inverse, scrambled_radical_inverse,
+    PRIMES, fill_radical_inverse, folded_radical_inverse, radical_inverse,
+    scrambled_radical_inverse,
 };
+use nyquist::sequence::{Halton, Sequence};
 use std::hint::black_box;
 
 const DIMS: usize = 64;
@@ -103,22 +105,56 @@ fn halton(c: &mut Criterion) {
     });
     g.finish();
 
+    // Whole points: 256 consecutive indices from an offset below 10⁷, all 64 dimensions, through
+    // `Sequence::fill` (incremental digits), against the same values from the two loops.
+    let halton = Halton::new(DIMS as u32).unwrap();
+    let first = 9_876_543u64;
+    let consecutive: Vec<u64> = (first..first + INDICES as u64).collect();
+    let mut g = c.benchmark_group("halton_f32_fill_256pts_x_64dims");
+    g.throughput(Throughput::Elements((DIMS * INDICES) as u64));
+    g.bench_function("nyquist_fill", |b| {
+        b.iter(|| {
+            halton
+                .fill(black_box(first), DIMS as u32, &mut out)
+                .unwrap()
+        })
+    });
+    g.bench_function("nyquist_random_access", |b| {
+        b.iter(|| run(&mut out, black_box(&consecutive), radical_inverse))
+    });
+    g.bench_function("const_base_loop", |b| {
+        b.iter(|| run(&mut out, black_box(&consecutive), ri_const_dispatch))
+    });
+    g.bench_function("runtime_base_loop", |b| {
+        b.iter(|| {
+            run(&mut out, black_box(&consecutive), |d, a| {
+                ri_runtime(u64::from(PRIMES[d as usize]), a)
+            })
+        })
+    });
+    g.finish();
+
+    // Base 2 over random indices below 2³² (a renderer's range), random access and a contiguous
+    // fill, against the plain digit loop.
     let mut out = vec![0.0f32; INDICES * 4];
-    let big: Vec<u64> = (0..INDICES * 4)
-        .map(|i| nyquist::hash::mix64(i as u64 + 1))
+    let small: Vec<u64> = (0..INDICES * 4)
+        .map(|i| nyquist::hash::mix64(i as u64 + 1) >> 32)
         .collect();
     let mut g = c.benchmark_group("base2");
-    g.throughput(Throughput::Elements(big.len() as u64));
+    g.throughput(Throughput::Elements(small.len() as u64));
     g.bench_function("nyquist", |b| {
         b.iter(|| {
-            for (x, &a) in out.iter_mut().zip(black_box(&big)) {
+            for (x, &a) in out.iter_mut().zip(black_box(&small)) {
                 *x = radical_inverse(0, a);
             }
         })
     });
+    g.bench_function("nyquist_fill", |b| {
+        b.iter(|| fill_radical_inverse(0, black_box(123_456_789), &mut out))
+    });
     g.bench_function("naive_loop", |b| {
         b.iter(|| {
-            for (x, &a) in out.iter_mut().zip(black_box(&big)) {
+            for (x, &a) in out.iter_mut().zip(black_box(&small)) {
                 *x = ri_const::<2>(a);
             }
         })

@@ -128,22 +128,16 @@ const fn build_bases() -> [BaseInfo; 1024] {
 
 static BASES: [BaseInfo; 1024] = build_bases();
 
-/// `bⁿ`, `⌈2⁶⁴/bⁿ⌉` (0 for `n = 0`, unused) and `1/bⁿ` (correctly rounded), per base and `n`;
-/// one row holds all three so the hot path reads one cache line.
+/// `bⁿ` and `⌈2⁶⁴/bⁿ⌉` (0 for `n = 0`, unused), per base and `n`.
 #[derive(Clone, Copy)]
 struct Row {
     pow: u64,
     magic: u64,
-    inv: f64,
 }
 
 const fn build_rows() -> [Row; ROWS] {
     let bases = build_bases();
-    let mut rows = [Row {
-        pow: 0,
-        magic: 0,
-        inv: 0.0,
-    }; ROWS];
+    let mut rows = [Row { pow: 0, magic: 0 }; ROWS];
     let mut i = 0;
     while i < 1024 {
         let info = bases[i];
@@ -153,7 +147,6 @@ const fn build_rows() -> [Row; ROWS] {
             rows[(info.off + n) as usize] = Row {
                 pow: p,
                 magic: if n == 0 { 0 } else { u64::MAX / p + 1 },
-                inv: 1.0 / p as f64,
             };
             p = p.wrapping_mul(info.b);
             n += 1;
@@ -191,6 +184,75 @@ const fn build_digits() -> [[u8; 33]; 1024] {
 }
 
 static DIGITS: [[u8; 33]; 1024] = build_digits();
+
+/// Everything the `f32` fast path of one base reads, in two cache lines.
+///
+/// For an index `a < big = b^k` of byte class `c = ⌈bit_len(a)/8⌉` (`0 ..= 4`), `n[c]` is the
+/// number of base-`b` digits of `2^(8c) − 1` capped at `k`, `magic[c] = ⌈2⁶⁴/b^n[c]⌉` and
+/// `inv_pow[c] = 1/b^n[c]` (correctly rounded). The digit count is coarser than an exact one (up
+/// to a few leading zero digits more, which reverse to zeros), but the loop trip count then
+/// depends only on the dimension and on the index's byte length, so a renderer's indices — which
+/// mostly share a byte length — do not mispredict the loop exit.
+#[derive(Clone, Copy)]
+#[repr(C, align(64))]
+struct FastBase {
+    magic: [u64; 5],
+    inv_pow: [f64; 5],
+    b: u32,
+    big: u32,
+    n: [u8; 5],
+}
+
+const fn build_fast() -> [FastBase; 1024] {
+    let bases = build_bases();
+    let digits = build_digits();
+    let mut out = [FastBase {
+        magic: [0; 5],
+        inv_pow: [1.0; 5],
+        b: 0,
+        big: 0,
+        n: [0; 5],
+    }; 1024];
+    let mut i = 0;
+    while i < 1024 {
+        let info = bases[i];
+        let mut f = FastBase {
+            magic: [0; 5],
+            inv_pow: [1.0; 5],
+            b: info.b as u32,
+            big: info.big as u32,
+            n: [0; 5],
+        };
+        let mut c = 1;
+        while c <= 4 {
+            let n = digits[i][8 * c];
+            let pow = info.b.pow(n as u32);
+            f.n[c] = n;
+            f.magic[c] = u64::MAX / pow + 1;
+            f.inv_pow[c] = 1.0 / pow as f64;
+            c += 1;
+        }
+        out[i] = f;
+        i += 1;
+    }
+    out
+}
+
+static FAST: [FastBase; 1024] = build_fast();
+
+/// The byte class `⌈bit_len(a)/8⌉` of an index below 2³², as an index into [`FastBase`].
+#[inline(always)]
+fn byte_class(a: u64) -> usize {
+    ((bit_len(a) + 7) >> 3).min(4)
+}
+
+/// `R·(1/bⁿ)` narrowed to `f32`: the one rounding rule both the random-access fast path and the
+/// incremental fill use, so they agree bit for bit. `R < 2³³` is exact in `f64`; the product is
+/// within 2⁻⁵² relative, far below `f32`'s rounding step, so the result is within 1 ulp.
+#[inline(always)]
+fn narrow(rev: f64, inv_pow: f64) -> f32 {
+    ((rev * inv_pow) as f32).min(ONE_MINUS_EPSILON)
+}
 
 // ---------------------------------------------------------------------------------------------
 // Digit engine.
@@ -315,6 +377,13 @@ pub(crate) fn ratio_f64(num: u128, den: u128) -> f64 {
 // ---------------------------------------------------------------------------------------------
 // Φ_b.
 
+/// Φ₂(a) for `a < 2³²`: the 32-bit reversal, rounded once to `f32` (the scaling by 2⁻³² is
+/// exact), clamped below 1. Simple enough for the compiler to vectorise over a run of indices.
+#[inline(always)]
+fn base2_u32(a: u32) -> f32 {
+    (a.reverse_bits() as f32 * (1.0 / 4_294_967_296.0)).min(ONE_MINUS_EPSILON)
+}
+
 /// Φ_b(a), the radical inverse of `a` in base `b = prime(dim)`, as an `f32` in `[0, 1)`.
 ///
 /// The base-`b` digits of `a` mirrored about the radix point: `a = Σ a_j b^j` gives
@@ -334,24 +403,134 @@ pub(crate) fn ratio_f64(num: u128, den: u128) -> f64 {
 pub fn radical_inverse(dim: u32, a: u64) -> f32 {
     let d = (dim % PRIME_COUNT) as usize;
     if d == 0 {
+        if a >> 32 == 0 {
+            // The usual case: a 32-bit reversal, exactly representable before one rounding.
+            return base2_u32(a as u32);
+        }
         // When the top bit is set, halve the reversal keeping the lost bit as a sticky bit (the
         // value then has 63 significant bits, so rounding is unchanged): the signed conversion
-        // is one instruction, and no branch depends on the index.
+        // is one instruction.
         let r = a.reverse_bits();
         let top = r >> 63;
         let m = ((r >> top) | (r & top)) as i64;
         let scale = f32::from_bits((127 - 64 + top as u32) << 23);
         return ((m as f32) * scale).min(ONE_MINUS_EPSILON);
     }
-    let info = &BASES[d];
-    if a < info.big {
-        let (rev, row) = single_chunk(d, info, a);
-        // rev < 2³² is exact in f64; the f64 product is within 2⁻⁵² relative, far below f32's
-        // rounding step, so the narrowed result is within 1 ulp.
-        return ((rev as i64 as f64 * row.inv) as f32).min(ONE_MINUS_EPSILON);
+    let fast = &FAST[d];
+    if a < u64::from(fast.big) {
+        return phi_fast(fast, a);
     }
     let (num, den) = phi_fraction(d, a);
     fraction_f32(num, den, 0, false)
+}
+
+/// Φ_b(a) for `a < b^k` (so `a < 2³²`): the reversed digits `R = Σ e_j·b^j` (`e_j` the digits
+/// of `a`, most significant first) summed exactly in `f64`, then [`narrow`]ed.
+///
+/// One 64×64→128 multiply per digit hands out the digit (see the module docs); the sum runs in
+/// floating point beside the integer multiplier, and its only loop-carried chain is one add.
+/// The digit count comes from the index's byte class ([`FastBase`]), so the loop exit is
+/// predictable.
+#[inline(always)]
+fn phi_fast(f: &FastBase, a: u64) -> f32 {
+    let class = byte_class(a);
+    let b = u128::from(f.b);
+    let bf = f64::from(f.b);
+    let mut y = a.wrapping_mul(f.magic[class]);
+    let mut rev = 0.0f64;
+    let mut weight = 1.0f64;
+    for _ in 0..f.n[class] {
+        let t = u128::from(y) * b;
+        rev += (t >> 64) as i64 as f64 * weight;
+        weight *= bf;
+        y = t as u64;
+    }
+    narrow(rev, f.inv_pow[class])
+}
+
+/// Writes Φ_b(first), Φ_b(first + 1), … (`b = prime(dim)`) into `out[offset], out[offset + stride], …`, bit for
+/// bit what [`radical_inverse`] returns for each index, in amortised O(1) per value.
+///
+/// Inside one byte class the digits of the index are kept and incremented with carries, and the
+/// reversed integer `R` is updated by the changed digits' weights; a new class (or an index past
+/// `b^k`) starts over from the random-access path. Indices wrap at `u64::MAX`.
+pub(crate) fn fill_consecutive(
+    dim: u32,
+    first: u64,
+    out: &mut [f32],
+    offset: usize,
+    stride: usize,
+) {
+    let d = (dim % PRIME_COUNT) as usize;
+    let mut slots = (offset..out.len()).step_by(stride.max(1));
+    let mut a = first;
+    if d == 0 {
+        if stride <= 1
+            && first
+                .checked_add(out.len() as u64)
+                .is_some_and(|end| end < 1 << 32)
+        {
+            // Contiguous and below 2³²: a plain map the compiler vectorises.
+            for (x, a) in out[offset..].iter_mut().zip(first as u32..) {
+                *x = base2_u32(a);
+            }
+            return;
+        }
+        for k in slots {
+            out[k] = radical_inverse(0, a);
+            a = a.wrapping_add(1);
+        }
+        return;
+    }
+    let f = &FAST[d];
+    let b = u64::from(f.b);
+    let mut next = slots.next();
+    while let Some(mut k) = next {
+        if a >= u64::from(f.big) {
+            out[k] = radical_inverse(dim, a);
+            a = a.wrapping_add(1);
+            next = slots.next();
+            continue;
+        }
+        let class = byte_class(a);
+        let n = usize::from(f.n[class]).min(32);
+        let end = (1u64 << (8 * class)).min(u64::from(f.big));
+        // Digits of a, least significant first, and their weights b^(n−1−j) in R.
+        let mut digits = [0u64; 32];
+        let mut weights = [0u64; 32];
+        let mut rest = a;
+        let mut rev = 0u64;
+        let mut w = 1u64;
+        for j in (0..n).rev() {
+            weights[j] = w;
+            w *= b;
+        }
+        for j in 0..n {
+            digits[j] = rest % b;
+            rest /= b;
+            rev += digits[j] * weights[j];
+        }
+        let inv_pow = f.inv_pow[class];
+        loop {
+            out[k] = narrow(rev as i64 as f64, inv_pow);
+            a += 1;
+            // Increment the digits, carrying; R follows each changed digit.
+            for j in 0..n {
+                if digits[j] + 1 < b {
+                    digits[j] += 1;
+                    rev += weights[j];
+                    break;
+                }
+                rev -= (b - 1) * weights[j];
+                digits[j] = 0;
+            }
+            next = slots.next();
+            match next {
+                Some(slot) if a < end => k = slot,
+                _ => break,
+            }
+        }
+    }
 }
 
 /// Φ_b(a) as an `f64` in `[0, 1)`, correctly rounded (so within ½ ulp).
@@ -382,6 +561,22 @@ pub fn radical_inverse_f64(dim: u32, a: u64) -> f64 {
     }
     let (num, den) = phi_fraction(d, a);
     fraction_f64(num, den, 0, false)
+}
+
+/// Φ_b(first), Φ_b(first + 1), … (`b = prime(dim)`) written into `out`: bit for bit what
+/// [`radical_inverse`] returns for each index, in amortised O(1) per value (the digits of the
+/// index are incremented with carries instead of being recomputed).
+///
+/// Total: `dim` wraps modulo 1024 and indices wrap at `u64::MAX`.
+///
+/// ```
+/// use nyquist::radical::{fill_radical_inverse, radical_inverse};
+/// let mut out = [0.0f32; 100];
+/// fill_radical_inverse(3, 9_999_950, &mut out);
+/// assert!((0..100).all(|i| out[i] == radical_inverse(3, 9_999_950 + i as u64)));
+/// ```
+pub fn fill_radical_inverse(dim: u32, first: u64, out: &mut [f32]) {
+    fill_consecutive(dim, first, out, 0, 1);
 }
 
 /// The index whose first `n_digits` base-`b` digits, reversed, are the low `n_digits` digits of

@@ -46,7 +46,20 @@ fn tables_are_consistent() {
                 u128::from(ROW[row].magic),
                 (1u128 << 64).div_ceil(u128::from(p))
             );
-            assert_eq!(ROW[row].inv, 1.0 / p as f64);
+        }
+        // The fast path's per-class rows: n digits hold every index of the class below b^k.
+        let f = &FAST[d];
+        assert_eq!((u64::from(f.b), u64::from(f.big)), (b, info.big));
+        for class in 1..5 {
+            let n = u32::from(f.n[class]);
+            assert!(n <= info.k);
+            let largest = ((1u64 << (8 * class)) - 1).min(info.big - 1);
+            assert!(largest < b.pow(n), "base {b}, class {class}");
+            assert_eq!(
+                u128::from(f.magic[class]),
+                (1u128 << 64).div_ceil(u128::from(b.pow(n)))
+            );
+            assert_eq!(f.inv_pow[class], 1.0 / b.pow(n) as f64);
         }
         for (len, &n) in DIGITS[d].iter().enumerate().skip(1) {
             // DIGITS[d][len] digits hold every chunk of that bit length below b^k.
@@ -303,6 +316,46 @@ fn pair_split_is_exact_for_every_pair_of_small_bases_and_sampled_large_ones() {
         let step = if d < 64 { 1 } else { (b * b / 5000).max(1) };
         for pair in (0..b * b).step_by(step as usize).chain([b * b - 1]) {
             assert_eq!((pair * info.split) >> 40, pair / b, "b={b} D={pair}");
+        }
+    }
+}
+
+/// The incremental fill equals random access bit for bit, across byte-class boundaries, the
+/// fast-path limit `b^k`, and the `u64` wrap.
+#[test]
+fn fill_matches_random_access_across_boundaries() {
+    let mut buf = [0.0f32; 600];
+    for dim in [0u32, 1, 2, 5, 31, 63, 200, 1023, 1024 + 7] {
+        let big = BASES[(dim % PRIME_COUNT) as usize].big;
+        for first in [
+            0u64,
+            200,
+            65_300,
+            (1 << 24) - 300,
+            (1 << 32) - 300,
+            big - 300,
+            u64::MAX - 299,
+        ] {
+            fill_radical_inverse(dim, first, &mut buf);
+            for (i, &x) in buf.iter().enumerate() {
+                let a = first.wrapping_add(i as u64);
+                assert_eq!(
+                    x.to_bits(),
+                    radical_inverse(dim, a).to_bits(),
+                    "dim {dim}, index {a}"
+                );
+            }
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn fill_matches_random_access(dim in 0u32..1024, first in any::<u32>(), len in 1usize..300) {
+        let mut buf = std::vec![0.0f32; len];
+        fill_radical_inverse(dim, u64::from(first), &mut buf);
+        for (i, &x) in buf.iter().enumerate() {
+            prop_assert_eq!(x.to_bits(), radical_inverse(dim, u64::from(first) + i as u64).to_bits());
         }
     }
 }

@@ -4,11 +4,11 @@
 //! Sources: van der Corput (1935); Halton (1960); Kocis & Whiten (1997) for the Halton–Zaremba
 //! (folded) form; Kollig & Keller (2002) for scrambling by digit permutation.
 
-use super::Sequence;
+use super::{Sequence, check_fill};
 use crate::Error;
 use crate::radical::{
-    PRIME_COUNT, folded_radical_inverse, folded_radical_inverse_f64, radical_inverse,
-    radical_inverse_f64, scrambled_radical_inverse, scrambled_radical_inverse_f64,
+    PRIME_COUNT, fill_consecutive, folded_radical_inverse, folded_radical_inverse_f64,
+    radical_inverse, radical_inverse_f64, scrambled_radical_inverse, scrambled_radical_inverse_f64,
 };
 
 /// Validates a dimension count for the radical-inverse sets: `1 ..= 1024`.
@@ -43,6 +43,12 @@ impl Sequence for VanDerCorput {
     #[inline]
     fn sample(&self, index: u64, _dim: u32) -> f32 {
         radical_inverse(0, index)
+    }
+
+    fn fill(&self, first: u64, dims: u32, out: &mut [f32]) -> Result<u64, Error> {
+        let n = check_fill(1, None, first, dims, out.len())?;
+        fill_consecutive(0, first, out, 0, 1);
+        Ok(n)
     }
 
     #[inline]
@@ -101,6 +107,18 @@ impl Sequence for Halton {
     #[inline]
     fn sample_f64(&self, index: u64, dim: u32) -> f64 {
         radical_inverse_f64(dim % self.dims, index)
+    }
+
+    /// As [`Sequence::fill`], the same bits, but each dimension's run of consecutive indices is
+    /// generated incrementally ([`fill_radical_inverse`](crate::radical::fill_radical_inverse)):
+    /// amortised O(1) per value instead of O(digits).
+    fn fill(&self, first: u64, dims: u32, out: &mut [f32]) -> Result<u64, Error> {
+        let n = check_fill(self.dims, None, first, dims, out.len())?;
+        let stride = dims as usize;
+        for dim in 0..dims {
+            fill_consecutive(dim, first, out, dim as usize, stride);
+        }
+        Ok(n)
     }
 }
 
