@@ -157,9 +157,9 @@ impl LatinHypercube {
         let discard = 32 - strata.jitter_bits();
         for (dim, x0) in (0..self.dims).zip(0..) {
             let key = hash::hash2(self.seed, u64::from(dim));
-            let perm_seed = (key >> 32) as u32;
+            let perm = hash::Permutation::new(n, (key >> 32) as u32);
             for (i, point) in (0..n).zip(out.chunks_exact_mut(self.dims as usize)) {
-                let stratum = hash::permute(i, n, perm_seed);
+                let stratum = perm.apply(i);
                 let jitter = (hash::hash2(key, u64::from(i)) >> 32) as u32 >> discard;
                 point[x0] = strata.jittered(stratum, jitter);
             }
