@@ -8,11 +8,9 @@
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::rng::{default_rng, uniform_f32};
-// The zero-two, Halton, Hammersley and Sobol samplers join these benches once they are wired
-// into `sampler/mod.rs` (they wait for `crate::radical` and `crate::sequence`).
 use nyquist::sampler::{
-    BestCandidateSampler, Jitter, PixelRangeSampler, RandomSampler, Sample, SampleLayout, Sampler,
-    StratifiedSampler, camera_sample,
+    BestCandidateSampler, HaltonSampler, HaltonScramble, Jitter, PixelRangeSampler, RandomSampler,
+    Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler, camera_sample,
 };
 use std::hint::black_box;
 
@@ -62,6 +60,12 @@ fn camera_sample_bench(c: &mut Criterion) {
         StratifiedSampler::new(4, 4, Jitter::Jittered, 1).unwrap()
     );
     bench!("best_candidate", BestCandidateSampler::new(SPP, 1).unwrap());
+    bench!("zero_two", ZeroTwoSampler::new(SPP, 1).unwrap());
+    bench!("sobol", SobolSampler::new([1024, 1024], SPP, 1).unwrap());
+    bench!(
+        "halton",
+        HaltonSampler::new([1024, 1024], SPP, HaltonScramble::None, 1).unwrap()
+    );
     g.finish();
 }
 
@@ -115,6 +119,12 @@ fn request_and_fill_bench(c: &mut Criterion) {
         StratifiedSampler::new(4, 4, Jitter::Jittered, 1).unwrap()
     );
     bench!("random", RandomSampler::new(SPP, 1).unwrap());
+    bench!("zero_two", ZeroTwoSampler::new(SPP, 1).unwrap());
+    bench!("sobol", SobolSampler::new([1024, 1024], SPP, 1).unwrap());
+    bench!(
+        "halton",
+        HaltonSampler::new([1024, 1024], SPP, HaltonScramble::None, 1).unwrap()
+    );
     g.finish();
 }
 

@@ -133,6 +133,7 @@ impl Sampler for BestCandidateSampler {
         self.spp
     }
 
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -142,18 +143,21 @@ impl Sampler for BestCandidateSampler {
         self.dim = dim;
     }
 
+    #[inline]
     fn get_1d(&mut self) -> f32 {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(1);
         self.value(d)
     }
 
+    #[inline]
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
         [self.value(d), self.value(d.wrapping_add(1))]
     }
 
+    #[inline]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         [self.value(0), self.value(1)]

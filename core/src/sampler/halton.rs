@@ -187,6 +187,7 @@ impl Sampler for HaltonSampler {
         self.spp
     }
 
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;

@@ -31,18 +31,21 @@
 /// always dimensions 0 and 1.
 macro_rules! global_point_dimensions {
     () => {
+        #[inline]
         fn get_1d(&mut self) -> f32 {
             let d = self.dim;
             self.dim = self.dim.wrapping_add(1);
             self.sample(d)
         }
 
+        #[inline]
         fn get_2d(&mut self) -> [f32; 2] {
             let d = self.dim;
             self.dim = self.dim.wrapping_add(2);
             [self.sample(d), self.sample(d.wrapping_add(1))]
         }
 
+        #[inline]
         fn get_pixel_2d(&mut self) -> [f32; 2] {
             self.dim = self.dim.max(2);
             [self.sample(0), self.sample(1)]

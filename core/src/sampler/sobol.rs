@@ -199,6 +199,7 @@ impl Sampler for SobolSampler {
         self.spp
     }
 
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         self.index = self.sequence_index(pixel, sample_index);
         self.dim = dim;

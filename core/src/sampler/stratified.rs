@@ -2,7 +2,7 @@
 
 use super::{Sampler, pixel_hash};
 use crate::Error;
-use crate::hash::{hash2, hash3, mix64, permute, unit_f32};
+use crate::hash::{Permutation, hash2, hash3, mix64, permute, unit_f32};
 use crate::math::clamp_unit;
 
 pub use crate::stratify::Jitter;
@@ -47,7 +47,9 @@ pub struct StratifiedSampler {
     /// `hash(pixel, seed)`, cached across samples of one pixel.
     pixel_key: u64,
     /// The permutation keys of dimensions 2 (time) and 3 (lens) for the current pixel.
-    camera_keys: [u32; 2],
+    /// The time and lens permutations of the current pixel (dimensions 2 and 3), built once
+    /// per pixel.
+    camera_perms: [Permutation; 2],
     /// `hash(pixel_key, index)`: the jitter source of the current sample.
     sample_key: u64,
     index: u32,
@@ -65,8 +67,11 @@ fn dim_key(pixel_key: u64, dim: u32) -> u32 {
     key as u32 ^ (key >> 32) as u32
 }
 
-fn camera_keys(pixel_key: u64) -> [u32; 2] {
-    [dim_key(pixel_key, 2), dim_key(pixel_key, 3)]
+fn camera_perms(pixel_key: u64, spp: u32) -> [Permutation; 2] {
+    [
+        Permutation::new(spp, dim_key(pixel_key, 2)),
+        Permutation::new(spp, dim_key(pixel_key, 3)),
+    ]
 }
 
 impl StratifiedSampler {
@@ -102,7 +107,7 @@ impl StratifiedSampler {
             seed,
             pixel: [0; 2],
             pixel_key: pixel_hash([0; 2], seed, 0x7374_7261),
-            camera_keys: camera_keys(pixel_hash([0; 2], seed, 0x7374_7261)),
+            camera_perms: camera_perms(pixel_hash([0; 2], seed, 0x7374_7261), spp),
             sample_key: 0,
             index: 0,
             dim: 0,
@@ -160,7 +165,7 @@ impl StratifiedSampler {
 
     /// This sample's stratum in dimension `dim`: a per-(pixel, dim) permutation of the sample
     /// index; dimension 0 (the image sample) needs none and takes `index mod spp`.
-    #[inline]
+    #[inline(always)]
     fn stratum(&self, dim: u32) -> u32 {
         if dim == 0 {
             return if self.index < self.spp {
@@ -169,12 +174,11 @@ impl StratifiedSampler {
                 self.index % self.spp
             };
         }
-        let key = match dim {
+        match dim {
             // The camera's time and lens permutations, cached per pixel.
-            2 | 3 => self.camera_keys[(dim - 2) as usize],
-            _ => dim_key(self.pixel_key, dim),
-        };
-        permute(self.index, self.spp, key)
+            2 | 3 => self.camera_perms[(dim - 2) as usize].apply(self.index),
+            _ => permute(self.index, self.spp, dim_key(self.pixel_key, dim)),
+        }
     }
 
     /// Stratum `s` as a grid cell `(s % xs, s / xs)`, dividing by multiplication (Lemire, Kaser
@@ -200,11 +204,15 @@ impl StratifiedSampler {
     }
 }
 
-/// A Latin hypercube axis: value `j` of `n` is `(permute(j, n, key) + offset) / n`.
+/// A Latin hypercube axis keyed by `key`: value `j` of `n` is `(π(j) + offset) / n`.
 #[inline]
-fn lhs_value(j: u32, n: u32, key: u64, offset: f32) -> f32 {
-    let s = permute(j, n, key as u32 ^ (key >> 32) as u32);
-    clamp_unit((s as f32 + offset) / n as f32)
+fn lhs_axis(n: u32, key: u64) -> Permutation {
+    Permutation::new(n, key as u32 ^ (key >> 32) as u32)
+}
+
+#[inline]
+fn lhs_value(perm: &Permutation, j: u32, inv_n: f32, offset: f32) -> f32 {
+    clamp_unit((perm.apply(j) as f32 + offset) * inv_n)
 }
 
 /// Jitters for point `j` of an array keyed by `key` (two per hash).
@@ -224,17 +232,19 @@ impl Sampler for StratifiedSampler {
         self.spp
     }
 
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
             self.pixel_key = pixel_hash(pixel, self.seed, 0x7374_7261);
-            self.camera_keys = camera_keys(self.pixel_key);
+            self.camera_perms = camera_perms(self.pixel_key, self.spp);
         }
         self.index = sample_index;
         self.sample_key = mix64(self.pixel_key ^ u64::from(sample_index).wrapping_mul(DIM_STEP));
         self.dim = dim;
     }
 
+    #[inline]
     fn get_1d(&mut self) -> f32 {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
@@ -242,12 +252,14 @@ impl Sampler for StratifiedSampler {
         clamp_unit((s as f32 + self.jitters(dim)[0]) * self.inv[2])
     }
 
+    #[inline]
     fn get_2d(&mut self) -> [f32; 2] {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(2);
         self.value_2d(dim)
     }
 
+    #[inline]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.value_2d(0)
@@ -258,8 +270,9 @@ impl Sampler for StratifiedSampler {
         self.dim = self.dim.wrapping_add(1);
         let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
         let key = hash3(self.sample_key, u64::from(dim), 0x6c68_7331);
+        let (perm, inv_n) = (lhs_axis(n, key), 1.0 / n as f32);
         for (j, x) in (0..n).zip(out) {
-            *x = lhs_value(j, n, key, lhs_jitters(key, j, self.jitter)[0]);
+            *x = lhs_value(&perm, j, inv_n, lhs_jitters(key, j, self.jitter)[0]);
         }
     }
 
@@ -269,10 +282,11 @@ impl Sampler for StratifiedSampler {
         let n = u32::try_from(out.len() / 2).unwrap_or(u32::MAX);
         let kx = hash3(self.sample_key, u64::from(dim), 0x6c68_7332);
         let ky = hash2(kx, 0x6c68_7379);
+        let (px, py, inv_n) = (lhs_axis(n, kx), lhs_axis(n, ky), 1.0 / n as f32);
         for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
             let [ox, oy] = lhs_jitters(kx, j, self.jitter);
-            p[0] = lhs_value(j, n, kx, ox);
-            p[1] = lhs_value(j, n, ky, oy);
+            p[0] = lhs_value(&px, j, inv_n, ox);
+            p[1] = lhs_value(&py, j, inv_n, oy);
         }
     }
 }

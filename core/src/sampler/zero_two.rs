@@ -2,7 +2,7 @@
 
 use super::{Sampler, pixel_hash};
 use crate::Error;
-use crate::hash::{hash2, hash3, mix64, permute};
+use crate::hash::{Permutation, hash2, hash3, mix64, permute};
 use crate::sequence::ZeroTwo;
 
 /// Splits a 64-bit hash into the two 32-bit XOR scrambles of a [`ZeroTwo`].
@@ -61,12 +61,46 @@ pub struct ZeroTwoSampler {
     pixel: [u32; 2],
     /// `hash(pixel, seed)`, cached across samples of one pixel.
     pixel_key: u64,
+    /// The camera's pairs of the current pixel (image, time, lens), built once per pixel.
+    camera: [PairSource; 3],
     index: u32,
     dim: u32,
 }
 
 /// Odd constant separating dimension pairs in the per-pair hash.
 const PAIR_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
+
+/// The per-(pixel, pair) shuffle and scramble: pair `pair` of sample `i` is point `perm(i)` of
+/// `ZeroTwo::new(scramble)`.
+#[derive(Clone, Copy, Debug)]
+struct PairSource {
+    perm: Permutation,
+    z: ZeroTwo,
+}
+
+impl PairSource {
+    #[inline]
+    fn new(pixel_key: u64, spp: u32, pair: u32) -> PairSource {
+        let h = mix64(pixel_key ^ u64::from(pair).wrapping_mul(PAIR_STEP));
+        PairSource {
+            perm: Permutation::new(spp, fold(h)),
+            z: ZeroTwo::new(scrambles(mix64(h ^ 0x3032_3032))),
+        }
+    }
+
+    #[inline]
+    fn point(&self, index: u32) -> [f32; 2] {
+        self.z.sample_2d(self.perm.apply(index))
+    }
+}
+
+/// The pair keys of the camera's dimensions: image (0), time (dimension 2, a 1D value, so in the
+/// 1D key space) and lens (3).
+const CAMERA_PAIRS: [u32; 3] = [0, 2 | 0x8000_0000, 3];
+
+fn camera_sources(pixel_key: u64, spp: u32) -> [PairSource; 3] {
+    CAMERA_PAIRS.map(|pair| PairSource::new(pixel_key, spp, pair))
+}
 
 impl ZeroTwoSampler {
     /// The samples per pixel a request of `requested` becomes (the next power of two), and
@@ -105,6 +139,7 @@ impl ZeroTwoSampler {
             seed,
             pixel: [0; 2],
             pixel_key: pixel_hash([0; 2], seed, 0x3032),
+            camera: camera_sources(pixel_hash([0; 2], seed, 0x3032), spp),
             index: 0,
             dim: 0,
         })
@@ -112,9 +147,10 @@ impl ZeroTwoSampler {
 
     #[inline]
     fn point(&self, pair: u32) -> [f32; 2] {
-        let h = mix64(self.pixel_key ^ u64::from(pair).wrapping_mul(PAIR_STEP));
-        let i = permute(self.index, self.spp, fold(h));
-        ZeroTwo::new(scrambles(mix64(h ^ 0x3032_3032))).sample_2d(i)
+        match CAMERA_PAIRS.iter().position(|&p| p == pair) {
+            Some(k) => self.camera[k].point(self.index),
+            None => PairSource::new(self.pixel_key, self.spp, pair).point(self.index),
+        }
     }
 }
 
@@ -123,15 +159,18 @@ impl Sampler for ZeroTwoSampler {
         self.spp
     }
 
+    #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
             self.pixel_key = pixel_hash(pixel, self.seed, 0x3032);
+            self.camera = camera_sources(self.pixel_key, self.spp);
         }
         self.index = sample_index;
         self.dim = dim;
     }
 
+    #[inline]
     fn get_1d(&mut self) -> f32 {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(1);
@@ -139,12 +178,14 @@ impl Sampler for ZeroTwoSampler {
         self.point(d | 0x8000_0000)[0]
     }
 
+    #[inline]
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
         self.point(d)
     }
 
+    #[inline]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.point(0)
