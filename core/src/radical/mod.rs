@@ -185,7 +185,8 @@ const fn build_digits() -> [[u8; 33]; 1024] {
 
 static DIGITS: [[u8; 33]; 1024] = build_digits();
 
-/// Everything the `f32` fast path of one base reads, in two cache lines.
+/// Everything the `f32` fast path of one base reads, in two cache lines (plus the base's
+/// digit-reversal table, for bases up to 61).
 ///
 /// For an index `a < big = b^k` of byte class `c = ⌈bit_len(a)/8⌉` (`0 ..= 4`), `n[c]` is the
 /// number of base-`b` digits of `2^(8c) − 1` capped at `k`, `magic[c] = ⌈2⁶⁴/b^n[c]⌉` and
@@ -200,8 +201,79 @@ struct FastBase {
     inv_pow: [f64; 5],
     b: u32,
     big: u32,
+    /// The chunk `c = b^j` of the digit-reversal table (`c = b`, `j = 1`, no table, for bases
+    /// above [`CHUNK_LIMIT`]`^(1/2)`).
+    chunk: u32,
+    /// Offset of this base's table in [`CHUNK_REV`].
+    table: u32,
     n: [u8; 5],
+    /// Per class: the leading digits taken one at a time (`n mod j`), then `n / j` chunks.
+    lead: [u8; 5],
+    chunks: [u8; 5],
 }
+
+/// The largest chunk `b^j` with a digit-reversal table; bases with `b² ≤ CHUNK_LIMIT` (2 ..= 61)
+/// get one. 4096 entries of `u16` per base at most, 62 KB in all.
+const CHUNK_LIMIT: u64 = 4096;
+
+/// Digits per table chunk for base `b`: the largest `j` with `b^j ≤ CHUNK_LIMIT`, or 1.
+const fn chunk_len(b: u64) -> u32 {
+    let mut j = 0;
+    let mut p = 1u64;
+    while p * b <= CHUNK_LIMIT {
+        p *= b;
+        j += 1;
+    }
+    if j < 2 { 1 } else { j }
+}
+
+const fn table_total() -> usize {
+    let mut total = 0;
+    let mut i = 1;
+    while i < 1024 {
+        let b = PRIME_TABLE[i] as u64;
+        let j = chunk_len(b);
+        if j > 1 {
+            total += b.pow(j) as usize;
+        }
+        i += 1;
+    }
+    total
+}
+
+/// `CHUNK_REV[table + e] = Σ_i d_i·bⁱ` for a chunk `e < b^j` with digits `d_0 d_1 … d_(j−1)`
+/// (most significant first): the chunk's digits reversed, as the fast path adds them to `R`.
+const fn build_chunk_rev() -> [u16; table_total()] {
+    let mut out = [0u16; table_total()];
+    let mut off = 0usize;
+    let mut i = 1;
+    while i < 1024 {
+        let b = PRIME_TABLE[i] as u64;
+        let j = chunk_len(b);
+        if j > 1 {
+            let c = b.pow(j);
+            let mut e = 0u64;
+            while e < c {
+                // Least significant digit of e is d_(j−1), weight b^(j−1).
+                let mut x = e;
+                let mut rev = 0u64;
+                let mut k = 0;
+                while k < j {
+                    rev = rev * b + x % b;
+                    x /= b;
+                    k += 1;
+                }
+                out[off + e as usize] = rev as u16;
+                e += 1;
+            }
+            off += c as usize;
+        }
+        i += 1;
+    }
+    out
+}
+
+static CHUNK_REV: [u16; table_total()] = build_chunk_rev();
 
 const fn build_fast() -> [FastBase; 1024] {
     let bases = build_bases();
@@ -211,23 +283,42 @@ const fn build_fast() -> [FastBase; 1024] {
         inv_pow: [1.0; 5],
         b: 0,
         big: 0,
+        chunk: 0,
+        table: 0,
         n: [0; 5],
+        lead: [0; 5],
+        chunks: [0; 5],
     }; 1024];
+    let mut table = 0u32;
     let mut i = 0;
     while i < 1024 {
         let info = bases[i];
+        let j = if i == 0 { 1 } else { chunk_len(info.b) };
         let mut f = FastBase {
             magic: [0; 5],
             inv_pow: [1.0; 5],
             b: info.b as u32,
             big: info.big as u32,
+            chunk: info.b.pow(j) as u32,
+            table,
             n: [0; 5],
+            lead: [0; 5],
+            chunks: [0; 5],
         };
+        if j > 1 {
+            table += info.b.pow(j) as u32;
+        }
         let mut c = 1;
         while c <= 4 {
             let n = digits[i][8 * c];
             let pow = info.b.pow(n as u32);
             f.n[c] = n;
+            if j > 1 {
+                f.lead[c] = n % j as u8;
+                f.chunks[c] = n / j as u8;
+            } else {
+                f.lead[c] = n;
+            }
             f.magic[c] = u64::MAX / pow + 1;
             f.inv_pow[c] = 1.0 / pow as f64;
             c += 1;
@@ -439,10 +530,23 @@ fn phi_fast(f: &FastBase, a: u64) -> f32 {
     let mut y = a.wrapping_mul(f.magic[class]);
     let mut rev = 0.0f64;
     let mut weight = 1.0f64;
-    for _ in 0..f.n[class] {
+    for _ in 0..f.lead[class] {
         let t = u128::from(y) * b;
         rev += (t >> 64) as i64 as f64 * weight;
         weight *= bf;
+        y = t as u64;
+    }
+    // The rest `j` digits at a time: one multiply by `c = b^j` hands out a chunk, whose reversed
+    // digits come from the table (the product's error bound is the same as digit by digit: the
+    // multipliers' product is still bⁿ).
+    let c = u128::from(f.chunk);
+    let cf = f64::from(f.chunk);
+    let table = CHUNK_REV.get(f.table as usize..).unwrap_or(&[]);
+    for _ in 0..f.chunks[class] {
+        let t = u128::from(y) * c;
+        let e = (t >> 64) as usize;
+        rev += f64::from(table.get(e).copied().unwrap_or(0)) * weight;
+        weight *= cf;
         y = t as u64;
     }
     narrow(rev, f.inv_pow[class])

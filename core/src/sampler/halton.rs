@@ -71,6 +71,12 @@ pub struct HaltonSampler {
     pixel: [u32; 2],
     offset: u64,
     index: u64,
+    /// The indices dimensions 0 and 1 read, `index >> exponent₀` and `index / 3^exponent₁`:
+    /// because the stride is a multiple of both scales they are `offset`'s plus the sample
+    /// index times `steps`, so no division runs per sample.
+    axis_index: [u64; 2],
+    axis_base: [u64; 2],
+    steps: [u64; 2],
     dim: u32,
 }
 
@@ -121,6 +127,9 @@ impl HaltonSampler {
             pixel: [0; 2],
             offset: 0,
             index: 0,
+            axis_index: [0; 2],
+            axis_base: [0; 2],
+            steps: [stride >> exponents[0], stride / scales[1]],
             dim: 0,
         })
     }
@@ -175,8 +184,13 @@ impl HaltonSampler {
     fn sample(&self, dim: u32) -> f32 {
         let dim = dim % 1024;
         match dim {
-            0 => self.value(0, self.index >> self.exponents[0]),
-            1 => self.value(1, self.index / self.scales[1]),
+            0 => self.value(0, self.axis_index[0]),
+            1 => self.value(1, self.axis_index[1]),
+            // The camera's time and lens dimensions with the base a constant, so the per-base
+            // table reads fold away.
+            2 => self.value(2, self.index),
+            3 => self.value(3, self.index),
+            4 => self.value(4, self.index),
             _ => self.value(dim, self.index),
         }
     }
@@ -192,8 +206,17 @@ impl Sampler for HaltonSampler {
         if pixel != self.pixel {
             self.pixel = pixel;
             self.offset = self.pixel_offset(pixel);
+            self.axis_base = [
+                self.offset >> self.exponents[0],
+                self.offset / self.scales[1],
+            ];
         }
-        self.index = self.offset + u64::from(sample_index) * self.stride;
+        let i = u64::from(sample_index);
+        self.index = self.offset + i * self.stride;
+        self.axis_index = [
+            self.axis_base[0] + i * self.steps[0],
+            self.axis_base[1] + i * self.steps[1],
+        ];
         self.dim = dim;
     }
 
