@@ -44,7 +44,7 @@ fn constant_radiance_gives_that_constant_in_every_pixel_for_every_filter() {
             &mut film,
             4,
             2,
-            |t| fill_tile(t, 3, |_, _| [0.3, 1.0, 7.5]),
+            |t, _| fill_tile(t, 3, |_, _| [0.3, 1.0, 7.5]),
             |_, _| {},
         )
         .unwrap();
@@ -132,7 +132,14 @@ fn zoneplate(x: f32, y: f32) -> [f32; 3] {
 fn image_is_bit_identical_for_any_thread_count_and_tile_order() {
     let reference = {
         let mut film = Film::new(FilmConfig::new(40, 30), &Mitchell::default()).unwrap();
-        render_tiles(&mut film, 7, 1, |t| fill_tile(t, 2, zoneplate), |_, _| {}).unwrap();
+        render_tiles(
+            &mut film,
+            7,
+            1,
+            |t, _| fill_tile(t, 2, zoneplate),
+            |_, _| {},
+        )
+        .unwrap();
         bits(&mut film)
     };
     for threads in [1, 2, 8, 16] {
@@ -142,7 +149,7 @@ fn image_is_bit_identical_for_any_thread_count_and_tile_order() {
                 &mut film,
                 7,
                 threads,
-                |t| fill_tile(t, 2, zoneplate),
+                |t, _| fill_tile(t, 2, zoneplate),
                 |_, _| {},
             )
             .unwrap();
