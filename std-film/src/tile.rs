@@ -29,35 +29,75 @@ impl Pixel {
     }
 }
 
-/// Where a tile's samples go: the stored pixel rectangle and the filter radius, cached per tile
-/// so the per-sample path reads no shared state but the table.
+/// Where a tile's samples go, cached per tile in the forms the per-sample path uses.
 #[derive(Clone, Copy, Debug)]
 struct Geometry {
     /// The stored pixels.
     bounds: Bounds,
-    /// Filter radius `[rx, ry]`, widened to `f64` once.
+    /// Filter radius `[rx, ry]`.
     radius: [f64; 2],
+    /// Centre of the first stored pixel, `(x0 + ½, y0 + ½)`.
+    origin: [f64; 2],
+    /// Stored columns and rows.
+    size: [i64; 2],
+    /// `size + 1`, the upper clamp of footprint ends.
+    limit: [f64; 2],
 }
 
-/// A footprint: pixels `[x0, x1) × [y0, y1)` and the offsets of their first centre from `p`.
+impl Geometry {
+    fn new(bounds: Bounds, radius: [f32; 2]) -> Geometry {
+        let size = [bounds.width() as i64, bounds.height() as i64];
+        Geometry {
+            bounds,
+            radius: radius.map(f64::from),
+            origin: [bounds.x0 as f64 + 0.5, bounds.y0 as f64 + 0.5],
+            size,
+            limit: [(size[0] + 1) as f64, (size[1] + 1) as f64],
+        }
+    }
+
+    /// Stored columns (or rows, `a = 1`) `[i0, i1)` reached from the finite position `p` along
+    /// axis `a`, in tile-local indices: film pixels `⌈p − ½ − r⌉ … ⌊p − ½ + r⌋` clipped to the
+    /// stored ones (empty when `i0 ≥ i1`), and `c = p − ½ − first`, the sample's local position
+    /// (the offset of local pixel `i`'s centre from the sample is `i − c`).
+    #[inline(always)]
+    fn span(&self, p: f64, a: usize) -> (i64, i64, f64) {
+        let c = p - self.origin[a];
+        let r = self.radius[a];
+        // Clamping first keeps the conversions exact for any finite p (even 1e30).
+        let lo = (c - r).max(-1.0).min(self.limit[a]);
+        let hi = (c + r).max(-1.0).min(self.limit[a]);
+        (
+            ceil_i64(lo).max(0),
+            (floor_i64(hi) + 1).min(self.size[a]),
+            c,
+        )
+    }
+}
+
+/// A footprint in tile-local indices: columns `[x0, x1)`, rows `[y0, y1)`, and the sample's
+/// local position `c` (see [`Geometry::span`]).
 #[derive(Clone, Copy, Debug)]
 struct Footprint {
-    x0: i64,
-    x1: i64,
-    y0: i64,
-    y1: i64,
-    /// The sample position in `f64`; offsets `x + ½ − p` are formed in `f64` and rounded once.
-    p: [f64; 2],
+    x0: usize,
+    x1: usize,
+    y0: usize,
+    y1: usize,
+    c: [f64; 2],
 }
 
 impl Footprint {
+    /// Offset from the sample to the centre of local column `i`, formed in `f64` and rounded
+    /// once.
     #[inline(always)]
-    fn dx(&self, x: i64) -> f32 {
-        (x as f64 + 0.5 - self.p[0]) as f32
+    fn dx(&self, i: usize) -> f32 {
+        // i64 → f64 is one instruction (cvtsi2sd); usize → f64 is several.
+        (i as i64 as f64 - self.c[0]) as f32
     }
+    /// Offset from the sample to the centre of local row `j`.
     #[inline(always)]
-    fn dy(&self, y: i64) -> f32 {
-        (y as f64 + 0.5 - self.p[1]) as f32
+    fn dy(&self, j: usize) -> f32 {
+        (j as i64 as f64 - self.c[1]) as f32
     }
 }
 
@@ -75,33 +115,19 @@ fn ceil_i64(v: f64) -> i64 {
     t + i64::from((t as f64) < v)
 }
 
-/// Pixels `[a, b)` along one axis reached from the finite position `p`: `⌈p − ½ − r⌉ …
-/// ⌊p − ½ + r⌋`, clipped to `[lo, hi)` (empty when `a ≥ b`).
-#[inline(always)]
-fn span(p: f64, r: f64, lo: i64, hi: i64) -> (i64, i64) {
-    let c = p - 0.5;
-    // Clamping first keeps the conversions exact for any finite p (even 1e30).
-    let (flo, fhi) = ((lo - 1) as f64, (hi + 1) as f64);
-    let a = (c - r).max(flo).min(fhi);
-    let b = (c + r).max(flo).min(fhi);
-    (ceil_i64(a).max(lo), (floor_i64(b) + 1).min(hi))
-}
-
 /// Adds `f·l` and `f` to every pixel of the footprint, `f` from `w`. `pixels` is the tile's
-/// row-major storage of `g.bounds`. Separable sources take `nx + ny` 1D weights (once per column
-/// and row) and an outer product; the others one `xy` per pixel.
+/// row-major storage (`stride` columns). Separable sources take `nx + ny` 1D weights (once per
+/// column and row) and an outer product; the others one `xy` per pixel.
 #[inline(always)]
 fn accumulate<W: WeightSource + ?Sized>(
     pixels: &mut [Pixel],
-    g: &Geometry,
+    stride: usize,
     fp: &Footprint,
     l: [f64; 3],
     w: &W,
 ) {
-    let b = g.bounds;
-    let stride = b.width() as usize;
-    let (nx, ny) = ((fp.x1 - fp.x0) as usize, (fp.y1 - fp.y0) as usize);
-    let first = (fp.y0 - b.y0) as usize * stride + (fp.x0 - b.x0) as usize;
+    let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
+    let first = fp.y0 * stride + fp.x0;
     // One bounds check for the whole footprint; every row below is inside it.
     let Some(rows) = pixels.get_mut(first..first + (ny - 1) * stride + nx) else {
         return;
@@ -110,27 +136,37 @@ fn accumulate<W: WeightSource + ?Sized>(
         // Stack buffers sized for the footprint: box (≤ 2), radius ≤ 1.5 (≤ 4), ≤ 3.5 (≤ 8),
         // ≤ 15.5 (≤ 32); wider footprints fall through to the per-pixel path.
         match nx {
-            0..=2 => return separable::<2, W>(rows, stride, fp, nx, ny, l, w),
-            3..=4 => return separable::<4, W>(rows, stride, fp, nx, ny, l, w),
-            5..=8 => return separable::<8, W>(rows, stride, fp, nx, ny, l, w),
-            9..=32 => return separable::<32, W>(rows, stride, fp, nx, ny, l, w),
+            1 if ny == 1 => {
+                let f = f64::from(w.x(fp.dx(fp.x0))) * f64::from(w.y(fp.dy(fp.y0)));
+                return add(&mut rows[0], f, l);
+            }
+            0..=2 => return separable::<2, W>(rows, stride, fp, l, w),
+            3..=4 => return separable::<4, W>(rows, stride, fp, l, w),
+            5..=8 => return separable::<8, W>(rows, stride, fp, l, w),
+            9..=32 => return separable::<32, W>(rows, stride, fp, l, w),
             _ => {}
         }
     }
-    for (j, row) in rows.chunks_mut(stride).take(ny).enumerate() {
-        let dy = fp.dy(fp.y0 + j as i64);
-        for (i, p) in row[..nx].iter_mut().enumerate() {
+    for j in 0..ny {
+        let dy = fp.dy(fp.y0 + j);
+        for (i, p) in rows[j * stride..j * stride + nx].iter_mut().enumerate() {
+            let dx = fp.dx(fp.x0 + i);
             let f = if w.separable() {
-                f64::from(w.x(fp.dx(fp.x0 + i as i64))) * f64::from(w.y(dy))
+                f64::from(w.x(dx)) * f64::from(w.y(dy))
             } else {
-                f64::from(w.xy(fp.dx(fp.x0 + i as i64), dy))
+                f64::from(w.xy(dx, dy))
             };
-            p.rgb_sum[0] += f * l[0];
-            p.rgb_sum[1] += f * l[1];
-            p.rgb_sum[2] += f * l[2];
-            p.weight_sum += f;
+            add(p, f, l);
         }
     }
+}
+
+#[inline(always)]
+fn add(p: &mut Pixel, f: f64, l: [f64; 3]) {
+    p.rgb_sum[0] += f * l[0];
+    p.rgb_sum[1] += f * l[1];
+    p.rgb_sum[2] += f * l[2];
+    p.weight_sum += f;
 }
 
 /// The separable path for `nx ≤ M` columns: per column `fx·[l, 1]` in `f64`, then per row
@@ -140,19 +176,19 @@ fn separable<const M: usize, W: WeightSource + ?Sized>(
     rows: &mut [Pixel],
     stride: usize,
     fp: &Footprint,
-    nx: usize,
-    ny: usize,
     l: [f64; 3],
     w: &W,
 ) {
+    let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
     let mut cols = [[0.0f64; 4]; M];
     for (i, c) in cols[..nx].iter_mut().enumerate() {
-        let fx = f64::from(w.x(fp.dx(fp.x0 + i as i64)));
+        let fx = f64::from(w.x(fp.dx(fp.x0 + i)));
         *c = [fx * l[0], fx * l[1], fx * l[2], fx];
     }
-    for (j, row) in rows.chunks_mut(stride).take(ny).enumerate() {
-        let fy = f64::from(w.y(fp.dy(fp.y0 + j as i64)));
-        for (p, c) in row[..nx].iter_mut().zip(&cols[..nx]) {
+    for j in 0..ny {
+        let fy = f64::from(w.y(fp.dy(fp.y0 + j)));
+        let row = &mut rows[j * stride..j * stride + nx];
+        for (p, c) in row.iter_mut().zip(&cols[..nx]) {
             p.rgb_sum[0] += fy * c[0];
             p.rgb_sum[1] += fy * c[1];
             p.rgb_sum[2] += fy * c[2];
@@ -194,10 +230,7 @@ impl FilmTile {
         let n = pixel_bounds.area() as usize;
         FilmTile {
             spec,
-            geometry: Geometry {
-                bounds: pixel_bounds,
-                radius: [f64::from(rx), f64::from(ry)],
-            },
+            geometry: Geometry::new(pixel_bounds, [rx, ry]),
             pixels: vec![Pixel::default(); n],
             // Allocated by the first splat: most renderers never splat.
             splats: Vec::new(),
@@ -265,9 +298,10 @@ impl FilmTile {
         let Some((fp, l)) = self.prepare(p_film, rgb, weight) else {
             return;
         };
+        let stride = self.geometry.size[0] as usize;
         match self.setup.weights.table() {
-            FilterTable::Separable(t) => accumulate(&mut self.pixels, &self.geometry, &fp, l, t),
-            FilterTable::Full(t) => accumulate(&mut self.pixels, &self.geometry, &fp, l, t),
+            FilterTable::Separable(t) => accumulate(&mut self.pixels, stride, &fp, l, t),
+            FilterTable::Full(t) => accumulate(&mut self.pixels, stride, &fp, l, t),
         }
     }
 
@@ -298,9 +332,10 @@ impl FilmTile {
         let Some((fp, l)) = self.prepare(p_film, rgb, weight) else {
             return;
         };
+        let stride = self.geometry.size[0] as usize;
         let separable = self.setup.weights.table().is_separable() && filter.is_separable();
         let direct = Direct { filter, separable };
-        accumulate(&mut self.pixels, &self.geometry, &fp, l, &direct);
+        accumulate(&mut self.pixels, stride, &fp, l, &direct);
     }
 
     /// Checks, counts and clamps a sample; its footprint and `weight·rgb` in `f64`, or `None`
@@ -346,15 +381,14 @@ impl FilmTile {
         let Some(fp) = self.footprint(p_film) else {
             return;
         };
-        let b = self.geometry.bounds;
-        let stride = b.width() as usize;
+        let stride = self.geometry.size[0] as usize;
         if self.splats.is_empty() {
             self.splats = vec![[0.0; 3]; self.pixels.len()];
         }
         for y in fp.y0..fp.y1 {
             for x in fp.x0..fp.x1 {
                 let f = f64::from(self.setup.weights.weight(fp.dx(x), fp.dy(y)));
-                let s = &mut self.splats[(y - b.y0) as usize * stride + (x - b.x0) as usize];
+                let s = &mut self.splats[y * stride + x];
                 for c in 0..3 {
                     s[c] += f * f64::from(rgb[c]);
                 }
@@ -378,14 +412,20 @@ impl FilmTile {
         }
     }
 
-    /// The pixels reached by a sample at the finite position `p`, clipped to the stored pixels:
-    /// `⌈p − ½ − r⌉ … ⌊p − ½ + r⌋` per axis. `None` when nothing is reached.
+    /// The stored pixels reached by a sample at the finite position `p` (film pixels
+    /// `⌈p − ½ − r⌉ … ⌊p − ½ + r⌋` per axis, clipped), in tile-local indices. `None` when nothing
+    /// is reached.
     #[inline(always)]
     fn footprint(&self, p: [f32; 2]) -> Option<Footprint> {
         let g = &self.geometry;
-        let p = [f64::from(p[0]), f64::from(p[1])];
-        let (x0, x1) = span(p[0], g.radius[0], g.bounds.x0, g.bounds.x1);
-        let (y0, y1) = span(p[1], g.radius[1], g.bounds.y0, g.bounds.y1);
-        (x0 < x1 && y0 < y1).then_some(Footprint { x0, x1, y0, y1, p })
+        let (x0, x1, cx) = g.span(f64::from(p[0]), 0);
+        let (y0, y1, cy) = g.span(f64::from(p[1]), 1);
+        (x0 < x1 && y0 < y1).then_some(Footprint {
+            x0: x0 as usize,
+            x1: x1 as usize,
+            y0: y0 as usize,
+            y1: y1 as usize,
+            c: [cx, cy],
+        })
     }
 }
