@@ -188,7 +188,8 @@ impl Film {
                 max_component: config.max_component,
             }),
             pixels: vec![Pixel::default(); n],
-            splats: vec![[0.0; 3]; n],
+            // Allocated when the first tile with splats is merged.
+            splats: Vec::new(),
             next_tile: 0,
             pending: BTreeMap::new(),
             stats: FilmStats::default(),
@@ -290,6 +291,12 @@ impl Film {
             {
                 dst.add(src);
             }
+            if tile.splats().is_empty() {
+                continue;
+            }
+            if self.splats.is_empty() {
+                self.splats = vec![[0.0; 3]; self.pixels.len()];
+            }
             for (dst, src) in self.splats[frow..frow + tw]
                 .iter_mut()
                 .zip(&tile.splats()[trow..trow + tw])
@@ -321,6 +328,18 @@ impl Film {
         self.stats.rejected
     }
 
+    /// Bytes of pixel storage the film holds: the [`Pixel`] sums (32 bytes a pixel), plus 24
+    /// bytes a pixel of splat sums once a tile with splats has been merged.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(100, 10), &nyquist::filter::Boxcar::default()).unwrap();
+    /// assert_eq!(film.storage_bytes(), 1000 * 32);
+    /// ```
+    pub fn storage_bytes(&self) -> usize {
+        self.pixels.len() * size_of::<Pixel>() + self.splats.len() * size_of::<[f64; 3]>()
+    }
+
     /// The accumulated sums of pixel `(x, y)` (film coordinates), or `None` outside the film.
     pub fn pixel(&self, x: i64, y: i64) -> Option<Pixel> {
         let b = self.setup.pixel_bounds;
@@ -343,11 +362,17 @@ impl Film {
             0.0
         };
         let mut stats = ResolveStats::default();
+        let no_splats = [[0.0f64; 3]];
+        let splats = self
+            .splats
+            .iter()
+            .chain(no_splats.iter().cycle())
+            .take(self.pixels.len());
         for ((out, p), s) in image
             .data_mut()
             .chunks_exact_mut(3)
             .zip(&self.pixels)
-            .zip(&self.splats)
+            .zip(splats)
         {
             let inv = if p.weight_sum > 0.0 {
                 1.0 / p.weight_sum

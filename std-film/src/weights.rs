@@ -1,8 +1,9 @@
-//! The film's filter weights: a thin wrapper over the core's precomputed filter table.
-//! (Stop-gap written by the filter work so the workspace builds; the film owner may replace it.)
+//! The film's filter weights: the core's precomputed filter table, and the per-axis weight
+//! sources the tile's accumulation loop is generic over (table lookups, or direct evaluation for
+//! comparison).
 
 use crate::Error;
-use nyquist::filter::{Axis, Filter, FilterTable, Interpolation};
+use nyquist::filter::{Axis, Filter, FilterTable, Interpolation, SeparableTable, Table2d};
 
 /// The filter as the film reads it: a 16-entry-per-axis linear table built once.
 #[derive(Clone, Copy, Debug)]
@@ -16,6 +17,10 @@ impl Weights {
         Ok(Weights { table })
     }
 
+    pub(crate) fn table(&self) -> &FilterTable {
+        &self.table
+    }
+
     pub(crate) fn radius(&self) -> [f32; 2] {
         self.table.radius()
     }
@@ -24,24 +29,84 @@ impl Weights {
         self.table.integral()
     }
 
-    pub(crate) fn is_separable(&self) -> bool {
-        self.table.is_separable()
-    }
-
     #[inline]
     pub(crate) fn weight(&self, dx: f32, dy: f32) -> f32 {
         self.table.weight(dx, dy)
     }
+}
 
-    /// The x factor of a separable table (1 for a 2D table, which callers do not use).
-    #[inline]
-    pub(crate) fn weight_x(&self, dx: f32) -> f32 {
-        self.table.weight_1d(Axis::X, dx).unwrap_or(1.0)
+/// A source of filter weights for the accumulation loop. Separable sources answer `x` and `y`
+/// (one 1D value per footprint column and row); the others answer `xy` per pixel.
+pub(crate) trait WeightSource {
+    /// Whether `x`·`y` is the weight (then `xy` is not called).
+    fn separable(&self) -> bool;
+    /// The x factor at offset `d` (separable sources only).
+    fn x(&self, d: f32) -> f32;
+    /// The y factor at offset `d` (separable sources only).
+    fn y(&self, d: f32) -> f32;
+    /// The weight at offset `(dx, dy)`.
+    fn xy(&self, dx: f32, dy: f32) -> f32;
+}
+
+impl<const N: usize> WeightSource for SeparableTable<N> {
+    #[inline(always)]
+    fn separable(&self) -> bool {
+        true
     }
+    #[inline(always)]
+    fn x(&self, d: f32) -> f32 {
+        self.weight_1d(Axis::X, d)
+    }
+    #[inline(always)]
+    fn y(&self, d: f32) -> f32 {
+        self.weight_1d(Axis::Y, d)
+    }
+    #[inline(always)]
+    fn xy(&self, dx: f32, dy: f32) -> f32 {
+        self.weight(dx, dy)
+    }
+}
 
-    /// The y factor of a separable table (1 for a 2D table, which callers do not use).
-    #[inline]
-    pub(crate) fn weight_y(&self, dy: f32) -> f32 {
-        self.table.weight_1d(Axis::Y, dy).unwrap_or(1.0)
+impl<const N: usize> WeightSource for Table2d<N> {
+    #[inline(always)]
+    fn separable(&self) -> bool {
+        false
+    }
+    #[inline(always)]
+    fn x(&self, _: f32) -> f32 {
+        1.0
+    }
+    #[inline(always)]
+    fn y(&self, _: f32) -> f32 {
+        1.0
+    }
+    #[inline(always)]
+    fn xy(&self, dx: f32, dy: f32) -> f32 {
+        self.weight(dx, dy)
+    }
+}
+
+/// Direct evaluation of a filter: `eval_1d` per axis when the filter is separable, else `eval`.
+pub(crate) struct Direct<'a, F: ?Sized> {
+    pub(crate) filter: &'a F,
+    pub(crate) separable: bool,
+}
+
+impl<F: Filter + ?Sized> WeightSource for Direct<'_, F> {
+    #[inline(always)]
+    fn separable(&self) -> bool {
+        self.separable
+    }
+    #[inline(always)]
+    fn x(&self, d: f32) -> f32 {
+        self.filter.eval_1d(Axis::X, d).unwrap_or(0.0)
+    }
+    #[inline(always)]
+    fn y(&self, d: f32) -> f32 {
+        self.filter.eval_1d(Axis::Y, d).unwrap_or(0.0)
+    }
+    #[inline(always)]
+    fn xy(&self, dx: f32, dy: f32) -> f32 {
+        self.filter.eval(dx, dy)
     }
 }

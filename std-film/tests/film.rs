@@ -1,8 +1,11 @@
 //! Film conservation laws, determinism across threads and schedules, and bad samples.
 
 use nyquist::filter::{Boxcar, Filter, Gaussian, Lanczos, Mitchell, Triangle};
-use nyquist_film::{Bounds, Film, FilmConfig, FilmTile, render_tiles};
+use nyquist_film::{
+    Bounds, Film, FilmConfig, FilmTile, TileContext, render_tiles, write_image_file,
+};
 use proptest::prelude::*;
+use std::sync::Mutex;
 
 fn filters() -> Vec<(&'static str, Box<dyn Filter + Sync>)> {
     vec![
@@ -44,7 +47,7 @@ fn constant_radiance_gives_that_constant_in_every_pixel_for_every_filter() {
             &mut film,
             4,
             2,
-            |t| fill_tile(t, 3, |_, _| [0.3, 1.0, 7.5]),
+            |t, _| fill_tile(t, 3, |_, _| [0.3, 1.0, 7.5]),
             |_, _| {},
         )
         .unwrap();
@@ -132,7 +135,14 @@ fn zoneplate(x: f32, y: f32) -> [f32; 3] {
 fn image_is_bit_identical_for_any_thread_count_and_tile_order() {
     let reference = {
         let mut film = Film::new(FilmConfig::new(40, 30), &Mitchell::default()).unwrap();
-        render_tiles(&mut film, 7, 1, |t| fill_tile(t, 2, zoneplate), |_, _| {}).unwrap();
+        render_tiles(
+            &mut film,
+            7,
+            1,
+            |t, _| fill_tile(t, 2, zoneplate),
+            |_, _| {},
+        )
+        .unwrap();
         bits(&mut film)
     };
     for threads in [1, 2, 8, 16] {
@@ -142,7 +152,7 @@ fn image_is_bit_identical_for_any_thread_count_and_tile_order() {
                 &mut film,
                 7,
                 threads,
-                |t| fill_tile(t, 2, zoneplate),
+                |t, _| fill_tile(t, 2, zoneplate),
                 |_, _| {},
             )
             .unwrap();
@@ -177,6 +187,125 @@ fn image_is_bit_identical_for_any_thread_count_and_tile_order() {
     }
 }
 
+/// FNV-1a, to name the image bytes in failure messages.
+fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+#[test]
+fn exr_and_png_files_are_byte_identical_for_threads_1_2_8_and_repeated_runs() {
+    let dir = std::env::temp_dir().join(format!("nyquist-film-det-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut files: Vec<(String, Vec<u8>)> = Vec::new();
+    for threads in [1usize, 2, 8] {
+        for run in 0..2 {
+            let mut film = Film::new(FilmConfig::new(40, 30), &Mitchell::default()).unwrap();
+            render_tiles(
+                &mut film,
+                7,
+                threads,
+                |t, _| fill_tile(t, 2, zoneplate),
+                |_, _| {},
+            )
+            .unwrap();
+            let (image, _) = film.image();
+            for ext in ["exr", "png", "pfm"] {
+                let path = dir.join(format!("t{threads}-r{run}.{ext}"));
+                write_image_file(&path, &image).unwrap();
+                files.push((ext.to_string(), std::fs::read(&path).unwrap()));
+            }
+        }
+    }
+    for ext in ["exr", "png", "pfm"] {
+        let same: Vec<&Vec<u8>> = files.iter().filter(|f| f.0 == ext).map(|f| &f.1).collect();
+        assert_eq!(same.len(), 6);
+        let hashes: Vec<u64> = same.iter().map(|b| fnv1a(b)).collect();
+        assert!(same.iter().all(|b| *b == same[0]), "{ext}: {hashes:x?}");
+        assert!(same[0].len() > 100, "{ext}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn render_tiles_hands_each_closure_its_tile_context_once() {
+    let mut film = Film::new(FilmConfig::new(20, 10), &Boxcar::default()).unwrap();
+    let specs = film.tiles(8).unwrap();
+    let seen = Mutex::new(Vec::new());
+    let mut progress = Vec::new();
+    render_tiles(
+        &mut film,
+        8,
+        2,
+        |tile, ctx| {
+            assert_eq!((tile.index(), tile.bounds()), (ctx.index, ctx.bounds));
+            seen.lock().unwrap().push(*ctx);
+        },
+        |done, total| progress.push((done, total)),
+    )
+    .unwrap();
+    let mut seen = seen.into_inner().unwrap();
+    seen.sort_by_key(|c| c.index);
+    let want: Vec<TileContext> = specs
+        .iter()
+        .map(|s| TileContext {
+            index: s.index,
+            count: specs.len(),
+            bounds: s.bounds,
+        })
+        .collect();
+    assert_eq!(seen, want);
+    assert_eq!(progress, (1..=6).map(|d| (d, 6)).collect::<Vec<_>>());
+    // Seeds: distinct per tile, a pure function of (base, index).
+    let seeds: std::collections::BTreeSet<u64> = seen.iter().map(|c| c.seed(42)).collect();
+    assert_eq!(seeds.len(), 6);
+    assert_eq!(seen[3].seed(42), want[3].seed(42));
+    assert_ne!(seen[3].seed(42), seen[3].seed(43));
+    assert_eq!(seen[5].pixel_range(), Some(([16, 8], [20, 10])));
+    assert!(render_tiles(&mut film, 8, 0, |_, _| {}, |_, _| {}).is_err());
+    assert!(render_tiles(&mut film, 0, 1, |_, _| {}, |_, _| {}).is_err());
+}
+
+#[test]
+fn table_and_direct_accumulation_agree_to_the_table_error() {
+    // add_sample_direct evaluates the filter; add_sample reads the table. Box and triangle
+    // tables are exact (piecewise linear) up to f32 rounding, so those agree closely.
+    for (name, filter) in filters() {
+        let mut a = Film::new(FilmConfig::new(12, 12), filter.as_ref()).unwrap();
+        let mut b = Film::new(FilmConfig::new(12, 12), filter.as_ref()).unwrap();
+        let spec = a.tiles(12).unwrap()[0];
+        let (mut ta, mut tb) = (a.tile(spec), b.tile(spec));
+        let mut rng = nyquist::rng::default_rng(5);
+        for _ in 0..200 {
+            let p = [
+                12.0 * nyquist::rng::uniform_f32(&mut rng),
+                12.0 * nyquist::rng::uniform_f32(&mut rng),
+            ];
+            ta.add_sample(p, [1.0, 0.5, 0.25], 1.0);
+            tb.add_sample_direct(filter.as_ref(), p, [1.0, 0.5, 0.25], 1.0);
+        }
+        a.merge(ta).unwrap();
+        b.merge(tb).unwrap();
+        let tol = match name {
+            "box" | "triangle" => 1e-7, // f32 rounding of the lerp only
+            _ => 0.06, // per sample ≤ the documented linear-table error, a few samples per pixel
+        };
+        for y in 0..12 {
+            for x in 0..12 {
+                let (pa, pb) = (a.pixel(x, y).unwrap(), b.pixel(x, y).unwrap());
+                let scale = pb.weight_sum.abs().max(1.0);
+                assert!(
+                    (pa.weight_sum - pb.weight_sum).abs() <= tol * scale * 8.0,
+                    "{name} ({x},{y}): {} vs {}",
+                    pa.weight_sum,
+                    pb.weight_sum
+                );
+            }
+        }
+    }
+}
+
 #[derive(Debug, Clone, Copy)]
 enum Order {
     Reversed,
@@ -206,6 +335,17 @@ fn non_finite_samples_never_reach_a_pixel_and_are_counted_exactly() {
     let (image, _) = film.image();
     assert!(image.data().iter().all(|v| v.is_finite()));
     assert!((image.get(1, 1)[0] - 0.5).abs() < 1e-6);
+    // Bit for bit the film that only ever saw the good sample.
+    let mut clean = Film::new(FilmConfig::new(4, 4), &Gaussian::default()).unwrap();
+    let mut tile = clean.tile(spec);
+    tile.add_sample([1.5, 1.5], [0.5, 0.5, 0.5], 1.0);
+    clean.merge(tile).unwrap();
+    for y in 0..4 {
+        for x in 0..4 {
+            assert_eq!(film.pixel(x, y), clean.pixel(x, y), "({x}, {y})");
+        }
+    }
+    assert_eq!(image, clean.image().0);
     // A pixel nothing reached resolves to 0 (weight sum 0), not NaN.
     let mut empty = Film::new(FilmConfig::new(2, 2), &Boxcar::default()).unwrap();
     let (img, stats) = empty.image();

@@ -140,6 +140,29 @@ fn writing_into_a_missing_or_read_only_folder_fails_and_leaves_nothing() {
 }
 
 #[test]
+fn writing_into_a_folder_without_write_permission_fails_and_leaves_nothing() {
+    use std::os::unix::fs::PermissionsExt;
+    let img = test_image();
+    let dir = std::env::temp_dir().join(format!("nyquist-film-ro-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o555)).unwrap();
+    // Root ignores directory permissions: then there is nothing to test here (the /proc case
+    // above still covers a read-only folder).
+    let probe = dir.join("probe");
+    let enforced = std::fs::write(&probe, b"x").is_err();
+    let _ = std::fs::remove_file(&probe);
+    if enforced {
+        for ext in ["png", "exr", "pfm"] {
+            let target = dir.join(format!("x.{ext}"));
+            assert!(write_image_file(&target, &img).is_err(), "{ext}");
+        }
+        assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
+    }
+    std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o755)).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
 fn malformed_inputs_are_errors() {
     assert!(read_pfm(&mut b"PF\n2 2\n-1.0\n\0\0".as_slice()).is_err());
     assert!(read_pfm(&mut b"PF\nx 2\n-1.0\n".as_slice()).is_err());
