@@ -43,6 +43,15 @@ pub struct SobolSampler {
     /// `m..2m` are y's).
     inverse: [u32; 32],
     shift: [u32; 2],
+    /// `Inverse·want(pixel)` of the current pixel (see [`SobolSampler::sequence_index`]).
+    pixel: [u32; 2],
+    pixel_low: u32,
+    /// `Inverse·have(2^b)` per bit `b` of the sample index: `have` and the inverse are linear
+    /// over GF(2), so a sample's share of the index is the XOR over its set bits.
+    sample_low: [u32; 32],
+    /// The scrambles of dimensions `2 .. 2 + SCRAMBLES` (the camera's and the first
+    /// integrator dimensions), hashed once.
+    scrambles: [u32; SCRAMBLES],
     index: u32,
     dim: u32,
 }
@@ -99,15 +108,32 @@ impl SobolSampler {
             };
             [low(0), low(1)]
         };
-        Ok(Self {
+        let inverse = Self::invert(m);
+        let mut sample_low = [0u32; 32];
+        for (b, low) in sample_low.iter_mut().enumerate() {
+            let high = if 2 * m as usize + b >= 32 {
+                0
+            } else {
+                1u32 << (2 * m as usize + b)
+            };
+            *low = apply_inverse(&inverse, have(high, m));
+        }
+        let scrambles = core::array::from_fn(|k| scramble(seed, 2 + k as u32));
+        let mut sampler = Self {
             spp,
             seed,
             m,
-            inverse: Self::invert(m),
+            inverse,
             shift,
+            pixel: [0; 2],
+            pixel_low: 0,
+            sample_low,
+            scrambles,
             index: 0,
             dim: 0,
-        })
+        };
+        sampler.pixel_low = apply_inverse(&sampler.inverse, sampler.want([0; 2]));
+        Ok(sampler)
     }
 
     /// Gauss–Jordan elimination over GF(2) of the map "low 2m index bits → top m bits of
@@ -168,16 +194,15 @@ impl SobolSampler {
         let m = self.m;
         let s = sample_index % self.spp;
         let high = if 2 * m >= 32 { 0 } else { s << (2 * m) };
+        high | apply_inverse(&self.inverse, self.want(pixel) ^ have(high, m))
+    }
+
+    /// The pixel's low coordinate bits, interleaved as the index search wants them.
+    #[inline]
+    fn want(&self, pixel: [u32; 2]) -> u32 {
+        let m = self.m;
         let mask = if m == 0 { 0 } else { u32::MAX >> (32 - m) };
-        let want = (pixel[0] & mask) | ((pixel[1] & mask) << m);
-        let have = top(sobol_u32(high, 0), m) | (top(sobol_u32(high, 1), m) << m);
-        let mut t = want ^ have;
-        let mut low = 0u32;
-        while t != 0 {
-            low ^= self.inverse[t.trailing_zeros() as usize];
-            t &= t - 1;
-        }
-        high | low
+        (pixel[0] & mask) | ((pixel[1] & mask) << m)
     }
 
     #[inline]
@@ -187,11 +212,43 @@ impl SobolSampler {
         if dim < 2 {
             // `m ≤ 16` (checked in `new`): keep the bits below the pixel's.
             v = (v ^ self.shift[dim as usize]) << self.m;
-        } else if self.seed != 0 {
-            v ^= hash2(self.seed, u64::from(dim)) as u32;
+        } else if let Some(&x) = self.scrambles.get((dim - 2) as usize) {
+            v ^= x;
+        } else {
+            v ^= scramble(self.seed, dim);
         }
         (v >> 8) as f32 * (1.0 / 16_777_216.0)
     }
+}
+
+/// Number of dimensions (from 2 on) whose scramble the sampler caches.
+const SCRAMBLES: usize = 6;
+
+/// The XOR scramble of dimension `dim ≥ 2` under `seed` (0 for seed 0: the plain sequence).
+#[inline]
+fn scramble(seed: u64, dim: u32) -> u32 {
+    if seed == 0 {
+        0
+    } else {
+        hash2(seed, u64::from(dim)) as u32
+    }
+}
+
+/// The top `m` bits of dimensions 0 and 1 of Sobol point `high`, interleaved.
+#[inline]
+fn have(high: u32, m: u32) -> u32 {
+    top(sobol_u32(high, 0), m) | (top(sobol_u32(high, 1), m) << m)
+}
+
+/// `inverse · t` over GF(2).
+#[inline]
+fn apply_inverse(inverse: &[u32; 32], mut t: u32) -> u32 {
+    let mut low = 0u32;
+    while t != 0 {
+        low ^= inverse[t.trailing_zeros() as usize];
+        t &= t - 1;
+    }
+    low
 }
 
 impl Sampler for SobolSampler {
@@ -201,7 +258,29 @@ impl Sampler for SobolSampler {
 
     #[inline]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
-        self.index = self.sequence_index(pixel, sample_index);
+        // Equal to `sequence_index(pixel, sample_index)`, split into a per-pixel and a
+        // per-sample share (both linear over GF(2)).
+        if pixel != self.pixel {
+            self.pixel = pixel;
+            self.pixel_low = apply_inverse(&self.inverse, self.want(pixel));
+        }
+        let s = if sample_index < self.spp {
+            sample_index
+        } else {
+            sample_index % self.spp
+        };
+        let high = if 2 * self.m >= 32 {
+            0
+        } else {
+            s << (2 * self.m)
+        };
+        let mut low = self.pixel_low;
+        let mut bits = s;
+        while bits != 0 {
+            low ^= self.sample_low[bits.trailing_zeros() as usize];
+            bits &= bits - 1;
+        }
+        self.index = high | low;
         self.dim = dim;
     }
 
@@ -213,6 +292,24 @@ mod tests {
     use super::*;
     use crate::sampler::tests::{consistent_values, is_zero_two_net, threads_agree};
     use std::vec::Vec;
+
+    /// The cached per-pixel and per-sample shares give the same index as the direct search.
+    #[test]
+    fn cached_index_equals_sequence_index() {
+        for (res, spp, seed) in [
+            ([64u32, 48u32], 16u32, 0u64),
+            ([1024, 1024], 64, 5),
+            ([3, 1], 1, 9),
+        ] {
+            let mut s = SobolSampler::new(res, spp, seed).unwrap();
+            for pixel in [[0u32, 0u32], [1, 0], [63, 47], [5, 40], [1023, 2]] {
+                for i in [0u32, 1, 2, 3, 7, spp - 1, spp, 3 * spp + 1, u32::MAX] {
+                    s.start_pixel_sample(pixel, i, 0);
+                    assert_eq!(s.index, s.sequence_index(pixel, i), "{pixel:?} {i}");
+                }
+            }
+        }
+    }
 
     #[test]
     fn sobol_is_consistent_and_thread_independent() {

@@ -3,7 +3,13 @@
 use super::{Sampler, pixel_hash};
 use crate::Error;
 use crate::hash::{Permutation, hash2, hash3, mix64, permute, unit_f32};
-use crate::math::clamp_unit;
+use crate::math::ONE_MINUS_EPSILON;
+
+/// `x ≥ 0` (finite by construction here) kept below 1: one `minss`, no branch.
+#[inline(always)]
+fn below_one(x: f32) -> f32 {
+    x.min(ONE_MINUS_EPSILON)
+}
 
 pub use crate::stratify::Jitter;
 
@@ -50,7 +56,8 @@ pub struct StratifiedSampler {
     /// The time and lens permutations of the current pixel (dimensions 2 and 3), built once
     /// per pixel.
     camera_perms: [Permutation; 2],
-    /// `hash(pixel_key, index)`: the jitter source of the current sample.
+    /// `pixel_key ^ index·step`: the jitter source of the current sample (hashed with the
+    /// dimension before use).
     sample_key: u64,
     index: u32,
     dim: u32,
@@ -198,8 +205,8 @@ impl StratifiedSampler {
         let (cx, cy) = self.cell(s);
         let [jx, jy] = self.jitters(dim);
         [
-            clamp_unit((cx as f32 + jx) * self.inv[0]),
-            clamp_unit((cy as f32 + jy) * self.inv[1]),
+            below_one((cx as f32 + jx) * self.inv[0]),
+            below_one((cy as f32 + jy) * self.inv[1]),
         ]
     }
 }
@@ -212,7 +219,7 @@ fn lhs_axis(n: u32, key: u64) -> Permutation {
 
 #[inline]
 fn lhs_value(perm: &Permutation, j: u32, inv_n: f32, offset: f32) -> f32 {
-    clamp_unit((perm.apply(j) as f32 + offset) * inv_n)
+    below_one((perm.apply(j) as f32 + offset) * inv_n)
 }
 
 /// Jitters for point `j` of an array keyed by `key` (two per hash).
@@ -240,7 +247,8 @@ impl Sampler for StratifiedSampler {
             self.camera_perms = camera_perms(self.pixel_key, self.spp);
         }
         self.index = sample_index;
-        self.sample_key = mix64(self.pixel_key ^ u64::from(sample_index).wrapping_mul(DIM_STEP));
+        // Unmixed: every use passes it through a full hash with the dimension.
+        self.sample_key = self.pixel_key ^ u64::from(sample_index).wrapping_mul(DIM_STEP);
         self.dim = dim;
     }
 
@@ -249,7 +257,7 @@ impl Sampler for StratifiedSampler {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
         let s = self.stratum(dim);
-        clamp_unit((s as f32 + self.jitters(dim)[0]) * self.inv[2])
+        below_one((s as f32 + self.jitters(dim)[0]) * self.inv[2])
     }
 
     #[inline]

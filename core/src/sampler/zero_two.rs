@@ -32,10 +32,11 @@ fn round_up(requested: u32) -> (u32, bool) {
 ///
 /// For pair `k` (the image sample is pair 0; [`Sampler::get_2d`] at dimension `d` is pair `d`),
 /// sample `i` of pixel `p` is point `permute(i, spp, h)` of `ZeroTwo::new(scramble(h))`, with
-/// `h = hash(hash(p, seed), k)`. A scramble and a reordering keep the first `spp`
-/// points a (0, log₂ spp, 2)-net, so every pair is stratified in every elementary interval;
-/// the permutations decorrelate the pairs from each other. 1D values use the van der Corput
-/// component the same way.
+/// `h = hash(hash(p, seed), k)` — except the image pair, which takes point `i` itself (as
+/// pbrt-v2 does: one order is enough, the others are shuffled against it). A scramble and a
+/// reordering keep the first `spp` points a (0, log₂ spp, 2)-net, so every pair is stratified in
+/// every elementary interval; the permutations decorrelate the pairs from each other. 1D values
+/// use the van der Corput component the same way.
 ///
 /// `spp` is rounded up to a power of two ([`ZeroTwoSampler::rounded_spp`] says so ahead of
 /// time); `sample_index >= spp` wraps modulo `spp`. Arrays ([`Sampler::get_array_1d`],
@@ -148,6 +149,8 @@ impl ZeroTwoSampler {
     #[inline]
     fn point(&self, pair: u32) -> [f32; 2] {
         match CAMERA_PAIRS.iter().position(|&p| p == pair) {
+            // The image pair keeps the sample order (`spp` is a power of two).
+            Some(0) => self.camera[0].z.sample_2d(self.index & (self.spp - 1)),
             Some(k) => self.camera[k].point(self.index),
             None => PairSource::new(self.pixel_key, self.spp, pair).point(self.index),
         }
