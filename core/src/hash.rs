@@ -106,12 +106,16 @@ pub const fn unit_f64(h: u64) -> f64 {
 /// A pseudo-random permutation of `0..n` chosen by a seed, evaluated one element at a time
 /// without a table: build it once, then [`apply`](Permutation::apply) it as often as needed.
 ///
-/// The permutation is a keyed bijection on `0..2^⌈log₂ n⌉` (xor, odd multiply and xor-shift
-/// rounds) restricted to `0..n` by cycle walking — Kensler's construction (“Correlated
-/// Multi-Jittered Sampling”, 2013) with our own rounds — followed by a rotation by a hashed
-/// offset. The rotation makes every element's image exactly uniform over seeds (to within
-/// `n/2³²`): `P(π(i) = j) = 1/n` for every `i`, `j`, which the bijection alone does not give for
-/// small `n`. Joint statistics (which of the `n!` permutations) are not exactly uniform.
+/// - `n ≤ 16`: the whole permutation, packed as sixteen 4-bit entries in one `u64`, is drawn by
+///   Fisher–Yates from one 64-bit hash (each step takes `⌊r·k⌋` and keeps `frac(r·k)`, which
+///   spends only log₂ k bits, 44 for all of 16!): uniform over all `n!` permutations up to
+///   `n!/2⁶⁴`, and [`apply`](Permutation::apply) is a shift and a mask.
+/// - `n > 16`: a keyed bijection on `0..2^⌈log₂ n⌉` (xor, odd multiply and xor-shift rounds)
+///   restricted to `0..n` by cycle walking — Kensler's construction (“Correlated Multi-Jittered
+///   Sampling”, 2013) with our own rounds — followed by a rotation by a hashed offset. The
+///   rotation makes every element's image exactly uniform over seeds (to within `n/2³²`):
+///   `P(π(i) = j) = 1/n` for every `i`, `j`. Joint statistics (which of the `n!` permutations)
+///   are not exactly uniform.
 ///
 /// Total: `n == 0` behaves as `n == 1` (every element maps to 0); `apply(i)` with `i >= n`
 /// reduces `i` modulo `n` first.
@@ -135,6 +139,31 @@ pub struct Permutation {
     key: u32,
     key2: u32,
     offset: u32,
+    /// For `n ≤ 16`: entry `i` in bits `4i .. 4i + 4`.
+    table: u64,
+}
+
+/// Sizes up to this use the packed table.
+const TABLE_MAX: u32 = 16;
+
+/// A uniformly drawn permutation of `0..n` (`n ≤ 16`), packed in nibbles, from the 64-bit
+/// fraction `r`.
+#[inline]
+fn packed_permutation(n: u32, mut r: u64) -> u64 {
+    // Identity: nibble i = i.
+    let mut t = 0xfedc_ba98_7654_3210u64 & (u64::MAX >> (64 - 4 * n.max(1)));
+    let mut k = n;
+    while k > 1 {
+        // j uniform in 0..k: the integer part of r·k; the fraction carries the rest.
+        let p = u128::from(r) * u128::from(k);
+        let j = (p >> 64) as u32;
+        r = p as u64;
+        let (hi, lo) = (4 * (k - 1), 4 * j);
+        let x = ((t >> hi) ^ (t >> lo)) & 0xf;
+        t ^= (x << hi) | (x << lo);
+        k -= 1;
+    }
+    t
 }
 
 impl Permutation {
@@ -148,7 +177,19 @@ impl Permutation {
     #[inline]
     pub fn new(n: u32, seed: u32) -> Permutation {
         let n = n.max(1);
-        let mask = u32::MAX >> (n - 1).leading_zeros().min(31);
+        if n <= TABLE_MAX {
+            return Permutation {
+                n,
+                mask: 0,
+                half: 0,
+                third: 0,
+                key: 0,
+                key2: 0,
+                offset: 0,
+                table: packed_permutation(n, mix64(u64::from(seed) ^ 0x243f_6a88_85a3_08d3)),
+            };
+        }
+        let mask = u32::MAX >> (n - 1).leading_zeros();
         let bits = 32 - mask.leading_zeros();
         let key = mix32(seed ^ 0x5bd1_e995);
         let key2 = mix32(key.wrapping_add(0x68e3_1da4));
@@ -161,6 +202,7 @@ impl Permutation {
             key,
             key2,
             offset: ((u64::from(key3) * u64::from(n)) >> 32) as u32,
+            table: 0,
         }
     }
 
@@ -186,8 +228,9 @@ impl Permutation {
     #[inline]
     pub fn apply(&self, i: u32) -> u32 {
         let (n, mask, half) = (self.n, self.mask, self.half);
-        if n == 1 {
-            return 0;
+        if n <= TABLE_MAX {
+            let i = if i < n { i } else { i % n };
+            return ((self.table >> (4 * i)) & 0xf) as u32;
         }
         let mut x = if i < n { i } else { i % n };
         loop {

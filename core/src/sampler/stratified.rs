@@ -2,7 +2,7 @@
 
 use super::{Sampler, pixel_hash};
 use crate::Error;
-use crate::hash::{Permutation, hash2, hash3, mix64, permute, unit_f32};
+use crate::hash::{Permutation, mix64, permute, unit_f32};
 use crate::math::ONE_MINUS_EPSILON;
 
 /// `x ≥ 0` (finite by construction here) kept below 1: one `minss`, no branch.
@@ -66,6 +66,7 @@ pub struct StratifiedSampler {
 /// Odd constants separating dimensions in the per-dimension hashes.
 const DIM_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
 const JITTER_STEP: u64 = 0xc2b2_ae3d_27d4_eb4f;
+const ARRAY_STEP: u64 = 0x1656_67b1_9e37_79f9;
 
 /// The permutation key of dimension `dim` of the pixel keyed by `pixel_key`.
 #[inline]
@@ -211,12 +212,13 @@ impl StratifiedSampler {
     }
 }
 
-/// A Latin hypercube axis keyed by `key`: value `j` of `n` is `(π(j) + offset) / n`.
+/// The key of an integrator array at dimension `dim` of the current sample: one full hash.
 #[inline]
-fn lhs_axis(n: u32, key: u64) -> Permutation {
-    Permutation::new(n, key as u32 ^ (key >> 32) as u32)
+fn array_key(sample_key: u64, dim: u32, tag: u64) -> u64 {
+    mix64(sample_key ^ u64::from(dim).wrapping_mul(ARRAY_STEP) ^ tag)
 }
 
+/// A Latin hypercube axis: value `j` of `n` is `(π(j) + offset) / n`.
 #[inline]
 fn lhs_value(perm: &Permutation, j: u32, inv_n: f32, offset: f32) -> f32 {
     below_one((perm.apply(j) as f32 + offset) * inv_n)
@@ -277,8 +279,8 @@ impl Sampler for StratifiedSampler {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
         let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
-        let key = hash3(self.sample_key, u64::from(dim), 0x6c68_7331);
-        let (perm, inv_n) = (lhs_axis(n, key), 1.0 / n as f32);
+        let key = array_key(self.sample_key, dim, 0x6c68_7331);
+        let (perm, inv_n) = (Permutation::new(n, key as u32), 1.0 / n as f32);
         for (j, x) in (0..n).zip(out) {
             *x = lhs_value(&perm, j, inv_n, lhs_jitters(key, j, self.jitter)[0]);
         }
@@ -288,11 +290,14 @@ impl Sampler for StratifiedSampler {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(2);
         let n = u32::try_from(out.len() / 2).unwrap_or(u32::MAX);
-        let kx = hash3(self.sample_key, u64::from(dim), 0x6c68_7332);
-        let ky = hash2(kx, 0x6c68_7379);
-        let (px, py, inv_n) = (lhs_axis(n, kx), lhs_axis(n, ky), 1.0 / n as f32);
+        // One hash per array: its halves seed the two axis permutations, and the jitters hash
+        // it with the point index.
+        let key = array_key(self.sample_key, dim, 0x6c68_7332);
+        let px = Permutation::new(n, key as u32);
+        let py = Permutation::new(n, (key >> 32) as u32);
+        let inv_n = 1.0 / n as f32;
         for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
-            let [ox, oy] = lhs_jitters(kx, j, self.jitter);
+            let [ox, oy] = lhs_jitters(key, j, self.jitter);
             p[0] = lhs_value(&px, j, inv_n, ox);
             p[1] = lhs_value(&py, j, inv_n, oy);
         }
