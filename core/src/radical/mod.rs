@@ -310,7 +310,13 @@ const fn build_fast() -> [FastBase; 1024] {
         }
         let mut c = 1;
         while c <= 4 {
-            let n = digits[i][8 * c];
+            let mut n = digits[i][8 * c];
+            // Round the digit count up to whole chunks when b^n stays below b^k (extra leading
+            // zero digits reverse to zeros): fewer steps, the same value.
+            let whole = n.div_ceil(j as u8) * j as u8;
+            if j > 1 && whole as u32 <= info.k {
+                n = whole;
+            }
             let pow = info.b.pow(n as u32);
             f.n[c] = n;
             if j > 1 {
