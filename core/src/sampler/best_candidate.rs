@@ -10,7 +10,7 @@
 
 use super::{Sampler, pixel_hash};
 use crate::Error;
-use crate::hash::{hash2, hash3, unit_f32};
+use crate::hash::{hash2, mix64, unit_f32};
 use crate::math::clamp_unit;
 
 mod table;
@@ -66,6 +66,8 @@ pub struct BestCandidateSampler {
     pixel: [u32; 2],
     /// Time and lens Cranley–Patterson shifts of the current pixel.
     shifts: [f32; 3],
+    /// `hash(pixel, seed)` of the current pixel, for the dimensions past the table.
+    pixel_key: u64,
     index: u32,
     dim: u32,
 }
@@ -103,6 +105,7 @@ impl BestCandidateSampler {
             seed,
             pixel: [0; 2],
             shifts: shifts([0; 2], seed),
+            pixel_key: pixel_hash([0; 2], seed, 0x6263),
             index: 0,
             dim: 0,
         })
@@ -111,10 +114,11 @@ impl BestCandidateSampler {
     fn value(&self, dim: u32) -> f32 {
         let row = self.index % self.spp;
         if dim >= 5 {
-            let h = hash3(
-                pixel_hash(self.pixel, u64::from(self.index), u64::from(dim)),
-                self.seed,
-                0x6263,
+            // Independent values: one hash of (pixel, seed) ⊕ index ⊕ dimension.
+            let h = mix64(
+                self.pixel_key
+                    ^ u64::from(self.index).wrapping_mul(0x9e37_79b9_7f4a_7c15)
+                    ^ u64::from(dim).wrapping_mul(0xc2b2_ae3d_27d4_eb4f),
             );
             return unit_f32((h >> 32) as u32);
         }
@@ -138,6 +142,7 @@ impl Sampler for BestCandidateSampler {
         if pixel != self.pixel {
             self.pixel = pixel;
             self.shifts = shifts(pixel, self.seed);
+            self.pixel_key = pixel_hash(pixel, self.seed, 0x6263);
         }
         self.index = sample_index;
         self.dim = dim;

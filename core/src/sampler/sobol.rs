@@ -222,7 +222,7 @@ impl SobolSampler {
 }
 
 /// Number of dimensions (from 2 on) whose scramble the sampler caches.
-const SCRAMBLES: usize = 6;
+const SCRAMBLES: usize = 30;
 
 /// The XOR scramble of dimension `dim ≥ 2` under `seed` (0 for seed 0: the plain sequence).
 #[inline]

@@ -2,7 +2,7 @@
 
 use super::{Sampler, pixel_hash};
 use crate::Error;
-use crate::hash::{Permutation, hash2, hash3, mix64, permute};
+use crate::hash::{Permutation, mix64};
 use crate::sequence::ZeroTwo;
 
 /// Splits a 64-bit hash into the two 32-bit XOR scrambles of a [`ZeroTwo`].
@@ -70,6 +70,7 @@ pub struct ZeroTwoSampler {
 
 /// Odd constant separating dimension pairs in the per-pair hash.
 const PAIR_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
+const ARRAY_STEP: u64 = 0xc2b2_ae3d_27d4_eb4f;
 
 /// The per-(pixel, pair) shuffle and scramble: pair `pair` of sample `i` is point `perm(i)` of
 /// `ZeroTwo::new(scramble)`.
@@ -146,6 +147,18 @@ impl ZeroTwoSampler {
         })
     }
 
+    /// The key of an integrator array at dimension `d` of the current sample: one hash of the
+    /// cached pixel key, the sample index, the dimension and the array kind.
+    #[inline]
+    fn array_key(&self, d: u32, tag: u64) -> u64 {
+        mix64(
+            self.pixel_key
+                ^ u64::from(self.index).wrapping_mul(PAIR_STEP)
+                ^ u64::from(d).wrapping_mul(ARRAY_STEP)
+                ^ tag,
+        )
+    }
+
     #[inline]
     fn point(&self, pair: u32) -> [f32; 2] {
         match CAMERA_PAIRS.iter().position(|&p| p == pair) {
@@ -201,30 +214,24 @@ impl Sampler for ZeroTwoSampler {
     fn get_array_1d(&mut self, out: &mut [f32]) {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(1);
-        let h = hash3(
-            pixel_hash(self.pixel, u64::from(self.index), u64::from(d)),
-            self.seed,
-            0x6131,
-        );
+        let h = self.array_key(d, 0x6131);
         let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
-        let z = ZeroTwo::new(scrambles(hash2(h, 1)));
+        let z = ZeroTwo::new(scrambles(mix64(h ^ 1)));
+        let perm = Permutation::new(n, fold(h));
         for (j, x) in (0..n).zip(out) {
-            *x = z.sample_2d(permute(j, n, fold(h)))[0];
+            *x = z.sample_2d(perm.apply(j))[0];
         }
     }
 
     fn get_array_2d(&mut self, out: &mut [f32]) {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
-        let h = hash3(
-            pixel_hash(self.pixel, u64::from(self.index), u64::from(d)),
-            self.seed,
-            0x6132,
-        );
+        let h = self.array_key(d, 0x6132);
         let n = u32::try_from(out.len() / 2).unwrap_or(u32::MAX);
-        let z = ZeroTwo::new(scrambles(hash2(h, 2)));
+        let z = ZeroTwo::new(scrambles(mix64(h ^ 2)));
+        let perm = Permutation::new(n, fold(h));
         for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
-            let [u, v] = z.sample_2d(permute(j, n, fold(h)));
+            let [u, v] = z.sample_2d(perm.apply(j));
             p[0] = u;
             p[1] = v;
         }
