@@ -30,14 +30,17 @@
 //! with one `min`, the cell found by the `1.5·2²³` rounding trick (no saturating float-to-int
 //! conversion), and the radius test is a 0/1 factor, so NaN and offsets past the radius cost
 //! the same as any other. Entries are finite and capped at `2⁶²`, so that factor yields an
-//! exact 0. Measured per weight on the project's 2-core bench machine
-//! (`cargo bench -p nyquist --bench filter`, 16 entries): a single
-//! [`weight`](FilterTable::weight) call costs about 2 ns nearest and 4–5 ns linear, the same
-//! through a [`TableView`] — isolated lookups do not reach 1 ns. The film's fast path is
-//! [`footprint`](FilterTable::footprint) (also on [`SeparableTable`] and [`TableView`]): it
-//! computes the `nx` x factors and `ny` y factors of one sample, four lanes at a time, and
-//! writes their outer product, about 0.5 ns per weight for Lanczos (8 × 8) and 1.5 ns for
-//! Mitchell (4 × 4), against 5 and 2 ns for direct evaluation. Code that accumulates per pixel
+//! exact 0. Measured per weight on the project's shared 2-core bench machine (x86-64 baseline
+//! SSE2, `cargo bench -p nyquist --bench filter`, 16 entries, medians of runs): a single
+//! [`weight`](FilterTable::weight) call costs about 1.9 ns nearest and 3.9 ns linear, the same
+//! through a [`TableView`]; isolated lookups do not reach 1 ns, and the Mitchell cubic
+//! evaluated directly (about 2.7 ns) beats its linear lookup. The fast path is
+//! [`footprint`](FilterTable::footprint) (also on [`SeparableTable`], [`Table2d`] and
+//! [`TableView`]): it computes the `nx` x factors and `ny` y factors of one sample, four lanes
+//! at a time, and writes their outer product — about 0.6 ns per weight for Lanczos (8 × 8
+//! pixels, direct 5.3 ns) and 1.7 ns for Mitchell, Gaussian and triangle (4 × 4, direct 3.0,
+//! 13 and 1.0 ns). A 1 × 1 footprint (the box) is all overhead (about 25 ns): use
+//! [`weight`](FilterTable::weight) there. Code that accumulates pixel by pixel
 //! can do the same with [`weight_1d`](FilterTable::weight_1d) per row and column.
 
 use super::{Axis, Filter, radius_or_zero};
@@ -476,7 +479,7 @@ impl<const N: usize> SeparableTable<N> {
 
     /// The weights of a whole footprint: `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)` for
     /// `j < out.len() / nx` — the offsets from one sample to a block of pixel centres. The same
-    /// values as per-weight [`weight`](Self::weight) calls (up to the sign of a zero), from
+    /// values as per-weight [`weight`](Self::weight) calls, from
     /// `nx + ny` 1D lookups and one multiply per weight: the film's fast path, well under the
     /// cost of a lookup per weight.
     ///
