@@ -326,8 +326,17 @@ fn outer_product(
     // Row 0 holds the x factors until it is scaled last.
     let (first, rest) = out.split_at_mut(nx);
     factors_into(d0[0], first, &fx4, &fx1);
+    // Four at a time, then the rest: footprints are a few pixels wide, too short for the
+    // compiler's own vectorised loop (with its run-time checks) to pay off.
     let scale_row = |row: &mut [f32], first: &[f32], w: f32| {
-        for (o, &x) in row.iter_mut().zip(first.iter()) {
+        let mut o4 = row.chunks_exact_mut(4);
+        let mut x4 = first.chunks_exact(4);
+        for (o, x) in (&mut o4).zip(&mut x4) {
+            for l in 0..4 {
+                o[l] = x[l] * w;
+            }
+        }
+        for (o, &x) in o4.into_remainder().iter_mut().zip(x4.remainder()) {
             *o = x * w;
         }
     };
@@ -352,6 +361,26 @@ fn outer_product(
     }
     for w in first.iter_mut() {
         *w *= wy0;
+    }
+}
+
+/// Below this many weights a footprint is filled weight by weight: the outer product's setup
+/// (eight lookups at least) costs more than it saves.
+const SMALL_FOOTPRINT: usize = 4;
+
+/// `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`, one lookup per weight (2D tables and tiny
+/// footprints). Offsets counted in floats as in [`factors_into`].
+#[inline(always)]
+fn per_weight(d0: [f32; 2], nx: usize, out: &mut [f32], weight: impl Fn(f32, f32) -> f32) {
+    let mut j = 0.0f32;
+    for row in out.chunks_exact_mut(nx) {
+        let dy = d0[1] + j;
+        let mut i = 0.0f32;
+        for w in row.iter_mut() {
+            *w = weight(d0[0] + i, dy);
+            i += 1.0;
+        }
+        j += 1.0;
     }
 }
 
@@ -496,6 +525,10 @@ impl<const N: usize> SeparableTable<N> {
     #[inline]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         check_footprint(nx, out)?;
+        if out.len() < SMALL_FOOTPRINT {
+            per_weight(d0, nx, out, |x, y| self.weight(x, y));
+            return Ok(());
+        }
         let g = const { Grid::new(N) };
         let [vx, vy] = &self.values;
         let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
@@ -671,16 +704,7 @@ impl<const N: usize> Table2d<N> {
     #[inline]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         check_footprint(nx, out)?;
-        let mut j = 0.0f32;
-        for row in out.chunks_exact_mut(nx) {
-            let dy = d0[1] + j;
-            let mut i = 0.0f32;
-            for w in row.iter_mut() {
-                *w = self.weight(d0[0] + i, dy);
-                i += 1.0;
-            }
-            j += 1.0;
-        }
+        per_weight(d0, nx, out, |x, y| self.weight(x, y));
         Ok(())
     }
 
@@ -962,6 +986,9 @@ impl TableView<'_> {
         check_footprint(nx, out)?;
         let g = self.grid;
         match self.data {
+            ViewData::Separable(..) if out.len() < SMALL_FOOTPRINT => {
+                per_weight(d0, nx, out, |x, y| self.weight(x, y));
+            }
             ViewData::Separable(vx, vy) => {
                 let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
                 // One dispatch per footprint, then monomorphic loops.
@@ -984,18 +1011,7 @@ impl TableView<'_> {
                     ),
                 }
             }
-            ViewData::Full(_) => {
-                let mut j = 0.0f32;
-                for row in out.chunks_exact_mut(nx) {
-                    let dy = d0[1] + j;
-                    let mut i = 0.0f32;
-                    for w in row.iter_mut() {
-                        *w = self.weight(d0[0] + i, dy);
-                        i += 1.0;
-                    }
-                    j += 1.0;
-                }
-            }
+            ViewData::Full(_) => per_weight(d0, nx, out, |x, y| self.weight(x, y)),
         }
         Ok(())
     }
