@@ -39,7 +39,7 @@
 //! [`TableView`]): it computes the `nx` x factors and `ny` y factors of one sample, four lanes
 //! at a time, and writes their outer product — about 0.6 ns per weight for Lanczos (8 × 8
 //! pixels, direct 5.3 ns) and 1.7 ns for Mitchell, Gaussian and triangle (4 × 4, direct 3.0,
-//! 13 and 1.0 ns). A 1 × 1 footprint (the box) is all overhead (about 25 ns): use
+//! 13 and 1.0 ns). A 1 × 1 footprint (the box) is all call overhead (about 11 ns): use
 //! [`weight`](FilterTable::weight) there. Code that accumulates pixel by pixel
 //! can do the same with [`weight_1d`](FilterTable::weight_1d) per row and column.
 
