@@ -3,16 +3,24 @@
 //!
 //! `cargo bench -p nyquist --bench filter -- --warm-up-time 1 --measurement-time 3`
 //! Targets: table lookup ≤ 1 ns per weight; direct Mitchell ≤ 5 ns, Lanczos ≤ 20 ns; building
-//! the default Lanczos table ≤ 50 µs.
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+//! the default Lanczos table ≤ 50 µs. Every figure is per weight (`Throughput::Elements`).
+//! After the run the bench prints the table/direct ratios of each filter from criterion's
+//! estimates of this run (median per weight).
+use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
 use nyquist::filter::{
     Boxcar, Filter, FilterSampler, FilterTable, Gaussian, Interpolation, Lanczos, Mitchell,
     Triangle,
 };
 use nyquist::rng::{default_rng, uniform_f32};
 use std::hint::black_box;
+use std::path::PathBuf;
+use std::sync::Mutex;
+use std::time::SystemTime;
 
 const COUNT: usize = 1024;
+
+/// Weights per iteration of each filter's footprint group, for the closing report.
+static FOOTPRINT_WEIGHTS: Mutex<Vec<(String, u64)>> = Mutex::new(Vec::new());
 
 /// Offsets over 1.1× the support, as a film sees them near a sample's footprint edge.
 fn offsets(r: [f32; 2]) -> Vec<(f32, f32)> {
@@ -55,21 +63,25 @@ fn run(c: &mut Criterion, name: &str, f: &(impl Filter + ?Sized)) {
     g.finish();
 
     // The film's pattern: every pixel centre in a sample's footprint, (2r)² weights per sample.
+    // The offset of each sample to its footprint's first pixel is computed outside the timing.
     let [rx, ry] = f.radius();
     let (nx, ny) = ((2.0 * rx).ceil() as usize, (2.0 * ry).ceil() as usize);
-    let samples: Vec<(f32, f32)> = pts
+    let d0s: Vec<[f32; 2]> = pts
         .iter()
         .take(COUNT / (nx * ny).max(1) + 1)
-        .copied()
+        .map(|&(sx, sy)| [-rx + sx.fract().abs(), -ry + sy.fract().abs()])
         .collect();
-    let per_iter = (samples.len() * nx * ny) as u64;
+    let per_iter = (d0s.len() * nx * ny) as u64;
+    FOOTPRINT_WEIGHTS
+        .lock()
+        .unwrap()
+        .push((name.to_string(), per_iter));
     let mut buf = vec![0.0f32; nx * ny];
     let mut g = c.benchmark_group(format!("footprint/{name}"));
     g.throughput(Throughput::Elements(per_iter));
     g.bench_function("direct", |b| {
         b.iter(|| {
-            for &(sx, sy) in black_box(&samples) {
-                let d0 = [-rx + sx.fract().abs(), -ry + sy.fract().abs()];
+            for &d0 in black_box(&d0s) {
                 for (j, row) in buf.chunks_exact_mut(nx).enumerate() {
                     for (i, w) in row.iter_mut().enumerate() {
                         *w = f.eval(d0[0] + i as f32, d0[1] + j as f32);
@@ -79,15 +91,21 @@ fn run(c: &mut Criterion, name: &str, f: &(impl Filter + ?Sized)) {
             }
         })
     });
-    g.bench_function("table_linear", |b| {
-        b.iter(|| {
-            for &(sx, sy) in black_box(&samples) {
-                let d0 = [-rx + sx.fract().abs(), -ry + sy.fract().abs()];
-                view.footprint(d0, nx, &mut buf).unwrap();
-                black_box(&buf);
-            }
-        })
-    });
+    macro_rules! footprint {
+        ($id:expr, $table:expr) => {
+            g.bench_function($id, |b| {
+                b.iter(|| {
+                    for &d0 in black_box(&d0s) {
+                        $table.footprint(d0, nx, &mut buf).unwrap();
+                        black_box(&buf);
+                    }
+                })
+            });
+        };
+    }
+    footprint!("table_linear", linear);
+    footprint!("table_nearest", nearest);
+    footprint!("table_view_linear", view);
     g.finish();
 }
 
@@ -146,4 +164,86 @@ fn sampling(c: &mut Criterion) {
 }
 
 criterion_group!(benches, weights, build, sampling);
-criterion_main!(benches);
+
+/// Where criterion writes its estimates: `$CRITERION_HOME`, else `$CARGO_TARGET_DIR/criterion`,
+/// else the workspace's `target/criterion` (benches run in the package directory).
+fn criterion_dir() -> PathBuf {
+    if let Some(home) = std::env::var_os("CRITERION_HOME") {
+        return home.into();
+    }
+    match std::env::var_os("CARGO_TARGET_DIR") {
+        Some(t) => PathBuf::from(t).join("criterion"),
+        None => PathBuf::from("../target/criterion"),
+    }
+}
+
+/// The median time per iteration (ns) of `group/function` if this run measured it.
+fn median_ns(group: &str, function: &str, since: SystemTime) -> Option<f64> {
+    // Criterion stores a group `a/b` in the directory `a_b`.
+    let dir = criterion_dir()
+        .join(group.replace('/', "_"))
+        .join(function)
+        .join("new");
+    let path = dir.join("estimates.json");
+    if std::fs::metadata(&path).ok()?.modified().ok()? < since {
+        return None;
+    }
+    let text = std::fs::read_to_string(&path).ok()?;
+    let rest = &text[text.find("\"median\"")?..];
+    let rest = &rest[rest.find("\"point_estimate\":")? + "\"point_estimate\":".len()..];
+    let end = rest.find([',', '}'])?;
+    rest[..end].trim().parse().ok()
+}
+
+/// Prints per-weight medians and table/direct ratios for every filter this run measured.
+fn report(since: SystemTime) {
+    let mut lines = Vec::new();
+    for name in ["box", "triangle", "gaussian", "mitchell", "lanczos"] {
+        let [w, fp] = [format!("weight/{name}"), format!("footprint/{name}")];
+        let Some(direct) = median_ns(&w, "direct", since) else {
+            continue;
+        };
+        let per = |group: &str, id: &str| median_ns(group, id, since);
+        let fp = fp.as_str();
+        let mut line = format!("{name:9} direct {:6.2} ns", direct / COUNT as f64);
+        for (label, group, id) in [
+            ("dyn", &w, "direct_dyn"),
+            ("nearest", &w, "table_nearest"),
+            ("linear", &w, "table_linear"),
+            ("view", &w, "table_view_linear"),
+        ] {
+            if let Some(t) = per(group, id) {
+                let ratio = t / direct;
+                line += &format!(" | {label} {:6.2} ns ×{ratio:.2}", t / COUNT as f64);
+            }
+        }
+        let n = FOOTPRINT_WEIGHTS
+            .lock()
+            .unwrap()
+            .iter()
+            .find(|(f, _)| f == name)
+            .map_or(1.0, |&(_, n)| n as f64);
+        if let (Some(d), Some(t)) = (per(fp, "direct"), per(fp, "table_linear")) {
+            line += &format!(
+                " | footprint direct {:.2} ns, table {:.2} ns ×{:.2}",
+                d / n,
+                t / n,
+                t / d
+            );
+        }
+        lines.push(line);
+    }
+    if !lines.is_empty() {
+        println!("\nper weight (median) and ratio to direct evaluation, this run:");
+        for l in lines {
+            println!("{l}");
+        }
+    }
+}
+
+fn main() {
+    let since = SystemTime::now();
+    benches();
+    Criterion::default().configure_from_args().final_summary();
+    report(since);
+}

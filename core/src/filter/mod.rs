@@ -16,8 +16,8 @@
 //! Every built-in filter is separable, `f(x, y) = f(x)·f(y)` with a radius per axis.
 //!
 //! - [`FilterTable`] tabulates any filter once (separable: two 1D tables; otherwise a full 2D
-//!   table) for a branch-light lookup in the film's inner loop; [`TableView`] is its
-//!   size-erased view.
+//!   table) for a branch-free lookup; [`FilterTable::footprint`] fills every weight of one
+//!   sample's footprint at once (the film's fast path); [`TableView`] is its size-erased view.
 //! - [`FilterSampler`] draws offsets with density ∝ `|f|` and returns the weight `f/pdf`
 //!   (pbrt-v4's filter importance sampling).
 //! - [`FilterKind`] gathers the built-ins for configuration, with a parser for command-line specs

@@ -499,30 +499,108 @@ fn separable_table_factors_multiply_to_the_weight() {
 #[test]
 fn footprint_equals_per_weight_lookups() {
     let mut rng = default_rng(21);
+    // Shapes cover the scalar remainder (nx % 4 ≠ 0), whole and partial blocks of four rows.
+    let shapes = [(1, 1), (3, 2), (4, 4), (5, 9), (8, 8), (13, 6), (2, 17)];
     for f in [
         FilterKind::parse("mitchell").unwrap(),
         FilterKind::parse("lanczos:rx=3,ry=1.5").unwrap(),
+        FilterKind::parse("box").unwrap(),
     ] {
-        let sep: FilterTable = FilterTable::new(&f, Interpolation::Linear).unwrap();
-        let full: FilterTable = FilterTable::new(&Cone, Interpolation::Nearest).unwrap();
-        for t in [sep, full] {
-            let v = t.view();
-            for _ in 0..200 {
-                let d0 = [uniform_f32(&mut rng) * -5.0, uniform_f32(&mut rng) * -3.0];
-                let mut out = [0.0f32; 7 * 5];
-                v.footprint(d0, 7, &mut out).unwrap();
-                for j in 0..5 {
-                    for i in 0..7 {
-                        let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
-                        assert_eq!(out[j * 7 + i], t.weight(dx, dy), "({i}, {j}) from {d0:?}");
+        for interp in [Interpolation::Nearest, Interpolation::Linear] {
+            let sep: FilterTable = FilterTable::new(&f, interp).unwrap();
+            let full: FilterTable = FilterTable::new(&Cone, interp).unwrap();
+            for t in [sep, full] {
+                let v = t.view();
+                for &(nx, ny) in &shapes {
+                    for _ in 0..60 {
+                        let d0 = [
+                            (uniform_f32(&mut rng) - 0.5) * 12.0,
+                            (uniform_f32(&mut rng) - 0.5) * 8.0,
+                        ];
+                        let mut a = std::vec![f32::NAN; nx * ny];
+                        let mut b = std::vec![f32::NAN; nx * ny];
+                        v.footprint(d0, nx, &mut a).unwrap();
+                        t.footprint(d0, nx, &mut b).unwrap();
+                        for j in 0..ny {
+                            for i in 0..nx {
+                                let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+                                let want = t.weight(dx, dy);
+                                let k = j * nx + i;
+                                assert_eq!(
+                                    a[k], want,
+                                    "{f} {interp:?} ({i}, {j}) of {nx}×{ny} from {d0:?}"
+                                );
+                                assert_eq!(
+                                    b[k], want,
+                                    "{f} {interp:?} ({i}, {j}) of {nx}×{ny} from {d0:?}"
+                                );
+                            }
+                        }
                     }
                 }
+                let mut bad = [0.0f32; 10];
+                assert!(v.footprint([0.0, 0.0], 3, &mut bad).is_err());
+                assert!(v.footprint([0.0, 0.0], 0, &mut bad).is_err());
+                assert!(t.footprint([0.0, 0.0], 3, &mut bad).is_err());
+                assert!(t.footprint([0.0, 0.0], 4, &mut []).is_err());
             }
-            let mut bad = [0.0f32; 10];
-            assert!(v.footprint([0.0, 0.0], 3, &mut bad).is_err());
-            assert!(v.footprint([0.0, 0.0], 0, &mut bad).is_err());
         }
     }
+    // Non-finite origins give zero weights, not NaN.
+    let t: FilterTable = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    for d0 in [
+        [f32::NAN, 0.0],
+        [0.0, f32::INFINITY],
+        [f32::NEG_INFINITY, f32::NAN],
+    ] {
+        let mut w = [1.0f32; 16];
+        t.footprint(d0, 4, &mut w).unwrap();
+        assert!(w.iter().all(|&w| w == 0.0), "{d0:?}: {w:?}");
+    }
+}
+
+#[test]
+fn lookups_are_exact_at_sample_points_for_any_radius_and_size() {
+    // Sample points where no float lands exactly on the index are the hard case; random radii
+    // hit them often. Both interpolations, several sizes, through every lookup path.
+    fn check<const N: usize>(rng: &mut crate::rng::DefaultRng) {
+        for _ in 0..40 {
+            let r = [
+                MIN_RADIUS + uniform_f32(rng) * 20.0,
+                0.01 + uniform_f32(rng) * 300.0,
+            ];
+            let f = Mitchell::new(r, 1.0 / 3.0, 1.0 / 3.0).unwrap();
+            for interp in [Interpolation::Nearest, Interpolation::Linear] {
+                let t = SeparableTable::<N>::new(&f, interp).unwrap();
+                let full = Table2d::<N>::new(&f, interp).unwrap();
+                for i in 0..N {
+                    for axis in [Axis::X, Axis::Y] {
+                        let x = t.sample_point(axis, i);
+                        let want = f.eval_1d(axis, x).unwrap();
+                        assert_eq!(t.weight_1d(axis, x), want, "N={N} r={r:?} {axis:?} i={i}");
+                        assert_eq!(t.weight_1d(axis, -x), want);
+                        assert_eq!(t.view().weight_1d(axis, x), Some(want));
+                    }
+                    let (x, y) = (
+                        t.sample_point(Axis::X, i),
+                        t.sample_point(Axis::Y, N - 1 - i),
+                    );
+                    assert_eq!(t.weight(x, y), f.eval(x, y), "N={N} r={r:?} i={i}");
+                    assert_eq!(full.weight(x, y), f.eval(x, y), "2D N={N} r={r:?} i={i}");
+                }
+                // Just past the radius on each axis: exactly 0.
+                assert_eq!(t.weight(r[0].next_up(), 0.0), 0.0);
+                assert_eq!(t.weight(0.0, -r[1].next_up()), 0.0);
+                assert_eq!(full.weight(r[0].next_up(), 0.0), 0.0);
+            }
+        }
+    }
+    let mut rng = default_rng(99);
+    check::<2>(&mut rng);
+    check::<3>(&mut rng);
+    check::<16>(&mut rng);
+    check::<17>(&mut rng);
+    check::<64>(&mut rng);
 }
 
 #[test]
@@ -558,6 +636,44 @@ fn user_filter_tabulates_like_a_builtin() {
     assert!(FilterSampler::<_, 8>::new(Bad(0.0)).is_err());
     let s = FilterSampler::<_, 8>::new(Bad(1.0)).unwrap();
     assert_eq!(s.sample([0.5, 0.5]).weight, 0.0);
+}
+
+#[test]
+fn huge_plugin_values_are_capped_so_masking_stays_exact() {
+    #[derive(Debug)]
+    struct Huge;
+    impl Filter for Huge {
+        fn radius(&self) -> [f32; 2] {
+            [1.0, 1.0]
+        }
+        fn eval(&self, x: f32, y: f32) -> f32 {
+            if x.abs() <= 1.0 && y.abs() <= 1.0 {
+                -f32::MAX
+            } else {
+                0.0
+            }
+        }
+        fn eval_1d(&self, _: Axis, x: f32) -> Option<f32> {
+            Some(if x.abs() <= 1.0 { f32::MAX } else { 0.0 })
+        }
+    }
+    let cap = 4_611_686_018_427_387_904.0f32; // 2⁶²
+    for interp in [Interpolation::Nearest, Interpolation::Linear] {
+        let sep = SeparableTable::<16>::new(&Huge, interp).unwrap();
+        let full = Table2d::<16>::new(&Huge, interp).unwrap();
+        assert_eq!(sep.values(Axis::X)[3], cap);
+        assert_eq!(full.values()[3][3], -cap);
+        assert_eq!(sep.weight(0.5, 0.5), cap * cap);
+        for (x, y) in [
+            (1.5, 0.0),
+            (0.0, -1.5),
+            (f32::NAN, 0.0),
+            (f32::INFINITY, 0.5),
+        ] {
+            assert_eq!(sep.weight(x, y), 0.0, "({x}, {y})");
+            assert_eq!(full.weight(x, y), 0.0, "({x}, {y})");
+        }
+    }
 }
 
 #[test]
