@@ -101,18 +101,25 @@ impl Footprint {
     }
 }
 
-/// `⌊v⌋` for finite `v` within ±2⁶², without a libm call (x86-64's baseline has no `roundsd`).
+/// `2⁵² + 2⁵¹`: adding it to an `f64` below 2³¹ in magnitude rounds it to an integer held in
+/// the low mantissa bits (two's complement in the low 32).
+const ROUND_MAGIC: f64 = 6_755_399_441_055_744.0;
+
+/// `⌊v⌋` for `|v| < 2³¹` (the clamped footprint ends), without a libm call or a saturating
+/// conversion: round to nearest by [`ROUND_MAGIC`], then step down when that went up.
 #[inline(always)]
 fn floor_i64(v: f64) -> i64 {
-    let t = v as i64;
-    t - i64::from(t as f64 > v)
+    let m = v + ROUND_MAGIC;
+    let r = m - ROUND_MAGIC;
+    i64::from(m.to_bits() as u32 as i32) - i64::from(r > v)
 }
 
-/// `⌈v⌉` for finite `v` within ±2⁶².
+/// `⌈v⌉` for `|v| < 2³¹`.
 #[inline(always)]
 fn ceil_i64(v: f64) -> i64 {
-    let t = v as i64;
-    t + i64::from((t as f64) < v)
+    let m = v + ROUND_MAGIC;
+    let r = m - ROUND_MAGIC;
+    i64::from(m.to_bits() as u32 as i32) + i64::from(r < v)
 }
 
 /// Adds `f·l` and `f` to every pixel of the footprint, `f` from `w`. `pixels` is the tile's
