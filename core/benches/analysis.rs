@@ -1,5 +1,7 @@
 //! Analysis measures: exact 2D star discrepancy, L2 discrepancies and the minimum distance, each
 //! beside a slower peer (the general enumerator, the O(N²) pair scan) in the same group.
+mod cpu_time;
+
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::analysis::{
     PointSet, Topology, centered_l2_discrepancy, l2_star_discrepancy, min_distance,
@@ -27,7 +29,7 @@ fn naive_min_distance(pts: &[f64]) -> f64 {
     best.sqrt()
 }
 
-fn star(c: &mut Criterion) {
+fn star(c: &mut Criterion<cpu_time::BenchClock>) {
     const N: usize = 4096;
     let pts = random(N, 1);
     let set = PointSet::new(&pts, 2).unwrap();
@@ -44,7 +46,7 @@ fn star(c: &mut Criterion) {
     g.finish();
 }
 
-fn l2(c: &mut Criterion) {
+fn l2(c: &mut Criterion<cpu_time::BenchClock>) {
     const N: usize = 4096;
     let pts = random(N, 2);
     let set = PointSet::new(&pts, 2).unwrap();
@@ -62,7 +64,7 @@ fn l2(c: &mut Criterion) {
     g.finish();
 }
 
-fn distance(c: &mut Criterion) {
+fn distance(c: &mut Criterion<cpu_time::BenchClock>) {
     let mut g = c.benchmark_group("min_distance");
     g.sample_size(10);
     for n in [4096usize, 1_000_000] {
@@ -87,5 +89,9 @@ fn distance(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, star, l2, distance);
+criterion_group! {
+    name = benches;
+    config = cpu_time::config();
+    targets = star, l2, distance
+}
 criterion_main!(benches);

@@ -6,6 +6,8 @@
 //! the default Lanczos table ≤ 50 µs. Every figure is per weight (`Throughput::Elements`).
 //! After the run the bench prints the table/direct ratios of each filter from criterion's
 //! estimates of this run (median per weight).
+mod cpu_time;
+
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
 use nyquist::filter::{
     Boxcar, Filter, FilterSampler, FilterTable, Gaussian, Interpolation, Lanczos, Mitchell,
@@ -34,7 +36,7 @@ fn offsets(r: [f32; 2]) -> Vec<(f32, f32)> {
         .collect()
 }
 
-fn run(c: &mut Criterion, name: &str, f: &(impl Filter + ?Sized)) {
+fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?Sized)) {
     let pts = offsets(f.radius());
     let dynamic: &dyn Filter = &f;
     let linear: FilterTable = FilterTable::new(f, Interpolation::Linear).unwrap();
@@ -109,7 +111,7 @@ fn run(c: &mut Criterion, name: &str, f: &(impl Filter + ?Sized)) {
     g.finish();
 }
 
-fn weights(c: &mut Criterion) {
+fn weights(c: &mut Criterion<cpu_time::BenchClock>) {
     run(c, "box", &Boxcar::default());
     run(c, "triangle", &Triangle::default());
     run(c, "gaussian", &Gaussian::default());
@@ -117,7 +119,7 @@ fn weights(c: &mut Criterion) {
     run(c, "lanczos", &Lanczos::default());
 }
 
-fn build(c: &mut Criterion) {
+fn build(c: &mut Criterion<cpu_time::BenchClock>) {
     let mut g = c.benchmark_group("build");
     g.throughput(Throughput::Elements(1));
     let l = Lanczos::default();
@@ -134,7 +136,7 @@ fn build(c: &mut Criterion) {
     g.finish();
 }
 
-fn sampling(c: &mut Criterion) {
+fn sampling(c: &mut Criterion<cpu_time::BenchClock>) {
     let mut g = c.benchmark_group("sample");
     g.throughput(Throughput::Elements(COUNT as u64));
     let mut rng = default_rng(7);
@@ -163,7 +165,11 @@ fn sampling(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, weights, build, sampling);
+criterion_group! {
+    name = benches;
+    config = cpu_time::config();
+    targets = weights, build, sampling
+}
 
 /// Where criterion writes its estimates: `$CRITERION_HOME`, else `$CARGO_TARGET_DIR/criterion`,
 /// else the workspace's `target/criterion` (benches run in the package directory).
@@ -244,6 +250,6 @@ fn report(since: SystemTime) {
 fn main() {
     let since = SystemTime::now();
     benches();
-    Criterion::default().configure_from_args().final_summary();
+    cpu_time::config().configure_from_args().final_summary();
     report(since);
 }

@@ -1,5 +1,7 @@
 //! Radical-inverse throughput: ours against plain digit loops (base as a compile-time constant,
 //! and base at run time), on the same random indices below 10⁷ and the same dimensions.
+mod cpu_time;
+
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::radical::{
     PRIMES, fill_radical_inverse, folded_radical_inverse, radical_inverse,
@@ -82,7 +84,7 @@ fn run(out: &mut [f32], idx: &[u64], f: impl Fn(u32, u64) -> f32) {
     }
 }
 
-fn halton(c: &mut Criterion) {
+fn halton(c: &mut Criterion<cpu_time::BenchClock>) {
     // Sanity: the const-generic table matches the primes.
     assert_eq!(PRIMES[63], 311);
     assert_eq!(ri_const_dispatch(63, 12345), ri_runtime(311, 12345));
@@ -175,5 +177,9 @@ fn halton(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, halton);
+criterion_group! {
+    name = benches;
+    config = cpu_time::config();
+    targets = halton
+}
 criterion_main!(benches);

@@ -6,6 +6,8 @@
 //! Targets (issue 4): ≤ 15 ns per camera sample for halton, stratified, zero-two, sobol;
 //! ≤ 1 µs per 16-sample pixel with two 2D arrays of 4.
 
+mod cpu_time;
+
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sampler::{
@@ -31,7 +33,7 @@ fn camera<S: Sampler>(s: &mut S) -> f32 {
     acc
 }
 
-fn camera_sample_bench(c: &mut Criterion) {
+fn camera_sample_bench(c: &mut Criterion<cpu_time::BenchClock>) {
     let mut g = c.benchmark_group("camera_sample");
     g.throughput(Throughput::Elements(u64::from(PIXELS * PIXELS * SPP)));
     g.bench_function("pcg32_5_floats_peer", |b| {
@@ -89,7 +91,7 @@ fn by_hand<S: Sampler>(s: &mut S, pixel: [u32; 2], out: &mut [f32; 21]) -> f32 {
     acc
 }
 
-fn request_and_fill_bench(c: &mut Criterion) {
+fn request_and_fill_bench(c: &mut Criterion<cpu_time::BenchClock>) {
     let mut g = c.benchmark_group("request_and_fill_pixel_16spp_two_2d_arrays_of_4");
     g.throughput(Throughput::Elements(1));
     macro_rules! bench {
@@ -128,5 +130,9 @@ fn request_and_fill_bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, camera_sample_bench, request_and_fill_bench);
+criterion_group! {
+    name = benches;
+    config = cpu_time::config();
+    targets = camera_sample_bench, request_and_fill_bench
+}
 criterion_main!(benches);

@@ -5,6 +5,8 @@
 //! indices (16 set bits on average, the case of a global sequence over a large image). Every
 //!
 
+mod cpu_time;
+
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -99,7 +101,7 @@ fn indices(coherent: bool) -> Vec<u32> {
 /// Runs `kernel` over every dimension's table and every index; generic so the kernel inlines
 /// exactly as our own `sobol_u32` does.
 fn bench_kernel<T>(
-    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    g: &mut criterion::BenchmarkGroup<'_, cpu_time::BenchClock>,
     name: &str,
     tables: &[T],
     idx: &[u32],
@@ -118,7 +120,7 @@ fn bench_kernel<T>(
     });
 }
 
-fn bench_kernels(c: &mut Criterion) {
+fn bench_kernels(c: &mut Criterion<cpu_time::BenchClock>) {
     let cols = columns();
     let ours = Sobol::new(DIMS).unwrap();
     for (name, coherent) in [("coherent", true), ("incoherent", false)] {
@@ -191,7 +193,7 @@ fn bench_kernels(c: &mut Criterion) {
     }
 }
 
-fn bench_fill(c: &mut Criterion) {
+fn bench_fill(c: &mut Criterion<cpu_time::BenchClock>) {
     // Point-major fill of 1024 consecutive points × 64 dims: the trait's default (one `sample`
     // per value) against Sobol's incremental override.
     struct ViaSample(Sobol);
@@ -220,5 +222,9 @@ fn bench_fill(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench_kernels, bench_fill);
+criterion_group! {
+    name = benches;
+    config = cpu_time::config();
+    targets = bench_kernels, bench_fill
+}
 criterion_main!(benches);

@@ -9,6 +9,8 @@
 //!   `j + UniformUInt32(n − j)`;
 //! - shuffle: the same forward Fisher–Yates over blocks.
 
+mod cpu_time;
+
 use std::hint::black_box;
 
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
@@ -70,7 +72,7 @@ fn pbrt_shuffle<T>(buf: &mut [T], count: usize, dims: usize, rng: &mut DefaultRn
     }
 }
 
-fn bench_stratified_2d(c: &mut Criterion) {
+fn bench_stratified_2d(c: &mut Criterion<cpu_time::BenchClock>) {
     let (nx, ny) = (16u32, 16u32);
     let mut buf = vec![0.0f32; (2 * nx * ny) as usize];
     let mut g = c.benchmark_group("stratified_2d_16x16");
@@ -99,7 +101,7 @@ fn bench_stratified_2d(c: &mut Criterion) {
     g.finish();
 }
 
-fn bench_latin_hypercube(c: &mut Criterion) {
+fn bench_latin_hypercube(c: &mut Criterion<cpu_time::BenchClock>) {
     let (n, dims) = (256usize, 4u32);
     let mut buf = vec![0.0f32; n * dims as usize];
     let mut g = c.benchmark_group("latin_hypercube_256pts_4dims");
@@ -119,7 +121,7 @@ fn bench_latin_hypercube(c: &mut Criterion) {
     g.finish();
 }
 
-fn bench_shuffle(c: &mut Criterion) {
+fn bench_shuffle(c: &mut Criterion<cpu_time::BenchClock>) {
     let n = 1024usize;
     let mut buf: Vec<f32> = (0..n).map(|i| i as f32).collect();
     let mut g = c.benchmark_group("shuffle_1024_f32");
@@ -147,10 +149,11 @@ fn bench_shuffle(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(
-    benches,
-    bench_stratified_2d,
+criterion_group! {
+    name = benches;
+    config = cpu_time::config();
+    targets = bench_stratified_2d,
     bench_latin_hypercube,
     bench_shuffle
-);
+}
 criterion_main!(benches);
