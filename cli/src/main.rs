@@ -7,13 +7,16 @@
 mod filter;
 mod output;
 mod points;
+mod progress;
+mod render;
 mod scene;
 mod svg;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-/// Sampling and reconstruction for image synthesis: emit and analyse point sets.
+/// Sampling and reconstruction for image synthesis: point sets, filters, test renders and
+/// sampler comparison sheets.
 #[derive(Debug, Parser)]
 #[command(name = "nyquist", version, about, max_term_width = 100)]
 struct Cli {
@@ -31,6 +34,10 @@ enum Command {
     ///
     /// Example: nyquist filter --filter mitchell:b=0.5,c=0.25 --grid 5
     Filter(filter::FilterArgs),
+    /// Render a built-in scene with a sampler and a filter; measure it against a reference.
+    ///
+    /// Example: nyquist render --scene zoneplate --sampler sobol --spp 16 --filter mitchell -o zp.png
+    Render(render::RenderArgs),
 }
 
 fn main() -> ExitCode {
@@ -41,6 +48,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Points(args) => points::run(args),
         Command::Filter(args) => filter::run(args),
+        Command::Render(args) => render::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
