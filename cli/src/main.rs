@@ -4,10 +4,12 @@
 //! file beside the target and renamed into place, so a failure leaves nothing behind.
 #![forbid(unsafe_code)]
 
+mod compare;
 mod filter;
 mod output;
 mod points;
 mod progress;
+mod raster;
 mod render;
 mod scene;
 mod svg;
@@ -38,6 +40,11 @@ enum Command {
     ///
     /// Example: nyquist render --scene zoneplate --sampler sobol --spp 16 --filter mitchell -o zp.png
     Render(render::RenderArgs),
+    /// Render a scene with every sampler × filter × spp in parallel: one labelled contact sheet
+    /// (PNG), an RMSE table (Markdown) or JSON.
+    ///
+    /// Example: nyquist compare --samplers uniform,stratified,sobol --spp 1,16 -o sheet.png
+    Compare(compare::CompareArgs),
 }
 
 fn main() -> ExitCode {
@@ -49,6 +56,7 @@ fn main() -> ExitCode {
         Command::Points(args) => points::run(args),
         Command::Filter(args) => filter::run(args),
         Command::Render(args) => render::run(args),
+        Command::Compare(args) => compare::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
