@@ -324,10 +324,7 @@ fn render_cells(args: &CompareArgs, cells: &[Cell], threads: usize) -> Result<Ve
             let tx = tx.clone();
             let (order, next, bar) = (&order, &next, &bar);
             scope.spawn(move || {
-                loop {
-                    let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) else {
-                        break;
-                    };
+                while let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
                     let c = &cells[i];
                     let r = render(
                         args.scene,
