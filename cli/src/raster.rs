@@ -45,7 +45,7 @@ impl Canvas {
     }
 
     /// The colour of pixel `(x, y)` (black outside).
-    #[cfg(test)]
+    #[cfg_attr(not(test), allow(dead_code))]
     pub fn get(&self, x: u32, y: u32) -> [u8; 3] {
         if x < self.width && y < self.height {
             let o = 3 * (y as usize * self.width as usize + x as usize);
@@ -55,7 +55,6 @@ impl Canvas {
         }
     }
 
-    #[allow(dead_code)] // used by points --format png (next)
     /// Fills the rectangle `[x, x + w) × [y, y + h)`.
     pub fn fill_rect(&mut self, x: i64, y: i64, w: u32, h: u32, color: [u8; 3]) {
         for j in 0..i64::from(h) {
@@ -65,7 +64,6 @@ impl Canvas {
         }
     }
 
-    #[allow(dead_code)]
     /// A filled disc of radius `r` centred at `(cx, cy)` (pixel centres inside are set).
     pub fn disc(&mut self, cx: f64, cy: f64, r: f64, color: [u8; 3]) {
         let (x0, x1) = ((cx - r).floor() as i64, (cx + r).ceil() as i64);
