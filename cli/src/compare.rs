@@ -131,11 +131,11 @@ pub fn crop(scene: Scene, size: [u32; 2]) -> [u32; 4] {
 }
 
 /// The three label lines of a cell.
-fn label(sampler: SamplerName, filter: &str, spp: u32, rmse: f64) -> [String; 3] {
+fn label(sampler: SamplerName, filter: &str, spp: u32, rmse: f64, sampling: f64) -> [String; 3] {
     [
         sampler.name(),
         format!("{filter} {spp}spp"),
-        format!("RMSE {rmse:.4}"),
+        format!("RMSE {rmse:.4} ({sampling:.4})"),
     ]
 }
 
@@ -177,16 +177,30 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
     let start = Instant::now();
-    let reference = reference(args.scene, args.size, threads)?;
+    let means = reference(args.scene, args.size, None, threads)?
+        .ok_or_else(|| anyhow!("no reference for this scene"))?;
+    let mut filtered = Vec::with_capacity(filters.len());
+    for (_, f) in filters {
+        filtered.push(reference(args.scene, args.size, Some(f), threads)?);
+    }
     let results = render_cells(args, &cells, threads)?;
     let seconds = start.elapsed().as_secs_f64();
 
-    let errors: Vec<f64> = results.iter().map(|r| rmse(&r.image, &reference)).collect();
+    let errors: Vec<f64> = results.iter().map(|r| rmse(&r.image, &means)).collect();
+    let sampling: Vec<f64> = cells
+        .iter()
+        .zip(&results)
+        .map(|(c, r)| {
+            filtered[c.filter]
+                .as_ref()
+                .map_or(f64::NAN, |f| rmse(&r.image, f))
+        })
+        .collect();
     let [cx, cy, cw, ch] = crop(args.scene, args.size);
     let labels: Vec<[String; 3]> = cells
         .iter()
-        .zip(&errors)
-        .map(|(c, &e)| label(c.sampler_name, &filters[c.filter].0, c.sampler.spp(), e))
+        .zip(errors.iter().zip(&sampling))
+        .map(|(c, (&e, &s))| label(c.sampler_name, &filters[c.filter].0, c.sampler.spp(), e, s))
         .collect();
     let label_w = labels
         .iter()
@@ -208,11 +222,11 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             cy + ch
         ),
         format!(
-            "RMSE vs {}",
+            "RMSE vs {} pixel means (vs converged same filter)",
             if args.scene == Scene::Zoneplate {
-                "exact pixel means"
+                "exact"
             } else {
-                "1024spp stratified"
+                "1024spp"
             }
         ),
     ];
@@ -246,12 +260,17 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             json_string(&args.output.to_string_lossy()),
             json_number(seconds),
         );
-        for (k, ((c, r), &e)) in cells.iter().zip(&results).zip(&errors).enumerate() {
+        for (k, ((c, r), (&e, &smp))) in cells
+            .iter()
+            .zip(&results)
+            .zip(errors.iter().zip(&sampling))
+            .enumerate()
+        {
             if k > 0 {
                 s.push(',');
             }
             s.push_str(&format!(
-                "{{\"sampler\":{},\"filter\":{},\"filter_spec\":{},\"spp\":{},\"spp_requested\":{},\"row\":{},\"column\":{},\"rmse\":{},\"psnr\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
+                "{{\"sampler\":{},\"filter\":{},\"filter_spec\":{},\"spp\":{},\"spp_requested\":{},\"row\":{},\"column\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
                 json_string(&c.sampler_name.name()),
                 json_string(&filters[c.filter].0),
                 json_string(&filters[c.filter].1.to_string()),
@@ -261,6 +280,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 c.column,
                 json_number(e),
                 json_number(psnr(e)),
+                json_number(smp),
                 r.stats.samples,
                 r.stats.rejected,
                 json_number(r.seconds),
@@ -271,7 +291,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         println!("{s}");
     } else {
         println!(
-            "RMSE of {} {}x{} against the {}; sheet: {}",
+            "RMSE of {} {}x{} against the {}, and in brackets against the converged image through the same filter (sampling error alone); sheet: {}",
             args.scene.name(),
             args.size[0],
             args.size[1],
@@ -291,12 +311,16 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         println!("{rule}");
         for (row, name) in args.samplers.iter().enumerate() {
             let mut line = format!("| {} |", name.name());
-            for (c, &e) in cells.iter().zip(&errors).filter(|(c, _)| c.row == row) {
-                if c.sampler.spp() == c.spp {
-                    line.push_str(&format!(" {e:.4} |"));
-                } else {
-                    line.push_str(&format!(" {e:.4} ({} spp) |", c.sampler.spp()));
+            for (c, (&e, &smp)) in cells
+                .iter()
+                .zip(errors.iter().zip(&sampling))
+                .filter(|(c, _)| c.row == row)
+            {
+                line.push_str(&format!(" {e:.4} ({smp:.4})"));
+                if c.sampler.spp() != c.spp {
+                    line.push_str(&format!(" [{} spp]", c.sampler.spp()));
                 }
+                line.push_str(" |");
             }
             println!("{line}");
         }

@@ -33,6 +33,7 @@ fn compare_writes_one_sheet_of_the_expected_size_and_one_json_entry_per_cell() {
     // 3 samplers × 2 filters × 2 spp.
     assert_eq!(j.matches("\"sampler\":").count(), 12);
     assert_eq!(j.matches("\"rmse\":").count(), 12);
+    assert_eq!(j.matches("\"sampling_rmse\":").count(), 12);
     assert!(j.contains("\"filter\":\"mitchell:b=0.5,c=0.25\""));
     // Geometry: crop 20×20; the widest label is "mitchell:b=0.5,c=0.25 4spp" (26 chars, 208 px);
     // cells of 208 + 8 across 4 columns, 20 + 3 + 30 + 8 down 3 rows, 2 title lines.
@@ -75,12 +76,12 @@ fn markdown_table_has_a_row_per_sampler_and_a_column_per_filter_and_spp() {
         "| sampler | box 1 | box 4 | box 16 | mitchell 1 | mitchell 4 | mitchell 16 |"
     );
     assert!(table[2].starts_with("| random |") && table[3].starts_with("| halton |"));
-    // RMSE of box-filtered halton falls with spp.
+    // RMSE of box-filtered halton falls with spp; cells read "rmse (sampling rmse)".
     let e: Vec<f64> = table[3]
         .split('|')
         .skip(2)
         .take(3)
-        .map(|v| v.trim().parse().unwrap())
+        .map(|v| v.split_whitespace().next().unwrap().parse().unwrap())
         .collect();
     assert!(e[0] > e[1] && e[1] > e[2], "{e:?}");
     assert!(out.exists());

@@ -78,6 +78,26 @@ fn stratified_256_spp_box_matches_the_fresnel_reference() {
 }
 
 #[test]
+fn sampling_rmse_measures_against_the_same_filter() {
+    let cache = temp_dir("render-sampling");
+    // With the box, the filtered reference (1D quadrature) is the Fresnel pixel means.
+    let j = metrics(&["--spp", "4", "--size", "32x32"], &cache);
+    assert!(
+        (json_field(&j, "rmse") - json_field(&j, "sampling_rmse")).abs() < 1e-5,
+        "{j}"
+    );
+    // Mitchell converges to its own blurred image, not to the pixel means: the blur stays in
+    // the rmse, the sampling error goes (its floor, ~1.8e-3, is the film's filter table).
+    let j = metrics(
+        &["--filter", "mitchell", "--spp", "256", "--size", "48x48"],
+        &cache,
+    );
+    assert!(json_field(&j, "sampling_rmse") < 3e-3, "{j}");
+    assert!(json_field(&j, "rmse") > 0.03, "{j}");
+    let _ = std::fs::remove_dir_all(&cache);
+}
+
+#[test]
 fn rmse_falls_as_spp_rises_for_stratified_and_sobol() {
     let cache = temp_dir("render-converge");
     for sampler in ["stratified", "sobol"] {
@@ -235,7 +255,7 @@ fn human_metrics_print_every_number() {
     let o = nyquist_cached(&["render", "--size", "16x16", "--metrics"], &cache);
     assert!(o.status.success());
     let s = stdout(&o);
-    for key in ["rmse", "psnr", "samples/s", "rejected"] {
+    for key in ["rmse", "psnr", "sampling rmse", "samples/s", "rejected"] {
         assert!(s.lines().any(|l| l.starts_with(key)), "{key} in {s}");
     }
     let _ = std::fs::remove_dir_all(&cache);
