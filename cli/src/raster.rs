@@ -134,6 +134,8 @@ impl Canvas {
             let mut enc = png::Encoder::new(w, self.width, self.height);
             enc.set_color(png::ColorType::Rgb);
             enc.set_depth(png::BitDepth::Eight);
+            enc.set_compression(png::Compression::High);
+            enc.set_filter(png::Filter::Paeth);
             let mut writer = enc.write_header().context("PNG header")?;
             writer.write_image_data(&self.rgb).context("PNG data")?;
             writer.finish().context("PNG end")?;
