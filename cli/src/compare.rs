@@ -156,6 +156,15 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             "--samplers × --filters × --spp is {count} renders; a sheet takes at most {MAX_CELLS}"
         );
     }
+    let pixels = u64::from(args.size[0]) * u64::from(args.size[1]) * count as u64;
+    if pixels > crate::render::MAX_PIXELS {
+        bail!(
+            "--size {}x{} × {count} renders is more than {} pixels in all",
+            args.size[0],
+            args.size[1],
+            crate::render::MAX_PIXELS
+        );
+    }
     // Every sampler is built (and every combination checked) before anything renders.
     let mut cells = Vec::with_capacity(count);
     for (row, &name) in args.samplers.iter().enumerate() {

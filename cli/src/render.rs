@@ -18,6 +18,8 @@ use std::time::Instant;
 pub const TILE: u32 = 16;
 /// The largest image side `--size` accepts.
 pub const MAX_SIDE: u32 = 16384;
+/// The most pixels `--size` accepts (the film keeps 32 bytes per pixel: 2 GiB).
+pub const MAX_PIXELS: u64 = 1 << 26;
 /// The cached reference of scenes without a closed form: stratified, this many strata per axis.
 const REFERENCE_STRATA: u32 = 32;
 /// Seed of the cached reference renders.
@@ -387,7 +389,11 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
         Ok(v) if (1..=MAX_SIDE).contains(&v) => Ok(v),
         _ => Err(bad()),
     };
-    Ok([side(a)?, side(b)?])
+    let size = [side(a)?, side(b)?];
+    if u64::from(size[0]) * u64::from(size[1]) > MAX_PIXELS {
+        return Err(format!("'{s}' has more than {MAX_PIXELS} pixels"));
+    }
+    Ok(size)
 }
 
 /// Parses a filter spec, the error listing the filters and keys.

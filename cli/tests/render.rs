@@ -283,6 +283,7 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
         (vec!["--size", "0x10"], "--size"),
         (vec!["--size", "64"], "--size"),
         (vec!["--size", "99999x2"], "--size"),
+        (vec!["--size", "16384x16384"], "--size"),
         (vec!["--threads", "0"], "--threads"),
         (vec!["--seed", "x"], "--seed"),
     ];
