@@ -4,16 +4,21 @@
 //! file beside the target and renamed into place, so a failure leaves nothing behind.
 #![forbid(unsafe_code)]
 
+mod compare;
 mod filter;
 mod output;
 mod points;
+mod progress;
+mod raster;
+mod render;
 mod scene;
 mod svg;
 
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-/// Sampling and reconstruction for image synthesis: emit and analyse point sets.
+/// Sampling and reconstruction for image synthesis: point sets, filters, test renders and
+/// sampler comparison sheets.
 #[derive(Debug, Parser)]
 #[command(name = "nyquist", version, about, max_term_width = 100)]
 struct Cli {
@@ -31,6 +36,15 @@ enum Command {
     ///
     /// Example: nyquist filter --filter mitchell:b=0.5,c=0.25 --grid 5
     Filter(filter::FilterArgs),
+    /// Render a built-in scene with a sampler and a filter; measure it against a reference.
+    ///
+    /// Example: nyquist render --scene zoneplate --sampler sobol --spp 16 --filter mitchell -o zp.png
+    Render(render::RenderArgs),
+    /// Render a scene with every sampler × filter × spp in parallel: one labelled contact sheet
+    /// (PNG), an RMSE table (Markdown) or JSON.
+    ///
+    /// Example: nyquist compare --samplers uniform,stratified,sobol --spp 1,16 -o sheet.png
+    Compare(compare::CompareArgs),
 }
 
 fn main() -> ExitCode {
@@ -41,6 +55,8 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Points(args) => points::run(args),
         Command::Filter(args) => filter::run(args),
+        Command::Render(args) => render::run(args),
+        Command::Compare(args) => compare::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

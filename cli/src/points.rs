@@ -54,6 +54,8 @@ pub enum Format {
     /// An SVG picture of dimensions 0 and 1 in the unit square (the pixel for --spp), with the
     /// strata grid where the sampler has one.
     Svg,
+    /// The same picture as svg, as a PNG (needs --output FILE.png).
+    Png,
 }
 
 /// Points, their dimension count, and the stratum grid to draw (if any).
@@ -96,8 +98,8 @@ pub struct PointsArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "csv")]
     pub format: Format,
-    /// Write to this file instead of stdout.
-    #[arg(long)]
+    /// Write to this file instead of stdout (required for png).
+    #[arg(short, long)]
     pub output: Option<PathBuf>,
 }
 
@@ -126,6 +128,12 @@ pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
 
 /// Runs `nyquist points`.
 pub fn run(args: &PointsArgs) -> Result<()> {
+    if args.format == Format::Png {
+        match &args.output {
+            Some(p) => crate::render::check_output(p, "--output", &["png"])?,
+            None => bail!("--format png writes a picture: give --output FILE.png"),
+        }
+    }
     let (points, dims, grid) = if pixel_mode(args) {
         pixel_samples(args)?
     } else {
@@ -144,6 +152,9 @@ pub fn run(args: &PointsArgs) -> Result<()> {
         (points, dims, grid)
     };
     let title = format!("nyquist points --sampler {}", name(args.sampler));
+    if let (Format::Png, Some(path)) = (args.format, &args.output) {
+        return crate::svg::plot_points(&points, dims, grid, &title).write_png(path, "--output");
+    }
     crate::output::to_stdout_or_file(args.output.as_deref(), |w| match args.format {
         Format::Svg => crate::svg::write_svg(w, &points, dims, grid, &title),
         f => write_points(w, &points, dims, f),
@@ -463,6 +474,7 @@ pub fn write_points(w: &mut dyn Write, points: &[f32], dims: usize, format: Form
             w.write_all(b"]\n")?;
         }
         Format::Svg => crate::svg::write_svg(w, points, dims, None, "nyquist points")?,
+        Format::Png => bail!("--format png writes a picture: give --output FILE.png"),
     }
     Ok(())
 }

@@ -6,8 +6,102 @@
 //!   Nyquist limit at the edge midpoints. The box-filtered pixel integral has a closed form through
 //!   the Fresnel integrals: the integrand factors as e^{iπu²/W}·e^{iπv²/W}.
 
-// The scene module is prework for the render/compare commands; only the reference is used yet.
-#![allow(dead_code)]
+//! - `checkerboard`: Tom Duff's classic: an infinite checkered ground plane seen in perspective,
+//!   receding to the horizon. Above the horizon the sky is ½, the mean of the checks, so the
+//!   far field (where every pixel covers many checks) averages to ½ on both sides.
+//! - `disk`: a hard-edged white disk on black (jaggies along every edge direction).
+//! - `edge`: a half plane whose edge is tilted 8° from vertical (the staircase of jaggies).
+//! - `stripes`: vertical black and white stripes moving sideways during the shutter interval,
+//!   faster further down the image (0 at the top, two stripe periods per shutter at the
+//!   bottom): the time sample turns motion into blur, a fixed time freezes it (the
+//!   wagon-wheel effect).
+
+use clap::ValueEnum;
+
+/// The built-in scenes of `render` and `compare`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Scene {
+    /// ½ + ½·cos(π r²/W): rings whose frequency reaches Nyquist at the edge midpoints.
+    Zoneplate,
+    /// An infinite checkered ground plane in perspective, receding to the horizon.
+    Checkerboard,
+    /// A hard-edged disk.
+    Disk,
+    /// A hard edge tilted 8° from vertical.
+    Edge,
+    /// Stripes moving during the shutter (uses the time sample): motion blur vs strobing.
+    Stripes,
+}
+
+impl Scene {
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Scene::Zoneplate => "zoneplate",
+            Scene::Checkerboard => "checkerboard",
+            Scene::Disk => "disk",
+            Scene::Edge => "edge",
+            Scene::Stripes => "stripes",
+        }
+    }
+
+    /// Whether the scene reads the time sample.
+    pub fn uses_time(self) -> bool {
+        self == Scene::Stripes
+    }
+
+    /// The radiance at film position `(x, y)` (pixels) and shutter time `t ∈ [0, 1)` for a
+    /// `width × height` image.
+    #[inline]
+    pub fn eval(self, x: f64, y: f64, t: f64, width: f64, height: f64) -> f64 {
+        match self {
+            Scene::Zoneplate => zoneplate(x, y, width, height),
+            Scene::Checkerboard => checkerboard(x, y, width, height),
+            Scene::Disk => {
+                // Off-centre by a fraction of a pixel so no symmetry lines up with the grid.
+                let (cx, cy) = (0.5 * width + 0.123, 0.5 * height + 0.057);
+                let r = 0.375 * width.min(height);
+                let (dx, dy) = (x - cx, y - cy);
+                if dx * dx + dy * dy <= r * r { 1.0 } else { 0.0 }
+            }
+            Scene::Edge => {
+                // White left of a line through the centre, tilted 8° from vertical.
+                let (cx, cy) = (0.5 * width, 0.5 * height);
+                let tan = 0.140_540_834_702_391_4; // tan(8°)
+                if x - cx < tan * (y - cy) { 1.0 } else { 0.0 }
+            }
+            Scene::Stripes => {
+                let period = (width / 16.0).max(2.0);
+                let speed = 2.0 * period * (y / height);
+                let u = (x - speed * t) / period;
+                if u - u.floor() < 0.5 { 1.0 } else { 0.0 }
+            }
+        }
+    }
+}
+
+/// The checkerboard: a camera 1 unit above the plane, looking level, focal length W/2 pixels
+/// (90° horizontal field of view), horizon at 30 % of the height; checks of side ¼ unit.
+fn checkerboard(x: f64, y: f64, width: f64, height: f64) -> f64 {
+    let f = 0.5 * width;
+    let horizon = 0.3 * height;
+    let sy = (y - horizon) / f;
+    if !(sy > 0.0) {
+        return 0.5;
+    }
+    let depth = 1.0 / sy;
+    let side = (x - 0.5 * width) / f * depth;
+    let (i, j) = ((side * 4.0).floor(), (depth * 4.0).floor());
+    // Far beyond 2⁵³ the parity of a float is meaningless; the pixel there averages to ½ anyway.
+    if !(i.abs() < 9e15 && j.abs() < 9e15) {
+        return 0.5;
+    }
+    if (i as i64 + j as i64).rem_euclid(2) == 0 {
+        1.0
+    } else {
+        0.0
+    }
+}
 
 /// The zone plate's radiance at film position `(x, y)` (pixels) for a `width × height` image.
 pub fn zoneplate(x: f64, y: f64, width: f64, height: f64) -> f64 {
@@ -107,7 +201,79 @@ fn phase_integral(a: f64, b: f64, width: f64) -> (f64, f64) {
     (scale * (cb - ca), scale * (sb - sa))
 }
 
+/// The exact box-filtered zone plate: every pixel's mean, row-major, through one Fresnel
+/// integral per column and per row.
+pub fn zoneplate_reference(width: u32, height: u32) -> Vec<f64> {
+    let w = f64::from(width);
+    let fx: Vec<_> = (0..width)
+        .map(|px| {
+            let x0 = f64::from(px) - 0.5 * w;
+            phase_integral(x0, x0 + 1.0, w)
+        })
+        .collect();
+    let mut out = Vec::with_capacity(width as usize * height as usize);
+    for py in 0..height {
+        let y0 = f64::from(py) - 0.5 * f64::from(height);
+        let fy = phase_integral(y0, y0 + 1.0, w);
+        out.extend(fx.iter().map(|&f| 0.5 + 0.5 * cmul(f, fy).0));
+    }
+    out
+}
+
+/// The zone plate as a film with a separable filter converges to, pixel by pixel: the
+/// filter-weighted mean ∫f·L / ∫f over the filter's footprint clipped to the image (the film only
+/// receives samples inside it). The zone plate is ½ + ½·Re(e^{iπu²/W}·e^{iπv²/W}), so with
+/// f(x, y) = f_x(x)·f_y(y) the 2D integrals are products of 1D ones, each taken by the midpoint
+/// rule with 256 nodes per pixel. `None` for a filter without a separable form.
+pub fn zoneplate_filtered_reference(
+    width: u32,
+    height: u32,
+    filter: &dyn nyquist::filter::Filter,
+) -> Option<Vec<f64>> {
+    use nyquist::filter::Axis;
+    let w = f64::from(width);
+    let [rx, ry] = filter.radius();
+    // One axis: (∫ f(u − c)·e^{iπ(u − mid)²/W} du, ∫ f(u − c) du) per pixel, u over the image.
+    let axis = |n: u32, r: f32, ax: Axis| -> Option<Vec<((f64, f64), f64)>> {
+        let (len, r) = (f64::from(n), f64::from(r));
+        let mut out = Vec::with_capacity(n as usize);
+        for p in 0..n {
+            let c = f64::from(p) + 0.5;
+            let (a, b) = ((c - r).max(0.0), (c + r).min(len));
+            let cells = (((b - a) * 256.0).ceil() as usize).max(1);
+            let h = (b - a) / cells as f64;
+            let (mut re, mut im, mut norm) = (0.0, 0.0, 0.0);
+            for k in 0..cells {
+                let u = a + (k as f64 + 0.5) * h;
+                let f = f64::from(filter.eval_1d(ax, (u - c) as f32)?);
+                let d = u - 0.5 * len;
+                let phase = std::f64::consts::PI * d * d / w;
+                re += f * phase.cos();
+                im += f * phase.sin();
+                norm += f;
+            }
+            out.push(((re * h, im * h), norm * h));
+        }
+        Some(out)
+    };
+    let gx = axis(width, rx, Axis::X)?;
+    let gy = axis(height, ry, Axis::Y)?;
+    let mut out = Vec::with_capacity(width as usize * height as usize);
+    for &(fy, ny) in &gy {
+        out.extend(gx.iter().map(|&(fx, nx)| {
+            let norm = nx * ny;
+            if norm > 0.0 {
+                0.5 + 0.5 * cmul(fx, fy).0 / norm
+            } else {
+                0.0
+            }
+        }));
+    }
+    Some(out)
+}
+
 /// The exact mean of the zone plate over pixel `(px, py)` (the box-filtered pixel value).
+#[cfg(test)]
 pub fn zoneplate_pixel_mean(px: u32, py: u32, width: u32, height: u32) -> f64 {
     let (w, h) = (f64::from(width), f64::from(height));
     let (x0, y0) = (f64::from(px) - 0.5 * w, f64::from(py) - 0.5 * h);
@@ -157,6 +323,61 @@ mod tests {
             );
             assert_eq!(fresnel(-t), (-c, -s));
         }
+    }
+
+    #[test]
+    fn reference_table_matches_pixel_means() {
+        let (w, h) = (20u32, 12u32);
+        let r = zoneplate_reference(w, h);
+        for (py, px) in [(0, 0), (5, 7), (11, 19)] {
+            let want = zoneplate_pixel_mean(px, py, w, h);
+            assert!((r[(py * w + px) as usize] - want).abs() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn filtered_reference_with_a_box_is_the_fresnel_reference() {
+        let (w, h) = (24u32, 16u32);
+        let exact = zoneplate_reference(w, h);
+        let boxed = nyquist::filter::FilterKind::parse("box").unwrap();
+        let quad = zoneplate_filtered_reference(w, h, boxed.as_dyn()).unwrap();
+        for (a, b) in exact.iter().zip(&quad) {
+            assert!((a - b).abs() < 1e-5, "{a} vs {b}");
+        }
+        // A wider filter blurs: the corner rings (above Nyquist) lose contrast.
+        let m = nyquist::filter::FilterKind::parse("mitchell").unwrap();
+        let blurred = zoneplate_filtered_reference(w, h, m.as_dyn()).unwrap();
+        let spread = |v: &[f64]| {
+            let corner: Vec<f64> = (0..4)
+                .map(|k| v[(h as usize - 1 - k) * w as usize + w as usize - 1])
+                .collect();
+            corner.iter().cloned().fold(f64::MIN, f64::max)
+                - corner.iter().cloned().fold(f64::MAX, f64::min)
+        };
+        assert!(spread(&blurred) < spread(&quad));
+    }
+
+    #[test]
+    fn scenes_are_binary_or_in_unit_range() {
+        for s in [
+            Scene::Checkerboard,
+            Scene::Disk,
+            Scene::Edge,
+            Scene::Stripes,
+        ] {
+            for k in 0..500 {
+                let (x, y, t) = (k as f64 * 0.37 % 64.0, k as f64 * 0.71 % 48.0, 0.3);
+                let v = s.eval(x, y, t, 64.0, 48.0);
+                assert!(v == 0.0 || v == 1.0 || v == 0.5, "{s:?} {v}");
+            }
+        }
+        // Sky and centre of the disk.
+        assert_eq!(Scene::Checkerboard.eval(10.0, 1.0, 0.0, 64.0, 48.0), 0.5);
+        assert_eq!(Scene::Disk.eval(32.0, 24.0, 0.0, 64.0, 48.0), 1.0);
+        assert_eq!(Scene::Disk.eval(0.5, 0.5, 0.0, 64.0, 48.0), 0.0);
+        // Stripes: the top row does not move, the bottom row moves.
+        let top = |t| Scene::Stripes.eval(1.0, 0.0, t, 64.0, 48.0);
+        assert_eq!(top(0.0), top(0.9));
     }
 
     #[test]

@@ -63,6 +63,48 @@ pub fn write_svg(
     Ok(())
 }
 
+/// Draws the same picture as [`write_svg`] into a [`Canvas`](crate::raster::Canvas) (for PNG):
+/// the unit square with its `grid` strata lines, and one dot per point.
+pub fn plot_points(
+    points: &[f32],
+    dims: usize,
+    grid: Option<(u32, u32)>,
+    title: &str,
+) -> crate::raster::Canvas {
+    use crate::raster::{Canvas, LINE};
+    let size = (SIDE + 2.0 * MARGIN) as u32;
+    let mut c = Canvas::new(size, size + LINE, [255; 3]);
+    let (m, side) = (MARGIN as i64, SIDE as u32);
+    if let Some((nx, ny)) = grid {
+        if nx > 1 && nx <= 256 {
+            for i in 1..nx {
+                let x = MARGIN + SIDE * f64::from(i) / f64::from(nx);
+                c.fill_rect(x.round() as i64, m, 1, side, [187; 3]);
+            }
+        }
+        if ny > 1 && ny <= 256 {
+            for j in 1..ny {
+                let y = MARGIN + SIDE * f64::from(j) / f64::from(ny);
+                c.fill_rect(m, y.round() as i64, side, 1, [187; 3]);
+            }
+        }
+    }
+    // The square's border, just outside it.
+    c.fill_rect(m - 1, m - 1, side + 2, 1, [0; 3]);
+    c.fill_rect(m - 1, m + i64::from(side), side + 2, 1, [0; 3]);
+    c.fill_rect(m - 1, m - 1, 1, side + 2, [0; 3]);
+    c.fill_rect(m + i64::from(side), m - 1, 1, side + 2, [0; 3]);
+    let n = points.len() / dims.max(1);
+    let r = (SIDE / (4.0 * (n.max(1) as f64).sqrt())).clamp(1.0, 4.0);
+    for p in points.chunks_exact(dims.max(1)) {
+        let x = MARGIN + SIDE * f64::from(p[0]);
+        let y = MARGIN + SIDE * if dims >= 2 { f64::from(p[1]) } else { 0.5 };
+        c.disc(x, y, r, [204, 0, 51]);
+    }
+    c.text(m, i64::from(size) - 4, title, [0; 3]);
+    c
+}
+
 fn escape(s: &str) -> String {
     s.replace('&', "&amp;")
         .replace('<', "&lt;")
@@ -72,6 +114,17 @@ fn escape(s: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn png_plot_draws_dots_and_grid() {
+        let c = plot_points(&[0.25, 0.25], 2, Some((2, 2)), "t");
+        let m = MARGIN as u32;
+        let at = |u: f64, v: f64| c.get((MARGIN + SIDE * u) as u32, (MARGIN + SIDE * v) as u32);
+        assert_eq!(at(0.25, 0.25), [204, 0, 51]); // the dot
+        assert_eq!(at(0.75, 0.75), [255; 3]); // empty
+        assert_eq!(c.get(m + 256, m + 100), [187; 3]); // the grid line at x = ½
+        assert_eq!(c.get(m - 1, m + 100), [0; 3]); // the border
+    }
 
     #[test]
     fn svg_has_one_circle_per_point_and_the_grid() {

@@ -1,0 +1,52 @@
+//! One progress bar on stderr for long work: created hidden, shown once the work has taken more
+//! than a second, and only when stderr is a terminal (never in pipes, files or tests).
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use std::io::IsTerminal;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::{Duration, Instant};
+
+/// Work shorter than this never shows a bar.
+const SHOW_AFTER: Duration = Duration::from_secs(1);
+
+/// A progress bar over `total` units that appears only when the work is slow.
+#[derive(Debug)]
+pub struct Progress {
+    bar: ProgressBar,
+    start: Instant,
+    shown: AtomicBool,
+}
+
+impl Progress {
+    /// A hidden bar over `total` units with a short message (e.g. "render").
+    pub fn new(total: u64, message: &str) -> Progress {
+        let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
+        let style = ProgressStyle::with_template(
+            "{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} tiles (eta {eta})",
+        )
+        .unwrap_or_else(|_| ProgressStyle::default_bar());
+        bar.set_style(style);
+        bar.set_message(message.to_owned());
+        Progress {
+            bar,
+            start: Instant::now(),
+            shown: AtomicBool::new(!std::io::stderr().is_terminal()),
+        }
+    }
+
+    /// Adds `n` finished units; shows the bar once the work has taken more than a second.
+    pub fn inc(&self, n: u64) {
+        self.bar.inc(n);
+        if !self.shown.load(Ordering::Relaxed)
+            && self.start.elapsed() > SHOW_AFTER
+            && !self.shown.swap(true, Ordering::Relaxed)
+        {
+            self.bar.set_draw_target(ProgressDrawTarget::stderr());
+        }
+    }
+
+    /// Removes the bar from the terminal.
+    pub fn finish(&self) {
+        self.bar.finish_and_clear();
+    }
+}

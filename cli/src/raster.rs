@@ -1,0 +1,181 @@
+//! A small 8-bit RGB canvas for the CLI's pictures (contact sheets, point plots): rectangles,
+//! discs, image crops and text in the public-domain 8 × 8 bitmap font of the `font8x8` crate,
+//! written as PNG atomically.
+
+use anyhow::{Context, Result};
+use std::path::Path;
+
+/// Height of a text line in pixels: the 8-pixel glyph and 2 pixels of leading.
+pub const LINE: u32 = 10;
+/// Width of one character.
+pub const CHAR: u32 = 8;
+
+/// An RGB image in 8-bit sRGB, row-major.
+#[derive(Clone, Debug)]
+pub struct Canvas {
+    width: u32,
+    height: u32,
+    rgb: Vec<u8>,
+}
+
+impl Canvas {
+    /// A `width × height` canvas filled with `color`.
+    pub fn new(width: u32, height: u32, color: [u8; 3]) -> Canvas {
+        let n = width as usize * height as usize;
+        Canvas {
+            width,
+            height,
+            rgb: color.iter().copied().cycle().take(3 * n).collect(),
+        }
+    }
+
+    /// Width in pixels.
+    #[cfg(test)]
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Sets pixel `(x, y)`; outside the canvas nothing happens.
+    #[inline]
+    pub fn put(&mut self, x: i64, y: i64, color: [u8; 3]) {
+        if x >= 0 && y >= 0 && x < i64::from(self.width) && y < i64::from(self.height) {
+            let o = 3 * (y as usize * self.width as usize + x as usize);
+            self.rgb[o..o + 3].copy_from_slice(&color);
+        }
+    }
+
+    /// The colour of pixel `(x, y)` (black outside).
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub fn get(&self, x: u32, y: u32) -> [u8; 3] {
+        if x < self.width && y < self.height {
+            let o = 3 * (y as usize * self.width as usize + x as usize);
+            [self.rgb[o], self.rgb[o + 1], self.rgb[o + 2]]
+        } else {
+            [0; 3]
+        }
+    }
+
+    /// Fills the rectangle `[x, x + w) × [y, y + h)`.
+    pub fn fill_rect(&mut self, x: i64, y: i64, w: u32, h: u32, color: [u8; 3]) {
+        for j in 0..i64::from(h) {
+            for i in 0..i64::from(w) {
+                self.put(x + i, y + j, color);
+            }
+        }
+    }
+
+    /// A filled disc of radius `r` centred at `(cx, cy)` (pixel centres inside are set).
+    pub fn disc(&mut self, cx: f64, cy: f64, r: f64, color: [u8; 3]) {
+        let (x0, x1) = ((cx - r).floor() as i64, (cx + r).ceil() as i64);
+        let (y0, y1) = ((cy - r).floor() as i64, (cy + r).ceil() as i64);
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let (dx, dy) = (x as f64 + 0.5 - cx, y as f64 + 0.5 - cy);
+                if dx * dx + dy * dy <= r * r {
+                    self.put(x, y, color);
+                }
+            }
+        }
+    }
+
+    /// Copies the `w × h` block at `(sx, sy)` of `img` (linear RGB, converted to 8-bit sRGB)
+    /// to `(x, y)`.
+    #[allow(clippy::too_many_arguments)]
+    pub fn blit(
+        &mut self,
+        img: &nyquist_film::Image,
+        sx: u32,
+        sy: u32,
+        w: u32,
+        h: u32,
+        x: i64,
+        y: i64,
+    ) {
+        use nyquist_film::output::png::srgb_byte;
+        for j in 0..h.min(img.height().saturating_sub(sy)) {
+            for i in 0..w.min(img.width().saturating_sub(sx)) {
+                let p = img.get(sx + i, sy + j);
+                let c = [
+                    srgb_byte(p[0], None),
+                    srgb_byte(p[1], None),
+                    srgb_byte(p[2], None),
+                ];
+                self.put(x + i64::from(i), y + i64::from(j), c);
+            }
+        }
+    }
+
+    /// Writes `text` with its top-left corner at `(x, y)`, 8 pixels per character; characters
+    /// outside ASCII draw as `?`; pixels outside the canvas are clipped.
+    pub fn text(&mut self, x: i64, y: i64, text: &str, color: [u8; 3]) {
+        for (k, ch) in text.chars().enumerate() {
+            let code = if ch.is_ascii() {
+                ch as usize
+            } else {
+                '?' as usize
+            };
+            let glyph = font8x8::legacy::BASIC_LEGACY[code];
+            let gx = x + (k as i64) * i64::from(CHAR);
+            for (row, bits) in glyph.iter().enumerate() {
+                for col in 0..8 {
+                    // Bit 0 is the leftmost pixel.
+                    if bits >> col & 1 == 1 {
+                        self.put(gx + col, y + row as i64, color);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Writes the canvas as an 8-bit RGB PNG to `path`, atomically (`flag` names the option in
+    /// error messages).
+    pub fn write_png(&self, path: &Path, flag: &str) -> Result<()> {
+        crate::output::write_atomic(path, |w| {
+            let mut enc = png::Encoder::new(w, self.width, self.height);
+            enc.set_color(png::ColorType::Rgb);
+            enc.set_depth(png::BitDepth::Eight);
+            enc.set_compression(png::Compression::High);
+            enc.set_filter(png::Filter::Paeth);
+            let mut writer = enc.write_header().context("PNG header")?;
+            writer.write_image_data(&self.rgb).context("PNG data")?;
+            writer.finish().context("PNG end")?;
+            Ok(())
+        })
+        .map_err(|e| anyhow::anyhow!("{}", format!("{e:#}").replace("--output", flag)))
+    }
+}
+
+/// Pixels a line of `text` takes.
+pub fn text_width(text: &str) -> u32 {
+    CHAR.saturating_mul(text.chars().count() as u32)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_sets_glyph_pixels_and_clips() {
+        let mut c = Canvas::new(20, 10, [255; 3]);
+        c.text(0, 0, "I", [0; 3]);
+        // The legacy font's 'I' is 0x1E on its top row: columns 1 to 4.
+        assert_eq!(font8x8::legacy::BASIC_LEGACY['I' as usize][0], 0x1E);
+        assert_eq!(c.get(0, 0), [255; 3]);
+        assert_eq!(c.get(1, 0), [0; 3]);
+        assert_eq!(c.get(4, 0), [0; 3]);
+        assert_eq!(c.get(5, 0), [255; 3]);
+        c.text(15, 5, "WWW", [0; 3]); // runs off the canvas: no panic
+        assert_eq!(c.width(), 20);
+        assert_eq!(text_width("abc"), 24);
+    }
+
+    #[test]
+    fn disc_covers_its_centre_only_within_radius() {
+        let mut c = Canvas::new(10, 10, [0; 3]);
+        c.disc(5.0, 5.0, 2.0, [9; 3]);
+        assert_eq!(c.get(5, 5), [9; 3]);
+        assert_eq!(c.get(4, 4), [9; 3]);
+        assert_eq!(c.get(8, 5), [0; 3]);
+        assert_eq!(c.get(5, 1), [0; 3]);
+    }
+}

@@ -1,0 +1,573 @@
+//! `nyquist render`: render a built-in scene with a sampler and a reconstruction filter, write the
+//! image, and measure it against a reference.
+
+use crate::progress::Progress;
+use crate::scene::Scene;
+use anyhow::{Context, Result, anyhow, bail};
+use clap::{Args, ValueEnum};
+use nyquist::filter::FilterKind;
+use nyquist::sampler::{
+    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
+    Jitter, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler,
+};
+use nyquist_film::{Film, FilmConfig, FilmStats, Image, ImageFormat, render_tiles};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Tile side of the film: small enough to balance two threads on a 64 × 64 image.
+pub const TILE: u32 = 16;
+/// The largest image side `--size` accepts.
+pub const MAX_SIDE: u32 = 16384;
+/// The most pixels `--size` accepts (the film keeps 32 bytes per pixel: 2 GiB).
+pub const MAX_PIXELS: u64 = 1 << 26;
+/// The cached reference of scenes without a closed form: stratified, this many strata per axis.
+const REFERENCE_STRATA: u32 = 32;
+/// Seed of the cached reference renders.
+const REFERENCE_SEED: u64 = 0x5eed_4ef0;
+
+/// Pixel samplers by their command-line names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SamplerName {
+    /// One sample at the centre of each of √spp × √spp strata: the aliasing baseline.
+    Uniform,
+    /// Independent uniform random samples (PCG32).
+    Random,
+    /// Jittered strata, √spp × √spp per pixel.
+    Stratified,
+    /// One Halton sequence over the whole image (scrambled when --seed is not 0).
+    Halton,
+    /// Hammersley points per pixel block (scrambled when --seed is not 0).
+    Hammersley,
+    /// Scrambled (0,2)-sequence per pixel (spp rounded up to a power of two).
+    ZeroTwo,
+    /// One Sobol sequence over the whole image (spp rounded up to a power of two).
+    Sobol,
+    /// Mitchell's best-candidate blue noise.
+    BestCandidate,
+    /// Adaptive: zero-two, spp/4 samples, all spp where the first ones disagree.
+    Adaptive,
+}
+
+impl SamplerName {
+    /// The command-line name.
+    pub fn name(self) -> String {
+        self.to_possible_value()
+            .map_or_else(String::new, |v| v.get_name().to_owned())
+    }
+}
+
+/// A sampler ready to render, one variant per type so the sample loop is monomorphized.
+#[derive(Clone, Debug)]
+pub enum AnySampler {
+    /// `random`.
+    Random(RandomSampler),
+    /// `uniform` and `stratified`.
+    Stratified(StratifiedSampler),
+    /// `halton`.
+    Halton(HaltonSampler),
+    /// `hammersley`.
+    Hammersley(HammersleySampler),
+    /// `zero-two`.
+    ZeroTwo(ZeroTwoSampler),
+    /// `sobol`.
+    Sobol(SobolSampler),
+    /// `best-candidate`.
+    BestCandidate(BestCandidateSampler),
+    /// `adaptive`.
+    Adaptive(AdaptiveSampler<ZeroTwoSampler>),
+}
+
+impl AnySampler {
+    /// Samples per pixel (the maximum, for `adaptive`).
+    pub fn spp(&self) -> u32 {
+        match self {
+            AnySampler::Random(s) => s.samples_per_pixel(),
+            AnySampler::Stratified(s) => s.samples_per_pixel(),
+            AnySampler::Halton(s) => s.samples_per_pixel(),
+            AnySampler::Hammersley(s) => s.samples_per_pixel(),
+            AnySampler::ZeroTwo(s) => s.samples_per_pixel(),
+            AnySampler::Sobol(s) => s.samples_per_pixel(),
+            AnySampler::BestCandidate(s) => s.samples_per_pixel(),
+            AnySampler::Adaptive(s) => s.samples_per_pixel(),
+        }
+    }
+}
+
+/// Builds sampler `name` for `spp` samples per pixel of a `size` image. The error names the
+/// flag at fault. Samplers that round spp (zero-two, sobol, adaptive) report the spp they use
+/// through [`AnySampler::spp`].
+pub fn build_sampler(name: SamplerName, spp: u32, size: [u32; 2], seed: u64) -> Result<AnySampler> {
+    use SamplerName as S;
+    let n = name.name();
+    if spp == 0 {
+        bail!("--spp 0: need at least one sample per pixel");
+    }
+    if spp > 1 << 20 {
+        bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
+    }
+    let err = |e: nyquist::Error| anyhow!("--sampler {n} --spp {spp}: {e}");
+    Ok(match name {
+        S::Random => AnySampler::Random(RandomSampler::new(spp, seed).map_err(err)?),
+        S::Uniform | S::Stratified => {
+            let side = spp.isqrt();
+            if side * side != spp {
+                bail!(
+                    "--spp {spp} is not a square: --sampler {n} takes a √spp × √spp grid (1, 4, 9, 16, 25, …)"
+                );
+            }
+            let jitter = if name == S::Uniform {
+                Jitter::Centered
+            } else {
+                Jitter::Jittered
+            };
+            AnySampler::Stratified(StratifiedSampler::new(side, side, jitter, seed).map_err(err)?)
+        }
+        S::Halton => {
+            let scramble = if seed == 0 {
+                HaltonScramble::None
+            } else {
+                HaltonScramble::PermuteDigits
+            };
+            AnySampler::Halton(HaltonSampler::new(size, spp, scramble, seed).map_err(err)?)
+        }
+        S::Hammersley => {
+            AnySampler::Hammersley(HammersleySampler::new(size, spp, seed != 0, seed).map_err(err)?)
+        }
+        S::ZeroTwo => AnySampler::ZeroTwo(ZeroTwoSampler::new(spp, seed).map_err(err)?),
+        S::Sobol => AnySampler::Sobol(SobolSampler::new(size, spp, seed).map_err(err)?),
+        S::BestCandidate => {
+            AnySampler::BestCandidate(BestCandidateSampler::new(spp, seed).map_err(err)?)
+        }
+        S::Adaptive => {
+            let inner = ZeroTwoSampler::new(spp, seed).map_err(err)?;
+            let min = (inner.samples_per_pixel() / 4).max(1);
+            AnySampler::Adaptive(AdaptiveSampler::new(inner, min, 0.1).map_err(err)?)
+        }
+    })
+}
+
+/// A finished render.
+#[derive(Debug)]
+pub struct Rendered {
+    /// The resolved image.
+    pub image: Image,
+    /// Samples added and rejected.
+    pub stats: FilmStats,
+    /// Wall-clock seconds of sampling and reconstruction (not the reference, not the file).
+    pub seconds: f64,
+}
+
+/// Renders `scene` at `size` through `sampler` and `filter` on `threads` threads; `tick` is
+/// called once per finished tile (on the calling thread).
+pub fn render(
+    scene: Scene,
+    size: [u32; 2],
+    sampler: &AnySampler,
+    filter: &FilterKind,
+    threads: usize,
+    tick: &mut dyn FnMut(),
+) -> Result<Rendered> {
+    let mut film = Film::new(FilmConfig::new(size[0], size[1]), filter.as_dyn())
+        .map_err(|e| anyhow!("--filter {}: {e}", filter.name()))?;
+    let start = Instant::now();
+    match sampler {
+        AnySampler::Random(s) => render_with(&mut film, s, scene, size, threads, tick),
+        AnySampler::Stratified(s) => render_with(&mut film, s, scene, size, threads, tick),
+        AnySampler::Halton(s) => render_with(&mut film, s, scene, size, threads, tick),
+        AnySampler::Hammersley(s) => render_with(&mut film, s, scene, size, threads, tick),
+        AnySampler::ZeroTwo(s) => render_with(&mut film, s, scene, size, threads, tick),
+        AnySampler::Sobol(s) => render_with(&mut film, s, scene, size, threads, tick),
+        AnySampler::BestCandidate(s) => render_with(&mut film, s, scene, size, threads, tick),
+        AnySampler::Adaptive(s) => render_with(&mut film, s, scene, size, threads, tick),
+    }
+    .map_err(|e| anyhow!("render: {e}"))?;
+    let (image, _) = film.image();
+    Ok(Rendered {
+        image,
+        stats: film.stats(),
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// How many tiles a `size` film splits into (the progress bar's units).
+pub fn tile_count(size: [u32; 2]) -> u64 {
+    u64::from(size[0].div_ceil(TILE)) * u64::from(size[1].div_ceil(TILE))
+}
+
+/// `pixel + offset` in `f32`, kept inside the pixel (as `nyquist::sampler::camera_sample` does).
+#[inline]
+fn film_coord(pixel: u32, offset: f32) -> f32 {
+    let base = pixel as f32;
+    let x = base + offset;
+    if x < base + 1.0 { x } else { base }
+}
+
+/// The sample loop. Each sample is the sampler's camera sample: the image sample (dimensions
+/// 0 and 1) and, for scenes that move, the time (dimension 2), exactly as
+/// [`nyquist::sampler::camera_sample`] reads them; the lens dimensions are not drawn because no
+/// scene has a lens. Every value depends only on (pixel, sample, dimension, seed), and the film
+/// merges tiles in order, so the image is the same for every thread count.
+fn render_with<S: Sampler + Clone + Sync>(
+    film: &mut Film,
+    sampler: &S,
+    scene: Scene,
+    size: [u32; 2],
+    threads: usize,
+    tick: &mut dyn FnMut(),
+) -> Result<(), nyquist_film::Error> {
+    let (w, h) = (f64::from(size[0]), f64::from(size[1]));
+    let time = scene.uses_time();
+    render_tiles(
+        film,
+        TILE,
+        threads,
+        |tile, ctx| {
+            let mut s = sampler.clone();
+            let b = ctx.bounds;
+            for py in b.y0..b.y1 {
+                for px in b.x0..b.x1 {
+                    let pixel = [px as u32, py as u32];
+                    let mut i = 0;
+                    while i < s.pixel_samples(pixel) {
+                        s.start_pixel_sample(pixel, i, 0);
+                        let [ox, oy] = s.get_pixel_2d();
+                        let t = if time { s.get_1d() } else { 0.5 };
+                        let p = [film_coord(pixel[0], ox), film_coord(pixel[1], oy)];
+                        let l =
+                            scene.eval(f64::from(p[0]), f64::from(p[1]), f64::from(t), w, h) as f32;
+                        tile.add_sample(p, [l; 3], 1.0);
+                        s.report(pixel, i, &[l]);
+                        i += 1;
+                    }
+                }
+            }
+        },
+        |_, _| tick(),
+    )
+}
+
+/// What the reference of a scene is, in words (for tables and JSON).
+pub fn reference_kind(scene: Scene) -> String {
+    match scene {
+        Scene::Zoneplate => "exact pixel means (box filter, Fresnel integrals)".into(),
+        _ => format!(
+            "pixel means from a cached {REFERENCE_STRATA}x{REFERENCE_STRATA} spp stratified box render"
+        ),
+    }
+}
+
+/// The reference image of `scene` seen through `filter` (`None`: the pixel means, i.e. the box).
+///
+/// The zone plate's references are exact: the Fresnel pixel means, or the filtered zone plate by
+/// 1D quadrature ([`crate::scene::zoneplate_filtered_reference`]; `None` for a non-separable
+/// filter). For the other scenes it is a stratified `32 × 32` spp render through the filter,
+/// cached under the user's cache folder (`$XDG_CACHE_HOME/nyquist`, else `~/.cache/nyquist`)
+/// keyed by scene, size and filter spec.
+pub fn reference(
+    scene: Scene,
+    size: [u32; 2],
+    filter: Option<&FilterKind>,
+    threads: usize,
+) -> Result<Option<Vec<f64>>> {
+    let boxed = FilterKind::parse("box").map_err(|e| anyhow!("{e}"))?;
+    let filter = filter.unwrap_or(&boxed);
+    if scene == Scene::Zoneplate {
+        return Ok(if filter.to_string() == boxed.to_string() {
+            Some(crate::scene::zoneplate_reference(size[0], size[1]))
+        } else {
+            crate::scene::zoneplate_filtered_reference(size[0], size[1], filter.as_dyn())
+        });
+    }
+    let key: String = filter
+        .to_string()
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '.' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    let path = cache_dir().map(|d| {
+        d.join(format!(
+            "reference-v1-{}-{}x{}-stratified{REFERENCE_STRATA}-{key}.pfm",
+            scene.name(),
+            size[0],
+            size[1]
+        ))
+    });
+    if let Some(p) = &path
+        && let Ok(file) = std::fs::File::open(p)
+        && let Ok(img) = nyquist_film::output::pfm::read_pfm(&mut std::io::BufReader::new(file))
+        && img.width() == size[0]
+        && img.height() == size[1]
+    {
+        return Ok(Some(channel0(&img)));
+    }
+    let sampler = build_sampler(
+        SamplerName::Stratified,
+        REFERENCE_STRATA * REFERENCE_STRATA,
+        size,
+        REFERENCE_SEED,
+    )?;
+    let bar = Progress::new(tile_count(size), "reference");
+    let r = render(scene, size, &sampler, filter, threads, &mut || bar.inc(1))?;
+    bar.finish();
+    if let Some(p) = &path {
+        // A cache that cannot be written only costs time next run.
+        let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new(".")))
+            .map_err(nyquist_film::Error::Io)
+            .and_then(|()| nyquist_film::write_image_file(p, &r.image));
+    }
+    Ok(Some(channel0(&r.image)))
+}
+
+fn cache_dir() -> Option<PathBuf> {
+    let base = match std::env::var_os("XDG_CACHE_HOME") {
+        Some(d) if !d.is_empty() && Path::new(&d).is_absolute() => PathBuf::from(d),
+        _ => PathBuf::from(std::env::var_os("HOME").filter(|h| !h.is_empty())?).join(".cache"),
+    };
+    Some(base.join("nyquist"))
+}
+
+/// The first channel of every pixel (the scenes are grey).
+pub fn channel0(img: &Image) -> Vec<f64> {
+    img.data()
+        .chunks_exact(3)
+        .map(|p| f64::from(p[0]))
+        .collect()
+}
+
+/// Root-mean-square difference between `img`'s first channel and `reference`.
+pub fn rmse(img: &Image, reference: &[f64]) -> f64 {
+    let n = reference.len().max(1) as f64;
+    let sum: f64 = img
+        .data()
+        .chunks_exact(3)
+        .zip(reference)
+        .map(|(p, r)| (f64::from(p[0]) - r).powi(2))
+        .sum();
+    (sum / n).sqrt()
+}
+
+/// Peak signal-to-noise ratio in dB for a peak of 1 (infinite for a perfect match).
+pub fn psnr(rmse: f64) -> f64 {
+    -20.0 * rmse.log10()
+}
+
+/// A number for JSON: `null` where it is not finite.
+pub fn json_number(x: f64) -> String {
+    if x.is_finite() {
+        format!("{x}")
+    } else {
+        "null".into()
+    }
+}
+
+/// A string for JSON.
+pub fn json_string(s: &str) -> String {
+    let mut out = String::with_capacity(s.len() + 2);
+    out.push('"');
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+/// Parses `WxH` (e.g. `256x256`) into an image size, each side 1 to [`MAX_SIDE`].
+pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
+    let bad = || format!("'{s}' is not WxH with sides 1 to {MAX_SIDE} (e.g. 256x256)");
+    let (a, b) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let side = |t: &str| match t.trim().parse::<u32>() {
+        Ok(v) if (1..=MAX_SIDE).contains(&v) => Ok(v),
+        _ => Err(bad()),
+    };
+    let size = [side(a)?, side(b)?];
+    if u64::from(size[0]) * u64::from(size[1]) > MAX_PIXELS {
+        return Err(format!("'{s}' has more than {MAX_PIXELS} pixels"));
+    }
+    Ok(size)
+}
+
+/// Parses a filter spec, the error listing the filters and keys.
+pub fn parse_filter(s: &str) -> Result<FilterKind, String> {
+    FilterKind::parse(s).map_err(|e| {
+        format!(
+            "{e} (filters: box, triangle, gaussian, mitchell, lanczos; e.g. mitchell:b=0.5,c=0.25)"
+        )
+    })
+}
+
+/// The default thread count: the machine's parallelism.
+pub fn default_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+/// Checks that `path` can take an image: a known extension and an existing folder.
+pub fn check_output(path: &Path, flag: &str, formats: &[&str]) -> Result<()> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    if !ext.as_deref().is_some_and(|e| formats.contains(&e)) {
+        bail!(
+            "{flag} {}: unknown image extension (expected {})",
+            path.display(),
+            formats
+                .iter()
+                .map(|f| format!(".{f}"))
+                .collect::<Vec<_>>()
+                .join(", ")
+        );
+    }
+    if path.file_name().is_none() {
+        bail!("{flag} {}: not a file name", path.display());
+    }
+    let dir = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    if !dir.is_dir() {
+        bail!(
+            "{flag} {}: folder {} does not exist",
+            path.display(),
+            dir.display()
+        );
+    }
+    if path.is_dir() {
+        bail!("{flag} {}: is a folder", path.display());
+    }
+    Ok(())
+}
+
+/// Arguments of `nyquist render`.
+#[derive(Debug, Args)]
+#[command(
+    after_help = "Example: nyquist render --scene zoneplate --sampler stratified --spp 16 \
+    --filter mitchell --size 512x512 -o zoneplate.png --metrics"
+)]
+pub struct RenderArgs {
+    /// The scene.
+    #[arg(long, value_enum, default_value = "zoneplate")]
+    pub scene: Scene,
+    /// The pixel sampler.
+    #[arg(long, value_enum, default_value = "stratified")]
+    pub sampler: SamplerName,
+    /// Samples per pixel (a square for uniform and stratified; zero-two, sobol and adaptive
+    /// round up to a power of two).
+    #[arg(long, default_value_t = 16)]
+    pub spp: u32,
+    /// Reconstruction filter spec `name[:key=value,…]`: box, triangle, gaussian, mitchell,
+    /// lanczos (e.g. gaussian:alpha=2, mitchell:b=0.5,c=0.25).
+    #[arg(long, value_name = "SPEC", default_value = "box", value_parser = parse_filter)]
+    pub filter: FilterKind,
+    /// Image size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "256x256", value_parser = parse_size)]
+    pub size: [u32; 2],
+    /// Worker threads [default: the number of cores]. The image is the same for any count.
+    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
+    pub threads: Option<u16>,
+    /// Seed of the sampler's random numbers and scrambles (0: unscrambled halton/hammersley).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Write the image here: .png (8-bit sRGB), .exr (32-bit float) or .pfm (32-bit float).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+    /// Compare with the reference and print RMSE, PSNR, samples per second and rejected samples.
+    #[arg(long)]
+    pub metrics: bool,
+    /// Print the metrics as one JSON object (implies --metrics).
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Runs `nyquist render`.
+pub fn run(args: &RenderArgs) -> Result<()> {
+    let metrics = args.metrics || args.json;
+    if args.output.is_none() && !metrics {
+        bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics or both");
+    }
+    if let Some(p) = &args.output {
+        check_output(p, "--output", &["png", "exr", "pfm"])?;
+        ImageFormat::from_path(p).map_err(|e| anyhow!("--output: {e}"))?;
+    }
+    let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed)?;
+    if sampler.spp() != args.spp {
+        eprintln!(
+            "nyquist: note: --sampler {} uses a power-of-two spp: --spp {} rounded up to {}",
+            args.sampler.name(),
+            args.spp,
+            sampler.spp()
+        );
+    }
+    let threads = args.threads.map_or_else(default_threads, usize::from);
+    let bar = Progress::new(tile_count(args.size), "render");
+    let r = render(
+        args.scene,
+        args.size,
+        &sampler,
+        &args.filter,
+        threads,
+        &mut || bar.inc(1),
+    )?;
+    bar.finish();
+    if let Some(p) = &args.output {
+        nyquist_film::write_image_file(p, &r.image)
+            .with_context(|| format!("--output {}", p.display()))?;
+    }
+    if metrics {
+        let means = reference(args.scene, args.size, None, threads)?
+            .context("no reference for this scene")?;
+        let filtered = reference(args.scene, args.size, Some(&args.filter), threads)?;
+        let e = rmse(&r.image, &means);
+        let sampling = filtered.as_ref().map_or(f64::NAN, |f| rmse(&r.image, f));
+        let rate = r.stats.samples as f64 / r.seconds.max(1e-9);
+        if args.json {
+            println!(
+                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
+                json_string(args.scene.name()),
+                args.size[0],
+                args.size[1],
+                json_string(&args.sampler.name()),
+                sampler.spp(),
+                json_string(&args.filter.to_string()),
+                args.seed,
+                json_string(&reference_kind(args.scene)),
+                json_number(e),
+                json_number(psnr(e)),
+                json_number(sampling),
+                r.stats.samples,
+                r.stats.rejected,
+                json_number(r.seconds),
+                json_number(rate),
+            );
+        } else {
+            println!(
+                "{} {}x{}, {} {} spp, filter {}, {threads} thread{}",
+                args.scene.name(),
+                args.size[0],
+                args.size[1],
+                args.sampler.name(),
+                sampler.spp(),
+                args.filter,
+                if threads == 1 { "" } else { "s" }
+            );
+            println!("reference      {}", reference_kind(args.scene));
+            println!("rmse           {e:.6}");
+            println!("psnr           {:.2} dB", psnr(e));
+            println!("sampling rmse  {sampling:.6} (against the same filter's converged image)");
+            println!("samples/s      {rate:.0}");
+            println!("samples        {}", r.stats.samples);
+            println!("rejected       {}", r.stats.rejected);
+            println!("time           {:.3} s", r.seconds);
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,315 @@
+//! End-to-end tests of `nyquist render`.
+
+mod common;
+
+use common::{
+    assert_one_line_error, files, json_field, nyquist, nyquist_cached, read_pfm, stdout, temp_dir,
+};
+
+/// `render --json` with the reference cache in `cache`; returns the JSON line.
+fn metrics(args: &[&str], cache: &std::path::Path) -> String {
+    let mut all = vec!["render", "--json"];
+    all.extend_from_slice(args);
+    let o = nyquist_cached(&all, cache);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    stdout(&o)
+}
+
+#[test]
+fn uniform_one_spp_box_is_the_zone_plate_at_pixel_centres_exactly() {
+    let dir = temp_dir("render-exact");
+    let out = dir.join("zp.pfm");
+    // W ≠ H: the formula divides by the width.
+    let o = nyquist(&[
+        "render",
+        "--scene",
+        "zoneplate",
+        "--sampler",
+        "uniform",
+        "--spp",
+        "1",
+        "--filter",
+        "box",
+        "--size",
+        "40x24",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (w, h, v) = read_pfm(&out);
+    assert_eq!((w, h), (40, 24));
+    for y in 0..h {
+        for x in 0..w {
+            // L = ½ + ½·cos(π r²/W), r measured from (W/2, H/2) to the pixel centre.
+            let (dx, dy) = (x as f64 + 0.5 - 20.0, y as f64 + 0.5 - 12.0);
+            let l = 0.5 + 0.5 * (std::f64::consts::PI * (dx * dx + dy * dy) / 40.0).cos();
+            assert_eq!(v[y * w + x], l as f32, "pixel ({x}, {y})");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn stratified_256_spp_box_matches_the_fresnel_reference() {
+    let cache = temp_dir("render-fresnel");
+    let j = metrics(
+        &[
+            "--sampler",
+            "stratified",
+            "--spp",
+            "256",
+            "--filter",
+            "box",
+            "--size",
+            "48x48",
+        ],
+        &cache,
+    );
+    let rmse = json_field(&j, "rmse");
+    assert!(rmse < 2e-3, "{rmse}");
+    assert_eq!(json_field(&j, "samples"), (48 * 48 * 256) as f64);
+    assert_eq!(json_field(&j, "rejected"), 0.0);
+    assert!(json_field(&j, "samples_per_second") > 0.0);
+    let psnr = json_field(&j, "psnr");
+    assert!((psnr + 20.0 * rmse.log10()).abs() < 1e-9);
+    // The zone plate needs no cache.
+    assert!(files(&cache).is_empty());
+    let _ = std::fs::remove_dir_all(&cache);
+}
+
+#[test]
+fn sampling_rmse_measures_against_the_same_filter() {
+    let cache = temp_dir("render-sampling");
+    // With the box, the filtered reference (1D quadrature) is the Fresnel pixel means.
+    let j = metrics(&["--spp", "4", "--size", "32x32"], &cache);
+    assert!(
+        (json_field(&j, "rmse") - json_field(&j, "sampling_rmse")).abs() < 1e-5,
+        "{j}"
+    );
+    // Mitchell converges to its own blurred image, not to the pixel means: the blur stays in
+    // the rmse, the sampling error goes (its floor, ~1.8e-3, is the film's filter table).
+    let j = metrics(
+        &["--filter", "mitchell", "--spp", "256", "--size", "48x48"],
+        &cache,
+    );
+    assert!(json_field(&j, "sampling_rmse") < 3e-3, "{j}");
+    assert!(json_field(&j, "rmse") > 0.03, "{j}");
+    let _ = std::fs::remove_dir_all(&cache);
+}
+
+#[test]
+fn rmse_falls_as_spp_rises_for_stratified_and_sobol() {
+    let cache = temp_dir("render-converge");
+    for sampler in ["stratified", "sobol"] {
+        let e: Vec<f64> = ["1", "4", "16", "64"]
+            .iter()
+            .map(|spp| {
+                let j = metrics(
+                    &["--sampler", sampler, "--spp", spp, "--size", "48x48"],
+                    &cache,
+                );
+                json_field(&j, "rmse")
+            })
+            .collect();
+        assert!(e.windows(2).all(|p| p[1] < p[0]), "{sampler}: {e:?}");
+        // Stratification beats the 1/√n of independent samples by a clear margin.
+        assert!(e[3] < e[0] / 8.0, "{sampler}: {e:?}");
+    }
+    let _ = std::fs::remove_dir_all(&cache);
+}
+
+#[test]
+fn output_is_byte_identical_for_one_and_two_threads() {
+    let dir = temp_dir("render-threads");
+    for (scene, sampler, filter, ext) in [
+        ("zoneplate", "stratified", "mitchell", "pfm"),
+        ("zoneplate", "sobol", "gaussian:alpha=2", "png"),
+        ("checkerboard", "halton", "lanczos", "exr"),
+        ("stripes", "random", "triangle", "pfm"),
+        ("disk", "adaptive", "box", "pfm"),
+        ("edge", "best-candidate", "mitchell", "png"),
+    ] {
+        let render = |threads: &str| {
+            let out = dir.join(format!("{scene}-{sampler}-{threads}.{ext}"));
+            let o = nyquist(&[
+                "render",
+                "--scene",
+                scene,
+                "--sampler",
+                sampler,
+                "--spp",
+                "4",
+                "--filter",
+                filter,
+                "--size",
+                "70x50",
+                "--threads",
+                threads,
+                "--seed",
+                "3",
+                "-o",
+                out.to_str().unwrap(),
+            ]);
+            assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+            std::fs::read(out).unwrap()
+        };
+        assert_eq!(render("1"), render("2"), "{scene} {sampler} {filter}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn checkerboard_far_field_averages_to_one_half() {
+    let dir = temp_dir("render-checker");
+    let out = dir.join("c.pfm");
+    let o = nyquist(&[
+        "render",
+        "--scene",
+        "checkerboard",
+        "--sampler",
+        "stratified",
+        "--spp",
+        "64",
+        "--size",
+        "64x64",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success());
+    let (w, _, v) = read_pfm(&out);
+    // The horizon is at y = 0.3·64 = 19.2; rows 20 and 21 see dozens of checks per pixel.
+    for y in [20usize, 21] {
+        let row = &v[y * w..(y + 1) * w];
+        let mean = row.iter().map(|&p| f64::from(p)).sum::<f64>() / w as f64;
+        assert!((mean - 0.5).abs() < 0.02, "row {y}: {mean}");
+        assert!(
+            row.iter().all(|&p| (p - 0.5).abs() < 0.2),
+            "row {y}: {row:?}"
+        );
+    }
+    // Near the camera the checks are large: pure black and white pixels.
+    let bottom = &v[63 * w..];
+    assert!(bottom.contains(&0.0) && bottom.contains(&1.0));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn stripes_blur_with_the_time_sample_and_freeze_without_it() {
+    let dir = temp_dir("render-stripes");
+    let run = |sampler: &str, spp: &str| {
+        let out = dir.join(format!("s-{sampler}.pfm"));
+        let o = nyquist(&[
+            "render",
+            "--scene",
+            "stripes",
+            "--sampler",
+            sampler,
+            "--spp",
+            spp,
+            "--size",
+            "64x32",
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success());
+        read_pfm(&out)
+    };
+    // uniform at 1 spp samples every pixel at time ½: a frozen frame of hard stripes.
+    let (_, _, frozen) = run("uniform", "1");
+    assert!(frozen.iter().all(|&p| p == 0.0 || p == 1.0));
+    // 64 stratified times per pixel: the bottom row moves two periods, a uniform grey blur.
+    let (w, h, blurred) = run("stratified", "64");
+    let bottom = &blurred[(h - 1) * w..];
+    assert!(bottom.iter().all(|&p| (p - 0.5).abs() < 0.15), "{bottom:?}");
+    // The top row hardly moves: still stripes of full contrast.
+    let top = &blurred[..w];
+    let (lo, hi) = top
+        .iter()
+        .fold((1.0f32, 0.0f32), |(l, h), &p| (l.min(p), h.max(p)));
+    assert!(lo < 0.1 && hi > 0.9, "{top:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn other_scenes_measure_against_a_cached_reference() {
+    let cache = temp_dir("render-cache");
+    let a = metrics(
+        &["--scene", "disk", "--spp", "4", "--size", "32x32"],
+        &cache,
+    );
+    let cached = cache.join("nyquist");
+    assert_eq!(files(&cached).len(), 1, "{:?}", files(&cached));
+    // The second run reads the cache and gets the same numbers.
+    let b = metrics(
+        &["--scene", "disk", "--spp", "4", "--size", "32x32"],
+        &cache,
+    );
+    assert_eq!(json_field(&a, "rmse"), json_field(&b, "rmse"));
+    assert!(json_field(&a, "rmse") > 0.0 && json_field(&a, "rmse") < 0.1);
+    let _ = std::fs::remove_dir_all(&cache);
+}
+
+#[test]
+fn human_metrics_print_every_number() {
+    let cache = temp_dir("render-human");
+    let o = nyquist_cached(&["render", "--size", "16x16", "--metrics"], &cache);
+    assert!(o.status.success());
+    let s = stdout(&o);
+    for key in ["rmse", "psnr", "sampling rmse", "samples/s", "rejected"] {
+        assert!(s.lines().any(|l| l.starts_with(key)), "{key} in {s}");
+    }
+    let _ = std::fs::remove_dir_all(&cache);
+}
+
+#[test]
+fn bad_input_is_one_line_exit_2_and_writes_nothing() {
+    let dir = temp_dir("render-errors");
+    let out = dir.join("x.png");
+    let o = out.to_str().unwrap();
+    let missing = dir.join("no/such/folder/x.png");
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["--sampler", "nope"], "--sampler"),
+        (vec!["--scene", "teapot"], "--scene"),
+        (
+            vec!["--sampler", "stratified", "--spp", "8"],
+            "--spp 8 is not a square",
+        ),
+        (vec!["--sampler", "uniform", "--spp", "2"], "--spp"),
+        (vec!["--spp", "0"], "--spp"),
+        (vec!["--spp", "1.5"], "--spp"),
+        (vec!["--filter", "mitchel"], "--filter"),
+        (vec!["--filter", "gaussian:alpha=-1"], "--filter"),
+        (vec!["--filter", "box:radius=0"], "--filter"),
+        (vec!["--size", "0x10"], "--size"),
+        (vec!["--size", "64"], "--size"),
+        (vec!["--size", "99999x2"], "--size"),
+        (vec!["--size", "16384x16384"], "--size"),
+        (vec!["--threads", "0"], "--threads"),
+        (vec!["--seed", "x"], "--seed"),
+    ];
+    for (args, mentions) in cases {
+        let mut all = vec!["render", "-o", o];
+        all.extend_from_slice(&args);
+        assert_one_line_error(&nyquist(&all), mentions);
+        assert!(files(&dir).is_empty(), "{args:?} left {:?}", files(&dir));
+    }
+    let bad_ext = dir.join("x.jpg");
+    assert_one_line_error(
+        &nyquist(&["render", "-o", bad_ext.to_str().unwrap()]),
+        "--output",
+    );
+    assert_one_line_error(
+        &nyquist(&["render", "-o", missing.to_str().unwrap()]),
+        "--output",
+    );
+    assert_one_line_error(&nyquist(&["render", "--size", "8x8"]), "--output");
+    assert!(files(&dir).is_empty(), "{:?}", files(&dir));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn help_has_an_example() {
+    let o = nyquist(&["render", "--help"]);
+    assert!(o.status.success());
+    assert!(stdout(&o).contains("Example: nyquist render"));
+}
