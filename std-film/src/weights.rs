@@ -5,10 +5,16 @@
 use crate::Error;
 use nyquist::filter::{Axis, Filter, FilterTable, Interpolation, SeparableTable, Table2d};
 
-/// The filter as the film reads it: a 16-entry-per-axis linear table built once.
+/// Entries per axis of the film's filter table: 64, not pbrt's 16. Lookups cost the same at any
+/// size, and linear interpolation's error falls with the square of the size — at 16 entries a
+/// Mitchell film converges to an image 1.8·10⁻³ RMSE away from the exactly filtered one (the
+/// CLI's sampling-RMSE measured it), a bias that more samples never remove.
+pub(crate) const FILM_TABLE: usize = 64;
+
+/// The filter as the film reads it: a [`FILM_TABLE`]-entry-per-axis linear table built once.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Weights {
-    table: FilterTable,
+    table: FilterTable<FILM_TABLE>,
 }
 
 impl Weights {
@@ -17,7 +23,7 @@ impl Weights {
         Ok(Weights { table })
     }
 
-    pub(crate) fn table(&self) -> &FilterTable {
+    pub(crate) fn table(&self) -> &FilterTable<FILM_TABLE> {
         &self.table
     }
 
