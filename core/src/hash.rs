@@ -225,7 +225,7 @@ impl Permutation {
     /// img.sort();
     /// assert_eq!(img, [0, 1, 2]);
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn apply(&self, i: u32) -> u32 {
         let (n, mask, half) = (self.n, self.mask, self.half);
         if n <= TABLE_MAX {

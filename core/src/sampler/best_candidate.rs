@@ -137,7 +137,7 @@ impl Sampler for BestCandidateSampler {
         self.spp
     }
 
-    #[inline]
+    #[inline(always)]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -148,21 +148,21 @@ impl Sampler for BestCandidateSampler {
         self.dim = dim;
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_1d(&mut self) -> f32 {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(1);
         self.value(d)
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
         [self.value(d), self.value(d.wrapping_add(1))]
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         [self.value(0), self.value(1)]

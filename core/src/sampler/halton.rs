@@ -201,7 +201,7 @@ impl Sampler for HaltonSampler {
         self.spp
     }
 
-    #[inline]
+    #[inline(always)]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;

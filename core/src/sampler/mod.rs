@@ -31,21 +31,21 @@
 /// always dimensions 0 and 1.
 macro_rules! global_point_dimensions {
     () => {
-        #[inline]
+        #[inline(always)]
         fn get_1d(&mut self) -> f32 {
             let d = self.dim;
             self.dim = self.dim.wrapping_add(1);
             self.sample(d)
         }
 
-        #[inline]
+        #[inline(always)]
         fn get_2d(&mut self) -> [f32; 2] {
             let d = self.dim;
             self.dim = self.dim.wrapping_add(2);
             [self.sample(d), self.sample(d.wrapping_add(1))]
         }
 
-        #[inline]
+        #[inline(always)]
         fn get_pixel_2d(&mut self) -> [f32; 2] {
             self.dim = self.dim.max(2);
             [self.sample(0), self.sample(1)]
@@ -262,6 +262,7 @@ pub struct CameraSample {
 /// assert!(c.p_film[0] < 1.0 && c.p_film[1] < 1.0);
 /// assert!((0.0..1.0).contains(&s.get_1d())); // dimension 5
 /// ```
+#[inline(always)]
 pub fn camera_sample<S: Sampler + ?Sized>(
     s: &mut S,
     pixel: [u32; 2],

@@ -256,7 +256,7 @@ impl Sampler for SobolSampler {
         self.spp
     }
 
-    #[inline]
+    #[inline(always)]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         // Equal to `sequence_index(pixel, sample_index)`, split into a per-pixel and a
         // per-sample share (both linear over GF(2)).

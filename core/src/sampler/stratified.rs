@@ -241,7 +241,7 @@ impl Sampler for StratifiedSampler {
         self.spp
     }
 
-    #[inline]
+    #[inline(always)]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -254,7 +254,7 @@ impl Sampler for StratifiedSampler {
         self.dim = dim;
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_1d(&mut self) -> f32 {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
@@ -262,14 +262,14 @@ impl Sampler for StratifiedSampler {
         below_one((s as f32 + self.jitters(dim)[0]) * self.inv[2])
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_2d(&mut self) -> [f32; 2] {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(2);
         self.value_2d(dim)
     }
 
-    #[inline]
+    #[inline(always)]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.value_2d(0)

@@ -230,7 +230,7 @@ impl Sobol {
     /// assert_eq!(s.sample_u32(77, 5), sobol_u32(77, 5));
     /// assert_eq!(s.sample_u32(77, 8 + 5), sobol_u32(77, 5));
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn sample_u32(&self, index: u64, dim: u32) -> u32 {
         // The branch skips a division in the common case.
         let dim = if dim < self.dims {
