@@ -542,6 +542,8 @@ struct SpectrumInfo {
     path: PathBuf,
     max_freq: u32,
     realisations: u32,
+    /// The generator ignores the seed: every realisation is the same set.
+    identical: bool,
     seconds: f64,
 }
 
@@ -555,11 +557,15 @@ fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Res
         .map_err(|e| anyhow!("--freq {}: {e}", args.freq))?;
     pg.add(&pairs_of(coords, dims))
         .map_err(|e| anyhow!("--spectrum: {e}"))?;
+    let mut identical = false;
     if let Some(sampler) = args.sampler {
         let seed = args.seed.unwrap_or(0);
         for k in 1..args.realisations {
             let (pts, d) = generate(args, sampler, seed.wrapping_add(u64::from(k)))?;
             let c: Vec<f64> = pts.iter().map(|&v| f64::from(v)).collect();
+            if k == 1 && c == coords {
+                identical = true;
+            }
             pg.add(&pairs_of(&c, d))
                 .map_err(|e| anyhow!("--spectrum: {e}"))?;
         }
@@ -572,6 +578,7 @@ fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Res
         path: path.to_path_buf(),
         max_freq: s.max_freq,
         realisations: s.realisations,
+        identical,
         seconds: t.elapsed().as_secs_f64(),
     })
 }
@@ -752,10 +759,11 @@ fn json(
     if let Some(s) = spectrum {
         let _ = write!(
             out,
-            ",\"spectrum\":{},\"spectrum_max_freq\":{},\"spectrum_realisations\":{},\"spectrum_seconds\":{}",
+            ",\"spectrum\":{},\"spectrum_max_freq\":{},\"spectrum_realisations\":{},\"spectrum_identical_realisations\":{},\"spectrum_seconds\":{}",
             json_str(&s.path.display().to_string()),
             s.max_freq,
             s.realisations,
+            s.identical,
             num(s.seconds)
         );
     }
@@ -795,11 +803,16 @@ fn table(
     if let Some(s) = spectrum {
         let _ = writeln!(
             out,
-            "spectrum: {} (F = {}, {} realisation{}) in {}",
+            "spectrum: {} (F = {}, {} realisation{}{}) in {}",
             s.path.display(),
             s.max_freq,
             s.realisations,
             if s.realisations == 1 { "" } else { "s" },
+            if s.identical {
+                ", all identical: this set ignores --seed"
+            } else {
+                ""
+            },
             ms(s.seconds).trim()
         );
     }

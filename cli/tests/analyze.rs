@@ -225,6 +225,25 @@ fn spectrum_writes_one_png_of_the_documented_size() {
     assert_eq!(files(&dir), ["s.png"]);
     assert_eq!(json_field(&j, "spectrum_max_freq"), 24.0);
     assert_eq!(json_field(&j, "spectrum_realisations"), 3.0);
+    assert!(
+        j.contains("\"spectrum_identical_realisations\":false"),
+        "{j}"
+    );
+    // Unscrambled Halton ignores the seed: the output says the realisations are identical.
+    let o = nyquist(&[
+        "analyze",
+        "--sampler",
+        "halton",
+        "--count",
+        "64",
+        "--spectrum",
+        png.to_str().unwrap(),
+        "--freq",
+        "8",
+        "--realisations",
+        "2",
+    ]);
+    assert!(ok_json(&o).contains("all identical"));
     // From piped CSV too (one realisation).
     let pts = nyquist(&["points", "--sampler", "sobol", "--count", "64"]);
     let png2 = dir.join("t.png");
@@ -297,14 +316,42 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
             "unknown image extension",
         ),
         (&["analyze", "/nonexistent/p.csv"][..], "cannot read"),
+        (
+            &[
+                "analyze",
+                "--sampler",
+                "vdc",
+                "--dims",
+                "1",
+                "--measures",
+                "min-distance",
+            ][..],
+            "needs a 2D set",
+        ),
+        (
+            &["analyze", "--sampler", "halton", "--star-grid", "0"][..],
+            "--star-grid 0",
+        ),
     ] {
         assert_one_line_error(&nyquist(args), mentions);
         assert!(files(&dir).is_empty());
     }
-    let o = piped(
-        &["analyze", "--realisations", "2", "--spectrum", png],
-        b"0.5,0.5\n",
-    );
-    assert_one_line_error(&o, "needs a generated set");
-    assert!(files(&dir).is_empty());
+    for (args, mentions) in [
+        (
+            &["analyze", "--realisations", "2", "--spectrum", png][..],
+            "needs a generated set",
+        ),
+        (
+            &["analyze", "--dims", "3", "--spectrum", png][..],
+            "--dims is 3",
+        ),
+        (
+            &["analyze", "--count", "4"][..],
+            "--count applies to generated sets",
+        ),
+        (&["analyze", "-", "--sampler", "halton"][..], "not both"),
+    ] {
+        assert_one_line_error(&piped(args, b"0.5,0.5\n"), mentions);
+        assert!(files(&dir).is_empty());
+    }
 }
