@@ -20,6 +20,8 @@ use std::time::Instant;
 
 /// The most coordinates a CSV input may hold: 2²⁸ (as `points`).
 const MAX_VALUES: usize = 1 << 28;
+/// Largest set whose L2-star discrepancy (O(d·N²)) is among the default measures.
+const DEFAULT_L2_LIMIT: usize = 1 << 16;
 /// Largest set the automatic star method computes exactly in 2D (the sweep is O(N²)).
 const AUTO_EXACT_2D: usize = 1 << 15;
 /// Grid cells `(m + 1)^d` of the automatic bounds grid (32 MiB of counters).
@@ -102,7 +104,8 @@ pub struct AnalyzeArgs {
     /// Image size `WxH` for halton, hammersley and sobol with --spp.
     #[arg(long, value_parser = parse_grid)]
     pub resolution: Option<(u32, u32)>,
-    /// Comma-separated measures [default: star,l2-star, and min-distance for 2D sets].
+    /// Comma-separated measures [default: star; l2-star up to 65536 points; min-distance for 2D
+    /// sets].
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LIST")]
     pub measures: Vec<Measure>,
     /// How to compute the star discrepancy.
@@ -116,7 +119,8 @@ pub struct AnalyzeArgs {
     #[arg(long)]
     pub json: bool,
     /// Write the periodogram (log scale, DC at the centre) beside its radial mean power as one
-    /// 1072×578 PNG (2D sets; dimensions 0 and 1 of wider sets).
+    /// 1072×578 PNG (2D sets; dimensions 0 and 1 of wider sets). Grey scale: −30 dB black,
+    /// +10 dB white; white noise is 0 dB.
     #[arg(long, value_name = "FILE.png")]
     pub spectrum: Option<PathBuf>,
     /// Highest integer frequency F of the periodogram: the grid is (2F+1)².
@@ -148,7 +152,7 @@ pub fn run(args: &AnalyzeArgs) -> Result<()> {
     check_args(args)?;
     let (coords, dims, source) = load(args, args.seed.unwrap_or(0))?;
     let set = PointSet::new(&coords, dims).map_err(|e| anyhow!("points: {e}"))?;
-    let measures = chosen_measures(args, dims)?;
+    let measures = chosen_measures(args, set.len(), dims)?;
     let mut rows = Vec::new();
     for &m in &measures {
         rows.extend(measure(args, &set, m)?);
@@ -334,14 +338,16 @@ pub fn parse_csv(text: &str, name: &str) -> Result<(Vec<f64>, usize)> {
 }
 
 /// The measures to compute: the explicit list (each must apply to `dims`), or the defaults that
-/// apply.
-fn chosen_measures(args: &AnalyzeArgs, dims: usize) -> Result<Vec<Measure>> {
+/// apply (the quadratic L2-star only up to [`DEFAULT_L2_LIMIT`] points).
+fn chosen_measures(args: &AnalyzeArgs, n: usize, dims: usize) -> Result<Vec<Measure>> {
     if args.measures.is_empty() {
         let mut m = Vec::new();
         if dims <= MAX_DIMS {
             m.push(Measure::Star);
         }
-        m.push(Measure::L2Star);
+        if n <= DEFAULT_L2_LIMIT {
+            m.push(Measure::L2Star);
+        }
         if dims == 2 {
             m.push(Measure::MinDistance);
         }
@@ -864,5 +870,16 @@ mod tests {
         let c = draw_spectrum(&s, 2);
         assert_eq!(c.width(), SPECTRUM_WIDTH);
         assert_eq!((SPECTRUM_WIDTH, SPECTRUM_HEIGHT), (1072, 578));
+        // The centre pixel of the left panel shows DC, P = N = 2, on the −30..+10 dB scale.
+        let top = MARGIN + 2 * LINE;
+        let want = (255.0 * (10.0 * 2f64.log10() + 30.0) / 40.0).round() as u8;
+        assert_eq!(c.get(MARGIN + PANEL / 2, top + PANEL / 2), [want; 3]);
+        // The bottom-left pixel is f = (−3, −3) (fy grows upwards).
+        let corner = s.at(-3, -3);
+        let t = ((10.0 * corner.log10() + 30.0) / 40.0).clamp(0.0, 1.0);
+        assert_eq!(
+            c.get(MARGIN, top + PANEL - 1),
+            [(255.0 * t).round() as u8; 3]
+        );
     }
 }
