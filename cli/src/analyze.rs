@@ -77,7 +77,7 @@ pub enum StarMethod {
   nyquist analyze --sampler stratified --count 1024 --spectrum s.png --realisations 16")]
 pub struct AnalyzeArgs {
     /// CSV of points, one per line as `nyquist points` writes them (an optional header line);
-    /// `-` or nothing reads stdin. Values must lie in [0, 1).
+    /// `-` or nothing reads stdin. Values must lie in [0, 1); decimals are read as f64.
     #[arg(value_name = "FILE.csv")]
     pub input: Option<PathBuf>,
     /// Generate the points instead: which point set or sampler (names as in `points`).
