@@ -550,6 +550,10 @@ struct SpectrumInfo {
     realisations: u32,
     /// The generator ignores the seed: every realisation is the same set.
     identical: bool,
+    /// Radial mean power, `r = 0..=F` (entry 0 is DC, the mean N).
+    radial_mean: Vec<f64>,
+    /// Ulichney anisotropy per annulus in dB (−∞ where the variance is 0).
+    anisotropy_db: Vec<f64>,
     seconds: f64,
 }
 
@@ -585,6 +589,8 @@ fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Res
         max_freq: s.max_freq,
         realisations: s.realisations,
         identical,
+        radial_mean: s.radial_mean.clone(),
+        anisotropy_db: s.anisotropy_db.clone(),
         seconds: t.elapsed().as_secs_f64(),
     })
 }
@@ -771,6 +777,13 @@ fn json(
             s.realisations,
             s.identical,
             num(s.seconds)
+        );
+        let list = |v: &[f64]| v.iter().map(|&x| num(x)).collect::<Vec<_>>().join(",");
+        let _ = write!(
+            out,
+            ",\"spectrum_radial_mean\":[{}],\"spectrum_anisotropy_db\":[{}]",
+            list(&s.radial_mean),
+            list(&s.anisotropy_db)
         );
     }
     let _ = writeln!(out, ",\"seconds\":{}}}", num(seconds));

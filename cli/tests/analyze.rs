@@ -31,6 +31,14 @@ fn ok_json(o: &Output) -> String {
     stdout(o)
 }
 
+/// The raw items of the JSON array after `"key":`.
+fn json_list(json: &str, key: &str) -> Vec<String> {
+    let pat = format!("\"{key}\":[");
+    let at = json.find(&pat).unwrap_or_else(|| panic!("{key} in {json}")) + pat.len();
+    let end = at + json[at..].find(']').unwrap();
+    json[at..end].split(',').map(str::to_owned).collect()
+}
+
 /// Φ₂(i) for i < 2^32.
 fn vdc(i: u32) -> f64 {
     f64::from(i.reverse_bits()) / 4_294_967_296.0
@@ -229,6 +237,13 @@ fn spectrum_writes_one_png_of_the_documented_size() {
         j.contains("\"spectrum_identical_realisations\":false"),
         "{j}"
     );
+    // The radial mean has F + 1 entries, DC first (the mean power there is N); the anisotropy
+    // has one entry per annulus, null where the variance is 0 (DC).
+    let radial = json_list(&j, "spectrum_radial_mean");
+    assert_eq!(radial.len(), 25);
+    assert!((radial[0].parse::<f64>().unwrap() - 256.0).abs() < 1e-9);
+    let aniso = json_list(&j, "spectrum_anisotropy_db");
+    assert_eq!((aniso.len(), aniso[0].as_str()), (25, "null"));
     // Unscrambled Halton ignores the seed: the output says the realisations are identical.
     let o = nyquist(&[
         "analyze",
