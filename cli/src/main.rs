@@ -4,6 +4,7 @@
 //! file beside the target and renamed into place, so a failure leaves nothing behind.
 #![forbid(unsafe_code)]
 
+mod analyze;
 mod compare;
 mod filter;
 mod output;
@@ -45,6 +46,11 @@ enum Command {
     ///
     /// Example: nyquist compare --samplers uniform,stratified,sobol --spp 1,16 -o sheet.png
     Compare(compare::CompareArgs),
+    /// Measure a point set: star and L2 discrepancies, minimum distance and rho; optionally its
+    /// periodogram as a PNG.
+    ///
+    /// Example: nyquist analyze --sampler sobol --count 256 --spectrum sobol.png
+    Analyze(analyze::AnalyzeArgs),
 }
 
 fn main() -> ExitCode {
@@ -57,6 +63,7 @@ fn main() -> ExitCode {
         Command::Filter(args) => filter::run(args),
         Command::Render(args) => render::run(args),
         Command::Compare(args) => compare::run(args),
+        Command::Analyze(args) => analyze::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

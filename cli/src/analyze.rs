@@ -1,0 +1,898 @@
+//! `nyquist analyze`: quality measures of a point set (star and L2 discrepancies, minimum
+//! distance and ρ) and its Fourier periodogram as a picture.
+//!
+//! Points come from a CSV file or stdin (the format `nyquist points` writes, with an optional
+//! header line) or are generated with the same flags as `points`. Everything is validated and
+//! computed before anything is written, so an error leaves no file and prints one line.
+
+use crate::points::{self, Format, PointsArgs, SamplerName, parse_grid};
+use crate::raster::{CHAR, Canvas, LINE};
+use anyhow::{Context, Result, anyhow, bail};
+use clap::{Args, ValueEnum};
+use nyquist::analysis::{
+    self, ENUMERATION_LIMIT, MAX_DIMS, PointSet, StarBounds, Topology, star_bounds_scratch_len,
+    star_discrepancy_scratch_len,
+};
+use std::fmt::Write as _;
+use std::io::{IsTerminal, Read};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// The most coordinates a CSV input may hold: 2²⁸ (as `points`).
+const MAX_VALUES: usize = 1 << 28;
+/// Largest set whose L2-star discrepancy (O(d·N²)) is among the default measures.
+const DEFAULT_L2_LIMIT: usize = 1 << 16;
+/// Largest set the automatic star method computes exactly in 2D (the sweep is O(N²)).
+const AUTO_EXACT_2D: usize = 1 << 15;
+/// Grid cells `(m + 1)^d` of the automatic bounds grid (32 MiB of counters).
+const BOUNDS_CELLS: u64 = 1 << 22;
+/// Largest automatic bounds grid per axis.
+const BOUNDS_MAX_M: u32 = 1 << 16;
+/// Side of each of the two square panels of the spectrum picture.
+pub const PANEL: u32 = 512;
+/// Margin around and between the panels.
+const MARGIN: u32 = 16;
+/// Width of the spectrum picture: `3·16 + 2·512`.
+pub const SPECTRUM_WIDTH: u32 = 3 * MARGIN + 2 * PANEL;
+/// Height of the spectrum picture: two title lines, the panels and one label line.
+pub const SPECTRUM_HEIGHT: u32 = 2 * MARGIN + 3 * LINE + 4 + PANEL;
+/// The periodogram's grey scale: power in dB from `LO_DB` (black) to `HI_DB` (white).
+const LO_DB: f64 = -30.0;
+const HI_DB: f64 = 10.0;
+
+/// The measures `--measures` accepts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Measure {
+    /// Star discrepancy D*: exact (1D sort, 2D sweep, enumeration in small d) or a grid bracket.
+    Star,
+    /// L2-star discrepancy (Warnock's formula, O(d·N²)).
+    L2Star,
+    /// Centered L2 discrepancy (Hickernell 1998, O(d·N²)).
+    CenteredL2,
+    /// Wrap-around L2 discrepancy (Hickernell 1998, O(d·N²)).
+    WraparoundL2,
+    /// Minimum distance in the unit square and its relative radius ρ (2D sets).
+    MinDistance,
+    /// Minimum distance on the unit torus and its ρ (2D sets).
+    MinDistanceTorus,
+}
+
+/// How the star discrepancy is computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum StarMethod {
+    /// Exact in 1D, in 2D up to 32768 points and by enumeration while its cost is within the
+    /// library's limit; otherwise the grid bracket.
+    Auto,
+    /// Always exact (an error when enumeration would be too costly).
+    Exact,
+    /// Always the grid bracket [lower, upper] (--star-grid cells per axis).
+    Bounds,
+}
+
+/// Arguments of `nyquist analyze`.
+#[derive(Debug, Args)]
+#[command(after_help = "Examples:
+  nyquist analyze --sampler sobol --count 1024
+  nyquist points --sampler halton --count 256 | nyquist analyze --json
+  nyquist analyze --sampler stratified --count 1024 --spectrum s.png --realisations 16")]
+pub struct AnalyzeArgs {
+    /// CSV of points, one per line as `nyquist points` writes them (an optional header line);
+    /// `-` or nothing reads stdin. Values must lie in [0, 1); decimals are read as f64.
+    #[arg(value_name = "FILE.csv")]
+    pub input: Option<PathBuf>,
+    /// Generate the points instead: which point set or sampler (names as in `points`).
+    #[arg(long, visible_alias = "sequence", value_enum, value_name = "NAME")]
+    pub sampler: Option<SamplerName>,
+    /// Number of points to generate [default: 16; required for hammersley].
+    #[arg(long)]
+    pub count: Option<u64>,
+    /// Dimensions per generated point [default: 2]; with CSV input, the expected column count.
+    #[arg(long)]
+    pub dims: Option<u32>,
+    /// Seed of random and scrambled sets [default: 0].
+    #[arg(long)]
+    pub seed: Option<u64>,
+    /// Index of the first point of a generated sequence.
+    #[arg(long)]
+    pub skip: Option<u64>,
+    /// Grid `NXxNY` for 2D uniform/stratified sets whose count is not a square.
+    #[arg(long, value_parser = parse_grid)]
+    pub grid: Option<(u32, u32)>,
+    /// Pixel-sampler mode (as in `points`): the SPP samples of pixel 0,0.
+    #[arg(long)]
+    pub spp: Option<u32>,
+    /// Image size `WxH` for halton, hammersley and sobol with --spp.
+    #[arg(long, value_parser = parse_grid)]
+    pub resolution: Option<(u32, u32)>,
+    /// Comma-separated measures [default: star; l2-star up to 65536 points; min-distance for 2D
+    /// sets].
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "LIST")]
+    pub measures: Vec<Measure>,
+    /// How to compute the star discrepancy.
+    #[arg(long, value_enum, default_value = "auto")]
+    pub star_method: StarMethod,
+    /// Cells per axis of the star-discrepancy bracket [default: the largest with at most 2^22
+    /// grid points]; the bracket's width is at most 1 − (1 − 1/m)^d.
+    #[arg(long, value_name = "M")]
+    pub star_grid: Option<u32>,
+    /// Print one JSON object instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// Write the periodogram (log scale, DC at the centre) beside its radial mean power as one
+    /// 1072×578 PNG (2D sets; dimensions 0 and 1 of wider sets). Grey scale: −30 dB black,
+    /// +10 dB white; white noise is 0 dB.
+    #[arg(long, value_name = "FILE.png")]
+    pub spectrum: Option<PathBuf>,
+    /// Highest integer frequency F of the periodogram: the grid is (2F+1)².
+    #[arg(long, default_value_t = 64, value_name = "F")]
+    pub freq: u32,
+    /// Realisations averaged in the periodogram: generated sets use seeds seed..seed+M−1.
+    #[arg(long, default_value_t = 1, value_name = "M")]
+    pub realisations: u32,
+}
+
+/// One computed measure, ready for the table and the JSON.
+struct Row {
+    /// Table label.
+    label: &'static str,
+    /// Flat JSON fields (key, value as JSON text).
+    json: Vec<(&'static str, String)>,
+    /// Value cell of the table.
+    value: String,
+    /// `N · value` where that is the customary scale (discrepancies), else empty.
+    scaled: String,
+    /// How it was computed.
+    method: String,
+    seconds: f64,
+}
+
+/// Runs `nyquist analyze`.
+pub fn run(args: &AnalyzeArgs) -> Result<()> {
+    let start = Instant::now();
+    check_args(args)?;
+    let (coords, dims, source) = load(args, args.seed.unwrap_or(0))?;
+    let set = PointSet::new(&coords, dims).map_err(|e| anyhow!("points: {e}"))?;
+    let measures = chosen_measures(args, set.len(), dims)?;
+    let mut rows = Vec::new();
+    for &m in &measures {
+        rows.extend(measure(args, &set, m)?);
+    }
+    let spectrum = match &args.spectrum {
+        Some(path) => Some(spectrum(args, &coords, dims, path)?),
+        None => None,
+    };
+    let seconds = start.elapsed().as_secs_f64();
+    let n = set.len();
+    let text = if args.json {
+        json(
+            n,
+            dims,
+            &source,
+            &measures,
+            &rows,
+            spectrum.as_ref(),
+            seconds,
+        )
+    } else {
+        table(n, dims, &source, &rows, spectrum.as_ref(), seconds)
+    };
+    crate::output::to_stdout_or_file(None, |w| {
+        w.write_all(text.as_bytes())?;
+        Ok(())
+    })
+}
+
+/// Rejects flag combinations before any work.
+fn check_args(args: &AnalyzeArgs) -> Result<()> {
+    if args.sampler.is_some() {
+        if args.input.is_some() {
+            bail!("give either a CSV input or --sampler, not both");
+        }
+    } else {
+        for (given, flag) in [
+            (args.count.is_some(), "--count"),
+            (args.seed.is_some(), "--seed"),
+            (args.skip.is_some(), "--skip"),
+            (args.grid.is_some(), "--grid"),
+            (args.spp.is_some(), "--spp"),
+            (args.resolution.is_some(), "--resolution"),
+        ] {
+            if given {
+                bail!("{flag} applies to generated sets: give --sampler NAME");
+            }
+        }
+        if args.realisations > 1 {
+            bail!(
+                "--realisations > 1 needs a generated set (--sampler NAME): CSV input is one realisation"
+            );
+        }
+        if args.input.is_none() && std::io::stdin().is_terminal() {
+            bail!("no points: give a CSV file, pipe one into stdin, or use --sampler NAME");
+        }
+    }
+    if args.star_grid == Some(0) {
+        bail!("--star-grid 0: need at least one cell per axis");
+    }
+    if args.star_grid.is_some() && args.star_method == StarMethod::Exact {
+        bail!("--star-grid applies to --star-method bounds or auto");
+    }
+    if let Some(path) = &args.spectrum {
+        crate::render::check_output(path, "--spectrum", &["png"])?;
+        if args.freq == 0 || args.freq > nyquist_film::periodogram::MAX_FREQ {
+            bail!(
+                "--freq {}: need 1 ..= {}",
+                args.freq,
+                nyquist_film::periodogram::MAX_FREQ
+            );
+        }
+        if args.realisations == 0 || args.realisations > 100_000 {
+            bail!("--realisations {}: need 1 ..= 100000", args.realisations);
+        }
+    }
+    Ok(())
+}
+
+/// The points (flat `f64`), their dimension count and a description of where they came from.
+fn load(args: &AnalyzeArgs, seed: u64) -> Result<(Vec<f64>, usize, String)> {
+    if let Some(sampler) = args.sampler {
+        let (pts, dims) = generate(args, sampler, seed)?;
+        let mut source = format!("{} --count {}", points::name(sampler), pts.len() / dims);
+        if let Some(spp) = args.spp {
+            source = format!("{} --spp {spp}", points::name(sampler));
+        }
+        let _ = write!(source, " --dims {dims} --seed {seed}");
+        return Ok((pts.iter().map(|&v| f64::from(v)).collect(), dims, source));
+    }
+    let (text, name) = match args.input.as_deref() {
+        Some(p) if p != Path::new("-") => (
+            std::fs::read(p).with_context(|| format!("{}: cannot read", p.display()))?,
+            p.display().to_string(),
+        ),
+        _ => {
+            let mut buf = Vec::new();
+            std::io::stdin()
+                .read_to_end(&mut buf)
+                .context("stdin: cannot read")?;
+            (buf, "stdin".to_owned())
+        }
+    };
+    let text =
+        String::from_utf8(text).map_err(|_| anyhow!("{name}: not UTF-8 text (expected CSV)"))?;
+    let (coords, dims) = parse_csv(&text, &name)?;
+    if let Some(d) = args.dims
+        && d as usize != dims
+    {
+        bail!("{name}: {dims} columns, but --dims is {d}");
+    }
+    Ok((coords, dims, name))
+}
+
+/// Generates one realisation with `points`' code.
+fn generate(args: &AnalyzeArgs, sampler: SamplerName, seed: u64) -> Result<(Vec<f32>, usize)> {
+    let pa = PointsArgs {
+        sampler,
+        count: args.count,
+        dims: args.dims.unwrap_or(2),
+        seed,
+        skip: args.skip.unwrap_or(0),
+        grid: args.grid,
+        spp: args.spp,
+        pixel: None,
+        resolution: args.resolution,
+        format: Format::Csv,
+        output: None,
+    };
+    if points::pixel_mode(&pa) {
+        let (pts, dims, _) = points::pixel_samples(&pa)?;
+        Ok((pts, dims))
+    } else {
+        points::generate(&pa)
+    }
+}
+
+/// Parses CSV points: comma-separated numbers, the same count on every line, each finite and in
+/// `[0, 1)`. Blank lines are skipped; a first line with no number in it is a header.
+pub fn parse_csv(text: &str, name: &str) -> Result<(Vec<f64>, usize)> {
+    let mut coords = Vec::new();
+    let mut dims = 0usize;
+    let mut first = true;
+    for (i, line) in text.lines().enumerate() {
+        let line = line.trim();
+        if line.is_empty() {
+            continue;
+        }
+        let at = i + 1;
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        if std::mem::take(&mut first) && fields.iter().all(|f| f.parse::<f64>().is_err()) {
+            continue; // header
+        }
+        if dims == 0 {
+            dims = fields.len();
+        } else if fields.len() != dims {
+            bail!(
+                "{name} line {at}: {} values, expected {dims} as on the first point",
+                fields.len()
+            );
+        }
+        for f in fields {
+            let shown: String = f.chars().take(40).collect();
+            let v: f64 = f
+                .parse()
+                .map_err(|_| anyhow!("{name} line {at}: '{shown}' is not a number"))?;
+            if !v.is_finite() {
+                bail!("{name} line {at}: {shown} is not a finite number");
+            }
+            if !(0.0..1.0).contains(&v) {
+                bail!("{name} line {at}: {shown} is outside [0, 1)");
+            }
+            coords.push(v);
+        }
+        if coords.len() > MAX_VALUES {
+            bail!("{name}: more than {MAX_VALUES} values");
+        }
+    }
+    if coords.is_empty() {
+        bail!("{name}: no points");
+    }
+    Ok((coords, dims))
+}
+
+/// The measures to compute: the explicit list (each must apply to `dims`), or the defaults that
+/// apply (the quadratic L2-star only up to [`DEFAULT_L2_LIMIT`] points).
+fn chosen_measures(args: &AnalyzeArgs, n: usize, dims: usize) -> Result<Vec<Measure>> {
+    if args.measures.is_empty() {
+        let mut m = Vec::new();
+        if dims <= MAX_DIMS {
+            m.push(Measure::Star);
+        }
+        if n <= DEFAULT_L2_LIMIT {
+            m.push(Measure::L2Star);
+        }
+        if dims == 2 {
+            m.push(Measure::MinDistance);
+        }
+        return Ok(m);
+    }
+    let mut out: Vec<Measure> = Vec::new();
+    for &m in &args.measures {
+        match m {
+            Measure::Star if dims > MAX_DIMS => {
+                bail!("--measures star: at most {MAX_DIMS} dimensions, the set has {dims}")
+            }
+            Measure::MinDistance | Measure::MinDistanceTorus if dims != 2 => bail!(
+                "--measures {}: needs a 2D set, the set has {dims} dimension{}",
+                measure_name(m),
+                if dims == 1 { "" } else { "s" }
+            ),
+            _ => {}
+        }
+        if !out.contains(&m) {
+            out.push(m);
+        }
+    }
+    Ok(out)
+}
+
+fn measure_name(m: Measure) -> String {
+    m.to_possible_value()
+        .map_or_else(String::new, |v| v.get_name().to_owned())
+}
+
+/// Computes one measure (one or two table rows).
+fn measure(args: &AnalyzeArgs, set: &PointSet<'_>, m: Measure) -> Result<Vec<Row>> {
+    let t = Instant::now();
+    let n = set.len() as f64;
+    let disc = |label, key, v: f64, method: &str| Row {
+        label,
+        json: vec![(key, num(v))],
+        value: format!("{v:.6e}"),
+        scaled: format!("{:.6}", v * n),
+        method: method.to_owned(),
+        seconds: t.elapsed().as_secs_f64(),
+    };
+    Ok(match m {
+        Measure::Star => vec![star(args, set)?],
+        Measure::L2Star => vec![disc(
+            "L2-star discrepancy",
+            "l2_star",
+            analysis::l2_star_discrepancy(set),
+            "Warnock's formula",
+        )],
+        Measure::CenteredL2 => vec![disc(
+            "centered L2",
+            "centered_l2",
+            analysis::centered_l2_discrepancy(set),
+            "Hickernell 1998",
+        )],
+        Measure::WraparoundL2 => vec![disc(
+            "wrap-around L2",
+            "wraparound_l2",
+            analysis::wraparound_l2_discrepancy(set),
+            "Hickernell 1998",
+        )],
+        Measure::MinDistance | Measure::MinDistanceTorus => {
+            let torus = m == Measure::MinDistanceTorus;
+            let len = analysis::min_distance_scratch_len(set.len())
+                .ok_or_else(|| anyhow!("min-distance: too many points"))?;
+            let mut scratch = vec![0u64; len];
+            let topology = if torus {
+                Topology::Torus
+            } else {
+                Topology::Square
+            };
+            let d = analysis::min_distance(set, topology, &mut scratch)
+                .map_err(|e| anyhow!("min-distance: {e}"))?;
+            let seconds = t.elapsed().as_secs_f64();
+            let (dk, rk, where_) = if torus {
+                ("min_distance_torus", "rho_torus", "torus")
+            } else {
+                ("min_distance", "rho", "square")
+            };
+            vec![
+                Row {
+                    label: if torus {
+                        "min distance (torus)"
+                    } else {
+                        "min distance"
+                    },
+                    json: vec![(dk, num(d.distance))],
+                    value: format!("{:.6e}", d.distance),
+                    scaled: String::new(),
+                    method: format!("grid search, unit {where_}"),
+                    seconds,
+                },
+                Row {
+                    label: if torus { "rho (torus)" } else { "rho" },
+                    json: vec![(rk, num(d.relative_radius))],
+                    value: format!("{:.6}", d.relative_radius),
+                    scaled: String::new(),
+                    method: "d_min / sqrt(2/(sqrt(3) N))".to_owned(),
+                    seconds: 0.0,
+                },
+            ]
+        }
+    })
+}
+
+/// The star discrepancy by the method `--star-method` picks.
+fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
+    let t = Instant::now();
+    let (n, d) = (set.len(), set.dims());
+    let exact = |scratch_len: Option<usize>| -> Result<Option<(f64, &'static str)>> {
+        let len = scratch_len.ok_or_else(|| anyhow!("star: too many points"))?;
+        let mut scratch = vec![0.0f64; len];
+        let (r, how) = match d {
+            1 => (analysis::star_discrepancy_1d(set, &mut scratch), "exact-1d"),
+            2 => (analysis::star_discrepancy_2d(set, &mut scratch), "exact-2d"),
+            _ => (
+                analysis::star_discrepancy_enumerate(set, &mut scratch),
+                "exact-enumeration",
+            ),
+        };
+        match r {
+            Ok(v) => Ok(Some((v, how))),
+            Err(nyquist::Error::TooMany { .. }) => Ok(None),
+            Err(e) => Err(anyhow!("star: {e}")),
+        }
+    };
+    let result = match args.star_method {
+        StarMethod::Bounds => None,
+        StarMethod::Exact => Some(exact(star_discrepancy_scratch_len(n, d))?.ok_or_else(|| {
+            anyhow!(
+                "--star-method exact: enumerating {n} points in {d} dimensions exceeds the \
+                     work limit ({ENUMERATION_LIMIT}); use --star-method bounds"
+            )
+        })?),
+        StarMethod::Auto if d == 2 && n > AUTO_EXACT_2D => None,
+        StarMethod::Auto => exact(star_discrepancy_scratch_len(n, d))?,
+    };
+    let n_f = n as f64;
+    if let Some((v, how)) = result {
+        let method = match how {
+            "exact-1d" => "exact (1D, sorted; Niederreiter Thm 2.6)",
+            "exact-2d" => "exact (2D sweep)",
+            _ => "exact (critical-box enumeration)",
+        };
+        return Ok(Row {
+            label: "star discrepancy",
+            json: vec![
+                ("star_discrepancy", num(v)),
+                ("star_method", format!("\"{how}\"")),
+            ],
+            value: format!("{v:.6e}"),
+            scaled: format!("{:.6}", v * n_f),
+            method: method.to_owned(),
+            seconds: t.elapsed().as_secs_f64(),
+        });
+    }
+    let m = args.star_grid.unwrap_or_else(|| auto_grid(d));
+    let len = star_bounds_scratch_len(d, m)
+        .filter(|&l| l <= 1 << 30)
+        .ok_or_else(|| anyhow!("--star-grid {m}: (m+1)^{d} grid points is too many"))?;
+    let mut scratch = vec![0u32; len];
+    let StarBounds { lower, upper } = analysis::star_discrepancy_bounds(set, m, &mut scratch)
+        .map_err(|e| anyhow!("star bounds: {e}"))?;
+    Ok(Row {
+        label: "star discrepancy",
+        json: vec![
+            ("star_lower", num(lower)),
+            ("star_upper", num(upper)),
+            ("star_grid", m.to_string()),
+            ("star_method", "\"bounds\"".to_owned()),
+        ],
+        value: format!("[{lower:.4e}, {upper:.4e}]"),
+        scaled: format!("[{:.3}, {:.3}]", lower * n_f, upper * n_f),
+        method: format!("bracket, grid {m}^{d} (large N·d)"),
+        seconds: t.elapsed().as_secs_f64(),
+    })
+}
+
+/// The largest `m` with `(m + 1)^d ≤ 2^22` grid points (at least 1, at most 2^16).
+fn auto_grid(d: usize) -> u32 {
+    let fits = |m: u32| {
+        let mut cells = 1u64;
+        for _ in 0..d {
+            cells = cells.saturating_mul(u64::from(m) + 1);
+        }
+        cells <= BOUNDS_CELLS
+    };
+    let mut m = 1;
+    while m < BOUNDS_MAX_M && fits(m + 1) {
+        m += 1;
+    }
+    m
+}
+
+/// What the spectrum step reports.
+struct SpectrumInfo {
+    path: PathBuf,
+    max_freq: u32,
+    realisations: u32,
+    /// The generator ignores the seed: every realisation is the same set.
+    identical: bool,
+    /// Radial mean power, `r = 0..=F` (entry 0 is DC, the mean N).
+    radial_mean: Vec<f64>,
+    /// Ulichney anisotropy per annulus in dB (−∞ where the variance is 0).
+    anisotropy_db: Vec<f64>,
+    seconds: f64,
+}
+
+/// Computes the averaged periodogram and writes the picture.
+fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Result<SpectrumInfo> {
+    let t = Instant::now();
+    if dims < 2 {
+        bail!("--spectrum: needs points with at least 2 dimensions, the set has 1");
+    }
+    let mut pg = nyquist_film::periodogram::Periodogram::new(args.freq)
+        .map_err(|e| anyhow!("--freq {}: {e}", args.freq))?;
+    pg.add(&pairs_of(coords, dims))
+        .map_err(|e| anyhow!("--spectrum: {e}"))?;
+    let mut identical = false;
+    if let Some(sampler) = args.sampler {
+        let seed = args.seed.unwrap_or(0);
+        for k in 1..args.realisations {
+            let (pts, d) = generate(args, sampler, seed.wrapping_add(u64::from(k)))?;
+            let c: Vec<f64> = pts.iter().map(|&v| f64::from(v)).collect();
+            if k == 1 && c == coords {
+                identical = true;
+            }
+            pg.add(&pairs_of(&c, d))
+                .map_err(|e| anyhow!("--spectrum: {e}"))?;
+        }
+    }
+    let s = pg.spectrum().map_err(|e| anyhow!("--spectrum: {e}"))?;
+    let n = coords.len() / dims;
+    let canvas = draw_spectrum(&s, n);
+    canvas.write_png(path, "--spectrum")?;
+    Ok(SpectrumInfo {
+        path: path.to_path_buf(),
+        max_freq: s.max_freq,
+        realisations: s.realisations,
+        identical,
+        radial_mean: s.radial_mean.clone(),
+        anisotropy_db: s.anisotropy_db.clone(),
+        seconds: t.elapsed().as_secs_f64(),
+    })
+}
+
+fn pairs_of(c: &[f64], dims: usize) -> Vec<[f64; 2]> {
+    c.chunks_exact(dims).map(|p| [p[0], p[1]]).collect()
+}
+
+/// The periodogram (left) and the radial mean power (right).
+fn draw_spectrum(s: &nyquist_film::periodogram::Spectrum, n: usize) -> Canvas {
+    const INK: [u8; 3] = [0, 0, 0];
+    const GREY: [u8; 3] = [150, 150, 150];
+    const CURVE: [u8; 3] = [20, 60, 200];
+    let mut c = Canvas::new(SPECTRUM_WIDTH, SPECTRUM_HEIGHT, [255, 255, 255]);
+    let f = s.max_freq;
+    let side = 2 * f as usize + 1;
+    let top = i64::from(MARGIN + 2 * LINE);
+    let left0 = i64::from(MARGIN);
+    let left1 = i64::from(2 * MARGIN + PANEL);
+    c.text(
+        left0,
+        i64::from(MARGIN),
+        &format!("periodogram, N = {n}, {} realisation(s)", s.realisations),
+        INK,
+    );
+    c.text(
+        left0,
+        i64::from(MARGIN + LINE),
+        &format!("f in [-{f}, {f}]^2, DC at centre, {LO_DB}..+{HI_DB} dB"),
+        INK,
+    );
+    // Left: box-averaged power per pixel, fy upwards.
+    let p = PANEL as usize;
+    let range = |px: usize| {
+        let a = px * side / p;
+        let b = ((px + 1) * side / p).max(a + 1).min(side);
+        (a, b)
+    };
+    for py in 0..p {
+        let (ya, yb) = range(p - 1 - py);
+        for px in 0..p {
+            let (xa, xb) = range(px);
+            let mut sum = 0.0;
+            for y in ya..yb {
+                for x in xa..xb {
+                    sum += s.power[y * side + x];
+                }
+            }
+            let mean = sum / ((yb - ya) * (xb - xa)) as f64;
+            let t = if mean > 0.0 {
+                ((10.0 * mean.log10() - LO_DB) / (HI_DB - LO_DB)).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
+            let g = (255.0 * t).round() as u8;
+            c.put(left0 + px as i64, top + py as i64, [g, g, g]);
+        }
+    }
+    // Right: radial mean power for r = 1..=F (DC is N, off the scale).
+    let radial = &s.radial_mean;
+    let peak = radial.iter().skip(1).cloned().fold(0.0f64, f64::max);
+    let ymax = peak.ceil().clamp(2.0, 8.0);
+    c.text(
+        left1,
+        i64::from(MARGIN),
+        "radial mean power (white noise = 1)",
+        INK,
+    );
+    c.text(
+        left1,
+        i64::from(MARGIN + LINE),
+        &format!("r = 1..{f}, power 0..{ymax}"),
+        INK,
+    );
+    let pw = f64::from(PANEL - 1);
+    let to_x = |r: f64| left1 as f64 + pw * r / f64::from(f);
+    let to_y = |v: f64| top as f64 + pw * (1.0 - v.clamp(0.0, ymax) / ymax);
+    for i in 0..i64::from(PANEL) {
+        c.put(left1 + i, top + i64::from(PANEL) - 1, INK);
+        c.put(left1, top + i, INK);
+        if i % 8 < 4 {
+            c.put(left1 + i, to_y(1.0).round() as i64, GREY);
+        }
+    }
+    for r in 1..f as usize {
+        line(
+            &mut c,
+            (to_x(r as f64), to_y(radial[r])),
+            (to_x((r + 1) as f64), to_y(radial[r + 1])),
+            CURVE,
+        );
+    }
+    if f == 1 {
+        c.disc(to_x(1.0), to_y(radial[1]), 2.5, CURVE);
+    }
+    let below = top + i64::from(PANEL) + 4;
+    c.text(left1, below, "0", INK);
+    let fs = f.to_string();
+    c.text(
+        left1 + i64::from(PANEL) - i64::from(CHAR) * fs.len() as i64,
+        below,
+        &fs,
+        INK,
+    );
+    c.text(left1 + 4, to_y(1.0).round() as i64 - 10, "1", INK);
+    c.text(left1 + 4, top + 2, &format!("{ymax}"), INK);
+    c.text(left0, below, &format!("-{f}"), INK);
+    c.text(
+        left0 + i64::from(PANEL) - i64::from(CHAR) * (fs.len() as i64 + 1),
+        below,
+        &format!("+{f}"),
+        INK,
+    );
+    c
+}
+
+/// A two-pixel-wide line from `a` to `b`.
+fn line(c: &mut Canvas, a: (f64, f64), b: (f64, f64), color: [u8; 3]) {
+    let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil().max(1.0) as usize;
+    for k in 0..=steps {
+        let t = k as f64 / steps as f64;
+        let x = (a.0 + t * (b.0 - a.0)).round() as i64;
+        let y = (a.1 + t * (b.1 - a.1)).round() as i64;
+        c.put(x, y, color);
+        c.put(x, y + 1, color);
+    }
+}
+
+/// A finite number as JSON (shortest round-trip form).
+fn num(v: f64) -> String {
+    if v.is_finite() {
+        format!("{v}")
+    } else {
+        "null".to_owned()
+    }
+}
+
+/// A JSON string literal.
+fn json_str(s: &str) -> String {
+    let mut out = String::from("\"");
+    for ch in s.chars() {
+        match ch {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => {
+                let _ = write!(out, "\\u{:04x}", c as u32);
+            }
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+fn json(
+    n: usize,
+    dims: usize,
+    source: &str,
+    measures: &[Measure],
+    rows: &[Row],
+    spectrum: Option<&SpectrumInfo>,
+    seconds: f64,
+) -> String {
+    let mut out = format!(
+        "{{\"points\":{n},\"dims\":{dims},\"source\":{},\"measures\":[{}]",
+        json_str(source),
+        measures
+            .iter()
+            .map(|&m| json_str(&measure_name(m)))
+            .collect::<Vec<_>>()
+            .join(",")
+    );
+    for r in rows {
+        for (k, v) in &r.json {
+            let _ = write!(out, ",\"{k}\":{v}");
+        }
+    }
+    if let Some(s) = spectrum {
+        let _ = write!(
+            out,
+            ",\"spectrum\":{},\"spectrum_max_freq\":{},\"spectrum_realisations\":{},\"spectrum_identical_realisations\":{},\"spectrum_seconds\":{}",
+            json_str(&s.path.display().to_string()),
+            s.max_freq,
+            s.realisations,
+            s.identical,
+            num(s.seconds)
+        );
+        let list = |v: &[f64]| v.iter().map(|&x| num(x)).collect::<Vec<_>>().join(",");
+        let _ = write!(
+            out,
+            ",\"spectrum_radial_mean\":[{}],\"spectrum_anisotropy_db\":[{}]",
+            list(&s.radial_mean),
+            list(&s.anisotropy_db)
+        );
+    }
+    let _ = writeln!(out, ",\"seconds\":{}}}", num(seconds));
+    out
+}
+
+fn table(
+    n: usize,
+    dims: usize,
+    source: &str,
+    rows: &[Row],
+    spectrum: Option<&SpectrumInfo>,
+    seconds: f64,
+) -> String {
+    let mut out = format!(
+        "{n} point{}, {dims} dimension{} ({source})\n",
+        if n == 1 { "" } else { "s" },
+        if dims == 1 { "" } else { "s" }
+    );
+    let _ = writeln!(
+        out,
+        "{:<22} {:<26} {:<20} {:>11}  method",
+        "measure", "value", "N*value", "time"
+    );
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "{:<22} {:<26} {:<20} {:>11}  {}",
+            r.label,
+            r.value,
+            r.scaled,
+            ms(r.seconds),
+            r.method
+        );
+    }
+    if let Some(s) = spectrum {
+        let _ = writeln!(
+            out,
+            "spectrum: {} (F = {}, {} realisation{}{}) in {}",
+            s.path.display(),
+            s.max_freq,
+            s.realisations,
+            if s.realisations == 1 { "" } else { "s" },
+            if s.identical {
+                ", all identical: this set ignores --seed"
+            } else {
+                ""
+            },
+            ms(s.seconds).trim()
+        );
+    }
+    let _ = writeln!(out, "total time {}", ms(seconds).trim());
+    out
+}
+
+fn ms(seconds: f64) -> String {
+    format!("{:.3} ms", seconds * 1e3)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn csv_accepts_a_header_and_blank_lines() {
+        let (c, d) = parse_csv("x,y\n0.5,0.25\n\n0,0.75\n", "t").unwrap();
+        assert_eq!((c, d), (vec![0.5, 0.25, 0.0, 0.75], 2));
+    }
+
+    #[test]
+    fn csv_rejects_bad_values() {
+        for bad in [
+            "0.5,0.2\n0.1\n",
+            "0.5,abc\n",
+            "1.0\n",
+            "NaN\n",
+            "-0.1\n",
+            "x\n",
+            "",
+        ] {
+            assert!(parse_csv(bad, "t").is_err(), "{bad:?}");
+        }
+    }
+
+    #[test]
+    fn auto_grid_fits_the_budget() {
+        assert_eq!(auto_grid(2), 2047);
+        assert_eq!(auto_grid(1), BOUNDS_MAX_M);
+        assert_eq!(auto_grid(32), 1);
+        let m = u64::from(auto_grid(3));
+        assert!((m + 1).pow(3) <= BOUNDS_CELLS && (m + 2).pow(3) > BOUNDS_CELLS);
+    }
+
+    #[test]
+    fn spectrum_picture_has_the_documented_size() {
+        let s = nyquist_film::periodogram::periodogram(&[&[[0.1, 0.2], [0.6, 0.7]]], 3).unwrap();
+        let c = draw_spectrum(&s, 2);
+        assert_eq!(c.width(), SPECTRUM_WIDTH);
+        assert_eq!((SPECTRUM_WIDTH, SPECTRUM_HEIGHT), (1072, 578));
+        // The centre pixel of the left panel shows DC, P = N = 2, on the −30..+10 dB scale.
+        let top = MARGIN + 2 * LINE;
+        let want = (255.0 * (10.0 * 2f64.log10() + 30.0) / 40.0).round() as u8;
+        assert_eq!(c.get(MARGIN + PANEL / 2, top + PANEL / 2), [want; 3]);
+        // The bottom-left pixel is f = (−3, −3) (fy grows upwards).
+        let corner = s.at(-3, -3);
+        let t = ((10.0 * corner.log10() + 30.0) / 40.0).clamp(0.0, 1.0);
+        assert_eq!(
+            c.get(MARGIN, top + PANEL - 1),
+            [(255.0 * t).round() as u8; 3]
+        );
+    }
+}
