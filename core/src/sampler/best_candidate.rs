@@ -39,15 +39,17 @@ pub fn table_row(k: u32) -> [f32; 5] {
 
 /// Best-candidate sampler: sample `i` of every pixel takes row `i` of the blue-noise table.
 ///
-/// - Image sample (dimensions 0, 1): the table's first `spp` image positions. Every prefix of
-///   the table is blue noise on the torus, so each pixel's `spp` samples are, and so is the
-///   whole image (the pattern wraps seamlessly across pixel edges). Deviation from pbrt-v2,
-///   whose table spans a tile of `√(4096/spp)` pixels: there a pixel gets a varying number of
-///   samples, which the random-access interface cannot express; here every pixel gets exactly
-///   `spp`.
-/// - Time (dimension 2) and lens (dimensions 3, 4): the same row's values with a per-pixel
-///   Cranley–Patterson shift from `hash(pixel, seed)` (toroidal, so the redistribution against
-///   image neighbours is kept inside the pixel), so neighbouring pixels do not repeat them.
+/// - Image sample (dimensions 0, 1): the table's first `spp` image positions, with a per-pixel
+///   toroidal Cranley–Patterson shift from `hash(pixel, seed)`. Every prefix of the table is
+///   blue noise on the torus, and a toroidal shift keeps every distance, so each pixel's `spp`
+///   samples are blue noise; the shift differs from pixel to pixel, so the image is not one
+///   pattern repeated with a period of one pixel (which aliases like a uniform grid at low
+///   `spp`: the seed's "prefer noise over aliasing"). Deviation from pbrt-v2, whose table spans
+///   a tile of `√(4096/spp)` pixels: there a pixel gets a varying number of samples, which the
+///   random-access interface cannot express; here every pixel gets exactly `spp`.
+/// - Time (dimension 2) and lens (dimensions 3, 4): the same row's values with their own
+///   per-pixel shifts (toroidal, so the redistribution against image neighbours is kept inside
+///   the pixel), so neighbouring pixels do not repeat them.
 /// - Dimensions ≥ 5: independent hashed values of (pixel, index, dimension, seed).
 ///
 /// `sample_index >= spp` wraps modulo `spp`.
@@ -64,19 +66,22 @@ pub struct BestCandidateSampler {
     spp: u32,
     seed: u64,
     pixel: [u32; 2],
-    /// Time and lens Cranley–Patterson shifts of the current pixel.
-    shifts: [f32; 3],
+    /// Image, time and lens Cranley–Patterson shifts of the current pixel.
+    shifts: [f32; 5],
     /// `hash(pixel, seed)` of the current pixel, for the dimensions past the table.
     pixel_key: u64,
     index: u32,
     dim: u32,
 }
 
-/// The per-pixel time and lens shifts.
-fn shifts(pixel: [u32; 2], seed: u64) -> [f32; 3] {
+/// The per-pixel image, time and lens shifts (dimensions 0 ..= 4).
+fn shifts(pixel: [u32; 2], seed: u64) -> [f32; 5] {
     let h = pixel_hash(pixel, seed, 0x6370);
     let g = hash2(h, 1);
+    let k = hash2(h, 2);
     [
+        unit_f32((k >> 32) as u32),
+        unit_f32(k as u32),
         unit_f32((h >> 32) as u32),
         unit_f32(h as u32),
         unit_f32((g >> 32) as u32),
@@ -123,11 +128,7 @@ impl BestCandidateSampler {
             return unit_f32((h >> 32) as u32);
         }
         let v = (f32::from(table::TABLE[row as usize][dim as usize]) + 0.5) * (1.0 / 65536.0);
-        if dim < 2 {
-            return v;
-        }
-        let shift = self.shifts[(dim - 2) as usize];
-        let s = v + shift;
+        let s = v + self.shifts[dim as usize];
         clamp_unit(if s >= 1.0 { s - 1.0 } else { s })
     }
 }
@@ -338,6 +339,61 @@ mod tests {
             sum += wrap(f64::from(r[2] - rows[j][2]));
         }
         assert!(sum / 256.0 > 0.27, "mean time gap {}", sum / 256.0);
+    }
+
+    /// At 1 spp the image offsets vary from pixel to pixel (no one-pixel period, which would
+    /// alias like a uniform grid), and at 16 spp each pixel's pattern keeps the table prefix's
+    /// toroidal minimum distance (a toroidal shift moves no distance).
+    #[test]
+    fn image_patterns_are_shifted_per_pixel_and_stay_blue_noise() {
+        let mut s = BestCandidateSampler::new(1, 3).unwrap();
+        let mut offsets = std::vec::Vec::new();
+        for y in 0..8 {
+            for x in 0..8 {
+                s.start_pixel_sample([x, y], 0, 0);
+                offsets.push(s.get_pixel_2d());
+            }
+        }
+        offsets.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        offsets.dedup();
+        assert_eq!(offsets.len(), 64, "identical offsets across pixels");
+
+        let torus = |a: [f32; 2], b: [f32; 2]| {
+            let d = |u: f32, v: f32| {
+                let t = (u - v).abs();
+                t.min(1.0 - t)
+            };
+            (d(a[0], b[0]).powi(2) + d(a[1], b[1]).powi(2)).sqrt()
+        };
+        let min_dist = |pts: &[[f32; 2]]| {
+            let mut m = f32::MAX;
+            for i in 0..pts.len() {
+                for j in 0..i {
+                    m = m.min(torus(pts[i], pts[j]));
+                }
+            }
+            m
+        };
+        let prefix: std::vec::Vec<[f32; 2]> = (0..16)
+            .map(|r| {
+                let row = table::TABLE[r];
+                [
+                    (f32::from(row[0]) + 0.5) / 65536.0,
+                    (f32::from(row[1]) + 0.5) / 65536.0,
+                ]
+            })
+            .collect();
+        let want = min_dist(&prefix);
+        let mut s = BestCandidateSampler::new(16, 3).unwrap();
+        for pixel in [[0u32, 0u32], [5, 9], [1000, 3]] {
+            let pts: std::vec::Vec<[f32; 2]> = (0..16)
+                .map(|i| {
+                    s.start_pixel_sample(pixel, i, 0);
+                    s.get_pixel_2d()
+                })
+                .collect();
+            assert!((min_dist(&pts) - want).abs() < 1e-5, "{pixel:?}");
+        }
     }
 
     #[test]
