@@ -30,6 +30,7 @@ pub enum Scene {
     /// A hard edge tilted 8° from vertical.
     Edge,
     /// Stripes moving during the shutter (uses the time sample): motion blur vs strobing.
+    #[value(alias = "moving-stripes")]
     Stripes,
 }
 
