@@ -163,6 +163,18 @@ impl StratifiedSampler {
     #[inline]
     fn jitters(&self, dim: u32) -> [f32; 2] {
         match self.jitter {
+            // Time (2) and lens (3) share one hash: 21 bits each, finer than any stratum
+            // needs (the value keeps 24 bits), so a camera sample hashes twice, not three times.
+            Jitter::Jittered if dim == 2 || dim == 3 => {
+                let h = mix64(self.sample_key ^ 2u64.wrapping_mul(JITTER_STEP));
+                let bits =
+                    |shift: u32| ((h >> shift) as u32 & 0x1f_ffff) as f32 * (1.0 / 2_097_152.0);
+                if dim == 2 {
+                    [bits(43), 0.5]
+                } else {
+                    [bits(22), bits(1)]
+                }
+            }
             Jitter::Jittered => {
                 let h = mix64(self.sample_key ^ u64::from(dim).wrapping_mul(JITTER_STEP));
                 [unit_f32((h >> 32) as u32), unit_f32(h as u32)]

@@ -101,7 +101,9 @@ impl PairSource {
 const CAMERA_PAIRS: [u32; 3] = [0, 2 | 0x8000_0000, 3];
 
 fn camera_sources(pixel_key: u64, spp: u32) -> [PairSource; 3] {
-    CAMERA_PAIRS.map(|pair| PairSource::new(pixel_key, spp, pair))
+    // The image pair (0) is read in sample order: its permutation is never applied, so a
+    // one-element one (free to build) stands in.
+    CAMERA_PAIRS.map(|pair| PairSource::new(pixel_key, if pair == 0 { 1 } else { spp }, pair))
 }
 
 impl ZeroTwoSampler {
