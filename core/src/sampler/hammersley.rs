@@ -17,8 +17,10 @@ use crate::radical::{radical_inverse, scrambled_radical_inverse};
 /// Hammersley set (the rows `py ≥ height` of the padding are never asked for).
 ///
 /// Dimension `d ≥ 2` is `Φ_{prime(d − 1)}(k)` (base 3, 5, …; wrapping after 1024 bases), with a
-/// seeded digit permutation when `scramble` is set. `sample_index >= spp` wraps modulo `spp`.
-/// Index arithmetic is `u64` (`N` reaches 2⁴⁴ at 16384² pixels × 65536 spp).
+/// seeded digit permutation when `scramble` is set. `sample_index >= spp` wraps modulo `spp`,
+/// `px >= width` modulo `width` and `py` modulo `H`, so every pixel argument addresses a point of
+/// the set. Index arithmetic is `u64` (`N` reaches 2⁴⁴ at 16384² pixels × 65536 spp);
+/// [`HammersleySampler::new`] refuses sizes whose `N` would not fit.
 ///
 /// ```
 /// use nyquist::sampler::{HammersleySampler, Sampler};
@@ -33,6 +35,8 @@ pub struct HammersleySampler {
     scramble: bool,
     seed: u64,
     j: u32,
+    /// Image width in pixels (`px` wraps modulo it).
+    width: u32,
     /// `H · spp`: points per pixel column.
     column: u64,
     k: u64,
@@ -45,11 +49,16 @@ impl HammersleySampler {
     /// digit permutations of dimensions ≥ 2.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0.
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if the
+    /// point count `N = width · H · spp` does not fit a `u64`.
     ///
     /// ```
-    /// use nyquist::sampler::HammersleySampler;
+    /// use nyquist::{sampler::HammersleySampler, Error};
     /// assert!(HammersleySampler::new([4, 0], 1, false, 0).is_err());
+    /// assert_eq!(
+    ///     HammersleySampler::new([u32::MAX, u32::MAX], u32::MAX, false, 0).err(),
+    ///     Some(Error::TooMany { what: "width × height × spp" })
+    /// );
     /// ```
     pub fn new(resolution: [u32; 2], spp: u32, scramble: bool, seed: u64) -> Result<Self, Error> {
         if spp == 0 {
@@ -59,12 +68,19 @@ impl HammersleySampler {
             return Err(Error::ZeroSize { what: "resolution" });
         }
         let j = 32 - (resolution[1] - 1).leading_zeros();
+        let column = (1u64 << j) * u64::from(spp);
+        column
+            .checked_mul(u64::from(resolution[0]))
+            .ok_or(Error::TooMany {
+                what: "width × height × spp",
+            })?;
         Ok(Self {
             spp,
             scramble,
             seed,
             j,
-            column: (1u64 << j) * u64::from(spp),
+            width: resolution[0],
+            column,
             k: 0,
             film_x: 0.0,
             dim: 0,
@@ -82,7 +98,7 @@ impl HammersleySampler {
     /// assert_eq!(s.point_index([1, 0], 0), 2);
     /// ```
     pub fn point_index(&self, pixel: [u32; 2], sample_index: u32) -> u64 {
-        u64::from(pixel[0]) * self.column + self.row_offset(pixel[1], sample_index)
+        u64::from(pixel[0] % self.width) * self.column + self.row_offset(pixel[1], sample_index)
     }
 
     fn row_offset(&self, py: u32, sample_index: u32) -> u64 {
@@ -119,7 +135,7 @@ impl Sampler for HammersleySampler {
     #[inline(always)]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         let r = self.row_offset(pixel[1], sample_index);
-        self.k = u64::from(pixel[0]) * self.column + r;
+        self.k = u64::from(pixel[0] % self.width) * self.column + r;
         self.film_x = clamp_unit(((r as f64 + 0.5) / self.column as f64) as f32);
         self.dim = dim;
     }
@@ -130,6 +146,17 @@ impl Sampler for HammersleySampler {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Found by the fuzzer: pixels past the width overflowed the index; they wrap now.
+    #[test]
+    fn pixels_past_the_width_wrap_instead_of_overflowing() {
+        let mut s = HammersleySampler::new([17, 421_068_800], 47, false, 0).unwrap();
+        s.start_pixel_sample([1_465_358_105, 0], 3, 0);
+        let a = s.get_pixel_2d();
+        s.start_pixel_sample([1_465_358_105 % 17, 0], 3, 0);
+        assert_eq!(s.get_pixel_2d(), a);
+        assert_eq!(s.point_index([17 + 2, 5], 1), s.point_index([2, 5], 1));
+    }
     use crate::sampler::tests::{consistent_values, threads_agree};
 
     #[test]

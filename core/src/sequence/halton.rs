@@ -223,6 +223,16 @@ impl Sequence for ScrambledHalton {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Found by the fuzzer: the default `fill` overflowed (debug panic) when its last index
+    /// was `u64::MAX − 1`, computing the next index past the end.
+    #[test]
+    fn default_fill_reaches_the_last_indices_without_overflow() {
+        let z = HaltonZaremba::new(1).unwrap();
+        let mut buf = [0.0f32; 1];
+        assert_eq!(z.fill(u64::MAX - 1, 1, &mut buf), Ok(1));
+        assert_eq!(buf[0], z.sample(u64::MAX - 1, 0));
+    }
     use proptest::prelude::*;
 
     fn sets() -> [(&'static str, std::boxed::Box<dyn Sequence>); 4] {

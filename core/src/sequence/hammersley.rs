@@ -28,21 +28,24 @@ fn check(n: u64, dims: u32) -> Result<(), Error> {
 /// `(k + ½)/n` for `k < n`, within 1 ulp (`f64`: correctly rounded).
 #[inline]
 fn centre_f32(k: u64, n: u64) -> f32 {
-    if n < 1 << 52 {
+    // (k + ½)/n < 1, but for n ≥ 2²⁴ the last points round to 1 in f32: clamp below it.
+    let x = if n < 1 << 52 {
         // Exact operands, one correctly rounded division, one narrowing.
         ((k as f64 + 0.5) / n as f64) as f32
     } else {
         ratio_f32(u128::from(k) * 2 + 1, u128::from(n) * 2)
-    }
+    };
+    x.min(crate::math::ONE_MINUS_EPSILON)
 }
 
 #[inline]
 fn centre_f64(k: u64, n: u64) -> f64 {
-    if n < 1 << 52 {
+    let x = if n < 1 << 52 {
         (k as f64 + 0.5) / n as f64
     } else {
         ratio_f64(u128::from(k) * 2 + 1, u128::from(n) * 2)
-    }
+    };
+    x.min(crate::math::ONE_MINUS_EPSILON_F64)
 }
 
 /// The Hammersley set of `n` points: point `k` is `((k + ½)/n, Φ₂(k), Φ₃(k), …)`, up to 1025
@@ -247,6 +250,19 @@ mod tests {
         assert_eq!(Hammersley::new(1, 0), Err(Error::ZeroSize { what: "dims" }));
         assert!(HammersleyZaremba::new(1, 1026).is_err());
         assert_eq!(Hammersley::new(1, 1).unwrap().sample(0, 0), 0.5);
+    }
+
+    /// Found by the fuzzer: with n ≥ 2²⁴ the last centres rounded to 1.0 in f32.
+    #[test]
+    fn centres_stay_below_one_for_huge_n() {
+        for n in [1u64 << 24, (1 << 24) + 1, 1 << 40, u64::MAX] {
+            let h = Hammersley::new(n, 2).unwrap();
+            let z = HammersleyZaremba::new(n, 2).unwrap();
+            for k in [n - 1, n - 2, n / 2] {
+                assert!(h.sample(k, 0) < 1.0 && z.sample(k, 0) < 1.0, "n={n} k={k}");
+                assert!(h.sample_f64(k, 0) < 1.0, "n={n} k={k}");
+            }
+        }
     }
 
     #[test]

@@ -80,7 +80,10 @@ pub trait Sequence {
     /// ```
     fn fill(&self, first: u64, dims: u32, out: &mut [f32]) -> Result<u64, Error> {
         let n = check_fill(self.dims(), self.point_count(), first, dims, out.len())?;
-        for (index, point) in (first..).zip(out.chunks_exact_mut(dims as usize)) {
+        // Indices from `0..n` offset by `first` (never past `first + n − 1 ≤ u64::MAX`: an
+        // open range would compute the successor of the last index and overflow).
+        for (k, point) in (0..n).zip(out.chunks_exact_mut(dims as usize)) {
+            let index = first + k;
             for (dim, x) in (0..dims).zip(point) {
                 *x = self.sample(index, dim);
             }
