@@ -1,0 +1,352 @@
+//! `nyquist::filter`: spec parsing, constructors with any `f32` parameters, evaluation at any
+//! offset, tables (build, lookup, footprint) and the importance sampler.
+
+use nyquist::Error;
+use nyquist::filter::{
+    Axis, Boxcar, Filter, FilterKind, FilterSampler, FilterTable, Gaussian, Interpolation, Lanczos,
+    MAX_RADIUS, Mitchell, SeparableTable, Table2d, Triangle, sinc,
+};
+
+use crate::Bytes;
+
+/// Filters: `FilterKind::parse` never panics on any string and what it accepts prints back to
+/// itself; constructors return a filter or a typed error for any `f32`s (NaN, ∞ included); every
+/// filter's radius is finite, in `(0, MAX_RADIUS]`; `eval` is finite everywhere, exactly 0 past
+/// the radius and for NaN/∞ offsets; separable filters factor exactly; the integral is finite;
+/// tables are finite, 0 past the radius, and `footprint` equals per-weight lookups; the
+/// importance sampler draws offsets inside the support with finite weights and positive pdf.
+pub fn filters(data: &[u8]) {
+    let mut b = Bytes::new(data);
+    let op = b.u8() % 8;
+    let offsets: Vec<[f32; 2]> = (0..4).map(|_| [b.f32_mixed(), b.f32_mixed()]).collect();
+    let interp = if b.bool() {
+        Interpolation::Linear
+    } else {
+        Interpolation::Nearest
+    };
+    let foot = Footprint {
+        d0: [b.f32_mixed(), b.f32_mixed()],
+        nx: b.below(6) as usize,
+        len: b.below(40) as usize,
+    };
+    let us: Vec<[f32; 2]> = (0..3).map(|_| [b.f32_mixed(), b.f32_mixed()]).collect();
+    let params = [b.f32_mixed(), b.f32_mixed(), b.f32_mixed(), b.f32_mixed()];
+    assert!(
+        sinc(params[0]).is_finite(),
+        "sinc({}) is not finite",
+        params[0]
+    );
+    let ctx = Ctx {
+        offsets,
+        interp,
+        foot,
+        us,
+    };
+    let r = [params[0], params[1]];
+    match op {
+        0 => {
+            let text = String::from_utf8_lossy(b.rest()).into_owned();
+            match FilterKind::parse(&text) {
+                Ok(kind) => {
+                    let printed = kind.to_string();
+                    let back = FilterKind::parse(&printed);
+                    assert_eq!(
+                        back,
+                        Ok(kind),
+                        "{text:?} parsed to {kind:?}, printed as {printed:?}"
+                    );
+                    assert!(!kind.name().is_empty());
+                    check_filter(kind.name(), kind.as_dyn(), &ctx);
+                }
+                Err(e) => {
+                    let _ = e.to_string();
+                }
+            }
+        }
+        1 => built("Boxcar", Boxcar::new(r), &ctx),
+        2 => built("Triangle", Triangle::new(r), &ctx),
+        3 => built("Gaussian", Gaussian::new(r, params[2]), &ctx),
+        4 => built(
+            "Gaussian::with_sigma",
+            Gaussian::with_sigma(r, params[2]),
+            &ctx,
+        ),
+        5 => built("Mitchell", Mitchell::new(r, params[2], params[3]), &ctx),
+        6 => built("Lanczos", Lanczos::new(r, params[2]), &ctx),
+        _ => {
+            // A plugin filter with arbitrary (even non-finite) values: tables and the sampler
+            // must still be built or refused with a typed error, and stay finite.
+            let fix = |v: f32| {
+                if v.is_finite() && v > MAX_RADIUS {
+                    MAX_RADIUS
+                } else {
+                    v
+                }
+            };
+            let plugin = Plugin {
+                radius: [fix(r[0]), fix(r[1])],
+                value: if params[2].is_finite() {
+                    params[2].clamp(-1e6, 1e6)
+                } else {
+                    1.0
+                },
+                separable: params[3].is_sign_negative(),
+            };
+            check_tables("plugin", &plugin, &ctx);
+        }
+    }
+}
+
+struct Footprint {
+    d0: [f32; 2],
+    nx: usize,
+    len: usize,
+}
+
+struct Ctx {
+    offsets: Vec<[f32; 2]>,
+    interp: Interpolation,
+    foot: Footprint,
+    us: Vec<[f32; 2]>,
+}
+
+#[derive(Debug)]
+struct Plugin {
+    radius: [f32; 2],
+    value: f32,
+    separable: bool,
+}
+
+/// A user filter that keeps the `Filter` contract (finite, 0 past the radius and for NaN/∞,
+/// exactly separable when it says so) with arbitrary radius and scale, possibly negative.
+impl Filter for Plugin {
+    fn radius(&self) -> [f32; 2] {
+        self.radius
+    }
+    fn eval(&self, x: f32, y: f32) -> f32 {
+        if self.separable {
+            return self.axis(0, x) * self.axis(1, y);
+        }
+        if outside(self.radius, x, y) {
+            return 0.0;
+        }
+        let v = self.value * (1.0 + x / self.radius[0] * 0.25 - y / self.radius[1]);
+        if v.is_finite() { v } else { 0.0 }
+    }
+    fn eval_1d(&self, axis: Axis, x: f32) -> Option<f32> {
+        self.separable.then(|| self.axis(axis.index(), x))
+    }
+}
+
+impl Plugin {
+    fn axis(&self, k: usize, t: f32) -> f32 {
+        if !(t.abs() <= self.radius[k]) {
+            return 0.0;
+        }
+        let u = t / self.radius[k];
+        let v = self.value.abs().sqrt()
+            * (1.0 - u * u)
+            * if k == 0 { self.value.signum() } else { 1.0 };
+        if v.is_finite() { v } else { 0.0 }
+    }
+}
+
+fn built<F: Filter + core::fmt::Debug>(name: &str, r: Result<F, Error>, ctx: &Ctx) {
+    match r {
+        Ok(f) => check_filter(name, &f, ctx),
+        Err(e) => assert!(
+            matches!(e, Error::OutOfRange { .. } | Error::NonFinite { .. }),
+            "{name}: unexpected error {e:?}"
+        ),
+    }
+}
+
+fn outside(f: [f32; 2], x: f32, y: f32) -> bool {
+    !(x.abs() <= f[0]) || !(y.abs() <= f[1])
+}
+
+/// `v` is within a few ulps of an edge of the 16 sampler cells over `[−r, r]`.
+fn on_cell_edge(v: f32, r: f32) -> bool {
+    let t = f64::from(v + r) / (2.0 * f64::from(r) / 16.0);
+    (t - t.round()).abs() <= 1e-4 * t.abs().max(1.0)
+}
+
+fn check_filter(name: &str, f: &dyn Filter, ctx: &Ctx) {
+    let r = f.radius();
+    assert!(
+        r.iter()
+            .all(|&v| v.is_finite() && v > 0.0 && v <= MAX_RADIUS),
+        "{name}: radius {r:?}"
+    );
+    let integral = f.integral();
+    assert!(integral.is_finite(), "{name}: integral {integral}");
+    let separable = f.is_separable();
+    let mut points = ctx.offsets.clone();
+    points.extend([[0.0, 0.0], [r[0], r[1]], [-r[0], r[1] * 0.5]]);
+    for &[x, y] in &points {
+        let v = f.eval(x, y);
+        assert!(v.is_finite(), "{name}: eval({x}, {y}) = {v}");
+        if outside(r, x, y) {
+            assert_eq!(v, 0.0, "{name}: eval({x}, {y}) = {v} past radius {r:?}");
+        }
+        if separable {
+            let ex = f
+                .eval_1d(Axis::X, x)
+                .expect("separable filters answer eval_1d everywhere");
+            let ey = f
+                .eval_1d(Axis::Y, y)
+                .expect("separable filters answer eval_1d everywhere");
+            assert!(
+                ex.is_finite() && ey.is_finite(),
+                "{name}: eval_1d({x}) = {ex}, ({y}) = {ey}"
+            );
+            assert_eq!(v, ex * ey, "{name}: eval({x}, {y}) = {v} ≠ {ex}·{ey}");
+        } else {
+            assert_eq!(
+                f.eval_1d(Axis::X, x),
+                None,
+                "{name}: eval_1d answers for a non-separable filter"
+            );
+        }
+    }
+    check_tables(name, f, ctx);
+}
+
+fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
+    let r = f.radius();
+    let valid = r.iter().all(|&v| v.is_finite() && v > 0.0);
+    match FilterTable::<16>::new(f, ctx.interp) {
+        Ok(t) => {
+            assert!(valid, "{name}: FilterTable accepted radius {r:?}");
+            assert_eq!(t.radius(), r);
+            assert!(
+                t.integral().is_finite(),
+                "{name}: table integral {}",
+                t.integral()
+            );
+            assert_eq!(t.is_separable(), f.is_separable());
+            let v = t.view();
+            for &[x, y] in &ctx.offsets {
+                let w = t.weight(x, y);
+                assert!(w.is_finite(), "{name}: table weight({x}, {y}) = {w}");
+                if outside(r, x, y) {
+                    assert_eq!(
+                        w, 0.0,
+                        "{name}: table weight({x}, {y}) = {w} past radius {r:?}"
+                    );
+                }
+                assert_eq!(w.to_bits(), v.weight(x, y).to_bits(), "{name}: view weight");
+                for axis in [Axis::X, Axis::Y] {
+                    let a = t.weight_1d(axis, x);
+                    assert_eq!(a.is_some(), t.is_separable());
+                    assert_eq!(a.map(f32::to_bits), v.weight_1d(axis, x).map(f32::to_bits));
+                    if let Some(a) = a {
+                        assert!(a.is_finite(), "{name}: weight_1d({x}) = {a}");
+                    }
+                }
+            }
+            let Footprint { d0, nx, len } = ctx.foot;
+            let mut out = vec![9.0f32; len];
+            let res = t.footprint(d0, nx, &mut out);
+            let ok = nx > 0 && len > 0 && len % nx == 0;
+            match res {
+                Ok(()) => {
+                    assert!(ok, "{name}: footprint accepted nx {nx}, len {len}");
+                    let mut via_view = vec![8.0f32; len];
+                    v.footprint(d0, nx, &mut via_view).unwrap();
+                    for (k, &w) in out.iter().enumerate() {
+                        let (i, j) = ((k % nx) as f32, (k / nx) as f32);
+                        let want = t.weight(d0[0] + i, d0[1] + j);
+                        assert!(w.is_finite(), "{name}: footprint weight {w}");
+                        assert_eq!(
+                            w, want,
+                            "{name}: footprint({d0:?}, {nx})[{k}] = {w}, weight gives {want}"
+                        );
+                        assert_eq!(w.to_bits(), via_view[k].to_bits(), "{name}: view footprint");
+                    }
+                }
+                Err(e) => {
+                    assert!(!ok, "{name}: footprint rejected nx {nx}, len {len}: {e:?}");
+                    assert!(
+                        matches!(e, Error::BufferLength { .. }),
+                        "{name}: footprint {e:?}"
+                    );
+                }
+            }
+        }
+        Err(e) => {
+            assert!(!valid, "{name}: FilterTable rejected radius {r:?}: {e:?}");
+            assert!(matches!(e, Error::OutOfRange { .. }), "{name}: {e:?}");
+        }
+    }
+    let sep = SeparableTable::<8>::new(f, ctx.interp);
+    assert_eq!(
+        sep.is_ok(),
+        valid && f.is_separable(),
+        "{name}: SeparableTable::new {sep:?}"
+    );
+    let t2 = Table2d::<8>::new(f, ctx.interp);
+    assert_eq!(t2.is_ok(), valid, "{name}: Table2d::new");
+    if let Ok(t2) = t2 {
+        for &[x, y] in &ctx.offsets {
+            let w = t2.weight(x, y);
+            assert!(
+                w.is_finite() && (!outside(r, x, y) || w == 0.0),
+                "{name}: Table2d weight({x}, {y}) = {w}"
+            );
+        }
+        assert!(t2.values().iter().flatten().all(|v| v.is_finite()));
+    }
+    match FilterSampler::<&dyn Filter, 16>::new(f) {
+        Ok(s) => {
+            assert!(valid, "{name}: FilterSampler accepted radius {r:?}");
+            // A support below ~1e-30 px² (plugin filters only: built-ins need 2⁻¹⁶ px) has a
+            // density beyond f32: pdf may be +∞ there (noted in the fuzz report, not a crash).
+            let tiny = f64::from(r[0]) * f64::from(r[1]) < 1e-30;
+            assert_eq!(s.radius(), r);
+            for &u in &ctx.us {
+                let fs = s.sample(u);
+                let [x, y] = fs.offset;
+                assert!(
+                    x.is_finite() && y.is_finite() && !outside(r, x, y),
+                    "{name}: sample({u:?}) offset {:?} outside radius {r:?}",
+                    fs.offset
+                );
+                assert!(
+                    fs.weight.is_finite(),
+                    "{name}: sample({u:?}) weight {}",
+                    fs.weight
+                );
+                let pdf = s.pdf(fs.offset);
+                assert!(
+                    pdf >= 0.0 && (pdf.is_finite() || tiny),
+                    "{name}: pdf({:?}) = {pdf}",
+                    fs.offset
+                );
+                // KNOWN BUG (reported): `sample` weights by the density of the cell it drew,
+                // but the returned offset can round onto the next cell's edge, where `pdf`
+                // reads the neighbour (0 next to a zero-mass cell). Tolerated only on an edge.
+                if fs.weight != 0.0 && pdf == 0.0 {
+                    assert!(
+                        on_cell_edge(x, r[0]) || on_cell_edge(y, r[1]),
+                        "{name}: sample {fs:?} has weight but pdf 0 (radius {r:?})"
+                    );
+                }
+            }
+            for &[x, y] in &ctx.offsets {
+                let pdf = s.pdf([x, y]);
+                assert!(
+                    pdf >= 0.0 && (pdf.is_finite() || tiny),
+                    "{name}: pdf({x}, {y}) = {pdf}"
+                );
+                if outside(r, x, y) {
+                    assert_eq!(pdf, 0.0, "{name}: pdf({x}, {y}) = {pdf} past radius");
+                }
+            }
+        }
+        Err(e) => {
+            assert!(!valid, "{name}: FilterSampler rejected radius {r:?}: {e:?}");
+            assert!(matches!(e, Error::OutOfRange { .. }), "{name}: {e:?}");
+        }
+    }
+}

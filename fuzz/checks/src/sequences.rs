@@ -1,0 +1,199 @@
+//! `nyquist::sequence`: every point set through the `Sequence` trait, any index, dimension and
+//! seed, plus the set-specific entry points.
+
+use nyquist::Error;
+use nyquist::sequence::{
+    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, SOBOL_DIMS, ScrambledHalton, Sequence,
+    Sobol, VanDerCorput, ZeroTwo, check_fill, sobol_u32,
+};
+
+use crate::{Bytes, in_unit, in_unit_f64};
+
+/// Sequences: `sample`/`sample_f64` in `[0, 1)`; `dim >= dims()` wraps to `dim % dims()`;
+/// `index >= point_count` wraps; `fill` writes exactly `out.len() / dims` points equal to
+/// `sample` bit for bit, or fails exactly as `check_fill` says; constructors reject `dims == 0`.
+pub fn sequences(data: &[u8]) {
+    let mut b = Bytes::new(data);
+    let dims = match b.u8() % 4 {
+        0 => b.below(8),
+        1 => b.below(1100),
+        2 => b.u32(),
+        _ => SOBOL_DIMS - 1 + b.below(2),
+    };
+    let index = if b.bool() {
+        u64::from(b.u16())
+    } else {
+        b.u64()
+    };
+    let dim = if b.bool() { b.below(64) } else { b.u32() };
+    let seed = b.u64();
+    let n = if b.bool() {
+        u64::from(b.u16())
+    } else {
+        b.u64()
+    };
+    let first = if b.bool() {
+        u64::MAX - u64::from(b.u8())
+    } else {
+        b.u64()
+    };
+    let fill_dims = b.below(12);
+    let len = b.below(96) as usize;
+
+    let check =
+        |name: &str, s: &dyn Sequence| check_sequence(name, s, index, dim, first, fill_dims, len);
+    check("VanDerCorput", &VanDerCorput);
+    built("Halton", dims, Halton::new(dims), &check);
+    built("HaltonZaremba", dims, HaltonZaremba::new(dims), &check);
+    built(
+        "ScrambledHalton",
+        dims,
+        ScrambledHalton::new(dims, seed),
+        &check,
+    );
+    built("Hammersley", dims, Hammersley::new(n, dims), &check);
+    built(
+        "HammersleyZaremba",
+        dims,
+        HammersleyZaremba::new(n, dims),
+        &check,
+    );
+    if Hammersley::new(n, dims.max(1)).is_ok() {
+        assert!(n > 0, "Hammersley::new accepted n = 0");
+    }
+    built("Sobol", dims, Sobol::new(dims), &check);
+    let scrambled = Sobol::with_scramble(dims, seed);
+    if let Ok(s) = &scrambled {
+        assert!(s.is_scrambled());
+        let v = s.sample_u32(index, dim);
+        let x = f64::from(s.sample(index, dim));
+        let exact = f64::from(v) / 4_294_967_296.0;
+        assert!(
+            (x - exact).abs() <= 2.0f64.powi(-24),
+            "Sobol::sample = {x} is not sample_u32 = {v} as a fraction"
+        );
+    }
+    built("Sobol::with_scramble", dims, scrambled, &check);
+    if let Ok(s) = Sobol::new(dims) {
+        assert!(!s.is_scrambled());
+        // Unscrambled: the table's value for the wrapped index and dimension.
+        assert_eq!(
+            s.sample_u32(index, dim),
+            sobol_u32(index as u32, dim % dims)
+        );
+    }
+    let _ = sobol_u32(index as u32, dim); // total for any dimension
+    let z = ZeroTwo::from_seed(seed);
+    check("ZeroTwo", &z);
+    let [u, v] = z.sample_2d(index as u32);
+    assert!(
+        in_unit(u) && in_unit(v),
+        "ZeroTwo::sample_2d({index}) = [{u}, {v}]"
+    );
+    let _ = z.sample_2d_u32(index as u32);
+}
+
+fn built<S: Sequence>(
+    name: &str,
+    dims: u32,
+    r: Result<S, Error>,
+    check: &dyn Fn(&str, &dyn Sequence),
+) {
+    match r {
+        Ok(s) => {
+            assert!(dims > 0, "{name}::new accepted dims = 0");
+            assert_eq!(s.dims(), dims, "{name}: dims()");
+            check(name, &s);
+        }
+        Err(e) => assert!(
+            matches!(
+                e,
+                Error::ZeroSize { .. }
+                    | Error::DimensionOutOfRange { .. }
+                    | Error::OutOfRange { .. }
+                    | Error::TooMany { .. }
+            ),
+            "{name}::new({dims}): unexpected error {e:?}"
+        ),
+    }
+}
+
+fn check_sequence(
+    name: &str,
+    s: &dyn Sequence,
+    index: u64,
+    dim: u32,
+    first: u64,
+    fill_dims: u32,
+    len: usize,
+) {
+    let d = s.dims();
+    assert!(d >= 1, "{name}: dims() = 0");
+    let x = s.sample(index, dim);
+    // KNOWN BUG (reported): Hammersley's first coordinate `(k + ½)/n` is narrowed to f32
+    // without a clamp, so for n ≥ 2²⁴ the last point gives exactly 1.0. Tolerated only there.
+    let known = name.starts_with("Hammersley")
+        && dim.is_multiple_of(d)
+        && x == 1.0
+        && s.point_count().is_some_and(|n| n >= 1 << 24);
+    assert!(
+        in_unit(x) || known,
+        "{name}.sample({index}, {dim}) = {x} (point count {:?})",
+        s.point_count()
+    );
+    let x64 = s.sample_f64(index, dim);
+    assert!(
+        in_unit_f64(x64),
+        "{name}.sample_f64({index}, {dim}) = {x64}"
+    );
+    assert_eq!(
+        x.to_bits(),
+        s.sample(index, dim % d).to_bits(),
+        "{name}: dimension {dim} must wrap to {}",
+        dim % d
+    );
+    if let Some(count) = s.point_count() {
+        assert!(count > 0, "{name}: point_count() = Some(0)");
+        assert_eq!(
+            x.to_bits(),
+            s.sample(index % count, dim).to_bits(),
+            "{name}: index {index} must wrap modulo {count}"
+        );
+    }
+    let mut out = vec![7.0f32; len];
+    let want = check_fill(d, s.point_count(), first, fill_dims, len);
+    // KNOWN BUG (reported; core is not ours to edit): the default `Sequence::fill` zips
+    // `(first..)` with the output chunks, and the range computes the successor of the last
+    // index it yields (one past the last point, as `zip` pulls the range first): with overflow
+    // checks on (fuzz and test builds) that panics when `first + points >= u64::MAX`. Skip
+    // exactly that case until it is fixed; delete this guard then.
+    if let Ok(n) = want
+        && first.checked_add(n).is_none_or(|end| end == u64::MAX)
+    {
+        return;
+    }
+    let got = s.fill(first, fill_dims, &mut out);
+    assert_eq!(got, want, "{name}.fill({first}, {fill_dims}, len {len})");
+    if let Ok(points) = got {
+        assert_eq!(
+            points,
+            (len / fill_dims as usize) as u64,
+            "{name}: fill count"
+        );
+        for (k, p) in out.chunks_exact(fill_dims as usize).enumerate() {
+            for (j, &v) in p.iter().enumerate() {
+                let want = s.sample(first + k as u64, j as u32);
+                assert_eq!(
+                    v.to_bits(),
+                    want.to_bits(),
+                    "{name}.fill({first}, {fill_dims}): point {k} dim {j} = {v}, sample gives {want}"
+                );
+            }
+        }
+    } else {
+        assert!(
+            out.iter().all(|&v| v == 7.0),
+            "{name}: a failed fill wrote to out"
+        );
+    }
+}
