@@ -102,24 +102,24 @@ pub fn samplers(data: &[u8]) {
             run("HaltonSampler", spp, r, &args)
         }
         4 => {
-            // KNOWN BUG (reported): `HammersleySampler` computes `k = px · H · spp + …` in
-            // unchecked u64 (H = height padded to 2^j); `new` accepts sizes where that passes
-            // 2⁶⁴ and `start_pixel_sample` overflows (a panic with overflow checks on; a wrap,
-            // i.e. repeated points, in release). Skip those inputs until `new` rejects them.
-            let h = if resolution[1] == 0 {
-                0
-            } else {
-                u128::from(resolution[1]).next_power_of_two()
-            };
-            let widest = u128::from(args.pixel[0].max(resolution[0])) + 4;
-            if widest * h * u128::from(spp) >= 1 << 64 {
-                return;
-            }
             let r = HammersleySampler::new(resolution, spp, flag, seed);
             if resolution.contains(&0) {
                 assert!(
                     r.is_err(),
                     "HammersleySampler accepted resolution {resolution:?}"
+                );
+            }
+            // N = width · H · spp (H the height padded to a power of two) must fit a u64.
+            let h = u128::from(resolution[1].max(1)).next_power_of_two();
+            if !resolution.contains(&0)
+                && u128::from(resolution[0]) * h * u128::from(spp) >= 1 << 64
+            {
+                assert_eq!(
+                    r.as_ref().err(),
+                    Some(&Error::TooMany {
+                        what: "width × height × spp"
+                    }),
+                    "HammersleySampler accepted {resolution:?} × {spp}"
                 );
             }
             run("HammersleySampler", spp, r, &args)
