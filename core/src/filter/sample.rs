@@ -165,6 +165,10 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
             .clamp(-self.radius[0], self.radius[0]);
         let y = (-self.radius[1] + (j as f32 + fy) * self.cell[1])
             .clamp(-self.radius[1], self.radius[1]);
+        // Rounding can put the offset on the next cell's edge, where `pdf` would read that
+        // cell: step it back into the cell it was drawn from (found by the fuzzer).
+        let x = snap_into_cell(x, i, self.radius[0], self.cell[0]);
+        let y = snap_into_cell(y, j, self.radius[1], self.cell[1]);
         let pdf = px * py / (self.cell[0] * self.cell[1]);
         let w = self.filter.eval(x, y) / pdf;
         FilterSample {
@@ -188,8 +192,10 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
         if !(self.nonzero && x.abs() <= rx && y.abs() <= ry) {
             return 0.0;
         }
-        let cell = |v: f32, r: f32, h: f32| (((v + r) / h) as usize).min(N - 1);
-        let (i, j) = (cell(x, rx, self.cell[0]), cell(y, ry, self.cell[1]));
+        let (i, j) = (
+            cell_of::<N>(x, rx, self.cell[0]),
+            cell_of::<N>(y, ry, self.cell[1]),
+        );
         let mass = |cdf: &[f32; N], k: usize| cdf[k] - if k == 0 { 0.0 } else { cdf[k - 1] };
         mass(&self.marginal, j) * mass(&self.conditional[j], i) / (self.cell[0] * self.cell[1])
     }
@@ -203,6 +209,43 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
     pub fn filter(&self) -> &F {
         &self.filter
     }
+}
+
+/// The table cell `pdf` reads for offset `v` along an axis of radius `r` and cell width `h`.
+#[inline(always)]
+fn cell_of<const N: usize>(v: f32, r: f32, h: f32) -> usize {
+    (((v + r) / h) as usize).min(N - 1)
+}
+
+/// `v` moved to the nearest value that [`cell_of`] maps to cell `k`, where `v` was drawn (so
+/// only rounding can have moved it out, and only to a neighbouring cell): a bisection between
+/// `v` and the cell's centre, which `cell_of` maps to `k`. `v` itself when it already maps there.
+#[inline]
+fn snap_into_cell(v: f32, k: usize, r: f32, h: f32) -> f32 {
+    // No cap: the drawn `k` is at most N − 1, and the top cell's own edge is `r`.
+    let cell = |x: f32| cell_of::<{ usize::MAX }>(x, r, h);
+    let c = cell(v);
+    if c == k {
+        return v;
+    }
+    let centre = -r + (k as f32 + 0.5) * h;
+    if cell(centre) != k {
+        return v;
+    }
+    // Invariant: `inside` maps to k, `outside` does not.
+    let (mut inside, mut outside) = (centre, v);
+    for _ in 0..64 {
+        let mid = inside + (outside - inside) * 0.5;
+        if mid == inside || mid == outside {
+            break;
+        }
+        if cell(mid) == k {
+            inside = mid;
+        } else {
+            outside = mid;
+        }
+    }
+    inside
 }
 
 /// Inverts a CDF (`cdf[N − 1] = 1`, non-decreasing) at `u ∈ [0, 1)`: the cell `k` with

@@ -1075,3 +1075,28 @@ proptest! {
         prop_assert!(fs.offset[0].abs() <= rx && fs.offset[1].abs() <= ry);
     }
 }
+
+/// Found by the fuzzer: a sample drawn in one cell could round onto the next cell's edge, where
+/// `pdf` read the neighbour (empty next to a Gaussian's far tail) — a sample with weight but no
+/// density. Every sample with weight now has `pdf(offset) > 0`, over a dense grid of `u`.
+#[test]
+fn sampled_offsets_stay_in_the_cell_they_were_drawn_from() {
+    for (radius, sigma) in [
+        ([44.820_313f32, 0.5f32], 0.3f32),
+        ([7.3, 3.1], 0.4),
+        ([2.0, 2.0], 0.5),
+    ] {
+        let s: FilterSampler<Gaussian> =
+            FilterSampler::new(Gaussian::with_sigma(radius, sigma).unwrap()).unwrap();
+        for a in 0..=512u32 {
+            for b in [0.0f32, 0.25, 0.5, 0.999_999] {
+                let u = [a as f32 / 512.0, b];
+                let fs = s.sample(u);
+                assert!(
+                    fs.weight == 0.0 || s.pdf(fs.offset) > 0.0,
+                    "{radius:?} σ={sigma} u={u:?}: {fs:?} has weight, pdf 0"
+                );
+            }
+        }
+    }
+}
