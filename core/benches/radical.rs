@@ -2,7 +2,9 @@
 //! and base at run time), on the same random indices below 10⁷ and the same dimensions.
 mod cpu_time;
 
-use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{
+    BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
+};
 use nyquist::radical::{
     PRIMES, fill_radical_inverse, folded_radical_inverse, radical_inverse,
     scrambled_radical_inverse,
@@ -84,6 +86,28 @@ fn run(out: &mut [f32], idx: &[u64], f: impl Fn(u32, u64) -> f32) {
     }
 }
 
+/// Ours value by value (`name`) and the two digit-loop peers, on the same indices and dims.
+fn per_value_and_peers(
+    g: &mut BenchmarkGroup<'_, cpu_time::BenchClock>,
+    name: &str,
+    out: &mut [f32],
+    idx: &[u64],
+) {
+    g.bench_function(name, |b| {
+        b.iter(|| run(out, black_box(idx), radical_inverse))
+    });
+    g.bench_function("const_base_loop", |b| {
+        b.iter(|| run(out, black_box(idx), ri_const_dispatch))
+    });
+    g.bench_function("runtime_base_loop", |b| {
+        b.iter(|| {
+            run(out, black_box(idx), |d, a| {
+                ri_runtime(u64::from(PRIMES[d as usize]), a)
+            })
+        })
+    });
+}
+
 fn halton(c: &mut Criterion<cpu_time::BenchClock>) {
     // Sanity: the const-generic table matches the primes.
     assert_eq!(PRIMES[63], 311);
@@ -92,19 +116,7 @@ fn halton(c: &mut Criterion<cpu_time::BenchClock>) {
     let mut out = vec![0.0f32; DIMS * INDICES];
     let mut g = c.benchmark_group("halton_f32_dims0-63");
     g.throughput(Throughput::Elements((DIMS * INDICES) as u64));
-    g.bench_function("nyquist", |b| {
-        b.iter(|| run(&mut out, black_box(&idx), radical_inverse))
-    });
-    g.bench_function("const_base_loop", |b| {
-        b.iter(|| run(&mut out, black_box(&idx), ri_const_dispatch))
-    });
-    g.bench_function("runtime_base_loop", |b| {
-        b.iter(|| {
-            run(&mut out, black_box(&idx), |d, a| {
-                ri_runtime(u64::from(PRIMES[d as usize]), a)
-            })
-        })
-    });
+    per_value_and_peers(&mut g, "nyquist", &mut out, &idx);
     g.finish();
 
     // Whole points: 256 consecutive indices from an offset below 10⁷, all 64 dimensions, through
@@ -121,19 +133,7 @@ fn halton(c: &mut Criterion<cpu_time::BenchClock>) {
                 .unwrap()
         })
     });
-    g.bench_function("nyquist_random_access", |b| {
-        b.iter(|| run(&mut out, black_box(&consecutive), radical_inverse))
-    });
-    g.bench_function("const_base_loop", |b| {
-        b.iter(|| run(&mut out, black_box(&consecutive), ri_const_dispatch))
-    });
-    g.bench_function("runtime_base_loop", |b| {
-        b.iter(|| {
-            run(&mut out, black_box(&consecutive), |d, a| {
-                ri_runtime(u64::from(PRIMES[d as usize]), a)
-            })
-        })
-    });
+    per_value_and_peers(&mut g, "nyquist_random_access", &mut out, &consecutive);
     g.finish();
 
     // Base 2 over random indices below 2³² (a renderer's range), random access and a contiguous

@@ -7,45 +7,17 @@
 //! `add_sample_cpu` in the thread's CPU time (`CLOCK_THREAD_CPUTIME_ID`), which other processes
 //! on a shared machine do not inflate. Per-sample time = reported time / 4096 (throughput line).
 
-use criterion::measurement::{Measurement, ValueFormatter, WallTime};
+/// The core benches' clock (thread CPU time unless `NYQUIST_BENCH_CLOCK=wall`), shared.
+#[path = "../../core/benches/cpu_time/mod.rs"]
+mod cpu_time;
+
+use criterion::measurement::Measurement;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::filter::{Boxcar, Filter, Mitchell};
 use nyquist_film::{Film, FilmConfig, render_tiles};
 use std::hint::black_box;
 
 const SAMPLES: usize = 4096;
-
-/// The calling thread's CPU time in nanoseconds.
-struct ThreadCpu;
-
-fn thread_cpu_ns() -> u64 {
-    let t = rustix::time::clock_gettime(rustix::time::ClockId::ThreadCPUTime);
-    t.tv_sec as u64 * 1_000_000_000 + t.tv_nsec as u64
-}
-
-impl Measurement for ThreadCpu {
-    type Intermediate = u64;
-    type Value = u64;
-    fn start(&self) -> u64 {
-        thread_cpu_ns()
-    }
-    fn end(&self, i: u64) -> u64 {
-        thread_cpu_ns().saturating_sub(i)
-    }
-    fn add(&self, a: &u64, b: &u64) -> u64 {
-        a + b
-    }
-    fn zero(&self) -> u64 {
-        0
-    }
-    fn to_f64(&self, v: &u64) -> f64 {
-        *v as f64
-    }
-    fn formatter(&self) -> &dyn ValueFormatter {
-        // Nanoseconds, like wall time.
-        WallTime.formatter()
-    }
-}
 
 fn positions() -> Vec<[f32; 2]> {
     let mut rng = nyquist::rng::default_rng(1);
@@ -96,7 +68,7 @@ fn add_sample(c: &mut Criterion) {
     add_sample_group(c, "add_sample");
 }
 
-fn add_sample_cpu(c: &mut Criterion<ThreadCpu>) {
+fn add_sample_cpu(c: &mut Criterion<cpu_time::BenchClock>) {
     add_sample_group(c, "add_sample_cpu");
 }
 
@@ -145,7 +117,7 @@ fn zoneplate_render(c: &mut Criterion) {
 criterion_group!(wall, add_sample, zoneplate_render);
 criterion_group! {
     name = cpu;
-    config = Criterion::default().with_measurement(ThreadCpu);
+    config = cpu_time::config();
     targets = add_sample_cpu
 }
 criterion_main!(wall, cpu);

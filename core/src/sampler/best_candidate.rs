@@ -116,7 +116,8 @@ impl BestCandidateSampler {
         })
     }
 
-    fn value(&self, dim: u32) -> f32 {
+    #[inline]
+    fn sample(&self, dim: u32) -> f32 {
         let row = self.index % self.spp;
         if dim >= 5 {
             // Independent values: one hash of (pixel, seed) ⊕ index ⊕ dimension.
@@ -149,25 +150,7 @@ impl Sampler for BestCandidateSampler {
         self.dim = dim;
     }
 
-    #[inline(always)]
-    fn get_1d(&mut self) -> f32 {
-        let d = self.dim;
-        self.dim = self.dim.wrapping_add(1);
-        self.value(d)
-    }
-
-    #[inline(always)]
-    fn get_2d(&mut self) -> [f32; 2] {
-        let d = self.dim;
-        self.dim = self.dim.wrapping_add(2);
-        [self.value(d), self.value(d.wrapping_add(1))]
-    }
-
-    #[inline(always)]
-    fn get_pixel_2d(&mut self) -> [f32; 2] {
-        self.dim = self.dim.max(2);
-        [self.value(0), self.value(1)]
-    }
+    super::global_point_dimensions!();
 }
 
 #[cfg(test)]

@@ -27,8 +27,8 @@
 
 /// `get_1d`, `get_2d` and `get_pixel_2d` for samplers that read dimension `d` of one point
 /// through `self.sample(d)` and keep their next dimension in `self.dim` (the global Halton,
-/// Hammersley and Sobol samplers): dimensions are consumed in order, and the pixel sample is
-/// always dimensions 0 and 1.
+/// Hammersley and Sobol samplers, and best-candidate's table rows): dimensions are consumed in
+/// order, and the pixel sample is always dimensions 0 and 1.
 macro_rules! global_point_dimensions {
     () => {
         #[inline(always)]

@@ -52,7 +52,6 @@ pub struct StratifiedSampler {
     pixel: [u32; 2],
     /// `hash(pixel, seed)`, cached across samples of one pixel.
     pixel_key: u64,
-    /// The permutation keys of dimensions 2 (time) and 3 (lens) for the current pixel.
     /// The time and lens permutations of the current pixel (dimensions 2 and 3), built once
     /// per pixel.
     camera_perms: [Permutation; 2],
