@@ -191,10 +191,27 @@ impl SobolSampler {
     /// assert_eq!(all, [0, 1, 2, 3]);
     /// ```
     pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u32 {
-        let m = self.m;
-        let s = sample_index % self.spp;
-        let high = if 2 * m >= 32 { 0 } else { s << (2 * m) };
-        high | apply_inverse(&self.inverse, self.want(pixel) ^ have(high, m))
+        let (_, high) = self.sample_bits(sample_index);
+        high | apply_inverse(&self.inverse, self.want(pixel) ^ have(high, self.m))
+    }
+
+    /// The sample's number in the pixel (`sample_index mod spp`) and the index bits it sets
+    /// above the pixel's `2m` (0 when `2m ≥ 32`).
+    #[inline(always)]
+    fn sample_bits(&self, sample_index: u32) -> (u32, u32) {
+        let s = if sample_index < self.spp {
+            sample_index
+        } else {
+            sample_index % self.spp
+        };
+        (
+            s,
+            if 2 * self.m >= 32 {
+                0
+            } else {
+                s << (2 * self.m)
+            },
+        )
     }
 
     /// The pixel's low coordinate bits, interleaved as the index search wants them.
@@ -264,16 +281,7 @@ impl Sampler for SobolSampler {
             self.pixel = pixel;
             self.pixel_low = apply_inverse(&self.inverse, self.want(pixel));
         }
-        let s = if sample_index < self.spp {
-            sample_index
-        } else {
-            sample_index % self.spp
-        };
-        let high = if 2 * self.m >= 32 {
-            0
-        } else {
-            s << (2 * self.m)
-        };
+        let (s, high) = self.sample_bits(sample_index);
         let mut low = self.pixel_low;
         let mut bits = s;
         while bits != 0 {

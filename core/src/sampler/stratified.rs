@@ -174,11 +174,7 @@ impl StratifiedSampler {
                     [bits(22), bits(1)]
                 }
             }
-            Jitter::Jittered => {
-                let h = mix64(self.sample_key ^ u64::from(dim).wrapping_mul(JITTER_STEP));
-                [unit_f32((h >> 32) as u32), unit_f32(h as u32)]
-            }
-            Jitter::Centered => [0.5, 0.5],
+            _ => jitter_pair(self.sample_key, dim, self.jitter),
         }
     }
 
@@ -235,12 +231,12 @@ fn lhs_value(perm: &Permutation, j: u32, inv_n: f32, offset: f32) -> f32 {
     below_one((perm.apply(j) as f32 + offset) * inv_n)
 }
 
-/// Jitters for point `j` of an array keyed by `key` (two per hash).
+/// Two jitters from one hash of `key` and `k` (a sample's dimension, or an array's point).
 #[inline]
-fn lhs_jitters(key: u64, j: u32, jitter: Jitter) -> [f32; 2] {
+fn jitter_pair(key: u64, k: u32, jitter: Jitter) -> [f32; 2] {
     match jitter {
         Jitter::Jittered => {
-            let h = mix64(key ^ u64::from(j).wrapping_mul(JITTER_STEP));
+            let h = mix64(key ^ u64::from(k).wrapping_mul(JITTER_STEP));
             [unit_f32((h >> 32) as u32), unit_f32(h as u32)]
         }
         Jitter::Centered => [0.5, 0.5],
@@ -293,7 +289,7 @@ impl Sampler for StratifiedSampler {
         let key = array_key(self.sample_key, dim, 0x6c68_7331);
         let (perm, inv_n) = (Permutation::new(n, key as u32), 1.0 / n as f32);
         for (j, x) in (0..n).zip(out) {
-            *x = lhs_value(&perm, j, inv_n, lhs_jitters(key, j, self.jitter)[0]);
+            *x = lhs_value(&perm, j, inv_n, jitter_pair(key, j, self.jitter)[0]);
         }
     }
 
@@ -308,7 +304,7 @@ impl Sampler for StratifiedSampler {
         let py = Permutation::new(n, (key >> 32) as u32);
         let inv_n = 1.0 / n as f32;
         for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
-            let [ox, oy] = lhs_jitters(key, j, self.jitter);
+            let [ox, oy] = jitter_pair(key, j, self.jitter);
             p[0] = lhs_value(&px, j, inv_n, ox);
             p[1] = lhs_value(&py, j, inv_n, oy);
         }
