@@ -85,16 +85,6 @@ fn bench_stratified_2d(c: &mut Criterion<cpu_time::BenchClock>) {
     g.bench_function("peer_pbrt_v3_stratified_2d", |b| {
         b.iter(|| pbrt_stratified_2d(&mut buf, black_box(nx), ny, &mut rng))
     });
-    let mut rng = default_rng(1);
-    g.bench_function("floor_pcg32_one_draw_per_point", |b| {
-        b.iter(|| {
-            let mut acc = 0u32;
-            for _ in 0..black_box(nx) * ny {
-                acc ^= rng.next_u32();
-            }
-            acc
-        })
-    });
     g.bench_function("nyquist_stratified_2d_centered", |b| {
         b.iter(|| stratified_2d(&mut buf, black_box(nx), ny, Jitter::Centered, &mut rng).unwrap())
     });

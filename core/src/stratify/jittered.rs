@@ -2,8 +2,8 @@
 
 use rand_core::Rng;
 
-use super::Strata;
-use crate::Error;
+use super::{Strata, place};
+use crate::{Error, hash};
 
 /// Where a stratified sample sits inside its stratum.
 ///
@@ -67,11 +67,15 @@ pub fn stratified_1d<R: Rng + ?Sized>(
     Ok(())
 }
 
+/// Points per block of a row whose jitter words are hashed before they are placed.
+const HASH_BLOCK: usize = 16;
+
 /// Fills `out` with one point per cell of an `nx × ny` grid over `[0, 1)²`, as
 /// `[x0, y0, x1, y1, …]`, cell `(i, j)` (column `i`, row `j`) at point `j · nx + i`.
-/// `out.len()` must be exactly `2 · nx · ny`. Values are in `[0, 1)`. Jittered points cost one
-/// 32-bit generator draw each: 16 jitter bits per axis (`22 − ⌈log₂ n⌉` when fewer), i.e. a
-/// jitter resolution of `2⁻¹⁶` of a cell. Allocates: no.
+/// `out.len()` must be exactly `2 · nx · ny`. Values are in `[0, 1)`. Jittered points take one
+/// 64-bit draw from `rng` per call, as the key of a WyRand stream ([`hash::wyrand`])
+/// whose word `p` jitters point `p`: `22 − ⌈log₂ n⌉` jitter bits per axis (as
+/// [`stratified_1d`]), 24 beyond `2²²` strata. Allocates: no.
 ///
 /// # Errors
 /// [`Error::ZeroSize`] if `nx` or `ny` is 0; [`Error::TooMany`] if `2 · nx · ny` overflows
@@ -120,46 +124,67 @@ pub fn stratified_2d<R: Rng + ?Sized>(
     }
     let (sx, sy) = (Strata::new(nx), Strata::new(ny));
     let (points, _) = out.as_chunks_mut::<2>();
-    let mut points = points.iter_mut();
     match jitter {
         Jitter::Jittered => {
-            // One 32-bit draw per point: x takes the high 16 jitter bits, y the low 16 (fewer
-            // when an axis has more than 64 strata, see `Strata::jitter_bits`); the jitter's
-            // missing low bits are zero. Written as masks on the fixed-point numerators so the
-            // loop is a handful of integer operations per point.
-            let (bx, by) = (sx.jitter_bits().min(16), sy.jitter_bits().min(16));
-            // x: bits 31..32-bx of r land at bits jitter_bits_x..jitter_bits_x-bx+1.
-            let shr_x = 31 - sx.jitter_bits();
-            let mask_x = ((1u32 << bx) - 1) << (sx.jitter_bits() - bx + 1);
-            // y: bits by-1..0 of r land at bits jitter_bits_y..jitter_bits_y-by+1.
-            let shl_y = sy.jitter_bits() - by + 1;
-            let mask_y = ((1u32 << by) - 1) << shl_y;
+            // One 64-bit key from the caller's generator; point p's jitter is word p of the
+            // WyRand stream with that key: x from its high 32 bits, y from the low 32. The
+            // words have no serial dependency, so a block of them is hashed and then placed by
+            // a loop that vectorises.
+            let key = rng.next_u64();
             if sx.is_exact() && sy.is_exact() {
+                // The top `jitter_bits` bits of each half land at bits `jitter_bits ..= 1` of
+                // the fixed-point numerator (bit 0 is the always-set half step).
+                let (shr_x, shr_y) = (31 - sx.jitter_bits(), 31 - sy.jitter_bits());
+                let mask_x = ((1u32 << sx.jitter_bits()) - 1) << 1;
+                let mask_y = ((1u32 << sy.jitter_bits()) - 1) << 1;
                 let (scale_x, scale_y) = (sx.scale(), sy.scale());
-                for j in 0..ny {
+                let place = |i: u32, base_y: u32, w: u64| {
+                    let x = sx.base(i) | (((w >> 32) as u32 >> shr_x) & mask_x);
+                    let y = base_y | ((w as u32 >> shr_y) & mask_y);
+                    // Numerators are below 2²³: the signed conversion is exact and vectorises.
+                    [x as i32 as f32 * scale_x, y as i32 as f32 * scale_y]
+                };
+                let mut p = 0u64;
+                for (j, row) in (0..ny).zip(points.chunks_exact_mut(nx as usize)) {
                     let base_y = sy.base(j);
-                    for (i, p) in (0..nx).zip(&mut points) {
-                        let r = rng.next_u32();
-                        let x = sx.base(i) | ((r >> shr_x) & mask_x);
-                        let y = base_y | ((r << shl_y) & mask_y);
-                        *p = [x as f32 * scale_x, y as f32 * scale_y];
+                    let (blocks, rest) = row.as_chunks_mut::<HASH_BLOCK>();
+                    let mut i0 = 0u32;
+                    for block in blocks {
+                        let mut words = [0u64; HASH_BLOCK];
+                        for (k, w) in (0u64..).zip(&mut words) {
+                            *w = hash::wyrand(key, p + k);
+                        }
+                        for k in 0..HASH_BLOCK {
+                            block[k] = place(i0 + k as u32, base_y, words[k]);
+                        }
+                        i0 += HASH_BLOCK as u32;
+                        p += HASH_BLOCK as u64;
+                    }
+                    for (i, q) in (i0..).zip(rest) {
+                        *q = place(i, base_y, hash::wyrand(key, p));
+                        p += 1;
                     }
                 }
             } else {
-                for j in 0..ny {
-                    for (i, p) in (0..nx).zip(&mut points) {
-                        let r = rng.next_u32();
-                        let jx = (r >> shr_x & mask_x) >> 1;
-                        let jy = (r << shl_y & mask_y) >> 1;
-                        *p = [sx.jittered(i, jx), sy.jittered(j, jy)];
+                // More than 2²² strata on an axis: 24 jitter bits per axis, placed and checked.
+                let mut p = 0u64;
+                for (j, row) in (0..ny).zip(points.chunks_exact_mut(nx as usize)) {
+                    for (i, q) in (0..nx).zip(row) {
+                        let w = hash::wyrand(key, p);
+                        p += 1;
+                        let (jx, jy) = ((w >> 40) as u32, (w as u32) >> 8);
+                        *q = [
+                            place(i, jx as f32 * (1.0 / 16_777_216.0), nx, sx.inv()),
+                            place(j, jy as f32 * (1.0 / 16_777_216.0), ny, sy.inv()),
+                        ];
                     }
                 }
             }
         }
         Jitter::Centered => {
-            for j in 0..ny {
+            for (j, row) in (0..ny).zip(points.chunks_exact_mut(nx as usize)) {
                 let y = sy.centre(j);
-                for (i, p) in (0..nx).zip(&mut points) {
+                for (i, p) in (0..nx).zip(row) {
                     *p = [sx.centre(i), y];
                 }
             }
@@ -239,6 +264,29 @@ mod tests {
             stratified_1d(&mut [], Jitter::Centered, &mut default_rng(0)),
             Err(Error::ZeroSize { what: "samples" })
         );
+    }
+
+    #[test]
+    fn jittered_2d_takes_one_key_and_uses_the_full_jitter_resolution() {
+        // One u64 per call, whatever the grid: the next draw is the caller's third u32.
+        let mut rng = default_rng(4);
+        let mut pts = std::vec![0.0f32; 2 * 5 * 3];
+        stratified_2d(&mut pts, 5, 3, Jitter::Jittered, &mut rng).unwrap();
+        let mut fresh = default_rng(4);
+        fresh.next_u64();
+        assert_eq!(rng.next_u32(), fresh.next_u32());
+        // Point p's jitter is WyRand word p of that key, at 22 − ⌈log₂ n⌉ bits per axis: for a
+        // single cell the value is exactly (2·top22 + 1)/2²³, top22 the top 22 bits of the word's half.
+        let key = default_rng(4).next_u64();
+        let mut one = [0.0f32; 2];
+        stratified_2d(&mut one, 1, 1, Jitter::Jittered, &mut default_rng(4)).unwrap();
+        let w = hash::wyrand(key, 0);
+        let expect = |half: u32| (((half >> 10) << 1) | 1) as f32 / 8_388_608.0;
+        assert_eq!(one, [expect((w >> 32) as u32), expect(w as u32)]);
+        // Jitters below a 2⁻¹⁶ cell step occur (the old 16-bit split could not make them).
+        let mut fine = std::vec![0.0f32; 2 * 4 * 4];
+        stratified_2d(&mut fine, 4, 4, Jitter::Jittered, &mut default_rng(8)).unwrap();
+        assert!(fine.iter().any(|&v| (v * 4.0 * 65_536.0).fract() != 0.0));
     }
 
     #[test]

@@ -111,6 +111,12 @@ impl Strata {
         }
     }
 
+    /// `fl(1/n)`, for the checked route ([`place`]).
+    #[inline(always)]
+    pub(crate) fn inv(&self) -> f32 {
+        self.inv
+    }
+
     /// Whether the exact fixed-point route applies (`n ≤ 2²²`).
     #[inline(always)]
     pub(crate) fn is_exact(&self) -> bool {
