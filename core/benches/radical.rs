@@ -6,7 +6,7 @@ use criterion::{
     BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
 };
 use nyquist::radical::{
-    PRIMES, fill_radical_inverse, folded_radical_inverse, radical_inverse,
+    PRIMES, fill_radical_inverse, folded_radical_inverse, radical_inverse, radical_inverse_at,
     scrambled_radical_inverse,
 };
 use nyquist::sequence::{Halton, Sequence};
@@ -96,6 +96,14 @@ fn per_value_and_peers(
     g.bench_function(name, |b| {
         b.iter(|| run(out, black_box(idx), radical_inverse))
     });
+    // The same values a dimension at a time over the batch of indices (dimension-major).
+    g.bench_function(format!("{name}_batch_per_dim"), |b| {
+        b.iter(|| {
+            for (dim, xs) in out.chunks_exact_mut(idx.len()).enumerate() {
+                radical_inverse_at(dim as u32, black_box(idx), xs).unwrap();
+            }
+        })
+    });
     g.bench_function("const_base_loop", |b| {
         b.iter(|| run(out, black_box(idx), ri_const_dispatch))
     });
@@ -150,6 +158,9 @@ fn halton(c: &mut Criterion<cpu_time::BenchClock>) {
                 *x = radical_inverse(0, a);
             }
         })
+    });
+    g.bench_function("nyquist_batch", |b| {
+        b.iter(|| radical_inverse_at(0, black_box(&small), &mut out).unwrap())
     });
     g.bench_function("nyquist_fill", |b| {
         b.iter(|| fill_radical_inverse(0, black_box(123_456_789), &mut out))

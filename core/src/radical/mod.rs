@@ -32,8 +32,8 @@
 
 mod primes;
 
-use crate::hash;
 use crate::math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};
+use crate::{Error, hash};
 use primes::PRIME_TABLE;
 pub use primes::PRIMES;
 
@@ -478,7 +478,13 @@ pub(crate) fn ratio_f64(num: u128, den: u128) -> f64 {
 /// exact), clamped below 1. Simple enough for the compiler to vectorise over a run of indices.
 #[inline(always)]
 fn base2_u32(a: u32) -> f32 {
-    (a.reverse_bits() as f32 * (1.0 / 4_294_967_296.0)).min(ONE_MINUS_EPSILON)
+    let x = a.reverse_bits() as f32 * (1.0 / 4_294_967_296.0);
+    // Not NaN, so a plain comparison (one `minps` when vectorised) is the clamp.
+    if x < ONE_MINUS_EPSILON {
+        x
+    } else {
+        ONE_MINUS_EPSILON
+    }
 }
 
 /// Φ_b(a), the radical inverse of `a` in base `b = prime(dim)`, as an `f32` in `[0, 1)`.
@@ -519,6 +525,72 @@ pub fn radical_inverse(dim: u32, a: u64) -> f32 {
     }
     let (num, den) = phi_fraction(d, a);
     fraction_f32(num, den, 0, false)
+}
+
+/// Φ_b(a) for each index of `indices`, written to the matching entry of `out`: bit for bit what
+/// [`radical_inverse`] returns for each, for a batch of arbitrary (not consecutive) indices in
+/// one dimension, as a wavefront renderer asks for them. The per-base constants are loaded once;
+/// base 2 over indices below 2³² runs as a vectorised loop.
+///
+/// `out` may be longer than `indices`; its entries past `indices.len()` are left untouched.
+/// `dim` wraps modulo 1024.
+///
+/// # Errors
+/// [`Error::BufferTooShort`] if `out` is shorter than `indices`.
+///
+/// ```
+/// use nyquist::radical::{radical_inverse, radical_inverse_at};
+/// let indices = [7u64, 123_456, 3, 1 << 40];
+/// let mut out = [0.0f32; 4];
+/// radical_inverse_at(5, &indices, &mut out).unwrap();
+/// assert!((0..4).all(|i| out[i] == radical_inverse(5, indices[i])));
+/// assert!(radical_inverse_at(5, &indices, &mut [0.0; 3]).is_err());
+/// ```
+pub fn radical_inverse_at(dim: u32, indices: &[u64], out: &mut [f32]) -> Result<(), Error> {
+    let Some(out) = out.get_mut(..indices.len()) else {
+        return Err(Error::BufferTooShort {
+            needed: indices.len(),
+            actual: out.len(),
+        });
+    };
+    let d = (dim % PRIME_COUNT) as usize;
+    if d == 0 {
+        // Runs of 32-bit indices (checked a block at a time, so both loops stay branch-free
+        // and vectorise) take the 32-bit reversal; a block with a wider index goes value by
+        // value.
+        const BLOCK: usize = 64;
+        for (xs, idx) in out.chunks_mut(BLOCK).zip(indices.chunks(BLOCK)) {
+            // Narrowed first (with the high words ORed together on the way), so the reversal
+            // runs four 32-bit lanes at a time.
+            let mut low = [0u32; BLOCK];
+            let mut high = 0u64;
+            for (l, &a) in low.iter_mut().zip(idx) {
+                *l = a as u32;
+                high |= a;
+            }
+            if high >> 32 == 0 {
+                for (x, &l) in xs.iter_mut().zip(&low) {
+                    *x = base2_u32(l);
+                }
+            } else {
+                for (x, &a) in xs.iter_mut().zip(idx) {
+                    *x = radical_inverse(0, a);
+                }
+            }
+        }
+        return Ok(());
+    }
+    let fast = &FAST[d];
+    let big = u64::from(fast.big);
+    for (x, &a) in out.iter_mut().zip(indices) {
+        *x = if a < big {
+            phi_fast(fast, a)
+        } else {
+            let (num, den) = phi_fraction(d, a);
+            fraction_f32(num, den, 0, false)
+        };
+    }
+    Ok(())
 }
 
 /// Φ_b(a) for `a < b^k` (so `a < 2³²`): the reversed digits `R = Σ e_j·b^j` (`e_j` the digits

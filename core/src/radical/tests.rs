@@ -358,3 +358,45 @@ proptest! {
         }
     }
 }
+
+proptest! {
+    #[test]
+    fn batch_matches_random_access(
+        dim in 0u32..2048,
+        indices in proptest::collection::vec(
+            prop_oneof![0u64..10_000_000, any::<u32>().prop_map(u64::from), any::<u64>()],
+            0..200,
+        ),
+        extra in 0usize..3,
+    ) {
+        let mut out = std::vec![-1.0f32; indices.len() + extra];
+        radical_inverse_at(dim, &indices, &mut out).unwrap();
+        for (i, &a) in indices.iter().enumerate() {
+            prop_assert_eq!(out[i].to_bits(), radical_inverse(dim, a).to_bits());
+        }
+        // Entries past the indices are untouched.
+        prop_assert!(out[indices.len()..].iter().all(|&x| x == -1.0));
+    }
+}
+
+#[test]
+fn batch_base2_mixes_32_bit_and_wide_blocks() {
+    // 64-index blocks: all below 2³² (the vectorised path), then one with a wide index.
+    let mut indices: std::vec::Vec<u64> =
+        (0..200u64).map(|i| crate::hash::mix64(i) >> 32).collect();
+    indices[130] = u64::MAX;
+    indices[131] = 1 << 32;
+    let mut out = std::vec![0.0f32; 200];
+    radical_inverse_at(0, &indices, &mut out).unwrap();
+    for (&a, &x) in indices.iter().zip(&out) {
+        assert_eq!(x.to_bits(), radical_inverse(0, a).to_bits());
+    }
+    assert_eq!(out[131], 2.0f32.powi(-33));
+    assert_eq!(
+        radical_inverse_at(0, &indices, &mut [0.0; 199]),
+        Err(Error::BufferTooShort {
+            needed: 200,
+            actual: 199
+        })
+    );
+}
