@@ -67,8 +67,15 @@ pub const fn hash2(a: u64, b: u64) -> u64 {
 /// ```
 #[inline(always)]
 pub const fn wyrand(seed: u64, i: u64) -> u64 {
-    const INC: u64 = 0xa076_1d64_78bd_642f;
-    let s = seed.wrapping_add(INC.wrapping_mul(i.wrapping_add(1)));
+    wyrand_fold(seed.wrapping_add(WYRAND_INC.wrapping_mul(i.wrapping_add(1))))
+}
+
+/// WyRand's Weyl increment.
+pub(crate) const WYRAND_INC: u64 = 0xa076_1d64_78bd_642f;
+
+/// WyRand's output fold of a Weyl state `s`.
+#[inline(always)]
+pub(crate) const fn wyrand_fold(s: u64) -> u64 {
     let t = (s as u128) * ((s ^ 0xe703_7ed1_a0b4_28db) as u128);
     (t >> 64) as u64 ^ t as u64
 }

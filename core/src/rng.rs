@@ -1,7 +1,9 @@
 //! Random-number helpers over any [`rand_core::Rng`]: unit floats and unbiased bounded
 //! integers. [`rand_pcg::Pcg32`] is the default generator.
 
-use rand_core::Rng;
+use core::convert::Infallible;
+
+use rand_core::{Rng, TryRng};
 
 /// The default generator: PCG32 (O'Neill 2014), small, fast and reproducible everywhere.
 pub type DefaultRng = rand_pcg::Pcg32;
@@ -18,6 +20,70 @@ pub fn default_rng(seed: u64) -> DefaultRng {
         crate::hash::mix64(seed ^ 0x853c_49e6_748f_ea9b),
         0xda3e_39cb_94b9_5bdb,
     )
+}
+
+/// A counter-based generator: word `i` is [`crate::hash::wyrand`]`(key, i)`. Each word costs
+/// one wide multiply and depends on no earlier word, so loops that draw from it are not held to
+/// one generator step at a time the way a state-chained generator (PCG, xorshift) holds them.
+///
+/// The stratification routines key one from the caller's generator (one `u64` draw) and take
+/// their per-element words from it, so they still take any [`Rng`] and still advance it.
+/// `next_u32` returns the high half of a word.
+///
+/// ```
+/// use nyquist::rng::CounterRng;
+/// use rand_core::Rng;
+/// let mut a = CounterRng::new(9);
+/// let w0 = a.next_u64();
+/// assert_eq!(w0, nyquist::hash::wyrand(9, 0));
+/// assert_eq!(a.next_u32(), (nyquist::hash::wyrand(9, 1) >> 32) as u32);
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CounterRng {
+    /// The Weyl state `key + counter · increment`.
+    state: u64,
+}
+
+impl CounterRng {
+    /// The stream keyed by `key` (every key is valid), at word 0.
+    ///
+    /// ```
+    /// use rand_core::Rng;
+    /// let (mut a, mut b) = (nyquist::rng::CounterRng::new(1), nyquist::rng::CounterRng::new(2));
+    /// assert_ne!(a.next_u64(), b.next_u64());
+    /// ```
+    pub const fn new(key: u64) -> CounterRng {
+        CounterRng { state: key }
+    }
+
+    /// A stream keyed by one `u64` drawn from `rng`.
+    ///
+    /// ```
+    /// use nyquist::rng::{CounterRng, default_rng};
+    /// assert_eq!(CounterRng::keyed_by(&mut default_rng(3)), CounterRng::keyed_by(&mut default_rng(3)));
+    /// ```
+    pub fn keyed_by<R: Rng + ?Sized>(rng: &mut R) -> CounterRng {
+        CounterRng::new(rng.next_u64())
+    }
+}
+
+impl TryRng for CounterRng {
+    type Error = Infallible;
+
+    #[inline(always)]
+    fn try_next_u32(&mut self) -> Result<u32, Infallible> {
+        Ok((self.try_next_u64()? >> 32) as u32)
+    }
+
+    #[inline(always)]
+    fn try_next_u64(&mut self) -> Result<u64, Infallible> {
+        self.state = self.state.wrapping_add(crate::hash::WYRAND_INC);
+        Ok(crate::hash::wyrand_fold(self.state))
+    }
+
+    fn try_fill_bytes(&mut self, dst: &mut [u8]) -> Result<(), Infallible> {
+        rand_core::utils::fill_bytes_via_next_word(dst, || self.try_next_u64())
+    }
 }
 
 /// A uniform `f32` in `[0, 1)` with 24 random bits.
@@ -55,7 +121,15 @@ pub fn uniform_below<R: Rng + ?Sized>(rng: &mut R, n: u32) -> u32 {
     if n == 0 {
         return 0;
     }
-    let mut m = u64::from(rng.next_u32()) * u64::from(n);
+    let first = rng.next_u32();
+    uniform_below_from(first, n, rng)
+}
+
+/// [`uniform_below`] for `n ≥ 1` with its first 32-bit word already drawn (`first`); the rare
+/// rejected words are replaced by fresh draws from `rng`.
+#[inline(always)]
+pub(crate) fn uniform_below_from<R: Rng + ?Sized>(first: u32, n: u32, rng: &mut R) -> u32 {
+    let mut m = u64::from(first) * u64::from(n);
     if (m as u32) < n {
         let threshold = n.wrapping_neg() % n;
         while (m as u32) < threshold {

@@ -4,7 +4,10 @@
 use rand_core::Rng;
 
 use super::Strata;
-use crate::{Error, hash, rng::uniform_below};
+use crate::{
+    Error, hash,
+    rng::{CounterRng, uniform_below_from},
+};
 
 /// Validates a point-major buffer of `dims`-dimensional points; returns the point count.
 fn points_in(len: usize, dims: u32) -> Result<u32, Error> {
@@ -27,9 +30,9 @@ fn points_in(len: usize, dims: u32) -> Result<u32, Error> {
 /// independent uniform permutation per dimension. Values are in `[0, 1)`. Allocates: no.
 ///
 /// One pass per dimension: the stratum values are written straight into a uniformly shuffled
-/// position (the "inside-out" Fisher–Yates), with unbiased bounded draws
-/// ([`crate::rng::uniform_below`]). Jitters have 16 random bits (`22 − ⌈log₂ n⌉` when that is
-/// fewer), two per generator draw.
+/// position (the "inside-out" Fisher–Yates), with unbiased bounded draws (Lemire's method).
+/// Jitters have `22 − ⌈log₂ n⌉` random bits (as [`super::stratified_1d`]). Takes one `u64`
+/// from `rng`, as the key of the [`CounterRng`] stream that supplies one word per value.
 ///
 /// # Errors
 /// [`Error::ZeroSize`] if `dims == 0`; [`Error::BufferLength`] if `out` is empty or its length
@@ -53,24 +56,21 @@ pub fn latin_hypercube<R: Rng + ?Sized>(
     let n = points_in(out.len(), dims)?;
     let d = dims as usize;
     let strata = Strata::new(n);
-    // Jitters come 16 bits at a time, two per 32-bit draw (fewer bits when n > 64 leaves less
-    // room, see `Strata::jitter_bits`); the missing low bits are zero.
-    let bits = strata.jitter_bits().min(16);
-    let lift = strata.jitter_bits() - bits;
-    let mask = (1u32 << bits) - 1;
-    let mut word = 0u32;
+    let (shift, mask) = (
+        32 - strata.jitter_bits(),
+        (1u32 << strata.jitter_bits()) - 1,
+    );
+    // One word per value from a counter stream keyed by one draw of `rng`: the jitter from
+    // its low half, the bounded draw from its high half (more words only on the rare
+    // rejection), with no generator chain between the steps.
+    let rng = &mut CounterRng::keyed_by(rng);
     for dim in 0..d {
         // Inside-out Fisher–Yates over the column: after step k, positions 0..=k hold a uniform
         // permutation of the strata 0..=k.
         for k in 0..n {
-            let half = if k & 1 == 0 {
-                word = rng.next_u32();
-                word >> 16
-            } else {
-                word
-            };
-            let value = strata.jittered(k, (half & mask) << lift);
-            let j = uniform_below(rng, k + 1) as usize;
+            let w = rng.next_u64();
+            let value = strata.jittered(k, (w as u32 >> shift) & mask);
+            let j = uniform_below_from((w >> 32) as u32, k + 1, rng) as usize;
             let (kk, jj) = (k as usize * d + dim, j * d + dim);
             out[kk] = out[jj];
             out[jj] = value;

@@ -4,12 +4,13 @@ use rand_core::Rng;
 
 use crate::{
     Error,
-    rng::{uniform_below, uniform_below_u64},
+    rng::{CounterRng, uniform_below, uniform_below_u64},
 };
 
 /// Permutes `count` blocks of `dims` consecutive values of `buf` uniformly at random, keeping
 /// every block intact (Fisher–Yates with unbiased bounded draws). `buf.len()` must be exactly
-/// `count · dims`. Allocates: no.
+/// `count · dims`. Takes one `u64` from `rng`, as the key of the [`CounterRng`] stream the
+/// bounded draws come from. Allocates: no.
 ///
 /// # Errors
 /// [`Error::ZeroSize`] if `dims == 0`; [`Error::TooMany`] if `count · dims` overflows;
@@ -54,6 +55,9 @@ pub fn shuffle<T, R: Rng + ?Sized>(
     if len > needed {
         return Err(Error::OutOfRange { what: "count" });
     }
+    // Bounded draws from a counter stream keyed by one draw of `rng`: no generator chain
+    // between the steps.
+    let rng = &mut CounterRng::keyed_by(rng);
     if dims == 1 {
         // The common case, kept as a tight scalar loop.
         for i in (1..count).rev() {
