@@ -71,6 +71,8 @@ pub struct NyqFilter {
     sampler: Importance,
 }
 
+// Both variants are a few KB and the handle that holds one is boxed as a whole.
+#[allow(clippy::large_enum_variant)]
 #[derive(Debug)]
 enum Importance {
     Kind(FilterSampler<FilterKind>),

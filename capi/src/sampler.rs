@@ -479,7 +479,7 @@ pub unsafe extern "C" fn nyq_sampler_get_array_2d(
         let s = unsafe { get_mut(sampler)? };
         // SAFETY: `out` is null or writable for `len` floats (caller).
         let out = unsafe { slice_mut(out, len)? };
-        if len % 2 != 0 {
+        if !len.is_multiple_of(2) {
             return Err(NyqStatus::NYQ_ERR_BUFFER);
         }
         s.inner.as_dyn().get_array_2d(out);
