@@ -229,7 +229,7 @@ pub unsafe extern "C" fn nyq_filter_create(
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_filter_create_callback(
-    eval: Option<NyqFilterEval>,
+    eval: Option<unsafe extern "C" fn(user: *mut c_void, x: f32, y: f32) -> f32>,
     user: *mut c_void,
     rx: f32,
     ry: f32,

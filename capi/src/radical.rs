@@ -41,112 +41,170 @@ pub unsafe extern "C" fn nyq_prime(dim: u32, out: *mut u32) -> NyqStatus {
     })
 }
 
-macro_rules! radical_fn {
-    ($(#[$doc:meta])* $name:ident, $ty:ty, $c:literal, |$dim:ident, $a:ident $(, $seed:ident)?| $body:expr) => {
-        $(#[$doc])*
-        ///
-        /// # Errors
-        /// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_OUT_OF_RANGE` if `dim >= 1024`.
-        ///
-        /// # Safety
-        #[doc = concat!("`out` is null or valid for writing one `", $c, "`.")]
-        #[unsafe(no_mangle)]
-        pub unsafe extern "C" fn $name(dim: u32, a: u64, $($seed: u64,)? out: *mut $ty) -> NyqStatus {
-            run(|| {
-                let $dim = base(dim)?;
-                let $a = a;
-                let v: $ty = $body;
-                // SAFETY: `out` is null or writable (caller).
-                unsafe { put(out, v) }
-            })
-        }
-    };
+/// Φ_b(a) as a `float` in `[0, 1)`, `b = prime(dim)`: the core's
+/// [`radical_inverse`](nyquist::radical::radical_inverse).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_OUT_OF_RANGE` if `dim >= 1024`.
+///
+/// # Safety
+/// `out` is null or valid for writing one `float`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_radical_inverse};
+/// let mut x = 0.0f32;
+/// // SAFETY: `x` is a valid f32.
+/// assert_eq!(unsafe { nyq_radical_inverse(0, 3, &mut x) }, NyqStatus::NYQ_OK);
+/// assert_eq!(x, 0.75);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_radical_inverse(dim: u32, a: u64, out: *mut f32) -> NyqStatus {
+    run(|| {
+        let v = radical::radical_inverse(base(dim)?, a);
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, v) }
+    })
 }
 
-radical_fn!(
-    /// Φ_b(a) as a `float` in `[0, 1)`, `b = prime(dim)`: the core's
-    /// [`radical_inverse`](nyquist::radical::radical_inverse).
-    ///
-    /// ```
-    /// use nyquist_capi::{NyqStatus, nyq_radical_inverse};
-    /// let mut x = 0.0f32;
-    /// // SAFETY: `x` is a valid f32.
-    /// assert_eq!(unsafe { nyq_radical_inverse(0, 3, &mut x) }, NyqStatus::NYQ_OK);
-    /// assert_eq!(x, 0.75);
-    /// ```
-    nyq_radical_inverse, f32, "float", |d, a| radical::radical_inverse(d, a)
-);
+/// Φ_b(a) as a `double` in `[0, 1)`: the core's
+/// [`radical_inverse_f64`](nyquist::radical::radical_inverse_f64).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_OUT_OF_RANGE` if `dim >= 1024`.
+///
+/// # Safety
+/// `out` is null or valid for writing one `double`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_radical_inverse_f64};
+/// let mut x = 0.0f64;
+/// // SAFETY: `x` is a valid f64.
+/// assert_eq!(unsafe { nyq_radical_inverse_f64(1, 5, &mut x) }, NyqStatus::NYQ_OK);
+/// assert_eq!(x, 7.0 / 9.0);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_radical_inverse_f64(dim: u32, a: u64, out: *mut f64) -> NyqStatus {
+    run(|| {
+        let v = radical::radical_inverse_f64(base(dim)?, a);
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, v) }
+    })
+}
 
-radical_fn!(
-    /// Φ_b(a) as a `double` in `[0, 1)`: the core's
-    /// [`radical_inverse_f64`](nyquist::radical::radical_inverse_f64).
-    ///
-    /// ```
-    /// use nyquist_capi::{NyqStatus, nyq_radical_inverse_f64};
-    /// let mut x = 0.0f64;
-    /// // SAFETY: `x` is a valid f64.
-    /// assert_eq!(unsafe { nyq_radical_inverse_f64(1, 5, &mut x) }, NyqStatus::NYQ_OK);
-    /// assert_eq!(x, 7.0 / 9.0);
-    /// ```
-    nyq_radical_inverse_f64, f64, "double", |d, a| radical::radical_inverse_f64(d, a)
-);
+/// The folded (Zaremba) radical inverse Ψ_b(a) as a `float` in `[0, 1)`: the core's
+/// [`folded_radical_inverse`](nyquist::radical::folded_radical_inverse).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_OUT_OF_RANGE` if `dim >= 1024`.
+///
+/// # Safety
+/// `out` is null or valid for writing one `float`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_folded_radical_inverse};
+/// let mut x = 0.0f32;
+/// // SAFETY: `x` is a valid f32.
+/// assert_eq!(unsafe { nyq_folded_radical_inverse(0, 0, &mut x) }, NyqStatus::NYQ_OK);
+/// assert_eq!(x, nyquist::radical::folded_radical_inverse(0, 0)); // Ψ₂(0) = 1/3
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_folded_radical_inverse(dim: u32, a: u64, out: *mut f32) -> NyqStatus {
+    run(|| {
+        let v = radical::folded_radical_inverse(base(dim)?, a);
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, v) }
+    })
+}
 
-radical_fn!(
-    /// The folded (Zaremba) radical inverse Ψ_b(a) as a `float` in `[0, 1)`: the core's
-    /// [`folded_radical_inverse`](nyquist::radical::folded_radical_inverse).
-    ///
-    /// ```
-    /// use nyquist_capi::{NyqStatus, nyq_folded_radical_inverse};
-    /// let mut x = 0.0f32;
-    /// // SAFETY: `x` is a valid f32.
-    /// assert_eq!(unsafe { nyq_folded_radical_inverse(0, 0, &mut x) }, NyqStatus::NYQ_OK);
-    /// assert_eq!(x, nyquist::radical::folded_radical_inverse(0, 0)); // Ψ₂(0) = 1/3
-    /// ```
-    nyq_folded_radical_inverse, f32, "float", |d, a| radical::folded_radical_inverse(d, a)
-);
+/// Ψ_b(a) as a `double` in `[0, 1)`: the core's
+/// [`folded_radical_inverse_f64`](nyquist::radical::folded_radical_inverse_f64).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_OUT_OF_RANGE` if `dim >= 1024`.
+///
+/// # Safety
+/// `out` is null or valid for writing one `double`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_folded_radical_inverse_f64};
+/// let mut x = 0.0f64;
+/// // SAFETY: `x` is a valid f64.
+/// assert_eq!(unsafe { nyq_folded_radical_inverse_f64(2, 9, &mut x) }, NyqStatus::NYQ_OK);
+/// assert_eq!(x, nyquist::radical::folded_radical_inverse_f64(2, 9));
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_folded_radical_inverse_f64(
+    dim: u32,
+    a: u64,
+    out: *mut f64,
+) -> NyqStatus {
+    run(|| {
+        let v = radical::folded_radical_inverse_f64(base(dim)?, a);
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, v) }
+    })
+}
 
-radical_fn!(
-    /// Ψ_b(a) as a `double` in `[0, 1)`: the core's
-    /// [`folded_radical_inverse_f64`](nyquist::radical::folded_radical_inverse_f64).
-    ///
-    /// ```
-    /// use nyquist_capi::{NyqStatus, nyq_folded_radical_inverse_f64};
-    /// let mut x = 0.0f64;
-    /// // SAFETY: `x` is a valid f64.
-    /// assert_eq!(unsafe { nyq_folded_radical_inverse_f64(2, 9, &mut x) }, NyqStatus::NYQ_OK);
-    /// assert_eq!(x, nyquist::radical::folded_radical_inverse_f64(2, 9));
-    /// ```
-    nyq_folded_radical_inverse_f64, f64, "double", |d, a| radical::folded_radical_inverse_f64(d, a)
-);
+/// The digit-permutation scrambled radical inverse as a `float` in `[0, 1)`, the
+/// permutations keyed by `seed` (every seed is valid): the core's
+/// [`scrambled_radical_inverse`](nyquist::radical::scrambled_radical_inverse).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_OUT_OF_RANGE` if `dim >= 1024`.
+///
+/// # Safety
+/// `out` is null or valid for writing one `float`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_scrambled_radical_inverse};
+/// let mut x = 0.0f32;
+/// // SAFETY: `x` is a valid f32.
+/// assert_eq!(unsafe { nyq_scrambled_radical_inverse(5, 123, 7, &mut x) }, NyqStatus::NYQ_OK);
+/// assert_eq!(x, nyquist::radical::scrambled_radical_inverse(5, 123, 7));
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_scrambled_radical_inverse(
+    dim: u32,
+    a: u64,
+    seed: u64,
+    out: *mut f32,
+) -> NyqStatus {
+    run(|| {
+        let v = radical::scrambled_radical_inverse(base(dim)?, a, seed);
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, v) }
+    })
+}
 
-radical_fn!(
-    /// The digit-permutation scrambled radical inverse as a `float` in `[0, 1)`, the
-    /// permutations keyed by `seed` (every seed is valid): the core's
-    /// [`scrambled_radical_inverse`](nyquist::radical::scrambled_radical_inverse).
-    ///
-    /// ```
-    /// use nyquist_capi::{NyqStatus, nyq_scrambled_radical_inverse};
-    /// let mut x = 0.0f32;
-    /// // SAFETY: `x` is a valid f32.
-    /// assert_eq!(unsafe { nyq_scrambled_radical_inverse(5, 123, 7, &mut x) }, NyqStatus::NYQ_OK);
-    /// assert_eq!(x, nyquist::radical::scrambled_radical_inverse(5, 123, 7));
-    /// ```
-    nyq_scrambled_radical_inverse, f32, "float", |d, a, seed| radical::scrambled_radical_inverse(d, a, seed)
-);
-
-radical_fn!(
-    /// The scrambled radical inverse as a `double` in `[0, 1)`: the core's
-    /// [`scrambled_radical_inverse_f64`](nyquist::radical::scrambled_radical_inverse_f64).
-    ///
-    /// ```
-    /// use nyquist_capi::{NyqStatus, nyq_scrambled_radical_inverse_f64};
-    /// let mut x = 0.0f64;
-    /// // SAFETY: `x` is a valid f64.
-    /// assert_eq!(unsafe { nyq_scrambled_radical_inverse_f64(5, 123, 7, &mut x) }, NyqStatus::NYQ_OK);
-    /// assert_eq!(x, nyquist::radical::scrambled_radical_inverse_f64(5, 123, 7));
-    /// ```
-    nyq_scrambled_radical_inverse_f64, f64, "double", |d, a, seed| radical::scrambled_radical_inverse_f64(d, a, seed)
-);
+/// The scrambled radical inverse as a `double` in `[0, 1)`: the core's
+/// [`scrambled_radical_inverse_f64`](nyquist::radical::scrambled_radical_inverse_f64).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_OUT_OF_RANGE` if `dim >= 1024`.
+///
+/// # Safety
+/// `out` is null or valid for writing one `double`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_scrambled_radical_inverse_f64};
+/// let mut x = 0.0f64;
+/// // SAFETY: `x` is a valid f64.
+/// assert_eq!(unsafe { nyq_scrambled_radical_inverse_f64(5, 123, 7, &mut x) }, NyqStatus::NYQ_OK);
+/// assert_eq!(x, nyquist::radical::scrambled_radical_inverse_f64(5, 123, 7));
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_scrambled_radical_inverse_f64(
+    dim: u32,
+    a: u64,
+    seed: u64,
+    out: *mut f64,
+) -> NyqStatus {
+    run(|| {
+        let v = radical::scrambled_radical_inverse_f64(base(dim)?, a, seed);
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, v) }
+    })
+}
 
 /// Fills `out[0..len]` with Φ_b(first), Φ_b(first + 1), … (`b = prime(dim)`; indices wrap past
 /// `u64::MAX`): the core's [`fill_radical_inverse`](nyquist::radical::fill_radical_inverse).
