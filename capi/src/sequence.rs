@@ -247,7 +247,7 @@ pub unsafe extern "C" fn nyq_sequence_sample_f64(
 /// let (mut pts, mut n) = ([0.0f32; 8], 0u64);
 /// // SAFETY: valid pointers, `pts` holds 8 floats.
 /// assert_eq!(unsafe { nyq_sequence_fill(&sobol, 0, 2, pts.as_mut_ptr(), 8, &mut n) }, NyqStatus::NYQ_OK);
-/// assert_eq!((n, pts), (4, [0.0, 0.0, 0.5, 0.5, 0.75, 0.25, 0.25, 0.75]));
+/// assert_eq!((n, pts), (4, [0.0, 0.0, 0.5, 0.5, 0.25, 0.75, 0.75, 0.25]));
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_sequence_fill(
