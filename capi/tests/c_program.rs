@@ -64,15 +64,15 @@ fn staticlib() -> PathBuf {
     panic!("cargo build -p nyquist-capi reported no .a artifact:\n{stdout}");
 }
 
-/// Compiles and runs the C program; returns its standard output.
-fn run_c_program() -> String {
+/// Compiles and runs the C program in `source`; returns its standard output.
+fn run_c_program(source: &Path, name: &str) -> String {
     let lib = staticlib();
-    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join("capi_test");
+    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
     let ws = workspace();
     let mut cc = Command::new("cc");
     cc.args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-O1", "-I"])
         .arg(ws.join("capi/include"))
-        .arg(ws.join("tests/c/capi_test.c"))
+        .arg(source)
         .arg(&lib)
         .args(["-lm", "-lpthread", "-ldl", "-o"])
         .arg(&exe);
@@ -84,7 +84,8 @@ fn run_c_program() -> String {
     };
     assert!(
         out.status.success(),
-        "cc failed to compile or link tests/c/capi_test.c:\n{}{}",
+        "cc failed to compile or link {}:\n{}{}",
+        source.display(),
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
@@ -424,7 +425,7 @@ fn c_program_matches_rust_results() {
     filter_lines(&mut e);
     error_lines(&mut e);
     e.line("done");
-    let actual = run_c_program();
+    let actual = run_c_program(&workspace().join("tests/c/capi_test.c"), "capi_test");
     let (want, got): (Vec<&str>, Vec<&str>) = (e.0.lines().collect(), actual.lines().collect());
     for (i, (w, g)) in want.iter().zip(&got).enumerate() {
         assert_eq!(
@@ -440,5 +441,68 @@ fn c_program_matches_rust_results() {
         "the C program printed {} lines, the Rust side expects {}",
         got.len(),
         want.len()
+    );
+}
+
+#[test]
+fn readme_c_example_compiles_and_runs() {
+    let readme = std::fs::read_to_string(workspace().join("README.md")).expect("README.md");
+    let start = readme.find("```c\n").expect("README has a ```c example") + "```c\n".len();
+    let len = readme[start..]
+        .find("```")
+        .expect("the ```c block is closed");
+    let source = Path::new(env!("CARGO_TARGET_TMPDIR")).join("readme_example.c");
+    std::fs::write(&source, &readme[start..start + len]).unwrap();
+    let out = run_c_program(&source, "readme_example");
+    let words: Vec<&str> = out.split_whitespace().collect();
+    assert_eq!(words.len(), 2, "{out}");
+    assert_eq!(
+        words[0].parse::<f32>(),
+        Ok(Halton::new(2).unwrap().sample(3, 0))
+    );
+    let k = FilterKind::parse("mitchell:b=0.5,c=0.25").unwrap();
+    let t: FilterTable = FilterTable::new(&k, Interpolation::Linear).unwrap();
+    let w: f32 = words[1].parse().unwrap();
+    // printf's %g keeps 6 significant digits.
+    assert!(
+        (w - t.weight(0.5, -0.25)).abs() <= 1e-6 * w.abs().max(1.0),
+        "{w}"
+    );
+}
+
+#[test]
+fn header_compiles_as_cpp() {
+    let probe = Path::new(env!("CARGO_TARGET_TMPDIR")).join("header_probe.cpp");
+    std::fs::write(
+        &probe,
+        "#include \"nyquist.h\"\nint main() { float x; return nyq_radical_inverse(1, 5, &x) == NYQ_OK ? 0 : 1; }\n",
+    )
+    .unwrap();
+    let out = match Command::new("c++")
+        .args([
+            "-std=c++11",
+            "-Wall",
+            "-Wextra",
+            "-Werror",
+            "-fsyntax-only",
+            "-I",
+        ])
+        .arg(workspace().join("capi/include"))
+        .arg(&probe)
+        .output()
+    {
+        Ok(out) => out,
+        Err(e) => {
+            // C++ is a bonus; the C test above is the contract.
+            eprintln!(
+                "SKIPPED: no `c++` compiler on PATH ({e}); the header was not checked as C++"
+            );
+            return;
+        }
+    };
+    assert!(
+        out.status.success(),
+        "capi/include/nyquist.h does not compile as C++11:\n{}",
+        String::from_utf8_lossy(&out.stderr)
     );
 }
