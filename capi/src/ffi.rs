@@ -13,6 +13,16 @@ pub(crate) fn run(f: impl FnOnce() -> Result<(), NyqStatus>) -> NyqStatus {
     }
 }
 
+/// `NYQ_ERR_NULL` if `p` is null: entry points call it on every pointer before anything
+/// else, so a null pointer is reported whatever else is wrong.
+pub(crate) fn need<T>(p: *const T) -> Result<(), NyqStatus> {
+    if p.is_null() {
+        Err(NyqStatus::NYQ_ERR_NULL)
+    } else {
+        Ok(())
+    }
+}
+
 /// Checks `p` is non-null and aligned.
 fn check<T>(p: *const T) -> Result<(), NyqStatus> {
     if p.is_null() {

@@ -15,7 +15,7 @@ use nyquist::filter::{
 };
 
 use crate::NyqStatus;
-use crate::ffi::{drop_box, get, put, put_array, put_box, run, text};
+use crate::ffi::{drop_box, get, need, put, put_array, put_box, run, text};
 
 /// Points per axis of a handle's lookup tables (the core's default `FilterTable` size).
 pub const NYQ_FILTER_TABLE_SIZE: u32 = 16;
@@ -181,9 +181,7 @@ pub unsafe extern "C" fn nyq_filter_create(
     run(|| {
         // SAFETY: `spec` is null or NUL-terminated (caller).
         let spec = unsafe { text(spec)? };
-        if out.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(out)?;
         let kind = FilterKind::parse(spec).map_err(|_| NyqStatus::NYQ_ERR_PARSE)?;
         let f = NyqFilter::from_kind(kind)?;
         // SAFETY: `out` is writable (caller).
@@ -237,9 +235,7 @@ pub unsafe extern "C" fn nyq_filter_create_callback(
 ) -> NyqStatus {
     run(|| {
         let eval = eval.ok_or(NyqStatus::NYQ_ERR_NULL)?;
-        if out.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(out)?;
         for r in [rx, ry] {
             if !r.is_finite() {
                 return Err(NyqStatus::NYQ_ERR_NON_FINITE);
@@ -383,6 +379,7 @@ pub unsafe extern "C" fn nyq_filter_lookup(
     run(|| {
         // SAFETY: `filter` is null or live (caller).
         let f = unsafe { get(filter)? };
+        need(out)?;
         let table = match interpolation {
             i if i == NyqInterpolation::NYQ_INTERP_NEAREST as u32 => &f.nearest,
             i if i == NyqInterpolation::NYQ_INTERP_LINEAR as u32 => &f.linear,

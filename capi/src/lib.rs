@@ -4,7 +4,8 @@
 //! Every function has the `nyq_` prefix, returns a [`NyqStatus`] and writes its results through
 //! out-parameters, which are left untouched when the status is not [`NyqStatus::NYQ_OK`]. Null
 //! pointers, empty or misaligned buffers, bad sizes and bad specs return an error code; nothing
-//! here panics. Samplers and filters live behind opaque handles (`NyqSampler`, `NyqFilter`)
+//! here panics. Pointers are checked first: a null pointer gives `NYQ_ERR_NULL` whatever else
+//! is wrong. Samplers and filters live behind opaque handles (`NyqSampler`, `NyqFilter`)
 //! made by a `*_create` function and released by the matching `*_destroy`.
 //!
 //! The C header, `capi/include/nyquist.h`, is generated from this crate by cbindgen and

@@ -6,7 +6,7 @@
 use nyquist::radical::{self, PRIME_COUNT};
 
 use crate::NyqStatus;
-use crate::ffi::{put, run, slice_mut};
+use crate::ffi::{need, put, run, slice_mut};
 
 fn base(dim: u32) -> Result<u32, NyqStatus> {
     if dim < PRIME_COUNT {
@@ -35,6 +35,7 @@ fn base(dim: u32) -> Result<u32, NyqStatus> {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_prime(dim: u32, out: *mut u32) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::prime(base(dim)?);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }
@@ -60,6 +61,7 @@ pub unsafe extern "C" fn nyq_prime(dim: u32, out: *mut u32) -> NyqStatus {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_radical_inverse(dim: u32, a: u64, out: *mut f32) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::radical_inverse(base(dim)?, a);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }
@@ -85,6 +87,7 @@ pub unsafe extern "C" fn nyq_radical_inverse(dim: u32, a: u64, out: *mut f32) ->
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_radical_inverse_f64(dim: u32, a: u64, out: *mut f64) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::radical_inverse_f64(base(dim)?, a);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }
@@ -110,6 +113,7 @@ pub unsafe extern "C" fn nyq_radical_inverse_f64(dim: u32, a: u64, out: *mut f64
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_folded_radical_inverse(dim: u32, a: u64, out: *mut f32) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::folded_radical_inverse(base(dim)?, a);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }
@@ -139,6 +143,7 @@ pub unsafe extern "C" fn nyq_folded_radical_inverse_f64(
     out: *mut f64,
 ) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::folded_radical_inverse_f64(base(dim)?, a);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }
@@ -170,6 +175,7 @@ pub unsafe extern "C" fn nyq_scrambled_radical_inverse(
     out: *mut f32,
 ) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::scrambled_radical_inverse(base(dim)?, a, seed);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }
@@ -200,6 +206,7 @@ pub unsafe extern "C" fn nyq_scrambled_radical_inverse_f64(
     out: *mut f64,
 ) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::scrambled_radical_inverse_f64(base(dim)?, a, seed);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }
@@ -263,6 +270,7 @@ pub unsafe extern "C" fn nyq_inverse_radical_inverse(
     out: *mut u64,
 ) -> NyqStatus {
     run(|| {
+        need(out)?;
         let v = radical::inverse_radical_inverse(base(dim)?, inverse, n_digits);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, v) }

@@ -13,7 +13,9 @@ use nyquist::sampler::{
 };
 
 use crate::NyqStatus;
-use crate::ffi::{drop_box, get, get_mut, put, put_array, put_box, run, slice, slice_mut, text};
+use crate::ffi::{
+    drop_box, get, get_mut, need, put, put_array, put_box, run, slice, slice_mut, text,
+};
 
 /// A sampler behind an opaque handle, made by [`nyq_sampler_create`] or [`nyq_sampler_clone`]
 /// and released by [`nyq_sampler_destroy`]. Not safe to use from two threads at once.
@@ -152,9 +154,7 @@ pub unsafe extern "C" fn nyq_sampler_create(
     run(|| {
         // SAFETY: `name` is null or NUL-terminated (caller).
         let name = unsafe { text(name)? };
-        if out.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(out)?;
         let inner = AnySampler::new(name, [width, height], spp, seed)?;
         // SAFETY: `out` is writable (caller).
         unsafe { put_box(out, NyqSampler { inner }) }
@@ -318,9 +318,7 @@ pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut 
     run(|| {
         // SAFETY: `sampler` is null or live and exclusively ours (caller).
         let s = unsafe { get_mut(sampler)? };
-        if out.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(out)?;
         let v = s.inner.as_dyn().get_1d();
         // SAFETY: `out` is writable (caller; null checked above).
         unsafe { put(out, v) }
@@ -355,9 +353,7 @@ pub unsafe extern "C" fn nyq_sampler_get_2d(sampler: *mut NyqSampler, out: *mut 
     run(|| {
         // SAFETY: `sampler` is null or live and exclusively ours (caller).
         let s = unsafe { get_mut(sampler)? };
-        if out.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(out)?;
         let v = s.inner.as_dyn().get_2d();
         // SAFETY: `out` is writable for two floats (caller; null checked above).
         unsafe { put_array(out, v) }
@@ -395,9 +391,7 @@ pub unsafe extern "C" fn nyq_sampler_get_pixel_2d(
     run(|| {
         // SAFETY: `sampler` is null or live and exclusively ours (caller).
         let s = unsafe { get_mut(sampler)? };
-        if out.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(out)?;
         let v = s.inner.as_dyn().get_pixel_2d();
         // SAFETY: `out` is writable for two floats (caller; null checked above).
         unsafe { put_array(out, v) }
@@ -539,9 +533,7 @@ pub unsafe extern "C" fn nyq_sampler_camera_sample(
     run(|| {
         // SAFETY: `sampler` is null or live and exclusively ours (caller).
         let s = unsafe { get_mut(sampler)? };
-        if out.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(out)?;
         let c = camera_sample(s.inner.as_dyn(), [x, y], sample_index);
         let c = NyqCameraSample {
             p_film: c.p_film,

@@ -10,7 +10,7 @@ use nyquist::sequence::{
 };
 
 use crate::NyqStatus;
-use crate::ffi::{get, put, run, slice_mut};
+use crate::ffi::{get, need, put, run, slice_mut};
 
 /// The sequence families, the values of [`NyqSequence::kind`].
 ///
@@ -189,6 +189,7 @@ pub unsafe extern "C" fn nyq_sequence_sample(
     out: *mut f32,
 ) -> NyqStatus {
     run(|| {
+        need(out)?;
         // SAFETY: `seq` is null or readable (caller).
         let s = unsafe { checked(seq, index, dim)? };
         // SAFETY: `out` is null or writable (caller).
@@ -220,6 +221,7 @@ pub unsafe extern "C" fn nyq_sequence_sample_f64(
     out: *mut f64,
 ) -> NyqStatus {
     run(|| {
+        need(out)?;
         // SAFETY: `seq` is null or readable (caller).
         let s = unsafe { checked(seq, index, dim)? };
         // SAFETY: `out` is null or writable (caller).
@@ -261,9 +263,7 @@ pub unsafe extern "C" fn nyq_sequence_fill(
     run(|| {
         // SAFETY: `seq` is null or readable (caller).
         let spec = unsafe { get(seq)? };
-        if written.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(written)?;
         // SAFETY: `out` is null or writable for `len` floats (caller).
         let out = unsafe { slice_mut(out, len)? };
         let s = AnySequence::new(spec)?;
@@ -304,6 +304,7 @@ pub unsafe extern "C" fn nyq_sequence_point_count(
     run(|| {
         // SAFETY: `seq` is null or readable (caller).
         let spec = unsafe { get(seq)? };
+        need(out)?;
         let n = AnySequence::new(spec)?.as_dyn().point_count().unwrap_or(0);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, n) }

@@ -8,7 +8,7 @@ use nyquist::rng::default_rng;
 use nyquist::stratify::{self, Jitter};
 
 use crate::NyqStatus;
-use crate::ffi::{put, run, slice_mut};
+use crate::ffi::{need, put, run, slice_mut};
 
 fn jitter(jittered: bool) -> Jitter {
     if jittered {
@@ -125,9 +125,7 @@ pub unsafe extern "C" fn nyq_latin_hypercube(
     written: *mut u32,
 ) -> NyqStatus {
     run(|| {
-        if written.is_null() {
-            return Err(NyqStatus::NYQ_ERR_NULL);
-        }
+        need(written)?;
         // SAFETY: `out` is null or writable for `len` floats (caller).
         let out = unsafe { slice_mut(out, len)? };
         if dims == 0 {

@@ -303,3 +303,52 @@ fn a_callback_filter_is_its_table_after_creation() {
         nyq_filter_destroy(f);
     }
 }
+
+#[test]
+fn null_pointers_are_reported_before_other_errors() {
+    let bad = NyqSequence {
+        kind: 99,
+        dims: 0,
+        points: 0,
+        seed: 0,
+    };
+    let mut f: *mut NyqFilter = ptr::null_mut();
+    let mut n = 0u32;
+    // SAFETY: every pointer is null or valid; the handle is destroyed once.
+    unsafe {
+        assert_eq!(
+            nyq_radical_inverse(5000, 1, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(nyq_prime(5000, ptr::null_mut()), NyqStatus::NYQ_ERR_NULL);
+        assert_eq!(
+            nyq_sequence_sample(&bad, 0, 9, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_sequence_fill(&bad, 0, 0, ptr::null_mut(), 0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_latin_hypercube(ptr::null_mut(), 0, 0, 0, &mut n),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_sampler_create(c"bogus".as_ptr(), 0, 0, 0, 0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_filter_create_callback(None, ptr::null_mut(), f32::NAN, 0.0, &mut f),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_filter_create(c"box".as_ptr(), &mut f),
+            NyqStatus::NYQ_OK
+        );
+        assert_eq!(
+            nyq_filter_lookup(f, 9, 0.0, 0.0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        nyq_filter_destroy(f);
+    }
+}
