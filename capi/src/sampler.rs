@@ -1,0 +1,630 @@
+//! Samplers through an opaque handle: the core's stateless layer (`start_pixel_sample`, then
+//! `get_1d`, `get_2d`, `get_pixel_2d`).
+//!
+//! A [`NyqSampler`] is a cursor: use one per thread ([`nyq_sampler_clone`] makes more). After
+//! `nyq_sampler_start_pixel_sample` its values depend only on (pixel, sample index, dimension,
+//! seed, construction parameters), so clones on different threads replay the same bits.
+
+use core::ffi::c_char;
+
+use nyquist::sampler::{
+    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
+    Jitter, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler, camera_sample,
+};
+
+use crate::NyqStatus;
+use crate::ffi::{
+    drop_box, get, get_mut, need, put, put_array, put_box, run, slice, slice_mut, text,
+};
+
+/// A sampler behind an opaque handle, made by [`nyq_sampler_create`] or [`nyq_sampler_clone`]
+/// and released by [`nyq_sampler_destroy`]. Not safe to use from two threads at once.
+#[derive(Clone, Debug)]
+pub struct NyqSampler {
+    inner: AnySampler,
+}
+
+#[derive(Clone, Debug)]
+enum AnySampler {
+    Random(RandomSampler),
+    Stratified(StratifiedSampler),
+    Halton(HaltonSampler),
+    Hammersley(HammersleySampler),
+    ZeroTwo(ZeroTwoSampler),
+    Sobol(SobolSampler),
+    BestCandidate(BestCandidateSampler),
+    Adaptive(AdaptiveSampler<ZeroTwoSampler>),
+}
+
+impl AnySampler {
+    fn as_dyn(&mut self) -> &mut dyn Sampler {
+        match self {
+            AnySampler::Random(s) => s,
+            AnySampler::Stratified(s) => s,
+            AnySampler::Halton(s) => s,
+            AnySampler::Hammersley(s) => s,
+            AnySampler::ZeroTwo(s) => s,
+            AnySampler::Sobol(s) => s,
+            AnySampler::BestCandidate(s) => s,
+            AnySampler::Adaptive(s) => s,
+        }
+    }
+
+    fn as_ref(&self) -> &dyn Sampler {
+        match self {
+            AnySampler::Random(s) => s,
+            AnySampler::Stratified(s) => s,
+            AnySampler::Halton(s) => s,
+            AnySampler::Hammersley(s) => s,
+            AnySampler::ZeroTwo(s) => s,
+            AnySampler::Sobol(s) => s,
+            AnySampler::BestCandidate(s) => s,
+            AnySampler::Adaptive(s) => s,
+        }
+    }
+
+    /// The sampler `name` as the CLI's `--sampler NAME --spp SPP --size WxH --seed SEED` builds
+    /// it.
+    fn new(name: &str, size: [u32; 2], spp: u32, seed: u64) -> Result<AnySampler, NyqStatus> {
+        if size[0] == 0 || size[1] == 0 || spp == 0 {
+            return Err(NyqStatus::NYQ_ERR_ZERO_SIZE);
+        }
+        let square = || {
+            let side = spp.isqrt();
+            if side * side == spp {
+                Ok(side)
+            } else {
+                Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE)
+            }
+        };
+        let halton_scramble = if seed == 0 {
+            HaltonScramble::None
+        } else {
+            HaltonScramble::PermuteDigits
+        };
+        Ok(match name {
+            "random" => AnySampler::Random(RandomSampler::new(spp, seed)?),
+            "uniform" => {
+                let side = square()?;
+                AnySampler::Stratified(StratifiedSampler::uniform(side, side, seed)?)
+            }
+            "stratified" => {
+                let side = square()?;
+                AnySampler::Stratified(StratifiedSampler::new(side, side, Jitter::Jittered, seed)?)
+            }
+            "halton" => AnySampler::Halton(HaltonSampler::new(size, spp, halton_scramble, seed)?),
+            "hammersley" => {
+                AnySampler::Hammersley(HammersleySampler::new(size, spp, seed != 0, seed)?)
+            }
+            "zero-two" => AnySampler::ZeroTwo(ZeroTwoSampler::new(spp, seed)?),
+            "sobol" => AnySampler::Sobol(SobolSampler::new(size, spp, seed)?),
+            "best-candidate" => AnySampler::BestCandidate(BestCandidateSampler::new(spp, seed)?),
+            "adaptive" => {
+                let inner = ZeroTwoSampler::new(spp, seed)?;
+                let min = (inner.samples_per_pixel() / 4).max(1);
+                AnySampler::Adaptive(AdaptiveSampler::new(inner, min, 0.1)?)
+            }
+            _ => return Err(NyqStatus::NYQ_ERR_PARSE),
+        })
+    }
+}
+
+/// Creates sampler `name` for `spp` samples per pixel of a `width × height` image with `seed`,
+/// as the CLI's `--sampler NAME --spp SPP --size WxH --seed SEED` does, and writes the handle
+/// to `*out`.
+///
+/// Names: `random`; `uniform` and `stratified` (a √spp × √spp grid, cell centres or jittered;
+/// `spp` must be a square); `halton` (digit-permuted when `seed != 0`); `hammersley` (scrambled
+/// when `seed != 0`); `zero-two` and `sobol` (spp rounded up to a power of two:
+/// [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
+/// spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]). The image size matters
+/// to `halton`, `hammersley` and `sobol` only, but must be non-zero for all.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `name` or `out` is null; `NYQ_ERR_PARSE` for an unknown or non-UTF-8
+/// name; `NYQ_ERR_ZERO_SIZE` if `width`, `height` or `spp` is 0; `NYQ_ERR_OUT_OF_RANGE` if
+/// `spp` is not a square for `uniform`/`stratified`; `NYQ_ERR_TOO_MANY` (or another core error)
+/// if the sampler cannot take `spp` at that size.
+///
+/// # Safety
+/// `name` is null or a NUL-terminated string; `out` is null or valid for writing one pointer.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// // SAFETY: valid NUL-terminated name and out-pointer; the handle is destroyed once.
+/// unsafe {
+///     assert_eq!(nyq_sampler_create(c"zero-two".as_ptr(), 8, 8, 3, 0, &mut s), NyqStatus::NYQ_OK);
+///     let mut spp = 0u32;
+///     assert_eq!(nyq_sampler_samples_per_pixel(s, &mut spp), NyqStatus::NYQ_OK);
+///     assert_eq!(spp, 4);
+///     nyq_sampler_destroy(s);
+///     assert_eq!(nyq_sampler_create(c"nope".as_ptr(), 8, 8, 4, 0, &mut s), NyqStatus::NYQ_ERR_PARSE);
+/// }
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_create(
+    name: *const c_char,
+    width: u32,
+    height: u32,
+    spp: u32,
+    seed: u64,
+    out: *mut *mut NyqSampler,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `name` is null or NUL-terminated (caller).
+        let name = unsafe { text(name)? };
+        need(out)?;
+        let inner = AnySampler::new(name, [width, height], spp, seed)?;
+        // SAFETY: `out` is writable (caller).
+        unsafe { put_box(out, NyqSampler { inner }) }
+    })
+}
+
+/// Writes a new handle with the same parameters and cursor as `*sampler` to `*out` (one per
+/// thread).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null.
+///
+/// # Safety
+/// `sampler` is null or a live handle; `out` is null or valid for writing one pointer.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let (mut a, mut b): (*mut NyqSampler, *mut NyqSampler) = (std::ptr::null_mut(), std::ptr::null_mut());
+/// let (mut x, mut y) = ([0.0f32; 2], [0.0f32; 2]);
+/// // SAFETY: valid pointers; each handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"sobol".as_ptr(), 16, 16, 16, 3, &mut a);
+///     nyq_sampler_start_pixel_sample(a, 2, 5, 7, 4);
+///     assert_eq!(nyq_sampler_clone(a, &mut b), NyqStatus::NYQ_OK);
+///     nyq_sampler_get_2d(a, x.as_mut_ptr());
+///     nyq_sampler_get_2d(b, y.as_mut_ptr());
+///     nyq_sampler_destroy(a);
+///     nyq_sampler_destroy(b);
+/// }
+/// assert_eq!(x, y);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_clone(
+    sampler: *const NyqSampler,
+    out: *mut *mut NyqSampler,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live (caller).
+        let s = unsafe { get(sampler)? }.clone();
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put_box(out, s) }
+    })
+}
+
+/// Releases a handle from [`nyq_sampler_create`] or [`nyq_sampler_clone`]. Null is a no-op.
+///
+/// # Safety
+/// `sampler` is null or a live handle, not used afterwards.
+///
+/// ```
+/// // SAFETY: null is allowed.
+/// unsafe { nyquist_capi::nyq_sampler_destroy(std::ptr::null_mut()) };
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_destroy(sampler: *mut NyqSampler) {
+    // SAFETY: `sampler` is null or a live handle from `put_box`, dropped once (caller).
+    unsafe { drop_box(sampler) }
+}
+
+/// Writes the sampler's samples per pixel (after any rounding; the maximum for `adaptive`) to
+/// `*out`.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null.
+///
+/// # Safety
+/// `sampler` is null or a live handle; `out` is null or valid for writing one `uint32_t`.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut spp = 0;
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"stratified".as_ptr(), 1, 1, 9, 0, &mut s);
+///     assert_eq!(nyq_sampler_samples_per_pixel(s, &mut spp), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert_eq!(spp, 9);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_samples_per_pixel(
+    sampler: *const NyqSampler,
+    out: *mut u32,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live (caller).
+        let n = unsafe { get(sampler)? }.inner.as_ref().samples_per_pixel();
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, n) }
+    })
+}
+
+/// Moves the cursor to sample `sample_index` of pixel `(x, y)`, at dimension `dim`.
+/// Dimensions 0 and 1 are the image sample; every `uint32_t` value is accepted (samplers with
+/// a fixed per-pixel pattern wrap `sample_index` modulo their spp).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `sampler` is null.
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"random".as_ptr(), 1, 1, 1, 0, &mut s);
+///     assert_eq!(nyq_sampler_start_pixel_sample(s, 0, 0, 0, 0), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+///     assert_eq!(nyq_sampler_start_pixel_sample(std::ptr::null_mut(), 0, 0, 0, 0), NyqStatus::NYQ_ERR_NULL);
+/// }
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_start_pixel_sample(
+    sampler: *mut NyqSampler,
+    x: u32,
+    y: u32,
+    sample_index: u32,
+    dim: u32,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        s.inner
+            .as_dyn()
+            .start_pixel_sample([x, y], sample_index, dim);
+        Ok(())
+    })
+}
+
+/// Writes the value of the current dimension, in `[0, 1)`, to `*out` and advances the cursor
+/// by one.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null (the cursor does not move).
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing one `float`.
+///
+/// ```
+/// use nyquist::sampler::{RandomSampler, Sampler};
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut v = 0.0f32;
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"random".as_ptr(), 1, 1, 4, 7, &mut s);
+///     nyq_sampler_start_pixel_sample(s, 3, 5, 2, 6);
+///     assert_eq!(nyq_sampler_get_1d(s, &mut v), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// let mut r = RandomSampler::new(4, 7).unwrap();
+/// r.start_pixel_sample([3, 5], 2, 6);
+/// assert_eq!(v, r.get_1d());
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut f32) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        need(out)?;
+        let v = s.inner.as_dyn().get_1d();
+        // SAFETY: `out` is writable (caller; null checked above).
+        unsafe { put(out, v) }
+    })
+}
+
+/// Writes the values of the current and the next dimension, in `[0, 1)²`, to `out[0]` and
+/// `out[1]`, and advances the cursor by two.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null (the cursor does not move).
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing two `float`s.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut uv = [2.0f32; 2];
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"halton".as_ptr(), 64, 64, 16, 0, &mut s);
+///     nyq_sampler_start_pixel_sample(s, 0, 0, 0, 2);
+///     assert_eq!(nyq_sampler_get_2d(s, uv.as_mut_ptr()), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert_eq!(uv, [0.0, 0.0]); // Halton index 0, dimensions 2 and 3
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_get_2d(sampler: *mut NyqSampler, out: *mut f32) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        need(out)?;
+        let v = s.inner.as_dyn().get_2d();
+        // SAFETY: `out` is writable for two floats (caller; null checked above).
+        unsafe { put_array(out, v) }
+    })
+}
+
+/// Writes the image sample (the offset inside the pixel, dimensions 0 and 1 whatever the
+/// cursor), in `[0, 1)²`, to `out[0]` and `out[1]`; the cursor moves to `max(cursor, 2)`.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null (the cursor does not move).
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing two `float`s.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut p = [2.0f32; 2];
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"uniform".as_ptr(), 1, 1, 1, 0, &mut s);
+///     nyq_sampler_start_pixel_sample(s, 4, 4, 0, 9);
+///     assert_eq!(nyq_sampler_get_pixel_2d(s, p.as_mut_ptr()), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert_eq!(p, [0.5, 0.5]);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_get_pixel_2d(
+    sampler: *mut NyqSampler,
+    out: *mut f32,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        need(out)?;
+        let v = s.inner.as_dyn().get_pixel_2d();
+        // SAFETY: `out` is writable for two floats (caller; null checked above).
+        unsafe { put_array(out, v) }
+    })
+}
+
+/// Fills `out[0..len]` with an array of `len` values for the current sample at the current
+/// dimension (stratified samplers stratify the array): the core's `Sampler::get_array_1d`.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_ZERO_SIZE` if `len == 0`; `NYQ_ERR_BUFFER` if
+/// `out` is misaligned.
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing `len` floats.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut a = [2.0f32; 4];
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"stratified".as_ptr(), 1, 1, 4, 1, &mut s);
+///     nyq_sampler_start_pixel_sample(s, 0, 0, 0, 5);
+///     assert_eq!(nyq_sampler_get_array_1d(s, a.as_mut_ptr(), 4), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert!(a.iter().all(|x| (0.0..1.0).contains(x)));
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_get_array_1d(
+    sampler: *mut NyqSampler,
+    out: *mut f32,
+    len: usize,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        // SAFETY: `out` is null or writable for `len` floats (caller).
+        let out = unsafe { slice_mut(out, len)? };
+        s.inner.as_dyn().get_array_1d(out);
+        Ok(())
+    })
+}
+
+/// Fills `out[0..len]` with `len / 2` 2D values `[u0, v0, u1, v1, …]` for the current sample:
+/// the core's `Sampler::get_array_2d`. `len` must be even.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_ZERO_SIZE` if `len == 0`; `NYQ_ERR_BUFFER` if
+/// `len` is odd or `out` is misaligned.
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing `len` floats.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut a = [2.0f32; 5];
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"random".as_ptr(), 1, 1, 4, 1, &mut s);
+///     assert_eq!(nyq_sampler_get_array_2d(s, a.as_mut_ptr(), 5), NyqStatus::NYQ_ERR_BUFFER);
+///     assert_eq!(nyq_sampler_get_array_2d(s, a.as_mut_ptr(), 4), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert!(a[..4].iter().all(|x| (0.0..1.0).contains(x)));
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_get_array_2d(
+    sampler: *mut NyqSampler,
+    out: *mut f32,
+    len: usize,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        // SAFETY: `out` is null or writable for `len` floats (caller).
+        let out = unsafe { slice_mut(out, len)? };
+        if !len.is_multiple_of(2) {
+            return Err(NyqStatus::NYQ_ERR_BUFFER);
+        }
+        s.inner.as_dyn().get_array_2d(out);
+        Ok(())
+    })
+}
+
+/// What a camera needs for one pixel sample.
+///
+/// ```
+/// let c = nyquist_capi::NyqCameraSample { p_film: [0.5, 0.5], lens: [0.0, 0.0], time: 0.0 };
+/// assert_eq!(c.p_film[0], 0.5);
+/// ```
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct NyqCameraSample {
+    /// Position on the film in pixels: the pixel plus the image sample, inside the pixel.
+    pub p_film: [f32; 2],
+    /// Lens sample in `[0, 1)²` (dimensions 3 and 4).
+    pub lens: [f32; 2],
+    /// Time in `[0, 1)` (dimension 2).
+    pub time: f32,
+}
+
+/// Starts sample `sample_index` of pixel `(x, y)` at dimension 0 and writes its camera sample
+/// (image position, time, lens) to `*out`; the cursor is left at dimension 5, where an
+/// integrator's own values begin: the core's
+/// [`camera_sample`](nyquist::sampler::camera_sample).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null (the cursor does not move).
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing one `NyqCameraSample`.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut c = NyqCameraSample { p_film: [0.0; 2], lens: [0.0; 2], time: 0.0 };
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"uniform".as_ptr(), 1, 1, 1, 0, &mut s);
+///     assert_eq!(nyq_sampler_camera_sample(s, 10, 20, 0, &mut c), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert_eq!(c.p_film, [10.5, 20.5]);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_camera_sample(
+    sampler: *mut NyqSampler,
+    x: u32,
+    y: u32,
+    sample_index: u32,
+    out: *mut NyqCameraSample,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        need(out)?;
+        let c = camera_sample(s.inner.as_dyn(), [x, y], sample_index);
+        let c = NyqCameraSample {
+            p_film: c.p_film,
+            lens: c.lens,
+            time: c.time,
+        };
+        // SAFETY: `out` is writable (caller; null checked above).
+        unsafe { put(out, c) }
+    })
+}
+
+/// Reports the radiance (`len` channels, any number) that sample `sample_index` of pixel
+/// `(x, y)` produced; only `adaptive` uses it, to decide [`nyq_sampler_pixel_samples`].
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_ZERO_SIZE` if `len == 0`; `NYQ_ERR_BUFFER` if
+/// `radiance` is misaligned.
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `radiance` is null
+/// or valid for reading `len` floats and not written meanwhile.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut l = [1.0f32, 0.5, 0.25];
+/// let mut n = 0;
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"random".as_ptr(), 1, 1, 4, 0, &mut s);
+///     assert_eq!(nyq_sampler_report(s, 0, 0, 0, l.as_mut_ptr(), 3), NyqStatus::NYQ_OK);
+///     nyq_sampler_pixel_samples(s, 0, 0, &mut n);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert_eq!(n, 4); // ignored by non-adaptive samplers
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_report(
+    sampler: *mut NyqSampler,
+    x: u32,
+    y: u32,
+    sample_index: u32,
+    radiance: *const f32,
+    len: usize,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        // SAFETY: `radiance` is null or readable for `len` floats, not written meanwhile
+        // (caller).
+        let radiance = unsafe { slice(radiance, len)? };
+        s.inner.as_dyn().report([x, y], sample_index, radiance);
+        Ok(())
+    })
+}
+
+/// Writes how many samples pixel `(x, y)` takes, given what was reported for it so far, to
+/// `*out`: spp for every sampler but `adaptive`.
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null.
+///
+/// # Safety
+/// `sampler` is null or a live handle; `out` is null or valid for writing one `uint32_t`.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let mut s: *mut NyqSampler = std::ptr::null_mut();
+/// let mut n = 0;
+/// // SAFETY: valid pointers; the handle is destroyed once.
+/// unsafe {
+///     nyq_sampler_create(c"adaptive".as_ptr(), 1, 1, 16, 0, &mut s);
+///     assert_eq!(nyq_sampler_pixel_samples(s, 0, 0, &mut n), NyqStatus::NYQ_OK);
+///     nyq_sampler_destroy(s);
+/// }
+/// assert!((4..=16).contains(&n));
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_pixel_samples(
+    sampler: *const NyqSampler,
+    x: u32,
+    y: u32,
+    out: *mut u32,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live (caller).
+        let n = unsafe { get(sampler)? }
+            .inner
+            .as_ref()
+            .pixel_samples([x, y]);
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, n) }
+    })
+}

@@ -1,0 +1,354 @@
+//! The C API called from Rust: status mapping, pointer checks, and properties over arbitrary
+//! input (never a panic; every value in `[0, 1)`; results equal to the core's).
+
+use std::ffi::{CStr, CString};
+use std::ptr;
+
+use nyquist::Error;
+use nyquist::filter::{Filter, FilterKind};
+use nyquist::sequence::{Halton, Sequence, Sobol};
+use nyquist_capi::*;
+use proptest::prelude::*;
+
+#[test]
+fn every_core_error_maps_to_its_status() {
+    use NyqStatus::*;
+    let cases = [
+        (Error::ZeroSize { what: "n" }, NYQ_ERR_ZERO_SIZE),
+        (Error::NonFinite { what: "r" }, NYQ_ERR_NON_FINITE),
+        (Error::OutOfRange { what: "r" }, NYQ_ERR_OUT_OF_RANGE),
+        (
+            Error::DimensionOutOfRange { dim: 3, dims: 2 },
+            NYQ_ERR_OUT_OF_RANGE,
+        ),
+        (
+            Error::BufferLength {
+                multiple_of: 2,
+                actual: 3,
+            },
+            NYQ_ERR_BUFFER,
+        ),
+        (
+            Error::BufferTooShort {
+                needed: 4,
+                actual: 3,
+            },
+            NYQ_ERR_BUFFER,
+        ),
+        (Error::TooMany { what: "n" }, NYQ_ERR_TOO_MANY),
+    ];
+    for (e, s) in cases {
+        assert_eq!(NyqStatus::from(e), s, "{e}");
+    }
+}
+
+#[test]
+fn every_status_has_its_own_message() {
+    let messages: Vec<&str> = (0..=8u32)
+        .map(|s| {
+            // SAFETY: the messages are static NUL-terminated strings.
+            unsafe { CStr::from_ptr(nyq_status_message(s)) }
+                .to_str()
+                .unwrap()
+        })
+        .collect();
+    let mut unique = messages.clone();
+    unique.sort();
+    unique.dedup();
+    assert_eq!(unique.len(), 9, "{messages:?}");
+    assert!(!messages.contains(&"unknown status"));
+    // SAFETY: as above.
+    let unknown = unsafe { CStr::from_ptr(nyq_status_message(9)) };
+    assert_eq!(unknown.to_str(), Ok("unknown status"));
+}
+
+#[test]
+fn misaligned_pointers_are_buffer_errors_and_nothing_is_written() {
+    let mut words = [0u32; 8];
+    let misaligned = words
+        .as_mut_ptr()
+        .cast::<u8>()
+        .wrapping_add(1)
+        .cast::<f32>();
+    // SAFETY: the pointer is misaligned, which the API checks before any access.
+    unsafe {
+        assert_eq!(
+            nyq_radical_inverse(0, 1, misaligned),
+            NyqStatus::NYQ_ERR_BUFFER
+        );
+        assert_eq!(
+            nyq_stratified_1d(misaligned, 4, true, 0),
+            NyqStatus::NYQ_ERR_BUFFER
+        );
+    }
+    assert_eq!(words, [0; 8]);
+}
+
+#[test]
+fn outputs_are_untouched_on_error() {
+    let mut x = 42.0f32;
+    let bad = NyqSequence {
+        kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32,
+        dims: 2,
+        points: 0,
+        seed: 0,
+    };
+    // SAFETY: valid pointers.
+    unsafe {
+        assert_eq!(
+            nyq_sequence_sample(&bad, 0, 5, &mut x),
+            NyqStatus::NYQ_ERR_OUT_OF_RANGE
+        );
+        assert_eq!(
+            nyq_radical_inverse(2000, 1, &mut x),
+            NyqStatus::NYQ_ERR_OUT_OF_RANGE
+        );
+    }
+    assert_eq!(x, 42.0);
+    let mut f: *mut NyqFilter = ptr::null_mut();
+    // SAFETY: valid pointers.
+    let s = unsafe { nyq_filter_create(c"gaussian:alpha=1,sigma=1".as_ptr(), &mut f) };
+    assert_eq!((s, f.is_null()), (NyqStatus::NYQ_ERR_PARSE, true));
+}
+
+#[test]
+fn sequence_fill_equals_the_cores_samples() {
+    let sobol = NyqSequence {
+        kind: NyqSequenceKind::NYQ_SEQ_SOBOL as u32,
+        dims: 5,
+        points: 0,
+        seed: 0,
+    };
+    let core = Sobol::new(5).unwrap();
+    let mut buf = vec![0.0f32; 5 * 100];
+    let mut n = 0u64;
+    // SAFETY: valid pointers, `buf` holds its length.
+    let s = unsafe { nyq_sequence_fill(&sobol, 1000, 5, buf.as_mut_ptr(), buf.len(), &mut n) };
+    assert_eq!((s, n), (NyqStatus::NYQ_OK, 100));
+    for (i, p) in buf.chunks_exact(5).enumerate() {
+        for (d, &x) in p.iter().enumerate() {
+            assert_eq!(x, core.sample(1000 + i as u64, d as u32));
+        }
+    }
+}
+
+/// Arbitrary `NyqSequence` values, including bad kinds, sizes and counts.
+fn any_sequence() -> impl Strategy<Value = NyqSequence> {
+    (
+        0u32..12,
+        0u32..1100,
+        prop_oneof![Just(0u64), 1u64..100, any::<u64>()],
+        any::<u64>(),
+    )
+        .prop_map(|(kind, dims, points, seed)| NyqSequence {
+            kind,
+            dims,
+            points,
+            seed,
+        })
+}
+
+proptest! {
+    #[test]
+    fn sequence_sample_is_ok_in_range_or_an_error(
+        seq in any_sequence(),
+        index in prop_oneof![0u64..64, any::<u64>()],
+        dim in 0u32..1100,
+    ) {
+        let mut x = f32::NAN;
+        // SAFETY: valid pointers.
+        let s = unsafe { nyq_sequence_sample(&seq, index, dim, &mut x) };
+        if s == NyqStatus::NYQ_OK {
+            prop_assert!((0.0..1.0).contains(&x), "{x}");
+            prop_assert!(dim < seq.dims);
+        } else {
+            prop_assert!(x.is_nan(), "written on error");
+        }
+    }
+
+    #[test]
+    fn halton_through_the_api_is_the_cores(index in any::<u64>(), dim in 0u32..8) {
+        let seq = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32, dims: 8, points: 0, seed: 0 };
+        let mut x = 0.0f32;
+        // SAFETY: valid pointers.
+        prop_assert_eq!(unsafe { nyq_sequence_sample(&seq, index, dim, &mut x) }, NyqStatus::NYQ_OK);
+        prop_assert_eq!(x, Halton::new(8).unwrap().sample(index, dim));
+    }
+
+    #[test]
+    fn filter_specs_parse_as_the_core_does(
+        spec in "(box|tent|triangle|gaussian|mitchell|lanczos|[a-z]{0,5})(:(radius|rx|ry|sigma|alpha|b|c|tau|[a-z]{1,3})=[-0-9.x]{0,4}(,(radius|b|c|tau|sigma)=[0-9.]{0,4}){0,2})?",
+    ) {
+        let c = CString::new(spec.clone()).unwrap();
+        let mut f: *mut NyqFilter = ptr::null_mut();
+        // SAFETY: valid pointers; the handle is destroyed once.
+        let s = unsafe { nyq_filter_create(c.as_ptr(), &mut f) };
+        match FilterKind::parse(&spec) {
+            Ok(k) => {
+                prop_assert_eq!(s, NyqStatus::NYQ_OK);
+                let mut w = f32::NAN;
+                // SAFETY: `f` is live.
+                unsafe {
+                    prop_assert_eq!(nyq_filter_eval(f, 0.25, -0.5, &mut w), NyqStatus::NYQ_OK);
+                    nyq_filter_destroy(f);
+                }
+                prop_assert_eq!(w, k.eval(0.25, -0.5));
+            }
+            Err(_) => prop_assert_eq!((s, f.is_null()), (NyqStatus::NYQ_ERR_PARSE, true)),
+        }
+    }
+
+    #[test]
+    fn samplers_give_values_in_range_for_any_input(
+        name in prop::sample::select(vec!["random", "uniform", "stratified", "halton", "hammersley", "zero-two", "sobol", "best-candidate", "adaptive", "bogus"]),
+        size in (0u32..70, 0u32..70),
+        spp in 0u32..70,
+        seed in any::<u64>(),
+        pixel in (any::<u32>(), any::<u32>()),
+        index in any::<u32>(),
+        dim in any::<u32>(),
+    ) {
+        let c = CString::new(name).unwrap();
+        let mut s: *mut NyqSampler = ptr::null_mut();
+        // SAFETY: valid pointers; the handle is destroyed once.
+        unsafe {
+            if nyq_sampler_create(c.as_ptr(), size.0, size.1, spp, seed, &mut s) != NyqStatus::NYQ_OK {
+                prop_assert!(s.is_null());
+                return Ok(());
+            }
+            let mut v = [f32::NAN; 5];
+            prop_assert_eq!(nyq_sampler_start_pixel_sample(s, pixel.0, pixel.1, index, dim), NyqStatus::NYQ_OK);
+            prop_assert_eq!(nyq_sampler_get_1d(s, &mut v[0]), NyqStatus::NYQ_OK);
+            prop_assert_eq!(nyq_sampler_get_2d(s, v[1..].as_mut_ptr()), NyqStatus::NYQ_OK);
+            prop_assert_eq!(nyq_sampler_get_pixel_2d(s, v[3..].as_mut_ptr()), NyqStatus::NYQ_OK);
+            nyq_sampler_destroy(s);
+            prop_assert!(v.iter().all(|x| (0.0..1.0).contains(x)), "{v:?}");
+        }
+    }
+
+    #[test]
+    fn callback_filters_tabulate_any_callback(rx in -1.0f32..40.0, ry in -1.0f32..40.0, mode in 0u32..4) {
+        unsafe extern "C" fn wild(user: *mut std::ffi::c_void, x: f32, y: f32) -> f32 {
+            // SAFETY: `user` points to the `u32` mode below, alive during creation.
+            match unsafe { *user.cast::<u32>() } {
+                0 => f32::NAN,
+                1 => f32::INFINITY,
+                2 => -x * y,
+                _ => 1e30,
+            }
+        }
+        let mut mode = mode;
+        let mut f: *mut NyqFilter = ptr::null_mut();
+        // SAFETY: `wild` reads `mode`, alive during the call; the handle is destroyed once.
+        unsafe {
+            let s = nyq_filter_create_callback(Some(wild), (&raw mut mode).cast(), rx, ry, &mut f);
+            if s != NyqStatus::NYQ_OK {
+                prop_assert!(f.is_null());
+                prop_assert!(!(rx >= nyquist::filter::MIN_RADIUS && ry >= nyquist::filter::MIN_RADIUS));
+                return Ok(());
+            }
+            let (mut w, mut i) = (f32::NAN, f32::NAN);
+            let mut fs = NyqFilterSample { offset: [f32::NAN; 2], weight: f32::NAN };
+            prop_assert_eq!(nyq_filter_lookup(f, 1, 0.1, 0.2, &mut w), NyqStatus::NYQ_OK);
+            prop_assert_eq!(nyq_filter_integral(f, &mut i), NyqStatus::NYQ_OK);
+            prop_assert_eq!(nyq_filter_sample(f, 0.3, 0.9, &mut fs), NyqStatus::NYQ_OK);
+            nyq_filter_destroy(f);
+            prop_assert!(w.is_finite() && i.is_finite() && fs.weight.is_finite(), "{w} {i} {fs:?}");
+            prop_assert!(fs.offset[0].abs() <= rx && fs.offset[1].abs() <= ry, "{fs:?}");
+        }
+    }
+}
+
+#[test]
+fn a_callback_filter_is_its_table_after_creation() {
+    unsafe extern "C" fn bump(_: *mut std::ffi::c_void, x: f32, y: f32) -> f32 {
+        (1.0 - x * x) * (1.0 - y * y)
+    }
+    struct Bump;
+    impl Filter for Bump {
+        fn radius(&self) -> [f32; 2] {
+            [1.0, 1.0]
+        }
+        fn eval(&self, x: f32, y: f32) -> f32 {
+            if !(x.abs() <= 1.0 && y.abs() <= 1.0) {
+                return 0.0;
+            }
+            (1.0 - x * x) * (1.0 - y * y)
+        }
+    }
+    let table: nyquist::filter::FilterTable =
+        nyquist::filter::FilterTable::new(&Bump, nyquist::filter::Interpolation::Nearest).unwrap();
+    let mut f: *mut NyqFilter = ptr::null_mut();
+    // SAFETY: `bump` ignores its user pointer; the handle is destroyed once.
+    unsafe {
+        assert_eq!(
+            nyq_filter_create_callback(Some(bump), ptr::null_mut(), 1.0, 1.0, &mut f),
+            NyqStatus::NYQ_OK
+        );
+        for (x, y) in [
+            (0.0, 0.0),
+            (0.33, -0.71),
+            (0.99, 0.5),
+            (1.01, 0.0),
+            (f32::NAN, 0.0),
+        ] {
+            let mut w = f32::NAN;
+            assert_eq!(nyq_filter_lookup(f, 0, x, y, &mut w), NyqStatus::NYQ_OK);
+            assert_eq!(w, table.weight(x, y), "({x}, {y})");
+        }
+        let mut i = 0.0;
+        nyq_filter_integral(f, &mut i);
+        assert_eq!(i, Bump.integral());
+        assert!((i - 16.0 / 9.0).abs() < 1e-3, "{i}");
+        nyq_filter_destroy(f);
+    }
+}
+
+#[test]
+fn null_pointers_are_reported_before_other_errors() {
+    let bad = NyqSequence {
+        kind: 99,
+        dims: 0,
+        points: 0,
+        seed: 0,
+    };
+    let mut f: *mut NyqFilter = ptr::null_mut();
+    let mut n = 0u32;
+    // SAFETY: every pointer is null or valid; the handle is destroyed once.
+    unsafe {
+        assert_eq!(
+            nyq_radical_inverse(5000, 1, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(nyq_prime(5000, ptr::null_mut()), NyqStatus::NYQ_ERR_NULL);
+        assert_eq!(
+            nyq_sequence_sample(&bad, 0, 9, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_sequence_fill(&bad, 0, 0, ptr::null_mut(), 0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_latin_hypercube(ptr::null_mut(), 0, 0, 0, &mut n),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_sampler_create(c"bogus".as_ptr(), 0, 0, 0, 0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_filter_create_callback(None, ptr::null_mut(), f32::NAN, 0.0, &mut f),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_filter_create(c"box".as_ptr(), &mut f),
+            NyqStatus::NYQ_OK
+        );
+        assert_eq!(
+            nyq_filter_lookup(f, 9, 0.0, 0.0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        nyq_filter_destroy(f);
+    }
+}
