@@ -317,7 +317,7 @@ fn factors_into(
 #[inline(always)]
 fn outer_product(
     d0: [f32; 2],
-    nx: usize,
+    [nx, ny]: [usize; 2],
     out: &mut [f32],
     fx4: impl Fn([f32; 4]) -> [f32; 4],
     fx1: impl Fn(f32) -> f32,
@@ -342,8 +342,7 @@ fn outer_product(
     };
     // The y factors four rows at a time (lanes past the last row are computed and dropped);
     // row 0's factor is kept for last. j counted in floats as above.
-    let ny = rest.len() / nx + 1;
-    let mut rows = rest.chunks_exact_mut(nx);
+    let mut r = 0;
     let mut wy0 = 0.0;
     let mut j = 0.0f32;
     for j0 in (0..ny).step_by(4) {
@@ -355,8 +354,11 @@ fn outer_product(
         } else {
             0
         };
-        for (&w, row) in wy[skip..(ny - j0).min(4)].iter().zip(&mut rows) {
-            scale_row(row, first, w);
+        for &w in &wy[skip..(ny - j0).min(4)] {
+            if let Some(row) = rest.get_mut(r * nx..(r + 1) * nx) {
+                scale_row(row, first, w);
+            }
+            r += 1;
         }
     }
     for w in first.iter_mut() {
@@ -371,9 +373,17 @@ const SMALL_FOOTPRINT: usize = 4;
 /// `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`, one lookup per weight (2D tables and tiny
 /// footprints). Offsets counted in floats as in [`factors_into`].
 #[inline(always)]
-fn per_weight(d0: [f32; 2], nx: usize, out: &mut [f32], weight: impl Fn(f32, f32) -> f32) {
+fn per_weight(
+    d0: [f32; 2],
+    [nx, ny]: [usize; 2],
+    out: &mut [f32],
+    weight: impl Fn(f32, f32) -> f32,
+) {
     let mut j = 0.0f32;
-    for row in out.chunks_exact_mut(nx) {
+    for r in 0..ny {
+        let Some(row) = out.get_mut(r * nx..(r + 1) * nx) else {
+            return;
+        };
         let dy = d0[1] + j;
         let mut i = 0.0f32;
         for w in row.iter_mut() {
@@ -384,15 +394,24 @@ fn per_weight(d0: [f32; 2], nx: usize, out: &mut [f32], weight: impl Fn(f32, f32
     }
 }
 
-/// The footprint's length check: `out.len()` a positive multiple of `nx`.
-fn check_footprint(nx: usize, out: &[f32]) -> Result<(), Error> {
-    if nx == 0 || out.is_empty() || !out.len().is_multiple_of(nx) {
-        return Err(Error::BufferLength {
-            multiple_of: nx,
-            actual: out.len(),
-        });
+/// The footprint's length check: `out.len()` a positive multiple of `nx`; returns the row count
+/// `ny`. Square footprints (symmetric filters, the usual case) are recognised by a multiply, so
+/// the film's hot path divides nothing.
+#[inline(always)]
+fn check_footprint(nx: usize, out: &[f32]) -> Result<usize, Error> {
+    let len = out.len();
+    if nx != 0 && len != 0 {
+        if nx.checked_mul(nx) == Some(len) {
+            return Ok(nx);
+        }
+        if len.is_multiple_of(nx) {
+            return Ok(len / nx);
+        }
     }
-    Ok(())
+    Err(Error::BufferLength {
+        multiple_of: nx,
+        actual: len,
+    })
 }
 
 /// A separable filter's table: two 1D tables of `N` entries each (default 16), stored inline.
@@ -524,9 +543,9 @@ impl<const N: usize> SeparableTable<N> {
     /// ```
     #[inline]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        check_footprint(nx, out)?;
+        let ny = check_footprint(nx, out)?;
         if out.len() < SMALL_FOOTPRINT {
-            per_weight(d0, nx, out, |x, y| self.weight(x, y));
+            per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y));
             return Ok(());
         }
         let g = const { Grid::new(N) };
@@ -535,7 +554,7 @@ impl<const N: usize> SeparableTable<N> {
         match self.interp {
             Interpolation::Nearest => outer_product(
                 d0,
-                nx,
+                [nx, ny],
                 out,
                 |d| factor4(vx, g, rx, sx, Interpolation::Nearest, d),
                 |d| factor(vx, g, rx, sx, Interpolation::Nearest, d),
@@ -543,7 +562,7 @@ impl<const N: usize> SeparableTable<N> {
             ),
             Interpolation::Linear => outer_product(
                 d0,
-                nx,
+                [nx, ny],
                 out,
                 |d| factor4(vx, g, rx, sx, Interpolation::Linear, d),
                 |d| factor(vx, g, rx, sx, Interpolation::Linear, d),
@@ -703,8 +722,8 @@ impl<const N: usize> Table2d<N> {
     /// ```
     #[inline]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        check_footprint(nx, out)?;
-        per_weight(d0, nx, out, |x, y| self.weight(x, y));
+        let ny = check_footprint(nx, out)?;
+        per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y));
         Ok(())
     }
 
@@ -983,11 +1002,11 @@ impl TableView<'_> {
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
     /// ```
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        check_footprint(nx, out)?;
+        let ny = check_footprint(nx, out)?;
         let g = self.grid;
         match self.data {
             ViewData::Separable(..) if out.len() < SMALL_FOOTPRINT => {
-                per_weight(d0, nx, out, |x, y| self.weight(x, y));
+                per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y));
             }
             ViewData::Separable(vx, vy) => {
                 let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
@@ -995,7 +1014,7 @@ impl TableView<'_> {
                 match self.interp {
                     Interpolation::Nearest => outer_product(
                         d0,
-                        nx,
+                        [nx, ny],
                         out,
                         |d| factor4(vx, g, rx, sx, Interpolation::Nearest, d),
                         |d| factor(vx, g, rx, sx, Interpolation::Nearest, d),
@@ -1003,7 +1022,7 @@ impl TableView<'_> {
                     ),
                     Interpolation::Linear => outer_product(
                         d0,
-                        nx,
+                        [nx, ny],
                         out,
                         |d| factor4(vx, g, rx, sx, Interpolation::Linear, d),
                         |d| factor(vx, g, rx, sx, Interpolation::Linear, d),
@@ -1011,7 +1030,7 @@ impl TableView<'_> {
                     ),
                 }
             }
-            ViewData::Full(_) => per_weight(d0, nx, out, |x, y| self.weight(x, y)),
+            ViewData::Full(_) => per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y)),
         }
         Ok(())
     }
