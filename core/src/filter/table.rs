@@ -191,7 +191,8 @@ impl Grid {
         let m = u + MAGIC;
         let k = m.to_bits().wrapping_sub(MAGIC_BITS) as usize;
         let t = c - (m - MAGIC);
-        let t = if t < self.eps { 0.0 } else { t };
+        // A multiply by the mask, not a select: LLVM turns the select into a branch per lane.
+        let t = t * mask(t >= self.eps);
         (k, t)
     }
 
@@ -319,13 +320,13 @@ fn outer_product(
     d0: [f32; 2],
     [nx, ny]: [usize; 2],
     out: &mut [f32],
-    fx4: impl Fn([f32; 4]) -> [f32; 4],
-    fx1: impl Fn(f32) -> f32,
+    fx4: impl Fn([f32; 4]) -> [f32; 4] + Copy,
+    fx1: impl Fn(f32) -> f32 + Copy,
     fy4: impl Fn([f32; 4]) -> [f32; 4],
 ) {
     // Row 0 holds the x factors until it is scaled last.
     let (first, rest) = out.split_at_mut(nx);
-    factors_into(d0[0], first, &fx4, &fx1);
+    factors_into(d0[0], first, fx4, fx1);
     // Four at a time, then the rest: footprints are a few pixels wide, too short for the
     // compiler's own vectorised loop (with its run-time checks) to pay off.
     let scale_row = |row: &mut [f32], first: &[f32], w: f32| {
