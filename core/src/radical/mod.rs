@@ -185,20 +185,42 @@ const fn build_digits() -> [[u8; 33]; 1024] {
 
 static DIGITS: [[u8; 33]; 1024] = build_digits();
 
-/// Everything the `f32` fast path of one base reads, in two cache lines (plus the base's
+/// Index classes of the fast path: class `c = ⌈bit_len(a)/4⌉` (`0 ..= 8`) for `a < 2³²`.
+const CLASSES: usize = 9;
+
+/// What the fast path reads for one base and one index class `c`: the digit count `n` (the
+/// base-`b` digits of `2^(4c) − 1`, capped at `k`, then rounded up to whole table chunks where
+/// that stays within `k`), `magic = ⌈2⁶⁴/bⁿ⌉`, `inv_pow = 1/bⁿ` (correctly rounded), and the
+/// split of `n` into leading single digits and table chunks.
+#[derive(Clone, Copy)]
+struct ClassConsts {
+    magic: u64,
+    inv_pow: f64,
+    n: u8,
+    /// The leading digits taken one at a time (`n mod j`), then `n / j` chunks.
+    lead: u8,
+    chunks: u8,
+}
+
+const NO_CLASS: ClassConsts = ClassConsts {
+    magic: 0,
+    inv_pow: 1.0,
+    n: 0,
+    lead: 0,
+    chunks: 0,
+};
+
+/// Everything the `f32` fast path of one base reads: a header and one 24-byte record per index
+/// class, so a lookup touches the header's cache line and its class's (plus the base's
 /// digit-reversal table, for bases up to 61).
 ///
-/// For an index `a < big = b^k` of byte class `c = ⌈bit_len(a)/8⌉` (`0 ..= 4`), `n[c]` is the
-/// number of base-`b` digits of `2^(8c) − 1` capped at `k`, `magic[c] = ⌈2⁶⁴/b^n[c]⌉` and
-/// `inv_pow[c] = 1/b^n[c]` (correctly rounded). The digit count is coarser than an exact one (up
-/// to a few leading zero digits more, which reverse to zeros), but the loop trip count then
-/// depends only on the dimension and on the index's byte length, so a renderer's indices — which
-/// mostly share a byte length — do not mispredict the loop exit.
+/// The digit count per class is coarser than an exact one (up to a few leading zero digits
+/// more, which reverse to zeros), but the loop trip count then depends only on the dimension and
+/// on the index's length in nibbles, so a renderer's indices — which mostly share a length — do
+/// not mispredict the loop exit, and small indices take few steps.
 #[derive(Clone, Copy)]
 #[repr(C, align(64))]
 struct FastBase {
-    magic: [u64; 5],
-    inv_pow: [f64; 5],
     b: u32,
     big: u32,
     /// The chunk `c = b^j` of the digit-reversal table (`c = b`, `j = 1`, no table, for bases
@@ -206,10 +228,7 @@ struct FastBase {
     chunk: u32,
     /// Offset of this base's table in [`CHUNK_REV`].
     table: u32,
-    n: [u8; 5],
-    /// Per class: the leading digits taken one at a time (`n mod j`), then `n / j` chunks.
-    lead: [u8; 5],
-    chunks: [u8; 5],
+    class: [ClassConsts; CLASSES],
 }
 
 /// The largest chunk `b^j` with a digit-reversal table; bases with `b² ≤ CHUNK_LIMIT` (2 ..= 61)
@@ -279,15 +298,11 @@ const fn build_fast() -> [FastBase; 1024] {
     let bases = build_bases();
     let digits = build_digits();
     let mut out = [FastBase {
-        magic: [0; 5],
-        inv_pow: [1.0; 5],
         b: 0,
         big: 0,
         chunk: 0,
         table: 0,
-        n: [0; 5],
-        lead: [0; 5],
-        chunks: [0; 5],
+        class: [NO_CLASS; CLASSES],
     }; 1024];
     let mut table = 0u32;
     let mut i = 0;
@@ -295,22 +310,18 @@ const fn build_fast() -> [FastBase; 1024] {
         let info = bases[i];
         let j = if i == 0 { 1 } else { chunk_len(info.b) };
         let mut f = FastBase {
-            magic: [0; 5],
-            inv_pow: [1.0; 5],
             b: info.b as u32,
             big: info.big as u32,
             chunk: info.b.pow(j) as u32,
             table,
-            n: [0; 5],
-            lead: [0; 5],
-            chunks: [0; 5],
+            class: [NO_CLASS; CLASSES],
         };
         if j > 1 {
             table += info.b.pow(j) as u32;
         }
         let mut c = 1;
-        while c <= 4 {
-            let mut n = digits[i][8 * c];
+        while c < CLASSES {
+            let mut n = digits[i][4 * c];
             // Round the digit count up to whole chunks when b^n stays below b^k (extra leading
             // zero digits reverse to zeros): fewer steps, the same value.
             let whole = n.div_ceil(j as u8) * j as u8;
@@ -318,15 +329,13 @@ const fn build_fast() -> [FastBase; 1024] {
                 n = whole;
             }
             let pow = info.b.pow(n as u32);
-            f.n[c] = n;
-            if j > 1 {
-                f.lead[c] = n % j as u8;
-                f.chunks[c] = n / j as u8;
-            } else {
-                f.lead[c] = n;
-            }
-            f.magic[c] = u64::MAX / pow + 1;
-            f.inv_pow[c] = 1.0 / pow as f64;
+            f.class[c] = ClassConsts {
+                magic: u64::MAX / pow + 1,
+                inv_pow: 1.0 / pow as f64,
+                n,
+                lead: if j > 1 { n % j as u8 } else { n },
+                chunks: if j > 1 { n / j as u8 } else { 0 },
+            };
             c += 1;
         }
         out[i] = f;
@@ -337,10 +346,11 @@ const fn build_fast() -> [FastBase; 1024] {
 
 static FAST: [FastBase; 1024] = build_fast();
 
-/// The byte class `⌈bit_len(a)/8⌉` of an index below 2³², as an index into [`FastBase`].
+/// The class `⌈bit_len(a)/4⌉` of an index below 2³² (its length in nibbles), an index into
+/// [`FastBase::class`].
 #[inline(always)]
-fn byte_class(a: u64) -> usize {
-    ((bit_len(a) + 7) >> 3).min(4)
+fn index_class(a: u64) -> usize {
+    ((bit_len(a) + 3) >> 2).min(CLASSES - 1)
 }
 
 /// `R·(1/bⁿ)` narrowed to `f32`: the one rounding rule both the random-access fast path and the
@@ -598,17 +608,17 @@ pub fn radical_inverse_at(dim: u32, indices: &[u64], out: &mut [f32]) -> Result<
 ///
 /// One 64×64→128 multiply per digit hands out the digit (see the module docs); the sum runs in
 /// floating point beside the integer multiplier, and its only loop-carried chain is one add.
-/// The digit count comes from the index's byte class ([`FastBase`]), so the loop exit is
-/// predictable.
+/// The digit count comes from the index's length in nibbles ([`FastBase`]), so the loop exit
+/// is predictable.
 #[inline(always)]
 fn phi_fast(f: &FastBase, a: u64) -> f32 {
-    let class = byte_class(a);
+    let class = &f.class[index_class(a)];
     let b = u128::from(f.b);
     let bf = f64::from(f.b);
-    let mut y = a.wrapping_mul(f.magic[class]);
+    let mut y = a.wrapping_mul(class.magic);
     let mut rev = 0.0f64;
     let mut weight = 1.0f64;
-    for _ in 0..f.lead[class] {
+    for _ in 0..class.lead {
         let t = u128::from(y) * b;
         rev += (t >> 64) as i64 as f64 * weight;
         weight *= bf;
@@ -620,20 +630,20 @@ fn phi_fast(f: &FastBase, a: u64) -> f32 {
     let c = u128::from(f.chunk);
     let cf = f64::from(f.chunk);
     let table = CHUNK_REV.get(f.table as usize..).unwrap_or(&[]);
-    for _ in 0..f.chunks[class] {
+    for _ in 0..class.chunks {
         let t = u128::from(y) * c;
         let e = (t >> 64) as usize;
         rev += f64::from(table.get(e).copied().unwrap_or(0)) * weight;
         weight *= cf;
         y = t as u64;
     }
-    narrow(rev, f.inv_pow[class])
+    narrow(rev, class.inv_pow)
 }
 
 /// Writes Φ_b(first), Φ_b(first + 1), … (`b = prime(dim)`) into `out[offset], out[offset + stride], …`, bit for
 /// bit what [`radical_inverse`] returns for each index, in amortised O(1) per value.
 ///
-/// Inside one byte class the digits of the index are kept and incremented with carries, and the
+/// Inside one index class the digits of the index are kept and incremented with carries, and the
 /// reversed integer `R` is updated by the changed digits' weights; a new class (or an index past
 /// `b^k`) starts over from the random-access path. Indices wrap at `u64::MAX`.
 pub(crate) fn fill_consecutive(
@@ -674,9 +684,10 @@ pub(crate) fn fill_consecutive(
             next = slots.next();
             continue;
         }
-        let class = byte_class(a);
-        let n = usize::from(f.n[class]).min(32);
-        let end = (1u64 << (8 * class)).min(u64::from(f.big));
+        let c = index_class(a);
+        let class = &f.class[c];
+        let n = usize::from(class.n).min(32);
+        let end = (1u64 << (4 * c)).min(u64::from(f.big));
         // Digits of a, least significant first, and their weights b^(n−1−j) in R.
         let mut digits = [0u64; 32];
         let mut weights = [0u64; 32];
@@ -692,7 +703,7 @@ pub(crate) fn fill_consecutive(
             rest /= b;
             rev += digits[j] * weights[j];
         }
-        let inv_pow = f.inv_pow[class];
+        let inv_pow = class.inv_pow;
         loop {
             out[k] = narrow(rev as i64 as f64, inv_pow);
             a += 1;

@@ -50,16 +50,17 @@ fn tables_are_consistent() {
         // The fast path's per-class rows: n digits hold every index of the class below b^k.
         let f = &FAST[d];
         assert_eq!((u64::from(f.b), u64::from(f.big)), (b, info.big));
-        for class in 1..5 {
-            let n = u32::from(f.n[class]);
+        for (c, class) in f.class.iter().enumerate().skip(1) {
+            let n = u32::from(class.n);
             assert!(n <= info.k);
-            let largest = ((1u64 << (8 * class)) - 1).min(info.big - 1);
-            assert!(largest < b.pow(n), "base {b}, class {class}");
+            let largest = ((1u64 << (4 * c)) - 1).min(info.big - 1);
+            assert!(largest < b.pow(n), "base {b}, class {c}");
             assert_eq!(
-                u128::from(f.magic[class]),
+                u128::from(class.magic),
                 (1u128 << 64).div_ceil(u128::from(b.pow(n)))
             );
-            assert_eq!(f.inv_pow[class], 1.0 / b.pow(n) as f64);
+            assert_eq!(class.inv_pow, 1.0 / b.pow(n) as f64);
+            assert_eq!(u32::from(class.lead) + u32::from(class.chunks) * j_of(f), n);
         }
         for (len, &n) in DIGITS[d].iter().enumerate().skip(1) {
             // DIGITS[d][len] digits hold every chunk of that bit length below b^k.
@@ -279,6 +280,16 @@ fn multi_chunk_indices_are_continuous_with_single_chunk_ones() {
             );
         }
     }
+}
+
+/// Digits per table chunk of a fast-path base (1 without a table).
+fn j_of(f: &FastBase) -> u32 {
+    let (mut j, mut p) = (0, 1u32);
+    while p < f.chunk {
+        p *= f.b;
+        j += 1;
+    }
+    j
 }
 
 proptest! {
