@@ -3,7 +3,7 @@
 use rand_core::Rng;
 
 use super::{Strata, place};
-use crate::{Error, hash};
+use crate::{Error, hash, rng::CounterRng};
 
 /// Where a stratified sample sits inside its stratum.
 ///
@@ -16,7 +16,7 @@ use crate::{Error, hash};
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Jitter {
-    /// Uniformly random inside the stratum (one generator draw per coordinate).
+    /// Uniformly random inside the stratum.
     Jittered,
     /// At the stratum's centre, `(k + ½) / n`: the seed's "uniform" baseline; draws nothing.
     Centered,
@@ -25,8 +25,9 @@ pub enum Jitter {
 /// Fills `out` with `n = out.len()` stratified samples of `[0, 1)`: sample `k` lies in stratum
 /// `[k/n, (k+1)/n)`, in stratum order (shuffle them with [`super::shuffle`] if needed).
 /// Values are in `[0, 1)`. The jitter is quantised to `2^(22 − ⌈log₂ n⌉)` levels per stratum,
-/// which keeps every value provably inside its stratum (see the module docs); one generator
-/// draw per sample. Allocates: no.
+/// which keeps every value provably inside its stratum (see the module docs). Takes one `u64`
+/// from `rng`, as the key of the [`CounterRng`] stream that supplies one word per sample.
+/// Allocates: no.
 ///
 /// # Errors
 /// [`Error::ZeroSize`] if `out` is empty; [`Error::TooMany`] if `out.len()` exceeds `u32::MAX`.
@@ -53,6 +54,8 @@ pub fn stratified_1d<R: Rng + ?Sized>(
     let strata = Strata::new(n);
     match jitter {
         Jitter::Jittered => {
+            // Jitters from a counter stream keyed by one draw of `rng`, as in 2D.
+            let rng = &mut CounterRng::keyed_by(rng);
             let shift = 32 - strata.jitter_bits();
             for (k, x) in (0..n).zip(out.iter_mut()) {
                 *x = strata.jittered(k, rng.next_u32() >> shift);

@@ -2,8 +2,10 @@
 //!
 //! Everything here fills a slice the caller owns and never allocates. The randomness comes from
 //! any [`rand_core::Rng`] (`R: Rng + ?Sized`, so `&mut dyn Rng` works too); the crate's default is
-//! [`crate::rng::DefaultRng`] (PCG32), seeded with [`crate::rng::default_rng`]. Bounded integers
-//! are drawn without modulo bias ([`crate::rng::uniform_below`]).
+//! [`crate::rng::DefaultRng`] (PCG32), seeded with [`crate::rng::default_rng`]. Each call draws
+//! one `u64` from it, the key of a [`crate::rng::CounterRng`] whose words (no serial chain
+//! between them) supply the per-element randomness. Bounded integers are drawn without modulo
+//! bias (Lemire's method).
 //!
 //! | function | what it writes |
 //! |---|---|
