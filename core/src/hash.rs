@@ -177,51 +177,21 @@ const TABLE_MAX: u32 = 16;
 /// A uniformly drawn permutation of `0..n` (`n ≤ 16`), packed in nibbles, from the 64-bit
 /// fraction `r`.
 #[inline]
-fn packed_permutation(n: u32, r: u64) -> u64 {
-    // The sample counts renderers use most get a fully unrolled loop (constant shifts).
-    match n {
-        16 => packed_permutation_of::<16>(r),
-        8 => packed_permutation_of::<8>(r),
-        4 => packed_permutation_of::<4>(r),
-        _ => {
-            let mut t = identity_nibbles(n);
-            let mut r = r;
-            let mut k = n;
-            while k > 1 {
-                fisher_yates_step(&mut t, &mut r, k);
-                k -= 1;
-            }
-            t
-        }
-    }
-}
-
-/// [`packed_permutation`] for a constant `N`: the same steps, unrolled.
-#[inline(always)]
-fn packed_permutation_of<const N: u32>(mut r: u64) -> u64 {
-    let mut t = identity_nibbles(N);
-    for k in (2..=N).rev() {
-        fisher_yates_step(&mut t, &mut r, k);
+fn packed_permutation(n: u32, mut r: u64) -> u64 {
+    // Identity: nibble i = i.
+    let mut t = 0xfedc_ba98_7654_3210u64 & (u64::MAX >> (64 - 4 * n.max(1)));
+    let mut k = n;
+    while k > 1 {
+        // j uniform in 0..k: the integer part of r·k; the fraction carries the rest.
+        let p = u128::from(r) * u128::from(k);
+        let j = (p >> 64) as u32;
+        r = p as u64;
+        let (hi, lo) = (4 * (k - 1), 4 * j);
+        let x = ((t >> hi) ^ (t >> lo)) & 0xf;
+        t ^= (x << hi) | (x << lo);
+        k -= 1;
     }
     t
-}
-
-/// The identity permutation of `0..n` in nibbles (nibble i = i).
-#[inline(always)]
-const fn identity_nibbles(n: u32) -> u64 {
-    0xfedc_ba98_7654_3210u64 & (u64::MAX >> (64 - 4 * if n == 0 { 1 } else { n }))
-}
-
-/// One Fisher–Yates step on nibble table `t`: swap nibble `k − 1` with nibble `j`, `j` uniform
-/// in `0..k` (the integer part of `r·k`; the fraction carries on to the next step).
-#[inline(always)]
-fn fisher_yates_step(t: &mut u64, r: &mut u64, k: u32) {
-    let p = u128::from(*r) * u128::from(k);
-    let j = (p >> 64) as u32;
-    *r = p as u64;
-    let (hi, lo) = (4 * (k - 1), 4 * j);
-    let x = ((*t >> hi) ^ (*t >> lo)) & 0xf;
-    *t ^= (x << hi) | (x << lo);
 }
 
 impl Permutation {
