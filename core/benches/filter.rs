@@ -1,5 +1,6 @@
 //! Filter evaluation: direct (concrete type and `&dyn Filter`) against table lookup (inline
-//! table, size-erased view, nearest and linear), table building, and importance sampling.
+//! table, size-erased view, nearest and linear, one at a time and in batches), table building,
+//! and importance sampling.
 //!
 //! `cargo bench -p nyquist --bench filter -- --warm-up-time 1 --measurement-time 3`
 //! Targets: table lookup ≤ 1 ns per weight; direct Mitchell ≤ 5 ns, Lanczos ≤ 20 ns; building
@@ -62,6 +63,19 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
     case!("table_linear", |x, y| linear.weight(x, y));
     case!("table_nearest", |x, y| nearest.weight(x, y));
     case!("table_view_linear", |x, y| view.weight(x, y));
+    // The batch form over the same offsets (structure of arrays).
+    let (dx, dy): (Vec<f32>, Vec<f32>) = pts.iter().copied().unzip();
+    for (id, table) in [
+        ("table_batch_linear", &linear),
+        ("table_batch_nearest", &nearest),
+    ] {
+        g.bench_function(id, |b| {
+            b.iter(|| {
+                table.weights(black_box(&dx), &dy, &mut out).unwrap();
+                black_box(&out);
+            })
+        });
+    }
     g.finish();
 
     // The film's pattern: every pixel centre in a sample's footprint, (2r)² weights per sample.
@@ -217,6 +231,8 @@ fn report(since: SystemTime) {
             ("nearest", &w, "table_nearest"),
             ("linear", &w, "table_linear"),
             ("view", &w, "table_view_linear"),
+            ("batch nearest", &w, "table_batch_nearest"),
+            ("batch linear", &w, "table_batch_linear"),
         ] {
             if let Some(t) = per(group, id) {
                 let ratio = t / direct;

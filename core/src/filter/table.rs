@@ -415,6 +415,39 @@ fn check_footprint(nx: usize, out: &[f32]) -> Result<usize, Error> {
     })
 }
 
+/// The batch check: `dy` and `out` as long as `dx`.
+fn check_batch(dx: &[f32], dy: &[f32], out: &[f32]) -> Result<(), Error> {
+    for len in [dy.len(), out.len()] {
+        if len != dx.len() {
+            return Err(Error::BufferLength {
+                multiple_of: dx.len(),
+                actual: len,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// `out[i] = fx(dx[i]) · fy(dy[i])`: four at a time through `f4`, the rest through `f1`.
+#[inline(always)]
+fn separable_batch(
+    dx: &[f32],
+    dy: &[f32],
+    out: &mut [f32],
+    f4: impl Fn([f32; 4], [f32; 4]) -> [f32; 4],
+    f1: impl Fn(f32, f32) -> f32,
+) {
+    let (x4, xr) = dx.as_chunks::<4>();
+    let (y4, yr) = dy.as_chunks::<4>();
+    let (o4, or) = out.as_chunks_mut::<4>();
+    for ((o, x), y) in o4.iter_mut().zip(x4).zip(y4) {
+        *o = f4(*x, *y);
+    }
+    for ((o, &x), &y) in or.iter_mut().zip(xr).zip(yr) {
+        *o = f1(x, y);
+    }
+}
+
 /// A separable filter's table: two 1D tables of `N` entries each (default 16), stored inline.
 /// Allocates: no; size `8·N + 24` bytes.
 ///
@@ -524,6 +557,26 @@ impl<const N: usize> SeparableTable<N> {
             self.interp,
             d,
         )
+    }
+
+    /// The weights at many offsets at once: `out[i] = weight(dx[i], dy[i])`, the same values as
+    /// per-offset [`weight`](Self::weight) calls, four lanes at a time (for splatting batches
+    /// of samples, or evaluating the filter over any set of points).
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
+    /// let t: SeparableTable = SeparableTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// let (dx, dy) = ([0.1, -1.3, 2.5, 0.7, f32::NAN], [0.0, 0.4, 0.2, -1.9, 0.0]);
+    /// let mut w = [0.0f32; 5];
+    /// t.weights(&dx, &dy, &mut w).unwrap();
+    /// assert!((0..5).all(|i| w[i] == t.weight(dx[i], dy[i])));
+    /// assert!(t.weights(&dx, &dy[..4], &mut w).is_err());
+    /// ```
+    pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
+        self.view().weights(dx, dy, out)
     }
 
     /// The weights of a whole footprint: `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)` for
@@ -708,6 +761,26 @@ impl<const N: usize> Table2d<N> {
         lookup_2d(self.values.as_flattened(), g, cx, cy, self.interp) * inside
     }
 
+    /// The weights at many offsets, `out[i] = weight(dx[i], dy[i])`: one 2D lookup each.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Interpolation, Table2d, Triangle};
+    /// let t: Table2d = Table2d::new(&Triangle::default(), Interpolation::Linear).unwrap();
+    /// let mut w = [0.0f32; 2];
+    /// t.weights(&[0.5, 3.0], &[-0.25, 0.0], &mut w).unwrap();
+    /// assert_eq!(w, [t.weight(0.5, -0.25), 0.0]);
+    /// ```
+    pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
+        check_batch(dx, dy, out)?;
+        for ((o, &x), &y) in out.iter_mut().zip(dx).zip(dy) {
+            *o = self.weight(x, y);
+        }
+        Ok(())
+    }
+
     /// The weights of a whole footprint, `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`: one
     /// bilinear (or nearest) 2D lookup per weight.
     ///
@@ -831,6 +904,26 @@ impl<const N: usize> FilterTable<N> {
         match self {
             FilterTable::Separable(t) => t.weight(dx, dy),
             FilterTable::Full(t) => t.weight(dx, dy),
+        }
+    }
+
+    /// The weights at many offsets, `out[i] = weight(dx[i], dy[i])`, four lanes at a time for
+    /// separable tables ([`SeparableTable::weights`]).
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
+    ///
+    /// ```
+    /// use nyquist::filter::{FilterTable, Interpolation, Lanczos};
+    /// let t: FilterTable = FilterTable::new(&Lanczos::default(), Interpolation::Nearest).unwrap();
+    /// let mut w = [0.0f32; 3];
+    /// t.weights(&[0.0, 1.5, 9.0], &[0.0, -2.2, 0.0], &mut w).unwrap();
+    /// assert_eq!(w, [t.weight(0.0, 0.0), t.weight(1.5, -2.2), 0.0]);
+    /// ```
+    pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
+        match self {
+            FilterTable::Separable(t) => t.weights(dx, dy, out),
+            FilterTable::Full(t) => t.weights(dx, dy, out),
         }
     }
 
@@ -985,6 +1078,64 @@ impl TableView<'_> {
             self.interp,
             d,
         ))
+    }
+
+    /// The weights at many offsets, `out[i] = weight(dx[i], dy[i])`, four lanes at a time for
+    /// separable tables.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
+    ///
+    /// ```
+    /// use nyquist::filter::{FilterTable, Gaussian, Interpolation};
+    /// let t: FilterTable = FilterTable::new(&Gaussian::default(), Interpolation::Linear).unwrap();
+    /// let (dx, dy) = ([0.1f32; 6], [-0.4f32; 6]);
+    /// let mut w = [0.0f32; 6];
+    /// t.view().weights(&dx, &dy, &mut w).unwrap();
+    /// assert!(w.iter().all(|&x| x == t.weight(0.1, -0.4)));
+    /// ```
+    pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
+        check_batch(dx, dy, out)?;
+        let g = self.grid;
+        match self.data {
+            ViewData::Separable(vx, vy) => {
+                let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
+                let product =
+                    |a: [f32; 4], b: [f32; 4]| [a[0] * b[0], a[1] * b[1], a[2] * b[2], a[3] * b[3]];
+                match self.interp {
+                    Interpolation::Nearest => separable_batch(
+                        dx,
+                        dy,
+                        out,
+                        |x, y| {
+                            product(
+                                factor4(vx, g, rx, sx, Interpolation::Nearest, x),
+                                factor4(vy, g, ry, sy, Interpolation::Nearest, y),
+                            )
+                        },
+                        |x, y| self.weight(x, y),
+                    ),
+                    Interpolation::Linear => separable_batch(
+                        dx,
+                        dy,
+                        out,
+                        |x, y| {
+                            product(
+                                factor4(vx, g, rx, sx, Interpolation::Linear, x),
+                                factor4(vy, g, ry, sy, Interpolation::Linear, y),
+                            )
+                        },
+                        |x, y| self.weight(x, y),
+                    ),
+                }
+            }
+            ViewData::Full(_) => {
+                for ((o, &x), &y) in out.iter_mut().zip(dx).zip(dy) {
+                    *o = self.weight(x, y);
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The weights of a whole footprint at once: `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`

@@ -1033,6 +1033,35 @@ fn valid_filter() -> impl Strategy<Value = FilterKind> {
 
 proptest! {
     #[test]
+    fn batch_weights_equal_single_lookups(
+        f in valid_filter(),
+        pts in proptest::collection::vec((any_f32(), any_f32()), 0..23),
+        linear: bool,
+        full: bool,
+    ) {
+        let interp = if linear { Interpolation::Linear } else { Interpolation::Nearest };
+        let table: FilterTable = if full {
+            Table2d::new(&f, interp).map(FilterTable::Full).unwrap()
+        } else {
+            FilterTable::new(&f, interp).unwrap()
+        };
+        let dx: Vec<f32> = pts.iter().map(|p| p.0).collect();
+        let dy: Vec<f32> = pts.iter().map(|p| p.1).collect();
+        let mut out = std::vec![f32::NAN; pts.len()];
+        table.weights(&dx, &dy, &mut out).unwrap();
+        let mut via_view = std::vec![f32::NAN; pts.len()];
+        table.view().weights(&dx, &dy, &mut via_view).unwrap();
+        for i in 0..pts.len() {
+            let w = table.weight(dx[i], dy[i]);
+            prop_assert_eq!(out[i].to_bits(), w.to_bits(), "{} at ({}, {})", f, dx[i], dy[i]);
+            prop_assert_eq!(via_view[i].to_bits(), w.to_bits());
+        }
+        if !pts.is_empty() {
+            prop_assert!(table.weights(&dx, &dy[1..], &mut out).is_err());
+        }
+    }
+
+    #[test]
     fn eval_is_finite_and_zero_past_the_radius(f in valid_filter(), x in any_f32(), y in any_f32()) {
         let v = f.eval(x, y);
         prop_assert!(v.is_finite(), "{f}: eval({x}, {y}) = {v}");
