@@ -2,10 +2,10 @@
 //!
 //! Everything here fills a slice the caller owns and never allocates. The randomness comes from
 //! any [`rand_core::Rng`] (`R: Rng + ?Sized`, so `&mut dyn Rng` works too); the crate's default is
-//! [`crate::rng::DefaultRng`] (PCG32), seeded with [`crate::rng::default_rng`]. Each call draws
-//! one `u64` from it, the key of a [`crate::rng::CounterRng`] whose words (no serial chain
-//! between them) supply the per-element randomness. Bounded integers are drawn without modulo
-//! bias (Lemire's method).
+//! [`crate::rng::DefaultRng`] (PCG32), seeded with [`crate::rng::default_rng`]. The stratified
+//! and Latin-hypercube fills draw one `u64` from it, the key of a [`crate::rng::CounterRng`]
+//! whose words (no serial chain between them) supply the per-element randomness; [`shuffle`]
+//! draws from it directly. Bounded integers are drawn without modulo bias (Lemire's method).
 //!
 //! | function | what it writes |
 //! |---|---|
