@@ -267,6 +267,21 @@ fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
                     );
                 }
             }
+            // The batch lookup equals the single lookups, on the table and on its view.
+            let dx: Vec<f32> = ctx.offsets.iter().chain(&ctx.us).map(|p| p[0]).collect();
+            let dy: Vec<f32> = ctx.offsets.iter().chain(&ctx.us).map(|p| p[1]).collect();
+            let (mut batch, mut via_view) = (vec![7.0f32; dx.len()], vec![6.0f32; dx.len()]);
+            t.weights(&dx, &dy, &mut batch).unwrap();
+            v.weights(&dx, &dy, &mut via_view).unwrap();
+            for i in 0..dx.len() {
+                let want = t.weight(dx[i], dy[i]);
+                assert_eq!(batch[i].to_bits(), want.to_bits(), "{name}: weights[{i}]");
+                assert_eq!(via_view[i].to_bits(), want.to_bits(), "{name}: view weights[{i}]");
+            }
+            assert!(matches!(
+                t.weights(&dx, &dy[1..], &mut batch),
+                Err(Error::BufferLength { .. })
+            ));
         }
         Err(e) => {
             assert!(!valid, "{name}: FilterTable rejected radius {r:?}: {e:?}");

@@ -2,7 +2,7 @@
 
 use nyquist::radical::{
     PRIME_COUNT, PRIMES, fill_radical_inverse, folded_radical_inverse, folded_radical_inverse_f64,
-    inverse_radical_inverse, prime, radical_inverse, radical_inverse_f64,
+    inverse_radical_inverse, prime, radical_inverse, radical_inverse_at, radical_inverse_f64,
     scrambled_radical_inverse, scrambled_radical_inverse_f64,
 };
 
@@ -80,6 +80,26 @@ pub fn radical(data: &[u8]) {
             want.to_bits(),
             "fill_radical_inverse({dim}, {first})[{i}] = {v}, radical_inverse gives {want}"
         );
+    }
+
+    // radical_inverse_at == per-value for a batch of arbitrary indices (small, 32-bit and wide
+    // ones mixed, so base 2 meets both of its block paths); a short `out` is an error.
+    let batch: Vec<u64> = (0..len as u64)
+        .map(|i| match i % 3 {
+            0 => a.wrapping_add(i),
+            1 => (a ^ seed.rotate_left(i as u32)) >> 32,
+            _ => seed.wrapping_mul(i | 1),
+        })
+        .collect();
+    let mut at = vec![2.0f32; len + 1];
+    radical_inverse_at(dim, &batch, &mut at).unwrap();
+    for (i, (&v, &idx)) in at.iter().zip(&batch).enumerate() {
+        let want = radical_inverse(dim, idx);
+        assert_eq!(v.to_bits(), want.to_bits(), "radical_inverse_at({dim})[{i}] at {idx}");
+    }
+    assert_eq!(at[len], 2.0, "radical_inverse_at wrote past the batch");
+    if len > 0 {
+        assert!(radical_inverse_at(dim, &batch, &mut at[..len - 1]).is_err());
     }
 
     // inverse_radical_inverse: total for any arguments …
