@@ -4,18 +4,8 @@
 //! file beside the target and renamed into place, so a failure leaves nothing behind.
 #![forbid(unsafe_code)]
 
-mod analyze;
-mod compare;
-mod filter;
-mod output;
-mod points;
-mod progress;
-mod raster;
-mod render;
-mod scene;
-mod svg;
-
 use clap::{Parser, Subcommand};
+use nyquist_cli::{analyze, compare, filter, points, render};
 use std::process::ExitCode;
 
 /// Sampling and reconstruction for image synthesis: point sets, filters, test renders and

@@ -263,9 +263,15 @@ impl Film {
     /// [`Film::image`] applies what is held, in index order).
     ///
     /// # Errors
-    /// [`Error::Config`] if a tile with this index was already merged or is held.
+    /// [`Error::Config`] if a tile with this index was already merged or is held, or if the
+    /// tile was made by another film (its pixels are not this film's).
     pub fn merge(&mut self, tile: FilmTile) -> Result<(), Error> {
         let index = tile.index();
+        if !Arc::ptr_eq(tile.setup(), &self.setup) {
+            return Err(Error::Config(format!(
+                "tile {index} was made by another film"
+            )));
+        }
         if index < self.next_tile || self.pending.contains_key(&index) {
             return Err(Error::Config(format!("tile {index} merged twice")));
         }

@@ -225,8 +225,9 @@ impl FilmTile {
         let grown = Bounds::new(
             (b.x0 as f64 - 0.5 - f64::from(rx)).ceil() as i64,
             (b.y0 as f64 - 0.5 - f64::from(ry)).ceil() as i64,
-            (b.x1 as f64 - 0.5 + f64::from(rx)).floor() as i64 + 1,
-            (b.y1 as f64 - 0.5 + f64::from(ry)).floor() as i64 + 1,
+            // Saturating: a rectangle reaching i64::MAX (any `TileSpec` is valid) must not wrap.
+            ((b.x1 as f64 - 0.5 + f64::from(rx)).floor() as i64).saturating_add(1),
+            ((b.y1 as f64 - 0.5 + f64::from(ry)).floor() as i64).saturating_add(1),
         );
         let fb = setup.pixel_bounds;
         let mut pixel_bounds = grown.intersect(&fb);
@@ -259,6 +260,11 @@ impl FilmTile {
     /// The pixels this tile stores: its bounds grown by the filter radius, clipped to the film.
     pub fn pixel_bounds(&self) -> Bounds {
         self.geometry.bounds
+    }
+
+    /// The film setup this tile was made from.
+    pub(crate) fn setup(&self) -> &Arc<Setup> {
+        &self.setup
     }
 
     pub(crate) fn pixels(&self) -> &[Pixel] {
@@ -366,10 +372,13 @@ impl FilmTile {
         }
         let rgb = self.clamp(rgb);
         self.stats.samples += 1;
+        // In f64: the f32 product of two finite values can overflow to ±∞ (f32::MAX × 2), and
+        // the f64 product of two f32s is exact, so finite input keeps the sums finite.
+        let w = f64::from(weight);
         let l = [
-            f64::from(rgb[0] * weight),
-            f64::from(rgb[1] * weight),
-            f64::from(rgb[2] * weight),
+            f64::from(rgb[0]) * w,
+            f64::from(rgb[1]) * w,
+            f64::from(rgb[2]) * w,
         ];
         let fp = self.footprint(p)?;
         Some((fp, l))

@@ -449,3 +449,50 @@ proptest! {
         prop_assert!(image.data().iter().all(|v| v.is_finite() && *v >= 0.0));
     }
 }
+
+#[test]
+fn huge_finite_samples_keep_pixel_sums_finite() {
+    // Found by the `film` fuzz target: f32::MAX × 4 overflowed to ∞ when the radiance was
+    // scaled by the sample weight in f32, and a second, negative sample then made the sum NaN.
+    let mut film = Film::new(FilmConfig::new(2, 2), &Boxcar::default()).unwrap();
+    let spec = film.tiles(2).unwrap()[0];
+    let mut tile = film.tile(spec);
+    tile.add_sample([0.5, 0.5], [f32::MAX, 1.0, 1.0], 4.0);
+    tile.add_sample([0.5, 0.5], [-f32::MAX, 1.0, 1.0], 2.0);
+    assert_eq!((tile.stats().samples, tile.rejected()), (2, 0));
+    film.merge(tile).unwrap();
+    let p = film.pixel(0, 0).unwrap();
+    assert_eq!(p.rgb_sum, [2.0 * f64::from(f32::MAX), 6.0, 6.0]);
+    assert_eq!(p.weight_sum, 2.0);
+    let (image, _) = film.image();
+    assert_eq!(image.get(0, 0), [f32::MAX, 3.0, 3.0]);
+}
+
+#[test]
+fn a_tile_rectangle_reaching_i64_max_stores_the_films_pixels() {
+    // Found by the `film` fuzz target: `⌊x1 − ½ + r⌋ + 1` overflowed for x1 = i64::MAX.
+    let mut film = Film::new(FilmConfig::new(3, 2), &Triangle::default()).unwrap();
+    let spec = nyquist_film::TileSpec {
+        index: 0,
+        bounds: Bounds::new(i64::MIN, i64::MIN, i64::MAX, i64::MAX),
+    };
+    let mut tile = film.tile(spec);
+    assert_eq!(tile.pixel_bounds(), film.pixel_bounds());
+    tile.add_sample([1.5, 0.5], [1.0; 3], 1.0);
+    film.merge(tile).unwrap();
+    assert_eq!(film.pixel(1, 0).unwrap().weight_sum, 4.0);
+}
+
+#[test]
+fn merging_a_tile_of_another_film_is_an_error() {
+    // Any FilmTile is a valid argument to `merge`; one made by a bigger film must be refused,
+    // not index past this film's pixels.
+    let big = Film::new(FilmConfig::new(16, 16), &Boxcar::default()).unwrap();
+    let mut small = Film::new(FilmConfig::new(4, 4), &Boxcar::default()).unwrap();
+    let mut tile = big.tile(big.tiles(16).unwrap()[0]);
+    tile.add_sample([10.5, 10.5], [1.0; 3], 1.0);
+    assert!(small.merge(tile).is_err());
+    assert_eq!(small.stats(), nyquist_film::FilmStats::default());
+    // The small film still takes its own tiles.
+    small.merge(small.tile(small.tiles(4).unwrap()[0])).unwrap();
+}

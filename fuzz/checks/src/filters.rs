@@ -276,7 +276,11 @@ fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
             for i in 0..dx.len() {
                 let want = t.weight(dx[i], dy[i]);
                 assert_eq!(batch[i].to_bits(), want.to_bits(), "{name}: weights[{i}]");
-                assert_eq!(via_view[i].to_bits(), want.to_bits(), "{name}: view weights[{i}]");
+                assert_eq!(
+                    via_view[i].to_bits(),
+                    want.to_bits(),
+                    "{name}: view weights[{i}]"
+                );
             }
             assert!(matches!(
                 t.weights(&dx, &dy[1..], &mut batch),

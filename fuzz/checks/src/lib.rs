@@ -1,5 +1,5 @@
 //! Contract checks for the nyquist fuzz targets, one function per public entry family of the
-//! core. Each takes arbitrary bytes, decodes them into arguments with [`Bytes`] (missing bytes
+//! core, plus the film (`nyquist-film`) and the command line's string parsers (`nyquist-cli`). Each takes arbitrary bytes, decodes them into arguments with [`Bytes`] (missing bytes
 //! read as zero, so every byte string is a valid input), calls the API and asserts its documented
 //! contract: no panic, values in range, counts exact, errors typed and the ones the docs name.
 //! A failed assertion panics, which libFuzzer reports as a crash and the stable replay test
@@ -7,6 +7,8 @@
 
 mod analysis;
 mod bytes;
+mod cli_parsers;
+mod film;
 mod filters;
 mod permutation;
 mod radical;
@@ -16,6 +18,8 @@ mod stratify;
 
 pub use analysis::analysis;
 pub use bytes::Bytes;
+pub use cli_parsers::cli_parsers;
+pub use film::film;
 pub use filters::filters;
 pub use permutation::permutation;
 pub use radical::radical;
@@ -30,6 +34,8 @@ pub type Check = fn(&[u8]);
 /// `regressions/`.
 pub const TARGETS: &[(&str, Check)] = &[
     ("analysis", analysis),
+    ("cli_parsers", cli_parsers),
+    ("film", film),
     ("filters", filters),
     ("permutation", permutation),
     ("radical", radical),

@@ -95,7 +95,11 @@ pub fn radical(data: &[u8]) {
     radical_inverse_at(dim, &batch, &mut at).unwrap();
     for (i, (&v, &idx)) in at.iter().zip(&batch).enumerate() {
         let want = radical_inverse(dim, idx);
-        assert_eq!(v.to_bits(), want.to_bits(), "radical_inverse_at({dim})[{i}] at {idx}");
+        assert_eq!(
+            v.to_bits(),
+            want.to_bits(),
+            "radical_inverse_at({dim})[{i}] at {idx}"
+        );
     }
     assert_eq!(at[len], 2.0, "radical_inverse_at wrote past the batch");
     if len > 0 {

@@ -1,0 +1,22 @@
+//! The library behind the `nyquist` command: one module per subcommand (its clap arguments and
+//! `run`), and the string parsers the command line uses (`render::parse_size`,
+//! `render::parse_filter`, `compare::parse_filters`, `points::parse_grid`,
+//! `points::parse_pixel`, `analyze::parse_csv`). The binary (`main.rs`) only dispatches; the
+//! library exists so that the fuzz targets and tests can call the parsers directly.
+//!
+//! ```
+//! assert_eq!(nyquist_cli::render::parse_size("32x16"), Ok([32, 16]));
+//! assert!(nyquist_cli::render::parse_size("0x16").is_err());
+//! ```
+#![forbid(unsafe_code)]
+
+pub mod analyze;
+pub mod compare;
+pub mod filter;
+pub mod output;
+pub mod points;
+pub mod progress;
+pub mod raster;
+pub mod render;
+pub mod scene;
+pub mod svg;

@@ -1,0 +1,339 @@
+//! Golden outputs: FNV-1a 64 hashes of fixed CLI runs, checked in as `tests/golden/hashes.txt`
+//! (png's `results.txt` idea), so any change to generated values is a deliberate, reviewed
+//! change. Covered: `nyquist points` for every point set and every pixel sampler, and a small
+//! zone-plate `nyquist render` (written as PFM, the file's bytes hashed) per filter and per
+//! sampler, all with fixed counts, dimensions, seeds and thread counts.
+//!
+//! After an intended change, re-bless and review the diff of `hashes.txt`:
+//! `NYQUIST_BLESS=1 cargo test -p nyquist-cli --test golden`.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+const BLESS_HINT: &str = "if the change is intended, re-bless with \
+    `NYQUIST_BLESS=1 cargo test -p nyquist-cli --test golden` and commit cli/tests/golden/hashes.txt";
+
+/// FNV-1a, 64-bit (Fowler, Noll, Vo: offset basis 0xcbf29ce484222325, prime 0x100000001b3).
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+#[test]
+fn fnv1a64_matches_the_published_test_vectors() {
+    // From the FNV reference test suite (isthe.com/chongo/tech/comp/fnv).
+    assert_eq!(fnv1a64(b""), 0xcbf2_9ce4_8422_2325);
+    assert_eq!(fnv1a64(b"a"), 0xaf63_dc4c_8601_ec8c);
+    assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
+}
+
+/// One golden run: its name in `hashes.txt` and the `nyquist` arguments. Render runs write to
+/// a temporary `.pfm` (the `{out}` argument) whose bytes are hashed; the others hash stdout.
+struct Run {
+    name: String,
+    args: Vec<String>,
+}
+
+fn run(name: impl Into<String>, args: &[&str]) -> Run {
+    Run {
+        name: name.into(),
+        args: args.iter().map(|s| s.to_string()).collect(),
+    }
+}
+
+/// Every golden run. Small enough for a debug build to finish in well under a second each.
+fn runs() -> Vec<Run> {
+    let mut out = Vec::new();
+    // Point sets: 64 points, fixed dims and seed.
+    for (sampler, dims) in [
+        ("random", "3"),
+        ("uniform", "2"),
+        ("stratified", "2"),
+        ("lhs", "3"),
+        ("vdc", "1"),
+        ("halton", "3"),
+        ("hammersley", "3"),
+        ("halton-zaremba", "3"),
+        ("hammersley-zaremba", "3"),
+        ("zero-two", "2"),
+        ("sobol", "3"),
+    ] {
+        out.push(run(
+            format!("points/{sampler}"),
+            &[
+                "points",
+                "--sampler",
+                sampler,
+                "--count",
+                "64",
+                "--dims",
+                dims,
+                "--seed",
+                "7",
+            ],
+        ));
+    }
+    out.push(run(
+        "points/sobol-skip-8d",
+        &[
+            "points",
+            "--sampler",
+            "sobol",
+            "--count",
+            "32",
+            "--dims",
+            "8",
+            "--skip",
+            "1000",
+        ],
+    ));
+    // Pixel samplers: the 16 samples of pixel (3, 5), 4 dimensions each.
+    for sampler in [
+        "random",
+        "uniform",
+        "stratified",
+        "halton",
+        "hammersley",
+        "zero-two",
+        "sobol",
+        "best-candidate",
+        "adaptive",
+    ] {
+        let mut args = vec![
+            "points",
+            "--sampler",
+            sampler,
+            "--spp",
+            "16",
+            "--pixel",
+            "3,5",
+            "--dims",
+            "4",
+            "--seed",
+            "7",
+        ];
+        if matches!(sampler, "halton" | "hammersley" | "sobol") {
+            args.extend(["--resolution", "8x8"]);
+        }
+        out.push(run(format!("pixel/{sampler}"), &args));
+    }
+    // Renders: a 32 × 32 zone plate per filter, and a 16 × 16 one per sampler.
+    for filter in [
+        "box",
+        "triangle",
+        "gaussian",
+        "mitchell",
+        "lanczos",
+        "mitchell:b=0.5,c=0.25",
+        "gaussian:radius=1.5,sigma=0.5",
+    ] {
+        out.push(run(
+            format!("render/filter-{filter}"),
+            &[
+                "render",
+                "--scene",
+                "zoneplate",
+                "--sampler",
+                "stratified",
+                "--spp",
+                "4",
+                "--filter",
+                filter,
+                "--size",
+                "32x32",
+                "--seed",
+                "7",
+                "--threads",
+                "2",
+                "-o",
+                "{out}",
+            ],
+        ));
+    }
+    for sampler in [
+        "uniform",
+        "random",
+        "stratified",
+        "halton",
+        "hammersley",
+        "zero-two",
+        "sobol",
+        "best-candidate",
+        "adaptive",
+    ] {
+        out.push(run(
+            format!("render/sampler-{sampler}"),
+            &[
+                "render",
+                "--scene",
+                "zoneplate",
+                "--sampler",
+                sampler,
+                "--spp",
+                "4",
+                "--filter",
+                "box",
+                "--size",
+                "16x16",
+                "--seed",
+                "7",
+                "--threads",
+                "2",
+                "-o",
+                "{out}",
+            ],
+        ));
+    }
+    out
+}
+
+/// Runs `nyquist` with `args` (`{out}` replaced by a fresh temporary `.pfm`) and hashes its
+/// stdout, or the output file when there is one. Panics with the command on failure.
+fn hash_of(name: &str, args: &[String]) -> u64 {
+    let out = temp_path(name);
+    let args: Vec<String> = args
+        .iter()
+        .map(|a| a.replace("{out}", &out.to_string_lossy()))
+        .collect();
+    let o = Command::new(env!("CARGO_BIN_EXE_nyquist"))
+        .args(&args)
+        .output()
+        .expect("run nyquist");
+    assert!(
+        o.status.success(),
+        "{name}: `nyquist {}` failed: {}",
+        args.join(" "),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    if args.iter().any(|a| a.ends_with(".pfm")) {
+        let bytes = std::fs::read(&out).expect("render output");
+        let _ = std::fs::remove_file(&out);
+        fnv1a64(&bytes)
+    } else {
+        fnv1a64(&o.stdout)
+    }
+}
+
+fn temp_path(name: &str) -> PathBuf {
+    let safe: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    std::env::temp_dir().join(format!("nyquist-golden-{}-{safe}.pfm", std::process::id()))
+}
+
+fn hashes_file() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/golden/hashes.txt")
+}
+
+/// `name hash` lines; `#` comments and blank lines skipped.
+fn read_hashes(path: &Path) -> BTreeMap<String, String> {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    text.lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty() && !l.starts_with('#'))
+        .filter_map(|l| l.split_once(' '))
+        .map(|(n, h)| (n.to_owned(), h.trim().to_owned()))
+        .collect()
+}
+
+#[test]
+fn cli_outputs_match_the_golden_hashes() {
+    let runs = runs();
+    let got: Vec<(String, String, String)> = runs
+        .iter()
+        .map(|r| {
+            let h = format!("{:016x}", hash_of(&r.name, &r.args));
+            (r.name.clone(), h, r.args.join(" "))
+        })
+        .collect();
+    let path = hashes_file();
+    if std::env::var_os("NYQUIST_BLESS").is_some_and(|v| v == "1") {
+        let mut text = String::from(
+            "# FNV-1a 64 of fixed `nyquist` runs (cli/tests/golden.rs): stdout of `points`, the PFM\n\
+             # file of `render`. Re-bless: NYQUIST_BLESS=1 cargo test -p nyquist-cli --test golden\n",
+        );
+        for (name, h, _) in &got {
+            text.push_str(&format!("{name} {h}\n"));
+        }
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(&path, text).unwrap();
+        eprintln!("blessed {} hashes into {}", got.len(), path.display());
+        return;
+    }
+    let want = read_hashes(&path);
+    let mut problems = Vec::new();
+    for (name, h, args) in &got {
+        match want.get(name) {
+            Some(w) if w == h => {}
+            Some(w) => problems.push(format!(
+                "{name}: `nyquist {args}` now hashes to {h}, golden {w}"
+            )),
+            None => problems.push(format!("{name}: `nyquist {args}` has no golden hash")),
+        }
+    }
+    for name in want.keys() {
+        if !got.iter().any(|(n, _, _)| n == name) {
+            problems.push(format!("{name}: in hashes.txt but no longer run"));
+        }
+    }
+    assert!(
+        problems.is_empty(),
+        "golden outputs changed ({} of {}):\n  {}\n{BLESS_HINT}",
+        problems.len(),
+        got.len(),
+        problems.join("\n  ")
+    );
+}
+
+#[test]
+fn renders_hash_the_same_for_1_2_and_3_threads() {
+    let args = |threads: &str| -> Vec<String> {
+        [
+            "render",
+            "--scene",
+            "zoneplate",
+            "--sampler",
+            "sobol",
+            "--spp",
+            "4",
+            "--filter",
+            "mitchell",
+            "--size",
+            "40x24",
+            "--seed",
+            "3",
+            "--threads",
+            threads,
+            "-o",
+            "{out}",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect()
+    };
+    let one = hash_of("threads-1", &args("1"));
+    assert_eq!(one, hash_of("threads-2", &args("2")), "1 vs 2 threads");
+    assert_eq!(one, hash_of("threads-3", &args("3")), "1 vs 3 threads");
+}
+
+#[test]
+fn every_golden_run_has_a_distinct_name_and_output() {
+    let runs = runs();
+    let mut names: Vec<&str> = runs.iter().map(|r| r.name.as_str()).collect();
+    names.sort_unstable();
+    names.dedup();
+    assert_eq!(names.len(), runs.len(), "duplicate golden run names");
+    // Distinct hashes in the file: two runs hashing alike would mean one of them ignores its
+    // arguments (e.g. a filter spec that did not reach the film). The one exception: the
+    // adaptive sampler's samples are those of the (0,2) sampler it wraps.
+    let mut want = read_hashes(&hashes_file());
+    assert_eq!(want.get("pixel/adaptive"), want.get("pixel/zero-two"));
+    want.remove("pixel/adaptive");
+    let mut hashes: Vec<&String> = want.values().collect();
+    hashes.sort_unstable();
+    hashes.dedup();
+    assert_eq!(hashes.len(), want.len(), "two golden runs share a hash");
+}
