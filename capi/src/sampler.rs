@@ -287,6 +287,52 @@ pub unsafe extern "C" fn nyq_sampler_start_pixel_sample(
     })
 }
 
+/// Runs `get` on the sampler behind `sampler` and writes its pair to `out[0..2]`.
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing two `float`s.
+unsafe fn pair(
+    sampler: *mut NyqSampler,
+    out: *mut f32,
+    get: impl FnOnce(&mut dyn Sampler) -> [f32; 2],
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        need(out)?;
+        let v = get(s.inner.as_dyn());
+        // SAFETY: `out` is writable for two floats (caller; null checked above).
+        unsafe { put_array(out, v) }
+    })
+}
+
+/// Runs `fill` on the sampler behind `sampler` over `out[0..len]`; `len` must be a multiple of
+/// `arity` (`NYQ_ERR_BUFFER` otherwise).
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for writing `len` floats.
+unsafe fn array(
+    sampler: *mut NyqSampler,
+    out: *mut f32,
+    len: usize,
+    arity: usize,
+    fill: impl FnOnce(&mut dyn Sampler, &mut [f32]),
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        // SAFETY: `out` is null or writable for `len` floats (caller).
+        let out = unsafe { slice_mut(out, len)? };
+        if !len.is_multiple_of(arity) {
+            return Err(NyqStatus::NYQ_ERR_BUFFER);
+        }
+        fill(s.inner.as_dyn(), out);
+        Ok(())
+    })
+}
+
 /// Writes the value of the current dimension, in `[0, 1)`, to `*out` and advances the cursor
 /// by one.
 ///
@@ -350,14 +396,8 @@ pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut 
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_sampler_get_2d(sampler: *mut NyqSampler, out: *mut f32) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        need(out)?;
-        let v = s.inner.as_dyn().get_2d();
-        // SAFETY: `out` is writable for two floats (caller; null checked above).
-        unsafe { put_array(out, v) }
-    })
+    // SAFETY: the caller's contract is `pair`'s.
+    unsafe { pair(sampler, out, |s| s.get_2d()) }
 }
 
 /// Writes the image sample (the offset inside the pixel, dimensions 0 and 1 whatever the
@@ -388,14 +428,8 @@ pub unsafe extern "C" fn nyq_sampler_get_pixel_2d(
     sampler: *mut NyqSampler,
     out: *mut f32,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        need(out)?;
-        let v = s.inner.as_dyn().get_pixel_2d();
-        // SAFETY: `out` is writable for two floats (caller; null checked above).
-        unsafe { put_array(out, v) }
-    })
+    // SAFETY: the caller's contract is `pair`'s.
+    unsafe { pair(sampler, out, |s| s.get_pixel_2d()) }
 }
 
 /// Fills `out[0..len]` with an array of `len` values for the current sample at the current
@@ -428,14 +462,8 @@ pub unsafe extern "C" fn nyq_sampler_get_array_1d(
     out: *mut f32,
     len: usize,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        // SAFETY: `out` is null or writable for `len` floats (caller).
-        let out = unsafe { slice_mut(out, len)? };
-        s.inner.as_dyn().get_array_1d(out);
-        Ok(())
-    })
+    // SAFETY: the caller's contract is `array`'s.
+    unsafe { array(sampler, out, len, 1, |s, out| s.get_array_1d(out)) }
 }
 
 /// Fills `out[0..len]` with `len / 2` 2D values `[u0, v0, u1, v1, …]` for the current sample:
@@ -468,17 +496,8 @@ pub unsafe extern "C" fn nyq_sampler_get_array_2d(
     out: *mut f32,
     len: usize,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        // SAFETY: `out` is null or writable for `len` floats (caller).
-        let out = unsafe { slice_mut(out, len)? };
-        if !len.is_multiple_of(2) {
-            return Err(NyqStatus::NYQ_ERR_BUFFER);
-        }
-        s.inner.as_dyn().get_array_2d(out);
-        Ok(())
-    })
+    // SAFETY: the caller's contract is `array`'s.
+    unsafe { array(sampler, out, len, 2, |s, out| s.get_array_2d(out)) }
 }
 
 /// What a camera needs for one pixel sample.
