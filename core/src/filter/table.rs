@@ -62,7 +62,7 @@ pub enum Interpolation {
 }
 
 /// Validates a plugin filter's radius for tabulation.
-fn table_radius<F: Filter + ?Sized>(filter: &F) -> Result<[f32; 2], Error> {
+pub(super) fn table_radius<F: Filter + ?Sized>(filter: &F) -> Result<[f32; 2], Error> {
     let [rx, ry] = radius_or_zero(filter);
     if rx == 0.0 || ry == 0.0 {
         return Err(Error::OutOfRange {
@@ -120,7 +120,7 @@ const VALUE_CAP: f32 = 4_611_686_018_427_387_904.0;
 /// A filter value made safe for a table: non-finite values (a broken plugin) become 0 and
 /// magnitudes are capped at `2⁶²` (no practical filter comes near).
 #[inline]
-fn finite_or_zero(v: f32) -> f32 {
+pub(super) fn finite_or_zero(v: f32) -> f32 {
     if v.is_finite() {
         v.clamp(-VALUE_CAP, VALUE_CAP)
     } else {
@@ -133,7 +133,7 @@ fn finite_or_zero(v: f32) -> f32 {
 /// values into a branch, which mispredicts at every footprint edge. Entries are finite and
 /// capped, so the product is exactly ±0 outside.
 #[inline(always)]
-fn mask(inside: bool) -> f32 {
+pub(super) fn mask(inside: bool) -> f32 {
     if inside { 1.0 } else { 0.0 }
 }
 
@@ -399,7 +399,7 @@ fn per_weight(
 /// `ny`. Square footprints (symmetric filters, the usual case) are recognised by a multiply, so
 /// the film's hot path divides nothing.
 #[inline(always)]
-fn check_footprint(nx: usize, out: &[f32]) -> Result<usize, Error> {
+pub(super) fn check_footprint(nx: usize, out: &[f32]) -> Result<usize, Error> {
     let len = out.len();
     if nx != 0 && len != 0 {
         if nx.checked_mul(nx) == Some(len) {

@@ -1008,11 +1008,19 @@ fn any_f32() -> impl Strategy<Value = f32> {
     ]
 }
 
-fn radius() -> impl Strategy<Value = [f32; 2]> {
+fn radius() -> impl Strategy<Value = [f32; 2]> + Clone {
     [MIN_RADIUS..=MAX_RADIUS, MIN_RADIUS..=8.0f32]
 }
 
 fn valid_filter() -> impl Strategy<Value = FilterKind> {
+    filter_with(radius())
+}
+
+/// Every built-in, radii from `radius`.
+fn filter_with(
+    radius: impl Strategy<Value = [f32; 2]> + Clone + 'static,
+) -> impl Strategy<Value = FilterKind> {
+    let radius = move || radius.clone();
     prop_oneof![
         radius().prop_map(|r| FilterKind::Boxcar(Boxcar::new(r).unwrap())),
         radius().prop_map(|r| FilterKind::Triangle(Triangle::new(r).unwrap())),
@@ -1029,6 +1037,11 @@ fn valid_filter() -> impl Strategy<Value = FilterKind> {
         )
             .prop_map(|(r, t)| FilterKind::Lanczos(Lanczos::new(r, t).unwrap())),
     ]
+}
+
+/// Radii a phase table holds (below 8 pixels).
+fn phase_radius() -> impl Strategy<Value = [f32; 2]> + Clone {
+    [MIN_RADIUS..7.99f32, MIN_RADIUS..7.99f32]
 }
 
 proptest! {
@@ -1127,5 +1140,154 @@ fn sampled_offsets_stay_in_the_cell_they_were_drawn_from() {
                 );
             }
         }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Phase tables.
+
+/// Max |phase-table lookup − eval| over a (2k+1)² grid on [−r, r]².
+fn phase_error(f: &dyn Filter, t: &PhaseTable, k: i32) -> f64 {
+    let [rx, ry] = f.radius();
+    let mut worst = 0.0f64;
+    for j in -k..=k {
+        let y = j as f32 / k as f32 * ry;
+        for i in -k..=k {
+            let x = i as f32 / k as f32 * rx;
+            let e = (f64::from(t.weight(x, y)) - f64::from(f.eval(x, y))).abs();
+            worst = worst.max(e);
+        }
+    }
+    worst
+}
+
+#[test]
+fn phase_rows_are_exact_at_the_stored_phases() {
+    // Row j, tap k holds f(k + j/64 − r) (offset rounded once from f64): reading it at phase
+    // j/64 (exact in f32) returns that value bit for bit, for every built-in and radius.
+    for (f, _) in cases() {
+        if f.radius()[0] >= 8.0 || f.radius()[1] >= 8.0 {
+            continue;
+        }
+        let t = PhaseTable::new(&f).unwrap();
+        for (a, axis) in [Axis::X, Axis::Y].into_iter().enumerate() {
+            let r = f.radius()[a];
+            let taps = t.taps(axis);
+            assert_eq!(taps, (2.0 * f64::from(r)).floor() as usize + 1, "{f}");
+            for j in 0..=PHASES {
+                let phase = j as f32 / PHASES as f32;
+                let mut w = [f32::NAN; MAX_TAPS];
+                assert_eq!(t.row(axis, phase, &mut w), taps);
+                for (k, &w) in w[..taps].iter().enumerate() {
+                    let d = (k as f64 + f64::from(phase) - f64::from(r)) as f32;
+                    let want = if d.abs() <= r {
+                        f.eval_1d(axis, d).unwrap()
+                    } else {
+                        0.0
+                    };
+                    assert_eq!(w, want, "{f} axis {a} phase {j}/64 tap {k}");
+                    assert_eq!(t.tap(axis, phase, k), w);
+                }
+                // The padding to a multiple of 4 holds 0.
+                for &p in &w[taps..taps.next_multiple_of(4)] {
+                    assert_eq!(p, 0.0, "{f}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn phase_table_error_is_below_the_64_entry_tables() {
+    // The film's table before phase tables was a 64-entry SeparableTable; the phase grid
+    // (spacing 1/64 pixel) is at least as fine for radii ≥ 1, and these are the measured bounds
+    // quoted in phase.rs's docs.
+    let rows: [(&str, f64); 5] = [
+        ("box", 0.0),
+        ("triangle", 4.8e-7),
+        ("gaussian", 2.5e-4),
+        ("mitchell", 2.2e-4),
+        ("lanczos", 2.3e-4),
+    ];
+    for (name, bound) in rows {
+        let f = FilterKind::parse(name).unwrap();
+        let phase = PhaseTable::new(&f).unwrap();
+        let table: FilterTable<64> = FilterTable::new(&f, Interpolation::Linear).unwrap();
+        let (ep, et) = (
+            phase_error(&f, &phase, 1000),
+            table_error(&f, table.view(), 1000),
+        );
+        std::println!("{name}: phase {ep:.3e}, 64-entry {et:.3e}");
+        assert!(ep <= bound, "{name}: phase error {ep} above {bound}");
+        assert!(ep <= et.max(1e-6), "{name}: phase {ep} vs table {et}");
+    }
+}
+
+#[test]
+fn phase_table_rejects_what_it_cannot_hold() {
+    let cone = Cone;
+    assert!(matches!(
+        PhaseTable::new(&cone),
+        Err(Error::OutOfRange { .. })
+    ));
+    let wide = Triangle::new([2.0, 8.0]).unwrap();
+    assert!(matches!(
+        PhaseTable::new(&wide),
+        Err(Error::OutOfRange { .. })
+    ));
+    let just = Triangle::new([2.0, 7.999]).unwrap();
+    assert_eq!(PhaseTable::new(&just).unwrap().taps(Axis::Y), 16);
+}
+
+proptest! {
+    #[test]
+    fn phase_footprint_weights_match_single_lookups(
+        f in filter_with(phase_radius()),
+        d0 in [-12.0f32..4.0, -12.0f32..4.0],
+        nx in 1usize..12,
+        ny in 1usize..12,
+    ) {
+        let t = PhaseTable::new(&f).unwrap();
+        let mut out = std::vec![f32::NAN; nx * ny];
+        t.footprint(d0, nx, &mut out).unwrap();
+        let peak = t.weight(0.0, 0.0).abs().max(1.0);
+        for j in 0..ny {
+            for i in 0..nx {
+                let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+                let (got, want) = (out[j * nx + i], t.weight(dx, dy));
+                // Equal up to the rounding of d0 + i against (d0 + r) + i: a few ulps of the
+                // offset times the table's slope (≤ 64 × the value step per cell).
+                prop_assert!(
+                    (got - want).abs() <= 1e-4 * peak * peak,
+                    "({i},{j}) at {dx},{dy}: footprint {got} single {want}"
+                );
+                if dx.abs() > f.radius()[0] || dy.abs() > f.radius()[1] {
+                    prop_assert_eq!(got, 0.0);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn phase_lookups_are_total_and_zero_past_the_radius(
+        f in filter_with(phase_radius()),
+        x in any_f32(),
+        y in any_f32(),
+        phase in any_f32(),
+    ) {
+        let t = PhaseTable::new(&f).unwrap();
+        let w = t.weight(x, y);
+        prop_assert!(w.is_finite());
+        if !(x.abs() <= f.radius()[0] && y.abs() <= f.radius()[1]) {
+            prop_assert_eq!(w, 0.0);
+        }
+        let mut row = [0.0f32; MAX_TAPS];
+        t.row(Axis::X, phase, &mut row);
+        prop_assert!(row.iter().all(|v| v.is_finite()));
+        // Out-of-range phases read as the nearest end (NaN as 0).
+        let clamped = if phase.is_nan() { 0.0 } else { phase.clamp(0.0, 1.0) };
+        let mut want = [0.0f32; MAX_TAPS];
+        t.row(Axis::X, clamped, &mut want);
+        prop_assert_eq!(row, want);
     }
 }

@@ -1,0 +1,362 @@
+//! The polyphase filter table: every weight of a sample's footprint along one axis from one
+//! interpolated table row, the film's fast path.
+//!
+//! A sample at `p` (pixel centres at integers + ½) reaches the pixels whose centres lie within
+//! the radius `r`: along one axis, the first is `⌈p − ½ − r⌉`, whose centre sits `φ − r` from
+//! the sample, with the *phase* `φ = ⌈p − ½ − r⌉ − (p − ½ − r) ∈ [0, 1)`; the next ones follow at
+//! unit steps. So every weight of the footprint is a function of `φ` and of the pixel's place
+//! `k` in it, the *tap*: `w_k(φ) = f(k + φ − r)`, `k = 0 … ⌊2r⌋`.
+//!
+//! The table stores those weights at [`PHASES`] + 1 phases `φ = j/64`, one row of taps per phase,
+//! and interpolates linearly between two rows: a footprint's weights along an axis cost one
+//! 4-wide multiply-add per four taps and no per-pixel index arithmetic — [`SeparableTable`]'s
+//! footprint needs a lookup per pixel column. Row `j`, tap `k` holds `f(k + j/64 − r)`, so the
+//! table is the linear interpolant of `f` on the uniform grid `−r + m/64` (spacing 1/64 pixel,
+//! finer than a 64-entry [`SeparableTable`]'s `r/63` for any radius above 1), laid out
+//! phase-major; [`weight`](PhaseTable::weight) reads the same grid for a single offset.
+//!
+//! Only separable filters with at most [`MAX_TAPS`] taps per axis (radius below 8 pixels) fit;
+//! others use [`FilterTable`]. A table is 8.3 KB.
+//!
+//! Max abs error against direct evaluation over a 2001 × 2001 grid on `[−r, r]²`, defaults (the
+//! test `phase_table_error_is_below_the_64_entry_tables` holds these bounds): box 0, triangle
+//! 4.8·10⁻⁷ (rounding), gaussian 2.4·10⁻⁴, mitchell 2.1·10⁻⁴, lanczos 2.2·10⁻⁴ — a 64-entry
+//! linear [`SeparableTable`] is 1.0·10⁻³, 8.7·10⁻⁴ and 3.7·10⁻³ there.
+//!
+//! The polyphase layout is the standard one of resampling filters (e.g. Smith, "Digital Audio
+//! Resampling"); its use for a film's reconstruction filter is this crate's.
+//!
+//! [`SeparableTable`]: super::SeparableTable
+//! [`FilterTable`]: super::FilterTable
+
+use super::table::{finite_or_zero, mask, table_radius};
+use super::{Axis, Filter};
+use crate::Error;
+
+/// Phases per pixel of a [`PhaseTable`]: its grid spacing is 1/64 pixel.
+///
+/// ```
+/// assert_eq!(nyquist::filter::PHASES, 64);
+/// ```
+pub const PHASES: usize = 64;
+
+/// The most taps (footprint pixels along one axis, `⌊2r⌋ + 1`) a [`PhaseTable`] holds: radii
+/// below 8 pixels.
+///
+/// ```
+/// use nyquist::filter::{Gaussian, PhaseTable, MAX_TAPS};
+/// assert_eq!(MAX_TAPS, 16);
+/// assert!(PhaseTable::new(&Gaussian::new([7.9, 7.9], 2.0).unwrap()).is_ok());
+/// assert!(PhaseTable::new(&Gaussian::new([8.0, 8.0], 2.0).unwrap()).is_err());
+/// ```
+pub const MAX_TAPS: usize = 16;
+
+/// Entries per axis: `PHASES + 1` rows of up to `MAX_TAPS` taps.
+const ENTRIES: usize = (PHASES + 1) * MAX_TAPS;
+
+/// One axis of a [`PhaseTable`].
+#[derive(Clone, Debug, PartialEq)]
+struct PhaseAxis {
+    /// `r`.
+    radius: f32,
+    /// `⌊2r⌋ + 1`, at most `MAX_TAPS`.
+    taps: usize,
+    /// `taps` rounded up to a multiple of 4: the row length (the padding holds 0).
+    stride: usize,
+    /// Row `j` (phase `j/64`) at `values[j·stride ..][..stride]`.
+    values: [f32; ENTRIES],
+}
+
+impl PhaseAxis {
+    fn new(r: f32, eval: impl Fn(f32) -> f32) -> Result<PhaseAxis, Error> {
+        // ⌊2r⌋ + 1 taps: k + φ − r ≤ r has solutions k = 0 … ⌊2r − φ⌋.
+        // r is finite and > 0; below 8 the truncation is the floor.
+        let span = 2.0 * f64::from(r);
+        if span >= MAX_TAPS as f64 {
+            return Err(Error::OutOfRange {
+                what: "filter radius (a phase table holds radii below 8)",
+            });
+        }
+        let taps = span as usize + 1;
+        let stride = taps.next_multiple_of(4);
+        let mut values = [0.0f32; ENTRIES];
+        for (j, row) in values.chunks_exact_mut(stride).take(PHASES + 1).enumerate() {
+            let phase = j as f64 / PHASES as f64;
+            for (k, v) in row[..taps].iter_mut().enumerate() {
+                // The offset of tap k at this phase, formed in f64 and rounded once.
+                let d = (k as f64 + phase - f64::from(r)) as f32;
+                *v = finite_or_zero(eval(d)) * mask(d.abs() <= r);
+            }
+        }
+        Ok(PhaseAxis {
+            radius: r,
+            taps,
+            stride,
+            values,
+        })
+    }
+
+    /// Row index `j ∈ [0, 63]` and position `t ∈ [0, 1]` between rows `j` and `j + 1` for a phase
+    /// clamped to `[0, 1]` (NaN → 0).
+    #[inline(always)]
+    fn cell(phase: f32) -> (usize, f32) {
+        let u = (phase * PHASES as f32).max(0.0).min(PHASES as f32);
+        // u ∈ [0, 64]: the truncating conversion is the floor.
+        let j = (u as usize).min(PHASES - 1);
+        (j, u - j as f32)
+    }
+
+    /// Rows `j` and `j + 1`, each `stride` long.
+    #[inline(always)]
+    fn rows(&self, j: usize) -> (&[f32], &[f32]) {
+        let s = self.stride.min(MAX_TAPS);
+        let two = &self.values[j * s..(j + 2) * s];
+        two.split_at(s)
+    }
+
+    #[inline(always)]
+    fn row(&self, phase: f32, out: &mut [f32; MAX_TAPS]) -> usize {
+        let (j, t) = Self::cell(phase);
+        let (a, b) = self.rows(j);
+        // Four lanes at a time over the padded row: (1 − t)·a + t·b, exact at t = 0 and 1.
+        for ((o, a), b) in out
+            .chunks_exact_mut(4)
+            .zip(a.chunks_exact(4))
+            .zip(b.chunks_exact(4))
+        {
+            for l in 0..4 {
+                o[l] = (1.0 - t) * a[l] + t * b[l];
+            }
+        }
+        self.taps
+    }
+
+    #[inline(always)]
+    fn tap(&self, phase: f32, k: usize) -> f32 {
+        let (j, t) = Self::cell(phase);
+        let (a, b) = self.rows(j);
+        match (a.get(k), b.get(k)) {
+            (Some(&a), Some(&b)) => (1.0 - t) * a + t * b,
+            _ => 0.0,
+        }
+    }
+
+    /// The weight at offset `d`: tap `⌊d + r⌋` at phase `frac(d + r)`, 0 past the radius.
+    #[inline(always)]
+    fn weight(&self, d: f32) -> f32 {
+        let inside = d.abs() <= self.radius;
+        // s ∈ [0, 2r] inside; clamped so the conversion is exact for any input.
+        let s = (d + self.radius).max(0.0).min(MAX_TAPS as f32);
+        let k = s as usize;
+        self.tap(s - k as f32, k) * mask(inside)
+    }
+}
+
+/// A separable filter tabulated by phase: for a sample whose footprint starts at phase `φ`
+/// (see the [module docs](self)), [`row`](PhaseTable::row) gives the weights of all its pixels
+/// along one axis in one interpolated read. The film's table for separable filters. Allocates:
+/// no (8.3 KB inline).
+///
+/// ```
+/// use nyquist::filter::{Axis, Filter, Mitchell, PhaseTable, MAX_TAPS};
+/// let m = Mitchell::default();
+/// let t = PhaseTable::new(&m).unwrap();
+/// // A sample at x = 10.3: the first pixel is ⌈10.3 − ½ − 2⌉ = 8, at phase 8 − 7.8 = 0.2.
+/// let mut w = [0.0f32; MAX_TAPS];
+/// let taps = t.row(Axis::X, 0.2, &mut w);
+/// assert_eq!(taps, 5); // up to 5 pixels (8 … 11 here: the fifth only at phase 0)
+/// for (k, &w) in w[..4].iter().enumerate() {
+///     let d = (8 + k) as f32 + 0.5 - 10.3; // pixel centre − sample
+///     assert!((w - m.eval_1d(Axis::X, d).unwrap()).abs() < 4e-4);
+/// }
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct PhaseTable {
+    axes: [PhaseAxis; 2],
+    integral: f32,
+}
+
+impl PhaseTable {
+    /// Tabulates `filter`'s separable form ([`Filter::eval_1d`]) at 65 phases per axis and stores
+    /// [`Filter::integral`].
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] if the filter is not separable, its radius is not finite and `> 0`,
+    /// or a radius is 8 or more (more than [`MAX_TAPS`] taps). Non-finite values from a plugin
+    /// filter are stored as 0, magnitudes above 2⁶² as ±2⁶².
+    ///
+    /// ```
+    /// use nyquist::filter::{Lanczos, PhaseTable};
+    /// assert_eq!(PhaseTable::new(&Lanczos::default()).unwrap().radius(), [4.0, 4.0]);
+    /// ```
+    pub fn new<F: Filter + ?Sized>(filter: &F) -> Result<PhaseTable, Error> {
+        let [rx, ry] = table_radius(filter)?;
+        if !filter.is_separable() {
+            return Err(Error::OutOfRange {
+                what: "filter (not separable)",
+            });
+        }
+        let axis = |a: Axis, r: f32| PhaseAxis::new(r, |d| filter.eval_1d(a, d).unwrap_or(0.0));
+        Ok(PhaseTable {
+            axes: [axis(Axis::X, rx)?, axis(Axis::Y, ry)?],
+            integral: filter.integral(),
+        })
+    }
+
+    /// The footprint's weights along `axis` at phase `phase`: `out[k] ≈ f(k + phase − r)` for the
+    /// taps `k < taps`, returned. Lanes from `taps` to the next multiple of 4 hold 0; the rest
+    /// are not written. `phase` is clamped to `[0, 1]` (NaN reads as 0). Tap `k`'s pixel is in
+    /// the footprint only while `k + phase ≤ 2r`: the caller counts its pixels (the last tap's
+    /// value past that point is the interpolation towards 0, not a weight).
+    ///
+    /// ```
+    /// use nyquist::filter::{Axis, Boxcar, PhaseTable, MAX_TAPS};
+    /// let t = PhaseTable::new(&Boxcar::default()).unwrap();
+    /// let mut w = [9.0f32; MAX_TAPS];
+    /// assert_eq!(t.row(Axis::Y, 0.5, &mut w), 2);
+    /// assert_eq!(w[..4], [1.0, 0.0, 0.0, 0.0]);
+    /// assert_eq!(w[4], 9.0);
+    /// ```
+    #[inline(always)]
+    pub fn row(&self, axis: Axis, phase: f32, out: &mut [f32; MAX_TAPS]) -> usize {
+        self.axes[axis.index()].row(phase, out)
+    }
+
+    /// One tap of [`row`](PhaseTable::row): `row(axis, phase, ..)[k]` without the others, 0 for
+    /// `k` past the padded row.
+    ///
+    /// ```
+    /// use nyquist::filter::{Axis, PhaseTable, Triangle, MAX_TAPS};
+    /// let t = PhaseTable::new(&Triangle::default()).unwrap();
+    /// let mut w = [0.0f32; MAX_TAPS];
+    /// t.row(Axis::X, 0.3, &mut w);
+    /// assert_eq!(t.tap(Axis::X, 0.3, 2), w[2]);
+    /// assert_eq!(t.tap(Axis::X, 0.3, 99), 0.0);
+    /// ```
+    #[inline(always)]
+    pub fn tap(&self, axis: Axis, phase: f32, k: usize) -> f32 {
+        self.axes[axis.index()].tap(phase, k)
+    }
+
+    /// Taps per footprint along `axis`, `⌊2r⌋ + 1`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Axis, Mitchell, PhaseTable};
+    /// assert_eq!(PhaseTable::new(&Mitchell::default()).unwrap().taps(Axis::X), 5);
+    /// ```
+    pub fn taps(&self, axis: Axis) -> usize {
+        self.axes[axis.index()].taps
+    }
+
+    /// The 1D factor along `axis` at offset `d` from the same grid: tap `⌊d + r⌋` at phase
+    /// `frac(d + r)`; exactly 0 past the radius and for NaN or ∞. It equals the footprint's
+    /// value for that pixel up to the rounding of `d`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Axis, Boxcar, PhaseTable};
+    /// let t = PhaseTable::new(&Boxcar::default()).unwrap();
+    /// assert_eq!(t.weight_1d(Axis::X, 0.5), 1.0);
+    /// assert_eq!(t.weight_1d(Axis::X, 0.51), 0.0);
+    /// ```
+    #[inline]
+    pub fn weight_1d(&self, axis: Axis, d: f32) -> f32 {
+        self.axes[axis.index()].weight(d)
+    }
+
+    /// The weight at offset `(dx, dy)`: `weight_1d(X, dx)·weight_1d(Y, dy)`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Filter, Gaussian, PhaseTable};
+    /// let g = Gaussian::default();
+    /// let t = PhaseTable::new(&g).unwrap();
+    /// assert!((t.weight(0.3, -1.1) - g.eval(0.3, -1.1)).abs() < 1e-3);
+    /// assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
+    /// ```
+    #[inline]
+    pub fn weight(&self, dx: f32, dy: f32) -> f32 {
+        self.weight_1d(Axis::X, dx) * self.weight_1d(Axis::Y, dy)
+    }
+
+    /// Fills `out` (row-major, `nx` columns) with the weights of the pixels at offsets
+    /// `(d0[0] + i, d0[1] + j)`, as [`FilterTable::footprint`](super::FilterTable::footprint):
+    /// one [`row`](PhaseTable::row) per axis (at the phase of `d0 + r`) and an outer product.
+    /// Pixels past the radius get 0. Each weight equals `weight(d0[0] + i, d0[1] + j)` up to the
+    /// rounding of those sums.
+    ///
+    /// # Errors
+    /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Mitchell, PhaseTable};
+    /// let t = PhaseTable::new(&Mitchell::default()).unwrap();
+    /// let mut w = [0.0f32; 16];
+    /// t.footprint([-1.75, -1.5], 4, &mut w).unwrap();
+    /// assert_eq!(w[2 * 4 + 3], t.weight(-1.75 + 3.0, -1.5 + 2.0));
+    /// ```
+    #[inline]
+    pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        super::table::check_footprint(nx, out)?;
+        let mut fx = [0.0f32; MAX_TAPS];
+        let mut fy = [0.0f32; MAX_TAPS];
+        let kx = self.axes[0].factors(d0[0], &mut fx);
+        let ky = self.axes[1].factors(d0[1], &mut fy);
+        for (j, row) in out.chunks_exact_mut(nx).enumerate() {
+            let wy = tap_or_zero(&fy, ky, j);
+            for (i, w) in row.iter_mut().enumerate() {
+                *w = tap_or_zero(&fx, kx, i) * wy;
+            }
+        }
+        Ok(())
+    }
+
+    /// The filter's radius `[rx, ry]`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Gaussian, PhaseTable};
+    /// assert_eq!(PhaseTable::new(&Gaussian::default()).unwrap().radius(), [2.0, 2.0]);
+    /// ```
+    pub fn radius(&self) -> [f32; 2] {
+        [self.axes[0].radius, self.axes[1].radius]
+    }
+
+    /// The filter's integral (from [`Filter::integral`] at build time).
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, PhaseTable};
+    /// assert_eq!(PhaseTable::new(&Boxcar::default()).unwrap().integral(), 1.0);
+    /// ```
+    pub fn integral(&self) -> f32 {
+        self.integral
+    }
+}
+
+impl PhaseAxis {
+    /// The taps of a footprint whose first pixel is at offset `d0`, masked to the radius:
+    /// `out[k]` is the weight of the pixel at `d0 + i` for `i = k − shift`, with the returned
+    /// `shift = ⌊d0 + r⌋` (0 when the first pixel is the footprint's first).
+    #[inline(always)]
+    fn factors(&self, d0: f32, out: &mut [f32; MAX_TAPS]) -> isize {
+        let s = d0 + self.radius;
+        // ⌊s⌋ for |s| < 2²⁴ with the clamp keeping the conversion exact; beyond, every tap is 0.
+        let c = s.max(-(2.0 * MAX_TAPS as f32)).min(2.0 * MAX_TAPS as f32);
+        let t = c as isize;
+        let shift = t - isize::from((t as f32) > c);
+        self.row(c - shift as f32, out);
+        // Mask every tap whose offset is past the radius: k + phase − r > r.
+        for (k, w) in out[..self.taps].iter_mut().enumerate() {
+            let d = (k as isize - shift) as f32 + d0;
+            *w *= mask(d.abs() <= self.radius);
+        }
+        shift
+    }
+}
+
+/// Tap `i + shift` of `f` (0 outside the taps), the weight of footprint pixel `i`.
+#[inline(always)]
+fn tap_or_zero(f: &[f32; MAX_TAPS], shift: isize, i: usize) -> f32 {
+    let k = (i as isize).wrapping_add(shift);
+    if k < 0 {
+        return 0.0;
+    }
+    f.get(k as usize).copied().unwrap_or(0.0)
+}
