@@ -1,0 +1,466 @@
+//! Every sampler of the crate by name: what the CLI's `--sampler NAME --spp SPP --size WxH
+//! --seed SEED` and the C API's `nyq_sampler_create` build.
+
+use core::fmt;
+
+use super::{
+    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
+    Jitter, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler,
+};
+
+/// The names [`NamedSampler::new`] accepts, in the order the CLI lists them.
+///
+/// ```
+/// use nyquist::sampler::{NamedSampler, NAMES};
+/// assert_eq!(NAMES.len(), 9);
+/// for name in NAMES {
+///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
+///     assert_eq!(s.name(), name);
+/// }
+/// ```
+pub const NAMES: [&str; 9] = [
+    "random",
+    "uniform",
+    "stratified",
+    "halton",
+    "hammersley",
+    "zero-two",
+    "sobol",
+    "best-candidate",
+    "adaptive",
+];
+
+/// Threshold of the `adaptive` sampler (see [`AdaptiveSampler::new`]).
+const ADAPTIVE_THRESHOLD: f32 = 0.1;
+
+/// Why [`NamedSampler::new`] rejected its input.
+///
+/// ```
+/// use nyquist::sampler::{NamedSampler, NamedSamplerError};
+/// assert_eq!(NamedSampler::new("nope", [1, 1], 4, 0).unwrap_err(), NamedSamplerError::UnknownName);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NamedSamplerError {
+    /// The name is not one of [`NAMES`].
+    UnknownName,
+    /// `uniform` and `stratified` take a √spp × √spp grid, and `spp` is not a square.
+    NotSquare {
+        /// The samples per pixel asked for.
+        spp: u32,
+    },
+    /// Width, height or spp was zero ([`crate::Error::ZeroSize`]), or the sampler rejected
+    /// the parameters.
+    Sampler(crate::Error),
+}
+
+impl fmt::Display for NamedSamplerError {
+    /// Lowercase, names the fault.
+    ///
+    /// ```
+    /// use nyquist::sampler::NamedSamplerError;
+    /// assert_eq!(NamedSamplerError::NotSquare { spp: 8 }.to_string(), "spp 8 is not a square");
+    /// ```
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            NamedSamplerError::UnknownName => f.write_str("unknown sampler name"),
+            NamedSamplerError::NotSquare { spp } => write!(f, "spp {spp} is not a square"),
+            NamedSamplerError::Sampler(e) => e.fmt(f),
+        }
+    }
+}
+
+impl core::error::Error for NamedSamplerError {
+    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
+        match self {
+            NamedSamplerError::Sampler(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl From<crate::Error> for NamedSamplerError {
+    /// Wraps a core error as [`NamedSamplerError::Sampler`].
+    ///
+    /// ```
+    /// use nyquist::{Error, sampler::NamedSamplerError};
+    /// let e = NamedSamplerError::from(Error::TooMany { what: "spp" });
+    /// assert_eq!(e, NamedSamplerError::Sampler(Error::TooMany { what: "spp" }));
+    /// ```
+    fn from(e: crate::Error) -> Self {
+        NamedSamplerError::Sampler(e)
+    }
+}
+
+/// One of the crate's samplers, chosen by name at run time; implements [`Sampler`] by
+/// delegating to the sampler it holds (one `match` per call, no allocation).
+///
+/// A caller that wants a monomorphized sample loop can `match` on the variants itself.
+///
+/// ```
+/// use nyquist::sampler::{NamedSampler, Sampler, ZeroTwoSampler};
+/// let mut a = NamedSampler::new("zero-two", [8, 8], 3, 5).unwrap();
+/// let mut b = ZeroTwoSampler::new(3, 5).unwrap();
+/// assert_eq!(a.samples_per_pixel(), 4); // rounded up to a power of two
+/// a.start_pixel_sample([1, 2], 3, 0);
+/// b.start_pixel_sample([1, 2], 3, 0);
+/// assert_eq!(a.get_2d(), b.get_2d());
+/// ```
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub enum NamedSampler {
+    /// `random`.
+    Random(RandomSampler),
+    /// `uniform` (centred strata) and `stratified` (jittered strata).
+    Stratified(StratifiedSampler),
+    /// `halton`.
+    Halton(HaltonSampler),
+    /// `hammersley`.
+    Hammersley(HammersleySampler),
+    /// `zero-two`.
+    ZeroTwo(ZeroTwoSampler),
+    /// `sobol`.
+    Sobol(SobolSampler),
+    /// `best-candidate`.
+    BestCandidate(BestCandidateSampler),
+    /// `adaptive`.
+    Adaptive(AdaptiveSampler<ZeroTwoSampler>),
+}
+
+/// Evaluates `$body` with `$s` bound to the sampler inside `$self`.
+macro_rules! delegate {
+    ($self:expr, $s:ident => $body:expr) => {
+        match $self {
+            NamedSampler::Random($s) => $body,
+            NamedSampler::Stratified($s) => $body,
+            NamedSampler::Halton($s) => $body,
+            NamedSampler::Hammersley($s) => $body,
+            NamedSampler::ZeroTwo($s) => $body,
+            NamedSampler::Sobol($s) => $body,
+            NamedSampler::BestCandidate($s) => $body,
+            NamedSampler::Adaptive($s) => $body,
+        }
+    };
+}
+
+impl NamedSampler {
+    /// Sampler `name` (one of [`NAMES`]) for `spp` samples per pixel of a `size` image
+    /// (`[width, height]` in pixels) with `seed`:
+    ///
+    /// - `random`: [`RandomSampler`];
+    /// - `uniform`, `stratified`: a √spp × √spp [`StratifiedSampler`], cell centres
+    ///   ([`Jitter::Centered`]) or jittered; `spp` must be a square;
+    /// - `halton`: [`HaltonSampler`] over the image, digit-permuted when `seed != 0`;
+    /// - `hammersley`: [`HammersleySampler`], scrambled when `seed != 0`;
+    /// - `zero-two`: [`ZeroTwoSampler`] (spp rounded up to a power of two);
+    /// - `sobol`: [`SobolSampler`] over the image (spp rounded up to a power of two);
+    /// - `best-candidate`: [`BestCandidateSampler`];
+    /// - `adaptive`: an [`AdaptiveSampler`] over a `zero-two` sampler, between a quarter of its
+    ///   spp (at least 1) and all of it, threshold 0.1.
+    ///
+    /// The size matters to `halton`, `hammersley` and `sobol` only, but must be non-zero for
+    /// all. Allocates: no.
+    ///
+    /// # Errors
+    /// Checked in this order: [`NamedSamplerError::Sampler`]`(`[`ZeroSize`](crate::Error::ZeroSize)`)`
+    /// if the width, height or `spp` is 0; [`NamedSamplerError::UnknownName`];
+    /// [`NamedSamplerError::NotSquare`] for `uniform`/`stratified`; then whatever the sampler's
+    /// constructor rejects, as [`NamedSamplerError::Sampler`].
+    ///
+    /// ```
+    /// use nyquist::{Error, sampler::{NamedSampler, NamedSamplerError, Sampler}};
+    /// assert_eq!(NamedSampler::new("stratified", [4, 4], 9, 0).unwrap().samples_per_pixel(), 9);
+    /// assert_eq!(
+    ///     NamedSampler::new("uniform", [4, 4], 8, 0).unwrap_err(),
+    ///     NamedSamplerError::NotSquare { spp: 8 }
+    /// );
+    /// assert_eq!(
+    ///     NamedSampler::new("nope", [0, 4], 8, 0).unwrap_err(),
+    ///     NamedSamplerError::Sampler(Error::ZeroSize { what: "width" })
+    /// );
+    /// ```
+    pub fn new(
+        name: &str,
+        size: [u32; 2],
+        spp: u32,
+        seed: u64,
+    ) -> Result<NamedSampler, NamedSamplerError> {
+        for (v, what) in [(size[0], "width"), (size[1], "height"), (spp, "spp")] {
+            if v == 0 {
+                return Err(crate::Error::ZeroSize { what }.into());
+            }
+        }
+        let side = || {
+            let side = spp.isqrt();
+            if side * side == spp {
+                Ok(side)
+            } else {
+                Err(NamedSamplerError::NotSquare { spp })
+            }
+        };
+        Ok(match name {
+            "random" => NamedSampler::Random(RandomSampler::new(spp, seed)?),
+            "uniform" => {
+                let side = side()?;
+                NamedSampler::Stratified(StratifiedSampler::uniform(side, side, seed)?)
+            }
+            "stratified" => {
+                let side = side()?;
+                NamedSampler::Stratified(StratifiedSampler::new(
+                    side,
+                    side,
+                    Jitter::Jittered,
+                    seed,
+                )?)
+            }
+            "halton" => {
+                let scramble = if seed == 0 {
+                    HaltonScramble::None
+                } else {
+                    HaltonScramble::PermuteDigits
+                };
+                NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?)
+            }
+            "hammersley" => {
+                NamedSampler::Hammersley(HammersleySampler::new(size, spp, seed != 0, seed)?)
+            }
+            "zero-two" => NamedSampler::ZeroTwo(ZeroTwoSampler::new(spp, seed)?),
+            "sobol" => NamedSampler::Sobol(SobolSampler::new(size, spp, seed)?),
+            "best-candidate" => NamedSampler::BestCandidate(BestCandidateSampler::new(spp, seed)?),
+            "adaptive" => {
+                let inner = ZeroTwoSampler::new(spp, seed)?;
+                let min = (inner.samples_per_pixel() / 4).max(1);
+                NamedSampler::Adaptive(AdaptiveSampler::new(inner, min, ADAPTIVE_THRESHOLD)?)
+            }
+            _ => return Err(NamedSamplerError::UnknownName),
+        })
+    }
+
+    /// The name this sampler is built from (one of [`NAMES`]).
+    ///
+    /// ```
+    /// use nyquist::sampler::NamedSampler;
+    /// assert_eq!(NamedSampler::new("uniform", [1, 1], 4, 0).unwrap().name(), "uniform");
+    /// assert_eq!(NamedSampler::new("stratified", [1, 1], 4, 0).unwrap().name(), "stratified");
+    /// ```
+    pub fn name(&self) -> &'static str {
+        match self {
+            NamedSampler::Random(_) => "random",
+            NamedSampler::Stratified(s) => match s.jitter() {
+                Jitter::Centered => "uniform",
+                _ => "stratified",
+            },
+            NamedSampler::Halton(_) => "halton",
+            NamedSampler::Hammersley(_) => "hammersley",
+            NamedSampler::ZeroTwo(_) => "zero-two",
+            NamedSampler::Sobol(_) => "sobol",
+            NamedSampler::BestCandidate(_) => "best-candidate",
+            NamedSampler::Adaptive(_) => "adaptive",
+        }
+    }
+}
+
+impl Sampler for NamedSampler {
+    #[inline]
+    fn samples_per_pixel(&self) -> u32 {
+        delegate!(self, s => s.samples_per_pixel())
+    }
+
+    #[inline]
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        delegate!(self, s => s.start_pixel_sample(pixel, sample_index, dim))
+    }
+
+    #[inline]
+    fn get_1d(&mut self) -> f32 {
+        delegate!(self, s => s.get_1d())
+    }
+
+    #[inline]
+    fn get_2d(&mut self) -> [f32; 2] {
+        delegate!(self, s => s.get_2d())
+    }
+
+    #[inline]
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        delegate!(self, s => s.get_pixel_2d())
+    }
+
+    #[inline]
+    fn round_size(&self, n: u32) -> u32 {
+        delegate!(self, s => s.round_size(n))
+    }
+
+    #[inline]
+    fn get_array_1d(&mut self, out: &mut [f32]) {
+        delegate!(self, s => s.get_array_1d(out))
+    }
+
+    #[inline]
+    fn get_array_2d(&mut self, out: &mut [f32]) {
+        delegate!(self, s => s.get_array_2d(out))
+    }
+
+    #[inline]
+    fn pixel_samples(&self, pixel: [u32; 2]) -> u32 {
+        delegate!(self, s => s.pixel_samples(pixel))
+    }
+
+    #[inline]
+    fn report(&mut self, pixel: [u32; 2], sample_index: u32, radiance: &[f32]) {
+        delegate!(self, s => s.report(pixel, sample_index, radiance))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampler::tests::record;
+
+    /// Each name gives the same values as its sampler built directly, as the CLI built them.
+    #[test]
+    fn names_build_the_samplers_they_name() {
+        let size = [16, 16];
+        for seed in [0u64, 7] {
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 9] = [
+                (
+                    "random",
+                    std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
+                ),
+                (
+                    "uniform",
+                    std::boxed::Box::new(
+                        StratifiedSampler::new(4, 4, Jitter::Centered, seed).unwrap(),
+                    ),
+                ),
+                (
+                    "stratified",
+                    std::boxed::Box::new(
+                        StratifiedSampler::new(4, 4, Jitter::Jittered, seed).unwrap(),
+                    ),
+                ),
+                (
+                    "halton",
+                    std::boxed::Box::new(
+                        HaltonSampler::new(
+                            size,
+                            16,
+                            if seed == 0 {
+                                HaltonScramble::None
+                            } else {
+                                HaltonScramble::PermuteDigits
+                            },
+                            seed,
+                        )
+                        .unwrap(),
+                    ),
+                ),
+                (
+                    "hammersley",
+                    std::boxed::Box::new(
+                        HammersleySampler::new(size, 16, seed != 0, seed).unwrap(),
+                    ),
+                ),
+                (
+                    "zero-two",
+                    std::boxed::Box::new(ZeroTwoSampler::new(16, seed).unwrap()),
+                ),
+                (
+                    "sobol",
+                    std::boxed::Box::new(SobolSampler::new(size, 16, seed).unwrap()),
+                ),
+                (
+                    "best-candidate",
+                    std::boxed::Box::new(BestCandidateSampler::new(16, seed).unwrap()),
+                ),
+                (
+                    "adaptive",
+                    std::boxed::Box::new(
+                        AdaptiveSampler::new(ZeroTwoSampler::new(16, seed).unwrap(), 4, 0.1)
+                            .unwrap(),
+                    ),
+                ),
+            ];
+            for (i, (name, mut d)) in direct.into_iter().enumerate() {
+                assert_eq!(NAMES[i], name);
+                let mut n = NamedSampler::new(name, size, 16, seed).unwrap();
+                assert_eq!(n.name(), name);
+                assert_eq!(n.samples_per_pixel(), d.samples_per_pixel(), "{name}");
+                assert_eq!(n.round_size(7), d.round_size(7), "{name}");
+                for (pixel, index) in [([3, 5], 2), ([9, 2], 11), ([0, 0], 0)] {
+                    let a = record(&mut n, pixel, index);
+                    let b = record(&mut *d, pixel, index);
+                    let bits =
+                        |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<std::vec::Vec<_>>();
+                    assert_eq!(bits(&a), bits(&b), "{name} {pixel:?} {index}");
+                }
+                n.report([1, 1], 0, &[1.0, 0.0, 0.0]);
+                n.report([1, 1], 1, &[0.0, 1.0, 0.0]);
+                d.report([1, 1], 0, &[1.0, 0.0, 0.0]);
+                d.report([1, 1], 1, &[0.0, 1.0, 0.0]);
+                assert_eq!(n.pixel_samples([1, 1]), d.pixel_samples([1, 1]), "{name}");
+            }
+        }
+    }
+
+    #[test]
+    fn errors_come_in_the_documented_order() {
+        use crate::Error;
+        let new = |name, size, spp| NamedSampler::new(name, size, spp, 0).unwrap_err();
+        assert_eq!(
+            new("nope", [1, 0], 4),
+            Error::ZeroSize { what: "height" }.into()
+        );
+        assert_eq!(
+            new("uniform", [1, 1], 0),
+            Error::ZeroSize { what: "spp" }.into()
+        );
+        assert_eq!(new("Random", [1, 1], 4), NamedSamplerError::UnknownName);
+        assert_eq!(new("", [1, 1], 4), NamedSamplerError::UnknownName);
+        assert_eq!(
+            new("stratified", [1, 1], 2),
+            NamedSamplerError::NotSquare { spp: 2 }
+        );
+        assert_eq!(
+            new("uniform", [1, 1], u32::MAX),
+            NamedSamplerError::NotSquare { spp: u32::MAX }
+        );
+    }
+
+    proptest::proptest! {
+        /// Any name, size, spp and seed: a sampler whose values are in [0, 1), or an error;
+        /// never a panic.
+        #[test]
+        fn any_input_builds_or_errors(
+            which in 0usize..10,
+            w in 0u32..64,
+            h in 0u32..64,
+            spp in 0u32..300,
+            seed: u64,
+            pixel: [u32; 2],
+            index: u32,
+        ) {
+            let name = NAMES.get(which).copied().unwrap_or("bogus");
+            match NamedSampler::new(name, [w, h], spp, seed) {
+                Ok(mut s) => {
+                    proptest::prop_assert_eq!(s.name(), name);
+                    for x in record(&mut s, pixel, index) {
+                        proptest::prop_assert!((0.0..1.0).contains(&x), "{} {}", name, x);
+                    }
+                }
+                Err(e) => {
+                    let expected = if w == 0 || h == 0 || spp == 0 {
+                        matches!(e, NamedSamplerError::Sampler(crate::Error::ZeroSize { .. }))
+                    } else if which == 9 {
+                        e == NamedSamplerError::UnknownName
+                    } else {
+                        (which == 1 || which == 2)
+                            && spp.isqrt() * spp.isqrt() != spp
+                            && e == NamedSamplerError::NotSquare { spp }
+                    };
+                    proptest::prop_assert!(expected, "{} {:?}", name, e);
+                }
+            }
+        }
+    }
+}
