@@ -7,10 +7,7 @@
 
 use core::ffi::c_char;
 
-use nyquist::sampler::{
-    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler, camera_sample,
-};
+use nyquist::sampler::{CameraSample, NamedSampler, Sampler, camera_sample};
 
 use crate::NyqStatus;
 use crate::ffi::{
@@ -21,92 +18,30 @@ use crate::ffi::{
 /// and released by [`nyq_sampler_destroy`]. Not safe to use from two threads at once.
 #[derive(Clone, Debug)]
 pub struct NyqSampler {
-    inner: AnySampler,
+    inner: NamedSampler,
 }
 
-#[derive(Clone, Debug)]
-enum AnySampler {
-    Random(RandomSampler),
-    Stratified(StratifiedSampler),
-    Halton(HaltonSampler),
-    Hammersley(HammersleySampler),
-    ZeroTwo(ZeroTwoSampler),
-    Sobol(SobolSampler),
-    BestCandidate(BestCandidateSampler),
-    Adaptive(AdaptiveSampler<ZeroTwoSampler>),
-}
-
-impl AnySampler {
-    fn as_dyn(&mut self) -> &mut dyn Sampler {
-        match self {
-            AnySampler::Random(s) => s,
-            AnySampler::Stratified(s) => s,
-            AnySampler::Halton(s) => s,
-            AnySampler::Hammersley(s) => s,
-            AnySampler::ZeroTwo(s) => s,
-            AnySampler::Sobol(s) => s,
-            AnySampler::BestCandidate(s) => s,
-            AnySampler::Adaptive(s) => s,
-        }
-    }
-
-    fn as_ref(&self) -> &dyn Sampler {
-        match self {
-            AnySampler::Random(s) => s,
-            AnySampler::Stratified(s) => s,
-            AnySampler::Halton(s) => s,
-            AnySampler::Hammersley(s) => s,
-            AnySampler::ZeroTwo(s) => s,
-            AnySampler::Sobol(s) => s,
-            AnySampler::BestCandidate(s) => s,
-            AnySampler::Adaptive(s) => s,
-        }
-    }
-
-    /// The sampler `name` as the CLI's `--sampler NAME --spp SPP --size WxH --seed SEED` builds
-    /// it.
-    fn new(name: &str, size: [u32; 2], spp: u32, seed: u64) -> Result<AnySampler, NyqStatus> {
-        if size[0] == 0 || size[1] == 0 || spp == 0 {
-            return Err(NyqStatus::NYQ_ERR_ZERO_SIZE);
-        }
-        let square = || {
-            let side = spp.isqrt();
-            if side * side == spp {
-                Ok(side)
-            } else {
-                Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE)
-            }
-        };
-        let halton_scramble = if seed == 0 {
-            HaltonScramble::None
-        } else {
-            HaltonScramble::PermuteDigits
-        };
-        Ok(match name {
-            "random" => AnySampler::Random(RandomSampler::new(spp, seed)?),
-            "uniform" => {
-                let side = square()?;
-                AnySampler::Stratified(StratifiedSampler::uniform(side, side, seed)?)
-            }
-            "stratified" => {
-                let side = square()?;
-                AnySampler::Stratified(StratifiedSampler::new(side, side, Jitter::Jittered, seed)?)
-            }
-            "halton" => AnySampler::Halton(HaltonSampler::new(size, spp, halton_scramble, seed)?),
-            "hammersley" => {
-                AnySampler::Hammersley(HammersleySampler::new(size, spp, seed != 0, seed)?)
-            }
-            "zero-two" => AnySampler::ZeroTwo(ZeroTwoSampler::new(spp, seed)?),
-            "sobol" => AnySampler::Sobol(SobolSampler::new(size, spp, seed)?),
-            "best-candidate" => AnySampler::BestCandidate(BestCandidateSampler::new(spp, seed)?),
-            "adaptive" => {
-                let inner = ZeroTwoSampler::new(spp, seed)?;
-                let min = (inner.samples_per_pixel() / 4).max(1);
-                AnySampler::Adaptive(AdaptiveSampler::new(inner, min, 0.1)?)
-            }
-            _ => return Err(NyqStatus::NYQ_ERR_PARSE),
-        })
-    }
+/// Draws a value from `*sampler` with `draw` and writes it through `out` with `write` (`put`
+/// or `put_array`). Both pointers are checked for null first, so on that error the cursor
+/// does not move.
+///
+/// # Safety
+/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
+/// valid for what `write` writes.
+unsafe fn draw<T, V>(
+    sampler: *mut NyqSampler,
+    out: *mut T,
+    draw: impl FnOnce(&mut NamedSampler) -> V,
+    write: unsafe fn(*mut T, V) -> Result<(), NyqStatus>,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `sampler` is null or live and exclusively ours (caller).
+        let s = unsafe { get_mut(sampler)? };
+        need(out)?;
+        let v = draw(&mut s.inner);
+        // SAFETY: `out` is valid for `write` (caller; null checked above).
+        unsafe { write(out, v) }
+    })
 }
 
 /// Creates sampler `name` for `spp` samples per pixel of a `width × height` image with `seed`,
@@ -155,7 +90,7 @@ pub unsafe extern "C" fn nyq_sampler_create(
         // SAFETY: `name` is null or NUL-terminated (caller).
         let name = unsafe { text(name)? };
         need(out)?;
-        let inner = AnySampler::new(name, [width, height], spp, seed)?;
+        let inner = NamedSampler::new(name, [width, height], spp, seed)?;
         // SAFETY: `out` is writable (caller).
         unsafe { put_box(out, NyqSampler { inner }) }
     })
@@ -242,7 +177,7 @@ pub unsafe extern "C" fn nyq_sampler_samples_per_pixel(
 ) -> NyqStatus {
     run(|| {
         // SAFETY: `sampler` is null or live (caller).
-        let n = unsafe { get(sampler)? }.inner.as_ref().samples_per_pixel();
+        let n = unsafe { get(sampler)? }.inner.samples_per_pixel();
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, n) }
     })
@@ -280,30 +215,8 @@ pub unsafe extern "C" fn nyq_sampler_start_pixel_sample(
     run(|| {
         // SAFETY: `sampler` is null or live and exclusively ours (caller).
         let s = unsafe { get_mut(sampler)? };
-        s.inner
-            .as_dyn()
-            .start_pixel_sample([x, y], sample_index, dim);
+        s.inner.start_pixel_sample([x, y], sample_index, dim);
         Ok(())
-    })
-}
-
-/// Runs `get` on the sampler behind `sampler` and writes its pair to `out[0..2]`.
-///
-/// # Safety
-/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
-/// valid for writing two `float`s.
-unsafe fn pair(
-    sampler: *mut NyqSampler,
-    out: *mut f32,
-    get: impl FnOnce(&mut dyn Sampler) -> [f32; 2],
-) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        need(out)?;
-        let v = get(s.inner.as_dyn());
-        // SAFETY: `out` is writable for two floats (caller; null checked above).
-        unsafe { put_array(out, v) }
     })
 }
 
@@ -318,7 +231,7 @@ unsafe fn array(
     out: *mut f32,
     len: usize,
     arity: usize,
-    fill: impl FnOnce(&mut dyn Sampler, &mut [f32]),
+    fill: impl FnOnce(&mut NamedSampler, &mut [f32]),
 ) -> NyqStatus {
     run(|| {
         // SAFETY: `sampler` is null or live and exclusively ours (caller).
@@ -328,7 +241,7 @@ unsafe fn array(
         if !len.is_multiple_of(arity) {
             return Err(NyqStatus::NYQ_ERR_BUFFER);
         }
-        fill(s.inner.as_dyn(), out);
+        fill(&mut s.inner, out);
         Ok(())
     })
 }
@@ -361,14 +274,8 @@ unsafe fn array(
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut f32) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        need(out)?;
-        let v = s.inner.as_dyn().get_1d();
-        // SAFETY: `out` is writable (caller; null checked above).
-        unsafe { put(out, v) }
-    })
+    // SAFETY: the pointers are as `draw` needs (caller).
+    unsafe { draw(sampler, out, |s| s.get_1d(), put) }
 }
 
 /// Writes the values of the current and the next dimension, in `[0, 1)²`, to `out[0]` and
@@ -396,8 +303,8 @@ pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut 
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_sampler_get_2d(sampler: *mut NyqSampler, out: *mut f32) -> NyqStatus {
-    // SAFETY: the caller's contract is `pair`'s.
-    unsafe { pair(sampler, out, |s| s.get_2d()) }
+    // SAFETY: the pointers are as `draw` needs (caller).
+    unsafe { draw(sampler, out, |s| s.get_2d(), put_array) }
 }
 
 /// Writes the image sample (the offset inside the pixel, dimensions 0 and 1 whatever the
@@ -428,8 +335,8 @@ pub unsafe extern "C" fn nyq_sampler_get_pixel_2d(
     sampler: *mut NyqSampler,
     out: *mut f32,
 ) -> NyqStatus {
-    // SAFETY: the caller's contract is `pair`'s.
-    unsafe { pair(sampler, out, |s| s.get_pixel_2d()) }
+    // SAFETY: the pointers are as `draw` needs (caller).
+    unsafe { draw(sampler, out, |s| s.get_pixel_2d(), put_array) }
 }
 
 /// Fills `out[0..len]` with an array of `len` values for the current sample at the current
@@ -517,6 +424,13 @@ pub struct NyqCameraSample {
     pub time: f32,
 }
 
+impl From<CameraSample> for NyqCameraSample {
+    fn from(c: CameraSample) -> NyqCameraSample {
+        let CameraSample { p_film, lens, time } = c;
+        NyqCameraSample { p_film, lens, time }
+    }
+}
+
 /// Starts sample `sample_index` of pixel `(x, y)` at dimension 0 and writes its camera sample
 /// (image position, time, lens) to `*out`; the cursor is left at dimension 5, where an
 /// integrator's own values begin: the core's
@@ -549,19 +463,15 @@ pub unsafe extern "C" fn nyq_sampler_camera_sample(
     sample_index: u32,
     out: *mut NyqCameraSample,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        need(out)?;
-        let c = camera_sample(s.inner.as_dyn(), [x, y], sample_index);
-        let c = NyqCameraSample {
-            p_film: c.p_film,
-            lens: c.lens,
-            time: c.time,
-        };
-        // SAFETY: `out` is writable (caller; null checked above).
-        unsafe { put(out, c) }
-    })
+    // SAFETY: the pointers are as `draw` needs (caller).
+    unsafe {
+        draw(
+            sampler,
+            out,
+            |s| camera_sample(s, [x, y], sample_index).into(),
+            put,
+        )
+    }
 }
 
 /// Reports the radiance (`len` channels, any number) that sample `sample_index` of pixel
@@ -604,7 +514,7 @@ pub unsafe extern "C" fn nyq_sampler_report(
         // SAFETY: `radiance` is null or readable for `len` floats, not written meanwhile
         // (caller).
         let radiance = unsafe { slice(radiance, len)? };
-        s.inner.as_dyn().report([x, y], sample_index, radiance);
+        s.inner.report([x, y], sample_index, radiance);
         Ok(())
     })
 }
@@ -639,10 +549,7 @@ pub unsafe extern "C" fn nyq_sampler_pixel_samples(
 ) -> NyqStatus {
     run(|| {
         // SAFETY: `sampler` is null or live (caller).
-        let n = unsafe { get(sampler)? }
-            .inner
-            .as_ref()
-            .pixel_samples([x, y]);
+        let n = unsafe { get(sampler)? }.inner.pixel_samples([x, y]);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, n) }
     })

@@ -3,6 +3,7 @@
 use core::ffi::c_char;
 
 use nyquist::Error;
+use nyquist::sampler::NamedSamplerError;
 
 /// What a `nyq_` function did: [`NyqStatus::NYQ_OK`] (0) or why it refused. On any status but
 /// `NYQ_OK` the function has written nothing through its out-parameters.
@@ -48,6 +49,17 @@ impl From<Error> for NyqStatus {
             }
             Error::BufferLength { .. } | Error::BufferTooShort { .. } => NyqStatus::NYQ_ERR_BUFFER,
             Error::TooMany { .. } => NyqStatus::NYQ_ERR_TOO_MANY,
+            _ => NyqStatus::NYQ_ERR_OTHER,
+        }
+    }
+}
+
+impl From<NamedSamplerError> for NyqStatus {
+    fn from(e: NamedSamplerError) -> NyqStatus {
+        match e {
+            NamedSamplerError::UnknownName => NyqStatus::NYQ_ERR_PARSE,
+            NamedSamplerError::NotSquare { .. } => NyqStatus::NYQ_ERR_OUT_OF_RANGE,
+            NamedSamplerError::Sampler(e) => e.into(),
             _ => NyqStatus::NYQ_ERR_OTHER,
         }
     }

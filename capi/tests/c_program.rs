@@ -10,10 +10,7 @@ use std::process::Command;
 use nyquist::filter::{Filter, FilterKind, FilterSampler, FilterTable, Interpolation};
 use nyquist::radical;
 use nyquist::rng::default_rng;
-use nyquist::sampler::{
-    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler, camera_sample,
-};
+use nyquist::sampler::{Jitter, NAMES, NamedSampler, Sampler, camera_sample};
 use nyquist::sequence::{
     Halton, HaltonZaremba, Hammersley, HammersleyZaremba, ScrambledHalton, Sequence, Sobol,
     VanDerCorput, ZeroTwo,
@@ -210,43 +207,13 @@ fn stratify_lines(e: &mut Expected) {
     e.floats("shuffle", &xs);
 }
 
-/// The sampler the C API builds for `name` (16 × 16 image, 16 spp), as the CLI does.
-fn sampler(name: &str, seed: u64) -> Box<dyn Sampler> {
-    let size = [16, 16];
-    let scramble = if seed == 0 {
-        HaltonScramble::None
-    } else {
-        HaltonScramble::PermuteDigits
-    };
-    match name {
-        "random" => Box::new(RandomSampler::new(16, seed).unwrap()),
-        "uniform" => Box::new(StratifiedSampler::uniform(4, 4, seed).unwrap()),
-        "stratified" => Box::new(StratifiedSampler::new(4, 4, Jitter::Jittered, seed).unwrap()),
-        "halton" => Box::new(HaltonSampler::new(size, 16, scramble, seed).unwrap()),
-        "hammersley" => Box::new(HammersleySampler::new(size, 16, seed != 0, seed).unwrap()),
-        "zero-two" => Box::new(ZeroTwoSampler::new(16, seed).unwrap()),
-        "sobol" => Box::new(SobolSampler::new(size, 16, seed).unwrap()),
-        "best-candidate" => Box::new(BestCandidateSampler::new(16, seed).unwrap()),
-        "adaptive" => {
-            Box::new(AdaptiveSampler::new(ZeroTwoSampler::new(16, seed).unwrap(), 4, 0.1).unwrap())
-        }
-        _ => unreachable!("{name}"),
-    }
+/// The sampler the C API builds for `name` (16 × 16 image, 16 spp).
+fn sampler(name: &str, seed: u64) -> NamedSampler {
+    NamedSampler::new(name, [16, 16], 16, seed).unwrap()
 }
 
 fn sampler_lines(e: &mut Expected) {
-    let names = [
-        "random",
-        "uniform",
-        "stratified",
-        "halton",
-        "hammersley",
-        "zero-two",
-        "sobol",
-        "best-candidate",
-        "adaptive",
-    ];
-    for name in names {
+    for name in NAMES {
         for seed in [0u64, 7] {
             let mut s = sampler(name, seed);
             s.start_pixel_sample([3, 5], 2, 0);
@@ -263,7 +230,7 @@ fn sampler_lines(e: &mut Expected) {
             c.get_array_1d(&mut v[..4]);
             c.get_array_2d(&mut v[4..]);
             e.floats(&format!("arrays {name} {seed}"), &v);
-            let cs = camera_sample(&mut *s, [7, 1], 3);
+            let cs = camera_sample(&mut s, [7, 1], 3);
             e.floats(
                 &format!("camera {name} {seed}"),
                 &[cs.p_film[0], cs.p_film[1], cs.lens[0], cs.lens[1], cs.time],
