@@ -4,14 +4,14 @@
 use crate::progress::Progress;
 use crate::raster::{Canvas, LINE, text_width};
 use crate::render::{
-    AnySampler, Rendered, SamplerName, build_sampler, check_output, default_threads, json_number,
-    json_string, parse_filter, parse_size, psnr, reference, reference_kind, render, rmse,
-    tile_count,
+    Rendered, SamplerName, build_sampler, check_output, default_threads, json_number, json_string,
+    parse_filter, parse_size, psnr, reference, reference_kind, render, rmse, tile_count,
 };
 use crate::scene::Scene;
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
+use nyquist::sampler::{NamedSampler, Sampler};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
@@ -105,7 +105,7 @@ pub struct CompareArgs {
 /// One render of the sheet.
 struct Cell {
     sampler_name: SamplerName,
-    sampler: AnySampler,
+    sampler: NamedSampler,
     filter: usize,
     spp: u32,
     row: usize,
@@ -209,7 +209,15 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     let labels: Vec<[String; 3]> = cells
         .iter()
         .zip(errors.iter().zip(&sampling))
-        .map(|(c, (&e, &s))| label(c.sampler_name, &filters[c.filter].0, c.sampler.spp(), e, s))
+        .map(|(c, (&e, &s))| {
+            label(
+                c.sampler_name,
+                &filters[c.filter].0,
+                c.sampler.samples_per_pixel(),
+                e,
+                s,
+            )
+        })
         .collect();
     let label_w = labels
         .iter()
@@ -283,7 +291,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 json_string(&c.sampler_name.name()),
                 json_string(&filters[c.filter].0),
                 json_string(&filters[c.filter].1.to_string()),
-                c.sampler.spp(),
+                c.sampler.samples_per_pixel(),
                 c.spp,
                 c.row,
                 c.column,
@@ -326,8 +334,8 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 .filter(|(c, _)| c.row == row)
             {
                 line.push_str(&format!(" {e:.4} ({smp:.4})"));
-                if c.sampler.spp() != c.spp {
-                    line.push_str(&format!(" [{} spp]", c.sampler.spp()));
+                if c.sampler.samples_per_pixel() != c.spp {
+                    line.push_str(&format!(" [{} spp]", c.sampler.samples_per_pixel()));
                 }
                 line.push_str(" |");
             }
@@ -349,7 +357,7 @@ fn render_cells(args: &CompareArgs, cells: &[Cell], threads: usize) -> Result<Ve
     let per_cell = tile_count(args.size);
     let bar = Progress::new(per_cell * cells.len() as u64, "compare");
     let mut order: Vec<usize> = (0..cells.len()).collect();
-    order.sort_by_key(|&i| std::cmp::Reverse(cells[i].sampler.spp()));
+    order.sort_by_key(|&i| std::cmp::Reverse(cells[i].sampler.samples_per_pixel()));
     let next = AtomicUsize::new(0);
     let (tx, rx) = std::sync::mpsc::channel::<(usize, Result<Rendered>)>();
     std::thread::scope(|scope| {

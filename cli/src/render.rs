@@ -6,10 +6,7 @@ use crate::scene::Scene;
 use anyhow::{Context, Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use nyquist::filter::FilterKind;
-use nyquist::sampler::{
-    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler,
-};
+use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
 use nyquist_film::{Film, FilmConfig, FilmStats, Image, ImageFormat, render_tiles};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -56,48 +53,15 @@ impl SamplerName {
     }
 }
 
-/// A sampler ready to render, one variant per type so the sample loop is monomorphized.
-#[derive(Clone, Debug)]
-pub enum AnySampler {
-    /// `random`.
-    Random(RandomSampler),
-    /// `uniform` and `stratified`.
-    Stratified(StratifiedSampler),
-    /// `halton`.
-    Halton(HaltonSampler),
-    /// `hammersley`.
-    Hammersley(HammersleySampler),
-    /// `zero-two`.
-    ZeroTwo(ZeroTwoSampler),
-    /// `sobol`.
-    Sobol(SobolSampler),
-    /// `best-candidate`.
-    BestCandidate(BestCandidateSampler),
-    /// `adaptive`.
-    Adaptive(AdaptiveSampler<ZeroTwoSampler>),
-}
-
-impl AnySampler {
-    /// Samples per pixel (the maximum, for `adaptive`).
-    pub fn spp(&self) -> u32 {
-        match self {
-            AnySampler::Random(s) => s.samples_per_pixel(),
-            AnySampler::Stratified(s) => s.samples_per_pixel(),
-            AnySampler::Halton(s) => s.samples_per_pixel(),
-            AnySampler::Hammersley(s) => s.samples_per_pixel(),
-            AnySampler::ZeroTwo(s) => s.samples_per_pixel(),
-            AnySampler::Sobol(s) => s.samples_per_pixel(),
-            AnySampler::BestCandidate(s) => s.samples_per_pixel(),
-            AnySampler::Adaptive(s) => s.samples_per_pixel(),
-        }
-    }
-}
-
-/// Builds sampler `name` for `spp` samples per pixel of a `size` image. The error names the
-/// flag at fault. Samplers that round spp (zero-two, sobol, adaptive) report the spp they use
-/// through [`AnySampler::spp`].
-pub fn build_sampler(name: SamplerName, spp: u32, size: [u32; 2], seed: u64) -> Result<AnySampler> {
-    use SamplerName as S;
+/// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
+/// [`NamedSampler`]). The error names the flag at fault. Samplers that round spp (zero-two,
+/// sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
+pub fn build_sampler(
+    name: SamplerName,
+    spp: u32,
+    size: [u32; 2],
+    seed: u64,
+) -> Result<NamedSampler> {
     let n = name.name();
     if spp == 0 {
         bail!("--spp 0: need at least one sample per pixel");
@@ -105,44 +69,11 @@ pub fn build_sampler(name: SamplerName, spp: u32, size: [u32; 2], seed: u64) -> 
     if spp > 1 << 20 {
         bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
     }
-    let err = |e: nyquist::Error| anyhow!("--sampler {n} --spp {spp}: {e}");
-    Ok(match name {
-        S::Random => AnySampler::Random(RandomSampler::new(spp, seed).map_err(err)?),
-        S::Uniform | S::Stratified => {
-            let side = spp.isqrt();
-            if side * side != spp {
-                bail!(
-                    "--spp {spp} is not a square: --sampler {n} takes a √spp × √spp grid (1, 4, 9, 16, 25, …)"
-                );
-            }
-            let jitter = if name == S::Uniform {
-                Jitter::Centered
-            } else {
-                Jitter::Jittered
-            };
-            AnySampler::Stratified(StratifiedSampler::new(side, side, jitter, seed).map_err(err)?)
-        }
-        S::Halton => {
-            let scramble = if seed == 0 {
-                HaltonScramble::None
-            } else {
-                HaltonScramble::PermuteDigits
-            };
-            AnySampler::Halton(HaltonSampler::new(size, spp, scramble, seed).map_err(err)?)
-        }
-        S::Hammersley => {
-            AnySampler::Hammersley(HammersleySampler::new(size, spp, seed != 0, seed).map_err(err)?)
-        }
-        S::ZeroTwo => AnySampler::ZeroTwo(ZeroTwoSampler::new(spp, seed).map_err(err)?),
-        S::Sobol => AnySampler::Sobol(SobolSampler::new(size, spp, seed).map_err(err)?),
-        S::BestCandidate => {
-            AnySampler::BestCandidate(BestCandidateSampler::new(spp, seed).map_err(err)?)
-        }
-        S::Adaptive => {
-            let inner = ZeroTwoSampler::new(spp, seed).map_err(err)?;
-            let min = (inner.samples_per_pixel() / 4).max(1);
-            AnySampler::Adaptive(AdaptiveSampler::new(inner, min, 0.1).map_err(err)?)
-        }
+    NamedSampler::new(&n, size, spp, seed).map_err(|e| match e {
+        NamedSamplerError::NotSquare { .. } => anyhow!(
+            "--spp {spp} is not a square: --sampler {n} takes a √spp × √spp grid (1, 4, 9, 16, 25, …)"
+        ),
+        e => anyhow!("--sampler {n} --spp {spp}: {e}"),
     })
 }
 
@@ -162,7 +93,7 @@ pub struct Rendered {
 pub fn render(
     scene: Scene,
     size: [u32; 2],
-    sampler: &AnySampler,
+    sampler: &NamedSampler,
     filter: &FilterKind,
     threads: usize,
     tick: &mut dyn FnMut(),
@@ -170,17 +101,8 @@ pub fn render(
     let mut film = Film::new(FilmConfig::new(size[0], size[1]), filter.as_dyn())
         .map_err(|e| anyhow!("--filter {}: {e}", filter.name()))?;
     let start = Instant::now();
-    match sampler {
-        AnySampler::Random(s) => render_with(&mut film, s, scene, size, threads, tick),
-        AnySampler::Stratified(s) => render_with(&mut film, s, scene, size, threads, tick),
-        AnySampler::Halton(s) => render_with(&mut film, s, scene, size, threads, tick),
-        AnySampler::Hammersley(s) => render_with(&mut film, s, scene, size, threads, tick),
-        AnySampler::ZeroTwo(s) => render_with(&mut film, s, scene, size, threads, tick),
-        AnySampler::Sobol(s) => render_with(&mut film, s, scene, size, threads, tick),
-        AnySampler::BestCandidate(s) => render_with(&mut film, s, scene, size, threads, tick),
-        AnySampler::Adaptive(s) => render_with(&mut film, s, scene, size, threads, tick),
-    }
-    .map_err(|e| anyhow!("render: {e}"))?;
+    render_with(&mut film, sampler, scene, size, threads, tick)
+        .map_err(|e| anyhow!("render: {e}"))?;
     let (image, _) = film.image();
     Ok(Rendered {
         image,
@@ -499,12 +421,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         ImageFormat::from_path(p).map_err(|e| anyhow!("--output: {e}"))?;
     }
     let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed)?;
-    if sampler.spp() != args.spp {
+    if sampler.samples_per_pixel() != args.spp {
         eprintln!(
             "nyquist: note: --sampler {} uses a power-of-two spp: --spp {} rounded up to {}",
             args.sampler.name(),
             args.spp,
-            sampler.spp()
+            sampler.samples_per_pixel()
         );
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
@@ -536,7 +458,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 args.size[0],
                 args.size[1],
                 json_string(&args.sampler.name()),
-                sampler.spp(),
+                sampler.samples_per_pixel(),
                 json_string(&args.filter.to_string()),
                 args.seed,
                 json_string(&reference_kind(args.scene)),
@@ -555,7 +477,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 args.size[0],
                 args.size[1],
                 args.sampler.name(),
-                sampler.spp(),
+                sampler.samples_per_pixel(),
                 args.filter,
                 if threads == 1 { "" } else { "s" }
             );
