@@ -13,6 +13,52 @@ pub(crate) fn run(f: impl FnOnce() -> Result<(), NyqStatus>) -> NyqStatus {
     }
 }
 
+/// Reads `*handle` with `read` and writes the result through `out` with `write` ([`put`] or
+/// [`put_array`]): the shape of every query entry point. `handle` is checked first, then `out`
+/// for null, and only then is `read` called, so a null pointer is `NYQ_ERR_NULL` whatever
+/// `read` would say.
+///
+/// # Safety
+/// `handle` is null or points to a live `H` not mutated meanwhile; `out` is null or valid for
+/// what `write` writes.
+pub(crate) unsafe fn query<H, T, V>(
+    handle: *const H,
+    out: *mut T,
+    read: impl FnOnce(&H) -> Result<V, NyqStatus>,
+    write: unsafe fn(*mut T, V) -> Result<(), NyqStatus>,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `handle` is null or live and not mutated meanwhile (caller).
+        let h = unsafe { get(handle)? };
+        need(out)?;
+        let v = read(h)?;
+        // SAFETY: `out` is valid for `write` (caller; null checked above).
+        unsafe { write(out, v) }
+    })
+}
+
+/// [`query`] through an exclusive borrow, for handles that are cursors (samplers): on a null
+/// pointer `read` is not called, so the cursor does not move.
+///
+/// # Safety
+/// `handle` is null or points to a live `H` not otherwise accessed meanwhile; `out` is null or
+/// valid for what `write` writes.
+pub(crate) unsafe fn query_mut<H, T, V>(
+    handle: *mut H,
+    out: *mut T,
+    read: impl FnOnce(&mut H) -> Result<V, NyqStatus>,
+    write: unsafe fn(*mut T, V) -> Result<(), NyqStatus>,
+) -> NyqStatus {
+    run(|| {
+        // SAFETY: `handle` is null or live and exclusively ours (caller).
+        let h = unsafe { get_mut(handle)? };
+        need(out)?;
+        let v = read(h)?;
+        // SAFETY: `out` is valid for `write` (caller; null checked above).
+        unsafe { write(out, v) }
+    })
+}
+
 /// `NYQ_ERR_NULL` if `p` is null: entry points call it on every pointer before anything
 /// else, so a null pointer is reported whatever else is wrong.
 pub(crate) fn need<T>(p: *const T) -> Result<(), NyqStatus> {

@@ -15,7 +15,7 @@ use nyquist::filter::{
 };
 
 use crate::NyqStatus;
-use crate::ffi::{drop_box, get, need, put, put_array, put_box, run, text};
+use crate::ffi::{drop_box, need, put, put_array, put_box, query, run, text};
 
 /// Points per axis of a handle's lookup tables (the core's default `FilterTable` size).
 pub const NYQ_FILTER_TABLE_SIZE: u32 = 16;
@@ -118,7 +118,43 @@ impl Filter for Callback {
     }
 }
 
+impl Importance {
+    fn sample(&self, u: [f32; 2]) -> NyqFilterSample {
+        let s = match self {
+            Importance::Kind(s) => s.sample(u),
+            Importance::Tabulated(s) => s.sample(u),
+        };
+        NyqFilterSample {
+            offset: s.offset,
+            weight: s.weight,
+        }
+    }
+
+    fn pdf(&self, p: [f32; 2]) -> f32 {
+        match self {
+            Importance::Kind(s) => s.pdf(p),
+            Importance::Tabulated(s) => s.pdf(p),
+        }
+    }
+}
+
 impl NyqFilter {
+    /// The built-in filter's exact weight, or a callback filter's linear table.
+    fn eval(&self, x: f32, y: f32) -> f32 {
+        match &self.kind {
+            Some(k) => k.eval(x, y),
+            None => self.linear.weight(x, y),
+        }
+    }
+
+    /// The built-in filter's closed form, or a callback filter's numeric integral.
+    fn integral(&self) -> f32 {
+        match &self.kind {
+            Some(k) => k.integral(),
+            None => self.linear.integral(),
+        }
+    }
+
     fn tables<F: Filter + ?Sized>(f: &F) -> Result<[FilterTable; 2], NyqStatus> {
         Ok([
             FilterTable::new(f, Interpolation::Nearest)?,
@@ -291,12 +327,8 @@ pub unsafe extern "C" fn nyq_filter_destroy(filter: *mut NyqFilter) {
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_filter_radius(filter: *const NyqFilter, out: *mut f32) -> NyqStatus {
-    run(|| {
-        // SAFETY: `filter` is null or live (caller).
-        let r = unsafe { get(filter)? }.linear.radius();
-        // SAFETY: `out` is null or writable for two floats (caller).
-        unsafe { put_array(out, r) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(filter, out, |f| Ok(f.linear.radius()), put_array) }
 }
 
 /// Writes the filter's weight at offset `(x, y)` pixels to `*out`: the built-in filter's exact
@@ -328,16 +360,8 @@ pub unsafe extern "C" fn nyq_filter_eval(
     y: f32,
     out: *mut f32,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `filter` is null or live (caller).
-        let f = unsafe { get(filter)? };
-        let w = match &f.kind {
-            Some(k) => k.eval(x, y),
-            None => f.linear.weight(x, y),
-        };
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, w) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(filter, out, |f| Ok(f.eval(x, y)), put) }
 }
 
 /// Writes the table weight at offset `(x, y)` pixels to `*out`, read with `interpolation` (a
@@ -376,18 +400,16 @@ pub unsafe extern "C" fn nyq_filter_lookup(
     y: f32,
     out: *mut f32,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `filter` is null or live (caller).
-        let f = unsafe { get(filter)? };
-        need(out)?;
+    let lookup = |f: &NyqFilter| {
         let table = match interpolation {
             i if i == NyqInterpolation::NYQ_INTERP_NEAREST as u32 => &f.nearest,
             i if i == NyqInterpolation::NYQ_INTERP_LINEAR as u32 => &f.linear,
             _ => return Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE),
         };
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, table.weight(x, y)) }
-    })
+        Ok(table.weight(x, y))
+    };
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(filter, out, lookup, put) }
 }
 
 /// Writes `∫∫ f(x, y) dx dy` over the support to `*out`: closed forms for the built-ins, the
@@ -413,16 +435,8 @@ pub unsafe extern "C" fn nyq_filter_lookup(
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_filter_integral(filter: *const NyqFilter, out: *mut f32) -> NyqStatus {
-    run(|| {
-        // SAFETY: `filter` is null or live (caller).
-        let f = unsafe { get(filter)? };
-        let i = match &f.kind {
-            Some(k) => k.integral(),
-            None => f.linear.integral(),
-        };
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, i) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(filter, out, |f| Ok(f.integral()), put) }
 }
 
 /// Draws a filter offset from `(u0, u1) ∈ [0, 1)²` (values outside are clamped; NaN counts as
@@ -455,20 +469,8 @@ pub unsafe extern "C" fn nyq_filter_sample(
     u1: f32,
     out: *mut NyqFilterSample,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `filter` is null or live (caller).
-        let f = unsafe { get(filter)? };
-        let s = match &f.sampler {
-            Importance::Kind(s) => s.sample([u0, u1]),
-            Importance::Tabulated(s) => s.sample([u0, u1]),
-        };
-        let s = NyqFilterSample {
-            offset: s.offset,
-            weight: s.weight,
-        };
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, s) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(filter, out, |f| Ok(f.sampler.sample([u0, u1])), put) }
 }
 
 /// Writes the density [`nyq_filter_sample`] draws offset `(x, y)` with to `*out` (0 outside
@@ -499,14 +501,6 @@ pub unsafe extern "C" fn nyq_filter_pdf(
     y: f32,
     out: *mut f32,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `filter` is null or live (caller).
-        let f = unsafe { get(filter)? };
-        let p = match &f.sampler {
-            Importance::Kind(s) => s.pdf([x, y]),
-            Importance::Tabulated(s) => s.pdf([x, y]),
-        };
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, p) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(filter, out, |f| Ok(f.sampler.pdf([x, y])), put) }
 }

@@ -11,7 +11,7 @@ use nyquist::sampler::{CameraSample, NamedSampler, Sampler, camera_sample};
 
 use crate::NyqStatus;
 use crate::ffi::{
-    drop_box, get, get_mut, need, put, put_array, put_box, run, slice, slice_mut, text,
+    drop_box, get_mut, need, put, put_array, put_box, query, query_mut, run, slice, slice_mut, text,
 };
 
 /// A sampler behind an opaque handle, made by [`nyq_sampler_create`] or [`nyq_sampler_clone`]
@@ -19,29 +19,6 @@ use crate::ffi::{
 #[derive(Clone, Debug)]
 pub struct NyqSampler {
     inner: NamedSampler,
-}
-
-/// Draws a value from `*sampler` with `draw` and writes it through `out` with `write` (`put`
-/// or `put_array`). Both pointers are checked for null first, so on that error the cursor
-/// does not move.
-///
-/// # Safety
-/// `sampler` is null or a live handle not used by another thread meanwhile; `out` is null or
-/// valid for what `write` writes.
-unsafe fn draw<T, V>(
-    sampler: *mut NyqSampler,
-    out: *mut T,
-    draw: impl FnOnce(&mut NamedSampler) -> V,
-    write: unsafe fn(*mut T, V) -> Result<(), NyqStatus>,
-) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live and exclusively ours (caller).
-        let s = unsafe { get_mut(sampler)? };
-        need(out)?;
-        let v = draw(&mut s.inner);
-        // SAFETY: `out` is valid for `write` (caller; null checked above).
-        unsafe { write(out, v) }
-    })
 }
 
 /// Creates sampler `name` for `spp` samples per pixel of a `width × height` image with `seed`,
@@ -126,12 +103,8 @@ pub unsafe extern "C" fn nyq_sampler_clone(
     sampler: *const NyqSampler,
     out: *mut *mut NyqSampler,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live (caller).
-        let s = unsafe { get(sampler)? }.clone();
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put_box(out, s) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(sampler, out, |s| Ok(s.clone()), put_box) }
 }
 
 /// Releases a handle from [`nyq_sampler_create`] or [`nyq_sampler_clone`]. Null is a no-op.
@@ -175,12 +148,8 @@ pub unsafe extern "C" fn nyq_sampler_samples_per_pixel(
     sampler: *const NyqSampler,
     out: *mut u32,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live (caller).
-        let n = unsafe { get(sampler)? }.inner.samples_per_pixel();
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, n) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(sampler, out, |s| Ok(s.inner.samples_per_pixel()), put) }
 }
 
 /// Moves the cursor to sample `sample_index` of pixel `(x, y)`, at dimension `dim`.
@@ -274,8 +243,8 @@ unsafe fn array(
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut f32) -> NyqStatus {
-    // SAFETY: the pointers are as `draw` needs (caller).
-    unsafe { draw(sampler, out, |s| s.get_1d(), put) }
+    // SAFETY: the pointers are as `query_mut` needs (caller).
+    unsafe { query_mut(sampler, out, |s| Ok(s.inner.get_1d()), put) }
 }
 
 /// Writes the values of the current and the next dimension, in `[0, 1)²`, to `out[0]` and
@@ -303,8 +272,8 @@ pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut 
 /// ```
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn nyq_sampler_get_2d(sampler: *mut NyqSampler, out: *mut f32) -> NyqStatus {
-    // SAFETY: the pointers are as `draw` needs (caller).
-    unsafe { draw(sampler, out, |s| s.get_2d(), put_array) }
+    // SAFETY: the pointers are as `query_mut` needs (caller).
+    unsafe { query_mut(sampler, out, |s| Ok(s.inner.get_2d()), put_array) }
 }
 
 /// Writes the image sample (the offset inside the pixel, dimensions 0 and 1 whatever the
@@ -335,8 +304,8 @@ pub unsafe extern "C" fn nyq_sampler_get_pixel_2d(
     sampler: *mut NyqSampler,
     out: *mut f32,
 ) -> NyqStatus {
-    // SAFETY: the pointers are as `draw` needs (caller).
-    unsafe { draw(sampler, out, |s| s.get_pixel_2d(), put_array) }
+    // SAFETY: the pointers are as `query_mut` needs (caller).
+    unsafe { query_mut(sampler, out, |s| Ok(s.inner.get_pixel_2d()), put_array) }
 }
 
 /// Fills `out[0..len]` with an array of `len` values for the current sample at the current
@@ -463,15 +432,9 @@ pub unsafe extern "C" fn nyq_sampler_camera_sample(
     sample_index: u32,
     out: *mut NyqCameraSample,
 ) -> NyqStatus {
-    // SAFETY: the pointers are as `draw` needs (caller).
-    unsafe {
-        draw(
-            sampler,
-            out,
-            |s| camera_sample(s, [x, y], sample_index).into(),
-            put,
-        )
-    }
+    let camera = |s: &mut NyqSampler| Ok(camera_sample(&mut s.inner, [x, y], sample_index).into());
+    // SAFETY: the pointers are as `query_mut` needs (caller).
+    unsafe { query_mut(sampler, out, camera, put) }
 }
 
 /// Reports the radiance (`len` channels, any number) that sample `sample_index` of pixel
@@ -547,10 +510,6 @@ pub unsafe extern "C" fn nyq_sampler_pixel_samples(
     y: u32,
     out: *mut u32,
 ) -> NyqStatus {
-    run(|| {
-        // SAFETY: `sampler` is null or live (caller).
-        let n = unsafe { get(sampler)? }.inner.pixel_samples([x, y]);
-        // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, n) }
-    })
+    // SAFETY: the pointers are as `query` needs (caller).
+    unsafe { query(sampler, out, |s| Ok(s.inner.pixel_samples([x, y])), put) }
 }
