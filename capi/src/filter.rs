@@ -76,14 +76,26 @@ pub struct NyqFilter {
 #[derive(Debug)]
 enum Importance {
     Kind(FilterSampler<FilterKind>),
-    Tabulated(FilterSampler<Tabulated>),
+    Tabulated(FilterSampler<TabulatedFilter>),
 }
 
-/// A filter given by its (linear, 2D) table: a callback filter after creation.
-#[derive(Debug)]
-struct Tabulated(FilterTable);
+/// A filter given by its table: what a callback filter handle evaluates after
+/// [`nyq_filter_create_callback`] (its linear table, as weight, integral and importance
+/// sampling). A Rust-only type, so Rust code can reproduce a callback handle's values.
+///
+/// ```
+/// use nyquist::filter::{Filter, FilterKind, FilterTable, Interpolation};
+/// use nyquist_capi::TabulatedFilter;
+/// let k = FilterKind::parse("mitchell").unwrap();
+/// let t: FilterTable = FilterTable::new(&k, Interpolation::Linear).unwrap();
+/// let f = TabulatedFilter(t);
+/// assert_eq!(f.eval(0.3, -1.1), t.weight(0.3, -1.1));
+/// assert_eq!(f.radius(), k.radius());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TabulatedFilter(pub FilterTable);
 
-impl Filter for Tabulated {
+impl Filter for TabulatedFilter {
     fn radius(&self) -> [f32; 2] {
         self.0.radius()
     }
@@ -178,7 +190,7 @@ impl NyqFilter {
             kind: None,
             nearest,
             linear,
-            sampler: Importance::Tabulated(FilterSampler::new(Tabulated(linear))?),
+            sampler: Importance::Tabulated(FilterSampler::new(TabulatedFilter(linear))?),
         })
     }
 }

@@ -1,9 +1,12 @@
 //! The C API called from Rust: status mapping, pointer checks, and properties over arbitrary
 //! input (never a panic; every value in `[0, 1)`; results equal to the core's).
 
+mod common;
+
 use std::ffi::{CStr, CString};
 use std::ptr;
 
+use common::Clipped;
 use nyquist::Error;
 use nyquist::filter::{Filter, FilterKind};
 use nyquist::sequence::{Halton, Sequence, Sobol};
@@ -261,28 +264,23 @@ proptest! {
 
 #[test]
 fn a_callback_filter_is_its_table_after_creation() {
-    unsafe extern "C" fn bump(_: *mut std::ffi::c_void, x: f32, y: f32) -> f32 {
+    fn bump(x: f32, y: f32) -> f32 {
         (1.0 - x * x) * (1.0 - y * y)
     }
-    struct Bump;
-    impl Filter for Bump {
-        fn radius(&self) -> [f32; 2] {
-            [1.0, 1.0]
-        }
-        fn eval(&self, x: f32, y: f32) -> f32 {
-            if !(x.abs() <= 1.0 && y.abs() <= 1.0) {
-                return 0.0;
-            }
-            (1.0 - x * x) * (1.0 - y * y)
-        }
+    unsafe extern "C" fn bump_c(_: *mut std::ffi::c_void, x: f32, y: f32) -> f32 {
+        bump(x, y)
     }
+    let exact = Clipped {
+        radius: 1.0,
+        eval: bump,
+    };
     let table: nyquist::filter::FilterTable =
-        nyquist::filter::FilterTable::new(&Bump, nyquist::filter::Interpolation::Nearest).unwrap();
+        nyquist::filter::FilterTable::new(&exact, nyquist::filter::Interpolation::Nearest).unwrap();
     let mut f: *mut NyqFilter = ptr::null_mut();
-    // SAFETY: `bump` ignores its user pointer; the handle is destroyed once.
+    // SAFETY: `bump_c` ignores its user pointer; the handle is destroyed once.
     unsafe {
         assert_eq!(
-            nyq_filter_create_callback(Some(bump), ptr::null_mut(), 1.0, 1.0, &mut f),
+            nyq_filter_create_callback(Some(bump_c), ptr::null_mut(), 1.0, 1.0, &mut f),
             NyqStatus::NYQ_OK
         );
         for (x, y) in [
@@ -298,7 +296,7 @@ fn a_callback_filter_is_its_table_after_creation() {
         }
         let mut i = 0.0;
         nyq_filter_integral(f, &mut i);
-        assert_eq!(i, Bump.integral());
+        assert_eq!(i, exact.integral());
         assert!((i - 16.0 / 9.0).abs() < 1e-3, "{i}");
         nyq_filter_destroy(f);
     }

@@ -3,10 +3,13 @@
 //! line it prints with the same values computed here from the `nyquist` crate: floats bit for
 //! bit, counts exactly, and the status code of each bad call.
 
+mod common;
+
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use common::Clipped;
 use nyquist::filter::{Filter, FilterKind, FilterSampler, FilterTable, Interpolation};
 use nyquist::radical;
 use nyquist::rng::default_rng;
@@ -16,7 +19,7 @@ use nyquist::sequence::{
     VanDerCorput, ZeroTwo,
 };
 use nyquist::stratify;
-use nyquist_capi::NyqStatus;
+use nyquist_capi::{NyqStatus, TabulatedFilter};
 
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
@@ -240,35 +243,13 @@ fn sampler_lines(e: &mut Expected) {
 }
 
 /// The C program's plugin filter, written again in Rust.
-struct Cone;
-
-impl Filter for Cone {
-    fn radius(&self) -> [f32; 2] {
-        [1.5, 1.5]
-    }
-    fn eval(&self, x: f32, y: f32) -> f32 {
-        if !(x.abs() <= 1.5 && y.abs() <= 1.5) {
-            return 0.0;
-        }
+const CONE: Clipped = Clipped {
+    radius: 1.5,
+    eval: |x, y| {
         let v = 2.0f32 * (1.0 - (x * x + y * y) / 2.25);
         if v > 0.0 { v } else { 0.0 }
-    }
-}
-
-/// A filter given by its linear table, as the C API treats a callback filter after creation.
-struct Tabulated(FilterTable);
-
-impl Filter for Tabulated {
-    fn radius(&self) -> [f32; 2] {
-        self.0.radius()
-    }
-    fn eval(&self, x: f32, y: f32) -> f32 {
-        self.0.weight(x, y)
-    }
-    fn integral(&self) -> f32 {
-        self.0.integral()
-    }
-}
+    },
+};
 
 fn filter_values<F: Filter>(e: &mut Expected, label: &str, f: F, exact: &dyn Filter) {
     const PROBES: [[f32; 2]; 4] = [[0.0, 0.0], [0.3, -1.1], [1.7, 0.2], [-0.45, 0.05]];
@@ -301,9 +282,9 @@ fn filter_lines(e: &mut Expected) {
         let k = FilterKind::parse(spec).unwrap();
         filter_values(e, spec, k, &k);
     }
-    let linear: FilterTable = FilterTable::new(&Cone, Interpolation::Linear).unwrap();
-    assert_eq!(linear.integral(), Cone.integral());
-    filter_values(e, "cone", Tabulated(linear), &Cone);
+    let linear: FilterTable = FilterTable::new(&CONE, Interpolation::Linear).unwrap();
+    assert_eq!(linear.integral(), CONE.integral());
+    filter_values(e, "cone", TabulatedFilter(linear), &CONE);
     e.line("cone calls after lookups unchanged");
 }
 
