@@ -125,13 +125,9 @@ pub(crate) unsafe fn get_mut<'a, T>(p: *mut T) -> Result<&'a mut T, NyqStatus> {
     Ok(unsafe { &mut *p })
 }
 
-/// The slice `p[0..len]`: null → `NYQ_ERR_NULL`, `len == 0` → `NYQ_ERR_ZERO_SIZE`, misaligned
-/// or more bytes than `isize::MAX` → `NYQ_ERR_BUFFER`.
-///
-/// # Safety
-/// `p` is null or valid for reads and writes of `len` consecutive `T`, not otherwise accessed
-/// for `'a`.
-pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [T], NyqStatus> {
+/// Checks `(p, len)` can be a slice: null → `NYQ_ERR_NULL`, `len == 0` →
+/// `NYQ_ERR_ZERO_SIZE`, misaligned or more bytes than `isize::MAX` → `NYQ_ERR_BUFFER`.
+fn check_slice<T>(p: *const T, len: usize) -> Result<(), NyqStatus> {
     check(p)?;
     if len == 0 {
         return Err(NyqStatus::NYQ_ERR_ZERO_SIZE);
@@ -139,6 +135,17 @@ pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [
     if len > isize::MAX as usize / core::mem::size_of::<T>().max(1) {
         return Err(NyqStatus::NYQ_ERR_BUFFER);
     }
+    Ok(())
+}
+
+/// The slice `p[0..len]`: null → `NYQ_ERR_NULL`, `len == 0` → `NYQ_ERR_ZERO_SIZE`, misaligned
+/// or more bytes than `isize::MAX` → `NYQ_ERR_BUFFER`.
+///
+/// # Safety
+/// `p` is null or valid for reads and writes of `len` consecutive `T`, not otherwise accessed
+/// for `'a`.
+pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [T], NyqStatus> {
+    check_slice(p, len)?;
     // SAFETY: non-null, aligned, total size ≤ isize::MAX (checked); valid and exclusive for
     // `len` elements (caller).
     Ok(unsafe { core::slice::from_raw_parts_mut(p, len) })
@@ -149,13 +156,7 @@ pub(crate) unsafe fn slice_mut<'a, T>(p: *mut T, len: usize) -> Result<&'a mut [
 /// # Safety
 /// `p` is null or valid for reads of `len` consecutive `T`, not written for `'a`.
 pub(crate) unsafe fn slice<'a, T>(p: *const T, len: usize) -> Result<&'a [T], NyqStatus> {
-    check(p)?;
-    if len == 0 {
-        return Err(NyqStatus::NYQ_ERR_ZERO_SIZE);
-    }
-    if len > isize::MAX as usize / core::mem::size_of::<T>().max(1) {
-        return Err(NyqStatus::NYQ_ERR_BUFFER);
-    }
+    check_slice(p, len)?;
     // SAFETY: non-null, aligned, total size ≤ isize::MAX (checked); valid for reads and not
     // written for `len` elements (caller).
     Ok(unsafe { core::slice::from_raw_parts(p, len) })
