@@ -12,7 +12,7 @@
 //! write_png(&mut bytes, &img, &PngOptions::default()).unwrap();
 //! assert_eq!(&bytes[1..4], b"PNG");
 //! ```
-#![forbid(unsafe_code)]
+#![deny(unsafe_code)]
 #![deny(missing_docs)]
 
 mod bounds;

@@ -1,43 +1,69 @@
-//! The film's filter weights: the core's precomputed filter table, and the per-axis weight
-//! sources the tile's accumulation loop is generic over (table lookups, or direct evaluation for
-//! comparison).
+//! The film's filter weights: a [`PhaseTable`] for separable filters (one interpolated row of
+//! taps per axis and sample), the core's 64-entry [`FilterTable`] for the others, and the
+//! per-axis weight sources the tile's generic accumulation loop is generic over (table lookups,
+//! or direct evaluation for comparison).
 
 use crate::Error;
-use nyquist::filter::{Axis, Filter, FilterTable, Interpolation, SeparableTable, Table2d};
+use nyquist::filter::{
+    Axis, Filter, FilterTable, Interpolation, PhaseTable, SeparableTable, Table2d,
+};
 
-/// Entries per axis of the film's filter table: 64, not pbrt's 16. Lookups cost the same at any
-/// size, and linear interpolation's error falls with the square of the size — at 16 entries a
-/// Mitchell film converges to an image 1.8·10⁻³ RMSE away from the exactly filtered one (the
-/// CLI's sampling-RMSE measured it), a bias that more samples never remove.
+/// Entries per axis of the film's [`FilterTable`] (filters a [`PhaseTable`] cannot hold: not
+/// separable, or a radius of 8 or more): 64, not pbrt's 16. Lookups cost the same at any size,
+/// and linear interpolation's error falls with the square of the size — at 16 entries a Mitchell
+/// film converges to an image 1.8·10⁻³ RMSE away from the exactly filtered one (the CLI's
+/// sampling-RMSE measured it), a bias that more samples never remove.
 pub(crate) const FILM_TABLE: usize = 64;
 
-/// The filter as the film reads it: a [`FILM_TABLE`]-entry-per-axis linear table built once.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Weights {
-    table: FilterTable<FILM_TABLE>,
+/// The filter as the film reads it, built once. One per film, behind the film's `Arc`: the
+/// phase table is held inline (no pointer to follow per sample), the rarer fallback boxed.
+#[derive(Clone, Debug)]
+#[allow(clippy::large_enum_variant)]
+pub(crate) enum Weights {
+    /// Separable filters with radii below 8: the polyphase table (grid spacing 1/64 pixel).
+    Phase(PhaseTable),
+    /// Everything else: a [`FILM_TABLE`]-entry-per-axis linear table (boxed: a 2D one is
+    /// 16 KB).
+    Table(Box<FilterTable<FILM_TABLE>>),
 }
 
 impl Weights {
     pub(crate) fn new(filter: &dyn Filter) -> Result<Weights, Error> {
+        if let Ok(t) = PhaseTable::new(filter) {
+            return Ok(Weights::Phase(t));
+        }
         let table = FilterTable::new(filter, Interpolation::Linear).map_err(Error::Core)?;
-        Ok(Weights { table })
-    }
-
-    pub(crate) fn table(&self) -> &FilterTable<FILM_TABLE> {
-        &self.table
+        Ok(Weights::Table(Box::new(table)))
     }
 
     pub(crate) fn radius(&self) -> [f32; 2] {
-        self.table.radius()
+        match self {
+            Weights::Phase(t) => t.radius(),
+            Weights::Table(t) => t.radius(),
+        }
     }
 
     pub(crate) fn integral(&self) -> f32 {
-        self.table.integral()
+        match self {
+            Weights::Phase(t) => t.integral(),
+            Weights::Table(t) => t.integral(),
+        }
+    }
+
+    /// Whether the weight is a product of per-axis factors.
+    pub(crate) fn is_separable(&self) -> bool {
+        match self {
+            Weights::Phase(_) => true,
+            Weights::Table(t) => t.is_separable(),
+        }
     }
 
     #[inline]
     pub(crate) fn weight(&self, dx: f32, dy: f32) -> f32 {
-        self.table.weight(dx, dy)
+        match self {
+            Weights::Phase(t) => t.weight(dx, dy),
+            Weights::Table(t) => t.weight(dx, dy),
+        }
     }
 }
 

@@ -51,8 +51,12 @@ pub const PHASES: usize = 64;
 /// ```
 pub const MAX_TAPS: usize = 16;
 
-/// Entries per axis: `PHASES + 1` rows of up to `MAX_TAPS` taps.
-const ENTRIES: usize = (PHASES + 1) * MAX_TAPS;
+/// `1.5·2²³`: `c + MAGIC` holds `round(c)` (ties to even) in its low mantissa bits for
+/// `−2²² ≤ c < 2²²`.
+const MAGIC: f32 = 12_582_912.0;
+
+/// The bits of `MAGIC`.
+const MAGIC_BITS: u32 = 0x4B40_0000;
 
 /// One axis of a [`PhaseTable`].
 #[derive(Clone, Debug, PartialEq)]
@@ -63,8 +67,8 @@ struct PhaseAxis {
     taps: usize,
     /// `taps` rounded up to a multiple of 4: the row length (the padding holds 0).
     stride: usize,
-    /// Row `j` (phase `j/64`) at `values[j·stride ..][..stride]`.
-    values: [f32; ENTRIES],
+    /// Row `j` (phase `j/64`): taps `0 … taps − 1`, then 0.
+    values: [[f32; MAX_TAPS]; PHASES + 1],
 }
 
 impl PhaseAxis {
@@ -79,8 +83,8 @@ impl PhaseAxis {
         }
         let taps = span as usize + 1;
         let stride = taps.next_multiple_of(4);
-        let mut values = [0.0f32; ENTRIES];
-        for (j, row) in values.chunks_exact_mut(stride).take(PHASES + 1).enumerate() {
+        let mut values = [[0.0f32; MAX_TAPS]; PHASES + 1];
+        for (j, row) in values.iter_mut().enumerate() {
             let phase = j as f64 / PHASES as f64;
             for (k, v) in row[..taps].iter_mut().enumerate() {
                 // The offset of tap k at this phase, formed in f64 and rounded once.
@@ -97,21 +101,22 @@ impl PhaseAxis {
     }
 
     /// Row index `j ∈ [0, 63]` and position `t ∈ [0, 1]` between rows `j` and `j + 1` for a phase
-    /// clamped to `[0, 1]` (NaN → 0).
+    /// clamped to `[0, 1]` (NaN → 0): `j = round(min(64·phase − ½, 63))` by the `1.5·2²³` trick
+    /// (no saturating float-to-int conversion), `t = 64·phase − j`. At a stored phase the tie
+    /// gives `t = 0` or `t = 1`, both exact.
     #[inline(always)]
     fn cell(phase: f32) -> (usize, f32) {
         let u = (phase * PHASES as f32).max(0.0).min(PHASES as f32);
-        // u ∈ [0, 64]: the truncating conversion is the floor.
-        let j = (u as usize).min(PHASES - 1);
-        (j, u - j as f32)
+        let m = (u - 0.5).min((PHASES - 1) as f32) + MAGIC;
+        let j = (m.to_bits().wrapping_sub(MAGIC_BITS) as usize).min(PHASES - 1);
+        (j, u - (m - MAGIC))
     }
 
-    /// Rows `j` and `j + 1`, each `stride` long.
+    /// Rows `j` and `j + 1` (`j < 64`), each [`MAX_TAPS`] long.
     #[inline(always)]
-    fn rows(&self, j: usize) -> (&[f32], &[f32]) {
-        let s = self.stride.min(MAX_TAPS);
-        let two = &self.values[j * s..(j + 2) * s];
-        two.split_at(s)
+    fn rows(&self, j: usize) -> (&[f32; MAX_TAPS], &[f32; MAX_TAPS]) {
+        let j = j.min(PHASES - 1);
+        (&self.values[j], &self.values[j + 1])
     }
 
     #[inline(always)]
@@ -119,7 +124,8 @@ impl PhaseAxis {
         let (j, t) = Self::cell(phase);
         let (a, b) = self.rows(j);
         // Four lanes at a time over the padded row: (1 − t)·a + t·b, exact at t = 0 and 1.
-        for ((o, a), b) in out
+        let lanes = self.stride.min(MAX_TAPS);
+        for ((o, a), b) in out[..lanes]
             .chunks_exact_mut(4)
             .zip(a.chunks_exact(4))
             .zip(b.chunks_exact(4))
