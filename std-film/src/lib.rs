@@ -12,7 +12,7 @@
 //! write_png(&mut bytes, &img, &PngOptions::default()).unwrap();
 //! assert_eq!(&bytes[1..4], b"PNG");
 //! ```
-#![deny(unsafe_code)]
+#![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
 mod bounds;

@@ -184,32 +184,30 @@ fn footprint_rows<'a>(
     pixels.get_mut(first..first + (ny - 1) * stride + nx)
 }
 
-/// Adds `f·l` and `f` to every pixel of the footprint with weights from a phase table: one
-/// interpolated row of taps per axis, then the outer product.
+/// The weight of a one-pixel footprint (the box filter, nearly always): the filter's constant,
+/// or one tap per axis.
 #[inline(always)]
-fn accumulate_phase(
-    pixels: &mut [Pixel],
-    stride: usize,
-    fp: &Footprint,
-    l: [f64; 3],
-    t: &PhaseTable,
-) {
-    let Some(rows) = footprint_rows(pixels, stride, fp) else {
-        return;
-    };
-    let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
-    if nx == 1 && ny == 1 {
-        // One pixel (the box filter, nearly always): two taps, no rows.
-        let f = f64::from(t.tap(Axis::X, fp.phase[0], fp.tap0[0]))
-            * f64::from(t.tap(Axis::Y, fp.phase[1], fp.tap0[1]));
-        return add(&mut rows[0], f, l);
+fn single_weight(fp: &Footprint, t: &PhaseTable) -> f64 {
+    match t.constant() {
+        Some(c) => f64::from(c),
+        None => {
+            f64::from(t.tap(Axis::X, fp.phase[0], fp.tap0[0]))
+                * f64::from(t.tap(Axis::Y, fp.phase[1], fp.tap0[1]))
+        }
     }
+}
+
+/// Adds `f·l` and `f` to every pixel of the footprint (its `rows`) with weights from a phase
+/// table: one interpolated row of taps per axis, then the outer product.
+#[inline(always)]
+fn phase_footprint(rows: &mut [Pixel], stride: usize, fp: &Footprint, l: [f64; 3], t: &PhaseTable) {
+    let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
     let mut fx = [0.0f32; MAX_TAPS];
     let mut fy = [0.0f32; MAX_TAPS];
     t.row(Axis::X, fp.phase[0], &mut fx);
     t.row(Axis::Y, fp.phase[1], &mut fy);
-    // A footprint has at most MAX_TAPS − tap0 pixels per axis; the taps past the filter's are
-    // 0, so the clamps below can only drop zero weights.
+    // The footprint's pixels are taps tap0 … tap0 + n − 1, all below MAX_TAPS; the clamps only
+    // tell the compiler so.
     let fx = fx.get(fp.tap0[0]..).unwrap_or(&[]);
     let fy = fy.get(fp.tap0[1]..).unwrap_or(&[]);
     outer_product(
@@ -227,15 +225,12 @@ fn accumulate_phase(
 /// per pixel.
 #[inline(always)]
 fn accumulate<W: WeightSource + ?Sized>(
-    pixels: &mut [Pixel],
+    rows: &mut [Pixel],
     stride: usize,
     fp: &Footprint,
     l: [f64; 3],
     w: &W,
 ) {
-    let Some(rows) = footprint_rows(pixels, stride, fp) else {
-        return;
-    };
     let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
     // Footprints up to 32 wide take the separable path; wider ones fall through.
     if w.separable() && nx <= 32 && ny <= 32 {
@@ -361,21 +356,6 @@ pub struct FilmTile {
     splats: Vec<[f64; 3]>,
     setup: Arc<Setup>,
     stats: FilmStats,
-    /// Whether `add_sample` takes its AVX build (x86-64 CPUs with AVX).
-    avx: bool,
-}
-
-/// Whether this CPU has AVX (and the OS saves its registers); `false` off x86-64 and with the
-/// environment variable `NYQUIST_NO_AVX` set (to compare, or to test the baseline path).
-fn cpu_has_avx() -> bool {
-    #[cfg(target_arch = "x86_64")]
-    {
-        std::is_x86_feature_detected!("avx") && std::env::var_os("NYQUIST_NO_AVX").is_none()
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        false
-    }
 }
 
 impl FilmTile {
@@ -404,7 +384,6 @@ impl FilmTile {
             splats: Vec::new(),
             setup,
             stats: FilmStats::default(),
-            avx: cpu_has_avx(),
         }
     }
 
@@ -469,36 +448,23 @@ impl FilmTile {
     /// ```
     #[inline]
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
-        #[cfg(target_arch = "x86_64")]
-        if self.avx {
-            // SAFETY: `avx` is true only if `is_x86_feature_detected!("avx")` held when the
-            // tile was made, so this CPU executes AVX instructions.
-            #[allow(unsafe_code)]
-            return unsafe { self.add_sample_avx(p_film, rgb, weight) };
-        }
-        self.add_sample_any(p_film, rgb, weight)
-    }
-
-    /// [`FilmTile::add_sample`] compiled for AVX: the same operations (no FMA, so the same
-    /// bits), with a pixel's four `f64` sums in one 256-bit register instead of two.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx")]
-    fn add_sample_avx(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
-        self.add_sample_any(p_film, rgb, weight)
-    }
-
-    /// The body of [`FilmTile::add_sample`] for any target.
-    #[inline(always)]
-    fn add_sample_any(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
         let Some((fp, l)) = self.prepare(p_film, rgb, weight) else {
             return;
         };
         let stride = self.geometry.size[0] as usize;
+        let Some(rows) = footprint_rows(&mut self.pixels, stride, &fp) else {
+            return;
+        };
         match &self.setup.weights {
-            Weights::Phase(t) => accumulate_phase(&mut self.pixels, stride, &fp, l, t),
+            Weights::Phase(t) => {
+                if fp.x1 - fp.x0 == 1 && fp.y1 - fp.y0 == 1 {
+                    return add(&mut rows[0], single_weight(&fp, t), l);
+                }
+                phase_footprint(rows, stride, &fp, l, t)
+            }
             Weights::Table(table) => match &**table {
-                FilterTable::Separable(t) => accumulate(&mut self.pixels, stride, &fp, l, t),
-                FilterTable::Full(t) => accumulate(&mut self.pixels, stride, &fp, l, t),
+                FilterTable::Separable(t) => accumulate(rows, stride, &fp, l, t),
+                FilterTable::Full(t) => accumulate(rows, stride, &fp, l, t),
             },
         }
     }
@@ -533,7 +499,9 @@ impl FilmTile {
         let stride = self.geometry.size[0] as usize;
         let separable = self.setup.weights.is_separable() && filter.is_separable();
         let direct = Direct { filter, separable };
-        accumulate(&mut self.pixels, stride, &fp, l, &direct);
+        if let Some(rows) = footprint_rows(&mut self.pixels, stride, &fp) {
+            accumulate(rows, stride, &fp, l, &direct);
+        }
     }
 
     /// Checks, counts and clamps a sample; its footprint and `weight·rgb` in `f64`, or `None`

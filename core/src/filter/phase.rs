@@ -69,6 +69,8 @@ struct PhaseAxis {
     stride: usize,
     /// Row `j` (phase `j/64`): taps `0 … taps − 1`, then 0.
     values: [[f32; MAX_TAPS]; PHASES + 1],
+    /// The one value every tap holds, if they all hold the same (a box).
+    constant: Option<f32>,
 }
 
 impl PhaseAxis {
@@ -87,16 +89,24 @@ impl PhaseAxis {
         for (j, row) in values.iter_mut().enumerate() {
             let phase = j as f64 / PHASES as f64;
             for (k, v) in row[..taps].iter_mut().enumerate() {
-                // The offset of tap k at this phase, formed in f64 and rounded once.
+                // The offset of tap k at this phase, formed in f64 and rounded once; past the
+                // radius the edge value f(r), so that a row interpolates towards the edge, not
+                // towards 0 (a box of radius 0.7 stays exactly 1 up to its edge).
                 let d = (k as f64 + phase - f64::from(r)) as f32;
-                *v = finite_or_zero(eval(d)) * mask(d.abs() <= r);
+                *v = finite_or_zero(eval(if d <= r { d } else { r }));
             }
         }
+        let first = values[0][0];
+        let constant = values
+            .iter()
+            .all(|row| row[..taps].iter().all(|&v| v == first))
+            .then_some(first);
         Ok(PhaseAxis {
             radius: r,
             taps,
             stride,
             values,
+            constant,
         })
     }
 
@@ -212,15 +222,16 @@ impl PhaseTable {
     /// The footprint's weights along `axis` at phase `phase`: `out[k] ≈ f(k + phase − r)` for the
     /// taps `k < taps`, returned. Lanes from `taps` to the next multiple of 4 hold 0; the rest
     /// are not written. `phase` is clamped to `[0, 1]` (NaN reads as 0). Tap `k`'s pixel is in
-    /// the footprint only while `k + phase ≤ 2r`: the caller counts its pixels (the last tap's
-    /// value past that point is the interpolation towards 0, not a weight).
+    /// the footprint only while `k + phase ≤ 2r`: the caller counts its pixels (past that point
+    /// the last tap holds the edge value `f(r)`, not a weight).
     ///
     /// ```
     /// use nyquist::filter::{Axis, Boxcar, PhaseTable, MAX_TAPS};
     /// let t = PhaseTable::new(&Boxcar::default()).unwrap();
     /// let mut w = [9.0f32; MAX_TAPS];
     /// assert_eq!(t.row(Axis::Y, 0.5, &mut w), 2);
-    /// assert_eq!(w[..4], [1.0, 0.0, 0.0, 0.0]);
+    /// // Tap 1 is in the footprint only at phase 0; past the edge it holds f(r) = 1.
+    /// assert_eq!(w[..4], [1.0, 1.0, 0.0, 0.0]);
     /// assert_eq!(w[4], 9.0);
     /// ```
     #[inline(always)]
@@ -242,6 +253,21 @@ impl PhaseTable {
     #[inline(always)]
     pub fn tap(&self, axis: Axis, phase: f32, k: usize) -> f32 {
         self.axes[axis.index()].tap(phase, k)
+    }
+
+    /// The weight of every pixel in any footprint, if the filter is constant on its support (a
+    /// box): then a footprint needs no lookups at all. `None` otherwise.
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, PhaseTable, Triangle};
+    /// assert_eq!(PhaseTable::new(&Boxcar::new([0.7, 1.5]).unwrap()).unwrap().constant(), Some(1.0));
+    /// assert_eq!(PhaseTable::new(&Triangle::default()).unwrap().constant(), None);
+    /// ```
+    pub fn constant(&self) -> Option<f32> {
+        match (self.axes[0].constant, self.axes[1].constant) {
+            (Some(x), Some(y)) => Some(x * y),
+            _ => None,
+        }
     }
 
     /// Taps per footprint along `axis`, `⌊2r⌋ + 1`.

@@ -1179,12 +1179,9 @@ fn phase_rows_are_exact_at_the_stored_phases() {
                 let mut w = [f32::NAN; MAX_TAPS];
                 assert_eq!(t.row(axis, phase, &mut w), taps);
                 for (k, &w) in w[..taps].iter().enumerate() {
+                    // Past the radius a tap holds the edge value f(r).
                     let d = (k as f64 + f64::from(phase) - f64::from(r)) as f32;
-                    let want = if d.abs() <= r {
-                        f.eval_1d(axis, d).unwrap()
-                    } else {
-                        0.0
-                    };
+                    let want = f.eval_1d(axis, d.min(r)).unwrap();
                     assert_eq!(w, want, "{f} axis {a} phase {j}/64 tap {k}");
                     assert_eq!(t.tap(axis, phase, k), w);
                 }
@@ -1237,6 +1234,24 @@ fn phase_table_rejects_what_it_cannot_hold() {
     ));
     let just = Triangle::new([2.0, 7.999]).unwrap();
     assert_eq!(PhaseTable::new(&just).unwrap().taps(Axis::Y), 16);
+}
+
+#[test]
+fn phase_tables_keep_a_box_exact_up_to_its_edge() {
+    // A radius whose edge is off the 1/64 grid: rows interpolate towards f(r) = 1, never
+    // towards 0, so every offset inside the support weighs exactly 1.
+    for r in [0.5f32, 0.7, 1.3, 2.0, 3.01] {
+        let b = Boxcar::new([r, r]).unwrap();
+        let t = PhaseTable::new(&b).unwrap();
+        assert_eq!(t.constant(), Some(1.0), "r = {r}");
+        for k in -1000..=1000 {
+            let d = k as f32 / 1000.0 * r;
+            assert_eq!(t.weight(d, -d), 1.0, "r = {r}, d = {d}");
+        }
+        assert_eq!(t.weight(r.next_up(), 0.0), 0.0);
+    }
+    let g = PhaseTable::new(&Gaussian::default()).unwrap();
+    assert_eq!(g.constant(), None);
 }
 
 proptest! {
