@@ -3,6 +3,7 @@
 //! and importance sampling.
 //!
 //! `cargo bench -p nyquist --bench filter -- --warm-up-time 1 --measurement-time 3`
+//! The phase table (`PhaseTable`, the film's) runs beside the others in both groups.
 //! Targets: table lookup ≤ 1 ns per weight; direct Mitchell ≤ 5 ns, Lanczos ≤ 20 ns; building
 //! the default Lanczos table ≤ 50 µs. Every figure is per weight (`Throughput::Elements`).
 //! After the run the bench prints the table/direct ratios of each filter from criterion's
@@ -12,7 +13,7 @@ mod cpu_time;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
 use nyquist::filter::{
     Boxcar, Filter, FilterSampler, FilterTable, Gaussian, Interpolation, Lanczos, Mitchell,
-    Triangle,
+    PhaseTable, Triangle,
 };
 use nyquist::rng::{default_rng, uniform_f32};
 use std::hint::black_box;
@@ -43,6 +44,7 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
     let linear: FilterTable = FilterTable::new(f, Interpolation::Linear).unwrap();
     let nearest: FilterTable = FilterTable::new(f, Interpolation::Nearest).unwrap();
     let view = linear.view();
+    let phase = PhaseTable::new(f).unwrap();
     let mut out = vec![0.0f32; COUNT];
     let mut g = c.benchmark_group(format!("weight/{name}"));
     g.throughput(Throughput::Elements(COUNT as u64));
@@ -63,6 +65,7 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
     case!("table_linear", |x, y| linear.weight(x, y));
     case!("table_nearest", |x, y| nearest.weight(x, y));
     case!("table_view_linear", |x, y| view.weight(x, y));
+    case!("phase", |x, y| phase.weight(x, y));
     // The batch form over the same offsets (structure of arrays).
     let (dx, dy): (Vec<f32>, Vec<f32>) = pts.iter().copied().unzip();
     for (id, table) in [
@@ -122,6 +125,7 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
     footprint!("table_linear", linear);
     footprint!("table_nearest", nearest);
     footprint!("table_view_linear", view);
+    footprint!("phase", phase);
     g.finish();
 }
 
@@ -233,6 +237,7 @@ fn report(since: SystemTime) {
             ("view", &w, "table_view_linear"),
             ("batch nearest", &w, "table_batch_nearest"),
             ("batch linear", &w, "table_batch_linear"),
+            ("phase", &w, "phase"),
         ] {
             if let Some(t) = per(group, id) {
                 let ratio = t / direct;
@@ -252,6 +257,9 @@ fn report(since: SystemTime) {
                 t / n,
                 t / d
             );
+        }
+        if let (Some(d), Some(p)) = (per(fp, "direct"), per(fp, "phase")) {
+            line += &format!(", phase {:.2} ns ×{:.2}", p / n, p / d);
         }
         lines.push(line);
     }

@@ -157,14 +157,22 @@ impl PhaseAxis {
         }
     }
 
-    /// The weight at offset `d`: tap `⌊d + r⌋` at phase `frac(d + r)`, 0 past the radius.
+    /// The weight at offset `d`: tap `⌊d + r⌋` at phase `frac(d + r)`, 0 past the radius. The
+    /// grid index `64·(d + r)` splits into phase (low 6 bits) and tap (the rest), found by the
+    /// rounding trick of [`cell`](Self::cell); at a phase of 1 it reads tap `k + 1`'s row 0,
+    /// which holds the same value as tap `k`'s row 64.
     #[inline(always)]
     fn weight(&self, d: f32) -> f32 {
+        const CELLS: usize = MAX_TAPS * PHASES;
         let inside = d.abs() <= self.radius;
-        // s ∈ [0, 2r] inside; clamped so the conversion is exact for any input.
-        let s = (d + self.radius).max(0.0).min(MAX_TAPS as f32);
-        let k = s as usize;
-        self.tap(s - k as f32, k) * mask(inside)
+        let u = ((d + self.radius) * PHASES as f32)
+            .max(0.0)
+            .min(CELLS as f32);
+        let m = (u - 0.5).min((CELLS - 1) as f32) + MAGIC;
+        let g = m.to_bits().wrapping_sub(MAGIC_BITS) as usize % CELLS;
+        let t = u - (m - MAGIC);
+        let (j, k) = (g % PHASES, g / PHASES);
+        ((1.0 - t) * self.values[j][k] + t * self.values[j + 1][k]) * mask(inside)
     }
 }
 
@@ -313,7 +321,7 @@ impl PhaseTable {
     /// `(d0[0] + i, d0[1] + j)`, as [`FilterTable::footprint`](super::FilterTable::footprint):
     /// one [`row`](PhaseTable::row) per axis (at the phase of `d0 + r`) and an outer product.
     /// Pixels past the radius get 0. Each weight equals `weight(d0[0] + i, d0[1] + j)` up to the
-    /// rounding of those sums.
+    /// rounding of those sums; a one-weight footprint is `weight(d0[0], d0[1])`.
     ///
     /// # Errors
     /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
@@ -328,15 +336,36 @@ impl PhaseTable {
     #[inline]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         super::table::check_footprint(nx, out)?;
+        if let [w] = out {
+            // One weight: the single lookup reads the same cell (grid index 64·(d0 + r)).
+            *w = self.weight(d0[0], d0[1]);
+            return Ok(());
+        }
         let mut fx = [0.0f32; MAX_TAPS];
         let mut fy = [0.0f32; MAX_TAPS];
         let kx = self.axes[0].factors(d0[0], &mut fx);
         let ky = self.axes[1].factors(d0[1], &mut fy);
-        for (j, row) in out.chunks_exact_mut(nx).enumerate() {
-            let wy = tap_or_zero(&fy, ky, j);
-            for (i, w) in row.iter_mut().enumerate() {
-                *w = tap_or_zero(&fx, kx, i) * wy;
+        // Row 0 holds the x factors until it is scaled last; every other row is row 0 times
+        // its y factor. A footprint that starts at its first tap (shift 0, the usual case)
+        // copies the taps straight.
+        let (first, rest) = out.split_at_mut(nx);
+        match (kx, fx.get(..nx)) {
+            (0, Some(taps)) => first.copy_from_slice(taps),
+            _ => {
+                for (i, w) in first.iter_mut().enumerate() {
+                    *w = tap_or_zero(&fx, kx, i);
+                }
             }
+        }
+        for (j, row) in rest.chunks_exact_mut(nx).enumerate() {
+            let wy = tap_or_zero(&fy, ky, j + 1);
+            for (w, &x) in row.iter_mut().zip(first.iter()) {
+                *w = x * wy;
+            }
+        }
+        let wy0 = tap_or_zero(&fy, ky, 0);
+        for w in first.iter_mut() {
+            *w *= wy0;
         }
         Ok(())
     }
@@ -374,14 +403,27 @@ impl PhaseAxis {
         let t = c as isize;
         let shift = t - isize::from((t as f32) > c);
         self.row(c - shift as f32, out);
-        // Mask every tap whose offset is past the radius: k + phase − r > r.
-        for (k, w) in out[..self.taps].iter_mut().enumerate() {
-            let d = (k as isize - shift) as f32 + d0;
+        // Mask every tap whose pixel is past the radius: |d0 + (k − shift)| > r, with k − shift
+        // formed exactly in floats so the loop vectorises.
+        let sf = shift as f32;
+        for (w, k) in out.iter_mut().zip(TAP_INDEX) {
+            let d = (k - sf) + d0;
             *w *= mask(d.abs() <= self.radius);
         }
         shift
     }
 }
+
+/// `0.0, 1.0, …, 15.0`: tap indices as floats.
+const TAP_INDEX: [f32; MAX_TAPS] = {
+    let mut k = [0.0f32; MAX_TAPS];
+    let mut i = 0;
+    while i < MAX_TAPS {
+        k[i] = i as f32;
+        i += 1;
+    }
+    k
+};
 
 /// Tap `i + shift` of `f` (0 outside the taps), the weight of footprint pixel `i`.
 #[inline(always)]

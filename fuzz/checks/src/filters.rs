@@ -4,7 +4,7 @@
 use nyquist::Error;
 use nyquist::filter::{
     Axis, Boxcar, Filter, FilterKind, FilterSampler, FilterTable, Gaussian, Interpolation, Lanczos,
-    MAX_RADIUS, Mitchell, SeparableTable, Table2d, Triangle, sinc,
+    MAX_RADIUS, MAX_TAPS, Mitchell, PhaseTable, SeparableTable, Table2d, Triangle, sinc,
 };
 
 use crate::Bytes;
@@ -298,6 +298,7 @@ fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
         valid && f.is_separable(),
         "{name}: SeparableTable::new {sep:?}"
     );
+    check_phase_table(name, f, ctx);
     let t2 = Table2d::<8>::new(f, ctx.interp);
     assert_eq!(t2.is_ok(), valid, "{name}: Table2d::new");
     if let Ok(t2) = t2 {
@@ -357,6 +358,117 @@ fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
         Err(e) => {
             assert!(!valid, "{name}: FilterSampler rejected radius {r:?}: {e:?}");
             assert!(matches!(e, Error::OutOfRange { .. }), "{name}: {e:?}");
+        }
+    }
+}
+
+/// `PhaseTable`: built exactly for valid separable filters with radii below 8 (else
+/// `OutOfRange`); lookups finite and 0 past the radius; rows clamp their phase and agree with
+/// `tap`; `footprint` is, bit for bit, the masked product of the two rows at the phase of
+/// `d0 + r` (its definition, replayed through the public `row`).
+fn check_phase_table(name: &str, f: &dyn Filter, ctx: &Ctx) {
+    let r = f.radius();
+    let fits = r
+        .iter()
+        .all(|&v| v.is_finite() && v > 0.0 && 2.0 * f64::from(v) < MAX_TAPS as f64);
+    let t = match PhaseTable::new(f) {
+        Ok(t) => {
+            assert!(
+                fits && f.is_separable(),
+                "{name}: PhaseTable accepted radius {r:?}"
+            );
+            t
+        }
+        Err(e) => {
+            assert!(
+                !(fits && f.is_separable()),
+                "{name}: PhaseTable rejected radius {r:?}: {e:?}"
+            );
+            assert!(matches!(e, Error::OutOfRange { .. }), "{name}: {e:?}");
+            return;
+        }
+    };
+    assert_eq!(t.radius(), r);
+    assert!(t.integral().is_finite());
+    for &[x, y] in &ctx.offsets {
+        let w = t.weight(x, y);
+        assert!(w.is_finite(), "{name}: phase weight({x}, {y}) = {w}");
+        if outside(r, x, y) {
+            assert_eq!(w, 0.0, "{name}: phase weight({x}, {y}) = {w} past {r:?}");
+        }
+        for (a, axis) in [Axis::X, Axis::Y].into_iter().enumerate() {
+            let taps = (2.0 * f64::from(r[a])).floor() as usize + 1;
+            assert_eq!(t.taps(axis), taps);
+            let mut row = [f32::NAN; MAX_TAPS];
+            assert_eq!(t.row(axis, x, &mut row), taps);
+            let lanes = taps.next_multiple_of(4);
+            assert!(
+                row[..lanes].iter().all(|v| v.is_finite()),
+                "{name}: row {row:?}"
+            );
+            let clamped = if x.is_nan() { 0.0 } else { x.clamp(0.0, 1.0) };
+            let mut want = [f32::NAN; MAX_TAPS];
+            t.row(axis, clamped, &mut want);
+            for k in 0..lanes {
+                assert_eq!(row[k].to_bits(), want[k].to_bits(), "{name}: row clamp");
+                assert_eq!(
+                    t.tap(axis, x, k).to_bits(),
+                    row[k].to_bits(),
+                    "{name}: tap {k}"
+                );
+            }
+        }
+    }
+    if let Some(c) = t.constant() {
+        assert!(c.is_finite());
+    }
+    let Footprint { d0, nx, len } = ctx.foot;
+    let mut out = vec![9.0f32; len];
+    match t.footprint(d0, nx, &mut out) {
+        Ok(()) => {
+            assert!(
+                nx > 0 && len % nx == 0,
+                "{name}: phase footprint nx {nx}, len {len}"
+            );
+            // Replay: taps of the row at the phase of d0 + r, shifted by ⌊d0 + r⌋ (clamped to
+            // ±2·MAX_TAPS, where every pixel is past the radius anyway), masked to the radius.
+            let factor = |axis: Axis, a: usize, i: usize| -> f32 {
+                let lim = 2.0 * MAX_TAPS as f32;
+                let c = (d0[a] + r[a]).max(-lim).min(lim);
+                let shift = c.floor();
+                let mut row = [0.0f32; MAX_TAPS];
+                t.row(axis, c - shift, &mut row);
+                let k = i as i64 + shift as i64;
+                let w = if (0..MAX_TAPS as i64).contains(&k) {
+                    row[k as usize]
+                } else {
+                    0.0
+                };
+                let d = (k - shift as i64) as f32 + d0[a];
+                if d.abs() <= r[a] { w } else { w * 0.0 }
+            };
+            for (k, &w) in out.iter().enumerate() {
+                let (i, j) = (k % nx, k / nx);
+                // A one-weight footprint is the single lookup (the same cell).
+                let want = if len == 1 {
+                    t.weight(d0[0], d0[1])
+                } else {
+                    factor(Axis::X, 0, i) * factor(Axis::Y, 1, j)
+                };
+                assert_eq!(
+                    w.to_bits(),
+                    want.to_bits(),
+                    "{name}: phase footprint({d0:?}, {nx})[{k}] = {w}, replay {want}"
+                );
+                let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+                if outside(r, dx, dy) {
+                    assert_eq!(w, 0.0, "{name}: phase footprint past the radius");
+                }
+            }
+        }
+        Err(e) => {
+            assert!(!(nx > 0 && len > 0 && len % nx == 0), "{name}: {e:?}");
+            assert!(matches!(e, Error::BufferLength { .. }), "{name}: {e:?}");
         }
     }
 }
