@@ -17,7 +17,9 @@
 //!
 //! - [`FilterTable`] tabulates any filter once (separable: two 1D tables; otherwise a full 2D
 //!   table) for a branch-free lookup; [`FilterTable::footprint`] fills every weight of one
-//!   sample's footprint at once (the film's fast path); [`TableView`] is its size-erased view.
+//!   sample's footprint at once; [`TableView`] is its size-erased view.
+//! - [`PhaseTable`] tabulates a separable filter by footprint phase: all of a sample's weights
+//!   along an axis come from one interpolated row (the film's fast path, radii below 8).
 //! - [`FilterSampler`] draws offsets with density ∝ `|f|` and returns the weight `f/pdf`
 //!   (pbrt-v4's filter importance sampling).
 //! - [`FilterKind`] gathers the built-ins for configuration, with a parser for command-line specs

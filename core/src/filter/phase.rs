@@ -176,10 +176,13 @@ impl PhaseAxis {
     }
 }
 
-/// A separable filter tabulated by phase: for a sample whose footprint starts at phase `φ`
-/// (see the [module docs](self)), [`row`](PhaseTable::row) gives the weights of all its pixels
-/// along one axis in one interpolated read. The film's table for separable filters. Allocates:
-/// no (8.3 KB inline).
+/// A separable filter tabulated by phase. Along one axis, a sample at `p` reaches the pixels
+/// from `⌈p − ½ − r⌉` on, the first sitting `φ − r` from it with the phase
+/// `φ = ⌈p − ½ − r⌉ − (p − ½ − r) ∈ [0, 1)`, the others at unit steps, so pixel `k` of the
+/// footprint (its *tap*) weighs `f(k + φ − r)`. The table stores those rows of taps at 65 phases
+/// `j/64` and [`row`](PhaseTable::row) interpolates between two of them: all the footprint's
+/// weights along an axis in one read. It is the linear interpolant of `f` on the grid
+/// `−r + m/64`. The film's table for separable filters. Allocates: no (8.3 KB inline).
 ///
 /// ```
 /// use nyquist::filter::{Axis, Filter, Mitchell, PhaseTable, MAX_TAPS};
