@@ -134,14 +134,13 @@ impl PhaseAxis {
         let (j, t) = Self::cell(phase);
         let (a, b) = self.rows(j);
         // Four lanes at a time over the padded row: (1 − t)·a + t·b, exact at t = 0 and 1.
-        let lanes = self.stride.min(MAX_TAPS);
-        for ((o, a), b) in out[..lanes]
-            .chunks_exact_mut(4)
-            .zip(a.chunks_exact(4))
-            .zip(b.chunks_exact(4))
-        {
-            for l in 0..4 {
-                o[l] = (1.0 - t) * a[l] + t * b[l];
+        // Plain indices into fixed arrays: no iterator adapters for the inliner to give up on.
+        for c in 0..MAX_TAPS / 4 {
+            if 4 * c >= self.stride {
+                break;
+            }
+            for l in 4 * c..4 * c + 4 {
+                out[l] = (1.0 - t) * a[l] + t * b[l];
             }
         }
         self.taps
@@ -403,15 +402,17 @@ impl PhaseAxis {
         let s = d0 + self.radius;
         // ⌊s⌋ for |s| < 2²⁴ with the clamp keeping the conversion exact; beyond, every tap is 0.
         let c = s.max(-(2.0 * MAX_TAPS as f32)).min(2.0 * MAX_TAPS as f32);
-        let t = c as isize;
-        let shift = t - isize::from((t as f32) > c);
+        // ⌊c⌋ by the rounding trick: round c to an integer, step back when that passed c.
+        let m = c + MAGIC;
+        let r = m - MAGIC;
+        let shift = (m.to_bits().wrapping_sub(MAGIC_BITS) as i32 as isize) - isize::from(r > c);
         self.row(c - shift as f32, out);
         // Mask every tap whose pixel is past the radius: |d0 + (k − shift)| > r, with k − shift
         // formed exactly in floats so the loop vectorises.
         let sf = shift as f32;
-        for (w, k) in out.iter_mut().zip(TAP_INDEX) {
-            let d = (k - sf) + d0;
-            *w *= mask(d.abs() <= self.radius);
+        for k in 0..MAX_TAPS {
+            let d = (TAP_INDEX[k] - sf) + d0;
+            out[k] *= mask(d.abs() <= self.radius);
         }
         shift
     }
