@@ -4,8 +4,8 @@
 use nyquist::Error;
 use nyquist::sampler::{
     AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, PixelRangeSampler, RandomSampler, Sample, SampleLayout, Sampler, SobolSampler,
-    StratifiedSampler, ZeroTwoSampler, camera_sample,
+    Jitter, NAMES, NamedSampler, NamedSamplerError, PixelRangeSampler, RandomSampler, Sample,
+    SampleLayout, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler, camera_sample,
 };
 
 use crate::{Bytes, in_unit};
@@ -29,10 +29,12 @@ struct Args {
 /// values bit for bit; starting at `dim + 1` gives the value `dim`'s second `get_1d` gave;
 /// `camera_sample` lands inside the pixel; a `PixelRangeSampler` yields exactly
 /// `total_samples()` samples, all in range, and its bands together yield the same samples;
-/// `AdaptiveSampler` answers `pixel_samples` within its `spp_range` whatever is reported.
+/// `AdaptiveSampler` answers `pixel_samples` within its `spp_range` whatever is reported;
+/// `NamedSampler` builds exactly the names in `NAMES` (a non-square spp is `NotSquare` for
+/// the two grid samplers) and its samplers pass the same checks.
 pub fn samplers(data: &[u8]) {
     let mut b = Bytes::new(data);
-    let kind = b.u8() % 8;
+    let kind = b.u8() % 9;
     let spp = match b.u8() % 4 {
         0 => b.below(17),
         1 => b.below(300),
@@ -139,10 +141,62 @@ pub fn samplers(data: &[u8]) {
             check_rounded("ZeroTwoSampler", spp, ZeroTwoSampler::rounded_spp(spp));
             run("ZeroTwoSampler", spp, ZeroTwoSampler::new(spp, seed), &args)
         }
-        _ => {
+        7 => {
             let inner = StratifiedSampler::new(xy[0].max(1), xy[1].max(1), jitter, seed).unwrap();
             adaptive(inner, &args);
         }
+        _ => {
+            let name = if flag {
+                NAMES[b.below(NAMES.len() as u32 - 1) as usize].to_string()
+            } else {
+                String::from_utf8_lossy(b.rest()).chars().take(24).collect()
+            };
+            named(&name, resolution, spp, seed, &args);
+        }
+    }
+}
+
+/// `NamedSampler::new` with any name: a sampler named as asked, or the documented error.
+fn named(name: &str, size: [u32; 2], spp: u32, seed: u64, a: &Args) {
+    let known = NAMES.contains(&name);
+    match NamedSampler::new(name, size, spp, seed) {
+        Ok(mut s) => {
+            assert!(known, "NamedSampler built unknown name {name:?}");
+            assert_eq!(s.name(), name);
+            if name == "adaptive" {
+                // Fewer samples than the maximum where the pixel converged: the adaptive checks.
+                check_sampler_adaptive(&mut s, a);
+                let n = s.pixel_samples(a.pixel);
+                assert!((1..=s.samples_per_pixel()).contains(&n), "adaptive: {n}");
+            } else {
+                run("NamedSampler", spp, Ok(s), a);
+            }
+        }
+        Err(NamedSamplerError::UnknownName) => {
+            assert!(!known, "NamedSampler rejected {name:?}");
+        }
+        Err(NamedSamplerError::NotSquare { spp: got }) => {
+            assert!(
+                matches!(name, "uniform" | "stratified"),
+                "{name}: NotSquare"
+            );
+            assert_eq!(got, spp);
+            assert_ne!(
+                u64::from(spp.isqrt()).pow(2),
+                u64::from(spp),
+                "{name}: {spp} is square"
+            );
+        }
+        Err(NamedSamplerError::Sampler(e)) => {
+            assert!(
+                matches!(
+                    e,
+                    Error::ZeroSize { .. } | Error::TooMany { .. } | Error::OutOfRange { .. }
+                ),
+                "NamedSampler {name:?}: unexpected error {e:?}"
+            );
+        }
+        Err(e) => panic!("NamedSampler {name:?}: an error this check does not know: {e:?}"),
     }
 }
 
