@@ -1265,15 +1265,24 @@ proptest! {
         let t = PhaseTable::new(&f).unwrap();
         let mut out = std::vec![f32::NAN; nx * ny];
         t.footprint(d0, nx, &mut out).unwrap();
-        let peak = t.weight(0.0, 0.0).abs().max(1.0);
+        // The largest factor magnitude per axis (the table's values, scanned finely).
+        let max_abs = |axis: Axis, r: f32| {
+            (0..=1024)
+                .map(|k| t.weight_1d(axis, r * (k as f32 / 512.0 - 1.0)).abs())
+                .fold(0.0f32, f32::max)
+        };
+        let [rx, ry] = f.radius();
+        let (mx, my) = (max_abs(Axis::X, rx), max_abs(Axis::Y, ry));
         for j in 0..ny {
             for i in 0..nx {
                 let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
                 let (got, want) = (out[j * nx + i], t.weight(dx, dy));
-                // Equal up to the rounding of d0 + i against (d0 + r) + i: a few ulps of the
-                // offset times the table's slope (≤ 64 × the value step per cell).
+                // Equal up to the rounding of d0 + i against (d0 + r) + i: a few ulps of an
+                // offset below 32 (≤ 2e-5) times the slope of a factor (≤ 64 cells × 2·max per
+                // cell), times the other factor; plus the product's own rounding.
+                let tol = 64.0 * 2.0 * 2e-5 * (mx * my) + 4.0 * f32::EPSILON * want.abs();
                 prop_assert!(
-                    (got - want).abs() <= 1e-4 * peak * peak,
+                    (got - want).abs() <= tol,
                     "({i},{j}) at {dx},{dy}: footprint {got} single {want}"
                 );
                 if dx.abs() > f.radius()[0] || dy.abs() > f.radius()[1] {
