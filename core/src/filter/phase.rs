@@ -29,7 +29,7 @@
 //! [`SeparableTable`]: super::SeparableTable
 //! [`FilterTable`]: super::FilterTable
 
-use super::table::{finite_or_zero, mask, table_radius};
+use super::table::{MAGIC, MAGIC_BITS, finite_or_zero, mask, table_radius};
 use super::{Axis, Filter};
 use crate::Error;
 
@@ -50,13 +50,6 @@ pub const PHASES: usize = 64;
 /// assert!(PhaseTable::new(&Gaussian::new([8.0, 8.0], 2.0).unwrap()).is_err());
 /// ```
 pub const MAX_TAPS: usize = 16;
-
-/// `1.5·2²³`: `c + MAGIC` holds `round(c)` (ties to even) in its low mantissa bits for
-/// `−2²² ≤ c < 2²²`.
-const MAGIC: f32 = 12_582_912.0;
-
-/// The bits of `MAGIC`.
-const MAGIC_BITS: u32 = 0x4B40_0000;
 
 /// One axis of a [`PhaseTable`].
 #[derive(Clone, Debug, PartialEq)]

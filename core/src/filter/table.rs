@@ -139,10 +139,10 @@ pub(super) fn mask(inside: bool) -> f32 {
 
 /// `1.5·2²³`: `c + MAGIC` holds `round(c)` (ties to even) in its low mantissa bits for
 /// `−2²² ≤ c < 2²²`, so rounding is two adds and no saturating float-to-int conversion.
-const MAGIC: f32 = 12_582_912.0;
+pub(super) const MAGIC: f32 = 12_582_912.0;
 
 /// The bits of `MAGIC`: `(c + MAGIC).to_bits() − MAGIC_BITS == round(c)` for `c ≥ −½`.
-const MAGIC_BITS: u32 = 0x4B40_0000;
+pub(super) const MAGIC_BITS: u32 = 0x4B40_0000;
 
 /// Per-size constants of a lookup, computed once (a `usize → f32` conversion is not free on
 /// x86-64): entries per axis `n`, the last coordinate `n − 1`, the last cell `n − 2` and the

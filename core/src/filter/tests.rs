@@ -400,13 +400,18 @@ impl Filter for Cone {
 
 /// Max |lookup − eval| over a (2k+1)² grid on [−r, r]².
 fn table_error(f: &dyn Filter, t: TableView<'_>, k: i32) -> f64 {
+    lookup_error(f, |x, y| t.weight(x, y), k)
+}
+
+/// Max |lookup(x, y) − eval(x, y)| over a (2k+1)² grid on [−r, r]², for any table's lookup.
+fn lookup_error(f: &dyn Filter, lookup: impl Fn(f32, f32) -> f32, k: i32) -> f64 {
     let [rx, ry] = f.radius();
     let mut worst = 0.0f64;
     for j in -k..=k {
         let y = j as f32 / k as f32 * ry;
         for i in -k..=k {
             let x = i as f32 / k as f32 * rx;
-            let e = (f64::from(t.weight(x, y)) - f64::from(f.eval(x, y))).abs();
+            let e = (f64::from(lookup(x, y)) - f64::from(f.eval(x, y))).abs();
             worst = worst.max(e);
         }
     }
@@ -1146,21 +1151,6 @@ fn sampled_offsets_stay_in_the_cell_they_were_drawn_from() {
 // ---------------------------------------------------------------------------------------------
 // Phase tables.
 
-/// Max |phase-table lookup − eval| over a (2k+1)² grid on [−r, r]².
-fn phase_error(f: &dyn Filter, t: &PhaseTable, k: i32) -> f64 {
-    let [rx, ry] = f.radius();
-    let mut worst = 0.0f64;
-    for j in -k..=k {
-        let y = j as f32 / k as f32 * ry;
-        for i in -k..=k {
-            let x = i as f32 / k as f32 * rx;
-            let e = (f64::from(t.weight(x, y)) - f64::from(f.eval(x, y))).abs();
-            worst = worst.max(e);
-        }
-    }
-    worst
-}
-
 #[test]
 fn phase_rows_are_exact_at_the_stored_phases() {
     // Row j, tap k holds f(k + j/64 − r) (offset rounded once from f64): reading it at phase
@@ -1211,7 +1201,7 @@ fn phase_table_error_is_below_the_64_entry_tables() {
         let phase = PhaseTable::new(&f).unwrap();
         let table: FilterTable<64> = FilterTable::new(&f, Interpolation::Linear).unwrap();
         let (ep, et) = (
-            phase_error(&f, &phase, 1000),
+            lookup_error(&f, |x, y| phase.weight(x, y), 1000),
             table_error(&f, table.view(), 1000),
         );
         std::println!("{name}: phase {ep:.3e}, 64-entry {et:.3e}");
