@@ -340,6 +340,24 @@ impl PhaseTable {
         let mut fy = [0.0f32; MAX_TAPS];
         let kx = self.axes[0].factors(d0[0], &mut fx);
         let ky = self.axes[1].factors(d0[1], &mut fy);
+        if nx <= 4 && out.len() <= 16 && kx == 0 && ky == 0 {
+            // Up to 4 × 4 starting at the first taps (radius ≤ 2, the usual filters): the rows
+            // straight from the two tap rows.
+            if nx == 4 {
+                for (row, &wy) in out.chunks_exact_mut(4).zip(&fy) {
+                    for l in 0..4 {
+                        row[l] = fx[l] * wy;
+                    }
+                }
+            } else {
+                for (row, &wy) in out.chunks_exact_mut(nx).zip(&fy) {
+                    for (w, &x) in row.iter_mut().zip(&fx) {
+                        *w = x * wy;
+                    }
+                }
+            }
+            return Ok(());
+        }
         // Row 0 holds the x factors until it is scaled last; every other row is row 0 times
         // its y factor. A footprint that starts at its first tap (shift 0, the usual case)
         // copies the taps straight.
@@ -402,10 +420,16 @@ impl PhaseAxis {
         self.row(c - shift as f32, out);
         // Mask every tap whose pixel is past the radius: |d0 + (k − shift)| > r, with k − shift
         // formed exactly in floats so the loop vectorises.
+        // Only the padded row (taps past it are 0 already), four lanes at a time.
         let sf = shift as f32;
-        for k in 0..MAX_TAPS {
-            let d = (TAP_INDEX[k] - sf) + d0;
-            out[k] *= mask(d.abs() <= self.radius);
+        for c in 0..MAX_TAPS / 4 {
+            if 4 * c >= self.stride {
+                break;
+            }
+            for k in 4 * c..4 * c + 4 {
+                let d = (TAP_INDEX[k] - sf) + d0;
+                out[k] *= mask(d.abs() <= self.radius);
+            }
         }
         shift
     }

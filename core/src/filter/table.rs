@@ -324,6 +324,26 @@ fn outer_product(
     fx1: impl Fn(f32) -> f32 + Copy,
     fy4: impl Fn([f32; 4]) -> [f32; 4],
 ) {
+    if nx <= 4 && ny <= 4 {
+        // Up to 4 × 4 (radius ≤ 2, the usual filters): one 4-lane evaluation per axis and the
+        // rows straight from registers.
+        let wx = fx4(LANE.map(|l| d0[0] + l));
+        let wy = fy4(LANE.map(|l| d0[1] + l));
+        if nx == 4 {
+            for (row, &w) in out.chunks_exact_mut(4).zip(&wy) {
+                for l in 0..4 {
+                    row[l] = wx[l] * w;
+                }
+            }
+        } else {
+            for (row, &w) in out.chunks_exact_mut(nx).zip(&wy) {
+                for (o, &x) in row.iter_mut().zip(&wx) {
+                    *o = x * w;
+                }
+            }
+        }
+        return;
+    }
     // Row 0 holds the x factors until it is scaled last.
     let (first, rest) = out.split_at_mut(nx);
     factors_into(d0[0], first, fx4, fx1);
@@ -380,6 +400,11 @@ fn per_weight(
     out: &mut [f32],
     weight: impl Fn(f32, f32) -> f32,
 ) {
+    if let [w] = out {
+        // One pixel (a box of radius ½, nearly always): no loops.
+        *w = weight(d0[0], d0[1]);
+        return;
+    }
     let mut j = 0.0f32;
     for r in 0..ny {
         let Some(row) = out.get_mut(r * nx..(r + 1) * nx) else {
@@ -610,16 +635,22 @@ impl<const N: usize> SeparableTable<N> {
                 d0,
                 [nx, ny],
                 out,
+                #[inline(always)]
                 |d| factor4(vx, g, rx, sx, Interpolation::Nearest, d),
+                #[inline(always)]
                 |d| factor(vx, g, rx, sx, Interpolation::Nearest, d),
+                #[inline(always)]
                 |d| factor4(vy, g, ry, sy, Interpolation::Nearest, d),
             ),
             Interpolation::Linear => outer_product(
                 d0,
                 [nx, ny],
                 out,
+                #[inline(always)]
                 |d| factor4(vx, g, rx, sx, Interpolation::Linear, d),
+                #[inline(always)]
                 |d| factor(vx, g, rx, sx, Interpolation::Linear, d),
+                #[inline(always)]
                 |d| factor4(vy, g, ry, sy, Interpolation::Linear, d),
             ),
         }
@@ -1170,16 +1201,22 @@ impl TableView<'_> {
                         d0,
                         [nx, ny],
                         out,
+                        #[inline(always)]
                         |d| factor4(vx, g, rx, sx, Interpolation::Nearest, d),
+                        #[inline(always)]
                         |d| factor(vx, g, rx, sx, Interpolation::Nearest, d),
+                        #[inline(always)]
                         |d| factor4(vy, g, ry, sy, Interpolation::Nearest, d),
                     ),
                     Interpolation::Linear => outer_product(
                         d0,
                         [nx, ny],
                         out,
+                        #[inline(always)]
                         |d| factor4(vx, g, rx, sx, Interpolation::Linear, d),
+                        #[inline(always)]
                         |d| factor(vx, g, rx, sx, Interpolation::Linear, d),
+                        #[inline(always)]
                         |d| factor4(vy, g, ry, sy, Interpolation::Linear, d),
                     ),
                 }
