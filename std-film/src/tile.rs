@@ -356,6 +356,37 @@ pub struct FilmTile {
     splats: Vec<[f64; 3]>,
     setup: Arc<Setup>,
     stats: FilmStats,
+    /// The one-pixel fast path, when the film's filter allows it (see [`OnePixel`]).
+    one_pixel: Option<OnePixel>,
+}
+
+/// A box filter with radii of at most ½ and no radiance clamp: a sample reaches at most the one
+/// pixel it lies in, so [`FilmTile::add_sample`] can find that pixel with a floor per axis and
+/// skip the footprint machinery. Samples on a pixel edge (a box of radius ½ reaches both
+/// neighbours) and near the stored area's border take the general path.
+#[derive(Clone, Copy, Debug)]
+struct OnePixel {
+    /// The filter's constant weight.
+    weight: f64,
+    /// Filter radius per axis, ≤ ½.
+    radius: [f64; 2],
+    /// Corner of the first stored pixel, `(x0, y0)`.
+    corner: [f64; 2],
+}
+
+impl OnePixel {
+    fn new(setup: &Setup, bounds: Bounds) -> Option<OnePixel> {
+        let Weights::Phase(t) = &setup.weights else {
+            return None;
+        };
+        let radius = t.radius().map(f64::from);
+        let weight = f64::from(t.constant()?);
+        (setup.max_component.is_none() && radius.iter().all(|&r| r <= 0.5)).then_some(OnePixel {
+            weight,
+            radius,
+            corner: [bounds.x0 as f64, bounds.y0 as f64],
+        })
+    }
 }
 
 impl FilmTile {
@@ -376,6 +407,7 @@ impl FilmTile {
             pixel_bounds = Bounds::new(fb.x0, fb.y0, fb.x0, fb.y0);
         }
         let n = pixel_bounds.area() as usize;
+        let one_pixel = OnePixel::new(&setup, pixel_bounds);
         FilmTile {
             spec,
             geometry: Geometry::new(pixel_bounds, [rx, ry]),
@@ -384,6 +416,7 @@ impl FilmTile {
             splats: Vec::new(),
             setup,
             stats: FilmStats::default(),
+            one_pixel,
         }
     }
 
@@ -448,6 +481,62 @@ impl FilmTile {
     /// ```
     #[inline]
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
+        if let Some(one) = self.one_pixel
+            && self.add_one_pixel(&one, p_film, rgb, weight)
+        {
+            return;
+        }
+        self.add_sample_footprint(p_film, rgb, weight);
+    }
+
+    /// [`FilmTile::add_sample`] for a box of radius ≤ ½ ([`OnePixel`]): `false`, with nothing
+    /// done, when the sample needs the general path (non-finite input, a pixel edge, the
+    /// border of the stored area). Same sums as the general path, bit for bit: the pixel is
+    /// `⌊p − corner⌋` per axis, reached when its centre is within the radius (both exact in
+    /// `f64`), and it gets `weight · (rgb · w)`.
+    #[inline(always)]
+    fn add_one_pixel(&mut self, one: &OnePixel, p: [f32; 2], rgb: [f32; 3], weight: f32) -> bool {
+        let w = f64::from(weight);
+        let l = [
+            f64::from(rgb[0]) * w,
+            f64::from(rgb[1]) * w,
+            f64::from(rgb[2]) * w,
+        ];
+        // rgb and weight are all finite exactly when the three products are (an f64 product
+        // of two finite f32s never overflows; ∞·0 is NaN), and those exactly when their sum is
+        // (∞ − ∞ is NaN). One test instead of four.
+        if !(l[0] + l[1] + l[2]).is_finite() {
+            return false;
+        }
+        let g = &self.geometry;
+        let q = [
+            f64::from(p[0]) - one.corner[0],
+            f64::from(p[1]) - one.corner[1],
+        ];
+        let i = [floor_f64(q[0]), floor_f64(q[1])];
+        let f = [q[0] - i[0], q[1] - i[1]];
+        // One test for the usual case, everything else to the general path: strictly inside
+        // the stored area (false for NaN and ∞ too; then ⌊q⌋ is a stored pixel, |q| < 2³¹ and
+        // the floor above is exact), not on a pixel edge (where a box of radius ½ reaches the
+        // pixels on both sides), and the pixel's centre, |f − ½| away (exact), within the
+        // radius (only radii below ½ can miss it).
+        let inside = (q[0] > 0.0) & (q[0] < g.size_f[0]) & (q[1] > 0.0) & (q[1] < g.size_f[1]);
+        let off_edge = (f[0] > 0.0) & (f[1] > 0.0);
+        let reached = ((f[0] - 0.5).abs() <= one.radius[0]) & ((f[1] - 0.5).abs() <= one.radius[1]);
+        if !(inside & off_edge & reached) {
+            return false;
+        }
+        self.stats.samples += 1;
+        let stride = g.size[0] as usize;
+        let index = int(i[1]) as usize * stride + int(i[0]) as usize;
+        if let Some(pixel) = self.pixels.get_mut(index) {
+            add(pixel, one.weight, l);
+        }
+        true
+    }
+
+    /// [`FilmTile::add_sample`] through the footprint: the general path.
+    fn add_sample_footprint(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
         let Some((fp, l)) = self.prepare(p_film, rgb, weight) else {
             return;
         };

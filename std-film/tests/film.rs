@@ -496,3 +496,46 @@ fn merging_a_tile_of_another_film_is_an_error() {
     // The small film still takes its own tiles.
     small.merge(small.tile(small.tiles(4).unwrap()[0])).unwrap();
 }
+
+proptest! {
+    /// Boxes of radius ≤ ½ take `add_sample`'s one-pixel path; everything it declines (pixel
+    /// edges, the stored area's border, non-finite input) goes through the footprint. Either
+    /// way the sums and counters are those of the footprint path with the filter evaluated
+    /// directly, bit for bit. Positions on a quarter-pixel lattice hit the edges often.
+    #[test]
+    fn one_pixel_box_path_matches_the_footprint_path_bit_for_bit(
+        radius in prop_oneof![Just([0.5f32, 0.5]), Just([0.3, 0.3]), Just([0.5, 0.2]), Just([0.1, 0.45])],
+        x0 in -3i64..10, y0 in -3i64..10, w in 0i64..8, h in 0i64..8,
+        samples in proptest::collection::vec(
+            (
+                prop_oneof![(-12i32..60).prop_map(|k| k as f32 / 4.0), -3.0f32..15.0, Just(f32::NAN), Just(f32::INFINITY)],
+                prop_oneof![(-12i32..60).prop_map(|k| k as f32 / 4.0), -3.0f32..15.0],
+                prop_oneof![-1e30f32..1e30, Just(f32::NAN), Just(f32::NEG_INFINITY), Just(f32::MAX)],
+                prop_oneof![0.0f32..4.0, Just(f32::INFINITY), Just(0.0)],
+            ),
+            0..40,
+        ),
+    ) {
+        let filter = Boxcar::new(radius).unwrap();
+        let mut a = Film::new(FilmConfig::new(10, 9), &filter).unwrap();
+        let mut b = Film::new(FilmConfig::new(10, 9), &filter).unwrap();
+        let spec = nyquist_film::TileSpec { index: 0, bounds: Bounds::new(x0, y0, x0 + w, y0 + h) };
+        let (mut ta, mut tb) = (a.tile(spec), b.tile(spec));
+        for (x, y, l, wt) in samples {
+            ta.add_sample([x, y], [l, 0.5, 2.0], wt);
+            tb.add_sample_direct(&filter, [x, y], [l, 0.5, 2.0], wt);
+        }
+        prop_assert_eq!(ta.stats(), tb.stats());
+        a.merge(ta).unwrap();
+        b.merge(tb).unwrap();
+        for y in 0..9 {
+            for x in 0..10 {
+                let (pa, pb) = (a.pixel(x, y).unwrap(), b.pixel(x, y).unwrap());
+                prop_assert_eq!(pa.weight_sum.to_bits(), pb.weight_sum.to_bits(), "({}, {})", x, y);
+                for c in 0..3 {
+                    prop_assert_eq!(pa.rgb_sum[c].to_bits(), pb.rgb_sum[c].to_bits(), "({}, {})", x, y);
+                }
+            }
+        }
+    }
+}
