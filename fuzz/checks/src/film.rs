@@ -23,7 +23,8 @@ const MAX_OPS: usize = 256;
 /// image to merging them in index order; a tile index merged twice is refused and changes
 /// nothing, and so is a tile of another film; pixel sums stay finite; the resolved image is finite and ≥ 0 with exact
 /// `zero_weight_pixels` (and `negative_components` without splats); when every sample lies in
-/// its tile's bounds, the tiled film equals one whole-film tile up to summation order.
+/// its tile's bounds, the tiled film equals one whole-film tile up to summation order; with a
+/// box, table and direct evaluation sum the same bits.
 pub fn film(data: &[u8]) {
     let mut b = Bytes::new(data);
     let config = FilmConfig {
@@ -35,7 +36,7 @@ pub fn film(data: &[u8]) {
         },
         max_component: b.bool().then(|| b.f32_mixed()),
     };
-    let filter = pick_filter(&mut b);
+    let (filter, is_box) = pick_filter(&mut b);
     let filter: &dyn Filter = filter.as_ref();
     let made = Film::new(config, filter);
     let Some(want_bounds) = expected_bounds(&config) else {
@@ -154,6 +155,9 @@ pub fn film(data: &[u8]) {
     }
     assert_eq!(reference.stats(), want, "counters");
     assert_eq!(reference.rejected(), want.rejected);
+    if is_box {
+        check_box_table_is_exact(&reference, config, filter, &specs, &ops, want);
+    }
 
     // The same tiles merged in an arbitrary order, some possibly left out (a gap that `image`
     // flushes over).
@@ -264,6 +268,52 @@ pub fn film(data: &[u8]) {
                         q.rgb_sum[c]
                     );
                 }
+            }
+        }
+    }
+}
+
+/// A box's weights are all exactly 1, in its table as in its definition, so the table path of
+/// `add_sample` (for radii ≤ ½ its one-pixel path) sums bit for bit what `add_sample_direct`
+/// sums: the same ops replayed with direct evaluation give `reference`'s counters and pixels.
+fn check_box_table_is_exact(
+    reference: &Film,
+    config: FilmConfig,
+    filter: &dyn Filter,
+    specs: &[TileSpec],
+    ops: &[Op],
+    want: FilmStats,
+) {
+    let mut direct = Film::new(config, filter).expect("same config");
+    let mut tiles: Vec<FilmTile> = specs.iter().map(|s| direct.tile(*s)).collect();
+    for op in ops {
+        let t = &mut tiles[op.tile];
+        match op.kind {
+            Kind::Splat => t.add_splat(op.p, op.rgb),
+            _ => t.add_sample_direct(filter, op.p, op.rgb, op.weight),
+        }
+    }
+    for t in tiles {
+        direct.merge(t).expect("in-order merge");
+    }
+    assert_eq!(direct.stats(), want, "counters, direct box");
+    let b = reference.pixel_bounds();
+    for y in b.y0..b.y1 {
+        for x in b.x0..b.x1 {
+            let (p, q) = (direct.pixel(x, y).unwrap(), reference.pixel(x, y).unwrap());
+            assert_eq!(
+                p.weight_sum.to_bits(),
+                q.weight_sum.to_bits(),
+                "box pixel ({x}, {y}): direct {} vs table {}",
+                p.weight_sum,
+                q.weight_sum
+            );
+            for c in 0..3 {
+                assert_eq!(
+                    p.rgb_sum[c].to_bits(),
+                    q.rgb_sum[c].to_bits(),
+                    "box pixel ({x}, {y})"
+                );
             }
         }
     }
@@ -416,11 +466,12 @@ fn max_weight(film: &Film) -> f64 {
 }
 
 /// A built-in filter with arbitrary parameters (the default when they are refused), or a plugin
-/// filter with negative lobes.
-fn pick_filter(b: &mut Bytes) -> Box<dyn Filter> {
+/// filter with negative lobes; `true` with a box.
+fn pick_filter(b: &mut Bytes) -> (Box<dyn Filter>, bool) {
     let r = [radius(b), radius(b)];
     let (p, q) = (b.f32_mixed(), b.f32_mixed());
-    match b.u8() % 7 {
+    let pick = b.u8() % 7;
+    let filter: Box<dyn Filter> = match pick {
         0 => Box::new(Boxcar::new(r).unwrap_or_default()),
         1 => Box::new(Triangle::new(r).unwrap_or_default()),
         2 => Box::new(Gaussian::new(r, p).unwrap_or_default()),
@@ -449,7 +500,8 @@ fn pick_filter(b: &mut Bytes) -> Box<dyn Filter> {
                 0.5
             },
         }),
-    }
+    };
+    (filter, pick == 0)
 }
 
 /// A filter radius: usually small, sometimes anything (refused values fall back to defaults).
