@@ -258,6 +258,22 @@ fn accumulate<W: WeightSource + ?Sized>(
     }
 }
 
+/// `rgb · weight` in `f64`, and whether `rgb` and `weight` are all finite. In `f64` because the
+/// `f32` product of two finite values can overflow to ±∞ (`f32::MAX × 2`), while the `f64`
+/// product of two `f32`s is exact, so finite input keeps the sums finite. The inputs are all
+/// finite exactly when the three products are (∞·0 is NaN), and those exactly when their sum
+/// is (∞ − ∞ is NaN): one test instead of four.
+#[inline(always)]
+fn weighted(rgb: [f32; 3], weight: f32) -> ([f64; 3], bool) {
+    let w = f64::from(weight);
+    let l = [
+        f64::from(rgb[0]) * w,
+        f64::from(rgb[1]) * w,
+        f64::from(rgb[2]) * w,
+    ];
+    (l, (l[0] + l[1] + l[2]).is_finite())
+}
+
 #[inline(always)]
 fn add(p: &mut Pixel, f: f64, l: [f64; 3]) {
     p.rgb_sum[0] += f * l[0];
@@ -496,16 +512,8 @@ impl FilmTile {
     /// `f64`), and it gets `weight · (rgb · w)`.
     #[inline(always)]
     fn add_one_pixel(&mut self, one: &OnePixel, p: [f32; 2], rgb: [f32; 3], weight: f32) -> bool {
-        let w = f64::from(weight);
-        let l = [
-            f64::from(rgb[0]) * w,
-            f64::from(rgb[1]) * w,
-            f64::from(rgb[2]) * w,
-        ];
-        // rgb and weight are all finite exactly when the three products are (an f64 product
-        // of two finite f32s never overflows; ∞·0 is NaN), and those exactly when their sum is
-        // (∞ − ∞ is NaN). One test instead of four.
-        if !(l[0] + l[1] + l[2]).is_finite() {
+        let (l, finite) = weighted(rgb, weight);
+        if !finite {
             return false;
         }
         let g = &self.geometry;
@@ -602,26 +610,16 @@ impl FilmTile {
         rgb: [f32; 3],
         weight: f32,
     ) -> Option<(Footprint, [f64; 3])> {
-        if !(rgb[0].is_finite()
-            & rgb[1].is_finite()
-            & rgb[2].is_finite()
-            & weight.is_finite()
-            & p[0].is_finite()
-            & p[1].is_finite())
-        {
+        let (l, finite) = weighted(rgb, weight);
+        if !(finite & p[0].is_finite() & p[1].is_finite()) {
             self.stats.rejected += 1;
             return None;
         }
-        let rgb = self.clamp(rgb);
+        let l = match self.setup.max_component {
+            Some(_) => weighted(self.clamp(rgb), weight).0,
+            None => l,
+        };
         self.stats.samples += 1;
-        // In f64: the f32 product of two finite values can overflow to ±∞ (f32::MAX × 2), and
-        // the f64 product of two f32s is exact, so finite input keeps the sums finite.
-        let w = f64::from(weight);
-        let l = [
-            f64::from(rgb[0]) * w,
-            f64::from(rgb[1]) * w,
-            f64::from(rgb[2]) * w,
-        ];
         let fp = self.footprint(p)?;
         Some((fp, l))
     }
