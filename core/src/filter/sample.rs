@@ -166,9 +166,13 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
         let y = (-self.radius[1] + (j as f32 + fy) * self.cell[1])
             .clamp(-self.radius[1], self.radius[1]);
         // Rounding can put the offset on the next cell's edge, where `pdf` would read that
-        // cell: step it back into the cell it was drawn from (found by the fuzzer).
-        let x = snap_into_cell(x, i, self.radius[0], self.cell[0]);
-        let y = snap_into_cell(y, j, self.radius[1], self.cell[1]);
+        // cell: step it back into the cell it was drawn from (found by the fuzzer). With a
+        // subnormal radius the cell's centre itself can round past the radius: clamp again
+        // (also found by the fuzzer; such supports have no f32 density anyway).
+        let x = snap_into_cell(x, i, self.radius[0], self.cell[0])
+            .clamp(-self.radius[0], self.radius[0]);
+        let y = snap_into_cell(y, j, self.radius[1], self.cell[1])
+            .clamp(-self.radius[1], self.radius[1]);
         let pdf = px * py / (self.cell[0] * self.cell[1]);
         let w = self.filter.eval(x, y) / pdf;
         FilterSample {

@@ -1148,6 +1148,45 @@ fn sampled_offsets_stay_in_the_cell_they_were_drawn_from() {
     }
 }
 
+/// Found by the fuzzer (CI's smoke run): with a subnormal radius the cell width rounds so far
+/// that the centre of the last cell — where a sample rounded off its cell is moved back to —
+/// lies past the radius. Offsets now stay within the radius for any radius, tiny or not.
+#[test]
+fn sampled_offsets_stay_within_subnormal_radii() {
+    #[derive(Debug)]
+    struct Flat([f32; 2]);
+    impl Filter for Flat {
+        fn radius(&self) -> [f32; 2] {
+            self.0
+        }
+        fn eval(&self, x: f32, y: f32) -> f32 {
+            if x.abs() <= self.0[0] && y.abs() <= self.0[1] {
+                1.0
+            } else {
+                0.0
+            }
+        }
+    }
+    for radius in [
+        [91.660_16f32, 1.8e-44],
+        [1.8e-44, 3.0],
+        [1e-45, 1e-45],
+        [2.5e-40, 0.5],
+    ] {
+        let s: FilterSampler<Flat> = FilterSampler::new(Flat(radius)).unwrap();
+        for a in 0..=64u32 {
+            for b in 0..=64u32 {
+                let u = [a as f32 / 64.0, b as f32 / 64.0];
+                let [x, y] = s.sample(u).offset;
+                assert!(
+                    x.abs() <= radius[0] && y.abs() <= radius[1],
+                    "{radius:?} u={u:?}: ({x}, {y})"
+                );
+            }
+        }
+    }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Phase tables.
 
