@@ -38,6 +38,8 @@ struct Geometry {
     radius: [f64; 2],
     /// `2r` per axis.
     diameter: [f64; 2],
+    /// Corner of the first stored pixel, `(x0, y0)`.
+    corner: [f64; 2],
     /// Centre of the first stored pixel, `(x0 + ½, y0 + ½)`.
     origin: [f64; 2],
     /// Stored columns and rows.
@@ -59,6 +61,7 @@ impl Geometry {
             bounds,
             radius,
             diameter: radius.map(|r| 2.0 * r),
+            corner: [bounds.x0 as f64, bounds.y0 as f64],
             origin: [bounds.x0 as f64 + 0.5, bounds.y0 as f64 + 0.5],
             size,
             low: radius.map(|r| -2.0 * r - 1.0),
@@ -372,37 +375,22 @@ pub struct FilmTile {
     splats: Vec<[f64; 3]>,
     setup: Arc<Setup>,
     stats: FilmStats,
-    /// The one-pixel fast path, when the film's filter allows it (see [`OnePixel`]).
-    one_pixel: Option<OnePixel>,
+    /// The filter's constant weight when the one-pixel fast path applies (see
+    /// [`one_pixel_weight`]).
+    one_pixel: Option<f64>,
 }
 
-/// A box filter with radii of at most ½ and no radiance clamp: a sample reaches at most the one
-/// pixel it lies in, so [`FilmTile::add_sample`] can find that pixel with a floor per axis and
-/// skip the footprint machinery. Samples on a pixel edge (a box of radius ½ reaches both
+/// The weight of [`FilmTile::add_sample`]'s one-pixel path, when it applies: a box filter (a
+/// constant phase table) with radii of at most ½ and no radiance clamp. Such a box reaches at
+/// most the one pixel a sample lies in, so the pixel comes from a floor per axis and the
+/// footprint machinery is skipped. Samples on a pixel edge (a box of radius ½ reaches both
 /// neighbours) and near the stored area's border take the general path.
-#[derive(Clone, Copy, Debug)]
-struct OnePixel {
-    /// The filter's constant weight.
-    weight: f64,
-    /// Filter radius per axis, ≤ ½.
-    radius: [f64; 2],
-    /// Corner of the first stored pixel, `(x0, y0)`.
-    corner: [f64; 2],
-}
-
-impl OnePixel {
-    fn new(setup: &Setup, bounds: Bounds) -> Option<OnePixel> {
-        let Weights::Phase(t) = &setup.weights else {
-            return None;
-        };
-        let radius = t.radius().map(f64::from);
-        let weight = f64::from(t.constant()?);
-        (setup.max_component.is_none() && radius.iter().all(|&r| r <= 0.5)).then_some(OnePixel {
-            weight,
-            radius,
-            corner: [bounds.x0 as f64, bounds.y0 as f64],
-        })
-    }
+fn one_pixel_weight(setup: &Setup) -> Option<f64> {
+    let Weights::Phase(t) = &setup.weights else {
+        return None;
+    };
+    let weight = f64::from(t.constant()?);
+    (setup.max_component.is_none() && t.radius().iter().all(|&r| r <= 0.5)).then_some(weight)
 }
 
 impl FilmTile {
@@ -423,7 +411,7 @@ impl FilmTile {
             pixel_bounds = Bounds::new(fb.x0, fb.y0, fb.x0, fb.y0);
         }
         let n = pixel_bounds.area() as usize;
-        let one_pixel = OnePixel::new(&setup, pixel_bounds);
+        let one_pixel = one_pixel_weight(&setup);
         FilmTile {
             spec,
             geometry: Geometry::new(pixel_bounds, [rx, ry]),
@@ -497,30 +485,33 @@ impl FilmTile {
     /// ```
     #[inline]
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
-        if let Some(one) = self.one_pixel
-            && self.add_one_pixel(&one, p_film, rgb, weight)
+        if let Some(filter_weight) = self.one_pixel
+            && self.add_one_pixel(filter_weight, p_film, rgb, weight)
         {
             return;
         }
         self.add_sample_footprint(p_film, rgb, weight);
     }
 
-    /// [`FilmTile::add_sample`] for a box of radius ≤ ½ ([`OnePixel`]): `false`, with nothing
-    /// done, when the sample needs the general path (non-finite input, a pixel edge, the
-    /// border of the stored area). Same sums as the general path, bit for bit: the pixel is
-    /// `⌊p − corner⌋` per axis, reached when its centre is within the radius (both exact in
-    /// `f64`), and it gets `weight · (rgb · w)`.
+    /// [`FilmTile::add_sample`] for a box of radius ≤ ½ and weight `filter_weight`
+    /// ([`one_pixel_weight`]): `false`, with nothing done, when the sample needs the general
+    /// path (non-finite input, a pixel edge, the border of the stored area). Same sums as the
+    /// general path, bit for bit: the pixel is `⌊p − corner⌋` per axis, reached when its centre
+    /// is within the radius (both exact in `f64`), and it gets `filter_weight · (rgb · w)`.
     #[inline(always)]
-    fn add_one_pixel(&mut self, one: &OnePixel, p: [f32; 2], rgb: [f32; 3], weight: f32) -> bool {
+    fn add_one_pixel(
+        &mut self,
+        filter_weight: f64,
+        p: [f32; 2],
+        rgb: [f32; 3],
+        weight: f32,
+    ) -> bool {
         let (l, finite) = weighted(rgb, weight);
         if !finite {
             return false;
         }
         let g = &self.geometry;
-        let q = [
-            f64::from(p[0]) - one.corner[0],
-            f64::from(p[1]) - one.corner[1],
-        ];
+        let q = [f64::from(p[0]) - g.corner[0], f64::from(p[1]) - g.corner[1]];
         let i = [floor_f64(q[0]), floor_f64(q[1])];
         let f = [q[0] - i[0], q[1] - i[1]];
         // One test for the usual case, everything else to the general path: strictly inside
@@ -530,7 +521,7 @@ impl FilmTile {
         // radius (only radii below ½ can miss it).
         let inside = (q[0] > 0.0) & (q[0] < g.size_f[0]) & (q[1] > 0.0) & (q[1] < g.size_f[1]);
         let off_edge = (f[0] > 0.0) & (f[1] > 0.0);
-        let reached = ((f[0] - 0.5).abs() <= one.radius[0]) & ((f[1] - 0.5).abs() <= one.radius[1]);
+        let reached = ((f[0] - 0.5).abs() <= g.radius[0]) & ((f[1] - 0.5).abs() <= g.radius[1]);
         if !(inside & off_edge & reached) {
             return false;
         }
@@ -538,7 +529,7 @@ impl FilmTile {
         let stride = g.size[0] as usize;
         let index = int(i[1]) as usize * stride + int(i[0]) as usize;
         if let Some(pixel) = self.pixels.get_mut(index) {
-            add(pixel, one.weight, l);
+            add(pixel, filter_weight, l);
         }
         true
     }

@@ -340,22 +340,15 @@ impl PhaseTable {
         let mut fy = [0.0f32; MAX_TAPS];
         let kx = self.axes[0].factors(d0[0], &mut fx);
         let ky = self.axes[1].factors(d0[1], &mut fy);
-        if nx <= 4 && out.len() <= 16 && kx == 0 && ky == 0 {
+        if nx <= 4
+            && out.len() <= 16
+            && kx == 0
+            && ky == 0
+            && let Some(fx4) = fx.first_chunk()
+        {
             // Up to 4 × 4 starting at the first taps (radius ≤ 2, the usual filters): the rows
             // straight from the two tap rows.
-            if nx == 4 {
-                for (row, &wy) in out.chunks_exact_mut(4).zip(&fy) {
-                    for l in 0..4 {
-                        row[l] = fx[l] * wy;
-                    }
-                }
-            } else {
-                for (row, &wy) in out.chunks_exact_mut(nx).zip(&fy) {
-                    for (w, &x) in row.iter_mut().zip(&fx) {
-                        *w = x * wy;
-                    }
-                }
-            }
+            super::table::narrow_outer_product(fx4, &fy, nx, out);
             return Ok(());
         }
         // Row 0 holds the x factors until it is scaled last; every other row is row 0 times

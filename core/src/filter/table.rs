@@ -329,20 +329,7 @@ fn outer_product(
         // rows straight from registers.
         let wx = fx4(LANE.map(|l| d0[0] + l));
         let wy = fy4(LANE.map(|l| d0[1] + l));
-        if nx == 4 {
-            for (row, &w) in out.chunks_exact_mut(4).zip(&wy) {
-                for l in 0..4 {
-                    row[l] = wx[l] * w;
-                }
-            }
-        } else {
-            for (row, &w) in out.chunks_exact_mut(nx).zip(&wy) {
-                for (o, &x) in row.iter_mut().zip(&wx) {
-                    *o = x * w;
-                }
-            }
-        }
-        return;
+        return narrow_outer_product(&wx, &wy, nx, out);
     }
     // Row 0 holds the x factors until it is scaled last.
     let (first, rest) = out.split_at_mut(nx);
@@ -384,6 +371,26 @@ fn outer_product(
     }
     for w in first.iter_mut() {
         *w *= wy0;
+    }
+}
+
+/// `out[j·nx + i] = fx[i] · fy[j]` for a footprint at most 4 wide (`1 ≤ nx ≤ 4`), one row per
+/// `fy` entry while `out` lasts: the rows straight from registers, fully unrolled at width 4.
+/// Shared by the 4 × 4 paths of the table and phase-table footprints.
+#[inline(always)]
+pub(super) fn narrow_outer_product(fx: &[f32; 4], fy: &[f32], nx: usize, out: &mut [f32]) {
+    if nx == 4 {
+        for (row, &w) in out.chunks_exact_mut(4).zip(fy) {
+            for l in 0..4 {
+                row[l] = fx[l] * w;
+            }
+        }
+    } else {
+        for (row, &w) in out.chunks_exact_mut(nx).zip(fy) {
+            for (o, &x) in row.iter_mut().zip(fx) {
+                *o = x * w;
+            }
+        }
     }
 }
 
