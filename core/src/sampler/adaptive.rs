@@ -142,6 +142,10 @@ impl<S: Sampler> Sampler for AdaptiveSampler<S> {
         self.inner.get_pixel_2d()
     }
 
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> super::CameraSample {
+        self.inner.camera_sample(pixel, sample_index)
+    }
+
     fn round_size(&self, n: u32) -> u32 {
         self.inner.round_size(n)
     }

@@ -204,6 +204,34 @@ pub trait Sampler {
         }
     }
 
+    /// The camera sample of `pixel`, sample `sample_index`: image sample (dimensions 0, 1),
+    /// time (2), lens (3, 4); leaves the cursor at dimension 5. [`camera_sample`] calls it.
+    ///
+    /// The default is `start_pixel_sample(pixel, sample_index, 0)`, `get_pixel_2d`, `get_1d`,
+    /// `get_2d`. A sampler may override it to share work between the five values (one hash for
+    /// time and lens, say); an override returns exactly the default's values, bit for bit.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// let c = s.camera_sample([3, 5], 2);
+    /// s.start_pixel_sample([3, 5], 2, 0);
+    /// let p = s.get_pixel_2d();
+    /// assert_eq!((c.p_film, c.time), ([3.0 + p[0], 5.0 + p[1]], s.get_1d()));
+    /// ```
+    #[inline(always)]
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
+        self.start_pixel_sample(pixel, sample_index, 0);
+        let p = self.get_pixel_2d();
+        let time = self.get_1d();
+        let lens = self.get_2d();
+        CameraSample {
+            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+            lens,
+            time,
+        }
+    }
+
     /// How many samples `pixel` takes, given what was [reported](Sampler::report) for it so far.
     /// The default is [`Sampler::samples_per_pixel`]; adaptive samplers answer between their
     /// minimum and maximum.
@@ -270,15 +298,7 @@ pub fn camera_sample<S: Sampler + ?Sized>(
     pixel: [u32; 2],
     sample_index: u32,
 ) -> CameraSample {
-    s.start_pixel_sample(pixel, sample_index, 0);
-    let p = s.get_pixel_2d();
-    let time = s.get_1d();
-    let lens = s.get_2d();
-    CameraSample {
-        p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
-        lens,
-        time,
-    }
+    s.camera_sample(pixel, sample_index)
 }
 
 /// `pixel + offset` in `f32`, kept inside the pixel: below `pixel + 1` unless `f32` cannot

@@ -287,6 +287,11 @@ impl Sampler for NamedSampler {
     }
 
     #[inline]
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> super::CameraSample {
+        delegate!(self, s => s.camera_sample(pixel, sample_index))
+    }
+
+    #[inline]
     fn round_size(&self, n: u32) -> u32 {
         delegate!(self, s => s.round_size(n))
     }

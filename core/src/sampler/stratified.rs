@@ -1,6 +1,6 @@
 //! Stratified (jittered) and uniform (cell-centre) sampling, hash-permuted per dimension.
 
-use super::{Sampler, pixel_hash};
+use super::{CameraSample, Sampler, film, pixel_hash};
 use crate::Error;
 use crate::hash::{Permutation, mix64, permute, unit_f32};
 use crate::math::ONE_MINUS_EPSILON;
@@ -280,6 +280,34 @@ impl Sampler for StratifiedSampler {
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.value_2d(0)
+    }
+
+    /// The default's values with time and lens from one hash and one jitter-mode test (the
+    /// separate calls hash twice: the compiler does not merge the two hashes across the mode
+    /// branches).
+    #[inline(always)]
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
+        self.start_pixel_sample(pixel, sample_index, 0);
+        let p = self.value_2d(0);
+        let [jt, jx, jy] = match self.jitter {
+            Jitter::Jittered => {
+                let [t, _] = self.jitters(2);
+                let [x, y] = self.jitters(3);
+                [t, x, y]
+            }
+            Jitter::Centered => [0.5; 3],
+        };
+        let st = self.camera_perms[0].apply(self.index);
+        let (cx, cy) = self.cell(self.camera_perms[1].apply(self.index));
+        self.dim = 5;
+        CameraSample {
+            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+            lens: [
+                below_one((cx as f32 + jx) * self.inv[0]),
+                below_one((cy as f32 + jy) * self.inv[1]),
+            ],
+            time: below_one((st as f32 + jt) * self.inv[2]),
+        }
     }
 
     fn get_array_1d(&mut self, out: &mut [f32]) {
