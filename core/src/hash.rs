@@ -1,5 +1,6 @@
 //! Integer hashing and hash-derived permutations: the stateless randomness behind scrambles,
-//! per-pixel decorrelation and Latin-hypercube strata. Nothing here stores a table.
+//! per-pixel decorrelation and Latin-hypercube strata. The only table is the 32 permutations of
+//! two to four elements, computed at compile time.
 //!
 //! Sources: the 64-bit finaliser is SplitMix64's (Steele, Lea & Flood 2014, constants from
 //! Stafford's "Mix13"); the 32-bit one is Wellons' `lowbias32` (constants from his hash-prospector
@@ -137,7 +138,9 @@ pub const fn unit_f64(h: u64) -> f64 {
 /// - `n ≤ 16`: the whole permutation, packed as sixteen 4-bit entries in one `u64`, is drawn by
 ///   Fisher–Yates from one 64-bit hash (each step takes `⌊r·k⌋` and keeps `frac(r·k)`, which
 ///   spends only log₂ k bits, 44 for all of 16!): uniform over all `n!` permutations up to
-///   `n!/2⁶⁴`, and [`apply`](Permutation::apply) is a shift and a mask.
+///   `n!/2⁶⁴`, and [`apply`](Permutation::apply) is a shift and a mask. For `n ≤ 4` (the usual
+///   integrator array sizes) the draw is one multiply, `⌊r·n!⌋`, choosing from a table of all
+///   `n!` permutations in lexicographic order: the same uniformity for a tenth of the work.
 /// - `n > 16`: a keyed bijection on `0..2^⌈log₂ n⌉` (xor, odd multiply and xor-shift rounds)
 ///   restricted to `0..n` by cycle walking — Kensler's construction (“Correlated Multi-Jittered
 ///   Sampling”, 2013) with our own rounds — followed by a rotation by a hashed offset. The
@@ -194,6 +197,69 @@ fn packed_permutation(n: u32, mut r: u64) -> u64 {
     t
 }
 
+/// Sizes up to this draw from [`SMALL_PERMUTATIONS`].
+const SMALL_MAX: usize = 4;
+/// `n!` for `n ≤ SMALL_MAX`.
+const FACTORIAL: [u64; SMALL_MAX + 1] = [1, 1, 2, 6, 24];
+/// Where the permutations of `n` elements start in [`SMALL_PERMUTATIONS`].
+const SMALL_START: [usize; SMALL_MAX + 1] = [0, 0, 0, 2, 8];
+
+/// Every permutation of `0..n` for `n` = 2, 3, 4 (2 + 6 + 24), packed in nibbles like
+/// [`packed_permutation`]'s, each size in lexicographic order.
+const SMALL_PERMUTATIONS: [u64; 32] = small_permutations();
+
+/// Permutation number `rank` (lexicographic, `rank < n!`) of `0..n`, `n ≤ 4`: the Lehmer code
+/// of `rank` picks each entry from the elements not yet used.
+const fn nth_permutation(n: usize, mut rank: u64) -> u64 {
+    let mut unused = [true; SMALL_MAX];
+    let mut packed = 0u64;
+    let mut i = 0;
+    while i < n {
+        let f = FACTORIAL[n - 1 - i];
+        let mut d = rank / f;
+        rank %= f;
+        let mut e = 0;
+        loop {
+            if unused[e] {
+                if d == 0 {
+                    break;
+                }
+                d -= 1;
+            }
+            e += 1;
+        }
+        unused[e] = false;
+        packed |= (e as u64) << (4 * i);
+        i += 1;
+    }
+    packed
+}
+
+const fn small_permutations() -> [u64; 32] {
+    let mut out = [0u64; 32];
+    let mut n = 2;
+    while n <= SMALL_MAX {
+        let mut rank = 0;
+        while rank < FACTORIAL[n] {
+            out[SMALL_START[n] + rank as usize] = nth_permutation(n, rank);
+            rank += 1;
+        }
+        n += 1;
+    }
+    out
+}
+
+/// [`packed_permutation`]'s uniform draw for `n ≤ 4` by one multiply and a table read.
+#[inline]
+fn small_permutation(n: u32, r: u64) -> u64 {
+    let n = (n as usize).min(SMALL_MAX);
+    let rank = ((u128::from(r) * u128::from(FACTORIAL[n])) >> 64) as usize;
+    if n < 2 {
+        return 0;
+    }
+    SMALL_PERMUTATIONS[(SMALL_START[n] + rank) & 31]
+}
+
 impl Permutation {
     /// The permutation of `0..n` for `seed`.
     ///
@@ -214,7 +280,14 @@ impl Permutation {
                 key: 0,
                 key2: 0,
                 offset: 0,
-                table: packed_permutation(n, mix64(u64::from(seed) ^ 0x243f_6a88_85a3_08d3)),
+                table: {
+                    let r = mix64(u64::from(seed) ^ 0x243f_6a88_85a3_08d3);
+                    if n as usize <= SMALL_MAX {
+                        small_permutation(n, r)
+                    } else {
+                        packed_permutation(n, r)
+                    }
+                },
             };
         }
         let mask = u32::MAX >> (n - 1).leading_zeros();
@@ -381,6 +454,41 @@ mod tests {
         }
         assert_eq!(counts.len(), 6, "{counts:?}");
         assert!(counts.values().all(|&c| c > 1000), "{counts:?}");
+    }
+
+    /// The compile-time table holds, for each of n = 2, 3, 4, every permutation once, in
+    /// lexicographic order, and the small-size draw agrees with Fisher–Yates on the law: both
+    /// pick every permutation of four elements about equally often.
+    #[test]
+    fn small_permutation_table_is_every_permutation_in_order() {
+        for n in 2..=SMALL_MAX {
+            let perms: std::vec::Vec<std::vec::Vec<u64>> = SMALL_PERMUTATIONS
+                [SMALL_START[n]..SMALL_START[n] + FACTORIAL[n] as usize]
+                .iter()
+                .map(|&t| (0..n).map(|i| (t >> (4 * i)) & 0xf).collect())
+                .collect();
+            for p in &perms {
+                let mut sorted = p.clone();
+                sorted.sort_unstable();
+                assert_eq!(sorted, (0..n as u64).collect::<std::vec::Vec<_>>(), "{p:?}");
+            }
+            assert!(perms.windows(2).all(|w| w[0] < w[1]), "n={n}: {perms:?}");
+        }
+        assert_eq!(
+            SMALL_PERMUTATIONS[SMALL_START[3]..8],
+            [0x210, 0x120, 0x201, 0x021, 0x102, 0x012]
+        );
+        let mut counts = std::collections::HashMap::new();
+        for seed in 0..24_000u32 {
+            *counts
+                .entry(Permutation::new(4, seed).table)
+                .or_insert(0u32) += 1;
+        }
+        assert_eq!(counts.len(), 24);
+        assert!(
+            counts.values().all(|&c| (800..1200).contains(&c)),
+            "{counts:?}"
+        );
     }
 
     #[test]
