@@ -221,15 +221,7 @@ pub trait Sampler {
     /// ```
     #[inline(always)]
     fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
-        self.start_pixel_sample(pixel, sample_index, 0);
-        let p = self.get_pixel_2d();
-        let time = self.get_1d();
-        let lens = self.get_2d();
-        CameraSample {
-            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
-            lens,
-            time,
-        }
+        camera_sample_by_parts(self, pixel, sample_index)
     }
 
     /// How many samples `pixel` takes, given what was [reported](Sampler::report) for it so far.
@@ -299,6 +291,24 @@ pub fn camera_sample<S: Sampler + ?Sized>(
     sample_index: u32,
 ) -> CameraSample {
     s.camera_sample(pixel, sample_index)
+}
+
+/// [`Sampler::camera_sample`]'s default, kept apart so that tests can hold every override to it.
+#[inline(always)]
+pub(crate) fn camera_sample_by_parts<S: Sampler + ?Sized>(
+    s: &mut S,
+    pixel: [u32; 2],
+    sample_index: u32,
+) -> CameraSample {
+    s.start_pixel_sample(pixel, sample_index, 0);
+    let p = s.get_pixel_2d();
+    let time = s.get_1d();
+    let lens = s.get_2d();
+    CameraSample {
+        p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+        lens,
+        time,
+    }
 }
 
 /// `pixel + offset` in `f32`, kept inside the pixel: below `pixel + 1` unless `f32` cannot

@@ -209,13 +209,23 @@ impl StratifiedSampler {
 
     #[inline]
     fn value_2d(&self, dim: u32) -> [f32; 2] {
-        let s = self.stratum(dim);
+        self.cell_value(self.stratum(dim), self.jitters(dim))
+    }
+
+    /// The point of grid stratum `s` at jitter `[jx, jy]` within its cell.
+    #[inline(always)]
+    fn cell_value(&self, s: u32, [jx, jy]: [f32; 2]) -> [f32; 2] {
         let (cx, cy) = self.cell(s);
-        let [jx, jy] = self.jitters(dim);
         [
             below_one((cx as f32 + jx) * self.inv[0]),
             below_one((cy as f32 + jy) * self.inv[1]),
         ]
+    }
+
+    /// The value of 1D stratum `s` (of `spp`) at jitter `j` within it.
+    #[inline(always)]
+    fn stratum_value(&self, s: u32, j: f32) -> f32 {
+        below_one((s as f32 + j) * self.inv[2])
     }
 }
 
@@ -265,8 +275,7 @@ impl Sampler for StratifiedSampler {
     fn get_1d(&mut self) -> f32 {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
-        let s = self.stratum(dim);
-        below_one((s as f32 + self.jitters(dim)[0]) * self.inv[2])
+        self.stratum_value(self.stratum(dim), self.jitters(dim)[0])
     }
 
     #[inline(always)]
@@ -297,16 +306,14 @@ impl Sampler for StratifiedSampler {
             }
             Jitter::Centered => [0.5; 3],
         };
-        let st = self.camera_perms[0].apply(self.index);
-        let (cx, cy) = self.cell(self.camera_perms[1].apply(self.index));
+        // Dimensions 2 and 3: the camera permutations that `stratum` reads.
+        let time = self.stratum_value(self.camera_perms[0].apply(self.index), jt);
+        let lens = self.cell_value(self.camera_perms[1].apply(self.index), [jx, jy]);
         self.dim = 5;
         CameraSample {
             p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
-            lens: [
-                below_one((cx as f32 + jx) * self.inv[0]),
-                below_one((cy as f32 + jy) * self.inv[1]),
-            ],
-            time: below_one((st as f32 + jt) * self.inv[2]),
+            lens,
+            time,
         }
     }
 

@@ -27,22 +27,16 @@ pub(crate) fn record<S: Sampler + ?Sized>(s: &mut S, pixel: [u32; 2], index: u32
     v
 }
 
-/// The camera sample by the separate calls [`Sampler::camera_sample`]'s default makes, with the
-/// cursor after it (the next `get_1d`).
-fn camera_by_parts<S: Sampler + ?Sized>(s: &mut S, pixel: [u32; 2], index: u32) -> Vec<u32> {
-    s.start_pixel_sample(pixel, index, 0);
-    let p = s.get_pixel_2d();
-    let time = s.get_1d();
-    let lens = s.get_2d();
-    let v = [
-        film(pixel[0], p[0]),
-        film(pixel[1], p[1]),
-        time,
-        lens[0],
-        lens[1],
+/// A camera sample's bits, with the next `get_1d` (where the cursor was left).
+fn camera_bits<S: Sampler + ?Sized>(s: &mut S, c: CameraSample) -> Vec<u32> {
+    bits(&[
+        c.p_film[0],
+        c.p_film[1],
+        c.time,
+        c.lens[0],
+        c.lens[1],
         s.get_1d(),
-    ];
-    bits(&v)
+    ])
 }
 
 fn bits(v: &[f32]) -> Vec<u32> {
@@ -61,19 +55,9 @@ pub(crate) fn consistent_values<S: Sampler + Clone>(sampler: &S) {
         for i in 0..spp {
             // An override of `camera_sample` returns the default's values and cursor.
             let c = s.camera_sample(p, i);
-            let fused = bits(&[
-                c.p_film[0],
-                c.p_film[1],
-                c.time,
-                c.lens[0],
-                c.lens[1],
-                s.get_1d(),
-            ]);
-            assert_eq!(
-                fused,
-                camera_by_parts(&mut s, p, i),
-                "pixel {p:?} sample {i}"
-            );
+            let fused = camera_bits(&mut s, c);
+            let c = camera_sample_by_parts(&mut s, p, i);
+            assert_eq!(fused, camera_bits(&mut s, c), "pixel {p:?} sample {i}");
             let v = record(&mut s, p, i);
             for (k, &x) in v.iter().enumerate() {
                 assert!(
