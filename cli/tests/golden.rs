@@ -90,17 +90,8 @@ fn runs() -> Vec<Run> {
         ],
     ));
     // Pixel samplers: the 16 samples of pixel (3, 5), 4 dimensions each.
-    for sampler in [
-        "random",
-        "uniform",
-        "stratified",
-        "halton",
-        "hammersley",
-        "zero-two",
-        "sobol",
-        "best-candidate",
-        "adaptive",
-    ] {
+    // Every sampler the CLI accepts by name.
+    for sampler in nyquist::sampler::NAMES {
         let mut args = vec![
             "points",
             "--sampler",
@@ -152,17 +143,8 @@ fn runs() -> Vec<Run> {
             ],
         ));
     }
-    for sampler in [
-        "uniform",
-        "random",
-        "stratified",
-        "halton",
-        "hammersley",
-        "zero-two",
-        "sobol",
-        "best-candidate",
-        "adaptive",
-    ] {
+    // Every sampler the CLI accepts by name.
+    for sampler in nyquist::sampler::NAMES {
         out.push(run(
             format!("render/sampler-{sampler}"),
             &[
