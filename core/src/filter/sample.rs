@@ -63,7 +63,9 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
     /// compile.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0`.
+    /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0`, or so small that a
+    /// cell's area `(2rx/N)·(2ry/N)` is below the smallest normal `f32` (the density `1/area`
+    /// would not be finite: only plugin filters can get there, built-ins need `r ≥ 2⁻¹⁶`).
     ///
     /// ```
     /// use nyquist::filter::{Filter, FilterSampler, Lanczos};
@@ -81,6 +83,13 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
         }
         let hx = 2.0 * f64::from(rx) / N as f64;
         let hy = 2.0 * f64::from(ry) / N as f64;
+        // `pdf` divides by the f32 cell area: it must be a normal f32 so that every density is
+        // finite (found by the fuzzer: a subnormal radius gave a zero cell and a NaN pdf).
+        if !((hx as f32) * (hy as f32) >= f32::MIN_POSITIVE) {
+            return Err(Error::OutOfRange {
+                what: "filter radius (too small: the sampler's cell area must be a normal f32)",
+            });
+        }
         let at = |i: f64, j: f64| -> f64 {
             let x = (-f64::from(rx) + i * hx) as f32;
             let y = (-f64::from(ry) + j * hy) as f32;

@@ -1148,11 +1148,13 @@ fn sampled_offsets_stay_in_the_cell_they_were_drawn_from() {
     }
 }
 
-/// Found by the fuzzer (CI's smoke run): with a subnormal radius the cell width rounds so far
+/// Found by the fuzzer (CI's smoke runs): with a subnormal radius the cell width rounds so far
 /// that the centre of the last cell — where a sample rounded off its cell is moved back to —
-/// lies past the radius. Offsets now stay within the radius for any radius, tiny or not.
+/// lies past the radius; with a smaller one still the cell area is 0 in f32 and `pdf` was NaN.
+/// Supports whose cell area is not a normal f32 are now refused; the smallest accepted ones
+/// keep offsets within the radius and every density finite.
 #[test]
-fn sampled_offsets_stay_within_subnormal_radii() {
+fn tiny_radii_are_refused_or_sampled_with_finite_density() {
     #[derive(Debug)]
     struct Flat([f32; 2]);
     impl Filter for Flat {
@@ -1167,22 +1169,42 @@ fn sampled_offsets_stay_within_subnormal_radii() {
             }
         }
     }
+    // N = 32: the cell area is rx·ry/256.
     for radius in [
         [91.660_16f32, 1.8e-44],
         [1.8e-44, 3.0],
         [1e-45, 1e-45],
         [2.5e-40, 0.5],
+        [1e-45, 0.5],
+        [1.7e-18, 1.7e-18],
     ] {
+        let r = FilterSampler::<Flat>::new(Flat(radius));
+        assert!(
+            matches!(r, Err(Error::OutOfRange { .. })),
+            "{radius:?}: {r:?}"
+        );
+    }
+    for radius in [[91.660_16f32, 1e-37], [1e-35, 0.5], [1.8e-18, 1.8e-18]] {
         let s: FilterSampler<Flat> = FilterSampler::new(Flat(radius)).unwrap();
         for a in 0..=64u32 {
             for b in 0..=64u32 {
                 let u = [a as f32 / 64.0, b as f32 / 64.0];
-                let [x, y] = s.sample(u).offset;
+                let fs = s.sample(u);
+                let [x, y] = fs.offset;
                 assert!(
                     x.abs() <= radius[0] && y.abs() <= radius[1],
                     "{radius:?} u={u:?}: ({x}, {y})"
                 );
+                let pdf = s.pdf(fs.offset);
+                assert!(
+                    pdf.is_finite() && pdf > 0.0,
+                    "{radius:?} u={u:?}: pdf {pdf}"
+                );
+                assert!(fs.weight.is_finite(), "{radius:?} u={u:?}: {fs:?}");
             }
+        }
+        for p in [[-radius[0], -radius[1]], [radius[0], radius[1]], [0.0, 0.0]] {
+            assert!(s.pdf(p).is_finite(), "{radius:?}: pdf({p:?})");
         }
     }
 }
