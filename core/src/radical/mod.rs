@@ -260,10 +260,15 @@ const fn table_total() -> usize {
     total
 }
 
+/// [`CHUNK_REV`]'s length: the tables' total rounded up to a power of two, so the fast path
+/// indexes it through a mask instead of a bounds check (every index is in range anyway: a chunk
+/// `e < b^j` at its base's offset; the padding is never read).
+const CHUNK_REV_LEN: usize = table_total().next_power_of_two();
+
 /// `CHUNK_REV[table + e] = Σ_i d_i·bⁱ` for a chunk `e < b^j` with digits `d_0 d_1 … d_(j−1)`
 /// (most significant first): the chunk's digits reversed, as the fast path adds them to `R`.
-const fn build_chunk_rev() -> [u16; table_total()] {
-    let mut out = [0u16; table_total()];
+const fn build_chunk_rev() -> [u16; CHUNK_REV_LEN] {
+    let mut out = [0u16; CHUNK_REV_LEN];
     let mut off = 0usize;
     let mut i = 1;
     while i < 1024 {
@@ -292,7 +297,7 @@ const fn build_chunk_rev() -> [u16; table_total()] {
     out
 }
 
-static CHUNK_REV: [u16; table_total()] = build_chunk_rev();
+static CHUNK_REV: [u16; CHUNK_REV_LEN] = build_chunk_rev();
 
 const fn build_fast() -> [FastBase; 1024] {
     let bases = build_bases();
@@ -603,6 +608,37 @@ pub fn radical_inverse_at(dim: u32, indices: &[u64], out: &mut [f32]) -> Result<
     Ok(())
 }
 
+/// Φ_{prime(dim + i)}(a) written to `out[i]` for every `i`: one index across consecutive
+/// dimensions — a Halton point, or a global sampler's run of dimensions for one sample (pbrt-v2's
+/// Halton arrays). Bit for bit what [`radical_inverse`] returns for each; the index's length
+/// class is found once for all dimensions instead of once per value. Dimensions wrap modulo
+/// 1024 (past dimension 1023 comes dimension 0). Total: any `out` length, empty included.
+///
+/// ```
+/// use nyquist::radical::{radical_inverse, radical_inverse_dims};
+/// let mut point = [0.0f32; 6];
+/// radical_inverse_dims(1021, 77, &mut point);
+/// let dims = [1021, 1022, 1023, 0, 1, 2];
+/// assert!((0..6).all(|i| point[i] == radical_inverse(dims[i], 77)));
+/// ```
+#[inline]
+pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
+    let class = index_class(a);
+    let mut d = (dim % PRIME_COUNT) as usize;
+    for x in out {
+        let fast = &FAST[d];
+        *x = if d != 0 && a < u64::from(fast.big) {
+            phi_fast_class(fast, class, a)
+        } else {
+            radical_inverse(d as u32, a)
+        };
+        d += 1;
+        if d == PRIME_COUNT as usize {
+            d = 0;
+        }
+    }
+}
+
 /// Φ_b(a) for `a < b^k` (so `a < 2³²`): the reversed digits `R = Σ e_j·b^j` (`e_j` the digits
 /// of `a`, most significant first) summed exactly in `f64`, then [`narrow`]ed.
 ///
@@ -612,7 +648,13 @@ pub fn radical_inverse_at(dim: u32, indices: &[u64], out: &mut [f32]) -> Result<
 /// is predictable.
 #[inline(always)]
 fn phi_fast(f: &FastBase, a: u64) -> f32 {
-    let class = &f.class[index_class(a)];
+    phi_fast_class(f, index_class(a), a)
+}
+
+/// [`phi_fast`] with `a`'s [`index_class`] already known.
+#[inline(always)]
+fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
+    let class = &f.class[class];
     let b = u128::from(f.b);
     let bf = f64::from(f.b);
     let mut y = a.wrapping_mul(class.magic);
@@ -629,11 +671,11 @@ fn phi_fast(f: &FastBase, a: u64) -> f32 {
     // multipliers' product is still bⁿ).
     let c = u128::from(f.chunk);
     let cf = f64::from(f.chunk);
-    let table = CHUNK_REV.get(f.table as usize..).unwrap_or(&[]);
+    let table = f.table as usize;
     for _ in 0..class.chunks {
         let t = u128::from(y) * c;
         let e = (t >> 64) as usize;
-        rev += f64::from(table.get(e).copied().unwrap_or(0)) * weight;
+        rev += f64::from(CHUNK_REV[(table + e) & (CHUNK_REV_LEN - 1)]) * weight;
         weight *= cf;
         y = t as u64;
     }

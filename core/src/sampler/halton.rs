@@ -1,8 +1,10 @@
 //! pbrt-v3/v4's Halton sampler: one Halton sequence over the whole image.
 
-use super::Sampler;
+use super::{CameraSample, Sampler, film};
 use crate::Error;
-use crate::radical::{inverse_radical_inverse, radical_inverse, scrambled_radical_inverse};
+use crate::radical::{
+    inverse_radical_inverse, radical_inverse, radical_inverse_dims, scrambled_radical_inverse,
+};
 
 /// Scrambling of [`HaltonSampler`]'s values.
 ///
@@ -194,6 +196,24 @@ impl HaltonSampler {
             _ => self.value(dim, self.index),
         }
     }
+
+    /// Dimensions `dim, dim + 1, …` into `out`, as `sample` gives them one at a time. A run of
+    /// plain radical inverses of `index` (no scrambling, clear of dimensions 0 and 1, which
+    /// read the axis indices, also after wrapping) goes through the batch that finds the
+    /// index's class once.
+    #[inline]
+    fn run(&self, dim: u32, out: &mut [f32]) {
+        let d = dim % 1024;
+        if self.scramble == HaltonScramble::None && d >= 2 && d as usize + out.len() <= 1024 {
+            radical_inverse_dims(d, self.index, out);
+        } else {
+            let mut k = dim;
+            for x in out {
+                *x = self.sample(k);
+                k = k.wrapping_add(1);
+            }
+        }
+    }
 }
 
 impl Sampler for HaltonSampler {
@@ -221,6 +241,37 @@ impl Sampler for HaltonSampler {
     }
 
     super::global_point_dimensions!();
+
+    /// The default's values, with time and lens (dimensions 2–4) in one batch.
+    #[inline(always)]
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
+        self.start_pixel_sample(pixel, sample_index, 0);
+        let p = [self.sample(0), self.sample(1)];
+        let mut v = [0.0f32; 3];
+        self.run(2, &mut v);
+        self.dim = 5;
+        CameraSample {
+            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+            lens: [v[1], v[2]],
+            time: v[0],
+        }
+    }
+
+    /// One dimension per value, as the default, in one batch.
+    fn get_array_1d(&mut self, out: &mut [f32]) {
+        let dim = self.dim;
+        self.dim = dim.wrapping_add(out.len() as u32);
+        self.run(dim, out);
+    }
+
+    /// Two dimensions per point, as the default, in one batch; an odd last value is left
+    /// untouched.
+    fn get_array_2d(&mut self, out: &mut [f32]) {
+        let n = out.len() & !1;
+        let dim = self.dim;
+        self.dim = dim.wrapping_add(n as u32);
+        self.run(dim, &mut out[..n]);
+    }
 }
 
 #[cfg(test)]
@@ -293,6 +344,45 @@ mod tests {
         // u64 index math: stride 2⁷·3⁵ = 31104, and the largest sample index passes 2³².
         assert!(s.sequence_index([16383, 16383], 65535) >= 65535 * 31104);
         assert!(s.sequence_index([16383, 16383], u32::MAX) > u64::from(u32::MAX));
+    }
+
+    /// The array overrides give the default's values (one dimension per value, pairs for 2D),
+    /// bit for bit, also across the wrap at dimension 1024 into the axis dimensions 0 and 1,
+    /// and leave the cursor where the default does.
+    #[test]
+    fn halton_arrays_equal_values_taken_one_at_a_time() {
+        for scramble in [HaltonScramble::None, HaltonScramble::PermuteDigits] {
+            let mut s = HaltonSampler::new([640, 480], 16, scramble, 9).unwrap();
+            for (pixel, index) in [([3u32, 7u32], 5u32), ([639, 479], 15), ([0, 0], 0)] {
+                for start in [0u32, 2, 5, 1017, 1021, 1023, u32::MAX - 2] {
+                    for len in [0usize, 1, 3, 8, 9] {
+                        let mut batch = std::vec![-1.0f32; len];
+                        s.start_pixel_sample(pixel, index, start);
+                        s.get_array_1d(&mut batch);
+                        let after = s.get_1d();
+                        let mut one = std::vec![-1.0f32; len];
+                        s.start_pixel_sample(pixel, index, start);
+                        for x in &mut one {
+                            *x = s.get_1d();
+                        }
+                        assert_eq!(batch, one, "1d {scramble:?} {pixel:?} {start} {len}");
+                        assert_eq!(after.to_bits(), s.get_1d().to_bits());
+
+                        let mut batch = std::vec![-1.0f32; len];
+                        s.start_pixel_sample(pixel, index, start);
+                        s.get_array_2d(&mut batch);
+                        let after = s.get_1d();
+                        let mut one = std::vec![-1.0f32; len];
+                        s.start_pixel_sample(pixel, index, start);
+                        for p in one.chunks_exact_mut(2) {
+                            p.copy_from_slice(&s.get_2d());
+                        }
+                        assert_eq!(batch, one, "2d {scramble:?} {pixel:?} {start} {len}");
+                        assert_eq!(after.to_bits(), s.get_1d().to_bits());
+                    }
+                }
+            }
+        }
     }
 
     #[test]
