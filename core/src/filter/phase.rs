@@ -328,8 +328,20 @@ impl PhaseTable {
     /// t.footprint([-1.75, -1.5], 4, &mut w).unwrap();
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.75 + 3.0, -1.5 + 2.0));
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        // One weight (a box of radius ½, nearly always): inlined into the caller, without
+        // the general path's setup.
+        if let ([w], 1) = (&mut *out, nx) {
+            *w = self.weight(d0[0], d0[1]);
+            return Ok(());
+        }
+        self.footprint_many(d0, nx, out)
+    }
+
+    /// [`footprint`](Self::footprint) past the one-weight case.
+    #[inline]
+    fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         super::table::check_footprint(nx, out)?;
         if let [w] = out {
             // One weight: the single lookup reads the same cell (grid index 64·(d0 + r)).

@@ -627,11 +627,29 @@ impl<const N: usize> SeparableTable<N> {
     /// t.footprint([-3.6, -3.1], 8, &mut w).unwrap();
     /// assert_eq!(w[5 * 8 + 2], t.weight(-3.6 + 2.0, -3.1 + 5.0));
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        // One weight (a box of radius ½, nearly always): inlined into the caller, without
+        // the general path's setup.
+        if let ([w], 1) = (&mut *out, nx) {
+            *w = self.weight(d0[0], d0[1]);
+            return Ok(());
+        }
+        self.footprint_many(d0, nx, out)
+    }
+
+    /// [`footprint`](Self::footprint) past the one-weight case.
+    #[inline]
+    fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         let ny = check_footprint(nx, out)?;
         if out.len() < SMALL_FOOTPRINT {
-            per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y));
+            per_weight(
+                d0,
+                [nx, ny],
+                out,
+                #[inline(always)]
+                |x, y| self.weight(x, y),
+            );
             return Ok(());
         }
         let g = const { Grid::new(N) };
@@ -832,10 +850,28 @@ impl<const N: usize> Table2d<N> {
     /// t.footprint([-1.5, -1.5], 4, &mut w).unwrap();
     /// assert_eq!(w[4 + 1], t.weight(-0.5, -0.5));
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        // One weight (a box of radius ½, nearly always): inlined into the caller, without
+        // the general path's setup.
+        if let ([w], 1) = (&mut *out, nx) {
+            *w = self.weight(d0[0], d0[1]);
+            return Ok(());
+        }
+        self.footprint_many(d0, nx, out)
+    }
+
+    /// [`footprint`](Self::footprint) past the one-weight case.
+    #[inline]
+    fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         let ny = check_footprint(nx, out)?;
-        per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y));
+        per_weight(
+            d0,
+            [nx, ny],
+            out,
+            #[inline(always)]
+            |x, y| self.weight(x, y),
+        );
         Ok(())
     }
 
@@ -981,7 +1017,7 @@ impl<const N: usize> FilterTable<N> {
     /// t.footprint([-1.7, -1.2], 4, &mut w).unwrap();
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         match self {
             FilterTable::Separable(t) => t.footprint(d0, nx, out),
@@ -1193,12 +1229,29 @@ impl TableView<'_> {
     /// t.view().footprint([-1.7, -1.2], 4, &mut w).unwrap();
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
     /// ```
+    #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        // One weight: inlined into the caller, as the tables do.
+        if let ([w], 1) = (&mut *out, nx) {
+            *w = self.weight(d0[0], d0[1]);
+            return Ok(());
+        }
+        self.footprint_many(d0, nx, out)
+    }
+
+    /// [`footprint`](Self::footprint) past the one-weight case.
+    fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         let ny = check_footprint(nx, out)?;
         let g = self.grid;
         match self.data {
             ViewData::Separable(..) if out.len() < SMALL_FOOTPRINT => {
-                per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y));
+                per_weight(
+                    d0,
+                    [nx, ny],
+                    out,
+                    #[inline(always)]
+                    |x, y| self.weight(x, y),
+                );
             }
             ViewData::Separable(vx, vy) => {
                 let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
