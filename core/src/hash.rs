@@ -175,7 +175,7 @@ pub struct Permutation {
 }
 
 /// Sizes up to this use the packed table.
-const TABLE_MAX: u32 = 16;
+pub(crate) const TABLE_MAX: u32 = 16;
 
 /// A uniformly drawn permutation of `0..n` (`n ≤ 16`), packed in nibbles, from the 64-bit
 /// fraction `r`.
@@ -260,6 +260,26 @@ fn small_permutation(n: u32, r: u64) -> u64 {
     SMALL_PERMUTATIONS[(SMALL_START[n] + rank) & 31]
 }
 
+/// A uniformly drawn permutation of `0..n` (`1 ≤ n ≤ 16`; larger `n` are taken as 16) packed in
+/// nibbles, entry `i` in bits `4i .. 4i + 4`, from the 64-bit fraction `r` (a hash: its high
+/// bits choose). What [`Permutation::new`] stores for `n ≤ 16` after mixing its seed; samplers
+/// that already hold a mixed key call it directly.
+#[inline]
+pub(crate) fn packed_table(n: u32, r: u64) -> u64 {
+    let n = n.min(TABLE_MAX);
+    if n as usize <= SMALL_MAX {
+        small_permutation(n, r)
+    } else {
+        packed_permutation(n, r)
+    }
+}
+
+/// Entry `i` of a [`packed_table`] (`i < 16`; the table's own `n` is not checked).
+#[inline(always)]
+pub(crate) fn packed_entry(table: u64, i: u32) -> u32 {
+    ((table >> (4 * (i & 15))) & 0xf) as u32
+}
+
 impl Permutation {
     /// The permutation of `0..n` for `seed`.
     ///
@@ -280,14 +300,7 @@ impl Permutation {
                 key: 0,
                 key2: 0,
                 offset: 0,
-                table: {
-                    let r = mix64(u64::from(seed) ^ 0x243f_6a88_85a3_08d3);
-                    if n as usize <= SMALL_MAX {
-                        small_permutation(n, r)
-                    } else {
-                        packed_permutation(n, r)
-                    }
-                },
+                table: packed_table(n, mix64(u64::from(seed) ^ 0x243f_6a88_85a3_08d3)),
             };
         }
         let mask = u32::MAX >> (n - 1).leading_zeros();

@@ -243,6 +243,41 @@ fn stratified_arrays_are_latin_hypercubes_of_any_size() {
     }
 }
 
+/// The strata orders of 4-point arrays, over many samples: every one of the 4! orders appears
+/// on each axis, about equally often, and the two axes are drawn independently (nearly all of
+/// the 24² joint orders appear).
+#[test]
+fn stratified_array_orders_are_uniform_and_independent_per_axis() {
+    let mut s = StratifiedSampler::new(4, 4, Jitter::Jittered, 3).unwrap();
+    let order = |a: &[f32], axis: usize| -> u32 {
+        (0..4).fold(0, |acc, j| acc * 4 + (a[2 * j + axis] * 4.0) as u32)
+    };
+    let mut x_count = std::collections::BTreeMap::new();
+    let mut joint = std::collections::BTreeSet::new();
+    let mut draws = 0;
+    for y in 0..24u32 {
+        for x in 0..24u32 {
+            for i in 0..16 {
+                s.start_pixel_sample([x, y], i, 5);
+                let mut a = [0.0f32; 8];
+                s.get_array_2d(&mut a);
+                *x_count.entry(order(&a, 0)).or_insert(0u32) += 1;
+                joint.insert((order(&a, 0), order(&a, 1)));
+                draws += 1;
+            }
+        }
+    }
+    assert_eq!(x_count.len(), 24);
+    let expected = draws as f64 / 24.0;
+    for (&o, &c) in &x_count {
+        assert!(
+            (f64::from(c) - expected).abs() < 0.2 * expected,
+            "order {o}: {c} of {draws}"
+        );
+    }
+    assert!(joint.len() >= 570, "{} joint orders of 576", joint.len());
+}
+
 #[test]
 fn uniform_is_cell_centres() {
     let mut s = StratifiedSampler::uniform(4, 2, 0).unwrap();
