@@ -346,42 +346,11 @@ mod tests {
         assert!(s.sequence_index([16383, 16383], u32::MAX) > u64::from(u32::MAX));
     }
 
-    /// The array overrides give the default's values (one dimension per value, pairs for 2D),
-    /// bit for bit, also across the wrap at dimension 1024 into the axis dimensions 0 and 1,
-    /// and leave the cursor where the default does.
     #[test]
     fn halton_arrays_equal_values_taken_one_at_a_time() {
         for scramble in [HaltonScramble::None, HaltonScramble::PermuteDigits] {
-            let mut s = HaltonSampler::new([640, 480], 16, scramble, 9).unwrap();
-            for (pixel, index) in [([3u32, 7u32], 5u32), ([639, 479], 15), ([0, 0], 0)] {
-                for start in [0u32, 2, 5, 1017, 1021, 1023, u32::MAX - 2] {
-                    for len in [0usize, 1, 3, 8, 9] {
-                        let mut batch = std::vec![-1.0f32; len];
-                        s.start_pixel_sample(pixel, index, start);
-                        s.get_array_1d(&mut batch);
-                        let after = s.get_1d();
-                        let mut one = std::vec![-1.0f32; len];
-                        s.start_pixel_sample(pixel, index, start);
-                        for x in &mut one {
-                            *x = s.get_1d();
-                        }
-                        assert_eq!(batch, one, "1d {scramble:?} {pixel:?} {start} {len}");
-                        assert_eq!(after.to_bits(), s.get_1d().to_bits());
-
-                        let mut batch = std::vec![-1.0f32; len];
-                        s.start_pixel_sample(pixel, index, start);
-                        s.get_array_2d(&mut batch);
-                        let after = s.get_1d();
-                        let mut one = std::vec![-1.0f32; len];
-                        s.start_pixel_sample(pixel, index, start);
-                        for p in one.chunks_exact_mut(2) {
-                            p.copy_from_slice(&s.get_2d());
-                        }
-                        assert_eq!(batch, one, "2d {scramble:?} {pixel:?} {start} {len}");
-                        assert_eq!(after.to_bits(), s.get_1d().to_bits());
-                    }
-                }
-            }
+            let s = HaltonSampler::new([640, 480], 16, scramble, 9).unwrap();
+            crate::sampler::tests::arrays_are_values_in_order(&s);
         }
     }
 

@@ -3,7 +3,7 @@
 use super::Sampler;
 use crate::Error;
 use crate::hash::hash2;
-use crate::sequence::sobol_u32;
+use crate::sequence::{sobol_run_f32, sobol_u32};
 
 /// Number of Sobol dimensions ([`crate::sequence::Sobol`]); higher dimensions wrap.
 const DIMS: u32 = 1024;
@@ -236,6 +236,24 @@ impl SobolSampler {
         }
         (v >> 8) as f32 * (1.0 / 16_777_216.0)
     }
+
+    /// Dimensions `dim, dim + 1, …` into `out`, as `sample` gives them one at a time; a run of
+    /// dimensions 2 and up with cached scrambles and byte tables goes through one loop.
+    #[inline]
+    fn run(&self, dim: u32, out: &mut [f32]) {
+        let d = (dim % DIMS) as usize;
+        if d >= 2
+            && let Some(shifts) = self.scrambles.get(d - 2..)
+            && sobol_run_f32(self.index, d, shifts, out).is_some()
+        {
+            return;
+        }
+        let mut k = dim;
+        for x in out {
+            *x = self.sample(k);
+            k = k.wrapping_add(1);
+        }
+    }
 }
 
 /// Number of dimensions (from 2 on) whose scramble the sampler caches.
@@ -293,6 +311,22 @@ impl Sampler for SobolSampler {
     }
 
     super::global_point_dimensions!();
+
+    /// One dimension per value, as the default, in one run.
+    fn get_array_1d(&mut self, out: &mut [f32]) {
+        let dim = self.dim;
+        self.dim = dim.wrapping_add(out.len() as u32);
+        self.run(dim, out);
+    }
+
+    /// Two dimensions per point, as the default, in one run; an odd last value is left
+    /// untouched.
+    fn get_array_2d(&mut self, out: &mut [f32]) {
+        let n = out.len() & !1;
+        let dim = self.dim;
+        self.dim = dim.wrapping_add(n as u32);
+        self.run(dim, &mut out[..n]);
+    }
 }
 
 #[cfg(test)]
@@ -316,6 +350,14 @@ mod tests {
                     assert_eq!(s.index, s.sequence_index(pixel, i), "{pixel:?} {i}");
                 }
             }
+        }
+    }
+
+    #[test]
+    fn sobol_arrays_equal_values_taken_one_at_a_time() {
+        for seed in [0, 9] {
+            let s = SobolSampler::new([640, 480], 16, seed).unwrap();
+            crate::sampler::tests::arrays_are_values_in_order(&s);
         }
     }
 

@@ -343,3 +343,40 @@ mod properties {
         }
     }
 }
+
+/// For samplers whose arrays take one dimension per value (the global samplers): an array
+/// override gives, bit for bit, the values `get_1d` / `get_2d` give one at a time, from any
+/// starting dimension (including the wrap at 1024 into the pixel dimensions 0 and 1), and
+/// leaves the cursor where they do. An odd last value of a 2D array is left untouched.
+pub(crate) fn arrays_are_values_in_order<S: Sampler + Clone>(s0: &S) {
+    let mut s = s0.clone();
+    for (pixel, index) in [([3u32, 7u32], 5u32), ([639, 479], 15), ([0, 0], 0)] {
+        for start in [0u32, 2, 5, 30, 60, 1017, 1021, 1023, u32::MAX - 2] {
+            for len in [0usize, 1, 3, 8, 9, 40] {
+                let mut batch = std::vec![-1.0f32; len];
+                s.start_pixel_sample(pixel, index, start);
+                s.get_array_1d(&mut batch);
+                let after = s.get_1d();
+                let mut one = std::vec![-1.0f32; len];
+                s.start_pixel_sample(pixel, index, start);
+                for x in &mut one {
+                    *x = s.get_1d();
+                }
+                assert_eq!(batch, one, "1d {pixel:?} {start} {len}");
+                assert_eq!(after.to_bits(), s.get_1d().to_bits());
+
+                let mut batch = std::vec![-1.0f32; len];
+                s.start_pixel_sample(pixel, index, start);
+                s.get_array_2d(&mut batch);
+                let after = s.get_1d();
+                let mut one = std::vec![-1.0f32; len];
+                s.start_pixel_sample(pixel, index, start);
+                for p in one.chunks_exact_mut(2) {
+                    p.copy_from_slice(&s.get_2d());
+                }
+                assert_eq!(batch, one, "2d {pixel:?} {start} {len}");
+                assert_eq!(after.to_bits(), s.get_1d().to_bits());
+            }
+        }
+    }
+}
