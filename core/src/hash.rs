@@ -280,6 +280,35 @@ pub(crate) fn packed_entry(table: u64, i: u32) -> u32 {
     ((table >> (4 * (i & 15))) & 0xf) as u32
 }
 
+/// The order of an array's `n` values, drawn from an already mixed 64-bit key: a nibble table
+/// read straight from the key for `n ≤ 16` (the usual array sizes: no set-up beyond one
+/// multiply), else a keyed [`Permutation`] seeded with the key's low 32 bits.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum ArrayOrder {
+    Table(u64),
+    Keyed(Permutation),
+}
+
+impl ArrayOrder {
+    #[inline]
+    pub(crate) fn new(n: u32, key: u64) -> ArrayOrder {
+        if n <= TABLE_MAX {
+            ArrayOrder::Table(packed_table(n, key))
+        } else {
+            ArrayOrder::Keyed(Permutation::new(n, key as u32))
+        }
+    }
+
+    /// Where value `j < n` goes.
+    #[inline(always)]
+    pub(crate) fn apply(&self, j: u32) -> u32 {
+        match self {
+            ArrayOrder::Table(t) => packed_entry(*t, j),
+            ArrayOrder::Keyed(p) => p.apply(j),
+        }
+    }
+}
+
 impl Permutation {
     /// The permutation of `0..n` for `seed`.
     ///

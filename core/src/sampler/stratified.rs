@@ -2,7 +2,7 @@
 
 use super::{CameraSample, Sampler, film, pixel_hash};
 use crate::Error;
-use crate::hash::{Permutation, TABLE_MAX, mix64, packed_entry, packed_table, permute, unit_f32};
+use crate::hash::{ArrayOrder, Permutation, mix64, permute, unit_f32};
 use crate::math::ONE_MINUS_EPSILON;
 
 /// `x ≥ 0` (finite by construction here) kept below 1: one `minss`, no branch.
@@ -235,12 +235,6 @@ fn array_key(sample_key: u64, dim: u32, tag: u64) -> u64 {
     mix64(sample_key ^ u64::from(dim).wrapping_mul(ARRAY_STEP) ^ tag)
 }
 
-/// A Latin hypercube axis: value `j` of `n` is `(π(j) + offset) / n`.
-#[inline]
-fn lhs_value(perm: &Permutation, j: u32, inv_n: f32, offset: f32) -> f32 {
-    below_one((perm.apply(j) as f32 + offset) * inv_n)
-}
-
 /// Two jitters from one hash of `key` and `k` (a sample's dimension, or an array's point).
 #[inline]
 fn jitter_pair(key: u64, k: u32, jitter: Jitter) -> [f32; 2] {
@@ -322,19 +316,11 @@ impl Sampler for StratifiedSampler {
         self.dim = self.dim.wrapping_add(1);
         let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
         let key = array_key(self.sample_key, dim, 0x6c68_7331);
-        let inv_n = 1.0 / n as f32;
-        if n <= TABLE_MAX {
-            // Up to 16 values: the permutation is a nibble table drawn from the key itself.
-            let t = packed_table(n, key);
-            for (j, x) in (0..n).zip(out) {
-                let [o, _] = jitter_pair(key, j, self.jitter);
-                *x = below_one((packed_entry(t, j) as f32 + o) * inv_n);
-            }
-            return;
-        }
-        let perm = Permutation::new(n, key as u32);
+        let (order, inv_n) = (ArrayOrder::new(n, key), 1.0 / n as f32);
         for (j, x) in (0..n).zip(out) {
-            *x = lhs_value(&perm, j, inv_n, jitter_pair(key, j, self.jitter)[0]);
+            let [o, _] = jitter_pair(key, j, self.jitter);
+            // A Latin hypercube axis: value `j` of `n` is `(π(j) + jitter) / n`.
+            *x = below_one((order.apply(j) as f32 + o) * inv_n);
         }
     }
 
@@ -345,24 +331,17 @@ impl Sampler for StratifiedSampler {
         // One hash per array: its halves seed the two axis permutations, and the jitters hash
         // it with the point index.
         let key = array_key(self.sample_key, dim, 0x6c68_7332);
+        // The key's two halves order the two axes (each in the high bits, where a table
+        // draw reads; a large array seeds its permutations with the low bits).
+        let (px, py) = (
+            ArrayOrder::new(n, key),
+            ArrayOrder::new(n, key.rotate_left(32)),
+        );
         let inv_n = 1.0 / n as f32;
-        if n <= TABLE_MAX {
-            // Up to 16 points: nibble tables drawn from the key's two halves (each in the high
-            // bits, where the draw reads).
-            let (tx, ty) = (packed_table(n, key), packed_table(n, key.rotate_left(32)));
-            for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
-                let [ox, oy] = jitter_pair(key, j, self.jitter);
-                p[0] = below_one((packed_entry(tx, j) as f32 + ox) * inv_n);
-                p[1] = below_one((packed_entry(ty, j) as f32 + oy) * inv_n);
-            }
-            return;
-        }
-        let px = Permutation::new(n, key as u32);
-        let py = Permutation::new(n, (key >> 32) as u32);
         for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
             let [ox, oy] = jitter_pair(key, j, self.jitter);
-            p[0] = lhs_value(&px, j, inv_n, ox);
-            p[1] = lhs_value(&py, j, inv_n, oy);
+            p[0] = below_one((px.apply(j) as f32 + ox) * inv_n);
+            p[1] = below_one((py.apply(j) as f32 + oy) * inv_n);
         }
     }
 }

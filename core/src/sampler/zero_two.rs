@@ -2,7 +2,7 @@
 
 use super::{Sampler, pixel_hash};
 use crate::Error;
-use crate::hash::{Permutation, mix64};
+use crate::hash::{ArrayOrder, Permutation, mix64};
 use crate::sequence::ZeroTwo;
 
 /// Splits a 64-bit hash into the two 32-bit XOR scrambles of a [`ZeroTwo`].
@@ -219,9 +219,9 @@ impl Sampler for ZeroTwoSampler {
         let h = self.array_key(d, 0x6131);
         let n = u32::try_from(out.len()).unwrap_or(u32::MAX);
         let z = ZeroTwo::new(scrambles(mix64(h ^ 1)));
-        let perm = Permutation::new(n, fold(h));
+        let order = ArrayOrder::new(n, h);
         for (j, x) in (0..n).zip(out) {
-            *x = z.sample_2d(perm.apply(j))[0];
+            *x = z.sample_2d(order.apply(j))[0];
         }
     }
 
@@ -231,9 +231,9 @@ impl Sampler for ZeroTwoSampler {
         let h = self.array_key(d, 0x6132);
         let n = u32::try_from(out.len() / 2).unwrap_or(u32::MAX);
         let z = ZeroTwo::new(scrambles(mix64(h ^ 2)));
-        let perm = Permutation::new(n, fold(h));
+        let order = ArrayOrder::new(n, h);
         for (j, p) in (0..n).zip(out.chunks_exact_mut(2)) {
-            let [u, v] = z.sample_2d(perm.apply(j));
+            let [u, v] = z.sample_2d(order.apply(j));
             p[0] = u;
             p[1] = v;
         }
