@@ -152,11 +152,15 @@ impl PhaseAxis {
     /// The weight at offset `d`: tap `⌊d + r⌋` at phase `frac(d + r)`, 0 past the radius. The
     /// grid index `64·(d + r)` splits into phase (low 6 bits) and tap (the rest), found by the
     /// rounding trick of [`cell`](Self::cell); at a phase of 1 it reads tap `k + 1`'s row 0,
-    /// which holds the same value as tap `k`'s row 64.
+    /// which holds the same value as tap `k`'s row 64. A constant axis (a box) answers its
+    /// value, exactly, with no lookup (the interpolation `(1 − t)·c + t·c` can round off `c`).
     #[inline(always)]
     fn weight(&self, d: f32) -> f32 {
         const CELLS: usize = MAX_TAPS * PHASES;
         let inside = d.abs() <= self.radius;
+        if let Some(c) = self.constant {
+            return c * mask(inside);
+        }
         let u = ((d + self.radius) * PHASES as f32)
             .max(0.0)
             .min(CELLS as f32);
@@ -293,7 +297,7 @@ impl PhaseTable {
     /// assert_eq!(t.weight_1d(Axis::X, 0.5), 1.0);
     /// assert_eq!(t.weight_1d(Axis::X, 0.51), 0.0);
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> f32 {
         self.axes[axis.index()].weight(d)
     }
@@ -307,7 +311,7 @@ impl PhaseTable {
     /// assert!((t.weight(0.3, -1.1) - g.eval(0.3, -1.1)).abs() < 1e-3);
     /// assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         self.weight_1d(Axis::X, dx) * self.weight_1d(Axis::Y, dy)
     }
