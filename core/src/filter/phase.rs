@@ -334,10 +334,7 @@ impl PhaseTable {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        // One weight (a box of radius ½, nearly always): inlined into the caller, without
-        // the general path's setup.
-        if let ([w], 1) = (&mut *out, nx) {
-            *w = self.weight(d0[0], d0[1]);
+        if super::table::one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
             return Ok(());
         }
         self.footprint_many(d0, nx, out)
@@ -347,11 +344,6 @@ impl PhaseTable {
     #[inline]
     fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         super::table::check_footprint(nx, out)?;
-        if let [w] = out {
-            // One weight: the single lookup reads the same cell (grid index 64·(d0 + r)).
-            *w = self.weight(d0[0], d0[1]);
-            return Ok(());
-        }
         let mut fx = [0.0f32; MAX_TAPS];
         let mut fy = [0.0f32; MAX_TAPS];
         let kx = self.axes[0].factors(d0[0], &mut fx);

@@ -398,6 +398,24 @@ pub(super) fn narrow_outer_product(fx: &[f32; 4], fy: &[f32], nx: usize, out: &m
 /// (eight lookups at least) costs more than it saves.
 const SMALL_FOOTPRINT: usize = 4;
 
+/// The one-weight footprint (`nx == 1`, one entry: a box of radius ½, nearly always), which
+/// every table's `footprint` answers with a single `weight(d0)` inlined into the caller, ahead of
+/// its general path and that path's set-up: `true` when `out` was that footprint and is filled.
+/// Every other valid footprint has more than one weight (`check_footprint`).
+#[inline(always)]
+pub(super) fn one_weight(
+    d0: [f32; 2],
+    nx: usize,
+    out: &mut [f32],
+    weight: impl FnOnce(f32, f32) -> f32,
+) -> bool {
+    if let ([w], 1) = (out, nx) {
+        *w = weight(d0[0], d0[1]);
+        return true;
+    }
+    false
+}
+
 /// `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`, one lookup per weight (2D tables and tiny
 /// footprints). Offsets counted in floats as in [`factors_into`].
 #[inline(always)]
@@ -407,11 +425,6 @@ fn per_weight(
     out: &mut [f32],
     weight: impl Fn(f32, f32) -> f32,
 ) {
-    if let [w] = out {
-        // One pixel (a box of radius ½, nearly always): no loops.
-        *w = weight(d0[0], d0[1]);
-        return;
-    }
     let mut j = 0.0f32;
     for r in 0..ny {
         let Some(row) = out.get_mut(r * nx..(r + 1) * nx) else {
@@ -629,10 +642,7 @@ impl<const N: usize> SeparableTable<N> {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        // One weight (a box of radius ½, nearly always): inlined into the caller, without
-        // the general path's setup.
-        if let ([w], 1) = (&mut *out, nx) {
-            *w = self.weight(d0[0], d0[1]);
+        if one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
             return Ok(());
         }
         self.footprint_many(d0, nx, out)
@@ -852,10 +862,7 @@ impl<const N: usize> Table2d<N> {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        // One weight (a box of radius ½, nearly always): inlined into the caller, without
-        // the general path's setup.
-        if let ([w], 1) = (&mut *out, nx) {
-            *w = self.weight(d0[0], d0[1]);
+        if one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
             return Ok(());
         }
         self.footprint_many(d0, nx, out)
@@ -1231,9 +1238,7 @@ impl TableView<'_> {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        // One weight: inlined into the caller, as the tables do.
-        if let ([w], 1) = (&mut *out, nx) {
-            *w = self.weight(d0[0], d0[1]);
+        if one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
             return Ok(());
         }
         self.footprint_many(d0, nx, out)
