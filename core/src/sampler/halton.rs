@@ -197,22 +197,19 @@ impl HaltonSampler {
         }
     }
 
-    /// Dimensions `dim, dim + 1, …` into `out`, as `sample` gives them one at a time. A run of
-    /// plain radical inverses of `index` (no scrambling, clear of dimensions 0 and 1, which
-    /// read the axis indices, also after wrapping) goes through the batch that finds the
-    /// index's class once.
+    /// Dimensions `dim, dim + 1, …` into `out` as `sample` gives them, when they are a run of
+    /// plain radical inverses of `index` (no scrambling, clear of dimensions 0 and 1, which read
+    /// the axis indices, also after wrapping): one batch that finds the index's class once.
+    /// `false`, with nothing written, otherwise.
     #[inline]
-    fn run(&self, dim: u32, out: &mut [f32]) {
+    fn batch(&self, dim: u32, out: &mut [f32]) -> bool {
         let d = dim % 1024;
-        if self.scramble == HaltonScramble::None && d >= 2 && d as usize + out.len() <= 1024 {
+        let fits =
+            self.scramble == HaltonScramble::None && d >= 2 && d as usize + out.len() <= 1024;
+        if fits {
             radical_inverse_dims(d, self.index, out);
-        } else {
-            let mut k = dim;
-            for x in out {
-                *x = self.sample(k);
-                k = k.wrapping_add(1);
-            }
         }
+        fits
     }
 }
 
@@ -248,7 +245,9 @@ impl Sampler for HaltonSampler {
         self.start_pixel_sample(pixel, sample_index, 0);
         let p = [self.sample(0), self.sample(1)];
         let mut v = [0.0f32; 3];
-        self.run(2, &mut v);
+        if !self.batch(2, &mut v) {
+            v = [self.sample(2), self.sample(3), self.sample(4)];
+        }
         self.dim = 5;
         CameraSample {
             p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
@@ -257,21 +256,7 @@ impl Sampler for HaltonSampler {
         }
     }
 
-    /// One dimension per value, as the default, in one batch.
-    fn get_array_1d(&mut self, out: &mut [f32]) {
-        let dim = self.dim;
-        self.dim = dim.wrapping_add(out.len() as u32);
-        self.run(dim, out);
-    }
-
-    /// Two dimensions per point, as the default, in one batch; an odd last value is left
-    /// untouched.
-    fn get_array_2d(&mut self, out: &mut [f32]) {
-        let n = out.len() & !1;
-        let dim = self.dim;
-        self.dim = dim.wrapping_add(n as u32);
-        self.run(dim, &mut out[..n]);
-    }
+    super::global_point_arrays!();
 }
 
 #[cfg(test)]

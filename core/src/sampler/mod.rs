@@ -54,6 +54,43 @@ macro_rules! global_point_dimensions {
 }
 pub(crate) use global_point_dimensions;
 
+/// `get_array_1d` and `get_array_2d` for the global samplers, whose arrays take one dimension
+/// per value as the defaults do (pairs for 2D; an odd last value is left untouched): a run of
+/// dimensions goes to the sampler's `self.batch(first_dim, out)`, and where that declines
+/// (returns `false`) to `self.sample(d)` one value at a time.
+macro_rules! global_point_arrays {
+    () => {
+        fn get_array_1d(&mut self, out: &mut [f32]) {
+            let dim = self.dim;
+            self.dim = dim.wrapping_add(out.len() as u32);
+            if !self.batch(dim, out) {
+                super::values_one_at_a_time(dim, out, |d| self.sample(d));
+            }
+        }
+
+        fn get_array_2d(&mut self, out: &mut [f32]) {
+            let n = out.len() & !1;
+            let dim = self.dim;
+            self.dim = dim.wrapping_add(n as u32);
+            let out = &mut out[..n];
+            if !self.batch(dim, out) {
+                super::values_one_at_a_time(dim, out, |d| self.sample(d));
+            }
+        }
+    };
+}
+pub(crate) use global_point_arrays;
+
+/// `out[i] = sample(dim + i)`, the dimension wrapping at `u32::MAX` as the cursor does.
+#[inline]
+fn values_one_at_a_time(dim: u32, out: &mut [f32], sample: impl Fn(u32) -> f32) {
+    let mut d = dim;
+    for x in out {
+        *x = sample(d);
+        d = d.wrapping_add(1);
+    }
+}
+
 mod adaptive;
 pub mod best_candidate;
 mod halton;

@@ -237,22 +237,18 @@ impl SobolSampler {
         (v >> 8) as f32 * (1.0 / 16_777_216.0)
     }
 
-    /// Dimensions `dim, dim + 1, …` into `out`, as `sample` gives them one at a time; a run of
-    /// dimensions 2 and up with cached scrambles and byte tables goes through one loop.
+    /// Dimensions `dim, dim + 1, …` into `out` as `sample` gives them, when they are a run of
+    /// dimensions 2 and up with cached scrambles and byte tables: one loop. `false`, with nothing
+    /// written, otherwise.
     #[inline]
-    fn run(&self, dim: u32, out: &mut [f32]) {
+    fn batch(&self, dim: u32, out: &mut [f32]) -> bool {
         let d = (dim % DIMS) as usize;
-        if d >= 2
-            && let Some(shifts) = self.scrambles.get(d - 2..)
-            && sobol_run_f32(self.index, d, shifts, out).is_some()
-        {
-            return;
-        }
-        let mut k = dim;
-        for x in out {
-            *x = self.sample(k);
-            k = k.wrapping_add(1);
-        }
+        d >= 2
+            && self
+                .scrambles
+                .get(d - 2..)
+                .and_then(|shifts| sobol_run_f32(self.index, d, shifts, out))
+                .is_some()
     }
 }
 
@@ -312,21 +308,7 @@ impl Sampler for SobolSampler {
 
     super::global_point_dimensions!();
 
-    /// One dimension per value, as the default, in one run.
-    fn get_array_1d(&mut self, out: &mut [f32]) {
-        let dim = self.dim;
-        self.dim = dim.wrapping_add(out.len() as u32);
-        self.run(dim, out);
-    }
-
-    /// Two dimensions per point, as the default, in one run; an odd last value is left
-    /// untouched.
-    fn get_array_2d(&mut self, out: &mut [f32]) {
-        let n = out.len() & !1;
-        let dim = self.dim;
-        self.dim = dim.wrapping_add(n as u32);
-        self.run(dim, &mut out[..n]);
-    }
+    super::global_point_arrays!();
 }
 
 #[cfg(test)]

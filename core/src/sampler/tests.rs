@@ -349,33 +349,43 @@ mod properties {
 /// starting dimension (including the wrap at 1024 into the pixel dimensions 0 and 1), and
 /// leaves the cursor where they do. An odd last value of a 2D array is left untouched.
 pub(crate) fn arrays_are_values_in_order<S: Sampler + Clone>(s0: &S) {
+    /// A 1D or 2D array: the override, and the same values taken one call at a time.
+    type Fill<S> = fn(&mut S, &mut [f32]);
+    let cases: [(&str, Fill<S>, Fill<S>); 2] = [
+        (
+            "1d",
+            |s, a| s.get_array_1d(a),
+            |s, a| {
+                for x in a {
+                    *x = s.get_1d();
+                }
+            },
+        ),
+        (
+            "2d",
+            |s, a| s.get_array_2d(a),
+            |s, a| {
+                for p in a.chunks_exact_mut(2) {
+                    p.copy_from_slice(&s.get_2d());
+                }
+            },
+        ),
+    ];
     let mut s = s0.clone();
     for (pixel, index) in [([3u32, 7u32], 5u32), ([639, 479], 15), ([0, 0], 0)] {
         for start in [0u32, 2, 5, 30, 60, 1017, 1021, 1023, u32::MAX - 2] {
             for len in [0usize, 1, 3, 8, 9, 40] {
-                let mut batch = std::vec![-1.0f32; len];
-                s.start_pixel_sample(pixel, index, start);
-                s.get_array_1d(&mut batch);
-                let after = s.get_1d();
-                let mut one = std::vec![-1.0f32; len];
-                s.start_pixel_sample(pixel, index, start);
-                for x in &mut one {
-                    *x = s.get_1d();
+                for (what, array, one_at_a_time) in cases {
+                    let mut batch = std::vec![-1.0f32; len];
+                    s.start_pixel_sample(pixel, index, start);
+                    array(&mut s, &mut batch);
+                    let after = s.get_1d();
+                    let mut one = std::vec![-1.0f32; len];
+                    s.start_pixel_sample(pixel, index, start);
+                    one_at_a_time(&mut s, &mut one);
+                    assert_eq!(batch, one, "{what} {pixel:?} {start} {len}");
+                    assert_eq!(after.to_bits(), s.get_1d().to_bits(), "{what} cursor");
                 }
-                assert_eq!(batch, one, "1d {pixel:?} {start} {len}");
-                assert_eq!(after.to_bits(), s.get_1d().to_bits());
-
-                let mut batch = std::vec![-1.0f32; len];
-                s.start_pixel_sample(pixel, index, start);
-                s.get_array_2d(&mut batch);
-                let after = s.get_1d();
-                let mut one = std::vec![-1.0f32; len];
-                s.start_pixel_sample(pixel, index, start);
-                for p in one.chunks_exact_mut(2) {
-                    p.copy_from_slice(&s.get_2d());
-                }
-                assert_eq!(batch, one, "2d {pixel:?} {start} {len}");
-                assert_eq!(after.to_bits(), s.get_1d().to_bits());
             }
         }
     }
