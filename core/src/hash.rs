@@ -372,8 +372,7 @@ impl Permutation {
     pub fn apply(&self, i: u32) -> u32 {
         let (n, mask, half) = (self.n, self.mask, self.half);
         if n <= TABLE_MAX {
-            let i = if i < n { i } else { i % n };
-            return ((self.table >> (4 * i)) & 0xf) as u32;
+            return packed_entry(self.table, if i < n { i } else { i % n });
         }
         let mut x = if i < n { i } else { i % n };
         loop {
