@@ -94,20 +94,24 @@ pub(crate) fn sobol_run_f32(
 ) -> Option<()> {
     let tables = SOBOL_BYTES.get(first..first.checked_add(out.len())?)?;
     let shifts = shifts.get(..out.len())?;
-    let [b0, b1, b2, b3] = index.to_le_bytes();
     for ((x, t), &shift) in out.iter_mut().zip(tables).zip(shifts) {
-        let v = t[0][b0 as usize] ^ t[1][b1 as usize] ^ t[2][b2 as usize] ^ t[3][b3 as usize];
-        *x = to_f32(v ^ shift);
+        *x = to_f32(byte_product(t, index) ^ shift);
     }
     Some(())
+}
+
+/// The generator-matrix product through one dimension's byte tables: four lookups.
+#[inline(always)]
+fn byte_product(t: &[[u32; BYTE_ROW]; 4], index: u32) -> u32 {
+    let [b0, b1, b2, b3] = index.to_le_bytes();
+    t[0][b0 as usize] ^ t[1][b1 as usize] ^ t[2][b2 as usize] ^ t[3][b3 as usize]
 }
 
 /// The product for dimension `dim < SOBOL_DIMS`, through the byte tables where there are some.
 #[inline(always)]
 fn product_dim(dim: usize, index: u32) -> u32 {
     if let Some(t) = SOBOL_BYTES.get(dim) {
-        let [b0, b1, b2, b3] = index.to_le_bytes();
-        t[0][b0 as usize] ^ t[1][b1 as usize] ^ t[2][b2 as usize] ^ t[3][b3 as usize]
+        byte_product(t, index)
     } else {
         product(&SOBOL_MATRICES[dim % SOBOL_DIMS as usize], index)
     }
