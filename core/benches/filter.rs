@@ -6,18 +6,23 @@
 //! The phase table (`PhaseTable`, the film's) runs beside the others in both groups.
 //! Targets: table lookup ≤ 1 ns per weight; direct Mitchell ≤ 5 ns, Lanczos ≤ 20 ns; building
 //! the default Lanczos table ≤ 50 µs. Every figure is per weight (`Throughput::Elements`).
-//! After the run the bench prints the table/direct ratios of each filter from criterion's
-//! estimates of this run (median per weight).
+//! The peer is pbrt-v3 (`pbrt_v3`: its Mitchell and Lanczos through a virtual call, its 16 × 16
+//! table read as `AddSample` reads it), the code the issue's targets are quoted against. After
+//! the run the bench prints the table/direct ratios of each filter and how many times faster
+//! than pbrt-v3 each of ours ran, from criterion's estimates of this run (median per weight).
 mod cpu_time;
+mod estimates;
+mod pbrt_v3;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group};
+use estimates::median_ns;
 use nyquist::filter::{
     Boxcar, Filter, FilterSampler, FilterTable, Gaussian, Interpolation, Lanczos, Mitchell,
     PhaseTable, Triangle,
 };
 use nyquist::rng::{default_rng, uniform_f32};
+use pbrt_v3::{PbrtFilter, PbrtLanczos, PbrtMitchell, PbrtTable};
 use std::hint::black_box;
-use std::path::PathBuf;
 use std::sync::Mutex;
 use std::time::SystemTime;
 
@@ -62,6 +67,15 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
     }
     case!("direct", |x, y| f.eval(x, y));
     case!("direct_dyn", |x, y| dynamic.eval(x, y));
+    // pbrt-v3's Evaluate through its virtual call, where the issue quotes it.
+    let pbrt_filter: Option<Box<dyn PbrtFilter>> = match name {
+        "mitchell" => Some(Box::new(PbrtMitchell::new())),
+        "lanczos" => Some(Box::new(PbrtLanczos::new())),
+        _ => None,
+    };
+    if let Some(pf) = &pbrt_filter {
+        case!("pbrt_v3_dyn", |x, y| pf.evaluate([x, y]));
+    }
     case!("table_linear", |x, y| linear.weight(x, y));
     case!("table_nearest", |x, y| nearest.weight(x, y));
     case!("table_view_linear", |x, y| view.weight(x, y));
@@ -126,6 +140,16 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
     footprint!("table_nearest", nearest);
     footprint!("table_view_linear", view);
     footprint!("phase", phase);
+    // pbrt-v3's AddSample pattern: a column and a row index, then one read per pixel.
+    let pbrt_table = PbrtTable::new(dynamic);
+    g.bench_function("pbrt_v3_table", |b| {
+        b.iter(|| {
+            for &d0 in black_box(&d0s) {
+                pbrt_table.footprint(d0, nx, &mut buf);
+                black_box(&buf);
+            }
+        })
+    });
     g.finish();
 }
 
@@ -189,36 +213,6 @@ criterion_group! {
     targets = weights, build, sampling
 }
 
-/// Where criterion writes its estimates: `$CRITERION_HOME`, else `$CARGO_TARGET_DIR/criterion`,
-/// else the workspace's `target/criterion` (benches run in the package directory).
-fn criterion_dir() -> PathBuf {
-    if let Some(home) = std::env::var_os("CRITERION_HOME") {
-        return home.into();
-    }
-    match std::env::var_os("CARGO_TARGET_DIR") {
-        Some(t) => PathBuf::from(t).join("criterion"),
-        None => PathBuf::from("../target/criterion"),
-    }
-}
-
-/// The median time per iteration (ns) of `group/function` if this run measured it.
-fn median_ns(group: &str, function: &str, since: SystemTime) -> Option<f64> {
-    // Criterion stores a group `a/b` in the directory `a_b`.
-    let dir = criterion_dir()
-        .join(group.replace('/', "_"))
-        .join(function)
-        .join("new");
-    let path = dir.join("estimates.json");
-    if std::fs::metadata(&path).ok()?.modified().ok()? < since {
-        return None;
-    }
-    let text = std::fs::read_to_string(&path).ok()?;
-    let rest = &text[text.find("\"median\"")?..];
-    let rest = &rest[rest.find("\"point_estimate\":")? + "\"point_estimate\":".len()..];
-    let end = rest.find([',', '}'])?;
-    rest[..end].trim().parse().ok()
-}
-
 /// Prints per-weight medians and table/direct ratios for every filter this run measured.
 fn report(since: SystemTime) {
     let mut lines = Vec::new();
@@ -238,6 +232,7 @@ fn report(since: SystemTime) {
             ("batch nearest", &w, "table_batch_nearest"),
             ("batch linear", &w, "table_batch_linear"),
             ("phase", &w, "phase"),
+            ("pbrt-v3 dyn", &w, "pbrt_v3_dyn"),
         ] {
             if let Some(t) = per(group, id) {
                 let ratio = t / direct;
@@ -260,6 +255,18 @@ fn report(since: SystemTime) {
         }
         if let (Some(d), Some(p)) = (per(fp, "direct"), per(fp, "phase")) {
             line += &format!(", phase {:.2} ns ×{:.2}", p / n, p / d);
+        }
+        // Ours against pbrt-v3's lookups in the same run: how many times faster.
+        if let Some(peer) = per(fp, "pbrt_v3_table") {
+            line += &format!(" | pbrt-v3 table {:.2} ns; faster ×", peer / n);
+            for id in ["table_nearest", "table_linear", "phase"] {
+                if let Some(t) = per(fp, id) {
+                    line += &format!(" {id} {:.2}", peer / t);
+                }
+            }
+        }
+        if let (Some(peer), Some(d)) = (per(&w, "pbrt_v3_dyn"), per(&w, "direct")) {
+            line += &format!(" | direct faster than pbrt-v3's ×{:.2}", peer / d);
         }
         lines.push(line);
     }

@@ -3,6 +3,10 @@
 //! r = 2 and box r = ½, 4096 samples per iteration over a 64 × 64 tile; and the parallel render
 //! of a 1024 × 1024 zone plate at 16 spp on 1 and 2 threads.
 //!
+//! Beside both runs the peer the issue quotes, pbrt-v3's `FilmTile::AddSample` (re-implemented in
+//! `core/benches/pbrt_v3`, `f32` sums and its 16 × 16 table); after the run the bench prints the
+//! per-sample medians and the ratios.
+//!
 //! `add_sample` runs twice: `add_sample` in wall-clock time (criterion's default) and
 //! `add_sample_cpu` in the thread's CPU time (`CLOCK_THREAD_CPUTIME_ID`), which other processes
 //! on a shared machine do not inflate. Per-sample time = reported time / 4096 (throughput line).
@@ -10,9 +14,15 @@
 /// The core benches' clock (thread CPU time unless `NYQUIST_BENCH_CLOCK=wall`), shared.
 #[path = "../../core/benches/cpu_time/mod.rs"]
 mod cpu_time;
+/// This run's medians, for the closing ratio report (shared with the core benches).
+#[path = "../../core/benches/estimates/mod.rs"]
+mod estimates;
+/// The peer: pbrt-v3's `FilmTile::AddSample`, re-implemented (shared with the filter bench).
+#[path = "../../core/benches/pbrt_v3/mod.rs"]
+mod pbrt_v3;
 
 use criterion::measurement::Measurement;
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use criterion::{Criterion, Throughput, criterion_group};
 use nyquist::filter::{Boxcar, Filter, Mitchell};
 use nyquist_film::{Film, FilmConfig, render_tiles};
 use std::hint::black_box;
@@ -57,6 +67,23 @@ fn add_sample_group<M: Measurement>(c: &mut Criterion<M>, group_name: &str) {
             b.iter(|| {
                 for &p in &pos {
                     tile.add_sample_direct(filter, black_box(p), [0.5, 0.25, 1.0], 1.0);
+                }
+            })
+        });
+        // pbrt-v3's tile over the same pixels: the 64 × 64 tile grown by r + ½, as
+        // `Film::GetFilmTile` grows it.
+        let [rx, ry] = filter.radius();
+        let grown = [
+            (-0.5 - rx).ceil() as i32,
+            (-0.5 - ry).ceil() as i32,
+            (63.5 + rx).floor() as i32 + 1,
+            (63.5 + ry).floor() as i32 + 1,
+        ];
+        let mut peer = pbrt_v3::PbrtTile::new(filter, grown);
+        group.bench_function(format!("{name}/pbrt_v3"), |b| {
+            b.iter(|| {
+                for &p in &pos {
+                    peer.add_sample(black_box(p), [0.5, 0.25, 1.0], 1.0);
                 }
             })
         });
@@ -120,4 +147,41 @@ criterion_group! {
     config = cpu_time::config();
     targets = add_sample_cpu
 }
-criterion_main!(wall, cpu);
+/// Per-sample medians of this run and the ratios: table against direct evaluation, and how
+/// many times faster than pbrt-v3's `AddSample` ours ran.
+fn report(since: std::time::SystemTime) {
+    let mut lines = Vec::new();
+    for group in ["add_sample", "add_sample_cpu"] {
+        for name in ["mitchell_r2", "box_r0.5"] {
+            let per = |id: &str| {
+                estimates::median_ns(group, &format!("{name}/{id}"), since)
+                    .map(|t| t / SAMPLES as f64)
+            };
+            let Some(table) = per("table") else {
+                continue;
+            };
+            let mut line = format!("{group:15} {name:12} table {table:6.2} ns");
+            if let Some(d) = per("direct") {
+                line += &format!(" | direct {d:6.2} ns (table ×{:.2} faster)", d / table);
+            }
+            if let Some(p) = per("pbrt_v3") {
+                line += &format!(" | pbrt-v3 {p:6.2} ns (table ×{:.2} faster)", p / table);
+            }
+            lines.push(line);
+        }
+    }
+    if !lines.is_empty() {
+        println!("\nper sample (median), this run:");
+        for l in lines {
+            println!("{l}");
+        }
+    }
+}
+
+fn main() {
+    let since = std::time::SystemTime::now();
+    wall();
+    cpu();
+    Criterion::default().configure_from_args().final_summary();
+    report(since);
+}
