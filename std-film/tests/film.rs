@@ -1,6 +1,6 @@
 //! Film conservation laws, determinism across threads and schedules, and bad samples.
 
-use nyquist::filter::{Boxcar, Filter, Gaussian, Lanczos, Mitchell, Triangle};
+use nyquist::filter::{Axis, Boxcar, Filter, Gaussian, Lanczos, Mitchell, Triangle};
 use nyquist_film::{
     Bounds, Film, FilmConfig, FilmTile, TileContext, render_tiles, write_image_file,
 };
@@ -497,6 +497,104 @@ fn merging_a_tile_of_another_film_is_an_error() {
     small.merge(small.tile(small.tiles(4).unwrap()[0])).unwrap();
 }
 
+/// Filters whose phase tables take the 4 × 4 path: the defaults with radius 2, others with
+/// 4 or 5 taps per axis, and one heavy at its edge (a 5-pixel footprint's last pixel weighs
+/// f(r) ≠ 0, so taking a 5-pixel footprint as 4 × 4 would lose it).
+fn block4_filters() -> [Box<dyn Filter>; 7] {
+    [
+        Box::new(Mitchell::default()),
+        Box::new(Triangle::default()),
+        Box::new(Gaussian::default()),
+        Box::new(Mitchell::new([1.5, 2.4], 0.3, 0.35).unwrap()),
+        Box::new(Triangle::new([1.7, 2.0]).unwrap()),
+        Box::new(Gaussian::new([2.2, 1.6], 0.6).unwrap()),
+        Box::new(EdgeHeavy),
+    ]
+}
+
+/// Adds `samples` `(x, y, red, weight)` to a tile of a 10 × 9 film with `f` through
+/// `add_sample` twice: once as is (the 4 × 4 path where it applies) and once with a clamp that
+/// never bites (`max_component = f32::MAX`), which forces the general path. The first
+/// difference in counters or in any pixel's bits, if any.
+fn block4_mismatch(
+    f: &dyn Filter,
+    bounds: Bounds,
+    samples: &[(f32, f32, f32, f32)],
+) -> Option<String> {
+    let general_cfg = FilmConfig {
+        max_component: Some(f32::MAX),
+        ..FilmConfig::new(10, 9)
+    };
+    let mut a = Film::new(FilmConfig::new(10, 9), f).unwrap();
+    let mut b = Film::new(general_cfg, f).unwrap();
+    let spec = nyquist_film::TileSpec { index: 0, bounds };
+    let (mut ta, mut tb) = (a.tile(spec), b.tile(spec));
+    for &(x, y, l, wt) in samples {
+        ta.add_sample([x, y], [l, 0.5, 2.0], wt);
+        tb.add_sample([x, y], [l, 0.5, 2.0], wt);
+    }
+    if ta.stats() != tb.stats() {
+        return Some(format!("stats {:?} != {:?}", ta.stats(), tb.stats()));
+    }
+    a.merge(ta).unwrap();
+    b.merge(tb).unwrap();
+    for y in 0..9 {
+        for x in 0..10 {
+            let (pa, pb) = (a.pixel(x, y).unwrap(), b.pixel(x, y).unwrap());
+            let bits = |p: nyquist_film::Pixel| {
+                p.rgb_sum
+                    .map(f64::to_bits)
+                    .into_iter()
+                    .chain([p.weight_sum.to_bits()])
+                    .collect::<Vec<_>>()
+            };
+            if bits(pa) != bits(pb) {
+                return Some(format!("pixel ({x}, {y}): {pa:?} != {pb:?}"));
+            }
+        }
+    }
+    None
+}
+
+/// The 4 × 4 path against the general path at every position of an eighth-pixel grid over
+/// the whole film and its border: every phase-0 footprint (5 pixels along an axis with 5 taps)
+/// and every 4-or-3 boundary of a 4-tap axis is among them.
+#[test]
+fn block4_path_matches_the_general_path_on_an_eighth_pixel_grid() {
+    let samples: Vec<_> = (-24..96)
+        .flat_map(|ky| (-24..104).map(move |kx| (kx as f32 / 8.0, ky as f32 / 8.0, 0.75, 1.5)))
+        .collect();
+    for (i, f) in block4_filters().iter().enumerate() {
+        if let Some(m) = block4_mismatch(&**f, Bounds::new(0, 0, 10, 9), &samples) {
+            panic!("filter {i}: {m}");
+        }
+    }
+}
+
+/// A separable plugin filter that is largest at its edge: `1 + |d|/4` inside radius
+/// `[2, 1.75]`.
+struct EdgeHeavy;
+
+impl Filter for EdgeHeavy {
+    fn radius(&self) -> [f32; 2] {
+        [2.0, 1.75]
+    }
+    fn eval(&self, x: f32, y: f32) -> f32 {
+        match (self.eval_1d(Axis::X, x), self.eval_1d(Axis::Y, y)) {
+            (Some(a), Some(b)) => a * b,
+            _ => 0.0,
+        }
+    }
+    fn eval_1d(&self, axis: Axis, d: f32) -> Option<f32> {
+        let r = if axis == Axis::X { 2.0 } else { 1.75 };
+        Some(if d.abs() <= r {
+            1.0 + d.abs() / 4.0
+        } else {
+            0.0
+        })
+    }
+}
+
 proptest! {
     /// Boxes of radius ≤ ½ take `add_sample`'s one-pixel path; everything it declines (pixel
     /// edges, the stored area's border, non-finite input) goes through the footprint. Either
@@ -537,5 +635,30 @@ proptest! {
                 }
             }
         }
+    }
+
+    /// Phase-table filters whose footprints are often 4 × 4 take `add_sample`'s 4 × 4 path;
+    /// what it declines (other widths, the stored area's border, phase 0, non-finite input)
+    /// goes through the footprint. Either way the sums and counters are those of the general
+    /// path, which a clamp that never bites (`max_component = f32::MAX`) forces on the second
+    /// film, bit for bit. Positions on 1/8- and 1/64-pixel lattices hit the table's grid, phase 0
+    /// and the 4-or-5-pixel boundary often.
+    #[test]
+    fn block4_path_matches_the_general_path_bit_for_bit(
+        filter in 0usize..7,
+        x0 in -3i64..10, y0 in -3i64..10, w in 0i64..9, h in 0i64..9,
+        samples in proptest::collection::vec(
+            (
+                prop_oneof![(-24i32..120).prop_map(|k| k as f32 / 8.0), (-200i32..1000).prop_map(|k| k as f32 / 64.0), -3.0f32..15.0, Just(f32::NAN), Just(f32::INFINITY)],
+                prop_oneof![(-24i32..120).prop_map(|k| k as f32 / 8.0), (-200i32..1000).prop_map(|k| k as f32 / 64.0), -3.0f32..15.0, Just(f32::NEG_INFINITY)],
+                prop_oneof![-1e30f32..1e30, Just(f32::NAN), Just(f32::MAX)],
+                prop_oneof![0.0f32..4.0, Just(f32::INFINITY), Just(0.0)],
+            ),
+            0..40,
+        ),
+    ) {
+        let bounds = Bounds::new(x0, y0, x0 + w, y0 + h);
+        let mismatch = block4_mismatch(&*block4_filters()[filter], bounds, &samples);
+        prop_assert_eq!(mismatch, None);
     }
 }

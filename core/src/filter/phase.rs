@@ -139,6 +139,18 @@ impl PhaseAxis {
         self.taps
     }
 
+    /// Lanes 0–3 of [`row`](Self::row), computed the same way.
+    #[inline(always)]
+    fn row4(&self, phase: f32) -> [f32; 4] {
+        let (j, t) = Self::cell(phase);
+        let (a, b) = self.rows(j);
+        let mut out = [0.0f32; 4];
+        for l in 0..4 {
+            out[l] = (1.0 - t) * a[l] + t * b[l];
+        }
+        out
+    }
+
     #[inline(always)]
     fn tap(&self, phase: f32, k: usize) -> f32 {
         let (j, t) = Self::cell(phase);
@@ -244,6 +256,22 @@ impl PhaseTable {
     #[inline(always)]
     pub fn row(&self, axis: Axis, phase: f32, out: &mut [f32; MAX_TAPS]) -> usize {
         self.axes[axis.index()].row(phase, out)
+    }
+
+    /// The first four lanes of [`row`](PhaseTable::row), bit for bit, with one 4-lane
+    /// interpolation instead of the whole padded row: for footprints of at most four pixels per
+    /// axis (radius 2 and below), the film's usual case. Lanes past the taps hold 0.
+    ///
+    /// ```
+    /// use nyquist::filter::{Axis, Mitchell, PhaseTable, MAX_TAPS};
+    /// let t = PhaseTable::new(&Mitchell::default()).unwrap();
+    /// let mut w = [0.0f32; MAX_TAPS];
+    /// t.row(Axis::Y, 0.3, &mut w);
+    /// assert_eq!(t.row4(Axis::Y, 0.3), w[..4]);
+    /// ```
+    #[inline(always)]
+    pub fn row4(&self, axis: Axis, phase: f32) -> [f32; 4] {
+        self.axes[axis.index()].row4(phase)
     }
 
     /// One tap of [`row`](PhaseTable::row): `row(axis, phase, ..)[k]` without the others, 0 for
