@@ -70,16 +70,9 @@ fn add_sample_group<M: Measurement>(c: &mut Criterion<M>, group_name: &str) {
                 }
             })
         });
-        // pbrt-v3's tile over the same pixels: the 64 × 64 tile grown by r + ½, as
-        // `Film::GetFilmTile` grows it.
-        let [rx, ry] = filter.radius();
-        let grown = [
-            (-0.5 - rx).ceil() as i32,
-            (-0.5 - ry).ceil() as i32,
-            (63.5 + rx).floor() as i32 + 1,
-            (63.5 + ry).floor() as i32 + 1,
-        ];
-        let mut peer = pbrt_v3::PbrtTile::new(filter, grown);
+        // pbrt-v3's tile over the same pixels: the 64 × 64 tile grown by r + ½ and clipped to
+        // the film, as `Film::GetFilmTile` does (the whole 64 × 64 film here, like ours).
+        let mut peer = pbrt_v3::PbrtTile::new(filter, [0, 0, 64, 64]);
         group.bench_function(format!("{name}/pbrt_v3"), |b| {
             b.iter(|| {
                 for &p in &pos {

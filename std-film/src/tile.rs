@@ -390,7 +390,7 @@ enum FastPath {
     None,
     /// A box of radius ≤ ½ ([`one_pixel_weight`]), the filter's constant weight.
     OnePixel(f64),
-    /// A phase table whose footprints are often 4 × 4 (a radius from 1.5 to 2.5 per axis:
+    /// A phase table whose footprints are often 4 × 4 (4 or 5 taps: 1.5 ≤ r < 2.5 per axis,
     /// the Mitchell, triangle and Gaussian defaults) and no radiance clamp: a sample whose
     /// footprint is 4 × 4 and stored in full skips the footprint machinery (clips, tap offsets,
     /// widths) and reads four taps per axis.
@@ -757,5 +757,49 @@ impl FilmTile {
             phase: [x.phase, y.phase],
             tap0: [int(x.skip) as usize, int(y.skip) as usize],
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Film, FilmConfig};
+    use nyquist::filter::{Boxcar, Lanczos, Mitchell, Triangle};
+
+    fn tile_for(filter: &dyn Filter, config: FilmConfig) -> FilmTile {
+        let film = Film::new(config, filter).unwrap();
+        film.tile(film.tiles(16).unwrap()[0])
+    }
+
+    /// The integration tests compare the 4 × 4 path with the general path; this checks that
+    /// the path is chosen for the filters it is meant for, and taken by an interior sample.
+    #[test]
+    fn block4_is_chosen_for_radius_two_filters_and_taken_inside() {
+        let cfg = FilmConfig::new(16, 16);
+        let mut t = tile_for(&Mitchell::default(), cfg.clone());
+        assert_eq!(t.fast, FastPath::Block4);
+        assert!(t.add_block4([7.3, 8.6], [1.0; 3], 1.0));
+        // Phase 0 (five pixels along x), the border, NaN: declined.
+        assert!(!t.add_block4([7.5, 8.6], [1.0; 3], 1.0));
+        assert!(!t.add_block4([0.7, 8.6], [1.0; 3], 1.0));
+        assert!(!t.add_block4([f32::NAN, 8.6], [1.0; 3], 1.0));
+        assert_eq!(t.stats.samples, 1);
+        assert_eq!(
+            tile_for(&Triangle::default(), cfg.clone()).fast,
+            FastPath::Block4
+        );
+        assert_eq!(
+            tile_for(&Lanczos::default(), cfg.clone()).fast,
+            FastPath::None
+        );
+        assert_eq!(
+            tile_for(&Boxcar::default(), cfg.clone()).fast,
+            FastPath::OnePixel(1.0)
+        );
+        let clamped = FilmConfig {
+            max_component: Some(4.0),
+            ..cfg
+        };
+        assert_eq!(tile_for(&Mitchell::default(), clamped).fast, FastPath::None);
     }
 }

@@ -157,6 +157,9 @@ impl PbrtTable {
     }
 }
 
+/// The widest footprint [`PbrtTile`] handles per axis (radius below 32).
+pub const MAX_SPAN: usize = 64;
+
 /// pbrt-v3's `FilmTilePixel`: `f32` sums.
 #[derive(Clone, Copy, Default)]
 pub struct PbrtPixel {
@@ -173,8 +176,9 @@ pub struct PbrtTile {
 }
 
 impl PbrtTile {
-    /// A tile for the pixels `[x0, x1) × [y0, y1)` (already grown by the filter radius, as
-    /// pbrt's `Film::GetFilmTile` grows them) with no luminance clamp.
+    /// A tile for the pixels `[x0, x1) × [y0, y1)` (already grown by the filter radius and
+    /// clipped to the film, as pbrt's `Film::GetFilmTile` makes them) with no luminance clamp.
+    /// Footprints are capped at [`MAX_SPAN`] pixels per axis.
     pub fn new(filter: &dyn Filter, bounds: [i32; 4]) -> PbrtTile {
         let area = ((bounds[2] - bounds[0]) * (bounds[3] - bounds[1])).max(0) as usize;
         PbrtTile {
@@ -200,19 +204,22 @@ impl PbrtTile {
         let d = [p_film[0] - 0.5, p_film[1] - 0.5];
         let x0 = ((d[0] - r[0]).ceil() as i32).max(bx0);
         let y0 = ((d[1] - r[1]).ceil() as i32).max(by0);
-        let x1 = ((d[0] + r[0]).floor() as i32 + 1).min(bx1);
-        let y1 = ((d[1] + r[1]).floor() as i32 + 1).min(by1);
+        // Saturating, and capped at MAX_SPAN pixels so the index buffers below always hold
+        // the footprint (pbrt sizes them per sample with ALLOCA).
+        let x1 = ((d[0] + r[0]).floor() as i32).saturating_add(1).min(bx1);
+        let y1 = ((d[1] + r[1]).floor() as i32).saturating_add(1).min(by1);
+        let x1 = x1.min(x0.saturating_add(MAX_SPAN as i32));
+        let y1 = y1.min(y0.saturating_add(MAX_SPAN as i32));
         if x0 >= x1 || y0 >= y1 {
             return;
         }
-        // pbrt allocates these on the stack (ALLOCA) at the footprint's size.
-        let mut ifx = [0usize; 64];
-        let mut ify = [0usize; 64];
-        for x in x0..x1 {
-            ifx[((x - x0) as usize).min(63)] = self.table.index(0, x as f32 - d[0]);
+        let mut ifx = [0usize; MAX_SPAN];
+        let mut ify = [0usize; MAX_SPAN];
+        for (x, i) in (x0..x1).zip(ifx.iter_mut()) {
+            *i = self.table.index(0, x as f32 - d[0]);
         }
-        for y in y0..y1 {
-            ify[((y - y0) as usize).min(63)] = self.table.index(1, y as f32 - d[1]);
+        for (y, i) in (y0..y1).zip(ify.iter_mut()) {
+            *i = self.table.index(1, y as f32 - d[1]);
         }
         let width = (bx1 - bx0) as usize;
         for y in y0..y1 {

@@ -259,8 +259,9 @@ impl PhaseTable {
     }
 
     /// The first four lanes of [`row`](PhaseTable::row), bit for bit, with one 4-lane
-    /// interpolation instead of the whole padded row: for footprints of at most four pixels per
-    /// axis (radius 2 and below), the film's usual case. Lanes past the taps hold 0.
+    /// interpolation instead of the whole padded row: for footprints of four pixels or fewer
+    /// along `axis` (a radius-2 filter's, except at phase 0), the film's usual case. Lanes past
+    /// the taps hold 0.
     ///
     /// ```
     /// use nyquist::filter::{Axis, Mitchell, PhaseTable, MAX_TAPS};
