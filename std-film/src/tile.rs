@@ -776,7 +776,7 @@ mod tests {
     #[test]
     fn block4_is_chosen_for_radius_two_filters_and_taken_inside() {
         let cfg = FilmConfig::new(16, 16);
-        let mut t = tile_for(&Mitchell::default(), cfg.clone());
+        let mut t = tile_for(&Mitchell::default(), cfg);
         assert_eq!(t.fast, FastPath::Block4);
         assert!(t.add_block4([7.3, 8.6], [1.0; 3], 1.0));
         // Phase 0 (five pixels along x), the border, NaN: declined.
@@ -784,16 +784,10 @@ mod tests {
         assert!(!t.add_block4([0.7, 8.6], [1.0; 3], 1.0));
         assert!(!t.add_block4([f32::NAN, 8.6], [1.0; 3], 1.0));
         assert_eq!(t.stats.samples, 1);
+        assert_eq!(tile_for(&Triangle::default(), cfg).fast, FastPath::Block4);
+        assert_eq!(tile_for(&Lanczos::default(), cfg).fast, FastPath::None);
         assert_eq!(
-            tile_for(&Triangle::default(), cfg.clone()).fast,
-            FastPath::Block4
-        );
-        assert_eq!(
-            tile_for(&Lanczos::default(), cfg.clone()).fast,
-            FastPath::None
-        );
-        assert_eq!(
-            tile_for(&Boxcar::default(), cfg.clone()).fast,
+            tile_for(&Boxcar::default(), cfg).fast,
             FastPath::OnePixel(1.0)
         );
         let clamped = FilmConfig {
