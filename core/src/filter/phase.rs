@@ -126,15 +126,12 @@ impl PhaseAxis {
     fn row(&self, phase: f32, out: &mut [f32; MAX_TAPS]) -> usize {
         let (j, t) = Self::cell(phase);
         let (a, b) = self.rows(j);
-        // Four lanes at a time over the padded row: (1 − t)·a + t·b, exact at t = 0 and 1.
-        // Plain indices into fixed arrays: no iterator adapters for the inliner to give up on.
+        // Four lanes at a time over the padded row.
         for c in 0..MAX_TAPS / 4 {
             if 4 * c >= self.stride {
                 break;
             }
-            for l in 4 * c..4 * c + 4 {
-                out[l] = (1.0 - t) * a[l] + t * b[l];
-            }
+            out[4 * c..4 * c + 4].copy_from_slice(&lerp4(a, b, t, 4 * c));
         }
         self.taps
     }
@@ -144,11 +141,7 @@ impl PhaseAxis {
     fn row4(&self, phase: f32) -> [f32; 4] {
         let (j, t) = Self::cell(phase);
         let (a, b) = self.rows(j);
-        let mut out = [0.0f32; 4];
-        for l in 0..4 {
-            out[l] = (1.0 - t) * a[l] + t * b[l];
-        }
-        out
+        lerp4(a, b, t, 0)
     }
 
     #[inline(always)]
@@ -463,6 +456,19 @@ impl PhaseAxis {
         }
         shift
     }
+}
+
+/// Lanes `k … k + 3` (`k ≤ MAX_TAPS − 4`) of two tap rows interpolated at `t`:
+/// `(1 − t)·a + t·b`, exact at `t = 0` and `1`. Plain indices into fixed arrays: no iterator
+/// adapters for the inliner to give up on.
+#[inline(always)]
+fn lerp4(a: &[f32; MAX_TAPS], b: &[f32; MAX_TAPS], t: f32, k: usize) -> [f32; 4] {
+    let k = k.min(MAX_TAPS - 4);
+    let mut out = [0.0f32; 4];
+    for (l, o) in out.iter_mut().enumerate() {
+        *o = (1.0 - t) * a[k + l] + t * b[k + l];
+    }
+    out
 }
 
 /// `0.0, 1.0, …, 15.0`: tap indices as floats.
