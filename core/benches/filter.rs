@@ -270,12 +270,10 @@ fn report(since: SystemTime) {
         }
         lines.push(line);
     }
-    if !lines.is_empty() {
-        println!("\nper weight (median) and ratio to direct evaluation, this run:");
-        for l in lines {
-            println!("{l}");
-        }
-    }
+    estimates::print_report(
+        "per weight (median) and ratio to direct evaluation, this run:",
+        &lines,
+    );
 }
 
 fn main() {

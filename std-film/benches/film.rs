@@ -163,12 +163,7 @@ fn report(since: std::time::SystemTime) {
             lines.push(line);
         }
     }
-    if !lines.is_empty() {
-        println!("\nper sample (median), this run:");
-        for l in lines {
-            println!("{l}");
-        }
-    }
+    estimates::print_report("per sample (median), this run:", &lines);
 }
 
 fn main() {

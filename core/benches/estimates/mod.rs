@@ -34,3 +34,15 @@ pub fn median_ns(group: &str, function: &str, since: SystemTime) -> Option<f64> 
     let end = rest.find([',', '}'])?;
     rest[..end].trim().parse().ok()
 }
+
+/// Prints a bench's closing report: `heading`, then one line per entry; nothing when the run
+/// measured none of the report's cases.
+pub fn print_report(heading: &str, lines: &[String]) {
+    if lines.is_empty() {
+        return;
+    }
+    println!("\n{heading}");
+    for l in lines {
+        println!("{l}");
+    }
+}
