@@ -46,7 +46,6 @@ fn compare_writes_one_sheet_of_the_expected_size_and_one_json_entry_per_cell() {
     assert_eq!(json_field(&j, "height"), f64::from(h));
     // Only the sheet was written (the zone plate's reference needs no cache).
     assert_eq!(files(&dir), ["sheet.png"]);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -85,7 +84,6 @@ fn markdown_table_has_a_row_per_sampler_and_a_column_per_filter_and_spp() {
         .collect();
     assert!(e[0] > e[1] && e[1] > e[2], "{e:?}");
     assert!(out.exists());
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -114,7 +112,6 @@ fn other_scenes_compare_against_their_cached_reference() {
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert_eq!(stdout(&o).matches("\"rmse\":").count(), 2);
     assert_eq!(files(&dir.join("nyquist")).len(), 1);
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -146,7 +143,6 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
         assert_one_line_error(&nyquist_cached(&all, &dir), mentions);
         assert!(files(&dir).is_empty(), "{args:?} left {:?}", files(&dir));
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]

@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{assert_one_line_error, nyquist, stdout};
+use common::{assert_one_line_error, nyquist, stdout, temp_dir};
 
 #[test]
 fn grid_csv_has_n_squared_rows_over_the_closed_support() {
@@ -48,8 +48,7 @@ fn mitchell_centre_is_one_minus_b_over_three_squared() {
 
 #[test]
 fn plot_writes_a_png_and_bad_output_leaves_nothing() {
-    let dir = std::env::temp_dir().join(format!("nyquist-filter-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = temp_dir("filter-plot");
     let png = dir.join("f.png");
     let o = nyquist(&[
         "filter",
@@ -75,7 +74,6 @@ fn plot_writes_a_png_and_bad_output_leaves_nothing() {
         1,
         "stray temporary files"
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

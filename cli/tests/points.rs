@@ -2,7 +2,7 @@
 
 mod common;
 
-use common::{assert_one_line_error, nyquist, rows, stdout};
+use common::{assert_one_line_error, nyquist, rows, stdout, temp_dir};
 
 #[test]
 fn halton_csv_is_the_published_sequence() {
@@ -179,8 +179,7 @@ fn bad_input_is_one_line_and_status_2() {
 
 #[test]
 fn unwritable_output_leaves_nothing_behind() {
-    let dir = std::env::temp_dir().join(format!("nyquist-points-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = temp_dir("points-output");
     let missing = dir.join("no-such-folder").join("p.csv");
     let o = nyquist(&["points", "--output", missing.to_str().unwrap()]);
     assert_one_line_error(&o, "--output");
@@ -194,7 +193,6 @@ fn unwritable_output_leaves_nothing_behind() {
         1,
         "a temporary file was left behind"
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

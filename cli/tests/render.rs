@@ -46,7 +46,6 @@ fn uniform_one_spp_box_is_the_zone_plate_at_pixel_centres_exactly() {
             assert_eq!(v[y * w + x], l as f32, "pixel ({x}, {y})");
         }
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -74,7 +73,6 @@ fn stratified_256_spp_box_matches_the_fresnel_reference() {
     assert!((psnr + 20.0 * rmse.log10()).abs() < 1e-9);
     // The zone plate needs no cache.
     assert!(files(&cache).is_empty());
-    let _ = std::fs::remove_dir_all(&cache);
 }
 
 #[test]
@@ -94,7 +92,6 @@ fn sampling_rmse_measures_against_the_same_filter() {
     );
     assert!(json_field(&j, "sampling_rmse") < 3e-3, "{j}");
     assert!(json_field(&j, "rmse") > 0.03, "{j}");
-    let _ = std::fs::remove_dir_all(&cache);
 }
 
 #[test]
@@ -115,7 +112,6 @@ fn rmse_falls_as_spp_rises_for_stratified_and_sobol() {
         // Stratification beats the 1/√n of independent samples by a clear margin.
         assert!(e[3] < e[0] / 8.0, "{sampler}: {e:?}");
     }
-    let _ = std::fs::remove_dir_all(&cache);
 }
 
 #[test]
@@ -155,7 +151,6 @@ fn output_is_byte_identical_for_one_and_two_threads() {
         };
         assert_eq!(render("1"), render("2"), "{scene} {sampler} {filter}");
     }
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -190,7 +185,6 @@ fn checkerboard_far_field_averages_to_one_half() {
     // Near the camera the checks are large: pure black and white pixels.
     let bottom = &v[63 * w..];
     assert!(bottom.contains(&0.0) && bottom.contains(&1.0));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -227,7 +221,6 @@ fn stripes_blur_with_the_time_sample_and_freeze_without_it() {
         .iter()
         .fold((1.0f32, 0.0f32), |(l, h), &p| (l.min(p), h.max(p)));
     assert!(lo < 0.1 && hi > 0.9, "{top:?}");
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
@@ -246,7 +239,6 @@ fn other_scenes_measure_against_a_cached_reference() {
     );
     assert_eq!(json_field(&a, "rmse"), json_field(&b, "rmse"));
     assert!(json_field(&a, "rmse") > 0.0 && json_field(&a, "rmse") < 0.1);
-    let _ = std::fs::remove_dir_all(&cache);
 }
 
 #[test]
@@ -258,7 +250,6 @@ fn human_metrics_print_every_number() {
     for key in ["rmse", "psnr", "sampling rmse", "samples/s", "rejected"] {
         assert!(s.lines().any(|l| l.starts_with(key)), "{key} in {s}");
     }
-    let _ = std::fs::remove_dir_all(&cache);
 }
 
 #[test]
@@ -304,7 +295,6 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
     );
     assert_one_line_error(&nyquist(&["render", "--size", "8x8"]), "--output");
     assert!(files(&dir).is_empty(), "{:?}", files(&dir));
-    let _ = std::fs::remove_dir_all(&dir);
 }
 
 #[test]
