@@ -1,11 +1,15 @@
 //! Film conservation laws, determinism across threads and schedules, and bad samples.
 
+#[path = "support/temp_dir.rs"]
+mod temp_dir;
+
 use nyquist::filter::{Axis, Boxcar, Filter, Gaussian, Lanczos, Mitchell, Triangle};
 use nyquist_film::{
     Bounds, Film, FilmConfig, FilmTile, TileContext, render_tiles, write_image_file,
 };
 use proptest::prelude::*;
 use std::sync::Mutex;
+use temp_dir::TempDir;
 
 fn filters() -> Vec<(&'static str, Box<dyn Filter + Sync>)> {
     vec![
@@ -196,8 +200,7 @@ fn fnv1a(bytes: &[u8]) -> u64 {
 
 #[test]
 fn exr_and_png_files_are_byte_identical_for_threads_1_2_8_and_repeated_runs() {
-    let dir = std::env::temp_dir().join(format!("nyquist-film-det-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("nyquist-film-det");
     let mut files: Vec<(String, Vec<u8>)> = Vec::new();
     for threads in [1usize, 2, 8] {
         for run in 0..2 {
@@ -225,7 +228,6 @@ fn exr_and_png_files_are_byte_identical_for_threads_1_2_8_and_repeated_runs() {
         assert!(same.iter().all(|b| *b == same[0]), "{ext}: {hashes:x?}");
         assert!(same[0].len() > 100, "{ext}");
     }
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

@@ -1,10 +1,14 @@
 //! Image writers: round trips, exact sRGB bytes, determinism and no half-written files.
 
+#[path = "support/temp_dir.rs"]
+mod temp_dir;
+
 use nyquist_film::output::exr::{ExrPrecision, read_exr, write_exr};
 use nyquist_film::output::pfm::{read_pfm, write_pfm};
 use nyquist_film::output::png::{PngOptions, write_png};
 use nyquist_film::{Image, write_image_file};
 use proptest::prelude::*;
+use temp_dir::TempDir;
 
 fn decode_png(bytes: &[u8]) -> (u32, u32, Vec<u8>) {
     let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
@@ -114,8 +118,7 @@ fn encoders_are_byte_deterministic() {
 #[test]
 fn writing_into_a_missing_or_read_only_folder_fails_and_leaves_nothing() {
     let img = test_image();
-    let dir = std::env::temp_dir().join(format!("nyquist-film-out-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("nyquist-film-out");
     for ext in ["png", "exr", "pfm"] {
         let missing = dir.join("missing").join(format!("x.{ext}"));
         assert!(write_image_file(&missing, &img).is_err());
@@ -136,15 +139,13 @@ fn writing_into_a_missing_or_read_only_folder_fails_and_leaves_nothing() {
         3,
         "stray temporary files"
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]
 fn writing_into_a_folder_without_write_permission_fails_and_leaves_nothing() {
     use std::os::unix::fs::PermissionsExt;
     let img = test_image();
-    let dir = std::env::temp_dir().join(format!("nyquist-film-ro-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("nyquist-film-ro");
     std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o555)).unwrap();
     // Root ignores directory permissions: then there is nothing to test here (the /proc case
     // above still covers a read-only folder).
@@ -159,7 +160,6 @@ fn writing_into_a_folder_without_write_permission_fails_and_leaves_nothing() {
         assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0);
     }
     std::fs::set_permissions(&dir, std::fs::Permissions::from_mode(0o755)).unwrap();
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 #[test]

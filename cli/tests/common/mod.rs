@@ -33,36 +33,15 @@ pub fn assert_one_line_error(o: &Output, mentions: &str) {
     assert!(o.stdout.is_empty());
 }
 
-/// A folder under the system temp folder that is removed with everything in it when dropped,
-/// so a test leaves nothing behind whether it passes or panics. Derefs to its path.
-pub struct TempDir(std::path::PathBuf);
-
-impl std::ops::Deref for TempDir {
-    type Target = std::path::Path;
-    fn deref(&self) -> &std::path::Path {
-        &self.0
-    }
-}
-
-impl AsRef<std::path::Path> for TempDir {
-    fn as_ref(&self) -> &std::path::Path {
-        &self.0
-    }
-}
-
-impl Drop for TempDir {
-    fn drop(&mut self) {
-        let _ = std::fs::remove_dir_all(&self.0);
-    }
-}
+/// The scratch-folder guard, shared with the film's tests.
+#[path = "../../../std-film/tests/support/temp_dir.rs"]
+mod temp;
+pub use temp::TempDir;
 
 /// A fresh empty folder under the system temp folder, unique to this test and process, removed
 /// when the returned guard drops.
 pub fn temp_dir(name: &str) -> TempDir {
-    let d = std::env::temp_dir().join(format!("nyquist-cli-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    TempDir(d)
+    TempDir::new(&format!("nyquist-cli-{name}"))
 }
 
 /// Runs nyquist with its reference cache in `cache` (never the user's).
