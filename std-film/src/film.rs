@@ -265,7 +265,8 @@ impl Film {
     /// # Errors
     /// [`Error::Config`] if a tile with this index was already merged or is held, or if the
     /// tile was made by another film (its pixels are not this film's).
-    pub fn merge(&mut self, tile: FilmTile) -> Result<(), Error> {
+    pub fn merge(&mut self, mut tile: FilmTile) -> Result<(), Error> {
+        tile.drain_queue();
         let index = tile.index();
         if !Arc::ptr_eq(tile.setup(), &self.setup) {
             return Err(Error::Config(format!(

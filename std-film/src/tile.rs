@@ -380,6 +380,69 @@ pub struct FilmTile {
     stats: FilmStats,
     /// The per-sample fast path the film's filter allows (see [`FastPath::for_setup`]).
     fast: FastPath,
+    /// [`FastPath::Block4`]'s held samples, `queue[..queued]`, oldest first (see [`Queued`]).
+    queue: [Queued; QUEUE],
+    queued: usize,
+}
+
+/// Samples a [`FastPath::Block4`] tile holds before adding them: enough that the weights of
+/// one are computed while the sums of another are written (measured: 8 gained less, 32 no
+/// more).
+const QUEUE: usize = 16;
+
+/// A checked sample waiting in a tile's queue: its film position and `weight·rgb`.
+///
+/// A radius-2 footprint's weights are a long chain of dependent steps (position, phase, table
+/// row, interpolation, outer product) ending in 32 pixel stores, and one sample's chain fills
+/// the processor's reorder window: adding each sample at once runs those chains one after
+/// another. Held in a queue, a batch's weights are computed together (independent chains that
+/// overlap), then its sums are written in arrival order, so every pixel gets the same additions
+/// in the same order as without the queue: the same sums, bit for bit.
+#[derive(Clone, Copy, Debug, Default)]
+struct Queued {
+    p: [f32; 2],
+    l: [f64; 3],
+}
+
+/// The part of a [`FastPath::Block4`] sample its sums need: the first pixel of its 4 × 4
+/// footprint (an index into the tile's pixels) and the four weights per axis.
+#[derive(Clone, Copy, Debug)]
+struct Block4 {
+    start: usize,
+    fx: [f32; 4],
+    fy: [f32; 4],
+}
+
+/// The 4 × 4 footprint of a sample at `p` when it is exactly 4 × 4 pixels and stored in full
+/// (else `None`, also for NaN and ∞). Same as the general path, bit for bit: the same footprint
+/// start `⌈q⌉` and end `⌊q + 2r⌋` (tested without the floor: four pixels exactly when
+/// `⌈q⌉ + 3 ≤ q + 2r < ⌈q⌉ + 4`), the same phase, and the first four taps of the same table row
+/// ([`PhaseTable::row4`]).
+#[inline(always)]
+fn block4(g: &Geometry, t: &PhaseTable, p: [f32; 2]) -> Option<Block4> {
+    // As in `Geometry::span`, whose clamps change nothing for the footprints taken here.
+    let c = [f64::from(p[0]) - g.origin[0], f64::from(p[1]) - g.origin[1]];
+    let q = [c[0] - g.radius[0], c[1] - g.radius[1]];
+    let first = [ceil_f64(q[0]), ceil_f64(q[1])];
+    let end = [q[0] + g.diameter[0], q[1] + g.diameter[1]];
+    // False for NaN and ∞ positions as well.
+    let stored = (first[0] >= 0.0)
+        & (first[0] <= g.block_last[0])
+        & (first[1] >= 0.0)
+        & (first[1] <= g.block_last[1]);
+    let four = (end[0] >= first[0] + 3.0)
+        & (end[0] < first[0] + 4.0)
+        & (end[1] >= first[1] + 3.0)
+        & (end[1] < first[1] + 4.0);
+    if !(stored & four) {
+        return None;
+    }
+    let stride = g.size[0] as usize;
+    Some(Block4 {
+        start: int(first[1]) as usize * stride + int(first[0]) as usize,
+        fx: t.row4(Axis::X, (first[0] - q[0]) as f32),
+        fy: t.row4(Axis::Y, (first[1] - q[1]) as f32),
+    })
 }
 
 /// The fast paths of [`FilmTile::add_sample`], each taking the samples it can and handing the
@@ -457,6 +520,8 @@ impl FilmTile {
             setup,
             stats: FilmStats::default(),
             fast,
+            queue: [Queued::default(); QUEUE],
+            queued: 0,
         }
     }
 
@@ -507,6 +572,11 @@ impl FilmTile {
     /// film's `max_component` set, a brighter sample is scaled down to it. Pixels outside the
     /// tile's pixel bounds are skipped.
     ///
+    /// Radius-2 filters (Mitchell, triangle, Gaussian defaults, no clamp) are checked and
+    /// counted at once but added in batches of 16, oldest first, the last batch when the tile is
+    /// merged: one sample's weights are computed while another's sums are written, and the
+    /// film's sums are the same, bit for bit.
+    ///
     /// ```
     /// use nyquist_film::{Film, FilmConfig};
     /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Triangle::default()).unwrap();
@@ -521,57 +591,62 @@ impl FilmTile {
     /// ```
     #[inline]
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
-        let done = match self.fast {
+        match self.fast {
             FastPath::OnePixel(filter_weight) => {
-                self.add_one_pixel(filter_weight, p_film, rgb, weight)
+                if !self.add_one_pixel(filter_weight, p_film, rgb, weight) {
+                    self.add_sample_footprint(p_film, rgb, weight);
+                }
             }
-            FastPath::Block4 => self.add_block4(p_film, rgb, weight),
-            FastPath::None => false,
-        };
-        if !done {
-            self.add_sample_footprint(p_film, rgb, weight);
+            FastPath::Block4 => self.enqueue(p_film, rgb, weight),
+            FastPath::None => self.add_sample_footprint(p_film, rgb, weight),
         }
     }
 
-    /// [`FilmTile::add_sample`] for [`FastPath::Block4`]: `false`, with nothing done, unless the
-    /// sample is finite and its footprint is exactly 4 × 4 pixels, all stored. Same sums as the
-    /// general path, bit for bit: the same footprint start `⌈q⌉` and end `⌊q + 2r⌋` (tested
-    /// without the floor: four pixels exactly when `⌈q⌉ + 3 ≤ q + 2r < ⌈q⌉ + 4`), the same
-    /// phase, the first four taps of the same table row ([`PhaseTable::row4`]) and the same
-    /// 4-column accumulation.
+    /// [`FilmTile::add_sample`] for [`FastPath::Block4`]: checks and counts the sample now,
+    /// holds it in the queue ([`Queued`]), and adds the queue when it is full.
     #[inline(always)]
-    fn add_block4(&mut self, p: [f32; 2], rgb: [f32; 3], weight: f32) -> bool {
-        let Weights::Phase(t) = &self.setup.weights else {
-            return false;
-        };
+    fn enqueue(&mut self, p: [f32; 2], rgb: [f32; 3], weight: f32) {
         let (l, finite) = weighted(rgb, weight);
-        let g = &self.geometry;
-        // As in `Geometry::span`, whose clamps change nothing for the footprints taken here.
-        let c = [f64::from(p[0]) - g.origin[0], f64::from(p[1]) - g.origin[1]];
-        let q = [c[0] - g.radius[0], c[1] - g.radius[1]];
-        let first = [ceil_f64(q[0]), ceil_f64(q[1])];
-        let end = [q[0] + g.diameter[0], q[1] + g.diameter[1]];
-        // False for NaN and ∞ positions as well.
-        let stored = (first[0] >= 0.0)
-            & (first[0] <= g.block_last[0])
-            & (first[1] >= 0.0)
-            & (first[1] <= g.block_last[1]);
-        let four = (end[0] >= first[0] + 3.0)
-            & (end[0] < first[0] + 4.0)
-            & (end[1] >= first[1] + 3.0)
-            & (end[1] < first[1] + 4.0);
-        if !(finite & stored & four) {
-            return false;
+        if !(finite & p[0].is_finite() & p[1].is_finite()) {
+            self.stats.rejected += 1;
+            return;
         }
         self.stats.samples += 1;
-        let fx = t.row4(Axis::X, (first[0] - q[0]) as f32);
-        let fy = t.row4(Axis::Y, (first[1] - q[1]) as f32);
-        let stride = g.size[0] as usize;
-        let start = int(first[1]) as usize * stride + int(first[0]) as usize;
-        if let Some(rows) = self.pixels.get_mut(start..start + 3 * stride + 4) {
-            columns::<4>(rows, stride, &fx, &fy, l);
+        if let Some(slot) = self.queue.get_mut(self.queued) {
+            *slot = Queued { p, l };
+            self.queued += 1;
         }
-        true
+        if self.queued >= QUEUE {
+            self.drain_queue();
+        }
+    }
+
+    /// Adds the held samples, oldest first, and empties the queue: first the 4 × 4 weights of
+    /// all of them, then their sums (the general path's for the samples [`block4`] declines).
+    /// Called when the queue is full, before [`FilmTile::add_sample_direct`], and by
+    /// [`crate::Film::merge`].
+    pub(crate) fn drain_queue(&mut self) {
+        let n = self.queued.min(QUEUE);
+        self.queued = 0;
+        let queue = self.queue;
+        let mut blocks = [None; QUEUE];
+        if let Weights::Phase(t) = &self.setup.weights {
+            for (b, q) in blocks.iter_mut().zip(&queue[..n]) {
+                *b = block4(&self.geometry, t, q.p);
+            }
+        }
+        let stride = self.geometry.size[0] as usize;
+        for (b, q) in blocks.iter().zip(&queue[..n]) {
+            match b {
+                Some(b) => {
+                    let start = b.start;
+                    if let Some(rows) = self.pixels.get_mut(start..start + 3 * stride + 4) {
+                        columns::<4>(rows, stride, &b.fx, &b.fy, q.l);
+                    }
+                }
+                None => self.add_footprint(q.p, q.l),
+            }
+        }
     }
 
     /// [`FilmTile::add_sample`] for a box of radius ≤ ½ and weight `filter_weight`
@@ -617,7 +692,15 @@ impl FilmTile {
 
     /// [`FilmTile::add_sample`] through the footprint: the general path.
     fn add_sample_footprint(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
-        let Some((fp, l)) = self.prepare(p_film, rgb, weight) else {
+        if let Some(l) = self.prepare(p_film, rgb, weight) {
+            self.add_footprint(p_film, l);
+        }
+    }
+
+    /// Adds `f·l` and `f` to every stored pixel of the footprint of a checked, counted sample at
+    /// the finite position `p` (`l` its `weight·rgb`, clamped).
+    fn add_footprint(&mut self, p: [f32; 2], l: [f64; 3]) {
+        let Some(fp) = self.footprint(p) else {
             return;
         };
         let stride = self.geometry.size[0] as usize;
@@ -662,7 +745,12 @@ impl FilmTile {
         rgb: [f32; 3],
         weight: f32,
     ) {
-        let Some((fp, l)) = self.prepare(p_film, rgb, weight) else {
+        // The held samples first: each pixel's additions stay in arrival order.
+        self.drain_queue();
+        let Some(l) = self.prepare(p_film, rgb, weight) else {
+            return;
+        };
+        let Some(fp) = self.footprint(p_film) else {
             return;
         };
         let stride = self.geometry.size[0] as usize;
@@ -673,27 +761,20 @@ impl FilmTile {
         }
     }
 
-    /// Checks, counts and clamps a sample; its footprint and `weight·rgb` in `f64`, or `None`
-    /// when it is rejected or reaches no stored pixel.
+    /// Checks, counts and clamps a sample: its `weight·rgb` in `f64`, or `None` when it is
+    /// rejected.
     #[inline(always)]
-    fn prepare(
-        &mut self,
-        p: [f32; 2],
-        rgb: [f32; 3],
-        weight: f32,
-    ) -> Option<(Footprint, [f64; 3])> {
+    fn prepare(&mut self, p: [f32; 2], rgb: [f32; 3], weight: f32) -> Option<[f64; 3]> {
         let (l, finite) = weighted(rgb, weight);
         if !(finite & p[0].is_finite() & p[1].is_finite()) {
             self.stats.rejected += 1;
             return None;
         }
-        let l = match self.setup.max_component {
+        self.stats.samples += 1;
+        Some(match self.setup.max_component {
             Some(_) => weighted(self.clamp(rgb), weight).0,
             None => l,
-        };
-        self.stats.samples += 1;
-        let fp = self.footprint(p)?;
-        Some((fp, l))
+        })
     }
 
     /// Adds a splat (pbrt-v4 style, e.g. for light tracing): every reached pixel gets
@@ -776,14 +857,17 @@ mod tests {
     #[test]
     fn block4_is_chosen_for_radius_two_filters_and_taken_inside() {
         let cfg = FilmConfig::new(16, 16);
-        let mut t = tile_for(&Mitchell::default(), cfg);
+        let t = tile_for(&Mitchell::default(), cfg);
         assert_eq!(t.fast, FastPath::Block4);
-        assert!(t.add_block4([7.3, 8.6], [1.0; 3], 1.0));
+        let Weights::Phase(table) = &t.setup.weights else {
+            panic!("Mitchell has a phase table");
+        };
+        let taken = |p: [f32; 2]| block4(&t.geometry, table, p).is_some();
+        assert!(taken([7.3, 8.6]));
         // Phase 0 (five pixels along x), the border, NaN: declined.
-        assert!(!t.add_block4([7.5, 8.6], [1.0; 3], 1.0));
-        assert!(!t.add_block4([0.7, 8.6], [1.0; 3], 1.0));
-        assert!(!t.add_block4([f32::NAN, 8.6], [1.0; 3], 1.0));
-        assert_eq!(t.stats.samples, 1);
+        assert!(!taken([7.5, 8.6]));
+        assert!(!taken([0.7, 8.6]));
+        assert!(!taken([f32::NAN, 8.6]));
         assert_eq!(tile_for(&Triangle::default(), cfg).fast, FastPath::Block4);
         assert_eq!(tile_for(&Lanczos::default(), cfg).fast, FastPath::None);
         assert_eq!(
