@@ -22,7 +22,7 @@ const PIXELS: u32 = 8;
 
 /// Every camera sample of the 8 × 8 pixels, each handed to `black_box` as a renderer hands it
 /// to its camera. (Not summed: a running `f32` sum is a serial chain of five 3-cycle adds per
-/// sample, which measured the consumer, not the sampler — Halton's 15 ns read as 23.)
+/// sample, the consumer's latency timed with the sampler's work.)
 fn camera<S: Sampler>(s: &mut S) {
     for y in 0..PIXELS {
         for x in 0..PIXELS {
