@@ -602,16 +602,14 @@ impl FilmTile {
         }
     }
 
-    /// [`FilmTile::add_sample`] for [`FastPath::Block4`]: checks and counts the sample now,
-    /// holds it in the queue ([`Queued`]), and adds the queue when it is full.
+    /// [`FilmTile::add_sample`] for [`FastPath::Block4`]: checks and counts the sample now
+    /// ([`FilmTile::prepare`]), holds it in the queue ([`Queued`]), and adds the queue when it
+    /// is full.
     #[inline(always)]
     fn enqueue(&mut self, p: [f32; 2], rgb: [f32; 3], weight: f32) {
-        let (l, finite) = weighted(rgb, weight);
-        if !(finite & p[0].is_finite() & p[1].is_finite()) {
-            self.stats.rejected += 1;
+        let Some(l) = self.prepare(p, rgb, weight) else {
             return;
-        }
-        self.stats.samples += 1;
+        };
         if let Some(slot) = self.queue.get_mut(self.queued) {
             *slot = Queued { p, l };
             self.queued += 1;
