@@ -514,23 +514,31 @@ fn block4_filters() -> [Box<dyn Filter>; 7] {
     ]
 }
 
-/// Adds `samples` `(x, y, red, weight)` to the tile `bounds` of two 10 × 9 films with `f`:
-/// through `add_sample` on a film configured `cfg[0]`, and as `add_b` adds them on a film
-/// configured `cfg[1]`. The first difference in counters or in any pixel's bits, if any.
+/// How a test adds sample number `k` (position, radiance, weight) to a tile.
+type Add<'a> = &'a dyn Fn(&mut FilmTile, usize, [f32; 2], [f32; 3], f32);
+
+/// `add_sample`, whatever the sample's number.
+fn add_sample(t: &mut FilmTile, _k: usize, p: [f32; 2], rgb: [f32; 3], w: f32) {
+    t.add_sample(p, rgb, w);
+}
+
+/// Adds `samples` `(x, y, red, weight)` to the tile `bounds` of two 10 × 9 films with `f`, the
+/// film configured `cfg[i]` through `add[i]`. The first difference in counters or in any
+/// pixel's bits, if any.
 fn paths_mismatch(
     f: &dyn Filter,
     cfg: [FilmConfig; 2],
     bounds: Bounds,
     samples: &[(f32, f32, f32, f32)],
-    add_b: impl Fn(&mut FilmTile, [f32; 2], [f32; 3], f32),
+    add: [Add<'_>; 2],
 ) -> Option<String> {
     let mut a = Film::new(cfg[0], f).unwrap();
     let mut b = Film::new(cfg[1], f).unwrap();
     let spec = nyquist_film::TileSpec { index: 0, bounds };
     let (mut ta, mut tb) = (a.tile(spec), b.tile(spec));
-    for &(x, y, l, wt) in samples {
-        ta.add_sample([x, y], [l, 0.5, 2.0], wt);
-        add_b(&mut tb, [x, y], [l, 0.5, 2.0], wt);
+    for (k, &(x, y, l, wt)) in samples.iter().enumerate() {
+        add[0](&mut ta, k, [x, y], [l, 0.5, 2.0], wt);
+        add[1](&mut tb, k, [x, y], [l, 0.5, 2.0], wt);
     }
     if ta.stats() != tb.stats() {
         return Some(format!("stats {:?} != {:?}", ta.stats(), tb.stats()));
@@ -555,24 +563,30 @@ fn paths_mismatch(
     None
 }
 
-/// [`paths_mismatch`] of `add_sample` as is (the 4 × 4 path where it applies) against
-/// `add_sample` with a clamp that never bites (`max_component = f32::MAX`), which forces the
+/// The two configurations [`block4_mismatch`] compares: 10 × 9 as is (the 4 × 4 path where it
+/// applies) and with a clamp that never bites (`max_component = f32::MAX`), which forces the
 /// general path.
+fn block4_and_general() -> [FilmConfig; 2] {
+    let general = FilmConfig {
+        max_component: Some(f32::MAX),
+        ..FilmConfig::new(10, 9)
+    };
+    [FilmConfig::new(10, 9), general]
+}
+
+/// [`paths_mismatch`] of `add_sample` on the 4 × 4 path against the general path
+/// ([`block4_and_general`]).
 fn block4_mismatch(
     f: &dyn Filter,
     bounds: Bounds,
     samples: &[(f32, f32, f32, f32)],
 ) -> Option<String> {
-    let general_cfg = FilmConfig {
-        max_component: Some(f32::MAX),
-        ..FilmConfig::new(10, 9)
-    };
     paths_mismatch(
         f,
-        [FilmConfig::new(10, 9), general_cfg],
+        block4_and_general(),
         bounds,
         samples,
-        |t, p, rgb, w| t.add_sample(p, rgb, w),
+        [&add_sample, &add_sample],
     )
 }
 
@@ -592,38 +606,28 @@ fn block4_path_matches_the_general_path_on_an_eighth_pixel_grid() {
 }
 
 /// `add_sample_direct` on a tile that holds 4 × 4 samples in its queue adds after them: a run
-/// mixing the two calls gives the sums, bit for bit, of a film that holds nothing (the general
-/// path, forced by a clamp that never bites). Radiances spread over many magnitudes, so any
+/// mixing the two calls gives the counters and sums, bit for bit, of a film that holds nothing
+/// (the general path, [`block4_and_general`]). Radiances spread over many magnitudes, so any
 /// change in the order of a pixel's additions changes its bits.
 #[test]
 fn direct_samples_are_added_after_the_queued_ones() {
     let f = Mitchell::default();
-    let general = FilmConfig {
-        max_component: Some(f32::MAX),
-        ..FilmConfig::new(10, 9)
-    };
-    let pixels = [FilmConfig::new(10, 9), general].map(|cfg| {
-        let mut film = Film::new(cfg, &f).unwrap();
-        let mut tile = film.tile(nyquist_film::TileSpec {
-            index: 0,
-            bounds: Bounds::new(0, 0, 10, 9),
-        });
-        for k in 0..45u16 {
-            let p = [2.6 + f32::from(k % 5) * 0.9, 2.3 + f32::from(k % 4) * 1.1];
-            let rgb = [1.37f32.powi(i32::from(k % 23)), 0.5, 1e-3 * f32::from(k)];
-            if k % 6 == 5 {
-                tile.add_sample_direct(&f, p, rgb, 1.0);
-            } else {
-                tile.add_sample(p, rgb, 1.0);
-            }
+    let samples: Vec<_> = (0..45u16)
+        .map(|k| {
+            let (x, y) = (2.6 + f32::from(k % 5) * 0.9, 2.3 + f32::from(k % 4) * 1.1);
+            (x, y, 1.37f32.powi(i32::from(k % 23)), 1.0)
+        })
+        .collect();
+    let mixed = |t: &mut FilmTile, k: usize, p, rgb, w| {
+        if k % 6 == 5 {
+            t.add_sample_direct(&f, p, rgb, w);
+        } else {
+            t.add_sample(p, rgb, w);
         }
-        film.merge(tile).unwrap();
-        (0..90)
-            .map(|i| film.pixel(i % 10, i / 10).unwrap())
-            .map(|p| p.rgb_sum.map(f64::to_bits))
-            .collect::<Vec<_>>()
-    });
-    assert!(pixels[0] == pixels[1], "the two films differ");
+    };
+    let bounds = Bounds::new(0, 0, 10, 9);
+    let mismatch = paths_mismatch(&f, block4_and_general(), bounds, &samples, [&mixed, &mixed]);
+    assert_eq!(mismatch, None);
 }
 
 /// A separable plugin filter that is largest at its edge: `1 + |d|/4` inside radius
@@ -676,7 +680,7 @@ proptest! {
             [cfg, cfg],
             Bounds::new(x0, y0, x0 + w, y0 + h),
             &samples,
-            |t, p, rgb, wt| t.add_sample_direct(&filter, p, rgb, wt),
+            [&add_sample, &|t, _, p, rgb, wt| t.add_sample_direct(&filter, p, rgb, wt)],
         );
         prop_assert_eq!(mismatch, None);
     }
