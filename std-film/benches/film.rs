@@ -1,7 +1,8 @@
 //! Film accumulation: `FilmTile::add_sample` (table lookups) side by side with the same
 //! accumulation evaluating the filter directly (`FilmTile::add_sample_direct`), for Mitchell
-//! r = 2 and box r = ½, 4096 samples per iteration over a 64 × 64 tile; and the parallel render
-//! of a 1024 × 1024 zone plate at 16 spp on 1 and 2 threads.
+//! r = 2 and box r = ½, 4096 samples per iteration (uniform positions over a 64 × 64 tile, each
+//! with its own radiance); and the parallel render of a 1024 × 1024 zone plate at 16 spp on 1
+//! and 2 threads.
 //!
 //! Beside both runs the peer the issue quotes, pbrt-v3's `FilmTile::AddSample` (re-implemented in
 //! `core/benches/pbrt_v3`, `f32` sums and its 16 × 16 table); after the run the bench prints the
@@ -41,8 +42,19 @@ fn positions() -> Vec<[f32; 2]> {
         .collect()
 }
 
+/// A radiance per sample in `[0, 1)³`, read beside its position as a renderer's would be (a
+/// constant radiance lets the compiler fold the weight product and the finite check away once
+/// `add_sample` is inlined).
+fn radiances() -> Vec<[f32; 3]> {
+    let mut rng = nyquist::rng::default_rng(2);
+    (0..SAMPLES)
+        .map(|_| [(); 3].map(|_| nyquist::rng::uniform_f32(&mut rng)))
+        .collect()
+}
+
 fn add_sample_group<M: Measurement>(c: &mut Criterion<M>, group_name: &str) {
     let pos = positions();
+    let rad = radiances();
     let filters: [(&str, &dyn Filter); 2] = [
         ("mitchell_r2", &Mitchell::default()),
         ("box_r0.5", &Boxcar::default()),
@@ -57,16 +69,16 @@ fn add_sample_group<M: Measurement>(c: &mut Criterion<M>, group_name: &str) {
         let mut tile = film.tile(spec);
         group.bench_function(format!("{name}/table"), |b| {
             b.iter(|| {
-                for &p in &pos {
-                    tile.add_sample(black_box(p), [0.5, 0.25, 1.0], 1.0);
+                for (&p, &l) in pos.iter().zip(&rad) {
+                    tile.add_sample(black_box(p), l, 1.0);
                 }
             })
         });
         let mut tile = film.tile(spec);
         group.bench_function(format!("{name}/direct"), |b| {
             b.iter(|| {
-                for &p in &pos {
-                    tile.add_sample_direct(filter, black_box(p), [0.5, 0.25, 1.0], 1.0);
+                for (&p, &l) in pos.iter().zip(&rad) {
+                    tile.add_sample_direct(filter, black_box(p), l, 1.0);
                 }
             })
         });
@@ -75,8 +87,8 @@ fn add_sample_group<M: Measurement>(c: &mut Criterion<M>, group_name: &str) {
         let mut peer = pbrt_v3::PbrtTile::new(filter, [0, 0, 64, 64]);
         group.bench_function(format!("{name}/pbrt_v3"), |b| {
             b.iter(|| {
-                for &p in &pos {
-                    peer.add_sample(black_box(p), [0.5, 0.25, 1.0], 1.0);
+                for (&p, &l) in pos.iter().zip(&rad) {
+                    peer.add_sample(black_box(p), l, 1.0);
                 }
             })
         });

@@ -286,12 +286,15 @@ impl Film {
 
     fn apply(&mut self, tile: &FilmTile) {
         let fb = self.setup.pixel_bounds;
+        // The merged pixels, `tb`, inside the stored ones, `sb` (see `FilmTile::stored_bounds`).
         let tb = tile.pixel_bounds();
+        let sb = tile.stored_bounds();
         let fw = fb.width() as usize;
         let tw = tb.width() as usize;
+        let sw = sb.width() as usize;
         for y in tb.y0..tb.y1 {
             let frow = (y - fb.y0) as usize * fw + (tb.x0 - fb.x0) as usize;
-            let trow = (y - tb.y0) as usize * tw;
+            let trow = (y - sb.y0) as usize * sw + (tb.x0 - sb.x0) as usize;
             for (dst, src) in self.pixels[frow..frow + tw]
                 .iter_mut()
                 .zip(&tile.pixels()[trow..trow + tw])

@@ -373,6 +373,9 @@ fn wide_columns(rows: &mut [Pixel], stride: usize, nx: usize, fx: &[f32], fy: &[
 #[derive(Debug)]
 pub struct FilmTile {
     spec: TileSpec,
+    /// The film pixels this tile merges ([`FilmTile::pixel_bounds`]).
+    pixel_bounds: Bounds,
+    /// Where the stored pixels lie ([`FilmTile::stored_bounds`]).
     geometry: Geometry,
     pixels: Vec<Pixel>,
     splats: Vec<[f64; 3]>,
@@ -492,28 +495,41 @@ fn one_pixel_weight(setup: &Setup) -> Option<f64> {
     (setup.max_component.is_none() && t.radius().iter().all(|&r| r <= 0.5)).then_some(weight)
 }
 
+/// The pixels whose centres lie within the filter radius `[rx, ry]` of rectangle `b`: `b` grown
+/// by the radius, in whole pixels.
+fn reach(b: Bounds, [rx, ry]: [f32; 2]) -> Bounds {
+    Bounds::new(
+        (b.x0 as f64 - 0.5 - f64::from(rx)).ceil() as i64,
+        (b.y0 as f64 - 0.5 - f64::from(ry)).ceil() as i64,
+        // Saturating: a rectangle reaching i64::MAX (any `TileSpec` is valid) must not wrap.
+        ((b.x1 as f64 - 0.5 + f64::from(rx)).floor() as i64).saturating_add(1),
+        ((b.y1 as f64 - 0.5 + f64::from(ry)).floor() as i64).saturating_add(1),
+    )
+}
+
 impl FilmTile {
     pub(crate) fn new(spec: TileSpec, setup: Arc<Setup>) -> FilmTile {
-        let [rx, ry] = setup.weights.radius();
+        let radius = setup.weights.radius();
         let b = spec.bounds;
-        let grown = Bounds::new(
-            (b.x0 as f64 - 0.5 - f64::from(rx)).ceil() as i64,
-            (b.y0 as f64 - 0.5 - f64::from(ry)).ceil() as i64,
-            // Saturating: a rectangle reaching i64::MAX (any `TileSpec` is valid) must not wrap.
-            ((b.x1 as f64 - 0.5 + f64::from(rx)).floor() as i64).saturating_add(1),
-            ((b.y1 as f64 - 0.5 + f64::from(ry)).floor() as i64).saturating_add(1),
-        );
+        let grown = reach(b, radius);
         let fb = setup.pixel_bounds;
         let mut pixel_bounds = grown.intersect(&fb);
+        // The stored pixels: the film pixels above, and along the film's edges a guard band of
+        // the pixels just outside it that the tile's samples reach. Their sums are never merged;
+        // they let a sample near the film's edge take the 4 × 4 path with its whole footprint
+        // stored, instead of the general path that clips it.
+        let mut stored = grown.intersect(&reach(fb, radius));
         if pixel_bounds.is_empty() || b.is_empty() {
             // Nothing to store: an empty rectangle at the film's corner keeps merges trivial.
             pixel_bounds = Bounds::new(fb.x0, fb.y0, fb.x0, fb.y0);
+            stored = pixel_bounds;
         }
-        let n = pixel_bounds.area() as usize;
+        let n = stored.area() as usize;
         let fast = FastPath::for_setup(&setup);
         FilmTile {
             spec,
-            geometry: Geometry::new(pixel_bounds, [rx, ry]),
+            pixel_bounds,
+            geometry: Geometry::new(stored, radius),
             pixels: vec![Pixel::default(); n],
             // Allocated by the first splat: most renderers never splat.
             splats: Vec::new(),
@@ -535,8 +551,15 @@ impl FilmTile {
         self.spec.bounds
     }
 
-    /// The pixels this tile stores: its bounds grown by the filter radius, clipped to the film.
+    /// The film pixels this tile holds sums for, and merges: its bounds grown by the filter
+    /// radius, clipped to the film.
     pub fn pixel_bounds(&self) -> Bounds {
+        self.pixel_bounds
+    }
+
+    /// The pixels this tile stores, row-major in [`FilmTile::pixels`]: [`FilmTile::pixel_bounds`]
+    /// and, along the film's edges, a guard band of pixels outside the film (never merged).
+    pub(crate) fn stored_bounds(&self) -> Bounds {
         self.geometry.bounds
     }
 
@@ -589,7 +612,7 @@ impl FilmTile {
     /// assert_eq!(film.pixel(1, 1).unwrap().weight_sum, 4.0);
     /// assert_eq!(film.pixel(1, 1).unwrap().rgb_sum, [2.0, 4.0, 6.0]);
     /// ```
-    #[inline]
+    #[inline(always)]
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
         match self.fast {
             FastPath::OnePixel(filter_weight) => {
@@ -862,9 +885,11 @@ mod tests {
         };
         let taken = |p: [f32; 2]| block4(&t.geometry, table, p).is_some();
         assert!(taken([7.3, 8.6]));
-        // Phase 0 (five pixels along x), the border, NaN: declined.
+        // At the film's edge too: the guard band stores the footprint's outer pixels.
+        assert!(taken([0.7, 8.6]) && taken([15.9, 0.1]));
+        // Phase 0 (five pixels along x), past the guard band, NaN: declined.
         assert!(!taken([7.5, 8.6]));
-        assert!(!taken([0.7, 8.6]));
+        assert!(!taken([-1.7, 8.6]));
         assert!(!taken([f32::NAN, 8.6]));
         assert_eq!(tile_for(&Triangle::default(), cfg).fast, FastPath::Block4);
         assert_eq!(tile_for(&Lanczos::default(), cfg).fast, FastPath::None);
