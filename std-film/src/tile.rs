@@ -454,8 +454,9 @@ fn block4(g: &Geometry, t: &PhaseTable, p: [f32; 2]) -> Option<Block4> {
 enum FastPath {
     /// None applies: every sample takes the general path.
     None,
-    /// A box of radius ≤ ½ ([`one_pixel_weight`]), the filter's constant weight.
-    OnePixel(f64),
+    /// A box of radius ≤ ½ ([`one_pixel_weight`]): the filter's constant weight, and whether
+    /// a radius is below ½ (then a sample can miss its pixel's centre, and each is tested).
+    OnePixel { weight: f64, narrow: bool },
     /// A phase table whose footprints are often 4 × 4 (4 or 5 taps: 1.5 ≤ r < 2.5 per axis,
     /// the Mitchell, triangle and Gaussian defaults) and no radiance clamp: a sample whose
     /// footprint is 4 × 4 and stored in full skips the footprint machinery (clips, tap offsets,
@@ -465,8 +466,9 @@ enum FastPath {
 
 impl FastPath {
     fn for_setup(setup: &Setup) -> FastPath {
-        if let Some(w) = one_pixel_weight(setup) {
-            return FastPath::OnePixel(w);
+        if let Some(weight) = one_pixel_weight(setup) {
+            let narrow = setup.weights.radius().iter().any(|&r| r < 0.5);
+            return FastPath::OnePixel { weight, narrow };
         }
         match &setup.weights {
             Weights::Phase(t)
@@ -615,8 +617,16 @@ impl FilmTile {
     #[inline(always)]
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
         match self.fast {
-            FastPath::OnePixel(filter_weight) => {
-                if !self.add_one_pixel(filter_weight, p_film, rgb, weight) {
+            FastPath::OnePixel {
+                weight: filter_weight,
+                narrow,
+            } => {
+                let added = if narrow {
+                    self.add_one_pixel::<true>(filter_weight, p_film, rgb, weight)
+                } else {
+                    self.add_one_pixel::<false>(filter_weight, p_film, rgb, weight)
+                };
+                if !added {
                     self.add_sample_footprint(p_film, rgb, weight);
                 }
             }
@@ -676,7 +686,7 @@ impl FilmTile {
     /// general path, bit for bit: the pixel is `⌊p − corner⌋` per axis, reached when its centre
     /// is within the radius (both exact in `f64`), and it gets `filter_weight · (rgb · w)`.
     #[inline(always)]
-    fn add_one_pixel(
+    fn add_one_pixel<const NARROW: bool>(
         &mut self,
         filter_weight: f64,
         p: [f32; 2],
@@ -695,10 +705,11 @@ impl FilmTile {
         // the stored area (false for NaN and ∞ too; then ⌊q⌋ is a stored pixel, |q| < 2³¹ and
         // the floor above is exact), not on a pixel edge (where a box of radius ½ reaches the
         // pixels on both sides), and the pixel's centre, |f − ½| away (exact), within the
-        // radius (only radii below ½ can miss it).
+        // radius (only radii below ½, `NARROW`, can miss it: a test left out when no radius is).
         let inside = (q[0] > 0.0) & (q[0] < g.size_f[0]) & (q[1] > 0.0) & (q[1] < g.size_f[1]);
         let off_edge = (f[0] > 0.0) & (f[1] > 0.0);
-        let reached = ((f[0] - 0.5).abs() <= g.radius[0]) & ((f[1] - 0.5).abs() <= g.radius[1]);
+        let reached = !NARROW
+            || (((f[0] - 0.5).abs() <= g.radius[0]) & ((f[1] - 0.5).abs() <= g.radius[1]));
         if !(inside & off_edge & reached) {
             return false;
         }
@@ -895,7 +906,10 @@ mod tests {
         assert_eq!(tile_for(&Lanczos::default(), cfg).fast, FastPath::None);
         assert_eq!(
             tile_for(&Boxcar::default(), cfg).fast,
-            FastPath::OnePixel(1.0)
+            FastPath::OnePixel {
+                weight: 1.0,
+                narrow: false
+            }
         );
         let clamped = FilmConfig {
             max_component: Some(4.0),
