@@ -708,8 +708,8 @@ impl FilmTile {
         // radius (only radii below ½, `NARROW`, can miss it: a test left out when no radius is).
         let inside = (q[0] > 0.0) & (q[0] < g.size_f[0]) & (q[1] > 0.0) & (q[1] < g.size_f[1]);
         let off_edge = (f[0] > 0.0) & (f[1] > 0.0);
-        let reached = !NARROW
-            || (((f[0] - 0.5).abs() <= g.radius[0]) & ((f[1] - 0.5).abs() <= g.radius[1]));
+        let reached =
+            !NARROW || (((f[0] - 0.5).abs() <= g.radius[0]) & ((f[1] - 0.5).abs() <= g.radius[1]));
         if !(inside & off_edge & reached) {
             return false;
         }
