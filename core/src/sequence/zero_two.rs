@@ -82,10 +82,12 @@ impl ZeroTwo {
     /// ```
     #[inline]
     pub fn sample_2d_u32(&self, index: u32) -> [u32; 2] {
-        [
-            index.reverse_bits() ^ self.scramble[0],
-            sobol_u32(index, 1) ^ self.scramble[1],
-        ]
+        let [x, y] = match FIRST_POINTS.get(index as usize) {
+            // A pixel's first points (any sampler with at most 256 samples a pixel): one read.
+            Some(&p) => p,
+            None => [index.reverse_bits(), sobol_u32(index, 1)],
+        };
+        [x ^ self.scramble[0], y ^ self.scramble[1]]
     }
 
     /// Point `index` as two `f32` in `[0, 1)`.
@@ -109,6 +111,29 @@ impl ZeroTwo {
             sobol_u32(index, 1) ^ self.scramble[1]
         }
     }
+}
+
+/// The unscrambled points `0..256`, `[reverse_bits(i), sobol_u32(i, 1)]`, computed at compile
+/// time from the recurrence of the second dimension's columns (`V_1 = 2³¹`,
+/// `V_{k+1} = V_k ⊕ (V_k ≫ 1)`; checked against the Joe–Kuo table by the tests).
+const FIRST_POINTS: [[u32; 2]; 256] = first_points();
+
+const fn first_points() -> [[u32; 2]; 256] {
+    let mut out = [[0u32; 2]; 256];
+    let mut i = 0;
+    while i < 256 {
+        let (mut y, mut v, mut k) = (0u32, 1u32 << 31, 0);
+        while k < 8 {
+            if (i >> k) & 1 == 1 {
+                y ^= v;
+            }
+            v ^= v >> 1;
+            k += 1;
+        }
+        out[i] = [(i as u32).reverse_bits(), y];
+        i += 1;
+    }
+    out
 }
 
 #[inline(always)]
