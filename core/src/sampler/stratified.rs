@@ -8,12 +8,7 @@ use crate::math::ONE_MINUS_EPSILON;
 /// `x ≥ 0` (finite by construction here) kept below 1: one `minss`, no branch.
 #[inline(always)]
 fn below_one(x: f32) -> f32 {
-    // Not `f32::min`: vectorised, its NaN rule costs four more instructions a lane pair.
-    if x < ONE_MINUS_EPSILON {
-        x
-    } else {
-        ONE_MINUS_EPSILON
-    }
+    x.min(ONE_MINUS_EPSILON)
 }
 
 pub use crate::stratify::Jitter;
