@@ -366,21 +366,20 @@ impl PhaseTable {
     #[inline]
     fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         super::table::check_footprint(nx, out)?;
+        let (sx, px) = self.axes[0].locate(d0[0]);
+        let (sy, py) = self.axes[1].locate(d0[1]);
+        if nx <= 4 && out.len() <= 4 * nx && sx == 0 && sy == 0 {
+            // Up to 4 × 4 starting at the first taps (radius ≤ 2, the usual filters): four
+            // taps per axis (`0 − shift` is exactly 0 in the mask) and their outer product.
+            let fx4 = self.axes[0].factors4(d0[0], px);
+            let fy4 = self.axes[1].factors4(d0[1], py);
+            super::table::narrow_outer_product(&fx4, &fy4, nx, out);
+            return Ok(());
+        }
         let mut fx = [0.0f32; MAX_TAPS];
         let mut fy = [0.0f32; MAX_TAPS];
         let kx = self.axes[0].factors(d0[0], &mut fx);
         let ky = self.axes[1].factors(d0[1], &mut fy);
-        if nx <= 4
-            && out.len() <= 16
-            && kx == 0
-            && ky == 0
-            && let Some(fx4) = fx.first_chunk()
-        {
-            // Up to 4 × 4 starting at the first taps (radius ≤ 2, the usual filters): the rows
-            // straight from the two tap rows.
-            super::table::narrow_outer_product(fx4, &fy, nx, out);
-            return Ok(());
-        }
         // Row 0 holds the x factors until it is scaled last; every other row is row 0 times
         // its y factor. A footprint that starts at its first tap (shift 0, the usual case)
         // copies the taps straight.
@@ -428,11 +427,11 @@ impl PhaseTable {
 }
 
 impl PhaseAxis {
-    /// The taps of a footprint whose first pixel is at offset `d0`, masked to the radius:
-    /// `out[k]` is the weight of the pixel at `d0 + i` for `i = k − shift`, with the returned
-    /// `shift = ⌊d0 + r⌋` (0 when the first pixel is the footprint's first).
+    /// Where a footprint whose first pixel is at offset `d0` starts in the taps: the shift
+    /// `⌊d0 + r⌋` (0 when the first pixel is the footprint's first) and the phase `c − shift`
+    /// at which the tap row is read.
     #[inline(always)]
-    fn factors(&self, d0: f32, out: &mut [f32; MAX_TAPS]) -> isize {
+    fn locate(&self, d0: f32) -> (isize, f32) {
         let s = d0 + self.radius;
         // ⌊s⌋ for |s| < 2²⁴ with the clamp keeping the conversion exact; beyond, every tap is 0.
         let c = s.max(-(2.0 * MAX_TAPS as f32)).min(2.0 * MAX_TAPS as f32);
@@ -440,7 +439,16 @@ impl PhaseAxis {
         let m = c + MAGIC;
         let r = m - MAGIC;
         let shift = (m.to_bits().wrapping_sub(MAGIC_BITS) as i32 as isize) - isize::from(r > c);
-        self.row(c - shift as f32, out);
+        (shift, c - shift as f32)
+    }
+
+    /// The taps of a footprint whose first pixel is at offset `d0`, masked to the radius:
+    /// `out[k]` is the weight of the pixel at `d0 + i` for `i = k − shift`, with the returned
+    /// `shift = ⌊d0 + r⌋` (0 when the first pixel is the footprint's first).
+    #[inline(always)]
+    fn factors(&self, d0: f32, out: &mut [f32; MAX_TAPS]) -> isize {
+        let (shift, phase) = self.locate(d0);
+        self.row(phase, out);
         // Mask every tap whose pixel is past the radius: |d0 + (k − shift)| > r, with k − shift
         // formed exactly in floats so the loop vectorises.
         // Only the padded row (taps past it are 0 already), four lanes at a time.
@@ -455,6 +463,18 @@ impl PhaseAxis {
             }
         }
         shift
+    }
+
+    /// Lanes 0–3 of [`factors`](Self::factors) for a footprint at shift 0 (`phase` from
+    /// [`locate`](Self::locate)), bit for bit: one 4-lane interpolation and mask instead of the
+    /// whole padded row, for footprints of at most four pixels along this axis.
+    #[inline(always)]
+    fn factors4(&self, d0: f32, phase: f32) -> [f32; 4] {
+        let mut out = self.row4(phase);
+        for (k, w) in out.iter_mut().enumerate() {
+            *w *= mask((TAP_INDEX[k] + d0).abs() <= self.radius);
+        }
+        out
     }
 }
 
