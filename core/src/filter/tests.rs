@@ -1246,6 +1246,45 @@ fn phase_rows_are_exact_at_the_stored_phases() {
 }
 
 #[test]
+fn phase_footprints_up_to_4x4_match_the_general_path_and_the_weights() {
+    // A footprint of at most 4 × 4 that starts at the first taps reads four taps per axis; the
+    // same pixels inside an 8 × 8 footprint (the general path: whole padded rows) must get the
+    // same weights bit for bit, and each must be the table's weight at that pixel (up to the
+    // rounding of the offset `d0 + i`).
+    let mut rng = default_rng(41);
+    for (f, _) in cases() {
+        if f.radius()[0] >= 8.0 || f.radius()[1] >= 8.0 {
+            continue;
+        }
+        let t = PhaseTable::new(&f).unwrap();
+        let [rx, ry] = f.radius();
+        for k in 0..400 {
+            // Offsets of a footprint's first pixel at shift 0: −r + [0, 1), the lattice of
+            // 64ths (stored phases), the ends, and random.
+            let frac = |rng: &mut _, k: usize| match k % 4 {
+                0 => 0.0,
+                1 => (k % 64) as f32 / 64.0,
+                2 => 1.0 - f32::EPSILON,
+                _ => uniform_f32(rng),
+            };
+            let d0 = [-rx + frac(&mut rng, k), -ry + frac(&mut rng, k / 4)];
+            let mut small = [f32::NAN; 16];
+            let mut big = [f32::NAN; 64];
+            t.footprint(d0, 4, &mut small).unwrap();
+            t.footprint(d0, 8, &mut big).unwrap();
+            for j in 0..4 {
+                for i in 0..4 {
+                    let w = small[j * 4 + i];
+                    assert_eq!(w.to_bits(), big[j * 8 + i].to_bits(), "{f} {d0:?} ({i}, {j})");
+                    let want = t.weight(d0[0] + i as f32, d0[1] + j as f32);
+                    assert!((w - want).abs() <= 1e-5, "{f} {d0:?} ({i}, {j}): {w} vs {want}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
 fn phase_table_error_is_below_the_64_entry_tables() {
     // The film's table before phase tables was a 64-entry SeparableTable; the phase grid
     // (spacing 1/64 pixel) is at least as fine for radii ≥ 1, and these are the measured bounds
