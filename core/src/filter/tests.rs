@@ -1275,9 +1275,16 @@ fn phase_footprints_up_to_4x4_match_the_general_path_and_the_weights() {
             for j in 0..4 {
                 for i in 0..4 {
                     let w = small[j * 4 + i];
-                    assert_eq!(w.to_bits(), big[j * 8 + i].to_bits(), "{f} {d0:?} ({i}, {j})");
+                    assert_eq!(
+                        w.to_bits(),
+                        big[j * 8 + i].to_bits(),
+                        "{f} {d0:?} ({i}, {j})"
+                    );
                     let want = t.weight(d0[0] + i as f32, d0[1] + j as f32);
-                    assert!((w - want).abs() <= 1e-5, "{f} {d0:?} ({i}, {j}): {w} vs {want}");
+                    assert!(
+                        (w - want).abs() <= 1e-5,
+                        "{f} {d0:?} ({i}, {j}): {w} vs {want}"
+                    );
                 }
             }
         }
