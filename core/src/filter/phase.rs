@@ -471,8 +471,13 @@ impl PhaseAxis {
     #[inline(always)]
     fn factors4(&self, d0: f32, phase: f32) -> [f32; 4] {
         let mut out = self.row4(phase);
-        for (k, w) in out.iter_mut().enumerate() {
-            *w *= mask((TAP_INDEX[k] + d0).abs() <= self.radius);
+        // At shift 0, `d0 + r ∈ [0, 1)`: the four pixels lie at `d0 + k ∈ [−r, 4 − r)`, all
+        // inside the radius once `r ≥ 2` (the radius-2 defaults), where the mask would keep
+        // every tap.
+        if self.radius < 2.0 {
+            for (k, w) in out.iter_mut().enumerate() {
+                *w *= mask((TAP_INDEX[k] + d0).abs() <= self.radius);
+            }
         }
         out
     }
