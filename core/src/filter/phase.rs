@@ -378,8 +378,8 @@ impl PhaseTable {
         }
         let mut fx = [0.0f32; MAX_TAPS];
         let mut fy = [0.0f32; MAX_TAPS];
-        let kx = self.axes[0].factors(d0[0], &mut fx);
-        let ky = self.axes[1].factors(d0[1], &mut fy);
+        let kx = self.axes[0].factors(d0[0], (sx, px), &mut fx);
+        let ky = self.axes[1].factors(d0[1], (sy, py), &mut fy);
         // Row 0 holds the x factors until it is scaled last; every other row is row 0 times
         // its y factor. A footprint that starts at its first tap (shift 0, the usual case)
         // copies the taps straight.
@@ -442,12 +442,12 @@ impl PhaseAxis {
         (shift, c - shift as f32)
     }
 
-    /// The taps of a footprint whose first pixel is at offset `d0`, masked to the radius:
-    /// `out[k]` is the weight of the pixel at `d0 + i` for `i = k − shift`, with the returned
-    /// `shift = ⌊d0 + r⌋` (0 when the first pixel is the footprint's first).
+    /// The taps of a footprint whose first pixel is at offset `d0`, masked to the radius, given
+    /// its [`locate`](Self::locate)d `(shift, phase)`: `out[k]` is the weight of the pixel at
+    /// `d0 + i` for `i = k − shift`; returns `shift = ⌊d0 + r⌋` (0 when the first pixel is the
+    /// footprint's first).
     #[inline(always)]
-    fn factors(&self, d0: f32, out: &mut [f32; MAX_TAPS]) -> isize {
-        let (shift, phase) = self.locate(d0);
+    fn factors(&self, d0: f32, (shift, phase): (isize, f32), out: &mut [f32; MAX_TAPS]) -> isize {
         self.row(phase, out);
         // Mask every tap whose pixel is past the radius: |d0 + (k − shift)| > r, with k − shift
         // formed exactly in floats so the loop vectorises.
