@@ -188,29 +188,37 @@ static DIGITS: [[u8; 33]; 1024] = build_digits();
 /// Index classes of the fast path: class `c = ⌈bit_len(a)/4⌉` (`0 ..= 8`) for `a < 2³²`.
 const CLASSES: usize = 9;
 
-/// What the fast path reads for one base and one index class `c`: the digit count `n` (the
-/// base-`b` digits of `2^(4c) − 1`, capped at `k`, then rounded up to whole table chunks where
-/// that stays within `k`), `magic = ⌈2⁶⁴/bⁿ⌉`, `inv_pow = 1/bⁿ` (correctly rounded), and the
-/// split of `n` into leading single digits and table chunks.
+/// What the fast path reads for one base and one index class `c`. The class's indices have at
+/// most `n` digits (the base-`b` digits of `2^(4c) − 1`, capped at `k`, rounded up to whole
+/// table chunks where that stays within `k`); `y = a·magic`, `magic = ⌈2⁶⁴/bⁿ⌉`, is the
+/// fixed-point fraction `a/bⁿ`. With a digit-reversal table of chunk `c = b^j`, the digits are
+/// read as `m = ⌈n/j⌉` whole chunks, the most significant one short by `pad = m·j − n` leading
+/// zeros: the first step multiplies `y` by `first = b^(j − pad)` and the rest by `c`, each
+/// step's chunk looked up in the table. The reversed chunks sum to `R' = R·b^pad`, exactly (`R`
+/// the reversal of the `n` digits), and the value is `R'·inv`, `inv = 1/b^(n + pad) = c^−m`
+/// correctly rounded. Without a table (`j = 1`), `m = n` single digits, `first = b`, `pad = 0`.
 #[derive(Clone, Copy)]
 struct ClassConsts {
     magic: u64,
-    inv_pow: f64,
+    first: u64,
+    inv: f64,
+    /// `b^pad`, exact: what the incremental fill multiplies its `n`-digit `R` by.
+    scale: f64,
     n: u8,
-    /// The leading digits taken one at a time (`n mod j`), then `n / j` chunks.
-    lead: u8,
-    chunks: u8,
+    /// `m`: the steps, table chunks or single digits.
+    steps: u8,
 }
 
 const NO_CLASS: ClassConsts = ClassConsts {
     magic: 0,
-    inv_pow: 1.0,
+    first: 0,
+    inv: 1.0,
+    scale: 1.0,
     n: 0,
-    lead: 0,
-    chunks: 0,
+    steps: 0,
 };
 
-/// Everything the `f32` fast path of one base reads: a header and one 24-byte record per index
+/// Everything the `f32` fast path of one base reads: a header and one 40-byte record per index
 /// class, so a lookup touches the header's cache line and its class's (plus the base's
 /// digit-reversal table, for bases up to 61).
 ///
@@ -333,13 +341,15 @@ const fn build_fast() -> [FastBase; 1024] {
             if j > 1 && whole as u32 <= info.k {
                 n = whole;
             }
-            let pow = info.b.pow(n as u32);
+            let steps = if j > 1 { n.div_ceil(j as u8) } else { n };
+            let pad = steps as u32 * j - n as u32;
             f.class[c] = ClassConsts {
-                magic: u64::MAX / pow + 1,
-                inv_pow: 1.0 / pow as f64,
+                magic: u64::MAX / info.b.pow(n as u32) + 1,
+                first: info.b.pow(j - pad),
+                inv: 1.0 / info.b.pow(n as u32 + pad) as f64,
+                scale: info.b.pow(pad) as f64,
                 n,
-                lead: if j > 1 { n % j as u8 } else { n },
-                chunks: if j > 1 { n / j as u8 } else { 0 },
+                steps,
             };
             c += 1;
         }
@@ -358,12 +368,13 @@ fn index_class(a: u64) -> usize {
     ((bit_len(a) + 3) >> 2).min(CLASSES - 1)
 }
 
-/// `R·(1/bⁿ)` narrowed to `f32`: the one rounding rule both the random-access fast path and the
-/// incremental fill use, so they agree bit for bit. `R < 2³³` is exact in `f64`; the product is
-/// within 2⁻⁵² relative, far below `f32`'s rounding step, so the result is within 1 ulp.
+/// `R'·inv` narrowed to `f32` ([`ClassConsts`]): the one rounding rule both the random-access
+/// fast path and the incremental fill use, so they agree bit for bit. `R' < 2⁴⁴` is exact in
+/// `f64`; the product is within 2⁻⁵² relative, far below `f32`'s rounding step, so the result
+/// is within 1 ulp.
 #[inline(always)]
-fn narrow(rev: f64, inv_pow: f64) -> f32 {
-    ((rev * inv_pow) as f32).min(ONE_MINUS_EPSILON)
+fn narrow(rev: f64, inv: f64) -> f32 {
+    ((rev * inv) as f32).min(ONE_MINUS_EPSILON)
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -639,12 +650,13 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     }
 }
 
-/// Φ_b(a) for `a < b^k` (so `a < 2³²`): the reversed digits `R = Σ e_j·b^j` (`e_j` the digits
-/// of `a`, most significant first) summed exactly in `f64`, then [`narrow`]ed.
+/// Φ_b(a) for `a < b^k` (so `a < 2³²`): the reversed digits `R' = Σ_s T[e_s]·c^s` (`e_s` the
+/// index's chunks, most significant first, `T` the digit-reversal table) summed exactly in
+/// `f64`, then [`narrow`]ed by the class's `inv` (see [`ClassConsts`]).
 ///
-/// One 64×64→128 multiply per digit hands out the digit (see the module docs); the sum runs in
+/// One 64×64→128 multiply per chunk hands it out (see the module docs); the sum runs in
 /// floating point beside the integer multiplier, and its only loop-carried chain is one add.
-/// The digit count comes from the index's length in nibbles ([`FastBase`]), so the loop exit
+/// The step count comes from the index's length in nibbles ([`FastBase`]), so the loop exit
 /// is predictable.
 #[inline(always)]
 fn phi_fast(f: &FastBase, a: u64) -> f32 {
@@ -655,31 +667,35 @@ fn phi_fast(f: &FastBase, a: u64) -> f32 {
 #[inline(always)]
 fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
     let class = &f.class[class];
-    let b = u128::from(f.b);
-    let bf = f64::from(f.b);
-    let mut y = a.wrapping_mul(class.magic);
-    let mut rev = 0.0f64;
-    let mut weight = 1.0f64;
-    for _ in 0..class.lead {
-        let t = u128::from(y) * b;
-        rev += (t >> 64) as i64 as f64 * weight;
-        weight *= bf;
-        y = t as u64;
+    let y = a.wrapping_mul(class.magic);
+    let c = u64::from(f.chunk);
+    if c == u64::from(f.b) {
+        // No table: one digit per step, each its own reversal.
+        let bf = f64::from(f.b);
+        let (mut y, mut rev, mut weight) = (y, 0.0f64, 1.0f64);
+        for _ in 0..class.steps {
+            let t = u128::from(y) * u128::from(c);
+            rev += (t >> 64) as i64 as f64 * weight;
+            weight *= bf;
+            y = t as u64;
+        }
+        return narrow(rev, class.inv);
     }
-    // The rest `j` digits at a time: one multiply by `c = b^j` hands out a chunk, whose reversed
-    // digits come from the table (the product's error bound is the same as digit by digit: the
-    // multipliers' product is still bⁿ).
-    let c = u128::from(f.chunk);
-    let cf = f64::from(f.chunk);
+    // The first chunk, padded with leading zeros (class 0, `first = 0`, reads entry 0: zero).
     let table = f.table as usize;
-    for _ in 0..class.chunks {
-        let t = u128::from(y) * c;
-        let e = (t >> 64) as usize;
-        rev += f64::from(CHUNK_REV[(table + e) & (CHUNK_REV_LEN - 1)]) * weight;
+    let lookup = |e: u64| f64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)]);
+    let t = u128::from(y) * u128::from(class.first);
+    let mut rev = lookup((t >> 64) as u64);
+    let mut y = t as u64;
+    let cf = f64::from(f.chunk);
+    let mut weight = cf;
+    for _ in 1..class.steps {
+        let t = u128::from(y) * u128::from(c);
+        rev += lookup((t >> 64) as u64) * weight;
         weight *= cf;
         y = t as u64;
     }
-    narrow(rev, class.inv_pow)
+    narrow(rev, class.inv)
 }
 
 /// Writes Φ_b(first), Φ_b(first + 1), … (`b = prime(dim)`) into `out[offset], out[offset + stride], …`, bit for
@@ -745,9 +761,10 @@ pub(crate) fn fill_consecutive(
             rest /= b;
             rev += digits[j] * weights[j];
         }
-        let inv_pow = class.inv_pow;
+        let (scale, inv) = (class.scale, class.inv);
         loop {
-            out[k] = narrow(rev as i64 as f64, inv_pow);
+            // R·b^pad is exact (below b^(n + pad) < 2⁴⁴): the fast path's R', bit for bit.
+            out[k] = narrow(rev as i64 as f64 * scale, inv);
             a += 1;
             // Increment the digits, carrying; R follows each changed digit.
             for j in 0..n {

@@ -59,8 +59,14 @@ fn tables_are_consistent() {
                 u128::from(class.magic),
                 (1u128 << 64).div_ceil(u128::from(b.pow(n)))
             );
-            assert_eq!(class.inv_pow, 1.0 / b.pow(n) as f64);
-            assert_eq!(u32::from(class.lead) + u32::from(class.chunks) * j_of(f), n);
+            // m steps of j digits cover the n digits with fewer than j to spare (pad), the
+            // first step taking the j − pad digits left; the value is R·b^pad / b^(n + pad).
+            let (j, m) = (j_of(f), u32::from(class.steps));
+            let pad = m * j - n;
+            assert!(pad < j, "base {b}, class {c}");
+            assert_eq!(class.first, b.pow(j - pad));
+            assert_eq!(class.scale, b.pow(pad) as f64);
+            assert_eq!(class.inv, 1.0 / b.pow(n + pad) as f64);
         }
         for (len, &n) in DIGITS[d].iter().enumerate().skip(1) {
             // DIGITS[d][len] digits hold every chunk of that bit length below b^k.
