@@ -200,10 +200,9 @@ const CLASSES: usize = 9;
 #[derive(Clone, Copy)]
 struct ClassConsts {
     magic: u64,
-    first: u64,
     inv: f64,
-    /// `b^pad`, exact: what the incremental fill multiplies its `n`-digit `R` by.
-    scale: f64,
+    /// `b^(j − pad) ≤ max(c, b)`.
+    first: u16,
     n: u8,
     /// `m`: the steps, table chunks or single digits.
     steps: u8,
@@ -211,14 +210,13 @@ struct ClassConsts {
 
 const NO_CLASS: ClassConsts = ClassConsts {
     magic: 0,
-    first: 0,
     inv: 1.0,
-    scale: 1.0,
+    first: 0,
     n: 0,
     steps: 0,
 };
 
-/// Everything the `f32` fast path of one base reads: a header and one 40-byte record per index
+/// Everything the `f32` fast path of one base reads: a header and one 24-byte record per index
 /// class, so a lookup touches the header's cache line and its class's (plus the base's
 /// digit-reversal table, for bases up to 61).
 ///
@@ -345,9 +343,8 @@ const fn build_fast() -> [FastBase; 1024] {
             let pad = steps as u32 * j - n as u32;
             f.class[c] = ClassConsts {
                 magic: u64::MAX / info.b.pow(n as u32) + 1,
-                first: info.b.pow(j - pad),
+                first: info.b.pow(j - pad) as u16,
                 inv: 1.0 / info.b.pow(n as u32 + pad) as f64,
-                scale: info.b.pow(pad) as f64,
                 n,
                 steps,
             };
@@ -761,7 +758,13 @@ pub(crate) fn fill_consecutive(
             rest /= b;
             rev += digits[j] * weights[j];
         }
-        let (scale, inv) = (class.scale, class.inv);
+        // R' = R·b^pad, pad = m·j − n (0 without a table).
+        let pad = if f.chunk == f.b {
+            0
+        } else {
+            u32::from(class.steps) * chunk_len(b) - n as u32
+        };
+        let (scale, inv) = (b.pow(pad) as f64, class.inv);
         loop {
             // R·b^pad is exact (below b^(n + pad) < 2⁴⁴): the fast path's R', bit for bit.
             out[k] = narrow(rev as i64 as f64 * scale, inv);
