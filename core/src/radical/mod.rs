@@ -635,17 +635,17 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     let first = (dim % PRIME_COUNT) as usize;
     // The usual run: clear of base 2 and of the wrap, so each value is its base's fast path
     // with no per-dimension checks but the index's size.
-    if first != 0 {
-        if let Some(bases) = FAST.get(first..first + out.len()) {
-            for ((x, fast), d) in out.iter_mut().zip(bases).zip(first as u32..) {
-                *x = if a < u64::from(fast.big) {
-                    phi_fast_class(fast, class, a)
-                } else {
-                    radical_inverse(d, a)
-                };
-            }
-            return;
+    if first != 0
+        && let Some(bases) = FAST.get(first..first + out.len())
+    {
+        for ((x, fast), d) in out.iter_mut().zip(bases).zip(first as u32..) {
+            *x = if a < u64::from(fast.big) {
+                phi_fast_class(fast, class, a)
+            } else {
+                radical_inverse(d, a)
+            };
         }
+        return;
     }
     let mut d = first;
     for x in out {
