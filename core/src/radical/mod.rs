@@ -632,28 +632,31 @@ pub fn radical_inverse_at(dim: u32, indices: &[u64], out: &mut [f32]) -> Result<
 #[inline]
 pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     let class = index_class(a);
+    // Φ in dimension `d ≠ 0` (base `fast.b`): its fast path when `a` is below its limit.
+    let value = |fast: &FastBase, d: usize| {
+        if a < u64::from(fast.big) {
+            phi_fast_class(fast, class, a)
+        } else {
+            radical_inverse(d as u32, a)
+        }
+    };
     let first = (dim % PRIME_COUNT) as usize;
-    // The usual run: clear of base 2 and of the wrap, so each value is its base's fast path
-    // with no per-dimension checks but the index's size.
+    // The usual run: clear of base 2 and of the wrap, so no per-dimension checks but the
+    // index's size.
     if first != 0
         && let Some(bases) = FAST.get(first..first + out.len())
     {
-        for ((x, fast), d) in out.iter_mut().zip(bases).zip(first as u32..) {
-            *x = if a < u64::from(fast.big) {
-                phi_fast_class(fast, class, a)
-            } else {
-                radical_inverse(d, a)
-            };
+        for ((x, fast), d) in out.iter_mut().zip(bases).zip(first..) {
+            *x = value(fast, d);
         }
         return;
     }
     let mut d = first;
     for x in out {
-        let fast = &FAST[d];
-        *x = if d != 0 && a < u64::from(fast.big) {
-            phi_fast_class(fast, class, a)
+        *x = if d != 0 {
+            value(&FAST[d], d)
         } else {
-            radical_inverse(d as u32, a)
+            radical_inverse(0, a)
         };
         d += 1;
         if d == PRIME_COUNT as usize {
@@ -773,13 +776,10 @@ pub(crate) fn fill_consecutive(
             rest /= b;
             rev += digits[j] * weights[j];
         }
-        // R' = R·b^pad, pad = m·j − n (0 without a table).
-        let pad = if f.chunk == f.b {
-            0
-        } else {
-            u32::from(class.steps) * chunk_len(b) - n as u32
-        };
-        let (scale, inv) = (b.pow(pad) as f64, class.inv);
+        // R' = R·b^pad, and b^pad = c / b^(j − pad) = chunk / first (1 without a table, where
+        // first = chunk = b, and for class 0, whose first is 0).
+        let scale = f.chunk.checked_div(u32::from(class.first)).unwrap_or(1);
+        let (scale, inv) = (f64::from(scale), class.inv);
         loop {
             // R·b^pad is exact (below b^(n + pad) < 2⁴⁴): the fast path's R', bit for bit.
             out[k] = narrow(rev as i64 as f64 * scale, inv);
