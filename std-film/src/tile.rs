@@ -497,6 +497,10 @@ fn one_pixel_weight(setup: &Setup) -> Option<f64> {
     (setup.max_component.is_none() && t.radius().iter().all(|&r| r <= 0.5)).then_some(weight)
 }
 
+/// Tiles of filters with every radius below this store a guard band outside the film
+/// ([`FilmTile::stored_bounds`]): the 4 × 4 path's radii (4 or 5 taps) and all smaller ones.
+const BAND_RADIUS: f32 = 2.5;
+
 /// The pixels whose centres lie within the filter radius `[rx, ry]` of rectangle `b`: `b` grown
 /// by the radius, in whole pixels.
 fn reach(b: Bounds, [rx, ry]: [f32; 2]) -> Bounds {
@@ -516,18 +520,26 @@ impl FilmTile {
         let grown = reach(b, radius);
         let fb = setup.pixel_bounds;
         let mut pixel_bounds = grown.intersect(&fb);
-        // The stored pixels: the film pixels above, and along the film's edges a guard band of
-        // the pixels just outside it that the tile's samples reach. Their sums are never merged;
-        // they let a sample near the film's edge take the 4 × 4 path with its whole footprint
-        // stored, instead of the general path that clips it.
-        let mut stored = grown.intersect(&reach(fb, radius));
+        let fast = FastPath::for_setup(&setup);
+        // The stored pixels: the film pixels above and, for radii below `BAND_RADIUS` (every
+        // film that can take the 4 × 4 path, clamped or not), a guard band along the film's
+        // edges of the pixels just outside it that the tile's samples reach, at most two wide.
+        // Their sums are never merged; they let a sample near the film's edge take the 4 × 4
+        // path with its whole footprint stored, instead of the general path that clips it, and
+        // the general path then stores the same unclipped footprint, so both add the same bits.
+        // Wider filters, whose radius may reach `MAX_RADIUS`, store no band: it would be most
+        // of the allocation for nothing.
+        let mut stored = if radius.iter().all(|&r| r < BAND_RADIUS) {
+            grown.intersect(&reach(fb, radius))
+        } else {
+            pixel_bounds
+        };
         if pixel_bounds.is_empty() || b.is_empty() {
             // Nothing to store: an empty rectangle at the film's corner keeps merges trivial.
             pixel_bounds = Bounds::new(fb.x0, fb.y0, fb.x0, fb.y0);
             stored = pixel_bounds;
         }
         let n = stored.area() as usize;
-        let fast = FastPath::for_setup(&setup);
         FilmTile {
             spec,
             pixel_bounds,
@@ -877,11 +889,35 @@ impl FilmTile {
 mod tests {
     use super::*;
     use crate::{Film, FilmConfig};
-    use nyquist::filter::{Boxcar, Lanczos, Mitchell, Triangle};
+    use nyquist::filter::{Boxcar, Gaussian, Lanczos, Mitchell, Triangle};
 
     fn tile_for(filter: &dyn Filter, config: FilmConfig) -> FilmTile {
         let film = Film::new(config, filter).unwrap();
         film.tile(film.tiles(16).unwrap()[0])
+    }
+
+    /// Only filters of radius below 2.5 (those of the 4 × 4 path and smaller) store a guard
+    /// band outside the film, at most two pixels wide: a film of 8 × 8 pixels with a filter of
+    /// radius 1000 stores its 64 pixels, not ~2000².
+    #[test]
+    fn only_small_radii_store_a_guard_band() {
+        let cfg = FilmConfig::new(8, 8);
+        let film = Bounds::new(0, 0, 8, 8);
+        let wide = tile_for(&Gaussian::new([1000.0, 1000.0], 2.0).unwrap(), cfg);
+        assert_eq!(wide.stored_bounds(), film);
+        assert_eq!(wide.pixels.len(), 64);
+        assert_eq!(tile_for(&Lanczos::default(), cfg).stored_bounds(), film);
+        let clamped = FilmConfig {
+            max_component: Some(4.0),
+            ..cfg
+        };
+        for c in [cfg, clamped] {
+            let m = tile_for(&Mitchell::default(), c);
+            assert_eq!(m.stored_bounds(), Bounds::new(-2, -2, 10, 10));
+            assert_eq!(m.pixel_bounds(), film);
+        }
+        let box_tile = tile_for(&Boxcar::default(), cfg);
+        assert_eq!(box_tile.stored_bounds(), Bounds::new(-1, -1, 9, 9));
     }
 
     /// The integration tests compare the 4 × 4 path with the general path; this checks that
