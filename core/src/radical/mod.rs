@@ -234,6 +234,8 @@ struct FastBase {
     chunk: u32,
     /// Offset of this base's table in [`CHUNK_REV`].
     table: u32,
+    /// `chunk` as an `f64`: a step's weight factor.
+    chunk_f: f64,
     class: [ClassConsts; CLASSES],
 }
 
@@ -313,6 +315,7 @@ const fn build_fast() -> [FastBase; 1024] {
         big: 0,
         chunk: 0,
         table: 0,
+        chunk_f: 0.0,
         class: [NO_CLASS; CLASSES],
     }; 1024];
     let mut table = 0u32;
@@ -325,6 +328,7 @@ const fn build_fast() -> [FastBase; 1024] {
             big: info.big as u32,
             chunk: info.b.pow(j) as u32,
             table,
+            chunk_f: info.b.pow(j) as f64,
             class: [NO_CLASS; CLASSES],
         };
         if j > 1 {
@@ -357,6 +361,21 @@ const fn build_fast() -> [FastBase; 1024] {
 }
 
 static FAST: [FastBase; 1024] = build_fast();
+
+/// The smallest `big` of the bases past base 2 (`1627²`): an index below it takes every base's
+/// fast path.
+const MIN_BIG: u64 = {
+    let bases = build_bases();
+    let mut min = u64::MAX;
+    let mut i = 1;
+    while i < 1024 {
+        if bases[i].big < min {
+            min = bases[i].big;
+        }
+        i += 1;
+    }
+    min
+};
 
 /// The class `⌈bit_len(a)/4⌉` of an index below 2³² (its length in nibbles), an index into
 /// [`FastBase::class`].
@@ -527,6 +546,13 @@ fn base2_u32(a: u32) -> f32 {
 /// ```
 #[inline]
 pub fn radical_inverse(dim: u32, a: u64) -> f32 {
+    radical_inverse_inlined(dim, a)
+}
+
+/// [`radical_inverse`], always inlined: with `dim` a constant the base's table reads fold away
+/// (a sampler's fixed camera dimensions).
+#[inline(always)]
+pub(crate) fn radical_inverse_inlined(dim: u32, a: u64) -> f32 {
     let d = (dim % PRIME_COUNT) as usize;
     if d == 0 {
         if a >> 32 == 0 {
@@ -646,8 +672,14 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     if first != 0
         && let Some(bases) = FAST.get(first..first + out.len())
     {
-        for ((x, fast), d) in out.iter_mut().zip(bases).zip(first..) {
-            *x = value(fast, d);
+        if a < MIN_BIG {
+            for (x, fast) in out.iter_mut().zip(bases) {
+                *x = phi_fast_class(fast, class, a);
+            }
+        } else {
+            for ((x, fast), d) in out.iter_mut().zip(bases).zip(first..) {
+                *x = value(fast, d);
+            }
         }
         return;
     }
@@ -700,16 +732,34 @@ fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
     let table = f.table as usize;
     let lookup = |e: u64| f64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)]);
     let t = u128::from(y) * u128::from(class.first);
-    let mut rev = lookup((t >> 64) as u64);
-    let mut y = t as u64;
-    let cf = f64::from(f.chunk);
-    let mut weight = cf;
-    for _ in 1..class.steps {
+    let r0 = lookup((t >> 64) as u64);
+    let y = t as u64;
+    let cf = f.chunk_f;
+    // Every partial sum is an integer below 2⁴⁴, exact in `f64`, so any grouping gives the
+    // same R': the common step counts run straight-line (Horner from the second chunk).
+    let step = |y: u64| {
         let t = u128::from(y) * u128::from(c);
-        rev += lookup((t >> 64) as u64) * weight;
-        weight *= cf;
-        y = t as u64;
-    }
+        (lookup((t >> 64) as u64), t as u64)
+    };
+    let rev = match class.steps {
+        0 | 1 => r0,
+        2 => r0 + step(y).0 * cf,
+        3 => {
+            let (r1, y) = step(y);
+            let (r2, _) = step(y);
+            r0 + (r1 + r2 * cf) * cf
+        }
+        _ => {
+            let (mut rev, mut y, mut weight) = (r0, y, cf);
+            for _ in 1..class.steps {
+                let (r, next) = step(y);
+                rev += r * weight;
+                weight *= cf;
+                y = next;
+            }
+            rev
+        }
+    };
     narrow(rev, class.inv)
 }
 

@@ -50,6 +50,10 @@ fn tables_are_consistent() {
         // The fast path's per-class rows: n digits hold every index of the class below b^k.
         let f = &FAST[d];
         assert_eq!((u64::from(f.b), u64::from(f.big)), (b, info.big));
+        assert_eq!(f.chunk_f, f64::from(f.chunk));
+        // Below MIN_BIG every base past base 2 is on its fast path, and 1627² is the least.
+        assert!(d == 0 || info.big >= MIN_BIG, "base {b}");
+        assert!(b != 1627 || info.big == MIN_BIG);
         for (c, class) in f.class.iter().enumerate().skip(1) {
             let n = u32::from(class.n);
             assert!(n <= info.k);

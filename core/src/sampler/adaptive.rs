@@ -158,6 +158,10 @@ impl<S: Sampler> Sampler for AdaptiveSampler<S> {
         self.inner.get_array_2d(out);
     }
 
+    fn arrays_are_dimension_runs(&self) -> bool {
+        self.inner.arrays_are_dimension_runs()
+    }
+
     /// `min_spp` until `min_spp` samples of `pixel` were reported; then the maximum if they
     /// disagree, else `min_spp`.
     fn pixel_samples(&self, pixel: [u32; 2]) -> u32 {

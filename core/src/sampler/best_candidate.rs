@@ -151,6 +151,11 @@ impl Sampler for BestCandidateSampler {
     }
 
     super::global_point_dimensions!();
+
+    /// The default arrays: one dimension per value.
+    fn arrays_are_dimension_runs(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]

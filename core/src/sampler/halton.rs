@@ -3,7 +3,8 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::radical::{
-    inverse_radical_inverse, radical_inverse, radical_inverse_dims, scrambled_radical_inverse,
+    inverse_radical_inverse, radical_inverse, radical_inverse_dims, radical_inverse_inlined,
+    scrambled_radical_inverse,
 };
 
 /// Scrambling of [`HaltonSampler`]'s values.
@@ -182,7 +183,7 @@ impl HaltonSampler {
         }
     }
 
-    #[inline]
+    #[inline(always)]
     fn sample(&self, dim: u32) -> f32 {
         let dim = dim % 1024;
         match dim {
@@ -190,9 +191,9 @@ impl HaltonSampler {
             1 => self.value(1, self.axis_index[1]),
             // The camera's time and lens dimensions with the base a constant, so the per-base
             // table reads fold away.
-            2 => self.value(2, self.index),
-            3 => self.value(3, self.index),
-            4 => self.value(4, self.index),
+            2 if self.scramble == HaltonScramble::None => radical_inverse_inlined(2, self.index),
+            3 if self.scramble == HaltonScramble::None => radical_inverse_inlined(3, self.index),
+            4 if self.scramble == HaltonScramble::None => radical_inverse_inlined(4, self.index),
             _ => self.value(dim, self.index),
         }
     }

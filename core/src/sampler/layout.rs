@@ -450,12 +450,22 @@ impl<S: Sampler> PixelRangeSampler<S> {
             c.lens[1],
             c.time,
         ]);
-        for r in sample.requests {
-            let out = &mut sample.buf[r.offset..r.offset + r.len()];
-            if r.dims == 1 {
-                self.sampler.get_array_1d(out);
-            } else {
-                self.sampler.get_array_2d(out);
+        match sample.requests.last() {
+            // The layout's arrays follow the camera sample back to back, each 2D one of even
+            // length: for such a sampler one run of dimensions fills them all.
+            Some(last) if self.sampler.arrays_are_dimension_runs() => {
+                let end = last.offset + last.len();
+                self.sampler.get_array_1d(&mut sample.buf[CAMERA_LEN..end]);
+            }
+            _ => {
+                for r in sample.requests {
+                    let out = &mut sample.buf[r.offset..r.offset + r.len()];
+                    if r.dims == 1 {
+                        self.sampler.get_array_1d(out);
+                    } else {
+                        self.sampler.get_array_2d(out);
+                    }
+                }
             }
         }
         sample.pixel = self.pixel;
@@ -618,6 +628,47 @@ mod tests {
             assert_eq!(total, whole.total_samples(), "count {count}");
             assert_eq!(parts, all, "count {count}");
         }
+    }
+
+    /// The request-and-fill layer gives, for every sampler, exactly the values of the stateless
+    /// layer taken request by request — whether or not it fills the arrays as one run of
+    /// dimensions ([`Sampler::arrays_are_dimension_runs`]).
+    #[test]
+    fn filled_samples_equal_requests_taken_one_by_one() {
+        use crate::sampler::{NAMES, NamedSampler};
+        let mut runs = 0;
+        for name in NAMES {
+            let s = NamedSampler::new(name, [40, 30], 16, 3).unwrap();
+            runs += usize::from(s.arrays_are_dimension_runs());
+            let mut layout = SampleLayout::<4>::new();
+            layout.add_1d(&s, 3).unwrap();
+            layout.add_2d(&s, 4).unwrap();
+            layout.add_2d(&s, 1).unwrap();
+            layout.add_1d(&s, 2).unwrap();
+            let mut buf = std::vec![0.0f32; layout.len()];
+            let mut sample = Sample::new(&layout, &mut buf).unwrap();
+            let mut r = PixelRangeSampler::new(s.clone(), [5, 6], [7, 8]).unwrap();
+            let mut by_hand = s.clone();
+            while r.next_sample(&mut sample) {
+                let (p, i) = (sample.pixel(), sample.sample_index());
+                let c = camera_sample(&mut by_hand, p, i);
+                let mut want = std::vec![c.p_film[0], c.p_film[1], c.lens[0], c.lens[1], c.time];
+                for req in layout.requests() {
+                    let mut out = std::vec![0.0f32; req.len()];
+                    if req.dims == 1 {
+                        by_hand.get_array_1d(&mut out);
+                    } else {
+                        by_hand.get_array_2d(&mut out);
+                    }
+                    want.extend_from_slice(&out);
+                }
+                let got: Vec<u32> = sample.as_slice().iter().map(|x| x.to_bits()).collect();
+                let want: Vec<u32> = want.iter().map(|x| x.to_bits()).collect();
+                assert_eq!(got, want, "{name} pixel {p:?} sample {i}");
+            }
+        }
+        // The global samplers and the random one take the single run.
+        assert!(runs >= 5, "{runs}");
     }
 
     #[test]

@@ -60,6 +60,10 @@ pub(crate) use global_point_dimensions;
 /// (returns `false`) to `self.sample(d)` one value at a time.
 macro_rules! global_point_arrays {
     () => {
+        fn arrays_are_dimension_runs(&self) -> bool {
+            true
+        }
+
         fn get_array_1d(&mut self, out: &mut [f32]) {
             let dim = self.dim;
             self.dim = dim.wrapping_add(out.len() as u32);
@@ -239,6 +243,28 @@ pub trait Sampler {
             p[0] = u;
             p[1] = v;
         }
+    }
+
+    /// Whether this sampler's arrays are plain runs of dimensions: [`Sampler::get_array_1d`]
+    /// takes one dimension per value and [`Sampler::get_array_2d`] two per point, as the
+    /// defaults do. Arrays requested back to back then equal one `get_array_1d` over all of
+    /// them, and [`PixelRangeSampler`] fills a sample's arrays in one call. The default, `false`,
+    /// is always safe; a sampler that stratifies its arrays must answer `false`.
+    ///
+    /// ```
+    /// use nyquist::sampler::{RandomSampler, Sampler};
+    /// let mut s = RandomSampler::new(4, 7).unwrap();
+    /// assert!(s.arrays_are_dimension_runs());
+    /// let (mut two, mut one) = ([0.0f32; 6], [0.0f32; 6]);
+    /// s.start_pixel_sample([1, 2], 3, 5);
+    /// s.get_array_2d(&mut two[..4]);
+    /// s.get_array_1d(&mut two[4..]);
+    /// s.start_pixel_sample([1, 2], 3, 5);
+    /// s.get_array_1d(&mut one);
+    /// assert_eq!(one, two);
+    /// ```
+    fn arrays_are_dimension_runs(&self) -> bool {
+        false
     }
 
     /// The camera sample of `pixel`, sample `sample_index`: image sample (dimensions 0, 1),

@@ -307,6 +307,11 @@ impl Sampler for NamedSampler {
     }
 
     #[inline]
+    fn arrays_are_dimension_runs(&self) -> bool {
+        delegate!(self, s => s.arrays_are_dimension_runs())
+    }
+
+    #[inline]
     fn pixel_samples(&self, pixel: [u32; 2]) -> u32 {
         delegate!(self, s => s.pixel_samples(pixel))
     }

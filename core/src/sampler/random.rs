@@ -122,4 +122,9 @@ impl Sampler for RandomSampler {
         }
         p
     }
+
+    /// The default arrays: one dimension per value.
+    fn arrays_are_dimension_runs(&self) -> bool {
+        true
+    }
 }
