@@ -218,7 +218,7 @@ const NO_CLASS: ClassConsts = ClassConsts {
 
 /// Everything the `f32` fast path of one base reads: a header and one 24-byte record per index
 /// class, so a lookup touches the header's cache line and its class's (plus the base's
-/// digit-reversal table, for bases up to 61).
+/// digit-reversal table, for bases up to 83).
 ///
 /// The digit count per class is coarser than an exact one (up to a few leading zero digits
 /// more, which reverse to zeros), but the loop trip count then depends only on the dimension and
@@ -239,11 +239,18 @@ struct FastBase {
     class: [ClassConsts; CLASSES],
 }
 
-/// The largest chunk `b^j` with a digit-reversal table; bases with `b² ≤ CHUNK_LIMIT` (2 ..= 61)
-/// get one. 4096 entries of `u16` per base at most, 62 KB in all.
+/// The largest chunk `b^j` of a multi-digit table: bases with `b² ≤ CHUNK_LIMIT` (3 ..= 61) take
+/// the largest `b^j` up to it.
 const CHUNK_LIMIT: u64 = 4096;
 
-/// Digits per table chunk for base `b`: the largest `j` with `b^j ≤ CHUNK_LIMIT`, or 1.
+/// The largest base with a table: 67 ..= 83 (`b² ≤ 6889`) take two-digit tables beyond
+/// [`CHUNK_LIMIT`], which keeps every table within 2¹⁶ entries (116 KB in all, 128 KB with the
+/// padding), so a lookup stays one masked read; it saves two of four steps for their indices of
+/// 17 to 24 bits, a renderer's usual range.
+const TABLE_BASE_LIMIT: u64 = 83;
+
+/// Digits per table chunk for base `b`: the largest `j` with `b^j ≤ CHUNK_LIMIT`, 2 for bases
+/// above 61 up to [`TABLE_BASE_LIMIT`], or 1 (no table).
 const fn chunk_len(b: u64) -> u32 {
     let mut j = 0;
     let mut p = 1u64;
@@ -251,7 +258,13 @@ const fn chunk_len(b: u64) -> u32 {
         p *= b;
         j += 1;
     }
-    if j < 2 { 1 } else { j }
+    if j >= 2 {
+        j
+    } else if b <= TABLE_BASE_LIMIT {
+        2
+    } else {
+        1
+    }
 }
 
 const fn table_total() -> usize {
@@ -375,6 +388,16 @@ const MIN_BIG: u64 = {
         i += 1;
     }
     min
+};
+
+/// Dimensions `1 .. TABLE_DIMS` are the bases with a digit-reversal table (up to
+/// [`TABLE_BASE_LIMIT`]).
+const TABLE_DIMS: usize = {
+    let mut d = 1;
+    while (PRIME_TABLE[d] as u64) <= TABLE_BASE_LIMIT {
+        d += 1;
+    }
+    d
 };
 
 /// The class `⌈bit_len(a)/4⌉` of an index below 2³² (its length in nibbles), an index into
@@ -672,7 +695,20 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     if first != 0
         && let Some(bases) = FAST.get(first..first + out.len())
     {
-        if a < MIN_BIG {
+        if a < MIN_BIG && first + out.len() <= TABLE_DIMS {
+            // The class a constant in each arm, so its record is a fixed offset in each base's.
+            match class {
+                0 => table_lane::<0>(bases, a, out),
+                1 => table_lane::<1>(bases, a, out),
+                2 => table_lane::<2>(bases, a, out),
+                3 => table_lane::<3>(bases, a, out),
+                4 => table_lane::<4>(bases, a, out),
+                5 => table_lane::<5>(bases, a, out),
+                6 => table_lane::<6>(bases, a, out),
+                7 => table_lane::<7>(bases, a, out),
+                _ => table_lane::<8>(bases, a, out),
+            }
+        } else if a < MIN_BIG {
             for (x, fast) in out.iter_mut().zip(bases) {
                 *x = phi_fast_class(fast, class, a);
             }
@@ -697,6 +733,15 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     }
 }
 
+/// `out[i] = Φ(a)` in `bases[i]`, every one with a table and `a` below its `big`, `a` of class
+/// `C`.
+#[inline(always)]
+fn table_lane<const C: usize>(bases: &[FastBase], a: u64, out: &mut [f32]) {
+    for (x, fast) in out.iter_mut().zip(bases) {
+        *x = phi_table_class(fast, C, a);
+    }
+}
+
 /// Φ_b(a) for `a < b^k` (so `a < 2³²`): the reversed digits `R' = Σ_s T[e_s]·c^s` (`e_s` the
 /// index's chunks, most significant first, `T` the digit-reversal table) summed exactly in
 /// `f64`, then [`narrow`]ed by the class's `inv` (see [`ClassConsts`]).
@@ -713,11 +758,10 @@ fn phi_fast(f: &FastBase, a: u64) -> f32 {
 /// [`phi_fast`] with `a`'s [`index_class`] already known.
 #[inline(always)]
 fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
-    let class = &f.class[class];
-    let y = a.wrapping_mul(class.magic);
-    let c = u64::from(f.chunk);
-    if c == u64::from(f.b) {
+    if f.chunk == f.b {
         // No table: one digit per step, each its own reversal.
+        let class = &f.class[class];
+        let (y, c) = (a.wrapping_mul(class.magic), u64::from(f.b));
         let bf = f64::from(f.b);
         let (mut y, mut rev, mut weight) = (y, 0.0f64, 1.0f64);
         for _ in 0..class.steps {
@@ -728,6 +772,15 @@ fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
         }
         return narrow(rev, class.inv);
     }
+    phi_table_class(f, class, a)
+}
+
+/// [`phi_fast_class`] for a base with a digit-reversal table (`chunk > b`).
+#[inline(always)]
+fn phi_table_class(f: &FastBase, class: usize, a: u64) -> f32 {
+    let class = &f.class[class];
+    let y = a.wrapping_mul(class.magic);
+    let c = u64::from(f.chunk);
     // The first chunk, padded with leading zeros (class 0, `first = 0`, reads entry 0: zero).
     let table = f.table as usize;
     let lookup = |e: u64| f64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)]);

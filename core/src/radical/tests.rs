@@ -420,3 +420,38 @@ fn batch_base2_mixes_32_bit_and_wide_blocks() {
         })
     );
 }
+
+/// `radical_inverse_dims` against `radical_inverse` value by value, bit for bit: every index
+/// class (its first and last index), runs inside the table bases (the per-class lanes), runs
+/// past them, runs through base 2 and the wrap, and indices past `MIN_BIG` and 2³².
+#[test]
+fn dims_equal_single_values_in_every_class_and_lane() {
+    let mut indices = std::vec![0u64, 1, MIN_BIG - 1, MIN_BIG, u64::from(u32::MAX) + 7];
+    for c in 1..=8u32 {
+        indices.extend([1u64 << (4 * c - 4), (1u64 << (4 * c)) - 1]);
+    }
+    let mut out = [0.0f32; 40];
+    for &a in &indices {
+        for first in [1u32, 2, 5, 13, TABLE_DIMS as u32 - 3, 30, 1000, 1023] {
+            for len in [1usize, 3, 16, 40] {
+                radical_inverse_dims(first, a, &mut out[..len]);
+                for (i, x) in out[..len].iter().enumerate() {
+                    let want = radical_inverse(first + i as u32, a);
+                    assert_eq!(x.to_bits(), want.to_bits(), "index {a} dim {first}+{i}");
+                }
+            }
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn dims_equal_single_values(dim in prop_oneof![0u32..40, 0u32..1100], a in any::<u64>(), shift in 0u32..64, len in 0usize..40) {
+        let a = a >> shift;
+        let mut out = [0.0f32; 40];
+        radical_inverse_dims(dim, a, &mut out[..len]);
+        for (i, x) in out[..len].iter().enumerate() {
+            prop_assert_eq!(x.to_bits(), radical_inverse(dim + i as u32, a).to_bits());
+        }
+    }
+}
