@@ -239,12 +239,12 @@ struct FastBase {
     class: [ClassConsts; CLASSES],
 }
 
-/// The largest chunk `b^j` of a multi-digit table: bases with `b² ≤ CHUNK_LIMIT` (3 ..= 61) take
+/// The largest chunk `b^j` of a multi-digit table: bases with `b² ≤ CHUNK_LIMIT` (5 ..= 61) take
 /// the largest `b^j` up to it.
 const CHUNK_LIMIT: u64 = 4096;
 
 /// The largest base with a table: 67 ..= 83 (`b² ≤ 6889`) take two-digit tables beyond
-/// [`CHUNK_LIMIT`], which keeps every table within 2¹⁶ entries (116 KB in all, 128 KB with the
+/// [`CHUNK_LIMIT`], which keeps every table within 2¹⁶ entries (124 KB in all, 128 KB with the
 /// padding), so a lookup stays one masked read; it saves two of four steps for their indices of
 /// 17 to 24 bits, a renderer's usual range.
 const TABLE_BASE_LIMIT: u64 = 83;
@@ -252,9 +252,11 @@ const TABLE_BASE_LIMIT: u64 = 83;
 /// Digits per table chunk for base `b`: the largest `j` with `b^j ≤ CHUNK_LIMIT`, 2 for bases
 /// above 61 up to [`TABLE_BASE_LIMIT`], or 1 (no table).
 const fn chunk_len(b: u64) -> u32 {
+    // Base 3, every Halton point's second coordinate, takes 3⁸ = 6561: the room left below 2¹⁶.
+    let limit = if b == 3 { 3u64.pow(8) } else { CHUNK_LIMIT };
     let mut j = 0;
     let mut p = 1u64;
-    while p * b <= CHUNK_LIMIT {
+    while p * b <= limit {
         p *= b;
         j += 1;
     }
@@ -285,6 +287,7 @@ const fn table_total() -> usize {
 /// indexes it through a mask instead of a bounds check (every index is in range anyway: a chunk
 /// `e < b^j` at its base's offset; the padding is never read).
 const CHUNK_REV_LEN: usize = table_total().next_power_of_two();
+const _: () = assert!(CHUNK_REV_LEN == 1 << 16);
 
 /// `CHUNK_REV[table + e] = Σ_i d_i·bⁱ` for a chunk `e < b^j` with digits `d_0 d_1 … d_(j−1)`
 /// (most significant first): the chunk's digits reversed, as the fast path adds them to `R`.

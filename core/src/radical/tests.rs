@@ -51,6 +51,19 @@ fn tables_are_consistent() {
         let f = &FAST[d];
         assert_eq!((u64::from(f.b), u64::from(f.big)), (b, info.big));
         assert_eq!(f.chunk_f, f64::from(f.chunk));
+        // Table chunks: 3⁸ for base 3, the largest b^j ≤ 4096 for 5 ..= 61, b² for 67 ..= 83,
+        // none (the base itself) for base 2 and from 89 on.
+        let want = match b {
+            3 => 6561,
+            5..=61 => (1..)
+                .map(|j| b.pow(j))
+                .take_while(|&p| p <= 4096)
+                .last()
+                .unwrap(),
+            67..=83 => b * b,
+            _ => b,
+        };
+        assert_eq!(u64::from(f.chunk), want, "base {b}");
         // Below MIN_BIG every base past base 2 is on its fast path, and 1627² is the least.
         assert!(d == 0 || info.big >= MIN_BIG, "base {b}");
         assert!(b != 1627 || info.big == MIN_BIG);
