@@ -712,6 +712,8 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
                 _ => table_lane::<8>(bases, a, out),
             }
         } else if a < MIN_BIG {
+            // Every base's fast path without the per-value limit check (past the table bases:
+            // 2.85 against 3.29 ns per value over dims 25 … 40, harness).
             for (x, fast) in out.iter_mut().zip(bases) {
                 *x = phi_fast_class(fast, class, a);
             }
@@ -764,9 +766,8 @@ fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
     if f.chunk == f.b {
         // No table: one digit per step, each its own reversal.
         let class = &f.class[class];
-        let (y, c) = (a.wrapping_mul(class.magic), u64::from(f.b));
-        let bf = f64::from(f.b);
-        let (mut y, mut rev, mut weight) = (y, 0.0f64, 1.0f64);
+        let (c, bf) = (u64::from(f.b), f64::from(f.b));
+        let (mut y, mut rev, mut weight) = (a.wrapping_mul(class.magic), 0.0f64, 1.0f64);
         for _ in 0..class.steps {
             let t = u128::from(y) * u128::from(c);
             rev += (t >> 64) as i64 as f64 * weight;
