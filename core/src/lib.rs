@@ -46,6 +46,7 @@ pub mod math;
 pub mod radical;
 pub mod rng;
 pub mod sampler;
+pub mod scramble;
 pub mod sequence;
 pub mod stratify;
 

@@ -1,0 +1,280 @@
+//! Base-2 scrambles: the randomizations pbrt-v4 names for its Sobol and Halton samplers, and
+//! Burley's nested uniform index shuffle.
+//!
+//! A 32-bit value `x` here is a binary fraction `x / 2³²`; bit 31 is its first digit.
+//!
+//! - **Permute digits**: every digit goes through a random permutation of `{0, 1}`, the same for
+//!   every point; in base 2 that is an XOR with a random word (a digital shift).
+//! - **Owen** (nested uniform scramble, Owen 1995): digit `k` is flipped or not by an independent
+//!   random choice for every value of the digits before it. [`owen_scramble`] draws each choice
+//!   from a hash of the prefix: exact, 32 hashes per value.
+//! - **Fast Owen**: the same kind of scramble from one hash of the bit-reversed value in which
+//!   every output bit depends only on the input bits below it (Laine & Karras 2011, "Stratified
+//!   sampling for stochastic transparency"), with the constants Vegdahl published in "Building a
+//!   better LK hash" (2021). [`fast_owen_scramble`]: four multiplies.
+//! - **Nested uniform shuffle** of an index (Burley 2020, "Practical hash-based Owen
+//!   scrambling"): the index read as a fraction and Owen-scrambled. It maps the first `2^k`
+//!   indices onto one aligned block of `2^k` indices, so the first `2^k` points of a shuffled
+//!   (t, s)-sequence are still a (t, k, s)-net.
+//!
+//! Owen scrambles map every elementary interval onto an elementary interval of the same shape,
+//! so they keep every net and stratification property; a scrambled point is uniform on
+//! `[0, 1)` for every seed draw.
+
+use crate::hash::mix32;
+
+/// How a sampler randomizes its values (pbrt-v4's `RandomizeStrategy`).
+///
+/// ```
+/// use nyquist::scramble::Scramble;
+/// assert_eq!(Scramble::from_name("fast-owen"), Some(Scramble::FastOwen));
+/// assert_eq!(Scramble::Owen.name(), "owen");
+/// assert_eq!(Scramble::from_name("xor"), None);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Scramble {
+    /// The plain sequence.
+    None,
+    /// One random digit permutation per dimension, the same for every point (in base 2 a
+    /// random XOR).
+    PermuteDigits,
+    /// A hash-based approximation of the Owen scramble (one hash per value).
+    FastOwen,
+    /// The nested uniform (Owen) scramble, one hash per digit.
+    Owen,
+}
+
+impl Scramble {
+    /// Every strategy, in the order above.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::scramble::Scramble::ALL.len(), 4);
+    /// ```
+    pub const ALL: [Scramble; 4] = [
+        Scramble::None,
+        Scramble::PermuteDigits,
+        Scramble::FastOwen,
+        Scramble::Owen,
+    ];
+
+    /// The strategy's name as the CLI spells it: `none`, `permute-digits`, `fast-owen`, `owen`.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::scramble::Scramble::PermuteDigits.name(), "permute-digits");
+    /// ```
+    pub const fn name(self) -> &'static str {
+        match self {
+            Scramble::None => "none",
+            Scramble::PermuteDigits => "permute-digits",
+            Scramble::FastOwen => "fast-owen",
+            Scramble::Owen => "owen",
+        }
+    }
+
+    /// The strategy called `name` (see [`Scramble::name`]), `None` for any other string.
+    ///
+    /// ```
+    /// use nyquist::scramble::Scramble;
+    /// assert!(Scramble::ALL.iter().all(|&s| Scramble::from_name(s.name()) == Some(s)));
+    /// ```
+    pub fn from_name(name: &str) -> Option<Scramble> {
+        Scramble::ALL.into_iter().find(|s| s.name() == name)
+    }
+}
+
+/// The Laine–Karras-style hash with Vegdahl's improved constants, on a **bit-reversed** value:
+/// bit `k` of the result depends only on bits `0..=k` of `x_rev` (and on `seed`), so read
+/// backwards it is an Owen scramble. `seed` must already be well mixed (a hash output); small
+/// or structured seeds give poor scrambles.
+///
+/// ```
+/// use nyquist::scramble::lk_hash;
+/// // Bit k of the output ignores input bits above k.
+/// let (a, b) = (lk_hash(0x0000_00ff, 0x9e37_79b9), lk_hash(0xffff_00ff, 0x9e37_79b9));
+/// assert_eq!(a & 0xffff, b & 0xffff);
+/// ```
+#[inline(always)]
+pub const fn lk_hash(mut x_rev: u32, seed: u32) -> u32 {
+    // Constants: Vegdahl, "Building a better LK hash" (psychopath.io, 2021).
+    x_rev ^= x_rev.wrapping_mul(0x3d20_adea);
+    x_rev = x_rev.wrapping_add(seed);
+    x_rev = x_rev.wrapping_mul((seed >> 16) | 1);
+    x_rev ^= x_rev.wrapping_mul(0x0552_6c56);
+    x_rev ^= x_rev.wrapping_mul(0x53a2_2864);
+    x_rev
+}
+
+/// The fast (hash) Owen scramble of the binary fraction `x` under `seed` (any `u32`; it is
+/// mixed first). A bijection on `u32` that maps each aligned block of `2^k` values onto an
+/// aligned block of `2^k` values.
+///
+/// ```
+/// use nyquist::scramble::fast_owen_scramble;
+/// // The first digit depends on the seed only: x < 1/2 all land in the same half.
+/// let half = |x: u32| fast_owen_scramble(x, 7) >> 31;
+/// assert_eq!(half(0), half(0x7fff_ffff));
+/// assert_ne!(half(0), half(0x8000_0000));
+/// ```
+#[inline(always)]
+pub const fn fast_owen_scramble(x: u32, seed: u32) -> u32 {
+    lk_hash(x.reverse_bits(), mix32(seed ^ 0x6a09_e667)).reverse_bits()
+}
+
+/// The exact Owen scramble of the binary fraction `x` under `seed`: digit `k` (bit `31 − k`) is
+/// flipped when a hash of `(seed, k, the k digits before it)` says so. 32 hashes per value.
+///
+/// ```
+/// use nyquist::scramble::owen_scramble;
+/// let y: Vec<u32> = (0..4u32).map(|q| owen_scramble(q << 30, 11) >> 30).collect();
+/// let mut sorted = y.clone();
+/// sorted.sort();
+/// assert_eq!(sorted, [0, 1, 2, 3]); // quarters go to quarters
+/// ```
+#[inline]
+pub const fn owen_scramble(x: u32, seed: u32) -> u32 {
+    let key = (mix32(seed ^ 0xbb67_ae85) as u64) << 32;
+    let mut out = x;
+    let mut k = 0;
+    while k < 32 {
+        // The digits before digit k, with a marker bit above them so prefixes of different
+        // lengths never collide.
+        let prefix = if k == 0 { 0 } else { x >> (32 - k) };
+        let word = key | ((1u64 << k) | prefix as u64);
+        if crate::hash::mix64(word) >> 63 == 1 {
+            out ^= 1 << (31 - k);
+        }
+        k += 1;
+    }
+    out
+}
+
+/// Burley's nested uniform shuffle of `index` under `seed`: the index read as a binary fraction
+/// and fast-Owen-scrambled. For every `k`, the indices `0..2^k` go to one aligned block
+/// `c·2^k .. (c + 1)·2^k`, in an order that depends on the seed.
+///
+/// ```
+/// use nyquist::scramble::nested_uniform_shuffle;
+/// let block: Vec<u32> = (0..8).map(|i| nested_uniform_shuffle(i, 3)).collect();
+/// let base = block[0] & !7;
+/// let mut low: Vec<u32> = block.iter().map(|&j| {
+///     assert_eq!(j & !7, base);
+///     j & 7
+/// }).collect();
+/// low.sort();
+/// assert_eq!(low, [0, 1, 2, 3, 4, 5, 6, 7]);
+/// ```
+#[inline(always)]
+pub const fn nested_uniform_shuffle(index: u32, seed: u32) -> u32 {
+    fast_owen_scramble(index, seed)
+}
+
+/// `x` scrambled by `how` under `seed`: [`Scramble::None`] returns `x`,
+/// [`Scramble::PermuteDigits`] `x ^ mix(seed)`, [`Scramble::FastOwen`]
+/// [`fast_owen_scramble`], [`Scramble::Owen`] [`owen_scramble`].
+///
+/// ```
+/// use nyquist::scramble::{scramble_u32, Scramble};
+/// assert_eq!(scramble_u32(12345, 9, Scramble::None), 12345);
+/// let d = scramble_u32(0, 9, Scramble::PermuteDigits);
+/// assert_eq!(scramble_u32(12345, 9, Scramble::PermuteDigits), 12345 ^ d);
+/// ```
+#[inline]
+pub const fn scramble_u32(x: u32, seed: u32, how: Scramble) -> u32 {
+    match how {
+        Scramble::None => x,
+        Scramble::PermuteDigits => x ^ mix32(seed ^ 0x3c6e_f372),
+        Scramble::FastOwen => fast_owen_scramble(x, seed),
+        Scramble::Owen => owen_scramble(x, seed),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::vec::Vec;
+
+    /// Owen scrambles are nested: two values that share their first `k` digits still do after
+    /// the scramble, and the map is a bijection on every aligned block.
+    #[test]
+    fn owen_scrambles_keep_prefixes_and_blocks() {
+        for how in [Scramble::FastOwen, Scramble::Owen, Scramble::PermuteDigits] {
+            for seed in [0u32, 1, 0xdead_beef] {
+                for k in 1..=10u32 {
+                    let n = 1u32 << k;
+                    // Block c of size 2^(32−k) maps to one block: the first k digits of every
+                    // image agree.
+                    let mut seen = std::vec![false; n as usize];
+                    for c in 0..n {
+                        let lo = c << (32 - k);
+                        let first = scramble_u32(lo, seed, how) >> (32 - k);
+                        for off in [1u32, 12345, (1 << (32 - k)) - 1] {
+                            let y = scramble_u32(lo | (off & ((1 << (32 - k)) - 1)), seed, how);
+                            assert_eq!(y >> (32 - k), first, "{how:?} seed {seed} k {k}");
+                        }
+                        assert!(!std::mem::replace(&mut seen[first as usize], true));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn scrambles_depend_on_the_seed_and_are_not_the_identity() {
+        for how in [Scramble::FastOwen, Scramble::Owen, Scramble::PermuteDigits] {
+            let a: Vec<u32> = (0..64).map(|i| scramble_u32(i << 26, 1, how)).collect();
+            let b: Vec<u32> = (0..64).map(|i| scramble_u32(i << 26, 2, how)).collect();
+            assert_ne!(a, b, "{how:?}");
+            assert_ne!(a, (0..64).map(|i| i << 26).collect::<Vec<u32>>(), "{how:?}");
+        }
+    }
+
+    /// Under the exact Owen scramble every digit of a fixed point is a fair coin over seeds;
+    /// the fast one is held to the same for its first 24 digits (what an `f32` keeps).
+    #[test]
+    fn every_digit_is_fair_over_seeds() {
+        const SEEDS: u32 = 20_000;
+        for how in [Scramble::FastOwen, Scramble::Owen] {
+            for x in [0u32, 0x8000_0000, 0x1234_5678] {
+                let mut ones = [0u32; 24];
+                for seed in 0..SEEDS {
+                    let y = scramble_u32(x, seed, how);
+                    for (k, c) in ones.iter_mut().enumerate() {
+                        *c += (y >> (31 - k)) & 1;
+                    }
+                }
+                for (k, &c) in ones.iter().enumerate() {
+                    // 6 standard deviations of a binomial(20000, 1/2) is 424.
+                    assert!(
+                        c.abs_diff(SEEDS / 2) < 425,
+                        "{how:?} x {x:#x} digit {k}: {c}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn nested_uniform_shuffle_maps_prefixes_to_aligned_blocks() {
+        for seed in [0u32, 5, 0x8765_4321] {
+            for k in 0..=12u32 {
+                let n = 1u32 << k;
+                let base = nested_uniform_shuffle(0, seed) >> k;
+                let mut seen = std::vec![false; n as usize];
+                for i in 0..n {
+                    let j = nested_uniform_shuffle(i, seed);
+                    assert_eq!(j >> k, base, "seed {seed} k {k} i {i}");
+                    assert!(!std::mem::replace(&mut seen[(j & (n - 1)) as usize], true));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn names_round_trip() {
+        for s in Scramble::ALL {
+            assert_eq!(Scramble::from_name(s.name()), Some(s));
+        }
+        assert_eq!(Scramble::from_name(""), None);
+        assert_eq!(Scramble::from_name("Owen"), None);
+    }
+}
