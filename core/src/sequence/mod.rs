@@ -13,18 +13,21 @@
 //! | [`Hammersley`] | `((i + ½)/N, Φ₂(i), Φ₃(i), …)` |
 //! | [`HammersleyZaremba`] | `((i + ½)/N, Ψ₂(i), Ψ₃(i), …)` |
 //! | [`Sobol`] | Joe–Kuo Sobol, natural order, 1024 dimensions |
+//! | [`OwenSobol`] | Sobol with Burley's index shuffle and a fast Owen scramble per dimension |
 //! | [`ZeroTwo`] | pbrt's (0,2)-sequence: van der Corput and Sobol's second dimension, XOR-scrambled |
 
 use crate::Error;
 
 mod halton;
 mod hammersley;
+mod owen_sobol;
 mod sobol;
 mod sobol_table;
 mod zero_two;
 
 pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 pub use hammersley::{Hammersley, HammersleyZaremba};
+pub use owen_sobol::OwenSobol;
 
 pub(crate) use sobol::sobol_run_f32;
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
