@@ -23,6 +23,7 @@
 //! | [`RandomSampler`] | independent PCG32 values |
 //! | [`AdaptiveSampler`] | wraps another: minimum spp, maximum where the first samples disagree |
 //! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
+//! | [`OwenSobolSampler`] | Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed |
 //! | [`StratifiedSampler`] | jittered (or centred: [`StratifiedSampler::uniform`]) strata, hash-permuted per dimension |
 
 /// `get_1d`, `get_2d` and `get_pixel_2d` for samplers that read dimension `d` of one point
@@ -100,6 +101,7 @@ pub mod best_candidate;
 mod halton;
 mod hammersley;
 mod named;
+mod owen_sobol;
 mod random;
 mod sobol;
 mod stratified;
@@ -113,6 +115,7 @@ pub use halton::{HaltonSampler, HaltonScramble};
 pub use hammersley::HammersleySampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use named::{NAMES, NamedSampler, NamedSamplerError};
+pub use owen_sobol::OwenSobolSampler;
 pub use random::RandomSampler;
 pub use sobol::SobolSampler;
 pub use stratified::{Jitter, StratifiedSampler};
