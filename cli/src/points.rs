@@ -4,7 +4,8 @@ use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sequence::{
-    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, Sequence, Sobol, VanDerCorput, ZeroTwo,
+    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, Sequence, Sobol, VanDerCorput,
+    ZeroTwo,
 };
 use nyquist::stratify::{self, Jitter};
 use std::io::Write;
@@ -42,6 +43,13 @@ pub enum SamplerName {
     BestCandidate,
     /// Adaptive: wraps zero-two, minimum spp/4, maximum spp (pixel sampler: --spp).
     Adaptive,
+    /// Owen-scrambled Sobol (Burley's hash construction; --seed picks the scramble); with
+    /// --spp, one independent scramble per pixel.
+    OwenSobol,
+    /// ZSobol: Sobol along a hash-permuted Morton curve over the image (pixel sampler: --spp,
+    /// --resolution).
+    #[value(name = "zsobol")]
+    ZSobol,
 }
 
 /// Output formats of `points`.
@@ -169,7 +177,7 @@ pub fn pixel_mode(args: &PointsArgs) -> bool {
         || args.resolution.is_some()
         || matches!(
             args.sampler,
-            SamplerName::BestCandidate | SamplerName::Adaptive
+            SamplerName::BestCandidate | SamplerName::Adaptive | SamplerName::ZSobol
         )
 }
 
@@ -179,7 +187,8 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
     use SamplerName as S;
     use nyquist::sampler::{
         AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-        RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler,
+        OwenSobolSampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
+        ZeroTwoSampler,
     };
     let n = name(args.sampler);
     let dims = args.dims;
@@ -205,7 +214,10 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
         bail!("--spp {spp} × --dims {dims} is more than {MAX_VALUES} values");
     }
     let (px, py) = args.pixel.unwrap_or((0, 0));
-    let global = matches!(args.sampler, S::Halton | S::Hammersley | S::Sobol);
+    let global = matches!(
+        args.sampler,
+        S::Halton | S::Hammersley | S::Sobol | S::ZSobol
+    );
     let resolution = match (args.resolution, global) {
         (Some((w, h)), _) => {
             if px >= w || py >= h {
@@ -219,7 +231,7 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
         (None, false) => [px.saturating_add(1), py.saturating_add(1)],
     };
     if args.resolution.is_some() && !global {
-        bail!("--resolution applies to halton, hammersley and sobol, not to {n}");
+        bail!("--resolution applies to halton, hammersley, sobol and zsobol, not to {n}");
     }
     if args.grid.is_some() && !matches!(args.sampler, S::Uniform | S::Stratified) {
         bail!("--grid applies to uniform and stratified, not to {n}");
@@ -284,6 +296,19 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
             HammersleySampler::new(resolution, spp, args.seed != 0, args.seed).map_err(err)?,
         ),
         S::BestCandidate => Box::new(BestCandidateSampler::new(spp, args.seed).map_err(err)?),
+        S::OwenSobol => Box::new(OwenSobolSampler::new(spp, args.seed).map_err(err)?),
+        S::ZSobol => {
+            notice(ZSobolSampler::rounded_spp(spp));
+            Box::new(
+                ZSobolSampler::new(
+                    resolution,
+                    spp,
+                    nyquist::scramble::Scramble::FastOwen,
+                    args.seed,
+                )
+                .map_err(err)?,
+            )
+        }
         S::Adaptive => {
             notice(ZeroTwoSampler::rounded_spp(spp));
             let inner = ZeroTwoSampler::new(spp, args.seed).map_err(err)?;
@@ -416,7 +441,12 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
         )?,
         S::ZeroTwo => fill(&ZeroTwo::from_seed(args.seed), args, &mut out)?,
         S::Sobol => fill(&Sobol::new(dims).map_err(set_error)?, args, &mut out)?,
-        S::BestCandidate | S::Adaptive => {
+        S::OwenSobol => fill(
+            &OwenSobol::new(dims, args.seed).map_err(set_error)?,
+            args,
+            &mut out,
+        )?,
+        S::BestCandidate | S::Adaptive | S::ZSobol => {
             bail!("{} is a pixel sampler: give --spp", name(args.sampler))
         }
     }

@@ -43,6 +43,12 @@ pub enum SamplerName {
     BestCandidate,
     /// Adaptive: zero-two, spp/4 samples, all spp where the first ones disagree.
     Adaptive,
+    /// Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed.
+    OwenSobol,
+    /// Sobol along a hash-permuted Morton curve: blue-noise error across pixels (spp rounded
+    /// up to a power of two).
+    #[value(name = "zsobol")]
+    ZSobol,
 }
 
 impl SamplerName {

@@ -105,7 +105,7 @@ fn runs() -> Vec<Run> {
             "--seed",
             "7",
         ];
-        if matches!(sampler, "halton" | "hammersley" | "sobol") {
+        if matches!(sampler, "halton" | "hammersley" | "sobol" | "zsobol") {
             args.extend(["--resolution", "8x8"]);
         }
         out.push(run(format!("pixel/{sampler}"), &args));

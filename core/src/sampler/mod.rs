@@ -24,6 +24,7 @@
 //! | [`AdaptiveSampler`] | wraps another: minimum spp, maximum where the first samples disagree |
 //! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
 //! | [`OwenSobolSampler`] | Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed |
+//! | [`ZSobolSampler`] | Sobol along a hash-permuted Morton curve: blue-noise error across pixels |
 //! | [`StratifiedSampler`] | jittered (or centred: [`StratifiedSampler::uniform`]) strata, hash-permuted per dimension |
 
 /// `get_1d`, `get_2d` and `get_pixel_2d` for samplers that read dimension `d` of one point
@@ -106,6 +107,7 @@ mod random;
 mod sobol;
 mod stratified;
 mod zero_two;
+mod zsobol;
 
 pub mod layout;
 
@@ -120,6 +122,7 @@ pub use random::RandomSampler;
 pub use sobol::SobolSampler;
 pub use stratified::{Jitter, StratifiedSampler};
 pub use zero_two::ZeroTwoSampler;
+pub use zsobol::ZSobolSampler;
 
 /// A source of sample values addressed by (pixel, sample index, dimension).
 ///

@@ -5,20 +5,22 @@ use core::fmt;
 
 use super::{
     AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler,
+    Jitter, OwenSobolSampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler,
+    ZSobolSampler, ZeroTwoSampler,
 };
+use crate::scramble::Scramble;
 
 /// The names [`NamedSampler::new`] accepts, in the order the CLI lists them.
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, NAMES};
-/// assert_eq!(NAMES.len(), 9);
+/// assert_eq!(NAMES.len(), 11);
 /// for name in NAMES {
 ///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
 ///     assert_eq!(s.name(), name);
 /// }
 /// ```
-pub const NAMES: [&str; 9] = [
+pub const NAMES: [&str; 11] = [
     "random",
     "uniform",
     "stratified",
@@ -28,6 +30,8 @@ pub const NAMES: [&str; 9] = [
     "sobol",
     "best-candidate",
     "adaptive",
+    "owen-sobol",
+    "zsobol",
 ];
 
 /// Threshold of the `adaptive` sampler (see [`AdaptiveSampler::new`]).
@@ -125,6 +129,10 @@ pub enum NamedSampler {
     BestCandidate(BestCandidateSampler),
     /// `adaptive`.
     Adaptive(AdaptiveSampler<ZeroTwoSampler>),
+    /// `owen-sobol`.
+    OwenSobol(OwenSobolSampler),
+    /// `zsobol`.
+    ZSobol(ZSobolSampler),
 }
 
 /// Evaluates `$body` with `$s` bound to the sampler inside `$self`.
@@ -139,6 +147,8 @@ macro_rules! delegate {
             NamedSampler::Sobol($s) => $body,
             NamedSampler::BestCandidate($s) => $body,
             NamedSampler::Adaptive($s) => $body,
+            NamedSampler::OwenSobol($s) => $body,
+            NamedSampler::ZSobol($s) => $body,
         }
     };
 }
@@ -156,9 +166,12 @@ impl NamedSampler {
     /// - `sobol`: [`SobolSampler`] over the image (spp rounded up to a power of two);
     /// - `best-candidate`: [`BestCandidateSampler`];
     /// - `adaptive`: an [`AdaptiveSampler`] over a `zero-two` sampler, between a quarter of its
-    ///   spp (at least 1) and all of it, threshold 0.1.
+    ///   spp (at least 1) and all of it, threshold 0.1;
+    /// - `owen-sobol`: [`OwenSobolSampler`] (frame 0);
+    /// - `zsobol`: [`ZSobolSampler`] over the image, fast-Owen scrambled (spp rounded up to a
+    ///   power of two).
     ///
-    /// The size matters to `halton`, `hammersley` and `sobol` only, but must be non-zero for
+    /// The size matters to `halton`, `hammersley`, `sobol` and `zsobol` only, but must be non-zero for
     /// all. Allocates: no.
     ///
     /// # Errors
@@ -232,6 +245,10 @@ impl NamedSampler {
                 let min = (inner.samples_per_pixel() / 4).max(1);
                 NamedSampler::Adaptive(AdaptiveSampler::new(inner, min, ADAPTIVE_THRESHOLD)?)
             }
+            "owen-sobol" => NamedSampler::OwenSobol(OwenSobolSampler::new(spp, seed)?),
+            "zsobol" => {
+                NamedSampler::ZSobol(ZSobolSampler::new(size, spp, Scramble::FastOwen, seed)?)
+            }
             _ => return Err(NamedSamplerError::UnknownName),
         })
     }
@@ -256,6 +273,8 @@ impl NamedSampler {
             NamedSampler::Sobol(_) => "sobol",
             NamedSampler::BestCandidate(_) => "best-candidate",
             NamedSampler::Adaptive(_) => "adaptive",
+            NamedSampler::OwenSobol(_) => "owen-sobol",
+            NamedSampler::ZSobol(_) => "zsobol",
         }
     }
 }
@@ -332,7 +351,7 @@ mod tests {
     fn names_build_the_samplers_they_name() {
         let size = [16, 16];
         for seed in [0u64, 7] {
-            let direct: [(&str, std::boxed::Box<dyn Sampler>); 9] = [
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 11] = [
                 (
                     "random",
                     std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
@@ -388,6 +407,16 @@ mod tests {
                     std::boxed::Box::new(
                         AdaptiveSampler::new(ZeroTwoSampler::new(16, seed).unwrap(), 4, 0.1)
                             .unwrap(),
+                    ),
+                ),
+                (
+                    "owen-sobol",
+                    std::boxed::Box::new(OwenSobolSampler::new(16, seed).unwrap()),
+                ),
+                (
+                    "zsobol",
+                    std::boxed::Box::new(
+                        ZSobolSampler::new(size, 16, Scramble::FastOwen, seed).unwrap(),
                     ),
                 ),
             ];

@@ -1,0 +1,476 @@
+//! ZSobol: Sobol indices laid out along a Morton curve over the pixels and hash-permuted, so
+//! that neighbouring pixels take well-spread samples and the error is blue noise in screen
+//! space (Ahmed & Wonka 2020, "Screen-Space Blue-Noise Diffusion of Monte Carlo Sampling
+//! Error via Hierarchical Ordering of Pixels"; the form pbrt-v4 ships as `ZSobolSampler`).
+
+use super::{CameraSample, Sampler, film};
+use crate::Error;
+use crate::hash::{hash2, mix64};
+use crate::scramble::{Scramble, scramble_u32};
+use crate::sequence::sobol_u32;
+
+/// All 24 permutations of `0..4`, lexicographic, entry `k` in bits `2k .. 2k + 2`.
+const PERMUTATIONS_4: [u8; 24] = permutations_4();
+
+const fn permutations_4() -> [u8; 24] {
+    let mut out = [0u8; 24];
+    let mut n = 0;
+    let mut a = 0;
+    while a < 4 {
+        let mut b = 0;
+        while b < 4 {
+            let mut c = 0;
+            while c < 4 {
+                let d = 6 - a - b - c;
+                if a != b && a != c && b != c {
+                    out[n] = (a | (b << 2) | (c << 4) | (d << 6)) as u8;
+                    n += 1;
+                }
+                c += 1;
+            }
+            b += 1;
+        }
+        a += 1;
+    }
+    out
+}
+
+/// `x`'s low 16 bits spread to the even bits of a `u32`.
+#[inline]
+fn spread(x: u32) -> u32 {
+    let mut x = x & 0xffff;
+    x = (x | (x << 8)) & 0x00ff_00ff;
+    x = (x | (x << 4)) & 0x0f0f_0f0f;
+    x = (x | (x << 2)) & 0x3333_3333;
+    (x | (x << 1)) & 0x5555_5555
+}
+
+/// The dimensions whose pixel digits are permuted once per pixel: the camera's requests
+/// (image sample at 0, time at 2, lens at 3).
+const CAMERA_DIMS: [u32; 3] = [0, 2, 3];
+
+/// ZSobol sampling over an image (Ahmed & Wonka 2020; pbrt-v4's `ZSobolSampler`).
+///
+/// Sample `s` of pixel `p` gets the Morton index `m = (morton(p) << log₂ spp) | s`, whose
+/// base-4 digits (and a last base-2 digit when `log₂ spp` is odd) are permuted, most
+/// significant first, by one of the 24 permutations of four chosen by a hash of the digits above
+/// it, the request's dimension and the seed. The permuted index `i` is a Sobol index:
+/// a 2D request at dimension `d` returns Sobol dimensions (0, 1) at `i`, a 1D request Sobol
+/// dimension 0, each scrambled by `scramble` with seeds hashed from `(d, seed)`.
+///
+/// - Each pixel's `spp` samples are one aligned block of Sobol indices: in every 2D request a
+///   (0, log₂ spp, 2)-net, in every 1D request stratified into `spp` intervals.
+/// - The pixels of an aligned `2^k × 2^k` square own one aligned block of `4^k · spp` indices:
+///   with 1 spp, their `4^k` values of any 1D request fall one per interval of `1/4^k` — the
+///   screen-space stratification that makes the error blue noise.
+///
+/// `spp` is rounded up to a power of two ([`ZSobolSampler::rounded_spp`]); the image is
+/// embedded in a `2^r × 2^r` square, and `2r + log₂ spp ≤ 32` is required (e.g. 4096² at 256
+/// spp). Pixel coordinates wrap modulo `2^r`; `sample_index` wraps modulo `spp`.
+///
+/// ```
+/// use nyquist::sampler::{Sampler, ZSobolSampler};
+/// use nyquist::scramble::Scramble;
+/// let mut s = ZSobolSampler::new([64, 64], 16, Scramble::FastOwen, 1).unwrap();
+/// let c = s.camera_sample([10, 20], 3);
+/// assert!(c.p_film[0] >= 10.0 && c.p_film[0] < 11.0);
+/// ```
+#[derive(Clone, Debug)]
+pub struct ZSobolSampler {
+    spp: u32,
+    log2_spp: u32,
+    log2_res: u32,
+    scramble: Scramble,
+    seed: u64,
+    /// Base-4 digits above the last base-2 one (when `log₂ spp` is odd).
+    digits: u32,
+    /// Base-4 digits that hold sample bits (the rest are the pixel's).
+    sample_digits: u32,
+    odd: u32,
+    keys: [u64; 3],
+    pixel: Option<[u32; 2]>,
+    pixel_morton: u64,
+    /// The permuted pixel digits of [`CAMERA_DIMS`].
+    prefix: [u64; 3],
+    morton: u64,
+    dim: u32,
+}
+
+impl ZSobolSampler {
+    /// The next power of two of `requested` (at least 1) and whether it differs.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::sampler::ZSobolSampler::rounded_spp(12), (16, true));
+    /// ```
+    pub fn rounded_spp(requested: u32) -> (u32, bool) {
+        super::ZeroTwoSampler::rounded_spp(requested)
+    }
+
+    /// A ZSobol sampler for an image of `resolution` pixels, `spp` rounded up to a power of two.
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if the
+    /// Morton index would pass 32 bits (`2r + log₂ spp > 32`).
+    ///
+    /// ```
+    /// use nyquist::{sampler::ZSobolSampler, scramble::Scramble};
+    /// assert!(ZSobolSampler::new([4096, 2160], 256, Scramble::FastOwen, 0).is_ok());
+    /// assert!(ZSobolSampler::new([4096, 2160], 512, Scramble::FastOwen, 0).is_err());
+    /// ```
+    pub fn new(
+        resolution: [u32; 2],
+        spp: u32,
+        scramble: Scramble,
+        seed: u64,
+    ) -> Result<Self, Error> {
+        if spp == 0 {
+            return Err(Error::ZeroSize { what: "spp" });
+        }
+        if resolution[0] == 0 || resolution[1] == 0 {
+            return Err(Error::ZeroSize { what: "resolution" });
+        }
+        let (spp, _) = Self::rounded_spp(spp);
+        let side = resolution[0].max(resolution[1]);
+        let log2_res = 32 - (side - 1).leading_zeros();
+        let log2_spp = spp.trailing_zeros();
+        if spp == 0 || 2 * log2_res + log2_spp > 32 {
+            return Err(Error::TooMany {
+                what: "spp × pixels of the power-of-two square",
+            });
+        }
+        let bits = 2 * log2_res + log2_spp;
+        let mut s = Self {
+            spp,
+            log2_spp,
+            log2_res,
+            scramble,
+            seed,
+            digits: bits / 2,
+            sample_digits: log2_spp / 2,
+            odd: log2_spp & 1,
+            keys: CAMERA_DIMS.map(|d| dim_key(seed, d)),
+            pixel: None,
+            pixel_morton: 0,
+            prefix: [0; 3],
+            morton: 0,
+            dim: 0,
+        };
+        s.set_pixel([0, 0]);
+        Ok(s)
+    }
+
+    /// The scramble applied to the values.
+    ///
+    /// ```
+    /// use nyquist::{sampler::ZSobolSampler, scramble::Scramble};
+    /// let s = ZSobolSampler::new([8, 8], 4, Scramble::Owen, 0).unwrap();
+    /// assert_eq!(s.scramble(), Scramble::Owen);
+    /// ```
+    pub fn scramble(&self) -> Scramble {
+        self.scramble
+    }
+
+    /// The permuted Sobol index of sample `sample_index` of `pixel` for the request at
+    /// dimension `dim` (a value below `2^(2r + log₂ spp)`).
+    ///
+    /// ```
+    /// use nyquist::{sampler::ZSobolSampler, scramble::Scramble};
+    /// let s = ZSobolSampler::new([2, 2], 1, Scramble::None, 3).unwrap();
+    /// // The four pixels of a 2 × 2 image own the four indices 0..4.
+    /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0, 7)).collect();
+    /// all.sort();
+    /// assert_eq!(all, [0, 1, 2, 3]);
+    /// ```
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32, dim: u32) -> u32 {
+        let morton =
+            (self.morton_of(pixel) << self.log2_spp) | u64::from(sample_index & (self.spp - 1));
+        let key = dim_key(self.seed, dim);
+        let prefix = self.permute_digits(morton, key, self.sample_digits, self.digits);
+        self.finish_index(morton, key, prefix)
+    }
+
+    fn morton_of(&self, pixel: [u32; 2]) -> u64 {
+        let mask = if self.log2_res == 0 {
+            0
+        } else {
+            u32::MAX >> (32 - self.log2_res)
+        };
+        u64::from(spread(pixel[0] & mask) | (spread(pixel[1] & mask) << 1))
+    }
+
+    /// Digits `from .. to` of `morton` (base-4 digit `i` at bit `2i + odd`), permuted.
+    #[inline(always)]
+    fn permute_digits(&self, morton: u64, key: u64, from: u32, to: u32) -> u64 {
+        let mut out = 0u64;
+        let mut i = to;
+        while i > from {
+            i -= 1;
+            let shift = 2 * i + self.odd;
+            let digit = (morton >> shift) & 3;
+            let higher = morton >> (shift + 2);
+            let h = mix64(higher ^ key);
+            let p = ((h >> 32) * 24) >> 32;
+            let perm = u64::from(PERMUTATIONS_4[p as usize]);
+            out |= ((perm >> (2 * digit)) & 3) << shift;
+        }
+        out
+    }
+
+    /// The whole permuted index from the permuted pixel digits `prefix`.
+    #[inline(always)]
+    fn finish_index(&self, morton: u64, key: u64, prefix: u64) -> u32 {
+        let mut index = prefix | self.permute_digits(morton, key, 0, self.sample_digits);
+        if self.odd == 1 {
+            let flip = mix64((morton >> 1) ^ key) >> 63;
+            index |= (morton & 1) ^ flip;
+        }
+        index as u32
+    }
+
+    fn set_pixel(&mut self, pixel: [u32; 2]) {
+        self.pixel = Some(pixel);
+        self.pixel_morton = self.morton_of(pixel) << self.log2_spp;
+        for k in 0..CAMERA_DIMS.len() {
+            self.prefix[k] = self.permute_digits(
+                self.pixel_morton,
+                self.keys[k],
+                self.sample_digits,
+                self.digits,
+            );
+        }
+    }
+
+    /// The index for the request at `dim`, through the cached pixel digits where there are some.
+    #[inline(always)]
+    fn index(&self, dim: u32) -> (u32, u64) {
+        let k = match dim {
+            0 => 0,
+            2 => 1,
+            3 => 2,
+            _ => {
+                let key = dim_key(self.seed, dim);
+                let prefix = self.permute_digits(self.morton, key, self.sample_digits, self.digits);
+                return (self.finish_index(self.morton, key, prefix), key);
+            }
+        };
+        let key = self.keys[k];
+        (self.finish_index(self.morton, key, self.prefix[k]), key)
+    }
+
+    #[inline(always)]
+    fn value_1d(&self, dim: u32) -> f32 {
+        let (index, key) = self.index(dim);
+        to_f32(scramble_u32(
+            index.reverse_bits(),
+            key as u32,
+            self.scramble,
+        ))
+    }
+
+    #[inline(always)]
+    fn value_2d(&self, dim: u32) -> [f32; 2] {
+        let (index, key) = self.index(dim);
+        [
+            to_f32(scramble_u32(
+                index.reverse_bits(),
+                key as u32,
+                self.scramble,
+            )),
+            to_f32(scramble_u32(
+                sobol_u32(index, 1),
+                (key >> 32) as u32,
+                self.scramble,
+            )),
+        ]
+    }
+}
+
+/// The hash key of requests at dimension `dim`.
+#[inline(always)]
+fn dim_key(seed: u64, dim: u32) -> u64 {
+    hash2(seed, u64::from(dim) ^ 0x5a53_4f42_4f4c) // "ZSOBOL"
+}
+
+#[inline(always)]
+fn to_f32(v: u32) -> f32 {
+    (v >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
+impl Sampler for ZSobolSampler {
+    fn samples_per_pixel(&self) -> u32 {
+        self.spp
+    }
+
+    #[inline(always)]
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        if self.pixel != Some(pixel) {
+            self.set_pixel(pixel);
+        }
+        self.morton = self.pixel_morton | u64::from(sample_index & (self.spp - 1));
+        self.dim = dim;
+    }
+
+    #[inline(always)]
+    fn get_1d(&mut self) -> f32 {
+        let d = self.dim;
+        self.dim = d.wrapping_add(1);
+        self.value_1d(d)
+    }
+
+    #[inline(always)]
+    fn get_2d(&mut self) -> [f32; 2] {
+        let d = self.dim;
+        self.dim = d.wrapping_add(2);
+        self.value_2d(d)
+    }
+
+    #[inline(always)]
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.dim = self.dim.max(2);
+        self.value_2d(0)
+    }
+
+    #[inline(always)]
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
+        self.start_pixel_sample(pixel, sample_index, 0);
+        let p = self.value_2d(0);
+        let time = self.value_1d(2);
+        let lens = self.value_2d(3);
+        self.dim = 5;
+        CameraSample {
+            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+            lens,
+            time,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampler::tests::{consistent_values, is_zero_two_net, threads_agree};
+    use std::vec::Vec;
+
+    #[test]
+    fn permutation_table_is_every_permutation_of_four_once() {
+        let mut seen = std::collections::BTreeSet::new();
+        for p in PERMUTATIONS_4 {
+            let entries: Vec<u8> = (0..4).map(|k| (p >> (2 * k)) & 3).collect();
+            let mut sorted = entries.clone();
+            sorted.sort_unstable();
+            assert_eq!(sorted, [0, 1, 2, 3]);
+            assert!(seen.insert(entries));
+        }
+        assert_eq!(seen.len(), 24);
+    }
+
+    #[test]
+    fn zsobol_is_consistent_and_thread_independent() {
+        for scramble in Scramble::ALL {
+            let s = ZSobolSampler::new([40, 30], 16, scramble, 9).unwrap();
+            consistent_values(&s);
+            threads_agree(&s);
+        }
+    }
+
+    #[test]
+    fn cached_indices_equal_sequence_index() {
+        for spp in [1u32, 2, 8, 32, 128] {
+            let mut s = ZSobolSampler::new([100, 37], spp, Scramble::FastOwen, 4).unwrap();
+            for pixel in [[0u32, 0u32], [99, 36], [17, 5], [130, 2]] {
+                for i in [0u32, 1, spp - 1, spp + 1] {
+                    s.start_pixel_sample(pixel, i, 0);
+                    for d in [0u32, 1, 2, 3, 4, 5, 77] {
+                        assert_eq!(
+                            s.index(d).0,
+                            s.sequence_index(pixel, i, d),
+                            "{pixel:?} {i} {d}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+
+    /// Every pixel of a 10 × 10 image, every power-of-two spp up to 1024, the seeds the issue
+    /// names: the image samples and the lens samples are (0, m, 2)-nets, the time samples
+    /// stratified.
+    #[test]
+    fn every_pixel_is_a_net_for_every_power_of_two_up_to_1024() {
+        for seed in [0u64, 1, 5, 6, 10, 15] {
+            for m in 0..=10u32 {
+                let scramble = Scramble::ALL[(seed as usize + m as usize) % 4];
+                let mut s = ZSobolSampler::new([10, 10], 1 << m, scramble, seed).unwrap();
+                for y in 0..10 {
+                    for x in 0..10 {
+                        let mut image = Vec::new();
+                        let mut lens = Vec::new();
+                        let mut seen = std::vec![false; 1 << m];
+                        for i in 0..1u32 << m {
+                            // The camera sample's values (film positions round in f32).
+                            s.start_pixel_sample([x, y], i, 0);
+                            image.push(s.get_pixel_2d());
+                            let time = s.get_1d();
+                            lens.push(s.get_2d());
+                            assert!((0.0..1.0).contains(&time));
+                            let cell = (time * (1u32 << m) as f32) as usize;
+                            assert!(!std::mem::replace(&mut seen[cell], true));
+                        }
+                        assert!(is_zero_two_net(&image), "seed {seed} 2^{m} ({x}, {y})");
+                        assert!(is_zero_two_net(&lens), "seed {seed} 2^{m} ({x}, {y}) lens");
+                    }
+                }
+            }
+        }
+    }
+
+    /// The screen-space property: at 1 spp, the pixels of every aligned 2^k × 2^k square put
+    /// their values of any 1D request one in each interval of 1/4^k.
+    #[test]
+    fn aligned_pixel_squares_are_stratified_at_one_spp() {
+        for seed in [0u64, 3] {
+            let mut s = ZSobolSampler::new([64, 64], 1, Scramble::FastOwen, seed).unwrap();
+            for k in 1..=3u32 {
+                let side = 1u32 << k;
+                for (bx, by) in [(0u32, 0u32), (1, 2), (3, 3)] {
+                    for dim in [2u32, 5, 9] {
+                        let n = (side * side) as usize;
+                        let mut seen = std::vec![false; n];
+                        for y in 0..side {
+                            for x in 0..side {
+                                s.start_pixel_sample([bx * side + x, by * side + y], 0, dim);
+                                let v = s.get_1d();
+                                let cell = (v * n as f32) as usize;
+                                assert!(
+                                    !std::mem::replace(&mut seen[cell], true),
+                                    "seed {seed} k {k} block ({bx}, {by}) dim {dim}"
+                                );
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn limits_and_errors() {
+        assert_eq!(
+            ZSobolSampler::new([0, 4], 1, Scramble::None, 0).unwrap_err(),
+            Error::ZeroSize { what: "resolution" }
+        );
+        assert_eq!(
+            ZSobolSampler::new([4, 4], 0, Scramble::None, 0).unwrap_err(),
+            Error::ZeroSize { what: "spp" }
+        );
+        assert!(ZSobolSampler::new([65537, 1], 1, Scramble::None, 0).is_err());
+        assert!(ZSobolSampler::new([65536, 1], 1, Scramble::None, 0).is_ok());
+        assert!(ZSobolSampler::new([32768, 1], 4, Scramble::None, 0).is_ok());
+        let mut s = ZSobolSampler::new([1, 1], 3, Scramble::Owen, 2).unwrap();
+        assert_eq!(s.samples_per_pixel(), 4);
+        s.start_pixel_sample([0, 0], 5, 0);
+        let a = s.get_pixel_2d();
+        s.start_pixel_sample([0, 0], 1, 0);
+        assert_eq!(s.get_pixel_2d(), a);
+    }
+}
