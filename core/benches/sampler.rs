@@ -4,16 +4,19 @@
 //! Peers in the same group: a bare PCG32 drawing 5 floats (the floor for any sampler) and, for
 //! the request-and-fill layer, the same work done by hand through the stateless layer.
 //! Targets (issue 4): ≤ 15 ns per camera sample for halton, stratified, zero-two, sobol;
-//! ≤ 1 µs per 16-sample pixel with two 2D arrays of 4.
+//! ≤ 1 µs per 16-sample pixel with two 2D arrays of 4. Issue 7: ≤ 20 ns per ZSobol camera
+//! sample (owen_sobol is measured beside it).
 
 mod cpu_time;
 
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sampler::{
-    BestCandidateSampler, HaltonSampler, HaltonScramble, Jitter, PixelRangeSampler, RandomSampler,
-    Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler, camera_sample,
+    BestCandidateSampler, HaltonSampler, HaltonScramble, Jitter, OwenSobolSampler,
+    PixelRangeSampler, RandomSampler, Sample, SampleLayout, Sampler, SobolSampler,
+    StratifiedSampler, ZSobolSampler, ZeroTwoSampler, camera_sample,
 };
+use nyquist::scramble::Scramble;
 use std::hint::black_box;
 
 const SPP: u32 = 16;
@@ -64,6 +67,11 @@ fn camera_sample_bench(c: &mut Criterion<cpu_time::BenchClock>) {
         "halton",
         HaltonSampler::new([1024, 1024], SPP, HaltonScramble::None, 1).unwrap()
     );
+    bench!(
+        "zsobol",
+        ZSobolSampler::new([1024, 1024], SPP, Scramble::FastOwen, 1).unwrap()
+    );
+    bench!("owen_sobol", OwenSobolSampler::new(SPP, 1).unwrap());
     g.finish();
 }
 
@@ -122,6 +130,11 @@ fn request_and_fill_bench(c: &mut Criterion<cpu_time::BenchClock>) {
         "halton",
         HaltonSampler::new([1024, 1024], SPP, HaltonScramble::None, 1).unwrap()
     );
+    bench!(
+        "zsobol",
+        ZSobolSampler::new([1024, 1024], SPP, Scramble::FastOwen, 1).unwrap()
+    );
+    bench!("owen_sobol", OwenSobolSampler::new(SPP, 1).unwrap());
     g.finish();
 }
 

@@ -5,9 +5,9 @@
 
 use super::{CameraSample, Sampler, film};
 use crate::Error;
-use crate::hash::{hash2, mix64};
-use crate::scramble::{Scramble, scramble_u32};
-use crate::sequence::sobol_u32;
+use crate::hash::{hash2, mix32};
+use crate::scramble::{Scramble, lk_hash, scramble_u32};
+use crate::sequence::{owen_sobol_rev_u32, sobol_u32};
 
 /// All 24 permutations of `0..4`, lexicographic, entry `k` in bits `2k .. 2k + 2`.
 const PERMUTATIONS_4: [u8; 24] = permutations_4();
@@ -208,8 +208,7 @@ impl ZSobolSampler {
             let shift = 2 * i + self.odd;
             let digit = (morton >> shift) & 3;
             let higher = morton >> (shift + 2);
-            let h = mix64(higher ^ key);
-            let p = ((h >> 32) * 24) >> 32;
+            let p = digit_permutation(higher, key);
             let perm = u64::from(PERMUTATIONS_4[p as usize]);
             out |= ((perm >> (2 * digit)) & 3) << shift;
         }
@@ -221,7 +220,7 @@ impl ZSobolSampler {
     fn finish_index(&self, morton: u64, key: u64, prefix: u64) -> u32 {
         let mut index = prefix | self.permute_digits(morton, key, 0, self.sample_digits);
         if self.odd == 1 {
-            let flip = mix64((morton >> 1) ^ key) >> 63;
+            let flip = u64::from(mix32((morton >> 1) as u32 ^ (key >> 16) as u32) >> 31);
             index |= (morton & 1) ^ flip;
         }
         index as u32
@@ -260,29 +259,47 @@ impl ZSobolSampler {
     #[inline(always)]
     fn value_1d(&self, dim: u32) -> f32 {
         let (index, key) = self.index(dim);
-        to_f32(scramble_u32(
-            index.reverse_bits(),
-            key as u32,
-            self.scramble,
-        ))
+        to_f32(scramble_dim0(index, key as u32, self.scramble))
     }
 
     #[inline(always)]
     fn value_2d(&self, dim: u32) -> [f32; 2] {
         let (index, key) = self.index(dim);
+        let y = match self.scramble {
+            // The reversed-table form of the fast Owen scramble of Sobol dimension 1: two bit
+            // reversals instead of three.
+            Scramble::FastOwen => owen_sobol_rev_u32(index.reverse_bits(), 1, key_seed(key)),
+            how => scramble_u32(sobol_u32(index, 1), (key >> 32) as u32, how),
+        };
         [
-            to_f32(scramble_u32(
-                index.reverse_bits(),
-                key as u32,
-                self.scramble,
-            )),
-            to_f32(scramble_u32(
-                sobol_u32(index, 1),
-                (key >> 32) as u32,
-                self.scramble,
-            )),
+            to_f32(scramble_dim0(index, key as u32, self.scramble)),
+            to_f32(y),
         ]
     }
+}
+
+/// The 32-bit LK-hash seed of a request's second coordinate, from its (mixed) 64-bit key.
+#[inline(always)]
+fn key_seed(key: u64) -> u32 {
+    (key >> 32) as u32
+}
+
+/// Sobol dimension 0 at `index` (its bits reversed) scrambled by `how` under the mixed `seed`.
+/// The fast Owen scramble of a reversed word is the LK hash of the word itself, reversed: one
+/// bit reversal.
+#[inline(always)]
+fn scramble_dim0(index: u32, seed: u32, how: Scramble) -> u32 {
+    match how {
+        Scramble::FastOwen => lk_hash(index, seed).reverse_bits(),
+        how => scramble_u32(index.reverse_bits(), seed, how),
+    }
+}
+
+/// Which of the 24 permutations the digit below `higher` takes: a 32-bit hash of the higher
+/// digits (at most 30 bits) under the request's key, scaled to `0..24`.
+#[inline(always)]
+fn digit_permutation(higher: u64, key: u64) -> u64 {
+    (u64::from(mix32(higher as u32 ^ (key >> 16) as u32)) * 24) >> 32
 }
 
 /// The hash key of requests at dimension `dim`.
