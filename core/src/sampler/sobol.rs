@@ -3,6 +3,7 @@
 use super::Sampler;
 use crate::Error;
 use crate::hash::hash2;
+use crate::scramble::{Scramble, scramble_u32};
 use crate::sequence::{sobol_run_f32, sobol_u32};
 
 /// Number of Sobol dimensions ([`crate::sequence::Sobol`]); higher dimensions wrap.
@@ -23,6 +24,10 @@ const DIMS: u32 = 1024;
 /// (XOR) from `hash(seed, d)` to every dimension — for dimensions 0 and 1 only below the top
 /// `m` bits, so pixels keep their samples. Digital shifts keep every net a net.
 ///
+/// [`SobolSampler::with_scramble`] picks any [`Scramble`] instead: with the Owen scrambles
+/// every dimension's value is scrambled under `hash(seed, d)` — dimensions 0 and 1 inside the
+/// pixel (the fraction below the top `m` bits), so each pixel keeps its samples and their nets.
+///
 /// `spp` is rounded up to a power of two ([`SobolSampler::rounded_spp`]); since Sobol indices
 /// here are 32-bit, `spp · 2^(2m) ≤ 2³²` is required (e.g. 16 spp at 16384², 65536 spp at
 /// 256²). `sample_index >= spp` wraps modulo `spp`.
@@ -38,6 +43,7 @@ const DIMS: u32 = 1024;
 pub struct SobolSampler {
     spp: u32,
     seed: u64,
+    scramble: Scramble,
     m: u32,
     /// `inverse[r]`: the low index bits that flip target bit `r` (bits `0..m` are x's top bits,
     /// `m..2m` are y's).
@@ -85,6 +91,35 @@ impl SobolSampler {
     /// assert!(SobolSampler::new([16384, 16384], 32, 0).is_err());
     /// ```
     pub fn new(resolution: [u32; 2], spp: u32, seed: u64) -> Result<Self, Error> {
+        let scramble = if seed == 0 {
+            Scramble::None
+        } else {
+            Scramble::PermuteDigits
+        };
+        Self::with_scramble(resolution, spp, scramble, seed)
+    }
+
+    /// A Sobol sampler scrambled by `scramble` under `seed` ([`SobolSampler::new`] is
+    /// [`Scramble::None`] for seed 0 and [`Scramble::PermuteDigits`] otherwise). With
+    /// [`Scramble::None`] the seed is ignored.
+    ///
+    /// # Errors
+    /// As [`SobolSampler::new`].
+    ///
+    /// ```
+    /// use nyquist::{sampler::{Sampler, SobolSampler}, scramble::Scramble};
+    /// let mut s = SobolSampler::with_scramble([8, 8], 4, Scramble::Owen, 3).unwrap();
+    /// s.start_pixel_sample([2, 5], 1, 0);
+    /// let [x, y] = s.get_pixel_2d();
+    /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
+    /// ```
+    pub fn with_scramble(
+        resolution: [u32; 2],
+        spp: u32,
+        scramble: Scramble,
+        seed: u64,
+    ) -> Result<Self, Error> {
+        let seed = if scramble == Scramble::None { 0 } else { seed };
         if spp == 0 {
             return Err(Error::ZeroSize { what: "spp" });
         }
@@ -99,7 +134,7 @@ impl SobolSampler {
                 what: "spp × pixels of the power-of-two square",
             });
         }
-        let shift = if seed == 0 {
+        let shift = if scramble != Scramble::PermuteDigits {
             [0; 2]
         } else {
             let low = |d: u64| {
@@ -118,10 +153,14 @@ impl SobolSampler {
             };
             *low = apply_inverse(&inverse, have(high, m));
         }
-        let scrambles = core::array::from_fn(|k| scramble(seed, 2 + k as u32));
+        let scrambles = core::array::from_fn(|k| match scramble {
+            Scramble::PermuteDigits => xor_scramble(seed, 2 + k as u32),
+            _ => owen_seed(seed, 2 + k as u32),
+        });
         let mut sampler = Self {
             spp,
             seed,
+            scramble,
             m,
             inverse,
             shift,
@@ -222,17 +261,43 @@ impl SobolSampler {
         (pixel[0] & mask) | ((pixel[1] & mask) << m)
     }
 
+    /// The scramble used, [`Scramble::None`] included.
+    ///
+    /// ```
+    /// use nyquist::{sampler::SobolSampler, scramble::Scramble};
+    /// assert_eq!(SobolSampler::new([4, 4], 4, 1).unwrap().scramble(), Scramble::PermuteDigits);
+    /// ```
+    pub fn scramble(&self) -> Scramble {
+        self.scramble
+    }
+
     #[inline]
     fn sample(&self, dim: u32) -> f32 {
         let dim = dim % DIMS;
         let mut v = sobol_u32(self.index, dim);
-        if dim < 2 {
-            // `m ≤ 16` (checked in `new`): keep the bits below the pixel's.
-            v = (v ^ self.shift[dim as usize]) << self.m;
-        } else if let Some(&x) = self.scrambles.get((dim - 2) as usize) {
-            v ^= x;
-        } else {
-            v ^= scramble(self.seed, dim);
+        match self.scramble {
+            Scramble::None | Scramble::PermuteDigits => {
+                if dim < 2 {
+                    // `m ≤ 16` (checked in `new`): keep the bits below the pixel's.
+                    v = (v ^ self.shift[dim as usize]) << self.m;
+                } else if let Some(&x) = self.scrambles.get((dim - 2) as usize) {
+                    v ^= x;
+                } else {
+                    v ^= xor_scramble(self.seed, dim);
+                }
+            }
+            how => {
+                let seed = if dim >= 2
+                    && let Some(&x) = self.scrambles.get((dim - 2) as usize)
+                {
+                    x
+                } else {
+                    owen_seed(self.seed, dim)
+                };
+                // Dimensions 0 and 1: the fraction inside the pixel.
+                let w = if dim < 2 { v << self.m } else { v };
+                v = scramble_u32(w, seed, how);
+            }
         }
         (v >> 8) as f32 * (1.0 / 16_777_216.0)
     }
@@ -243,7 +308,8 @@ impl SobolSampler {
     #[inline]
     fn batch(&self, dim: u32, out: &mut [f32]) -> bool {
         let d = (dim % DIMS) as usize;
-        d >= 2
+        matches!(self.scramble, Scramble::None | Scramble::PermuteDigits)
+            && d >= 2
             && self
                 .scrambles
                 .get(d - 2..)
@@ -255,9 +321,15 @@ impl SobolSampler {
 /// Number of dimensions (from 2 on) whose scramble the sampler caches.
 const SCRAMBLES: usize = 30;
 
+/// The seed of dimension `dim`'s Owen scramble.
+#[inline]
+fn owen_seed(seed: u64, dim: u32) -> u32 {
+    (hash2(seed, u64::from(dim)) >> 32) as u32
+}
+
 /// The XOR scramble of dimension `dim ≥ 2` under `seed` (0 for seed 0: the plain sequence).
 #[inline]
-fn scramble(seed: u64, dim: u32) -> u32 {
+fn xor_scramble(seed: u64, dim: u32) -> u32 {
     if seed == 0 {
         0
     } else {
@@ -350,13 +422,54 @@ mod tests {
             consistent_values(&s);
             threads_agree(&s);
         }
+        for how in Scramble::ALL {
+            let s = SobolSampler::with_scramble([40, 30], 16, how, 9).unwrap();
+            consistent_values(&s);
+            threads_agree(&s);
+            crate::sampler::tests::arrays_are_values_in_order(&s);
+        }
+    }
+
+    /// An Owen scramble maps intervals of 1/64 onto intervals of 1/64 one to one, so in every
+    /// dimension a pixel's 64 samples hit exactly as many of them as unscrambled (all 64 in
+    /// dimensions 0 and 1); and the values change.
+    #[test]
+    fn scrambles_keep_strata_and_change_values() {
+        let plain = SobolSampler::new([16, 16], 64, 0).unwrap();
+        for how in [Scramble::FastOwen, Scramble::Owen] {
+            let mut s = SobolSampler::with_scramble([16, 16], 64, how, 4).unwrap();
+            let mut p = plain.clone();
+            let mut differ = 0;
+            for d in 0..12u32 {
+                let (mut seen, mut seen_plain) = ([false; 64], [false; 64]);
+                for i in 0..64 {
+                    s.start_pixel_sample([5, 9], i, d);
+                    p.start_pixel_sample([5, 9], i, d);
+                    let (a, b) = (s.get_1d(), p.get_1d());
+                    differ += usize::from(a != b);
+                    seen[(a * 64.0) as usize] = true;
+                    seen_plain[(b * 64.0) as usize] = true;
+                }
+                let count = |v: &[bool; 64]| v.iter().filter(|&&x| x).count();
+                assert_eq!(count(&seen), count(&seen_plain), "{how:?} dim {d}");
+                if d < 2 {
+                    assert_eq!(count(&seen), 64);
+                }
+            }
+            assert!(differ > 700, "{how:?}: {differ}");
+        }
     }
 
     #[test]
     fn sobol_pixel_samples_are_nets_for_every_power_of_two_up_to_1024() {
         for m in 0..=10 {
-            for seed in [0, 5] {
-                let mut s = SobolSampler::new([37, 20], 1 << m, seed).unwrap();
+            for (seed, how) in [
+                (0, Scramble::None),
+                (5, Scramble::PermuteDigits),
+                (5, Scramble::FastOwen),
+                (6, Scramble::Owen),
+            ] {
+                let mut s = SobolSampler::with_scramble([37, 20], 1 << m, how, seed).unwrap();
                 for pixel in [[0, 0], [36, 19], [5, 11]] {
                     let pts: Vec<[f32; 2]> = (0..1u32 << m)
                         .map(|i| {
