@@ -4,9 +4,11 @@
 use nyquist::Error;
 use nyquist::sampler::{
     AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, NAMES, NamedSampler, NamedSamplerError, PixelRangeSampler, RandomSampler, Sample,
-    SampleLayout, Sampler, SobolSampler, StratifiedSampler, ZeroTwoSampler, camera_sample,
+    Jitter, NAMES, NamedSampler, NamedSamplerError, OwenSobolSampler, PixelRangeSampler,
+    RandomSampler, Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
+    ZeroTwoSampler, camera_sample,
 };
+use nyquist::scramble::Scramble;
 
 use crate::{Bytes, in_unit};
 
@@ -34,7 +36,9 @@ struct Args {
 /// the two grid samplers) and its samplers pass the same checks.
 pub fn samplers(data: &[u8]) {
     let mut b = Bytes::new(data);
-    let kind = b.u8() % 9;
+    let kind = b.u8() % 12;
+    let scramble = Scramble::ALL[b.below(4) as usize];
+    let frame = b.u32();
     let spp = match b.u8() % 4 {
         0 => b.below(17),
         1 => b.below(300),
@@ -144,6 +148,27 @@ pub fn samplers(data: &[u8]) {
         7 => {
             let inner = StratifiedSampler::new(xy[0].max(1), xy[1].max(1), jitter, seed).unwrap();
             adaptive(inner, &args);
+        }
+        8 => run(
+            "OwenSobolSampler",
+            spp,
+            OwenSobolSampler::new(spp, seed).map(|s| s.with_frame(frame)),
+            &args,
+        ),
+        9 => {
+            let r = ZSobolSampler::new(resolution, spp, scramble, seed);
+            if resolution.contains(&0) {
+                assert!(r.is_err(), "ZSobolSampler accepted {resolution:?}");
+            }
+            check_rounded("ZSobolSampler", spp, ZSobolSampler::rounded_spp(spp));
+            run("ZSobolSampler", spp, r, &args)
+        }
+        10 => {
+            let r = SobolSampler::with_scramble(resolution, spp, scramble, seed);
+            if let Ok(s) = &r {
+                assert_eq!(s.scramble(), scramble);
+            }
+            run("SobolSampler", spp, r, &args)
         }
         _ => {
             let name = if flag {

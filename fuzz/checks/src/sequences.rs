@@ -2,9 +2,10 @@
 //! seed, plus the set-specific entry points.
 
 use nyquist::Error;
+use nyquist::scramble::{Scramble, scramble_u32};
 use nyquist::sequence::{
-    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, SOBOL_DIMS, ScrambledHalton, Sequence,
-    Sobol, VanDerCorput, ZeroTwo, check_fill, sobol_u32,
+    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, SOBOL_DIMS, ScrambledHalton,
+    Sequence, Sobol, VanDerCorput, ZeroTwo, check_fill, sobol_u32,
 };
 
 use crate::{Bytes, in_unit, in_unit_f64};
@@ -45,6 +46,40 @@ pub fn sequences(data: &[u8]) {
     check("VanDerCorput", &VanDerCorput);
     built("Halton", dims, Halton::new(dims), &check);
     built("HaltonZaremba", dims, HaltonZaremba::new(dims), &check);
+    built("OwenSobol", dims, OwenSobol::new(dims, seed), &check);
+    if let Ok(s) = OwenSobol::new(dims, seed) {
+        // The 4-wide and run forms equal single values.
+        let (i, d) = (index as u32, dim);
+        let four = s.sample_4d(i, d);
+        let mut run = [0.0f32; 4];
+        s.sample_dims(i, d, &mut run);
+        for k in 0..4u32 {
+            let one = s.sample(u64::from(i), d.wrapping_add(k));
+            assert_eq!(
+                four[k as usize].to_bits(),
+                one.to_bits(),
+                "OwenSobol sample_4d"
+            );
+            assert_eq!(
+                run[k as usize].to_bits(),
+                one.to_bits(),
+                "OwenSobol sample_dims"
+            );
+        }
+    }
+    // Scrambles are nested: values sharing their first k digits still do.
+    let (x, k) = (index as u32, (n % 33) as u32);
+    for how in Scramble::ALL {
+        let y = scramble_u32(x, seed as u32, how);
+        let z = scramble_u32(
+            x ^ (u32::MAX >> k.min(31) >> u32::from(k == 32)),
+            seed as u32,
+            how,
+        );
+        if k > 0 {
+            assert_eq!(y >> (32 - k), z >> (32 - k), "{how:?} k {k}");
+        }
+    }
     built(
         "ScrambledHalton",
         dims,
