@@ -14,17 +14,20 @@
 //! | [`HammersleyZaremba`] | `((i + ½)/N, Ψ₂(i), Ψ₃(i), …)` |
 //! | [`Sobol`] | Joe–Kuo Sobol, natural order, 1024 dimensions |
 //! | [`ZeroTwo`] | pbrt's (0,2)-sequence: van der Corput and Sobol's second dimension, XOR-scrambled |
+//! | [`Pmj02`] | progressive multi-jittered (0,2) points, a baked table, optionally Owen-scrambled |
 
 use crate::Error;
 
 mod halton;
 mod hammersley;
+mod pmj02;
 mod sobol;
 mod sobol_table;
 mod zero_two;
 
 pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 pub use hammersley::{Hammersley, HammersleyZaremba};
+pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
 
 pub(crate) use sobol::sobol_run_f32;
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
