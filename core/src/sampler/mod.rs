@@ -23,6 +23,7 @@
 //! | [`RandomSampler`] | independent PCG32 values |
 //! | [`AdaptiveSampler`] | wraps another: minimum spp, maximum where the first samples disagree |
 //! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
+//! | [`Pmj02Sampler`] | baked progressive multi-jittered (0,2) points, index-shuffled and Owen-scrambled per pixel and dimension |
 //! | [`StratifiedSampler`] | jittered (or centred: [`StratifiedSampler::uniform`]) strata, hash-permuted per dimension |
 
 /// `get_1d`, `get_2d` and `get_pixel_2d` for samplers that read dimension `d` of one point
@@ -100,6 +101,7 @@ pub mod best_candidate;
 mod halton;
 mod hammersley;
 mod named;
+mod pmj02;
 mod random;
 mod sobol;
 mod stratified;
@@ -113,6 +115,7 @@ pub use halton::{HaltonSampler, HaltonScramble};
 pub use hammersley::HammersleySampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use named::{NAMES, NamedSampler, NamedSamplerError};
+pub use pmj02::Pmj02Sampler;
 pub use random::RandomSampler;
 pub use sobol::SobolSampler;
 pub use stratified::{Jitter, StratifiedSampler};

@@ -20,7 +20,7 @@ use crate::Error;
 
 mod halton;
 mod hammersley;
-mod pmj02;
+pub(crate) mod pmj02;
 mod sobol;
 mod sobol_table;
 mod zero_two;
