@@ -25,6 +25,7 @@
 //! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
 //! | [`OwenSobolSampler`] | Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed |
 //! | [`ZSobolSampler`] | Sobol along a hash-permuted Morton curve: blue-noise error across pixels |
+//! | [`Pmj02Sampler`] | baked progressive multi-jittered (0,2) points, index-shuffled and Owen-scrambled per pixel and dimension |
 //! | [`StratifiedSampler`] | jittered (or centred: [`StratifiedSampler::uniform`]) strata, hash-permuted per dimension |
 
 /// `get_1d`, `get_2d` and `get_pixel_2d` for samplers that read dimension `d` of one point
@@ -103,6 +104,7 @@ mod halton;
 mod hammersley;
 mod named;
 mod owen_sobol;
+mod pmj02;
 mod random;
 mod sobol;
 mod stratified;
@@ -118,6 +120,7 @@ pub use hammersley::HammersleySampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use named::{NAMES, NamedSampler, NamedSamplerError};
 pub use owen_sobol::OwenSobolSampler;
+pub use pmj02::Pmj02Sampler;
 pub use random::RandomSampler;
 pub use sobol::SobolSampler;
 pub use stratified::{Jitter, StratifiedSampler};

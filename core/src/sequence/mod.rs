@@ -15,12 +15,14 @@
 //! | [`Sobol`] | Joe–Kuo Sobol, natural order, 1024 dimensions |
 //! | [`OwenSobol`] | Sobol with Burley's index shuffle and a fast Owen scramble per dimension |
 //! | [`ZeroTwo`] | pbrt's (0,2)-sequence: van der Corput and Sobol's second dimension, XOR-scrambled |
+//! | [`Pmj02`] | progressive multi-jittered (0,2) points, a baked table, optionally Owen-scrambled |
 
 use crate::Error;
 
 mod halton;
 mod hammersley;
 mod owen_sobol;
+pub(crate) mod pmj02;
 mod sobol;
 mod sobol_table;
 mod zero_two;
@@ -29,6 +31,7 @@ pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 pub use hammersley::{Hammersley, HammersleyZaremba};
 pub use owen_sobol::OwenSobol;
 pub(crate) use owen_sobol::{owen_sobol_rev_f32, owen_sobol_rev_u32, shuffle_rev};
+pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
 
 pub(crate) use sobol::sobol_run_f32;
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};

@@ -1,0 +1,374 @@
+//! Progressive multi-jittered (0,2) samples per pixel, from the baked pmj02 table.
+
+use super::{Sampler, pixel_hash};
+use crate::Error;
+use crate::hash::mix64;
+use crate::sequence::pmj02::{owen_keyed, to_f32};
+use crate::sequence::{PMJ02_MAX_POINTS, PMJ02_TABLE};
+
+/// `PMJ02_MAX_POINTS − 1`, the index mask.
+const MASK: u32 = PMJ02_MAX_POINTS as u32 - 1;
+
+/// Odd constant separating requests in the per-request hash.
+const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
+
+/// The three keys of one request (a 2D pair or a 1D value at one dimension of one pixel): the
+/// index shuffle and the Owen scrambles of x and y, each a well-mixed 32-bit hash.
+#[derive(Clone, Copy, Debug)]
+struct Keys {
+    shuffle: u32,
+    x: u32,
+    y: u32,
+}
+
+impl Keys {
+    /// Keys of request `request` (`2d` for the pair at dimension `d`, `2d + 1` for the 1D value
+    /// there: the two kinds never share keys) of the pixel whose key is `pixel_key`.
+    #[inline(always)]
+    fn new(pixel_key: u64, request: u64) -> Keys {
+        let h = mix64(pixel_key ^ request.wrapping_mul(REQUEST_STEP));
+        let g = mix64(h ^ 0x706d_6a30_3279);
+        Keys {
+            shuffle: h as u32,
+            x: (h >> 32) as u32,
+            y: g as u32,
+        }
+    }
+
+    /// The table row of sample `index`: Burley's nested uniform shuffle of the 16-bit index
+    /// (a fast Owen scramble of the index read as a fraction), which sends the indices
+    /// `0..2^k` onto one aligned block of `2^k` rows for every `k ≤ 16`.
+    #[inline(always)]
+    fn row(&self, index: u32) -> usize {
+        (owen_keyed(index & MASK, self.shuffle) & MASK) as usize
+    }
+
+    #[inline(always)]
+    fn point(&self, index: u32) -> [f32; 2] {
+        let [x, y] = PMJ02_TABLE[self.row(index)];
+        [to_f32(owen_keyed(x, self.x)), to_f32(owen_keyed(y, self.y))]
+    }
+
+    #[inline(always)]
+    fn value(&self, index: u32) -> f32 {
+        to_f32(owen_keyed(PMJ02_TABLE[self.row(index)][0], self.x))
+    }
+}
+
+/// The request numbers of the camera's values: image pair (dimension 0), time (1D at
+/// dimension 2), lens pair (dimension 3).
+const CAMERA: [u64; 3] = [0, 2 * 2 + 1, 2 * 3];
+
+fn camera_keys(pixel_key: u64) -> [Keys; 3] {
+    CAMERA.map(|r| Keys::new(pixel_key, r))
+}
+
+/// Progressive multi-jittered (0,2) sampling (Christensen, Kensler & Kilpatrick 2018) from the
+/// baked table [`PMJ02_TABLE`](crate::sequence::PMJ02_TABLE), decorrelated per pixel and
+/// dimension by hashing.
+///
+/// Every request — the image sample ([`Sampler::get_pixel_2d`], dimensions 0 and 1), a pair
+/// ([`Sampler::get_2d`] at dimension `d`) or a 1D value ([`Sampler::get_1d`] at `d`) — has its
+/// own keys, a hash of (pixel, seed, `d`, 1D or 2D). Sample `i` reads table row
+/// `shuffle(i)` and Owen-scrambles its coordinates (a 1D value takes the first); `shuffle` is
+/// Burley's nested uniform shuffle of the 16-bit index.
+///
+/// Why these randomizations: the Owen scramble maps elementary intervals onto elementary
+/// intervals, and the nested shuffle maps the first `2^m` samples onto one aligned block of
+/// `2^m` rows, which is a (0, m, 2)-net (pmj02 is a (0,2)-sequence; the tests check every
+/// block). So for every pixel and every pair, the first `2^m` samples form a (0, m, 2)-net and
+/// every 1D value is stratified into `2^m` strata, at every power of two — the progressive
+/// property survives. Without a per-request shuffle every dimension would read the same row
+/// and two dimensions' values would be functions of one point (strongly correlated); a plain
+/// permutation of `0..spp` would decorrelate them but break every prefix but the whole set.
+///
+/// `samples_per_pixel` is any value in `1..=65536` and is not rounded; the net property holds
+/// at every power of two below it, and samples past it continue the sequence. Sample indices
+/// wrap modulo 65536 (the table's size). Arrays are the trait's defaults: one pair or value per
+/// dimension, in order. Allocates: no.
+///
+/// ```
+/// use nyquist::sampler::{Pmj02Sampler, Sampler};
+/// let mut s = Pmj02Sampler::new(16, 0).unwrap();
+/// let mut seen = [[false; 4]; 4];
+/// for i in 0..16 {
+///     s.start_pixel_sample([3, 1], i, 0);
+///     let [x, y] = s.get_pixel_2d();
+///     seen[(y * 4.0) as usize][(x * 4.0) as usize] = true;
+/// }
+/// assert!(seen.iter().flatten().all(|&b| b)); // one sample in each 1/4 × 1/4 square
+/// ```
+#[derive(Clone, Debug)]
+pub struct Pmj02Sampler {
+    spp: u32,
+    seed: u64,
+    pixel: [u32; 2],
+    /// `hash(pixel, seed)`, cached across the samples of one pixel.
+    pixel_key: u64,
+    /// The camera's keys for the current pixel, built once per pixel.
+    camera: [Keys; 3],
+    index: u32,
+    dim: u32,
+}
+
+/// Tag of the pixel hash.
+const PIXEL_TAG: u64 = 0x0070_6d6a_3032; // "pmj02"
+
+impl Pmj02Sampler {
+    /// A pmj02 sampler with `spp` samples per pixel (not rounded).
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `spp == 0`; [`Error::TooMany`] if `spp > 65536` (the table).
+    ///
+    /// ```
+    /// use nyquist::sampler::{Pmj02Sampler, Sampler};
+    /// assert_eq!(Pmj02Sampler::new(100, 1).unwrap().samples_per_pixel(), 100);
+    /// assert!(Pmj02Sampler::new(0, 1).is_err());
+    /// assert!(Pmj02Sampler::new(65_537, 1).is_err());
+    /// ```
+    pub fn new(spp: u32, seed: u64) -> Result<Self, Error> {
+        if spp == 0 {
+            return Err(Error::ZeroSize { what: "spp" });
+        }
+        if spp as usize > PMJ02_MAX_POINTS {
+            return Err(Error::TooMany { what: "spp" });
+        }
+        let pixel_key = pixel_hash([0; 2], seed, PIXEL_TAG);
+        Ok(Self {
+            spp,
+            seed,
+            pixel: [0; 2],
+            pixel_key,
+            camera: camera_keys(pixel_key),
+            index: 0,
+            dim: 0,
+        })
+    }
+
+    /// The seed.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::sampler::Pmj02Sampler::new(4, 9).unwrap().seed(), 9);
+    /// ```
+    pub fn seed(&self) -> u64 {
+        self.seed
+    }
+
+    #[inline(always)]
+    fn keys(&self, request: u64) -> Keys {
+        match request {
+            0 => self.camera[0],
+            r if r == CAMERA[1] => self.camera[1],
+            r if r == CAMERA[2] => self.camera[2],
+            r => Keys::new(self.pixel_key, r),
+        }
+    }
+}
+
+impl Sampler for Pmj02Sampler {
+    fn samples_per_pixel(&self) -> u32 {
+        self.spp
+    }
+
+    #[inline(always)]
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        if pixel != self.pixel {
+            self.pixel = pixel;
+            self.pixel_key = pixel_hash(pixel, self.seed, PIXEL_TAG);
+            self.camera = camera_keys(self.pixel_key);
+        }
+        self.index = sample_index;
+        self.dim = dim;
+    }
+
+    #[inline(always)]
+    fn get_1d(&mut self) -> f32 {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(1);
+        self.keys(2 * u64::from(d) + 1).value(self.index)
+    }
+
+    #[inline(always)]
+    fn get_2d(&mut self) -> [f32; 2] {
+        let d = self.dim;
+        self.dim = self.dim.wrapping_add(2);
+        self.keys(2 * u64::from(d)).point(self.index)
+    }
+
+    #[inline(always)]
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.dim = self.dim.max(2);
+        self.camera[0].point(self.index)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sampler::tests::{
+        arrays_are_values_in_order, consistent_values, is_latin, is_zero_two_net, threads_agree,
+    };
+    use std::vec::Vec;
+
+    const SEEDS: [u64; 6] = [0, 1, 5, 6, 10, 15];
+
+    /// The first `n` samples of `pixel`: what `get` returns after `start_pixel_sample(.., dim)`.
+    fn run<T>(
+        s: &mut Pmj02Sampler,
+        pixel: [u32; 2],
+        dim: u32,
+        n: u32,
+        get: impl Fn(&mut Pmj02Sampler) -> T,
+    ) -> Vec<T> {
+        (0..n)
+            .map(|i| {
+                s.start_pixel_sample(pixel, i, dim);
+                get(s)
+            })
+            .collect()
+    }
+
+    #[test]
+    fn pmj02_sampler_is_consistent_and_thread_independent() {
+        for spp in [1, 16, 100] {
+            let s = Pmj02Sampler::new(spp, 3).unwrap();
+            consistent_values(&s);
+            threads_agree(&s);
+            arrays_are_values_in_order(&s);
+        }
+    }
+
+    #[test]
+    fn pmj02_sampler_pixel_and_pair_samples_are_nets_at_every_power_of_two_up_to_1024() {
+        // Every pixel of a 10 × 10 image, six seeds; the image pair, the lens pair (dimension
+        // 3, cached keys) and a pair at dimension 12; and the 1D values of time (dimension 2)
+        // and of dimension 9, each stratified into 2^m strata at every 2^m.
+        for seed in SEEDS {
+            let mut s = Pmj02Sampler::new(1024, seed).unwrap();
+            for py in 0..10 {
+                for px in 0..10 {
+                    let p = [px, py];
+                    let image = run(&mut s, p, 0, 1024, |s| s.get_pixel_2d());
+                    let lens = run(&mut s, p, 3, 1024, |s| s.get_2d());
+                    let later = run(&mut s, p, 12, 1024, |s| s.get_2d());
+                    let time = run(&mut s, p, 2, 1024, |s| s.get_1d());
+                    let d9 = run(&mut s, p, 9, 1024, |s| s.get_1d());
+                    for m in 0..=10 {
+                        let n = 1 << m;
+                        for (what, pts) in [("image", &image), ("lens", &lens), ("12", &later)] {
+                            let pts = &pts[..n];
+                            assert!(is_zero_two_net(pts), "seed {seed} {p:?} {what} 2^{m}");
+                            assert!(pts.iter().flatten().all(|v| (0.0..1.0).contains(v)));
+                        }
+                        for (what, xs) in [("time", &time), ("dim 9", &d9)] {
+                            assert!(is_latin(&xs[..n], 1), "seed {seed} {p:?} {what} 2^{m}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn pmj02_sampler_non_power_of_two_spp_keeps_the_nets_below_it() {
+        let mut s = Pmj02Sampler::new(100, 2).unwrap();
+        assert_eq!(s.samples_per_pixel(), 100);
+        let pts = run(&mut s, [4, 4], 0, 100, |s| s.get_pixel_2d());
+        for m in 0..=6 {
+            assert!(is_zero_two_net(&pts[..1 << m]), "2^{m}");
+        }
+        // Between powers of two no column of width 1/128 holds two of the 100 samples.
+        let xs: Vec<f32> = pts.iter().map(|p| p[0]).collect();
+        let mut seen = [false; 128];
+        for x in xs {
+            assert!(!core::mem::replace(&mut seen[(x * 128.0) as usize], true));
+        }
+    }
+
+    #[test]
+    fn pmj02_sampler_pixels_dimensions_and_seeds_differ() {
+        let first = |seed: u64, pixel: [u32; 2], dim: u32| {
+            let mut s = Pmj02Sampler::new(16, seed).unwrap();
+            run(&mut s, pixel, dim, 16, |s| s.get_2d())
+        };
+        let base = first(1, [2, 3], 5);
+        assert_ne!(base, first(2, [2, 3], 5), "seed");
+        assert_ne!(base, first(1, [3, 2], 5), "pixel");
+        assert_ne!(base, first(1, [2, 3], 7), "dimension");
+        // A 1D value at d is not the first coordinate of the pair at d.
+        let mut s = Pmj02Sampler::new(16, 1).unwrap();
+        let ones = run(&mut s, [2, 3], 5, 16, |s| s.get_1d());
+        assert!(ones.iter().zip(&base).all(|(a, b)| *a != b[0]));
+    }
+
+    #[test]
+    fn pmj02_sampler_dimensions_are_decorrelated() {
+        // Image x against lens x over 1024 samples, in a 32 × 32 grid: were both read from the
+        // same table row (only scrambled differently), each value would be a function of the
+        // other's first five digits and only 32 cells would be hit. Independent uniform pairs
+        // hit about 1024·(1 − e⁻¹) ≈ 647.
+        for seed in SEEDS {
+            let mut s = Pmj02Sampler::new(1024, seed).unwrap();
+            let image = run(&mut s, [5, 5], 0, 1024, |s| s.get_pixel_2d());
+            let lens = run(&mut s, [5, 5], 3, 1024, |s| s.get_2d());
+            let mut cells = [false; 1024];
+            for (a, b) in image.iter().zip(&lens) {
+                cells[(a[0] * 32.0) as usize * 32 + (b[0] * 32.0) as usize] = true;
+            }
+            let hit = cells.iter().filter(|&&c| c).count();
+            assert!(hit > 550, "seed {seed}: {hit} cells");
+        }
+    }
+
+    #[test]
+    fn pmj02_sampler_index_wraps_at_the_table_size() {
+        let mut s = Pmj02Sampler::new(4, 8).unwrap();
+        let mut get = |i: u32| {
+            s.start_pixel_sample([1, 1], i, 0);
+            (s.get_pixel_2d(), s.get_1d(), s.get_2d())
+        };
+        for i in [0u32, 5, 65535] {
+            assert_eq!(get(i), get(i + 65536), "index {i}");
+            assert_eq!(get(i), get(i + 7 * 65536), "index {i}");
+        }
+        assert_ne!(get(1), get(65536 + 2));
+        // Past spp the sequence goes on: samples 4..8 complete the net of 8.
+        let pts = run(&mut s, [1, 1], 0, 8, |s| s.get_pixel_2d());
+        assert!(is_zero_two_net(&pts));
+    }
+
+    #[test]
+    fn pmj02_sampler_rejects_bad_spp() {
+        assert_eq!(
+            Pmj02Sampler::new(0, 0).unwrap_err(),
+            Error::ZeroSize { what: "spp" }
+        );
+        assert_eq!(
+            Pmj02Sampler::new(65_537, 0).unwrap_err(),
+            Error::TooMany { what: "spp" }
+        );
+        assert!(Pmj02Sampler::new(65_536, 0).is_ok());
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn pmj02_sampler_never_panics_and_stays_in_unit_interval(
+            px: u32, py: u32, index: u32, dim: u32, seed: u64, spp in 1u32..=65_536,
+        ) {
+            let mut s = Pmj02Sampler::new(spp, seed).unwrap();
+            let c = crate::sampler::camera_sample(&mut s, [px, py], index);
+            proptest::prop_assert!((0.0..1.0).contains(&c.time));
+            proptest::prop_assert!(c.lens.iter().all(|v| (0.0..1.0).contains(v)));
+            s.start_pixel_sample([px, py], index, dim);
+            let mut v = std::vec![s.get_1d()];
+            v.extend_from_slice(&s.get_2d());
+            v.extend_from_slice(&s.get_pixel_2d());
+            let mut a = [0.0f32; 7];
+            s.get_array_2d(&mut a);
+            v.extend_from_slice(&a[..6]);
+            s.get_array_1d(&mut a);
+            v.extend_from_slice(&a);
+            proptest::prop_assert!(v.iter().all(|x| (0.0..1.0).contains(x)));
+        }
+    }
+}

@@ -1,0 +1,467 @@
+//! Progressive multi-jittered (0,2) sequences (Christensen, Kensler & Kilpatrick 2018,
+//! "Progressive Multi-Jittered Sample Sequences"), made by the stochastic construction of
+//! Helmer, Christensen & Kensler 2021 ("Stochastic Generation of (t, s) Sample Sequences").
+//!
+//! A point is two 32-bit binary fractions. Point 0 is random. At level `L` the `2^L` points
+//! made so far are doubled: new point `2^L + i` takes, in dimension `k`, the first `L` digits of
+//! old point `i ⊕ c_k[L]`, the opposite of its digit `L + 1`, and random digits below. The
+//! old points hold one point per stratum of width `2^−L` in each dimension, so every new point
+//! fills the empty half of one such stratum; the per-level XOR constants `c_k` decide which old
+//! point a new one pairs with, and are chosen (by the paper's authors) so that every power-of-two
+//! prefix — and every aligned block of `2^m` points — is a (0, m, 2)-net. The tests here check
+//! that for many seeds.
+//!
+//! [`pmj02_build`] runs the construction in place into a caller buffer; [`PMJ02_TABLE`] is the
+//! same construction for a fixed seed, baked at compile time; [`Pmj02`] reads that table by
+//! index, optionally Owen-scrambled per instance.
+
+use super::Sequence;
+use crate::Error;
+use crate::hash::{hash2, wyrand};
+use crate::scramble::lk_hash;
+
+/// The most points the construction makes: the published XOR constants cover 16 levels.
+///
+/// ```
+/// assert_eq!(nyquist::sequence::PMJ02_MAX_POINTS, 65536);
+/// ```
+pub const PMJ02_MAX_POINTS: usize = 1 << 16;
+
+/// The seed [`PMJ02_TABLE`] is built from.
+///
+/// ```
+/// use nyquist::sequence::{pmj02_build, PMJ02_TABLE, PMJ02_TABLE_SEED};
+/// let mut first = [[0u32; 2]; 8];
+/// pmj02_build(PMJ02_TABLE_SEED, &mut first).unwrap();
+/// assert_eq!(first, PMJ02_TABLE[..8]);
+/// ```
+pub const PMJ02_TABLE_SEED: u64 = 0x706d_6a30_325f_7461; // "pmj02_ta"
+
+/// The per-level XOR constants for pmj02, dimension x then y, levels 0..15.
+///
+/// Source: Helmer, Christensen & Kensler 2021, as also shipped by OpenQMC (Apache-2.0,
+/// `include/oqmc/stochastic.h`). Constant `c[L]` is below `2^L`, so `i ⊕ c[L]` is an old point.
+const XORS: [[usize; 16]; 2] = [
+    [
+        0x0000, 0x0000, 0x0002, 0x0006, 0x0006, 0x000e, 0x0036, 0x004e, 0x0016, 0x002e, 0x0276,
+        0x06ce, 0x0716, 0x0c2e, 0x3076, 0x40ce,
+    ],
+    [
+        0x0000, 0x0001, 0x0003, 0x0003, 0x0007, 0x001b, 0x0027, 0x000b, 0x0017, 0x013b, 0x0367,
+        0x038b, 0x0617, 0x183b, 0x2067, 0x008b,
+    ],
+];
+
+/// The construction into `out` (any length up to [`PMJ02_MAX_POINTS`]; the caller checks).
+/// Point `i`'s random digits are word `i` of the WyRand stream of `seed` (low half x, high half
+/// y), so a shorter buffer gets a prefix of a longer one.
+const fn construct(seed: u64, out: &mut [[u32; 2]]) {
+    let n = out.len();
+    if n == 0 {
+        return;
+    }
+    let r = wyrand(seed, 0);
+    out[0] = [r as u32, (r >> 32) as u32];
+    let mut level = 0;
+    let mut len = 1;
+    while len < n {
+        let swap = 0x8000_0000u32 >> level;
+        let low = swap - 1;
+        let (cx, cy) = (XORS[0][level], XORS[1][level]);
+        let end = if 2 * len < n { 2 * len } else { n };
+        let mut i2 = len;
+        while i2 < end {
+            let i1 = i2 - len;
+            let r = wyrand(seed, i2 as u64);
+            // Keep digits 1..=L of the paired old point, flip digit L + 1, draw the rest.
+            let x = ((out[i1 ^ cx][0] & !low) ^ swap) | (r as u32 & low);
+            let y = ((out[i1 ^ cy][1] & !low) ^ swap) | ((r >> 32) as u32 & low);
+            out[i2] = [x, y];
+            i2 += 1;
+        }
+        len *= 2;
+        level += 1;
+    }
+}
+
+/// Writes the first `out.len()` points of the pmj02 sequence of `seed` into `out`, as 32-bit
+/// binary fractions `[x, y]` (the value is `x / 2³²`). Deterministic per seed, and
+/// prefix-consistent: a shorter buffer receives the first points of a longer one. Every
+/// power-of-two prefix `2^m` is a (0, m, 2)-net. Reads only points already written, so it needs
+/// no scratch memory. Allocates: no.
+///
+/// # Errors
+/// [`Error::ZeroSize`] if `out` is empty; [`Error::TooMany`] if it holds more than
+/// [`PMJ02_MAX_POINTS`] points (the published constants stop at 16 levels).
+///
+/// ```
+/// use nyquist::sequence::pmj02_build;
+/// let mut pts = [[0u32; 2]; 16];
+/// pmj02_build(7, &mut pts).unwrap();
+/// // 16 points: one in each of the 16 columns and each of the 16 rows.
+/// let mut cols = [0; 16];
+/// let mut rows = [0; 16];
+/// for [x, y] in pts {
+///     cols[(x >> 28) as usize] += 1;
+///     rows[(y >> 28) as usize] += 1;
+/// }
+/// assert_eq!((cols, rows), ([1; 16], [1; 16]));
+/// assert!(pmj02_build(7, &mut []).is_err());
+/// ```
+pub const fn pmj02_build(seed: u64, out: &mut [[u32; 2]]) -> Result<(), Error> {
+    if out.is_empty() {
+        return Err(Error::ZeroSize { what: "points" });
+    }
+    if out.len() > PMJ02_MAX_POINTS {
+        return Err(Error::TooMany { what: "points" });
+    }
+    construct(seed, out);
+    Ok(())
+}
+
+const fn bake() -> [[u32; 2]; PMJ02_MAX_POINTS] {
+    let mut t = [[0u32; 2]; PMJ02_MAX_POINTS];
+    construct(PMJ02_TABLE_SEED, &mut t);
+    t
+}
+
+/// [`PMJ02_MAX_POINTS`] pmj02 points of seed [`PMJ02_TABLE_SEED`] (512 KiB), built by
+/// [`pmj02_build`]'s construction at compile time. Every power-of-two prefix and every aligned
+/// block of `2^m` points is a (0, m, 2)-net (the tests check it).
+///
+/// ```
+/// use nyquist::sequence::PMJ02_TABLE;
+/// // The first two points sit in opposite halves in both dimensions.
+/// assert_ne!(PMJ02_TABLE[0][0] >> 31, PMJ02_TABLE[1][0] >> 31);
+/// assert_ne!(PMJ02_TABLE[0][1] >> 31, PMJ02_TABLE[1][1] >> 31);
+/// ```
+pub static PMJ02_TABLE: [[u32; 2]; PMJ02_MAX_POINTS] = bake();
+
+/// The fast Owen scramble of `x` with an already mixed key: the Laine–Karras hash on the
+/// reversed digits ([`lk_hash`]), as [`crate::scramble::fast_owen_scramble`] does after mixing
+/// its seed. Maps every aligned block of `2^k` values onto one.
+#[inline(always)]
+pub(crate) fn owen_keyed(x: u32, key: u32) -> u32 {
+    lk_hash(x.reverse_bits(), key).reverse_bits()
+}
+
+/// `2⁻²⁴`.
+const TWO_POW_MINUS_24: f32 = 1.0 / 16_777_216.0;
+
+/// The top 24 bits of a binary fraction as an `f32` in `[0, 1)` (exact, never 1).
+#[inline(always)]
+pub(crate) fn to_f32(v: u32) -> f32 {
+    (v >> 8) as f32 * TWO_POW_MINUS_24
+}
+
+/// The baked pmj02 sequence ([`PMJ02_TABLE`]) by index, plain or Owen-scrambled.
+///
+/// [`Pmj02::new`] reads the table as it is; [`Pmj02::scrambled`] passes each dimension through
+/// its own fast Owen scramble chosen by a seed. An Owen scramble maps every elementary interval
+/// onto one of the same shape, so every scrambled instance keeps the net and stratification
+/// properties of the table: many independent pmj02 sequences from one table.
+///
+/// Two dimensions; [`Sequence::point_count`] is `Some(65536)`: indices wrap modulo
+/// [`PMJ02_MAX_POINTS`] and `dim` modulo 2. Values are `f32` from the top 24 bits (truncated,
+/// never 1) or `f64` from all 32. Allocates: no.
+///
+/// ```
+/// use nyquist::sequence::{Pmj02, Sequence, PMJ02_TABLE};
+/// let p = Pmj02::new();
+/// assert_eq!(p.sample_2d_u32(5), PMJ02_TABLE[5]);
+/// assert_eq!(p.sample(5 + 65536, 3), p.sample(5, 1)); // index and dim wrap
+/// // Any scramble: the first 4 points fill the four quarter-width rows once each.
+/// let s = Pmj02::scrambled(9);
+/// let mut rows = [0; 4];
+/// for i in 0..4 {
+///     rows[(s.sample(i, 1) * 4.0) as usize] += 1;
+/// }
+/// assert_eq!(rows, [1, 1, 1, 1]);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Pmj02 {
+    /// The mixed Owen keys of x and y, or `None` for the plain table.
+    keys: Option<[u32; 2]>,
+}
+
+impl Pmj02 {
+    /// The baked table as it is.
+    ///
+    /// ```
+    /// use nyquist::sequence::{Pmj02, PMJ02_TABLE};
+    /// assert_eq!(Pmj02::new().sample_u32(3, 1), PMJ02_TABLE[3][1]);
+    /// ```
+    pub const fn new() -> Pmj02 {
+        Pmj02 { keys: None }
+    }
+
+    /// The table with each dimension fast-Owen-scrambled by a key hashed from `seed` (every
+    /// seed, 0 included, gives a scrambled instance).
+    ///
+    /// ```
+    /// use nyquist::sequence::Pmj02;
+    /// assert_eq!(Pmj02::scrambled(4), Pmj02::scrambled(4));
+    /// assert_ne!(Pmj02::scrambled(4).sample_2d(0), Pmj02::scrambled(5).sample_2d(0));
+    /// ```
+    pub const fn scrambled(seed: u64) -> Pmj02 {
+        let h = hash2(seed, 0x706d_6a30_325f_6f77);
+        Pmj02 {
+            keys: Some([h as u32, (h >> 32) as u32]),
+        }
+    }
+
+    /// Coordinate `dim & 1` of point `index & 0xffff`, as a 32-bit binary fraction.
+    ///
+    /// ```
+    /// use nyquist::sequence::Pmj02;
+    /// let p = Pmj02::scrambled(1);
+    /// assert_eq!(p.sample_u32(70_000, 2), p.sample_2d_u32(70_000 - 65_536)[0]);
+    /// ```
+    #[inline(always)]
+    pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
+        let d = (dim & 1) as usize;
+        let v = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)][d];
+        match self.keys {
+            None => v,
+            Some(keys) => owen_keyed(v, keys[d]),
+        }
+    }
+
+    /// Point `index & 0xffff` as two 32-bit binary fractions.
+    ///
+    /// ```
+    /// use nyquist::sequence::{Pmj02, PMJ02_TABLE};
+    /// assert_eq!(Pmj02::new().sample_2d_u32(65_536 + 2), PMJ02_TABLE[2]);
+    /// ```
+    #[inline(always)]
+    pub fn sample_2d_u32(&self, index: u32) -> [u32; 2] {
+        let [x, y] = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)];
+        match self.keys {
+            None => [x, y],
+            Some([kx, ky]) => [owen_keyed(x, kx), owen_keyed(y, ky)],
+        }
+    }
+
+    /// Point `index & 0xffff` as two `f32` in `[0, 1)`.
+    ///
+    /// ```
+    /// use nyquist::sequence::Pmj02;
+    /// let [x, y] = Pmj02::scrambled(3).sample_2d(12);
+    /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
+    /// ```
+    #[inline(always)]
+    pub fn sample_2d(&self, index: u32) -> [f32; 2] {
+        let [x, y] = self.sample_2d_u32(index);
+        [to_f32(x), to_f32(y)]
+    }
+}
+
+impl Sequence for Pmj02 {
+    fn dims(&self) -> u32 {
+        2
+    }
+
+    fn point_count(&self) -> Option<u64> {
+        Some(PMJ02_MAX_POINTS as u64)
+    }
+
+    #[inline(always)]
+    fn sample(&self, index: u64, dim: u32) -> f32 {
+        to_f32(self.sample_u32(index as u32, dim))
+    }
+
+    #[inline]
+    fn sample_f64(&self, index: u64, dim: u32) -> f64 {
+        f64::from(self.sample_u32(index as u32, dim)) * crate::math::TWO_POW_MINUS_32
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tests::sobol_oracle::assert_elementary_intervals;
+    use std::vec;
+    use std::vec::Vec;
+
+    const SEEDS: [u64; 6] = [0, 1, 5, 6, 10, 15];
+
+    /// Whether `pts` (a power-of-two count `2^m`) has one point in every `2^a × 2^(m−a)`
+    /// elementary interval.
+    fn is_net(pts: &[[u32; 2]]) -> bool {
+        let m = pts.len().trailing_zeros();
+        assert!(pts.len().is_power_of_two());
+        (0..=m).all(|a| {
+            let mut seen = vec![false; pts.len()];
+            pts.iter().all(|&[x, y]| {
+                let cx = if a == 0 { 0 } else { (x >> (32 - a)) as usize };
+                let cy = if a == m {
+                    0
+                } else {
+                    (y >> (32 - (m - a))) as usize
+                };
+                !core::mem::replace(&mut seen[(cx << (m - a)) | cy], true)
+            })
+        })
+    }
+
+    fn built(seed: u64, n: usize) -> Vec<[u32; 2]> {
+        let mut v = vec![[0u32; 2]; n];
+        pmj02_build(seed, &mut v).unwrap();
+        v
+    }
+
+    #[test]
+    fn pmj02_net_checker_rejects_a_non_net() {
+        // The checker must be able to fail: the four corners of the 2 × 2 grid fill its cells
+        // but pair up in the columns of width 1/4.
+        assert!(!is_net(&[
+            [0, 0],
+            [0, 1 << 31],
+            [1 << 31, 0],
+            [1 << 31, 1 << 31]
+        ]));
+        assert!(is_net(&[[0, 0], [1 << 31, 1 << 31]]));
+        assert!(is_net(&[
+            [0, 0],
+            [1 << 30, 1 << 31],
+            [2 << 30, 1 << 30],
+            [3 << 30, 3 << 30]
+        ]));
+    }
+
+    #[test]
+    fn pmj02_built_prefixes_are_nets_at_every_power_of_two_for_many_seeds() {
+        for seed in SEEDS.into_iter().chain([2, 3, 99, u64::MAX]) {
+            let pts = built(seed, PMJ02_MAX_POINTS);
+            for m in 0..=16 {
+                assert!(is_net(&pts[..1 << m]), "seed {seed} 2^{m}");
+            }
+            // The independent oracle agrees on the small ones.
+            for m in 0..=10 {
+                assert_elementary_intervals(&pts[..1 << m], m);
+            }
+        }
+    }
+
+    #[test]
+    fn pmj02_table_equals_build_and_aligned_blocks_are_nets() {
+        assert_eq!(
+            &PMJ02_TABLE[..],
+            &built(PMJ02_TABLE_SEED, PMJ02_MAX_POINTS)[..]
+        );
+        for m in 0..=16u32 {
+            for block in PMJ02_TABLE.chunks_exact(1 << m) {
+                assert!(is_net(block), "2^{m} block");
+            }
+        }
+    }
+
+    #[test]
+    fn pmj02_build_is_prefix_consistent_and_seeded() {
+        let long = built(3, 5000);
+        for n in [1, 2, 3, 7, 64, 100, 4097] {
+            assert_eq!(built(3, n)[..], long[..n], "n={n}");
+        }
+        let other = built(4, 5000);
+        assert!(long.iter().zip(&other).all(|(a, b)| a != b));
+    }
+
+    #[test]
+    fn pmj02_build_rejects_bad_buffer_sizes() {
+        assert_eq!(
+            pmj02_build(0, &mut []),
+            Err(Error::ZeroSize { what: "points" })
+        );
+        let mut big = vec![[7u32; 2]; PMJ02_MAX_POINTS + 1];
+        assert_eq!(
+            pmj02_build(0, &mut big),
+            Err(Error::TooMany { what: "points" })
+        );
+        assert!(big.iter().all(|&p| p == [7, 7]), "left untouched");
+        assert_eq!(pmj02_build(0, &mut big[..PMJ02_MAX_POINTS]), Ok(()));
+    }
+
+    #[test]
+    fn pmj02_is_progressively_multi_jittered_in_1d() {
+        // At every 2^m each axis has one point per stratum of width 2^-m, and in between
+        // (2^m < n < 2^(m+1)) no stratum of width 2^-(m+1) holds two: new points only fill
+        // empty halves.
+        for seed in SEEDS {
+            let pts = built(seed, 4096);
+            for d in 0..2 {
+                for m in 0..12u32 {
+                    let fine = m + 1;
+                    let mut seen = vec![false; 1 << fine];
+                    for (i, p) in pts[..2 << m].iter().enumerate() {
+                        let s = (p[d] >> (32 - fine)) as usize;
+                        assert!(!core::mem::replace(&mut seen[s], true), "{seed} {d} {i}");
+                        if i + 1 == 1 << m {
+                            // Exactly one per coarse stratum.
+                            let coarse: Vec<usize> = (0..1 << m)
+                                .map(|c| usize::from(seen[2 * c]) + usize::from(seen[2 * c + 1]))
+                                .collect();
+                            assert!(coarse.iter().all(|&k| k == 1), "{seed} {d} 2^{m}");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn pmj02_scrambles_keep_nets_and_unit_range() {
+        for seed in SEEDS {
+            let s = Pmj02::scrambled(seed);
+            let pts: Vec<[u32; 2]> = (0..1024).map(|i| s.sample_2d_u32(i)).collect();
+            for m in 0..=10 {
+                assert!(is_net(&pts[..1 << m]), "seed {seed} 2^{m}");
+            }
+            for i in 0..1024u32 {
+                let [x, y] = s.sample_2d(i);
+                assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
+            }
+            // The scramble changes the points.
+            assert!(pts.iter().zip(PMJ02_TABLE.iter()).all(|(a, b)| a != b));
+        }
+        assert_ne!(
+            Pmj02::scrambled(1).sample_2d_u32(0),
+            Pmj02::scrambled(2).sample_2d_u32(0)
+        );
+    }
+
+    #[test]
+    fn pmj02_sequence_impl_wraps_and_agrees() {
+        for p in [Pmj02::new(), Pmj02::scrambled(8)] {
+            assert_eq!(p.dims(), 2);
+            assert_eq!(p.point_count(), Some(65536));
+            for i in [0u32, 1, 777, 65535] {
+                let [xu, yu] = p.sample_2d_u32(i);
+                let [x, y] = p.sample_2d(i);
+                let i64 = u64::from(i);
+                assert_eq!(p.sample(i64, 0), x);
+                assert_eq!(p.sample(i64 + 65536 * 3, 5), y);
+                assert_eq!(p.sample_u32(i + 65536, 2), xu);
+                assert_eq!(p.sample_f64(i64, 1), f64::from(yu) / 4_294_967_296.0);
+            }
+            let mut buf = [0.0f32; 6];
+            assert_eq!(p.fill(10, 2, &mut buf), Ok(3));
+            assert_eq!(buf[5], p.sample(12, 1));
+        }
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn pmj02_never_panics_and_stays_in_unit_interval(
+            seed: u64, index: u64, dim: u32, n in 0usize..70_000,
+        ) {
+            for p in [Pmj02::new(), Pmj02::scrambled(seed)] {
+                let x = p.sample(index, dim);
+                proptest::prop_assert!((0.0..1.0).contains(&x));
+                proptest::prop_assert!((0.0..1.0).contains(&p.sample_f64(index, dim)));
+            }
+            let mut v = vec![[0u32; 2]; n.min(PMJ02_MAX_POINTS + 1)];
+            let r = pmj02_build(seed, &mut v);
+            proptest::prop_assert_eq!(r.is_ok(), (1..=PMJ02_MAX_POINTS).contains(&v.len()));
+        }
+    }
+}
