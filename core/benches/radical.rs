@@ -6,8 +6,8 @@ use criterion::{
     BenchmarkGroup, BenchmarkId, Criterion, Throughput, criterion_group, criterion_main,
 };
 use nyquist::radical::{
-    PRIMES, fill_radical_inverse, folded_radical_inverse, radical_inverse, radical_inverse_at,
-    scrambled_radical_inverse,
+    PRIMES, fast_owen_scrambled_radical_inverse, fill_radical_inverse, folded_radical_inverse,
+    owen_scrambled_radical_inverse, radical_inverse, radical_inverse_at, scrambled_radical_inverse,
 };
 use nyquist::sequence::{Halton, Sequence};
 use std::hint::black_box;
@@ -180,6 +180,10 @@ fn halton(c: &mut Criterion<cpu_time::BenchClock>) {
     for (name, f) in [
         ("folded", folded_radical_inverse as fn(u32, u64) -> f32),
         ("scrambled", |d, a| scrambled_radical_inverse(d, a, 7)),
+        ("owen", |d, a| owen_scrambled_radical_inverse(d, a, 7)),
+        ("fast_owen", |d, a| {
+            fast_owen_scrambled_radical_inverse(d, a, 7)
+        }),
     ] {
         g.bench_function(BenchmarkId::from_parameter(name), |b| {
             b.iter(|| run(&mut out, black_box(&idx), f))

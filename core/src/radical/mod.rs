@@ -1,6 +1,6 @@
 //! Radical inverses Φ_b(a) for the first 1024 prime bases, with `u64` indices, in `f32` and `f64`:
-//! the plain form, the folded (Zaremba) form Ψ_b, a digit-permutation scrambled form, and the
-//! inverse.
+//! the plain form, the folded (Zaremba) form Ψ_b, a digit-permutation scrambled form, nested
+//! (Owen) scrambled forms ([`owen_scrambled_radical_inverse`]), and the inverse.
 //!
 //! Dimension `d` uses base [`prime`]`(d)`; dimension 0 is base 2. Every function here is total:
 //! `dim >= 1024` wraps to `dim % 1024`, every `u64` index is valid, and results lie in `[0, 1)`
@@ -30,10 +30,15 @@
 //! permutations of the radical inverse (Faure 1992; Kollig & Keller 2002), and pbrt-v3 §7.4 for
 //! `InverseRadicalInverse` semantics.
 
+mod owen;
 mod primes;
 
 use crate::math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};
 use crate::{Error, hash};
+pub use owen::{
+    fast_owen_scrambled_radical_inverse, fast_owen_scrambled_radical_inverse_f64,
+    owen_scrambled_radical_inverse, owen_scrambled_radical_inverse_f64,
+};
 use primes::PRIME_TABLE;
 pub use primes::PRIMES;
 

@@ -3,24 +3,30 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::radical::{
-    inverse_radical_inverse, radical_inverse, radical_inverse_dims, radical_inverse_inlined,
-    scrambled_radical_inverse,
+    fast_owen_scrambled_radical_inverse, inverse_radical_inverse, owen_scrambled_radical_inverse,
+    radical_inverse, radical_inverse_dims, radical_inverse_inlined, scrambled_radical_inverse,
 };
+use crate::scramble::Scramble;
 
-/// Scrambling of [`HaltonSampler`]'s values.
+/// Scrambling of [`HaltonSampler`]'s values: the crate-wide [`Scramble`], under the name this
+/// module has always exported.
+///
+/// - `None`: plain radical inverses.
+/// - `PermuteDigits`: one seeded digit permutation per base
+///   ([`scrambled_radical_inverse`](crate::radical::scrambled_radical_inverse)).
+/// - `Owen`: the nested uniform scramble
+///   ([`owen_scrambled_radical_inverse`](crate::radical::owen_scrambled_radical_inverse)).
+/// - `FastOwen`: pbrt-v4 has none for Halton; here the nested scramble with affine digit
+///   permutations
+///   ([`fast_owen_scrambled_radical_inverse`](crate::radical::fast_owen_scrambled_radical_inverse)):
+///   the same two-point law as `Owen` at a fraction of its cost.
 ///
 /// ```
 /// use nyquist::sampler::HaltonScramble;
 /// assert_ne!(HaltonScramble::None, HaltonScramble::PermuteDigits);
+/// assert_eq!(HaltonScramble::Owen, nyquist::scramble::Scramble::Owen);
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum HaltonScramble {
-    /// Plain radical inverses.
-    None,
-    /// Seeded random digit permutations per base
-    /// ([`scrambled_radical_inverse`](crate::radical::scrambled_radical_inverse)).
-    PermuteDigits,
-}
+pub type HaltonScramble = Scramble;
 
 /// The largest scale per axis: pixels repeat their sample pattern every 128 (x) and 243 (y)
 /// pixels, as in pbrt.
@@ -47,8 +53,15 @@ fn mod_inverse(a: u64, n: u64) -> u64 {
 /// `k` base-3 digits reversed are `p.y mod 3^k` (Chinese remainder theorem with inverses computed
 /// at construction). The image sample is `(Φ₂(idx >> j), Φ₃(idx / 3^k))` — the exact fractional
 /// part of the scaled radical inverses; dimension `d ≥ 2` is `Φ_{prime(d)}(idx)` (dimensions
-/// wrap modulo 1024). With [`HaltonScramble::PermuteDigits`], every dimension's digits go through
-/// a seeded permutation.
+/// wrap modulo 1024).
+///
+/// Scrambling ([`HaltonScramble`]) applies to every dimension. In dimensions 0 and 1 it
+/// scrambles the in-pixel values `Φ₂(idx >> j)` and `Φ₃(idx / 3^k)`, the same way for every
+/// pixel, so each pixel keeps its own samples (the pixel's digits are never touched) and the
+/// samples of a pixel keep their strata: `Owen` and `FastOwen` are nested scrambles, which map
+/// each interval `[c/bᵐ, (c + 1)/bᵐ)` onto one of the same size. A pixel's consecutive samples
+/// step the in-pixel indices by `3^k` and `2^j`, so any `2ᵐ` (`3ᵐ`) consecutive samples of a
+/// pixel fall one per `1/2ᵐ` (`1/3ᵐ`) column (row) of the pixel, scrambled or not.
 ///
 /// All index arithmetic is `u64`: no overflow for any `u32` pixel and sample index. Every sample
 /// index gives a new point (no wrap at `samples_per_pixel`).
@@ -178,8 +191,10 @@ impl HaltonSampler {
     #[inline]
     fn value(&self, dim: u32, a: u64) -> f32 {
         match self.scramble {
-            HaltonScramble::None => radical_inverse(dim, a),
-            HaltonScramble::PermuteDigits => scrambled_radical_inverse(dim, a, self.seed),
+            Scramble::None => radical_inverse(dim, a),
+            Scramble::PermuteDigits => scrambled_radical_inverse(dim, a, self.seed),
+            Scramble::FastOwen => fast_owen_scrambled_radical_inverse(dim, a, self.seed),
+            Scramble::Owen => owen_scrambled_radical_inverse(dim, a, self.seed),
         }
     }
 
@@ -191,9 +206,9 @@ impl HaltonSampler {
             1 => self.value(1, self.axis_index[1]),
             // The camera's time and lens dimensions with the base a constant, so the per-base
             // table reads fold away.
-            2 if self.scramble == HaltonScramble::None => radical_inverse_inlined(2, self.index),
-            3 if self.scramble == HaltonScramble::None => radical_inverse_inlined(3, self.index),
-            4 if self.scramble == HaltonScramble::None => radical_inverse_inlined(4, self.index),
+            2 if self.scramble == Scramble::None => radical_inverse_inlined(2, self.index),
+            3 if self.scramble == Scramble::None => radical_inverse_inlined(3, self.index),
+            4 if self.scramble == Scramble::None => radical_inverse_inlined(4, self.index),
             _ => self.value(dim, self.index),
         }
     }
@@ -205,8 +220,7 @@ impl HaltonSampler {
     #[inline]
     fn batch(&self, dim: u32, out: &mut [f32]) -> bool {
         let d = dim % 1024;
-        let fits =
-            self.scramble == HaltonScramble::None && d >= 2 && d as usize + out.len() <= 1024;
+        let fits = self.scramble == Scramble::None && d >= 2 && d as usize + out.len() <= 1024;
         if fits {
             radical_inverse_dims(d, self.index, out);
         }
@@ -265,7 +279,7 @@ mod tests {
 
     #[test]
     fn halton_is_consistent_and_thread_independent() {
-        for scramble in [HaltonScramble::None, HaltonScramble::PermuteDigits] {
+        for scramble in Scramble::ALL {
             let s = HaltonSampler::new([64, 48], 16, scramble, 5).unwrap();
             consistent_values(&s);
             threads_agree(&s);
@@ -319,12 +333,13 @@ mod tests {
                 seen.push(x.to_bits());
             }
         }
-        let mut t =
-            HaltonSampler::new([16384, 16384], 65536, HaltonScramble::PermuteDigits, 3).unwrap();
-        let a = super::super::tests::record(&mut t, [16383, 16383], 65535);
-        assert!(a.iter().all(|x| (0.0..1.0).contains(x)));
-        let b = super::super::tests::record(&mut t, [16383, 16383], 65534);
-        assert_ne!(a, b);
+        for scramble in [Scramble::PermuteDigits, Scramble::FastOwen, Scramble::Owen] {
+            let mut t = HaltonSampler::new([16384, 16384], 65536, scramble, 3).unwrap();
+            let a = super::super::tests::record(&mut t, [16383, 16383], 65535);
+            assert!(a.iter().all(|x| (0.0..1.0).contains(x)), "{scramble:?}");
+            let b = super::super::tests::record(&mut t, [16383, 16383], 65534);
+            assert_ne!(a, b, "{scramble:?}");
+        }
         // u64 index math: stride 2⁷·3⁵ = 31104, and the largest sample index passes 2³².
         assert!(s.sequence_index([16383, 16383], 65535) >= 65535 * 31104);
         assert!(s.sequence_index([16383, 16383], u32::MAX) > u64::from(u32::MAX));
@@ -332,9 +347,117 @@ mod tests {
 
     #[test]
     fn halton_arrays_equal_values_taken_one_at_a_time() {
-        for scramble in [HaltonScramble::None, HaltonScramble::PermuteDigits] {
+        for scramble in Scramble::ALL {
             let s = HaltonSampler::new([640, 480], 16, scramble, 9).unwrap();
             crate::sampler::tests::arrays_are_values_in_order(&s);
+        }
+    }
+
+    /// With the nested scrambles the film position is the pixel plus the scrambled in-pixel
+    /// value (`Φ₂(idx >> j)`, `Φ₃(idx / 3^k)` through the scramble), every other dimension the
+    /// scrambled `Φ(idx)`; the pixels of one pattern block together take each index once.
+    #[test]
+    fn halton_owen_values_are_the_scrambled_radical_inverses() {
+        type Scrambled = fn(u32, u64, u64) -> f32;
+        let cases: [(Scramble, Scrambled); 2] = [
+            (Scramble::Owen, owen_scrambled_radical_inverse),
+            (Scramble::FastOwen, fast_owen_scrambled_radical_inverse),
+        ];
+        for (scramble, f) in cases {
+            let mut s = HaltonSampler::new([8, 9], 4, scramble, 21).unwrap();
+            for y in 0..9u32 {
+                for x in 0..8u32 {
+                    for i in 0..4 {
+                        let idx = s.sequence_index([x, y], i);
+                        s.start_pixel_sample([x, y], i, 0);
+                        let p = s.get_pixel_2d();
+                        assert_eq!(p, [f(0, idx >> 3, 21), f(1, idx / 9, 21)], "{scramble:?}");
+                        let c = s.camera_sample([x, y], i);
+                        assert!(c.p_film[0] >= x as f32 && c.p_film[0] < (x + 1) as f32);
+                        assert!(c.p_film[1] >= y as f32 && c.p_film[1] < (y + 1) as f32);
+                        assert_eq!(
+                            [c.time, c.lens[0], c.lens[1]],
+                            [2, 3, 4].map(|d| f(d, idx, 21))
+                        );
+                        assert_eq!(s.get_1d(), f(5, idx, 21));
+                    }
+                }
+            }
+        }
+    }
+
+    /// Any `2ᵐ` consecutive samples of a pixel fall one per `1/2ᵐ` column of the pixel and any
+    /// `3ᵐ` one per `1/3ᵐ` row, under every scramble (the nested ones map strata to strata).
+    #[test]
+    fn halton_pixel_samples_keep_their_strata_under_every_scramble() {
+        for scramble in Scramble::ALL {
+            let mut s = HaltonSampler::new([64, 48], 64, scramble, 8).unwrap();
+            for pixel in [[0u32, 0], [5, 7], [63, 47], [1000, 3]] {
+                for first in [0u32, 5] {
+                    for (axis, n) in [(0usize, 16u32), (1, 27)] {
+                        let mut seen = std::vec![false; n as usize];
+                        for i in first..first + n {
+                            s.start_pixel_sample(pixel, i, 0);
+                            let v = f64::from(s.get_pixel_2d()[axis]);
+                            // Unscrambled (and some digit-permuted) values sit on a stratum's
+                            // lower edge, which f32 can round just below: allow 4e-6 of slack,
+                            // above the rounding (27·2⁻²⁴ ≈ 1.6e-6).
+                            let cell = (v * f64::from(n) + 4e-6) as usize;
+                            assert!(
+                                !std::mem::replace(&mut seen[cell], true),
+                                "{scramble:?} {pixel:?} axis {axis} first {first}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// The scrambles differ from each other and from the plain values, and depend on the seed.
+    #[test]
+    fn halton_scrambles_are_distinct_and_seeded() {
+        let run = |scramble, seed| {
+            let mut s = HaltonSampler::new([32, 32], 16, scramble, seed).unwrap();
+            super::super::tests::record(&mut s, [3, 4], 2)
+        };
+        let all: std::vec::Vec<_> = Scramble::ALL.iter().map(|&sc| run(sc, 5)).collect();
+        for i in 0..4 {
+            for j in 0..i {
+                assert_ne!(
+                    all[i],
+                    all[j],
+                    "{:?} {:?}",
+                    Scramble::ALL[i],
+                    Scramble::ALL[j]
+                );
+            }
+        }
+        for scramble in [Scramble::PermuteDigits, Scramble::FastOwen, Scramble::Owen] {
+            assert_ne!(run(scramble, 5), run(scramble, 6), "{scramble:?}");
+        }
+        assert_eq!(run(Scramble::None, 5), run(Scramble::None, 6));
+    }
+
+    proptest::proptest! {
+        /// Any pixel, sample, starting dimension and seed, under every scramble: values in
+        /// `[0, 1)`, and the camera sample inside its pixel.
+        #[test]
+        fn halton_values_are_in_unit_interval_for_every_scramble(
+            px in 0u32..1 << 20, py in 0u32..1 << 20, index in proptest::prelude::any::<u32>(),
+            dim in proptest::prelude::any::<u32>(), seed in proptest::prelude::any::<u64>(),
+        ) {
+            for scramble in Scramble::ALL {
+                let mut s = HaltonSampler::new([1920, 1080], 64, scramble, seed).unwrap();
+                let v = super::super::tests::record(&mut s, [px, py], index);
+                proptest::prop_assert!(v.iter().all(|x| (0.0..1.0).contains(x)), "{v:?}");
+                let c = s.camera_sample([px, py], index);
+                proptest::prop_assert!(c.p_film[0] >= px as f32 && c.p_film[0] < (px + 1) as f32);
+                proptest::prop_assert!(c.p_film[1] >= py as f32 && c.p_film[1] < (py + 1) as f32);
+                s.start_pixel_sample([px, py], index, dim);
+                let w = [s.get_1d(), s.get_2d()[0], s.get_2d()[1]];
+                proptest::prop_assert!(w.iter().all(|x| (0.0..1.0).contains(x)), "{w:?}");
+            }
         }
     }
 

@@ -2,14 +2,18 @@
 //! variants: point `i`, dimension `d` is a radical inverse of `i` in the `d`-th prime base.
 //!
 //! Sources: van der Corput (1935); Halton (1960); Kocis & Whiten (1997) for the Halton–Zaremba
-//! (folded) form; Kollig & Keller (2002) for scrambling by digit permutation.
+//! (folded) form; Kollig & Keller (2002) for scrambling by digit permutation; Owen (1995) for the
+//! nested scrambles of [`ScrambledHalton::with_strategy`].
 
 use super::{Sequence, check_fill};
 use crate::Error;
 use crate::radical::{
-    PRIME_COUNT, fill_consecutive, folded_radical_inverse, folded_radical_inverse_f64,
-    radical_inverse, radical_inverse_f64, scrambled_radical_inverse, scrambled_radical_inverse_f64,
+    PRIME_COUNT, fast_owen_scrambled_radical_inverse, fast_owen_scrambled_radical_inverse_f64,
+    fill_consecutive, folded_radical_inverse, folded_radical_inverse_f64,
+    owen_scrambled_radical_inverse, owen_scrambled_radical_inverse_f64, radical_inverse,
+    radical_inverse_f64, scrambled_radical_inverse, scrambled_radical_inverse_f64,
 };
+use crate::scramble::Scramble;
 
 /// Validates a dimension count for the radical-inverse sets: `1 ..= 1024`.
 fn check_dims(dims: u32) -> Result<u32, Error> {
@@ -169,8 +173,18 @@ impl Sequence for HaltonZaremba {
     }
 }
 
-/// The Halton sequence scrambled by one random digit permutation per base, chosen by `seed`
-/// (see [`scrambled_radical_inverse`]). Every seed gives a stratified, uniformly distributed set.
+/// The Halton sequence randomized by a [`Scramble`] chosen with `seed`: by default
+/// ([`ScrambledHalton::new`]) one random digit permutation per base (see
+/// [`scrambled_radical_inverse`]); [`ScrambledHalton::with_strategy`] picks any of the four.
+///
+/// | strategy | dimension `d` of point `i` |
+/// |---|---|
+/// | `None` | Φ_b(i), the plain [`Halton`] values |
+/// | `PermuteDigits` | [`scrambled_radical_inverse`] |
+/// | `FastOwen` | [`fast_owen_scrambled_radical_inverse`] (nested, affine digit permutations) |
+/// | `Owen` | [`owen_scrambled_radical_inverse`] (nested uniform) |
+///
+/// Every seed gives a stratified set: the first `bᵐ` points fall one per `1/bᵐ` in each base.
 ///
 /// ```
 /// use nyquist::sequence::{ScrambledHalton, Sequence};
@@ -183,10 +197,12 @@ impl Sequence for HaltonZaremba {
 pub struct ScrambledHalton {
     dims: u32,
     seed: u64,
+    strategy: Scramble,
 }
 
 impl ScrambledHalton {
-    /// A scrambled Halton sequence with `dims` dimensions; every `seed` is valid.
+    /// A digit-permuted Halton sequence with `dims` dimensions; every `seed` is valid. The same
+    /// as [`ScrambledHalton::with_strategy`]`(dims, Scramble::PermuteDigits, seed)`.
     ///
     /// # Errors
     /// As [`Halton::new`].
@@ -195,10 +211,46 @@ impl ScrambledHalton {
     /// assert!(nyquist::sequence::ScrambledHalton::new(2000, 0).is_err());
     /// ```
     pub fn new(dims: u32, seed: u64) -> Result<ScrambledHalton, Error> {
+        ScrambledHalton::with_strategy(dims, Scramble::PermuteDigits, seed)
+    }
+
+    /// A Halton sequence with `dims` dimensions randomized by `strategy` under `seed` (every
+    /// seed is valid; with [`Scramble::None`] the seed is ignored and the values are
+    /// [`Halton`]'s).
+    ///
+    /// # Errors
+    /// As [`Halton::new`].
+    ///
+    /// ```
+    /// use nyquist::radical::owen_scrambled_radical_inverse;
+    /// use nyquist::scramble::Scramble;
+    /// use nyquist::sequence::{Halton, ScrambledHalton, Sequence};
+    /// let owen = ScrambledHalton::with_strategy(3, Scramble::Owen, 7).unwrap();
+    /// assert_eq!(owen.sample(10, 2), owen_scrambled_radical_inverse(2, 10, 7));
+    /// let plain = ScrambledHalton::with_strategy(3, Scramble::None, 7).unwrap();
+    /// assert_eq!(plain.sample(10, 2), Halton::new(3).unwrap().sample(10, 2));
+    /// assert!(ScrambledHalton::with_strategy(0, Scramble::Owen, 7).is_err());
+    /// ```
+    pub fn with_strategy(
+        dims: u32,
+        strategy: Scramble,
+        seed: u64,
+    ) -> Result<ScrambledHalton, Error> {
         Ok(ScrambledHalton {
             dims: check_dims(dims)?,
             seed,
+            strategy,
         })
+    }
+
+    /// The randomization this set applies.
+    ///
+    /// ```
+    /// use nyquist::{scramble::Scramble, sequence::ScrambledHalton};
+    /// assert_eq!(ScrambledHalton::new(2, 0).unwrap().strategy(), Scramble::PermuteDigits);
+    /// ```
+    pub fn strategy(&self) -> Scramble {
+        self.strategy
     }
 }
 
@@ -212,11 +264,37 @@ impl Sequence for ScrambledHalton {
     }
 
     fn sample(&self, index: u64, dim: u32) -> f32 {
-        scrambled_radical_inverse(dim % self.dims, index, self.seed)
+        let (dim, seed) = (dim % self.dims, self.seed);
+        match self.strategy {
+            Scramble::None => radical_inverse(dim, index),
+            Scramble::PermuteDigits => scrambled_radical_inverse(dim, index, seed),
+            Scramble::FastOwen => fast_owen_scrambled_radical_inverse(dim, index, seed),
+            Scramble::Owen => owen_scrambled_radical_inverse(dim, index, seed),
+        }
     }
 
     fn sample_f64(&self, index: u64, dim: u32) -> f64 {
-        scrambled_radical_inverse_f64(dim % self.dims, index, self.seed)
+        let (dim, seed) = (dim % self.dims, self.seed);
+        match self.strategy {
+            Scramble::None => radical_inverse_f64(dim, index),
+            Scramble::PermuteDigits => scrambled_radical_inverse_f64(dim, index, seed),
+            Scramble::FastOwen => fast_owen_scrambled_radical_inverse_f64(dim, index, seed),
+            Scramble::Owen => owen_scrambled_radical_inverse_f64(dim, index, seed),
+        }
+    }
+
+    /// As [`Sequence::fill`]; with [`Scramble::None`], [`Halton::fill`]'s incremental path.
+    fn fill(&self, first: u64, dims: u32, out: &mut [f32]) -> Result<u64, Error> {
+        if self.strategy == Scramble::None {
+            return Halton { dims: self.dims }.fill(first, dims, out);
+        }
+        let n = check_fill(self.dims, None, first, dims, out.len())?;
+        for (k, point) in (0..n).zip(out.chunks_exact_mut(dims as usize)) {
+            for (dim, x) in (0..dims).zip(point) {
+                *x = self.sample(first + k, dim);
+            }
+        }
+        Ok(n)
     }
 }
 
@@ -235,7 +313,7 @@ mod tests {
     }
     use proptest::prelude::*;
 
-    fn sets() -> [(&'static str, std::boxed::Box<dyn Sequence>); 4] {
+    fn sets() -> [(&'static str, std::boxed::Box<dyn Sequence>); 7] {
         [
             ("vdc", std::boxed::Box::new(VanDerCorput)),
             ("halton", std::boxed::Box::new(Halton::new(7).unwrap())),
@@ -246,6 +324,20 @@ mod tests {
             (
                 "scrambled",
                 std::boxed::Box::new(ScrambledHalton::new(7, 3).unwrap()),
+            ),
+            (
+                "unscrambled",
+                std::boxed::Box::new(ScrambledHalton::with_strategy(7, Scramble::None, 3).unwrap()),
+            ),
+            (
+                "fast-owen",
+                std::boxed::Box::new(
+                    ScrambledHalton::with_strategy(7, Scramble::FastOwen, 3).unwrap(),
+                ),
+            ),
+            (
+                "owen",
+                std::boxed::Box::new(ScrambledHalton::with_strategy(7, Scramble::Owen, 3).unwrap()),
             ),
         ]
     }
@@ -307,6 +399,51 @@ mod tests {
             let cy = (h.sample_f64(i, 1) * ny as f64) as usize;
             assert!(!seen[cx][cy], "cell ({cx}, {cy}) twice");
             seen[cx][cy] = true;
+        }
+    }
+
+    #[test]
+    fn strategies_give_their_radical_inverses() {
+        for (i, d) in [(0u64, 0u32), (5, 1), (1 << 40, 6), (u64::MAX, 3)] {
+            let set = |s| ScrambledHalton::with_strategy(7, s, 11).unwrap();
+            let f32s = [
+                radical_inverse(d, i),
+                scrambled_radical_inverse(d, i, 11),
+                fast_owen_scrambled_radical_inverse(d, i, 11),
+                owen_scrambled_radical_inverse(d, i, 11),
+            ];
+            let f64s = [
+                radical_inverse_f64(d, i),
+                scrambled_radical_inverse_f64(d, i, 11),
+                fast_owen_scrambled_radical_inverse_f64(d, i, 11),
+                owen_scrambled_radical_inverse_f64(d, i, 11),
+            ];
+            for (k, s) in Scramble::ALL.into_iter().enumerate() {
+                assert_eq!(set(s).sample(i, d + 7), f32s[k], "{s:?}");
+                assert_eq!(set(s).sample_f64(i, d), f64s[k], "{s:?}");
+                assert_eq!(set(s).strategy(), s);
+            }
+        }
+        assert_eq!(
+            ScrambledHalton::new(3, 4),
+            ScrambledHalton::with_strategy(3, Scramble::PermuteDigits, 4)
+        );
+    }
+
+    /// Every strategy keeps the 2-D stratification of the first `2^a·3^b` points.
+    #[test]
+    fn scrambled_2d_first_points_are_stratified_for_every_strategy() {
+        for s in Scramble::ALL {
+            let h = ScrambledHalton::with_strategy(2, s, 5).unwrap();
+            let mut seen = [[false; 27]; 32];
+            for i in 0..32 * 27 {
+                // Unscrambled values sit on cell edges, which f64 can round just below.
+                let cx = h.sample_f64(i, 0) * 32.0 + 1e-9;
+                let cy = h.sample_f64(i, 1) * 27.0 + 1e-9;
+                let (cx, cy) = (cx as usize, cy as usize);
+                assert!(!seen[cx][cy], "{s:?}: cell ({cx}, {cy}) twice");
+                seen[cx][cy] = true;
+            }
         }
     }
 
