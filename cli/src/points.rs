@@ -4,8 +4,8 @@ use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sequence::{
-    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, Sequence, Sobol, VanDerCorput,
-    ZeroTwo,
+    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, Pmj02, Sequence, Sobol,
+    VanDerCorput, ZeroTwo,
 };
 use nyquist::stratify::{self, Jitter};
 use std::io::Write;
@@ -50,6 +50,9 @@ pub enum SamplerName {
     /// --resolution).
     #[value(name = "zsobol")]
     ZSobol,
+    /// Progressive multi-jittered (0,2) sequence (two dimensions; --seed picks the Owen
+    /// scramble, 0 the baked table itself); with --spp, shuffled and scrambled per pixel.
+    Pmj02,
 }
 
 /// Output formats of `points`.
@@ -187,8 +190,8 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
     use SamplerName as S;
     use nyquist::sampler::{
         AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-        OwenSobolSampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
-        ZeroTwoSampler,
+        OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler,
+        ZSobolSampler, ZeroTwoSampler,
     };
     let n = name(args.sampler);
     let dims = args.dims;
@@ -297,6 +300,7 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
         ),
         S::BestCandidate => Box::new(BestCandidateSampler::new(spp, args.seed).map_err(err)?),
         S::OwenSobol => Box::new(OwenSobolSampler::new(spp, args.seed).map_err(err)?),
+        S::Pmj02 => Box::new(Pmj02Sampler::new(spp, args.seed).map_err(err)?),
         S::ZSobol => {
             notice(ZSobolSampler::rounded_spp(spp));
             Box::new(
@@ -446,6 +450,14 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
             args,
             &mut out,
         )?,
+        S::Pmj02 => {
+            let set = if args.seed == 0 {
+                Pmj02::new()
+            } else {
+                Pmj02::scrambled(args.seed)
+            };
+            fill(&set, args, &mut out)?
+        }
         S::BestCandidate | S::Adaptive | S::ZSobol => {
             bail!("{} is a pixel sampler: give --spp", name(args.sampler))
         }

@@ -49,6 +49,8 @@ pub enum SamplerName {
     /// up to a power of two).
     #[value(name = "zsobol")]
     ZSobol,
+    /// Progressive multi-jittered (0,2) points, shuffled and Owen-scrambled per pixel.
+    Pmj02,
 }
 
 impl SamplerName {

@@ -5,8 +5,8 @@ use core::fmt;
 
 use super::{
     AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, OwenSobolSampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler,
-    ZSobolSampler, ZeroTwoSampler,
+    Jitter, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler,
+    StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
 };
 use crate::scramble::Scramble;
 
@@ -14,13 +14,13 @@ use crate::scramble::Scramble;
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, NAMES};
-/// assert_eq!(NAMES.len(), 11);
+/// assert_eq!(NAMES.len(), 12);
 /// for name in NAMES {
 ///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
 ///     assert_eq!(s.name(), name);
 /// }
 /// ```
-pub const NAMES: [&str; 11] = [
+pub const NAMES: [&str; 12] = [
     "random",
     "uniform",
     "stratified",
@@ -32,6 +32,7 @@ pub const NAMES: [&str; 11] = [
     "adaptive",
     "owen-sobol",
     "zsobol",
+    "pmj02",
 ];
 
 /// Threshold of the `adaptive` sampler (see [`AdaptiveSampler::new`]).
@@ -133,6 +134,8 @@ pub enum NamedSampler {
     OwenSobol(OwenSobolSampler),
     /// `zsobol`.
     ZSobol(ZSobolSampler),
+    /// `pmj02`.
+    Pmj02(Pmj02Sampler),
 }
 
 /// Evaluates `$body` with `$s` bound to the sampler inside `$self`.
@@ -149,6 +152,7 @@ macro_rules! delegate {
             NamedSampler::Adaptive($s) => $body,
             NamedSampler::OwenSobol($s) => $body,
             NamedSampler::ZSobol($s) => $body,
+            NamedSampler::Pmj02($s) => $body,
         }
     };
 }
@@ -169,7 +173,8 @@ impl NamedSampler {
     ///   spp (at least 1) and all of it, threshold 0.1;
     /// - `owen-sobol`: [`OwenSobolSampler`] (frame 0);
     /// - `zsobol`: [`ZSobolSampler`] over the image, fast-Owen scrambled (spp rounded up to a
-    ///   power of two).
+    ///   power of two);
+    /// - `pmj02`: [`Pmj02Sampler`] (spp up to 65536).
     ///
     /// The size matters to `halton`, `hammersley`, `sobol` and `zsobol` only, but must be non-zero for
     /// all. Allocates: no.
@@ -275,6 +280,7 @@ impl NamedSampler {
             NamedSampler::Adaptive(_) => "adaptive",
             NamedSampler::OwenSobol(_) => "owen-sobol",
             NamedSampler::ZSobol(_) => "zsobol",
+            NamedSampler::Pmj02(_) => "pmj02",
         }
     }
 }
@@ -351,7 +357,7 @@ mod tests {
     fn names_build_the_samplers_they_name() {
         let size = [16, 16];
         for seed in [0u64, 7] {
-            let direct: [(&str, std::boxed::Box<dyn Sampler>); 11] = [
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 12] = [
                 (
                     "random",
                     std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
@@ -418,6 +424,10 @@ mod tests {
                     std::boxed::Box::new(
                         ZSobolSampler::new(size, 16, Scramble::FastOwen, seed).unwrap(),
                     ),
+                ),
+                (
+                    "pmj02",
+                    std::boxed::Box::new(Pmj02Sampler::new(16, seed).unwrap()),
                 ),
             ];
             for (i, (name, mut d)) in direct.into_iter().enumerate() {

@@ -1,9 +1,11 @@
 //! `nyquist::radical`: every form for any dimension and any `u64` index.
 
 use nyquist::radical::{
-    PRIME_COUNT, PRIMES, fill_radical_inverse, folded_radical_inverse, folded_radical_inverse_f64,
-    inverse_radical_inverse, prime, radical_inverse, radical_inverse_at, radical_inverse_f64,
-    scrambled_radical_inverse, scrambled_radical_inverse_f64,
+    PRIME_COUNT, PRIMES, fast_owen_scrambled_radical_inverse,
+    fast_owen_scrambled_radical_inverse_f64, fill_radical_inverse, folded_radical_inverse,
+    folded_radical_inverse_f64, inverse_radical_inverse, owen_scrambled_radical_inverse,
+    owen_scrambled_radical_inverse_f64, prime, radical_inverse, radical_inverse_at,
+    radical_inverse_f64, scrambled_radical_inverse, scrambled_radical_inverse_f64,
 };
 
 use crate::{Bytes, in_unit, in_unit_f64};
@@ -64,6 +66,23 @@ pub fn radical(data: &[u8]) {
         s.to_bits(),
         scrambled_radical_inverse(dim, a, seed).to_bits()
     );
+    for (name, f, g) in [
+        (
+            "owen",
+            owen_scrambled_radical_inverse as fn(u32, u64, u64) -> f32,
+            owen_scrambled_radical_inverse_f64 as fn(u32, u64, u64) -> f64,
+        ),
+        (
+            "fast_owen",
+            fast_owen_scrambled_radical_inverse,
+            fast_owen_scrambled_radical_inverse_f64,
+        ),
+    ] {
+        let (x, y) = (f(dim, a, seed), g(dim, a, seed));
+        assert!(in_unit(x), "{name}({dim}, {a}, {seed}) = {x}");
+        assert!(in_unit_f64(y), "{name}_f64({dim}, {a}, {seed}) = {y}");
+        assert_eq!(x.to_bits(), f(dim, a, seed).to_bits());
+    }
 
     // fill == per-value, including across the u64 wrap.
     let first = if len > 0 && a % 3 == 0 {

@@ -5,8 +5,8 @@ use nyquist::Error;
 use nyquist::sampler::{
     AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
     Jitter, NAMES, NamedSampler, NamedSamplerError, OwenSobolSampler, PixelRangeSampler,
-    RandomSampler, Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
-    ZeroTwoSampler, camera_sample,
+    Pmj02Sampler, RandomSampler, Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler,
+    ZSobolSampler, ZeroTwoSampler, camera_sample,
 };
 use nyquist::scramble::Scramble;
 
@@ -36,7 +36,7 @@ struct Args {
 /// the two grid samplers) and its samplers pass the same checks.
 pub fn samplers(data: &[u8]) {
     let mut b = Bytes::new(data);
-    let kind = b.u8() % 12;
+    let kind = b.u8() % 13;
     let scramble = Scramble::ALL[b.below(4) as usize];
     let frame = b.u32();
     let spp = match b.u8() % 4 {
@@ -163,6 +163,7 @@ pub fn samplers(data: &[u8]) {
             check_rounded("ZSobolSampler", spp, ZSobolSampler::rounded_spp(spp));
             run("ZSobolSampler", spp, r, &args)
         }
+        11 => run("Pmj02Sampler", spp, Pmj02Sampler::new(spp, seed), &args),
         10 => {
             let r = SobolSampler::with_scramble(resolution, spp, scramble, seed);
             if let Ok(s) = &r {

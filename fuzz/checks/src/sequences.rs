@@ -4,8 +4,8 @@
 use nyquist::Error;
 use nyquist::scramble::{Scramble, scramble_u32};
 use nyquist::sequence::{
-    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, SOBOL_DIMS, ScrambledHalton,
-    Sequence, Sobol, VanDerCorput, ZeroTwo, check_fill, sobol_u32,
+    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, Pmj02, SOBOL_DIMS,
+    ScrambledHalton, Sequence, Sobol, VanDerCorput, ZeroTwo, check_fill, pmj02_build, sobol_u32,
 };
 
 use crate::{Bytes, in_unit, in_unit_f64};
@@ -86,6 +86,22 @@ pub fn sequences(data: &[u8]) {
         ScrambledHalton::new(dims, seed),
         &check,
     );
+    let strategy = Scramble::ALL[(seed % 4) as usize];
+    built(
+        "ScrambledHalton::with_strategy",
+        dims,
+        ScrambledHalton::with_strategy(dims, strategy, seed),
+        &check,
+    );
+    check("Pmj02", &Pmj02::new());
+    check("Pmj02::scrambled", &Pmj02::scrambled(seed));
+    // The in-place construction: any buffer length errs or builds a prefix of the baked table's
+    // kind, every value a fraction.
+    let mut buf = [[0u32; 2]; 96];
+    match pmj02_build(seed, &mut buf[..len]) {
+        Ok(()) => assert!(len > 0),
+        Err(e) => assert_eq!((len, e), (0, Error::ZeroSize { what: "points" })),
+    }
     built("Hammersley", dims, Hammersley::new(n, dims), &check);
     built(
         "HammersleyZaremba",
