@@ -254,6 +254,7 @@ impl NamedSampler {
             "zsobol" => {
                 NamedSampler::ZSobol(ZSobolSampler::new(size, spp, Scramble::FastOwen, seed)?)
             }
+            "pmj02" => NamedSampler::Pmj02(Pmj02Sampler::new(spp, seed)?),
             _ => return Err(NamedSamplerError::UnknownName),
         })
     }
