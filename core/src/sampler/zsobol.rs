@@ -7,7 +7,7 @@ use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::hash::{hash2, mix32};
 use crate::scramble::{Scramble, lk_hash, scramble_u32};
-use crate::sequence::{owen_sobol_rev_u32, sobol_u32};
+use crate::sequence::{SOBOL_MATRICES, sobol_u32};
 
 /// All 24 permutations of `0..4`, lexicographic, entry `k` in bits `2k .. 2k + 2`.
 const PERMUTATIONS_4: [u8; 24] = permutations_4();
@@ -259,6 +259,9 @@ impl ZSobolSampler {
     #[inline(always)]
     fn value_1d(&self, dim: u32) -> f32 {
         let (index, key) = self.index(dim);
+        if self.scramble == Scramble::FastOwen {
+            return rev_to_f32(lk_hash(index, key as u32));
+        }
         to_f32(scramble_dim0(index, key as u32, self.scramble))
     }
 
@@ -268,7 +271,12 @@ impl ZSobolSampler {
         let y = match self.scramble {
             // The reversed-table form of the fast Owen scramble of Sobol dimension 1: two bit
             // reversals instead of three.
-            Scramble::FastOwen => owen_sobol_rev_u32(index.reverse_bits(), 1, key_seed(key)),
+            Scramble::FastOwen => {
+                return [
+                    rev_to_f32(lk_hash(index, key as u32)),
+                    rev_to_f32(lk_hash(sobol1_rev(index), key_seed(key))),
+                ];
+            }
             how => scramble_u32(sobol_u32(index, 1), (key >> 32) as u32, how),
         };
         [
@@ -276,6 +284,55 @@ impl ZSobolSampler {
             to_f32(y),
         ]
     }
+}
+
+/// `REVERSED_BYTES[b]`: the byte `b` with its bits reversed.
+static REVERSED_BYTES: [u8; 256] = {
+    let mut t = [0u8; 256];
+    let mut b = 0;
+    while b < 256 {
+        t[b] = (b as u8).reverse_bits();
+        b += 1;
+    }
+    t
+};
+
+/// The `f32` of the binary fraction `reverse(w)`: its top 24 bits are the low 24 bits of `w`
+/// reversed, three byte-table reads instead of a full bit reversal.
+#[inline(always)]
+fn rev_to_f32(w: u32) -> f32 {
+    let [b0, b1, b2, _] = w.to_le_bytes();
+    let top24 = (u32::from(REVERSED_BYTES[b0 as usize]) << 16)
+        | (u32::from(REVERSED_BYTES[b1 as usize]) << 8)
+        | u32::from(REVERSED_BYTES[b2 as usize]);
+    top24 as f32 * (1.0 / 16_777_216.0)
+}
+
+/// `SOBOL1_REVERSED[j][b]`: Sobol dimension 1's columns `8j + k` over the set bits `k` of `b`,
+/// each bit-reversed, so that the reversed value of any index is four reads (4 KiB).
+static SOBOL1_REVERSED: [[u32; 256]; 4] = {
+    let mut t = [[0u32; 256]; 4];
+    let mut j = 0;
+    while j < 4 {
+        let mut b = 1;
+        while b < 256 {
+            let k = (b as u32).trailing_zeros() as usize;
+            t[j][b] = t[j][b & (b - 1)] ^ SOBOL_MATRICES[1][8 * j + k].reverse_bits();
+            b += 1;
+        }
+        j += 1;
+    }
+    t
+};
+
+/// `reverse(sobol_u32(index, 1))`.
+#[inline(always)]
+fn sobol1_rev(index: u32) -> u32 {
+    let [b0, b1, b2, b3] = index.to_le_bytes();
+    SOBOL1_REVERSED[0][b0 as usize]
+        ^ SOBOL1_REVERSED[1][b1 as usize]
+        ^ SOBOL1_REVERSED[2][b2 as usize]
+        ^ SOBOL1_REVERSED[3][b3 as usize]
 }
 
 /// The 32-bit LK-hash seed of a request's second coordinate, from its (mixed) 64-bit key.
@@ -367,6 +424,27 @@ mod tests {
     use super::*;
     use crate::sampler::tests::{consistent_values, is_zero_two_net, threads_agree};
     use std::vec::Vec;
+
+    /// The table forms equal the direct ones: the reversed Sobol dimension 1, the float of a
+    /// reversed word, and so the fast Owen values are `fast_owen(sobol(index, d))` under the
+    /// request's key.
+    #[test]
+    fn reversed_tables_equal_the_direct_forms() {
+        for i in (0..4096u32).chain((0..4096).map(|i| mix32(i ^ 0xabc))) {
+            assert_eq!(sobol1_rev(i), sobol_u32(i, 1).reverse_bits());
+            assert_eq!(rev_to_f32(i), to_f32(i.reverse_bits()));
+            let key = hash2(9, u64::from(i));
+            let want = |v: u32, seed: u32| to_f32(lk_hash(v.reverse_bits(), seed).reverse_bits());
+            assert_eq!(
+                rev_to_f32(lk_hash(sobol1_rev(i), key_seed(key))),
+                want(sobol_u32(i, 1), key_seed(key))
+            );
+            assert_eq!(
+                rev_to_f32(lk_hash(i, key as u32)),
+                want(sobol_u32(i, 0), key as u32)
+            );
+        }
+    }
 
     #[test]
     fn permutation_table_is_every_permutation_of_four_once() {

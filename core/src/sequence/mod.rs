@@ -35,6 +35,7 @@ pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_bu
 
 pub(crate) use sobol::sobol_run_f32;
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
+pub(crate) use sobol_table::SOBOL_MATRICES;
 pub use zero_two::ZeroTwo;
 
 /// A deterministic point set in `[0, 1)^d`, addressed by index.
