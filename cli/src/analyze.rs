@@ -676,8 +676,7 @@ fn draw_spectrum(s: &nyquist_film::periodogram::Spectrum, n: usize) -> Canvas {
         }
     }
     for r in 1..f as usize {
-        line(
-            &mut c,
+        c.line(
             (to_x(r as f64), to_y(radial[r])),
             (to_x((r + 1) as f64), to_y(radial[r + 1])),
             CURVE,
@@ -705,18 +704,6 @@ fn draw_spectrum(s: &nyquist_film::periodogram::Spectrum, n: usize) -> Canvas {
         INK,
     );
     c
-}
-
-/// A two-pixel-wide line from `a` to `b`.
-fn line(c: &mut Canvas, a: (f64, f64), b: (f64, f64), color: [u8; 3]) {
-    let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil().max(1.0) as usize;
-    for k in 0..=steps {
-        let t = k as f64 / steps as f64;
-        let x = (a.0 + t * (b.0 - a.0)).round() as i64;
-        let y = (a.1 + t * (b.1 - a.1)).round() as i64;
-        c.put(x, y, color);
-        c.put(x, y + 1, color);
-    }
 }
 
 /// A finite number as JSON (shortest round-trip form).

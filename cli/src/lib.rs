@@ -2,7 +2,8 @@
 //! `run`), and the string parsers the command line uses (`render::parse_size`,
 //! `render::parse_filter`, `compare::parse_filters`, `points::parse_grid`,
 //! `points::parse_pixel`, `analyze::parse_csv`). The binary (`main.rs`) only dispatches; the
-//! library exists so that the fuzz targets and tests can call the parsers directly.
+//! library exists so that the fuzz targets and tests can call the parsers, and the convergence
+//! study's engine (`converge::Study`), directly.
 //!
 //! ```
 //! assert_eq!(nyquist_cli::render::parse_size("32x16"), Ok([32, 16]));
@@ -12,6 +13,7 @@
 
 pub mod analyze;
 pub mod compare;
+pub mod converge;
 pub mod filter;
 pub mod output;
 pub mod points;

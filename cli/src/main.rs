@@ -5,11 +5,11 @@
 #![forbid(unsafe_code)]
 
 use clap::{Parser, Subcommand};
-use nyquist_cli::{analyze, compare, filter, points, render};
+use nyquist_cli::{analyze, compare, converge, filter, points, render};
 use std::process::ExitCode;
 
-/// Sampling and reconstruction for image synthesis: point sets, filters, test renders and
-/// sampler comparison sheets.
+/// Sampling and reconstruction for image synthesis: point sets, filters, test renders,
+/// sampler comparison sheets and convergence studies.
 #[derive(Debug, Parser)]
 #[command(name = "nyquist", version, about, max_term_width = 100)]
 struct Cli {
@@ -41,6 +41,11 @@ enum Command {
     ///
     /// Example: nyquist analyze --sampler sobol --count 256 --spectrum sobol.png
     Analyze(analyze::AnalyzeArgs),
+    /// Convergence study: RMSE against N over independent scrambles on five test integrands
+    /// (disk, triangle, step, gaussian, bilinear), the log-log slope per sampler, and a plot.
+    ///
+    /// Example: nyquist converge --samplers random,stratified,sobol --runs 64 --plot conv.png
+    Converge(converge::ConvergeArgs),
 }
 
 fn main() -> ExitCode {
@@ -54,6 +59,7 @@ fn main() -> ExitCode {
         Command::Render(args) => render::run(args),
         Command::Compare(args) => compare::run(args),
         Command::Analyze(args) => analyze::run(args),
+        Command::Converge(args) => converge::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -35,6 +35,12 @@ impl Canvas {
         self.width
     }
 
+    /// Height in pixels.
+    #[cfg(test)]
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
     /// Sets pixel `(x, y)`; outside the canvas nothing happens.
     #[inline]
     pub fn put(&mut self, x: i64, y: i64, color: [u8; 3]) {
@@ -75,6 +81,18 @@ impl Canvas {
                     self.put(x, y, color);
                 }
             }
+        }
+    }
+
+    /// A two-pixel-wide line from `a` to `b` (pixel coordinates; the second pixel is below).
+    pub fn line(&mut self, a: (f64, f64), b: (f64, f64), color: [u8; 3]) {
+        let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil().max(1.0) as usize;
+        for k in 0..=steps {
+            let t = k as f64 / steps as f64;
+            let x = (a.0 + t * (b.0 - a.0)).round() as i64;
+            let y = (a.1 + t * (b.1 - a.1)).round() as i64;
+            self.put(x, y, color);
+            self.put(x, y + 1, color);
         }
     }
 

@@ -6,7 +6,7 @@ use common::{nyquist, stdout};
 
 #[test]
 fn every_subcommand_help_has_an_example() {
-    for sub in ["points", "filter", "render", "compare"] {
+    for sub in ["points", "filter", "render", "compare", "converge"] {
         let o = nyquist(&[sub, "--help"]);
         assert!(o.status.success(), "{sub}");
         let s = stdout(&o);
@@ -14,7 +14,7 @@ fn every_subcommand_help_has_an_example() {
     }
     let o = nyquist(&["--help"]);
     assert!(o.status.success());
-    for sub in ["points", "filter", "render", "compare"] {
+    for sub in ["points", "filter", "render", "compare", "converge"] {
         assert!(stdout(&o).contains(sub));
     }
 }
