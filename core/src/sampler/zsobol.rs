@@ -5,7 +5,7 @@
 
 use super::{CameraSample, Sampler, film};
 use crate::Error;
-use crate::hash::{hash2, mix32};
+use crate::hash::{hash2, mix32, mix64};
 use crate::scramble::{Scramble, lk_hash, scramble_u32};
 use crate::sequence::{SOBOL_MATRICES, sobol_u32};
 
@@ -44,6 +44,11 @@ fn spread(x: u32) -> u32 {
     x = (x | (x << 2)) & 0x3333_3333;
     (x | (x << 1)) & 0x5555_5555
 }
+
+/// Samples per pixel up to which a pixel's sample-digit permutations are tabled.
+const TABLE_SPP: u32 = 64;
+/// Nodes of the sample-digit tree at 64 spp: 1 + 4 + 16.
+const TABLE_NODES: usize = 21;
 
 /// The dimensions whose pixel digits are permuted once per pixel: the camera's requests
 /// (image sample at 0, time at 2, lens at 3).
@@ -90,8 +95,16 @@ pub struct ZSobolSampler {
     keys: [u64; 3],
     pixel: Option<[u32; 2]>,
     pixel_morton: u64,
-    /// The permuted pixel digits of [`CAMERA_DIMS`].
+    /// The permuted pixel digits of [`CAMERA_DIMS`] and their pixel words.
     prefix: [u64; 3],
+    words: [u64; 3],
+    /// Whether `nodes` and `flips` hold the current pixel's permutations.
+    tabled: bool,
+    /// For `spp ≤ TABLE_SPP`, per camera request: the permutation (a [`PERMUTATIONS_4`] entry)
+    /// of every sample-digit node of the current pixel, top digit first (1, then 4, then 16
+    /// nodes), and the flips of the last base-2 digit; filled on the pixel's second sample.
+    nodes: [[u8; TABLE_NODES]; 3],
+    flips: [u16; 3],
     morton: u64,
     dim: u32,
 }
@@ -152,6 +165,10 @@ impl ZSobolSampler {
             pixel: None,
             pixel_morton: 0,
             prefix: [0; 3],
+            words: [0; 3],
+            tabled: false,
+            nodes: [[0; TABLE_NODES]; 3],
+            flips: [0; 3],
             morton: 0,
             dim: 0,
         };
@@ -186,7 +203,7 @@ impl ZSobolSampler {
             (self.morton_of(pixel) << self.log2_spp) | u64::from(sample_index & (self.spp - 1));
         let key = dim_key(self.seed, dim);
         let prefix = self.permute_digits(morton, key, self.sample_digits, self.digits);
-        self.finish_index(morton, key, prefix)
+        self.finish_index(morton, pixel_word(morton >> self.log2_spp, key), prefix)
     }
 
     fn morton_of(&self, pixel: [u32; 2]) -> u64 {
@@ -215,13 +232,26 @@ impl ZSobolSampler {
         out
     }
 
-    /// The whole permuted index from the permuted pixel digits `prefix`.
+    /// The whole permuted index from the permuted pixel digits `prefix` and the request's
+    /// pixel word `w` ([`pixel_word`]): the sample's digits (base 4, and the last base-2 one
+    /// when `log₂ spp` is odd), each permuted by a multiplicative hash of `w` and the sample
+    /// digits above it — one 64-bit hash per pixel and request instead of one per digit.
     #[inline(always)]
-    fn finish_index(&self, morton: u64, key: u64, prefix: u64) -> u32 {
-        let mut index = prefix | self.permute_digits(morton, key, 0, self.sample_digits);
+    fn finish_index(&self, morton: u64, w: u64, prefix: u64) -> u32 {
+        let sample = morton & u64::from(self.spp - 1);
+        let mut index = prefix;
+        let mut i = self.sample_digits;
+        while i > 0 {
+            i -= 1;
+            let shift = 2 * i + self.odd;
+            let digit = (sample >> shift) & 3;
+            let h = nested_word(w, sample >> (shift + 2), shift);
+            let p = ((h >> 32) * 24) >> 32;
+            let perm = u64::from(PERMUTATIONS_4[p as usize]);
+            index |= ((perm >> (2 * digit)) & 3) << shift;
+        }
         if self.odd == 1 {
-            let flip = u64::from(mix32((morton >> 1) as u32 ^ (key >> 16) as u32) >> 31);
-            index |= (morton & 1) ^ flip;
+            index |= (sample & 1) ^ (nested_word(w, sample >> 1, 0) >> 63);
         }
         index as u32
     }
@@ -236,7 +266,56 @@ impl ZSobolSampler {
                 self.sample_digits,
                 self.digits,
             );
+            self.words[k] = pixel_word(self.pixel_morton >> self.log2_spp, self.keys[k]);
         }
+        self.tabled = false;
+    }
+
+    /// Fills `nodes` and `flips` for the current pixel (`spp ≤ TABLE_SPP`): the same
+    /// permutations [`ZSobolSampler::finish_index`] draws, one per node of the digit tree.
+    fn fill_tables(&mut self) {
+        let j = self.sample_digits;
+        for k in 0..CAMERA_DIMS.len() {
+            let w = self.words[k];
+            let mut offset = 0usize;
+            for level in 0..j {
+                let shift = 2 * (j - 1 - level) + self.odd;
+                for higher in 0..1usize << (2 * level) {
+                    let h = nested_word(w, higher as u64, shift);
+                    let p = ((h >> 32) * 24) >> 32;
+                    self.nodes[k][offset + higher] = PERMUTATIONS_4[p as usize];
+                }
+                offset = 4 * offset + 1;
+            }
+            self.flips[k] = 0;
+            if self.odd == 1 {
+                for higher in 0..self.spp >> 1 {
+                    let flip = (nested_word(w, u64::from(higher), 0) >> 63) as u16;
+                    self.flips[k] |= flip << higher;
+                }
+            }
+        }
+        self.tabled = true;
+    }
+
+    /// [`ZSobolSampler::finish_index`]'s sample bits through the tabled permutations of camera
+    /// request `k`.
+    #[inline(always)]
+    fn tabled_sample_bits(&self, k: usize, sample: u64) -> u64 {
+        let j = self.sample_digits;
+        let mut bits = 0u64;
+        let mut offset = 0usize;
+        for level in 0..j {
+            let shift = 2 * (j - 1 - level) + self.odd;
+            let digit = (sample >> shift) & 3;
+            let perm = u64::from(self.nodes[k][offset + (sample >> (shift + 2)) as usize]);
+            bits |= ((perm >> (2 * digit)) & 3) << shift;
+            offset = 4 * offset + 1;
+        }
+        if self.odd == 1 {
+            bits |= (sample & 1) ^ u64::from((self.flips[k] >> (sample >> 1)) & 1);
+        }
+        bits
     }
 
     /// The index for the request at `dim`, through the cached pixel digits where there are some.
@@ -249,11 +328,15 @@ impl ZSobolSampler {
             _ => {
                 let key = dim_key(self.seed, dim);
                 let prefix = self.permute_digits(self.morton, key, self.sample_digits, self.digits);
-                return (self.finish_index(self.morton, key, prefix), key);
+                let w = pixel_word(self.morton >> self.log2_spp, key);
+                return (self.finish_index(self.morton, w, prefix), key);
             }
         };
         let key = self.keys[k];
-        (self.finish_index(self.morton, key, self.prefix[k]), key)
+        (
+            self.finish_index(self.morton, self.words[k], self.prefix[k]),
+            key,
+        )
     }
 
     #[inline(always)]
@@ -359,6 +442,23 @@ fn digit_permutation(higher: u64, key: u64) -> u64 {
     (u64::from(mix32(higher as u32 ^ (key >> 16) as u32)) * 24) >> 32
 }
 
+/// The random word of a pixel (its Morton code) for the requests keyed `key`: the source of
+/// every permutation of its sample digits.
+#[inline(always)]
+fn pixel_word(pixel_morton: u64, key: u64) -> u64 {
+    mix64(pixel_morton ^ key.rotate_left(17))
+}
+
+/// The word that picks the permutation of the sample digit at bit `shift`, given the sample
+/// digits above it (`higher`): the pixel word and `(higher, shift)` through one multiply (the
+/// pixel word is already uniformly random, so the top bits of the product are too, and they
+/// differ for every `(higher, shift)`).
+#[inline(always)]
+fn nested_word(w: u64, higher: u64, shift: u32) -> u64 {
+    (w ^ (higher << 6 | u64::from(shift)).wrapping_mul(0x9e37_79b9_7f4a_7c15))
+        .wrapping_mul(0xd1b5_4a32_d192_ed03)
+}
+
 /// The hash key of requests at dimension `dim`.
 #[inline(always)]
 fn dim_key(seed: u64, dim: u32) -> u64 {
@@ -379,6 +479,10 @@ impl Sampler for ZSobolSampler {
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if self.pixel != Some(pixel) {
             self.set_pixel(pixel);
+        } else if !self.tabled && self.spp <= TABLE_SPP {
+            // A second sample of the same pixel: the rest of its samples likely follow, so draw
+            // all the permutations of its camera sample digits now.
+            self.fill_tables();
         }
         self.morton = self.pixel_morton | u64::from(sample_index & (self.spp - 1));
         self.dim = dim;
@@ -443,6 +547,28 @@ mod tests {
                 rev_to_f32(lk_hash(i, key as u32)),
                 want(sobol_u32(i, 0), key as u32)
             );
+        }
+    }
+
+    /// A pixel's later samples (through the tabled permutations) equal the direct index, for
+    /// every spp up to the table's limit and past it, odd and even powers of two.
+    #[test]
+    fn tabled_indices_equal_sequence_index() {
+        for m in 0..=8u32 {
+            let mut s = ZSobolSampler::new([50, 20], 1 << m, Scramble::FastOwen, 6).unwrap();
+            for pixel in [[0u32, 0u32], [49, 19], [17, 5]] {
+                for i in (0..1u32 << m).chain([0, 1]) {
+                    s.start_pixel_sample(pixel, i, 0);
+                    for d in [0u32, 2, 3] {
+                        assert_eq!(
+                            s.index(d).0,
+                            s.sequence_index(pixel, i, d),
+                            "spp 2^{m} {pixel:?} {i} {d}"
+                        );
+                    }
+                }
+                assert_eq!(s.tabled, m <= 6, "spp 2^{m}");
+            }
         }
     }
 
