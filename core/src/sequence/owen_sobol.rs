@@ -12,6 +12,13 @@
 //! shuffled index goes through byte tables of *reversed* Sobol columns, so the whole value costs
 //! one `reverse_bits`, four table reads and two hashes. Unlike the `sobol_burley` crate, indices are full 32-bit (no 2¹⁶ limit)
 //! and all 1024 dimensions are available.
+//!
+//! The shuffle maps the indices `0..2^16` onto one aligned block, so their shuffled indices
+//! share bits 16.. (fixed by the seed): below 2¹⁶ the product is a per-dimension constant,
+//! computed once in [`OwenSobol::new`], XOR two byte-table reads for the 16 low shuffled bits
+//! (and the index is reversed by two small-table reads). Single values turn the scrambled word
+//! into an `f32` by three table reads; four-wide values hash, reverse and convert on four lanes
+//! at once (plain lane-parallel code that compiles to SSE2).
 
 use super::sobol::product;
 use super::sobol_table::SOBOL_MATRICES;
@@ -20,35 +27,34 @@ use crate::Error;
 use crate::hash::{hash2, mix32};
 use crate::scramble::lk_hash;
 
-/// Dimensions with reversed byte tables: values there cost four table reads; higher
-/// dimensions take the 32-column masked product (about 3× slower).
+/// Dimensions with reversed tables: values there cost four table reads (two below index
+/// 2¹⁶); higher dimensions take the 32-column masked product (about 3× slower).
 const REV_DIMS: usize = 64;
 
-/// A table row: 256 entries and 16 of padding, so that rows start in different cache sets.
-const ROW: usize = 256 + 16;
-
-/// `SOBOL_REV_BYTES[d][j][b]`: the bit-reversed Sobol product of dimension `d` restricted to
+/// `SOBOL_REV_BYTES[j][b][d]`: the bit-reversed Sobol product of dimension `d` restricted to
 /// byte `j` of the **bit-reversed** index (bits `8j .. 8j + 8` of `reverse(i)`, i.e. index bits
-/// `31 − 8j − k`). Built at compile time from the direction numbers; 272 KiB.
-static SOBOL_REV_BYTES: [[[u32; ROW]; 4]; REV_DIMS] = rev_byte_tables();
+/// `31 − 8j − k`). Dimensions innermost, so that the dimensions of one point read the same
+/// cache lines and four consecutive dimensions are one 16-byte read. Built at compile time from
+/// the direction numbers; 256 KiB.
+static SOBOL_REV_BYTES: [[[u32; REV_DIMS]; 256]; 4] = rev_byte_tables();
 
-const fn rev_byte_tables() -> [[[u32; ROW]; 4]; REV_DIMS] {
-    let mut t = [[[0u32; ROW]; 4]; REV_DIMS];
-    let mut d = 0;
-    while d < REV_DIMS {
-        let mut j = 0;
-        while j < 4 {
-            let mut b = 1;
-            while b < 256 {
-                let k = (b as u32).trailing_zeros() as usize;
+const fn rev_byte_tables() -> [[[u32; REV_DIMS]; 256]; 4] {
+    let mut t = [[[0u32; REV_DIMS]; 256]; 4];
+    let mut j = 0;
+    while j < 4 {
+        let mut b = 1;
+        while b < 256 {
+            let k = (b as u32).trailing_zeros() as usize;
+            let mut d = 0;
+            while d < REV_DIMS {
                 // Bit 8j + k of the reversed index is index bit 31 − 8j − k.
                 let column = SOBOL_MATRICES[d][31 - 8 * j - k];
-                t[d][j][b] = t[d][j][b & (b - 1)] ^ column.reverse_bits();
-                b += 1;
+                t[j][b][d] = t[j][b & (b - 1)][d] ^ column.reverse_bits();
+                d += 1;
             }
-            j += 1;
+            b += 1;
         }
-        d += 1;
+        j += 1;
     }
     t
 }
@@ -56,12 +62,55 @@ const fn rev_byte_tables() -> [[[u32; ROW]; 4]; REV_DIMS] {
 /// `reverse(sobol(reverse(r), dim))`: the Sobol product on bit-reversed words, `dim < 1024`.
 #[inline(always)]
 fn product_rev(dim: usize, r: u32) -> u32 {
-    if let Some(t) = SOBOL_REV_BYTES.get(dim) {
+    if dim < REV_DIMS {
         let [b0, b1, b2, b3] = r.to_le_bytes();
-        t[0][b0 as usize] ^ t[1][b1 as usize] ^ t[2][b2 as usize] ^ t[3][b3 as usize]
+        let t = &SOBOL_REV_BYTES;
+        t[0][b0 as usize][dim]
+            ^ t[1][b1 as usize][dim]
+            ^ t[2][b2 as usize][dim]
+            ^ t[3][b3 as usize][dim]
     } else {
         product(&SOBOL_MATRICES[dim & 1023], r.reverse_bits()).reverse_bits()
     }
+}
+
+/// The part of [`product_rev`] from the upper 16 bits of `r` (the 16 low index bits: two of
+/// the four byte tables), for a dimension with tables (`dim < 64`).
+#[inline(always)]
+fn product_rev_upper(dim: usize, r: u32) -> u32 {
+    let [_, _, b2, b3] = r.to_le_bytes();
+    let t = &SOBOL_REV_BYTES;
+    t[2][b2 as usize][dim] ^ t[3][b3 as usize][dim]
+}
+
+/// Four consecutive entries of a dimension row from `d`, `d + 4 <= 64`.
+#[inline(always)]
+fn four(row: &[u32; REV_DIMS], d: usize) -> [u32; 4] {
+    [row[d], row[d + 1], row[d + 2], row[d + 3]]
+}
+
+#[inline(always)]
+fn xor4(a: [u32; 4], b: [u32; 4]) -> [u32; 4] {
+    [a[0] ^ b[0], a[1] ^ b[1], a[2] ^ b[2], a[3] ^ b[3]]
+}
+
+/// [`product_rev`] for the four dimensions `d .. d + 4`, `d + 4 <= 64`.
+#[inline(always)]
+fn product_rev4(d: usize, r: u32) -> [u32; 4] {
+    let [b0, b1, b2, b3] = r.to_le_bytes();
+    let t = &SOBOL_REV_BYTES;
+    xor4(
+        xor4(four(&t[0][b0 as usize], d), four(&t[1][b1 as usize], d)),
+        xor4(four(&t[2][b2 as usize], d), four(&t[3][b3 as usize], d)),
+    )
+}
+
+/// [`product_rev_upper`] for the four dimensions `d .. d + 4`, `d + 4 <= 64`.
+#[inline(always)]
+fn product_rev_upper4(d: usize, r: u32) -> [u32; 4] {
+    let [_, _, b2, b3] = r.to_le_bytes();
+    let t = &SOBOL_REV_BYTES;
+    xor4(four(&t[2][b2 as usize], d), four(&t[3][b3 as usize], d))
 }
 
 /// Number of dimensions whose scramble seeds an [`OwenSobol`] keeps precomputed.
@@ -77,6 +126,56 @@ fn dim_seed(key: u32, dim: u32) -> u32 {
 #[inline(always)]
 fn rev_to_f32(w_rev: u32) -> f32 {
     (w_rev.reverse_bits() >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
+/// `REV_F32[j][b]`: byte `j` of a reversed word's contribution to [`rev_to_f32`]:
+/// `reverse8(b) · 2^(−8(j+1))`. The three low bytes' entries have disjoint bits, so their sum
+/// is exact and equals `rev_to_f32`. Built at compile time; 3 KiB.
+static REV_F32: [[f32; 256]; 3] = rev_f32_tables();
+
+const fn rev_f32_tables() -> [[f32; 256]; 3] {
+    let mut t = [[0.0f32; 256]; 3];
+    let scale = [1.0 / 256.0, 1.0 / 65_536.0, 1.0 / 16_777_216.0];
+    let mut j = 0;
+    while j < 3 {
+        let mut b = 0;
+        while b < 256 {
+            t[j][b] = (b as u8).reverse_bits() as f32 * scale[j];
+            b += 1;
+        }
+        j += 1;
+    }
+    t
+}
+
+/// [`rev_to_f32`] by three table reads (shorter than the scalar bit reversal).
+#[inline(always)]
+fn rev_to_f32_table(w_rev: u32) -> f32 {
+    let [b0, b1, b2, _] = w_rev.to_le_bytes();
+    (REV_F32[0][b0 as usize] + REV_F32[1][b1 as usize]) + REV_F32[2][b2 as usize]
+}
+
+/// [`lk_hash`] then [`rev_to_f32`] on four lanes, written lane-parallel so that it compiles to
+/// vector code.
+#[inline(always)]
+fn scramble_rev_f32x4(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
+    let mut x = x;
+    for k in 0..4 {
+        x[k] ^= x[k].wrapping_mul(0x3d20_adea);
+    }
+    for k in 0..4 {
+        x[k] = x[k].wrapping_add(seeds[k]);
+    }
+    for k in 0..4 {
+        x[k] = x[k].wrapping_mul((seeds[k] >> 16) | 1);
+    }
+    for k in 0..4 {
+        x[k] ^= x[k].wrapping_mul(0x0552_6c56);
+    }
+    for k in 0..4 {
+        x[k] ^= x[k].wrapping_mul(0x53a2_2864);
+    }
+    x.map(rev_to_f32)
 }
 
 /// The Owen-scrambled Sobol value of dimension `dim` at a reversed shuffled index, as a 32-bit
@@ -95,19 +194,63 @@ pub(crate) fn owen_sobol_rev_f32(shuffled_rev: u32, dim: u32, dim_seed: u32) -> 
     ))
 }
 
+/// [`owen_sobol_rev_f32`] for four dimensions at one reversed shuffled index, lane by lane
+/// (`dim_seeds[k]` mixed, for `dims[k]`); the scrambles run four-wide.
+#[inline(always)]
+pub(crate) fn owen_sobol_rev_f32x4(
+    shuffled_rev: u32,
+    dims: [u32; 4],
+    dim_seeds: [u32; 4],
+) -> [f32; 4] {
+    scramble_rev_f32x4(
+        dims.map(|d| product_rev((d & 1023) as usize, shuffled_rev)),
+        dim_seeds,
+    )
+}
+
 /// The reversed shuffled index: `reverse(nested_uniform_shuffle(index))` for a mixed seed.
 #[inline(always)]
 pub(crate) fn shuffle_rev(index: u32, shuffle_seed: u32) -> u32 {
     lk_hash(index.reverse_bits(), shuffle_seed)
 }
 
+/// `REV16[j][b]`: byte `j` of a 16-bit index, bit-reversed into a 32-bit word
+/// (`reverse8(b) << (24 − 8j)`). Built at compile time; 2 KiB.
+static REV16: [[u32; 256]; 2] = rev16_tables();
+
+const fn rev16_tables() -> [[u32; 256]; 2] {
+    let mut t = [[0u32; 256]; 2];
+    let mut b = 0;
+    while b < 256 {
+        t[0][b] = ((b as u8).reverse_bits() as u32) << 24;
+        t[1][b] = ((b as u8).reverse_bits() as u32) << 16;
+        b += 1;
+    }
+    t
+}
+
+/// [`shuffle_rev`], reversing indices below 2¹⁶ by two table reads.
+#[inline(always)]
+fn shuffle_rev_fast(index: u32, shuffle_seed: u32) -> u32 {
+    if index < LOW_BLOCK {
+        let [b0, b1, _, _] = index.to_le_bytes();
+        lk_hash(REV16[0][b0 as usize] | REV16[1][b1 as usize], shuffle_seed)
+    } else {
+        shuffle_rev(index, shuffle_seed)
+    }
+}
+
+/// Indices below this share the shuffled bits 16.. (Burley's shuffle maps `0..2^16` onto one
+/// aligned block): their reversed shuffled indices share the low 16 bits.
+const LOW_BLOCK: u32 = 1 << 16;
+
 /// Owen-scrambled Sobol sequence over up to [`SOBOL_DIMS`](super::SOBOL_DIMS) dimensions
 /// (module docs above). `f32` values are the top 24 bits (never 1); `f64` values all 32 bits,
 /// exactly. Indices are 32-bit ([`Sequence::point_count`] is `Some(2³²)`; a `u64` index wraps
 /// modulo 2³²); `dim >= dims()` wraps modulo `dims()`.
 ///
-/// Allocates: no. Stateless, `&self` everywhere (284 bytes: the scramble seeds of the 64
-/// dimensions with tables are kept).
+/// Allocates: no. Stateless, `&self` everywhere (536 bytes: for the 64 dimensions with tables,
+/// the scramble seeds and the product of the shuffled index bits that indices below 2¹⁶ share).
 ///
 /// ```
 /// use nyquist::sequence::{OwenSobol, Sequence};
@@ -127,6 +270,9 @@ pub struct OwenSobol {
     shuffle_seed: u32,
     key: u32,
     seeds: [u32; CACHED_SEEDS],
+    /// `low[d]`: the reversed product of dimension `d` over the low 16 bits of the reversed
+    /// shuffled index, the same for every index below 2¹⁶.
+    low: [u32; REV_DIMS],
 }
 
 impl OwenSobol {
@@ -145,12 +291,17 @@ impl OwenSobol {
         super::Sobol::new(dims)?;
         let h = hash2(seed, 0x4f57_454e); // "OWEN"
         let key = h as u32;
+        let shuffle_seed = mix32((h >> 32) as u32);
+        // Index 0's reversed shuffled index, upper half cleared: the low half every index
+        // below 2^16 shares.
+        let common = shuffle_rev(0, shuffle_seed) & 0xffff;
         Ok(OwenSobol {
             dims,
             seed,
-            shuffle_seed: mix32((h >> 32) as u32),
+            shuffle_seed,
             key,
             seeds: core::array::from_fn(|d| dim_seed(key, d as u32)),
+            low: core::array::from_fn(|d| product_rev(d, common)),
         })
     }
 
@@ -180,6 +331,31 @@ impl OwenSobol {
         }
     }
 
+    /// The scrambled reversed value (before the final reversal) of point `index`, dimension
+    /// `dim`, where `r = shuffle_rev(index)`, if `dim` has tables (`None` past them).
+    #[inline(always)]
+    fn table_value_rev(&self, index: u32, r: u32, dim: u32) -> Option<u32> {
+        let d = dim as usize;
+        let (Some(&s), Some(&c)) = (self.seeds.get(d), self.low.get(d)) else {
+            return None;
+        };
+        let p = if index < LOW_BLOCK {
+            c ^ product_rev_upper(d, r)
+        } else {
+            product_rev(d, r)
+        };
+        Some(lk_hash(p, s))
+    }
+
+    /// Point `index`, dimension `dim < dims()` as an `f32`, where `r = shuffle_rev(index)`.
+    #[inline(always)]
+    fn value_f32(&self, index: u32, r: u32, dim: u32) -> f32 {
+        match self.table_value_rev(index, r, dim) {
+            Some(w) => rev_to_f32_table(w),
+            None => owen_sobol_rev_f32(r, dim, dim_seed(self.key, dim)),
+        }
+    }
+
     /// Point `index`, dimension `dim` as a 32-bit binary fraction. Total: `dim` wraps modulo
     /// [`Sequence::dims`].
     ///
@@ -193,12 +369,12 @@ impl OwenSobol {
     /// ```
     #[inline]
     pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
+        let r = shuffle_rev(index, self.shuffle_seed);
         let dim = self.wrap(dim);
-        owen_sobol_rev_u32(
-            shuffle_rev(index, self.shuffle_seed),
-            dim,
-            self.seed_of(dim),
-        )
+        match self.table_value_rev(index, r, dim) {
+            Some(w) => w.reverse_bits(),
+            None => owen_sobol_rev_u32(r, dim, dim_seed(self.key, dim)),
+        }
     }
 
     /// Four consecutive dimensions `first_dim .. first_dim + 4` (each wrapping) of point
@@ -213,26 +389,20 @@ impl OwenSobol {
     /// ```
     #[inline]
     pub fn sample_4d(&self, index: u32, first_dim: u32) -> [f32; 4] {
-        let r = shuffle_rev(index, self.shuffle_seed);
-        let d = first_dim as usize;
+        let r = shuffle_rev_fast(index, self.shuffle_seed);
         // The common case, four dimensions inside the tables and the sequence: no wrapping and
-        // no seed hashing, four independent lanes.
-        if let (Some(t), Some(seeds)) = (SOBOL_REV_BYTES.get(d..d + 4), self.seeds.get(d..d + 4))
-            && first_dim + 4 <= self.dims
-        {
-            let [b0, b1, b2, b3] = r.to_le_bytes();
-            let lane = |k: usize| {
-                let t = &t[k];
-                let v =
-                    t[0][b0 as usize] ^ t[1][b1 as usize] ^ t[2][b2 as usize] ^ t[3][b3 as usize];
-                rev_to_f32(lk_hash(v, seeds[k]))
+        // no seed hashing, four lanes at once.
+        if first_dim <= (REV_DIMS - 4) as u32 && first_dim + 4 <= self.dims {
+            let d = first_dim as usize;
+            let p = if index < LOW_BLOCK {
+                xor4(four(&self.low, d), product_rev_upper4(d, r))
+            } else {
+                product_rev4(d, r)
             };
-            return [lane(0), lane(1), lane(2), lane(3)];
+            return scramble_rev_f32x4(p, four(&self.seeds, d));
         }
-        core::array::from_fn(|k| {
-            let d = self.wrap(first_dim.wrapping_add(k as u32));
-            owen_sobol_rev_f32(r, d, self.seed_of(d))
-        })
+        let dims = core::array::from_fn(|k| self.wrap(first_dim.wrapping_add(k as u32)));
+        owen_sobol_rev_f32x4(r, dims, dims.map(|d| self.seed_of(d)))
     }
 
     /// Dimensions `first_dim, first_dim + 1, …` (each wrapping) of point `index` into `out`:
@@ -250,8 +420,7 @@ impl OwenSobol {
         let r = shuffle_rev(index, self.shuffle_seed);
         let mut d = first_dim;
         for x in out {
-            let dim = self.wrap(d);
-            *x = owen_sobol_rev_f32(r, dim, self.seed_of(dim));
+            *x = self.value_f32(index, r, self.wrap(d));
             d = d.wrapping_add(1);
         }
     }
@@ -268,12 +437,9 @@ impl Sequence for OwenSobol {
 
     #[inline]
     fn sample(&self, index: u64, dim: u32) -> f32 {
-        let dim = self.wrap(dim);
-        owen_sobol_rev_f32(
-            shuffle_rev(index as u32, self.shuffle_seed),
-            dim,
-            self.seed_of(dim),
-        )
+        let index = index as u32;
+        let r = shuffle_rev_fast(index, self.shuffle_seed);
+        self.value_f32(index, r, self.wrap(dim))
     }
 
     #[inline]
@@ -435,6 +601,139 @@ mod tests {
             .map(|i| [s.sample_u32(i, 0), s.sample_u32(i, 1)])
             .collect();
         sobol_oracle::assert_elementary_intervals(&pts, 17);
+    }
+
+    /// The value by the general path alone: shuffle, byte-table or masked product, hash.
+    fn reference_u32(s: &OwenSobol, index: u32, dim: u32) -> u32 {
+        let dim = dim % s.dims;
+        owen_sobol_rev_u32(
+            shuffle_rev(index, s.shuffle_seed),
+            dim,
+            dim_seed(s.key, dim),
+        )
+    }
+
+    /// Indices around the 2^8 and 2^16 edges, the ends, and scattered ones.
+    fn edge_indices() -> Vec<u32> {
+        (0..300u32)
+            .chain(65_000..66_100)
+            .chain((0..200).map(|i| mix32(i ^ 0x5151)))
+            .chain((0..200).map(|i| mix32(i ^ 0x7171) & 0xffff))
+            .chain([
+                1 << 17,
+                1 << 24,
+                (1 << 31) - 1,
+                1 << 31,
+                u32::MAX - 1,
+                u32::MAX,
+            ])
+            .collect()
+    }
+
+    /// Below 2^16 the product is the per-dimension constant XOR the upper-half tables, the
+    /// index reversal and the f32 conversion go through tables: every form equals the general
+    /// path, for every dimension with tables, across the 2^8 and 2^16 edges, for many seeds.
+    #[test]
+    fn fast_paths_equal_the_general_path() {
+        for seed in [0u64, 1, 7, 0x5eed, 0xdead_beef, u64::MAX] {
+            let s = OwenSobol::new(1024, seed).unwrap();
+            for i in edge_indices() {
+                let mut run = [0.0f32; 70];
+                s.sample_dims(i, 0, &mut run);
+                for dim in (0..REV_DIMS as u32 + 2).chain([500, 1023]) {
+                    let want = reference_u32(&s, i, dim);
+                    let want_f32 = (want >> 8) as f32 / 16_777_216.0;
+                    assert_eq!(s.sample_u32(i, dim), want, "seed {seed} i {i} dim {dim}");
+                    assert_eq!(s.sample(u64::from(i), dim), want_f32, "i {i} dim {dim}");
+                    if let Some(&x) = run.get(dim as usize) {
+                        assert_eq!(x, want_f32, "run: i {i} dim {dim}");
+                    }
+                }
+                for first in 0..REV_DIMS as u32 + 2 {
+                    let want = core::array::from_fn(|k| {
+                        (reference_u32(&s, i, first + k as u32) >> 8) as f32 / 16_777_216.0
+                    });
+                    assert_eq!(s.sample_4d(i, first), want, "4d: i {i} first {first}");
+                }
+            }
+        }
+    }
+
+    /// Every dims count around the table edge, every first dimension: the 4-wide form takes its
+    /// fast lane only when all four dimensions are in the tables and in the sequence, and wraps
+    /// like single values otherwise.
+    #[test]
+    fn wide_form_at_every_dims_count_and_wrap_edge() {
+        for dims in (1..=8).chain(56..=70).chain([100, 1024]) {
+            let s = OwenSobol::new(dims, u64::from(dims) * 31).unwrap();
+            for i in [0u32, 1, 255, 256, 65_535, 65_536, 70_000, u32::MAX] {
+                for first in (0..dims.min(72) + 5).chain([dims + 60, u32::MAX - 1, u32::MAX]) {
+                    let want = [0u32, 1, 2, 3].map(|k| {
+                        let d = first.wrapping_add(k);
+                        (reference_u32(&s, i, d) >> 8) as f32 / 16_777_216.0
+                    });
+                    assert_eq!(
+                        s.sample_4d(i, first),
+                        want,
+                        "dims {dims} i {i} first {first}"
+                    );
+                    assert_eq!(want[0], s.sample(u64::from(i), first));
+                }
+            }
+        }
+    }
+
+    /// The small compile-time tables: the index reversal, the f32 conversion, and the
+    /// per-sequence constant of the indices below 2^16.
+    #[test]
+    fn small_tables_and_the_low_block_constant() {
+        for i in 0..1u32 << 16 {
+            let ss = mix32(i ^ 0x1234);
+            assert_eq!(shuffle_rev_fast(i, ss), shuffle_rev(i, ss), "i {i}");
+            // Burley's shuffle keeps the block: the low reversed half is the seed's alone.
+            assert_eq!(
+                shuffle_rev(i, 0x9e37_79b9) & 0xffff,
+                shuffle_rev(0, 0x9e37_79b9) & 0xffff
+            );
+        }
+        for i in [1u32 << 16, 1 << 20, u32::MAX] {
+            assert_eq!(shuffle_rev_fast(i, 77), shuffle_rev(i, 77));
+        }
+        let words = (0..1u32 << 16)
+            .map(|w| w << 8 | w >> 8)
+            .chain((0..100_000).map(mix32))
+            .chain([0, u32::MAX, 1, 1 << 31, 0x00ff_ffff, 0xff00_0000]);
+        for w in words {
+            assert_eq!(rev_to_f32_table(w), rev_to_f32(w), "w {w:#x}");
+            assert_eq!(scramble_rev_f32x4([w; 4], [0x1357_9bdf; 4])[2], {
+                rev_to_f32(lk_hash(w, 0x1357_9bdf))
+            });
+        }
+        for seed in [0u64, 3, 99] {
+            let s = OwenSobol::new(64, seed).unwrap();
+            let common = shuffle_rev(0, s.shuffle_seed) & 0xffff;
+            for d in 0..REV_DIMS {
+                assert_eq!(s.low[d], product_rev(d, common));
+                for i in [0u32, 1, 200, 65_535] {
+                    let r = shuffle_rev(i, s.shuffle_seed);
+                    assert_eq!(s.low[d] ^ product_rev_upper(d, r), product_rev(d, r));
+                }
+            }
+        }
+        assert_eq!(size_of::<OwenSobol>(), 536);
+    }
+
+    #[test]
+    fn helpers_agree_lane_by_lane() {
+        let s = OwenSobol::new(1024, 4).unwrap();
+        for i in [0u32, 9, 65_536, u32::MAX] {
+            let r = shuffle_rev(i, s.shuffle_seed);
+            for dims in [[0u32, 1, 2, 3], [62, 63, 64, 65], [1020, 1021, 1022, 1023]] {
+                let seeds = dims.map(|d| s.seed_of(d));
+                let want = core::array::from_fn(|k| owen_sobol_rev_f32(r, dims[k], seeds[k]));
+                assert_eq!(owen_sobol_rev_f32x4(r, dims, seeds), want);
+            }
+        }
     }
 
     proptest::proptest! {
