@@ -333,10 +333,13 @@ impl ZSobolSampler {
             }
         };
         let key = self.keys[k];
-        (
-            self.finish_index(self.morton, self.words[k], self.prefix[k]),
-            key,
-        )
+        let index = if self.tabled {
+            let sample = self.morton & u64::from(self.spp - 1);
+            (self.prefix[k] | self.tabled_sample_bits(k, sample)) as u32
+        } else {
+            self.finish_index(self.morton, self.words[k], self.prefix[k])
+        };
+        (index, key)
     }
 
     #[inline(always)]
