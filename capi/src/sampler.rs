@@ -29,8 +29,10 @@ pub struct NyqSampler {
 /// `spp` must be a square); `halton` (digit-permuted when `seed != 0`); `hammersley` (scrambled
 /// when `seed != 0`); `zero-two` and `sobol` (spp rounded up to a power of two:
 /// [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
-/// spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]). The image size matters
-/// to `halton`, `hammersley` and `sobol` only, but must be non-zero for all.
+/// spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
+/// (Owen-scrambled Sobol per pixel); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
+/// a power of two); `pmj02` (up to 65536 spp). The image size matters to `halton`,
+/// `hammersley`, `sobol` and `zsobol` only, but must be non-zero for all.
 ///
 /// # Errors
 /// `NYQ_ERR_NULL` if `name` or `out` is null; `NYQ_ERR_PARSE` for an unknown or non-UTF-8
