@@ -72,6 +72,10 @@ fn camera_sample_bench(c: &mut Criterion<cpu_time::BenchClock>) {
         ZSobolSampler::new([1024, 1024], SPP, Scramble::FastOwen, 1).unwrap()
     );
     bench!("owen_sobol", OwenSobolSampler::new(SPP, 1).unwrap());
+    bench!(
+        "zsobol_unscrambled",
+        ZSobolSampler::new([1024, 1024], SPP, Scramble::None, 1).unwrap()
+    );
     g.finish();
 }
 

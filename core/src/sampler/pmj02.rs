@@ -3,7 +3,7 @@
 use super::{Sampler, pixel_hash};
 use crate::Error;
 use crate::hash::mix64;
-use crate::sequence::pmj02::{owen_keyed, to_f32};
+use crate::sequence::pmj02::{owen_keyed, owen_keyed_f32};
 use crate::sequence::{PMJ02_MAX_POINTS, PMJ02_TABLE};
 
 /// `PMJ02_MAX_POINTS − 1`, the index mask.
@@ -46,12 +46,12 @@ impl Keys {
     #[inline(always)]
     fn point(&self, index: u32) -> [f32; 2] {
         let [x, y] = PMJ02_TABLE[self.row(index)];
-        [to_f32(owen_keyed(x, self.x)), to_f32(owen_keyed(y, self.y))]
+        [owen_keyed_f32(x, self.x), owen_keyed_f32(y, self.y)]
     }
 
     #[inline(always)]
     fn value(&self, index: u32) -> f32 {
-        to_f32(owen_keyed(PMJ02_TABLE[self.row(index)][0], self.x))
+        owen_keyed_f32(PMJ02_TABLE[self.row(index)][0], self.x)
     }
 }
 

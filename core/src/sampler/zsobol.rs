@@ -6,7 +6,7 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::hash::{hash2, mix32, mix64};
-use crate::scramble::{Scramble, lk_hash, scramble_u32};
+use crate::scramble::{Scramble, lk_hash, reversed_to_f32, scramble_u32};
 use crate::sequence::{SOBOL_MATRICES, sobol_u32};
 
 /// All 24 permutations of `0..4`, lexicographic, entry `k` in bits `2k .. 2k + 2`.
@@ -346,7 +346,7 @@ impl ZSobolSampler {
     fn value_1d(&self, dim: u32) -> f32 {
         let (index, key) = self.index(dim);
         if self.scramble == Scramble::FastOwen {
-            return rev_to_f32(lk_hash(index, key as u32));
+            return reversed_to_f32(lk_hash(index, key as u32));
         }
         to_f32(scramble_dim0(index, key as u32, self.scramble))
     }
@@ -359,8 +359,8 @@ impl ZSobolSampler {
             // reversals instead of three.
             Scramble::FastOwen => {
                 return [
-                    rev_to_f32(lk_hash(index, key as u32)),
-                    rev_to_f32(lk_hash(sobol1_rev(index), key_seed(key))),
+                    reversed_to_f32(lk_hash(index, key as u32)),
+                    reversed_to_f32(lk_hash(sobol1_rev(index), key_seed(key))),
                 ];
             }
             how => scramble_u32(sobol_u32(index, 1), (key >> 32) as u32, how),
@@ -370,28 +370,6 @@ impl ZSobolSampler {
             to_f32(y),
         ]
     }
-}
-
-/// `REVERSED_BYTES[b]`: the byte `b` with its bits reversed.
-static REVERSED_BYTES: [u8; 256] = {
-    let mut t = [0u8; 256];
-    let mut b = 0;
-    while b < 256 {
-        t[b] = (b as u8).reverse_bits();
-        b += 1;
-    }
-    t
-};
-
-/// The `f32` of the binary fraction `reverse(w)`: its top 24 bits are the low 24 bits of `w`
-/// reversed, three byte-table reads instead of a full bit reversal.
-#[inline(always)]
-fn rev_to_f32(w: u32) -> f32 {
-    let [b0, b1, b2, _] = w.to_le_bytes();
-    let top24 = (u32::from(REVERSED_BYTES[b0 as usize]) << 16)
-        | (u32::from(REVERSED_BYTES[b1 as usize]) << 8)
-        | u32::from(REVERSED_BYTES[b2 as usize]);
-    top24 as f32 * (1.0 / 16_777_216.0)
 }
 
 /// `SOBOL1_REVERSED[j][b]`: Sobol dimension 1's columns `8j + k` over the set bits `k` of `b`,
@@ -539,15 +517,14 @@ mod tests {
     fn reversed_tables_equal_the_direct_forms() {
         for i in (0..4096u32).chain((0..4096).map(|i| mix32(i ^ 0xabc))) {
             assert_eq!(sobol1_rev(i), sobol_u32(i, 1).reverse_bits());
-            assert_eq!(rev_to_f32(i), to_f32(i.reverse_bits()));
             let key = hash2(9, u64::from(i));
             let want = |v: u32, seed: u32| to_f32(lk_hash(v.reverse_bits(), seed).reverse_bits());
             assert_eq!(
-                rev_to_f32(lk_hash(sobol1_rev(i), key_seed(key))),
+                reversed_to_f32(lk_hash(sobol1_rev(i), key_seed(key))),
                 want(sobol_u32(i, 1), key_seed(key))
             );
             assert_eq!(
-                rev_to_f32(lk_hash(i, key as u32)),
+                reversed_to_f32(lk_hash(i, key as u32)),
                 want(sobol_u32(i, 0), key as u32)
             );
         }

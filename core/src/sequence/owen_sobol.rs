@@ -25,7 +25,7 @@ use super::sobol_table::SOBOL_MATRICES;
 use super::{Sequence, check_fill};
 use crate::Error;
 use crate::hash::{hash2, mix32};
-use crate::scramble::lk_hash;
+use crate::scramble::{lk_hash, reversed_to_f32};
 
 /// Dimensions with reversed tables: values there cost four table reads (two below index
 /// 2¹⁶); higher dimensions take the 32-column masked product (about 3× slower).
@@ -126,33 +126,6 @@ fn dim_seed(key: u32, dim: u32) -> u32 {
 #[inline(always)]
 fn rev_to_f32(w_rev: u32) -> f32 {
     (w_rev.reverse_bits() >> 8) as f32 * (1.0 / 16_777_216.0)
-}
-
-/// `REV_F32[j][b]`: byte `j` of a reversed word's contribution to [`rev_to_f32`]:
-/// `reverse8(b) · 2^(−8(j+1))`. The three low bytes' entries have disjoint bits, so their sum
-/// is exact and equals `rev_to_f32`. Built at compile time; 3 KiB.
-static REV_F32: [[f32; 256]; 3] = rev_f32_tables();
-
-const fn rev_f32_tables() -> [[f32; 256]; 3] {
-    let mut t = [[0.0f32; 256]; 3];
-    let scale = [1.0 / 256.0, 1.0 / 65_536.0, 1.0 / 16_777_216.0];
-    let mut j = 0;
-    while j < 3 {
-        let mut b = 0;
-        while b < 256 {
-            t[j][b] = (b as u8).reverse_bits() as f32 * scale[j];
-            b += 1;
-        }
-        j += 1;
-    }
-    t
-}
-
-/// [`rev_to_f32`] by three table reads (shorter than the scalar bit reversal).
-#[inline(always)]
-fn rev_to_f32_table(w_rev: u32) -> f32 {
-    let [b0, b1, b2, _] = w_rev.to_le_bytes();
-    (REV_F32[0][b0 as usize] + REV_F32[1][b1 as usize]) + REV_F32[2][b2 as usize]
 }
 
 /// [`lk_hash`] then [`rev_to_f32`] on four lanes, written lane-parallel so that it compiles to
@@ -351,7 +324,7 @@ impl OwenSobol {
     #[inline(always)]
     fn value_f32(&self, index: u32, r: u32, dim: u32) -> f32 {
         match self.table_value_rev(index, r, dim) {
-            Some(w) => rev_to_f32_table(w),
+            Some(w) => reversed_to_f32(w),
             None => owen_sobol_rev_f32(r, dim, dim_seed(self.key, dim)),
         }
     }
@@ -704,7 +677,7 @@ mod tests {
             .chain((0..100_000).map(mix32))
             .chain([0, u32::MAX, 1, 1 << 31, 0x00ff_ffff, 0xff00_0000]);
         for w in words {
-            assert_eq!(rev_to_f32_table(w), rev_to_f32(w), "w {w:#x}");
+            assert_eq!(reversed_to_f32(w), rev_to_f32(w), "w {w:#x}");
             assert_eq!(scramble_rev_f32x4([w; 4], [0x1357_9bdf; 4])[2], {
                 rev_to_f32(lk_hash(w, 0x1357_9bdf))
             });

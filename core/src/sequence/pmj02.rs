@@ -18,7 +18,7 @@
 use super::Sequence;
 use crate::Error;
 use crate::hash::{hash2, wyrand};
-use crate::scramble::lk_hash;
+use crate::scramble::{lk_hash, reversed_to_f32};
 
 /// The most points the construction makes: the published XOR constants cover 16 levels.
 ///
@@ -145,6 +145,13 @@ pub(crate) fn owen_keyed(x: u32, key: u32) -> u32 {
     lk_hash(x.reverse_bits(), key).reverse_bits()
 }
 
+/// `to_f32(owen_keyed(x, key))` with one bit reversal fewer (the float is read straight from the
+/// reversed word).
+#[inline(always)]
+pub(crate) fn owen_keyed_f32(x: u32, key: u32) -> f32 {
+    reversed_to_f32(lk_hash(x.reverse_bits(), key))
+}
+
 /// `2⁻²⁴`.
 const TWO_POW_MINUS_24: f32 = 1.0 / 16_777_216.0;
 
@@ -251,8 +258,11 @@ impl Pmj02 {
     /// ```
     #[inline(always)]
     pub fn sample_2d(&self, index: u32) -> [f32; 2] {
-        let [x, y] = self.sample_2d_u32(index);
-        [to_f32(x), to_f32(y)]
+        let [x, y] = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)];
+        match self.keys {
+            None => [to_f32(x), to_f32(y)],
+            Some([kx, ky]) => [owen_keyed_f32(x, kx), owen_keyed_f32(y, ky)],
+        }
     }
 }
 
@@ -267,7 +277,12 @@ impl Sequence for Pmj02 {
 
     #[inline(always)]
     fn sample(&self, index: u64, dim: u32) -> f32 {
-        to_f32(self.sample_u32(index as u32, dim))
+        let d = (dim & 1) as usize;
+        let v = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)][d];
+        match self.keys {
+            None => to_f32(v),
+            Some(keys) => owen_keyed_f32(v, keys[d]),
+        }
     }
 
     #[inline]
