@@ -47,8 +47,6 @@ fn spread(x: u32) -> u32 {
 
 /// Samples per pixel up to which a pixel's sample-digit permutations are tabled.
 const TABLE_SPP: u32 = 64;
-/// Nodes of the sample-digit tree at 64 spp: 1 + 4 + 16.
-const TABLE_NODES: usize = 21;
 
 /// The dimensions whose pixel digits are permuted once per pixel: the camera's requests
 /// (image sample at 0, time at 2, lens at 3).
@@ -95,16 +93,18 @@ pub struct ZSobolSampler {
     keys: [u64; 3],
     pixel: Option<[u32; 2]>,
     pixel_morton: u64,
-    /// The permuted pixel digits of [`CAMERA_DIMS`] and their pixel words.
+    /// The permuted pixel digits of [`CAMERA_DIMS`], their permutations (per pixel digit, the
+    /// lowest first) and their pixel words.
     prefix: [u64; 3],
+    perms: [[u8; 16]; 3],
     words: [u64; 3],
-    /// Whether `nodes` and `flips` hold the current pixel's permutations.
+    /// Whether `sample_bits` and `flips` hold the current pixel's permutations.
     tabled: bool,
-    /// For `spp ≤ TABLE_SPP`, per camera request: the permutation (a [`PERMUTATIONS_4`] entry)
-    /// of every sample-digit node of the current pixel, top digit first (1, then 4, then 16
-    /// nodes), and the flips of the last base-2 digit; filled on the pixel's second sample.
-    nodes: [[u8; TABLE_NODES]; 3],
-    flips: [u16; 3],
+    /// For `spp ≤ TABLE_SPP`, per camera request: the permuted sample bits for every value of
+    /// the sample's base-4 digits, and the flips of the last base-2 digit (when `log₂ spp` is
+    /// odd) by the digits above it; filled on the pixel's second sample.
+    sample_bits: [[u8; TABLE_SPP as usize]; 3],
+    flips: [u32; 3],
     morton: u64,
     dim: u32,
 }
@@ -165,9 +165,10 @@ impl ZSobolSampler {
             pixel: None,
             pixel_morton: 0,
             prefix: [0; 3],
+            perms: [[0; 16]; 3],
             words: [0; 3],
             tabled: false,
-            nodes: [[0; TABLE_NODES]; 3],
+            sample_bits: [[0; TABLE_SPP as usize]; 3],
             flips: [0; 3],
             morton: 0,
             dim: 0,
@@ -256,41 +257,86 @@ impl ZSobolSampler {
         index as u32
     }
 
+    /// Moves the per-pixel caches to `pixel`. The pixel digits' permutations depend only on the
+    /// digits above them, so after the first pixel only the digits at and below the highest one
+    /// that changed are redone: a step along a scanline or a Morton curve rehashes about one
+    /// digit per request instead of all of them.
     fn set_pixel(&mut self, pixel: [u32; 2]) {
+        let morton = self.morton_of(pixel) << self.log2_spp;
+        let changed = if self.pixel.is_some() {
+            morton ^ self.pixel_morton
+        } else {
+            u64::MAX
+        };
         self.pixel = Some(pixel);
-        self.pixel_morton = self.morton_of(pixel) << self.log2_spp;
+        self.pixel_morton = morton;
+        let (from, odd) = (self.sample_digits, self.odd);
+        if changed != 0 && self.digits > from {
+            // The highest pixel digit that changed (a first pixel: all of them).
+            let top = if changed == u64::MAX {
+                self.digits - 1
+            } else {
+                ((63 - changed.leading_zeros()) - odd) / 2
+            };
+            let low_bit = 2 * from + odd;
+            let high_bit = 2 * top + odd + 2;
+            let mask = (u64::MAX >> (64 - (high_bit - low_bit))) << low_bit;
+            for k in 0..CAMERA_DIMS.len() {
+                let mut bits = self.prefix[k] & !mask;
+                let mut i = top + 1;
+                while i > from {
+                    i -= 1;
+                    let shift = 2 * i + odd;
+                    let digit = (morton >> shift) & 3;
+                    let slot = (i - from) as usize;
+                    // The highest changed digit keeps its permutation (the digits above it did
+                    // not change); the ones below draw new ones.
+                    if i != top || changed == u64::MAX {
+                        let p = digit_permutation(morton >> (shift + 2), self.keys[k]);
+                        self.perms[k][slot] = PERMUTATIONS_4[p as usize];
+                    }
+                    let perm = u64::from(self.perms[k][slot]);
+                    bits |= ((perm >> (2 * digit)) & 3) << shift;
+                }
+                self.prefix[k] = bits;
+            }
+        }
         for k in 0..CAMERA_DIMS.len() {
-            self.prefix[k] = self.permute_digits(
-                self.pixel_morton,
-                self.keys[k],
-                self.sample_digits,
-                self.digits,
-            );
-            self.words[k] = pixel_word(self.pixel_morton >> self.log2_spp, self.keys[k]);
+            self.words[k] = pixel_word(morton >> self.log2_spp, self.keys[k]);
         }
         self.tabled = false;
     }
 
-    /// Fills `nodes` and `flips` for the current pixel (`spp ≤ TABLE_SPP`): the same
-    /// permutations [`ZSobolSampler::finish_index`] draws, one per node of the digit tree.
+    /// Fills `sample_bits` and `flips` for the current pixel (`spp ≤ TABLE_SPP`): the same
+    /// permutations [`ZSobolSampler::finish_index`] draws, one per node of the digit tree,
+    /// applied to every sample at once by expanding the tree one level at a time.
     fn fill_tables(&mut self) {
         let j = self.sample_digits;
         for k in 0..CAMERA_DIMS.len() {
             let w = self.words[k];
-            let mut offset = 0usize;
+            let table = &mut self.sample_bits[k];
+            // Entry h: the permuted bits of the digits above the current level, for the value h
+            // of those digits.
+            table[0] = 0;
+            let mut n = 1usize;
             for level in 0..j {
                 let shift = 2 * (j - 1 - level) + self.odd;
-                for higher in 0..1usize << (2 * level) {
+                // Backwards, so that each entry is read before its slot is overwritten.
+                for higher in (0..n).rev() {
                     let h = nested_word(w, higher as u64, shift);
-                    let p = ((h >> 32) * 24) >> 32;
-                    self.nodes[k][offset + higher] = PERMUTATIONS_4[p as usize];
+                    let perm = PERMUTATIONS_4[(((h >> 32) * 24) >> 32) as usize];
+                    let base = table[higher];
+                    for digit in 0..4 {
+                        let d = (perm >> (2 * digit)) & 3;
+                        table[4 * higher + digit] = base | (d << shift);
+                    }
                 }
-                offset = 4 * offset + 1;
+                n *= 4;
             }
             self.flips[k] = 0;
             if self.odd == 1 {
                 for higher in 0..self.spp >> 1 {
-                    let flip = (nested_word(w, u64::from(higher), 0) >> 63) as u16;
+                    let flip = (nested_word(w, u64::from(higher), 0) >> 63) as u32;
                     self.flips[k] |= flip << higher;
                 }
             }
@@ -298,24 +344,17 @@ impl ZSobolSampler {
         self.tabled = true;
     }
 
-    /// [`ZSobolSampler::finish_index`]'s sample bits through the tabled permutations of camera
-    /// request `k`.
+    /// [`ZSobolSampler::finish_index`]'s sample bits through the tables of camera request `k`.
     #[inline(always)]
     fn tabled_sample_bits(&self, k: usize, sample: u64) -> u64 {
-        let j = self.sample_digits;
-        let mut bits = 0u64;
-        let mut offset = 0usize;
-        for level in 0..j {
-            let shift = 2 * (j - 1 - level) + self.odd;
-            let digit = (sample >> shift) & 3;
-            let perm = u64::from(self.nodes[k][offset + (sample >> (shift + 2)) as usize]);
-            bits |= ((perm >> (2 * digit)) & 3) << shift;
-            offset = 4 * offset + 1;
-        }
+        let bits = u64::from(
+            self.sample_bits[k][(sample >> self.odd) as usize & (TABLE_SPP as usize - 1)],
+        );
         if self.odd == 1 {
-            bits |= (sample & 1) ^ u64::from((self.flips[k] >> (sample >> 1)) & 1);
+            bits | ((sample & 1) ^ u64::from((self.flips[k] >> (sample >> 1)) & 1))
+        } else {
+            bits
         }
-        bits
     }
 
     /// The index for the request at `dim`, through the cached pixel digits where there are some.
@@ -548,6 +587,41 @@ mod tests {
                     }
                 }
                 assert_eq!(s.tabled, m <= 6, "spp 2^{m}");
+            }
+        }
+    }
+
+    /// The incremental per-pixel update (only the changed pixel digits rehashed) equals the
+    /// direct index along scanlines, Morton steps, jumps and wrapped coordinates.
+    #[test]
+    fn pixel_steps_in_any_order_equal_sequence_index() {
+        for (res, spp) in [
+            ([64u32, 64u32], 16u32),
+            ([1000, 7], 8),
+            ([3, 3], 1),
+            ([512, 300], 128),
+        ] {
+            let mut s = ZSobolSampler::new(res, spp, Scramble::FastOwen, 11).unwrap();
+            let mut pixels: Vec<[u32; 2]> = Vec::new();
+            for y in 0..5 {
+                for x in 0..9 {
+                    pixels.push([x, y]);
+                }
+            }
+            for i in 0..200u32 {
+                let h = mix32(i);
+                pixels.push([h % (res[0] + 5), (h >> 16) % (res[1] + 5)]);
+            }
+            for (n, &pixel) in pixels.iter().enumerate() {
+                let i = n as u32 % (spp + 1);
+                s.start_pixel_sample(pixel, i, 0);
+                for d in [0u32, 2, 3] {
+                    assert_eq!(
+                        s.index(d).0,
+                        s.sequence_index(pixel, i, d),
+                        "{res:?} {pixel:?}"
+                    );
+                }
             }
         }
     }
