@@ -4,7 +4,7 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::hash::{hash_slice, mix32};
-use crate::sequence::{owen_sobol_rev_f32, shuffle_rev};
+use crate::sequence::{IndexShuffle, owen_sobol_rev_f32};
 
 /// Dimensions whose scramble seeds are hashed once per pixel: the camera's five.
 const CACHED: usize = 5;
@@ -50,7 +50,7 @@ pub struct OwenSobolSampler {
     frame: u32,
     /// The pixel whose key is cached (`None` before the first).
     pixel: Option<[u32; 2]>,
-    shuffle_seed: u32,
+    shuffle: IndexShuffle,
     key: u32,
     seeds: [u32; CACHED],
     /// The current sample's reversed shuffled index.
@@ -76,7 +76,7 @@ impl OwenSobolSampler {
             seed,
             frame: 0,
             pixel: None,
-            shuffle_seed: 0,
+            shuffle: IndexShuffle::default(),
             key: 0,
             seeds: [0; CACHED],
             r: 0,
@@ -154,12 +154,12 @@ impl Sampler for OwenSobolSampler {
                 u64::from(self.frame),
                 self.seed,
             ]);
-            self.shuffle_seed = mix32((h >> 32) as u32);
+            self.shuffle = IndexShuffle::new(mix32((h >> 32) as u32));
             self.key = h as u32;
             let key = self.key;
             self.seeds = core::array::from_fn(|d| dim_seed(key, d as u32));
         }
-        self.r = shuffle_rev(sample_index, self.shuffle_seed);
+        self.r = self.shuffle.rev(sample_index);
         self.dim = dim;
     }
 

@@ -2,23 +2,22 @@
 //! Scrambling", JCGT 9(4)) over the Joe–Kuo Sobol sequence, with Vegdahl's LK-hash constants.
 //!
 //! Point `i`, dimension `d` under a seed is
-//! `fast_owen(sobol(nested_uniform_shuffle(i, s), d), s_d)`: one index shuffle per sequence
+//! `fast_owen(sobol(nested_uniform_shuffle(i, s) ^ c, d), s_d)`: one index shuffle per sequence
 //! (shared by every dimension, so the dimensions stay jointly stratified) and one Owen scramble
 //! per dimension. Both are bijections that keep nets, so the first `2^k` points of dimensions 0
 //! and 1 are a (0, k, 2)-net for every seed, and each dimension alone is stratified into `2^k`
 //! intervals; different seeds give statistically independent sequences.
 //!
-//! The work runs on bit-reversed words, where the LK hash is an Owen scramble: the reversed
-//! shuffled index goes through byte tables of *reversed* Sobol columns, so the whole value costs
-//! one `reverse_bits`, four table reads and two hashes. Unlike the `sobol_burley` crate, indices are full 32-bit (no 2¹⁶ limit)
-//! and all 1024 dimensions are available.
+//! (`c` a constant XOR of the upper 16 index bits, see [`IndexShuffle`], which keeps the
+//! indices below 2¹⁶ below 2¹⁶.) Unlike the `sobol_burley` crate, indices are full 32-bit (no
+//! 2¹⁶ limit) and all 1024 dimensions are available.
 //!
-//! The shuffle maps the indices `0..2^16` onto one aligned block, so their shuffled indices
-//! share bits 16.. (fixed by the seed): below 2¹⁶ the product is a per-dimension constant,
-//! computed once in [`OwenSobol::new`], XOR two byte-table reads for the 16 low shuffled bits
-//! (and the index is reversed by two small-table reads). Single values turn the scrambled word
-//! into an `f32` by three table reads; four-wide values hash, reverse and convert on four lanes
-//! at once (plain lane-parallel code that compiles to SSE2).
+//! The work runs on bit-reversed words, where the LK hash is an Owen scramble: the reversed
+//! shuffled index goes through tables of *reversed* Sobol columns, and one final reversal (or
+//! three table reads straight into the `f32`) ends it. Below index 2¹⁶ only 16 index bits reach
+//! the product: two byte-table reads for dimensions 0..63, four nibble-table reads (four
+//! dimensions per 16-byte read) for the rest. Four-wide values hash, reverse and convert on four
+//! lanes at once (plain lane-parallel code that compiles to SSE2).
 
 use super::sobol::product;
 use super::sobol_table::SOBOL_MATRICES;
@@ -27,8 +26,9 @@ use crate::Error;
 use crate::hash::{hash2, mix32};
 use crate::scramble::{lk_hash, reversed_to_f32};
 
-/// Dimensions with reversed tables: values there cost four table reads (two below index
-/// 2¹⁶); higher dimensions take the 32-column masked product (about 3× slower).
+/// Dimensions with reversed byte tables: values there cost four table reads (two below index
+/// 2¹⁶); higher dimensions read four nibble tables below 2¹⁶ and take the 32-column masked
+/// product above.
 const REV_DIMS: usize = 64;
 
 /// `SOBOL_REV_BYTES[j][b][d]`: the bit-reversed Sobol product of dimension `d` restricted to
@@ -69,9 +69,63 @@ fn product_rev(dim: usize, r: u32) -> u32 {
             ^ t[1][b1 as usize][dim]
             ^ t[2][b2 as usize][dim]
             ^ t[3][b3 as usize][dim]
+    } else if r & 0xffff == 0 {
+        product_rev16(dim & 1023, r >> 16)
     } else {
         product(&SOBOL_MATRICES[dim & 1023], r.reverse_bits()).reverse_bits()
     }
+}
+
+/// `SOBOL_REV_NIBBLES16[s][j][n][l]`: dimension `4s + l`'s bit-reversed product over nibble
+/// `j` of the upper half of a reversed index (bits `16 + 4j ..` of `r`, index bits `15 − 4j − b`)
+/// for the nibble value `n`: the 16 index bits that indices below 2¹⁶ use, four dimensions side
+/// by side, so a product is four reads (one 16-byte read per nibble for four dimensions).
+/// Built at compile time for all 1024 dimensions; 256 KiB.
+static SOBOL_REV_NIBBLES16: [[[[u32; 4]; 16]; 4]; 256] = rev_nibbles16();
+
+const fn rev_nibbles16() -> [[[[u32; 4]; 16]; 4]; 256] {
+    let mut t = [[[[0u32; 4]; 16]; 4]; 256];
+    let mut d = 0;
+    while d < 1024 {
+        let mut j = 0;
+        while j < 4 {
+            let mut n = 1;
+            while n < 16 {
+                let b = (n as u32).trailing_zeros() as usize;
+                let column = SOBOL_MATRICES[d][15 - 4 * j - b].reverse_bits();
+                t[d / 4][j][n][d % 4] = t[d / 4][j][n & (n - 1)][d % 4] ^ column;
+                n += 1;
+            }
+            j += 1;
+        }
+        d += 1;
+    }
+    t
+}
+
+/// [`product_rev`] of dimension `dim < 1024` for a reversed index whose low 16 bits are zero,
+/// from its upper half `h < 2^16`: four nibble-table reads.
+#[inline(always)]
+fn product_rev16(dim: usize, h: u32) -> u32 {
+    let t = &SOBOL_REV_NIBBLES16[(dim / 4) & 255];
+    let lane = dim % 4;
+    t[0][(h & 15) as usize][lane]
+        ^ t[1][((h >> 4) & 15) as usize][lane]
+        ^ t[2][((h >> 8) & 15) as usize][lane]
+        ^ t[3][((h >> 12) & 15) as usize][lane]
+}
+
+/// [`product_rev16`] for the four dimensions `4·set .. 4·set + 4`.
+#[inline(always)]
+fn product_rev16x4(set: usize, h: u32) -> [u32; 4] {
+    let t = &SOBOL_REV_NIBBLES16[set & 255];
+    xor4(
+        xor4(t[0][(h & 15) as usize], t[1][((h >> 4) & 15) as usize]),
+        xor4(
+            t[2][((h >> 8) & 15) as usize],
+            t[3][((h >> 12) & 15) as usize],
+        ),
+    )
 }
 
 /// The part of [`product_rev`] from the upper 16 bits of `r` (the 16 low index bits: two of
@@ -120,6 +174,30 @@ const CACHED_SEEDS: usize = REV_DIMS;
 #[inline(always)]
 fn dim_seed(key: u32, dim: u32) -> u32 {
     mix32(key ^ dim.wrapping_mul(0x9e37_79b9))
+}
+
+/// [`dim_seed`] of the four dimensions `first .. first + 4`, written lane by lane so that it
+/// compiles to vector code.
+#[inline(always)]
+fn dim_seeds4(key: u32, first: u32) -> [u32; 4] {
+    let mut x: [u32; 4] =
+        core::array::from_fn(|k| key ^ first.wrapping_add(k as u32).wrapping_mul(0x9e37_79b9));
+    for v in &mut x {
+        *v ^= *v >> 16;
+    }
+    for v in &mut x {
+        *v = v.wrapping_mul(0x7feb_352d);
+    }
+    for v in &mut x {
+        *v ^= *v >> 15;
+    }
+    for v in &mut x {
+        *v = v.wrapping_mul(0x846c_a68b);
+    }
+    for v in &mut x {
+        *v ^= *v >> 16;
+    }
+    x
 }
 
 /// The top 24 bits of a reversed, scrambled word, as an `f32` in `[0, 1)`.
@@ -181,10 +259,47 @@ pub(crate) fn owen_sobol_rev_f32x4(
     )
 }
 
-/// The reversed shuffled index: `reverse(nested_uniform_shuffle(index))` for a mixed seed.
-#[inline(always)]
-pub(crate) fn shuffle_rev(index: u32, shuffle_seed: u32) -> u32 {
-    lk_hash(index.reverse_bits(), shuffle_seed)
+/// Burley's nested uniform index shuffle on the reversed index, with a fixed XOR that sends the
+/// indices below 2¹⁶ to the first block: `rev(i) ↦ lk_hash(rev(i), seed) ^ fix`.
+///
+/// The shuffle maps `0..2^16` onto one aligned block of 2¹⁶ indices whose upper half (the low
+/// half of the reversed word) depends only on the seed; `fix` is that half, so the block is
+/// always `0..2^16`. An XOR with a constant is itself a nested permutation, so the map stays a
+/// nested uniform shuffle; and since the Sobol points of block `c` are those of block 0 under a
+/// digital shift, which the per-dimension Owen scramble absorbs, the sequence's law is the same.
+/// Below 2¹⁶ only 16 index bits then reach the Sobol product.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub(crate) struct IndexShuffle {
+    seed: u32,
+    fix: u32,
+}
+
+impl IndexShuffle {
+    /// The shuffle for a mixed 32-bit seed.
+    #[inline(always)]
+    pub(crate) fn new(seed: u32) -> IndexShuffle {
+        IndexShuffle {
+            seed,
+            fix: lk_hash(0, seed) & 0xffff,
+        }
+    }
+
+    /// The reversed shuffled index of `index`.
+    #[inline(always)]
+    pub(crate) fn rev(&self, index: u32) -> u32 {
+        lk_hash(index.reverse_bits(), self.seed) ^ self.fix
+    }
+
+    /// [`IndexShuffle::rev`], reversing indices below 2¹⁶ by two table reads.
+    #[inline(always)]
+    fn rev_fast(&self, index: u32) -> u32 {
+        if index < LOW_BLOCK {
+            let [b0, b1, _, _] = index.to_le_bytes();
+            lk_hash(REV16[0][b0 as usize] | REV16[1][b1 as usize], self.seed) ^ self.fix
+        } else {
+            self.rev(index)
+        }
+    }
 }
 
 /// `REV16[j][b]`: byte `j` of a 16-bit index, bit-reversed into a 32-bit word
@@ -202,19 +317,7 @@ const fn rev16_tables() -> [[u32; 256]; 2] {
     t
 }
 
-/// [`shuffle_rev`], reversing indices below 2¹⁶ by two table reads.
-#[inline(always)]
-fn shuffle_rev_fast(index: u32, shuffle_seed: u32) -> u32 {
-    if index < LOW_BLOCK {
-        let [b0, b1, _, _] = index.to_le_bytes();
-        lk_hash(REV16[0][b0 as usize] | REV16[1][b1 as usize], shuffle_seed)
-    } else {
-        shuffle_rev(index, shuffle_seed)
-    }
-}
-
-/// Indices below this share the shuffled bits 16.. (Burley's shuffle maps `0..2^16` onto one
-/// aligned block): their reversed shuffled indices share the low 16 bits.
+/// Indices below this shuffle to indices below it ([`IndexShuffle`]).
 const LOW_BLOCK: u32 = 1 << 16;
 
 /// Owen-scrambled Sobol sequence over up to [`SOBOL_DIMS`](super::SOBOL_DIMS) dimensions
@@ -222,8 +325,8 @@ const LOW_BLOCK: u32 = 1 << 16;
 /// exactly. Indices are 32-bit ([`Sequence::point_count`] is `Some(2³²)`; a `u64` index wraps
 /// modulo 2³²); `dim >= dims()` wraps modulo `dims()`.
 ///
-/// Allocates: no. Stateless, `&self` everywhere (536 bytes: for the 64 dimensions with tables,
-/// the scramble seeds and the product of the shuffled index bits that indices below 2¹⁶ share).
+/// Allocates: no. Stateless, `&self` everywhere (280 bytes: the scramble seeds of the 64
+/// dimensions with byte tables are kept).
 ///
 /// ```
 /// use nyquist::sequence::{OwenSobol, Sequence};
@@ -240,12 +343,9 @@ const LOW_BLOCK: u32 = 1 << 16;
 pub struct OwenSobol {
     dims: u32,
     seed: u64,
-    shuffle_seed: u32,
+    shuffle: IndexShuffle,
     key: u32,
     seeds: [u32; CACHED_SEEDS],
-    /// `low[d]`: the reversed product of dimension `d` over the low 16 bits of the reversed
-    /// shuffled index, the same for every index below 2¹⁶.
-    low: [u32; REV_DIMS],
 }
 
 impl OwenSobol {
@@ -264,17 +364,12 @@ impl OwenSobol {
         super::Sobol::new(dims)?;
         let h = hash2(seed, 0x4f57_454e); // "OWEN"
         let key = h as u32;
-        let shuffle_seed = mix32((h >> 32) as u32);
-        // Index 0's reversed shuffled index, upper half cleared: the low half every index
-        // below 2^16 shares.
-        let common = shuffle_rev(0, shuffle_seed) & 0xffff;
         Ok(OwenSobol {
             dims,
             seed,
-            shuffle_seed,
+            shuffle: IndexShuffle::new(mix32((h >> 32) as u32)),
             key,
             seeds: core::array::from_fn(|d| dim_seed(key, d as u32)),
-            low: core::array::from_fn(|d| product_rev(d, common)),
         })
     }
 
@@ -304,26 +399,25 @@ impl OwenSobol {
         }
     }
 
-    /// The scrambled reversed value (before the final reversal) of point `index`, dimension
-    /// `dim`, where `r = shuffle_rev(index)`, if `dim` has tables (`None` past them).
+    /// The scrambled reversed value (before the final reversal) of dimension `dim` at the
+    /// reversed shuffled index `r` ([`IndexShuffle::rev`]), if `dim` has byte tables (`None`
+    /// past them).
     #[inline(always)]
-    fn table_value_rev(&self, index: u32, r: u32, dim: u32) -> Option<u32> {
+    fn table_value_rev(&self, r: u32, dim: u32) -> Option<u32> {
         let d = dim as usize;
-        let (Some(&s), Some(&c)) = (self.seeds.get(d), self.low.get(d)) else {
-            return None;
-        };
-        let p = if index < LOW_BLOCK {
-            c ^ product_rev_upper(d, r)
+        let &s = self.seeds.get(d)?;
+        let p = if r & 0xffff == 0 {
+            product_rev_upper(d, r)
         } else {
             product_rev(d, r)
         };
         Some(lk_hash(p, s))
     }
 
-    /// Point `index`, dimension `dim < dims()` as an `f32`, where `r = shuffle_rev(index)`.
+    /// Dimension `dim < dims()` at the reversed shuffled index `r`, as an `f32`.
     #[inline(always)]
-    fn value_f32(&self, index: u32, r: u32, dim: u32) -> f32 {
-        match self.table_value_rev(index, r, dim) {
+    fn value_f32(&self, r: u32, dim: u32) -> f32 {
+        match self.table_value_rev(r, dim) {
             Some(w) => reversed_to_f32(w),
             None => owen_sobol_rev_f32(r, dim, dim_seed(self.key, dim)),
         }
@@ -342,9 +436,9 @@ impl OwenSobol {
     /// ```
     #[inline]
     pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
-        let r = shuffle_rev(index, self.shuffle_seed);
+        let r = self.shuffle.rev(index);
         let dim = self.wrap(dim);
-        match self.table_value_rev(index, r, dim) {
+        match self.table_value_rev(r, dim) {
             Some(w) => w.reverse_bits(),
             None => owen_sobol_rev_u32(r, dim, dim_seed(self.key, dim)),
         }
@@ -362,17 +456,26 @@ impl OwenSobol {
     /// ```
     #[inline]
     pub fn sample_4d(&self, index: u32, first_dim: u32) -> [f32; 4] {
-        let r = shuffle_rev_fast(index, self.shuffle_seed);
+        let r = self.shuffle.rev_fast(index);
         // The common case, four dimensions inside the tables and the sequence: no wrapping and
         // no seed hashing, four lanes at once.
         if first_dim <= (REV_DIMS - 4) as u32 && first_dim + 4 <= self.dims {
             let d = first_dim as usize;
-            let p = if index < LOW_BLOCK {
-                xor4(four(&self.low, d), product_rev_upper4(d, r))
+            let p = if r & 0xffff == 0 {
+                product_rev_upper4(d, r)
             } else {
                 product_rev4(d, r)
             };
             return scramble_rev_f32x4(p, four(&self.seeds, d));
+        }
+        // Past the tables, an aligned set of four below index 2^16: the 16-column products
+        // four-wide.
+        if first_dim.is_multiple_of(4)
+            && first_dim.checked_add(4).is_some_and(|e| e <= self.dims)
+            && r & 0xffff == 0
+        {
+            let p = product_rev16x4((first_dim / 4) as usize, r >> 16);
+            return scramble_rev_f32x4(p, dim_seeds4(self.key, first_dim));
         }
         let dims = core::array::from_fn(|k| self.wrap(first_dim.wrapping_add(k as u32)));
         owen_sobol_rev_f32x4(r, dims, dims.map(|d| self.seed_of(d)))
@@ -390,10 +493,10 @@ impl OwenSobol {
     /// ```
     #[inline]
     pub fn sample_dims(&self, index: u32, first_dim: u32, out: &mut [f32]) {
-        let r = shuffle_rev(index, self.shuffle_seed);
+        let r = self.shuffle.rev(index);
         let mut d = first_dim;
         for x in out {
-            *x = self.value_f32(index, r, self.wrap(d));
+            *x = self.value_f32(r, self.wrap(d));
             d = d.wrapping_add(1);
         }
     }
@@ -411,8 +514,8 @@ impl Sequence for OwenSobol {
     #[inline]
     fn sample(&self, index: u64, dim: u32) -> f32 {
         let index = index as u32;
-        let r = shuffle_rev_fast(index, self.shuffle_seed);
-        self.value_f32(index, r, self.wrap(dim))
+        let r = self.shuffle.rev_fast(index);
+        self.value_f32(r, self.wrap(dim))
     }
 
     #[inline]
@@ -462,7 +565,7 @@ mod tests {
         // The raw seeds behind the mixed ones: mix32 of (raw ^ const) must equal the mixed seed,
         // so compare through the reversed-domain identities instead.
         for i in [0u32, 1, 2, 3, 1000, 65_535, 65_536, 1 << 31, u32::MAX] {
-            let r = shuffle_rev(i, s.shuffle_seed);
+            let r = s.shuffle.rev(i);
             let shuffled = r.reverse_bits();
             for d in [0u32, 1, 2, 17, 63, 64, 500, 1023] {
                 let v = sobol_u32(shuffled, d);
@@ -579,11 +682,7 @@ mod tests {
     /// The value by the general path alone: shuffle, byte-table or masked product, hash.
     fn reference_u32(s: &OwenSobol, index: u32, dim: u32) -> u32 {
         let dim = dim % s.dims;
-        owen_sobol_rev_u32(
-            shuffle_rev(index, s.shuffle_seed),
-            dim,
-            dim_seed(s.key, dim),
-        )
+        owen_sobol_rev_u32(s.shuffle.rev(index), dim, dim_seed(s.key, dim))
     }
 
     /// Indices around the 2^8 and 2^16 edges, the ends, and scattered ones.
@@ -603,9 +702,9 @@ mod tests {
             .collect()
     }
 
-    /// Below 2^16 the product is the per-dimension constant XOR the upper-half tables, the
-    /// index reversal and the f32 conversion go through tables: every form equals the general
-    /// path, for every dimension with tables, across the 2^8 and 2^16 edges, for many seeds.
+    /// Below 2^16 the product reads only the upper-half tables (or the 16 columns past them),
+    /// and the index reversal and the f32 conversion go through tables: every form equals the
+    /// general path, in and past the tables, across the 2^8 and 2^16 edges, for many seeds.
     #[test]
     fn fast_paths_equal_the_general_path() {
         for seed in [0u64, 1, 7, 0x5eed, 0xdead_beef, u64::MAX] {
@@ -622,7 +721,7 @@ mod tests {
                         assert_eq!(x, want_f32, "run: i {i} dim {dim}");
                     }
                 }
-                for first in 0..REV_DIMS as u32 + 2 {
+                for first in (0..REV_DIMS as u32 + 2).chain([64, 68, 200, 1020]) {
                     let want = core::array::from_fn(|k| {
                         (reference_u32(&s, i, first + k as u32) >> 8) as f32 / 16_777_216.0
                     });
@@ -656,21 +755,33 @@ mod tests {
         }
     }
 
-    /// The small compile-time tables: the index reversal, the f32 conversion, and the
-    /// per-sequence constant of the indices below 2^16.
+    /// The small compile-time tables (the index reversal, the f32 conversion) and the shuffle's
+    /// block: every index below 2^16 shuffles to one below 2^16, each prefix `0..2^k` onto an
+    /// aligned block, and there the product needs only the upper-half tables or the 16 columns.
     #[test]
-    fn small_tables_and_the_low_block_constant() {
-        for i in 0..1u32 << 16 {
-            let ss = mix32(i ^ 0x1234);
-            assert_eq!(shuffle_rev_fast(i, ss), shuffle_rev(i, ss), "i {i}");
-            // Burley's shuffle keeps the block: the low reversed half is the seed's alone.
-            assert_eq!(
-                shuffle_rev(i, 0x9e37_79b9) & 0xffff,
-                shuffle_rev(0, 0x9e37_79b9) & 0xffff
-            );
-        }
-        for i in [1u32 << 16, 1 << 20, u32::MAX] {
-            assert_eq!(shuffle_rev_fast(i, 77), shuffle_rev(i, 77));
+    fn small_tables_and_the_low_block() {
+        for seed in [0x9e37_79b9u32, 77, 0, u32::MAX] {
+            let sh = IndexShuffle::new(seed);
+            for k in 0..=16u32 {
+                let base = sh.rev(0).reverse_bits() >> k;
+                let mut seen = std::vec![false; 1 << k];
+                for i in 0..1u32 << k {
+                    let r = sh.rev(i);
+                    assert_eq!(r & 0xffff, 0, "seed {seed} i {i}");
+                    let j = r.reverse_bits();
+                    assert_eq!(j >> k, base, "seed {seed} k {k} i {i}");
+                    assert!(!std::mem::replace(
+                        &mut seen[(j & ((1 << k) - 1)) as usize],
+                        true
+                    ));
+                }
+            }
+            for i in (0..1u32 << 16)
+                .step_by(7)
+                .chain([1 << 16, 1 << 20, u32::MAX])
+            {
+                assert_eq!(sh.rev_fast(i), sh.rev(i), "i {i}");
+            }
         }
         let words = (0..1u32 << 16)
             .map(|w| w << 8 | w >> 8)
@@ -682,25 +793,36 @@ mod tests {
                 rev_to_f32(lk_hash(w, 0x1357_9bdf))
             });
         }
-        for seed in [0u64, 3, 99] {
-            let s = OwenSobol::new(64, seed).unwrap();
-            let common = shuffle_rev(0, s.shuffle_seed) & 0xffff;
-            for d in 0..REV_DIMS {
-                assert_eq!(s.low[d], product_rev(d, common));
-                for i in [0u32, 1, 200, 65_535] {
-                    let r = shuffle_rev(i, s.shuffle_seed);
-                    assert_eq!(s.low[d] ^ product_rev_upper(d, r), product_rev(d, r));
+        for h in (0..1u32 << 16).step_by(13).chain([0xffff]) {
+            let r = h << 16;
+            for d in 0..1024usize {
+                let want = product(&SOBOL_MATRICES[d], r.reverse_bits()).reverse_bits();
+                assert_eq!(product_rev16(d, h), want, "d {d} h {h}");
+                assert_eq!(product_rev16x4(d / 4, h)[d % 4], want);
+                if d < REV_DIMS {
+                    assert_eq!(product_rev_upper(d, r), want);
                 }
             }
         }
-        assert_eq!(size_of::<OwenSobol>(), 536);
+        assert_eq!(size_of::<OwenSobol>(), 280);
+    }
+
+    #[test]
+    fn four_lane_seeds_are_the_dimension_seeds() {
+        for key in [0u32, 1, 0xdead_beef] {
+            for first in [0u32, 64, 1020, u32::MAX - 2] {
+                let want: [u32; 4] =
+                    core::array::from_fn(|k| dim_seed(key, first.wrapping_add(k as u32)));
+                assert_eq!(dim_seeds4(key, first), want);
+            }
+        }
     }
 
     #[test]
     fn helpers_agree_lane_by_lane() {
         let s = OwenSobol::new(1024, 4).unwrap();
         for i in [0u32, 9, 65_536, u32::MAX] {
-            let r = shuffle_rev(i, s.shuffle_seed);
+            let r = s.shuffle.rev(i);
             for dims in [[0u32, 1, 2, 3], [62, 63, 64, 65], [1020, 1021, 1022, 1023]] {
                 let seeds = dims.map(|d| s.seed_of(d));
                 let want = core::array::from_fn(|k| owen_sobol_rev_f32(r, dims[k], seeds[k]));
