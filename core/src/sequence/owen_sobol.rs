@@ -139,7 +139,7 @@ fn product_rev_upper(dim: usize, r: u32) -> u32 {
 
 /// Four consecutive entries of a dimension row from `d`, `d + 4 <= 64`.
 #[inline(always)]
-fn four(row: &[u32; REV_DIMS], d: usize) -> [u32; 4] {
+fn four<const N: usize>(row: &[u32; N], d: usize) -> [u32; 4] {
     [row[d], row[d + 1], row[d + 2], row[d + 3]]
 }
 
@@ -168,7 +168,7 @@ fn product_rev_upper4(d: usize, r: u32) -> [u32; 4] {
 }
 
 /// Number of dimensions whose scramble seeds an [`OwenSobol`] keeps precomputed.
-const CACHED_SEEDS: usize = REV_DIMS;
+const CACHED_SEEDS: usize = 256;
 
 /// The mixed scramble seed of dimension `dim` under the sequence key `key`.
 #[inline(always)]
@@ -325,8 +325,8 @@ const LOW_BLOCK: u32 = 1 << 16;
 /// exactly. Indices are 32-bit ([`Sequence::point_count`] is `Some(2³²)`; a `u64` index wraps
 /// modulo 2³²); `dim >= dims()` wraps modulo `dims()`.
 ///
-/// Allocates: no. Stateless, `&self` everywhere (280 bytes: the scramble seeds of the 64
-/// dimensions with byte tables are kept).
+/// Allocates: no. Stateless, `&self` everywhere (1048 bytes: the scramble seeds of the first 256
+/// dimensions are kept).
 ///
 /// ```
 /// use nyquist::sequence::{OwenSobol, Sequence};
@@ -400,13 +400,13 @@ impl OwenSobol {
     }
 
     /// The scrambled reversed value (before the final reversal) of dimension `dim` at the
-    /// reversed shuffled index `r` ([`IndexShuffle::rev`]), if `dim` has byte tables (`None`
+    /// reversed shuffled index `r` ([`IndexShuffle::rev`]), if `dim`'s seed is kept (`None`
     /// past them).
     #[inline(always)]
     fn table_value_rev(&self, r: u32, dim: u32) -> Option<u32> {
         let d = dim as usize;
         let &s = self.seeds.get(d)?;
-        let p = if r & 0xffff == 0 {
+        let p = if d < REV_DIMS && r & 0xffff == 0 {
             product_rev_upper(d, r)
         } else {
             product_rev(d, r)
@@ -475,7 +475,12 @@ impl OwenSobol {
             && r & 0xffff == 0
         {
             let p = product_rev16x4((first_dim / 4) as usize, r >> 16);
-            return scramble_rev_f32x4(p, dim_seeds4(self.key, first_dim));
+            let seeds = if first_dim as usize + 4 <= CACHED_SEEDS {
+                four(&self.seeds, first_dim as usize)
+            } else {
+                dim_seeds4(self.key, first_dim)
+            };
+            return scramble_rev_f32x4(p, seeds);
         }
         let dims = core::array::from_fn(|k| self.wrap(first_dim.wrapping_add(k as u32)));
         owen_sobol_rev_f32x4(r, dims, dims.map(|d| self.seed_of(d)))
@@ -804,7 +809,7 @@ mod tests {
                 }
             }
         }
-        assert_eq!(size_of::<OwenSobol>(), 280);
+        assert_eq!(size_of::<OwenSobol>(), 1048);
     }
 
     #[test]
