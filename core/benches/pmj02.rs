@@ -8,12 +8,11 @@
 //!   and the camera sample (5 values per call).
 //! - `pmj02_build`: the in-place construction of 2^16 points, per point.
 //!
-//! Medians of three runs (shared 2-core AMD EPYC VM, thread CPU time, `--warm-up-time 1
-//! --measurement-time 3`): plain by index 0.72 ns per value (hashed indices, `sample`), 0.36 ns
-//! (`sample_2d`); Owen-scrambled 9.0 ns (`sample`), 4.4 ns (`sample_2d`, whose two scrambles
-//! run side by side); sampler image sample 9.5 ns per value, camera sample 36 ns (7.1 ns per
-//! value); build 1.7 ns per point. The scrambled cost is the two bit reversals and four
-//! multiplies of the fast Owen scramble, which baseline x86-64 has no instruction for.
+//! Medians of three runs (stop 23, shared 2-core AMD EPYC VM, thread CPU time,
+//! `--warm-up-time 1 --measurement-time 3`): plain by index 0.68 ns per value (hashed indices,
+//! `sample`); Owen-scrambled 11.0 ns (`sample`, one value per call handed to `black_box`) and
+//! 5.3 ns (`sample_2d`, whose two scrambles run side by side); sampler image sample 7.9 ns per
+//! value, camera sample 23 ns; build 1.7 ns per point.
 
 mod cpu_time;
 

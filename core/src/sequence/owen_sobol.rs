@@ -26,29 +26,35 @@ use crate::Error;
 use crate::hash::{hash2, mix32};
 use crate::scramble::{lk_hash, reversed_to_f32};
 
-/// Dimensions with reversed byte tables: values there cost four table reads (two below index
-/// 2¹⁶); higher dimensions read four nibble tables below 2¹⁶ and take the 32-column masked
-/// product above.
+/// Dimensions with all four reversed byte tables: any index is four table reads.
 const REV_DIMS: usize = 64;
+/// Dimensions with the two byte tables of the 16 low index bits: indices below 2¹⁶ (the
+/// shuffle keeps them there, [`IndexShuffle`]) are two table reads; above, the 32-column masked
+/// product. Past them, nibble tables below 2¹⁶.
+const UPPER_DIMS: usize = 256;
 
-/// `SOBOL_REV_BYTES[j][b][d]`: the bit-reversed Sobol product of dimension `d` restricted to
-/// byte `j` of the **bit-reversed** index (bits `8j .. 8j + 8` of `reverse(i)`, i.e. index bits
-/// `31 − 8j − k`). Dimensions innermost, so that the dimensions of one point read the same
-/// cache lines and four consecutive dimensions are one 16-byte read. Built at compile time from
-/// the direction numbers; 256 KiB.
-static SOBOL_REV_BYTES: [[[u32; REV_DIMS]; 256]; 4] = rev_byte_tables();
+/// `SOBOL_REV_LOWER[j][b][d]` (`j` = 0, 1) and `SOBOL_REV_UPPER[j − 2][b][d]` (`j` = 2, 3): the
+/// bit-reversed Sobol product of dimension `d` restricted to byte `j` of the **bit-reversed**
+/// index (bits `8j .. 8j + 8` of `reverse(i)`, index bits `31 − 8j − k`). Dimensions innermost,
+/// so that the dimensions of one point read the same cache lines and four consecutive
+/// dimensions are one 16-byte read. Built at compile time from the direction numbers: 128 KiB
+/// for the index's upper half over 64 dimensions, 512 KiB for its lower half over 256.
+static SOBOL_REV_LOWER: [[[u32; REV_DIMS]; 256]; 2] = rev_byte_tables::<REV_DIMS>(0);
+/// See [`SOBOL_REV_LOWER`].
+static SOBOL_REV_UPPER: [[[u32; UPPER_DIMS]; 256]; 2] = rev_byte_tables::<UPPER_DIMS>(2);
 
-const fn rev_byte_tables() -> [[[u32; REV_DIMS]; 256]; 4] {
-    let mut t = [[[0u32; REV_DIMS]; 256]; 4];
+/// Byte tables `first .. first + 2` of the reversed index for dimensions `0..D`.
+const fn rev_byte_tables<const D: usize>(first: usize) -> [[[u32; D]; 256]; 2] {
+    let mut t = [[[0u32; D]; 256]; 2];
     let mut j = 0;
-    while j < 4 {
+    while j < 2 {
         let mut b = 1;
         while b < 256 {
             let k = (b as u32).trailing_zeros() as usize;
             let mut d = 0;
-            while d < REV_DIMS {
+            while d < D {
                 // Bit 8j + k of the reversed index is index bit 31 − 8j − k.
-                let column = SOBOL_MATRICES[d][31 - 8 * j - k];
+                let column = SOBOL_MATRICES[d][31 - 8 * (first + j) - k];
                 t[j][b][d] = t[j][b & (b - 1)][d] ^ column.reverse_bits();
                 d += 1;
             }
@@ -63,62 +69,66 @@ const fn rev_byte_tables() -> [[[u32; REV_DIMS]; 256]; 4] {
 #[inline(always)]
 fn product_rev(dim: usize, r: u32) -> u32 {
     if dim < REV_DIMS {
-        let [b0, b1, b2, b3] = r.to_le_bytes();
-        let t = &SOBOL_REV_BYTES;
-        t[0][b0 as usize][dim]
-            ^ t[1][b1 as usize][dim]
-            ^ t[2][b2 as usize][dim]
-            ^ t[3][b3 as usize][dim]
-    } else if r & 0xffff == 0 {
-        product_rev16(dim & 1023, r >> 16)
-    } else {
+        let [b0, b1, _, _] = r.to_le_bytes();
+        let t = &SOBOL_REV_LOWER;
+        t[0][b0 as usize][dim] ^ t[1][b1 as usize][dim] ^ product_rev_upper(dim, r)
+    } else if r & 0xffff != 0 {
         product(&SOBOL_MATRICES[dim & 1023], r.reverse_bits()).reverse_bits()
+    } else if dim < UPPER_DIMS {
+        product_rev_upper(dim, r)
+    } else {
+        product_rev16(dim & 1023, r >> 16)
     }
 }
 
-/// `SOBOL_REV_NIBBLES16[s][j][n][l]`: dimension `4s + l`'s bit-reversed product over nibble
-/// `j` of the upper half of a reversed index (bits `16 + 4j ..` of `r`, index bits `15 − 4j − b`)
-/// for the nibble value `n`: the 16 index bits that indices below 2¹⁶ use, four dimensions side
-/// by side, so a product is four reads (one 16-byte read per nibble for four dimensions).
-/// Built at compile time for all 1024 dimensions; 256 KiB.
-static SOBOL_REV_NIBBLES16: [[[[u32; 4]; 16]; 4]; 256] = rev_nibbles16();
+/// Sets of four dimensions with nibble tables: those past [`UPPER_DIMS`].
+const NIBBLE_SETS: usize = (1024 - UPPER_DIMS) / 4;
 
-const fn rev_nibbles16() -> [[[[u32; 4]; 16]; 4]; 256] {
-    let mut t = [[[[0u32; 4]; 16]; 4]; 256];
-    let mut d = 0;
-    while d < 1024 {
+/// `SOBOL_REV_NIBBLES16[s][j][n][l]`: dimension `UPPER_DIMS + 4s + l`'s bit-reversed product over
+/// nibble `j` of the upper half of a reversed index (bits `16 + 4j ..` of `r`, index bits
+/// `15 − 4j − b`) for the nibble value `n`: the 16 index bits that indices below 2¹⁶ use, four
+/// dimensions side by side, so a product is four reads (one 16-byte read per nibble for four
+/// dimensions). Built at compile time; 192 KiB.
+static SOBOL_REV_NIBBLES16: [[[[u32; 4]; 16]; 4]; NIBBLE_SETS] = rev_nibbles16();
+
+const fn rev_nibbles16() -> [[[[u32; 4]; 16]; 4]; NIBBLE_SETS] {
+    let mut t = [[[[0u32; 4]; 16]; 4]; NIBBLE_SETS];
+    let mut e = 0;
+    while e < 4 * NIBBLE_SETS {
+        let d = UPPER_DIMS + e;
         let mut j = 0;
         while j < 4 {
             let mut n = 1;
             while n < 16 {
                 let b = (n as u32).trailing_zeros() as usize;
                 let column = SOBOL_MATRICES[d][15 - 4 * j - b].reverse_bits();
-                t[d / 4][j][n][d % 4] = t[d / 4][j][n & (n - 1)][d % 4] ^ column;
+                t[e / 4][j][n][e % 4] = t[e / 4][j][n & (n - 1)][e % 4] ^ column;
                 n += 1;
             }
             j += 1;
         }
-        d += 1;
+        e += 1;
     }
     t
 }
 
-/// [`product_rev`] of dimension `dim < 1024` for a reversed index whose low 16 bits are zero,
-/// from its upper half `h < 2^16`: four nibble-table reads.
+/// [`product_rev`] of dimension `UPPER_DIMS <= dim < 1024` for a reversed index whose low 16
+/// bits are zero, from its upper half `h < 2^16`: four nibble-table reads.
 #[inline(always)]
 fn product_rev16(dim: usize, h: u32) -> u32 {
-    let t = &SOBOL_REV_NIBBLES16[(dim / 4) & 255];
-    let lane = dim % 4;
+    let e = dim.wrapping_sub(UPPER_DIMS);
+    let t = &SOBOL_REV_NIBBLES16[(e / 4) % NIBBLE_SETS];
+    let lane = e % 4;
     t[0][(h & 15) as usize][lane]
         ^ t[1][((h >> 4) & 15) as usize][lane]
         ^ t[2][((h >> 8) & 15) as usize][lane]
         ^ t[3][((h >> 12) & 15) as usize][lane]
 }
 
-/// [`product_rev16`] for the four dimensions `4·set .. 4·set + 4`.
+/// [`product_rev16`] for the four dimensions `UPPER_DIMS + 4·set ..` (four of them).
 #[inline(always)]
 fn product_rev16x4(set: usize, h: u32) -> [u32; 4] {
-    let t = &SOBOL_REV_NIBBLES16[set & 255];
+    let t = &SOBOL_REV_NIBBLES16[set % NIBBLE_SETS];
     xor4(
         xor4(t[0][(h & 15) as usize], t[1][((h >> 4) & 15) as usize]),
         xor4(
@@ -128,16 +138,16 @@ fn product_rev16x4(set: usize, h: u32) -> [u32; 4] {
     )
 }
 
-/// The part of [`product_rev`] from the upper 16 bits of `r` (the 16 low index bits: two of
-/// the four byte tables), for a dimension with tables (`dim < 64`).
+/// The part of [`product_rev`] from the upper 16 bits of `r` (the 16 low index bits: the two
+/// upper-half byte tables), for `dim < UPPER_DIMS`.
 #[inline(always)]
 fn product_rev_upper(dim: usize, r: u32) -> u32 {
     let [_, _, b2, b3] = r.to_le_bytes();
-    let t = &SOBOL_REV_BYTES;
-    t[2][b2 as usize][dim] ^ t[3][b3 as usize][dim]
+    let t = &SOBOL_REV_UPPER;
+    t[0][b2 as usize][dim] ^ t[1][b3 as usize][dim]
 }
 
-/// Four consecutive entries of a dimension row from `d`, `d + 4 <= 64`.
+/// Four consecutive entries of a dimension row from `d`, `d + 4 <= N`.
 #[inline(always)]
 fn four<const N: usize>(row: &[u32; N], d: usize) -> [u32; 4] {
     [row[d], row[d + 1], row[d + 2], row[d + 3]]
@@ -151,20 +161,20 @@ fn xor4(a: [u32; 4], b: [u32; 4]) -> [u32; 4] {
 /// [`product_rev`] for the four dimensions `d .. d + 4`, `d + 4 <= 64`.
 #[inline(always)]
 fn product_rev4(d: usize, r: u32) -> [u32; 4] {
-    let [b0, b1, b2, b3] = r.to_le_bytes();
-    let t = &SOBOL_REV_BYTES;
+    let [b0, b1, _, _] = r.to_le_bytes();
+    let t = &SOBOL_REV_LOWER;
     xor4(
         xor4(four(&t[0][b0 as usize], d), four(&t[1][b1 as usize], d)),
-        xor4(four(&t[2][b2 as usize], d), four(&t[3][b3 as usize], d)),
+        product_rev_upper4(d, r),
     )
 }
 
-/// [`product_rev_upper`] for the four dimensions `d .. d + 4`, `d + 4 <= 64`.
+/// [`product_rev_upper`] for the four dimensions `d .. d + 4`, `d + 4 <= UPPER_DIMS`.
 #[inline(always)]
 fn product_rev_upper4(d: usize, r: u32) -> [u32; 4] {
     let [_, _, b2, b3] = r.to_le_bytes();
-    let t = &SOBOL_REV_BYTES;
-    xor4(four(&t[2][b2 as usize], d), four(&t[3][b3 as usize], d))
+    let t = &SOBOL_REV_UPPER;
+    xor4(four(&t[0][b2 as usize], d), four(&t[1][b3 as usize], d))
 }
 
 /// Number of dimensions whose scramble seeds an [`OwenSobol`] keeps precomputed.
@@ -406,7 +416,7 @@ impl OwenSobol {
     fn table_value_rev(&self, r: u32, dim: u32) -> Option<u32> {
         let d = dim as usize;
         let &s = self.seeds.get(d)?;
-        let p = if d < REV_DIMS && r & 0xffff == 0 {
+        let p = if d < UPPER_DIMS && r & 0xffff == 0 {
             product_rev_upper(d, r)
         } else {
             product_rev(d, r)
@@ -459,28 +469,19 @@ impl OwenSobol {
         let r = self.shuffle.rev_fast(index);
         // The common case, four dimensions inside the tables and the sequence: no wrapping and
         // no seed hashing, four lanes at once.
-        if first_dim <= (REV_DIMS - 4) as u32 && first_dim + 4 <= self.dims {
-            let d = first_dim as usize;
-            let p = if r & 0xffff == 0 {
-                product_rev_upper4(d, r)
-            } else {
-                product_rev4(d, r)
-            };
-            return scramble_rev_f32x4(p, four(&self.seeds, d));
+        let fits = first_dim.checked_add(4).is_some_and(|e| e <= self.dims);
+        let d = first_dim as usize;
+        if fits && r & 0xffff == 0 && d + 4 <= UPPER_DIMS {
+            return scramble_rev_f32x4(product_rev_upper4(d, r), four(&self.seeds, d));
         }
-        // Past the tables, an aligned set of four below index 2^16: the 16-column products
+        if fits && d + 4 <= REV_DIMS {
+            return scramble_rev_f32x4(product_rev4(d, r), four(&self.seeds, d));
+        }
+        // Past the byte tables, an aligned set of four below index 2^16: the nibble tables
         // four-wide.
-        if first_dim.is_multiple_of(4)
-            && first_dim.checked_add(4).is_some_and(|e| e <= self.dims)
-            && r & 0xffff == 0
-        {
-            let p = product_rev16x4((first_dim / 4) as usize, r >> 16);
-            let seeds = if first_dim as usize + 4 <= CACHED_SEEDS {
-                four(&self.seeds, first_dim as usize)
-            } else {
-                dim_seeds4(self.key, first_dim)
-            };
-            return scramble_rev_f32x4(p, seeds);
+        if fits && r & 0xffff == 0 && d >= UPPER_DIMS && d.is_multiple_of(4) {
+            let p = product_rev16x4((d - UPPER_DIMS) / 4, r >> 16);
+            return scramble_rev_f32x4(p, dim_seeds4(self.key, first_dim));
         }
         let dims = core::array::from_fn(|k| self.wrap(first_dim.wrapping_add(k as u32)));
         owen_sobol_rev_f32x4(r, dims, dims.map(|d| self.seed_of(d)))
@@ -554,7 +555,7 @@ mod tests {
             .chain((0..512).map(|i| mix32(i ^ 0x77)))
             .chain([u32::MAX, 1 << 31, 1])
             .collect();
-        for dim in (0..REV_DIMS + 3).chain([200, 1023]) {
+        for dim in (0..REV_DIMS + 3).chain([200, 255, 256, 257, 700, 1023]) {
             for &i in &indices {
                 let want = sobol_u32(i, dim as u32).reverse_bits();
                 assert_eq!(product_rev(dim, i.reverse_bits()), want, "dim {dim} i {i}");
@@ -717,7 +718,7 @@ mod tests {
             for i in edge_indices() {
                 let mut run = [0.0f32; 70];
                 s.sample_dims(i, 0, &mut run);
-                for dim in (0..REV_DIMS as u32 + 2).chain([500, 1023]) {
+                for dim in (0..REV_DIMS as u32 + 2).chain([200, 255, 256, 500, 1023]) {
                     let want = reference_u32(&s, i, dim);
                     let want_f32 = (want >> 8) as f32 / 16_777_216.0;
                     assert_eq!(s.sample_u32(i, dim), want, "seed {seed} i {i} dim {dim}");
@@ -726,7 +727,9 @@ mod tests {
                         assert_eq!(x, want_f32, "run: i {i} dim {dim}");
                     }
                 }
-                for first in (0..REV_DIMS as u32 + 2).chain([64, 68, 200, 1020]) {
+                for first in
+                    (0..REV_DIMS as u32 + 2).chain([64, 68, 200, 250, 252, 253, 256, 260, 1020])
+                {
                     let want = core::array::from_fn(|k| {
                         (reference_u32(&s, i, first + k as u32) >> 8) as f32 / 16_777_216.0
                     });
@@ -802,9 +805,11 @@ mod tests {
             let r = h << 16;
             for d in 0..1024usize {
                 let want = product(&SOBOL_MATRICES[d], r.reverse_bits()).reverse_bits();
-                assert_eq!(product_rev16(d, h), want, "d {d} h {h}");
-                assert_eq!(product_rev16x4(d / 4, h)[d % 4], want);
-                if d < REV_DIMS {
+                assert_eq!(product_rev(d, r), want, "d {d} h {h}");
+                if d >= UPPER_DIMS {
+                    assert_eq!(product_rev16(d, h), want, "d {d} h {h}");
+                    assert_eq!(product_rev16x4((d - UPPER_DIMS) / 4, h)[d % 4], want);
+                } else {
                     assert_eq!(product_rev_upper(d, r), want);
                 }
             }
