@@ -148,7 +148,7 @@ fn nested_f64<const AFFINE: bool>(dim: u32, a: u64, seed: u64) -> f64 {
 }
 
 /// Φ_b(a) under the nested uniform (Owen) scramble chosen by `seed`, as an `f32` in `[0, 1)`
-/// (`b = prime(dim)`; see the [module docs](self) for the construction).
+/// (`b = prime(dim)`).
 ///
 /// Digit `j` of the result is `π(a_j)`, `π` a permutation of `0..b` drawn from a hash of
 /// `(seed, dim, j, a mod bʲ)`: for `b ≤ 16` uniformly over all `b!` permutations (a packed

@@ -35,6 +35,22 @@ const fn permutations_4() -> [u8; 24] {
     out
 }
 
+/// [`PERMUTATIONS_4`] with entry `k` in byte `k`.
+const PERMUTATION_BYTES: [u32; 24] = {
+    let mut out = [0u32; 24];
+    let mut p = 0;
+    while p < 24 {
+        let perm = PERMUTATIONS_4[p] as u32;
+        let mut k = 0;
+        while k < 4 {
+            out[p] |= ((perm >> (2 * k)) & 3) << (8 * k);
+            k += 1;
+        }
+        p += 1;
+    }
+    out
+};
+
 /// `x`'s low 16 bits spread to the even bits of a `u32`.
 #[inline]
 fn spread(x: u32) -> u32 {
@@ -321,15 +337,13 @@ impl ZSobolSampler {
             let mut n = 1usize;
             for level in 0..j {
                 let shift = 2 * (j - 1 - level) + self.odd;
-                // Backwards, so that each entry is read before its slot is overwritten.
+                // Backwards, so that each entry is read before its slot is overwritten; a node's
+                // four entries are one little-endian word (its permutation, one digit per byte).
                 for higher in (0..n).rev() {
                     let h = nested_word(w, higher as u64, shift);
-                    let perm = PERMUTATIONS_4[(((h >> 32) * 24) >> 32) as usize];
-                    let base = table[higher];
-                    for digit in 0..4 {
-                        let d = (perm >> (2 * digit)) & 3;
-                        table[4 * higher + digit] = base | (d << shift);
-                    }
+                    let spread = PERMUTATION_BYTES[(((h >> 32) * 24) >> 32) as usize];
+                    let word = u32::from(table[higher]) * 0x0101_0101 | (spread << shift);
+                    table[4 * higher..4 * higher + 4].copy_from_slice(&word.to_le_bytes());
                 }
                 n *= 4;
             }
