@@ -342,7 +342,7 @@ impl ZSobolSampler {
                 for higher in (0..n).rev() {
                     let h = nested_word(w, higher as u64, shift);
                     let spread = PERMUTATION_BYTES[(((h >> 32) * 24) >> 32) as usize];
-                    let word = u32::from(table[higher]) * 0x0101_0101 | (spread << shift);
+                    let word = (u32::from(table[higher]) * 0x0101_0101) | (spread << shift);
                     table[4 * higher..4 * higher + 4].copy_from_slice(&word.to_le_bytes());
                 }
                 n *= 4;
