@@ -37,7 +37,7 @@ struct Args {
 pub fn samplers(data: &[u8]) {
     let mut b = Bytes::new(data);
     let kind = b.u8() % 13;
-    let scramble = Scramble::ALL[b.below(4) as usize];
+    let scramble = Scramble::ALL[b.below(3) as usize];
     let frame = b.u32();
     let spp = match b.u8() % 4 {
         0 => b.below(17),
