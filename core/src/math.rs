@@ -19,6 +19,13 @@ pub const ONE_MINUS_EPSILON_F64: f64 = 1.0 - f64::EPSILON / 2.0;
 /// `2⁻³²`, the scale from a 32-bit fixed-point fraction to a float.
 pub const TWO_POW_MINUS_32: f64 = 1.0 / 4_294_967_296.0;
 
+/// A 32-bit binary fraction (`v / 2³²`) as an `f32` in `[0, 1)`: its top 24 bits, truncated
+/// (never rounded up to 1). The one conversion every base-2 generator uses.
+#[inline(always)]
+pub(crate) fn fraction_to_f32(v: u32) -> f32 {
+    (v >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
 /// `x` clamped into `[0, 1)`; NaN maps to 0.
 ///
 /// ```

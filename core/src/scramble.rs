@@ -117,7 +117,21 @@ pub const fn lk_hash(mut x_rev: u32, seed: u32) -> u32 {
 /// ```
 #[inline(always)]
 pub const fn fast_owen_scramble(x: u32, seed: u32) -> u32 {
-    lk_hash(x.reverse_bits(), mix32(seed ^ 0x6a09_e667)).reverse_bits()
+    fast_owen_keyed(x, mix32(seed ^ 0x6a09_e667))
+}
+
+/// [`fast_owen_scramble`] with an already mixed key (a hash output): the LK hash on the
+/// reversed digits, for callers that draw their keys from a hash anyway.
+#[inline(always)]
+pub(crate) const fn fast_owen_keyed(x: u32, key: u32) -> u32 {
+    lk_hash(x.reverse_bits(), key).reverse_bits()
+}
+
+/// `fraction_to_f32(fast_owen_keyed(x, key))` with one bit reversal fewer: the float is read
+/// straight from the reversed word ([`reversed_to_f32`]).
+#[inline(always)]
+pub(crate) fn fast_owen_keyed_f32(x: u32, key: u32) -> f32 {
+    reversed_to_f32(lk_hash(x.reverse_bits(), key))
 }
 
 /// The exact Owen scramble of the binary fraction `x` under `seed`: digit `k` (bit `31 − k`) is

@@ -4,16 +4,10 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::hash::{hash_slice, mix32};
-use crate::sequence::{IndexShuffle, owen_sobol_rev_f32};
+use crate::sequence::{IndexShuffle, dim_seed, owen_sobol_rev_f32};
 
 /// Dimensions whose scramble seeds are hashed once per pixel: the camera's five.
 const CACHED: usize = 5;
-
-/// The mixed scramble seed of dimension `dim` under a pixel's key.
-#[inline(always)]
-fn dim_seed(key: u32, dim: u32) -> u32 {
-    mix32(key ^ dim.wrapping_mul(0x9e37_79b9))
-}
 
 /// Owen-scrambled Sobol samples (Burley 2020), one independent scramble per pixel and frame.
 ///

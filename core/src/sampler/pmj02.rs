@@ -3,7 +3,7 @@
 use super::{Sampler, pixel_hash};
 use crate::Error;
 use crate::hash::mix64;
-use crate::sequence::pmj02::{owen_keyed, owen_keyed_f32};
+use crate::scramble::{fast_owen_keyed as owen_keyed, fast_owen_keyed_f32 as owen_keyed_f32};
 use crate::sequence::{PMJ02_MAX_POINTS, PMJ02_TABLE};
 
 /// `PMJ02_MAX_POINTS − 1`, the index mask.

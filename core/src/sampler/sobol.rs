@@ -3,6 +3,7 @@
 use super::Sampler;
 use crate::Error;
 use crate::hash::hash2;
+use crate::math::fraction_to_f32;
 use crate::scramble::{Scramble, scramble_u32};
 use crate::sequence::{sobol_run_f32, sobol_u32};
 
@@ -289,7 +290,7 @@ impl SobolSampler {
         } else {
             v ^= xor_scramble(self.seed, dim);
         }
-        (v >> 8) as f32 * (1.0 / 16_777_216.0)
+        fraction_to_f32(v)
     }
 
     /// [`SobolSampler::sample`] under an Owen scramble, out of line so that the plain and
@@ -308,7 +309,7 @@ impl SobolSampler {
         };
         // Dimensions 0 and 1: the fraction inside the pixel.
         let w = if dim < 2 { v << self.m } else { v };
-        (scramble_u32(w, seed, self.scramble) >> 8) as f32 * (1.0 / 16_777_216.0)
+        fraction_to_f32(scramble_u32(w, seed, self.scramble))
     }
 
     /// Dimensions `dim, dim + 1, …` into `out` as `sample` gives them, when they are a run of

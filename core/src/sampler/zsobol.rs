@@ -6,6 +6,7 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::hash::{hash2, mix32, mix64};
+use crate::math::fraction_to_f32 as to_f32;
 use crate::scramble::{Scramble, lk_hash, reversed_to_f32, scramble_u32};
 use crate::sequence::{SOBOL_MATRICES, sobol_u32};
 
@@ -241,10 +242,7 @@ impl ZSobolSampler {
             i -= 1;
             let shift = 2 * i + self.odd;
             let digit = (morton >> shift) & 3;
-            let higher = morton >> (shift + 2);
-            let p = digit_permutation(higher, key);
-            let perm = u64::from(PERMUTATIONS_4[p as usize]);
-            out |= ((perm >> (2 * digit)) & 3) << shift;
+            out |= permuted_digit(pixel_node(morton >> (shift + 2), key), digit, shift);
         }
         out
     }
@@ -262,10 +260,8 @@ impl ZSobolSampler {
             i -= 1;
             let shift = 2 * i + self.odd;
             let digit = (sample >> shift) & 3;
-            let h = nested_word(w, sample >> (shift + 2), shift);
-            let p = ((h >> 32) * 24) >> 32;
-            let perm = u64::from(PERMUTATIONS_4[p as usize]);
-            index |= ((perm >> (2 * digit)) & 3) << shift;
+            let node = sample_node(w, sample >> (shift + 2), shift);
+            index |= permuted_digit(PERMUTATIONS_4[node], digit, shift);
         }
         if self.odd == 1 {
             index |= (sample & 1) ^ (nested_word(w, sample >> 1, 0) >> 63);
@@ -308,11 +304,9 @@ impl ZSobolSampler {
                     // The highest changed digit keeps its permutation (the digits above it did
                     // not change); the ones below draw new ones.
                     if i != top || changed == u64::MAX {
-                        let p = digit_permutation(morton >> (shift + 2), self.keys[k]);
-                        self.perms[k][slot] = PERMUTATIONS_4[p as usize];
+                        self.perms[k][slot] = pixel_node(morton >> (shift + 2), self.keys[k]);
                     }
-                    let perm = u64::from(self.perms[k][slot]);
-                    bits |= ((perm >> (2 * digit)) & 3) << shift;
+                    bits |= permuted_digit(self.perms[k][slot], digit, shift);
                 }
                 self.prefix[k] = bits;
             }
@@ -340,8 +334,7 @@ impl ZSobolSampler {
                 // Backwards, so that each entry is read before its slot is overwritten; a node's
                 // four entries are one little-endian word (its permutation, one digit per byte).
                 for higher in (0..n).rev() {
-                    let h = nested_word(w, higher as u64, shift);
-                    let spread = PERMUTATION_BYTES[(((h >> 32) * 24) >> 32) as usize];
+                    let spread = PERMUTATION_BYTES[sample_node(w, higher as u64, shift)];
                     let word = (u32::from(table[higher]) * 0x0101_0101) | (spread << shift);
                     table[4 * higher..4 * higher + 4].copy_from_slice(&word.to_le_bytes());
                 }
@@ -469,11 +462,30 @@ fn scramble_dim0(index: u32, seed: u32, how: Scramble) -> u32 {
     }
 }
 
-/// Which of the 24 permutations the digit below `higher` takes: a 32-bit hash of the higher
-/// digits (at most 30 bits) under the request's key, scaled to `0..24`.
+/// One of the 24 permutations of four, chosen by a 32-bit hash: `⌊h · 24 / 2³²⌋`.
 #[inline(always)]
-fn digit_permutation(higher: u64, key: u64) -> u64 {
-    (u64::from(mix32(higher as u32 ^ (key >> 16) as u32)) * 24) >> 32
+fn one_of_24(h: u32) -> usize {
+    ((u64::from(h) * 24) >> 32) as usize
+}
+
+/// The permutation (a [`PERMUTATIONS_4`] entry) of the pixel digit below `higher`: a 32-bit
+/// hash of the higher digits (at most 30 bits) under the request's key.
+#[inline(always)]
+fn pixel_node(higher: u64, key: u64) -> u8 {
+    PERMUTATIONS_4[one_of_24(mix32(higher as u32 ^ (key >> 16) as u32))]
+}
+
+/// Which permutation (a [`PERMUTATIONS_4`] index) the sample digit at bit `shift` takes, given
+/// the sample digits above it: [`nested_word`] of the pixel word.
+#[inline(always)]
+fn sample_node(w: u64, higher: u64, shift: u32) -> usize {
+    one_of_24((nested_word(w, higher, shift) >> 32) as u32)
+}
+
+/// Base-4 digit `digit` through the packed permutation `perm`, placed at bit `shift`.
+#[inline(always)]
+fn permuted_digit(perm: u8, digit: u64, shift: u32) -> u64 {
+    ((u64::from(perm) >> (2 * digit)) & 3) << shift
 }
 
 /// The random word of a pixel (its Morton code) for the requests keyed `key`: the source of
@@ -497,11 +509,6 @@ fn nested_word(w: u64, higher: u64, shift: u32) -> u64 {
 #[inline(always)]
 fn dim_key(seed: u64, dim: u32) -> u64 {
     hash2(seed, u64::from(dim) ^ 0x5a53_4f42_4f4c) // "ZSOBOL"
-}
-
-#[inline(always)]
-fn to_f32(v: u32) -> f32 {
-    (v >> 8) as f32 * (1.0 / 16_777_216.0)
 }
 
 impl Sampler for ZSobolSampler {

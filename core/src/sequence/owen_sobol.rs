@@ -182,7 +182,7 @@ const CACHED_SEEDS: usize = 256;
 
 /// The mixed scramble seed of dimension `dim` under the sequence key `key`.
 #[inline(always)]
-fn dim_seed(key: u32, dim: u32) -> u32 {
+pub(crate) fn dim_seed(key: u32, dim: u32) -> u32 {
     mix32(key ^ dim.wrapping_mul(0x9e37_79b9))
 }
 

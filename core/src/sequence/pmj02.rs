@@ -18,7 +18,8 @@
 use super::Sequence;
 use crate::Error;
 use crate::hash::{hash2, wyrand};
-use crate::scramble::{lk_hash, reversed_to_f32};
+use crate::math::fraction_to_f32 as to_f32;
+use crate::scramble::{fast_owen_keyed as owen_keyed, fast_owen_keyed_f32 as owen_keyed_f32};
 
 /// The most points the construction makes: the published XOR constants cover 16 levels.
 ///
@@ -136,30 +137,6 @@ const fn bake() -> [[u32; 2]; PMJ02_MAX_POINTS] {
 /// assert_ne!(PMJ02_TABLE[0][1] >> 31, PMJ02_TABLE[1][1] >> 31);
 /// ```
 pub static PMJ02_TABLE: [[u32; 2]; PMJ02_MAX_POINTS] = bake();
-
-/// The fast Owen scramble of `x` with an already mixed key: the Laine–Karras hash on the
-/// reversed digits ([`lk_hash`]), as [`crate::scramble::fast_owen_scramble`] does after mixing
-/// its seed. Maps every aligned block of `2^k` values onto one.
-#[inline(always)]
-pub(crate) fn owen_keyed(x: u32, key: u32) -> u32 {
-    lk_hash(x.reverse_bits(), key).reverse_bits()
-}
-
-/// `to_f32(owen_keyed(x, key))` with one bit reversal fewer (the float is read straight from the
-/// reversed word).
-#[inline(always)]
-pub(crate) fn owen_keyed_f32(x: u32, key: u32) -> f32 {
-    reversed_to_f32(lk_hash(x.reverse_bits(), key))
-}
-
-/// `2⁻²⁴`.
-const TWO_POW_MINUS_24: f32 = 1.0 / 16_777_216.0;
-
-/// The top 24 bits of a binary fraction as an `f32` in `[0, 1)` (exact, never 1).
-#[inline(always)]
-pub(crate) fn to_f32(v: u32) -> f32 {
-    (v >> 8) as f32 * TWO_POW_MINUS_24
-}
 
 /// The baked pmj02 sequence ([`PMJ02_TABLE`]) by index, plain or Owen-scrambled.
 ///

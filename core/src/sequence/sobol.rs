@@ -18,6 +18,7 @@
 //! (≈ 7 ns). Both cost the same for every index.
 
 use super::{Sequence, check_fill, sobol_table::SOBOL_MATRICES};
+use crate::math::fraction_to_f32 as to_f32;
 use crate::{Error, hash};
 
 /// Number of Sobol dimensions the table holds (Joe–Kuo's first 1024, dimension 0 being van der
@@ -27,9 +28,6 @@ use crate::{Error, hash};
 /// assert_eq!(nyquist::sequence::SOBOL_DIMS, 1024);
 /// ```
 pub const SOBOL_DIMS: u32 = 1024;
-
-/// `2⁻²⁴`, the weight of the lowest bit kept in an `f32` sample.
-const TWO_POW_MINUS_24: f32 = 1.0 / 16_777_216.0;
 
 /// Dimensions `0..FAST_DIMS` also have byte tables: four lookups per value instead of 32
 /// masked XORs (about 3× faster, see `core/benches/sobol.rs`), at 4 KiB per dimension.
@@ -135,13 +133,6 @@ fn product_dim(dim: usize, index: u32) -> u32 {
 #[inline]
 pub fn sobol_u32(index: u32, dim: u32) -> u32 {
     product_dim((dim % SOBOL_DIMS) as usize, index)
-}
-
-/// A 32-bit binary fraction as an `f32` in `[0, 1)`: its top 24 bits, truncated (never rounded
-/// up to 1).
-#[inline(always)]
-fn to_f32(v: u32) -> f32 {
-    (v >> 8) as f32 * TWO_POW_MINUS_24
 }
 
 /// A 32-bit binary fraction as an `f64`, exactly.

@@ -10,9 +10,7 @@
 
 use super::{Sequence, sobol_u32};
 use crate::hash;
-
-/// `2⁻²⁴`.
-const TWO_POW_MINUS_24: f32 = 1.0 / 16_777_216.0;
+use crate::math::fraction_to_f32 as to_f32;
 
 /// The scrambled (0,2)-sequence: point `i` is `(Φ₂(i) ⊕ s₀, Sobol₁(i) ⊕ s₁)` in 32-bit binary
 /// fractions.
@@ -134,11 +132,6 @@ const fn first_points() -> [[u32; 2]; 256] {
         i += 1;
     }
     out
-}
-
-#[inline(always)]
-fn to_f32(v: u32) -> f32 {
-    (v >> 8) as f32 * TWO_POW_MINUS_24
 }
 
 impl Sequence for ZeroTwo {
