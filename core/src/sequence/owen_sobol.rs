@@ -216,10 +216,25 @@ fn rev_to_f32(w_rev: u32) -> f32 {
     (w_rev.reverse_bits() >> 8) as f32 * (1.0 / 16_777_216.0)
 }
 
-/// [`lk_hash`] then [`rev_to_f32`] on four lanes, written lane-parallel so that it compiles to
-/// vector code.
+/// [`lk_hash`] then [`rev_to_f32`] on four lanes: the SSE2 kernel on x86-64, else
+/// [`scramble_rev_f32x4_lanes`].
 #[inline(always)]
 fn scramble_rev_f32x4(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        crate::simd::scramble_rev_f32x4_sse2(x, seeds)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        scramble_rev_f32x4_lanes(x, seeds)
+    }
+}
+
+/// [`lk_hash`] then [`rev_to_f32`] on four lanes, written lane-parallel so that it compiles to
+/// vector code where the target has it (past x86-64, and the SSE2 kernel's oracle in tests).
+#[cfg_attr(all(target_arch = "x86_64", not(test)), allow(dead_code))]
+#[inline(always)]
+pub(crate) fn scramble_rev_f32x4_lanes(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
     let mut x = x;
     for k in 0..4 {
         x[k] ^= x[k].wrapping_mul(0x3d20_adea);
@@ -300,6 +315,14 @@ impl IndexShuffle {
         lk_hash(index.reverse_bits(), self.seed) ^ self.fix
     }
 
+    /// [`IndexShuffle::rev`] of `index < 2^16` in its upper half only (the low half, `fix`
+    /// there, is left unfixed): what the upper-half tables read.
+    #[inline(always)]
+    fn rev_low_upper(&self, index: u32) -> u32 {
+        let [b0, b1, _, _] = index.to_le_bytes();
+        lk_hash(REV16[0][b0 as usize] | REV16[1][b1 as usize], self.seed)
+    }
+
     /// [`IndexShuffle::rev`], reversing indices below 2¹⁶ by two table reads.
     #[inline(always)]
     fn rev_fast(&self, index: u32) -> u32 {
@@ -335,7 +358,7 @@ const LOW_BLOCK: u32 = 1 << 16;
 /// exactly. Indices are 32-bit ([`Sequence::point_count`] is `Some(2³²)`; a `u64` index wraps
 /// modulo 2³²); `dim >= dims()` wraps modulo `dims()`.
 ///
-/// Allocates: no. Stateless, `&self` everywhere (1048 bytes: the scramble seeds of the first 256
+/// Allocates: no. Stateless, `&self` everywhere (1056 bytes: the scramble seeds of the first 256
 /// dimensions are kept).
 ///
 /// ```
@@ -355,6 +378,9 @@ pub struct OwenSobol {
     seed: u64,
     shuffle: IndexShuffle,
     key: u32,
+    /// `min(dims, UPPER_DIMS) − 3` (0 if negative): [`OwenSobol::sample_4d`]'s fast case is
+    /// `first_dim < low4_end`.
+    low4_end: u32,
     seeds: [u32; CACHED_SEEDS],
 }
 
@@ -379,6 +405,7 @@ impl OwenSobol {
             seed,
             shuffle: IndexShuffle::new(mix32((h >> 32) as u32)),
             key,
+            low4_end: dims.min(UPPER_DIMS as u32).saturating_sub(3),
             seeds: core::array::from_fn(|d| dim_seed(key, d as u32)),
         })
     }
@@ -466,14 +493,24 @@ impl OwenSobol {
     /// ```
     #[inline]
     pub fn sample_4d(&self, index: u32, first_dim: u32) -> [f32; 4] {
-        let r = self.shuffle.rev_fast(index);
-        // The common case, four dimensions inside the tables and the sequence: no wrapping and
-        // no seed hashing, four lanes at once.
-        let fits = first_dim.checked_add(4).is_some_and(|e| e <= self.dims);
-        let d = first_dim as usize;
-        if fits && r & 0xffff == 0 && d + 4 <= UPPER_DIMS {
+        // The common case in one test: an index below 2^16, whose reversed shuffled index has
+        // a low half of `fix` that no table reads, and four dimensions inside the sequence and
+        // the low-half byte tables, with their seeds kept: two 16-byte table reads and the
+        // scramble, four lanes at once. (`min` only proves the bounds; the test already did.)
+        if index < LOW_BLOCK && first_dim < self.low4_end {
+            let r = self.shuffle.rev_low_upper(index);
+            let d = (first_dim as usize).min(UPPER_DIMS - 4);
             return scramble_rev_f32x4(product_rev_upper4(d, r), four(&self.seeds, d));
         }
+        self.sample_4d_rest(index, first_dim)
+    }
+
+    /// [`OwenSobol::sample_4d`] past its common case.
+    #[inline(never)]
+    fn sample_4d_rest(&self, index: u32, first_dim: u32) -> [f32; 4] {
+        let r = self.shuffle.rev_fast(index);
+        let fits = first_dim.checked_add(4).is_some_and(|e| e <= self.dims);
+        let d = first_dim as usize;
         if fits && d + 4 <= REV_DIMS {
             return scramble_rev_f32x4(product_rev4(d, r), four(&self.seeds, d));
         }
@@ -744,10 +781,18 @@ mod tests {
     /// like single values otherwise.
     #[test]
     fn wide_form_at_every_dims_count_and_wrap_edge() {
-        for dims in (1..=8).chain(56..=70).chain([100, 1024]) {
+        for dims in (1..=8)
+            .chain(56..=70)
+            .chain([100, 255, 256, 257, 259, 260, 1024])
+        {
             let s = OwenSobol::new(dims, u64::from(dims) * 31).unwrap();
             for i in [0u32, 1, 255, 256, 65_535, 65_536, 70_000, u32::MAX] {
-                for first in (0..dims.min(72) + 5).chain([dims + 60, u32::MAX - 1, u32::MAX]) {
+                let edge = 248..264; // the last sets of the low-half byte tables
+                for first in
+                    (0..dims.min(72) + 5)
+                        .chain(edge)
+                        .chain([dims + 60, u32::MAX - 1, u32::MAX])
+                {
                     let want = [0u32, 1, 2, 3].map(|k| {
                         let d = first.wrapping_add(k);
                         (reference_u32(&s, i, d) >> 8) as f32 / 16_777_216.0
@@ -814,7 +859,7 @@ mod tests {
                 }
             }
         }
-        assert_eq!(size_of::<OwenSobol>(), 1048);
+        assert_eq!(size_of::<OwenSobol>(), 1056);
     }
 
     #[test]
@@ -849,6 +894,26 @@ mod tests {
             proptest::prop_assert!((0.0..1.0).contains(&x));
             let y = s.sample_f64(index, dim);
             proptest::prop_assert!((0.0..1.0).contains(&y));
+        }
+    }
+
+    /// On x86-64 the SSE2 kernel equals the portable lane code bit for bit: words and seeds
+    /// over edge values and hashed ones, every lane different.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn sse2_kernel_equals_the_portable_lanes() {
+        use crate::simd::scramble_rev_f32x4_sse2;
+        let edges = [0, 1, 0x8000_0000, u32::MAX, 0xffff_0000, 0x0000_ffff];
+        let words = edges
+            .into_iter()
+            .chain((0..20_000).map(|i| mix32(i ^ 0xa5a5)));
+        for (n, w) in words.enumerate() {
+            let x = [w, w.rotate_left(7), !w, mix32(w)];
+            let s = mix32(n as u32);
+            let seeds = [s, s ^ 0xffff_0000, edges[n % 6], mix32(s)];
+            let got = scramble_rev_f32x4_sse2(x, seeds).map(f32::to_bits);
+            let want = scramble_rev_f32x4_lanes(x, seeds).map(f32::to_bits);
+            assert_eq!(got, want, "x {x:x?} seeds {seeds:x?}");
         }
     }
 }
