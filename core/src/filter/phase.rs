@@ -29,7 +29,7 @@
 //! [`SeparableTable`]: super::SeparableTable
 //! [`FilterTable`]: super::FilterTable
 
-use super::table::{MAGIC, MAGIC_BITS, finite_or_zero, mask, table_radius};
+use super::table::{MAGIC, MAGIC_BITS, constant_weight, finite_or_zero, mask, table_radius};
 use super::{Axis, Filter};
 use crate::Error;
 
@@ -202,6 +202,10 @@ impl PhaseAxis {
 pub struct PhaseTable {
     axes: [PhaseAxis; 2],
     integral: f32,
+    /// Both axes' constants when both are constant (a box), beside both radii: what
+    /// [`weight`](PhaseTable::weight) reads for such a table, one test and no table memory.
+    constant: Option<[f32; 2]>,
+    radius: [f32; 2],
 }
 
 impl PhaseTable {
@@ -225,9 +229,16 @@ impl PhaseTable {
             });
         }
         let axis = |a: Axis, r: f32| PhaseAxis::new(r, |d| filter.eval_1d(a, d).unwrap_or(0.0));
+        let axes = [axis(Axis::X, rx)?, axis(Axis::Y, ry)?];
+        let constant = match (axes[0].constant, axes[1].constant) {
+            (Some(x), Some(y)) => Some([x, y]),
+            _ => None,
+        };
         Ok(PhaseTable {
-            axes: [axis(Axis::X, rx)?, axis(Axis::Y, ry)?],
+            axes,
             integral: filter.integral(),
+            constant,
+            radius: [rx, ry],
         })
     }
 
@@ -293,10 +304,7 @@ impl PhaseTable {
     /// assert_eq!(PhaseTable::new(&Triangle::default()).unwrap().constant(), None);
     /// ```
     pub fn constant(&self) -> Option<f32> {
-        match (self.axes[0].constant, self.axes[1].constant) {
-            (Some(x), Some(y)) => Some(x * y),
-            _ => None,
-        }
+        self.constant.map(|[x, y]| x * y)
     }
 
     /// Taps per footprint along `axis`, `⌊2r⌋ + 1`.
@@ -335,6 +343,11 @@ impl PhaseTable {
     /// ```
     #[inline(always)]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
+        if let Some(c) = self.constant {
+            // What the two constant axes answer, from the header: a box's one-weight
+            // footprint touches no table memory.
+            return constant_weight(c, self.radius, dx.abs(), dy.abs());
+        }
         self.weight_1d(Axis::X, dx) * self.weight_1d(Axis::Y, dy)
     }
 
@@ -356,7 +369,8 @@ impl PhaseTable {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        if super::table::one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
+        if let Some(w) = super::table::one_weight(nx, &mut *out) {
+            *w = self.weight(d0[0], d0[1]);
             return Ok(());
         }
         self.footprint_many(d0, nx, out)
@@ -412,7 +426,7 @@ impl PhaseTable {
     /// assert_eq!(PhaseTable::new(&Gaussian::default()).unwrap().radius(), [2.0, 2.0]);
     /// ```
     pub fn radius(&self) -> [f32; 2] {
-        [self.axes[0].radius, self.axes[1].radius]
+        self.radius
     }
 
     /// The filter's integral (from [`Filter::integral`] at build time).

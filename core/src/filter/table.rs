@@ -137,6 +137,21 @@ pub(super) fn mask(inside: bool) -> f32 {
     if inside { 1.0 } else { 0.0 }
 }
 
+/// The constants of two table axes whose entries are each all equal (a box filter), else
+/// `None`.
+fn constant_axes(x: &[f32], y: &[f32]) -> Option<[f32; 2]> {
+    let constant = |v: &[f32]| v.iter().all(|&e| e == v[0]).then_some(v[0]);
+    Some([constant(x)?, constant(y)?])
+}
+
+/// The weight of a table with constant axes `c` at the folded offsets `a = |d|`: what the
+/// lookups give there, `(c_x·[a_x ≤ r_x])·(c_y·[a_y ≤ r_y])`, exactly `c_x·c_y` inside (a linear
+/// lookup `(1 − t)·c + t·c` can round off `c` for `c ≠ 1`), with no table read.
+#[inline(always)]
+pub(super) fn constant_weight(c: [f32; 2], radius: [f32; 2], ax: f32, ay: f32) -> f32 {
+    (c[0] * mask(ax <= radius[0])) * (c[1] * mask(ay <= radius[1]))
+}
+
 /// `1.5·2²³`: `c + MAGIC` holds `round(c)` (ties to even) in its low mantissa bits for
 /// `−2²² ≤ c < 2²²`, so rounding is two adds and no saturating float-to-int conversion.
 pub(super) const MAGIC: f32 = 12_582_912.0;
@@ -378,8 +393,15 @@ fn outer_product(
 /// `fy` entry while `out` lasts: the rows straight from registers, fully unrolled at width 4.
 /// Shared by the 4 × 4 paths of the table and phase-table footprints.
 #[inline(always)]
-pub(super) fn narrow_outer_product(fx: &[f32; 4], fy: &[f32], nx: usize, out: &mut [f32]) {
+pub(super) fn narrow_outer_product(fx: &[f32; 4], fy: &[f32; 4], nx: usize, out: &mut [f32]) {
     if nx == 4 {
+        if let Ok(all) = <&mut [[f32; 4]; 4]>::try_from(out.as_chunks_mut::<4>().0) {
+            // Exactly 4 × 4 (a radius-2 footprint): four rows, each one vector product.
+            for (row, &w) in all.iter_mut().zip(fy) {
+                *row = fx.map(|x| x * w);
+            }
+            return;
+        }
         for (row, &w) in out.chunks_exact_mut(4).zip(fy) {
             for l in 0..4 {
                 row[l] = fx[l] * w;
@@ -400,20 +422,15 @@ const SMALL_FOOTPRINT: usize = 4;
 
 /// The one-weight footprint (`nx == 1`, one entry: a box of radius ½, nearly always), which
 /// every table's `footprint` answers with a single `weight(d0)` inlined into the caller, ahead of
-/// its general path and that path's set-up: `true` when `out` was that footprint and is filled.
-/// Every other valid footprint has more than one weight (`check_footprint`).
+/// its general path and that path's set-up: the entry to fill, if `out` is that footprint.
+/// Every other valid footprint has more than one weight (`check_footprint`). (A slot, not a
+/// closure to call: LLVM left such a closure out of line, a call per footprint.)
 #[inline(always)]
-pub(super) fn one_weight(
-    d0: [f32; 2],
-    nx: usize,
-    out: &mut [f32],
-    weight: impl FnOnce(f32, f32) -> f32,
-) -> bool {
-    if let ([w], 1) = (out, nx) {
-        *w = weight(d0[0], d0[1]);
-        return true;
+pub(super) fn one_weight(nx: usize, out: &mut [f32]) -> Option<&mut f32> {
+    match (out, nx) {
+        ([w], 1) => Some(w),
+        _ => None,
     }
-    false
 }
 
 /// `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`, one lookup per weight (2D tables and tiny
@@ -512,6 +529,9 @@ pub struct SeparableTable<const N: usize = 16> {
     scale: [f32; 2],
     integral: f32,
     interp: Interpolation,
+    /// Each axis's value when every entry of both axes equals its axis's first (a box):
+    /// [`weight`](SeparableTable::weight) then answers it inside the radius with no lookup.
+    constant: Option<[f32; 2]>,
 }
 
 impl<const N: usize> SeparableTable<N> {
@@ -558,6 +578,7 @@ impl<const N: usize> SeparableTable<N> {
             scale,
             integral: filter.integral(),
             interp,
+            constant: constant_axes(&values[0], &values[1]),
         })
     }
 
@@ -573,6 +594,9 @@ impl<const N: usize> SeparableTable<N> {
     #[inline(always)]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
+        if let Some(c) = self.constant {
+            return constant_weight(c, self.radius, ax, ay);
+        }
         // Look up unconditionally (coordinates are clamped), then mask: no branch to mispredict.
         let g = const { Grid::new(N) };
         let cx = g.coord(ax, self.scale[0]);
@@ -642,7 +666,8 @@ impl<const N: usize> SeparableTable<N> {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        if one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
+        if let Some(w) = one_weight(nx, &mut *out) {
+            *w = self.weight(d0[0], d0[1]);
             return Ok(());
         }
         self.footprint_many(d0, nx, out)
@@ -747,6 +772,7 @@ impl<const N: usize> SeparableTable<N> {
             interp: self.interp,
             grid: Grid::new(N),
             data: ViewData::Separable(&self.values[0], &self.values[1]),
+            constant: self.constant,
         }
     }
 }
@@ -862,7 +888,8 @@ impl<const N: usize> Table2d<N> {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        if one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
+        if let Some(w) = one_weight(nx, &mut *out) {
+            *w = self.weight(d0[0], d0[1]);
             return Ok(());
         }
         self.footprint_many(d0, nx, out)
@@ -925,6 +952,7 @@ impl<const N: usize> Table2d<N> {
             interp: self.interp,
             grid: Grid::new(N),
             data: ViewData::Full(self.values.as_flattened()),
+            constant: None,
         }
     }
 }
@@ -1109,6 +1137,8 @@ pub struct TableView<'a> {
     interp: Interpolation,
     grid: Grid,
     data: ViewData<'a>,
+    /// The separable table's constant axes, if any (see [`SeparableTable`]).
+    constant: Option<[f32; 2]>,
 }
 
 impl TableView<'_> {
@@ -1122,6 +1152,9 @@ impl TableView<'_> {
     #[inline(always)]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
+        if let Some(c) = self.constant {
+            return constant_weight(c, self.radius, ax, ay);
+        }
         let (mx, my) = (mask(ax <= self.radius[0]), mask(ay <= self.radius[1]));
         let g = self.grid;
         let cx = g.coord(ax, self.scale[0]);
@@ -1238,7 +1271,8 @@ impl TableView<'_> {
     /// ```
     #[inline(always)]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        if one_weight(d0, nx, out, |x, y| self.weight(x, y)) {
+        if let Some(w) = one_weight(nx, &mut *out) {
+            *w = self.weight(d0[0], d0[1]);
             return Ok(());
         }
         self.footprint_many(d0, nx, out)

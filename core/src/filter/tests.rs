@@ -1412,3 +1412,67 @@ proptest! {
         prop_assert_eq!(row, want);
     }
 }
+
+/// A plugin box of height 0.3 per axis and radii (0.7, 1.5): every table recognises the
+/// constant axes and answers `0.3 · 0.3` inside the radius exactly (a linear lookup
+/// `(1 − t)·0.3 + t·0.3` need not), 0 past it and for NaN; one-weight and many-weight
+/// footprints agree with `weight`.
+#[test]
+fn constant_plugin_filters_answer_their_constant() {
+    struct Flat;
+    impl Filter for Flat {
+        fn radius(&self) -> [f32; 2] {
+            [0.7, 1.5]
+        }
+        fn eval(&self, x: f32, y: f32) -> f32 {
+            self.eval_1d(Axis::X, x).unwrap() * self.eval_1d(Axis::Y, y).unwrap()
+        }
+        fn eval_1d(&self, axis: Axis, x: f32) -> Option<f32> {
+            Some(if x.abs() <= self.radius()[axis.index()] {
+                0.3
+            } else {
+                0.0
+            })
+        }
+    }
+    let want = 0.3f32 * 0.3;
+    let linear: FilterTable = FilterTable::new(&Flat, Interpolation::Linear).unwrap();
+    let nearest: FilterTable = FilterTable::new(&Flat, Interpolation::Nearest).unwrap();
+    let phase = PhaseTable::new(&Flat).unwrap();
+    assert_eq!(phase.constant(), Some(want));
+    type Lookup<'a> = &'a dyn Fn(f32, f32) -> f32;
+    let lookups: [(&str, Lookup); 4] = [
+        ("linear", &|x, y| linear.weight(x, y)),
+        ("nearest", &|x, y| nearest.weight(x, y)),
+        ("view", &|x, y| linear.view().weight(x, y)),
+        ("phase", &|x, y| phase.weight(x, y)),
+    ];
+    for (name, weight) in lookups {
+        for k in 0..=4000 {
+            let x = -0.7 + 1.4 * k as f32 / 4000.0;
+            let y = 1.5 - 3.0 * k as f32 / 4000.0;
+            assert_eq!(weight(x, y), want, "{name} at ({x}, {y})");
+        }
+        for (x, y) in [
+            (0.71, 0.0),
+            (0.0, -1.51),
+            (f32::NAN, 0.0),
+            (0.0, f32::INFINITY),
+        ] {
+            assert_eq!(weight(x, y), 0.0, "{name} at ({x}, {y})");
+        }
+    }
+    let mut one = [0.0f32; 1];
+    let mut many = [0.0f32; 6];
+    for d0 in [[-0.3f32, -1.2], [0.25, 0.6], [-0.69, -1.49]] {
+        linear.footprint(d0, 1, &mut one).unwrap();
+        assert_eq!(one[0], want);
+        phase.footprint(d0, 1, &mut one).unwrap();
+        assert_eq!(one[0], want);
+        phase.footprint(d0, 2, &mut many).unwrap();
+        for (i, &w) in many.iter().enumerate() {
+            let (dx, dy) = (d0[0] + (i % 2) as f32, d0[1] + (i / 2) as f32);
+            assert_eq!(w, phase.weight(dx, dy), "phase footprint {d0:?} entry {i}");
+        }
+    }
+}
