@@ -70,7 +70,7 @@ pub enum StarMethod {
 }
 
 /// Arguments of `nyquist analyze`.
-#[derive(Debug, Args)]
+#[derive(Clone, Debug, Args)]
 #[command(after_help = "Examples:
   nyquist analyze --sampler sobol --count 1024
   nyquist points --sampler halton --count 256 | nyquist analyze --json
@@ -80,6 +80,9 @@ pub struct AnalyzeArgs {
     /// `-` or nothing reads stdin. Values must lie in [0, 1); decimals are read as f64.
     #[arg(value_name = "FILE.csv")]
     pub input: Option<PathBuf>,
+    /// The same CSV input as a flag (DESIGN.md's form): `--input FILE` or `--input -`.
+    #[arg(long = "input", value_name = "FILE|-", conflicts_with = "input")]
+    pub input_flag: Option<PathBuf>,
     /// Generate the points instead: which point set or sampler (names as in `points`).
     #[arg(long, visible_alias = "sequence", value_enum, value_name = "NAME")]
     pub sampler: Option<SamplerName>,
@@ -106,7 +109,13 @@ pub struct AnalyzeArgs {
     pub resolution: Option<(u32, u32)>,
     /// Comma-separated measures [default: star; l2-star up to 65536 points; min-distance for 2D
     /// sets].
-    #[arg(long, value_enum, value_delimiter = ',', value_name = "LIST")]
+    #[arg(
+        long,
+        visible_alias = "measure",
+        value_enum,
+        value_delimiter = ',',
+        value_name = "LIST"
+    )]
     pub measures: Vec<Measure>,
     /// How to compute the star discrepancy.
     #[arg(long, value_enum, default_value = "auto")]
@@ -149,6 +158,19 @@ struct Row {
 /// Runs `nyquist analyze`.
 pub fn run(args: &AnalyzeArgs) -> Result<()> {
     let start = Instant::now();
+    // `--input FILE` is the positional FILE under another spelling (clap keeps them exclusive).
+    let merged;
+    let args = match &args.input_flag {
+        Some(path) => {
+            merged = AnalyzeArgs {
+                input: Some(path.clone()),
+                input_flag: None,
+                ..args.clone()
+            };
+            &merged
+        }
+        None => args,
+    };
     check_args(args)?;
     let (coords, dims, source) = load(args, args.seed.unwrap_or(0))?;
     let set = PointSet::new(&coords, dims).map_err(|e| anyhow!("points: {e}"))?;

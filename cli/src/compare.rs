@@ -75,7 +75,7 @@ pub struct CompareArgs {
         long,
         value_enum,
         value_delimiter = ',',
-        default_value = "uniform,random,stratified,halton,best-candidate,sobol,zero-two"
+        default_value = "uniform,random,stratified,halton,best-candidate,sobol,zero-two,owen-sobol,zsobol,pmj02"
     )]
     pub samplers: Vec<SamplerName>,
     /// Filter specs, comma-separated (e.g. box,mitchell:b=0.5,c=0.25,gaussian:alpha=2).

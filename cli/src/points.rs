@@ -45,6 +45,7 @@ pub enum SamplerName {
     Adaptive,
     /// Owen-scrambled Sobol (Burley's hash construction; --seed picks the scramble); with
     /// --spp, one independent scramble per pixel.
+    #[value(alias = "sobol-owen")]
     OwenSobol,
     /// ZSobol: Sobol along a hash-permuted Morton curve over the image (pixel sampler: --spp,
     /// --resolution).

@@ -44,6 +44,7 @@ pub enum SamplerName {
     /// Adaptive: zero-two, spp/4 samples, all spp where the first ones disagree.
     Adaptive,
     /// Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed.
+    #[value(alias = "sobol-owen")]
     OwenSobol,
     /// Sobol along a hash-permuted Morton curve: blue-noise error across pixels (spp rounded
     /// up to a power of two).

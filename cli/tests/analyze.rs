@@ -275,6 +275,9 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
     let dir = temp_dir("analyze-errors");
     let png = dir.join("bad.png");
     let png = png.to_str().unwrap();
+    // In the temporary folder, so that the check for files left behind can see one.
+    let gif = dir.join("x.gif");
+    let gif = gif.to_str().unwrap();
     let cases: [(&[u8], &[&str], &str); 9] = [
         (b"0.5,0.5\n0.25,oops\n", &[], "not a number"),
         (b"0.5,0.5\n0.25\n", &[], "1 values, expected 2"),
@@ -327,7 +330,7 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
             "--count 0",
         ),
         (
-            &["analyze", "--sampler", "halton", "--spectrum", "x.gif"][..],
+            &["analyze", "--sampler", "halton", "--spectrum", gif][..],
             "unknown image extension",
         ),
         (&["analyze", "/nonexistent/p.csv"][..], "cannot read"),

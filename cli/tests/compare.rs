@@ -120,6 +120,8 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
     let out = dir.join("c.png");
     let o = out.to_str().unwrap();
     let missing = dir.join("none/c.png");
+    // In the temporary folder, so that the check for files left behind can see one.
+    let jpg = dir.join("c.jpg");
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["--samplers", "uniform,nope"], "--samplers"),
         (
@@ -133,8 +135,8 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
         (vec!["--size", "3"], "--size"),
         (vec!["--scene", "nope"], "--scene"),
         (vec!["--threads", "0"], "--threads"),
-        (vec!["--size", "4096x4096"], "--size 4096x4096 × 42 renders"),
-        (vec!["-o", "c.jpg"], "--output"),
+        (vec!["--size", "4096x4096"], "--size 4096x4096 × 60 renders"),
+        (vec!["-o", jpg.to_str().unwrap()], "--output"),
         (vec!["-o", missing.to_str().unwrap()], "--output"),
     ];
     for (args, mentions) in cases {

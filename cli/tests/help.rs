@@ -6,7 +6,9 @@ use common::{nyquist, stdout};
 
 #[test]
 fn every_subcommand_help_has_an_example() {
-    for sub in ["points", "filter", "render", "compare", "converge"] {
+    for sub in [
+        "points", "filter", "render", "compare", "analyze", "converge",
+    ] {
         let o = nyquist(&[sub, "--help"]);
         assert!(o.status.success(), "{sub}");
         let s = stdout(&o);
@@ -14,7 +16,9 @@ fn every_subcommand_help_has_an_example() {
     }
     let o = nyquist(&["--help"]);
     assert!(o.status.success());
-    for sub in ["points", "filter", "render", "compare", "converge"] {
+    for sub in [
+        "points", "filter", "render", "compare", "analyze", "converge",
+    ] {
         assert!(stdout(&o).contains(sub));
     }
 }
@@ -23,4 +27,68 @@ fn every_subcommand_help_has_an_example() {
 fn unknown_subcommand_is_one_line_exit_2() {
     let o = nyquist(&["paint"]);
     common::assert_one_line_error(&o, "paint");
+}
+
+/// An unknown name is one line that lists what is allowed, for every enumerated flag.
+#[test]
+fn unknown_names_list_the_allowed_values() {
+    let cases: [(&[&str], &[&str]); 5] = [
+        (
+            &["render", "--sampler", "nope"],
+            &["--sampler", "owen-sobol", "zsobol", "pmj02", "halton"],
+        ),
+        (
+            &["render", "--scene", "nope"],
+            &["--scene", "zoneplate", "checkerboard", "stripes"],
+        ),
+        (
+            &["render", "--filter", "sinc"],
+            &["--filter", "box", "gaussian", "mitchell", "lanczos"],
+        ),
+        (
+            &["points", "--sampler", "halton", "--format", "gif"],
+            &["--format", "csv", "svg", "png"],
+        ),
+        (
+            &["analyze", "--sampler", "halton", "--measures", "nope"],
+            &["--measures", "star", "l2-star", "min-distance"],
+        ),
+    ];
+    for (args, mentions) in cases {
+        let o = nyquist(args);
+        common::assert_one_line_error(&o, mentions[0]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        for m in mentions {
+            assert!(err.contains(m), "{args:?}: {err}");
+        }
+    }
+}
+
+/// DESIGN.md's spellings: `sobol-owen` names the Owen-scrambled Sobol sampler, and `analyze`
+/// takes `--input FILE|-` and `--measure` as well as its positional file and `--measures`.
+#[test]
+fn design_spellings_are_accepted() {
+    let a = nyquist(&["points", "--sampler", "sobol-owen", "--count", "8"]);
+    let b = nyquist(&["points", "--sampler", "owen-sobol", "--count", "8"]);
+    assert!(a.status.success() && a.stdout == b.stdout && !a.stdout.is_empty());
+    let dir = std::env::temp_dir().join(format!("nyquist-design-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let csv = dir.join("h.csv");
+    let pts = nyquist(&["points", "--sampler", "halton", "--count", "64"]);
+    std::fs::write(&csv, &pts.stdout).unwrap();
+    let csv = csv.to_str().unwrap();
+    let flag = nyquist(&["analyze", "--input", csv, "--measure", "star", "--json"]);
+    let positional = nyquist(&["analyze", csv, "--measures", "star", "--json"]);
+    assert!(
+        flag.status.success(),
+        "{}",
+        String::from_utf8_lossy(&flag.stderr)
+    );
+    let strip = |o: &std::process::Output| {
+        let s = stdout(o);
+        s[..s.find("\"seconds\"").unwrap()].to_string()
+    };
+    assert_eq!(strip(&flag), strip(&positional));
+    assert!(strip(&flag).contains("\"star_discrepancy\":0.0520833"));
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -90,6 +90,15 @@ fn svg_draws_points_and_strata() {
     let s = String::from_utf8(o.stdout).unwrap();
     assert!(s.starts_with("<svg"));
     assert_eq!(s.matches("<circle").count(), 12);
+    // The 4 × 3 strata: 3 inner vertical and 2 inner horizontal lines in the grid's path.
+    let grid = s
+        .lines()
+        .find(|l| l.starts_with("<path"))
+        .expect("a strata path");
+    assert_eq!(
+        (grid.matches('V').count(), grid.matches('H').count()),
+        (3, 2)
+    );
     let o = nyquist(&[
         "points",
         "--sampler",
