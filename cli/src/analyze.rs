@@ -124,7 +124,10 @@ pub struct AnalyzeArgs {
     /// grid points]; the bracket's width is at most 1 − (1 − 1/m)^d.
     #[arg(long, value_name = "M")]
     pub star_grid: Option<u32>,
-    /// Print one JSON object instead of the table.
+    /// Print one JSON object instead of the table: each measure's number under its name
+    /// (`star`, `l2-star`, `centered-l2`, `wraparound-l2`, `min-distance`, `rho`, and the
+    /// `-torus` forms; `star-lower`/`star-upper` for a bracket), beside `points`, `dims`,
+    /// `source`, `star-method` and `seconds`.
     #[arg(long)]
     pub json: bool,
     /// Write the periodogram (log scale, DC at the centre) beside its radial mean power as one
@@ -416,19 +419,19 @@ fn measure(args: &AnalyzeArgs, set: &PointSet<'_>, m: Measure) -> Result<Vec<Row
         Measure::Star => vec![star(args, set)?],
         Measure::L2Star => vec![disc(
             "L2-star discrepancy",
-            "l2_star",
+            "l2-star",
             analysis::l2_star_discrepancy(set),
             "Warnock's formula",
         )],
         Measure::CenteredL2 => vec![disc(
             "centered L2",
-            "centered_l2",
+            "centered-l2",
             analysis::centered_l2_discrepancy(set),
             "Hickernell 1998",
         )],
         Measure::WraparoundL2 => vec![disc(
             "wrap-around L2",
-            "wraparound_l2",
+            "wraparound-l2",
             analysis::wraparound_l2_discrepancy(set),
             "Hickernell 1998",
         )],
@@ -446,9 +449,9 @@ fn measure(args: &AnalyzeArgs, set: &PointSet<'_>, m: Measure) -> Result<Vec<Row
                 .map_err(|e| anyhow!("min-distance: {e}"))?;
             let seconds = t.elapsed().as_secs_f64();
             let (dk, rk, where_) = if torus {
-                ("min_distance_torus", "rho_torus", "torus")
+                ("min-distance-torus", "rho-torus", "torus")
             } else {
-                ("min_distance", "rho", "square")
+                ("min-distance", "rho", "square")
             };
             vec![
                 Row {
@@ -518,8 +521,8 @@ fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
         return Ok(Row {
             label: "star discrepancy",
             json: vec![
-                ("star_discrepancy", num(v)),
-                ("star_method", format!("\"{how}\"")),
+                ("star", num(v)),
+                ("star-method", format!("\"{how}\"")),
             ],
             value: format!("{v:.6e}"),
             scaled: format!("{:.6}", v * n_f),
@@ -537,10 +540,10 @@ fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
     Ok(Row {
         label: "star discrepancy",
         json: vec![
-            ("star_lower", num(lower)),
-            ("star_upper", num(upper)),
-            ("star_grid", m.to_string()),
-            ("star_method", "\"bounds\"".to_owned()),
+            ("star-lower", num(lower)),
+            ("star-upper", num(upper)),
+            ("star-grid", m.to_string()),
+            ("star-method", "\"bounds\"".to_owned()),
         ],
         value: format!("[{lower:.4e}, {upper:.4e}]"),
         scaled: format!("[{:.3}, {:.3}]", lower * n_f, upper * n_f),

@@ -58,8 +58,8 @@ fn van_der_corput_16_generated_has_star_discrepancy_one_sixteenth() {
     ]);
     let j = ok_json(&o);
     // N·D* = 1 for the first 16 van der Corput points {0, 1/16, …, 15/16} (Niederreiter Thm 2.6).
-    assert_eq!(json_field(&j, "star_discrepancy"), 1.0 / 16.0);
-    assert!(j.contains("\"star_method\":\"exact-1d\""), "{j}");
+    assert_eq!(json_field(&j, "star"), 1.0 / 16.0);
+    assert!(j.contains("\"star-method\":\"exact-1d\""), "{j}");
     assert_eq!(json_field(&j, "points"), 16.0);
     assert_eq!(json_field(&j, "dims"), 1.0);
 }
@@ -69,14 +69,14 @@ fn van_der_corput_16_piped_csv_has_star_discrepancy_one_sixteenth() {
     let pts = nyquist(&["points", "--sampler", "vdc", "--count", "16", "--dims", "1"]);
     assert!(pts.status.success());
     let o = piped(&["analyze", "--json"], &pts.stdout);
-    assert_eq!(json_field(&ok_json(&o), "star_discrepancy"), 1.0 / 16.0);
+    assert_eq!(json_field(&ok_json(&o), "star"), 1.0 / 16.0);
     // The same with a header line and `-` for stdin.
     let mut with_header = b"x\n".to_vec();
     with_header.extend_from_slice(&pts.stdout);
     let o = piped(&["analyze", "-", "--json"], &with_header);
-    assert_eq!(json_field(&ok_json(&o), "star_discrepancy"), 1.0 / 16.0);
+    assert_eq!(json_field(&ok_json(&o), "star"), 1.0 / 16.0);
     // L2-star: N·T_N = 1/√3 for N = 2^m van der Corput points (core's l2 docs).
-    let t = json_field(&ok_json(&o), "l2_star");
+    let t = json_field(&ok_json(&o), "l2-star");
     assert!((16.0 * t - 1.0 / 3f64.sqrt()).abs() < 1e-12, "{t}");
 }
 
@@ -97,12 +97,12 @@ fn hammersley_csv_file_matches_de_clerck() {
         let nf = f64::from(n);
         let sign = if m % 2 == 0 { 1.0 } else { -1.0 };
         let expected = (f64::from(m) / 3.0 + 13.0 / 9.0 - sign * 4.0 / (9.0 * nf)) / nf;
-        let got = json_field(&j, "star_discrepancy");
+        let got = json_field(&j, "star");
         assert!(
             (got - expected).abs() < 1e-12,
             "m = {m}: {got} vs {expected}"
         );
-        assert!(j.contains("\"star_method\":\"exact-2d\""), "{j}");
+        assert!(j.contains("\"star-method\":\"exact-2d\""), "{j}");
     }
 }
 
@@ -126,23 +126,23 @@ fn json_has_every_requested_measure() {
         "\"measures\":[\"star\",\"l2-star\",\"centered-l2\",\"wraparound-l2\",\"min-distance\",\"min-distance-torus\"]"
     ));
     for key in [
-        "star_discrepancy",
-        "l2_star",
-        "centered_l2",
-        "wraparound_l2",
-        "min_distance",
+        "star",
+        "l2-star",
+        "centered-l2",
+        "wraparound-l2",
+        "min-distance",
         "rho",
-        "min_distance_torus",
-        "rho_torus",
+        "min-distance-torus",
+        "rho-torus",
         "seconds",
     ] {
         let v = json_field(&j, key);
         assert!(v.is_finite() && v >= 0.0, "{key} = {v}");
     }
     // Jittered 8×8 strata: D* ≤ 2·8/64 (each box edge crosses at most 8 + 8 strata) and ρ < 1.
-    assert!(json_field(&j, "star_discrepancy") <= 0.25);
+    assert!(json_field(&j, "star") <= 0.25);
     assert!(json_field(&j, "rho") < 1.0);
-    assert!(json_field(&j, "min_distance_torus") <= json_field(&j, "min_distance"));
+    assert!(json_field(&j, "min-distance-torus") <= json_field(&j, "min-distance"));
 }
 
 #[test]
@@ -177,7 +177,7 @@ fn bounds_bracket_the_exact_value_and_are_named() {
             "200",
             "--json",
         ])),
-        "star_discrepancy",
+        "star",
     );
     let j = ok_json(&nyquist(&[
         "analyze",
@@ -191,11 +191,11 @@ fn bounds_bracket_the_exact_value_and_are_named() {
         "--star-grid",
         "64",
     ]));
-    assert!(j.contains("\"star_method\":\"bounds\""), "{j}");
-    let (lo, up) = (json_field(&j, "star_lower"), json_field(&j, "star_upper"));
+    assert!(j.contains("\"star-method\":\"bounds\""), "{j}");
+    let (lo, up) = (json_field(&j, "star-lower"), json_field(&j, "star-upper"));
     assert!(lo <= exact && exact <= up, "{lo} <= {exact} <= {up}");
     assert!(up - lo <= 2.0 / 64.0);
-    assert_eq!(json_field(&j, "star_grid"), 64.0);
+    assert_eq!(json_field(&j, "star-grid"), 64.0);
     // 3D enumeration for a small set.
     let j = ok_json(&nyquist(&[
         "analyze",
@@ -207,7 +207,7 @@ fn bounds_bracket_the_exact_value_and_are_named() {
         "3",
         "--json",
     ]));
-    assert!(j.contains("\"star_method\":\"exact-enumeration\""), "{j}");
+    assert!(j.contains("\"star-method\":\"exact-enumeration\""), "{j}");
 }
 
 #[test]
@@ -409,7 +409,7 @@ fn generated_and_piped_sets_give_the_same_measures() {
             ],
             &csv.stdout,
         ));
-        for key in ["star_discrepancy", "l2_star", "centered_l2"] {
+        for key in ["star", "l2-star", "centered-l2"] {
             let (g, p) = (json_field(&generated, key), json_field(&piped, key));
             assert!((g - p).abs() <= 1e-7, "{sampler} {key}: {g} vs {p}");
             if sampler == "hammersley" {

@@ -89,6 +89,6 @@ fn design_spellings_are_accepted() {
         s[..s.find("\"seconds\"").unwrap()].to_string()
     };
     assert_eq!(strip(&flag), strip(&positional));
-    assert!(strip(&flag).contains("\"star_discrepancy\":0.0520833"));
+    assert!(strip(&flag).contains("\"star\":0.0520833"));
     std::fs::remove_dir_all(&dir).ok();
 }
