@@ -548,6 +548,22 @@ mod tests {
         }
     }
 
+    /// The 2D star discrepancy of the points `(t, t)` on the diagonal, by a formula over the
+    /// sorted `t` alone (the "1D formula" of a set on a line): a box `[0,ξ) × [0,η)` holds the
+    /// points below `m = min(ξ, η)`, a fraction `F(m)`, and its area ranges over `[m², m]`; so
+    /// `D* = sup_m max(F(m) − m², m − F(m))`, reached as `m` falls to a value `v` from above
+    /// (`#{t ≤ v}/N − v²`) or rises to it from below (`v − #{t < v}/N`).
+    fn diagonal_formula(ts: &[f64]) -> f64 {
+        let n = ts.len() as f64;
+        let mut d = 0.0f64;
+        for &v in ts {
+            let below = ts.iter().filter(|&&t| t < v).count() as f64;
+            let at_or_below = ts.iter().filter(|&&t| t <= v).count() as f64;
+            d = d.max(at_or_below / n - v * v).max(v - below / n);
+        }
+        d
+    }
+
     #[test]
     fn points_on_a_line_reduce_to_the_1d_formula_or_to_one() {
         // A 2D set is at least as discrepant as each projection (boxes [0,ξ) × [0,1]).
@@ -565,6 +581,13 @@ mod tests {
             // below min(ξ, η), so D* = max(1D deficit with area ξη, …); the 1D set bounds it below.
             let diag: Vec<f64> = xs.iter().flat_map(|&x| [x, x]).collect();
             assert!((exact(&diag, 2) - brute(&diag, 2)).abs() < 1e-14);
+            assert!((exact(&diag, 2) - diagonal_formula(&xs)).abs() < 1e-14, "seed {seed}");
+        }
+        // The diagonal formula on tie-heavy sets too (the sweep's open/closed counts).
+        for seed in 0..20u64 {
+            let xs = nasty(1 + 3 * seed as usize, 1, seed);
+            let diag: Vec<f64> = xs.iter().flat_map(|&x| [x, x]).collect();
+            assert!((exact(&diag, 2) - diagonal_formula(&xs)).abs() < 1e-14, "seed {seed}");
         }
         // In 1D the enumerator is the 1D formula.
         for seed in 0..20u64 {
