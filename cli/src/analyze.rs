@@ -520,10 +520,7 @@ fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
         };
         return Ok(Row {
             label: "star discrepancy",
-            json: vec![
-                ("star", num(v)),
-                ("star-method", format!("\"{how}\"")),
-            ],
+            json: vec![("star", num(v)), ("star-method", format!("\"{how}\""))],
             value: format!("{v:.6e}"),
             scaled: format!("{:.6}", v * n_f),
             method: method.to_owned(),
@@ -590,8 +587,17 @@ fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Res
     }
     let mut pg = nyquist_film::periodogram::Periodogram::new(args.freq)
         .map_err(|e| anyhow!("--freq {}: {e}", args.freq))?;
+    // A bar over the realisations, shown when the work passes a second (large sets or --freq).
+    let total = if args.sampler.is_some() {
+        args.realisations.max(1)
+    } else {
+        1
+    };
+    let progress =
+        crate::progress::Progress::with_unit(u64::from(total), "spectrum", "realisations");
     pg.add(&pairs_of(coords, dims))
         .map_err(|e| anyhow!("--spectrum: {e}"))?;
+    progress.inc(1);
     let mut identical = false;
     if let Some(sampler) = args.sampler {
         let seed = args.seed.unwrap_or(0);
@@ -603,8 +609,10 @@ fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Res
             }
             pg.add(&pairs_of(&c, d))
                 .map_err(|e| anyhow!("--spectrum: {e}"))?;
+            progress.inc(1);
         }
     }
+    progress.finish();
     let s = pg.spectrum().map_err(|e| anyhow!("--spectrum: {e}"))?;
     let n = coords.len() / dims;
     let canvas = draw_spectrum(&s, n);

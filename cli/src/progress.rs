@@ -18,12 +18,17 @@ pub struct Progress {
 }
 
 impl Progress {
-    /// A hidden bar over `total` units with a short message (e.g. "render").
+    /// A hidden bar over `total` tiles with a short message (e.g. "render").
     pub fn new(total: u64, message: &str) -> Progress {
+        Progress::with_unit(total, message, "tiles")
+    }
+
+    /// A hidden bar over `total` units named `unit` (e.g. "realisations").
+    pub fn with_unit(total: u64, message: &str, unit: &str) -> Progress {
         let bar = ProgressBar::with_draw_target(Some(total), ProgressDrawTarget::hidden());
-        let style = ProgressStyle::with_template(
-            "{msg} [{elapsed_precise}] {wide_bar} {pos}/{len} tiles (eta {eta})",
-        )
+        let style = ProgressStyle::with_template(&format!(
+            "{{msg}} [{{elapsed_precise}}] {{wide_bar}} {{pos}}/{{len}} {unit} (eta {{eta}})"
+        ))
         .unwrap_or_else(|_| ProgressStyle::default_bar());
         bar.set_style(style);
         bar.set_message(message.to_owned());

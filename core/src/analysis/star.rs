@@ -581,13 +581,19 @@ mod tests {
             // below min(ξ, η), so D* = max(1D deficit with area ξη, …); the 1D set bounds it below.
             let diag: Vec<f64> = xs.iter().flat_map(|&x| [x, x]).collect();
             assert!((exact(&diag, 2) - brute(&diag, 2)).abs() < 1e-14);
-            assert!((exact(&diag, 2) - diagonal_formula(&xs)).abs() < 1e-14, "seed {seed}");
+            assert!(
+                (exact(&diag, 2) - diagonal_formula(&xs)).abs() < 1e-14,
+                "seed {seed}"
+            );
         }
         // The diagonal formula on tie-heavy sets too (the sweep's open/closed counts).
         for seed in 0..20u64 {
             let xs = nasty(1 + 3 * seed as usize, 1, seed);
             let diag: Vec<f64> = xs.iter().flat_map(|&x| [x, x]).collect();
-            assert!((exact(&diag, 2) - diagonal_formula(&xs)).abs() < 1e-14, "seed {seed}");
+            assert!(
+                (exact(&diag, 2) - diagonal_formula(&xs)).abs() < 1e-14,
+                "seed {seed}"
+            );
         }
         // In 1D the enumerator is the 1D formula.
         for seed in 0..20u64 {
