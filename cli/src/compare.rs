@@ -4,8 +4,9 @@
 use crate::progress::Progress;
 use crate::raster::{Canvas, LINE, text_width};
 use crate::render::{
-    Rendered, SamplerName, build_sampler, check_output, default_threads, json_number, json_string,
-    parse_filter, parse_size, psnr, reference, reference_kind, render, rmse, tile_count,
+    Rendered, SamplerName, ScrambleName, build_sampler, check_output, default_threads, json_number,
+    json_string, parse_filter, parse_size, psnr, reference, reference_kind, render, rmse,
+    takes_scramble, tile_count,
 };
 use crate::scene::Scene;
 use anyhow::{Result, anyhow, bail};
@@ -94,6 +95,10 @@ pub struct CompareArgs {
     /// Seed of every sampler.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// Scramble of the halton, sobol and zsobol rows (the other rows have none) [default: each
+    /// sampler's own, as in `render`].
+    #[arg(long, value_enum, value_name = "SCRAMBLE")]
+    pub scramble: Option<ScrambleName>,
     /// The contact sheet (PNG).
     #[arg(short, long, value_name = "FILE.png", default_value = "compare.png")]
     pub output: PathBuf,
@@ -170,9 +175,11 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     for (row, &name) in args.samplers.iter().enumerate() {
         for f in 0..filters.len() {
             for (k, &spp) in args.spp.iter().enumerate() {
-                let sampler = build_sampler(name, spp, args.size, args.seed).map_err(|e| {
-                    anyhow!("{}", e.to_string().replace("--sampler ", "--samplers "))
-                })?;
+                let scramble = args.scramble.filter(|_| takes_scramble(name));
+                let sampler =
+                    build_sampler(name, spp, args.size, args.seed, scramble).map_err(|e| {
+                        anyhow!("{}", e.to_string().replace("--sampler ", "--samplers "))
+                    })?;
                 cells.push(Cell {
                     sampler_name: name,
                     sampler,

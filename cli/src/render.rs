@@ -7,6 +7,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
+use nyquist::scramble::Scramble;
 use nyquist_film::{Film, FilmConfig, FilmStats, Image, ImageFormat, render_tiles};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -62,14 +63,50 @@ impl SamplerName {
     }
 }
 
+/// The scrambles of `--scramble` (pbrt-v4's names, as core's [`Scramble`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ScrambleName {
+    /// The plain sequence.
+    None,
+    /// A random permutation of the digits per digit position (and dimension).
+    #[value(alias = "permute")]
+    PermuteDigits,
+    /// Burley's hash-based Owen scramble (Laine–Karras hash, Vegdahl's constants).
+    FastOwen,
+    /// The exact Owen scramble: one hash per digit.
+    Owen,
+}
+
+impl ScrambleName {
+    /// The core scramble.
+    pub fn scramble(self) -> Scramble {
+        match self {
+            ScrambleName::None => Scramble::None,
+            ScrambleName::PermuteDigits => Scramble::PermuteDigits,
+            ScrambleName::FastOwen => Scramble::FastOwen,
+            ScrambleName::Owen => Scramble::Owen,
+        }
+    }
+}
+
+/// Whether sampler `name` takes `--scramble` (halton, sobol and zsobol).
+pub fn takes_scramble(name: SamplerName) -> bool {
+    matches!(
+        name,
+        SamplerName::Halton | SamplerName::Sobol | SamplerName::ZSobol
+    )
+}
+
 /// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
-/// [`NamedSampler`]). The error names the flag at fault. Samplers that round spp (zero-two,
-/// sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
+/// [`NamedSampler`]), with `scramble` if given (halton, sobol and zsobol only: an error names
+/// `--scramble` for the others). The error names the flag at fault. Samplers that round spp
+/// (zero-two, sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
 pub fn build_sampler(
     name: SamplerName,
     spp: u32,
     size: [u32; 2],
     seed: u64,
+    scramble: Option<ScrambleName>,
 ) -> Result<NamedSampler> {
     let n = name.name();
     if spp == 0 {
@@ -78,7 +115,14 @@ pub fn build_sampler(
     if spp > 1 << 20 {
         bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
     }
-    NamedSampler::new(&n, size, spp, seed).map_err(|e| match e {
+    let built = match scramble {
+        Some(sc) => NamedSampler::with_scramble(&n, size, spp, seed, sc.scramble()),
+        None => NamedSampler::new(&n, size, spp, seed),
+    };
+    built.map_err(|e| match e {
+        NamedSamplerError::NoScramble => anyhow!(
+            "--scramble: --sampler {n} has no scramble choice (halton, sobol and zsobol have one)"
+        ),
         NamedSamplerError::NotSquare { .. } => anyhow!(
             "--spp {spp} is not a square: --sampler {n} takes a √spp × √spp grid (1, 4, 9, 16, 25, …)"
         ),
@@ -241,6 +285,7 @@ pub fn reference(
         REFERENCE_STRATA * REFERENCE_STRATA,
         size,
         REFERENCE_SEED,
+        None,
     )?;
     let bar = Progress::new(tile_count(size), "reference");
     let r = render(scene, size, &sampler, filter, threads, &mut || bar.inc(1))?;
@@ -408,6 +453,10 @@ pub struct RenderArgs {
     /// Seed of the sampler's random numbers and scrambles (0: unscrambled halton/hammersley).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
+    /// Scramble of halton, sobol and zsobol [default: each sampler's own: digit permutation for
+    /// halton when --seed is not 0, sobol's random digits, fast-owen for zsobol].
+    #[arg(long, value_enum, value_name = "SCRAMBLE")]
+    pub scramble: Option<ScrambleName>,
     /// Write the image here: .png (8-bit sRGB), .exr (32-bit float) or .pfm (32-bit float).
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
@@ -429,7 +478,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         check_output(p, "--output", &["png", "exr", "pfm"])?;
         ImageFormat::from_path(p).map_err(|e| anyhow!("--output: {e}"))?;
     }
-    let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed)?;
+    let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed, args.scramble)?;
     if sampler.samples_per_pixel() != args.spp {
         eprintln!(
             "nyquist: note: --sampler {} uses a power-of-two spp: --spp {} rounded up to {}",

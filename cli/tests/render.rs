@@ -303,3 +303,83 @@ fn help_has_an_example() {
     assert!(o.status.success());
     assert!(stdout(&o).contains("Example: nyquist render"));
 }
+
+/// `--scramble` picks the scramble of halton, sobol and zsobol: each of the four gives its own
+/// image; for halton and sobol `none` ignores the seed (zsobol's seed also permutes its Morton
+/// digits); samplers without a choice refuse it (one line, exit 2, nothing written). `compare`
+/// applies it to those rows only.
+#[test]
+fn scramble_chooses_among_four_and_is_refused_elsewhere() {
+    let dir = temp_dir("render-scramble");
+    let render = |sampler: &str, scramble: &str, seed: &str| {
+        let out = dir.join(format!("{sampler}-{scramble}-{seed}.pfm"));
+        let o = nyquist(&[
+            "render",
+            "--sampler",
+            sampler,
+            "--spp",
+            "16",
+            "--size",
+            "32x32",
+            "--seed",
+            seed,
+            "--scramble",
+            scramble,
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        read_pfm(&out).2
+    };
+    for sampler in ["halton", "sobol", "zsobol"] {
+        let images: Vec<Vec<f32>> = ["none", "permute", "fast-owen", "owen"]
+            .iter()
+            .map(|s| render(sampler, s, "5"))
+            .collect();
+        for a in 0..4 {
+            for b in a + 1..4 {
+                assert!(
+                    images[a] != images[b],
+                    "{sampler}: scrambles {a} and {b} agree"
+                );
+            }
+        }
+        if sampler != "zsobol" {
+            let unscrambled = render(sampler, "none", "6") == images[0];
+            assert!(unscrambled, "{sampler}: `none` depends on the seed");
+        }
+        assert!(
+            render(sampler, "owen", "6") != images[3],
+            "{sampler}: owen ignores the seed"
+        );
+    }
+    for sampler in ["random", "stratified", "owen-sobol", "pmj02"] {
+        let out = dir.join("refused.png");
+        let o = nyquist(&[
+            "render",
+            "--sampler",
+            sampler,
+            "--scramble",
+            "owen",
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert_one_line_error(&o, "--scramble");
+        assert!(!out.exists(), "{sampler} wrote {out:?}");
+    }
+    let o = nyquist(&[
+        "compare",
+        "--samplers",
+        "random,sobol",
+        "--spp",
+        "1",
+        "--size",
+        "16x16",
+        "--scramble",
+        "owen",
+        "--json",
+        "-o",
+        dir.join("c.png").to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+}

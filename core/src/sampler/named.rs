@@ -57,6 +57,9 @@ pub enum NamedSamplerError {
     /// Width, height or spp was zero ([`crate::Error::ZeroSize`]), or the sampler rejected
     /// the parameters.
     Sampler(crate::Error),
+    /// [`NamedSampler::with_scramble`] for a sampler without a scramble choice (only `halton`,
+    /// `sobol` and `zsobol` have one).
+    NoScramble,
 }
 
 impl fmt::Display for NamedSamplerError {
@@ -71,6 +74,9 @@ impl fmt::Display for NamedSamplerError {
             NamedSamplerError::UnknownName => f.write_str("unknown sampler name"),
             NamedSamplerError::NotSquare { spp } => write!(f, "spp {spp} is not a square"),
             NamedSamplerError::Sampler(e) => e.fmt(f),
+            NamedSamplerError::NoScramble => {
+                f.write_str("no scramble choice (halton, sobol and zsobol have one)")
+            }
         }
     }
 }
@@ -259,6 +265,53 @@ impl NamedSampler {
         })
     }
 
+    /// [`NamedSampler::new`] with the scramble chosen instead of defaulted, for the samplers
+    /// that offer the four of [`Scramble`] (pbrt-v4's names): `halton`
+    /// ([`HaltonSampler::new`]), `sobol` ([`SobolSampler::with_scramble`]) and `zsobol`
+    /// ([`ZSobolSampler::new`]). `new` picks none or digit permutation (by `seed`) for halton,
+    /// fast Owen for zsobol, and sobol's own random-digit scramble.
+    ///
+    /// # Errors
+    /// As [`NamedSampler::new`]; [`NamedSamplerError::NoScramble`] for the other names in
+    /// [`NAMES`].
+    ///
+    /// ```
+    /// use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
+    /// use nyquist::scramble::Scramble;
+    /// let mut s = NamedSampler::with_scramble("sobol", [8, 8], 16, 3, Scramble::Owen).unwrap();
+    /// s.start_pixel_sample([1, 2], 5, 0);
+    /// assert!(s.get_1d() < 1.0);
+    /// assert_eq!(
+    ///     NamedSampler::with_scramble("random", [8, 8], 16, 3, Scramble::Owen).unwrap_err(),
+    ///     NamedSamplerError::NoScramble
+    /// );
+    /// ```
+    pub fn with_scramble(
+        name: &str,
+        size: [u32; 2],
+        spp: u32,
+        seed: u64,
+        scramble: Scramble,
+    ) -> Result<NamedSampler, NamedSamplerError> {
+        match name {
+            "halton" | "sobol" | "zsobol" => {
+                // `new` checks the sizes (zero width, height or spp) first, as here.
+                NamedSampler::new(name, size, spp, seed)?;
+                Ok(match name {
+                    "halton" => {
+                        NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?)
+                    }
+                    "sobol" => {
+                        NamedSampler::Sobol(SobolSampler::with_scramble(size, spp, scramble, seed)?)
+                    }
+                    _ => NamedSampler::ZSobol(ZSobolSampler::new(size, spp, scramble, seed)?),
+                })
+            }
+            _ if NAMES.contains(&name) => Err(NamedSamplerError::NoScramble),
+            _ => Err(NamedSamplerError::UnknownName),
+        }
+    }
+
     /// The name this sampler is built from (one of [`NAMES`]).
     ///
     /// ```
@@ -352,6 +405,7 @@ impl Sampler for NamedSampler {
 mod tests {
     use super::*;
     use crate::sampler::tests::record;
+    use std::vec::Vec;
 
     /// Each name gives the same values as its sampler built directly, as the CLI built them.
     #[test]
@@ -512,5 +566,62 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// `with_scramble` builds halton, sobol and zsobol with the asked scramble: the same values
+    /// as the sampler built directly, every scramble a different set (seed ≠ 0), and the other
+    /// names refused by kind.
+    #[test]
+    fn with_scramble_builds_the_three_and_refuses_the_rest() {
+        fn values(mut s: impl Sampler) -> Vec<u32> {
+            let mut v = Vec::new();
+            for i in 0..16 {
+                s.start_pixel_sample([3, 2], i, 0);
+                for _ in 0..4 {
+                    v.push(s.get_1d().to_bits());
+                }
+            }
+            v
+        }
+        let (size, spp, seed) = ([8, 8], 16, 9);
+        for scramble in Scramble::ALL {
+            let direct = [
+                values(HaltonSampler::new(size, spp, scramble, seed).unwrap()),
+                values(SobolSampler::with_scramble(size, spp, scramble, seed).unwrap()),
+                values(ZSobolSampler::new(size, spp, scramble, seed).unwrap()),
+            ];
+            for (name, want) in ["halton", "sobol", "zsobol"].iter().zip(direct) {
+                let s = NamedSampler::with_scramble(name, size, spp, seed, scramble).unwrap();
+                assert_eq!(s.name(), *name);
+                assert_eq!(values(s), want, "{name} {scramble:?}");
+            }
+        }
+        for name in ["halton", "sobol", "zsobol"] {
+            let mut sets: Vec<Vec<u32>> = Scramble::ALL
+                .iter()
+                .map(|&sc| values(NamedSampler::with_scramble(name, size, spp, seed, sc).unwrap()))
+                .collect();
+            sets.sort();
+            sets.dedup();
+            assert_eq!(sets.len(), 4, "{name}: the four scrambles give four sets");
+            assert_eq!(
+                NamedSampler::with_scramble(name, [0, 8], spp, seed, Scramble::Owen).unwrap_err(),
+                NamedSamplerError::Sampler(crate::Error::ZeroSize { what: "width" })
+            );
+        }
+        for name in NAMES
+            .iter()
+            .filter(|n| !matches!(**n, "halton" | "sobol" | "zsobol"))
+        {
+            assert_eq!(
+                NamedSampler::with_scramble(name, size, spp, seed, Scramble::Owen).unwrap_err(),
+                NamedSamplerError::NoScramble,
+                "{name}"
+            );
+        }
+        assert_eq!(
+            NamedSampler::with_scramble("nope", size, spp, seed, Scramble::Owen).unwrap_err(),
+            NamedSamplerError::UnknownName
+        );
     }
 }

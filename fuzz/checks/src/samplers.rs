@@ -178,7 +178,31 @@ pub fn samplers(data: &[u8]) {
                 String::from_utf8_lossy(b.rest()).chars().take(24).collect()
             };
             named(&name, resolution, spp, seed, &args);
+            named_scrambled(&name, resolution, spp, seed, scramble, &args);
         }
+    }
+}
+
+/// `NamedSampler::with_scramble` with any name: halton, sobol and zsobol build exactly when
+/// `new` does (and keep the sampler contract), the other known names say `NoScramble`, unknown
+/// names `UnknownName`.
+fn named_scrambled(name: &str, size: [u32; 2], spp: u32, seed: u64, scramble: Scramble, a: &Args) {
+    let r = NamedSampler::with_scramble(name, size, spp, seed, scramble);
+    match name {
+        "halton" | "sobol" | "zsobol" => {
+            let plain = NamedSampler::new(name, size, spp, seed);
+            assert_eq!(r.is_ok(), plain.is_ok(), "{name}: with_scramble vs new");
+            if let Ok(s) = &r {
+                assert_eq!(s.name(), name);
+            }
+            let r = r.map_err(|e| match e {
+                NamedSamplerError::Sampler(e) => e,
+                e => panic!("{name}: with_scramble failed with {e:?}"),
+            });
+            run("NamedSampler::with_scramble", spp, r, a);
+        }
+        _ if NAMES.contains(&name) => assert_eq!(r.err(), Some(NamedSamplerError::NoScramble)),
+        _ => assert_eq!(r.err(), Some(NamedSamplerError::UnknownName)),
     }
 }
 
