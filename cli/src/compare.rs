@@ -6,13 +6,13 @@ use crate::raster::{Canvas, LINE, text_width};
 use crate::render::{
     Rendered, SamplerName, ScrambleName, build_sampler, check_output, default_threads, json_number,
     json_string, parse_filter, parse_size, psnr, reference, reference_kind, render, rmse,
-    takes_scramble, tile_count,
+    tile_count,
 };
 use crate::scene::Scene;
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
-use nyquist::sampler::{NamedSampler, Sampler};
+use nyquist::sampler::{NamedSampler, SCRAMBLE_NAMES, Sampler};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
@@ -175,7 +175,9 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     for (row, &name) in args.samplers.iter().enumerate() {
         for f in 0..filters.len() {
             for (k, &spp) in args.spp.iter().enumerate() {
-                let scramble = args.scramble.filter(|_| takes_scramble(name));
+                let scramble = args
+                    .scramble
+                    .filter(|_| SCRAMBLE_NAMES.contains(&name.name().as_str()));
                 let sampler =
                     build_sampler(name, spp, args.size, args.seed, scramble).map_err(|e| {
                         anyhow!("{}", e.to_string().replace("--sampler ", "--samplers "))

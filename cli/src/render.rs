@@ -63,7 +63,8 @@ impl SamplerName {
     }
 }
 
-/// The scrambles of `--scramble` (pbrt-v4's names, as core's [`Scramble`]).
+/// The scrambles of `--scramble`: core's [`Scramble`], under the same names
+/// ([`Scramble::name`]; a test holds them equal), and `permute` for `permute-digits`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum ScrambleName {
     /// The plain sequence.
@@ -89,17 +90,9 @@ impl ScrambleName {
     }
 }
 
-/// Whether sampler `name` takes `--scramble` (halton, sobol and zsobol).
-pub fn takes_scramble(name: SamplerName) -> bool {
-    matches!(
-        name,
-        SamplerName::Halton | SamplerName::Sobol | SamplerName::ZSobol
-    )
-}
-
 /// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
-/// [`NamedSampler`]), with `scramble` if given (halton, sobol and zsobol only: an error names
-/// `--scramble` for the others). The error names the flag at fault. Samplers that round spp
+/// [`NamedSampler`]), with `scramble` if given (the samplers of [`SCRAMBLE_NAMES`] only: an
+/// error names `--scramble` for the others). The error names the flag at fault. Samplers that round spp
 /// (zero-two, sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
 pub fn build_sampler(
     name: SamplerName,
@@ -120,9 +113,7 @@ pub fn build_sampler(
         None => NamedSampler::new(&n, size, spp, seed),
     };
     built.map_err(|e| match e {
-        NamedSamplerError::NoScramble => anyhow!(
-            "--scramble: --sampler {n} has no scramble choice (halton, sobol and zsobol have one)"
-        ),
+        NamedSamplerError::NoScramble => anyhow!("--scramble: --sampler {n}: {e}"),
         NamedSamplerError::NotSquare { .. } => anyhow!(
             "--spp {spp} is not a square: --sampler {n} takes a √spp × √spp grid (1, 4, 9, 16, 25, …)"
         ),
@@ -550,4 +541,19 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `--scramble`'s names are core's, each mapping to the scramble of that name.
+    #[test]
+    fn scramble_names_are_cores() {
+        for v in ScrambleName::value_variants() {
+            let name = v.to_possible_value().unwrap().get_name().to_owned();
+            assert_eq!(Scramble::from_name(&name), Some(v.scramble()), "{name}");
+        }
+        assert_eq!(ScrambleName::value_variants().len(), Scramble::ALL.len());
+    }
 }

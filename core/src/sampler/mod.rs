@@ -118,7 +118,7 @@ pub use best_candidate::BestCandidateSampler;
 pub use halton::{HaltonSampler, HaltonScramble};
 pub use hammersley::HammersleySampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
-pub use named::{NAMES, NamedSampler, NamedSamplerError};
+pub use named::{NAMES, NamedSampler, NamedSamplerError, SCRAMBLE_NAMES};
 pub use owen_sobol::OwenSobolSampler;
 pub use pmj02::Pmj02Sampler;
 pub use random::RandomSampler;

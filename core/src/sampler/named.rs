@@ -35,6 +35,14 @@ pub const NAMES: [&str; 12] = [
     "pmj02",
 ];
 
+/// The names of [`NAMES`] that take a scramble through [`NamedSampler::with_scramble`].
+///
+/// ```
+/// use nyquist::sampler::{NAMES, SCRAMBLE_NAMES};
+/// assert!(SCRAMBLE_NAMES.iter().all(|n| NAMES.contains(n)));
+/// ```
+pub const SCRAMBLE_NAMES: [&str; 3] = ["halton", "sobol", "zsobol"];
+
 /// Threshold of the `adaptive` sampler (see [`AdaptiveSampler::new`]).
 const ADAPTIVE_THRESHOLD: f32 = 0.1;
 
@@ -57,8 +65,8 @@ pub enum NamedSamplerError {
     /// Width, height or spp was zero ([`crate::Error::ZeroSize`]), or the sampler rejected
     /// the parameters.
     Sampler(crate::Error),
-    /// [`NamedSampler::with_scramble`] for a sampler without a scramble choice (only `halton`,
-    /// `sobol` and `zsobol` have one).
+    /// [`NamedSampler::with_scramble`] for a sampler without a scramble choice (only those of
+    /// [`SCRAMBLE_NAMES`] have one).
     NoScramble,
 }
 
@@ -293,23 +301,20 @@ impl NamedSampler {
         seed: u64,
         scramble: Scramble,
     ) -> Result<NamedSampler, NamedSamplerError> {
-        match name {
-            "halton" | "sobol" | "zsobol" => {
-                // `new` checks the sizes (zero width, height or spp) first, as here.
-                NamedSampler::new(name, size, spp, seed)?;
-                Ok(match name {
-                    "halton" => {
-                        NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?)
-                    }
-                    "sobol" => {
-                        NamedSampler::Sobol(SobolSampler::with_scramble(size, spp, scramble, seed)?)
-                    }
-                    _ => NamedSampler::ZSobol(ZSobolSampler::new(size, spp, scramble, seed)?),
-                })
-            }
-            _ if NAMES.contains(&name) => Err(NamedSamplerError::NoScramble),
-            _ => Err(NamedSamplerError::UnknownName),
+        if !SCRAMBLE_NAMES.contains(&name) {
+            return Err(if NAMES.contains(&name) {
+                NamedSamplerError::NoScramble
+            } else {
+                NamedSamplerError::UnknownName
+            });
         }
+        // `new` checks the sizes (zero width, height or spp) first, as here.
+        NamedSampler::new(name, size, spp, seed)?;
+        Ok(match name {
+            "halton" => NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?),
+            "sobol" => NamedSampler::Sobol(SobolSampler::with_scramble(size, spp, scramble, seed)?),
+            _ => NamedSampler::ZSobol(ZSobolSampler::new(size, spp, scramble, seed)?),
+        })
     }
 
     /// The name this sampler is built from (one of [`NAMES`]).
@@ -623,5 +628,6 @@ mod tests {
             NamedSampler::with_scramble("nope", size, spp, seed, Scramble::Owen).unwrap_err(),
             NamedSamplerError::UnknownName
         );
+        assert_eq!(SCRAMBLE_NAMES, ["halton", "sobol", "zsobol"]);
     }
 }

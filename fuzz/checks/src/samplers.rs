@@ -5,8 +5,8 @@ use nyquist::Error;
 use nyquist::sampler::{
     AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
     Jitter, NAMES, NamedSampler, NamedSamplerError, OwenSobolSampler, PixelRangeSampler,
-    Pmj02Sampler, RandomSampler, Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler,
-    ZSobolSampler, ZeroTwoSampler, camera_sample,
+    Pmj02Sampler, RandomSampler, SCRAMBLE_NAMES, Sample, SampleLayout, Sampler, SobolSampler,
+    StratifiedSampler, ZSobolSampler, ZeroTwoSampler, camera_sample,
 };
 use nyquist::scramble::Scramble;
 
@@ -183,13 +183,13 @@ pub fn samplers(data: &[u8]) {
     }
 }
 
-/// `NamedSampler::with_scramble` with any name: halton, sobol and zsobol build exactly when
+/// `NamedSampler::with_scramble` with any name: those of `SCRAMBLE_NAMES` build exactly when
 /// `new` does (and keep the sampler contract), the other known names say `NoScramble`, unknown
 /// names `UnknownName`.
 fn named_scrambled(name: &str, size: [u32; 2], spp: u32, seed: u64, scramble: Scramble, a: &Args) {
     let r = NamedSampler::with_scramble(name, size, spp, seed, scramble);
     match name {
-        "halton" | "sobol" | "zsobol" => {
+        _ if SCRAMBLE_NAMES.contains(&name) => {
             let plain = NamedSampler::new(name, size, spp, seed);
             assert_eq!(r.is_ok(), plain.is_ok(), "{name}: with_scramble vs new");
             if let Ok(s) = &r {
