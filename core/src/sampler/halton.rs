@@ -112,12 +112,7 @@ impl HaltonSampler {
         scramble: HaltonScramble,
         seed: u64,
     ) -> Result<Self, Error> {
-        if spp == 0 {
-            return Err(Error::ZeroSize { what: "spp" });
-        }
-        if resolution[0] == 0 || resolution[1] == 0 {
-            return Err(Error::ZeroSize { what: "resolution" });
-        }
+        super::check_image(resolution, spp)?;
         let mut exponents = [0u32; 2];
         let mut scales = [1u64; 2];
         for (axis, base) in [(0usize, 2u64), (1, 3)] {

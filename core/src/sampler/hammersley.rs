@@ -61,12 +61,7 @@ impl HammersleySampler {
     /// );
     /// ```
     pub fn new(resolution: [u32; 2], spp: u32, scramble: bool, seed: u64) -> Result<Self, Error> {
-        if spp == 0 {
-            return Err(Error::ZeroSize { what: "spp" });
-        }
-        if resolution[0] == 0 || resolution[1] == 0 {
-            return Err(Error::ZeroSize { what: "resolution" });
-        }
+        super::check_image(resolution, spp)?;
         let j = 32 - (resolution[1] - 1).leading_zeros();
         let column = (1u64 << j) * u64::from(spp);
         column

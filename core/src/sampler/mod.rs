@@ -392,6 +392,18 @@ pub(crate) fn film(pixel: u32, offset: f32) -> f32 {
     if x < base + 1.0 { x } else { base }
 }
 
+/// The first checks of the samplers over a whole image (halton, hammersley, sobol, zsobol):
+/// [`Error::ZeroSize`] for `spp == 0`, then for a zero side of `resolution`.
+pub(crate) fn check_image(resolution: [u32; 2], spp: u32) -> Result<(), crate::Error> {
+    if spp == 0 {
+        return Err(crate::Error::ZeroSize { what: "spp" });
+    }
+    if resolution[0] == 0 || resolution[1] == 0 {
+        return Err(crate::Error::ZeroSize { what: "resolution" });
+    }
+    Ok(())
+}
+
 /// Hash of a pixel's coordinates with two more words (dimension, seed, …).
 #[inline]
 pub(crate) fn pixel_hash(pixel: [u32; 2], a: u64, b: u64) -> u64 {

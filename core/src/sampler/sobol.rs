@@ -123,12 +123,7 @@ impl SobolSampler {
         seed: u64,
     ) -> Result<Self, Error> {
         let seed = if scramble == Scramble::None { 0 } else { seed };
-        if spp == 0 {
-            return Err(Error::ZeroSize { what: "spp" });
-        }
-        if resolution[0] == 0 || resolution[1] == 0 {
-            return Err(Error::ZeroSize { what: "resolution" });
-        }
+        super::check_image(resolution, spp)?;
         let (spp, _) = Self::rounded_spp(spp);
         let side = resolution[0].max(resolution[1]);
         let m = 32 - (side - 1).leading_zeros();

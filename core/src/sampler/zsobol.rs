@@ -153,12 +153,7 @@ impl ZSobolSampler {
         scramble: Scramble,
         seed: u64,
     ) -> Result<Self, Error> {
-        if spp == 0 {
-            return Err(Error::ZeroSize { what: "spp" });
-        }
-        if resolution[0] == 0 || resolution[1] == 0 {
-            return Err(Error::ZeroSize { what: "resolution" });
-        }
+        super::check_image(resolution, spp)?;
         let (spp, _) = Self::rounded_spp(spp);
         let side = resolution[0].max(resolution[1]);
         let log2_res = 32 - (side - 1).leading_zeros();
