@@ -4,7 +4,7 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::hash::{hash_slice, mix32};
-use crate::sequence::{IndexShuffle, dim_seed, owen_sobol_rev_f32};
+use crate::sequence::{DimSeeds, IndexShuffle, owen_sobol_rev_f32};
 
 /// Dimensions whose scramble seeds are hashed once per pixel: the camera's five.
 const CACHED: usize = 5;
@@ -45,8 +45,7 @@ pub struct OwenSobolSampler {
     /// The pixel whose key is cached (`None` before the first).
     pixel: Option<[u32; 2]>,
     shuffle: IndexShuffle,
-    key: u32,
-    seeds: [u32; CACHED],
+    seeds: DimSeeds<CACHED>,
     /// The current sample's reversed shuffled index.
     r: u32,
     dim: u32,
@@ -71,8 +70,7 @@ impl OwenSobolSampler {
             frame: 0,
             pixel: None,
             shuffle: IndexShuffle::default(),
-            key: 0,
-            seeds: [0; CACHED],
+            seeds: DimSeeds::new(0),
             r: 0,
             dim: 0,
         })
@@ -109,16 +107,8 @@ impl OwenSobolSampler {
     }
 
     #[inline(always)]
-    fn seed_of(&self, dim: u32) -> u32 {
-        match self.seeds.get(dim as usize) {
-            Some(&s) => s,
-            None => dim_seed(self.key, dim),
-        }
-    }
-
-    #[inline(always)]
     fn sample(&self, dim: u32) -> f32 {
-        owen_sobol_rev_f32(self.r, dim, self.seed_of(dim))
+        owen_sobol_rev_f32(self.r, dim, self.seeds.get(dim))
     }
 
     /// Dimensions `dim, dim + 1, …` into `out`: always one run.
@@ -149,9 +139,7 @@ impl Sampler for OwenSobolSampler {
                 self.seed,
             ]);
             self.shuffle = IndexShuffle::new(mix32((h >> 32) as u32));
-            self.key = h as u32;
-            let key = self.key;
-            self.seeds = core::array::from_fn(|d| dim_seed(key, d as u32));
+            self.seeds = DimSeeds::new(h as u32);
         }
         self.r = self.shuffle.rev(sample_index);
         self.dim = dim;
@@ -164,7 +152,7 @@ impl Sampler for OwenSobolSampler {
     fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
         self.start_pixel_sample(pixel, sample_index, 0);
         let v: [f32; 5] =
-            core::array::from_fn(|d| owen_sobol_rev_f32(self.r, d as u32, self.seeds[d]));
+            core::array::from_fn(|d| owen_sobol_rev_f32(self.r, d as u32, self.seeds.kept()[d]));
         self.dim = 5;
         CameraSample {
             p_film: [film(pixel[0], v[0]), film(pixel[1], v[1])],

@@ -186,6 +186,46 @@ pub(crate) fn dim_seed(key: u32, dim: u32) -> u32 {
     mix32(key ^ dim.wrapping_mul(0x9e37_79b9))
 }
 
+/// The scramble seeds ([`dim_seed`]) of one key's dimensions: the first `N` kept, the rest
+/// hashed when asked. [`OwenSobol`] keeps 256, [`OwenSobolSampler`](crate::sampler::OwenSobolSampler)
+/// the camera's five per pixel.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct DimSeeds<const N: usize> {
+    key: u32,
+    kept: [u32; N],
+}
+
+impl<const N: usize> DimSeeds<N> {
+    /// The seeds of `key`, the first `N` computed now.
+    pub(crate) fn new(key: u32) -> Self {
+        DimSeeds {
+            key,
+            kept: core::array::from_fn(|d| dim_seed(key, d as u32)),
+        }
+    }
+
+    /// The seed of dimension `dim`: kept, or hashed past the first `N`.
+    #[inline(always)]
+    pub(crate) fn get(&self, dim: u32) -> u32 {
+        match self.kept.get(dim as usize) {
+            Some(&s) => s,
+            None => dim_seed(self.key, dim),
+        }
+    }
+
+    /// The kept seeds, of dimensions `0..N`.
+    #[inline(always)]
+    pub(crate) fn kept(&self) -> &[u32; N] {
+        &self.kept
+    }
+
+    /// The key.
+    #[inline(always)]
+    pub(crate) fn key(&self) -> u32 {
+        self.key
+    }
+}
+
 /// [`dim_seed`] of the four dimensions `first .. first + 4`, written lane by lane so that it
 /// compiles to vector code.
 #[inline(always)]
@@ -377,11 +417,10 @@ pub struct OwenSobol {
     dims: u32,
     seed: u64,
     shuffle: IndexShuffle,
-    key: u32,
     /// `min(dims, UPPER_DIMS) − 3` (0 if negative): [`OwenSobol::sample_4d`]'s fast case is
     /// `first_dim < low4_end`.
     low4_end: u32,
-    seeds: [u32; CACHED_SEEDS],
+    seeds: DimSeeds<CACHED_SEEDS>,
 }
 
 impl OwenSobol {
@@ -399,14 +438,12 @@ impl OwenSobol {
     pub fn new(dims: u32, seed: u64) -> Result<OwenSobol, Error> {
         super::Sobol::new(dims)?;
         let h = hash2(seed, 0x4f57_454e); // "OWEN"
-        let key = h as u32;
         Ok(OwenSobol {
             dims,
             seed,
             shuffle: IndexShuffle::new(mix32((h >> 32) as u32)),
-            key,
             low4_end: dims.min(UPPER_DIMS as u32).saturating_sub(3),
-            seeds: core::array::from_fn(|d| dim_seed(key, d as u32)),
+            seeds: DimSeeds::new(h as u32),
         })
     }
 
@@ -428,21 +465,13 @@ impl OwenSobol {
         }
     }
 
-    #[inline(always)]
-    fn seed_of(&self, dim: u32) -> u32 {
-        match self.seeds.get(dim as usize) {
-            Some(&s) => s,
-            None => dim_seed(self.key, dim),
-        }
-    }
-
     /// The scrambled reversed value (before the final reversal) of dimension `dim` at the
     /// reversed shuffled index `r` ([`IndexShuffle::rev`]), if `dim`'s seed is kept (`None`
     /// past them).
     #[inline(always)]
     fn table_value_rev(&self, r: u32, dim: u32) -> Option<u32> {
         let d = dim as usize;
-        let &s = self.seeds.get(d)?;
+        let &s = self.seeds.kept().get(d)?;
         let p = if d < UPPER_DIMS && r & 0xffff == 0 {
             product_rev_upper(d, r)
         } else {
@@ -456,7 +485,7 @@ impl OwenSobol {
     fn value_f32(&self, r: u32, dim: u32) -> f32 {
         match self.table_value_rev(r, dim) {
             Some(w) => reversed_to_f32(w),
-            None => owen_sobol_rev_f32(r, dim, dim_seed(self.key, dim)),
+            None => owen_sobol_rev_f32(r, dim, self.seeds.get(dim)),
         }
     }
 
@@ -477,7 +506,7 @@ impl OwenSobol {
         let dim = self.wrap(dim);
         match self.table_value_rev(r, dim) {
             Some(w) => w.reverse_bits(),
-            None => owen_sobol_rev_u32(r, dim, dim_seed(self.key, dim)),
+            None => owen_sobol_rev_u32(r, dim, self.seeds.get(dim)),
         }
     }
 
@@ -500,7 +529,7 @@ impl OwenSobol {
         if index < LOW_BLOCK && first_dim < self.low4_end {
             let r = self.shuffle.rev_low_upper(index);
             let d = (first_dim as usize).min(UPPER_DIMS - 4);
-            return scramble_rev_f32x4(product_rev_upper4(d, r), four(&self.seeds, d));
+            return scramble_rev_f32x4(product_rev_upper4(d, r), four(self.seeds.kept(), d));
         }
         self.sample_4d_rest(index, first_dim)
     }
@@ -512,16 +541,16 @@ impl OwenSobol {
         let fits = first_dim.checked_add(4).is_some_and(|e| e <= self.dims);
         let d = first_dim as usize;
         if fits && d + 4 <= REV_DIMS {
-            return scramble_rev_f32x4(product_rev4(d, r), four(&self.seeds, d));
+            return scramble_rev_f32x4(product_rev4(d, r), four(self.seeds.kept(), d));
         }
         // Past the byte tables, an aligned set of four below index 2^16: the nibble tables
         // four-wide.
         if fits && r & 0xffff == 0 && d >= UPPER_DIMS && d.is_multiple_of(4) {
             let p = product_rev16x4((d - UPPER_DIMS) / 4, r >> 16);
-            return scramble_rev_f32x4(p, dim_seeds4(self.key, first_dim));
+            return scramble_rev_f32x4(p, dim_seeds4(self.seeds.key(), first_dim));
         }
         let dims = core::array::from_fn(|k| self.wrap(first_dim.wrapping_add(k as u32)));
-        owen_sobol_rev_f32x4(r, dims, dims.map(|d| self.seed_of(d)))
+        owen_sobol_rev_f32x4(r, dims, dims.map(|d| self.seeds.get(d)))
     }
 
     /// Dimensions `first_dim, first_dim + 1, …` (each wrapping) of point `index` into `out`:
@@ -612,7 +641,7 @@ mod tests {
             let shuffled = r.reverse_bits();
             for d in [0u32, 1, 2, 17, 63, 64, 500, 1023] {
                 let v = sobol_u32(shuffled, d);
-                let want = lk_hash(v.reverse_bits(), s.seed_of(d)).reverse_bits();
+                let want = lk_hash(v.reverse_bits(), s.seeds.get(d)).reverse_bits();
                 assert_eq!(s.sample_u32(i, d), want, "i {i} d {d}");
                 assert_eq!(s.sample(u64::from(i), d), (want >> 8) as f32 / 16_777_216.0);
                 assert_eq!(
@@ -725,7 +754,7 @@ mod tests {
     /// The value by the general path alone: shuffle, byte-table or masked product, hash.
     fn reference_u32(s: &OwenSobol, index: u32, dim: u32) -> u32 {
         let dim = dim % s.dims;
-        owen_sobol_rev_u32(s.shuffle.rev(index), dim, dim_seed(s.key, dim))
+        owen_sobol_rev_u32(s.shuffle.rev(index), dim, dim_seed(s.seeds.key(), dim))
     }
 
     /// Indices around the 2^8 and 2^16 edges, the ends, and scattered ones.
@@ -879,7 +908,7 @@ mod tests {
         for i in [0u32, 9, 65_536, u32::MAX] {
             let r = s.shuffle.rev(i);
             for dims in [[0u32, 1, 2, 3], [62, 63, 64, 65], [1020, 1021, 1022, 1023]] {
-                let seeds = dims.map(|d| s.seed_of(d));
+                let seeds = dims.map(|d| s.seeds.get(d));
                 let want = core::array::from_fn(|k| owen_sobol_rev_f32(r, dims[k], seeds[k]));
                 assert_eq!(owen_sobol_rev_f32x4(r, dims, seeds), want);
             }
