@@ -91,9 +91,10 @@ impl ScrambleName {
 }
 
 /// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
-/// [`NamedSampler`]), with `scramble` if given (the samplers of [`SCRAMBLE_NAMES`] only: an
-/// error names `--scramble` for the others). The error names the flag at fault. Samplers that round spp
-/// (zero-two, sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
+/// [`NamedSampler`]), with `scramble` if given (only the samplers of
+/// [`SCRAMBLE_NAMES`](nyquist::sampler::SCRAMBLE_NAMES) take one: an error names `--scramble`
+/// for the others). The error names the flag at fault. Samplers that round spp (zero-two,
+/// sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
 pub fn build_sampler(
     name: SamplerName,
     spp: u32,
