@@ -80,7 +80,7 @@ pub struct AnalyzeArgs {
     /// `-` or nothing reads stdin. Values must lie in [0, 1); decimals are read as f64.
     #[arg(value_name = "FILE.csv")]
     pub input: Option<PathBuf>,
-    /// The same CSV input as a flag (DESIGN.md's form): `--input FILE` or `--input -`.
+    /// The same CSV input as a flag: `--input FILE` or `--input -`.
     #[arg(long = "input", value_name = "FILE|-", conflicts_with = "input")]
     pub input_flag: Option<PathBuf>,
     /// Generate the points instead: which point set or sampler (names as in `points`).

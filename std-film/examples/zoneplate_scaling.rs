@@ -1,4 +1,4 @@
-//! Renders the zone plate (DESIGN.md: L = ½ + ½·cos(π r² / W), r the distance in pixels from the
+//! Renders the zone plate (docs/cli.md: L = ½ + ½·cos(π r² / W), r the distance in pixels from the
 //! image centre) through the film on N threads and prints the render time, the film's pixel
 //! storage and the process's peak resident memory (VmHWM).
 //!
@@ -15,7 +15,7 @@ use nyquist::sampler::{Jitter, PixelRangeSampler, Sample, SampleLayout, Stratifi
 use nyquist_film::{Film, FilmConfig, render_tiles};
 use std::time::Instant;
 
-/// The zone plate at film position `(x, y)` on a `w × h` image (formula of DESIGN.md).
+/// The zone plate at film position `(x, y)` on a `w × h` image (formula of docs/cli.md).
 fn zoneplate(x: f32, y: f32, w: f32, h: f32) -> f32 {
     let (dx, dy) = (
         f64::from(x) - f64::from(w) / 2.0,

@@ -7,7 +7,7 @@ use std::string::ToString;
 use std::vec::Vec;
 
 // ---------------------------------------------------------------------------------------------
-// f64 oracles: the closed-form definitions of DESIGN.md, written independently of the
+// f64 oracles: the closed-form definitions of docs/cli.md ("Filters"), written independently of the
 // implementations.
 
 fn sinc64(x: f64) -> f64 {
