@@ -9,6 +9,7 @@ use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
 use nyquist::scramble::Scramble;
 use nyquist_film::{Film, FilmConfig, FilmStats, Image, ImageFormat, render_tiles};
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -378,42 +379,7 @@ pub fn default_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
-/// Checks that `path` can take an image: a known extension and an existing folder.
-pub fn check_output(path: &Path, flag: &str, formats: &[&str]) -> Result<()> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    if !ext.as_deref().is_some_and(|e| formats.contains(&e)) {
-        bail!(
-            "{flag} {}: unknown image extension (expected {})",
-            path.display(),
-            formats
-                .iter()
-                .map(|f| format!(".{f}"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        );
-    }
-    if path.file_name().is_none() {
-        bail!("{flag} {}: not a file name", path.display());
-    }
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
-    if !dir.is_dir() {
-        bail!(
-            "{flag} {}: folder {} does not exist",
-            path.display(),
-            dir.display()
-        );
-    }
-    if path.is_dir() {
-        bail!("{flag} {}: is a folder", path.display());
-    }
-    Ok(())
-}
+pub use crate::output::check_output;
 
 /// Arguments of `nyquist render`.
 #[derive(Debug, Args)]
@@ -491,8 +457,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     )?;
     bar.finish();
     if let Some(p) = &args.output {
-        nyquist_film::write_image_file(p, &r.image)
-            .with_context(|| format!("--output {}", p.display()))?;
+        let format = ImageFormat::from_path(p).map_err(|e| anyhow!("--output: {e}"))?;
+        crate::output::write_atomic(p, |w| {
+            Ok(nyquist_film::output::write_image(w, &r.image, format)?)
+        })?;
     }
     if metrics {
         let means = reference(args.scene, args.size, None, threads)?
@@ -501,8 +469,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         let e = rmse(&r.image, &means);
         let sampling = filtered.as_ref().map_or(f64::NAN, |f| rmse(&r.image, f));
         let rate = r.stats.samples as f64 / r.seconds.max(1e-9);
+        let mut out = String::new();
         if args.json {
-            println!(
+            writeln!(
+                out,
                 "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
                 json_string(args.scene.name()),
                 args.size[0],
@@ -519,9 +489,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 r.stats.rejected,
                 json_number(r.seconds),
                 json_number(rate),
-            );
+            )?;
         } else {
-            println!(
+            writeln!(
+                out,
                 "{} {}x{}, {} {} spp, filter {}, {threads} thread{}",
                 args.scene.name(),
                 args.size[0],
@@ -530,16 +501,20 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 sampler.samples_per_pixel(),
                 args.filter,
                 if threads == 1 { "" } else { "s" }
-            );
-            println!("reference      {}", reference_kind(args.scene));
-            println!("rmse           {e:.6}");
-            println!("psnr           {:.2} dB", psnr(e));
-            println!("sampling rmse  {sampling:.6} (against the same filter's converged image)");
-            println!("samples/s      {rate:.0}");
-            println!("samples        {}", r.stats.samples);
-            println!("rejected       {}", r.stats.rejected);
-            println!("time           {:.3} s", r.seconds);
+            )?;
+            writeln!(out, "reference      {}", reference_kind(args.scene))?;
+            writeln!(out, "rmse           {e:.6}")?;
+            writeln!(out, "psnr           {:.2} dB", psnr(e))?;
+            writeln!(
+                out,
+                "sampling rmse  {sampling:.6} (against the same filter's converged image)"
+            )?;
+            writeln!(out, "samples/s      {rate:.0}")?;
+            writeln!(out, "samples        {}", r.stats.samples)?;
+            writeln!(out, "rejected       {}", r.stats.rejected)?;
+            writeln!(out, "time           {:.3} s", r.seconds)?;
         }
+        crate::output::print(&out)?;
     }
     Ok(())
 }
