@@ -235,6 +235,16 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
             bail!("no points: give a CSV file, pipe one into stdin, or use --sampler NAME");
         }
     }
+    if let (Some(sampler), Some(seed)) = (args.sampler, args.seed)
+        && seed != 0
+        && args.spp.is_none()
+        && points::ignores_seed(sampler)
+    {
+        crate::output::note(&format!(
+            "--seed {seed} changes nothing: {} points are not scrambled",
+            points::name(sampler)
+        ));
+    }
     if args.star_grid == Some(0) {
         bail!("--star-grid 0: need at least one cell per axis");
     }
@@ -297,7 +307,7 @@ fn generate(args: &AnalyzeArgs, sampler: SamplerName, seed: u64) -> Result<(Vec<
     let pa = PointsArgs {
         sampler,
         count: args.count,
-        dims: args.dims.unwrap_or(2),
+        dims: args.dims,
         seed,
         skip: args.skip.unwrap_or(0),
         grid: args.grid,
