@@ -309,6 +309,7 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
     if spp == 0 {
         bail!("--spp 0: need at least one sample per pixel");
     }
+    crate::render::check_spp_limit("--sampler", &n, spp)?;
     if u64::from(spp) * u64::from(dims) > MAX_VALUES {
         bail!("--spp {spp} × --dims {dims} is more than {MAX_VALUES} values");
     }

@@ -91,6 +91,26 @@ impl ScrambleName {
     }
 }
 
+/// The most samples per pixel sampler `name` (a command-line name) takes below the CLI's own
+/// limit: best-candidate's baked table has 4096 rows, pmj02's table 65536 points.
+pub fn spp_limit(name: &str) -> Option<u32> {
+    match name {
+        "best-candidate" => Some(nyquist::sampler::best_candidate::TABLE_SIZE),
+        "pmj02" => u32::try_from(nyquist::sequence::PMJ02_MAX_POINTS).ok(),
+        _ => None,
+    }
+}
+
+/// The error for `spp` above [`spp_limit`], naming `flag` (`--sampler`, `--samplers`).
+pub fn check_spp_limit(flag: &str, name: &str, spp: u32) -> Result<()> {
+    match spp_limit(name) {
+        Some(max) if spp > max => {
+            bail!("{flag} {name} --spp {spp}: {name} takes at most {max} samples per pixel")
+        }
+        _ => Ok(()),
+    }
+}
+
 /// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
 /// [`NamedSampler`]), with `scramble` if given (only the samplers of
 /// [`SCRAMBLE_NAMES`](nyquist::sampler::SCRAMBLE_NAMES) take one: an error names `--scramble`
@@ -110,6 +130,7 @@ pub fn build_sampler(
     if spp > 1 << 20 {
         bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
     }
+    check_spp_limit("--sampler", &n, spp)?;
     let built = match scramble {
         Some(sc) => NamedSampler::with_scramble(&n, size, spp, seed, sc.scramble()),
         None => NamedSampler::new(&n, size, spp, seed),
