@@ -200,6 +200,16 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         }
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
+    let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
+    let work: f64 = cells
+        .iter()
+        .map(|c| {
+            pixels
+                * f64::from(c.sampler.samples_per_pixel())
+                * crate::render::footprint_pixels(args.size, &filters[c.filter].1)
+        })
+        .sum();
+    let large = crate::render::warn_if_large(work, &format!("{count} renders"));
     let start = Instant::now();
     let means = reference(args.scene, args.size, None, threads)?
         .ok_or_else(|| anyhow!("no reference for this scene"))?;
@@ -207,7 +217,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     for (_, f) in filters {
         filtered.push(reference(args.scene, args.size, Some(f), threads)?);
     }
-    let results = render_cells(args, &cells, threads)?;
+    let results = render_cells(args, &cells, threads, large)?;
     let seconds = start.elapsed().as_secs_f64();
 
     let errors: Vec<f64> = results.iter().map(|r| rmse(&r.image, &means)).collect();
@@ -385,10 +395,18 @@ fn sheet_path(args: &CompareArgs) -> Option<PathBuf> {
 }
 
 /// Renders every cell, `threads` at a time (each render on one thread, the longest first),
-/// with one progress bar over all tiles of the sheet.
-fn render_cells(args: &CompareArgs, cells: &[Cell], threads: usize) -> Result<Vec<Rendered>> {
+/// with one progress bar over all tiles of the sheet (shown at once when `large`).
+fn render_cells(
+    args: &CompareArgs,
+    cells: &[Cell],
+    threads: usize,
+    large: bool,
+) -> Result<Vec<Rendered>> {
     let per_cell = tile_count(args.size);
     let bar = Progress::new(per_cell * cells.len() as u64, "compare");
+    if large {
+        bar.show_now();
+    }
     let mut order: Vec<usize> = (0..cells.len()).collect();
     order.sort_by_key(|&i| std::cmp::Reverse(cells[i].sampler.samples_per_pixel()));
     let next = AtomicUsize::new(0);

@@ -144,6 +144,28 @@ pub fn build_sampler(
     })
 }
 
+/// Pixel updates above which `render` and `compare` warn before they start (a minute or more
+/// of one core's work).
+pub const LARGE_WORK: f64 = 2e10;
+
+/// Pixels one sample of a `size` image adds to through `filter`: its footprint, `2r + 1`
+/// pixels per axis, clipped to the image.
+pub fn footprint_pixels(size: [u32; 2], filter: &FilterKind) -> f64 {
+    let [rx, ry] = nyquist::filter::Filter::radius(filter);
+    let side = |r: f32, n: u32| (2.0 * f64::from(r)).ceil().clamp(0.0, f64::from(n) - 1.0) + 1.0;
+    side(rx, size[0]) * side(ry, size[1])
+}
+
+/// Prints one warning line when `work` pixel updates exceed [`LARGE_WORK`] and returns whether
+/// it did (the caller then shows its progress bar at once).
+pub fn warn_if_large(work: f64, what: &str) -> bool {
+    if work <= LARGE_WORK {
+        return false;
+    }
+    eprintln!("nyquist: warning: {what}: about {work:.1e} pixel updates; this may take minutes");
+    true
+}
+
 /// A finished render.
 #[derive(Debug)]
 pub struct Rendered {
@@ -467,7 +489,20 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
+    let footprint = footprint_pixels(args.size, &args.filter);
+    let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
+    let large = warn_if_large(
+        pixels * f64::from(sampler.samples_per_pixel()) * footprint,
+        &format!(
+            "--filter {} adds each of {} samples to up to {footprint} pixels",
+            args.filter,
+            pixels * f64::from(sampler.samples_per_pixel())
+        ),
+    );
     let bar = Progress::new(tile_count(args.size), "render");
+    if large {
+        bar.show_now();
+    }
     let r = render(
         args.scene,
         args.size,
