@@ -17,15 +17,19 @@ pub const BROKEN_PIPE_STATUS: u8 = 141;
 
 /// Whether `e` (or any error it wraps) is a write into a closed pipe.
 pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
-    e.chain().any(|c| {
-        c.downcast_ref::<std::io::Error>()
-            .is_some_and(|io| io.kind() == ErrorKind::BrokenPipe)
-    })
+    io_error(e).is_some_and(|io| io.kind() == ErrorKind::BrokenPipe)
 }
 
-/// The first I/O error `e` wraps, if any.
+/// The first I/O error `e` wraps, if any (also inside the PNG encoder's error, which does not
+/// report it as its source).
 fn io_error(e: &anyhow::Error) -> Option<&std::io::Error> {
-    e.chain().find_map(|c| c.downcast_ref::<std::io::Error>())
+    e.chain().find_map(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .or(match c.downcast_ref::<png::EncodingError>() {
+                Some(png::EncodingError::IoError(io)) => Some(io),
+                _ => None,
+            })
+    })
 }
 
 /// The folder `path` goes into (`.` for a bare file name).
