@@ -512,22 +512,8 @@ pub struct ConvergeArgs {
 
 /// Checks the flags and turns them into a study.
 fn study_of(args: &ConvergeArgs) -> Result<Study> {
-    let samplers = if args.samplers.is_empty() {
-        // A default sampler whose limit is below --max-spp is left out, with a note; named
-        // in --samplers it is an error.
-        let mut names = default_samplers();
-        names.retain(|name| match crate::render::spp_limit(name) {
-            Some(max) if args.max_spp > max => {
-                crate::output::note(&format!(
-                    "--max-spp {}: {name} takes at most {max} samples per pixel; left out \
-                     of the study",
-                    args.max_spp
-                ));
-                false
-            }
-            _ => true,
-        });
-        names
+    let mut samplers = if args.samplers.is_empty() {
+        default_samplers()
     } else {
         args.samplers.iter().map(|s| s.trim().to_owned()).collect()
     };
@@ -559,6 +545,22 @@ fn study_of(args: &ConvergeArgs) -> Result<Study> {
             args.max_spp
         );
     }
+    // A default sampler whose limit is below --max-spp is left out, with a note once every
+    // flag is checked; named in --samplers it is an error.
+    let mut left_out = Vec::new();
+    if args.samplers.is_empty() {
+        samplers.retain(|name| match crate::render::spp_limit(name) {
+            Some(max) if args.max_spp > max => {
+                left_out.push(format!(
+                    "--max-spp {}: {name} takes at most {max} samples per pixel; left out of \
+                     the study",
+                    args.max_spp
+                ));
+                false
+            }
+            _ => true,
+        });
+    }
     let study = Study {
         samplers,
         integrands: args.integrands.clone(),
@@ -576,6 +578,7 @@ fn study_of(args: &ConvergeArgs) -> Result<Study> {
             study.work()
         );
     }
+    left_out.iter().for_each(|n| crate::output::note(n));
     Ok(study)
 }
 
