@@ -209,7 +209,10 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 * crate::render::footprint_pixels(args.size, &filters[c.filter].1)
         })
         .sum();
-    let large = crate::render::warn_if_large(work, &format!("{count} renders"));
+    let large = crate::render::warn_if_large(
+        work,
+        &format!("{count} render{}", if count == 1 { "" } else { "s" }),
+    );
     let start = Instant::now();
     let means = reference(args.scene, args.size, None, threads)?
         .ok_or_else(|| anyhow!("no reference for this scene"))?;

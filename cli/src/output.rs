@@ -208,15 +208,6 @@ pub fn note(text: &str) {
     eprintln!("nyquist: note: {text}");
 }
 
-/// Adds `flag path: ` before a film error's message and keeps its I/O reason once (the film's
-/// error prints its cause and also returns it as its source).
-pub fn film_error(flag: &str, path: &Path, e: nyquist_film::Error) -> anyhow::Error {
-    match e {
-        nyquist_film::Error::Io(io) => io_message(flag, path, &io),
-        e => anyhow!("{flag} {}: {e}", path.display()),
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -309,6 +309,26 @@ fn long_work_is_announced_with_its_size() {
         "nyquist: warning: --spectrum: 100000 realisations × 64 points × 129² frequencies is \
          about 1.1e11 terms; this may take minutes\n"
     );
+    let sheet = dir.join("sheet.png");
+    let line = first_stderr_line(
+        &[
+            "compare",
+            "--samplers",
+            "random,stratified",
+            "--filters",
+            "box:radius=1000",
+            "--spp",
+            "16",
+            "-o",
+            sheet.to_str().unwrap(),
+        ],
+        &dir,
+    );
+    assert_eq!(
+        line,
+        "nyquist: warning: 2 renders: about 1.4e11 pixel updates; this may take minutes\n"
+    );
+    assert!(!sheet.exists());
     // Ordinary work: no warning.
     let o = nyquist(&["render", "--size", "16x16", "--spp", "4", "--metrics"]);
     assert_eq!(stderr(&o), "");
