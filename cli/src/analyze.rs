@@ -247,7 +247,7 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
         && points::ignores_seed(sampler)
     {
         crate::output::note(&format!(
-            "--seed {seed} changes nothing: {} points are not scrambled",
+            "--seed {seed} changes nothing: {} points do not depend on a seed",
             points::name(sampler)
         ));
     }

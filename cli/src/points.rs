@@ -152,8 +152,8 @@ pub fn run(args: &PointsArgs) -> Result<()> {
     }
     if args.seed != 0 && !pixel_mode(args) && ignores_seed(args.sampler) {
         crate::output::note(&format!(
-            "--seed {} changes nothing: {} points are not scrambled (owen-sobol, zero-two, \
-             pmj02 and the pixel samplers with --spp take a seed)",
+            "--seed {} changes nothing: {} points do not depend on a seed (with --spp, the \
+             halton, hammersley and sobol pixel samplers are scrambled by it)",
             args.seed,
             name(args.sampler)
         ));
@@ -298,7 +298,7 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
                  instead of --count"
             );
         }
-        bail!("--count does not apply with --spp: a pixel takes spp samples");
+        bail!("--count {count} does not apply with --spp: a pixel takes spp samples");
     }
     if args.skip != 0 {
         bail!("--skip does not apply with --spp");

@@ -129,8 +129,8 @@ fn seed_on_an_unscrambled_set_gets_a_note() {
         let o = assert_note(
             &["points", "--sampler", s, "--count", "4", "--seed", "5"],
             &format!(
-                "--seed 5 changes nothing: {s} points are not scrambled (owen-sobol, zero-two, \
-                 pmj02 and the pixel samplers with --spp take a seed)"
+                "--seed 5 changes nothing: {s} points do not depend on a seed (with --spp, the \
+                 halton, hammersley and sobol pixel samplers are scrambled by it)"
             ),
         );
         if s == "halton" {
