@@ -49,6 +49,9 @@ fn parse_spec(s: &str) -> std::result::Result<FilterKind, String> {
 
 /// Runs the subcommand: rows on stdout, `radius` and `integral` lines on stderr.
 pub fn run(args: &FilterArgs) -> Result<()> {
+    if let Some(path) = &args.plot {
+        crate::output::check_output(path, "--plot", &["png"])?;
+    }
     let f = &args.filter;
     let [rx, ry] = f.radius();
     let rows = if args.table {
@@ -90,7 +93,9 @@ pub fn run(args: &FilterArgs) -> Result<()> {
     Ok(())
 }
 
+/// Writes the rows; `-0` (a negative lobe's zero, or a grid point at the centre) prints as `0`.
 fn write_rows(w: &mut dyn Write, rows: &[[f32; 3]], format: Format) -> Result<()> {
+    let rows = rows.iter().map(|r| r.map(|v| v + 0.0));
     match format {
         Format::Csv => {
             for [x, y, v] in rows {
@@ -99,7 +104,7 @@ fn write_rows(w: &mut dyn Write, rows: &[[f32; 3]], format: Format) -> Result<()
         }
         Format::Json => {
             write!(w, "[")?;
-            for (k, [x, y, v]) in rows.iter().enumerate() {
+            for (k, [x, y, v]) in rows.enumerate() {
                 let sep = if k == 0 { "" } else { "," };
                 write!(w, "{sep}{{\"x\":{x},\"y\":{y},\"value\":{v}}}")?;
             }
