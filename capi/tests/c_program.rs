@@ -64,15 +64,37 @@ fn staticlib() -> PathBuf {
     panic!("cargo build -p nyquist-capi reported no .a artifact:\n{stdout}");
 }
 
-/// Compiles and runs the C program in `source`; returns its standard output.
-fn run_c_program(source: &Path, name: &str) -> String {
+/// How a C program is built: plain (`-Wall -Wextra -Werror -O1`), or also with AddressSanitizer
+/// and UndefinedBehaviorSanitizer, which abort on the first report.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Build {
+    Plain,
+    Sanitized,
+}
+
+/// Compiles and runs the C program in `source`; returns its standard output. A sanitized run
+/// fails on any sanitizer report (address errors, leaks, undefined behaviour) on stderr.
+fn run_c_program(source: &Path, name: &str, build: Build) -> String {
     let lib = staticlib();
-    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(name);
+    let suffix = if build == Build::Sanitized {
+        "-sanitized"
+    } else {
+        ""
+    };
+    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}{suffix}"));
     let ws = workspace();
     let mut cc = Command::new("cc");
     cc.args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-O1", "-I"])
-        .arg(ws.join("capi/include"))
-        .arg(source)
+        .arg(ws.join("capi/include"));
+    if build == Build::Sanitized {
+        cc.args([
+            "-g",
+            "-fsanitize=address,undefined",
+            "-fno-sanitize-recover=all",
+            "-fno-omit-frame-pointer",
+        ]);
+    }
+    cc.arg(source)
         .arg(&lib)
         .args(["-lm", "-lpthread", "-ldl", "-o"])
         .arg(&exe);
@@ -84,18 +106,34 @@ fn run_c_program(source: &Path, name: &str) -> String {
     };
     assert!(
         out.status.success(),
-        "cc failed to compile or link {}:\n{}{}",
+        "cc failed to compile or link {} (sanitized builds need the compiler's libasan and \
+         libubsan, part of Debian's gcc):\n{}{}",
         source.display(),
         String::from_utf8_lossy(&out.stdout),
         String::from_utf8_lossy(&out.stderr)
     );
-    let run = Command::new(&exe).output().expect("run the C test program");
+    let run = Command::new(&exe)
+        .env(
+            "ASAN_OPTIONS",
+            "detect_leaks=1:abort_on_error=0:exitcode=86",
+        )
+        .env("UBSAN_OPTIONS", "print_stacktrace=1:halt_on_error=1")
+        .output()
+        .expect("run the C test program");
+    let stderr = String::from_utf8_lossy(&run.stderr);
     assert!(
         run.status.success(),
-        "the C test program failed ({}):\n{}",
+        "the C test program failed ({}):\n{}{stderr}",
         run.status,
-        String::from_utf8_lossy(&run.stderr)
+        String::from_utf8_lossy(&run.stdout)
     );
+    for report in [
+        "ERROR: AddressSanitizer",
+        "ERROR: LeakSanitizer",
+        "runtime error:",
+    ] {
+        assert!(!stderr.contains(report), "sanitizer report:\n{stderr}");
+    }
     String::from_utf8(run.stdout).expect("the C program prints UTF-8")
 }
 
@@ -363,8 +401,8 @@ fn error_lines(e: &mut Expected) {
     e.line(&format!("version {}", env!("CARGO_PKG_VERSION")));
 }
 
-#[test]
-fn c_program_matches_rust_results() {
+/// Every line `tests/c/capi_test.c` must print, from the Rust side.
+fn expected_c_output() -> String {
     let mut e = Expected(String::new());
     radical_lines(&mut e);
     sequence_lines(&mut e);
@@ -373,8 +411,14 @@ fn c_program_matches_rust_results() {
     filter_lines(&mut e);
     error_lines(&mut e);
     e.line("done");
-    let actual = run_c_program(&workspace().join("tests/c/capi_test.c"), "capi_test");
-    let (want, got): (Vec<&str>, Vec<&str>) = (e.0.lines().collect(), actual.lines().collect());
+    e.0
+}
+
+/// Runs `tests/c/capi_test.c` built as `build` and compares its output line by line.
+fn check_c_program(build: Build) {
+    let want = expected_c_output();
+    let actual = run_c_program(&workspace().join("tests/c/capi_test.c"), "capi_test", build);
+    let (want, got): (Vec<&str>, Vec<&str>) = (want.lines().collect(), actual.lines().collect());
     for (i, (w, g)) in want.iter().zip(&got).enumerate() {
         assert_eq!(
             g,
@@ -393,6 +437,32 @@ fn c_program_matches_rust_results() {
 }
 
 #[test]
+fn c_program_matches_rust_results() {
+    check_c_program(Build::Plain);
+}
+
+/// The same program under AddressSanitizer and UndefinedBehaviorSanitizer: every pointer the
+/// API reads or writes from C stays inside its buffer, and nothing leaks.
+#[test]
+fn c_program_is_clean_under_sanitizers() {
+    check_c_program(Build::Sanitized);
+}
+
+/// `tests/c/capi_misuse.c` misuses the API on purpose (null handles and out-pointers, zero and
+/// wrong lengths, misaligned buffers, bad enums and specs, a double destroy through the
+/// null guard): every call gets its documented status, no output is touched, and the
+/// sanitizers report nothing.
+#[test]
+fn misuse_gets_error_codes_and_no_sanitizer_report() {
+    let out = run_c_program(
+        &workspace().join("tests/c/capi_misuse.c"),
+        "capi_misuse",
+        Build::Sanitized,
+    );
+    assert_eq!(out, "misuse ok\n");
+}
+
+#[test]
 fn readme_c_example_compiles_and_runs() {
     let readme = std::fs::read_to_string(workspace().join("README.md")).expect("README.md");
     let start = readme.find("```c\n").expect("README has a ```c example") + "```c\n".len();
@@ -401,7 +471,7 @@ fn readme_c_example_compiles_and_runs() {
         .expect("the ```c block is closed");
     let source = Path::new(env!("CARGO_TARGET_TMPDIR")).join("readme_example.c");
     std::fs::write(&source, &readme[start..start + len]).unwrap();
-    let out = run_c_program(&source, "readme_example");
+    let out = run_c_program(&source, "readme_example", Build::Plain);
     let words: Vec<&str> = out.split_whitespace().collect();
     assert_eq!(words.len(), 2, "{out}");
     assert_eq!(

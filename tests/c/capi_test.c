@@ -110,9 +110,13 @@ static void sequences(void) {
         CHECK(nyq_sequence_sample_f64(q, 13, q->dims - 1, &g));
         printf("seq64 %" PRIu32 " 13", q->kind);
         put_double(g);
-        float buf[12];
+        float buf[16]; /* four points of up to four dimensions */
         uint64_t n = 0;
         size_t len = 4 * (size_t)q->dims;
+        if (len > sizeof buf / sizeof buf[0]) {
+            fprintf(stderr, "seqfill: %zu floats do not fit the buffer\n", len);
+            exit(1);
+        }
         CHECK(nyq_sequence_fill(q, 5, q->dims, buf, len, &n));
         printf("seqfill %" PRIu32 " %" PRIu64, q->kind, n);
         put_floats(buf, len);
