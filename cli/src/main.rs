@@ -19,7 +19,8 @@ use std::process::ExitCode;
     after_long_help = "Exit status: 0 on success; 2 for bad input or output that cannot be \
     written (one line on stderr, and no file left behind); 141 (128 + SIGPIPE), with nothing \
     printed, when the reader of stdout goes away, e.g. `nyquist points --count 100000 | head -3`, \
-    as `seq` or `cat` do."
+    as `seq` or `cat` do; 130 or 143 when SIGINT or SIGTERM ends the run (a file being written \
+    is removed first)."
 )]
 struct Cli {
     #[command(subcommand)]
@@ -62,6 +63,10 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };
+    if let Err(e) = nyquist_cli::output::remove_temporaries_on_signals() {
+        eprintln!("nyquist: {e:#}");
+        return ExitCode::from(2);
+    }
     let result = match &cli.command {
         Command::Points(args) => points::run(args),
         Command::Filter(args) => filter::run(args),

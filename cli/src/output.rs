@@ -9,11 +9,48 @@ use anyhow::{Result, anyhow, bail};
 use std::fs::{File, OpenOptions};
 use std::io::{BufWriter, ErrorKind, Write};
 use std::path::{Path, PathBuf};
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// The exit status when stdout's reader has gone away (`nyquist points | head -3`): 128 + 13
 /// (SIGPIPE), the status a shell reports for `seq`, `cat` or `yes` in the same place. Nothing
 /// is printed.
 pub const BROKEN_PIPE_STATUS: u8 = 141;
+
+/// The temporary files of the writes in progress. A file is created and renamed into place while
+/// this lock is held, so the signal handler sees every temporary file that exists, and removes
+/// them before the process exits.
+static IN_PROGRESS: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn in_progress() -> MutexGuard<'static, Vec<PathBuf>> {
+    IN_PROGRESS.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// Installs the handler of SIGINT and SIGTERM: it removes the temporary files of writes in
+/// progress ([`write_atomic`]) and exits with status 128 + the signal's number (130 for SIGINT,
+/// 143 for SIGTERM), as a shell reports a process the signal killed. The handler runs on a
+/// thread of its own, so no work is interrupted in an unsafe state.
+///
+/// # Errors
+/// If the handler cannot be registered (the operating system refuses).
+pub fn remove_temporaries_on_signals() -> Result<()> {
+    use signal_hook::consts::{SIGINT, SIGTERM};
+    let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM])
+        .map_err(|e| anyhow!("cannot install the SIGINT/SIGTERM handler: {e}"))?;
+    std::thread::Builder::new()
+        .name("signals".into())
+        .spawn(move || {
+            if let Some(signal) = signals.forever().next() {
+                // Held until exit: no new temporary file appears after the removal.
+                let files = in_progress();
+                for f in files.iter() {
+                    let _ = std::fs::remove_file(f);
+                }
+                std::process::exit(128 + signal);
+            }
+        })
+        .map_err(|e| anyhow!("cannot start the signal thread: {e}"))?;
+    Ok(())
+}
 
 /// Whether `e` (or any error it wraps) is a write into a closed pipe.
 pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
@@ -152,17 +189,27 @@ pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn Write) -> Result<()
     }
     let tmp = temporary(path)?;
     let result = (|| -> Result<()> {
-        let file = File::create(&tmp).map_err(|e| io_message(FLAG, path, &e))?;
+        let file = {
+            let mut files = in_progress();
+            let file = File::create(&tmp).map_err(|e| io_message(FLAG, path, &e))?;
+            files.push(tmp.clone());
+            file
+        };
         let mut w = BufWriter::new(file);
         write(&mut w).map_err(fail)?;
         let file = w
             .into_inner()
             .map_err(|e| io_message(FLAG, path, e.error()))?;
         file.sync_all().map_err(|e| io_message(FLAG, path, &e))?;
-        std::fs::rename(&tmp, path).map_err(|e| io_message(FLAG, path, &e))
+        let mut files = in_progress();
+        std::fs::rename(&tmp, path).map_err(|e| io_message(FLAG, path, &e))?;
+        files.retain(|f| f != &tmp);
+        Ok(())
     })();
     if result.is_err() {
+        let mut files = in_progress();
         let _ = std::fs::remove_file(&tmp);
+        files.retain(|f| f != &tmp);
     }
     result
 }

@@ -289,8 +289,8 @@ pub fn reference(
             crate::scene::zoneplate_filtered_reference(size[0], size[1], filter.as_dyn())
         });
     }
-    let key: String = filter
-        .to_string()
+    let spec = filter.to_string();
+    let key: String = spec
         .chars()
         .map(|c| {
             if c.is_ascii_alphanumeric() || c == '.' {
@@ -302,19 +302,22 @@ pub fn reference(
         .collect();
     let path = cache_dir().map(|d| {
         d.join(format!(
-            "reference-v1-{}-{}x{}-stratified{REFERENCE_STRATA}-{key}.pfm",
+            "reference-v2-{}-{}x{}-stratified{REFERENCE_STRATA}-{key}.pfm",
             scene.name(),
             size[0],
             size[1]
         ))
     });
-    if let Some(p) = &path
-        && let Ok(file) = std::fs::File::open(p)
-        && let Ok(img) = nyquist_film::output::pfm::read_pfm(&mut std::io::BufReader::new(file))
-        && img.width() == size[0]
-        && img.height() == size[1]
-    {
-        return Ok(Some(channel0(&img)));
+    let header = reference_header(scene, size, &spec);
+    if let Some(p) = &path {
+        match read_cached_reference(p, &header, size) {
+            Ok(Some(img)) => return Ok(Some(channel0(&img))),
+            Ok(None) => {}
+            Err(why) => eprintln!(
+                "nyquist: note: the cached reference {} {why}; rendering it again",
+                p.display()
+            ),
+        }
     }
     let sampler = build_sampler(
         SamplerName::Stratified,
@@ -328,11 +331,97 @@ pub fn reference(
     bar.finish();
     if let Some(p) = &path {
         // A cache that cannot be written only costs time next run.
-        let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new(".")))
-            .map_err(nyquist_film::Error::Io)
-            .and_then(|()| nyquist_film::write_image_file(p, &r.image));
+        let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new("."))).map(|()| {
+            crate::output::write_atomic(p, |w| write_cached_reference(w, &header, &r.image))
+        });
     }
     Ok(Some(channel0(&r.image)))
+}
+
+/// The first lines of a cached reference: what it was made from. A cache file whose header
+/// differs was made from other parameters (or by another version of the format).
+fn reference_header(scene: Scene, size: [u32; 2], filter: &str) -> String {
+    format!(
+        "nyquist reference image\nscene {}\nsize {}x{}\nsampler stratified {REFERENCE_STRATA}x{REFERENCE_STRATA} spp, seed {REFERENCE_SEED}\nfilter {filter}\n",
+        scene.name(),
+        size[0],
+        size[1]
+    )
+}
+
+/// FNV-1a, 64 bits: the checksum of a cached reference's image bytes.
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// Writes a cached reference: `header`, a line with the checksum and length of the image bytes,
+/// then the image as PFM.
+fn write_cached_reference(w: &mut dyn std::io::Write, header: &str, image: &Image) -> Result<()> {
+    let mut pfm = Vec::new();
+    nyquist_film::output::pfm::write_pfm(&mut pfm, image)?;
+    write!(
+        w,
+        "{header}fnv1a64 {:016x} bytes {}\n",
+        fnv1a64(&pfm),
+        pfm.len()
+    )?;
+    w.write_all(&pfm)?;
+    Ok(())
+}
+
+/// Reads the cached reference at `path`: `Ok(None)` when there is none, `Err(why)` when the file
+/// is there but unusable — made from other parameters, truncated, its checksum wrong, not an
+/// image of `size`, or holding a non-finite pixel — and the image otherwise.
+fn read_cached_reference(
+    path: &Path,
+    header: &str,
+    size: [u32; 2],
+) -> std::result::Result<Option<Image>, String> {
+    let bytes = match std::fs::read(path) {
+        Ok(b) => b,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(format!("cannot be read ({e})")),
+    };
+    let rest = bytes
+        .strip_prefix(header.as_bytes())
+        .ok_or("was made from other parameters")?;
+    let line_end = rest
+        .iter()
+        .position(|&b| b == b'\n')
+        .ok_or("is truncated")?;
+    let line = std::str::from_utf8(&rest[..line_end]).map_err(|_| "has a malformed checksum")?;
+    let payload = &rest[line_end + 1..];
+    let (sum, len) = line
+        .strip_prefix("fnv1a64 ")
+        .and_then(|l| l.split_once(" bytes "))
+        .and_then(|(h, n)| Some((u64::from_str_radix(h, 16).ok()?, n.parse::<usize>().ok()?)))
+        .ok_or("has a malformed checksum line")?;
+    if payload.len() != len {
+        return Err(format!(
+            "is truncated or padded ({} image bytes, {len} expected)",
+            payload.len()
+        ));
+    }
+    if fnv1a64(payload) != sum {
+        return Err("does not match its checksum".into());
+    }
+    let img = nyquist_film::output::pfm::read_pfm(&mut &payload[..])
+        .map_err(|e| format!("is not a PFM image ({e})"))?;
+    if [img.width(), img.height()] != size {
+        return Err(format!(
+            "is {}x{}, not {}x{}",
+            img.width(),
+            img.height(),
+            size[0],
+            size[1]
+        ));
+    }
+    if img.data().iter().any(|v| !v.is_finite()) {
+        return Err("has a non-finite pixel".into());
+    }
+    Ok(Some(img))
 }
 
 fn cache_dir() -> Option<PathBuf> {
