@@ -361,9 +361,9 @@ fn fnv1a64(bytes: &[u8]) -> u64 {
 fn write_cached_reference(w: &mut dyn std::io::Write, header: &str, image: &Image) -> Result<()> {
     let mut pfm = Vec::new();
     nyquist_film::output::pfm::write_pfm(&mut pfm, image)?;
-    write!(
+    writeln!(
         w,
-        "{header}fnv1a64 {:016x} bytes {}\n",
+        "{header}fnv1a64 {:016x} bytes {}",
         fnv1a64(&pfm),
         pfm.len()
     )?;
