@@ -94,7 +94,7 @@ fn a_damaged_cached_reference_is_rendered_again_with_a_note() {
     assert_eq!(String::from_utf8_lossy(&first.stderr), "");
     let want = rmse(&first.stdout);
     let dir = &cache.join("nyquist");
-    let names = files(&dir);
+    let names = files(dir);
     assert_eq!(names.len(), 1, "{names:?}");
     let file = dir.join(&names[0]);
     let good = std::fs::read(&file).unwrap();
