@@ -798,7 +798,6 @@ impl crate::plot::Figure for Plot<'_> {
         use plotters::prelude::*;
         use plotters::style::text_anchor::{HPos, Pos, VPos};
         let study = self.study;
-        root.fill(&WHITE)?;
         let (w, _) = self.size();
         let mut y = MARGIN as i32;
         for line in wrap(&command(study), w - 2 * MARGIN, 18.0).iter().take(2) {

@@ -165,7 +165,6 @@ impl crate::plot::Figure for Plot<'_> {
         use plotters::prelude::*;
         use plotters::style::text_anchor::{HPos, Pos, VPos};
         let f: &dyn Filter = self.filter.as_dyn();
-        root.fill(&WHITE)?;
         let m = MARGIN as i32;
         root.draw_text(
             &format!("nyquist filter --filter {}", self.filter),

@@ -120,7 +120,9 @@ pub struct Raster {
 pub trait Figure {
     /// Width and height in pixels (SVG user units).
     fn size(&self) -> (u32, u32);
-    /// Draws the figure on `root`; returns the rasters to place on it.
+    /// Draws the figure on `root`, a white page (the figure draws no background, so that
+    /// rasters can lie under it); returns the rasters to place under the drawing. It may be
+    /// called twice for one PNG: it must draw the same each time.
     ///
     /// # Errors
     /// A drawing error of the backend.
@@ -154,15 +156,23 @@ pub fn render(fig: &impl Figure, kind: Kind) -> Result<Vec<u8>> {
     let (w, h) = fig.size();
     match kind {
         Kind::Png => {
-            let mut rgb = vec![255u8; 3 * w as usize * h as usize];
-            let rasters = {
-                let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
+            let draw = |rgb: &mut Vec<u8>| -> Result<Vec<Raster>> {
+                let root = BitMapBackend::with_buffer(rgb, (w, h)).into_drawing_area();
                 let rasters = fig.draw(&root)?;
                 root.present()?;
-                rasters
+                Ok(rasters)
             };
-            for r in &rasters {
-                blit(&mut rgb, w, h, r);
+            let white = vec![255u8; 3 * w as usize * h as usize];
+            let mut rgb = white.clone();
+            let rasters = draw(&mut rgb)?;
+            if !rasters.is_empty() {
+                // Rasters go under the drawing, as in the SVG: lay them on a white page, then
+                // draw again on top.
+                rgb = white;
+                for r in &rasters {
+                    blit(&mut rgb, w, h, r);
+                }
+                draw(&mut rgb)?;
             }
             encode_png(&rgb, w, h)
         }
@@ -170,6 +180,7 @@ pub fn render(fig: &impl Figure, kind: Kind) -> Result<Vec<u8>> {
             let mut svg = String::new();
             let rasters = {
                 let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
+                root.fill(&WHITE)?;
                 let rasters = fig.draw(&root)?;
                 root.present()?;
                 rasters
@@ -218,8 +229,8 @@ pub fn encode_png(rgb: &[u8], w: u32, h: u32) -> Result<Vec<u8>> {
     Ok(out)
 }
 
-/// Puts each raster into the SVG as an `<image>` right after the background (the first
-/// element), so that frames, ticks and text drawn later stay on top.
+/// Puts each raster into the SVG as an `<image>` right after the white background (the first
+/// element), so that frames, ticks and text stay on top.
 fn embed_rasters(svg: &mut String, rasters: &[Raster]) -> Result<()> {
     if rasters.is_empty() {
         return Ok(());
@@ -392,6 +403,8 @@ pub struct Axes {
     pub y_desc: String,
     /// Caption above the panel.
     pub caption: String,
+    /// The panel shows a raster: no grid lines, ticks outside the frame.
+    pub image: bool,
 }
 
 fn log_tick_label(v: f64, _: f64) -> String {
@@ -419,6 +432,7 @@ impl Axes {
             x_desc: String::new(),
             y_desc: String::new(),
             caption: String::new(),
+            image: false,
         }
     }
 
@@ -440,6 +454,7 @@ impl Axes {
             x_desc: String::new(),
             y_desc: String::new(),
             caption: String::new(),
+            image: false,
         }
     }
 }
@@ -487,20 +502,22 @@ where
         .axis_style(TRANSPARENT)
         .draw()?;
     let plot = chart.plotting_area();
-    // Grid.
     let (x0, x1, y0, y1) = (axes.x.start, axes.x.end, axes.y.start, axes.y.end);
-    for (values, style) in [(&axes.x_minor, GRID_MINOR), (&axes.x_major, GRID)] {
-        for &v in values {
-            plot.draw(&PathElement::new(vec![(v, y0), (v, y1)], style))?;
+    if !axes.image {
+        for (values, style) in [(&axes.x_minor, GRID_MINOR), (&axes.x_major, GRID)] {
+            for &v in values {
+                plot.draw(&PathElement::new(vec![(v, y0), (v, y1)], style))?;
+            }
+        }
+        for (values, style) in [(&axes.y_minor, GRID_MINOR), (&axes.y_major, GRID)] {
+            for &v in values {
+                plot.draw(&PathElement::new(vec![(x0, v), (x1, v)], style))?;
+            }
         }
     }
-    for (values, style) in [(&axes.y_minor, GRID_MINOR), (&axes.y_major, GRID)] {
-        for &v in values {
-            plot.draw(&PathElement::new(vec![(x0, v), (x1, v)], style))?;
-        }
-    }
-    // Ticks inside the frame on all four sides.
-    for (values, len) in [(&axes.x_minor, 3), (&axes.x_major, 6)] {
+    // Ticks on all four sides: inside the frame, or outside around a raster.
+    let out = if axes.image { -1 } else { 1 };
+    for (values, len) in [(&axes.x_minor, 3 * out), (&axes.x_major, 6 * out)] {
         for &v in values {
             plot.draw(
                 &(EmptyElement::at((v, y0)) + PathElement::new(vec![(0, 0), (0, -len)], INK)),
@@ -510,7 +527,7 @@ where
             )?;
         }
     }
-    for (values, len) in [(&axes.y_minor, 3), (&axes.y_major, 6)] {
+    for (values, len) in [(&axes.y_minor, 3 * out), (&axes.y_major, 6 * out)] {
         for &v in values {
             plot.draw(
                 &(EmptyElement::at((x0, v)) + PathElement::new(vec![(0, 0), (len, 0)], INK)),
@@ -520,7 +537,8 @@ where
             )?;
         }
     }
-    // Labels outside the frame.
+    // Labels outside the frame (and outside the ticks of a raster).
+    let gap = if axes.image { 6 } else { 0 };
     let label = font(LABEL_PX).color(&INK);
     for &v in &axes.x_major {
         let at = chart.backend_coord(&(v, y0));
@@ -529,7 +547,7 @@ where
             &label.pos(Pos::new(HPos::Center, VPos::Top)),
             (
                 at.0 - area.get_base_pixel().0,
-                at.1 + 5 - area.get_base_pixel().1,
+                at.1 + 5 + gap - area.get_base_pixel().1,
             ),
         )?;
     }
@@ -539,7 +557,7 @@ where
             &y_fmt(&v),
             &label.pos(Pos::new(HPos::Right, VPos::Center)),
             (
-                at.0 - 6 - area.get_base_pixel().0,
+                at.0 - 6 - gap - area.get_base_pixel().0,
                 at.1 - area.get_base_pixel().1,
             ),
         )?;
@@ -709,7 +727,7 @@ mod tests {
 
     #[test]
     fn log_ticks_have_decade_majors_and_2_to_9_minors() {
-        let (major, minor) = log_ticks(1.2, 3.6); // 16 .. 4096
+        let (major, minor) = log_ticks(16f64.log10(), 4096f64.log10());
         assert_eq!(major, [2.0, 3.0]);
         assert_eq!(minor.len(), 8 + 8 + 3); // 20..90, 200..900, 2000..4000
         assert!((minor[0] - 20f64.log10()).abs() < 1e-12);
