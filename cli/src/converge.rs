@@ -806,7 +806,7 @@ impl crate::plot::Figure for Plot<'_> {
         }
         let notes = format!(
             "RMSE of the mean over N samples against N, {} independent runs per N; slope: \
-             least-squares fit of log RMSE on log N; grey dashed: N^−1/2 and N^−1 for scale",
+             least-squares fit of log RMSE on log N; grey dashed: slopes −1/2 and −1 for scale",
             study.runs
         );
         for line in wrap(&notes, w - 2 * MARGIN, 14.0).iter().take(2) {
@@ -849,6 +849,16 @@ impl crate::plot::Figure for Plot<'_> {
                 let m = study.counts.last().copied().unwrap_or(2).max(n + 1);
                 (x0, x1, y0, y1) = (f64::from(n).log10(), f64::from(m).log10(), -2.0, -1.0);
             }
+            // Guides of slope −½ and −1 from just above the highest first point, so that
+            // they run above the curves' start and read as a scale, not as data.
+            let guide_y = mine
+                .iter()
+                .filter_map(|c| finite(c).first().map(|p| p.1))
+                .fold(f64::NEG_INFINITY, f64::max)
+                + 0.15;
+            if guide_y.is_finite() {
+                y1 = y1.max(guide_y);
+            }
             let (xpad, ypad) = (0.04 * (x1 - x0).max(0.3), 0.06 * (y1 - y0).max(0.5));
             let mut axes = Axes::log_log(
                 10f64.powf(x0 - xpad)..10f64.powf(x1 + xpad),
@@ -858,30 +868,17 @@ impl crate::plot::Figure for Plot<'_> {
             axes.x_desc = "N (samples)".to_owned();
             axes.y_desc = "RMSE".to_owned();
             let mut chart = panel(&chart_area, &axes)?;
-            // Guides through the mean of the first points, clipped to the panel.
-            let starts: Vec<f64> = mine
-                .iter()
-                .filter_map(|c| finite(c).first().map(|p| p.1))
-                .collect();
-            if !starts.is_empty() {
-                let ys = starts.iter().sum::<f64>() / starts.len() as f64;
-                for (slope, label) in [(-0.5, "N^−1/2"), (-1.0, "N^−1")] {
-                    let end_x = x1.min(x0 + (ys - axes.y.start) / -slope);
-                    let (a, b) = ((x0, ys), (end_x, ys + slope * (end_x - x0)));
+            if guide_y.is_finite() {
+                for slope in [-0.5, -1.0] {
+                    // Clipped at the bottom of the panel.
+                    let end_x = x1.min(x0 + (guide_y - axes.y.start) / -slope);
+                    let (a, b) = ((x0, guide_y), (end_x, guide_y + slope * (end_x - x0)));
                     chart.draw_series(DashedLineSeries::new(
                         [a, b],
                         6,
                         4,
                         GUIDE.stroke_width(1),
                     ))?;
-                    let end = chart.backend_coord(&b);
-                    root.draw_text(
-                        label,
-                        &font(12.0)
-                            .color(&GUIDE)
-                            .pos(Pos::new(HPos::Right, VPos::Bottom)),
-                        (end.0 - 4, end.1 - 6),
-                    )?;
                 }
             }
             for (k, curve) in mine.iter().enumerate() {

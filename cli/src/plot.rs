@@ -336,12 +336,15 @@ pub fn log_ticks(lo: f64, hi: f64) -> (Vec<f64>, Vec<f64>) {
     (major, minor)
 }
 
-/// The label of a log10 tick at `v`: `10ᵏ` at a decade, `m×10ᵏ` elsewhere.
+/// The label of a log10 tick at `v`: `10ᵏ` at a decade; elsewhere the plain number from 0.001
+/// to 9000 (`0.02`, `50`), `m×10ᵏ` beyond.
 pub fn log_label(v: f64) -> String {
     let k = v.floor();
     let m = 10f64.powf(v - k);
     if (m - 1.0).abs() < 1e-6 || (m - 10.0).abs() < 1e-6 {
         power_of_ten(v.round() as i32)
+    } else if (-3.0..=3.0).contains(&k) {
+        number(m.round() * 10f64.powf(k), 10f64.powf(k))
     } else {
         format!("{}×{}", m.round(), power_of_ten(k as i32))
     }
@@ -735,7 +738,9 @@ mod tests {
         let (major, _) = log_ticks(-2.5, -1.5);
         assert_eq!(major.len(), 3); // 5e-3, 1e-2, 2e-2
         assert_eq!(log_label(-2.0), "10⁻²");
-        assert_eq!(log_label(2f64.log10() - 2.0), "2×10⁻²");
+        assert_eq!(log_label(2f64.log10() - 2.0), "0.02");
+        assert_eq!(log_label(5f64.log10() + 1.0), "50");
+        assert_eq!(log_label(2f64.log10() - 5.0), "2×10⁻⁵");
     }
 
     #[test]

@@ -86,18 +86,6 @@ impl Canvas {
         }
     }
 
-    /// A two-pixel-wide line from `a` to `b` (pixel coordinates; the second pixel is below).
-    pub fn line(&mut self, a: (f64, f64), b: (f64, f64), color: [u8; 3]) {
-        let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil().max(1.0) as usize;
-        for k in 0..=steps {
-            let t = k as f64 / steps as f64;
-            let x = (a.0 + t * (b.0 - a.0)).round() as i64;
-            let y = (a.1 + t * (b.1 - a.1)).round() as i64;
-            self.put(x, y, color);
-            self.put(x, y + 1, color);
-        }
-    }
-
     /// Copies the `w × h` block at `(sx, sy)` of `img` (linear RGB, converted to 8-bit sRGB)
     /// to `(x, y)`.
     #[allow(clippy::too_many_arguments)]
