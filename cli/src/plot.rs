@@ -665,18 +665,17 @@ where
     Ok(())
 }
 
-/// Draws `text` on an RGB buffer (`w × h`, row-major) with its top-left corner at `(x, y)`, in
-/// the embedded font at `px` pixels, anti-aliased.
+/// Draws `text` on an RGB buffer of `size = (w, h)` pixels (row-major) at `at = (x, y)` (the
+/// point plotters anchors text to), in the embedded font at `px` pixels, anti-aliased.
 pub fn text_on_rgb(
     rgb: &mut [u8],
-    w: u32,
-    h: u32,
-    x: i32,
-    y: i32,
+    size: (u32, u32),
+    (x, y): (i32, i32),
     text: &str,
     px: f64,
     color: [u8; 3],
 ) {
+    let (w, h) = size;
     let root = BitMapBackend::with_buffer(rgb, (w, h)).into_drawing_area();
     let ink = RGBColor(color[0], color[1], color[2]);
     let style = font(px).color(&ink);

@@ -119,11 +119,9 @@ impl Canvas {
         let clamp = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
         crate::plot::text_on_rgb(
             &mut self.rgb,
-            self.width,
-            self.height,
-            clamp(x),
+            (self.width, self.height),
             // plotters places the top of a tall glyph (l, d) about 0.25 em above the point given.
-            clamp(y.saturating_add(TOP)),
+            (clamp(x), clamp(y.saturating_add(TOP))),
             text,
             TEXT_PX,
             color,
@@ -167,7 +165,10 @@ mod tests {
             .collect();
         assert!(!dark.is_empty());
         // Within the line below (2, 2) and the measured width.
-        assert!(dark.iter().all(|&(x, y)| x >= 2 && y >= 2 && y < 2 + LINE));
+        assert!(
+            dark.iter()
+                .all(|&(x, y)| x >= 2 && (2..2 + LINE).contains(&y))
+        );
         assert!(dark.iter().all(|&(x, _)| x <= 2 + text_width("Il")));
         // Grey edge pixels, not only black and white.
         assert!((0..20).any(|y| (0..60).any(|x| {
