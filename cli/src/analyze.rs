@@ -711,13 +711,15 @@ impl crate::plot::Figure for SpectrumPlot<'_> {
     where
         DB::ErrorType: 'static,
     {
-        use crate::plot::{Axes, GUIDE, INK, Raster, bold, color, font, panel};
+        use crate::plot::{Axes, GUIDE, INK, Raster, color, font, panel, title};
         use plotters::prelude::*;
         use plotters::style::text_anchor::{HPos, Pos, VPos};
         let s = self.spectrum;
         let f = f64::from(s.max_freq);
         let m = MARGIN as i32;
-        root.draw_text(&self.title, &bold(18.0).color(&INK), (m, m))?;
+        let (w, _) = self.size();
+        let sizes = [(18.0, 1), (14.0, 2)];
+        let used = title(root, &self.title, (m, m), w - 2 * MARGIN, &sizes)?;
         root.draw_text(
             &format!(
                 "N = {} points, {} realisation{} averaged; power P(f) = |Σ exp(−2πi f·x)|² / N, \
@@ -727,7 +729,7 @@ impl crate::plot::Figure for SpectrumPlot<'_> {
                 if s.realisations == 1 { "" } else { "s" }
             ),
             &font(14.0).color(&INK),
-            (m, m + 26),
+            (m, m + used + 3),
         )?;
         let top = m + HEADER as i32;
         let mut rasters = Vec::new();

@@ -724,15 +724,15 @@ const LEGEND_W: u32 = 190;
 const MARGIN: u32 = 16;
 /// Panels per row.
 const COLUMNS: u32 = 3;
-/// Pixels of the title block at the top: the command and the notes, up to two lines each.
-const HEADER_H: u32 = 84;
+/// Pixels of the title block at the top: the command (up to three lines) and the notes (two).
+const HEADER_H: u32 = 96;
 
 /// The plot's size for `integrands` panels: at most three panels across.
 ///
 /// ```
 /// use nyquist_cli::converge::{plot_size, PANEL_W, PANEL_H};
-/// assert_eq!(plot_size(5), [16 + 3 * (PANEL_W + 16), 16 + 84 + 2 * (PANEL_H + 16)]);
-/// assert_eq!(plot_size(1), [16 + PANEL_W + 16, 16 + 84 + PANEL_H + 16]);
+/// assert_eq!(plot_size(5), [16 + 3 * (PANEL_W + 16), 16 + 96 + 2 * (PANEL_H + 16)]);
+/// assert_eq!(plot_size(1), [16 + PANEL_W + 16, 16 + 96 + PANEL_H + 16]);
 /// ```
 pub fn plot_size(integrands: usize) -> [u32; 2] {
     let cells = (integrands as u32).max(1);
@@ -794,24 +794,23 @@ impl crate::plot::Figure for Plot<'_> {
     where
         DB::ErrorType: 'static,
     {
-        use crate::plot::{Axes, GUIDE, INK, bold, color, font, marker, panel, wrap};
+        use crate::plot::{Axes, GUIDE, INK, bold, color, font, marker, panel, title, wrap};
         use plotters::prelude::*;
         use plotters::style::text_anchor::{HPos, Pos, VPos};
         let study = self.study;
         let (w, _) = self.size();
-        let mut y = MARGIN as i32;
-        for line in wrap(&command(study), w - 2 * MARGIN, 18.0).iter().take(2) {
-            root.draw_text(line, &bold(18.0).color(&INK), (MARGIN as i32, y))?;
-            y += 23;
-        }
+        // The command in up to three lines, smaller when it is long.
+        let m = MARGIN as i32;
+        let sizes = [(18.0, 2), (14.0, 3)];
+        let mut y = m + title(root, &command(study), (m, m), w - 2 * MARGIN, &sizes)?;
         let notes = format!(
             "RMSE of the mean over N samples against N, {} independent runs per N; slope: \
              least-squares fit of log RMSE on log N; grey dashed: slopes −1/2 and −1 for scale",
             study.runs
         );
-        for line in wrap(&notes, w - 2 * MARGIN, 14.0).iter().take(2) {
-            root.draw_text(line, &font(14.0).color(&INK), (MARGIN as i32, y + 2))?;
-            y += 18;
+        for line in wrap(&notes, w - 2 * MARGIN, 13.0).iter().take(2) {
+            root.draw_text(line, &font(13.0).color(&INK), (m, y + 2))?;
+            y += 17;
         }
         let ni = study.integrands.len();
         let cols = (ni as u32).clamp(1, COLUMNS);

@@ -161,16 +161,14 @@ impl crate::plot::Figure for Plot<'_> {
     where
         DB::ErrorType: 'static,
     {
-        use crate::plot::{Axes, GUIDE, INK, bold, color, font, panel};
+        use crate::plot::{Axes, GUIDE, INK, color, font, panel, title};
         use plotters::prelude::*;
         use plotters::style::text_anchor::{HPos, Pos, VPos};
         let f: &dyn Filter = self.filter.as_dyn();
         let m = MARGIN as i32;
-        root.draw_text(
-            &format!("nyquist filter --filter {}", self.filter),
-            &bold(18.0).color(&INK),
-            (m, m),
-        )?;
+        let (w, _) = self.size();
+        let text = format!("nyquist filter --filter {}", self.filter);
+        let used = title(root, &text, (m, m), w - 2 * MARGIN, &[(18.0, 1), (14.0, 2)])?;
         let [rx, ry] = f.radius();
         let separable = f.eval_1d(Axis::X, 0.0).is_some();
         root.draw_text(
@@ -184,7 +182,7 @@ impl crate::plot::Figure for Plot<'_> {
                 }
             ),
             &font(14.0).color(&INK),
-            (m, m + 26),
+            (m, m + used + 3),
         )?;
         let r = f64::from(rx);
         let prof: Vec<(f64, f64)> = (0..=STEPS)

@@ -684,20 +684,25 @@ pub fn text_on_rgb(
     let _ = root.present();
 }
 
-/// Breaks `text` at spaces into lines no wider than `width` pixels at `px` (a single word
-/// wider than that gets a line of its own).
+/// Breaks `text` into lines no wider than `width` pixels at `px`: at spaces, and after the
+/// commas of a long list (a single piece wider than that gets a line of its own).
 pub fn wrap(text: &str, width: u32, px: f64) -> Vec<String> {
+    // Pieces with the separator that joins them to the one before: " " or "".
+    let mut pieces: Vec<(&str, &str)> = Vec::new();
+    for (i, word) in text.split(' ').enumerate() {
+        let mut sep = if i == 0 { "" } else { " " };
+        for part in word.split_inclusive(',') {
+            pieces.push((sep, part));
+            sep = "";
+        }
+    }
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
-    for word in text.split(' ') {
-        let candidate = if line.is_empty() {
-            word.to_owned()
-        } else {
-            format!("{line} {word}")
-        };
+    for (sep, piece) in pieces {
+        let candidate = format!("{line}{sep}{piece}");
         if !line.is_empty() && text_width(&candidate, px) > width {
             lines.push(std::mem::take(&mut line));
-            line = word.to_owned();
+            line = piece.to_owned();
         } else {
             line = candidate;
         }
@@ -706,6 +711,41 @@ pub fn wrap(text: &str, width: u32, px: f64) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// Writes `text` in bold at `(x, y)` of `area` in lines no wider than `width`: at the first
+/// `(pixels, most lines)` of `sizes` at which it fits, else at the last, cut after its most
+/// lines. Returns the height used.
+///
+/// # Errors
+/// A drawing error.
+pub fn title<DB: DrawingBackend>(
+    area: &DrawingArea<DB, Shift>,
+    text: &str,
+    (x, y): (i32, i32),
+    width: u32,
+    sizes: &[(f64, usize)],
+) -> Result<i32>
+where
+    DB::ErrorType: 'static,
+{
+    let mut chosen = (16.0, 1, Vec::new());
+    for &(px, max_lines) in sizes {
+        let lines = wrap(text, width, px);
+        let fits = lines.len() <= max_lines;
+        chosen = (px, max_lines, lines);
+        if fits {
+            break;
+        }
+    }
+    let (px, max_lines, lines) = chosen;
+    let step = (px * 1.3).round() as i32;
+    let mut at = y;
+    for line in lines.iter().take(max_lines) {
+        area.draw_text(line, &bold(px).color(&INK), (x, at))?;
+        at += step;
+    }
+    Ok(at - y)
 }
 
 #[cfg(test)]
@@ -758,5 +798,11 @@ mod tests {
         assert!((80..200).contains(&w), "{w}");
         let lines = wrap("aaa bbb ccc ddd", text_width("aaa bbb", 14.0), 14.0);
         assert_eq!(lines, ["aaa bbb", "ccc ddd"]);
+        let lines = wrap(
+            "--samplers a1,b2,c3,d4 --seed 0",
+            text_width("--samplers a1,b2,", 14.0),
+            14.0,
+        );
+        assert_eq!(lines, ["--samplers a1,b2,", "c3,d4 --seed 0"]);
     }
 }
