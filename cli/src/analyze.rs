@@ -27,6 +27,10 @@ const AUTO_EXACT_2D: usize = 1 << 15;
 const BOUNDS_CELLS: u64 = 1 << 22;
 /// Largest automatic bounds grid per axis.
 const BOUNDS_MAX_M: u32 = 1 << 16;
+/// The periodogram's highest frequency unless --freq says otherwise.
+const DEFAULT_FREQ: u32 = 64;
+/// Periodogram terms (realisations × points × frequencies) above which `--spectrum` warns.
+const LARGE_SPECTRUM: f64 = 1e10;
 /// Margin around and between the panels of the spectrum picture.
 const MARGIN: u32 = 16;
 /// Height of the spectrum picture's title block.
@@ -83,7 +87,7 @@ pub struct AnalyzeArgs {
     /// `-` or nothing reads stdin. Values must lie in [0, 1); decimals are read as f64.
     #[arg(value_name = "FILE.csv")]
     pub input: Option<PathBuf>,
-    /// The same CSV input as a flag (DESIGN.md's form): `--input FILE` or `--input -`.
+    /// The same CSV input as a flag: `--input FILE` or `--input -`.
     #[arg(long = "input", value_name = "FILE|-", conflicts_with = "input")]
     pub input_flag: Option<PathBuf>,
     /// Generate the points instead: which point set or sampler (names as in `points`).
@@ -139,10 +143,12 @@ pub struct AnalyzeArgs {
     /// PNG image inside the SVG). Grey scale: −30 dB black, +10 dB white; white noise is 0 dB.
     #[arg(long, value_name = "FILE.png|FILE.svg")]
     pub spectrum: Option<PathBuf>,
-    /// Highest integer frequency F of the periodogram: the grid is (2F+1)².
-    #[arg(long, default_value_t = 64, value_name = "F")]
-    pub freq: u32,
-    /// Realisations averaged in the periodogram: generated sets use seeds seed..seed+M−1.
+    /// Highest integer frequency F of the periodogram: the grid is (2F+1)² [default: 64]. Without
+    /// --spectrum it changes nothing (a note says so).
+    #[arg(long, value_name = "F")]
+    pub freq: Option<u32>,
+    /// Realisations averaged in the periodogram: generated sets use seeds seed..seed+M−1. The
+    /// work is M × points × (2F+1)²; a warning gives it when it is large.
     #[arg(long, default_value_t = 1, value_name = "M")]
     pub realisations: u32,
 }
@@ -239,18 +245,45 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
             bail!("no points: give a CSV file, pipe one into stdin, or use --sampler NAME");
         }
     }
+    if let (Some(sampler), Some(seed)) = (args.sampler, args.seed)
+        && seed != 0
+        && args.spp.is_none()
+        && points::ignores_seed(sampler)
+    {
+        crate::output::note(&format!(
+            "--seed {seed} changes nothing: {} points do not depend on a seed",
+            points::name(sampler)
+        ));
+    }
     if args.star_grid == Some(0) {
         bail!("--star-grid 0: need at least one cell per axis");
     }
-    if args.star_grid.is_some() && args.star_method == StarMethod::Exact {
-        bail!("--star-grid applies to --star-method bounds or auto");
+    if let Some(m) = args.star_grid
+        && args.star_method == StarMethod::Exact
+    {
+        bail!(
+            "--star-grid {m}: --star-method exact uses no grid (give --star-method bounds or auto)"
+        );
+    }
+    if args.spectrum.is_none() {
+        if let Some(f) = args.freq {
+            crate::output::note(&format!(
+                "--freq {f} changes nothing without --spectrum FILE.png"
+            ));
+        }
+        if args.realisations > 1 {
+            crate::output::note(&format!(
+                "--realisations {} changes nothing without --spectrum FILE.png",
+                args.realisations
+            ));
+        }
     }
     if let Some(path) = &args.spectrum {
         crate::plot::kind_of(path, "--spectrum")?;
-        if args.freq == 0 || args.freq > nyquist_film::periodogram::MAX_FREQ {
+        let freq = args.freq.unwrap_or(DEFAULT_FREQ);
+        if freq == 0 || freq > nyquist_film::periodogram::MAX_FREQ {
             bail!(
-                "--freq {}: need 1 ..= {}",
-                args.freq,
+                "--freq {freq}: need 1 ..= {}",
                 nyquist_film::periodogram::MAX_FREQ
             );
         }
@@ -301,7 +334,7 @@ fn generate(args: &AnalyzeArgs, sampler: SamplerName, seed: u64) -> Result<(Vec<
     let pa = PointsArgs {
         sampler,
         count: args.count,
-        dims: args.dims.unwrap_or(2),
+        dims: args.dims,
         seed,
         skip: args.skip.unwrap_or(0),
         grid: args.grid,
@@ -516,6 +549,13 @@ fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
         StarMethod::Auto => exact(star_discrepancy_scratch_len(n, d))?,
     };
     let n_f = n as f64;
+    if let (Some(_), Some(m)) = (result, args.star_grid) {
+        crate::output::note(&format!(
+            "--star-grid {m} unused: the star discrepancy of {n} points in {d} dimension{} is \
+             computed exactly (give --star-method bounds for the bracket)",
+            if d == 1 { "" } else { "s" }
+        ));
+    }
     if let Some((v, how)) = result {
         let method = match how {
             "exact-1d" => "exact (1D, sorted; Niederreiter Thm 2.6)",
@@ -595,8 +635,9 @@ fn spectrum(
     if dims < 2 {
         bail!("--spectrum: needs points with at least 2 dimensions, the set has 1");
     }
-    let mut pg = nyquist_film::periodogram::Periodogram::new(args.freq)
-        .map_err(|e| anyhow!("--freq {}: {e}", args.freq))?;
+    let freq = args.freq.unwrap_or(DEFAULT_FREQ);
+    let mut pg = nyquist_film::periodogram::Periodogram::new(freq)
+        .map_err(|e| anyhow!("--freq {freq}: {e}"))?;
     // A bar over the realisations, shown when the work passes a second (large sets or --freq).
     let total = if args.sampler.is_some() {
         args.realisations.max(1)
@@ -605,6 +646,16 @@ fn spectrum(
     };
     let progress =
         crate::progress::Progress::with_unit(u64::from(total), "spectrum", "realisations");
+    let side = 2 * u64::from(freq) + 1;
+    let n = (coords.len() / dims) as u64;
+    let terms = u64::from(total) as f64 * n as f64 * (side * side) as f64;
+    if terms > LARGE_SPECTRUM {
+        eprintln!(
+            "nyquist: warning: --spectrum: {total} realisations × {n} points × {side}² \
+             frequencies is about {terms:.1e} terms; this may take minutes"
+        );
+        progress.show_now();
+    }
     pg.add(&pairs_of(coords, dims))
         .map_err(|e| anyhow!("--spectrum: {e}"))?;
     progress.inc(1);

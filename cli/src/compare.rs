@@ -13,6 +13,7 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, SCRAMBLE_NAMES, Sampler};
+use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
@@ -99,10 +100,12 @@ pub struct CompareArgs {
     /// sampler's own, as in `render`].
     #[arg(long, value_enum, value_name = "SCRAMBLE")]
     pub scramble: Option<ScrambleName>,
-    /// The contact sheet (PNG).
-    #[arg(short, long, value_name = "FILE.png", default_value = "compare.png")]
-    pub output: PathBuf,
-    /// Print JSON (one entry per cell) instead of the Markdown table.
+    /// The contact sheet (PNG) [default: compare.png; with --json, no sheet is written unless
+    /// --output is given].
+    #[arg(short, long, value_name = "FILE.png")]
+    pub output: Option<PathBuf>,
+    /// Print JSON (one entry per cell) instead of the Markdown table; writes no sheet unless
+    /// --output is given.
     #[arg(long)]
     pub json: bool,
 }
@@ -146,7 +149,10 @@ fn label(sampler: SamplerName, filter: &str, spp: u32, rmse: f64, sampling: f64)
 
 /// Runs `nyquist compare`.
 pub fn run(args: &CompareArgs) -> Result<()> {
-    check_output(&args.output, "--output", &["png"])?;
+    let output = sheet_path(args);
+    if let Some(p) = &output {
+        check_output(p, "--output", &["png"])?;
+    }
     if args.samplers.is_empty() {
         bail!("--samplers: give at least one sampler");
     }
@@ -194,6 +200,19 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         }
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
+    let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
+    let work: f64 = cells
+        .iter()
+        .map(|c| {
+            pixels
+                * f64::from(c.sampler.samples_per_pixel())
+                * crate::render::footprint_pixels(args.size, &filters[c.filter].1)
+        })
+        .sum();
+    let large = crate::render::warn_if_large(
+        work,
+        &format!("{count} render{}", if count == 1 { "" } else { "s" }),
+    );
     let start = Instant::now();
     let means = reference(args.scene, args.size, None, threads)?
         .ok_or_else(|| anyhow!("no reference for this scene"))?;
@@ -201,7 +220,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     for (_, f) in filters {
         filtered.push(reference(args.scene, args.size, Some(f), threads)?);
     }
-    let results = render_cells(args, &cells, threads)?;
+    let results = render_cells(args, &cells, threads, large)?;
     let seconds = start.elapsed().as_secs_f64();
 
     let errors: Vec<f64> = results.iter().map(|r| rmse(&r.image, &means)).collect();
@@ -273,9 +292,12 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             sheet.text(x, ly, line, if i == 2 { [160, 0, 0] } else { [0; 3] });
         }
     }
-    sheet.write_png(&args.output, "--output")?;
+    if let Some(p) = &output {
+        sheet.write_png(p, "--output")?;
+    }
 
     let samples: u64 = results.iter().map(|r| r.stats.samples).sum();
+    let mut out = String::new();
     if args.json {
         let mut s = format!(
             "{{\"scene\":{},\"size\":[{},{}],\"reference\":{},\"output\":{},\"sheet\":{{\"width\":{sheet_w},\"height\":{sheet_h}}},\"crop\":{{\"x\":{cx},\"y\":{cy},\"width\":{cw},\"height\":{ch}}},\"threads\":{threads},\"seconds\":{},\"samples\":{samples},\"cells\":[",
@@ -283,7 +305,9 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             args.size[0],
             args.size[1],
             json_string(&reference_kind(args.scene)),
-            json_string(&args.output.to_string_lossy()),
+            output
+                .as_ref()
+                .map_or_else(|| "null".to_owned(), |p| json_string(&p.to_string_lossy())),
             json_number(seconds),
         );
         for (k, ((c, r), (&e, &smp))) in cells
@@ -314,17 +338,20 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             ));
         }
         s.push_str("]}");
-        println!("{s}");
+        writeln!(out, "{s}")?;
     } else {
-        println!(
+        writeln!(
+            out,
             "RMSE of {} {}x{} against the {}, and in brackets against the converged image through the same filter (sampling error alone); sheet: {}",
             args.scene.name(),
             args.size[0],
             args.size[1],
             reference_kind(args.scene),
-            args.output.display()
-        );
-        println!();
+            output
+                .as_ref()
+                .map_or_else(|| "none".to_owned(), |p| p.display().to_string())
+        )?;
+        writeln!(out)?;
         let mut header = String::from("| sampler |");
         let mut rule = String::from("|---|");
         for (spec, _) in filters {
@@ -333,8 +360,8 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 rule.push_str("---:|");
             }
         }
-        println!("{header}");
-        println!("{rule}");
+        writeln!(out, "{header}")?;
+        writeln!(out, "{rule}")?;
         for (row, name) in args.samplers.iter().enumerate() {
             let mut line = format!("| {} |", name.name());
             for (c, (&e, &smp)) in cells
@@ -348,23 +375,41 @@ pub fn run(args: &CompareArgs) -> Result<()> {
                 }
                 line.push_str(" |");
             }
-            println!("{line}");
+            writeln!(out, "{line}")?;
         }
-        println!();
-        println!(
+        writeln!(out)?;
+        writeln!(
+            out,
             "{count} renders, {:.1} M samples in {seconds:.2} s on {threads} thread{}",
             samples as f64 / 1e6,
             if threads == 1 { "" } else { "s" }
-        );
+        )?;
     }
-    Ok(())
+    crate::output::print(&out)
+}
+
+/// Where the sheet goes: `--output`, else `compare.png` unless `--json` was asked for alone.
+fn sheet_path(args: &CompareArgs) -> Option<PathBuf> {
+    match (&args.output, args.json) {
+        (Some(p), _) => Some(p.clone()),
+        (None, false) => Some(PathBuf::from("compare.png")),
+        (None, true) => None,
+    }
 }
 
 /// Renders every cell, `threads` at a time (each render on one thread, the longest first),
-/// with one progress bar over all tiles of the sheet.
-fn render_cells(args: &CompareArgs, cells: &[Cell], threads: usize) -> Result<Vec<Rendered>> {
+/// with one progress bar over all tiles of the sheet (shown at once when `large`).
+fn render_cells(
+    args: &CompareArgs,
+    cells: &[Cell],
+    threads: usize,
+    large: bool,
+) -> Result<Vec<Rendered>> {
     let per_cell = tile_count(args.size);
     let bar = Progress::new(per_cell * cells.len() as u64, "compare");
+    if large {
+        bar.show_now();
+    }
     let mut order: Vec<usize> = (0..cells.len()).collect();
     order.sort_by_key(|&i| std::cmp::Reverse(cells[i].sampler.samples_per_pixel()));
     let next = AtomicUsize::new(0);

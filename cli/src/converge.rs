@@ -337,6 +337,14 @@ impl Study {
                 self.counts
                     .iter()
                     .map(|&n| {
+                        if let Some(max) = crate::render::spp_limit(name)
+                            && n > max
+                        {
+                            bail!(
+                                "--samplers {name} at {n} spp: {name} takes at most {max} \
+                                 samples per pixel (give --max-spp {max} or less)"
+                            );
+                        }
                         build_sampler(name, n, seed)
                             .map(|s| s.samples_per_pixel())
                             .map_err(|e| match e {
@@ -464,6 +472,8 @@ pub fn default_samplers() -> Vec<String> {
 pub struct ConvergeArgs {
     /// Samplers, comma-separated (names as in `render --sampler`) [default: every sampler except
     /// uniform and adaptive]. `stratified` takes every power of two as a 2^⌈m/2⌉ × 2^⌊m/2⌋ grid.
+    /// best-candidate takes at most 4096 spp and pmj02 at most 65536: above that, the default
+    /// list leaves them out with a note, and naming them is an error.
     #[arg(long, value_delimiter = ',', value_name = "LIST")]
     pub samplers: Vec<String>,
     /// Integrands, comma-separated.
@@ -502,7 +512,7 @@ pub struct ConvergeArgs {
 
 /// Checks the flags and turns them into a study.
 fn study_of(args: &ConvergeArgs) -> Result<Study> {
-    let samplers = if args.samplers.is_empty() {
+    let mut samplers = if args.samplers.is_empty() {
         default_samplers()
     } else {
         args.samplers.iter().map(|s| s.trim().to_owned()).collect()
@@ -535,6 +545,22 @@ fn study_of(args: &ConvergeArgs) -> Result<Study> {
             args.max_spp
         );
     }
+    // A default sampler whose limit is below --max-spp is left out, with a note once every
+    // flag is checked; named in --samplers it is an error.
+    let mut left_out = Vec::new();
+    if args.samplers.is_empty() {
+        samplers.retain(|name| match crate::render::spp_limit(name) {
+            Some(max) if args.max_spp > max => {
+                left_out.push(format!(
+                    "--max-spp {}: {name} takes at most {max} samples per pixel; left out of \
+                     the study",
+                    args.max_spp
+                ));
+                false
+            }
+            _ => true,
+        });
+    }
     let study = Study {
         samplers,
         integrands: args.integrands.clone(),
@@ -552,6 +578,7 @@ fn study_of(args: &ConvergeArgs) -> Result<Study> {
             study.work()
         );
     }
+    left_out.iter().for_each(|n| crate::output::note(n));
     Ok(study)
 }
 

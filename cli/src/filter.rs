@@ -94,7 +94,9 @@ pub fn run(args: &FilterArgs) -> Result<()> {
     Ok(())
 }
 
+/// Writes the rows; `-0` (a negative lobe's zero, or a grid point at the centre) prints as `0`.
 fn write_rows(w: &mut dyn Write, rows: &[[f32; 3]], format: Format) -> Result<()> {
+    let rows = rows.iter().map(|r| r.map(|v| v + 0.0));
     match format {
         Format::Csv => {
             for [x, y, v] in rows {
@@ -103,7 +105,7 @@ fn write_rows(w: &mut dyn Write, rows: &[[f32; 3]], format: Format) -> Result<()
         }
         Format::Json => {
             write!(w, "[")?;
-            for (k, [x, y, v]) in rows.iter().enumerate() {
+            for (k, [x, y, v]) in rows.enumerate() {
                 let sep = if k == 0 { "" } else { "," };
                 write!(w, "{sep}{{\"x\":{x},\"y\":{y},\"value\":{v}}}")?;
             }

@@ -11,7 +11,16 @@ use std::process::ExitCode;
 /// Sampling and reconstruction for image synthesis: point sets, filters, test renders,
 /// sampler comparison sheets and convergence studies.
 #[derive(Debug, Parser)]
-#[command(name = "nyquist", version, about, max_term_width = 100)]
+#[command(
+    name = "nyquist",
+    version,
+    about,
+    max_term_width = 100,
+    after_long_help = "Exit status: 0 on success; 2 for bad input or output that cannot be \
+    written (one line on stderr, and no file left behind); 141 (128 + SIGPIPE), with nothing \
+    printed, when the reader of stdout goes away, e.g. `nyquist points --count 100000 | head -3`, \
+    as `seq` or `cat` do."
+)]
 struct Cli {
     #[command(subcommand)]
     command: Command,
@@ -63,6 +72,10 @@ fn main() -> ExitCode {
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        // The reader of stdout went away: stop quietly, as Unix tools do.
+        Err(e) if nyquist_cli::output::is_broken_pipe(&e) => {
+            ExitCode::from(nyquist_cli::output::BROKEN_PIPE_STATUS)
+        }
         Err(e) => {
             eprintln!("nyquist: {}", one_line(&format!("{e:#}")));
             ExitCode::from(2)
@@ -84,6 +97,10 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
                 ExitCode::SUCCESS
             }
         }
+        _ if empty_value(e).is_some() => {
+            eprintln!("nyquist: {}", empty_value(e).unwrap_or_default());
+            ExitCode::from(2)
+        }
         _ => {
             let text = e.render().to_string();
             let text = text.strip_prefix("error: ").unwrap_or(&text);
@@ -93,13 +110,51 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
     }
 }
 
-/// Folds a multi-line message into one line, dropping clap's usage and "--help" hints.
+/// The message for an empty value (`--samplers halton,,sobol`, `--spp 1,,4`, `--samplers=`):
+/// the flag, the whole value as typed, and the values the flag takes where clap lists them.
+/// Clap itself says "a value is required … but none was supplied" without naming the list.
+fn empty_value(e: &clap::Error) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue};
+    match e.get(ContextKind::InvalidValue) {
+        Some(ContextValue::String(v)) if v.is_empty() => {}
+        _ => return None,
+    }
+    let Some(ContextValue::String(arg)) = e.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let flag = arg.split([' ', '=']).next().unwrap_or(arg);
+    // The value as typed: `--flag value` or `--flag=value`.
+    let args: Vec<String> = std::env::args().collect();
+    let typed = args.iter().enumerate().rev().find_map(|(i, a)| {
+        if a == flag {
+            args.get(i + 1).cloned()
+        } else {
+            a.strip_prefix(flag)?.strip_prefix('=').map(str::to_owned)
+        }
+    });
+    let list = typed.as_deref().is_some_and(|t| t.contains(','));
+    let mut msg = match typed {
+        Some(t) if list => format!("{flag} '{t}': an empty item in the comma-separated list"),
+        _ => format!("{flag}: a value is required"),
+    };
+    if let Some(ContextValue::Strings(valid)) = e.get(ContextKind::ValidValue) {
+        msg.push_str(&format!(" (possible values: {})", valid.join(", ")));
+    }
+    Some(msg)
+}
+
+/// Folds a multi-line message into one line, dropping clap's usage and "--help" hints: lines
+/// are joined with "; ", except after a line ending in ':' (a heading and its list), which is
+/// followed by a space.
 fn one_line(text: &str) -> String {
-    text.lines()
-        .map(str::trim)
-        .filter(|l| {
-            !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more information")
-        })
-        .collect::<Vec<_>>()
-        .join("; ")
+    let mut out = String::new();
+    for l in text.lines().map(str::trim).filter(|l| {
+        !l.is_empty() && !l.starts_with("Usage:") && !l.starts_with("For more information")
+    }) {
+        if !out.is_empty() {
+            out.push_str(if out.ends_with(':') { " " } else { "; " });
+        }
+        out.push_str(l);
+    }
+    out
 }

@@ -1,39 +1,165 @@
-//! Writing output files so that a failure never leaves a half-written file behind.
+//! Writing output: files so that a failure never leaves a half-written file behind, stdout so
+//! that a closed pipe ends the program quietly, and the checks every subcommand runs on its
+//! output paths before any work.
+//!
+//! Every error about a file names the flag and the path, and gives the operating system's
+//! reason once: `--output ro/a.png: cannot write in folder ro: Permission denied (os error 13)`.
 
-use anyhow::{Context, Result};
-use std::fs::File;
-use std::io::{BufWriter, Write};
+use anyhow::{Result, anyhow, bail};
+use std::fs::{File, OpenOptions};
+use std::io::{BufWriter, ErrorKind, Write};
 use std::path::{Path, PathBuf};
 
-/// Writes `path` through `write`: the bytes go to a temporary file in the same folder, which is
-/// renamed over `path` only when `write` and the flush succeeded. On any error the temporary file
-/// is removed and `path` is untouched.
-pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn Write) -> Result<()>) -> Result<()> {
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
+/// The exit status when stdout's reader has gone away (`nyquist points | head -3`): 128 + 13
+/// (SIGPIPE), the status a shell reports for `seq`, `cat` or `yes` in the same place. Nothing
+/// is printed.
+pub const BROKEN_PIPE_STATUS: u8 = 141;
+
+/// Whether `e` (or any error it wraps) is a write into a closed pipe.
+pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    io_error(e).is_some_and(|io| io.kind() == ErrorKind::BrokenPipe)
+}
+
+/// The first I/O error `e` wraps, if any (also inside the PNG encoder's error, which does not
+/// report it as its source).
+fn io_error(e: &anyhow::Error) -> Option<&std::io::Error> {
+    e.chain().find_map(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .or(match c.downcast_ref::<png::EncodingError>() {
+                Some(png::EncodingError::IoError(io)) => Some(io),
+                _ => None,
+            })
+    })
+}
+
+/// The folder `path` goes into (`.` for a bare file name).
+fn folder_of(path: &Path) -> &Path {
+    match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    }
+}
+
+/// The temporary file beside `path` that [`write_atomic`] writes first.
+fn temporary(path: &Path) -> Result<PathBuf> {
     let name = path
         .file_name()
-        .with_context(|| format!("--output {}: not a file name", path.display()))?;
-    let tmp = dir.join(format!(
+        .ok_or_else(|| anyhow!("--output {}: not a file name", path.display()))?;
+    Ok(folder_of(path).join(format!(
         ".{}.tmp-{}",
         name.to_string_lossy(),
         std::process::id()
-    ));
-    let result = (|| -> Result<()> {
-        let file = File::create(&tmp)
-            .with_context(|| format!("--output {}: cannot create file", path.display()))?;
+    )))
+}
+
+/// Whether `path` exists and is neither a regular file nor a folder (a device such as
+/// `/dev/null` or `/dev/full`, a FIFO): such a target is written in place, never replaced.
+fn is_special(path: &Path) -> bool {
+    std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir())
+}
+
+/// The one-line message for an I/O failure on `path`: the flag, the path and the reason once.
+fn io_message(flag: &str, path: &Path, e: &std::io::Error) -> anyhow::Error {
+    let dir = folder_of(path);
+    if e.kind() == ErrorKind::NotFound && !dir.is_dir() {
+        return anyhow!(
+            "{flag} {}: folder {} does not exist",
+            path.display(),
+            dir.display()
+        );
+    }
+    anyhow!("{flag} {}: cannot write: {e}", path.display())
+}
+
+/// Checks, before any work, that `flag`'s `path` can take the output: its extension is one of
+/// `formats` (lower case, without the dot; empty: any), it names a file, its folder exists, and
+/// a file can be created there (a temporary file is created and removed again). Devices and
+/// FIFOs (`/dev/null`) are accepted as they are.
+pub fn check_output(path: &Path, flag: &str, formats: &[&str]) -> Result<()> {
+    if !formats.is_empty() {
+        let ext = extension(path);
+        if !ext.as_deref().is_some_and(|e| formats.contains(&e)) {
+            bail!(
+                "{flag} {}: unknown image extension (expected {})",
+                path.display(),
+                formats
+                    .iter()
+                    .map(|f| format!(".{f}"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            );
+        }
+    }
+    if path.file_name().is_none() {
+        bail!("{flag} {}: not a file name", path.display());
+    }
+    if path.is_dir() {
+        bail!("{flag} {}: is a folder", path.display());
+    }
+    if is_special(path) {
+        return Ok(());
+    }
+    let dir = folder_of(path);
+    if !dir.is_dir() {
+        if dir.exists() {
+            bail!(
+                "{flag} {}: {} is not a folder",
+                path.display(),
+                dir.display()
+            );
+        }
+        bail!(
+            "{flag} {}: folder {} does not exist",
+            path.display(),
+            dir.display()
+        );
+    }
+    let probe = temporary(path)?;
+    match File::create(&probe) {
+        Ok(_) => {
+            let _ = std::fs::remove_file(&probe);
+            Ok(())
+        }
+        Err(e) => Err(io_message(flag, path, &e)),
+    }
+}
+
+/// The lower-case extension of `path`, if it has one.
+pub fn extension(path: &Path) -> Option<String> {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+}
+
+/// Writes `path` through `write`: the bytes go to a temporary file in the same folder, which is
+/// renamed over `path` only when `write` and the flush succeeded. On any error the temporary file
+/// is removed and `path` is untouched. A device or FIFO (`/dev/null`, `/dev/full`) is written in
+/// place instead of being replaced. Errors name `--output` (callers for other flags replace it).
+pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn Write) -> Result<()>) -> Result<()> {
+    const FLAG: &str = "--output";
+    let fail = |e: anyhow::Error| match io_error(&e) {
+        Some(io) if io.kind() != ErrorKind::BrokenPipe => io_message(FLAG, path, io),
+        _ => e,
+    };
+    if is_special(path) {
+        let file = OpenOptions::new()
+            .write(true)
+            .open(path)
+            .map_err(|e| io_message(FLAG, path, &e))?;
         let mut w = BufWriter::new(file);
-        write(&mut w)?;
+        write(&mut w).map_err(fail)?;
+        return w.flush().map_err(|e| io_message(FLAG, path, &e));
+    }
+    let tmp = temporary(path)?;
+    let result = (|| -> Result<()> {
+        let file = File::create(&tmp).map_err(|e| io_message(FLAG, path, &e))?;
+        let mut w = BufWriter::new(file);
+        write(&mut w).map_err(fail)?;
         let file = w
             .into_inner()
-            .map_err(|e| e.into_error())
-            .with_context(|| format!("--output {}: write failed", path.display()))?;
-        file.sync_all()
-            .with_context(|| format!("--output {}: write failed", path.display()))?;
-        std::fs::rename(&tmp, path)
-            .with_context(|| format!("--output {}: cannot rename into place", path.display()))
+            .map_err(|e| io_message(FLAG, path, e.error()))?;
+        file.sync_all().map_err(|e| io_message(FLAG, path, &e))?;
+        std::fs::rename(&tmp, path).map_err(|e| io_message(FLAG, path, &e))
     })();
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
@@ -41,7 +167,9 @@ pub fn write_atomic(path: &Path, write: impl FnOnce(&mut dyn Write) -> Result<()
     result
 }
 
-/// Runs `write` on stdout, or on `path` atomically when one is given.
+/// Runs `write` on stdout, or on `path` atomically when one is given. A write error on stdout
+/// reads `stdout: cannot write: <reason>`; a closed pipe stays recognisable to
+/// [`is_broken_pipe`].
 pub fn to_stdout_or_file(
     path: Option<&Path>,
     write: impl FnOnce(&mut dyn Write) -> Result<()>,
@@ -51,9 +179,59 @@ pub fn to_stdout_or_file(
         None => {
             let stdout = std::io::stdout();
             let mut lock = BufWriter::new(stdout.lock());
-            write(&mut lock)?;
-            lock.flush().context("writing to stdout")?;
-            Ok(())
+            let result = write(&mut lock).and_then(|()| Ok(lock.flush()?));
+            result.map_err(|e| match io_error(&e) {
+                Some(io) => {
+                    let kind = io.kind();
+                    anyhow!(std::io::Error::new(
+                        kind,
+                        format!("stdout: cannot write: {io}")
+                    ))
+                }
+                None => e,
+            })
         }
+    }
+}
+
+/// Prints `text` on stdout as it is (the caller ends it with a newline), with the errors of
+/// [`to_stdout_or_file`] instead of `println!`'s panic on a closed pipe.
+pub fn print(text: &str) -> Result<()> {
+    to_stdout_or_file(None, |w| {
+        w.write_all(text.as_bytes())?;
+        Ok(())
+    })
+}
+
+/// One note on stderr, `nyquist: note: <text>`: a flag that changes nothing, a default chosen.
+pub fn note(text: &str) {
+    eprintln!("nyquist: note: {text}");
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn io_messages_name_the_flag_path_and_reason_once() {
+        let e = std::io::Error::from(ErrorKind::PermissionDenied);
+        let m = io_message("--plot", Path::new("a.png"), &e).to_string();
+        assert_eq!(m, format!("--plot a.png: cannot write: {e}"));
+        let m = io_message(
+            "--output",
+            Path::new("no-such-folder-x/a.png"),
+            &ErrorKind::NotFound.into(),
+        );
+        assert_eq!(
+            m.to_string(),
+            "--output no-such-folder-x/a.png: folder no-such-folder-x does not exist"
+        );
+    }
+
+    #[test]
+    fn broken_pipes_are_found_through_context() {
+        let e = anyhow::Error::from(std::io::Error::from(ErrorKind::BrokenPipe)).context("x");
+        assert!(is_broken_pipe(&e));
+        assert!(!is_broken_pipe(&anyhow!("x")));
     }
 }

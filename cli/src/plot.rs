@@ -90,9 +90,9 @@ pub enum Kind {
 
 /// The format `path` asks for by its extension (`.png` or `.svg`); any other extension, a
 /// missing folder or a folder in the way is one line naming `flag` (see
-/// [`check_output`](crate::render::check_output)).
+/// [`check_output`](crate::output::check_output)).
 pub fn kind_of(path: &Path, flag: &str) -> Result<Kind> {
-    crate::render::check_output(path, flag, &["png", "svg"])?;
+    crate::output::check_output(path, flag, &["png", "svg"])?;
     let svg = path
         .extension()
         .and_then(|e| e.to_str())

@@ -83,10 +83,11 @@ pub struct PointsArgs {
     /// Number of points [default: 16; required for hammersley].
     #[arg(long)]
     pub count: Option<u64>,
-    /// Dimensions per point.
-    #[arg(long, default_value_t = 2)]
-    pub dims: u32,
-    /// Seed of random and scrambled sets.
+    /// Dimensions per point [default: 2, or the set's own count when it has fewer (vdc: 1)].
+    #[arg(long)]
+    pub dims: Option<u32>,
+    /// Seed of random and scrambled sets (plain vdc, halton, hammersley, their zaremba forms,
+    /// sobol and uniform take none: a note says so).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Index of the first point of a sequence (sequences and random only).
@@ -110,7 +111,9 @@ pub struct PointsArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "csv")]
     pub format: Format,
-    /// Write to this file instead of stdout (required for png).
+    /// Write to this file instead of stdout (required for png). An extension that names
+    /// another format than --format (.csv, .json, .svg, .png) is an error; an unknown one gets
+    /// a note.
     #[arg(short, long)]
     pub output: Option<PathBuf>,
 }
@@ -140,11 +143,20 @@ pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
 
 /// Runs `nyquist points`.
 pub fn run(args: &PointsArgs) -> Result<()> {
-    if args.format == Format::Png {
-        match &args.output {
-            Some(p) => crate::render::check_output(p, "--output", &["png"])?,
-            None => bail!("--format png writes a picture: give --output FILE.png"),
+    match &args.output {
+        Some(p) => check_extension(p, args.format)?,
+        None if args.format == Format::Png => {
+            bail!("--format png writes a picture: give --output FILE.png")
         }
+        None => {}
+    }
+    if args.seed != 0 && !pixel_mode(args) && ignores_seed(args.sampler) {
+        crate::output::note(&format!(
+            "--seed {} changes nothing: {} points do not depend on a seed (with --spp, the \
+             halton, hammersley and sobol pixel samplers are scrambled by it)",
+            args.seed,
+            name(args.sampler)
+        ));
     }
     let (points, dims, grid) = if pixel_mode(args) {
         pixel_samples(args)?
@@ -173,6 +185,83 @@ pub fn run(args: &PointsArgs) -> Result<()> {
     })
 }
 
+/// Whether the point set `sampler` prints (without `--spp`) is the same for every seed.
+pub fn ignores_seed(sampler: SamplerName) -> bool {
+    use SamplerName as S;
+    matches!(
+        sampler,
+        S::Uniform
+            | S::Vdc
+            | S::Halton
+            | S::Hammersley
+            | S::HaltonZaremba
+            | S::HammersleyZaremba
+            | S::Sobol
+    )
+}
+
+/// The format each output extension names.
+const EXTENSIONS: [(&str, Format); 5] = [
+    ("csv", Format::Csv),
+    ("txt", Format::Csv),
+    ("json", Format::Json),
+    ("svg", Format::Svg),
+    ("png", Format::Png),
+];
+
+/// Checks `--output path` against `--format`: an extension that names another format is an
+/// error, an unknown one a note; then the path's folder must take a file
+/// ([`crate::output::check_output`]).
+fn check_extension(path: &std::path::Path, format: Format) -> Result<()> {
+    let fname = |f: Format| {
+        f.to_possible_value()
+            .map_or_else(String::new, |v| v.get_name().to_owned())
+    };
+    if let Some(ext) = crate::output::extension(path) {
+        match EXTENSIONS.iter().find(|(e, _)| *e == ext) {
+            Some(&(_, f)) if f != format => bail!(
+                "--output {}: .{ext} names {} output but --format is {}: give --format {} or \
+                 another extension",
+                path.display(),
+                fname(f),
+                fname(format),
+                fname(f)
+            ),
+            Some(_) => {}
+            None if format == Format::Png => {}
+            None => crate::output::note(&format!(
+                "--output {}: unknown extension .{ext}, writing {} (--format)",
+                path.display(),
+                fname(format)
+            )),
+        }
+    }
+    let formats: &[&str] = if format == Format::Png { &["png"] } else { &[] };
+    crate::output::check_output(path, "--output", formats)
+}
+
+/// The dimension count `args` asks for: `--dims`, else 2, or the set's own count when it has
+/// fewer (vdc: 1).
+pub fn dims_of(args: &PointsArgs) -> u32 {
+    args.dims.unwrap_or(match args.sampler {
+        SamplerName::Vdc if !pixel_mode(args) => VanDerCorput.dims(),
+        _ => 2,
+    })
+}
+
+/// The most dimensions a point set has (`None`: as many as memory allows).
+fn max_dims(sampler: SamplerName) -> Option<u32> {
+    use SamplerName as S;
+    match sampler {
+        S::Vdc => Some(VanDerCorput.dims()),
+        S::ZeroTwo | S::Pmj02 => Some(2),
+        S::Halton | S::HaltonZaremba => Some(nyquist::radical::PRIME_COUNT),
+        S::Hammersley | S::HammersleyZaremba => Some(nyquist::radical::PRIME_COUNT + 1),
+        S::Sobol | S::OwenSobol => Some(nyquist::sequence::SOBOL_DIMS),
+        _ => None,
+    }
+}
+
 /// Whether `args` asks for one pixel's samples from a renderer's sampler (`--spp`, or a sampler
 /// that exists only in that form).
 pub fn pixel_mode(args: &PointsArgs) -> bool {
@@ -195,15 +284,21 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
         ZSobolSampler, ZeroTwoSampler,
     };
     let n = name(args.sampler);
-    let dims = args.dims;
+    let dims = dims_of(args);
     if dims == 0 {
         bail!("--dims 0: a point needs at least one dimension");
     }
     if dims > 1024 {
         bail!("--dims {dims}: samplers have at most 1024 dimensions");
     }
-    if args.count.is_some() {
-        bail!("--count does not apply with --spp: a pixel takes spp samples");
+    if let Some(count) = args.count {
+        if args.spp.is_none() {
+            bail!(
+                "--count {count}: {n} is a pixel sampler: give --spp N (samples per pixel) \
+                 instead of --count"
+            );
+        }
+        bail!("--count {count} does not apply with --spp: a pixel takes spp samples");
     }
     if args.skip != 0 {
         bail!("--skip does not apply with --spp");
@@ -214,6 +309,7 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
     if spp == 0 {
         bail!("--spp 0: need at least one sample per pixel");
     }
+    crate::render::check_spp_limit("--sampler", &n, spp)?;
     if u64::from(spp) * u64::from(dims) > MAX_VALUES {
         bail!("--spp {spp} × --dims {dims} is more than {MAX_VALUES} values");
     }
@@ -343,9 +439,18 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
 /// Generates the points `args` asks for, point-major, and their dimension count.
 pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
     use SamplerName as S;
-    let dims = args.dims;
+    let dims = dims_of(args);
     if dims == 0 {
         bail!("--dims 0: a point needs at least one dimension");
+    }
+    if let Some(max) = max_dims(args.sampler)
+        && dims > max
+    {
+        bail!(
+            "--dims {dims}: {} has at most {max} dimension{}",
+            name(args.sampler),
+            if max == 1 { "" } else { "s" }
+        );
     }
     let count = match (args.count, args.sampler, args.grid) {
         (Some(0), ..) => bail!("--count 0: need at least one point"),
@@ -467,16 +572,16 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
 }
 
 fn fill(set: &dyn Sequence, args: &PointsArgs, out: &mut [f32]) -> Result<()> {
-    if args.dims > set.dims() {
+    let dims = dims_of(args);
+    if dims > set.dims() {
         bail!(
-            "--dims {}: {} has {} dimension{}",
-            args.dims,
+            "--dims {dims}: {} has at most {} dimension{}",
             name(args.sampler),
             set.dims(),
             if set.dims() == 1 { "" } else { "s" }
         );
     }
-    set.fill(args.skip, args.dims, out).map_err(|e| {
+    set.fill(args.skip, dims, out).map_err(|e| {
         anyhow::anyhow!("--skip {} --count: {}: {e}", args.skip, name(args.sampler))
     })?;
     Ok(())

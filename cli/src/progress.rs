@@ -50,6 +50,15 @@ impl Progress {
         }
     }
 
+    /// Shows the bar at once (on a terminal), redrawn twice a second even while no unit
+    /// finishes: for work known in advance to be long, where the first unit may take minutes.
+    pub fn show_now(&self) {
+        if !self.shown.swap(true, Ordering::Relaxed) {
+            self.bar.set_draw_target(ProgressDrawTarget::stderr());
+        }
+        self.bar.enable_steady_tick(Duration::from_millis(500));
+    }
+
     /// Removes the bar from the terminal.
     pub fn finish(&self) {
         self.bar.finish_and_clear();

@@ -9,6 +9,7 @@ use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
 use nyquist::scramble::Scramble;
 use nyquist_film::{Film, FilmConfig, FilmStats, Image, ImageFormat, render_tiles};
+use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -90,6 +91,26 @@ impl ScrambleName {
     }
 }
 
+/// The most samples per pixel sampler `name` (a command-line name) takes below the CLI's own
+/// limit: best-candidate's baked table has 4096 rows, pmj02's table 65536 points.
+pub fn spp_limit(name: &str) -> Option<u32> {
+    match name {
+        "best-candidate" => Some(nyquist::sampler::best_candidate::TABLE_SIZE),
+        "pmj02" => u32::try_from(nyquist::sequence::PMJ02_MAX_POINTS).ok(),
+        _ => None,
+    }
+}
+
+/// The error for `spp` above [`spp_limit`], naming `flag` (`--sampler`, `--samplers`).
+pub fn check_spp_limit(flag: &str, name: &str, spp: u32) -> Result<()> {
+    match spp_limit(name) {
+        Some(max) if spp > max => {
+            bail!("{flag} {name} --spp {spp}: {name} takes at most {max} samples per pixel")
+        }
+        _ => Ok(()),
+    }
+}
+
 /// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
 /// [`NamedSampler`]), with `scramble` if given (only the samplers of
 /// [`SCRAMBLE_NAMES`](nyquist::sampler::SCRAMBLE_NAMES) take one: an error names `--scramble`
@@ -109,6 +130,7 @@ pub fn build_sampler(
     if spp > 1 << 20 {
         bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
     }
+    check_spp_limit("--sampler", &n, spp)?;
     let built = match scramble {
         Some(sc) => NamedSampler::with_scramble(&n, size, spp, seed, sc.scramble()),
         None => NamedSampler::new(&n, size, spp, seed),
@@ -120,6 +142,28 @@ pub fn build_sampler(
         ),
         e => anyhow!("--sampler {n} --spp {spp}: {e}"),
     })
+}
+
+/// Pixel updates above which `render` and `compare` warn before they start (a minute or more
+/// of one core's work).
+pub const LARGE_WORK: f64 = 2e10;
+
+/// Pixels one sample of a `size` image adds to through `filter`: its footprint, `2r + 1`
+/// pixels per axis, clipped to the image.
+pub fn footprint_pixels(size: [u32; 2], filter: &FilterKind) -> f64 {
+    let [rx, ry] = nyquist::filter::Filter::radius(filter);
+    let side = |r: f32, n: u32| (2.0 * f64::from(r)).ceil().clamp(0.0, f64::from(n) - 1.0) + 1.0;
+    side(rx, size[0]) * side(ry, size[1])
+}
+
+/// Prints one warning line when `work` pixel updates exceed [`LARGE_WORK`] and returns whether
+/// it did (the caller then shows its progress bar at once).
+pub fn warn_if_large(work: f64, what: &str) -> bool {
+    if work <= LARGE_WORK {
+        return false;
+    }
+    eprintln!("nyquist: warning: {what}: about {work:.1e} pixel updates; this may take minutes");
+    true
 }
 
 /// A finished render.
@@ -378,42 +422,7 @@ pub fn default_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
-/// Checks that `path` can take an image: a known extension and an existing folder.
-pub fn check_output(path: &Path, flag: &str, formats: &[&str]) -> Result<()> {
-    let ext = path
-        .extension()
-        .and_then(|e| e.to_str())
-        .map(str::to_ascii_lowercase);
-    if !ext.as_deref().is_some_and(|e| formats.contains(&e)) {
-        bail!(
-            "{flag} {}: unknown image extension (expected {})",
-            path.display(),
-            formats
-                .iter()
-                .map(|f| format!(".{f}"))
-                .collect::<Vec<_>>()
-                .join(", ")
-        );
-    }
-    if path.file_name().is_none() {
-        bail!("{flag} {}: not a file name", path.display());
-    }
-    let dir = match path.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p,
-        _ => Path::new("."),
-    };
-    if !dir.is_dir() {
-        bail!(
-            "{flag} {}: folder {} does not exist",
-            path.display(),
-            dir.display()
-        );
-    }
-    if path.is_dir() {
-        bail!("{flag} {}: is a folder", path.display());
-    }
-    Ok(())
-}
+pub use crate::output::check_output;
 
 /// Arguments of `nyquist render`.
 #[derive(Debug, Args)]
@@ -480,7 +489,20 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
+    let footprint = footprint_pixels(args.size, &args.filter);
+    let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
+    let large = warn_if_large(
+        pixels * f64::from(sampler.samples_per_pixel()) * footprint,
+        &format!(
+            "--filter {} adds each of {} samples to up to {footprint} pixels",
+            args.filter,
+            pixels * f64::from(sampler.samples_per_pixel())
+        ),
+    );
     let bar = Progress::new(tile_count(args.size), "render");
+    if large {
+        bar.show_now();
+    }
     let r = render(
         args.scene,
         args.size,
@@ -491,8 +513,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     )?;
     bar.finish();
     if let Some(p) = &args.output {
-        nyquist_film::write_image_file(p, &r.image)
-            .with_context(|| format!("--output {}", p.display()))?;
+        let format = ImageFormat::from_path(p).map_err(|e| anyhow!("--output: {e}"))?;
+        crate::output::write_atomic(p, |w| {
+            Ok(nyquist_film::output::write_image(w, &r.image, format)?)
+        })?;
     }
     if metrics {
         let means = reference(args.scene, args.size, None, threads)?
@@ -501,8 +525,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         let e = rmse(&r.image, &means);
         let sampling = filtered.as_ref().map_or(f64::NAN, |f| rmse(&r.image, f));
         let rate = r.stats.samples as f64 / r.seconds.max(1e-9);
+        let mut out = String::new();
         if args.json {
-            println!(
+            writeln!(
+                out,
                 "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
                 json_string(args.scene.name()),
                 args.size[0],
@@ -519,9 +545,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 r.stats.rejected,
                 json_number(r.seconds),
                 json_number(rate),
-            );
+            )?;
         } else {
-            println!(
+            writeln!(
+                out,
                 "{} {}x{}, {} {} spp, filter {}, {threads} thread{}",
                 args.scene.name(),
                 args.size[0],
@@ -530,16 +557,20 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 sampler.samples_per_pixel(),
                 args.filter,
                 if threads == 1 { "" } else { "s" }
-            );
-            println!("reference      {}", reference_kind(args.scene));
-            println!("rmse           {e:.6}");
-            println!("psnr           {:.2} dB", psnr(e));
-            println!("sampling rmse  {sampling:.6} (against the same filter's converged image)");
-            println!("samples/s      {rate:.0}");
-            println!("samples        {}", r.stats.samples);
-            println!("rejected       {}", r.stats.rejected);
-            println!("time           {:.3} s", r.seconds);
+            )?;
+            writeln!(out, "reference      {}", reference_kind(args.scene))?;
+            writeln!(out, "rmse           {e:.6}")?;
+            writeln!(out, "psnr           {:.2} dB", psnr(e))?;
+            writeln!(
+                out,
+                "sampling rmse  {sampling:.6} (against the same filter's converged image)"
+            )?;
+            writeln!(out, "samples/s      {rate:.0}")?;
+            writeln!(out, "samples        {}", r.stats.samples)?;
+            writeln!(out, "rejected       {}", r.stats.rejected)?;
+            writeln!(out, "time           {:.3} s", r.seconds)?;
         }
+        crate::output::print(&out)?;
     }
     Ok(())
 }

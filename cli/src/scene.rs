@@ -2,7 +2,7 @@
 //! closed form exists.
 //!
 //! - `zoneplate`: L(x, y) = ½ + ½·cos(π r² / W), r the distance in pixels from the image centre
-//!   (W/2, H/2), W the image width (DESIGN.md). Its local frequency r/W cycles per pixel reaches the
+//!   (W/2, H/2), W the image width (docs/cli.md, "Scenes"). Its local frequency r/W cycles per pixel reaches the
 //!   Nyquist limit at the edge midpoints. The box-filtered pixel integral has a closed form through
 //!   the Fresnel integrals: the integrand factors as e^{iπu²/W}·e^{iπv²/W}.
 

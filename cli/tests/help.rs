@@ -64,7 +64,7 @@ fn unknown_names_list_the_allowed_values() {
     }
 }
 
-/// DESIGN.md's spellings: `sobol-owen` names the Owen-scrambled Sobol sampler, and `analyze`
+/// The documented alternative spellings: `sobol-owen` names the Owen-scrambled Sobol sampler, and `analyze`
 /// takes `--input FILE|-` and `--measure` as well as its positional file and `--measures`.
 #[test]
 fn design_spellings_are_accepted() {

@@ -58,8 +58,3 @@ mod tests;
 
 pub use error::Error;
 pub use math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};
-
-/// The README's code blocks, compiled and run as doctests.
-#[cfg(doctest)]
-#[doc = include_str!("../../README.md")]
-struct ReadmeDoctests;

@@ -8,7 +8,7 @@
 //! step reads, since a sum, XOR or low product of 32-bit words depends only on the low bits.
 //! One shuffle at the end puts the four words back in order. The four multiplies of the hash
 //! drop from 28 instructions to 8 plus 7 of splitting and merging; `owen` bench, interleaved
-//! A/B (README design notes).
+//! A/B (docs/design.md).
 //!
 //! The intrinsics are safe inside a function with `#[target_feature(enable = "sse2")]`; the
 //! only `unsafe` is the call into it, sound because SSE2 is part of the x86-64 baseline.

@@ -104,7 +104,7 @@ fn add_sample_cpu(c: &mut Criterion<cpu_time::BenchClock>) {
     add_sample_group(c, "add_sample_cpu");
 }
 
-/// The zone plate of DESIGN.md, L = ½ + ½·cos(π r² / W), on a `size × size` film.
+/// The zone plate of docs/cli.md, L = ½ + ½·cos(π r² / W), on a `size × size` film.
 fn zoneplate(x: f32, y: f32, size: f32) -> f32 {
     let (dx, dy) = (x - size / 2.0, y - size / 2.0);
     0.5 + 0.5 * (std::f32::consts::PI * (dx * dx + dy * dy) / size).cos()

@@ -1,4 +1,4 @@
-//! Renders the zone plate (DESIGN.md: L = ½ + ½·cos(π r² / W), r the distance in pixels from the
+//! Renders the zone plate (docs/cli.md: L = ½ + ½·cos(π r² / W), r the distance in pixels from the
 //! image centre) through the film on N threads and prints the render time, the film's pixel
 //! storage and the process's peak resident memory (VmHWM).
 //!
@@ -13,9 +13,10 @@
 use nyquist::filter::Mitchell;
 use nyquist::sampler::{Jitter, PixelRangeSampler, Sample, SampleLayout, StratifiedSampler};
 use nyquist_film::{Film, FilmConfig, render_tiles};
+use std::io::Write;
 use std::time::Instant;
 
-/// The zone plate at film position `(x, y)` on a `w × h` image (formula of DESIGN.md).
+/// The zone plate at film position `(x, y)` on a `w × h` image (formula of docs/cli.md).
 fn zoneplate(x: f32, y: f32, w: f32, h: f32) -> f32 {
     let (dx, dy) = (
         f64::from(x) - f64::from(w) / 2.0,
@@ -78,14 +79,18 @@ fn main() {
 
     let storage = film.storage_bytes() as u64;
     let peak = vm_hwm_kib().unwrap_or(0) * 1024;
-    println!(
+    let mut out = std::io::stdout().lock();
+    let written = writeln!(
+        out,
         "threads {threads} size {size} spp {spp} tile {tile}: render {:.3} s, render+resolve {:.3} s, \
          {:.1} ns/sample",
         render.as_secs_f64(),
         total.as_secs_f64(),
         render.as_nanos() as f64 / (u64::from(size) * u64::from(size) * u64::from(spp)) as f64,
-    );
-    println!(
+    )
+    .and_then(|()| {
+        writeln!(
+            out,
         "pixel storage {storage} B ({:.1} MiB), image {} B, peak RSS {peak} B ({:.1} MiB, {:.3}x storage; \
          {:.1} MiB before the film), samples {}, checksum {checksum:.6}",
         storage as f64 / 1048576.0,
@@ -94,5 +99,17 @@ fn main() {
         peak as f64 / storage as f64,
         before as f64 / 1024.0,
         film.stats().samples,
-    );
+        )
+    })
+    .and_then(|()| out.flush());
+    match written {
+        Ok(()) => {}
+        // The reader of stdout went away (`| head -1`): stop quietly with 128 + SIGPIPE, as
+        // Unix tools do, instead of println!'s panic.
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(141),
+        Err(e) => {
+            eprintln!("zoneplate_scaling: stdout: {e}");
+            std::process::exit(1);
+        }
+    }
 }

@@ -42,3 +42,9 @@ pub fn pixel_center(x: u32, y: u32) -> (f64, f64) {
 }
 
 pub mod periodogram;
+
+/// The README's code blocks, compiled and run as doctests (here, where both `nyquist` and
+/// `nyquist-film` are in scope).
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+struct ReadmeDoctests;

@@ -142,6 +142,38 @@ fn writing_into_a_missing_or_read_only_folder_fails_and_leaves_nothing() {
 }
 
 #[test]
+fn a_device_target_is_written_in_place_not_replaced() {
+    let img = test_image();
+    let dir = TempDir::new("nyquist-film-device");
+    // A link named like an image, to /dev/null: written through, the link and device kept.
+    let link = dir.join("x.pfm");
+    std::os::unix::fs::symlink("/dev/null", &link).unwrap();
+    write_image_file(&link, &img).unwrap();
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(
+        std::fs::read_link(&link).unwrap(),
+        std::path::Path::new("/dev/null")
+    );
+    // /dev/full fails with the disk-full error and stays a device.
+    let full = dir.join("full.pfm");
+    std::os::unix::fs::symlink("/dev/full", &full).unwrap();
+    let e = write_image_file(&full, &img).unwrap_err();
+    assert!(e.to_string().contains("No space left"), "{e}");
+    assert!(
+        std::fs::symlink_metadata(&full)
+            .unwrap()
+            .file_type()
+            .is_symlink()
+    );
+    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 2, "stray files");
+}
+
+#[test]
 fn writing_into_a_folder_without_write_permission_fails_and_leaves_nothing() {
     use std::os::unix::fs::PermissionsExt;
     let img = test_image();

@@ -10,12 +10,12 @@ use core::fmt;
 /// Spec syntax ([`FilterKind::parse`]): `name[:key=value,…]` with names `box` (or `boxcar`),
 /// `triangle` (or `tent`), `gaussian`, `mitchell`, `lanczos`, and keys
 ///
-/// - `radius` (both axes), `rx`, `ry`: all filters; later keys override earlier ones;
+/// - `radius` (both axes), `rx`, `ry`: all filters; of `radius` and `rx`/`ry` the later wins;
 /// - `alpha` or `sigma` (`α = 1/(2σ²)`): gaussian;
 /// - `b`, `c`: mitchell;
 /// - `tau`: lanczos.
 ///
-/// Unset keys keep the filter's defaults. [`Display`](fmt::Display) writes a spec that parses
+/// No key may be given twice. Unset keys keep the filter's defaults. [`Display`](fmt::Display) writes a spec that parses
 /// back to the same filter.
 ///
 /// ```
@@ -77,6 +77,11 @@ pub enum SpecError<'a> {
         /// The value given.
         value: &'a str,
     },
+    /// A key was given twice (`radius` and `rx`/`ry` may be combined: the later one wins).
+    Duplicate {
+        /// The key.
+        key: &'a str,
+    },
     /// Both `alpha` and `sigma` were given.
     Conflict {
         /// The first key.
@@ -113,8 +118,20 @@ impl fmt::Display for SpecError<'_> {
             SpecError::BadNumber { key, value } => {
                 write!(f, "value `{value}` of key `{key}` is not a number")
             }
+            SpecError::Duplicate { key } => write!(f, "key `{key}` is given twice"),
             SpecError::Conflict { first, second } => {
                 write!(f, "keys `{first}` and `{second}` cannot both be given")
+            }
+            SpecError::Invalid {
+                key,
+                value,
+                error: Error::OutOfRange { what },
+            } => {
+                write!(
+                    f,
+                    "invalid value `{value}` for key `{key}`: {what} must be "
+                )?;
+                range(f, what)
             }
             SpecError::Invalid { key, value, error } => {
                 write!(f, "invalid value `{value}` for key `{key}`: {error}")
@@ -124,6 +141,26 @@ impl fmt::Display for SpecError<'_> {
 }
 
 impl core::error::Error for SpecError<'_> {}
+
+/// Writes the range the constructors accept for parameter `what`.
+fn range(f: &mut fmt::Formatter<'_>, what: &str) -> fmt::Result {
+    use super::{MAX_RADIUS, MIN_RADIUS, mitchell::MAX_BC};
+    match what {
+        "rx" | "ry" => write!(f, "in [{MIN_RADIUS}, {MAX_RADIUS}] (2^-16 to 1024 pixels)"),
+        "b" | "c" => write!(f, "in [-{MAX_BC}, {MAX_BC}]"),
+        "alpha" | "tau" => write!(f, "in [{:e}, {:e}]", f32::MIN_POSITIVE, f32::MAX),
+        "sigma" => write!(
+            f,
+            "positive with 1/(2 sigma^2) in [{:e}, {:e}]",
+            f32::MIN_POSITIVE,
+            f32::MAX
+        ),
+        _ => f.write_str("in its documented range"),
+    }
+}
+
+/// Every key a spec may hold (each at most once).
+const KEYS: [&str; 8] = ["radius", "rx", "ry", "alpha", "sigma", "b", "c", "tau"];
 
 /// A parsed parameter and the `key=value` text that set it.
 #[derive(Clone, Copy)]
@@ -199,6 +236,7 @@ impl FilterKind {
         let (mut b, mut c) = (Param::new(1.0 / 3.0), Param::new(1.0 / 3.0));
         let mut tau = Param::new(3.0);
         let mut alpha_key: Option<&str> = None;
+        let mut seen = 0u16;
         for item in params.into_iter().flat_map(|p| p.split(',')) {
             let item = item.trim();
             if item.is_empty() && params.is_some_and(|p| p.trim().is_empty()) {
@@ -214,10 +252,22 @@ impl FilterKind {
             let value: f32 = text
                 .parse()
                 .map_err(|_| SpecError::BadNumber { key, value: text })?;
+            // A finite number beyond f32 (`1e308`) is out of range, not "infinite": only a
+            // spelled-out `inf`/`infinity` (which has an `i`) is.
+            let value = if value.is_infinite() && !text.bytes().any(|b| b == b'i' || b == b'I') {
+                f32::MAX.copysign(value)
+            } else {
+                value
+            };
             let unknown = SpecError::UnknownKey {
                 filter: canonical,
                 key,
             };
+            let bit = KEYS.iter().position(|&k| k == key).map_or(0, |i| 1u16 << i);
+            if seen & bit != 0 {
+                return Err(SpecError::Duplicate { key });
+            }
+            seen |= bit;
             match key {
                 "radius" => {
                     rx.set(value, key, text);

@@ -4,7 +4,7 @@ use super::{Axis, Filter, check, check_radius};
 use crate::Error;
 
 /// The largest `|B|` or `|C|` [`Mitchell::new`] accepts (keeps every weight finite).
-const MAX_BC: f32 = 1000.0;
+pub(super) const MAX_BC: f32 = 1000.0;
 
 /// The Mitchell–Netravali cubic filter (Mitchell & Netravali 1988) scaled to the radius: per
 /// axis `M(t)` at `t = 2|x|/r`, 0 for `t ≥ 2`, where

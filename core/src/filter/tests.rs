@@ -7,7 +7,7 @@ use std::string::ToString;
 use std::vec::Vec;
 
 // ---------------------------------------------------------------------------------------------
-// f64 oracles: the closed-form definitions of DESIGN.md, written independently of the
+// f64 oracles: the closed-form definitions of docs/cli.md ("Filters"), written independently of the
 // implementations.
 
 fn sinc64(x: f64) -> f64 {
@@ -966,6 +966,54 @@ fn spec_errors_name_the_offence() {
         .unwrap_err()
         .to_string();
     assert!(e.contains("radius") && e.contains('0'), "{e}");
+}
+
+#[test]
+fn spec_errors_give_the_range_and_refuse_repeated_keys() {
+    use SpecError::*;
+    assert_eq!(
+        FilterKind::parse("box:radius=0").unwrap_err().to_string(),
+        "filter spec: invalid value `0` for key `radius`: rx must be in \
+         [0.000015258789, 1024] (2^-16 to 1024 pixels)"
+    );
+    assert_eq!(
+        FilterKind::parse("mitchell:c=1e9").unwrap_err().to_string(),
+        "filter spec: invalid value `1e9` for key `c`: c must be in [-1000, 1000]"
+    );
+    // Finite as typed but beyond f32: out of range, not "must be finite".
+    for big in ["1e308", "-1e400"] {
+        let spec = std::format!("mitchell:b={big}");
+        assert_eq!(
+            FilterKind::parse(&spec),
+            Err(Invalid {
+                key: "b",
+                value: big,
+                error: crate::Error::OutOfRange { what: "b" }
+            })
+        );
+    }
+    assert!(matches!(
+        FilterKind::parse("mitchell:b=inf"),
+        Err(Invalid {
+            error: crate::Error::NonFinite { what: "b" },
+            ..
+        })
+    ));
+    assert_eq!(
+        FilterKind::parse("mitchell:b=0.5,c=0.25,b=1"),
+        Err(Duplicate { key: "b" })
+    );
+    assert_eq!(
+        FilterKind::parse("box:radius=1,radius=2")
+            .unwrap_err()
+            .to_string(),
+        "filter spec: key `radius` is given twice"
+    );
+    // `radius` then `rx` is the documented override, not a repeat.
+    assert_eq!(
+        FilterKind::parse("box:radius=2,rx=1").unwrap().radius(),
+        [1.0, 2.0]
+    );
 }
 
 #[test]

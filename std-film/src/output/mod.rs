@@ -95,7 +95,9 @@ pub fn write_image_file(path: &Path, image: &Image) -> Result<(), Error> {
 }
 
 /// Runs `write` on a temporary file beside `path` and renames it into place on success; removes
-/// it on failure.
+/// it on failure. A `path` that exists and is neither a regular file nor a folder (a device
+/// such as `/dev/null`, a FIFO) is written in place: it cannot be replaced atomically, and
+/// renaming over it would replace the device with a regular file.
 ///
 /// # Errors
 /// Whatever `write` returns, or [`Error::Io`] for create/flush/rename failures.
@@ -119,6 +121,12 @@ pub fn write_file_atomic(
     let name = path
         .file_name()
         .ok_or_else(|| Error::Config(format!("{}: not a file name", path.display())))?;
+    if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
+        let file = std::fs::OpenOptions::new().write(true).open(path)?;
+        let mut w = std::io::BufWriter::new(file);
+        write(&mut w)?;
+        return Ok(w.flush()?);
+    }
     let tmp = dir.join(format!(
         ".{}.tmp-{}",
         name.to_string_lossy(),
