@@ -23,9 +23,9 @@ pub const FONT: &str = "DejaVu Sans";
 /// Ink for text, frames and ticks.
 pub const INK: RGBColor = RGBColor(0, 0, 0);
 /// Major grid lines.
-pub const GRID: RGBColor = RGBColor(215, 215, 215);
+pub const GRID: RGBColor = RGBColor(222, 222, 222);
 /// Minor grid lines.
-pub const GRID_MINOR: RGBColor = RGBColor(238, 238, 238);
+pub const GRID_MINOR: RGBColor = RGBColor(242, 242, 242);
 /// Reference lines (guides, Nyquist limit, white-noise level).
 pub const GUIDE: RGBColor = RGBColor(120, 120, 120);
 
@@ -156,25 +156,29 @@ pub fn render(fig: &impl Figure, kind: Kind) -> Result<Vec<u8>> {
     let (w, h) = fig.size();
     match kind {
         Kind::Png => {
-            let draw = |rgb: &mut Vec<u8>| -> Result<Vec<Raster>> {
-                let root = BitMapBackend::with_buffer(rgb, (w, h)).into_drawing_area();
+            // Drawn at twice the size and averaged down, so that lines, markers and text are
+            // anti-aliased (plotters' bitmap backend draws lines without coverage).
+            let (w2, h2) = (2 * w, 2 * h);
+            let draw = |big: &mut Vec<u8>| -> Result<Vec<Raster>> {
+                let inner = BitMapBackend::with_buffer(big, (w2, h2));
+                let root = supersample::Doubled(inner).into_drawing_area();
                 let rasters = fig.draw(&root)?;
                 root.present()?;
                 Ok(rasters)
             };
-            let white = vec![255u8; 3 * w as usize * h as usize];
-            let mut rgb = white.clone();
-            let rasters = draw(&mut rgb)?;
+            let white = vec![255u8; 3 * w2 as usize * h2 as usize];
+            let mut big = white.clone();
+            let rasters = draw(&mut big)?;
             if !rasters.is_empty() {
                 // Rasters go under the drawing, as in the SVG: lay them on a white page, then
                 // draw again on top.
-                rgb = white;
+                big = white;
                 for r in &rasters {
-                    blit(&mut rgb, w, h, r);
+                    blit(&mut big, w2, h2, &doubled_raster(r));
                 }
-                draw(&mut rgb)?;
+                draw(&mut big)?;
             }
-            encode_png(&rgb, w, h)
+            encode_png(&halve(&big, w, h), w, h)
         }
         Kind::Svg => {
             let mut svg = String::new();
@@ -187,6 +191,181 @@ pub fn render(fig: &impl Figure, kind: Kind) -> Result<Vec<u8>> {
             };
             embed_rasters(&mut svg, &rasters)?;
             Ok(svg.into_bytes())
+        }
+    }
+}
+
+/// `r` at twice the size (each pixel a 2 × 2 block).
+fn doubled_raster(r: &Raster) -> Raster {
+    let (w, h) = (r.width as usize, r.height as usize);
+    let mut rgb = Vec::with_capacity(12 * w * h);
+    for j in 0..2 * h {
+        for i in 0..2 * w {
+            let o = 3 * ((j / 2) * w + i / 2);
+            rgb.extend_from_slice(&r.rgb[o..o + 3]);
+        }
+    }
+    Raster {
+        x: 2 * r.x,
+        y: 2 * r.y,
+        width: 2 * r.width,
+        height: 2 * r.height,
+        rgb,
+    }
+}
+
+/// The `w × h` RGB picture whose pixels are the rounded means of the 2 × 2 blocks of `big`
+/// (`2w × 2h`).
+fn halve(big: &[u8], w: u32, h: u32) -> Vec<u8> {
+    let (w, h) = (w as usize, h as usize);
+    let mut out = Vec::with_capacity(3 * w * h);
+    for y in 0..h {
+        for x in 0..w {
+            for c in 0..3 {
+                let at = |dx: usize, dy: usize| {
+                    u32::from(big[3 * ((2 * y + dy) * 2 * w + 2 * x + dx) + c])
+                };
+                out.push(((at(0, 0) + at(1, 0) + at(0, 1) + at(1, 1) + 2) / 4) as u8);
+            }
+        }
+    }
+    out
+}
+
+/// Drawing at twice the size: see [`supersample::Doubled`].
+mod supersample {
+    use plotters::prelude::{DrawingBackend, FontDesc, TextStyle};
+    use plotters_backend::{
+        BackendColor, BackendCoord, BackendStyle, BackendTextStyle, DrawingErrorKind,
+    };
+
+    /// A backend of a given logical size that draws on `B`, twice as large: coordinates, stroke
+    /// widths, radii and text sizes doubled. Layout (text extents) is measured at the logical size,
+    /// so a figure lays out exactly as on a plain backend.
+    pub(super) struct Doubled<B>(pub(super) B);
+
+    /// A style with its stroke width doubled.
+    struct Thick<'a, S>(&'a S);
+
+    impl<S: BackendStyle> BackendStyle for Thick<'_, S> {
+        fn color(&self) -> BackendColor {
+            self.0.color()
+        }
+        fn stroke_width(&self) -> u32 {
+            2 * self.0.stroke_width()
+        }
+    }
+
+    fn twice((x, y): BackendCoord) -> BackendCoord {
+        (2 * x, 2 * y)
+    }
+
+    impl<B: DrawingBackend> DrawingBackend for Doubled<B> {
+        type ErrorType = B::ErrorType;
+
+        fn get_size(&self) -> (u32, u32) {
+            let (w, h) = self.0.get_size();
+            (w / 2, h / 2)
+        }
+
+        fn ensure_prepared(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            self.0.ensure_prepared()
+        }
+
+        fn present(&mut self) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            self.0.present()
+        }
+
+        fn draw_pixel(
+            &mut self,
+            point: BackendCoord,
+            color: BackendColor,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            let (x, y) = twice(point);
+            for (dx, dy) in [(0, 0), (1, 0), (0, 1), (1, 1)] {
+                self.0.draw_pixel((x + dx, y + dy), color)?;
+            }
+            Ok(())
+        }
+
+        fn draw_line<S: BackendStyle>(
+            &mut self,
+            from: BackendCoord,
+            to: BackendCoord,
+            style: &S,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            self.0.draw_path([twice(from), twice(to)], &Thick(style))
+        }
+
+        fn draw_rect<S: BackendStyle>(
+            &mut self,
+            upper_left: BackendCoord,
+            bottom_right: BackendCoord,
+            style: &S,
+            fill: bool,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            let (a, b) = (twice(upper_left), twice(bottom_right));
+            if fill {
+                self.0.draw_rect(a, (b.0 + 1, b.1 + 1), style, true)
+            } else {
+                let corners = [a, (b.0, a.1), b, (a.0, b.1), a];
+                self.0.draw_path(corners, &Thick(style))
+            }
+        }
+
+        fn draw_path<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+            &mut self,
+            path: I,
+            style: &S,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            self.0.draw_path(
+                path.into_iter().map(twice).collect::<Vec<_>>(),
+                &Thick(style),
+            )
+        }
+
+        fn draw_circle<S: BackendStyle>(
+            &mut self,
+            center: BackendCoord,
+            radius: u32,
+            style: &S,
+            fill: bool,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            self.0
+                .draw_circle(twice(center), 2 * radius, &Thick(style), fill)
+        }
+
+        fn fill_polygon<S: BackendStyle, I: IntoIterator<Item = BackendCoord>>(
+            &mut self,
+            vert: I,
+            style: &S,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            self.0
+                .fill_polygon(vert.into_iter().map(twice).collect::<Vec<_>>(), style)
+        }
+
+        fn draw_text<TStyle: BackendTextStyle>(
+            &mut self,
+            text: &str,
+            style: &TStyle,
+            pos: BackendCoord,
+        ) -> Result<(), DrawingErrorKind<Self::ErrorType>> {
+            let font = FontDesc::new(style.family(), 2.0 * style.size(), style.style())
+                .transform(style.transform());
+            let big = TextStyle {
+                font,
+                color: style.color(),
+                pos: style.anchor(),
+            };
+            self.0.draw_text(text, &big, twice(pos))
+        }
+
+        fn estimate_text_size<TStyle: BackendTextStyle>(
+            &self,
+            text: &str,
+            style: &TStyle,
+        ) -> Result<(u32, u32), DrawingErrorKind<Self::ErrorType>> {
+            self.0.estimate_text_size(text, style)
         }
     }
 }
@@ -765,6 +944,29 @@ mod tests {
         ] {
             assert_eq!(base64(plain.as_bytes()), coded, "{plain}");
         }
+    }
+
+    #[test]
+    fn halving_averages_2x2_blocks_and_keeps_doubled_rasters() {
+        // 4 × 2 RGB: a black/white block (mean 127.5, rounded up) and a grey one.
+        let mut big = vec![0u8; 3 * 8];
+        for (i, v) in [0u8, 255, 100, 100, 255, 0, 100, 100]
+            .into_iter()
+            .enumerate()
+        {
+            big[3 * i..3 * i + 3].fill(v);
+        }
+        assert_eq!(halve(&big, 2, 1), [128, 128, 128, 100, 100, 100]);
+        let r = Raster {
+            x: 1,
+            y: 2,
+            width: 2,
+            height: 1,
+            rgb: vec![1, 2, 3, 4, 5, 6],
+        };
+        let d = doubled_raster(&r);
+        assert_eq!((d.x, d.y, d.width, d.height), (2, 4, 4, 2));
+        assert_eq!(halve(&d.rgb, 2, 1), r.rgb);
     }
 
     #[test]
