@@ -6,7 +6,6 @@
 //! computed before anything is written, so an error leaves no file and prints one line.
 
 use crate::points::{self, Format, PointsArgs, SamplerName, parse_grid};
-use crate::raster::{CHAR, Canvas, LINE};
 use anyhow::{Context, Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use nyquist::analysis::{
@@ -32,14 +31,18 @@ const BOUNDS_MAX_M: u32 = 1 << 16;
 const DEFAULT_FREQ: u32 = 64;
 /// Periodogram terms (realisations × points × frequencies) above which `--spectrum` warns.
 const LARGE_SPECTRUM: f64 = 1e10;
-/// Side of each of the two square panels of the spectrum picture.
-pub const PANEL: u32 = 512;
-/// Margin around and between the panels.
+/// Margin around and between the panels of the spectrum picture.
 const MARGIN: u32 = 16;
-/// Width of the spectrum picture: `3·16 + 2·512`.
-pub const SPECTRUM_WIDTH: u32 = 3 * MARGIN + 2 * PANEL;
-/// Height of the spectrum picture: two title lines, the panels and one label line.
-pub const SPECTRUM_HEIGHT: u32 = 2 * MARGIN + 3 * LINE + 4 + PANEL;
+/// Height of the spectrum picture's title block.
+const HEADER: u32 = 58;
+/// The periodogram panel (axes included), the colour bar beside it and the radial plot.
+const PERIODOGRAM_AREA: (u32, u32) = (620, 640);
+const COLORBAR_AREA: (u32, u32) = (120, 640);
+const RADIAL_AREA: (u32, u32) = (600, 640);
+/// Width of the spectrum picture.
+pub const SPECTRUM_WIDTH: u32 = 4 * MARGIN + PERIODOGRAM_AREA.0 + COLORBAR_AREA.0 + RADIAL_AREA.0;
+/// Height of the spectrum picture.
+pub const SPECTRUM_HEIGHT: u32 = 2 * MARGIN + HEADER + PERIODOGRAM_AREA.1;
 /// The periodogram's grey scale: power in dB from `LO_DB` (black) to `HI_DB` (white).
 const LO_DB: f64 = -30.0;
 const HI_DB: f64 = 10.0;
@@ -134,10 +137,11 @@ pub struct AnalyzeArgs {
     /// `source`, `star-method` and `seconds`.
     #[arg(long)]
     pub json: bool,
-    /// Write the periodogram (log scale, DC at the centre) beside its radial mean power as one
-    /// 1072×578 PNG (2D sets; dimensions 0 and 1 of wider sets). Grey scale: −30 dB black,
-    /// +10 dB white; white noise is 0 dB.
-    #[arg(long, value_name = "FILE.png")]
+    /// Write the periodogram (log scale, DC at the centre, with its dB scale bar) beside its
+    /// radial mean power as one 1404×730 picture (2D sets; dimensions 0 and 1 of wider sets):
+    /// PNG for FILE.png, SVG for FILE.svg (vector axes and text; the periodogram itself is a
+    /// PNG image inside the SVG). Grey scale: −30 dB black, +10 dB white; white noise is 0 dB.
+    #[arg(long, value_name = "FILE.png|FILE.svg")]
     pub spectrum: Option<PathBuf>,
     /// Highest integer frequency F of the periodogram: the grid is (2F+1)² [default: 64]. Without
     /// --spectrum it changes nothing (a note says so).
@@ -189,7 +193,7 @@ pub fn run(args: &AnalyzeArgs) -> Result<()> {
         rows.extend(measure(args, &set, m)?);
     }
     let spectrum = match &args.spectrum {
-        Some(path) => Some(spectrum(args, &coords, dims, path)?),
+        Some(path) => Some(spectrum(args, &coords, dims, &source, path)?),
         None => None,
     };
     let seconds = start.elapsed().as_secs_f64();
@@ -275,7 +279,7 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
         }
     }
     if let Some(path) = &args.spectrum {
-        crate::render::check_output(path, "--spectrum", &["png"])?;
+        crate::plot::kind_of(path, "--spectrum")?;
         let freq = args.freq.unwrap_or(DEFAULT_FREQ);
         if freq == 0 || freq > nyquist_film::periodogram::MAX_FREQ {
             bail!(
@@ -620,7 +624,13 @@ struct SpectrumInfo {
 }
 
 /// Computes the averaged periodogram and writes the picture.
-fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Result<SpectrumInfo> {
+fn spectrum(
+    args: &AnalyzeArgs,
+    coords: &[f64],
+    dims: usize,
+    source: &str,
+    path: &Path,
+) -> Result<SpectrumInfo> {
     let t = Instant::now();
     if dims < 2 {
         bail!("--spectrum: needs points with at least 2 dimensions, the set has 1");
@@ -666,8 +676,19 @@ fn spectrum(args: &AnalyzeArgs, coords: &[f64], dims: usize, path: &Path) -> Res
     progress.finish();
     let s = pg.spectrum().map_err(|e| anyhow!("--spectrum: {e}"))?;
     let n = coords.len() / dims;
-    let canvas = draw_spectrum(&s, n);
-    canvas.write_png(path, "--spectrum")?;
+    let title = match args.sampler {
+        Some(_) => format!("nyquist analyze --sampler {source}"),
+        None => format!("nyquist analyze {source}"),
+    };
+    let figure = SpectrumPlot {
+        spectrum: &s,
+        points: n,
+        title: format!(
+            "{title} --freq {} --realisations {}",
+            s.max_freq, s.realisations
+        ),
+    };
+    crate::plot::save(&figure, path, "--spectrum")?;
     Ok(SpectrumInfo {
         path: path.to_path_buf(),
         max_freq: s.max_freq,
@@ -683,111 +704,163 @@ fn pairs_of(c: &[f64], dims: usize) -> Vec<[f64; 2]> {
     c.chunks_exact(dims).map(|p| [p[0], p[1]]).collect()
 }
 
-/// The periodogram (left) and the radial mean power (right).
-fn draw_spectrum(s: &nyquist_film::periodogram::Spectrum, n: usize) -> Canvas {
-    const INK: [u8; 3] = [0, 0, 0];
-    const GREY: [u8; 3] = [150, 150, 150];
-    const CURVE: [u8; 3] = [20, 60, 200];
-    let mut c = Canvas::new(SPECTRUM_WIDTH, SPECTRUM_HEIGHT, [255, 255, 255]);
-    let f = s.max_freq;
-    let side = 2 * f as usize + 1;
-    let top = i64::from(MARGIN + 2 * LINE);
-    let left0 = i64::from(MARGIN);
-    let left1 = i64::from(2 * MARGIN + PANEL);
-    c.text(
-        left0,
-        i64::from(MARGIN),
-        &format!("periodogram, N = {n}, {} realisation(s)", s.realisations),
-        INK,
-    );
-    c.text(
-        left0,
-        i64::from(MARGIN + LINE),
-        &format!("f in [-{f}, {f}]^2, DC at centre, {LO_DB}..+{HI_DB} dB"),
-        INK,
-    );
-    // Left: box-averaged power per pixel, fy upwards.
-    let p = PANEL as usize;
-    let range = |px: usize| {
-        let a = px * side / p;
-        let b = ((px + 1) * side / p).max(a + 1).min(side);
-        (a, b)
+/// The grey level of power `p` on the −30..+10 dB scale.
+fn grey(p: f64) -> u8 {
+    let t = if p > 0.0 {
+        ((10.0 * p.log10() - LO_DB) / (HI_DB - LO_DB)).clamp(0.0, 1.0)
+    } else {
+        0.0
     };
-    for py in 0..p {
-        let (ya, yb) = range(p - 1 - py);
-        for px in 0..p {
-            let (xa, xb) = range(px);
+    (255.0 * t).round() as u8
+}
+
+/// The periodogram as a `w × h` grey RGB picture, fy upwards: each pixel the mean power of the
+/// frequency cells it covers.
+fn periodogram_rgb(s: &nyquist_film::periodogram::Spectrum, w: u32, h: u32) -> Vec<u8> {
+    let side = 2 * s.max_freq as usize + 1;
+    let range = |px: usize, n: usize| {
+        let a = px * side / n;
+        let b = ((px + 1) * side / n).max(a + 1).min(side);
+        (a.min(side - 1), b)
+    };
+    let (w, h) = (w as usize, h as usize);
+    let mut rgb = Vec::with_capacity(3 * w * h);
+    for py in 0..h {
+        let (ya, yb) = range(h - 1 - py, h);
+        for px in 0..w {
+            let (xa, xb) = range(px, w);
             let mut sum = 0.0;
             for y in ya..yb {
                 for x in xa..xb {
                     sum += s.power[y * side + x];
                 }
             }
-            let mean = sum / ((yb - ya) * (xb - xa)) as f64;
-            let t = if mean > 0.0 {
-                ((10.0 * mean.log10() - LO_DB) / (HI_DB - LO_DB)).clamp(0.0, 1.0)
-            } else {
-                0.0
-            };
-            let g = (255.0 * t).round() as u8;
-            c.put(left0 + px as i64, top + py as i64, [g, g, g]);
+            let g = grey(sum / ((yb - ya) * (xb - xa)) as f64);
+            rgb.extend_from_slice(&[g, g, g]);
         }
     }
-    // Right: radial mean power for r = 1..=F (DC is N, off the scale).
-    let radial = &s.radial_mean;
-    let peak = radial.iter().skip(1).cloned().fold(0.0f64, f64::max);
-    let ymax = peak.ceil().clamp(2.0, 8.0);
-    c.text(
-        left1,
-        i64::from(MARGIN),
-        "radial mean power (white noise = 1)",
-        INK,
-    );
-    c.text(
-        left1,
-        i64::from(MARGIN + LINE),
-        &format!("r = 1..{f}, power 0..{ymax}"),
-        INK,
-    );
-    let pw = f64::from(PANEL - 1);
-    let to_x = |r: f64| left1 as f64 + pw * r / f64::from(f);
-    let to_y = |v: f64| top as f64 + pw * (1.0 - v.clamp(0.0, ymax) / ymax);
-    for i in 0..i64::from(PANEL) {
-        c.put(left1 + i, top + i64::from(PANEL) - 1, INK);
-        c.put(left1, top + i, INK);
-        if i % 8 < 4 {
-            c.put(left1 + i, to_y(1.0).round() as i64, GREY);
+    rgb
+}
+
+/// The spectrum picture: the periodogram with its dB scale bar (left) and the radial mean
+/// power against the frequency (right).
+struct SpectrumPlot<'a> {
+    spectrum: &'a nyquist_film::periodogram::Spectrum,
+    points: usize,
+    title: String,
+}
+
+impl crate::plot::Figure for SpectrumPlot<'_> {
+    fn size(&self) -> (u32, u32) {
+        (SPECTRUM_WIDTH, SPECTRUM_HEIGHT)
+    }
+
+    fn draw<DB: plotters::prelude::DrawingBackend>(
+        &self,
+        root: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    ) -> Result<Vec<crate::plot::Raster>>
+    where
+        DB::ErrorType: 'static,
+    {
+        use crate::plot::{Axes, GUIDE, INK, Raster, color, font, panel, title};
+        use plotters::prelude::*;
+        use plotters::style::text_anchor::{HPos, Pos, VPos};
+        let s = self.spectrum;
+        let f = f64::from(s.max_freq);
+        let m = MARGIN as i32;
+        let (w, _) = self.size();
+        let sizes = [(18.0, 1), (14.0, 2)];
+        let used = title(root, &self.title, (m, m), w - 2 * MARGIN, &sizes)?;
+        root.draw_text(
+            &format!(
+                "N = {} points, {} realisation{} averaged; power P(f) = |Σ exp(−2πi f·x)|² / N, \
+                 white noise 1 (0 dB)",
+                self.points,
+                s.realisations,
+                if s.realisations == 1 { "" } else { "s" }
+            ),
+            &font(14.0).color(&INK),
+            (m, m + used + 3),
+        )?;
+        let top = m + HEADER as i32;
+        let mut rasters = Vec::new();
+        // The periodogram, one raster pixel per screen pixel of its plotting area.
+        let area = root.clone().shrink((m, top), PERIODOGRAM_AREA);
+        let mut axes = Axes::linear(-f - 0.5..f + 0.5, -f - 0.5..f + 0.5);
+        axes.caption = "periodogram (DC at the centre)".to_owned();
+        axes.x_desc = "frequency fx".to_owned();
+        axes.y_desc = "frequency fy".to_owned();
+        axes.image = true;
+        let chart = panel(&area, &axes)?;
+        let (xr, yr) = chart.plotting_area().get_pixel_range();
+        let (w, h) = ((xr.end - xr.start) as u32, (yr.end - yr.start) as u32);
+        rasters.push(Raster {
+            x: xr.start,
+            y: yr.start,
+            width: w,
+            height: h,
+            rgb: periodogram_rgb(s, w, h),
+        });
+        // Its scale bar.
+        let x_bar = m + (PERIODOGRAM_AREA.0 + MARGIN) as i32;
+        let area = root.clone().shrink((x_bar, top), COLORBAR_AREA);
+        let mut axes = Axes::linear(0.0..1.0, LO_DB..HI_DB);
+        axes.x_major.clear();
+        axes.x_minor.clear();
+        axes.caption = "dB".to_owned();
+        axes.image = true;
+        let chart = panel(&area, &axes)?;
+        let (xr, yr) = chart.plotting_area().get_pixel_range();
+        let (w, h) = ((xr.end - xr.start) as u32, (yr.end - yr.start) as u32);
+        let mut rgb = Vec::with_capacity(3 * (w * h) as usize);
+        for py in 0..h {
+            let db = HI_DB - (HI_DB - LO_DB) * (f64::from(py) + 0.5) / f64::from(h.max(1));
+            let g = grey(10f64.powf(db / 10.0));
+            for _ in 0..w {
+                rgb.extend_from_slice(&[g, g, g]);
+            }
         }
+        rasters.push(Raster {
+            x: xr.start,
+            y: yr.start,
+            width: w,
+            height: h,
+            rgb,
+        });
+        // Radial mean power for r = 1..=F (DC is N, off the scale).
+        let radial = &s.radial_mean;
+        let peak = radial.iter().skip(1).cloned().fold(0.0f64, f64::max);
+        let x_rad = x_bar + (COLORBAR_AREA.0 + MARGIN) as i32;
+        let area = root.clone().shrink((x_rad, top), RADIAL_AREA);
+        let mut axes = Axes::linear(0.0..f, 0.0..(1.08 * peak).max(1.5));
+        axes.caption = "radial mean power".to_owned();
+        axes.x_desc = "frequency |f|".to_owned();
+        axes.y_desc = "mean power over the annulus".to_owned();
+        let mut chart = panel(&area, &axes)?;
+        chart.draw_series(DashedLineSeries::new(
+            [(0.0, 1.0), (f, 1.0)],
+            6,
+            4,
+            GUIDE.stroke_width(1),
+        ))?;
+        let at = chart.backend_coord(&(0.0, 1.0));
+        root.draw_text(
+            "white noise",
+            &font(13.0)
+                .color(&GUIDE)
+                .pos(Pos::new(HPos::Left, VPos::Bottom)),
+            (at.0 + 6, at.1 - 4),
+        )?;
+        let pts: Vec<(f64, f64)> = (1..radial.len()).map(|r| (r as f64, radial[r])).collect();
+        chart.draw_series(LineSeries::new(
+            pts.iter().copied(),
+            color(0).stroke_width(2),
+        ))?;
+        if pts.len() == 1 {
+            chart.draw_series(pts.iter().map(|&p| Circle::new(p, 3, color(0).filled())))?;
+        }
+        Ok(rasters)
     }
-    for r in 1..f as usize {
-        c.line(
-            (to_x(r as f64), to_y(radial[r])),
-            (to_x((r + 1) as f64), to_y(radial[r + 1])),
-            CURVE,
-        );
-    }
-    if f == 1 {
-        c.disc(to_x(1.0), to_y(radial[1]), 2.5, CURVE);
-    }
-    let below = top + i64::from(PANEL) + 4;
-    c.text(left1, below, "0", INK);
-    let fs = f.to_string();
-    c.text(
-        left1 + i64::from(PANEL) - i64::from(CHAR) * fs.len() as i64,
-        below,
-        &fs,
-        INK,
-    );
-    c.text(left1 + 4, to_y(1.0).round() as i64 - 10, "1", INK);
-    c.text(left1 + 4, top + 2, &format!("{ymax}"), INK);
-    c.text(left0, below, &format!("-{f}"), INK);
-    c.text(
-        left0 + i64::from(PANEL) - i64::from(CHAR) * (fs.len() as i64 + 1),
-        below,
-        &format!("+{f}"),
-        INK,
-    );
-    c
 }
 
 /// A finite number as JSON (shortest round-trip form).
@@ -949,21 +1022,40 @@ mod tests {
     }
 
     #[test]
-    fn spectrum_picture_has_the_documented_size() {
+    fn periodogram_pixels_follow_the_db_scale() {
         let s = nyquist_film::periodogram::periodogram(&[&[[0.1, 0.2], [0.6, 0.7]]], 3).unwrap();
-        let c = draw_spectrum(&s, 2);
-        assert_eq!(c.width(), SPECTRUM_WIDTH);
-        assert_eq!((SPECTRUM_WIDTH, SPECTRUM_HEIGHT), (1072, 578));
-        // The centre pixel of the left panel shows DC, P = N = 2, on the −30..+10 dB scale.
-        let top = MARGIN + 2 * LINE;
+        // One pixel per frequency cell: the centre shows DC, P = N = 2, on −30..+10 dB.
+        let rgb = periodogram_rgb(&s, 7, 7);
+        let at = |x: usize, y: usize| rgb[3 * (y * 7 + x)];
         let want = (255.0 * (10.0 * 2f64.log10() + 30.0) / 40.0).round() as u8;
-        assert_eq!(c.get(MARGIN + PANEL / 2, top + PANEL / 2), [want; 3]);
+        assert_eq!(at(3, 3), want);
         // The bottom-left pixel is f = (−3, −3) (fy grows upwards).
-        let corner = s.at(-3, -3);
-        let t = ((10.0 * corner.log10() + 30.0) / 40.0).clamp(0.0, 1.0);
+        assert_eq!(at(0, 6), grey(s.at(-3, -3)));
+        assert_eq!(grey(1.0), (255.0 * 30.0 / 40.0f64).round() as u8);
+        assert_eq!((grey(0.0), grey(1e-9), grey(1e9)), (0, 0, 255));
+    }
+
+    #[test]
+    fn spectrum_picture_has_the_documented_size_in_png_and_svg() {
+        use crate::plot::{Kind, render};
+        let s = nyquist_film::periodogram::periodogram(&[&[[0.1, 0.2], [0.6, 0.7]]], 3).unwrap();
+        let fig = SpectrumPlot {
+            spectrum: &s,
+            points: 2,
+            title: "nyquist analyze t.csv --freq 3 --realisations 1".to_owned(),
+        };
+        assert_eq!((SPECTRUM_WIDTH, SPECTRUM_HEIGHT), (1404, 730));
+        let png = render(&fig, Kind::Png).unwrap();
+        let reader = png::Decoder::new(std::io::Cursor::new(png))
+            .read_info()
+            .unwrap();
         assert_eq!(
-            c.get(MARGIN, top + PANEL - 1),
-            [(255.0 * t).round() as u8; 3]
+            (reader.info().width, reader.info().height),
+            (SPECTRUM_WIDTH, SPECTRUM_HEIGHT)
         );
+        let svg = String::from_utf8(render(&fig, Kind::Svg).unwrap()).unwrap();
+        assert_eq!(svg.matches("<image ").count(), 2);
+        assert!(svg.contains("data:image/png;base64,iVBORw0KGgo"));
+        assert!(svg.contains("nyquist analyze t.csv --freq 3"));
     }
 }

@@ -21,7 +21,7 @@ use std::time::Instant;
 /// Space between cells and around the sheet, in pixels.
 pub const PAD: u32 = 8;
 /// Gap between a crop and its label.
-const GAP: u32 = 3;
+const GAP: u32 = 5;
 /// Text lines under each crop: sampler; filter and spp; RMSE.
 const LABEL_LINES: u32 = 3;
 /// Title lines at the top of the sheet.

@@ -25,8 +25,7 @@
 //! assert!((-0.9..-0.2).contains(&slope), "{slope}");
 //! ```
 
-use crate::raster::{CHAR, Canvas, LINE, text_width};
-use crate::render::{check_output, default_threads, json_number, json_string};
+use crate::render::{default_threads, json_number, json_string};
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use nyquist::sampler::{
@@ -85,14 +84,14 @@ impl Integrand {
         }
     }
 
-    /// The function in ASCII (for the plot's 8 × 8 font).
+    /// The function, as the plot captions it.
     pub fn formula(self) -> &'static str {
         match self {
-            Integrand::Disk => "x^2+y^2 < 2/pi",
-            Integrand::Triangle => "y < x",
-            Integrand::Step => "x < 1/pi",
-            Integrand::Gaussian => "exp(-x^2-y^2)",
-            Integrand::Bilinear => "x*y",
+            Integrand::Disk => "1 where x² + y² < 2/π",
+            Integrand::Triangle => "1 where y < x",
+            Integrand::Step => "1 where x < 1/π",
+            Integrand::Gaussian => "exp(−x² − y²)",
+            Integrand::Bilinear => "x·y",
         }
     }
 
@@ -502,8 +501,9 @@ pub struct ConvergeArgs {
     /// Worker threads [default: the number of cores]; the numbers do not depend on it.
     #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
     pub threads: Option<u16>,
-    /// Also draw RMSE against N, log-log, one panel per integrand and one line per sampler.
-    #[arg(long, value_name = "FILE.png")]
+    /// Also draw RMSE against N, log-log, one panel per integrand and one line per sampler,
+    /// each panel with a legend of the samplers' slopes: SVG for FILE.svg, PNG for FILE.png.
+    #[arg(long, value_name = "FILE.png|FILE.svg")]
     pub plot: Option<PathBuf>,
     /// Print JSON (slopes and every RMSE) instead of the Markdown table.
     #[arg(long)]
@@ -585,7 +585,7 @@ fn study_of(args: &ConvergeArgs) -> Result<Study> {
 /// Runs `nyquist converge`.
 pub fn run(args: &ConvergeArgs) -> Result<()> {
     if let Some(p) = &args.plot {
-        check_output(p, "--plot", &["png"])?;
+        crate::plot::kind_of(p, "--plot")?;
     }
     let study = study_of(args)?;
     study.check()?;
@@ -594,7 +594,11 @@ pub fn run(args: &ConvergeArgs) -> Result<()> {
     let outcome = study.run(threads)?;
     let seconds = start.elapsed().as_secs_f64();
     if let Some(p) = &args.plot {
-        plot(&study, &outcome.curves).write_png(p, "--plot")?;
+        let figure = Plot {
+            study: &study,
+            curves: &outcome.curves,
+        };
+        crate::plot::save(&figure, p, "--plot")?;
     }
     let text = if args.json {
         json(&study, &outcome, args, threads, seconds)
@@ -737,240 +741,223 @@ fn json(study: &Study, o: &Outcome, args: &ConvergeArgs, threads: usize, seconds
     )
 }
 
-/// Line colours of the plot, one per sampler (repeating after ten).
-const COLORS: [[u8; 3]; 10] = [
-    [0, 90, 200],
-    [220, 30, 30],
-    [0, 150, 60],
-    [240, 130, 0],
-    [130, 60, 190],
-    [120, 80, 40],
-    [230, 80, 180],
-    [0, 170, 190],
-    [150, 150, 0],
-    [90, 90, 90],
-];
-/// Size of one panel of the plot.
-pub const PANEL_W: u32 = 420;
+/// Width of one panel of the plot: the log-log chart and its legend beside it.
+pub const PANEL_W: u32 = 640;
 /// Height of one panel of the plot.
-pub const PANEL_H: u32 = 330;
+pub const PANEL_H: u32 = 380;
+/// Width of a panel's legend.
+const LEGEND_W: u32 = 190;
 /// Margin around the plot and between panels.
-const MARGIN: u32 = 12;
+const MARGIN: u32 = 16;
 /// Panels per row.
 const COLUMNS: u32 = 3;
-/// Title lines at the top of the plot.
-const TITLE_LINES: u32 = 2;
+/// Pixels of the title block at the top: the command (up to three lines) and the notes (two).
+const HEADER_H: u32 = 96;
 
-/// Colour of sampler `k` in the plot.
-pub fn color(k: usize) -> [u8; 3] {
-    COLORS[k % COLORS.len()]
-}
-
-/// The plot's size for `integrands` panels (plus one for the legend): at most three panels
-/// across.
+/// The plot's size for `integrands` panels: at most three panels across.
 ///
 /// ```
 /// use nyquist_cli::converge::{plot_size, PANEL_W, PANEL_H};
-/// assert_eq!(plot_size(5), [12 + 3 * (PANEL_W + 12), 12 + 20 + 12 + 2 * (PANEL_H + 12)]);
-/// assert_eq!(plot_size(1), [12 + 2 * (PANEL_W + 12), 12 + 20 + 12 + PANEL_H + 12]);
+/// assert_eq!(plot_size(5), [16 + 3 * (PANEL_W + 16), 16 + 96 + 2 * (PANEL_H + 16)]);
+/// assert_eq!(plot_size(1), [16 + PANEL_W + 16, 16 + 96 + PANEL_H + 16]);
 /// ```
 pub fn plot_size(integrands: usize) -> [u32; 2] {
-    let cells = integrands as u32 + 1;
+    let cells = (integrands as u32).max(1);
     let cols = cells.min(COLUMNS);
     let rows = cells.div_ceil(cols);
     [
         MARGIN + cols * (PANEL_W + MARGIN),
-        MARGIN + TITLE_LINES * LINE + MARGIN + rows * (PANEL_H + MARGIN),
+        MARGIN + HEADER_H + rows * (PANEL_H + MARGIN),
     ]
 }
 
-/// The top-left corner of cell `k` of the plot.
-fn cell_origin(k: usize, cells: usize) -> (i64, i64) {
-    let cols = (cells as u32).min(COLUMNS) as usize;
-    let (col, row) = ((k % cols) as u32, (k / cols) as u32);
-    (
-        i64::from(MARGIN + col * (PANEL_W + MARGIN)),
-        i64::from(MARGIN + TITLE_LINES * LINE + MARGIN + row * (PANEL_H + MARGIN)),
+/// The command line that reproduces a study (every flag written out), the plot's title.
+///
+/// ```
+/// use nyquist_cli::converge::{Integrand, Study, command};
+/// let s = Study { samplers: vec!["random".into()], integrands: vec![Integrand::Disk],
+///                 counts: vec![16, 32], runs: 8, seed: 1 };
+/// assert_eq!(command(&s), "nyquist converge --samplers random --integrands disk \
+///     --min-spp 16 --max-spp 32 --runs 8 --seed 1");
+/// ```
+pub fn command(study: &Study) -> String {
+    format!(
+        "nyquist converge --samplers {} --integrands {} --min-spp {} --max-spp {} --runs {} --seed {}",
+        study.samplers.join(","),
+        study
+            .integrands
+            .iter()
+            .map(|f| f.name())
+            .collect::<Vec<_>>()
+            .join(","),
+        study.counts.first().copied().unwrap_or(1),
+        study.counts.last().copied().unwrap_or(1),
+        study.runs,
+        study.seed
     )
 }
 
-/// `10^k` as a tick label.
-fn decade(k: i32) -> String {
-    format!("1e{k}")
+/// The convergence plot: per integrand a log-log panel of RMSE against N (decade ticks with
+/// 2..9 minors, dashed N^−½ and N^−1 guides) with a legend beside it giving each sampler's
+/// colour, marker and fitted slope.
+#[derive(Debug)]
+pub struct Plot<'a> {
+    /// The study the curves come from.
+    pub study: &'a Study,
+    /// Its curves.
+    pub curves: &'a [Curve],
 }
 
-/// Draws the study as one picture: per integrand a log-log panel of RMSE against N (ticks at
-/// every power of two and every decade, labelled where they fit, the slopes in the sampler
-/// colours in the lower left), and a legend panel.
-pub fn plot(study: &Study, curves: &[Curve]) -> Canvas {
-    const INK: [u8; 3] = [0, 0, 0];
-    const GRID: [u8; 3] = [225, 225, 225];
-    let ni = study.integrands.len();
-    let [w, h] = plot_size(ni);
-    let mut c = Canvas::new(w, h, [255; 3]);
-    let (lo_n, hi_n) = (
-        study.counts.first().copied().unwrap_or(1),
-        study.counts.last().copied().unwrap_or(2),
-    );
-    c.text(
-        i64::from(MARGIN),
-        i64::from(MARGIN),
-        &format!(
-            "RMSE vs N over {} independent runs (seed {}), log-log; N = {lo_n}..{hi_n}",
-            study.runs, study.seed
-        ),
-        INK,
-    );
-    c.text(
-        i64::from(MARGIN),
-        i64::from(MARGIN + LINE),
-        "integrands over [0,1)^2 (Christensen, Kensler & Kilpatrick 2018)",
-        INK,
-    );
-    for (i, &integrand) in study.integrands.iter().enumerate() {
-        let (ox, oy) = cell_origin(i, ni + 1);
-        let mine: Vec<&Curve> = curves.iter().filter(|c| c.integrand == integrand).collect();
-        c.text(
-            ox,
-            oy,
-            &format!("{}: {}", integrand.name(), integrand.formula()),
-            INK,
+impl crate::plot::Figure for Plot<'_> {
+    fn size(&self) -> (u32, u32) {
+        let [w, h] = plot_size(self.study.integrands.len());
+        (w, h)
+    }
+
+    fn draw<DB: plotters::prelude::DrawingBackend>(
+        &self,
+        root: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    ) -> Result<Vec<crate::plot::Raster>>
+    where
+        DB::ErrorType: 'static,
+    {
+        use crate::plot::{Axes, GUIDE, INK, bold, color, font, marker, panel, title, wrap};
+        use plotters::prelude::*;
+        use plotters::style::text_anchor::{HPos, Pos, VPos};
+        let study = self.study;
+        let (w, _) = self.size();
+        // The command in up to three lines, smaller when it is long.
+        let m = MARGIN as i32;
+        let sizes = [(18.0, 2), (14.0, 3)];
+        let mut y = m + title(root, &command(study), (m, m), w - 2 * MARGIN, &sizes)?;
+        let notes = format!(
+            "RMSE of the mean over N samples against N, {} independent runs per N; slope: \
+             least-squares fit of log RMSE on log N; grey dashed: slopes −1/2 and −1 for scale",
+            study.runs
         );
-        // Plot area.
-        let (left, top) = (ox + 6 * i64::from(CHAR), oy + i64::from(LINE) + 6);
-        let (right, bottom) = (
-            ox + i64::from(PANEL_W) - 8,
-            oy + i64::from(PANEL_H) - 2 * i64::from(LINE) - 4,
-        );
-        let values: Vec<f64> = mine
-            .iter()
-            .flat_map(|c| c.rmse.iter().copied())
-            .filter(|&e| e.is_finite() && e > 0.0)
-            .collect();
-        let (mut lo, mut hi) = values
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &e| {
-                (a.min(e.log10()), b.max(e.log10()))
-            });
-        if !(lo.is_finite() && hi.is_finite()) {
-            (lo, hi) = (-1.0, 0.0);
+        for line in wrap(&notes, w - 2 * MARGIN, 13.0).iter().take(2) {
+            root.draw_text(line, &font(13.0).color(&INK), (m, y + 2))?;
+            y += 17;
         }
-        let (lo, hi) = (
-            lo.floor() as i32,
-            (hi.ceil() as i32).max(lo.floor() as i32 + 1),
-        );
-        let spp_lo = mine
-            .iter()
-            .flat_map(|c| c.spp.first())
-            .min()
-            .copied()
-            .unwrap_or(lo_n)
-            .min(lo_n);
-        let spp_hi = mine
-            .iter()
-            .flat_map(|c| c.spp.last())
-            .max()
-            .copied()
-            .unwrap_or(hi_n)
-            .max(hi_n);
-        let (lx0, lx1) = (f64::from(spp_lo).log2(), f64::from(spp_hi).log2().max(1.0));
-        let to_x = |n: f64| left as f64 + (right - left) as f64 * (n.log2() - lx0) / (lx1 - lx0);
-        let to_y = |e: f64| {
-            top as f64 + (bottom - top) as f64 * (f64::from(hi) - e.log10()) / f64::from(hi - lo)
-        };
-        // Grid and ticks: decades up the side, powers of two along the bottom.
-        let every = ((hi - lo) as usize).div_ceil(10).max(1);
-        for (k, d) in (lo..=hi).enumerate() {
-            let y = to_y(10f64.powi(d)).round() as i64;
-            c.fill_rect(left, y, (right - left) as u32, 1, GRID);
-            c.fill_rect(left - 4, y, 4, 1, INK);
-            if k % every == 0 {
-                let t = decade(d);
-                c.text(left - 6 - i64::from(text_width(&t)), y - 4, &t, INK);
+        let ni = study.integrands.len();
+        let cols = (ni as u32).clamp(1, COLUMNS);
+        for (i, &integrand) in study.integrands.iter().enumerate() {
+            let (col, row) = (i as u32 % cols, i as u32 / cols);
+            let ox = (MARGIN + col * (PANEL_W + MARGIN)) as i32;
+            let oy = (MARGIN + HEADER_H + row * (PANEL_H + MARGIN)) as i32;
+            let cell = root.clone().shrink((ox, oy), (PANEL_W, PANEL_H));
+            let (chart_area, legend) = cell.split_horizontally(PANEL_W - LEGEND_W);
+            let mine: Vec<&Curve> = self
+                .curves
+                .iter()
+                .filter(|c| c.integrand == integrand)
+                .collect();
+            let finite = |c: &Curve| {
+                c.spp
+                    .iter()
+                    .zip(&c.rmse)
+                    .filter(|&(_, &e)| e.is_finite() && e > 0.0)
+                    .map(|(&n, &e)| (f64::from(n).log10(), e.log10()))
+                    .collect::<Vec<_>>()
+            };
+            let all: Vec<(f64, f64)> = mine.iter().flat_map(|c| finite(c)).collect();
+            let (mut x0, mut x1, mut y0, mut y1) = all.iter().fold(
+                (
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                    f64::INFINITY,
+                    f64::NEG_INFINITY,
+                ),
+                |(a, b, c, d), &(x, y)| (a.min(x), b.max(x), c.min(y), d.max(y)),
+            );
+            if !(x0.is_finite() && y0.is_finite()) {
+                let n = study.counts.first().copied().unwrap_or(1).max(1);
+                let m = study.counts.last().copied().unwrap_or(2).max(n + 1);
+                (x0, x1, y0, y1) = (f64::from(n).log10(), f64::from(m).log10(), -2.0, -1.0);
             }
-        }
-        let ticks: Vec<u32> = powers_of_two(spp_lo.next_power_of_two(), spp_hi);
-        let widest = ticks.iter().map(|t| text_width(&t.to_string())).max();
-        let spacing = (right - left) as f64 / ticks.len().saturating_sub(1).max(1) as f64;
-        let step = (f64::from(widest.unwrap_or(0) + CHAR) / spacing)
-            .ceil()
-            .max(1.0) as usize;
-        for (k, &t) in ticks.iter().enumerate() {
-            let x = to_x(f64::from(t)).round() as i64;
-            c.fill_rect(x, top, 1, (bottom - top) as u32, GRID);
-            c.fill_rect(x, bottom, 1, 4, INK);
-            if k % step == 0 {
-                let s = t.to_string();
-                c.text(x - i64::from(text_width(&s)) / 2, bottom + 6, &s, INK);
+            // Guides of slope −½ and −1 from just above the highest first point, so that
+            // they run above the curves' start and read as a scale, not as data.
+            let guide_y = mine
+                .iter()
+                .filter_map(|c| finite(c).first().map(|p| p.1))
+                .fold(f64::NEG_INFINITY, f64::max)
+                + 0.15;
+            if guide_y.is_finite() {
+                y1 = y1.max(guide_y);
             }
-        }
-        c.text(
-            right - i64::from(text_width("N")),
-            bottom + 6 + i64::from(LINE),
-            "N",
-            INK,
-        );
-        c.fill_rect(left, top, 1, (bottom - top) as u32 + 1, INK);
-        c.fill_rect(left, bottom, (right - left) as u32 + 1, 1, INK);
-        // Curves.
-        for (k, curve) in mine.iter().enumerate() {
-            let col = color(
-                study
+            let (xpad, ypad) = (0.04 * (x1 - x0).max(0.3), 0.06 * (y1 - y0).max(0.5));
+            let mut axes = Axes::log_log(
+                10f64.powf(x0 - xpad)..10f64.powf(x1 + xpad),
+                10f64.powf(y0 - ypad)..10f64.powf(y1 + ypad),
+            );
+            axes.caption = format!("{}: {}", integrand.name(), integrand.formula());
+            axes.x_desc = "N (samples)".to_owned();
+            axes.y_desc = "RMSE".to_owned();
+            let mut chart = panel(&chart_area, &axes)?;
+            if guide_y.is_finite() {
+                for slope in [-0.5, -1.0] {
+                    // Clipped at the bottom of the panel.
+                    let end_x = x1.min(x0 + (guide_y - axes.y.start) / -slope);
+                    let (a, b) = ((x0, guide_y), (end_x, guide_y + slope * (end_x - x0)));
+                    chart.draw_series(DashedLineSeries::new(
+                        [a, b],
+                        6,
+                        4,
+                        GUIDE.stroke_width(1),
+                    ))?;
+                }
+            }
+            for (k, curve) in mine.iter().enumerate() {
+                let s = study
                     .samplers
                     .iter()
                     .position(|s| *s == curve.sampler)
-                    .unwrap_or(k),
-            );
-            let pts: Vec<Option<(f64, f64)>> = curve
-                .spp
-                .iter()
-                .zip(&curve.rmse)
-                .map(|(&n, &e)| (e.is_finite() && e > 0.0).then(|| (to_x(f64::from(n)), to_y(e))))
-                .collect();
-            for pair in pts.windows(2) {
-                if let [Some(a), Some(b)] = pair {
-                    c.line(*a, *b, col);
+                    .unwrap_or(k);
+                let pts = finite(curve);
+                chart.draw_series(LineSeries::new(
+                    pts.iter().copied(),
+                    color(s).stroke_width(2),
+                ))?;
+                for p in &pts {
+                    marker(root, chart.backend_coord(p), s, color(s))?;
                 }
             }
-            for p in pts.iter().flatten() {
-                c.disc(p.0, p.1, 2.5, col);
+            // Legend: colour, marker, name and slope of each sampler.
+            let (lx, ly) = (10, 12);
+            legend.draw_text("sampler", &bold(13.0).color(&INK), (lx, ly))?;
+            legend.draw_text(
+                "slope",
+                &bold(13.0).color(&INK).pos(Pos::new(HPos::Right, VPos::Top)),
+                (LEGEND_W as i32 - 8, ly),
+            )?;
+            let base = legend.get_base_pixel();
+            for (k, curve) in mine.iter().enumerate() {
+                let s = study
+                    .samplers
+                    .iter()
+                    .position(|s| *s == curve.sampler)
+                    .unwrap_or(k);
+                let row_y = ly + 22 + 19 * k as i32;
+                let mid = row_y + 7;
+                legend.draw(&PathElement::new(
+                    vec![(lx, mid), (lx + 24, mid)],
+                    color(s).stroke_width(2),
+                ))?;
+                marker(root, (base.0 + lx + 12, base.1 + mid), s, color(s))?;
+                legend.draw_text(&curve.sampler, &font(13.0).color(&INK), (lx + 30, row_y))?;
+                legend.draw_text(
+                    &curve
+                        .slope
+                        .map_or_else(|| "n/a".to_owned(), |v| format!("{v:.2}").replace('-', "−")),
+                    &font(13.0)
+                        .color(&color(s))
+                        .pos(Pos::new(HPos::Right, VPos::Top)),
+                    (LEGEND_W as i32 - 8, row_y),
+                )?;
             }
         }
-        // Slopes, lower left (where the curves, falling from the top left, are not).
-        let n_slopes = mine.len() as i64;
-        let mut y = bottom - 4 - (n_slopes + 1) * i64::from(LINE);
-        c.text(left + 6, y, "slope", INK);
-        for curve in &mine {
-            y += i64::from(LINE);
-            let k = study
-                .samplers
-                .iter()
-                .position(|s| *s == curve.sampler)
-                .unwrap_or(0);
-            c.text(left + 6, y, &slope_text(curve.slope), color(k));
-        }
+        Ok(Vec::new())
     }
-    // Legend.
-    let (ox, oy) = cell_origin(ni, ni + 1);
-    c.text(ox, oy, "samplers", INK);
-    for (k, name) in study.samplers.iter().enumerate() {
-        let y = oy + i64::from(LINE) * (k as i64 + 2);
-        c.fill_rect(ox, y + 2, 24, 3, color(k));
-        c.disc(ox as f64 + 12.0, y as f64 + 3.5, 2.5, color(k));
-        c.text(ox + 32, y, name, INK);
-    }
-    let y = oy + i64::from(LINE) * (study.samplers.len() as i64 + 3);
-    for (j, note) in [
-        "slope: least-squares fit of",
-        "log RMSE against log N;",
-        "-0.5 for independent samples",
-    ]
-    .iter()
-    .enumerate()
-    {
-        c.text(ox, y + i64::from(LINE) * j as i64, note, INK);
-    }
-    c
 }
 
 #[cfg(test)]
@@ -1165,20 +1152,34 @@ mod tests {
 
     #[test]
     fn the_plot_has_its_size_and_draws_every_sampler_colour() {
+        use crate::plot::{Figure, Kind, color, render};
         let s = small_study();
         let o = s.run(2).unwrap();
-        let c = plot(&s, &o.curves);
-        let [w, h] = plot_size(5);
-        assert_eq!((c.width(), c.height()), (w, h));
+        let figure = Plot {
+            study: &s,
+            curves: &o.curves,
+        };
+        assert_eq!(figure.size(), (plot_size(5)[0], plot_size(5)[1]));
+        let png = render(&figure, Kind::Png).unwrap();
+        let mut reader = png::Decoder::new(std::io::Cursor::new(png))
+            .read_info()
+            .unwrap();
+        let mut rgb = vec![0; reader.output_buffer_size().unwrap()];
+        let info = reader.next_frame(&mut rgb).unwrap();
+        assert_eq!((info.width, info.height), figure.size());
         for k in 0..3 {
-            let count = (0..h)
-                .flat_map(|y| (0..w).map(move |x| (x, y)))
-                .filter(|&(x, y)| c.get(x, y) == color(k))
+            let c = color(k);
+            let count = rgb
+                .chunks_exact(3)
+                .filter(|p| p == &[c.0, c.1, c.2])
                 .count();
-            // Legend swatch, five curves with their markers, five slopes: well over 500 pixels.
+            // Five curves with their markers, five legend rows: well over 500 pixels.
             assert!(count > 500, "sampler {k}: {count} pixels");
         }
         // The outer margin stays white.
-        assert_eq!(c.get(w - 1, h - 1), [255; 3]);
+        assert_eq!(rgb[rgb.len() - 3..], [255; 3]);
+        let svg = String::from_utf8(render(&figure, Kind::Svg).unwrap()).unwrap();
+        assert!(svg.contains(&command(&s)));
+        assert!(svg.contains("zero-two"));
     }
 }

@@ -1,12 +1,12 @@
 //! `nyquist filter`: print a reconstruction filter on a grid, its precomputed table, its
 //! integral, and plot its profile and frequency response.
 
-use crate::output::{to_stdout_or_file, write_atomic};
+use crate::output::to_stdout_or_file;
 use anyhow::{Context, Result};
 use clap::{Args, ValueEnum};
 use nyquist::filter::{Axis, Filter, FilterKind, FilterTable, Interpolation};
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Output formats of `filter`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -38,8 +38,9 @@ pub struct FilterArgs {
     /// Output format.
     #[arg(long, value_enum, default_value = "csv")]
     pub format: Format,
-    /// Also draw the 1D profile and its frequency response (|Fourier transform|) to a PNG.
-    #[arg(long, value_name = "FILE.png")]
+    /// Also draw the 1D profile and its frequency response (|Fourier transform|): SVG for
+    /// FILE.svg, PNG for FILE.png.
+    #[arg(long, value_name = "FILE.png|FILE.svg")]
     pub plot: Option<PathBuf>,
 }
 
@@ -50,7 +51,7 @@ fn parse_spec(s: &str) -> std::result::Result<FilterKind, String> {
 /// Runs the subcommand: rows on stdout, `radius` and `integral` lines on stderr.
 pub fn run(args: &FilterArgs) -> Result<()> {
     if let Some(path) = &args.plot {
-        crate::output::check_output(path, "--plot", &["png"])?;
+        crate::plot::kind_of(path, "--plot")?;
     }
     let f = &args.filter;
     let [rx, ry] = f.radius();
@@ -85,7 +86,7 @@ pub fn run(args: &FilterArgs) -> Result<()> {
         rows
     };
     if let Some(path) = &args.plot {
-        plot(f, path)?;
+        crate::plot::save(&Plot { filter: f }, path, "--plot")?;
     }
     to_stdout_or_file(None, |w| write_rows(w, &rows, args.format))?;
     eprintln!("radius {rx} {ry}");
@@ -135,68 +136,113 @@ fn spectrum(f: &dyn Filter, nu: f64) -> f64 {
     (re * h).hypot(im * h)
 }
 
-/// Two panels, 480 × 320 each: the profile over [−r, r] (scaled to its peak), and |F(ν)| for
-/// ν ∈ [0, 2] cycles per pixel scaled to |F(0)|, with a grey line at the Nyquist limit ν = ½.
-fn plot(f: &FilterKind, path: &Path) -> Result<()> {
-    const W: usize = 480;
-    const H: usize = 320;
-    const M: usize = 24; // margin
-    let f: &dyn Filter = f.as_dyn();
-    let mut img = vec![255u8; 2 * W * H * 3];
-    let mut put = |x: usize, y: usize, c: [u8; 3]| {
-        if x < 2 * W && y < H {
-            img[(y * 2 * W + x) * 3..][..3].copy_from_slice(&c);
-        }
-    };
-    let r = f64::from(f.radius()[0]);
-    let xs: Vec<f64> = (0..W - 2 * M)
-        .map(|i| -r + 2.0 * r * i as f64 / (W - 2 * M - 1) as f64)
-        .collect();
-    let prof: Vec<f64> = xs.iter().map(|&x| profile(f, x as f32)).collect();
-    let nus: Vec<f64> = (0..W - 2 * M)
-        .map(|i| 2.0 * i as f64 / (W - 2 * M - 1) as f64)
-        .collect();
-    let spec: Vec<f64> = nus.iter().map(|&nu| spectrum(f, nu)).collect();
-    for (panel, values, nyquist) in [(0usize, &prof, None), (1, &spec, Some(0.5 / 2.0))] {
-        let x0 = panel * W + M;
-        let lo = values.iter().cloned().fold(0.0f64, f64::min);
-        let hi = values.iter().cloned().fold(0.0f64, f64::max).max(1e-30);
-        let to_y = |v: f64| {
-            let t = (v - lo) / (hi - lo);
-            (M as f64 + (1.0 - t) * (H - 2 * M) as f64).round() as usize
-        };
-        // Axes: the zero line and the left edge.
-        for i in 0..W - 2 * M {
-            put(x0 + i, to_y(0.0), [160, 160, 160]);
-        }
-        for y in M..H - M {
-            put(x0, y, [0, 0, 0]);
-            if let Some(t) = nyquist {
-                put(
-                    x0 + ((W - 2 * M - 1) as f64 * t) as usize,
-                    y,
-                    [200, 200, 200],
-                );
-            }
-        }
-        // The curve, joined vertically between neighbouring columns.
-        let mut prev = to_y(values[0]);
-        for (i, &v) in values.iter().enumerate() {
-            let y = to_y(v);
-            for yy in prev.min(y)..=prev.max(y) {
-                put(x0 + i, yy, [20, 60, 200]);
-            }
-            prev = y;
-        }
+/// Size of one panel of the filter plot.
+const PANEL: (u32, u32) = (560, 400);
+/// Margin around and between the panels.
+const MARGIN: u32 = 16;
+/// Height of the title block.
+const HEADER: u32 = 58;
+/// Points per curve.
+const STEPS: usize = 600;
+
+/// Two panels: the 1D profile over [−r, r], and |F(ν)| / |F(0)| for ν ∈ [0, 2] cycles per
+/// pixel with the Nyquist limit ν = ½ marked.
+struct Plot<'a> {
+    filter: &'a FilterKind,
+}
+
+impl crate::plot::Figure for Plot<'_> {
+    fn size(&self) -> (u32, u32) {
+        (3 * MARGIN + 2 * PANEL.0, 2 * MARGIN + HEADER + PANEL.1)
     }
-    write_atomic(path, |w| {
-        let mut enc = png::Encoder::new(w, (2 * W) as u32, H as u32);
-        enc.set_color(png::ColorType::Rgb);
-        enc.set_depth(png::BitDepth::Eight);
-        let mut writer = enc.write_header().context("--plot: PNG header")?;
-        writer.write_image_data(&img).context("--plot: PNG data")?;
-        writer.finish().context("--plot: PNG end")?;
-        Ok(())
-    })
-    .map_err(|e| anyhow::anyhow!("{}", format!("{e:#}").replace("--output", "--plot")))
+
+    fn draw<DB: plotters::prelude::DrawingBackend>(
+        &self,
+        root: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    ) -> Result<Vec<crate::plot::Raster>>
+    where
+        DB::ErrorType: 'static,
+    {
+        use crate::plot::{Axes, GUIDE, INK, color, font, panel, title};
+        use plotters::prelude::*;
+        use plotters::style::text_anchor::{HPos, Pos, VPos};
+        let f: &dyn Filter = self.filter.as_dyn();
+        let m = MARGIN as i32;
+        let (w, _) = self.size();
+        let text = format!("nyquist filter --filter {}", self.filter);
+        let used = title(root, &text, (m, m), w - 2 * MARGIN, &[(18.0, 1), (14.0, 2)])?;
+        let [rx, ry] = f.radius();
+        let separable = f.eval_1d(Axis::X, 0.0).is_some();
+        root.draw_text(
+            &format!(
+                "radius {rx} × {ry}, integral {}; {}",
+                f.integral(),
+                if separable {
+                    "separable: the x factor shown"
+                } else {
+                    "not separable: the profile f(x, 0) shown"
+                }
+            ),
+            &font(14.0).color(&INK),
+            (m, m + used + 3),
+        )?;
+        let r = f64::from(rx);
+        let prof: Vec<(f64, f64)> = (0..=STEPS)
+            .map(|i| {
+                let x = -r + 2.0 * r * i as f64 / STEPS as f64;
+                (x, profile(f, x as f32))
+            })
+            .collect();
+        let dc = spectrum(f, 0.0).max(1e-300);
+        let spec: Vec<(f64, f64)> = (0..=STEPS / 2)
+            .map(|i| {
+                let nu = 2.0 * i as f64 / (STEPS / 2) as f64;
+                (nu, spectrum(f, nu) / dc)
+            })
+            .collect();
+        let range = |v: &[(f64, f64)]| {
+            let lo = v.iter().map(|p| p.1).fold(0.0f64, f64::min);
+            let hi = v.iter().map(|p| p.1).fold(0.0f64, f64::max).max(1e-12);
+            let pad = 0.06 * (hi - lo);
+            (lo - if lo < 0.0 { pad } else { 0.0 })..(hi + pad)
+        };
+        let top = m + HEADER as i32;
+        for (k, (points, x_range)) in [(&prof, -r..r), (&spec, 0.0..2.0)].into_iter().enumerate() {
+            let x0 = m + k as i32 * (PANEL.0 + MARGIN) as i32;
+            let area = root.clone().shrink((x0, top), PANEL);
+            let mut axes = Axes::linear(x_range, range(points));
+            if k == 0 {
+                axes.caption = "profile".to_owned();
+                axes.x_desc = "x (pixels)".to_owned();
+                axes.y_desc = if separable { "f(x)" } else { "f(x, 0)" }.to_owned();
+            } else {
+                axes.caption = "frequency response".to_owned();
+                axes.x_desc = "ν (cycles per pixel)".to_owned();
+                axes.y_desc = "|F(ν)| / |F(0)|".to_owned();
+            }
+            let mut chart = panel(&area, &axes)?;
+            // The zero line.
+            chart.draw_series(std::iter::once(PathElement::new(
+                vec![(axes.x.start, 0.0), (axes.x.end, 0.0)],
+                GUIDE.stroke_width(1),
+            )))?;
+            if k == 1 {
+                let (a, b) = ((0.5, axes.y.start), (0.5, axes.y.end));
+                chart.draw_series(DashedLineSeries::new([a, b], 6, 4, GUIDE.stroke_width(1)))?;
+                let at = chart.backend_coord(&b);
+                root.draw_text(
+                    "Nyquist ν = ½",
+                    &font(13.0)
+                        .color(&GUIDE)
+                        .pos(Pos::new(HPos::Left, VPos::Top)),
+                    (at.0 + 5, at.1 + 6),
+                )?;
+            }
+            chart.draw_series(LineSeries::new(
+                points.iter().copied(),
+                color(0).stroke_width(2),
+            ))?;
+        }
+        Ok(Vec::new())
+    }
 }

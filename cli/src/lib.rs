@@ -16,6 +16,7 @@ pub mod compare;
 pub mod converge;
 pub mod filter;
 pub mod output;
+pub mod plot;
 pub mod points;
 pub mod progress;
 pub mod raster;

@@ -1,14 +1,16 @@
 //! A small 8-bit RGB canvas for the CLI's pictures (contact sheets, point plots): rectangles,
-//! discs, image crops and text in the public-domain 8 × 8 bitmap font of the `font8x8` crate,
-//! written as PNG atomically.
+//! discs, image crops and anti-aliased text in the embedded DejaVu Sans (through
+//! [`crate::plot`]), written as PNG atomically.
 
 use anyhow::{Context, Result};
 use std::path::Path;
 
-/// Height of a text line in pixels: the 8-pixel glyph and 2 pixels of leading.
-pub const LINE: u32 = 10;
-/// Width of one character.
-pub const CHAR: u32 = 8;
+/// Text size in pixels (plotters' size: the em is `TEXT_PX / 1.24`).
+pub const TEXT_PX: f64 = 14.0;
+/// Height of a text line in pixels.
+pub const LINE: u32 = 16;
+/// Shift down that puts the top of the tallest glyphs at the `y` of [`Canvas::text`].
+const TOP: i64 = 3;
 
 /// An RGB image in 8-bit sRGB, row-major.
 #[derive(Clone, Debug)]
@@ -84,18 +86,6 @@ impl Canvas {
         }
     }
 
-    /// A two-pixel-wide line from `a` to `b` (pixel coordinates; the second pixel is below).
-    pub fn line(&mut self, a: (f64, f64), b: (f64, f64), color: [u8; 3]) {
-        let steps = (b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil().max(1.0) as usize;
-        for k in 0..=steps {
-            let t = k as f64 / steps as f64;
-            let x = (a.0 + t * (b.0 - a.0)).round() as i64;
-            let y = (a.1 + t * (b.1 - a.1)).round() as i64;
-            self.put(x, y, color);
-            self.put(x, y + 1, color);
-        }
-    }
-
     /// Copies the `w × h` block at `(sx, sy)` of `img` (linear RGB, converted to 8-bit sRGB)
     /// to `(x, y)`.
     #[allow(clippy::too_many_arguments)]
@@ -123,26 +113,19 @@ impl Canvas {
         }
     }
 
-    /// Writes `text` with its top-left corner at `(x, y)`, 8 pixels per character; characters
-    /// outside ASCII draw as `?`; pixels outside the canvas are clipped.
+    /// Writes `text` with its top-left corner at `(x, y)` in the embedded font, anti-aliased;
+    /// pixels outside the canvas are clipped.
     pub fn text(&mut self, x: i64, y: i64, text: &str, color: [u8; 3]) {
-        for (k, ch) in text.chars().enumerate() {
-            let code = if ch.is_ascii() {
-                ch as usize
-            } else {
-                '?' as usize
-            };
-            let glyph = font8x8::legacy::BASIC_LEGACY[code];
-            let gx = x + (k as i64) * i64::from(CHAR);
-            for (row, bits) in glyph.iter().enumerate() {
-                for col in 0..8 {
-                    // Bit 0 is the leftmost pixel.
-                    if bits >> col & 1 == 1 {
-                        self.put(gx + col, y + row as i64, color);
-                    }
-                }
-            }
-        }
+        let clamp = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
+        crate::plot::text_on_rgb(
+            &mut self.rgb,
+            (self.width, self.height),
+            // plotters places the top of a tall glyph (l, d) about 0.25 em above the point given.
+            (clamp(x), clamp(y.saturating_add(TOP))),
+            text,
+            TEXT_PX,
+            color,
+        );
     }
 
     /// Writes the canvas as an 8-bit RGB PNG to `path`, atomically (`flag` names the option in
@@ -165,7 +148,7 @@ impl Canvas {
 
 /// Pixels a line of `text` takes.
 pub fn text_width(text: &str) -> u32 {
-    CHAR.saturating_mul(text.chars().count() as u32)
+    crate::plot::text_width(text, TEXT_PX)
 }
 
 #[cfg(test)]
@@ -173,18 +156,28 @@ mod tests {
     use super::*;
 
     #[test]
-    fn text_sets_glyph_pixels_and_clips() {
-        let mut c = Canvas::new(20, 10, [255; 3]);
-        c.text(0, 0, "I", [0; 3]);
-        // The legacy font's 'I' is 0x1E on its top row: columns 1 to 4.
-        assert_eq!(font8x8::legacy::BASIC_LEGACY['I' as usize][0], 0x1E);
-        assert_eq!(c.get(0, 0), [255; 3]);
-        assert_eq!(c.get(1, 0), [0; 3]);
-        assert_eq!(c.get(4, 0), [0; 3]);
-        assert_eq!(c.get(5, 0), [255; 3]);
-        c.text(15, 5, "WWW", [0; 3]); // runs off the canvas: no panic
-        assert_eq!(c.width(), 20);
-        assert_eq!(text_width("abc"), 24);
+    fn text_is_anti_aliased_within_its_line_and_clips() {
+        let mut c = Canvas::new(60, 20, [255; 3]);
+        c.text(2, 2, "Il", [0; 3]);
+        let dark: Vec<(u32, u32)> = (0..20)
+            .flat_map(|y| (0..60).map(move |x| (x, y)))
+            .filter(|&(x, y)| c.get(x, y) != [255; 3])
+            .collect();
+        assert!(!dark.is_empty());
+        // Within the line below (2, 2) and the measured width.
+        assert!(
+            dark.iter()
+                .all(|&(x, y)| x >= 2 && (2..2 + LINE).contains(&y))
+        );
+        assert!(dark.iter().all(|&(x, _)| x <= 2 + text_width("Il")));
+        // Grey edge pixels, not only black and white.
+        assert!((0..20).any(|y| (0..60).any(|x| {
+            let g = c.get(x, y)[0];
+            g > 0 && g < 255
+        })));
+        c.text(50, 15, "WWW", [0; 3]); // runs off the canvas: no panic
+        assert_eq!(c.width(), 60);
+        assert!(text_width("abc") > text_width("ab"));
     }
 
     #[test]

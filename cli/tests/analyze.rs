@@ -229,7 +229,7 @@ fn spectrum_writes_one_png_of_the_documented_size() {
         "--json",
     ]);
     let j = ok_json(&o);
-    assert_eq!(png_size(&png), (1072, 578));
+    assert_eq!(png_size(&png), (1404, 730));
     assert_eq!(files(&dir), ["s.png"]);
     assert_eq!(json_field(&j, "spectrum_max_freq"), 24.0);
     assert_eq!(json_field(&j, "spectrum_realisations"), 3.0);
@@ -267,7 +267,7 @@ fn spectrum_writes_one_png_of_the_documented_size() {
         &pts.stdout,
     );
     assert!(ok_json(&o).contains("spectrum:"));
-    assert_eq!(png_size(&png2), (1072, 578));
+    assert_eq!(png_size(&png2), (1404, 730));
 }
 
 #[test]

@@ -2,6 +2,8 @@
 
 mod common;
 
+use nyquist_cli::raster::text_width;
+
 use common::{
     assert_one_line_error, files, json_field, nyquist_cached, png_size, stdout, temp_dir,
 };
@@ -35,12 +37,20 @@ fn compare_writes_one_sheet_of_the_expected_size_and_one_json_entry_per_cell() {
     assert_eq!(j.matches("\"rmse\":").count(), 12);
     assert_eq!(j.matches("\"sampling_rmse\":").count(), 12);
     assert!(j.contains("\"filter\":\"mitchell:b=0.5,c=0.25\""));
-    // Geometry: crop 20×20; the widest label is "mitchell:b=0.5,c=0.25 4spp" (26 chars, 208 px);
-    // cells of 208 + 8 across 4 columns, 20 + 3 + 30 + 8 down 3 rows, 2 title lines.
+    // Geometry: crop 20×20; the widest label is "mitchell:b=0.5,c=0.25 4spp" in the embedded
+    // font; cells that wide plus 8 across 4 columns, 20 + 5 + 3 lines + 8 down 3 rows, 2 title
+    // lines.
     let (w, h) = png_size(&out);
+    let (label, line) = (
+        text_width("mitchell:b=0.5,c=0.25 4spp"),
+        nyquist_cli::raster::LINE,
+    );
     assert_eq!(
         (w, h),
-        (8 + 4 * (208 + 8), 8 + 20 + 8 + 3 * (20 + 3 + 30 + 8))
+        (
+            8 + 4 * (label + 8),
+            8 + 2 * line + 8 + 3 * (20 + 5 + 3 * line + 8)
+        )
     );
     assert_eq!(json_field(&j, "width"), f64::from(w));
     assert_eq!(json_field(&j, "height"), f64::from(h));

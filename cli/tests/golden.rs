@@ -1,8 +1,10 @@
 //! Golden outputs: FNV-1a 64 hashes of fixed CLI runs, checked in as `tests/golden/hashes.txt`
 //! (png's `results.txt` idea), so any change to generated values is a deliberate, reviewed
-//! change. Covered: `nyquist points` for every point set and every pixel sampler, and a small
+//! change. Covered: `nyquist points` for every point set and every pixel sampler, a small
 //! zone-plate `nyquist render` (written as PFM, the file's bytes hashed) per filter and per
-//! sampler, all with fixed counts, dimensions, seeds and thread counts.
+//! sampler, and the plots (`converge --plot`, `filter --plot`, `analyze --spectrum` as PNG and
+//! SVG, a small `compare` sheet: the files' bytes, so the embedded font and the drawing are
+//! pinned), all with fixed counts, dimensions, seeds and thread counts.
 //!
 //! After an intended change, re-bless and review the diff of `hashes.txt`:
 //! `NYQUIST_BLESS=1 cargo test -p nyquist-cli --test golden`.
@@ -29,8 +31,9 @@ fn fnv1a64_matches_the_published_test_vectors() {
     assert_eq!(fnv1a64(b"foobar"), 0x8594_4171_f739_67e8);
 }
 
-/// One golden run: its name in `hashes.txt` and the `nyquist` arguments. Render runs write to
-/// a temporary `.pfm` (the `{out}` argument) whose bytes are hashed; the others hash stdout.
+/// One golden run: its name in `hashes.txt` and the `nyquist` arguments. Runs that write a file
+/// name it `{out}` (a temporary `.pfm`), `{out.png}` or `{out.svg}`, and the file's bytes are
+/// hashed; the others hash stdout.
 struct Run {
     name: String,
     args: Vec<String>,
@@ -168,16 +171,94 @@ fn runs() -> Vec<Run> {
             ],
         ));
     }
+    // Plots, each as PNG and SVG (JSON on stdout, not hashed: it holds timings).
+    for ext in ["png", "svg"] {
+        let file = format!("{{out.{ext}}}");
+        let plots: [(&str, Vec<&str>); 3] = [
+            (
+                "converge",
+                vec![
+                    "converge",
+                    "--samplers",
+                    "random,stratified,sobol",
+                    "--integrands",
+                    "disk,gaussian",
+                    "--min-spp",
+                    "4",
+                    "--max-spp",
+                    "64",
+                    "--runs",
+                    "8",
+                    "--seed",
+                    "7",
+                    "--threads",
+                    "2",
+                    "--json",
+                    "--plot",
+                ],
+            ),
+            ("filter", vec!["filter", "--filter", "mitchell", "--plot"]),
+            (
+                "spectrum",
+                vec![
+                    "analyze",
+                    "--sampler",
+                    "stratified",
+                    "--count",
+                    "64",
+                    "--freq",
+                    "8",
+                    "--json",
+                    "--spectrum",
+                ],
+            ),
+        ];
+        for (name, mut args) in plots {
+            args.push(&file);
+            out.push(run(format!("plot/{name}-{ext}"), &args));
+        }
+    }
+    // A small contact sheet: crops and labels in the embedded font.
+    out.push(run(
+        "plot/compare-png",
+        &[
+            "compare",
+            "--size",
+            "16x16",
+            "--samplers",
+            "random,sobol",
+            "--filters",
+            "box",
+            "--spp",
+            "1,4",
+            "--threads",
+            "2",
+            "--json",
+            "-o",
+            "{out.png}",
+        ],
+    ));
     out
 }
 
-/// Runs `nyquist` with `args` (`{out}` replaced by a fresh temporary `.pfm`) and hashes its
-/// stdout, or the output file when there is one. Panics with the command on failure.
+/// Runs `nyquist` with `args` (`{out}` replaced by a fresh temporary `.pfm`, `{out.png}` and
+/// `{out.svg}` by one with that extension) and hashes the output file when there is one, else
+/// stdout. Panics with the command on failure.
 fn hash_of(name: &str, args: &[String]) -> u64 {
-    let out = temp_path(name);
+    let mut file = None;
     let args: Vec<String> = args
         .iter()
-        .map(|a| a.replace("{out}", &out.to_string_lossy()))
+        .map(|a| {
+            let ext = match a.as_str() {
+                "{out}" => "pfm",
+                "{out.png}" => "png",
+                "{out.svg}" => "svg",
+                _ => return a.clone(),
+            };
+            let path = temp_path(name, ext);
+            file = Some(path.clone());
+            path.to_string_lossy().into_owned()
+        })
         .collect();
     let o = Command::new(env!("CARGO_BIN_EXE_nyquist"))
         .args(&args)
@@ -189,21 +270,25 @@ fn hash_of(name: &str, args: &[String]) -> u64 {
         args.join(" "),
         String::from_utf8_lossy(&o.stderr)
     );
-    if args.iter().any(|a| a.ends_with(".pfm")) {
-        let bytes = std::fs::read(&out).expect("render output");
-        let _ = std::fs::remove_file(&out);
-        fnv1a64(&bytes)
-    } else {
-        fnv1a64(&o.stdout)
+    match file {
+        Some(path) => {
+            let bytes = std::fs::read(&path).expect("output file");
+            let _ = std::fs::remove_file(&path);
+            fnv1a64(&bytes)
+        }
+        None => fnv1a64(&o.stdout),
     }
 }
 
-fn temp_path(name: &str) -> PathBuf {
+fn temp_path(name: &str, ext: &str) -> PathBuf {
     let safe: String = name
         .chars()
         .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
         .collect();
-    std::env::temp_dir().join(format!("nyquist-golden-{}-{safe}.pfm", std::process::id()))
+    std::env::temp_dir().join(format!(
+        "nyquist-golden-{}-{safe}.{ext}",
+        std::process::id()
+    ))
 }
 
 fn hashes_file() -> PathBuf {
@@ -235,7 +320,8 @@ fn cli_outputs_match_the_golden_hashes() {
     if std::env::var_os("NYQUIST_BLESS").is_some_and(|v| v == "1") {
         let mut text = String::from(
             "# FNV-1a 64 of fixed `nyquist` runs (cli/tests/golden.rs): stdout of `points`, the PFM\n\
-             # file of `render`. Re-bless: NYQUIST_BLESS=1 cargo test -p nyquist-cli --test golden\n",
+             # file of `render`, the PNG and SVG files of the plots. Re-bless:\n\
+             # NYQUIST_BLESS=1 cargo test -p nyquist-cli --test golden\n",
         );
         for (name, h, _) in &got {
             text.push_str(&format!("{name} {h}\n"));

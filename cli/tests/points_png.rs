@@ -21,8 +21,8 @@ fn png_pictures_have_the_svg_geometry() {
         let o = nyquist(&all);
         assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
         assert!(o.stdout.is_empty());
-        // 512 + 2·16 square, one 10-pixel text line under it.
-        assert_eq!(png_size(&out), (544, 554));
+        // 512 + 2·16 square, one 16-pixel text line under it.
+        assert_eq!(png_size(&out), (544, 560));
     }
 }
 
