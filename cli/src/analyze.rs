@@ -290,6 +290,12 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
         if args.realisations == 0 || args.realisations > 100_000 {
             bail!("--realisations {}: need 1 ..= 100000", args.realisations);
         }
+        // The (2F+1)² power sums in f64 and the picture drawn from them (4 bytes a cell).
+        let side = 2 * u64::from(freq) + 1;
+        crate::memory::check(
+            &format!("--spectrum with --freq {freq}"),
+            crate::memory::bytes(side * side, 8 + 4),
+        )?;
     }
     Ok(())
 }

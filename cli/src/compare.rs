@@ -176,6 +176,17 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             crate::render::MAX_PIXELS
         );
     }
+    // Every render's image is kept for the sheet; up to one film per thread is rendering; the
+    // references (the pixel means and one per filter) stay for the error table.
+    let threads = args.threads.map_or_else(default_threads, usize::from);
+    let per_pixel = count as u64 * crate::render::IMAGE_PIXEL_BYTES
+        + threads as u64 * crate::render::FILM_PIXEL_BYTES
+        + (filters.len() as u64 + 1) * 8;
+    crate::memory::check(
+        &format!("--size {}x{} × {count} renders", args.size[0], args.size[1]),
+        crate::memory::bytes(u64::from(args.size[0]) * u64::from(args.size[1]), per_pixel)
+            .saturating_add(crate::render::render_bytes(args.scene, args.size, true)),
+    )?;
     // Every sampler is built (and every combination checked) before anything renders.
     let mut cells = Vec::with_capacity(count);
     for (row, &name) in args.samplers.iter().enumerate() {
@@ -199,7 +210,6 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             }
         }
     }
-    let threads = args.threads.map_or_else(default_threads, usize::from);
     let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
     let work: f64 = cells
         .iter()

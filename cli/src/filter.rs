@@ -69,6 +69,10 @@ pub fn run(args: &FilterArgs) -> Result<()> {
         rows
     } else {
         let n = args.grid;
+        crate::memory::check(
+            &format!("--grid {n}"),
+            crate::memory::bytes(u64::from(n) * u64::from(n), 12),
+        )?;
         let at = |k: u32, r: f32| {
             if n == 1 {
                 0.0

@@ -25,6 +25,12 @@ use std::process::ExitCode;
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// The most memory a run may plan to use, e.g. 512M, 4G or 1.5GiB. A run whose estimate
+    /// (films, references, images, points, spectra) passes it is refused before it allocates
+    /// [default: half of the physical memory, or of the address-space limit (`ulimit -v`) when
+    /// that is lower].
+    #[arg(long, global = true, value_name = "SIZE", value_parser = nyquist_cli::memory::parse_size)]
+    max_memory: Option<u64>,
 }
 
 #[derive(Debug, Subcommand)]
@@ -63,6 +69,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };
+    nyquist_cli::memory::set_limit(cli.max_memory);
     if let Err(e) = nyquist_cli::output::remove_temporaries_on_signals() {
         eprintln!("nyquist: {e:#}");
         return ExitCode::from(2);

@@ -482,7 +482,11 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
             name(args.sampler)
         );
     }
-    let mut out = vec![0.0f32; values as usize];
+    crate::memory::check(
+        &format!("--count {count} × --dims {dims}"),
+        crate::memory::bytes(values, 4),
+    )?;
+    let mut out = crate::memory::try_filled(values as usize, 0.0f32, "the points")?;
     let set_error = |e: nyquist::Error| anyhow::anyhow!("{}: {e}", name(args.sampler));
     match args.sampler {
         S::Random => {

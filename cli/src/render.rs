@@ -187,8 +187,13 @@ pub fn render(
     threads: usize,
     tick: &mut dyn FnMut(),
 ) -> Result<Rendered> {
-    let mut film = Film::new(FilmConfig::new(size[0], size[1]), filter.as_dyn())
-        .map_err(|e| anyhow!("--filter {}: {e}", filter.name()))?;
+    let mut film =
+        Film::new(FilmConfig::new(size[0], size[1]), filter.as_dyn()).map_err(|e| match e {
+            nyquist_film::Error::OutOfMemory { .. } => {
+                anyhow!("--size {}x{}: {e} (try a smaller --size)", size[0], size[1])
+            }
+            e => anyhow!("--filter {}: {e}", filter.name()),
+        })?;
     let start = Instant::now();
     render_with(&mut film, sampler, scene, size, threads, tick)
         .map_err(|e| anyhow!("render: {e}"))?;
@@ -255,6 +260,26 @@ fn render_with<S: Sampler + Clone + Sync>(
         },
         |_, _| tick(),
     )
+}
+
+/// Bytes a film pixel takes (weighted RGB and weight sums in `f64`).
+pub const FILM_PIXEL_BYTES: u64 = 32;
+/// Bytes an image pixel takes (RGB in `f32`).
+pub const IMAGE_PIXEL_BYTES: u64 = 12;
+
+/// The memory a render of `scene` at `size` takes: the film, the resolved image and its encoded
+/// rows, and with `metrics` the two references (and, for scenes without a closed form, the
+/// reference render's own film and image).
+pub fn render_bytes(scene: Scene, size: [u32; 2], metrics: bool) -> u64 {
+    let pixels = u64::from(size[0]) * u64::from(size[1]);
+    let mut per_pixel = FILM_PIXEL_BYTES + IMAGE_PIXEL_BYTES + 4;
+    if metrics {
+        per_pixel += 2 * 8;
+        if scene != Scene::Zoneplate {
+            per_pixel += FILM_PIXEL_BYTES + IMAGE_PIXEL_BYTES;
+        }
+    }
+    crate::memory::bytes(pixels, per_pixel)
 }
 
 /// What the reference of a scene is, in words (for tables and JSON).
@@ -578,6 +603,15 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
+    crate::memory::check(
+        &format!(
+            "--size {}x{}{}",
+            args.size[0],
+            args.size[1],
+            if metrics { " with --metrics" } else { "" }
+        ),
+        render_bytes(args.scene, args.size, metrics),
+    )?;
     let footprint = footprint_pixels(args.size, &args.filter);
     let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
     let large = warn_if_large(

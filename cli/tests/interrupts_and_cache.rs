@@ -162,3 +162,78 @@ fn a_damaged_cached_reference_is_rendered_again_with_a_note() {
         );
     }
 }
+
+/// Runs nyquist under an address-space limit of `kib` KiB (the shell's `ulimit -v`).
+fn nyquist_under_ulimit(kib: u64, args: &str) -> std::process::Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v {kib} && exec '{}' {args}",
+            env!("CARGO_BIN_EXE_nyquist")
+        ))
+        .output()
+        .expect("run sh")
+}
+
+/// Under `ulimit -v 2000000` (2 GB) the default limit is half of it: an 8192² render with
+/// metrics (4.3 GB by the estimate) is refused before it allocates, in one line naming the flags,
+/// the estimate and the limit's source. With `--max-memory` raised past the address space, the
+/// film's allocation itself fails and is reported in one line, not an abort.
+#[test]
+fn memory_estimates_and_failed_allocations_are_one_line_errors() {
+    let dir = temp_dir("ulimit");
+    let out = dir.join("big.pfm");
+    let o = nyquist_under_ulimit(2_000_000, "render --size 8192x8192 --spp 1 --metrics");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(
+        err,
+        "nyquist: --size 8192x8192 with --metrics: needs about 4.3 GB of memory, more than the \
+         limit of 1.0 GB (half the address-space limit (ulimit -v)); give smaller values or a \
+         larger --max-memory\n"
+    );
+    let o = nyquist_under_ulimit(
+        2_000_000,
+        &format!(
+            "render --size 8192x8192 --spp 1 --max-memory 100G -o '{}'",
+            out.display()
+        ),
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert_eq!(
+        err,
+        "nyquist: --size 8192x8192: out of memory: the film's pixels needs 2147483648 bytes (try \
+         a smaller --size)\n"
+    );
+    assert!(files(&dir).is_empty(), "{:?}", files(&dir));
+    // The explicit limit, and the other commands' estimates.
+    for (args, flags) in [
+        (
+            "points --count 100000000 --dims 2 --max-memory 100M",
+            "--count 100000000 × --dims 2",
+        ),
+        (
+            "filter --filter box --grid 4096 --max-memory 100M",
+            "--grid 4096",
+        ),
+        (
+            "analyze --sampler halton --count 64 --spectrum x.png --freq 4096 --max-memory 100M",
+            "--spectrum with --freq 4096",
+        ),
+        (
+            "compare --size 1024x1024 --max-memory 100M",
+            "--size 1024x1024 × 60 renders",
+        ),
+    ] {
+        let o = nyquist_under_ulimit(4_000_000, args);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args}: {err}");
+        assert!(
+            err.starts_with(&format!("nyquist: {flags}: needs about "))
+                && err.contains("(--max-memory)")
+                && err.lines().count() == 1,
+            "{args}: {err}"
+        );
+    }
+}

@@ -19,6 +19,13 @@ pub enum Error {
     Core(nyquist::Error),
     /// An encoder or decoder rejected the data (PNG, OpenEXR, PFM).
     Format(String),
+    /// The allocator could not provide `bytes` bytes for `what` (the film's pixels, an image).
+    OutOfMemory {
+        /// What the memory was for.
+        what: &'static str,
+        /// How many bytes were asked for.
+        bytes: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -28,6 +35,9 @@ impl fmt::Display for Error {
             Error::Config(m) => write!(f, "invalid configuration: {m}"),
             Error::Core(e) => write!(f, "{e}"),
             Error::Format(m) => write!(f, "image format error: {m}"),
+            Error::OutOfMemory { what, bytes } => {
+                write!(f, "out of memory: {what} needs {bytes} bytes")
+            }
         }
     }
 }
@@ -52,4 +62,19 @@ impl From<nyquist::Error> for Error {
     fn from(e: nyquist::Error) -> Self {
         Error::Core(e)
     }
+}
+
+/// `n` copies of `value` in a new vector, or [`Error::OutOfMemory`] when the allocator refuses
+/// (instead of aborting the process): the film's and images' large buffers go through here.
+pub(crate) fn try_filled<T: Clone>(
+    n: usize,
+    value: T,
+    what: &'static str,
+) -> Result<Vec<T>, Error> {
+    let mut v = Vec::new();
+    let bytes = n.saturating_mul(size_of::<T>());
+    v.try_reserve_exact(n)
+        .map_err(|_| Error::OutOfMemory { what, bytes })?;
+    v.resize(n, value);
+    Ok(v)
 }

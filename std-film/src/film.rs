@@ -150,7 +150,8 @@ impl Film {
     ///
     /// # Errors
     /// [`Error::Config`] for a zero resolution, a crop window outside `[0, 1]` or empty, or a
-    /// non-finite or non-positive `max_component`.
+    /// non-finite or non-positive `max_component`; [`Error::OutOfMemory`] if the allocator cannot
+    /// provide the pixels (a film of `w × h` pixels takes `32·w·h` bytes).
     pub fn new(config: FilmConfig, filter: &dyn nyquist::filter::Filter) -> Result<Film, Error> {
         let [w, h] = config.resolution;
         if w == 0 || h == 0 {
@@ -181,13 +182,14 @@ impl Film {
         }
         let weights = Weights::new(filter)?;
         let n = pixel_bounds.area() as usize;
+        let pixels = crate::error::try_filled(n, Pixel::default(), "the film's pixels")?;
         Ok(Film {
             setup: Arc::new(Setup {
                 pixel_bounds,
                 weights,
                 max_component: config.max_component,
             }),
-            pixels: vec![Pixel::default(); n],
+            pixels,
             // Allocated when the first tile with splats is merged.
             splats: Vec::new(),
             next_tile: 0,

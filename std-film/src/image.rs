@@ -21,13 +21,14 @@ impl Image {
     /// A black image.
     ///
     /// # Errors
-    /// [`Error::Config`] if a side is zero or the pixel count overflows memory limits.
+    /// [`Error::Config`] if a side is zero or the pixel count overflows memory limits;
+    /// [`Error::OutOfMemory`] if the allocator cannot provide the pixels.
     pub fn new(width: u32, height: u32) -> Result<Image, Error> {
         let len = Self::data_len(width, height)?;
         Ok(Image {
             width,
             height,
-            data: vec![0.0; len],
+            data: crate::error::try_filled(len, 0.0, "an image")?,
         })
     }
 

@@ -710,3 +710,28 @@ proptest! {
         prop_assert_eq!(mismatch, None);
     }
 }
+
+/// A film or image larger than the allocator can give is an `OutOfMemory` error naming the
+/// bytes, not an abort: 2³² × 2³² pixels cannot be allocated anywhere.
+#[test]
+fn films_and_images_larger_than_memory_are_errors() {
+    match Film::new(
+        FilmConfig::new(u32::MAX, u32::MAX),
+        &nyquist::filter::Boxcar::default(),
+    ) {
+        Err(nyquist_film::Error::OutOfMemory { what, bytes }) => {
+            assert_eq!(what, "the film's pixels");
+            assert_eq!(bytes, usize::MAX);
+        }
+        other => panic!("{:?}", other.map(|_| ())),
+    }
+    match nyquist_film::Image::new(1 << 31, 1 << 20) {
+        Err(e @ nyquist_film::Error::OutOfMemory { .. }) => {
+            assert_eq!(
+                e.to_string(),
+                format!("out of memory: an image needs {} bytes", 12usize << 51)
+            );
+        }
+        other => panic!("{:?}", other.map(|_| ())),
+    }
+}
