@@ -2,7 +2,9 @@
 
 mod common;
 
-use common::{assert_one_line_error, files, json_field, nyquist, png_size, stdout, temp_dir};
+use common::{
+    SMALL_STUDY, assert_one_line_error, files, json_field, nyquist, png_size, stdout, temp_dir,
+};
 use nyquist_cli::converge::plot_size;
 
 #[test]
@@ -29,29 +31,18 @@ fn table_has_a_row_per_sampler_and_a_column_per_integrand() {
     assert!(s.contains("disk 0.500000, bilinear 0.250000"), "{s}");
 }
 
-/// The small study both runs of the plot test make (JSON out).
-const STUDY: [&str; 14] = [
-    "converge",
-    "--samplers",
-    "random,sobol,zero-two",
-    "--integrands",
-    "step,gaussian",
-    "--min-spp",
-    "4",
-    "--max-spp",
-    "64",
-    "--runs",
-    "8",
-    "--seed",
-    "3",
-    "--json",
-];
-
 #[test]
 fn plot_is_a_valid_png_and_json_has_every_curve() {
     let dir = temp_dir("converge-plot");
     let out = dir.join("conv.png");
-    let o = nyquist(&[&STUDY[..], &["--plot", out.to_str().unwrap()]].concat());
+    let o = nyquist(
+        &[
+            &SMALL_STUDY[..],
+            &["--json"],
+            &["--plot", out.to_str().unwrap()],
+        ]
+        .concat(),
+    );
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let j = stdout(&o);
     assert_eq!(j.lines().count(), 1);
@@ -73,7 +64,7 @@ fn plot_is_a_valid_png_and_json_has_every_curve() {
     assert!(buf[..info.buffer_size()].iter().any(|&b| b < 128));
     assert_eq!(files(&dir), ["conv.png"]);
     // Same flags, same numbers (the JSON differs only in its timing).
-    let again = nyquist(&[&STUDY[..], &["--threads", "1"]].concat());
+    let again = nyquist(&[&SMALL_STUDY[..], &["--json"], &["--threads", "1"]].concat());
     let curves = |s: &str| s[s.find("\"curves\"").unwrap()..].to_owned();
     assert_eq!(curves(&stdout(&again)), curves(&j));
 }

@@ -4,25 +4,8 @@
 
 mod common;
 
-use common::{assert_one_line_error, files, nyquist, png_size, temp_dir};
+use common::{SMALL_STUDY as STUDY, assert_one_line_error, files, nyquist, png_size, temp_dir};
 use std::path::Path;
-
-/// A small convergence study: 3 samplers × 2 integrands.
-const STUDY: [&str; 13] = [
-    "converge",
-    "--samplers",
-    "random,sobol,zero-two",
-    "--integrands",
-    "step,gaussian",
-    "--min-spp",
-    "4",
-    "--max-spp",
-    "64",
-    "--runs",
-    "8",
-    "--seed",
-    "3",
-];
 
 /// Runs `args` with `flag out` appended and returns the file's bytes.
 fn plot(args: &[&str], flag: &str, out: &Path) -> Vec<u8> {

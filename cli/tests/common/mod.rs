@@ -113,3 +113,21 @@ pub fn files(dir: &std::path::Path) -> Vec<String> {
     v.sort();
     v
 }
+
+/// A small convergence study (3 samplers × 2 integrands, 4 … 64 spp, 8 runs), for the converge
+/// and plot tests.
+pub const SMALL_STUDY: [&str; 13] = [
+    "converge",
+    "--samplers",
+    "random,sobol,zero-two",
+    "--integrands",
+    "step,gaussian",
+    "--min-spp",
+    "4",
+    "--max-spp",
+    "64",
+    "--runs",
+    "8",
+    "--seed",
+    "3",
+];
