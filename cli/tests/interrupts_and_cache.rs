@@ -9,22 +9,22 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-/// Starts a render of a large PNG into `dir`, waits until its temporary file appears (the
-/// encoder is then writing), sends `signal` with `kill`, and returns the exit code and the
-/// folder's files afterwards.
+/// Starts a quick render of a large PNG (2048², one sample a pixel, box filter) into `dir`,
+/// waits until its temporary file appears (the encoder is then writing), sends `signal` with
+/// `kill`, and returns the exit code and the folder's files afterwards.
 fn interrupt_a_write(signal: &str, dir: &Path) -> (Option<i32>, Vec<String>) {
     let out = dir.join("big.png");
     let mut child = Command::new(env!("CARGO_BIN_EXE_nyquist"))
         .args([
             "render",
             "--size",
-            "4096x4096",
+            "2048x2048",
             "--spp",
             "1",
-            "--threads",
-            "1",
-            "-o",
+            "--sampler",
+            "uniform",
         ])
+        .args(["--filter", "box", "-o"])
         .arg(&out)
         .stdout(Stdio::null())
         .stderr(Stdio::null())
