@@ -40,6 +40,7 @@
 extern crate std;
 
 pub mod analysis;
+pub mod compact;
 pub mod error;
 pub mod filter;
 pub mod hash;
