@@ -11,11 +11,11 @@
 //! from integer arithmetic and `f32` operations only: on a target whose FPU is single precision
 //! (Cortex-M4F), nothing here calls a software `f64` routine.
 //!
-//! | type | code and constants on Cortex-M4F (`opt-level = "s"`) | per value |
+//! | type | code and constants on Cortex-M4F (`opt-level = "s"`, LTO) | per value |
 //! |---|---|---|
-//! | [`Halton<N>`] | about 1.5 KB + 100 bytes per dimension | one division per digit |
-//! | [`Sobol<N>`] | a few hundred bytes + 128 bytes per dimension | 32 masked XORs |
-//! | [`OwenSobol<N>`] | about 1 KB + 132 bytes per dimension | 32 masked XORs and two hashes |
+//! | [`Halton<N>`] | about 2.7 KB + 100 bytes per dimension | one division per digit |
+//! | [`Sobol<N>`] | about 200 bytes + 128 bytes per dimension | 32 masked XORs |
+//! | [`OwenSobol<N>`] | about 650 bytes + 128 bytes per dimension | 32 masked XORs, two hashes |
 //!
 //! The desktop types stay the fast choice where memory is plentiful; `docs/embedded.md` in the
 //! repository has the measured sizes and speeds.
