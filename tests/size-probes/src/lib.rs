@@ -122,6 +122,8 @@ mod semihosting {
     /// Ends the emulation (SYS_EXIT with ADP_Stopped_ApplicationExit, or RunTimeErrorUnknown).
     pub fn exit(status: u32) -> ! {
         call(0x18, if status == 0 { 0x20026 } else { 0x20024 });
-        loop {}
+        loop {
+            core::hint::spin_loop();
+        }
     }
 }

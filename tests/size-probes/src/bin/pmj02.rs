@@ -4,14 +4,12 @@
 use nyquist::sequence::pmj02_build;
 use nyquist_size_probes::{emit, run};
 
-static mut POINTS: [[u32; 2]; 1024] = [[0; 2]; 1024];
-
 #[unsafe(no_mangle)]
 extern "C" fn probe_main() -> ! {
-    // The one mutable static, borrowed once here.
-    let points = unsafe { &mut *&raw mut POINTS };
+    // The caller's buffer, on the stack.
+    let mut points = [[0u32; 2]; 1024];
     run(|i| {
-        if pmj02_build(i >> 10, points).is_ok() {
+        if pmj02_build(i >> 10, &mut points).is_ok() {
             let [x, y] = points[(i & 1023) as usize];
             emit(x);
             emit(y);
