@@ -139,6 +139,46 @@ fn phi_short(b: u32, digits: u32, inv: u64, a: u32) -> f32 {
         rev = rev * u64::from(b) + u64::from(x % b);
         x /= b;
     }
+    narrow(rev, inv)
+}
+
+/// `R'·inv` rounded to `f64`, then to `f32`, clamped below 1 (`R' < 2⁴⁵`, exact in `f64`): the
+/// table path's own expression, on targets whose FPU does `f64` in hardware.
+#[cfg(any(
+    target_arch = "x86_64",
+    target_arch = "aarch64",
+    target_arch = "wasm32"
+))]
+#[inline(always)]
+fn narrow(rev: u64, inv: u64) -> f32 {
+    ((rev as f64 * f64::from_bits(inv)) as f32).min(ONE_MINUS_EPSILON)
+}
+
+/// As the `f64` form, by [`narrow_int`]: integer and `f32` operations only, for targets whose
+/// FPU is single precision or absent.
+#[cfg(not(any(
+    target_arch = "x86_64",
+    target_arch = "aarch64",
+    target_arch = "wasm32"
+)))]
+#[inline(always)]
+fn narrow(rev: u64, inv: u64) -> f32 {
+    narrow_int(rev, inv)
+}
+
+/// `R'·inv` (`R' < 2⁴⁵`, `inv` the bits of a positive normal `f64`) rounded to `f64` and then to
+/// `f32`, clamped below 1, with integer and `f32` operations only: the same bits as
+/// `((R' as f64) * inv) as f32` (a test compares the two on the host).
+#[cfg_attr(
+    any(
+        target_arch = "x86_64",
+        target_arch = "aarch64",
+        target_arch = "wasm32"
+    ),
+    allow(dead_code)
+)]
+#[inline(always)]
+fn narrow_int(rev: u64, inv: u64) -> f32 {
     if rev == 0 {
         return 0.0;
     }

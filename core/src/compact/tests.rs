@@ -98,3 +98,35 @@ proptest! {
         prop_assert_eq!(s.sample(i, d).to_bits(), ts.sample(i, d).to_bits());
     }
 }
+
+/// The integer emulation of `((R' as f64) * inv) as f32` (what runs on single-precision FPUs)
+/// against the `f64` expression itself, for every base's reciprocals and digit reversals of
+/// every length, and at random.
+#[test]
+fn integer_rounding_equals_the_f64_expression() {
+    let f64_form = |rev: u64, inv: u64| {
+        ((rev as f64 * f64::from_bits(inv)) as f32).min(crate::math::ONE_MINUS_EPSILON)
+    };
+    let mut checked = 0;
+    for d in 1..1024 {
+        for c in 1..=8 {
+            let (digits, inv) = fast_class(d, c);
+            let b = u64::from(crate::radical::PRIMES[d]);
+            let top = b.pow(digits);
+            for k in 0..200u64 {
+                let rev = match k {
+                    0..=2 => k,
+                    3..=5 => top - (k - 2),
+                    _ => crate::hash::mix64(k ^ (d as u64) << 20 ^ (c as u64) << 40) % top,
+                };
+                assert_eq!(
+                    narrow_int(rev, inv).to_bits(),
+                    f64_form(rev, inv).to_bits(),
+                    "dim {d} class {c} rev {rev}"
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 1023 * 8 * 200);
+}
