@@ -406,8 +406,26 @@ pub struct OwenSobol<const N: usize> {
     seeds: [u32; N],
 }
 
+/// The direction numbers of dimensions `0..N` for bit-reversed words: `out[d][j]` is column
+/// `31 − j` reversed, so that the product over the bits of a reversed index `r` is
+/// `reverse(sobol(reverse(r), d))` with no reversal at run time.
+const fn reversed_directions<const N: usize>() -> [[u32; 32]; N] {
+    let m = sobol_directions::<N>();
+    let mut out = [[0u32; 32]; N];
+    let mut d = 0;
+    while d < N {
+        let mut j = 0;
+        while j < 32 {
+            out[d][j] = m[d][31 - j].reverse_bits();
+            j += 1;
+        }
+        d += 1;
+    }
+    out
+}
+
 impl<const N: usize> OwenSobol<N> {
-    const DIRECTIONS: [[u32; 32]; N] = sobol_directions::<N>();
+    const REVERSED: [[u32; 32]; N] = reversed_directions::<N>();
 
     /// The sequence scrambled by `seed` (every seed, 0 included, is a scramble).
     pub fn new(seed: u64) -> Self {
@@ -429,8 +447,7 @@ impl<const N: usize> OwenSobol<N> {
     /// index `r`.
     #[inline(always)]
     fn value_rev(&self, r: u32, d: usize) -> u32 {
-        let p = sobol_product(&Self::DIRECTIONS[d], r.reverse_bits()).reverse_bits();
-        lk_hash(p, self.seeds[d])
+        lk_hash(sobol_product(&Self::REVERSED[d], r), self.seeds[d])
     }
 
     /// Point `index`, dimension `dim` as a 32-bit binary fraction.
