@@ -18,9 +18,9 @@ budgets=(
     "halton16 8192 f32"
     "sobol4 4096 f32"
     "owen4 12288 f32"
-    "pmj02 8192 -"
+    "pmj02 8192 f32"
     "stratify 4096 f32"
-    "stratified_sampler 8192 -"
+    "stratified_sampler 8192 f32"
     "mitchell 8192 f32"
 )
 wasm_budget=8192
