@@ -248,7 +248,14 @@ pub struct Halton<const N: usize>;
 impl<const N: usize> Halton<N> {
     const BASES: [Base; N] = halton_bases::<N>();
 
-    /// The sequence. (A unit struct: `Halton::<N>` is a value too.)
+    /// The sequence. (A unit struct: `Halton::<N>` is a value too.) `N` outside `1..=1024`
+    /// does not compile.
+    ///
+    /// ```
+    /// use nyquist::{compact::Halton, sequence::Sequence};
+    /// const H: Halton<3> = Halton::new();
+    /// assert_eq!((H.dims(), H.sample(1, 2)), (3, 0.2));
+    /// ```
     pub const fn new() -> Self {
         const { check_dims::<N>() };
         Halton
@@ -328,7 +335,13 @@ pub struct Sobol<const N: usize> {
 impl<const N: usize> Sobol<N> {
     const DIRECTIONS: [[u32; 32]; N] = sobol_directions::<N>();
 
-    /// The unscrambled sequence.
+    /// The unscrambled sequence. `N` outside `1..=1024` does not compile.
+    ///
+    /// ```
+    /// use nyquist::{compact::Sobol, sequence::Sequence};
+    /// let s = Sobol::<2>::new();
+    /// assert_eq!([s.sample(3, 0), s.sample(3, 1)], [0.75, 0.25]);
+    /// ```
     pub const fn new() -> Self {
         const { check_dims::<N>() };
         Sobol {
@@ -339,6 +352,14 @@ impl<const N: usize> Sobol<N> {
 
     /// The sequence with the digital shift of
     /// [`sequence::Sobol::with_scramble`](crate::sequence::Sobol::with_scramble).
+    ///
+    /// ```
+    /// use nyquist::compact::Sobol;
+    /// let (plain, shifted) = (Sobol::<2>::new(), Sobol::<2>::with_scramble(7));
+    /// // A digital shift XORs each dimension with one constant.
+    /// let x = plain.sample_u32(0, 1) ^ shifted.sample_u32(0, 1);
+    /// assert_eq!(plain.sample_u32(9, 1) ^ shifted.sample_u32(9, 1), x);
+    /// ```
     pub const fn with_scramble(seed: u64) -> Self {
         const { check_dims::<N>() };
         Sobol {
@@ -348,6 +369,11 @@ impl<const N: usize> Sobol<N> {
     }
 
     /// Point `index`, dimension `dim` as a 32-bit fraction (`value / 2³²`), scramble applied.
+    ///
+    /// ```
+    /// use nyquist::{compact::Sobol, sequence::sobol_u32};
+    /// assert_eq!(Sobol::<8>::new().sample_u32(77, 5), sobol_u32(77, 5));
+    /// ```
     #[inline]
     pub fn sample_u32(&self, index: u64, dim: u32) -> u32 {
         let d = wrap::<N>(dim);
@@ -427,7 +453,15 @@ const fn reversed_directions<const N: usize>() -> [[u32; 32]; N] {
 impl<const N: usize> OwenSobol<N> {
     const REVERSED: [[u32; 32]; N] = reversed_directions::<N>();
 
-    /// The sequence scrambled by `seed` (every seed, 0 included, is a scramble).
+    /// The sequence scrambled by `seed` (every seed, 0 included, is a scramble). `N` outside
+    /// `1..=1024` does not compile.
+    ///
+    /// ```
+    /// use nyquist::{compact::OwenSobol, sequence::Sequence};
+    /// let s = OwenSobol::<2>::new(0);
+    /// // Any seed: the first 2 points put one value in each half of every dimension.
+    /// assert_ne!(s.sample(0, 1) < 0.5, s.sample(1, 1) < 0.5);
+    /// ```
     pub fn new(seed: u64) -> Self {
         const { check_dims::<N>() };
         let h = hash2(seed, 0x4f57_454e); // "OWEN", as the table path.
@@ -439,6 +473,10 @@ impl<const N: usize> OwenSobol<N> {
     }
 
     /// The seed this sequence was built with.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::compact::OwenSobol::<2>::new(9).seed(), 9);
+    /// ```
     pub fn seed(&self) -> u64 {
         self.seed
     }
@@ -451,6 +489,12 @@ impl<const N: usize> OwenSobol<N> {
     }
 
     /// Point `index`, dimension `dim` as a 32-bit binary fraction.
+    ///
+    /// ```
+    /// use nyquist::{compact::OwenSobol, sequence};
+    /// let table = sequence::OwenSobol::new(3, 1).unwrap();
+    /// assert_eq!(OwenSobol::<3>::new(1).sample_u32(5, 4), table.sample_u32(5, 4));
+    /// ```
     #[inline]
     pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
         self.value_rev(self.shuffle.rev(index), wrap::<N>(dim))
@@ -459,6 +503,12 @@ impl<const N: usize> OwenSobol<N> {
 
     /// Four consecutive dimensions `first_dim .. first_dim + 4` (each wrapping) of point
     /// `index`, sharing the index shuffle; equal to four calls of `sample`.
+    ///
+    /// ```
+    /// use nyquist::{compact::OwenSobol, sequence::Sequence};
+    /// let s = OwenSobol::<8>::new(3);
+    /// assert_eq!(s.sample_4d(77, 6), [6, 7, 0, 1].map(|d| s.sample(77, d)));
+    /// ```
     #[inline]
     pub fn sample_4d(&self, index: u32, first_dim: u32) -> [f32; 4] {
         let r = self.shuffle.rev(index);
