@@ -7,9 +7,11 @@
 //! constants, or the first `N` dimensions' Sobol direction numbers — are `const` items evaluated
 //! at compile time for that `N`. A `const` is emitted only where a program uses it, and only its
 //! `N` rows; the desktop types read `static` tables that a program links whole (the 1024-base
-//! radical-inverse tables are about 500 KB, Owen-Sobol's byte tables about 700 KB). Values come
-//! from integer arithmetic and `f32` operations only: on a target whose FPU is single precision
-//! (Cortex-M4F), nothing here calls a software `f64` routine.
+//! radical-inverse tables are about 500 KB, Owen-Sobol's byte tables close to 1 MB). On a target
+//! whose FPU is single precision (Cortex-M4F) values come from integer and `f32` operations only,
+//! so nothing here calls a software `f64` routine; where the FPU does `f64` in hardware (x86-64,
+//! AArch64, WASM), Halton's fast path rounds with the table path's own `f64` expression instead,
+//! which is faster there and, by construction, the same bits.
 //!
 //! | type | code and constants on Cortex-M4F (`opt-level = "s"`, LTO) | per value |
 //! |---|---|---|
@@ -228,9 +230,10 @@ fn phi_long(b: u32, a: u64) -> f32 {
 /// [`sequence::Halton`](crate::sequence::Halton)`::new(N)` returns, for every `u64` index.
 ///
 /// Carries about 100 bytes of constants per dimension, computed at compile time, and none of
-/// the radical-inverse tables; `f32` values use integer and `f32` arithmetic only. Slower than
-/// the table path (one 32-bit division per digit, and a bit-by-bit division for indices of 32
-/// bits and more). `dim >= N` wraps modulo `N`. Allocates: no.
+/// the radical-inverse tables; without a double-precision FPU, `f32` values use integer and
+/// `f32` arithmetic only. Slower than the table path: one 32-bit division per digit, and a
+/// bit-by-bit division for indices at or past the base's largest power below 2³². `dim >= N`
+/// wraps modulo `N`. Allocates: no.
 ///
 /// ```
 /// use nyquist::compact::Halton;
