@@ -29,7 +29,10 @@
 //! ## `no_std`
 //!
 //! The crate is always `#![no_std]` and uses no `alloc`; `tests/nostd-probe` in the repository
-//! proves it by linking the crate into a staticlib that has neither. The one `unsafe` is the call
+//! proves it by linking the crate into a staticlib that has neither. For firmware and WASM, the
+//! const-generic point sets of [`compact`] return the `sequence` types' values, bit for bit,
+//! without their speed tables and without `f64` arithmetic (`docs/embedded.md` in the
+//! repository has sizes and budgets). The one `unsafe` is the call
 //! into an SSE2 kernel on x86-64 (SSE2 is in that target's baseline); everything else is safe.
 #![no_std]
 #![deny(unsafe_code)]
@@ -40,6 +43,7 @@
 extern crate std;
 
 pub mod analysis;
+pub mod compact;
 pub mod error;
 pub mod filter;
 pub mod hash;
@@ -58,3 +62,8 @@ mod tests;
 
 pub use error::Error;
 pub use math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};
+
+/// The embedded guide's code blocks, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../../docs/embedded.md")]
+struct EmbeddedDoctests;

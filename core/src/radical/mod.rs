@@ -560,6 +560,72 @@ fn base2_u32(a: u32) -> f32 {
     }
 }
 
+/// Φ₂(a) for any `a`, correctly rounded to `f32`, clamped below 1: `f32` arithmetic only.
+#[inline(always)]
+pub(crate) fn phi2(a: u64) -> f32 {
+    if a >> 32 == 0 {
+        // The usual case: a 32-bit reversal, exactly representable before one rounding.
+        return base2_u32(a as u32);
+    }
+    // When the top bit is set, halve the reversal keeping the lost bit as a sticky bit (the
+    // value then has 63 significant bits, so rounding is unchanged): the signed conversion is
+    // one instruction.
+    let r = a.reverse_bits();
+    let top = r >> 63;
+    let m = ((r >> top) | (r & top)) as i64;
+    let scale = f32::from_bits((127 - 64 + top as u32) << 23);
+    ((m as f32) * scale).min(ONE_MINUS_EPSILON)
+}
+
+/// What the fast path of base `PRIME_TABLE[d]` (`1 <= d < 1024`) does for an index of class
+/// `c` (`1 ..= 8`, [`index_class`]), for paths that compute it without the tables: the digits
+/// `N = n + pad` its reversal spans (`R' = Σ a_i b^(N−1−i)` over the index's digits `a_i`) and
+/// the bits of its `inv = 1/b^N` as an `f64`. Equal to [`FAST`]'s constants (a test holds them
+/// so); the value is `narrow(R', inv)`.
+pub(crate) const fn fast_class(d: usize, c: usize) -> (u32, u64) {
+    let b = PRIME_TABLE[d] as u64;
+    let k = chunk_digits(b);
+    let j = chunk_len(b);
+    let mut x = (1u64 << (4 * c)) - 1;
+    let mut n = 0u32;
+    while x > 0 {
+        x /= b;
+        n += 1;
+    }
+    if n > k {
+        n = k;
+    }
+    let whole = n.div_ceil(j) * j;
+    if j > 1 && whole <= k {
+        n = whole;
+    }
+    let steps = if j > 1 { n.div_ceil(j) } else { n };
+    let pad = steps * j - n;
+    let inv = 1.0 / b.pow(n + pad) as f64;
+    (n + pad, inv.to_bits())
+}
+
+/// [`fast_class`] read back from [`FAST`]'s constants, for the test that holds them equal.
+#[cfg(test)]
+pub(crate) fn fast_class_of_table(d: usize, c: usize) -> (u32, u64) {
+    let f = &FAST[d];
+    let class = &f.class[c];
+    let (mut j, mut p) = (0u32, 1u32);
+    while p < f.chunk {
+        p *= f.b;
+        j += 1;
+    }
+    let pad = u32::from(class.steps) * j - u32::from(class.n);
+    (u32::from(class.n) + pad, class.inv.to_bits())
+}
+
+/// `b^k`, `k` the largest with `b^k < 2³²`, for base `PRIME_TABLE[d]`: indices below it take
+/// the fast path.
+pub(crate) const fn fast_limit(d: usize) -> u64 {
+    let b = PRIME_TABLE[d] as u64;
+    b.pow(chunk_digits(b))
+}
+
 /// Φ_b(a), the radical inverse of `a` in base `b = prime(dim)`, as an `f32` in `[0, 1)`.
 ///
 /// The base-`b` digits of `a` mirrored about the radix point: `a = Σ a_j b^j` gives
@@ -586,18 +652,7 @@ pub fn radical_inverse(dim: u32, a: u64) -> f32 {
 pub(crate) fn radical_inverse_inlined(dim: u32, a: u64) -> f32 {
     let d = (dim % PRIME_COUNT) as usize;
     if d == 0 {
-        if a >> 32 == 0 {
-            // The usual case: a 32-bit reversal, exactly representable before one rounding.
-            return base2_u32(a as u32);
-        }
-        // When the top bit is set, halve the reversal keeping the lost bit as a sticky bit (the
-        // value then has 63 significant bits, so rounding is unchanged): the signed conversion
-        // is one instruction.
-        let r = a.reverse_bits();
-        let top = r >> 63;
-        let m = ((r >> top) | (r & top)) as i64;
-        let scale = f32::from_bits((127 - 64 + top as u32) << 23);
-        return ((m as f32) * scale).min(ONE_MINUS_EPSILON);
+        return phi2(a);
     }
     let fast = &FAST[d];
     if a < u64::from(fast.big) {

@@ -30,11 +30,11 @@ mod zero_two;
 pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 pub use hammersley::{Hammersley, HammersleyZaremba};
 pub use owen_sobol::OwenSobol;
-pub(crate) use owen_sobol::{DimSeeds, IndexShuffle, owen_sobol_rev_f32};
+pub(crate) use owen_sobol::{DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32};
 pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
 
-pub(crate) use sobol::sobol_run_f32;
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
+pub(crate) use sobol::{product as sobol_product, sobol_run_f32};
 pub(crate) use sobol_table::SOBOL_MATRICES;
 pub use zero_two::ZeroTwo;
 

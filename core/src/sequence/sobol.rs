@@ -70,7 +70,7 @@ const fn byte_tables() -> [[[u32; BYTE_ROW]; 4]; FAST_DIMS] {
 /// as a branch-free masked XOR over all 32 columns (the fallback for dimensions without byte
 /// tables; the same speed for any index, unlike a loop over the set bits).
 #[inline(always)]
-pub(super) fn product(m: &[u32; 32], index: u32) -> u32 {
+pub(crate) fn product(m: &[u32; 32], index: u32) -> u32 {
     let mut v = 0;
     for (k, &col) in m.iter().enumerate() {
         let bit = (index >> k) & 1;

@@ -1,0 +1,132 @@
+//! The compact types against the table paths, value for value.
+
+use super::*;
+use crate::radical::{fast_class_of_table, radical_inverse};
+use crate::sequence;
+use proptest::prelude::*;
+
+/// Every `(base, class)`'s digit count and reciprocal, recomputed for the compact path, equal the
+/// fast path's.
+#[test]
+fn fast_class_constants_match_the_tables() {
+    for d in 1..1024 {
+        for c in 1..=8 {
+            assert_eq!(
+                fast_class(d, c),
+                fast_class_of_table(d, c),
+                "dim {d} class {c}"
+            );
+        }
+    }
+}
+
+/// Indices of every bit length, and the edges around each base's fast-path limit.
+fn indices(d: usize) -> impl Iterator<Item = u64> {
+    let limit = if d == 0 { 1 << 32 } else { fast_limit(d) };
+    (0..300u64)
+        .chain((0..64).flat_map(|k| [1u64 << k, (1u64 << k) - 1, crate::hash::mix64(k) >> k]))
+        .chain([limit - 1, limit, limit + 1, u64::MAX, u64::MAX - 1])
+}
+
+#[test]
+fn halton_equals_the_table_path_in_every_dimension() {
+    let h = Halton::<1024>::new();
+    for d in 0..1024u32 {
+        for i in indices(d as usize) {
+            assert_eq!(
+                h.sample(i, d).to_bits(),
+                radical_inverse(d, i).to_bits(),
+                "dim {d} index {i}"
+            );
+        }
+    }
+}
+
+#[test]
+fn sobol_and_owen_sobol_equal_the_table_paths_in_every_dimension() {
+    let s = Sobol::<1024>::new();
+    let shifted = Sobol::<1024>::with_scramble(11);
+    let owen = OwenSobol::<1024>::new(5);
+    let (ts, tshifted) = (
+        sequence::Sobol::new(1024).unwrap(),
+        sequence::Sobol::with_scramble(1024, 11).unwrap(),
+    );
+    let towen = sequence::OwenSobol::new(1024, 5).unwrap();
+    for d in 0..1024u32 {
+        for i in (0..64u64).chain((0..64).map(|k| crate::hash::mix64(k) >> (k / 2))) {
+            assert_eq!(s.sample(i, d).to_bits(), ts.sample(i, d).to_bits());
+            assert_eq!(shifted.sample_u32(i, d), tshifted.sample_u32(i, d));
+            assert_eq!(owen.sample(i, d).to_bits(), towen.sample(i, d).to_bits());
+            assert_eq!(owen.sample_u32(i as u32, d), towen.sample_u32(i as u32, d));
+            assert_eq!(owen.sample_4d(i as u32, d), towen.sample_4d(i as u32, d));
+        }
+    }
+}
+
+#[test]
+fn short_dimension_counts_wrap_like_the_table_paths() {
+    let (h, th) = (Halton::<3>::new(), sequence::Halton::new(3).unwrap());
+    let (o, to) = (
+        OwenSobol::<5>::new(1),
+        sequence::OwenSobol::new(5, 1).unwrap(),
+    );
+    for i in [0u64, 7, 1 << 40] {
+        for d in 0..20 {
+            assert_eq!(h.sample(i, d).to_bits(), th.sample(i, d).to_bits());
+            assert_eq!(h.sample_f64(i, d).to_bits(), th.sample_f64(i, d).to_bits());
+            assert_eq!(o.sample(i, d).to_bits(), to.sample(i, d).to_bits());
+            assert_eq!(o.sample_4d(i as u32, d), to.sample_4d(i as u32, d));
+        }
+    }
+}
+
+proptest! {
+    #[test]
+    fn halton_matches_at_random(i in any::<u64>(), d in 0u32..1024, shift in 0u32..64) {
+        let i = i >> shift;
+        prop_assert_eq!(Halton::<1024>::new().sample(i, d).to_bits(), radical_inverse(d, i).to_bits());
+    }
+
+    #[test]
+    fn sobols_match_at_random(i in any::<u64>(), d in 0u32..1024, seed in any::<u64>()) {
+        let owen = OwenSobol::<1024>::new(seed);
+        let towen = sequence::OwenSobol::new(1024, seed).unwrap();
+        prop_assert_eq!(owen.sample(i, d).to_bits(), towen.sample(i, d).to_bits());
+        prop_assert_eq!(owen.sample_4d(i as u32, d), towen.sample_4d(i as u32, d));
+        let s = Sobol::<1024>::with_scramble(seed);
+        let ts = sequence::Sobol::with_scramble(1024, seed).unwrap();
+        prop_assert_eq!(s.sample(i, d).to_bits(), ts.sample(i, d).to_bits());
+    }
+}
+
+/// The integer emulation of `((R' as f64) * inv) as f32` (what runs on single-precision FPUs)
+/// against the `f64` expression itself, for every base's reciprocals and digit reversals of
+/// every length, and at random.
+#[test]
+fn integer_rounding_equals_the_f64_expression() {
+    let f64_form = |rev: u64, inv: u64| {
+        ((rev as f64 * f64::from_bits(inv)) as f32).min(crate::math::ONE_MINUS_EPSILON)
+    };
+    let mut checked = 0;
+    for d in 1..1024 {
+        for c in 1..=8 {
+            let (digits, inv) = fast_class(d, c);
+            let b = u64::from(crate::radical::PRIMES[d]);
+            let top = b.pow(digits);
+            for k in 0..200u64 {
+                let rev = match k {
+                    0..=2 => k,
+                    3..=5 => top - (k - 2),
+                    _ => crate::hash::mix64(k ^ (d as u64) << 20 ^ (c as u64) << 40) % top,
+                };
+                assert_eq!(
+                    narrow_int(rev, inv).to_bits(),
+                    f64_form(rev, inv).to_bits(),
+                    "dim {d} class {c} rev {rev}"
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 1023 * 8 * 200);
+}

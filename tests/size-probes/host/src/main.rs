@@ -1,0 +1,95 @@
+//! `nyquist-probe-host PROBE`: the lines the size probe `PROBE` prints under QEMU (eight hex
+//! digits per value, then `END`), computed on the host with the table paths.
+
+use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
+use nyquist::rng::default_rng;
+use nyquist::sampler::{Jitter, Sampler, StratifiedSampler};
+use nyquist::sequence::{Halton, OwenSobol, Sequence, Sobol, pmj02_build};
+use nyquist::stratify::{Jitter as StrataJitter, latin_hypercube, shuffle, stratified_2d};
+use std::io::{BufWriter, Write};
+use std::process::ExitCode;
+
+include!("../../src/indices.rs");
+
+fn main() -> ExitCode {
+    let Some(probe) = std::env::args().nth(1) else {
+        eprintln!("usage: nyquist-probe-host PROBE");
+        return ExitCode::from(2);
+    };
+    let mut out = BufWriter::new(std::io::stdout().lock());
+    let mut emit = |x: u32| writeln!(out, "{x:08x}").unwrap();
+    let indices = (0..PROBE_POINTS).map(probe_index);
+    match probe.as_str() {
+        "halton2" | "halton16" => {
+            let dims = if probe == "halton2" { 2 } else { 16 };
+            let h = Halton::new(dims).unwrap();
+            for i in indices {
+                (0..dims).for_each(|d| emit(h.sample(i, d).to_bits()));
+            }
+        }
+        "sobol4" => {
+            let s = Sobol::new(4).unwrap();
+            for i in indices {
+                (0..4).for_each(|d| emit(s.sample(i, d).to_bits()));
+            }
+        }
+        "owen4" => {
+            let s = OwenSobol::new(4, 7).unwrap();
+            for i in indices {
+                (0..4).for_each(|d| emit(s.sample(i, d).to_bits()));
+                s.sample_4d(i as u32, 0)
+                    .iter()
+                    .for_each(|x| emit(x.to_bits()));
+            }
+        }
+        "pmj02" => {
+            let mut points = [[0u32; 2]; 1024];
+            for i in indices {
+                if pmj02_build(i >> 10, &mut points).is_ok() {
+                    let [x, y] = points[(i & 1023) as usize];
+                    emit(x);
+                    emit(y);
+                }
+            }
+        }
+        "stratify" => {
+            for i in indices {
+                let mut rng = default_rng(i);
+                let mut grid = [0.0f32; 4 * 4 * 2];
+                let mut lhs = [0.0f32; 8 * 3];
+                if stratified_2d(&mut grid, 4, 4, StrataJitter::Jittered, &mut rng).is_ok()
+                    && latin_hypercube(&mut lhs, 3, &mut rng).is_ok()
+                    && shuffle(&mut grid, 16, 2, &mut rng).is_ok()
+                {
+                    emit(grid[(i % 32) as usize].to_bits());
+                    emit(lhs[(i % 24) as usize].to_bits());
+                }
+            }
+        }
+        "stratified_sampler" => {
+            let mut s = StratifiedSampler::new(4, 4, Jitter::Jittered, 9).unwrap();
+            for i in indices {
+                let c = s.camera_sample([(i & 63) as u32, (i >> 6 & 63) as u32], (i >> 12) as u32);
+                for x in [c.p_film[0], c.p_film[1], c.lens[0], c.lens[1], c.time] {
+                    emit(x.to_bits());
+                }
+            }
+        }
+        "mitchell" => {
+            let t = SeparableTable::<16>::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+            for i in indices {
+                let d = (i & 0xffff) as f32 / 65536.0;
+                let mut w = [0.0f32; 4 * 4];
+                if t.footprint([-2.0 + d, -1.75 + 0.5 * d], 4, &mut w).is_ok() {
+                    w.iter().for_each(|x| emit(x.to_bits()));
+                }
+            }
+        }
+        _ => {
+            eprintln!("nyquist-probe-host: unknown probe {probe}");
+            return ExitCode::from(2);
+        }
+    }
+    writeln!(out, "END").unwrap();
+    ExitCode::SUCCESS
+}
