@@ -26,12 +26,15 @@ fn workspace() -> PathBuf {
 }
 
 /// Builds the staticlib with the cargo running this test (same target directory, so
-/// `CARGO_TARGET_DIR` is respected) and returns the path cargo reports for it.
+/// `CARGO_TARGET_DIR` is respected, and the test profile, which `cargo test` already built it
+/// with) and returns the path cargo reports for it.
 fn staticlib() -> PathBuf {
     let out = Command::new(env!("CARGO"))
         .current_dir(workspace())
         .args([
             "build",
+            "--profile",
+            "test",
             "-p",
             "nyquist-capi",
             "--lib",
