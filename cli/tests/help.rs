@@ -89,6 +89,37 @@ fn design_spellings_are_accepted() {
         s[..s.find("\"seconds\"").unwrap()].to_string()
     };
     assert_eq!(strip(&flag), strip(&positional));
-    assert!(strip(&flag).contains("\"star\":0.0520833"));
+    // The expected D* from an independent brute force over the same points: every anchored box
+    // [0, x) × [0, y) with x and y among the coordinates and 1, counted open and closed.
+    let points: Vec<[f64; 2]> = String::from_utf8_lossy(&pts.stdout)
+        .lines()
+        .map(|l| {
+            let (x, y) = l.split_once(',').unwrap();
+            [x.parse().unwrap(), y.parse().unwrap()]
+        })
+        .collect();
+    let n = points.len() as f64;
+    let xs: Vec<f64> = points.iter().map(|p| p[0]).chain([1.0]).collect();
+    let ys: Vec<f64> = points.iter().map(|p| p[1]).chain([1.0]).collect();
+    let mut star = 0.0f64;
+    for &x in &xs {
+        for &y in &ys {
+            let open = points.iter().filter(|p| p[0] < x && p[1] < y).count() as f64;
+            let closed = points.iter().filter(|p| p[0] <= x && p[1] <= y).count() as f64;
+            star = star.max(x * y - open / n).max(closed / n - x * y);
+        }
+    }
+    let json = strip(&flag);
+    let at = json.find("\"star\":").unwrap() + "\"star\":".len();
+    let printed: f64 = json[at..]
+        .split(|c| c == ',' || c == '}')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        (printed - star).abs() < 1e-6,
+        "analyze says {printed}, brute force {star}"
+    );
     std::fs::remove_dir_all(&dir).ok();
 }

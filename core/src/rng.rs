@@ -60,7 +60,12 @@ impl CounterRng {
     ///
     /// ```
     /// use nyquist::rng::{CounterRng, default_rng};
-    /// assert_eq!(CounterRng::keyed_by(&mut default_rng(3)), CounterRng::keyed_by(&mut default_rng(3)));
+    /// use rand_core::Rng;
+    /// // The key is the generator's next u64, and exactly one is drawn.
+    /// let mut rng = default_rng(3);
+    /// let mut fresh = default_rng(3);
+    /// assert_eq!(CounterRng::keyed_by(&mut rng), CounterRng::new(fresh.next_u64()));
+    /// assert_eq!(rng.next_u64(), fresh.next_u64());
     /// ```
     pub fn keyed_by<R: Rng + ?Sized>(rng: &mut R) -> CounterRng {
         CounterRng::new(rng.next_u64())

@@ -15,7 +15,7 @@ use std::sync::mpsc;
 /// use nyquist_film::{Bounds, TileContext};
 /// let ctx = TileContext { index: 2, count: 4, bounds: Bounds::new(8, 0, 16, 8) };
 /// assert_eq!(ctx.pixel_range(), Some(([8, 0], [16, 8])));
-/// assert_eq!(ctx.seed(7), ctx.seed(7));
+/// assert_eq!(ctx.seed(7), nyquist::hash::hash2(7, 2)); // the base and the tile index
 /// assert_ne!(ctx.seed(7), TileContext { index: 3, ..ctx }.seed(7));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -184,7 +184,14 @@ impl Pmj02 {
     ///
     /// ```
     /// use nyquist::sequence::Pmj02;
-    /// assert_eq!(Pmj02::scrambled(4), Pmj02::scrambled(4));
+    /// // Scrambling keeps every prefix a net: the first four points, one per quadrant.
+    /// let q: Vec<usize> = (0..4)
+    ///     .map(|i| Pmj02::scrambled(4).sample_2d(i))
+    ///     .map(|[x, y]| (x * 2.0) as usize + 2 * (y * 2.0) as usize)
+    ///     .collect();
+    /// let mut sorted = q.clone();
+    /// sorted.sort();
+    /// assert_eq!(sorted, [0, 1, 2, 3]);
     /// assert_ne!(Pmj02::scrambled(4).sample_2d(0), Pmj02::scrambled(5).sample_2d(0));
     /// ```
     pub const fn scrambled(seed: u64) -> Pmj02 {

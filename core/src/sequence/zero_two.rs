@@ -54,7 +54,15 @@ impl ZeroTwo {
     ///
     /// ```
     /// use nyquist::sequence::ZeroTwo;
-    /// assert_eq!(ZeroTwo::from_seed(5), ZeroTwo::from_seed(5));
+    /// // Any scramble keeps each prefix of 2^m points a (0, m, 2)-net: the first four, one per
+    /// // quadrant.
+    /// let z = ZeroTwo::from_seed(5);
+    /// let mut q: Vec<usize> = (0..4)
+    ///     .map(|i| z.sample_2d(i))
+    ///     .map(|[x, y]| (x * 2.0) as usize + 2 * (y * 2.0) as usize)
+    ///     .collect();
+    /// q.sort();
+    /// assert_eq!(q, [0, 1, 2, 3]);
     /// assert_ne!(ZeroTwo::from_seed(5).scramble(), ZeroTwo::from_seed(6).scramble());
     /// ```
     pub fn from_seed(seed: u64) -> ZeroTwo {
