@@ -112,7 +112,7 @@ fn design_spellings_are_accepted() {
     let json = strip(&flag);
     let at = json.find("\"star\":").unwrap() + "\"star\":".len();
     let printed: f64 = json[at..]
-        .split(|c| c == ',' || c == '}')
+        .split([',', '}'])
         .next()
         .unwrap()
         .parse()
