@@ -213,3 +213,100 @@ fn cache_dir() -> Option<PathBuf> {
     };
     Some(base.join("nyquist"))
 }
+
+/// One sampler's row of [`pixel_study`]: name, RMSE at each count, slope.
+pub type PixelCurve = (String, Vec<f64>, Option<f64>);
+
+/// The path tracer's pixel estimate as an integrand: for pixel `pixel` of a `size` film of
+/// `scene`, the RMSE over `runs` seeds of the mean of `n` camera samples (one light sample
+/// each, so `43 + 2 = 45` dimensions for samplers whose arrays are dimension runs), for every
+/// `n` in `counts`, against `reference` (see [`pixel_reference`]). Returns, per sampler, the
+/// RMSE at each count and the least-squares slope of log RMSE against log n.
+///
+/// # Errors
+/// An unknown sampler or a count it rejects.
+pub fn pixel_study(
+    scene: &str,
+    size: [u32; 2],
+    pixel: [u32; 2],
+    samplers: &[String],
+    counts: &[u32],
+    runs: u32,
+    reference: f64,
+) -> Result<Vec<PixelCurve>> {
+    let mut out = Vec::new();
+    for name in samplers {
+        let mut rmse = Vec::new();
+        for &n in counts {
+            let mut sq = 0.0;
+            for r in 0..runs {
+                let e = pixel_mean(scene, size, pixel, name, n, run_seed(0x9e37, r))?;
+                sq += (e - reference).powi(2);
+            }
+            rmse.push((sq / f64::from(runs.max(1))).sqrt());
+        }
+        let slope = slope(counts, &rmse);
+        out.push((name.clone(), rmse, slope));
+    }
+    Ok(out)
+}
+
+/// The mean radiance (channel average) of `spp` camera samples of `pixel` from `sampler`.
+///
+/// # Errors
+/// An unknown scene or sampler, or a count the sampler rejects.
+pub fn pixel_mean(
+    scene: &str,
+    size: [u32; 2],
+    pixel: [u32; 2],
+    sampler: &str,
+    spp: u32,
+    seed: u64,
+) -> Result<f64> {
+    let sc = crate::scene::Scene::by_name(scene)
+        .ok_or_else(|| anyhow::anyhow!("unknown scene {scene:?}"))?;
+    let s = crate::build_sampler(sampler, size, spp, seed)?;
+    let layout = crate::trace::PathLayout::new(&s, 1)?;
+    let (mut sum, mut n) = (0.0f64, 0u32);
+    let end = [pixel[0] + 1, pixel[1] + 1];
+    crate::trace::for_each_sample(&sc, &layout, s, size, pixel, end, |_, l| {
+        sum += f64::from(l.0.iter().sum::<f32>()) / 3.0;
+        n += 1;
+    })?;
+    Ok(sum / f64::from(n.max(1)))
+}
+
+/// The pixel's reference: the mean of 64 `owen-sobol` renders of 16384 samples each (2^20
+/// samples), and its standard error.
+///
+/// # Errors
+/// An unknown scene.
+pub fn pixel_reference(scene: &str, size: [u32; 2], pixel: [u32; 2]) -> Result<(f64, f64)> {
+    let xs = (0..64)
+        .map(|r| pixel_mean(scene, size, pixel, "owen-sobol", 16384, run_seed(0xfeed, r)))
+        .collect::<Result<Vec<f64>>>()?;
+    let m = xs.iter().sum::<f64>() / 64.0;
+    let var = xs.iter().map(|x| (x - m).powi(2)).sum::<f64>() / 63.0;
+    Ok((m, (var / 64.0).sqrt()))
+}
+
+/// Least-squares slope of `ln rmse` against `ln n`.
+fn slope(counts: &[u32], rmse: &[f64]) -> Option<f64> {
+    let pts: Vec<(f64, f64)> = counts
+        .iter()
+        .zip(rmse)
+        .filter(|(_, e)| **e > 0.0)
+        .map(|(n, e)| (f64::from(*n).ln(), e.ln()))
+        .collect();
+    if pts.len() < 2 {
+        return None;
+    }
+    let k = pts.len() as f64;
+    let (mx, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / k,
+        pts.iter().map(|p| p.1).sum::<f64>() / k,
+    );
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    (sxx > 0.0).then(|| sxy / sxx)
+}

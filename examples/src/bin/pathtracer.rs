@@ -8,7 +8,9 @@ use anyhow::{Result, anyhow, bail};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use nyquist::filter::FilterKind;
-use nyquist_examples::experiment::{Experiment, contact_sheet, markdown};
+use nyquist_examples::experiment::{
+    Experiment, contact_sheet, markdown, pixel_reference, pixel_study,
+};
 use nyquist_examples::{RenderConfig, render};
 use nyquist_film::write_image_file;
 
@@ -31,6 +33,40 @@ enum Command {
     /// 1 × 16, 16 × 1 and 4 × 4 camera × light samples per pixel for each sampler, against a
     /// cached converged reference: prints a Markdown table, optionally writes a contact sheet.
     Experiment(ExperimentArgs),
+    /// The path tracer's estimate of one pixel as an integrand: RMSE over seeds against N
+    /// camera samples (one light sample each) for each sampler, and the slope.
+    ///
+    /// Example: pathtracer converge --pixel 100,180 --samplers random,sobol,owen-sobol
+    Converge(ConvergeArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct ConvergeArgs {
+    /// Scene.
+    #[arg(long, default_value = "cornell")]
+    scene: String,
+    /// Image size WxH.
+    #[arg(long, default_value = "256x256", value_parser = parse_size)]
+    size: [u32; 2],
+    /// The pixel X,Y.
+    #[arg(long, default_value = "100,180", value_parser = parse_pixel)]
+    pixel: [u32; 2],
+    /// Samplers, comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "random,stratified,halton-plain,halton,sobol-plain,sobol,owen-sobol,zsobol,pmj02,zero-two"
+    )]
+    samplers: Vec<String>,
+    /// Smallest N (a power of four: N = 4, 16, 64, … so that stratified takes every N).
+    #[arg(long, default_value_t = 4)]
+    min_spp: u32,
+    /// Largest N (a power of four).
+    #[arg(long, default_value_t = 4096)]
+    max_spp: u32,
+    /// Seeds per N.
+    #[arg(long, default_value_t = 32)]
+    runs: u32,
 }
 
 #[derive(clap::Args, Debug)]
@@ -106,6 +142,12 @@ fn parse_size(s: &str) -> Result<[u32; 2], String> {
     Ok(size)
 }
 
+fn parse_pixel(s: &str) -> Result<[u32; 2], String> {
+    let (x, y) = s.split_once(',').ok_or("expected X,Y")?;
+    let p = |v: &str| v.trim().parse::<u32>().map_err(|e| format!("{v:?}: {e}"));
+    Ok([p(x)?, p(y)?])
+}
+
 fn threads(t: Option<usize>) -> usize {
     t.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
         .max(1)
@@ -161,6 +203,7 @@ fn main() -> Result<()> {
                 per_thread
             );
         }
+        Command::Converge(a) => converge(a)?,
         Command::Experiment(a) => {
             if a.runs == 0 {
                 bail!("--runs must be positive");
@@ -185,6 +228,55 @@ fn main() -> Result<()> {
                 write_image_file(&p, &contact_sheet(&cells, &reference))?;
             }
         }
+    }
+    Ok(())
+}
+
+fn converge(a: ConvergeArgs) -> Result<()> {
+    let pixel = a.pixel;
+    if pixel[0] >= a.size[0] || pixel[1] >= a.size[1] {
+        bail!(
+            "--pixel {},{}: outside the {}x{} image",
+            pixel[0],
+            pixel[1],
+            a.size[0],
+            a.size[1]
+        );
+    }
+    let power_of_4 = |n: u32| n.is_power_of_two() && n.trailing_zeros().is_multiple_of(2);
+    if !power_of_4(a.min_spp) || !power_of_4(a.max_spp) || a.min_spp >= a.max_spp {
+        bail!("--min-spp and --max-spp: powers of four (squares, for stratified), min < max");
+    }
+    let counts: Vec<u32> = (a.min_spp.trailing_zeros()..=a.max_spp.trailing_zeros())
+        .step_by(2)
+        .map(|k| 1 << k)
+        .collect();
+    let (reference, se) = pixel_reference(&a.scene, a.size, pixel)?;
+    let rows = pixel_study(
+        &a.scene,
+        a.size,
+        pixel,
+        &a.samplers,
+        &counts,
+        a.runs,
+        reference,
+    )?;
+    println!(
+        "Pixel ({}, {}) of {} at {}x{}: reference {reference:.6} ± {se:.1e}; RMSE over {} seeds.\n",
+        pixel[0], pixel[1], a.scene, a.size[0], a.size[1], a.runs
+    );
+    print!("| sampler | slope |");
+    for n in &counts {
+        print!(" N={n} |");
+    }
+    println!("\n|---|---|{}", "---|".repeat(counts.len()));
+    for (name, rmse, slope) in rows {
+        let slope = slope.map_or_else(|| "-".to_owned(), |s| format!("{s:.2}"));
+        print!("| {name} | {slope} |");
+        for e in rmse {
+            print!(" {e:.1e} |");
+        }
+        println!();
     }
     Ok(())
 }
