@@ -23,7 +23,7 @@ use nyquist::sampler::NamedSampler;
 use nyquist_film::{Film, FilmConfig, Image, render_tiles};
 
 use crate::scene::Scene;
-use crate::trace::{PathLayout, for_each_sample};
+use crate::trace::{PathLayout, for_each_sample, for_each_sample_stateless};
 
 /// Builds the sampler called `name`: any of [`nyquist::sampler::NAMES`], or `halton-plain` and
 /// `sobol-plain` for the unscrambled Halton and Sobol samplers (seed 0, whatever `seed` is).
@@ -60,6 +60,9 @@ pub struct RenderConfig {
     pub tile_size: u32,
     /// Reconstruction filter.
     pub filter: FilterKind,
+    /// Draw the values through the stateless layer (`camera_sample`, `get_array_2d`,
+    /// `get_2d`, `get_1d`) instead of `SampleLayout` and `PixelRangeSampler`.
+    pub stateless: bool,
 }
 
 impl RenderConfig {
@@ -76,6 +79,7 @@ impl RenderConfig {
             threads: 1,
             tile_size: 16,
             filter: FilterKind::parse("box").expect("the box filter parses"),
+            stateless: false,
         }
     }
 }
@@ -120,16 +124,24 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
             let Some((a, b)) = ctx.pixel_range() else {
                 return;
             };
-            for_each_sample(
-                &scene,
-                &layout,
-                sampler.clone(),
-                config.size,
-                a,
-                b,
-                |s, l| tile.add_sample(s.image(), l.0, 1.0),
-            )
-            .expect("tiles are never empty");
+            if config.stateless {
+                let s = sampler.clone();
+                let n = config.light_samples;
+                for_each_sample_stateless(&scene, s, n, config.size, a, b, |p, l| {
+                    tile.add_sample(p, l.0, 1.0)
+                });
+            } else {
+                for_each_sample(
+                    &scene,
+                    &layout,
+                    sampler.clone(),
+                    config.size,
+                    a,
+                    b,
+                    |s, l| tile.add_sample(s.image(), l.0, 1.0),
+                )
+                .expect("tiles are never empty");
+            }
         },
         progress,
     )

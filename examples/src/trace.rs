@@ -5,7 +5,8 @@
 //! ## Dimension layout
 //!
 //! One camera sample is a [`Sample`] filled by a [`PixelRangeSampler`] (the request-and-fill
-//! layer). Its values, in the order the sampler draws them:
+//! layer), or the same values drawn through the stateless layer ([`Stateless`],
+//! [`for_each_sample_stateless`]). Its values, in the order the sampler draws them:
 //!
 //! | values | what | request |
 //! |---|---|---|
@@ -36,7 +37,7 @@
 //! Russian roulette at vertex k ≥ 3 continues with probability `min(1, max(0.05, max β))`, β
 //! the path throughput, and divides β by it.
 
-use nyquist::sampler::{PixelRangeSampler, Sample, SampleLayout, Sampler};
+use nyquist::sampler::{CameraSample, PixelRangeSampler, Sample, SampleLayout, Sampler};
 
 use crate::geometry::{Ray, V3, cosine_hemisphere};
 use crate::scene::{EPSILON, Scene};
@@ -98,10 +99,76 @@ impl PathLayout {
     }
 }
 
-/// The radiance (RGB) one camera sample carries, for a film of `resolution` pixels.
-pub fn radiance(scene: &Scene, layout: &PathLayout, s: &Sample<'_>, resolution: [u32; 2]) -> V3 {
-    let time = s.time();
-    let mut ray = scene.camera.ray(s.image(), s.lens(), resolution);
+/// Where a path's values come from, vertex by vertex (vertex `k = 0` is the first hit): the
+/// vertex's light points (pairs), its bounce direction sample and its roulette value, drawn in
+/// that order.
+pub trait PathSource {
+    /// The values of vertex `k`.
+    fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32);
+}
+
+/// A [`Sample`] filled through a [`PathLayout`] (the request-and-fill layer).
+#[derive(Debug)]
+pub struct FilledSample<'a, 'b> {
+    /// The filled sample.
+    pub sample: &'a Sample<'b>,
+    /// Its layout.
+    pub layout: &'a PathLayout,
+}
+
+impl PathSource for FilledSample<'_, '_> {
+    fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
+        let d = self.sample.array_2d(self.layout.direction[k]);
+        let u = [
+            d.first().copied().unwrap_or(0.5),
+            d.get(1).copied().unwrap_or(0.5),
+        ];
+        let rr = self.sample.array_1d(self.layout.roulette[k]);
+        let rr = rr.first().copied().unwrap_or(0.0);
+        (self.sample.array_2d(self.layout.light[k]), u, rr)
+    }
+}
+
+/// The stateless layer: after [`Sampler::camera_sample`], each vertex takes its light points
+/// with one [`Sampler::get_array_2d`] (vertex 1: `round_size(N)` points, later vertices
+/// `round_size(1)`), then [`Sampler::get_2d`] for the direction and [`Sampler::get_1d`] for
+/// the roulette, only as far as the path goes. For samplers whose arrays are dimension runs
+/// the values equal the layout's bit for bit.
+#[derive(Debug)]
+pub struct Stateless<'a, S: ?Sized> {
+    /// The sampler, positioned after the camera sample.
+    pub sampler: &'a mut S,
+    /// Light points at vertex 1 (already rounded by `round_size`).
+    pub first_light: u32,
+    /// Scratch for the light points.
+    pub buf: Vec<f32>,
+}
+
+impl<S: Sampler + ?Sized> PathSource for Stateless<'_, S> {
+    fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
+        let n = if k == 0 {
+            self.first_light
+        } else {
+            self.sampler.round_size(1).max(1)
+        };
+        self.buf.resize(2 * n as usize, 0.0);
+        self.sampler.get_array_2d(&mut self.buf);
+        let u = self.sampler.get_2d();
+        let rr = self.sampler.get_1d();
+        (&self.buf, u, rr)
+    }
+}
+
+/// The radiance (RGB) one camera sample carries, for a film of `resolution` pixels, with the
+/// camera values `p_film`, `lens`, `time` and the rest from `src`.
+pub fn radiance(
+    scene: &Scene,
+    camera: &CameraSample,
+    src: &mut impl PathSource,
+    resolution: [u32; 2],
+) -> V3 {
+    let time = camera.time;
+    let mut ray = scene.camera.ray(camera.p_film, camera.lens, resolution);
     let mut beta = V3::new(1.0, 1.0, 1.0);
     let mut l = V3::default();
     let light = &scene.light;
@@ -120,8 +187,8 @@ pub fn radiance(scene: &Scene, layout: &PathLayout, s: &Sample<'_>, resolution: 
         let p = ray.origin + ray.dir * t;
         let n = if n.dot(ray.dir) < 0.0 { n } else { -n };
         let origin = p + n * EPSILON;
+        let (points, u_dir, u_rr) = src.vertex(k);
         // Next-event estimation: the mean over this vertex's light samples.
-        let points = s.array_2d(layout.light[k]);
         let count = points.len() / 2;
         let mut direct = 0.0f32;
         for uv in points.chunks_exact(2) {
@@ -144,28 +211,48 @@ pub fn radiance(scene: &Scene, layout: &PathLayout, s: &Sample<'_>, resolution: 
         }
         if k + 1 >= ROULETTE_FROM {
             let q = beta.max_component().clamp(0.05, 1.0);
-            let u = s
-                .array_1d(layout.roulette[k])
-                .first()
-                .copied()
-                .unwrap_or(0.0);
-            if u >= q {
+            if u_rr >= q {
                 break;
             }
             beta = beta * (1.0 / q);
         }
-        let d = s.array_2d(layout.direction[k]);
-        let u = [
-            d.first().copied().unwrap_or(0.5),
-            d.get(1).copied().unwrap_or(0.5),
-        ];
         ray = Ray {
             origin,
-            dir: cosine_hemisphere(n, u),
+            dir: cosine_hemisphere(n, u_dir),
         };
         beta = beta.hadamard(obj.albedo);
     }
     l
+}
+
+/// Calls `f(p_film, radiance)` for every camera sample of the pixels `start .. end` through the
+/// stateless layer ([`Stateless`]), pixel by pixel in row order, `pixel_samples` each.
+pub fn for_each_sample_stateless<S: Sampler>(
+    scene: &Scene,
+    mut sampler: S,
+    light_samples: u32,
+    resolution: [u32; 2],
+    start: [u32; 2],
+    end: [u32; 2],
+    mut f: impl FnMut([f32; 2], V3),
+) {
+    let first_light = sampler.round_size(light_samples).max(1);
+    let mut buf = Vec::new();
+    for y in start[1]..end[1] {
+        for x in start[0]..end[0] {
+            for i in 0..sampler.pixel_samples([x, y]) {
+                let camera = sampler.camera_sample([x, y], i);
+                let mut src = Stateless {
+                    sampler: &mut sampler,
+                    first_light,
+                    buf: core::mem::take(&mut buf),
+                };
+                let l = radiance(scene, &camera, &mut src, resolution);
+                buf = src.buf;
+                f(camera.p_film, l);
+            }
+        }
+    }
 }
 
 /// Calls `f(sample, radiance)` for every camera sample of the pixels `start .. end` (exclusive),
@@ -186,7 +273,16 @@ pub fn for_each_sample<S: Sampler>(
     let mut buf = vec![0.0f32; layout.len()];
     let mut sample = Sample::new(&layout.layout, &mut buf)?;
     while pixels.next_sample(&mut sample) {
-        let l = radiance(scene, layout, &sample, resolution);
+        let camera = CameraSample {
+            p_film: sample.image(),
+            lens: sample.lens(),
+            time: sample.time(),
+        };
+        let mut src = FilledSample {
+            sample: &sample,
+            layout,
+        };
+        let l = radiance(scene, &camera, &mut src, resolution);
         f(&sample, l);
     }
     Ok(())

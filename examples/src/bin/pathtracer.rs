@@ -95,6 +95,10 @@ struct RenderArgs {
     /// Reconstruction filter spec (box, triangle, gaussian, mitchell, lanczos[:key=value,…]).
     #[arg(long, default_value = "box")]
     filter: String,
+    /// Draw the values through the stateless layer (camera_sample, get_array_2d, get_2d, get_1d,
+    /// only as far as each path goes) instead of SampleLayout and PixelRangeSampler.
+    #[arg(long)]
+    stateless: bool,
     /// Output image (.exr, .png or .pfm).
     #[arg(short, long)]
     output: PathBuf,
@@ -189,6 +193,7 @@ fn main() -> Result<()> {
             config.seed = a.seed;
             config.threads = threads(a.threads);
             config.filter = filter;
+            config.stateless = a.stateless;
             let bar = bar("render", "tiles");
             let out = render(&config, tick(&bar))?;
             bar.finish_and_clear();
