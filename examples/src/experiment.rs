@@ -59,6 +59,8 @@ pub struct Cell {
     pub seconds: f64,
     /// The first run's image.
     pub image: Image,
+    /// At (about) the time of `16 × 1`: camera samples, RMSE, least seconds.
+    pub equal_time: Option<(u32, f64, f64)>,
 }
 
 impl Experiment {
@@ -111,42 +113,103 @@ impl Experiment {
         reference: &Image,
         mut progress: impl FnMut(usize, usize),
     ) -> Result<Vec<Cell>> {
-        let total = self.samplers.len() * SPLITS.len() * self.runs as usize;
+        let total = self.samplers.len() * (2 * SPLITS.len() - 1) * self.runs as usize;
         let mut done = 0;
         let mut cells = Vec::new();
         for name in &self.samplers {
+            let mut row = Vec::new();
             for (camera, light) in SPLITS {
-                let mut sum_sq = 0.0;
-                let mut seconds = f64::INFINITY;
-                let mut first = None;
-                for r in 0..self.runs {
-                    let mut config = RenderConfig::new(&self.scene);
-                    config.size = self.size;
-                    config.spp = camera;
-                    config.light_samples = light;
-                    config.sampler = name.clone();
-                    config.seed = run_seed(self.seed, r);
-                    config.threads = self.threads;
-                    let out = render(&config, |_, _| {})
-                        .with_context(|| format!("{name} {camera}x{light}"))?;
-                    sum_sq += rmse(&out.image, reference).powi(2);
-                    seconds = seconds.min(out.seconds);
-                    first.get_or_insert(out.image);
-                    done += 1;
-                    progress(done, total);
-                }
-                let runs = f64::from(self.runs.max(1));
-                cells.push(Cell {
+                let (rmse, seconds, image) = self.measure(
+                    name,
+                    camera,
+                    light,
+                    reference,
+                    &mut done,
+                    total,
+                    &mut progress,
+                )?;
+                row.push(Cell {
                     sampler: name.clone(),
                     camera,
                     light,
-                    rmse: (sum_sq / runs).sqrt(),
+                    rmse,
                     seconds,
-                    image: first.expect("at least one run"),
+                    image,
+                    equal_time: None,
                 });
             }
+            // Equal time, measured: each split's camera samples scaled by the power of two
+            // (of four for the square-only samplers) nearest to t(16 × 1) / t(split).
+            let t_ref = row
+                .iter()
+                .find(|c| (c.camera, c.light) == (16, 1))
+                .map_or(0.0, |c| c.seconds);
+            for c in &mut row {
+                let ratio = (t_ref / c.seconds).max(1.0);
+                let step: f64 = if matches!(name.as_str(), "stratified" | "uniform") {
+                    4.0
+                } else {
+                    2.0
+                };
+                let k = step.powf((ratio.ln() / step.ln()).round()) as u32;
+                let camera = c.camera * k.max(1);
+                let (rmse, seconds) = if (c.camera, c.light) == (16, 1) {
+                    done += self.runs as usize;
+                    progress(done, total);
+                    (c.rmse, c.seconds)
+                } else {
+                    let m = &mut progress;
+                    let (r, t, _) =
+                        self.measure(name, camera, c.light, reference, &mut done, total, m)?;
+                    (r, t)
+                };
+                c.equal_time = Some((camera, rmse, seconds));
+            }
+            cells.extend(row);
         }
         Ok(cells)
+    }
+}
+
+impl Experiment {
+    /// `runs` renders of `camera × light` with `name`: `√(mean RMSE²)`, least seconds, first
+    /// image.
+    #[allow(clippy::too_many_arguments)]
+    fn measure(
+        &self,
+        name: &str,
+        camera: u32,
+        light: u32,
+        reference: &Image,
+        done: &mut usize,
+        total: usize,
+        progress: &mut impl FnMut(usize, usize),
+    ) -> Result<(f64, f64, Image)> {
+        let mut sum_sq = 0.0;
+        let mut seconds = f64::INFINITY;
+        let mut first = None;
+        for r in 0..self.runs {
+            let mut config = RenderConfig::new(&self.scene);
+            config.size = self.size;
+            config.spp = camera;
+            config.light_samples = light;
+            config.sampler = name.to_owned();
+            config.seed = run_seed(self.seed, r);
+            config.threads = self.threads;
+            let out =
+                render(&config, |_, _| {}).with_context(|| format!("{name} {camera}x{light}"))?;
+            sum_sq += rmse(&out.image, reference).powi(2);
+            seconds = seconds.min(out.seconds);
+            first.get_or_insert(out.image);
+            *done += 1;
+            progress(*done, total);
+        }
+        let runs = f64::from(self.runs.max(1));
+        Ok((
+            (sum_sq / runs).sqrt(),
+            seconds,
+            first.expect("at least one run"),
+        ))
     }
 }
 
@@ -175,6 +238,25 @@ pub fn markdown(cells: &[Cell]) -> String {
         }
         for c in row {
             line += &format!(" {:.1} |", c.seconds * 1e3);
+        }
+        s += &line;
+        s.push('\n');
+    }
+    s
+}
+
+/// The measured equal-time table: per sampler and split, the camera samples that take about
+/// the time of `16 × 1`, their RMSE and milliseconds.
+pub fn markdown_equal_time(cells: &[Cell]) -> String {
+    let mut s = String::from("| sampler | 1×16 scaled | 16×1 | 4×4 scaled |\n|---|---|---|---|\n");
+    for row in cells.chunks(SPLITS.len()) {
+        let mut line = format!("| {} |", row[0].sampler);
+        for c in row {
+            if let Some((camera, rmse, t)) = c.equal_time {
+                line += &format!(" {camera}×{}: {rmse:.4} ({:.0} ms) |", c.light, t * 1e3);
+            } else {
+                line += " - |";
+            }
         }
         s += &line;
         s.push('\n');

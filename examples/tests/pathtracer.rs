@@ -189,3 +189,51 @@ fn the_stateless_layer_renders_what_the_layout_renders() {
         );
     }
 }
+
+/// The experiment prints both tables, writes the contact sheet, caches its reference under
+/// `$XDG_CACHE_HOME/nyquist` and, run again, reads it back (same numbers).
+#[test]
+fn the_experiment_prints_its_tables_and_caches_the_reference() {
+    let dir = temp_dir("experiment");
+    let run = || {
+        let out = Command::new(env!("CARGO_BIN_EXE_pathtracer"))
+            .args([
+                "experiment",
+                "--size",
+                "12x8",
+                "--runs",
+                "2",
+                "--reference-spp",
+                "16",
+            ])
+            .args(["--samplers", "random,sobol", "--threads", "2", "--sheet"])
+            .arg(dir.join("sheet.png"))
+            .env("XDG_CACHE_HOME", &dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let first = run();
+    for row in ["| random |", "| sobol |", "16×1: "] {
+        assert!(first.contains(row), "{first}");
+    }
+    let cached: Vec<_> = std::fs::read_dir(dir.join("nyquist")).unwrap().collect();
+    assert_eq!(cached.len(), 1);
+    let sheet = std::fs::read(dir.join("sheet.png")).unwrap();
+    assert_eq!(&sheet[1..4], b"PNG");
+    // The RMSE columns (not the times) are the same when the reference comes from the cache.
+    let rmse = |s: &str| -> Vec<String> {
+        s.lines()
+            .filter(|l| l.starts_with("| random") || l.starts_with("| sobol"))
+            .take(2)
+            .map(|l| l.split('|').take(5).collect::<Vec<_>>().join("|"))
+            .collect()
+    };
+    assert_eq!(rmse(&first), rmse(&run()));
+    let _ = std::fs::remove_dir_all(dir);
+}

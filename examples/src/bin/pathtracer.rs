@@ -9,7 +9,7 @@ use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use nyquist::filter::FilterKind;
 use nyquist_examples::experiment::{
-    Experiment, contact_sheet, markdown, pixel_reference, pixel_study,
+    Experiment, contact_sheet, markdown, markdown_equal_time, pixel_reference, pixel_study,
 };
 use nyquist_examples::{RenderConfig, render};
 use nyquist_film::write_image_file;
@@ -229,6 +229,8 @@ fn main() -> Result<()> {
             let cells = e.run(&reference, tick(&bar2))?;
             bar2.finish_and_clear();
             print!("{}", markdown(&cells));
+            println!("\nMeasured at equal time (camera samples scaled to the time of 16×1):\n");
+            print!("{}", markdown_equal_time(&cells));
             if let Some(p) = a.sheet {
                 write_image_file(&p, &contact_sheet(&cells, &reference))?;
             }
