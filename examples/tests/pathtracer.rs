@@ -6,7 +6,7 @@ use std::process::Command;
 
 use nyquist::sampler::NAMES;
 use nyquist_examples::scene::Scene;
-use nyquist_examples::trace::{PathLayout, for_each_sample};
+use nyquist_examples::trace::{PathLayout, for_each_sample, for_each_sample_stateless};
 use nyquist_examples::{RenderConfig, build_sampler, render};
 use nyquist_film::output::{exr::read_exr, pfm::read_pfm};
 
@@ -94,18 +94,26 @@ fn mean_se(xs: &[f64]) -> (f64, f64) {
 }
 
 /// The mean radiance (channel average) over the pixels `A … B` of a 32 × 32 `cornell` film with
-/// `spp` camera samples × `light` light samples from `sampler` at `seed`.
-fn block_mean(sampler: &str, spp: u32, light: u32, seed: u64) -> f64 {
+/// `spp` camera samples × `light` light samples from `sampler` at `seed`, through the
+/// request-and-fill layer or the stateless one.
+fn block_mean(sampler: &str, spp: u32, light: u32, seed: u64, stateless: bool) -> f64 {
     const SIZE: [u32; 2] = [32, 32];
     let scene = Scene::cornell();
     let s = build_sampler(sampler, SIZE, spp, seed).unwrap();
     let layout = PathLayout::new(&s, light).unwrap();
     let (mut sum, mut n) = (0.0f64, 0u32);
-    for_each_sample(&scene, &layout, s, SIZE, [6, 10], [22, 26], |_, l| {
-        sum += f64::from(l.0.iter().sum::<f32>()) / 3.0;
-        n += 1;
-    })
-    .unwrap();
+    if stateless {
+        for_each_sample_stateless(&scene, s, light, SIZE, [6, 10], [22, 26], |_, l| {
+            sum += f64::from(l.0.iter().sum::<f32>()) / 3.0;
+            n += 1;
+        });
+    } else {
+        for_each_sample(&scene, &layout, s, SIZE, [6, 10], [22, 26], |_, l| {
+            sum += f64::from(l.0.iter().sum::<f32>()) / 3.0;
+            n += 1;
+        })
+        .unwrap();
+    }
     sum / f64::from(n)
 }
 
@@ -114,27 +122,29 @@ fn block_mean(sampler: &str, spp: u32, light: u32, seed: u64) -> f64 {
 /// of the independent `random` sampler at 16 spp. The test fails when
 /// `|mean − reference| > 4 √(se² + se_ref²)`; with means of 32 and 256 independent renders
 /// (close to normal), each comparison raises a false alarm with probability about 6·10⁻⁵,
-/// under 10⁻³ over the 11 samplers. The seeds are fixed, so the outcome is too.
+/// about 1.4·10⁻³ over the 11 samplers × 2 layers (request-and-fill and stateless). The seeds are fixed, so the outcome is too.
 ///
 /// `uniform` (centred strata: the same image positions for every seed) is not a randomised
 /// estimator and is left out, as are `halton-plain` and `sobol-plain`.
 #[test]
 fn every_randomised_sampler_is_unbiased() {
     let reference: Vec<f64> = (0..256)
-        .map(|r| block_mean("random", 16, 1, 1_000_003 + r))
+        .map(|r| block_mean("random", 16, 1, 1_000_003 + r, false))
         .collect();
     let (m_ref, se_ref) = mean_se(&reference);
     let mut failures = Vec::new();
     for name in NAMES.iter().filter(|n| **n != "uniform") {
-        let xs: Vec<f64> = (0..32)
-            .map(|r| block_mean(name, 4, 2, 1 + 7919 * r))
-            .collect();
-        let (m, se) = mean_se(&xs);
-        let z = (m - m_ref) / (se * se + se_ref * se_ref).sqrt();
-        if z.abs() > 4.0 {
-            failures.push(format!(
-                "{name}: {m:.5} ± {se:.5} vs {m_ref:.5} ± {se_ref:.5}, z = {z:.2}"
-            ));
+        for stateless in [false, true] {
+            let xs: Vec<f64> = (0..32)
+                .map(|r| block_mean(name, 4, 2, 1 + 7919 * r, stateless))
+                .collect();
+            let (m, se) = mean_se(&xs);
+            let z = (m - m_ref) / (se * se + se_ref * se_ref).sqrt();
+            if z.abs() > 4.0 {
+                failures.push(format!(
+                    "{name} (stateless: {stateless}): {m:.5} ± {se:.5} vs {m_ref:.5} ± {se_ref:.5}, z = {z:.2}"
+                ));
+            }
         }
     }
     assert!(failures.is_empty(), "{failures:#?}");
@@ -145,11 +155,11 @@ fn every_randomised_sampler_is_unbiased() {
 #[test]
 fn unscrambled_halton_converges_to_the_reference() {
     let reference: Vec<f64> = (0..256)
-        .map(|r| block_mean("random", 16, 1, 2_000_003 + r))
+        .map(|r| block_mean("random", 16, 1, 2_000_003 + r, false))
         .collect();
     let (m_ref, se_ref) = mean_se(&reference);
-    let e4 = (block_mean("halton-plain", 4, 1, 0) - m_ref).abs();
-    let e256 = (block_mean("halton-plain", 256, 1, 0) - m_ref).abs();
+    let e4 = (block_mean("halton-plain", 4, 1, 0, false) - m_ref).abs();
+    let e256 = (block_mean("halton-plain", 256, 1, 0, false) - m_ref).abs();
     assert!(
         e256 < 4.0 * se_ref + 0.5 * e4,
         "{e4} {e256} (se_ref {se_ref})"
