@@ -508,6 +508,12 @@ pub struct ConvergeArgs {
     /// Print JSON (slopes and every RMSE) instead of the Markdown table.
     #[arg(long)]
     pub json: bool,
+    /// Instead of the 2-D integrands, Genz's six test families in D dimensions (2 … 64; e.g.
+    /// 4, 16, 64), with fixed parameters and exact integrals; the samplers also take
+    /// halton-plain and sobol-plain (unscrambled). Prints a table of slopes and relative RMSE;
+    /// --integrands, --plot and --json do not apply.
+    #[arg(long, value_name = "D", value_parser = clap::value_parser!(u32).range(2..=64))]
+    pub dims: Option<u32>,
 }
 
 /// Checks the flags and turns them into a study.
@@ -584,6 +590,9 @@ fn study_of(args: &ConvergeArgs) -> Result<Study> {
 
 /// Runs `nyquist converge`.
 pub fn run(args: &ConvergeArgs) -> Result<()> {
+    if let Some(dims) = args.dims {
+        return crate::genz::run(args, dims);
+    }
     if let Some(p) = &args.plot {
         crate::plot::kind_of(p, "--plot")?;
     }

@@ -116,3 +116,42 @@ fn bad_flags_are_one_line_exit_2_and_write_nothing() {
     assert_one_line_error(&o, "does not exist");
     assert!(files(&dir).is_empty());
 }
+
+/// `--dims D` runs Genz's six families instead: one row per sampler, a slope and an error per
+/// family; the flags of the 2-D study's outputs are refused, and D outside 2 … 64 too.
+#[test]
+fn dims_study_has_a_row_per_sampler_and_a_column_per_genz_family() {
+    let o = nyquist(&[
+        "converge",
+        "--dims",
+        "6",
+        "--samplers",
+        "random,owen-sobol,halton-plain",
+        "--min-spp",
+        "16",
+        "--max-spp",
+        "256",
+        "--runs",
+        "8",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = stdout(&o);
+    let table: Vec<&str> = s.lines().filter(|l| l.starts_with('|')).collect();
+    assert_eq!(table.len(), 5, "{s}");
+    assert_eq!(
+        table[0],
+        "| sampler | oscillatory | product-peak | corner-peak | gaussian | continuous | discontinuous |"
+    );
+    assert!(table[2].starts_with("| random | -0."), "{s}");
+    assert!(s.contains("6 dimensions, 8 runs"), "{s}");
+    for args in [
+        &["converge", "--dims", "4", "--json"][..],
+        &["converge", "--dims", "65"][..],
+        &["converge", "--dims", "1"][..],
+    ] {
+        let o = nyquist(args);
+        assert!(!o.status.success(), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(err.contains("--dims") || err.contains("--json"), "{err}");
+    }
+}

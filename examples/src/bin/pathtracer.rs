@@ -1,0 +1,289 @@
+//! `pathtracer`: renders the analytic scenes with any nyquist sampler, and runs the camera ×
+//! light samples experiment. See `docs/path-tracer.md`.
+
+use std::io::IsTerminal;
+use std::path::PathBuf;
+
+use anyhow::{Result, anyhow, bail};
+use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use nyquist::filter::FilterKind;
+use nyquist_examples::experiment::{
+    Experiment, contact_sheet, markdown, markdown_equal_time, pixel_reference, pixel_study,
+};
+use nyquist_examples::{RenderConfig, render};
+use nyquist_film::write_image_file;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "pathtracer",
+    about = "A path tracer over nyquist's samplers and film"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Renders a scene to EXR, PNG or PFM (by the output's extension).
+    ///
+    /// Example: pathtracer render --scene cornell --sampler pmj02 --spp 64 --light-samples 4 -o c.exr
+    Render(RenderArgs),
+    /// 1 × 16, 16 × 1 and 4 × 4 camera × light samples per pixel for each sampler, against a
+    /// cached converged reference: prints a Markdown table, optionally writes a contact sheet.
+    Experiment(ExperimentArgs),
+    /// The path tracer's estimate of one pixel as an integrand: RMSE over seeds against N
+    /// camera samples (one light sample each) for each sampler, and the slope.
+    ///
+    /// Example: pathtracer converge --pixel 100,180 --samplers random,sobol,owen-sobol
+    Converge(ConvergeArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct ConvergeArgs {
+    /// Scene.
+    #[arg(long, default_value = "cornell")]
+    scene: String,
+    /// Image size WxH.
+    #[arg(long, default_value = "256x256", value_parser = parse_size)]
+    size: [u32; 2],
+    /// The pixel X,Y.
+    #[arg(long, default_value = "100,180", value_parser = parse_pixel)]
+    pixel: [u32; 2],
+    /// Samplers, comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "random,stratified,halton-plain,halton,sobol-plain,sobol,owen-sobol,zsobol,pmj02,zero-two"
+    )]
+    samplers: Vec<String>,
+    /// Smallest N (a power of four: N = 4, 16, 64, … so that stratified takes every N).
+    #[arg(long, default_value_t = 4)]
+    min_spp: u32,
+    /// Largest N (a power of four).
+    #[arg(long, default_value_t = 4096)]
+    max_spp: u32,
+    /// Seeds per N.
+    #[arg(long, default_value_t = 32)]
+    runs: u32,
+}
+
+#[derive(clap::Args, Debug)]
+struct RenderArgs {
+    /// Scene: cornell or dof.
+    #[arg(long, default_value = "cornell")]
+    scene: String,
+    /// Sampler name (nyquist's names, plus halton-plain and sobol-plain).
+    #[arg(long, default_value = "owen-sobol")]
+    sampler: String,
+    /// Camera samples per pixel.
+    #[arg(long, default_value_t = 16)]
+    spp: u32,
+    /// Light samples per camera sample at the first vertex.
+    #[arg(long, default_value_t = 1)]
+    light_samples: u32,
+    /// Image size WxH.
+    #[arg(long, default_value = "256x256", value_parser = parse_size)]
+    size: [u32; 2],
+    /// Sampler seed (0 leaves halton and sobol unscrambled).
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Reconstruction filter spec (box, triangle, gaussian, mitchell, lanczos[:key=value,…]).
+    #[arg(long, default_value = "box")]
+    filter: String,
+    /// Draw the values through the stateless layer (camera_sample, get_array_2d, get_2d, get_1d,
+    /// only as far as each path goes) instead of SampleLayout and PixelRangeSampler.
+    #[arg(long)]
+    stateless: bool,
+    /// Output image (.exr, .png or .pfm).
+    #[arg(short, long)]
+    output: PathBuf,
+}
+
+#[derive(clap::Args, Debug)]
+struct ExperimentArgs {
+    /// Scene.
+    #[arg(long, default_value = "cornell")]
+    scene: String,
+    /// Samplers, comma-separated.
+    #[arg(
+        long,
+        value_delimiter = ',',
+        default_value = "random,stratified,halton-plain,halton,sobol,owen-sobol,zsobol,pmj02"
+    )]
+    samplers: Vec<String>,
+    /// Image size WxH.
+    #[arg(long, default_value = "128x128", value_parser = parse_size)]
+    size: [u32; 2],
+    /// Renders (seeds) per configuration.
+    #[arg(long, default_value_t = 4)]
+    runs: u32,
+    /// Base seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Camera samples per pixel of the reference (× 4 light samples).
+    #[arg(long, default_value_t = 1024)]
+    reference_spp: u32,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Contact sheet PNG: a row per sampler, columns 1×16, 16×1, 4×4, reference.
+    #[arg(long)]
+    sheet: Option<PathBuf>,
+}
+
+fn parse_size(s: &str) -> Result<[u32; 2], String> {
+    let (w, h) = s.split_once('x').ok_or("expected WxH")?;
+    let p = |v: &str| v.trim().parse::<u32>().map_err(|e| format!("{v:?}: {e}"));
+    let size = [p(w)?, p(h)?];
+    if size.contains(&0) {
+        return Err("sizes must be positive".into());
+    }
+    Ok(size)
+}
+
+fn parse_pixel(s: &str) -> Result<[u32; 2], String> {
+    let (x, y) = s.split_once(',').ok_or("expected X,Y")?;
+    let p = |v: &str| v.trim().parse::<u32>().map_err(|e| format!("{v:?}: {e}"));
+    Ok([p(x)?, p(y)?])
+}
+
+fn threads(t: Option<usize>) -> usize {
+    t.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+        .max(1)
+}
+
+/// A progress bar on stderr, drawn only when stderr is a terminal.
+fn bar(message: &str, unit: &str) -> ProgressBar {
+    let target = if std::io::stderr().is_terminal() {
+        ProgressDrawTarget::stderr()
+    } else {
+        ProgressDrawTarget::hidden()
+    };
+    let bar = ProgressBar::with_draw_target(None, target);
+    let style = ProgressStyle::with_template(&format!(
+        "{{msg}} [{{elapsed_precise}}] {{wide_bar}} {{pos}}/{{len}} {unit} (eta {{eta}})"
+    ))
+    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style);
+    bar.set_message(message.to_owned());
+    bar
+}
+
+fn tick(bar: &ProgressBar) -> impl FnMut(usize, usize) + '_ {
+    |done, total| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    }
+}
+
+fn main() -> Result<()> {
+    match Cli::parse().command {
+        Command::Render(a) => {
+            let filter = FilterKind::parse(&a.filter).map_err(|e| anyhow!("--filter: {e}"))?;
+            let mut config = RenderConfig::new(&a.scene);
+            config.size = a.size;
+            config.spp = a.spp;
+            config.light_samples = a.light_samples;
+            config.sampler = a.sampler;
+            config.seed = a.seed;
+            config.threads = threads(a.threads);
+            config.filter = filter;
+            config.stateless = a.stateless;
+            let bar = bar("render", "tiles");
+            let out = render(&config, tick(&bar))?;
+            bar.finish_and_clear();
+            write_image_file(&a.output, &out.image)?;
+            let per_thread = out.samples as f64 / out.seconds / config.threads as f64;
+            eprintln!(
+                "{} camera samples in {:.3} s on {} threads: {:.0} samples/s, {:.0} per thread",
+                out.samples,
+                out.seconds,
+                config.threads,
+                out.samples as f64 / out.seconds,
+                per_thread
+            );
+        }
+        Command::Converge(a) => converge(a)?,
+        Command::Experiment(a) => {
+            if a.runs == 0 {
+                bail!("--runs must be positive");
+            }
+            let e = Experiment {
+                scene: a.scene,
+                size: a.size,
+                samplers: a.samplers,
+                runs: a.runs,
+                seed: a.seed,
+                threads: threads(a.threads),
+                reference_spp: a.reference_spp,
+            };
+            let bar1 = bar("reference", "tiles");
+            let reference = e.reference(tick(&bar1))?;
+            bar1.finish_and_clear();
+            let bar2 = bar("experiment", "renders");
+            let cells = e.run(&reference, tick(&bar2))?;
+            bar2.finish_and_clear();
+            print!("{}", markdown(&cells));
+            println!("\nMeasured at equal time (camera samples scaled to the time of 16×1):\n");
+            print!("{}", markdown_equal_time(&cells));
+            if let Some(p) = a.sheet {
+                write_image_file(&p, &contact_sheet(&cells, &reference))?;
+            }
+        }
+    }
+    Ok(())
+}
+
+fn converge(a: ConvergeArgs) -> Result<()> {
+    let pixel = a.pixel;
+    if pixel[0] >= a.size[0] || pixel[1] >= a.size[1] {
+        bail!(
+            "--pixel {},{}: outside the {}x{} image",
+            pixel[0],
+            pixel[1],
+            a.size[0],
+            a.size[1]
+        );
+    }
+    let power_of_4 = |n: u32| n.is_power_of_two() && n.trailing_zeros().is_multiple_of(2);
+    if !power_of_4(a.min_spp) || !power_of_4(a.max_spp) || a.min_spp >= a.max_spp {
+        bail!("--min-spp and --max-spp: powers of four (squares, for stratified), min < max");
+    }
+    let counts: Vec<u32> = (a.min_spp.trailing_zeros()..=a.max_spp.trailing_zeros())
+        .step_by(2)
+        .map(|k| 1 << k)
+        .collect();
+    let (reference, se) = pixel_reference(&a.scene, a.size, pixel)?;
+    let rows = pixel_study(
+        &a.scene,
+        a.size,
+        pixel,
+        &a.samplers,
+        &counts,
+        a.runs,
+        reference,
+    )?;
+    println!(
+        "Pixel ({}, {}) of {} at {}x{}: reference {reference:.6} ± {se:.1e}; RMSE over {} seeds.\n",
+        pixel[0], pixel[1], a.scene, a.size[0], a.size[1], a.runs
+    );
+    print!("| sampler | slope |");
+    for n in &counts {
+        print!(" N={n} |");
+    }
+    println!("\n|---|---|{}", "---|".repeat(counts.len()));
+    for (name, rmse, slope) in rows {
+        let slope = slope.map_or_else(|| "-".to_owned(), |s| format!("{s:.2}"));
+        print!("| {name} | {slope} |");
+        for e in rmse {
+            print!(" {e:.1e} |");
+        }
+        println!();
+    }
+    Ok(())
+}

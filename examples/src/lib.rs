@@ -1,0 +1,172 @@
+//! # nyquist-examples
+//!
+//! A client of `nyquist` and `nyquist-film` that uses them as a renderer does: an analytic path
+//! tracer ([`scene`], [`trace`]) whose every random decision comes from a named sampler through
+//! the request-and-fill layer (`SampleLayout`, `PixelRangeSampler`, `get_array_2d` for the light
+//! samples), films and filters from `nyquist-film`, tiles through `render_tiles`; and the
+//! experiment of [`experiment`]: N camera samples × M light samples at equal sample count.
+//!
+//! The binary is `pathtracer`; see `docs/path-tracer.md`.
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod experiment;
+pub mod geometry;
+pub mod scene;
+pub mod trace;
+
+use std::time::Instant;
+
+use anyhow::{Context, Result, anyhow};
+use nyquist::filter::FilterKind;
+use nyquist::sampler::NamedSampler;
+use nyquist_film::{Film, FilmConfig, Image, render_tiles};
+
+use crate::scene::Scene;
+use crate::trace::{PathLayout, for_each_sample, for_each_sample_stateless};
+
+/// Builds the sampler called `name`: any of [`nyquist::sampler::NAMES`], or `halton-plain` and
+/// `sobol-plain` for the unscrambled Halton and Sobol samplers (seed 0, whatever `seed` is).
+///
+/// # Errors
+/// An unknown name, or sizes the sampler rejects (e.g. `stratified` with a non-square `spp`).
+pub fn build_sampler(name: &str, size: [u32; 2], spp: u32, seed: u64) -> Result<NamedSampler> {
+    let (base, seed) = match name.strip_suffix("-plain") {
+        Some(b @ ("halton" | "sobol")) => (b, 0),
+        _ => (name, seed),
+    };
+    NamedSampler::new(base, size, spp, seed)
+        .map_err(|e| anyhow!("sampler {name:?} with {spp} spp: {e}"))
+}
+
+/// What to render.
+#[derive(Clone, Debug)]
+pub struct RenderConfig {
+    /// Scene name (see [`scene::SCENE_NAMES`]).
+    pub scene: String,
+    /// Image size in pixels.
+    pub size: [u32; 2],
+    /// Camera samples per pixel.
+    pub spp: u32,
+    /// Light samples at the first vertex per camera sample.
+    pub light_samples: u32,
+    /// Sampler name (see [`build_sampler`]).
+    pub sampler: String,
+    /// Sampler seed.
+    pub seed: u64,
+    /// Worker threads.
+    pub threads: usize,
+    /// Tile side in pixels.
+    pub tile_size: u32,
+    /// Reconstruction filter.
+    pub filter: FilterKind,
+    /// Draw the values through the stateless layer (`camera_sample`, `get_array_2d`,
+    /// `get_2d`, `get_1d`) instead of `SampleLayout` and `PixelRangeSampler`.
+    pub stateless: bool,
+}
+
+impl RenderConfig {
+    /// The defaults: `cornell`, 256 × 256, 16 spp, 1 light sample, `owen-sobol`, seed 1, one
+    /// thread, 16-pixel tiles, the box filter (each pixel the mean of its own samples).
+    pub fn new(scene: &str) -> RenderConfig {
+        RenderConfig {
+            scene: scene.into(),
+            size: [256, 256],
+            spp: 16,
+            light_samples: 1,
+            sampler: "owen-sobol".into(),
+            seed: 1,
+            threads: 1,
+            tile_size: 16,
+            filter: FilterKind::parse("box").expect("the box filter parses"),
+            stateless: false,
+        }
+    }
+}
+
+/// A finished render.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    /// The resolved image (linear RGB).
+    pub image: Image,
+    /// Camera samples traced.
+    pub samples: u64,
+    /// Wall-clock seconds of the tile rendering (not the film's resolve).
+    pub seconds: f64,
+}
+
+/// Renders `config`; `progress(done, total)` after each tile.
+///
+/// # Errors
+/// Unknown scene or sampler, sizes the sampler or the film rejects.
+pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Result<Rendered> {
+    let scene = Scene::by_name(&config.scene).ok_or_else(|| {
+        anyhow!(
+            "unknown scene {:?} (one of {:?})",
+            config.scene,
+            scene::SCENE_NAMES
+        )
+    })?;
+    let sampler = build_sampler(&config.sampler, config.size, config.spp, config.seed)?;
+    let layout = PathLayout::new(&sampler, config.light_samples)
+        .map_err(|e| anyhow!("light samples: {e}"))?;
+    let mut film = Film::new(
+        FilmConfig::new(config.size[0], config.size[1]),
+        config.filter.as_dyn(),
+    )
+    .context("film")?;
+    let start = Instant::now();
+    render_tiles(
+        &mut film,
+        config.tile_size,
+        config.threads,
+        |tile, ctx| {
+            let Some((a, b)) = ctx.pixel_range() else {
+                return;
+            };
+            if config.stateless {
+                let s = sampler.clone();
+                let n = config.light_samples;
+                for_each_sample_stateless(&scene, s, n, config.size, a, b, |p, l| {
+                    tile.add_sample(p, l.0, 1.0)
+                });
+            } else {
+                for_each_sample(
+                    &scene,
+                    &layout,
+                    sampler.clone(),
+                    config.size,
+                    a,
+                    b,
+                    |s, l| tile.add_sample(s.image(), l.0, 1.0),
+                )
+                .expect("tiles are never empty");
+            }
+        },
+        progress,
+    )
+    .context("render")?;
+    let seconds = start.elapsed().as_secs_f64();
+    let samples = film.stats().samples + film.stats().rejected;
+    Ok(Rendered {
+        image: film.image().0,
+        samples,
+        seconds,
+    })
+}
+
+/// Root-mean-square difference of two images of the same size, over all channels.
+///
+/// # Panics
+/// If the sizes differ.
+pub fn rmse(a: &Image, b: &Image) -> f64 {
+    assert_eq!((a.width(), a.height()), (b.width(), b.height()));
+    let n = a.data().len().max(1) as f64;
+    let s: f64 = a
+        .data()
+        .iter()
+        .zip(b.data())
+        .map(|(x, y)| (f64::from(*x) - f64::from(*y)).powi(2))
+        .sum();
+    (s / n).sqrt()
+}

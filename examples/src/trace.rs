@@ -1,0 +1,289 @@
+//! The path tracer: next-event estimation on the square light, cosine-weighted diffuse bounces,
+//! Russian roulette from the third vertex, every value drawn from the sampler through a
+//! [`SampleLayout`].
+//!
+//! ## Dimension layout
+//!
+//! One camera sample is a [`Sample`] filled by a [`PixelRangeSampler`] (the request-and-fill
+//! layer), or the same values drawn through the stateless layer ([`Stateless`],
+//! [`for_each_sample_stateless`]). Its values, in the order the sampler draws them:
+//!
+//! | values | what | request |
+//! |---|---|---|
+//! | 2 (dims 0–1) | image sample: film position inside the pixel | camera sample |
+//! | 1 (dim 2) | shutter time `[0, 1)` | camera sample |
+//! | 2 (dims 3–4) | lens position (concentric disk) | camera sample |
+//! | 2N | vertex 1: N light samples (points on the light) | `add_2d(N)` |
+//! | 2 | vertex 1: cosine-weighted bounce direction | `add_2d(1)` |
+//! | 1 | vertex 1: Russian roulette (unused before vertex 3) | `add_1d(1)` |
+//! | 2 + 2 + 1 | vertex k = 2 … 8: one light sample, direction, roulette | `add_2d(1)`, `add_2d(1)`, `add_1d(1)` |
+//!
+//! Vertex 1 is the first surface the camera ray hits. For samplers whose arrays are runs of
+//! dimensions ([`Sampler::arrays_are_dimension_runs`]: all but the stratified and padded ones),
+//! the values above are dimensions 0, 1, 2, … in order: with N light samples, vertex 1's light
+//! samples are dimensions 5 … 4 + 2N and vertex k ≥ 2 starts at dimension 8 + 2N + 5(k − 2).
+//! Samplers that stratify their arrays spend one array dimension (1D) or pair (2D) per request.
+//! Every value is requested whether the path uses it or not, so the layout is fixed: a path
+//! has at most [`MAX_VERTICES`] vertices (the last one's direction and roulette go unused),
+//! `5 + 2N + 5·8 − 2` values per camera sample.
+//!
+//! ## Estimator
+//!
+//! Next-event estimation without multiple importance sampling: at each vertex the light is
+//! sampled uniformly by area (the mean over the vertex's light samples), and the light's own
+//! emission counts only when the camera ray sees it directly. After a bounce, a ray that hits
+//! the light ends the path (its contribution was the light sample's). Every surface is
+//! Lambertian, so this is unbiased for the scene truncated at [`MAX_VERTICES`] vertices.
+//! Russian roulette at vertex k ≥ 3 continues with probability `min(1, max(0.05, max β))`, β
+//! the path throughput, and divides β by it.
+
+use nyquist::sampler::{CameraSample, PixelRangeSampler, Sample, SampleLayout, Sampler};
+
+use crate::geometry::{Ray, V3, cosine_hemisphere};
+use crate::scene::{EPSILON, Scene};
+
+/// The most surface vertices a path visits.
+pub const MAX_VERTICES: usize = 8;
+
+/// Arrays per camera sample: light samples, direction and roulette for each vertex.
+pub const ARRAYS: usize = 3 * MAX_VERTICES;
+
+/// Russian roulette applies from this vertex on (1-based).
+pub const ROULETTE_FROM: usize = 3;
+
+/// The sample layout of a path: the handles of each vertex's arrays.
+#[derive(Clone, Debug)]
+pub struct PathLayout {
+    /// The layout the sampler fills.
+    pub layout: SampleLayout<ARRAYS>,
+    light: [usize; MAX_VERTICES],
+    direction: [usize; MAX_VERTICES],
+    roulette: [usize; MAX_VERTICES],
+}
+
+impl PathLayout {
+    /// The layout for `light_samples` light samples at the first vertex (rounded by the
+    /// sampler's `round_size`; one at every other vertex).
+    ///
+    /// # Errors
+    /// If the sampler rejects the sizes (`light_samples == 0`).
+    pub fn new<S: Sampler + ?Sized>(
+        sampler: &S,
+        light_samples: u32,
+    ) -> Result<PathLayout, nyquist::Error> {
+        let mut layout = SampleLayout::new();
+        let mut light = [0; MAX_VERTICES];
+        let mut direction = [0; MAX_VERTICES];
+        let mut roulette = [0; MAX_VERTICES];
+        for k in 0..MAX_VERTICES {
+            light[k] = layout.add_2d(sampler, if k == 0 { light_samples } else { 1 })?;
+            direction[k] = layout.add_2d(sampler, 1)?;
+            roulette[k] = layout.add_1d(sampler, 1)?;
+        }
+        Ok(PathLayout {
+            layout,
+            light,
+            direction,
+            roulette,
+        })
+    }
+
+    /// Floats per camera sample.
+    pub fn len(&self) -> usize {
+        self.layout.len()
+    }
+
+    /// Never empty (the camera sample alone takes 5 floats).
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+}
+
+/// Where a path's values come from, vertex by vertex (vertex `k = 0` is the first hit): the
+/// vertex's light points (pairs), its bounce direction sample and its roulette value, drawn in
+/// that order.
+pub trait PathSource {
+    /// The values of vertex `k`.
+    fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32);
+}
+
+/// A [`Sample`] filled through a [`PathLayout`] (the request-and-fill layer).
+#[derive(Debug)]
+pub struct FilledSample<'a, 'b> {
+    /// The filled sample.
+    pub sample: &'a Sample<'b>,
+    /// Its layout.
+    pub layout: &'a PathLayout,
+}
+
+impl PathSource for FilledSample<'_, '_> {
+    fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
+        let d = self.sample.array_2d(self.layout.direction[k]);
+        let u = [
+            d.first().copied().unwrap_or(0.5),
+            d.get(1).copied().unwrap_or(0.5),
+        ];
+        let rr = self.sample.array_1d(self.layout.roulette[k]);
+        let rr = rr.first().copied().unwrap_or(0.0);
+        (self.sample.array_2d(self.layout.light[k]), u, rr)
+    }
+}
+
+/// The stateless layer: after [`Sampler::camera_sample`], each vertex takes its light points
+/// with one [`Sampler::get_array_2d`] (vertex 1: `round_size(N)` points, later vertices
+/// `round_size(1)`), then [`Sampler::get_2d`] for the direction and [`Sampler::get_1d`] for
+/// the roulette, only as far as the path goes. For samplers whose arrays are dimension runs
+/// the values equal the layout's bit for bit.
+#[derive(Debug)]
+pub struct Stateless<'a, S: ?Sized> {
+    /// The sampler, positioned after the camera sample.
+    pub sampler: &'a mut S,
+    /// Light points at vertex 1 (already rounded by `round_size`).
+    pub first_light: u32,
+    /// Scratch for the light points.
+    pub buf: Vec<f32>,
+}
+
+impl<S: Sampler + ?Sized> PathSource for Stateless<'_, S> {
+    fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
+        let n = if k == 0 {
+            self.first_light
+        } else {
+            self.sampler.round_size(1).max(1)
+        };
+        self.buf.resize(2 * n as usize, 0.0);
+        self.sampler.get_array_2d(&mut self.buf);
+        let u = self.sampler.get_2d();
+        let rr = self.sampler.get_1d();
+        (&self.buf, u, rr)
+    }
+}
+
+/// The radiance (RGB) one camera sample carries, for a film of `resolution` pixels, with the
+/// camera values `p_film`, `lens`, `time` and the rest from `src`.
+pub fn radiance(
+    scene: &Scene,
+    camera: &CameraSample,
+    src: &mut impl PathSource,
+    resolution: [u32; 2],
+) -> V3 {
+    let time = camera.time;
+    let mut ray = scene.camera.ray(camera.p_film, camera.lens, resolution);
+    let mut beta = V3::new(1.0, 1.0, 1.0);
+    let mut l = V3::default();
+    let light = &scene.light;
+    let (light_n, light_area) = (light.normal(), light.area());
+    for k in 0..MAX_VERTICES {
+        let Some((i, t, n)) = scene.intersect(&ray, time, f32::INFINITY) else {
+            break;
+        };
+        let obj = &scene.objects[i];
+        if obj.emitter {
+            if k == 0 && ray.dir.dot(light_n) < 0.0 {
+                l = l + beta.hadamard(light.radiance);
+            }
+            break;
+        }
+        let p = ray.origin + ray.dir * t;
+        let n = if n.dot(ray.dir) < 0.0 { n } else { -n };
+        let origin = p + n * EPSILON;
+        let (points, u_dir, u_rr) = src.vertex(k);
+        // Next-event estimation: the mean over this vertex's light samples.
+        let count = points.len() / 2;
+        let mut direct = 0.0f32;
+        for uv in points.chunks_exact(2) {
+            let q = light.point([uv[0], uv[1]]);
+            let d = q - p;
+            let d2 = d.dot(d);
+            let wi = d * (1.0 / d2.sqrt());
+            let cos_s = n.dot(wi);
+            let cos_l = -light_n.dot(wi);
+            if cos_s > 0.0 && cos_l > 0.0 && !scene.occluded(origin, q, time) {
+                direct += cos_s * cos_l / d2;
+            }
+        }
+        if count > 0 {
+            let g = direct * light_area / count as f32 * core::f32::consts::FRAC_1_PI;
+            l = l + beta.hadamard(obj.albedo).hadamard(light.radiance) * g;
+        }
+        if k + 1 == MAX_VERTICES {
+            break;
+        }
+        if k + 1 >= ROULETTE_FROM {
+            let q = beta.max_component().clamp(0.05, 1.0);
+            if u_rr >= q {
+                break;
+            }
+            beta = beta * (1.0 / q);
+        }
+        ray = Ray {
+            origin,
+            dir: cosine_hemisphere(n, u_dir),
+        };
+        beta = beta.hadamard(obj.albedo);
+    }
+    l
+}
+
+/// Calls `f(p_film, radiance)` for every camera sample of the pixels `start .. end` through the
+/// stateless layer ([`Stateless`]), pixel by pixel in row order, `pixel_samples` each.
+pub fn for_each_sample_stateless<S: Sampler>(
+    scene: &Scene,
+    mut sampler: S,
+    light_samples: u32,
+    resolution: [u32; 2],
+    start: [u32; 2],
+    end: [u32; 2],
+    mut f: impl FnMut([f32; 2], V3),
+) {
+    let first_light = sampler.round_size(light_samples).max(1);
+    let mut buf = Vec::new();
+    for y in start[1]..end[1] {
+        for x in start[0]..end[0] {
+            for i in 0..sampler.pixel_samples([x, y]) {
+                let camera = sampler.camera_sample([x, y], i);
+                let mut src = Stateless {
+                    sampler: &mut sampler,
+                    first_light,
+                    buf: core::mem::take(&mut buf),
+                };
+                let l = radiance(scene, &camera, &mut src, resolution);
+                buf = src.buf;
+                f(camera.p_film, l);
+            }
+        }
+    }
+}
+
+/// Calls `f(sample, radiance)` for every camera sample of the pixels `start .. end` (exclusive),
+/// in the sampler's order.
+///
+/// # Errors
+/// An empty pixel range.
+pub fn for_each_sample<S: Sampler>(
+    scene: &Scene,
+    layout: &PathLayout,
+    sampler: S,
+    resolution: [u32; 2],
+    start: [u32; 2],
+    end: [u32; 2],
+    mut f: impl FnMut(&Sample<'_>, V3),
+) -> Result<(), nyquist::Error> {
+    let mut pixels = PixelRangeSampler::new(sampler, start, end)?;
+    let mut buf = vec![0.0f32; layout.len()];
+    let mut sample = Sample::new(&layout.layout, &mut buf)?;
+    while pixels.next_sample(&mut sample) {
+        let camera = CameraSample {
+            p_film: sample.image(),
+            lens: sample.lens(),
+            time: sample.time(),
+        };
+        let mut src = FilledSample {
+            sample: &sample,
+            layout,
+        };
+        let l = radiance(scene, &camera, &mut src, resolution);
+        f(&sample, l);
+    }
+    Ok(())
+}
