@@ -533,7 +533,8 @@ def run_benches(args, log):
         print("building:", shlex.join(build), file=sys.stderr)
         log.write(f"\n$ {shlex.join(build)}\n")
         log.flush()
-        subprocess.run(build, cwd=ROOT, check=True, stdout=log, stderr=log)
+        if subprocess.run(build, cwd=ROOT, stdout=log, stderr=log).returncode != 0:
+            sys.exit(f"{shlex.join(build)} failed: see {log.name}")
     runs = []
     for r in range(args.runs):
         results = {}
@@ -548,7 +549,8 @@ def run_benches(args, log):
                   end="", flush=True, file=sys.stderr)
             log.write(f"\n$ {shlex.join(cmd)}\n")
             log.flush()
-            subprocess.run(cmd, cwd=ROOT, check=True, stdout=log, stderr=log)
+            if subprocess.run(cmd, cwd=ROOT, stdout=log, stderr=log).returncode != 0:
+                sys.exit(f"\n{shlex.join(cmd)} failed: see {log.name}")
             got = read_results(cdir, since=t0 - 1)
             lost = [i for i in ids if i not in got]
             print(f" {time.time() - t0:.0f} s" + (f"; NOT MEASURED: {lost}" if lost else ""),
