@@ -7,9 +7,10 @@
 //! Targets: table lookup ≤ 1 ns per weight; direct Mitchell ≤ 5 ns, Lanczos ≤ 20 ns; building
 //! the default Lanczos table ≤ 50 µs. Every figure is per weight (`Throughput::Elements`).
 //! The peer is pbrt-v3 (`pbrt_v3`: its Mitchell and Lanczos through a virtual call, its 16 × 16
-//! table read as `AddSample` reads it), the code the issue's targets are quoted against. After
-//! the run the bench prints the table/direct ratios of each filter and how many times faster
-//! than pbrt-v3 each of ours ran, from criterion's estimates of this run (median per weight).
+//! table read as `AddSample` reads it), the code the targets are quoted against. After the run
+//! the bench prints the table/direct ratios of each filter and how many times faster than
+//! pbrt-v3 each of ours ran, from criterion's estimates of this run (median per weight).
+//! Figures: `docs/performance.md`.
 mod cpu_time;
 mod estimates;
 mod pbrt_v3;
@@ -67,7 +68,7 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
     }
     case!("direct", |x, y| f.eval(x, y));
     case!("direct_dyn", |x, y| dynamic.eval(x, y));
-    // pbrt-v3's Evaluate through its virtual call, where the issue quotes it.
+    // pbrt-v3's Evaluate through its virtual call, as pbrt-v3 calls it.
     let pbrt_filter: Option<Box<dyn PbrtFilter>> = match name {
         "mitchell" => Some(Box::new(PbrtMitchell::new())),
         "lanczos" => Some(Box::new(PbrtLanczos::new())),
@@ -110,10 +111,9 @@ fn run(c: &mut Criterion<cpu_time::BenchClock>, name: &str, f: &(impl Filter + ?
         .unwrap()
         .push((name.to_string(), per_iter));
     // Each sample's footprint goes to its own slot of one buffer, handed to `black_box` once per
-    // batch, as the `weight` group hands its outputs: a `black_box` after every footprint (the
-    // harness before stop 24) is a memory clobber that makes the loop reload the table and the
-    // buffer each time, ~1 ns per call, which a caller never pays and which is the whole
-    // per-weight budget of a one-weight (box) footprint.
+    // batch, as the `weight` group hands its outputs: a `black_box` after every footprint would
+    // be a memory clobber that makes the loop reload the table and the buffer each time, a cost
+    // a caller never pays and, for a one-weight (box) footprint, larger than the lookup itself.
     let n = nx * ny;
     let mut all = vec![0.0f32; d0s.len() * n];
     let mut g = c.benchmark_group(format!("footprint/{name}"));

@@ -2,17 +2,14 @@
 //!
 //! Workloads, each reported per value (criterion's element throughput):
 //! - `pmj02_by_index`: 4096 hashed (incoherent) indices over the whole 2^16-point table, both
-//!   dimensions (8192 values), plain and Owen-scrambled; a sequential run for contrast. Target
-//!   (issue): ≤ 2 ns per value.
+//!   dimensions (8192 values), plain and Owen-scrambled; a sequential run for contrast. Target:
+//!   ≤ 2 ns per value.
 //! - `pmj02_sampler`: `get_pixel_2d` over an 8 × 8-pixel tile at 16 spp (2 values per call),
 //!   and the camera sample (5 values per call).
 //! - `pmj02_build`: the in-place construction of 2^16 points, per point.
 //!
-//! Medians of three runs (stop 23, shared 2-core AMD EPYC VM, thread CPU time,
-//! `--warm-up-time 1 --measurement-time 3`): plain by index 0.68 ns per value (hashed indices,
-//! `sample`); Owen-scrambled 11.0 ns (`sample`, one value per call handed to `black_box`) and
-//! 5.3 ns (`sample_2d`, whose two scrambles run side by side); sampler image sample 7.9 ns per
-//! value, camera sample 23 ns; build 1.7 ns per point.
+//! The Owen-scrambled `sample` hands one value per call to `black_box`; `sample_2d` runs its two
+//! scrambles side by side. Figures: `docs/performance.md`.
 
 mod cpu_time;
 

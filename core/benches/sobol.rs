@@ -2,8 +2,9 @@
 //!
 //! Workloads: 64 dimensions (0..63) × 1024 indices, once with coherent indices `0..1024` (few set
 //! bits, the case of a sampler walking a pixel's samples) and once with incoherent, hashed 32-bit
-//! indices (16 set bits on average, the case of a global sequence over a large image). Every
-//!
+//! indices (16 set bits on average, the case of a global sequence over a large image). The peers
+//! and candidates read the same `[[u32; 32]; 64]` columns (or tables built from them); throughput
+//! is per value. Figures: `docs/performance.md`.
 
 mod cpu_time;
 

@@ -4,9 +4,9 @@
 //! with its own radiance); and the parallel render of a 1024 × 1024 zone plate at 16 spp on 1
 //! and 2 threads.
 //!
-//! Beside both runs the peer the issue quotes, pbrt-v3's `FilmTile::AddSample` (re-implemented in
-//! `core/benches/pbrt_v3`, `f32` sums and its 16 × 16 table); after the run the bench prints the
-//! per-sample medians and the ratios.
+//! Beside both runs the peer the targets are quoted against, pbrt-v3's `FilmTile::AddSample`
+//! (re-implemented in `core/benches/pbrt_v3`, `f32` sums and its 16 × 16 table); after the run the
+//! bench prints the per-sample medians and the ratios. Figures: `docs/performance.md`.
 //!
 //! `add_sample` runs twice: `add_sample` in wall-clock time (criterion's default) and
 //! `add_sample_cpu` in the thread's CPU time (`CLOCK_THREAD_CPUTIME_ID`), which other processes
