@@ -1,4 +1,4 @@
-//! The convergence orders of the issue, measured by the `converge` engine: RMSE over 64
+//! The published convergence orders, measured by the `converge` engine: RMSE over 64
 //! independent runs at N = 16, 32, …, 4096 on the five integrands of Christensen, Kensler and
 //! Kilpatrick 2018, and the least-squares slope of log RMSE against log N.
 //!
@@ -9,7 +9,7 @@
 use nyquist::sampler::{NamedSampler, NamedSamplerError};
 use nyquist_cli::converge::{Curve, Integrand, Study, powers_of_two};
 
-/// The issue's sweep: N = 16 … 4096, 64 runs.
+/// The sweep of the published study: N = 16 … 4096, 64 runs.
 fn study(samplers: &[&str], seed: u64) -> Vec<Curve> {
     Study {
         samplers: samplers.iter().map(|s| (*s).to_owned()).collect(),

@@ -683,7 +683,7 @@ mod tests {
         }
     }
 
-    /// Every pixel of a 10 × 10 image, every power-of-two spp up to 1024, the seeds the issue
+    /// Every pixel of a 10 × 10 image, every power-of-two spp up to 1024, six seeds
     /// names: the image samples and the lens samples are (0, m, 2)-nets, the time samples
     /// stratified.
     #[test]
