@@ -683,8 +683,8 @@ mod tests {
         }
     }
 
-    /// Every pixel of a 10 × 10 image, every power-of-two spp up to 1024, six seeds
-    /// names: the image samples and the lens samples are (0, m, 2)-nets, the time samples
+    /// Every pixel of a 10 × 10 image, every power-of-two spp up to 1024, six seeds and every
+    /// scramble: the image samples and the lens samples are (0, m, 2)-nets, the time samples
     /// stratified.
     #[test]
     fn every_pixel_is_a_net_for_every_power_of_two_up_to_1024() {
