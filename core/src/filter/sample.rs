@@ -19,9 +19,9 @@ pub struct FilterSample {
 }
 
 /// Importance sampling of a filter: a piecewise-constant 2D distribution over the support
-/// `[−rx, rx] × [−ry, ry]` on an `N × N` grid (default 32 × 32), proportional to `|f|` at each
-/// cell centre (a cell whose centre is a zero of `f` uses the mean of its corners, so no part of
-/// the support where `f ≠ 0` gets zero density).
+/// `[−rx, rx] × [−ry, ry]` on an `N × N` grid (default 32 × 32), each cell's probability its
+/// share of `∫|f|` (4 × 4-point Gauss–Legendre per cell; a cell where those points all read 0
+/// uses the mean of its corners, so no part of the support where `f ≠ 0` gets zero density).
 ///
 /// [`sample`](Self::sample) returns the weight `f(p)/pdf(p)` with `f` evaluated directly at the
 /// drawn point, so the estimator `Σ weight·g(offset) / n` is unbiased for `∫∫ f·g` whatever `N`
@@ -59,8 +59,8 @@ pub struct FilterSampler<F, const N: usize = 32> {
 }
 
 impl<F: Filter, const N: usize> FilterSampler<F, N> {
-    /// Tabulates `|filter|` on an `N × N` grid (about `N²` evaluations). `N = 0` does not
-    /// compile.
+    /// Tabulates `∫|filter|` over an `N × N` grid of cells (`16·N²` evaluations). `N = 0` does
+    /// not compile.
     ///
     /// # Errors
     /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0`, or so small that a
@@ -96,6 +96,31 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
             let v = f64::from(filter.eval(x, y)).abs();
             if v.is_finite() { v } else { 0.0 }
         };
+        // A cell's mass is ∫|f| over it by 4 × 4-point Gauss–Legendre quadrature (exact for
+        // polynomials of degree 7 per axis), not |f| at the centre: where |f| bends inside a
+        // cell (Lanczos' lobes at 32 cells over r = 4) the centre value misjudges the cell by
+        // far more than sampling noise, and the drawn points would not follow |f|.
+        const NODES: [f64; 4] = [
+            0.5 - 0.430_568_155_797_026_3,
+            0.5 - 0.169_990_521_792_428_1,
+            0.5 + 0.169_990_521_792_428_1,
+            0.5 + 0.430_568_155_797_026_3,
+        ];
+        const WEIGHTS: [f64; 4] = [
+            0.173_927_422_568_726_9,
+            0.326_072_577_431_273_1,
+            0.326_072_577_431_273_1,
+            0.173_927_422_568_726_9,
+        ];
+        let mass = |fi: f64, fj: f64| -> f64 {
+            let mut m = 0.0;
+            for (&v, &wv) in NODES.iter().zip(&WEIGHTS) {
+                for (&u, &wu) in NODES.iter().zip(&WEIGHTS) {
+                    m += wu * wv * at(fi + u, fj + v);
+                }
+            }
+            m
+        };
         let mut conditional = [[0.0f32; N]; N];
         let mut row_mass = [0.0f64; N];
         for (j, row) in conditional.iter_mut().enumerate() {
@@ -104,7 +129,7 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
             let mut cum = [0.0f64; N];
             for (i, c) in cum.iter_mut().enumerate() {
                 let (fi, fj) = (i as f64, j as f64);
-                let mut v = at(fi + 0.5, fj + 0.5);
+                let mut v = mass(fi, fj);
                 if v == 0.0 {
                     v = 0.25
                         * (at(fi, fj)
