@@ -40,9 +40,11 @@
 extern crate std;
 
 pub mod analysis;
+pub mod bluenoise;
 pub mod error;
 pub mod filter;
 pub mod hash;
+pub mod lattice;
 pub mod math;
 pub mod radical;
 pub mod rng;
