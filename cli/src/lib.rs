@@ -15,6 +15,7 @@ pub mod analyze;
 pub mod compare;
 pub mod converge;
 pub mod filter;
+pub mod mask;
 pub mod memory;
 pub mod output;
 pub mod plot;
