@@ -54,6 +54,10 @@ pub enum SamplerName {
     ZSobol,
     /// Progressive multi-jittered (0,2) points, shuffled and Owen-scrambled per pixel.
     Pmj02,
+    /// Blue-noise dithered: one zero-two set for every pixel, toroidally shifted by a 64 × 64
+    /// blue-noise mask, so the error is blue noise (spp rounded up to a power of two).
+    #[value(name = "bluenoise-dithered")]
+    BluenoiseDithered,
 }
 
 impl SamplerName {

@@ -21,4 +21,4 @@ pub use void_and_cluster::{
 };
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;

@@ -69,7 +69,6 @@ fn ranks_are_permutations() {
 
 /// Mean periodogram power of the binary pattern `ranks < level` over the frequencies
 /// `0 < |f| < radius` (cycles per mask width), relative to white noise's `g(1 − g)`.
-/// A direct separable DFT, rows then columns, in `f64`.
 pub(crate) fn low_frequency_ratio(
     ranks: &[u32],
     w: usize,
@@ -77,19 +76,30 @@ pub(crate) fn low_frequency_ratio(
     level: u32,
     radius: f64,
 ) -> f64 {
+    let g = f64::from(level) / (w * h) as f64;
+    let bits: Vec<f64> = ranks
+        .iter()
+        .map(|&r| if r < level { 1.0 } else { 0.0 })
+        .collect();
+    low_frequency_power(&bits, w, h, radius) / (g * (1.0 - g))
+}
+
+/// Mean periodogram power `|DFT(v − mean)|²/N` of a `w × h` image over the frequencies
+/// `0 < |f| < radius` (in cycles per image width; vertical frequencies scaled to the width), by
+/// a direct separable DFT, rows then columns, in `f64`.
+pub(crate) fn low_frequency_power(values: &[f64], w: usize, h: usize, radius: f64) -> f64 {
     let n = (w * h) as f64;
-    let g = f64::from(level) / n;
-    let bit = |i: usize| if ranks[i] < level { 1.0 - g } else { -g };
+    let mean = values.iter().sum::<f64>() / n;
     let r = radius.ceil() as i64;
     let fxs: Vec<i64> = (-r..=r).collect();
-    // rows[y][fx] = Σ_x b(x, y) e^{−2πi fx x / w}
+    // rows[y][fx] = Σ_x v(x, y) e^{−2πi fx x / w}
     let mut rows = vec![(0.0f64, 0.0f64); h * fxs.len()];
     for y in 0..h {
         for (k, &fx) in fxs.iter().enumerate() {
             let (mut re, mut im) = (0.0, 0.0);
             for x in 0..w {
                 let a = -2.0 * core::f64::consts::PI * (fx as f64) * (x as f64) / w as f64;
-                let b = bit(y * w + x);
+                let b = values[y * w + x] - mean;
                 re += b * a.cos();
                 im += b * a.sin();
             }
@@ -99,7 +109,6 @@ pub(crate) fn low_frequency_ratio(
     let (mut sum, mut count) = (0.0, 0u32);
     for &fy in &fxs {
         for (k, &fx) in fxs.iter().enumerate() {
-            // Frequencies in cycles per mask width: fy scaled to the width's units.
             let (ux, uy) = (fx as f64, fy as f64 * w as f64 / h as f64);
             let f = (ux * ux + uy * uy).sqrt();
             if f == 0.0 || f >= radius || (fy.unsigned_abs() as usize) * 2 >= h {
@@ -117,7 +126,7 @@ pub(crate) fn low_frequency_ratio(
             count += 1;
         }
     }
-    sum / f64::from(count) / (g * (1.0 - g))
+    sum / f64::from(count)
 }
 
 /// At 128² and 64², every threshold level 1/16 … 15/16 has a mean periodogram power below a
