@@ -2,6 +2,8 @@
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
+use nyquist::analysis::Topology;
+use nyquist::bluenoise::PoissonDisk;
 use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sequence::{
@@ -69,6 +71,12 @@ pub enum SamplerName {
     /// built-in 64 × 64 blue-noise mask (pixel sampler: --spp).
     #[value(name = "bluenoise-dithered")]
     BluenoiseDithered,
+    /// Maximal Poisson-disk set on the unit torus (Bridson's algorithm and a fill pass): about
+    /// --count points, at least r = 0.78·√(2/(√3·count)) apart (two dimensions).
+    PoissonDisk,
+    /// Bridson's Poisson-disk set in the unit square, not maximal: the radius of poisson-disk
+    /// for --count, so fewer points (two dimensions).
+    Bridson,
 }
 
 /// Output formats of `points`.
@@ -269,7 +277,7 @@ fn max_dims(sampler: SamplerName) -> Option<u32> {
     use SamplerName as S;
     match sampler {
         S::Vdc => Some(VanDerCorput.dims()),
-        S::ZeroTwo | S::Pmj02 | S::Fibonacci => Some(2),
+        S::ZeroTwo | S::Pmj02 | S::Fibonacci | S::PoissonDisk | S::Bridson => Some(2),
         S::Korobov | S::Rd => Some(1024),
         S::Halton | S::HaltonZaremba => Some(nyquist::radical::PRIME_COUNT),
         S::Hammersley | S::HammersleyZaremba => Some(nyquist::radical::PRIME_COUNT + 1),
@@ -448,7 +456,9 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
         | S::HammersleyZaremba
         | S::Fibonacci
         | S::Korobov
-        | S::Rd => bail!(
+        | S::Rd
+        | S::PoissonDisk
+        | S::Bridson => bail!(
             "{n} is a point set, not a pixel sampler: drop --spp/--pixel/--resolution and use --count"
         ),
     };
@@ -627,6 +637,38 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
                 lattice.rotated(args.seed)
             };
             fill(&lattice, args, &mut out)?
+        }
+        S::PoissonDisk | S::Bridson => {
+            if args.skip != 0 {
+                bail!(
+                    "--skip applies to sequences and random, not to {}",
+                    name(args.sampler)
+                );
+            }
+            let (topology, maximal) = match args.sampler {
+                S::PoissonDisk => (Topology::Torus, true),
+                _ => (Topology::Square, false),
+            };
+            let count = u32::try_from(count)
+                .map_err(|_| anyhow::anyhow!("--count {count}: too many for a Poisson-disk set"))?;
+            let pd = PoissonDisk::with_count(count, topology, args.seed).map_err(|e| {
+                anyhow::anyhow!(
+                    "--count {count}: {}: {e} (at most about 1.2 million points)",
+                    name(args.sampler)
+                )
+            })?;
+            let pd = if maximal { pd.maximal() } else { pd };
+            let (g, a) = pd.scratch_len();
+            let mut pts = vec![0.0f64; 2 * g];
+            let n = pd
+                .generate(&mut pts, &mut vec![0; g], &mut vec![0; a])
+                .map_err(set_error)?;
+            crate::output::note(&format!(
+                "{}: {n} points at least {} apart",
+                name(args.sampler),
+                pd.radius()
+            ));
+            out = pts[..2 * n].iter().map(|&v| v as f32).collect();
         }
         S::Rd => {
             let seq = Kronecker::new(dims).map_err(set_error)?;
