@@ -291,6 +291,27 @@ enum NyqStatus nyq_mask_generate(uint32_t width,
                                  uint32_t *out,
                                  size_t len);
 
+// Writes a Poisson-disk set of the unit square (`torus` false) or torus, points at least
+// `radius` apart, `[x0, y0, x1, y1, …]`, to `out[0..len]` and its point count to `*count`:
+// the core's [`PoissonDisk`](nyquist::bluenoise::PoissonDisk) (Bridson's algorithm; with
+// `maximal`, the gap-filling pass that makes the set maximal). `len` must be at least
+// `2·⌈√2/radius⌉²`. The grid and active list (8 bytes per cell) are allocated inside the call.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` or `count` is null; `NYQ_ERR_NON_FINITE` for a NaN or infinite
+// radius; `NYQ_ERR_OUT_OF_RANGE` outside `[1/1448, 1]`; `NYQ_ERR_BUFFER` if `len` is too short.
+//
+// # Safety
+// `out` is null or valid for writing `len` doubles; `count` is null or valid for writing one
+// `size_t`.
+enum NyqStatus nyq_poisson_disk(double radius,
+                                bool torus,
+                                bool maximal,
+                                uint64_t seed,
+                                double *out,
+                                size_t len,
+                                size_t *count);
+
 // Writes the `dim`-th prime (`dim = 0` → 2) to `*out`.
 //
 // # Errors
