@@ -585,13 +585,46 @@ pub struct RenderArgs {
     /// Print the metrics as one JSON object (implies --metrics).
     #[arg(long)]
     pub json: bool,
+    /// Also write the error image, the render minus the same filter's converged reference, as
+    /// an 8-bit grey PNG: ½ + 4·error (mid grey is no error; ±0.125 reach white and black).
+    #[arg(long, value_name = "FILE.png")]
+    pub error: Option<PathBuf>,
+}
+
+/// Gain of `render --error`: grey level `½ + ERROR_GAIN · error`.
+pub const ERROR_GAIN: f64 = 4.0;
+
+/// Writes `½ + ERROR_GAIN · (image − reference)` (first channel) as an 8-bit grey PNG.
+fn write_error_png(path: &std::path::Path, image: &Image, reference: &[f64]) -> Result<()> {
+    let bytes: Vec<u8> = image
+        .data()
+        .chunks_exact(3)
+        .zip(reference)
+        .map(|(p, r)| {
+            let g = 0.5 + ERROR_GAIN * (f64::from(p[0]) - r);
+            (g.clamp(0.0, 1.0) * 255.0).round() as u8
+        })
+        .collect();
+    crate::output::write_atomic(path, |w| {
+        let mut enc = png::Encoder::new(w, image.width(), image.height());
+        enc.set_color(png::ColorType::Grayscale);
+        enc.set_depth(png::BitDepth::Eight);
+        let mut writer = enc.write_header().context("PNG header")?;
+        writer.write_image_data(&bytes).context("PNG data")?;
+        writer.finish().context("PNG end")?;
+        Ok(())
+    })
+    .map_err(|e| anyhow!("{}", format!("{e:#}").replace("--output", "--error")))
 }
 
 /// Runs `nyquist render`.
 pub fn run(args: &RenderArgs) -> Result<()> {
     let metrics = args.metrics || args.json;
-    if args.output.is_none() && !metrics {
-        bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics or both");
+    if args.output.is_none() && !metrics && args.error.is_none() {
+        bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics, --error FILE.png");
+    }
+    if let Some(p) = &args.error {
+        check_output(p, "--error", &["png"])?;
     }
     if let Some(p) = &args.output {
         check_output(p, "--output", &["png", "exr", "pfm"])?;
@@ -644,6 +677,11 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         crate::output::write_atomic(p, |w| {
             Ok(nyquist_film::output::write_image(w, &r.image, format)?)
         })?;
+    }
+    if let Some(p) = &args.error {
+        let filtered = reference(args.scene, args.size, Some(&args.filter), threads)?
+            .with_context(|| format!("--error: no reference for --scene {}", args.scene.name()))?;
+        write_error_png(p, &r.image, &filtered)?;
     }
     if metrics {
         let means = reference(args.scene, args.size, None, threads)?

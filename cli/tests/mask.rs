@@ -148,3 +148,39 @@ fn bad_flags_are_one_line_and_leave_nothing() {
     }
     assert!(files(&dir).is_empty(), "{:?}", files(&dir));
 }
+
+/// `render --error` writes the grey error image at the render's size; its mean is mid grey
+/// within 2 levels (the error of an unbiased sampler averages out) and a flat image would
+/// be a failure; a bad path is one line naming --error.
+#[test]
+fn render_writes_the_error_image() {
+    let dir = temp_dir("render-error");
+    let p = dir.join("e.png");
+    let o = nyquist(&[
+        "render",
+        "--scene",
+        "zoneplate",
+        "--sampler",
+        "bluenoise-dithered",
+        "--spp",
+        "4",
+        "--size",
+        "64x48",
+        "--threads",
+        "1",
+        "--error",
+        p.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let (w, h, c, s) = decode(&p);
+    assert_eq!((w, h, c), (64, 48, 1));
+    let mean = s.iter().map(|&v| f64::from(v)).sum::<f64>() / s.len() as f64;
+    assert!((mean - 127.5).abs() < 2.0, "{mean}");
+    assert!(s.iter().any(|&v| v != s[0]));
+    let bad = dir.join("e.tif");
+    assert_one_line_error(
+        &nyquist(&["render", "--size", "8x8", "--error", bad.to_str().unwrap()]),
+        "--error",
+    );
+    assert_eq!(files(&dir), vec!["e.png".to_string()]);
+}
