@@ -82,6 +82,9 @@ enum NyqSequenceKind
   // Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2);
   // `seed != 0` picks a Cranley–Patterson rotation in place of the start ½.
   NYQ_SEQ_RD = 11,
+  // The Korobov rank-1 lattice of `N = points` points with multiplier `a = seed` (coprime to
+  // `N`, `1 ≤ a < N`), generator `(1, a, a², …)`, up to 1024 dimensions, unrotated.
+  NYQ_SEQ_KOROBOV = 12,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -143,11 +146,12 @@ typedef struct NyqSequence {
   uint32_t kind;
   // Number of dimensions, at least 1 (van der Corput: 1; (0,2): 1 or 2).
   uint32_t dims;
-  // The point count `N` of Hammersley (at least 1) and of the Fibonacci lattice (a Fibonacci
-  // number); ignored by the other families.
+  // The point count `N` of Hammersley (at least 1), of the Fibonacci lattice (a Fibonacci
+  // number) and of the Korobov lattice; ignored by the other families.
   uint64_t points;
   // Scramble seed of the `*_SCRAMBLED` kinds, rotation seed of the Fibonacci lattice and
-  // R_d (0: none) (every value is valid); ignored otherwise.
+  // R_d (0: none) (every value is valid), the multiplier of the Korobov lattice; ignored
+  // otherwise.
   uint64_t seed;
 } NyqSequence;
 

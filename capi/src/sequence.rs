@@ -1,6 +1,6 @@
 //! Sequences by index: van der Corput, Halton (plain, Zaremba, scrambled), Hammersley (plain,
-//! Zaremba), Sobol (plain, digitally shifted), the (0,2)-sequence, the Fibonacci lattice and
-//! Roberts' R_d.
+//! Zaremba), Sobol (plain, digitally shifted), the (0,2)-sequence, the Fibonacci and Korobov
+//! lattices and Roberts' R_d.
 //!
 //! A sequence is described by a plain [`NyqSequence`] value (no allocation, no handle); each
 //! call validates it and builds the core's sequence, which costs a few integer operations.
@@ -10,7 +10,7 @@ use nyquist::sequence::{
     VanDerCorput, ZeroTwo,
 };
 
-use nyquist::lattice::{FibonacciLattice, Kronecker};
+use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
 
 use crate::NyqStatus;
 use crate::ffi::{get, need, put, run, slice_mut};
@@ -51,6 +51,9 @@ pub enum NyqSequenceKind {
     /// Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2);
     /// `seed != 0` picks a Cranley–Patterson rotation in place of the start ½.
     NYQ_SEQ_RD = 11,
+    /// The Korobov rank-1 lattice of `N = points` points with multiplier `a = seed` (coprime to
+    /// `N`, `1 ≤ a < N`), generator `(1, a, a², …)`, up to 1024 dimensions, unrotated.
+    NYQ_SEQ_KOROBOV = 12,
 }
 
 /// A point set, by value: which family and its parameters.
@@ -67,11 +70,12 @@ pub struct NyqSequence {
     pub kind: u32,
     /// Number of dimensions, at least 1 (van der Corput: 1; (0,2): 1 or 2).
     pub dims: u32,
-    /// The point count `N` of Hammersley (at least 1) and of the Fibonacci lattice (a Fibonacci
-    /// number); ignored by the other families.
+    /// The point count `N` of Hammersley (at least 1), of the Fibonacci lattice (a Fibonacci
+    /// number) and of the Korobov lattice; ignored by the other families.
     pub points: u64,
     /// Scramble seed of the `*_SCRAMBLED` kinds, rotation seed of the Fibonacci lattice and
-    /// R_d (0: none) (every value is valid); ignored otherwise.
+    /// R_d (0: none) (every value is valid), the multiplier of the Korobov lattice; ignored
+    /// otherwise.
     pub seed: u64,
 }
 
@@ -87,6 +91,7 @@ enum AnySequence {
     ZeroTwo(ZeroTwo),
     Fibonacci(FibonacciLattice),
     Rd(Kronecker),
+    Korobov(Korobov),
 }
 
 /// `dims` for the fixed-size families: 1 ≤ dims ≤ max.
@@ -114,6 +119,7 @@ impl AnySequence {
             K::NYQ_SEQ_HAMMERSLEY_ZAREMBA,
             K::NYQ_SEQ_FIBONACCI,
             K::NYQ_SEQ_RD,
+            K::NYQ_SEQ_KOROBOV,
         ];
         let kind = kinds
             .into_iter()
@@ -155,6 +161,7 @@ impl AnySequence {
                 let r = Kronecker::new(s.dims)?;
                 AnySequence::Rd(if s.seed == 0 { r } else { r.rotated(s.seed) })
             }
+            K::NYQ_SEQ_KOROBOV => AnySequence::Korobov(Korobov::new(s.points, s.seed, s.dims)?),
         })
     }
 
@@ -170,6 +177,7 @@ impl AnySequence {
             AnySequence::ZeroTwo(s) => s,
             AnySequence::Fibonacci(s) => s,
             AnySequence::Rd(s) => s,
+            AnySequence::Korobov(s) => s,
         }
     }
 }

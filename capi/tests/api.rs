@@ -351,8 +351,8 @@ fn null_pointers_are_reported_before_other_errors() {
     }
 }
 
-/// The Fibonacci lattice and R_d through the C API give the core's values; a point count that
-/// is not a Fibonacci number is out of range.
+/// The Fibonacci lattice, R_d and Korobov through the C API give the core's values; a point
+/// count that is not a Fibonacci number, or a multiplier not coprime to N, is out of range.
 #[test]
 fn lattices_through_the_c_api() {
     use nyquist::lattice::{FibonacciLattice, Kronecker};
@@ -389,6 +389,29 @@ fn lattices_through_the_c_api() {
             assert_eq!(x, r.sample(i, d));
         }
     }
+    let kor = NyqSequence {
+        kind: NyqSequenceKind::NYQ_SEQ_KOROBOV as u32,
+        dims: 3,
+        points: 1024,
+        seed: 189,
+    };
+    let k = nyquist::lattice::Korobov::new(1024, 189, 3).unwrap();
+    for i in [0u64, 5, 1023] {
+        let mut x = 0.0f32;
+        // SAFETY: valid pointers to a sequence and one float.
+        assert_eq!(
+            unsafe { nyq_sequence_sample(&kor, i, 2, &mut x) },
+            NyqStatus::NYQ_OK
+        );
+        assert_eq!(x, k.sample(i, 2));
+    }
+    let even = NyqSequence { seed: 190, ..kor };
+    let mut x = 0.0f32;
+    // SAFETY: as above.
+    assert_eq!(
+        unsafe { nyq_sequence_sample(&even, 0, 0, &mut x) },
+        NyqStatus::NYQ_ERR_OUT_OF_RANGE
+    );
     let bad = NyqSequence { points: 90, ..fib };
     let mut x = 0.0f32;
     // SAFETY: as above.
