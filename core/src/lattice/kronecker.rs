@@ -31,6 +31,18 @@ pub struct Kronecker {
     dims: u32,
     phi: f64,
     seed: Option<u64>,
+    /// `α_j` in fixed point for the first [`CACHED`] dimensions.
+    alphas: [u64; CACHED],
+}
+
+/// Dimensions whose `α_j` is computed at construction rather than per value.
+const CACHED: usize = 8;
+
+/// `φ^{−(dim+1)}` in 64-bit fixed point.
+fn alpha_of(phi: f64, dim: u32) -> u64 {
+    let a = crate::math::pow(phi, -f64::from(dim + 1));
+    // a ∈ (0, 1): the product is below 2⁶⁴ and exact in f64's 53 bits.
+    (a * 18_446_744_073_709_551_616.0) as u64
 }
 
 impl Kronecker {
@@ -63,10 +75,15 @@ impl Kronecker {
             let df = e * crate::math::pow(x, e - 1.0) - 1.0;
             x -= f / df;
         }
+        let mut alphas = [0u64; CACHED];
+        for (j, a) in alphas.iter_mut().enumerate() {
+            *a = alpha_of(x, j as u32);
+        }
         Ok(Kronecker {
             dims,
             phi: x,
             seed: None,
+            alphas,
         })
     }
 
@@ -94,9 +111,10 @@ impl Kronecker {
     /// `α_j = φ_d^{−(j+1)}` in 64-bit fixed point.
     #[inline]
     fn alpha(&self, dim: u32) -> u64 {
-        let a = crate::math::pow(self.phi, -f64::from(dim + 1));
-        // a ∈ (0, 1): the product is below 2⁶⁴ and exact in f64's 53 bits.
-        (a * 18_446_744_073_709_551_616.0) as u64
+        match self.alphas.get(dim as usize) {
+            Some(&a) => a,
+            None => alpha_of(self.phi, dim),
+        }
     }
 
     #[inline]
