@@ -443,6 +443,22 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
             let min = (inner.samples_per_pixel() / 4).max(1);
             Box::new(AdaptiveSampler::new(inner, min, 0.1).map_err(err)?)
         }
+        S::Fibonacci | S::Rd => {
+            let which = if args.sampler == S::Fibonacci {
+                "fibonacci"
+            } else {
+                "r2"
+            };
+            let s = nyquist::sampler::NamedSampler::new(which, [1, 1], spp, args.seed)
+                .map_err(|e| anyhow::anyhow!("--sampler {n}: {e}"))?;
+            if s.samples_per_pixel() != spp {
+                crate::output::note(&format!(
+                    "{n} uses a Fibonacci number of samples: --spp {spp} rounded up to {}",
+                    s.samples_per_pixel()
+                ));
+            }
+            Box::new(s)
+        }
         S::BluenoiseDithered => {
             notice(ZeroTwoSampler::rounded_spp(spp));
             Box::new(nyquist::sampler::DitheredSampler::new(
@@ -454,9 +470,7 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
         | S::Vdc
         | S::HaltonZaremba
         | S::HammersleyZaremba
-        | S::Fibonacci
         | S::Korobov
-        | S::Rd
         | S::PoissonDisk
         | S::Bridson => bail!(
             "{n} is a point set, not a pixel sampler: drop --spp/--pixel/--resolution and use --count"

@@ -58,6 +58,12 @@ pub enum SamplerName {
     /// blue-noise mask, so the error is blue noise (spp rounded up to a power of two).
     #[value(name = "bluenoise-dithered")]
     BluenoiseDithered,
+    /// The Fibonacci lattice per dimension pair, Cranley–Patterson rotated per pixel and pair
+    /// (spp rounded up to a Fibonacci number).
+    Fibonacci,
+    /// Roberts' R2 per dimension pair, rotated per pixel and pair.
+    #[value(name = "r2")]
+    R2,
 }
 
 impl SamplerName {
@@ -633,8 +639,13 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed, args.scramble)?;
     if sampler.samples_per_pixel() != args.spp {
         eprintln!(
-            "nyquist: note: --sampler {} uses a power-of-two spp: --spp {} rounded up to {}",
+            "nyquist: note: --sampler {} uses {}: --spp {} rounded up to {}",
             args.sampler.name(),
+            if args.sampler == SamplerName::Fibonacci {
+                "a Fibonacci number of samples"
+            } else {
+                "a power-of-two spp"
+            },
             args.spp,
             sampler.samples_per_pixel()
         );

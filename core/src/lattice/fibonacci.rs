@@ -113,6 +113,16 @@ impl FibonacciLattice {
         }
     }
 
+    /// The number of points `F_m`.
+    ///
+    /// ```
+    /// use nyquist::lattice::FibonacciLattice;
+    /// assert_eq!(FibonacciLattice::new(10).unwrap().point_count_u64(), 55);
+    /// ```
+    pub fn point_count_u64(&self) -> u64 {
+        self.n
+    }
+
     /// The generator `F_{m−1}` of the second coordinate.
     ///
     /// ```
@@ -126,7 +136,7 @@ impl FibonacciLattice {
     /// Coordinate `dim` (wrapped to `0..2`) of point `index` (wrapped modulo `N`) in 64-bit
     /// fixed point.
     #[inline]
-    fn fixed(&self, index: u64, dim: u32) -> u64 {
+    pub(crate) fn fixed(&self, index: u64, dim: u32) -> u64 {
         let k = index % self.n;
         let d = (dim % 2) as usize;
         let step = if d == 0 {

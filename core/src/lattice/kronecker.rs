@@ -118,7 +118,7 @@ impl Kronecker {
     }
 
     #[inline]
-    fn fixed(&self, index: u64, dim: u32) -> u64 {
+    pub(crate) fn fixed(&self, index: u64, dim: u32) -> u64 {
         let dim = dim % self.dims;
         let start = self.seed.map_or(1 << 63, |s| rotation(s, dim));
         start.wrapping_add(index.wrapping_mul(self.alpha(dim)))

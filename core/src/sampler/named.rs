@@ -5,8 +5,8 @@ use core::fmt;
 
 use super::{
     AdaptiveSampler, BestCandidateSampler, DitheredSampler, HaltonSampler, HaltonScramble,
-    HammersleySampler, Jitter, MaskView, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
-    SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
+    HammersleySampler, Jitter, LatticeSampler, MaskView, OwenSobolSampler, Pmj02Sampler,
+    RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
 };
 use crate::scramble::Scramble;
 
@@ -14,13 +14,13 @@ use crate::scramble::Scramble;
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, NAMES};
-/// assert_eq!(NAMES.len(), 13);
+/// assert_eq!(NAMES.len(), 15);
 /// for name in NAMES {
 ///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
 ///     assert_eq!(s.name(), name);
 /// }
 /// ```
-pub const NAMES: [&str; 13] = [
+pub const NAMES: [&str; 15] = [
     "random",
     "uniform",
     "stratified",
@@ -34,6 +34,8 @@ pub const NAMES: [&str; 13] = [
     "zsobol",
     "pmj02",
     "bluenoise-dithered",
+    "fibonacci",
+    "r2",
 ];
 
 /// The names of [`NAMES`] that take a scramble through [`NamedSampler::with_scramble`].
@@ -153,6 +155,8 @@ pub enum NamedSampler {
     Pmj02(Pmj02Sampler),
     /// `bluenoise-dithered`.
     Dithered(DitheredSampler<'static, ZeroTwoSampler>),
+    /// `fibonacci` and `r2`.
+    Lattice(LatticeSampler),
 }
 
 /// Evaluates `$body` with `$s` bound to the sampler inside `$self`.
@@ -171,6 +175,7 @@ macro_rules! delegate {
             NamedSampler::ZSobol($s) => $body,
             NamedSampler::Pmj02($s) => $body,
             NamedSampler::Dithered($s) => $body,
+            NamedSampler::Lattice($s) => $body,
         }
     };
 }
@@ -194,7 +199,9 @@ impl NamedSampler {
     ///   power of two);
     /// - `pmj02`: [`Pmj02Sampler`] (spp up to 65536);
     /// - `bluenoise-dithered`: a [`DitheredSampler`] over the `zero-two` set of pixel (0, 0),
-    ///   shifted per pixel by the built-in 64 × 64 two-channel mask ([`MaskView::builtin`]).
+    ///   shifted per pixel by the built-in 64 × 64 two-channel mask ([`MaskView::builtin`]);
+    /// - `fibonacci`, `r2`: [`LatticeSampler::fibonacci`] (spp rounded up to a Fibonacci
+    ///   number) and [`LatticeSampler::r2`].
     ///
     /// The size matters to `halton`, `hammersley`, `sobol` and `zsobol` only, but must be non-zero for
     /// all. Allocates: no.
@@ -279,6 +286,8 @@ impl NamedSampler {
                 ZeroTwoSampler::new(spp, seed)?,
                 MaskView::builtin(),
             )),
+            "fibonacci" => NamedSampler::Lattice(LatticeSampler::fibonacci(spp, seed)?),
+            "r2" => NamedSampler::Lattice(LatticeSampler::r2(spp, seed)?),
             _ => return Err(NamedSamplerError::UnknownName),
         })
     }
@@ -351,6 +360,8 @@ impl NamedSampler {
             NamedSampler::ZSobol(_) => "zsobol",
             NamedSampler::Pmj02(_) => "pmj02",
             NamedSampler::Dithered(_) => "bluenoise-dithered",
+            NamedSampler::Lattice(s) if s.is_fibonacci() => "fibonacci",
+            NamedSampler::Lattice(_) => "r2",
         }
     }
 }
@@ -428,7 +439,7 @@ mod tests {
     fn names_build_the_samplers_they_name() {
         let size = [16, 16];
         for seed in [0u64, 7] {
-            let direct: [(&str, std::boxed::Box<dyn Sampler>); 13] = [
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 15] = [
                 (
                     "random",
                     std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
@@ -506,6 +517,14 @@ mod tests {
                         ZeroTwoSampler::new(16, seed).unwrap(),
                         MaskView::builtin(),
                     )),
+                ),
+                (
+                    "fibonacci",
+                    std::boxed::Box::new(LatticeSampler::fibonacci(16, seed).unwrap()),
+                ),
+                (
+                    "r2",
+                    std::boxed::Box::new(LatticeSampler::r2(16, seed).unwrap()),
                 ),
             ];
             for (i, (name, mut d)) in direct.into_iter().enumerate() {
