@@ -76,6 +76,15 @@ enum NyqSequenceKind
   NYQ_SEQ_ZERO_TWO_SCRAMBLED = 8,
   // Hammersley–Zaremba: Hammersley with Ψ in place of Φ, `N = points`.
   NYQ_SEQ_HAMMERSLEY_ZAREMBA = 9,
+  // The Fibonacci lattice of `N = points` points (a Fibonacci number, 2 … F₉₃), 2
+  // dimensions; `seed != 0` picks a Cranley–Patterson rotation.
+  NYQ_SEQ_FIBONACCI = 10,
+  // Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2);
+  // `seed != 0` picks a Cranley–Patterson rotation in place of the start ½.
+  NYQ_SEQ_RD = 11,
+  // The Korobov rank-1 lattice of `N = points` points with multiplier `a = seed` (coprime to
+  // `N`, `1 ≤ a < N`), generator `(1, a, a², …)`, up to 1024 dimensions, unrotated.
+  NYQ_SEQ_KOROBOV = 12,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -137,9 +146,12 @@ typedef struct NyqSequence {
   uint32_t kind;
   // Number of dimensions, at least 1 (van der Corput: 1; (0,2): 1 or 2).
   uint32_t dims;
-  // Hammersley's point count `N` (at least 1); ignored by the other families.
+  // The point count `N` of Hammersley (at least 1), of the Fibonacci lattice (a Fibonacci
+  // number) and of the Korobov lattice; ignored by the other families.
   uint64_t points;
-  // Scramble seed of the `*_SCRAMBLED` kinds (every value is valid); ignored otherwise.
+  // Scramble seed of the `*_SCRAMBLED` kinds, rotation seed of the Fibonacci lattice and
+  // R_d (0: none) (every value is valid), the multiplier of the Korobov lattice; ignored
+  // otherwise.
   uint64_t seed;
 } NyqSequence;
 
@@ -263,6 +275,47 @@ enum NyqStatus nyq_filter_sample(const struct NyqFilter *filter,
 // `filter` is null or a live handle; `out` is null or valid for writing one `float`.
 enum NyqStatus nyq_filter_pdf(const struct NyqFilter *filter, float x, float y, float *out);
 
+// Writes a `width × height` void-and-cluster threshold mask of `len / (width·height)` channels
+// to `out[0..len]`, channel-major (channel `c` at `out[c·W·H ..]`, each row-major), every
+// channel a permutation of the ranks `0 … W·H − 1`: the core's
+// [`VoidAndCluster::generate_channels`] (tileable, channels decorrelated). A rank `r` is the
+// threshold value `(r + ½)/(W·H)`. The working memory (about 16 bytes per pixel) is allocated
+// and freed inside the call.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_ZERO_SIZE` if `width` or `height` is 0;
+// `NYQ_ERR_TOO_MANY` above 2²⁰ pixels; `NYQ_ERR_BUFFER` unless `len` is a positive multiple of
+// `width·height` (or if `out` is misaligned).
+//
+// # Safety
+// `out` is null or valid for writing `len` `uint32_t`s.
+enum NyqStatus nyq_mask_generate(uint32_t width,
+                                 uint32_t height,
+                                 uint64_t seed,
+                                 uint32_t *out,
+                                 size_t len);
+
+// Writes a Poisson-disk set of the unit square (`torus` false) or torus, points at least
+// `radius` apart, `[x0, y0, x1, y1, …]`, to `out[0..len]` and its point count to `*count`:
+// the core's [`PoissonDisk`](nyquist::bluenoise::PoissonDisk) (Bridson's algorithm; with
+// `maximal`, the gap-filling pass that makes the set maximal). `len` must be at least
+// `2·⌈√2/radius⌉²`. The grid and active list (8 bytes per cell) are allocated inside the call.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` or `count` is null; `NYQ_ERR_NON_FINITE` for a NaN or infinite
+// radius; `NYQ_ERR_OUT_OF_RANGE` outside `[1/1448, 1]`; `NYQ_ERR_BUFFER` if `len` is too short.
+//
+// # Safety
+// `out` is null or valid for writing `len` doubles; `count` is null or valid for writing one
+// `size_t`.
+enum NyqStatus nyq_poisson_disk(double radius,
+                                bool torus,
+                                bool maximal,
+                                uint64_t seed,
+                                double *out,
+                                size_t len,
+                                size_t *count);
+
 // Writes the `dim`-th prime (`dim = 0` → 2) to `*out`.
 //
 // # Errors
@@ -371,7 +424,11 @@ enum NyqStatus nyq_inverse_radical_inverse(uint32_t dim,
 // [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
 // spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
 // (Owen-scrambled Sobol per pixel); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
-// a power of two); `pmj02` (up to 65536 spp). The image size matters to `halton`,
+// a power of two); `pmj02` (up to 65536 spp); `bluenoise-dithered` (the zero-two set of pixel
+// (0, 0) in every pixel, toroidally shifted by a built-in 64 × 64 blue-noise mask, spp rounded
+// up to a power of two); `fibonacci` and `r2` (the Fibonacci lattice, spp rounded up to a
+// Fibonacci number, or R2, per dimension pair, rotated per pixel and pair). The image size
+// matters to `halton`,
 // `hammersley`, `sobol` and `zsobol` only, but must be non-zero for all.
 //
 // # Errors

@@ -34,6 +34,7 @@
 
 mod ffi;
 mod filter;
+mod mask;
 mod radical;
 mod sampler;
 mod sequence;
@@ -41,6 +42,7 @@ mod status;
 mod stratify;
 
 pub use filter::*;
+pub use mask::*;
 pub use radical::*;
 pub use sampler::*;
 pub use sequence::*;

@@ -31,7 +31,11 @@ pub struct NyqSampler {
 /// [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
 /// spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
 /// (Owen-scrambled Sobol per pixel); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
-/// a power of two); `pmj02` (up to 65536 spp). The image size matters to `halton`,
+/// a power of two); `pmj02` (up to 65536 spp); `bluenoise-dithered` (the zero-two set of pixel
+/// (0, 0) in every pixel, toroidally shifted by a built-in 64 × 64 blue-noise mask, spp rounded
+/// up to a power of two); `fibonacci` and `r2` (the Fibonacci lattice, spp rounded up to a
+/// Fibonacci number, or R2, per dimension pair, rotated per pixel and pair). The image size
+/// matters to `halton`,
 /// `hammersley`, `sobol` and `zsobol` only, but must be non-zero for all.
 ///
 /// # Errors

@@ -1,5 +1,6 @@
 //! Sequences by index: van der Corput, Halton (plain, Zaremba, scrambled), Hammersley (plain,
-//! Zaremba), Sobol (plain, digitally shifted) and the (0,2)-sequence.
+//! Zaremba), Sobol (plain, digitally shifted), the (0,2)-sequence, the Fibonacci and Korobov
+//! lattices and Roberts' R_d.
 //!
 //! A sequence is described by a plain [`NyqSequence`] value (no allocation, no handle); each
 //! call validates it and builds the core's sequence, which costs a few integer operations.
@@ -8,6 +9,8 @@ use nyquist::sequence::{
     Halton, HaltonZaremba, Hammersley, HammersleyZaremba, ScrambledHalton, Sequence, Sobol,
     VanDerCorput, ZeroTwo,
 };
+
+use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
 
 use crate::NyqStatus;
 use crate::ffi::{get, need, put, run, slice_mut};
@@ -42,6 +45,15 @@ pub enum NyqSequenceKind {
     NYQ_SEQ_ZERO_TWO_SCRAMBLED = 8,
     /// Hammersley–Zaremba: Hammersley with Ψ in place of Φ, `N = points`.
     NYQ_SEQ_HAMMERSLEY_ZAREMBA = 9,
+    /// The Fibonacci lattice of `N = points` points (a Fibonacci number, 2 … F₉₃), 2
+    /// dimensions; `seed != 0` picks a Cranley–Patterson rotation.
+    NYQ_SEQ_FIBONACCI = 10,
+    /// Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2);
+    /// `seed != 0` picks a Cranley–Patterson rotation in place of the start ½.
+    NYQ_SEQ_RD = 11,
+    /// The Korobov rank-1 lattice of `N = points` points with multiplier `a = seed` (coprime to
+    /// `N`, `1 ≤ a < N`), generator `(1, a, a², …)`, up to 1024 dimensions, unrotated.
+    NYQ_SEQ_KOROBOV = 12,
 }
 
 /// A point set, by value: which family and its parameters.
@@ -58,9 +70,12 @@ pub struct NyqSequence {
     pub kind: u32,
     /// Number of dimensions, at least 1 (van der Corput: 1; (0,2): 1 or 2).
     pub dims: u32,
-    /// Hammersley's point count `N` (at least 1); ignored by the other families.
+    /// The point count `N` of Hammersley (at least 1), of the Fibonacci lattice (a Fibonacci
+    /// number) and of the Korobov lattice; ignored by the other families.
     pub points: u64,
-    /// Scramble seed of the `*_SCRAMBLED` kinds (every value is valid); ignored otherwise.
+    /// Scramble seed of the `*_SCRAMBLED` kinds, rotation seed of the Fibonacci lattice and
+    /// R_d (0: none) (every value is valid), the multiplier of the Korobov lattice; ignored
+    /// otherwise.
     pub seed: u64,
 }
 
@@ -74,6 +89,9 @@ enum AnySequence {
     HammersleyZaremba(HammersleyZaremba),
     Sobol(Sobol),
     ZeroTwo(ZeroTwo),
+    Fibonacci(FibonacciLattice),
+    Rd(Kronecker),
+    Korobov(Korobov),
 }
 
 /// `dims` for the fixed-size families: 1 ≤ dims ≤ max.
@@ -99,6 +117,9 @@ impl AnySequence {
             K::NYQ_SEQ_ZERO_TWO,
             K::NYQ_SEQ_ZERO_TWO_SCRAMBLED,
             K::NYQ_SEQ_HAMMERSLEY_ZAREMBA,
+            K::NYQ_SEQ_FIBONACCI,
+            K::NYQ_SEQ_RD,
+            K::NYQ_SEQ_KOROBOV,
         ];
         let kind = kinds
             .into_iter()
@@ -128,6 +149,19 @@ impl AnySequence {
                 small_dims(s.dims, 2)?;
                 AnySequence::ZeroTwo(ZeroTwo::from_seed(s.seed))
             }
+            K::NYQ_SEQ_FIBONACCI => {
+                small_dims(s.dims, 2)?;
+                let f = FibonacciLattice::at_least(s.points)?;
+                if f.point_count() != Some(s.points) {
+                    return Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE);
+                }
+                AnySequence::Fibonacci(if s.seed == 0 { f } else { f.rotated(s.seed) })
+            }
+            K::NYQ_SEQ_RD => {
+                let r = Kronecker::new(s.dims)?;
+                AnySequence::Rd(if s.seed == 0 { r } else { r.rotated(s.seed) })
+            }
+            K::NYQ_SEQ_KOROBOV => AnySequence::Korobov(Korobov::new(s.points, s.seed, s.dims)?),
         })
     }
 
@@ -141,6 +175,9 @@ impl AnySequence {
             AnySequence::HammersleyZaremba(s) => s,
             AnySequence::Sobol(s) => s,
             AnySequence::ZeroTwo(s) => s,
+            AnySequence::Fibonacci(s) => s,
+            AnySequence::Rd(s) => s,
+            AnySequence::Korobov(s) => s,
         }
     }
 }

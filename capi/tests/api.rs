@@ -203,7 +203,7 @@ proptest! {
 
     #[test]
     fn samplers_give_values_in_range_for_any_input(
-        name in prop::sample::select(vec!["random", "uniform", "stratified", "halton", "hammersley", "zero-two", "sobol", "best-candidate", "adaptive", "owen-sobol", "zsobol", "pmj02", "bogus"]),
+        name in prop::sample::select(vec!["random", "uniform", "stratified", "halton", "hammersley", "zero-two", "sobol", "best-candidate", "adaptive", "owen-sobol", "zsobol", "pmj02", "bluenoise-dithered", "fibonacci", "r2", "bogus"]),
         size in (0u32..70, 0u32..70),
         spp in 0u32..70,
         seed in any::<u64>(),
@@ -349,4 +349,74 @@ fn null_pointers_are_reported_before_other_errors() {
         );
         nyq_filter_destroy(f);
     }
+}
+
+/// The Fibonacci lattice, R_d and Korobov through the C API give the core's values; a point
+/// count that is not a Fibonacci number, or a multiplier not coprime to N, is out of range.
+#[test]
+fn lattices_through_the_c_api() {
+    use nyquist::lattice::{FibonacciLattice, Kronecker};
+    use nyquist::sequence::Sequence;
+    let fib = NyqSequence {
+        kind: NyqSequenceKind::NYQ_SEQ_FIBONACCI as u32,
+        dims: 2,
+        points: 89,
+        seed: 3,
+    };
+    let rd = NyqSequence {
+        kind: NyqSequenceKind::NYQ_SEQ_RD as u32,
+        dims: 3,
+        points: 0,
+        seed: 0,
+    };
+    let (f, r) = (
+        FibonacciLattice::new(11).unwrap().rotated(3),
+        Kronecker::new(3).unwrap(),
+    );
+    for i in [0u64, 1, 50, 88] {
+        for d in 0..2 {
+            let mut x = 0.0f32;
+            // SAFETY: valid pointers to a sequence and one float.
+            assert_eq!(
+                unsafe { nyq_sequence_sample(&fib, i, d, &mut x) },
+                NyqStatus::NYQ_OK
+            );
+            assert_eq!(x, f.sample(i, d));
+            assert_eq!(
+                unsafe { nyq_sequence_sample(&rd, i, d, &mut x) },
+                NyqStatus::NYQ_OK
+            );
+            assert_eq!(x, r.sample(i, d));
+        }
+    }
+    let kor = NyqSequence {
+        kind: NyqSequenceKind::NYQ_SEQ_KOROBOV as u32,
+        dims: 3,
+        points: 1024,
+        seed: 189,
+    };
+    let k = nyquist::lattice::Korobov::new(1024, 189, 3).unwrap();
+    for i in [0u64, 5, 1023] {
+        let mut x = 0.0f32;
+        // SAFETY: valid pointers to a sequence and one float.
+        assert_eq!(
+            unsafe { nyq_sequence_sample(&kor, i, 2, &mut x) },
+            NyqStatus::NYQ_OK
+        );
+        assert_eq!(x, k.sample(i, 2));
+    }
+    let even = NyqSequence { seed: 190, ..kor };
+    let mut x = 0.0f32;
+    // SAFETY: as above.
+    assert_eq!(
+        unsafe { nyq_sequence_sample(&even, 0, 0, &mut x) },
+        NyqStatus::NYQ_ERR_OUT_OF_RANGE
+    );
+    let bad = NyqSequence { points: 90, ..fib };
+    let mut x = 0.0f32;
+    // SAFETY: as above.
+    assert_eq!(
+        unsafe { nyq_sequence_sample(&bad, 0, 0, &mut x) },
+        NyqStatus::NYQ_ERR_OUT_OF_RANGE
+    );
 }

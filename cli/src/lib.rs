@@ -16,6 +16,7 @@ pub mod compare;
 pub mod converge;
 pub mod filter;
 pub mod genz;
+pub mod mask;
 pub mod memory;
 pub mod output;
 pub mod plot;

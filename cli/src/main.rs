@@ -5,7 +5,7 @@
 #![forbid(unsafe_code)]
 
 use clap::{Parser, Subcommand};
-use nyquist_cli::{analyze, compare, converge, filter, points, render};
+use nyquist_cli::{analyze, compare, converge, filter, mask, points, render};
 use std::process::ExitCode;
 
 /// Sampling and reconstruction for image synthesis: point sets, filters, test renders,
@@ -62,6 +62,11 @@ enum Command {
     ///
     /// Example: nyquist converge --samplers random,stratified,sobol --runs 64 --plot conv.png
     Converge(converge::ConvergeArgs),
+    /// Generate a blue-noise threshold mask (void-and-cluster): PNG (8 or 16 bits) and
+    /// OpenEXR, 1 to 4 decorrelated channels, tileable.
+    ///
+    /// Example: nyquist mask --size 128 --channels 4 -o mask.png -o mask.exr
+    Mask(mask::MaskArgs),
 }
 
 fn main() -> ExitCode {
@@ -81,6 +86,7 @@ fn main() -> ExitCode {
         Command::Compare(args) => compare::run(args),
         Command::Analyze(args) => analyze::run(args),
         Command::Converge(args) => converge::run(args),
+        Command::Mask(args) => mask::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

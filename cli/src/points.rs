@@ -2,6 +2,9 @@
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
+use nyquist::analysis::Topology;
+use nyquist::bluenoise::PoissonDisk;
+use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sequence::{
     Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, Pmj02, Sequence, Sobol,
@@ -54,6 +57,26 @@ pub enum SamplerName {
     /// Progressive multi-jittered (0,2) sequence (two dimensions; --seed picks the Owen
     /// scramble, 0 the baked table itself); with --spp, shuffled and scrambled per pixel.
     Pmj02,
+    /// Fibonacci lattice (two dimensions; --count a Fibonacci number, default 21; --seed not 0
+    /// picks a Cranley–Patterson rotation).
+    Fibonacci,
+    /// Korobov rank-1 lattice of --count points (at most 4096), its multiplier the minimiser of
+    /// the P2 criterion (--seed not 0 picks a Cranley–Patterson rotation).
+    Korobov,
+    /// Roberts' R_d Kronecker sequence (R2 in two dimensions; --seed not 0 picks a
+    /// Cranley–Patterson rotation in place of the start ½).
+    #[value(name = "rd", alias = "r2")]
+    Rd,
+    /// Blue-noise dithered sampling: the zero-two set of pixel (0, 0) shifted per pixel by the
+    /// built-in 64 × 64 blue-noise mask (pixel sampler: --spp).
+    #[value(name = "bluenoise-dithered")]
+    BluenoiseDithered,
+    /// Maximal Poisson-disk set on the unit torus (Bridson's algorithm and a fill pass): about
+    /// --count points, at least r = 0.78·√(2/(√3·count)) apart (two dimensions).
+    PoissonDisk,
+    /// Bridson's Poisson-disk set in the unit square, not maximal: the radius of poisson-disk
+    /// for --count, so fewer points (two dimensions).
+    Bridson,
 }
 
 /// Output formats of `points`.
@@ -254,7 +277,8 @@ fn max_dims(sampler: SamplerName) -> Option<u32> {
     use SamplerName as S;
     match sampler {
         S::Vdc => Some(VanDerCorput.dims()),
-        S::ZeroTwo | S::Pmj02 => Some(2),
+        S::ZeroTwo | S::Pmj02 | S::Fibonacci | S::PoissonDisk | S::Bridson => Some(2),
+        S::Korobov | S::Rd => Some(1024),
         S::Halton | S::HaltonZaremba => Some(nyquist::radical::PRIME_COUNT),
         S::Hammersley | S::HammersleyZaremba => Some(nyquist::radical::PRIME_COUNT + 1),
         S::Sobol | S::OwenSobol => Some(nyquist::sequence::SOBOL_DIMS),
@@ -270,7 +294,10 @@ pub fn pixel_mode(args: &PointsArgs) -> bool {
         || args.resolution.is_some()
         || matches!(
             args.sampler,
-            SamplerName::BestCandidate | SamplerName::Adaptive | SamplerName::ZSobol
+            SamplerName::BestCandidate
+                | SamplerName::Adaptive
+                | SamplerName::ZSobol
+                | SamplerName::BluenoiseDithered
         )
 }
 
@@ -416,7 +443,36 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
             let min = (inner.samples_per_pixel() / 4).max(1);
             Box::new(AdaptiveSampler::new(inner, min, 0.1).map_err(err)?)
         }
-        S::Lhs | S::Vdc | S::HaltonZaremba | S::HammersleyZaremba => bail!(
+        S::Fibonacci | S::Rd => {
+            let which = if args.sampler == S::Fibonacci {
+                "fibonacci"
+            } else {
+                "r2"
+            };
+            let s = nyquist::sampler::NamedSampler::new(which, [1, 1], spp, args.seed)
+                .map_err(|e| anyhow::anyhow!("--sampler {n}: {e}"))?;
+            if s.samples_per_pixel() != spp {
+                crate::output::note(&format!(
+                    "{n} uses a Fibonacci number of samples: --spp {spp} rounded up to {}",
+                    s.samples_per_pixel()
+                ));
+            }
+            Box::new(s)
+        }
+        S::BluenoiseDithered => {
+            notice(ZeroTwoSampler::rounded_spp(spp));
+            Box::new(nyquist::sampler::DitheredSampler::new(
+                ZeroTwoSampler::new(spp, args.seed).map_err(err)?,
+                nyquist::sampler::MaskView::builtin(),
+            ))
+        }
+        S::Lhs
+        | S::Vdc
+        | S::HaltonZaremba
+        | S::HammersleyZaremba
+        | S::Korobov
+        | S::PoissonDisk
+        | S::Bridson => bail!(
             "{n} is a point set, not a pixel sampler: drop --spp/--pixel/--resolution and use --count"
         ),
     };
@@ -455,7 +511,8 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
     let count = match (args.count, args.sampler, args.grid) {
         (Some(0), ..) => bail!("--count 0: need at least one point"),
         (Some(c), ..) => c,
-        (None, S::Hammersley | S::HammersleyZaremba, _) => {
+        (None, S::Fibonacci, _) => 21,
+        (None, S::Hammersley | S::HammersleyZaremba | S::Korobov, _) => {
             bail!(
                 "--count is required for {}: the set's size is part of its definition",
                 name(args.sampler)
@@ -568,7 +625,75 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
             };
             fill(&set, args, &mut out)?
         }
-        S::BestCandidate | S::Adaptive | S::ZSobol => {
+        S::Fibonacci => {
+            let lattice = FibonacciLattice::at_least(count).map_err(set_error)?;
+            let n = lattice.point_count().unwrap_or(count);
+            if n != count {
+                bail!("--count {count} is not a Fibonacci number (the next is {n})");
+            }
+            let lattice = if args.seed == 0 {
+                lattice
+            } else {
+                lattice.rotated(args.seed)
+            };
+            fill(&lattice, args, &mut out)?
+        }
+        S::Korobov => {
+            let lattice = Korobov::searched(count, dims).map_err(|e| match e {
+                nyquist::Error::OutOfRange { what: "n" } => anyhow::anyhow!(
+                    "--count {count}: korobov searches its multiplier for at most 4096 points"
+                ),
+                e => set_error(e),
+            })?;
+            let lattice = if args.seed == 0 {
+                lattice
+            } else {
+                lattice.rotated(args.seed)
+            };
+            fill(&lattice, args, &mut out)?
+        }
+        S::PoissonDisk | S::Bridson => {
+            if args.skip != 0 {
+                bail!(
+                    "--skip applies to sequences and random, not to {}",
+                    name(args.sampler)
+                );
+            }
+            let (topology, maximal) = match args.sampler {
+                S::PoissonDisk => (Topology::Torus, true),
+                _ => (Topology::Square, false),
+            };
+            let count = u32::try_from(count)
+                .map_err(|_| anyhow::anyhow!("--count {count}: too many for a Poisson-disk set"))?;
+            let pd = PoissonDisk::with_count(count, topology, args.seed).map_err(|e| {
+                anyhow::anyhow!(
+                    "--count {count}: {}: {e} (at most about 1.2 million points)",
+                    name(args.sampler)
+                )
+            })?;
+            let pd = if maximal { pd.maximal() } else { pd };
+            let (g, a) = pd.scratch_len();
+            let mut pts = vec![0.0f64; 2 * g];
+            let n = pd
+                .generate(&mut pts, &mut vec![0; g], &mut vec![0; a])
+                .map_err(set_error)?;
+            crate::output::note(&format!(
+                "{}: {n} points at least {} apart",
+                name(args.sampler),
+                pd.radius()
+            ));
+            out = pts[..2 * n].iter().map(|&v| v as f32).collect();
+        }
+        S::Rd => {
+            let seq = Kronecker::new(dims).map_err(set_error)?;
+            let seq = if args.seed == 0 {
+                seq
+            } else {
+                seq.rotated(args.seed)
+            };
+            fill(&seq, args, &mut out)?
+        }
+        S::BestCandidate | S::Adaptive | S::ZSobol | S::BluenoiseDithered => {
             bail!("{} is a pixel sampler: give --spp", name(args.sampler))
         }
     }

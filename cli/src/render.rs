@@ -54,6 +54,16 @@ pub enum SamplerName {
     ZSobol,
     /// Progressive multi-jittered (0,2) points, shuffled and Owen-scrambled per pixel.
     Pmj02,
+    /// Blue-noise dithered: one zero-two set for every pixel, toroidally shifted by a 64 × 64
+    /// blue-noise mask, so the error is blue noise (spp rounded up to a power of two).
+    #[value(name = "bluenoise-dithered")]
+    BluenoiseDithered,
+    /// The Fibonacci lattice per dimension pair, Cranley–Patterson rotated per pixel and pair
+    /// (spp rounded up to a Fibonacci number).
+    Fibonacci,
+    /// Roberts' R2 per dimension pair, rotated per pixel and pair.
+    #[value(name = "r2")]
+    R2,
 }
 
 impl SamplerName {
@@ -581,13 +591,46 @@ pub struct RenderArgs {
     /// Print the metrics as one JSON object (implies --metrics).
     #[arg(long)]
     pub json: bool,
+    /// Also write the error image, the render minus the same filter's converged reference, as
+    /// an 8-bit grey PNG: ½ + 4·error (mid grey is no error; ±0.125 reach white and black).
+    #[arg(long, value_name = "FILE.png")]
+    pub error: Option<PathBuf>,
+}
+
+/// Gain of `render --error`: grey level `½ + ERROR_GAIN · error`.
+pub const ERROR_GAIN: f64 = 4.0;
+
+/// Writes `½ + ERROR_GAIN · (image − reference)` (first channel) as an 8-bit grey PNG.
+fn write_error_png(path: &std::path::Path, image: &Image, reference: &[f64]) -> Result<()> {
+    let bytes: Vec<u8> = image
+        .data()
+        .chunks_exact(3)
+        .zip(reference)
+        .map(|(p, r)| {
+            let g = 0.5 + ERROR_GAIN * (f64::from(p[0]) - r);
+            (g.clamp(0.0, 1.0) * 255.0).round() as u8
+        })
+        .collect();
+    crate::output::write_atomic(path, |w| {
+        let mut enc = png::Encoder::new(w, image.width(), image.height());
+        enc.set_color(png::ColorType::Grayscale);
+        enc.set_depth(png::BitDepth::Eight);
+        let mut writer = enc.write_header().context("PNG header")?;
+        writer.write_image_data(&bytes).context("PNG data")?;
+        writer.finish().context("PNG end")?;
+        Ok(())
+    })
+    .map_err(|e| anyhow!("{}", format!("{e:#}").replace("--output", "--error")))
 }
 
 /// Runs `nyquist render`.
 pub fn run(args: &RenderArgs) -> Result<()> {
     let metrics = args.metrics || args.json;
-    if args.output.is_none() && !metrics {
-        bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics or both");
+    if args.output.is_none() && !metrics && args.error.is_none() {
+        bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics, --error FILE.png");
+    }
+    if let Some(p) = &args.error {
+        check_output(p, "--error", &["png"])?;
     }
     if let Some(p) = &args.output {
         check_output(p, "--output", &["png", "exr", "pfm"])?;
@@ -596,8 +639,13 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed, args.scramble)?;
     if sampler.samples_per_pixel() != args.spp {
         eprintln!(
-            "nyquist: note: --sampler {} uses a power-of-two spp: --spp {} rounded up to {}",
+            "nyquist: note: --sampler {} uses {}: --spp {} rounded up to {}",
             args.sampler.name(),
+            if args.sampler == SamplerName::Fibonacci {
+                "a Fibonacci number of samples"
+            } else {
+                "a power-of-two spp"
+            },
             args.spp,
             sampler.samples_per_pixel()
         );
@@ -640,6 +688,11 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         crate::output::write_atomic(p, |w| {
             Ok(nyquist_film::output::write_image(w, &r.image, format)?)
         })?;
+    }
+    if let Some(p) = &args.error {
+        let filtered = reference(args.scene, args.size, Some(&args.filter), threads)?
+            .with_context(|| format!("--error: no reference for --scene {}", args.scene.name()))?;
+        write_error_png(p, &r.image, &filtered)?;
     }
     if metrics {
         let means = reference(args.scene, args.size, None, threads)?

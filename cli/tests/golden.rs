@@ -4,7 +4,8 @@
 //! zone-plate `nyquist render` (written as PFM, the file's bytes hashed) per filter and per
 //! sampler, and the plots (`converge --plot`, `filter --plot`, `analyze --spectrum` as PNG and
 //! SVG, a small `compare` sheet: the files' bytes, so the embedded font and the drawing are
-//! pinned), all with fixed counts, dimensions, seeds and thread counts.
+//! pinned), `nyquist mask` as PNG and OpenEXR, all with fixed counts, dimensions, seeds and
+//! thread counts.
 //!
 //! After an intended change, re-bless and review the diff of `hashes.txt`:
 //! `NYQUIST_BLESS=1 cargo test -p nyquist-cli --test golden`.
@@ -62,6 +63,10 @@ fn runs() -> Vec<Run> {
         ("hammersley-zaremba", "3"),
         ("zero-two", "2"),
         ("sobol", "3"),
+        ("korobov", "3"),
+        ("rd", "3"),
+        ("poisson-disk", "2"),
+        ("bridson", "2"),
     ] {
         out.push(run(
             format!("points/{sampler}"),
@@ -92,6 +97,41 @@ fn runs() -> Vec<Run> {
             "1000",
         ],
     ));
+    out.push(run(
+        "points/fibonacci",
+        &[
+            "points",
+            "--sampler",
+            "fibonacci",
+            "--count",
+            "55",
+            "--seed",
+            "7",
+        ],
+    ));
+    // Masks: a 16 × 16 two-channel mask as 8- and 16-bit PNG and as OpenEXR.
+    for (name, bits, file) in [
+        ("mask/png8", "8", "{out.png}"),
+        ("mask/png16", "16", "{out.png}"),
+        ("mask/exr", "8", "{out.exr}"),
+    ] {
+        out.push(run(
+            name,
+            &[
+                "mask",
+                "--size",
+                "16",
+                "--channels",
+                "2",
+                "--seed",
+                "7",
+                "--bits",
+                bits,
+                "-o",
+                file,
+            ],
+        ));
+    }
     // Pixel samplers: the 16 samples of pixel (3, 5), 4 dimensions each.
     // Every sampler the CLI accepts by name.
     for sampler in nyquist::sampler::NAMES {
@@ -253,6 +293,7 @@ fn hash_of(name: &str, args: &[String]) -> u64 {
                 "{out}" => "pfm",
                 "{out.png}" => "png",
                 "{out.svg}" => "svg",
+                "{out.exr}" => "exr",
                 _ => return a.clone(),
             };
             let path = temp_path(name, ext);

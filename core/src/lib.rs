@@ -43,10 +43,12 @@
 extern crate std;
 
 pub mod analysis;
+pub mod bluenoise;
 pub mod compact;
 pub mod error;
 pub mod filter;
 pub mod hash;
+pub mod lattice;
 pub mod math;
 pub mod radical;
 pub mod rng;

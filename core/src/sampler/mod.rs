@@ -23,6 +23,8 @@
 //! | [`RandomSampler`] | independent PCG32 values |
 //! | [`AdaptiveSampler`] | wraps another: minimum spp, maximum where the first samples disagree |
 //! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
+//! | [`LatticeSampler`] | the Fibonacci lattice or R2 per dimension pair, rotated per pixel and pair |
+//! | [`DitheredSampler`] | one point set in every pixel, toroidally shifted by a blue-noise mask |
 //! | [`OwenSobolSampler`] | Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed |
 //! | [`ZSobolSampler`] | Sobol along a hash-permuted Morton curve: blue-noise error across pixels |
 //! | [`Pmj02Sampler`] | baked progressive multi-jittered (0,2) points, index-shuffled and Owen-scrambled per pixel and dimension |
@@ -100,8 +102,10 @@ fn values_one_at_a_time(dim: u32, out: &mut [f32], sample: impl Fn(u32) -> f32) 
 
 mod adaptive;
 pub mod best_candidate;
+mod dithered;
 mod halton;
 mod hammersley;
+mod lattice;
 mod named;
 mod owen_sobol;
 mod pmj02;
@@ -115,8 +119,10 @@ pub mod layout;
 
 pub use adaptive::{ADAPTIVE_CHANNELS, AdaptiveSampler};
 pub use best_candidate::BestCandidateSampler;
+pub use dithered::{DITHER_MASK_RANKS, DitheredSampler, MaskView};
 pub use halton::{HaltonSampler, HaltonScramble};
 pub use hammersley::HammersleySampler;
+pub use lattice::LatticeSampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use named::{NAMES, NamedSampler, NamedSamplerError, SCRAMBLE_NAMES};
 pub use owen_sobol::OwenSobolSampler;

@@ -4,9 +4,9 @@
 use core::fmt;
 
 use super::{
-    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler,
-    StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
+    AdaptiveSampler, BestCandidateSampler, DitheredSampler, HaltonSampler, HaltonScramble,
+    HammersleySampler, Jitter, LatticeSampler, MaskView, OwenSobolSampler, Pmj02Sampler,
+    RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
 };
 use crate::scramble::Scramble;
 
@@ -14,13 +14,13 @@ use crate::scramble::Scramble;
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, NAMES};
-/// assert_eq!(NAMES.len(), 12);
+/// assert_eq!(NAMES.len(), 15);
 /// for name in NAMES {
 ///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
 ///     assert_eq!(s.name(), name);
 /// }
 /// ```
-pub const NAMES: [&str; 12] = [
+pub const NAMES: [&str; 15] = [
     "random",
     "uniform",
     "stratified",
@@ -33,6 +33,9 @@ pub const NAMES: [&str; 12] = [
     "owen-sobol",
     "zsobol",
     "pmj02",
+    "bluenoise-dithered",
+    "fibonacci",
+    "r2",
 ];
 
 /// The names of [`NAMES`] that take a scramble through [`NamedSampler::with_scramble`].
@@ -150,6 +153,10 @@ pub enum NamedSampler {
     ZSobol(ZSobolSampler),
     /// `pmj02`.
     Pmj02(Pmj02Sampler),
+    /// `bluenoise-dithered`.
+    Dithered(DitheredSampler<'static, ZeroTwoSampler>),
+    /// `fibonacci` and `r2`.
+    Lattice(LatticeSampler),
 }
 
 /// Evaluates `$body` with `$s` bound to the sampler inside `$self`.
@@ -167,6 +174,8 @@ macro_rules! delegate {
             NamedSampler::OwenSobol($s) => $body,
             NamedSampler::ZSobol($s) => $body,
             NamedSampler::Pmj02($s) => $body,
+            NamedSampler::Dithered($s) => $body,
+            NamedSampler::Lattice($s) => $body,
         }
     };
 }
@@ -188,7 +197,11 @@ impl NamedSampler {
     /// - `owen-sobol`: [`OwenSobolSampler`] (frame 0);
     /// - `zsobol`: [`ZSobolSampler`] over the image, fast-Owen scrambled (spp rounded up to a
     ///   power of two);
-    /// - `pmj02`: [`Pmj02Sampler`] (spp up to 65536).
+    /// - `pmj02`: [`Pmj02Sampler`] (spp up to 65536);
+    /// - `bluenoise-dithered`: a [`DitheredSampler`] over the `zero-two` set of pixel (0, 0),
+    ///   shifted per pixel by the built-in 64 × 64 two-channel mask ([`MaskView::builtin`]);
+    /// - `fibonacci`, `r2`: [`LatticeSampler::fibonacci`] (spp rounded up to a Fibonacci
+    ///   number) and [`LatticeSampler::r2`].
     ///
     /// The size matters to `halton`, `hammersley`, `sobol` and `zsobol` only, but must be non-zero for
     /// all. Allocates: no.
@@ -269,6 +282,12 @@ impl NamedSampler {
                 NamedSampler::ZSobol(ZSobolSampler::new(size, spp, Scramble::FastOwen, seed)?)
             }
             "pmj02" => NamedSampler::Pmj02(Pmj02Sampler::new(spp, seed)?),
+            "bluenoise-dithered" => NamedSampler::Dithered(DitheredSampler::new(
+                ZeroTwoSampler::new(spp, seed)?,
+                MaskView::builtin(),
+            )),
+            "fibonacci" => NamedSampler::Lattice(LatticeSampler::fibonacci(spp, seed)?),
+            "r2" => NamedSampler::Lattice(LatticeSampler::r2(spp, seed)?),
             _ => return Err(NamedSamplerError::UnknownName),
         })
     }
@@ -340,6 +359,9 @@ impl NamedSampler {
             NamedSampler::OwenSobol(_) => "owen-sobol",
             NamedSampler::ZSobol(_) => "zsobol",
             NamedSampler::Pmj02(_) => "pmj02",
+            NamedSampler::Dithered(_) => "bluenoise-dithered",
+            NamedSampler::Lattice(s) if s.is_fibonacci() => "fibonacci",
+            NamedSampler::Lattice(_) => "r2",
         }
     }
 }
@@ -417,7 +439,7 @@ mod tests {
     fn names_build_the_samplers_they_name() {
         let size = [16, 16];
         for seed in [0u64, 7] {
-            let direct: [(&str, std::boxed::Box<dyn Sampler>); 12] = [
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 15] = [
                 (
                     "random",
                     std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
@@ -488,6 +510,21 @@ mod tests {
                 (
                     "pmj02",
                     std::boxed::Box::new(Pmj02Sampler::new(16, seed).unwrap()),
+                ),
+                (
+                    "bluenoise-dithered",
+                    std::boxed::Box::new(DitheredSampler::new(
+                        ZeroTwoSampler::new(16, seed).unwrap(),
+                        MaskView::builtin(),
+                    )),
+                ),
+                (
+                    "fibonacci",
+                    std::boxed::Box::new(LatticeSampler::fibonacci(16, seed).unwrap()),
+                ),
+                (
+                    "r2",
+                    std::boxed::Box::new(LatticeSampler::r2(16, seed).unwrap()),
                 ),
             ];
             for (i, (name, mut d)) in direct.into_iter().enumerate() {

@@ -6,6 +6,7 @@
 //! (`tests/fuzz_regressions.rs` in the main workspace) reports as a failure.
 
 mod analysis;
+mod bluenoise;
 mod bytes;
 mod cli_parsers;
 mod film;
@@ -17,6 +18,7 @@ mod sequences;
 mod stratify;
 
 pub use analysis::analysis;
+pub use bluenoise::bluenoise;
 pub use bytes::Bytes;
 pub use cli_parsers::cli_parsers;
 pub use film::film;
@@ -34,6 +36,7 @@ pub type Check = fn(&[u8]);
 /// `regressions/`.
 pub const TARGETS: &[(&str, Check)] = &[
     ("analysis", analysis),
+    ("bluenoise", bluenoise),
     ("cli_parsers", cli_parsers),
     ("film", film),
     ("filters", filters),

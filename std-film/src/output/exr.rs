@@ -70,6 +70,54 @@ pub fn write_exr(w: &mut dyn Write, image: &Image, precision: ExrPrecision) -> R
     Ok(())
 }
 
+/// Writes one layer of named 32-bit float channels (`planes`: name and row-major samples of
+/// `width × height` each; for example a four-channel threshold mask as R, G, B, A), ZIP
+/// compressed. Channels are stored in the alphabetical order OpenEXR requires.
+///
+/// # Errors
+/// [`Error::Format`] if there are no planes, a plane's length is not `width · height`, or the
+/// encoder fails; [`Error::Io`] if writing fails.
+///
+/// ```
+/// use nyquist_film::output::exr::write_exr_planes;
+/// let mut bytes = Vec::new();
+/// write_exr_planes(&mut bytes, 2, 1, &[("R", &[0.25, 0.75]), ("A", &[0.5, 0.0])]).unwrap();
+/// assert_eq!(&bytes[..4], &[0x76, 0x2f, 0x31, 0x01]); // the OpenEXR magic number
+/// assert!(write_exr_planes(&mut bytes, 2, 1, &[("R", &[0.25])]).is_err());
+/// ```
+pub fn write_exr_planes(
+    w: &mut dyn Write,
+    width: u32,
+    height: u32,
+    planes: &[(&str, &[f32])],
+) -> Result<(), Error> {
+    let n = width as usize * height as usize;
+    if planes.is_empty() || planes.iter().any(|(_, p)| p.len() != n) {
+        return Err(Error::Format(format!(
+            "OpenEXR: every plane needs {n} samples ({width}x{height})"
+        )));
+    }
+    let fmt = |e: ::exr::error::Error| Error::Format(format!("OpenEXR: {e}"));
+    let list: x::SmallVec<[x::AnyChannel<x::FlatSamples>; 4]> = planes
+        .iter()
+        .map(|(name, p)| x::AnyChannel::new(*name, x::FlatSamples::F32(p.to_vec())))
+        .collect();
+    let layer = x::Layer::new(
+        (width as usize, height as usize),
+        x::LayerAttributes::default(),
+        x::Encoding::SMALL_LOSSLESS,
+        x::AnyChannels::sort(list),
+    );
+    let mut buffer = Cursor::new(Vec::new());
+    x::Image::from_layer(layer)
+        .write()
+        .non_parallel()
+        .to_buffered(&mut buffer)
+        .map_err(fmt)?;
+    w.write_all(buffer.get_ref())?;
+    Ok(())
+}
+
 /// Reads the first RGB layer of an OpenEXR file (any channel precision, converted to `f32`).
 ///
 /// # Errors

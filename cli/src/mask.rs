@@ -1,0 +1,243 @@
+//! `nyquist mask`: a blue-noise threshold mask by void-and-cluster, as PNG (8 or 16 bits per
+//! channel) and OpenEXR (32-bit float values), and optionally the picture of its spectrum.
+
+use crate::output::{check_output, extension, write_atomic};
+use anyhow::{Context, Result, bail};
+use clap::Args;
+use nyquist::bluenoise::{VoidAndCluster, rank_to_value};
+use std::path::{Path, PathBuf};
+
+/// The largest side of a mask.
+pub const MAX_MASK_SIDE: u32 = 1024;
+
+/// The largest mask whose spectrum `--spectrum` draws (a direct DFT, `O(N·(W + H))`).
+pub const MAX_SPECTRUM_PIXELS: u32 = 256 * 256;
+
+/// Arguments of `nyquist mask`.
+#[derive(Debug, Args)]
+#[command(after_help = "Example: nyquist mask --size 128 --channels 4 -o mask.png -o mask.exr")]
+pub struct MaskArgs {
+    /// Mask size: `N` for N × N, or `WxH`; sides 1 to 1024.
+    #[arg(long, value_parser = parse_mask_size, default_value = "64")]
+    pub size: [u32; 2],
+    /// Channels, 1 to 4 (PNG: grey, grey + alpha, RGB, RGBA; OpenEXR: Y or R, G, B, A), each an
+    /// independent mask, decorrelated.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=4))]
+    pub channels: u32,
+    /// Seed: the same seed and size give the same mask.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Bits per PNG sample, 8 or 16: rank r of N pixels becomes ⌊r·2^bits/N⌋.
+    #[arg(long, default_value_t = 8, value_parser = parse_bits)]
+    pub bits: u8,
+    /// Write the mask here: .png (integer levels) or .exr (values (r + ½)/N as 32-bit floats);
+    /// repeat for both.
+    #[arg(short, long, required = true, value_name = "FILE.png|FILE.exr")]
+    pub output: Vec<PathBuf>,
+    /// Also write the periodogram of channel 0's values (log scale, zero frequency at the
+    /// centre) as a grey PNG; masks up to 256 × 256.
+    #[arg(long, value_name = "FILE.png")]
+    pub spectrum: Option<PathBuf>,
+}
+
+/// Parses `N` or `WxH` into a mask size.
+///
+/// ```
+/// use nyquist_cli::mask::parse_mask_size;
+/// assert_eq!(parse_mask_size("128"), Ok([128, 128]));
+/// assert_eq!(parse_mask_size("64x32"), Ok([64, 32]));
+/// assert!(parse_mask_size("0").is_err());
+/// assert!(parse_mask_size("1024x2048").is_err());
+/// ```
+pub fn parse_mask_size(s: &str) -> Result<[u32; 2], String> {
+    let bad = || format!("'{s}' is not N or WxH with sides 1 to {MAX_MASK_SIDE} (e.g. 128)");
+    let side = |t: &str| match t.trim().parse::<u32>() {
+        Ok(v) if (1..=MAX_MASK_SIDE).contains(&v) => Ok(v),
+        _ => Err(bad()),
+    };
+    // Sides up to 1024 keep every size within the core's MAX_MASK_PIXELS (2^20).
+    Ok(match s.split_once(['x', 'X']) {
+        Some((a, b)) => [side(a)?, side(b)?],
+        None => [side(s)?; 2],
+    })
+}
+
+fn parse_bits(s: &str) -> Result<u8, String> {
+    match s.trim() {
+        "8" => Ok(8),
+        "16" => Ok(16),
+        _ => Err(format!("'{s}' is not 8 or 16")),
+    }
+}
+
+/// Generates the mask's ranks, channel-major (`channels × W·H`).
+pub fn ranks(size: [u32; 2], channels: u32, seed: u64) -> Result<Vec<u32>> {
+    let vc = VoidAndCluster::new(size[0], size[1], seed).context("--size")?;
+    let (el, sl) = vc.scratch_len();
+    let mut ranks = vec![0u32; vc.pixels() * channels as usize];
+    vc.generate_channels(&mut ranks, &mut vec![0.0; el], &mut vec![0; sl])
+        .context("mask")?;
+    Ok(ranks)
+}
+
+/// Runs the subcommand.
+pub fn run(args: &MaskArgs) -> Result<()> {
+    let [w, h] = args.size;
+    for path in &args.output {
+        check_output(path, "--output", &["png", "exr"])?;
+    }
+    if let Some(path) = &args.spectrum {
+        if w * h > MAX_SPECTRUM_PIXELS {
+            bail!("--spectrum: --size {w}x{h} has more than {MAX_SPECTRUM_PIXELS} pixels");
+        }
+        check_output(path, "--spectrum", &["png"])?;
+    }
+    if args.bits != 8
+        && !args
+            .output
+            .iter()
+            .any(|p| extension(p).as_deref() == Some("png"))
+    {
+        crate::output::note("--bits applies to PNG output only");
+    }
+    let n = (w * h) as usize;
+    crate::memory::check(
+        &format!("--size {w}x{h} --channels {}", args.channels),
+        crate::memory::bytes(n as u64, 4 * u64::from(args.channels) + 24),
+    )?;
+    let ranks = ranks(args.size, args.channels, args.seed)?;
+    for path in &args.output {
+        match extension(path).as_deref() {
+            Some("png") => write_png(path, &ranks, args, n)?,
+            _ => write_exr(path, &ranks, args, n)?,
+        }
+    }
+    if let Some(path) = &args.spectrum {
+        write_spectrum(path, &ranks[..n], w as usize, h as usize)?;
+    }
+    Ok(())
+}
+
+fn write_png(path: &Path, ranks: &[u32], args: &MaskArgs, n: usize) -> Result<()> {
+    let [w, h] = args.size;
+    let channels = args.channels as usize;
+    let bits = u32::from(args.bits);
+    let mut data = Vec::with_capacity(n * channels * (bits as usize / 8));
+    for i in 0..n {
+        for c in 0..channels {
+            let r = u64::from(ranks[c * n + i]);
+            let level = (r << bits) / n as u64;
+            if bits == 8 {
+                data.push(level as u8);
+            } else {
+                data.extend_from_slice(&(level as u16).to_be_bytes());
+            }
+        }
+    }
+    write_atomic(path, |out| {
+        let mut enc = png::Encoder::new(out, w, h);
+        enc.set_color(match channels {
+            1 => png::ColorType::Grayscale,
+            2 => png::ColorType::GrayscaleAlpha,
+            3 => png::ColorType::Rgb,
+            _ => png::ColorType::Rgba,
+        });
+        enc.set_depth(if bits == 8 {
+            png::BitDepth::Eight
+        } else {
+            png::BitDepth::Sixteen
+        });
+        enc.set_compression(png::Compression::High);
+        let mut writer = enc.write_header().context("PNG header")?;
+        writer.write_image_data(&data).context("PNG data")?;
+        writer.finish().context("PNG end")?;
+        Ok(())
+    })
+}
+
+fn write_exr(path: &Path, ranks: &[u32], args: &MaskArgs, n: usize) -> Result<()> {
+    let names: &[&str] = match args.channels {
+        1 => &["Y"],
+        2 => &["R", "G"],
+        3 => &["R", "G", "B"],
+        _ => &["R", "G", "B", "A"],
+    };
+    let planes: Vec<Vec<f32>> = ranks
+        .chunks_exact(n)
+        .map(|c| c.iter().map(|&r| rank_to_value(r, n as u32)).collect())
+        .collect();
+    let list: Vec<(&str, &[f32])> = names
+        .iter()
+        .zip(&planes)
+        .map(|(name, p)| (*name, p.as_slice()))
+        .collect();
+    write_atomic(path, |out| {
+        nyquist_film::output::exr::write_exr_planes(out, args.size[0], args.size[1], &list)?;
+        Ok(())
+    })
+}
+
+/// The periodogram `|DFT(v − mean)|²/N` of a `w × h` mask's values, zero frequency at the centre.
+pub fn spectrum(ranks: &[u32], w: usize, h: usize) -> Vec<f64> {
+    let n = ranks.len();
+    let mean = (n as f64 - 1.0) / 2.0;
+    let v: Vec<f64> = ranks
+        .iter()
+        .map(|&r| (f64::from(r) - mean) / n as f64)
+        .collect();
+    let twiddle = |k: usize, m: usize| {
+        let a = -2.0 * std::f64::consts::PI * k as f64 / m as f64;
+        (a.cos(), a.sin())
+    };
+    // Rows: rows[y][fx] = Σ_x v(x, y) e^{−2πi fx x / w}.
+    let mut rows = vec![(0.0, 0.0); n];
+    for y in 0..h {
+        for fx in 0..w {
+            let (mut re, mut im) = (0.0, 0.0);
+            for x in 0..w {
+                let (c, s) = twiddle(fx * x % w, w);
+                re += v[y * w + x] * c;
+                im += v[y * w + x] * s;
+            }
+            rows[y * w + fx] = (re, im);
+        }
+    }
+    let mut power = vec![0.0; n];
+    for fy in 0..h {
+        for fx in 0..w {
+            let (mut re, mut im) = (0.0, 0.0);
+            for y in 0..h {
+                let (c, s) = twiddle(fy * y % h, h);
+                let (a, b) = rows[y * w + fx];
+                re += a * c - b * s;
+                im += a * s + b * c;
+            }
+            let (cx, cy) = ((fx + w / 2) % w, (fy + h / 2) % h);
+            power[cy * w + cx] = (re * re + im * im) / n as f64;
+        }
+    }
+    power
+}
+
+fn write_spectrum(path: &Path, ranks: &[u32], w: usize, h: usize) -> Result<()> {
+    let power = spectrum(ranks, w, h);
+    let peak = power.iter().copied().fold(0.0f64, f64::max).max(1e-300);
+    // 40 dB of range below the peak, black at −40 dB and below.
+    let data: Vec<u8> = power
+        .iter()
+        .map(|&p| {
+            let db = 10.0 * (p.max(1e-300) / peak).log10();
+            (((db + 40.0) / 40.0).clamp(0.0, 1.0) * 255.0).round() as u8
+        })
+        .collect();
+    write_atomic(path, |out| {
+        let mut enc = png::Encoder::new(out, w as u32, h as u32);
+        enc.set_color(png::ColorType::Grayscale);
+        enc.set_depth(png::BitDepth::Eight);
+        let mut writer = enc.write_header().context("PNG header")?;
+        writer.write_image_data(&data).context("PNG data")?;
+        writer.finish().context("PNG end")?;
+        Ok(())
+    })
+    .map_err(|e| anyhow::anyhow!("{}", format!("{e:#}").replace("--output", "--spectrum")))
+}
