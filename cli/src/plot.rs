@@ -29,8 +29,8 @@ pub const GRID_MINOR: RGBColor = RGBColor(242, 242, 242);
 /// Reference lines (guides, Nyquist limit, white-noise level).
 pub const GUIDE: RGBColor = RGBColor(120, 120, 120);
 
-/// Line colours, one per series (matplotlib's "tab10", repeating after ten).
-pub const PALETTE: [RGBColor; 10] = [
+/// Line colours, one per series: matplotlib's "tab10", then six darker hues, repeating after sixteen.
+pub const PALETTE: [RGBColor; 16] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
@@ -41,6 +41,13 @@ pub const PALETTE: [RGBColor; 10] = [
     RGBColor(127, 127, 127),
     RGBColor(188, 189, 34),
     RGBColor(23, 190, 207),
+    // Past ten series: darker hues, apart from the first ten.
+    RGBColor(0, 0, 0),
+    RGBColor(0, 60, 140),
+    RGBColor(150, 70, 0),
+    RGBColor(0, 100, 50),
+    RGBColor(120, 0, 70),
+    RGBColor(90, 90, 0),
 ];
 
 /// Colour of series `k`.
@@ -73,8 +80,14 @@ pub fn bold(px: f64) -> TextStyle<'static> {
 
 /// Width in pixels of `text` in the embedded font at `px`.
 pub fn text_width(text: &str, px: f64) -> u32 {
+    styled_width(text, px, FontStyle::Normal)
+}
+
+/// Width in pixels of `text` in the embedded font at `px`, in `style` (bold is about a tenth
+/// wider than regular).
+fn styled_width(text: &str, px: f64, style: FontStyle) -> u32 {
     register_fonts();
-    FontDesc::new(FontFamily::Name(FONT), px, FontStyle::Normal)
+    FontDesc::new(FontFamily::Name(FONT), px, style)
         .box_size(text)
         .map_or(0, |(w, _)| w)
 }
@@ -900,6 +913,11 @@ pub fn text_on_rgb(
 /// Breaks `text` into lines no wider than `width` pixels at `px`: at spaces, and after the
 /// commas of a long list (a single piece wider than that gets a line of its own).
 pub fn wrap(text: &str, width: u32, px: f64) -> Vec<String> {
+    wrap_measured(text, width, &|t| text_width(t, px))
+}
+
+/// [`wrap`] with the width of a line given by `measure` (the title measures in bold).
+fn wrap_measured(text: &str, width: u32, measure: &dyn Fn(&str) -> u32) -> Vec<String> {
     // Pieces with the separator that joins them to the one before: " " or "".
     let mut pieces: Vec<(&str, &str)> = Vec::new();
     for (i, word) in text.split(' ').enumerate() {
@@ -913,7 +931,7 @@ pub fn wrap(text: &str, width: u32, px: f64) -> Vec<String> {
     let mut line = String::new();
     for (sep, piece) in pieces {
         let candidate = format!("{line}{sep}{piece}");
-        if !line.is_empty() && text_width(&candidate, px) > width {
+        if !line.is_empty() && measure(&candidate) > width {
             lines.push(std::mem::take(&mut line));
             line = piece.to_owned();
         } else {
@@ -944,7 +962,7 @@ where
 {
     let mut chosen = (16.0, 1, Vec::new());
     for &(px, max_lines) in sizes {
-        let lines = wrap(text, width, px);
+        let lines = wrap_measured(text, width, &|t| styled_width(t, px, FontStyle::Bold));
         let fits = lines.len() <= max_lines;
         chosen = (px, max_lines, lines);
         if fits {
@@ -1026,6 +1044,23 @@ mod tests {
         assert_eq!(minor.len(), 16);
         assert_eq!(number(-0.5, 0.5), "−0.5");
         assert_eq!(number(2.0, 1.0), "2");
+    }
+
+    /// Titles are drawn in bold, so they are wrapped by bold widths: every line of a long
+    /// command fits, where wrapping by regular widths leaves a line wider than the figure.
+    #[test]
+    fn titles_wrap_by_their_bold_width() {
+        let text = "nyquist converge --samplers random,stratified,halton,hammersley,zero-two,sobol,\
+                    best-candidate,owen-sobol,zsobol,pmj02,bluenoise-dithered,fibonacci,r2 \
+                    --integrands disk,triangle,step,gaussian,bilinear --min-spp 16 --max-spp 4096";
+        let width = 1900;
+        let bold = |t: &str| styled_width(t, 18.0, FontStyle::Bold);
+        let lines = wrap_measured(text, width, &bold);
+        assert!(lines.iter().all(|l| bold(l) <= width), "{lines:?}");
+        assert!(
+            wrap(text, width, 18.0).iter().any(|l| bold(l) > width),
+            "the regular-width wrap no longer overflows: the test lost its point"
+        );
     }
 
     #[test]
