@@ -238,11 +238,11 @@ impl State<'_> {
         d2
     }
 
-    /// The point of the grid nearest-or-within that comes closer than `r` to `c`, if any.
-    fn fits(&self, c: [f64; 2]) -> bool {
-        let r = self.pd.radius;
+    /// Whether any stored point within `ceil(r·side) + extra` grid cells of the cell of `c`
+    /// satisfies `pred` (cells wrap on the torus and stop at the edges of the square).
+    fn any_near(&self, c: [f64; 2], extra: i64, pred: impl Fn([f64; 2]) -> bool) -> bool {
         let s = self.pd.side as i64;
-        let reach = ceil(r * s as f64) as i64;
+        let reach = ceil(self.pd.radius * s as f64) as i64 + extra;
         let [cx, cy] = self.cell_of(c).map(i64::from);
         for y in cy - reach..=cy + reach {
             for x in cx - reach..=cx + reach {
@@ -252,15 +252,20 @@ impl State<'_> {
                     Topology::Square => continue,
                 };
                 let j = self.grid[(gy * s + gx) as usize];
-                if j != EMPTY {
-                    let p = [self.points[2 * j as usize], self.points[2 * j as usize + 1]];
-                    if self.dist2(c, p) < r * r {
-                        return false;
-                    }
+                if j != EMPTY
+                    && pred([self.points[2 * j as usize], self.points[2 * j as usize + 1]])
+                {
+                    return true;
                 }
             }
         }
-        true
+        false
+    }
+
+    /// Whether `c` keeps the minimum distance: no stored point comes closer than `r`.
+    fn fits(&self, c: [f64; 2]) -> bool {
+        let r2 = self.pd.radius * self.pd.radius;
+        !self.any_near(c, 0, |p| self.dist2(c, p) < r2)
     }
 
     fn insert(&mut self, c: [f64; 2]) {
@@ -274,28 +279,11 @@ impl State<'_> {
     /// Whether the square `[x0, x0 + h] × [y0, y0 + h]` lies inside one disk of radius `r`
     /// around a point near it (its four corners do, and disks are convex).
     fn covered(&self, x0: f64, y0: f64, h: f64) -> bool {
-        let r = self.pd.radius;
-        let s = self.pd.side as i64;
-        let reach = ceil(r * s as f64) as i64 + 1;
-        let [cx, cy] = self.cell_of([x0, y0]).map(i64::from);
-        for y in cy - reach..=cy + reach {
-            for x in cx - reach..=cx + reach {
-                let (gx, gy) = match self.pd.topology {
-                    Topology::Torus => (x.rem_euclid(s), y.rem_euclid(s)),
-                    Topology::Square if (0..s).contains(&x) && (0..s).contains(&y) => (x, y),
-                    Topology::Square => continue,
-                };
-                let j = self.grid[(gy * s + gx) as usize];
-                if j != EMPTY {
-                    let p = [self.points[2 * j as usize], self.points[2 * j as usize + 1]];
-                    let corners = [[x0, y0], [x0 + h, y0], [x0, y0 + h], [x0 + h, y0 + h]];
-                    if corners.iter().all(|&q| self.dist2(q, p) < r * r) {
-                        return true;
-                    }
-                }
-            }
-        }
-        false
+        let r2 = self.pd.radius * self.pd.radius;
+        let corners = [[x0, y0], [x0 + h, y0], [x0, y0 + h], [x0 + h, y0 + h]];
+        self.any_near([x0, y0], 1, |p| {
+            corners.iter().all(|&q| self.dist2(q, p) < r2)
+        })
     }
 
     /// Darts into the square `[x0, x0 + h)²` of grid cell `cell` unless one disk covers it; when
