@@ -5,6 +5,7 @@
 //! header line) or are generated with the same flags as `points`. Everything is validated and
 //! computed before anything is written, so an error leaves no file and prints one line.
 
+use crate::clock::Stopwatch;
 use crate::points::{self, Format, PointsArgs, SamplerName, parse_grid};
 use anyhow::{Context, Result, anyhow, bail};
 use clap::{Args, ValueEnum};
@@ -15,7 +16,6 @@ use nyquist::analysis::{
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Read};
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 /// The most coordinates a CSV input may hold: 2²⁸ (as `points`).
 const MAX_VALUES: usize = 1 << 28;
@@ -114,6 +114,10 @@ pub struct AnalyzeArgs {
     /// Image size `WxH` for halton, hammersley and sobol with --spp.
     #[arg(long, value_parser = parse_grid)]
     pub resolution: Option<(u32, u32)>,
+    /// Analyse the projection onto these dimensions (0-based, comma-separated, each below the
+    /// set's dimension count), e.g. `--dims 8 --project 3,7` for Halton's pair of bases 7 and 19.
+    #[arg(long, value_delimiter = ',', value_name = "LIST")]
+    pub project: Vec<u32>,
     /// Comma-separated measures [default: star; l2-star up to 65536 points; min-distance for 2D
     /// sets].
     #[arg(
@@ -170,7 +174,31 @@ struct Row {
 
 /// Runs `nyquist analyze`.
 pub fn run(args: &AnalyzeArgs) -> Result<()> {
-    let start = Instant::now();
+    let text = report(args)?;
+    crate::output::to_stdout_or_file(None, |w| {
+        w.write_all(text.as_bytes())?;
+        Ok(())
+    })
+}
+
+/// Everything `nyquist analyze` does but print: the table (or with `--json` the JSON object,
+/// one line), after writing the `--spectrum` picture if one is asked for.
+///
+/// ```
+/// use clap::Parser;
+/// #[derive(Parser)]
+/// struct Cli { #[command(flatten)] a: nyquist_cli::analyze::AnalyzeArgs }
+/// let cli = Cli::parse_from(["x", "--sampler", "hammersley", "--count", "16", "--json",
+///                            "--measures", "star"]);
+/// let json = nyquist_cli::analyze::report(&cli.a).unwrap();
+/// // The 16-point Hammersley set's star discrepancy: 0.08984375 = 23/256 (exact, 2D sweep).
+/// assert!(json.contains("\"star\":0.08984375"), "{json}");
+/// ```
+///
+/// # Errors
+/// One line naming the flag at fault, as the command prints it.
+pub fn report(args: &AnalyzeArgs) -> Result<String> {
+    let start = Stopwatch::start();
     // `--input FILE` is the positional FILE under another spelling (clap keeps them exclusive).
     let merged;
     let args = match &args.input_flag {
@@ -196,7 +224,7 @@ pub fn run(args: &AnalyzeArgs) -> Result<()> {
         Some(path) => Some(spectrum(args, &coords, dims, &source, path)?),
         None => None,
     };
-    let seconds = start.elapsed().as_secs_f64();
+    let seconds = start.seconds();
     let n = set.len();
     let text = if args.json {
         json(
@@ -211,10 +239,7 @@ pub fn run(args: &AnalyzeArgs) -> Result<()> {
     } else {
         table(n, dims, &source, &rows, spectrum.as_ref(), seconds)
     };
-    crate::output::to_stdout_or_file(None, |w| {
-        w.write_all(text.as_bytes())?;
-        Ok(())
-    })
+    Ok(text)
 }
 
 /// Rejects flag combinations before any work.
@@ -300,8 +325,58 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
     Ok(())
 }
 
-/// The points (flat `f64`), their dimension count and a description of where they came from.
-fn load(args: &AnalyzeArgs, seed: u64) -> Result<(Vec<f64>, usize, String)> {
+/// The points `analyze` measures (flat `f64`), their dimension count and a description of where
+/// they came from: generated (with `--sampler`) or read, then projected onto `--project`'s
+/// dimensions if given.
+///
+/// ```
+/// use clap::Parser;
+/// #[derive(Parser)]
+/// struct Cli { #[command(flatten)] a: nyquist_cli::analyze::AnalyzeArgs }
+/// let cli = Cli::parse_from(["x", "--sampler", "halton", "--count", "4", "--project", "2,0"]);
+/// let (coords, dims, source) = nyquist_cli::analyze::load(&cli.a, 0).unwrap();
+/// assert_eq!(dims, 2);
+/// // Point 1 of Halton: bases 2, 3, 5 give (1/2, 1/3, 1/5); the projection keeps (1/5, 1/2).
+/// assert_eq!(&coords[2..4], &[0.2f32 as f64, 0.5]);
+/// assert!(source.ends_with("--project 2,0"), "{source}");
+/// ```
+///
+/// # Errors
+/// One line naming the flag at fault: an unreadable input, a bad CSV, a sampler that refuses
+/// its flags, or a `--project` dimension the set does not have.
+pub fn load(args: &AnalyzeArgs, seed: u64) -> Result<(Vec<f64>, usize, String)> {
+    let (coords, dims, mut source) = load_all(args, seed)?;
+    if args.project.is_empty() {
+        return Ok((coords, dims, source));
+    }
+    for (i, &k) in args.project.iter().enumerate() {
+        if k as usize >= dims {
+            bail!(
+                "--project {k}: the set has {dims} dimension{} (0 ..= {}){}",
+                if dims == 1 { "" } else { "s" },
+                dims - 1,
+                if args.sampler.is_some() && args.dims.is_none() {
+                    ""
+                } else {
+                    "; give a larger --dims"
+                }
+            );
+        }
+        if args.project[..i].contains(&k) {
+            bail!("--project {k}: dimension {k} is given twice");
+        }
+    }
+    let picked: Vec<f64> = coords
+        .chunks_exact(dims)
+        .flat_map(|p| args.project.iter().map(|&k| p[k as usize]))
+        .collect();
+    let list: Vec<String> = args.project.iter().map(u32::to_string).collect();
+    let _ = write!(source, " --project {}", list.join(","));
+    Ok((picked, args.project.len(), source))
+}
+
+/// The points before projection.
+fn load_all(args: &AnalyzeArgs, seed: u64) -> Result<(Vec<f64>, usize, String)> {
     if let Some(sampler) = args.sampler {
         let (pts, dims) = generate(args, sampler, seed)?;
         let mut source = format!("{} --count {}", points::name(sampler), pts.len() / dims);
@@ -337,10 +412,17 @@ fn load(args: &AnalyzeArgs, seed: u64) -> Result<(Vec<f64>, usize, String)> {
 
 /// Generates one realisation with `points`' code.
 fn generate(args: &AnalyzeArgs, sampler: SamplerName, seed: u64) -> Result<(Vec<f32>, usize)> {
+    // Without --dims, a projection asks for as many dimensions as its largest index needs.
+    let dims = args.dims.or_else(|| {
+        args.project
+            .iter()
+            .max()
+            .map(|&k| k.saturating_add(1).max(2))
+    });
     let pa = PointsArgs {
         sampler,
         count: args.count,
-        dims: args.dims,
+        dims,
         seed,
         skip: args.skip.unwrap_or(0),
         grid: args.grid,
@@ -448,7 +530,7 @@ fn measure_name(m: Measure) -> String {
 
 /// Computes one measure (one or two table rows).
 fn measure(args: &AnalyzeArgs, set: &PointSet<'_>, m: Measure) -> Result<Vec<Row>> {
-    let t = Instant::now();
+    let t = Stopwatch::start();
     let n = set.len() as f64;
     let disc = |label, key, v: f64, method: &str| Row {
         label,
@@ -456,7 +538,7 @@ fn measure(args: &AnalyzeArgs, set: &PointSet<'_>, m: Measure) -> Result<Vec<Row
         value: format!("{v:.6e}"),
         scaled: format!("{:.6}", v * n),
         method: method.to_owned(),
-        seconds: t.elapsed().as_secs_f64(),
+        seconds: t.seconds(),
     };
     Ok(match m {
         Measure::Star => vec![star(args, set)?],
@@ -490,7 +572,7 @@ fn measure(args: &AnalyzeArgs, set: &PointSet<'_>, m: Measure) -> Result<Vec<Row
             };
             let d = analysis::min_distance(set, topology, &mut scratch)
                 .map_err(|e| anyhow!("min-distance: {e}"))?;
-            let seconds = t.elapsed().as_secs_f64();
+            let seconds = t.seconds();
             let (dk, rk, where_) = if torus {
                 ("min-distance-torus", "rho-torus", "torus")
             } else {
@@ -524,7 +606,7 @@ fn measure(args: &AnalyzeArgs, set: &PointSet<'_>, m: Measure) -> Result<Vec<Row
 
 /// The star discrepancy by the method `--star-method` picks.
 fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
-    let t = Instant::now();
+    let t = Stopwatch::start();
     let (n, d) = (set.len(), set.dims());
     let exact = |scratch_len: Option<usize>| -> Result<Option<(f64, &'static str)>> {
         let len = scratch_len.ok_or_else(|| anyhow!("star: too many points"))?;
@@ -574,7 +656,7 @@ fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
             value: format!("{v:.6e}"),
             scaled: format!("{:.6}", v * n_f),
             method: method.to_owned(),
-            seconds: t.elapsed().as_secs_f64(),
+            seconds: t.seconds(),
         });
     }
     let m = args.star_grid.unwrap_or_else(|| auto_grid(d));
@@ -595,7 +677,7 @@ fn star(args: &AnalyzeArgs, set: &PointSet<'_>) -> Result<Row> {
         value: format!("[{lower:.4e}, {upper:.4e}]"),
         scaled: format!("[{:.3}, {:.3}]", lower * n_f, upper * n_f),
         method: format!("bracket, grid {m}^{d} (large N·d)"),
-        seconds: t.elapsed().as_secs_f64(),
+        seconds: t.seconds(),
     })
 }
 
@@ -637,23 +719,18 @@ fn spectrum(
     source: &str,
     path: &Path,
 ) -> Result<SpectrumInfo> {
-    let t = Instant::now();
-    if dims < 2 {
-        bail!("--spectrum: needs points with at least 2 dimensions, the set has 1");
-    }
+    let t = Stopwatch::start();
     let freq = args.freq.unwrap_or(DEFAULT_FREQ);
-    let mut pg = nyquist_film::periodogram::Periodogram::new(freq)
-        .map_err(|e| anyhow!("--freq {freq}: {e}"))?;
-    // A bar over the realisations, shown when the work passes a second (large sets or --freq).
     let total = if args.sampler.is_some() {
         args.realisations.max(1)
     } else {
         1
     };
+    // A bar over the realisations, shown when the work passes a second (large sets or --freq).
     let progress =
         crate::progress::Progress::with_unit(u64::from(total), "spectrum", "realisations");
     let side = 2 * u64::from(freq) + 1;
-    let n = (coords.len() / dims) as u64;
+    let n = (coords.len() / dims.max(1)) as u64;
     let terms = u64::from(total) as f64 * n as f64 * (side * side) as f64;
     if terms > LARGE_SPECTRUM {
         eprintln!(
@@ -662,25 +739,8 @@ fn spectrum(
         );
         progress.show_now();
     }
-    pg.add(&pairs_of(coords, dims))
-        .map_err(|e| anyhow!("--spectrum: {e}"))?;
-    progress.inc(1);
-    let mut identical = false;
-    if let Some(sampler) = args.sampler {
-        let seed = args.seed.unwrap_or(0);
-        for k in 1..args.realisations {
-            let (pts, d) = generate(args, sampler, seed.wrapping_add(u64::from(k)))?;
-            let c: Vec<f64> = pts.iter().map(|&v| f64::from(v)).collect();
-            if k == 1 && c == coords {
-                identical = true;
-            }
-            pg.add(&pairs_of(&c, d))
-                .map_err(|e| anyhow!("--spectrum: {e}"))?;
-            progress.inc(1);
-        }
-    }
+    let (s, identical) = periodogram(args, coords, dims, &mut |_, _| progress.inc(1))?;
     progress.finish();
-    let s = pg.spectrum().map_err(|e| anyhow!("--spectrum: {e}"))?;
     let n = coords.len() / dims;
     let title = match args.sampler {
         Some(_) => format!("nyquist analyze --sampler {source}"),
@@ -702,8 +762,64 @@ fn spectrum(
         identical,
         radial_mean: s.radial_mean.clone(),
         anisotropy_db: s.anisotropy_db.clone(),
-        seconds: t.elapsed().as_secs_f64(),
+        seconds: t.seconds(),
     })
+}
+
+/// The periodogram `--spectrum` draws: of the first two coordinates of `coords` (the points
+/// [`load`] returned for `args`), averaged with `--realisations − 1` more generated sets (seeds
+/// `seed + 1, …`), with `--freq`'s grid; and whether the second realisation equalled the first
+/// (a set that ignores its seed). `progress(done, total)` is called after each realisation.
+///
+/// ```
+/// use clap::Parser;
+/// #[derive(Parser)]
+/// struct Cli { #[command(flatten)] a: nyquist_cli::analyze::AnalyzeArgs }
+/// let cli = Cli::parse_from(["x", "--sampler", "random", "--count", "64", "--freq", "4",
+///                            "--realisations", "3"]);
+/// let (coords, dims, _) = nyquist_cli::analyze::load(&cli.a, 0).unwrap();
+/// let (s, identical) = nyquist_cli::analyze::periodogram(&cli.a, &coords, dims, &mut |_, _| {}).unwrap();
+/// assert_eq!((s.max_freq, s.realisations, identical), (4, 3, false));
+/// assert_eq!(s.radial_mean[0], 64.0); // DC: the mean of |Σ 1|² / N = N
+/// ```
+///
+/// # Errors
+/// `--spectrum: …` for a 1-D set, `--freq …` for a grid the periodogram refuses.
+pub fn periodogram(
+    args: &AnalyzeArgs,
+    coords: &[f64],
+    dims: usize,
+    progress: &mut dyn FnMut(u32, u32),
+) -> Result<(nyquist_film::periodogram::Spectrum, bool)> {
+    if dims < 2 {
+        bail!("--spectrum: needs points with at least 2 dimensions, the set has 1");
+    }
+    let freq = args.freq.unwrap_or(DEFAULT_FREQ);
+    let mut pg = nyquist_film::periodogram::Periodogram::new(freq)
+        .map_err(|e| anyhow!("--freq {freq}: {e}"))?;
+    let total = if args.sampler.is_some() {
+        args.realisations.max(1)
+    } else {
+        1
+    };
+    pg.add(&pairs_of(coords, dims))
+        .map_err(|e| anyhow!("--spectrum: {e}"))?;
+    progress(1, total);
+    let mut identical = false;
+    if args.sampler.is_some() {
+        let seed = args.seed.unwrap_or(0);
+        for k in 1..total {
+            let (c, d, _) = load(args, seed.wrapping_add(u64::from(k)))?;
+            if k == 1 && c == coords {
+                identical = true;
+            }
+            pg.add(&pairs_of(&c, d))
+                .map_err(|e| anyhow!("--spectrum: {e}"))?;
+            progress(k + 1, total);
+        }
+    }
+    let s = pg.spectrum().map_err(|e| anyhow!("--spectrum: {e}"))?;
+    Ok((s, identical))
 }
 
 fn pairs_of(c: &[f64], dims: usize) -> Vec<[f64; 2]> {
@@ -756,6 +872,7 @@ struct SpectrumPlot<'a> {
     title: String,
 }
 
+#[cfg(not(target_family = "wasm"))]
 impl crate::plot::Figure for SpectrumPlot<'_> {
     fn size(&self) -> (u32, u32) {
         (SPECTRUM_WIDTH, SPECTRUM_HEIGHT)

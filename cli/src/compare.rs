@@ -1,6 +1,7 @@
 //! `nyquist compare`: render one scene with every combination of samplers, filters and sample
 //! counts, in parallel, and write one labelled contact sheet, a Markdown table and JSON.
 
+use crate::clock::Stopwatch;
 use crate::progress::Progress;
 use crate::raster::{Canvas, LINE, text_width};
 use crate::render::{
@@ -16,7 +17,6 @@ use nyquist::sampler::{NamedSampler, SCRAMBLE_NAMES, Sampler};
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use std::time::Instant;
 
 /// Space between cells and around the sheet, in pixels.
 pub const PAD: u32 = 8;
@@ -223,7 +223,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         work,
         &format!("{count} render{}", if count == 1 { "" } else { "s" }),
     );
-    let start = Instant::now();
+    let start = Stopwatch::start();
     let means = reference(args.scene, args.size, None, threads)?
         .ok_or_else(|| anyhow!("no reference for this scene"))?;
     let mut filtered = Vec::with_capacity(filters.len());
@@ -231,7 +231,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         filtered.push(reference(args.scene, args.size, Some(f), threads)?);
     }
     let results = render_cells(args, &cells, threads, large)?;
-    let seconds = start.elapsed().as_secs_f64();
+    let seconds = start.seconds();
 
     let errors: Vec<f64> = results.iter().map(|r| rmse(&r.image, &means)).collect();
     let sampling: Vec<f64> = cells
@@ -424,29 +424,34 @@ fn render_cells(
     order.sort_by_key(|&i| std::cmp::Reverse(cells[i].sampler.samples_per_pixel()));
     let next = AtomicUsize::new(0);
     let (tx, rx) = std::sync::mpsc::channel::<(usize, Result<Rendered>)>();
-    std::thread::scope(|scope| {
-        for _ in 0..threads.min(cells.len()) {
-            let tx = tx.clone();
-            let (order, next, bar) = (&order, &next, &bar);
-            scope.spawn(move || {
-                while let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
-                    let c = &cells[i];
-                    let r = render(
-                        args.scene,
-                        args.size,
-                        &c.sampler,
-                        &args.filters.0[c.filter].1,
-                        1,
-                        &mut || bar.inc(1),
-                    );
-                    let failed = r.is_err();
-                    if tx.send((i, r)).is_err() || failed {
-                        break;
-                    }
-                }
-            });
+    let work = |tx: std::sync::mpsc::Sender<(usize, Result<Rendered>)>| {
+        while let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
+            let c = &cells[i];
+            let r = render(
+                args.scene,
+                args.size,
+                &c.sampler,
+                &args.filters.0[c.filter].1,
+                1,
+                &mut || bar.inc(1),
+            );
+            let failed = r.is_err();
+            if tx.send((i, r)).is_err() || failed {
+                break;
+            }
         }
-    });
+    };
+    if threads <= 1 {
+        // On the calling thread (WebAssembly cannot start threads).
+        work(tx.clone());
+    } else {
+        std::thread::scope(|scope| {
+            for _ in 0..threads.min(cells.len()) {
+                let tx = tx.clone();
+                scope.spawn(|| work(tx));
+            }
+        });
+    }
     drop(tx);
     bar.finish();
     let mut out: Vec<Option<Rendered>> = (0..cells.len()).map(|_| None).collect();

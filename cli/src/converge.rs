@@ -25,6 +25,7 @@
 //! assert!((-0.9..-0.2).contains(&slope), "{slope}");
 //! ```
 
+use crate::clock::Stopwatch;
 use crate::render::{default_threads, json_number, json_string};
 use anyhow::{Result, anyhow, bail};
 use clap::{Args, ValueEnum};
@@ -33,7 +34,7 @@ use nyquist::sampler::{
 };
 use std::path::PathBuf;
 use std::sync::Mutex;
-use std::time::Instant;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// erf(1) to the precision of an `f64`; digits from OEIS A099286 ("Decimal expansion of
 /// erf(1)": 0.84270079294971486934…), checked in the tests against its Maclaurin series.
@@ -367,6 +368,32 @@ impl Study {
     /// # Errors
     /// As [`Study::check`].
     pub fn run(&self, threads: usize) -> Result<Outcome> {
+        self.run_with_progress(threads, &|_, _| {})
+    }
+
+    /// [`Study::run`], calling `progress(done, total)` after each (sampler, count, run) task
+    /// (from the worker threads; on the calling thread when `threads` is 1, which starts no
+    /// thread at all).
+    ///
+    /// ```
+    /// use nyquist_cli::converge::{Integrand, Study};
+    /// use std::sync::atomic::{AtomicUsize, Ordering};
+    /// let s = Study { samplers: vec!["random".into()], integrands: vec![Integrand::Disk],
+    ///                 counts: vec![16, 32], runs: 3, seed: 0 };
+    /// let calls = AtomicUsize::new(0);
+    /// let o = s.run_with_progress(1, &|_, total| { calls.fetch_add(1, Ordering::Relaxed); assert_eq!(total, 6); })
+    ///     .unwrap();
+    /// assert_eq!(calls.into_inner(), 6);
+    /// assert_eq!(o.curves, s.run(2).unwrap().curves);
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Study::check`].
+    pub fn run_with_progress(
+        &self,
+        threads: usize,
+        progress: &(dyn Fn(usize, usize) + Sync),
+    ) -> Result<Outcome> {
         let spp = self.check()?;
         let (ns, nc, nr, ni) = (
             self.samplers.len(),
@@ -383,33 +410,40 @@ impl Study {
                 estimates.chunks_mut(ni.max(1)).enumerate().collect();
             queue.sort_by_key(|(t, _)| self.counts[(t / nr) % nc]);
             let queue = Mutex::new(queue);
-            std::thread::scope(|scope| {
-                for _ in 0..threads.clamp(1, tasks.max(1)) {
-                    scope.spawn(|| {
-                        while let Some((t, out)) = queue.lock().ok().and_then(|mut q| q.pop()) {
-                            let (s, c, r) = (t / (nc * nr), (t / nr) % nc, t % nr);
-                            let seed = run_seed(self.seed, r as u32);
-                            match build_sampler(&self.samplers[s], self.counts[c], seed) {
-                                Ok(mut sampler) => {
-                                    estimate(&mut sampler, &self.integrands, out);
-                                }
-                                Err(e) => {
-                                    if let Ok(mut f) = failure.lock() {
-                                        f.get_or_insert_with(|| {
-                                            anyhow!(
-                                                "--samplers {} at {} spp, seed {seed}: {e}",
-                                                self.samplers[s],
-                                                self.counts[c]
-                                            )
-                                        });
-                                    }
-                                    break;
-                                }
-                            }
+            let done = AtomicUsize::new(0);
+            let work = || {
+                while let Some((t, out)) = queue.lock().ok().and_then(|mut q| q.pop()) {
+                    let (s, c, r) = (t / (nc * nr), (t / nr) % nc, t % nr);
+                    let seed = run_seed(self.seed, r as u32);
+                    match build_sampler(&self.samplers[s], self.counts[c], seed) {
+                        Ok(mut sampler) => {
+                            estimate(&mut sampler, &self.integrands, out);
                         }
-                    });
+                        Err(e) => {
+                            if let Ok(mut f) = failure.lock() {
+                                f.get_or_insert_with(|| {
+                                    anyhow!(
+                                        "--samplers {} at {} spp, seed {seed}: {e}",
+                                        self.samplers[s],
+                                        self.counts[c]
+                                    )
+                                });
+                            }
+                            break;
+                        }
+                    }
+                    progress(done.fetch_add(1, Ordering::Relaxed) + 1, tasks);
                 }
-            });
+            };
+            if threads <= 1 {
+                work();
+            } else {
+                std::thread::scope(|scope| {
+                    for _ in 0..threads.min(tasks.max(1)) {
+                        scope.spawn(work);
+                    }
+                });
+            }
         }
         if let Some(e) = failure.into_inner().ok().flatten() {
             return Err(e);
@@ -599,9 +633,9 @@ pub fn run(args: &ConvergeArgs) -> Result<()> {
     let study = study_of(args)?;
     study.check()?;
     let threads = args.threads.map_or_else(default_threads, usize::from);
-    let start = Instant::now();
+    let start = Stopwatch::start();
     let outcome = study.run(threads)?;
-    let seconds = start.elapsed().as_secs_f64();
+    let seconds = start.seconds();
     if let Some(p) = &args.plot {
         let figure = Plot {
             study: &study,
@@ -618,6 +652,35 @@ pub fn run(args: &ConvergeArgs) -> Result<()> {
         w.write_all(text.as_bytes())?;
         Ok(())
     })
+}
+
+/// The study `nyquist converge ARGS --json` prints (without `--dims`), run on `threads` threads
+/// with `progress(done, total)` after each task; the same numbers whatever the thread count.
+///
+/// ```
+/// use clap::Parser;
+/// #[derive(Parser)]
+/// struct Cli { #[command(flatten)] a: nyquist_cli::converge::ConvergeArgs }
+/// let cli = Cli::parse_from(["x", "--samplers", "stratified", "--integrands", "disk",
+///                            "--min-spp", "16", "--max-spp", "256", "--runs", "8"]);
+/// let json = nyquist_cli::converge::json_report(&cli.a, 1, &|_, _| {}).unwrap();
+/// assert!(json.starts_with("{\"runs\":8,") && json.contains("\"sampler\":\"stratified\""));
+/// ```
+///
+/// # Errors
+/// As `nyquist converge` reports them (one line naming the flag).
+pub fn json_report(
+    args: &ConvergeArgs,
+    threads: usize,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<String> {
+    if args.dims.is_some() {
+        bail!("--dims: Genz's study prints a table only");
+    }
+    let study = study_of(args)?;
+    let start = Stopwatch::start();
+    let outcome = study.run_with_progress(threads, progress)?;
+    Ok(json(&study, &outcome, args, threads, start.seconds()))
 }
 
 /// A slope for the table: two decimals, or `-` where there is none.
@@ -817,6 +880,7 @@ pub struct Plot<'a> {
     pub curves: &'a [Curve],
 }
 
+#[cfg(not(target_family = "wasm"))]
 impl crate::plot::Figure for Plot<'_> {
     fn size(&self) -> (u32, u32) {
         let [w, h] = plot_size(self.study.integrands.len());

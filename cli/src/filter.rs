@@ -120,12 +120,24 @@ fn write_rows(w: &mut dyn Write, rows: &[[f32; 3]], format: Format) -> Result<()
 }
 
 /// The 1D profile along x: the separable factor, or `f(x, 0)` for a non-separable filter.
-fn profile(f: &dyn Filter, x: f32) -> f64 {
+///
+/// ```
+/// let f = nyquist::filter::FilterKind::parse("triangle").unwrap();
+/// assert_eq!(nyquist_cli::filter::profile(f.as_dyn(), 0.5), 0.5);
+/// ```
+pub fn profile(f: &dyn Filter, x: f32) -> f64 {
     f64::from(f.eval_1d(Axis::X, x).unwrap_or_else(|| f.eval(x, 0.0)))
 }
 
 /// `|F(ν)| = |∫ f(x) e^(−2πiνx) dx|` by the midpoint rule on 4096 cells over [−r, r].
-fn spectrum(f: &dyn Filter, nu: f64) -> f64 {
+///
+/// ```
+/// // The box of radius ½: |F(ν)| = |sinc(πν)|, 0 at ν = 1.
+/// let f = nyquist::filter::FilterKind::parse("box").unwrap();
+/// assert!((nyquist_cli::filter::spectrum(f.as_dyn(), 0.0) - 1.0).abs() < 1e-6);
+/// assert!(nyquist_cli::filter::spectrum(f.as_dyn(), 1.0) < 1e-6);
+/// ```
+pub fn spectrum(f: &dyn Filter, nu: f64) -> f64 {
     const CELLS: u32 = 4096;
     let r = f64::from(f.radius()[0]);
     let h = 2.0 * r / f64::from(CELLS);
@@ -155,6 +167,7 @@ struct Plot<'a> {
     filter: &'a FilterKind,
 }
 
+#[cfg(not(target_family = "wasm"))]
 impl crate::plot::Figure for Plot<'_> {
     fn size(&self) -> (u32, u32) {
         (3 * MARGIN + 2 * PANEL.0, 2 * MARGIN + HEADER + PANEL.1)

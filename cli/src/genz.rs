@@ -305,29 +305,35 @@ pub fn study(
     let mut estimates = vec![0.0f64; ns * nc * nr * nf];
     {
         let queue = Mutex::new(estimates.chunks_mut(nf).enumerate().collect::<Vec<_>>());
-        std::thread::scope(|scope| {
-            for _ in 0..threads.max(1) {
-                scope.spawn(|| {
-                    let mut x = vec![0.0; d];
-                    while let Some((t, out)) = queue.lock().ok().and_then(|mut q| q.pop()) {
-                        let (s, c, r) = (t / (nc * nr), (t / nr) % nc, t % nr);
-                        let Ok(mut sampler) =
-                            study_sampler(&samplers[s], counts[c], run_seed(seed, r as u32))
-                        else {
-                            continue;
-                        };
-                        let n = sampler.samples_per_pixel();
-                        for i in 0..n {
-                            point(&mut sampler, i, &mut x);
-                            for (o, f) in out.iter_mut().zip(&families) {
-                                *o += f.eval(&x);
-                            }
-                        }
-                        out.iter_mut().for_each(|o| *o /= f64::from(n.max(1)));
+        let work = || {
+            let mut x = vec![0.0; d];
+            while let Some((t, out)) = queue.lock().ok().and_then(|mut q| q.pop()) {
+                let (s, c, r) = (t / (nc * nr), (t / nr) % nc, t % nr);
+                let Ok(mut sampler) =
+                    study_sampler(&samplers[s], counts[c], run_seed(seed, r as u32))
+                else {
+                    continue;
+                };
+                let n = sampler.samples_per_pixel();
+                for i in 0..n {
+                    point(&mut sampler, i, &mut x);
+                    for (o, f) in out.iter_mut().zip(&families) {
+                        *o += f.eval(&x);
                     }
-                });
+                }
+                out.iter_mut().for_each(|o| *o /= f64::from(n.max(1)));
             }
-        });
+        };
+        if threads <= 1 {
+            // On the calling thread (WebAssembly cannot start threads).
+            work();
+        } else {
+            std::thread::scope(|scope| {
+                for _ in 0..threads {
+                    scope.spawn(work);
+                }
+            });
+        }
     }
     let mut curves = Vec::new();
     for (s, name) in samplers.iter().enumerate() {

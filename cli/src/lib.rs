@@ -10,8 +10,11 @@
 //! assert!(nyquist_cli::render::parse_size("0x16").is_err());
 //! ```
 #![forbid(unsafe_code)]
+// In WebAssembly the pictures are refused (`plot_unavailable.rs`), so their drawing code is unused.
+#![cfg_attr(target_family = "wasm", allow(dead_code))]
 
 pub mod analyze;
+pub mod clock;
 pub mod compare;
 pub mod converge;
 pub mod filter;
@@ -19,6 +22,10 @@ pub mod genz;
 pub mod mask;
 pub mod memory;
 pub mod output;
+#[cfg(not(target_family = "wasm"))]
+pub mod plot;
+#[cfg(target_family = "wasm")]
+#[path = "plot_unavailable.rs"]
 pub mod plot;
 pub mod points;
 pub mod progress;

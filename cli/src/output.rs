@@ -32,6 +32,7 @@ fn in_progress() -> MutexGuard<'static, Vec<PathBuf>> {
 ///
 /// # Errors
 /// If the handler cannot be registered (the operating system refuses).
+#[cfg(unix)]
 pub fn remove_temporaries_on_signals() -> Result<()> {
     use signal_hook::consts::{SIGINT, SIGTERM};
     let mut signals = signal_hook::iterator::Signals::new([SIGINT, SIGTERM])
@@ -49,6 +50,15 @@ pub fn remove_temporaries_on_signals() -> Result<()> {
             }
         })
         .map_err(|e| anyhow!("cannot start the signal thread: {e}"))?;
+    Ok(())
+}
+
+/// Where there are no POSIX signals (the browser, Windows), there is nothing to install.
+///
+/// # Errors
+/// Never.
+#[cfg(not(unix))]
+pub fn remove_temporaries_on_signals() -> Result<()> {
     Ok(())
 }
 

@@ -16,7 +16,6 @@ use plotters::style::FontStyle;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use std::ops::Range;
 use std::path::Path;
-use std::sync::Once;
 
 /// The font family every figure uses; registered from the embedded DejaVu Sans.
 pub const FONT: &str = "DejaVu Sans";
@@ -57,7 +56,7 @@ pub fn color(k: usize) -> RGBColor {
 
 /// Registers the embedded fonts with plotters (once per process).
 pub fn register_fonts() {
-    static ONCE: Once = Once::new();
+    static ONCE: std::sync::Once = std::sync::Once::new();
     ONCE.call_once(|| {
         // The bytes are a valid TrueType font (the dejavu crate's own file); a failure here
         // would show as missing text, which the tests catch.
@@ -855,59 +854,6 @@ where
         area.draw(&PathElement::new(pts, col.stroke_width(1)))?;
     }
     Ok(())
-}
-
-/// Draws `text` on an RGB buffer of `size = (w, h)` pixels (row-major) at `at = (x, y)` (the
-/// point plotters anchors text to: the baseline is `px / 2` below it), in the embedded font at
-/// `px` pixels, anti-aliased, with kerning; pixels outside the buffer are clipped.
-///
-/// The glyphs are laid out here rather than by plotters, whose bitmap text drops each glyph's
-/// left side bearing (a "1" then sits a pixel or two left of its place, so "16" reads "1 6").
-pub fn text_on_rgb(
-    rgb: &mut [u8],
-    size: (u32, u32),
-    (x, y): (i32, i32),
-    text: &str,
-    px: f64,
-    color: [u8; 3],
-) {
-    use ab_glyph::{Font, FontRef, ScaleFont, point};
-    let (w, h) = size;
-    // The bytes are the dejavu crate's TrueType file, which always parses.
-    let Ok(font) = FontRef::try_from_slice(dejavu::sans::regular()) else {
-        return;
-    };
-    let scaled = font.as_scaled(px as f32);
-    let baseline = y as f32 + px as f32 / 2.0;
-    let mut caret = x as f32;
-    let mut prev = None;
-    for c in text.chars() {
-        let id = scaled.glyph_id(c);
-        if let Some(p) = prev {
-            caret += scaled.kern(p, id);
-        }
-        prev = Some(id);
-        let glyph = id.with_scale_and_position(scaled.scale(), point(caret, baseline));
-        caret += scaled.h_advance(id);
-        let Some(outline) = font.outline_glyph(glyph) else {
-            continue;
-        };
-        let bounds = outline.px_bounds();
-        outline.draw(|gx, gy, coverage| {
-            let (px_x, px_y) = (
-                bounds.min.x as i64 + i64::from(gx),
-                bounds.min.y as i64 + i64::from(gy),
-            );
-            if px_x < 0 || px_y < 0 || px_x >= i64::from(w) || px_y >= i64::from(h) {
-                return;
-            }
-            let at = 3 * (px_y as usize * w as usize + px_x as usize);
-            let a = coverage.clamp(0.0, 1.0);
-            for (dst, &ink) in rgb[at..at + 3].iter_mut().zip(&color) {
-                *dst = (f32::from(*dst) * (1.0 - a) + f32::from(ink) * a).round() as u8;
-            }
-        });
-    }
 }
 
 /// Breaks `text` into lines no wider than `width` pixels at `px`: at spaces, and after the

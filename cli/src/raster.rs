@@ -117,7 +117,7 @@ impl Canvas {
     /// pixels outside the canvas are clipped.
     pub fn text(&mut self, x: i64, y: i64, text: &str, color: [u8; 3]) {
         let clamp = |v: i64| v.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) as i32;
-        crate::plot::text_on_rgb(
+        text_on_rgb(
             &mut self.rgb,
             (self.width, self.height),
             // plotters places the top of a tall glyph (l, d) about 0.25 em above the point given.
@@ -147,8 +147,84 @@ impl Canvas {
 }
 
 /// Pixels a line of `text` takes.
+#[cfg(not(target_family = "wasm"))]
 pub fn text_width(text: &str) -> u32 {
     crate::plot::text_width(text, TEXT_PX)
+}
+
+/// Pixels a line of `text` takes: its advances and kerning in the embedded font (where
+/// plotters, which measures natively, is not linked).
+#[cfg(target_family = "wasm")]
+pub fn text_width(text: &str) -> u32 {
+    use ab_glyph::{Font, FontRef, ScaleFont};
+    let Ok(font) = FontRef::try_from_slice(dejavu::sans::regular()) else {
+        return 0;
+    };
+    let scaled = font.as_scaled(TEXT_PX as f32);
+    let mut width = 0.0;
+    let mut prev = None;
+    for c in text.chars() {
+        let id = scaled.glyph_id(c);
+        if let Some(p) = prev {
+            width += scaled.kern(p, id);
+        }
+        width += scaled.h_advance(id);
+        prev = Some(id);
+    }
+    width.ceil() as u32
+}
+
+/// Draws `text` on an RGB buffer of `size = (w, h)` pixels (row-major) at `at = (x, y)` (the
+/// point plotters anchors text to: the baseline is `px / 2` below it), in the embedded font at
+/// `px` pixels, anti-aliased, with kerning; pixels outside the buffer are clipped.
+///
+/// The glyphs are laid out here rather than by plotters, whose bitmap text drops each glyph's
+/// left side bearing (a "1" then sits a pixel or two left of its place, so "16" reads "1 6").
+pub fn text_on_rgb(
+    rgb: &mut [u8],
+    size: (u32, u32),
+    (x, y): (i32, i32),
+    text: &str,
+    px: f64,
+    color: [u8; 3],
+) {
+    use ab_glyph::{Font, FontRef, ScaleFont, point};
+    let (w, h) = size;
+    // The bytes are the dejavu crate's TrueType file, which always parses.
+    let Ok(font) = FontRef::try_from_slice(dejavu::sans::regular()) else {
+        return;
+    };
+    let scaled = font.as_scaled(px as f32);
+    let baseline = y as f32 + px as f32 / 2.0;
+    let mut caret = x as f32;
+    let mut prev = None;
+    for c in text.chars() {
+        let id = scaled.glyph_id(c);
+        if let Some(p) = prev {
+            caret += scaled.kern(p, id);
+        }
+        prev = Some(id);
+        let glyph = id.with_scale_and_position(scaled.scale(), point(caret, baseline));
+        caret += scaled.h_advance(id);
+        let Some(outline) = font.outline_glyph(glyph) else {
+            continue;
+        };
+        let bounds = outline.px_bounds();
+        outline.draw(|gx, gy, coverage| {
+            let (px_x, px_y) = (
+                bounds.min.x as i64 + i64::from(gx),
+                bounds.min.y as i64 + i64::from(gy),
+            );
+            if px_x < 0 || px_y < 0 || px_x >= i64::from(w) || px_y >= i64::from(h) {
+                return;
+            }
+            let at = 3 * (px_y as usize * w as usize + px_x as usize);
+            let a = coverage.clamp(0.0, 1.0);
+            for (dst, &ink) in rgb[at..at + 3].iter_mut().zip(&color) {
+                *dst = (f32::from(*dst) * (1.0 - a) + f32::from(ink) * a).round() as u8;
+            }
+        });
+    }
 }
 
 #[cfg(test)]

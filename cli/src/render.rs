@@ -1,6 +1,7 @@
 //! `nyquist render`: render a built-in scene with a sampler and a reconstruction filter, write the
 //! image, and measure it against a reference.
 
+use crate::clock::Stopwatch;
 use crate::progress::Progress;
 use crate::scene::Scene;
 use anyhow::{Context, Result, anyhow, bail};
@@ -11,7 +12,6 @@ use nyquist::scramble::Scramble;
 use nyquist_film::{Film, FilmConfig, FilmStats, Image, ImageFormat, render_tiles};
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
-use std::time::Instant;
 
 /// Tile side of the film: small enough to balance two threads on a 64 × 64 image.
 pub const TILE: u32 = 16;
@@ -204,14 +204,14 @@ pub fn render(
             }
             e => anyhow!("--filter {}: {e}", filter.name()),
         })?;
-    let start = Instant::now();
+    let start = Stopwatch::start();
     render_with(&mut film, sampler, scene, size, threads, tick)
         .map_err(|e| anyhow!("render: {e}"))?;
     let (image, _) = film.image();
     Ok(Rendered {
         image,
         stats: film.stats(),
-        seconds: start.elapsed().as_secs_f64(),
+        seconds: start.seconds(),
     })
 }
 

@@ -141,8 +141,24 @@ pub fn render_tiles(
     }
     let specs = film.tiles(tile_size)?;
     let total = specs.len();
-    let next = AtomicUsize::new(0);
     let factory = film.tile_factory();
+    if threads == 1 {
+        // On the calling thread, with no thread spawned: the same tiles merged in the same
+        // order (and the only way where threads cannot be started, as in WebAssembly).
+        for (done, &spec) in specs.iter().enumerate() {
+            let ctx = TileContext {
+                index: spec.index,
+                count: total,
+                bounds: spec.bounds,
+            };
+            let mut tile = factory.tile(spec);
+            render(&mut tile, &ctx);
+            film.merge(tile)?;
+            progress(done + 1, total);
+        }
+        return Ok(());
+    }
+    let next = AtomicUsize::new(0);
     let (tx, rx) = mpsc::channel::<FilmTile>();
     std::thread::scope(|scope| -> Result<(), Error> {
         for _ in 0..threads.min(total.max(1)) {
