@@ -33,3 +33,4 @@ pub mod raster;
 pub mod render;
 pub mod scene;
 pub mod svg;
+pub mod web;

@@ -5,7 +5,7 @@
 #![forbid(unsafe_code)]
 
 use clap::{Parser, Subcommand};
-use nyquist_cli::{analyze, compare, converge, filter, mask, points, render};
+use nyquist_cli::{analyze, compare, converge, filter, mask, points, render, web};
 use std::process::ExitCode;
 
 /// Sampling and reconstruction for image synthesis: point sets, filters, test renders,
@@ -67,6 +67,11 @@ enum Command {
     ///
     /// Example: nyquist mask --size 128 --channels 4 -o mask.png -o mask.exr
     Mask(mask::MaskArgs),
+    /// Serve the browser explorer (points, spectra, aliasing, filters and convergence computed
+    /// in the page by the library compiled to WebAssembly) on a loopback address.
+    ///
+    /// Example: bash web/serve.sh (builds the site, then runs nyquist web --root SITE)
+    Web(web::WebArgs),
 }
 
 fn main() -> ExitCode {
@@ -87,6 +92,7 @@ fn main() -> ExitCode {
         Command::Analyze(args) => analyze::run(args),
         Command::Converge(args) => converge::run(args),
         Command::Mask(args) => mask::run(args),
+        Command::Web(args) => web::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

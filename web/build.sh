@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Builds the explorer: the nyquist-web module for wasm32-unknown-unknown (profile `web`: small
+# over fast) and the static page, assembled into one folder that any static server can serve.
+# Prints that folder's path on its last line. Needs only Rust: the wasm32 target is added with
+# rustup when missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if ! rustup target list --installed 2>/dev/null | grep -qx wasm32-unknown-unknown; then
+    echo "adding the wasm32-unknown-unknown target (rustup target add)" >&2
+    rustup target add wasm32-unknown-unknown >&2
+fi
+cargo build --quiet -p nyquist-web --profile web --target wasm32-unknown-unknown >&2
+target_dir=$(cargo metadata --format-version 1 --no-deps |
+    sed -n 's/.*"target_directory":"\([^"]*\)".*/\1/p')
+site="$target_dir/web-site"
+rm -rf "$site"
+mkdir -p "$site"
+cp web/www/* "$site/"
+cp "$target_dir/wasm32-unknown-unknown/web/nyquist_web.wasm" "$site/"
+echo "nyquist_web.wasm: $(wc -c <"$site/nyquist_web.wasm") bytes" >&2
+echo "$site"
