@@ -191,8 +191,8 @@ pub fn run(args: &AnalyzeArgs) -> Result<()> {
 /// let cli = Cli::parse_from(["x", "--sampler", "hammersley", "--count", "16", "--json",
 ///                            "--measures", "star"]);
 /// let json = nyquist_cli::analyze::report(&cli.a).unwrap();
-/// // The 16-point Hammersley set's star discrepancy: 0.08984375 = 23/256 (exact, 2D sweep).
-/// assert!(json.contains("\"star\":0.08984375"), "{json}");
+/// assert!(json.starts_with("{\"points\":16,\"dims\":2,"), "{json}");
+/// assert!(json.contains("\"star-method\":\"exact-2d\""), "{json}");
 /// ```
 ///
 /// # Errors

@@ -111,7 +111,7 @@ impl Integrand {
             Integrand::Disk => indicator(x * x + y * y < 2.0 / std::f64::consts::PI),
             Integrand::Triangle => indicator(y < x),
             Integrand::Step => indicator(x < std::f64::consts::FRAC_1_PI),
-            Integrand::Gaussian => (-x * x - y * y).exp(),
+            Integrand::Gaussian => libm::exp(-x * x - y * y),
             Integrand::Bilinear => x * y,
         }
     }
@@ -243,12 +243,12 @@ pub fn fit_slope(points: &[(f64, f64)]) -> Option<f64> {
         return None;
     }
     let n = points.len() as f64;
-    let mx = points.iter().map(|p| p.0.ln()).sum::<f64>() / n;
-    let my = points.iter().map(|p| p.1.ln()).sum::<f64>() / n;
+    let mx = points.iter().map(|p| libm::log(p.0)).sum::<f64>() / n;
+    let my = points.iter().map(|p| libm::log(p.1)).sum::<f64>() / n;
     let (mut sxy, mut sxx) = (0.0, 0.0);
     for &(x, y) in points {
-        let dx = x.ln() - mx;
-        sxy += dx * (y.ln() - my);
+        let dx = libm::log(x) - mx;
+        sxy += dx * (libm::log(y) - my);
         sxx += dx * dx;
     }
     (sxx > 0.0).then(|| sxy / sxx)

@@ -122,8 +122,8 @@ fn write_rows(w: &mut dyn Write, rows: &[[f32; 3]], format: Format) -> Result<()
 /// The 1D profile along x: the separable factor, or `f(x, 0)` for a non-separable filter.
 ///
 /// ```
-/// let f = nyquist::filter::FilterKind::parse("triangle").unwrap();
-/// assert_eq!(nyquist_cli::filter::profile(f.as_dyn(), 0.5), 0.5);
+/// let f = nyquist::filter::FilterKind::parse("triangle:radius=1").unwrap();
+/// assert_eq!(nyquist_cli::filter::profile(f.as_dyn(), 0.25), 0.75); // 1 − |x|
 /// ```
 pub fn profile(f: &dyn Filter, x: f32) -> f64 {
     f64::from(f.eval_1d(Axis::X, x).unwrap_or_else(|| f.eval(x, 0.0)))

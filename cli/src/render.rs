@@ -489,7 +489,7 @@ pub fn rmse(img: &Image, reference: &[f64]) -> f64 {
 
 /// Peak signal-to-noise ratio in dB for a peak of 1 (infinite for a perfect match).
 pub fn psnr(rmse: f64) -> f64 {
-    -20.0 * rmse.log10()
+    -20.0 * libm::log10(rmse)
 }
 
 /// A number for JSON: `null` where it is not finite.

@@ -107,7 +107,7 @@ fn checkerboard(x: f64, y: f64, width: f64, height: f64) -> f64 {
 /// The zone plate's radiance at film position `(x, y)` (pixels) for a `width × height` image.
 pub fn zoneplate(x: f64, y: f64, width: f64, height: f64) -> f64 {
     let (dx, dy) = (x - 0.5 * width, y - 0.5 * height);
-    0.5 + 0.5 * (std::f64::consts::PI * (dx * dx + dy * dy) / width).cos()
+    0.5 + 0.5 * libm::cos(std::f64::consts::PI * (dx * dx + dy * dy) / width)
 }
 
 /// The Fresnel integrals `(C(t), S(t))` = (∫₀ᵗ cos(πs²/2) ds, ∫₀ᵗ sin(πs²/2) ds), to about 1e-14.
@@ -170,7 +170,7 @@ pub fn fresnel(t: f64) -> (f64, f64) {
             }
         }
         h = cmul(h, (a, -a));
-        let e = ((0.5 * pix2).cos(), (0.5 * pix2).sin());
+        let e = (libm::cos(0.5 * pix2), libm::sin(0.5 * pix2));
         let one_minus = (1.0 - cmul(e, h).0, -cmul(e, h).1);
         let r = cmul((0.5, 0.5), one_minus);
         (r.0, r.1)
@@ -249,8 +249,8 @@ pub fn zoneplate_filtered_reference(
                 let f = f64::from(filter.eval_1d(ax, (u - c) as f32)?);
                 let d = u - 0.5 * len;
                 let phase = std::f64::consts::PI * d * d / w;
-                re += f * phase.cos();
-                im += f * phase.sin();
+                re += f * libm::cos(phase);
+                im += f * libm::sin(phase);
                 norm += f;
             }
             out.push(((re * h, im * h), norm * h));
@@ -300,8 +300,8 @@ mod tests {
         for i in 0..n {
             let u = (f64::from(i) + 0.5) * h;
             let p = std::f64::consts::FRAC_PI_2 * u * u;
-            c += p.cos() * h;
-            s += p.sin() * h;
+            c += libm::cos(p) * h;
+            s += libm::sin(p) * h;
         }
         (c, s)
     }

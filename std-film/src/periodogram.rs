@@ -114,7 +114,7 @@ impl Periodogram {
         let (step_re, step_im): (Vec<f64>, Vec<f64>) = xs
             .iter()
             .map(|&x| {
-                let (s, c) = (TAU * x).sin_cos();
+                let (s, c) = libm::sincos(TAU * x);
                 (c, -s)
             })
             .unzip();
@@ -131,7 +131,7 @@ impl Periodogram {
                     if col % RESEED == 0 {
                         for k in 0..n {
                             let phase = phase_turns(fx, xs[k], fy, ys[k]);
-                            let (s, c) = (TAU * phase).sin_cos();
+                            let (s, c) = libm::sincos(TAU * phase);
                             zr[k] = c;
                             zi[k] = -s;
                         }
@@ -232,7 +232,7 @@ fn radial(power: &[f64], max_freq: u32) -> (Vec<f64>, Vec<f64>) {
             if count[b] < 2 || mean[b] <= 0.0 || var[b] <= 0.0 {
                 f64::NEG_INFINITY
             } else {
-                10.0 * (var[b] / (count[b] - 1) as f64 / (mean[b] * mean[b])).log10()
+                10.0 * libm::log10(var[b] / (count[b] - 1) as f64 / (mean[b] * mean[b]))
             }
         })
         .collect();
