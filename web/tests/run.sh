@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# The explorer in headless Chromium (run by .ci/run): builds the site (web/build.sh), serves it
+# with `nyquist web` on a free loopback port, and drives every view with web/tests/browser.mjs,
+# which checks the page's numbers against the native command's, the console, and the timing
+# budgets, and writes a screenshot per view into <target>/web-shots/.
+#
+# Chromium (Debian's package) and playwright-core (npm, cached outside the repository) are
+# installed when missing; where that cannot be done the browser part prints SKIPPED and the
+# module's size check still runs.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+
+# The module carries every desktop sampler's precomputed tables (about 2.4 MB of the total, see
+# docs/web.md): this budget catches growth, it is not the size the module should have.
+wasm_budget=3300000
+playwright_version=1.64.1
+
+site=$(bash web/build.sh)
+wasm_bytes=$(wc -c <"$site/nyquist_web.wasm")
+echo "nyquist_web.wasm: $wasm_bytes bytes (budget $wasm_budget)"
+if command -v wasm-opt >/dev/null; then
+    wasm-opt -Oz --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
+        --enable-nontrapping-float-to-int "$site/nyquist_web.wasm" -o "$site/opt.wasm"
+    echo "after wasm-opt -Oz: $(wc -c <"$site/opt.wasm") bytes (not served)"
+    rm -f "$site/opt.wasm"
+fi
+[ "$wasm_bytes" -le "$wasm_budget" ] || { echo "nyquist_web.wasm is over its budget"; exit 1; }
+
+skip() {
+    echo "SKIPPED: $*; the explorer was built and its size checked, but not run in a browser"
+    exit 0
+}
+command -v node >/dev/null || skip "no node"
+chromium=${CHROMIUM:-/usr/bin/chromium}
+if [ ! -x "$chromium" ]; then
+    if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+        echo "installing Debian's chromium (apt-get)"
+        timeout 300 apt-get install -y -q chromium >/dev/null 2>&1 ||
+            { timeout 120 apt-get update -q >/dev/null 2>&1 &&
+                timeout 300 apt-get install -y -q chromium >/dev/null 2>&1; } || true
+    fi
+    [ -x "$chromium" ] || skip "Chromium is not installed and could not be installed"
+fi
+cache=${XDG_CACHE_HOME:-$HOME/.cache}/nyquist-web-test
+pw="$cache/node_modules/playwright-core/index.mjs"
+if [ ! -f "$pw" ]; then
+    mkdir -p "$cache"
+    timeout 300 npm install --silent --no-audit --no-fund --prefix "$cache" \
+        "playwright-core@$playwright_version" >/dev/null 2>&1 || true
+    [ -f "$pw" ] || skip "playwright-core could not be installed from npm"
+fi
+
+target_dir=$(dirname "$site")
+nyquist="$target_dir/debug/nyquist"
+[ -x "$nyquist" ] || cargo build --quiet -p nyquist-cli
+shots="$target_dir/web-shots"
+mkdir -p "$shots"
+log=$(mktemp)
+"$nyquist" web --root "$site" --port 0 >"$log" 2>&1 &
+server=$!
+trap 'kill "$server" 2>/dev/null || true; rm -f "$log"' EXIT
+for _ in $(seq 50); do
+    grep -q 'http://' "$log" && break
+    sleep 0.1
+done
+url=$(sed -n 's/.* on \(http:[^ ]*\) .*/\1/p' "$log")
+[ -n "$url" ] || { cat "$log"; echo "nyquist web did not start"; exit 1; }
+echo "serving on $url"
+BASE_URL=$url NYQUIST=$nyquist SHOTS=$shots CHROMIUM=$chromium PLAYWRIGHT_CORE=$pw \
+    node web/tests/browser.mjs
+echo "screenshots: $shots"
