@@ -183,7 +183,8 @@ async function main() {
     for (const [view, query] of VIEWS) {
       await page.goto(`${BASE_URL}?${query}`);
       const state = await waitReady(page);
-      if (!check(`${view}: state ready`, state === 'ready', `state ${state}: ${await page.textContent('#error')}`)) continue;
+      const why = state === 'ready' ? '' : `state ${state}: ${await page.textContent('#error')}`;
+      if (!check(`${view}: state ready`, state === 'ready', why)) continue;
       const info = await page.evaluate(() => ({
         last: window.nyquist.last,
         metrics: Object.fromEntries([...document.querySelectorAll('article:not([hidden]) [data-metric]')]

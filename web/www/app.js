@@ -318,15 +318,26 @@ async function compute(view, query) {
   setState('busy');
   const bar = $('#progress');
   bar.removeAttribute('value');
-  $('#status').textContent = `Computing ${view}…`;
+  const t0 = performance.now();
+  let count = '';
+  const tell = () => {
+    const s = (performance.now() - t0) / 1000;
+    $('#status').textContent = `Computing ${view}…${count}${s >= 1 ? ` ${s.toFixed(0)} s` : ''}`;
+  };
+  tell();
+  const clock = setInterval(() => (inflight === token ? tell() : clearInterval(clock)), 500);
   const m = await engine.run(query, {
     onProgress: (done, total) => {
       if (inflight !== token) return;
-      bar.max = Math.max(total, 1);
-      bar.value = done;
-      $('#status').textContent = `Computing ${view}… ${done} / ${total}`;
+      count = ` ${done} / ${total}`;
+      if (done > 0) {
+        bar.max = Math.max(total, 1);
+        bar.value = done;
+      }
+      tell();
     },
   });
+  clearInterval(clock);
   if (m.superseded || inflight !== token) return;
   inflight = null;
   bar.max = 1;
@@ -405,7 +416,11 @@ function drawPoints(r, p) {
   shapeSel.replaceChildren(...(shapes.length
     ? shapes.map((s) => new Option(s.replace('x', ' × ') + ' cells', s))
     : [new Option(`N = ${n} is not a power of two`, '')]));
-  const shape = shapes.includes(p.shape) ? p.shape : shapes[Math.ceil(m / 2)] ?? '';
+  if (p.shape && !shapes.includes(p.shape)) {
+    p.shape = '';
+    writeURL();
+  }
+  const shape = p.shape || (shapes[Math.ceil(m / 2)] ?? '');
   shapeSel.value = shape;
   shapeSel.disabled = !shapes.length || !overlays.has('intervals');
   const verdict = $('#points-verdict');
@@ -714,7 +729,7 @@ function drawFilters(r) {
   P.clipped(fctx, fbox, () => {
     for (let k = 0; k < n; k++) {
       const wgt = data[base + 2 * n + k];
-      fctx.fillStyle = wgt < 0 ? 'rgba(200,20,30,0.85)' : 'rgba(20,25,35,0.6)';
+      fctx.fillStyle = wgt < 0 ? 'rgba(230,120,0,0.9)' : 'rgba(20,25,35,0.6)';
       fctx.fillRect(h.x(data[base + 2 * k]) - dotSize / 2, h.y(data[base + 2 * k + 1]) - dotSize / 2,
         dotSize, dotSize);
     }
@@ -841,13 +856,17 @@ async function start() {
   names = JSON.parse(m.json);
   fillMenus();
   writeForm(state.view);
+  // Figures are sized from the panel's width: redraw when it changes.
   let resizing = 0;
-  window.addEventListener('resize', () => {
+  let width = panelWidth();
+  new ResizeObserver(() => {
+    if (panelWidth() === width) return;
+    width = panelWidth();
     clearTimeout(resizing);
     resizing = setTimeout(() => {
       if (cache[state.view] && !inflight) DRAW[state.view](cache[state.view], state.params[state.view]);
-    }, 150);
-  });
+    }, 100);
+  }).observe($('#panel'));
 }
 
 start();
