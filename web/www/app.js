@@ -222,6 +222,7 @@ function readForm(view) {
     }
   }
   if (view === 'aliasing') p.crop = state.params.aliasing.crop;
+  if (view === 'points' && !p.overlay) p.overlay = 'none';
   state.params[view] = p;
   const count = $('[data-key="count"]', box);
   if (count) count.disabled = Boolean(p.spp);
@@ -309,6 +310,12 @@ function update() {
     return;
   }
   if (inflight?.query === query) return;
+  const p = state.params[view];
+  if (view === 'convergence' && !(p.samplers && p.integrands)) {
+    showError('Pick at least one sampler and one integrand.');
+    setState('error');
+    return;
+  }
   compute(view, query);
 }
 
@@ -401,8 +408,8 @@ function drawPoints(r, p) {
   r.metrics = { ...json.analysis, count: json.count };
   const n = json.count;
   const side = Math.min(540, Math.max(320, panelWidth() - 320));
-  const ctx = P.prepare($('#points-plot'), side, side);
-  const box = { x: 56, y: 14, w: side - 72, h: side - 62 };
+  const ctx = P.prepare($('#points-plot'), side, side - 8);
+  const box = { x: 56, y: 14, w: side - 70, h: side - 70 };
   const quarter = [0, 0.25, 0.5, 0.75, 1];
   const f = P.frame(ctx, box, { xmin: 0, xmax: 1, ymin: 0, ymax: 1, xticks: quarter,
     yticks: quarter, grid: false, xlabel: `dimension ${json.x}`, ylabel: `dimension ${json.y}`,

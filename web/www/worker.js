@@ -32,6 +32,7 @@ async function load() {
 }
 
 let exportsPromise = load();
+exportsPromise.catch(() => {}); // reported with the first request
 
 function run(wasm, query) {
   const bytes = new TextEncoder().encode(query);
@@ -67,6 +68,7 @@ self.onmessage = (event) => {
     } catch (e) {
       // A trap leaves the module's state unknown: start from a fresh instance next time.
       exportsPromise = load();
+      exportsPromise.catch(() => {});
       postMessage({ id, ok: false, json: `the module failed: ${e.message}`, data: null,
         ms: performance.now() - t0 });
     }
