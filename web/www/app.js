@@ -297,23 +297,27 @@ function showError(message) {
   el.textContent = message ? message.split('\n')[0] : '';
 }
 
+/** Stops the running request, if any. */
+function cancel() {
+  if (!inflight) return;
+  engine.restart();
+  inflight = null;
+}
+
 function update() {
   writeURL();
   const view = state.view;
   const query = requestOf(view);
   if (cache[view]?.query === query) {
-    if (inflight) {
-      engine.restart();
-      inflight = null;
-    }
+    cancel();
     show(view, cache[view]);
     return;
   }
   if (inflight?.query === query) return;
   const p = state.params[view];
   if (view === 'convergence' && !(p.samplers && p.integrands)) {
-    showError('Pick at least one sampler and one integrand.');
-    setState('error');
+    cancel();
+    fail('Pick at least one sampler and one integrand.');
     return;
   }
   compute(view, query);
@@ -351,10 +355,8 @@ async function compute(view, query) {
   bar.value = 1;
   if (!m.ok) {
     delete cache[view];
-    showError(m.json);
     $('#status').textContent = `${view}: failed after ${m.ms.toFixed(0)} ms`;
-    setState('error');
-    finishFirst();
+    fail(m.json);
     return;
   }
   const result = { query, text: m.json, json: JSON.parse(m.json), data: m.data, ms: m.ms };
@@ -366,9 +368,7 @@ function show(view, result) {
   try {
     DRAW[view](result, state.params[view]);
   } catch (e) {
-    showError(`drawing ${view} failed: ${e.message}`);
-    setState('error');
-    finishFirst();
+    fail(`drawing ${view} failed: ${e.message}`);
     return;
   }
   showError('');
@@ -383,6 +383,13 @@ function show(view, result) {
     ms: result.ms };
   $('#progress').value = 1;
   setState('ready');
+  finishFirst();
+}
+
+/** Shows a one-line error near the controls. */
+function fail(message) {
+  showError(message);
+  setState('error');
   finishFirst();
 }
 
@@ -599,7 +606,7 @@ function drawAliasing(r) {
   const im = aliasingImages(r);
   const { w, h } = im;
   const avail = Math.floor((panelWidth() - 2 * 20 - 76) / 3);
-  let scale = Math.min(2, avail / w, 400 / h);
+  let scale = Math.min(8, avail / w, 400 / h);
   if (scale >= 1) scale = Math.floor(scale);
   const dw = Math.round(w * scale);
   const dh = Math.round(h * scale);
@@ -608,18 +615,18 @@ function drawAliasing(r) {
   const mark = (ctx) => {
     ctx.strokeStyle = '#ffbf00';
     ctx.lineWidth = 2;
-    ctx.strokeRect(crop.x * scale - 1, crop.y * scale - 1, crop.w * scale + 2, crop.h * scale + 2);
+    ctx.strokeRect(crop.x * scale + 1, crop.y * scale + 1, crop.w * scale - 2, crop.h * scale - 2);
   };
   for (const [id, src] of [['render', im.render], ['reference', im.reference]]) {
     const ctx = P.prepare($(`#alias-${id}`), dw, dh);
     P.blit(ctx, src, { x: 0, y: 0, w: dw, h: dh });
     mark(ctx);
   }
-  const ectx = P.prepare($('#alias-error'), dw + 76, dh);
+  const ectx = P.prepare($('#alias-error'), dw + 76, Math.max(dh, 160));
   P.blit(ectx, im.error, { x: 0, y: 0, w: dw, h: dh });
   mark(ectx);
   const s = im.scale;
-  P.colourBar(ectx, { x: dw + 12, y: 18, w: 12, h: dh - 30 }, (v) => P.diverging(v / s), -s, s,
+  P.colourBar(ectx, { x: dw + 12, y: 18, w: 12, h: Math.max(dh, 160) - 30 }, (v) => P.diverging(v / s), -s, s,
     [-s, 0, s], 'error', (t) => (t === 0 ? '0' : (t > 0 ? '+' : '−') + Number(Math.abs(t).toPrecision(2))));
 
   const zoom = Math.max(1, Math.floor(Math.min(256, avail) / crop.w));
@@ -855,9 +862,7 @@ async function start() {
   selectView(state.view);
   const m = await namesReply;
   if (!m.ok) {
-    showError(m.json);
-    setState('error');
-    finishFirst();
+    fail(m.json);
     return;
   }
   names = JSON.parse(m.json);
