@@ -691,7 +691,7 @@ function drawFilters(r) {
   $('#filters-name').textContent = json.filter;
   const [rx, ry] = json.radius;
   const wide = panelWidth();
-  const pw = Math.max(340, Math.min(520, Math.floor((wide - 20) / 2)));
+  const pw = Math.max(340, Math.min(520, Math.floor((wide - 24) / 2)));
 
   const prof = json.profile;
   const vmin = Math.min(0, ...prof.map((q) => q[1]));
