@@ -22,7 +22,7 @@ const $ = (sel, root = document) => root.querySelector(sel);
 const $$ = (sel, root = document) => [...root.querySelectorAll(sel)];
 
 /** A JSON number as Rust's `{}` prints an f64: shortest round trip, never an exponent. */
-export function numText(v) {
+function numText(v) {
   if (v === null || v === undefined) return '—';
   if (typeof v !== 'number') return String(v);
   if (Object.is(v, -0)) return '-0';

@@ -3,7 +3,6 @@
 
 export const FONT = '12px system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
 export const INK = '#222';
-export const MUTED = '#666';
 export const GRID = '#e6e6e6';
 
 /** Series colours (distinguishable on white, in order of use). */
