@@ -315,6 +315,33 @@ pub fn reference(
     filter: Option<&FilterKind>,
     threads: usize,
 ) -> Result<Option<Vec<f64>>> {
+    let bar = Progress::new(tile_count(size), "reference");
+    let r = reference_with_progress(scene, size, filter, threads, &mut || bar.inc(1));
+    bar.finish();
+    r
+}
+
+/// [`reference`], calling `tick` once per finished tile when the reference is rendered (a scene
+/// without a closed form and no cached copy); a closed form or a cache hit ticks nothing.
+///
+/// ```
+/// use nyquist_cli::{render::reference_with_progress, scene::Scene};
+/// let mut ticks = 0;
+/// let means = reference_with_progress(Scene::Zoneplate, [8, 4], None, 1, &mut || ticks += 1)
+///     .unwrap()
+///     .unwrap();
+/// assert_eq!((means.len(), ticks), (32, 0)); // the zone plate's means are exact: no render
+/// ```
+///
+/// # Errors
+/// As [`reference`].
+pub fn reference_with_progress(
+    scene: Scene,
+    size: [u32; 2],
+    filter: Option<&FilterKind>,
+    threads: usize,
+    tick: &mut dyn FnMut(),
+) -> Result<Option<Vec<f64>>> {
     let boxed = FilterKind::parse("box").map_err(|e| anyhow!("{e}"))?;
     let filter = filter.unwrap_or(&boxed);
     if scene == Scene::Zoneplate {
@@ -361,9 +388,7 @@ pub fn reference(
         REFERENCE_SEED,
         None,
     )?;
-    let bar = Progress::new(tile_count(size), "reference");
-    let r = render(scene, size, &sampler, filter, threads, &mut || bar.inc(1))?;
-    bar.finish();
+    let r = render(scene, size, &sampler, filter, threads, tick)?;
     if let Some(p) = &path {
         // A cache that cannot be written only costs time next run.
         let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new("."))).map(|()| {

@@ -31,9 +31,6 @@ pub struct Reply {
     pub data: Vec<f32>,
 }
 
-/// The progress callback: `(done, total)` units of the current work.
-pub type Progress = dyn Fn(u32, u32) + Sync;
-
 /// Answers one request; `progress(done, total)` is called as long work advances.
 ///
 /// Views (`view=`): `names`, `points`, `spectrum`, `aliasing`, `filters`, `convergence`; each
@@ -42,7 +39,7 @@ pub type Progress = dyn Fn(u32, u32) + Sync;
 /// # Errors
 /// One line naming the parameter at fault (`count=0: need an integer in 1 ..= 65536`), or the
 /// command-line error of the computation it runs (which names the flag).
-pub fn handle(request: &str, progress: &Progress) -> Result<Reply> {
+pub fn handle(request: &str, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply> {
     let q = Query::parse(request)?;
     let view = q.text("view", "points");
     let reply = match view.as_str() {

@@ -3,7 +3,7 @@
 //! behind that subcommand, and returns the command line with the result.
 
 use crate::query::{Query, choice, described};
-use crate::{Progress, Reply, jlist, jn, js};
+use crate::{Reply, jlist, jn, js};
 use anyhow::{Result, anyhow, bail};
 use nyquist::filter::{Axis, Filter, FilterKind, FilterSampler, FilterTable, Interpolation};
 use nyquist::sampler::Sampler;
@@ -97,6 +97,17 @@ fn set_query(q: &Query, max_count: u64) -> Result<SetQuery> {
         }
         false => None,
     };
+    // Halton, Hammersley, Sobol and ZSobol spread one sequence over the whole image: their
+    // pixel samples depend on its size.
+    let resolution = match (spp, sampler) {
+        (Some(_), PointSet::Halton | PointSet::Hammersley | PointSet::Sobol | PointSet::ZSobol) => {
+            let r = q.text("resolution", "64x64");
+            let parsed = points::parse_grid(&r).map_err(|e| anyhow!("resolution={r}: {e}"))?;
+            flags.push_str(&format!(" --resolution {r}"));
+            Some(parsed)
+        }
+        _ => None,
+    };
     flags.push_str(&format!(" --dims {dims} --seed {seed} --project {x},{y}"));
     let args = AnalyzeArgs {
         input: None,
@@ -108,7 +119,7 @@ fn set_query(q: &Query, max_count: u64) -> Result<SetQuery> {
         skip: None,
         grid,
         spp,
-        resolution: None,
+        resolution,
         project: vec![x, y],
         measures: Vec::new(),
         star_method: StarMethod::Auto,
@@ -240,7 +251,7 @@ fn jittered_radial(max_freq: u32, nx: u64, ny: u64) -> Vec<f64> {
 ///
 /// Parameters: those of [`points`] (count ≤ 4096), `freq` (1 ..= 64), `realisations`
 /// (1 ..= 1024). Data: the `(2F+1)²` powers, row `fy = −F` first, `fx = −F … F` in a row.
-pub fn spectrum(q: &Query, progress: &Progress) -> Result<Reply> {
+pub fn spectrum(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply> {
     let mut s = set_query(q, MAX_SPECTRUM_POINTS)?;
     let freq = q.int("freq", 32, 1, 64)? as u32;
     let realisations = q.int("realisations", 16, 1, 1024)? as u32;
@@ -288,7 +299,7 @@ pub fn spectrum(q: &Query, progress: &Progress) -> Result<Reply> {
 /// Parameters: `scene`, `size` (`WxH`, at most 1024² pixels), `sampler` (a `render` name),
 /// `filter` (a spec), `spp` (1 ..= 4096), `seed`. Data: the image (`W·H` values, row 0 first),
 /// then the reference pixel means (`W·H`).
-pub fn aliasing(q: &Query, progress: &Progress) -> Result<Reply> {
+pub fn aliasing(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply> {
     let scene: Scene = q.choice("scene", "zoneplate")?;
     let size_text = q.text("size", "256x256");
     let size = render::parse_size(&size_text).map_err(|e| anyhow!("size={size_text}: {e}"))?;
@@ -302,16 +313,32 @@ pub fn aliasing(q: &Query, progress: &Progress) -> Result<Reply> {
     let spp = q.int("spp", 16, 1, 4096)? as u32;
     let seed = q.int("seed", 0, 0, u64::MAX)?;
     let sampler = render::build_sampler(sampler_name, spp, size, seed, None)?;
-    let total = render::tile_count(size) as u32;
-    progress(0, total);
-    let means = render::reference(scene, size, None, 1)?
-        .ok_or_else(|| anyhow!("scene={}: no reference", scene.name()))?;
-    let filtered = render::reference(scene, size, Some(&filter), 1)?;
+    let tiles = render::tile_count(size) as u32;
+    let boxed = FilterKind::parse("box").map_err(|e| anyhow!("{e}"))?;
+    let keys = [
+        reference_key(scene, size, &boxed),
+        reference_key(scene, size, &filter),
+    ];
+    // Tiles to render: the references that are neither closed forms nor kept from an earlier
+    // request (the box's counted once when the filter is the box), then the image.
+    let to_render = if scene == Scene::Zoneplate {
+        0
+    } else {
+        let kept = |k: &String| REFERENCES.with_borrow(|r| r.iter().any(|(key, _)| key == k));
+        let distinct = if keys[0] == keys[1] { 1 } else { 2 };
+        keys[..distinct].iter().filter(|k| !kept(k)).count() as u32
+    };
+    let total = tiles * (to_render + 1);
     let mut done = 0;
-    let r = render::render(scene, size, &sampler, &filter, 1, &mut || {
+    let mut tick = || {
         done += 1;
-        progress(done, total);
-    })?;
+        progress(done.min(total), total);
+    };
+    progress(0, total);
+    let means = reference(scene, size, None, &keys[0], &mut tick)?
+        .ok_or_else(|| anyhow!("scene={}: no reference", scene.name()))?;
+    let filtered = reference(scene, size, Some(&filter), &keys[1], &mut tick)?;
+    let r = render::render(scene, size, &sampler, &filter, 1, &mut tick)?;
     let e = render::rmse(&r.image, &means);
     let sampling = filtered
         .as_ref()
@@ -346,6 +373,46 @@ pub fn aliasing(q: &Query, progress: &Progress) -> Result<Reply> {
         ),
         data,
     })
+}
+
+/// References kept for later requests (the command line keeps them in a cache folder; the
+/// browser has none): the last few, by [`reference_key`].
+const KEPT_REFERENCES: usize = 4;
+
+type Kept = Vec<(String, Option<Vec<f64>>)>;
+
+thread_local! {
+    static REFERENCES: std::cell::RefCell<Kept> = const { std::cell::RefCell::new(Vec::new()) };
+}
+
+/// What a reference depends on: the scene, the size and the filter's full spec.
+fn reference_key(scene: Scene, size: [u32; 2], filter: &FilterKind) -> String {
+    format!("{} {}x{} {filter}", scene.name(), size[0], size[1])
+}
+
+/// [`render::reference_with_progress`], kept under `key` for the next requests.
+fn reference(
+    scene: Scene,
+    size: [u32; 2],
+    filter: Option<&FilterKind>,
+    key: &str,
+    tick: &mut dyn FnMut(),
+) -> Result<Option<Vec<f64>>> {
+    if let Some(kept) =
+        REFERENCES.with_borrow(|r| r.iter().find(|(k, _)| k == key).map(|(_, v)| v.clone()))
+    {
+        return Ok(kept);
+    }
+    let image = render::reference_with_progress(scene, size, filter, 1, tick)?;
+    if scene != Scene::Zoneplate {
+        REFERENCES.with_borrow_mut(|r| {
+            if r.len() == KEPT_REFERENCES {
+                r.remove(0);
+            }
+            r.push((key.to_owned(), image.clone()));
+        });
+    }
+    Ok(image)
 }
 
 /// Filters: the profile and frequency response (as `filter --plot` draws them), the footprint
@@ -443,7 +510,7 @@ pub fn filters(q: &Query) -> Result<Reply> {
 ///
 /// Parameters: `samplers`, `integrands` (comma lists), `min`, `max` (powers of two, N range),
 /// `runs` (1 ..= 1024), `seed`. No data.
-pub fn convergence(q: &Query, progress: &Progress) -> Result<Reply> {
+pub fn convergence(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply> {
     let samplers = q.list("samplers", "random,stratified,halton,sobol,pmj02");
     let integrand_names = q.list("integrands", "disk,triangle,step,gaussian,bilinear");
     let integrands = integrand_names

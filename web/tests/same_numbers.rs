@@ -162,8 +162,7 @@ fn jittered_closed_form_matches_the_measured_spectrum() {
         measured[1]
     );
     // Other sets have no closed form here.
-    let (json, _, _) =
-        reply("view=spectrum&sampler=random&count=256&freq=4&realisations=2");
+    let (json, _, _) = reply("view=spectrum&sampler=random&count=256&freq=4&realisations=2");
     assert_eq!(field(&json, "jittered_radial_mean"), "null");
 }
 
@@ -268,4 +267,47 @@ fn names_list_every_menu() {
         assert!(r.json.contains(&format!("\"{key}\":[")), "{key}");
     }
     assert!(r.json.contains("{\"name\":\"zoneplate\",\"help\":"));
+}
+
+#[test]
+fn references_are_rendered_once_and_progress_reaches_its_total() {
+    use std::sync::Mutex;
+    let calls = Mutex::new(Vec::new());
+    let run = |q: &str| {
+        calls.lock().unwrap().clear();
+        handle(q, &|d, t| calls.lock().unwrap().push((d, t))).unwrap();
+        let seen = calls.lock().unwrap().clone();
+        seen
+    };
+    // 32 × 16 pixels is 2 × 1 tiles; the disk has no closed form, so its box reference and its
+    // Mitchell reference are rendered (2 + 2 tiles) before the image (2 tiles).
+    let q = "view=aliasing&scene=disk&size=32x16&spp=4&filter=mitchell";
+    let first = run(q);
+    assert_eq!(first.first(), Some(&(0, 6)));
+    assert_eq!(first.last(), Some(&(6, 6)));
+    assert!(first.windows(2).all(|w| w[1].0 == w[0].0 + 1), "{first:?}");
+    // The same scene and size again: both references are kept, only the image is rendered.
+    let again = run("view=aliasing&scene=disk&size=32x16&spp=16&filter=mitchell&sampler=sobol");
+    assert_eq!(
+        (again.first(), again.last()),
+        (Some(&(0, 2)), Some(&(2, 2)))
+    );
+}
+
+#[test]
+fn whole_image_samplers_take_a_resolution_in_pixel_mode() {
+    for sampler in ["halton", "hammersley", "sobol", "zsobol"] {
+        let q = format!("view=points&sampler={sampler}&spp=16");
+        let (json, data, cli) = reply(&q);
+        let Cli::Analyze(args) = cli else {
+            panic!("not analyze")
+        };
+        assert_eq!(args.resolution, Some((64, 64)), "{q}");
+        assert_eq!(data.len(), 32, "{q}: {json}");
+    }
+    let (_, _, cli) = reply("view=points&sampler=sobol&spp=4&resolution=8x4");
+    let Cli::Analyze(args) = cli else {
+        panic!("not analyze")
+    };
+    assert_eq!(args.resolution, Some((8, 4)));
 }
