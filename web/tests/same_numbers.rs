@@ -276,8 +276,7 @@ fn references_are_rendered_once_and_progress_reaches_its_total() {
     let run = |q: &str| {
         calls.lock().unwrap().clear();
         handle(q, &|d, t| calls.lock().unwrap().push((d, t))).unwrap();
-        let seen = calls.lock().unwrap().clone();
-        seen
+        calls.lock().unwrap().clone()
     };
     // 32 × 16 pixels is 2 × 1 tiles; the disk has no closed form, so its box reference and its
     // Mitchell reference are rendered (2 + 2 tiles) before the image (2 tiles).
