@@ -279,12 +279,14 @@ fn references_are_rendered_once_and_progress_reaches_its_total() {
         calls.lock().unwrap().clone()
     };
     // 32 × 16 pixels is 2 × 1 tiles; the disk has no closed form, so its box reference and its
-    // Mitchell reference are rendered (2 + 2 tiles) before the image (2 tiles).
+    // Mitchell reference are rendered (2 + 2 tiles) before the image (2 tiles). (Natively a
+    // reference may come from the command line's cache folder instead, and tick nothing.)
     let q = "view=aliasing&scene=disk&size=32x16&spp=4&filter=mitchell";
     let first = run(q);
     assert_eq!(first.first(), Some(&(0, 6)));
     assert_eq!(first.last(), Some(&(6, 6)));
-    assert!(first.windows(2).all(|w| w[1].0 == w[0].0 + 1), "{first:?}");
+    assert!(first.windows(2).all(|w| w[1].0 >= w[0].0), "{first:?}");
+    assert!(first.len() >= 4, "{first:?}"); // at least the image's two tiles between the ends
     // The same scene and size again: both references are kept, only the image is rendered.
     let again = run("view=aliasing&scene=disk&size=32x16&spp=16&filter=mitchell&sampler=sobol");
     assert_eq!(
