@@ -426,10 +426,10 @@ enum NyqStatus nyq_inverse_radical_inverse(uint32_t dim,
 // (Owen-scrambled Sobol per pixel); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
 // a power of two); `pmj02` (up to 65536 spp); `bluenoise-dithered` (the zero-two set of pixel
 // (0, 0) in every pixel, toroidally shifted by a built-in 64 × 64 blue-noise mask, spp rounded
-// up to a power of two); `fibonacci` and `r2` (the Fibonacci lattice, spp rounded up to a
-// Fibonacci number, or R2, per dimension pair, rotated per pixel and pair). The image size
-// matters to `halton`,
-// `hammersley`, `sobol` and `zsobol` only, but must be non-zero for all.
+// up to a power of two); `fibonacci`, `r2` and `korobov` (the Fibonacci lattice, spp rounded up
+// to a Fibonacci number, R2, or the Korobov lattice of exactly spp points whose multiplier
+// minimises P₂, per dimension pair, rotated per pixel and pair). The image size matters to
+// `halton`, `hammersley`, `sobol` and `zsobol` only, but must be non-zero for all.
 //
 // # Errors
 // `NYQ_ERR_NULL` if `name` or `out` is null; `NYQ_ERR_PARSE` for an unknown or non-UTF-8

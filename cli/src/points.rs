@@ -60,8 +60,10 @@ pub enum SamplerName {
     /// Fibonacci lattice (two dimensions; --count a Fibonacci number, default 21; --seed not 0
     /// picks a Cranley–Patterson rotation).
     Fibonacci,
-    /// Korobov rank-1 lattice of --count points (at most 4096), its multiplier the minimiser of
-    /// the P2 criterion (--seed not 0 picks a Cranley–Patterson rotation).
+    /// Korobov rank-1 lattice of --count points: the multiplier of Stroud's (1971) tables where
+    /// they have --count and --dims (3 to 6 dimensions, primes 101 to 10007), else the minimiser
+    /// of the P2 criterion (at most 4096 points; 2^24 in two dimensions); --seed not 0 picks a
+    /// Cranley–Patterson rotation. With --spp, the pixel sampler korobov.
     Korobov,
     /// Roberts' R_d Kronecker sequence (R2 in two dimensions; --seed not 0 picks a
     /// Cranley–Patterson rotation in place of the start ½).
@@ -443,11 +445,11 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
             let min = (inner.samples_per_pixel() / 4).max(1);
             Box::new(AdaptiveSampler::new(inner, min, 0.1).map_err(err)?)
         }
-        S::Fibonacci | S::Rd => {
-            let which = if args.sampler == S::Fibonacci {
-                "fibonacci"
-            } else {
-                "r2"
+        S::Fibonacci | S::Rd | S::Korobov => {
+            let which = match args.sampler {
+                S::Fibonacci => "fibonacci",
+                S::Korobov => "korobov",
+                _ => "r2",
             };
             let s = nyquist::sampler::NamedSampler::new(which, [1, 1], spp, args.seed)
                 .map_err(|e| anyhow::anyhow!("--sampler {n}: {e}"))?;
@@ -466,15 +468,11 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
                 nyquist::sampler::MaskView::builtin(),
             ))
         }
-        S::Lhs
-        | S::Vdc
-        | S::HaltonZaremba
-        | S::HammersleyZaremba
-        | S::Korobov
-        | S::PoissonDisk
-        | S::Bridson => bail!(
-            "{n} is a point set, not a pixel sampler: drop --spp/--pixel/--resolution and use --count"
-        ),
+        S::Lhs | S::Vdc | S::HaltonZaremba | S::HammersleyZaremba | S::PoissonDisk | S::Bridson => {
+            bail!(
+                "{n} is a point set, not a pixel sampler: drop --spp/--pixel/--resolution and use --count"
+            )
+        }
     };
     let spp = sampler.samples_per_pixel();
     let mut out = Vec::with_capacity(spp as usize * dims as usize);
@@ -490,6 +488,22 @@ pub fn pixel_samples(args: &PointsArgs) -> Result<PixelPoints> {
         }
     }
     Ok((out, dims as usize, grid))
+}
+
+/// The Korobov lattice of `count` points in `dims` dimensions: Stroud's tabled multiplier where
+/// the table has (`count`, `dims`), else the exhaustive P2 search up to 4096 points, and the
+/// two-dimensional one above. A note on stderr says which.
+fn korobov_lattice(count: u64, dims: u32) -> Result<Korobov, nyquist::Error> {
+    let (lattice, how) = match Korobov::tabled(count, dims) {
+        Ok(k) => (k, "from Stroud (1971), Tables 6.2–6.5"),
+        Err(_) if dims == 2 && count > 4096 => (Korobov::searched_2d(count)?, "minimising P2"),
+        Err(_) => (Korobov::searched(count, dims)?, "minimising P2"),
+    };
+    crate::output::note(&format!(
+        "korobov: {count} points, multiplier {} {how}",
+        lattice.multiplier()
+    ));
+    Ok(lattice)
 }
 
 /// Generates the points `args` asks for, point-major, and their dimension count.
@@ -639,10 +653,28 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
             fill(&lattice, args, &mut out)?
         }
         S::Korobov => {
-            let lattice = Korobov::searched(count, dims).map_err(|e| match e {
-                nyquist::Error::OutOfRange { what: "n" } => anyhow::anyhow!(
-                    "--count {count}: korobov searches its multiplier for at most 4096 points"
-                ),
+            let lattice = korobov_lattice(count, dims).map_err(|e| match e {
+                nyquist::Error::OutOfRange { what: "n" } => {
+                    let tabled: Vec<String> =
+                        Korobov::tabled_sizes(dims).map(|n| n.to_string()).collect();
+                    let tabled = if tabled.is_empty() {
+                        String::new()
+                    } else {
+                        format!(
+                            "; Stroud's table has {} for {dims} dimensions",
+                            tabled.join(", ")
+                        )
+                    };
+                    anyhow::anyhow!(
+                        "--count {count}: korobov searches its multiplier for at most {} points \
+                         in {dims} dimensions{tabled}",
+                        if dims == 2 {
+                            nyquist::lattice::KOROBOV_MAX_SEARCHED_2D
+                        } else {
+                            4096
+                        }
+                    )
+                }
                 e => set_error(e),
             })?;
             let lattice = if args.seed == 0 {

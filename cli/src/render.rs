@@ -64,6 +64,9 @@ pub enum SamplerName {
     /// Roberts' R2 per dimension pair, rotated per pixel and pair.
     #[value(name = "r2")]
     R2,
+    /// The Korobov lattice of exactly spp points per dimension pair (multiplier minimising
+    /// P2), Cranley–Patterson rotated per pixel and pair.
+    Korobov,
 }
 
 impl SamplerName {

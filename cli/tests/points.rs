@@ -201,3 +201,54 @@ fn help_has_an_example() {
     assert!(o.status.success());
     assert!(stdout(&o).contains("Example: nyquist points"));
 }
+
+/// `points --sampler korobov` takes Stroud's tabled multiplier where the table has --count and
+/// --dims (1069 points in 4-D: a = 71, so point 1 is (1, 71, 71², 71³ mod 1069)/1069) and says
+/// so on stderr; elsewhere the P2 search, also said; a count beyond both names the tabled sizes.
+#[test]
+fn korobov_points_use_the_table_or_the_search() {
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "korobov",
+        "--count",
+        "1069",
+        "--dims",
+        "4",
+    ]);
+    assert!(o.status.success());
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("multiplier 71 from Stroud (1971)"), "{err}");
+    let r = rows(&o);
+    assert_eq!(r.len(), 1069);
+    let want = [1u64, 71, 71 * 71 % 1069, 71 * 71 * 71 % 1069];
+    for (d, g) in want.iter().enumerate() {
+        assert!(
+            (f64::from(r[1][d]) - *g as f64 / 1069.0).abs() < 1e-6,
+            "dim {d}"
+        );
+    }
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "korobov",
+        "--count",
+        "1024",
+        "--dims",
+        "4",
+    ]);
+    assert!(o.status.success());
+    assert!(String::from_utf8_lossy(&o.stderr).contains("minimising P2"));
+    assert_one_line_error(
+        &nyquist(&[
+            "points",
+            "--sampler",
+            "korobov",
+            "--count",
+            "5000",
+            "--dims",
+            "6",
+        ]),
+        "2129, 3001, 4001, 5003, 6007, 8191, 10007",
+    );
+}

@@ -16,6 +16,9 @@ fn every_pixel_sampler_prints_spp_points_in_the_unit_cube() {
         ("sobol", 16),
         ("best-candidate", 16),
         ("adaptive", 16),
+        ("fibonacci", 21),
+        ("r2", 16),
+        ("korobov", 16),
     ] {
         let mut args = vec![
             "points",
@@ -157,4 +160,57 @@ fn pixel_sampler_bad_input_is_one_line_and_status_2() {
         &nyquist(&["points", "--sampler", "best-candidate", "--spp", "5000"]),
         "best-candidate",
     );
+}
+
+/// `points --sampler korobov --spp N` prints the pixel sampler's N samples: every coordinate a
+/// regular grid of spacing 1/N shifted modulo 1, and sample k − sample 0 equal to k·(1, a)/N
+/// modulo 1 for one multiplier a (dimensions 0, 1 and again 2, 3 under another shift).
+#[test]
+fn korobov_pixel_samples_form_a_rotated_lattice() {
+    let n = 50usize;
+    let o = nyquist(&[
+        "points",
+        "--sampler",
+        "korobov",
+        "--spp",
+        "50",
+        "--pixel",
+        "3,2",
+        "--dims",
+        "4",
+        "--seed",
+        "9",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = rows(&o);
+    assert_eq!(r.len(), n);
+    let wrap = |d: f64| {
+        let d = d.rem_euclid(1.0);
+        d.min(1.0 - d)
+    };
+    for d in 0..4 {
+        let mut xs: Vec<f64> = r.iter().map(|p| f64::from(p[d])).collect();
+        xs.sort_by(f64::total_cmp);
+        let gaps = xs
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .chain([xs[0] + 1.0 - xs[n - 1]]);
+        assert!(
+            gaps.into_iter().all(|g| (g - 1.0 / n as f64).abs() < 1e-5),
+            "dim {d}"
+        );
+    }
+    let step = |k: usize, d: usize| f64::from(r[k][d]) - f64::from(r[0][d]);
+    let a = (step(1, 1).rem_euclid(1.0) * n as f64).round() as usize;
+    for pair in [0, 2] {
+        for k in 0..n {
+            assert!(
+                wrap(step(k, pair) - k as f64 / n as f64) < 1e-5,
+                "pair {pair} k {k}"
+            );
+            let want = (k * a % n) as f64 / n as f64;
+            assert!(wrap(step(k, pair + 1) - want) < 1e-5, "pair {pair} k {k}");
+        }
+    }
+    assert_ne!(r[0][0], r[0][2], "each pair its own shift");
 }

@@ -5,7 +5,7 @@
 //! | type | point `k`, dimension `j` |
 //! |---|---|
 //! | [`FibonacciLattice`] | `(k/F_m, frac(k·F_{m−1}/F_m))`, two dimensions |
-//! | [`Korobov`] | `frac(k·a^j mod N / N)`, the rank-1 lattice with generator `(1, a, a², …)` |
+//! | [`Korobov`] | `frac(k·a^j mod N / N)`, generator `(1, a, a², …)`, `a` tabled or searched |
 //! | [`Kronecker`] | Roberts' `R_d`: `frac(½ + k/φ_d^{j+1})`, `φ_d` the root of `x^{d+1} = x + 1` |
 //!
 //! Coordinates are computed in 64-bit fixed point (`frac` is a wrapping add), then rounded down
@@ -15,15 +15,19 @@
 //! Sources: I. H. Sloan and S. Joe, *Lattice Methods for Multiple Integration* (Oxford 1994),
 //! §2 (rank-1 lattices, Fibonacci lattices) and §4.1 (Cranley–Patterson rotation, after
 //! R. Cranley and T. N. L. Patterson, *SIAM J. Numer. Anal.* 13, 1976); N. M. Korobov (1959) for
-//! the generator `(1, a, a², …)`; M. Roberts, "The unreasonable effectiveness of quasirandom
-//! sequences" (extremelearning.com.au, 2018) for `R_d`.
+//! the generator `(1, a, a², …)`; A. H. Stroud, *Approximate Calculation of Multiple Integrals*
+//! (Prentice-Hall 1971), Tables 6.2–6.5, for the tabled multipliers ([`KOROBOV_TABLE`]);
+//! M. Roberts, "The unreasonable effectiveness of quasirandom sequences"
+//! (extremelearning.com.au, 2018) for `R_d`.
 
 mod fibonacci;
 mod korobov;
+mod korobov_table;
 mod kronecker;
 
 pub use fibonacci::{FIBONACCI_MAX_INDEX, FibonacciLattice, fibonacci};
-pub use korobov::Korobov;
+pub use korobov::{KOROBOV_MAX_SEARCHED_2D, Korobov};
+pub use korobov_table::{KOROBOV_TABLE, KorobovTableRow};
 pub use kronecker::{KRONECKER_MAX_DIMS, Kronecker};
 
 /// A fixed-point fraction `x / 2⁶⁴` rounded down to the `f32` grid of `[0, 1)` (24 bits).

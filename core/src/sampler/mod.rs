@@ -23,7 +23,7 @@
 //! | [`RandomSampler`] | independent PCG32 values |
 //! | [`AdaptiveSampler`] | wraps another: minimum spp, maximum where the first samples disagree |
 //! | [`BestCandidateSampler`] | a baked blue-noise (Mitchell best-candidate) table |
-//! | [`LatticeSampler`] | the Fibonacci lattice or R2 per dimension pair, rotated per pixel and pair |
+//! | [`LatticeSampler`] | the Fibonacci lattice, a Korobov lattice or R2 per dimension pair, rotated per pixel and pair |
 //! | [`DitheredSampler`] | one point set in every pixel, toroidally shifted by a blue-noise mask |
 //! | [`OwenSobolSampler`] | Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed |
 //! | [`ZSobolSampler`] | Sobol along a hash-permuted Morton curve: blue-noise error across pixels |

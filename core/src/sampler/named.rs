@@ -14,13 +14,13 @@ use crate::scramble::Scramble;
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, NAMES};
-/// assert_eq!(NAMES.len(), 15);
+/// assert_eq!(NAMES.len(), 16);
 /// for name in NAMES {
 ///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
 ///     assert_eq!(s.name(), name);
 /// }
 /// ```
-pub const NAMES: [&str; 15] = [
+pub const NAMES: [&str; 16] = [
     "random",
     "uniform",
     "stratified",
@@ -36,6 +36,7 @@ pub const NAMES: [&str; 15] = [
     "bluenoise-dithered",
     "fibonacci",
     "r2",
+    "korobov",
 ];
 
 /// The names of [`NAMES`] that take a scramble through [`NamedSampler::with_scramble`].
@@ -155,7 +156,7 @@ pub enum NamedSampler {
     Pmj02(Pmj02Sampler),
     /// `bluenoise-dithered`.
     Dithered(DitheredSampler<'static, ZeroTwoSampler>),
-    /// `fibonacci` and `r2`.
+    /// `fibonacci`, `r2` and `korobov`.
     Lattice(LatticeSampler),
 }
 
@@ -200,8 +201,9 @@ impl NamedSampler {
     /// - `pmj02`: [`Pmj02Sampler`] (spp up to 65536);
     /// - `bluenoise-dithered`: a [`DitheredSampler`] over the `zero-two` set of pixel (0, 0),
     ///   shifted per pixel by the built-in 64 × 64 two-channel mask ([`MaskView::builtin`]);
-    /// - `fibonacci`, `r2`: [`LatticeSampler::fibonacci`] (spp rounded up to a Fibonacci
-    ///   number) and [`LatticeSampler::r2`].
+    /// - `fibonacci`, `r2`, `korobov`: [`LatticeSampler::fibonacci`] (spp rounded up to a
+    ///   Fibonacci number), [`LatticeSampler::r2`] and [`LatticeSampler::korobov`] (exactly spp
+    ///   points, its multiplier searched here: 10 ms at 2¹⁶ spp).
     ///
     /// The size matters to `halton`, `hammersley`, `sobol` and `zsobol` only, but must be non-zero for
     /// all. Allocates: no.
@@ -288,6 +290,7 @@ impl NamedSampler {
             )),
             "fibonacci" => NamedSampler::Lattice(LatticeSampler::fibonacci(spp, seed)?),
             "r2" => NamedSampler::Lattice(LatticeSampler::r2(spp, seed)?),
+            "korobov" => NamedSampler::Lattice(LatticeSampler::korobov(spp, seed)?),
             _ => return Err(NamedSamplerError::UnknownName),
         })
     }
@@ -360,8 +363,7 @@ impl NamedSampler {
             NamedSampler::ZSobol(_) => "zsobol",
             NamedSampler::Pmj02(_) => "pmj02",
             NamedSampler::Dithered(_) => "bluenoise-dithered",
-            NamedSampler::Lattice(s) if s.is_fibonacci() => "fibonacci",
-            NamedSampler::Lattice(_) => "r2",
+            NamedSampler::Lattice(s) => s.name(),
         }
     }
 }
@@ -439,7 +441,7 @@ mod tests {
     fn names_build_the_samplers_they_name() {
         let size = [16, 16];
         for seed in [0u64, 7] {
-            let direct: [(&str, std::boxed::Box<dyn Sampler>); 15] = [
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 16] = [
                 (
                     "random",
                     std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
@@ -526,6 +528,10 @@ mod tests {
                     "r2",
                     std::boxed::Box::new(LatticeSampler::r2(16, seed).unwrap()),
                 ),
+                (
+                    "korobov",
+                    std::boxed::Box::new(LatticeSampler::korobov(16, seed).unwrap()),
+                ),
             ];
             for (i, (name, mut d)) in direct.into_iter().enumerate() {
                 assert_eq!(NAMES[i], name);
@@ -574,11 +580,11 @@ mod tests {
     }
 
     proptest::proptest! {
-        /// Any name, size, spp and seed: a sampler whose values are in [0, 1), or an error;
-        /// never a panic.
+        /// Any name (every one of [`NAMES`], and one that is not), size, spp and seed: a
+        /// sampler whose values are in [0, 1), or an error; never a panic.
         #[test]
         fn any_input_builds_or_errors(
-            which in 0usize..10,
+            which in 0usize..=NAMES.len(),
             w in 0u32..64,
             h in 0u32..64,
             spp in 0u32..300,
@@ -597,7 +603,7 @@ mod tests {
                 Err(e) => {
                     let expected = if w == 0 || h == 0 || spp == 0 {
                         matches!(e, NamedSamplerError::Sampler(crate::Error::ZeroSize { .. }))
-                    } else if which == 9 {
+                    } else if which == NAMES.len() {
                         e == NamedSamplerError::UnknownName
                     } else {
                         (which == 1 || which == 2)

@@ -4,7 +4,7 @@
 use nyquist::Error;
 use nyquist::analysis::Topology;
 use nyquist::bluenoise::{PoissonDisk, VoidAndCluster};
-use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
+use nyquist::lattice::{FibonacciLattice, KOROBOV_TABLE, Korobov, Kronecker};
 use nyquist::sequence::Sequence;
 
 use crate::{Bytes, in_unit, in_unit_f64};
@@ -12,7 +12,8 @@ use crate::{Bytes, in_unit, in_unit_f64};
 /// Masks up to 24 × 24: the fast and the straightforward method give the same ranks, a
 /// permutation; Poisson-disk sets with radius in [0.05, 1]: every pair at least r apart, every
 /// point in [0, 1)²; lattices and R_d: every value in [0, 1), constructors refuse only what
-/// their docs name.
+/// their docs name; `Korobov::tabled` builds exactly the rows of `KOROBOV_TABLE`, and
+/// `Korobov::searched_2d` returns a valid multiplier, the exhaustive search's for n ≤ 64.
 pub fn bluenoise(data: &[u8]) {
     let mut b = Bytes::new(data);
     let (w, h, seed) = (b.below(24), b.below(24), b.u64());
@@ -96,4 +97,33 @@ pub fn bluenoise(data: &[u8]) {
         }
         Err(_) => assert!(dims == 0 || dims > 1024),
     }
+    // Stroud's table: a lattice exactly for its (n, dims) rows, with the row's first multiplier.
+    let (tn, tdims) = (u64::from(b.below(10100)), b.below(8));
+    let row = KOROBOV_TABLE.iter().find(|r| r.n == tn && r.dims == tdims);
+    match (Korobov::tabled(tn, tdims), row) {
+        (Ok(k), Some(r)) => assert_eq!(k.multiplier(), r.multipliers[0]),
+        (Err(_), None) => {}
+        (got, row) => panic!("tabled({tn}, {tdims}) = {got:?} for row {row:?}"),
+    }
+    // The two-dimensional search: a multiplier coprime to n in 1 ..= max(1, n/2), the
+    // exhaustive search's for small n.
+    let sn = u64::from(b.below(3000));
+    match Korobov::searched_2d(sn) {
+        Ok(k) => {
+            let a = k.multiplier();
+            assert!(
+                sn == 1 || (a >= 1 && a <= (sn / 2).max(1) && gcd(a, sn) == 1),
+                "{sn}: {a}"
+            );
+            if sn <= 64 {
+                assert_eq!(Some(k), Korobov::searched(sn, 2).ok(), "{sn}");
+            }
+            assert!(in_unit(k.sample(index, 1)));
+        }
+        Err(e) => assert_eq!((sn, e), (0, nyquist::Error::ZeroSize { what: "n" })),
+    }
+}
+
+fn gcd(a: u64, b: u64) -> u64 {
+    if b == 0 { a } else { gcd(b, a % b) }
 }
