@@ -324,7 +324,7 @@ pub fn reference(
     r
 }
 
-/// [`reference`], calling `tick` once per finished tile when the reference is rendered (a scene
+/// [`reference()`], calling `tick` once per finished tile when the reference is rendered (a scene
 /// without a closed form and no cached copy); a closed form or a cache hit ticks nothing.
 ///
 /// ```
@@ -337,7 +337,7 @@ pub fn reference(
 /// ```
 ///
 /// # Errors
-/// As [`reference`].
+/// As [`reference()`].
 pub fn reference_with_progress(
     scene: Scene,
     size: [u32; 2],
