@@ -142,19 +142,26 @@ pub fn render_tiles(
     let specs = film.tiles(tile_size)?;
     let total = specs.len();
     let factory = film.tile_factory();
+    // Tile `i` rendered; `None` past the last.
+    let render_tile = |i: usize| {
+        let spec = *specs.get(i)?;
+        let ctx = TileContext {
+            index: spec.index,
+            count: total,
+            bounds: spec.bounds,
+        };
+        let mut tile = factory.tile(spec);
+        render(&mut tile, &ctx);
+        Some(tile)
+    };
     if threads == 1 {
         // On the calling thread, with no thread spawned: the same tiles merged in the same
         // order (and the only way where threads cannot be started, as in WebAssembly).
-        for (done, &spec) in specs.iter().enumerate() {
-            let ctx = TileContext {
-                index: spec.index,
-                count: total,
-                bounds: spec.bounds,
-            };
-            let mut tile = factory.tile(spec);
-            render(&mut tile, &ctx);
+        let mut done = 0;
+        while let Some(tile) = render_tile(done) {
             film.merge(tile)?;
-            progress(done + 1, total);
+            done += 1;
+            progress(done, total);
         }
         return Ok(());
     }
@@ -163,18 +170,9 @@ pub fn render_tiles(
     std::thread::scope(|scope| -> Result<(), Error> {
         for _ in 0..threads.min(total.max(1)) {
             let tx = tx.clone();
-            let (specs, next, render, factory) = (&specs, &next, &render, &factory);
+            let (next, render_tile) = (&next, &render_tile);
             scope.spawn(move || {
-                loop {
-                    let i = next.fetch_add(1, Ordering::Relaxed);
-                    let Some(&spec) = specs.get(i) else { break };
-                    let ctx = TileContext {
-                        index: spec.index,
-                        count: total,
-                        bounds: spec.bounds,
-                    };
-                    let mut tile = factory.tile(spec);
-                    render(&mut tile, &ctx);
+                while let Some(tile) = render_tile(next.fetch_add(1, Ordering::Relaxed)) {
                     if tx.send(tile).is_err() {
                         break;
                     }
