@@ -17,6 +17,8 @@
 # cargo-mutants is not installed; it never installs it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# As .ci/run: line tables only keep each mutant's build short.
+export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
 
 if ! cargo mutants --version >/dev/null 2>&1; then
     echo "SKIPPED: cargo-mutants is not installed (cargo install cargo-mutants --locked)"
@@ -61,7 +63,7 @@ for package in "${packages[@]}"; do
     dir="$OUT/$package"
     mkdir -p "$dir"
     cmd=(cargo mutants --in-diff "$diff" --package "$package" --test-package "$package"
-        --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --output "$dir" -- --lib)
+        --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --output "$dir" --cargo-arg=--lib)
     echo "== ${cmd[*]} (diff against ${base:0:12}, at most ${SECONDS_BOX} s)"
     rc=0
     timeout "$SECONDS_BOX" nice -n 15 "${cmd[@]}" || rc=$?

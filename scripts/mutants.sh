@@ -11,7 +11,7 @@
 # incremental build plus a few seconds of tests:
 #
 #   cargo mutants --package P --file F --test-package P --no-shuffle --jobs J --timeout T \
-#       --output OUT/<module> -- --lib -- <filter>...
+#       --output OUT/<module> --cargo-arg=--lib -- -- <filter>...
 #
 # then counts caught, missed, unviable and timed-out mutants from OUT/<module>/mutants.out/,
 # subtracts the missed mutants listed in scripts/mutants-equivalent.txt, and writes the module's
@@ -19,12 +19,15 @@
 #
 # Environment: MUTANTS_JOBS (default 1: two cores, one build at a time), MUTANTS_TIMEOUT
 # (seconds of tests per mutant before it counts as a timeout; default 30), MUTANTS_OUT (default
-# $CARGO_TARGET_DIR/mutants, else target/mutants).
+# $CARGO_TARGET_DIR/mutants, else target/mutants), MUTANTS_BASELINE=skip (do not first run the
+# tests on the unmutated tree: saves one build per module when they are known to pass).
 #
 # Exit status: 0 when every viable, non-equivalent mutant was caught; 2 when some were missed (the
 # list is printed); 1 when cargo-mutants is missing or failed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# As .ci/run: line tables only keep each mutant's build short.
+export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
 
 # module | package | file | test filters (space-separated libtest substrings)
 MODULES='
@@ -58,6 +61,7 @@ DOC=docs/mutation.md
 JOBS=${MUTANTS_JOBS:-1}
 TIMEOUT=${MUTANTS_TIMEOUT:-30}
 OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants}
+BASELINE=${MUTANTS_BASELINE:-run}
 
 modules() { printf '%s\n' "$MODULES" | grep -v '^$'; }
 
@@ -92,8 +96,8 @@ for module in "${selected[@]}"; do
     mkdir -p "$dir"
     # shellcheck disable=SC2206 # the filters are separate libtest arguments
     cmd=(cargo mutants --package "$package" --file "$file" --test-package "$package"
-        --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --output "$dir"
-        -- --lib -- $filters)
+        --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --baseline "$BASELINE" --output "$dir"
+        --cargo-arg=--lib -- -- $filters)
     echo "== $module: ${cmd[*]}"
     begin=$SECONDS
     rc=0
@@ -120,7 +124,10 @@ for module in "${selected[@]}"; do
     else
         score="–"
     fi
-    per=$(awk -v s="$seconds" -v n="$total" 'BEGIN { if (n > 0) printf "%.1f", s / n; else print "–" }')
+    # Mean build + test time of one mutant (the baseline excluded), from cargo-mutants' record.
+    per=$(jq -r '[.outcomes[] | select(.scenario | type == "object")
+        | [.phase_results[].duration] | add] | if length > 0 then add / length * 10 | round / 10
+        else "–" end' "$res/outcomes.json" 2>/dev/null || echo "–")
     row="| \`$module\` | $total | $caught | $missed | $unviable | $timeouts | $equivalent | $score | ${seconds} s (${per} s) |"
     echo "$row"
     if [ -s "$dir/unlisted.txt" ]; then
