@@ -5,6 +5,8 @@
 #   scripts/mutants.sh stratify/jittered hash
 #                                      only the named modules
 #   scripts/mutants.sh --list          the modules, their files and test filters
+#   scripts/mutants.sh --summarize hash
+#                                      re-score earlier runs (after editing the equivalent list)
 #
 # For each module it runs cargo-mutants on that module's file only, and runs only the lib tests
 # whose path matches the module's filter (the module's own tests), so a mutant costs one
@@ -65,6 +67,11 @@ BASELINE=${MUTANTS_BASELINE:-run}
 
 modules() { printf '%s\n' "$MODULES" | grep -v '^$'; }
 
+summarize=0
+if [ "${1:-}" = "--summarize" ]; then
+    summarize=1
+    shift
+fi
 if [ "${1:-}" = "--list" ]; then
     modules | awk -F'|' '{ printf "%-26s %-12s %-40s %s\n", $1, $2, $3, $4 }'
     exit 0
@@ -92,20 +99,29 @@ for module in "${selected[@]}"; do
     [ -n "$line" ] || { echo "unknown module '$module' (see --list)" >&2; exit 1; }
     IFS='|' read -r _ package file filters <<<"$line"
     dir="$OUT/${module//\//-}"
-    rm -rf "$dir"
-    mkdir -p "$dir"
     # shellcheck disable=SC2206 # the filters are separate libtest arguments
     cmd=(cargo mutants --package "$package" --file "$file" --test-package "$package"
         --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --baseline "$BASELINE" --output "$dir"
         --cargo-arg=--lib -- -- $filters)
-    echo "== $module: ${cmd[*]}"
-    begin=$SECONDS
-    rc=0
-    nice -n 15 "${cmd[@]}" || rc=$?
-    seconds=$((SECONDS - begin))
-    # 0: all caught; 2: some missed; 3: some timed out. Anything else is a failed run.
-    case $rc in 0 | 2 | 3) ;; *) echo "$module: cargo mutants exited $rc" >&2; exit 1 ;; esac
     res="$dir/mutants.out"
+    if [ $summarize = 1 ]; then
+        # Re-score an earlier run (after a change to the equivalent list).
+        [ -s "$dir/seconds" ] || { echo "$module: no earlier run in $dir" >&2; exit 1; }
+        seconds=$(cat "$dir/seconds")
+        read -r -a cmd <"$dir/command"
+    else
+        rm -rf "$dir"
+        mkdir -p "$dir"
+        echo "== $module: ${cmd[*]}"
+        begin=$SECONDS
+        rc=0
+        nice -n 15 "${cmd[@]}" || rc=$?
+        seconds=$((SECONDS - begin))
+        # 0: all caught; 2: some missed; 3: some timed out. Anything else is a failed run.
+        case $rc in 0 | 2 | 3) ;; *) echo "$module: cargo mutants exited $rc" >&2; exit 1 ;; esac
+        echo "$seconds" >"$dir/seconds"
+        echo "${cmd[*]}" >"$dir/command"
+    fi
     caught=$(count "$res/caught.txt")
     missed=$(count "$res/missed.txt")
     unviable=$(count "$res/unviable.txt")
@@ -115,8 +131,9 @@ for module in "${selected[@]}"; do
     equivalent=0
     if [ -s "$res/missed.txt" ]; then
         strip_position <"$res/missed.txt" | sort >"$dir/missed-names.txt"
-        equivalent=$(equivalent_names | sort -u | comm -12 "$dir/missed-names.txt" - | grep -c . || true)
-        equivalent_names | sort -u | comm -23 "$dir/missed-names.txt" - >"$dir/unlisted.txt" || true
+        equivalent_names >"$dir/equivalent-names.txt"
+        equivalent=$(grep -c -F -x -f "$dir/equivalent-names.txt" "$dir/missed-names.txt" || true)
+        grep -v -F -x -f "$dir/equivalent-names.txt" "$dir/missed-names.txt" >"$dir/unlisted.txt" || true
     fi
     denominator=$((caught + missed - equivalent))
     if [ "$denominator" -gt 0 ]; then
@@ -139,11 +156,11 @@ for module in "${selected[@]}"; do
     awk -v m="\`$module\`" -v row="$row" '
         /<!-- mutants-table-end -->/ { if (!done) print row; done = 1; print; next }
         index($0, "| " m " |") == 1 { if (!done) print row; done = 1; next }
-        { print }' "$DOC" >"$DOC.tmp" && mv "$DOC.tmp" "$DOC"
+        { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
     # Record how and where this row was measured.
     awk -v m="$module" -v run="- \`$module\`: \`${cmd[*]}\` — $(date -u +%Y-%m-%d), $machine, $version" '
         /<!-- mutants-runs-end -->/ { if (!done) print run; done = 1; print; next }
         index($0, "- `" m "`: ") == 1 { if (!done) print run; done = 1; next }
-        { print }' "$DOC" >"$DOC.tmp" && mv "$DOC.tmp" "$DOC"
+        { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
 done
 exit $status
