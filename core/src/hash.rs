@@ -436,6 +436,150 @@ pub fn permute(i: u32, n: u32, seed: u32) -> u32 {
 mod tests {
     use super::*;
 
+    /// SplitMix64 (Steele, Lea & Flood 2014) is `mix64` applied to a Weyl sequence with
+    /// increment `GOLDEN`; its published first outputs from state 0 pin every step of the
+    /// finaliser.
+    #[test]
+    fn mix64_reproduces_splitmix64s_published_outputs() {
+        let mut state = 0u64;
+        for want in [
+            0xe220_a839_7b1d_cdaf,
+            0x6e78_9e6a_a1b9_65f4,
+            0x06c4_5d18_8009_454f,
+        ] {
+            state = state.wrapping_add(GOLDEN);
+            assert_eq!(mix64(state), want);
+        }
+    }
+
+    /// `lowbias32` is a bijection, and Wellons publishes its inverse (`lowbias32_r`: the
+    /// xor-shifts undone, multiplied by the constants' inverses modulo 2³²). Composing the two
+    /// is the identity, which pins each of the five steps.
+    #[test]
+    fn mix32_is_undone_by_the_published_inverse() {
+        let inverse = |mut x: u32| {
+            x ^= x >> 16;
+            x = x.wrapping_mul(0x4302_1123);
+            x ^= (x >> 15) ^ (x >> 30);
+            x = x.wrapping_mul(0x1d69_e2a5);
+            x ^ (x >> 16)
+        };
+        for x in (0..1u32 << 16).map(|k| k.wrapping_mul(0x9e37_79b9) ^ k) {
+            assert_eq!(inverse(mix32(x)), x, "{x:#x}");
+        }
+        // And it mixes: one flipped input bit flips about half the output bits.
+        let flips: u32 = (0..32)
+            .map(|b| (mix32(12_345) ^ mix32(12_345 ^ (1 << b))).count_ones())
+            .sum();
+        assert!((8 * 32..24 * 32).contains(&flips), "{flips}");
+    }
+
+    /// Each field of `hash2` and `hash3` is hashed bijectively: for fixed other fields, distinct
+    /// values of one field give distinct hashes (a field combined with `|` or `&`, or dropped,
+    /// would collide).
+    #[test]
+    fn hashes_are_injective_in_each_field() {
+        let distinct = |f: &dyn Fn(u64) -> u64| {
+            let mut v: std::vec::Vec<u64> = (0..1u64 << 14)
+                .map(|x| f(x.wrapping_mul(0x1_0001)))
+                .collect();
+            v.sort_unstable();
+            v.dedup();
+            v.len()
+        };
+        let all = 1 << 14;
+        assert_eq!(distinct(&|x| hash2(x, 77)), all);
+        assert_eq!(distinct(&|x| hash2(77, x)), all);
+        assert_eq!(distinct(&|x| hash3(x, 5, 6)), all);
+        assert_eq!(distinct(&|x| hash3(5, x, 6)), all);
+        assert_eq!(distinct(&|x| hash3(5, 6, x)), all);
+        assert_ne!(hash2(1, 2), hash2(2, 1));
+        assert_ne!(hash3(1, 2, 3), hash3(1, 3, 2));
+        assert_ne!(hash3(1, 2, 3), hash2(1, 2));
+    }
+
+    /// `hash_slice` is the documented fold of `hash2` from `GOLDEN`, over every element.
+    #[test]
+    fn hash_slice_folds_hash2_over_every_element() {
+        assert_eq!(hash_slice(&[]), GOLDEN);
+        let values = [3u64, 1, 4, 1, 5, 9, 2, 6];
+        for len in 0..=values.len() {
+            let fold = values[..len].iter().fold(GOLDEN, |h, &v| hash2(h, v));
+            assert_eq!(hash_slice(&values[..len]), fold, "{len} values");
+        }
+    }
+
+    /// WyRand word `i` is the `i + 1`-th output of the sequential generator from the wyhash
+    /// reference (`state += 0xa0761d6478bd642f`, then fold `state · (state ^
+    /// 0xe7037ed1a0b428db)` as 128 bits, high half XOR low half).
+    #[test]
+    fn wyrand_is_the_sequential_generator_addressed_by_index() {
+        for seed in [0u64, 7, u64::MAX] {
+            let mut state = seed;
+            for i in 0..100 {
+                state = state.wrapping_add(0xa076_1d64_78bd_642f);
+                let t = u128::from(state) * u128::from(state ^ 0xe703_7ed1_a0b4_28db);
+                assert_eq!(
+                    wyrand(seed, i),
+                    (t >> 64) as u64 ^ t as u64,
+                    "seed {seed}, {i}"
+                );
+            }
+        }
+    }
+
+    /// The unit floats are the top 24 (53) bits over 2²⁴ (2⁵³): exact at the ends and halfway,
+    /// and one step of the kept bits is one ulp of the result's spacing.
+    #[test]
+    fn unit_floats_are_the_top_bits_scaled() {
+        assert_eq!(unit_f32(0), 0.0);
+        assert_eq!(unit_f32(0xff), 0.0);
+        assert_eq!(unit_f32(0x100), 1.0 / 16_777_216.0);
+        assert_eq!(unit_f32(0x8000_0000), 0.5);
+        assert_eq!(unit_f32(u32::MAX), 1.0 - 1.0 / 16_777_216.0);
+        assert_eq!(unit_f64(0), 0.0);
+        assert_eq!(unit_f64(0x7ff), 0.0);
+        assert_eq!(unit_f64(0x800), 1.0 / 9_007_199_254_740_992.0);
+        assert_eq!(unit_f64(1 << 63), 0.5);
+        assert_eq!(unit_f64(u64::MAX), 1.0 - 1.0 / 9_007_199_254_740_992.0);
+    }
+
+    /// `apply(i)` with `i >= n` is `apply(i mod n)`, on the table route (`n ≤ 16`) as on the
+    /// keyed one, from `i = n` itself up to `u32::MAX`.
+    #[test]
+    fn indices_past_n_wrap_on_both_routes() {
+        for n in 1..=40u32 {
+            for seed in [3u32, 0xffff_fff0] {
+                let p = Permutation::new(n, seed);
+                for i in [n, n + 1, 2 * n - 1, 5 * n + 2, u32::MAX] {
+                    assert_eq!(p.apply(i), p.apply(i % n), "n {n}, seed {seed}, i {i}");
+                }
+            }
+        }
+    }
+
+    /// `ArrayOrder` is the documented choice: for `n ≤ 16` the nibble table read from the key,
+    /// beyond it the keyed `Permutation` of the key's low half; either way a bijection on `0..n`.
+    #[test]
+    fn array_order_is_the_table_up_to_16_then_the_keyed_permutation() {
+        for n in 1..=40u32 {
+            for key in [0u64, 0x0123_4567_89ab_cdef, u64::MAX - 5] {
+                let order = ArrayOrder::new(n, key);
+                let mut seen = std::vec![false; n as usize];
+                for j in 0..n {
+                    let want = if n <= 16 {
+                        packed_entry(packed_table(n, key), j)
+                    } else {
+                        Permutation::new(n, key as u32).apply(j)
+                    };
+                    let to = order.apply(j);
+                    assert_eq!(to, want, "n {n}, key {key:#x}, value {j}");
+                    assert!(!core::mem::replace(&mut seen[to as usize], true));
+                }
+            }
+        }
+    }
+
     #[test]
     fn permute_is_a_bijection_for_many_sizes_and_seeds() {
         let mut seen = std::vec![false; 1025];

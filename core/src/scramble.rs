@@ -320,6 +320,46 @@ mod tests {
         assert!(reversed_to_f32(u32::MAX) < 1.0);
     }
 
+    /// `lk_hash` is the hash of Vegdahl's "Building a better LK hash" (psychopath.io, 2021),
+    /// transcribed here step by step from the post as the reference; a scramble with any step
+    /// changed is still nested but no longer that hash.
+    #[test]
+    fn lk_hash_is_the_published_hash() {
+        fn published(mut x: u32, seed: u32) -> u32 {
+            x ^= x.wrapping_mul(0x3d20_adea);
+            x = x.wrapping_add(seed);
+            x = x.wrapping_mul((seed >> 16) | 1);
+            x ^= x.wrapping_mul(0x0552_6c56);
+            x ^= x.wrapping_mul(0x53a2_2864);
+            x
+        }
+        for seed in [0u32, 1, 0x0001_0000, 0x8765_4321, u32::MAX] {
+            for x in (0..4096u32).map(|i| i.wrapping_mul(0x9e37_79b9)) {
+                assert_eq!(
+                    lk_hash(x, seed),
+                    published(x, seed),
+                    "x {x:#x}, seed {seed:#x}"
+                );
+            }
+        }
+    }
+
+    /// The float route of the fast Owen scramble reads the same top 24 digits as the integer
+    /// route: `fast_owen_keyed_f32` is the fraction of `fast_owen_keyed`.
+    #[test]
+    fn fast_owen_float_is_the_fraction_of_the_integer_scramble() {
+        for key in [0u32, 3, 0xdead_beef] {
+            for x in (0..1u32 << 14).map(|i| i.wrapping_mul(0x0004_0003) ^ (i << 18)) {
+                let want = crate::math::fraction_to_f32(fast_owen_keyed(x, key));
+                assert_eq!(
+                    fast_owen_keyed_f32(x, key).to_bits(),
+                    want.to_bits(),
+                    "{x:#x}"
+                );
+            }
+        }
+    }
+
     #[test]
     fn names_round_trip() {
         for s in Scramble::ALL {

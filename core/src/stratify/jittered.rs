@@ -56,9 +56,10 @@ pub fn stratified_1d<R: Rng + ?Sized>(
         Jitter::Jittered => {
             // Jitters from a counter stream keyed by one draw of `rng`, as in 2D.
             let rng = &mut CounterRng::keyed_by(rng);
+            // In 64 bits: at 2²² strata there are no jitter bits and the shift is 32.
             let shift = 32 - strata.jitter_bits();
             for (k, x) in (0..n).zip(out.iter_mut()) {
-                *x = strata.jittered(k, rng.next_u32() >> shift);
+                *x = strata.jittered(k, (u64::from(rng.next_u32()) >> shift) as u32);
             }
         }
         Jitter::Centered => {
@@ -318,6 +319,21 @@ mod tests {
         }
         let mean = sum / 100_000.0;
         assert!((mean - 0.5).abs() < 0.005, "mean {mean}");
+    }
+
+    /// At 2²² strata, the last count of the exact route, no jitter bits are left: every
+    /// sample is its stratum's centre, one per stratum (the jitter word must be shifted out
+    /// whole, not by a 32-bit shift of 32).
+    #[test]
+    fn two_pow_22_strata_in_1d_are_the_centres() {
+        let n = 1usize << 22;
+        let mut buf = std::vec![0.0f32; n];
+        stratified_1d(&mut buf, Jitter::Jittered, &mut default_rng(12)).unwrap();
+        let strata = Strata::new(n as u32);
+        for (k, &x) in (0u32..).zip(&buf) {
+            assert_eq!(x, strata.centre(k), "sample {k}");
+            assert_eq!(stratum(x, n as u32), k);
+        }
     }
 
     /// The jitter of point `p` (row-major) on an `nx × ny` grid, from an oracle written from the

@@ -56,10 +56,7 @@ pub fn latin_hypercube<R: Rng + ?Sized>(
     let n = points_in(out.len(), dims)?;
     let d = dims as usize;
     let strata = Strata::new(n);
-    let (shift, mask) = (
-        32 - strata.jitter_bits(),
-        (1u32 << strata.jitter_bits()) - 1,
-    );
+    let shift = 32 - strata.jitter_bits();
     // One word per value from a counter stream keyed by one draw of `rng`: the jitter from
     // its low half, the bounded draw from its high half (more words only on the rare
     // rejection), with no generator chain between the steps.
@@ -69,7 +66,8 @@ pub fn latin_hypercube<R: Rng + ?Sized>(
         // permutation of the strata 0..=k.
         for k in 0..n {
             let w = rng.next_u64();
-            let value = strata.jittered(k, (w as u32 >> shift) & mask);
+            // The low half's top bits, shifted in 64 bits: at 2²² strata the shift is 32.
+            let value = strata.jittered(k, (u64::from(w as u32) >> shift) as u32);
             let j = uniform_below_from((w >> 32) as u32, k + 1, rng) as usize;
             let (kk, jj) = (k as usize * d + dim, j * d + dim);
             out[kk] = out[jj];
@@ -160,7 +158,7 @@ impl LatinHypercube {
             let perm = hash::Permutation::new(n, (key >> 32) as u32);
             for (i, point) in (0..n).zip(out.chunks_exact_mut(self.dims as usize)) {
                 let stratum = perm.apply(i);
-                let jitter = (hash::hash2(key, u64::from(i)) >> 32) as u32 >> discard;
+                let jitter = (hash::hash2(key, u64::from(i)) >> 32 >> discard) as u32;
                 point[x0] = strata.jittered(stratum, jitter);
             }
         }
@@ -248,6 +246,50 @@ mod tests {
             .filter(|p| (p[0] * 64.0) as u32 == (p[1] * 64.0) as u32)
             .count();
         assert!(same < 8, "{same}");
+    }
+
+    /// The accessors agree with what `fill` does: `dims()` is the constructed dimension count
+    /// and `required_len(n)` is exactly the buffer length that `fill` turns into `n` points.
+    #[test]
+    fn accessors_match_what_fill_accepts() {
+        for dims in [1u32, 2, 3, 7] {
+            let lhs = LatinHypercube::new(dims, 9).unwrap();
+            assert_eq!(lhs.dims(), dims);
+            for n in [1u32, 2, 5, 64] {
+                let len = lhs.required_len(n).unwrap();
+                assert_eq!(len, (n * dims) as usize);
+                let mut buf = std::vec![0.0f32; len];
+                assert_eq!(lhs.fill(&mut buf), Ok(n));
+            }
+            assert_eq!(lhs.required_len(0), Some(0));
+        }
+    }
+
+    /// At 2²² strata the exact route has no jitter bits left (every value is its stratum's
+    /// centre) and one more stratum takes the checked route with 24 bits: both still put one
+    /// value in each stratum.
+    #[test]
+    fn every_stratum_once_at_the_ends_of_the_jitter_range() {
+        for n in [1usize << 22, (1 << 22) + 1] {
+            let mut buf = std::vec![0.0f32; n];
+            for stateless in [false, true] {
+                let filled = if stateless {
+                    LatinHypercube::new(1, 3).unwrap().fill(&mut buf)
+                } else {
+                    latin_hypercube(&mut buf, 1, &mut default_rng(3))
+                };
+                assert_eq!(filled, Ok(n as u32));
+                let mut seen = std::vec![false; n];
+                for &x in &buf {
+                    assert!((0.0..1.0).contains(&x), "{n}, stateless {stateless}: {x}");
+                    let s = (f64::from(x) * n as f64) as usize;
+                    assert!(
+                        !core::mem::replace(&mut seen[s], true),
+                        "{n}, stateless {stateless}: stratum {s} twice"
+                    );
+                }
+            }
+        }
     }
 
     /// The offsets of `buf`'s values inside their strata (`x·n − stratum`), every dimension.

@@ -242,6 +242,28 @@ mod tests {
         }
     }
 
+    /// Beyond 2²² strata the 24 jitter bits map linearly onto the stratum: bits `b` put the
+    /// value at `(k + b/2²⁴)/n`, within two ulps (checked near 0, where an ulp is far below a
+    /// jitter step).
+    #[test]
+    fn checked_route_places_the_jitter_linearly() {
+        for n in [(1u32 << 22) + 1, 10_000_019] {
+            let st = Strata::new(n);
+            assert_eq!(st.jitter_bits(), 24);
+            for k in [0u32, 1, 1000] {
+                for bits in [0u32, 1, 1 << 22, 1 << 23, 3 << 22, (1 << 24) - 1] {
+                    let want = (f64::from(k) + f64::from(bits) / 16_777_216.0) / f64::from(n);
+                    let x = st.jittered(k, bits);
+                    let ulp = f64::from(f32::from_bits(x.to_bits() + 1) - x);
+                    assert!(
+                        (f64::from(x) - want).abs() <= 2.0 * ulp,
+                        "n={n} k={k} bits={bits}: {x} is not {want}"
+                    );
+                }
+            }
+        }
+    }
+
     #[test]
     fn centre_is_the_rounded_midpoint() {
         for n in [1u32, 2, 3, 7, 10, 1000, 1 << 22] {

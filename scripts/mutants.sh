@@ -1,0 +1,166 @@
+#!/usr/bin/env bash
+# Mutation testing of the core, one module at a time (docs/mutation.md).
+#
+#   scripts/mutants.sh                 every module below, in order
+#   scripts/mutants.sh stratify/jittered hash
+#                                      only the named modules
+#   scripts/mutants.sh --list          the modules, their files and test filters
+#   scripts/mutants.sh --summarize hash
+#                                      re-score earlier runs (after editing the equivalent list)
+#
+# For each module it runs cargo-mutants on that module's file only, and runs only the lib tests
+# whose path matches the module's filter (the module's own tests), so a mutant costs one
+# incremental build plus a few seconds of tests:
+#
+#   cargo mutants --package P --file F --test-package P --no-shuffle --jobs J --timeout T \
+#       --output OUT/<module> --cargo-arg=--lib -- -- <filter>...
+#
+# then counts caught, missed, unviable and timed-out mutants from OUT/<module>/mutants.out/,
+# subtracts the missed mutants listed in scripts/mutants-equivalent.txt, and writes the module's
+# row of the table in docs/mutation.md (rows of modules not run this time are kept).
+#
+# Environment: MUTANTS_JOBS (default 1: two cores, one build at a time), MUTANTS_TIMEOUT
+# (seconds of tests per mutant before it counts as a timeout; default 30), MUTANTS_OUT (default
+# $CARGO_TARGET_DIR/mutants, else target/mutants), MUTANTS_BASELINE=skip (do not first run the
+# tests on the unmutated tree: saves one build per module when they are known to pass).
+#
+# Exit status: 0 when every viable, non-equivalent mutant was caught; 2 when some were missed (the
+# list is printed); 1 when cargo-mutants is missing or failed.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# As .ci/run: line tables only keep each mutant's build short.
+export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
+
+# module | package | file | test filters (space-separated libtest substrings)
+MODULES='
+stratify/jittered|nyquist|core/src/stratify/jittered.rs|stratify::jittered::
+stratify/latin_hypercube|nyquist|core/src/stratify/latin_hypercube.rs|stratify::latin_hypercube::
+stratify/shuffle|nyquist|core/src/stratify/shuffle.rs|stratify::shuffle::
+stratify/mod|nyquist|core/src/stratify/mod.rs|stratify::
+hash|nyquist|core/src/hash.rs|hash::tests::
+scramble|nyquist|core/src/scramble.rs|scramble::tests::
+radical/mod|nyquist|core/src/radical/mod.rs|radical::tests::
+radical/owen|nyquist|core/src/radical/owen.rs|radical::owen::
+radical/primes|nyquist|core/src/radical/primes.rs|radical::
+sequence/sobol|nyquist|core/src/sequence/sobol.rs|sequence::sobol::
+sequence/halton|nyquist|core/src/sequence/halton.rs|sequence::halton::
+sequence/owen_sobol|nyquist|core/src/sequence/owen_sobol.rs|sequence::owen_sobol::
+sequence/pmj02|nyquist|core/src/sequence/pmj02.rs|sequence::pmj02::
+sequence/zero_two|nyquist|core/src/sequence/zero_two.rs|sequence::zero_two::
+analysis/star|nyquist|core/src/analysis/star.rs|analysis::star::
+analysis/l2|nyquist|core/src/analysis/l2.rs|analysis::l2::
+analysis/distance|nyquist|core/src/analysis/distance.rs|analysis::distance::
+filter/kind|nyquist|core/src/filter/kind.rs|filter::tests::
+filter/table|nyquist|core/src/filter/table.rs|filter::tests::
+filter/phase|nyquist|core/src/filter/phase.rs|filter::tests::
+filter/sample|nyquist|core/src/filter/sample.rs|filter::tests::
+film/tile|nyquist-film|std-film/src/tile.rs|tile::
+film/film|nyquist-film|std-film/src/film.rs|film::
+'
+
+EQUIVALENT=scripts/mutants-equivalent.txt
+DOC=docs/mutation.md
+JOBS=${MUTANTS_JOBS:-1}
+TIMEOUT=${MUTANTS_TIMEOUT:-30}
+OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants}
+BASELINE=${MUTANTS_BASELINE:-run}
+
+modules() { printf '%s\n' "$MODULES" | grep -v '^$'; }
+
+summarize=0
+if [ "${1:-}" = "--summarize" ]; then
+    summarize=1
+    shift
+fi
+if [ "${1:-}" = "--list" ]; then
+    modules | awk -F'|' '{ printf "%-26s %-12s %-40s %s\n", $1, $2, $3, $4 }'
+    exit 0
+fi
+if ! cargo mutants --version >/dev/null 2>&1; then
+    echo "cargo-mutants is not installed: cargo install cargo-mutants --locked" >&2
+    exit 1
+fi
+
+# A mutant's name without its line and column, as scripts/mutants-equivalent.txt lists it:
+# "core/src/hash.rs:12:5: replace + with - in mix" -> "core/src/hash.rs: replace + with - in mix".
+strip_position() { sed -E 's/^([^:]+):[0-9]+:[0-9]+: /\1: /'; }
+# The listed equivalent mutants' names (the part of each line before "  # ").
+equivalent_names() { grep -v -e '^#' -e '^[[:space:]]*$' "$EQUIVALENT" | sed -E 's/  # .*$//'; }
+count() { if [ -s "$1" ]; then grep -c . "$1"; else echo 0; fi; }
+
+selected=("$@")
+[ ${#selected[@]} -gt 0 ] || mapfile -t selected < <(modules | cut -d'|' -f1)
+
+version=$(cargo mutants --version)
+machine="$(nproc)-core $(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2- | sed 's/^ *//'), $(uname -sm)"
+status=0
+for module in "${selected[@]}"; do
+    line=$(modules | awk -F'|' -v m="$module" '$1 == m') || true
+    [ -n "$line" ] || { echo "unknown module '$module' (see --list)" >&2; exit 1; }
+    IFS='|' read -r _ package file filters <<<"$line"
+    dir="$OUT/${module//\//-}"
+    # shellcheck disable=SC2206 # the filters are separate libtest arguments
+    cmd=(cargo mutants --package "$package" --file "$file" --test-package "$package"
+        --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --baseline "$BASELINE" --output "$dir"
+        --cargo-arg=--lib -- -- $filters)
+    res="$dir/mutants.out"
+    if [ $summarize = 1 ]; then
+        # Re-score an earlier run (after a change to the equivalent list).
+        [ -s "$dir/seconds" ] || { echo "$module: no earlier run in $dir" >&2; exit 1; }
+        seconds=$(cat "$dir/seconds")
+        read -r -a cmd <"$dir/command"
+    else
+        rm -rf "$dir"
+        mkdir -p "$dir"
+        echo "== $module: ${cmd[*]}"
+        begin=$SECONDS
+        rc=0
+        nice -n 15 "${cmd[@]}" || rc=$?
+        seconds=$((SECONDS - begin))
+        # 0: all caught; 2: some missed; 3: some timed out. Anything else is a failed run.
+        case $rc in 0 | 2 | 3) ;; *) echo "$module: cargo mutants exited $rc" >&2; exit 1 ;; esac
+        echo "$seconds" >"$dir/seconds"
+        echo "${cmd[*]}" >"$dir/command"
+    fi
+    caught=$(count "$res/caught.txt")
+    missed=$(count "$res/missed.txt")
+    unviable=$(count "$res/unviable.txt")
+    timeouts=$(count "$res/timeout.txt")
+    total=$((caught + missed + unviable + timeouts))
+    : >"$dir/unlisted.txt"
+    equivalent=0
+    if [ -s "$res/missed.txt" ]; then
+        strip_position <"$res/missed.txt" | sort >"$dir/missed-names.txt"
+        equivalent_names >"$dir/equivalent-names.txt"
+        equivalent=$(grep -c -F -x -f "$dir/equivalent-names.txt" "$dir/missed-names.txt" || true)
+        grep -v -F -x -f "$dir/equivalent-names.txt" "$dir/missed-names.txt" >"$dir/unlisted.txt" || true
+    fi
+    denominator=$((caught + missed - equivalent))
+    if [ "$denominator" -gt 0 ]; then
+        score=$(awk -v c="$caught" -v d="$denominator" 'BEGIN { printf "%.1f %%", 100 * c / d }')
+    else
+        score="–"
+    fi
+    # Mean build + test time of one mutant (the baseline excluded), from cargo-mutants' record.
+    per=$(jq -r '[.outcomes[] | select(.scenario | type == "object")
+        | [.phase_results[].duration] | add] | if length > 0 then add / length * 10 | round / 10
+        else "–" end' "$res/outcomes.json" 2>/dev/null || echo "–")
+    row="| \`$module\` | $total | $caught | $missed | $unviable | $timeouts | $equivalent | $score | ${seconds} s (${per} s) |"
+    echo "$row"
+    if [ -s "$dir/unlisted.txt" ]; then
+        echo "$module: missed and not listed in $EQUIVALENT:"
+        sed 's/^/    /' "$dir/unlisted.txt"
+        status=2
+    fi
+    # Replace the module's row (or add it before the end marker) in the doc's table.
+    awk -v m="\`$module\`" -v row="$row" '
+        /<!-- mutants-table-end -->/ { if (!done) print row; done = 1; print; next }
+        index($0, "| " m " |") == 1 { if (!done) print row; done = 1; next }
+        { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
+    # Record how and where this row was measured.
+    awk -v m="$module" -v run="- \`$module\`: \`${cmd[*]}\` — $(date -u +%Y-%m-%d), $machine, $version" '
+        /<!-- mutants-runs-end -->/ { if (!done) print run; done = 1; print; next }
+        index($0, "- `" m "`: ") == 1 { if (!done) print run; done = 1; next }
+        { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
+done
+exit $status
