@@ -11,27 +11,13 @@ pub struct Query {
     used: std::cell::RefCell<Vec<String>>,
 }
 
-/// `%XX` and `+` decoding of one query component.
+/// `%XX` and `+` decoding of one query component (`+` is a space in a query string).
 fn decode(s: &str) -> Result<String> {
-    let b = s.as_bytes();
-    let mut out = Vec::with_capacity(b.len());
-    let mut i = 0;
-    while i < b.len() {
-        match b[i] {
-            b'+' => out.push(b' '),
-            b'%' => {
-                let hex = s
-                    .get(i + 1..i + 3)
-                    .and_then(|h| u8::from_str_radix(h, 16).ok())
-                    .ok_or_else(|| anyhow!("query: bad escape in {s:?}"))?;
-                out.push(hex);
-                i += 2;
-            }
-            c => out.push(c),
-        }
-        i += 1;
-    }
-    String::from_utf8(out).map_err(|_| anyhow!("query: {s:?} is not UTF-8"))
+    use nyquist_cli::web::{DecodeError, percent_decode};
+    percent_decode(&s.replace('+', " ")).map_err(|e| match e {
+        DecodeError::BadEscape => anyhow!("query: bad escape in {s:?}"),
+        DecodeError::NotUtf8 => anyhow!("query: {s:?} is not UTF-8"),
+    })
 }
 
 impl Query {
