@@ -47,8 +47,9 @@ def direction_numbers(s, a, m):
     return v[1:]
 
 
-def matrices():
-    rows = [[1 << (BITS - k) for k in range(1, BITS + 1)]]
+def parse():
+    """(s, a, m) per dimension 1 .. DIMS - 1, validated."""
+    dims = []
     with open(DATA, encoding="ascii") as f:
         lines = f.read().split("\n")
     for line in lines[1:]:
@@ -57,15 +58,45 @@ def matrices():
             continue
         d, s, a = int(fields[0]), int(fields[1]), int(fields[2])
         m = [int(x) for x in fields[3:]]
-        if d != len(rows) + 1 or len(m) != s:
+        if d != len(dims) + 2 or len(m) != s:
             raise SystemExit(f"malformed line for dimension {d}: {line!r}")
         for k, mk in enumerate(m, start=1):
             if mk % 2 != 1 or mk >= (1 << k):
                 raise SystemExit(f"dimension {d}: m_{k} = {mk} is not odd and below 2^{k}")
+        dims.append((s, a, m))
+    if len(dims) != DIMS - 1:
+        raise SystemExit(f"expected {DIMS} dimensions, got {len(dims) + 1}")
+    return dims
+
+
+def matrices(dims):
+    rows = [[1 << (BITS - k) for k in range(1, BITS + 1)]]
+    for s, a, m in dims:
         rows.append(direction_numbers(s, a, m))
-    if len(rows) != DIMS:
-        raise SystemExit(f"expected {DIMS} dimensions, got {len(rows)}")
     return rows
+
+
+def render_directions(dims):
+    """SOBOL_DIRECTIONS: per dimension 1 .. DIMS - 1, the word (s << 12) | a, then m_1 .. m_s."""
+    words = []
+    for s, a, m in dims:
+        if s >= 16 or a >= (1 << 12) or max(m) >= (1 << 16):
+            raise SystemExit(f"s = {s}, a = {a} or an m_k does not fit the packed form")
+        words.append((s << 12) | a)
+        words.extend(m)
+    out = [
+        "",
+        "/// The same direction numbers packed for [`SOBOL_MATRICES`]' construction at first use",
+        "/// (feature `lazy-tables`): for each dimension from 1, the word `(s << 12) | a`, then",
+        "/// `m_1 .. m_s`; Joe and Kuo's `s`, `a` and `m_k` as in the data file.",
+        '#[cfg(any(feature = "lazy-tables", test))]',
+        "#[rustfmt::skip]",
+        f"pub(crate) static SOBOL_DIRECTIONS: [u16; {len(words)}] = [",
+    ]
+    for i in range(0, len(words), 20):
+        out.append("    " + " ".join(f"{w}," for w in words[i:i + 20]))
+    out.append("];")
+    return "\n".join(out) + "\n"
 
 
 def render_rows(rows):
@@ -89,14 +120,18 @@ def render_header():
         "//! every entry from the data file with the same recurrence.",
         "",
         "/// `SOBOL_MATRICES[d][k]` is direction number `V_{k+1}` of dimension `d`: the generator-matrix",
-        "/// column XOR-ed into the result when bit `k` of the index is set.",
+        "/// column XOR-ed into the result when bit `k` of the index is set. With the `lazy-tables`",
+        "/// feature the library reads the same table built at first use from [`SOBOL_DIRECTIONS`]",
+        "/// (`sobol_lazy.rs`); tests still compile this one to compare the two.",
+        '#[cfg(any(not(feature = "lazy-tables"), test))]',
         "#[rustfmt::skip]",
         f"pub(crate) static SOBOL_MATRICES: [[u32; {BITS}]; {DIMS}] = [",
     ]
 
 
 def main():
-    text = render_rows(matrices())
+    dims = parse()
+    text = render_rows(matrices(dims)) + render_directions(dims)
     if "--check" in sys.argv[1:]:
         with open(OUT, encoding="utf-8") as f:
             if f.read() != text:

@@ -31,7 +31,7 @@ use crate::math::TWO_POW_MINUS_32;
 use crate::math::{ONE_MINUS_EPSILON, fraction_to_f32};
 use crate::radical::{fast_class, fast_limit, phi2, radical_inverse_f64};
 use crate::scramble::lk_hash;
-use crate::sequence::{IndexShuffle, SOBOL_MATRICES, Sequence, dim_seed, sobol_product};
+use crate::sequence::{IndexShuffle, Sequence, dim_seed, sobol_product};
 
 /// `N` is in `1 ..= 1024`, or the type does not compile.
 const fn check_dims<const N: usize>() {
@@ -305,10 +305,17 @@ impl<const N: usize> Sequence for Halton<N> {
 const fn sobol_directions<const N: usize>() -> [[u32; 32]; N] {
     check_dims::<N>();
     let mut out = [[0u32; 32]; N];
-    let mut d = 0;
-    while d < N {
-        out[d] = SOBOL_MATRICES[d];
-        d += 1;
+    // With `lazy-tables` the full table is built at run time; these rows come from the same
+    // packed direction numbers, at compile time.
+    #[cfg(all(feature = "lazy-tables", not(test)))]
+    crate::sequence::sobol_matrix_rows(&mut out);
+    #[cfg(any(not(feature = "lazy-tables"), test))]
+    {
+        let mut d = 0;
+        while d < N {
+            out[d] = crate::sequence::SOBOL_MATRICES[d];
+            d += 1;
+        }
     }
     out
 }

@@ -32,8 +32,20 @@
 //! proves it by linking the crate into a staticlib that has neither. For firmware and WASM, the
 //! const-generic point sets of [`compact`] return the `sequence` types' values, bit for bit,
 //! without their speed tables and without `f64` arithmetic (`docs/embedded.md` in the
-//! repository has sizes and budgets). The one `unsafe` is the call
-//! into an SSE2 kernel on x86-64 (SSE2 is in that target's baseline); everything else is safe.
+//! repository has sizes and budgets).
+//!
+//! ## Features
+//!
+//! - `lazy-tables` (off by default): the samplers' speed tables (about 2.1 MiB: Sobol and
+//!   Owen-Sobol products, radical-inverse constants, the baked PMJ(0,2) sequence) are built in
+//!   zeroed memory at first use instead of stored in the binary. For WebAssembly, where the
+//!   module's size is a download; values are identical. Needs atomic compare-and-swap.
+//!
+//! ## `unsafe`
+//!
+//! Two uses, each with a `// SAFETY:` argument and run under Miri in CI: the call into an SSE2
+//! kernel on x86-64 (SSE2 is in that target's baseline), and, with `lazy-tables`, handing out
+//! shared references to a table after its one fill. Everything else is safe.
 #![no_std]
 #![deny(unsafe_code)]
 #![deny(missing_docs)]
@@ -49,6 +61,7 @@ pub mod error;
 pub mod filter;
 pub mod hash;
 pub mod lattice;
+mod lazy_table;
 pub mod math;
 pub mod radical;
 pub mod rng;

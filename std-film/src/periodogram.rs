@@ -15,6 +15,7 @@
 //! realisations gives about `−10·log10(M)` dB; white noise gives about 0 dB for one realisation.
 
 use nyquist::Error;
+#[cfg(not(target_family = "wasm"))]
 use rayon::prelude::*;
 use std::f64::consts::TAU;
 
@@ -118,49 +119,52 @@ impl Periodogram {
                 (c, -s)
             })
             .unzip();
-        self.sum
-            .par_chunks_mut(side)
-            .enumerate()
-            .for_each(|(row, out)| {
-                let fy = row as i64 - f;
-                let n = xs.len();
-                let mut zr = vec![0.0; n];
-                let mut zi = vec![0.0; n];
-                for (col, cell) in out.iter_mut().enumerate() {
-                    let fx = col as i64 - f;
-                    if col % RESEED == 0 {
-                        for k in 0..n {
-                            let phase = phase_turns(fx, xs[k], fy, ys[k]);
-                            let (s, c) = libm::sincos(TAU * phase);
-                            zr[k] = c;
-                            zi[k] = -s;
-                        }
+        // Native: rows in parallel. WebAssembly has no threads here: rows in order, and no
+        // thread pool in the module.
+        #[cfg(not(target_family = "wasm"))]
+        let rows = self.sum.par_chunks_mut(side);
+        #[cfg(target_family = "wasm")]
+        let rows = self.sum.chunks_mut(side);
+        rows.enumerate().for_each(|(row, out)| {
+            let fy = row as i64 - f;
+            let n = xs.len();
+            let mut zr = vec![0.0; n];
+            let mut zi = vec![0.0; n];
+            for (col, cell) in out.iter_mut().enumerate() {
+                let fx = col as i64 - f;
+                if col % RESEED == 0 {
+                    for k in 0..n {
+                        let phase = phase_turns(fx, xs[k], fy, ys[k]);
+                        let (s, c) = libm::sincos(TAU * phase);
+                        zr[k] = c;
+                        zi[k] = -s;
                     }
-                    let (mut ar, mut ai) = ([0.0f64; 4], [0.0f64; 4]);
-                    let mut k = 0;
-                    while k + 4 <= n {
-                        for l in 0..4 {
-                            let (r, i) = (zr[k + l], zi[k + l]);
-                            ar[l] += r;
-                            ai[l] += i;
-                            zr[k + l] = r * step_re[k + l] - i * step_im[k + l];
-                            zi[k + l] = r * step_im[k + l] + i * step_re[k + l];
-                        }
-                        k += 4;
-                    }
-                    while k < n {
-                        let (r, i) = (zr[k], zi[k]);
-                        ar[0] += r;
-                        ai[0] += i;
-                        zr[k] = r * step_re[k] - i * step_im[k];
-                        zi[k] = r * step_im[k] + i * step_re[k];
-                        k += 1;
-                    }
-                    let re = (ar[0] + ar[1]) + (ar[2] + ar[3]);
-                    let im = (ai[0] + ai[1]) + (ai[2] + ai[3]);
-                    *cell += (re * re + im * im) * inv_n;
                 }
-            });
+                let (mut ar, mut ai) = ([0.0f64; 4], [0.0f64; 4]);
+                let mut k = 0;
+                while k + 4 <= n {
+                    for l in 0..4 {
+                        let (r, i) = (zr[k + l], zi[k + l]);
+                        ar[l] += r;
+                        ai[l] += i;
+                        zr[k + l] = r * step_re[k + l] - i * step_im[k + l];
+                        zi[k + l] = r * step_im[k + l] + i * step_re[k + l];
+                    }
+                    k += 4;
+                }
+                while k < n {
+                    let (r, i) = (zr[k], zi[k]);
+                    ar[0] += r;
+                    ai[0] += i;
+                    zr[k] = r * step_re[k] - i * step_im[k];
+                    zi[k] = r * step_im[k] + i * step_re[k];
+                    k += 1;
+                }
+                let re = (ar[0] + ar[1]) + (ar[2] + ar[3]);
+                let im = (ai[0] + ai[1]) + (ai[2] + ai[3]);
+                *cell += (re * re + im * im) * inv_n;
+            }
+        });
         self.realisations += 1;
         Ok(())
     }

@@ -10,20 +10,27 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 
-# The module carries every desktop sampler's precomputed tables (about 2.4 MB of the total, see
-# docs/web.md): this budget catches growth, it is not the size the module should have.
-wasm_budget=3300000
+# The served module's size (after wasm-opt, which is installed here when missing): the target is
+# 400 KB; the budget is the size reached so far plus a margin, so growth fails the test
+# (docs/web.md has the breakdown).
+wasm_target=400000
 playwright_version=1.64.1
 
+if ! command -v wasm-opt >/dev/null && [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
+    echo "installing Debian's binaryen for wasm-opt (apt-get)"
+    timeout 300 apt-get install -y -q binaryen >/dev/null 2>&1 ||
+        { timeout 120 apt-get update -q >/dev/null 2>&1 &&
+            timeout 300 apt-get install -y -q binaryen >/dev/null 2>&1; } || true
+fi
+if command -v wasm-opt >/dev/null; then
+    wasm_budget=720000
+else
+    echo "SKIPPED: wasm-opt could not be installed; the module is measured unoptimised"
+    wasm_budget=830000
+fi
 site=$(bash web/build.sh)
 wasm_bytes=$(wc -c <"$site/nyquist_web.wasm")
-echo "nyquist_web.wasm: $wasm_bytes bytes (budget $wasm_budget)"
-if command -v wasm-opt >/dev/null; then
-    wasm-opt -Oz --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
-        --enable-nontrapping-float-to-int "$site/nyquist_web.wasm" -o "$site/opt.wasm"
-    echo "after wasm-opt -Oz: $(wc -c <"$site/opt.wasm") bytes (not served)"
-    rm -f "$site/opt.wasm"
-fi
+echo "WASM_BYTES $wasm_bytes (budget $wasm_budget, target $wasm_target)"
 [ "$wasm_bytes" -le "$wasm_budget" ] || { echo "nyquist_web.wasm is over its budget"; exit 1; }
 
 skip() {

@@ -33,6 +33,7 @@
 mod owen;
 mod primes;
 
+use crate::lazy_table::baked_table;
 use crate::math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};
 use crate::{Error, hash};
 pub use owen::{
@@ -69,6 +70,7 @@ pub fn prime(dim: u32) -> u32 {
 /// Per-base constants: the base, the digits per chunk `k` (the largest with `b^k < 2³²`), the
 /// chunk modulus `b^k`, and the offset of this base's rows in the flat tables below.
 #[derive(Clone, Copy)]
+#[cfg_attr(test, derive(PartialEq))]
 struct BaseInfo {
     b: u64,
     /// `b²`.
@@ -103,15 +105,17 @@ const fn total_rows() -> usize {
 /// Rows in the flat tables: `k + 1` per base (`n = 0 ..= k` digits).
 const ROWS: usize = total_rows();
 
+const NO_BASE: BaseInfo = BaseInfo {
+    b: 0,
+    b2: 0,
+    split: 0,
+    k: 0,
+    big: 0,
+    off: 0,
+};
+
 const fn build_bases() -> [BaseInfo; 1024] {
-    let mut out = [BaseInfo {
-        b: 0,
-        b2: 0,
-        split: 0,
-        k: 0,
-        big: 0,
-        off: 0,
-    }; 1024];
+    let mut out = [NO_BASE; 1024];
     let mut off = 0u32;
     let mut i = 0;
     while i < 1024 {
@@ -131,10 +135,18 @@ const fn build_bases() -> [BaseInfo; 1024] {
     out
 }
 
-static BASES: [BaseInfo; 1024] = build_bases();
+const fn fill_bases(t: &mut [BaseInfo; 1024]) {
+    *t = build_bases();
+}
+
+baked_table! {
+    static BASES: [BaseInfo; 1024] = [NO_BASE; 1024], fill_bases,
+        bases_at_first_use_equal_the_baked_table;
+}
 
 /// `bⁿ` and `⌈2⁶⁴/bⁿ⌉` (0 for `n = 0`, unused), per base and `n`.
 #[derive(Clone, Copy)]
+#[cfg_attr(test, derive(PartialEq))]
 struct Row {
     pow: u64,
     magic: u64,
@@ -161,7 +173,14 @@ const fn build_rows() -> [Row; ROWS] {
     rows
 }
 
-static ROW: [Row; ROWS] = build_rows();
+const fn fill_rows(t: &mut [Row; ROWS]) {
+    *t = build_rows();
+}
+
+baked_table! {
+    static ROW: [Row; ROWS] = [Row { pow: 0, magic: 0 }; ROWS], fill_rows,
+        rows_at_first_use_equal_the_baked_table;
+}
 
 /// `DIGITS[d][L]`: the number of base-`b` digits of `2^L − 1`, capped at `k` — an upper bound on
 /// the digit count of any chunk of bit length `L` (one more than needed at most, which only
@@ -188,7 +207,14 @@ const fn build_digits() -> [[u8; 33]; 1024] {
     out
 }
 
-static DIGITS: [[u8; 33]; 1024] = build_digits();
+const fn fill_digits(t: &mut [[u8; 33]; 1024]) {
+    *t = build_digits();
+}
+
+baked_table! {
+    static DIGITS: [[u8; 33]; 1024] = [[0; 33]; 1024], fill_digits,
+        digits_at_first_use_equal_the_baked_table;
+}
 
 /// Index classes of the fast path: class `c = ⌈bit_len(a)/4⌉` (`0 ..= 8`) for `a < 2³²`.
 const CLASSES: usize = 9;
@@ -203,6 +229,7 @@ const CLASSES: usize = 9;
 /// the reversal of the `n` digits), and the value is `R'·inv`, `inv = 1/b^(n + pad) = c^−m`
 /// correctly rounded. Without a table (`j = 1`), `m = n` single digits, `first = b`, `pad = 0`.
 #[derive(Clone, Copy)]
+#[cfg_attr(test, derive(PartialEq))]
 struct ClassConsts {
     magic: u64,
     inv: f64,
@@ -230,6 +257,7 @@ const NO_CLASS: ClassConsts = ClassConsts {
 /// on the index's length in nibbles, so a renderer's indices — which mostly share a length — do
 /// not mispredict the loop exit, and small indices take few steps.
 #[derive(Clone, Copy)]
+#[cfg_attr(test, derive(PartialEq))]
 #[repr(C, align(64))]
 struct FastBase {
     b: u32,
@@ -296,8 +324,7 @@ const _: () = assert!(CHUNK_REV_LEN == 1 << 16);
 
 /// `CHUNK_REV[table + e] = Σ_i d_i·bⁱ` for a chunk `e < b^j` with digits `d_0 d_1 … d_(j−1)`
 /// (most significant first): the chunk's digits reversed, as the fast path adds them to `R`.
-const fn build_chunk_rev() -> [u16; CHUNK_REV_LEN] {
-    let mut out = [0u16; CHUNK_REV_LEN];
+const fn build_chunk_rev(out: &mut [u16; CHUNK_REV_LEN]) {
     let mut off = 0usize;
     let mut i = 1;
     while i < 1024 {
@@ -323,22 +350,32 @@ const fn build_chunk_rev() -> [u16; CHUNK_REV_LEN] {
         }
         i += 1;
     }
-    out
 }
 
-static CHUNK_REV: [u16; CHUNK_REV_LEN] = build_chunk_rev();
+baked_table! {
+    static CHUNK_REV: [u16; CHUNK_REV_LEN] = [0; CHUNK_REV_LEN], build_chunk_rev,
+        chunk_rev_at_first_use_equals_the_baked_table;
+}
 
-const fn build_fast() -> [FastBase; 1024] {
+/// An all-zero [`FastBase`] (every entry of [`FAST`] is overwritten).
+const NO_FAST_BASE: FastBase = FastBase {
+    b: 0,
+    big: 0,
+    chunk: 0,
+    table: 0,
+    chunk_f: 0.0,
+    class: [ClassConsts {
+        magic: 0,
+        inv: 0.0,
+        first: 0,
+        n: 0,
+        steps: 0,
+    }; CLASSES],
+};
+
+const fn build_fast(out: &mut [FastBase; 1024]) {
     let bases = build_bases();
     let digits = build_digits();
-    let mut out = [FastBase {
-        b: 0,
-        big: 0,
-        chunk: 0,
-        table: 0,
-        chunk_f: 0.0,
-        class: [NO_CLASS; CLASSES],
-    }; 1024];
     let mut table = 0u32;
     let mut i = 0;
     while i < 1024 {
@@ -378,10 +415,12 @@ const fn build_fast() -> [FastBase; 1024] {
         out[i] = f;
         i += 1;
     }
-    out
 }
 
-static FAST: [FastBase; 1024] = build_fast();
+baked_table! {
+    static FAST: [FastBase; 1024] = [NO_FAST_BASE; 1024], build_fast,
+        fast_at_first_use_equals_the_baked_table;
+}
 
 /// The smallest `big` of the bases past base 2 (`1627²`): an index below it takes every base's
 /// fast path.

@@ -4,7 +4,8 @@ use super::{Sampler, pixel_hash};
 use crate::Error;
 use crate::hash::mix64;
 use crate::scramble::{fast_owen_keyed as owen_keyed, fast_owen_keyed_f32 as owen_keyed_f32};
-use crate::sequence::{PMJ02_MAX_POINTS, PMJ02_TABLE};
+use crate::sequence::PMJ02_MAX_POINTS;
+use crate::sequence::pmj02::PMJ02_POINTS;
 
 /// `PMJ02_MAX_POINTS − 1`, the index mask.
 const MASK: u32 = PMJ02_MAX_POINTS as u32 - 1;
@@ -45,13 +46,13 @@ impl Keys {
 
     #[inline(always)]
     fn point(&self, index: u32) -> [f32; 2] {
-        let [x, y] = PMJ02_TABLE[self.row(index)];
+        let [x, y] = PMJ02_POINTS[self.row(index)];
         [owen_keyed_f32(x, self.x), owen_keyed_f32(y, self.y)]
     }
 
     #[inline(always)]
     fn value(&self, index: u32) -> f32 {
-        owen_keyed_f32(PMJ02_TABLE[self.row(index)][0], self.x)
+        owen_keyed_f32(PMJ02_POINTS[self.row(index)][0], self.x)
     }
 }
 

@@ -6,6 +6,7 @@
 use super::{CameraSample, Sampler, film};
 use crate::Error;
 use crate::hash::{hash2, mix32, mix64};
+use crate::lazy_table::{baked_table, const_unless_lazy};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::scramble::{Scramble, lk_hash, reversed_to_f32, scramble_u32};
 use crate::sequence::{SOBOL_MATRICES, sobol_u32};
@@ -413,22 +414,27 @@ impl ZSobolSampler {
     }
 }
 
-/// `SOBOL1_REVERSED[j][b]`: Sobol dimension 1's columns `8j + k` over the set bits `k` of `b`,
-/// each bit-reversed, so that the reversed value of any index is four reads (4 KiB).
-static SOBOL1_REVERSED: [[u32; 256]; 4] = {
-    let mut t = [[0u32; 256]; 4];
-    let mut j = 0;
-    while j < 4 {
-        let mut b = 1;
-        while b < 256 {
-            let k = (b as u32).trailing_zeros() as usize;
-            t[j][b] = t[j][b & (b - 1)] ^ SOBOL_MATRICES[1][8 * j + k].reverse_bits();
-            b += 1;
+baked_table! {
+    /// `SOBOL1_REVERSED[j][b]`: Sobol dimension 1's columns `8j + k` over the set bits `k` of
+    /// `b`, each bit-reversed, so that the reversed value of any index is four reads (4 KiB).
+    static SOBOL1_REVERSED: [[u32; 256]; 4] = [[0; 256]; 4], sobol1_reversed,
+        sobol1_reversed_at_first_use_equals_the_baked_table;
+}
+
+const_unless_lazy! {
+    fn sobol1_reversed(t: &mut [[u32; 256]; 4]) {
+        let mut j = 0;
+        while j < 4 {
+            let mut b = 1;
+            while b < 256 {
+                let k = (b as u32).trailing_zeros() as usize;
+                t[j][b] = t[j][b & (b - 1)] ^ SOBOL_MATRICES[1][8 * j + k].reverse_bits();
+                b += 1;
+            }
+            j += 1;
         }
-        j += 1;
     }
-    t
-};
+}
 
 /// `reverse(sobol_u32(index, 1))`.
 #[inline(always)]

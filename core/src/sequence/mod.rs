@@ -24,6 +24,8 @@ mod hammersley;
 mod owen_sobol;
 pub(crate) mod pmj02;
 mod sobol;
+#[cfg(any(feature = "lazy-tables", test))]
+mod sobol_lazy;
 mod sobol_table;
 mod zero_two;
 
@@ -35,6 +37,11 @@ pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_bu
 
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
 pub(crate) use sobol::{product as sobol_product, sobol_run_f32};
+// The generator matrices: stored, or with `lazy-tables` built at first use (the tests compile
+// both and compare them).
+#[cfg(all(feature = "lazy-tables", not(test)))]
+pub(crate) use sobol_lazy::{SOBOL_MATRICES, matrix_rows as sobol_matrix_rows};
+#[cfg(any(not(feature = "lazy-tables"), test))]
 pub(crate) use sobol_table::SOBOL_MATRICES;
 pub use zero_two::ZeroTwo;
 

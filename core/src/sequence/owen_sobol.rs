@@ -19,11 +19,12 @@
 //! dimensions per 16-byte read) for the rest. Four-wide values hash, reverse and convert on four
 //! lanes at once (plain lane-parallel code that compiles to SSE2).
 
+use super::SOBOL_MATRICES;
 use super::sobol::product;
-use super::sobol_table::SOBOL_MATRICES;
 use super::{Sequence, check_fill};
 use crate::Error;
 use crate::hash::{hash2, mix32};
+use crate::lazy_table::{baked_table, const_unless_lazy};
 use crate::scramble::{lk_hash, reversed_to_f32};
 
 /// Dimensions with all four reversed byte tables: any index is four table reads.
@@ -33,36 +34,54 @@ const REV_DIMS: usize = 64;
 /// product. Past them, nibble tables below 2¹⁶.
 const UPPER_DIMS: usize = 256;
 
-/// `SOBOL_REV_LOWER[j][b][d]` (`j` = 0, 1) and `SOBOL_REV_UPPER[j − 2][b][d]` (`j` = 2, 3): the
-/// bit-reversed Sobol product of dimension `d` restricted to byte `j` of the **bit-reversed**
-/// index (bits `8j .. 8j + 8` of `reverse(i)`, index bits `31 − 8j − k`). Dimensions innermost,
-/// so that the dimensions of one point read the same cache lines and four consecutive
-/// dimensions are one 16-byte read. Built at compile time from the direction numbers: 128 KiB
-/// for the index's upper half over 64 dimensions, 512 KiB for its lower half over 256.
-static SOBOL_REV_LOWER: [[[u32; REV_DIMS]; 256]; 2] = rev_byte_tables::<REV_DIMS>(0);
-/// See [`SOBOL_REV_LOWER`].
-static SOBOL_REV_UPPER: [[[u32; UPPER_DIMS]; 256]; 2] = rev_byte_tables::<UPPER_DIMS>(2);
+baked_table! {
+    /// `SOBOL_REV_LOWER[j][b][d]` (`j` = 0, 1) and `SOBOL_REV_UPPER[j − 2][b][d]` (`j` = 2, 3): the
+    /// bit-reversed Sobol product of dimension `d` restricted to byte `j` of the **bit-reversed**
+    /// index (bits `8j .. 8j + 8` of `reverse(i)`, index bits `31 − 8j − k`). Dimensions innermost,
+    /// so that the dimensions of one point read the same cache lines and four consecutive
+    /// dimensions are one 16-byte read. Built from the direction numbers ([`baked_table!`]):
+    /// 128 KiB for the index's upper half over 64 dimensions, 512 KiB for its lower half over 256.
+    static SOBOL_REV_LOWER: [[[u32; REV_DIMS]; 256]; 2] = [[[0; REV_DIMS]; 256]; 2],
+        fill_rev_lower, sobol_rev_lower_at_first_use_equals_the_baked_table;
+}
+baked_table! {
+    /// See [`SOBOL_REV_LOWER`].
+    static SOBOL_REV_UPPER: [[[u32; UPPER_DIMS]; 256]; 2] = [[[0; UPPER_DIMS]; 256]; 2],
+        fill_rev_upper, sobol_rev_upper_at_first_use_equals_the_baked_table;
+}
 
-/// Byte tables `first .. first + 2` of the reversed index for dimensions `0..D`.
-const fn rev_byte_tables<const D: usize>(first: usize) -> [[[u32; D]; 256]; 2] {
-    let mut t = [[[0u32; D]; 256]; 2];
-    let mut j = 0;
-    while j < 2 {
-        let mut b = 1;
-        while b < 256 {
-            let k = (b as u32).trailing_zeros() as usize;
-            let mut d = 0;
-            while d < D {
-                // Bit 8j + k of the reversed index is index bit 31 − 8j − k.
-                let column = SOBOL_MATRICES[d][31 - 8 * (first + j) - k];
-                t[j][b][d] = t[j][b & (b - 1)][d] ^ column.reverse_bits();
-                d += 1;
-            }
-            b += 1;
-        }
-        j += 1;
+const_unless_lazy! {
+    fn fill_rev_lower(t: &mut [[[u32; REV_DIMS]; 256]; 2]) {
+        rev_byte_tables::<REV_DIMS>(0, t)
     }
-    t
+}
+
+const_unless_lazy! {
+    fn fill_rev_upper(t: &mut [[[u32; UPPER_DIMS]; 256]; 2]) {
+        rev_byte_tables::<UPPER_DIMS>(2, t)
+    }
+}
+
+const_unless_lazy! {
+    /// Byte tables `first .. first + 2` of the reversed index for dimensions `0..D`, into `t`.
+    fn rev_byte_tables<const D: usize>(first: usize, t: &mut [[[u32; D]; 256]; 2]) {
+        let mut j = 0;
+        while j < 2 {
+            let mut b = 1;
+            while b < 256 {
+                let k = (b as u32).trailing_zeros() as usize;
+                let mut d = 0;
+                while d < D {
+                    // Bit 8j + k of the reversed index is index bit 31 − 8j − k.
+                    let column = SOBOL_MATRICES[d][31 - 8 * (first + j) - k];
+                    t[j][b][d] = t[j][b & (b - 1)][d] ^ column.reverse_bits();
+                    d += 1;
+                }
+                b += 1;
+            }
+            j += 1;
+        }
+    }
 }
 
 /// `reverse(sobol(reverse(r), dim))`: the Sobol product on bit-reversed words, `dim < 1024`.
@@ -84,32 +103,36 @@ fn product_rev(dim: usize, r: u32) -> u32 {
 /// Sets of four dimensions with nibble tables: those past [`UPPER_DIMS`].
 const NIBBLE_SETS: usize = (1024 - UPPER_DIMS) / 4;
 
-/// `SOBOL_REV_NIBBLES16[s][j][n][l]`: dimension `UPPER_DIMS + 4s + l`'s bit-reversed product over
-/// nibble `j` of the upper half of a reversed index (bits `16 + 4j ..` of `r`, index bits
-/// `15 − 4j − b`) for the nibble value `n`: the 16 index bits that indices below 2¹⁶ use, four
-/// dimensions side by side, so a product is four reads (one 16-byte read per nibble for four
-/// dimensions). Built at compile time; 192 KiB.
-static SOBOL_REV_NIBBLES16: [[[[u32; 4]; 16]; 4]; NIBBLE_SETS] = rev_nibbles16();
+baked_table! {
+    /// `SOBOL_REV_NIBBLES16[s][j][n][l]`: dimension `UPPER_DIMS + 4s + l`'s bit-reversed product over
+    /// nibble `j` of the upper half of a reversed index (bits `16 + 4j ..` of `r`, index bits
+    /// `15 − 4j − b`) for the nibble value `n`: the 16 index bits that indices below 2¹⁶ use, four
+    /// dimensions side by side, so a product is four reads (one 16-byte read per nibble for four
+    /// dimensions). Built from the direction numbers ([`baked_table!`]); 192 KiB.
+    static SOBOL_REV_NIBBLES16: [[[[u32; 4]; 16]; 4]; NIBBLE_SETS] =
+        [[[[0; 4]; 16]; 4]; NIBBLE_SETS], rev_nibbles16,
+        sobol_rev_nibbles16_at_first_use_equals_the_baked_table;
+}
 
-const fn rev_nibbles16() -> [[[[u32; 4]; 16]; 4]; NIBBLE_SETS] {
-    let mut t = [[[[0u32; 4]; 16]; 4]; NIBBLE_SETS];
-    let mut e = 0;
-    while e < 4 * NIBBLE_SETS {
-        let d = UPPER_DIMS + e;
-        let mut j = 0;
-        while j < 4 {
-            let mut n = 1;
-            while n < 16 {
-                let b = (n as u32).trailing_zeros() as usize;
-                let column = SOBOL_MATRICES[d][15 - 4 * j - b].reverse_bits();
-                t[e / 4][j][n][e % 4] = t[e / 4][j][n & (n - 1)][e % 4] ^ column;
-                n += 1;
+const_unless_lazy! {
+    fn rev_nibbles16(t: &mut [[[[u32; 4]; 16]; 4]; NIBBLE_SETS]) {
+        let mut e = 0;
+        while e < 4 * NIBBLE_SETS {
+            let d = UPPER_DIMS + e;
+            let mut j = 0;
+            while j < 4 {
+                let mut n = 1;
+                while n < 16 {
+                    let b = (n as u32).trailing_zeros() as usize;
+                    let column = SOBOL_MATRICES[d][15 - 4 * j - b].reverse_bits();
+                    t[e / 4][j][n][e % 4] = t[e / 4][j][n & (n - 1)][e % 4] ^ column;
+                    n += 1;
+                }
+                j += 1;
             }
-            j += 1;
+            e += 1;
         }
-        e += 1;
     }
-    t
 }
 
 /// [`product_rev`] of dimension `UPPER_DIMS <= dim < 1024` for a reversed index whose low 16

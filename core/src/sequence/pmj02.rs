@@ -120,10 +120,27 @@ pub const fn pmj02_build(seed: u64, out: &mut [[u32; 2]]) -> Result<(), Error> {
     Ok(())
 }
 
+const fn fill_table(t: &mut [[u32; 2]; PMJ02_MAX_POINTS]) {
+    construct(PMJ02_TABLE_SEED, t);
+}
+
 const fn bake() -> [[u32; 2]; PMJ02_MAX_POINTS] {
     let mut t = [[0u32; 2]; PMJ02_MAX_POINTS];
-    construct(PMJ02_TABLE_SEED, &mut t);
+    fill_table(&mut t);
     t
+}
+
+/// The table the sequence and the samplers read: [`PMJ02_TABLE`] itself, or with the
+/// `lazy-tables` feature the same points built at first use (so a program that does not name
+/// `PMJ02_TABLE` does not carry its 512 KiB).
+#[cfg(not(feature = "lazy-tables"))]
+pub(crate) use PMJ02_TABLE as PMJ02_POINTS;
+
+#[cfg(feature = "lazy-tables")]
+crate::lazy_table::baked_table! {
+    /// [`PMJ02_TABLE`]'s points, built at first use.
+    pub(crate) static PMJ02_POINTS: [[u32; 2]; PMJ02_MAX_POINTS] =
+        [[0; 2]; PMJ02_MAX_POINTS], fill_table, pmj02_points_at_first_use_equal_the_baked_table;
 }
 
 /// [`PMJ02_MAX_POINTS`] pmj02 points of seed [`PMJ02_TABLE_SEED`] (512 KiB), built by
@@ -211,7 +228,7 @@ impl Pmj02 {
     #[inline(always)]
     pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
         let d = (dim & 1) as usize;
-        let v = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)][d];
+        let v = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d];
         match self.keys {
             None => v,
             Some(keys) => owen_keyed(v, keys[d]),
@@ -226,7 +243,7 @@ impl Pmj02 {
     /// ```
     #[inline(always)]
     pub fn sample_2d_u32(&self, index: u32) -> [u32; 2] {
-        let [x, y] = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)];
+        let [x, y] = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)];
         match self.keys {
             None => [x, y],
             Some([kx, ky]) => [owen_keyed(x, kx), owen_keyed(y, ky)],
@@ -242,7 +259,7 @@ impl Pmj02 {
     /// ```
     #[inline(always)]
     pub fn sample_2d(&self, index: u32) -> [f32; 2] {
-        let [x, y] = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)];
+        let [x, y] = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)];
         match self.keys {
             None => [to_f32(x), to_f32(y)],
             Some([kx, ky]) => [owen_keyed_f32(x, kx), owen_keyed_f32(y, ky)],
@@ -262,7 +279,7 @@ impl Sequence for Pmj02 {
     #[inline(always)]
     fn sample(&self, index: u64, dim: u32) -> f32 {
         let d = (dim & 1) as usize;
-        let v = PMJ02_TABLE[index as usize & (PMJ02_MAX_POINTS - 1)][d];
+        let v = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d];
         match self.keys {
             None => to_f32(v),
             Some(keys) => owen_keyed_f32(v, keys[d]),
@@ -340,6 +357,23 @@ mod tests {
                 assert_elementary_intervals(&pts[..1 << m], m);
             }
         }
+    }
+
+    /// The points the samplers read with `lazy-tables`, built at first use, equal the stored
+    /// table (in the default build, which stores it; the lazy build checks the converse).
+    #[cfg(not(feature = "lazy-tables"))]
+    #[test]
+    fn pmj02_points_at_first_use_equal_the_stored_table() {
+        struct Points;
+        impl crate::lazy_table::Fill for Points {
+            type Table = [[u32; 2]; PMJ02_MAX_POINTS];
+            fn fill(t: &mut Self::Table) {
+                fill_table(t)
+            }
+        }
+        static AT_FIRST_USE: crate::lazy_table::LazyTable<Points> =
+            crate::lazy_table::LazyTable::new([[0; 2]; PMJ02_MAX_POINTS]);
+        assert!(*AT_FIRST_USE == PMJ02_TABLE);
     }
 
     #[test]

@@ -17,7 +17,8 @@
 //! XORs (≈ 1.5 ns); dimensions 64..1023 use a branch-free masked XOR over the 32 columns
 //! (≈ 7 ns). Both cost the same for every index.
 
-use super::{Sequence, check_fill, sobol_table::SOBOL_MATRICES};
+use super::{SOBOL_MATRICES, Sequence, check_fill};
+use crate::lazy_table::{baked_table, const_unless_lazy};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::{Error, hash};
 
@@ -33,37 +34,40 @@ pub const SOBOL_DIMS: u32 = 1024;
 /// masked XORs (about 3× faster, see `core/benches/sobol.rs`), at 4 KiB per dimension.
 const FAST_DIMS: usize = 64;
 
-/// `SOBOL_BYTES[d][j][b]` is the XOR of the columns `8j + k` of dimension `d` over the set bits
-/// `k` of the byte `b`: the product restricted to index byte `j`. Built at compile time from
-/// [`SOBOL_MATRICES`]; 272 KiB.
-///
-/// Each row is padded from 256 to [`BYTE_ROW`] entries: without it the same entry of every
-/// dimension lies a multiple of 4 KiB apart, in one L1 cache set, and a sample's run of
-/// dimensions evicts itself (measured: a pixel fill ran at a third of its instruction rate).
-static SOBOL_BYTES: [[[u32; BYTE_ROW]; 4]; FAST_DIMS] = byte_tables();
+baked_table! {
+    /// `SOBOL_BYTES[d][j][b]` is the XOR of the columns `8j + k` of dimension `d` over the set
+    /// bits `k` of the byte `b`: the product restricted to index byte `j`. Built from
+    /// [`SOBOL_MATRICES`] ([`baked_table!`]); 272 KiB.
+    ///
+    /// Each row is padded from 256 to [`BYTE_ROW`] entries: without it the same entry of every
+    /// dimension lies a multiple of 4 KiB apart, in one L1 cache set, and a sample's run of
+    /// dimensions evicts itself (measured: a pixel fill ran at a third of its instruction rate).
+    static SOBOL_BYTES: [[[u32; BYTE_ROW]; 4]; FAST_DIMS] = [[[0; BYTE_ROW]; 4]; FAST_DIMS],
+        byte_tables, sobol_bytes_at_first_use_equal_the_baked_table;
+}
 
 /// A byte table row: 256 entries and 16 of padding (64 bytes), so that rows and dimensions
 /// start in different cache sets.
 const BYTE_ROW: usize = 256 + 16;
 
-const fn byte_tables() -> [[[u32; BYTE_ROW]; 4]; FAST_DIMS] {
-    let mut t = [[[0u32; BYTE_ROW]; 4]; FAST_DIMS];
-    let mut d = 0;
-    while d < FAST_DIMS {
-        let mut j = 0;
-        while j < 4 {
-            let mut b = 1;
-            while b < 256 {
-                // Entry b = entry (b without its lowest set bit) ^ the column of that bit.
-                let k = (b as u32).trailing_zeros() as usize;
-                t[d][j][b] = t[d][j][b & (b - 1)] ^ SOBOL_MATRICES[d][8 * j + k];
-                b += 1;
+const_unless_lazy! {
+    fn byte_tables(t: &mut [[[u32; BYTE_ROW]; 4]; FAST_DIMS]) {
+        let mut d = 0;
+        while d < FAST_DIMS {
+            let mut j = 0;
+            while j < 4 {
+                let mut b = 1;
+                while b < 256 {
+                    // Entry b = entry (b without its lowest set bit) ^ the column of that bit.
+                    let k = (b as u32).trailing_zeros() as usize;
+                    t[d][j][b] = t[d][j][b & (b - 1)] ^ SOBOL_MATRICES[d][8 * j + k];
+                    b += 1;
+                }
+                j += 1;
             }
-            j += 1;
+            d += 1;
         }
-        d += 1;
     }
-    t
 }
 
 /// The generator-matrix product: XOR of the columns `m[k]` over the set bits `k` of `index`,

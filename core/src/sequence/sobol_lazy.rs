@@ -1,0 +1,83 @@
+//! With the `lazy-tables` feature: the Sobol generator matrices built at first use from Joe and
+//! Kuo's packed direction numbers ([`SOBOL_DIRECTIONS`], 26 KiB) instead of stored (128 KiB).
+//! The recurrence is the one `scripts/gen_sobol.py` documents and runs to write the stored table.
+
+use super::sobol_table::SOBOL_DIRECTIONS;
+use crate::lazy_table::{Fill, LazyTable};
+
+/// Rows `0 .. t.len()` (at most 1024) of the generator matrices, from [`SOBOL_DIRECTIONS`]:
+/// `V_k = m_k · 2^(32 − k)` for `k ≤ s`, then
+/// `V_k = a_1 V_(k−1) ^ … ^ a_(s−1) V_(k−s+1) ^ V_(k−s) ^ (V_(k−s) >> s)` (`a_1` the most
+/// significant of the `s − 1` bits of `a`); dimension 0 is van der Corput, `V_k = 2^(32 − k)`.
+/// A `const fn`, so `compact::Sobol` bakes its few rows at compile time from the same words.
+pub(crate) const fn matrix_rows(t: &mut [[u32; 32]]) {
+    let mut w = 0;
+    let mut d = 0;
+    while d < t.len() && d < 1024 {
+        if d == 0 {
+            let mut k = 0;
+            while k < 32 {
+                t[0][k] = 1 << (31 - k);
+                k += 1;
+            }
+        } else {
+            let head = SOBOL_DIRECTIONS[w] as u32;
+            w += 1;
+            let (s, a) = ((head >> 12) as usize, head & 0xfff);
+            let mut k = 0;
+            while k < s {
+                t[d][k] = (SOBOL_DIRECTIONS[w] as u32) << (31 - k);
+                w += 1;
+                k += 1;
+            }
+            while k < 32 {
+                let mut v = t[d][k - s] ^ (t[d][k - s] >> s);
+                let mut j = 1;
+                while j < s {
+                    if (a >> (s - 1 - j)) & 1 == 1 {
+                        v ^= t[d][k - j];
+                    }
+                    j += 1;
+                }
+                t[d][k] = v;
+                k += 1;
+            }
+        }
+        d += 1;
+    }
+}
+
+/// [`SOBOL_MATRICES`]' fill.
+pub(crate) struct FromDirections;
+
+impl Fill for FromDirections {
+    type Table = [[u32; 32]; 1024];
+
+    fn fill(t: &mut [[u32; 32]; 1024]) {
+        matrix_rows(t)
+    }
+}
+
+/// `SOBOL_MATRICES[d][k]`: as the stored table in `sobol_table.rs`, built at first use (in
+/// tests, next to the stored table).
+#[cfg_attr(all(test, not(feature = "lazy-tables")), allow(dead_code))]
+pub(crate) static SOBOL_MATRICES: LazyTable<FromDirections> = LazyTable::new([[0; 32]; 1024]);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The matrices built from the packed numbers equal the stored table, which `table_is_current`
+    /// (in `sobol.rs`) checks against the data file; so do the rows baked at compile time.
+    #[test]
+    fn matrices_from_packed_directions_equal_the_stored_table() {
+        let stored = &super::super::sobol_table::SOBOL_MATRICES;
+        assert!(*SOBOL_MATRICES == *stored);
+        const FIRST: [[u32; 32]; 5] = {
+            let mut t = [[0; 32]; 5];
+            matrix_rows(&mut t);
+            t
+        };
+        assert_eq!(FIRST, stored[..5]);
+    }
+}
