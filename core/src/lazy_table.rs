@@ -9,8 +9,9 @@
 //! takes no room in an executable or a WebAssembly module) that the same `const fn` fills the
 //! first time any thread reads it. The values are the same bit for bit (each table has a test that
 //! compares the two); the module shrinks by the tables' size and the first read of each table
-//! pays its construction once (about a millisecond for the largest, in a browser). The browser
-//! explorer (`web/`) builds this way.
+//! pays its construction once: natively at `opt-level = "z"`, 5.3 ms for the radical inverse's
+//! tables (Halton's first value), 0.4–0.7 ms for the Sobol, Owen-Sobol and PMJ(0,2) ones. The
+//! browser explorer (`web/`) builds this way.
 //!
 //! [`baked_table!`] declares one table either way, so the code that reads it (indexing, `iter`)
 //! is the same in both builds.
