@@ -729,10 +729,11 @@ mod tests {
 
     #[test]
     fn bounds_bin_points_beside_grid_values_by_their_f64_order() {
-        // Beside a grid value k/m, x·m can round to the far side of k (at m = 6, the float just
-        // below 5/6 gives x·6 = 5; just above 1/3 gives x·3 = 1): the binning must still follow
-        // the f64 order of x and the grid values `j as f64 / m`, as the direct counts do.
-        for m in [3u32, 6, 10, 12, 13] {
+        // Beside or on a grid value k/m, x·m can round to the far side of k (at m = 6, the float
+        // just below 5/6 gives x·6 = 5; just above 1/3 gives x·3 = 1; 15/22 gives x·22 < 15 and
+        // 7/25 gives x·25 > 7): the binning must still follow the f64 order of x and the grid
+        // values `j as f64 / m`, as the direct counts do.
+        for m in [3u32, 6, 10, 12, 13, 22, 25] {
             let mut xs = Vec::new();
             for k in 0..=m {
                 let g = f64::from(k) / f64::from(m);
@@ -817,6 +818,19 @@ mod tests {
             star_discrepancy_bounds(&set, 1, &mut u),
             Err(Error::OutOfRange { what: "dims" })
         );
+        // The bracket accepts 32 dimensions too: with m = 1 it asks for its 2 · 2^32 counters
+        // (more than this test can give it) rather than refusing the dimension.
+        #[cfg(target_pointer_width = "64")]
+        {
+            let set = PointSet::new(&ones[..MAX_DIMS], MAX_DIMS).unwrap();
+            assert_eq!(
+                star_discrepancy_bounds(&set, 1, &mut u),
+                Err(Error::BufferTooShort {
+                    needed: 2 << 32,
+                    actual: 4
+                })
+            );
+        }
     }
 
     #[test]
