@@ -1125,6 +1125,33 @@ fn bare_names_give_the_documented_defaults_and_every_range_is_spelled_out() {
 }
 
 #[test]
+fn each_filter_refuses_the_keys_of_the_others() {
+    // alpha and sigma belong to gaussian, b and c to mitchell, tau to lanczos; radius, rx and ry
+    // to every filter.
+    let own = |name: &str, key: &str| match key {
+        "alpha" | "sigma" => name == "gaussian",
+        "b" | "c" => name == "mitchell",
+        "tau" => name == "lanczos",
+        _ => true,
+    };
+    for name in ["box", "triangle", "gaussian", "mitchell", "lanczos"] {
+        for key in ["radius", "rx", "ry", "alpha", "sigma", "b", "c", "tau"] {
+            let spec = std::format!("{name}:{key}=0.5");
+            let got = FilterKind::parse(&spec);
+            if own(name, key) {
+                assert!(got.is_ok(), "{spec}: {got:?}");
+            } else {
+                assert_eq!(
+                    got,
+                    Err(SpecError::UnknownKey { filter: name, key }),
+                    "{spec}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn specs_parse_and_round_trip() {
     let g = FilterKind::parse(" Gaussian : radius = 1.5 , sigma = 0.5 ").unwrap();
     assert_eq!(
