@@ -15,6 +15,9 @@
 #   cargo mutants --package P --file F --test-package P --no-shuffle --jobs J --timeout T \
 #       --output OUT/<module> --cargo-arg=--lib -- -- <filter>...
 #
+# (`--lib` is the default test target; a module whose tests live in an integration test names
+# its targets in a fifth field, e.g. `--test=film`.)
+#
 # then counts caught, missed, unviable and timed-out mutants from OUT/<module>/mutants.out/,
 # subtracts the missed mutants listed in scripts/mutants-equivalent.txt, and writes the module's
 # row of the table in docs/mutation.md (rows of modules not run this time are kept).
@@ -32,6 +35,7 @@ cd "$(dirname "$0")/.."
 export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
 
 # module | package | file | test filters (space-separated libtest substrings)
+#   [| test targets (space-separated cargo arguments; default --lib)]
 MODULES='
 stratify/jittered|nyquist|core/src/stratify/jittered.rs|stratify::jittered::
 stratify/latin_hypercube|nyquist|core/src/stratify/latin_hypercube.rs|stratify::latin_hypercube::
@@ -55,7 +59,7 @@ filter/table|nyquist|core/src/filter/table.rs|filter::tests::
 filter/phase|nyquist|core/src/filter/phase.rs|filter::tests::
 filter/sample|nyquist|core/src/filter/sample.rs|filter::tests::
 film/tile|nyquist-film|std-film/src/tile.rs|tile::
-film/film|nyquist-film|std-film/src/film.rs|film::
+film/film|nyquist-film|std-film/src/film.rs||--test=film
 '
 
 EQUIVALENT=scripts/mutants-equivalent.txt
@@ -73,7 +77,7 @@ if [ "${1:-}" = "--summarize" ]; then
     shift
 fi
 if [ "${1:-}" = "--list" ]; then
-    modules | awk -F'|' '{ printf "%-26s %-12s %-40s %s\n", $1, $2, $3, $4 }'
+    modules | awk -F'|' '{ printf "%-26s %-12s %-40s %s %s\n", $1, $2, $3, $4, ($5 == "" ? "" : "[" $5 "]") }'
     exit 0
 fi
 if ! cargo mutants --version >/dev/null 2>&1; then
@@ -97,12 +101,14 @@ status=0
 for module in "${selected[@]}"; do
     line=$(modules | awk -F'|' -v m="$module" '$1 == m') || true
     [ -n "$line" ] || { echo "unknown module '$module' (see --list)" >&2; exit 1; }
-    IFS='|' read -r _ package file filters <<<"$line"
+    IFS='|' read -r _ package file filters targets <<<"$line"
+    cargo_args=()
+    for t in ${targets:---lib}; do cargo_args+=("--cargo-arg=$t"); done
     dir="$OUT/${module//\//-}"
     # shellcheck disable=SC2206 # the filters are separate libtest arguments
     cmd=(cargo mutants --package "$package" --file "$file" --test-package "$package"
         --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --baseline "$BASELINE" --output "$dir"
-        --cargo-arg=--lib -- -- $filters)
+        "${cargo_args[@]}" -- -- $filters)
     res="$dir/mutants.out"
     if [ $summarize = 1 ]; then
         # Re-score an earlier run (after a change to the equivalent list).

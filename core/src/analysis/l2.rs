@@ -311,6 +311,121 @@ mod tests {
         }
     }
 
+    /// The three closed forms of the module docs summed term by term over all ordered pairs
+    /// `(i, j)`, no symmetry, no lanes, no compensation: `[T², CD², WD²]`.
+    fn naive_squares(c: &[f64], d: usize) -> [f64; 3] {
+        let pts: Vec<&[f64]> = c.chunks_exact(d).collect();
+        let n = pts.len() as f64;
+        let df = d as f64;
+        let (mut s_star, mut s_cd, mut p_star, mut p_cd, mut p_wd) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for p in &pts {
+            s_star += p.iter().map(|&x| 1.0 - x * x).product::<f64>();
+            s_cd += p
+                .iter()
+                .map(|&x| 1.0 + 0.5 * (x - 0.5).abs() - 0.5 * (x - 0.5).powi(2))
+                .product::<f64>();
+            for q in &pts {
+                let pairs = p.iter().zip(q.iter());
+                p_star += pairs
+                    .clone()
+                    .map(|(&a, &b)| 1.0 - a.max(b))
+                    .product::<f64>();
+                p_cd += pairs
+                    .clone()
+                    .map(|(&a, &b)| {
+                        1.0 + 0.5 * (a - 0.5).abs() + 0.5 * (b - 0.5).abs() - 0.5 * (a - b).abs()
+                    })
+                    .product::<f64>();
+                p_wd += pairs
+                    .map(|(&a, &b)| 1.5 - (a - b).abs() * (1.0 - (a - b).abs()))
+                    .product::<f64>();
+            }
+        }
+        [
+            3f64.powf(-df) - 2f64.powf(1.0 - df) / n * s_star + p_star / (n * n),
+            (13.0f64 / 12.0).powf(df) - 2.0 / n * s_cd + p_cd / (n * n),
+            -(4.0f64 / 3.0).powf(df) + p_wd / (n * n),
+        ]
+    }
+
+    #[test]
+    fn every_dimension_matches_the_formulas_summed_naively() {
+        // Dimensions 1–4 take the unrolled route, 5 and up the generic one; N from 1 to 13
+        // covers rows with 0–3 points left over after the groups of four.
+        for d in 1..=7usize {
+            for n in 1..=13usize {
+                let pts = random(n, d, (d * 100 + n) as u64);
+                let s = set(&pts, d);
+                let got = [
+                    l2_star_discrepancy(&s),
+                    centered_l2_discrepancy(&s),
+                    wraparound_l2_discrepancy(&s),
+                ];
+                let want = naive_squares(&pts, d);
+                for (g, w) in got.iter().zip(want) {
+                    assert!(w > 0.0, "d {d} n {n}: {want:?}");
+                    assert!(
+                        (g * g - w).abs() < 1e-12 * (1.0 + w),
+                        "d {d} n {n}: {got:?} vs {want:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn single_points_have_hand_computed_values() {
+        // One point at the centre, in d dimensions. L2-star: Π(1 − ¼) = (3/4)^d and
+        // Π(1 − ½) = 2^−d, so T² = 3^−d − 2^{1−d}(3/4)^d + 2^−d. Centered: every |x − ½| is 0, so
+        // CD² = (13/12)^d − 2 + 1. Wrap-around: |x − x| = 0, so WD² = (3/2)^d − (4/3)^d.
+        let centre = [0.5; 8];
+        for d in 1..=8usize {
+            let s = set(&centre[..d], d);
+            let di = d as i32;
+            let t2 = 3f64.powi(-di) - 2f64.powi(1 - di) * 0.75f64.powi(di) + 0.5f64.powi(di);
+            let c2 = (13.0f64 / 12.0).powi(di) - 1.0;
+            let w2 = 1.5f64.powi(di) - (4.0f64 / 3.0).powi(di);
+            assert!((l2_star_discrepancy(&s) - t2.sqrt()).abs() < 1e-14, "d {d}");
+            assert!(
+                (centered_l2_discrepancy(&s) - c2.sqrt()).abs() < 1e-14,
+                "d {d}"
+            );
+            assert!(
+                (wraparound_l2_discrepancy(&s) - w2.sqrt()).abs() < 1e-14,
+                "d {d}"
+            );
+        }
+        // Two points at opposite corners of the torus cell, 0 and ½ on every axis: the pair term
+        // is (3/2 − ¼)^d = (5/4)^d, so WD² = ½(3/2)^d + ½(5/4)^d − (4/3)^d.
+        for d in 1..=6usize {
+            let mut pts = std::vec![0.0; d];
+            pts.extend(core::iter::repeat_n(0.5, d));
+            let di = d as i32;
+            let w2 = 0.5 * 1.5f64.powi(di) + 0.5 * 1.25f64.powi(di) - (4.0f64 / 3.0).powi(di);
+            let w = wraparound_l2_discrepancy(&set(&pts, d));
+            assert!((w - w2.sqrt()).abs() < 1e-14, "d {d}: {w}");
+        }
+    }
+
+    #[test]
+    fn neumaier_recovers_what_plain_summation_loses() {
+        // 1 + 10^100 + 1 − 10^100 is 2; plain f64 summation gives 0. The first two additions
+        // take the branch for |x| > |sum|, the last two the one for |sum| ≥ |x|.
+        for terms in [[1.0, 1e100, 1.0, -1e100], [1e100, 1.0, -1e100, 1.0]] {
+            let mut s = Neumaier::default();
+            for x in terms {
+                s.add(x);
+            }
+            assert_eq!(s.sum(), 2.0, "{terms:?}");
+        }
+        let mut s = Neumaier::default();
+        for x in [0.1; 10] {
+            s.add(x);
+        }
+        // The sum of ten copies of fl(0.1), correctly rounded (plain summation: 0.9999999999999999).
+        assert_eq!(s.sum(), 1.0);
+    }
+
     proptest! {
         #[test]
         fn l2_measures_are_finite_and_nonnegative(

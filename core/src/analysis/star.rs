@@ -660,6 +660,191 @@ mod tests {
         assert_eq!(star_bounds_scratch_len(MAX_DIMS, u32::MAX), None);
     }
 
+    /// The bracket of [`star_discrepancy_bounds`] by its definition, counting points directly:
+    /// `lower` over every grid point `g` (`λ(g) − #{x < g}/N`, `#{x ≤ g}/N − λ(g)`), `upper` over
+    /// every cell `[a, a + 1/m]` (`#{x ≤ a⁺}/N − λ(a)`, `λ(a⁺) − #{x < a}/N`). Grid values are
+    /// `j as f64 / m`, as documented.
+    fn brute_bounds(coords: &[f64], d: usize, m: u32) -> (f64, f64) {
+        let n = coords.len() / d;
+        let inv_n = 1.0 / n as f64;
+        let side = m as usize + 1;
+        let g = |j: usize| j as f64 / f64::from(m);
+        let count = |q: &[f64], closed: bool| {
+            let inside = |p: &&[f64]| {
+                p.iter()
+                    .zip(q)
+                    .all(|(&x, &t)| if closed { x <= t } else { x < t })
+            };
+            coords.chunks_exact(d).filter(inside).count() as f64 * inv_n
+        };
+        let (mut lower, mut upper) = (0.0f64, 0.0f64);
+        let mut idx = vec![0usize; d];
+        loop {
+            let q: Vec<f64> = idx.iter().map(|&j| g(j)).collect();
+            let v: f64 = q.iter().product();
+            lower = lower.max(v - count(&q, false)).max(count(&q, true) - v);
+            if idx.iter().all(|&j| j < m as usize) {
+                let qu: Vec<f64> = idx.iter().map(|&j| g(j + 1)).collect();
+                let vu: f64 = qu.iter().product();
+                upper = upper.max(count(&qu, true) - v).max(vu - count(&q, false));
+            }
+            let mut k = 0;
+            loop {
+                if k == d {
+                    return (lower, upper);
+                }
+                idx[k] += 1;
+                if idx[k] < side {
+                    break;
+                }
+                idx[k] = 0;
+                k += 1;
+            }
+        }
+    }
+
+    #[test]
+    fn bounds_equal_their_definition_by_direct_counts() {
+        for seed in 0..12u64 {
+            for d in [1usize, 2, 3] {
+                let n = 1 + (seed as usize * 5) % 23;
+                // Coordinates on the grid (ties with grid values), at 0 and 1, and anywhere.
+                let mut pts = nasty(n, d, seed + 7);
+                for (i, x) in pts.iter_mut().enumerate() {
+                    if i % 5 == 1 {
+                        *x = f64::from((i % 7) as u32) / 6.0;
+                    }
+                }
+                for m in [1u32, 2, 3, 5, 6, 8] {
+                    let b = bounds(&pts, d, m);
+                    let (lo, up) = brute_bounds(&pts, d, m);
+                    assert!(
+                        (b.lower - lo).abs() < 1e-15 && (b.upper - up).abs() < 1e-15,
+                        "seed {seed} d {d} m {m}: {b:?} vs ({lo}, {up})"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn bounds_bin_points_beside_grid_values_by_their_f64_order() {
+        // Beside or on a grid value k/m, x·m can round to the far side of k (at m = 6, the float
+        // just below 5/6 gives x·6 = 5; just above 1/3 gives x·3 = 1; 15/22 gives x·22 < 15 and
+        // 7/25 gives x·25 > 7): the binning must still follow the f64 order of x and the grid
+        // values `j as f64 / m`, as the direct counts do.
+        for m in [3u32, 6, 10, 12, 13, 22, 25] {
+            let mut xs = Vec::new();
+            for k in 0..=m {
+                let g = f64::from(k) / f64::from(m);
+                xs.extend(
+                    [g.next_down(), g, g.next_up()]
+                        .into_iter()
+                        .filter(|x| (0.0..=1.0).contains(x)),
+                );
+            }
+            let b = bounds(&xs, 1, m);
+            assert_eq!((b.lower, b.upper), brute_bounds(&xs, 1, m), "m {m}");
+            // Each neighbour alone, where one misbinned point moves the counts by 1/N = 1.
+            for &x in &xs {
+                let b = bounds(&[x], 1, m);
+                assert_eq!((b.lower, b.upper), brute_bounds(&[x], 1, m), "m {m} x {x}");
+            }
+            // Pairs in 2D: the same values on both axes, crossed.
+            let pts: Vec<f64> = xs
+                .iter()
+                .zip(xs.iter().rev())
+                .flat_map(|(&a, &b)| [a, b])
+                .collect();
+            let b = bounds(&pts, 2, m);
+            assert_eq!((b.lower, b.upper), brute_bounds(&pts, 2, m), "m {m} 2D");
+        }
+    }
+
+    #[test]
+    fn scratch_lengths_are_exactly_what_the_functions_need() {
+        for d in 1..=4usize {
+            for n in [1usize, 2, 5] {
+                let pts = nasty(n, d, (d * 10 + n) as u64);
+                let set = PointSet::new(&pts, d).unwrap();
+                let len = star_discrepancy_scratch_len(n, d).unwrap();
+                // As documented: 2n + (d − 1)(n + 1).
+                assert_eq!(len, 2 * n + (d - 1) * (n + 1));
+                let mut s = vec![0.0; len];
+                assert!(star_discrepancy_enumerate(&set, &mut s).is_ok());
+                assert_eq!(
+                    star_discrepancy_enumerate(&set, &mut s[..len - 1]),
+                    Err(Error::BufferTooShort {
+                        needed: len,
+                        actual: len - 1
+                    })
+                );
+                for m in [1u32, 3] {
+                    let len = star_bounds_scratch_len(d, m).unwrap();
+                    assert_eq!(len, 2 * (m as usize + 1).pow(d as u32));
+                    let mut u = vec![0u32; len];
+                    assert!(star_discrepancy_bounds(&set, m, &mut u).is_ok());
+                    assert!(matches!(
+                        star_discrepancy_bounds(&set, m, &mut u[..len - 1]),
+                        Err(Error::BufferTooShort { .. })
+                    ));
+                }
+            }
+        }
+        assert_eq!(star_discrepancy_scratch_len(5, 0), None);
+        assert_eq!(star_discrepancy_scratch_len(usize::MAX, 1), None);
+        assert_eq!(star_discrepancy_scratch_len(usize::MAX / 2, 2), None);
+        assert_eq!(star_bounds_scratch_len(0, 4), None);
+        assert_eq!(star_bounds_scratch_len(3, 0), None);
+        assert_eq!(star_bounds_scratch_len(1, 1), Some(4));
+    }
+
+    #[test]
+    fn max_dims_is_accepted_and_one_more_refused() {
+        // One point at (1, …, 1): the empty open box [0, 1)^d has volume 1, so D* = 1, and every
+        // axis has the single critical value 1, so the enumeration is cheap even at 32 dims.
+        let ones = [1.0; MAX_DIMS + 1];
+        let set = PointSet::new(&ones[..MAX_DIMS], MAX_DIMS).unwrap();
+        let mut s = vec![0.0; star_discrepancy_scratch_len(1, MAX_DIMS).unwrap()];
+        assert_eq!(star_discrepancy(&set, &mut s), Ok(1.0));
+        let set = PointSet::new(&ones, MAX_DIMS + 1).unwrap();
+        let mut s = vec![0.0; star_discrepancy_scratch_len(1, MAX_DIMS + 1).unwrap()];
+        assert_eq!(
+            star_discrepancy_enumerate(&set, &mut s),
+            Err(Error::OutOfRange { what: "dims" })
+        );
+        let mut u = [0u32; 4];
+        assert_eq!(
+            star_discrepancy_bounds(&set, 1, &mut u),
+            Err(Error::OutOfRange { what: "dims" })
+        );
+        // The bracket accepts 32 dimensions too: with m = 1 it asks for its 2 · 2^32 counters
+        // (more than this test can give it) rather than refusing the dimension.
+        #[cfg(target_pointer_width = "64")]
+        {
+            let set = PointSet::new(&ones[..MAX_DIMS], MAX_DIMS).unwrap();
+            assert_eq!(
+                star_discrepancy_bounds(&set, 1, &mut u),
+                Err(Error::BufferTooShort {
+                    needed: 2 << 32,
+                    actual: 4
+                })
+            );
+        }
+    }
+
+    #[test]
+    fn twenty_dimensions_two_points_by_hand() {
+        // (½, …, ½) and (1, …, 1) in 20 dimensions. The open box [0, 1)^20 holds only the first
+        // point: deficit 1 − ½; every other open box has volume at most ½. A closed box holding
+        // the first point only has excess at most ½ − 2^−20, one holding both is [0, 1]^20
+        // (excess 0). So D* = ½. The critical grid has 2 values per axis (½ and 1, the 1 counted
+        // once although a point lies on it): cost 20 · 2 · 2^19, far inside the limit.
+        let mut pts = vec![0.5; 20];
+        pts.extend([1.0; 20]);
+        assert_eq!(exact(&pts, 20), 0.5);
+    }
+
     proptest! {
         #[test]
         fn any_set_gives_star_in_unit_interval(

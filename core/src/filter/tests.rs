@@ -1046,6 +1046,112 @@ fn spec_errors_give_the_range_and_refuse_repeated_keys() {
 }
 
 #[test]
+fn bare_names_give_the_documented_defaults_and_every_range_is_spelled_out() {
+    // "Unset keys keep the filter's defaults", under every name and alias.
+    for (names, default) in [
+        (
+            &["box", "boxcar", "BOX"][..],
+            FilterKind::Boxcar(Boxcar::default()),
+        ),
+        (
+            &["triangle", "tent"][..],
+            FilterKind::Triangle(Triangle::default()),
+        ),
+        (&["gaussian"][..], FilterKind::Gaussian(Gaussian::default())),
+        (&["mitchell"][..], FilterKind::Mitchell(Mitchell::default())),
+        (&["lanczos"][..], FilterKind::Lanczos(Lanczos::default())),
+    ] {
+        for name in names {
+            assert_eq!(FilterKind::parse(name), Ok(default), "{name}");
+        }
+    }
+    // Every ranged key names itself and the value as typed, and the message gives its range.
+    let f32_range = "[1.1754944e-38, 3.4028235e38]";
+    for (spec, key, value, what, range) in [
+        (
+            "gaussian:alpha=0",
+            "alpha",
+            "0",
+            "alpha",
+            std::format!("in {f32_range}"),
+        ),
+        (
+            "gaussian:sigma=-1",
+            "sigma",
+            "-1",
+            "sigma",
+            std::format!("positive with 1/(2 sigma^2) in {f32_range}"),
+        ),
+        (
+            "lanczos:tau=0",
+            "tau",
+            "0",
+            "tau",
+            std::format!("in {f32_range}"),
+        ),
+        (
+            "mitchell:b=-2000",
+            "b",
+            "-2000",
+            "b",
+            "in [-1000, 1000]".into(),
+        ),
+        (
+            "triangle:ry=4096",
+            "ry",
+            "4096",
+            "ry",
+            "in [0.000015258789, 1024] (2^-16 to 1024 pixels)".into(),
+        ),
+    ] {
+        let e = FilterKind::parse(spec).unwrap_err();
+        assert_eq!(
+            e,
+            SpecError::Invalid {
+                key,
+                value,
+                error: crate::Error::OutOfRange { what }
+            },
+            "{spec}"
+        );
+        assert_eq!(
+            e.to_string(),
+            std::format!(
+                "filter spec: invalid value `{value}` for key `{key}`: {what} must be {range}"
+            ),
+            "{spec}"
+        );
+    }
+}
+
+#[test]
+fn each_filter_refuses_the_keys_of_the_others() {
+    // alpha and sigma belong to gaussian, b and c to mitchell, tau to lanczos; radius, rx and ry
+    // to every filter.
+    let own = |name: &str, key: &str| match key {
+        "alpha" | "sigma" => name == "gaussian",
+        "b" | "c" => name == "mitchell",
+        "tau" => name == "lanczos",
+        _ => true,
+    };
+    for name in ["box", "triangle", "gaussian", "mitchell", "lanczos"] {
+        for key in ["radius", "rx", "ry", "alpha", "sigma", "b", "c", "tau"] {
+            let spec = std::format!("{name}:{key}=0.5");
+            let got = FilterKind::parse(&spec);
+            if own(name, key) {
+                assert!(got.is_ok(), "{spec}: {got:?}");
+            } else {
+                assert_eq!(
+                    got,
+                    Err(SpecError::UnknownKey { filter: name, key }),
+                    "{spec}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn specs_parse_and_round_trip() {
     let g = FilterKind::parse(" Gaussian : radius = 1.5 , sigma = 0.5 ").unwrap();
     assert_eq!(
