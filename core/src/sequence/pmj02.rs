@@ -397,6 +397,32 @@ mod tests {
         }
         let other = built(4, 5000);
         assert!(long.iter().zip(&other).all(|(a, b)| a != b));
+        // Point 0 is two whole random words of the seed's stream, one per coordinate: over 256
+        // seeds each coordinate's words are distinct (a repeat has probability below 2⁻¹⁶) and
+        // together flip every bit.
+        for axis in 0..2 {
+            let mut words: Vec<u32> = (0..256).map(|seed| built(seed, 1)[0][axis]).collect();
+            assert_eq!(words.iter().fold(0, |a, w| a | w), u32::MAX, "axis {axis}");
+            words.sort_unstable();
+            words.dedup();
+            assert_eq!(words.len(), 256, "axis {axis}: seeds share point 0's word");
+        }
+    }
+
+    /// Below the digits the construction fixes (the first `L + 1` of a point at level `L`),
+    /// every coordinate is jittered by the seed's random words: over points 1..4096 the low 16
+    /// bits of each axis are uniform (their mean within 4σ of ½, σ = 1/√(12·4095): a false alarm
+    /// has probability under 10⁻⁴, and the seed is fixed) and every one of them is set somewhere.
+    #[test]
+    fn pmj02_points_are_jittered_below_their_fixed_digits() {
+        let pts = built(3, 4096);
+        for axis in 0..2 {
+            let low: Vec<u32> = pts[1..].iter().map(|p| p[axis] & 0xffff).collect();
+            assert_eq!(low.iter().fold(0, |a, w| a | w), 0xffff, "axis {axis}");
+            let mean = low.iter().map(|&w| f64::from(w) / 65536.0).sum::<f64>() / 4095.0;
+            let sigma = 1.0 / (12.0f64 * 4095.0).sqrt();
+            assert!((mean - 0.5).abs() < 4.0 * sigma, "axis {axis}: mean {mean}");
+        }
     }
 
     #[test]
@@ -460,6 +486,16 @@ mod tests {
             Pmj02::scrambled(1).sample_2d_u32(0),
             Pmj02::scrambled(2).sample_2d_u32(0)
         );
+        // Each coordinate has its own seeded scramble: over 64 seeds, point 0's value on each
+        // axis is a different 32-bit word (a repeat has probability below 10⁻⁶).
+        for axis in 0..2 {
+            let mut v: Vec<u32> = (0..64)
+                .map(|seed| Pmj02::scrambled(seed).sample_2d_u32(0)[axis])
+                .collect();
+            v.sort_unstable();
+            v.dedup();
+            assert_eq!(v.len(), 64, "axis {axis}: seeds share a scramble");
+        }
     }
 
     #[test]

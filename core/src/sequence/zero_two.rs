@@ -208,6 +208,41 @@ mod tests {
         }
     }
 
+    /// Point 0 of the unscrambled sequence is the origin, so a scrambled sequence's point 0 is
+    /// its two XOR words: `scramble()` reports what `new` was given, and `from_seed` scrambles
+    /// both dimensions with words that differ between the dimensions and between seeds.
+    #[test]
+    fn scrambles_are_the_xor_words_of_point_zero_and_seeds_reach_both_dimensions() {
+        for words in [
+            [0, 0],
+            [3, 4],
+            [u32::MAX, 1 << 31],
+            [0x9e37_79b9, 0x7f4a_7c15],
+        ] {
+            let z = ZeroTwo::new(words);
+            assert_eq!(z.scramble(), words);
+            assert_eq!(z.sample_2d_u32(0), words);
+        }
+        let mut xs = std::vec::Vec::new();
+        let mut ys = std::vec::Vec::new();
+        for seed in 0..256u64 {
+            let z = ZeroTwo::from_seed(seed);
+            let [x, y] = z.sample_2d_u32(0);
+            assert_eq!(z.scramble(), [x, y]);
+            assert_ne!(x, y, "seed {seed}: both dimensions got the same word");
+            xs.push(x);
+            ys.push(y);
+        }
+        for words in [&mut xs, &mut ys] {
+            words.sort_unstable();
+            words.dedup();
+            // 256 seeds, 32-bit words: a repeat has probability below 2⁻¹⁶ for a good hash.
+            assert_eq!(words.len(), 256, "seeds share a scramble word");
+            // Every bit position is flipped by some seed (a shifted-out half would leave 0s).
+            assert_eq!(words.iter().fold(0, |a, w| a | w), u32::MAX);
+        }
+    }
+
     #[test]
     fn sequence_impl_wraps_and_agrees_with_sample_2d() {
         let z = ZeroTwo::from_seed(3);
