@@ -28,8 +28,17 @@
 /// Without the `lazy-tables` feature, `NAME` is a plain static evaluated at compile time from
 /// `zero_value` and `fill_fn`. With it, `NAME` is a [`LazyTable`] that runs `fill_fn` on the
 /// all-zero `zero_value` at first use. `test_name` is a test, in both builds, that the two
-/// agree, so `cargo test` checks every lazily built table without the feature.
+/// agree, so `cargo test` checks every lazily built table without the feature. A trailing
+/// `, stored STATIC` makes `NAME` an alias of that existing static in the default build.
 macro_rules! baked_table {
+    // A table whose stored form is the public static `$stored`: without the feature `NAME` is
+    // that static, so a program that names both carries it once.
+    ($(#[$doc:meta])* $vis:vis static $name:ident: $ty:ty = $zero:expr, $fill:path, $test:ident,
+        stored $stored:ident;) => {
+        #[cfg(not(feature = "lazy-tables"))]
+        $vis use $stored as $name;
+        $crate::lazy_table::baked_table!(@at_first_use $(#[$doc])* $vis $name $ty, $zero, $fill, $test);
+    };
     ($(#[$doc:meta])* $vis:vis static $name:ident: $ty:ty = $zero:expr, $fill:path, $test:ident;) => {
         $(#[$doc])*
         #[cfg(not(feature = "lazy-tables"))]
@@ -38,7 +47,10 @@ macro_rules! baked_table {
             $fill(&mut t);
             t
         };
-
+        $crate::lazy_table::baked_table!(@at_first_use $(#[$doc])* $vis $name $ty, $zero, $fill, $test);
+    };
+    // The `lazy-tables` form, and the test that the two forms agree.
+    (@at_first_use $(#[$doc:meta])* $vis:vis $name:ident $ty:ty, $zero:expr, $fill:path, $test:ident) => {
         // The table's fill, as a type (a function pointer stored in the static would make it
         // non-zero and move it out of `.bss`). Types and statics have separate namespaces.
         #[cfg(feature = "lazy-tables")]

@@ -130,17 +130,12 @@ const fn bake() -> [[u32; 2]; PMJ02_MAX_POINTS] {
     t
 }
 
-/// The table the sequence and the samplers read: [`PMJ02_TABLE`] itself, or with the
-/// `lazy-tables` feature the same points built at first use (so a program that does not name
-/// `PMJ02_TABLE` does not carry its 512 KiB).
-#[cfg(not(feature = "lazy-tables"))]
-pub(crate) use PMJ02_TABLE as PMJ02_POINTS;
-
-#[cfg(feature = "lazy-tables")]
 crate::lazy_table::baked_table! {
-    /// [`PMJ02_TABLE`]'s points, built at first use.
-    pub(crate) static PMJ02_POINTS: [[u32; 2]; PMJ02_MAX_POINTS] =
-        [[0; 2]; PMJ02_MAX_POINTS], fill_table, pmj02_points_at_first_use_equal_the_baked_table;
+    /// The table the sequence and the samplers read: [`PMJ02_TABLE`] itself, or with the
+    /// `lazy-tables` feature the same points built at first use (so a program that does not name
+    /// `PMJ02_TABLE` does not carry its 512 KiB).
+    pub(crate) static PMJ02_POINTS: [[u32; 2]; PMJ02_MAX_POINTS] = [[0; 2]; PMJ02_MAX_POINTS],
+        fill_table, pmj02_points_at_first_use_equal_the_stored_table, stored PMJ02_TABLE;
 }
 
 /// [`PMJ02_MAX_POINTS`] pmj02 points of seed [`PMJ02_TABLE_SEED`] (512 KiB), built by
@@ -357,23 +352,6 @@ mod tests {
                 assert_elementary_intervals(&pts[..1 << m], m);
             }
         }
-    }
-
-    /// The points the samplers read with `lazy-tables`, built at first use, equal the stored
-    /// table (in the default build, which stores it; the lazy build checks the converse).
-    #[cfg(not(feature = "lazy-tables"))]
-    #[test]
-    fn pmj02_points_at_first_use_equal_the_stored_table() {
-        struct Points;
-        impl crate::lazy_table::Fill for Points {
-            type Table = [[u32; 2]; PMJ02_MAX_POINTS];
-            fn fill(t: &mut Self::Table) {
-                fill_table(t)
-            }
-        }
-        static AT_FIRST_USE: crate::lazy_table::LazyTable<Points> =
-            crate::lazy_table::LazyTable::new([[0; 2]; PMJ02_MAX_POINTS]);
-        assert!(*AT_FIRST_USE == PMJ02_TABLE);
     }
 
     #[test]
