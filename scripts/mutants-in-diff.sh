@@ -1,89 +1,192 @@
 #!/usr/bin/env bash
 # Mutation testing of the lines a change touches (docs/mutation.md).
 #
-#   scripts/mutants-in-diff.sh [BASE]
+#   scripts/mutants-in-diff.sh [--install] [--in-place] [BASE]
 #
-# Diffs HEAD against BASE (default: `git merge-base HEAD origin/main`, or HEAD~1 when there is
-# no origin/main), and runs `cargo mutants --in-diff` on the changed Rust files of the core and
-# the film, testing each mutant with the lib tests of its package. Missed mutants listed in
-# scripts/mutants-equivalent.txt are forgiven; any other missed mutant fails the script.
+# Diffs HEAD against BASE and runs `cargo mutants --in-diff` on the changed Rust files of the
+# core and the film, one file at a time, each against the tests scripts/mutants-modules.txt
+# names for it (a file not listed there: the lib tests under its module path, or all of its
+# package's lib tests when none match). BASE defaults to `git merge-base HEAD origin/main`; when
+# that is HEAD itself (a clone of main), to HEAD's first parent, so the change that landed last is
+# the one tested. Missed mutants listed in scripts/mutants-equivalent.txt are forgiven; any other
+# missed mutant fails the script.
 #
-# Environment: MUTANTS_DIFF_SECONDS (the whole run's time box, default 900; a run cut short
-# fails), MUTANTS_TIMEOUT (seconds of tests per mutant, default 60), MUTANTS_JOBS (default 1),
-# MUTANTS_OUT (default $CARGO_TARGET_DIR/mutants-diff, else target/mutants-diff).
+#   --install   install cargo-mutants (a debug build, within 300 s) when it is missing and there
+#               is something to test; without it a missing cargo-mutants is SKIPPED.
+#   --in-place  mutate the working tree instead of a copy, so the mutants reuse the target
+#               directory the tests were built in (CI: no second build of the dependencies).
+#               Refused when core/src or std-film/src differ from HEAD; every file is restored
+#               from HEAD when the script exits.
 #
-# Exit status: 0 when nothing was missed (or nothing to test), 2 when a mutant outside the
-# equivalent list was missed, 1 on any other failure. Prints "SKIPPED: <why>" and exits 0 when
-# cargo-mutants is not installed; it never installs it.
+# Environment: MUTANTS_DIFF_SECONDS (the time box for all mutants, default 300: files not reached
+# and mutants not tested within it are counted and reported, not failed), MUTANTS_TIMEOUT
+# (seconds of tests per mutant, default 60), MUTANTS_OPT_LEVEL (the core's opt-level, default 0
+# as in scripts/mutants.sh), MUTANTS_OUT (default $CARGO_TARGET_DIR/mutants-diff, else
+# target/mutants-diff).
+#
+# Exit status: 0 when nothing was missed (or there was nothing to test), 2 when a mutant outside
+# the equivalent list was missed, 1 on any other failure. The last line starts with
+# MUTANTS_IN_DIFF and gives the counts.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# As .ci/run: line tables only keep each mutant's build short.
+# As .ci/run: line tables only keep each mutant's build short; incremental builds make a mutant of
+# the core a 2–3 s rebuild (CI turns them off for its one-shot builds).
 export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
+export CARGO_INCREMENTAL=1
 
-if ! cargo mutants --version >/dev/null 2>&1; then
-    echo "SKIPPED: cargo-mutants is not installed (cargo install cargo-mutants --locked)"
+install=0
+in_place=0
+while [ $# -gt 0 ]; do
+    case $1 in
+        --install) install=1 ;;
+        --in-place) in_place=1 ;;
+        -*) echo "unknown option '$1' (--install, --in-place)" >&2; exit 1 ;;
+        *) break ;;
+    esac
+    shift
+done
+
+EQUIVALENT=scripts/mutants-equivalent.txt
+MODULES_FILE=scripts/mutants-modules.txt
+BOX=${MUTANTS_DIFF_SECONDS:-300}
+TIMEOUT=${MUTANTS_TIMEOUT:-60}
+OPT_LEVEL=${MUTANTS_OPT_LEVEL:-0}
+OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants-diff}
+SOURCES=(core/src std-film/src)
+
+if [ $# -gt 0 ]; then
+    base=$(git rev-parse --verify "$1^{commit}")
+elif base=$(git merge-base HEAD origin/main 2>/dev/null) && [ "$base" != "$(git rev-parse HEAD)" ]; then
+    :
+elif base=$(git rev-parse --verify -q 'HEAD^1'); then
+    :
+else
+    echo "SKIPPED: no origin/main to diff against and HEAD has no parent"
     exit 0
 fi
 
-EQUIVALENT=scripts/mutants-equivalent.txt
-SECONDS_BOX=${MUTANTS_DIFF_SECONDS:-900}
-TIMEOUT=${MUTANTS_TIMEOUT:-60}
-JOBS=${MUTANTS_JOBS:-1}
-OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants-diff}
-
-if [ $# -gt 0 ]; then
-    base=$1
-elif base=$(git merge-base HEAD origin/main 2>/dev/null); then
-    :
-elif base=$(git rev-parse --verify -q HEAD~1); then
-    :
-else
-    echo "SKIPPED: no origin/main and no parent commit to diff against"
+mapfile -t files < <(git diff --name-only --diff-filter=AM "$base" HEAD -- "${SOURCES[@]}" | grep '\.rs$' || true)
+if [ ${#files[@]} -eq 0 ]; then
+    echo "no change to ${SOURCES[*]} between ${base:0:12} and HEAD: nothing to mutate"
+    echo "MUTANTS_IN_DIFF 0 mutants (no source change)"
     exit 0
+fi
+echo "changed since ${base:0:12}: ${files[*]}"
+
+if ! cargo mutants --version >/dev/null 2>&1; then
+    if [ $install = 0 ]; then
+        echo "SKIPPED: cargo-mutants is not installed (cargo install cargo-mutants --locked, or --install)"
+        exit 0
+    fi
+    # A debug build installs in about a minute instead of two and a half here; cargo-mutants only
+    # parses sources and runs cargo, so its own speed does not matter.
+    echo "installing cargo-mutants (debug build, at most 300 s)"
+    if ! timeout 300 cargo install cargo-mutants --locked --debug --quiet >/dev/null 2>&1; then
+        echo "SKIPPED: cargo-mutants could not be installed within 300 s"
+        exit 0
+    fi
+fi
+
+if [ $in_place = 1 ]; then
+    if ! git diff --quiet HEAD -- "${SOURCES[@]}"; then
+        echo "--in-place needs ${SOURCES[*]} as in HEAD (commit or stash first)" >&2
+        exit 1
+    fi
+    # cargo-mutants puts each file back after each mutant; this covers a run killed mid-mutant.
+    trap 'git checkout -q HEAD -- "${SOURCES[@]}"' EXIT
 fi
 
 rm -rf "$OUT"
 mkdir -p "$OUT"
 diff="$OUT/change.diff"
-git diff "$base" HEAD -- 'core/src/*.rs' 'std-film/src/*.rs' >"$diff"
-if [ ! -s "$diff" ]; then
-    echo "no change to core/src or std-film/src since ${base:0:12}: nothing to mutate"
-    exit 0
-fi
-# Each touched package tests its own mutants with its own lib tests.
-packages=()
-git diff --name-only "$base" HEAD -- 'core/src/*.rs' | grep -q . && packages+=(nyquist)
-git diff --name-only "$base" HEAD -- 'std-film/src/*.rs' | grep -q . && packages+=(nyquist-film)
+# The diff of the working tree against BASE: with --in-place it equals HEAD's; otherwise it is
+# what the copy cargo-mutants makes holds (uncommitted edits included), which the diff must match.
+git diff "$base" -- "${SOURCES[@]}" >"$diff"
 
 strip_position() { sed -E 's/^([^:]+):[0-9]+:[0-9]+: /\1: /'; }
 equivalent_names() { grep -v -e '^#' -e '^[[:space:]]*$' "$EQUIVALENT" | sed -E 's/  # .*$//'; }
+count() { if [ -s "$1" ]; then grep -c . "$1"; else echo 0; fi; }
+config="--config=profile.dev.package.nyquist.opt-level=$OPT_LEVEL"
 
+# The test filter for a file not in the modules list: its module path, `core/src/a/b.rs` ->
+# `a::b::`, `a/mod.rs` -> `a::`; the crate root gets all lib tests.
+module_filter() {
+    local path=${1#*/src/}
+    path=${path%.rs}
+    path=${path%/mod}
+    case $path in lib | main) echo "" ;; *) echo "${path//\//::}::" ;; esac
+}
+
+total=0 tested=0 caught=0 missed=0 unviable=0 timeouts=0 equivalent=0 unreached=0
 status=0
-for package in "${packages[@]}"; do
-    dir="$OUT/$package"
-    mkdir -p "$dir"
-    cmd=(cargo mutants --in-diff "$diff" --package "$package" --test-package "$package"
-        --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --output "$dir" --cargo-arg=--lib)
-    echo "== ${cmd[*]} (diff against ${base:0:12}, at most ${SECONDS_BOX} s)"
+begin=$SECONDS
+for file in "${files[@]}"; do
+    case $file in
+        core/*) package=nyquist ;;
+        std-film/*) package=nyquist-film ;;
+    esac
+    line=$(grep -v '^#' "$MODULES_FILE" | awk -F'|' -v f="$file" '$3 == f' | head -1)
+    if [ -n "$line" ]; then
+        IFS='|' read -r _ package _ filters targets <<<"$line"
+    else
+        filters=$(module_filter "$file")
+        targets=
+    fi
+    cargo_args=("--cargo-arg=$config")
+    for t in ${targets:---lib}; do cargo_args+=("--cargo-arg=$t"); done
+    n=$(cargo mutants --list --in-diff "$diff" --package "$package" --file "$file" 2>/dev/null | grep -c . || true)
+    [ "$n" -gt 0 ] || continue
+    total=$((total + n))
+    left=$((BOX - (SECONDS - begin)))
+    if [ "$left" -le 0 ]; then
+        echo "== $file: $n mutants not tested (time box of ${BOX} s used up)"
+        unreached=$((unreached + n))
+        continue
+    fi
+    if [ -n "$filters" ] && [ -z "$line" ]; then
+        # An unlisted file: fall back to all lib tests when no test lives under its module path.
+        # (This also builds the tests once, unmutated, before the time box's first mutant.)
+        # shellcheck disable=SC2086 # the filters are separate libtest arguments
+        listed=$(cargo test --quiet -p "$package" --lib "$config" -- --list $filters 2>/dev/null | grep -c ': test$' || true)
+        [ "$listed" -gt 0 ] || filters=
+    fi
+    dir="$OUT/${file//\//-}"
+    # shellcheck disable=SC2206 # the filters are separate libtest arguments
+    cmd=(cargo mutants --in-diff "$diff" --package "$package" --file "$file" --test-package "$package"
+        --no-shuffle --jobs 1 --timeout "$TIMEOUT" --baseline skip --output "$dir" "${cargo_args[@]}")
+    [ $in_place = 1 ] && cmd+=(--in-place)
+    [ -n "$filters" ] && cmd+=(-- -- $filters)
+    echo "== $file: $n mutants, at most ${left} s: ${cmd[*]}"
     rc=0
-    timeout "$SECONDS_BOX" nice -n 15 "${cmd[@]}" || rc=$?
+    # SIGINT lets cargo-mutants put the file back and write what it has before it stops.
+    timeout -s INT "$left" nice -n 10 "${cmd[@]}" || rc=$?
+    res="$dir/mutants.out"
     case $rc in
         0 | 2 | 3) ;;
-        124) echo "$package: the run took over ${SECONDS_BOX} s (MUTANTS_DIFF_SECONDS)" >&2; exit 1 ;;
-        *) echo "$package: cargo mutants exited $rc" >&2; exit 1 ;;
+        124 | 130) echo "$file: the time box ran out during this file" ;;
+        *) echo "$file: cargo mutants exited $rc" >&2; exit 1 ;;
     esac
-    missed="$dir/mutants.out/missed.txt"
-    if [ -s "$missed" ]; then
-        unlisted=$(strip_position <"$missed" | grep -v -F -x -f <(equivalent_names) || true)
+    c=$(count "$res/caught.txt") m=$(count "$res/missed.txt")
+    u=$(count "$res/unviable.txt") t=$(count "$res/timeout.txt")
+    caught=$((caught + c)) missed=$((missed + m)) unviable=$((unviable + u)) timeouts=$((timeouts + t))
+    tested=$((tested + c + m + u + t))
+    unreached=$((unreached + n - (c + m + u + t)))
+    if [ -s "$res/missed.txt" ]; then
+        e=$(strip_position <"$res/missed.txt" | grep -c -F -x -f <(equivalent_names) || true)
+        equivalent=$((equivalent + e))
+        unlisted=$(strip_position <"$res/missed.txt" | grep -v -F -x -f <(equivalent_names) || true)
         if [ -n "$unlisted" ]; then
-            echo "$package: missed mutants not listed in $EQUIVALENT:"
+            echo "$file: missed mutants not listed in $EQUIVALENT (a test should catch each):"
             printf '%s\n' "$unlisted" | sed 's/^/    /'
             status=2
         fi
     fi
-    if [ -s "$dir/mutants.out/timeout.txt" ]; then
-        echo "$package: timed out (not counted as missed):"
-        sed 's/^/    /' "$dir/mutants.out/timeout.txt"
+    if [ -s "$res/timeout.txt" ]; then
+        echo "$file: timed out (an endless loop, usually; not counted as missed):"
+        sed 's/^/    /' "$res/timeout.txt"
     fi
 done
+[ "$unreached" -eq 0 ] ||
+    echo "time box: $unreached of $total mutants were not tested; run scripts/mutants-in-diff.sh ${base:0:12} with a larger MUTANTS_DIFF_SECONDS for them"
+echo "MUTANTS_IN_DIFF $tested of $total mutants tested in $((SECONDS - begin)) s: caught $caught, missed $missed ($equivalent listed equivalent), unviable $unviable, timeouts $timeouts"
 exit $status

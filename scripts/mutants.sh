@@ -40,34 +40,7 @@ export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
 # slowest module's tests take 10 s instead of 2 (docs/mutation.md).
 OPT_LEVEL=${MUTANTS_OPT_LEVEL:-0}
 
-# module | package | file | test filters (space-separated libtest substrings)
-#   [| test targets (space-separated cargo arguments; default --lib)]
-MODULES='
-stratify/jittered|nyquist|core/src/stratify/jittered.rs|stratify::jittered::
-stratify/latin_hypercube|nyquist|core/src/stratify/latin_hypercube.rs|stratify::latin_hypercube::
-stratify/shuffle|nyquist|core/src/stratify/shuffle.rs|stratify::shuffle::
-stratify/mod|nyquist|core/src/stratify/mod.rs|stratify::
-hash|nyquist|core/src/hash.rs|hash::tests::
-scramble|nyquist|core/src/scramble.rs|scramble::tests::
-radical/mod|nyquist|core/src/radical/mod.rs|radical::tests::
-radical/owen|nyquist|core/src/radical/owen.rs|radical::owen::
-radical/primes|nyquist|core/src/radical/primes.rs|radical::
-sequence/sobol|nyquist|core/src/sequence/sobol.rs|sequence::sobol::
-sequence/halton|nyquist|core/src/sequence/halton.rs|sequence::halton::
-sequence/owen_sobol|nyquist|core/src/sequence/owen_sobol.rs|sequence::owen_sobol::
-sequence/pmj02|nyquist|core/src/sequence/pmj02.rs|sequence::pmj02::
-sequence/zero_two|nyquist|core/src/sequence/zero_two.rs|sequence::zero_two::
-analysis/star|nyquist|core/src/analysis/star.rs|analysis::star::
-analysis/l2|nyquist|core/src/analysis/l2.rs|analysis::l2::
-analysis/distance|nyquist|core/src/analysis/distance.rs|analysis::distance::
-filter/kind|nyquist|core/src/filter/kind.rs|filter::tests::
-filter/table|nyquist|core/src/filter/table.rs|filter::tests::
-filter/phase|nyquist|core/src/filter/phase.rs|filter::tests::
-filter/sample|nyquist|core/src/filter/sample.rs|filter::tests::
-film/tile|nyquist-film|std-film/src/tile.rs|tile::
-film/film|nyquist-film|std-film/src/film.rs||--test=film
-'
-
+MODULES_FILE=scripts/mutants-modules.txt
 EQUIVALENT=scripts/mutants-equivalent.txt
 DOC=docs/mutation.md
 JOBS=${MUTANTS_JOBS:-1}
@@ -75,7 +48,7 @@ TIMEOUT=${MUTANTS_TIMEOUT:-30}
 OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants}
 BASELINE=${MUTANTS_BASELINE:-run}
 
-modules() { printf '%s\n' "$MODULES" | grep -v '^$'; }
+modules() { grep -v -e '^#' -e '^[[:space:]]*$' "$MODULES_FILE"; }
 
 summarize=0
 if [ "${1:-}" = "--summarize" ]; then

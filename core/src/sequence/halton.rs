@@ -447,6 +447,66 @@ mod tests {
         }
     }
 
+    /// Every set here is infinite: no point count, every `u64` index a point (the last one
+    /// included), and the dimension count it was built with.
+    #[test]
+    fn every_set_is_infinite_with_its_own_dims() {
+        for (name, set) in sets() {
+            assert_eq!(set.point_count(), None, "{name}");
+            assert_eq!(set.dims(), if name == "vdc" { 1 } else { 7 }, "{name}");
+            assert!((0.0..1.0).contains(&set.sample(u64::MAX, 0)), "{name}");
+            // A fill's exclusive end must be a `u64`: the last fillable index is one before.
+            let mut last = [0.0f32; 1];
+            assert_eq!(set.fill(u64::MAX - 1, 1, &mut last), Ok(1), "{name}");
+            assert_eq!(last[0], set.sample(u64::MAX - 1, 0), "{name}");
+        }
+    }
+
+    /// Φ₂(i) is `i`'s bits mirrored about the binary point: `reverse_bits(i) / 2⁶⁴`, exact in
+    /// f64 for `i < 2⁵³` (the mirrored word then ends in 11 zero bits), and in f32 rounded to
+    /// nearest but kept below 1. Every dimension of the van der Corput set reads it.
+    #[test]
+    fn van_der_corput_is_the_mirrored_index() {
+        for i in [0u64, 1, 6, 0x2d, 0xdead_beef, (1 << 53) - 1] {
+            let mirrored = i.reverse_bits() as f64 / 2f64.powi(64);
+            for d in [0, 1, 9] {
+                assert_eq!(VanDerCorput.sample_f64(i, d), mirrored, "i = {i}");
+                let below_one = f32::from_bits(0x3f7f_ffff); // 1 − 2⁻²⁴
+                assert_eq!(VanDerCorput.sample(i, d), (mirrored as f32).min(below_one));
+            }
+        }
+    }
+
+    /// The folded radical inverse from its definition (Kocis & Whiten 1997): digit `k` of `i`
+    /// in base `b`, `a_k`, becomes `(a_k + k) mod b`, over infinitely many digits (the zeros
+    /// above `i`'s top digit fold to nonzero digits), so Ψ₂(0) = 0.0101…₂ = 1/3. Summed here
+    /// in f64 from the last digit that can matter to the first; dimension `d` is base
+    /// `prime(d)` and dimensions wrap modulo `dims`.
+    #[test]
+    fn zaremba_folds_digit_k_by_k() {
+        fn folded(b: u64, mut i: u64) -> f64 {
+            let mut digits = [0u64; 80];
+            for (k, digit) in digits.iter_mut().enumerate() {
+                *digit = (i % b + k as u64) % b;
+                i /= b;
+            }
+            // Base 2 needs the most digits: 2⁻⁸⁰ is far below f64's resolution near any value.
+            digits.iter().rev().fold(0.0, |tail, &a| (a as f64 + tail) / b as f64)
+        }
+        let z = HaltonZaremba::new(7).unwrap();
+        for i in [0u64, 1, 2, 5, 1000, 123_456_789, 1 << 40] {
+            for d in 0..7u32 {
+                let want = folded(crate::radical::prime(d).into(), i);
+                for dim in [d, d + 7, d + 700] {
+                    let (x, y) = (z.sample_f64(i, dim), z.sample(i, dim));
+                    assert!((x - want).abs() < 1e-15, "i = {i}, dim {dim}: {x} vs {want}");
+                    assert!((f64::from(y) - want).abs() < 1.2e-7, "i = {i}, dim {dim}: {y}");
+                }
+            }
+        }
+        assert_eq!(z.sample_f64(0, 0), 1.0 / 3.0);
+    }
+
     proptest! {
         #[test]
         fn values_are_in_unit_interval(index in any::<u64>(), dim in any::<u32>()) {
