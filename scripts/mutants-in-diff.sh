@@ -11,15 +11,16 @@
 # the one tested. Missed mutants listed in scripts/mutants-equivalent.txt are forgiven; any other
 # missed mutant fails the script.
 #
-#   --install   install cargo-mutants (a debug build, within 300 s) when it is missing and there
+#   --install   install cargo-mutants (a debug build, within the time box) when it is missing and there
 #               is something to test; without it a missing cargo-mutants is SKIPPED.
 #   --in-place  mutate the working tree instead of a copy, so the mutants reuse the target
 #               directory the tests were built in (CI: no second build of the dependencies).
 #               Refused when core/src or std-film/src differ from HEAD; every file is restored
 #               from HEAD when the script exits.
 #
-# Environment: MUTANTS_DIFF_SECONDS (the time box for all mutants, default 300: files not reached
-# and mutants not tested within it are counted and reported, not failed), MUTANTS_TIMEOUT
+# Environment: MUTANTS_DIFF_SECONDS (the time box for the whole run, an install included; default
+# 300: files not reached and mutants not tested within it are counted and reported, not
+# failed), MUTANTS_TIMEOUT
 # (seconds of tests per mutant, default 60), MUTANTS_OPT_LEVEL (the core's opt-level, default 0
 # as in scripts/mutants.sh), MUTANTS_OUT (default $CARGO_TARGET_DIR/mutants-diff, else
 # target/mutants-diff).
@@ -29,6 +30,7 @@
 # MUTANTS_IN_DIFF and gives the counts.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+begin=$SECONDS
 # As .ci/run: line tables only keep each mutant's build short; incremental builds make a mutant of
 # the core a 2–3 s rebuild (CI turns them off for its one-shot builds).
 export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
@@ -80,9 +82,9 @@ if ! cargo mutants --version >/dev/null 2>&1; then
     fi
     # A debug build installs in about a minute instead of two and a half here; cargo-mutants only
     # parses sources and runs cargo, so its own speed does not matter.
-    echo "installing cargo-mutants (debug build, at most 300 s)"
-    if ! timeout 300 cargo install cargo-mutants --locked --debug --quiet >/dev/null 2>&1; then
-        echo "SKIPPED: cargo-mutants could not be installed within 300 s"
+    echo "installing cargo-mutants (debug build, at most $BOX s)"
+    if ! timeout "$BOX" cargo install cargo-mutants --locked --debug --quiet >/dev/null 2>&1; then
+        echo "SKIPPED: cargo-mutants could not be installed within $BOX s"
         exit 0
     fi
 fi
@@ -92,9 +94,18 @@ if [ $in_place = 1 ]; then
         echo "--in-place needs ${SOURCES[*]} as in HEAD (commit or stash first)" >&2
         exit 1
     fi
-    # cargo-mutants puts each file back after each mutant; this covers a run killed mid-mutant.
-    trap 'git checkout -q HEAD -- "${SOURCES[@]}"' EXIT
+    # cargo-mutants puts each file back after each mutant; this covers a run killed mid-mutant,
+    # and removes the proptest regression files that caught mutants leave in the tree.
+    regressions() { git ls-files --others --exclude-standard -- '*proptest-regressions/*'; }
+    mapfile -t kept < <(regressions)
+    restore() {
+        git checkout -q HEAD -- "${SOURCES[@]}"
+        regressions | grep -v -F -x -f <(printf '%s\n' "${kept[@]}" "") | xargs -r rm -f
+    }
+    trap restore EXIT
 fi
+# A caught proptest failure need not be shrunk: one step is enough to count it.
+export PROPTEST_MAX_SHRINK_ITERS=${PROPTEST_MAX_SHRINK_ITERS:-1}
 
 rm -rf "$OUT"
 mkdir -p "$OUT"
@@ -119,7 +130,6 @@ module_filter() {
 
 total=0 tested=0 caught=0 missed=0 unviable=0 timeouts=0 equivalent=0 unreached=0
 status=0
-begin=$SECONDS
 for file in "${files[@]}"; do
     case $file in
         core/*) package=nyquist ;;
@@ -153,13 +163,13 @@ for file in "${files[@]}"; do
     dir="$OUT/${file//\//-}"
     # shellcheck disable=SC2206 # the filters are separate libtest arguments
     cmd=(cargo mutants --in-diff "$diff" --package "$package" --file "$file" --test-package "$package"
-        --no-shuffle --jobs 1 --timeout "$TIMEOUT" --baseline skip --output "$dir" "${cargo_args[@]}")
-    [ $in_place = 1 ] && cmd+=(--in-place)
+        --no-shuffle --timeout "$TIMEOUT" --baseline skip --output "$dir" "${cargo_args[@]}")
+    [ $in_place = 1 ] && cmd+=(--in-place) # one mutant at a time (the default), as it must be here
     [ -n "$filters" ] && cmd+=(-- -- $filters)
     echo "== $file: $n mutants, at most ${left} s: ${cmd[*]}"
     rc=0
     # SIGINT lets cargo-mutants put the file back and write what it has before it stops.
-    timeout -s INT "$left" nice -n 10 "${cmd[@]}" || rc=$?
+    RUST_BACKTRACE=0 timeout -s INT "$left" nice -n 10 "${cmd[@]}" || rc=$?
     res="$dir/mutants.out"
     case $rc in
         0 | 2 | 3) ;;
