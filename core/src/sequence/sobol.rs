@@ -463,9 +463,45 @@ mod tests {
             assert_eq!(s.sample(i + (1 << 32), 2), s.sample(i, 2));
             assert_eq!(s.sample(i + (7 << 32), 2), s.sample(i, 2));
             assert_eq!(s.sample(i, 5 + 3), s.sample(i, 3));
+            assert_eq!(s.sample(i, 5), s.sample(i, 0)); // the first dimension past the end
+            let last = sobol_u32(i as u32, 4) >> 8; // the last dimension in it, unwrapped
+            assert_eq!(s.sample(i, 4), last as f32 / 16_777_216.0);
             assert_eq!(s.sample(i, u32::MAX), s.sample(i, u32::MAX % 5));
         }
         assert_eq!(sobol_u32(9, SOBOL_DIMS * 3 + 4), sobol_u32(9, 4));
+        // Total in `dim`: the largest dimension number wraps like any other.
+        assert_eq!(sobol_u32(9, u32::MAX), sobol_u32(9, u32::MAX % SOBOL_DIMS));
+    }
+
+    #[test]
+    fn is_scrambled_says_which_constructor_made_it() {
+        assert!(!Sobol::new(3).unwrap().is_scrambled());
+        for seed in [0, 1, u64::MAX] {
+            assert!(Sobol::with_scramble(3, seed).unwrap().is_scrambled());
+        }
+    }
+
+    /// The global samplers' run: dimension `first + k` of point `index`, XORed with `shifts[k]`,
+    /// the top 24 bits as an `f32`; `None` and nothing written when a dimension has no byte
+    /// table (64 and up) or `shifts` is short.
+    #[test]
+    fn sobol_runs_are_shifted_products_of_consecutive_dimensions() {
+        let shifts: std::vec::Vec<u32> = (0..16).map(|k| hash::mix32(k * 7 + 1)).collect();
+        for index in [0u32, 1, 77, 0x8000_0001, u32::MAX] {
+            for (first, len) in [(0usize, 16usize), (5, 3), (FAST_DIMS - 16, 16), (10, 0)] {
+                let mut out = [f32::NAN; 16];
+                assert_eq!(sobol_run_f32(index, first, &shifts, &mut out[..len]), Some(()));
+                for k in 0..len {
+                    let v = sobol_u32(index, (first + k) as u32) ^ shifts[k];
+                    assert_eq!(out[k], (v >> 8) as f32 / 16_777_216.0, "dim {}", first + k);
+                }
+            }
+            let mut out = [f32::NAN; 4];
+            assert_eq!(sobol_run_f32(index, FAST_DIMS - 3, &shifts, &mut out), None);
+            assert_eq!(sobol_run_f32(index, usize::MAX, &shifts, &mut out), None);
+            assert_eq!(sobol_run_f32(index, 0, &shifts[..3], &mut out), None);
+            assert!(out.iter().all(|x| x.is_nan()), "nothing written");
+        }
     }
 
     #[test]
