@@ -248,6 +248,23 @@ mod tests {
     use proptest::prelude::*;
     use std::vec::Vec;
 
+    /// A node's hash is a SplitMix64 stream (Steele, Lea & Flood 2014: the state steps by the
+    /// Weyl increment 0x9e3779b97f4a7c15, each output is the finaliser of the state) started at
+    /// `key ⊕ prefix·P`: the node at level ℓ reads the state after ℓ steps, so one prefix's
+    /// levels are successive outputs and every prefix has its own start.
+    #[test]
+    fn node_hash_is_a_splitmix64_stream_per_prefix() {
+        for key in [0u64, 1, 0xdead_beef_0123_4567, u64::MAX] {
+            for prefix in [0u64, 1, 2, 8, 242, 1 << 40] {
+                let mut state = key ^ prefix.wrapping_mul(0x517c_c1b7_2722_0a95);
+                for level in 0..40 {
+                    assert_eq!(node_hash(key, level, prefix), mix64(state), "level {level}");
+                    state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+                }
+            }
+        }
+    }
+
     /// `(R, b^K)` with `K` digits of the `f32` forms (`bits = 32`) for either scramble.
     fn fraction(affine: bool, d: usize, a: u64, seed: u64, bits: u32) -> (u128, u128) {
         if affine {
