@@ -89,6 +89,14 @@ fn tables_are_consistent() {
             let n = u32::from(n);
             let largest = ((1u64 << len) - 1).min(info.big - 1);
             assert!(largest < b.pow(n), "base {b}, len {len}");
+            // And no more: exactly the digit count of 2^len − 1, capped at k (the count of
+            // big − 1), so a chunk takes at most one zero digit more than it needs.
+            let (mut rest, mut count) = (largest, 0);
+            while rest > 0 {
+                rest /= b;
+                count += 1;
+            }
+            assert_eq!(n, count, "base {b}, len {len}");
         }
     }
     assert_eq!(total, ROWS);
