@@ -886,6 +886,24 @@ fn estimator_converges_to_integral_of_f_times_g() {
     check(&Boxcar::new([1.0, 2.0]).unwrap(), &|u| b.sample(u), "box");
 }
 
+/// A constant filter's density is uniform over its support, so its sampler is the uniform
+/// inverse CDF on each axis: `u ↦ −r + 2r·u`, and every weight is the support's area.
+#[test]
+fn box_sampler_is_the_uniform_inverse_cdf_on_each_axis() {
+    let b = FilterSampler::<_, 4>::new(Boxcar::new([1.0, 2.0]).unwrap()).unwrap();
+    for i in 0..17 {
+        for j in 0..17 {
+            let u = [i as f32 / 17.0, j as f32 / 17.0];
+            let fs = b.sample(u);
+            let want = [-1.0 + 2.0 * u[0], -2.0 + 4.0 * u[1]];
+            for k in 0..2 {
+                assert!((fs.offset[k] - want[k]).abs() < 1e-6, "{u:?}: {fs:?}");
+            }
+            assert!((fs.weight - 8.0).abs() < 1e-5, "{u:?}: {fs:?}");
+        }
+    }
+}
+
 #[test]
 fn sampler_weight_is_f_over_pdf_and_pdf_integrates_to_one() {
     let s = FilterSampler::<_, 32>::new(Mitchell::default()).unwrap();
