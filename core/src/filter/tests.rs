@@ -905,6 +905,40 @@ fn box_sampler_is_the_uniform_inverse_cdf_on_each_axis() {
     }
 }
 
+/// The density is 0 off the support: past the radius on either axis alone, for NaN in either
+/// coordinate, and everywhere for a filter that is zero everywhere; inside, the box's
+/// density is 1/area.
+#[test]
+fn sampler_pdf_is_zero_off_the_support_on_each_axis() {
+    let b = FilterSampler::<_, 4>::new(Boxcar::new([1.0, 1.5]).unwrap()).unwrap();
+    let inside = 1.0 / 6.0;
+    for (offset, want) in [
+        ([0.5, 1.0], inside),
+        ([-1.0, 1.5], inside),
+        ([1.01, 0.0], 0.0),
+        ([-1.01, 0.0], 0.0),
+        ([0.0, 1.51], 0.0),
+        ([0.0, -1.51], 0.0),
+        ([f32::NAN, 0.0], 0.0),
+        ([0.0, f32::NAN], 0.0),
+    ] {
+        assert!((b.pdf(offset) - want).abs() < 1e-6, "{offset:?}: {}", b.pdf(offset));
+    }
+    #[derive(Debug)]
+    struct Zero;
+    impl Filter for Zero {
+        fn radius(&self) -> [f32; 2] {
+            [1.0, 1.0]
+        }
+        fn eval(&self, _: f32, _: f32) -> f32 {
+            0.0
+        }
+    }
+    let z = FilterSampler::<_, 4>::new(Zero).unwrap();
+    assert_eq!(z.pdf([0.0, 0.0]), 0.0);
+    assert_eq!(z.sample([0.5, 0.5]).weight, 0.0);
+}
+
 #[test]
 fn sampler_weight_is_f_over_pdf_and_pdf_integrates_to_one() {
     let s = FilterSampler::<_, 32>::new(Mitchell::default()).unwrap();
