@@ -7,7 +7,7 @@ use crate::scene::Scene;
 use anyhow::{Context, Result, anyhow, bail};
 use clap::{Args, ValueEnum};
 use nyquist::filter::FilterKind;
-use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
+use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler, film_coordinate};
 use nyquist::scramble::Scramble;
 use nyquist_film::{Film, FilmConfig, FilmStats, Image, ImageFormat, render_tiles};
 use std::fmt::Write as _;
@@ -223,14 +223,6 @@ pub fn tile_count(size: [u32; 2]) -> u64 {
     u64::from(size[0].div_ceil(TILE)) * u64::from(size[1].div_ceil(TILE))
 }
 
-/// `pixel + offset` in `f32`, kept inside the pixel (as `nyquist::sampler::camera_sample` does).
-#[inline]
-fn film_coord(pixel: u32, offset: f32) -> f32 {
-    let base = pixel as f32;
-    let x = base + offset;
-    if x < base + 1.0 { x } else { base }
-}
-
 /// The sample loop. Each sample is the sampler's camera sample: the image sample (dimensions
 /// 0 and 1) and, for scenes that move, the time (dimension 2), exactly as
 /// [`nyquist::sampler::camera_sample`] reads them; the lens dimensions are not drawn because no
@@ -261,7 +253,7 @@ fn render_with<S: Sampler + Clone + Sync>(
                         s.start_pixel_sample(pixel, i, 0);
                         let [ox, oy] = s.get_pixel_2d();
                         let t = if time { s.get_1d() } else { 0.5 };
-                        let p = [film_coord(pixel[0], ox), film_coord(pixel[1], oy)];
+                        let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
                         let l =
                             scene.eval(f64::from(p[0]), f64::from(p[1]), f64::from(t), w, h) as f32;
                         tile.add_sample(p, [l; 3], 1.0);

@@ -282,7 +282,11 @@ mod tests {
         }
         for seed in [0u32, 1, 11, 0xdead_beef, u32::MAX] {
             for x in [0u32, 1, 0x8000_0000, 0x1234_5678, 0xffff_ffff, 0x5555_5555] {
-                assert_eq!(owen_scramble(x, seed), oracle(x, seed), "x {x:#x} seed {seed}");
+                assert_eq!(
+                    owen_scramble(x, seed),
+                    oracle(x, seed),
+                    "x {x:#x} seed {seed}"
+                );
             }
         }
     }
@@ -297,11 +301,24 @@ mod tests {
             let x = if k == 0 { 0 } else { p << (32 - k) };
             ((owen_scramble(x, seed) ^ x) >> (31 - k)) & 1
         };
-        let nodes = [(0u32, 0u32), (1, 0), (1, 1), (2, 1), (2, 3), (5, 1), (31, 1)];
+        let nodes = [
+            (0u32, 0u32),
+            (1, 0),
+            (1, 1),
+            (2, 1),
+            (2, 3),
+            (5, 1),
+            (31, 1),
+        ];
         for (i, &(k1, p1)) in nodes.iter().enumerate() {
             for &(k2, p2) in &nodes[i + 1..] {
-                let agree = (0..4096u32).filter(|&s| coin(s, k1, p1) == coin(s, k2, p2)).count();
-                assert!(agree.abs_diff(2048) < 192, "({k1}, {p1}) vs ({k2}, {p2}): {agree}");
+                let agree = (0..4096u32)
+                    .filter(|&s| coin(s, k1, p1) == coin(s, k2, p2))
+                    .count();
+                assert!(
+                    agree.abs_diff(2048) < 192,
+                    "({k1}, {p1}) vs ({k2}, {p2}): {agree}"
+                );
             }
         }
     }

@@ -922,7 +922,11 @@ fn sampler_pdf_is_zero_off_the_support_on_each_axis() {
         ([f32::NAN, 0.0], 0.0),
         ([0.0, f32::NAN], 0.0),
     ] {
-        assert!((b.pdf(offset) - want).abs() < 1e-6, "{offset:?}: {}", b.pdf(offset));
+        assert!(
+            (b.pdf(offset) - want).abs() < 1e-6,
+            "{offset:?}: {}",
+            b.pdf(offset)
+        );
     }
     #[derive(Debug)]
     struct Zero;

@@ -389,13 +389,41 @@ pub(crate) fn camera_sample_by_parts<S: Sampler + ?Sized>(
     }
 }
 
-/// `pixel + offset` in `f32`, kept inside the pixel: below `pixel + 1` unless `f32` cannot
-/// represent a value between (huge coordinates), then `pixel` itself.
+/// The film coordinate of a sample at `offset ∈ [0, 1)` inside pixel `pixel` along one axis:
+/// `pixel + offset` rounded to `f32`, kept inside the pixel, as
+/// [`Sampler::camera_sample`] computes `p_film`.
+///
+/// Above 1 the `f32` spacing is coarser than the offsets, so a sum can round up onto the next
+/// pixel's edge `pixel + 1` (at pixel 105, an offset of `1 − 2⁻²⁴` does); the result is then
+/// the largest `f32` below that edge, still inside the pixel and at the far end of it, where
+/// the offset put the sample. Where `f32` has no value between `pixel` and `pixel + 1` (pixels
+/// from 2²⁴ on) it is the pixel's own coordinate. Total (no panic for any input); no allocation.
+///
+/// ```
+/// use nyquist::sampler::film_coordinate;
+/// assert_eq!(film_coordinate(3, 0.25), 3.25);
+/// let last = 1.0 - f32::EPSILON / 2.0; // the largest offset below 1
+/// assert_eq!(film_coordinate(105, last), 106.0f32.next_down()); // not 106, not 105
+/// assert_eq!(film_coordinate(1 << 24, 0.75), 16_777_216.0);
+/// ```
 #[inline]
-pub(crate) fn film(pixel: u32, offset: f32) -> f32 {
+pub fn film_coordinate(pixel: u32, offset: f32) -> f32 {
     let base = pixel as f32;
     let x = base + offset;
-    if x < base + 1.0 { x } else { base }
+    let edge = base + 1.0;
+    if x < edge {
+        x
+    } else {
+        // The sum rounded up onto the next pixel's edge.
+        let below = edge.next_down();
+        if below >= base { below } else { base }
+    }
+}
+
+/// [`film_coordinate`], under the short name the samplers use.
+#[inline(always)]
+pub(crate) fn film(pixel: u32, offset: f32) -> f32 {
+    film_coordinate(pixel, offset)
 }
 
 /// The first checks of the samplers over a whole image (halton, hammersley, sobol, zsobol):

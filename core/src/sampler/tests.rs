@@ -390,3 +390,62 @@ pub(crate) fn arrays_are_values_in_order<S: Sampler + Clone>(s0: &S) {
         }
     }
 }
+
+/// `p_film` stays in its pixel and keeps the sample where its offset put it: the nearest `f32`
+/// to `pixel + offset`, except where that rounds onto the next pixel's edge, which gives the
+/// largest `f32` below the edge (so a sample at the far end of a pixel is not moved to its
+/// near corner). Checked at every pixel below 2¹⁰, at powers of two and beside them up to
+/// 2²⁴, for offsets near 0, ½ and 1.
+#[test]
+fn film_coordinates_stay_in_the_pixel_at_the_offset() {
+    let last = 1.0 - f32::EPSILON / 2.0;
+    let offsets = [
+        0.0,
+        1e-7,
+        0.25,
+        0.5,
+        0.75,
+        1.0 - 1e-6,
+        last.next_down(),
+        last,
+    ];
+    let mut pixels: Vec<u32> = (0..1024).collect();
+    for k in 10..=24 {
+        pixels.extend([(1 << k) - 1, 1 << k, (1 << k) + 1]);
+    }
+    for &p in &pixels {
+        for &o in &offsets {
+            let y = film_coordinate(p, o);
+            let (lo, hi) = (f64::from(p), f64::from(p) + 1.0);
+            if p < 1 << 24 {
+                assert!(
+                    lo <= f64::from(y) && f64::from(y) < hi,
+                    "pixel {p}, offset {o}: {y}"
+                );
+                // Within one f32 step of the exact sum (half a step when no edge was hit).
+                let step = f64::from((p as f32 + 1.0).next_up() - (p as f32 + 1.0));
+                assert!(
+                    (f64::from(y) - (lo + f64::from(o))).abs() <= step,
+                    "{p} {o}: {y}"
+                );
+            } else {
+                assert_eq!(y, p as f32, "pixel {p} has no f32 inside it but its own");
+            }
+        }
+    }
+    // The case that moved a sample across its pixel: 105 + (1 − 2⁻²⁴) rounds to 106.
+    assert_eq!(film_coordinate(105, last), 106.0f32.next_down());
+}
+
+/// Through a sampler, the case that found it: a Halton sampler with permuted digits (1024²
+/// image, 16 spp, seed 1) draws the offset 1 − 2⁻²⁴ for pixel (105, 51)'s sample 0, whose
+/// film coordinate rounded to 106 and was moved to 105.0, the wrong end of the pixel.
+#[test]
+fn a_far_end_offset_stays_at_the_far_end_of_its_pixel() {
+    let mut s = HaltonSampler::new([1024; 2], 16, HaltonScramble::PermuteDigits, 1).unwrap();
+    s.start_pixel_sample([105, 51], 0, 0);
+    let offset = s.get_pixel_2d();
+    let c = s.camera_sample([105, 51], 0);
+    assert_eq!(c.p_film[0], film_coordinate(105, offset[0]));
+    assert!(c.p_film[0] > 105.99, "{c:?} from offset {offset:?}");
+}

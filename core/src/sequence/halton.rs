@@ -491,7 +491,10 @@ mod tests {
                 i /= b;
             }
             // Base 2 needs the most digits: 2⁻⁸⁰ is far below f64's resolution near any value.
-            digits.iter().rev().fold(0.0, |tail, &a| (a as f64 + tail) / b as f64)
+            digits
+                .iter()
+                .rev()
+                .fold(0.0, |tail, &a| (a as f64 + tail) / b as f64)
         }
         let z = HaltonZaremba::new(7).unwrap();
         for i in [0u64, 1, 2, 5, 1000, 123_456_789, 1 << 40] {
@@ -499,8 +502,14 @@ mod tests {
                 let want = folded(crate::radical::prime(d).into(), i);
                 for dim in [d, d + 7, d + 700] {
                     let (x, y) = (z.sample_f64(i, dim), z.sample(i, dim));
-                    assert!((x - want).abs() < 1e-15, "i = {i}, dim {dim}: {x} vs {want}");
-                    assert!((f64::from(y) - want).abs() < 1.2e-7, "i = {i}, dim {dim}: {y}");
+                    assert!(
+                        (x - want).abs() < 1e-15,
+                        "i = {i}, dim {dim}: {x} vs {want}"
+                    );
+                    assert!(
+                        (f64::from(y) - want).abs() < 1.2e-7,
+                        "i = {i}, dim {dim}: {y}"
+                    );
                 }
             }
         }

@@ -490,7 +490,10 @@ mod tests {
         for index in [0u32, 1, 77, 0x8000_0001, u32::MAX] {
             for (first, len) in [(0usize, 16usize), (5, 3), (FAST_DIMS - 16, 16), (10, 0)] {
                 let mut out = [f32::NAN; 16];
-                assert_eq!(sobol_run_f32(index, first, &shifts, &mut out[..len]), Some(()));
+                assert_eq!(
+                    sobol_run_f32(index, first, &shifts, &mut out[..len]),
+                    Some(())
+                );
                 for k in 0..len {
                     let v = sobol_u32(index, (first + k) as u32) ^ shifts[k];
                     assert_eq!(out[k], (v >> 8) as f32 / 16_777_216.0, "dim {}", first + k);
