@@ -1,0 +1,97 @@
+//! Checks run on every contender's output before it is timed, so that a broken shim is reported
+//! instead of measured.
+
+/// Every value in `[0, 1)`.
+pub fn unit_range(what: &str, v: &[f32]) -> Result<(), String> {
+    match v.iter().position(|x| !(0.0..1.0).contains(x)) {
+        None => Ok(()),
+        Some(i) => Err(format!("{what}: value {i} = {} is outside [0, 1)", v[i])),
+    }
+}
+
+/// `n` values (a stride apart, from `first`) fall one into each of `n` equal intervals: what
+/// the first `n` points of a (0, 2)-sequence or of a scrambled Sobol dimension do.
+pub fn stratified(
+    what: &str,
+    v: &[f32],
+    first: usize,
+    stride: usize,
+    n: usize,
+) -> Result<(), String> {
+    let mut seen = vec![false; n];
+    for k in 0..n {
+        let x = v[first + k * stride];
+        let bin = ((x.fract() * n as f32) as usize).min(n - 1);
+        if std::mem::replace(&mut seen[bin], true) {
+            return Err(format!(
+                "{what}: {n} values are not stratified (two in interval {bin})"
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The mean of the values a stride apart from `first` is within `tol` of `mean`.
+pub fn mean(
+    what: &str,
+    v: &[f32],
+    first: usize,
+    stride: usize,
+    want: f64,
+    tol: f64,
+) -> Result<(), String> {
+    let picked: Vec<f64> = v
+        .iter()
+        .skip(first)
+        .step_by(stride)
+        .map(|&x| x as f64)
+        .collect();
+    let m = picked.iter().sum::<f64>() / picked.len() as f64;
+    if (m - want).abs() <= tol {
+        Ok(())
+    } else {
+        Err(format!("{what}: mean {m:.4}, expected {want} ± {tol}"))
+    }
+}
+
+/// Camera samples, 5 floats each (film x, film y, time, lens u, lens v), of `px × px` pixels
+/// from `origin` at `spp` samples each, pixel-major: every film position inside its pixel, the
+/// other values in `[0, 1)`, each dimension's mean near ½, and, when `stratified_dims` says so,
+/// each pixel's film x (and y) stratified over its `spp` samples.
+pub fn camera(
+    what: &str,
+    v: &[f32],
+    origin: [u32; 2],
+    px: u32,
+    spp: u32,
+    stratified_dims: usize,
+) -> Result<(), String> {
+    let per_pixel = 5 * spp as usize;
+    for (k, pixel) in v.chunks_exact(per_pixel).enumerate() {
+        let (x, y) = (origin[0] + k as u32 % px, origin[1] + k as u32 / px);
+        for s in pixel.chunks_exact(5) {
+            let (fx, fy) = (s[0] - x as f32, s[1] - y as f32);
+            if !(0.0..1.0).contains(&fx) || !(0.0..1.0).contains(&fy) {
+                return Err(format!(
+                    "{what}: film position ({}, {}) outside pixel ({x}, {y})",
+                    s[0], s[1]
+                ));
+            }
+            unit_range(what, &s[2..])?;
+        }
+        for d in 0..stratified_dims {
+            stratified(
+                &format!("{what}, pixel ({x}, {y}), film dim {d}"),
+                pixel,
+                d,
+                5,
+                spp as usize,
+            )?;
+        }
+    }
+    let fract: Vec<f32> = v.iter().map(|x| x.fract()).collect();
+    for d in 0..5 {
+        mean(&format!("{what}, dim {d}"), &fract, d, 5, 0.5, 0.05)?;
+    }
+    Ok(())
+}
