@@ -41,9 +41,79 @@ fn main() {
             .compile("peer_openqmc");
         built.push("peer_openqmc");
     }
+    if let Some(root) = snapshot("NYQUIST_PBRT_V4", "src/pbrt/samplers.h") {
+        pbrt_v4(&root, &mut built);
+    }
     for cfg in built {
         println!("cargo:rustc-cfg={cfg}");
     }
+}
+
+/// pbrt-v4: the shim, the source files that define what its samplers and Sobol tables call
+/// (samplers.cpp for the `HaltonSampler` constructor, the Sobol and prime tables, the digit
+/// permutations, checks, logging and printing), with the definitions pbrt-v4's CMake build sets
+/// on Linux. `samplers.cpp` includes media.h, which needs NanoVDB's headers, and print.cpp
+/// needs double-conversion: both from the snapshot's `src/ext` submodules when they are
+/// checked out, otherwise from the system (Debian: libnanovdb-dev, libdouble-conversion-dev).
+/// PMJ02BNSampler needs `src/pbrt/util/pmj02tables.cpp`; without it that row is skipped.
+fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
+    let src = root.join("src");
+    let mut b = cxx();
+    b.include(&src).include(src.join("ext"));
+    let nanovdb = src.join("ext/openvdb/nanovdb");
+    if nanovdb.join("nanovdb/NanoVDB.h").is_file() {
+        b.include(nanovdb);
+    }
+    for d in [
+        "PBRT_IS_LINUX",
+        "PBRT_HAVE_MMAP",
+        "PBRT_HAVE_POSIX_MEMALIGN",
+        "PBRT_NOINLINE=__attribute__((noinline))",
+        "PBRT_RESTRICT=__restrict__",
+    ] {
+        match d.split_once('=') {
+            Some((k, v)) => b.define(k, v),
+            None => b.define(d, None),
+        };
+    }
+    b.file("shims/pbrt_v4.cpp");
+    for f in [
+        "samplers.cpp",
+        "util/lowdiscrepancy.cpp",
+        "util/sobolmatrices.cpp",
+        "util/primes.cpp",
+        "util/check.cpp",
+        "util/error.cpp",
+        "util/log.cpp",
+        "util/print.cpp",
+        "util/pstd.cpp",
+    ] {
+        b.file(src.join("pbrt").join(f));
+    }
+    let pmj = src.join("pbrt/util/pmj02tables.cpp");
+    if pmj.is_file() {
+        b.file(pmj).define("PEER_PBRT_V4_PMJ02BN", None);
+        built.push("peer_pbrt_v4_pmj02bn");
+    } else {
+        println!(
+            "cargo:warning=pbrt-v4: {} is missing; its PMJ02BNSampler row is skipped",
+            pmj.display()
+        );
+    }
+    let dc = src.join("ext/double-conversion");
+    if dc.join("double-conversion/double-conversion.h").is_file() {
+        b.include(&dc);
+        for f in std::fs::read_dir(dc.join("double-conversion")).unwrap() {
+            let f = f.unwrap().path();
+            if f.extension().is_some_and(|e| e == "cc") {
+                b.file(f);
+            }
+        }
+    } else {
+        println!("cargo:rustc-link-lib=double-conversion");
+    }
+    b.compile("peer_pbrt_v4");
+    built.push("peer_pbrt_v4");
 }
 
 /// A C++ build with the peers' flags (the `cc` crate's own optimisation flags replaced).

@@ -10,7 +10,10 @@ pub fn unit_range(what: &str, v: &[f32]) -> Result<(), String> {
 }
 
 /// `n` values (a stride apart, from `first`) fall one into each of `n` equal intervals: what
-/// the first `n` points of a (0, 2)-sequence or of a scrambled Sobol dimension do.
+/// the first `n` points of a (0, 2)-sequence or of a scrambled Sobol dimension do. A value within
+/// 2⁻¹⁶ above an interval's lower edge may count in the interval below (at 0: the last one):
+/// film positions are `pixel + u` in `f32`, whose rounding can carry `u` onto the next interval,
+/// and a digit scramble can send a value just below 1 to 1, which a sampler may wrap to 0.
 pub fn stratified(
     what: &str,
     v: &[f32],
@@ -18,14 +21,30 @@ pub fn stratified(
     stride: usize,
     n: usize,
 ) -> Result<(), String> {
+    const EDGE: f32 = 1.0 / 65536.0;
     let mut seen = vec![false; n];
+    let mut near_edge = Vec::new();
     for k in 0..n {
-        let x = v[first + k * stride];
-        let bin = ((x.fract() * n as f32) as usize).min(n - 1);
-        if std::mem::replace(&mut seen[bin], true) {
+        let x = v[first + k * stride].fract() * n as f32;
+        let bin = (x as usize).min(n - 1);
+        let lower = x - (bin as f32) < EDGE * n as f32;
+        if lower {
+            near_edge.push(bin);
+        } else if std::mem::replace(&mut seen[bin], true) {
             return Err(format!(
                 "{what}: {n} values are not stratified (two in interval {bin})"
             ));
+        }
+    }
+    for bin in near_edge {
+        let free = [bin, (bin + n - 1) % n].into_iter().find(|&b| !seen[b]);
+        match free {
+            Some(b) => seen[b] = true,
+            None => {
+                return Err(format!(
+                    "{what}: {n} values are not stratified (two in interval {bin})"
+                ));
+            }
         }
     }
     Ok(())
@@ -94,4 +113,19 @@ pub fn camera(
         mean(&format!("{what}, dim {d}"), &fract, d, 5, 0.5, 0.05)?;
     }
     Ok(())
+}
+
+/// `a` and `b` hold the same values to within `tol` (absolute), index by index.
+#[cfg_attr(not(any(peer_pbrt_v4, peer_pbrt_v3)), allow(dead_code))]
+pub fn close(what: &str, a: &[f32], b: &[f32], tol: f32) -> Result<(), String> {
+    if a.len() != b.len() {
+        return Err(format!("{what}: {} values against {}", a.len(), b.len()));
+    }
+    match (0..a.len()).find(|&i| !((a[i] - b[i]).abs() <= tol)) {
+        None => Ok(()),
+        Some(i) => Err(format!(
+            "{what}: value {i} is {} here, {} in nyquist (tolerance {tol})",
+            b[i], a[i]
+        )),
+    }
 }

@@ -8,8 +8,9 @@
 use crate::check;
 use crate::harness::{Entry, Job, Workload};
 use nyquist::hash::mix32;
-use nyquist::sampler::{Pmj02Sampler, camera_sample};
-use nyquist::sequence::{OwenSobol, Pmj02, Sequence};
+use nyquist::sampler::{HaltonSampler, HaltonScramble, Pmj02Sampler, ZSobolSampler, camera_sample};
+use nyquist::scramble::Scramble;
+use nyquist::sequence::{OwenSobol, Pmj02, Sequence, Sobol};
 use std::hint::black_box;
 
 /// Builds a workload (and runs its checks).
@@ -17,10 +18,14 @@ pub type Make = fn() -> Workload<'static>;
 
 /// Every workload by name, in the order of the table.
 pub const ALL: &[(&str, Make)] = &[
+    ("halton camera sample", halton_camera),
     ("pmj02 camera sample", pmj02_camera),
     ("pmj02 scrambled sample_2d", pmj02_sample_2d),
     ("owen-sobol sample_4d", owen_sobol_4d),
     ("owen-sobol sample", owen_sobol_sample),
+    ("sobol by index, coherent", sobol_coherent),
+    ("sobol by index, incoherent", sobol_incoherent),
+    ("zsobol camera sample", zsobol_camera),
 ];
 
 /// Camera-sample workloads: 8 × 8 pixels from (100, 50), 16 samples each.
@@ -88,6 +93,18 @@ fn pmj02_camera() -> Workload<'static> {
     }
     #[cfg(not(peer_openqmc))]
     peers.push(unbuilt("OpenQMC `PmjSampler`", "NYQUIST_OPENQMC"));
+    const PMJ02BN: &str = "pbrt-v4 `PMJ02BNSampler`";
+    #[cfg(peer_pbrt_v4_pmj02bn)]
+    peers.push(pbrt_v4_camera(PMJ02BN, 2, || {
+        crate::pbrt_v4::Sampler::pmj02bn(SPP, 1)
+    }));
+    #[cfg(all(peer_pbrt_v4, not(peer_pbrt_v4_pmj02bn)))]
+    peers.push(Entry::skipped(
+        PMJ02BN,
+        "not built (the snapshot lacks src/pbrt/util/pmj02tables.cpp)",
+    ));
+    #[cfg(not(peer_pbrt_v4))]
+    peers.push(unbuilt(PMJ02BN, "NYQUIST_PBRT_V4"));
     Workload {
         name: "`Pmj02Sampler` camera sample, 8 × 8 px × 16 spp".into(),
         elements: (PIXELS * PIXELS * SPP) as u64,
@@ -267,4 +284,136 @@ fn owen_sobol_sample() -> Workload<'static> {
         nyquist: job(SOBOL_LEN, fill),
         peers,
     }
+}
+
+/// A pbrt-v4 sampler's camera-sample entry, checked like nyquist's (`stratified_dims` film
+/// dimensions stratified over each pixel's samples).
+#[cfg(peer_pbrt_v4)]
+fn pbrt_v4_camera(
+    peer: &str,
+    stratified_dims: usize,
+    make: impl Fn() -> crate::pbrt_v4::Sampler,
+) -> Entry<'static> {
+    let mut s = make();
+    let theirs = once(CAMERA_LEN, |out| s.camera(ORIGIN, PIXELS, SPP, out));
+    let ok = check::camera(peer, &theirs, ORIGIN, PIXELS, SPP, stratified_dims);
+    Entry::checked(
+        peer,
+        ok,
+        job(CAMERA_LEN, move |out| s.camera(ORIGIN, PIXELS, SPP, out)),
+    )
+}
+
+/// Image resolution of the whole-image samplers (Halton, ZSobol).
+const RESOLUTION: u32 = 1024;
+
+/// A camera-sample workload of nyquist's sampler `s`, checked (`stratified_dims` film
+/// dimensions stratified over each pixel's samples), beside `peers`.
+fn camera_workload<S: nyquist::sampler::Sampler + 'static>(
+    name: &str,
+    stratified_dims: usize,
+    mut s: S,
+    peers: Vec<Entry<'static>>,
+) -> Workload<'static> {
+    let v = once(CAMERA_LEN, |out| camera_fill(&mut s, out));
+    check::camera("nyquist", &v, ORIGIN, PIXELS, SPP, stratified_dims)
+        .expect("nyquist's own check");
+    Workload {
+        name: name.into(),
+        elements: (PIXELS * PIXELS * SPP) as u64,
+        unit: "sample",
+        nyquist: job(CAMERA_LEN, move |out| camera_fill(&mut s, out)),
+        peers,
+    }
+}
+
+/// pbrt-v4's `GetPixel2D` returns unscrambled radical inverses and scrambles the other
+/// dimensions; nyquist scrambles all five.
+fn halton_camera() -> Workload<'static> {
+    const PEER: &str = "pbrt-v4 `HaltonSampler` (`PermuteDigits`)";
+    #[cfg(peer_pbrt_v4)]
+    let peer = pbrt_v4_camera(PEER, 1, || {
+        crate::pbrt_v4::Sampler::halton(SPP, RESOLUTION, 1)
+    });
+    #[cfg(not(peer_pbrt_v4))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V4");
+    let ours = HaltonSampler::new([RESOLUTION; 2], SPP, HaltonScramble::PermuteDigits, 1);
+    camera_workload(
+        "`HaltonSampler` (`PermuteDigits`) camera sample, 8 × 8 px × 16 spp, 1024² image",
+        1,
+        ours.unwrap(),
+        vec![peer],
+    )
+}
+
+fn zsobol_camera() -> Workload<'static> {
+    const PEER: &str = "pbrt-v4 `ZSobolSampler` (`FastOwen`)";
+    #[cfg(peer_pbrt_v4)]
+    let peer = pbrt_v4_camera(PEER, 2, || {
+        crate::pbrt_v4::Sampler::zsobol(SPP, RESOLUTION, 1)
+    });
+    #[cfg(not(peer_pbrt_v4))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V4");
+    let ours = ZSobolSampler::new([RESOLUTION; 2], SPP, Scramble::FastOwen, 1);
+    camera_workload(
+        "`ZSobolSampler` (`FastOwen`) camera sample, 8 × 8 px × 16 spp, 1024² image",
+        2,
+        ours.unwrap(),
+        vec![peer],
+    )
+}
+
+/// Sobol by index, unscrambled, dimensions 0..64 of each index: nyquist's `Sequence::sample`
+/// and pbrt-v4's `SobolSample` with `NoRandomizer` compute the same 32-bit values; their
+/// conversions to `f32` round differently, so the floats may differ by one unit in the last
+/// place (2⁻²⁴ below ½, 2⁻²⁵ … 2⁻²³ above).
+fn sobol_by_index(name: &str, index: Vec<u32>) -> Workload<'static> {
+    let len = index.len() * DIMS as usize;
+    let sobol = Sobol::new(DIMS).unwrap();
+    let fill = move |index: &[u32], out: &mut [f32]| {
+        let mut o = out.iter_mut();
+        for &i in index {
+            for d in 0..DIMS {
+                *o.next().unwrap() = sobol.sample(u64::from(i), d);
+            }
+        }
+    };
+    #[allow(unused_variables)]
+    let ours = once(len, |o| fill(&index, o));
+    const PEER: &str = "pbrt-v4 `SobolSample` (`NoRandomizer`)";
+    #[cfg(peer_pbrt_v4)]
+    let peer = {
+        let idx = index.clone();
+        let theirs = once(len, |o| crate::pbrt_v4::sobol(&idx, DIMS, o));
+        Entry::checked(
+            PEER,
+            check::close(PEER, &ours, &theirs, 1.0 / 8_388_608.0),
+            job(len, move |o| {
+                crate::pbrt_v4::sobol(black_box(&idx), DIMS, o)
+            }),
+        )
+    };
+    #[cfg(not(peer_pbrt_v4))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V4");
+    Workload {
+        name: name.into(),
+        elements: len as u64,
+        unit: "value",
+        nyquist: job(len, move |o| fill(black_box(&index), o)),
+        peers: vec![peer],
+    }
+}
+
+fn sobol_coherent() -> Workload<'static> {
+    sobol_by_index(
+        "Sobol by index, indices 0..1024 × 64 dims",
+        (0..1024).collect(),
+    )
+}
+
+fn sobol_incoherent() -> Workload<'static> {
+    sobol_by_index(
+        "Sobol by index, 1024 hashed 32-bit indices × 64 dims",
+        (0..1024u32).map(|i| mix32(i ^ 0x2545_f491)).collect(),
+    )
 }
