@@ -55,7 +55,8 @@ fn main() {
 /// on Linux. `samplers.cpp` includes media.h, which needs NanoVDB's headers, and print.cpp
 /// needs double-conversion: both from the snapshot's `src/ext` submodules when they are
 /// checked out, otherwise from the system (Debian: libnanovdb-dev, libdouble-conversion-dev).
-/// PMJ02BNSampler needs `src/pbrt/util/pmj02tables.cpp`; without it that row is skipped.
+/// PMJ02BNSampler needs `src/pbrt/util/pmj02tables.cpp` and `bluenoise.cpp` (its tables); without
+/// them that row is skipped.
 fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
     let src = root.join("src");
     let mut b = cxx();
@@ -90,15 +91,15 @@ fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
     ] {
         b.file(src.join("pbrt").join(f));
     }
-    let pmj = src.join("pbrt/util/pmj02tables.cpp");
-    if pmj.is_file() {
-        b.file(pmj).define("PEER_PBRT_V4_PMJ02BN", None);
-        built.push("peer_pbrt_v4_pmj02bn");
-    } else {
+    let tables = ["util/pmj02tables.cpp", "util/bluenoise.cpp"].map(|f| src.join("pbrt").join(f));
+    if let Some(missing) = tables.iter().find(|f| !f.is_file()) {
         println!(
             "cargo:warning=pbrt-v4: {} is missing; its PMJ02BNSampler row is skipped",
-            pmj.display()
+            missing.display()
         );
+    } else {
+        b.files(&tables).define("PEER_PBRT_V4_PMJ02BN", None);
+        built.push("peer_pbrt_v4_pmj02bn");
     }
     let dc = src.join("ext/double-conversion");
     if dc.join("double-conversion/double-conversion.h").is_file() {

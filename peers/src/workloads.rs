@@ -101,7 +101,7 @@ fn pmj02_camera() -> Workload<'static> {
     #[cfg(all(peer_pbrt_v4, not(peer_pbrt_v4_pmj02bn)))]
     peers.push(Entry::skipped(
         PMJ02BN,
-        "not built (the snapshot lacks src/pbrt/util/pmj02tables.cpp)",
+        "not built (the snapshot lacks src/pbrt/util/pmj02tables.cpp or bluenoise.cpp)",
     ));
     #[cfg(not(peer_pbrt_v4))]
     peers.push(unbuilt(PMJ02BN, "NYQUIST_PBRT_V4"));
