@@ -44,6 +44,9 @@ fn main() {
     if let Some(root) = snapshot("NYQUIST_PBRT_V4", "src/pbrt/samplers.h") {
         pbrt_v4(&root, &mut built);
     }
+    if let Some(root) = snapshot("NYQUIST_PBRT_V3", "src/core/film.h") {
+        pbrt_v3(&root, &mut built);
+    }
     for cfg in built {
         println!("cargo:rustc-cfg={cfg}");
     }
@@ -72,10 +75,7 @@ fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
         "PBRT_NOINLINE=__attribute__((noinline))",
         "PBRT_RESTRICT=__restrict__",
     ] {
-        match d.split_once('=') {
-            Some((k, v)) => b.define(k, v),
-            None => b.define(d, None),
-        };
+        define(&mut b, d);
     }
     b.file("shims/pbrt_v4.cpp");
     for f in [
@@ -115,6 +115,60 @@ fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
     }
     b.compile("peer_pbrt_v4");
     built.push("peer_pbrt_v4");
+}
+
+/// pbrt-v3: the shim and the source files of the film, the filters and what they call, with
+/// the definitions pbrt-v3's CMake build sets for GCC on Linux. pbrt-v3 includes
+/// `<glog/logging.h>`; `shims/glog-stub` stands in for it (CHECKs abort, DCHECKs compile out
+/// under NDEBUG as in glog, logging is discarded).
+fn pbrt_v3(root: &Path, built: &mut Vec<&str>) {
+    let src = root.join("src");
+    let mut b = cxx();
+    b.include("shims/glog-stub")
+        .include(&src)
+        .include(src.join("core"));
+    for d in [
+        "PBRT_HAVE_ALLOCA_H",
+        "PBRT_HAVE_MEMORY_H",
+        "PBRT_HAVE_HEX_FP_CONSTANTS",
+        "PBRT_HAVE_BINARY_CONSTANTS",
+        "PBRT_HAVE_CONSTEXPR",
+        "PBRT_CONSTEXPR=constexpr",
+        "PBRT_HAVE_ALIGNAS",
+        "PBRT_HAVE_ALIGNOF",
+        "PBRT_HAVE_ITIMER",
+        "PBRT_HAVE_NONPOD_IN_UNIONS",
+        "PBRT_HAVE_MMAP",
+        "PBRT_HAVE_POSIX_MEMALIGN",
+        "PBRT_THREAD_LOCAL=thread_local",
+        "PBRT_NOINLINE=__attribute__((noinline))",
+    ] {
+        define(&mut b, d);
+    }
+    b.file("shims/pbrt_v3.cpp");
+    for f in [
+        "core/film.cpp",
+        "core/filter.cpp",
+        "core/stats.cpp",
+        "core/spectrum.cpp",
+        "core/error.cpp",
+        "core/parallel.cpp",
+        "filters/mitchell.cpp",
+        "filters/box.cpp",
+        "filters/sinc.cpp",
+    ] {
+        b.file(src.join(f));
+    }
+    b.compile("peer_pbrt_v3");
+    built.push("peer_pbrt_v3");
+}
+
+/// Adds `NAME` or `NAME=VALUE` to the build's definitions.
+fn define(b: &mut cc::Build, d: &str) {
+    match d.split_once('=') {
+        Some((k, v)) => b.define(k, v),
+        None => b.define(d, None),
+    };
 }
 
 /// A C++ build with the peers' flags (the `cc` crate's own optimisation flags replaced).

@@ -115,8 +115,7 @@ pub fn camera(
     Ok(())
 }
 
-/// `a` and `b` hold the same values to within `tol` (absolute), index by index.
-#[cfg_attr(not(any(peer_pbrt_v4, peer_pbrt_v3)), allow(dead_code))]
+/// `b` holds the values of `a` (the expected ones) to within `tol` (absolute), index by index.
 pub fn close(what: &str, a: &[f32], b: &[f32], tol: f32) -> Result<(), String> {
     if a.len() != b.len() {
         return Err(format!("{what}: {} values against {}", a.len(), b.len()));
@@ -124,7 +123,7 @@ pub fn close(what: &str, a: &[f32], b: &[f32], tol: f32) -> Result<(), String> {
     match (0..a.len()).find(|&i| !((a[i] - b[i]).abs() <= tol)) {
         None => Ok(()),
         Some(i) => Err(format!(
-            "{what}: value {i} is {} here, {} in nyquist (tolerance {tol})",
+            "{what}: value {i} is {}, expected {} (tolerance {tol})",
             b[i], a[i]
         )),
     }

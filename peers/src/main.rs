@@ -9,6 +9,8 @@ mod check;
 mod harness;
 #[cfg(peer_openqmc)]
 mod openqmc;
+#[cfg(peer_pbrt_v3)]
+mod pbrt_v3;
 #[cfg(peer_pbrt_v4)]
 mod pbrt_v4;
 mod workloads;

@@ -7,10 +7,13 @@
 
 use crate::check;
 use crate::harness::{Entry, Job, Workload};
+use nyquist::filter::{Boxcar, Filter, FilterTable, Interpolation, Lanczos, Mitchell};
 use nyquist::hash::mix32;
 use nyquist::sampler::{HaltonSampler, HaltonScramble, Pmj02Sampler, ZSobolSampler, camera_sample};
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Pmj02, Sequence, Sobol};
+use nyquist::stratify::shuffle;
+use nyquist_film::{Film, FilmConfig, FilmTile};
 use std::hint::black_box;
 
 /// Builds a workload (and runs its checks).
@@ -18,6 +21,11 @@ pub type Make = fn() -> Workload<'static>;
 
 /// Every workload by name, in the order of the table.
 pub const ALL: &[(&str, Make)] = &[
+    ("film mitchell", film_mitchell),
+    ("film box", film_box),
+    ("shuffle", shuffle_1024),
+    ("lanczos direct", lanczos_direct),
+    ("filter table nearest", table_nearest),
     ("halton camera sample", halton_camera),
     ("pmj02 camera sample", pmj02_camera),
     ("pmj02 scrambled sample_2d", pmj02_sample_2d),
@@ -416,4 +424,329 @@ fn sobol_incoherent() -> Workload<'static> {
         "Sobol by index, 1024 hashed 32-bit indices × 64 dims",
         (0..1024u32).map(|i| mix32(i ^ 0x2545_f491)).collect(),
     )
+}
+
+/// Film workloads: 4096 samples over a 64 × 64 film, each with its own radiance.
+const FILM: u32 = 64;
+const FILM_SAMPLES: usize = 4096;
+
+fn film_samples() -> (Vec<[f32; 2]>, Vec<[f32; 3]>) {
+    let mut rng = nyquist::rng::default_rng(1);
+    let p = (0..FILM_SAMPLES)
+        .map(|_| [(); 2].map(|_| FILM as f32 * nyquist::rng::uniform_f32(&mut rng)))
+        .collect();
+    let mut rng = nyquist::rng::default_rng(2);
+    let l = (0..FILM_SAMPLES)
+        .map(|_| [(); 3].map(|_| nyquist::rng::uniform_f32(&mut rng)))
+        .collect();
+    (p, l)
+}
+
+/// nyquist's film and a tile over all of it.
+fn film_tile(filter: &dyn nyquist::filter::Filter) -> (Film, FilmTile) {
+    let film = Film::new(FilmConfig::new(FILM, FILM), filter).unwrap();
+    let spec = film.tiles(FILM).unwrap()[0];
+    let tile = film.tile(spec);
+    (film, tile)
+}
+
+/// Each pixel's filter weight sum and weighted mean radiance, as nyquist's film holds them
+/// after one pass over the samples.
+#[cfg(peer_pbrt_v3)]
+fn film_pixels(
+    filter: &dyn nyquist::filter::Filter,
+    p: &[[f32; 2]],
+    l: &[[f32; 3]],
+) -> Vec<[f64; 2]> {
+    let (mut film, mut tile) = film_tile(filter);
+    for (&p, &l) in p.iter().zip(l) {
+        tile.add_sample(p, l, 1.0);
+    }
+    film.merge(tile).unwrap();
+    (0..FILM * FILM)
+        .map(|k| {
+            let px = film
+                .pixel(i64::from(k % FILM), i64::from(k / FILM))
+                .unwrap();
+            [px.weight_sum, px.rgb_sum[0]]
+        })
+        .collect()
+}
+
+/// pbrt-v3's tile against nyquist's film after one pass over the same samples: the total filter
+/// weight within 0.1 %, and the largest and the mean difference of the pixels' filter weight
+/// sums and red sums within `tol`. The filter tables differ: pbrt-v3's has 16 × 16 cells over a
+/// quadrant of the support, read at the nearest cell, so with Mitchell its pixel sums are up to
+/// about 0.22 and on average about 0.03 from nyquist's, whose table is within 10⁻³ of direct
+/// evaluation; a film position off by half a pixel would be several times that.
+#[cfg(peer_pbrt_v3)]
+fn film_check(
+    ours: &[[f64; 2]],
+    theirs: &crate::pbrt_v3::Tile,
+    tol: FilmTolerance,
+) -> Result<(), String> {
+    let (mut worst, mut mean) = (0.0f64, 0.0f64);
+    for (k, &[w, r]) in ours.iter().enumerate() {
+        let (x, y) = (k as u32 % FILM, k as u32 / FILM);
+        let [tr, _, _, tw] = theirs.pixel(x, y).map(f64::from);
+        for d in [(w - tw).abs(), (r - tr).abs()] {
+            worst = worst.max(d);
+            mean += d / (2 * ours.len()) as f64;
+        }
+    }
+    let total: f64 = (0..FILM * FILM)
+        .map(|k| f64::from(theirs.pixel(k % FILM, k / FILM)[3]))
+        .sum();
+    let ours_total: f64 = ours.iter().map(|p| p[0]).sum();
+    if !((total - ours_total).abs() <= 1e-3 * ours_total) {
+        return Err(format!(
+            "total filter weight {total} here, {ours_total} in nyquist"
+        ));
+    }
+    if worst <= tol.max && mean <= tol.mean {
+        Ok(())
+    } else {
+        Err(format!(
+            "pixel sums differ by up to {worst:.3e}, {mean:.3e} on average (tolerances {:.1e}, \
+             {:.1e})",
+            tol.max, tol.mean
+        ))
+    }
+}
+
+/// How far pbrt-v3's pixel sums may be from nyquist's: at most `max`, `mean` on average.
+#[cfg(peer_pbrt_v3)]
+#[derive(Clone, Copy)]
+struct FilmTolerance {
+    max: f64,
+    mean: f64,
+}
+
+static MITCHELL: std::sync::LazyLock<Mitchell> = std::sync::LazyLock::new(Mitchell::default);
+static BOXCAR: std::sync::LazyLock<Boxcar> = std::sync::LazyLock::new(Boxcar::default);
+
+/// The filters of the film workloads.
+#[derive(Clone, Copy)]
+enum FilmFilter {
+    /// Mitchell, r = 2, B = C = ⅓.
+    Mitchell,
+    /// Box, r = ½.
+    Box,
+}
+
+impl FilmFilter {
+    fn nyquist(self) -> &'static dyn Filter {
+        match self {
+            FilmFilter::Mitchell => &*MITCHELL,
+            FilmFilter::Box => &*BOXCAR,
+        }
+    }
+
+    #[cfg(peer_pbrt_v3)]
+    fn pbrt_v3(self) -> crate::pbrt_v3::Filter {
+        match self {
+            FilmFilter::Mitchell => crate::pbrt_v3::Filter::mitchell(2.0, 1.0 / 3.0, 1.0 / 3.0),
+            FilmFilter::Box => crate::pbrt_v3::Filter::boxcar(0.5),
+        }
+    }
+
+    #[cfg(peer_pbrt_v3)]
+    fn tolerance(self) -> FilmTolerance {
+        match self {
+            FilmFilter::Mitchell => FilmTolerance {
+                max: 0.3,
+                mean: 0.05,
+            },
+            // One weight of 1 per sample on both sides: only the sums' rounding differs.
+            FilmFilter::Box => FilmTolerance {
+                max: 1e-5,
+                mean: 1e-6,
+            },
+        }
+    }
+}
+
+fn film_workload(name: &str, filter: FilmFilter) -> Workload<'static> {
+    let (p, l) = film_samples();
+    const PEER: &str = "pbrt-v3 `FilmTile::AddSample`";
+    #[cfg(peer_pbrt_v3)]
+    let peer = {
+        let ours = film_pixels(filter.nyquist(), &p, &l);
+        let mut tile = crate::pbrt_v3::Tile::new(filter.pbrt_v3(), FILM);
+        tile.add(&p, &l);
+        let ok = film_check(&ours, &tile, filter.tolerance());
+        let mut tile = crate::pbrt_v3::Tile::new(filter.pbrt_v3(), FILM);
+        let (p, l) = (p.clone(), l.clone());
+        let job: Job<'static> = Box::new(move || {
+            tile.add(black_box(&p), &l);
+            black_box(&mut tile);
+        });
+        Entry::checked(PEER, ok, job)
+    };
+    #[cfg(not(peer_pbrt_v3))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V3");
+    // One tile, reused across calls (a fresh one each time would time its first-touch page
+    // faults); the tile owns its pixels and filter table, the film is not needed.
+    let (_, mut tile) = film_tile(filter.nyquist());
+    Workload {
+        name: name.into(),
+        elements: FILM_SAMPLES as u64,
+        unit: "sample",
+        nyquist: Box::new(move || {
+            for (&p, &l) in black_box(&p).iter().zip(&l) {
+                tile.add_sample(p, l, 1.0);
+            }
+            black_box(&mut tile);
+        }),
+        peers: vec![peer],
+    }
+}
+
+fn film_mitchell() -> Workload<'static> {
+    film_workload(
+        "film `add_sample`, Mitchell r = 2, 4096 samples on 64 × 64",
+        FilmFilter::Mitchell,
+    )
+}
+
+fn film_box() -> Workload<'static> {
+    film_workload(
+        "film `add_sample`, box r = ½, 4096 samples on 64 × 64",
+        FilmFilter::Box,
+    )
+}
+
+fn shuffle_1024() -> Workload<'static> {
+    const N: usize = 1024;
+    let start: Vec<f32> = (0..N).map(|i| i as f32).collect();
+    let is_permutation = |what: &str, v: &[f32]| {
+        let mut s = v.to_vec();
+        s.sort_by(f32::total_cmp);
+        if s != start || v == start.as_slice() {
+            Err(format!("{what}: not a shuffle of 0..{N}"))
+        } else {
+            Ok(())
+        }
+    };
+    let mut rng = nyquist::rng::default_rng(3);
+    let mut buf = start.clone();
+    shuffle(&mut buf, N, 1, &mut rng).unwrap();
+    is_permutation("nyquist", &buf).expect("nyquist's own check");
+    const PEER: &str = "pbrt-v3 `Shuffle` (its PCG32 `RNG`)";
+    #[cfg(peer_pbrt_v3)]
+    let peer = {
+        let mut rng = crate::pbrt_v3::Rng::new(3);
+        let mut buf = start.clone();
+        rng.shuffle(&mut buf, N, 1);
+        let ok = is_permutation(PEER, &buf);
+        let job: Job<'static> = Box::new(move || {
+            rng.shuffle(&mut buf, black_box(N), 1);
+            black_box(&mut buf);
+        });
+        Entry::checked(PEER, ok, job)
+    };
+    #[cfg(not(peer_pbrt_v3))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V3");
+    Workload {
+        name: "shuffle, 1024 `f32`".into(),
+        elements: N as u64,
+        unit: "element",
+        nyquist: Box::new(move || {
+            shuffle(&mut buf, black_box(N), 1, &mut rng).unwrap();
+            black_box(&mut buf);
+        }),
+        peers: vec![peer],
+    }
+}
+
+/// 1024 filter offsets, uniform over `scale` times the support of radius `r`.
+fn offsets(r: f32, scale: f32) -> Vec<[f32; 2]> {
+    let mut rng = nyquist::rng::default_rng(42);
+    (0..1024)
+        .map(|_| [(); 2].map(|_| (nyquist::rng::uniform_f32(&mut rng) * 2.0 - 1.0) * scale * r))
+        .collect()
+}
+
+fn lanczos_direct() -> Workload<'static> {
+    let f = Lanczos::default();
+    let pts = offsets(4.0, 1.1);
+    let fill = move |pts: &[[f32; 2]], out: &mut [f32]| {
+        for (o, &[x, y]) in out.iter_mut().zip(pts) {
+            *o = f.eval(x, y);
+        }
+    };
+    #[allow(unused_variables)]
+    let ours = once(pts.len(), |o| fill(&pts, o));
+    const PEER: &str = "pbrt-v3 `LanczosSincFilter::Evaluate` (virtual call)";
+    #[cfg(peer_pbrt_v3)]
+    let peer = {
+        let pf = crate::pbrt_v3::Filter::lanczos(4.0, 3.0);
+        let theirs = once(pts.len(), |o| pf.evaluate(&pts, o));
+        let pts = pts.clone();
+        Entry::checked(
+            PEER,
+            check::close(PEER, &ours, &theirs, 1e-5),
+            job(pts.len(), move |o| pf.evaluate(black_box(&pts), o)),
+        )
+    };
+    #[cfg(not(peer_pbrt_v3))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V3");
+    Workload {
+        name: "Lanczos (r = 4, τ = 3) `eval`, direct, 1024 offsets".into(),
+        elements: pts.len() as u64,
+        unit: "weight",
+        nyquist: job(pts.len(), move |o| fill(black_box(&pts), o)),
+        peers: vec![peer],
+    }
+}
+
+fn table_nearest() -> Workload<'static> {
+    let table: FilterTable = FilterTable::new(&*MITCHELL, Interpolation::Nearest).unwrap();
+    // Inside the support: pbrt-v3 reads its table only there.
+    let pts = offsets(2.0, 0.999);
+    let fill = move |pts: &[[f32; 2]], out: &mut [f32]| {
+        for (o, &[x, y]) in out.iter_mut().zip(pts) {
+            *o = table.weight(x, y);
+        }
+    };
+    let ours = once(pts.len(), |o| fill(&pts, o));
+    // Nearest-cell lookups stay within a cell's change of the filter (0.081 at most here).
+    let exact: Vec<f32> = pts.iter().map(|&[x, y]| MITCHELL.eval(x, y)).collect();
+    check::close("nyquist's table", &exact, &ours, 0.12).expect("nyquist's own check");
+    const PEER: &str = "pbrt-v3's 16 × 16 table of its `MitchellFilter`, indexed as `AddSample` \
+                        does (index arithmetic in the shim)";
+    #[cfg(peer_pbrt_v3)]
+    let peer = {
+        let t = crate::pbrt_v3::Table::new(&crate::pbrt_v3::Filter::mitchell(
+            2.0,
+            1.0 / 3.0,
+            1.0 / 3.0,
+        ));
+        let theirs = once(pts.len(), |o| t.lookup(&pts, o));
+        let pts = pts.clone();
+        // Each value is the filter at the centre of the cell the offset falls in, as pbrt-v3
+        // fills its table.
+        let centres: Vec<f32> = pts
+            .iter()
+            .map(|&[x, y]| {
+                let c = |v: f32| ((v.abs() * 8.0).floor().min(15.0) + 0.5) / 8.0;
+                MITCHELL.eval(c(x), c(y))
+            })
+            .collect();
+        let ok = check::close(PEER, &centres, &theirs, 1e-5);
+        Entry::checked(
+            PEER,
+            ok,
+            job(pts.len(), move |o| t.lookup(black_box(&pts), o)),
+        )
+    };
+    #[cfg(not(peer_pbrt_v3))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V3");
+    Workload {
+        name: "Mitchell `FilterTable::weight`, nearest, 1024 offsets in the support".into(),
+        elements: pts.len() as u64,
+        unit: "weight",
+        nyquist: job(pts.len(), move |o| fill(black_box(&pts), o)),
+        peers: vec![peer],
+    }
 }
