@@ -77,6 +77,10 @@ fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
     ] {
         define(&mut b, d);
     }
+    // pbrt-v3 and pbrt-v4 both use the namespace `pbrt`, with different definitions under the
+    // same names (Primes, RadicalInverse, Point2…): each is compiled in its own namespace so
+    // that the linker cannot mix them. (`#include <pbrt/…>` is not macro-expanded.)
+    b.define("pbrt", "pbrt_v4");
     b.file("shims/pbrt_v4.cpp");
     for f in [
         "samplers.cpp",
@@ -117,7 +121,8 @@ fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
     built.push("peer_pbrt_v4");
 }
 
-/// pbrt-v3: the shim and the source files of the film, the filters and what they call, with
+/// pbrt-v3: the shim and the source files of the film, the filters, the radical inverse and
+/// what they call, with
 /// the definitions pbrt-v3's CMake build sets for GCC on Linux. pbrt-v3 includes
 /// `<glog/logging.h>`; `shims/glog-stub` stands in for it (CHECKs abort, DCHECKs compile out
 /// under NDEBUG as in glog, logging is discarded).
@@ -145,10 +150,13 @@ fn pbrt_v3(root: &Path, built: &mut Vec<&str>) {
     ] {
         define(&mut b, d);
     }
+    // Its own namespace, as for pbrt-v4.
+    b.define("pbrt", "pbrt_v3");
     b.file("shims/pbrt_v3.cpp");
     for f in [
         "core/film.cpp",
         "core/filter.cpp",
+        "core/lowdiscrepancy.cpp",
         "core/stats.cpp",
         "core/spectrum.cpp",
         "core/error.cpp",

@@ -1,7 +1,8 @@
 // The pbrt-v3 side of the peer benchmark: extern "C" functions over pbrt-v3's own film tile
 // (core/film.h, core/film.cpp), filters (filters/*.cpp), RNG and Shuffle (core/rng.h,
-// core/sampling.h). Loops write to caller buffers so the Rust side can check the values.
+// core/sampling.h) and radical inverse (core/lowdiscrepancy.cpp). Loops write to caller buffers so the Rust side can check the values.
 #include "film.h"
+#include "lowdiscrepancy.h"
 #include "filters/box.h"
 #include "filters/mitchell.h"
 #include "filters/sinc.h"
@@ -105,6 +106,16 @@ void peer_pbrt_v3_table_lookup(const Table *t, const float *xy, size_t n, float 
         const int ix = std::min(int(std::floor(fx)), 15);
         const int iy = std::min(int(std::floor(fy)), 15);
         out[k] = t->weights[iy * 16 + ix];
+    }
+}
+
+// RadicalInverse(d, a) (core/lowdiscrepancy.cpp: a switch over the bases, each a digit loop
+// with its base a compile-time constant) for every index and d in 0..dims, index-major.
+void peer_pbrt_v3_radical_inverse(const uint64_t *index, size_t n, int dims, float *out) {
+    for (size_t k = 0; k < n; ++k) {
+        for (int d = 0; d < dims; ++d) {
+            *out++ = pbrt::RadicalInverse(d, index[k]);
+        }
     }
 }
 

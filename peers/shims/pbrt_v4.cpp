@@ -71,6 +71,16 @@ void peer_pbrt_v4_sobol(const uint32_t *index, size_t n, int dims, float *out) {
     }
 }
 
+// RadicalInverse(d, a) (util/lowdiscrepancy.h: one digit loop, the base read at run time) for
+// every index and d in 0..dims, index-major.
+void peer_pbrt_v4_radical_inverse(const uint64_t *index, size_t n, int dims, float *out) {
+    for (size_t k = 0; k < n; ++k) {
+        for (int d = 0; d < dims; ++d) {
+            *out++ = pbrt::RadicalInverse(d, index[k]);
+        }
+    }
+}
+
 #ifdef PEER_PBRT_V4_PMJ02BN
 // PMJ02BNSampler (its own seed; needs src/pbrt/util/pmj02tables.cpp).
 void *peer_pbrt_v4_pmj02bn_new(int spp, int seed) {

@@ -1,4 +1,5 @@
-//! pbrt-v3 (its film tile, filters, RNG and `Shuffle`), through `shims/pbrt_v3.cpp`.
+//! pbrt-v3 (its film tile, filters, RNG, `Shuffle` and `RadicalInverse`), through
+//! `shims/pbrt_v3.cpp`.
 
 use std::ffi::c_void;
 
@@ -17,6 +18,7 @@ unsafe extern "C" {
     fn peer_pbrt_v3_table_new(filter: *const c_void) -> *mut c_void;
     fn peer_pbrt_v3_table_free(t: *mut c_void);
     fn peer_pbrt_v3_table_lookup(t: *const c_void, xy: *const f32, n: usize, out: *mut f32);
+    fn peer_pbrt_v3_radical_inverse(index: *const u64, n: usize, dims: i32, out: *mut f32);
     fn peer_pbrt_v3_rng_new(seq: u64) -> *mut c_void;
     fn peer_pbrt_v3_rng_free(rng: *mut c_void);
     fn peer_pbrt_v3_shuffle(rng: *mut c_void, buf: *mut f32, count: i32, dims: i32);
@@ -151,5 +153,14 @@ impl Drop for Rng {
     fn drop(&mut self) {
         // SAFETY: made by `peer_pbrt_v3_rng_new`, freed once.
         unsafe { peer_pbrt_v3_rng_free(self.0) }
+    }
+}
+
+/// `RadicalInverse(d, a)` for every index and `d` in `0..dims`, index-major.
+pub fn radical_inverse(index: &[u64], dims: u32, out: &mut [f32]) {
+    assert_eq!(out.len(), index.len() * dims as usize);
+    // SAFETY: `out` holds `dims` floats per index; pbrt-v3 has 1024 bases.
+    unsafe {
+        peer_pbrt_v3_radical_inverse(index.as_ptr(), index.len(), dims as i32, out.as_mut_ptr())
     }
 }

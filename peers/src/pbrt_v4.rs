@@ -1,4 +1,4 @@
-//! pbrt-v4 (its samplers and `SobolSample`), through `shims/pbrt_v4.cpp`.
+//! pbrt-v4 (its samplers, `SobolSample` and `RadicalInverse`), through `shims/pbrt_v4.cpp`.
 
 use std::ffi::c_void;
 
@@ -24,6 +24,7 @@ unsafe extern "C" {
         out: *mut f32,
     );
     fn peer_pbrt_v4_sobol(index: *const u32, n: usize, dims: i32, out: *mut f32);
+    fn peer_pbrt_v4_radical_inverse(index: *const u64, n: usize, dims: i32, out: *mut f32);
     #[cfg(peer_pbrt_v4_pmj02bn)]
     fn peer_pbrt_v4_pmj02bn_new(spp: i32, seed: i32) -> *mut c_void;
     #[cfg(peer_pbrt_v4_pmj02bn)]
@@ -110,4 +111,13 @@ pub fn sobol(index: &[u32], dims: u32, out: &mut [f32]) {
     assert_eq!(out.len(), index.len() * dims as usize);
     // SAFETY: `out` holds `dims` floats per index.
     unsafe { peer_pbrt_v4_sobol(index.as_ptr(), index.len(), dims as i32, out.as_mut_ptr()) }
+}
+
+/// `RadicalInverse(d, a)` for every index and `d` in `0..dims`, index-major.
+pub fn radical_inverse(index: &[u64], dims: u32, out: &mut [f32]) {
+    assert_eq!(out.len(), index.len() * dims as usize);
+    // SAFETY: `out` holds `dims` floats per index; pbrt-v4 has 1000 bases.
+    unsafe {
+        peer_pbrt_v4_radical_inverse(index.as_ptr(), index.len(), dims as i32, out.as_mut_ptr())
+    }
 }

@@ -9,6 +9,7 @@ use crate::check;
 use crate::harness::{Entry, Job, Workload};
 use nyquist::filter::{Boxcar, Filter, FilterTable, Interpolation, Lanczos, Mitchell};
 use nyquist::hash::mix32;
+use nyquist::radical::radical_inverse;
 use nyquist::sampler::{HaltonSampler, HaltonScramble, Pmj02Sampler, ZSobolSampler, camera_sample};
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Pmj02, Sequence, Sobol};
@@ -26,6 +27,7 @@ pub const ALL: &[(&str, Make)] = &[
     ("shuffle", shuffle_1024),
     ("lanczos direct", lanczos_direct),
     ("filter table nearest", table_nearest),
+    ("halton radical inverse", halton_radical_inverse),
     ("halton camera sample", halton_camera),
     ("pmj02 camera sample", pmj02_camera),
     ("pmj02 scrambled sample_2d", pmj02_sample_2d),
@@ -748,5 +750,63 @@ fn table_nearest() -> Workload<'static> {
         unit: "weight",
         nyquist: job(pts.len(), move |o| fill(black_box(&pts), o)),
         peers: vec![peer],
+    }
+}
+
+/// Halton values by random access: 256 random indices below 10⁷, dimensions 0..64 of each.
+/// Checked to 10⁻⁶: pbrt's loops accumulate the digit weight in `f32`.
+fn halton_radical_inverse() -> Workload<'static> {
+    let mut rng = nyquist::rng::default_rng(9);
+    let index: Vec<u64> = (0..256)
+        .map(|_| u64::from(nyquist::rng::uniform_below(&mut rng, 10_000_000)))
+        .collect();
+    let len = index.len() * DIMS as usize;
+    let fill = |index: &[u64], out: &mut [f32]| {
+        let mut o = out.iter_mut();
+        for &a in index {
+            for d in 0..DIMS {
+                *o.next().unwrap() = radical_inverse(d, a);
+            }
+        }
+    };
+    #[allow(unused_variables)]
+    let ours = once(len, |o| fill(&index, o));
+    let mut peers = Vec::new();
+    const V3: &str = "pbrt-v3 `RadicalInverse` (a digit loop per base, base a constant)";
+    #[cfg(peer_pbrt_v3)]
+    {
+        let theirs = once(len, |o| crate::pbrt_v3::radical_inverse(&index, DIMS, o));
+        let idx = index.clone();
+        peers.push(Entry::checked(
+            V3,
+            check::close(V3, &ours, &theirs, 1e-6),
+            job(len, move |o| {
+                crate::pbrt_v3::radical_inverse(black_box(&idx), DIMS, o)
+            }),
+        ));
+    }
+    #[cfg(not(peer_pbrt_v3))]
+    peers.push(unbuilt(V3, "NYQUIST_PBRT_V3"));
+    const V4: &str = "pbrt-v4 `RadicalInverse` (one digit loop, base read at run time)";
+    #[cfg(peer_pbrt_v4)]
+    {
+        let theirs = once(len, |o| crate::pbrt_v4::radical_inverse(&index, DIMS, o));
+        let idx = index.clone();
+        peers.push(Entry::checked(
+            V4,
+            check::close(V4, &ours, &theirs, 1e-6),
+            job(len, move |o| {
+                crate::pbrt_v4::radical_inverse(black_box(&idx), DIMS, o)
+            }),
+        ));
+    }
+    #[cfg(not(peer_pbrt_v4))]
+    peers.push(unbuilt(V4, "NYQUIST_PBRT_V4"));
+    Workload {
+        name: "Halton `radical_inverse`, 256 random indices < 10⁷ × dims 0..64".into(),
+        elements: len as u64,
+        unit: "value",
+        nyquist: job(len, move |o| fill(black_box(&index), o)),
+        peers,
     }
 }
