@@ -82,7 +82,7 @@ void peer_pbrt_v4_radical_inverse(const uint64_t *index, size_t n, int dims, flo
 }
 
 #ifdef PEER_PBRT_V4_PMJ02BN
-// PMJ02BNSampler (its own seed; needs src/pbrt/util/pmj02tables.cpp).
+// PMJ02BNSampler and its table (need src/pbrt/util/pmj02tables.cpp and bluenoise.cpp).
 void *peer_pbrt_v4_pmj02bn_new(int spp, int seed) {
     return new pbrt::PMJ02BNSampler(spp, seed);
 }
@@ -91,6 +91,15 @@ void peer_pbrt_v4_pmj02bn_free(void *s) { delete static_cast<pbrt::PMJ02BNSample
 
 void peer_pbrt_v4_pmj02bn_camera(void *s, int x0, int y0, int n, int spp, float *out) {
     camera(*static_cast<pbrt::PMJ02BNSampler *>(s), x0, y0, n, spp, out);
+}
+
+// GetPMJ02BNSample(0, i): the table read of pbrt-v4's first pmj02bn set, 2 floats per index.
+void peer_pbrt_v4_pmj02bn_lookup(const uint32_t *index, size_t n, float *out) {
+    for (size_t k = 0; k < n; ++k) {
+        const pbrt::Point2f p = pbrt::GetPMJ02BNSample(0, int(index[k]));
+        out[2 * k] = p.x;
+        out[2 * k + 1] = p.y;
+    }
 }
 #endif
 

@@ -30,6 +30,8 @@ unsafe extern "C" {
     #[cfg(peer_pbrt_v4_pmj02bn)]
     fn peer_pbrt_v4_pmj02bn_free(s: *mut c_void);
     #[cfg(peer_pbrt_v4_pmj02bn)]
+    fn peer_pbrt_v4_pmj02bn_lookup(index: *const u32, n: usize, out: *mut f32);
+    #[cfg(peer_pbrt_v4_pmj02bn)]
     fn peer_pbrt_v4_pmj02bn_camera(
         s: *mut c_void,
         x0: i32,
@@ -120,4 +122,13 @@ pub fn radical_inverse(index: &[u64], dims: u32, out: &mut [f32]) {
     unsafe {
         peer_pbrt_v4_radical_inverse(index.as_ptr(), index.len(), dims as i32, out.as_mut_ptr())
     }
+}
+
+/// `GetPMJ02BNSample(0, i)` for each index, 2 floats per index.
+#[cfg(peer_pbrt_v4_pmj02bn)]
+pub fn pmj02bn_lookup(index: &[u32], out: &mut [f32]) {
+    assert_eq!(out.len(), 2 * index.len());
+    assert!(index.iter().all(|&i| i < 65536));
+    // SAFETY: `out` holds 2 floats per index; every index is inside the 2^16-point table.
+    unsafe { peer_pbrt_v4_pmj02bn_lookup(index.as_ptr(), index.len(), out.as_mut_ptr()) }
 }

@@ -30,6 +30,7 @@ pub const ALL: &[(&str, Make)] = &[
     ("halton radical inverse", halton_radical_inverse),
     ("halton camera sample", halton_camera),
     ("pmj02 camera sample", pmj02_camera),
+    ("pmj02 plain sample_2d", pmj02_plain_sample_2d),
     ("pmj02 scrambled sample_2d", pmj02_sample_2d),
     ("owen-sobol sample_4d", owen_sobol_4d),
     ("owen-sobol sample", owen_sobol_sample),
@@ -142,6 +143,55 @@ fn pmj_check(what: &str, hashed: &[f32], sequential: &[f32]) -> Result<(), Strin
         check::stratified(what, sequential, d, 2, POINTS as usize)?;
     }
     Ok(())
+}
+
+/// Plain PMJ(0,2) by index: one table read on both sides.
+fn pmj02_plain_sample_2d() -> Workload<'static> {
+    let idx = hashed_indices();
+    let seq: Vec<u32> = (0..POINTS).collect();
+    let p = Pmj02::new();
+    let fill = move |idx: &[u32], out: &mut [f32]| {
+        for (o, &i) in out.chunks_exact_mut(2).zip(idx) {
+            o.copy_from_slice(&p.sample_2d(i));
+        }
+    };
+    let len = 2 * POINTS as usize;
+    pmj_check(
+        "nyquist",
+        &once(len, |o| fill(&idx, o)),
+        &once(len, |o| fill(&seq, o)),
+    )
+    .expect("nyquist's own check");
+    const PEER: &str = "pbrt-v4 `GetPMJ02BNSample` (table read)";
+    #[cfg(peer_pbrt_v4_pmj02bn)]
+    let peer = {
+        use crate::pbrt_v4::pmj02bn_lookup;
+        let ok = pmj_check(
+            PEER,
+            &once(len, |o| pmj02bn_lookup(&idx, o)),
+            &once(len, |o| pmj02bn_lookup(&seq, o)),
+        );
+        let idx = idx.clone();
+        Entry::checked(
+            PEER,
+            ok,
+            job(len, move |o| pmj02bn_lookup(black_box(&idx), o)),
+        )
+    };
+    #[cfg(all(peer_pbrt_v4, not(peer_pbrt_v4_pmj02bn)))]
+    let peer = Entry::skipped(
+        PEER,
+        "not built (the snapshot lacks src/pbrt/util/pmj02tables.cpp or bluenoise.cpp)",
+    );
+    #[cfg(not(peer_pbrt_v4))]
+    let peer = unbuilt(PEER, "NYQUIST_PBRT_V4");
+    Workload {
+        name: "PMJ(0,2) plain `sample_2d`, 4096 hashed indices".into(),
+        elements: len as u64,
+        unit: "value",
+        nyquist: job(len, move |o| fill(black_box(&idx), o)),
+        peers: vec![peer],
+    }
 }
 
 fn pmj02_sample_2d() -> Workload<'static> {
