@@ -4,7 +4,7 @@
 //! benchmark then prints its rows as skipped. Each built peer sets `cfg(peer_NAME)`.
 //!
 //! Flags: the system C++ compiler (or `CXX`), `-std=c++17 -O3 -march=x86-64-v2 -DNDEBUG`, as a
-//! release build of each peer; `CXXFLAGS` is appended by the `cc` crate.
+//! release build of each peer; `CXX` and `CXXFLAGS` are read as the `cc` crate reads them.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -128,3 +128,74 @@ pub fn close(what: &str, a: &[f32], b: &[f32], tol: f32) -> Result<(), String> {
         )),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn stratified_takes_one_value_per_interval() {
+        let v: Vec<f32> = (0..16)
+            .map(|i| ((i * 7) % 16) as f32 / 16.0 + 0.01)
+            .collect();
+        assert!(stratified("v", &v, 0, 1, 16).is_ok());
+        let mut twice = v.clone();
+        twice[3] = twice[4];
+        assert!(stratified("v", &twice, 0, 1, 16).is_err());
+    }
+
+    #[test]
+    fn stratified_lets_a_value_on_an_edge_count_below() {
+        // Interval 1 is empty and interval 2 holds 0.125 (its lower edge) and 0.13.
+        let mut v: Vec<f32> = (0..16).map(|i| i as f32 / 16.0 + 0.01).collect();
+        v[1] = 0.125;
+        assert!(stratified("v", &v, 0, 1, 16).is_ok());
+        // 1 wrapped to 0 fills the last interval.
+        let mut w: Vec<f32> = (0..16).map(|i| i as f32 / 16.0 + 0.01).collect();
+        w[15] = 0.0;
+        assert!(stratified("w", &w, 0, 1, 16).is_ok());
+        // Not past the edge's reach.
+        v[1] = 0.126;
+        assert!(stratified("v", &v, 0, 1, 16).is_err());
+    }
+
+    #[test]
+    fn stratified_reads_with_a_stride() {
+        let v: Vec<f32> = (0..8).flat_map(|i| [i as f32 / 8.0, 0.5]).collect();
+        assert!(stratified("v", &v, 0, 2, 8).is_ok());
+        assert!(stratified("v", &v, 1, 2, 8).is_err());
+    }
+
+    #[test]
+    fn camera_rejects_a_sample_outside_its_pixel_or_a_lopsided_mean() {
+        let (origin, spp) = ([10, 20], 4u32);
+        let good: Vec<f32> = (0..spp)
+            .flat_map(|i| {
+                let u = (i as f32 + 0.5) / spp as f32;
+                [10.0 + u, 20.0 + 1.0 - u, u, 1.0 - u, u]
+            })
+            .collect();
+        assert!(camera("c", &good, origin, 1, spp, 2).is_ok());
+        let mut outside = good.clone();
+        outside[0] = 11.0;
+        assert!(camera("c", &outside, origin, 1, spp, 0).is_err());
+        let mut out_of_range = good.clone();
+        out_of_range[2] = 1.0;
+        assert!(camera("c", &out_of_range, origin, 1, spp, 0).is_err());
+        let zeros: Vec<f32> = (0..spp).flat_map(|_| [10.5, 20.5, 0.0, 0.0, 0.0]).collect();
+        assert!(camera("c", &zeros, origin, 1, spp, 0).is_err());
+    }
+
+    #[test]
+    fn close_and_mean_and_range() {
+        assert!(close("c", &[1.0, 2.0], &[1.0, 2.05], 0.1).is_ok());
+        assert!(close("c", &[1.0, 2.0], &[1.0, 2.2], 0.1).is_err());
+        assert!(close("c", &[1.0], &[f32::NAN], 0.1).is_err());
+        assert!(close("c", &[1.0], &[1.0, 2.0], 0.1).is_err());
+        assert!(mean("m", &[0.25, 0.75, 0.5], 0, 1, 0.5, 0.01).is_ok());
+        assert!(mean("m", &[0.25, 0.25], 0, 1, 0.5, 0.01).is_err());
+        assert!(unit_range("u", &[0.0, 0.999]).is_ok());
+        assert!(unit_range("u", &[1.0]).is_err());
+        assert!(unit_range("u", &[-0.0, f32::NAN]).is_err());
+    }
+}

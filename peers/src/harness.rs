@@ -238,3 +238,49 @@ fn ns(t: f64, unit: &str) -> String {
         format!("{t:.2} ns/{unit}")
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spin(n: u64) -> Job<'static> {
+        Box::new(move || {
+            let mut x = 0u64;
+            for i in 0..n {
+                x = black_box(x.wrapping_mul(31).wrapping_add(i));
+            }
+            black_box(x);
+        })
+    }
+
+    #[test]
+    fn a_slower_peer_has_a_ratio_above_one_and_a_skipped_peer_says_why() {
+        let w = Workload {
+            name: "spin".into(),
+            elements: 1000,
+            unit: "step",
+            nyquist: spin(1000),
+            peers: vec![
+                Entry::ready("four times the work", spin(4000)),
+                Entry::skipped("absent", "not built"),
+            ],
+        };
+        let settings = Settings {
+            samples: 5,
+            runs: 2,
+            sample_ns: 200_000,
+        };
+        let rows = measure(w, settings);
+        assert_eq!(rows.len(), 2);
+        let m = rows[0].outcome.as_ref().unwrap();
+        assert_eq!(m.ratios.len(), 2);
+        assert!(m.ratios.iter().all(|&r| r > 2.0), "{:?}", m.ratios);
+        assert_eq!(rows[1].outcome.as_ref().err().unwrap(), "not built");
+    }
+
+    #[test]
+    fn median_of_odd_and_even_counts() {
+        assert_eq!(median(&mut [3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(&mut [4.0, 1.0, 2.0, 3.0]), 2.5);
+    }
+}
