@@ -39,6 +39,11 @@ pub const ALL: &[(&str, Make)] = &[
     ("zsobol camera sample", zsobol_camera),
 ];
 
+/// OpenQMC's rows.
+const OQMC_PMJ: &str = "OpenQMC `PmjSampler` (2-D + 3-D draw, XOR scramble)";
+const OQMC_LOOKUP: &str = "OpenQMC lookup core (`shuffledScrambledLookup`, XOR scramble)";
+const OQMC_SOBOL: &str = "OpenQMC `shuffledScrambledSobol<4>` (Owen)";
+
 /// Camera-sample workloads: 8 × 8 pixels from (100, 50), 16 samples each.
 const PIXELS: u32 = 8;
 const SPP: u32 = 16;
@@ -95,7 +100,7 @@ fn pmj02_camera() -> Workload<'static> {
         let theirs = once(CAMERA_LEN, |out| cache.camera(ORIGIN, PIXELS, SPP, out));
         let ok = check::camera("OpenQMC", &theirs, ORIGIN, PIXELS, SPP, 2);
         peers.push(Entry::checked(
-            "OpenQMC `PmjSampler` (2-D + 3-D draw, XOR scramble)",
+            OQMC_PMJ,
             ok,
             job(CAMERA_LEN, move |out| {
                 cache.camera(ORIGIN, PIXELS, SPP, out)
@@ -103,7 +108,7 @@ fn pmj02_camera() -> Workload<'static> {
         ));
     }
     #[cfg(not(peer_openqmc))]
-    peers.push(unbuilt("OpenQMC `PmjSampler`", "NYQUIST_OPENQMC"));
+    peers.push(unbuilt(OQMC_PMJ, "NYQUIST_OPENQMC"));
     const PMJ02BN: &str = "pbrt-v4 `PMJ02BNSampler`";
     #[cfg(peer_pbrt_v4_pmj02bn)]
     peers.push(pbrt_v4_camera(PMJ02BN, 2, || {
@@ -221,13 +226,13 @@ fn pmj02_sample_2d() -> Workload<'static> {
         );
         let idx = idx.clone();
         peers.push(Entry::checked(
-            "OpenQMC lookup core (`shuffledScrambledLookup`, XOR scramble)",
+            OQMC_LOOKUP,
             ok,
             job(len, move |o| table.lookup_2d(7, black_box(&idx), o)),
         ));
     }
     #[cfg(not(peer_openqmc))]
-    peers.push(unbuilt("OpenQMC lookup core", "NYQUIST_OPENQMC"));
+    peers.push(unbuilt(OQMC_LOOKUP, "NYQUIST_OPENQMC"));
     Workload {
         name: "PMJ(0,2) Owen-scrambled `sample_2d`, 4096 hashed indices".into(),
         elements: len as u64,
@@ -292,7 +297,7 @@ fn owen_sobol_4d() -> Workload<'static> {
             &once(SOBOL_LEN, |o| crate::openqmc::sobol_4d(POINTS, &seeds, o)),
         );
         peers.push(Entry::checked(
-            "OpenQMC `shuffledScrambledSobol<4>` (Owen)",
+            OQMC_SOBOL,
             ok,
             job(SOBOL_LEN, move |o| {
                 crate::openqmc::sobol_4d(black_box(POINTS), &seeds, o)
@@ -300,10 +305,7 @@ fn owen_sobol_4d() -> Workload<'static> {
         ));
     }
     #[cfg(not(peer_openqmc))]
-    peers.push(unbuilt(
-        "OpenQMC `shuffledScrambledSobol<4>`",
-        "NYQUIST_OPENQMC",
-    ));
+    peers.push(unbuilt(OQMC_SOBOL, "NYQUIST_OPENQMC"));
     Workload {
         name: "Owen-Sobol `sample_4d`, 4096 points × 64 dims".into(),
         elements: SOBOL_LEN as u64,
