@@ -13,8 +13,8 @@ pub fn unit_range(what: &str, v: &[f32]) -> Result<(), String> {
 /// the first `n` points of a (0, 2)-sequence or of a scrambled Sobol dimension do. A value within
 /// 2⁻¹⁶ above an interval's lower edge may count in the interval below (at 0: the last one):
 /// film positions are `pixel + u` in `f32`, whose rounding can carry `u` onto the next interval,
-/// and a `u` just below 1 whose sum rounds to the next pixel's corner is put at the pixel's own
-/// corner by nyquist's `camera_sample`.
+/// and a peer's `u` just below 1 can round onto the next pixel's corner, a fractional part of 0
+/// (nyquist's `camera_sample` keeps it below the corner: `sampler::film_coordinate`).
 pub fn stratified(
     what: &str,
     v: &[f32],
