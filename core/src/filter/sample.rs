@@ -300,3 +300,30 @@ fn invert<const N: usize>(cdf: &[f32; N], u: f32) -> (usize, f32, f32) {
     };
     (k, t, p)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A value that rounding pushed one step past an edge of its cell comes back to the nearest
+    /// values inside: within a few `f32` steps of where it was, on the cell's side.
+    #[test]
+    fn snap_into_cell_returns_a_value_beside_the_one_pushed_out() {
+        let (r, h) = (1.5f32, 0.75f32); // cells [−1.5, −0.75), [−0.75, 0), [0, 0.75), [0.75, 1.5]
+        for k in 0..4usize {
+            for edge in [-r + k as f32 * h, -r + (k + 1) as f32 * h] {
+                for v in [edge.next_down(), edge, edge.next_up()] {
+                    if !(-r..=r).contains(&v) {
+                        continue;
+                    }
+                    let s = snap_into_cell(v, k, r, h);
+                    assert_eq!(cell_of::<4>(s, r, h), k, "v {v}, cell {k}: {s}");
+                    assert!(
+                        (s - v).abs() <= 4.0 * f32::EPSILON * 2.0,
+                        "v {v}, cell {k}: {s}"
+                    );
+                }
+            }
+        }
+    }
+}

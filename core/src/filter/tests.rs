@@ -903,6 +903,7 @@ fn box_sampler_is_the_uniform_inverse_cdf_on_each_axis() {
             assert!((fs.weight - 6.0).abs() < 1e-5, "{u:?}: {fs:?}");
         }
     }
+    assert_eq!(b.radius(), [1.0, 1.5]);
 }
 
 /// The density is 0 off the support: past the radius on either axis alone, for NaN in either
