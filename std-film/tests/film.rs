@@ -402,6 +402,134 @@ fn crop_window_stores_only_its_pixels() {
     assert!(Film::new(FilmConfig::new(0, 3), &Boxcar::default()).is_err());
 }
 
+/// A cropped film stores its pixels at their film coordinates: a box-filtered sample at the
+/// centre of pixel (x, y) lands in `pixel(x, y)` and in the image's pixel (x − x0, y − y0),
+/// whatever tile size splits the crop (tiles then start away from the film's corner).
+#[test]
+fn a_cropped_film_keeps_each_sample_at_its_film_coordinates() {
+    let mut config = FilmConfig::new(10, 10);
+    config.crop_window = [0.2, 0.7, 0.3, 0.9];
+    let value = |x: i64, y: i64| (10 * x + y) as f32;
+    for size in [1, 2, 3, 16] {
+        let mut film = Film::new(config, &Boxcar::default()).unwrap();
+        let b = film.pixel_bounds();
+        assert_eq!(b, Bounds::new(2, 3, 7, 9));
+        for spec in film.tiles(size).unwrap() {
+            let mut tile = film.tile(spec);
+            for y in spec.bounds.y0..spec.bounds.y1 {
+                for x in spec.bounds.x0..spec.bounds.x1 {
+                    let p = [x as f32 + 0.5, y as f32 + 0.5];
+                    tile.add_sample(p, [value(x, y), 0.0, 0.0], 1.0);
+                }
+            }
+            film.merge(tile).unwrap();
+        }
+        for y in b.y0..b.y1 {
+            for x in b.x0..b.x1 {
+                let p = film.pixel(x, y).unwrap();
+                assert_eq!((p.rgb_sum[0], p.weight_sum), (f64::from(value(x, y)), 1.0));
+            }
+        }
+        for (x, y) in [(1, 3), (7, 3), (2, 2), (2, 9)] {
+            assert!(film.pixel(x, y).is_none(), "({x}, {y}) is outside the crop");
+        }
+        let (image, _) = film.image();
+        assert_eq!((image.width(), image.height()), (5, 6));
+        for y in b.y0..b.y1 {
+            for x in b.x0..b.x1 {
+                assert_eq!(image.get((x - 2) as u32, (y - 3) as u32)[0], value(x, y));
+            }
+        }
+    }
+}
+
+/// Tiles partition the pixels: ⌈w/s⌉ · ⌈h/s⌉ of them, none empty, in row order, their areas
+/// summing to the film's, also where `s` divides the sides.
+#[test]
+fn tiles_partition_the_film_with_no_empty_tile() {
+    let film = Film::new(FilmConfig::new(12, 8), &Boxcar::default()).unwrap();
+    for size in [1u32, 2, 3, 4, 5, 8, 12, 13] {
+        let tiles = film.tiles(size).unwrap();
+        assert_eq!(
+            tiles.len() as u32,
+            12u32.div_ceil(size) * 8u32.div_ceil(size),
+            "{size}"
+        );
+        assert!(
+            tiles.iter().all(|t| t.bounds.area() > 0),
+            "{size}: an empty tile"
+        );
+        assert_eq!(tiles.iter().map(|t| t.bounds.area()).sum::<u64>(), 96);
+        assert!(tiles.iter().enumerate().all(|(i, t)| t.index == i));
+    }
+    assert!(film.tiles(0).is_err());
+}
+
+/// A held tile (its predecessors missing) is applied by `image`, and counted; after that the
+/// film has moved past it: merging it, or any tile before it, again is refused.
+#[test]
+fn image_applies_held_tiles_and_the_film_moves_past_them() {
+    let mut film = Film::new(FilmConfig::new(4, 4), &Boxcar::default()).unwrap();
+    let specs = film.tiles(2).unwrap();
+    let mut tile = film.tile(specs[2]);
+    let b = specs[2].bounds;
+    tile.add_sample([b.x0 as f32 + 0.5, b.y0 as f32 + 0.5], [3.0, 0.0, 0.0], 1.0);
+    film.merge(tile).unwrap();
+    assert_eq!(film.stats().samples, 0, "held, not applied yet");
+    let (image, _) = film.image();
+    assert_eq!(image.get(b.x0 as u32, b.y0 as u32)[0], 3.0);
+    assert_eq!(film.stats().samples, 1);
+    assert!(film.merge(film.tile(specs[2])).is_err(), "merged twice");
+    assert!(film.merge(film.tile(specs[1])).is_err(), "behind the film");
+    film.merge(film.tile(specs[3])).unwrap();
+}
+
+/// Counters add over tiles, each one separately; storage is 32 bytes a pixel, plus 24 a pixel
+/// once splats arrive; the filter radius is the filter's.
+#[test]
+fn stats_add_over_tiles_and_storage_counts_splats() {
+    let mut film = Film::new(FilmConfig::new(10, 5), &Mitchell::default()).unwrap();
+    assert_eq!(film.filter_radius(), [2.0, 2.0]);
+    assert_eq!(film.storage_bytes(), 50 * 32);
+    for spec in film.tiles(5).unwrap() {
+        let mut tile = film.tile(spec);
+        let c = [spec.bounds.x0 as f32 + 0.5, 2.5];
+        tile.add_sample(c, [1.0; 3], 1.0);
+        tile.add_sample(c, [f32::NAN; 3], 1.0);
+        tile.add_splat(c, [1.0; 3]);
+        tile.add_splat(c, [2.0; 3]);
+        film.merge(tile).unwrap();
+    }
+    let s = film.stats();
+    assert_eq!((s.samples, s.rejected, s.splats), (2, 2, 4));
+    assert_eq!(film.storage_bytes(), 50 * 32 + 50 * 24);
+    let wide = Film::new(FilmConfig::new(3, 3), &Boxcar::new([1.5, 0.25]).unwrap()).unwrap();
+    assert_eq!(wide.filter_radius(), [1.5, 0.25]);
+}
+
+/// A filter whose integral is 0 (an odd plugin: f(x, y) = x) cannot normalise splats: they
+/// resolve to 0 instead of an infinite or NaN pixel.
+#[test]
+fn splats_under_a_zero_integral_filter_resolve_to_zero() {
+    #[derive(Debug)]
+    struct Odd;
+    impl Filter for Odd {
+        fn radius(&self) -> [f32; 2] {
+            [1.0, 1.0]
+        }
+        fn eval(&self, x: f32, _: f32) -> f32 {
+            x
+        }
+    }
+    let mut film = Film::new(FilmConfig::new(4, 4), &Odd).unwrap();
+    let spec = film.tiles(4).unwrap()[0];
+    let mut tile = film.tile(spec);
+    tile.add_splat([2.0, 2.0], [1.0; 3]);
+    film.merge(tile).unwrap();
+    let (image, _) = film.image();
+    assert!(image.data().iter().all(|&v| v == 0.0), "{:?}", image.data());
+}
+
 #[test]
 fn merging_a_tile_twice_is_an_error() {
     let mut film = Film::new(FilmConfig::new(4, 4), &Boxcar::default()).unwrap();
