@@ -324,7 +324,8 @@ mod tests {
     }
 
     /// Digit permutation in base 2 is one random XOR word per seed: a bijection that maps
-    /// `x ^ z` to `y ^ z`.
+    /// `x ^ z` to `y ^ z`; and no two seeds share a word (the word is a bijective hash of the
+    /// seed), checked over the first 4096 seeds.
     #[test]
     fn permuted_digits_are_an_xor_with_one_word() {
         for seed in [0u32, 3, u32::MAX] {
@@ -333,6 +334,10 @@ mod tests {
                 assert_eq!(scramble_u32(x, seed, Scramble::PermuteDigits), x ^ word);
             }
         }
+        let words: std::collections::BTreeSet<u32> = (0..4096)
+            .map(|seed| scramble_u32(0, seed, Scramble::PermuteDigits))
+            .collect();
+        assert_eq!(words.len(), 4096);
     }
 
     #[test]
