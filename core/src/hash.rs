@@ -597,6 +597,14 @@ mod tests {
     }
 
     #[test]
+    fn permutation_size_is_n_and_at_least_one() {
+        for n in [1u32, 2, 4, 5, 16, 17, 1000, u32::MAX] {
+            assert_eq!(Permutation::new(n, 7).size(), n);
+        }
+        assert_eq!(Permutation::new(0, 7).size(), 1);
+    }
+
+    #[test]
     fn permute_depends_on_seed_and_wraps_large_indices() {
         let a: std::vec::Vec<u32> = (0..64).map(|i| permute(i, 64, 1)).collect();
         let b: std::vec::Vec<u32> = (0..64).map(|i| permute(i, 64, 2)).collect();
