@@ -297,7 +297,7 @@ mod tests {
             let n = 2 + (seed as usize * 13) % 300;
             let mut pts = random(n, 2, seed);
             let mut rng = crate::rng::default_rng(seed ^ 0xabc);
-            match seed % 4 {
+            match seed % 8 {
                 // a duplicate pair
                 0 => {
                     let j = crate::rng::uniform_below(&mut rng, n as u32 - 1) as usize;
@@ -318,6 +318,24 @@ mod tests {
                 2 => {
                     for v in pts.iter_mut().skip(6) {
                         *v = 0.3 + *v * 1e-3;
+                    }
+                }
+                // the whole set in a small square away from the origin: the grid's origin and
+                // extent are then far from 0 and 1
+                4 => {
+                    for v in pts.iter_mut() {
+                        *v = 0.5 + *v * 1e-2;
+                    }
+                }
+                // a thin horizontal strip, and a narrow vertical band: cells far from square
+                5 => {
+                    for v in pts.iter_mut().skip(1).step_by(2) {
+                        *v = 0.7 + *v * 1e-4;
+                    }
+                }
+                6 => {
+                    for v in pts.iter_mut().step_by(2) {
+                        *v = 0.2 + *v * 0.05;
                     }
                 }
                 _ => {}
