@@ -145,7 +145,7 @@ for module in "${selected[@]}"; do
     # Record how and where this row was measured.
     awk -v m="$module" -v run="- \`$module\`: \`${cmd[*]}\` — $(date -u +%Y-%m-%d), $machine, $version" '
         /<!-- mutants-runs-end -->/ { if (!done) print run; done = 1; print; next }
-        index($0, "- `" m "`: ") == 1 { if (!done) print run; done = 1; next }
+        index($0, "- `" m "`: `cargo mutants ") == 1 { if (!done) print run; done = 1; next }
         { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
 done
 exit $status
