@@ -162,6 +162,9 @@ pub fn check_output(path: &Path, flag: &str, formats: &[&str]) -> Result<()> {
         );
     }
     let probe = temporary(path)?;
+    // Created and removed under the lock of the writes in progress: a signal's handler takes
+    // that lock before it exits, so it never exits between the two and leaves the probe behind.
+    let _files = in_progress();
     match File::create(&probe) {
         Ok(_) => {
             let _ = std::fs::remove_file(&probe);
