@@ -14,6 +14,7 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, SCRAMBLE_NAMES, Sampler};
+use nyquist_film::CAN_START_THREADS;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -441,8 +442,7 @@ fn render_cells(
             }
         }
     };
-    if threads <= 1 {
-        // On the calling thread (WebAssembly cannot start threads).
+    if threads <= 1 || !CAN_START_THREADS {
         work(tx.clone());
     } else {
         std::thread::scope(|scope| {

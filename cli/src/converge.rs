@@ -32,6 +32,7 @@ use clap::{Args, ValueEnum};
 use nyquist::sampler::{
     Jitter, NAMES, NamedSampler, NamedSamplerError, Sampler, StratifiedSampler,
 };
+use nyquist_film::CAN_START_THREADS;
 use std::path::PathBuf;
 use std::sync::Mutex;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -435,7 +436,7 @@ impl Study {
                     progress(done.fetch_add(1, Ordering::Relaxed) + 1, tasks);
                 }
             };
-            if threads <= 1 {
+            if threads <= 1 || !CAN_START_THREADS {
                 work();
             } else {
                 std::thread::scope(|scope| {

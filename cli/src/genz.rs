@@ -31,6 +31,8 @@
 use std::fmt::Write as _;
 use std::sync::Mutex;
 
+use nyquist_film::CAN_START_THREADS;
+
 use anyhow::{Result, anyhow, bail};
 use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
 
@@ -324,8 +326,7 @@ pub fn study(
                 out.iter_mut().for_each(|o| *o /= f64::from(n.max(1)));
             }
         };
-        if threads <= 1 {
-            // On the calling thread (WebAssembly cannot start threads).
+        if threads <= 1 || !CAN_START_THREADS {
             work();
         } else {
             std::thread::scope(|scope| {

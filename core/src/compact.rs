@@ -42,7 +42,7 @@ const fn check_dims<const N: usize>() {
 }
 
 /// `dim % N` without a division when `dim < N` (the usual case).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn wrap<const N: usize>(dim: u32) -> usize {
     let d = dim as usize;
     if d < N { d } else { d % N }
@@ -93,7 +93,7 @@ const fn halton_bases<const N: usize>() -> [Base; N] {
 
 /// `x / b` and `x % b` for `b < 2¹⁶`, by 32-bit divisions only (no 64-bit division routine on
 /// a 32-bit core): the high word, then two 16-bit limbs with the remainder carried in.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn div_small(x: u64, b: u32) -> (u64, u32) {
     let (hi, lo) = ((x >> 32) as u32, x as u32);
     let (q2, r) = (hi / b, hi % b);
@@ -106,14 +106,14 @@ fn div_small(x: u64, b: u32) -> (u64, u32) {
 
 /// `q · 2^e` for `q < 2²⁵` and `-126 <= e <= 127`, in `f32` arithmetic: exact when `q` fits
 /// 24 bits, as it does after [`round_bits`].
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn scale(q: u32, e: i32) -> f32 {
     q as f32 * f32::from_bits(((e + 127) as u32) << 23)
 }
 
 /// `(q + f) · 2^e` (`0 <= f < 1`, `sticky` true iff `f > 0`) rounded to `bits` significant bits,
 /// to nearest, ties to even: the rounded mantissa and its exponent.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn round_bits(q: u128, e: i32, sticky: bool, bits: u32) -> (u128, i32) {
     let len = 128 - q.leading_zeros();
     if len <= bits {
@@ -133,7 +133,7 @@ fn round_bits(q: u128, e: i32, sticky: bool, bits: u32) -> (u128, i32) {
 /// The fast path's value for `a < b^k` (see `radical::fast_class`): the index's digits reversed
 /// over `digits` places, `R'`, times the `f64` reciprocal `inv`, rounded to `f64` and then to
 /// `f32` — the two roundings done on integers, so the result is the table path's to the bit.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_short(b: u32, digits: u32, inv: u64, a: u32) -> f32 {
     let mut x = a;
     let mut rev = 0u64;
@@ -151,7 +151,7 @@ fn phi_short(b: u32, digits: u32, inv: u64, a: u32) -> f32 {
     target_arch = "aarch64",
     target_arch = "wasm32"
 ))]
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn narrow(rev: u64, inv: u64) -> f32 {
     ((rev as f64 * f64::from_bits(inv)) as f32).min(ONE_MINUS_EPSILON)
 }
@@ -163,7 +163,7 @@ fn narrow(rev: u64, inv: u64) -> f32 {
     target_arch = "aarch64",
     target_arch = "wasm32"
 )))]
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn narrow(rev: u64, inv: u64) -> f32 {
     narrow_int(rev, inv)
 }
@@ -179,7 +179,7 @@ fn narrow(rev: u64, inv: u64) -> f32 {
     ),
     allow(dead_code)
 )]
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn narrow_int(rev: u64, inv: u64) -> f32 {
     if rev == 0 {
         return 0.0;
@@ -493,7 +493,7 @@ impl<const N: usize> OwenSobol<N> {
 
     /// The scrambled value, bit-reversed, of dimension `d < N` at the reversed shuffled
     /// index `r`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value_rev(&self, r: u32, d: usize) -> u32 {
         lk_hash(sobol_product(&Self::REVERSED[d], r), self.seeds[d])
     }

@@ -66,7 +66,7 @@ pub const fn hash2(a: u64, b: u64) -> u64 {
 /// assert_eq!(wyrand(7, 0), (t >> 64) as u64 ^ t as u64);
 /// assert_ne!(wyrand(7, 0), wyrand(7, 1));
 /// ```
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub const fn wyrand(seed: u64, i: u64) -> u64 {
     wyrand_fold(seed.wrapping_add(WYRAND_INC.wrapping_mul(i.wrapping_add(1))))
 }
@@ -75,7 +75,7 @@ pub const fn wyrand(seed: u64, i: u64) -> u64 {
 pub(crate) const WYRAND_INC: u64 = 0xa076_1d64_78bd_642f;
 
 /// WyRand's output fold of a Weyl state `s`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) const fn wyrand_fold(s: u64) -> u64 {
     let t = (s as u128) * ((s ^ 0xe703_7ed1_a0b4_28db) as u128);
     (t >> 64) as u64 ^ t as u64
@@ -190,7 +190,7 @@ fn packed_permutation(n: u32, r: u64) -> u64 {
 }
 
 /// [`packed_permutation`]'s shuffle (Fisher–Yates on nibbles).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn fisher_yates(n: u32, mut r: u64) -> u64 {
     // Identity: nibble i = i.
     let mut t = 0xfedc_ba98_7654_3210u64 & (u64::MAX >> (64 - 4 * n.max(1)));
@@ -286,7 +286,7 @@ pub(crate) fn packed_table(n: u32, r: u64) -> u64 {
 }
 
 /// Entry `i` of a [`packed_table`] (`i < 16`; the table's own `n` is not checked).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn packed_entry(table: u64, i: u32) -> u32 {
     ((table >> (4 * (i & 15))) & 0xf) as u32
 }
@@ -311,7 +311,7 @@ impl ArrayOrder {
     }
 
     /// Where value `j < n` goes.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn apply(&self, j: u32) -> u32 {
         match self {
             ArrayOrder::Table(t) => packed_entry(*t, j),
@@ -379,7 +379,7 @@ impl Permutation {
     /// img.sort();
     /// assert_eq!(img, [0, 1, 2]);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn apply(&self, i: u32) -> u32 {
         let (n, mask, half) = (self.n, self.mask, self.half);
         if n <= TABLE_MAX {

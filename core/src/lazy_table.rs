@@ -203,7 +203,7 @@ mod lazy {
     impl<F: Fill> Deref for LazyTable<F> {
         type Target = F::Table;
 
-        #[inline(always)]
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
         fn deref(&self) -> &F::Table {
             if self.state.load(Ordering::Acquire) != READY {
                 self.fill_once();

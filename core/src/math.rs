@@ -21,7 +21,7 @@ pub const TWO_POW_MINUS_32: f64 = 1.0 / 4_294_967_296.0;
 
 /// A 32-bit binary fraction (`v / 2³²`) as an `f32` in `[0, 1)`: its top 24 bits, truncated
 /// (never rounded up to 1). The one conversion every base-2 generator uses.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn fraction_to_f32(v: u32) -> f32 {
     (v >> 8) as f32 * (1.0 / 16_777_216.0)
 }

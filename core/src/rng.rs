@@ -75,12 +75,12 @@ impl CounterRng {
 impl TryRng for CounterRng {
     type Error = Infallible;
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn try_next_u32(&mut self) -> Result<u32, Infallible> {
         Ok((self.try_next_u64()? >> 32) as u32)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn try_next_u64(&mut self) -> Result<u64, Infallible> {
         self.state = self.state.wrapping_add(crate::hash::WYRAND_INC);
         Ok(crate::hash::wyrand_fold(self.state))
@@ -132,7 +132,7 @@ pub fn uniform_below<R: Rng + ?Sized>(rng: &mut R, n: u32) -> u32 {
 
 /// [`uniform_below`] for `n ≥ 1` with its first 32-bit word already drawn (`first`); the rare
 /// rejected words are replaced by fresh draws from `rng`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn uniform_below_from<R: Rng + ?Sized>(first: u32, n: u32, rng: &mut R) -> u32 {
     let mut m = u64::from(first) * u64::from(n);
     if (m as u32) < n {

@@ -93,7 +93,7 @@ impl Scramble {
 /// let (a, b) = (lk_hash(0x0000_00ff, 0x9e37_79b9), lk_hash(0xffff_00ff, 0x9e37_79b9));
 /// assert_eq!(a & 0xffff, b & 0xffff);
 /// ```
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub const fn lk_hash(mut x_rev: u32, seed: u32) -> u32 {
     // Constants: Vegdahl, "Building a better LK hash" (psychopath.io, 2021).
     x_rev ^= x_rev.wrapping_mul(0x3d20_adea);
@@ -115,21 +115,21 @@ pub const fn lk_hash(mut x_rev: u32, seed: u32) -> u32 {
 /// assert_eq!(half(0), half(0x7fff_ffff));
 /// assert_ne!(half(0), half(0x8000_0000));
 /// ```
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub const fn fast_owen_scramble(x: u32, seed: u32) -> u32 {
     fast_owen_keyed(x, mix32(seed ^ 0x6a09_e667))
 }
 
 /// [`fast_owen_scramble`] with an already mixed key (a hash output): the LK hash on the
 /// reversed digits, for callers that draw their keys from a hash anyway.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) const fn fast_owen_keyed(x: u32, key: u32) -> u32 {
     lk_hash(x.reverse_bits(), key).reverse_bits()
 }
 
 /// `fraction_to_f32(fast_owen_keyed(x, key))` with one bit reversal fewer: the float is read
 /// straight from the reversed word ([`reversed_to_f32`]).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn fast_owen_keyed_f32(x: u32, key: u32) -> f32 {
     reversed_to_f32(lk_hash(x.reverse_bits(), key))
 }
@@ -182,7 +182,7 @@ pub const fn owen_scramble(x: u32, seed: u32) -> u32 {
 /// low.sort();
 /// assert_eq!(low, [0, 1, 2, 3, 4, 5, 6, 7]);
 /// ```
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub const fn nested_uniform_shuffle(index: u32, seed: u32) -> u32 {
     fast_owen_scramble(index, seed)
 }
@@ -229,7 +229,7 @@ const fn reversed_f32_tables() -> [[f32; 256]; 3] {
 /// The `f32` of the binary fraction `reverse(w_rev)` (its top 24 bits, truncated: never 1) from
 /// the bit-reversed word, by three table reads instead of a bit reversal (which x86-64 has no
 /// instruction for): the three entries have disjoint bits, so their sum is exact.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn reversed_to_f32(w_rev: u32) -> f32 {
     let [b0, b1, b2, _] = w_rev.to_le_bytes();
     (REVERSED_F32[0][b0 as usize] + REVERSED_F32[1][b1 as usize]) + REVERSED_F32[2][b2 as usize]

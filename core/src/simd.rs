@@ -25,7 +25,7 @@ use core::arch::x86_64::{
 /// `lk_hash(x[k], seeds[k])` (Vegdahl's constants, as [`crate::scramble::lk_hash`]), then the
 /// top 24 bits of its bit reversal as an `f32` in `[0, 1)`, for the four lanes: equal to
 /// `scramble_rev_f32x4_lanes` bit for bit (tested).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn scramble_rev_f32x4_sse2(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
     // SAFETY: SSE2 is in every x86-64 target's baseline (`cfg(target_feature = "sse2")` holds
     // on x86-64), so the kernel's one required feature is present on any machine this runs on.

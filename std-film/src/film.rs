@@ -3,7 +3,6 @@
 use crate::tile::{FilmTile, Pixel};
 use crate::weights::Weights;
 use crate::{Bounds, Error, Image};
-use std::collections::BTreeMap;
 use std::sync::Arc;
 
 /// How a [`Film`] is set up.
@@ -141,7 +140,9 @@ pub struct Film {
     pixels: Vec<Pixel>,
     splats: Vec<[f64; 3]>,
     next_tile: usize,
-    pending: BTreeMap<usize, FilmTile>,
+    /// Tiles that arrived ahead of `next_tile`, by index, in arrival order (few: a plain list
+    /// keeps the ordered-map code out of small builds such as the WebAssembly explorer).
+    pending: Vec<(usize, FilmTile)>,
     stats: FilmStats,
 }
 
@@ -193,7 +194,7 @@ impl Film {
             // Allocated when the first tile with splats is merged.
             splats: Vec::new(),
             next_tile: 0,
-            pending: BTreeMap::new(),
+            pending: Vec::new(),
             stats: FilmStats::default(),
         })
     }
@@ -275,11 +276,12 @@ impl Film {
                 "tile {index} was made by another film"
             )));
         }
-        if index < self.next_tile || self.pending.contains_key(&index) {
+        if index < self.next_tile || self.pending.iter().any(|(i, _)| *i == index) {
             return Err(Error::Config(format!("tile {index} merged twice")));
         }
-        self.pending.insert(index, tile);
-        while let Some(tile) = self.pending.remove(&self.next_tile) {
+        self.pending.push((index, tile));
+        while let Some(at) = self.pending.iter().position(|(i, _)| *i == self.next_tile) {
+            let (_, tile) = self.pending.swap_remove(at);
             self.apply(&tile);
             self.next_tile += 1;
         }
@@ -323,8 +325,8 @@ impl Film {
 
     /// Applies held tiles in index order, whatever gaps remain.
     fn flush(&mut self) {
-        let pending = std::mem::take(&mut self.pending);
-        for (index, tile) in pending {
+        while let Some(at) = (0..self.pending.len()).min_by_key(|&k| self.pending[k].0) {
+            let (index, tile) = self.pending.swap_remove(at);
             self.apply(&tile);
             self.next_tile = index + 1;
         }

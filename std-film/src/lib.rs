@@ -29,7 +29,7 @@ pub use error::Error;
 pub use film::{Film, FilmConfig, FilmStats, ResolveStats, TileSpec};
 pub use image::Image;
 pub use output::{ImageFormat, write_image, write_image_file};
-pub use render::{TileContext, render_tiles};
+pub use render::{CAN_START_THREADS, TileContext, render_tiles};
 pub use tile::{FilmTile, Pixel};
 
 /// Film-space centre of pixel `(x, y)`: pixel `(x, y)` covers `[x, x+1) × [y, y+1)`.

@@ -64,8 +64,18 @@ impl TileContext {
     }
 }
 
+/// Whether this target can start threads. It cannot on `wasm32-unknown-unknown`; there
+/// [`render_tiles`] and the command line's parallel studies run on the calling thread whatever
+/// thread count they are given, and the code that would start threads is not compiled in.
+///
+/// ```
+/// assert_eq!(nyquist_film::CAN_START_THREADS, !cfg!(target_arch = "wasm32"));
+/// ```
+pub const CAN_START_THREADS: bool = !cfg!(all(target_arch = "wasm32", target_os = "unknown"));
+
 /// Renders every tile of `film` on `threads` worker threads (std scoped threads) and merges
-/// them.
+/// them. Where threads cannot be started ([`CAN_START_THREADS`]) it renders on the calling
+/// thread, with the same result.
 ///
 /// `render(tile, ctx)` is called once per tile with a fresh [`FilmTile`] and its
 /// [`TileContext`] (index, tile count, bounds and a per-tile seed), from which the closure builds
@@ -154,9 +164,9 @@ pub fn render_tiles(
         render(&mut tile, &ctx);
         Some(tile)
     };
-    if threads == 1 {
+    if threads == 1 || !CAN_START_THREADS {
         // On the calling thread, with no thread spawned: the same tiles merged in the same
-        // order (and the only way where threads cannot be started, as in WebAssembly).
+        // order.
         let mut done = 0;
         while let Some(tile) = render_tile(done) {
             film.merge(tile)?;

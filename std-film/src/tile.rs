@@ -75,7 +75,7 @@ impl Geometry {
 
     /// The footprint along axis `a` of a sample at the finite position `p`: film pixels
     /// `⌈p − ½ − r⌉ … ⌊p − ½ + r⌋` clipped to the stored ones, in tile-local indices.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn span(&self, p: f64, a: usize) -> Span {
         // c: the sample's local position (local pixel i's centre is i − c away); q: the
         // footprint's left edge. Clamping q keeps the conversions exact for any finite p (even
@@ -99,20 +99,20 @@ impl Geometry {
 }
 
 /// `max` for operands that are not NaN: one `maxsd` (`f64::max` adds NaN handling).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn max(a: f64, b: f64) -> f64 {
     if a > b { a } else { b }
 }
 
 /// `min` for operands that are not NaN.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn min(a: f64, b: f64) -> f64 {
     if a < b { a } else { b }
 }
 
 /// An integer-valued `f64` below 2³¹ in magnitude as `i64`, by its bits after adding
 /// [`ROUND_MAGIC`]: two instructions where `as i64` (saturating, NaN → 0) takes five.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn int(v: f64) -> i64 {
     i64::from((v + ROUND_MAGIC).to_bits() as u32 as i32)
 }
@@ -145,13 +145,13 @@ struct Footprint {
 impl Footprint {
     /// Offset from the sample to the centre of local column `i`, formed in `f64` and rounded
     /// once.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn dx(&self, i: usize) -> f32 {
         // i64 → f64 is one instruction (cvtsi2sd); usize → f64 is several.
         (i as i64 as f64 - self.c[0]) as f32
     }
     /// Offset from the sample to the centre of local row `j`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn dy(&self, j: usize) -> f32 {
         (j as i64 as f64 - self.c[1]) as f32
     }
@@ -164,14 +164,14 @@ const ROUND_MAGIC: f64 = 6_755_399_441_055_744.0;
 /// `⌊v⌋` for `|v| < 2⁵¹` (the clamped footprint ends), as a float, without a libm call (no
 /// SSE4.1 `roundsd` on baseline x86-64): round to nearest by [`ROUND_MAGIC`], then step down
 /// when that went up.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn floor_f64(v: f64) -> f64 {
     let r = (v + ROUND_MAGIC) - ROUND_MAGIC;
     r - if r > v { 1.0 } else { 0.0 }
 }
 
 /// `⌈v⌉` for `|v| < 2⁵¹`, as a float.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn ceil_f64(v: f64) -> f64 {
     let r = (v + ROUND_MAGIC) - ROUND_MAGIC;
     r + if r < v { 1.0 } else { 0.0 }
@@ -179,7 +179,7 @@ fn ceil_f64(v: f64) -> f64 {
 
 /// The footprint's rows of the tile's row-major storage (`stride` columns): `rows[j·stride + i]`
 /// is the pixel at column `x0 + i`, row `y0 + j`. One bounds check for the whole footprint.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn footprint_rows<'a>(
     pixels: &'a mut [Pixel],
     stride: usize,
@@ -192,7 +192,7 @@ fn footprint_rows<'a>(
 
 /// The weight of a one-pixel footprint (the box filter, nearly always): the filter's constant,
 /// or one tap per axis.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn single_weight(fp: &Footprint, t: &PhaseTable) -> f64 {
     match t.constant() {
         Some(c) => f64::from(c),
@@ -205,7 +205,7 @@ fn single_weight(fp: &Footprint, t: &PhaseTable) -> f64 {
 
 /// Adds `f·l` and `f` to every pixel of the footprint (its `rows`) with weights from a phase
 /// table: one interpolated row of taps per axis, then the outer product.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phase_footprint(rows: &mut [Pixel], stride: usize, fp: &Footprint, l: [f64; 3], t: &PhaseTable) {
     let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
     let mut fx = [0.0f32; MAX_TAPS];
@@ -229,7 +229,7 @@ fn phase_footprint(rows: &mut [Pixel], stride: usize, fp: &Footprint, l: [f64; 3
 /// Adds `f·l` and `f` to every pixel of the footprint, `f` from `w`. Separable sources take
 /// `nx + ny` 1D weights (once per column and row) and an outer product; the others one `xy`
 /// per pixel.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn accumulate<W: WeightSource + ?Sized>(
     rows: &mut [Pixel],
     stride: usize,
@@ -269,7 +269,7 @@ fn accumulate<W: WeightSource + ?Sized>(
 /// product of two `f32`s is exact, so finite input keeps the sums finite. The inputs are all
 /// finite exactly when the three products are (∞·0 is NaN), and those exactly when their sum
 /// is (∞ − ∞ is NaN): one test instead of four.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn weighted(rgb: [f32; 3], weight: f32) -> ([f64; 3], bool) {
     let w = f64::from(weight);
     let l = [
@@ -280,7 +280,7 @@ fn weighted(rgb: [f32; 3], weight: f32) -> ([f64; 3], bool) {
     (l, (l[0] + l[1] + l[2]).is_finite())
 }
 
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn add(p: &mut Pixel, f: f64, l: [f64; 3]) {
     p.rgb_sum[0] += f * l[0];
     p.rgb_sum[1] += f * l[1];
@@ -292,7 +292,7 @@ fn add(p: &mut Pixel, f: f64, l: [f64; 3]) {
 /// then per row `p += fy·column`, so the weight is the exact `f64` product `fx·fy` of the two
 /// `f32` factors. Widths up to 8 get a loop unrolled for exactly that width; wider footprints
 /// (up to 32 columns) share one stack buffer.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn outer_product(
     rows: &mut [Pixel],
     stride: usize,
@@ -316,7 +316,7 @@ fn outer_product(
 }
 
 /// The column factors `fx·[l, 1]` of `fx[..n]` (missing ones 0).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn column_factors<const M: usize>(n: usize, fx: &[f32], l: [f64; 3]) -> [[f64; 4]; M] {
     let mut cols = [[0.0f64; 4]; M];
     for (c, &f) in cols[..n.min(M)].iter_mut().zip(fx) {
@@ -327,7 +327,7 @@ fn column_factors<const M: usize>(n: usize, fx: &[f32], l: [f64; 3]) -> [[f64; 4
 }
 
 /// `p += fy·column` for every pixel of a row.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn add_row(row: &mut [Pixel], cols: &[[f64; 4]], fy: f64) {
     for (p, c) in row.iter_mut().zip(cols) {
         p.rgb_sum[0] += fy * c[0];
@@ -338,7 +338,7 @@ fn add_row(row: &mut [Pixel], cols: &[[f64; 4]], fy: f64) {
 }
 
 /// [`outer_product`] for exactly `N` columns.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn columns<const N: usize>(rows: &mut [Pixel], stride: usize, fx: &[f32], fy: &[f32], l: [f64; 3]) {
     let cols = column_factors::<N>(N, fx, l);
     for (j, &f) in fy.iter().enumerate() {
@@ -354,7 +354,7 @@ fn columns<const N: usize>(rows: &mut [Pixel], stride: usize, fx: &[f32], fy: &[
 }
 
 /// [`outer_product`] for 9 to 32 columns.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn wide_columns(rows: &mut [Pixel], stride: usize, nx: usize, fx: &[f32], fy: &[f32], l: [f64; 3]) {
     let nx = nx.min(32);
     let cols = column_factors::<32>(nx, fx, l);
@@ -421,7 +421,7 @@ struct Block4 {
 /// start `⌈q⌉` and end `⌊q + 2r⌋` (tested without the floor: four pixels exactly when
 /// `⌈q⌉ + 3 ≤ q + 2r < ⌈q⌉ + 4`), the same phase, and the first four taps of the same table row
 /// ([`PhaseTable::row4`]).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn block4(g: &Geometry, t: &PhaseTable, p: [f32; 2]) -> Option<Block4> {
     // As in `Geometry::span`, whose clamps change nothing for the footprints taken here.
     let c = [f64::from(p[0]) - g.origin[0], f64::from(p[1]) - g.origin[1]];
@@ -626,7 +626,7 @@ impl FilmTile {
     /// assert_eq!(film.pixel(1, 1).unwrap().weight_sum, 4.0);
     /// assert_eq!(film.pixel(1, 1).unwrap().rgb_sum, [2.0, 4.0, 6.0]);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
         match self.fast {
             FastPath::OnePixel {
@@ -650,7 +650,7 @@ impl FilmTile {
     /// [`FilmTile::add_sample`] for [`FastPath::Block4`]: checks and counts the sample now
     /// ([`FilmTile::prepare`]), holds it in the queue ([`Queued`]), and adds the queue when it
     /// is full.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn enqueue(&mut self, p: [f32; 2], rgb: [f32; 3], weight: f32) {
         let Some(l) = self.prepare(p, rgb, weight) else {
             return;
@@ -697,7 +697,7 @@ impl FilmTile {
     /// path (non-finite input, a pixel edge, the border of the stored area). Same sums as the
     /// general path, bit for bit: the pixel is `⌊p − corner⌋` per axis, reached when its centre
     /// is within the radius (both exact in `f64`), and it gets `filter_weight · (rgb · w)`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn add_one_pixel<const NARROW: bool>(
         &mut self,
         filter_weight: f64,
@@ -807,7 +807,7 @@ impl FilmTile {
 
     /// Checks, counts and clamps a sample: its `weight·rgb` in `f64`, or `None` when it is
     /// rejected.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn prepare(&mut self, p: [f32; 2], rgb: [f32; 3], weight: f32) -> Option<[f64; 3]> {
         let (l, finite) = weighted(rgb, weight);
         if !(finite & p[0].is_finite() & p[1].is_finite()) {
@@ -868,7 +868,7 @@ impl FilmTile {
     /// The stored pixels reached by a sample at the finite position `p` (film pixels
     /// `⌈p − ½ − r⌉ … ⌊p − ½ + r⌋` per axis, clipped), in tile-local indices. `None` when nothing
     /// is reached.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn footprint(&self, p: [f32; 2]) -> Option<Footprint> {
         let g = &self.geometry;
         let (x, y) = (g.span(f64::from(p[0]), 0), g.span(f64::from(p[1]), 1));

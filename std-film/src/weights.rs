@@ -81,38 +81,38 @@ pub(crate) trait WeightSource {
 }
 
 impl<const N: usize> WeightSource for SeparableTable<N> {
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn separable(&self) -> bool {
         true
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn x(&self, d: f32) -> f32 {
         self.weight_1d(Axis::X, d)
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn y(&self, d: f32) -> f32 {
         self.weight_1d(Axis::Y, d)
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn xy(&self, dx: f32, dy: f32) -> f32 {
         self.weight(dx, dy)
     }
 }
 
 impl<const N: usize> WeightSource for Table2d<N> {
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn separable(&self) -> bool {
         false
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn x(&self, _: f32) -> f32 {
         1.0
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn y(&self, _: f32) -> f32 {
         1.0
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn xy(&self, dx: f32, dy: f32) -> f32 {
         self.weight(dx, dy)
     }
@@ -125,19 +125,19 @@ pub(crate) struct Direct<'a, F: ?Sized> {
 }
 
 impl<F: Filter + ?Sized> WeightSource for Direct<'_, F> {
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn separable(&self) -> bool {
         self.separable
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn x(&self, d: f32) -> f32 {
         self.filter.eval_1d(Axis::X, d).unwrap_or(0.0)
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn y(&self, d: f32) -> f32 {
         self.filter.eval_1d(Axis::Y, d).unwrap_or(0.0)
     }
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn xy(&self, dx: f32, dy: f32) -> f32 {
         self.filter.eval(dx, dy)
     }

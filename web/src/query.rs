@@ -2,12 +2,12 @@
 //! typed getters whose errors name the parameter, the value and the limit.
 
 use anyhow::{Result, anyhow, bail};
-use std::collections::BTreeMap;
 
 /// Decoded `key=value` pairs; every key must be read (see [`Query::finish`]).
 #[derive(Debug)]
 pub struct Query {
-    values: BTreeMap<String, String>,
+    /// In the order given (a handful: a list keeps the ordered-map code out of the module).
+    values: Vec<(String, String)>,
     used: std::cell::RefCell<Vec<String>>,
 }
 
@@ -34,7 +34,7 @@ impl Query {
     /// # Errors
     /// A bad `%` escape, non-UTF-8 text, or a key given twice.
     pub fn parse(s: &str) -> Result<Query> {
-        let mut values = BTreeMap::new();
+        let mut values: Vec<(String, String)> = Vec::new();
         for pair in s
             .trim_start_matches('?')
             .split('&')
@@ -42,9 +42,10 @@ impl Query {
         {
             let (k, v) = pair.split_once('=').unwrap_or((pair, ""));
             let k = decode(k)?;
-            if values.insert(k.clone(), decode(v)?).is_some() {
+            if values.iter().any(|(seen, _)| *seen == k) {
                 bail!("{k}: given twice");
             }
+            values.push((k, decode(v)?));
         }
         Ok(Query {
             values,
@@ -55,8 +56,9 @@ impl Query {
     fn get(&self, key: &str) -> Option<&str> {
         self.used.borrow_mut().push(key.to_owned());
         self.values
-            .get(key)
-            .map(String::as_str)
+            .iter()
+            .find(|(k, _)| k == key)
+            .map(|(_, v)| v.as_str())
             .filter(|v| !v.is_empty())
     }
 
@@ -108,7 +110,12 @@ impl Query {
     /// `key: unknown parameter`.
     pub fn finish(&self) -> Result<()> {
         let used = self.used.borrow();
-        match self.values.keys().find(|k| !used.contains(k)) {
+        match self
+            .values
+            .iter()
+            .map(|(k, _)| k)
+            .find(|k| !used.contains(k))
+        {
             Some(k) => bail!("{k}: unknown parameter"),
             None => Ok(()),
         }

@@ -41,7 +41,7 @@ fn double_sum(points: &PointSet<'_>, kernel: impl Fn(&[f64], &[f64]) -> f64) -> 
     }
 }
 
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn double_sum_fixed<const D: usize>(c: &[f64], kernel: &impl Fn(&[f64], &[f64]) -> f64) -> f64 {
     let (pts, _) = c.as_chunks::<D>();
     let mut total = Neumaier::default();
@@ -64,7 +64,7 @@ fn double_sum_fixed<const D: usize>(c: &[f64], kernel: &impl Fn(&[f64], &[f64]) 
 }
 
 /// `max(a, b)` for non-NaN inputs, written so it vectorises (`f64::max` carries NaN rules).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn max2(a: f64, b: f64) -> f64 {
     if a > b { a } else { b }
 }

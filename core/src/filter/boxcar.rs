@@ -38,7 +38,7 @@ impl Boxcar {
         })
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn axis(r: f32, x: f32) -> f32 {
         // NaN and ±∞ fail the comparison: weight 0.
         if x.abs() <= r { 1.0 } else { 0.0 }

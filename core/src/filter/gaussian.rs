@@ -78,7 +78,7 @@ impl Gaussian {
         self.alpha
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn axis(&self, i: usize, x: f32) -> f32 {
         let v = (math::exp_f32(-self.alpha * x * x) - self.offset[i]).max(0.0);
         // Select, not branch; NaN fails the comparison: weight 0.

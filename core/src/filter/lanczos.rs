@@ -20,7 +20,7 @@ const SINC_POLY: [f32; 7] = {
 };
 
 /// `sin(πr)/(πr)` for `|r| ≤ ½` (a little more is fine), as a polynomial in `r²`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn sinc_reduced(r: f32) -> f32 {
     let u = r * r;
     let [c0, c1, c2, c3, c4, c5, c6] = SINC_POLY;
@@ -150,7 +150,7 @@ impl Lanczos {
         self.tau
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn axis(&self, i: usize, x: f32) -> f32 {
         // x·(1/τ) at x = 0 and 1/τ = ∞ is NaN, and sinc(NaN) = 0: keep the window's 1 there.
         let w = sinc(x * self.inv_tau);

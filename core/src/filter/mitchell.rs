@@ -83,7 +83,7 @@ impl Mitchell {
         [self.b, self.c]
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn axis(&self, i: usize, x: f32) -> f32 {
         let ax = x.abs();
         let t = ax * self.scale[i];

@@ -107,7 +107,7 @@ impl PhaseAxis {
     /// clamped to `[0, 1]` (NaN → 0): `j = round(min(64·phase − ½, 63))` by the `1.5·2²³` trick
     /// (no saturating float-to-int conversion), `t = 64·phase − j`. At a stored phase the tie
     /// gives `t = 0` or `t = 1`, both exact.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn cell(phase: f32) -> (usize, f32) {
         let u = (phase * PHASES as f32).max(0.0).min(PHASES as f32);
         let m = (u - 0.5).min((PHASES - 1) as f32) + MAGIC;
@@ -116,13 +116,13 @@ impl PhaseAxis {
     }
 
     /// Rows `j` and `j + 1` (`j < 64`), each [`MAX_TAPS`] long.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn rows(&self, j: usize) -> (&[f32; MAX_TAPS], &[f32; MAX_TAPS]) {
         let j = j.min(PHASES - 1);
         (&self.values[j], &self.values[j + 1])
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn row(&self, phase: f32, out: &mut [f32; MAX_TAPS]) -> usize {
         let (j, t) = Self::cell(phase);
         let (a, b) = self.rows(j);
@@ -137,14 +137,14 @@ impl PhaseAxis {
     }
 
     /// Lanes 0–3 of [`row`](Self::row), computed the same way.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn row4(&self, phase: f32) -> [f32; 4] {
         let (j, t) = Self::cell(phase);
         let (a, b) = self.rows(j);
         lerp4(a, b, t, 0)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn tap(&self, phase: f32, k: usize) -> f32 {
         let (j, t) = Self::cell(phase);
         let (a, b) = self.rows(j);
@@ -159,7 +159,7 @@ impl PhaseAxis {
     /// rounding trick of [`cell`](Self::cell); at a phase of 1 it reads tap `k + 1`'s row 0,
     /// which holds the same value as tap `k`'s row 64. A constant axis (a box) answers its
     /// value, exactly, with no lookup (the interpolation `(1 − t)·c + t·c` can round off `c`).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn weight(&self, d: f32) -> f32 {
         const CELLS: usize = MAX_TAPS * PHASES;
         let inside = d.abs() <= self.radius;
@@ -257,7 +257,7 @@ impl PhaseTable {
     /// assert_eq!(w[..4], [1.0, 1.0, 0.0, 0.0]);
     /// assert_eq!(w[4], 9.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn row(&self, axis: Axis, phase: f32, out: &mut [f32; MAX_TAPS]) -> usize {
         self.axes[axis.index()].row(phase, out)
     }
@@ -274,7 +274,7 @@ impl PhaseTable {
     /// t.row(Axis::Y, 0.3, &mut w);
     /// assert_eq!(t.row4(Axis::Y, 0.3), w[..4]);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn row4(&self, axis: Axis, phase: f32) -> [f32; 4] {
         self.axes[axis.index()].row4(phase)
     }
@@ -290,7 +290,7 @@ impl PhaseTable {
     /// assert_eq!(t.tap(Axis::X, 0.3, 2), w[2]);
     /// assert_eq!(t.tap(Axis::X, 0.3, 99), 0.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn tap(&self, axis: Axis, phase: f32, k: usize) -> f32 {
         self.axes[axis.index()].tap(phase, k)
     }
@@ -327,7 +327,7 @@ impl PhaseTable {
     /// assert_eq!(t.weight_1d(Axis::X, 0.5), 1.0);
     /// assert_eq!(t.weight_1d(Axis::X, 0.51), 0.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> f32 {
         self.axes[axis.index()].weight(d)
     }
@@ -341,7 +341,7 @@ impl PhaseTable {
     /// assert!((t.weight(0.3, -1.1) - g.eval(0.3, -1.1)).abs() < 1e-3);
     /// assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         if let Some(c) = self.constant {
             // What the two constant axes answer, from the header: a box's one-weight
@@ -367,7 +367,7 @@ impl PhaseTable {
     /// t.footprint([-1.75, -1.5], 4, &mut w).unwrap();
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.75 + 3.0, -1.5 + 2.0));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         if let Some(w) = super::table::one_weight(nx, &mut *out) {
             *w = self.weight(d0[0], d0[1]);
@@ -444,7 +444,7 @@ impl PhaseAxis {
     /// Where a footprint whose first pixel is at offset `d0` starts in the taps: the shift
     /// `⌊d0 + r⌋` (0 when the first pixel is the footprint's first) and the phase `c − shift`
     /// at which the tap row is read.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn locate(&self, d0: f32) -> (isize, f32) {
         let s = d0 + self.radius;
         // ⌊s⌋ for |s| < 2²⁴ with the clamp keeping the conversion exact; beyond, every tap is 0.
@@ -460,7 +460,7 @@ impl PhaseAxis {
     /// its [`locate`](Self::locate)d `(shift, phase)`: `out[k]` is the weight of the pixel at
     /// `d0 + i` for `i = k − shift`; returns `shift = ⌊d0 + r⌋` (0 when the first pixel is the
     /// footprint's first).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn factors(&self, d0: f32, (shift, phase): (isize, f32), out: &mut [f32; MAX_TAPS]) -> isize {
         self.row(phase, out);
         // Mask every tap whose pixel is past the radius: |d0 + (k − shift)| > r, with k − shift
@@ -482,7 +482,7 @@ impl PhaseAxis {
     /// Lanes 0–3 of [`factors`](Self::factors) for a footprint at shift 0 (`phase` from
     /// [`locate`](Self::locate)), bit for bit: one 4-lane interpolation and mask instead of the
     /// whole padded row, for footprints of at most four pixels along this axis.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn factors4(&self, d0: f32, phase: f32) -> [f32; 4] {
         let mut out = self.row4(phase);
         // At shift 0, `d0 + r ∈ [0, 1)`: the four pixels lie at `d0 + k ∈ [−r, 4 − r)`, all
@@ -500,7 +500,7 @@ impl PhaseAxis {
 /// Lanes `k … k + 3` (`k ≤ MAX_TAPS − 4`) of two tap rows interpolated at `t`:
 /// `(1 − t)·a + t·b`, exact at `t = 0` and `1`. Plain indices into fixed arrays: no iterator
 /// adapters for the inliner to give up on.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn lerp4(a: &[f32; MAX_TAPS], b: &[f32; MAX_TAPS], t: f32, k: usize) -> [f32; 4] {
     let k = k.min(MAX_TAPS - 4);
     let mut out = [0.0f32; 4];
@@ -522,7 +522,7 @@ const TAP_INDEX: [f32; MAX_TAPS] = {
 };
 
 /// Tap `i + shift` of `f` (0 outside the taps), the weight of footprint pixel `i`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn tap_or_zero(f: &[f32; MAX_TAPS], shift: isize, i: usize) -> f32 {
     let k = (i as isize).wrapping_add(shift);
     if k < 0 {

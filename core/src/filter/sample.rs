@@ -250,7 +250,7 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
 }
 
 /// The table cell `pdf` reads for offset `v` along an axis of radius `r` and cell width `h`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn cell_of<const N: usize>(v: f32, r: f32, h: f32) -> usize {
     (((v + r) / h) as usize).min(N - 1)
 }
@@ -288,7 +288,7 @@ fn snap_into_cell(v: f32, k: usize, r: f32, h: f32) -> f32 {
 
 /// Inverts a CDF (`cdf[N − 1] = 1`, non-decreasing) at `u ∈ [0, 1)`: the cell `k` with
 /// `cdf[k − 1] ≤ u < cdf[k]`, the position `[0, 1)` within it, and its probability.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn invert<const N: usize>(cdf: &[f32; N], u: f32) -> (usize, f32, f32) {
     let k = cdf.partition_point(|&c| c <= u).min(N - 1);
     let lo = if k == 0 { 0.0 } else { cdf[k - 1] };

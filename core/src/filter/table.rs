@@ -132,7 +132,7 @@ pub(super) fn finite_or_zero(v: f32) -> f32 {
 /// between the lookup and 0) keeps the lookup unconditional: LLVM turns a select of loaded
 /// values into a branch, which mispredicts at every footprint edge. Entries are finite and
 /// capped, so the product is exactly ±0 outside.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(super) fn mask(inside: bool) -> f32 {
     if inside { 1.0 } else { 0.0 }
 }
@@ -148,7 +148,7 @@ fn constant_axes(x: &[f32], y: &[f32]) -> Option<[f32; 2]> {
 /// lookups give there, `(c_x·[a_x ≤ r_x])·(c_y·[a_y ≤ r_y])`, exactly `c_x·c_y` inside (a linear
 /// lookup `(1 − t)·c + t·c` can round off `c` by an ulp for `c ≠ 1`; for a box's 1 it is
 /// exact, so there the two agree bit for bit), with no table read.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(super) fn constant_weight(c: [f32; 2], radius: [f32; 2], ax: f32, ay: f32) -> f32 {
     (c[0] * mask(ax <= radius[0])) * (c[1] * mask(ay <= radius[1]))
 }
@@ -172,7 +172,7 @@ struct Grid {
 }
 
 impl Grid {
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     const fn new(n: usize) -> Grid {
         Grid {
             n,
@@ -185,7 +185,7 @@ impl Grid {
     /// Table coordinate of a folded offset `a = |d|`: `min(a · scale, n − 1)`, in `[0, n − 1]`
     /// for every input (NaN and ∞ give `n − 1`; callers mask them out), so the index arithmetic
     /// never sees them. One `minss`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn coord(&self, a: f32, scale: f32) -> f32 {
         let p = a * scale;
         if p < self.last { p } else { self.last }
@@ -196,7 +196,7 @@ impl Grid {
     /// `t = 0` or `k = i − 1`, `t = 1`; `(1 − t)·a + t·b` is exact at both. Sample points sit at
     /// or a rounding error above their index ([`table_point`]), so `t < (n − 1)·2⁻²¹` snaps
     /// to 0. No branches, no bounds on the float side.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn cell(&self, c: f32) -> (usize, f32) {
         let u = c - 0.5;
         let u = if u < self.last_cell {
@@ -213,14 +213,14 @@ impl Grid {
     }
 
     /// Nearest index of coordinate `c ∈ [0, n − 1]`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn nearest(&self, c: f32) -> usize {
         (c + MAGIC).to_bits().wrapping_sub(MAGIC_BITS) as usize
     }
 }
 
 /// 1D lookup at table coordinate `c ∈ [0, n − 1]`; `v.len() == g.n ≥ 2`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn lookup_1d(v: &[f32], g: Grid, c: f32, interp: Interpolation) -> f32 {
     match interp {
         Interpolation::Nearest => v[g.nearest(c)],
@@ -234,7 +234,7 @@ fn lookup_1d(v: &[f32], g: Grid, c: f32, interp: Interpolation) -> f32 {
 }
 
 /// 2D lookup in a row-major `n × n` grid (`v[j·n + i]`, `i` along x).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn lookup_2d(v: &[f32], g: Grid, cx: f32, cy: f32, interp: Interpolation) -> f32 {
     let n = g.n;
     match interp {
@@ -253,7 +253,7 @@ fn lookup_2d(v: &[f32], g: Grid, cx: f32, cy: f32, interp: Interpolation) -> f32
 
 /// One axis of a separable table, masked: the 1D factor at offset `d`, 0 past the radius `r`
 /// and for NaN or ∞ (the comparison fails). A select, not a branch.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn factor(v: &[f32], g: Grid, r: f32, scale: f32, interp: Interpolation, d: f32) -> f32 {
     let a = d.abs();
     let w = lookup_1d(v, g, g.coord(a, scale), interp);
@@ -263,7 +263,7 @@ fn factor(v: &[f32], g: Grid, r: f32, scale: f32, interp: Interpolation, d: f32)
 /// Four 1D factors at once, written stage by stage over `[f32; 4]` so that LLVM's SLP
 /// vectoriser packs the arithmetic into 4-wide SIMD; only the index extraction and the loads
 /// stay scalar. Lane for lane the same operations as [`factor`], so the same values.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn factor4(v: &[f32], g: Grid, r: f32, scale: f32, interp: Interpolation, d: [f32; 4]) -> [f32; 4] {
     let mut a = [0.0f32; 4];
     let mut c = [0.0f32; 4];
@@ -309,7 +309,7 @@ const LANE: [f32; 4] = [0.0, 1.0, 2.0, 3.0];
 /// `f(d0 + i)` into `out[i]`: four at a time through `f4`, the remainder one at a time
 /// through `f1` (the same values). Offsets are `d0 + i` with `i` counted in floats (exact below
 /// 2²⁴): the same rounding as `d0 + i as f32`, without an int-to-float conversion per pixel.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn factors_into(
     d0: f32,
     out: &mut [f32],
@@ -331,7 +331,7 @@ fn factors_into(
 /// `out[j·nx + i] = fx(d0[0] + i) · fy(d0[1] + j)`: `nx + ny` factor evaluations (four at a
 /// time where possible) and one multiply per weight. `out.len()` is a positive multiple of
 /// `nx` (checked by the callers).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn outer_product(
     d0: [f32; 2],
     [nx, ny]: [usize; 2],
@@ -393,7 +393,7 @@ fn outer_product(
 /// `out[j·nx + i] = fx[i] · fy[j]` for a footprint at most 4 wide (`1 ≤ nx ≤ 4`), one row per
 /// `fy` entry while `out` lasts: the rows straight from registers, fully unrolled at width 4.
 /// Shared by the 4 × 4 paths of the table and phase-table footprints.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(super) fn narrow_outer_product(fx: &[f32; 4], fy: &[f32; 4], nx: usize, out: &mut [f32]) {
     if nx == 4 {
         if let Ok(all) = <&mut [[f32; 4]; 4]>::try_from(out.as_chunks_mut::<4>().0) {
@@ -426,7 +426,7 @@ const SMALL_FOOTPRINT: usize = 4;
 /// its general path and that path's set-up: the entry to fill, if `out` is that footprint.
 /// Every other valid footprint has more than one weight (`check_footprint`). (A slot, not a
 /// closure to call: LLVM left such a closure out of line, a call per footprint.)
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(super) fn one_weight(nx: usize, out: &mut [f32]) -> Option<&mut f32> {
     match (out, nx) {
         ([w], 1) => Some(w),
@@ -436,7 +436,7 @@ pub(super) fn one_weight(nx: usize, out: &mut [f32]) -> Option<&mut f32> {
 
 /// `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`, one lookup per weight (2D tables and tiny
 /// footprints). Offsets counted in floats as in [`factors_into`].
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn per_weight(
     d0: [f32; 2],
     [nx, ny]: [usize; 2],
@@ -461,7 +461,7 @@ fn per_weight(
 /// The footprint's length check: `out.len()` a positive multiple of `nx`; returns the row count
 /// `ny`. Square footprints (symmetric filters, the usual case) are recognised by a multiply, so
 /// the film's hot path divides nothing.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(super) fn check_footprint(nx: usize, out: &[f32]) -> Result<usize, Error> {
     let len = out.len();
     if nx != 0 && len != 0 {
@@ -492,7 +492,7 @@ fn check_batch(dx: &[f32], dy: &[f32], out: &[f32]) -> Result<(), Error> {
 }
 
 /// `out[i] = fx(dx[i]) · fy(dy[i])`: four at a time through `f4`, the rest through `f1`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn separable_batch(
     dx: &[f32],
     dy: &[f32],
@@ -593,7 +593,7 @@ impl<const N: usize> SeparableTable<N> {
     /// assert_eq!(t.weight(0.25, -0.5), 1.0);
     /// assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
         // Look up unconditionally (coordinates are clamped), then mask: no branch to mispredict.
@@ -613,7 +613,7 @@ impl<const N: usize> SeparableTable<N> {
     /// let t: SeparableTable = SeparableTable::new(&Triangle::default(), Interpolation::Linear).unwrap();
     /// assert_eq!(t.weight_1d(Axis::X, 0.5) * t.weight_1d(Axis::Y, 1.5), t.weight(0.5, 1.5));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> f32 {
         let a = axis.index();
         let g = const { Grid::new(N) };
@@ -663,7 +663,7 @@ impl<const N: usize> SeparableTable<N> {
     /// t.footprint([-3.6, -3.1], 8, &mut w).unwrap();
     /// assert_eq!(w[5 * 8 + 2], t.weight(-3.6 + 2.0, -3.1 + 5.0));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         if let Some(w) = one_weight(nx, &mut *out) {
             // A constant table (a box) answers its constant, exactly and with no lookup.
@@ -685,7 +685,7 @@ impl<const N: usize> SeparableTable<N> {
                 d0,
                 [nx, ny],
                 out,
-                #[inline(always)]
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
                 |x, y| self.weight(x, y),
             );
             return Ok(());
@@ -698,22 +698,22 @@ impl<const N: usize> SeparableTable<N> {
                 d0,
                 [nx, ny],
                 out,
-                #[inline(always)]
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
                 |d| factor4(vx, g, rx, sx, Interpolation::Nearest, d),
-                #[inline(always)]
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
                 |d| factor(vx, g, rx, sx, Interpolation::Nearest, d),
-                #[inline(always)]
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
                 |d| factor4(vy, g, ry, sy, Interpolation::Nearest, d),
             ),
             Interpolation::Linear => outer_product(
                 d0,
                 [nx, ny],
                 out,
-                #[inline(always)]
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
                 |d| factor4(vx, g, rx, sx, Interpolation::Linear, d),
-                #[inline(always)]
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
                 |d| factor(vx, g, rx, sx, Interpolation::Linear, d),
-                #[inline(always)]
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
                 |d| factor4(vy, g, ry, sy, Interpolation::Linear, d),
             ),
         }
@@ -846,7 +846,7 @@ impl<const N: usize> Table2d<N> {
     /// assert_eq!(t.weight(0.0, 0.0), 4.0);
     /// assert_eq!(t.weight(0.0, -2.5), 0.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
         let inside = mask(ax <= self.radius[0]) * mask(ay <= self.radius[1]);
@@ -889,7 +889,7 @@ impl<const N: usize> Table2d<N> {
     /// t.footprint([-1.5, -1.5], 4, &mut w).unwrap();
     /// assert_eq!(w[4 + 1], t.weight(-0.5, -0.5));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         if let Some(w) = one_weight(nx, &mut *out) {
             *w = self.weight(d0[0], d0[1]);
@@ -906,7 +906,7 @@ impl<const N: usize> Table2d<N> {
             d0,
             [nx, ny],
             out,
-            #[inline(always)]
+            #[cfg_attr(not(feature = "small-code"), inline(always))]
             |x, y| self.weight(x, y),
         );
         Ok(())
@@ -1011,7 +1011,7 @@ impl<const N: usize> FilterTable<N> {
     /// let t: FilterTable = FilterTable::new(&Boxcar::default(), Interpolation::Linear).unwrap();
     /// assert_eq!(t.weight(0.1, 0.2), 1.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         match self {
             FilterTable::Separable(t) => t.weight(dx, dy),
@@ -1055,7 +1055,7 @@ impl<const N: usize> FilterTable<N> {
     /// t.footprint([-1.7, -1.2], 4, &mut w).unwrap();
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         match self {
             FilterTable::Separable(t) => t.footprint(d0, nx, out),
@@ -1071,7 +1071,7 @@ impl<const N: usize> FilterTable<N> {
     /// let t: FilterTable = FilterTable::new(&Boxcar::default(), Interpolation::Linear).unwrap();
     /// assert_eq!(t.weight_1d(Axis::Y, 0.6), Some(0.0));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> Option<f32> {
         match self {
             FilterTable::Separable(t) => Some(t.weight_1d(axis, d)),
@@ -1152,7 +1152,7 @@ impl TableView<'_> {
     /// let t: FilterTable = FilterTable::new(&Lanczos::default(), Interpolation::Linear).unwrap();
     /// assert_eq!(t.view().weight(f32::INFINITY, 0.0), 0.0);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight(&self, dx: f32, dy: f32) -> f32 {
         let (ax, ay) = (dx.abs(), dy.abs());
         let (mx, my) = (mask(ax <= self.radius[0]), mask(ay <= self.radius[1]));
@@ -1177,7 +1177,7 @@ impl TableView<'_> {
     /// let w = v.weight_1d(Axis::X, 0.3).unwrap() * v.weight_1d(Axis::Y, 1.2).unwrap();
     /// assert_eq!(w, v.weight(0.3, 1.2));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> Option<f32> {
         let ViewData::Separable(x, y) = self.data else {
             return None;
@@ -1269,7 +1269,7 @@ impl TableView<'_> {
     /// t.view().footprint([-1.7, -1.2], 4, &mut w).unwrap();
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         if let Some(w) = one_weight(nx, &mut *out) {
             // A constant table (a box) answers its constant, exactly and with no lookup.
@@ -1292,7 +1292,7 @@ impl TableView<'_> {
                     d0,
                     [nx, ny],
                     out,
-                    #[inline(always)]
+                    #[cfg_attr(not(feature = "small-code"), inline(always))]
                     |x, y| self.weight(x, y),
                 );
             }
@@ -1304,22 +1304,22 @@ impl TableView<'_> {
                         d0,
                         [nx, ny],
                         out,
-                        #[inline(always)]
+                        #[cfg_attr(not(feature = "small-code"), inline(always))]
                         |d| factor4(vx, g, rx, sx, Interpolation::Nearest, d),
-                        #[inline(always)]
+                        #[cfg_attr(not(feature = "small-code"), inline(always))]
                         |d| factor(vx, g, rx, sx, Interpolation::Nearest, d),
-                        #[inline(always)]
+                        #[cfg_attr(not(feature = "small-code"), inline(always))]
                         |d| factor4(vy, g, ry, sy, Interpolation::Nearest, d),
                     ),
                     Interpolation::Linear => outer_product(
                         d0,
                         [nx, ny],
                         out,
-                        #[inline(always)]
+                        #[cfg_attr(not(feature = "small-code"), inline(always))]
                         |d| factor4(vx, g, rx, sx, Interpolation::Linear, d),
-                        #[inline(always)]
+                        #[cfg_attr(not(feature = "small-code"), inline(always))]
                         |d| factor(vx, g, rx, sx, Interpolation::Linear, d),
-                        #[inline(always)]
+                        #[cfg_attr(not(feature = "small-code"), inline(always))]
                         |d| factor4(vy, g, ry, sy, Interpolation::Linear, d),
                     ),
                 }

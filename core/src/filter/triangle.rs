@@ -37,7 +37,7 @@ impl Triangle {
         })
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn axis(r: f32, x: f32) -> f32 {
         let d = r - x.abs();
         // NaN (and −∞ for infinite x) fail `d > 0`: weight 0.

@@ -449,7 +449,7 @@ const TABLE_DIMS: usize = {
 
 /// The class `⌈bit_len(a)/4⌉` of an index below 2³² (its length in nibbles), an index into
 /// [`FastBase::class`].
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn index_class(a: u64) -> usize {
     ((bit_len(a) + 3) >> 2).min(CLASSES - 1)
 }
@@ -458,7 +458,7 @@ fn index_class(a: u64) -> usize {
 /// fast path and the incremental fill use, so they agree bit for bit. `R' < 2⁴⁴` is exact in
 /// `f64`; the product is within 2⁻⁵² relative, far below `f32`'s rounding step, so the result
 /// is within 1 ulp.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn narrow(rev: f64, inv: f64) -> f32 {
     ((rev * inv) as f32).min(ONE_MINUS_EPSILON)
 }
@@ -472,7 +472,7 @@ fn narrow(rev: f64, inv: f64) -> f32 {
 /// more significant), split by an exact multiply-shift `d = ⌊D·⌈2⁴⁰/b⌉ / 2⁴⁰⌋` (exact because
 /// `D < b² ` and `b³ < 2⁴⁰`), and the swapped pair `d + d'·b = b·D − (b² − 1)·d` is added at its
 /// weight.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn reverse_chunk(info: &BaseInfo, x: u64, n: u32, magic: u64) -> u64 {
     let (b, b2, split) = (info.b, info.b2, info.split);
     // y = x/bⁿ as a 64-bit fraction (no overflow: x·magic < 2⁶⁴ because b²ⁿ < 2⁶⁴).
@@ -498,13 +498,13 @@ fn reverse_chunk(info: &BaseInfo, x: u64, n: u32, magic: u64) -> u64 {
 }
 
 /// Bit length of `x` (0 for 0).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn bit_len(x: u64) -> usize {
     (64 - x.leading_zeros()) as usize
 }
 
 /// Reversed digits of a single chunk `x < b^k`, and the row (`off + n`) of its digit count.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn single_chunk(d: usize, info: &BaseInfo, x: u64) -> (u64, &'static Row) {
     let n = u32::from(DIGITS[d][bit_len(x)]);
     let row = &ROW[(info.off + n) as usize];
@@ -588,7 +588,7 @@ pub(crate) fn ratio_f64(num: u128, den: u128) -> f64 {
 
 /// Φ₂(a) for `a < 2³²`: the 32-bit reversal, rounded once to `f32` (the scaling by 2⁻³² is
 /// exact), clamped below 1. Simple enough for the compiler to vectorise over a run of indices.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn base2_u32(a: u32) -> f32 {
     let x = a.reverse_bits() as f32 * (1.0 / 4_294_967_296.0);
     // Not NaN, so a plain comparison (one `minps` when vectorised) is the clamp.
@@ -600,7 +600,7 @@ fn base2_u32(a: u32) -> f32 {
 }
 
 /// Φ₂(a) for any `a`, correctly rounded to `f32`, clamped below 1: `f32` arithmetic only.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn phi2(a: u64) -> f32 {
     if a >> 32 == 0 {
         // The usual case: a 32-bit reversal, exactly representable before one rounding.
@@ -687,7 +687,7 @@ pub fn radical_inverse(dim: u32, a: u64) -> f32 {
 
 /// [`radical_inverse`], always inlined: with `dim` a constant the base's table reads fold away
 /// (a sampler's fixed camera dimensions).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn radical_inverse_inlined(dim: u32, a: u64) -> f32 {
     let d = (dim % PRIME_COUNT) as usize;
     if d == 0 {
@@ -839,7 +839,7 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
 
 /// `out[i] = Φ(a)` in `bases[i]`, every one with a table and `a` below its `big`, `a` of class
 /// `C`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn table_lane<const C: usize>(bases: &[FastBase], a: u64, out: &mut [f32]) {
     for (x, fast) in out.iter_mut().zip(bases) {
         *x = phi_table_class(fast, C, a);
@@ -854,13 +854,13 @@ fn table_lane<const C: usize>(bases: &[FastBase], a: u64, out: &mut [f32]) {
 /// floating point beside the integer multiplier, and its only loop-carried chain is one add.
 /// The step count comes from the index's length in nibbles ([`FastBase`]), so the loop exit
 /// is predictable.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_fast(f: &FastBase, a: u64) -> f32 {
     phi_fast_class(f, index_class(a), a)
 }
 
 /// [`phi_fast`] with `a`'s [`index_class`] already known.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
     if f.chunk == f.b {
         // No table: one digit per step, each its own reversal.
@@ -879,7 +879,7 @@ fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
 }
 
 /// [`phi_fast_class`] for a base with a digit-reversal table (`chunk > b`).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_table_class(f: &FastBase, class: usize, a: u64) -> f32 {
     let class = &f.class[class];
     let y = a.wrapping_mul(class.magic);

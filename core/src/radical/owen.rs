@@ -40,7 +40,7 @@ const LEVEL_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
 const PREFIX_MUL: u64 = 0x517c_c1b7_2722_0a95;
 
 /// The hash that chooses the permutation of node (`level`, `prefix = a mod b^level`).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn node_hash(key: u64, level: u64, prefix: u64) -> u64 {
     mix64((key ^ prefix.wrapping_mul(PREFIX_MUL)).wrapping_add(level.wrapping_mul(LEVEL_STEP)))
 }
@@ -62,7 +62,7 @@ struct Digits<const AFFINE: bool> {
 }
 
 impl<const AFFINE: bool> Digits<AFFINE> {
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn new(d: usize, a: u64, seed: u64) -> Self {
         let info = &BASES[d];
         let tag = if AFFINE { TAG_AFFINE } else { TAG_UNIFORM };
@@ -77,7 +77,7 @@ impl<const AFFINE: bool> Digits<AFFINE> {
         }
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn next_digit(&mut self) -> u64 {
         let (b, rest) = (self.b, self.rest);
         let (next, digit) = if rest == 0 {

@@ -203,7 +203,7 @@ impl HaltonSampler {
         }
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, dim: u32) -> f32 {
         let dim = dim % 1024;
         match dim {
@@ -238,7 +238,7 @@ impl Sampler for HaltonSampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -260,7 +260,7 @@ impl Sampler for HaltonSampler {
     super::global_point_dimensions!();
 
     /// The default's values.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
         self.start_pixel_sample(pixel, sample_index, 0);
         let p = [self.sample(0), self.sample(1)];

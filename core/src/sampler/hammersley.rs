@@ -127,7 +127,7 @@ impl Sampler for HammersleySampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         let r = self.row_offset(pixel[1], sample_index);
         self.k = u64::from(pixel[0] % self.width) * self.column + r;

@@ -36,21 +36,21 @@
 /// order, and the pixel sample is always dimensions 0 and 1.
 macro_rules! global_point_dimensions {
     () => {
-        #[inline(always)]
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
         fn get_1d(&mut self) -> f32 {
             let d = self.dim;
             self.dim = self.dim.wrapping_add(1);
             self.sample(d)
         }
 
-        #[inline(always)]
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
         fn get_2d(&mut self) -> [f32; 2] {
             let d = self.dim;
             self.dim = self.dim.wrapping_add(2);
             [self.sample(d), self.sample(d.wrapping_add(1))]
         }
 
-        #[inline(always)]
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
         fn get_pixel_2d(&mut self) -> [f32; 2] {
             self.dim = self.dim.max(2);
             [self.sample(0), self.sample(1)]
@@ -297,7 +297,7 @@ pub trait Sampler {
     /// let p = s.get_pixel_2d();
     /// assert_eq!((c.p_film, c.time), ([3.0 + p[0], 5.0 + p[1]], s.get_1d()));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
         camera_sample_by_parts(self, pixel, sample_index)
     }
@@ -362,7 +362,7 @@ pub struct CameraSample {
 /// assert!(c.p_film[0] < 1.0 && c.p_film[1] < 1.0);
 /// assert!((0.0..1.0).contains(&s.get_1d())); // dimension 5
 /// ```
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub fn camera_sample<S: Sampler + ?Sized>(
     s: &mut S,
     pixel: [u32; 2],
@@ -372,7 +372,7 @@ pub fn camera_sample<S: Sampler + ?Sized>(
 }
 
 /// [`Sampler::camera_sample`]'s default, kept apart so that tests can hold every override to it.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn camera_sample_by_parts<S: Sampler + ?Sized>(
     s: &mut S,
     pixel: [u32; 2],
@@ -421,7 +421,7 @@ pub fn film_coordinate(pixel: u32, offset: f32) -> f32 {
 }
 
 /// [`film_coordinate`], under the short name the samplers use.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn film(pixel: u32, offset: f32) -> f32 {
     film_coordinate(pixel, offset)
 }

@@ -106,7 +106,7 @@ impl OwenSobolSampler {
         self.seed
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, dim: u32) -> f32 {
         owen_sobol_rev_f32(self.r, dim, self.seeds.get(dim))
     }
@@ -128,7 +128,7 @@ impl Sampler for OwenSobolSampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if self.pixel != Some(pixel) {
             self.pixel = Some(pixel);
@@ -148,7 +148,7 @@ impl Sampler for OwenSobolSampler {
     super::global_point_dimensions!();
 
     /// The default's values, the five camera dimensions straight from the cached seeds.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
         self.start_pixel_sample(pixel, sample_index, 0);
         let v: [f32; 5] =

@@ -25,7 +25,7 @@ struct Keys {
 impl Keys {
     /// Keys of request `request` (`2d` for the pair at dimension `d`, `2d + 1` for the 1D value
     /// there: the two kinds never share keys) of the pixel whose key is `pixel_key`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn new(pixel_key: u64, request: u64) -> Keys {
         let h = mix64(pixel_key ^ request.wrapping_mul(REQUEST_STEP));
         let g = mix64(h ^ 0x706d_6a30_3279);
@@ -39,18 +39,18 @@ impl Keys {
     /// The table row of sample `index`: Burley's nested uniform shuffle of the 16-bit index
     /// (a fast Owen scramble of the index read as a fraction), which sends the indices
     /// `0..2^k` onto one aligned block of `2^k` rows for every `k ≤ 16`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn row(&self, index: u32) -> usize {
         (owen_keyed(index & MASK, self.shuffle) & MASK) as usize
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn point(&self, index: u32) -> [f32; 2] {
         let [x, y] = PMJ02_POINTS[self.row(index)];
         [owen_keyed_f32(x, self.x), owen_keyed_f32(y, self.y)]
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value(&self, index: u32) -> f32 {
         owen_keyed_f32(PMJ02_POINTS[self.row(index)][0], self.x)
     }
@@ -155,7 +155,7 @@ impl Pmj02Sampler {
         self.seed
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn keys(&self, request: u64) -> Keys {
         match request {
             0 => self.camera[0],
@@ -171,7 +171,7 @@ impl Sampler for Pmj02Sampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -182,21 +182,21 @@ impl Sampler for Pmj02Sampler {
         self.dim = dim;
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_1d(&mut self) -> f32 {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(1);
         self.keys(2 * u64::from(d) + 1).value(self.index)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
         self.keys(2 * u64::from(d)).point(self.index)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.camera[0].point(self.index)

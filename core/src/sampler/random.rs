@@ -78,7 +78,7 @@ impl Sampler for RandomSampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -91,7 +91,7 @@ impl Sampler for RandomSampler {
         self.rng = self.at(dim);
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_1d(&mut self) -> f32 {
         let v = uniform_f32(&mut self.rng);
         self.dim = self.dim.wrapping_add(1);
@@ -102,13 +102,13 @@ impl Sampler for RandomSampler {
         v
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_2d(&mut self) -> [f32; 2] {
         let u = self.get_1d();
         [u, self.get_1d()]
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         if self.dim == 0 {
             // The cursor is already at dimension 0 (as after `camera_sample`'s start).

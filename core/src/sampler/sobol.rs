@@ -235,7 +235,7 @@ impl SobolSampler {
 
     /// The sample's number in the pixel (`sample_index mod spp`) and the index bits it sets
     /// above the pixel's `2m` (0 when `2m ≥ 32`).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample_bits(&self, sample_index: u32) -> (u32, u32) {
         let s = if sample_index < self.spp {
             sample_index
@@ -364,7 +364,7 @@ impl Sampler for SobolSampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         // Equal to `sequence_index(pixel, sample_index)`, split into a per-pixel and a
         // per-sample share (both linear over GF(2)).

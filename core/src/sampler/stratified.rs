@@ -6,7 +6,7 @@ use crate::hash::{ArrayOrder, Permutation, mix64, permute, unit_f32};
 use crate::math::ONE_MINUS_EPSILON;
 
 /// `x ≥ 0` (finite by construction here) kept below 1: one `minss`, no branch.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn below_one(x: f32) -> f32 {
     x.min(ONE_MINUS_EPSILON)
 }
@@ -180,7 +180,7 @@ impl StratifiedSampler {
 
     /// This sample's stratum in dimension `dim`: a per-(pixel, dim) permutation of the sample
     /// index; dimension 0 (the image sample) needs none and takes `index mod spp`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn stratum(&self, dim: u32) -> u32 {
         if dim == 0 {
             return if self.index < self.spp {
@@ -213,7 +213,7 @@ impl StratifiedSampler {
     }
 
     /// The point of grid stratum `s` at jitter `[jx, jy]` within its cell.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn cell_value(&self, s: u32, [jx, jy]: [f32; 2]) -> [f32; 2] {
         let (cx, cy) = self.cell(s);
         [
@@ -223,7 +223,7 @@ impl StratifiedSampler {
     }
 
     /// The value of 1D stratum `s` (of `spp`) at jitter `j` within it.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn stratum_value(&self, s: u32, j: f32) -> f32 {
         below_one((s as f32 + j) * self.inv[2])
     }
@@ -252,7 +252,7 @@ impl Sampler for StratifiedSampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -265,21 +265,21 @@ impl Sampler for StratifiedSampler {
         self.dim = dim;
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_1d(&mut self) -> f32 {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(1);
         self.stratum_value(self.stratum(dim), self.jitters(dim)[0])
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_2d(&mut self) -> [f32; 2] {
         let dim = self.dim;
         self.dim = self.dim.wrapping_add(2);
         self.value_2d(dim)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.value_2d(0)
@@ -288,7 +288,7 @@ impl Sampler for StratifiedSampler {
     /// The default's values with time and lens from one hash and one jitter-mode test (the
     /// separate calls hash twice: the compiler does not merge the two hashes across the mode
     /// branches).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
         self.start_pixel_sample(pixel, sample_index, 0);
         let p = self.value_2d(0);

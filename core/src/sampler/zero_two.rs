@@ -177,7 +177,7 @@ impl Sampler for ZeroTwoSampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if pixel != self.pixel {
             self.pixel = pixel;
@@ -188,7 +188,7 @@ impl Sampler for ZeroTwoSampler {
         self.dim = dim;
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_1d(&mut self) -> f32 {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(1);
@@ -196,14 +196,14 @@ impl Sampler for ZeroTwoSampler {
         self.point(d | 0x8000_0000)[0]
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
         self.point(d)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.point(0)

@@ -230,7 +230,7 @@ impl ZSobolSampler {
     }
 
     /// Digits `from .. to` of `morton` (base-4 digit `i` at bit `2i + odd`), permuted.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn permute_digits(&self, morton: u64, key: u64, from: u32, to: u32) -> u64 {
         let mut out = 0u64;
         let mut i = to;
@@ -247,7 +247,7 @@ impl ZSobolSampler {
     /// pixel word `w` ([`pixel_word`]): the sample's digits (base 4, and the last base-2 one
     /// when `log₂ spp` is odd), each permuted by a multiplicative hash of `w` and the sample
     /// digits above it — one 64-bit hash per pixel and request instead of one per digit.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn finish_index(&self, morton: u64, w: u64, prefix: u64) -> u32 {
         let sample = morton & u64::from(self.spp - 1);
         let mut index = prefix;
@@ -348,7 +348,7 @@ impl ZSobolSampler {
     }
 
     /// [`ZSobolSampler::finish_index`]'s sample bits through the tables of camera request `k`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn tabled_sample_bits(&self, k: usize, sample: u64) -> u64 {
         let bits = u64::from(
             self.sample_bits[k][(sample >> self.odd) as usize & (TABLE_SPP as usize - 1)],
@@ -361,7 +361,7 @@ impl ZSobolSampler {
     }
 
     /// The index for the request at `dim`, through the cached pixel digits where there are some.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn index(&self, dim: u32) -> (u32, u64) {
         let k = match dim {
             0 => 0,
@@ -384,7 +384,7 @@ impl ZSobolSampler {
         (index, key)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value_1d(&self, dim: u32) -> f32 {
         let (index, key) = self.index(dim);
         if self.scramble == Scramble::FastOwen {
@@ -393,7 +393,7 @@ impl ZSobolSampler {
         to_f32(scramble_dim0(index, key as u32, self.scramble))
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value_2d(&self, dim: u32) -> [f32; 2] {
         let (index, key) = self.index(dim);
         let y = match self.scramble {
@@ -437,7 +437,7 @@ const_unless_lazy! {
 }
 
 /// `reverse(sobol_u32(index, 1))`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn sobol1_rev(index: u32) -> u32 {
     let [b0, b1, b2, b3] = index.to_le_bytes();
     SOBOL1_REVERSED[0][b0 as usize]
@@ -447,7 +447,7 @@ fn sobol1_rev(index: u32) -> u32 {
 }
 
 /// The 32-bit LK-hash seed of a request's second coordinate, from its (mixed) 64-bit key.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn key_seed(key: u64) -> u32 {
     (key >> 32) as u32
 }
@@ -455,7 +455,7 @@ fn key_seed(key: u64) -> u32 {
 /// Sobol dimension 0 at `index` (its bits reversed) scrambled by `how` under the mixed `seed`.
 /// The fast Owen scramble of a reversed word is the LK hash of the word itself, reversed: one
 /// bit reversal.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn scramble_dim0(index: u32, seed: u32, how: Scramble) -> u32 {
     match how {
         Scramble::FastOwen => lk_hash(index, seed).reverse_bits(),
@@ -464,34 +464,34 @@ fn scramble_dim0(index: u32, seed: u32, how: Scramble) -> u32 {
 }
 
 /// One of the 24 permutations of four, chosen by a 32-bit hash: `⌊h · 24 / 2³²⌋`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn one_of_24(h: u32) -> usize {
     ((u64::from(h) * 24) >> 32) as usize
 }
 
 /// The permutation (a [`PERMUTATIONS_4`] entry) of the pixel digit below `higher`: a 32-bit
 /// hash of the higher digits (at most 30 bits) under the request's key.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn pixel_node(higher: u64, key: u64) -> u8 {
     PERMUTATIONS_4[one_of_24(mix32(higher as u32 ^ (key >> 16) as u32))]
 }
 
 /// Which permutation (a [`PERMUTATIONS_4`] index) the sample digit at bit `shift` takes, given
 /// the sample digits above it: [`nested_word`] of the pixel word.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn sample_node(w: u64, higher: u64, shift: u32) -> usize {
     one_of_24((nested_word(w, higher, shift) >> 32) as u32)
 }
 
 /// Base-4 digit `digit` through the packed permutation `perm`, placed at bit `shift`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn permuted_digit(perm: u8, digit: u64, shift: u32) -> u64 {
     ((u64::from(perm) >> (2 * digit)) & 3) << shift
 }
 
 /// The random word of a pixel (its Morton code) for the requests keyed `key`: the source of
 /// every permutation of its sample digits.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn pixel_word(pixel_morton: u64, key: u64) -> u64 {
     mix64(pixel_morton ^ key.rotate_left(17))
 }
@@ -500,14 +500,14 @@ fn pixel_word(pixel_morton: u64, key: u64) -> u64 {
 /// digits above it (`higher`): the pixel word and `(higher, shift)` through one multiply (the
 /// pixel word is already uniformly random, so the top bits of the product are too, and they
 /// differ for every `(higher, shift)`).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn nested_word(w: u64, higher: u64, shift: u32) -> u64 {
     (w ^ (higher << 6 | u64::from(shift)).wrapping_mul(0x9e37_79b9_7f4a_7c15))
         .wrapping_mul(0xd1b5_4a32_d192_ed03)
 }
 
 /// The hash key of requests at dimension `dim`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn dim_key(seed: u64, dim: u32) -> u64 {
     hash2(seed, u64::from(dim) ^ 0x5a53_4f42_4f4c) // "ZSOBOL"
 }
@@ -517,7 +517,7 @@ impl Sampler for ZSobolSampler {
         self.spp
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
         if self.pixel != Some(pixel) {
             self.set_pixel(pixel);
@@ -530,27 +530,27 @@ impl Sampler for ZSobolSampler {
         self.dim = dim;
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_1d(&mut self) -> f32 {
         let d = self.dim;
         self.dim = d.wrapping_add(1);
         self.value_1d(d)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = d.wrapping_add(2);
         self.value_2d(d)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.value_2d(0)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
         self.start_pixel_sample(pixel, sample_index, 0);
         let p = self.value_2d(0);

@@ -85,7 +85,7 @@ const_unless_lazy! {
 }
 
 /// `reverse(sobol(reverse(r), dim))`: the Sobol product on bit-reversed words, `dim < 1024`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn product_rev(dim: usize, r: u32) -> u32 {
     if dim < REV_DIMS {
         let [b0, b1, _, _] = r.to_le_bytes();
@@ -137,7 +137,7 @@ const_unless_lazy! {
 
 /// [`product_rev`] of dimension `UPPER_DIMS <= dim < 1024` for a reversed index whose low 16
 /// bits are zero, from its upper half `h < 2^16`: four nibble-table reads.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn product_rev16(dim: usize, h: u32) -> u32 {
     let e = dim.wrapping_sub(UPPER_DIMS);
     let t = &SOBOL_REV_NIBBLES16[(e / 4) % NIBBLE_SETS];
@@ -149,7 +149,7 @@ fn product_rev16(dim: usize, h: u32) -> u32 {
 }
 
 /// [`product_rev16`] for the four dimensions `UPPER_DIMS + 4·set ..` (four of them).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn product_rev16x4(set: usize, h: u32) -> [u32; 4] {
     let t = &SOBOL_REV_NIBBLES16[set % NIBBLE_SETS];
     xor4(
@@ -163,7 +163,7 @@ fn product_rev16x4(set: usize, h: u32) -> [u32; 4] {
 
 /// The part of [`product_rev`] from the upper 16 bits of `r` (the 16 low index bits: the two
 /// upper-half byte tables), for `dim < UPPER_DIMS`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn product_rev_upper(dim: usize, r: u32) -> u32 {
     let [_, _, b2, b3] = r.to_le_bytes();
     let t = &SOBOL_REV_UPPER;
@@ -171,18 +171,18 @@ fn product_rev_upper(dim: usize, r: u32) -> u32 {
 }
 
 /// Four consecutive entries of a dimension row from `d`, `d + 4 <= N`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn four<const N: usize>(row: &[u32; N], d: usize) -> [u32; 4] {
     [row[d], row[d + 1], row[d + 2], row[d + 3]]
 }
 
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn xor4(a: [u32; 4], b: [u32; 4]) -> [u32; 4] {
     [a[0] ^ b[0], a[1] ^ b[1], a[2] ^ b[2], a[3] ^ b[3]]
 }
 
 /// [`product_rev`] for the four dimensions `d .. d + 4`, `d + 4 <= 64`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn product_rev4(d: usize, r: u32) -> [u32; 4] {
     let [b0, b1, _, _] = r.to_le_bytes();
     let t = &SOBOL_REV_LOWER;
@@ -193,7 +193,7 @@ fn product_rev4(d: usize, r: u32) -> [u32; 4] {
 }
 
 /// [`product_rev_upper`] for the four dimensions `d .. d + 4`, `d + 4 <= UPPER_DIMS`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn product_rev_upper4(d: usize, r: u32) -> [u32; 4] {
     let [_, _, b2, b3] = r.to_le_bytes();
     let t = &SOBOL_REV_UPPER;
@@ -204,7 +204,7 @@ fn product_rev_upper4(d: usize, r: u32) -> [u32; 4] {
 const CACHED_SEEDS: usize = 256;
 
 /// The mixed scramble seed of dimension `dim` under the sequence key `key`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn dim_seed(key: u32, dim: u32) -> u32 {
     mix32(key ^ dim.wrapping_mul(0x9e37_79b9))
 }
@@ -228,7 +228,7 @@ impl<const N: usize> DimSeeds<N> {
     }
 
     /// The seed of dimension `dim`: kept, or hashed past the first `N`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn get(&self, dim: u32) -> u32 {
         match self.kept.get(dim as usize) {
             Some(&s) => s,
@@ -237,13 +237,13 @@ impl<const N: usize> DimSeeds<N> {
     }
 
     /// The kept seeds, of dimensions `0..N`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn kept(&self) -> &[u32; N] {
         &self.kept
     }
 
     /// The key.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn key(&self) -> u32 {
         self.key
     }
@@ -251,7 +251,7 @@ impl<const N: usize> DimSeeds<N> {
 
 /// [`dim_seed`] of the four dimensions `first .. first + 4`, written lane by lane so that it
 /// compiles to vector code.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn dim_seeds4(key: u32, first: u32) -> [u32; 4] {
     let mut x: [u32; 4] =
         core::array::from_fn(|k| key ^ first.wrapping_add(k as u32).wrapping_mul(0x9e37_79b9));
@@ -274,14 +274,14 @@ fn dim_seeds4(key: u32, first: u32) -> [u32; 4] {
 }
 
 /// The top 24 bits of a reversed, scrambled word, as an `f32` in `[0, 1)`.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn rev_to_f32(w_rev: u32) -> f32 {
     (w_rev.reverse_bits() >> 8) as f32 * (1.0 / 16_777_216.0)
 }
 
 /// [`lk_hash`] then [`rev_to_f32`] on four lanes: the SSE2 kernel on x86-64, else
 /// [`scramble_rev_f32x4_lanes`].
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn scramble_rev_f32x4(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
     #[cfg(target_arch = "x86_64")]
     {
@@ -296,7 +296,7 @@ fn scramble_rev_f32x4(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
 /// [`lk_hash`] then [`rev_to_f32`] on four lanes, written lane-parallel so that it compiles to
 /// vector code where the target has it (past x86-64, and the SSE2 kernel's oracle in tests).
 #[cfg_attr(all(target_arch = "x86_64", not(test)), allow(dead_code))]
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn scramble_rev_f32x4_lanes(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
     let mut x = x;
     for k in 0..4 {
@@ -319,13 +319,13 @@ pub(crate) fn scramble_rev_f32x4_lanes(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4]
 
 /// The Owen-scrambled Sobol value of dimension `dim` at a reversed shuffled index, as a 32-bit
 /// fraction (`dim_seed` mixed).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn owen_sobol_rev_u32(shuffled_rev: u32, dim: u32, dim_seed: u32) -> u32 {
     lk_hash(product_rev((dim & 1023) as usize, shuffled_rev), dim_seed).reverse_bits()
 }
 
 /// As [`owen_sobol_rev_u32`], as an `f32` (top 24 bits, truncated).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn owen_sobol_rev_f32(shuffled_rev: u32, dim: u32, dim_seed: u32) -> f32 {
     rev_to_f32(lk_hash(
         product_rev((dim & 1023) as usize, shuffled_rev),
@@ -335,7 +335,7 @@ pub(crate) fn owen_sobol_rev_f32(shuffled_rev: u32, dim: u32, dim_seed: u32) -> 
 
 /// [`owen_sobol_rev_f32`] for four dimensions at one reversed shuffled index, lane by lane
 /// (`dim_seeds[k]` mixed, for `dims[k]`); the scrambles run four-wide.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn owen_sobol_rev_f32x4(
     shuffled_rev: u32,
     dims: [u32; 4],
@@ -364,7 +364,7 @@ pub(crate) struct IndexShuffle {
 
 impl IndexShuffle {
     /// The shuffle for a mixed 32-bit seed.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn new(seed: u32) -> IndexShuffle {
         IndexShuffle {
             seed,
@@ -373,21 +373,21 @@ impl IndexShuffle {
     }
 
     /// The reversed shuffled index of `index`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn rev(&self, index: u32) -> u32 {
         lk_hash(index.reverse_bits(), self.seed) ^ self.fix
     }
 
     /// [`IndexShuffle::rev`] of `index < 2^16` in its upper half only (the low half, `fix`
     /// there, is left unfixed): what the upper-half tables read.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn rev_low_upper(&self, index: u32) -> u32 {
         let [b0, b1, _, _] = index.to_le_bytes();
         lk_hash(REV16[0][b0 as usize] | REV16[1][b1 as usize], self.seed)
     }
 
     /// [`IndexShuffle::rev`], reversing indices below 2¹⁶ by two table reads.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn rev_fast(&self, index: u32) -> u32 {
         if index < LOW_BLOCK {
             let [b0, b1, _, _] = index.to_le_bytes();
@@ -479,7 +479,7 @@ impl OwenSobol {
         self.seed
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn wrap(&self, dim: u32) -> u32 {
         if dim < self.dims {
             dim
@@ -491,7 +491,7 @@ impl OwenSobol {
     /// The scrambled reversed value (before the final reversal) of dimension `dim` at the
     /// reversed shuffled index `r` ([`IndexShuffle::rev`]), if `dim`'s seed is kept (`None`
     /// past them).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn table_value_rev(&self, r: u32, dim: u32) -> Option<u32> {
         let d = dim as usize;
         let &s = self.seeds.kept().get(d)?;
@@ -504,7 +504,7 @@ impl OwenSobol {
     }
 
     /// Dimension `dim < dims()` at the reversed shuffled index `r`, as an `f32`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value_f32(&self, r: u32, dim: u32) -> f32 {
         match self.table_value_rev(r, dim) {
             Some(w) => reversed_to_f32(w),

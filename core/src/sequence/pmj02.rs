@@ -220,7 +220,7 @@ impl Pmj02 {
     /// let p = Pmj02::scrambled(1);
     /// assert_eq!(p.sample_u32(70_000, 2), p.sample_2d_u32(70_000 - 65_536)[0]);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
         let d = (dim & 1) as usize;
         let v = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d];
@@ -236,7 +236,7 @@ impl Pmj02 {
     /// use nyquist::sequence::{Pmj02, PMJ02_TABLE};
     /// assert_eq!(Pmj02::new().sample_2d_u32(65_536 + 2), PMJ02_TABLE[2]);
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_2d_u32(&self, index: u32) -> [u32; 2] {
         let [x, y] = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)];
         match self.keys {
@@ -252,7 +252,7 @@ impl Pmj02 {
     /// let [x, y] = Pmj02::scrambled(3).sample_2d(12);
     /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_2d(&self, index: u32) -> [f32; 2] {
         let [x, y] = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)];
         match self.keys {
@@ -271,7 +271,7 @@ impl Sequence for Pmj02 {
         Some(PMJ02_MAX_POINTS as u64)
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, index: u64, dim: u32) -> f32 {
         let d = (dim & 1) as usize;
         let v = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d];

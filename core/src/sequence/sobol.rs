@@ -73,7 +73,7 @@ const_unless_lazy! {
 /// The generator-matrix product: XOR of the columns `m[k]` over the set bits `k` of `index`,
 /// as a branch-free masked XOR over all 32 columns (the fallback for dimensions without byte
 /// tables; the same speed for any index, unlike a loop over the set bits).
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn product(m: &[u32; 32], index: u32) -> u32 {
     let mut v = 0;
     for (k, &col) in m.iter().enumerate() {
@@ -103,14 +103,14 @@ pub(crate) fn sobol_run_f32(
 }
 
 /// The generator-matrix product through one dimension's byte tables: four lookups.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn byte_product(t: &[[u32; BYTE_ROW]; 4], index: u32) -> u32 {
     let [b0, b1, b2, b3] = index.to_le_bytes();
     t[0][b0 as usize] ^ t[1][b1 as usize] ^ t[2][b2 as usize] ^ t[3][b3 as usize]
 }
 
 /// The product for dimension `dim < SOBOL_DIMS`, through the byte tables where there are some.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn product_dim(dim: usize, index: u32) -> u32 {
     if let Some(t) = SOBOL_BYTES.get(dim) {
         byte_product(t, index)
@@ -140,7 +140,7 @@ pub fn sobol_u32(index: u32, dim: u32) -> u32 {
 }
 
 /// A 32-bit binary fraction as an `f64`, exactly.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn to_f64(v: u32) -> f64 {
     f64::from(v) * crate::math::TWO_POW_MINUS_32
 }
@@ -240,7 +240,7 @@ impl Sobol {
     }
 
     /// The XOR applied to dimension `dim` (0 when unscrambled).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn shift(&self, dim: u32) -> u32 {
         if self.scrambled {
             (hash::hash2(self.seed, u64::from(dim)) >> 32) as u32
@@ -258,7 +258,7 @@ impl Sobol {
     /// assert_eq!(s.sample_u32(77, 5), sobol_u32(77, 5));
     /// assert_eq!(s.sample_u32(77, 8 + 5), sobol_u32(77, 5));
     /// ```
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_u32(&self, index: u64, dim: u32) -> u32 {
         // The branch skips a division in the common case.
         let dim = if dim < self.dims {

@@ -108,7 +108,7 @@ impl ZeroTwo {
         [to_f32(x), to_f32(y)]
     }
 
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample_u32(&self, index: u64, dim: u32) -> u32 {
         let index = index as u32;
         if dim & 1 == 0 {

@@ -97,13 +97,13 @@ impl Strata {
     }
 
     /// How many random bits [`Strata::jittered`] uses.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn jitter_bits(&self) -> u32 {
         self.jitter_bits
     }
 
     /// A sample in stratum `k < n` jittered by the low [`Strata::jitter_bits`] bits of `bits`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn jittered(&self, k: u32, bits: u32) -> f32 {
         if self.n <= EXACT_MAX {
             let s = (k << self.shift) | (bits << 1) | 1;
@@ -114,13 +114,13 @@ impl Strata {
     }
 
     /// `fl(1/n)`, for the checked route ([`place`]).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn inv(&self) -> f32 {
         self.inv
     }
 
     /// Whether the exact fixed-point route applies (`n ≤ 2²²`).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn is_exact(&self) -> bool {
         self.n <= EXACT_MAX
     }
@@ -128,19 +128,19 @@ impl Strata {
     /// For the exact route: the fixed-point numerator of stratum `k`'s lower edge, with the
     /// always-set lowest bit; OR the jitter bits, shifted left by one, into it and multiply by
     /// [`Strata::scale`].
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn base(&self, k: u32) -> u32 {
         (k << self.shift) | 1
     }
 
     /// For the exact route: the scale from the fixed-point numerator to `[0, 1)`.
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn scale(&self) -> f32 {
         self.scale
     }
 
     /// The centre of stratum `k < n` (rounded to `f32`, inside the stratum).
-    #[inline(always)]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn centre(&self, k: u32) -> f32 {
         if self.n <= EXACT_MAX {
             let s = ((k << 1) | 1) << (self.shift - 1);
@@ -155,7 +155,7 @@ impl Strata {
 /// `inv_n = 1 / n`. The fast product is checked against the stratum in `f64` (exact for
 /// `n ≤ 2²⁹`) and, on the rare miss, stepped back inside; the result is in `[0, 1)`. Used for
 /// `n > 2²²`, where [`Strata`]'s exact route has no jitter bits left.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn place(k: u32, u: f32, n: u32, inv_n: f32) -> f32 {
     let x = (k as f32 + u) * inv_n;
     let t = f64::from(x) * f64::from(n);

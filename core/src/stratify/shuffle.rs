@@ -76,7 +76,7 @@ pub fn shuffle<T, R: Rng + ?Sized>(
 }
 
 /// A uniform index in `0..n` for `1 ≤ n`, using the 32-bit draw whenever `n` fits.
-#[inline(always)]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 fn below<R: Rng + ?Sized>(rng: &mut R, n: usize) -> usize {
     match u32::try_from(n) {
         Ok(n) => uniform_below(rng, n) as usize,
