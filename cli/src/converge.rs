@@ -409,7 +409,8 @@ impl Study {
             // Largest counts first, so the last tasks handed out are short.
             let mut queue: Vec<(usize, &mut [f64])> =
                 estimates.chunks_mut(ni.max(1)).enumerate().collect();
-            queue.sort_by_key(|(t, _)| self.counts[(t / nr) % nc]);
+            // Ties by task index: the order a stable sort gives, without a stable sort's code.
+            queue.sort_unstable_by_key(|(t, _)| (self.counts[(t / nr) % nc], *t));
             let queue = Mutex::new(queue);
             let done = AtomicUsize::new(0);
             let work = || {

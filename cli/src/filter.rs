@@ -146,10 +146,11 @@ pub fn spectrum(f: &dyn Filter, nu: f64) -> f64 {
         let x = -r + (f64::from(k) + 0.5) * h;
         let v = profile(f, x as f32);
         let phase = 2.0 * std::f64::consts::PI * nu * x;
-        re += v * phase.cos();
-        im -= v * phase.sin();
+        // libm's, as on every target: the browser explorer draws the same curve.
+        re += v * libm::cos(phase);
+        im -= v * libm::sin(phase);
     }
-    (re * h).hypot(im * h)
+    libm::hypot(re * h, im * h)
 }
 
 /// Size of one panel of the filter plot.

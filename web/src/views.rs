@@ -155,7 +155,8 @@ fn strata(sampler: PointSet, grid: Option<(u32, u32)>, n: usize) -> Option<[u64;
 /// The two closest points (indices), by a sweep over x; `None` for fewer than two points.
 fn closest_pair(p: &[[f64; 2]]) -> Option<(usize, usize)> {
     let mut order: Vec<usize> = (0..p.len()).collect();
-    order.sort_by(|&a, &b| p[a][0].total_cmp(&p[b][0]));
+    // By x, then index: the order a stable sort gives, without a stable sort's code.
+    order.sort_unstable_by(|&a, &b| p[a][0].total_cmp(&p[b][0]).then(a.cmp(&b)));
     let mut best: Option<(f64, usize, usize)> = None;
     for (k, &i) in order.iter().enumerate() {
         for &j in &order[k + 1..] {
@@ -219,7 +220,7 @@ fn jittered_power(fx: i64, fy: i64, nx: u64, ny: u64) -> f64 {
     if fx == 0 && fy == 0 {
         return (nx * ny) as f64;
     }
-    let sinc = |t: f64| if t == 0.0 { 1.0 } else { t.sin() / t };
+    let sinc = |t: f64| if t == 0.0 { 1.0 } else { libm::sin(t) / t };
     let a = sinc(std::f64::consts::PI * fx as f64 / nx as f64);
     let b = sinc(std::f64::consts::PI * fy as f64 / ny as f64);
     1.0 - a * a * b * b

@@ -23,10 +23,10 @@ if ! command -v wasm-opt >/dev/null && [ "$(id -u)" = 0 ] && command -v apt-get 
             timeout 300 apt-get install -y -q binaryen >/dev/null 2>&1; } || true
 fi
 if command -v wasm-opt >/dev/null; then
-    wasm_budget=720000
+    wasm_budget=520000
 else
     echo "SKIPPED: wasm-opt could not be installed; the module is measured unoptimised"
-    wasm_budget=830000
+    wasm_budget=600000
 fi
 site=$(bash web/build.sh)
 wasm_bytes=$(wc -c <"$site/nyquist_web.wasm")

@@ -22,10 +22,49 @@ use crate::math::ONE_MINUS_EPSILON;
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MaskView<'a> {
-    ranks: &'a [u32],
+    ranks: Ranks<'a>,
     width: u32,
     height: u32,
     channels: u32,
+}
+
+/// A mask's ranks as the caller stores them: 16 bits suffice up to 65,536 pixels, as for the
+/// built-in mask, and halve its size. Equal when the values are, however stored.
+#[derive(Clone, Copy, Debug)]
+enum Ranks<'a> {
+    Wide(&'a [u32]),
+    Narrow(&'a [u16]),
+}
+
+impl PartialEq for Ranks<'_> {
+    fn eq(&self, other: &Self) -> bool {
+        self.len() == other.len() && (0..self.len()).all(|i| self.get(i) == other.get(i))
+    }
+}
+
+impl Eq for Ranks<'_> {}
+
+impl Ranks<'_> {
+    fn len(self) -> usize {
+        match self {
+            Ranks::Wide(r) => r.len(),
+            Ranks::Narrow(r) => r.len(),
+        }
+    }
+
+    fn get(self, i: usize) -> u32 {
+        match self {
+            Ranks::Wide(r) => r[i],
+            Ranks::Narrow(r) => u32::from(r[i]),
+        }
+    }
+
+    fn max(self) -> Option<u32> {
+        match self {
+            Ranks::Wide(r) => r.iter().copied().max(),
+            Ranks::Narrow(r) => r.iter().copied().max().map(u32::from),
+        }
+    }
 }
 
 impl<'a> MaskView<'a> {
@@ -50,6 +89,35 @@ impl<'a> MaskView<'a> {
         height: u32,
         channels: u32,
     ) -> Result<MaskView<'a>, Error> {
+        MaskView::checked(Ranks::Wide(ranks), width, height, channels)
+    }
+
+    /// [`MaskView::new`] over ranks stored in 16 bits (masks of at most 65,536 pixels).
+    ///
+    /// # Errors
+    /// As [`MaskView::new`].
+    ///
+    /// ```
+    /// use nyquist::sampler::MaskView;
+    /// let m = MaskView::new_u16(&[0, 3, 1, 2], 2, 2, 1).unwrap();
+    /// assert_eq!(m, MaskView::new(&[0, 3, 1, 2], 2, 2, 1).unwrap());
+    /// assert_eq!(m.value(1, 0, 0), 0.875);
+    /// ```
+    pub fn new_u16(
+        ranks: &'a [u16],
+        width: u32,
+        height: u32,
+        channels: u32,
+    ) -> Result<MaskView<'a>, Error> {
+        MaskView::checked(Ranks::Narrow(ranks), width, height, channels)
+    }
+
+    fn checked(
+        ranks: Ranks<'a>,
+        width: u32,
+        height: u32,
+        channels: u32,
+    ) -> Result<MaskView<'a>, Error> {
         for (v, what) in [(width, "width"), (height, "height"), (channels, "channels")] {
             if v == 0 {
                 return Err(Error::ZeroSize { what });
@@ -62,7 +130,7 @@ impl<'a> MaskView<'a> {
                 actual: ranks.len(),
             });
         }
-        if ranks.iter().any(|&r| u64::from(r) >= n) {
+        if ranks.max().is_some_and(|r| u64::from(r) >= n) {
             return Err(Error::OutOfRange { what: "ranks" });
         }
         Ok(MaskView {
@@ -83,7 +151,7 @@ impl<'a> MaskView<'a> {
     /// ```
     pub fn builtin() -> MaskView<'static> {
         MaskView {
-            ranks: &DITHER_MASK_RANKS,
+            ranks: Ranks::Narrow(&DITHER_MASK_RANKS),
             width: 64,
             height: 64,
             channels: 2,
@@ -112,13 +180,13 @@ impl<'a> MaskView<'a> {
         let n = self.width * self.height;
         let (x, y, c) = (x % self.width, y % self.height, channel % self.channels);
         let i = c as usize * n as usize + (y * self.width + x) as usize;
-        rank_to_value(self.ranks[i], n)
+        rank_to_value(self.ranks.get(i), n)
     }
 }
 
-/// The ranks of the built-in dither mask, channel-major (2 × 64 × 64); regenerated and checked
-/// by the test `builtin_mask_is_current`.
-pub static DITHER_MASK_RANKS: [u32; 2 * 64 * 64] = include!("dither_mask.in");
+/// The ranks of the built-in dither mask, channel-major (2 × 64 × 64), each below 4096 and so
+/// stored in 16 bits (16 KiB); regenerated and checked by the test `builtin_mask_is_current`.
+pub static DITHER_MASK_RANKS: [u16; 2 * 64 * 64] = include!("dither_mask.in");
 
 /// A pixel sampler that gives every pixel the same point set, the one `inner` gives pixel
 /// (0, 0), toroidally shifted by the mask: dimension `d` of pixel `p` is
