@@ -637,18 +637,27 @@ mod tests {
     use std::vec::Vec;
 
     /// The reversed tables give the reversed product, in every dimension with tables and past
-    /// them.
+    /// them. `0xffff_0000` reverses to the one word whose low half is all ones, the boundary
+    /// of the test that sends words with a zero low half to the upper-half tables.
     #[test]
     fn reversed_tables_are_the_reversed_product() {
         let indices: Vec<u32> = (0..512u32)
             .chain((0..512).map(|i| mix32(i ^ 0x77)))
-            .chain([u32::MAX, 1 << 31, 1])
+            .chain([u32::MAX, 1 << 31, 1, 0xffff_0000, 0xfffe_0000, 0x0001_0000])
             .collect();
         for dim in (0..REV_DIMS + 3).chain([200, 255, 256, 257, 700, 1023]) {
             for &i in &indices {
                 let want = sobol_u32(i, dim as u32).reverse_bits();
                 assert_eq!(product_rev(dim, i.reverse_bits()), want, "dim {dim} i {i}");
             }
+        }
+    }
+
+    /// `seed` returns the seed given, whatever it is.
+    #[test]
+    fn seed_is_the_seed_given() {
+        for seed in [0u64, 1, 9, u64::MAX] {
+            assert_eq!(OwenSobol::new(3, seed).unwrap().seed(), seed);
         }
     }
 
