@@ -770,6 +770,50 @@ mod tests {
         assert!(s.fill((1 << 32) - 2, 3, &mut buf).is_err());
     }
 
+    /// The index whose reversed shuffled word is `0x0000_ffff`, the one word with a nonzero low
+    /// half that a test for a zero low half confuses with zero under `^`. The word's low half
+    /// depends only on the index's high half (a nested uniform shuffle), so that is found
+    /// first, then the low half.
+    fn index_with_word_ffff(s: &OwenSobol) -> u32 {
+        let hi = (0..=0xffffu32)
+            .find(|&h| s.shuffle.rev(h << 16) & 0xffff == 0xffff)
+            .unwrap();
+        (0..=0xffffu32)
+            .map(|l| hi << 16 | l)
+            .find(|&i| s.shuffle.rev(i) == 0xffff)
+            .unwrap()
+    }
+
+    /// At that index, every path (the kept seeds' tables, the 4-wide nibble tables past them)
+    /// gives the general path's value.
+    #[test]
+    fn the_word_with_a_full_low_half_takes_the_general_product() {
+        for seed in [42u64, 7] {
+            let s = OwenSobol::new(1024, seed).unwrap();
+            let i = index_with_word_ffff(&s);
+            assert_eq!(s.shuffle.rev_fast(i), 0xffff);
+            for d in [0u32, 1, 63, 64, 65, 200, 255, 256, 300, 1023] {
+                assert_eq!(s.sample_u32(i, d), reference_u32(&s, i, d), "seed {seed} d {d}");
+            }
+            for first in [0u32, 60, 64, 252, 256, 512, 1020] {
+                let want = core::array::from_fn(|k| {
+                    (reference_u32(&s, i, first + k as u32) >> 8) as f32 / 16_777_216.0
+                });
+                assert_eq!(s.sample_4d(i, first), want, "seed {seed} first {first}");
+            }
+        }
+    }
+
+    /// The `Sequence` facts: the dimension count given, 2^32 points.
+    #[test]
+    fn dims_and_point_count() {
+        for dims in [1u32, 2, 100, 1024] {
+            let s = OwenSobol::new(dims, 3).unwrap();
+            assert_eq!(Sequence::dims(&s), dims);
+            assert_eq!(s.point_count(), Some(1u64 << 32));
+        }
+    }
+
     #[test]
     fn indices_past_2_pow_16_are_new_points() {
         // sobol_burley stops at 2^16; here the next block is a net of its own, not a repeat.
