@@ -77,24 +77,37 @@ def matrices(dims):
 
 
 def render_directions(dims):
-    """SOBOL_DIRECTIONS: per dimension 1 .. DIMS - 1, the word (s << 12) | a, then m_1 .. m_s."""
-    words = []
+    """SOBOL_DIRECTION_BITS: a bit stream, least significant bit of each byte first; per
+    dimension 1 .. DIMS - 1, each field least significant bit first: s in 4 bits, a in s - 1
+    bits, then for k = 1 .. s, (m_k - 1) / 2 in k - 1 bits (every m_k is odd and below 2^k)."""
+    stream = []  # one int per bit
+
+    def put(value, n):
+        if value >> n:
+            raise SystemExit(f"{value} does not fit {n} bits")
+        stream.extend((value >> i) & 1 for i in range(n))
+
     for s, a, m in dims:
-        if s >= 16 or a >= (1 << 12) or max(m) >= (1 << 16):
-            raise SystemExit(f"s = {s}, a = {a} or an m_k does not fit the packed form")
-        words.append((s << 12) | a)
-        words.extend(m)
+        put(s, 4)
+        put(a, s - 1)
+        for k, mk in enumerate(m, start=1):
+            if mk % 2 == 0:
+                raise SystemExit(f"m_{k} = {mk} is even")
+            put(mk >> 1, k - 1)
+    stream.extend([0] * (-len(stream) % 8))
+    data = [sum(stream[i + j] << j for j in range(8)) for i in range(0, len(stream), 8)]
     out = [
         "",
         "/// The same direction numbers packed for [`SOBOL_MATRICES`]' construction at first use",
-        "/// (feature `lazy-tables`): for each dimension from 1, the word `(s << 12) | a`, then",
-        "/// `m_1 .. m_s`; Joe and Kuo's `s`, `a` and `m_k` as in the data file.",
+        "/// (feature `lazy-tables`), as a bit stream read least significant bit first: for each",
+        "/// dimension from 1, Joe and Kuo's `s` in 4 bits, `a` in `s − 1` bits, then `(m_k − 1)/2`",
+        "/// in `k − 1` bits for `k = 1 ..= s` (each `m_k` is odd and below `2^k`).",
         '#[cfg(any(feature = "lazy-tables", test))]',
         "#[rustfmt::skip]",
-        f"pub(crate) static SOBOL_DIRECTIONS: [u16; {len(words)}] = [",
+        f"pub(crate) static SOBOL_DIRECTION_BITS: [u8; {len(data)}] = [",
     ]
-    for i in range(0, len(words), 20):
-        out.append("    " + " ".join(f"{w}," for w in words[i:i + 20]))
+    for i in range(0, len(data), 20):
+        out.append("    " + " ".join(f"{w}," for w in data[i:i + 20]))
     out.append("];")
     return "\n".join(out) + "\n"
 
@@ -121,7 +134,7 @@ def render_header():
         "",
         "/// `SOBOL_MATRICES[d][k]` is direction number `V_{k+1}` of dimension `d`: the generator-matrix",
         "/// column XOR-ed into the result when bit `k` of the index is set. With the `lazy-tables`",
-        "/// feature the library reads the same table built at first use from [`SOBOL_DIRECTIONS`]",
+        "/// feature the library reads the same table built at first use from [`SOBOL_DIRECTION_BITS`]",
         "/// (`sobol_lazy.rs`); tests still compile this one to compare the two.",
         '#[cfg(any(not(feature = "lazy-tables"), test))]',
         "#[rustfmt::skip]",

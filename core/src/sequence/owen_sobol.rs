@@ -793,7 +793,11 @@ mod tests {
             let i = index_with_word_ffff(&s);
             assert_eq!(s.shuffle.rev_fast(i), 0xffff);
             for d in [0u32, 1, 63, 64, 65, 200, 255, 256, 300, 1023] {
-                assert_eq!(s.sample_u32(i, d), reference_u32(&s, i, d), "seed {seed} d {d}");
+                assert_eq!(
+                    s.sample_u32(i, d),
+                    reference_u32(&s, i, d),
+                    "seed {seed} d {d}"
+                );
             }
             for first in [0u32, 60, 64, 252, 256, 512, 1020] {
                 let want = core::array::from_fn(|k| {

@@ -1,17 +1,31 @@
 //! With the `lazy-tables` feature: the Sobol generator matrices built at first use from Joe and
-//! Kuo's packed direction numbers ([`SOBOL_DIRECTIONS`], 26 KiB) instead of stored (128 KiB).
+//! Kuo's direction numbers bit-packed ([`SOBOL_DIRECTION_BITS`], 10 KiB) instead of stored
+//! (128 KiB).
 //! The recurrence is the one `scripts/gen_sobol.py` documents and runs to write the stored table.
 
-use super::sobol_table::SOBOL_DIRECTIONS;
+use super::sobol_table::SOBOL_DIRECTION_BITS;
 use crate::lazy_table::{Fill, LazyTable};
 
-/// Rows `0 .. t.len()` (at most 1024) of the generator matrices, from [`SOBOL_DIRECTIONS`]:
+/// `n` bits of [`SOBOL_DIRECTION_BITS`] from bit `*at`, least significant first; advances `*at`.
+const fn take(at: &mut usize, n: usize) -> u32 {
+    let mut v = 0;
+    let mut i = 0;
+    while i < n {
+        let b = *at + i;
+        v |= ((SOBOL_DIRECTION_BITS[b / 8] >> (b % 8)) as u32 & 1) << i;
+        i += 1;
+    }
+    *at += n;
+    v
+}
+
+/// Rows `0 .. t.len()` (at most 1024) of the generator matrices, from [`SOBOL_DIRECTION_BITS`]:
 /// `V_k = m_k · 2^(32 − k)` for `k ≤ s`, then
 /// `V_k = a_1 V_(k−1) ^ … ^ a_(s−1) V_(k−s+1) ^ V_(k−s) ^ (V_(k−s) >> s)` (`a_1` the most
 /// significant of the `s − 1` bits of `a`); dimension 0 is van der Corput, `V_k = 2^(32 − k)`.
 /// A `const fn`, so `compact::Sobol` bakes its few rows at compile time from the same words.
 pub(crate) const fn matrix_rows(t: &mut [[u32; 32]]) {
-    let mut w = 0;
+    let mut at = 0;
     let mut d = 0;
     while d < t.len() && d < 1024 {
         if d == 0 {
@@ -21,13 +35,13 @@ pub(crate) const fn matrix_rows(t: &mut [[u32; 32]]) {
                 k += 1;
             }
         } else {
-            let head = SOBOL_DIRECTIONS[w] as u32;
-            w += 1;
-            let (s, a) = ((head >> 12) as usize, head & 0xfff);
+            let s = take(&mut at, 4) as usize;
+            let a = take(&mut at, s - 1);
             let mut k = 0;
             while k < s {
-                t[d][k] = (SOBOL_DIRECTIONS[w] as u32) << (31 - k);
-                w += 1;
+                // m_(k+1), odd, below 2^(k+1), stored as (m − 1)/2 in k bits.
+                let m = 2 * take(&mut at, k) + 1;
+                t[d][k] = m << (31 - k);
                 k += 1;
             }
             while k < 32 {
