@@ -15,8 +15,9 @@ Point i (i = 0, 1, ...):
     largest, so nearby image samples get different times and lens positions.
 
 Random numbers: SplitMix64 (Steele, Lea & Flood 2014) from SEED; a float is (u >> 11) * 2^-53.
-Every distance is computed in IEEE double with the same operations as the Rust test that
-regenerates a prefix, so the output is bit-reproducible.
+Every distance is computed in IEEE double with the same operations as the library's own
+generator (core/src/sampler/best_candidate/generate.rs, used with the lazy-tables feature and
+tested to give this whole table), so the output is bit-reproducible.
 
 The table stores each value as floor(x * 65536) in a u16.
 

@@ -1,7 +1,8 @@
 //! Mitchell's best-candidate sampling from a baked, tileable blue-noise table.
 //!
-//! The table (`best_candidate_table.rs`, 4096 rows of image x, y, time, lens u, v) is made by
-//! `scripts/gen_best_candidate.py`: Mitchell's best-candidate algorithm (Mitchell 1991,
+//! The table (`best_candidate/table.rs`, 4096 rows of image x, y, time, lens u, v) is made by
+//! `scripts/gen_best_candidate.py` (with the `lazy-tables` feature, `best_candidate/generate.rs`
+//! runs the same algorithm at first use instead): Mitchell's best-candidate algorithm (Mitchell 1991,
 //! "Spectrally optimal sampling for distribution ray tracing") with toroidal distance, so the
 //! pattern tiles; each row's time and lens are the best of 32 candidates against the times and
 //! lens positions of its 8 nearest earlier image neighbours (pbrt-v2's redistribution). Because
@@ -13,7 +14,16 @@ use crate::Error;
 use crate::hash::{hash2, mix64, unit_f32};
 use crate::math::clamp_unit;
 
+// The table: stored (written by the script), or with `lazy-tables` generated at first use by
+// the same algorithm (the tests compile both and compare them).
+#[cfg(any(feature = "lazy-tables", test))]
+mod generate;
+#[cfg(any(not(feature = "lazy-tables"), test))]
 mod table;
+#[cfg(feature = "lazy-tables")]
+use generate::TABLE;
+#[cfg(not(feature = "lazy-tables"))]
+use table::TABLE;
 
 /// Rows in the baked table.
 ///
@@ -33,7 +43,7 @@ pub const TABLE_SIZE: u32 = 4096;
 /// assert_eq!(table_row(4096), r);
 /// ```
 pub fn table_row(k: u32) -> [f32; 5] {
-    let q = table::TABLE[(k % TABLE_SIZE) as usize];
+    let q = TABLE[(k % TABLE_SIZE) as usize];
     q.map(|v| (f32::from(v) + 0.5) * (1.0 / 65536.0))
 }
 
@@ -128,7 +138,7 @@ impl BestCandidateSampler {
             );
             return unit_f32((h >> 32) as u32);
         }
-        let v = (f32::from(table::TABLE[row as usize][dim as usize]) + 0.5) * (1.0 / 65536.0);
+        let v = (f32::from(TABLE[row as usize][dim as usize]) + 0.5) * (1.0 / 65536.0);
         let s = v + self.shifts[dim as usize];
         clamp_unit(if s >= 1.0 { s - 1.0 } else { s })
     }
