@@ -22,6 +22,7 @@
 //! `[0, 1)` for every seed draw.
 
 use crate::hash::mix32;
+use crate::lazy_table::baked_table;
 
 /// How a sampler randomizes its values (pbrt-v4's `RandomizeStrategy`).
 ///
@@ -207,12 +208,14 @@ pub const fn scramble_u32(x: u32, seed: u32, how: Scramble) -> u32 {
     }
 }
 
-/// `REVERSED_F32[j][b]`: byte `j` of a bit-reversed word's share of [`reversed_to_f32`],
-/// `reverse8(b) · 2^(−8(j+1))`. Built at compile time; 3 KiB.
-static REVERSED_F32: [[f32; 256]; 3] = reversed_f32_tables();
+baked_table! {
+    /// `REVERSED_F32[j][b]`: byte `j` of a bit-reversed word's share of [`reversed_to_f32`],
+    /// `reverse8(b) · 2^(−8(j+1))`. Built at compile time ([`baked_table!`]); 3 KiB.
+    static REVERSED_F32: [[f32; 256]; 3] = [[0.0; 256]; 3], fill_reversed_f32,
+        reversed_f32_at_first_use_equals_the_baked_table;
+}
 
-const fn reversed_f32_tables() -> [[f32; 256]; 3] {
-    let mut t = [[0.0f32; 256]; 3];
+const fn fill_reversed_f32(t: &mut [[f32; 256]; 3]) {
     let scale = [1.0 / 256.0, 1.0 / 65_536.0, 1.0 / 16_777_216.0];
     let mut j = 0;
     while j < 3 {
@@ -223,7 +226,6 @@ const fn reversed_f32_tables() -> [[f32; 256]; 3] {
         }
         j += 1;
     }
-    t
 }
 
 /// The `f32` of the binary fraction `reverse(w_rev)` (its top 24 bits, truncated: never 1) from

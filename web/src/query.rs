@@ -145,7 +145,9 @@ pub fn described<T: clap::ValueEnum>() -> Vec<(String, String)> {
         .iter()
         .filter_map(|v| v.to_possible_value())
         .map(|p| {
-            let help = p.get_help().map(|h| h.to_string()).unwrap_or_default();
+            // The raw text: these help strings carry no styling, and the styled `Display` would
+            // bring clap's ANSI stripper (and its 4 KiB state table) into the module.
+            let help = p.get_help().map(|h| h.ansi().to_string()).unwrap_or_default();
             (p.get_name().to_owned(), help)
         })
         .collect()

@@ -1096,8 +1096,7 @@ const SMALL_FOLD_BASES: usize = 9;
 
 /// `T_b(r) · 2¹²⁸` for `b ≤ 23`, where `T_b(r) = Σ_{i≥0} ((r+i) mod b)·b^−(i+1)`, summed by
 /// Horner from 150 digits out (truncation error below 2⁻¹²⁷).
-const fn build_fold_tails() -> [[u128; 23]; SMALL_FOLD_BASES] {
-    let mut out = [[0u128; 23]; SMALL_FOLD_BASES];
+const fn fill_fold_tails(out: &mut [[u128; 23]; SMALL_FOLD_BASES]) {
     let mut d = 0;
     while d < SMALL_FOLD_BASES {
         let b = PRIME_TABLE[d] as u128;
@@ -1119,10 +1118,12 @@ const fn build_fold_tails() -> [[u128; 23]; SMALL_FOLD_BASES] {
         }
         d += 1;
     }
-    out
 }
 
-static FOLD_TAILS: [[u128; 23]; SMALL_FOLD_BASES] = build_fold_tails();
+baked_table! {
+    static FOLD_TAILS: [[u128; 23]; SMALL_FOLD_BASES] = [[0; 23]; SMALL_FOLD_BASES],
+        fill_fold_tails, fold_tails_at_first_use_equal_the_baked_table;
+}
 
 /// The folded tail `T_b(r) = Σ_{i≥0} ((r+i) mod b)·b^−(i+1)` as a 128-bit fraction (error below
 /// 2⁻¹²⁶). For `b ≥ 29`, by the closed form

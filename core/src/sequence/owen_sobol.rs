@@ -398,19 +398,20 @@ impl IndexShuffle {
     }
 }
 
-/// `REV16[j][b]`: byte `j` of a 16-bit index, bit-reversed into a 32-bit word
-/// (`reverse8(b) << (24 − 8j)`). Built at compile time; 2 KiB.
-static REV16: [[u32; 256]; 2] = rev16_tables();
+baked_table! {
+    /// `REV16[j][b]`: byte `j` of a 16-bit index, bit-reversed into a 32-bit word
+    /// (`reverse8(b) << (24 − 8j)`). Built at compile time ([`baked_table!`]); 2 KiB.
+    static REV16: [[u32; 256]; 2] = [[0; 256]; 2], fill_rev16,
+        rev16_at_first_use_equals_the_baked_table;
+}
 
-const fn rev16_tables() -> [[u32; 256]; 2] {
-    let mut t = [[0u32; 256]; 2];
+const fn fill_rev16(t: &mut [[u32; 256]; 2]) {
     let mut b = 0;
     while b < 256 {
         t[0][b] = ((b as u8).reverse_bits() as u32) << 24;
         t[1][b] = ((b as u8).reverse_bits() as u32) << 16;
         b += 1;
     }
-    t
 }
 
 /// Indices below this shuffle to indices below it ([`IndexShuffle`]).

@@ -10,6 +10,7 @@
 
 use super::{Sequence, sobol_u32};
 use crate::hash;
+use crate::lazy_table::baked_table;
 use crate::math::fraction_to_f32 as to_f32;
 
 /// The scrambled (0,2)-sequence: point `i` is `(Φ₂(i) ⊕ s₀, Sobol₁(i) ⊕ s₁)` in 32-bit binary
@@ -119,13 +120,15 @@ impl ZeroTwo {
     }
 }
 
-/// The unscrambled points `0..256`, `[reverse_bits(i), sobol_u32(i, 1)]`, computed at compile
-/// time from the recurrence of the second dimension's columns (`V_1 = 2³¹`,
-/// `V_{k+1} = V_k ⊕ (V_k ≫ 1)`; checked against the Joe–Kuo table by the tests).
-const FIRST_POINTS: [[u32; 2]; 256] = first_points();
+baked_table! {
+    /// The unscrambled points `0..256`, `[reverse_bits(i), sobol_u32(i, 1)]`, computed at compile
+    /// time ([`baked_table!`]) from the recurrence of the second dimension's columns (`V_1 = 2³¹`,
+    /// `V_{k+1} = V_k ⊕ (V_k ≫ 1)`; checked against the Joe–Kuo table by the tests).
+    static FIRST_POINTS: [[u32; 2]; 256] = [[0; 2]; 256], fill_first_points,
+        first_points_at_first_use_equal_the_baked_table;
+}
 
-const fn first_points() -> [[u32; 2]; 256] {
-    let mut out = [[0u32; 2]; 256];
+const fn fill_first_points(out: &mut [[u32; 2]; 256]) {
     let mut i = 0;
     while i < 256 {
         let (mut y, mut v, mut k) = (0u32, 1u32 << 31, 0);
@@ -139,7 +142,6 @@ const fn first_points() -> [[u32; 2]; 256] {
         out[i] = [(i as u32).reverse_bits(), y];
         i += 1;
     }
-    out
 }
 
 impl Sequence for ZeroTwo {

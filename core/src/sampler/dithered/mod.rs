@@ -151,7 +151,7 @@ impl<'a> MaskView<'a> {
     /// ```
     pub fn builtin() -> MaskView<'static> {
         MaskView {
-            ranks: Ranks::Narrow(&DITHER_MASK_RANKS),
+            ranks: Ranks::Narrow(builtin_ranks()),
             width: 64,
             height: 64,
             channels: 2,
@@ -187,6 +187,50 @@ impl<'a> MaskView<'a> {
 /// The ranks of the built-in dither mask, channel-major (2 × 64 × 64), each below 4096 and so
 /// stored in 16 bits (16 KiB); regenerated and checked by the test `builtin_mask_is_current`.
 pub static DITHER_MASK_RANKS: [u16; 2 * 64 * 64] = include!("dither_mask.in");
+
+/// The built-in mask as [`MaskView::builtin`] reads it: [`DITHER_MASK_RANKS`], or with the
+/// `lazy-tables` feature the same ranks generated at first use (16 KiB less in the binary; about
+/// 0.1 s and 100 KiB of stack once), so a program that does not name the static does not carry it.
+#[cfg(not(feature = "lazy-tables"))]
+fn builtin_ranks() -> &'static [u16; 2 * 64 * 64] {
+    &DITHER_MASK_RANKS
+}
+
+#[cfg(feature = "lazy-tables")]
+fn builtin_ranks() -> &'static [u16; 2 * 64 * 64] {
+    &GENERATED_MASK
+}
+
+/// The fill of [`GENERATED_MASK`]: the generator and parameters that made the stored mask.
+#[cfg(any(feature = "lazy-tables", test))]
+struct BuiltinMask;
+
+#[cfg(any(feature = "lazy-tables", test))]
+impl crate::lazy_table::Fill for BuiltinMask {
+    type Table = [u16; 2 * 64 * 64];
+
+    fn fill(t: &mut [u16; 2 * 64 * 64]) {
+        let mut ranks = [0u32; 2 * 64 * 64];
+        let mut energy = [0.0f32; 64 * 64];
+        let mut scratch = [0u32; 3 * 64 * 64];
+        // Neither call can fail with these sizes; the test below compares every rank.
+        if let Ok(vc) = crate::bluenoise::VoidAndCluster::new(64, 64, 0)
+            && vc
+                .generate_channels(&mut ranks, &mut energy, &mut scratch)
+                .is_ok()
+        {
+            for (t, r) in t.iter_mut().zip(ranks) {
+                *t = r as u16;
+            }
+        }
+    }
+}
+
+/// [`DITHER_MASK_RANKS`] generated at first use.
+#[cfg(any(feature = "lazy-tables", test))]
+#[cfg_attr(all(test, not(feature = "lazy-tables")), allow(dead_code))]
+static GENERATED_MASK: crate::lazy_table::LazyTable<BuiltinMask> =
+    crate::lazy_table::LazyTable::new([0; 2 * 64 * 64]);
 
 /// A pixel sampler that gives every pixel the same point set, the one `inner` gives pixel
 /// (0, 0), toroidally shifted by the mask: dimension `d` of pixel `p` is

@@ -43,6 +43,13 @@ fn builtin_mask_is_current() {
     );
 }
 
+/// The mask generated at first use (`lazy-tables`) is the stored one.
+#[test]
+fn generated_mask_equals_the_stored_one() {
+    assert_eq!(*GENERATED_MASK, DITHER_MASK_RANKS);
+    assert_eq!(builtin_ranks(), &DITHER_MASK_RANKS);
+}
+
 /// Every dimension of every pixel is `frac(x + mask)` of the shared set's value (the inner
 /// sampler at pixel (0, 0)), dimension d on channel d mod 2, and stays in [0, 1).
 #[test]
