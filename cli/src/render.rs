@@ -357,7 +357,9 @@ pub fn reference_with_progress(
             }
         })
         .collect();
-    let path = cache_dir().map(|d| {
+    // No cache without a file system; the tests of `NO_FILE_SYSTEM` below are what keep the
+    // cache's file code out of that build.
+    let path = cache_dir().filter(|_| !NO_FILE_SYSTEM).map(|d| {
         d.join(format!(
             "reference-v2-{}-{}x{}-stratified{REFERENCE_STRATA}-{key}.pfm",
             scene.name(),
@@ -366,7 +368,7 @@ pub fn reference_with_progress(
         ))
     });
     let header = reference_header(scene, size, &spec);
-    if let Some(p) = &path {
+    if !NO_FILE_SYSTEM && let Some(p) = &path {
         match read_cached_reference(p, &header, size) {
             Ok(Some(img)) => return Ok(Some(channel0(&img))),
             Ok(None) => {}
@@ -384,7 +386,7 @@ pub fn reference_with_progress(
         None,
     )?;
     let r = render(scene, size, &sampler, filter, threads, tick)?;
-    if let Some(p) = &path {
+    if !NO_FILE_SYSTEM && let Some(p) = &path {
         // A cache that cannot be written only costs time next run.
         let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new("."))).map(|()| {
             crate::output::write_atomic(p, |w| write_cached_reference(w, &header, &r.image))
@@ -479,6 +481,12 @@ fn read_cached_reference(
     Ok(Some(img))
 }
 
+/// No file system: `wasm32-unknown-unknown`, where references are not cached on disk (the
+/// browser explorer keeps them in memory instead).
+const NO_FILE_SYSTEM: bool = cfg!(all(target_arch = "wasm32", target_os = "unknown"));
+
+/// The folder of cached references: `$XDG_CACHE_HOME/nyquist` (absolute), else
+/// `$HOME/.cache/nyquist`.
 fn cache_dir() -> Option<PathBuf> {
     let base = match std::env::var_os("XDG_CACHE_HOME") {
         Some(d) if !d.is_empty() && Path::new(&d).is_absolute() => PathBuf::from(d),
