@@ -147,7 +147,10 @@ pub fn described<T: clap::ValueEnum>() -> Vec<(String, String)> {
         .map(|p| {
             // The raw text: these help strings carry no styling, and the styled `Display` would
             // bring clap's ANSI stripper (and its 4 KiB state table) into the module.
-            let help = p.get_help().map(|h| h.ansi().to_string()).unwrap_or_default();
+            let help = p
+                .get_help()
+                .map(|h| h.ansi().to_string())
+                .unwrap_or_default();
             (p.get_name().to_owned(), help)
         })
         .collect()
