@@ -1592,6 +1592,23 @@ fn phase_table_rejects_what_it_cannot_hold() {
     assert_eq!(PhaseTable::new(&just).unwrap().taps(Axis::Y), 16);
 }
 
+/// A constant axis answers its 1D factor without a lookup: exactly the box's height inside the
+/// radius and exactly 0 past it (and for NaN), on each axis of a box with unequal radii.
+#[test]
+fn phase_weight_1d_of_a_box_is_its_height_inside_and_0_past_the_radius() {
+    let b = Boxcar::new([0.7, 1.5]).unwrap();
+    let t = PhaseTable::new(&b).unwrap();
+    for (axis, r) in [(Axis::X, 0.7f32), (Axis::Y, 1.5)] {
+        for k in -100..=100 {
+            let d = k as f32 / 100.0 * r;
+            assert_eq!(t.weight_1d(axis, d), 1.0, "{axis:?} d = {d}");
+        }
+        for d in [r.next_up(), -r.next_up(), 2.0 * r, 100.0, f32::INFINITY, f32::NAN] {
+            assert_eq!(t.weight_1d(axis, d), 0.0, "{axis:?} d = {d}");
+        }
+    }
+}
+
 #[test]
 fn phase_tables_keep_a_box_exact_up_to_its_edge() {
     // A radius whose edge is off the 1/64 grid: rows interpolate towards f(r) = 1, never
