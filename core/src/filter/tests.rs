@@ -1603,7 +1603,14 @@ fn phase_weight_1d_of_a_box_is_its_height_inside_and_0_past_the_radius() {
             let d = k as f32 / 100.0 * r;
             assert_eq!(t.weight_1d(axis, d), 1.0, "{axis:?} d = {d}");
         }
-        for d in [r.next_up(), -r.next_up(), 2.0 * r, 100.0, f32::INFINITY, f32::NAN] {
+        for d in [
+            r.next_up(),
+            -r.next_up(),
+            2.0 * r,
+            100.0,
+            f32::INFINITY,
+            f32::NAN,
+        ] {
             assert_eq!(t.weight_1d(axis, d), 0.0, "{axis:?} d = {d}");
         }
     }

@@ -1,6 +1,6 @@
 //! pbrt-v3/v4's Halton sampler: one Halton sequence over the whole image.
 
-use super::{CameraSample, Sampler, film};
+use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::radical::{
     fast_owen_scrambled_radical_inverse, inverse_radical_inverse, owen_scrambled_radical_inverse,
@@ -268,7 +268,10 @@ impl Sampler for HaltonSampler {
         let v = [self.sample(2), self.sample(3), self.sample(4)];
         self.dim = 5;
         CameraSample {
-            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+            p_film: [
+                film_coordinate(pixel[0], p[0]),
+                film_coordinate(pixel[1], p[1]),
+            ],
             lens: [v[1], v[2]],
             time: v[0],
         }

@@ -383,7 +383,10 @@ pub(crate) fn camera_sample_by_parts<S: Sampler + ?Sized>(
     let time = s.get_1d();
     let lens = s.get_2d();
     CameraSample {
-        p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+        p_film: [
+            film_coordinate(pixel[0], p[0]),
+            film_coordinate(pixel[1], p[1]),
+        ],
         lens,
         time,
     }
@@ -406,7 +409,7 @@ pub(crate) fn camera_sample_by_parts<S: Sampler + ?Sized>(
 /// assert_eq!(film_coordinate(105, last), 106.0f32.next_down()); // not 106, not 105
 /// assert_eq!(film_coordinate(1 << 24, 0.75), 16_777_216.0);
 /// ```
-#[inline]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub fn film_coordinate(pixel: u32, offset: f32) -> f32 {
     let base = pixel as f32;
     let x = base + offset;
@@ -418,12 +421,6 @@ pub fn film_coordinate(pixel: u32, offset: f32) -> f32 {
         let below = edge.next_down();
         if below >= base { below } else { base }
     }
-}
-
-/// [`film_coordinate`], under the short name the samplers use.
-#[cfg_attr(not(feature = "small-code"), inline(always))]
-pub(crate) fn film(pixel: u32, offset: f32) -> f32 {
-    film_coordinate(pixel, offset)
 }
 
 /// The first checks of the samplers over a whole image (halton, hammersley, sobol, zsobol):

@@ -1,7 +1,7 @@
 //! Owen-scrambled Sobol per pixel, decorrelated by hashing the full pixel coordinates, the frame
 //! and the seed.
 
-use super::{CameraSample, Sampler, film};
+use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::hash::{hash_slice, mix32};
 use crate::sequence::{DimSeeds, IndexShuffle, owen_sobol_rev_f32};
@@ -155,7 +155,10 @@ impl Sampler for OwenSobolSampler {
             core::array::from_fn(|d| owen_sobol_rev_f32(self.r, d as u32, self.seeds.kept()[d]));
         self.dim = 5;
         CameraSample {
-            p_film: [film(pixel[0], v[0]), film(pixel[1], v[1])],
+            p_film: [
+                film_coordinate(pixel[0], v[0]),
+                film_coordinate(pixel[1], v[1]),
+            ],
             lens: [v[3], v[4]],
             time: v[2],
         }

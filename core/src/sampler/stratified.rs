@@ -1,6 +1,6 @@
 //! Stratified (jittered) and uniform (cell-centre) sampling, hash-permuted per dimension.
 
-use super::{CameraSample, Sampler, film, pixel_hash};
+use super::{CameraSample, Sampler, film_coordinate, pixel_hash};
 use crate::Error;
 use crate::hash::{ArrayOrder, Permutation, mix64, permute, unit_f32};
 use crate::math::ONE_MINUS_EPSILON;
@@ -305,7 +305,10 @@ impl Sampler for StratifiedSampler {
         let lens = self.cell_value(self.camera_perms[1].apply(self.index), [jx, jy]);
         self.dim = 5;
         CameraSample {
-            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+            p_film: [
+                film_coordinate(pixel[0], p[0]),
+                film_coordinate(pixel[1], p[1]),
+            ],
             lens,
             time,
         }

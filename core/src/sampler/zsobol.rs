@@ -3,7 +3,7 @@
 //! space (Ahmed & Wonka 2020, "Screen-Space Blue-Noise Diffusion of Monte Carlo Sampling
 //! Error via Hierarchical Ordering of Pixels"; the form pbrt-v4 ships as `ZSobolSampler`).
 
-use super::{CameraSample, Sampler, film};
+use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::hash::{hash2, mix32, mix64};
 use crate::lazy_table::{baked_table, const_unless_lazy};
@@ -558,7 +558,10 @@ impl Sampler for ZSobolSampler {
         let lens = self.value_2d(3);
         self.dim = 5;
         CameraSample {
-            p_film: [film(pixel[0], p[0]), film(pixel[1], p[1])],
+            p_film: [
+                film_coordinate(pixel[0], p[0]),
+                film_coordinate(pixel[1], p[1]),
+            ],
             lens,
             time,
         }
