@@ -114,9 +114,8 @@ diff="$OUT/change.diff"
 # what the copy cargo-mutants makes holds (uncommitted edits included), which the diff must match.
 git diff "$base" -- "${SOURCES[@]}" >"$diff"
 
-strip_position() { sed -E 's/^([^:]+):[0-9]+:[0-9]+: /\1: /'; }
-equivalent_names() { grep -v -e '^#' -e '^[[:space:]]*$' "$EQUIVALENT" | sed -E 's/  # .*$//'; }
-count() { if [ -s "$1" ]; then grep -c . "$1"; else echo 0; fi; }
+# strip_position, equivalent_names, count.
+. scripts/mutants-common.sh
 config="--config=profile.dev.package.nyquist.opt-level=$OPT_LEVEL"
 
 # The test filter for a file not in the modules list: its module path, `core/src/a/b.rs` ->

@@ -64,12 +64,8 @@ if ! cargo mutants --version >/dev/null 2>&1; then
     exit 1
 fi
 
-# A mutant's name without its line and column, as scripts/mutants-equivalent.txt lists it:
-# "core/src/hash.rs:12:5: replace + with - in mix" -> "core/src/hash.rs: replace + with - in mix".
-strip_position() { sed -E 's/^([^:]+):[0-9]+:[0-9]+: /\1: /'; }
-# The listed equivalent mutants' names (the part of each line before "  # ").
-equivalent_names() { grep -v -e '^#' -e '^[[:space:]]*$' "$EQUIVALENT" | sed -E 's/  # .*$//'; }
-count() { if [ -s "$1" ]; then grep -c . "$1"; else echo 0; fi; }
+# strip_position, equivalent_names, count.
+. scripts/mutants-common.sh
 
 selected=("$@")
 [ ${#selected[@]} -gt 0 ] || mapfile -t selected < <(modules | cut -d'|' -f1)
