@@ -1592,6 +1592,37 @@ fn phase_table_rejects_what_it_cannot_hold() {
     assert_eq!(PhaseTable::new(&just).unwrap().taps(Axis::Y), 16);
 }
 
+/// `row4` is the first four lanes of `row`, bit for bit, for every built-in filter, both axes,
+/// stored and in-between phases and phases out of range (clamped as `row` clamps them).
+#[test]
+fn phase_row4_is_the_first_four_lanes_of_row() {
+    let mut rng = default_rng(43);
+    for (f, _) in cases() {
+        if f.radius()[0] >= 8.0 || f.radius()[1] >= 8.0 {
+            continue;
+        }
+        let t = PhaseTable::new(&f).unwrap();
+        for axis in [Axis::X, Axis::Y] {
+            let phases = (0..=PHASES)
+                .map(|j| j as f32 / PHASES as f32)
+                .chain((0..64).map(|_| uniform_f32(&mut rng)))
+                .chain([-0.5, 1.5, f32::NAN]);
+            for phase in phases {
+                // `row` writes whole 4-lane groups (taps, then 0), so its first four lanes are
+                // always written.
+                let mut w = [f32::NAN; MAX_TAPS];
+                t.row(axis, phase, &mut w);
+                let want = [w[0], w[1], w[2], w[3]].map(f32::to_bits);
+                assert_eq!(
+                    t.row4(axis, phase).map(f32::to_bits),
+                    want,
+                    "{f} {axis:?} {phase}"
+                );
+            }
+        }
+    }
+}
+
 /// A constant axis answers its 1D factor without a lookup: exactly the box's height inside the
 /// radius and exactly 0 past it (and for NaN), on each axis of a box with unequal radii.
 #[test]
