@@ -1592,6 +1592,43 @@ fn phase_table_rejects_what_it_cannot_hold() {
     assert_eq!(PhaseTable::new(&just).unwrap().taps(Axis::Y), 16);
 }
 
+/// Footprints whose first pixel is the first tap on both axes (shift 0, where the 4 × 4 outer
+/// product serves those that fit) of every size up to 8 × 8: every weight written, each the
+/// single lookup's weight up to the rounding of the offsets; and the table's radius and
+/// integral are the filter's.
+#[test]
+fn phase_footprints_of_every_size_at_shift_0_match_single_lookups() {
+    for (f, _) in cases() {
+        let [rx, ry] = f.radius();
+        if rx >= 8.0 || ry >= 8.0 {
+            continue;
+        }
+        let t = PhaseTable::new(&f).unwrap();
+        assert_eq!(t.radius(), [rx, ry], "{f}");
+        assert_eq!(t.integral(), f.integral(), "{f}");
+        let scale = f.eval(0.0, 0.0).abs().max(1.0);
+        for frac in [0.0f32, 0.25, 0.5, 0.9] {
+            let d0 = [-rx + frac, -ry + frac];
+            for nx in 1..=8usize {
+                for ny in 1..=8usize {
+                    let mut out = std::vec![f32::NAN; nx * ny];
+                    t.footprint(d0, nx, &mut out).unwrap();
+                    for j in 0..ny {
+                        for i in 0..nx {
+                            let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+                            let (got, want) = (out[j * nx + i], t.weight(dx, dy));
+                            assert!(
+                                (got - want).abs() <= 1e-4 * scale * scale,
+                                "{f} {nx}x{ny} at ({i},{j}): footprint {got} single {want}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
 /// `row4` is the first four lanes of `row`, bit for bit, for every built-in filter, both axes,
 /// stored and in-between phases and phases out of range (clamped as `row` clamps them).
 #[test]
