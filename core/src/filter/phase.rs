@@ -51,6 +51,9 @@ pub const PHASES: usize = 64;
 /// ```
 pub const MAX_TAPS: usize = 16;
 
+/// The largest shift of a footprint's first tap that [`PhaseAxis::locate`] forms exactly (2²²).
+const SHIFT_LIMIT: f32 = 4_194_304.0;
+
 /// One axis of a [`PhaseTable`].
 #[derive(Clone, Debug, PartialEq)]
 struct PhaseAxis {
@@ -358,7 +361,9 @@ impl PhaseTable {
     /// rounding of those sums; a one-weight footprint is `weight(d0[0], d0[1])`.
     ///
     /// # Errors
-    /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
+    /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`;
+    /// [`Error::TooMany`] for more than 2²² columns or rows (the first pixel's tap is formed
+    /// exactly up to that distance from the support).
     ///
     /// ```
     /// use nyquist::filter::{Mitchell, PhaseTable};
@@ -379,7 +384,12 @@ impl PhaseTable {
     /// [`footprint`](Self::footprint) past the one-weight case.
     #[inline]
     fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        super::table::check_footprint(nx, out)?;
+        let ny = super::table::check_footprint(nx, out)?;
+        if nx.max(ny) > SHIFT_LIMIT as usize {
+            return Err(Error::TooMany {
+                what: "footprint side (more than 2^22 pixels)",
+            });
+        }
         let (sx, px) = self.axes[0].locate(d0[0]);
         let (sy, py) = self.axes[1].locate(d0[1]);
         if nx <= 4 && out.len() <= 4 * nx && sx == 0 && sy == 0 {
@@ -447,8 +457,13 @@ impl PhaseAxis {
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn locate(&self, d0: f32) -> (isize, f32) {
         let s = d0 + self.radius;
-        // ⌊s⌋ for |s| < 2²⁴ with the clamp keeping the conversion exact; beyond, every tap is 0.
-        let c = s.max(-(2.0 * MAX_TAPS as f32)).min(2.0 * MAX_TAPS as f32);
+        // ⌊s⌋ by the rounding trick, exact for |c| ≤ 2²² (where c + MAGIC is an integer-spaced
+        // f32). A first pixel further than that from the support is 2²² pixels or more from
+        // it: to the right every tap is 0 either way; to the left a footprint would need more
+        // than 2²² columns (or rows) to reach it, which `footprint` refuses.
+        // max/min rather than clamp: a NaN `s` becomes −SHIFT_LIMIT (every tap 0), not NaN.
+        #[allow(clippy::manual_clamp)]
+        let c = s.max(-SHIFT_LIMIT).min(SHIFT_LIMIT);
         // ⌊c⌋ by the rounding trick: round c to an integer, step back when that passed c.
         let m = c + MAGIC;
         let r = m - MAGIC;

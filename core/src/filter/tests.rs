@@ -1629,6 +1629,72 @@ fn phase_footprints_of_every_size_at_shift_0_match_single_lookups() {
     }
 }
 
+/// A footprint may start any distance before the filter's support: a row of 80 pixels from 70
+/// pixels to the left of it gets the single lookups' weights where it crosses the support (the
+/// shift of the first pixel was once clamped to ±32, which read the wrong taps there).
+#[test]
+fn phase_footprints_far_from_the_support_match_single_lookups() {
+    for (f, _) in cases() {
+        let [rx, ry] = f.radius();
+        if rx >= 8.0 || ry >= 8.0 {
+            continue;
+        }
+        let phase = PhaseTable::new(&f).unwrap();
+        let linear: FilterTable = FilterTable::new(&f, Interpolation::Linear).unwrap();
+        let nearest: FilterTable = FilterTable::new(&f, Interpolation::Nearest).unwrap();
+        let scale = f.eval(0.0, 0.0).abs().max(1.0);
+        for d0 in [[-70.3f32, 0.2], [-33.0, -0.6], [0.4, -70.3]] {
+            let (nx, ny) = if d0[0] < -1.0 { (80, 1) } else { (1, 80) };
+            type Footprint<'a> = &'a dyn Fn([f32; 2], usize, &mut [f32]);
+            type Single<'a> = &'a dyn Fn(f32, f32) -> f32;
+            let tables: [(&str, Footprint, Single); 3] = [
+                (
+                    "phase",
+                    &|d, n, o| phase.footprint(d, n, o).unwrap(),
+                    &|x, y| phase.weight(x, y),
+                ),
+                (
+                    "linear",
+                    &|d, n, o| linear.footprint(d, n, o).unwrap(),
+                    &|x, y| linear.weight(x, y),
+                ),
+                (
+                    "nearest",
+                    &|d, n, o| nearest.footprint(d, n, o).unwrap(),
+                    &|x, y| nearest.weight(x, y),
+                ),
+            ];
+            for (name, footprint, single) in tables {
+                let mut out = std::vec![f32::NAN; nx * ny];
+                footprint(d0, nx, &mut out);
+                for j in 0..ny {
+                    for i in 0..nx {
+                        let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+                        let (got, want) = (out[j * nx + i], single(dx, dy));
+                        assert!(
+                            (got - want).abs() <= 1e-4 * scale * scale,
+                            "{name} {f} from {d0:?} at ({i},{j}): footprint {got} single {want}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// Footprints of more than 2²² rows or columns are refused (the limit of the exact shift).
+#[test]
+fn phase_footprints_wider_than_2_pow_22_are_refused() {
+    let t = PhaseTable::new(&Mitchell::default()).unwrap();
+    let mut out = std::vec![0.0f32; (1 << 22) + 1];
+    let refused = Err(Error::TooMany {
+        what: "footprint side (more than 2^22 pixels)",
+    });
+    assert_eq!(t.footprint([0.0, 0.0], 1, &mut out), refused);
+    assert_eq!(t.footprint([0.0, 0.0], (1 << 22) + 1, &mut out), refused);
+    assert_eq!(t.footprint([0.0, 0.0], 1, &mut out[..1 << 22]), Ok(()));
+}
+
 /// `row4` is the first four lanes of `row`, bit for bit, for every built-in filter, both axes,
 /// stored and in-between phases and phases out of range (clamped as `row` clamps them).
 #[test]
