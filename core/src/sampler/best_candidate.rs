@@ -174,33 +174,18 @@ mod tests {
     use crate::sampler::tests::{consistent_values, threads_agree};
     use std::vec::Vec;
 
-    /// SplitMix64, as in the script.
-    struct SplitMix64(u64);
-    impl SplitMix64 {
-        fn unit(&mut self) -> f64 {
-            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^= z >> 31;
-            (z >> 11) as f64 * (1.0 / 9_007_199_254_740_992.0)
-        }
-    }
-
-    fn wrap(d: f64) -> f64 {
-        let d = d.abs();
-        if d > 0.5 { 1.0 - d } else { d }
-    }
+    // The script's random numbers and toroidal distance, as the generator implements them.
+    use super::generate::{SEED, SplitMix64, wrap};
 
     fn d2(p: &[f64; 5], x: f64, y: f64) -> f64 {
         let (a, b) = (wrap(x - p[0]), wrap(y - p[1]));
         a * a + b * b
     }
 
-    /// The script's algorithm, brute force (the script itself switches to a grid search from
-    /// 64 points on, which makes the same choices).
+    /// The script's algorithm, brute force, written from its description (the script and
+    /// `generate.rs` switch to grid searches from 64 points on, which make the same choices;
+    /// `generate.rs`'s test compares all 4096 rows).
     fn regenerate(n: usize) -> Vec<[u16; 5]> {
-        const SEED: u64 = 0x6E79_7175_6973_7431;
         let mut rng = SplitMix64(SEED);
         let mut pts: Vec<[f64; 5]> = Vec::new();
         for i in 0..n {

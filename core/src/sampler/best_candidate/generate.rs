@@ -12,7 +12,7 @@ use crate::lazy_table::{Fill, LazyTable};
 
 const N: usize = TABLE_SIZE as usize;
 /// SplitMix64 seed, "nyquist1".
-const SEED: u64 = 0x6E79_7175_6973_7431;
+pub(super) const SEED: u64 = 0x6E79_7175_6973_7431;
 /// Image candidates for point `i`: `min(1 + K·i, MAX_CANDIDATES)`.
 const K: usize = 4;
 const MAX_CANDIDATES: usize = 4096;
@@ -27,10 +27,10 @@ const BRUTE: usize = 64;
 const NONE: u16 = u16::MAX;
 
 /// SplitMix64 (Steele, Lea & Flood 2014); a float is `(u >> 11) · 2⁻⁵³`.
-struct SplitMix64(u64);
+pub(super) struct SplitMix64(pub(super) u64);
 
 impl SplitMix64 {
-    fn unit(&mut self) -> f64 {
+    pub(super) fn unit(&mut self) -> f64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -41,7 +41,7 @@ impl SplitMix64 {
 }
 
 /// Toroidal distance along one axis: `min(|d|, 1 − |d|)`.
-fn wrap(d: f64) -> f64 {
+pub(super) fn wrap(d: f64) -> f64 {
     let d = d.abs();
     if d > 0.5 { 1.0 - d } else { d }
 }
