@@ -1592,10 +1592,36 @@ fn phase_table_rejects_what_it_cannot_hold() {
     assert_eq!(PhaseTable::new(&just).unwrap().taps(Axis::Y), 16);
 }
 
+/// A table's `footprint(d0, nx, out)`.
+type FootprintFn<'a> = &'a dyn Fn([f32; 2], usize, &mut [f32]);
+
+/// Fills an `nx × ny` footprint from `d0` (NaN first, so a weight not written shows) and checks
+/// each weight against the single lookup at its offset, up to the rounding of the offsets.
+fn assert_footprint_matches_single_lookups(
+    what: &str,
+    footprint: FootprintFn,
+    single: &dyn Fn(f32, f32) -> f32,
+    d0: [f32; 2],
+    [nx, ny]: [usize; 2],
+    scale: f32,
+) {
+    let mut out = std::vec![f32::NAN; nx * ny];
+    footprint(d0, nx, &mut out);
+    for j in 0..ny {
+        for i in 0..nx {
+            let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
+            let (got, want) = (out[j * nx + i], single(dx, dy));
+            assert!(
+                (got - want).abs() <= 1e-4 * scale * scale,
+                "{what} {nx}x{ny} from {d0:?} at ({i},{j}): footprint {got} single {want}"
+            );
+        }
+    }
+}
+
 /// Footprints whose first pixel is the first tap on both axes (shift 0, where the 4 × 4 outer
 /// product serves those that fit) of every size up to 8 × 8: every weight written, each the
-/// single lookup's weight up to the rounding of the offsets; and the table's radius and
-/// integral are the filter's.
+/// single lookup's weight; and the table's radius and integral are the filter's.
 #[test]
 fn phase_footprints_of_every_size_at_shift_0_match_single_lookups() {
     for (f, _) in cases() {
@@ -1608,21 +1634,16 @@ fn phase_footprints_of_every_size_at_shift_0_match_single_lookups() {
         assert_eq!(t.integral(), f.integral(), "{f}");
         let scale = f.eval(0.0, 0.0).abs().max(1.0);
         for frac in [0.0f32, 0.25, 0.5, 0.9] {
-            let d0 = [-rx + frac, -ry + frac];
             for nx in 1..=8usize {
                 for ny in 1..=8usize {
-                    let mut out = std::vec![f32::NAN; nx * ny];
-                    t.footprint(d0, nx, &mut out).unwrap();
-                    for j in 0..ny {
-                        for i in 0..nx {
-                            let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
-                            let (got, want) = (out[j * nx + i], t.weight(dx, dy));
-                            assert!(
-                                (got - want).abs() <= 1e-4 * scale * scale,
-                                "{f} {nx}x{ny} at ({i},{j}): footprint {got} single {want}"
-                            );
-                        }
-                    }
+                    assert_footprint_matches_single_lookups(
+                        &std::format!("{f}"),
+                        &|d, n, o| t.footprint(d, n, o).unwrap(),
+                        &|x, y| t.weight(x, y),
+                        [-rx + frac, -ry + frac],
+                        [nx, ny],
+                        scale,
+                    );
                 }
             }
         }
@@ -1631,7 +1652,8 @@ fn phase_footprints_of_every_size_at_shift_0_match_single_lookups() {
 
 /// A footprint may start any distance before the filter's support: a row of 80 pixels from 70
 /// pixels to the left of it gets the single lookups' weights where it crosses the support (the
-/// shift of the first pixel was once clamped to ±32, which read the wrong taps there).
+/// shift of the first pixel was once clamped to ±32, which read the wrong taps there), in the
+/// phase, linear and nearest tables.
 #[test]
 fn phase_footprints_far_from_the_support_match_single_lookups() {
     for (f, _) in cases() {
@@ -1644,40 +1666,33 @@ fn phase_footprints_far_from_the_support_match_single_lookups() {
         let nearest: FilterTable = FilterTable::new(&f, Interpolation::Nearest).unwrap();
         let scale = f.eval(0.0, 0.0).abs().max(1.0);
         for d0 in [[-70.3f32, 0.2], [-33.0, -0.6], [0.4, -70.3]] {
-            let (nx, ny) = if d0[0] < -1.0 { (80, 1) } else { (1, 80) };
-            type Footprint<'a> = &'a dyn Fn([f32; 2], usize, &mut [f32]);
-            type Single<'a> = &'a dyn Fn(f32, f32) -> f32;
-            let tables: [(&str, Footprint, Single); 3] = [
-                (
-                    "phase",
-                    &|d, n, o| phase.footprint(d, n, o).unwrap(),
-                    &|x, y| phase.weight(x, y),
-                ),
-                (
-                    "linear",
-                    &|d, n, o| linear.footprint(d, n, o).unwrap(),
-                    &|x, y| linear.weight(x, y),
-                ),
-                (
-                    "nearest",
-                    &|d, n, o| nearest.footprint(d, n, o).unwrap(),
-                    &|x, y| nearest.weight(x, y),
-                ),
-            ];
-            for (name, footprint, single) in tables {
-                let mut out = std::vec![f32::NAN; nx * ny];
-                footprint(d0, nx, &mut out);
-                for j in 0..ny {
-                    for i in 0..nx {
-                        let (dx, dy) = (d0[0] + i as f32, d0[1] + j as f32);
-                        let (got, want) = (out[j * nx + i], single(dx, dy));
-                        assert!(
-                            (got - want).abs() <= 1e-4 * scale * scale,
-                            "{name} {f} from {d0:?} at ({i},{j}): footprint {got} single {want}"
-                        );
-                    }
-                }
-            }
+            let size = if d0[0] < -1.0 { [80, 1] } else { [1, 80] };
+            let name = |table: &str| std::format!("{table} {f}");
+            let check = assert_footprint_matches_single_lookups;
+            check(
+                &name("phase"),
+                &|d, n, o| phase.footprint(d, n, o).unwrap(),
+                &|x, y| phase.weight(x, y),
+                d0,
+                size,
+                scale,
+            );
+            check(
+                &name("linear"),
+                &|d, n, o| linear.footprint(d, n, o).unwrap(),
+                &|x, y| linear.weight(x, y),
+                d0,
+                size,
+                scale,
+            );
+            check(
+                &name("nearest"),
+                &|d, n, o| nearest.footprint(d, n, o).unwrap(),
+                &|x, y| nearest.weight(x, y),
+                d0,
+                size,
+                scale,
+            );
         }
     }
 }
