@@ -433,10 +433,11 @@ fn check_phase_table(name: &str, f: &dyn Filter, ctx: &Ctx) {
                 nx > 0 && len % nx == 0,
                 "{name}: phase footprint nx {nx}, len {len}"
             );
-            // Replay: taps of the row at the phase of d0 + r, shifted by ⌊d0 + r⌋ (clamped to
-            // ±2·MAX_TAPS, where every pixel is past the radius anyway), masked to the radius.
+            // Replay: taps of the row at the phase of d0 + r, shifted by ⌊d0 + r⌋ (exact up to
+            // ±2²², past which the first pixel is too far for these footprints to reach the
+            // support), masked to the radius.
             let factor = |axis: Axis, a: usize, i: usize| -> f32 {
-                let lim = 2.0 * MAX_TAPS as f32;
+                let lim = 4_194_304.0f32;
                 let c = (d0[a] + r[a]).max(-lim).min(lim);
                 let shift = c.floor();
                 let mut row = [0.0f32; MAX_TAPS];
