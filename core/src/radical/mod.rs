@@ -572,13 +572,13 @@ fn fraction_f64(num: u128, den: u128, frac: u128, inexact: bool) -> f64 {
     ((m as f64) * pow2(e)).min(ONE_MINUS_EPSILON_F64)
 }
 
-/// `num / den` correctly rounded to `f32` for `num < den < 2⁹⁶` (crate-internal helper, used by
-/// Hammersley's first coordinate).
+/// `num / den` correctly rounded to `f32` for `num < den < 2⁹⁶`, clamped below 1
+/// (crate-internal helper, used by Hammersley's first coordinate).
 pub(crate) fn ratio_f32(num: u128, den: u128) -> f32 {
     fraction_f32(num, den, 0, false)
 }
 
-/// `num / den` correctly rounded to `f64` for `num < den < 2⁹⁶`.
+/// `num / den` correctly rounded to `f64` for `num < den < 2⁹⁶`, clamped below 1.
 pub(crate) fn ratio_f64(num: u128, den: u128) -> f64 {
     fraction_f64(num, den, 0, false)
 }

@@ -476,3 +476,58 @@ proptest! {
         }
     }
 }
+
+/// `num / den` (`0 < num < den < 2⁶⁴`, `num / den ≥ 2⁻⁸`) rounded to nearest, ties to even, with
+/// `bits` significant bits, by one u128 division: an oracle independent of `long_divide`.
+fn rounded_ratio(num: u64, den: u64, bits: u32) -> f64 {
+    let q = (u128::from(num) << 64) / u128::from(den);
+    let sticky = (u128::from(num) << 64) % u128::from(den) != 0;
+    let len = 128 - q.leading_zeros(); // at least 56 bits, since num / den ≥ 2⁻⁸
+    let drop = len - bits;
+    let (mut m, rest) = (q >> drop, q & ((1u128 << drop) - 1));
+    let half = 1u128 << (drop - 1);
+    if rest > half || (rest == half && (sticky || m & 1 == 1)) {
+        m += 1;
+    }
+    // m < 2^(bits + 1): exact in f64; the power of two is exact too.
+    m as f64 * 2f64.powi(drop as i32 - 64)
+}
+
+/// `ratio_f32` and `ratio_f64` (Hammersley's first coordinate for n ≥ 2⁵², where `(k + ½)/n`
+/// has no exact `f64` operands) are correctly rounded and clamped below 1, against the oracle
+/// above: random fractions, ones just below 1, and halfway cases.
+#[test]
+fn ratios_are_correctly_rounded() {
+    let mut rng = crate::rng::default_rng(77);
+    let mut cases: std::vec::Vec<(u64, u64)> = (0..2000)
+        .map(|_| {
+            let den = (rng.next_u64() >> 1) | (1 << 62);
+            let num = den - 1 - rng.next_u64() % (den - den / 256);
+            (num, den)
+        })
+        .collect();
+    // Just below 1; exactly halfway between two f64 (f32) values above ½ (ties to even), and a
+    // third of an ulp of the division's remainder above and below that (the sticky bit decides).
+    cases.push((u64::MAX - 1, u64::MAX));
+    for bits in [53u32, 24] {
+        let tie = (1u64 << bits) + 1; // / 2^(bits + 1): ½ + half an ulp
+        let den = 1u64 << (bits + 1);
+        cases.extend([
+            (tie, den),
+            (tie + 2, den),
+            (3 * tie + 1, 3 * den),
+            (3 * tie - 1, 3 * den),
+        ]);
+    }
+    for (num, den) in cases {
+        // Clamped below 1, as the ratios are documented to be.
+        let want64 = rounded_ratio(num, den, 53).min(crate::math::ONE_MINUS_EPSILON_F64);
+        let want32 = rounded_ratio(num, den, 24).min(f64::from(crate::math::ONE_MINUS_EPSILON));
+        assert_eq!(ratio_f64(num.into(), den.into()), want64, "{num}/{den}");
+        assert_eq!(
+            f64::from(ratio_f32(num.into(), den.into())),
+            want32,
+            "{num}/{den}"
+        );
+    }
+}
