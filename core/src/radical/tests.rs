@@ -531,3 +531,45 @@ fn ratios_are_correctly_rounded() {
         );
     }
 }
+
+/// The batch and run forms agree with `radical_inverse` at the edges of their fast paths: each
+/// base's limit `b^k` and its neighbours, and for base 2 whole batches of indices whose low 32
+/// bits are all zero (their values are not the 32-bit reversal of those bits).
+#[test]
+fn batch_and_run_forms_agree_at_the_fast_path_edges() {
+    let mut out = [0.0f32; 64];
+    for d in (0..1024u32).step_by(7).chain([1, 2, 3, 1022, 1023]) {
+        let big = if d == 0 {
+            1u64 << 32
+        } else {
+            BASES[d as usize].big
+        };
+        let idx = [
+            big - 2,
+            big - 1,
+            big,
+            big + 1,
+            2 * big,
+            0,
+            1,
+            MIN_BIG - 1,
+            MIN_BIG,
+        ];
+        radical_inverse_at(d, &idx, &mut out).unwrap();
+        for (k, &a) in idx.iter().enumerate() {
+            assert_eq!(out[k], radical_inverse(d, a), "at: dim {d} index {a}");
+            let mut run = [0.0f32; 5];
+            radical_inverse_dims(d, a, &mut run);
+            for (j, &v) in run.iter().enumerate() {
+                let dj = (d + j as u32) % 1024;
+                assert_eq!(v, radical_inverse(dj, a), "dims: dim {dj} index {a}");
+            }
+        }
+    }
+    let high: std::vec::Vec<u64> = (1..=64u64).map(|k| k << 32).collect();
+    radical_inverse_at(0, &high, &mut out).unwrap();
+    for (k, &a) in high.iter().enumerate() {
+        assert_eq!(out[k], radical_inverse(0, a), "base 2, index {a}");
+        assert!(out[k] > 0.0);
+    }
+}
