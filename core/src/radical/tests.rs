@@ -539,7 +539,10 @@ fn ratios_are_correctly_rounded() {
 fn batch_and_run_forms_agree_at_the_fast_path_edges() {
     let mut out = [0.0f32; 64];
     // 253 ..= 257: runs that reach base 1627 (dimension 257), whose limit 1627² is MIN_BIG.
-    for d in (0..1024u32).step_by(7).chain([1, 2, 3, 253, 254, 255, 256, 257, 1022, 1023]) {
+    for d in (0..1024u32)
+        .step_by(7)
+        .chain([1, 2, 3, 253, 254, 255, 256, 257, 1022, 1023])
+    {
         let big = if d == 0 {
             1u64 << 32
         } else {
