@@ -386,9 +386,8 @@ fn load_all(args: &AnalyzeArgs, seed: u64) -> Result<(Vec<f64>, usize, String)> 
         let _ = write!(source, " --dims {dims} --seed {seed}");
         return Ok((pts.iter().map(|&v| f64::from(v)).collect(), dims, source));
     }
-    if cfg!(all(target_arch = "wasm32", target_os = "unknown")) {
-        // No file system and no standard input there (the browser explorer always names a
-        // sampler); this also keeps the reading code out of that build.
+    if crate::output::NO_FILE_SYSTEM {
+        // The browser explorer always names a sampler.
         bail!("give --sampler: points cannot be read from a file or stdin in WebAssembly");
     }
     let (text, name) = match args.input.as_deref() {

@@ -2,6 +2,7 @@
 //! image, and measure it against a reference.
 
 use crate::clock::Stopwatch;
+use crate::output::NO_FILE_SYSTEM;
 use crate::progress::Progress;
 use crate::scene::Scene;
 use anyhow::{Context, Result, anyhow, bail};
@@ -357,9 +358,10 @@ pub fn reference_with_progress(
             }
         })
         .collect();
-    // No cache without a file system; the tests of `NO_FILE_SYSTEM` below are what keep the
-    // cache's file code out of that build.
-    let path = cache_dir().filter(|_| !NO_FILE_SYSTEM).map(|d| {
+    // No cache without a file system (the explorer keeps references in memory instead). The
+    // cache's two uses test `NO_FILE_SYSTEM` again: only then does the compiler drop their code.
+    let dir = if NO_FILE_SYSTEM { None } else { cache_dir() };
+    let path = dir.map(|d| {
         d.join(format!(
             "reference-v2-{}-{}x{}-stratified{REFERENCE_STRATA}-{key}.pfm",
             scene.name(),
@@ -480,10 +482,6 @@ fn read_cached_reference(
     }
     Ok(Some(img))
 }
-
-/// No file system: `wasm32-unknown-unknown`, where references are not cached on disk (the
-/// browser explorer keeps them in memory instead).
-const NO_FILE_SYSTEM: bool = cfg!(all(target_arch = "wasm32", target_os = "unknown"));
 
 /// The folder of cached references: `$XDG_CACHE_HOME/nyquist` (absolute), else
 /// `$HOME/.cache/nyquist`.
