@@ -210,7 +210,7 @@ pub const fn scramble_u32(x: u32, seed: u32, how: Scramble) -> u32 {
 
 baked_table! {
     /// `REVERSED_F32[j][b]`: byte `j` of a bit-reversed word's share of [`reversed_to_f32`],
-    /// `reverse8(b) · 2^(−8(j+1))`. Built at compile time ([`baked_table!`]); 3 KiB.
+    /// `reverse8(b) · 2^(−8(j+1))`. Baked ([`baked_table!`]); 3 KiB.
     static REVERSED_F32: [[f32; 256]; 3] = [[0.0; 256]; 3], fill_reversed_f32,
         reversed_f32_at_first_use_equals_the_baked_table;
 }

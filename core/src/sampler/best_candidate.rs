@@ -2,12 +2,12 @@
 //!
 //! The table (`best_candidate/table.rs`, 4096 rows of image x, y, time, lens u, v) is made by
 //! `scripts/gen_best_candidate.py` (with the `lazy-tables` feature, `best_candidate/generate.rs`
-//! runs the same algorithm at first use instead): Mitchell's best-candidate algorithm (Mitchell 1991,
-//! "Spectrally optimal sampling for distribution ray tracing") with toroidal distance, so the
-//! pattern tiles; each row's time and lens are the best of 32 candidates against the times and
-//! lens positions of its 8 nearest earlier image neighbours (pbrt-v2's redistribution). Because
-//! the candidate count depends only on the row, every prefix is itself blue noise: relative
-//! radius ρ ≥ 0.65 for the first 256 rows and ≥ 0.70 for all 4096 (tested).
+//! runs the same algorithm at first use instead): Mitchell's best-candidate algorithm
+//! (Mitchell 1991, "Spectrally optimal sampling for distribution ray tracing") with toroidal
+//! distance, so the pattern tiles; each row's time and lens are the best of 32 candidates
+//! against the times and lens positions of its 8 nearest earlier image neighbours (pbrt-v2's
+//! redistribution). Because the candidate count depends only on the row, every prefix is itself
+//! blue noise: relative radius ρ ≥ 0.65 for the first 256 rows and ≥ 0.70 for all 4096 (tested).
 
 use super::{Sampler, pixel_hash};
 use crate::Error;

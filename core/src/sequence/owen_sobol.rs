@@ -400,7 +400,7 @@ impl IndexShuffle {
 
 baked_table! {
     /// `REV16[j][b]`: byte `j` of a 16-bit index, bit-reversed into a 32-bit word
-    /// (`reverse8(b) << (24 − 8j)`). Built at compile time ([`baked_table!`]); 2 KiB.
+    /// (`reverse8(b) << (24 − 8j)`). Baked ([`baked_table!`]); 2 KiB.
     static REV16: [[u32; 256]; 2] = [[0; 256]; 2], fill_rev16,
         rev16_at_first_use_equals_the_baked_table;
 }

@@ -121,8 +121,8 @@ impl ZeroTwo {
 }
 
 baked_table! {
-    /// The unscrambled points `0..256`, `[reverse_bits(i), sobol_u32(i, 1)]`, computed at compile
-    /// time ([`baked_table!`]) from the recurrence of the second dimension's columns (`V_1 = 2³¹`,
+    /// The unscrambled points `0..256`, `[reverse_bits(i), sobol_u32(i, 1)]`, baked
+    /// ([`baked_table!`]) from the recurrence of the second dimension's columns (`V_1 = 2³¹`,
     /// `V_{k+1} = V_k ⊕ (V_k ≫ 1)`; checked against the Joe–Kuo table by the tests).
     static FIRST_POINTS: [[u32; 2]; 256] = [[0; 2]; 256], fill_first_points,
         first_points_at_first_use_equal_the_baked_table;
