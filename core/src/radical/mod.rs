@@ -31,6 +31,7 @@
 //! `InverseRadicalInverse` semantics.
 
 mod owen;
+mod permuted;
 mod primes;
 
 use crate::lazy_table::baked_table;
@@ -40,6 +41,7 @@ pub use owen::{
     fast_owen_scrambled_radical_inverse, fast_owen_scrambled_radical_inverse_f64,
     owen_scrambled_radical_inverse, owen_scrambled_radical_inverse_f64,
 };
+pub(crate) use permuted::PermutedDigitGroups;
 use primes::PRIME_TABLE;
 pub use primes::PRIMES;
 

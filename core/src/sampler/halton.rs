@@ -3,8 +3,9 @@
 use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::radical::{
-    fast_owen_scrambled_radical_inverse, inverse_radical_inverse, owen_scrambled_radical_inverse,
-    radical_inverse, radical_inverse_dims, radical_inverse_inlined, scrambled_radical_inverse,
+    PermutedDigitGroups, fast_owen_scrambled_radical_inverse, inverse_radical_inverse,
+    owen_scrambled_radical_inverse, radical_inverse, radical_inverse_dims, radical_inverse_inlined,
+    scrambled_radical_inverse,
 };
 use crate::scramble::Scramble;
 
@@ -94,6 +95,9 @@ pub struct HaltonSampler {
     axis_base: [u64; 2],
     steps: [u64; 2],
     dim: u32,
+    /// `PermuteDigits`' tables for dimensions 0..5 (bases 2 … 11), built once in `new`: those
+    /// five values then take a few table reads each instead of a permutation per value.
+    permuted: Option<PermutedDigitGroups>,
 }
 
 impl HaltonSampler {
@@ -142,6 +146,7 @@ impl HaltonSampler {
             axis_base: [0; 2],
             steps: [stride >> exponents[0], stride / scales[1]],
             dim: 0,
+            permuted: (scramble == Scramble::PermuteDigits).then(|| PermutedDigitGroups::new(seed)),
         })
     }
 
@@ -187,7 +192,10 @@ impl HaltonSampler {
     fn value(&self, dim: u32, a: u64) -> f32 {
         match self.scramble {
             Scramble::None => radical_inverse(dim, a),
-            Scramble::PermuteDigits => scrambled_radical_inverse(dim, a, self.seed),
+            Scramble::PermuteDigits => match self.permuted.as_ref().and_then(|t| t.value(dim, a)) {
+                Some(x) => x,
+                None => scrambled_radical_inverse(dim, a, self.seed),
+            },
             how => self.owen_value(dim, a, how),
         }
     }
