@@ -3,12 +3,9 @@
 use super::{Sampler, pixel_hash};
 use crate::Error;
 use crate::hash::mix64;
-use crate::scramble::{fast_owen_keyed as owen_keyed, fast_owen_keyed_f32 as owen_keyed_f32};
+use crate::scramble::{lk_hash, reversed_to_f32};
 use crate::sequence::PMJ02_MAX_POINTS;
-use crate::sequence::pmj02::PMJ02_POINTS;
-
-/// `PMJ02_MAX_POINTS − 1`, the index mask.
-const MASK: u32 = PMJ02_MAX_POINTS as u32 - 1;
+use crate::sequence::pmj02::PMJ02_REVERSED;
 
 /// Odd constant separating requests in the per-request hash.
 const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
@@ -36,23 +33,29 @@ impl Keys {
         }
     }
 
-    /// The table row of sample `index`: Burley's nested uniform shuffle of the 16-bit index
-    /// (a fast Owen scramble of the index read as a fraction), which sends the indices
-    /// `0..2^k` onto one aligned block of `2^k` rows for every `k ≤ 16`.
+    /// The [`PMJ02_REVERSED`] row of the sample whose 16-bit index reversed into a 32-bit word
+    /// is `index_rev`: Burley's nested uniform shuffle of the index (a fast Owen scramble of the
+    /// index read as a fraction), which sends the indices `0..2^k` onto one aligned block of
+    /// `2^k` table points for every `k ≤ 16`. The scramble's output is bit-reversed; its top 16
+    /// bits are the reversed point index, which is that point's row in the reversed table.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn row(&self, index: u32) -> usize {
-        (owen_keyed(index & MASK, self.shuffle) & MASK) as usize
+    fn row(&self, index_rev: u32) -> usize {
+        (lk_hash(index_rev, self.shuffle) >> 16) as usize
+    }
+
+    /// The point's coordinates, each fast-Owen-scrambled (on the reversed words the table holds).
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn point(&self, index_rev: u32) -> [f32; 2] {
+        let [x, y] = PMJ02_REVERSED[self.row(index_rev)];
+        [
+            reversed_to_f32(lk_hash(x, self.x)),
+            reversed_to_f32(lk_hash(y, self.y)),
+        ]
     }
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn point(&self, index: u32) -> [f32; 2] {
-        let [x, y] = PMJ02_POINTS[self.row(index)];
-        [owen_keyed_f32(x, self.x), owen_keyed_f32(y, self.y)]
-    }
-
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn value(&self, index: u32) -> f32 {
-        owen_keyed_f32(PMJ02_POINTS[self.row(index)][0], self.x)
+    fn value(&self, index_rev: u32) -> f32 {
+        reversed_to_f32(lk_hash(PMJ02_REVERSED[self.row(index_rev)][0], self.x))
     }
 }
 
@@ -108,7 +111,8 @@ pub struct Pmj02Sampler {
     pixel_key: u64,
     /// The camera's keys for the current pixel, built once per pixel.
     camera: [Keys; 3],
-    index: u32,
+    /// The sample index modulo 65536, bit-reversed into a 32-bit word (what the shuffle reads).
+    index_rev: u32,
     dim: u32,
 }
 
@@ -141,7 +145,7 @@ impl Pmj02Sampler {
             pixel: [0; 2],
             pixel_key,
             camera: camera_keys(pixel_key),
-            index: 0,
+            index_rev: 0,
             dim: 0,
         })
     }
@@ -178,7 +182,7 @@ impl Sampler for Pmj02Sampler {
             self.pixel_key = pixel_hash(pixel, self.seed, PIXEL_TAG);
             self.camera = camera_keys(self.pixel_key);
         }
-        self.index = sample_index;
+        self.index_rev = (sample_index & 0xffff).reverse_bits();
         self.dim = dim;
     }
 
@@ -186,20 +190,20 @@ impl Sampler for Pmj02Sampler {
     fn get_1d(&mut self) -> f32 {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(1);
-        self.keys(2 * u64::from(d) + 1).value(self.index)
+        self.keys(2 * u64::from(d) + 1).value(self.index_rev)
     }
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
-        self.keys(2 * u64::from(d)).point(self.index)
+        self.keys(2 * u64::from(d)).point(self.index_rev)
     }
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
-        self.camera[0].point(self.index)
+        self.camera[0].point(self.index_rev)
     }
 }
 

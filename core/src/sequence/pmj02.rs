@@ -19,7 +19,7 @@ use super::Sequence;
 use crate::Error;
 use crate::hash::{hash2, wyrand};
 use crate::math::fraction_to_f32 as to_f32;
-use crate::scramble::{fast_owen_keyed as owen_keyed, fast_owen_keyed_f32 as owen_keyed_f32};
+use crate::scramble::{lk_hash, reversed_to_f32};
 
 /// The most points the construction makes: the published XOR constants cover 16 levels.
 ///
@@ -138,6 +138,40 @@ crate::lazy_table::baked_table! {
         fill_table, pmj02_points_at_first_use_equal_the_stored_table, stored PMJ02_TABLE;
 }
 
+/// `m`'s 16 bits reversed: the row of [`PMJ02_REVERSED`] that holds point `m`, and back.
+#[inline]
+pub(crate) const fn reverse16(m: u32) -> usize {
+    (m.reverse_bits() >> 16) as usize
+}
+
+/// [`PMJ02_TABLE`] for the Owen-scrambled reads: point `reverse16(m)` in row `m`, each coordinate
+/// bit-reversed. The fast Owen scramble works on bit-reversed words and the camera samples'
+/// nested index shuffle ends in a reversed row index; with this table neither needs a bit
+/// reversal, which x86-64 has no instruction for.
+const fn fill_reversed(t: &mut [[u32; 2]; PMJ02_MAX_POINTS]) {
+    fill_table(t);
+    let mut m = 0;
+    while m < PMJ02_MAX_POINTS {
+        // The row order is an involution: swap each pair once.
+        let r = reverse16(m as u32);
+        if m <= r {
+            let (a0, a1, b0, b1) = (t[m][0], t[m][1], t[r][0], t[r][1]);
+            t[m][0] = b0.reverse_bits();
+            t[m][1] = b1.reverse_bits();
+            t[r][0] = a0.reverse_bits();
+            t[r][1] = a1.reverse_bits();
+        }
+        m += 1;
+    }
+}
+
+crate::lazy_table::baked_table! {
+    /// [`fill_reversed`]'s table (512 KiB): what the Owen-scrambled sequence and
+    /// [`Pmj02Sampler`](crate::sampler::Pmj02Sampler) read.
+    pub(crate) static PMJ02_REVERSED: [[u32; 2]; PMJ02_MAX_POINTS] = [[0; 2]; PMJ02_MAX_POINTS],
+        fill_reversed, pmj02_reversed_at_first_use_equals_the_baked_table;
+}
+
 /// [`PMJ02_MAX_POINTS`] pmj02 points of seed [`PMJ02_TABLE_SEED`] (512 KiB), built by
 /// [`pmj02_build`]'s construction at compile time. Every power-of-two prefix and every aligned
 /// block of `2^m` points is a (0, m, 2)-net (the tests check it).
@@ -223,10 +257,9 @@ impl Pmj02 {
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
         let d = (dim & 1) as usize;
-        let v = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d];
         match self.keys {
-            None => v,
-            Some(keys) => owen_keyed(v, keys[d]),
+            None => PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d],
+            Some(keys) => lk_hash(PMJ02_REVERSED[reverse16(index)][d], keys[d]).reverse_bits(),
         }
     }
 
@@ -238,10 +271,12 @@ impl Pmj02 {
     /// ```
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_2d_u32(&self, index: u32) -> [u32; 2] {
-        let [x, y] = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)];
         match self.keys {
-            None => [x, y],
-            Some([kx, ky]) => [owen_keyed(x, kx), owen_keyed(y, ky)],
+            None => PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)],
+            Some([kx, ky]) => {
+                let [x, y] = PMJ02_REVERSED[reverse16(index)];
+                [lk_hash(x, kx).reverse_bits(), lk_hash(y, ky).reverse_bits()]
+            }
         }
     }
 
@@ -254,10 +289,18 @@ impl Pmj02 {
     /// ```
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_2d(&self, index: u32) -> [f32; 2] {
-        let [x, y] = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)];
         match self.keys {
-            None => [to_f32(x), to_f32(y)],
-            Some([kx, ky]) => [owen_keyed_f32(x, kx), owen_keyed_f32(y, ky)],
+            None => {
+                let [x, y] = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)];
+                [to_f32(x), to_f32(y)]
+            }
+            Some([kx, ky]) => {
+                let [x, y] = PMJ02_REVERSED[reverse16(index)];
+                [
+                    reversed_to_f32(lk_hash(x, kx)),
+                    reversed_to_f32(lk_hash(y, ky)),
+                ]
+            }
         }
     }
 }
@@ -274,10 +317,11 @@ impl Sequence for Pmj02 {
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, index: u64, dim: u32) -> f32 {
         let d = (dim & 1) as usize;
-        let v = PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d];
         match self.keys {
-            None => to_f32(v),
-            Some(keys) => owen_keyed_f32(v, keys[d]),
+            None => to_f32(PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d]),
+            Some(keys) => {
+                reversed_to_f32(lk_hash(PMJ02_REVERSED[reverse16(index as u32)][d], keys[d]))
+            }
         }
     }
 
@@ -441,6 +485,37 @@ mod tests {
                         }
                     }
                 }
+            }
+        }
+    }
+
+    /// Row `m` of the reversed table is point `reverse16(m)` with both coordinates reversed, and
+    /// the scrambled reads through it give the fast Owen scramble of the plain table's values.
+    #[test]
+    fn pmj02_reversed_table_is_the_plain_table_reordered_and_reversed() {
+        use crate::scramble::{fast_owen_keyed, fast_owen_keyed_f32};
+        for m in 0..PMJ02_MAX_POINTS {
+            let [x, y] = PMJ02_TABLE[reverse16(m as u32)];
+            assert_eq!(
+                PMJ02_REVERSED[m],
+                [x.reverse_bits(), y.reverse_bits()],
+                "row {m}"
+            );
+        }
+        assert_eq!(reverse16(1), 0x8000);
+        assert_eq!(reverse16(0x1_0003), 0xc000);
+        for seed in SEEDS {
+            let s = Pmj02::scrambled(seed);
+            let [kx, ky] = s.keys.unwrap();
+            for i in (0..70_000u32).step_by(7) {
+                let [x, y] = PMJ02_TABLE[i as usize & 0xffff];
+                let want = [fast_owen_keyed(x, kx), fast_owen_keyed(y, ky)];
+                assert_eq!(s.sample_2d_u32(i), want, "seed {seed} index {i}");
+                assert_eq!([s.sample_u32(i, 0), s.sample_u32(i, 3)], want);
+                let want = [fast_owen_keyed_f32(x, kx), fast_owen_keyed_f32(y, ky)];
+                assert_eq!(s.sample_2d(i), want);
+                let i = u64::from(i);
+                assert_eq!([s.sample(i, 0), s.sample(i, 1)], want);
             }
         }
     }
