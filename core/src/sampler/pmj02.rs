@@ -233,6 +233,42 @@ mod tests {
             .collect()
     }
 
+    /// Every request has its own keys: the 1D values and 2D pairs at dimensions 0..12 never
+    /// agree at every sample of a pixel, as two requests that shared their keys would (the same
+    /// shuffled row and scramble give the same value). The camera's values are three of these
+    /// requests (the pair at 0, the value at 2, the pair at 3).
+    #[test]
+    fn pmj02_requests_never_share_keys() {
+        let mut s = Pmj02Sampler::new(16, 3).unwrap();
+        for pixel in [[0, 0], [5, 9]] {
+            // One column per request: (what, values over the pixel's 16 samples).
+            let mut columns: Vec<(std::string::String, Vec<f32>)> = Vec::new();
+            let mut push = |what: std::string::String, i: u32, v: f32| match columns
+                .iter_mut()
+                .find(|(w, _)| *w == what)
+            {
+                Some((_, c)) => c.push(v),
+                None if i == 0 => columns.push((what, std::vec![v])),
+                None => unreachable!(),
+            };
+            for i in 0..16 {
+                for d in 0..12 {
+                    s.start_pixel_sample(pixel, i, d);
+                    push(std::format!("1d {d}"), i, s.get_1d());
+                    s.start_pixel_sample(pixel, i, d);
+                    let [x, y] = s.get_2d();
+                    push(std::format!("2d {d} x"), i, x);
+                    push(std::format!("2d {d} y"), i, y);
+                }
+            }
+            for (a, (wa, va)) in columns.iter().enumerate() {
+                for (wb, vb) in &columns[a + 1..] {
+                    assert_ne!(va, vb, "{wa} and {wb} share their keys at pixel {pixel:?}");
+                }
+            }
+        }
+    }
+
     #[test]
     fn pmj02_sampler_is_consistent_and_thread_independent() {
         for spp in [1, 16, 100] {
