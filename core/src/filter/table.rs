@@ -1385,3 +1385,32 @@ impl TableView<'_> {
         self.interp
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The sample points are what `table_point` promises: 0 first, the radius itself last, and in
+    /// between the smallest offset whose table coordinate reaches its index; and the scale puts
+    /// the radius on the last sample. Radii from 10⁻³ to 10³ against 2 to 257 samples: below a
+    /// scale of 1, several neighbouring floats reach the same index and only the smallest is
+    /// right.
+    #[test]
+    fn table_points_are_the_smallest_offsets_that_reach_their_index() {
+        for n in [2usize, 3, 16, 17, 64, 257] {
+            for r in [
+                1e-3f32, 0.3, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 7.7, 64.0, 1000.0,
+            ] {
+                let s = table_scale(r, n);
+                assert!(r * s >= (n - 1) as f32, "n {n} r {r}");
+                assert_eq!(table_point(0, n, r, s), 0.0);
+                assert_eq!(table_point(n - 1, n, r, s), r, "n {n} r {r}");
+                for i in 1..n - 1 {
+                    let x = table_point(i, n, r, s);
+                    assert!(x * s >= i as f32, "n {n} r {r} i {i}");
+                    assert!(x.next_down() * s < i as f32, "n {n} r {r} i {i}");
+                }
+            }
+        }
+    }
+}
