@@ -532,6 +532,40 @@ fn ratios_are_correctly_rounded() {
     }
 }
 
+/// Halfway cases with denominators past the `u64` oracle above: `(2T + 1)/2^(bits + 2)` lies
+/// exactly halfway between two floats of `bits + 1` significant bits above ½, and
+/// `((2T + 1)·K ± 1) / (2^(bits + 2)·K)` lies `1/den` above or below it, with `den` up to 2⁹⁴
+/// (`ratio_*` take up to 2⁹⁶). Expected values by construction: up above, down below, to even at
+/// the tie.
+#[test]
+fn ratios_round_ties_with_wide_denominators() {
+    for bits in [52u32, 23] {
+        let scale = 2f64.powi(-(bits as i32 + 1));
+        for t in [
+            1u64 << bits,
+            (1 << bits) + 2,
+            (1 << bits) + 3,
+            (2 << bits) - 2,
+        ] {
+            // The two neighbours of the tie, t/2^(bits+1) and (t+1)/2^(bits+1).
+            let (low, high) = (t as f64 * scale, (t + 1) as f64 * scale);
+            let even = if t % 2 == 0 { low } else { high };
+            for k in [3u128, (1 << 20) + 1, (1 << 40) - 3] {
+                let den = (1u128 << (bits + 2)) * k;
+                let tie = u128::from(2 * t + 1) * k;
+                for (num, want) in [(tie - 1, low), (tie, even), (tie + 1, high)] {
+                    let got = if bits == 52 {
+                        ratio_f64(num, den)
+                    } else {
+                        f64::from(ratio_f32(num, den))
+                    };
+                    assert_eq!(got, want, "bits {bits} t {t} k {k} num {num}");
+                }
+            }
+        }
+    }
+}
+
 /// The batch and run forms agree with `radical_inverse` at the edges of their fast paths: each
 /// base's limit `b^k` and its neighbours, and for base 2 whole batches of indices whose low 32
 /// bits are all zero (their values are not the 32-bit reversal of those bits).
