@@ -110,6 +110,77 @@ fn a_pixels_weight_sum_is_the_sum_of_the_filter_weights_that_reach_it() {
     }
 }
 
+/// A cone, `max(0, 1 − ρ²/r²)`: not separable, so the film's tables and its direct path weigh
+/// each pixel of a footprint on its own instead of by an outer product.
+#[derive(Debug)]
+struct Cone(f32);
+
+impl Filter for Cone {
+    fn radius(&self) -> [f32; 2] {
+        [self.0; 2]
+    }
+    fn eval(&self, x: f32, y: f32) -> f32 {
+        let d = 1.0 - (x * x + y * y) / (self.0 * self.0);
+        if d > 0.0 { d } else { 0.0 }
+    }
+}
+
+/// Every pixel's weight and RGB sums are the sums of the filter weights that reach it, times
+/// the radiance, also where the film cannot take an outer product of 1D weights: a
+/// non-separable filter (table and direct), and a separable one whose footprint is wider than
+/// 32 pixels.
+#[test]
+fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
+    let cone = Cone(2.5);
+    let wide = Gaussian::with_sigma([17.5, 3.0], 6.0).unwrap();
+    let filters: [(&str, &dyn Filter, bool); 3] = [
+        ("cone, table", &cone, false),
+        ("cone, direct", &cone, true),
+        ("gaussian 35 wide", &wide, false),
+    ];
+    let samples = [[20.2f32, 9.7], [23.9, 3.1], [0.4, 14.5], [39.5, 8.5]];
+    let rgb = [1.0f32, 0.5, 0.25];
+    for (name, filter, direct) in filters {
+        let mut film = Film::new(FilmConfig::new(40, 16), filter).unwrap();
+        let spec = film.tiles(64).unwrap()[0];
+        let mut tile = film.tile(spec);
+        for p in samples {
+            if direct {
+                tile.add_sample_direct(filter, p, rgb, 1.0);
+            } else {
+                tile.add_sample(p, rgb, 1.0);
+            }
+        }
+        film.merge(tile).unwrap();
+        for y in 0..16i64 {
+            for x in 0..40i64 {
+                let want: f64 = samples
+                    .iter()
+                    .map(|p| {
+                        let (dx, dy) = (x as f32 + 0.5 - p[0], y as f32 + 0.5 - p[1]);
+                        let w = if direct {
+                            filter.eval(dx, dy)
+                        } else {
+                            film.filter_weight(dx, dy)
+                        };
+                        f64::from(w)
+                    })
+                    .sum();
+                let got = film.pixel(x, y).unwrap();
+                assert!(
+                    (got.weight_sum - want).abs() < 1e-6,
+                    "{name} ({x},{y}): {} vs {want}",
+                    got.weight_sum
+                );
+                for c in 0..3 {
+                    let want = want * f64::from(rgb[c]);
+                    assert!((got.rgb_sum[c] - want).abs() < 1e-6, "{name} ({x},{y}) {c}");
+                }
+            }
+        }
+    }
+}
+
 #[test]
 fn table_weights_track_the_filter() {
     for (name, filter) in filters() {
