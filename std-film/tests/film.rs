@@ -126,22 +126,34 @@ impl Filter for Cone {
 }
 
 /// Every pixel's weight and RGB sums are the sums of the filter weights that reach it, times
-/// the radiance, also where the film cannot take an outer product of 1D weights: a
-/// non-separable filter (table and direct), and a separable one whose footprint is wider than
-/// 32 pixels.
+/// the radiance, on each of the film's paths past the common one: a non-separable filter (its
+/// table, and direct evaluation), a separable one too wide for the phase table (footprints of
+/// 19 and of 35 columns, the latter past the outer product's 32), and one-pixel footprints of
+/// a filter that is not a box.
 #[test]
 fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
     let cone = Cone(2.5);
     let wide = Gaussian::with_sigma([17.5, 3.0], 6.0).unwrap();
-    let filters: [(&str, &dyn Filter, bool); 3] = [
+    let broad = Gaussian::with_sigma([9.5, 9.5], 3.0).unwrap();
+    let small = Triangle::new([0.4, 0.45]).unwrap();
+    let filters: [(&str, &dyn Filter, bool); 5] = [
         ("cone, table", &cone, false),
         ("cone, direct", &cone, true),
         ("gaussian 35 wide", &wide, false),
+        ("gaussian 19 wide", &broad, false),
+        ("triangle r < ½", &small, false),
     ];
-    let samples = [[20.2f32, 9.7], [23.9, 3.1], [0.4, 14.5], [39.5, 8.5]];
+    let samples = [
+        [20.2f32, 9.7],
+        [23.9, 3.1],
+        [0.4, 14.5],
+        [39.5, 8.5],
+        [17.3, 33.6],
+        [31.05, 29.9],
+    ];
     let rgb = [1.0f32, 0.5, 0.25];
     for (name, filter, direct) in filters {
-        let mut film = Film::new(FilmConfig::new(40, 16), filter).unwrap();
+        let mut film = Film::new(FilmConfig::new(40, 40), filter).unwrap();
         let spec = film.tiles(64).unwrap()[0];
         let mut tile = film.tile(spec);
         for p in samples {
@@ -152,7 +164,7 @@ fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
             }
         }
         film.merge(tile).unwrap();
-        for y in 0..16i64 {
+        for y in 0..40i64 {
             for x in 0..40i64 {
                 let want: f64 = samples
                     .iter()
