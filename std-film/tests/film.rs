@@ -713,7 +713,7 @@ fn merging_a_tile_of_another_film_is_an_error() {
 /// Filters whose phase tables take the 4 × 4 path: the defaults with radius 2, others with
 /// 4 or 5 taps per axis, and one heavy at its edge (a 5-pixel footprint's last pixel weighs
 /// f(r) ≠ 0, so taking a 5-pixel footprint as 4 × 4 would lose it).
-fn block4_filters() -> [Box<dyn Filter>; 7] {
+fn block4_filters() -> [Box<dyn Filter>; 8] {
     [
         Box::new(Mitchell::default()),
         Box::new(Triangle::default()),
@@ -721,7 +721,8 @@ fn block4_filters() -> [Box<dyn Filter>; 7] {
         Box::new(Mitchell::new([1.5, 2.4], 0.3, 0.35).unwrap()),
         Box::new(Triangle::new([1.7, 2.0]).unwrap()),
         Box::new(Gaussian::new([2.2, 1.6], 0.6).unwrap()),
-        Box::new(EdgeHeavy),
+        Box::new(EdgeHeavy([2.0, 1.75])),
+        Box::new(EdgeHeavy([1.5, 2.0])),
     ]
 }
 
@@ -806,8 +807,18 @@ fn block4_mismatch(
 /// and every 4-or-3 boundary of a 4-tap axis is among them.
 #[test]
 fn block4_path_matches_the_general_path_on_an_eighth_pixel_grid() {
-    let samples: Vec<_> = (-24..96)
-        .flat_map(|ky| (-24..104).map(move |kx| (kx as f32 / 8.0, ky as f32 / 8.0, 0.75, 1.5)))
+    // The grid, and the grid shifted by 1/512 pixel: phases between the phase table's own
+    // (1/64 pixel apart), whose taps are interpolated, also from a tap at the radius.
+    let samples: Vec<_> = [0.0, 1.0 / 512.0]
+        .into_iter()
+        .flat_map(|shift| {
+            (-24..96).flat_map(move |ky| {
+                (-24..104).map(move |kx| {
+                    let p = [kx as f32 / 8.0 - shift, ky as f32 / 8.0 - shift];
+                    (p[0], p[1], 0.75, 1.5)
+                })
+            })
+        })
         .collect();
     for (i, f) in block4_filters().iter().enumerate() {
         if let Some(m) = block4_mismatch(&**f, Bounds::new(0, 0, 10, 9), &samples) {
@@ -841,13 +852,13 @@ fn direct_samples_are_added_after_the_queued_ones() {
     assert_eq!(mismatch, None);
 }
 
-/// A separable plugin filter that is largest at its edge: `1 + |d|/4` inside radius
-/// `[2, 1.75]`.
-struct EdgeHeavy;
+/// A separable plugin filter that is largest at its edge: `1 + |d|/4` inside its radius, so a
+/// pixel at exactly the radius, or a tap interpolated from there, weighs more than any other.
+struct EdgeHeavy([f32; 2]);
 
 impl Filter for EdgeHeavy {
     fn radius(&self) -> [f32; 2] {
-        [2.0, 1.75]
+        self.0
     }
     fn eval(&self, x: f32, y: f32) -> f32 {
         match (self.eval_1d(Axis::X, x), self.eval_1d(Axis::Y, y)) {
@@ -856,7 +867,7 @@ impl Filter for EdgeHeavy {
         }
     }
     fn eval_1d(&self, axis: Axis, d: f32) -> Option<f32> {
-        let r = if axis == Axis::X { 2.0 } else { 1.75 };
+        let r = self.0[axis.index()];
         Some(if d.abs() <= r {
             1.0 + d.abs() / 4.0
         } else {
