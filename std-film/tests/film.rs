@@ -127,21 +127,24 @@ impl Filter for Cone {
 
 /// Every pixel's weight and RGB sums are the sums of the filter weights that reach it, times
 /// the radiance, on each of the film's paths past the common one: a non-separable filter (its
-/// table, and direct evaluation), a separable one too wide for the phase table (footprints of
-/// 19 and of 35 columns, the latter past the outer product's 32), and one-pixel footprints of
-/// a filter that is not a box.
+/// table, and direct evaluation, also on a film whose own filter is separable), a separable one
+/// too wide for the phase table (footprints of 19 and of 35 columns, the latter past the outer
+/// product's 32), and one-pixel footprints of a filter that is not a box.
 #[test]
 fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
     let cone = Cone(2.5);
     let wide = Gaussian::with_sigma([17.5, 3.0], 6.0).unwrap();
     let broad = Gaussian::with_sigma([9.5, 9.5], 3.0).unwrap();
     let small = Triangle::new([0.4, 0.45]).unwrap();
-    let filters: [(&str, &dyn Filter, bool); 5] = [
-        ("cone, table", &cone, false),
-        ("cone, direct", &cone, true),
-        ("gaussian 35 wide", &wide, false),
-        ("gaussian 19 wide", &broad, false),
-        ("triangle r < ½", &small, false),
+    let gauss3 = Gaussian::with_sigma([3.0, 3.0], 1.0).unwrap();
+    // (what, the film's filter, the filter `add_sample_direct` evaluates, if it is used).
+    let cases: [(&str, &dyn Filter, Option<&dyn Filter>); 6] = [
+        ("cone, table", &cone, None),
+        ("cone, direct", &cone, Some(&cone)),
+        ("cone, direct on a separable film", &gauss3, Some(&cone)),
+        ("gaussian 35 wide", &wide, None),
+        ("gaussian 19 wide", &broad, None),
+        ("triangle r < ½", &small, None),
     ];
     let samples = [
         [20.2f32, 9.7],
@@ -152,15 +155,14 @@ fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
         [31.05, 29.9],
     ];
     let rgb = [1.0f32, 0.5, 0.25];
-    for (name, filter, direct) in filters {
+    for (name, filter, direct) in cases {
         let mut film = Film::new(FilmConfig::new(40, 40), filter).unwrap();
         let spec = film.tiles(64).unwrap()[0];
         let mut tile = film.tile(spec);
         for p in samples {
-            if direct {
-                tile.add_sample_direct(filter, p, rgb, 1.0);
-            } else {
-                tile.add_sample(p, rgb, 1.0);
+            match direct {
+                Some(d) => tile.add_sample_direct(d, p, rgb, 1.0),
+                None => tile.add_sample(p, rgb, 1.0),
             }
         }
         film.merge(tile).unwrap();
@@ -170,12 +172,10 @@ fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
                     .iter()
                     .map(|p| {
                         let (dx, dy) = (x as f32 + 0.5 - p[0], y as f32 + 0.5 - p[1]);
-                        let w = if direct {
-                            filter.eval(dx, dy)
-                        } else {
-                            film.filter_weight(dx, dy)
-                        };
-                        f64::from(w)
+                        f64::from(match direct {
+                            Some(d) => d.eval(dx, dy),
+                            None => film.filter_weight(dx, dy),
+                        })
                     })
                     .sum();
                 let got = film.pixel(x, y).unwrap();
@@ -823,6 +823,49 @@ fn block4_path_matches_the_general_path_on_an_eighth_pixel_grid() {
     for (i, f) in block4_filters().iter().enumerate() {
         if let Some(m) = block4_mismatch(&**f, Bounds::new(0, 0, 10, 9), &samples) {
             panic!("filter {i}: {m}");
+        }
+    }
+}
+
+/// The one-pixel path of box filters (radius ½, and narrower ones that can miss a pixel's
+/// centre) against the general path, bit for bit, at every position of an eighth-pixel grid
+/// over the film and its border (pixel edges and centres among them) and of the same grid
+/// shifted by 1/512 pixel, in the film's tile and in a tile inside it; also NaN, ∞ and
+/// weights of 0.
+#[test]
+fn one_pixel_path_matches_the_general_path() {
+    let mut samples: Vec<_> = [0.0, 1.0 / 512.0]
+        .into_iter()
+        .flat_map(|shift| {
+            (-24..96).flat_map(move |ky| {
+                (-24..104).map(move |kx| {
+                    let p = [kx as f32 / 8.0 + shift, ky as f32 / 8.0 + shift];
+                    (p[0], p[1], 0.75, 1.5)
+                })
+            })
+        })
+        .collect();
+    samples.extend([
+        (f32::NAN, 2.0, 1.0, 1.0),
+        (2.5, f32::INFINITY, 1.0, 1.0),
+        (3.5, 3.5, f32::INFINITY, 1.0),
+        (4.5, 4.5, 1.0, 0.0),
+    ]);
+    let general = FilmConfig {
+        max_component: Some(f32::MAX),
+        ..FilmConfig::new(10, 9)
+    };
+    for radius in [[0.5, 0.5], [0.3, 0.45], [0.5, 0.2]] {
+        let f = Boxcar::new(radius).unwrap();
+        for bounds in [Bounds::new(0, 0, 10, 9), Bounds::new(2, 3, 7, 8)] {
+            let mismatch = paths_mismatch(
+                &f,
+                [FilmConfig::new(10, 9), general],
+                bounds,
+                &samples,
+                [&add_sample, &add_sample],
+            );
+            assert_eq!(mismatch, None, "radius {radius:?}, tile {bounds:?}");
         }
     }
 }
