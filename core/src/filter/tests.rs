@@ -1650,6 +1650,46 @@ fn phase_footprints_of_every_size_at_shift_0_match_single_lookups() {
     }
 }
 
+/// Footprints of every table that are not square: the row count is the buffer's length over the
+/// row width (2048 columns × 3 rows is a valid footprint, far below the 2²² limit on a side),
+/// and the weights are the single lookups' (to an f32 rounding).
+#[test]
+fn wide_flat_footprints_are_accepted_and_match_single_lookups() {
+    let mitchell = Mitchell::default();
+    let phase = PhaseTable::new(&mitchell).unwrap();
+    let table: FilterTable = FilterTable::new(&mitchell, Interpolation::Linear).unwrap();
+    let (nx, ny) = (2048usize, 3usize);
+    let d0 = [-1.3f32, -0.6];
+    let mut out = std::vec![0.0f32; nx * ny];
+    for (name, footprint, single) in [
+        (
+            "phase",
+            &(|d: [f32; 2], n: usize, o: &mut [f32]| phase.footprint(d, n, o))
+                as &dyn Fn([f32; 2], usize, &mut [f32]) -> Result<(), Error>,
+            &(|x: f32, y: f32| phase.weight(x, y)) as &dyn Fn(f32, f32) -> f32,
+        ),
+        (
+            "table",
+            &|d: [f32; 2], n: usize, o: &mut [f32]| table.footprint(d, n, o),
+            &|x: f32, y: f32| table.weight(x, y),
+        ),
+    ] {
+        footprint(d0, nx, &mut out).unwrap();
+        for j in 0..ny {
+            for i in [0usize, 1, 2, 3, 4, 2047] {
+                // Within an f32 rounding: a footprint multiplies its 1D factors in another
+                // order than a single lookup.
+                let want = single(d0[0] + i as f32, d0[1] + j as f32);
+                let got = out[j * nx + i];
+                assert!(
+                    (got - want).abs() <= 1e-6,
+                    "{name} ({i}, {j}): {got} vs {want}"
+                );
+            }
+        }
+    }
+}
+
 /// A footprint may start any distance before the filter's support: a row of 80 pixels from 70
 /// pixels to the left of it gets the single lookups' weights where it crosses the support (the
 /// shift of the first pixel was once clamped to ±32, which read the wrong taps there), in the
