@@ -827,6 +827,38 @@ fn block4_path_matches_the_general_path_on_an_eighth_pixel_grid() {
     }
 }
 
+/// A one-pixel footprint of a filter that is not a box adds its weight `f` and exactly `f·l`:
+/// with one sample per pixel, every pixel's RGB sums are its weight sum times the sample's
+/// `rgb · w`, bit for bit (radiances that are not powers of two, so another order of the
+/// products would round differently).
+#[test]
+fn one_pixel_footprints_add_the_weight_times_the_radiance_exactly() {
+    let small = Triangle::new([0.45, 0.4]).unwrap();
+    let mut film = Film::new(FilmConfig::new(12, 12), &small).unwrap();
+    let spec = film.tiles(12).unwrap()[0];
+    let mut tile = film.tile(spec);
+    let (rgb, w) = ([0.7f32, 0.3, 0.1], 0.9f32);
+    let mut rng = nyquist::rng::default_rng(3);
+    for y in 0..12 {
+        for x in 0..12 {
+            // Within 0.35 of the centre on each axis: inside both radii, one pixel reached.
+            let mut u = || 0.15 + 0.7 * nyquist::rng::uniform_f32(&mut rng);
+            tile.add_sample([x as f32 + u(), y as f32 + u()], rgb, w);
+        }
+    }
+    film.merge(tile).unwrap();
+    for y in 0..12 {
+        for x in 0..12 {
+            let p = film.pixel(x, y).unwrap();
+            assert!(p.weight_sum > 0.0, "({x},{y})");
+            for c in 0..3 {
+                let l = f64::from(rgb[c]) * f64::from(w);
+                assert_eq!(p.rgb_sum[c], p.weight_sum * l, "({x},{y}) channel {c}");
+            }
+        }
+    }
+}
+
 /// The one-pixel path of box filters (radius ½, and narrower ones that can miss a pixel's
 /// centre) against the general path, bit for bit, at every position of an eighth-pixel grid
 /// over the film and its border (pixel edges and centres among them) and of the same grid
