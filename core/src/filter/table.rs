@@ -1390,6 +1390,72 @@ impl TableView<'_> {
 mod tests {
     use super::*;
 
+    /// A non-separable plugin filter (a cone of radius `[1.5, 1.25]`) for the full 2D tables.
+    struct Cone;
+
+    impl Filter for Cone {
+        fn radius(&self) -> [f32; 2] {
+            [1.5, 1.25]
+        }
+        fn eval(&self, x: f32, y: f32) -> f32 {
+            let d = 1.0 - (x / 1.5) * (x / 1.5) - (y / 1.25) * (y / 1.25);
+            if d > 0.0 { d } else { 0.0 }
+        }
+    }
+
+    /// Every table form reports the radius and integral of its filter and the interpolation it
+    /// was built with, and its sample points run from 0 to the radius, increasing, with every
+    /// index past the last giving the radius.
+    #[test]
+    fn tables_report_their_filter_and_their_sample_points() {
+        let mitchell = crate::filter::Mitchell::new([2.0, 1.5], 1.0 / 3.0, 1.0 / 3.0).unwrap();
+        for interp in [Interpolation::Nearest, Interpolation::Linear] {
+            let sep = SeparableTable::<16>::new(&mitchell, interp).unwrap();
+            let full = Table2d::<16>::new(&Cone, interp).unwrap();
+            let tables = [
+                (
+                    FilterTable::Separable(sep.clone()),
+                    &mitchell as &dyn Filter,
+                ),
+                (FilterTable::Full(full.clone()), &Cone as &dyn Filter),
+            ];
+            for (table, filter) in &tables {
+                let (r, integral) = (filter.radius(), filter.integral());
+                assert_eq!(table.radius(), r);
+                assert_eq!(table.integral(), integral);
+                let view = table.view();
+                assert_eq!((view.radius(), view.integral()), (r, integral));
+                assert_eq!(view.interpolation(), interp);
+                for axis in [Axis::X, Axis::Y] {
+                    let a = axis.index();
+                    let points: std::vec::Vec<f32> =
+                        (0..20).map(|i| view.sample_point(axis, i)).collect();
+                    assert_eq!(points[0], 0.0);
+                    assert!(points[..16].windows(2).all(|w| w[0] < w[1]), "{points:?}");
+                    assert!(points[15..].iter().all(|&p| p == r[a]), "{points:?}");
+                }
+            }
+            assert_eq!(
+                (sep.radius(), sep.integral()),
+                (mitchell.radius(), mitchell.integral())
+            );
+            assert_eq!(sep.interpolation(), interp);
+            assert_eq!(
+                (full.radius(), full.integral()),
+                (Cone.radius(), Cone.integral())
+            );
+            for axis in [Axis::X, Axis::Y] {
+                for i in [0, 1, 7, 15, 16, 99] {
+                    assert_eq!(sep.sample_point(axis, i), sep.view().sample_point(axis, i));
+                    assert_eq!(
+                        full.sample_point(axis, i),
+                        full.view().sample_point(axis, i)
+                    );
+                }
+            }
+        }
+    }
+
     /// The sample points are what `table_point` promises: 0 first, the radius itself last, and in
     /// between the smallest offset whose table coordinate reaches its index; and the scale puts
     /// the radius on the last sample. Radii from 10⁻³ to 10³ against 2 to 257 samples: below a
