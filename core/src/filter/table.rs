@@ -1413,11 +1413,8 @@ mod tests {
             let sep = SeparableTable::<16>::new(&mitchell, interp).unwrap();
             let full = Table2d::<16>::new(&Cone, interp).unwrap();
             let tables = [
-                (
-                    FilterTable::Separable(sep.clone()),
-                    &mitchell as &dyn Filter,
-                ),
-                (FilterTable::Full(full.clone()), &Cone as &dyn Filter),
+                (FilterTable::Separable(sep), &mitchell as &dyn Filter),
+                (FilterTable::Full(full), &Cone as &dyn Filter),
             ];
             for (table, filter) in &tables {
                 let (r, integral) = (filter.radius(), filter.integral());
