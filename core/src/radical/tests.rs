@@ -566,6 +566,52 @@ fn ratios_round_ties_with_wide_denominators() {
     }
 }
 
+/// Ties that only the division's remainder breaks: `num/den = T/2^(bits+1) + 2^−(bits+1)/den`
+/// with `T` odd (halfway between two floats of `bits` significant bits above ½) and `den`
+/// between 2⁷¹ and 2⁷², so the excess lies below 2⁻⁹⁶, past every quotient bit `long_divide`
+/// keeps. `T ≡ −den⁻¹ (mod 2^(bits+1))` makes `num` an integer. The exact value is above the tie,
+/// so it rounds up, away from even for half the cases.
+#[test]
+fn ratios_round_up_ties_hidden_past_the_kept_quotient_bits() {
+    let mut rng = crate::rng::default_rng(2024);
+    let (mut up_from_odd, mut up_from_even) = (0, 0);
+    for bits in [53u32, 24] {
+        let modulus = 1u128 << (bits + 1);
+        let mut cases = 0;
+        while cases < 200 {
+            let den =
+                u128::from(rng.next_u64()) << 8 | u128::from(rng.next_u64() & 0xff) | 1 << 71 | 1;
+            // den⁻¹ mod 2^64 by Newton's iteration (den odd), then T = −den⁻¹ mod 2^(bits+1).
+            let d = den as u64;
+            let mut inv = d;
+            for _ in 0..6 {
+                inv = inv.wrapping_mul(2u64.wrapping_sub(d.wrapping_mul(inv)));
+            }
+            let t = (modulus - u128::from(inv) % modulus) % modulus;
+            if t < modulus / 2 {
+                continue; // below ½: another exponent; draw again
+            }
+            let num = (t * den + 1) / modulus;
+            assert_eq!(num * modulus, t * den + 1);
+            let up = (t + 1) as f64 / modulus as f64;
+            if (t >> 1) % 2 == 0 {
+                up_from_even += 1;
+            } else {
+                up_from_odd += 1;
+            }
+            let got = if bits == 53 {
+                ratio_f64(num, den)
+            } else {
+                f64::from(ratio_f32(num, den))
+            };
+            assert_eq!(got, up, "bits {bits} den {den} t {t}");
+            cases += 1;
+        }
+    }
+    // Both parities of the lower neighbour occurred: to-even would have gone down for one.
+    assert!(up_from_even > 0 && up_from_odd > 0);
+}
+
 /// The batch and run forms agree with `radical_inverse` at the edges of their fast paths: each
 /// base's limit `b^k` and its neighbours, and for base 2 whole batches of indices whose low 32
 /// bits are all zero (their values are not the 32-bit reversal of those bits).
