@@ -128,21 +128,23 @@ impl Filter for Cone {
 /// Every pixel's weight and RGB sums are the sums of the filter weights that reach it, times
 /// the radiance, on each of the film's paths past the common one: a non-separable filter (its
 /// table, and direct evaluation, also on a film whose own filter is separable), a separable one
-/// too wide for the phase table (footprints of 19 and of 35 columns, the latter past the outer
-/// product's 32), and one-pixel footprints of a filter that is not a box.
+/// too wide for the phase table (footprints of 19 and of 35 columns or rows, the latter past the
+/// outer product's 32), and one-pixel footprints of a filter that is not a box.
 #[test]
 fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
     let cone = Cone(2.5);
     let wide = Gaussian::with_sigma([17.5, 3.0], 6.0).unwrap();
     let broad = Gaussian::with_sigma([9.5, 9.5], 3.0).unwrap();
     let small = Triangle::new([0.4, 0.45]).unwrap();
+    let tall = Gaussian::with_sigma([3.0, 17.5], 6.0).unwrap();
     let gauss3 = Gaussian::with_sigma([3.0, 3.0], 1.0).unwrap();
     // (what, the film's filter, the filter `add_sample_direct` evaluates, if it is used).
-    let cases: [(&str, &dyn Filter, Option<&dyn Filter>); 6] = [
+    let cases: [(&str, &dyn Filter, Option<&dyn Filter>); 7] = [
         ("cone, table", &cone, None),
         ("cone, direct", &cone, Some(&cone)),
         ("cone, direct on a separable film", &gauss3, Some(&cone)),
         ("gaussian 35 wide", &wide, None),
+        ("gaussian 35 tall", &tall, None),
         ("gaussian 19 wide", &broad, None),
         ("triangle r < ½", &small, None),
     ];
@@ -153,6 +155,7 @@ fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
         [39.5, 8.5],
         [17.3, 33.6],
         [31.05, 29.9],
+        [12.3, 20.2],
     ];
     let rgb = [1.0f32, 0.5, 0.25];
     for (name, filter, direct) in cases {
