@@ -549,7 +549,7 @@ fn ratios_round_ties_with_wide_denominators() {
         ] {
             // The two neighbours of the tie, t/2^(bits+1) and (t+1)/2^(bits+1).
             let (low, high) = (t as f64 * scale, (t + 1) as f64 * scale);
-            let even = if t % 2 == 0 { low } else { high };
+            let even = if t.is_multiple_of(2) { low } else { high };
             for k in [3u128, (1 << 20) + 1, (1 << 40) - 3] {
                 let den = (1u128 << (bits + 2)) * k;
                 let tie = u128::from(2 * t + 1) * k;
@@ -594,7 +594,7 @@ fn ratios_round_up_ties_hidden_past_the_kept_quotient_bits() {
             let num = (t * den + 1) / modulus;
             assert_eq!(num * modulus, t * den + 1);
             let up = (t + 1) as f64 / modulus as f64;
-            if (t >> 1) % 2 == 0 {
+            if (t >> 1).is_multiple_of(2) {
                 up_from_even += 1;
             } else {
                 up_from_odd += 1;
