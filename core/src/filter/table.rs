@@ -1423,6 +1423,18 @@ mod tests {
                 let view = table.view();
                 assert_eq!((view.radius(), view.integral()), (r, integral));
                 assert_eq!(view.interpolation(), interp);
+                assert_eq!(view.is_separable(), table.is_separable());
+                // Entries are the filter at the sample points; indices past the last clamp.
+                let last = view.len() - 1;
+                for (i, j) in [(0, 0), (3, 5), (last, 2), (7, last)] {
+                    let (x, y) = (view.sample_point(Axis::X, i), view.sample_point(Axis::Y, j));
+                    assert!(
+                        (view.entry(i, j) - filter.eval(x, y)).abs() < 1e-6,
+                        "({i}, {j})"
+                    );
+                }
+                assert_eq!(view.entry(last + 9, 4), view.entry(last, 4));
+                assert_eq!(view.entry(4, last + 1), view.entry(4, last));
                 for axis in [Axis::X, Axis::Y] {
                     let a = axis.index();
                     let points: std::vec::Vec<f32> =
