@@ -131,7 +131,7 @@ const fn bake() -> [[u32; 2]; PMJ02_MAX_POINTS] {
 }
 
 crate::lazy_table::baked_table! {
-    /// The table the sequence and the samplers read: [`PMJ02_TABLE`] itself, or with the
+    /// The table the unscrambled sequence reads: [`PMJ02_TABLE`] itself, or with the
     /// `lazy-tables` feature the same points built at first use (so a program that does not name
     /// `PMJ02_TABLE` does not carry its 512 KiB).
     pub(crate) static PMJ02_POINTS: [[u32; 2]; PMJ02_MAX_POINTS] = [[0; 2]; PMJ02_MAX_POINTS],
