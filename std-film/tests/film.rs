@@ -102,10 +102,10 @@ impl Filter for Cone {
 
 /// Every pixel's weight and RGB sums are the sums of the filter weights that reach it, times
 /// the radiance, on the common path (Mitchell's phase table) and on each of the film's paths
-/// past it: a non-separable filter (its
-/// table, and direct evaluation, also on a film whose own filter is separable), a separable one
-/// too wide for the phase table (footprints of 19 and of 35 columns or rows, the latter past the
-/// outer product's 32), and one-pixel footprints of a filter that is not a box.
+/// past it: a non-separable filter (its table, and direct evaluation, also on a film whose own
+/// filter is separable), a separable one too wide for the phase table (footprints of 19 and of
+/// 35 columns or rows, the latter past the outer product's 32), and one-pixel footprints of a
+/// filter that is not a box.
 #[test]
 fn per_pixel_footprints_sum_the_weights_that_reach_each_pixel() {
     let cone = Cone(2.5);

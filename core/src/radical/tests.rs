@@ -532,11 +532,11 @@ fn ratios_are_correctly_rounded() {
     }
 }
 
-/// Halfway cases with denominators past the `u64` oracle above: `(2T + 1)/2^(bits + 2)` lies
-/// exactly halfway between two floats of `bits + 1` significant bits above ½, and
-/// `((2T + 1)·K ± 1) / (2^(bits + 2)·K)` lies `1/den` above or below it, with `den` up to 2⁹⁴
-/// (`ratio_*` take up to 2⁹⁶). Expected values by construction: up above, down below, to even at
-/// the tie.
+/// Halfway cases with denominators past the `u64` oracle above: `(2t + 1)/2^(bits + 2)` (with
+/// `2^bits ≤ t < 2^(bits + 1)`) lies exactly halfway between two floats of `bits + 1` significant
+/// bits above ½, and `((2t + 1)·k ± 1) / (2^(bits + 2)·k)` lies `1/den` above or below it, with
+/// `den` up to 2⁹⁴ (`ratio_*` take up to 2⁹⁶). Expected values by construction: up above, down
+/// below, to even at the tie.
 #[test]
 fn ratios_round_ties_with_wide_denominators() {
     for bits in [52u32, 23] {
