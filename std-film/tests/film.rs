@@ -783,24 +783,29 @@ fn block4_mismatch(
     )
 }
 
-/// The 4 × 4 path against the general path at every position of an eighth-pixel grid over
-/// the whole film and its border: every phase-0 footprint (5 pixels along an axis with 5 taps)
-/// and every 4-or-3 boundary of a 4-tap axis is among them.
-#[test]
-fn block4_path_matches_the_general_path_on_an_eighth_pixel_grid() {
-    // The grid, and the grid shifted by 1/512 pixel: phases between the phase table's own
-    // (1/64 pixel apart), whose taps are interpolated, also from a tap at the radius.
-    let samples: Vec<_> = [0.0, 1.0 / 512.0]
+/// Samples `(x, y, red, weight)` at every position of an eighth-pixel grid over a 10 × 9 film
+/// and a 3-pixel border (pixel edges and centres among them), and of the same grid shifted by
+/// 1/512 pixel either way: positions just off the edges and off the phase tables' own grid.
+fn eighth_pixel_grids() -> Vec<(f32, f32, f32, f32)> {
+    [0.0, 1.0 / 512.0, -1.0 / 512.0]
         .into_iter()
         .flat_map(|shift| {
             (-24..96).flat_map(move |ky| {
-                (-24..104).map(move |kx| {
-                    let p = [kx as f32 / 8.0 - shift, ky as f32 / 8.0 - shift];
-                    (p[0], p[1], 0.75, 1.5)
-                })
+                (-24..104)
+                    .map(move |kx| (kx as f32 / 8.0 + shift, ky as f32 / 8.0 + shift, 0.75, 1.5))
             })
         })
-        .collect();
+        .collect()
+}
+
+/// The 4 × 4 path against the general path at every position of [`eighth_pixel_grids`]: every
+/// phase-0 footprint (5 pixels along an axis with 5 taps) and every 4-or-3 boundary of a 4-tap
+/// axis is among them.
+#[test]
+fn block4_path_matches_the_general_path_on_an_eighth_pixel_grid() {
+    // The shifted grids give phases between the phase table's own (1/64 pixel apart), whose
+    // taps are interpolated, also from a tap at the radius.
+    let samples = eighth_pixel_grids();
     for (i, f) in block4_filters().iter().enumerate() {
         if let Some(m) = block4_mismatch(&**f, Bounds::new(0, 0, 10, 9), &samples) {
             panic!("filter {i}: {m}");
@@ -841,23 +846,11 @@ fn one_pixel_footprints_add_the_weight_times_the_radiance_exactly() {
 }
 
 /// The one-pixel path of box filters (radius ½, and narrower ones that can miss a pixel's
-/// centre) against the general path, bit for bit, at every position of an eighth-pixel grid
-/// over the film and its border (pixel edges and centres among them) and of the same grid
-/// shifted by 1/512 pixel, in the film's tile and in a tile inside it; also NaN, ∞ and
-/// weights of 0.
+/// centre) against the general path, bit for bit, at every position of [`eighth_pixel_grids`],
+/// in the film's tile and in a tile inside it; also NaN, ∞ and weights of 0.
 #[test]
 fn one_pixel_path_matches_the_general_path() {
-    let mut samples: Vec<_> = [0.0, 1.0 / 512.0]
-        .into_iter()
-        .flat_map(|shift| {
-            (-24..96).flat_map(move |ky| {
-                (-24..104).map(move |kx| {
-                    let p = [kx as f32 / 8.0 + shift, ky as f32 / 8.0 + shift];
-                    (p[0], p[1], 0.75, 1.5)
-                })
-            })
-        })
-        .collect();
+    let mut samples = eighth_pixel_grids();
     samples.extend([
         (f32::NAN, 2.0, 1.0, 1.0),
         (2.5, f32::INFINITY, 1.0, 1.0),
