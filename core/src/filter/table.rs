@@ -1390,10 +1390,12 @@ impl TableView<'_> {
 mod tests {
     use super::*;
 
-    /// A non-separable plugin filter (a cone of radius `[1.5, 1.25]`) for the full 2D tables.
-    struct Cone;
+    /// A non-separable plugin filter for the full 2D tables: an elliptic cone with unequal radii
+    /// `[1.5, 1.25]`, so a radius reported for the wrong axis, or as a constant, shows (the
+    /// filter tests' round `Cone` has radius 1 on both axes).
+    struct EllipticCone;
 
-    impl Filter for Cone {
+    impl Filter for EllipticCone {
         fn radius(&self) -> [f32; 2] {
             [1.5, 1.25]
         }
@@ -1411,10 +1413,10 @@ mod tests {
         let mitchell = crate::filter::Mitchell::new([2.0, 1.5], 1.0 / 3.0, 1.0 / 3.0).unwrap();
         for interp in [Interpolation::Nearest, Interpolation::Linear] {
             let sep = SeparableTable::<16>::new(&mitchell, interp).unwrap();
-            let full = Table2d::<16>::new(&Cone, interp).unwrap();
+            let full = Table2d::<16>::new(&EllipticCone, interp).unwrap();
             let tables = [
                 (FilterTable::Separable(sep), &mitchell as &dyn Filter),
-                (FilterTable::Full(full), &Cone as &dyn Filter),
+                (FilterTable::Full(full), &EllipticCone as &dyn Filter),
             ];
             for (table, filter) in &tables {
                 let (r, integral) = (filter.radius(), filter.integral());
@@ -1451,7 +1453,7 @@ mod tests {
             assert_eq!(sep.interpolation(), interp);
             assert_eq!(
                 (full.radius(), full.integral()),
-                (Cone.radius(), Cone.integral())
+                (EllipticCone.radius(), EllipticCone.integral())
             );
             for axis in [Axis::X, Axis::Y] {
                 for i in [0, 1, 7, 15, 16, 99] {
