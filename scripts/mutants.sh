@@ -27,7 +27,11 @@
 # MUTANTS_JOBS (default 1: two cores, one build at a time), MUTANTS_TIMEOUT
 # (seconds of tests per mutant before it counts as a timeout; default 30), MUTANTS_OUT (default
 # $CARGO_TARGET_DIR/mutants, else target/mutants), MUTANTS_BASELINE=skip (do not first run the
-# tests on the unmutated tree: saves one build per module when they are known to pass).
+# tests on the unmutated tree: saves one build per module when they are known to pass),
+# MUTANTS_ITERATE=1 (test again only the mutants an earlier run in the same output folder did not
+# catch, with cargo-mutants' --iterate; the row then counts the earlier catches with the new ones
+# and its time is the sum of the runs'. Tests only ever get stronger between runs, so a mutant
+# caught once stays caught; a mutant whose line moved is tested again.)
 #
 # Exit status: 0 when every viable, non-equivalent mutant was caught; 2 when some were missed (the
 # list is printed); 1 when cargo-mutants is missing or failed.
@@ -47,6 +51,7 @@ JOBS=${MUTANTS_JOBS:-1}
 TIMEOUT=${MUTANTS_TIMEOUT:-30}
 OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants}
 BASELINE=${MUTANTS_BASELINE:-run}
+ITERATE=${MUTANTS_ITERATE:-0}
 
 modules() { grep -v -e '^#' -e '^[[:space:]]*$' "$MODULES_FILE"; }
 
@@ -84,6 +89,7 @@ for module in "${selected[@]}"; do
     cmd=(cargo mutants --package "$package" --file "$file" --test-package "$package"
         --no-shuffle --jobs "$JOBS" --timeout "$TIMEOUT" --baseline "$BASELINE" --output "$dir"
         "${cargo_args[@]}" -- -- $filters)
+    if [ "$ITERATE" = 1 ]; then cmd=("${cmd[@]:0:2}" --iterate "${cmd[@]:2}"); fi
     res="$dir/mutants.out"
     if [ $summarize = 1 ]; then
         # Re-score an earlier run (after a change to the equivalent list).
@@ -91,10 +97,16 @@ for module in "${selected[@]}"; do
         seconds=$(cat "$dir/seconds")
         read -r -a cmd <"$dir/command"
     else
-        rm -rf "$dir"
-        mkdir -p "$dir"
+        earlier=0
+        if [ "$ITERATE" = 1 ]; then
+            [ -s "$dir/seconds" ] || { echo "$module: no earlier run in $dir to iterate on" >&2; exit 1; }
+            earlier=$(cat "$dir/seconds")
+        else
+            rm -rf "$dir"
+            mkdir -p "$dir"
+        fi
         echo "== $module: ${cmd[*]}"
-        begin=$SECONDS
+        begin=$((SECONDS - earlier))
         rc=0
         nice -n 15 "${cmd[@]}" || rc=$?
         seconds=$((SECONDS - begin))
@@ -103,7 +115,8 @@ for module in "${selected[@]}"; do
         echo "$seconds" >"$dir/seconds"
         echo "${cmd[*]}" >"$dir/command"
     fi
-    caught=$(count "$res/caught.txt")
+    # An iterated run lists the earlier runs' catches in previously_caught.txt.
+    caught=$(($(count "$res/caught.txt") + $(count "$res/previously_caught.txt")))
     missed=$(count "$res/missed.txt")
     unviable=$(count "$res/unviable.txt")
     timeouts=$(count "$res/timeout.txt")
