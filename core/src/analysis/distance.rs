@@ -106,6 +106,34 @@ impl Grid {
         [self.axis_cell(p[0], 0), self.axis_cell(p[1], 1)]
     }
 
+    /// The largest ring the search needs: every cell lies within it of every other (rings are
+    /// Chebyshev distances in cells; on the torus they wrap, so no cell is more than half the grid
+    /// away).
+    fn max_ring(&self) -> usize {
+        let [gx, gy] = self.cells;
+        if self.wrap {
+            gx.max(gy) / 2
+        } else {
+            gx.max(gy) - 1
+        }
+    }
+
+    /// The distance each ring adds at least: two points whose cells are `Δ ≥ 1` rings apart are
+    /// at least `(Δ − 1) · ring_gap` apart, and no larger value has that property. Cells `Δ ≥ 2`
+    /// rings apart are `Δ` apart along some axis, with `Δ − 1` whole cells between them, so the gap
+    /// is the narrowest cell side among the axes where two cells can be that far apart (3 cells,
+    /// or 4 when the axis wraps); ∞ when no axis can.
+    fn ring_gap(&self) -> f64 {
+        let least = if self.wrap { 4 } else { 3 };
+        let mut gap = f64::INFINITY;
+        for k in 0..2 {
+            if self.cells[k] >= least {
+                gap = gap.min(self.extent[k] / self.cells[k] as f64);
+            }
+        }
+        gap
+    }
+
     #[inline]
     fn dist2(&self, p: &[f64], q: &[f64]) -> f64 {
         let mut dx = (p[0] - q[0]).abs();
@@ -116,6 +144,15 @@ impl Grid {
         }
         dx * dx + dy * dy
     }
+}
+
+/// Whether the search around a point can stop after ring `r`: no ring lies past `max_ring`,
+/// or every cell past ring `r` is at least `r · gap` away (see [`Grid::ring_gap`]), so it holds
+/// no pair closer than the best squared distance so far, `best2`.
+#[inline]
+fn search_done(r: usize, max_ring: usize, gap: f64, best2: f64) -> bool {
+    let reach = r as f64 * gap;
+    r >= max_ring || reach * reach >= best2
 }
 
 /// Minimum distance between distinct points of a 2D set and its relative radius ρ, in the unit
@@ -191,18 +228,7 @@ pub fn min_distance(
             f64::from_bits(sorted[2 * slot + 1]),
         ]
     };
-    let (cw, ch) = (grid.extent[0] / gx as f64, grid.extent[1] / gy as f64);
-    let ring_gap = match (gx > 1, gy > 1) {
-        (true, true) => cw.min(ch),
-        (true, false) => cw,
-        (false, true) => ch,
-        (false, false) => f64::INFINITY,
-    };
-    let max_ring = if grid.wrap {
-        gx.max(gy) / 2
-    } else {
-        gx.max(gy)
-    };
+    let (ring_gap, max_ring) = (grid.ring_gap(), grid.max_ring());
     let (gxi, gyi) = (gx as isize, gy as isize);
     let mut best2 = f64::INFINITY;
     for c in 0..cells {
@@ -245,8 +271,7 @@ pub fn min_distance(
                         }
                     }
                 }
-                let reach = r as f64 * ring_gap;
-                if r as usize >= max_ring || reach * reach >= best2 {
+                if search_done(r as usize, max_ring, ring_gap, best2) {
                     break;
                 }
                 r += 1;
@@ -265,6 +290,7 @@ mod tests {
     use super::*;
     use crate::analysis::testsets::random;
     use proptest::prelude::*;
+    use std::format;
     use std::vec;
     use std::vec::Vec;
 
@@ -348,6 +374,78 @@ mod tests {
                 assert!((g.relative_radius - b / hex).abs() < 1e-12);
             }
         }
+    }
+
+    /// How many rings apart cells `a` and `b` (column, row) of `grid` are, and the distance
+    /// between the nearest points of the two cells: the whole cells between them per axis.
+    fn cell_separation(grid: &Grid, a: [usize; 2], b: [usize; 2]) -> (usize, f64) {
+        let (mut rings, mut d2) = (0, 0.0);
+        for k in 0..2 {
+            let g = grid.cells[k];
+            let mut steps = a[k].abs_diff(b[k]);
+            if grid.wrap {
+                steps = steps.min(g - steps);
+            }
+            rings = rings.max(steps);
+            let between = steps.saturating_sub(1) as f64 * (grid.extent[k] / g as f64);
+            d2 += between * between;
+        }
+        (rings, d2.sqrt())
+    }
+
+    #[test]
+    fn ring_gap_and_max_ring_are_the_tight_bounds() {
+        // The search's stop rule rests on these two: found here by walking every pair of cells
+        // of grids built for sets in rectangles of many shapes (thin strips, bands, single
+        // rows, a point) and on the torus.
+        let sides = [1.0, 0.5, 0.1, 1e-2, 1e-4, 0.0];
+        for seed in 0..400u64 {
+            let n = 2 + (seed as usize * 7) % 150;
+            let mut pts = random(n, 2, seed);
+            let (w, h) = (sides[seed as usize % 6], sides[(seed as usize / 6) % 6]);
+            for p in pts.chunks_exact_mut(2) {
+                p[0] = 0.2 + w * 0.7 * p[0];
+                p[1] = 0.1 + h * 0.8 * p[1];
+            }
+            let set = PointSet::new(&pts, 2).unwrap();
+            for t in [Topology::Square, Topology::Torus] {
+                let grid = Grid::new(&set, t);
+                let [gx, gy] = grid.cells;
+                let cells: Vec<[usize; 2]> = (0..gx * gy).map(|c| [c % gx, c / gx]).collect();
+                let (mut max_ring, mut gap) = (0, f64::INFINITY);
+                for &a in &cells {
+                    for &b in &cells {
+                        let (rings, d) = cell_separation(&grid, a, b);
+                        max_ring = max_ring.max(rings);
+                        if rings >= 2 {
+                            gap = gap.min(d / (rings - 1) as f64);
+                        }
+                    }
+                }
+                let at = format!("seed {seed}, {t:?}, {gx} x {gy} cells");
+                assert_eq!(grid.max_ring(), max_ring, "{at}");
+                let got = grid.ring_gap();
+                assert!(
+                    got == gap || (got - gap).abs() <= 1e-12 * gap,
+                    "{at}: gap {got}, cells say {gap}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn search_stops_once_the_next_ring_is_too_far() {
+        // Cells past ring r are at least r · gap away: done once (r · gap)² ≥ best².
+        assert!(!search_done(1, 9, 0.5, 0.3)); // ring 2 may hold a pair 0.5 apart < √0.3
+        assert!(search_done(1, 9, 0.5, 0.25)); // no closer pair past ring 1
+        assert!(search_done(2, 9, 0.5, 0.3));
+        assert!(!search_done(2, 9, 0.25, 0.3));
+        assert!(!search_done(0, 9, 0.5, 1e-300)); // ring 0 alone never settles it
+        assert!(search_done(9, 9, 0.5, 100.0)); // nothing past the last ring
+        assert!(search_done(10, 9, 0.5, 100.0));
+        // No axis with cells two rings apart: ring 0 goes on (0 · ∞ is NaN), ring 1 is the last.
+        assert!(!search_done(0, 9, f64::INFINITY, 1.0));
+        assert!(search_done(1, 9, f64::INFINITY, f64::INFINITY));
     }
 
     #[test]
