@@ -101,6 +101,10 @@ for module in "${selected[@]}"; do
         if [ "$ITERATE" = 1 ]; then
             [ -s "$dir/seconds" ] || { echo "$module: no earlier run in $dir to iterate on" >&2; exit 1; }
             earlier=$(cat "$dir/seconds")
+            # cargo-mutants skips the earlier unviable mutants too and lists them with the
+            # catches; keep their names to count them apart.
+            { cat "$res/unviable.txt" "$dir/unviable-earlier.txt" 2>/dev/null || true; } | sort -u >"$dir/unviable.tmp"
+            mv "$dir/unviable.tmp" "$dir/unviable-earlier.txt"
         else
             rm -rf "$dir"
             mkdir -p "$dir"
@@ -115,10 +119,17 @@ for module in "${selected[@]}"; do
         echo "$seconds" >"$dir/seconds"
         echo "${cmd[*]}" >"$dir/command"
     fi
-    # An iterated run lists the earlier runs' catches in previously_caught.txt.
-    caught=$(($(count "$res/caught.txt") + $(count "$res/previously_caught.txt")))
+    # An iterated run lists the earlier runs' catches, and their unviable mutants, in
+    # previously_caught.txt.
+    earlier_unviable=0
+    if [ -s "$res/previously_caught.txt" ]; then
+        { cat "$dir/unviable-earlier.txt" "$res.old/unviable.txt" 2>/dev/null || true; } | sort -u >"$dir/unviable.tmp"
+        earlier_unviable=$(grep -c -F -x -f "$dir/unviable.tmp" "$res/previously_caught.txt" || true)
+        rm -f "$dir/unviable.tmp"
+    fi
+    caught=$(($(count "$res/caught.txt") + $(count "$res/previously_caught.txt") - earlier_unviable))
     missed=$(count "$res/missed.txt")
-    unviable=$(count "$res/unviable.txt")
+    unviable=$(($(count "$res/unviable.txt") + earlier_unviable))
     timeouts=$(count "$res/timeout.txt")
     total=$((caught + missed + unviable + timeouts))
     : >"$dir/unlisted.txt"
