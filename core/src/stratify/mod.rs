@@ -211,6 +211,21 @@ mod tests {
     }
 
     #[test]
+    fn place_keeps_stratum_0_where_the_fast_product_rounds_past_it() {
+        // Past 2²⁴ strata, fl(1/n) can exceed 1/n by enough that the largest jitter's product
+        // fl(u · fl(1/n)) reaches 1/n: stratum 1. These n (found by a search over n ≤ 2²⁹, where
+        // the f64 check is exact) are such cases; `place` must step the value back.
+        let u_max = 1.0 - 1.0 / 16_777_216.0;
+        for n in [16_780_117u32, 33_560_234, 67_120_459, 268_481_833] {
+            let inv = 1.0 / n as f32;
+            let fast = u_max * inv;
+            assert!(f64::from(fast) * f64::from(n) >= 1.0, "n={n}: not a case");
+            let x = place(0, u_max, n, inv);
+            assert!(x < fast && f64::from(x) * f64::from(n) < 1.0, "n={n}: {x}");
+        }
+    }
+
+    #[test]
     fn strata_values_are_strictly_inside_for_extreme_jitters() {
         let ns = (1..5000u32).chain((12..=23).flat_map(|e| {
             let p = 1u32 << e;
