@@ -612,6 +612,38 @@ fn ratios_round_up_ties_hidden_past_the_kept_quotient_bits() {
     assert!(up_from_even > 0 && up_from_odd > 0);
 }
 
+/// Ties that only the quotient bits past the 64-bit mantissa break: with `den = 2^k` the
+/// division is exact (no remainder to set the sticky bit) and `long_divide` keeps `k − 64`
+/// quotient bits below the mantissa, which must be folded into its sticky bit. `M·2^(k−64)` with
+/// `M = 2⁶³ + 2^(63 − bits)` is halfway between two floats of `bits` significant bits above ½;
+/// one more unit (a bit far below the mantissa) rounds it up, one less down, and a set lowest
+/// mantissa bit plus that unit is above the tie too (the sticky bit is or-ed in, not flipped).
+#[test]
+fn ratios_round_ties_broken_below_the_mantissa() {
+    for bits in [53u32, 24] {
+        let tie = (1u128 << 63) + (1 << (63 - bits));
+        let (low, high) = (0.5, 0.5 + 2f64.powi(-(bits as i32)));
+        for k in [70u32, 90, 95] {
+            let den = 1u128 << k;
+            let at = tie << (k - 64);
+            let lowest = 1u128 << (k - 64); // the mantissa's lowest bit
+            for (num, want) in [
+                (at - 1, low),
+                (at, low), // to even
+                (at + 1, high),
+                (at + lowest + 1, high),
+            ] {
+                let got = if bits == 53 {
+                    ratio_f64(num, den)
+                } else {
+                    f64::from(ratio_f32(num, den))
+                };
+                assert_eq!(got, want, "bits {bits} k {k} num {num:#x}");
+            }
+        }
+    }
+}
+
 /// The batch and run forms agree with `radical_inverse` at the edges of their fast paths: each
 /// base's limit `b^k` and its neighbours, and for base 2 whole batches of indices whose low 32
 /// bits are all zero (their values are not the 32-bit reversal of those bits).
