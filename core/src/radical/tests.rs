@@ -389,6 +389,49 @@ fn fill_matches_random_access_across_boundaries() {
     }
 }
 
+/// The strided fill (one dimension of interleaved points, as Halton's point sets write them):
+/// slot `offset + i·stride` holds index `first + i`, every other slot is left alone, for strides
+/// 0 (taken as 1) to 5, every offset, and starts at the same boundaries as above, including a
+/// base-2 run that ends exactly at 2³² (the last index its vectorised route can take).
+#[test]
+fn strided_fill_writes_its_slots_only() {
+    const UNTOUCHED: f32 = -1.0;
+    let mut buf = [UNTOUCHED; 160];
+    for dim in [0u32, 1, 2, 5, 63, 200, 1023] {
+        let big = BASES[(dim % PRIME_COUNT) as usize].big;
+        for stride in 0..=5usize {
+            for offset in 0..stride.max(1) + 1 {
+                for first in [
+                    0u64,
+                    77,
+                    (1 << 16) - 9,
+                    (1 << 32) - 30,
+                    (1 << 32) - (160 - offset as u64).div_ceil(stride.max(1) as u64),
+                    big - 20,
+                    u64::MAX - 9,
+                ] {
+                    buf.fill(UNTOUCHED);
+                    fill_consecutive(dim, first, &mut buf, offset, stride);
+                    let step = stride.max(1);
+                    for (k, &x) in buf.iter().enumerate() {
+                        let want = if k >= offset && (k - offset) % step == 0 {
+                            let a = first.wrapping_add(((k - offset) / step) as u64);
+                            radical_inverse(dim, a)
+                        } else {
+                            UNTOUCHED
+                        };
+                        assert_eq!(
+                            x.to_bits(),
+                            want.to_bits(),
+                            "dim {dim} stride {stride} offset {offset} first {first} slot {k}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
 proptest! {
     #[test]
     fn fill_matches_random_access(dim in 0u32..1024, first in any::<u32>(), len in 1usize..300) {
