@@ -687,6 +687,20 @@ fn ratios_round_ties_broken_below_the_mantissa() {
     }
 }
 
+/// Base 2 past 2³²: Φ₂(a) = ½ + 2⁻²⁵ (halfway between two `f32`s) plus the bits of `a` above 2³²,
+/// each far below `f32`'s rounding step. Any of them makes the value round up; the 64-bit path
+/// halves the reversal and folds the bit it drops (`a`'s bit 63) into the lowest kept one (bit
+/// 62), so both set must still round up.
+#[test]
+fn base2_ties_are_broken_by_the_high_index_bits() {
+    let tie = 1u64 | 1 << 24;
+    let up = 0.5 + 2f32.powi(-24);
+    for high in [1u64 << 62, 1 << 63, 3 << 62, 1 << 32, 1 << 40 | 1 << 63] {
+        assert_eq!(radical_inverse(0, tie | high), up, "{:#x}", tie | high);
+    }
+    assert_eq!(radical_inverse(0, tie), 0.5); // the tie itself: to even
+}
+
 /// The batch and run forms agree with `radical_inverse` at the edges of their fast paths: each
 /// base's limit `b^k` and its neighbours, and for base 2 whole batches of indices whose low 32
 /// bits are all zero (their values are not the 32-bit reversal of those bits).
