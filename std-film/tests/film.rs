@@ -427,9 +427,25 @@ fn negative_lobes_resolve_to_zero_and_are_counted() {
     let mut tile = film.tile(spec);
     tile.add_sample([5.0, 0.5], [1.0, 1.0, 1.0], 1.0);
     tile.add_sample([0.5, 0.5], [1.0, 1.0, 1.0], 1.0);
+    // A dim blue sample on pixel 3's centre and a bright red one 1.5 pixels away, in its negative
+    // lobe: pixel 3's red sum goes negative while its weight sum stays positive.
+    tile.add_sample([3.5, 0.5], [0.1, 0.1, 5.0], 1.0);
+    tile.add_sample([5.0, 0.5], [10.0, 0.1, 0.1], 1.0);
     film.merge(tile).unwrap();
+    // The counts the resolve rule gives, from the pixel sums.
+    let (mut negative, mut zero_weight) = (0, 0);
+    for x in 0..8 {
+        let p = film.pixel(x, 0).unwrap();
+        if p.weight_sum > 0.0 {
+            negative += p.rgb_sum.iter().filter(|&&c| c / p.weight_sum < 0.0).count();
+        } else {
+            zero_weight += 1;
+        }
+    }
+    assert!(negative > 0, "the case has no negative component");
     let (image, stats) = film.image();
-    assert!(stats.negative_components > 0 || stats.zero_weight_pixels > 0);
+    assert_eq!(stats.negative_components as usize, negative);
+    assert_eq!(stats.zero_weight_pixels as usize, zero_weight);
     assert!(image.data().iter().all(|&v| v >= 0.0 && v.is_finite()));
 }
 
