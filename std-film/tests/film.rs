@@ -437,7 +437,11 @@ fn negative_lobes_resolve_to_zero_and_are_counted() {
     for x in 0..8 {
         let p = film.pixel(x, 0).unwrap();
         if p.weight_sum > 0.0 {
-            negative += p.rgb_sum.iter().filter(|&&c| c / p.weight_sum < 0.0).count();
+            negative += p
+                .rgb_sum
+                .iter()
+                .filter(|&&c| c / p.weight_sum < 0.0)
+                .count();
         } else {
             zero_weight += 1;
         }

@@ -434,6 +434,21 @@ mod tests {
     }
 
     #[test]
+    fn sets_touching_zero_bin_from_the_origin() {
+        // Coordinates exactly 0 put the grid's origin at 0, and the closest pair beside that
+        // edge must still be binned into neighbouring cells of the 3 × 3 grid.
+        let pts = [
+            0.0, 0.5, 0.05, 0.5, 0.5, 0.0, 0.6, 0.0, 1.0, 1.0, 0.9, 0.3, 0.3, 0.9, 0.75, 0.65, 0.3,
+            0.3, 0.6, 0.95, 0.95, 0.05, 0.05, 0.95, 0.45, 0.6, 0.75, 0.3, 0.2, 0.7, 0.97, 0.8,
+            0.15, 0.15, 0.6, 0.45,
+        ];
+        for t in [Topology::Square, Topology::Torus] {
+            assert_eq!(grid_min(&pts, t).distance, brute(&pts, t), "{t:?}");
+        }
+        assert!((brute(&pts, Topology::Square) - 0.05).abs() < 1e-15);
+    }
+
+    #[test]
     fn search_stops_once_the_next_ring_is_too_far() {
         // Cells past ring r are at least r · gap away: done once (r · gap)² ≥ best².
         assert!(!search_done(1, 9, 0.5, 0.3)); // ring 2 may hold a pair 0.5 apart < √0.3

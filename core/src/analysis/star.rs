@@ -36,7 +36,8 @@ pub fn star_discrepancy_scratch_len(n: usize, dims: usize) -> Option<usize> {
 /// Allocates: no.
 ///
 /// # Errors
-/// [`Error::BufferTooShort`] if `scratch` is shorter than [`star_discrepancy_scratch_len`];
+/// [`Error::BufferTooShort`] if `scratch` is shorter than the chosen method needs: `N` in 1D,
+/// `3N` in 2D, [`star_discrepancy_scratch_len`] otherwise (that length always suffices);
 /// [`Error::TooMany`] when enumeration (3 or more dimensions) would exceed
 /// [`ENUMERATION_LIMIT`] — use [`star_discrepancy_bounds`] then.
 ///
@@ -427,6 +428,35 @@ mod tests {
         let set = PointSet::new(coords, dims).unwrap();
         let mut s = vec![0.0; star_discrepancy_scratch_len(set.len(), dims).unwrap()];
         star_discrepancy(&set, &mut s).unwrap()
+    }
+
+    #[test]
+    fn star_discrepancy_is_the_1d_and_2d_methods_with_their_scratch() {
+        // 1D and 2D sets go to their own methods, which need only N and 3N of scratch (the
+        // enumerator needs 2N and 3N + 1): the same values, bit for bit, and the same errors.
+        for n in [1usize, 2, 3, 7, 64, 300] {
+            for (dims, need) in [(1usize, n), (2, 3 * n)] {
+                let coords = random(n, dims, n as u64 + 17 * dims as u64);
+                let set = PointSet::new(&coords, dims).unwrap();
+                let mut s = vec![0.0; need];
+                let own = if dims == 1 {
+                    star_discrepancy_1d(&set, &mut s)
+                } else {
+                    star_discrepancy_2d(&set, &mut s)
+                }
+                .unwrap();
+                let got = star_discrepancy(&set, &mut s).unwrap();
+                assert_eq!(got.to_bits(), own.to_bits(), "n {n} dims {dims}");
+                assert_eq!(
+                    star_discrepancy(&set, &mut s[..need - 1]),
+                    Err(Error::BufferTooShort {
+                        needed: need,
+                        actual: need - 1
+                    }),
+                    "n {n} dims {dims}"
+                );
+            }
+        }
     }
 
     fn enumerate(coords: &[f64], dims: usize) -> f64 {

@@ -226,6 +226,19 @@ mod tests {
     }
 
     #[test]
+    fn place_stops_stepping_at_the_stratum_edge() {
+        // Where the fast product misses and the walk reaches the stratum's lower edge exactly,
+        // the edge is the value: (41 + 0)/5373952 = 2⁻¹⁷, and k = 24887007 of 3·2²³ centred,
+        // whose stratum holds one f32, its lower edge (one more step up leaves the stratum).
+        let n = 5_373_952u32;
+        assert_eq!(place(41, 0.0, n, 1.0 / n as f32), 2f32.powi(-17));
+        let (n, k) = (25_165_824u32, 24_887_007u32);
+        let x = place(k, 0.5, n, 1.0 / n as f32);
+        let t = f64::from(x) * f64::from(n);
+        assert!(t >= f64::from(k) && t < f64::from(k) + 1.0, "{x}: t = {t}");
+    }
+
+    #[test]
     fn strata_values_are_strictly_inside_for_extreme_jitters() {
         let ns = (1..5000u32).chain((12..=23).flat_map(|e| {
             let p = 1u32 << e;
