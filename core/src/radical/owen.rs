@@ -252,6 +252,31 @@ mod tests {
     /// Weyl increment 0x9e3779b97f4a7c15, each output is the finaliser of the state) started at
     /// `key ⊕ prefix·P`: the node at level ℓ reads the state after ℓ steps, so one prefix's
     /// levels are successive outputs and every prefix has its own start.
+    /// Golden values: in bases above 16 each digit's permutation comes from the keyed
+    /// permutation of `hash`, seeded from the node hash folded to 32 bits; the values a seed gives
+    /// are this code's own, pinned so that a change to them (the fold included) is deliberate.
+    #[test]
+    fn scrambled_values_past_base_16_are_pinned() {
+        for (dim, a, seed, want32, want64) in [
+            (6u32, 0u64, 0u64, 0x3e74_c450u32, 0x3fce_9889_fdb9_9cccu64),
+            (6, 12_345, 1, 0x3f2f_19cd, 0x3fe5_e339_a400_dbe7),
+            (40, 987_654_321, 0xfeed, 0x3e28_5ba6, 0x3fc5_0b74_b155_ad7a),
+            (1000, u64::MAX, 3, 0x3f24_53d8, 0x3fe4_8a7a_fb2a_f20d),
+        ] {
+            let at = (dim, a, seed);
+            assert_eq!(
+                owen_scrambled_radical_inverse(dim, a, seed).to_bits(),
+                want32,
+                "{at:?}"
+            );
+            assert_eq!(
+                owen_scrambled_radical_inverse_f64(dim, a, seed).to_bits(),
+                want64,
+                "{at:?}"
+            );
+        }
+    }
+
     #[test]
     fn node_hash_is_a_splitmix64_stream_per_prefix() {
         for key in [0u64, 1, 0xdead_beef_0123_4567, u64::MAX] {
