@@ -687,48 +687,6 @@ fn ratios_round_ties_broken_below_the_mantissa() {
     }
 }
 
-/// The folded radical inverse from its definition (Kocis & Whiten 1997): digit `k` of `a`,
-/// `a_k`, becomes `(a_k + k) mod b`, over infinitely many digits (those above `a`'s top digit
-/// fold to nonzero ones), summed in `f64` from the 80th digit down. Bases 2 … 53 cover both the
-/// tabulated tails (up to 23) and the closed form past them.
-#[test]
-fn folded_inverse_sums_the_folded_digits() {
-    fn folded(b: u64, mut a: u64) -> f64 {
-        let mut digits = [0u64; 80];
-        for (k, digit) in digits.iter_mut().enumerate() {
-            *digit = (a % b + k as u64) % b;
-            a /= b;
-        }
-        digits
-            .iter()
-            .rev()
-            .fold(0.0, |tail, &x| (x as f64 + tail) / b as f64)
-    }
-    for dim in (0..16u32).chain([100, 1023]) {
-        let b = u64::from(prime(dim));
-        for a in [
-            0u64,
-            1,
-            2,
-            b - 1,
-            b,
-            b * b + 3,
-            1000,
-            123_456_789,
-            1 << 40,
-            u64::MAX,
-        ] {
-            let want = folded(b, a);
-            let (x, y) = (
-                folded_radical_inverse_f64(dim, a),
-                folded_radical_inverse(dim, a),
-            );
-            assert!((x - want).abs() < 1e-15, "dim {dim} a {a}: {x} vs {want}");
-            assert!((f64::from(y) - want).abs() < 1.2e-7, "dim {dim} a {a}: {y}");
-        }
-    }
-}
-
 /// Base 2 past 2³²: Φ₂(a) = ½ + 2⁻²⁵ (halfway between two `f32`s) plus the bits of `a` above 2³²,
 /// each far below `f32`'s rounding step. Any of them makes the value round up; the 64-bit path
 /// halves the reversal and folds the bit it drops (`a`'s bit 63) into the lowest kept one (bit
