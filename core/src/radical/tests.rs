@@ -575,6 +575,15 @@ fn ratios_are_correctly_rounded() {
     }
 }
 
+/// `num / den` rounded by `ratio_f64` (`f64`) or `ratio_f32` (`f32`, widened exactly).
+fn ratio_in(f64_format: bool, num: u128, den: u128) -> f64 {
+    if f64_format {
+        ratio_f64(num, den)
+    } else {
+        f64::from(ratio_f32(num, den))
+    }
+}
+
 /// Halfway cases with denominators past the `u64` oracle above: `(2t + 1)/2^(bits + 2)` (with
 /// `2^bits ≤ t < 2^(bits + 1)`) lies exactly halfway between two floats of `bits + 1` significant
 /// bits above ½, and `((2t + 1)·k ± 1) / (2^(bits + 2)·k)` lies `1/den` above or below it, with
@@ -597,11 +606,7 @@ fn ratios_round_ties_with_wide_denominators() {
                 let den = (1u128 << (bits + 2)) * k;
                 let tie = u128::from(2 * t + 1) * k;
                 for (num, want) in [(tie - 1, low), (tie, even), (tie + 1, high)] {
-                    let got = if bits == 52 {
-                        ratio_f64(num, den)
-                    } else {
-                        f64::from(ratio_f32(num, den))
-                    };
+                    let got = ratio_in(bits >= 52, num, den);
                     assert_eq!(got, want, "bits {bits} t {t} k {k} num {num}");
                 }
             }
@@ -642,11 +647,7 @@ fn ratios_round_up_ties_hidden_past_the_kept_quotient_bits() {
             } else {
                 up_from_odd += 1;
             }
-            let got = if bits == 53 {
-                ratio_f64(num, den)
-            } else {
-                f64::from(ratio_f32(num, den))
-            };
+            let got = ratio_in(bits >= 52, num, den);
             assert_eq!(got, up, "bits {bits} den {den} t {t}");
             cases += 1;
         }
@@ -676,11 +677,7 @@ fn ratios_round_ties_broken_below_the_mantissa() {
                 (at + 1, high),
                 (at + lowest + 1, high),
             ] {
-                let got = if bits == 53 {
-                    ratio_f64(num, den)
-                } else {
-                    f64::from(ratio_f32(num, den))
-                };
+                let got = ratio_in(bits >= 52, num, den);
                 assert_eq!(got, want, "bits {bits} k {k} num {num:#x}");
             }
         }
