@@ -248,10 +248,6 @@ mod tests {
     use proptest::prelude::*;
     use std::vec::Vec;
 
-    /// A node's hash is a SplitMix64 stream (Steele, Lea & Flood 2014: the state steps by the
-    /// Weyl increment 0x9e3779b97f4a7c15, each output is the finaliser of the state) started at
-    /// `key ⊕ prefix·P`: the node at level ℓ reads the state after ℓ steps, so one prefix's
-    /// levels are successive outputs and every prefix has its own start.
     /// Golden values: in bases above 16 each digit's permutation comes from the keyed
     /// permutation of `hash`, seeded from the node hash folded to 32 bits; the values a seed gives
     /// are this code's own, pinned so that a change to them (the fold included) is deliberate.
@@ -277,6 +273,10 @@ mod tests {
         }
     }
 
+    /// A node's hash is a SplitMix64 stream (Steele, Lea & Flood 2014: the state steps by the
+    /// Weyl increment 0x9e3779b97f4a7c15, each output is the finaliser of the state) started at
+    /// `key ⊕ prefix·P`: the node at level ℓ reads the state after ℓ steps, so one prefix's
+    /// levels are successive outputs and every prefix has its own start.
     #[test]
     fn node_hash_is_a_splitmix64_stream_per_prefix() {
         for key in [0u64, 1, 0xdead_beef_0123_4567, u64::MAX] {
