@@ -119,13 +119,11 @@ for module in "${selected[@]}"; do
         echo "$seconds" >"$dir/seconds"
         echo "${cmd[*]}" >"$dir/command"
     fi
-    # An iterated run lists the earlier runs' catches, and their unviable mutants, in
-    # previously_caught.txt.
+    # An iterated run lists the earlier runs' catches, and their unviable mutants (kept in
+    # unviable-earlier.txt before the run), in previously_caught.txt.
     earlier_unviable=0
-    if [ -s "$res/previously_caught.txt" ]; then
-        { cat "$dir/unviable-earlier.txt" "$res.old/unviable.txt" 2>/dev/null || true; } | sort -u >"$dir/unviable.tmp"
-        earlier_unviable=$(grep -c -F -x -f "$dir/unviable.tmp" "$res/previously_caught.txt" || true)
-        rm -f "$dir/unviable.tmp"
+    if [ -s "$res/previously_caught.txt" ] && [ -s "$dir/unviable-earlier.txt" ]; then
+        earlier_unviable=$(grep -c -F -x -f "$dir/unviable-earlier.txt" "$res/previously_caught.txt" || true)
     fi
     caught=$(($(count "$res/caught.txt") + $(count "$res/previously_caught.txt") - earlier_unviable))
     missed=$(count "$res/missed.txt")
