@@ -42,6 +42,21 @@ fn halton_equals_the_table_path_in_every_dimension() {
     }
 }
 
+/// Base 3 at index 524 199 899 (`R' = 2 411 218 785` over 20 digits, just below an `f32`
+/// midpoint; found with exact rationals): the fast path's two roundings (`R'·inv` to `f64`, then
+/// to `f32`) land one `f32` above the correctly rounded `0x3f31_0829`, within the documented
+/// ulp. The compact type, which below the fast-path limit rounds the same way and past it
+/// correctly (its long path), must return the fast path's value there.
+#[test]
+fn halton_rounds_like_the_fast_path_where_that_is_not_correct_rounding() {
+    let a = 524_199_899;
+    assert!(a < fast_limit(1));
+    let fast = radical_inverse(1, a);
+    assert_eq!(fast.to_bits(), 0x3f31_082a);
+    assert_eq!(phi_long(3, a).to_bits(), 0x3f31_0829);
+    assert_eq!(Halton::<2>::new().sample(a, 1).to_bits(), fast.to_bits());
+}
+
 #[test]
 fn sobol_and_owen_sobol_equal_the_table_paths_in_every_dimension() {
     let s = Sobol::<1024>::new();

@@ -636,14 +636,14 @@ pub(crate) const fn fast_class(d: usize, c: usize) -> (u32, u64) {
     if n > k {
         n = k;
     }
-    let whole = n.div_ceil(j) * j;
-    if j > 1 && whole <= k {
-        n = whole;
-    }
-    let steps = if j > 1 { n.div_ceil(j) } else { n };
-    let pad = steps * j - n;
-    let inv = 1.0 / b.pow(n + pad) as f64;
-    (n + pad, inv.to_bits())
+    // The reversal spans whole chunks of `j` digits. `build_fast` rounds the digit count up to
+    // them where that stays within `k` and pads the first chunk otherwise (it needs the split for
+    // its `magic` and `first`), but either way the digits spanned, `n + pad`, are the count
+    // rounded up to a multiple of `j` (with `j = 1`, the count itself), and only that sum and its
+    // reciprocal are needed here.
+    let spanned = n.div_ceil(j) * j;
+    let inv = 1.0 / b.pow(spanned) as f64;
+    (spanned, inv.to_bits())
 }
 
 /// [`fast_class`] read back from [`FAST`]'s constants, for the test that holds them equal.

@@ -190,6 +190,48 @@ fn folded_tail_closed_form_matches_direct_sum() {
     }
 }
 
+/// `T_b(r)·2²⁵⁶`, truncated, as four 64-bit limbs (most significant first): Horner over the
+/// digits `(r + i) mod b` from 400 digits out, each step `v ← (c·2²⁵⁶ + v)/b` by schoolbook
+/// division of the limbs. Twice [`fold_tail`]'s precision, by another route than either of its
+/// two (the const table's 128-bit Horner, the closed form): the digits cut off weigh less than
+/// 2⁻⁴⁰⁰ and each step's truncation less than 2⁻²⁵⁶, so the result is within 2 of `T·2²⁵⁶`.
+fn fold_tail_256(b: u64, r: u64) -> [u64; 4] {
+    let mut v = [0u64; 4];
+    for i in (0..400u64).rev() {
+        // c < b, so the leading limb of c·2²⁵⁶ + v divides to 0 with remainder c.
+        let mut rem = u128::from((r + i) % b);
+        for limb in v.iter_mut() {
+            let cur = (rem << 64) | u128::from(*limb);
+            *limb = (cur / u128::from(b)) as u64;
+            rem = cur % u128::from(b);
+        }
+    }
+    v
+}
+
+/// `fold_tail` is documented within 2⁻¹²⁶ of `T_b(r)`: within 4 units of 2⁻¹²⁸ of the
+/// double-precision oracle's top half, for every base (table and closed form) and, per base,
+/// every `r` up to 64 and the ends and middle of the range (the largest error found is 2 units).
+/// A tail that lost low bits (a step of the fixed-point division, the closed form's second term)
+/// is far outside the bound.
+#[test]
+fn fold_tails_are_within_their_bound_of_a_double_precision_oracle() {
+    let mut worst = 0u128;
+    for d in 0..PRIME_COUNT as usize {
+        let b = BASES[d].b;
+        let ends = [b / 3, b / 2, b.saturating_sub(3), b.saturating_sub(2), b - 1];
+        for r in (0..b.min(64)).chain(ends) {
+            let v = fold_tail_256(b, r);
+            let exact = (u128::from(v[0]) << 64) | u128::from(v[1]);
+            let got = fold_tail(d, b, r);
+            let err = got.abs_diff(exact);
+            worst = worst.max(err);
+            assert!(err <= 4, "base {b} r {r}: {got:#x} against {exact:#x}");
+        }
+    }
+    std::println!("largest fold-tail error: {worst} units of 2^-128");
+}
+
 #[test]
 fn inverse_radical_inverse_round_trips() {
     let mut r = crate::rng::default_rng(5);
@@ -487,7 +529,7 @@ fn batch_base2_mixes_32_bit_and_wide_blocks() {
 
 /// `radical_inverse_dims` against `radical_inverse` value by value, bit for bit: every index
 /// class (its first and last index), runs inside the table bases (the per-class lanes), runs
-/// past them, runs through base 2 and the wrap, and indices past `MIN_BIG` and 2³².
+/// that end at the last table base or one past it, runs past them, runs through base 2 and the wrap, and indices past `MIN_BIG` and 2³².
 #[test]
 fn dims_equal_single_values_in_every_class_and_lane() {
     let mut indices = std::vec![0u64, 1, MIN_BIG - 1, MIN_BIG, u64::from(u32::MAX) + 7];
@@ -497,7 +539,12 @@ fn dims_equal_single_values_in_every_class_and_lane() {
     let mut out = [0.0f32; 40];
     for &a in &indices {
         for first in [1u32, 2, 5, 13, TABLE_DIMS as u32 - 3, 30, 1000, 1023] {
-            for len in [1usize, 3, 16, 40] {
+            // Runs that end at the last base with a digit-reversal table and one past it.
+            let ends = match TABLE_DIMS.checked_sub(first as usize) {
+                Some(len) if len > 0 => [len, len + 1],
+                _ => [1, 1],
+            };
+            for len in [1usize, 3, 16, 40].into_iter().chain(ends) {
                 radical_inverse_dims(first, a, &mut out[..len]);
                 for (i, x) in out[..len].iter().enumerate() {
                     let want = radical_inverse(first + i as u32, a);
@@ -681,6 +728,41 @@ fn ratios_round_ties_broken_below_the_mantissa() {
                 assert_eq!(got, want, "bits {bits} k {k} num {num:#x}");
             }
         }
+    }
+}
+
+/// `inexact` says the true value lies above `num/den` (the folded inverse passes a truncated
+/// tail): an exact tie then rounds up, not to even, and the mantissa's sticky bit is set even
+/// when the division leaves no remainder.
+#[test]
+fn inexact_quotients_round_ties_up() {
+    for (bits, f64_format) in [(24u32, false), (53, true)] {
+        // ½ + 2^−(bits+1): halfway between ½ and the float above it.
+        let (num, den) = ((1u128 << bits) + 1, 1u128 << (bits + 1));
+        let up = 0.5 + 2f64.powi(-(bits as i32));
+        let round = |inexact: bool| {
+            if f64_format {
+                fraction_f64(num, den, 0, inexact)
+            } else {
+                f64::from(fraction_f32(num, den, 0, inexact))
+            }
+        };
+        assert_eq!(round(false), 0.5, "bits {bits}: an exact tie goes to even");
+        assert_eq!(round(true), up, "bits {bits}: above the tie");
+    }
+    // ½ divides exactly: only `inexact` sets the sticky bit.
+    assert_eq!(long_divide(1, 2, 0, false).0 & 1, 0);
+    assert_eq!(long_divide(1, 2, 0, true).0 & 1, 1);
+}
+
+/// A zero quotient is 0 at every denominator (the division stops at its word bound, since no
+/// number of quotient words reaches a leading bit).
+#[test]
+fn zero_quotients_are_zero() {
+    for den in [1u128, 3, 1 << 40, (1 << 95) + 7] {
+        assert_eq!(ratio_f32(0, den), 0.0);
+        assert_eq!(ratio_f64(0, den), 0.0);
+        assert_eq!(long_divide(0, den, 0, false).0, 0);
     }
 }
 
