@@ -1,6 +1,8 @@
 //! Exact rational oracle for the radical inverses: integer digits and a tiny big integer, no
-//! floats. A float result passes when the exact value lies between its two neighbours, i.e. the
-//! result is within 1 ulp.
+//! floats. A result documented within 1 ulp passes when the exact value lies between its two
+//! neighbours; one documented correctly rounded (the `f64` forms of Φ and of the scrambled
+//! inverse off its stratum edges) when the exact value lies between the midpoints to its
+//! neighbours, and on a midpoint only if its last mantissa bit is even.
 
 use crate::radical::{
     PRIME_COUNT, folded_radical_inverse, folded_radical_inverse_f64, prime, radical_inverse,
@@ -171,6 +173,44 @@ fn within_one_ulp_f32(lo: &Ratio, hi: &Ratio, got: f32) -> bool {
         && cmp_ratio_float(hi, f64::from(above)) != Ordering::Greater
 }
 
+/// Compares `num/den` with the midpoint `(x + y)/2` of two adjacent finite floats `0 ≤ x < y < 1`.
+fn cmp_ratio_midpoint(r: &Ratio, x: f64, y: f64) -> Ordering {
+    let (my, ey) = decompose(y);
+    // 0 decomposes as 0·2⁰; on y's exponent it is the same 0.
+    let (mx, ex) = if x == 0.0 { (0, ey) } else { decompose(x) };
+    // Adjacent floats' exponents differ by at most 1, so the sum of the two mantissas on the
+    // smaller exponent is below 2⁵⁵: (x + y)/2 = sum·2^(e−1), with e ≤ 0 below 1.
+    let e = ex.min(ey);
+    let sum = (mx << (ex - e)) + (my << (ey - e));
+    // num/den vs sum·2^(e−1)  ⇔  num·2^(1−e) vs sum·den.
+    let mut lhs = r.num.clone();
+    lhs.shl((1 - e) as u32);
+    lhs.cmp(&r.den.mul_u64(sum))
+}
+
+/// True when `got` is `r` rounded to the nearest `f64`, ties to even, or `r` is at least the
+/// midpoint below 1 and `got` the largest `f64` below 1 (the clamp the radical inverses apply).
+fn correctly_rounded_f64(r: &Ratio, got: f64) -> bool {
+    let even = got.to_bits() & 1 == 0;
+    let above_low = got == 0.0 || {
+        let below = f64::from_bits(got.to_bits() - 1);
+        match cmp_ratio_midpoint(r, below, got) {
+            Ordering::Greater => true,
+            Ordering::Equal => even,
+            Ordering::Less => false,
+        }
+    };
+    let below_high = got == crate::math::ONE_MINUS_EPSILON_F64 || {
+        let above = f64::from_bits(got.to_bits() + 1);
+        match cmp_ratio_midpoint(r, got, above) {
+            Ordering::Less => true,
+            Ordering::Equal => even,
+            Ordering::Greater => false,
+        }
+    };
+    above_low && below_high
+}
+
 /// The base-`b` digits of `a`, least significant first, by integer division.
 fn digits(mut a: u64, b: u64) -> Vec<u64> {
     let mut out = Vec::new();
@@ -271,7 +311,7 @@ fn check_all(dim: u32, a: u64, seed: u64) {
     );
     let g = radical_inverse_f64(dim, a);
     assert!(
-        g < 1.0 && within_one_ulp_f64(&phi, &phi, g),
+        g < 1.0 && correctly_rounded_f64(&phi, g),
         "Φ f64 b={b} a={a}: {g}"
     );
 
@@ -313,7 +353,7 @@ fn check_all(dim: u32, a: u64, seed: u64) {
             "scrambled f32 b={b} a={a}: {f}"
         );
         assert!(
-            g < 1.0 && within_one_ulp_f64(&s, &s, g),
+            g < 1.0 && correctly_rounded_f64(&s, g),
             "scrambled f64 b={b} a={a}: {g}"
         );
     }
@@ -367,7 +407,7 @@ fn scrambled_points_at_the_edge_stay_inside_their_strata() {
 }
 
 #[test]
-fn every_base_within_one_ulp_of_the_exact_value_on_edge_and_random_indices() {
+fn every_base_meets_its_rounding_bound_on_edge_and_random_indices() {
     let mut r = rng::default_rng(0x5eed_0001);
     for dim in 0..PRIME_COUNT {
         let b = u64::from(prime(dim));
@@ -384,7 +424,7 @@ fn every_base_within_one_ulp_of_the_exact_value_on_edge_and_random_indices() {
 }
 
 #[test]
-fn small_bases_within_one_ulp_on_many_random_indices() {
+fn small_bases_meet_their_rounding_bounds_on_many_random_indices() {
     let mut r = rng::default_rng(0x5eed_0002);
     for dim in 0..16 {
         for _ in 0..300 {
@@ -396,7 +436,7 @@ fn small_bases_within_one_ulp_on_many_random_indices() {
 }
 
 #[test]
-fn folded_values_with_all_leading_folded_digits_zero_are_within_one_ulp() {
+fn folded_values_with_all_leading_folded_digits_zero_meet_their_rounding_bounds() {
     // a_j = (−j) mod b makes every folded digit of a zero: the value is only the tiny tail, the
     // hardest case for the precision of the tail.
     for dim in [0u32, 1, 2, 8, 9, 100, 1023] {
