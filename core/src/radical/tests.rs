@@ -769,7 +769,7 @@ fn zero_quotients_are_zero() {
 /// Base 2 past 2³²: Φ₂(a) = ½ + 2⁻²⁵ (halfway between two `f32`s) plus the bits of `a` above 2³²,
 /// each far below `f32`'s rounding step. Any of them makes the value round up; the 64-bit path
 /// halves the reversal and folds the bit it drops (`a`'s bit 63) into the lowest kept one (bit
-/// 62), so both set must still round up.
+/// 62), so both set must still round up. The same for `radical_inverse_f64` at its own tie.
 #[test]
 fn base2_ties_are_broken_by_the_high_index_bits() {
     let tie = 1u64 | 1 << 24;
@@ -778,6 +778,14 @@ fn base2_ties_are_broken_by_the_high_index_bits() {
         assert_eq!(radical_inverse(0, tie | high), up, "{:#x}", tie | high);
     }
     assert_eq!(radical_inverse(0, tie), 0.5); // the tie itself: to even
+    // The same in f64, which keeps 53 bits: Φ₂(a) = ½ + 2⁻⁵⁴ is its tie. With bits 62 and 63
+    // both set, the bit folded in (63) lands on a set bit (62): or-ed, not flipped.
+    let tie = 1u64 | 1 << 53;
+    let up = 0.5 + 2f64.powi(-53);
+    for high in [1u64 << 62, 1 << 63, 3 << 62] {
+        assert_eq!(radical_inverse_f64(0, tie | high), up, "{:#x}", tie | high);
+    }
+    assert_eq!(radical_inverse_f64(0, tie), 0.5);
 }
 
 /// The batch and run forms agree with `radical_inverse` at the edges of their fast paths: each
