@@ -16,6 +16,12 @@ pub const MAX_DIMS: usize = 32;
 /// `d · N · ∏_{k<d−1} (distinct values on axis k + 1)` must not exceed it (about a few seconds).
 pub const ENUMERATION_LIMIT: u64 = 1 << 32;
 
+/// Whether an enumeration of estimated cost `work` may run: the limit is inclusive. (A function
+/// of its own so that the boundary is tested without running 2³² steps.)
+fn within_enumeration_limit(work: u64) -> bool {
+    work <= ENUMERATION_LIMIT
+}
+
 /// `f64` scratch that every exact star-discrepancy function accepts for `n` points in `dims`
 /// dimensions, `2n + (dims − 1)(n + 1)`, or `None` on overflow or `dims == 0`. (The 1D and 2D
 /// functions need only `n` and `3n`.)
@@ -212,7 +218,7 @@ pub fn star_discrepancy_enumerate(
         counts[k] = m;
         work = work.saturating_mul(m as u64);
     }
-    if work > ENUMERATION_LIMIT {
+    if !within_enumeration_limit(work) {
         return Err(Error::TooMany { what: "points" });
     }
     let inv_n = 1.0 / n as f64;
@@ -688,6 +694,15 @@ mod tests {
             Err(Error::TooMany { what: "points" })
         );
         assert_eq!(star_bounds_scratch_len(MAX_DIMS, u32::MAX), None);
+    }
+
+    /// The documented limit: a cost equal to [`ENUMERATION_LIMIT`] is enumerated, one more is
+    /// refused.
+    #[test]
+    fn the_enumeration_limit_is_inclusive() {
+        assert!(within_enumeration_limit(ENUMERATION_LIMIT));
+        assert!(!within_enumeration_limit(ENUMERATION_LIMIT + 1));
+        assert!(within_enumeration_limit(0));
     }
 
     /// The bracket of [`star_discrepancy_bounds`] by its definition, counting points directly:
