@@ -219,7 +219,13 @@ fn fold_tails_are_within_their_bound_of_a_double_precision_oracle() {
     let mut worst = 0u128;
     for d in 0..PRIME_COUNT as usize {
         let b = BASES[d].b;
-        let ends = [b / 3, b / 2, b.saturating_sub(3), b.saturating_sub(2), b - 1];
+        let ends = [
+            b / 3,
+            b / 2,
+            b.saturating_sub(3),
+            b.saturating_sub(2),
+            b - 1,
+        ];
         for r in (0..b.min(64)).chain(ends) {
             let v = fold_tail_256(b, r);
             let exact = (u128::from(v[0]) << 64) | u128::from(v[1]);
