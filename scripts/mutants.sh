@@ -31,7 +31,8 @@
 # MUTANTS_ITERATE=1 (test again only the mutants an earlier run in the same output folder did not
 # catch, with cargo-mutants' --iterate; the row then counts the earlier catches with the new ones
 # and its time is the sum of the runs'. Tests only ever get stronger between runs, so a mutant
-# caught once stays caught; a mutant whose line moved is tested again.)
+# caught once stays caught; a mutant whose line moved is tested again, and an earlier catch that
+# is no longer among the file's mutants (its code was changed or removed) is not counted.)
 #
 # Exit status: 0 when every viable, non-equivalent mutant was caught; 2 when some were missed (the
 # list is printed); 1 when cargo-mutants is missing or failed.
@@ -118,14 +119,22 @@ for module in "${selected[@]}"; do
         case $rc in 0 | 2 | 3) ;; *) echo "$module: cargo mutants exited $rc" >&2; exit 1 ;; esac
         echo "$seconds" >"$dir/seconds"
         echo "${cmd[*]}" >"$dir/command"
+        # The file's mutants as the code now stands, to drop earlier catches that no longer exist.
+        cargo mutants --list --package "$package" --file "$file" >"$dir/current.txt"
     fi
     # An iterated run lists the earlier runs' catches, and their unviable mutants (kept in
     # unviable-earlier.txt before the run), in previously_caught.txt.
-    earlier_unviable=0
-    if [ -s "$res/previously_caught.txt" ] && [ -s "$dir/unviable-earlier.txt" ]; then
-        earlier_unviable=$(grep -c -F -x -f "$dir/unviable-earlier.txt" "$res/previously_caught.txt" || true)
+    earlier="$dir/earlier-caught.txt"
+    if [ -s "$res/previously_caught.txt" ] && [ -s "$dir/current.txt" ]; then
+        grep -F -x -f "$dir/current.txt" "$res/previously_caught.txt" >"$earlier" || true
+    else
+        cp "$res/previously_caught.txt" "$earlier" 2>/dev/null || : >"$earlier"
     fi
-    caught=$(($(count "$res/caught.txt") + $(count "$res/previously_caught.txt") - earlier_unviable))
+    earlier_unviable=0
+    if [ -s "$earlier" ] && [ -s "$dir/unviable-earlier.txt" ]; then
+        earlier_unviable=$(grep -c -F -x -f "$dir/unviable-earlier.txt" "$earlier" || true)
+    fi
+    caught=$(($(count "$res/caught.txt") + $(count "$earlier") - earlier_unviable))
     missed=$(count "$res/missed.txt")
     unviable=$(($(count "$res/unviable.txt") + earlier_unviable))
     timeouts=$(count "$res/timeout.txt")
