@@ -535,7 +535,8 @@ fn batch_base2_mixes_32_bit_and_wide_blocks() {
 
 /// `radical_inverse_dims` against `radical_inverse` value by value, bit for bit: every index
 /// class (its first and last index), runs inside the table bases (the per-class lanes), runs
-/// that end at the last table base or one past it, runs past them, runs through base 2 and the wrap, and indices past `MIN_BIG` and 2³².
+/// that end at the last table base or one past it, runs past them, runs through base 2 and the
+/// wrap, and indices past `MIN_BIG` and 2³².
 #[test]
 fn dims_equal_single_values_in_every_class_and_lane() {
     let mut indices = std::vec![0u64, 1, MIN_BIG - 1, MIN_BIG, u64::from(u32::MAX) + 7];

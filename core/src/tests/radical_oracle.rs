@@ -136,10 +136,9 @@ fn decompose(x: f64) -> (u64, i32) {
     }
 }
 
-/// Compares `num/den` with the float `x ≥ 0`.
-fn cmp_ratio_float(r: &Ratio, x: f64) -> Ordering {
-    let (m, e) = decompose(x);
-    // num/den vs m·2^e  ⇔  num·2^(−e) vs m·den·2^0 (e ≤ 0 for x < 2⁵³).
+/// Compares `num/den` with `m·2^e`.
+fn cmp_ratio_scaled(r: &Ratio, m: u64, e: i32) -> Ordering {
+    // num/den vs m·2^e  ⇔  num·2^(−e) vs m·den·2^0 (e ≤ 0 for values below 2⁵³).
     let mut lhs = r.num.clone();
     let mut rhs = r.den.mul_u64(m);
     if e < 0 {
@@ -148,6 +147,12 @@ fn cmp_ratio_float(r: &Ratio, x: f64) -> Ordering {
         rhs.shl(e as u32);
     }
     lhs.cmp(&rhs)
+}
+
+/// Compares `num/den` with the float `x ≥ 0`.
+fn cmp_ratio_float(r: &Ratio, x: f64) -> Ordering {
+    let (m, e) = decompose(x);
+    cmp_ratio_scaled(r, m, e)
 }
 
 /// True when the exact value (or, for a bracket `[lo, hi]`, every value in it) lies within one
@@ -173,40 +178,32 @@ fn within_one_ulp_f32(lo: &Ratio, hi: &Ratio, got: f32) -> bool {
         && cmp_ratio_float(hi, f64::from(above)) != Ordering::Greater
 }
 
-/// Compares `num/den` with the midpoint `(x + y)/2` of two adjacent finite floats `0 ≤ x < y < 1`.
+/// Compares `num/den` with the midpoint `(x + y)/2` of two adjacent finite floats
+/// `0 ≤ x < y < 1`.
 fn cmp_ratio_midpoint(r: &Ratio, x: f64, y: f64) -> Ordering {
     let (my, ey) = decompose(y);
     // 0 decomposes as 0·2⁰; on y's exponent it is the same 0.
     let (mx, ex) = if x == 0.0 { (0, ey) } else { decompose(x) };
     // Adjacent floats' exponents differ by at most 1, so the sum of the two mantissas on the
-    // smaller exponent is below 2⁵⁵: (x + y)/2 = sum·2^(e−1), with e ≤ 0 below 1.
+    // smaller exponent is below 2⁵⁵: (x + y)/2 = sum·2^(e−1).
     let e = ex.min(ey);
     let sum = (mx << (ex - e)) + (my << (ey - e));
-    // num/den vs sum·2^(e−1)  ⇔  num·2^(1−e) vs sum·den.
-    let mut lhs = r.num.clone();
-    lhs.shl((1 - e) as u32);
-    lhs.cmp(&r.den.mul_u64(sum))
+    cmp_ratio_scaled(r, sum, e - 1)
 }
 
 /// True when `got` is `r` rounded to the nearest `f64`, ties to even, or `r` is at least the
 /// midpoint below 1 and `got` the largest `f64` below 1 (the clamp the radical inverses apply).
 fn correctly_rounded_f64(r: &Ratio, got: f64) -> bool {
     let even = got.to_bits() & 1 == 0;
+    // `r` on `got`'s side of a midpoint, or on it with `got` even.
+    let inside = |side: Ordering, mid: Ordering| mid == side || (mid == Ordering::Equal && even);
     let above_low = got == 0.0 || {
         let below = f64::from_bits(got.to_bits() - 1);
-        match cmp_ratio_midpoint(r, below, got) {
-            Ordering::Greater => true,
-            Ordering::Equal => even,
-            Ordering::Less => false,
-        }
+        inside(Ordering::Greater, cmp_ratio_midpoint(r, below, got))
     };
     let below_high = got == crate::math::ONE_MINUS_EPSILON_F64 || {
         let above = f64::from_bits(got.to_bits() + 1);
-        match cmp_ratio_midpoint(r, got, above) {
-            Ordering::Less => true,
-            Ordering::Equal => even,
-            Ordering::Greater => false,
-        }
+        inside(Ordering::Less, cmp_ratio_midpoint(r, got, above))
     };
     above_low && below_high
 }
