@@ -95,11 +95,24 @@ impl Scramble {
 /// assert_eq!(a & 0xffff, b & 0xffff);
 /// ```
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-pub const fn lk_hash(mut x_rev: u32, seed: u32) -> u32 {
+pub const fn lk_hash(x_rev: u32, seed: u32) -> u32 {
+    lk_hash_by(x_rev, seed, lk_multiplier(seed))
+}
+
+/// The odd multiplier [`lk_hash`] derives from its seed.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) const fn lk_multiplier(seed: u32) -> u32 {
+    (seed >> 16) | 1
+}
+
+/// [`lk_hash`] with its seed's multiplier ([`lk_multiplier`]) given: for keys used many times,
+/// which keep the multiplier beside the seed.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) const fn lk_hash_by(mut x_rev: u32, seed: u32, multiplier: u32) -> u32 {
     // Constants: Vegdahl, "Building a better LK hash" (psychopath.io, 2021).
     x_rev ^= x_rev.wrapping_mul(0x3d20_adea);
     x_rev = x_rev.wrapping_add(seed);
-    x_rev = x_rev.wrapping_mul((seed >> 16) | 1);
+    x_rev = x_rev.wrapping_mul(multiplier);
     x_rev ^= x_rev.wrapping_mul(0x0552_6c56);
     x_rev ^= x_rev.wrapping_mul(0x53a2_2864);
     x_rev
@@ -236,6 +249,51 @@ const fn fill_reversed_f32(t: &mut [[f32; 256]; 3]) {
 pub(crate) fn reversed_to_f32(w_rev: u32) -> f32 {
     let [b0, b1, b2, _] = w_rev.to_le_bytes();
     (REVERSED_F32[0][b0 as usize] + REVERSED_F32[1][b1 as usize]) + REVERSED_F32[2][b2 as usize]
+}
+
+/// The top 24 bits of a reversed, scrambled word, as an `f32` in `[0, 1)`.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) fn rev_to_f32(w_rev: u32) -> f32 {
+    (w_rev.reverse_bits() >> 8) as f32 * (1.0 / 16_777_216.0)
+}
+
+/// [`lk_hash`] then [`rev_to_f32`] on four lanes: the SSE2 kernel on x86-64, else
+/// [`scramble_rev_f32x4_lanes`]. What the four-wide Owen-Sobol values and the batched PMJ(0,2)
+/// reads end in.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) fn scramble_rev_f32x4(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
+    #[cfg(target_arch = "x86_64")]
+    {
+        crate::simd::scramble_rev_f32x4_sse2(x, seeds)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        scramble_rev_f32x4_lanes(x, seeds)
+    }
+}
+
+/// [`lk_hash`] then [`rev_to_f32`] on four lanes, written lane-parallel so that it compiles to
+/// vector code where the target has it (past x86-64, and the SSE2 kernel's oracle in tests).
+#[cfg_attr(all(target_arch = "x86_64", not(test)), allow(dead_code))]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) fn scramble_rev_f32x4_lanes(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
+    let mut x = x;
+    for k in 0..4 {
+        x[k] ^= x[k].wrapping_mul(0x3d20_adea);
+    }
+    for k in 0..4 {
+        x[k] = x[k].wrapping_add(seeds[k]);
+    }
+    for k in 0..4 {
+        x[k] = x[k].wrapping_mul((seeds[k] >> 16) | 1);
+    }
+    for k in 0..4 {
+        x[k] ^= x[k].wrapping_mul(0x0552_6c56);
+    }
+    for k in 0..4 {
+        x[k] ^= x[k].wrapping_mul(0x53a2_2864);
+    }
+    x.map(rev_to_f32)
 }
 
 #[cfg(test)]
@@ -450,5 +508,25 @@ mod tests {
         }
         assert_eq!(Scramble::from_name(""), None);
         assert_eq!(Scramble::from_name("Owen"), None);
+    }
+
+    /// On x86-64 the SSE2 kernel equals the portable lane code bit for bit: words and seeds
+    /// over edge values and hashed ones, every lane different.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn sse2_kernel_equals_the_portable_lanes() {
+        use crate::simd::scramble_rev_f32x4_sse2;
+        let edges = [0, 1, 0x8000_0000, u32::MAX, 0xffff_0000, 0x0000_ffff];
+        let words = edges
+            .into_iter()
+            .chain((0..if cfg!(miri) { 200 } else { 20_000 }).map(|i| mix32(i ^ 0xa5a5)));
+        for (n, w) in words.enumerate() {
+            let x = [w, w.rotate_left(7), !w, mix32(w)];
+            let s = mix32(n as u32);
+            let seeds = [s, s ^ 0xffff_0000, edges[n % 6], mix32(s)];
+            let got = scramble_rev_f32x4_sse2(x, seeds).map(f32::to_bits);
+            let want = scramble_rev_f32x4_lanes(x, seeds).map(f32::to_bits);
+            assert_eq!(got, want, "x {x:x?} seeds {seeds:x?}");
+        }
     }
 }

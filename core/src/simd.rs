@@ -1,5 +1,7 @@
 //! The crate's one SSE2 kernel: the four-lane LK hash and float conversion of
-//! [`OwenSobol::sample_4d`](crate::sequence::OwenSobol::sample_4d), on x86-64 only.
+//! [`OwenSobol::sample_4d`](crate::sequence::OwenSobol::sample_4d),
+//! [`Pmj02::fill_2d`](crate::sequence::Pmj02::fill_2d) and the
+//! [`Pmj02Sampler`](crate::sampler::Pmj02Sampler)'s camera samples, on x86-64 only.
 //!
 //! Plain lane-parallel Rust already compiles to SSE2 there, but LLVM multiplies 32-bit lanes
 //! the only way SSE2 offers, two `pmuludq` and five shuffles per product. Here each pair of

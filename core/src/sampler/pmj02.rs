@@ -3,9 +3,9 @@
 use super::{Sampler, pixel_hash};
 use crate::Error;
 use crate::hash::mix64;
-use crate::scramble::{lk_hash, reversed_to_f32};
+use crate::scramble::{lk_hash_by, lk_multiplier, reversed_to_f32};
 use crate::sequence::PMJ02_MAX_POINTS;
-use crate::sequence::pmj02::PMJ02_REVERSED;
+use crate::sequence::pmj02::{PMJ02_REVERSED, reverse16};
 
 /// Odd constant separating requests in the per-request hash.
 const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
@@ -14,9 +14,32 @@ const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
 /// index shuffle and the Owen scrambles of x and y, each a well-mixed 32-bit hash.
 #[derive(Clone, Copy, Debug)]
 struct Keys {
-    shuffle: u32,
-    x: u32,
-    y: u32,
+    shuffle: Key,
+    x: Key,
+    y: Key,
+}
+
+/// One [`lk_hash`](crate::scramble::lk_hash) seed with its multiplier, derived once per key rather than per hash.
+#[derive(Clone, Copy, Debug)]
+struct Key {
+    seed: u32,
+    multiplier: u32,
+}
+
+impl Key {
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn new(seed: u32) -> Key {
+        Key {
+            seed,
+            multiplier: lk_multiplier(seed),
+        }
+    }
+
+    /// `lk_hash(x_rev, seed)`.
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn hash(self, x_rev: u32) -> u32 {
+        lk_hash_by(x_rev, self.seed, self.multiplier)
+    }
 }
 
 impl Keys {
@@ -27,9 +50,9 @@ impl Keys {
         let h = mix64(pixel_key ^ request.wrapping_mul(REQUEST_STEP));
         let g = mix64(h ^ 0x706d_6a30_3279);
         Keys {
-            shuffle: h as u32,
-            x: (h >> 32) as u32,
-            y: g as u32,
+            shuffle: Key::new(h as u32),
+            x: Key::new((h >> 32) as u32),
+            y: Key::new(g as u32),
         }
     }
 
@@ -40,22 +63,29 @@ impl Keys {
     /// bits are the reversed point index, which is that point's row in the reversed table.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn row(&self, index_rev: u32) -> usize {
-        (lk_hash(index_rev, self.shuffle) >> 16) as usize
+        (self.shuffle.hash(index_rev) >> 16) as usize
     }
 
-    /// The point's coordinates, each fast-Owen-scrambled (on the reversed words the table holds).
+    /// The point in [`PMJ02_REVERSED`] row `row`, each coordinate fast-Owen-scrambled (on the
+    /// reversed words the table holds).
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn point(&self, index_rev: u32) -> [f32; 2] {
-        let [x, y] = PMJ02_REVERSED[self.row(index_rev)];
+    fn point(&self, row: usize) -> [f32; 2] {
+        let [x, y] = PMJ02_REVERSED[row];
         [
-            reversed_to_f32(lk_hash(x, self.x)),
-            reversed_to_f32(lk_hash(y, self.y)),
+            reversed_to_f32(self.x.hash(x)),
+            reversed_to_f32(self.y.hash(y)),
         ]
     }
 
+    /// The 1D value of the sample whose 16-bit index reversed into a 32-bit word is
+    /// `index_rev`: the van der Corput point of the shuffled index `j` ([`row`](Self::row) is
+    /// `j` reversed, so `j` is the bit-reversed word of that point), fast-Owen-scrambled. The
+    /// shuffle sends the first `2^m` samples to `2^m` indices with distinct low `m` bits, so
+    /// their values fall one into each stratum of width `2^−m`, as a shuffled table
+    /// coordinate's would; two byte-table reads take the place of a read of the 512 KiB table.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value(&self, index_rev: u32) -> f32 {
-        reversed_to_f32(lk_hash(PMJ02_REVERSED[self.row(index_rev)][0], self.x))
+        reversed_to_f32(self.x.hash(reverse16(self.row(index_rev) as u32) as u32))
     }
 }
 
@@ -73,18 +103,23 @@ fn camera_keys(pixel_key: u64) -> [Keys; 3] {
 ///
 /// Every request — the image sample ([`Sampler::get_pixel_2d`], dimensions 0 and 1), a pair
 /// ([`Sampler::get_2d`] at dimension `d`) or a 1D value ([`Sampler::get_1d`] at `d`) — has its
-/// own keys, a hash of (pixel, seed, `d`, 1D or 2D). Sample `i` reads table row
-/// `shuffle(i)` and Owen-scrambles its coordinates (a 1D value takes the first); `shuffle` is
-/// Burley's nested uniform shuffle of the 16-bit index.
+/// own keys, a hash of (pixel, seed, `d`, 1D or 2D). For sample `i`, a pair reads table point
+/// `shuffle(i)` and Owen-scrambles its coordinates; a 1D value is the van der Corput point of
+/// `shuffle(i)`, Owen-scrambled; `shuffle` is Burley's nested uniform shuffle of the 16-bit
+/// index. The image pair alone reads point `i` unshuffled.
 ///
 /// Why these randomizations: the Owen scramble maps elementary intervals onto elementary
 /// intervals, and the nested shuffle maps the first `2^m` samples onto one aligned block of
-/// `2^m` rows, which is a (0, m, 2)-net (pmj02 is a (0,2)-sequence; the tests check every
-/// block). So for every pixel and every pair, the first `2^m` samples form a (0, m, 2)-net and
-/// every 1D value is stratified into `2^m` strata, at every power of two — the progressive
-/// property survives. Without a per-request shuffle every dimension would read the same row
-/// and two dimensions' values would be functions of one point (strongly correlated); a plain
-/// permutation of `0..spp` would decorrelate them but break every prefix but the whole set.
+/// `2^m` points, which is a (0, m, 2)-net (pmj02 is a (0,2)-sequence; the tests check every
+/// block) and whose indices differ in their low `m` bits. So for every pixel and every pair,
+/// the first `2^m` samples form a (0, m, 2)-net and every 1D value is stratified into `2^m`
+/// strata, at every power of two — the progressive property survives. The shuffles
+/// decorrelate the requests: two values that are functions of the same index digits (two pairs
+/// reading one point, or two unshuffled progressive values) are strongly correlated whatever
+/// their scrambles, and a plain permutation of `0..spp` would decorrelate them but break every
+/// prefix but the whole set. One request can go unshuffled, since every other one is shuffled
+/// against it: the image pair, whose per-pixel scramble alone makes each pixel's points an
+/// independent random net (a hash per camera sample fewer).
 ///
 /// `samples_per_pixel` is any value in `1..=65536` and is not rounded; the net property holds
 /// at every power of two below it, and samples past it continue the sequence. Sample indices
@@ -111,7 +146,7 @@ pub struct Pmj02Sampler {
     pixel_key: u64,
     /// The camera's keys for the current pixel, built once per pixel.
     camera: [Keys; 3],
-    /// The sample index modulo 65536, bit-reversed into a 32-bit word (what the shuffle reads).
+    /// The sample index modulo 65536, bit-reversed into a 32-bit word (what the shuffles read).
     index_rev: u32,
     dim: u32,
 }
@@ -159,6 +194,13 @@ impl Pmj02Sampler {
         self.seed
     }
 
+    /// The image pair (the pair at dimension 0): table point `index` itself, unshuffled (its
+    /// row is `index` reversed), Owen-scrambled by the pixel's keys (see the type's docs).
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn image_point(&self) -> [f32; 2] {
+        self.camera[0].point((self.index_rev >> 16) as usize)
+    }
+
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn keys(&self, request: u64) -> Keys {
         match request {
@@ -182,7 +224,7 @@ impl Sampler for Pmj02Sampler {
             self.pixel_key = pixel_hash(pixel, self.seed, PIXEL_TAG);
             self.camera = camera_keys(self.pixel_key);
         }
-        self.index_rev = (sample_index & 0xffff).reverse_bits();
+        self.index_rev = (reverse16(sample_index) as u32) << 16;
         self.dim = dim;
     }
 
@@ -197,13 +239,17 @@ impl Sampler for Pmj02Sampler {
     fn get_2d(&mut self) -> [f32; 2] {
         let d = self.dim;
         self.dim = self.dim.wrapping_add(2);
-        self.keys(2 * u64::from(d)).point(self.index_rev)
+        if d == 0 {
+            return self.image_point();
+        }
+        let keys = self.keys(2 * u64::from(d));
+        keys.point(keys.row(self.index_rev))
     }
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
-        self.camera[0].point(self.index_rev)
+        self.image_point()
     }
 }
 
@@ -344,20 +390,36 @@ mod tests {
 
     #[test]
     fn pmj02_sampler_dimensions_are_decorrelated() {
-        // Image x against lens x over 1024 samples, in a 32 × 32 grid: were both read from the
-        // same table row (only scrambled differently), each value would be a function of the
-        // other's first five digits and only 32 cells would be hit. Independent uniform pairs
-        // hit about 1024·(1 − e⁻¹) ≈ 647.
+        // The camera's values against each other over 1024 samples, in a 32 × 32 grid: were
+        // two of them functions of the same index digits (two pairs reading one table row, or
+        // an unshuffled 1D value beside the unshuffled image pair), only 32 to 256 cells would
+        // be hit. Independent uniform pairs hit 1024·(1 − e⁻¹) ≈ 647 on average, with a
+        // standard deviation near 10: below 550 is a false alarm with probability under 10⁻¹⁵.
         for seed in SEEDS {
             let mut s = Pmj02Sampler::new(1024, seed).unwrap();
             let image = run(&mut s, [5, 5], 0, 1024, |s| s.get_pixel_2d());
+            let time = run(&mut s, [5, 5], 2, 1024, |s| s.get_1d());
             let lens = run(&mut s, [5, 5], 3, 1024, |s| s.get_2d());
-            let mut cells = [false; 1024];
-            for (a, b) in image.iter().zip(&lens) {
-                cells[(a[0] * 32.0) as usize * 32 + (b[0] * 32.0) as usize] = true;
+            let d9 = run(&mut s, [5, 5], 9, 1024, |s| s.get_1d());
+            let columns: [(&str, Vec<f32>); 6] = [
+                ("image x", image.iter().map(|p| p[0]).collect()),
+                ("image y", image.iter().map(|p| p[1]).collect()),
+                ("time", time),
+                ("lens u", lens.iter().map(|p| p[0]).collect()),
+                ("lens v", lens.iter().map(|p| p[1]).collect()),
+                ("1D at 9", d9),
+            ];
+            for (i, (a, u)) in columns.iter().enumerate() {
+                // A pair's own two coordinates are one net: skip them.
+                for (b, v) in columns.iter().skip(i + 1).filter(|(b, _)| a[..4] != b[..4]) {
+                    let mut cells = [false; 1024];
+                    for (x, y) in u.iter().zip(v) {
+                        cells[(x * 32.0) as usize * 32 + (y * 32.0) as usize] = true;
+                    }
+                    let hit = cells.iter().filter(|&&c| c).count();
+                    assert!(hit > 550, "seed {seed}, {a} against {b}: {hit} cells");
+                }
             }
-            let hit = cells.iter().filter(|&&c| c).count();
-            assert!(hit > 550, "seed {seed}: {hit} cells");
         }
     }
 

@@ -25,7 +25,7 @@ use super::{Sequence, check_fill};
 use crate::Error;
 use crate::hash::{hash2, mix32};
 use crate::lazy_table::{baked_table, const_unless_lazy};
-use crate::scramble::{lk_hash, reversed_to_f32};
+use crate::scramble::{lk_hash, rev_to_f32, reversed_to_f32, scramble_rev_f32x4};
 
 /// Dimensions with all four reversed byte tables: any index is four table reads.
 const REV_DIMS: usize = 64;
@@ -271,50 +271,6 @@ fn dim_seeds4(key: u32, first: u32) -> [u32; 4] {
         *v ^= *v >> 16;
     }
     x
-}
-
-/// The top 24 bits of a reversed, scrambled word, as an `f32` in `[0, 1)`.
-#[cfg_attr(not(feature = "small-code"), inline(always))]
-fn rev_to_f32(w_rev: u32) -> f32 {
-    (w_rev.reverse_bits() >> 8) as f32 * (1.0 / 16_777_216.0)
-}
-
-/// [`lk_hash`] then [`rev_to_f32`] on four lanes: the SSE2 kernel on x86-64, else
-/// [`scramble_rev_f32x4_lanes`].
-#[cfg_attr(not(feature = "small-code"), inline(always))]
-fn scramble_rev_f32x4(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
-    #[cfg(target_arch = "x86_64")]
-    {
-        crate::simd::scramble_rev_f32x4_sse2(x, seeds)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        scramble_rev_f32x4_lanes(x, seeds)
-    }
-}
-
-/// [`lk_hash`] then [`rev_to_f32`] on four lanes, written lane-parallel so that it compiles to
-/// vector code where the target has it (past x86-64, and the SSE2 kernel's oracle in tests).
-#[cfg_attr(all(target_arch = "x86_64", not(test)), allow(dead_code))]
-#[cfg_attr(not(feature = "small-code"), inline(always))]
-pub(crate) fn scramble_rev_f32x4_lanes(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
-    let mut x = x;
-    for k in 0..4 {
-        x[k] ^= x[k].wrapping_mul(0x3d20_adea);
-    }
-    for k in 0..4 {
-        x[k] = x[k].wrapping_add(seeds[k]);
-    }
-    for k in 0..4 {
-        x[k] = x[k].wrapping_mul((seeds[k] >> 16) | 1);
-    }
-    for k in 0..4 {
-        x[k] ^= x[k].wrapping_mul(0x0552_6c56);
-    }
-    for k in 0..4 {
-        x[k] ^= x[k].wrapping_mul(0x53a2_2864);
-    }
-    x.map(rev_to_f32)
 }
 
 /// The Owen-scrambled Sobol value of dimension `dim` at a reversed shuffled index, as a 32-bit
@@ -1004,26 +960,6 @@ mod tests {
             proptest::prop_assert!((0.0..1.0).contains(&x));
             let y = s.sample_f64(index, dim);
             proptest::prop_assert!((0.0..1.0).contains(&y));
-        }
-    }
-
-    /// On x86-64 the SSE2 kernel equals the portable lane code bit for bit: words and seeds
-    /// over edge values and hashed ones, every lane different.
-    #[cfg(target_arch = "x86_64")]
-    #[test]
-    fn sse2_kernel_equals_the_portable_lanes() {
-        use crate::simd::scramble_rev_f32x4_sse2;
-        let edges = [0, 1, 0x8000_0000, u32::MAX, 0xffff_0000, 0x0000_ffff];
-        let words = edges
-            .into_iter()
-            .chain((0..if cfg!(miri) { 200 } else { 20_000 }).map(|i| mix32(i ^ 0xa5a5)));
-        for (n, w) in words.enumerate() {
-            let x = [w, w.rotate_left(7), !w, mix32(w)];
-            let s = mix32(n as u32);
-            let seeds = [s, s ^ 0xffff_0000, edges[n % 6], mix32(s)];
-            let got = scramble_rev_f32x4_sse2(x, seeds).map(f32::to_bits);
-            let want = scramble_rev_f32x4_lanes(x, seeds).map(f32::to_bits);
-            assert_eq!(got, want, "x {x:x?} seeds {seeds:x?}");
         }
     }
 }
