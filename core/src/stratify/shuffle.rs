@@ -54,10 +54,18 @@ pub fn shuffle<T, R: Rng + ?Sized>(
     if len > needed {
         return Err(Error::OutOfRange { what: "count" });
     }
-    // Draws straight from `rng`: the swaps' memory dependences, not the generator, bound this
-    // loop, and a counter stream measured no faster here (unlike stratification and LHS).
-    if dims == 1 {
-        // The common case, kept as a tight scalar loop.
+    // Draws straight from `rng` (a counter stream measured no faster here, unlike in
+    // stratification and LHS).
+    if dims == 1 && u32::try_from(count).is_ok() {
+        // The common case, kept as a tight scalar loop: 32-bit draws throughout, and no check
+        // that can panic on `j` (`j ≤ i` already; the `min` tells the compiler so), which lets
+        // `rng`'s state stay in registers instead of being stored at every step: 1.81× → 2.3×
+        // pbrt-v3's `Shuffle` (`peers`, docs/performance.md).
+        for i in (1..count).rev() {
+            let j = (uniform_below(rng, i as u32 + 1) as usize).min(i);
+            buf.swap(i, j);
+        }
+    } else if dims == 1 {
         for i in (1..count).rev() {
             let j = below(rng, i + 1);
             buf.swap(i, j);
