@@ -134,6 +134,11 @@ PEERS = {
         OURS,
         "`core/benches/sobol.rs` (`ViaSample`)",
     ),
+    "per_call": (
+        "the same values one call per point",
+        OURS,
+        "`core/benches/pmj02.rs` (`sample_2d`)",
+    ),
     "by_hand": (
         "the same by hand through the stateless layer",
         OURS,
@@ -230,6 +235,8 @@ def _rows():
             f"{g}/owen_hashed_sample_f32"))
     add(Row("pmj02", "pmj02 Owen-scrambled by hashed index, `sample_2d`",
             f"{g}/owen_hashed_sample_2d"))
+    add(Row("pmj02", "pmj02 Owen-scrambled by hashed index, batch `fill_2d`",
+            f"{g}/owen_hashed_fill_2d", f"{g}/owen_hashed_sample_2d", "per_call"))
     add(Row("pmj02", "pmj02 sampler, camera sample (5 values)", "pmj02_sampler/camera_sample",
             unit="camera sample", scale=5))
     add(Row("pmj02", "pmj02 construction, 2¹⁶ points", "pmj02_build/65536_points",

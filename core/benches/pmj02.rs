@@ -59,6 +59,14 @@ fn bench_by_index(c: &mut Criterion<cpu_time::BenchClock>) {
                 }
             })
         });
+        // The same points through the batch read.
+        let mut out = vec![[0.0f32; 2]; hashed.len()];
+        g.bench_function(format!("{name}_hashed_fill_2d"), |b| {
+            b.iter(|| {
+                p.fill_2d(black_box(&hashed), &mut out).unwrap();
+                black_box(&mut out);
+            })
+        });
     }
     g.finish();
 }
