@@ -19,7 +19,8 @@ struct Keys {
     y: Key,
 }
 
-/// One [`lk_hash`](crate::scramble::lk_hash) seed with its multiplier, derived once per key rather than per hash.
+/// One [`lk_hash`](crate::scramble::lk_hash) seed with its multiplier, derived once per key
+/// rather than per hash.
 #[derive(Clone, Copy, Debug)]
 struct Key {
     seed: u32,
