@@ -151,7 +151,7 @@ const REVERSED_BYTE: [u8; 256] = {
 
 /// The low 16 bits of `m` reversed: the row of [`PMJ02_REVERSED`] that holds point `m`, and
 /// back. Two byte-table reads: x86-64 has no bit-reversal instruction, and the dozen shifts and
-/// masks of `reverse_bits` cost more (`peers` row "PMJ(0,2) Owen-scrambled", docs/design.md).
+/// masks of `reverse_bits` cost more on the scrambled reads' critical path (docs/design.md).
 #[inline]
 pub(crate) const fn reverse16(m: u32) -> usize {
     ((REVERSED_BYTE[(m & 0xff) as usize] as usize) << 8)
@@ -319,8 +319,8 @@ impl Pmj02 {
     }
 
     /// The points at many indices at once: `out[k] = sample_2d(indices[k])`, the same values.
-    /// Scrambled, four coordinates (two points) hash at a time on vector lanes, about twice the
-    /// throughput of per-point calls on x86-64 (`peers` row "PMJ(0,2) Owen-scrambled").
+    /// Scrambled, four coordinates (two points) hash at a time on vector lanes: 1.63× the
+    /// throughput of per-point calls on x86-64 (criterion, `pmj02` bench, docs/performance.md).
     ///
     /// # Errors
     /// [`Error::BufferLength`] unless `out` is as long as `indices`.
