@@ -510,6 +510,26 @@ mod tests {
         assert_eq!(Scramble::from_name("Owen"), None);
     }
 
+    /// The four-lane scramble is the scalar hash and the table conversion on every lane, and
+    /// the arithmetic conversion equals the table one.
+    #[test]
+    fn four_lane_scramble_is_the_scalar_one_per_lane() {
+        for (n, w) in (0..4096u32).map(|i| mix32(i ^ 0x3c3c)).enumerate() {
+            let x = [w, !w, w.rotate_left(13), mix32(w)];
+            let seeds = [mix32(n as u32), 0, u32::MAX, 0x0001_0000];
+            let got = scramble_rev_f32x4(x, seeds);
+            for k in 0..4 {
+                let want = reversed_to_f32(lk_hash(x[k], seeds[k]));
+                assert_eq!(got[k].to_bits(), want.to_bits(), "w {w:#x} lane {k}");
+            }
+            assert_eq!(
+                rev_to_f32(w).to_bits(),
+                reversed_to_f32(w).to_bits(),
+                "w {w:#x}"
+            );
+        }
+    }
+
     /// On x86-64 the SSE2 kernel equals the portable lane code bit for bit: words and seeds
     /// over edge values and hashed ones, every lane different.
     #[cfg(target_arch = "x86_64")]

@@ -65,12 +65,8 @@ pub fn shuffle<T, R: Rng + ?Sized>(
             let j = (uniform_below(rng, i as u32 + 1) as usize).min(i);
             buf.swap(i, j);
         }
-    } else if dims == 1 {
-        for i in (1..count).rev() {
-            let j = below(rng, i + 1);
-            buf.swap(i, j);
-        }
     } else {
+        // Blocks of any size, and single values past 2³² of them: the same draws.
         for i in (1..count).rev() {
             let j = below(rng, i + 1);
             if j != i {
