@@ -251,6 +251,28 @@ pub(crate) fn reversed_to_f32(w_rev: u32) -> f32 {
     (REVERSED_F32[0][b0 as usize] + REVERSED_F32[1][b1 as usize]) + REVERSED_F32[2][b2 as usize]
 }
 
+/// The bytes `0..256`, each with its 8 bits reversed.
+const REVERSED_BYTE: [u8; 256] = {
+    let mut t = [0; 256];
+    let mut b = 0;
+    while b < 256 {
+        t[b] = (b as u8).reverse_bits();
+        b += 1;
+    }
+    t
+};
+
+/// The low 16 bits of `m` reversed (bit 0 to bit 15; the bits above are ignored): a 16-bit
+/// index as the reversed word the fast Owen scrambles and shuffles read (shifted up by 16), and
+/// the row of the PMJ(0,2) reversed table that holds a point. Two byte-table reads: x86-64 has
+/// no bit-reversal instruction, and the dozen shifts and masks of `reverse_bits` cost more on
+/// the scrambled reads' critical path (docs/design.md).
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) const fn reverse16(m: u32) -> u32 {
+    ((REVERSED_BYTE[(m & 0xff) as usize] as u32) << 8)
+        | REVERSED_BYTE[((m >> 8) & 0xff) as usize] as u32
+}
+
 /// The top 24 bits of a reversed, scrambled word, as an `f32` in `[0, 1)`.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn rev_to_f32(w_rev: u32) -> f32 {
@@ -508,6 +530,14 @@ mod tests {
         }
         assert_eq!(Scramble::from_name(""), None);
         assert_eq!(Scramble::from_name("Owen"), None);
+    }
+
+    /// The byte-table reversal is the 32-bit one's top half, whatever the bits above 16.
+    #[test]
+    fn reverse16_is_the_top_half_of_the_32_bit_reversal() {
+        for m in (0..1u32 << 16).flat_map(|m| [m, m | 0xffff_0000, m | mix32(m) << 16]) {
+            assert_eq!(reverse16(m), m.reverse_bits() >> 16, "m {m:#x}");
+        }
     }
 
     /// The four-lane scramble is the scalar hash and the table conversion on every lane, and

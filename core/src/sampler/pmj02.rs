@@ -3,9 +3,9 @@
 use super::{Sampler, pixel_hash};
 use crate::Error;
 use crate::hash::mix64;
-use crate::scramble::{lk_hash_by, lk_multiplier, reversed_to_f32};
+use crate::scramble::{lk_hash_by, lk_multiplier, reverse16, reversed_to_f32};
 use crate::sequence::PMJ02_MAX_POINTS;
-use crate::sequence::pmj02::{PMJ02_REVERSED, reverse16};
+use crate::sequence::pmj02::PMJ02_REVERSED;
 
 /// Odd constant separating requests in the per-request hash.
 const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
@@ -86,7 +86,7 @@ impl Keys {
     /// coordinate's would; two byte-table reads take the place of a read of the 512 KiB table.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value(&self, index_rev: u32) -> f32 {
-        reversed_to_f32(self.x.hash(reverse16(self.row(index_rev) as u32) as u32))
+        reversed_to_f32(self.x.hash(reverse16(self.row(index_rev) as u32)))
     }
 }
 
@@ -225,7 +225,7 @@ impl Sampler for Pmj02Sampler {
             self.pixel_key = pixel_hash(pixel, self.seed, PIXEL_TAG);
             self.camera = camera_keys(self.pixel_key);
         }
-        self.index_rev = (reverse16(sample_index) as u32) << 16;
+        self.index_rev = reverse16(sample_index) << 16;
         self.dim = dim;
     }
 

@@ -25,7 +25,7 @@ use super::{Sequence, check_fill};
 use crate::Error;
 use crate::hash::{hash2, mix32};
 use crate::lazy_table::{baked_table, const_unless_lazy};
-use crate::scramble::{lk_hash, rev_to_f32, reversed_to_f32, scramble_rev_f32x4};
+use crate::scramble::{lk_hash, rev_to_f32, reverse16, reversed_to_f32, scramble_rev_f32x4};
 
 /// Dimensions with all four reversed byte tables: any index is four table reads.
 const REV_DIMS: usize = 64;
@@ -338,35 +338,17 @@ impl IndexShuffle {
     /// there, is left unfixed): what the upper-half tables read.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn rev_low_upper(&self, index: u32) -> u32 {
-        let [b0, b1, _, _] = index.to_le_bytes();
-        lk_hash(REV16[0][b0 as usize] | REV16[1][b1 as usize], self.seed)
+        lk_hash(reverse16(index) << 16, self.seed)
     }
 
-    /// [`IndexShuffle::rev`], reversing indices below 2¹⁶ by two table reads.
+    /// [`IndexShuffle::rev`], reversing indices below 2¹⁶ by two table reads ([`reverse16`]).
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn rev_fast(&self, index: u32) -> u32 {
         if index < LOW_BLOCK {
-            let [b0, b1, _, _] = index.to_le_bytes();
-            lk_hash(REV16[0][b0 as usize] | REV16[1][b1 as usize], self.seed) ^ self.fix
+            lk_hash(reverse16(index) << 16, self.seed) ^ self.fix
         } else {
             self.rev(index)
         }
-    }
-}
-
-baked_table! {
-    /// `REV16[j][b]`: byte `j` of a 16-bit index, bit-reversed into a 32-bit word
-    /// (`reverse8(b) << (24 − 8j)`). Baked ([`baked_table!`]); 2 KiB.
-    static REV16: [[u32; 256]; 2] = [[0; 256]; 2], fill_rev16,
-        rev16_at_first_use_equals_the_baked_table;
-}
-
-const fn fill_rev16(t: &mut [[u32; 256]; 2]) {
-    let mut b = 0;
-    while b < 256 {
-        t[0][b] = ((b as u8).reverse_bits() as u32) << 24;
-        t[1][b] = ((b as u8).reverse_bits() as u32) << 16;
-        b += 1;
     }
 }
 

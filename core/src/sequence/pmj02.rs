@@ -19,7 +19,7 @@ use super::Sequence;
 use crate::Error;
 use crate::hash::{hash2, wyrand};
 use crate::math::fraction_to_f32 as to_f32;
-use crate::scramble::{lk_hash, reversed_to_f32, scramble_rev_f32x4};
+use crate::scramble::{lk_hash, reverse16, reversed_to_f32, scramble_rev_f32x4};
 
 /// The most points the construction makes: the published XOR constants cover 16 levels.
 ///
@@ -138,26 +138,6 @@ crate::lazy_table::baked_table! {
         fill_table, pmj02_points_at_first_use_equal_the_stored_table, stored PMJ02_TABLE;
 }
 
-/// The bytes `0..256`, each with its 8 bits reversed.
-const REVERSED_BYTE: [u8; 256] = {
-    let mut t = [0; 256];
-    let mut b = 0;
-    while b < 256 {
-        t[b] = (b as u8).reverse_bits();
-        b += 1;
-    }
-    t
-};
-
-/// The low 16 bits of `m` reversed: the row of [`PMJ02_REVERSED`] that holds point `m`, and
-/// back. Two byte-table reads: x86-64 has no bit-reversal instruction, and the dozen shifts and
-/// masks of `reverse_bits` cost more on the scrambled reads' critical path (docs/design.md).
-#[inline]
-pub(crate) const fn reverse16(m: u32) -> usize {
-    ((REVERSED_BYTE[(m & 0xff) as usize] as usize) << 8)
-        | REVERSED_BYTE[((m >> 8) & 0xff) as usize] as usize
-}
-
 /// [`PMJ02_TABLE`] for the Owen-scrambled reads: point `reverse16(m)` in row `m`, each coordinate
 /// bit-reversed. The fast Owen scramble works on bit-reversed words and the camera samples'
 /// nested index shuffle ends in a reversed row index; with this table neither needs a bit
@@ -167,7 +147,7 @@ const fn fill_reversed(t: &mut [[u32; 2]; PMJ02_MAX_POINTS]) {
     let mut m = 0;
     while m < PMJ02_MAX_POINTS {
         // The row order is an involution: swap each pair once.
-        let r = reverse16(m as u32);
+        let r = reverse16(m as u32) as usize;
         if m <= r {
             let (a0, a1, b0, b1) = (t[m][0], t[m][1], t[r][0], t[r][1]);
             t[m][0] = b0.reverse_bits();
@@ -273,7 +253,9 @@ impl Pmj02 {
         let d = (dim & 1) as usize;
         match self.keys {
             None => PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d],
-            Some(keys) => lk_hash(PMJ02_REVERSED[reverse16(index)][d], keys[d]).reverse_bits(),
+            Some(keys) => {
+                lk_hash(PMJ02_REVERSED[reverse16(index) as usize][d], keys[d]).reverse_bits()
+            }
         }
     }
 
@@ -288,7 +270,7 @@ impl Pmj02 {
         match self.keys {
             None => PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)],
             Some([kx, ky]) => {
-                let [x, y] = PMJ02_REVERSED[reverse16(index)];
+                let [x, y] = PMJ02_REVERSED[reverse16(index) as usize];
                 [lk_hash(x, kx).reverse_bits(), lk_hash(y, ky).reverse_bits()]
             }
         }
@@ -309,7 +291,7 @@ impl Pmj02 {
                 [to_f32(x), to_f32(y)]
             }
             Some([kx, ky]) => {
-                let [x, y] = PMJ02_REVERSED[reverse16(index)];
+                let [x, y] = PMJ02_REVERSED[reverse16(index) as usize];
                 [
                     reversed_to_f32(lk_hash(x, kx)),
                     reversed_to_f32(lk_hash(y, ky)),
@@ -352,10 +334,10 @@ impl Pmj02 {
         let mut ins = indices.chunks_exact(4);
         for (o, i) in (&mut outs).zip(&mut ins) {
             // Four table reads first, so that their latencies overlap.
-            let [x0, y0] = PMJ02_REVERSED[reverse16(i[0])];
-            let [x1, y1] = PMJ02_REVERSED[reverse16(i[1])];
-            let [x2, y2] = PMJ02_REVERSED[reverse16(i[2])];
-            let [x3, y3] = PMJ02_REVERSED[reverse16(i[3])];
+            let [x0, y0] = PMJ02_REVERSED[reverse16(i[0]) as usize];
+            let [x1, y1] = PMJ02_REVERSED[reverse16(i[1]) as usize];
+            let [x2, y2] = PMJ02_REVERSED[reverse16(i[2]) as usize];
+            let [x3, y3] = PMJ02_REVERSED[reverse16(i[3]) as usize];
             let [a0, b0, a1, b1] = scramble_rev_f32x4([x0, y0, x1, y1], seeds);
             let [a2, b2, a3, b3] = scramble_rev_f32x4([x2, y2, x3, y3], seeds);
             o.copy_from_slice(&[[a0, b0], [a1, b1], [a2, b2], [a3, b3]]);
@@ -381,9 +363,10 @@ impl Sequence for Pmj02 {
         let d = (dim & 1) as usize;
         match self.keys {
             None => to_f32(PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d]),
-            Some(keys) => {
-                reversed_to_f32(lk_hash(PMJ02_REVERSED[reverse16(index as u32)][d], keys[d]))
-            }
+            Some(keys) => reversed_to_f32(lk_hash(
+                PMJ02_REVERSED[reverse16(index as u32) as usize][d],
+                keys[d],
+            )),
         }
     }
 
@@ -558,7 +541,7 @@ mod tests {
     fn pmj02_reversed_table_is_the_plain_table_reordered_and_reversed() {
         use crate::scramble::{fast_owen_keyed, fast_owen_keyed_f32};
         for m in 0..PMJ02_MAX_POINTS {
-            let [x, y] = PMJ02_TABLE[reverse16(m as u32)];
+            let [x, y] = PMJ02_TABLE[reverse16(m as u32) as usize];
             assert_eq!(
                 PMJ02_REVERSED[m],
                 [x.reverse_bits(), y.reverse_bits()],
@@ -567,10 +550,6 @@ mod tests {
         }
         assert_eq!(reverse16(1), 0x8000);
         assert_eq!(reverse16(0x1_0003), 0xc000);
-        // The byte-table reversal is the 32-bit one's top half, whatever the bits above 16.
-        for m in (0..1u32 << 16).flat_map(|m| [m, m | 0xffff_0000, m | mix32(m) << 16]) {
-            assert_eq!(reverse16(m), (m.reverse_bits() >> 16) as usize, "m {m:#x}");
-        }
         for seed in SEEDS {
             let s = Pmj02::scrambled(seed);
             let [kx, ky] = s.keys.unwrap();
