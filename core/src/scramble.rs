@@ -307,7 +307,7 @@ pub(crate) fn scramble_rev_f32x4_lanes(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4]
         x[k] = x[k].wrapping_add(seeds[k]);
     }
     for k in 0..4 {
-        x[k] = x[k].wrapping_mul((seeds[k] >> 16) | 1);
+        x[k] = x[k].wrapping_mul(lk_multiplier(seeds[k]));
     }
     for k in 0..4 {
         x[k] ^= x[k].wrapping_mul(0x0552_6c56);
