@@ -223,32 +223,97 @@ const CLASSES: usize = 9;
 
 /// What the fast path reads for one base and one index class `c`. The class's indices have at
 /// most `n` digits (the base-`b` digits of `2^(4c) − 1`, capped at `k`, rounded up to whole
-/// table chunks where that stays within `k`); `y = a·magic`, `magic = ⌈2⁶⁴/bⁿ⌉`, is the
-/// fixed-point fraction `a/bⁿ`. With a digit-reversal table of chunk `c = b^j`, the digits are
-/// read as `m = ⌈n/j⌉` whole chunks, the most significant one short by `pad = m·j − n` leading
-/// zeros: the first step multiplies `y` by `first = b^(j − pad)` and the rest by `c`, each
-/// step's chunk looked up in the table. The reversed chunks sum to `R' = R·b^pad`, exactly (`R`
-/// the reversal of the `n` digits), and the value is `R'·inv`, `inv = 1/b^(n + pad) = c^−m`
-/// correctly rounded. Without a table (`j = 1`), `m = n` single digits, `first = b`, `pad = 0`.
+/// table chunks where that stays within `k`); `y = a·⌈2⁶⁴/bⁿ⌉` is the fixed-point fraction
+/// `a/bⁿ`. With a digit-reversal table of chunk `c = b^j`, the digits are read as `m = ⌈n/j⌉`
+/// whole chunks, the most significant one short by `pad = m·j − n` leading zeros: the first
+/// step multiplies `y` by `first = b^(j − pad)` and the rest by `c`, each step's chunk looked up
+/// in the table. The reversed chunks sum to `R' = R·b^pad`, exactly (`R` the reversal of the `n`
+/// digits), and the value is `R'·inv`, `inv = 1/b^(n + pad) = c^−m` correctly rounded. Without a
+/// table (`j = 1`), `m = n` single digits, `first = b`, `pad = 0`.
+///
+/// The first two multiplies are one: `a·⌈2⁶⁴/bⁿ⌉ < 2⁶⁴` (`a < bⁿ` and `b²ⁿ < 2⁶⁴`), so
+/// `y·first = a·lead` as 128-bit products, `lead = ⌈2⁶⁴/bⁿ⌉·first`, which fits 64 bits when
+/// there are two steps or more (`first ≤ bⁿ/c`). With one step the chunk is `a` itself.
 #[derive(Clone, Copy)]
 #[cfg_attr(test, derive(PartialEq))]
 struct ClassConsts {
-    magic: u64,
+    /// `⌈2⁶⁴/bⁿ⌉·first` (0 with fewer than two steps).
+    lead: u64,
     inv: f64,
     /// `b^(j − pad) ≤ max(c, b)`.
     first: u16,
     n: u8,
     /// `m`: the steps, table chunks or single digits.
     steps: u8,
+    /// The arm of [`radical_inverse`]'s dispatch that computes this base's values for this
+    /// class ([`Arm`]).
+    arm: u8,
 }
 
 const NO_CLASS: ClassConsts = ClassConsts {
-    magic: 0,
+    lead: 0,
     inv: 1.0,
     first: 0,
     n: 0,
     steps: 0,
+    arm: Arm::General as u8,
 };
+
+/// How [`radical_inverse`] computes the values of one base and one index class: one byte per
+/// class record, so a value costs one predictable indirect jump instead of a test of the base,
+/// of the fast path's limit and of the step count (their pattern follows the dimensions, which a
+/// caller walks in the same order for every index).
+#[derive(Clone, Copy)]
+#[repr(u8)]
+enum Arm {
+    /// Base 2: the bit reversal ([`phi2`]).
+    Base2,
+    /// The class reaches past the base's fast-path limit `b^k`: compare the index with it, then
+    /// the fast path or the exact fraction.
+    Limit,
+    /// No digit-reversal table, 1 ..= 4 single digits (straight-line).
+    Digits1,
+    Digits2,
+    Digits3,
+    Digits4,
+    /// A digit-reversal table, 1 ..= 3 chunks (straight-line).
+    Chunks1,
+    Chunks2,
+    Chunks3,
+    /// Any other step count: [`phi_any_steps`]' loops.
+    General,
+}
+
+/// The [`Arm`] of base `i` (with digit-reversal chunks of `j` digits and fast-path limit
+/// `big`) for index class `c`, whose records take `steps` steps.
+const fn arm_of(i: usize, j: u32, big: u64, c: usize, steps: u8) -> Arm {
+    // The largest index of class `c` (the last class takes every longer index too).
+    let reach = if c + 1 < CLASSES {
+        (1u64 << (4 * c)) - 1
+    } else {
+        u64::MAX
+    };
+    if i == 0 {
+        Arm::Base2
+    } else if reach >= big {
+        Arm::Limit
+    } else if j == 1 {
+        match steps {
+            1 => Arm::Digits1,
+            2 => Arm::Digits2,
+            3 => Arm::Digits3,
+            4 => Arm::Digits4,
+            _ => Arm::General,
+        }
+    } else {
+        match steps {
+            1 => Arm::Chunks1,
+            2 => Arm::Chunks2,
+            3 => Arm::Chunks3,
+            _ => Arm::General,
+        }
+    }
+}
 
 /// Everything the `f32` fast path of one base reads: a header and one 24-byte record per index
 /// class, so a lookup touches the header's cache line and its class's (plus the base's
@@ -269,8 +334,10 @@ struct FastBase {
     chunk: u32,
     /// Offset of this base's table in [`CHUNK_REV`].
     table: u32,
-    /// `chunk` as an `f64`: a step's weight factor.
-    chunk_f: f64,
+    /// `c²` and `c³` (0 where `c³ ≥ 2³²`; only bases below 256, whose indices take up to four
+    /// single digits, read it): the weights of the third and fourth steps' reversals.
+    chunk2: u32,
+    chunk3: u32,
     class: [ClassConsts; CLASSES],
 }
 
@@ -365,13 +432,15 @@ const NO_FAST_BASE: FastBase = FastBase {
     big: 0,
     chunk: 0,
     table: 0,
-    chunk_f: 0.0,
+    chunk2: 0,
+    chunk3: 0,
     class: [ClassConsts {
-        magic: 0,
+        lead: 0,
         inv: 0.0,
         first: 0,
         n: 0,
         steps: 0,
+        arm: 0,
     }; CLASSES],
 };
 
@@ -388,11 +457,20 @@ const fn build_fast(out: &mut [FastBase; 1024]) {
             big: info.big as u32,
             chunk: info.b.pow(j) as u32,
             table,
-            chunk_f: info.b.pow(j) as f64,
+            chunk2: info.b.pow(2 * j) as u32,
+            chunk3: if info.b.pow(3 * j) >> 32 == 0 {
+                info.b.pow(3 * j) as u32
+            } else {
+                0
+            },
             class: [NO_CLASS; CLASSES],
         };
         if j > 1 {
             table += info.b.pow(j) as u32;
+        }
+        if i == 0 {
+            // Class 0 (index 0) of the other bases stays `General`: zero steps, zero.
+            f.class[0].arm = Arm::Base2 as u8;
         }
         let mut c = 1;
         while c < CLASSES {
@@ -406,11 +484,16 @@ const fn build_fast(out: &mut [FastBase; 1024]) {
             let steps = if j > 1 { n.div_ceil(j as u8) } else { n };
             let pad = steps as u32 * j - n as u32;
             f.class[c] = ClassConsts {
-                magic: u64::MAX / info.b.pow(n as u32) + 1,
+                lead: if steps >= 2 {
+                    (u64::MAX / info.b.pow(n as u32) + 1) * info.b.pow(j - pad)
+                } else {
+                    0
+                },
                 first: info.b.pow(j - pad) as u16,
                 inv: 1.0 / info.b.pow(n as u32 + pad) as f64,
                 n,
                 steps,
+                arm: arm_of(i, j, info.big, c, steps) as u8,
             };
             c += 1;
         }
@@ -638,7 +721,7 @@ pub(crate) const fn fast_class(d: usize, c: usize) -> (u32, u64) {
     }
     // The reversal spans whole chunks of `j` digits. `build_fast` rounds the digit count up to
     // them where that stays within `k` and pads the first chunk otherwise (it needs the split for
-    // its `magic` and `first`), but either way the digits spanned, `n + pad`, are the count
+    // its `lead` and `first`), but either way the digits spanned, `n + pad`, are the count
     // rounded up to a multiple of `j` (with `j = 1`, the count itself), and only that sum and its
     // reciprocal are needed here.
     let spanned = n.div_ceil(j) * j;
@@ -682,9 +765,84 @@ pub(crate) const fn fast_limit(d: usize) -> u64 {
 /// assert_eq!(radical_inverse(1, 5), 7.0 / 9.0); // 5 = 12₃ → 0.21₃
 /// assert!(radical_inverse(1023, u64::MAX) < 1.0);
 /// ```
-#[inline]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
 pub fn radical_inverse(dim: u32, a: u64) -> f32 {
-    radical_inverse_inlined(dim, a)
+    let d = (dim % PRIME_COUNT) as usize;
+    phi_class(&FAST[d], index_class(a), a, d)
+}
+
+/// With the `small-code` feature the fast path runs its steps as one loop per kind of base
+/// ([`phi_any_steps`]) instead of a straight-line copy per step count ([`phi_steps`]): the
+/// same values from less code.
+const STEPS_AS_LOOPS: bool = cfg!(feature = "small-code");
+
+/// The fast path of one base and class in exactly `N` steps (`1 ..= 4`, the class's `steps`):
+/// the multiplies hand out the digits (single digits, or with `TABLE` chunks looked up in the
+/// base's digit-reversal table), most significant first, and their reversals are summed with
+/// their weights, `R' = r₀ + r₁·c + r₂·c² + r₃·c³` (`R' < 2⁴⁴`), exactly in integers: the
+/// same `R'`, so the same bits, as any other grouping.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn phi_steps<const N: usize, const TABLE: bool>(f: &FastBase, k: &ClassConsts, a: u64) -> f32 {
+    let c = u64::from(f.chunk);
+    let table = f.table as usize;
+    let reverse = |e: u64| {
+        if TABLE {
+            u64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)])
+        } else {
+            e
+        }
+    };
+    if N == 1 {
+        // One step: the chunk is the index itself.
+        return narrow(reverse(a) as i64 as f64, k.inv);
+    }
+    let mut r = [0u64; N];
+    let t = u128::from(a) * u128::from(k.lead);
+    r[0] = reverse((t >> 64) as u64);
+    let mut y = t as u64;
+    for x in r.iter_mut().skip(1) {
+        let t = u128::from(y) * u128::from(c);
+        *x = reverse((t >> 64) as u64);
+        y = t as u64;
+    }
+    // Digits4 arms are bases below 256 (b⁴ < 2³²), whose `chunk3` is b³.
+    let weight = [1, c, u64::from(f.chunk2), u64::from(f.chunk3)];
+    let mut rev = r[0];
+    for i in 1..N {
+        rev += r[i] * weight[i];
+    }
+    narrow(rev as i64 as f64, k.inv)
+}
+
+/// The fast path of one base and class in any number of steps (the class's `steps`, 0 for the
+/// index 0): [`phi_steps`] as a loop.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn phi_any_steps<const TABLE: bool>(f: &FastBase, k: &ClassConsts, a: u64) -> f32 {
+    let c = u64::from(f.chunk);
+    let table = f.table as usize;
+    let reverse = |e: u64| {
+        if TABLE {
+            u64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)])
+        } else {
+            e
+        }
+    };
+    let rev = match k.steps {
+        0 => 0,
+        1 => reverse(a),
+        steps => {
+            let t = u128::from(a) * u128::from(k.lead);
+            let (mut rev, mut y, mut weight) = (reverse((t >> 64) as u64), t as u64, c);
+            for _ in 1..steps {
+                let t = u128::from(y) * u128::from(c);
+                rev += reverse((t >> 64) as u64) * weight;
+                weight = weight.wrapping_mul(c);
+                y = t as u64;
+            }
+            rev
+        }
+    };
+    narrow(rev as i64 as f64, k.inv)
 }
 
 /// [`radical_inverse`], always inlined: with `dim` a constant the base's table reads fold away
@@ -750,7 +908,7 @@ pub fn radical_inverse_at(dim: u32, indices: &[u64], out: &mut [f32]) -> Result<
                 }
             } else {
                 for (x, &a) in xs.iter_mut().zip(idx) {
-                    *x = radical_inverse(0, a);
+                    *x = phi2(a);
                 }
             }
         }
@@ -790,7 +948,7 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
         if a < u64::from(fast.big) {
             phi_fast_class(fast, class, a)
         } else {
-            radical_inverse(d as u32, a)
+            radical_inverse_inlined(d as u32, a)
         }
     };
     let first = (dim % PRIME_COUNT) as usize;
@@ -827,11 +985,7 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     }
     let mut d = first;
     for x in out {
-        *x = if d != 0 {
-            value(&FAST[d], d)
-        } else {
-            radical_inverse(0, a)
-        };
+        *x = if d != 0 { value(&FAST[d], d) } else { phi2(a) };
         d += 1;
         if d == PRIME_COUNT as usize {
             d = 0;
@@ -844,81 +998,88 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn table_lane<const C: usize>(bases: &[FastBase], a: u64, out: &mut [f32]) {
     for (x, fast) in out.iter_mut().zip(bases) {
-        *x = phi_table_class(fast, C, a);
+        *x = phi_chunks(fast, &fast.class[C], a);
     }
 }
 
 /// Φ_b(a) for `a < b^k` (so `a < 2³²`): the reversed digits `R' = Σ_s T[e_s]·c^s` (`e_s` the
-/// index's chunks, most significant first, `T` the digit-reversal table) summed exactly in
-/// `f64`, then [`narrow`]ed by the class's `inv` (see [`ClassConsts`]).
+/// index's chunks, most significant first, `T` the digit-reversal table, or single digits)
+/// summed exactly, then [`narrow`]ed by the class's `inv` (see [`ClassConsts`]).
 ///
-/// One 64×64→128 multiply per chunk hands it out (see the module docs); the sum runs in
-/// floating point beside the integer multiplier, and its only loop-carried chain is one add.
-/// The step count comes from the index's length in nibbles ([`FastBase`]), so the loop exit
-/// is predictable.
+/// One 64×64→128 multiply per chunk hands it out (see the module docs). The step count comes
+/// from the index's length in nibbles ([`FastBase`]), so its branch is predictable. Tests the
+/// base's kind first, then the steps: for a constant dimension (a sampler's camera dimensions)
+/// or one base over a batch the first test folds or is hoisted, and the code stays one kind's.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_fast(f: &FastBase, a: u64) -> f32 {
-    phi_fast_class(f, index_class(a), a)
+    let k = &f.class[index_class(a)];
+    if f.chunk != f.b {
+        return phi_chunks(f, k, a);
+    }
+    if STEPS_AS_LOOPS {
+        return phi_any_steps::<false>(f, k, a);
+    }
+    match k.steps {
+        2 => phi_steps::<2, false>(f, k, a),
+        3 => phi_steps::<3, false>(f, k, a),
+        4 => phi_steps::<4, false>(f, k, a),
+        _ => phi_any_steps::<false>(f, k, a),
+    }
+}
+
+/// [`phi_fast`] for a base with a digit-reversal table.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn phi_chunks(f: &FastBase, k: &ClassConsts, a: u64) -> f32 {
+    if STEPS_AS_LOOPS {
+        return phi_any_steps::<true>(f, k, a);
+    }
+    match k.steps {
+        2 => phi_steps::<2, true>(f, k, a),
+        3 => phi_steps::<3, true>(f, k, a),
+        _ => phi_any_steps::<true>(f, k, a),
+    }
 }
 
 /// [`phi_fast`] with `a`'s [`index_class`] already known.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
-    if f.chunk == f.b {
-        // No table: one digit per step, each its own reversal.
-        let class = &f.class[class];
-        let (c, bf) = (u64::from(f.b), f64::from(f.b));
-        let (mut y, mut rev, mut weight) = (a.wrapping_mul(class.magic), 0.0f64, 1.0f64);
-        for _ in 0..class.steps {
-            let t = u128::from(y) * u128::from(c);
-            rev += (t >> 64) as i64 as f64 * weight;
-            weight *= bf;
-            y = t as u64;
-        }
-        return narrow(rev, class.inv);
-    }
-    phi_table_class(f, class, a)
+    // `a < big`: the limit arm's comparison falls through to its fast path.
+    phi_class(f, class, a, 0)
 }
 
-/// [`phi_fast_class`] for a base with a digit-reversal table (`chunk > b`).
+/// Φ of base `f` (dimension `d`) at `a`, of [`index_class`] `class`, by the class record's arm
+/// ([`Arm`]): one jump, whose target follows the dimension when a caller asks one index for a
+/// run of dimensions, so it predicts well; each arm's steps run straight-line.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-fn phi_table_class(f: &FastBase, class: usize, a: u64) -> f32 {
-    let class = &f.class[class];
-    let y = a.wrapping_mul(class.magic);
-    let c = u64::from(f.chunk);
-    // The first chunk, padded with leading zeros (class 0, `first = 0`, reads entry 0: zero).
-    let table = f.table as usize;
-    let lookup = |e: u64| f64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)]);
-    let t = u128::from(y) * u128::from(class.first);
-    let r0 = lookup((t >> 64) as u64);
-    let y = t as u64;
-    let cf = f.chunk_f;
-    // Every partial sum is an integer below 2⁴⁴, exact in `f64`, so any grouping gives the
-    // same R': the common step counts run straight-line (Horner from the second chunk).
-    let step = |y: u64| {
-        let t = u128::from(y) * u128::from(c);
-        (lookup((t >> 64) as u64), t as u64)
-    };
-    let rev = match class.steps {
-        0 | 1 => r0,
-        2 => r0 + step(y).0 * cf,
-        3 => {
-            let (r1, y) = step(y);
-            let (r2, _) = step(y);
-            r0 + (r1 + r2 * cf) * cf
-        }
-        _ => {
-            let (mut rev, mut y, mut weight) = (r0, y, cf);
-            for _ in 1..class.steps {
-                let (r, next) = step(y);
-                rev += r * weight;
-                weight *= cf;
-                y = next;
+fn phi_class(f: &FastBase, class: usize, a: u64, d: usize) -> f32 {
+    let k = &f.class[class];
+    if STEPS_AS_LOOPS {
+        return match k.arm {
+            x if x == Arm::Base2 as u8 => phi2(a),
+            x if x == Arm::Limit as u8 && a >= u64::from(f.big) => {
+                let (num, den) = phi_fraction(d, a);
+                fraction_f32(num, den, 0, false)
             }
-            rev
+            _ if f.chunk == f.b => phi_any_steps::<false>(f, k, a),
+            _ => phi_any_steps::<true>(f, k, a),
+        };
+    }
+    match k.arm {
+        x if x == Arm::Base2 as u8 => phi2(a),
+        x if x == Arm::Digits1 as u8 => phi_steps::<1, false>(f, k, a),
+        x if x == Arm::Digits2 as u8 => phi_steps::<2, false>(f, k, a),
+        x if x == Arm::Digits3 as u8 => phi_steps::<3, false>(f, k, a),
+        x if x == Arm::Digits4 as u8 => phi_steps::<4, false>(f, k, a),
+        x if x == Arm::Chunks1 as u8 => phi_steps::<1, true>(f, k, a),
+        x if x == Arm::Chunks2 as u8 => phi_steps::<2, true>(f, k, a),
+        x if x == Arm::Chunks3 as u8 => phi_steps::<3, true>(f, k, a),
+        x if x == Arm::Limit as u8 && a >= u64::from(f.big) => {
+            let (num, den) = phi_fraction(d, a);
+            fraction_f32(num, den, 0, false)
         }
-    };
-    narrow(rev, class.inv)
+        _ if f.chunk == f.b => phi_any_steps::<false>(f, k, a),
+        _ => phi_any_steps::<true>(f, k, a),
+    }
 }
 
 /// Writes Φ_b(first), Φ_b(first + 1), … (`b = prime(dim)`) into `out[offset], out[offset + stride], …`, bit for
@@ -950,7 +1111,7 @@ pub(crate) fn fill_consecutive(
             return;
         }
         for k in slots {
-            out[k] = radical_inverse(0, a);
+            out[k] = phi2(a);
             a = a.wrapping_add(1);
         }
         return;
@@ -960,7 +1121,7 @@ pub(crate) fn fill_consecutive(
     let mut next = slots.next();
     while let Some(mut k) = next {
         if a >= u64::from(f.big) {
-            out[k] = radical_inverse(dim, a);
+            out[k] = radical_inverse_inlined(dim, a);
             a = a.wrapping_add(1);
             next = slots.next();
             continue;

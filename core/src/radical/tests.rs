@@ -50,7 +50,12 @@ fn tables_are_consistent() {
         // The fast path's per-class rows: n digits hold every index of the class below b^k.
         let f = &FAST[d];
         assert_eq!((u64::from(f.b), u64::from(f.big)), (b, info.big));
-        assert_eq!(f.chunk_f, f64::from(f.chunk));
+        let c = u64::from(f.chunk);
+        assert_eq!(u64::from(f.chunk2), c * c);
+        assert_eq!(
+            u64::from(f.chunk3),
+            if c.pow(3) < 1 << 32 { c.pow(3) } else { 0 }
+        );
         // Table chunks: 3⁸ for base 3, the largest b^j ≤ 4096 for 5 ..= 61, b² for 67 ..= 83,
         // none (the base itself) for base 2 and from 89 on.
         let want = match b {
@@ -72,16 +77,15 @@ fn tables_are_consistent() {
             assert!(n <= info.k);
             let largest = ((1u64 << (4 * c)) - 1).min(info.big - 1);
             assert!(largest < b.pow(n), "base {b}, class {c}");
-            assert_eq!(
-                u128::from(class.magic),
-                (1u128 << 64).div_ceil(u128::from(b.pow(n)))
-            );
             // m steps of j digits cover the n digits with fewer than j to spare (pad), the
             // first step taking the j − pad digits left; the value is R·b^pad / b^(n + pad).
             let (j, m) = (j_of(f), u32::from(class.steps));
             let pad = m * j - n;
             assert!(pad < j, "base {b}, class {c}");
             assert_eq!(u64::from(class.first), b.pow(j - pad));
+            // The first two multiplies folded into one (two steps or more).
+            let lead = (1u128 << 64).div_ceil(u128::from(b.pow(n))) * u128::from(class.first);
+            assert_eq!(u128::from(class.lead), if m >= 2 { lead } else { 0 });
             assert_eq!(class.inv, 1.0 / b.pow(n + pad) as f64);
         }
         for (len, &n) in DIGITS[d].iter().enumerate().skip(1) {
@@ -358,6 +362,45 @@ fn multi_chunk_indices_are_continuous_with_single_chunk_ones() {
             );
         }
     }
+}
+
+#[test]
+fn every_arm_equals_the_step_loop_in_every_base_and_class() {
+    // The straight-line arms (weights c², c³ from the header) against the loop (weights by
+    // repeated multiplication), bit for bit, at each class's smallest, largest and three random
+    // indices below the base's limit; and every arm is some class's.
+    let mut r = crate::rng::default_rng(0x5eed_a4a5);
+    let mut seen = [false; Arm::General as usize + 1];
+    for (d, f) in FAST.iter().enumerate() {
+        for (c, k) in f.class.iter().enumerate() {
+            seen[usize::from(k.arm)] = true;
+            let lo = if c == 0 { 0 } else { 1u64 << (4 * c - 4) };
+            let hi = ((1u64 << (4 * c)) - 1).min(u64::from(f.big) - 1);
+            if d == 0 || lo > hi {
+                continue;
+            }
+            let mut indices = [lo, hi, 0, 0, 0];
+            for a in &mut indices[2..] {
+                *a = lo + crate::rng::uniform_below(&mut r, (hi - lo + 1) as u32) as u64;
+            }
+            for a in indices {
+                let want = if f.chunk == f.b {
+                    phi_any_steps::<false>(f, k, a)
+                } else {
+                    phi_any_steps::<true>(f, k, a)
+                };
+                let got = phi_class(f, c, a, d);
+                assert_eq!(
+                    got.to_bits(),
+                    want.to_bits(),
+                    "base {}, class {c}, index {a}",
+                    f.b
+                );
+                assert_eq!(got, radical_inverse(d as u32, a));
+            }
+        }
+    }
+    assert!(seen.iter().all(|&s| s), "an arm no class takes: {seen:?}");
 }
 
 /// Digits per table chunk of a fast-path base (1 without a table).

@@ -4,7 +4,7 @@ use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::radical::{
     PermutedDigitGroups, fast_owen_scrambled_radical_inverse, inverse_radical_inverse,
-    owen_scrambled_radical_inverse, radical_inverse, radical_inverse_dims, radical_inverse_inlined,
+    owen_scrambled_radical_inverse, radical_inverse_dims, radical_inverse_inlined,
     scrambled_radical_inverse,
 };
 use crate::scramble::Scramble;
@@ -191,7 +191,7 @@ impl HaltonSampler {
     #[inline]
     fn value(&self, dim: u32, a: u64) -> f32 {
         match self.scramble {
-            Scramble::None => radical_inverse(dim, a),
+            Scramble::None => radical_inverse_inlined(dim, a),
             Scramble::PermuteDigits => match self.permuted.as_ref().and_then(|t| t.value(dim, a)) {
                 Some(x) => x,
                 None => scrambled_radical_inverse(dim, a, self.seed),
@@ -291,6 +291,7 @@ impl Sampler for HaltonSampler {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::radical::radical_inverse;
     use crate::sampler::tests::{consistent_values, threads_agree};
 
     #[test]

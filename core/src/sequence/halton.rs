@@ -46,7 +46,7 @@ impl Sequence for VanDerCorput {
 
     #[inline]
     fn sample(&self, index: u64, _dim: u32) -> f32 {
-        radical_inverse(0, index)
+        crate::radical::phi2(index)
     }
 
     fn fill(&self, first: u64, dims: u32, out: &mut [f32]) -> Result<u64, Error> {
