@@ -110,16 +110,15 @@ fn pmj02_camera() -> Workload<'static> {
     }
     #[cfg(not(peer_openqmc))]
     peers.push(unbuilt(OQMC_PMJ, "NYQUIST_OPENQMC"));
-    const PMJ02BN: &str = "pbrt-v4 `PMJ02BNSampler`";
+    const PMJ02BN: &str = if cfg!(peer_pbrt_v4_substitute_tables) {
+        "pbrt-v4 `PMJ02BNSampler` (its code on substitute tables: the snapshot lacks its data files)"
+    } else {
+        "pbrt-v4 `PMJ02BNSampler`"
+    };
     #[cfg(peer_pbrt_v4_pmj02bn)]
     peers.push(pbrt_v4_camera(PMJ02BN, 2, || {
         crate::pbrt_v4::Sampler::pmj02bn(SPP, 1)
     }));
-    #[cfg(all(peer_pbrt_v4, not(peer_pbrt_v4_pmj02bn)))]
-    peers.push(Entry::skipped(
-        PMJ02BN,
-        "not built (the snapshot lacks src/pbrt/util/pmj02tables.cpp or bluenoise.cpp)",
-    ));
     #[cfg(not(peer_pbrt_v4))]
     peers.push(unbuilt(PMJ02BN, "NYQUIST_PBRT_V4"));
     Workload {
@@ -168,7 +167,11 @@ fn pmj02_plain_sample_2d() -> Workload<'static> {
         &once(len, |o| fill(&seq, o)),
     )
     .expect("nyquist's own check");
-    const PEER: &str = "pbrt-v4 `GetPMJ02BNSample` (table read)";
+    const PEER: &str = if cfg!(peer_pbrt_v4_substitute_tables) {
+        "pbrt-v4 `GetPMJ02BNSample` (table read; its code on a substitute table)"
+    } else {
+        "pbrt-v4 `GetPMJ02BNSample` (table read)"
+    };
     #[cfg(peer_pbrt_v4_pmj02bn)]
     let peer = {
         use crate::pbrt_v4::pmj02bn_lookup;
@@ -184,11 +187,6 @@ fn pmj02_plain_sample_2d() -> Workload<'static> {
             job(len, move |o| pmj02bn_lookup(black_box(&idx), o)),
         )
     };
-    #[cfg(all(peer_pbrt_v4, not(peer_pbrt_v4_pmj02bn)))]
-    let peer = Entry::skipped(
-        PEER,
-        "not built (the snapshot lacks src/pbrt/util/pmj02tables.cpp or bluenoise.cpp)",
-    );
     #[cfg(not(peer_pbrt_v4))]
     let peer = unbuilt(PEER, "NYQUIST_PBRT_V4");
     Workload {
