@@ -250,6 +250,7 @@ struct ClassConsts {
     arm: u8,
 }
 
+/// Class 0 (the index 0) of every base, base 2's included: no steps, so the loop arm's value 0.
 const NO_CLASS: ClassConsts = ClassConsts {
     lead: 0,
     inv: 1.0,
@@ -285,17 +286,13 @@ enum Arm {
 }
 
 /// The [`Arm`] of base `i` (with digit-reversal chunks of `j` digits and fast-path limit
-/// `big`) for index class `c`, whose records take `steps` steps.
+/// `big`) for index class `c ≥ 1`, whose records take `steps` steps. Class `c` holds indices
+/// below `2^(4c)`, and the last class every longer one too, all past every limit (`big < 2³²`);
+/// so a class reaches the limit exactly when `big < 2^(4c)`.
 const fn arm_of(i: usize, j: u32, big: u64, c: usize, steps: u8) -> Arm {
-    // The largest index of class `c` (the last class takes every longer index too).
-    let reach = if c + 1 < CLASSES {
-        (1u64 << (4 * c)) - 1
-    } else {
-        u64::MAX
-    };
     if i == 0 {
         Arm::Base2
-    } else if reach >= big {
+    } else if big >> (4 * c) == 0 {
         Arm::Limit
     } else if j == 1 {
         match steps {
@@ -467,10 +464,6 @@ const fn build_fast(out: &mut [FastBase; 1024]) {
         };
         if j > 1 {
             table += info.b.pow(j) as u32;
-        }
-        if i == 0 {
-            // Class 0 (index 0) of the other bases stays `General`: zero steps, zero.
-            f.class[0].arm = Arm::Base2 as u8;
         }
         let mut c = 1;
         while c < CLASSES {

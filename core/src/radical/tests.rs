@@ -368,15 +368,37 @@ fn multi_chunk_indices_are_continuous_with_single_chunk_ones() {
 fn every_arm_equals_the_step_loop_in_every_base_and_class() {
     // The straight-line arms (weights c², c³ from the header) against the loop (weights by
     // repeated multiplication), bit for bit, at each class's smallest, largest and three random
-    // indices below the base's limit; and every arm is some class's.
+    // indices below the base's limit; the limit compared exactly in the classes some index of
+    // which reaches it, and there the value at the class's largest indices equal to the typed
+    // path's (which always compares); every arm some class's.
     let mut r = crate::rng::default_rng(0x5eed_a4a5);
     let mut seen = [false; Arm::General as usize + 1];
     for (d, f) in FAST.iter().enumerate() {
         for (c, k) in f.class.iter().enumerate() {
             seen[usize::from(k.arm)] = true;
-            let lo = if c == 0 { 0 } else { 1u64 << (4 * c - 4) };
+            if d == 0 || c == 0 {
+                continue;
+            }
+            let last = c == CLASSES - 1;
+            let top = if last {
+                u64::MAX
+            } else {
+                (1u64 << (4 * c)) - 1
+            };
+            let reaches = top >= u64::from(f.big);
+            assert_eq!(
+                k.arm == Arm::Limit as u8,
+                reaches,
+                "base {}, class {c}",
+                f.b
+            );
+            for a in [top, (1u64 << (4 * c)) - 1] {
+                let want = radical_inverse_inlined(d as u32, a);
+                assert_eq!(phi_class(f, c, a, d).to_bits(), want.to_bits(), "{a}");
+            }
+            let lo = 1u64 << (4 * c - 4);
             let hi = ((1u64 << (4 * c)) - 1).min(u64::from(f.big) - 1);
-            if d == 0 || lo > hi {
+            if lo > hi {
                 continue;
             }
             let mut indices = [lo, hi, 0, 0, 0];
@@ -399,6 +421,8 @@ fn every_arm_equals_the_step_loop_in_every_base_and_class() {
                 assert_eq!(got, radical_inverse(d as u32, a));
             }
         }
+        // Class 0 is the index 0, whose value is 0 in every base.
+        assert_eq!(phi_class(f, 0, 0, d), 0.0);
     }
     assert!(seen.iter().all(|&s| s), "an arm no class takes: {seen:?}");
 }
