@@ -764,10 +764,21 @@ pub fn radical_inverse(dim: u32, a: u64) -> f32 {
     phi_class(&FAST[d], index_class(a), a, d)
 }
 
-/// With the `small-code` feature the fast path runs its steps as one loop per kind of base
-/// ([`phi_any_steps`]) instead of a straight-line copy per step count ([`phi_steps`]): the
-/// same values from less code.
+/// With the `small-code` feature [`phi_steps`] hands every step count to one loop per kind of
+/// base ([`phi_any_steps`]) instead of a straight-line copy per count: the same values from less
+/// code.
 const STEPS_AS_LOOPS: bool = cfg!(feature = "small-code");
+
+/// A chunk `e` of base `f`'s digits, reversed: its entry in the digit-reversal table with
+/// `TABLE`, else `e` itself (a single digit).
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn reversed_chunk<const TABLE: bool>(f: &FastBase, e: u64) -> u64 {
+    if TABLE {
+        u64::from(CHUNK_REV[(f.table as usize + e as usize) & (CHUNK_REV_LEN - 1)])
+    } else {
+        e
+    }
+}
 
 /// The fast path of one base and class in exactly `N` steps (`1 ..= 4`, the class's `steps`):
 /// the multiplies hand out the digits (single digits, or with `TABLE` chunks looked up in the
@@ -776,15 +787,11 @@ const STEPS_AS_LOOPS: bool = cfg!(feature = "small-code");
 /// same `R'`, so the same bits, as any other grouping.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_steps<const N: usize, const TABLE: bool>(f: &FastBase, k: &ClassConsts, a: u64) -> f32 {
+    if STEPS_AS_LOOPS {
+        return phi_any_steps::<TABLE>(f, k, a);
+    }
     let c = u64::from(f.chunk);
-    let table = f.table as usize;
-    let reverse = |e: u64| {
-        if TABLE {
-            u64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)])
-        } else {
-            e
-        }
-    };
+    let reverse = |e: u64| reversed_chunk::<TABLE>(f, e);
     if N == 1 {
         // One step: the chunk is the index itself.
         return narrow(reverse(a) as i64 as f64, k.inv);
@@ -812,14 +819,7 @@ fn phi_steps<const N: usize, const TABLE: bool>(f: &FastBase, k: &ClassConsts, a
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_any_steps<const TABLE: bool>(f: &FastBase, k: &ClassConsts, a: u64) -> f32 {
     let c = u64::from(f.chunk);
-    let table = f.table as usize;
-    let reverse = |e: u64| {
-        if TABLE {
-            u64::from(CHUNK_REV[(table + e as usize) & (CHUNK_REV_LEN - 1)])
-        } else {
-            e
-        }
-    };
+    let reverse = |e: u64| reversed_chunk::<TABLE>(f, e);
     let rev = match k.steps {
         0 => 0,
         1 => reverse(a),
@@ -1009,9 +1009,6 @@ fn phi_fast(f: &FastBase, a: u64) -> f32 {
     if f.chunk != f.b {
         return phi_chunks(f, k, a);
     }
-    if STEPS_AS_LOOPS {
-        return phi_any_steps::<false>(f, k, a);
-    }
     match k.steps {
         2 => phi_steps::<2, false>(f, k, a),
         3 => phi_steps::<3, false>(f, k, a),
@@ -1023,9 +1020,6 @@ fn phi_fast(f: &FastBase, a: u64) -> f32 {
 /// [`phi_fast`] for a base with a digit-reversal table.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_chunks(f: &FastBase, k: &ClassConsts, a: u64) -> f32 {
-    if STEPS_AS_LOOPS {
-        return phi_any_steps::<true>(f, k, a);
-    }
     match k.steps {
         2 => phi_steps::<2, true>(f, k, a),
         3 => phi_steps::<3, true>(f, k, a),
@@ -1046,17 +1040,6 @@ fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn phi_class(f: &FastBase, class: usize, a: u64, d: usize) -> f32 {
     let k = &f.class[class];
-    if STEPS_AS_LOOPS {
-        return match k.arm {
-            x if x == Arm::Base2 as u8 => phi2(a),
-            x if x == Arm::Limit as u8 && a >= u64::from(f.big) => {
-                let (num, den) = phi_fraction(d, a);
-                fraction_f32(num, den, 0, false)
-            }
-            _ if f.chunk == f.b => phi_any_steps::<false>(f, k, a),
-            _ => phi_any_steps::<true>(f, k, a),
-        };
-    }
     match k.arm {
         x if x == Arm::Base2 as u8 => phi2(a),
         x if x == Arm::Digits1 as u8 => phi_steps::<1, false>(f, k, a),
