@@ -936,14 +936,6 @@ pub fn radical_inverse_at(dim: u32, indices: &[u64], out: &mut [f32]) -> Result<
 #[inline]
 pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
     let class = index_class(a);
-    // Φ in dimension `d ≠ 0` (base `fast.b`): its fast path when `a` is below its limit.
-    let value = |fast: &FastBase, d: usize| {
-        if a < u64::from(fast.big) {
-            phi_fast_class(fast, class, a)
-        } else {
-            radical_inverse_inlined(d as u32, a)
-        }
-    };
     let first = (dim % PRIME_COUNT) as usize;
     // The usual run: clear of base 2 and of the wrap, so no per-dimension checks but the
     // index's size.
@@ -963,22 +955,18 @@ pub fn radical_inverse_dims(dim: u32, a: u64, out: &mut [f32]) {
                 7 => table_lane::<7>(bases, a, out),
                 _ => table_lane::<8>(bases, a, out),
             }
-        } else if a < MIN_BIG {
-            // Every base's fast path without the per-value limit check (past the table bases:
-            // 2.85 against 3.29 ns per value over dims 25 … 40, harness).
-            for (x, fast) in out.iter_mut().zip(bases) {
-                *x = phi_fast_class(fast, class, a);
-            }
         } else {
+            // Each base's class record names its arm; only the arms of classes that reach a
+            // base's limit compare the index with it.
             for ((x, fast), d) in out.iter_mut().zip(bases).zip(first..) {
-                *x = value(fast, d);
+                *x = phi_class(fast, class, a, d);
             }
         }
         return;
     }
     let mut d = first;
     for x in out {
-        *x = if d != 0 { value(&FAST[d], d) } else { phi2(a) };
+        *x = phi_class(&FAST[d], class, a, d);
         d += 1;
         if d == PRIME_COUNT as usize {
             d = 0;
@@ -1025,13 +1013,6 @@ fn phi_chunks(f: &FastBase, k: &ClassConsts, a: u64) -> f32 {
         3 => phi_steps::<3, true>(f, k, a),
         _ => phi_any_steps::<true>(f, k, a),
     }
-}
-
-/// [`phi_fast`] with `a`'s [`index_class`] already known.
-#[cfg_attr(not(feature = "small-code"), inline(always))]
-fn phi_fast_class(f: &FastBase, class: usize, a: u64) -> f32 {
-    // `a < big`: the limit arm's comparison falls through to its fast path.
-    phi_class(f, class, a, 0)
 }
 
 /// Φ of base `f` (dimension `d`) at `a`, of [`index_class`] `class`, by the class record's arm
