@@ -17,7 +17,6 @@ fn main() {
     for cfg in [
         "peer_openqmc",
         "peer_pbrt_v4",
-        "peer_pbrt_v4_pmj02bn",
         "peer_pbrt_v4_substitute_tables",
         "peer_pbrt_v3",
     ] {
@@ -109,8 +108,6 @@ fn pbrt_v4(root: &Path, built: &mut Vec<&str>) {
     } else {
         b.files(&tables);
     }
-    b.define("PEER_PBRT_V4_PMJ02BN", None);
-    built.push("peer_pbrt_v4_pmj02bn");
     let dc = src.join("ext/double-conversion");
     if dc.join("double-conversion/double-conversion.h").is_file() {
         b.include(&dc);

@@ -81,8 +81,8 @@ void peer_pbrt_v4_radical_inverse(const uint64_t *index, size_t n, int dims, flo
     }
 }
 
-#ifdef PEER_PBRT_V4_PMJ02BN
-// PMJ02BNSampler and its table (need src/pbrt/util/pmj02tables.cpp and bluenoise.cpp).
+// PMJ02BNSampler and its table (src/pbrt/util/pmj02tables.cpp and bluenoise.cpp, or the
+// substitutes peers/build.rs writes where the snapshot lacks them).
 void *peer_pbrt_v4_pmj02bn_new(int spp, int seed) {
     return new pbrt::PMJ02BNSampler(spp, seed);
 }
@@ -101,6 +101,5 @@ void peer_pbrt_v4_pmj02bn_lookup(const uint32_t *index, size_t n, float *out) {
         out[2 * k + 1] = p.y;
     }
 }
-#endif
 
 }  // extern "C"

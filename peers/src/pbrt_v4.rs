@@ -25,13 +25,9 @@ unsafe extern "C" {
     );
     fn peer_pbrt_v4_sobol(index: *const u32, n: usize, dims: i32, out: *mut f32);
     fn peer_pbrt_v4_radical_inverse(index: *const u64, n: usize, dims: i32, out: *mut f32);
-    #[cfg(peer_pbrt_v4_pmj02bn)]
     fn peer_pbrt_v4_pmj02bn_new(spp: i32, seed: i32) -> *mut c_void;
-    #[cfg(peer_pbrt_v4_pmj02bn)]
     fn peer_pbrt_v4_pmj02bn_free(s: *mut c_void);
-    #[cfg(peer_pbrt_v4_pmj02bn)]
     fn peer_pbrt_v4_pmj02bn_lookup(index: *const u32, n: usize, out: *mut f32);
-    #[cfg(peer_pbrt_v4_pmj02bn)]
     fn peer_pbrt_v4_pmj02bn_camera(
         s: *mut c_void,
         x0: i32,
@@ -73,7 +69,6 @@ impl Sampler {
     }
 
     /// `PMJ02BNSampler`.
-    #[cfg(peer_pbrt_v4_pmj02bn)]
     pub fn pmj02bn(spp: u32, seed: i32) -> Self {
         Sampler {
             // SAFETY: as above.
@@ -125,7 +120,6 @@ pub fn radical_inverse(index: &[u64], dims: u32, out: &mut [f32]) {
 }
 
 /// `GetPMJ02BNSample(0, i)` for each index, 2 floats per index.
-#[cfg(peer_pbrt_v4_pmj02bn)]
 pub fn pmj02bn_lookup(index: &[u32], out: &mut [f32]) {
     assert_eq!(out.len(), 2 * index.len());
     assert!(index.iter().all(|&i| i < 65536));

@@ -115,7 +115,7 @@ fn pmj02_camera() -> Workload<'static> {
     } else {
         "pbrt-v4 `PMJ02BNSampler`"
     };
-    #[cfg(peer_pbrt_v4_pmj02bn)]
+    #[cfg(peer_pbrt_v4)]
     peers.push(pbrt_v4_camera(PMJ02BN, 2, || {
         crate::pbrt_v4::Sampler::pmj02bn(SPP, 1)
     }));
@@ -172,7 +172,7 @@ fn pmj02_plain_sample_2d() -> Workload<'static> {
     } else {
         "pbrt-v4 `GetPMJ02BNSample` (table read)"
     };
-    #[cfg(peer_pbrt_v4_pmj02bn)]
+    #[cfg(peer_pbrt_v4)]
     let peer = {
         use crate::pbrt_v4::pmj02bn_lookup;
         let ok = pmj_check(
