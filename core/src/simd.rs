@@ -10,7 +10,7 @@
 //! step reads, since a sum, XOR or low product of 32-bit words depends only on the low bits.
 //! One shuffle at the end puts the four words back in order. The four multiplies of the hash
 //! drop from 28 instructions to 8 plus 7 of splitting and merging; `owen` bench, interleaved
-//! A/B (docs/design.md).
+//! A/B (docs/design.md). Words stored premixed (the PMJ(0,2) table) skip the first multiply.
 //!
 //! The intrinsics are safe inside a function with `#[target_feature(enable = "sse2")]`; the
 //! only `unsafe` is the call into it, sound because SSE2 is part of the x86-64 baseline.
@@ -28,15 +28,18 @@ use core::arch::x86_64::{
 /// top 24 bits of its bit reversal as an `f32` in `[0, 1)`, for the four lanes: equal to
 /// `scramble_rev_f32x4_lanes` bit for bit (tested).
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-pub(crate) fn scramble_rev_f32x4_sse2(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
+pub(crate) fn scramble_rev_f32x4_sse2<const PREMIXED: bool>(
+    x: [u32; 4],
+    seeds: [u32; 4],
+) -> [f32; 4] {
     // SAFETY: SSE2 is in every x86-64 target's baseline (`cfg(target_feature = "sse2")` holds
     // on x86-64), so the kernel's one required feature is present on any machine this runs on.
-    unsafe { kernel(x, seeds) }
+    unsafe { kernel::<PREMIXED>(x, seeds) }
 }
 
 #[target_feature(enable = "sse2")]
 #[inline]
-fn kernel(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
+fn kernel<const PREMIXED: bool>(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
     let x = load(x);
     let s = load(seeds);
     let m = _mm_or_si128(_mm_srli_epi32::<16>(s), _mm_set1_epi32(1));
@@ -44,9 +47,11 @@ fn kernel(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
     let (mut lo, mut hi) = (_mm_unpacklo_epi32(x, x), _mm_unpackhi_epi32(x, x));
     let (s_lo, s_hi) = (_mm_unpacklo_epi32(s, s), _mm_unpackhi_epi32(s, s));
     let (m_lo, m_hi) = (_mm_unpacklo_epi32(m, m), _mm_unpackhi_epi32(m, m));
-    let c1 = _mm_set1_epi32(0x3d20_adea);
-    lo = _mm_xor_si128(lo, _mm_mul_epu32(lo, c1));
-    hi = _mm_xor_si128(hi, _mm_mul_epu32(hi, c1));
+    if !PREMIXED {
+        let c1 = _mm_set1_epi32(0x3d20_adea);
+        lo = _mm_xor_si128(lo, _mm_mul_epu32(lo, c1));
+        hi = _mm_xor_si128(hi, _mm_mul_epu32(hi, c1));
+    }
     lo = _mm_mul_epu32(_mm_add_epi32(lo, s_lo), m_lo);
     hi = _mm_mul_epu32(_mm_add_epi32(hi, s_hi), m_hi);
     let c2 = _mm_set1_epi32(0x0552_6c56);

@@ -1,11 +1,14 @@
 //! Progressive multi-jittered (0,2) samples per pixel, from the baked pmj02 table.
 
-use super::{Sampler, pixel_hash};
+use super::{CameraSample, Sampler, film_coordinate, pixel_hash};
 use crate::Error;
 use crate::hash::mix64;
-use crate::scramble::{lk_hash_by, lk_multiplier, reverse16, reversed_to_f32};
+use crate::scramble::{
+    lk_hash_by, lk_hash_premixed_by, lk_multiplier, reverse16, reversed_to_f32,
+    scramble_premixed_rev_f32x4,
+};
 use crate::sequence::PMJ02_MAX_POINTS;
-use crate::sequence::pmj02::PMJ02_REVERSED;
+use crate::sequence::pmj02::PMJ02_PREMIXED;
 
 /// Odd constant separating requests in the per-request hash.
 const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
@@ -41,6 +44,12 @@ impl Key {
     fn hash(self, x_rev: u32) -> u32 {
         lk_hash_by(x_rev, self.seed, self.multiplier)
     }
+
+    /// `lk_hash` of a word stored premixed ([`lk_premix`](crate::scramble::lk_premix)).
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn hash_premixed(self, premixed: u32) -> u32 {
+        lk_hash_premixed_by(premixed, self.seed, self.multiplier)
+    }
 }
 
 impl Keys {
@@ -57,7 +66,7 @@ impl Keys {
         }
     }
 
-    /// The [`PMJ02_REVERSED`] row of the sample whose 16-bit index reversed into a 32-bit word
+    /// The [`PMJ02_PREMIXED`] row of the sample whose 16-bit index reversed into a 32-bit word
     /// is `index_rev`: Burley's nested uniform shuffle of the index (a fast Owen scramble of the
     /// index read as a fraction), which sends the indices `0..2^k` onto one aligned block of
     /// `2^k` table points for every `k ≤ 16`. The scramble's output is bit-reversed; its top 16
@@ -67,14 +76,14 @@ impl Keys {
         (self.shuffle.hash(index_rev) >> 16) as usize
     }
 
-    /// The point in [`PMJ02_REVERSED`] row `row`, each coordinate fast-Owen-scrambled (on the
+    /// The point in [`PMJ02_PREMIXED`] row `row`, each coordinate fast-Owen-scrambled (on the
     /// reversed words the table holds).
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn point(&self, row: usize) -> [f32; 2] {
-        let [x, y] = PMJ02_REVERSED[row];
+        let [x, y] = PMJ02_PREMIXED[row];
         [
-            reversed_to_f32(self.x.hash(x)),
-            reversed_to_f32(self.y.hash(y)),
+            reversed_to_f32(self.x.hash_premixed(x)),
+            reversed_to_f32(self.y.hash_premixed(y)),
         ]
     }
 
@@ -251,6 +260,25 @@ impl Sampler for Pmj02Sampler {
     fn get_pixel_2d(&mut self) -> [f32; 2] {
         self.dim = self.dim.max(2);
         self.image_point()
+    }
+
+    /// The default's values. The four table coordinates (image pair, lens pair) hash together
+    /// on four vector lanes.
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
+        self.start_pixel_sample(pixel, sample_index, 0);
+        let [image, time, lens] = &self.camera;
+        let [ix, iy] = PMJ02_PREMIXED[(self.index_rev >> 16) as usize];
+        let [lx, ly] = PMJ02_PREMIXED[lens.row(self.index_rev)];
+        let seeds = [image.x.seed, image.y.seed, lens.x.seed, lens.y.seed];
+        let [px, py, u, v] = scramble_premixed_rev_f32x4([ix, iy, lx, ly], seeds);
+        let time = time.value(self.index_rev);
+        self.dim = 5;
+        CameraSample {
+            p_film: [film_coordinate(pixel[0], px), film_coordinate(pixel[1], py)],
+            lens: [u, v],
+            time,
+        }
     }
 }
 

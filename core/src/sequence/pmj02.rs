@@ -19,7 +19,9 @@ use super::Sequence;
 use crate::Error;
 use crate::hash::{hash2, wyrand};
 use crate::math::fraction_to_f32 as to_f32;
-use crate::scramble::{lk_hash, reverse16, reversed_to_f32, scramble_rev_f32x4};
+use crate::scramble::{
+    lk_hash_premixed, lk_premix, reverse16, reversed_to_f32, scramble_premixed_rev_f32x4,
+};
 
 /// The most points the construction makes: the published XOR constants cover 16 levels.
 ///
@@ -139,10 +141,12 @@ crate::lazy_table::baked_table! {
 }
 
 /// [`PMJ02_TABLE`] for the Owen-scrambled reads: point `reverse16(m)` in row `m`, each coordinate
-/// bit-reversed. The fast Owen scramble works on bit-reversed words and the camera samples'
+/// bit-reversed and passed through the LK hash's seedless first step
+/// ([`lk_premix`]). The fast Owen scramble works on bit-reversed words and the camera samples'
 /// nested index shuffle ends in a reversed row index; with this table neither needs a bit
-/// reversal, which x86-64 has no instruction for.
-const fn fill_reversed(t: &mut [[u32; 2]; PMJ02_MAX_POINTS]) {
+/// reversal, which x86-64 has no instruction for, and every read hashes with one multiply
+/// fewer (every reader hashes: the plain sequence reads [`PMJ02_TABLE`]).
+const fn fill_premixed(t: &mut [[u32; 2]; PMJ02_MAX_POINTS]) {
     fill_table(t);
     let mut m = 0;
     while m < PMJ02_MAX_POINTS {
@@ -150,20 +154,20 @@ const fn fill_reversed(t: &mut [[u32; 2]; PMJ02_MAX_POINTS]) {
         let r = reverse16(m as u32) as usize;
         if m <= r {
             let (a0, a1, b0, b1) = (t[m][0], t[m][1], t[r][0], t[r][1]);
-            t[m][0] = b0.reverse_bits();
-            t[m][1] = b1.reverse_bits();
-            t[r][0] = a0.reverse_bits();
-            t[r][1] = a1.reverse_bits();
+            t[m][0] = lk_premix(b0.reverse_bits());
+            t[m][1] = lk_premix(b1.reverse_bits());
+            t[r][0] = lk_premix(a0.reverse_bits());
+            t[r][1] = lk_premix(a1.reverse_bits());
         }
         m += 1;
     }
 }
 
 crate::lazy_table::baked_table! {
-    /// [`fill_reversed`]'s table (512 KiB): what the Owen-scrambled sequence and
+    /// [`fill_premixed`]'s table (512 KiB): what the Owen-scrambled sequence and
     /// [`Pmj02Sampler`](crate::sampler::Pmj02Sampler) read.
-    pub(crate) static PMJ02_REVERSED: [[u32; 2]; PMJ02_MAX_POINTS] = [[0; 2]; PMJ02_MAX_POINTS],
-        fill_reversed, pmj02_reversed_at_first_use_equals_the_baked_table;
+    pub(crate) static PMJ02_PREMIXED: [[u32; 2]; PMJ02_MAX_POINTS] = [[0; 2]; PMJ02_MAX_POINTS],
+        fill_premixed, pmj02_premixed_at_first_use_equals_the_baked_table;
 }
 
 /// [`PMJ02_MAX_POINTS`] pmj02 points of seed [`PMJ02_TABLE_SEED`] (512 KiB), built by
@@ -253,9 +257,8 @@ impl Pmj02 {
         let d = (dim & 1) as usize;
         match self.keys {
             None => PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d],
-            Some(keys) => {
-                lk_hash(PMJ02_REVERSED[reverse16(index) as usize][d], keys[d]).reverse_bits()
-            }
+            Some(keys) => lk_hash_premixed(PMJ02_PREMIXED[reverse16(index) as usize][d], keys[d])
+                .reverse_bits(),
         }
     }
 
@@ -270,8 +273,11 @@ impl Pmj02 {
         match self.keys {
             None => PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)],
             Some([kx, ky]) => {
-                let [x, y] = PMJ02_REVERSED[reverse16(index) as usize];
-                [lk_hash(x, kx).reverse_bits(), lk_hash(y, ky).reverse_bits()]
+                let [x, y] = PMJ02_PREMIXED[reverse16(index) as usize];
+                [
+                    lk_hash_premixed(x, kx).reverse_bits(),
+                    lk_hash_premixed(y, ky).reverse_bits(),
+                ]
             }
         }
     }
@@ -291,10 +297,10 @@ impl Pmj02 {
                 [to_f32(x), to_f32(y)]
             }
             Some([kx, ky]) => {
-                let [x, y] = PMJ02_REVERSED[reverse16(index) as usize];
+                let [x, y] = PMJ02_PREMIXED[reverse16(index) as usize];
                 [
-                    reversed_to_f32(lk_hash(x, kx)),
-                    reversed_to_f32(lk_hash(y, ky)),
+                    reversed_to_f32(lk_hash_premixed(x, kx)),
+                    reversed_to_f32(lk_hash_premixed(y, ky)),
                 ]
             }
         }
@@ -334,12 +340,12 @@ impl Pmj02 {
         let mut ins = indices.chunks_exact(4);
         for (o, i) in (&mut outs).zip(&mut ins) {
             // Four table reads first, so that their latencies overlap.
-            let [x0, y0] = PMJ02_REVERSED[reverse16(i[0]) as usize];
-            let [x1, y1] = PMJ02_REVERSED[reverse16(i[1]) as usize];
-            let [x2, y2] = PMJ02_REVERSED[reverse16(i[2]) as usize];
-            let [x3, y3] = PMJ02_REVERSED[reverse16(i[3]) as usize];
-            let [a0, b0, a1, b1] = scramble_rev_f32x4([x0, y0, x1, y1], seeds);
-            let [a2, b2, a3, b3] = scramble_rev_f32x4([x2, y2, x3, y3], seeds);
+            let [x0, y0] = PMJ02_PREMIXED[reverse16(i[0]) as usize];
+            let [x1, y1] = PMJ02_PREMIXED[reverse16(i[1]) as usize];
+            let [x2, y2] = PMJ02_PREMIXED[reverse16(i[2]) as usize];
+            let [x3, y3] = PMJ02_PREMIXED[reverse16(i[3]) as usize];
+            let [a0, b0, a1, b1] = scramble_premixed_rev_f32x4([x0, y0, x1, y1], seeds);
+            let [a2, b2, a3, b3] = scramble_premixed_rev_f32x4([x2, y2, x3, y3], seeds);
             o.copy_from_slice(&[[a0, b0], [a1, b1], [a2, b2], [a3, b3]]);
         }
         for (o, &i) in outs.into_remainder().iter_mut().zip(ins.remainder()) {
@@ -363,8 +369,8 @@ impl Sequence for Pmj02 {
         let d = (dim & 1) as usize;
         match self.keys {
             None => to_f32(PMJ02_POINTS[index as usize & (PMJ02_MAX_POINTS - 1)][d]),
-            Some(keys) => reversed_to_f32(lk_hash(
-                PMJ02_REVERSED[reverse16(index as u32) as usize][d],
+            Some(keys) => reversed_to_f32(lk_hash_premixed(
+                PMJ02_PREMIXED[reverse16(index as u32) as usize][d],
                 keys[d],
             )),
         }
@@ -535,16 +541,17 @@ mod tests {
         }
     }
 
-    /// Row `m` of the reversed table is point `reverse16(m)` with both coordinates reversed, and
+    /// Row `m` of the premixed table is point `reverse16(m)` with both coordinates reversed and
+    /// premixed, and
     /// the scrambled reads through it give the fast Owen scramble of the plain table's values.
     #[test]
-    fn pmj02_reversed_table_is_the_plain_table_reordered_and_reversed() {
+    fn pmj02_premixed_table_is_the_plain_table_reordered_reversed_and_premixed() {
         use crate::scramble::{fast_owen_keyed, fast_owen_keyed_f32};
         for m in 0..PMJ02_MAX_POINTS {
             let [x, y] = PMJ02_TABLE[reverse16(m as u32) as usize];
             assert_eq!(
-                PMJ02_REVERSED[m],
-                [x.reverse_bits(), y.reverse_bits()],
+                PMJ02_PREMIXED[m],
+                [lk_premix(x.reverse_bits()), lk_premix(y.reverse_bits())],
                 "row {m}"
             );
         }
