@@ -144,6 +144,34 @@ pub(crate) fn uniform_below_from<R: Rng + ?Sized>(first: u32, n: u32, rng: &mut 
     (m >> 32) as u32
 }
 
+/// Two independent uniform integers in `0..a` and `0..b` from one 32-bit draw (Brackett-Rozinsky
+/// & Lemire 2024, "Batched ranged random integer generation"), for `a, b ≥ 1` with
+/// `a · b ≤ 2³²`: the draw times `a` gives the first in its high word, the low word times `b`
+/// the second. Then `r·a·b = (j·b + k)·2³² + low`, so `(j, k)` is the mixed-radix form of
+/// Lemire's bounded draw on `a · b`, and the same rejection (`low < 2³² mod a·b`, drawn again)
+/// makes the pair exactly uniform. Rejection is rare when `a · b` is small against 2³²: the
+/// test that can lead to it fails with probability `a·b / 2³²`.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) fn uniform_below_pair<R: Rng + ?Sized>(rng: &mut R, a: u32, b: u32) -> (u32, u32) {
+    let product = u64::from(a) * u64::from(b);
+    let (mut j, mut k, mut low) = split_pair(rng.next_u32(), a, b);
+    if u64::from(low) < product {
+        let threshold = ((1u64 << 32) - product) % product;
+        while u64::from(low) < threshold {
+            (j, k, low) = split_pair(rng.next_u32(), a, b);
+        }
+    }
+    (j, k)
+}
+
+/// `r` split by [`uniform_below_pair`]'s bounds: the two values and the final low word.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+const fn split_pair(r: u32, a: u32, b: u32) -> (u32, u32, u32) {
+    let m = r as u64 * a as u64;
+    let n = (m as u32) as u64 * b as u64;
+    ((m >> 32) as u32, (n >> 32) as u32, n as u32)
+}
+
 /// A uniform integer in `0..n` for 64-bit ranges (same method with 128-bit products).
 /// Total: `n == 0` returns 0.
 ///
@@ -186,6 +214,83 @@ mod tests {
             .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
             .sum();
         assert!(chi < 20.5, "chi2 {chi} bins {bins:?}");
+    }
+
+    /// A generator that replays `words`, for the rejection path.
+    struct Scripted<'a>(&'a [u32]);
+
+    impl TryRng for Scripted<'_> {
+        type Error = Infallible;
+        fn try_next_u32(&mut self) -> Result<u32, Infallible> {
+            let (first, rest) = self.0.split_first().expect("script too short");
+            self.0 = rest;
+            Ok(*first)
+        }
+        fn try_next_u64(&mut self) -> Result<u64, Infallible> {
+            unreachable!("the pair draws 32-bit words")
+        }
+        fn try_fill_bytes(&mut self, _: &mut [u8]) -> Result<(), Infallible> {
+            unreachable!("the pair draws 32-bit words")
+        }
+    }
+
+    proptest::proptest! {
+        /// The pair is the mixed-radix form of Lemire's draw on `a · b`: `r·a·b = (j·b + k)·2³²
+        /// + low`, with `j < a` and `k < b`. With the same rejection as the single draw, that
+        /// makes the pair exactly uniform.
+        #[test]
+        fn the_pair_split_is_the_single_draw_on_the_product(
+            r: u32,
+            a in 1u32..=u32::MAX,
+            b_raw: u32,
+        ) {
+            let b = (b_raw % ((1u64 << 32) / u64::from(a)) as u32).max(1);
+            let (j, k, low) = split_pair(r, a, b);
+            let whole = u128::from(r) * u128::from(a) * u128::from(b);
+            proptest::prop_assert!(j < a && k < b);
+            proptest::prop_assert_eq!(u128::from(j) * u128::from(b) + u128::from(k), whole >> 32);
+            proptest::prop_assert_eq!(u128::from(low), whole & 0xffff_ffff);
+        }
+    }
+
+    #[test]
+    fn the_pair_redraws_exactly_the_rejected_words() {
+        // a·b = 15: 2³² mod 15 = 1, so only a low word of 0 (the draw 0) is rejected.
+        let good = split_pair(0x9e37_79b9, 3, 5);
+        assert_eq!(
+            uniform_below_pair(&mut Scripted(&[0, 0, 0x9e37_79b9]), 3, 5),
+            (good.0, good.1)
+        );
+        // a·b = 2³² − 2¹⁶: the threshold is 2¹⁶; a word whose low word falls under it is redrawn.
+        let (a, b) = (65_536, 65_535);
+        let threshold = (1u64 << 32) % (u64::from(a) * u64::from(b));
+        assert_eq!(threshold, 65_536);
+        let low_of = |r: u32| u64::from(split_pair(r, a, b).2);
+        let rejected = (0..u32::MAX).find(|&r| low_of(r) < threshold).unwrap();
+        let accepted = (rejected + 1..u32::MAX)
+            .find(|&r| low_of(r) >= threshold)
+            .unwrap();
+        let want = split_pair(accepted, a, b);
+        assert_eq!(
+            uniform_below_pair(&mut Scripted(&[rejected, accepted]), a, b),
+            (want.0, want.1)
+        );
+    }
+
+    #[test]
+    fn uniform_below_pair_is_uniform_chi_square() {
+        // 3 × 5 cells, 150000 pairs: chi-square with 14 dof; 36.12 is the 0.999 quantile.
+        let mut rng = default_rng(12);
+        let mut cells = [0u32; 15];
+        for _ in 0..150_000 {
+            let (j, k) = uniform_below_pair(&mut rng, 3, 5);
+            cells[(j * 5 + k) as usize] += 1;
+        }
+        let chi: f64 = cells
+            .iter()
+            .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
+            .sum();
+        assert!(chi < 36.12, "chi2 {chi} cells {cells:?}");
     }
 
     #[test]
