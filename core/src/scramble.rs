@@ -316,7 +316,7 @@ pub(crate) fn scramble_premixed_rev_f32x4(premixed: [u32; 4], seeds: [u32; 4]) -
 fn scramble_rev_f32x4_from<const PREMIXED: bool>(x: [u32; 4], seeds: [u32; 4]) -> [f32; 4] {
     #[cfg(target_arch = "x86_64")]
     {
-        crate::simd::scramble_rev_f32x4_sse2::<PREMIXED>(x, seeds)
+        crate::simd::scramble_rev_f32x4_x86::<PREMIXED>(x, seeds)
     }
     #[cfg(not(target_arch = "x86_64"))]
     {
@@ -599,12 +599,14 @@ mod tests {
         }
     }
 
-    /// On x86-64 the SSE2 kernel equals the portable lane code bit for bit: words and seeds
-    /// over edge values and hashed ones, every lane different.
+    /// On x86-64 the SSE2 kernel, and the SSSE3 + SSE4.1 one where the CPU has them, equal the
+    /// portable lane code bit for bit: words and seeds over edge values and hashed ones, every
+    /// lane different.
     #[cfg(target_arch = "x86_64")]
     #[test]
-    fn sse2_kernel_equals_the_portable_lanes() {
-        use crate::simd::scramble_rev_f32x4_sse2;
+    fn x86_kernels_equal_the_portable_lanes() {
+        use crate::simd::{has_sse41, scramble_rev_f32x4_sse2, scramble_rev_f32x4_sse41};
+        let mut sse41_ran = false;
         let edges = [0, 1, 0x8000_0000, u32::MAX, 0xffff_0000, 0x0000_ffff];
         let words = edges
             .into_iter()
@@ -617,8 +619,19 @@ mod tests {
             let want = scramble_rev_f32x4_lanes::<false>(x, seeds).map(f32::to_bits);
             assert_eq!(got, want, "x {x:x?} seeds {seeds:x?}");
             let got = scramble_rev_f32x4_sse2::<true>(x, seeds).map(f32::to_bits);
-            let want = scramble_rev_f32x4_lanes::<true>(x, seeds).map(f32::to_bits);
-            assert_eq!(got, want, "premixed x {x:x?} seeds {seeds:x?}");
+            let want_premixed = scramble_rev_f32x4_lanes::<true>(x, seeds).map(f32::to_bits);
+            assert_eq!(got, want_premixed, "premixed x {x:x?} seeds {seeds:x?}");
+            if let Some(got) = scramble_rev_f32x4_sse41::<false>(x, seeds) {
+                assert_eq!(
+                    got.map(f32::to_bits),
+                    want,
+                    "sse4.1 x {x:x?} seeds {seeds:x?}"
+                );
+                let got = scramble_rev_f32x4_sse41::<true>(x, seeds).unwrap();
+                assert_eq!(got.map(f32::to_bits), want_premixed, "sse4.1 premixed");
+                sse41_ran = true;
+            }
         }
+        assert_eq!(sse41_ran, has_sse41());
     }
 }

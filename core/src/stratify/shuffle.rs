@@ -61,8 +61,8 @@ pub fn shuffle<T, R: Rng + ?Sized>(
     if dims == 1 && u32::try_from(count).is_ok() {
         // The common case, kept as a tight scalar loop: 32-bit draws throughout, and no check
         // that can panic on `j` (`j ≤ i` already; the `min` tells the compiler so), which lets
-        // `rng`'s state stay in registers instead of being stored at every step: 1.81× → 2.3×
-        // pbrt-v3's `Shuffle` (`peers`, docs/performance.md).
+        // `rng`'s state stay in registers instead of being stored at every step (`peers`,
+        // docs/performance.md).
         let mut i = count.saturating_sub(1);
         while i >= 1 && (i as u64 + 1) * i as u64 > PAIR_PRODUCT_LIMIT {
             let j = (uniform_below(rng, i as u32 + 1) as usize).min(i);
@@ -183,7 +183,7 @@ mod tests {
     #[test]
     fn long_shuffles_cross_the_pair_limit_and_permute() {
         let n = 4100; // (i + 1) · i > 2^24 for the first four steps, i = 4099 down to 4096
-        assert!(4097 * 4096 > PAIR_PRODUCT_LIMIT && 4096 * 4095 <= PAIR_PRODUCT_LIMIT);
+        const { assert!(4097 * 4096 > PAIR_PRODUCT_LIMIT && 4096 * 4095 <= PAIR_PRODUCT_LIMIT) };
         let mut v: std::vec::Vec<u32> = (0..n).collect();
         shuffle(&mut v, n as usize, 1, &mut default_rng(2)).unwrap();
         let moved = v
