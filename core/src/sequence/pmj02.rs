@@ -307,7 +307,7 @@ impl Pmj02 {
     }
 
     /// The points at many indices at once: `out[k] = sample_2d(indices[k])`, the same values.
-    /// Scrambled, four coordinates (two points) hash at a time on vector lanes: 1.63× the
+    /// Scrambled, four coordinates (two points) hash at a time on vector lanes: 1.80× the
     /// throughput of per-point calls on x86-64 (criterion, `pmj02` bench, docs/performance.md).
     ///
     /// # Errors
