@@ -209,10 +209,7 @@ mod tests {
         for _ in 0..60_000 {
             bins[uniform_below(&mut rng, 6) as usize] += 1;
         }
-        let chi: f64 = bins
-            .iter()
-            .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
-            .sum();
+        let chi = crate::tests::chi_square_uniform(&bins);
         assert!(chi < 20.5, "chi2 {chi} bins {bins:?}");
     }
 
@@ -286,10 +283,7 @@ mod tests {
             let (j, k) = uniform_below_pair(&mut rng, 3, 5);
             cells[(j * 5 + k) as usize] += 1;
         }
-        let chi: f64 = cells
-            .iter()
-            .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
-            .sum();
+        let chi = crate::tests::chi_square_uniform(&cells);
         assert!(chi < 36.12, "chi2 {chi} cells {cells:?}");
     }
 

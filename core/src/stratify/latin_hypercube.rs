@@ -229,10 +229,7 @@ mod tests {
         }
         let hit: std::vec::Vec<u32> = counts.iter().copied().filter(|&c| c > 0).collect();
         assert_eq!(hit.len(), 6);
-        let chi: f64 = hit
-            .iter()
-            .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
-            .sum();
+        let chi = crate::tests::chi_square_uniform(&hit);
         assert!(chi < 20.5, "chi2 {chi}");
     }
 

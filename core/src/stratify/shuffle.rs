@@ -172,10 +172,8 @@ mod tests {
             *counts.entry(v).or_insert(0u32) += 1;
         }
         assert_eq!(counts.len(), 24);
-        let chi: f64 = counts
-            .values()
-            .map(|&c| (f64::from(c) - 2_000.0).powi(2) / 2_000.0)
-            .sum();
+        let counts: std::vec::Vec<u32> = counts.into_values().collect();
+        let chi = crate::tests::chi_square_uniform(&counts);
         assert!(chi < 49.73, "chi2 {chi}");
     }
 
@@ -219,10 +217,7 @@ mod tests {
                 let order = [v[0], v[dims], v[2 * dims]];
                 counts[orders.iter().position(|o| *o == order).unwrap()] += 1;
             }
-            let chi: f64 = counts
-                .iter()
-                .map(|&c| (f64::from(c) - 10_000.0).powi(2) / 10_000.0)
-                .sum();
+            let chi = crate::tests::chi_square_uniform(&counts);
             assert!(chi < 20.52, "dims {dims}: chi2 {chi}, counts {counts:?}");
         }
     }
