@@ -258,13 +258,22 @@ mod tests {
             uniform_below_pair(&mut Scripted(&[0, 0, 0x9e37_79b9]), 3, 5),
             (good.0, good.1)
         );
+        // A low word of 1 is the threshold itself: kept. (15 · 0xeeee_eeef = 1 mod 2³², so that
+        // word's low word, r·15 mod 2³², is 1.)
+        assert_eq!(split_pair(0xeeee_eeef, 3, 5).2, 1);
+        let kept = split_pair(0xeeee_eeef, 3, 5);
+        assert_eq!(
+            uniform_below_pair(&mut Scripted(&[0xeeee_eeef, 0x9e37_79b9]), 3, 5),
+            (kept.0, kept.1)
+        );
+        assert_ne!((kept.0, kept.1), (good.0, good.1));
         // a·b = 2³² − 2¹⁶: the threshold is 2¹⁶; a word whose low word falls under it is redrawn.
         let (a, b) = (65_536, 65_535);
         let threshold = (1u64 << 32) % (u64::from(a) * u64::from(b));
         assert_eq!(threshold, 65_536);
         let low_of = |r: u32| u64::from(split_pair(r, a, b).2);
-        let rejected = (0..u32::MAX).find(|&r| low_of(r) < threshold).unwrap();
-        let accepted = (rejected + 1..u32::MAX)
+        let rejected = (0..1 << 16).find(|&r| low_of(r) < threshold).unwrap();
+        let accepted = (rejected + 1..1 << 17)
             .find(|&r| low_of(r) >= threshold)
             .unwrap();
         let want = split_pair(accepted, a, b);
