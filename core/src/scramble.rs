@@ -599,6 +599,17 @@ mod tests {
         }
     }
 
+    /// The run-time choice of kernel agrees with std's feature detection (first call and the
+    /// kept answer).
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn sse41_detection_agrees_with_std() {
+        let std_says =
+            std::is_x86_feature_detected!("ssse3") && std::is_x86_feature_detected!("sse4.1");
+        assert_eq!(crate::simd::has_sse41(), std_says);
+        assert_eq!(crate::simd::has_sse41(), std_says);
+    }
+
     /// On x86-64 the SSE2 kernel, and the SSSE3 + SSE4.1 one where the CPU has them, equal the
     /// portable lane code bit for bit: words and seeds over edge values and hashed ones, every
     /// lane different.

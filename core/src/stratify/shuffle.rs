@@ -177,6 +177,40 @@ mod tests {
         assert!(chi < 49.73, "chi2 {chi}");
     }
 
+    /// A generator of `u32::MAX` words that counts them. Such a word is never rejected: a single
+    /// draw's low word is `2³² − n ≥ n`, a pair's `2³² − a·b ≥ a·b` (products up to 2³¹), so
+    /// the count is exactly the number of draws the steps make.
+    struct CountingMax(usize);
+
+    impl rand_core::TryRng for CountingMax {
+        type Error = core::convert::Infallible;
+        fn try_next_u32(&mut self) -> Result<u32, Self::Error> {
+            self.0 += 1;
+            Ok(u32::MAX)
+        }
+        fn try_next_u64(&mut self) -> Result<u64, Self::Error> {
+            unreachable!("single values draw 32-bit words")
+        }
+        fn try_fill_bytes(&mut self, _: &mut [u8]) -> Result<(), Self::Error> {
+            unreachable!("single values draw 32-bit words")
+        }
+    }
+
+    /// One word per step while `(i + 1)·i > 2²⁴`, then one per two steps: 4100 values take the
+    /// steps i = 4099 … 4096 alone, 4095 … 2 in 2047 pairs and i = 1 alone.
+    #[test]
+    fn single_values_draw_once_per_two_steps_below_the_limit() {
+        let mut v: std::vec::Vec<u32> = (0..4100).collect();
+        let mut rng = CountingMax(0);
+        shuffle(&mut v, 4100, 1, &mut rng).unwrap();
+        assert_eq!(rng.0, 4 + 2047 + 1);
+        let mut rng = CountingMax(0);
+        shuffle(&mut v[..1000], 1000, 1, &mut rng).unwrap();
+        assert_eq!(rng.0, 499 + 1); // i = 999 … 2 in pairs, then i = 1
+        v.sort_unstable();
+        assert!(v.iter().enumerate().all(|(k, &x)| k as u32 == x));
+    }
+
     /// Past the pair limit the steps draw one at a time; the result is still a permutation.
     #[test]
     fn long_shuffles_cross_the_pair_limit_and_permute() {
