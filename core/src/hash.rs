@@ -666,13 +666,9 @@ mod tests {
                     counts[(i * n + p.apply(i)) as usize] += 1;
                 }
             }
-            let expect = f64::from(SEEDS) / f64::from(n);
             for i in 0..n {
                 let row = &counts[(i * n) as usize..((i + 1) * n) as usize];
-                let chi2: f64 = row
-                    .iter()
-                    .map(|&c| (f64::from(c) - expect).powi(2) / expect)
-                    .sum();
+                let chi2 = crate::tests::chi_square_uniform(row);
                 // dof = n − 1 ≤ 30; mean n − 1, sd √(2(n−1)); 6 sd above the mean plus slack.
                 let df = f64::from(n - 1);
                 let limit = df + 6.0 * (2.0 * df).sqrt() + 10.0;

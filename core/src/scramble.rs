@@ -334,9 +334,7 @@ pub(crate) fn scramble_rev_f32x4_lanes<const PREMIXED: bool>(
 ) -> [f32; 4] {
     let mut x = x;
     if !PREMIXED {
-        for k in 0..4 {
-            x[k] ^= x[k].wrapping_mul(0x3d20_adea);
-        }
+        x = x.map(lk_premix);
     }
     for k in 0..4 {
         x[k] = x[k].wrapping_add(seeds[k]);

@@ -245,6 +245,7 @@ pub fn fast_owen_scrambled_radical_inverse_f64(dim: u32, a: u64, seed: u64) -> f
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::tests::chi_square_uniform;
     use proptest::prelude::*;
     use std::vec::Vec;
 
@@ -454,14 +455,6 @@ mod tests {
         df + 6.0 * (2.0 * df).sqrt() + 10.0
     }
 
-    fn chi2(counts: &[u32], total: u32) -> f64 {
-        let expect = f64::from(total) / counts.len() as f64;
-        counts
-            .iter()
-            .map(|&c| (f64::from(c) - expect).powi(2) / expect)
-            .sum()
-    }
-
     /// For a fixed index, each of the first three scrambled digits is uniform over seeds —
     /// including the digits that come from `a`'s zeros past its leading digit — and the value's
     /// mean over seeds is ½ (a scramble that stopped at `a`'s last digit would give index 0 the
@@ -485,7 +478,7 @@ mod tests {
                         }
                     }
                     for j in 0..3 {
-                        let c = chi2(&counts[j * b..(j + 1) * b], SEEDS);
+                        let c = chi_square_uniform(&counts[j * b..(j + 1) * b]);
                         assert!(
                             c < chi2_limit((b - 1) as f64),
                             "affine {affine} base {b} a {a} digit {j}: chi2 {c:.1}"
@@ -532,10 +525,10 @@ mod tests {
                     .filter(|k| k / b != k % b)
                     .map(|k| first[k])
                     .collect();
-                let c = chi2(&off, SEEDS);
+                let c = chi_square_uniform(&off);
                 let df = (b * (b - 1) - 1) as f64;
                 assert!(c < chi2_limit(df), "affine {affine} base {b} pairs: {c:.1}");
-                let c = chi2(&second, SEEDS);
+                let c = chi_square_uniform(&second);
                 let df = (b * b - 1) as f64;
                 assert!(
                     c < chi2_limit(df),

@@ -676,11 +676,7 @@ mod tests {
                     .sample(u64::from(index), dim);
                 counts[(x * CELLS as f32) as usize] += 1;
             }
-            let expect = SEEDS as f64 / CELLS as f64;
-            let chi2: f64 = counts
-                .iter()
-                .map(|&c| (f64::from(c) - expect).powi(2) / expect)
-                .sum();
+            let chi2 = crate::tests::chi_square_uniform(&counts);
             // 63 degrees of freedom: mean 63, sd 11.2; 130 is past 6 sd.
             assert!(chi2 < 130.0, "index {index} dim {dim}: chi2 {chi2:.1}");
         }

@@ -542,8 +542,8 @@ mod tests {
     }
 
     /// Row `m` of the premixed table is point `reverse16(m)` with both coordinates reversed and
-    /// premixed, and
-    /// the scrambled reads through it give the fast Owen scramble of the plain table's values.
+    /// premixed, and the scrambled reads through it give the fast Owen scramble of the plain
+    /// table's values.
     #[test]
     fn pmj02_premixed_table_is_the_plain_table_reordered_reversed_and_premixed() {
         use crate::scramble::{fast_owen_keyed, fast_owen_keyed_f32};
