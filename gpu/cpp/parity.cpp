@@ -1,0 +1,404 @@
+// Parity of gpu/cpp/nyquist.hpp with the Rust core, run by capi/tests/cpp_header.rs:
+//
+//   parity EXPECTED_FILE
+//
+// 1. Samplers and sequences the C API builds (`nyq_sampler_create` by name,
+//    `nyq_sequence_sample`): random (pixel, sample index, dimension, seed) queries drawn here,
+//    each answered by libnyquist_capi.a and by the header, compared bit for bit.
+// 2. Configurations the C API cannot name (other scrambles, frames, the Owen-Sobol sequence):
+//    the Rust test wrote the queries and the core's answers to EXPECTED_FILE; the header must
+//    reproduce every value.
+//
+// Prints one line per configuration with its value count; on the first mismatch prints the
+// configuration, the query and both values' bits, and exits 1.
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "nyquist.h"
+#include "nyquist.hpp"
+
+namespace {
+
+using namespace nyquist;
+
+/// SplitMix64: the queries' source (independent of the header's hashes).
+struct Rng {
+    std::uint64_t s;
+    std::uint64_t next() {
+        s += 0x9e3779b97f4a7c15ull;
+        std::uint64_t z = s;
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    std::uint32_t below(std::uint32_t n) {
+        return static_cast<std::uint32_t>((next() >> 32) % n);
+    }
+};
+
+struct Query {
+    std::uint32_t px, py, index, dim;
+};
+
+/// Pixels small, medium and anywhere in u32; indices inside the pixel's spp, a few times past
+/// it, and anywhere; dimensions mostly small, some past 1024 and some next to u32::MAX.
+Query draw(Rng& r, std::uint32_t spp) {
+    Query q{};
+    const std::uint32_t pick = static_cast<std::uint32_t>(r.next());
+    const std::uint32_t sizes[3] = {64, 4096, 0};
+    const std::uint32_t size = sizes[pick % 3];
+    q.px = size ? r.below(size) : static_cast<std::uint32_t>(r.next());
+    q.py = size ? r.below(size) : static_cast<std::uint32_t>(r.next());
+    switch ((pick >> 8) & 3) {
+        case 0: q.index = r.below(spp); break;
+        case 1: q.index = r.below(spp > 0x3fffffffu ? 0xffffffffu : 4 * spp); break;
+        case 2: q.index = r.below(65536); break;
+        default: q.index = static_cast<std::uint32_t>(r.next()); break;
+    }
+    switch ((pick >> 16) & 7) {
+        case 0: case 1: case 2: case 3: q.dim = r.below(8); break;
+        case 4: case 5: q.dim = r.below(64); break;
+        case 6: q.dim = r.below(2100); break;
+        default: q.dim = 0xffffffffu - r.below(4); break;
+    }
+    return q;
+}
+
+bool same(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+std::uint32_t bits(float x) {
+    std::uint32_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+const char* const kValueNames[14] = {
+    "get_1d", "get_2d[0]", "get_2d[1]", "get_pixel_2d[0]", "get_pixel_2d[1]", "get_1d (2nd)",
+    "get_2d[0] (2nd)", "get_2d[1] (2nd)", "camera p_film[0]", "camera p_film[1]", "camera time",
+    "camera lens[0]", "camera lens[1]", "get_1d after camera"};
+
+/// The 14 values one query gives: after start_pixel_sample, get_1d, get_2d, get_pixel_2d,
+/// get_1d, get_2d; then camera_sample and one get_1d.
+template <class S>
+void header_values(S& s, const Query& q, float out[14]) {
+    s.start_pixel_sample(q.px, q.py, q.index, q.dim);
+    out[0] = s.get_1d();
+    Float2 v = s.get_2d();
+    out[1] = v.v[0];
+    out[2] = v.v[1];
+    v = s.get_pixel_2d();
+    out[3] = v.v[0];
+    out[4] = v.v[1];
+    out[5] = s.get_1d();
+    v = s.get_2d();
+    out[6] = v.v[0];
+    out[7] = v.v[1];
+    const CameraSample c = s.camera_sample(q.px, q.py, q.index);
+    out[8] = c.p_film[0];
+    out[9] = c.p_film[1];
+    out[10] = c.time;
+    out[11] = c.lens[0];
+    out[12] = c.lens[1];
+    out[13] = s.get_1d();
+}
+
+bool ok(NyqStatus s, const char* what) {
+    if (s != NYQ_OK) {
+        std::printf("MISMATCH: %s returned status %d\n", what, static_cast<int>(s));
+        return false;
+    }
+    return true;
+}
+
+bool capi_values(NyqSampler* h, const Query& q, float out[14]) {
+    bool good = ok(nyq_sampler_start_pixel_sample(h, q.px, q.py, q.index, q.dim), "start");
+    good = good && ok(nyq_sampler_get_1d(h, &out[0]), "get_1d");
+    good = good && ok(nyq_sampler_get_2d(h, &out[1]), "get_2d");
+    good = good && ok(nyq_sampler_get_pixel_2d(h, &out[3]), "get_pixel_2d");
+    good = good && ok(nyq_sampler_get_1d(h, &out[5]), "get_1d");
+    good = good && ok(nyq_sampler_get_2d(h, &out[6]), "get_2d");
+    NyqCameraSample c{};
+    good = good && ok(nyq_sampler_camera_sample(h, q.px, q.py, q.index, &c), "camera_sample");
+    out[8] = c.p_film[0];
+    out[9] = c.p_film[1];
+    out[10] = c.time;
+    out[11] = c.lens[0];
+    out[12] = c.lens[1];
+    good = good && ok(nyq_sampler_get_1d(h, &out[13]), "get_1d");
+    return good;
+}
+
+bool compare14(const char* label, const Query& q, const float want[14], const float got[14]) {
+    for (int k = 0; k < 14; ++k) {
+        if (!same(want[k], got[k])) {
+            std::printf(
+                "MISMATCH %s: pixel (%" PRIu32 ", %" PRIu32 ") sample %" PRIu32 " dim %" PRIu32
+                ": %s core %08" PRIx32 " (%.9g) header %08" PRIx32 " (%.9g)\n",
+                label, q.px, q.py, q.index, q.dim, kValueNames[k], bits(want[k]),
+                static_cast<double>(want[k]), bits(got[k]), static_cast<double>(got[k]));
+            return false;
+        }
+    }
+    return true;
+}
+
+std::uint64_t g_total = 0;
+
+/// Sampler `name` of the C API against the header's `cpp`, over `queries` random queries.
+template <class S>
+bool capi_sampler(const char* name, std::uint32_t w, std::uint32_t h, std::uint32_t spp,
+                  std::uint64_t seed, S cpp, std::uint32_t queries, Rng& rng) {
+    char label[160];
+    std::snprintf(label, sizeof label, "%s %" PRIu32 "x%" PRIu32 " spp %" PRIu32 " seed %" PRIu64,
+                  name, w, h, spp, seed);
+    if (!cpp.valid()) {
+        std::printf("MISMATCH %s: the header's sampler is not valid\n", label);
+        return false;
+    }
+    NyqSampler* handle = nullptr;
+    if (!ok(nyq_sampler_create(name, w, h, spp, seed, &handle), label)) return false;
+    std::uint32_t capi_spp = 0;
+    nyq_sampler_samples_per_pixel(handle, &capi_spp);
+    bool good = capi_spp == cpp.samples_per_pixel();
+    if (!good)
+        std::printf("MISMATCH %s: spp core %" PRIu32 " header %" PRIu32 "\n", label, capi_spp,
+                    cpp.samples_per_pixel());
+    for (std::uint32_t n = 0; good && n < queries; ++n) {
+        const Query q = draw(rng, capi_spp);
+        float want[14], got[14];
+        good = capi_values(handle, q, want);
+        header_values(cpp, q, got);
+        good = good && compare14(label, q, want, got);
+    }
+    nyq_sampler_destroy(handle);
+    if (good) g_total += 14ull * queries;
+    return good;
+}
+
+/// Accumulates value counts per sampler family and prints them.
+struct Tally {
+    const char* name;
+    std::uint64_t before;
+    explicit Tally(const char* n) : name(n), before(g_total) {}
+    void print() const {
+        std::printf("%s: %" PRIu64 " values equal\n", name, g_total - before);
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Part 1: the C API.
+
+bool owen_sobol_capi(Rng& rng) {
+    Tally t("owen-sobol (C API)");
+    const std::uint32_t spps[4] = {1, 16, 64, 1000};
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const std::uint64_t seed = k < 2 ? k : rng.next();
+        const std::uint32_t spp = spps[k % 4];
+        if (!capi_sampler("owen-sobol", 64, 64, spp, seed, OwenSobolSampler<>(spp, seed), 9000, rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+bool zsobol_capi(Rng& rng) {
+    Tally t("zsobol fast-owen (C API)");
+    struct Config {
+        std::uint32_t w, h, spp;
+    };
+    const Config configs[4] = {{64, 64, 16}, {1920, 1080, 8}, {3, 1, 1}, {4096, 2160, 256}};
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const Config c = configs[k % 4];
+        const std::uint64_t seed = k < 2 ? k : rng.next();
+        if (!capi_sampler("zsobol", c.w, c.h, c.spp, seed,
+                          ZSobolSampler(c.w, c.h, c.spp, Scramble::FastOwen, seed), 9000, rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+bool sobol_capi(Rng& rng) {
+    Tally t("sobol none/permute-digits (C API)");
+    struct Config {
+        std::uint32_t w, h, spp;
+    };
+    const Config configs[4] = {{64, 48, 16}, {1024, 1024, 64}, {3, 1, 1}, {16384, 16384, 16}};
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const Config c = configs[k % 4];
+        const std::uint64_t seed = k < 4 ? 0 : rng.next();
+        if (!capi_sampler("sobol", c.w, c.h, c.spp, seed, SobolSampler<>(c.w, c.h, c.spp, seed), 9000,
+                          rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+bool sobol_sequence_capi(Rng& rng) {
+    Tally t("Sobol sequence (C API nyq_sequence_sample)");
+    for (std::uint32_t k = 0; k < 4; ++k) {
+        NyqSequence seq{};
+        seq.kind = k < 2 ? NYQ_SEQ_SOBOL : NYQ_SEQ_SOBOL_SCRAMBLED;
+        seq.dims = 1024;
+        seq.seed = k < 3 ? k : rng.next();
+        const Sobol<1024> s = k < 2 ? Sobol<1024>::plain() : Sobol<1024>::with_scramble(seq.seed);
+        for (std::uint32_t n = 0; n < 260000; ++n) {
+            const std::uint64_t index = (n & 1) ? rng.next() >> 32 : rng.below(4096);
+            const std::uint32_t dim = rng.below(1024);
+            float want = 0;
+            if (!ok(nyq_sequence_sample(&seq, index, dim, &want), "nyq_sequence_sample")) return false;
+            const float got = s.sample(index, dim);
+            if (!same(want, got)) {
+                std::printf("MISMATCH Sobol kind %" PRIu32 " seed %" PRIu64 ": index %" PRIu64
+                            " dim %" PRIu32 " core %08" PRIx32 " header %08" PRIx32 "\n",
+                            seq.kind, seq.seed, index, dim, bits(want), bits(got));
+                return false;
+            }
+        }
+        g_total += 260000;
+    }
+    t.print();
+    return true;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Part 2: the expected file.
+
+struct Reader {
+    std::FILE* f;
+    bool u32(std::uint32_t& v) { return std::fread(&v, sizeof v, 1, f) == 1; }
+    bool u64(std::uint64_t& v) { return std::fread(&v, sizeof v, 1, f) == 1; }
+    bool floats(float* v, std::size_t n) { return std::fread(v, sizeof(float), n, f) == n; }
+};
+
+enum Kind : std::uint32_t {
+    kOwenSobolSampler = 0,
+    kZSobolSampler = 1,
+    kSobolSampler = 2,
+    kHaltonSampler = 3,
+    kOwenSobolSequence = 10,
+};
+
+const char* scramble_name(std::uint32_t s) {
+    const char* names[4] = {"none", "permute-digits", "fast-owen", "owen"};
+    return s < 4 ? names[s] : "?";
+}
+
+template <class S>
+bool file_sampler(Reader& in, const char* label, S s, std::uint32_t count) {
+    if (!s.valid()) {
+        std::printf("MISMATCH %s: the header's sampler is not valid\n", label);
+        return false;
+    }
+    for (std::uint32_t n = 0; n < count; ++n) {
+        Query q{};
+        float want[14], got[14];
+        if (!in.u32(q.px) || !in.u32(q.py) || !in.u32(q.index) || !in.u32(q.dim) ||
+            !in.floats(want, 14)) {
+            std::printf("MISMATCH %s: expected file truncated\n", label);
+            return false;
+        }
+        header_values(s, q, got);
+        if (!compare14(label, q, want, got)) return false;
+    }
+    g_total += 14ull * count;
+    return true;
+}
+
+template <std::uint32_t N>
+bool file_owen_sobol_sequence(Reader& in, const char* label, std::uint64_t seed, std::uint32_t count) {
+    const OwenSobol<N> s = OwenSobol<N>::make(seed);
+    for (std::uint32_t n = 0; n < count; ++n) {
+        std::uint32_t index = 0, dim = 0;
+        float want[5];
+        if (!in.u32(index) || !in.u32(dim) || !in.floats(want, 5)) {
+            std::printf("MISMATCH %s: expected file truncated\n", label);
+            return false;
+        }
+        const Float4 four = s.sample_4d(index, dim);
+        const float got[5] = {s.sample(index, dim), four.v[0], four.v[1], four.v[2], four.v[3]};
+        for (int k = 0; k < 5; ++k)
+            if (!same(want[k], got[k])) {
+                std::printf("MISMATCH %s: index %" PRIu32 " dim %" PRIu32 " %s core %08" PRIx32
+                            " header %08" PRIx32 "\n",
+                            label, index, dim, k == 0 ? "sample" : "sample_4d", bits(want[k]),
+                            bits(got[k]));
+                return false;
+            }
+    }
+    g_total += 5ull * count;
+    return true;
+}
+
+bool expected_file(const char* path) {
+    std::FILE* f = std::fopen(path, "rb");
+    if (!f) {
+        std::printf("MISMATCH: cannot open %s\n", path);
+        return false;
+    }
+    Reader in{f};
+    bool good = true;
+    std::uint32_t kind = 0;
+    std::uint64_t families[16] = {};
+    while (good && in.u32(kind)) {
+        std::uint32_t scramble = 0, w = 0, h = 0, spp = 0, frame = 0, dims = 0, count = 0;
+        std::uint64_t seed = 0;
+        good = in.u32(scramble) && in.u32(w) && in.u32(h) && in.u32(spp) && in.u32(frame) &&
+               in.u32(dims) && in.u64(seed) && in.u32(count);
+        if (!good) break;
+        char label[200];
+        std::snprintf(label, sizeof label,
+                      "kind %" PRIu32 " scramble %s %" PRIu32 "x%" PRIu32 " spp %" PRIu32
+                      " frame %" PRIu32 " dims %" PRIu32 " seed %" PRIu64,
+                      kind, scramble_name(scramble), w, h, spp, frame, dims, seed);
+        const Scramble how = static_cast<Scramble>(scramble);
+        const std::uint64_t before = g_total;
+        switch (kind) {
+            case kOwenSobolSampler:
+                good = file_sampler(in, label, OwenSobolSampler<>(spp, seed, frame), count);
+                break;
+            case kZSobolSampler:
+                good = file_sampler(in, label, ZSobolSampler(w, h, spp, how, seed), count);
+                break;
+            case kSobolSampler:
+                good = file_sampler(in, label, SobolSampler<>(w, h, spp, how, seed), count);
+                break;
+            case kOwenSobolSequence:
+                if (dims == 1024) good = file_owen_sobol_sequence<1024>(in, label, seed, count);
+                else if (dims == 5) good = file_owen_sobol_sequence<5>(in, label, seed, count);
+                else {
+                    std::printf("MISMATCH %s: no instantiation for these dims\n", label);
+                    good = false;
+                }
+                break;
+            default:
+                std::printf("MISMATCH: unknown kind %" PRIu32 " in the expected file\n", kind);
+                good = false;
+        }
+        families[kind < 16 ? kind : 15] += g_total - before;
+    }
+    std::fclose(f);
+    const char* names[16] = {"owen-sobol frames 1+ (core)", "zsobol none/permute-digits/owen (core)",
+                             "sobol fast-owen/owen (core)", "halton fast-owen/owen (core)"};
+    names[10] = "OwenSobol sequence sample + sample_4d (core)";
+    for (int k = 0; k < 16; ++k)
+        if (families[k] && names[k]) std::printf("%s: %" PRIu64 " values equal\n", names[k], families[k]);
+    return good;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::printf("usage: parity EXPECTED_FILE\n");
+        return 2;
+    }
+    Rng rng{0x6e7971756973740aull};
+    const bool good = owen_sobol_capi(rng) && zsobol_capi(rng) && sobol_capi(rng) &&
+                      sobol_sequence_capi(rng) && expected_file(argv[1]);
+    std::printf("%s: %" PRIu64 " values compared\n", good ? "parity ok" : "parity FAILED", g_total);
+    return good ? 0 : 1;
+}
