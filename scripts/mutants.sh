@@ -21,7 +21,10 @@
 #
 # then counts caught, missed, unviable and timed-out mutants from OUT/<module>/mutants.out/,
 # subtracts the missed mutants listed in scripts/mutants-equivalent.txt, and writes the module's
-# row of the table in docs/mutation.md (rows of modules not run this time are kept).
+# row of the table in docs/mutation.md (rows of modules not run this time are kept). The row
+# names the commit it was measured at: HEAD when the run starts, or `uncommitted` when the
+# module's file differs from HEAD (cargo-mutants copies the working tree), which
+# scripts/mutants-table-check.sh then counts as out of date.
 #
 # Environment: MUTANTS_OPT_LEVEL (the core's opt-level while testing mutants; default 0),
 # MUTANTS_JOBS (default 1: two cores, one build at a time), MUTANTS_TIMEOUT
@@ -97,8 +100,14 @@ for module in "${selected[@]}"; do
         [ -s "$dir/seconds" ] || { echo "$module: no earlier run in $dir" >&2; exit 1; }
         seconds=$(cat "$dir/seconds")
         read -r -a cmd <"$dir/command"
+        at=$(cat "$dir/commit" 2>/dev/null || echo uncommitted)
     else
         earlier=0
+        at=$(git rev-parse --short=7 HEAD)
+        if ! git diff --quiet HEAD -- "$file"; then
+            echo "$module: $file differs from HEAD; the row will say 'uncommitted' (run again from a commit)"
+            at=uncommitted
+        fi
         if [ "$ITERATE" = 1 ]; then
             [ -s "$dir/seconds" ] || { echo "$module: no earlier run in $dir to iterate on" >&2; exit 1; }
             earlier=$(cat "$dir/seconds")
@@ -119,6 +128,7 @@ for module in "${selected[@]}"; do
         case $rc in 0 | 2 | 3) ;; *) echo "$module: cargo mutants exited $rc" >&2; exit 1 ;; esac
         echo "$seconds" >"$dir/seconds"
         echo "${cmd[*]}" >"$dir/command"
+        echo "$at" >"$dir/commit"
         # The file's mutants as the code now stands, to drop earlier catches that no longer exist.
         cargo mutants --list --package "$package" --file "$file" >"$dir/current.txt"
     fi
@@ -157,7 +167,7 @@ for module in "${selected[@]}"; do
     per=$(jq -r '[.outcomes[] | select(.scenario | type == "object")
         | [.phase_results[].duration] | add] | if length > 0 then add / length * 10 | round / 10
         else "–" end' "$res/outcomes.json" 2>/dev/null || echo "–")
-    row="| \`$module\` | $total | $caught | $missed | $unviable | $timeouts | $equivalent | $score | ${seconds} s (${per} s) |"
+    row="| \`$module\` | $at | $total | $caught | $missed | $unviable | $timeouts | $equivalent | $score | ${seconds} s (${per} s) |"
     echo "$row"
     if [ -s "$dir/unlisted.txt" ]; then
         echo "$module: missed and not listed in $EQUIVALENT:"
@@ -170,7 +180,7 @@ for module in "${selected[@]}"; do
         index($0, "| " m " |") == 1 { if (!done) print row; done = 1; next }
         { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
     # Record how and where this row was measured.
-    awk -v m="$module" -v run="- \`$module\`: \`${cmd[*]}\` — $(date -u +%Y-%m-%d), $machine, $version" '
+    awk -v m="$module" -v run="- \`$module\`: \`${cmd[*]}\` — at $at, $(date -u +%Y-%m-%d), $machine, $version" '
         /<!-- mutants-runs-end -->/ { if (!done) print run; done = 1; print; next }
         index($0, "- `" m "`: `cargo mutants ") == 1 { if (!done) print run; done = 1; next }
         { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
