@@ -282,8 +282,9 @@ fn expected_file() -> PathBuf {
     .clone()
 }
 
-/// Compiles `parity.cpp` with `compiler` and runs it; `SKIPPED` if the compiler is missing.
-fn parity_with(compiler: &str) {
+/// Compiles `parity.cpp` with `compiler` (and `defines`) and runs it; `SKIPPED` if the compiler
+/// is missing.
+fn parity_with(compiler: &str, defines: &[&str]) {
     match Command::new(compiler).arg("--version").output() {
         Ok(out) if out.status.success() => {}
         _ => {
@@ -294,7 +295,10 @@ fn parity_with(compiler: &str) {
     }
     let lib = staticlib();
     let ws = workspace();
-    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("cpp_parity_{compiler}"));
+    let exe = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!(
+        "cpp_parity_{compiler}{}",
+        defines.concat().replace('-', "_")
+    ));
     let out = Command::new(compiler)
         .args([
             "-std=c++17",
@@ -304,8 +308,9 @@ fn parity_with(compiler: &str) {
             "-Werror",
             "-Wconversion",
             "-ffp-contract=off",
-            "-I",
         ])
+        .args(defines)
+        .arg("-I")
         .arg(ws.join("gpu/cpp"))
         .arg("-I")
         .arg(ws.join("capi/include"))
@@ -326,7 +331,7 @@ fn parity_with(compiler: &str) {
         .output()
         .expect("run the parity program");
     let stdout = String::from_utf8_lossy(&run.stdout);
-    println!("{compiler}:\n{stdout}");
+    println!("{compiler} {defines:?}:\n{stdout}");
     assert!(
         run.status.success(),
         "the header differs from the core under {compiler} ({}):\n{stdout}{}",
@@ -338,12 +343,19 @@ fn parity_with(compiler: &str) {
 
 #[test]
 fn header_matches_the_core_under_gpp() {
-    parity_with("g++");
+    parity_with("g++", &[]);
 }
 
 #[test]
 fn header_matches_the_core_under_clangpp() {
-    parity_with("clang++");
+    parity_with("clang++", &[]);
+}
+
+/// The portable 128-bit arithmetic (32-bit limbs and binary long division), which compilers
+/// without `__int128` (MSVC) take: the same bits.
+#[test]
+fn header_matches_the_core_without_int128() {
+    parity_with("g++", &["-DNYQ_NO_INT128"]);
 }
 
 /// `(s, a, m_1 .. m_s)` per dimension 1 .. 1023 from Joe and Kuo's file.

@@ -1195,7 +1195,7 @@ NYQ_HD constexpr U128 u128(std::uint64_t x) { return U128{0, x}; }
 NYQ_HD inline U128 mul_wide(std::uint64_t a, std::uint64_t b) {
 #if defined(__CUDA_ARCH__)
     return U128{__umul64hi(a, b), a * b};
-#elif defined(__SIZEOF_INT128__)
+#elif defined(__SIZEOF_INT128__) && !defined(NYQ_NO_INT128)
     const unsigned __int128 p = static_cast<unsigned __int128>(a) * b;
     return U128{static_cast<std::uint64_t>(p >> 64), static_cast<std::uint64_t>(p)};
 #else
@@ -1241,6 +1241,14 @@ NYQ_HD inline U128 mul_small(U128 a, std::uint64_t b) {
 
 /// `a / b` and `a % b` (`b != 0`) by binary long division: the rare wide paths only.
 NYQ_HD inline void divmod(U128 a, U128 b, U128& q, U128& r) {
+#if defined(__SIZEOF_INT128__) && !defined(__CUDA_ARCH__) && !defined(NYQ_NO_INT128)
+    const unsigned __int128 x = (static_cast<unsigned __int128>(a.hi) << 64) | a.lo;
+    const unsigned __int128 y = (static_cast<unsigned __int128>(b.hi) << 64) | b.lo;
+    const unsigned __int128 qq = x / y, rr = x % y;
+    q = U128{static_cast<std::uint64_t>(qq >> 64), static_cast<std::uint64_t>(qq)};
+    r = U128{static_cast<std::uint64_t>(rr >> 64), static_cast<std::uint64_t>(rr)};
+    return;
+#endif
     q = U128{0, 0};
     r = U128{0, 0};
     if (lt(a, b)) {
@@ -2104,6 +2112,481 @@ struct SobolSampler {
     NYQ_HD Float2 get_pixel_2d() {
         if (dim < 2) dim = 2;
         return Float2{{sample(0), sample(1)}};
+    }
+    NYQ_HD CameraSample camera_sample(std::uint32_t x, std::uint32_t y, std::uint32_t s) {
+        return detail::camera_by_parts(*this, x, y, s);
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+// RandomSampler (core/src/sampler/random.rs): PCG32 (O'Neill 2014) per pixel sample.
+
+/// PCG32 (XSH RR, 64-bit state) as `rand_pcg::Pcg32`: `make(state, stream)`, jump-ahead.
+struct Pcg32 {
+    std::uint64_t state = 0, increment = 1;
+    static constexpr std::uint64_t kMultiplier = 6364136223846793005ull;
+
+    NYQ_HD static Pcg32 make(std::uint64_t state, std::uint64_t stream) {
+        Pcg32 p;
+        p.increment = (stream << 1) | 1;
+        p.state = state + p.increment;
+        p.state = p.state * kMultiplier + p.increment;
+        return p;
+    }
+    NYQ_HD std::uint32_t next_u32() {
+        const std::uint64_t old = state;
+        state = state * kMultiplier + increment;
+        const std::uint32_t rot = static_cast<std::uint32_t>(old >> 59);
+        const std::uint32_t xsh = static_cast<std::uint32_t>(((old >> 18) ^ old) >> 27);
+        return (xsh >> rot) | (xsh << ((32 - rot) & 31));
+    }
+    /// Moves the generator `delta` steps ahead in O(log delta) (Brown 1994's jump-ahead).
+    NYQ_HD void advance(std::uint64_t delta) {
+        std::uint64_t acc_mult = 1, acc_plus = 0, cur_mult = kMultiplier, cur_plus = increment;
+        while (delta > 0) {
+            if (delta & 1) {
+                acc_mult *= cur_mult;
+                acc_plus = acc_plus * cur_mult + cur_plus;
+            }
+            cur_plus = (cur_mult + 1) * cur_plus;
+            cur_mult *= cur_mult;
+            delta /= 2;
+        }
+        state = acc_mult * state + acc_plus;
+    }
+};
+
+/// Independent uniform values: dimension d of sample i of pixel p is output `d mod 65536` of a
+/// PCG32 generator whose state hashes (p, i, seed). No table.
+struct RandomSampler {
+    std::uint32_t spp = 0;
+    std::uint64_t seed = 0;
+    std::uint64_t base = 0;
+    std::uint32_t dim = 0;
+    Pcg32 rng;
+    static constexpr std::uint64_t kStream = 0x2545f4914f6cdd1dull;
+
+    NYQ_HD RandomSampler() = default;
+    NYQ_HD RandomSampler(std::uint32_t spp_, std::uint64_t seed_) : spp(spp_), seed(seed_) {}
+    NYQ_HD bool valid() const { return spp != 0; }
+    NYQ_HD std::uint32_t samples_per_pixel() const { return spp; }
+
+    NYQ_HD Pcg32 at(std::uint32_t d) const {
+        Pcg32 r = Pcg32::make(base, kStream);
+        const std::uint32_t k = d & 0xffffu;
+        if (k != 0) r.advance(k);
+        return r;
+    }
+    NYQ_HD void start_pixel_sample(std::uint32_t px, std::uint32_t py, std::uint32_t sample_index,
+                                   std::uint32_t d) {
+        const std::uint64_t key = pixel_hash(px, py, seed, 0x72616e64);  // "rand"
+        base = mix64(key ^ (std::uint64_t{sample_index} * kGolden));
+        dim = d;
+        rng = at(d);
+    }
+    NYQ_HD float get_1d() {
+        const float v = unit_f32(rng.next_u32());
+        dim += 1;
+        if ((dim & 0xffffu) == 0) rng = at(0);
+        return v;
+    }
+    NYQ_HD Float2 get_2d() {
+        const float u = get_1d();
+        return Float2{{u, get_1d()}};
+    }
+    NYQ_HD Float2 get_pixel_2d() {
+        if (dim == 0) return get_2d();
+        Pcg32 r = at(0);
+        const float x = unit_f32(r.next_u32());
+        const Float2 p{{x, unit_f32(r.next_u32())}};
+        if (dim < 2) {
+            dim = 2;
+            rng = r;
+        }
+        return p;
+    }
+    NYQ_HD CameraSample camera_sample(std::uint32_t px, std::uint32_t py, std::uint32_t s) {
+        return detail::camera_by_parts(*this, px, py, s);
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+// StratifiedSampler (core/src/sampler/stratified.rs; pbrt's StratifiedSampler).
+
+/// Jittered (or cell-centred) strata, `x_samples × y_samples` per pixel, hash-permuted per
+/// dimension (`Permutation`). No table.
+struct StratifiedSampler {
+    std::uint32_t xs = 0, ys = 0, spp = 0;
+    std::uint64_t div_xs = 0;
+    float inv[3] = {};
+    bool jittered = true;
+    std::uint64_t seed = 0, pixel_key = 0, sample_key = 0;
+    std::uint32_t index = 0, dim = 0;
+
+    static constexpr std::uint64_t kDimStep = 0x9e3779b97f4a7c15ull;
+    static constexpr std::uint64_t kJitterStep = 0xc2b2ae3d27d4eb4full;
+
+    NYQ_HD StratifiedSampler() = default;
+    /// `jittered == false` is the `uniform` sampler (cell centres).
+    NYQ_HD StratifiedSampler(std::uint32_t x_samples, std::uint32_t y_samples, bool jittered_,
+                             std::uint64_t seed_)
+        : jittered(jittered_), seed(seed_) {
+        if (x_samples == 0 || y_samples == 0) return;
+        const std::uint64_t n = std::uint64_t{x_samples} * y_samples;
+        if (n >> 32 != 0) return;
+        xs = x_samples;
+        ys = y_samples;
+        spp = static_cast<std::uint32_t>(n);
+        div_xs = (~std::uint64_t{0} / x_samples) + 1;
+        inv[0] = 1.0f / static_cast<float>(xs);
+        inv[1] = 1.0f / static_cast<float>(ys);
+        inv[2] = 1.0f / static_cast<float>(spp);
+    }
+    NYQ_HD bool valid() const { return spp != 0; }
+    NYQ_HD std::uint32_t samples_per_pixel() const { return spp; }
+
+    NYQ_HD std::uint32_t dim_key(std::uint32_t d) const {
+        const std::uint64_t key = mix64(pixel_key ^ (std::uint64_t{d} * kDimStep));
+        return static_cast<std::uint32_t>(key) ^ static_cast<std::uint32_t>(key >> 32);
+    }
+    NYQ_HD std::uint32_t stratum(std::uint32_t d) const {
+        if (d == 0) return index < spp ? index : index % spp;
+        return permute(index, spp, dim_key(d));
+    }
+    NYQ_HD Float2 jitters(std::uint32_t d) const {
+        if (!jittered) return Float2{{0.5f, 0.5f}};
+        if (d == 2 || d == 3) {
+            const std::uint64_t h = mix64(sample_key ^ (2 * kJitterStep));
+            const auto part = [h](std::uint32_t shift) {
+                return static_cast<float>(static_cast<std::uint32_t>(h >> shift) & 0x1fffffu) *
+                       (1.0f / 2097152.0f);
+            };
+            return d == 2 ? Float2{{part(43), 0.5f}} : Float2{{part(22), part(1)}};
+        }
+        const std::uint64_t h = mix64(sample_key ^ (std::uint64_t{d} * kJitterStep));
+        return Float2{{unit_f32(static_cast<std::uint32_t>(h >> 32)),
+                       unit_f32(static_cast<std::uint32_t>(h))}};
+    }
+    NYQ_HD static float below_one(float x) { return x < kOneMinusEpsilon ? x : kOneMinusEpsilon; }
+    NYQ_HD Float2 value_2d(std::uint32_t d) const {
+        const std::uint32_t s = stratum(d);
+        const Float2 j = jitters(d);
+        std::uint32_t cx = 0, cy = s;
+        if (xs != 1) {
+            cy = static_cast<std::uint32_t>(detail::mul_hi(div_xs, s));
+            cx = s - cy * xs;
+        }
+        const float x = static_cast<float>(cx) + j.v[0];
+        const float y = static_cast<float>(cy) + j.v[1];
+        return Float2{{below_one(x * inv[0]), below_one(y * inv[1])}};
+    }
+
+    NYQ_HD void start_pixel_sample(std::uint32_t px, std::uint32_t py, std::uint32_t sample_index,
+                                   std::uint32_t d) {
+        pixel_key = pixel_hash(px, py, seed, 0x73747261);  // "stra"
+        index = sample_index;
+        sample_key = pixel_key ^ (std::uint64_t{sample_index} * kDimStep);
+        dim = d;
+    }
+    NYQ_HD float get_1d() {
+        const std::uint32_t d = dim;
+        dim = d + 1;
+        const float x = static_cast<float>(stratum(d)) + jitters(d).v[0];
+        return below_one(x * inv[2]);
+    }
+    NYQ_HD Float2 get_2d() {
+        const std::uint32_t d = dim;
+        dim = d + 2;
+        return value_2d(d);
+    }
+    NYQ_HD Float2 get_pixel_2d() {
+        if (dim < 2) dim = 2;
+        return value_2d(0);
+    }
+    NYQ_HD CameraSample camera_sample(std::uint32_t px, std::uint32_t py, std::uint32_t s) {
+        return detail::camera_by_parts(*this, px, py, s);
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+// Lattices (core/src/lattice/): 64-bit fixed-point coordinates, `frac` a wrapping add.
+
+/// A 64-bit fixed-point fraction's top 24 bits as a float (exact).
+NYQ_HD inline float fixed_to_f32(std::uint64_t x) {
+    return static_cast<float>(static_cast<std::uint32_t>(x >> 40)) * (1.0f / 16777216.0f);
+}
+
+namespace detail {
+
+NYQ_HD constexpr std::uint64_t gcd(std::uint64_t a, std::uint64_t b) {
+    while (b != 0) {
+        const std::uint64_t t = a % b;
+        a = b;
+        b = t;
+    }
+    return a;
+}
+
+/// `b^e mod n` (`n > 0`).
+NYQ_HD inline std::uint64_t pow_mod(std::uint64_t b, std::uint64_t e, std::uint64_t n) {
+    std::uint64_t r = 1 % n;
+    b %= n;
+    while (e > 0) {
+        if (e & 1) r = mul_mod(r, b, n);
+        b = mul_mod(b, b, n);
+        e >>= 1;
+    }
+    return r;
+}
+
+/// Fibonacci number F_m (`m ≤ 93`).
+NYQ_HD constexpr std::uint64_t fibonacci(std::uint32_t m) {
+    std::uint64_t a = 0, b = 1;
+    for (std::uint32_t i = 0; i < m; ++i) {
+        const std::uint64_t next = a + b;
+        a = b;
+        b = next;
+    }
+    return a;
+}
+
+/// The factor `1 + 2π²·B₂(x/n)` of the P₂ criterion, each product rounded alone (`mul_rn`).
+NYQ_HD inline double p2_factor(std::uint64_t x, std::uint64_t n) {
+    const double two_pi2 = 2.0 * 3.141592653589793 * 3.141592653589793;
+    const double t = static_cast<double>(x) / static_cast<double>(n);
+    const double b2 = (mul_rn(t, t) - t) + 1.0 / 6.0;
+    return 1.0 + mul_rn(two_pi2, b2);
+}
+
+/// P₂ of the two-dimensional Korobov lattice `(1, a)` of `n` points (Sloan & Joe 1994).
+NYQ_HD inline double p2_2d(std::uint64_t n, std::uint64_t a) {
+    double sum = 0.0;
+    std::uint64_t y = 0;
+    for (std::uint64_t x = 0; x < n; ++x) {
+        sum += mul_rn(p2_factor(x, n), p2_factor(y, n));
+        y += a;
+        if (y >= n) y -= n;
+    }
+    return sum / static_cast<double>(n) - 1.0;
+}
+
+/// The core's estimate of P₂ from the best approximations of a/n (continued fraction), cut off
+/// once it passes `bound`.
+NYQ_HD inline double best_approximation_sum(std::uint64_t n, std::uint64_t a, double bound) {
+    const auto term = [](std::uint64_t q, std::uint64_t r) {
+        const double t = mul_rn(static_cast<double>(q > 1 ? q : 1), static_cast<double>(r > 1 ? r : 1));
+        return 1.0 / mul_rn(t, t);
+    };
+    std::uint64_t q0 = 0, r0 = n, q1 = 1, r1 = a;
+    double sum = 0.0;
+    while (r1 != 0) {
+        sum += term(q1, r1);
+        const std::uint64_t c = r0 / r1;
+        for (std::uint64_t j = 1; j < c; ++j) {
+            if (sum > bound) return sum;
+            sum += term(q0 + j * q1, r0 - j * r1);
+        }
+        const std::uint64_t nq = q0 + c * q1, nr = r0 - c * r1;
+        q0 = q1;
+        r0 = r1;
+        q1 = nq;
+        r1 = nr;
+    }
+    return sum + term(q1, 0);
+}
+
+}  // namespace detail
+
+/// The Korobov multiplier `a` of `n` points the core's `Korobov::searched_2d(n)` picks (the
+/// minimiser of P₂ among the 16 best estimates); 0 when `n` is 0 or past 2²⁴. Host set-up: time
+/// about linear in `n` (a few ms at 2¹⁶ points).
+NYQ_HD inline std::uint64_t korobov_multiplier_2d(std::uint64_t n) {
+    if (n == 0 || n > (std::uint64_t{1} << 24)) return 0;
+    constexpr int kCandidates = 16;
+    const double inf = detail::bits_double(0x7ff0000000000000ull);
+    double est[kCandidates];
+    std::uint64_t mult[kCandidates];
+    for (int k = 0; k < kCandidates; ++k) {
+        est[k] = inf;
+        mult[k] = 0;
+    }
+    const std::uint64_t last = n / 2 > 1 ? n / 2 : 1;
+    for (std::uint64_t a = 1; a <= last; ++a) {
+        if (detail::gcd(a, n) != 1) continue;
+        const double e = detail::best_approximation_sum(n, a, est[kCandidates - 1]);
+        if (e < est[kCandidates - 1]) {
+            int at = 0;
+            while (at < kCandidates && est[at] <= e) ++at;
+            for (int k = kCandidates - 1; k > at; --k) {
+                est[k] = est[k - 1];
+                mult[k] = mult[k - 1];
+            }
+            est[at] = e;
+            mult[at] = a;
+        }
+    }
+    // By multiplier, then the smallest P₂ (ties to the smaller multiplier).
+    for (int i = 1; i < kCandidates; ++i)
+        for (int k = i; k > 0 && mult[k - 1] > mult[k]; --k) {
+            const std::uint64_t t = mult[k];
+            mult[k] = mult[k - 1];
+            mult[k - 1] = t;
+        }
+    double best = inf;
+    std::uint64_t pick = 1;
+    for (int k = 0; k < kCandidates; ++k) {
+        if (mult[k] == 0) continue;
+        const double p = detail::p2_2d(n, mult[k]);
+        if (p < best) {
+            best = p;
+            pick = mult[k];
+        }
+    }
+    return pick % n;
+}
+
+/// Roberts' R2 increments `α_j = ⌊φ₂^−(j+1) · 2⁶⁴⌋` (φ₂ the plastic number, the root of
+/// x³ = x + 1), as the core computes them (`Kronecker::new(2)`, libm's `pow`).
+constexpr std::uint64_t kR2Alpha[2] = {0xc13fa9a902a63000ull, 0x91e10da5c79e7800ull};
+
+/// A rank-1 lattice or R2 in 64-bit fixed point: the core's `FibonacciLattice`, `Korobov` and
+/// two-dimensional `Kronecker`, unrotated or Cranley–Patterson rotated (`hash2(seed, dim)`).
+struct Lattice {
+    enum Kind : std::uint32_t { Fibonacci = 0, Korobov = 1, R2 = 2 };
+    Kind kind = Fibonacci;
+    std::uint64_t n = 1, g = 0;  // points and generator (Fibonacci: F_{m−1}; Korobov: a)
+    std::uint32_t dims = 2;
+    bool rotated = false;
+    std::uint64_t seed = 0;
+
+    /// The Fibonacci lattice of the smallest Fibonacci number `≥ max(points, 3)` of points… as
+    /// `FibonacciLattice::at_least(points)` (`n == 0` when none fits 64 bits).
+    NYQ_HD static Lattice fibonacci_at_least(std::uint64_t points) {
+        Lattice l;
+        l.n = 0;
+        if (points == 0) return l;
+        for (std::uint32_t m = 3; m <= 93; ++m)
+            if (detail::fibonacci(m) >= points) {
+                l.n = detail::fibonacci(m);
+                l.g = detail::fibonacci(m - 1);
+                break;
+            }
+        return l;
+    }
+    NYQ_HD static Lattice korobov(std::uint64_t points, std::uint64_t a, std::uint32_t dims) {
+        Lattice l;
+        l.kind = Korobov;
+        l.n = points;
+        l.g = points > 0 ? a % points : 0;
+        l.dims = dims;
+        return l;
+    }
+    NYQ_HD static Lattice r2() {
+        Lattice l;
+        l.kind = R2;
+        l.n = 0;
+        return l;
+    }
+    NYQ_HD Lattice rotated_by(std::uint64_t s) const {
+        Lattice l = *this;
+        l.rotated = true;
+        l.seed = s;
+        return l;
+    }
+
+    /// Coordinate `dim` of point `index` in 64-bit fixed point.
+    NYQ_HD std::uint64_t fixed(std::uint64_t index, std::uint32_t dim) const {
+        if (kind == R2) {
+            const std::uint32_t d = dim % 2;
+            const std::uint64_t start = rotated ? hash2(seed, d) : std::uint64_t{1} << 63;
+            return start + index * kR2Alpha[d];
+        }
+        if (kind == Fibonacci) {
+            const std::uint64_t k = index % n;
+            const std::uint32_t d = dim % 2;
+            const std::uint64_t step = d == 0 ? k : detail::mul_mod(k, g, n);
+            return detail::fixed_ratio(step, n) + (rotated ? hash2(seed, d) : 0);
+        }
+        const std::uint32_t d = dim % dims;
+        const std::uint64_t gen = d == 0 ? 1 % n : d == 1 ? g : detail::pow_mod(g, d, n);
+        const std::uint64_t step = detail::mul_mod(index % n, gen, n);
+        return detail::fixed_ratio(step, n) + (rotated ? hash2(seed, d) : 0);
+    }
+    NYQ_HD float sample(std::uint64_t index, std::uint32_t dim) const {
+        return fixed_to_f32(fixed(index, dim));
+    }
+};
+
+/// A lattice per pixel (the core's `LatticeSampler`): sample k, dimensions 2j and 2j + 1, is
+/// point `k mod spp` of the set, shifted modulo 1 by `hash2(pixel_hash(p, j, seed), component)`.
+/// No table.
+struct LatticeSampler {
+    Lattice set;
+    std::uint32_t spp = 0;
+    std::uint64_t seed = 0;
+    std::uint32_t px = 0, py = 0, index = 0, dim = 0;
+
+    NYQ_HD LatticeSampler() = default;
+    /// `fibonacci`: spp rounded up to a Fibonacci number (at least 2).
+    NYQ_HD static LatticeSampler fibonacci(std::uint32_t spp, std::uint64_t seed) {
+        LatticeSampler s;
+        if (spp == 0) return s;
+        s.set = Lattice::fibonacci_at_least(spp > 2 ? spp : 2);
+        if (s.set.n == 0 || s.set.n >> 32 != 0) return s;
+        s.spp = static_cast<std::uint32_t>(s.set.n);
+        s.seed = seed;
+        return s;
+    }
+    /// `korobov`: `spp` points, the multiplier searched here (host set-up, see
+    /// `korobov_multiplier_2d`) unless given.
+    NYQ_HD static LatticeSampler korobov(std::uint32_t spp, std::uint64_t seed,
+                                         std::uint64_t multiplier = 0) {
+        LatticeSampler s;
+        if (spp == 0 || spp > (1u << 24)) return s;
+        const std::uint64_t a = multiplier != 0 ? multiplier : korobov_multiplier_2d(spp);
+        s.set = Lattice::korobov(spp, a, 2);
+        s.spp = spp;
+        s.seed = seed;
+        return s;
+    }
+    /// `r2`: the first spp points of R2.
+    NYQ_HD static LatticeSampler r2(std::uint32_t spp, std::uint64_t seed) {
+        LatticeSampler s;
+        s.set = Lattice::r2();
+        s.spp = spp;
+        s.seed = seed;
+        return s;
+    }
+    NYQ_HD bool valid() const { return spp != 0; }
+    NYQ_HD std::uint32_t samples_per_pixel() const { return spp; }
+
+    NYQ_HD float value(std::uint32_t d) const {
+        const std::uint64_t k = index % spp;
+        const std::uint32_t component = d % 2;
+        const std::uint64_t base = set.fixed(k, component);
+        const std::uint64_t shift = hash2(pixel_hash(px, py, d / 2, seed), component);
+        return fixed_to_f32(base + shift);
+    }
+    NYQ_HD void start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uint32_t s,
+                                   std::uint32_t d) {
+        px = x;
+        py = y;
+        index = s;
+        dim = d;
+    }
+    NYQ_HD float get_1d() {
+        const std::uint32_t d = dim;
+        dim = d + 1;
+        return value(d);
+    }
+    NYQ_HD Float2 get_2d() {
+        const std::uint32_t d = dim;
+        dim = d + 2;
+        return Float2{{value(d), value(d + 1)}};
+    }
+    NYQ_HD Float2 get_pixel_2d() {
+        if (dim < 2) dim = 2;
+        return Float2{{value(0), value(1)}};
     }
     NYQ_HD CameraSample camera_sample(std::uint32_t x, std::uint32_t y, std::uint32_t s) {
         return detail::camera_by_parts(*this, x, y, s);

@@ -237,28 +237,137 @@ bool sobol_capi(Rng& rng) {
     return true;
 }
 
+/// `nyq_sequence_fill` of `seq` (whole points, every dimension) against the header's
+/// `sample(index, dim)`, until `values` values are compared; `points` is the set's point count
+/// (0: unbounded). Runs start at random indices, small and large.
+template <class F>
+bool sequence_capi(const char* label, const NyqSequence& seq, std::uint64_t points, F sample,
+                   std::uint32_t values, Rng& rng) {
+    static float buf[4096];
+    const std::uint32_t dims = seq.dims;
+    std::uint64_t run = 4096 / dims;
+    if (points != 0 && run > points) run = points;
+    for (std::uint32_t done = 0, n = 0; done < values; ++n) {
+        std::uint64_t first = (n & 1) ? rng.next() >> (n & 2 ? 0 : 32) : rng.below(4096);
+        if (points != 0) first %= points - run + 1;
+        else if (first > ~std::uint64_t{0} - run) first -= run;
+        std::uint64_t written = 0;
+        if (!ok(nyq_sequence_fill(&seq, first, dims, buf, static_cast<std::size_t>(run * dims),
+                                  &written),
+                label))
+            return false;
+        for (std::uint64_t k = 0; k < run; ++k)
+            for (std::uint32_t d = 0; d < dims; ++d) {
+                const float want = buf[k * dims + d];
+                const float got = sample(first + k, d);
+                if (!same(want, got)) {
+                    std::printf("MISMATCH %s (dims %" PRIu32 " points %" PRIu64 " seed %" PRIu64
+                                "): index %" PRIu64 " dim %" PRIu32 " core %08" PRIx32
+                                " header %08" PRIx32 "\n",
+                                label, dims, seq.points, seq.seed, first + k, d, bits(want),
+                                bits(got));
+                    return false;
+                }
+            }
+        done += static_cast<std::uint32_t>(run * dims);
+        g_total += run * dims;
+    }
+    return true;
+}
+
 bool sobol_sequence_capi(Rng& rng) {
-    Tally t("Sobol sequence (C API nyq_sequence_sample)");
+    Tally t("Sobol sequence (C API nyq_sequence_fill)");
     for (std::uint32_t k = 0; k < 4; ++k) {
         NyqSequence seq{};
         seq.kind = k < 2 ? NYQ_SEQ_SOBOL : NYQ_SEQ_SOBOL_SCRAMBLED;
-        seq.dims = 1024;
+        seq.dims = k % 2 ? 1024 : 3;
         seq.seed = k < 3 ? k : rng.next();
         const Sobol<1024> s = k < 2 ? Sobol<1024>::plain() : Sobol<1024>::with_scramble(seq.seed);
-        for (std::uint32_t n = 0; n < 260000; ++n) {
-            const std::uint64_t index = (n & 1) ? rng.next() >> 32 : rng.below(4096);
-            const std::uint32_t dim = rng.below(1024);
-            float want = 0;
-            if (!ok(nyq_sequence_sample(&seq, index, dim, &want), "nyq_sequence_sample")) return false;
-            const float got = s.sample(index, dim);
-            if (!same(want, got)) {
-                std::printf("MISMATCH Sobol kind %" PRIu32 " seed %" PRIu64 ": index %" PRIu64
-                            " dim %" PRIu32 " core %08" PRIx32 " header %08" PRIx32 "\n",
-                            seq.kind, seq.seed, index, dim, bits(want), bits(got));
-                return false;
-            }
+        if (!sequence_capi("Sobol", seq, std::uint64_t{1} << 32,
+                           [&](std::uint64_t i, std::uint32_t d) { return s.sample(i, d); }, 260000,
+                           rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+bool random_capi(Rng& rng) {
+    Tally t("random (C API)");
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const std::uint64_t seed = k < 2 ? k : rng.next();
+        const std::uint32_t spp = k % 2 ? 16 : 1;
+        if (!capi_sampler("random", 8, 8, spp, seed, RandomSampler(spp, seed), 9000, rng)) return false;
+    }
+    t.print();
+    return true;
+}
+
+bool stratified_capi(Rng& rng) {
+    Tally t("stratified + uniform (C API)");
+    const std::uint32_t sides[4] = {1, 4, 7, 32};
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const std::uint64_t seed = k < 2 ? k : rng.next();
+        const std::uint32_t side = sides[k % 4];
+        const bool jittered = k < 4 || k == 7;
+        if (!capi_sampler(jittered ? "stratified" : "uniform", 8, 8, side * side, seed,
+                          StratifiedSampler(side, side, jittered, seed), 9000, rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+bool lattice_capi(Rng& rng) {
+    const char* names[3] = {"fibonacci", "r2", "korobov"};
+    const std::uint32_t spps[4] = {1, 20, 64, 1000};
+    for (std::uint32_t which = 0; which < 3; ++which) {
+        char label[64];
+        std::snprintf(label, sizeof label, "%s (C API)", names[which]);
+        Tally t(label);
+        for (std::uint32_t k = 0; k < 8; ++k) {
+            const std::uint64_t seed = k < 2 ? k : rng.next();
+            const std::uint32_t spp = spps[k % 4];
+            const LatticeSampler s = which == 0   ? LatticeSampler::fibonacci(spp, seed)
+                                     : which == 1 ? LatticeSampler::r2(spp, seed)
+                                                  : LatticeSampler::korobov(spp, seed);
+            if (!capi_sampler(names[which], 8, 8, spp, seed, s, 9000, rng)) return false;
         }
-        g_total += 260000;
+        t.print();
+    }
+    return true;
+}
+
+bool lattice_sequences_capi(Rng& rng) {
+    Tally t("Fibonacci, R2, Korobov sequences (C API nyq_sequence_fill)");
+    for (std::uint32_t k = 0; k < 4; ++k) {
+        NyqSequence seq{};
+        seq.kind = NYQ_SEQ_FIBONACCI;
+        seq.dims = 2;
+        seq.points = detail::fibonacci(10 + 20 * k);
+        seq.seed = k % 2 ? rng.next() : 0;
+        Lattice l = Lattice::fibonacci_at_least(seq.points);
+        if (seq.seed != 0) l = l.rotated_by(seq.seed);
+        if (!sequence_capi("Fibonacci", seq, seq.points,
+                           [&](std::uint64_t i, std::uint32_t d) { return l.sample(i, d); }, 100000,
+                           rng))
+            return false;
+        seq.kind = NYQ_SEQ_RD;
+        seq.points = 0;
+        Lattice r = Lattice::r2();
+        if (seq.seed != 0) r = r.rotated_by(seq.seed);
+        if (!sequence_capi("R2", seq, 0, [&](std::uint64_t i, std::uint32_t d) { return r.sample(i, d); },
+                           100000, rng))
+            return false;
+        seq.kind = NYQ_SEQ_KOROBOV;
+        seq.dims = k % 2 ? 1024 : 8;
+        seq.points = k < 2 ? 1021 : (std::uint64_t{1} << 40) + 15;
+        seq.seed = k < 2 ? 76 : 0x1234567891ull;  // the multiplier, coprime to the points
+        const Lattice kor = Lattice::korobov(seq.points, seq.seed, seq.dims);
+        if (!sequence_capi("Korobov", seq, seq.points,
+                           [&](std::uint64_t i, std::uint32_t d) { return kor.sample(i, d); }, 100000,
+                           rng))
+            return false;
     }
     t.print();
     return true;
@@ -398,7 +507,9 @@ int main(int argc, char** argv) {
     }
     Rng rng{0x6e7971756973740aull};
     const bool good = owen_sobol_capi(rng) && zsobol_capi(rng) && sobol_capi(rng) &&
-                      sobol_sequence_capi(rng) && expected_file(argv[1]);
+                      sobol_sequence_capi(rng) && random_capi(rng) &&
+                      stratified_capi(rng) && lattice_capi(rng) && lattice_sequences_capi(rng) &&
+                      expected_file(argv[1]);
     std::printf("%s: %" PRIu64 " values compared\n", good ? "parity ok" : "parity FAILED", g_total);
     return good ? 0 : 1;
 }
