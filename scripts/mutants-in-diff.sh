@@ -2,14 +2,23 @@
 # Mutation testing of the lines a change touches (docs/mutation.md).
 #
 #   scripts/mutants-in-diff.sh [--install] [--in-place] [BASE]
+#   scripts/mutants-in-diff.sh --record [COMMIT]
 #
 # Diffs HEAD against BASE and runs `cargo mutants --in-diff` on the changed Rust files of the
-# core and the film, one file at a time, each against the tests scripts/mutants-modules.txt
-# names for it (a file not listed there: the lib tests under its module path, or all of its
-# package's lib tests when none match). BASE defaults to `git merge-base HEAD origin/main`; when
-# that is HEAD itself (a clone of main), to HEAD's first parent, so the change that landed last is
-# the one tested. Missed mutants listed in scripts/mutants-equivalent.txt are forgiven; any other
-# missed mutant fails the script.
+# core and the film, one file at a time, the files with the most added or changed lines first,
+# each against the tests scripts/mutants-modules.txt names for it (a file not listed there: the
+# lib tests under its module path, or all of its package's lib tests when none match). Missed
+# mutants listed in scripts/mutants-equivalent.txt are forgiven; any other missed mutant fails
+# the script.
+#
+# BASE defaults to the commit .ci/last-tested names, the last commit CI passed on, so every
+# commit since, not only the last one, is tested. When HEAD has no such file, or it names a
+# commit that is not in the clone or not an ancestor of HEAD, the script says so and falls back
+# to `git merge-base HEAD origin/main`, or, when that is HEAD itself (a clone of main), to
+# HEAD's first parent (the change that landed last).
+#
+#   --record    write COMMIT (default HEAD) into .ci/last-tested, after .ci/run passed on it;
+#               commit the file (its commit changes no source, so the next run starts there).
 #
 #   --install   install cargo-mutants (a debug build, within the time box) when it is missing and there
 #               is something to test; without it a missing cargo-mutants is SKIPPED.
@@ -26,7 +35,8 @@
 # target/mutants-diff).
 #
 # Exit status: 0 when nothing was missed (or there was nothing to test), 2 when a mutant outside
-# the equivalent list was missed, 1 on any other failure. The last line starts with
+# the equivalent list was missed, 3 when the time box left more than half of the change's
+# mutants untested (and none was missed), 1 on any other failure. The last line starts with
 # MUTANTS_IN_DIFF and gives the counts.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -42,7 +52,18 @@ while [ $# -gt 0 ]; do
     case $1 in
         --install) install=1 ;;
         --in-place) in_place=1 ;;
-        -*) echo "unknown option '$1' (--install, --in-place)" >&2; exit 1 ;;
+        --record)
+            commit=$(git rev-parse --verify "${2:-HEAD}^{commit}")
+            {
+                echo "# The last commit .ci/run passed on, its mutation stage included. That stage diffs"
+                echo "# against it (scripts/mutants-in-diff.sh); record the next with"
+                echo "# scripts/mutants-in-diff.sh --record COMMIT (docs/mutation.md)."
+                echo "$commit"
+            } >.ci/last-tested
+            echo ".ci/last-tested: $commit"
+            exit 0
+            ;;
+        -*) echo "unknown option '$1' (--install, --in-place, --record)" >&2; exit 1 ;;
         *) break ;;
     esac
     shift
@@ -56,24 +77,33 @@ OPT_LEVEL=${MUTANTS_OPT_LEVEL:-0}
 OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants-diff}
 SOURCES=(core/src std-film/src)
 
+# strip_position, equivalent_names, count, diff_base.
+. scripts/mutants-common.sh
+
 if [ $# -gt 0 ]; then
     base=$(git rev-parse --verify "$1^{commit}")
-elif base=$(git merge-base HEAD origin/main 2>/dev/null) && [ "$base" != "$(git rev-parse HEAD)" ]; then
-    :
-elif base=$(git rev-parse --verify -q 'HEAD^1'); then
-    :
+    echo "base ${base:0:12}: given"
 else
-    echo "SKIPPED: no origin/main to diff against and HEAD has no parent"
-    exit 0
+    diff_base
+    if [ -z "$BASE" ]; then
+        echo "SKIPPED: $BASE_WHY"
+        exit 0
+    fi
+    base=$BASE
+    echo "base ${base:0:12}: $BASE_WHY"
 fi
+echo "commits tested: $(git rev-list --count "$base..HEAD") (${base:0:12}..$(git rev-parse --short=12 HEAD))"
 
-mapfile -t files < <(git diff --name-only --diff-filter=AM "$base" HEAD -- "${SOURCES[@]}" | grep '\.rs$' || true)
+# The changed files, most added or changed lines first (the time box then spends itself where
+# the change is); ties in path order.
+mapfile -t files < <(git diff --numstat --diff-filter=AM "$base" HEAD -- "${SOURCES[@]}" |
+    awk -F'\t' '$3 ~ /\.rs$/ { print $1 "\t" $3 }' | sort -t$'\t' -k1,1nr -k2,2 | cut -f2)
 if [ ${#files[@]} -eq 0 ]; then
     echo "no change to ${SOURCES[*]} between ${base:0:12} and HEAD: nothing to mutate"
     echo "MUTANTS_IN_DIFF 0 mutants (no source change)"
     exit 0
 fi
-echo "changed since ${base:0:12}: ${files[*]}"
+echo "changed since ${base:0:12}, most changed lines first: ${files[*]}"
 
 if ! cargo mutants --version >/dev/null 2>&1; then
     if [ $install = 0 ]; then
@@ -115,8 +145,6 @@ diff="$OUT/change.diff"
 # what the copy cargo-mutants makes holds (uncommitted edits included), which the diff must match.
 git diff "$base" -- "${SOURCES[@]}" >"$diff"
 
-# strip_position, equivalent_names, count.
-. scripts/mutants-common.sh
 config="--config=profile.dev.package.nyquist.opt-level=$OPT_LEVEL"
 
 # The test filter for a file not in the modules list: its module path, `core/src/a/b.rs` ->
@@ -130,6 +158,7 @@ module_filter() {
 
 total=0 tested=0 caught=0 missed=0 unviable=0 timeouts=0 equivalent=0 unreached=0
 status=0
+not_reached=()
 for file in "${files[@]}"; do
     case $file in
         core/*) package=nyquist ;;
@@ -151,6 +180,7 @@ for file in "${files[@]}"; do
     if [ "$left" -le 0 ]; then
         echo "== $file: $n mutants not tested (time box of ${BOX} s used up)"
         unreached=$((unreached + n))
+        not_reached+=("$file ($n of $n)")
         continue
     fi
     if [ -n "$filters" ] && [ -z "$line" ]; then
@@ -181,6 +211,7 @@ for file in "${files[@]}"; do
     caught=$((caught + c)) missed=$((missed + m)) unviable=$((unviable + u)) timeouts=$((timeouts + t))
     tested=$((tested + c + m + u + t))
     unreached=$((unreached + n - (c + m + u + t)))
+    [ $((c + m + u + t)) -ge "$n" ] || not_reached+=("$file ($((n - (c + m + u + t))) of $n)")
     if [ -s "$res/missed.txt" ]; then
         e=$(strip_position <"$res/missed.txt" | grep -c -F -x -f <(equivalent_names) || true)
         equivalent=$((equivalent + e))
@@ -196,7 +227,13 @@ for file in "${files[@]}"; do
         sed 's/^/    /' "$res/timeout.txt"
     fi
 done
-[ "$unreached" -eq 0 ] ||
-    echo "time box: $unreached of $total mutants were not tested; run scripts/mutants-in-diff.sh ${base:0:12} with a larger MUTANTS_DIFF_SECONDS for them"
-echo "MUTANTS_IN_DIFF $tested of $total mutants tested in $((SECONDS - begin)) s: caught $caught, missed $missed ($equivalent listed equivalent), unviable $unviable, timeouts $timeouts"
+if [ "$unreached" -gt 0 ]; then
+    echo "time box: $unreached of $total mutants were not tested, in: ${not_reached[*]}"
+    echo "    run scripts/mutants-in-diff.sh ${base:0:12} with a larger MUTANTS_DIFF_SECONDS for them"
+    if [ $((2 * unreached)) -gt "$total" ] && [ $status = 0 ]; then
+        echo "more than half of the change's mutants were left untested"
+        status=3
+    fi
+fi
+echo "MUTANTS_IN_DIFF $tested of $total mutants tested in $((SECONDS - begin)) s: caught $caught, missed $missed ($equivalent listed equivalent), unviable $unviable, timeouts $timeouts, not reached $unreached"
 exit $status
