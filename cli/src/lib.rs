@@ -32,5 +32,7 @@ pub mod progress;
 pub mod raster;
 pub mod render;
 pub mod scene;
+#[cfg(not(target_family = "wasm"))]
+pub mod shaders;
 pub mod svg;
 pub mod web;

@@ -5,7 +5,7 @@
 #![forbid(unsafe_code)]
 
 use clap::{Parser, Subcommand};
-use nyquist_cli::{analyze, compare, converge, filter, mask, points, render, web};
+use nyquist_cli::{analyze, compare, converge, filter, mask, points, render, shaders, web};
 use std::process::ExitCode;
 
 /// Sampling and reconstruction for image synthesis: point sets, filters, test renders,
@@ -67,6 +67,11 @@ enum Command {
     ///
     /// Example: nyquist mask --size 128 --channels 4 -o mask.png -o mask.exr
     Mask(mask::MaskArgs),
+    /// Write the samplers as shader code: WGSL, and GLSL 450, HLSL, MSL and SPIR-V emitted from
+    /// it (bit for bit the library's values; docs/gpu.md).
+    ///
+    /// Example: nyquist shaders --lang glsl,spirv -o shaders/
+    Shaders(shaders::ShadersArgs),
     /// Serve the browser explorer (points, spectra, aliasing, filters and convergence computed
     /// in the page by the library compiled to WebAssembly) on a loopback address.
     ///
@@ -92,6 +97,7 @@ fn main() -> ExitCode {
         Command::Analyze(args) => analyze::run(args),
         Command::Converge(args) => converge::run(args),
         Command::Mask(args) => mask::run(args),
+        Command::Shaders(args) => shaders::run(args),
         Command::Web(args) => web::run(args),
     };
     match result {

@@ -1,0 +1,546 @@
+//! Runs nyquist-gpu's `nyq_fill` kernel through wgpu on whatever adapter the machine has and
+//! computes the same requests with the core on the CPU, so that the two can be compared bit
+//! for bit.
+//!
+//! - [`Gpu::new`] takes the first adapter wgpu offers (a real GPU, or Mesa's software Vulkan,
+//!   lavapipe, which is what CI has); `NYQUIST_GPU_BACKENDS` (e.g. `vulkan`, `gl`) narrows the
+//!   search as wgpu's `WGPU_BACKEND` does.
+//! - [`Gpu::pipeline`] builds the kernel from one of the checked-in shaders ([`Source`]): the
+//!   WGSL itself, or the emitted SPIR-V or GLSL loaded back through wgpu's front ends.
+//! - [`Job`] names a sampler or sequence and its parameters; [`Job::cpu`] is the core's answer
+//!   to one request, [`Gpu::run`] the shader's answers to many.
+
+use std::borrow::Cow;
+
+use nyquist::sampler::{OwenSobolSampler, Sampler, ZSobolSampler};
+use nyquist::scramble::Scramble;
+use nyquist::sequence::{OwenSobol, Sequence, Sobol};
+use nyquist_gpu::WORDS_PER_REQUEST;
+
+/// A request: `[pixel.x, pixel.y, sample index, dimension]` (for a sequence: the point index in
+/// the third word and the first dimension in the fourth).
+pub type Request = [u32; 4];
+
+/// The words the kernel writes for one request.
+pub type Answer = [u32; WORDS_PER_REQUEST];
+
+/// A checked-in shader the kernel is built from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Source {
+    /// `gpu/shaders/nyquist.wgsl`.
+    Wgsl,
+    /// `gpu/shaders/nyquist.spv`, through wgpu's SPIR-V front end.
+    SpirV,
+    /// `gpu/shaders/nyquist.comp.glsl`, through wgpu's GLSL front end.
+    Glsl,
+}
+
+impl Source {
+    /// Every source.
+    pub const ALL: [Source; 3] = [Source::Wgsl, Source::SpirV, Source::Glsl];
+
+    /// The source's name in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            Source::Wgsl => "WGSL",
+            Source::SpirV => "SPIR-V",
+            Source::Glsl => "GLSL",
+        }
+    }
+}
+
+const WGSL_FILE: &str = include_str!("../../shaders/nyquist.wgsl");
+const SPIRV_FILE: &[u8] = include_bytes!("../../shaders/nyquist.spv");
+const GLSL_FILE: &str = include_str!("../../shaders/nyquist.comp.glsl");
+
+/// A sampler or sequence with its parameters: what one dispatch of the kernel computes.
+#[derive(Clone, Debug)]
+pub enum Job {
+    /// `OwenSobolSampler::new(spp, seed).with_frame(frame)`.
+    OwenSobolSampler {
+        /// Samples per pixel (reported only; every index is a new point).
+        spp: u32,
+        /// The seed.
+        seed: u64,
+        /// The animation frame.
+        frame: u32,
+    },
+    /// `ZSobolSampler::new(resolution, spp, scramble, seed)`.
+    ZSobolSampler {
+        /// Image size.
+        resolution: [u32; 2],
+        /// Samples per pixel, rounded up to a power of two.
+        spp: u32,
+        /// The values' scramble.
+        scramble: Scramble,
+        /// The seed.
+        seed: u64,
+    },
+    /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
+    Sobol {
+        /// Dimensions, 1..=1024.
+        dims: u32,
+        /// The digital shift's seed, if any.
+        seed: Option<u64>,
+    },
+    /// `OwenSobol::new(dims, seed)`.
+    OwenSobol {
+        /// Dimensions, 1..=1024.
+        dims: u32,
+        /// The seed.
+        seed: u64,
+    },
+}
+
+/// The kernel's uniform block (`NyqFillJob` in fill.wgsl), 48 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, Default, bytemuck::Pod, bytemuck::Zeroable)]
+struct FillJob {
+    kind: u32,
+    scramble: u32,
+    spp: u32,
+    frame: u32,
+    seed: [u32; 2],
+    resolution: [u32; 2],
+    dims: u32,
+    implicit: u32,
+    first: u32,
+    count: u32,
+}
+
+fn seed_words(seed: u64) -> [u32; 2] {
+    [seed as u32, (seed >> 32) as u32]
+}
+
+fn scramble_code(s: Scramble) -> u32 {
+    match s {
+        Scramble::None => 0,
+        Scramble::PermuteDigits => 1,
+        Scramble::FastOwen => 2,
+        Scramble::Owen => 3,
+    }
+}
+
+impl Job {
+    /// A short name for reports.
+    pub fn name(&self) -> String {
+        match self {
+            Job::OwenSobolSampler { .. } => "owen-sobol sampler".into(),
+            Job::ZSobolSampler { scramble, .. } => format!("zsobol sampler ({})", scramble.name()),
+            Job::Sobol { seed: None, .. } => "sobol".into(),
+            Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
+            Job::OwenSobol { .. } => "owen-sobol".into(),
+        }
+    }
+
+    fn uniform(&self) -> FillJob {
+        match *self {
+            Job::OwenSobolSampler { spp, seed, frame } => FillJob {
+                kind: 0,
+                spp,
+                frame,
+                seed: seed_words(seed),
+                ..FillJob::default()
+            },
+            Job::ZSobolSampler {
+                resolution,
+                spp,
+                scramble,
+                seed,
+            } => FillJob {
+                kind: 1,
+                scramble: scramble_code(scramble),
+                spp,
+                seed: seed_words(seed),
+                resolution,
+                ..FillJob::default()
+            },
+            Job::Sobol { dims, seed } => FillJob {
+                kind: 16,
+                scramble: u32::from(seed.is_some()),
+                seed: seed_words(seed.unwrap_or(0)),
+                dims,
+                ..FillJob::default()
+            },
+            Job::OwenSobol { dims, seed } => FillJob {
+                kind: 17,
+                seed: seed_words(seed),
+                dims,
+                ..FillJob::default()
+            },
+        }
+    }
+
+    /// The core's answers to `requests`, in order (the kernel's layout: see fill.wgsl).
+    ///
+    /// # Panics
+    /// If the job's parameters are ones the core rejects (the caller's defect).
+    pub fn cpu(&self, requests: &[Request]) -> Vec<Answer> {
+        match *self {
+            Job::OwenSobolSampler { spp, seed, frame } => {
+                let s = OwenSobolSampler::new(spp, seed)
+                    .expect("valid sampler")
+                    .with_frame(frame);
+                sampler_answers(s, requests)
+            }
+            Job::ZSobolSampler {
+                resolution,
+                spp,
+                scramble,
+                seed,
+            } => {
+                let s = ZSobolSampler::new(resolution, spp, scramble, seed).expect("valid sampler");
+                sampler_answers(s, requests)
+            }
+            Job::Sobol { dims, seed } => {
+                let s = match seed {
+                    None => Sobol::new(dims),
+                    Some(seed) => Sobol::with_scramble(dims, seed),
+                }
+                .expect("valid sequence");
+                requests
+                    .iter()
+                    .map(|&[_, _, index, dim]| {
+                        let mut a = [0; WORDS_PER_REQUEST];
+                        for k in 0..4 {
+                            let d = dim.wrapping_add(k as u32);
+                            a[k] = s.sample_u32(u64::from(index), d);
+                            a[4 + k] = s.sample(u64::from(index), d).to_bits();
+                        }
+                        a
+                    })
+                    .collect()
+            }
+            Job::OwenSobol { dims, seed } => {
+                let s = OwenSobol::new(dims, seed).expect("valid sequence");
+                requests
+                    .iter()
+                    .map(|&[_, _, index, dim]| {
+                        let mut a = [0; WORDS_PER_REQUEST];
+                        let four = s.sample_4d(index, dim);
+                        for k in 0..4 {
+                            a[k] = s.sample_u32(index, dim.wrapping_add(k as u32));
+                            a[4 + k] = four[k].to_bits();
+                        }
+                        a
+                    })
+                    .collect()
+            }
+        }
+    }
+}
+
+/// A pixel sampler's answers: the camera sample, then `start_pixel_sample(pixel, index, dim)`,
+/// one `get_1d` and one `get_2d`.
+fn sampler_answers<S: Sampler>(mut s: S, requests: &[Request]) -> Vec<Answer> {
+    requests
+        .iter()
+        .map(|&[x, y, index, dim]| {
+            let c = s.camera_sample([x, y], index);
+            s.start_pixel_sample([x, y], index, dim);
+            let one = s.get_1d();
+            let two = s.get_2d();
+            [
+                c.p_film[0].to_bits(),
+                c.p_film[1].to_bits(),
+                c.time.to_bits(),
+                c.lens[0].to_bits(),
+                c.lens[1].to_bits(),
+                one.to_bits(),
+                two[0].to_bits(),
+                two[1].to_bits(),
+            ]
+        })
+        .collect()
+}
+
+/// A device, its queue and the Sobol matrices uploaded once.
+#[derive(Debug)]
+pub struct Gpu {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    info: wgpu::AdapterInfo,
+    matrices: wgpu::Buffer,
+}
+
+/// The kernel built from one [`Source`].
+#[derive(Debug)]
+pub struct Pipeline {
+    pipeline: wgpu::ComputePipeline,
+    source: Source,
+}
+
+impl Pipeline {
+    /// The source it was built from.
+    pub fn source(&self) -> Source {
+        self.source
+    }
+}
+
+/// Requests per dispatch: 2¹⁶ (1024 workgroups of 64).
+pub const CHUNK: usize = 1 << 16;
+
+impl Gpu {
+    /// The first adapter wgpu finds (software ones included), or why there is none.
+    ///
+    /// # Errors
+    /// A sentence saying what failed: no adapter, or the device request.
+    pub fn new() -> Result<Gpu, String> {
+        let mut desc = wgpu::InstanceDescriptor::new_without_display_handle_from_env();
+        if let Ok(names) = std::env::var("NYQUIST_GPU_BACKENDS") {
+            desc.backends = wgpu::Backends::from_comma_list(&names);
+        }
+        let instance = wgpu::Instance::new(desc);
+        let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions {
+            power_preference: wgpu::PowerPreference::HighPerformance,
+            force_fallback_adapter: false,
+            compatible_surface: None,
+            apply_limit_buckets: false,
+        }))
+        .map_err(|e| format!("no GPU adapter: {e}"))?;
+        let info = adapter.get_info();
+        let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
+            label: Some("nyquist parity"),
+            required_features: wgpu::Features::empty(),
+            required_limits: wgpu::Limits::downlevel_defaults(),
+            ..Default::default()
+        }))
+        .map_err(|e| format!("adapter {} refused a device: {e}", info.name))?;
+        let words = nyquist_gpu::sobol_matrices();
+        let matrices = device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("nyq_sobol_matrices"),
+            size: (words.len() * 4) as u64,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        queue.write_buffer(&matrices, 0, bytemuck::cast_slice(&words));
+        Ok(Gpu {
+            device,
+            queue,
+            info,
+            matrices,
+        })
+    }
+
+    /// The adapter: name, backend and device type, for reports.
+    pub fn adapter(&self) -> String {
+        format!(
+            "{} ({:?}, {:?}, driver {} {})",
+            self.info.name,
+            self.info.backend,
+            self.info.device_type,
+            self.info.driver,
+            self.info.driver_info
+        )
+    }
+
+    /// Whether the adapter is a CPU (a software rasteriser such as lavapipe): its figures are
+    /// CPU figures.
+    pub fn is_cpu(&self) -> bool {
+        self.info.device_type == wgpu::DeviceType::Cpu
+    }
+
+    /// The kernel from `source`.
+    ///
+    /// # Errors
+    /// The front end's or the driver's message, if the shader does not build.
+    pub fn pipeline(&self, source: Source) -> Result<Pipeline, String> {
+        let shader = match source {
+            Source::Wgsl => wgpu::ShaderSource::Wgsl(Cow::Borrowed(WGSL_FILE)),
+            Source::SpirV => {
+                let words: Vec<u32> = SPIRV_FILE
+                    .chunks_exact(4)
+                    .map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]]))
+                    .collect();
+                wgpu::ShaderSource::SpirV(Cow::Owned(words))
+            }
+            Source::Glsl => wgpu::ShaderSource::Glsl {
+                shader: Cow::Borrowed(GLSL_FILE),
+                stage: wgpu::naga::ShaderStage::Compute,
+                defines: &[],
+            },
+        };
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let module = self
+            .device
+            .create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(source.name()),
+                source: shader,
+            });
+        let pipeline = self
+            .device
+            .create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+                label: Some(source.name()),
+                layout: None,
+                module: &module,
+                // GLSL has one entry point, `main`.
+                entry_point: Some(match source {
+                    Source::Glsl => "main",
+                    _ => nyquist_gpu::ENTRY_POINT,
+                }),
+                compilation_options: Default::default(),
+                cache: None,
+            });
+        if let Some(e) = pollster::block_on(scope.pop()) {
+            return Err(format!("{}: {e}", source.name()));
+        }
+        Ok(Pipeline { pipeline, source })
+    }
+
+    /// The kernel's answers to `requests` for `job`, one dispatch per [`CHUNK`] requests.
+    pub fn run(&self, pipeline: &Pipeline, job: &Job, requests: &[Request]) -> Vec<Answer> {
+        let mut out = Vec::with_capacity(requests.len());
+        for chunk in requests.chunks(CHUNK) {
+            let mut uniform = job.uniform();
+            uniform.count = chunk.len() as u32;
+            let words = self.dispatch(pipeline, uniform, bytemuck::cast_slice(chunk));
+            out.extend(
+                words
+                    .chunks_exact(WORDS_PER_REQUEST)
+                    .map(|w| <Answer>::try_from(w).expect("whole answers")),
+            );
+        }
+        out
+    }
+
+    /// The camera samples of a whole image (`implicit` requests: sample `i mod spp` of pixel
+    /// `⌊i / spp⌋`, row-major, dimension 5), `count` requests from request `first`.
+    pub fn run_image(
+        &self,
+        pipeline: &Pipeline,
+        job: &Job,
+        resolution: [u32; 2],
+        spp: u32,
+        first: u32,
+        count: u32,
+    ) -> Vec<Answer> {
+        let mut uniform = job.uniform();
+        uniform.resolution = resolution;
+        uniform.spp = spp;
+        uniform.implicit = 1;
+        uniform.first = first;
+        uniform.count = count;
+        // The request buffer is bound but not read: one dummy request.
+        let words = self.dispatch(pipeline, uniform, &[0u32; 4]);
+        words
+            .chunks_exact(WORDS_PER_REQUEST)
+            .map(|w| <Answer>::try_from(w).expect("whole answers"))
+            .collect()
+    }
+
+    /// One dispatch of `uniform.count` requests; returns the values buffer.
+    fn dispatch(&self, pipeline: &Pipeline, uniform: FillJob, requests: &[u32]) -> Vec<u32> {
+        use wgpu::util::DeviceExt;
+        let count = uniform.count as usize;
+        let job = self
+            .device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("job"),
+                contents: bytemuck::bytes_of(&uniform),
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
+        let reqs = self
+            .device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("requests"),
+                contents: bytemuck::cast_slice(requests),
+                usage: wgpu::BufferUsages::STORAGE,
+            });
+        let size = (count.max(1) * WORDS_PER_REQUEST * 4) as u64;
+        let values = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("values"),
+            size,
+            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            mapped_at_creation: false,
+        });
+        let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let layout = pipeline.pipeline.get_bind_group_layout(0);
+        let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("nyq_fill"),
+            layout: &layout,
+            entries: &[
+                wgpu::BindGroupEntry {
+                    binding: 0,
+                    resource: self.matrices.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 1,
+                    resource: job.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 2,
+                    resource: reqs.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 3,
+                    resource: values.as_entire_binding(),
+                },
+            ],
+        });
+        let mut encoder = self
+            .device
+            .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+        {
+            let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
+            pass.set_pipeline(&pipeline.pipeline);
+            pass.set_bind_group(0, &bind, &[]);
+            let groups = count.div_ceil(nyquist_gpu::WORKGROUP_SIZE as usize) as u32;
+            pass.dispatch_workgroups(groups, 1, 1);
+        }
+        encoder.copy_buffer_to_buffer(&values, 0, &readback, 0, size);
+        self.queue.submit([encoder.finish()]);
+        readback.map_async(wgpu::MapMode::Read, .., |r| r.expect("map the values"));
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .expect("the device finished");
+        let view = readback.get_mapped_range(..).expect("mapped");
+        let words: Vec<u32> = bytemuck::cast_slice(&view)[..count * WORDS_PER_REQUEST].to_vec();
+        drop(view);
+        readback.unmap();
+        words
+    }
+}
+
+/// `n` random requests from `seed`: pixels mostly below 4096 and some up to 2²⁴ − 1, sample
+/// indices over all of `u32` (a quarter below 256), dimensions up to 2047 (past the 1024
+/// matrices).
+pub fn random_requests(n: usize, seed: u64) -> Vec<Request> {
+    let word = |i: u64| nyquist::hash::wyrand(seed, i);
+    (0..n as u64)
+        .map(|i| {
+            let a = word(2 * i);
+            let b = word(2 * i + 1);
+            let big = a >> 63 == 1 && a >> 62 & 1 == 1;
+            let pixel_mask = if big { (1 << 24) - 1 } else { 4095 };
+            let index = if b >> 62 == 0 {
+                (b as u32) & 255
+            } else {
+                b as u32
+            };
+            [
+                a as u32 & pixel_mask,
+                (a >> 32) as u32 & pixel_mask,
+                index,
+                ((b >> 32) as u32) & 2047,
+            ]
+        })
+        .collect()
+}
+
+/// The first request whose answers differ, with both answers.
+pub fn first_mismatch(
+    requests: &[Request],
+    gpu: &[Answer],
+    cpu: &[Answer],
+) -> Option<(Request, Answer, Answer)> {
+    requests
+        .iter()
+        .zip(gpu.iter().zip(cpu))
+        .find(|(_, (g, c))| g != c)
+        .map(|(&q, (&g, &c))| (q, g, c))
+}

@@ -1,0 +1,1037 @@
+struct NyqCameraSample {
+    float2 p_film;
+    float2 lens;
+    float time;
+    int _end_pad_0;
+};
+
+struct NyqSobol {
+    uint dims;
+    uint scrambled;
+    uint2 seed;
+};
+
+struct NyqOwenSobol {
+    uint dims;
+    uint shuffle_seed;
+    uint key;
+};
+
+struct NyqOwenSobolSampler {
+    uint2 seed;
+    uint frame;
+    uint key;
+    uint r;
+    uint dim;
+};
+
+struct NyqZSobolSampler {
+    uint spp;
+    uint log2_spp;
+    uint log2_res;
+    uint scramble;
+    uint2 seed;
+    uint digits;
+    uint sample_digits;
+    uint odd;
+    uint morton;
+    uint dim;
+    int _end_pad_0;
+};
+
+struct NyqFillJob {
+    uint kind;
+    uint scramble;
+    uint spp;
+    uint frame;
+    uint2 seed;
+    uint2 resolution;
+    uint dims;
+    uint implicit;
+    uint first;
+    uint count;
+};
+
+typedef uint ret_Constructarray24_uint_[24];
+ret_Constructarray24_uint_ Constructarray24_uint_(uint arg0, uint arg1, uint arg2, uint arg3, uint arg4, uint arg5, uint arg6, uint arg7, uint arg8, uint arg9, uint arg10, uint arg11, uint arg12, uint arg13, uint arg14, uint arg15, uint arg16, uint arg17, uint arg18, uint arg19, uint arg20, uint arg21, uint arg22, uint arg23) {
+    uint ret[24] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23 };
+    return ret;
+}
+
+static const uint NYQ_SCRAMBLE_NONE = 0u;
+static const uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
+static const uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
+static const uint NYQ_SCRAMBLE_OWEN = 3u;
+static const uint NYQ_SOBOL_DIMS = 1024u;
+static const uint NYQ_PERMUTATIONS_4_[24] = Constructarray24_uint_(228u, 180u, 216u, 120u, 156u, 108u, 225u, 177u, 201u, 57u, 141u, 45u, 210u, 114u, 198u, 54u, 78u, 30u, 147u, 99u, 135u, 39u, 75u, 27u);
+static const uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
+static const uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
+static const uint NYQ_FILL_SOBOL = 16u;
+static const uint NYQ_FILL_OWEN_SOBOL = 17u;
+
+ByteAddressBuffer nyq_sobol_matrices : register(t0);
+cbuffer nyq_job : register(b1) { NyqFillJob nyq_job; }
+ByteAddressBuffer nyq_requests : register(t2);
+RWByteAddressBuffer nyq_values : register(u3);
+
+uint2 nyq_mul_wide(uint a, uint b)
+{
+    uint a0_ = (a & 65535u);
+    uint a1_ = (a >> 16u);
+    uint b0_ = (b & 65535u);
+    uint b1_ = (b >> 16u);
+    uint p00_ = (a0_ * b0_);
+    uint p01_ = (a0_ * b1_);
+    uint p10_ = (a1_ * b0_);
+    uint p11_ = (a1_ * b1_);
+    uint mid = (((p00_ >> 16u) + (p01_ & 65535u)) + (p10_ & 65535u));
+    return uint2(((p00_ & 65535u) | (mid << 16u)), (((p11_ + (p01_ >> 16u)) + (p10_ >> 16u)) + (mid >> 16u)));
+}
+
+uint2 nyq_mul64_(uint2 a_1, uint2 b_1)
+{
+    const uint2 _e4 = nyq_mul_wide(a_1.x, b_1.x);
+    return uint2(_e4.x, ((_e4.y + (a_1.x * b_1.y)) + (a_1.y * b_1.x)));
+}
+
+uint2 nyq_add64_(uint2 a_2, uint2 b_2)
+{
+    uint low = (a_2.x + b_2.x);
+    return uint2(low, ((a_2.y + b_2.y) + ((low < a_2.x) ? 1u : 0u)));
+}
+
+uint2 nyq_shr64_(uint2 a_3, uint s_2)
+{
+    return uint2(((a_3.x >> s_2) | (a_3.y << (32u - s_2))), (a_3.y >> s_2));
+}
+
+uint2 nyq_shl64_(uint2 a_4, uint s_3)
+{
+    return uint2((a_4.x << s_3), ((a_4.y << s_3) | (a_4.x >> (32u - s_3))));
+}
+
+uint2 nyq_u64_(uint x)
+{
+    return uint2(x, 0u);
+}
+
+uint nyq_mix32_(uint x_in)
+{
+    uint x_1 = (uint)0;
+
+    x_1 = x_in;
+    uint _e2 = x_1;
+    uint _e3 = x_1;
+    x_1 = (_e2 ^ (_e3 >> 16u));
+    uint _e7 = x_1;
+    x_1 = (_e7 * 2146121005u);
+    uint _e10 = x_1;
+    uint _e11 = x_1;
+    x_1 = (_e10 ^ (_e11 >> 15u));
+    uint _e15 = x_1;
+    x_1 = (_e15 * 2221713035u);
+    uint _e18 = x_1;
+    uint _e19 = x_1;
+    return (_e18 ^ (_e19 >> 16u));
+}
+
+uint2 nyq_mix64_(uint2 x_in_1)
+{
+    uint2 x_2 = (uint2)0;
+
+    x_2 = x_in_1;
+    uint2 _e2 = x_2;
+    uint2 _e3 = x_2;
+    const uint2 _e5 = nyq_shr64_(_e3, 30u);
+    x_2 = (_e2 ^ _e5);
+    uint2 _e7 = x_2;
+    const uint2 _e11 = nyq_mul64_(_e7, uint2(484763065u, 3210233709u));
+    x_2 = _e11;
+    uint2 _e12 = x_2;
+    uint2 _e13 = x_2;
+    const uint2 _e15 = nyq_shr64_(_e13, 27u);
+    x_2 = (_e12 ^ _e15);
+    uint2 _e17 = x_2;
+    const uint2 _e21 = nyq_mul64_(_e17, uint2(321982955u, 2496678331u));
+    x_2 = _e21;
+    uint2 _e22 = x_2;
+    uint2 _e23 = x_2;
+    const uint2 _e25 = nyq_shr64_(_e23, 31u);
+    return (_e22 ^ _e25);
+}
+
+uint2 nyq_hash2_(uint2 a_5, uint2 b_3)
+{
+    uint2 golden = uint2(2135587861u, 2654435769u);
+    uint2 golden2_ = uint2(4271175722u, 1013904242u);
+    const uint2 _e8 = nyq_add64_(a_5, golden);
+    const uint2 _e9 = nyq_mix64_(_e8);
+    const uint2 _e10 = nyq_add64_(b_3, golden2_);
+    const uint2 _e12 = nyq_mix64_((_e9 ^ _e10));
+    return _e12;
+}
+
+uint2 nyq_hash4_(uint2 a_6, uint2 b_4, uint2 c, uint2 d)
+{
+    uint2 golden_1 = uint2(2135587861u, 2654435769u);
+    const uint2 _e7 = nyq_hash2_(golden_1, a_6);
+    const uint2 _e8 = nyq_hash2_(_e7, b_4);
+    const uint2 _e9 = nyq_hash2_(_e8, c);
+    const uint2 _e10 = nyq_hash2_(_e9, d);
+    return _e10;
+}
+
+float nyq_fraction_to_f32_(uint v)
+{
+    return (float((v >> 8u)) * 5.9604645e-8);
+}
+
+float nyq_rev_to_f32_(uint w_rev)
+{
+    const float _e2 = nyq_fraction_to_f32_(reversebits(w_rev));
+    return _e2;
+}
+
+uint nyq_shr(uint x_3, uint s_4)
+{
+    return ((s_4 >= 32u) ? 0u : (x_3 >> (s_4 & 31u)));
+}
+
+float nyq_film_coordinate(uint pixel, float offset)
+{
+    float base = float(pixel);
+    float x_9 = (base + offset);
+    float edge = (base + 1.0);
+    if ((x_9 < edge)) {
+        return x_9;
+    }
+    float below = asfloat((asuint(edge) - 1u));
+    return ((below >= base) ? below : base);
+}
+
+uint nyq_lk_hash(uint x_rev, uint seed)
+{
+    uint x_4 = (uint)0;
+
+    x_4 = (x_rev ^ (x_rev * 1025551850u));
+    uint _e6 = x_4;
+    x_4 = ((_e6 + seed) * ((seed >> 16u) | 1u));
+    uint _e13 = x_4;
+    uint _e14 = x_4;
+    x_4 = (_e13 ^ (_e14 * 89287766u));
+    uint _e18 = x_4;
+    uint _e19 = x_4;
+    x_4 = (_e18 ^ (_e19 * 1403136100u));
+    uint _e23 = x_4;
+    return _e23;
+}
+
+uint nyq_fast_owen_scramble(uint x_5, uint seed_1)
+{
+    const uint _e5 = nyq_mix32_((seed_1 ^ 1779033703u));
+    const uint _e6 = nyq_lk_hash(reversebits(x_5), _e5);
+    return reversebits(_e6);
+}
+
+uint nyq_nested_uniform_shuffle(uint index, uint seed_2)
+{
+    const uint _e2 = nyq_fast_owen_scramble(index, seed_2);
+    return _e2;
+}
+
+uint nyq_owen_scramble(uint x_6, uint seed_3)
+{
+    uint out_ = (uint)0;
+    uint k_3 = 0u;
+
+    const uint _e4 = nyq_mix32_((seed_3 ^ 3144134277u));
+    out_ = x_6;
+    uint2 loop_bound = uint2(4294967295u, 4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (all(loop_bound == uint2(0u, 0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e41 = k_3;
+            k_3 = (_e41 + 1u);
+        }
+        loop_init = false;
+        uint _e8 = k_3;
+        if ((_e8 < 32u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = k_3;
+            uint _e18 = k_3;
+            uint prefix = ((_e18 == 0u) ? 0u : (x_6 >> ((32u - _e12) & 31u)));
+            uint _e23 = k_3;
+            uint2 word = uint2(((1u << _e23) | prefix), _e4);
+            const uint2 _e27 = nyq_mix64_(word);
+            if (((_e27.y >> 31u) == 1u)) {
+                uint _e33 = out_;
+                uint _e36 = k_3;
+                out_ = (_e33 ^ (1u << (31u - _e36)));
+            }
+        }
+    }
+    uint _e43 = out_;
+    return _e43;
+}
+
+uint nyq_scramble_u32_(uint x_7, uint seed_4, uint how)
+{
+    switch(how) {
+        case 1u: {
+            const uint _e5 = nyq_mix32_((seed_4 ^ 1013904242u));
+            return (x_7 ^ _e5);
+        }
+        case 2u: {
+            const uint _e7 = nyq_fast_owen_scramble(x_7, seed_4);
+            return _e7;
+        }
+        case 3u: {
+            const uint _e8 = nyq_owen_scramble(x_7, seed_4);
+            return _e8;
+        }
+        default: {
+            return x_7;
+        }
+    }
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % (rhs == 0u ? 1u : rhs);
+}
+
+uint nyq_sobol_u32_(uint index_1, uint dim)
+{
+    uint v_1 = 0u;
+    uint bits = (uint)0;
+
+    uint base_1 = (naga_mod(dim, NYQ_SOBOL_DIMS) * 32u);
+    bits = index_1;
+    uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_1 == uint2(0u, 0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e9 = bits;
+        if ((_e9 != 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = v_1;
+            uint _e14 = bits;
+            uint _e18 = asuint(nyq_sobol_matrices.Load((base_1 + min(32u, firstbitlow(_e14)))*4));
+            v_1 = (_e12 ^ _e18);
+            uint _e20 = bits;
+            uint _e21 = bits;
+            bits = (_e20 & (_e21 - 1u));
+        }
+    }
+    uint _e25 = v_1;
+    return _e25;
+}
+
+uint nyq_sobol_rev(uint r, uint dim_1)
+{
+    const uint _e3 = nyq_sobol_u32_(reversebits(r), dim_1);
+    return reversebits(_e3);
+}
+
+NyqSobol ConstructNyqSobol(uint arg0, uint arg1, uint2 arg2) {
+    NyqSobol ret = (NyqSobol)0;
+    ret.dims = arg0;
+    ret.scrambled = arg1;
+    ret.seed = arg2;
+    return ret;
+}
+
+NyqSobol nyq_sobol(uint dims, bool scrambled, uint2 seed_5)
+{
+    const NyqSobol nyqsobol = ConstructNyqSobol(dims, (scrambled ? 1u : 0u), seed_5);
+    return nyqsobol;
+}
+
+uint nyq_sobol_sample_u32_(NyqSobol s_5, uint index_2, uint dim_2)
+{
+    uint shift = 0u;
+
+    uint d_2 = naga_mod(dim_2, s_5.dims);
+    if ((s_5.scrambled != 0u)) {
+        const uint2 _e11 = nyq_u64_(d_2);
+        const uint2 _e12 = nyq_hash2_(s_5.seed, _e11);
+        shift = _e12.y;
+    }
+    const uint _e14 = nyq_sobol_u32_(index_2, d_2);
+    uint _e15 = shift;
+    return (_e14 ^ _e15);
+}
+
+float nyq_sobol_sample(NyqSobol s_6, uint index_3, uint dim_3)
+{
+    const uint _e3 = nyq_sobol_sample_u32_(s_6, index_3, dim_3);
+    const float _e4 = nyq_fraction_to_f32_(_e3);
+    return _e4;
+}
+
+uint nyq_dim_seed(uint key, uint dim_4)
+{
+    const uint _e5 = nyq_mix32_((key ^ (dim_4 * 2654435769u)));
+    return _e5;
+}
+
+uint nyq_shuffle_rev(uint index_4, uint shuffle_seed)
+{
+    const uint _e3 = nyq_lk_hash(0u, shuffle_seed);
+    uint fix = (_e3 & 65535u);
+    const uint _e7 = nyq_lk_hash(reversebits(index_4), shuffle_seed);
+    return (_e7 ^ fix);
+}
+
+uint nyq_owen_sobol_rev(uint r_1, uint dim_5, uint dim_seed)
+{
+    const uint _e5 = nyq_sobol_rev(r_1, naga_mod(dim_5, NYQ_SOBOL_DIMS));
+    const uint _e6 = nyq_lk_hash(_e5, dim_seed);
+    return _e6;
+}
+
+NyqOwenSobol ConstructNyqOwenSobol(uint arg0, uint arg1, uint arg2) {
+    NyqOwenSobol ret = (NyqOwenSobol)0;
+    ret.dims = arg0;
+    ret.shuffle_seed = arg1;
+    ret.key = arg2;
+    return ret;
+}
+
+NyqOwenSobol nyq_owen_sobol(uint dims_1, uint2 seed_6)
+{
+    const uint2 _e3 = nyq_u64_(1331119438u);
+    const uint2 _e4 = nyq_hash2_(seed_6, _e3);
+    const uint _e6 = nyq_mix32_(_e4.y);
+    const NyqOwenSobol nyqowensobol = ConstructNyqOwenSobol(dims_1, _e6, _e4.x);
+    return nyqowensobol;
+}
+
+uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_7, uint index_5, uint dim_6)
+{
+    uint d_3 = naga_mod(dim_6, s_7.dims);
+    const uint _e6 = nyq_shuffle_rev(index_5, s_7.shuffle_seed);
+    const uint _e8 = nyq_dim_seed(s_7.key, d_3);
+    const uint _e9 = nyq_owen_sobol_rev(_e6, d_3, _e8);
+    return reversebits(_e9);
+}
+
+float nyq_owen_sobol_sample(NyqOwenSobol s_8, uint index_6, uint dim_7)
+{
+    const uint _e3 = nyq_owen_sobol_sample_u32_(s_8, index_6, dim_7);
+    const float _e4 = nyq_fraction_to_f32_(_e3);
+    return _e4;
+}
+
+float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_9, uint index_7, uint first_dim)
+{
+    float4 out_1 = (float4)0;
+    uint k_4 = 0u;
+
+    const uint _e4 = nyq_shuffle_rev(index_7, s_9.shuffle_seed);
+    uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e22 = k_4;
+            k_4 = (_e22 + 1u);
+        }
+        loop_init_1 = false;
+        uint _e8 = k_4;
+        if ((_e8 < 4u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e11 = k_4;
+            uint d_4 = naga_mod((first_dim + _e11), s_9.dims);
+            uint _e15 = k_4;
+            const uint _e18 = nyq_dim_seed(s_9.key, d_4);
+            const uint _e19 = nyq_owen_sobol_rev(_e4, d_4, _e18);
+            const float _e20 = nyq_rev_to_f32_(_e19);
+            out_1[min(uint(_e15), 3u)] = _e20;
+        }
+    }
+    float4 _e24 = out_1;
+    return _e24;
+}
+
+NyqOwenSobolSampler ConstructNyqOwenSobolSampler(uint2 arg0, uint arg1, uint arg2, uint arg3, uint arg4) {
+    NyqOwenSobolSampler ret = (NyqOwenSobolSampler)0;
+    ret.seed = arg0;
+    ret.frame = arg1;
+    ret.key = arg2;
+    ret.r = arg3;
+    ret.dim = arg4;
+    return ret;
+}
+
+NyqOwenSobolSampler nyq_owen_sobol_sampler(uint2 seed_7, uint frame)
+{
+    const NyqOwenSobolSampler nyqowensobolsampler = ConstructNyqOwenSobolSampler(seed_7, frame, 0u, 0u, 0u);
+    return nyqowensobolsampler;
+}
+
+void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_10, uint2 pixel_1, uint sample_index, uint dim_8)
+{
+    const uint2 _e5 = nyq_u64_(pixel_1.x);
+    const uint2 _e7 = nyq_u64_(pixel_1.y);
+    uint _e9 = s_10.frame;
+    const uint2 _e10 = nyq_u64_(_e9);
+    uint2 _e12 = s_10.seed;
+    const uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
+    s_10.key = _e13.x;
+    const uint _e18 = nyq_mix32_(_e13.y);
+    const uint _e19 = nyq_shuffle_rev(sample_index, _e18);
+    s_10.r = _e19;
+    s_10.dim = dim_8;
+    return;
+}
+
+float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_11, uint dim_9)
+{
+    uint _e3 = s_11.r;
+    uint _e5 = s_11.key;
+    const uint _e6 = nyq_dim_seed(_e5, dim_9);
+    const uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6);
+    const float _e8 = nyq_rev_to_f32_(_e7);
+    return _e8;
+}
+
+float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_12)
+{
+    uint d_5 = s_12.dim;
+    s_12.dim = (d_5 + 1u);
+    const float _e6 = nyq_owen_sobol_value(s_12, d_5);
+    return _e6;
+}
+
+float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_13)
+{
+    uint d_6 = s_13.dim;
+    s_13.dim = (d_6 + 2u);
+    const float _e6 = nyq_owen_sobol_value(s_13, d_6);
+    const float _e9 = nyq_owen_sobol_value(s_13, (d_6 + 1u));
+    return float2(_e6, _e9);
+}
+
+float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_14)
+{
+    uint _e3 = s_14.dim;
+    s_14.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_value(s_14, 0u);
+    const float _e9 = nyq_owen_sobol_value(s_14, 1u);
+    return float2(_e7, _e9);
+}
+
+NyqCameraSample ConstructNyqCameraSample(float2 arg0, float2 arg1, float arg2) {
+    NyqCameraSample ret = (NyqCameraSample)0;
+    ret.p_film = arg0;
+    ret.lens = arg1;
+    ret.time = arg2;
+    return ret;
+}
+
+NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_15, uint2 pixel_2, uint sample_index_1)
+{
+    float v_2[5] = (float[5])0;
+    uint d_1 = 0u;
+
+    nyq_owen_sobol_start(s_15, pixel_2, sample_index_1, 0u);
+    uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e15 = d_1;
+            d_1 = (_e15 + 1u);
+        }
+        loop_init_2 = false;
+        uint _e7 = d_1;
+        if ((_e7 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = d_1;
+            uint _e12 = d_1;
+            const float _e13 = nyq_owen_sobol_value(s_15, _e12);
+            v_2[min(uint(_e10), 4u)] = _e13;
+        }
+    }
+    s_15.dim = 5u;
+    float _e21 = v_2[0];
+    const float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
+    float _e25 = v_2[1];
+    const float _e26 = nyq_film_coordinate(pixel_2.y, _e25);
+    float2 p = float2(_e22, _e26);
+    float _e29 = v_2[3];
+    float _e31 = v_2[4];
+    float _e34 = v_2[2];
+    const NyqCameraSample nyqcamerasample = ConstructNyqCameraSample(p, float2(_e29, _e31), _e34);
+    return nyqcamerasample;
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / (rhs == 0u ? 1u : rhs);
+}
+
+NyqZSobolSampler ConstructNyqZSobolSampler(uint arg0, uint arg1, uint arg2, uint arg3, uint2 arg4, uint arg5, uint arg6, uint arg7, uint arg8, uint arg9) {
+    NyqZSobolSampler ret = (NyqZSobolSampler)0;
+    ret.spp = arg0;
+    ret.log2_spp = arg1;
+    ret.log2_res = arg2;
+    ret.scramble = arg3;
+    ret.seed = arg4;
+    ret.digits = arg5;
+    ret.sample_digits = arg6;
+    ret.odd = arg7;
+    ret.morton = arg8;
+    ret.dim = arg9;
+    return ret;
+}
+
+NyqZSobolSampler nyq_zsobol_sampler(uint2 resolution, uint spp_requested, uint scramble, uint2 seed_8)
+{
+    uint spp = ((spp_requested <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((spp_requested - 1u))))));
+    uint side = max(resolution.x, resolution.y);
+    uint log2_res = (32u - (31u - firstbithigh((side - 1u))));
+    uint log2_spp = min(32u, firstbitlow(spp));
+    uint bits_1 = ((2u * log2_res) + log2_spp);
+    const NyqZSobolSampler nyqzsobolsampler = ConstructNyqZSobolSampler(spp, log2_spp, log2_res, scramble, seed_8, naga_div(bits_1, 2u), naga_div(log2_spp, 2u), (log2_spp & 1u), 0u, 0u);
+    return nyqzsobolsampler;
+}
+
+uint nyq_spread(uint x_in_2)
+{
+    uint x_8 = (uint)0;
+
+    x_8 = (x_in_2 & 65535u);
+    uint _e4 = x_8;
+    uint _e5 = x_8;
+    x_8 = ((_e4 | (_e5 << 8u)) & 16711935u);
+    uint _e11 = x_8;
+    uint _e12 = x_8;
+    x_8 = ((_e11 | (_e12 << 4u)) & 252645135u);
+    uint _e18 = x_8;
+    uint _e19 = x_8;
+    x_8 = ((_e18 | (_e19 << 2u)) & 858993459u);
+    uint _e25 = x_8;
+    uint _e26 = x_8;
+    return ((_e25 | (_e26 << 1u)) & 1431655765u);
+}
+
+uint nyq_zsobol_morton(NyqZSobolSampler s_16, uint2 pixel_3)
+{
+    uint mask = ((s_16.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_16.log2_res) & 31u)));
+    const uint _e16 = nyq_spread((pixel_3.x & mask));
+    const uint _e19 = nyq_spread((pixel_3.y & mask));
+    return (_e16 | (_e19 << 1u));
+}
+
+uint nyq_one_of_24_(uint h)
+{
+    const uint2 _e2 = nyq_mul_wide(h, 24u);
+    return _e2.y;
+}
+
+uint2 nyq_zsobol_dim_key(uint2 seed_9, uint dim_10)
+{
+    const uint2 _e6 = nyq_hash2_(seed_9, uint2((dim_10 ^ 1329745740u), 23123u));
+    return _e6;
+}
+
+uint nyq_zsobol_pixel_node(uint higher, uint2 key_1)
+{
+    const uint2 _e4 = nyq_shr64_(key_1, 16u);
+    const uint _e7 = nyq_mix32_((higher ^ _e4.x));
+    const uint _e8 = nyq_one_of_24_(_e7);
+    return NYQ_PERMUTATIONS_4_[min(uint(_e8), 23u)];
+}
+
+uint nyq_permuted_digit(uint perm, uint digit, uint shift_1)
+{
+    return (((perm >> (2u * digit)) & 3u) << shift_1);
+}
+
+uint2 nyq_zsobol_pixel_word(uint pixel_morton, uint2 key_2)
+{
+    const uint2 _e3 = nyq_shl64_(key_2, 17u);
+    uint2 rotated = (_e3 | uint2((key_2.y >> 15u), 0u));
+    const uint2 _e10 = nyq_u64_(pixel_morton);
+    const uint2 _e12 = nyq_mix64_((_e10 ^ rotated));
+    return _e12;
+}
+
+uint2 nyq_zsobol_nested_word(uint2 w, uint higher_1, uint shift_2)
+{
+    uint2 tag = uint2(((higher_1 << 6u) | shift_2), (higher_1 >> 26u));
+    const uint2 _e12 = nyq_mul64_(tag, uint2(2135587861u, 2654435769u));
+    const uint2 _e17 = nyq_mul64_((w ^ _e12), uint2(3516067075u, 3518319154u));
+    return _e17;
+}
+
+uint nyq_zsobol_index(NyqZSobolSampler s_17, uint morton, uint2 key_3)
+{
+    uint index_8 = 0u;
+    uint i = (uint)0;
+    uint i_1 = (uint)0;
+
+    i = s_17.digits;
+    uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e28 = i;
+            i = (_e28 - 1u);
+        }
+        loop_init_3 = false;
+        uint _e7 = i;
+        if ((_e7 > s_17.sample_digits)) {
+        } else {
+            break;
+        }
+        {
+            uint _e11 = i;
+            uint shift_3 = ((2u * (_e11 - 1u)) + s_17.odd);
+            uint digit_1 = ((morton >> shift_3) & 3u);
+            uint _e20 = index_8;
+            const uint _e23 = nyq_shr(morton, (shift_3 + 2u));
+            const uint _e24 = nyq_zsobol_pixel_node(_e23, key_3);
+            const uint _e25 = nyq_permuted_digit(_e24, digit_1, shift_3);
+            index_8 = (_e20 | _e25);
+        }
+    }
+    const uint _e31 = nyq_shr(morton, s_17.log2_spp);
+    const uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
+    uint sample_ = (morton & (s_17.spp - 1u));
+    i_1 = s_17.sample_digits;
+    uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e64 = i_1;
+            i_1 = (_e64 - 1u);
+        }
+        loop_init_4 = false;
+        uint _e39 = i_1;
+        if ((_e39 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e43 = i_1;
+            uint shift_4 = ((2u * (_e43 - 1u)) + s_17.odd);
+            uint digit_2 = ((sample_ >> shift_4) & 3u);
+            const uint _e54 = nyq_shr(sample_, (shift_4 + 2u));
+            const uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
+            const uint _e57 = nyq_one_of_24_(_e55.y);
+            uint _e58 = index_8;
+            const uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_[min(uint(_e57), 23u)], digit_2, shift_4);
+            index_8 = (_e58 | _e61);
+        }
+    }
+    if ((s_17.odd == 1u)) {
+        uint _e69 = index_8;
+        const uint2 _e75 = nyq_zsobol_nested_word(_e32, (sample_ >> 1u), 0u);
+        index_8 = (_e69 | ((sample_ & 1u) ^ (_e75.y >> 31u)));
+    }
+    uint _e81 = index_8;
+    return _e81;
+}
+
+uint nyq_zsobol_sequence_index(NyqZSobolSampler s_18, uint2 pixel_4, uint sample_index_2, uint dim_11)
+{
+    const uint _e4 = nyq_zsobol_morton(s_18, pixel_4);
+    uint morton_1 = ((_e4 << s_18.log2_spp) | (sample_index_2 & (s_18.spp - 1u)));
+    const uint2 _e13 = nyq_zsobol_dim_key(s_18.seed, dim_11);
+    const uint _e14 = nyq_zsobol_index(s_18, morton_1, _e13);
+    return _e14;
+}
+
+uint nyq_zsobol_dim0_(uint index_9, uint seed_10, uint how_1)
+{
+    if ((how_1 == NYQ_SCRAMBLE_FAST_OWEN)) {
+        const uint _e5 = nyq_lk_hash(index_9, seed_10);
+        return reversebits(_e5);
+    }
+    const uint _e8 = nyq_scramble_u32_(reversebits(index_9), seed_10, how_1);
+    return _e8;
+}
+
+float nyq_zsobol_value_1d(inout NyqZSobolSampler s_19, uint dim_12)
+{
+    uint2 _e3 = s_19.seed;
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
+    NyqZSobolSampler _e5 = s_19;
+    uint _e7 = s_19.morton;
+    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_19.scramble;
+    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    const float _e13 = nyq_fraction_to_f32_(_e12);
+    return _e13;
+}
+
+float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_20, uint dim_13)
+{
+    uint y = (uint)0;
+
+    uint2 _e3 = s_20.seed;
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
+    NyqZSobolSampler _e5 = s_20;
+    uint _e7 = s_20.morton;
+    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_20.scramble;
+    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    uint _e15 = s_20.scramble;
+    if ((_e15 == NYQ_SCRAMBLE_FAST_OWEN)) {
+        const uint _e19 = nyq_sobol_u32_(_e8, 1u);
+        const uint _e22 = nyq_lk_hash(reversebits(_e19), _e4.y);
+        y = reversebits(_e22);
+    } else {
+        const uint _e25 = nyq_sobol_u32_(_e8, 1u);
+        uint _e28 = s_20.scramble;
+        const uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
+        y = _e29;
+    }
+    const float _e30 = nyq_fraction_to_f32_(_e12);
+    uint _e31 = y;
+    const float _e32 = nyq_fraction_to_f32_(_e31);
+    return float2(_e30, _e32);
+}
+
+void nyq_zsobol_start(inout NyqZSobolSampler s_21, uint2 pixel_5, uint sample_index_3, uint dim_14)
+{
+    NyqZSobolSampler _e5 = s_21;
+    const uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
+    uint _e8 = s_21.log2_spp;
+    uint _e11 = s_21.spp;
+    s_21.morton = ((_e6 << _e8) | (sample_index_3 & (_e11 - 1u)));
+    s_21.dim = dim_14;
+    return;
+}
+
+float nyq_zsobol_get_1d(inout NyqZSobolSampler s_22)
+{
+    uint d_7 = s_22.dim;
+    s_22.dim = (d_7 + 1u);
+    const float _e6 = nyq_zsobol_value_1d(s_22, d_7);
+    return _e6;
+}
+
+float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_23)
+{
+    uint d_8 = s_23.dim;
+    s_23.dim = (d_8 + 2u);
+    const float2 _e6 = nyq_zsobol_value_2d(s_23, d_8);
+    return _e6;
+}
+
+float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_24)
+{
+    uint _e3 = s_24.dim;
+    s_24.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_zsobol_value_2d(s_24, 0u);
+    return _e7;
+}
+
+NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_25, uint2 pixel_6, uint sample_index_4)
+{
+    nyq_zsobol_start(s_25, pixel_6, sample_index_4, 0u);
+    const float2 _e5 = nyq_zsobol_value_2d(s_25, 0u);
+    const float _e7 = nyq_zsobol_value_1d(s_25, 2u);
+    const float2 _e9 = nyq_zsobol_value_2d(s_25, 3u);
+    s_25.dim = 5u;
+    const float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
+    const float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
+    float2 film = float2(_e14, _e17);
+    const NyqCameraSample nyqcamerasample_1 = ConstructNyqCameraSample(film, _e9, _e7);
+    return nyqcamerasample_1;
+}
+
+uint4 nyq_fill_request(uint i_2)
+{
+    uint _e3 = nyq_job.implicit;
+    if ((_e3 == 0u)) {
+        uint4 _e8 = asuint(nyq_requests.Load4(i_2*16));
+        return _e8;
+    }
+    uint _e11 = nyq_job.first;
+    uint n = (_e11 + i_2);
+    uint _e15 = nyq_job.spp;
+    uint pixel_7 = naga_div(n, _e15);
+    uint _e20 = nyq_job.resolution.x;
+    uint _e25 = nyq_job.resolution.x;
+    uint _e29 = nyq_job.spp;
+    return uint4(naga_mod(pixel_7, _e20), naga_div(pixel_7, _e25), naga_mod(n, _e29), 5u);
+}
+
+void nyq_fill_camera(uint out_2, NyqCameraSample c_1)
+{
+    nyq_values.Store(out_2*4, asuint(asuint(c_1.p_film.x)));
+    nyq_values.Store((out_2 + 1u)*4, asuint(asuint(c_1.p_film.y)));
+    nyq_values.Store((out_2 + 2u)*4, asuint(asuint(c_1.time)));
+    nyq_values.Store((out_2 + 3u)*4, asuint(asuint(c_1.lens.x)));
+    nyq_values.Store((out_2 + 4u)*4, asuint(asuint(c_1.lens.y)));
+    return;
+}
+
+void nyq_fill_values(uint out_3, float one, float2 two)
+{
+    nyq_values.Store((out_3 + 5u)*4, asuint(asuint(one)));
+    nyq_values.Store((out_3 + 6u)*4, asuint(asuint(two.x)));
+    nyq_values.Store((out_3 + 7u)*4, asuint(asuint(two.y)));
+    return;
+}
+
+[numthreads(64, 1, 1)]
+void nyq_fill(uint3 id : SV_DispatchThreadID)
+{
+    NyqOwenSobolSampler s = (NyqOwenSobolSampler)0;
+    NyqZSobolSampler s_1 = (NyqZSobolSampler)0;
+    uint k = 0u;
+    uint k_1 = 0u;
+    uint k_2 = 0u;
+
+    uint i_3 = id.x;
+    uint _e4 = nyq_job.count;
+    if ((i_3 >= _e4)) {
+        return;
+    }
+    const uint4 _e6 = nyq_fill_request(i_3);
+    uint2 pixel_8 = _e6.xy;
+    uint out_4 = (8u * i_3);
+    uint _e12 = nyq_job.kind;
+    switch(_e12) {
+        case 0u: {
+            uint2 _e15 = nyq_job.seed;
+            uint _e18 = nyq_job.frame;
+            const NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
+            s = _e19;
+            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_8, _e6.z);
+            nyq_fill_camera(out_4, _e22);
+            nyq_owen_sobol_start(s, pixel_8, _e6.z, _e6.w);
+            const float _e25 = nyq_owen_sobol_get_1d(s);
+            const float2 _e26 = nyq_owen_sobol_get_2d(s);
+            nyq_fill_values(out_4, _e25, _e26);
+            return;
+        }
+        case 1u: {
+            uint2 _e29 = nyq_job.resolution;
+            uint _e32 = nyq_job.spp;
+            uint _e35 = nyq_job.scramble;
+            uint2 _e38 = nyq_job.seed;
+            const NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
+            s_1 = _e39;
+            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_8, _e6.z);
+            nyq_fill_camera(out_4, _e42);
+            nyq_zsobol_start(s_1, pixel_8, _e6.z, _e6.w);
+            const float _e45 = nyq_zsobol_get_1d(s_1);
+            const float2 _e46 = nyq_zsobol_get_2d(s_1);
+            nyq_fill_values(out_4, _e45, _e46);
+            return;
+        }
+        case 16u: {
+            uint _e49 = nyq_job.dims;
+            uint _e52 = nyq_job.scramble;
+            uint2 _e57 = nyq_job.seed;
+            const NyqSobol _e58 = nyq_sobol(_e49, (_e52 != 0u), _e57);
+            uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
+            bool loop_init_5 = true;
+            while(true) {
+                if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e86 = k;
+                    k = (_e86 + 1u);
+                }
+                loop_init_5 = false;
+                uint _e61 = k;
+                if ((_e61 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e65 = k;
+                    uint _e70 = k;
+                    const uint _e72 = nyq_sobol_sample_u32_(_e58, _e6.z, (_e6.w + _e70));
+                    nyq_values.Store((out_4 + _e65)*4, asuint(_e72));
+                    uint _e76 = k;
+                    uint _e81 = k;
+                    const float _e83 = nyq_sobol_sample(_e58, _e6.z, (_e6.w + _e81));
+                    nyq_values.Store(((out_4 + 4u) + _e76)*4, asuint(asuint(_e83)));
+                }
+            }
+            return;
+        }
+        case 17u: {
+            uint _e90 = nyq_job.dims;
+            uint2 _e93 = nyq_job.seed;
+            const NyqOwenSobol _e94 = nyq_owen_sobol(_e90, _e93);
+            const float4 _e97 = nyq_owen_sobol_sample_4d(_e94, _e6.z, _e6.w);
+            uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
+            bool loop_init_6 = true;
+            while(true) {
+                if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e122 = k_1;
+                    k_1 = (_e122 + 1u);
+                }
+                loop_init_6 = false;
+                uint _e100 = k_1;
+                if ((_e100 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e104 = k_1;
+                    uint _e109 = k_1;
+                    const uint _e111 = nyq_owen_sobol_sample_u32_(_e94, _e6.z, (_e6.w + _e109));
+                    nyq_values.Store((out_4 + _e104)*4, asuint(_e111));
+                    uint _e115 = k_1;
+                    uint _e118 = k_1;
+                    nyq_values.Store(((out_4 + 4u) + _e115)*4, asuint(asuint(_e97[min(uint(_e118), 3u)])));
+                }
+            }
+            return;
+        }
+        default: {
+            uint2 loop_bound_8 = uint2(4294967295u, 4294967295u);
+            bool loop_init_7 = true;
+            while(true) {
+                if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e135 = k_2;
+                    k_2 = (_e135 + 1u);
+                }
+                loop_init_7 = false;
+                uint _e126 = k_2;
+                if ((_e126 < 8u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e130 = k_2;
+                    nyq_values.Store((out_4 + _e130)*4, asuint(4294967295u));
+                }
+            }
+            return;
+        }
+    }
+}

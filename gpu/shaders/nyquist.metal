@@ -1,0 +1,1152 @@
+// language: metal2.0
+#include <metal_stdlib>
+#include <simd/simd.h>
+
+using metal::uint;
+
+struct _mslBufferSizes {
+    uint size0;
+    uint size2;
+    uint size3;
+};
+
+struct NyqCameraSample {
+    metal::float2 p_film;
+    metal::float2 lens;
+    float time;
+    char _pad3[4];
+};
+typedef uint type_4[1];
+struct NyqSobol {
+    uint dims;
+    uint scrambled;
+    metal::uint2 seed;
+};
+struct NyqOwenSobol {
+    uint dims;
+    uint shuffle_seed;
+    uint key;
+};
+struct NyqOwenSobolSampler {
+    metal::uint2 seed;
+    uint frame;
+    uint key;
+    uint r;
+    uint dim;
+};
+struct type_8 {
+    float inner[5];
+};
+struct type_9 {
+    uint inner[24];
+};
+struct NyqZSobolSampler {
+    uint spp;
+    uint log2_spp;
+    uint log2_res;
+    uint scramble;
+    metal::uint2 seed;
+    uint digits;
+    uint sample_digits;
+    uint odd;
+    uint morton;
+    uint dim;
+    char _pad10[4];
+};
+struct NyqFillJob {
+    uint kind;
+    uint scramble;
+    uint spp;
+    uint frame;
+    metal::uint2 seed;
+    metal::uint2 resolution;
+    uint dims;
+    uint implicit;
+    uint first;
+    uint count;
+};
+typedef metal::uint4 type_12[1];
+constant uint NYQ_SCRAMBLE_NONE = 0u;
+constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
+constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
+constant uint NYQ_SCRAMBLE_OWEN = 3u;
+constant uint NYQ_SOBOL_DIMS = 1024u;
+constant type_9 NYQ_PERMUTATIONS_4_ = type_9 {{228u, 180u, 216u, 120u, 156u, 108u, 225u, 177u, 201u, 57u, 141u, 45u, 210u, 114u, 198u, 54u, 78u, 30u, 147u, 99u, 135u, 39u, 75u, 27u}};
+constant uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
+constant uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
+constant uint NYQ_FILL_SOBOL = 16u;
+constant uint NYQ_FILL_OWEN_SOBOL = 17u;
+
+metal::uint2 nyq_mul_wide(
+    uint a,
+    uint b
+) {
+    uint a0_ = a & 65535u;
+    uint a1_ = a >> 16u;
+    uint b0_ = b & 65535u;
+    uint b1_ = b >> 16u;
+    uint p00_ = a0_ * b0_;
+    uint p01_ = a0_ * b1_;
+    uint p10_ = a1_ * b0_;
+    uint p11_ = a1_ * b1_;
+    uint mid = ((p00_ >> 16u) + (p01_ & 65535u)) + (p10_ & 65535u);
+    return metal::uint2((p00_ & 65535u) | (mid << 16u), ((p11_ + (p01_ >> 16u)) + (p10_ >> 16u)) + (mid >> 16u));
+}
+
+metal::uint2 nyq_mul64_(
+    metal::uint2 a_1,
+    metal::uint2 b_1
+) {
+    metal::uint2 _e4 = nyq_mul_wide(a_1.x, b_1.x);
+    return metal::uint2(_e4.x, (_e4.y + (a_1.x * b_1.y)) + (a_1.y * b_1.x));
+}
+
+metal::uint2 nyq_add64_(
+    metal::uint2 a_2,
+    metal::uint2 b_2
+) {
+    uint low = a_2.x + b_2.x;
+    return metal::uint2(low, (a_2.y + b_2.y) + ((low < a_2.x) ? 1u : 0u));
+}
+
+metal::uint2 nyq_shr64_(
+    metal::uint2 a_3,
+    uint s_2
+) {
+    return metal::uint2((a_3.x >> s_2) | (a_3.y << (32u - s_2)), a_3.y >> s_2);
+}
+
+metal::uint2 nyq_shl64_(
+    metal::uint2 a_4,
+    uint s_3
+) {
+    return metal::uint2(a_4.x << s_3, (a_4.y << s_3) | (a_4.x >> (32u - s_3)));
+}
+
+metal::uint2 nyq_u64_(
+    uint x
+) {
+    return metal::uint2(x, 0u);
+}
+
+uint nyq_mix32_(
+    uint x_in
+) {
+    uint x_1 = {};
+    x_1 = x_in;
+    uint _e2 = x_1;
+    uint _e3 = x_1;
+    x_1 = _e2 ^ (_e3 >> 16u);
+    uint _e7 = x_1;
+    x_1 = _e7 * 2146121005u;
+    uint _e10 = x_1;
+    uint _e11 = x_1;
+    x_1 = _e10 ^ (_e11 >> 15u);
+    uint _e15 = x_1;
+    x_1 = _e15 * 2221713035u;
+    uint _e18 = x_1;
+    uint _e19 = x_1;
+    return _e18 ^ (_e19 >> 16u);
+}
+
+metal::uint2 nyq_mix64_(
+    metal::uint2 x_in_1
+) {
+    metal::uint2 x_2 = {};
+    x_2 = x_in_1;
+    metal::uint2 _e2 = x_2;
+    metal::uint2 _e3 = x_2;
+    metal::uint2 _e5 = nyq_shr64_(_e3, 30u);
+    x_2 = _e2 ^ _e5;
+    metal::uint2 _e7 = x_2;
+    metal::uint2 _e11 = nyq_mul64_(_e7, metal::uint2(484763065u, 3210233709u));
+    x_2 = _e11;
+    metal::uint2 _e12 = x_2;
+    metal::uint2 _e13 = x_2;
+    metal::uint2 _e15 = nyq_shr64_(_e13, 27u);
+    x_2 = _e12 ^ _e15;
+    metal::uint2 _e17 = x_2;
+    metal::uint2 _e21 = nyq_mul64_(_e17, metal::uint2(321982955u, 2496678331u));
+    x_2 = _e21;
+    metal::uint2 _e22 = x_2;
+    metal::uint2 _e23 = x_2;
+    metal::uint2 _e25 = nyq_shr64_(_e23, 31u);
+    return _e22 ^ _e25;
+}
+
+metal::uint2 nyq_hash2_(
+    metal::uint2 a_5,
+    metal::uint2 b_3
+) {
+    metal::uint2 golden = metal::uint2(2135587861u, 2654435769u);
+    metal::uint2 golden2_ = metal::uint2(4271175722u, 1013904242u);
+    metal::uint2 _e8 = nyq_add64_(a_5, golden);
+    metal::uint2 _e9 = nyq_mix64_(_e8);
+    metal::uint2 _e10 = nyq_add64_(b_3, golden2_);
+    metal::uint2 _e12 = nyq_mix64_(_e9 ^ _e10);
+    return _e12;
+}
+
+metal::uint2 nyq_hash4_(
+    metal::uint2 a_6,
+    metal::uint2 b_4,
+    metal::uint2 c,
+    metal::uint2 d
+) {
+    metal::uint2 golden_1 = metal::uint2(2135587861u, 2654435769u);
+    metal::uint2 _e7 = nyq_hash2_(golden_1, a_6);
+    metal::uint2 _e8 = nyq_hash2_(_e7, b_4);
+    metal::uint2 _e9 = nyq_hash2_(_e8, c);
+    metal::uint2 _e10 = nyq_hash2_(_e9, d);
+    return _e10;
+}
+
+float nyq_fraction_to_f32_(
+    uint v
+) {
+    return static_cast<float>(v >> 8u) * 0.000000059604645;
+}
+
+float nyq_rev_to_f32_(
+    uint w_rev
+) {
+    float _e2 = nyq_fraction_to_f32_(metal::reverse_bits(w_rev));
+    return _e2;
+}
+
+uint nyq_shr(
+    uint x_3,
+    uint s_4
+) {
+    return (s_4 >= 32u) ? 0u : (x_3 >> (s_4 & 31u));
+}
+
+float nyq_film_coordinate(
+    uint pixel,
+    float offset
+) {
+    float base = static_cast<float>(pixel);
+    float x_9 = base + offset;
+    float edge = base + 1.0;
+    if (x_9 < edge) {
+        return x_9;
+    }
+    float below = as_type<float>(as_type<uint>(edge) - 1u);
+    return (below >= base) ? below : base;
+}
+
+uint nyq_lk_hash(
+    uint x_rev,
+    uint seed
+) {
+    uint x_4 = {};
+    x_4 = x_rev ^ (x_rev * 1025551850u);
+    uint _e6 = x_4;
+    x_4 = (_e6 + seed) * ((seed >> 16u) | 1u);
+    uint _e13 = x_4;
+    uint _e14 = x_4;
+    x_4 = _e13 ^ (_e14 * 89287766u);
+    uint _e18 = x_4;
+    uint _e19 = x_4;
+    x_4 = _e18 ^ (_e19 * 1403136100u);
+    uint _e23 = x_4;
+    return _e23;
+}
+
+uint nyq_fast_owen_scramble(
+    uint x_5,
+    uint seed_1
+) {
+    uint _e5 = nyq_mix32_(seed_1 ^ 1779033703u);
+    uint _e6 = nyq_lk_hash(metal::reverse_bits(x_5), _e5);
+    return metal::reverse_bits(_e6);
+}
+
+uint nyq_nested_uniform_shuffle(
+    uint index,
+    uint seed_2
+) {
+    uint _e2 = nyq_fast_owen_scramble(index, seed_2);
+    return _e2;
+}
+
+uint nyq_owen_scramble(
+    uint x_6,
+    uint seed_3
+) {
+    uint out = {};
+    uint k_3 = 0u;
+    uint _e4 = nyq_mix32_(seed_3 ^ 3144134277u);
+    out = x_6;
+    uint2 loop_bound = uint2(4294967295u);
+    bool loop_init = true;
+    while(true) {
+        if (metal::all(loop_bound == uint2(0u))) { break; }
+        loop_bound -= uint2(loop_bound.y == 0u, 1u);
+        if (!loop_init) {
+            uint _e41 = k_3;
+            k_3 = _e41 + 1u;
+        }
+        loop_init = false;
+        uint _e8 = k_3;
+        if (_e8 < 32u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = k_3;
+            uint _e18 = k_3;
+            uint prefix = (_e18 == 0u) ? 0u : (x_6 >> ((32u - _e12) & 31u));
+            uint _e23 = k_3;
+            metal::uint2 word = metal::uint2((1u << _e23) | prefix, _e4);
+            metal::uint2 _e27 = nyq_mix64_(word);
+            if ((_e27.y >> 31u) == 1u) {
+                uint _e33 = out;
+                uint _e36 = k_3;
+                out = _e33 ^ (1u << (31u - _e36));
+            }
+        }
+    }
+    uint _e43 = out;
+    return _e43;
+}
+
+uint nyq_scramble_u32_(
+    uint x_7,
+    uint seed_4,
+    uint how
+) {
+    switch(how) {
+        case 1u: {
+            uint _e5 = nyq_mix32_(seed_4 ^ 1013904242u);
+            return x_7 ^ _e5;
+        }
+        case 2u: {
+            uint _e7 = nyq_fast_owen_scramble(x_7, seed_4);
+            return _e7;
+        }
+        case 3u: {
+            uint _e8 = nyq_owen_scramble(x_7, seed_4);
+            return _e8;
+        }
+        default: {
+            return x_7;
+        }
+    }
+}
+
+uint naga_mod(uint lhs, uint rhs) {
+    return lhs % metal::select(rhs, 1u, rhs == 0u);
+}
+
+uint nyq_sobol_u32_(
+    uint index_1,
+    uint dim,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint v_1 = 0u;
+    uint bits = {};
+    uint base_1 = naga_mod(dim, NYQ_SOBOL_DIMS) * 32u;
+    bits = index_1;
+    uint2 loop_bound_1 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_1 == uint2(0u))) { break; }
+        loop_bound_1 -= uint2(loop_bound_1.y == 0u, 1u);
+        uint _e9 = bits;
+        if (_e9 != 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = v_1;
+            uint _e14 = bits;
+            uint _e18 = nyq_sobol_matrices[base_1 + metal::ctz(_e14)];
+            v_1 = _e12 ^ _e18;
+            uint _e20 = bits;
+            uint _e21 = bits;
+            bits = _e20 & (_e21 - 1u);
+        }
+    }
+    uint _e25 = v_1;
+    return _e25;
+}
+
+uint nyq_sobol_rev(
+    uint r,
+    uint dim_1,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = nyq_sobol_u32_(metal::reverse_bits(r), dim_1, nyq_sobol_matrices, _buffer_sizes);
+    return metal::reverse_bits(_e3);
+}
+
+NyqSobol nyq_sobol(
+    uint dims,
+    bool scrambled,
+    metal::uint2 seed_5
+) {
+    return NyqSobol {dims, scrambled ? 1u : 0u, seed_5};
+}
+
+uint nyq_sobol_sample_u32_(
+    NyqSobol s_5,
+    uint index_2,
+    uint dim_2,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint shift = 0u;
+    uint d_2 = naga_mod(dim_2, s_5.dims);
+    if (s_5.scrambled != 0u) {
+        metal::uint2 _e11 = nyq_u64_(d_2);
+        metal::uint2 _e12 = nyq_hash2_(s_5.seed, _e11);
+        shift = _e12.y;
+    }
+    uint _e14 = nyq_sobol_u32_(index_2, d_2, nyq_sobol_matrices, _buffer_sizes);
+    uint _e15 = shift;
+    return _e14 ^ _e15;
+}
+
+float nyq_sobol_sample(
+    NyqSobol s_6,
+    uint index_3,
+    uint dim_3,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = nyq_sobol_sample_u32_(s_6, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
+    float _e4 = nyq_fraction_to_f32_(_e3);
+    return _e4;
+}
+
+uint nyq_dim_seed(
+    uint key,
+    uint dim_4
+) {
+    uint _e5 = nyq_mix32_(key ^ (dim_4 * 2654435769u));
+    return _e5;
+}
+
+uint nyq_shuffle_rev(
+    uint index_4,
+    uint shuffle_seed
+) {
+    uint _e3 = nyq_lk_hash(0u, shuffle_seed);
+    uint fix = _e3 & 65535u;
+    uint _e7 = nyq_lk_hash(metal::reverse_bits(index_4), shuffle_seed);
+    return _e7 ^ fix;
+}
+
+uint nyq_owen_sobol_rev(
+    uint r_1,
+    uint dim_5,
+    uint dim_seed,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = nyq_sobol_rev(r_1, naga_mod(dim_5, NYQ_SOBOL_DIMS), nyq_sobol_matrices, _buffer_sizes);
+    uint _e6 = nyq_lk_hash(_e5, dim_seed);
+    return _e6;
+}
+
+NyqOwenSobol nyq_owen_sobol(
+    uint dims_1,
+    metal::uint2 seed_6
+) {
+    metal::uint2 _e3 = nyq_u64_(1331119438u);
+    metal::uint2 _e4 = nyq_hash2_(seed_6, _e3);
+    uint _e6 = nyq_mix32_(_e4.y);
+    return NyqOwenSobol {dims_1, _e6, _e4.x};
+}
+
+uint nyq_owen_sobol_sample_u32_(
+    NyqOwenSobol s_7,
+    uint index_5,
+    uint dim_6,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_3 = naga_mod(dim_6, s_7.dims);
+    uint _e6 = nyq_shuffle_rev(index_5, s_7.shuffle_seed);
+    uint _e8 = nyq_dim_seed(s_7.key, d_3);
+    uint _e9 = nyq_owen_sobol_rev(_e6, d_3, _e8, nyq_sobol_matrices, _buffer_sizes);
+    return metal::reverse_bits(_e9);
+}
+
+float nyq_owen_sobol_sample(
+    NyqOwenSobol s_8,
+    uint index_6,
+    uint dim_7,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = nyq_owen_sobol_sample_u32_(s_8, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
+    float _e4 = nyq_fraction_to_f32_(_e3);
+    return _e4;
+}
+
+metal::float4 nyq_owen_sobol_sample_4d(
+    NyqOwenSobol s_9,
+    uint index_7,
+    uint first_dim,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::float4 out_1 = {};
+    uint k_4 = 0u;
+    uint _e4 = nyq_shuffle_rev(index_7, s_9.shuffle_seed);
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e22 = k_4;
+            k_4 = _e22 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e8 = k_4;
+        if (_e8 < 4u) {
+        } else {
+            break;
+        }
+        {
+            uint _e11 = k_4;
+            uint d_4 = naga_mod(first_dim + _e11, s_9.dims);
+            uint _e15 = k_4;
+            uint _e18 = nyq_dim_seed(s_9.key, d_4);
+            uint _e19 = nyq_owen_sobol_rev(_e4, d_4, _e18, nyq_sobol_matrices, _buffer_sizes);
+            float _e20 = nyq_rev_to_f32_(_e19);
+            out_1[_e15] = _e20;
+        }
+    }
+    metal::float4 _e24 = out_1;
+    return _e24;
+}
+
+NyqOwenSobolSampler nyq_owen_sobol_sampler(
+    metal::uint2 seed_7,
+    uint frame
+) {
+    return NyqOwenSobolSampler {seed_7, frame, 0u, 0u, 0u};
+}
+
+void nyq_owen_sobol_start(
+    thread NyqOwenSobolSampler& s_10,
+    metal::uint2 pixel_1,
+    uint sample_index,
+    uint dim_8
+) {
+    metal::uint2 _e5 = nyq_u64_(pixel_1.x);
+    metal::uint2 _e7 = nyq_u64_(pixel_1.y);
+    uint _e9 = s_10.frame;
+    metal::uint2 _e10 = nyq_u64_(_e9);
+    metal::uint2 _e12 = s_10.seed;
+    metal::uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
+    s_10.key = _e13.x;
+    uint _e18 = nyq_mix32_(_e13.y);
+    uint _e19 = nyq_shuffle_rev(sample_index, _e18);
+    s_10.r = _e19;
+    s_10.dim = dim_8;
+    return;
+}
+
+float nyq_owen_sobol_value(
+    thread NyqOwenSobolSampler& s_11,
+    uint dim_9,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_11.r;
+    uint _e5 = s_11.key;
+    uint _e6 = nyq_dim_seed(_e5, dim_9);
+    uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6, nyq_sobol_matrices, _buffer_sizes);
+    float _e8 = nyq_rev_to_f32_(_e7);
+    return _e8;
+}
+
+float nyq_owen_sobol_get_1d(
+    thread NyqOwenSobolSampler& s_12,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_5 = s_12.dim;
+    s_12.dim = d_5 + 1u;
+    float _e6 = nyq_owen_sobol_value(s_12, d_5, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_owen_sobol_get_2d(
+    thread NyqOwenSobolSampler& s_13,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_6 = s_13.dim;
+    s_13.dim = d_6 + 2u;
+    float _e6 = nyq_owen_sobol_value(s_13, d_6, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_13, d_6 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_owen_sobol_get_pixel_2d(
+    thread NyqOwenSobolSampler& s_14,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_14.dim;
+    s_14.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_value(s_14, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_14, 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_owen_sobol_camera_sample(
+    thread NyqOwenSobolSampler& s_15,
+    metal::uint2 pixel_2,
+    uint sample_index_1,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    type_8 v_2 = {};
+    uint d_1 = 0u;
+    nyq_owen_sobol_start(s_15, pixel_2, sample_index_1, 0u);
+    uint2 loop_bound_3 = uint2(4294967295u);
+    bool loop_init_2 = true;
+    while(true) {
+        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+        if (!loop_init_2) {
+            uint _e15 = d_1;
+            d_1 = _e15 + 1u;
+        }
+        loop_init_2 = false;
+        uint _e7 = d_1;
+        if (_e7 < 5u) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = d_1;
+            uint _e12 = d_1;
+            float _e13 = nyq_owen_sobol_value(s_15, _e12, nyq_sobol_matrices, _buffer_sizes);
+            v_2.inner[_e10] = _e13;
+        }
+    }
+    s_15.dim = 5u;
+    float _e21 = v_2.inner[0];
+    float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
+    float _e25 = v_2.inner[1];
+    float _e26 = nyq_film_coordinate(pixel_2.y, _e25);
+    metal::float2 p = metal::float2(_e22, _e26);
+    float _e29 = v_2.inner[3];
+    float _e31 = v_2.inner[4];
+    float _e34 = v_2.inner[2];
+    return NyqCameraSample {p, metal::float2(_e29, _e31), _e34};
+}
+
+uint naga_div(uint lhs, uint rhs) {
+    return lhs / metal::select(rhs, 1u, rhs == 0u);
+}
+
+NyqZSobolSampler nyq_zsobol_sampler(
+    metal::uint2 resolution,
+    uint spp_requested,
+    uint scramble,
+    metal::uint2 seed_8
+) {
+    uint spp = (spp_requested <= 1u) ? 1u : (1u << (32u - metal::clz(spp_requested - 1u)));
+    uint side = metal::max(resolution.x, resolution.y);
+    uint log2_res = 32u - metal::clz(side - 1u);
+    uint log2_spp = metal::ctz(spp);
+    uint bits_1 = (2u * log2_res) + log2_spp;
+    return NyqZSobolSampler {spp, log2_spp, log2_res, scramble, seed_8, naga_div(bits_1, 2u), naga_div(log2_spp, 2u), log2_spp & 1u, 0u, 0u};
+}
+
+uint nyq_spread(
+    uint x_in_2
+) {
+    uint x_8 = {};
+    x_8 = x_in_2 & 65535u;
+    uint _e4 = x_8;
+    uint _e5 = x_8;
+    x_8 = (_e4 | (_e5 << 8u)) & 16711935u;
+    uint _e11 = x_8;
+    uint _e12 = x_8;
+    x_8 = (_e11 | (_e12 << 4u)) & 252645135u;
+    uint _e18 = x_8;
+    uint _e19 = x_8;
+    x_8 = (_e18 | (_e19 << 2u)) & 858993459u;
+    uint _e25 = x_8;
+    uint _e26 = x_8;
+    return (_e25 | (_e26 << 1u)) & 1431655765u;
+}
+
+uint nyq_zsobol_morton(
+    NyqZSobolSampler s_16,
+    metal::uint2 pixel_3
+) {
+    uint mask = (s_16.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_16.log2_res) & 31u));
+    uint _e16 = nyq_spread(pixel_3.x & mask);
+    uint _e19 = nyq_spread(pixel_3.y & mask);
+    return _e16 | (_e19 << 1u);
+}
+
+uint nyq_one_of_24_(
+    uint h
+) {
+    metal::uint2 _e2 = nyq_mul_wide(h, 24u);
+    return _e2.y;
+}
+
+metal::uint2 nyq_zsobol_dim_key(
+    metal::uint2 seed_9,
+    uint dim_10
+) {
+    metal::uint2 _e6 = nyq_hash2_(seed_9, metal::uint2(dim_10 ^ 1329745740u, 23123u));
+    return _e6;
+}
+
+uint nyq_zsobol_pixel_node(
+    uint higher,
+    metal::uint2 key_1
+) {
+    metal::uint2 _e4 = nyq_shr64_(key_1, 16u);
+    uint _e7 = nyq_mix32_(higher ^ _e4.x);
+    uint _e8 = nyq_one_of_24_(_e7);
+    return NYQ_PERMUTATIONS_4_.inner[_e8];
+}
+
+uint nyq_permuted_digit(
+    uint perm,
+    uint digit,
+    uint shift_1
+) {
+    return ((perm >> (2u * digit)) & 3u) << shift_1;
+}
+
+metal::uint2 nyq_zsobol_pixel_word(
+    uint pixel_morton,
+    metal::uint2 key_2
+) {
+    metal::uint2 _e3 = nyq_shl64_(key_2, 17u);
+    metal::uint2 rotated = _e3 | metal::uint2(key_2.y >> 15u, 0u);
+    metal::uint2 _e10 = nyq_u64_(pixel_morton);
+    metal::uint2 _e12 = nyq_mix64_(_e10 ^ rotated);
+    return _e12;
+}
+
+metal::uint2 nyq_zsobol_nested_word(
+    metal::uint2 w,
+    uint higher_1,
+    uint shift_2
+) {
+    metal::uint2 tag = metal::uint2((higher_1 << 6u) | shift_2, higher_1 >> 26u);
+    metal::uint2 _e12 = nyq_mul64_(tag, metal::uint2(2135587861u, 2654435769u));
+    metal::uint2 _e17 = nyq_mul64_(w ^ _e12, metal::uint2(3516067075u, 3518319154u));
+    return _e17;
+}
+
+uint nyq_zsobol_index(
+    NyqZSobolSampler s_17,
+    uint morton,
+    metal::uint2 key_3
+) {
+    uint index_8 = 0u;
+    uint i = {};
+    uint i_1 = {};
+    i = s_17.digits;
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e28 = i;
+            i = _e28 - 1u;
+        }
+        loop_init_3 = false;
+        uint _e7 = i;
+        if (_e7 > s_17.sample_digits) {
+        } else {
+            break;
+        }
+        {
+            uint _e11 = i;
+            uint shift_3 = (2u * (_e11 - 1u)) + s_17.odd;
+            uint digit_1 = (morton >> shift_3) & 3u;
+            uint _e20 = index_8;
+            uint _e23 = nyq_shr(morton, shift_3 + 2u);
+            uint _e24 = nyq_zsobol_pixel_node(_e23, key_3);
+            uint _e25 = nyq_permuted_digit(_e24, digit_1, shift_3);
+            index_8 = _e20 | _e25;
+        }
+    }
+    uint _e31 = nyq_shr(morton, s_17.log2_spp);
+    metal::uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
+    uint sample = morton & (s_17.spp - 1u);
+    i_1 = s_17.sample_digits;
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e64 = i_1;
+            i_1 = _e64 - 1u;
+        }
+        loop_init_4 = false;
+        uint _e39 = i_1;
+        if (_e39 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e43 = i_1;
+            uint shift_4 = (2u * (_e43 - 1u)) + s_17.odd;
+            uint digit_2 = (sample >> shift_4) & 3u;
+            uint _e54 = nyq_shr(sample, shift_4 + 2u);
+            metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
+            uint _e57 = nyq_one_of_24_(_e55.y);
+            uint _e58 = index_8;
+            uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_.inner[_e57], digit_2, shift_4);
+            index_8 = _e58 | _e61;
+        }
+    }
+    if (s_17.odd == 1u) {
+        uint _e69 = index_8;
+        metal::uint2 _e75 = nyq_zsobol_nested_word(_e32, sample >> 1u, 0u);
+        index_8 = _e69 | ((sample & 1u) ^ (_e75.y >> 31u));
+    }
+    uint _e81 = index_8;
+    return _e81;
+}
+
+uint nyq_zsobol_sequence_index(
+    NyqZSobolSampler s_18,
+    metal::uint2 pixel_4,
+    uint sample_index_2,
+    uint dim_11
+) {
+    uint _e4 = nyq_zsobol_morton(s_18, pixel_4);
+    uint morton_1 = (_e4 << s_18.log2_spp) | (sample_index_2 & (s_18.spp - 1u));
+    metal::uint2 _e13 = nyq_zsobol_dim_key(s_18.seed, dim_11);
+    uint _e14 = nyq_zsobol_index(s_18, morton_1, _e13);
+    return _e14;
+}
+
+uint nyq_zsobol_dim0_(
+    uint index_9,
+    uint seed_10,
+    uint how_1
+) {
+    if (how_1 == NYQ_SCRAMBLE_FAST_OWEN) {
+        uint _e5 = nyq_lk_hash(index_9, seed_10);
+        return metal::reverse_bits(_e5);
+    }
+    uint _e8 = nyq_scramble_u32_(metal::reverse_bits(index_9), seed_10, how_1);
+    return _e8;
+}
+
+float nyq_zsobol_value_1d(
+    thread NyqZSobolSampler& s_19,
+    uint dim_12
+) {
+    metal::uint2 _e3 = s_19.seed;
+    metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
+    NyqZSobolSampler _e5 = s_19;
+    uint _e7 = s_19.morton;
+    uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_19.scramble;
+    uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    float _e13 = nyq_fraction_to_f32_(_e12);
+    return _e13;
+}
+
+metal::float2 nyq_zsobol_value_2d(
+    thread NyqZSobolSampler& s_20,
+    uint dim_13,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint y = {};
+    metal::uint2 _e3 = s_20.seed;
+    metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
+    NyqZSobolSampler _e5 = s_20;
+    uint _e7 = s_20.morton;
+    uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_20.scramble;
+    uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    uint _e15 = s_20.scramble;
+    if (_e15 == NYQ_SCRAMBLE_FAST_OWEN) {
+        uint _e19 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
+        uint _e22 = nyq_lk_hash(metal::reverse_bits(_e19), _e4.y);
+        y = metal::reverse_bits(_e22);
+    } else {
+        uint _e25 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
+        uint _e28 = s_20.scramble;
+        uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
+        y = _e29;
+    }
+    float _e30 = nyq_fraction_to_f32_(_e12);
+    uint _e31 = y;
+    float _e32 = nyq_fraction_to_f32_(_e31);
+    return metal::float2(_e30, _e32);
+}
+
+void nyq_zsobol_start(
+    thread NyqZSobolSampler& s_21,
+    metal::uint2 pixel_5,
+    uint sample_index_3,
+    uint dim_14
+) {
+    NyqZSobolSampler _e5 = s_21;
+    uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
+    uint _e8 = s_21.log2_spp;
+    uint _e11 = s_21.spp;
+    s_21.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
+    s_21.dim = dim_14;
+    return;
+}
+
+float nyq_zsobol_get_1d(
+    thread NyqZSobolSampler& s_22
+) {
+    uint d_7 = s_22.dim;
+    s_22.dim = d_7 + 1u;
+    float _e6 = nyq_zsobol_value_1d(s_22, d_7);
+    return _e6;
+}
+
+metal::float2 nyq_zsobol_get_2d(
+    thread NyqZSobolSampler& s_23,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_8 = s_23.dim;
+    s_23.dim = d_8 + 2u;
+    metal::float2 _e6 = nyq_zsobol_value_2d(s_23, d_8, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_zsobol_get_pixel_2d(
+    thread NyqZSobolSampler& s_24,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_24.dim;
+    s_24.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_zsobol_value_2d(s_24, 0u, nyq_sobol_matrices, _buffer_sizes);
+    return _e7;
+}
+
+NyqCameraSample nyq_zsobol_camera_sample(
+    thread NyqZSobolSampler& s_25,
+    metal::uint2 pixel_6,
+    uint sample_index_4,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    nyq_zsobol_start(s_25, pixel_6, sample_index_4, 0u);
+    metal::float2 _e5 = nyq_zsobol_value_2d(s_25, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e7 = nyq_zsobol_value_1d(s_25, 2u);
+    metal::float2 _e9 = nyq_zsobol_value_2d(s_25, 3u, nyq_sobol_matrices, _buffer_sizes);
+    s_25.dim = 5u;
+    float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
+    float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
+    metal::float2 film = metal::float2(_e14, _e17);
+    return NyqCameraSample {film, _e9, _e7};
+}
+
+metal::uint4 nyq_fill_request(
+    uint i_2,
+    constant NyqFillJob& nyq_job,
+    device type_12 const& nyq_requests,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = nyq_job.implicit;
+    if (_e3 == 0u) {
+        metal::uint4 _e8 = nyq_requests[i_2];
+        return _e8;
+    }
+    uint _e11 = nyq_job.first;
+    uint n = _e11 + i_2;
+    uint _e15 = nyq_job.spp;
+    uint pixel_7 = naga_div(n, _e15);
+    uint _e20 = nyq_job.resolution.x;
+    uint _e25 = nyq_job.resolution.x;
+    uint _e29 = nyq_job.spp;
+    return metal::uint4(naga_mod(pixel_7, _e20), naga_div(pixel_7, _e25), naga_mod(n, _e29), 5u);
+}
+
+void nyq_fill_camera(
+    uint out_2,
+    NyqCameraSample c_1,
+    device type_4& nyq_values,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    nyq_values[out_2] = as_type<uint>(c_1.p_film.x);
+    nyq_values[out_2 + 1u] = as_type<uint>(c_1.p_film.y);
+    nyq_values[out_2 + 2u] = as_type<uint>(c_1.time);
+    nyq_values[out_2 + 3u] = as_type<uint>(c_1.lens.x);
+    nyq_values[out_2 + 4u] = as_type<uint>(c_1.lens.y);
+    return;
+}
+
+void nyq_fill_values(
+    uint out_3,
+    float one,
+    metal::float2 two,
+    device type_4& nyq_values,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    nyq_values[out_3 + 5u] = as_type<uint>(one);
+    nyq_values[out_3 + 6u] = as_type<uint>(two.x);
+    nyq_values[out_3 + 7u] = as_type<uint>(two.y);
+    return;
+}
+
+struct nyq_fillInput {
+};
+kernel void nyq_fill(
+  metal::uint3 id [[thread_position_in_grid]]
+, device type_4 const& nyq_sobol_matrices [[user(fake0)]]
+, constant NyqFillJob& nyq_job [[user(fake0)]]
+, device type_12 const& nyq_requests [[user(fake0)]]
+, device type_4& nyq_values [[user(fake0)]]
+, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+) {
+    NyqOwenSobolSampler s = {};
+    NyqZSobolSampler s_1 = {};
+    uint k = 0u;
+    uint k_1 = 0u;
+    uint k_2 = 0u;
+    uint i_3 = id.x;
+    uint _e4 = nyq_job.count;
+    if (i_3 >= _e4) {
+        return;
+    }
+    metal::uint4 _e6 = nyq_fill_request(i_3, nyq_job, nyq_requests, _buffer_sizes);
+    metal::uint2 pixel_8 = _e6.xy;
+    uint out_4 = 8u * i_3;
+    uint _e12 = nyq_job.kind;
+    switch(_e12) {
+        case 0u: {
+            metal::uint2 _e15 = nyq_job.seed;
+            uint _e18 = nyq_job.frame;
+            NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
+            s = _e19;
+            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_8, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            nyq_fill_camera(out_4, _e22, nyq_values, _buffer_sizes);
+            nyq_owen_sobol_start(s, pixel_8, _e6.z, _e6.w);
+            float _e25 = nyq_owen_sobol_get_1d(s, nyq_sobol_matrices, _buffer_sizes);
+            metal::float2 _e26 = nyq_owen_sobol_get_2d(s, nyq_sobol_matrices, _buffer_sizes);
+            nyq_fill_values(out_4, _e25, _e26, nyq_values, _buffer_sizes);
+            return;
+        }
+        case 1u: {
+            metal::uint2 _e29 = nyq_job.resolution;
+            uint _e32 = nyq_job.spp;
+            uint _e35 = nyq_job.scramble;
+            metal::uint2 _e38 = nyq_job.seed;
+            NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
+            s_1 = _e39;
+            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_8, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            nyq_fill_camera(out_4, _e42, nyq_values, _buffer_sizes);
+            nyq_zsobol_start(s_1, pixel_8, _e6.z, _e6.w);
+            float _e45 = nyq_zsobol_get_1d(s_1);
+            metal::float2 _e46 = nyq_zsobol_get_2d(s_1, nyq_sobol_matrices, _buffer_sizes);
+            nyq_fill_values(out_4, _e45, _e46, nyq_values, _buffer_sizes);
+            return;
+        }
+        case 16u: {
+            uint _e49 = nyq_job.dims;
+            uint _e52 = nyq_job.scramble;
+            metal::uint2 _e57 = nyq_job.seed;
+            NyqSobol _e58 = nyq_sobol(_e49, _e52 != 0u, _e57);
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_5 = true;
+            while(true) {
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e86 = k;
+                    k = _e86 + 1u;
+                }
+                loop_init_5 = false;
+                uint _e61 = k;
+                if (_e61 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e65 = k;
+                    uint _e70 = k;
+                    uint _e72 = nyq_sobol_sample_u32_(_e58, _e6.z, _e6.w + _e70, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e65] = _e72;
+                    uint _e76 = k;
+                    uint _e81 = k;
+                    float _e83 = nyq_sobol_sample(_e58, _e6.z, _e6.w + _e81, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[(out_4 + 4u) + _e76] = as_type<uint>(_e83);
+                }
+            }
+            return;
+        }
+        case 17u: {
+            uint _e90 = nyq_job.dims;
+            metal::uint2 _e93 = nyq_job.seed;
+            NyqOwenSobol _e94 = nyq_owen_sobol(_e90, _e93);
+            metal::float4 _e97 = nyq_owen_sobol_sample_4d(_e94, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
+            uint2 loop_bound_7 = uint2(4294967295u);
+            bool loop_init_6 = true;
+            while(true) {
+                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e122 = k_1;
+                    k_1 = _e122 + 1u;
+                }
+                loop_init_6 = false;
+                uint _e100 = k_1;
+                if (_e100 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e104 = k_1;
+                    uint _e109 = k_1;
+                    uint _e111 = nyq_owen_sobol_sample_u32_(_e94, _e6.z, _e6.w + _e109, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e104] = _e111;
+                    uint _e115 = k_1;
+                    uint _e118 = k_1;
+                    nyq_values[(out_4 + 4u) + _e115] = as_type<uint>(_e97[_e118]);
+                }
+            }
+            return;
+        }
+        default: {
+            uint2 loop_bound_8 = uint2(4294967295u);
+            bool loop_init_7 = true;
+            while(true) {
+                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (!loop_init_7) {
+                    uint _e135 = k_2;
+                    k_2 = _e135 + 1u;
+                }
+                loop_init_7 = false;
+                uint _e126 = k_2;
+                if (_e126 < 8u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e130 = k_2;
+                    nyq_values[out_4 + _e130] = 4294967295u;
+                }
+            }
+            return;
+        }
+    }
+}

@@ -1,0 +1,672 @@
+// ---------------------------------------------------------------------------------------------
+// hash: the integer hashes behind every scramble and per-pixel key (core/src/hash.rs).
+//
+// WGSL has no 64-bit integers, so a 64-bit word is a vec2<u32> (x: low half, y: high half) and
+// its arithmetic is written out on 32-bit halves: the same bits as the core's u64 code.
+
+// The full 64-bit product of two 32-bit words, from four 16 × 16-bit products (none overflows).
+fn nyq_mul_wide(a: u32, b: u32) -> vec2<u32> {
+    let a0 = a & 0xffffu;
+    let a1 = a >> 16u;
+    let b0 = b & 0xffffu;
+    let b1 = b >> 16u;
+    let p00 = a0 * b0;
+    let p01 = a0 * b1;
+    let p10 = a1 * b0;
+    let p11 = a1 * b1;
+    let mid = (p00 >> 16u) + (p01 & 0xffffu) + (p10 & 0xffffu);
+    return vec2<u32>((p00 & 0xffffu) | (mid << 16u), p11 + (p01 >> 16u) + (p10 >> 16u) + (mid >> 16u));
+}
+
+// a · b modulo 2⁶⁴.
+fn nyq_mul64(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let low = nyq_mul_wide(a.x, b.x);
+    return vec2<u32>(low.x, low.y + a.x * b.y + a.y * b.x);
+}
+
+// a + b modulo 2⁶⁴.
+fn nyq_add64(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    let low = a.x + b.x;
+    return vec2<u32>(low, a.y + b.y + select(0u, 1u, low < a.x));
+}
+
+// a >> s for 0 < s < 32.
+fn nyq_shr64(a: vec2<u32>, s: u32) -> vec2<u32> {
+    return vec2<u32>((a.x >> s) | (a.y << (32u - s)), a.y >> s);
+}
+
+// a << s for 0 < s < 32.
+fn nyq_shl64(a: vec2<u32>, s: u32) -> vec2<u32> {
+    return vec2<u32>(a.x << s, (a.y << s) | (a.x >> (32u - s)));
+}
+
+// A 32-bit value as a 64-bit word.
+fn nyq_u64(x: u32) -> vec2<u32> {
+    return vec2<u32>(x, 0u);
+}
+
+// The 32-bit avalanche finaliser lowbias32 (Wellons' hash-prospector constants): core `mix32`.
+fn nyq_mix32(x_in: u32) -> u32 {
+    var x = x_in;
+    x ^= x >> 16u;
+    x *= 0x7feb352du;
+    x ^= x >> 15u;
+    x *= 0x846ca68bu;
+    return x ^ (x >> 16u);
+}
+
+// The 64-bit finaliser of SplitMix64 (Stafford's Mix13 constants): core `mix64`.
+fn nyq_mix64(x_in: vec2<u32>) -> vec2<u32> {
+    var x = x_in;
+    x ^= nyq_shr64(x, 30u);
+    x = nyq_mul64(x, vec2<u32>(0x1ce4e5b9u, 0xbf58476du));
+    x ^= nyq_shr64(x, 27u);
+    x = nyq_mul64(x, vec2<u32>(0x133111ebu, 0x94d049bbu));
+    return x ^ nyq_shr64(x, 31u);
+}
+
+// Two 64-bit values hashed into one, order mattering: core `hash2`.
+fn nyq_hash2(a: vec2<u32>, b: vec2<u32>) -> vec2<u32> {
+    // ⌊2⁶⁴/φ⌋ and twice it, modulo 2⁶⁴.
+    let golden = vec2<u32>(0x7f4a7c15u, 0x9e3779b9u);
+    let golden2 = vec2<u32>(0xfe94f82au, 0x3c6ef372u);
+    return nyq_mix64(nyq_mix64(nyq_add64(a, golden)) ^ nyq_add64(b, golden2));
+}
+
+// core `hash_slice(&[a, b, c, d])`: hash2 folded over four words from ⌊2⁶⁴/φ⌋.
+fn nyq_hash4(a: vec2<u32>, b: vec2<u32>, c: vec2<u32>, d: vec2<u32>) -> vec2<u32> {
+    let golden = vec2<u32>(0x7f4a7c15u, 0x9e3779b9u);
+    return nyq_hash2(nyq_hash2(nyq_hash2(nyq_hash2(golden, a), b), c), d);
+}
+
+// A 32-bit binary fraction v / 2³² as an f32 in [0, 1): its top 24 bits, truncated (an exact
+// conversion and an exact scaling, so every device rounds it alike): core `fraction_to_f32`.
+fn nyq_fraction_to_f32(v: u32) -> f32 {
+    return f32(v >> 8u) * (1.0 / 16777216.0);
+}
+
+// The f32 of the binary fraction reverse(w_rev): what the core's reversed-table reads return.
+fn nyq_rev_to_f32(w_rev: u32) -> f32 {
+    return nyq_fraction_to_f32(reverseBits(w_rev));
+}
+
+// x >> s for any s (0 past 31; WGSL reduces a shift amount modulo 32).
+fn nyq_shr(x: u32, s: u32) -> u32 {
+    return select(x >> (s & 31u), 0u, s >= 32u);
+}
+
+// The film coordinate of an offset in [0, 1) inside a pixel, never on the next pixel's edge:
+// core `film_coordinate` (pixel coordinates below 2²⁴, where the conversion is exact).
+fn nyq_film_coordinate(pixel: u32, offset: f32) -> f32 {
+    let base = f32(pixel);
+    let x = base + offset;
+    let edge = base + 1.0;
+    if x < edge {
+        return x;
+    }
+    // The sum rounded up onto the next pixel's edge: the float just below it.
+    let below = bitcast<f32>(bitcast<u32>(edge) - 1u);
+    return select(base, below, below >= base);
+}
+
+// What a camera asks for at a pixel sample (core `CameraSample`): the film position, the time
+// and the lens position.
+struct NyqCameraSample {
+    p_film: vec2<f32>,
+    lens: vec2<f32>,
+    time: f32,
+}
+
+// ---------------------------------------------------------------------------------------------
+// scramble: base-2 scrambles (core/src/scramble.rs). A 32-bit value x is the binary fraction
+// x / 2³², bit 31 its first digit.
+
+// The scramble a sampler applies (core `Scramble`, in its order).
+const NYQ_SCRAMBLE_NONE: u32 = 0u;
+const NYQ_SCRAMBLE_PERMUTE_DIGITS: u32 = 1u;
+const NYQ_SCRAMBLE_FAST_OWEN: u32 = 2u;
+const NYQ_SCRAMBLE_OWEN: u32 = 3u;
+
+// The Laine–Karras-style hash with Vegdahl's constants on a bit-reversed value: bit k of the
+// result depends only on bits 0..=k of x_rev, so read backwards it is an Owen scramble. `seed`
+// must already be mixed. core `lk_hash`.
+fn nyq_lk_hash(x_rev: u32, seed: u32) -> u32 {
+    var x = x_rev ^ (x_rev * 0x3d20adeau);
+    x = (x + seed) * ((seed >> 16u) | 1u);
+    x ^= x * 0x05526c56u;
+    x ^= x * 0x53a22864u;
+    return x;
+}
+
+// The fast (hash) Owen scramble of x under any seed: core `fast_owen_scramble`.
+fn nyq_fast_owen_scramble(x: u32, seed: u32) -> u32 {
+    return reverseBits(nyq_lk_hash(reverseBits(x), nyq_mix32(seed ^ 0x6a09e667u)));
+}
+
+// Burley's nested uniform shuffle of an index: core `nested_uniform_shuffle`.
+fn nyq_nested_uniform_shuffle(index: u32, seed: u32) -> u32 {
+    return nyq_fast_owen_scramble(index, seed);
+}
+
+// The exact Owen scramble: digit k flips when the top bit of mix64(K · 2³² + 2ᵏ + prefix) is
+// set, K = mix32(seed ^ 0xbb67ae85), prefix the k digits before it. 32 hashes: core
+// `owen_scramble`.
+fn nyq_owen_scramble(x: u32, seed: u32) -> u32 {
+    let key = nyq_mix32(seed ^ 0xbb67ae85u);
+    var out = x;
+    for (var k = 0u; k < 32u; k++) {
+        let prefix = select(x >> ((32u - k) & 31u), 0u, k == 0u);
+        let word = vec2<u32>((1u << k) | prefix, key);
+        if (nyq_mix64(word).y >> 31u) == 1u {
+            out ^= 1u << (31u - k);
+        }
+    }
+    return out;
+}
+
+// x scrambled by `how` (NYQ_SCRAMBLE_*) under `seed`: core `scramble_u32`.
+fn nyq_scramble_u32(x: u32, seed: u32, how: u32) -> u32 {
+    switch how {
+        case 1u: {
+            return x ^ nyq_mix32(seed ^ 0x3c6ef372u);
+        }
+        case 2u: {
+            return nyq_fast_owen_scramble(x, seed);
+        }
+        case 3u: {
+            return nyq_owen_scramble(x, seed);
+        }
+        default: {
+            return x;
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// sobol: the Sobol sequence (core/src/sequence/sobol.rs) over the Joe–Kuo generator matrices.
+//
+// The matrices are a storage buffer of 1024 × 32 words, column k of dimension d at 32·d + k
+// (`nyquist_gpu::sobol_matrices()`, 128 KiB): a table that size has no place in shader
+// constants. Its group and binding are those below unless the engine asks for others
+// (`nyquist_gpu::Bindings`).
+
+@group(0) @binding(0) var<storage, read> nyq_sobol_matrices: array<u32>;
+
+// The number of Sobol dimensions; dimension d reads the matrix of d mod 1024.
+const NYQ_SOBOL_DIMS: u32 = 1024u;
+
+// Sobol point `index`, dimension `dim` (mod 1024), as a 32-bit fraction: the XOR of the
+// columns of the index's set bits. core `sobol_u32`.
+fn nyq_sobol_u32(index: u32, dim: u32) -> u32 {
+    let base = (dim % NYQ_SOBOL_DIMS) * 32u;
+    var v = 0u;
+    var bits = index;
+    while bits != 0u {
+        v ^= nyq_sobol_matrices[base + countTrailingZeros(bits)];
+        bits &= bits - 1u;
+    }
+    return v;
+}
+
+// reverse(sobol(reverse(r), dim)): the product on bit-reversed words, where the core's
+// Owen-scrambled forms work.
+fn nyq_sobol_rev(r: u32, dim: u32) -> u32 {
+    return reverseBits(nyq_sobol_u32(reverseBits(r), dim));
+}
+
+// The Sobol sequence over `dims` dimensions, plain or with a per-dimension digital shift
+// (core `Sobol::new`, `Sobol::with_scramble`). Build it with `nyq_sobol`.
+struct NyqSobol {
+    dims: u32,
+    scrambled: u32,
+    seed: vec2<u32>,
+}
+
+// The sequence of `dims` dimensions (1..=1024, which the host checks: core `Sobol::new`);
+// `scrambled` != 0 adds the digital shift of `seed`.
+fn nyq_sobol(dims: u32, scrambled: bool, seed: vec2<u32>) -> NyqSobol {
+    return NyqSobol(dims, select(0u, 1u, scrambled), seed);
+}
+
+// Point `index`, dimension `dim` (mod dims) as a 32-bit fraction: core `Sobol::sample_u32`.
+fn nyq_sobol_sample_u32(s: NyqSobol, index: u32, dim: u32) -> u32 {
+    let d = dim % s.dims;
+    var shift = 0u;
+    if s.scrambled != 0u {
+        shift = nyq_hash2(s.seed, nyq_u64(d)).y;
+    }
+    return nyq_sobol_u32(index, d) ^ shift;
+}
+
+// Point `index`, dimension `dim` as an f32: core `Sequence::sample`.
+fn nyq_sobol_sample(s: NyqSobol, index: u32, dim: u32) -> f32 {
+    return nyq_fraction_to_f32(nyq_sobol_sample_u32(s, index, dim));
+}
+
+// ---------------------------------------------------------------------------------------------
+// owen_sobol: Owen-scrambled Sobol (Burley 2020) as a sequence and as a pixel sampler
+// (core/src/sequence/owen_sobol.rs, core/src/sampler/owen_sobol.rs).
+//
+// Point i, dimension d is fast_owen(sobol(shuffle(i), d), seed_d): one nested uniform shuffle
+// of the index shared by every dimension, one Owen scramble per dimension. The core reads
+// precomputed products of reversed columns; here the same products come from the matrices.
+
+// The scramble seed of dimension `dim` under a sequence key: core `dim_seed`.
+fn nyq_dim_seed(key: u32, dim: u32) -> u32 {
+    return nyq_mix32(key ^ (dim * 0x9e3779b9u));
+}
+
+// The reversed shuffled index of `index` under a mixed shuffle seed (core `IndexShuffle::rev`):
+// the LK hash of the reversed index, with the fixed XOR that keeps indices below 2¹⁶ there.
+fn nyq_shuffle_rev(index: u32, shuffle_seed: u32) -> u32 {
+    let fix = nyq_lk_hash(0u, shuffle_seed) & 0xffffu;
+    return nyq_lk_hash(reverseBits(index), shuffle_seed) ^ fix;
+}
+
+// Dimension `dim` (mod 1024 for the matrix) at the reversed shuffled index `r`, scrambled under
+// the mixed `dim_seed`, still bit-reversed: core `owen_sobol_rev_u32` before its reversal.
+fn nyq_owen_sobol_rev(r: u32, dim: u32, dim_seed: u32) -> u32 {
+    return nyq_lk_hash(nyq_sobol_rev(r, dim % NYQ_SOBOL_DIMS), dim_seed);
+}
+
+// The Owen-scrambled Sobol sequence (core `OwenSobol`). Build it with `nyq_owen_sobol`.
+struct NyqOwenSobol {
+    dims: u32,
+    shuffle_seed: u32,
+    key: u32,
+}
+
+// The sequence of `dims` dimensions (1..=1024, which the host checks: core `OwenSobol::new`)
+// scrambled by the 64-bit `seed`.
+fn nyq_owen_sobol(dims: u32, seed: vec2<u32>) -> NyqOwenSobol {
+    // "OWEN"
+    let h = nyq_hash2(seed, nyq_u64(0x4f57454eu));
+    return NyqOwenSobol(dims, nyq_mix32(h.y), h.x);
+}
+
+// Point `index`, dimension `dim` (mod dims) as a 32-bit fraction: core `OwenSobol::sample_u32`.
+fn nyq_owen_sobol_sample_u32(s: NyqOwenSobol, index: u32, dim: u32) -> u32 {
+    let d = dim % s.dims;
+    let r = nyq_shuffle_rev(index, s.shuffle_seed);
+    return reverseBits(nyq_owen_sobol_rev(r, d, nyq_dim_seed(s.key, d)));
+}
+
+// Point `index`, dimension `dim` as an f32: core `Sequence::sample`.
+fn nyq_owen_sobol_sample(s: NyqOwenSobol, index: u32, dim: u32) -> f32 {
+    return nyq_fraction_to_f32(nyq_owen_sobol_sample_u32(s, index, dim));
+}
+
+// Dimensions first_dim .. first_dim + 4 (each mod dims) of point `index`, sharing one index
+// shuffle: core `OwenSobol::sample_4d`.
+fn nyq_owen_sobol_sample_4d(s: NyqOwenSobol, index: u32, first_dim: u32) -> vec4<f32> {
+    let r = nyq_shuffle_rev(index, s.shuffle_seed);
+    var out: vec4<f32>;
+    for (var k = 0u; k < 4u; k++) {
+        let d = (first_dim + k) % s.dims;
+        out[k] = nyq_rev_to_f32(nyq_owen_sobol_rev(r, d, nyq_dim_seed(s.key, d)));
+    }
+    return out;
+}
+
+// The Owen-scrambled Sobol pixel sampler (core `OwenSobolSampler`): sample i of pixel p in
+// frame f is point i of the sequence whose shuffle and scrambles are keyed by a 64-bit hash of
+// (p.x, p.y, f, seed). A cursor: `nyq_owen_sobol_sampler` builds it, the functions below move
+// it.
+struct NyqOwenSobolSampler {
+    seed: vec2<u32>,
+    frame: u32,
+    // The dimension seeds' key of the current pixel, and its reversed shuffled sample index.
+    key: u32,
+    r: u32,
+    dim: u32,
+}
+
+// A sampler for `frame` under the 64-bit `seed` (spp is the host's business: every 32-bit
+// sample index is a new point).
+fn nyq_owen_sobol_sampler(seed: vec2<u32>, frame: u32) -> NyqOwenSobolSampler {
+    return NyqOwenSobolSampler(seed, frame, 0u, 0u, 0u);
+}
+
+// Moves to sample `sample_index` of `pixel`, at dimension `dim`: core `start_pixel_sample`.
+fn nyq_owen_sobol_start(s: ptr<function, NyqOwenSobolSampler>, pixel: vec2<u32>, sample_index: u32, dim: u32) {
+    let h = nyq_hash4(nyq_u64(pixel.x), nyq_u64(pixel.y), nyq_u64((*s).frame), (*s).seed);
+    (*s).key = h.x;
+    (*s).r = nyq_shuffle_rev(sample_index, nyq_mix32(h.y));
+    (*s).dim = dim;
+}
+
+// Dimension `dim` of the current sample.
+fn nyq_owen_sobol_value(s: ptr<function, NyqOwenSobolSampler>, dim: u32) -> f32 {
+    return nyq_rev_to_f32(nyq_owen_sobol_rev((*s).r, dim, nyq_dim_seed((*s).key, dim)));
+}
+
+// The next dimension: core `get_1d`.
+fn nyq_owen_sobol_get_1d(s: ptr<function, NyqOwenSobolSampler>) -> f32 {
+    let d = (*s).dim;
+    (*s).dim = d + 1u;
+    return nyq_owen_sobol_value(s, d);
+}
+
+// The next two dimensions: core `get_2d`.
+fn nyq_owen_sobol_get_2d(s: ptr<function, NyqOwenSobolSampler>) -> vec2<f32> {
+    let d = (*s).dim;
+    (*s).dim = d + 2u;
+    return vec2<f32>(nyq_owen_sobol_value(s, d), nyq_owen_sobol_value(s, d + 1u));
+}
+
+// The image sample, dimensions 0 and 1, whatever the cursor: core `get_pixel_2d`.
+fn nyq_owen_sobol_get_pixel_2d(s: ptr<function, NyqOwenSobolSampler>) -> vec2<f32> {
+    (*s).dim = max((*s).dim, 2u);
+    return vec2<f32>(nyq_owen_sobol_value(s, 0u), nyq_owen_sobol_value(s, 1u));
+}
+
+// The camera's sample (film position, time, lens: dimensions 0..5), leaving the cursor at
+// dimension 5: core `camera_sample`.
+fn nyq_owen_sobol_camera_sample(s: ptr<function, NyqOwenSobolSampler>, pixel: vec2<u32>, sample_index: u32) -> NyqCameraSample {
+    nyq_owen_sobol_start(s, pixel, sample_index, 0u);
+    var v: array<f32, 5>;
+    for (var d = 0u; d < 5u; d++) {
+        v[d] = nyq_owen_sobol_value(s, d);
+    }
+    (*s).dim = 5u;
+    let p = vec2<f32>(nyq_film_coordinate(pixel.x, v[0]), nyq_film_coordinate(pixel.y, v[1]));
+    return NyqCameraSample(p, vec2<f32>(v[3], v[4]), v[2]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// zsobol: Sobol indices along a hash-permuted Morton curve (Ahmed & Wonka 2020; pbrt-v4's
+// ZSobolSampler), core/src/sampler/zsobol.rs. The core caches a pixel's permuted digits; this
+// is its direct form (`ZSobolSampler::sequence_index`), the same bits.
+
+// All 24 permutations of 0..4 in lexicographic order, entry k in bits 2k .. 2k + 2.
+const NYQ_PERMUTATIONS_4 = array<u32, 24>(
+    0xe4u, 0xb4u, 0xd8u, 0x78u, 0x9cu, 0x6cu, 0xe1u, 0xb1u, 0xc9u, 0x39u, 0x8du, 0x2du,
+    0xd2u, 0x72u, 0xc6u, 0x36u, 0x4eu, 0x1eu, 0x93u, 0x63u, 0x87u, 0x27u, 0x4bu, 0x1bu,
+);
+
+// A ZSobol sampler (core `ZSobolSampler`). Build it with `nyq_zsobol_sampler`.
+struct NyqZSobolSampler {
+    spp: u32,
+    log2_spp: u32,
+    log2_res: u32,
+    scramble: u32,
+    seed: vec2<u32>,
+    // Base-4 digits of the Morton index, those that hold sample bits, and whether log₂ spp is
+    // odd (a last base-2 digit).
+    digits: u32,
+    sample_digits: u32,
+    odd: u32,
+    // The current sample's Morton index.
+    morton: u32,
+    dim: u32,
+}
+
+// The sampler for an image of `resolution` pixels at `spp` samples per pixel (rounded up to a
+// power of two), scrambled by `scramble` (NYQ_SCRAMBLE_*) under `seed`. The host checks the
+// arguments as core `ZSobolSampler::new` does (2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32).
+fn nyq_zsobol_sampler(resolution: vec2<u32>, spp_requested: u32, scramble: u32, seed: vec2<u32>) -> NyqZSobolSampler {
+    let spp = select(1u << (32u - countLeadingZeros(spp_requested - 1u)), 1u, spp_requested <= 1u);
+    let side = max(resolution.x, resolution.y);
+    let log2_res = 32u - countLeadingZeros(side - 1u);
+    let log2_spp = countTrailingZeros(spp);
+    let bits = 2u * log2_res + log2_spp;
+    return NyqZSobolSampler(spp, log2_spp, log2_res, scramble, seed, bits / 2u, log2_spp / 2u, log2_spp & 1u, 0u, 0u);
+}
+
+// x's low 16 bits spread to the even bits.
+fn nyq_spread(x_in: u32) -> u32 {
+    var x = x_in & 0xffffu;
+    x = (x | (x << 8u)) & 0x00ff00ffu;
+    x = (x | (x << 4u)) & 0x0f0f0f0fu;
+    x = (x | (x << 2u)) & 0x33333333u;
+    return (x | (x << 1u)) & 0x55555555u;
+}
+
+// The pixel's Morton code in the sampler's power-of-two square (coordinates wrap).
+fn nyq_zsobol_morton(s: NyqZSobolSampler, pixel: vec2<u32>) -> u32 {
+    let mask = select(0xffffffffu >> ((32u - s.log2_res) & 31u), 0u, s.log2_res == 0u);
+    return nyq_spread(pixel.x & mask) | (nyq_spread(pixel.y & mask) << 1u);
+}
+
+// One of the 24 permutations by a 32-bit hash: ⌊h · 24 / 2³²⌋.
+fn nyq_one_of_24(h: u32) -> u32 {
+    return nyq_mul_wide(h, 24u).y;
+}
+
+// The hash key of requests at dimension `dim`: hash2(seed, dim ^ "ZSOBOL").
+fn nyq_zsobol_dim_key(seed: vec2<u32>, dim: u32) -> vec2<u32> {
+    return nyq_hash2(seed, vec2<u32>(dim ^ 0x4f424f4cu, 0x5a53u));
+}
+
+// The permutation of the pixel digit below the digits `higher`, under the request's key.
+fn nyq_zsobol_pixel_node(higher: u32, key: vec2<u32>) -> u32 {
+    return NYQ_PERMUTATIONS_4[nyq_one_of_24(nyq_mix32(higher ^ nyq_shr64(key, 16u).x))];
+}
+
+// Base-4 digit `digit` through the packed permutation `perm`, placed at bit `shift`.
+fn nyq_permuted_digit(perm: u32, digit: u32, shift: u32) -> u32 {
+    return ((perm >> (2u * digit)) & 3u) << shift;
+}
+
+// The random word of a pixel (its Morton code) for the requests keyed `key`:
+// mix64(morton ^ rotate_left(key, 17)).
+fn nyq_zsobol_pixel_word(pixel_morton: u32, key: vec2<u32>) -> vec2<u32> {
+    let rotated = nyq_shl64(key, 17u) | vec2<u32>(key.y >> 15u, 0u);
+    return nyq_mix64(nyq_u64(pixel_morton) ^ rotated);
+}
+
+// The word that picks the permutation of the sample digit at bit `shift` given the sample
+// digits above it: (w ^ ((higher << 6 | shift) · ⌊2⁶⁴/φ⌋)) · 0xd1b54a32d192ed03.
+fn nyq_zsobol_nested_word(w: vec2<u32>, higher: u32, shift: u32) -> vec2<u32> {
+    let tag = vec2<u32>((higher << 6u) | shift, higher >> 26u);
+    let spread = nyq_mul64(tag, vec2<u32>(0x7f4a7c15u, 0x9e3779b9u));
+    return nyq_mul64(w ^ spread, vec2<u32>(0xd192ed03u, 0xd1b54a32u));
+}
+
+// The permuted Sobol index of the sample whose Morton index is `morton`, for the request at
+// dimension `dim`: core `ZSobolSampler::sequence_index`.
+fn nyq_zsobol_index(s: NyqZSobolSampler, morton: u32, key: vec2<u32>) -> u32 {
+    var index = 0u;
+    // The pixel's digits, the most significant first, each permuted by a hash of those above.
+    for (var i = s.digits; i > s.sample_digits; i--) {
+        let shift = 2u * (i - 1u) + s.odd;
+        let digit = (morton >> shift) & 3u;
+        index |= nyq_permuted_digit(nyq_zsobol_pixel_node(nyq_shr(morton, shift + 2u), key), digit, shift);
+    }
+    // The sample's digits, each permuted by a multiplicative hash of the pixel word.
+    let w = nyq_zsobol_pixel_word(nyq_shr(morton, s.log2_spp), key);
+    let sample = morton & (s.spp - 1u);
+    for (var i = s.sample_digits; i > 0u; i--) {
+        let shift = 2u * (i - 1u) + s.odd;
+        let digit = (sample >> shift) & 3u;
+        let node = nyq_one_of_24(nyq_zsobol_nested_word(w, nyq_shr(sample, shift + 2u), shift).y);
+        index |= nyq_permuted_digit(NYQ_PERMUTATIONS_4[node], digit, shift);
+    }
+    if s.odd == 1u {
+        index |= (sample & 1u) ^ (nyq_zsobol_nested_word(w, sample >> 1u, 0u).y >> 31u);
+    }
+    return index;
+}
+
+// The permuted Sobol index of sample `sample_index` (mod spp) of `pixel` for the request at
+// `dim`: core `ZSobolSampler::sequence_index`.
+fn nyq_zsobol_sequence_index(s: NyqZSobolSampler, pixel: vec2<u32>, sample_index: u32, dim: u32) -> u32 {
+    let morton = (nyq_zsobol_morton(s, pixel) << s.log2_spp) | (sample_index & (s.spp - 1u));
+    return nyq_zsobol_index(s, morton, nyq_zsobol_dim_key(s.seed, dim));
+}
+
+// Sobol dimension 0 at `index` scrambled by `how` under `seed`.
+fn nyq_zsobol_dim0(index: u32, seed: u32, how: u32) -> u32 {
+    if how == NYQ_SCRAMBLE_FAST_OWEN {
+        return reverseBits(nyq_lk_hash(index, seed));
+    }
+    return nyq_scramble_u32(reverseBits(index), seed, how);
+}
+
+// The value of a 1-D request at `dim`.
+fn nyq_zsobol_value_1d(s: ptr<function, NyqZSobolSampler>, dim: u32) -> f32 {
+    let key = nyq_zsobol_dim_key((*s).seed, dim);
+    let index = nyq_zsobol_index(*s, (*s).morton, key);
+    return nyq_fraction_to_f32(nyq_zsobol_dim0(index, key.x, (*s).scramble));
+}
+
+// The value of a 2-D request at `dim`: Sobol dimensions 0 and 1 at the request's index.
+fn nyq_zsobol_value_2d(s: ptr<function, NyqZSobolSampler>, dim: u32) -> vec2<f32> {
+    let key = nyq_zsobol_dim_key((*s).seed, dim);
+    let index = nyq_zsobol_index(*s, (*s).morton, key);
+    let x = nyq_zsobol_dim0(index, key.x, (*s).scramble);
+    var y: u32;
+    if (*s).scramble == NYQ_SCRAMBLE_FAST_OWEN {
+        // The core's reversed-table form: the LK hash keyed by the key's high half directly.
+        y = reverseBits(nyq_lk_hash(reverseBits(nyq_sobol_u32(index, 1u)), key.y));
+    } else {
+        y = nyq_scramble_u32(nyq_sobol_u32(index, 1u), key.y, (*s).scramble);
+    }
+    return vec2<f32>(nyq_fraction_to_f32(x), nyq_fraction_to_f32(y));
+}
+
+// Moves to sample `sample_index` (mod spp) of `pixel`, at dimension `dim`.
+fn nyq_zsobol_start(s: ptr<function, NyqZSobolSampler>, pixel: vec2<u32>, sample_index: u32, dim: u32) {
+    (*s).morton = (nyq_zsobol_morton(*s, pixel) << (*s).log2_spp) | (sample_index & ((*s).spp - 1u));
+    (*s).dim = dim;
+}
+
+// The next dimension: core `get_1d`.
+fn nyq_zsobol_get_1d(s: ptr<function, NyqZSobolSampler>) -> f32 {
+    let d = (*s).dim;
+    (*s).dim = d + 1u;
+    return nyq_zsobol_value_1d(s, d);
+}
+
+// The next 2-D request: core `get_2d`.
+fn nyq_zsobol_get_2d(s: ptr<function, NyqZSobolSampler>) -> vec2<f32> {
+    let d = (*s).dim;
+    (*s).dim = d + 2u;
+    return nyq_zsobol_value_2d(s, d);
+}
+
+// The image sample (the request at dimension 0), whatever the cursor: core `get_pixel_2d`.
+fn nyq_zsobol_get_pixel_2d(s: ptr<function, NyqZSobolSampler>) -> vec2<f32> {
+    (*s).dim = max((*s).dim, 2u);
+    return nyq_zsobol_value_2d(s, 0u);
+}
+
+// The camera's sample: the image request at 0, time at 2, lens at 3; the cursor ends at 5.
+fn nyq_zsobol_camera_sample(s: ptr<function, NyqZSobolSampler>, pixel: vec2<u32>, sample_index: u32) -> NyqCameraSample {
+    nyq_zsobol_start(s, pixel, sample_index, 0u);
+    let p = nyq_zsobol_value_2d(s, 0u);
+    let time = nyq_zsobol_value_1d(s, 2u);
+    let lens = nyq_zsobol_value_2d(s, 3u);
+    (*s).dim = 5u;
+    let film = vec2<f32>(nyq_film_coordinate(pixel.x, p.x), nyq_film_coordinate(pixel.y, p.y));
+    return NyqCameraSample(film, lens, time);
+}
+
+// ---------------------------------------------------------------------------------------------
+// fill: one compute kernel over every sampler and sequence above, for engines to start from and
+// for the parity tests that hold each function to the core, bit for bit.
+//
+// Each invocation takes one request (pixel.x, pixel.y, sample index, dimension) and writes
+// eight words: for a pixel sampler, the camera sample of (pixel, sample index) (film x, film y,
+// time, lens x, lens y), then after start(pixel, sample index, dimension) one get_1d and one
+// get_2d; for a sequence, dimensions dimension .. dimension + 4 of point `sample index` as
+// 32-bit fractions, then the same four as the f32 bits of the 4-D form (or of single values
+// where a sequence has none).
+//
+// With `implicit` set, request i is sample i mod spp of pixel ⌊i / spp⌋ in row-major order
+// over `resolution`, at dimension 5 (a whole image's camera samples without a request buffer).
+
+// The kinds of request.
+const NYQ_FILL_OWEN_SOBOL_SAMPLER: u32 = 0u;
+const NYQ_FILL_ZSOBOL_SAMPLER: u32 = 1u;
+const NYQ_FILL_SOBOL: u32 = 16u;
+const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
+
+struct NyqFillJob {
+    kind: u32,
+    scramble: u32,
+    spp: u32,
+    frame: u32,
+    seed: vec2<u32>,
+    resolution: vec2<u32>,
+    dims: u32,
+    implicit: u32,
+    // The first request of this dispatch and the number of requests.
+    first: u32,
+    count: u32,
+}
+
+@group(0) @binding(1) var<uniform> nyq_job: NyqFillJob;
+@group(0) @binding(2) var<storage, read> nyq_requests: array<vec4<u32>>;
+@group(0) @binding(3) var<storage, read_write> nyq_values: array<u32>;
+
+// The request of invocation i: read, or implied by the image.
+fn nyq_fill_request(i: u32) -> vec4<u32> {
+    if nyq_job.implicit == 0u {
+        return nyq_requests[i];
+    }
+    let n = nyq_job.first + i;
+    let pixel = n / nyq_job.spp;
+    return vec4<u32>(pixel % nyq_job.resolution.x, pixel / nyq_job.resolution.x, n % nyq_job.spp, 5u);
+}
+
+fn nyq_fill_camera(out: u32, c: NyqCameraSample) {
+    nyq_values[out] = bitcast<u32>(c.p_film.x);
+    nyq_values[out + 1u] = bitcast<u32>(c.p_film.y);
+    nyq_values[out + 2u] = bitcast<u32>(c.time);
+    nyq_values[out + 3u] = bitcast<u32>(c.lens.x);
+    nyq_values[out + 4u] = bitcast<u32>(c.lens.y);
+}
+
+fn nyq_fill_values(out: u32, one: f32, two: vec2<f32>) {
+    nyq_values[out + 5u] = bitcast<u32>(one);
+    nyq_values[out + 6u] = bitcast<u32>(two.x);
+    nyq_values[out + 7u] = bitcast<u32>(two.y);
+}
+
+@compute @workgroup_size(64)
+fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
+    let i = id.x;
+    if i >= nyq_job.count {
+        return;
+    }
+    let q = nyq_fill_request(i);
+    let pixel = q.xy;
+    let out = 8u * i;
+    switch nyq_job.kind {
+        case 0u: {
+            var s = nyq_owen_sobol_sampler(nyq_job.seed, nyq_job.frame);
+            nyq_fill_camera(out, nyq_owen_sobol_camera_sample(&s, pixel, q.z));
+            nyq_owen_sobol_start(&s, pixel, q.z, q.w);
+            let one = nyq_owen_sobol_get_1d(&s);
+            nyq_fill_values(out, one, nyq_owen_sobol_get_2d(&s));
+        }
+        case 1u: {
+            var s = nyq_zsobol_sampler(nyq_job.resolution, nyq_job.spp, nyq_job.scramble, nyq_job.seed);
+            nyq_fill_camera(out, nyq_zsobol_camera_sample(&s, pixel, q.z));
+            nyq_zsobol_start(&s, pixel, q.z, q.w);
+            let one = nyq_zsobol_get_1d(&s);
+            nyq_fill_values(out, one, nyq_zsobol_get_2d(&s));
+        }
+        case 16u: {
+            let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);
+            for (var k = 0u; k < 4u; k++) {
+                nyq_values[out + k] = nyq_sobol_sample_u32(s, q.z, q.w + k);
+                nyq_values[out + 4u + k] = bitcast<u32>(nyq_sobol_sample(s, q.z, q.w + k));
+            }
+        }
+        case 17u: {
+            let s = nyq_owen_sobol(nyq_job.dims, nyq_job.seed);
+            let four = nyq_owen_sobol_sample_4d(s, q.z, q.w);
+            for (var k = 0u; k < 4u; k++) {
+                nyq_values[out + k] = nyq_owen_sobol_sample_u32(s, q.z, q.w + k);
+                nyq_values[out + 4u + k] = bitcast<u32>(four[k]);
+            }
+        }
+        default: {
+            for (var k = 0u; k < 8u; k++) {
+                nyq_values[out + k] = 0xffffffffu;
+            }
+        }
+    }
+}

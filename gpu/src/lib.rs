@@ -1,0 +1,314 @@
+//! # nyquist-gpu
+//!
+//! nyquist's stateless samplers as shader code: WGSL sources that return the core's values bit
+//! for bit, and GLSL 450, HLSL (shader model 6), MSL and SPIR-V emitted from them with `naga`.
+//!
+//! The WGSL is one module, [`WGSL`]: the library functions (prefixed `nyq_`) and one compute
+//! kernel, `nyq_fill`, that runs any of them over a buffer of requests. The emitted languages
+//! are translations of that module with `nyq_fill` as the entry point; checked-in copies live
+//! in `gpu/shaders/` of the repository and a test holds them to what [`emit`] returns.
+//!
+//! ```
+//! use nyquist_gpu::{emit, Language};
+//! let glsl = emit(Language::Glsl).unwrap();
+//! assert!(glsl.starts_with(b"#version 450"));
+//! ```
+//!
+//! The samplers read one table, the Sobol generator matrices, from a storage buffer the engine
+//! binds ([`sobol_matrices`], 128 KiB, at [`Bindings::sobol_matrices`]). Everything else is
+//! integer arithmetic on 32-bit words (64-bit words as `vec2<u32>` halves) and exact
+//! conversions; `docs/gpu.md` in the repository gives the float rules that keep every device's
+//! bits equal to the CPU's.
+
+use std::fmt;
+
+/// The library and its `nyq_fill` kernel, in WGSL: the source every other language is emitted
+/// from. Bindings: group 0, binding 0 the Sobol matrices; bindings 1–3 the kernel's job,
+/// requests and values.
+///
+/// ```
+/// assert!(nyquist_gpu::WGSL.contains("fn nyq_owen_sobol_camera_sample("));
+/// ```
+pub const WGSL: &str = concat!(
+    include_str!("../wgsl/hash.wgsl"),
+    "\n",
+    include_str!("../wgsl/scramble.wgsl"),
+    "\n",
+    include_str!("../wgsl/sobol.wgsl"),
+    "\n",
+    include_str!("../wgsl/owen_sobol.wgsl"),
+    "\n",
+    include_str!("../wgsl/zsobol.wgsl"),
+    "\n",
+    include_str!("../wgsl/fill.wgsl"),
+);
+
+/// The compute entry point of every emitted module.
+pub const ENTRY_POINT: &str = "nyq_fill";
+
+/// Threads per workgroup of [`ENTRY_POINT`].
+pub const WORKGROUP_SIZE: u32 = 64;
+
+/// Words `nyq_fill` writes per request.
+pub const WORDS_PER_REQUEST: usize = 8;
+
+/// The shader languages [`emit`] writes.
+///
+/// ```
+/// use nyquist_gpu::Language;
+/// assert_eq!(Language::from_name("glsl"), Some(Language::Glsl));
+/// assert_eq!(Language::SpirV.file_name(), "nyquist.spv");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Language {
+    /// WGSL, the source itself.
+    Wgsl,
+    /// GLSL 450 (core), a compute shader.
+    Glsl,
+    /// HLSL for shader model 6.0.
+    Hlsl,
+    /// Metal Shading Language 2.0.
+    Msl,
+    /// SPIR-V 1.0 (binary).
+    SpirV,
+}
+
+impl Language {
+    /// Every language, in the order above.
+    pub const ALL: [Language; 5] = [
+        Language::Wgsl,
+        Language::Glsl,
+        Language::Hlsl,
+        Language::Msl,
+        Language::SpirV,
+    ];
+
+    /// The language's name on the command line: `wgsl`, `glsl`, `hlsl`, `msl`, `spirv`.
+    ///
+    /// ```
+    /// assert_eq!(nyquist_gpu::Language::Msl.name(), "msl");
+    /// ```
+    pub const fn name(self) -> &'static str {
+        match self {
+            Language::Wgsl => "wgsl",
+            Language::Glsl => "glsl",
+            Language::Hlsl => "hlsl",
+            Language::Msl => "msl",
+            Language::SpirV => "spirv",
+        }
+    }
+
+    /// The language called `name` (ASCII case ignored), `None` for any other string.
+    ///
+    /// ```
+    /// use nyquist_gpu::Language;
+    /// assert_eq!(Language::from_name("SPIRV"), Some(Language::SpirV));
+    /// assert_eq!(Language::from_name("cuda"), None);
+    /// ```
+    pub fn from_name(name: &str) -> Option<Language> {
+        Language::ALL
+            .into_iter()
+            .find(|l| l.name().eq_ignore_ascii_case(name))
+    }
+
+    /// The file the checked-in copy and `nyquist shaders` use: `nyquist.wgsl`, `nyquist.comp.glsl`,
+    /// `nyquist.hlsl`, `nyquist.metal`, `nyquist.spv`.
+    ///
+    /// ```
+    /// assert_eq!(nyquist_gpu::Language::Glsl.file_name(), "nyquist.comp.glsl");
+    /// ```
+    pub const fn file_name(self) -> &'static str {
+        match self {
+            Language::Wgsl => "nyquist.wgsl",
+            Language::Glsl => "nyquist.comp.glsl",
+            Language::Hlsl => "nyquist.hlsl",
+            Language::Msl => "nyquist.metal",
+            Language::SpirV => "nyquist.spv",
+        }
+    }
+}
+
+/// Why [`emit`] failed: naga rejected the module or could not translate it. Each names the
+/// stage; the message is naga's.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct EmitError {
+    /// `parse`, `validate` or the language being written.
+    pub stage: &'static str,
+    /// naga's message.
+    pub message: String,
+}
+
+impl fmt::Display for EmitError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "shader {}: {}", self.stage, self.message)
+    }
+}
+
+impl std::error::Error for EmitError {}
+
+/// Where the engine binds the library's buffers. The defaults are the ones in [`WGSL`].
+///
+/// ```
+/// use nyquist_gpu::Bindings;
+/// let b = Bindings { group: 2, sobol_matrices: 7 };
+/// let wgsl = b.apply(nyquist_gpu::WGSL);
+/// assert!(wgsl.contains("@group(2) @binding(7) var<storage, read> nyq_sobol_matrices"));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Bindings {
+    /// The bind group of every buffer.
+    pub group: u32,
+    /// The binding of the Sobol matrices.
+    pub sobol_matrices: u32,
+}
+
+impl Bindings {
+    /// `source` (the [`WGSL`] module or a copy of its library part) with the matrices'
+    /// declaration moved to these bindings. The kernel's own bindings keep their numbers in
+    /// the new group.
+    pub fn apply(&self, source: &str) -> String {
+        source
+            .replace(
+                "@group(0) @binding(0) var<storage, read> nyq_sobol_matrices",
+                &format!(
+                    "@group({}) @binding({}) var<storage, read> nyq_sobol_matrices",
+                    self.group, self.sobol_matrices
+                ),
+            )
+            .replace(
+                "@group(0) @binding(",
+                &format!("@group({}) @binding(", self.group),
+            )
+    }
+}
+
+/// The Sobol generator matrices the shaders read: 1024 dimensions × 32 columns, column `k` of
+/// dimension `d` at `32·d + k` (the core's Joe–Kuo matrices, `sobol_u32(1 << k, d)`).
+///
+/// ```
+/// let m = nyquist_gpu::sobol_matrices();
+/// assert_eq!(m.len(), 1024 * 32);
+/// assert_eq!(m[0], 1 << 31); // dimension 0 is the van der Corput sequence
+/// ```
+pub fn sobol_matrices() -> Vec<u32> {
+    let mut out = Vec::with_capacity(1024 * 32);
+    for d in 0..nyquist::sequence::SOBOL_DIMS {
+        for k in 0..32 {
+            out.push(nyquist::sequence::sobol_u32(1 << k, d));
+        }
+    }
+    out
+}
+
+/// The parsed and validated [`WGSL`] module.
+fn module() -> Result<(naga::Module, naga::valid::ModuleInfo), EmitError> {
+    let module = naga::front::wgsl::parse_str(WGSL).map_err(|e| EmitError {
+        stage: "parse",
+        message: e.emit_to_string(WGSL),
+    })?;
+    let info = naga::valid::Validator::new(
+        naga::valid::ValidationFlags::all(),
+        naga::valid::Capabilities::empty(),
+    )
+    .validate(&module)
+    .map_err(|e| EmitError {
+        stage: "validate",
+        message: e.emit_to_string(WGSL),
+    })?;
+    Ok((module, info))
+}
+
+/// The module in `language`: text for the shading languages, a SPIR-V binary (little-endian
+/// words) for [`Language::SpirV`]. Deterministic: the same bytes every call.
+///
+/// # Errors
+/// [`EmitError`] if naga rejects the module or a backend cannot write it (a defect of the
+/// sources, which the crate's tests rule out for every language).
+pub fn emit(language: Language) -> Result<Vec<u8>, EmitError> {
+    if language == Language::Wgsl {
+        module()?;
+        return Ok(WGSL.as_bytes().to_vec());
+    }
+    let (module, info) = module()?;
+    let fail = |message: String| EmitError {
+        stage: language.name(),
+        message,
+    };
+    let text = match language {
+        Language::Wgsl => unreachable!("returned above"),
+        Language::Glsl => {
+            // Binding b of group 0 as `layout(binding = b)`: the numbers the other languages use.
+            let binding_map = (0..4)
+                .map(|b| {
+                    let target = naga::ResourceBinding {
+                        group: 0,
+                        binding: b,
+                    };
+                    (target, b as u8)
+                })
+                .collect();
+            let options = naga::back::glsl::Options {
+                version: naga::back::glsl::Version::Desktop(450),
+                writer_flags: naga::back::glsl::WriterFlags::empty(),
+                binding_map,
+                ..Default::default()
+            };
+            let pipeline = naga::back::glsl::PipelineOptions {
+                shader_stage: naga::ShaderStage::Compute,
+                entry_point: ENTRY_POINT.to_string(),
+                multiview: None,
+            };
+            let mut out = String::new();
+            let mut writer = naga::back::glsl::Writer::new(
+                &mut out,
+                &module,
+                &info,
+                &options,
+                &pipeline,
+                naga::proc::BoundsCheckPolicies::default(),
+            )
+            .map_err(|e| fail(e.to_string()))?;
+            writer.write().map_err(|e| fail(e.to_string()))?;
+            out
+        }
+        Language::Hlsl => {
+            let options = naga::back::hlsl::Options {
+                shader_model: naga::back::hlsl::ShaderModel::V6_0,
+                ..Default::default()
+            };
+            let pipeline = naga::back::hlsl::PipelineOptions {
+                entry_point: Some((naga::ShaderStage::Compute, ENTRY_POINT.to_string())),
+            };
+            let mut out = String::new();
+            naga::back::hlsl::Writer::new(&mut out, &options, &pipeline)
+                .write(&module, &info, None)
+                .map_err(|e| fail(e.to_string()))?;
+            out
+        }
+        Language::Msl => {
+            let options = naga::back::msl::Options {
+                lang_version: (2, 0),
+                fake_missing_bindings: true,
+                ..Default::default()
+            };
+            let pipeline = naga::back::msl::PipelineOptions {
+                entry_point: Some((naga::ShaderStage::Compute, ENTRY_POINT.to_string())),
+                ..Default::default()
+            };
+            naga::back::msl::write_string(&module, &info, &options, &pipeline)
+                .map_err(|e| fail(e.to_string()))?
+                .0
+        }
+        Language::SpirV => {
+            let options = naga::back::spv::Options::default();
+            let pipeline = naga::back::spv::PipelineOptions {
+                shader_stage: naga::ShaderStage::Compute,
+                entry_point: ENTRY_POINT.to_string(),
+            };
+            let words = naga::back::spv::write_vec(&module, &info, &options, Some(&pipeline))
+                .map_err(|e| fail(e.to_string()))?;
+            return Ok(words.iter().flat_map(|w| w.to_le_bytes()).collect());
+        }
+    };
+    Ok(text.into_bytes())
+}
