@@ -13,9 +13,11 @@ use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use nyquist::sampler::{OwenSobolSampler, Sampler, SobolSampler, ZSobolSampler, camera_sample};
+use nyquist::sampler::{
+    HaltonSampler, OwenSobolSampler, Sampler, SobolSampler, ZSobolSampler, camera_sample,
+};
 use nyquist::scramble::Scramble;
-use nyquist::sequence::{OwenSobol, Sequence};
+use nyquist::sequence::{OwenSobol, Pmj02, Sequence};
 
 fn workspace() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
@@ -187,7 +189,9 @@ impl Expected {
 const OWEN_SOBOL_SAMPLER: u32 = 0;
 const ZSOBOL_SAMPLER: u32 = 1;
 const SOBOL_SAMPLER: u32 = 2;
+const HALTON_SAMPLER: u32 = 3;
 const OWEN_SOBOL_SEQUENCE: u32 = 10;
+const PMJ02_SEQUENCE: u32 = 11;
 
 /// Every configuration the C API cannot build, with the core's values.
 fn expected() -> Expected {
@@ -234,6 +238,33 @@ fn expected() -> Expected {
             let spp = s.samples_per_pixel();
             e.config(SOBOL_SAMPLER, scramble, size, spp, 0, 0, seed, queries);
             e.sampler(&mut s, queries, &mut r);
+        }
+    }
+    for scramble in [Scramble::FastOwen, Scramble::Owen, Scramble::PermuteDigits] {
+        for (k, (size, spp)) in [([64u32, 48], 16u32), ([1920, 1080], 64), ([3, 1], 1)]
+            .into_iter()
+            .enumerate()
+        {
+            let seed = if k == 0 { 0 } else { r.next() };
+            let mut s = HaltonSampler::new(size, spp, scramble, seed).unwrap();
+            e.config(HALTON_SAMPLER, scramble, size, spp, 0, 0, seed, queries);
+            e.sampler(&mut s, queries, &mut r);
+        }
+    }
+    for k in 0..4 {
+        let seed = r.next();
+        let (s, scramble) = if k < 2 {
+            (Pmj02::new(), Scramble::None)
+        } else {
+            (Pmj02::scrambled(seed), Scramble::FastOwen)
+        };
+        let count = 130_000;
+        e.config(PMJ02_SEQUENCE, scramble, [1, 1], 0, 0, 2, seed, count);
+        for _ in 0..count {
+            let (index, dim) = (r.next() as u32, r.below(4));
+            e.u32(index);
+            e.u32(dim);
+            e.f32s(&[s.sample(u64::from(index), dim)]);
         }
     }
     for (dims, count) in [(1024u32, 150_000u32), (5, 60_000)] {

@@ -2593,6 +2593,574 @@ struct LatticeSampler {
     }
 };
 
+// ---------------------------------------------------------------------------------------------
+// Radical inverses and Halton (core/src/radical/, core/src/compact.rs; Halton 1960).
+
+/// Per-base constants of the radical inverse's fast path (the core's `fast_class`): for an
+/// index of `c + 1` nibbles, the digits its reversal spans and `1 / b^digits` as a `double`.
+struct HaltonBase {
+    std::uint32_t b;
+    std::uint64_t limit;  // b^k, k the largest with b^k < 2³²: indices below take the fast path
+    std::uint8_t digits[8];
+    double inv[8];
+};
+
+template <std::uint32_t N>
+struct HaltonBases {
+    HaltonBase base[N];
+};
+
+namespace detail {
+
+/// The first `N` primes, at compile time.
+template <std::uint32_t N>
+struct Primes {
+    std::uint32_t p[N];
+};
+
+template <std::uint32_t N>
+constexpr Primes<N> make_primes() {
+    Primes<N> out{};
+    std::uint32_t count = 0;
+    for (std::uint32_t c = 2; count < N; ++c) {
+        bool prime = true;
+        for (std::uint32_t k = 0; k < count && out.p[k] * out.p[k] <= c; ++k)
+            if (c % out.p[k] == 0) {
+                prime = false;
+                break;
+            }
+        if (prime) out.p[count++] = c;
+    }
+    return out;
+}
+
+constexpr std::uint32_t chunk_digits(std::uint64_t b) {
+    std::uint32_t k = 0;
+    std::uint64_t p = 1;
+    while (p * b < (std::uint64_t{1} << 32)) {
+        p *= b;
+        ++k;
+    }
+    return k;
+}
+
+/// Digits per table chunk of the core's table path (`chunk_len`): the reversal spans whole
+/// chunks, which fixes how the core rounds a short index.
+constexpr std::uint32_t chunk_len(std::uint64_t b) {
+    const std::uint64_t limit = b == 3 ? 6561 : 4096;
+    std::uint32_t j = 0;
+    std::uint64_t p = 1;
+    while (p * b <= limit) {
+        p *= b;
+        ++j;
+    }
+    return j >= 2 ? j : b <= 83 ? 2 : 1;
+}
+
+template <std::uint32_t N>
+constexpr HaltonBases<N> make_halton_bases() {
+    static_assert(N >= 1 && N <= 1024, "Halton dimension count must be in 1..=1024");
+    const Primes<N> primes = make_primes<N>();
+    HaltonBases<N> out{};
+    for (std::uint32_t d = 0; d < N; ++d) {
+        const std::uint64_t b = primes.p[d];
+        HaltonBase& base = out.base[d];
+        base.b = primes.p[d];
+        const std::uint32_t k = chunk_digits(b), j = chunk_len(b);
+        std::uint64_t limit = 1;
+        for (std::uint32_t i = 0; i < k; ++i) limit *= b;
+        base.limit = limit;
+        for (std::uint32_t c = 1; c <= 8; ++c) {
+            std::uint64_t x = (std::uint64_t{1} << (4 * c)) - 1;
+            std::uint32_t n = 0;
+            while (x > 0) {
+                x /= b;
+                ++n;
+            }
+            if (n > k) n = k;
+            const std::uint32_t spanned = (n + j - 1) / j * j;
+            std::uint64_t pow = 1;
+            for (std::uint32_t i = 0; i < spanned; ++i) pow *= b;
+            base.digits[c - 1] = static_cast<std::uint8_t>(spanned);
+            base.inv[c - 1] = 1.0 / static_cast<double>(pow);
+        }
+    }
+    return out;
+}
+
+template <std::uint32_t N>
+constexpr HaltonBases<N> halton_bases_host = make_halton_bases<N>();
+#if defined(__CUDACC__)
+template <std::uint32_t N>
+__device__ constexpr HaltonBases<N> halton_bases_device = make_halton_bases<N>();
+#endif
+
+template <std::uint32_t N>
+NYQ_HD inline const HaltonBase& halton_base(std::uint32_t d) {
+#if defined(__CUDA_ARCH__)
+    return halton_bases_device<N>.base[d];
+#else
+    return halton_bases_host<N>.base[d];
+#endif
+}
+
+NYQ_HD inline float min_one(float x) { return x < kOneMinusEpsilon ? x : kOneMinusEpsilon; }
+
+/// Φ₂(a) correctly rounded (the core's `phi2`).
+NYQ_HD inline float phi2(std::uint64_t a) {
+    if (a >> 32 == 0)
+        return min_one(static_cast<float>(reverse_bits(static_cast<std::uint32_t>(a))) *
+                       (1.0f / 4294967296.0f));
+    const std::uint64_t r = reverse_bits64(a);
+    const std::uint64_t top = r >> 63;
+    const std::int64_t m = static_cast<std::int64_t>((r >> top) | (r & top));
+    const float scale = bits_float(static_cast<std::uint32_t>(127 - 64 + top) << 23);
+    return min_one(static_cast<float>(m) * scale);
+}
+
+/// `(q + f)·2^e` rounded to `bits` significant bits, ties to even (`sticky`: f > 0).
+NYQ_HD inline std::uint64_t round_bits(std::uint64_t q, std::int32_t& e, bool sticky,
+                                       std::uint32_t bits) {
+    const std::uint32_t len = 64 - clz64(q);
+    if (len <= bits) return q;
+    const std::uint32_t sh = len - bits;
+    const std::uint64_t rest = q & ((std::uint64_t{1} << sh) - 1);
+    const std::uint64_t half = std::uint64_t{1} << (sh - 1);
+    std::uint64_t m = q >> sh;
+    if (rest > half || (rest == half && (sticky || (m & 1) == 1))) m += 1;
+    e += static_cast<std::int32_t>(sh);
+    return m;
+}
+
+NYQ_HD inline float scale_f32(std::uint64_t q, std::int32_t e) {
+    return static_cast<float>(q) * bits_float(static_cast<std::uint32_t>(e + 127) << 23);
+}
+
+/// Φ_b(a) for `a < b^k`: digits reversed over `digits` places times `inv`, rounded through
+/// `double` to `float` (the core's table path, bit for bit).
+NYQ_HD inline float phi_short(std::uint32_t b, std::uint32_t digits, double inv, std::uint32_t a) {
+    std::uint32_t x = a;
+    std::uint64_t rev = 0;
+    for (std::uint32_t i = 0; i < digits; ++i) {
+        rev = rev * b + x % b;
+        x /= b;
+    }
+    return min_one(static_cast<float>(static_cast<double>(rev) * inv));
+}
+
+/// Φ_b(a) for any `a`, correctly rounded: the exact fraction divided bit by bit.
+NYQ_HD inline float phi_long(std::uint32_t b, std::uint64_t a) {
+    U128 num{0, 0}, den{0, 1};
+    for (std::uint64_t x = a; x > 0; x /= b) {
+        num = add(mul_small(num, b), u128(x % b));
+        den = mul_small(den, b);
+    }
+    if (is_zero(num)) return 0.0f;
+    const std::uint32_t s = clz128(num) - clz128(den);
+    U128 r = shl(num, s);
+    std::uint64_t q = 0;
+    for (int i = 0; i < 26; ++i) {
+        q <<= 1;
+        if (!lt(r, den)) {
+            r = sub(r, den);
+            q |= 1;
+        }
+        r = shl(r, 1);
+    }
+    std::int32_t e = -static_cast<std::int32_t>(s) - 25;
+    const std::uint64_t m = round_bits(q, e, !is_zero(r), 24);
+    return min_one(scale_f32(m, e));
+}
+
+/// `num / den` (`num < den < 2⁹⁶`) correctly rounded to `float`, clamped below one (the core's
+/// `fraction_f32` by long division in 32-bit words).
+NYQ_HD inline float fraction_f32(U128 num, U128 den) {
+    U128 r = num, acc{0, 0};
+    std::int32_t exp = 0;
+    for (int words = 0; lt(acc, U128{4, 0}) && words < 10; ++words) {
+        const U128 t = shl(r, 32);
+        U128 q, rem;
+        divmod(t, den, q, rem);
+        acc = bor(shl(acc, 32), q);
+        r = rem;
+        exp -= 32;
+    }
+    const bool sticky = !is_zero(r);
+    const std::uint32_t len = 128 - clz128(acc);
+    const std::uint32_t shift = len > 64 ? len - 64 : 0;
+    const bool lost = shift > 0 && !is_zero(shl(acc, 128 - shift));
+    const std::uint64_t m = shr(acc, shift).lo | ((lost || sticky) ? 1u : 0u);
+    const std::int32_t e = exp + static_cast<std::int32_t>(shift);
+    const double scaled = static_cast<double>(static_cast<float>(m)) *
+                          bits_double(static_cast<std::uint64_t>(e + 1023) << 52);
+    return min_one(static_cast<float>(scaled));
+}
+
+constexpr std::uint64_t kOwenTagUniform = 0x4f57454e5f554e49ull;
+constexpr std::uint64_t kOwenTagAffine = 0x4f57454e5f414646ull;
+
+/// Owen-scrambled Φ_b(a) (the core's `nested_f32`): digit j goes through a permutation of
+/// `0..b` drawn from a hash of (seed, dimension, j, a mod bʲ) — a uniform one (`affine ==
+/// false`, exact Owen) or `x ↦ m·x + g mod b` (fast Owen) — until `b^K ≥ 2³²`.
+NYQ_HD inline float nested_f32(std::uint32_t d, std::uint32_t b, std::uint64_t a, std::uint64_t seed,
+                               bool affine) {
+    const std::uint64_t key = hash3(seed, d, affine ? kOwenTagAffine : kOwenTagUniform);
+    const std::uint64_t split = ((std::uint64_t{1} << 40) + b - 1) / b;
+    std::uint64_t rest = a, pow = 1, level = 0, num = 0, den = 1;
+    while (den >> 32 == 0) {
+        std::uint64_t next = 0, digit = 0;
+        if (rest != 0) {
+            next = rest / b;
+            digit = rest - next * b;
+        }
+        const std::uint64_t prefix = a - rest * pow;
+        const std::uint64_t h =
+            mix64((key ^ (prefix * 0x517cc1b727220a95ull)) + level * 0x9e3779b97f4a7c15ull);
+        rest = next;
+        pow *= b;
+        level += 1;
+        std::uint64_t out;
+        if (affine) {
+            const U128 t = mul_wide(h, b);
+            const std::uint64_t g = t.hi;
+            const std::uint64_t m = 1 + mul_hi(t.lo, b - 1);
+            const std::uint64_t x = m * digit + g;
+            out = x - b * ((x * split) >> 40);
+        } else if (b <= 16) {
+            out = packed_entry(packed_table(b, h), static_cast<std::uint32_t>(digit));
+        } else {
+            out = Permutation::make(b, static_cast<std::uint32_t>(h ^ (h >> 32)))
+                      .apply(static_cast<std::uint32_t>(digit));
+        }
+        num = num * b + out;
+        den *= b;
+    }
+    return min_one(static_cast<float>(static_cast<double>(num) / static_cast<double>(den)));
+}
+
+}  // namespace detail
+
+/// Φ_b(a), b the `dim`-th prime (`dim mod N`; the core wraps modulo 1024, so `N = 1024` is the
+/// core's `radical_inverse` for every dim): the core's table path, bit for bit, for every 64-bit
+/// index. 88 bytes of constants per base.
+template <std::uint32_t N = 1024>
+NYQ_HD inline float radical_inverse(std::uint32_t dim, std::uint64_t a) {
+    const std::uint32_t d = dim % N;
+    if (d == 0) return detail::phi2(a);
+    const HaltonBase& base = detail::halton_base<N>(d);
+    if (a < base.limit) {
+        if (a == 0) return 0.0f;
+        const std::uint32_t c = (64 - detail::clz64(a) + 3) / 4 - 1;
+        return detail::phi_short(base.b, base.digits[c], base.inv[c], static_cast<std::uint32_t>(a));
+    }
+    return detail::phi_long(base.b, a);
+}
+
+/// Φ_b(a) with every digit through one permutation of `0..b` keyed by (seed, b), the infinite
+/// tail of leading zeros summed exactly (the core's `scrambled_radical_inverse`).
+template <std::uint32_t N = 1024>
+NYQ_HD inline float scrambled_radical_inverse(std::uint32_t dim, std::uint64_t a, std::uint64_t seed) {
+    const std::uint32_t b = detail::halton_base<N>(dim % N).b;
+    const std::uint64_t key = hash2(seed, b);
+    const Permutation pi = Permutation::make(b, static_cast<std::uint32_t>(key ^ (key >> 32)));
+    detail::U128 num{0, 0}, den{0, 1};
+    for (std::uint64_t x = a; x > 0; x /= b) {
+        num = detail::add(detail::mul_small(num, b), detail::u128(pi.apply(static_cast<std::uint32_t>(x % b))));
+        den = detail::mul_small(den, b);
+    }
+    const std::uint32_t tail = pi.apply(0);
+    num = detail::add(detail::mul_small(num, b - 1), detail::u128(tail));
+    den = detail::mul_small(den, b - 1);
+    float x;
+    if (den.hi == 0 && den.lo < (std::uint64_t{1} << 53))
+        x = static_cast<float>(static_cast<double>(num.lo) / static_cast<double>(den.lo));
+    else
+        x = detail::fraction_f32(num, den);
+    if (tail == b - 1) x = detail::bits_float(detail::float_bits(x) - 1);
+    return detail::min_one(x);
+}
+
+/// Owen-scrambled Φ_b(a) (Owen 1995; the core's `owen_scrambled_radical_inverse`).
+template <std::uint32_t N = 1024>
+NYQ_HD inline float owen_scrambled_radical_inverse(std::uint32_t dim, std::uint64_t a,
+                                                   std::uint64_t seed) {
+    const std::uint32_t d = dim % N;
+    return detail::nested_f32(dim % 1024, detail::halton_base<N>(d).b, a, seed, false);
+}
+
+/// The fast (affine per node) nested scramble of Φ_b(a) (the core's
+/// `fast_owen_scrambled_radical_inverse`).
+template <std::uint32_t N = 1024>
+NYQ_HD inline float fast_owen_scrambled_radical_inverse(std::uint32_t dim, std::uint64_t a,
+                                                        std::uint64_t seed) {
+    const std::uint32_t d = dim % N;
+    return detail::nested_f32(dim % 1024, detail::halton_base<N>(d).b, a, seed, true);
+}
+
+/// The index whose first `n_digits` base-b digits reversed are `inverse` (pbrt-v3's
+/// `InverseRadicalInverse`, the core's `inverse_radical_inverse`).
+template <std::uint32_t N = 1024>
+NYQ_HD inline std::uint64_t inverse_radical_inverse(std::uint32_t dim, std::uint64_t inverse,
+                                                    std::uint32_t n_digits) {
+    const std::uint64_t b = detail::halton_base<N>(dim % N).b;
+    std::uint64_t index = 0;
+    for (std::uint32_t done = 0; done < n_digits; ++done) {
+        if (inverse == 0) {
+            for (std::uint32_t k = done; k < n_digits; ++k) index *= b;
+            return index;
+        }
+        const std::uint64_t digit = inverse % b;
+        inverse /= b;
+        index = index * b + digit;
+    }
+    return index;
+}
+
+/// The Halton sequence over `N` dimensions (the core's `sequence::Halton::new(N)` and
+/// `compact::Halton<N>`): Φ_{p_d}(i), every 64-bit index; `dim` wraps modulo `N`.
+template <std::uint32_t N>
+struct Halton {
+    NYQ_HD float sample(std::uint64_t index, std::uint32_t dim) const {
+        return radical_inverse<N>(dim % N, index);
+    }
+};
+
+/// pbrt-v3/v4's Halton sampler: one Halton sequence over the image (scaled by 2^e × 3^f up to
+/// 128 pixels a side), every scramble. Dimensions wrap modulo 1024 (bases kept: `0..N`, as the
+/// Sobol samplers). Table: 88 bytes per base.
+template <std::uint32_t N = 1024>
+struct HaltonSampler {
+    std::uint32_t spp = 0;
+    Scramble scramble = Scramble::None;
+    std::uint64_t seed = 0;
+    std::uint32_t exponents[2] = {};
+    std::uint64_t scales[2] = {1, 1};
+    std::uint64_t stride = 1, basis[2] = {};
+    std::uint64_t index = 0;
+    std::uint32_t dim = 0;
+
+    NYQ_HD static std::uint64_t mod_inverse(std::uint64_t a, std::uint64_t n) {
+        std::int64_t r0 = static_cast<std::int64_t>(n), r1 = static_cast<std::int64_t>(a % n);
+        std::int64_t t0 = 0, t1 = 1;
+        while (r1 != 0) {
+            const std::int64_t q = r0 / r1;
+            const std::int64_t r2 = r0 - q * r1, t2 = t0 - q * t1;
+            r0 = r1;
+            r1 = r2;
+            t0 = t1;
+            t1 = t2;
+        }
+        const std::int64_t m = t0 % static_cast<std::int64_t>(n);
+        return static_cast<std::uint64_t>(m < 0 ? m + static_cast<std::int64_t>(n) : m);
+    }
+
+    NYQ_HD HaltonSampler() = default;
+    NYQ_HD HaltonSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_, Scramble how,
+                         std::uint64_t seed_)
+        : scramble(how), seed(seed_) {
+        if (width == 0 || height == 0 || spp_ == 0) return;
+        const std::uint32_t res[2] = {width, height};
+        const std::uint64_t bases[2] = {2, 3};
+        for (int axis = 0; axis < 2; ++axis) {
+            const std::uint64_t target = res[axis] < 128 ? res[axis] : 128;
+            while (scales[axis] < target) {
+                scales[axis] *= bases[axis];
+                exponents[axis] += 1;
+            }
+        }
+        stride = scales[0] * scales[1];
+        basis[0] = scales[1] * mod_inverse(scales[1], scales[0]);
+        basis[1] = scales[0] * mod_inverse(scales[0], scales[1]);
+        spp = spp_;
+    }
+    NYQ_HD bool valid() const { return spp != 0; }
+    NYQ_HD std::uint32_t samples_per_pixel() const { return spp; }
+
+    /// The global Halton index of a sample.
+    NYQ_HD std::uint64_t sequence_index(std::uint32_t x, std::uint32_t y, std::uint32_t s) const {
+        const std::uint32_t pixel[2] = {x, y};
+        std::uint64_t offset = 0;
+        for (std::uint32_t axis = 0; axis < 2; ++axis) {
+            const std::uint64_t pm = pixel[axis] % scales[axis];
+            const std::uint64_t digits = inverse_radical_inverse<N>(axis, pm, exponents[axis]);
+            offset = (offset + digits * basis[axis]) % stride;
+        }
+        return offset + std::uint64_t{s} * stride;
+    }
+
+    NYQ_HD float value(std::uint32_t d, std::uint64_t a) const {
+        switch (scramble) {
+            case Scramble::None: return radical_inverse<N>(d, a);
+            case Scramble::PermuteDigits: return scrambled_radical_inverse<N>(d, a, seed);
+            case Scramble::FastOwen: return fast_owen_scrambled_radical_inverse<N>(d, a, seed);
+            default: return owen_scrambled_radical_inverse<N>(d, a, seed);
+        }
+    }
+    NYQ_HD float sample(std::uint32_t d0) const {
+        const std::uint32_t d = d0 % 1024;
+        if (d == 0) return value(0, index >> exponents[0]);
+        if (d == 1) return value(1, index / scales[1]);
+        return value(d, index);
+    }
+
+    NYQ_HD void start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uint32_t s,
+                                   std::uint32_t d) {
+        index = sequence_index(x, y, s);
+        dim = d;
+    }
+    NYQ_HD float get_1d() {
+        const std::uint32_t d = dim;
+        dim = d + 1;
+        return sample(d);
+    }
+    NYQ_HD Float2 get_2d() {
+        const std::uint32_t d = dim;
+        dim = d + 2;
+        return Float2{{sample(d), sample(d + 1)}};
+    }
+    NYQ_HD Float2 get_pixel_2d() {
+        if (dim < 2) dim = 2;
+        return Float2{{sample(0), sample(1)}};
+    }
+    NYQ_HD CameraSample camera_sample(std::uint32_t x, std::uint32_t y, std::uint32_t s) {
+        return detail::camera_by_parts(*this, x, y, s);
+    }
+};
+
+// ---------------------------------------------------------------------------------------------
+// PMJ(0,2) (core/src/sequence/pmj02.rs, core/src/sampler/pmj02.rs).
+
+/// The seed of the core's baked PMJ(0,2) table ("pmj02_ta").
+constexpr std::uint64_t kPmj02TableSeed = 0x706d6a30325f7461ull;
+
+namespace detail {
+
+/// The per-level XOR constants of the construction (Helmer, Christensen & Kensler 2021, as the
+/// core uses them): new point `2^L + i` pairs with old point `i ^ c[L]`.
+NYQ_HD inline std::uint32_t pmj02_xor(std::uint32_t dim, std::uint32_t level) {
+    const std::uint16_t x[16] = {0x0000, 0x0000, 0x0002, 0x0006, 0x0006, 0x000e, 0x0036, 0x004e,
+                                 0x0016, 0x002e, 0x0276, 0x06ce, 0x0716, 0x0c2e, 0x3076, 0x40ce};
+    const std::uint16_t y[16] = {0x0000, 0x0001, 0x0003, 0x0003, 0x0007, 0x001b, 0x0027, 0x000b,
+                                 0x0017, 0x013b, 0x0367, 0x038b, 0x0617, 0x183b, 0x2067, 0x008b};
+    return dim == 0 ? x[level & 15] : y[level & 15];
+}
+
+}  // namespace detail
+
+/// Coordinate `dim` (0 or 1) of point `index mod 2¹⁶` of the progressive multi-jittered (0,2)
+/// sequence built from `seed`, as a 32-bit fraction, without a table: the stochastic
+/// construction (Helmer, Christensen & Kensler 2021) evaluated backwards along the chain of
+/// points a point copies its leading digits from — at most 17 WyRand words. With
+/// `kPmj02TableSeed` it is the core's `PMJ02_TABLE[index][dim]`.
+NYQ_HD inline std::uint32_t pmj02_point(std::uint64_t seed, std::uint32_t index, std::uint32_t dim) {
+    std::uint32_t x = 0, known = 0, flips = 0;
+    std::uint32_t p = index & 0xffffu;
+    while (p != 0) {
+        const std::uint32_t level = 31 - detail::clz32(p);
+        const std::uint32_t swap = 0x80000000u >> level, low = swap - 1;
+        const std::uint64_t r = wyrand(seed, p);
+        const std::uint32_t bits = static_cast<std::uint32_t>(dim == 0 ? r : r >> 32);
+        x |= bits & low & ~known;
+        known |= low;
+        flips ^= swap;
+        p = (p - (1u << level)) ^ detail::pmj02_xor(dim, level);
+    }
+    const std::uint64_t r0 = wyrand(seed, 0);
+    x |= static_cast<std::uint32_t>(dim == 0 ? r0 : r0 >> 32) & ~known;
+    return x ^ flips;
+}
+
+/// The core's `Pmj02` sequence: the table's points, plain or Owen-scrambled per dimension by
+/// `seed` (`scrambled`). 65536 points (indices wrap), 2 dimensions (`dim & 1`).
+struct Pmj02 {
+    bool scrambled = false;
+    std::uint32_t keys[2] = {};
+
+    NYQ_HD static Pmj02 plain() { return Pmj02{}; }
+    NYQ_HD static Pmj02 make_scrambled(std::uint64_t seed) {
+        Pmj02 p;
+        const std::uint64_t h = hash2(seed, 0x706d6a30325f6f77ull);
+        p.scrambled = true;
+        p.keys[0] = static_cast<std::uint32_t>(h);
+        p.keys[1] = static_cast<std::uint32_t>(h >> 32);
+        return p;
+    }
+    NYQ_HD std::uint32_t sample_u32(std::uint32_t index, std::uint32_t dim) const {
+        const std::uint32_t d = dim & 1;
+        const std::uint32_t v = pmj02_point(kPmj02TableSeed, index, d);
+        if (!scrambled) return v;
+        return detail::reverse_bits(lk_hash(detail::reverse_bits(v), keys[d]));
+    }
+    NYQ_HD float sample(std::uint64_t index, std::uint32_t dim) const {
+        return fraction_to_f32(sample_u32(static_cast<std::uint32_t>(index), dim));
+    }
+};
+
+/// Progressive multi-jittered (0,2) samples per pixel (the core's `Pmj02Sampler`): the table's
+/// points index-shuffled and Owen-scrambled per pixel and request; spp up to 65536 (sample
+/// indices wrap modulo 2¹⁶). No table: each 2D request rebuilds one point (two WyRand chains).
+struct Pmj02Sampler {
+    std::uint32_t spp = 0;
+    std::uint64_t seed = 0, pixel_key = 0;
+    std::uint32_t index_rev = 0, dim = 0;
+
+    struct Keys {
+        std::uint32_t shuffle, x, y;
+    };
+
+    NYQ_HD Pmj02Sampler() = default;
+    NYQ_HD Pmj02Sampler(std::uint32_t spp_, std::uint64_t seed_) : seed(seed_) {
+        if (spp_ != 0 && spp_ <= 65536) spp = spp_;
+    }
+    NYQ_HD bool valid() const { return spp != 0; }
+    NYQ_HD std::uint32_t samples_per_pixel() const { return spp; }
+
+    NYQ_HD Keys keys(std::uint64_t request) const {
+        const std::uint64_t h = mix64(pixel_key ^ (request * 0x9e3779b97f4a7c15ull));
+        const std::uint64_t g = mix64(h ^ 0x706d6a303279ull);
+        return Keys{static_cast<std::uint32_t>(h), static_cast<std::uint32_t>(h >> 32),
+                    static_cast<std::uint32_t>(g)};
+    }
+    NYQ_HD static float scrambled(std::uint32_t v, std::uint32_t key) {
+        return fraction_to_f32(detail::reverse_bits(lk_hash(detail::reverse_bits(v), key)));
+    }
+    /// Table point `i` (the row holding it is `reverse16(i)`), scrambled by `k`.
+    NYQ_HD static Float2 point(const Keys& k, std::uint32_t i) {
+        return Float2{{scrambled(pmj02_point(kPmj02TableSeed, i, 0), k.x),
+                       scrambled(pmj02_point(kPmj02TableSeed, i, 1), k.y)}};
+    }
+    /// The shuffled row of the current sample.
+    NYQ_HD std::uint32_t row(const Keys& k) const { return lk_hash(index_rev, k.shuffle) >> 16; }
+    NYQ_HD static std::uint32_t reverse16(std::uint32_t m) { return detail::reverse_bits(m & 0xffffu) >> 16; }
+
+    NYQ_HD void start_pixel_sample(std::uint32_t px, std::uint32_t py, std::uint32_t sample_index,
+                                   std::uint32_t d) {
+        pixel_key = pixel_hash(px, py, seed, 0x00706d6a3032ull);  // "pmj02"
+        index_rev = reverse16(sample_index) << 16;
+        dim = d;
+    }
+    NYQ_HD float get_1d() {
+        const std::uint32_t d = dim;
+        dim = d + 1;
+        const Keys k = keys(2 * std::uint64_t{d} + 1);
+        return fraction_to_f32(detail::reverse_bits(lk_hash(reverse16(row(k)), k.x)));
+    }
+    NYQ_HD Float2 get_2d() {
+        const std::uint32_t d = dim;
+        dim = d + 2;
+        const Keys k = keys(2 * std::uint64_t{d});
+        if (d == 0) return point(k, reverse16(index_rev >> 16));
+        return point(k, reverse16(row(k)));
+    }
+    NYQ_HD Float2 get_pixel_2d() {
+        if (dim < 2) dim = 2;
+        return point(keys(0), reverse16(index_rev >> 16));
+    }
+    NYQ_HD CameraSample camera_sample(std::uint32_t px, std::uint32_t py, std::uint32_t s) {
+        return detail::camera_by_parts(*this, px, py, s);
+    }
+};
+
 }  // namespace nyquist
 
 #endif  // NYQUIST_HPP

@@ -373,6 +373,53 @@ bool lattice_sequences_capi(Rng& rng) {
     return true;
 }
 
+bool halton_capi(Rng& rng) {
+    Tally t("halton none/permute-digits (C API)");
+    struct Config {
+        std::uint32_t w, h, spp;
+    };
+    const Config configs[4] = {{64, 48, 16}, {1920, 1080, 64}, {3, 1, 1}, {16384, 16384, 65536}};
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const Config c = configs[k % 4];
+        const std::uint64_t seed = k < 4 ? 0 : rng.next();
+        const Scramble how = seed == 0 ? Scramble::None : Scramble::PermuteDigits;
+        if (!capi_sampler("halton", c.w, c.h, c.spp, seed, HaltonSampler<>(c.w, c.h, c.spp, how, seed),
+                          9000, rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+bool halton_sequence_capi(Rng& rng) {
+    Tally t("Halton sequence (C API nyq_sequence_fill)");
+    const std::uint32_t dim_counts[2] = {1024, 7};
+    for (std::uint32_t dims : dim_counts) {
+        NyqSequence seq{};
+        seq.kind = NYQ_SEQ_HALTON;
+        seq.dims = dims;
+        const Halton<1024> h;
+        if (!sequence_capi("Halton", seq, 0,
+                           [&](std::uint64_t i, std::uint32_t d) { return h.sample(i, d); }, 600000,
+                           rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+bool pmj02_capi(Rng& rng) {
+    Tally t("pmj02 (C API)");
+    const std::uint32_t spps[4] = {1, 16, 1000, 65536};
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const std::uint64_t seed = k < 2 ? k : rng.next();
+        const std::uint32_t spp = spps[k % 4];
+        if (!capi_sampler("pmj02", 8, 8, spp, seed, Pmj02Sampler(spp, seed), 9000, rng)) return false;
+    }
+    t.print();
+    return true;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Part 2: the expected file.
 
@@ -389,6 +436,7 @@ enum Kind : std::uint32_t {
     kSobolSampler = 2,
     kHaltonSampler = 3,
     kOwenSobolSequence = 10,
+    kPmj02Sequence = 11,
 };
 
 const char* scramble_name(std::uint32_t s) {
@@ -442,6 +490,28 @@ bool file_owen_sobol_sequence(Reader& in, const char* label, std::uint64_t seed,
     return true;
 }
 
+bool file_pmj02_sequence(Reader& in, const char* label, bool scrambled, std::uint64_t seed,
+                         std::uint32_t count) {
+    const Pmj02 s = scrambled ? Pmj02::make_scrambled(seed) : Pmj02::plain();
+    for (std::uint32_t n = 0; n < count; ++n) {
+        std::uint32_t index = 0, dim = 0;
+        float want = 0;
+        if (!in.u32(index) || !in.u32(dim) || !in.floats(&want, 1)) {
+            std::printf("MISMATCH %s: expected file truncated\n", label);
+            return false;
+        }
+        const float got = s.sample(index, dim);
+        if (!same(want, got)) {
+            std::printf("MISMATCH %s: index %" PRIu32 " dim %" PRIu32 " core %08" PRIx32
+                        " header %08" PRIx32 "\n",
+                        label, index, dim, bits(want), bits(got));
+            return false;
+        }
+    }
+    g_total += count;
+    return true;
+}
+
 bool expected_file(const char* path) {
     std::FILE* f = std::fopen(path, "rb");
     if (!f) {
@@ -475,6 +545,12 @@ bool expected_file(const char* path) {
             case kSobolSampler:
                 good = file_sampler(in, label, SobolSampler<>(w, h, spp, how, seed), count);
                 break;
+            case kHaltonSampler:
+                good = file_sampler(in, label, HaltonSampler<>(w, h, spp, how, seed), count);
+                break;
+            case kPmj02Sequence:
+                good = file_pmj02_sequence(in, label, scramble != 0, seed, count);
+                break;
             case kOwenSobolSequence:
                 if (dims == 1024) good = file_owen_sobol_sequence<1024>(in, label, seed, count);
                 else if (dims == 5) good = file_owen_sobol_sequence<5>(in, label, seed, count);
@@ -493,6 +569,7 @@ bool expected_file(const char* path) {
     const char* names[16] = {"owen-sobol frames 1+ (core)", "zsobol none/permute-digits/owen (core)",
                              "sobol fast-owen/owen (core)", "halton fast-owen/owen (core)"};
     names[10] = "OwenSobol sequence sample + sample_4d (core)";
+    names[11] = "Pmj02 sequence plain + scrambled (core)";
     for (int k = 0; k < 16; ++k)
         if (families[k] && names[k]) std::printf("%s: %" PRIu64 " values equal\n", names[k], families[k]);
     return good;
@@ -509,6 +586,7 @@ int main(int argc, char** argv) {
     const bool good = owen_sobol_capi(rng) && zsobol_capi(rng) && sobol_capi(rng) &&
                       sobol_sequence_capi(rng) && random_capi(rng) &&
                       stratified_capi(rng) && lattice_capi(rng) && lattice_sequences_capi(rng) &&
+                      halton_capi(rng) && halton_sequence_capi(rng) && pmj02_capi(rng) &&
                       expected_file(argv[1]);
     std::printf("%s: %" PRIu64 " values compared\n", good ? "parity ok" : "parity FAILED", g_total);
     return good ? 0 : 1;
