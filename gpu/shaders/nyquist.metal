@@ -53,6 +53,16 @@ struct NyqZSobolSampler {
     uint dim;
     char _pad10[4];
 };
+struct NyqPcg32_ {
+    metal::uint2 state;
+};
+struct NyqRandomSampler {
+    metal::uint2 seed;
+    metal::uint2 base;
+    NyqPcg32_ rng;
+    uint dim;
+    char _pad4[4];
+};
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -65,15 +75,18 @@ struct NyqFillJob {
     uint first;
     uint count;
 };
-typedef metal::uint4 type_12[1];
+typedef metal::uint4 type_14[1];
 constant uint NYQ_SCRAMBLE_NONE = 0u;
 constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
 constant uint NYQ_SCRAMBLE_OWEN = 3u;
 constant uint NYQ_SOBOL_DIMS = 1024u;
 constant type_9 NYQ_PERMUTATIONS_4_ = type_9 {{228u, 180u, 216u, 120u, 156u, 108u, 225u, 177u, 201u, 57u, 141u, 45u, 210u, 114u, 198u, 54u, 78u, 30u, 147u, 99u, 135u, 39u, 75u, 27u}};
+constant metal::uint2 NYQ_PCG_MULTIPLIER = metal::uint2(1284865837u, 1481765933u);
+constant metal::uint2 NYQ_RANDOM_INCREMENT = metal::uint2(2665069115u, 1250683170u);
 constant uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 constant uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
+constant uint NYQ_FILL_RANDOM_SAMPLER = 2u;
 constant uint NYQ_FILL_SOBOL = 16u;
 constant uint NYQ_FILL_OWEN_SOBOL = 17u;
 
@@ -111,16 +124,16 @@ metal::uint2 nyq_add64_(
 
 metal::uint2 nyq_shr64_(
     metal::uint2 a_3,
-    uint s_2
+    uint s_3
 ) {
-    return metal::uint2((a_3.x >> s_2) | (a_3.y << (32u - s_2)), a_3.y >> s_2);
+    return metal::uint2((a_3.x >> s_3) | (a_3.y << (32u - s_3)), a_3.y >> s_3);
 }
 
 metal::uint2 nyq_shl64_(
     metal::uint2 a_4,
-    uint s_3
+    uint s_4
 ) {
-    return metal::uint2(a_4.x << s_3, (a_4.y << s_3) | (a_4.x >> (32u - s_3)));
+    return metal::uint2(a_4.x << s_4, (a_4.y << s_4) | (a_4.x >> (32u - s_4)));
 }
 
 metal::uint2 nyq_u64_(
@@ -216,9 +229,9 @@ float nyq_rev_to_f32_(
 
 uint nyq_shr(
     uint x_3,
-    uint s_4
+    uint s_5
 ) {
-    return (s_4 >= 32u) ? 0u : (x_3 >> (s_4 & 31u));
+    return (s_5 >= 32u) ? 0u : (x_3 >> (s_5 & 31u));
 }
 
 float nyq_film_coordinate(
@@ -391,32 +404,32 @@ NyqSobol nyq_sobol(
 }
 
 uint nyq_sobol_sample_u32_(
-    NyqSobol s_5,
+    NyqSobol s_6,
     uint index_2,
     uint dim_2,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint shift = 0u;
-    uint d_2 = naga_mod(dim_2, s_5.dims);
-    if (s_5.scrambled != 0u) {
-        metal::uint2 _e11 = nyq_u64_(d_2);
-        metal::uint2 _e12 = nyq_hash2_(s_5.seed, _e11);
+    uint d_3 = naga_mod(dim_2, s_6.dims);
+    if (s_6.scrambled != 0u) {
+        metal::uint2 _e11 = nyq_u64_(d_3);
+        metal::uint2 _e12 = nyq_hash2_(s_6.seed, _e11);
         shift = _e12.y;
     }
-    uint _e14 = nyq_sobol_u32_(index_2, d_2, nyq_sobol_matrices, _buffer_sizes);
+    uint _e14 = nyq_sobol_u32_(index_2, d_3, nyq_sobol_matrices, _buffer_sizes);
     uint _e15 = shift;
     return _e14 ^ _e15;
 }
 
 float nyq_sobol_sample(
-    NyqSobol s_6,
+    NyqSobol s_7,
     uint index_3,
     uint dim_3,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_sobol_sample_u32_(s_6, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_sobol_sample_u32_(s_7, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -462,33 +475,33 @@ NyqOwenSobol nyq_owen_sobol(
 }
 
 uint nyq_owen_sobol_sample_u32_(
-    NyqOwenSobol s_7,
+    NyqOwenSobol s_8,
     uint index_5,
     uint dim_6,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_3 = naga_mod(dim_6, s_7.dims);
-    uint _e6 = nyq_shuffle_rev(index_5, s_7.shuffle_seed);
-    uint _e8 = nyq_dim_seed(s_7.key, d_3);
-    uint _e9 = nyq_owen_sobol_rev(_e6, d_3, _e8, nyq_sobol_matrices, _buffer_sizes);
+    uint d_4 = naga_mod(dim_6, s_8.dims);
+    uint _e6 = nyq_shuffle_rev(index_5, s_8.shuffle_seed);
+    uint _e8 = nyq_dim_seed(s_8.key, d_4);
+    uint _e9 = nyq_owen_sobol_rev(_e6, d_4, _e8, nyq_sobol_matrices, _buffer_sizes);
     return metal::reverse_bits(_e9);
 }
 
 float nyq_owen_sobol_sample(
-    NyqOwenSobol s_8,
+    NyqOwenSobol s_9,
     uint index_6,
     uint dim_7,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_owen_sobol_sample_u32_(s_8, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_owen_sobol_sample_u32_(s_9, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
 metal::float4 nyq_owen_sobol_sample_4d(
-    NyqOwenSobol s_9,
+    NyqOwenSobol s_10,
     uint index_7,
     uint first_dim,
     device type_4 const& nyq_sobol_matrices,
@@ -496,7 +509,7 @@ metal::float4 nyq_owen_sobol_sample_4d(
 ) {
     metal::float4 out_1 = {};
     uint k_4 = 0u;
-    uint _e4 = nyq_shuffle_rev(index_7, s_9.shuffle_seed);
+    uint _e4 = nyq_shuffle_rev(index_7, s_10.shuffle_seed);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -514,10 +527,10 @@ metal::float4 nyq_owen_sobol_sample_4d(
         }
         {
             uint _e11 = k_4;
-            uint d_4 = naga_mod(first_dim + _e11, s_9.dims);
+            uint d_5 = naga_mod(first_dim + _e11, s_10.dims);
             uint _e15 = k_4;
-            uint _e18 = nyq_dim_seed(s_9.key, d_4);
-            uint _e19 = nyq_owen_sobol_rev(_e4, d_4, _e18, nyq_sobol_matrices, _buffer_sizes);
+            uint _e18 = nyq_dim_seed(s_10.key, d_5);
+            uint _e19 = nyq_owen_sobol_rev(_e4, d_5, _e18, nyq_sobol_matrices, _buffer_sizes);
             float _e20 = nyq_rev_to_f32_(_e19);
             out_1[_e15] = _e20;
         }
@@ -534,33 +547,33 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(
 }
 
 void nyq_owen_sobol_start(
-    thread NyqOwenSobolSampler& s_10,
+    thread NyqOwenSobolSampler& s_11,
     metal::uint2 pixel_1,
     uint sample_index,
     uint dim_8
 ) {
     metal::uint2 _e5 = nyq_u64_(pixel_1.x);
     metal::uint2 _e7 = nyq_u64_(pixel_1.y);
-    uint _e9 = s_10.frame;
+    uint _e9 = s_11.frame;
     metal::uint2 _e10 = nyq_u64_(_e9);
-    metal::uint2 _e12 = s_10.seed;
+    metal::uint2 _e12 = s_11.seed;
     metal::uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_10.key = _e13.x;
+    s_11.key = _e13.x;
     uint _e18 = nyq_mix32_(_e13.y);
     uint _e19 = nyq_shuffle_rev(sample_index, _e18);
-    s_10.r = _e19;
-    s_10.dim = dim_8;
+    s_11.r = _e19;
+    s_11.dim = dim_8;
     return;
 }
 
 float nyq_owen_sobol_value(
-    thread NyqOwenSobolSampler& s_11,
+    thread NyqOwenSobolSampler& s_12,
     uint dim_9,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_11.r;
-    uint _e5 = s_11.key;
+    uint _e3 = s_12.r;
+    uint _e5 = s_12.key;
     uint _e6 = nyq_dim_seed(_e5, dim_9);
     uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6, nyq_sobol_matrices, _buffer_sizes);
     float _e8 = nyq_rev_to_f32_(_e7);
@@ -568,42 +581,42 @@ float nyq_owen_sobol_value(
 }
 
 float nyq_owen_sobol_get_1d(
-    thread NyqOwenSobolSampler& s_12,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_5 = s_12.dim;
-    s_12.dim = d_5 + 1u;
-    float _e6 = nyq_owen_sobol_value(s_12, d_5, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_owen_sobol_get_2d(
     thread NyqOwenSobolSampler& s_13,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint d_6 = s_13.dim;
-    s_13.dim = d_6 + 2u;
+    s_13.dim = d_6 + 1u;
     float _e6 = nyq_owen_sobol_value(s_13, d_6, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_13, d_6 + 1u, nyq_sobol_matrices, _buffer_sizes);
-    return metal::float2(_e6, _e9);
+    return _e6;
 }
 
-metal::float2 nyq_owen_sobol_get_pixel_2d(
+metal::float2 nyq_owen_sobol_get_2d(
     thread NyqOwenSobolSampler& s_14,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_14.dim;
-    s_14.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_value(s_14, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_14, 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_7 = s_14.dim;
+    s_14.dim = d_7 + 2u;
+    float _e6 = nyq_owen_sobol_value(s_14, d_7, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_14, d_7 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_owen_sobol_get_pixel_2d(
+    thread NyqOwenSobolSampler& s_15,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_15.dim;
+    s_15.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_value(s_15, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_15, 1u, nyq_sobol_matrices, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_owen_sobol_camera_sample(
-    thread NyqOwenSobolSampler& s_15,
+    thread NyqOwenSobolSampler& s_16,
     metal::uint2 pixel_2,
     uint sample_index_1,
     device type_4 const& nyq_sobol_matrices,
@@ -611,7 +624,7 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
 ) {
     type_8 v_2 = {};
     uint d_1 = 0u;
-    nyq_owen_sobol_start(s_15, pixel_2, sample_index_1, 0u);
+    nyq_owen_sobol_start(s_16, pixel_2, sample_index_1, 0u);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -630,11 +643,11 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            float _e13 = nyq_owen_sobol_value(s_15, _e12, nyq_sobol_matrices, _buffer_sizes);
+            float _e13 = nyq_owen_sobol_value(s_16, _e12, nyq_sobol_matrices, _buffer_sizes);
             v_2.inner[_e10] = _e13;
         }
     }
-    s_15.dim = 5u;
+    s_16.dim = 5u;
     float _e21 = v_2.inner[0];
     float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
     float _e25 = v_2.inner[1];
@@ -684,10 +697,10 @@ uint nyq_spread(
 }
 
 uint nyq_zsobol_morton(
-    NyqZSobolSampler s_16,
+    NyqZSobolSampler s_17,
     metal::uint2 pixel_3
 ) {
-    uint mask = (s_16.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_16.log2_res) & 31u));
+    uint mask = (s_17.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_17.log2_res) & 31u));
     uint _e16 = nyq_spread(pixel_3.x & mask);
     uint _e19 = nyq_spread(pixel_3.y & mask);
     return _e16 | (_e19 << 1u);
@@ -749,14 +762,14 @@ metal::uint2 nyq_zsobol_nested_word(
 }
 
 uint nyq_zsobol_index(
-    NyqZSobolSampler s_17,
+    NyqZSobolSampler s_18,
     uint morton,
     metal::uint2 key_3
 ) {
     uint index_8 = 0u;
     uint i = {};
     uint i_1 = {};
-    i = s_17.digits;
+    i = s_18.digits;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
@@ -768,13 +781,13 @@ uint nyq_zsobol_index(
         }
         loop_init_3 = false;
         uint _e7 = i;
-        if (_e7 > s_17.sample_digits) {
+        if (_e7 > s_18.sample_digits) {
         } else {
             break;
         }
         {
             uint _e11 = i;
-            uint shift_3 = (2u * (_e11 - 1u)) + s_17.odd;
+            uint shift_3 = (2u * (_e11 - 1u)) + s_18.odd;
             uint digit_1 = (morton >> shift_3) & 3u;
             uint _e20 = index_8;
             uint _e23 = nyq_shr(morton, shift_3 + 2u);
@@ -783,10 +796,10 @@ uint nyq_zsobol_index(
             index_8 = _e20 | _e25;
         }
     }
-    uint _e31 = nyq_shr(morton, s_17.log2_spp);
+    uint _e31 = nyq_shr(morton, s_18.log2_spp);
     metal::uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample = morton & (s_17.spp - 1u);
-    i_1 = s_17.sample_digits;
+    uint sample = morton & (s_18.spp - 1u);
+    i_1 = s_18.sample_digits;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
@@ -804,7 +817,7 @@ uint nyq_zsobol_index(
         }
         {
             uint _e43 = i_1;
-            uint shift_4 = (2u * (_e43 - 1u)) + s_17.odd;
+            uint shift_4 = (2u * (_e43 - 1u)) + s_18.odd;
             uint digit_2 = (sample >> shift_4) & 3u;
             uint _e54 = nyq_shr(sample, shift_4 + 2u);
             metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
@@ -814,7 +827,7 @@ uint nyq_zsobol_index(
             index_8 = _e58 | _e61;
         }
     }
-    if (s_17.odd == 1u) {
+    if (s_18.odd == 1u) {
         uint _e69 = index_8;
         metal::uint2 _e75 = nyq_zsobol_nested_word(_e32, sample >> 1u, 0u);
         index_8 = _e69 | ((sample & 1u) ^ (_e75.y >> 31u));
@@ -824,15 +837,15 @@ uint nyq_zsobol_index(
 }
 
 uint nyq_zsobol_sequence_index(
-    NyqZSobolSampler s_18,
+    NyqZSobolSampler s_19,
     metal::uint2 pixel_4,
     uint sample_index_2,
     uint dim_11
 ) {
-    uint _e4 = nyq_zsobol_morton(s_18, pixel_4);
-    uint morton_1 = (_e4 << s_18.log2_spp) | (sample_index_2 & (s_18.spp - 1u));
-    metal::uint2 _e13 = nyq_zsobol_dim_key(s_18.seed, dim_11);
-    uint _e14 = nyq_zsobol_index(s_18, morton_1, _e13);
+    uint _e4 = nyq_zsobol_morton(s_19, pixel_4);
+    uint morton_1 = (_e4 << s_19.log2_spp) | (sample_index_2 & (s_19.spp - 1u));
+    metal::uint2 _e13 = nyq_zsobol_dim_key(s_19.seed, dim_11);
+    uint _e14 = nyq_zsobol_index(s_19, morton_1, _e13);
     return _e14;
 }
 
@@ -850,42 +863,42 @@ uint nyq_zsobol_dim0_(
 }
 
 float nyq_zsobol_value_1d(
-    thread NyqZSobolSampler& s_19,
+    thread NyqZSobolSampler& s_20,
     uint dim_12
 ) {
-    metal::uint2 _e3 = s_19.seed;
+    metal::uint2 _e3 = s_20.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
-    NyqZSobolSampler _e5 = s_19;
-    uint _e7 = s_19.morton;
+    NyqZSobolSampler _e5 = s_20;
+    uint _e7 = s_20.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_19.scramble;
+    uint _e11 = s_20.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
     float _e13 = nyq_fraction_to_f32_(_e12);
     return _e13;
 }
 
 metal::float2 nyq_zsobol_value_2d(
-    thread NyqZSobolSampler& s_20,
+    thread NyqZSobolSampler& s_21,
     uint dim_13,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint y = {};
-    metal::uint2 _e3 = s_20.seed;
+    metal::uint2 _e3 = s_21.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
-    NyqZSobolSampler _e5 = s_20;
-    uint _e7 = s_20.morton;
+    NyqZSobolSampler _e5 = s_21;
+    uint _e7 = s_21.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_20.scramble;
+    uint _e11 = s_21.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_20.scramble;
+    uint _e15 = s_21.scramble;
     if (_e15 == NYQ_SCRAMBLE_FAST_OWEN) {
         uint _e19 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
         uint _e22 = nyq_lk_hash(metal::reverse_bits(_e19), _e4.y);
         y = metal::reverse_bits(_e22);
     } else {
         uint _e25 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
-        uint _e28 = s_20.scramble;
+        uint _e28 = s_21.scramble;
         uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -896,73 +909,278 @@ metal::float2 nyq_zsobol_value_2d(
 }
 
 void nyq_zsobol_start(
-    thread NyqZSobolSampler& s_21,
+    thread NyqZSobolSampler& s_22,
     metal::uint2 pixel_5,
     uint sample_index_3,
     uint dim_14
 ) {
-    NyqZSobolSampler _e5 = s_21;
+    NyqZSobolSampler _e5 = s_22;
     uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
-    uint _e8 = s_21.log2_spp;
-    uint _e11 = s_21.spp;
-    s_21.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
-    s_21.dim = dim_14;
+    uint _e8 = s_22.log2_spp;
+    uint _e11 = s_22.spp;
+    s_22.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
+    s_22.dim = dim_14;
     return;
 }
 
 float nyq_zsobol_get_1d(
-    thread NyqZSobolSampler& s_22
+    thread NyqZSobolSampler& s_23
 ) {
-    uint d_7 = s_22.dim;
-    s_22.dim = d_7 + 1u;
-    float _e6 = nyq_zsobol_value_1d(s_22, d_7);
+    uint d_8 = s_23.dim;
+    s_23.dim = d_8 + 1u;
+    float _e6 = nyq_zsobol_value_1d(s_23, d_8);
     return _e6;
 }
 
 metal::float2 nyq_zsobol_get_2d(
-    thread NyqZSobolSampler& s_23,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_8 = s_23.dim;
-    s_23.dim = d_8 + 2u;
-    metal::float2 _e6 = nyq_zsobol_value_2d(s_23, d_8, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_zsobol_get_pixel_2d(
     thread NyqZSobolSampler& s_24,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_24.dim;
-    s_24.dim = metal::max(_e3, 2u);
-    metal::float2 _e7 = nyq_zsobol_value_2d(s_24, 0u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_9 = s_24.dim;
+    s_24.dim = d_9 + 2u;
+    metal::float2 _e6 = nyq_zsobol_value_2d(s_24, d_9, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_zsobol_get_pixel_2d(
+    thread NyqZSobolSampler& s_25,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_25.dim;
+    s_25.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_zsobol_value_2d(s_25, 0u, nyq_sobol_matrices, _buffer_sizes);
     return _e7;
 }
 
 NyqCameraSample nyq_zsobol_camera_sample(
-    thread NyqZSobolSampler& s_25,
+    thread NyqZSobolSampler& s_26,
     metal::uint2 pixel_6,
     uint sample_index_4,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_zsobol_start(s_25, pixel_6, sample_index_4, 0u);
-    metal::float2 _e5 = nyq_zsobol_value_2d(s_25, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e7 = nyq_zsobol_value_1d(s_25, 2u);
-    metal::float2 _e9 = nyq_zsobol_value_2d(s_25, 3u, nyq_sobol_matrices, _buffer_sizes);
-    s_25.dim = 5u;
+    nyq_zsobol_start(s_26, pixel_6, sample_index_4, 0u);
+    metal::float2 _e5 = nyq_zsobol_value_2d(s_26, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e7 = nyq_zsobol_value_1d(s_26, 2u);
+    metal::float2 _e9 = nyq_zsobol_value_2d(s_26, 3u, nyq_sobol_matrices, _buffer_sizes);
+    s_26.dim = 5u;
     float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
     float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
     metal::float2 film = metal::float2(_e14, _e17);
     return NyqCameraSample {film, _e9, _e7};
 }
 
+NyqPcg32_ nyq_pcg32_(
+    metal::uint2 state
+) {
+    metal::uint2 _e2 = nyq_add64_(state, NYQ_RANDOM_INCREMENT);
+    metal::uint2 _e4 = nyq_mul64_(_e2, NYQ_PCG_MULTIPLIER);
+    metal::uint2 _e6 = nyq_add64_(_e4, NYQ_RANDOM_INCREMENT);
+    return NyqPcg32_ {_e6};
+}
+
+uint nyq_pcg32_next(
+    thread NyqPcg32_& g
+) {
+    metal::uint2 old = g.state;
+    metal::uint2 _e5 = nyq_mul64_(old, NYQ_PCG_MULTIPLIER);
+    metal::uint2 _e7 = nyq_add64_(_e5, NYQ_RANDOM_INCREMENT);
+    g.state = _e7;
+    metal::uint2 _e9 = nyq_shr64_(old, 18u);
+    metal::uint2 _e12 = nyq_shr64_(_e9 ^ old, 27u);
+    uint x_10 = _e12.x;
+    uint rot = old.y >> 27u;
+    return (x_10 >> rot) | (x_10 << ((32u - rot) & 31u));
+}
+
+void nyq_pcg32_advance(
+    thread NyqPcg32_& g_1,
+    uint delta
+) {
+    metal::uint2 acc_mult = metal::uint2(1u, 0u);
+    metal::uint2 acc_plus = metal::uint2(0u, 0u);
+    metal::uint2 cur_mult = NYQ_PCG_MULTIPLIER;
+    metal::uint2 cur_plus = NYQ_RANDOM_INCREMENT;
+    uint d_2 = {};
+    d_2 = delta;
+    uint2 loop_bound_6 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        uint _e15 = d_2;
+        if (_e15 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e18 = d_2;
+            if ((_e18 & 1u) != 0u) {
+                metal::uint2 _e23 = acc_mult;
+                metal::uint2 _e24 = cur_mult;
+                metal::uint2 _e25 = nyq_mul64_(_e23, _e24);
+                acc_mult = _e25;
+                metal::uint2 _e26 = acc_plus;
+                metal::uint2 _e27 = cur_mult;
+                metal::uint2 _e28 = nyq_mul64_(_e26, _e27);
+                metal::uint2 _e29 = cur_plus;
+                metal::uint2 _e30 = nyq_add64_(_e28, _e29);
+                acc_plus = _e30;
+            }
+            metal::uint2 _e31 = cur_mult;
+            metal::uint2 _e35 = nyq_add64_(_e31, metal::uint2(1u, 0u));
+            metal::uint2 _e36 = cur_plus;
+            metal::uint2 _e37 = nyq_mul64_(_e35, _e36);
+            cur_plus = _e37;
+            metal::uint2 _e38 = cur_mult;
+            metal::uint2 _e39 = cur_mult;
+            metal::uint2 _e40 = nyq_mul64_(_e38, _e39);
+            cur_mult = _e40;
+            uint _e41 = d_2;
+            d_2 = _e41 >> 1u;
+        }
+    }
+    metal::uint2 _e45 = acc_mult;
+    metal::uint2 _e47 = g_1.state;
+    metal::uint2 _e48 = nyq_mul64_(_e45, _e47);
+    metal::uint2 _e49 = acc_plus;
+    metal::uint2 _e50 = nyq_add64_(_e48, _e49);
+    g_1.state = _e50;
+    return;
+}
+
+float nyq_unit_f32_(
+    uint h_1
+) {
+    return static_cast<float>(h_1 >> 8u) * 0.000000059604645;
+}
+
+metal::uint2 nyq_hash3_(
+    metal::uint2 a_7,
+    metal::uint2 b_5,
+    metal::uint2 c_1
+) {
+    metal::uint2 _e3 = nyq_hash2_(a_7, b_5);
+    metal::uint2 _e7 = nyq_add64_(c_1, metal::uint2(2111796287u, 3668340012u));
+    metal::uint2 _e9 = nyq_mix64_(_e3 ^ _e7);
+    return _e9;
+}
+
+NyqRandomSampler nyq_random_sampler(
+    metal::uint2 seed_11
+) {
+    return NyqRandomSampler {seed_11, metal::uint2(0u, 0u), NyqPcg32_ {metal::uint2(0u, 0u)}, 0u};
+}
+
+NyqPcg32_ nyq_random_at(
+    thread NyqRandomSampler& s_27,
+    uint dim_15
+) {
+    NyqPcg32_ g_2 = {};
+    metal::uint2 _e3 = s_27.base;
+    NyqPcg32_ _e4 = nyq_pcg32_(_e3);
+    g_2 = _e4;
+    uint d_10 = dim_15 & 65535u;
+    if (d_10 != 0u) {
+        nyq_pcg32_advance(g_2, d_10);
+    }
+    NyqPcg32_ _e10 = g_2;
+    return _e10;
+}
+
+void nyq_random_start(
+    thread NyqRandomSampler& s_28,
+    metal::uint2 pixel_7,
+    uint sample_index_5,
+    uint dim_16
+) {
+    metal::uint2 _e5 = s_28.seed;
+    metal::uint2 _e7 = nyq_u64_(1918987876u);
+    metal::uint2 _e8 = nyq_hash3_(pixel_7, _e5, _e7);
+    metal::uint2 golden_2 = metal::uint2(2135587861u, 2654435769u);
+    metal::uint2 _e13 = nyq_u64_(sample_index_5);
+    metal::uint2 _e14 = nyq_mul64_(_e13, golden_2);
+    metal::uint2 _e16 = nyq_mix64_(_e8 ^ _e14);
+    s_28.base = _e16;
+    s_28.dim = dim_16;
+    NyqPcg32_ _e19 = nyq_random_at(s_28, dim_16);
+    s_28.rng = _e19;
+    return;
+}
+
+float nyq_random_get_1d(
+    thread NyqRandomSampler& s_29
+) {
+    NyqPcg32_ g_3 = {};
+    NyqPcg32_ _e2 = s_29.rng;
+    g_3 = _e2;
+    uint _e4 = nyq_pcg32_next(g_3);
+    float _e5 = nyq_unit_f32_(_e4);
+    NyqPcg32_ _e7 = g_3;
+    s_29.rng = _e7;
+    uint _e9 = s_29.dim;
+    s_29.dim = _e9 + 1u;
+    uint _e13 = s_29.dim;
+    if ((_e13 & 65535u) == 0u) {
+        NyqPcg32_ _e20 = nyq_random_at(s_29, 0u);
+        s_29.rng = _e20;
+    }
+    return _e5;
+}
+
+metal::float2 nyq_random_get_2d(
+    thread NyqRandomSampler& s_30
+) {
+    float _e1 = nyq_random_get_1d(s_30);
+    float _e2 = nyq_random_get_1d(s_30);
+    return metal::float2(_e1, _e2);
+}
+
+metal::float2 nyq_random_get_pixel_2d(
+    thread NyqRandomSampler& s_31
+) {
+    NyqPcg32_ g_4 = {};
+    uint _e2 = s_31.dim;
+    if (_e2 == 0u) {
+        metal::float2 _e5 = nyq_random_get_2d(s_31);
+        return _e5;
+    }
+    NyqPcg32_ _e7 = nyq_random_at(s_31, 0u);
+    g_4 = _e7;
+    uint _e9 = nyq_pcg32_next(g_4);
+    float _e10 = nyq_unit_f32_(_e9);
+    uint _e11 = nyq_pcg32_next(g_4);
+    float _e12 = nyq_unit_f32_(_e11);
+    metal::float2 p_1 = metal::float2(_e10, _e12);
+    uint _e15 = s_31.dim;
+    if (_e15 < 2u) {
+        s_31.dim = 2u;
+        NyqPcg32_ _e21 = g_4;
+        s_31.rng = _e21;
+    }
+    return p_1;
+}
+
+NyqCameraSample nyq_random_camera_sample(
+    thread NyqRandomSampler& s_32,
+    metal::uint2 pixel_8,
+    uint sample_index_6
+) {
+    nyq_random_start(s_32, pixel_8, sample_index_6, 0u);
+    metal::float2 _e4 = nyq_random_get_pixel_2d(s_32);
+    float _e5 = nyq_random_get_1d(s_32);
+    metal::float2 _e6 = nyq_random_get_2d(s_32);
+    float _e9 = nyq_film_coordinate(pixel_8.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_8.y, _e4.y);
+    metal::float2 film_1 = metal::float2(_e9, _e12);
+    return NyqCameraSample {film_1, _e6, _e5};
+}
+
 metal::uint4 nyq_fill_request(
     uint i_2,
     constant NyqFillJob& nyq_job,
-    device type_12 const& nyq_requests,
+    device type_14 const& nyq_requests,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = nyq_job.implicit;
@@ -973,24 +1191,24 @@ metal::uint4 nyq_fill_request(
     uint _e11 = nyq_job.first;
     uint n = _e11 + i_2;
     uint _e15 = nyq_job.spp;
-    uint pixel_7 = naga_div(n, _e15);
+    uint pixel_9 = naga_div(n, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_7, _e20), naga_div(pixel_7, _e25), naga_mod(n, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_9, _e20), naga_div(pixel_9, _e25), naga_mod(n, _e29), 5u);
 }
 
 void nyq_fill_camera(
     uint out_2,
-    NyqCameraSample c_1,
+    NyqCameraSample c_2,
     device type_4& nyq_values,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_values[out_2] = as_type<uint>(c_1.p_film.x);
-    nyq_values[out_2 + 1u] = as_type<uint>(c_1.p_film.y);
-    nyq_values[out_2 + 2u] = as_type<uint>(c_1.time);
-    nyq_values[out_2 + 3u] = as_type<uint>(c_1.lens.x);
-    nyq_values[out_2 + 4u] = as_type<uint>(c_1.lens.y);
+    nyq_values[out_2] = as_type<uint>(c_2.p_film.x);
+    nyq_values[out_2 + 1u] = as_type<uint>(c_2.p_film.y);
+    nyq_values[out_2 + 2u] = as_type<uint>(c_2.time);
+    nyq_values[out_2 + 3u] = as_type<uint>(c_2.lens.x);
+    nyq_values[out_2 + 4u] = as_type<uint>(c_2.lens.y);
     return;
 }
 
@@ -1013,12 +1231,13 @@ kernel void nyq_fill(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_4 const& nyq_sobol_matrices [[user(fake0)]]
 , constant NyqFillJob& nyq_job [[user(fake0)]]
-, device type_12 const& nyq_requests [[user(fake0)]]
+, device type_14 const& nyq_requests [[user(fake0)]]
 , device type_4& nyq_values [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     NyqOwenSobolSampler s = {};
     NyqZSobolSampler s_1 = {};
+    NyqRandomSampler s_2 = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
@@ -1028,7 +1247,7 @@ kernel void nyq_fill(
         return;
     }
     metal::uint4 _e6 = nyq_fill_request(i_3, nyq_job, nyq_requests, _buffer_sizes);
-    metal::uint2 pixel_8 = _e6.xy;
+    metal::uint2 pixel_10 = _e6.xy;
     uint out_4 = 8u * i_3;
     uint _e12 = nyq_job.kind;
     switch(_e12) {
@@ -1037,9 +1256,9 @@ kernel void nyq_fill(
             uint _e18 = nyq_job.frame;
             NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_8, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_10, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e22, nyq_values, _buffer_sizes);
-            nyq_owen_sobol_start(s, pixel_8, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_10, _e6.z, _e6.w);
             float _e25 = nyq_owen_sobol_get_1d(s, nyq_sobol_matrices, _buffer_sizes);
             metal::float2 _e26 = nyq_owen_sobol_get_2d(s, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e25, _e26, nyq_values, _buffer_sizes);
@@ -1052,98 +1271,110 @@ kernel void nyq_fill(
             metal::uint2 _e38 = nyq_job.seed;
             NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_8, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_10, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e42, nyq_values, _buffer_sizes);
-            nyq_zsobol_start(s_1, pixel_8, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_10, _e6.z, _e6.w);
             float _e45 = nyq_zsobol_get_1d(s_1);
             metal::float2 _e46 = nyq_zsobol_get_2d(s_1, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e45, _e46, nyq_values, _buffer_sizes);
             return;
         }
+        case 2u: {
+            metal::uint2 _e49 = nyq_job.seed;
+            NyqRandomSampler _e50 = nyq_random_sampler(_e49);
+            s_2 = _e50;
+            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_10, _e6.z);
+            nyq_fill_camera(out_4, _e53, nyq_values, _buffer_sizes);
+            nyq_random_start(s_2, pixel_10, _e6.z, _e6.w);
+            float _e56 = nyq_random_get_1d(s_2);
+            metal::float2 _e57 = nyq_random_get_2d(s_2);
+            nyq_fill_values(out_4, _e56, _e57, nyq_values, _buffer_sizes);
+            return;
+        }
         case 16u: {
-            uint _e49 = nyq_job.dims;
-            uint _e52 = nyq_job.scramble;
-            metal::uint2 _e57 = nyq_job.seed;
-            NyqSobol _e58 = nyq_sobol(_e49, _e52 != 0u, _e57);
-            uint2 loop_bound_6 = uint2(4294967295u);
+            uint _e60 = nyq_job.dims;
+            uint _e63 = nyq_job.scramble;
+            metal::uint2 _e68 = nyq_job.seed;
+            NyqSobol _e69 = nyq_sobol(_e60, _e63 != 0u, _e68);
+            uint2 loop_bound_7 = uint2(4294967295u);
             bool loop_init_5 = true;
             while(true) {
-                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e86 = k;
-                    k = _e86 + 1u;
+                    uint _e97 = k;
+                    k = _e97 + 1u;
                 }
                 loop_init_5 = false;
-                uint _e61 = k;
-                if (_e61 < 4u) {
+                uint _e72 = k;
+                if (_e72 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e65 = k;
-                    uint _e70 = k;
-                    uint _e72 = nyq_sobol_sample_u32_(_e58, _e6.z, _e6.w + _e70, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e65] = _e72;
                     uint _e76 = k;
                     uint _e81 = k;
-                    float _e83 = nyq_sobol_sample(_e58, _e6.z, _e6.w + _e81, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[(out_4 + 4u) + _e76] = as_type<uint>(_e83);
+                    uint _e83 = nyq_sobol_sample_u32_(_e69, _e6.z, _e6.w + _e81, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e76] = _e83;
+                    uint _e87 = k;
+                    uint _e92 = k;
+                    float _e94 = nyq_sobol_sample(_e69, _e6.z, _e6.w + _e92, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[(out_4 + 4u) + _e87] = as_type<uint>(_e94);
                 }
             }
             return;
         }
         case 17u: {
-            uint _e90 = nyq_job.dims;
-            metal::uint2 _e93 = nyq_job.seed;
-            NyqOwenSobol _e94 = nyq_owen_sobol(_e90, _e93);
-            metal::float4 _e97 = nyq_owen_sobol_sample_4d(_e94, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
-            uint2 loop_bound_7 = uint2(4294967295u);
+            uint _e101 = nyq_job.dims;
+            metal::uint2 _e104 = nyq_job.seed;
+            NyqOwenSobol _e105 = nyq_owen_sobol(_e101, _e104);
+            metal::float4 _e108 = nyq_owen_sobol_sample_4d(_e105, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
+            uint2 loop_bound_8 = uint2(4294967295u);
             bool loop_init_6 = true;
             while(true) {
-                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
                 if (!loop_init_6) {
-                    uint _e122 = k_1;
-                    k_1 = _e122 + 1u;
+                    uint _e133 = k_1;
+                    k_1 = _e133 + 1u;
                 }
                 loop_init_6 = false;
-                uint _e100 = k_1;
-                if (_e100 < 4u) {
+                uint _e111 = k_1;
+                if (_e111 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e104 = k_1;
-                    uint _e109 = k_1;
-                    uint _e111 = nyq_owen_sobol_sample_u32_(_e94, _e6.z, _e6.w + _e109, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e104] = _e111;
                     uint _e115 = k_1;
-                    uint _e118 = k_1;
-                    nyq_values[(out_4 + 4u) + _e115] = as_type<uint>(_e97[_e118]);
+                    uint _e120 = k_1;
+                    uint _e122 = nyq_owen_sobol_sample_u32_(_e105, _e6.z, _e6.w + _e120, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e115] = _e122;
+                    uint _e126 = k_1;
+                    uint _e129 = k_1;
+                    nyq_values[(out_4 + 4u) + _e126] = as_type<uint>(_e108[_e129]);
                 }
             }
             return;
         }
         default: {
-            uint2 loop_bound_8 = uint2(4294967295u);
+            uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_7 = true;
             while(true) {
-                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e135 = k_2;
-                    k_2 = _e135 + 1u;
+                    uint _e146 = k_2;
+                    k_2 = _e146 + 1u;
                 }
                 loop_init_7 = false;
-                uint _e126 = k_2;
-                if (_e126 < 8u) {
+                uint _e137 = k_2;
+                if (_e137 < 8u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e130 = k_2;
-                    nyq_values[out_4 + _e130] = 4294967295u;
+                    uint _e141 = k_2;
+                    nyq_values[out_4 + _e141] = 4294967295u;
                 }
             }
             return;

@@ -40,6 +40,8 @@ pub const WGSL: &str = concat!(
     "\n",
     include_str!("../wgsl/zsobol.wgsl"),
     "\n",
+    include_str!("../wgsl/random.wgsl"),
+    "\n",
     include_str!("../wgsl/fill.wgsl"),
 );
 

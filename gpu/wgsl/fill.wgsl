@@ -15,6 +15,7 @@
 // The kinds of request.
 const NYQ_FILL_OWEN_SOBOL_SAMPLER: u32 = 0u;
 const NYQ_FILL_ZSOBOL_SAMPLER: u32 = 1u;
+const NYQ_FILL_RANDOM_SAMPLER: u32 = 2u;
 const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 
@@ -83,6 +84,13 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             nyq_zsobol_start(&s, pixel, q.z, q.w);
             let one = nyq_zsobol_get_1d(&s);
             nyq_fill_values(out, one, nyq_zsobol_get_2d(&s));
+        }
+        case 2u: {
+            var s = nyq_random_sampler(nyq_job.seed);
+            nyq_fill_camera(out, nyq_random_camera_sample(&s, pixel, q.z));
+            nyq_random_start(&s, pixel, q.z, q.w);
+            let one = nyq_random_get_1d(&s);
+            nyq_fill_values(out, one, nyq_random_get_2d(&s));
         }
         case 16u: {
             let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);

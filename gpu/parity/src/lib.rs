@@ -12,7 +12,7 @@
 
 use std::borrow::Cow;
 
-use nyquist::sampler::{OwenSobolSampler, Sampler, ZSobolSampler};
+use nyquist::sampler::{OwenSobolSampler, RandomSampler, Sampler, ZSobolSampler};
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Sequence, Sobol};
 use nyquist_gpu::WORDS_PER_REQUEST;
@@ -76,6 +76,13 @@ pub enum Job {
         /// The seed.
         seed: u64,
     },
+    /// `RandomSampler::new(spp, seed)`.
+    RandomSampler {
+        /// Samples per pixel (reported only).
+        spp: u32,
+        /// The seed.
+        seed: u64,
+    },
     /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
     Sobol {
         /// Dimensions, 1..=1024.
@@ -127,6 +134,7 @@ impl Job {
         match self {
             Job::OwenSobolSampler { .. } => "owen-sobol sampler".into(),
             Job::ZSobolSampler { scramble, .. } => format!("zsobol sampler ({})", scramble.name()),
+            Job::RandomSampler { .. } => "random sampler".into(),
             Job::Sobol { seed: None, .. } => "sobol".into(),
             Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
             Job::OwenSobol { .. } => "owen-sobol".into(),
@@ -153,6 +161,12 @@ impl Job {
                 spp,
                 seed: seed_words(seed),
                 resolution,
+                ..FillJob::default()
+            },
+            Job::RandomSampler { spp, seed } => FillJob {
+                kind: 2,
+                spp,
+                seed: seed_words(seed),
                 ..FillJob::default()
             },
             Job::Sobol { dims, seed } => FillJob {
@@ -191,6 +205,9 @@ impl Job {
             } => {
                 let s = ZSobolSampler::new(resolution, spp, scramble, seed).expect("valid sampler");
                 sampler_answers(s, requests)
+            }
+            Job::RandomSampler { spp, seed } => {
+                sampler_answers(RandomSampler::new(spp, seed).expect("valid sampler"), requests)
             }
             Job::Sobol { dims, seed } => {
                 let s = match seed {

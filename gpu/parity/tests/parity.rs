@@ -18,6 +18,11 @@ fn jobs() -> Vec<Job> {
             seed: 0xdead_beef_0123_4567,
             frame: 12,
         },
+        Job::RandomSampler { spp: 4, seed: 5 },
+        Job::RandomSampler {
+            spp: 1,
+            seed: u64::MAX - 2,
+        },
         Job::Sobol {
             dims: 1024,
             seed: None,
