@@ -1760,7 +1760,7 @@ struct OwenSobolSampler {
     std::uint32_t r = 0;
     std::uint32_t dim = 0;
 
-    NYQ_HD OwenSobolSampler() = default;
+    OwenSobolSampler() = default;
     NYQ_HD OwenSobolSampler(std::uint32_t spp_, std::uint64_t seed_, std::uint32_t frame_ = 0)
         : spp(spp_), seed(seed_), frame(frame_) {}
 
@@ -1863,7 +1863,7 @@ struct ZSobolSampler {
     std::uint32_t digits = 0, sample_digits = 0, odd = 0;
     std::uint32_t px = 0, py = 0, sample_index = 0, dim = 0;
 
-    NYQ_HD ZSobolSampler() = default;
+    ZSobolSampler() = default;
     NYQ_HD ZSobolSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_, Scramble how,
                          std::uint64_t seed_)
         : scramble(how), seed(seed_) {
@@ -1992,7 +1992,7 @@ struct SobolSampler {
         return seed == 0 ? 0 : static_cast<std::uint32_t>(hash2(seed, d));
     }
 
-    NYQ_HD SobolSampler() = default;
+    SobolSampler() = default;
     /// The core's `SobolSampler::new`: no scramble for seed 0, digit permutation otherwise.
     NYQ_HD SobolSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_,
                         std::uint64_t seed_)
@@ -2166,7 +2166,7 @@ struct RandomSampler {
     Pcg32 rng;
     static constexpr std::uint64_t kStream = 0x2545f4914f6cdd1dull;
 
-    NYQ_HD RandomSampler() = default;
+    RandomSampler() = default;
     NYQ_HD RandomSampler(std::uint32_t spp_, std::uint64_t seed_) : spp(spp_), seed(seed_) {}
     NYQ_HD bool valid() const { return spp != 0; }
     NYQ_HD std::uint32_t samples_per_pixel() const { return spp; }
@@ -2226,7 +2226,7 @@ struct StratifiedSampler {
     static constexpr std::uint64_t kDimStep = 0x9e3779b97f4a7c15ull;
     static constexpr std::uint64_t kJitterStep = 0xc2b2ae3d27d4eb4full;
 
-    NYQ_HD StratifiedSampler() = default;
+    StratifiedSampler() = default;
     /// `jittered == false` is the `uniform` sampler (cell centres).
     NYQ_HD StratifiedSampler(std::uint32_t x_samples, std::uint32_t y_samples, bool jittered_,
                              std::uint64_t seed_)
@@ -2446,8 +2446,10 @@ NYQ_HD inline std::uint64_t korobov_multiplier_2d(std::uint64_t n) {
 }
 
 /// Roberts' R2 increments `α_j = ⌊φ₂^−(j+1) · 2⁶⁴⌋` (φ₂ the plastic number, the root of
-/// x³ = x + 1), as the core computes them (`Kronecker::new(2)`, libm's `pow`).
-constexpr std::uint64_t kR2Alpha[2] = {0xc13fa9a902a63000ull, 0x91e10da5c79e7800ull};
+/// x³ = x + 1), as the core computes them (`Kronecker::new(2)` through libm's `pow`; the parity
+/// test holds them to it).
+constexpr std::uint64_t kR2Alpha0 = 0xc13fa9a902a63000ull;
+constexpr std::uint64_t kR2Alpha1 = 0x91e10da5c79e7800ull;
 
 /// A rank-1 lattice or R2 in 64-bit fixed point: the core's `FibonacciLattice`, `Korobov` and
 /// two-dimensional `Kronecker`, unrotated or Cranley–Patterson rotated (`hash2(seed, dim)`).
@@ -2499,7 +2501,7 @@ struct Lattice {
         if (kind == R2) {
             const std::uint32_t d = dim % 2;
             const std::uint64_t start = rotated ? hash2(seed, d) : std::uint64_t{1} << 63;
-            return start + index * kR2Alpha[d];
+            return start + index * (d == 0 ? kR2Alpha0 : kR2Alpha1);
         }
         if (kind == Fibonacci) {
             const std::uint64_t k = index % n;
@@ -2526,7 +2528,7 @@ struct LatticeSampler {
     std::uint64_t seed = 0;
     std::uint32_t px = 0, py = 0, index = 0, dim = 0;
 
-    NYQ_HD LatticeSampler() = default;
+    LatticeSampler() = default;
     /// `fibonacci`: spp rounded up to a Fibonacci number (at least 2).
     NYQ_HD static LatticeSampler fibonacci(std::uint32_t spp, std::uint64_t seed) {
         LatticeSampler s;
@@ -2954,7 +2956,7 @@ struct HaltonSampler {
         return static_cast<std::uint64_t>(m < 0 ? m + static_cast<std::int64_t>(n) : m);
     }
 
-    NYQ_HD HaltonSampler() = default;
+    HaltonSampler() = default;
     NYQ_HD HaltonSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_, Scramble how,
                          std::uint64_t seed_)
         : scramble(how), seed(seed_) {
@@ -3108,7 +3110,7 @@ struct Pmj02Sampler {
         std::uint32_t shuffle, x, y;
     };
 
-    NYQ_HD Pmj02Sampler() = default;
+    Pmj02Sampler() = default;
     NYQ_HD Pmj02Sampler(std::uint32_t spp_, std::uint64_t seed_) : seed(seed_) {
         if (spp_ != 0 && spp_ <= 65536) spp = spp_;
     }

@@ -1,6 +1,6 @@
 // Parity of gpu/cpp/nyquist.hpp with the Rust core, run by capi/tests/cpp_header.rs:
 //
-//   parity EXPECTED_FILE
+//   parity EXPECTED_FILE [--quick]
 //
 // 1. Samplers and sequences the C API builds (`nyq_sampler_create` by name,
 //    `nyq_sequence_sample`): random (pixel, sample index, dimension, seed) queries drawn here,
@@ -146,6 +146,11 @@ bool compare14(const char* label, const Query& q, const float want[14], const fl
 
 std::uint64_t g_total = 0;
 
+/// Queries per C API sampler configuration: 8 configurations × 9000 × 14 values ≥ 10⁶ per
+/// sampler. `--quick` divides every C API count by `g_scale` (the second build's run).
+constexpr std::uint32_t kQueries = 9000;
+std::uint32_t g_scale = 1;
+
 /// Sampler `name` of the C API against the header's `cpp`, over `queries` random queries.
 template <class S>
 bool capi_sampler(const char* name, std::uint32_t w, std::uint32_t h, std::uint32_t spp,
@@ -196,7 +201,7 @@ bool owen_sobol_capi(Rng& rng) {
     for (std::uint32_t k = 0; k < 8; ++k) {
         const std::uint64_t seed = k < 2 ? k : rng.next();
         const std::uint32_t spp = spps[k % 4];
-        if (!capi_sampler("owen-sobol", 64, 64, spp, seed, OwenSobolSampler<>(spp, seed), 9000, rng))
+        if (!capi_sampler("owen-sobol", 64, 64, spp, seed, OwenSobolSampler<>(spp, seed), kQueries / g_scale, rng))
             return false;
     }
     t.print();
@@ -213,7 +218,7 @@ bool zsobol_capi(Rng& rng) {
         const Config c = configs[k % 4];
         const std::uint64_t seed = k < 2 ? k : rng.next();
         if (!capi_sampler("zsobol", c.w, c.h, c.spp, seed,
-                          ZSobolSampler(c.w, c.h, c.spp, Scramble::FastOwen, seed), 9000, rng))
+                          ZSobolSampler(c.w, c.h, c.spp, Scramble::FastOwen, seed), kQueries / g_scale, rng))
             return false;
     }
     t.print();
@@ -229,7 +234,7 @@ bool sobol_capi(Rng& rng) {
     for (std::uint32_t k = 0; k < 8; ++k) {
         const Config c = configs[k % 4];
         const std::uint64_t seed = k < 4 ? 0 : rng.next();
-        if (!capi_sampler("sobol", c.w, c.h, c.spp, seed, SobolSampler<>(c.w, c.h, c.spp, seed), 9000,
+        if (!capi_sampler("sobol", c.w, c.h, c.spp, seed, SobolSampler<>(c.w, c.h, c.spp, seed), kQueries / g_scale,
                           rng))
             return false;
     }
@@ -284,7 +289,7 @@ bool sobol_sequence_capi(Rng& rng) {
         seq.seed = k < 3 ? k : rng.next();
         const Sobol<1024> s = k < 2 ? Sobol<1024>::plain() : Sobol<1024>::with_scramble(seq.seed);
         if (!sequence_capi("Sobol", seq, std::uint64_t{1} << 32,
-                           [&](std::uint64_t i, std::uint32_t d) { return s.sample(i, d); }, 260000,
+                           [&](std::uint64_t i, std::uint32_t d) { return s.sample(i, d); }, 260000 / g_scale,
                            rng))
             return false;
     }
@@ -297,7 +302,7 @@ bool random_capi(Rng& rng) {
     for (std::uint32_t k = 0; k < 8; ++k) {
         const std::uint64_t seed = k < 2 ? k : rng.next();
         const std::uint32_t spp = k % 2 ? 16 : 1;
-        if (!capi_sampler("random", 8, 8, spp, seed, RandomSampler(spp, seed), 9000, rng)) return false;
+        if (!capi_sampler("random", 8, 8, spp, seed, RandomSampler(spp, seed), kQueries / g_scale, rng)) return false;
     }
     t.print();
     return true;
@@ -311,7 +316,7 @@ bool stratified_capi(Rng& rng) {
         const std::uint32_t side = sides[k % 4];
         const bool jittered = k < 4 || k == 7;
         if (!capi_sampler(jittered ? "stratified" : "uniform", 8, 8, side * side, seed,
-                          StratifiedSampler(side, side, jittered, seed), 9000, rng))
+                          StratifiedSampler(side, side, jittered, seed), kQueries / g_scale, rng))
             return false;
     }
     t.print();
@@ -331,7 +336,7 @@ bool lattice_capi(Rng& rng) {
             const LatticeSampler s = which == 0   ? LatticeSampler::fibonacci(spp, seed)
                                      : which == 1 ? LatticeSampler::r2(spp, seed)
                                                   : LatticeSampler::korobov(spp, seed);
-            if (!capi_sampler(names[which], 8, 8, spp, seed, s, 9000, rng)) return false;
+            if (!capi_sampler(names[which], 8, 8, spp, seed, s, kQueries / g_scale, rng)) return false;
         }
         t.print();
     }
@@ -349,7 +354,7 @@ bool lattice_sequences_capi(Rng& rng) {
         Lattice l = Lattice::fibonacci_at_least(seq.points);
         if (seq.seed != 0) l = l.rotated_by(seq.seed);
         if (!sequence_capi("Fibonacci", seq, seq.points,
-                           [&](std::uint64_t i, std::uint32_t d) { return l.sample(i, d); }, 100000,
+                           [&](std::uint64_t i, std::uint32_t d) { return l.sample(i, d); }, 100000 / g_scale,
                            rng))
             return false;
         seq.kind = NYQ_SEQ_RD;
@@ -357,7 +362,7 @@ bool lattice_sequences_capi(Rng& rng) {
         Lattice r = Lattice::r2();
         if (seq.seed != 0) r = r.rotated_by(seq.seed);
         if (!sequence_capi("R2", seq, 0, [&](std::uint64_t i, std::uint32_t d) { return r.sample(i, d); },
-                           100000, rng))
+                           100000 / g_scale, rng))
             return false;
         seq.kind = NYQ_SEQ_KOROBOV;
         seq.dims = k % 2 ? 1024 : 8;
@@ -365,7 +370,7 @@ bool lattice_sequences_capi(Rng& rng) {
         seq.seed = k < 2 ? 76 : 0x1234567891ull;  // the multiplier, coprime to the points
         const Lattice kor = Lattice::korobov(seq.points, seq.seed, seq.dims);
         if (!sequence_capi("Korobov", seq, seq.points,
-                           [&](std::uint64_t i, std::uint32_t d) { return kor.sample(i, d); }, 100000,
+                           [&](std::uint64_t i, std::uint32_t d) { return kor.sample(i, d); }, 100000 / g_scale,
                            rng))
             return false;
     }
@@ -384,7 +389,7 @@ bool halton_capi(Rng& rng) {
         const std::uint64_t seed = k < 4 ? 0 : rng.next();
         const Scramble how = seed == 0 ? Scramble::None : Scramble::PermuteDigits;
         if (!capi_sampler("halton", c.w, c.h, c.spp, seed, HaltonSampler<>(c.w, c.h, c.spp, how, seed),
-                          9000, rng))
+                          kQueries / g_scale, rng))
             return false;
     }
     t.print();
@@ -400,7 +405,7 @@ bool halton_sequence_capi(Rng& rng) {
         seq.dims = dims;
         const Halton<1024> h;
         if (!sequence_capi("Halton", seq, 0,
-                           [&](std::uint64_t i, std::uint32_t d) { return h.sample(i, d); }, 600000,
+                           [&](std::uint64_t i, std::uint32_t d) { return h.sample(i, d); }, 600000 / g_scale,
                            rng))
             return false;
     }
@@ -414,7 +419,7 @@ bool pmj02_capi(Rng& rng) {
     for (std::uint32_t k = 0; k < 8; ++k) {
         const std::uint64_t seed = k < 2 ? k : rng.next();
         const std::uint32_t spp = spps[k % 4];
-        if (!capi_sampler("pmj02", 8, 8, spp, seed, Pmj02Sampler(spp, seed), 9000, rng)) return false;
+        if (!capi_sampler("pmj02", 8, 8, spp, seed, Pmj02Sampler(spp, seed), kQueries / g_scale, rng)) return false;
     }
     t.print();
     return true;
@@ -578,10 +583,11 @@ bool expected_file(const char* path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::printf("usage: parity EXPECTED_FILE\n");
+    if (argc < 2 || argc > 3 || (argc == 3 && std::strcmp(argv[2], "--quick") != 0)) {
+        std::printf("usage: parity EXPECTED_FILE [--quick]\n");
         return 2;
     }
+    if (argc == 3) g_scale = 8;
     Rng rng{0x6e7971756973740aull};
     const bool good = owen_sobol_capi(rng) && zsobol_capi(rng) && sobol_capi(rng) &&
                       sobol_sequence_capi(rng) && random_capi(rng) &&
