@@ -63,6 +63,19 @@ struct NyqRandomSampler {
     uint dim;
     char _pad4[4];
 };
+struct type_13 {
+    metal::uint2 inner[2];
+};
+struct NyqLatticeSampler {
+    uint lattice;
+    uint n;
+    uint g;
+    char _pad3[4];
+    metal::uint2 seed;
+    metal::uint2 pixel;
+    uint index;
+    uint dim;
+};
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -74,8 +87,12 @@ struct NyqFillJob {
     uint implicit;
     uint first;
     uint count;
+    uint lattice;
+    uint generator;
+    uint pad0_;
+    uint pad1_;
 };
-typedef metal::uint4 type_14[1];
+typedef metal::uint4 type_16[1];
 constant uint NYQ_SCRAMBLE_NONE = 0u;
 constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
@@ -84,9 +101,14 @@ constant uint NYQ_SOBOL_DIMS = 1024u;
 constant type_9 NYQ_PERMUTATIONS_4_ = type_9 {{228u, 180u, 216u, 120u, 156u, 108u, 225u, 177u, 201u, 57u, 141u, 45u, 210u, 114u, 198u, 54u, 78u, 30u, 147u, 99u, 135u, 39u, 75u, 27u}};
 constant metal::uint2 NYQ_PCG_MULTIPLIER = metal::uint2(1284865837u, 1481765933u);
 constant metal::uint2 NYQ_RANDOM_INCREMENT = metal::uint2(2665069115u, 1250683170u);
+constant uint NYQ_LATTICE_FIBONACCI = 0u;
+constant uint NYQ_LATTICE_KOROBOV = 1u;
+constant uint NYQ_LATTICE_R2_ = 2u;
+constant type_13 NYQ_R2_ALPHA = type_13 {{metal::uint2(44445696u, 3242174889u), metal::uint2(3349051392u, 2447445413u)}};
 constant uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 constant uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 constant uint NYQ_FILL_RANDOM_SAMPLER = 2u;
+constant uint NYQ_FILL_LATTICE_SAMPLER = 3u;
 constant uint NYQ_FILL_SOBOL = 16u;
 constant uint NYQ_FILL_OWEN_SOBOL = 17u;
 
@@ -124,16 +146,16 @@ metal::uint2 nyq_add64_(
 
 metal::uint2 nyq_shr64_(
     metal::uint2 a_3,
-    uint s_3
+    uint s_4
 ) {
-    return metal::uint2((a_3.x >> s_3) | (a_3.y << (32u - s_3)), a_3.y >> s_3);
+    return metal::uint2((a_3.x >> s_4) | (a_3.y << (32u - s_4)), a_3.y >> s_4);
 }
 
 metal::uint2 nyq_shl64_(
     metal::uint2 a_4,
-    uint s_4
+    uint s_5
 ) {
-    return metal::uint2(a_4.x << s_4, (a_4.y << s_4) | (a_4.x >> (32u - s_4)));
+    return metal::uint2(a_4.x << s_5, (a_4.y << s_5) | (a_4.x >> (32u - s_5)));
 }
 
 metal::uint2 nyq_u64_(
@@ -229,23 +251,23 @@ float nyq_rev_to_f32_(
 
 uint nyq_shr(
     uint x_3,
-    uint s_5
+    uint s_6
 ) {
-    return (s_5 >= 32u) ? 0u : (x_3 >> (s_5 & 31u));
+    return (s_6 >= 32u) ? 0u : (x_3 >> (s_6 & 31u));
 }
 
 float nyq_film_coordinate(
     uint pixel,
     float offset
 ) {
-    float base = static_cast<float>(pixel);
-    float x_9 = base + offset;
-    float edge = base + 1.0;
-    if (x_9 < edge) {
-        return x_9;
+    float base_1 = static_cast<float>(pixel);
+    float x_11 = base_1 + offset;
+    float edge = base_1 + 1.0;
+    if (x_11 < edge) {
+        return x_11;
     }
     float below = as_type<float>(as_type<uint>(edge) - 1u);
-    return (below >= base) ? below : base;
+    return (below >= base_1) ? below : base_1;
 }
 
 uint nyq_lk_hash(
@@ -360,7 +382,7 @@ uint nyq_sobol_u32_(
 ) {
     uint v_1 = 0u;
     uint bits = {};
-    uint base_1 = naga_mod(dim, NYQ_SOBOL_DIMS) * 32u;
+    uint base_2 = naga_mod(dim, NYQ_SOBOL_DIMS) * 32u;
     bits = index_1;
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
@@ -374,7 +396,7 @@ uint nyq_sobol_u32_(
         {
             uint _e12 = v_1;
             uint _e14 = bits;
-            uint _e18 = nyq_sobol_matrices[base_1 + metal::ctz(_e14)];
+            uint _e18 = nyq_sobol_matrices[base_2 + metal::ctz(_e14)];
             v_1 = _e12 ^ _e18;
             uint _e20 = bits;
             uint _e21 = bits;
@@ -404,17 +426,17 @@ NyqSobol nyq_sobol(
 }
 
 uint nyq_sobol_sample_u32_(
-    NyqSobol s_6,
+    NyqSobol s_7,
     uint index_2,
     uint dim_2,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint shift = 0u;
-    uint d_3 = naga_mod(dim_2, s_6.dims);
-    if (s_6.scrambled != 0u) {
+    uint d_3 = naga_mod(dim_2, s_7.dims);
+    if (s_7.scrambled != 0u) {
         metal::uint2 _e11 = nyq_u64_(d_3);
-        metal::uint2 _e12 = nyq_hash2_(s_6.seed, _e11);
+        metal::uint2 _e12 = nyq_hash2_(s_7.seed, _e11);
         shift = _e12.y;
     }
     uint _e14 = nyq_sobol_u32_(index_2, d_3, nyq_sobol_matrices, _buffer_sizes);
@@ -423,13 +445,13 @@ uint nyq_sobol_sample_u32_(
 }
 
 float nyq_sobol_sample(
-    NyqSobol s_7,
+    NyqSobol s_8,
     uint index_3,
     uint dim_3,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_sobol_sample_u32_(s_7, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_sobol_sample_u32_(s_8, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -475,33 +497,33 @@ NyqOwenSobol nyq_owen_sobol(
 }
 
 uint nyq_owen_sobol_sample_u32_(
-    NyqOwenSobol s_8,
+    NyqOwenSobol s_9,
     uint index_5,
     uint dim_6,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_4 = naga_mod(dim_6, s_8.dims);
-    uint _e6 = nyq_shuffle_rev(index_5, s_8.shuffle_seed);
-    uint _e8 = nyq_dim_seed(s_8.key, d_4);
+    uint d_4 = naga_mod(dim_6, s_9.dims);
+    uint _e6 = nyq_shuffle_rev(index_5, s_9.shuffle_seed);
+    uint _e8 = nyq_dim_seed(s_9.key, d_4);
     uint _e9 = nyq_owen_sobol_rev(_e6, d_4, _e8, nyq_sobol_matrices, _buffer_sizes);
     return metal::reverse_bits(_e9);
 }
 
 float nyq_owen_sobol_sample(
-    NyqOwenSobol s_9,
+    NyqOwenSobol s_10,
     uint index_6,
     uint dim_7,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_owen_sobol_sample_u32_(s_9, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_owen_sobol_sample_u32_(s_10, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
 metal::float4 nyq_owen_sobol_sample_4d(
-    NyqOwenSobol s_10,
+    NyqOwenSobol s_11,
     uint index_7,
     uint first_dim,
     device type_4 const& nyq_sobol_matrices,
@@ -509,7 +531,7 @@ metal::float4 nyq_owen_sobol_sample_4d(
 ) {
     metal::float4 out_1 = {};
     uint k_4 = 0u;
-    uint _e4 = nyq_shuffle_rev(index_7, s_10.shuffle_seed);
+    uint _e4 = nyq_shuffle_rev(index_7, s_11.shuffle_seed);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -527,9 +549,9 @@ metal::float4 nyq_owen_sobol_sample_4d(
         }
         {
             uint _e11 = k_4;
-            uint d_5 = naga_mod(first_dim + _e11, s_10.dims);
+            uint d_5 = naga_mod(first_dim + _e11, s_11.dims);
             uint _e15 = k_4;
-            uint _e18 = nyq_dim_seed(s_10.key, d_5);
+            uint _e18 = nyq_dim_seed(s_11.key, d_5);
             uint _e19 = nyq_owen_sobol_rev(_e4, d_5, _e18, nyq_sobol_matrices, _buffer_sizes);
             float _e20 = nyq_rev_to_f32_(_e19);
             out_1[_e15] = _e20;
@@ -547,33 +569,33 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(
 }
 
 void nyq_owen_sobol_start(
-    thread NyqOwenSobolSampler& s_11,
+    thread NyqOwenSobolSampler& s_12,
     metal::uint2 pixel_1,
     uint sample_index,
     uint dim_8
 ) {
     metal::uint2 _e5 = nyq_u64_(pixel_1.x);
     metal::uint2 _e7 = nyq_u64_(pixel_1.y);
-    uint _e9 = s_11.frame;
+    uint _e9 = s_12.frame;
     metal::uint2 _e10 = nyq_u64_(_e9);
-    metal::uint2 _e12 = s_11.seed;
+    metal::uint2 _e12 = s_12.seed;
     metal::uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_11.key = _e13.x;
+    s_12.key = _e13.x;
     uint _e18 = nyq_mix32_(_e13.y);
     uint _e19 = nyq_shuffle_rev(sample_index, _e18);
-    s_11.r = _e19;
-    s_11.dim = dim_8;
+    s_12.r = _e19;
+    s_12.dim = dim_8;
     return;
 }
 
 float nyq_owen_sobol_value(
-    thread NyqOwenSobolSampler& s_12,
+    thread NyqOwenSobolSampler& s_13,
     uint dim_9,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_12.r;
-    uint _e5 = s_12.key;
+    uint _e3 = s_13.r;
+    uint _e5 = s_13.key;
     uint _e6 = nyq_dim_seed(_e5, dim_9);
     uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6, nyq_sobol_matrices, _buffer_sizes);
     float _e8 = nyq_rev_to_f32_(_e7);
@@ -581,42 +603,42 @@ float nyq_owen_sobol_value(
 }
 
 float nyq_owen_sobol_get_1d(
-    thread NyqOwenSobolSampler& s_13,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_6 = s_13.dim;
-    s_13.dim = d_6 + 1u;
-    float _e6 = nyq_owen_sobol_value(s_13, d_6, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_owen_sobol_get_2d(
     thread NyqOwenSobolSampler& s_14,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_7 = s_14.dim;
-    s_14.dim = d_7 + 2u;
-    float _e6 = nyq_owen_sobol_value(s_14, d_7, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_14, d_7 + 1u, nyq_sobol_matrices, _buffer_sizes);
-    return metal::float2(_e6, _e9);
+    uint d_6 = s_14.dim;
+    s_14.dim = d_6 + 1u;
+    float _e6 = nyq_owen_sobol_value(s_14, d_6, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
 }
 
-metal::float2 nyq_owen_sobol_get_pixel_2d(
+metal::float2 nyq_owen_sobol_get_2d(
     thread NyqOwenSobolSampler& s_15,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_15.dim;
-    s_15.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_value(s_15, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_15, 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_7 = s_15.dim;
+    s_15.dim = d_7 + 2u;
+    float _e6 = nyq_owen_sobol_value(s_15, d_7, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_15, d_7 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_owen_sobol_get_pixel_2d(
+    thread NyqOwenSobolSampler& s_16,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_16.dim;
+    s_16.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_value(s_16, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_16, 1u, nyq_sobol_matrices, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_owen_sobol_camera_sample(
-    thread NyqOwenSobolSampler& s_16,
+    thread NyqOwenSobolSampler& s_17,
     metal::uint2 pixel_2,
     uint sample_index_1,
     device type_4 const& nyq_sobol_matrices,
@@ -624,7 +646,7 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
 ) {
     type_8 v_2 = {};
     uint d_1 = 0u;
-    nyq_owen_sobol_start(s_16, pixel_2, sample_index_1, 0u);
+    nyq_owen_sobol_start(s_17, pixel_2, sample_index_1, 0u);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -643,11 +665,11 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            float _e13 = nyq_owen_sobol_value(s_16, _e12, nyq_sobol_matrices, _buffer_sizes);
+            float _e13 = nyq_owen_sobol_value(s_17, _e12, nyq_sobol_matrices, _buffer_sizes);
             v_2.inner[_e10] = _e13;
         }
     }
-    s_16.dim = 5u;
+    s_17.dim = 5u;
     float _e21 = v_2.inner[0];
     float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
     float _e25 = v_2.inner[1];
@@ -697,10 +719,10 @@ uint nyq_spread(
 }
 
 uint nyq_zsobol_morton(
-    NyqZSobolSampler s_17,
+    NyqZSobolSampler s_18,
     metal::uint2 pixel_3
 ) {
-    uint mask = (s_17.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_17.log2_res) & 31u));
+    uint mask = (s_18.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_18.log2_res) & 31u));
     uint _e16 = nyq_spread(pixel_3.x & mask);
     uint _e19 = nyq_spread(pixel_3.y & mask);
     return _e16 | (_e19 << 1u);
@@ -762,14 +784,14 @@ metal::uint2 nyq_zsobol_nested_word(
 }
 
 uint nyq_zsobol_index(
-    NyqZSobolSampler s_18,
+    NyqZSobolSampler s_19,
     uint morton,
     metal::uint2 key_3
 ) {
     uint index_8 = 0u;
     uint i = {};
     uint i_1 = {};
-    i = s_18.digits;
+    i = s_19.digits;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
@@ -781,13 +803,13 @@ uint nyq_zsobol_index(
         }
         loop_init_3 = false;
         uint _e7 = i;
-        if (_e7 > s_18.sample_digits) {
+        if (_e7 > s_19.sample_digits) {
         } else {
             break;
         }
         {
             uint _e11 = i;
-            uint shift_3 = (2u * (_e11 - 1u)) + s_18.odd;
+            uint shift_3 = (2u * (_e11 - 1u)) + s_19.odd;
             uint digit_1 = (morton >> shift_3) & 3u;
             uint _e20 = index_8;
             uint _e23 = nyq_shr(morton, shift_3 + 2u);
@@ -796,10 +818,10 @@ uint nyq_zsobol_index(
             index_8 = _e20 | _e25;
         }
     }
-    uint _e31 = nyq_shr(morton, s_18.log2_spp);
+    uint _e31 = nyq_shr(morton, s_19.log2_spp);
     metal::uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample = morton & (s_18.spp - 1u);
-    i_1 = s_18.sample_digits;
+    uint sample = morton & (s_19.spp - 1u);
+    i_1 = s_19.sample_digits;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
@@ -817,7 +839,7 @@ uint nyq_zsobol_index(
         }
         {
             uint _e43 = i_1;
-            uint shift_4 = (2u * (_e43 - 1u)) + s_18.odd;
+            uint shift_4 = (2u * (_e43 - 1u)) + s_19.odd;
             uint digit_2 = (sample >> shift_4) & 3u;
             uint _e54 = nyq_shr(sample, shift_4 + 2u);
             metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
@@ -827,7 +849,7 @@ uint nyq_zsobol_index(
             index_8 = _e58 | _e61;
         }
     }
-    if (s_18.odd == 1u) {
+    if (s_19.odd == 1u) {
         uint _e69 = index_8;
         metal::uint2 _e75 = nyq_zsobol_nested_word(_e32, sample >> 1u, 0u);
         index_8 = _e69 | ((sample & 1u) ^ (_e75.y >> 31u));
@@ -837,15 +859,15 @@ uint nyq_zsobol_index(
 }
 
 uint nyq_zsobol_sequence_index(
-    NyqZSobolSampler s_19,
+    NyqZSobolSampler s_20,
     metal::uint2 pixel_4,
     uint sample_index_2,
     uint dim_11
 ) {
-    uint _e4 = nyq_zsobol_morton(s_19, pixel_4);
-    uint morton_1 = (_e4 << s_19.log2_spp) | (sample_index_2 & (s_19.spp - 1u));
-    metal::uint2 _e13 = nyq_zsobol_dim_key(s_19.seed, dim_11);
-    uint _e14 = nyq_zsobol_index(s_19, morton_1, _e13);
+    uint _e4 = nyq_zsobol_morton(s_20, pixel_4);
+    uint morton_1 = (_e4 << s_20.log2_spp) | (sample_index_2 & (s_20.spp - 1u));
+    metal::uint2 _e13 = nyq_zsobol_dim_key(s_20.seed, dim_11);
+    uint _e14 = nyq_zsobol_index(s_20, morton_1, _e13);
     return _e14;
 }
 
@@ -863,42 +885,42 @@ uint nyq_zsobol_dim0_(
 }
 
 float nyq_zsobol_value_1d(
-    thread NyqZSobolSampler& s_20,
+    thread NyqZSobolSampler& s_21,
     uint dim_12
 ) {
-    metal::uint2 _e3 = s_20.seed;
+    metal::uint2 _e3 = s_21.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
-    NyqZSobolSampler _e5 = s_20;
-    uint _e7 = s_20.morton;
+    NyqZSobolSampler _e5 = s_21;
+    uint _e7 = s_21.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_20.scramble;
+    uint _e11 = s_21.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
     float _e13 = nyq_fraction_to_f32_(_e12);
     return _e13;
 }
 
 metal::float2 nyq_zsobol_value_2d(
-    thread NyqZSobolSampler& s_21,
+    thread NyqZSobolSampler& s_22,
     uint dim_13,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint y = {};
-    metal::uint2 _e3 = s_21.seed;
+    metal::uint2 _e3 = s_22.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
-    NyqZSobolSampler _e5 = s_21;
-    uint _e7 = s_21.morton;
+    NyqZSobolSampler _e5 = s_22;
+    uint _e7 = s_22.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_21.scramble;
+    uint _e11 = s_22.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_21.scramble;
+    uint _e15 = s_22.scramble;
     if (_e15 == NYQ_SCRAMBLE_FAST_OWEN) {
         uint _e19 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
         uint _e22 = nyq_lk_hash(metal::reverse_bits(_e19), _e4.y);
         y = metal::reverse_bits(_e22);
     } else {
         uint _e25 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
-        uint _e28 = s_21.scramble;
+        uint _e28 = s_22.scramble;
         uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -909,63 +931,63 @@ metal::float2 nyq_zsobol_value_2d(
 }
 
 void nyq_zsobol_start(
-    thread NyqZSobolSampler& s_22,
+    thread NyqZSobolSampler& s_23,
     metal::uint2 pixel_5,
     uint sample_index_3,
     uint dim_14
 ) {
-    NyqZSobolSampler _e5 = s_22;
+    NyqZSobolSampler _e5 = s_23;
     uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
-    uint _e8 = s_22.log2_spp;
-    uint _e11 = s_22.spp;
-    s_22.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
-    s_22.dim = dim_14;
+    uint _e8 = s_23.log2_spp;
+    uint _e11 = s_23.spp;
+    s_23.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
+    s_23.dim = dim_14;
     return;
 }
 
 float nyq_zsobol_get_1d(
-    thread NyqZSobolSampler& s_23
+    thread NyqZSobolSampler& s_24
 ) {
-    uint d_8 = s_23.dim;
-    s_23.dim = d_8 + 1u;
-    float _e6 = nyq_zsobol_value_1d(s_23, d_8);
+    uint d_8 = s_24.dim;
+    s_24.dim = d_8 + 1u;
+    float _e6 = nyq_zsobol_value_1d(s_24, d_8);
     return _e6;
 }
 
 metal::float2 nyq_zsobol_get_2d(
-    thread NyqZSobolSampler& s_24,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_9 = s_24.dim;
-    s_24.dim = d_9 + 2u;
-    metal::float2 _e6 = nyq_zsobol_value_2d(s_24, d_9, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_zsobol_get_pixel_2d(
     thread NyqZSobolSampler& s_25,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_25.dim;
-    s_25.dim = metal::max(_e3, 2u);
-    metal::float2 _e7 = nyq_zsobol_value_2d(s_25, 0u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_9 = s_25.dim;
+    s_25.dim = d_9 + 2u;
+    metal::float2 _e6 = nyq_zsobol_value_2d(s_25, d_9, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_zsobol_get_pixel_2d(
+    thread NyqZSobolSampler& s_26,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_26.dim;
+    s_26.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_zsobol_value_2d(s_26, 0u, nyq_sobol_matrices, _buffer_sizes);
     return _e7;
 }
 
 NyqCameraSample nyq_zsobol_camera_sample(
-    thread NyqZSobolSampler& s_26,
+    thread NyqZSobolSampler& s_27,
     metal::uint2 pixel_6,
     uint sample_index_4,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_zsobol_start(s_26, pixel_6, sample_index_4, 0u);
-    metal::float2 _e5 = nyq_zsobol_value_2d(s_26, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e7 = nyq_zsobol_value_1d(s_26, 2u);
-    metal::float2 _e9 = nyq_zsobol_value_2d(s_26, 3u, nyq_sobol_matrices, _buffer_sizes);
-    s_26.dim = 5u;
+    nyq_zsobol_start(s_27, pixel_6, sample_index_4, 0u);
+    metal::float2 _e5 = nyq_zsobol_value_2d(s_27, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e7 = nyq_zsobol_value_1d(s_27, 2u);
+    metal::float2 _e9 = nyq_zsobol_value_2d(s_27, 3u, nyq_sobol_matrices, _buffer_sizes);
+    s_27.dim = 5u;
     float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
     float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
     metal::float2 film = metal::float2(_e14, _e17);
@@ -990,9 +1012,9 @@ uint nyq_pcg32_next(
     g.state = _e7;
     metal::uint2 _e9 = nyq_shr64_(old, 18u);
     metal::uint2 _e12 = nyq_shr64_(_e9 ^ old, 27u);
-    uint x_10 = _e12.x;
+    uint x_12 = _e12.x;
     uint rot = old.y >> 27u;
-    return (x_10 >> rot) | (x_10 << ((32u - rot) & 31u));
+    return (x_12 >> rot) | (x_12 << ((32u - rot) & 31u));
 }
 
 void nyq_pcg32_advance(
@@ -1074,11 +1096,11 @@ NyqRandomSampler nyq_random_sampler(
 }
 
 NyqPcg32_ nyq_random_at(
-    thread NyqRandomSampler& s_27,
+    thread NyqRandomSampler& s_28,
     uint dim_15
 ) {
     NyqPcg32_ g_2 = {};
-    metal::uint2 _e3 = s_27.base;
+    metal::uint2 _e3 = s_28.base;
     NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
     uint d_10 = dim_15 & 65535u;
@@ -1090,112 +1112,327 @@ NyqPcg32_ nyq_random_at(
 }
 
 void nyq_random_start(
-    thread NyqRandomSampler& s_28,
+    thread NyqRandomSampler& s_29,
     metal::uint2 pixel_7,
     uint sample_index_5,
     uint dim_16
 ) {
-    metal::uint2 _e5 = s_28.seed;
+    metal::uint2 _e5 = s_29.seed;
     metal::uint2 _e7 = nyq_u64_(1918987876u);
     metal::uint2 _e8 = nyq_hash3_(pixel_7, _e5, _e7);
     metal::uint2 golden_2 = metal::uint2(2135587861u, 2654435769u);
     metal::uint2 _e13 = nyq_u64_(sample_index_5);
     metal::uint2 _e14 = nyq_mul64_(_e13, golden_2);
     metal::uint2 _e16 = nyq_mix64_(_e8 ^ _e14);
-    s_28.base = _e16;
-    s_28.dim = dim_16;
-    NyqPcg32_ _e19 = nyq_random_at(s_28, dim_16);
-    s_28.rng = _e19;
+    s_29.base = _e16;
+    s_29.dim = dim_16;
+    NyqPcg32_ _e19 = nyq_random_at(s_29, dim_16);
+    s_29.rng = _e19;
     return;
 }
 
 float nyq_random_get_1d(
-    thread NyqRandomSampler& s_29
+    thread NyqRandomSampler& s_30
 ) {
     NyqPcg32_ g_3 = {};
-    NyqPcg32_ _e2 = s_29.rng;
+    NyqPcg32_ _e2 = s_30.rng;
     g_3 = _e2;
     uint _e4 = nyq_pcg32_next(g_3);
     float _e5 = nyq_unit_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_29.rng = _e7;
-    uint _e9 = s_29.dim;
-    s_29.dim = _e9 + 1u;
-    uint _e13 = s_29.dim;
+    s_30.rng = _e7;
+    uint _e9 = s_30.dim;
+    s_30.dim = _e9 + 1u;
+    uint _e13 = s_30.dim;
     if ((_e13 & 65535u) == 0u) {
-        NyqPcg32_ _e20 = nyq_random_at(s_29, 0u);
-        s_29.rng = _e20;
+        NyqPcg32_ _e20 = nyq_random_at(s_30, 0u);
+        s_30.rng = _e20;
     }
     return _e5;
 }
 
 metal::float2 nyq_random_get_2d(
-    thread NyqRandomSampler& s_30
+    thread NyqRandomSampler& s_31
 ) {
-    float _e1 = nyq_random_get_1d(s_30);
-    float _e2 = nyq_random_get_1d(s_30);
+    float _e1 = nyq_random_get_1d(s_31);
+    float _e2 = nyq_random_get_1d(s_31);
     return metal::float2(_e1, _e2);
 }
 
 metal::float2 nyq_random_get_pixel_2d(
-    thread NyqRandomSampler& s_31
+    thread NyqRandomSampler& s_32
 ) {
     NyqPcg32_ g_4 = {};
-    uint _e2 = s_31.dim;
+    uint _e2 = s_32.dim;
     if (_e2 == 0u) {
-        metal::float2 _e5 = nyq_random_get_2d(s_31);
+        metal::float2 _e5 = nyq_random_get_2d(s_32);
         return _e5;
     }
-    NyqPcg32_ _e7 = nyq_random_at(s_31, 0u);
+    NyqPcg32_ _e7 = nyq_random_at(s_32, 0u);
     g_4 = _e7;
     uint _e9 = nyq_pcg32_next(g_4);
     float _e10 = nyq_unit_f32_(_e9);
     uint _e11 = nyq_pcg32_next(g_4);
     float _e12 = nyq_unit_f32_(_e11);
     metal::float2 p_1 = metal::float2(_e10, _e12);
-    uint _e15 = s_31.dim;
+    uint _e15 = s_32.dim;
     if (_e15 < 2u) {
-        s_31.dim = 2u;
+        s_32.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_31.rng = _e21;
+        s_32.rng = _e21;
     }
     return p_1;
 }
 
 NyqCameraSample nyq_random_camera_sample(
-    thread NyqRandomSampler& s_32,
+    thread NyqRandomSampler& s_33,
     metal::uint2 pixel_8,
     uint sample_index_6
 ) {
-    nyq_random_start(s_32, pixel_8, sample_index_6, 0u);
-    metal::float2 _e4 = nyq_random_get_pixel_2d(s_32);
-    float _e5 = nyq_random_get_1d(s_32);
-    metal::float2 _e6 = nyq_random_get_2d(s_32);
+    nyq_random_start(s_33, pixel_8, sample_index_6, 0u);
+    metal::float2 _e4 = nyq_random_get_pixel_2d(s_33);
+    float _e5 = nyq_random_get_1d(s_33);
+    metal::float2 _e6 = nyq_random_get_2d(s_33);
     float _e9 = nyq_film_coordinate(pixel_8.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_8.y, _e4.y);
     metal::float2 film_1 = metal::float2(_e9, _e12);
     return NyqCameraSample {film_1, _e6, _e5};
 }
 
+uint nyq_mod64_(
+    metal::uint2 x_9,
+    uint n
+) {
+    uint r_2 = 0u;
+    uint i_2 = 0u;
+    bool local = {};
+    uint2 loop_bound_7 = uint2(4294967295u);
+    bool loop_init_5 = true;
+    while(true) {
+        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+        if (!loop_init_5) {
+            uint _e42 = i_2;
+            i_2 = _e42 + 1u;
+        }
+        loop_init_5 = false;
+        uint _e6 = i_2;
+        if (_e6 < 64u) {
+        } else {
+            break;
+        }
+        {
+            uint _e11 = i_2;
+            uint word_1 = (_e11 < 32u) ? x_9.y : x_9.x;
+            uint _e16 = i_2;
+            uint bit = (word_1 >> (31u - (_e16 & 31u))) & 1u;
+            uint _e23 = r_2;
+            uint carry = _e23 >> 31u;
+            uint _e26 = r_2;
+            r_2 = (_e26 << 1u) | bit;
+            if (!((carry == 1u))) {
+                uint _e35 = r_2;
+                local = _e35 >= n;
+            } else {
+                local = true;
+            }
+            bool _e38 = local;
+            if (_e38) {
+                uint _e39 = r_2;
+                r_2 = _e39 - n;
+            }
+        }
+    }
+    uint _e44 = r_2;
+    return _e44;
+}
+
+metal::uint2 nyq_fixed_ratio(
+    uint num,
+    uint den
+) {
+    uint r_3 = {};
+    metal::uint2 q = metal::uint2(0u, 0u);
+    uint i_3 = 0u;
+    bool local_1 = {};
+    r_3 = num;
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_6 = true;
+    while(true) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_6) {
+            uint _e37 = i_3;
+            i_3 = _e37 + 1u;
+        }
+        loop_init_6 = false;
+        uint _e9 = i_3;
+        if (_e9 < 64u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = r_3;
+            uint carry_1 = _e12 >> 31u;
+            uint _e15 = r_3;
+            r_3 = _e15 << 1u;
+            metal::uint2 _e18 = q;
+            metal::uint2 _e20 = nyq_shl64_(_e18, 1u);
+            q = _e20;
+            if (!((carry_1 == 1u))) {
+                uint _e26 = r_3;
+                local_1 = _e26 >= den;
+            } else {
+                local_1 = true;
+            }
+            bool _e29 = local_1;
+            if (_e29) {
+                uint _e30 = r_3;
+                r_3 = _e30 - den;
+                uint _e33 = q.x;
+                q.x = _e33 | 1u;
+            }
+        }
+    }
+    metal::uint2 _e39 = q;
+    return _e39;
+}
+
+float nyq_fixed_to_f32_(
+    metal::uint2 x_10
+) {
+    return static_cast<float>(x_10.y >> 8u) * 0.000000059604645;
+}
+
+NyqLatticeSampler nyq_lattice_sampler(
+    uint lattice,
+    uint n_1,
+    uint g_5,
+    metal::uint2 seed_12
+) {
+    return NyqLatticeSampler {lattice, n_1, g_5, {}, seed_12, metal::uint2(0u, 0u), 0u, 0u};
+}
+
+float nyq_lattice_value(
+    thread NyqLatticeSampler& s_34,
+    uint dim_17
+) {
+    metal::uint2 base = {};
+    uint g_6 = {};
+    uint n_2 = s_34.n;
+    uint _e5 = s_34.index;
+    uint k_5 = naga_mod(_e5, n_2);
+    uint component = naga_mod(dim_17, 2u);
+    uint _e11 = s_34.lattice;
+    switch(_e11) {
+        case 2u: {
+            metal::uint2 _e15 = nyq_u64_(k_5);
+            metal::uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA.inner[component]);
+            metal::uint2 _e19 = nyq_add64_(metal::uint2(0u, 2147483648u), _e18);
+            base = _e19;
+            break;
+        }
+        default: {
+            uint _e21 = s_34.g;
+            g_6 = _e21;
+            if (component == 0u) {
+                g_6 = naga_mod(1u, n_2);
+            }
+            uint _e27 = g_6;
+            metal::uint2 _e28 = nyq_mul_wide(k_5, _e27);
+            uint _e29 = nyq_mod64_(_e28, n_2);
+            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_2);
+            base = _e30;
+            break;
+        }
+    }
+    metal::uint2 _e32 = s_34.pixel;
+    metal::uint2 _e35 = nyq_u64_(naga_div(dim_17, 2u));
+    metal::uint2 _e37 = s_34.seed;
+    metal::uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
+    metal::uint2 _e39 = base;
+    metal::uint2 _e40 = nyq_u64_(component);
+    metal::uint2 _e41 = nyq_hash2_(_e38, _e40);
+    metal::uint2 _e42 = nyq_add64_(_e39, _e41);
+    float _e43 = nyq_fixed_to_f32_(_e42);
+    return _e43;
+}
+
+void nyq_lattice_start(
+    thread NyqLatticeSampler& s_35,
+    metal::uint2 pixel_9,
+    uint sample_index_7,
+    uint dim_18
+) {
+    s_35.pixel = pixel_9;
+    s_35.index = sample_index_7;
+    s_35.dim = dim_18;
+    return;
+}
+
+float nyq_lattice_get_1d(
+    thread NyqLatticeSampler& s_36
+) {
+    uint d_11 = s_36.dim;
+    s_36.dim = d_11 + 1u;
+    float _e6 = nyq_lattice_value(s_36, d_11);
+    return _e6;
+}
+
+metal::float2 nyq_lattice_get_2d(
+    thread NyqLatticeSampler& s_37
+) {
+    uint d_12 = s_37.dim;
+    s_37.dim = d_12 + 2u;
+    float _e6 = nyq_lattice_value(s_37, d_12);
+    float _e9 = nyq_lattice_value(s_37, d_12 + 1u);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_lattice_get_pixel_2d(
+    thread NyqLatticeSampler& s_38
+) {
+    uint _e3 = s_38.dim;
+    s_38.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_lattice_value(s_38, 0u);
+    float _e9 = nyq_lattice_value(s_38, 1u);
+    return metal::float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_lattice_camera_sample(
+    thread NyqLatticeSampler& s_39,
+    metal::uint2 pixel_10,
+    uint sample_index_8
+) {
+    nyq_lattice_start(s_39, pixel_10, sample_index_8, 0u);
+    metal::float2 _e4 = nyq_lattice_get_pixel_2d(s_39);
+    float _e5 = nyq_lattice_get_1d(s_39);
+    metal::float2 _e6 = nyq_lattice_get_2d(s_39);
+    float _e9 = nyq_film_coordinate(pixel_10.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_10.y, _e4.y);
+    metal::float2 film_2 = metal::float2(_e9, _e12);
+    return NyqCameraSample {film_2, _e6, _e5};
+}
+
 metal::uint4 nyq_fill_request(
-    uint i_2,
+    uint i_4,
     constant NyqFillJob& nyq_job,
-    device type_14 const& nyq_requests,
+    device type_16 const& nyq_requests,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = nyq_job.implicit;
     if (_e3 == 0u) {
-        metal::uint4 _e8 = nyq_requests[i_2];
+        metal::uint4 _e8 = nyq_requests[i_4];
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n = _e11 + i_2;
+    uint n_3 = _e11 + i_4;
     uint _e15 = nyq_job.spp;
-    uint pixel_9 = naga_div(n, _e15);
+    uint pixel_11 = naga_div(n_3, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_9, _e20), naga_div(pixel_9, _e25), naga_mod(n, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_11, _e20), naga_div(pixel_11, _e25), naga_mod(n_3, _e29), 5u);
 }
 
 void nyq_fill_camera(
@@ -1231,24 +1468,25 @@ kernel void nyq_fill(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_4 const& nyq_sobol_matrices [[user(fake0)]]
 , constant NyqFillJob& nyq_job [[user(fake0)]]
-, device type_14 const& nyq_requests [[user(fake0)]]
+, device type_16 const& nyq_requests [[user(fake0)]]
 , device type_4& nyq_values [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
     NyqOwenSobolSampler s = {};
     NyqZSobolSampler s_1 = {};
     NyqRandomSampler s_2 = {};
+    NyqLatticeSampler s_3 = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
-    uint i_3 = id.x;
+    uint i_5 = id.x;
     uint _e4 = nyq_job.count;
-    if (i_3 >= _e4) {
+    if (i_5 >= _e4) {
         return;
     }
-    metal::uint4 _e6 = nyq_fill_request(i_3, nyq_job, nyq_requests, _buffer_sizes);
-    metal::uint2 pixel_10 = _e6.xy;
-    uint out_4 = 8u * i_3;
+    metal::uint4 _e6 = nyq_fill_request(i_5, nyq_job, nyq_requests, _buffer_sizes);
+    metal::uint2 pixel_12 = _e6.xy;
+    uint out_4 = 8u * i_5;
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -1256,9 +1494,9 @@ kernel void nyq_fill(
             uint _e18 = nyq_job.frame;
             NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_10, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_12, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e22, nyq_values, _buffer_sizes);
-            nyq_owen_sobol_start(s, pixel_10, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_12, _e6.z, _e6.w);
             float _e25 = nyq_owen_sobol_get_1d(s, nyq_sobol_matrices, _buffer_sizes);
             metal::float2 _e26 = nyq_owen_sobol_get_2d(s, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e25, _e26, nyq_values, _buffer_sizes);
@@ -1271,9 +1509,9 @@ kernel void nyq_fill(
             metal::uint2 _e38 = nyq_job.seed;
             NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_10, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_12, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e42, nyq_values, _buffer_sizes);
-            nyq_zsobol_start(s_1, pixel_10, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_12, _e6.z, _e6.w);
             float _e45 = nyq_zsobol_get_1d(s_1);
             metal::float2 _e46 = nyq_zsobol_get_2d(s_1, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e45, _e46, nyq_values, _buffer_sizes);
@@ -1283,98 +1521,113 @@ kernel void nyq_fill(
             metal::uint2 _e49 = nyq_job.seed;
             NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_10, _e6.z);
+            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_12, _e6.z);
             nyq_fill_camera(out_4, _e53, nyq_values, _buffer_sizes);
-            nyq_random_start(s_2, pixel_10, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_12, _e6.z, _e6.w);
             float _e56 = nyq_random_get_1d(s_2);
             metal::float2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_4, _e56, _e57, nyq_values, _buffer_sizes);
             return;
         }
+        case 3u: {
+            uint _e60 = nyq_job.lattice;
+            uint _e63 = nyq_job.spp;
+            uint _e66 = nyq_job.generator;
+            metal::uint2 _e69 = nyq_job.seed;
+            NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
+            s_3 = _e70;
+            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_12, _e6.z);
+            nyq_fill_camera(out_4, _e73, nyq_values, _buffer_sizes);
+            nyq_lattice_start(s_3, pixel_12, _e6.z, _e6.w);
+            float _e76 = nyq_lattice_get_1d(s_3);
+            metal::float2 _e77 = nyq_lattice_get_2d(s_3);
+            nyq_fill_values(out_4, _e76, _e77, nyq_values, _buffer_sizes);
+            return;
+        }
         case 16u: {
-            uint _e60 = nyq_job.dims;
-            uint _e63 = nyq_job.scramble;
-            metal::uint2 _e68 = nyq_job.seed;
-            NyqSobol _e69 = nyq_sobol(_e60, _e63 != 0u, _e68);
-            uint2 loop_bound_7 = uint2(4294967295u);
-            bool loop_init_5 = true;
-            while(true) {
-                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-                if (!loop_init_5) {
-                    uint _e97 = k;
-                    k = _e97 + 1u;
-                }
-                loop_init_5 = false;
-                uint _e72 = k;
-                if (_e72 < 4u) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e76 = k;
-                    uint _e81 = k;
-                    uint _e83 = nyq_sobol_sample_u32_(_e69, _e6.z, _e6.w + _e81, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e76] = _e83;
-                    uint _e87 = k;
-                    uint _e92 = k;
-                    float _e94 = nyq_sobol_sample(_e69, _e6.z, _e6.w + _e92, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[(out_4 + 4u) + _e87] = as_type<uint>(_e94);
-                }
-            }
-            return;
-        }
-        case 17u: {
-            uint _e101 = nyq_job.dims;
-            metal::uint2 _e104 = nyq_job.seed;
-            NyqOwenSobol _e105 = nyq_owen_sobol(_e101, _e104);
-            metal::float4 _e108 = nyq_owen_sobol_sample_4d(_e105, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
-            uint2 loop_bound_8 = uint2(4294967295u);
-            bool loop_init_6 = true;
-            while(true) {
-                if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-                loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-                if (!loop_init_6) {
-                    uint _e133 = k_1;
-                    k_1 = _e133 + 1u;
-                }
-                loop_init_6 = false;
-                uint _e111 = k_1;
-                if (_e111 < 4u) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e115 = k_1;
-                    uint _e120 = k_1;
-                    uint _e122 = nyq_owen_sobol_sample_u32_(_e105, _e6.z, _e6.w + _e120, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e115] = _e122;
-                    uint _e126 = k_1;
-                    uint _e129 = k_1;
-                    nyq_values[(out_4 + 4u) + _e126] = as_type<uint>(_e108[_e129]);
-                }
-            }
-            return;
-        }
-        default: {
+            uint _e80 = nyq_job.dims;
+            uint _e83 = nyq_job.scramble;
+            metal::uint2 _e88 = nyq_job.seed;
+            NyqSobol _e89 = nyq_sobol(_e80, _e83 != 0u, _e88);
             uint2 loop_bound_9 = uint2(4294967295u);
             bool loop_init_7 = true;
             while(true) {
                 if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_7) {
-                    uint _e146 = k_2;
-                    k_2 = _e146 + 1u;
+                    uint _e117 = k;
+                    k = _e117 + 1u;
                 }
                 loop_init_7 = false;
-                uint _e137 = k_2;
-                if (_e137 < 8u) {
+                uint _e92 = k;
+                if (_e92 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e141 = k_2;
-                    nyq_values[out_4 + _e141] = 4294967295u;
+                    uint _e96 = k;
+                    uint _e101 = k;
+                    uint _e103 = nyq_sobol_sample_u32_(_e89, _e6.z, _e6.w + _e101, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e96] = _e103;
+                    uint _e107 = k;
+                    uint _e112 = k;
+                    float _e114 = nyq_sobol_sample(_e89, _e6.z, _e6.w + _e112, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[(out_4 + 4u) + _e107] = as_type<uint>(_e114);
+                }
+            }
+            return;
+        }
+        case 17u: {
+            uint _e121 = nyq_job.dims;
+            metal::uint2 _e124 = nyq_job.seed;
+            NyqOwenSobol _e125 = nyq_owen_sobol(_e121, _e124);
+            metal::float4 _e128 = nyq_owen_sobol_sample_4d(_e125, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
+            uint2 loop_bound_10 = uint2(4294967295u);
+            bool loop_init_8 = true;
+            while(true) {
+                if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e153 = k_1;
+                    k_1 = _e153 + 1u;
+                }
+                loop_init_8 = false;
+                uint _e131 = k_1;
+                if (_e131 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e135 = k_1;
+                    uint _e140 = k_1;
+                    uint _e142 = nyq_owen_sobol_sample_u32_(_e125, _e6.z, _e6.w + _e140, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e135] = _e142;
+                    uint _e146 = k_1;
+                    uint _e149 = k_1;
+                    nyq_values[(out_4 + 4u) + _e146] = as_type<uint>(_e128[_e149]);
+                }
+            }
+            return;
+        }
+        default: {
+            uint2 loop_bound_11 = uint2(4294967295u);
+            bool loop_init_9 = true;
+            while(true) {
+                if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e166 = k_2;
+                    k_2 = _e166 + 1u;
+                }
+                loop_init_9 = false;
+                uint _e157 = k_2;
+                if (_e157 < 8u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e161 = k_2;
+                    nyq_values[out_4 + _e161] = 4294967295u;
                 }
             }
             return;

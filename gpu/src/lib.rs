@@ -42,6 +42,8 @@ pub const WGSL: &str = concat!(
     "\n",
     include_str!("../wgsl/random.wgsl"),
     "\n",
+    include_str!("../wgsl/lattice.wgsl"),
+    "\n",
     include_str!("../wgsl/fill.wgsl"),
 );
 

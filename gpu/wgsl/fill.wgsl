@@ -16,6 +16,7 @@
 const NYQ_FILL_OWEN_SOBOL_SAMPLER: u32 = 0u;
 const NYQ_FILL_ZSOBOL_SAMPLER: u32 = 1u;
 const NYQ_FILL_RANDOM_SAMPLER: u32 = 2u;
+const NYQ_FILL_LATTICE_SAMPLER: u32 = 3u;
 const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 
@@ -31,6 +32,11 @@ struct NyqFillJob {
     // The first request of this dispatch and the number of requests.
     first: u32,
     count: u32,
+    // The lattice sampler's set and generator.
+    lattice: u32,
+    generator: u32,
+    pad0: u32,
+    pad1: u32,
 }
 
 @group(0) @binding(1) var<uniform> nyq_job: NyqFillJob;
@@ -91,6 +97,13 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             nyq_random_start(&s, pixel, q.z, q.w);
             let one = nyq_random_get_1d(&s);
             nyq_fill_values(out, one, nyq_random_get_2d(&s));
+        }
+        case 3u: {
+            var s = nyq_lattice_sampler(nyq_job.lattice, nyq_job.spp, nyq_job.generator, nyq_job.seed);
+            nyq_fill_camera(out, nyq_lattice_camera_sample(&s, pixel, q.z));
+            nyq_lattice_start(&s, pixel, q.z, q.w);
+            let one = nyq_lattice_get_1d(&s);
+            nyq_fill_values(out, one, nyq_lattice_get_2d(&s));
         }
         case 16u: {
             let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);

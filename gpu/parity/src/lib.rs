@@ -12,7 +12,8 @@
 
 use std::borrow::Cow;
 
-use nyquist::sampler::{OwenSobolSampler, RandomSampler, Sampler, ZSobolSampler};
+use nyquist::lattice::FibonacciLattice;
+use nyquist::sampler::{LatticeSampler, OwenSobolSampler, RandomSampler, Sampler, ZSobolSampler};
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Sequence, Sobol};
 use nyquist_gpu::WORDS_PER_REQUEST;
@@ -83,6 +84,15 @@ pub enum Job {
         /// The seed.
         seed: u64,
     },
+    /// `LatticeSampler::fibonacci`, `korobov` or `r2` (`set` 0, 1, 2) of `spp` and `seed`.
+    LatticeSampler {
+        /// 0 Fibonacci, 1 Korobov, 2 R2.
+        set: u32,
+        /// Samples per pixel asked for.
+        spp: u32,
+        /// The seed.
+        seed: u64,
+    },
     /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
     Sobol {
         /// Dimensions, 1..=1024.
@@ -113,6 +123,9 @@ struct FillJob {
     implicit: u32,
     first: u32,
     count: u32,
+    set: u32,
+    generator: u32,
+    pad: [u32; 2],
 }
 
 fn seed_words(seed: u64) -> [u32; 2] {
@@ -135,6 +148,9 @@ impl Job {
             Job::OwenSobolSampler { .. } => "owen-sobol sampler".into(),
             Job::ZSobolSampler { scramble, .. } => format!("zsobol sampler ({})", scramble.name()),
             Job::RandomSampler { .. } => "random sampler".into(),
+            Job::LatticeSampler { set, .. } => {
+                format!("{} sampler", ["fibonacci", "korobov", "r2"][*set as usize])
+            }
             Job::Sobol { seed: None, .. } => "sobol".into(),
             Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
             Job::OwenSobol { .. } => "owen-sobol".into(),
@@ -169,6 +185,25 @@ impl Job {
                 seed: seed_words(seed),
                 ..FillJob::default()
             },
+            Job::LatticeSampler { set, spp, seed } => {
+                let s = self.lattice();
+                let (n, generator) = match set {
+                    0 => {
+                        let f = FibonacciLattice::at_least(u64::from(spp.max(2))).expect("valid");
+                        (f.point_count_u64() as u32, f.generator() as u32)
+                    }
+                    1 => (spp, s.korobov_multiplier().expect("korobov") as u32),
+                    _ => (spp, 0),
+                };
+                FillJob {
+                    kind: 3,
+                    spp: n,
+                    seed: seed_words(seed),
+                    set,
+                    generator,
+                    ..FillJob::default()
+                }
+            }
             Job::Sobol { dims, seed } => FillJob {
                 kind: 16,
                 scramble: u32::from(seed.is_some()),
@@ -183,6 +218,17 @@ impl Job {
                 ..FillJob::default()
             },
         }
+    }
+
+    /// The core's lattice sampler of a [`Job::LatticeSampler`].
+    fn lattice(&self) -> LatticeSampler {
+        match *self {
+            Job::LatticeSampler { set: 0, spp, seed } => LatticeSampler::fibonacci(spp, seed),
+            Job::LatticeSampler { set: 1, spp, seed } => LatticeSampler::korobov(spp, seed),
+            Job::LatticeSampler { spp, seed, .. } => LatticeSampler::r2(spp, seed),
+            _ => panic!("not a lattice job"),
+        }
+        .expect("valid sampler")
     }
 
     /// The core's answers to `requests`, in order (the kernel's layout: see fill.wgsl).
@@ -206,9 +252,11 @@ impl Job {
                 let s = ZSobolSampler::new(resolution, spp, scramble, seed).expect("valid sampler");
                 sampler_answers(s, requests)
             }
-            Job::RandomSampler { spp, seed } => {
-                sampler_answers(RandomSampler::new(spp, seed).expect("valid sampler"), requests)
-            }
+            Job::RandomSampler { spp, seed } => sampler_answers(
+                RandomSampler::new(spp, seed).expect("valid sampler"),
+                requests,
+            ),
+            Job::LatticeSampler { .. } => sampler_answers(self.lattice(), requests),
             Job::Sobol { dims, seed } => {
                 let s = match seed {
                     None => Sobol::new(dims),

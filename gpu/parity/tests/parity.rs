@@ -23,6 +23,31 @@ fn jobs() -> Vec<Job> {
             spp: 1,
             seed: u64::MAX - 2,
         },
+        Job::LatticeSampler {
+            set: 0,
+            spp: 16,
+            seed: 1,
+        },
+        Job::LatticeSampler {
+            set: 0,
+            spp: 1 << 30,
+            seed: 2,
+        },
+        Job::LatticeSampler {
+            set: 1,
+            spp: 100,
+            seed: 3,
+        },
+        Job::LatticeSampler {
+            set: 1,
+            spp: 1,
+            seed: 4,
+        },
+        Job::LatticeSampler {
+            set: 2,
+            spp: 64,
+            seed: 5,
+        },
         Job::Sobol {
             dims: 1024,
             seed: None,
@@ -81,19 +106,29 @@ fn every_job_matches_the_core_from_every_source() {
     };
     println!("adapter: {}", gpu.adapter());
     let n = 1 << 17;
+    let pipelines: Vec<_> = Source::ALL
+        .into_iter()
+        .map(|source| gpu.pipeline(source).unwrap())
+        .collect();
     let mut failures = Vec::new();
-    for source in Source::ALL {
-        let pipeline = gpu.pipeline(source).unwrap();
-        for (j, job) in jobs().iter().enumerate() {
-            let requests = random_requests(n, j as u64);
-            let want = job.cpu(&requests);
-            let have = gpu.run(&pipeline, job, &requests);
+    for (j, job) in jobs().iter().enumerate() {
+        let requests = random_requests(n, j as u64);
+        let t = std::time::Instant::now();
+        let want = job.cpu(&requests);
+        let cpu_seconds = t.elapsed().as_secs_f64();
+        for pipeline in &pipelines {
+            let t = std::time::Instant::now();
+            let have = gpu.run(pipeline, job, &requests);
             let values = have.len() * have[0].len();
+            let source = pipeline.source().name();
             match first_mismatch(&requests, &have, &want) {
-                None => println!("{} {}: {values} values equal", source.name(), job.name()),
+                None => println!(
+                    "{source} {}: {values} values equal (gpu {:.2} s, cpu {cpu_seconds:.2} s)",
+                    job.name(),
+                    t.elapsed().as_secs_f64()
+                ),
                 Some((q, g, c)) => failures.push(format!(
-                    "{} {}: request {q:?}: gpu {g:08x?} cpu {c:08x?}",
-                    source.name(),
+                    "{source} {}: request {q:?}: gpu {g:08x?} cpu {c:08x?}",
                     job.name()
                 )),
             }
