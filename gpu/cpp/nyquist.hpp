@@ -1189,6 +1189,11 @@ struct U128 {
     std::uint64_t hi, lo;
 };
 
+#if defined(__SIZEOF_INT128__) && !defined(NYQ_NO_INT128)
+// The compiler's 128-bit integer where it has one (`__extension__`: quiet under -pedantic).
+__extension__ typedef unsigned __int128 NativeU128;
+#endif
+
 NYQ_HD constexpr U128 u128(std::uint64_t x) { return U128{0, x}; }
 
 /// The full 128-bit product of two 64-bit words.
@@ -1196,7 +1201,7 @@ NYQ_HD inline U128 mul_wide(std::uint64_t a, std::uint64_t b) {
 #if defined(__CUDA_ARCH__)
     return U128{__umul64hi(a, b), a * b};
 #elif defined(__SIZEOF_INT128__) && !defined(NYQ_NO_INT128)
-    const unsigned __int128 p = static_cast<unsigned __int128>(a) * b;
+    const NativeU128 p = static_cast<NativeU128>(a) * b;
     return U128{static_cast<std::uint64_t>(p >> 64), static_cast<std::uint64_t>(p)};
 #else
     const std::uint64_t a0 = a & 0xffffffffu, a1 = a >> 32, b0 = b & 0xffffffffu, b1 = b >> 32;
@@ -1242,9 +1247,9 @@ NYQ_HD inline U128 mul_small(U128 a, std::uint64_t b) {
 /// `a / b` and `a % b` (`b != 0`) by binary long division: the rare wide paths only.
 NYQ_HD inline void divmod(U128 a, U128 b, U128& q, U128& r) {
 #if defined(__SIZEOF_INT128__) && !defined(__CUDA_ARCH__) && !defined(NYQ_NO_INT128)
-    const unsigned __int128 x = (static_cast<unsigned __int128>(a.hi) << 64) | a.lo;
-    const unsigned __int128 y = (static_cast<unsigned __int128>(b.hi) << 64) | b.lo;
-    const unsigned __int128 qq = x / y, rr = x % y;
+    const NativeU128 x = (static_cast<NativeU128>(a.hi) << 64) | a.lo;
+    const NativeU128 y = (static_cast<NativeU128>(b.hi) << 64) | b.lo;
+    const NativeU128 qq = x / y, rr = x % y;
     q = U128{static_cast<std::uint64_t>(qq >> 64), static_cast<std::uint64_t>(qq)};
     r = U128{static_cast<std::uint64_t>(rr >> 64), static_cast<std::uint64_t>(rr)};
     return;
