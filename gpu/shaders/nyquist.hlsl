@@ -62,6 +62,32 @@ struct NyqLatticeSampler {
     uint dim;
 };
 
+struct NyqPermutation {
+    uint n;
+    uint mask;
+    uint half_;
+    uint third;
+    uint key;
+    uint key2_;
+    uint offset;
+    int _pad7_0;
+    uint2 table;
+};
+
+struct NyqStratifiedSampler {
+    uint xs;
+    uint ys;
+    uint spp;
+    int _pad3_0;
+    float3 inv;
+    uint jitter;
+    uint2 seed;
+    uint2 pixel_key;
+    uint2 sample_key;
+    uint index;
+    uint dim;
+};
+
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -91,6 +117,12 @@ ret_Constructarray2_uint2_ Constructarray2_uint2_(uint2 arg0, uint2 arg1) {
     return ret;
 }
 
+typedef uint ret_Constructarray32_uint_[32];
+ret_Constructarray32_uint_ Constructarray32_uint_(uint arg0, uint arg1, uint arg2, uint arg3, uint arg4, uint arg5, uint arg6, uint arg7, uint arg8, uint arg9, uint arg10, uint arg11, uint arg12, uint arg13, uint arg14, uint arg15, uint arg16, uint arg17, uint arg18, uint arg19, uint arg20, uint arg21, uint arg22, uint arg23, uint arg24, uint arg25, uint arg26, uint arg27, uint arg28, uint arg29, uint arg30, uint arg31) {
+    uint ret[32] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31 };
+    return ret;
+}
+
 static const uint NYQ_SCRAMBLE_NONE = 0u;
 static const uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 static const uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
@@ -103,10 +135,16 @@ static const uint NYQ_LATTICE_FIBONACCI = 0u;
 static const uint NYQ_LATTICE_KOROBOV = 1u;
 static const uint NYQ_LATTICE_R2_ = 2u;
 static const uint2 NYQ_R2_ALPHA[2] = Constructarray2_uint2_(uint2(44445696u, 3242174889u), uint2(3349051392u, 2447445413u));
+static const uint NYQ_SMALL_PERMUTATIONS[32] = Constructarray32_uint_(16u, 1u, 528u, 288u, 513u, 33u, 258u, 18u, 12816u, 8976u, 12576u, 4896u, 8496u, 4656u, 12801u, 8961u, 12321u, 801u, 8241u, 561u, 12546u, 4866u, 12306u, 786u, 4146u, 306u, 8451u, 4611u, 8211u, 531u, 4131u, 291u);
+static const uint NYQ_JITTERED = 0u;
+static const uint NYQ_CENTERED = 1u;
+static const uint2 NYQ_DIM_STEP = uint2(2135587861u, 2654435769u);
+static const uint2 NYQ_JITTER_STEP = uint2(668265295u, 3266489917u);
 static const uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 static const uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 static const uint NYQ_FILL_RANDOM_SAMPLER = 2u;
 static const uint NYQ_FILL_LATTICE_SAMPLER = 3u;
+static const uint NYQ_FILL_STRATIFIED_SAMPLER = 4u;
 static const uint NYQ_FILL_SOBOL = 16u;
 static const uint NYQ_FILL_OWEN_SOBOL = 17u;
 
@@ -141,14 +179,14 @@ uint2 nyq_add64_(uint2 a_2, uint2 b_2)
     return uint2(low, ((a_2.y + b_2.y) + ((low < a_2.x) ? 1u : 0u)));
 }
 
-uint2 nyq_shr64_(uint2 a_3, uint s_4)
+uint2 nyq_shr64_(uint2 a_3, uint s_5)
 {
-    return uint2(((a_3.x >> s_4) | (a_3.y << (32u - s_4))), (a_3.y >> s_4));
+    return uint2(((a_3.x >> s_5) | (a_3.y << (32u - s_5))), (a_3.y >> s_5));
 }
 
-uint2 nyq_shl64_(uint2 a_4, uint s_5)
+uint2 nyq_shl64_(uint2 a_4, uint s_6)
 {
-    return uint2((a_4.x << s_5), ((a_4.y << s_5) | (a_4.x >> (32u - s_5))));
+    return uint2((a_4.x << s_6), ((a_4.y << s_6) | (a_4.x >> (32u - s_6))));
 }
 
 uint2 nyq_u64_(uint x)
@@ -233,18 +271,18 @@ float nyq_rev_to_f32_(uint w_rev)
     return _e2;
 }
 
-uint nyq_shr(uint x_3, uint s_6)
+uint nyq_shr(uint x_3, uint s_7)
 {
-    return ((s_6 >= 32u) ? 0u : (x_3 >> (s_6 & 31u)));
+    return ((s_7 >= 32u) ? 0u : (x_3 >> (s_7 & 31u)));
 }
 
 float nyq_film_coordinate(uint pixel, float offset)
 {
     float base_1 = float(pixel);
-    float x_11 = (base_1 + offset);
+    float x_16 = (base_1 + offset);
     float edge = (base_1 + 1.0);
-    if ((x_11 < edge)) {
-        return x_11;
+    if ((x_16 < edge)) {
+        return x_16;
     }
     float below = asfloat((asuint(edge) - 1u));
     return ((below >= base_1) ? below : base_1);
@@ -395,14 +433,14 @@ NyqSobol nyq_sobol(uint dims, bool scrambled, uint2 seed_5)
     return nyqsobol;
 }
 
-uint nyq_sobol_sample_u32_(NyqSobol s_7, uint index_2, uint dim_2)
+uint nyq_sobol_sample_u32_(NyqSobol s_8, uint index_2, uint dim_2)
 {
     uint shift = 0u;
 
-    uint d_3 = naga_mod(dim_2, s_7.dims);
-    if ((s_7.scrambled != 0u)) {
+    uint d_3 = naga_mod(dim_2, s_8.dims);
+    if ((s_8.scrambled != 0u)) {
         const uint2 _e11 = nyq_u64_(d_3);
-        const uint2 _e12 = nyq_hash2_(s_7.seed, _e11);
+        const uint2 _e12 = nyq_hash2_(s_8.seed, _e11);
         shift = _e12.y;
     }
     const uint _e14 = nyq_sobol_u32_(index_2, d_3);
@@ -410,9 +448,9 @@ uint nyq_sobol_sample_u32_(NyqSobol s_7, uint index_2, uint dim_2)
     return (_e14 ^ _e15);
 }
 
-float nyq_sobol_sample(NyqSobol s_8, uint index_3, uint dim_3)
+float nyq_sobol_sample(NyqSobol s_9, uint index_3, uint dim_3)
 {
-    const uint _e3 = nyq_sobol_sample_u32_(s_8, index_3, dim_3);
+    const uint _e3 = nyq_sobol_sample_u32_(s_9, index_3, dim_3);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -455,28 +493,28 @@ NyqOwenSobol nyq_owen_sobol(uint dims_1, uint2 seed_6)
     return nyqowensobol;
 }
 
-uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_9, uint index_5, uint dim_6)
+uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_10, uint index_5, uint dim_6)
 {
-    uint d_4 = naga_mod(dim_6, s_9.dims);
-    const uint _e6 = nyq_shuffle_rev(index_5, s_9.shuffle_seed);
-    const uint _e8 = nyq_dim_seed(s_9.key, d_4);
+    uint d_4 = naga_mod(dim_6, s_10.dims);
+    const uint _e6 = nyq_shuffle_rev(index_5, s_10.shuffle_seed);
+    const uint _e8 = nyq_dim_seed(s_10.key, d_4);
     const uint _e9 = nyq_owen_sobol_rev(_e6, d_4, _e8);
     return reversebits(_e9);
 }
 
-float nyq_owen_sobol_sample(NyqOwenSobol s_10, uint index_6, uint dim_7)
+float nyq_owen_sobol_sample(NyqOwenSobol s_11, uint index_6, uint dim_7)
 {
-    const uint _e3 = nyq_owen_sobol_sample_u32_(s_10, index_6, dim_7);
+    const uint _e3 = nyq_owen_sobol_sample_u32_(s_11, index_6, dim_7);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
-float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_11, uint index_7, uint first_dim)
+float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_12, uint index_7, uint first_dim)
 {
     float4 out_1 = (float4)0;
     uint k_4 = 0u;
 
-    const uint _e4 = nyq_shuffle_rev(index_7, s_11.shuffle_seed);
+    const uint _e4 = nyq_shuffle_rev(index_7, s_12.shuffle_seed);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -494,9 +532,9 @@ float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_11, uint index_7, uint first_dim)
         }
         {
             uint _e11 = k_4;
-            uint d_5 = naga_mod((first_dim + _e11), s_11.dims);
+            uint d_5 = naga_mod((first_dim + _e11), s_12.dims);
             uint _e15 = k_4;
-            const uint _e18 = nyq_dim_seed(s_11.key, d_5);
+            const uint _e18 = nyq_dim_seed(s_12.key, d_5);
             const uint _e19 = nyq_owen_sobol_rev(_e4, d_5, _e18);
             const float _e20 = nyq_rev_to_f32_(_e19);
             out_1[min(uint(_e15), 3u)] = _e20;
@@ -522,55 +560,55 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(uint2 seed_7, uint frame)
     return nyqowensobolsampler;
 }
 
-void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_12, uint2 pixel_1, uint sample_index, uint dim_8)
+void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_13, uint2 pixel_1, uint sample_index, uint dim_8)
 {
     const uint2 _e5 = nyq_u64_(pixel_1.x);
     const uint2 _e7 = nyq_u64_(pixel_1.y);
-    uint _e9 = s_12.frame;
+    uint _e9 = s_13.frame;
     const uint2 _e10 = nyq_u64_(_e9);
-    uint2 _e12 = s_12.seed;
+    uint2 _e12 = s_13.seed;
     const uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_12.key = _e13.x;
+    s_13.key = _e13.x;
     const uint _e18 = nyq_mix32_(_e13.y);
     const uint _e19 = nyq_shuffle_rev(sample_index, _e18);
-    s_12.r = _e19;
-    s_12.dim = dim_8;
+    s_13.r = _e19;
+    s_13.dim = dim_8;
     return;
 }
 
-float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_13, uint dim_9)
+float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_14, uint dim_9)
 {
-    uint _e3 = s_13.r;
-    uint _e5 = s_13.key;
+    uint _e3 = s_14.r;
+    uint _e5 = s_14.key;
     const uint _e6 = nyq_dim_seed(_e5, dim_9);
     const uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6);
     const float _e8 = nyq_rev_to_f32_(_e7);
     return _e8;
 }
 
-float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_14)
+float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_15)
 {
-    uint d_6 = s_14.dim;
-    s_14.dim = (d_6 + 1u);
-    const float _e6 = nyq_owen_sobol_value(s_14, d_6);
+    uint d_6 = s_15.dim;
+    s_15.dim = (d_6 + 1u);
+    const float _e6 = nyq_owen_sobol_value(s_15, d_6);
     return _e6;
 }
 
-float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_15)
+float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_16)
 {
-    uint d_7 = s_15.dim;
-    s_15.dim = (d_7 + 2u);
-    const float _e6 = nyq_owen_sobol_value(s_15, d_7);
-    const float _e9 = nyq_owen_sobol_value(s_15, (d_7 + 1u));
+    uint d_7 = s_16.dim;
+    s_16.dim = (d_7 + 2u);
+    const float _e6 = nyq_owen_sobol_value(s_16, d_7);
+    const float _e9 = nyq_owen_sobol_value(s_16, (d_7 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_16)
+float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_17)
 {
-    uint _e3 = s_16.dim;
-    s_16.dim = max(_e3, 2u);
-    const float _e7 = nyq_owen_sobol_value(s_16, 0u);
-    const float _e9 = nyq_owen_sobol_value(s_16, 1u);
+    uint _e3 = s_17.dim;
+    s_17.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_value(s_17, 0u);
+    const float _e9 = nyq_owen_sobol_value(s_17, 1u);
     return float2(_e7, _e9);
 }
 
@@ -582,12 +620,12 @@ NyqCameraSample ConstructNyqCameraSample(float2 arg0, float2 arg1, float arg2) {
     return ret;
 }
 
-NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_17, uint2 pixel_2, uint sample_index_1)
+NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_18, uint2 pixel_2, uint sample_index_1)
 {
     float v_2[5] = (float[5])0;
     uint d_1 = 0u;
 
-    nyq_owen_sobol_start(s_17, pixel_2, sample_index_1, 0u);
+    nyq_owen_sobol_start(s_18, pixel_2, sample_index_1, 0u);
     uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -606,20 +644,20 @@ NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_17, uin
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            const float _e13 = nyq_owen_sobol_value(s_17, _e12);
+            const float _e13 = nyq_owen_sobol_value(s_18, _e12);
             v_2[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_17.dim = 5u;
+    s_18.dim = 5u;
     float _e21 = v_2[0];
     const float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
     float _e25 = v_2[1];
     const float _e26 = nyq_film_coordinate(pixel_2.y, _e25);
-    float2 p = float2(_e22, _e26);
+    float2 p_1 = float2(_e22, _e26);
     float _e29 = v_2[3];
     float _e31 = v_2[4];
     float _e34 = v_2[2];
-    const NyqCameraSample nyqcamerasample = ConstructNyqCameraSample(p, float2(_e29, _e31), _e34);
+    const NyqCameraSample nyqcamerasample = ConstructNyqCameraSample(p_1, float2(_e29, _e31), _e34);
     return nyqcamerasample;
 }
 
@@ -672,9 +710,9 @@ uint nyq_spread(uint x_in_2)
     return ((_e25 | (_e26 << 1u)) & 1431655765u);
 }
 
-uint nyq_zsobol_morton(NyqZSobolSampler s_18, uint2 pixel_3)
+uint nyq_zsobol_morton(NyqZSobolSampler s_19, uint2 pixel_3)
 {
-    uint mask = ((s_18.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_18.log2_res) & 31u)));
+    uint mask = ((s_19.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_19.log2_res) & 31u)));
     const uint _e16 = nyq_spread((pixel_3.x & mask));
     const uint _e19 = nyq_spread((pixel_3.y & mask));
     return (_e16 | (_e19 << 1u));
@@ -722,13 +760,13 @@ uint2 nyq_zsobol_nested_word(uint2 w, uint higher_1, uint shift_2)
     return _e17;
 }
 
-uint nyq_zsobol_index(NyqZSobolSampler s_19, uint morton, uint2 key_3)
+uint nyq_zsobol_index(NyqZSobolSampler s_20, uint morton, uint2 key_3)
 {
     uint index_8 = 0u;
     uint i = (uint)0;
     uint i_1 = (uint)0;
 
-    i = s_19.digits;
+    i = s_20.digits;
     uint2 loop_bound_4 = uint2(4294967295u, 4294967295u);
     bool loop_init_3 = true;
     while(true) {
@@ -740,13 +778,13 @@ uint nyq_zsobol_index(NyqZSobolSampler s_19, uint morton, uint2 key_3)
         }
         loop_init_3 = false;
         uint _e7 = i;
-        if ((_e7 > s_19.sample_digits)) {
+        if ((_e7 > s_20.sample_digits)) {
         } else {
             break;
         }
         {
             uint _e11 = i;
-            uint shift_3 = ((2u * (_e11 - 1u)) + s_19.odd);
+            uint shift_3 = ((2u * (_e11 - 1u)) + s_20.odd);
             uint digit_1 = ((morton >> shift_3) & 3u);
             uint _e20 = index_8;
             const uint _e23 = nyq_shr(morton, (shift_3 + 2u));
@@ -755,10 +793,10 @@ uint nyq_zsobol_index(NyqZSobolSampler s_19, uint morton, uint2 key_3)
             index_8 = (_e20 | _e25);
         }
     }
-    const uint _e31 = nyq_shr(morton, s_19.log2_spp);
+    const uint _e31 = nyq_shr(morton, s_20.log2_spp);
     const uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample_ = (morton & (s_19.spp - 1u));
-    i_1 = s_19.sample_digits;
+    uint sample_ = (morton & (s_20.spp - 1u));
+    i_1 = s_20.sample_digits;
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
     bool loop_init_4 = true;
     while(true) {
@@ -776,7 +814,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_19, uint morton, uint2 key_3)
         }
         {
             uint _e43 = i_1;
-            uint shift_4 = ((2u * (_e43 - 1u)) + s_19.odd);
+            uint shift_4 = ((2u * (_e43 - 1u)) + s_20.odd);
             uint digit_2 = ((sample_ >> shift_4) & 3u);
             const uint _e54 = nyq_shr(sample_, (shift_4 + 2u));
             const uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
@@ -786,7 +824,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_19, uint morton, uint2 key_3)
             index_8 = (_e58 | _e61);
         }
     }
-    if ((s_19.odd == 1u)) {
+    if ((s_20.odd == 1u)) {
         uint _e69 = index_8;
         const uint2 _e75 = nyq_zsobol_nested_word(_e32, (sample_ >> 1u), 0u);
         index_8 = (_e69 | ((sample_ & 1u) ^ (_e75.y >> 31u)));
@@ -795,12 +833,12 @@ uint nyq_zsobol_index(NyqZSobolSampler s_19, uint morton, uint2 key_3)
     return _e81;
 }
 
-uint nyq_zsobol_sequence_index(NyqZSobolSampler s_20, uint2 pixel_4, uint sample_index_2, uint dim_11)
+uint nyq_zsobol_sequence_index(NyqZSobolSampler s_21, uint2 pixel_4, uint sample_index_2, uint dim_11)
 {
-    const uint _e4 = nyq_zsobol_morton(s_20, pixel_4);
-    uint morton_1 = ((_e4 << s_20.log2_spp) | (sample_index_2 & (s_20.spp - 1u)));
-    const uint2 _e13 = nyq_zsobol_dim_key(s_20.seed, dim_11);
-    const uint _e14 = nyq_zsobol_index(s_20, morton_1, _e13);
+    const uint _e4 = nyq_zsobol_morton(s_21, pixel_4);
+    uint morton_1 = ((_e4 << s_21.log2_spp) | (sample_index_2 & (s_21.spp - 1u)));
+    const uint2 _e13 = nyq_zsobol_dim_key(s_21.seed, dim_11);
+    const uint _e14 = nyq_zsobol_index(s_21, morton_1, _e13);
     return _e14;
 }
 
@@ -814,38 +852,38 @@ uint nyq_zsobol_dim0_(uint index_9, uint seed_10, uint how_1)
     return _e8;
 }
 
-float nyq_zsobol_value_1d(inout NyqZSobolSampler s_21, uint dim_12)
+float nyq_zsobol_value_1d(inout NyqZSobolSampler s_22, uint dim_12)
 {
-    uint2 _e3 = s_21.seed;
-    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
-    NyqZSobolSampler _e5 = s_21;
-    uint _e7 = s_21.morton;
-    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_21.scramble;
-    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    const float _e13 = nyq_fraction_to_f32_(_e12);
-    return _e13;
-}
-
-float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_22, uint dim_13)
-{
-    uint y = (uint)0;
-
     uint2 _e3 = s_22.seed;
-    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
     NyqZSobolSampler _e5 = s_22;
     uint _e7 = s_22.morton;
     const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
     uint _e11 = s_22.scramble;
     const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_22.scramble;
+    const float _e13 = nyq_fraction_to_f32_(_e12);
+    return _e13;
+}
+
+float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_23, uint dim_13)
+{
+    uint y = (uint)0;
+
+    uint2 _e3 = s_23.seed;
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
+    NyqZSobolSampler _e5 = s_23;
+    uint _e7 = s_23.morton;
+    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_23.scramble;
+    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    uint _e15 = s_23.scramble;
     if ((_e15 == NYQ_SCRAMBLE_FAST_OWEN)) {
         const uint _e19 = nyq_sobol_u32_(_e8, 1u);
         const uint _e22 = nyq_lk_hash(reversebits(_e19), _e4.y);
         y = reversebits(_e22);
     } else {
         const uint _e25 = nyq_sobol_u32_(_e8, 1u);
-        uint _e28 = s_22.scramble;
+        uint _e28 = s_23.scramble;
         const uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -855,48 +893,48 @@ float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_22, uint dim_13)
     return float2(_e30, _e32);
 }
 
-void nyq_zsobol_start(inout NyqZSobolSampler s_23, uint2 pixel_5, uint sample_index_3, uint dim_14)
+void nyq_zsobol_start(inout NyqZSobolSampler s_24, uint2 pixel_5, uint sample_index_3, uint dim_14)
 {
-    NyqZSobolSampler _e5 = s_23;
+    NyqZSobolSampler _e5 = s_24;
     const uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
-    uint _e8 = s_23.log2_spp;
-    uint _e11 = s_23.spp;
-    s_23.morton = ((_e6 << _e8) | (sample_index_3 & (_e11 - 1u)));
-    s_23.dim = dim_14;
+    uint _e8 = s_24.log2_spp;
+    uint _e11 = s_24.spp;
+    s_24.morton = ((_e6 << _e8) | (sample_index_3 & (_e11 - 1u)));
+    s_24.dim = dim_14;
     return;
 }
 
-float nyq_zsobol_get_1d(inout NyqZSobolSampler s_24)
+float nyq_zsobol_get_1d(inout NyqZSobolSampler s_25)
 {
-    uint d_8 = s_24.dim;
-    s_24.dim = (d_8 + 1u);
-    const float _e6 = nyq_zsobol_value_1d(s_24, d_8);
+    uint d_8 = s_25.dim;
+    s_25.dim = (d_8 + 1u);
+    const float _e6 = nyq_zsobol_value_1d(s_25, d_8);
     return _e6;
 }
 
-float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_25)
+float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_26)
 {
-    uint d_9 = s_25.dim;
-    s_25.dim = (d_9 + 2u);
-    const float2 _e6 = nyq_zsobol_value_2d(s_25, d_9);
+    uint d_9 = s_26.dim;
+    s_26.dim = (d_9 + 2u);
+    const float2 _e6 = nyq_zsobol_value_2d(s_26, d_9);
     return _e6;
 }
 
-float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_26)
+float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_27)
 {
-    uint _e3 = s_26.dim;
-    s_26.dim = max(_e3, 2u);
-    const float2 _e7 = nyq_zsobol_value_2d(s_26, 0u);
+    uint _e3 = s_27.dim;
+    s_27.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_zsobol_value_2d(s_27, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_27, uint2 pixel_6, uint sample_index_4)
+NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_28, uint2 pixel_6, uint sample_index_4)
 {
-    nyq_zsobol_start(s_27, pixel_6, sample_index_4, 0u);
-    const float2 _e5 = nyq_zsobol_value_2d(s_27, 0u);
-    const float _e7 = nyq_zsobol_value_1d(s_27, 2u);
-    const float2 _e9 = nyq_zsobol_value_2d(s_27, 3u);
-    s_27.dim = 5u;
+    nyq_zsobol_start(s_28, pixel_6, sample_index_4, 0u);
+    const float2 _e5 = nyq_zsobol_value_2d(s_28, 0u);
+    const float _e7 = nyq_zsobol_value_1d(s_28, 2u);
+    const float2 _e9 = nyq_zsobol_value_2d(s_28, 3u);
+    s_28.dim = 5u;
     const float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
     const float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
     float2 film = float2(_e14, _e17);
@@ -927,9 +965,9 @@ uint nyq_pcg32_next(inout NyqPcg32_ g)
     g.state = _e7;
     const uint2 _e9 = nyq_shr64_(old, 18u);
     const uint2 _e12 = nyq_shr64_((_e9 ^ old), 27u);
-    uint x_12 = _e12.x;
+    uint x_17 = _e12.x;
     uint rot = (old.y >> 27u);
-    return ((x_12 >> rot) | (x_12 << ((32u - rot) & 31u)));
+    return ((x_17 >> rot) | (x_17 << ((32u - rot) & 31u)));
 }
 
 void nyq_pcg32_advance(inout NyqPcg32_ g_1, uint delta)
@@ -1014,11 +1052,11 @@ NyqRandomSampler nyq_random_sampler(uint2 seed_11)
     return nyqrandomsampler;
 }
 
-NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_28, uint dim_15)
+NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_29, uint dim_15)
 {
     NyqPcg32_ g_2 = (NyqPcg32_)0;
 
-    uint2 _e3 = s_28.base;
+    uint2 _e3 = s_29.base;
     const NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
     uint d_10 = (dim_15 & 65535u);
@@ -1030,80 +1068,80 @@ NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_28, uint dim_15)
     return nyqpcg32_1;
 }
 
-void nyq_random_start(inout NyqRandomSampler s_29, uint2 pixel_7, uint sample_index_5, uint dim_16)
+void nyq_random_start(inout NyqRandomSampler s_30, uint2 pixel_7, uint sample_index_5, uint dim_16)
 {
-    uint2 _e5 = s_29.seed;
+    uint2 _e5 = s_30.seed;
     const uint2 _e7 = nyq_u64_(1918987876u);
     const uint2 _e8 = nyq_hash3_(pixel_7, _e5, _e7);
     uint2 golden_2 = uint2(2135587861u, 2654435769u);
     const uint2 _e13 = nyq_u64_(sample_index_5);
     const uint2 _e14 = nyq_mul64_(_e13, golden_2);
     const uint2 _e16 = nyq_mix64_((_e8 ^ _e14));
-    s_29.base = _e16;
-    s_29.dim = dim_16;
-    const NyqPcg32_ _e19 = nyq_random_at(s_29, dim_16);
-    s_29.rng = _e19;
+    s_30.base = _e16;
+    s_30.dim = dim_16;
+    const NyqPcg32_ _e19 = nyq_random_at(s_30, dim_16);
+    s_30.rng = _e19;
     return;
 }
 
-float nyq_random_get_1d(inout NyqRandomSampler s_30)
+float nyq_random_get_1d(inout NyqRandomSampler s_31)
 {
     NyqPcg32_ g_3 = (NyqPcg32_)0;
 
-    NyqPcg32_ _e2 = s_30.rng;
+    NyqPcg32_ _e2 = s_31.rng;
     g_3 = _e2;
     const uint _e4 = nyq_pcg32_next(g_3);
     const float _e5 = nyq_unit_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_30.rng = _e7;
-    uint _e9 = s_30.dim;
-    s_30.dim = (_e9 + 1u);
-    uint _e13 = s_30.dim;
+    s_31.rng = _e7;
+    uint _e9 = s_31.dim;
+    s_31.dim = (_e9 + 1u);
+    uint _e13 = s_31.dim;
     if (((_e13 & 65535u) == 0u)) {
-        const NyqPcg32_ _e20 = nyq_random_at(s_30, 0u);
-        s_30.rng = _e20;
+        const NyqPcg32_ _e20 = nyq_random_at(s_31, 0u);
+        s_31.rng = _e20;
     }
     return _e5;
 }
 
-float2 nyq_random_get_2d(inout NyqRandomSampler s_31)
+float2 nyq_random_get_2d(inout NyqRandomSampler s_32)
 {
-    const float _e1 = nyq_random_get_1d(s_31);
-    const float _e2 = nyq_random_get_1d(s_31);
+    const float _e1 = nyq_random_get_1d(s_32);
+    const float _e2 = nyq_random_get_1d(s_32);
     return float2(_e1, _e2);
 }
 
-float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_32)
+float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_33)
 {
     NyqPcg32_ g_4 = (NyqPcg32_)0;
 
-    uint _e2 = s_32.dim;
+    uint _e2 = s_33.dim;
     if ((_e2 == 0u)) {
-        const float2 _e5 = nyq_random_get_2d(s_32);
+        const float2 _e5 = nyq_random_get_2d(s_33);
         return _e5;
     }
-    const NyqPcg32_ _e7 = nyq_random_at(s_32, 0u);
+    const NyqPcg32_ _e7 = nyq_random_at(s_33, 0u);
     g_4 = _e7;
     const uint _e9 = nyq_pcg32_next(g_4);
     const float _e10 = nyq_unit_f32_(_e9);
     const uint _e11 = nyq_pcg32_next(g_4);
     const float _e12 = nyq_unit_f32_(_e11);
-    float2 p_1 = float2(_e10, _e12);
-    uint _e15 = s_32.dim;
+    float2 p_2 = float2(_e10, _e12);
+    uint _e15 = s_33.dim;
     if ((_e15 < 2u)) {
-        s_32.dim = 2u;
+        s_33.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_32.rng = _e21;
+        s_33.rng = _e21;
     }
-    return p_1;
+    return p_2;
 }
 
-NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_33, uint2 pixel_8, uint sample_index_6)
+NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_34, uint2 pixel_8, uint sample_index_6)
 {
-    nyq_random_start(s_33, pixel_8, sample_index_6, 0u);
-    const float2 _e4 = nyq_random_get_pixel_2d(s_33);
-    const float _e5 = nyq_random_get_1d(s_33);
-    const float2 _e6 = nyq_random_get_2d(s_33);
+    nyq_random_start(s_34, pixel_8, sample_index_6, 0u);
+    const float2 _e4 = nyq_random_get_pixel_2d(s_34);
+    const float _e5 = nyq_random_get_1d(s_34);
+    const float2 _e6 = nyq_random_get_2d(s_34);
     const float _e9 = nyq_film_coordinate(pixel_8.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_8.y, _e4.y);
     float2 film_1 = float2(_e9, _e12);
@@ -1231,41 +1269,41 @@ NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_1, uint g_5, uint2 se
     return nyqlatticesampler;
 }
 
-float nyq_lattice_value(inout NyqLatticeSampler s_34, uint dim_17)
+float nyq_lattice_value(inout NyqLatticeSampler s_35, uint dim_17)
 {
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_2 = s_34.n;
-    uint _e5 = s_34.index;
-    uint k_5 = naga_mod(_e5, n_2);
+    uint n_3 = s_35.n;
+    uint _e5 = s_35.index;
+    uint k_7 = naga_mod(_e5, n_3);
     uint component = naga_mod(dim_17, 2u);
-    uint _e11 = s_34.lattice;
+    uint _e11 = s_35.lattice;
     switch(_e11) {
         case 2u: {
-            const uint2 _e15 = nyq_u64_(k_5);
+            const uint2 _e15 = nyq_u64_(k_7);
             const uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA[min(uint(component), 1u)]);
             const uint2 _e19 = nyq_add64_(uint2(0u, 2147483648u), _e18);
             base = _e19;
             break;
         }
         default: {
-            uint _e21 = s_34.g;
+            uint _e21 = s_35.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = naga_mod(1u, n_2);
+                g_6 = naga_mod(1u, n_3);
             }
             uint _e27 = g_6;
-            const uint2 _e28 = nyq_mul_wide(k_5, _e27);
-            const uint _e29 = nyq_mod64_(_e28, n_2);
-            const uint2 _e30 = nyq_fixed_ratio(_e29, n_2);
+            const uint2 _e28 = nyq_mul_wide(k_7, _e27);
+            const uint _e29 = nyq_mod64_(_e28, n_3);
+            const uint2 _e30 = nyq_fixed_ratio(_e29, n_3);
             base = _e30;
             break;
         }
     }
-    uint2 _e32 = s_34.pixel;
+    uint2 _e32 = s_35.pixel;
     const uint2 _e35 = nyq_u64_(naga_div(dim_17, 2u));
-    uint2 _e37 = s_34.seed;
+    uint2 _e37 = s_35.seed;
     const uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     uint2 _e39 = base;
     const uint2 _e40 = nyq_u64_(component);
@@ -1275,46 +1313,46 @@ float nyq_lattice_value(inout NyqLatticeSampler s_34, uint dim_17)
     return _e43;
 }
 
-void nyq_lattice_start(inout NyqLatticeSampler s_35, uint2 pixel_9, uint sample_index_7, uint dim_18)
+void nyq_lattice_start(inout NyqLatticeSampler s_36, uint2 pixel_9, uint sample_index_7, uint dim_18)
 {
-    s_35.pixel = pixel_9;
-    s_35.index = sample_index_7;
-    s_35.dim = dim_18;
+    s_36.pixel = pixel_9;
+    s_36.index = sample_index_7;
+    s_36.dim = dim_18;
     return;
 }
 
-float nyq_lattice_get_1d(inout NyqLatticeSampler s_36)
+float nyq_lattice_get_1d(inout NyqLatticeSampler s_37)
 {
-    uint d_11 = s_36.dim;
-    s_36.dim = (d_11 + 1u);
-    const float _e6 = nyq_lattice_value(s_36, d_11);
+    uint d_11 = s_37.dim;
+    s_37.dim = (d_11 + 1u);
+    const float _e6 = nyq_lattice_value(s_37, d_11);
     return _e6;
 }
 
-float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_37)
+float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_38)
 {
-    uint d_12 = s_37.dim;
-    s_37.dim = (d_12 + 2u);
-    const float _e6 = nyq_lattice_value(s_37, d_12);
-    const float _e9 = nyq_lattice_value(s_37, (d_12 + 1u));
+    uint d_12 = s_38.dim;
+    s_38.dim = (d_12 + 2u);
+    const float _e6 = nyq_lattice_value(s_38, d_12);
+    const float _e9 = nyq_lattice_value(s_38, (d_12 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_38)
+float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_39)
 {
-    uint _e3 = s_38.dim;
-    s_38.dim = max(_e3, 2u);
-    const float _e7 = nyq_lattice_value(s_38, 0u);
-    const float _e9 = nyq_lattice_value(s_38, 1u);
+    uint _e3 = s_39.dim;
+    s_39.dim = max(_e3, 2u);
+    const float _e7 = nyq_lattice_value(s_39, 0u);
+    const float _e9 = nyq_lattice_value(s_39, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_39, uint2 pixel_10, uint sample_index_8)
+NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_40, uint2 pixel_10, uint sample_index_8)
 {
-    nyq_lattice_start(s_39, pixel_10, sample_index_8, 0u);
-    const float2 _e4 = nyq_lattice_get_pixel_2d(s_39);
-    const float _e5 = nyq_lattice_get_1d(s_39);
-    const float2 _e6 = nyq_lattice_get_2d(s_39);
+    nyq_lattice_start(s_40, pixel_10, sample_index_8, 0u);
+    const float2 _e4 = nyq_lattice_get_pixel_2d(s_40);
+    const float _e5 = nyq_lattice_get_1d(s_40);
+    const float2 _e6 = nyq_lattice_get_2d(s_40);
     const float _e9 = nyq_film_coordinate(pixel_10.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_10.y, _e4.y);
     float2 film_2 = float2(_e9, _e12);
@@ -1322,21 +1360,481 @@ NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_39, uint2 pi
     return nyqcamerasample_3;
 }
 
-uint4 nyq_fill_request(uint i_4)
+float nyq_u32_to_f32_(uint x_11)
+{
+    uint m = (uint)0;
+    bool local_2 = (bool)0;
+    bool local_3 = (bool)0;
+
+    if ((x_11 < 16777216u)) {
+        return float(x_11);
+    }
+    uint top = (31u - (31u - firstbithigh(x_11)));
+    uint drop = (top - 23u);
+    m = (x_11 >> drop);
+    uint rest = (x_11 & ((1u << drop) - 1u));
+    uint half_ = (1u << (drop - 1u));
+    if (!((rest > half_))) {
+        if ((rest == half_)) {
+            uint _e27 = m;
+            local_3 = ((_e27 & 1u) == 1u);
+        } else {
+            local_3 = false;
+        }
+        bool _e33 = local_3;
+        local_2 = _e33;
+    } else {
+        local_2 = true;
+    }
+    bool _e35 = local_2;
+    if (_e35) {
+        uint _e36 = m;
+        m = (_e36 + 1u);
+    }
+    uint _e43 = m;
+    return asfloat(((((top + 127u) << 23u) + _e43) - 8388608u));
+}
+
+float nyq_recip_f32_(float x_12)
+{
+    uint r_4 = 16777216u;
+    uint q_1 = 0u;
+    uint i_4 = 0u;
+    bool local_4 = (bool)0;
+    bool local_5 = (bool)0;
+
+    uint bits_2 = asuint(x_12);
+    uint m_1 = ((bits_2 & 8388607u) | 8388608u);
+    int e = asint(asuint(int((bits_2 >> 23u))) - asuint(int(127)));
+    if ((m_1 == 8388608u)) {
+        return asfloat((uint(asint(asuint(int(127)) - asuint(e))) << 23u));
+    }
+    uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
+        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e42 = i_4;
+            i_4 = (_e42 + 1u);
+        }
+        loop_init_7 = false;
+        uint _e25 = i_4;
+        if ((_e25 < 25u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e28 = q_1;
+            q_1 = (_e28 << 1u);
+            uint _e31 = r_4;
+            if ((_e31 >= m_1)) {
+                uint _e33 = r_4;
+                r_4 = (_e33 - m_1);
+                uint _e35 = q_1;
+                q_1 = (_e35 | 1u);
+            }
+            uint _e38 = r_4;
+            r_4 = (_e38 << 1u);
+        }
+    }
+    uint _e44 = q_1;
+    uint round_ = (_e44 & 1u);
+    uint _e47 = q_1;
+    q_1 = (_e47 >> 1u);
+    if ((round_ == 1u)) {
+        uint _e54 = r_4;
+        if (!((_e54 != 0u))) {
+            uint _e60 = q_1;
+            local_5 = ((_e60 & 1u) == 1u);
+        } else {
+            local_5 = true;
+        }
+        bool _e66 = local_5;
+        local_4 = _e66;
+    } else {
+        local_4 = false;
+    }
+    bool _e68 = local_4;
+    if (_e68) {
+        uint _e69 = q_1;
+        q_1 = (_e69 + 1u);
+    }
+    uint _e79 = q_1;
+    return asfloat((((uint(asint(asuint(asint(asuint(int(127)) - asuint(e))) - asuint(int(1)))) << 23u) + _e79) - 8388608u));
+}
+
+uint3 nyq_mul64x32_(uint2 r_5, uint k_5)
+{
+    const uint2 _e3 = nyq_mul_wide(r_5.x, k_5);
+    const uint2 _e5 = nyq_mul_wide(r_5.y, k_5);
+    const uint2 _e9 = nyq_add64_(_e5, uint2(_e3.y, 0u));
+    return uint3(_e3.x, _e9.x, _e9.y);
+}
+
+uint nyq_nibble(uint2 t, uint s_41)
+{
+    return ((((s_41 >= 32u) ? t.y : t.x) >> (s_41 & 31u)) & 15u);
+}
+
+uint2 nyq_shl64_any(uint2 x_13, uint s_42)
+{
+    if ((s_42 == 0u)) {
+        return x_13;
+    }
+    if ((s_42 >= 32u)) {
+        return uint2(0u, (x_13.x << (s_42 - 32u)));
+    }
+    const uint2 _e12 = nyq_shl64_(x_13, s_42);
+    return _e12;
+}
+
+typedef uint ret_Constructarray5_uint_[5];
+ret_Constructarray5_uint_ Constructarray5_uint_(uint arg0, uint arg1, uint arg2, uint arg3, uint arg4) {
+    uint ret[5] = { arg0, arg1, arg2, arg3, arg4 };
+    return ret;
+}
+
+uint2 nyq_packed_table(uint n_2, uint2 r_in)
+{
+    uint2 t_1 = uint2(1985229328u, 4275878552u);
+    uint2 r_6 = (uint2)0;
+    uint k_6 = (uint)0;
+
+    if ((n_2 <= 4u)) {
+        if ((n_2 < 2u)) {
+            return uint2(0u, 0u);
+        }
+        uint factorial[5] = Constructarray5_uint_(1u, 1u, 2u, 6u, 24u);
+        uint start[5] = Constructarray5_uint_(0u, 0u, 0u, 2u, 8u);
+        const uint3 _e22 = nyq_mul64x32_(r_in, factorial[min(uint(n_2), 4u)]);
+        uint rank = _e22.z;
+        return uint2(NYQ_SMALL_PERMUTATIONS[min(uint(((start[min(uint(n_2), 4u)] + rank) & 31u)), 31u)], 0u);
+    }
+    if ((n_2 < 16u)) {
+        uint keep = (4u * n_2);
+        if ((keep < 32u)) {
+            uint _e43 = t_1.x;
+            t_1 = uint2((_e43 & ((1u << keep) - 1u)), 0u);
+        } else {
+            uint _e52 = t_1.y;
+            t_1.y = (_e52 & ((1u << (keep - 32u)) - 1u));
+        }
+    }
+    r_6 = r_in;
+    k_6 = n_2;
+    uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
+    bool loop_init_8 = true;
+    while(true) {
+        if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        if (!loop_init_8) {
+            uint _e94 = k_6;
+            k_6 = (_e94 - 1u);
+        }
+        loop_init_8 = false;
+        uint _e62 = k_6;
+        if ((_e62 > 1u)) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e65 = r_6;
+            uint _e66 = k_6;
+            const uint3 _e67 = nyq_mul64x32_(_e65, _e66);
+            uint j_1 = _e67.z;
+            r_6 = _e67.xy;
+            uint _e71 = k_6;
+            uint hi = (4u * (_e71 - 1u));
+            uint lo = (4u * j_1);
+            uint2 _e77 = t_1;
+            const uint _e78 = nyq_nibble(_e77, hi);
+            uint2 _e79 = t_1;
+            const uint _e80 = nyq_nibble(_e79, lo);
+            uint x_18 = ((_e78 ^ _e80) & 15u);
+            uint2 _e84 = t_1;
+            const uint2 _e87 = nyq_shl64_any(uint2(x_18, 0u), hi);
+            const uint2 _e90 = nyq_shl64_any(uint2(x_18, 0u), lo);
+            t_1 = (_e84 ^ (_e87 | _e90));
+        }
+    }
+    uint2 _e96 = t_1;
+    return _e96;
+}
+
+NyqPermutation ConstructNyqPermutation(uint arg0, uint arg1, uint arg2, uint arg3, uint arg4, uint arg5, uint arg6, uint2 arg7) {
+    NyqPermutation ret = (NyqPermutation)0;
+    ret.n = arg0;
+    ret.mask = arg1;
+    ret.half_ = arg2;
+    ret.third = arg3;
+    ret.key = arg4;
+    ret.key2_ = arg5;
+    ret.offset = arg6;
+    ret.table = arg7;
+    return ret;
+}
+
+NyqPermutation nyq_permutation(uint n_in, uint seed_13)
+{
+    uint n_4 = max(n_in, 1u);
+    if ((n_4 <= 16u)) {
+        const uint2 _e10 = nyq_mix64_(uint2((seed_13 ^ 2242054355u), 608135816u));
+        const uint2 _e11 = nyq_packed_table(n_4, _e10);
+        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_4, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        return nyqpermutation;
+    }
+    uint mask_1 = (4294967295u >> (31u - firstbithigh((n_4 - 1u))));
+    uint bits_3 = (32u - (31u - firstbithigh(mask_1)));
+    const uint _e29 = nyq_mix32_((seed_13 ^ 1540483477u));
+    const uint _e32 = nyq_mix32_((_e29 + 1759714724u));
+    const uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
+    const uint2 _e36 = nyq_mul_wide(_e35, n_4);
+    uint offset_1 = _e36.y;
+    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_4, mask_1, max(naga_div((bits_3 + 1u), 2u), 1u), max(naga_div(bits_3, 3u), 1u), _e29, _e32, offset_1, uint2(0u, 0u));
+    return nyqpermutation_1;
+}
+
+uint nyq_permutation_apply(NyqPermutation p, uint i_5)
+{
+    uint x_14 = (uint)0;
+    bool local_6 = (bool)0;
+
+    uint n_5 = p.n;
+    if ((n_5 <= 16u)) {
+        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_5, n_5) & 15u)));
+        return _e11;
+    }
+    x_14 = naga_mod(i_5, n_5);
+    uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        uint _e14 = x_14;
+        x_14 = (_e14 ^ (p.key & p.mask));
+        uint _e19 = x_14;
+        x_14 = ((_e19 * 3782248765u) & p.mask);
+        uint _e24 = x_14;
+        uint _e25 = x_14;
+        x_14 = (_e24 ^ (_e25 >> p.half_));
+        uint _e29 = x_14;
+        x_14 = ((_e29 + p.key2_) & p.mask);
+        uint _e34 = x_14;
+        x_14 = ((_e34 * (p.key | 1u)) & p.mask);
+        uint _e41 = x_14;
+        uint _e42 = x_14;
+        x_14 = (_e41 ^ (_e42 >> p.half_));
+        uint _e46 = x_14;
+        x_14 = (_e46 ^ ((p.key2_ >> 7u) & p.mask));
+        uint _e53 = x_14;
+        x_14 = ((_e53 * 153742143u) & p.mask);
+        uint _e58 = x_14;
+        uint _e59 = x_14;
+        x_14 = (_e58 ^ (_e59 >> p.half_));
+        uint _e63 = x_14;
+        x_14 = ((_e63 * (1765145193u ^ (p.key2_ & 4294967294u))) & p.mask);
+        uint _e72 = x_14;
+        uint _e73 = x_14;
+        x_14 = (_e72 ^ (_e73 >> p.third));
+        uint _e77 = x_14;
+        if ((_e77 < n_5)) {
+            break;
+        }
+    }
+    uint _e79 = x_14;
+    uint q_2 = (_e79 + p.offset);
+    uint _e83 = x_14;
+    if (!((q_2 < _e83))) {
+        local_6 = (q_2 >= n_5);
+    } else {
+        local_6 = true;
+    }
+    bool _e90 = local_6;
+    return (_e90 ? (q_2 - n_5) : q_2);
+}
+
+NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint arg2, float3 arg3, uint arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint arg8, uint arg9) {
+    NyqStratifiedSampler ret = (NyqStratifiedSampler)0;
+    ret.xs = arg0;
+    ret.ys = arg1;
+    ret.spp = arg2;
+    ret.inv = arg3;
+    ret.jitter = arg4;
+    ret.seed = arg5;
+    ret.pixel_key = arg6;
+    ret.sample_key = arg7;
+    ret.index = arg8;
+    ret.dim = arg9;
+    return ret;
+}
+
+NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uint2 seed_14)
+{
+    uint spp_1 = (xs * ys);
+    const float _e5 = nyq_u32_to_f32_(xs);
+    const float _e6 = nyq_recip_f32_(_e5);
+    const float _e7 = nyq_u32_to_f32_(ys);
+    const float _e8 = nyq_recip_f32_(_e7);
+    const float _e9 = nyq_u32_to_f32_(spp_1);
+    const float _e10 = nyq_recip_f32_(_e9);
+    float3 inv = float3(_e6, _e8, _e10);
+    uint2 zero = uint2(0u, 0u);
+    const NyqStratifiedSampler nyqstratifiedsampler = ConstructNyqStratifiedSampler(xs, ys, spp_1, inv, jitter, seed_14, zero, zero, 0u, 0u);
+    return nyqstratifiedsampler;
+}
+
+uint nyq_stratified_dim_key(uint2 pixel_key, uint dim_19)
+{
+    const uint2 _e2 = nyq_u64_(dim_19);
+    const uint2 _e4 = nyq_mul64_(_e2, NYQ_DIM_STEP);
+    const uint2 _e6 = nyq_mix64_((pixel_key ^ _e4));
+    return (_e6.x ^ _e6.y);
+}
+
+uint nyq_stratified_stratum(inout NyqStratifiedSampler s_43, uint dim_20)
+{
+    if ((dim_20 == 0u)) {
+        uint _e5 = s_43.index;
+        uint _e7 = s_43.spp;
+        return naga_mod(_e5, _e7);
+    }
+    uint _e10 = s_43.spp;
+    uint2 _e12 = s_43.pixel_key;
+    const uint _e13 = nyq_stratified_dim_key(_e12, dim_20);
+    const NyqPermutation _e14 = nyq_permutation(_e10, _e13);
+    uint _e16 = s_43.index;
+    const uint _e17 = nyq_permutation_apply(_e14, _e16);
+    return _e17;
+}
+
+float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_44, uint dim_21)
+{
+    bool local_7 = (bool)0;
+
+    uint _e3 = s_44.jitter;
+    if ((_e3 != NYQ_JITTERED)) {
+        return float2(0.5, 0.5);
+    }
+    if (!((dim_21 == 2u))) {
+        local_7 = (dim_21 == 3u);
+    } else {
+        local_7 = true;
+    }
+    bool _e17 = local_7;
+    if (_e17) {
+        uint2 _e19 = s_44.sample_key;
+        const uint2 _e24 = nyq_mul64_(uint2(2u, 0u), NYQ_JITTER_STEP);
+        const uint2 _e26 = nyq_mix64_((_e19 ^ _e24));
+        if ((dim_21 == 2u)) {
+            return float2((float(((_e26.y >> 11u) & 2097151u)) * 4.7683716e-7), 0.5);
+        }
+        const uint2 _e40 = nyq_shr64_(_e26, 22u);
+        return float2((float((_e40.x & 2097151u)) * 4.7683716e-7), (float(((_e26.x >> 1u) & 2097151u)) * 4.7683716e-7));
+    }
+    uint2 _e55 = s_44.sample_key;
+    const uint2 _e56 = nyq_u64_(dim_21);
+    const uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
+    const uint2 _e60 = nyq_mix64_((_e55 ^ _e58));
+    const float _e62 = nyq_unit_f32_(_e60.y);
+    const float _e64 = nyq_unit_f32_(_e60.x);
+    return float2(_e62, _e64);
+}
+
+float nyq_below_one(float x_15)
+{
+    return min(x_15, asfloat(1065353215u));
+}
+
+float2 nyq_stratified_cell(inout NyqStratifiedSampler s_45, uint st, float2 j)
+{
+    uint _e4 = s_45.xs;
+    uint cx = naga_mod(st, _e4);
+    uint _e7 = s_45.xs;
+    uint cy = naga_div(st, _e7);
+    const float _e9 = nyq_u32_to_f32_(cx);
+    float _e14 = s_45.inv.x;
+    const float _e16 = nyq_below_one(((_e9 + j.x) * _e14));
+    const float _e17 = nyq_u32_to_f32_(cy);
+    float _e22 = s_45.inv.y;
+    const float _e24 = nyq_below_one(((_e17 + j.y) * _e22));
+    return float2(_e16, _e24);
+}
+
+void nyq_stratified_start(inout NyqStratifiedSampler s_46, uint2 pixel_11, uint sample_index_9, uint dim_22)
+{
+    uint2 _e6 = s_46.seed;
+    const uint2 _e8 = nyq_u64_(1937011297u);
+    const uint2 _e9 = nyq_hash3_(pixel_11, _e6, _e8);
+    s_46.pixel_key = _e9;
+    s_46.index = sample_index_9;
+    uint2 _e13 = s_46.pixel_key;
+    const uint2 _e14 = nyq_u64_(sample_index_9);
+    const uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
+    s_46.sample_key = (_e13 ^ _e16);
+    s_46.dim = dim_22;
+    return;
+}
+
+float nyq_stratified_get_1d(inout NyqStratifiedSampler s_47)
+{
+    uint d_13 = s_47.dim;
+    s_47.dim = (d_13 + 1u);
+    const uint _e6 = nyq_stratified_stratum(s_47, d_13);
+    const float _e7 = nyq_u32_to_f32_(_e6);
+    const float2 _e8 = nyq_stratified_jitters(s_47, d_13);
+    float _e13 = s_47.inv.z;
+    const float _e15 = nyq_below_one(((_e7 + _e8.x) * _e13));
+    return _e15;
+}
+
+float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_48)
+{
+    uint d_14 = s_48.dim;
+    s_48.dim = (d_14 + 2u);
+    const uint _e6 = nyq_stratified_stratum(s_48, d_14);
+    const float2 _e7 = nyq_stratified_jitters(s_48, d_14);
+    const float2 _e8 = nyq_stratified_cell(s_48, _e6, _e7);
+    return _e8;
+}
+
+float2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_49)
+{
+    uint _e3 = s_49.dim;
+    s_49.dim = max(_e3, 2u);
+    const uint _e7 = nyq_stratified_stratum(s_49, 0u);
+    const float2 _e9 = nyq_stratified_jitters(s_49, 0u);
+    const float2 _e10 = nyq_stratified_cell(s_49, _e7, _e9);
+    return _e10;
+}
+
+NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_50, uint2 pixel_12, uint sample_index_10)
+{
+    nyq_stratified_start(s_50, pixel_12, sample_index_10, 0u);
+    const float2 _e4 = nyq_stratified_get_pixel_2d(s_50);
+    const float _e5 = nyq_stratified_get_1d(s_50);
+    const float2 _e6 = nyq_stratified_get_2d(s_50);
+    const float _e9 = nyq_film_coordinate(pixel_12.x, _e4.x);
+    const float _e12 = nyq_film_coordinate(pixel_12.y, _e4.y);
+    float2 film_3 = float2(_e9, _e12);
+    const NyqCameraSample nyqcamerasample_4 = ConstructNyqCameraSample(film_3, _e6, _e5);
+    return nyqcamerasample_4;
+}
+
+uint4 nyq_fill_request(uint i_6)
 {
     uint _e3 = nyq_job.implicit;
     if ((_e3 == 0u)) {
-        uint4 _e8 = asuint(nyq_requests.Load4(i_4*16));
+        uint4 _e8 = asuint(nyq_requests.Load4(i_6*16));
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_3 = (_e11 + i_4);
+    uint n_6 = (_e11 + i_6);
     uint _e15 = nyq_job.spp;
-    uint pixel_11 = naga_div(n_3, _e15);
+    uint pixel_13 = naga_div(n_6, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return uint4(naga_mod(pixel_11, _e20), naga_div(pixel_11, _e25), naga_mod(n_3, _e29), 5u);
+    return uint4(naga_mod(pixel_13, _e20), naga_div(pixel_13, _e25), naga_mod(n_6, _e29), 5u);
 }
 
 void nyq_fill_camera(uint out_2, NyqCameraSample c_2)
@@ -1364,18 +1862,19 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
     NyqZSobolSampler s_1 = (NyqZSobolSampler)0;
     NyqRandomSampler s_2 = (NyqRandomSampler)0;
     NyqLatticeSampler s_3 = (NyqLatticeSampler)0;
+    NyqStratifiedSampler s_4 = (NyqStratifiedSampler)0;
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
 
-    uint i_5 = id.x;
+    uint i_7 = id.x;
     uint _e4 = nyq_job.count;
-    if ((i_5 >= _e4)) {
+    if ((i_7 >= _e4)) {
         return;
     }
-    const uint4 _e6 = nyq_fill_request(i_5);
-    uint2 pixel_12 = _e6.xy;
-    uint out_4 = (8u * i_5);
+    const uint4 _e6 = nyq_fill_request(i_7);
+    uint2 pixel_14 = _e6.xy;
+    uint out_4 = (8u * i_7);
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -1383,9 +1882,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e18 = nyq_job.frame;
             const NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_12, _e6.z);
+            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_14, _e6.z);
             nyq_fill_camera(out_4, _e22);
-            nyq_owen_sobol_start(s, pixel_12, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_14, _e6.z, _e6.w);
             const float _e25 = nyq_owen_sobol_get_1d(s);
             const float2 _e26 = nyq_owen_sobol_get_2d(s);
             nyq_fill_values(out_4, _e25, _e26);
@@ -1398,9 +1897,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e38 = nyq_job.seed;
             const NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_12, _e6.z);
+            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_14, _e6.z);
             nyq_fill_camera(out_4, _e42);
-            nyq_zsobol_start(s_1, pixel_12, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_14, _e6.z, _e6.w);
             const float _e45 = nyq_zsobol_get_1d(s_1);
             const float2 _e46 = nyq_zsobol_get_2d(s_1);
             nyq_fill_values(out_4, _e45, _e46);
@@ -1410,9 +1909,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e49 = nyq_job.seed;
             const NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_12, _e6.z);
+            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_14, _e6.z);
             nyq_fill_camera(out_4, _e53);
-            nyq_random_start(s_2, pixel_12, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_14, _e6.z, _e6.w);
             const float _e56 = nyq_random_get_1d(s_2);
             const float2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_4, _e56, _e57);
@@ -1425,98 +1924,113 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e69 = nyq_job.seed;
             const NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_12, _e6.z);
+            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_14, _e6.z);
             nyq_fill_camera(out_4, _e73);
-            nyq_lattice_start(s_3, pixel_12, _e6.z, _e6.w);
+            nyq_lattice_start(s_3, pixel_14, _e6.z, _e6.w);
             const float _e76 = nyq_lattice_get_1d(s_3);
             const float2 _e77 = nyq_lattice_get_2d(s_3);
             nyq_fill_values(out_4, _e76, _e77);
             return;
         }
+        case 4u: {
+            uint _e81 = nyq_job.resolution.x;
+            uint _e85 = nyq_job.resolution.y;
+            uint _e88 = nyq_job.scramble;
+            uint2 _e91 = nyq_job.seed;
+            const NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
+            s_4 = _e92;
+            const NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_14, _e6.z);
+            nyq_fill_camera(out_4, _e95);
+            nyq_stratified_start(s_4, pixel_14, _e6.z, _e6.w);
+            const float _e98 = nyq_stratified_get_1d(s_4);
+            const float2 _e99 = nyq_stratified_get_2d(s_4);
+            nyq_fill_values(out_4, _e98, _e99);
+            return;
+        }
         case 16u: {
-            uint _e80 = nyq_job.dims;
-            uint _e83 = nyq_job.scramble;
-            uint2 _e88 = nyq_job.seed;
-            const NyqSobol _e89 = nyq_sobol(_e80, (_e83 != 0u), _e88);
-            uint2 loop_bound_9 = uint2(4294967295u, 4294967295u);
-            bool loop_init_7 = true;
+            uint _e102 = nyq_job.dims;
+            uint _e105 = nyq_job.scramble;
+            uint2 _e110 = nyq_job.seed;
+            const NyqSobol _e111 = nyq_sobol(_e102, (_e105 != 0u), _e110);
+            uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
+            bool loop_init_9 = true;
             while(true) {
-                if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
-                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-                if (!loop_init_7) {
-                    uint _e117 = k;
-                    k = (_e117 + 1u);
+                if (all(loop_bound_12 == uint2(0u, 0u))) { break; }
+                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                if (!loop_init_9) {
+                    uint _e139 = k;
+                    k = (_e139 + 1u);
                 }
-                loop_init_7 = false;
-                uint _e92 = k;
-                if ((_e92 < 4u)) {
+                loop_init_9 = false;
+                uint _e114 = k;
+                if ((_e114 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e96 = k;
-                    uint _e101 = k;
-                    const uint _e103 = nyq_sobol_sample_u32_(_e89, _e6.z, (_e6.w + _e101));
-                    nyq_values.Store((out_4 + _e96)*4, asuint(_e103));
-                    uint _e107 = k;
-                    uint _e112 = k;
-                    const float _e114 = nyq_sobol_sample(_e89, _e6.z, (_e6.w + _e112));
-                    nyq_values.Store(((out_4 + 4u) + _e107)*4, asuint(asuint(_e114)));
+                    uint _e118 = k;
+                    uint _e123 = k;
+                    const uint _e125 = nyq_sobol_sample_u32_(_e111, _e6.z, (_e6.w + _e123));
+                    nyq_values.Store((out_4 + _e118)*4, asuint(_e125));
+                    uint _e129 = k;
+                    uint _e134 = k;
+                    const float _e136 = nyq_sobol_sample(_e111, _e6.z, (_e6.w + _e134));
+                    nyq_values.Store(((out_4 + 4u) + _e129)*4, asuint(asuint(_e136)));
                 }
             }
             return;
         }
         case 17u: {
-            uint _e121 = nyq_job.dims;
-            uint2 _e124 = nyq_job.seed;
-            const NyqOwenSobol _e125 = nyq_owen_sobol(_e121, _e124);
-            const float4 _e128 = nyq_owen_sobol_sample_4d(_e125, _e6.z, _e6.w);
-            uint2 loop_bound_10 = uint2(4294967295u, 4294967295u);
-            bool loop_init_8 = true;
+            uint _e143 = nyq_job.dims;
+            uint2 _e146 = nyq_job.seed;
+            const NyqOwenSobol _e147 = nyq_owen_sobol(_e143, _e146);
+            const float4 _e150 = nyq_owen_sobol_sample_4d(_e147, _e6.z, _e6.w);
+            uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
+            bool loop_init_10 = true;
             while(true) {
-                if (all(loop_bound_10 == uint2(0u, 0u))) { break; }
-                loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-                if (!loop_init_8) {
-                    uint _e153 = k_1;
-                    k_1 = (_e153 + 1u);
+                if (all(loop_bound_13 == uint2(0u, 0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (!loop_init_10) {
+                    uint _e175 = k_1;
+                    k_1 = (_e175 + 1u);
                 }
-                loop_init_8 = false;
-                uint _e131 = k_1;
-                if ((_e131 < 4u)) {
+                loop_init_10 = false;
+                uint _e153 = k_1;
+                if ((_e153 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e135 = k_1;
-                    uint _e140 = k_1;
-                    const uint _e142 = nyq_owen_sobol_sample_u32_(_e125, _e6.z, (_e6.w + _e140));
-                    nyq_values.Store((out_4 + _e135)*4, asuint(_e142));
-                    uint _e146 = k_1;
-                    uint _e149 = k_1;
-                    nyq_values.Store(((out_4 + 4u) + _e146)*4, asuint(asuint(_e128[min(uint(_e149), 3u)])));
+                    uint _e157 = k_1;
+                    uint _e162 = k_1;
+                    const uint _e164 = nyq_owen_sobol_sample_u32_(_e147, _e6.z, (_e6.w + _e162));
+                    nyq_values.Store((out_4 + _e157)*4, asuint(_e164));
+                    uint _e168 = k_1;
+                    uint _e171 = k_1;
+                    nyq_values.Store(((out_4 + 4u) + _e168)*4, asuint(asuint(_e150[min(uint(_e171), 3u)])));
                 }
             }
             return;
         }
         default: {
-            uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
-            bool loop_init_9 = true;
+            uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
+            bool loop_init_11 = true;
             while(true) {
-                if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
-                loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e166 = k_2;
-                    k_2 = (_e166 + 1u);
+                if (all(loop_bound_14 == uint2(0u, 0u))) { break; }
+                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+                if (!loop_init_11) {
+                    uint _e188 = k_2;
+                    k_2 = (_e188 + 1u);
                 }
-                loop_init_9 = false;
-                uint _e157 = k_2;
-                if ((_e157 < 8u)) {
+                loop_init_11 = false;
+                uint _e179 = k_2;
+                if ((_e179 < 8u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e161 = k_2;
-                    nyq_values.Store((out_4 + _e161)*4, asuint(4294967295u));
+                    uint _e183 = k_2;
+                    nyq_values.Store((out_4 + _e183)*4, asuint(4294967295u));
                 }
             }
             return;

@@ -44,6 +44,8 @@ pub const WGSL: &str = concat!(
     "\n",
     include_str!("../wgsl/lattice.wgsl"),
     "\n",
+    include_str!("../wgsl/stratified.wgsl"),
+    "\n",
     include_str!("../wgsl/fill.wgsl"),
 );
 

@@ -17,6 +17,7 @@ const NYQ_FILL_OWEN_SOBOL_SAMPLER: u32 = 0u;
 const NYQ_FILL_ZSOBOL_SAMPLER: u32 = 1u;
 const NYQ_FILL_RANDOM_SAMPLER: u32 = 2u;
 const NYQ_FILL_LATTICE_SAMPLER: u32 = 3u;
+const NYQ_FILL_STRATIFIED_SAMPLER: u32 = 4u;
 const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 
@@ -104,6 +105,14 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             nyq_lattice_start(&s, pixel, q.z, q.w);
             let one = nyq_lattice_get_1d(&s);
             nyq_fill_values(out, one, nyq_lattice_get_2d(&s));
+        }
+        case 4u: {
+            // resolution: the strata; scramble: the jitter.
+            var s = nyq_stratified_sampler(nyq_job.resolution.x, nyq_job.resolution.y, nyq_job.scramble, nyq_job.seed);
+            nyq_fill_camera(out, nyq_stratified_camera_sample(&s, pixel, q.z));
+            nyq_stratified_start(&s, pixel, q.z, q.w);
+            let one = nyq_stratified_get_1d(&s);
+            nyq_fill_values(out, one, nyq_stratified_get_2d(&s));
         }
         case 16u: {
             let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);

@@ -13,7 +13,10 @@
 use std::borrow::Cow;
 
 use nyquist::lattice::FibonacciLattice;
-use nyquist::sampler::{LatticeSampler, OwenSobolSampler, RandomSampler, Sampler, ZSobolSampler};
+use nyquist::sampler::{
+    Jitter, LatticeSampler, OwenSobolSampler, RandomSampler, Sampler, StratifiedSampler,
+    ZSobolSampler,
+};
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Sequence, Sobol};
 use nyquist_gpu::WORDS_PER_REQUEST;
@@ -93,6 +96,15 @@ pub enum Job {
         /// The seed.
         seed: u64,
     },
+    /// `StratifiedSampler::new(strata[0], strata[1], jitter, seed)`.
+    StratifiedSampler {
+        /// Strata along x and y.
+        strata: [u32; 2],
+        /// Jittered or centred.
+        jitter: Jitter,
+        /// The seed.
+        seed: u64,
+    },
     /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
     Sobol {
         /// Dimensions, 1..=1024.
@@ -151,6 +163,12 @@ impl Job {
             Job::LatticeSampler { set, .. } => {
                 format!("{} sampler", ["fibonacci", "korobov", "r2"][*set as usize])
             }
+            Job::StratifiedSampler { strata, jitter, .. } => {
+                format!(
+                    "stratified sampler {}x{} ({jitter:?})",
+                    strata[0], strata[1]
+                )
+            }
             Job::Sobol { seed: None, .. } => "sobol".into(),
             Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
             Job::OwenSobol { .. } => "owen-sobol".into(),
@@ -204,6 +222,17 @@ impl Job {
                     ..FillJob::default()
                 }
             }
+            Job::StratifiedSampler {
+                strata,
+                jitter,
+                seed,
+            } => FillJob {
+                kind: 4,
+                scramble: u32::from(jitter == Jitter::Centered),
+                seed: seed_words(seed),
+                resolution: strata,
+                ..FillJob::default()
+            },
             Job::Sobol { dims, seed } => FillJob {
                 kind: 16,
                 scramble: u32::from(seed.is_some()),
@@ -257,6 +286,14 @@ impl Job {
                 requests,
             ),
             Job::LatticeSampler { .. } => sampler_answers(self.lattice(), requests),
+            Job::StratifiedSampler {
+                strata,
+                jitter,
+                seed,
+            } => sampler_answers(
+                StratifiedSampler::new(strata[0], strata[1], jitter, seed).expect("valid sampler"),
+                requests,
+            ),
             Job::Sobol { dims, seed } => {
                 let s = match seed {
                     None => Sobol::new(dims),

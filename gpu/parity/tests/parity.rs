@@ -3,6 +3,7 @@
 //! random requests (2²⁰ values) per job and source. Where no adapter can be had the test says
 //! so and passes (`.ci/run` prints `SKIPPED` before it gets here).
 
+use nyquist::sampler::Jitter;
 use nyquist::scramble::Scramble;
 use nyquist_gpu_parity::{Gpu, Job, Source, first_mismatch, random_requests};
 
@@ -51,6 +52,36 @@ fn jobs() -> Vec<Job> {
         Job::Sobol {
             dims: 1024,
             seed: None,
+        },
+        Job::StratifiedSampler {
+            strata: [4, 4],
+            jitter: Jitter::Jittered,
+            seed: 6,
+        },
+        Job::StratifiedSampler {
+            strata: [3, 1],
+            jitter: Jitter::Jittered,
+            seed: 7,
+        },
+        Job::StratifiedSampler {
+            strata: [1, 2],
+            jitter: Jitter::Centered,
+            seed: 8,
+        },
+        Job::StratifiedSampler {
+            strata: [7, 5],
+            jitter: Jitter::Jittered,
+            seed: 9,
+        },
+        Job::StratifiedSampler {
+            strata: [100_003, 40_000],
+            jitter: Jitter::Centered,
+            seed: 10,
+        },
+        Job::StratifiedSampler {
+            strata: [65_537, 65_535],
+            jitter: Jitter::Jittered,
+            seed: 11,
         },
         Job::Sobol {
             dims: 37,
