@@ -77,6 +77,16 @@ struct NyqStratifiedSampler {
     uint index;
     uint dim;
 };
+struct NyqPmj02_ {
+    uint scrambled;
+    uvec2 keys;
+};
+struct NyqPmj02Sampler {
+    uvec2 seed;
+    uvec2 pixel_key;
+    uint index_rev;
+    uint dim;
+};
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -110,19 +120,26 @@ const uint NYQ_JITTERED = 0u;
 const uint NYQ_CENTERED = 1u;
 const uvec2 NYQ_DIM_STEP = uvec2(2135587861u, 2654435769u);
 const uvec2 NYQ_JITTER_STEP = uvec2(668265295u, 3266489917u);
+const uvec2 NYQ_PMJ02_TABLE_SEED = uvec2(845116513u, 1886218800u);
+const uvec2 NYQ_WYRAND_INC = uvec2(2025677871u, 2692095332u);
+const uvec2 NYQ_WYRAND_FOLD = uvec2(2696161499u, 3875765969u);
+const uint NYQ_PMJ02_XOR_X[16] = uint[16](0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u);
+const uint NYQ_PMJ02_XOR_Y[16] = uint[16](0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u);
 const uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 const uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 const uint NYQ_FILL_RANDOM_SAMPLER = 2u;
 const uint NYQ_FILL_LATTICE_SAMPLER = 3u;
 const uint NYQ_FILL_STRATIFIED_SAMPLER = 4u;
+const uint NYQ_FILL_PMJ02_SAMPLER = 5u;
 const uint NYQ_FILL_SOBOL = 16u;
 const uint NYQ_FILL_OWEN_SOBOL = 17u;
+const uint NYQ_FILL_PMJ02_ = 18u;
 
 layout(std430, binding = 0) readonly buffer type_4_block_0Compute { uint _group_0_binding_0_cs[]; };
 
 layout(std140, binding = 1) uniform NyqFillJob_block_1Compute { NyqFillJob _group_0_binding_1_cs; };
 
-layout(std430, binding = 2) readonly buffer type_21_block_2Compute { uvec4 _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_23_block_2Compute { uvec4 _group_0_binding_2_cs[]; };
 
 layout(std430, binding = 3) buffer type_4_block_3Compute { uint _group_0_binding_3_cs[]; };
 
@@ -150,12 +167,12 @@ uvec2 nyq_add64_(uvec2 a_2, uvec2 b_2) {
     return uvec2(low, ((a_2.y + b_2.y) + ((low < a_2.x) ? 1u : 0u)));
 }
 
-uvec2 nyq_shr64_(uvec2 a_3, uint s_5) {
-    return uvec2(((a_3.x >> s_5) | (a_3.y << (32u - s_5))), (a_3.y >> s_5));
+uvec2 nyq_shr64_(uvec2 a_3, uint s_6) {
+    return uvec2(((a_3.x >> s_6) | (a_3.y << (32u - s_6))), (a_3.y >> s_6));
 }
 
-uvec2 nyq_shl64_(uvec2 a_4, uint s_6) {
-    return uvec2((a_4.x << s_6), ((a_4.y << s_6) | (a_4.x >> (32u - s_6))));
+uvec2 nyq_shl64_(uvec2 a_4, uint s_7) {
+    return uvec2((a_4.x << s_7), ((a_4.y << s_7) | (a_4.x >> (32u - s_7))));
 }
 
 uvec2 nyq_u64_(uint x) {
@@ -231,16 +248,16 @@ float nyq_rev_to_f32_(uint w_rev) {
     return _e2;
 }
 
-uint nyq_shr(uint x_3, uint s_7) {
-    return ((s_7 >= 32u) ? 0u : (x_3 >> (s_7 & 31u)));
+uint nyq_shr(uint x_3, uint s_8) {
+    return ((s_8 >= 32u) ? 0u : (x_3 >> (s_8 & 31u)));
 }
 
 float nyq_film_coordinate(uint pixel, float offset) {
     float base_1 = float(pixel);
-    float x_16 = (base_1 + offset);
+    float x_17 = (base_1 + offset);
     float edge = (base_1 + 1.0);
-    if ((x_16 < edge)) {
-        return x_16;
+    if ((x_17 < edge)) {
+        return x_17;
     }
     float below = uintBitsToFloat((floatBitsToUint(edge) - 1u));
     return ((below >= base_1) ? below : base_1);
@@ -274,31 +291,31 @@ uint nyq_nested_uniform_shuffle(uint index, uint seed_2) {
 
 uint nyq_owen_scramble(uint x_6, uint seed_3) {
     uint out_ = 0u;
-    uint k_3 = 0u;
+    uint k_4 = 0u;
     uint _e4 = nyq_mix32_((seed_3 ^ 3144134277u));
     out_ = x_6;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            uint _e41 = k_3;
-            k_3 = (_e41 + 1u);
+            uint _e41 = k_4;
+            k_4 = (_e41 + 1u);
         }
         loop_init = false;
-        uint _e8 = k_3;
+        uint _e8 = k_4;
         if ((_e8 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e12 = k_3;
-            uint _e18 = k_3;
+            uint _e12 = k_4;
+            uint _e18 = k_4;
             uint prefix = ((_e18 == 0u) ? 0u : (x_6 >> ((32u - _e12) & 31u)));
-            uint _e23 = k_3;
+            uint _e23 = k_4;
             uvec2 word = uvec2(((1u << _e23) | prefix), _e4);
             uvec2 _e27 = nyq_mix64_(word);
             if (((_e27.y >> 31u) == 1u)) {
                 uint _e33 = out_;
-                uint _e36 = k_3;
+                uint _e36 = k_4;
                 out_ = (_e33 ^ (1u << (31u - _e36)));
             }
         }
@@ -361,12 +378,12 @@ NyqSobol nyq_sobol(uint dims, bool scrambled, uvec2 seed_5) {
     return NyqSobol(dims, (scrambled ? 1u : 0u), seed_5);
 }
 
-uint nyq_sobol_sample_u32_(NyqSobol s_8, uint index_2, uint dim_2) {
+uint nyq_sobol_sample_u32_(NyqSobol s_9, uint index_2, uint dim_2) {
     uint shift = 0u;
-    uint d_3 = (dim_2 % s_8.dims);
-    if ((s_8.scrambled != 0u)) {
+    uint d_3 = (dim_2 % s_9.dims);
+    if ((s_9.scrambled != 0u)) {
         uvec2 _e11 = nyq_u64_(d_3);
-        uvec2 _e12 = nyq_hash2_(s_8.seed, _e11);
+        uvec2 _e12 = nyq_hash2_(s_9.seed, _e11);
         shift = _e12.y;
     }
     uint _e14 = nyq_sobol_u32_(index_2, d_3);
@@ -374,8 +391,8 @@ uint nyq_sobol_sample_u32_(NyqSobol s_8, uint index_2, uint dim_2) {
     return (_e14 ^ _e15);
 }
 
-float nyq_sobol_sample(NyqSobol s_9, uint index_3, uint dim_3) {
-    uint _e3 = nyq_sobol_sample_u32_(s_9, index_3, dim_3);
+float nyq_sobol_sample(NyqSobol s_10, uint index_3, uint dim_3) {
+    uint _e3 = nyq_sobol_sample_u32_(s_10, index_3, dim_3);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -405,41 +422,41 @@ NyqOwenSobol nyq_owen_sobol(uint dims_1, uvec2 seed_6) {
     return NyqOwenSobol(dims_1, _e6, _e4.x);
 }
 
-uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_10, uint index_5, uint dim_6) {
-    uint d_4 = (dim_6 % s_10.dims);
-    uint _e6 = nyq_shuffle_rev(index_5, s_10.shuffle_seed);
-    uint _e8 = nyq_dim_seed(s_10.key, d_4);
+uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_11, uint index_5, uint dim_6) {
+    uint d_4 = (dim_6 % s_11.dims);
+    uint _e6 = nyq_shuffle_rev(index_5, s_11.shuffle_seed);
+    uint _e8 = nyq_dim_seed(s_11.key, d_4);
     uint _e9 = nyq_owen_sobol_rev(_e6, d_4, _e8);
     return bitfieldReverse(_e9);
 }
 
-float nyq_owen_sobol_sample(NyqOwenSobol s_11, uint index_6, uint dim_7) {
-    uint _e3 = nyq_owen_sobol_sample_u32_(s_11, index_6, dim_7);
+float nyq_owen_sobol_sample(NyqOwenSobol s_12, uint index_6, uint dim_7) {
+    uint _e3 = nyq_owen_sobol_sample_u32_(s_12, index_6, dim_7);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
-vec4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_12, uint index_7, uint first_dim) {
+vec4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_13, uint index_7, uint first_dim) {
     vec4 out_1 = vec4(0.0);
-    uint k_4 = 0u;
-    uint _e4 = nyq_shuffle_rev(index_7, s_12.shuffle_seed);
+    uint k_5 = 0u;
+    uint _e4 = nyq_shuffle_rev(index_7, s_13.shuffle_seed);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e22 = k_4;
-            k_4 = (_e22 + 1u);
+            uint _e22 = k_5;
+            k_5 = (_e22 + 1u);
         }
         loop_init_1 = false;
-        uint _e8 = k_4;
+        uint _e8 = k_5;
         if ((_e8 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e11 = k_4;
-            uint d_5 = ((first_dim + _e11) % s_12.dims);
-            uint _e15 = k_4;
-            uint _e18 = nyq_dim_seed(s_12.key, d_5);
+            uint _e11 = k_5;
+            uint d_5 = ((first_dim + _e11) % s_13.dims);
+            uint _e15 = k_5;
+            uint _e18 = nyq_dim_seed(s_13.key, d_5);
             uint _e19 = nyq_owen_sobol_rev(_e4, d_5, _e18);
             float _e20 = nyq_rev_to_f32_(_e19);
             out_1[_e15] = _e20;
@@ -453,57 +470,57 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(uvec2 seed_7, uint frame) {
     return NyqOwenSobolSampler(seed_7, frame, 0u, 0u, 0u);
 }
 
-void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_13, uvec2 pixel_1, uint sample_index, uint dim_8) {
+void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_14, uvec2 pixel_1, uint sample_index, uint dim_8) {
     uvec2 _e5 = nyq_u64_(pixel_1.x);
     uvec2 _e7 = nyq_u64_(pixel_1.y);
-    uint _e9 = s_13.frame;
+    uint _e9 = s_14.frame;
     uvec2 _e10 = nyq_u64_(_e9);
-    uvec2 _e12 = s_13.seed;
+    uvec2 _e12 = s_14.seed;
     uvec2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_13.key = _e13.x;
+    s_14.key = _e13.x;
     uint _e18 = nyq_mix32_(_e13.y);
     uint _e19 = nyq_shuffle_rev(sample_index, _e18);
-    s_13.r = _e19;
-    s_13.dim = dim_8;
+    s_14.r = _e19;
+    s_14.dim = dim_8;
     return;
 }
 
-float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_14, uint dim_9) {
-    uint _e3 = s_14.r;
-    uint _e5 = s_14.key;
+float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_15, uint dim_9) {
+    uint _e3 = s_15.r;
+    uint _e5 = s_15.key;
     uint _e6 = nyq_dim_seed(_e5, dim_9);
     uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6);
     float _e8 = nyq_rev_to_f32_(_e7);
     return _e8;
 }
 
-float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_15) {
-    uint d_6 = s_15.dim;
-    s_15.dim = (d_6 + 1u);
-    float _e6 = nyq_owen_sobol_value(s_15, d_6);
+float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_16) {
+    uint d_6 = s_16.dim;
+    s_16.dim = (d_6 + 1u);
+    float _e6 = nyq_owen_sobol_value(s_16, d_6);
     return _e6;
 }
 
-vec2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_16) {
-    uint d_7 = s_16.dim;
-    s_16.dim = (d_7 + 2u);
-    float _e6 = nyq_owen_sobol_value(s_16, d_7);
-    float _e9 = nyq_owen_sobol_value(s_16, (d_7 + 1u));
+vec2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_17) {
+    uint d_7 = s_17.dim;
+    s_17.dim = (d_7 + 2u);
+    float _e6 = nyq_owen_sobol_value(s_17, d_7);
+    float _e9 = nyq_owen_sobol_value(s_17, (d_7 + 1u));
     return vec2(_e6, _e9);
 }
 
-vec2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_17) {
-    uint _e3 = s_17.dim;
-    s_17.dim = max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_value(s_17, 0u);
-    float _e9 = nyq_owen_sobol_value(s_17, 1u);
+vec2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_18) {
+    uint _e3 = s_18.dim;
+    s_18.dim = max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_value(s_18, 0u);
+    float _e9 = nyq_owen_sobol_value(s_18, 1u);
     return vec2(_e7, _e9);
 }
 
-NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_18, uvec2 pixel_2, uint sample_index_1) {
+NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_19, uvec2 pixel_2, uint sample_index_1) {
     float v_2[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_1 = 0u;
-    nyq_owen_sobol_start(s_18, pixel_2, sample_index_1, 0u);
+    nyq_owen_sobol_start(s_19, pixel_2, sample_index_1, 0u);
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
@@ -519,20 +536,20 @@ NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_18, uve
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            float _e13 = nyq_owen_sobol_value(s_18, _e12);
+            float _e13 = nyq_owen_sobol_value(s_19, _e12);
             v_2[_e10] = _e13;
         }
     }
-    s_18.dim = 5u;
+    s_19.dim = 5u;
     float _e21 = v_2[0];
     float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
     float _e25 = v_2[1];
     float _e26 = nyq_film_coordinate(pixel_2.y, _e25);
-    vec2 p_1 = vec2(_e22, _e26);
+    vec2 p_2 = vec2(_e22, _e26);
     float _e29 = v_2[3];
     float _e31 = v_2[4];
     float _e34 = v_2[2];
-    return NyqCameraSample(p_1, vec2(_e29, _e31), _e34);
+    return NyqCameraSample(p_2, vec2(_e29, _e31), _e34);
 }
 
 NyqZSobolSampler nyq_zsobol_sampler(uvec2 resolution, uint spp_requested, uint scramble, uvec2 seed_8) {
@@ -561,8 +578,8 @@ uint nyq_spread(uint x_in_2) {
     return ((_e25 | (_e26 << 1u)) & 1431655765u);
 }
 
-uint nyq_zsobol_morton(NyqZSobolSampler s_19, uvec2 pixel_3) {
-    uint mask = ((s_19.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_19.log2_res) & 31u)));
+uint nyq_zsobol_morton(NyqZSobolSampler s_20, uvec2 pixel_3) {
+    uint mask = ((s_20.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_20.log2_res) & 31u)));
     uint _e16 = nyq_spread((pixel_3.x & mask));
     uint _e19 = nyq_spread((pixel_3.y & mask));
     return (_e16 | (_e19 << 1u));
@@ -604,11 +621,11 @@ uvec2 nyq_zsobol_nested_word(uvec2 w, uint higher_1, uint shift_2) {
     return _e17;
 }
 
-uint nyq_zsobol_index(NyqZSobolSampler s_20, uint morton, uvec2 key_3) {
+uint nyq_zsobol_index(NyqZSobolSampler s_21, uint morton, uvec2 key_3) {
     uint index_8 = 0u;
     uint i = 0u;
     uint i_1 = 0u;
-    i = s_20.digits;
+    i = s_21.digits;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
@@ -617,13 +634,13 @@ uint nyq_zsobol_index(NyqZSobolSampler s_20, uint morton, uvec2 key_3) {
         }
         loop_init_3 = false;
         uint _e7 = i;
-        if ((_e7 > s_20.sample_digits)) {
+        if ((_e7 > s_21.sample_digits)) {
         } else {
             break;
         }
         {
             uint _e11 = i;
-            uint shift_3 = ((2u * (_e11 - 1u)) + s_20.odd);
+            uint shift_3 = ((2u * (_e11 - 1u)) + s_21.odd);
             uint digit_1 = ((morton >> shift_3) & 3u);
             uint _e20 = index_8;
             uint _e23 = nyq_shr(morton, (shift_3 + 2u));
@@ -632,10 +649,10 @@ uint nyq_zsobol_index(NyqZSobolSampler s_20, uint morton, uvec2 key_3) {
             index_8 = (_e20 | _e25);
         }
     }
-    uint _e31 = nyq_shr(morton, s_20.log2_spp);
+    uint _e31 = nyq_shr(morton, s_21.log2_spp);
     uvec2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample_ = (morton & (s_20.spp - 1u));
-    i_1 = s_20.sample_digits;
+    uint sample_ = (morton & (s_21.spp - 1u));
+    i_1 = s_21.sample_digits;
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
@@ -650,7 +667,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_20, uint morton, uvec2 key_3) {
         }
         {
             uint _e43 = i_1;
-            uint shift_4 = ((2u * (_e43 - 1u)) + s_20.odd);
+            uint shift_4 = ((2u * (_e43 - 1u)) + s_21.odd);
             uint digit_2 = ((sample_ >> shift_4) & 3u);
             uint _e54 = nyq_shr(sample_, (shift_4 + 2u));
             uvec2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
@@ -660,7 +677,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_20, uint morton, uvec2 key_3) {
             index_8 = (_e58 | _e61);
         }
     }
-    if ((s_20.odd == 1u)) {
+    if ((s_21.odd == 1u)) {
         uint _e69 = index_8;
         uvec2 _e75 = nyq_zsobol_nested_word(_e32, (sample_ >> 1u), 0u);
         index_8 = (_e69 | ((sample_ & 1u) ^ (_e75.y >> 31u)));
@@ -669,11 +686,11 @@ uint nyq_zsobol_index(NyqZSobolSampler s_20, uint morton, uvec2 key_3) {
     return _e81;
 }
 
-uint nyq_zsobol_sequence_index(NyqZSobolSampler s_21, uvec2 pixel_4, uint sample_index_2, uint dim_11) {
-    uint _e4 = nyq_zsobol_morton(s_21, pixel_4);
-    uint morton_1 = ((_e4 << s_21.log2_spp) | (sample_index_2 & (s_21.spp - 1u)));
-    uvec2 _e13 = nyq_zsobol_dim_key(s_21.seed, dim_11);
-    uint _e14 = nyq_zsobol_index(s_21, morton_1, _e13);
+uint nyq_zsobol_sequence_index(NyqZSobolSampler s_22, uvec2 pixel_4, uint sample_index_2, uint dim_11) {
+    uint _e4 = nyq_zsobol_morton(s_22, pixel_4);
+    uint morton_1 = ((_e4 << s_22.log2_spp) | (sample_index_2 & (s_22.spp - 1u)));
+    uvec2 _e13 = nyq_zsobol_dim_key(s_22.seed, dim_11);
+    uint _e14 = nyq_zsobol_index(s_22, morton_1, _e13);
     return _e14;
 }
 
@@ -686,35 +703,35 @@ uint nyq_zsobol_dim0_(uint index_9, uint seed_10, uint how_1) {
     return _e8;
 }
 
-float nyq_zsobol_value_1d(inout NyqZSobolSampler s_22, uint dim_12) {
-    uvec2 _e3 = s_22.seed;
-    uvec2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
-    NyqZSobolSampler _e5 = s_22;
-    uint _e7 = s_22.morton;
-    uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_22.scramble;
-    uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    float _e13 = nyq_fraction_to_f32_(_e12);
-    return _e13;
-}
-
-vec2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_23, uint dim_13) {
-    uint y = 0u;
+float nyq_zsobol_value_1d(inout NyqZSobolSampler s_23, uint dim_12) {
     uvec2 _e3 = s_23.seed;
-    uvec2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
+    uvec2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
     NyqZSobolSampler _e5 = s_23;
     uint _e7 = s_23.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
     uint _e11 = s_23.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_23.scramble;
+    float _e13 = nyq_fraction_to_f32_(_e12);
+    return _e13;
+}
+
+vec2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_24, uint dim_13) {
+    uint y = 0u;
+    uvec2 _e3 = s_24.seed;
+    uvec2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
+    NyqZSobolSampler _e5 = s_24;
+    uint _e7 = s_24.morton;
+    uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_24.scramble;
+    uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    uint _e15 = s_24.scramble;
     if ((_e15 == NYQ_SCRAMBLE_FAST_OWEN)) {
         uint _e19 = nyq_sobol_u32_(_e8, 1u);
         uint _e22 = nyq_lk_hash(bitfieldReverse(_e19), _e4.y);
         y = bitfieldReverse(_e22);
     } else {
         uint _e25 = nyq_sobol_u32_(_e8, 1u);
-        uint _e28 = s_23.scramble;
+        uint _e28 = s_24.scramble;
         uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -724,43 +741,43 @@ vec2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_23, uint dim_13) {
     return vec2(_e30, _e32);
 }
 
-void nyq_zsobol_start(inout NyqZSobolSampler s_24, uvec2 pixel_5, uint sample_index_3, uint dim_14) {
-    NyqZSobolSampler _e5 = s_24;
+void nyq_zsobol_start(inout NyqZSobolSampler s_25, uvec2 pixel_5, uint sample_index_3, uint dim_14) {
+    NyqZSobolSampler _e5 = s_25;
     uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
-    uint _e8 = s_24.log2_spp;
-    uint _e11 = s_24.spp;
-    s_24.morton = ((_e6 << _e8) | (sample_index_3 & (_e11 - 1u)));
-    s_24.dim = dim_14;
+    uint _e8 = s_25.log2_spp;
+    uint _e11 = s_25.spp;
+    s_25.morton = ((_e6 << _e8) | (sample_index_3 & (_e11 - 1u)));
+    s_25.dim = dim_14;
     return;
 }
 
-float nyq_zsobol_get_1d(inout NyqZSobolSampler s_25) {
-    uint d_8 = s_25.dim;
-    s_25.dim = (d_8 + 1u);
-    float _e6 = nyq_zsobol_value_1d(s_25, d_8);
+float nyq_zsobol_get_1d(inout NyqZSobolSampler s_26) {
+    uint d_8 = s_26.dim;
+    s_26.dim = (d_8 + 1u);
+    float _e6 = nyq_zsobol_value_1d(s_26, d_8);
     return _e6;
 }
 
-vec2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_26) {
-    uint d_9 = s_26.dim;
-    s_26.dim = (d_9 + 2u);
-    vec2 _e6 = nyq_zsobol_value_2d(s_26, d_9);
+vec2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_27) {
+    uint d_9 = s_27.dim;
+    s_27.dim = (d_9 + 2u);
+    vec2 _e6 = nyq_zsobol_value_2d(s_27, d_9);
     return _e6;
 }
 
-vec2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_27) {
-    uint _e3 = s_27.dim;
-    s_27.dim = max(_e3, 2u);
-    vec2 _e7 = nyq_zsobol_value_2d(s_27, 0u);
+vec2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_28) {
+    uint _e3 = s_28.dim;
+    s_28.dim = max(_e3, 2u);
+    vec2 _e7 = nyq_zsobol_value_2d(s_28, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_28, uvec2 pixel_6, uint sample_index_4) {
-    nyq_zsobol_start(s_28, pixel_6, sample_index_4, 0u);
-    vec2 _e5 = nyq_zsobol_value_2d(s_28, 0u);
-    float _e7 = nyq_zsobol_value_1d(s_28, 2u);
-    vec2 _e9 = nyq_zsobol_value_2d(s_28, 3u);
-    s_28.dim = 5u;
+NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_29, uvec2 pixel_6, uint sample_index_4) {
+    nyq_zsobol_start(s_29, pixel_6, sample_index_4, 0u);
+    vec2 _e5 = nyq_zsobol_value_2d(s_29, 0u);
+    float _e7 = nyq_zsobol_value_1d(s_29, 2u);
+    vec2 _e9 = nyq_zsobol_value_2d(s_29, 3u);
+    s_29.dim = 5u;
     float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
     float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
     vec2 film = vec2(_e14, _e17);
@@ -781,9 +798,9 @@ uint nyq_pcg32_next(inout NyqPcg32_ g) {
     g.state = _e7;
     uvec2 _e9 = nyq_shr64_(old, 18u);
     uvec2 _e12 = nyq_shr64_((_e9 ^ old), 27u);
-    uint x_17 = _e12.x;
+    uint x_18 = _e12.x;
     uint rot = (old.y >> 27u);
-    return ((x_17 >> rot) | (x_17 << ((32u - rot) & 31u)));
+    return ((x_18 >> rot) | (x_18 << ((32u - rot) & 31u)));
 }
 
 void nyq_pcg32_advance(inout NyqPcg32_ g_1, uint delta) {
@@ -850,9 +867,9 @@ NyqRandomSampler nyq_random_sampler(uvec2 seed_11) {
     return NyqRandomSampler(seed_11, uvec2(0u, 0u), NyqPcg32_(uvec2(0u, 0u)), 0u);
 }
 
-NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_29, uint dim_15) {
+NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_30, uint dim_15) {
     NyqPcg32_ g_2 = NyqPcg32_(uvec2(0u));
-    uvec2 _e3 = s_29.base;
+    uvec2 _e3 = s_30.base;
     NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
     uint d_10 = (dim_15 & 65535u);
@@ -863,73 +880,73 @@ NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_29, uint dim_15) {
     return _e10;
 }
 
-void nyq_random_start(inout NyqRandomSampler s_30, uvec2 pixel_7, uint sample_index_5, uint dim_16) {
-    uvec2 _e5 = s_30.seed;
+void nyq_random_start(inout NyqRandomSampler s_31, uvec2 pixel_7, uint sample_index_5, uint dim_16) {
+    uvec2 _e5 = s_31.seed;
     uvec2 _e7 = nyq_u64_(1918987876u);
     uvec2 _e8 = nyq_hash3_(pixel_7, _e5, _e7);
     uvec2 golden_2 = uvec2(2135587861u, 2654435769u);
     uvec2 _e13 = nyq_u64_(sample_index_5);
     uvec2 _e14 = nyq_mul64_(_e13, golden_2);
     uvec2 _e16 = nyq_mix64_((_e8 ^ _e14));
-    s_30.base = _e16;
-    s_30.dim = dim_16;
-    NyqPcg32_ _e19 = nyq_random_at(s_30, dim_16);
-    s_30.rng = _e19;
+    s_31.base = _e16;
+    s_31.dim = dim_16;
+    NyqPcg32_ _e19 = nyq_random_at(s_31, dim_16);
+    s_31.rng = _e19;
     return;
 }
 
-float nyq_random_get_1d(inout NyqRandomSampler s_31) {
+float nyq_random_get_1d(inout NyqRandomSampler s_32) {
     NyqPcg32_ g_3 = NyqPcg32_(uvec2(0u));
-    NyqPcg32_ _e2 = s_31.rng;
+    NyqPcg32_ _e2 = s_32.rng;
     g_3 = _e2;
     uint _e4 = nyq_pcg32_next(g_3);
     float _e5 = nyq_unit_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_31.rng = _e7;
-    uint _e9 = s_31.dim;
-    s_31.dim = (_e9 + 1u);
-    uint _e13 = s_31.dim;
+    s_32.rng = _e7;
+    uint _e9 = s_32.dim;
+    s_32.dim = (_e9 + 1u);
+    uint _e13 = s_32.dim;
     if (((_e13 & 65535u) == 0u)) {
-        NyqPcg32_ _e20 = nyq_random_at(s_31, 0u);
-        s_31.rng = _e20;
+        NyqPcg32_ _e20 = nyq_random_at(s_32, 0u);
+        s_32.rng = _e20;
     }
     return _e5;
 }
 
-vec2 nyq_random_get_2d(inout NyqRandomSampler s_32) {
-    float _e1 = nyq_random_get_1d(s_32);
-    float _e2 = nyq_random_get_1d(s_32);
+vec2 nyq_random_get_2d(inout NyqRandomSampler s_33) {
+    float _e1 = nyq_random_get_1d(s_33);
+    float _e2 = nyq_random_get_1d(s_33);
     return vec2(_e1, _e2);
 }
 
-vec2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_33) {
+vec2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_34) {
     NyqPcg32_ g_4 = NyqPcg32_(uvec2(0u));
-    uint _e2 = s_33.dim;
+    uint _e2 = s_34.dim;
     if ((_e2 == 0u)) {
-        vec2 _e5 = nyq_random_get_2d(s_33);
+        vec2 _e5 = nyq_random_get_2d(s_34);
         return _e5;
     }
-    NyqPcg32_ _e7 = nyq_random_at(s_33, 0u);
+    NyqPcg32_ _e7 = nyq_random_at(s_34, 0u);
     g_4 = _e7;
     uint _e9 = nyq_pcg32_next(g_4);
     float _e10 = nyq_unit_f32_(_e9);
     uint _e11 = nyq_pcg32_next(g_4);
     float _e12 = nyq_unit_f32_(_e11);
-    vec2 p_2 = vec2(_e10, _e12);
-    uint _e15 = s_33.dim;
+    vec2 p_3 = vec2(_e10, _e12);
+    uint _e15 = s_34.dim;
     if ((_e15 < 2u)) {
-        s_33.dim = 2u;
+        s_34.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_33.rng = _e21;
+        s_34.rng = _e21;
     }
-    return p_2;
+    return p_3;
 }
 
-NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_34, uvec2 pixel_8, uint sample_index_6) {
-    nyq_random_start(s_34, pixel_8, sample_index_6, 0u);
-    vec2 _e4 = nyq_random_get_pixel_2d(s_34);
-    float _e5 = nyq_random_get_1d(s_34);
-    vec2 _e6 = nyq_random_get_2d(s_34);
+NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_35, uvec2 pixel_8, uint sample_index_6) {
+    nyq_random_start(s_35, pixel_8, sample_index_6, 0u);
+    vec2 _e4 = nyq_random_get_pixel_2d(s_35);
+    float _e5 = nyq_random_get_1d(s_35);
+    vec2 _e6 = nyq_random_get_2d(s_35);
     float _e9 = nyq_film_coordinate(pixel_8.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_8.y, _e4.y);
     vec2 film_1 = vec2(_e9, _e12);
@@ -1031,39 +1048,39 @@ NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_1, uint g_5, uvec2 se
     return NyqLatticeSampler(lattice, n_1, g_5, seed_12, uvec2(0u, 0u), 0u, 0u);
 }
 
-float nyq_lattice_value(inout NyqLatticeSampler s_35, uint dim_17) {
+float nyq_lattice_value(inout NyqLatticeSampler s_36, uint dim_17) {
     uvec2 base = uvec2(0u);
     uint g_6 = 0u;
-    uint n_3 = s_35.n;
-    uint _e5 = s_35.index;
-    uint k_7 = (_e5 % n_3);
+    uint n_3 = s_36.n;
+    uint _e5 = s_36.index;
+    uint k_10 = (_e5 % n_3);
     uint component = (dim_17 % 2u);
-    uint _e11 = s_35.lattice;
+    uint _e11 = s_36.lattice;
     switch(_e11) {
         case 2u: {
-            uvec2 _e15 = nyq_u64_(k_7);
+            uvec2 _e15 = nyq_u64_(k_10);
             uvec2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA[component]);
             uvec2 _e19 = nyq_add64_(uvec2(0u, 2147483648u), _e18);
             base = _e19;
             break;
         }
         default: {
-            uint _e21 = s_35.g;
+            uint _e21 = s_36.g;
             g_6 = _e21;
             if ((component == 0u)) {
                 g_6 = (1u % n_3);
             }
             uint _e27 = g_6;
-            uvec2 _e28 = nyq_mul_wide(k_7, _e27);
+            uvec2 _e28 = nyq_mul_wide(k_10, _e27);
             uint _e29 = nyq_mod64_(_e28, n_3);
             uvec2 _e30 = nyq_fixed_ratio(_e29, n_3);
             base = _e30;
             break;
         }
     }
-    uvec2 _e32 = s_35.pixel;
+    uvec2 _e32 = s_36.pixel;
     uvec2 _e35 = nyq_u64_((dim_17 / 2u));
-    uvec2 _e37 = s_35.seed;
+    uvec2 _e37 = s_36.seed;
     uvec2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     uvec2 _e39 = base;
     uvec2 _e40 = nyq_u64_(component);
@@ -1073,41 +1090,41 @@ float nyq_lattice_value(inout NyqLatticeSampler s_35, uint dim_17) {
     return _e43;
 }
 
-void nyq_lattice_start(inout NyqLatticeSampler s_36, uvec2 pixel_9, uint sample_index_7, uint dim_18) {
-    s_36.pixel = pixel_9;
-    s_36.index = sample_index_7;
-    s_36.dim = dim_18;
+void nyq_lattice_start(inout NyqLatticeSampler s_37, uvec2 pixel_9, uint sample_index_7, uint dim_18) {
+    s_37.pixel = pixel_9;
+    s_37.index = sample_index_7;
+    s_37.dim = dim_18;
     return;
 }
 
-float nyq_lattice_get_1d(inout NyqLatticeSampler s_37) {
-    uint d_11 = s_37.dim;
-    s_37.dim = (d_11 + 1u);
-    float _e6 = nyq_lattice_value(s_37, d_11);
+float nyq_lattice_get_1d(inout NyqLatticeSampler s_38) {
+    uint d_11 = s_38.dim;
+    s_38.dim = (d_11 + 1u);
+    float _e6 = nyq_lattice_value(s_38, d_11);
     return _e6;
 }
 
-vec2 nyq_lattice_get_2d(inout NyqLatticeSampler s_38) {
-    uint d_12 = s_38.dim;
-    s_38.dim = (d_12 + 2u);
-    float _e6 = nyq_lattice_value(s_38, d_12);
-    float _e9 = nyq_lattice_value(s_38, (d_12 + 1u));
+vec2 nyq_lattice_get_2d(inout NyqLatticeSampler s_39) {
+    uint d_12 = s_39.dim;
+    s_39.dim = (d_12 + 2u);
+    float _e6 = nyq_lattice_value(s_39, d_12);
+    float _e9 = nyq_lattice_value(s_39, (d_12 + 1u));
     return vec2(_e6, _e9);
 }
 
-vec2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_39) {
-    uint _e3 = s_39.dim;
-    s_39.dim = max(_e3, 2u);
-    float _e7 = nyq_lattice_value(s_39, 0u);
-    float _e9 = nyq_lattice_value(s_39, 1u);
+vec2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_40) {
+    uint _e3 = s_40.dim;
+    s_40.dim = max(_e3, 2u);
+    float _e7 = nyq_lattice_value(s_40, 0u);
+    float _e9 = nyq_lattice_value(s_40, 1u);
     return vec2(_e7, _e9);
 }
 
-NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_40, uvec2 pixel_10, uint sample_index_8) {
-    nyq_lattice_start(s_40, pixel_10, sample_index_8, 0u);
-    vec2 _e4 = nyq_lattice_get_pixel_2d(s_40);
-    float _e5 = nyq_lattice_get_1d(s_40);
-    vec2 _e6 = nyq_lattice_get_2d(s_40);
+NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_41, uvec2 pixel_10, uint sample_index_8) {
+    nyq_lattice_start(s_41, pixel_10, sample_index_8, 0u);
+    vec2 _e4 = nyq_lattice_get_pixel_2d(s_41);
+    float _e5 = nyq_lattice_get_1d(s_41);
+    vec2 _e6 = nyq_lattice_get_2d(s_41);
     float _e9 = nyq_film_coordinate(pixel_10.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_10.y, _e4.y);
     vec2 film_2 = vec2(_e9, _e12);
@@ -1154,9 +1171,9 @@ float nyq_recip_f32_(float x_12) {
     bool local_4 = false;
     bool local_5 = false;
     uint bits_2 = floatBitsToUint(x_12);
-    uint m_1 = ((bits_2 & 8388607u) | 8388608u);
+    uint m_2 = ((bits_2 & 8388607u) | 8388608u);
     int e = (int((bits_2 >> 23u)) - 127);
-    if ((m_1 == 8388608u)) {
+    if ((m_2 == 8388608u)) {
         return uintBitsToFloat((uint((127 - e)) << 23u));
     }
     bool loop_init_7 = true;
@@ -1175,9 +1192,9 @@ float nyq_recip_f32_(float x_12) {
             uint _e28 = q_1;
             q_1 = (_e28 << 1u);
             uint _e31 = r_4;
-            if ((_e31 >= m_1)) {
+            if ((_e31 >= m_2)) {
                 uint _e33 = r_4;
-                r_4 = (_e33 - m_1);
+                r_4 = (_e33 - m_2);
                 uint _e35 = q_1;
                 q_1 = (_e35 | 1u);
             }
@@ -1211,32 +1228,32 @@ float nyq_recip_f32_(float x_12) {
     return uintBitsToFloat((((uint(((127 - e) - 1)) << 23u) + _e79) - 8388608u));
 }
 
-uvec3 nyq_mul64x32_(uvec2 r_5, uint k_5) {
-    uvec2 _e3 = nyq_mul_wide(r_5.x, k_5);
-    uvec2 _e5 = nyq_mul_wide(r_5.y, k_5);
+uvec3 nyq_mul64x32_(uvec2 r_5, uint k_6) {
+    uvec2 _e3 = nyq_mul_wide(r_5.x, k_6);
+    uvec2 _e5 = nyq_mul_wide(r_5.y, k_6);
     uvec2 _e9 = nyq_add64_(_e5, uvec2(_e3.y, 0u));
     return uvec3(_e3.x, _e9.x, _e9.y);
 }
 
-uint nyq_nibble(uvec2 t, uint s_41) {
-    return ((((s_41 >= 32u) ? t.y : t.x) >> (s_41 & 31u)) & 15u);
+uint nyq_nibble(uvec2 t, uint s_42) {
+    return ((((s_42 >= 32u) ? t.y : t.x) >> (s_42 & 31u)) & 15u);
 }
 
-uvec2 nyq_shl64_any(uvec2 x_13, uint s_42) {
-    if ((s_42 == 0u)) {
+uvec2 nyq_shl64_any(uvec2 x_13, uint s_43) {
+    if ((s_43 == 0u)) {
         return x_13;
     }
-    if ((s_42 >= 32u)) {
-        return uvec2(0u, (x_13.x << (s_42 - 32u)));
+    if ((s_43 >= 32u)) {
+        return uvec2(0u, (x_13.x << (s_43 - 32u)));
     }
-    uvec2 _e12 = nyq_shl64_(x_13, s_42);
+    uvec2 _e12 = nyq_shl64_(x_13, s_43);
     return _e12;
 }
 
 uvec2 nyq_packed_table(uint n_2, uvec2 r_in) {
     uvec2 t_1 = uvec2(1985229328u, 4275878552u);
     uvec2 r_6 = uvec2(0u);
-    uint k_6 = 0u;
+    uint k_7 = 0u;
     if ((n_2 <= 4u)) {
         if ((n_2 < 2u)) {
             return uvec2(0u, 0u);
@@ -1258,36 +1275,36 @@ uvec2 nyq_packed_table(uint n_2, uvec2 r_in) {
         }
     }
     r_6 = r_in;
-    k_6 = n_2;
+    k_7 = n_2;
     bool loop_init_8 = true;
     while(true) {
         if (!loop_init_8) {
-            uint _e94 = k_6;
-            k_6 = (_e94 - 1u);
+            uint _e94 = k_7;
+            k_7 = (_e94 - 1u);
         }
         loop_init_8 = false;
-        uint _e62 = k_6;
+        uint _e62 = k_7;
         if ((_e62 > 1u)) {
         } else {
             break;
         }
         {
             uvec2 _e65 = r_6;
-            uint _e66 = k_6;
+            uint _e66 = k_7;
             uvec3 _e67 = nyq_mul64x32_(_e65, _e66);
             uint j_1 = _e67.z;
             r_6 = _e67.xy;
-            uint _e71 = k_6;
+            uint _e71 = k_7;
             uint hi = (4u * (_e71 - 1u));
             uint lo = (4u * j_1);
             uvec2 _e77 = t_1;
             uint _e78 = nyq_nibble(_e77, hi);
             uvec2 _e79 = t_1;
             uint _e80 = nyq_nibble(_e79, lo);
-            uint x_18 = ((_e78 ^ _e80) & 15u);
+            uint x_19 = ((_e78 ^ _e80) & 15u);
             uvec2 _e84 = t_1;
-            uvec2 _e87 = nyq_shl64_any(uvec2(x_18, 0u), hi);
-            uvec2 _e90 = nyq_shl64_any(uvec2(x_18, 0u), lo);
+            uvec2 _e87 = nyq_shl64_any(uvec2(x_19, 0u), hi);
+            uvec2 _e90 = nyq_shl64_any(uvec2(x_19, 0u), lo);
             t_1 = (_e84 ^ (_e87 | _e90));
         }
     }
@@ -1385,24 +1402,24 @@ uint nyq_stratified_dim_key(uvec2 pixel_key, uint dim_19) {
     return (_e6.x ^ _e6.y);
 }
 
-uint nyq_stratified_stratum(inout NyqStratifiedSampler s_43, uint dim_20) {
+uint nyq_stratified_stratum(inout NyqStratifiedSampler s_44, uint dim_20) {
     if ((dim_20 == 0u)) {
-        uint _e5 = s_43.index;
-        uint _e7 = s_43.spp;
+        uint _e5 = s_44.index;
+        uint _e7 = s_44.spp;
         return (_e5 % _e7);
     }
-    uint _e10 = s_43.spp;
-    uvec2 _e12 = s_43.pixel_key;
+    uint _e10 = s_44.spp;
+    uvec2 _e12 = s_44.pixel_key;
     uint _e13 = nyq_stratified_dim_key(_e12, dim_20);
     NyqPermutation _e14 = nyq_permutation(_e10, _e13);
-    uint _e16 = s_43.index;
+    uint _e16 = s_44.index;
     uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
-vec2 nyq_stratified_jitters(inout NyqStratifiedSampler s_44, uint dim_21) {
+vec2 nyq_stratified_jitters(inout NyqStratifiedSampler s_45, uint dim_21) {
     bool local_7 = false;
-    uint _e3 = s_44.jitter;
+    uint _e3 = s_45.jitter;
     if ((_e3 != NYQ_JITTERED)) {
         return vec2(0.5, 0.5);
     }
@@ -1413,7 +1430,7 @@ vec2 nyq_stratified_jitters(inout NyqStratifiedSampler s_44, uint dim_21) {
     }
     bool _e17 = local_7;
     if (_e17) {
-        uvec2 _e19 = s_44.sample_key;
+        uvec2 _e19 = s_45.sample_key;
         uvec2 _e24 = nyq_mul64_(uvec2(2u, 0u), NYQ_JITTER_STEP);
         uvec2 _e26 = nyq_mix64_((_e19 ^ _e24));
         if ((dim_21 == 2u)) {
@@ -1422,7 +1439,7 @@ vec2 nyq_stratified_jitters(inout NyqStratifiedSampler s_44, uint dim_21) {
         uvec2 _e40 = nyq_shr64_(_e26, 22u);
         return vec2((float((_e40.x & 2097151u)) * 4.7683716e-7), (float(((_e26.x >> 1u) & 2097151u)) * 4.7683716e-7));
     }
-    uvec2 _e55 = s_44.sample_key;
+    uvec2 _e55 = s_45.sample_key;
     uvec2 _e56 = nyq_u64_(dim_21);
     uvec2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     uvec2 _e60 = nyq_mix64_((_e55 ^ _e58));
@@ -1435,88 +1452,268 @@ float nyq_below_one(float x_15) {
     return min(x_15, uintBitsToFloat(1065353215u));
 }
 
-vec2 nyq_stratified_cell(inout NyqStratifiedSampler s_45, uint st, vec2 j) {
-    uint _e4 = s_45.xs;
+vec2 nyq_stratified_cell(inout NyqStratifiedSampler s_46, uint st, vec2 j) {
+    uint _e4 = s_46.xs;
     uint cx = (st % _e4);
-    uint _e7 = s_45.xs;
+    uint _e7 = s_46.xs;
     uint cy = (st / _e7);
     float _e9 = nyq_u32_to_f32_(cx);
-    float _e14 = s_45.inv.x;
+    float _e14 = s_46.inv.x;
     float _e16 = nyq_below_one(((_e9 + j.x) * _e14));
     float _e17 = nyq_u32_to_f32_(cy);
-    float _e22 = s_45.inv.y;
+    float _e22 = s_46.inv.y;
     float _e24 = nyq_below_one(((_e17 + j.y) * _e22));
     return vec2(_e16, _e24);
 }
 
-void nyq_stratified_start(inout NyqStratifiedSampler s_46, uvec2 pixel_11, uint sample_index_9, uint dim_22) {
-    uvec2 _e6 = s_46.seed;
+void nyq_stratified_start(inout NyqStratifiedSampler s_47, uvec2 pixel_11, uint sample_index_9, uint dim_22) {
+    uvec2 _e6 = s_47.seed;
     uvec2 _e8 = nyq_u64_(1937011297u);
     uvec2 _e9 = nyq_hash3_(pixel_11, _e6, _e8);
-    s_46.pixel_key = _e9;
-    s_46.index = sample_index_9;
-    uvec2 _e13 = s_46.pixel_key;
+    s_47.pixel_key = _e9;
+    s_47.index = sample_index_9;
+    uvec2 _e13 = s_47.pixel_key;
     uvec2 _e14 = nyq_u64_(sample_index_9);
     uvec2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
-    s_46.sample_key = (_e13 ^ _e16);
-    s_46.dim = dim_22;
+    s_47.sample_key = (_e13 ^ _e16);
+    s_47.dim = dim_22;
     return;
 }
 
-float nyq_stratified_get_1d(inout NyqStratifiedSampler s_47) {
-    uint d_13 = s_47.dim;
-    s_47.dim = (d_13 + 1u);
-    uint _e6 = nyq_stratified_stratum(s_47, d_13);
+float nyq_stratified_get_1d(inout NyqStratifiedSampler s_48) {
+    uint d_13 = s_48.dim;
+    s_48.dim = (d_13 + 1u);
+    uint _e6 = nyq_stratified_stratum(s_48, d_13);
     float _e7 = nyq_u32_to_f32_(_e6);
-    vec2 _e8 = nyq_stratified_jitters(s_47, d_13);
-    float _e13 = s_47.inv.z;
+    vec2 _e8 = nyq_stratified_jitters(s_48, d_13);
+    float _e13 = s_48.inv.z;
     float _e15 = nyq_below_one(((_e7 + _e8.x) * _e13));
     return _e15;
 }
 
-vec2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_48) {
-    uint d_14 = s_48.dim;
-    s_48.dim = (d_14 + 2u);
-    uint _e6 = nyq_stratified_stratum(s_48, d_14);
-    vec2 _e7 = nyq_stratified_jitters(s_48, d_14);
-    vec2 _e8 = nyq_stratified_cell(s_48, _e6, _e7);
+vec2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_49) {
+    uint d_14 = s_49.dim;
+    s_49.dim = (d_14 + 2u);
+    uint _e6 = nyq_stratified_stratum(s_49, d_14);
+    vec2 _e7 = nyq_stratified_jitters(s_49, d_14);
+    vec2 _e8 = nyq_stratified_cell(s_49, _e6, _e7);
     return _e8;
 }
 
-vec2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_49) {
-    uint _e3 = s_49.dim;
-    s_49.dim = max(_e3, 2u);
-    uint _e7 = nyq_stratified_stratum(s_49, 0u);
-    vec2 _e9 = nyq_stratified_jitters(s_49, 0u);
-    vec2 _e10 = nyq_stratified_cell(s_49, _e7, _e9);
+vec2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_50) {
+    uint _e3 = s_50.dim;
+    s_50.dim = max(_e3, 2u);
+    uint _e7 = nyq_stratified_stratum(s_50, 0u);
+    vec2 _e9 = nyq_stratified_jitters(s_50, 0u);
+    vec2 _e10 = nyq_stratified_cell(s_50, _e7, _e9);
     return _e10;
 }
 
-NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_50, uvec2 pixel_12, uint sample_index_10) {
-    nyq_stratified_start(s_50, pixel_12, sample_index_10, 0u);
-    vec2 _e4 = nyq_stratified_get_pixel_2d(s_50);
-    float _e5 = nyq_stratified_get_1d(s_50);
-    vec2 _e6 = nyq_stratified_get_2d(s_50);
+NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_51, uvec2 pixel_12, uint sample_index_10) {
+    nyq_stratified_start(s_51, pixel_12, sample_index_10, 0u);
+    vec2 _e4 = nyq_stratified_get_pixel_2d(s_51);
+    float _e5 = nyq_stratified_get_1d(s_51);
+    vec2 _e6 = nyq_stratified_get_2d(s_51);
     float _e9 = nyq_film_coordinate(pixel_12.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_12.y, _e4.y);
     vec2 film_3 = vec2(_e9, _e12);
     return NyqCameraSample(film_3, _e6, _e5);
 }
 
-uvec4 nyq_fill_request(uint i_6) {
+uvec2 nyq_mul64_high(uvec2 a_8, uvec2 b_6) {
+    uvec2 _e4 = nyq_mul_wide(a_8.x, b_6.x);
+    uvec2 _e7 = nyq_mul_wide(a_8.x, b_6.y);
+    uvec2 _e10 = nyq_mul_wide(a_8.y, b_6.x);
+    uvec2 _e13 = nyq_mul_wide(a_8.y, b_6.y);
+    uvec2 _e20 = nyq_add64_(uvec2(_e4.y, 0u), uvec2(_e7.x, 0u));
+    uvec2 _e24 = nyq_add64_(_e20, uvec2(_e10.x, 0u));
+    uvec2 _e28 = nyq_add64_(_e13, uvec2(_e7.y, 0u));
+    uvec2 _e35 = nyq_add64_(uvec2(_e10.y, 0u), uvec2(_e24.y, 0u));
+    uvec2 _e36 = nyq_add64_(_e28, _e35);
+    return _e36;
+}
+
+uvec2 nyq_wyrand(uvec2 seed_15, uint i_6) {
+    uvec2 _e5 = nyq_u64_((i_6 + 1u));
+    uvec2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
+    uvec2 _e7 = nyq_add64_(seed_15, _e6);
+    uvec2 t_2 = (_e7 ^ NYQ_WYRAND_FOLD);
+    uvec2 _e10 = nyq_mul64_high(_e7, t_2);
+    uvec2 _e11 = nyq_mul64_(_e7, t_2);
+    return (_e10 ^ _e11);
+}
+
+uint nyq_pmj02_point(uvec2 seed_16, uint index_10, uint dim_23) {
+    uint x_16 = 0u;
+    uint known = 0u;
+    uint flips = 0u;
+    uint p_1 = 0u;
+    p_1 = (index_10 & 65535u);
+    while(true) {
+        uint _e12 = p_1;
+        if ((_e12 != 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e16 = p_1;
+            uint level = (31u - uint(31 - findMSB(_e16)));
+            uint swap = (2147483648u >> level);
+            uint low_1 = (swap - 1u);
+            uint _e23 = p_1;
+            uvec2 _e24 = nyq_wyrand(seed_16, _e23);
+            uint bits_4 = ((dim_23 == 0u) ? _e24.x : _e24.y);
+            uint _e30 = x_16;
+            uint _e32 = known;
+            x_16 = (_e30 | ((bits_4 & low_1) & ~(_e32)));
+            uint _e36 = known;
+            known = (_e36 | low_1);
+            uint _e38 = flips;
+            flips = (_e38 ^ swap);
+            uint c_3 = ((dim_23 == 0u) ? NYQ_PMJ02_XOR_X[(level & 15u)] : NYQ_PMJ02_XOR_Y[(level & 15u)]);
+            uint _e51 = p_1;
+            p_1 = ((_e51 - (1u << level)) ^ c_3);
+        }
+    }
+    uvec2 _e57 = nyq_wyrand(seed_16, 0u);
+    uint _e58 = x_16;
+    uint _e64 = known;
+    x_16 = (_e58 | (((dim_23 == 0u) ? _e57.x : _e57.y) & ~(_e64)));
+    uint _e68 = x_16;
+    uint _e69 = flips;
+    return (_e68 ^ _e69);
+}
+
+NyqPmj02_ nyq_pmj02_(bool scrambled_1, uvec2 seed_17) {
+    uvec2 _e5 = nyq_hash2_(seed_17, uvec2(845115255u, 1886218800u));
+    return NyqPmj02_((scrambled_1 ? 1u : 0u), _e5);
+}
+
+uint nyq_pmj02_sample_u32_(NyqPmj02_ s_52, uint index_11, uint dim_24) {
+    uint d_15 = (dim_24 & 1u);
+    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_15);
+    if ((s_52.scrambled == 0u)) {
+        return _e6;
+    }
+    uint _e13 = nyq_lk_hash(bitfieldReverse(_e6), s_52.keys[d_15]);
+    return bitfieldReverse(_e13);
+}
+
+float nyq_pmj02_sample(NyqPmj02_ s_53, uint index_12, uint dim_25) {
+    uint _e3 = nyq_pmj02_sample_u32_(s_53, index_12, dim_25);
+    float _e4 = nyq_fraction_to_f32_(_e3);
+    return _e4;
+}
+
+NyqPmj02Sampler nyq_pmj02_sampler(uvec2 seed_18) {
+    return NyqPmj02Sampler(seed_18, uvec2(0u, 0u), 0u, 0u);
+}
+
+uint nyq_reverse16_(uint m_1) {
+    return (bitfieldReverse((m_1 & 65535u)) >> 16u);
+}
+
+uvec3 nyq_pmj02_keys(inout NyqPmj02Sampler s_54, uvec2 request) {
+    uvec2 _e3 = s_54.pixel_key;
+    uvec2 _e7 = nyq_mul64_(request, uvec2(2135587861u, 2654435769u));
+    uvec2 _e9 = nyq_mix64_((_e3 ^ _e7));
+    uvec2 _e14 = nyq_mix64_((_e9 ^ uvec2(1781543545u, 28781u)));
+    return uvec3(_e9.x, _e9.y, _e14.x);
+}
+
+vec2 nyq_pmj02_keyed_point(uvec3 k_8, uint i_7) {
+    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_7, 0u);
+    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_7, 1u);
+    uint _e10 = nyq_lk_hash(bitfieldReverse(_e4), k_8.y);
+    float _e11 = nyq_rev_to_f32_(_e10);
+    uint _e14 = nyq_lk_hash(bitfieldReverse(_e7), k_8.z);
+    float _e15 = nyq_rev_to_f32_(_e14);
+    return vec2(_e11, _e15);
+}
+
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_55, uvec3 k_9) {
+    uint _e3 = s_55.index_rev;
+    uint _e5 = nyq_lk_hash(_e3, k_9.x);
+    return (_e5 >> 16u);
+}
+
+void nyq_pmj02_start(inout NyqPmj02Sampler s_56, uvec2 pixel_13, uint sample_index_11, uint dim_26) {
+    uvec2 _e6 = s_56.seed;
+    uvec2 _e10 = nyq_hash3_(pixel_13, _e6, uvec2(1835675698u, 112u));
+    s_56.pixel_key = _e10;
+    uint _e12 = nyq_reverse16_(sample_index_11);
+    s_56.index_rev = (_e12 << 16u);
+    s_56.dim = dim_26;
+    return;
+}
+
+float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_57) {
+    uint d_16 = s_57.dim;
+    s_57.dim = (d_16 + 1u);
+    uvec2 _e6 = nyq_u64_(d_16);
+    uvec2 _e8 = nyq_shl64_(_e6, 1u);
+    uvec2 _e12 = nyq_add64_(_e8, uvec2(1u, 0u));
+    uvec3 _e13 = nyq_pmj02_keys(s_57, _e12);
+    uint _e14 = nyq_pmj02_row(s_57, _e13);
+    uint _e15 = nyq_reverse16_(_e14);
+    uint _e17 = nyq_lk_hash(_e15, _e13.y);
+    float _e18 = nyq_rev_to_f32_(_e17);
+    return _e18;
+}
+
+vec2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_58) {
+    uint d_17 = s_58.dim;
+    s_58.dim = (d_17 + 2u);
+    uvec2 _e6 = nyq_u64_(d_17);
+    uvec2 _e8 = nyq_shl64_(_e6, 1u);
+    uvec3 _e9 = nyq_pmj02_keys(s_58, _e8);
+    if ((d_17 == 0u)) {
+        uint _e13 = s_58.index_rev;
+        uint _e16 = nyq_reverse16_((_e13 >> 16u));
+        vec2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
+        return _e17;
+    }
+    uint _e18 = nyq_pmj02_row(s_58, _e9);
+    uint _e19 = nyq_reverse16_(_e18);
+    vec2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
+    return _e20;
+}
+
+vec2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_59) {
+    uint _e3 = s_59.dim;
+    s_59.dim = max(_e3, 2u);
+    uvec3 _e9 = nyq_pmj02_keys(s_59, uvec2(0u, 0u));
+    uint _e11 = s_59.index_rev;
+    uint _e14 = nyq_reverse16_((_e11 >> 16u));
+    vec2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
+    return _e15;
+}
+
+NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_60, uvec2 pixel_14, uint sample_index_12) {
+    nyq_pmj02_start(s_60, pixel_14, sample_index_12, 0u);
+    vec2 _e4 = nyq_pmj02_get_pixel_2d(s_60);
+    float _e5 = nyq_pmj02_get_1d(s_60);
+    vec2 _e6 = nyq_pmj02_get_2d(s_60);
+    float _e9 = nyq_film_coordinate(pixel_14.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_14.y, _e4.y);
+    vec2 film_4 = vec2(_e9, _e12);
+    return NyqCameraSample(film_4, _e6, _e5);
+}
+
+uvec4 nyq_fill_request(uint i_8) {
     uint _e3 = _group_0_binding_1_cs.implicit;
     if ((_e3 == 0u)) {
-        uvec4 _e8 = _group_0_binding_2_cs[i_6];
+        uvec4 _e8 = _group_0_binding_2_cs[i_8];
         return _e8;
     }
     uint _e11 = _group_0_binding_1_cs.first;
-    uint n_6 = (_e11 + i_6);
+    uint n_6 = (_e11 + i_8);
     uint _e15 = _group_0_binding_1_cs.spp;
-    uint pixel_13 = (n_6 / _e15);
+    uint pixel_15 = (n_6 / _e15);
     uint _e20 = _group_0_binding_1_cs.resolution.x;
     uint _e25 = _group_0_binding_1_cs.resolution.x;
     uint _e29 = _group_0_binding_1_cs.spp;
-    return uvec4((pixel_13 % _e20), (pixel_13 / _e25), (n_6 % _e29), 5u);
+    return uvec4((pixel_15 % _e20), (pixel_15 / _e25), (n_6 % _e29), 5u);
 }
 
 void nyq_fill_camera(uint out_2, NyqCameraSample c_2) {
@@ -1542,17 +1739,19 @@ void main() {
     NyqRandomSampler s_2 = NyqRandomSampler(uvec2(0u), uvec2(0u), NyqPcg32_(uvec2(0u)), 0u);
     NyqLatticeSampler s_3 = NyqLatticeSampler(0u, 0u, 0u, uvec2(0u), uvec2(0u), 0u, 0u);
     NyqStratifiedSampler s_4 = NyqStratifiedSampler(0u, 0u, 0u, vec3(0.0), 0u, uvec2(0u), uvec2(0u), uvec2(0u), 0u, 0u);
+    NyqPmj02Sampler s_5 = NyqPmj02Sampler(uvec2(0u), uvec2(0u), 0u, 0u);
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
-    uint i_7 = id.x;
+    uint k_3 = 0u;
+    uint i_9 = id.x;
     uint _e4 = _group_0_binding_1_cs.count;
-    if ((i_7 >= _e4)) {
+    if ((i_9 >= _e4)) {
         return;
     }
-    uvec4 _e6 = nyq_fill_request(i_7);
-    uvec2 pixel_14 = _e6.xy;
-    uint out_4 = (8u * i_7);
+    uvec4 _e6 = nyq_fill_request(i_9);
+    uvec2 pixel_16 = _e6.xy;
+    uint out_4 = (8u * i_9);
     uint _e12 = _group_0_binding_1_cs.kind;
     switch(_e12) {
         case 0u: {
@@ -1560,9 +1759,9 @@ void main() {
             uint _e18 = _group_0_binding_1_cs.frame;
             NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_14, _e6.z);
+            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e22);
-            nyq_owen_sobol_start(s, pixel_14, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_16, _e6.z, _e6.w);
             float _e25 = nyq_owen_sobol_get_1d(s);
             vec2 _e26 = nyq_owen_sobol_get_2d(s);
             nyq_fill_values(out_4, _e25, _e26);
@@ -1575,9 +1774,9 @@ void main() {
             uvec2 _e38 = _group_0_binding_1_cs.seed;
             NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_14, _e6.z);
+            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e42);
-            nyq_zsobol_start(s_1, pixel_14, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_16, _e6.z, _e6.w);
             float _e45 = nyq_zsobol_get_1d(s_1);
             vec2 _e46 = nyq_zsobol_get_2d(s_1);
             nyq_fill_values(out_4, _e45, _e46);
@@ -1587,9 +1786,9 @@ void main() {
             uvec2 _e49 = _group_0_binding_1_cs.seed;
             NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_14, _e6.z);
+            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e53);
-            nyq_random_start(s_2, pixel_14, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_16, _e6.z, _e6.w);
             float _e56 = nyq_random_get_1d(s_2);
             vec2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_4, _e56, _e57);
@@ -1602,9 +1801,9 @@ void main() {
             uvec2 _e69 = _group_0_binding_1_cs.seed;
             NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_14, _e6.z);
+            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e73);
-            nyq_lattice_start(s_3, pixel_14, _e6.z, _e6.w);
+            nyq_lattice_start(s_3, pixel_16, _e6.z, _e6.w);
             float _e76 = nyq_lattice_get_1d(s_3);
             vec2 _e77 = nyq_lattice_get_2d(s_3);
             nyq_fill_values(out_4, _e76, _e77);
@@ -1617,89 +1816,130 @@ void main() {
             uvec2 _e91 = _group_0_binding_1_cs.seed;
             NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
             s_4 = _e92;
-            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_14, _e6.z);
+            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e95);
-            nyq_stratified_start(s_4, pixel_14, _e6.z, _e6.w);
+            nyq_stratified_start(s_4, pixel_16, _e6.z, _e6.w);
             float _e98 = nyq_stratified_get_1d(s_4);
             vec2 _e99 = nyq_stratified_get_2d(s_4);
             nyq_fill_values(out_4, _e98, _e99);
             return;
         }
+        case 5u: {
+            uvec2 _e102 = _group_0_binding_1_cs.seed;
+            NyqPmj02Sampler _e103 = nyq_pmj02_sampler(_e102);
+            s_5 = _e103;
+            NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_16, _e6.z);
+            nyq_fill_camera(out_4, _e106);
+            nyq_pmj02_start(s_5, pixel_16, _e6.z, _e6.w);
+            float _e109 = nyq_pmj02_get_1d(s_5);
+            vec2 _e110 = nyq_pmj02_get_2d(s_5);
+            nyq_fill_values(out_4, _e109, _e110);
+            return;
+        }
         case 16u: {
-            uint _e102 = _group_0_binding_1_cs.dims;
-            uint _e105 = _group_0_binding_1_cs.scramble;
-            uvec2 _e110 = _group_0_binding_1_cs.seed;
-            NyqSobol _e111 = nyq_sobol(_e102, (_e105 != 0u), _e110);
+            uint _e113 = _group_0_binding_1_cs.dims;
+            uint _e116 = _group_0_binding_1_cs.scramble;
+            uvec2 _e121 = _group_0_binding_1_cs.seed;
+            NyqSobol _e122 = nyq_sobol(_e113, (_e116 != 0u), _e121);
             bool loop_init_9 = true;
             while(true) {
                 if (!loop_init_9) {
-                    uint _e139 = k;
-                    k = (_e139 + 1u);
+                    uint _e150 = k;
+                    k = (_e150 + 1u);
                 }
                 loop_init_9 = false;
-                uint _e114 = k;
-                if ((_e114 < 4u)) {
+                uint _e125 = k;
+                if ((_e125 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e118 = k;
-                    uint _e123 = k;
-                    uint _e125 = nyq_sobol_sample_u32_(_e111, _e6.z, (_e6.w + _e123));
-                    _group_0_binding_3_cs[(out_4 + _e118)] = _e125;
                     uint _e129 = k;
                     uint _e134 = k;
-                    float _e136 = nyq_sobol_sample(_e111, _e6.z, (_e6.w + _e134));
-                    _group_0_binding_3_cs[((out_4 + 4u) + _e129)] = floatBitsToUint(_e136);
+                    uint _e136 = nyq_sobol_sample_u32_(_e122, _e6.z, (_e6.w + _e134));
+                    _group_0_binding_3_cs[(out_4 + _e129)] = _e136;
+                    uint _e140 = k;
+                    uint _e145 = k;
+                    float _e147 = nyq_sobol_sample(_e122, _e6.z, (_e6.w + _e145));
+                    _group_0_binding_3_cs[((out_4 + 4u) + _e140)] = floatBitsToUint(_e147);
                 }
             }
             return;
         }
         case 17u: {
-            uint _e143 = _group_0_binding_1_cs.dims;
-            uvec2 _e146 = _group_0_binding_1_cs.seed;
-            NyqOwenSobol _e147 = nyq_owen_sobol(_e143, _e146);
-            vec4 _e150 = nyq_owen_sobol_sample_4d(_e147, _e6.z, _e6.w);
+            uint _e154 = _group_0_binding_1_cs.dims;
+            uvec2 _e157 = _group_0_binding_1_cs.seed;
+            NyqOwenSobol _e158 = nyq_owen_sobol(_e154, _e157);
+            vec4 _e161 = nyq_owen_sobol_sample_4d(_e158, _e6.z, _e6.w);
             bool loop_init_10 = true;
             while(true) {
                 if (!loop_init_10) {
-                    uint _e175 = k_1;
-                    k_1 = (_e175 + 1u);
+                    uint _e186 = k_1;
+                    k_1 = (_e186 + 1u);
                 }
                 loop_init_10 = false;
-                uint _e153 = k_1;
-                if ((_e153 < 4u)) {
+                uint _e164 = k_1;
+                if ((_e164 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e157 = k_1;
-                    uint _e162 = k_1;
-                    uint _e164 = nyq_owen_sobol_sample_u32_(_e147, _e6.z, (_e6.w + _e162));
-                    _group_0_binding_3_cs[(out_4 + _e157)] = _e164;
                     uint _e168 = k_1;
-                    uint _e171 = k_1;
-                    _group_0_binding_3_cs[((out_4 + 4u) + _e168)] = floatBitsToUint(_e150[_e171]);
+                    uint _e173 = k_1;
+                    uint _e175 = nyq_owen_sobol_sample_u32_(_e158, _e6.z, (_e6.w + _e173));
+                    _group_0_binding_3_cs[(out_4 + _e168)] = _e175;
+                    uint _e179 = k_1;
+                    uint _e182 = k_1;
+                    _group_0_binding_3_cs[((out_4 + 4u) + _e179)] = floatBitsToUint(_e161[_e182]);
+                }
+            }
+            return;
+        }
+        case 18u: {
+            uint _e190 = _group_0_binding_1_cs.scramble;
+            uvec2 _e195 = _group_0_binding_1_cs.seed;
+            NyqPmj02_ _e196 = nyq_pmj02_((_e190 != 0u), _e195);
+            bool loop_init_11 = true;
+            while(true) {
+                if (!loop_init_11) {
+                    uint _e224 = k_2;
+                    k_2 = (_e224 + 1u);
+                }
+                loop_init_11 = false;
+                uint _e199 = k_2;
+                if ((_e199 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e203 = k_2;
+                    uint _e208 = k_2;
+                    uint _e210 = nyq_pmj02_sample_u32_(_e196, _e6.z, (_e6.w + _e208));
+                    _group_0_binding_3_cs[(out_4 + _e203)] = _e210;
+                    uint _e214 = k_2;
+                    uint _e219 = k_2;
+                    float _e221 = nyq_pmj02_sample(_e196, _e6.z, (_e6.w + _e219));
+                    _group_0_binding_3_cs[((out_4 + 4u) + _e214)] = floatBitsToUint(_e221);
                 }
             }
             return;
         }
         default: {
-            bool loop_init_11 = true;
+            bool loop_init_12 = true;
             while(true) {
-                if (!loop_init_11) {
-                    uint _e188 = k_2;
-                    k_2 = (_e188 + 1u);
+                if (!loop_init_12) {
+                    uint _e237 = k_3;
+                    k_3 = (_e237 + 1u);
                 }
-                loop_init_11 = false;
-                uint _e179 = k_2;
-                if ((_e179 < 8u)) {
+                loop_init_12 = false;
+                uint _e228 = k_3;
+                if ((_e228 < 8u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e183 = k_2;
-                    _group_0_binding_3_cs[(out_4 + _e183)] = 4294967295u;
+                    uint _e232 = k_3;
+                    _group_0_binding_3_cs[(out_4 + _e232)] = 4294967295u;
                 }
             }
             return;

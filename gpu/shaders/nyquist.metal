@@ -106,6 +106,20 @@ struct NyqStratifiedSampler {
     uint index;
     uint dim;
 };
+struct type_20 {
+    uint inner[16];
+};
+struct NyqPmj02_ {
+    uint scrambled;
+    char _pad1[4];
+    metal::uint2 keys;
+};
+struct NyqPmj02Sampler {
+    metal::uint2 seed;
+    metal::uint2 pixel_key;
+    uint index_rev;
+    uint dim;
+};
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -122,7 +136,7 @@ struct NyqFillJob {
     uint pad0_;
     uint pad1_;
 };
-typedef metal::uint4 type_21[1];
+typedef metal::uint4 type_23[1];
 constant uint NYQ_SCRAMBLE_NONE = 0u;
 constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
@@ -140,13 +154,20 @@ constant uint NYQ_JITTERED = 0u;
 constant uint NYQ_CENTERED = 1u;
 constant metal::uint2 NYQ_DIM_STEP = metal::uint2(2135587861u, 2654435769u);
 constant metal::uint2 NYQ_JITTER_STEP = metal::uint2(668265295u, 3266489917u);
+constant metal::uint2 NYQ_PMJ02_TABLE_SEED = metal::uint2(845116513u, 1886218800u);
+constant metal::uint2 NYQ_WYRAND_INC = metal::uint2(2025677871u, 2692095332u);
+constant metal::uint2 NYQ_WYRAND_FOLD = metal::uint2(2696161499u, 3875765969u);
+constant type_20 NYQ_PMJ02_XOR_X = type_20 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
+constant type_20 NYQ_PMJ02_XOR_Y = type_20 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
 constant uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 constant uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 constant uint NYQ_FILL_RANDOM_SAMPLER = 2u;
 constant uint NYQ_FILL_LATTICE_SAMPLER = 3u;
 constant uint NYQ_FILL_STRATIFIED_SAMPLER = 4u;
+constant uint NYQ_FILL_PMJ02_SAMPLER = 5u;
 constant uint NYQ_FILL_SOBOL = 16u;
 constant uint NYQ_FILL_OWEN_SOBOL = 17u;
+constant uint NYQ_FILL_PMJ02_ = 18u;
 
 metal::uint2 nyq_mul_wide(
     uint a,
@@ -182,16 +203,16 @@ metal::uint2 nyq_add64_(
 
 metal::uint2 nyq_shr64_(
     metal::uint2 a_3,
-    uint s_5
+    uint s_6
 ) {
-    return metal::uint2((a_3.x >> s_5) | (a_3.y << (32u - s_5)), a_3.y >> s_5);
+    return metal::uint2((a_3.x >> s_6) | (a_3.y << (32u - s_6)), a_3.y >> s_6);
 }
 
 metal::uint2 nyq_shl64_(
     metal::uint2 a_4,
-    uint s_6
+    uint s_7
 ) {
-    return metal::uint2(a_4.x << s_6, (a_4.y << s_6) | (a_4.x >> (32u - s_6)));
+    return metal::uint2(a_4.x << s_7, (a_4.y << s_7) | (a_4.x >> (32u - s_7)));
 }
 
 metal::uint2 nyq_u64_(
@@ -287,9 +308,9 @@ float nyq_rev_to_f32_(
 
 uint nyq_shr(
     uint x_3,
-    uint s_7
+    uint s_8
 ) {
-    return (s_7 >= 32u) ? 0u : (x_3 >> (s_7 & 31u));
+    return (s_8 >= 32u) ? 0u : (x_3 >> (s_8 & 31u));
 }
 
 float nyq_film_coordinate(
@@ -297,10 +318,10 @@ float nyq_film_coordinate(
     float offset
 ) {
     float base_1 = static_cast<float>(pixel);
-    float x_16 = base_1 + offset;
+    float x_17 = base_1 + offset;
     float edge = base_1 + 1.0;
-    if (x_16 < edge) {
-        return x_16;
+    if (x_17 < edge) {
+        return x_17;
     }
     float below = as_type<float>(as_type<uint>(edge) - 1u);
     return (below >= base_1) ? below : base_1;
@@ -346,7 +367,7 @@ uint nyq_owen_scramble(
     uint seed_3
 ) {
     uint out = {};
-    uint k_3 = 0u;
+    uint k_4 = 0u;
     uint _e4 = nyq_mix32_(seed_3 ^ 3144134277u);
     out = x_6;
     uint2 loop_bound = uint2(4294967295u);
@@ -355,25 +376,25 @@ uint nyq_owen_scramble(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e41 = k_3;
-            k_3 = _e41 + 1u;
+            uint _e41 = k_4;
+            k_4 = _e41 + 1u;
         }
         loop_init = false;
-        uint _e8 = k_3;
+        uint _e8 = k_4;
         if (_e8 < 32u) {
         } else {
             break;
         }
         {
-            uint _e12 = k_3;
-            uint _e18 = k_3;
+            uint _e12 = k_4;
+            uint _e18 = k_4;
             uint prefix = (_e18 == 0u) ? 0u : (x_6 >> ((32u - _e12) & 31u));
-            uint _e23 = k_3;
+            uint _e23 = k_4;
             metal::uint2 word = metal::uint2((1u << _e23) | prefix, _e4);
             metal::uint2 _e27 = nyq_mix64_(word);
             if ((_e27.y >> 31u) == 1u) {
                 uint _e33 = out;
-                uint _e36 = k_3;
+                uint _e36 = k_4;
                 out = _e33 ^ (1u << (31u - _e36));
             }
         }
@@ -462,17 +483,17 @@ NyqSobol nyq_sobol(
 }
 
 uint nyq_sobol_sample_u32_(
-    NyqSobol s_8,
+    NyqSobol s_9,
     uint index_2,
     uint dim_2,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint shift = 0u;
-    uint d_3 = naga_mod(dim_2, s_8.dims);
-    if (s_8.scrambled != 0u) {
+    uint d_3 = naga_mod(dim_2, s_9.dims);
+    if (s_9.scrambled != 0u) {
         metal::uint2 _e11 = nyq_u64_(d_3);
-        metal::uint2 _e12 = nyq_hash2_(s_8.seed, _e11);
+        metal::uint2 _e12 = nyq_hash2_(s_9.seed, _e11);
         shift = _e12.y;
     }
     uint _e14 = nyq_sobol_u32_(index_2, d_3, nyq_sobol_matrices, _buffer_sizes);
@@ -481,13 +502,13 @@ uint nyq_sobol_sample_u32_(
 }
 
 float nyq_sobol_sample(
-    NyqSobol s_9,
+    NyqSobol s_10,
     uint index_3,
     uint dim_3,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_sobol_sample_u32_(s_9, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_sobol_sample_u32_(s_10, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -533,61 +554,61 @@ NyqOwenSobol nyq_owen_sobol(
 }
 
 uint nyq_owen_sobol_sample_u32_(
-    NyqOwenSobol s_10,
+    NyqOwenSobol s_11,
     uint index_5,
     uint dim_6,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_4 = naga_mod(dim_6, s_10.dims);
-    uint _e6 = nyq_shuffle_rev(index_5, s_10.shuffle_seed);
-    uint _e8 = nyq_dim_seed(s_10.key, d_4);
+    uint d_4 = naga_mod(dim_6, s_11.dims);
+    uint _e6 = nyq_shuffle_rev(index_5, s_11.shuffle_seed);
+    uint _e8 = nyq_dim_seed(s_11.key, d_4);
     uint _e9 = nyq_owen_sobol_rev(_e6, d_4, _e8, nyq_sobol_matrices, _buffer_sizes);
     return metal::reverse_bits(_e9);
 }
 
 float nyq_owen_sobol_sample(
-    NyqOwenSobol s_11,
+    NyqOwenSobol s_12,
     uint index_6,
     uint dim_7,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_owen_sobol_sample_u32_(s_11, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_owen_sobol_sample_u32_(s_12, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
 metal::float4 nyq_owen_sobol_sample_4d(
-    NyqOwenSobol s_12,
+    NyqOwenSobol s_13,
     uint index_7,
     uint first_dim,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 out_1 = {};
-    uint k_4 = 0u;
-    uint _e4 = nyq_shuffle_rev(index_7, s_12.shuffle_seed);
+    uint k_5 = 0u;
+    uint _e4 = nyq_shuffle_rev(index_7, s_13.shuffle_seed);
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e22 = k_4;
-            k_4 = _e22 + 1u;
+            uint _e22 = k_5;
+            k_5 = _e22 + 1u;
         }
         loop_init_1 = false;
-        uint _e8 = k_4;
+        uint _e8 = k_5;
         if (_e8 < 4u) {
         } else {
             break;
         }
         {
-            uint _e11 = k_4;
-            uint d_5 = naga_mod(first_dim + _e11, s_12.dims);
-            uint _e15 = k_4;
-            uint _e18 = nyq_dim_seed(s_12.key, d_5);
+            uint _e11 = k_5;
+            uint d_5 = naga_mod(first_dim + _e11, s_13.dims);
+            uint _e15 = k_5;
+            uint _e18 = nyq_dim_seed(s_13.key, d_5);
             uint _e19 = nyq_owen_sobol_rev(_e4, d_5, _e18, nyq_sobol_matrices, _buffer_sizes);
             float _e20 = nyq_rev_to_f32_(_e19);
             out_1[_e15] = _e20;
@@ -605,33 +626,33 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(
 }
 
 void nyq_owen_sobol_start(
-    thread NyqOwenSobolSampler& s_13,
+    thread NyqOwenSobolSampler& s_14,
     metal::uint2 pixel_1,
     uint sample_index,
     uint dim_8
 ) {
     metal::uint2 _e5 = nyq_u64_(pixel_1.x);
     metal::uint2 _e7 = nyq_u64_(pixel_1.y);
-    uint _e9 = s_13.frame;
+    uint _e9 = s_14.frame;
     metal::uint2 _e10 = nyq_u64_(_e9);
-    metal::uint2 _e12 = s_13.seed;
+    metal::uint2 _e12 = s_14.seed;
     metal::uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_13.key = _e13.x;
+    s_14.key = _e13.x;
     uint _e18 = nyq_mix32_(_e13.y);
     uint _e19 = nyq_shuffle_rev(sample_index, _e18);
-    s_13.r = _e19;
-    s_13.dim = dim_8;
+    s_14.r = _e19;
+    s_14.dim = dim_8;
     return;
 }
 
 float nyq_owen_sobol_value(
-    thread NyqOwenSobolSampler& s_14,
+    thread NyqOwenSobolSampler& s_15,
     uint dim_9,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_14.r;
-    uint _e5 = s_14.key;
+    uint _e3 = s_15.r;
+    uint _e5 = s_15.key;
     uint _e6 = nyq_dim_seed(_e5, dim_9);
     uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6, nyq_sobol_matrices, _buffer_sizes);
     float _e8 = nyq_rev_to_f32_(_e7);
@@ -639,42 +660,42 @@ float nyq_owen_sobol_value(
 }
 
 float nyq_owen_sobol_get_1d(
-    thread NyqOwenSobolSampler& s_15,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_6 = s_15.dim;
-    s_15.dim = d_6 + 1u;
-    float _e6 = nyq_owen_sobol_value(s_15, d_6, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_owen_sobol_get_2d(
     thread NyqOwenSobolSampler& s_16,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_7 = s_16.dim;
-    s_16.dim = d_7 + 2u;
-    float _e6 = nyq_owen_sobol_value(s_16, d_7, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_16, d_7 + 1u, nyq_sobol_matrices, _buffer_sizes);
-    return metal::float2(_e6, _e9);
+    uint d_6 = s_16.dim;
+    s_16.dim = d_6 + 1u;
+    float _e6 = nyq_owen_sobol_value(s_16, d_6, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
 }
 
-metal::float2 nyq_owen_sobol_get_pixel_2d(
+metal::float2 nyq_owen_sobol_get_2d(
     thread NyqOwenSobolSampler& s_17,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_17.dim;
-    s_17.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_value(s_17, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_17, 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_7 = s_17.dim;
+    s_17.dim = d_7 + 2u;
+    float _e6 = nyq_owen_sobol_value(s_17, d_7, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_17, d_7 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_owen_sobol_get_pixel_2d(
+    thread NyqOwenSobolSampler& s_18,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_18.dim;
+    s_18.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_value(s_18, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_18, 1u, nyq_sobol_matrices, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_owen_sobol_camera_sample(
-    thread NyqOwenSobolSampler& s_18,
+    thread NyqOwenSobolSampler& s_19,
     metal::uint2 pixel_2,
     uint sample_index_1,
     device type_4 const& nyq_sobol_matrices,
@@ -682,7 +703,7 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
 ) {
     type_8 v_2 = {};
     uint d_1 = 0u;
-    nyq_owen_sobol_start(s_18, pixel_2, sample_index_1, 0u);
+    nyq_owen_sobol_start(s_19, pixel_2, sample_index_1, 0u);
     uint2 loop_bound_3 = uint2(4294967295u);
     bool loop_init_2 = true;
     while(true) {
@@ -701,20 +722,20 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            float _e13 = nyq_owen_sobol_value(s_18, _e12, nyq_sobol_matrices, _buffer_sizes);
+            float _e13 = nyq_owen_sobol_value(s_19, _e12, nyq_sobol_matrices, _buffer_sizes);
             v_2.inner[_e10] = _e13;
         }
     }
-    s_18.dim = 5u;
+    s_19.dim = 5u;
     float _e21 = v_2.inner[0];
     float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
     float _e25 = v_2.inner[1];
     float _e26 = nyq_film_coordinate(pixel_2.y, _e25);
-    metal::float2 p_1 = metal::float2(_e22, _e26);
+    metal::float2 p_2 = metal::float2(_e22, _e26);
     float _e29 = v_2.inner[3];
     float _e31 = v_2.inner[4];
     float _e34 = v_2.inner[2];
-    return NyqCameraSample {p_1, metal::float2(_e29, _e31), _e34};
+    return NyqCameraSample {p_2, metal::float2(_e29, _e31), _e34};
 }
 
 uint naga_div(uint lhs, uint rhs) {
@@ -755,10 +776,10 @@ uint nyq_spread(
 }
 
 uint nyq_zsobol_morton(
-    NyqZSobolSampler s_19,
+    NyqZSobolSampler s_20,
     metal::uint2 pixel_3
 ) {
-    uint mask = (s_19.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_19.log2_res) & 31u));
+    uint mask = (s_20.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_20.log2_res) & 31u));
     uint _e16 = nyq_spread(pixel_3.x & mask);
     uint _e19 = nyq_spread(pixel_3.y & mask);
     return _e16 | (_e19 << 1u);
@@ -820,14 +841,14 @@ metal::uint2 nyq_zsobol_nested_word(
 }
 
 uint nyq_zsobol_index(
-    NyqZSobolSampler s_20,
+    NyqZSobolSampler s_21,
     uint morton,
     metal::uint2 key_3
 ) {
     uint index_8 = 0u;
     uint i = {};
     uint i_1 = {};
-    i = s_20.digits;
+    i = s_21.digits;
     uint2 loop_bound_4 = uint2(4294967295u);
     bool loop_init_3 = true;
     while(true) {
@@ -839,13 +860,13 @@ uint nyq_zsobol_index(
         }
         loop_init_3 = false;
         uint _e7 = i;
-        if (_e7 > s_20.sample_digits) {
+        if (_e7 > s_21.sample_digits) {
         } else {
             break;
         }
         {
             uint _e11 = i;
-            uint shift_3 = (2u * (_e11 - 1u)) + s_20.odd;
+            uint shift_3 = (2u * (_e11 - 1u)) + s_21.odd;
             uint digit_1 = (morton >> shift_3) & 3u;
             uint _e20 = index_8;
             uint _e23 = nyq_shr(morton, shift_3 + 2u);
@@ -854,10 +875,10 @@ uint nyq_zsobol_index(
             index_8 = _e20 | _e25;
         }
     }
-    uint _e31 = nyq_shr(morton, s_20.log2_spp);
+    uint _e31 = nyq_shr(morton, s_21.log2_spp);
     metal::uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample = morton & (s_20.spp - 1u);
-    i_1 = s_20.sample_digits;
+    uint sample = morton & (s_21.spp - 1u);
+    i_1 = s_21.sample_digits;
     uint2 loop_bound_5 = uint2(4294967295u);
     bool loop_init_4 = true;
     while(true) {
@@ -875,7 +896,7 @@ uint nyq_zsobol_index(
         }
         {
             uint _e43 = i_1;
-            uint shift_4 = (2u * (_e43 - 1u)) + s_20.odd;
+            uint shift_4 = (2u * (_e43 - 1u)) + s_21.odd;
             uint digit_2 = (sample >> shift_4) & 3u;
             uint _e54 = nyq_shr(sample, shift_4 + 2u);
             metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
@@ -885,7 +906,7 @@ uint nyq_zsobol_index(
             index_8 = _e58 | _e61;
         }
     }
-    if (s_20.odd == 1u) {
+    if (s_21.odd == 1u) {
         uint _e69 = index_8;
         metal::uint2 _e75 = nyq_zsobol_nested_word(_e32, sample >> 1u, 0u);
         index_8 = _e69 | ((sample & 1u) ^ (_e75.y >> 31u));
@@ -895,15 +916,15 @@ uint nyq_zsobol_index(
 }
 
 uint nyq_zsobol_sequence_index(
-    NyqZSobolSampler s_21,
+    NyqZSobolSampler s_22,
     metal::uint2 pixel_4,
     uint sample_index_2,
     uint dim_11
 ) {
-    uint _e4 = nyq_zsobol_morton(s_21, pixel_4);
-    uint morton_1 = (_e4 << s_21.log2_spp) | (sample_index_2 & (s_21.spp - 1u));
-    metal::uint2 _e13 = nyq_zsobol_dim_key(s_21.seed, dim_11);
-    uint _e14 = nyq_zsobol_index(s_21, morton_1, _e13);
+    uint _e4 = nyq_zsobol_morton(s_22, pixel_4);
+    uint morton_1 = (_e4 << s_22.log2_spp) | (sample_index_2 & (s_22.spp - 1u));
+    metal::uint2 _e13 = nyq_zsobol_dim_key(s_22.seed, dim_11);
+    uint _e14 = nyq_zsobol_index(s_22, morton_1, _e13);
     return _e14;
 }
 
@@ -921,42 +942,42 @@ uint nyq_zsobol_dim0_(
 }
 
 float nyq_zsobol_value_1d(
-    thread NyqZSobolSampler& s_22,
+    thread NyqZSobolSampler& s_23,
     uint dim_12
 ) {
-    metal::uint2 _e3 = s_22.seed;
+    metal::uint2 _e3 = s_23.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
-    NyqZSobolSampler _e5 = s_22;
-    uint _e7 = s_22.morton;
+    NyqZSobolSampler _e5 = s_23;
+    uint _e7 = s_23.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_22.scramble;
+    uint _e11 = s_23.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
     float _e13 = nyq_fraction_to_f32_(_e12);
     return _e13;
 }
 
 metal::float2 nyq_zsobol_value_2d(
-    thread NyqZSobolSampler& s_23,
+    thread NyqZSobolSampler& s_24,
     uint dim_13,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint y = {};
-    metal::uint2 _e3 = s_23.seed;
+    metal::uint2 _e3 = s_24.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
-    NyqZSobolSampler _e5 = s_23;
-    uint _e7 = s_23.morton;
+    NyqZSobolSampler _e5 = s_24;
+    uint _e7 = s_24.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_23.scramble;
+    uint _e11 = s_24.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_23.scramble;
+    uint _e15 = s_24.scramble;
     if (_e15 == NYQ_SCRAMBLE_FAST_OWEN) {
         uint _e19 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
         uint _e22 = nyq_lk_hash(metal::reverse_bits(_e19), _e4.y);
         y = metal::reverse_bits(_e22);
     } else {
         uint _e25 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
-        uint _e28 = s_23.scramble;
+        uint _e28 = s_24.scramble;
         uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -967,63 +988,63 @@ metal::float2 nyq_zsobol_value_2d(
 }
 
 void nyq_zsobol_start(
-    thread NyqZSobolSampler& s_24,
+    thread NyqZSobolSampler& s_25,
     metal::uint2 pixel_5,
     uint sample_index_3,
     uint dim_14
 ) {
-    NyqZSobolSampler _e5 = s_24;
+    NyqZSobolSampler _e5 = s_25;
     uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
-    uint _e8 = s_24.log2_spp;
-    uint _e11 = s_24.spp;
-    s_24.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
-    s_24.dim = dim_14;
+    uint _e8 = s_25.log2_spp;
+    uint _e11 = s_25.spp;
+    s_25.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
+    s_25.dim = dim_14;
     return;
 }
 
 float nyq_zsobol_get_1d(
-    thread NyqZSobolSampler& s_25
+    thread NyqZSobolSampler& s_26
 ) {
-    uint d_8 = s_25.dim;
-    s_25.dim = d_8 + 1u;
-    float _e6 = nyq_zsobol_value_1d(s_25, d_8);
+    uint d_8 = s_26.dim;
+    s_26.dim = d_8 + 1u;
+    float _e6 = nyq_zsobol_value_1d(s_26, d_8);
     return _e6;
 }
 
 metal::float2 nyq_zsobol_get_2d(
-    thread NyqZSobolSampler& s_26,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_9 = s_26.dim;
-    s_26.dim = d_9 + 2u;
-    metal::float2 _e6 = nyq_zsobol_value_2d(s_26, d_9, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_zsobol_get_pixel_2d(
     thread NyqZSobolSampler& s_27,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_27.dim;
-    s_27.dim = metal::max(_e3, 2u);
-    metal::float2 _e7 = nyq_zsobol_value_2d(s_27, 0u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_9 = s_27.dim;
+    s_27.dim = d_9 + 2u;
+    metal::float2 _e6 = nyq_zsobol_value_2d(s_27, d_9, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_zsobol_get_pixel_2d(
+    thread NyqZSobolSampler& s_28,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_28.dim;
+    s_28.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_zsobol_value_2d(s_28, 0u, nyq_sobol_matrices, _buffer_sizes);
     return _e7;
 }
 
 NyqCameraSample nyq_zsobol_camera_sample(
-    thread NyqZSobolSampler& s_28,
+    thread NyqZSobolSampler& s_29,
     metal::uint2 pixel_6,
     uint sample_index_4,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_zsobol_start(s_28, pixel_6, sample_index_4, 0u);
-    metal::float2 _e5 = nyq_zsobol_value_2d(s_28, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e7 = nyq_zsobol_value_1d(s_28, 2u);
-    metal::float2 _e9 = nyq_zsobol_value_2d(s_28, 3u, nyq_sobol_matrices, _buffer_sizes);
-    s_28.dim = 5u;
+    nyq_zsobol_start(s_29, pixel_6, sample_index_4, 0u);
+    metal::float2 _e5 = nyq_zsobol_value_2d(s_29, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e7 = nyq_zsobol_value_1d(s_29, 2u);
+    metal::float2 _e9 = nyq_zsobol_value_2d(s_29, 3u, nyq_sobol_matrices, _buffer_sizes);
+    s_29.dim = 5u;
     float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
     float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
     metal::float2 film = metal::float2(_e14, _e17);
@@ -1048,9 +1069,9 @@ uint nyq_pcg32_next(
     g.state = _e7;
     metal::uint2 _e9 = nyq_shr64_(old, 18u);
     metal::uint2 _e12 = nyq_shr64_(_e9 ^ old, 27u);
-    uint x_17 = _e12.x;
+    uint x_18 = _e12.x;
     uint rot = old.y >> 27u;
-    return (x_17 >> rot) | (x_17 << ((32u - rot) & 31u));
+    return (x_18 >> rot) | (x_18 << ((32u - rot) & 31u));
 }
 
 void nyq_pcg32_advance(
@@ -1132,11 +1153,11 @@ NyqRandomSampler nyq_random_sampler(
 }
 
 NyqPcg32_ nyq_random_at(
-    thread NyqRandomSampler& s_29,
+    thread NyqRandomSampler& s_30,
     uint dim_15
 ) {
     NyqPcg32_ g_2 = {};
-    metal::uint2 _e3 = s_29.base;
+    metal::uint2 _e3 = s_30.base;
     NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
     uint d_10 = dim_15 & 65535u;
@@ -1148,87 +1169,87 @@ NyqPcg32_ nyq_random_at(
 }
 
 void nyq_random_start(
-    thread NyqRandomSampler& s_30,
+    thread NyqRandomSampler& s_31,
     metal::uint2 pixel_7,
     uint sample_index_5,
     uint dim_16
 ) {
-    metal::uint2 _e5 = s_30.seed;
+    metal::uint2 _e5 = s_31.seed;
     metal::uint2 _e7 = nyq_u64_(1918987876u);
     metal::uint2 _e8 = nyq_hash3_(pixel_7, _e5, _e7);
     metal::uint2 golden_2 = metal::uint2(2135587861u, 2654435769u);
     metal::uint2 _e13 = nyq_u64_(sample_index_5);
     metal::uint2 _e14 = nyq_mul64_(_e13, golden_2);
     metal::uint2 _e16 = nyq_mix64_(_e8 ^ _e14);
-    s_30.base = _e16;
-    s_30.dim = dim_16;
-    NyqPcg32_ _e19 = nyq_random_at(s_30, dim_16);
-    s_30.rng = _e19;
+    s_31.base = _e16;
+    s_31.dim = dim_16;
+    NyqPcg32_ _e19 = nyq_random_at(s_31, dim_16);
+    s_31.rng = _e19;
     return;
 }
 
 float nyq_random_get_1d(
-    thread NyqRandomSampler& s_31
+    thread NyqRandomSampler& s_32
 ) {
     NyqPcg32_ g_3 = {};
-    NyqPcg32_ _e2 = s_31.rng;
+    NyqPcg32_ _e2 = s_32.rng;
     g_3 = _e2;
     uint _e4 = nyq_pcg32_next(g_3);
     float _e5 = nyq_unit_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_31.rng = _e7;
-    uint _e9 = s_31.dim;
-    s_31.dim = _e9 + 1u;
-    uint _e13 = s_31.dim;
+    s_32.rng = _e7;
+    uint _e9 = s_32.dim;
+    s_32.dim = _e9 + 1u;
+    uint _e13 = s_32.dim;
     if ((_e13 & 65535u) == 0u) {
-        NyqPcg32_ _e20 = nyq_random_at(s_31, 0u);
-        s_31.rng = _e20;
+        NyqPcg32_ _e20 = nyq_random_at(s_32, 0u);
+        s_32.rng = _e20;
     }
     return _e5;
 }
 
 metal::float2 nyq_random_get_2d(
-    thread NyqRandomSampler& s_32
+    thread NyqRandomSampler& s_33
 ) {
-    float _e1 = nyq_random_get_1d(s_32);
-    float _e2 = nyq_random_get_1d(s_32);
+    float _e1 = nyq_random_get_1d(s_33);
+    float _e2 = nyq_random_get_1d(s_33);
     return metal::float2(_e1, _e2);
 }
 
 metal::float2 nyq_random_get_pixel_2d(
-    thread NyqRandomSampler& s_33
+    thread NyqRandomSampler& s_34
 ) {
     NyqPcg32_ g_4 = {};
-    uint _e2 = s_33.dim;
+    uint _e2 = s_34.dim;
     if (_e2 == 0u) {
-        metal::float2 _e5 = nyq_random_get_2d(s_33);
+        metal::float2 _e5 = nyq_random_get_2d(s_34);
         return _e5;
     }
-    NyqPcg32_ _e7 = nyq_random_at(s_33, 0u);
+    NyqPcg32_ _e7 = nyq_random_at(s_34, 0u);
     g_4 = _e7;
     uint _e9 = nyq_pcg32_next(g_4);
     float _e10 = nyq_unit_f32_(_e9);
     uint _e11 = nyq_pcg32_next(g_4);
     float _e12 = nyq_unit_f32_(_e11);
-    metal::float2 p_2 = metal::float2(_e10, _e12);
-    uint _e15 = s_33.dim;
+    metal::float2 p_3 = metal::float2(_e10, _e12);
+    uint _e15 = s_34.dim;
     if (_e15 < 2u) {
-        s_33.dim = 2u;
+        s_34.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_33.rng = _e21;
+        s_34.rng = _e21;
     }
-    return p_2;
+    return p_3;
 }
 
 NyqCameraSample nyq_random_camera_sample(
-    thread NyqRandomSampler& s_34,
+    thread NyqRandomSampler& s_35,
     metal::uint2 pixel_8,
     uint sample_index_6
 ) {
-    nyq_random_start(s_34, pixel_8, sample_index_6, 0u);
-    metal::float2 _e4 = nyq_random_get_pixel_2d(s_34);
-    float _e5 = nyq_random_get_1d(s_34);
-    metal::float2 _e6 = nyq_random_get_2d(s_34);
+    nyq_random_start(s_35, pixel_8, sample_index_6, 0u);
+    metal::float2 _e4 = nyq_random_get_pixel_2d(s_35);
+    float _e5 = nyq_random_get_1d(s_35);
+    metal::float2 _e6 = nyq_random_get_2d(s_35);
     float _e9 = nyq_film_coordinate(pixel_8.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_8.y, _e4.y);
     metal::float2 film_1 = metal::float2(_e9, _e12);
@@ -1350,41 +1371,41 @@ NyqLatticeSampler nyq_lattice_sampler(
 }
 
 float nyq_lattice_value(
-    thread NyqLatticeSampler& s_35,
+    thread NyqLatticeSampler& s_36,
     uint dim_17
 ) {
     metal::uint2 base = {};
     uint g_6 = {};
-    uint n_3 = s_35.n;
-    uint _e5 = s_35.index;
-    uint k_7 = naga_mod(_e5, n_3);
+    uint n_3 = s_36.n;
+    uint _e5 = s_36.index;
+    uint k_10 = naga_mod(_e5, n_3);
     uint component = naga_mod(dim_17, 2u);
-    uint _e11 = s_35.lattice;
+    uint _e11 = s_36.lattice;
     switch(_e11) {
         case 2u: {
-            metal::uint2 _e15 = nyq_u64_(k_7);
+            metal::uint2 _e15 = nyq_u64_(k_10);
             metal::uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA.inner[component]);
             metal::uint2 _e19 = nyq_add64_(metal::uint2(0u, 2147483648u), _e18);
             base = _e19;
             break;
         }
         default: {
-            uint _e21 = s_35.g;
+            uint _e21 = s_36.g;
             g_6 = _e21;
             if (component == 0u) {
                 g_6 = naga_mod(1u, n_3);
             }
             uint _e27 = g_6;
-            metal::uint2 _e28 = nyq_mul_wide(k_7, _e27);
+            metal::uint2 _e28 = nyq_mul_wide(k_10, _e27);
             uint _e29 = nyq_mod64_(_e28, n_3);
             metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_3);
             base = _e30;
             break;
         }
     }
-    metal::uint2 _e32 = s_35.pixel;
+    metal::uint2 _e32 = s_36.pixel;
     metal::uint2 _e35 = nyq_u64_(naga_div(dim_17, 2u));
-    metal::uint2 _e37 = s_35.seed;
+    metal::uint2 _e37 = s_36.seed;
     metal::uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     metal::uint2 _e39 = base;
     metal::uint2 _e40 = nyq_u64_(component);
@@ -1395,55 +1416,55 @@ float nyq_lattice_value(
 }
 
 void nyq_lattice_start(
-    thread NyqLatticeSampler& s_36,
+    thread NyqLatticeSampler& s_37,
     metal::uint2 pixel_9,
     uint sample_index_7,
     uint dim_18
 ) {
-    s_36.pixel = pixel_9;
-    s_36.index = sample_index_7;
-    s_36.dim = dim_18;
+    s_37.pixel = pixel_9;
+    s_37.index = sample_index_7;
+    s_37.dim = dim_18;
     return;
 }
 
 float nyq_lattice_get_1d(
-    thread NyqLatticeSampler& s_37
+    thread NyqLatticeSampler& s_38
 ) {
-    uint d_11 = s_37.dim;
-    s_37.dim = d_11 + 1u;
-    float _e6 = nyq_lattice_value(s_37, d_11);
+    uint d_11 = s_38.dim;
+    s_38.dim = d_11 + 1u;
+    float _e6 = nyq_lattice_value(s_38, d_11);
     return _e6;
 }
 
 metal::float2 nyq_lattice_get_2d(
-    thread NyqLatticeSampler& s_38
+    thread NyqLatticeSampler& s_39
 ) {
-    uint d_12 = s_38.dim;
-    s_38.dim = d_12 + 2u;
-    float _e6 = nyq_lattice_value(s_38, d_12);
-    float _e9 = nyq_lattice_value(s_38, d_12 + 1u);
+    uint d_12 = s_39.dim;
+    s_39.dim = d_12 + 2u;
+    float _e6 = nyq_lattice_value(s_39, d_12);
+    float _e9 = nyq_lattice_value(s_39, d_12 + 1u);
     return metal::float2(_e6, _e9);
 }
 
 metal::float2 nyq_lattice_get_pixel_2d(
-    thread NyqLatticeSampler& s_39
+    thread NyqLatticeSampler& s_40
 ) {
-    uint _e3 = s_39.dim;
-    s_39.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_lattice_value(s_39, 0u);
-    float _e9 = nyq_lattice_value(s_39, 1u);
+    uint _e3 = s_40.dim;
+    s_40.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_lattice_value(s_40, 0u);
+    float _e9 = nyq_lattice_value(s_40, 1u);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_lattice_camera_sample(
-    thread NyqLatticeSampler& s_40,
+    thread NyqLatticeSampler& s_41,
     metal::uint2 pixel_10,
     uint sample_index_8
 ) {
-    nyq_lattice_start(s_40, pixel_10, sample_index_8, 0u);
-    metal::float2 _e4 = nyq_lattice_get_pixel_2d(s_40);
-    float _e5 = nyq_lattice_get_1d(s_40);
-    metal::float2 _e6 = nyq_lattice_get_2d(s_40);
+    nyq_lattice_start(s_41, pixel_10, sample_index_8, 0u);
+    metal::float2 _e4 = nyq_lattice_get_pixel_2d(s_41);
+    float _e5 = nyq_lattice_get_1d(s_41);
+    metal::float2 _e6 = nyq_lattice_get_2d(s_41);
     float _e9 = nyq_film_coordinate(pixel_10.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_10.y, _e4.y);
     metal::float2 film_2 = metal::float2(_e9, _e12);
@@ -1494,9 +1515,9 @@ float nyq_recip_f32_(
     bool local_4 = {};
     bool local_5 = {};
     uint bits_2 = as_type<uint>(x_12);
-    uint m_1 = (bits_2 & 8388607u) | 8388608u;
+    uint m_2 = (bits_2 & 8388607u) | 8388608u;
     int e = as_type<int>(as_type<uint>(static_cast<int>(bits_2 >> 23u)) - as_type<uint>(127));
-    if (m_1 == 8388608u) {
+    if (m_2 == 8388608u) {
         return as_type<float>(static_cast<uint>(as_type<int>(as_type<uint>(127) - as_type<uint>(e))) << 23u);
     }
     uint2 loop_bound_9 = uint2(4294967295u);
@@ -1518,9 +1539,9 @@ float nyq_recip_f32_(
             uint _e28 = q_1;
             q_1 = _e28 << 1u;
             uint _e31 = r_4;
-            if (_e31 >= m_1) {
+            if (_e31 >= m_2) {
                 uint _e33 = r_4;
-                r_4 = _e33 - m_1;
+                r_4 = _e33 - m_2;
                 uint _e35 = q_1;
                 q_1 = _e35 | 1u;
             }
@@ -1556,32 +1577,32 @@ float nyq_recip_f32_(
 
 metal::uint3 nyq_mul64x32_(
     metal::uint2 r_5,
-    uint k_5
+    uint k_6
 ) {
-    metal::uint2 _e3 = nyq_mul_wide(r_5.x, k_5);
-    metal::uint2 _e5 = nyq_mul_wide(r_5.y, k_5);
+    metal::uint2 _e3 = nyq_mul_wide(r_5.x, k_6);
+    metal::uint2 _e5 = nyq_mul_wide(r_5.y, k_6);
     metal::uint2 _e9 = nyq_add64_(_e5, metal::uint2(_e3.y, 0u));
     return metal::uint3(_e3.x, _e9.x, _e9.y);
 }
 
 uint nyq_nibble(
     metal::uint2 t,
-    uint s_41
+    uint s_42
 ) {
-    return (((s_41 >= 32u) ? t.y : t.x) >> (s_41 & 31u)) & 15u;
+    return (((s_42 >= 32u) ? t.y : t.x) >> (s_42 & 31u)) & 15u;
 }
 
 metal::uint2 nyq_shl64_any(
     metal::uint2 x_13,
-    uint s_42
+    uint s_43
 ) {
-    if (s_42 == 0u) {
+    if (s_43 == 0u) {
         return x_13;
     }
-    if (s_42 >= 32u) {
-        return metal::uint2(0u, x_13.x << (s_42 - 32u));
+    if (s_43 >= 32u) {
+        return metal::uint2(0u, x_13.x << (s_43 - 32u));
     }
-    metal::uint2 _e12 = nyq_shl64_(x_13, s_42);
+    metal::uint2 _e12 = nyq_shl64_(x_13, s_43);
     return _e12;
 }
 
@@ -1591,7 +1612,7 @@ metal::uint2 nyq_packed_table(
 ) {
     metal::uint2 t_1 = metal::uint2(1985229328u, 4275878552u);
     metal::uint2 r_6 = {};
-    uint k_6 = {};
+    uint k_7 = {};
     if (n_2 <= 4u) {
         if (n_2 < 2u) {
             return metal::uint2(0u, 0u);
@@ -1613,39 +1634,39 @@ metal::uint2 nyq_packed_table(
         }
     }
     r_6 = r_in;
-    k_6 = n_2;
+    k_7 = n_2;
     uint2 loop_bound_10 = uint2(4294967295u);
     bool loop_init_8 = true;
     while(true) {
         if (metal::all(loop_bound_10 == uint2(0u))) { break; }
         loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
         if (!loop_init_8) {
-            uint _e94 = k_6;
-            k_6 = _e94 - 1u;
+            uint _e94 = k_7;
+            k_7 = _e94 - 1u;
         }
         loop_init_8 = false;
-        uint _e62 = k_6;
+        uint _e62 = k_7;
         if (_e62 > 1u) {
         } else {
             break;
         }
         {
             metal::uint2 _e65 = r_6;
-            uint _e66 = k_6;
+            uint _e66 = k_7;
             metal::uint3 _e67 = nyq_mul64x32_(_e65, _e66);
             uint j_1 = _e67.z;
             r_6 = _e67.xy;
-            uint _e71 = k_6;
+            uint _e71 = k_7;
             uint hi = 4u * (_e71 - 1u);
             uint lo = 4u * j_1;
             metal::uint2 _e77 = t_1;
             uint _e78 = nyq_nibble(_e77, hi);
             metal::uint2 _e79 = t_1;
             uint _e80 = nyq_nibble(_e79, lo);
-            uint x_18 = (_e78 ^ _e80) & 15u;
+            uint x_19 = (_e78 ^ _e80) & 15u;
             metal::uint2 _e84 = t_1;
-            metal::uint2 _e87 = nyq_shl64_any(metal::uint2(x_18, 0u), hi);
-            metal::uint2 _e90 = nyq_shl64_any(metal::uint2(x_18, 0u), lo);
+            metal::uint2 _e87 = nyq_shl64_any(metal::uint2(x_19, 0u), hi);
+            metal::uint2 _e90 = nyq_shl64_any(metal::uint2(x_19, 0u), lo);
             t_1 = _e84 ^ (_e87 | _e90);
         }
     }
@@ -1761,29 +1782,29 @@ uint nyq_stratified_dim_key(
 }
 
 uint nyq_stratified_stratum(
-    thread NyqStratifiedSampler& s_43,
+    thread NyqStratifiedSampler& s_44,
     uint dim_20
 ) {
     if (dim_20 == 0u) {
-        uint _e5 = s_43.index;
-        uint _e7 = s_43.spp;
+        uint _e5 = s_44.index;
+        uint _e7 = s_44.spp;
         return naga_mod(_e5, _e7);
     }
-    uint _e10 = s_43.spp;
-    metal::uint2 _e12 = s_43.pixel_key;
+    uint _e10 = s_44.spp;
+    metal::uint2 _e12 = s_44.pixel_key;
     uint _e13 = nyq_stratified_dim_key(_e12, dim_20);
     NyqPermutation _e14 = nyq_permutation(_e10, _e13);
-    uint _e16 = s_43.index;
+    uint _e16 = s_44.index;
     uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
 metal::float2 nyq_stratified_jitters(
-    thread NyqStratifiedSampler& s_44,
+    thread NyqStratifiedSampler& s_45,
     uint dim_21
 ) {
     bool local_7 = {};
-    uint _e3 = s_44.jitter;
+    uint _e3 = s_45.jitter;
     if (_e3 != NYQ_JITTERED) {
         return metal::float2(0.5, 0.5);
     }
@@ -1794,7 +1815,7 @@ metal::float2 nyq_stratified_jitters(
     }
     bool _e17 = local_7;
     if (_e17) {
-        metal::uint2 _e19 = s_44.sample_key;
+        metal::uint2 _e19 = s_45.sample_key;
         metal::uint2 _e24 = nyq_mul64_(metal::uint2(2u, 0u), NYQ_JITTER_STEP);
         metal::uint2 _e26 = nyq_mix64_(_e19 ^ _e24);
         if (dim_21 == 2u) {
@@ -1803,7 +1824,7 @@ metal::float2 nyq_stratified_jitters(
         metal::uint2 _e40 = nyq_shr64_(_e26, 22u);
         return metal::float2(static_cast<float>(_e40.x & 2097151u) * 0.00000047683716, static_cast<float>((_e26.x >> 1u) & 2097151u) * 0.00000047683716);
     }
-    metal::uint2 _e55 = s_44.sample_key;
+    metal::uint2 _e55 = s_45.sample_key;
     metal::uint2 _e56 = nyq_u64_(dim_21);
     metal::uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     metal::uint2 _e60 = nyq_mix64_(_e55 ^ _e58);
@@ -1819,111 +1840,343 @@ float nyq_below_one(
 }
 
 metal::float2 nyq_stratified_cell(
-    thread NyqStratifiedSampler& s_45,
+    thread NyqStratifiedSampler& s_46,
     uint st,
     metal::float2 j
 ) {
-    uint _e4 = s_45.xs;
+    uint _e4 = s_46.xs;
     uint cx = naga_mod(st, _e4);
-    uint _e7 = s_45.xs;
+    uint _e7 = s_46.xs;
     uint cy = naga_div(st, _e7);
     float _e9 = nyq_u32_to_f32_(cx);
-    float _e14 = s_45.inv[0];
+    float _e14 = s_46.inv[0];
     float _e16 = nyq_below_one((_e9 + j.x) * _e14);
     float _e17 = nyq_u32_to_f32_(cy);
-    float _e22 = s_45.inv[1];
+    float _e22 = s_46.inv[1];
     float _e24 = nyq_below_one((_e17 + j.y) * _e22);
     return metal::float2(_e16, _e24);
 }
 
 void nyq_stratified_start(
-    thread NyqStratifiedSampler& s_46,
+    thread NyqStratifiedSampler& s_47,
     metal::uint2 pixel_11,
     uint sample_index_9,
     uint dim_22
 ) {
-    metal::uint2 _e6 = s_46.seed;
+    metal::uint2 _e6 = s_47.seed;
     metal::uint2 _e8 = nyq_u64_(1937011297u);
     metal::uint2 _e9 = nyq_hash3_(pixel_11, _e6, _e8);
-    s_46.pixel_key = _e9;
-    s_46.index = sample_index_9;
-    metal::uint2 _e13 = s_46.pixel_key;
+    s_47.pixel_key = _e9;
+    s_47.index = sample_index_9;
+    metal::uint2 _e13 = s_47.pixel_key;
     metal::uint2 _e14 = nyq_u64_(sample_index_9);
     metal::uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
-    s_46.sample_key = _e13 ^ _e16;
-    s_46.dim = dim_22;
+    s_47.sample_key = _e13 ^ _e16;
+    s_47.dim = dim_22;
     return;
 }
 
 float nyq_stratified_get_1d(
-    thread NyqStratifiedSampler& s_47
+    thread NyqStratifiedSampler& s_48
 ) {
-    uint d_13 = s_47.dim;
-    s_47.dim = d_13 + 1u;
-    uint _e6 = nyq_stratified_stratum(s_47, d_13);
+    uint d_13 = s_48.dim;
+    s_48.dim = d_13 + 1u;
+    uint _e6 = nyq_stratified_stratum(s_48, d_13);
     float _e7 = nyq_u32_to_f32_(_e6);
-    metal::float2 _e8 = nyq_stratified_jitters(s_47, d_13);
-    float _e13 = s_47.inv[2];
+    metal::float2 _e8 = nyq_stratified_jitters(s_48, d_13);
+    float _e13 = s_48.inv[2];
     float _e15 = nyq_below_one((_e7 + _e8.x) * _e13);
     return _e15;
 }
 
 metal::float2 nyq_stratified_get_2d(
-    thread NyqStratifiedSampler& s_48
+    thread NyqStratifiedSampler& s_49
 ) {
-    uint d_14 = s_48.dim;
-    s_48.dim = d_14 + 2u;
-    uint _e6 = nyq_stratified_stratum(s_48, d_14);
-    metal::float2 _e7 = nyq_stratified_jitters(s_48, d_14);
-    metal::float2 _e8 = nyq_stratified_cell(s_48, _e6, _e7);
+    uint d_14 = s_49.dim;
+    s_49.dim = d_14 + 2u;
+    uint _e6 = nyq_stratified_stratum(s_49, d_14);
+    metal::float2 _e7 = nyq_stratified_jitters(s_49, d_14);
+    metal::float2 _e8 = nyq_stratified_cell(s_49, _e6, _e7);
     return _e8;
 }
 
 metal::float2 nyq_stratified_get_pixel_2d(
-    thread NyqStratifiedSampler& s_49
+    thread NyqStratifiedSampler& s_50
 ) {
-    uint _e3 = s_49.dim;
-    s_49.dim = metal::max(_e3, 2u);
-    uint _e7 = nyq_stratified_stratum(s_49, 0u);
-    metal::float2 _e9 = nyq_stratified_jitters(s_49, 0u);
-    metal::float2 _e10 = nyq_stratified_cell(s_49, _e7, _e9);
+    uint _e3 = s_50.dim;
+    s_50.dim = metal::max(_e3, 2u);
+    uint _e7 = nyq_stratified_stratum(s_50, 0u);
+    metal::float2 _e9 = nyq_stratified_jitters(s_50, 0u);
+    metal::float2 _e10 = nyq_stratified_cell(s_50, _e7, _e9);
     return _e10;
 }
 
 NyqCameraSample nyq_stratified_camera_sample(
-    thread NyqStratifiedSampler& s_50,
+    thread NyqStratifiedSampler& s_51,
     metal::uint2 pixel_12,
     uint sample_index_10
 ) {
-    nyq_stratified_start(s_50, pixel_12, sample_index_10, 0u);
-    metal::float2 _e4 = nyq_stratified_get_pixel_2d(s_50);
-    float _e5 = nyq_stratified_get_1d(s_50);
-    metal::float2 _e6 = nyq_stratified_get_2d(s_50);
+    nyq_stratified_start(s_51, pixel_12, sample_index_10, 0u);
+    metal::float2 _e4 = nyq_stratified_get_pixel_2d(s_51);
+    float _e5 = nyq_stratified_get_1d(s_51);
+    metal::float2 _e6 = nyq_stratified_get_2d(s_51);
     float _e9 = nyq_film_coordinate(pixel_12.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_12.y, _e4.y);
     metal::float2 film_3 = metal::float2(_e9, _e12);
     return NyqCameraSample {film_3, _e6, _e5};
 }
 
+metal::uint2 nyq_mul64_high(
+    metal::uint2 a_8,
+    metal::uint2 b_6
+) {
+    metal::uint2 _e4 = nyq_mul_wide(a_8.x, b_6.x);
+    metal::uint2 _e7 = nyq_mul_wide(a_8.x, b_6.y);
+    metal::uint2 _e10 = nyq_mul_wide(a_8.y, b_6.x);
+    metal::uint2 _e13 = nyq_mul_wide(a_8.y, b_6.y);
+    metal::uint2 _e20 = nyq_add64_(metal::uint2(_e4.y, 0u), metal::uint2(_e7.x, 0u));
+    metal::uint2 _e24 = nyq_add64_(_e20, metal::uint2(_e10.x, 0u));
+    metal::uint2 _e28 = nyq_add64_(_e13, metal::uint2(_e7.y, 0u));
+    metal::uint2 _e35 = nyq_add64_(metal::uint2(_e10.y, 0u), metal::uint2(_e24.y, 0u));
+    metal::uint2 _e36 = nyq_add64_(_e28, _e35);
+    return _e36;
+}
+
+metal::uint2 nyq_wyrand(
+    metal::uint2 seed_15,
+    uint i_6
+) {
+    metal::uint2 _e5 = nyq_u64_(i_6 + 1u);
+    metal::uint2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
+    metal::uint2 _e7 = nyq_add64_(seed_15, _e6);
+    metal::uint2 t_2 = _e7 ^ NYQ_WYRAND_FOLD;
+    metal::uint2 _e10 = nyq_mul64_high(_e7, t_2);
+    metal::uint2 _e11 = nyq_mul64_(_e7, t_2);
+    return _e10 ^ _e11;
+}
+
+uint nyq_pmj02_point(
+    metal::uint2 seed_16,
+    uint index_10,
+    uint dim_23
+) {
+    uint x_16 = 0u;
+    uint known = 0u;
+    uint flips = 0u;
+    uint p_1 = {};
+    p_1 = index_10 & 65535u;
+    uint2 loop_bound_12 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        uint _e12 = p_1;
+        if (_e12 != 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e16 = p_1;
+            uint level = 31u - metal::clz(_e16);
+            uint swap = 2147483648u >> level;
+            uint low_1 = swap - 1u;
+            uint _e23 = p_1;
+            metal::uint2 _e24 = nyq_wyrand(seed_16, _e23);
+            uint bits_4 = (dim_23 == 0u) ? _e24.x : _e24.y;
+            uint _e30 = x_16;
+            uint _e32 = known;
+            x_16 = _e30 | ((bits_4 & low_1) & ~(_e32));
+            uint _e36 = known;
+            known = _e36 | low_1;
+            uint _e38 = flips;
+            flips = _e38 ^ swap;
+            uint c_3 = (dim_23 == 0u) ? NYQ_PMJ02_XOR_X.inner[level & 15u] : NYQ_PMJ02_XOR_Y.inner[level & 15u];
+            uint _e51 = p_1;
+            p_1 = (_e51 - (1u << level)) ^ c_3;
+        }
+    }
+    metal::uint2 _e57 = nyq_wyrand(seed_16, 0u);
+    uint _e58 = x_16;
+    uint _e64 = known;
+    x_16 = _e58 | (((dim_23 == 0u) ? _e57.x : _e57.y) & ~(_e64));
+    uint _e68 = x_16;
+    uint _e69 = flips;
+    return _e68 ^ _e69;
+}
+
+NyqPmj02_ nyq_pmj02_(
+    bool scrambled_1,
+    metal::uint2 seed_17
+) {
+    metal::uint2 _e5 = nyq_hash2_(seed_17, metal::uint2(845115255u, 1886218800u));
+    return NyqPmj02_ {scrambled_1 ? 1u : 0u, {}, _e5};
+}
+
+uint nyq_pmj02_sample_u32_(
+    NyqPmj02_ s_52,
+    uint index_11,
+    uint dim_24
+) {
+    uint d_15 = dim_24 & 1u;
+    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_15);
+    if (s_52.scrambled == 0u) {
+        return _e6;
+    }
+    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_52.keys[d_15]);
+    return metal::reverse_bits(_e13);
+}
+
+float nyq_pmj02_sample(
+    NyqPmj02_ s_53,
+    uint index_12,
+    uint dim_25
+) {
+    uint _e3 = nyq_pmj02_sample_u32_(s_53, index_12, dim_25);
+    float _e4 = nyq_fraction_to_f32_(_e3);
+    return _e4;
+}
+
+NyqPmj02Sampler nyq_pmj02_sampler(
+    metal::uint2 seed_18
+) {
+    return NyqPmj02Sampler {seed_18, metal::uint2(0u, 0u), 0u, 0u};
+}
+
+uint nyq_reverse16_(
+    uint m_1
+) {
+    return metal::reverse_bits(m_1 & 65535u) >> 16u;
+}
+
+metal::uint3 nyq_pmj02_keys(
+    thread NyqPmj02Sampler& s_54,
+    metal::uint2 request
+) {
+    metal::uint2 _e3 = s_54.pixel_key;
+    metal::uint2 _e7 = nyq_mul64_(request, metal::uint2(2135587861u, 2654435769u));
+    metal::uint2 _e9 = nyq_mix64_(_e3 ^ _e7);
+    metal::uint2 _e14 = nyq_mix64_(_e9 ^ metal::uint2(1781543545u, 28781u));
+    return metal::uint3(_e9.x, _e9.y, _e14.x);
+}
+
+metal::float2 nyq_pmj02_keyed_point(
+    metal::uint3 k_8,
+    uint i_7
+) {
+    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_7, 0u);
+    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_7, 1u);
+    uint _e10 = nyq_lk_hash(metal::reverse_bits(_e4), k_8.y);
+    float _e11 = nyq_rev_to_f32_(_e10);
+    uint _e14 = nyq_lk_hash(metal::reverse_bits(_e7), k_8.z);
+    float _e15 = nyq_rev_to_f32_(_e14);
+    return metal::float2(_e11, _e15);
+}
+
+uint nyq_pmj02_row(
+    thread NyqPmj02Sampler& s_55,
+    metal::uint3 k_9
+) {
+    uint _e3 = s_55.index_rev;
+    uint _e5 = nyq_lk_hash(_e3, k_9.x);
+    return _e5 >> 16u;
+}
+
+void nyq_pmj02_start(
+    thread NyqPmj02Sampler& s_56,
+    metal::uint2 pixel_13,
+    uint sample_index_11,
+    uint dim_26
+) {
+    metal::uint2 _e6 = s_56.seed;
+    metal::uint2 _e10 = nyq_hash3_(pixel_13, _e6, metal::uint2(1835675698u, 112u));
+    s_56.pixel_key = _e10;
+    uint _e12 = nyq_reverse16_(sample_index_11);
+    s_56.index_rev = _e12 << 16u;
+    s_56.dim = dim_26;
+    return;
+}
+
+float nyq_pmj02_get_1d(
+    thread NyqPmj02Sampler& s_57
+) {
+    uint d_16 = s_57.dim;
+    s_57.dim = d_16 + 1u;
+    metal::uint2 _e6 = nyq_u64_(d_16);
+    metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
+    metal::uint2 _e12 = nyq_add64_(_e8, metal::uint2(1u, 0u));
+    metal::uint3 _e13 = nyq_pmj02_keys(s_57, _e12);
+    uint _e14 = nyq_pmj02_row(s_57, _e13);
+    uint _e15 = nyq_reverse16_(_e14);
+    uint _e17 = nyq_lk_hash(_e15, _e13.y);
+    float _e18 = nyq_rev_to_f32_(_e17);
+    return _e18;
+}
+
+metal::float2 nyq_pmj02_get_2d(
+    thread NyqPmj02Sampler& s_58
+) {
+    uint d_17 = s_58.dim;
+    s_58.dim = d_17 + 2u;
+    metal::uint2 _e6 = nyq_u64_(d_17);
+    metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
+    metal::uint3 _e9 = nyq_pmj02_keys(s_58, _e8);
+    if (d_17 == 0u) {
+        uint _e13 = s_58.index_rev;
+        uint _e16 = nyq_reverse16_(_e13 >> 16u);
+        metal::float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
+        return _e17;
+    }
+    uint _e18 = nyq_pmj02_row(s_58, _e9);
+    uint _e19 = nyq_reverse16_(_e18);
+    metal::float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
+    return _e20;
+}
+
+metal::float2 nyq_pmj02_get_pixel_2d(
+    thread NyqPmj02Sampler& s_59
+) {
+    uint _e3 = s_59.dim;
+    s_59.dim = metal::max(_e3, 2u);
+    metal::uint3 _e9 = nyq_pmj02_keys(s_59, metal::uint2(0u, 0u));
+    uint _e11 = s_59.index_rev;
+    uint _e14 = nyq_reverse16_(_e11 >> 16u);
+    metal::float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
+    return _e15;
+}
+
+NyqCameraSample nyq_pmj02_camera_sample(
+    thread NyqPmj02Sampler& s_60,
+    metal::uint2 pixel_14,
+    uint sample_index_12
+) {
+    nyq_pmj02_start(s_60, pixel_14, sample_index_12, 0u);
+    metal::float2 _e4 = nyq_pmj02_get_pixel_2d(s_60);
+    float _e5 = nyq_pmj02_get_1d(s_60);
+    metal::float2 _e6 = nyq_pmj02_get_2d(s_60);
+    float _e9 = nyq_film_coordinate(pixel_14.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_14.y, _e4.y);
+    metal::float2 film_4 = metal::float2(_e9, _e12);
+    return NyqCameraSample {film_4, _e6, _e5};
+}
+
 metal::uint4 nyq_fill_request(
-    uint i_6,
+    uint i_8,
     constant NyqFillJob& nyq_job,
-    device type_21 const& nyq_requests,
+    device type_23 const& nyq_requests,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = nyq_job.implicit;
     if (_e3 == 0u) {
-        metal::uint4 _e8 = nyq_requests[i_6];
+        metal::uint4 _e8 = nyq_requests[i_8];
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_6 = _e11 + i_6;
+    uint n_6 = _e11 + i_8;
     uint _e15 = nyq_job.spp;
-    uint pixel_13 = naga_div(n_6, _e15);
+    uint pixel_15 = naga_div(n_6, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_13, _e20), naga_div(pixel_13, _e25), naga_mod(n_6, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_15, _e20), naga_div(pixel_15, _e25), naga_mod(n_6, _e29), 5u);
 }
 
 void nyq_fill_camera(
@@ -1959,7 +2212,7 @@ kernel void nyq_fill(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_4 const& nyq_sobol_matrices [[user(fake0)]]
 , constant NyqFillJob& nyq_job [[user(fake0)]]
-, device type_21 const& nyq_requests [[user(fake0)]]
+, device type_23 const& nyq_requests [[user(fake0)]]
 , device type_4& nyq_values [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -1968,17 +2221,19 @@ kernel void nyq_fill(
     NyqRandomSampler s_2 = {};
     NyqLatticeSampler s_3 = {};
     NyqStratifiedSampler s_4 = {};
+    NyqPmj02Sampler s_5 = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
-    uint i_7 = id.x;
+    uint k_3 = 0u;
+    uint i_9 = id.x;
     uint _e4 = nyq_job.count;
-    if (i_7 >= _e4) {
+    if (i_9 >= _e4) {
         return;
     }
-    metal::uint4 _e6 = nyq_fill_request(i_7, nyq_job, nyq_requests, _buffer_sizes);
-    metal::uint2 pixel_14 = _e6.xy;
-    uint out_4 = 8u * i_7;
+    metal::uint4 _e6 = nyq_fill_request(i_9, nyq_job, nyq_requests, _buffer_sizes);
+    metal::uint2 pixel_16 = _e6.xy;
+    uint out_4 = 8u * i_9;
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -1986,9 +2241,9 @@ kernel void nyq_fill(
             uint _e18 = nyq_job.frame;
             NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_14, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_16, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e22, nyq_values, _buffer_sizes);
-            nyq_owen_sobol_start(s, pixel_14, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_16, _e6.z, _e6.w);
             float _e25 = nyq_owen_sobol_get_1d(s, nyq_sobol_matrices, _buffer_sizes);
             metal::float2 _e26 = nyq_owen_sobol_get_2d(s, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e25, _e26, nyq_values, _buffer_sizes);
@@ -2001,9 +2256,9 @@ kernel void nyq_fill(
             metal::uint2 _e38 = nyq_job.seed;
             NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_14, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_16, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e42, nyq_values, _buffer_sizes);
-            nyq_zsobol_start(s_1, pixel_14, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_16, _e6.z, _e6.w);
             float _e45 = nyq_zsobol_get_1d(s_1);
             metal::float2 _e46 = nyq_zsobol_get_2d(s_1, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e45, _e46, nyq_values, _buffer_sizes);
@@ -2013,9 +2268,9 @@ kernel void nyq_fill(
             metal::uint2 _e49 = nyq_job.seed;
             NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_14, _e6.z);
+            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e53, nyq_values, _buffer_sizes);
-            nyq_random_start(s_2, pixel_14, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_16, _e6.z, _e6.w);
             float _e56 = nyq_random_get_1d(s_2);
             metal::float2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_4, _e56, _e57, nyq_values, _buffer_sizes);
@@ -2028,9 +2283,9 @@ kernel void nyq_fill(
             metal::uint2 _e69 = nyq_job.seed;
             NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_14, _e6.z);
+            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e73, nyq_values, _buffer_sizes);
-            nyq_lattice_start(s_3, pixel_14, _e6.z, _e6.w);
+            nyq_lattice_start(s_3, pixel_16, _e6.z, _e6.w);
             float _e76 = nyq_lattice_get_1d(s_3);
             metal::float2 _e77 = nyq_lattice_get_2d(s_3);
             nyq_fill_values(out_4, _e76, _e77, nyq_values, _buffer_sizes);
@@ -2043,98 +2298,142 @@ kernel void nyq_fill(
             metal::uint2 _e91 = nyq_job.seed;
             NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
             s_4 = _e92;
-            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_14, _e6.z);
+            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_16, _e6.z);
             nyq_fill_camera(out_4, _e95, nyq_values, _buffer_sizes);
-            nyq_stratified_start(s_4, pixel_14, _e6.z, _e6.w);
+            nyq_stratified_start(s_4, pixel_16, _e6.z, _e6.w);
             float _e98 = nyq_stratified_get_1d(s_4);
             metal::float2 _e99 = nyq_stratified_get_2d(s_4);
             nyq_fill_values(out_4, _e98, _e99, nyq_values, _buffer_sizes);
             return;
         }
+        case 5u: {
+            metal::uint2 _e102 = nyq_job.seed;
+            NyqPmj02Sampler _e103 = nyq_pmj02_sampler(_e102);
+            s_5 = _e103;
+            NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_16, _e6.z);
+            nyq_fill_camera(out_4, _e106, nyq_values, _buffer_sizes);
+            nyq_pmj02_start(s_5, pixel_16, _e6.z, _e6.w);
+            float _e109 = nyq_pmj02_get_1d(s_5);
+            metal::float2 _e110 = nyq_pmj02_get_2d(s_5);
+            nyq_fill_values(out_4, _e109, _e110, nyq_values, _buffer_sizes);
+            return;
+        }
         case 16u: {
-            uint _e102 = nyq_job.dims;
-            uint _e105 = nyq_job.scramble;
-            metal::uint2 _e110 = nyq_job.seed;
-            NyqSobol _e111 = nyq_sobol(_e102, _e105 != 0u, _e110);
-            uint2 loop_bound_12 = uint2(4294967295u);
+            uint _e113 = nyq_job.dims;
+            uint _e116 = nyq_job.scramble;
+            metal::uint2 _e121 = nyq_job.seed;
+            NyqSobol _e122 = nyq_sobol(_e113, _e116 != 0u, _e121);
+            uint2 loop_bound_13 = uint2(4294967295u);
             bool loop_init_9 = true;
             while(true) {
-                if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-                loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
                 if (!loop_init_9) {
-                    uint _e139 = k;
-                    k = _e139 + 1u;
+                    uint _e150 = k;
+                    k = _e150 + 1u;
                 }
                 loop_init_9 = false;
-                uint _e114 = k;
-                if (_e114 < 4u) {
+                uint _e125 = k;
+                if (_e125 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e118 = k;
-                    uint _e123 = k;
-                    uint _e125 = nyq_sobol_sample_u32_(_e111, _e6.z, _e6.w + _e123, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e118] = _e125;
                     uint _e129 = k;
                     uint _e134 = k;
-                    float _e136 = nyq_sobol_sample(_e111, _e6.z, _e6.w + _e134, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[(out_4 + 4u) + _e129] = as_type<uint>(_e136);
+                    uint _e136 = nyq_sobol_sample_u32_(_e122, _e6.z, _e6.w + _e134, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e129] = _e136;
+                    uint _e140 = k;
+                    uint _e145 = k;
+                    float _e147 = nyq_sobol_sample(_e122, _e6.z, _e6.w + _e145, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[(out_4 + 4u) + _e140] = as_type<uint>(_e147);
                 }
             }
             return;
         }
         case 17u: {
-            uint _e143 = nyq_job.dims;
-            metal::uint2 _e146 = nyq_job.seed;
-            NyqOwenSobol _e147 = nyq_owen_sobol(_e143, _e146);
-            metal::float4 _e150 = nyq_owen_sobol_sample_4d(_e147, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
-            uint2 loop_bound_13 = uint2(4294967295u);
+            uint _e154 = nyq_job.dims;
+            metal::uint2 _e157 = nyq_job.seed;
+            NyqOwenSobol _e158 = nyq_owen_sobol(_e154, _e157);
+            metal::float4 _e161 = nyq_owen_sobol_sample_4d(_e158, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
+            uint2 loop_bound_14 = uint2(4294967295u);
             bool loop_init_10 = true;
             while(true) {
-                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+                if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
                 if (!loop_init_10) {
-                    uint _e175 = k_1;
-                    k_1 = _e175 + 1u;
+                    uint _e186 = k_1;
+                    k_1 = _e186 + 1u;
                 }
                 loop_init_10 = false;
-                uint _e153 = k_1;
-                if (_e153 < 4u) {
+                uint _e164 = k_1;
+                if (_e164 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e157 = k_1;
-                    uint _e162 = k_1;
-                    uint _e164 = nyq_owen_sobol_sample_u32_(_e147, _e6.z, _e6.w + _e162, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e157] = _e164;
                     uint _e168 = k_1;
-                    uint _e171 = k_1;
-                    nyq_values[(out_4 + 4u) + _e168] = as_type<uint>(_e150[_e171]);
+                    uint _e173 = k_1;
+                    uint _e175 = nyq_owen_sobol_sample_u32_(_e158, _e6.z, _e6.w + _e173, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e168] = _e175;
+                    uint _e179 = k_1;
+                    uint _e182 = k_1;
+                    nyq_values[(out_4 + 4u) + _e179] = as_type<uint>(_e161[_e182]);
+                }
+            }
+            return;
+        }
+        case 18u: {
+            uint _e190 = nyq_job.scramble;
+            metal::uint2 _e195 = nyq_job.seed;
+            NyqPmj02_ _e196 = nyq_pmj02_(_e190 != 0u, _e195);
+            uint2 loop_bound_15 = uint2(4294967295u);
+            bool loop_init_11 = true;
+            while(true) {
+                if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
+                if (!loop_init_11) {
+                    uint _e224 = k_2;
+                    k_2 = _e224 + 1u;
+                }
+                loop_init_11 = false;
+                uint _e199 = k_2;
+                if (_e199 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e203 = k_2;
+                    uint _e208 = k_2;
+                    uint _e210 = nyq_pmj02_sample_u32_(_e196, _e6.z, _e6.w + _e208);
+                    nyq_values[out_4 + _e203] = _e210;
+                    uint _e214 = k_2;
+                    uint _e219 = k_2;
+                    float _e221 = nyq_pmj02_sample(_e196, _e6.z, _e6.w + _e219);
+                    nyq_values[(out_4 + 4u) + _e214] = as_type<uint>(_e221);
                 }
             }
             return;
         }
         default: {
-            uint2 loop_bound_14 = uint2(4294967295u);
-            bool loop_init_11 = true;
+            uint2 loop_bound_16 = uint2(4294967295u);
+            bool loop_init_12 = true;
             while(true) {
-                if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-                if (!loop_init_11) {
-                    uint _e188 = k_2;
-                    k_2 = _e188 + 1u;
+                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+                if (!loop_init_12) {
+                    uint _e237 = k_3;
+                    k_3 = _e237 + 1u;
                 }
-                loop_init_11 = false;
-                uint _e179 = k_2;
-                if (_e179 < 8u) {
+                loop_init_12 = false;
+                uint _e228 = k_3;
+                if (_e228 < 8u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e183 = k_2;
-                    nyq_values[out_4 + _e183] = 4294967295u;
+                    uint _e232 = k_3;
+                    nyq_values[out_4 + _e232] = 4294967295u;
                 }
             }
             return;

@@ -46,6 +46,8 @@ pub const WGSL: &str = concat!(
     "\n",
     include_str!("../wgsl/stratified.wgsl"),
     "\n",
+    include_str!("../wgsl/pmj02.wgsl"),
+    "\n",
     include_str!("../wgsl/fill.wgsl"),
 );
 

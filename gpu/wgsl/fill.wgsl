@@ -18,8 +18,10 @@ const NYQ_FILL_ZSOBOL_SAMPLER: u32 = 1u;
 const NYQ_FILL_RANDOM_SAMPLER: u32 = 2u;
 const NYQ_FILL_LATTICE_SAMPLER: u32 = 3u;
 const NYQ_FILL_STRATIFIED_SAMPLER: u32 = 4u;
+const NYQ_FILL_PMJ02_SAMPLER: u32 = 5u;
 const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
+const NYQ_FILL_PMJ02: u32 = 18u;
 
 struct NyqFillJob {
     kind: u32,
@@ -114,6 +116,13 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             let one = nyq_stratified_get_1d(&s);
             nyq_fill_values(out, one, nyq_stratified_get_2d(&s));
         }
+        case 5u: {
+            var s = nyq_pmj02_sampler(nyq_job.seed);
+            nyq_fill_camera(out, nyq_pmj02_camera_sample(&s, pixel, q.z));
+            nyq_pmj02_start(&s, pixel, q.z, q.w);
+            let one = nyq_pmj02_get_1d(&s);
+            nyq_fill_values(out, one, nyq_pmj02_get_2d(&s));
+        }
         case 16u: {
             let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);
             for (var k = 0u; k < 4u; k++) {
@@ -127,6 +136,13 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             for (var k = 0u; k < 4u; k++) {
                 nyq_values[out + k] = nyq_owen_sobol_sample_u32(s, q.z, q.w + k);
                 nyq_values[out + 4u + k] = bitcast<u32>(four[k]);
+            }
+        }
+        case 18u: {
+            let s = nyq_pmj02(nyq_job.scramble != 0u, nyq_job.seed);
+            for (var k = 0u; k < 4u; k++) {
+                nyq_values[out + k] = nyq_pmj02_sample_u32(s, q.z, q.w + k);
+                nyq_values[out + 4u + k] = bitcast<u32>(nyq_pmj02_sample(s, q.z, q.w + k));
             }
         }
         default: {

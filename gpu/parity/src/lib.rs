@@ -14,11 +14,11 @@ use std::borrow::Cow;
 
 use nyquist::lattice::FibonacciLattice;
 use nyquist::sampler::{
-    Jitter, LatticeSampler, OwenSobolSampler, RandomSampler, Sampler, StratifiedSampler,
-    ZSobolSampler,
+    Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
+    StratifiedSampler, ZSobolSampler,
 };
 use nyquist::scramble::Scramble;
-use nyquist::sequence::{OwenSobol, Sequence, Sobol};
+use nyquist::sequence::{OwenSobol, Pmj02, Sequence, Sobol};
 use nyquist_gpu::WORDS_PER_REQUEST;
 
 /// A request: `[pixel.x, pixel.y, sample index, dimension]` (for a sequence: the point index in
@@ -105,6 +105,18 @@ pub enum Job {
         /// The seed.
         seed: u64,
     },
+    /// `Pmj02Sampler::new(spp, seed)`.
+    Pmj02Sampler {
+        /// Samples per pixel, at most 2¹⁶.
+        spp: u32,
+        /// The seed.
+        seed: u64,
+    },
+    /// `Pmj02::new()` or, with a seed, `Pmj02::scrambled(seed)`.
+    Pmj02 {
+        /// The scramble's seed, if any.
+        seed: Option<u64>,
+    },
     /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
     Sobol {
         /// Dimensions, 1..=1024.
@@ -169,6 +181,9 @@ impl Job {
                     strata[0], strata[1]
                 )
             }
+            Job::Pmj02Sampler { .. } => "pmj02 sampler".into(),
+            Job::Pmj02 { seed: None } => "pmj02".into(),
+            Job::Pmj02 { seed: Some(_) } => "pmj02 (owen)".into(),
             Job::Sobol { seed: None, .. } => "sobol".into(),
             Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
             Job::OwenSobol { .. } => "owen-sobol".into(),
@@ -233,6 +248,18 @@ impl Job {
                 resolution: strata,
                 ..FillJob::default()
             },
+            Job::Pmj02Sampler { spp, seed } => FillJob {
+                kind: 5,
+                spp,
+                seed: seed_words(seed),
+                ..FillJob::default()
+            },
+            Job::Pmj02 { seed } => FillJob {
+                kind: 18,
+                scramble: u32::from(seed.is_some()),
+                seed: seed_words(seed.unwrap_or(0)),
+                ..FillJob::default()
+            },
             Job::Sobol { dims, seed } => FillJob {
                 kind: 16,
                 scramble: u32::from(seed.is_some()),
@@ -294,6 +321,25 @@ impl Job {
                 StratifiedSampler::new(strata[0], strata[1], jitter, seed).expect("valid sampler"),
                 requests,
             ),
+            Job::Pmj02Sampler { spp, seed } => sampler_answers(
+                Pmj02Sampler::new(spp, seed).expect("valid sampler"),
+                requests,
+            ),
+            Job::Pmj02 { seed } => {
+                let s = seed.map_or_else(Pmj02::new, Pmj02::scrambled);
+                requests
+                    .iter()
+                    .map(|&[_, _, index, dim]| {
+                        let mut a = [0; WORDS_PER_REQUEST];
+                        for k in 0..4 {
+                            let d = dim.wrapping_add(k as u32);
+                            a[k] = s.sample_u32(index, d);
+                            a[4 + k] = s.sample(u64::from(index), d).to_bits();
+                        }
+                        a
+                    })
+                    .collect()
+            }
             Job::Sobol { dims, seed } => {
                 let s = match seed {
                     None => Sobol::new(dims),

@@ -49,6 +49,13 @@ fn jobs() -> Vec<Job> {
             spp: 64,
             seed: 5,
         },
+        Job::Pmj02Sampler { spp: 16, seed: 12 },
+        Job::Pmj02Sampler {
+            spp: 65536,
+            seed: u64::MAX,
+        },
+        Job::Pmj02 { seed: None },
+        Job::Pmj02 { seed: Some(13) },
         Job::Sobol {
             dims: 1024,
             seed: None,
