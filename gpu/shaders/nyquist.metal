@@ -22,6 +22,31 @@ struct NyqSobol {
     uint scrambled;
     metal::uint2 seed;
 };
+struct NyqSobolSampler {
+    uint spp;
+    uint m;
+    uint scramble;
+    char _pad3[4];
+    metal::uint2 seed;
+    char _pad4[8];
+    metal::uint4 inverse0_;
+    metal::uint4 inverse1_;
+    metal::uint4 inverse2_;
+    metal::uint4 inverse3_;
+    metal::uint4 inverse4_;
+    metal::uint4 inverse5_;
+    metal::uint4 inverse6_;
+    metal::uint4 inverse7_;
+    metal::uint2 shift;
+    uint index;
+    uint dim;
+};
+struct type_7 {
+    metal::uint2 inner[32];
+};
+struct type_8 {
+    uint inner[32];
+};
 struct NyqOwenSobol {
     uint dims;
     uint shuffle_seed;
@@ -34,10 +59,10 @@ struct NyqOwenSobolSampler {
     uint r;
     uint dim;
 };
-struct type_8 {
+struct type_12 {
     float inner[5];
 };
-struct type_9 {
+struct type_13 {
     uint inner[24];
 };
 struct NyqZSobolSampler {
@@ -63,7 +88,7 @@ struct NyqRandomSampler {
     uint dim;
     char _pad4[4];
 };
-struct type_13 {
+struct type_17 {
     metal::uint2 inner[2];
 };
 struct NyqLatticeSampler {
@@ -76,10 +101,7 @@ struct NyqLatticeSampler {
     uint index;
     uint dim;
 };
-struct type_15 {
-    uint inner[32];
-};
-struct type_17 {
+struct type_20 {
     uint inner[5];
 };
 struct NyqPermutation {
@@ -106,7 +128,7 @@ struct NyqStratifiedSampler {
     uint index;
     uint dim;
 };
-struct type_20 {
+struct type_23 {
     uint inner[16];
 };
 struct NyqPmj02_ {
@@ -136,20 +158,20 @@ struct NyqFillJob {
     uint pad0_;
     uint pad1_;
 };
-typedef metal::uint4 type_23[1];
+typedef metal::uint4 type_25[1];
 constant uint NYQ_SCRAMBLE_NONE = 0u;
 constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
 constant uint NYQ_SCRAMBLE_OWEN = 3u;
 constant uint NYQ_SOBOL_DIMS = 1024u;
-constant type_9 NYQ_PERMUTATIONS_4_ = type_9 {{228u, 180u, 216u, 120u, 156u, 108u, 225u, 177u, 201u, 57u, 141u, 45u, 210u, 114u, 198u, 54u, 78u, 30u, 147u, 99u, 135u, 39u, 75u, 27u}};
+constant type_13 NYQ_PERMUTATIONS_4_ = type_13 {{228u, 180u, 216u, 120u, 156u, 108u, 225u, 177u, 201u, 57u, 141u, 45u, 210u, 114u, 198u, 54u, 78u, 30u, 147u, 99u, 135u, 39u, 75u, 27u}};
 constant metal::uint2 NYQ_PCG_MULTIPLIER = metal::uint2(1284865837u, 1481765933u);
 constant metal::uint2 NYQ_RANDOM_INCREMENT = metal::uint2(2665069115u, 1250683170u);
 constant uint NYQ_LATTICE_FIBONACCI = 0u;
 constant uint NYQ_LATTICE_KOROBOV = 1u;
 constant uint NYQ_LATTICE_R2_ = 2u;
-constant type_13 NYQ_R2_ALPHA = type_13 {{metal::uint2(44445696u, 3242174889u), metal::uint2(3349051392u, 2447445413u)}};
-constant type_15 NYQ_SMALL_PERMUTATIONS = type_15 {{16u, 1u, 528u, 288u, 513u, 33u, 258u, 18u, 12816u, 8976u, 12576u, 4896u, 8496u, 4656u, 12801u, 8961u, 12321u, 801u, 8241u, 561u, 12546u, 4866u, 12306u, 786u, 4146u, 306u, 8451u, 4611u, 8211u, 531u, 4131u, 291u}};
+constant type_17 NYQ_R2_ALPHA = type_17 {{metal::uint2(44445696u, 3242174889u), metal::uint2(3349051392u, 2447445413u)}};
+constant type_8 NYQ_SMALL_PERMUTATIONS = type_8 {{16u, 1u, 528u, 288u, 513u, 33u, 258u, 18u, 12816u, 8976u, 12576u, 4896u, 8496u, 4656u, 12801u, 8961u, 12321u, 801u, 8241u, 561u, 12546u, 4866u, 12306u, 786u, 4146u, 306u, 8451u, 4611u, 8211u, 531u, 4131u, 291u}};
 constant uint NYQ_JITTERED = 0u;
 constant uint NYQ_CENTERED = 1u;
 constant metal::uint2 NYQ_DIM_STEP = metal::uint2(2135587861u, 2654435769u);
@@ -157,14 +179,15 @@ constant metal::uint2 NYQ_JITTER_STEP = metal::uint2(668265295u, 3266489917u);
 constant metal::uint2 NYQ_PMJ02_TABLE_SEED = metal::uint2(845116513u, 1886218800u);
 constant metal::uint2 NYQ_WYRAND_INC = metal::uint2(2025677871u, 2692095332u);
 constant metal::uint2 NYQ_WYRAND_FOLD = metal::uint2(2696161499u, 3875765969u);
-constant type_20 NYQ_PMJ02_XOR_X = type_20 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
-constant type_20 NYQ_PMJ02_XOR_Y = type_20 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
+constant type_23 NYQ_PMJ02_XOR_X = type_23 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
+constant type_23 NYQ_PMJ02_XOR_Y = type_23 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
 constant uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 constant uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 constant uint NYQ_FILL_RANDOM_SAMPLER = 2u;
 constant uint NYQ_FILL_LATTICE_SAMPLER = 3u;
 constant uint NYQ_FILL_STRATIFIED_SAMPLER = 4u;
 constant uint NYQ_FILL_PMJ02_SAMPLER = 5u;
+constant uint NYQ_FILL_SOBOL_SAMPLER = 6u;
 constant uint NYQ_FILL_SOBOL = 16u;
 constant uint NYQ_FILL_OWEN_SOBOL = 17u;
 constant uint NYQ_FILL_PMJ02_ = 18u;
@@ -197,22 +220,22 @@ metal::uint2 nyq_add64_(
     metal::uint2 a_2,
     metal::uint2 b_2
 ) {
-    uint low = a_2.x + b_2.x;
-    return metal::uint2(low, (a_2.y + b_2.y) + ((low < a_2.x) ? 1u : 0u));
+    uint low_1 = a_2.x + b_2.x;
+    return metal::uint2(low_1, (a_2.y + b_2.y) + ((low_1 < a_2.x) ? 1u : 0u));
 }
 
 metal::uint2 nyq_shr64_(
     metal::uint2 a_3,
-    uint s_6
+    uint s_7
 ) {
-    return metal::uint2((a_3.x >> s_6) | (a_3.y << (32u - s_6)), a_3.y >> s_6);
+    return metal::uint2((a_3.x >> s_7) | (a_3.y << (32u - s_7)), a_3.y >> s_7);
 }
 
 metal::uint2 nyq_shl64_(
     metal::uint2 a_4,
-    uint s_7
+    uint s_8
 ) {
-    return metal::uint2(a_4.x << s_7, (a_4.y << s_7) | (a_4.x >> (32u - s_7)));
+    return metal::uint2(a_4.x << s_8, (a_4.y << s_8) | (a_4.x >> (32u - s_8)));
 }
 
 metal::uint2 nyq_u64_(
@@ -308,9 +331,9 @@ float nyq_rev_to_f32_(
 
 uint nyq_shr(
     uint x_3,
-    uint s_8
+    uint s_9
 ) {
-    return (s_8 >= 32u) ? 0u : (x_3 >> (s_8 & 31u));
+    return (s_9 >= 32u) ? 0u : (x_3 >> (s_9 & 31u));
 }
 
 float nyq_film_coordinate(
@@ -483,17 +506,17 @@ NyqSobol nyq_sobol(
 }
 
 uint nyq_sobol_sample_u32_(
-    NyqSobol s_9,
+    NyqSobol s_10,
     uint index_2,
     uint dim_2,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint shift = 0u;
-    uint d_3 = naga_mod(dim_2, s_9.dims);
-    if (s_9.scrambled != 0u) {
+    uint d_3 = naga_mod(dim_2, s_10.dims);
+    if (s_10.scrambled != 0u) {
         metal::uint2 _e11 = nyq_u64_(d_3);
-        metal::uint2 _e12 = nyq_hash2_(s_9.seed, _e11);
+        metal::uint2 _e12 = nyq_hash2_(s_10.seed, _e11);
         shift = _e12.y;
     }
     uint _e14 = nyq_sobol_u32_(index_2, d_3, nyq_sobol_matrices, _buffer_sizes);
@@ -502,22 +525,561 @@ uint nyq_sobol_sample_u32_(
 }
 
 float nyq_sobol_sample(
-    NyqSobol s_10,
+    NyqSobol s_11,
     uint index_3,
     uint dim_3,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_sobol_sample_u32_(s_10, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_sobol_sample_u32_(s_11, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
+uint nyq_top(
+    uint v_2,
+    uint bits_1
+) {
+    return (bits_1 == 0u) ? 0u : (v_2 >> ((32u - bits_1) & 31u));
+}
+
+NyqSobolSampler nyq_sobol_sampler(
+    metal::uint2 resolution,
+    uint spp_requested,
+    uint scramble,
+    metal::uint2 seed_in,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint2 seed_6 = {};
+    metal::uint2 shift_1 = metal::uint2(0u, 0u);
+    type_7 rows = {};
+    uint c_1 = 0u;
+    uint i = {};
+    uint i_1 = 0u;
+    uint col = 0u;
+    uint pivot = {};
+    uint r_1 = {};
+    uint r_2 = {};
+    bool local = {};
+    type_8 inverse = {};
+    uint i_2 = 0u;
+    uint r_3 = {};
+    uint spp = (spp_requested <= 1u) ? 1u : (1u << (32u - metal::clz(spp_requested - 1u)));
+    uint side = metal::max(resolution.x, resolution.y);
+    uint m_2 = 32u - metal::clz(side - 1u);
+    seed_6 = seed_in;
+    if (scramble == NYQ_SCRAMBLE_NONE) {
+        seed_6 = metal::uint2(0u, 0u);
+    }
+    if (scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
+        uint mask = (m_2 == 0u) ? 4294967295u : (4294967295u >> (m_2 & 31u));
+        metal::uint2 _e43 = seed_6;
+        metal::uint2 _e45 = nyq_u64_(0u);
+        metal::uint2 _e46 = nyq_hash2_(_e43, _e45);
+        metal::uint2 _e49 = seed_6;
+        metal::uint2 _e51 = nyq_u64_(1u);
+        metal::uint2 _e52 = nyq_hash2_(_e49, _e51);
+        shift_1 = metal::uint2(_e46.x & mask, _e52.x & mask);
+    }
+    uint n_3 = 2u * m_2;
+    uint2 loop_bound_2 = uint2(4294967295u);
+    bool loop_init_1 = true;
+    while(true) {
+        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
+        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
+        if (!loop_init_1) {
+            uint _e121 = c_1;
+            c_1 = _e121 + 1u;
+        }
+        loop_init_1 = false;
+        uint _e61 = c_1;
+        if (_e61 < n_3) {
+        } else {
+            break;
+        }
+        {
+            uint _e64 = c_1;
+            uint _e67 = nyq_sobol_u32_(1u << _e64, 0u, nyq_sobol_matrices, _buffer_sizes);
+            uint _e68 = nyq_top(_e67, m_2);
+            uint _e70 = c_1;
+            uint _e73 = nyq_sobol_u32_(1u << _e70, 1u, nyq_sobol_matrices, _buffer_sizes);
+            uint _e74 = nyq_top(_e73, m_2);
+            metal::uint2 image_bits = metal::uint2(_e68 | (_e74 << (m_2 & 31u)), (m_2 == 0u) ? 0u : (_e74 >> ((32u - m_2) & 31u)));
+            i = 0u;
+            uint2 loop_bound_3 = uint2(4294967295u);
+            bool loop_init_2 = true;
+            while(true) {
+                if (metal::all(loop_bound_3 == uint2(0u))) { break; }
+                loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
+                if (!loop_init_2) {
+                    uint _e118 = i;
+                    i = _e118 + 1u;
+                }
+                loop_init_2 = false;
+                uint _e91 = i;
+                if (_e91 < n_3) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e94 = i;
+                    uint _e97 = i;
+                    uint _e101 = i;
+                    uint bit = ((_e101 >= 32u) ? (image_bits.y >> (_e97 - 32u)) : (image_bits.x >> _e94)) & 1u;
+                    if (bit == 1u) {
+                        uint _e109 = i;
+                        uint _e112 = rows.inner[_e109].x;
+                        uint _e114 = c_1;
+                        rows.inner[_e109].x = _e112 | (1u << _e114);
+                    }
+                }
+            }
+        }
+    }
+    uint2 loop_bound_4 = uint2(4294967295u);
+    bool loop_init_3 = true;
+    while(true) {
+        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
+        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
+        if (!loop_init_3) {
+            uint _e136 = i_1;
+            i_1 = _e136 + 1u;
+        }
+        loop_init_3 = false;
+        uint _e125 = i_1;
+        if (_e125 < n_3) {
+        } else {
+            break;
+        }
+        {
+            uint _e127 = i_1;
+            uint _e130 = rows.inner[_e127].y;
+            uint _e132 = i_1;
+            rows.inner[_e127].y = _e130 | (1u << _e132);
+        }
+    }
+    uint2 loop_bound_5 = uint2(4294967295u);
+    bool loop_init_4 = true;
+    while(true) {
+        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
+        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
+        if (!loop_init_4) {
+            uint _e204 = col;
+            col = _e204 + 1u;
+        }
+        loop_init_4 = false;
+        uint _e140 = col;
+        if (_e140 < n_3) {
+        } else {
+            break;
+        }
+        {
+            uint _e142 = col;
+            pivot = _e142;
+            uint _e144 = col;
+            r_1 = _e144;
+            uint2 loop_bound_6 = uint2(4294967295u);
+            bool loop_init_5 = true;
+            while(true) {
+                if (metal::all(loop_bound_6 == uint2(0u))) { break; }
+                loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+                if (!loop_init_5) {
+                    uint _e160 = r_1;
+                    r_1 = _e160 + 1u;
+                }
+                loop_init_5 = false;
+                uint _e146 = r_1;
+                if (_e146 < n_3) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e148 = r_1;
+                    uint _e151 = rows.inner[_e148].x;
+                    uint _e152 = col;
+                    if (((_e151 >> _e152) & 1u) == 1u) {
+                        uint _e158 = r_1;
+                        pivot = _e158;
+                        break;
+                    }
+                }
+            }
+            uint _e162 = col;
+            metal::uint2 t_3 = rows.inner[_e162];
+            uint _e165 = col;
+            uint _e167 = pivot;
+            metal::uint2 _e169 = rows.inner[_e167];
+            rows.inner[_e165] = _e169;
+            uint _e170 = pivot;
+            rows.inner[_e170] = t_3;
+            r_2 = 0u;
+            uint2 loop_bound_7 = uint2(4294967295u);
+            bool loop_init_6 = true;
+            while(true) {
+                if (metal::all(loop_bound_7 == uint2(0u))) { break; }
+                loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
+                if (!loop_init_6) {
+                    uint _e201 = r_2;
+                    r_2 = _e201 + 1u;
+                }
+                loop_init_6 = false;
+                uint _e174 = r_2;
+                if (_e174 < n_3) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e176 = r_2;
+                    uint _e177 = col;
+                    if (_e176 != _e177) {
+                        uint _e181 = r_2;
+                        uint _e184 = rows.inner[_e181].x;
+                        uint _e185 = col;
+                        local = ((_e184 >> _e185) & 1u) == 1u;
+                    } else {
+                        local = false;
+                    }
+                    bool _e192 = local;
+                    if (_e192) {
+                        uint _e193 = r_2;
+                        metal::uint2 _e195 = rows.inner[_e193];
+                        uint _e196 = col;
+                        metal::uint2 _e198 = rows.inner[_e196];
+                        rows.inner[_e193] = _e195 ^ _e198;
+                    }
+                }
+            }
+        }
+    }
+    uint2 loop_bound_8 = uint2(4294967295u);
+    bool loop_init_7 = true;
+    while(true) {
+        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
+        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
+        if (!loop_init_7) {
+            uint _e236 = i_2;
+            i_2 = _e236 + 1u;
+        }
+        loop_init_7 = false;
+        uint _e209 = i_2;
+        if (_e209 < n_3) {
+        } else {
+            break;
+        }
+        {
+            r_3 = 0u;
+            uint2 loop_bound_9 = uint2(4294967295u);
+            bool loop_init_8 = true;
+            while(true) {
+                if (metal::all(loop_bound_9 == uint2(0u))) { break; }
+                loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
+                if (!loop_init_8) {
+                    uint _e233 = r_3;
+                    r_3 = _e233 + 1u;
+                }
+                loop_init_8 = false;
+                uint _e213 = r_3;
+                if (_e213 < n_3) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e215 = i_2;
+                    uint _e218 = rows.inner[_e215].y;
+                    uint _e219 = r_3;
+                    if (((_e218 >> _e219) & 1u) == 1u) {
+                        uint _e225 = r_3;
+                        uint _e227 = inverse.inner[_e225];
+                        uint _e229 = i_2;
+                        inverse.inner[_e225] = _e227 | (1u << _e229);
+                    }
+                }
+            }
+        }
+    }
+    uint _e239 = inverse.inner[0];
+    uint _e241 = inverse.inner[1];
+    uint _e243 = inverse.inner[2];
+    uint _e245 = inverse.inner[3];
+    metal::uint4 v0_ = metal::uint4(_e239, _e241, _e243, _e245);
+    uint _e248 = inverse.inner[4];
+    uint _e250 = inverse.inner[5];
+    uint _e252 = inverse.inner[6];
+    uint _e254 = inverse.inner[7];
+    metal::uint4 v1_ = metal::uint4(_e248, _e250, _e252, _e254);
+    uint _e257 = inverse.inner[8];
+    uint _e259 = inverse.inner[9];
+    uint _e261 = inverse.inner[10];
+    uint _e263 = inverse.inner[11];
+    metal::uint4 v2_ = metal::uint4(_e257, _e259, _e261, _e263);
+    uint _e266 = inverse.inner[12];
+    uint _e268 = inverse.inner[13];
+    uint _e270 = inverse.inner[14];
+    uint _e272 = inverse.inner[15];
+    metal::uint4 v3_ = metal::uint4(_e266, _e268, _e270, _e272);
+    uint _e275 = inverse.inner[16];
+    uint _e277 = inverse.inner[17];
+    uint _e279 = inverse.inner[18];
+    uint _e281 = inverse.inner[19];
+    metal::uint4 v4_ = metal::uint4(_e275, _e277, _e279, _e281);
+    uint _e284 = inverse.inner[20];
+    uint _e286 = inverse.inner[21];
+    uint _e288 = inverse.inner[22];
+    uint _e290 = inverse.inner[23];
+    metal::uint4 v5_ = metal::uint4(_e284, _e286, _e288, _e290);
+    uint _e293 = inverse.inner[24];
+    uint _e295 = inverse.inner[25];
+    uint _e297 = inverse.inner[26];
+    uint _e299 = inverse.inner[27];
+    metal::uint4 v6_ = metal::uint4(_e293, _e295, _e297, _e299);
+    uint _e302 = inverse.inner[28];
+    uint _e304 = inverse.inner[29];
+    uint _e306 = inverse.inner[30];
+    uint _e308 = inverse.inner[31];
+    metal::uint4 v7_ = metal::uint4(_e302, _e304, _e306, _e308);
+    metal::uint2 _e310 = seed_6;
+    metal::uint2 _e311 = shift_1;
+    return NyqSobolSampler {spp, m_2, scramble, {}, _e310, {}, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e311, 0u, 0u};
+}
+
+uint nyq_sobol_sampler_invert(
+    thread NyqSobolSampler& s_12,
+    uint t_in
+) {
+    uint low = 0u;
+    uint t = {};
+    metal::uint4 four = {};
+    t = t_in;
+    uint2 loop_bound_10 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
+        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
+        uint _e5 = t;
+        if (_e5 != 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e8 = t;
+            uint k_10 = metal::ctz(_e8);
+            four = metal::uint4 {};
+            switch(k_10 >> 2u) {
+                case 0u: {
+                    metal::uint4 _e15 = s_12.inverse0_;
+                    four = _e15;
+                    break;
+                }
+                case 1u: {
+                    metal::uint4 _e17 = s_12.inverse1_;
+                    four = _e17;
+                    break;
+                }
+                case 2u: {
+                    metal::uint4 _e19 = s_12.inverse2_;
+                    four = _e19;
+                    break;
+                }
+                case 3u: {
+                    metal::uint4 _e21 = s_12.inverse3_;
+                    four = _e21;
+                    break;
+                }
+                case 4u: {
+                    metal::uint4 _e23 = s_12.inverse4_;
+                    four = _e23;
+                    break;
+                }
+                case 5u: {
+                    metal::uint4 _e25 = s_12.inverse5_;
+                    four = _e25;
+                    break;
+                }
+                case 6u: {
+                    metal::uint4 _e27 = s_12.inverse6_;
+                    four = _e27;
+                    break;
+                }
+                default: {
+                    metal::uint4 _e29 = s_12.inverse7_;
+                    four = _e29;
+                    break;
+                }
+            }
+            uint _e30 = low;
+            uint _e34 = four[k_10 & 3u];
+            low = _e30 ^ _e34;
+            uint _e36 = t;
+            uint _e37 = t;
+            t = _e36 & (_e37 - 1u);
+        }
+    }
+    uint _e41 = low;
+    return _e41;
+}
+
+uint nyq_sobol_sampler_index(
+    thread NyqSobolSampler& s_13,
+    metal::uint2 pixel_1,
+    uint sample_index,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint m_3 = s_13.m;
+    uint _e6 = s_13.spp;
+    uint si = naga_mod(sample_index, _e6);
+    uint high = ((2u * m_3) >= 32u) ? 0u : (si << ((2u * m_3) & 31u));
+    uint mask_1 = (m_3 == 0u) ? 0u : (4294967295u >> ((32u - m_3) & 31u));
+    uint want = (pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_3 & 31u));
+    uint _e38 = nyq_sobol_u32_(high, 0u, nyq_sobol_matrices, _buffer_sizes);
+    uint _e39 = nyq_top(_e38, m_3);
+    uint _e41 = nyq_sobol_u32_(high, 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint _e42 = nyq_top(_e41, m_3);
+    uint have = _e39 | (_e42 << (m_3 & 31u));
+    uint _e48 = nyq_sobol_sampler_invert(s_13, want ^ have);
+    return high | _e48;
+}
+
+float nyq_sobol_sampler_value(
+    thread NyqSobolSampler& s_14,
+    uint dim_4,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint v_3 = {};
+    bool local_1 = {};
+    bool local_2 = {};
+    uint d_4 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
+    metal::uint2 seed_20 = s_14.seed;
+    uint _e7 = s_14.index;
+    uint _e8 = nyq_sobol_u32_(_e7, d_4, nyq_sobol_matrices, _buffer_sizes);
+    v_3 = _e8;
+    uint how_2 = s_14.scramble;
+    if (!((how_2 == NYQ_SCRAMBLE_FAST_OWEN))) {
+        local_1 = how_2 == NYQ_SCRAMBLE_OWEN;
+    } else {
+        local_1 = true;
+    }
+    bool _e20 = local_1;
+    if (_e20) {
+        uint _e21 = v_3;
+        uint _e22 = v_3;
+        uint _e24 = s_14.m;
+        if (d_4 < 2u) {
+            uint _e33 = s_14.m;
+            local_2 = _e33 < 32u;
+        } else {
+            local_2 = false;
+        }
+        bool _e37 = local_2;
+        uint w_1 = _e37 ? (_e22 << (_e24 & 31u)) : _e21;
+        metal::uint2 _e39 = nyq_u64_(d_4);
+        metal::uint2 _e40 = nyq_hash2_(seed_20, _e39);
+        uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_2);
+        float _e43 = nyq_fraction_to_f32_(_e42);
+        return _e43;
+    }
+    if (d_4 < 2u) {
+        uint _e46 = v_3;
+        uint _e49 = s_14.shift[d_4];
+        uint _e52 = s_14.m;
+        v_3 = (_e46 ^ _e49) << _e52;
+    } else {
+        if (d_4 < 32u) {
+            if (how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
+                uint _e58 = v_3;
+                metal::uint2 _e59 = nyq_u64_(d_4);
+                metal::uint2 _e60 = nyq_hash2_(seed_20, _e59);
+                v_3 = _e58 ^ (metal::all(seed_20 == metal::uint2(0u, 0u)) ? 0u : _e60.x);
+            } else {
+                uint _e70 = v_3;
+                metal::uint2 _e71 = nyq_u64_(d_4);
+                metal::uint2 _e72 = nyq_hash2_(seed_20, _e71);
+                v_3 = _e70 ^ _e72.y;
+            }
+        } else {
+            uint _e75 = v_3;
+            metal::uint2 _e76 = nyq_u64_(d_4);
+            metal::uint2 _e77 = nyq_hash2_(seed_20, _e76);
+            v_3 = _e75 ^ (metal::all(seed_20 == metal::uint2(0u, 0u)) ? 0u : _e77.x);
+        }
+    }
+    uint _e87 = v_3;
+    float _e88 = nyq_fraction_to_f32_(_e87);
+    return _e88;
+}
+
+void nyq_sobol_sampler_start(
+    thread NyqSobolSampler& s_15,
+    metal::uint2 pixel_2,
+    uint sample_index_1,
+    uint dim_5,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e5 = nyq_sobol_sampler_index(s_15, pixel_2, sample_index_1, nyq_sobol_matrices, _buffer_sizes);
+    s_15.index = _e5;
+    s_15.dim = dim_5;
+    return;
+}
+
+float nyq_sobol_sampler_get_1d(
+    thread NyqSobolSampler& s_16,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_5 = s_16.dim;
+    s_16.dim = d_5 + 1u;
+    float _e6 = nyq_sobol_sampler_value(s_16, d_5, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_sobol_sampler_get_2d(
+    thread NyqSobolSampler& s_17,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_6 = s_17.dim;
+    s_17.dim = d_6 + 2u;
+    float _e6 = nyq_sobol_sampler_value(s_17, d_6, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_sobol_sampler_value(s_17, d_6 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_sobol_sampler_get_pixel_2d(
+    thread NyqSobolSampler& s_18,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_18.dim;
+    s_18.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_sobol_sampler_value(s_18, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_sobol_sampler_value(s_18, 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_sobol_sampler_camera_sample(
+    thread NyqSobolSampler& s_19,
+    metal::uint2 pixel_3,
+    uint sample_index_2,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    nyq_sobol_sampler_start(s_19, pixel_3, sample_index_2, 0u, nyq_sobol_matrices, _buffer_sizes);
+    metal::float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_19, nyq_sobol_matrices, _buffer_sizes);
+    float _e5 = nyq_sobol_sampler_get_1d(s_19, nyq_sobol_matrices, _buffer_sizes);
+    metal::float2 _e6 = nyq_sobol_sampler_get_2d(s_19, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_film_coordinate(pixel_3.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_3.y, _e4.y);
+    metal::float2 film = metal::float2(_e9, _e12);
+    return NyqCameraSample {film, _e6, _e5};
+}
+
 uint nyq_dim_seed(
     uint key,
-    uint dim_4
+    uint dim_6
 ) {
-    uint _e5 = nyq_mix32_(key ^ (dim_4 * 2654435769u));
+    uint _e5 = nyq_mix32_(key ^ (dim_6 * 2654435769u));
     return _e5;
 }
 
@@ -532,55 +1094,55 @@ uint nyq_shuffle_rev(
 }
 
 uint nyq_owen_sobol_rev(
-    uint r_1,
-    uint dim_5,
+    uint r_4,
+    uint dim_7,
     uint dim_seed,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = nyq_sobol_rev(r_1, naga_mod(dim_5, NYQ_SOBOL_DIMS), nyq_sobol_matrices, _buffer_sizes);
+    uint _e5 = nyq_sobol_rev(r_4, naga_mod(dim_7, NYQ_SOBOL_DIMS), nyq_sobol_matrices, _buffer_sizes);
     uint _e6 = nyq_lk_hash(_e5, dim_seed);
     return _e6;
 }
 
 NyqOwenSobol nyq_owen_sobol(
     uint dims_1,
-    metal::uint2 seed_6
+    metal::uint2 seed_7
 ) {
     metal::uint2 _e3 = nyq_u64_(1331119438u);
-    metal::uint2 _e4 = nyq_hash2_(seed_6, _e3);
+    metal::uint2 _e4 = nyq_hash2_(seed_7, _e3);
     uint _e6 = nyq_mix32_(_e4.y);
     return NyqOwenSobol {dims_1, _e6, _e4.x};
 }
 
 uint nyq_owen_sobol_sample_u32_(
-    NyqOwenSobol s_11,
+    NyqOwenSobol s_20,
     uint index_5,
-    uint dim_6,
+    uint dim_8,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_4 = naga_mod(dim_6, s_11.dims);
-    uint _e6 = nyq_shuffle_rev(index_5, s_11.shuffle_seed);
-    uint _e8 = nyq_dim_seed(s_11.key, d_4);
-    uint _e9 = nyq_owen_sobol_rev(_e6, d_4, _e8, nyq_sobol_matrices, _buffer_sizes);
+    uint d_7 = naga_mod(dim_8, s_20.dims);
+    uint _e6 = nyq_shuffle_rev(index_5, s_20.shuffle_seed);
+    uint _e8 = nyq_dim_seed(s_20.key, d_7);
+    uint _e9 = nyq_owen_sobol_rev(_e6, d_7, _e8, nyq_sobol_matrices, _buffer_sizes);
     return metal::reverse_bits(_e9);
 }
 
 float nyq_owen_sobol_sample(
-    NyqOwenSobol s_12,
+    NyqOwenSobol s_21,
     uint index_6,
-    uint dim_7,
+    uint dim_9,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_owen_sobol_sample_u32_(s_12, index_6, dim_7, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_owen_sobol_sample_u32_(s_21, index_6, dim_9, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
 metal::float4 nyq_owen_sobol_sample_4d(
-    NyqOwenSobol s_13,
+    NyqOwenSobol s_22,
     uint index_7,
     uint first_dim,
     device type_4 const& nyq_sobol_matrices,
@@ -588,17 +1150,17 @@ metal::float4 nyq_owen_sobol_sample_4d(
 ) {
     metal::float4 out_1 = {};
     uint k_5 = 0u;
-    uint _e4 = nyq_shuffle_rev(index_7, s_13.shuffle_seed);
-    uint2 loop_bound_2 = uint2(4294967295u);
-    bool loop_init_1 = true;
+    uint _e4 = nyq_shuffle_rev(index_7, s_22.shuffle_seed);
+    uint2 loop_bound_11 = uint2(4294967295u);
+    bool loop_init_9 = true;
     while(true) {
-        if (metal::all(loop_bound_2 == uint2(0u))) { break; }
-        loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
-        if (!loop_init_1) {
+        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
+        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (!loop_init_9) {
             uint _e22 = k_5;
             k_5 = _e22 + 1u;
         }
-        loop_init_1 = false;
+        loop_init_9 = false;
         uint _e8 = k_5;
         if (_e8 < 4u) {
         } else {
@@ -606,10 +1168,10 @@ metal::float4 nyq_owen_sobol_sample_4d(
         }
         {
             uint _e11 = k_5;
-            uint d_5 = naga_mod(first_dim + _e11, s_13.dims);
+            uint d_8 = naga_mod(first_dim + _e11, s_22.dims);
             uint _e15 = k_5;
-            uint _e18 = nyq_dim_seed(s_13.key, d_5);
-            uint _e19 = nyq_owen_sobol_rev(_e4, d_5, _e18, nyq_sobol_matrices, _buffer_sizes);
+            uint _e18 = nyq_dim_seed(s_22.key, d_8);
+            uint _e19 = nyq_owen_sobol_rev(_e4, d_8, _e18, nyq_sobol_matrices, _buffer_sizes);
             float _e20 = nyq_rev_to_f32_(_e19);
             out_1[_e15] = _e20;
         }
@@ -619,101 +1181,101 @@ metal::float4 nyq_owen_sobol_sample_4d(
 }
 
 NyqOwenSobolSampler nyq_owen_sobol_sampler(
-    metal::uint2 seed_7,
+    metal::uint2 seed_8,
     uint frame
 ) {
-    return NyqOwenSobolSampler {seed_7, frame, 0u, 0u, 0u};
+    return NyqOwenSobolSampler {seed_8, frame, 0u, 0u, 0u};
 }
 
 void nyq_owen_sobol_start(
-    thread NyqOwenSobolSampler& s_14,
-    metal::uint2 pixel_1,
-    uint sample_index,
-    uint dim_8
+    thread NyqOwenSobolSampler& s_23,
+    metal::uint2 pixel_4,
+    uint sample_index_3,
+    uint dim_10
 ) {
-    metal::uint2 _e5 = nyq_u64_(pixel_1.x);
-    metal::uint2 _e7 = nyq_u64_(pixel_1.y);
-    uint _e9 = s_14.frame;
+    metal::uint2 _e5 = nyq_u64_(pixel_4.x);
+    metal::uint2 _e7 = nyq_u64_(pixel_4.y);
+    uint _e9 = s_23.frame;
     metal::uint2 _e10 = nyq_u64_(_e9);
-    metal::uint2 _e12 = s_14.seed;
+    metal::uint2 _e12 = s_23.seed;
     metal::uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_14.key = _e13.x;
+    s_23.key = _e13.x;
     uint _e18 = nyq_mix32_(_e13.y);
-    uint _e19 = nyq_shuffle_rev(sample_index, _e18);
-    s_14.r = _e19;
-    s_14.dim = dim_8;
+    uint _e19 = nyq_shuffle_rev(sample_index_3, _e18);
+    s_23.r = _e19;
+    s_23.dim = dim_10;
     return;
 }
 
 float nyq_owen_sobol_value(
-    thread NyqOwenSobolSampler& s_15,
-    uint dim_9,
+    thread NyqOwenSobolSampler& s_24,
+    uint dim_11,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_15.r;
-    uint _e5 = s_15.key;
-    uint _e6 = nyq_dim_seed(_e5, dim_9);
-    uint _e7 = nyq_owen_sobol_rev(_e3, dim_9, _e6, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = s_24.r;
+    uint _e5 = s_24.key;
+    uint _e6 = nyq_dim_seed(_e5, dim_11);
+    uint _e7 = nyq_owen_sobol_rev(_e3, dim_11, _e6, nyq_sobol_matrices, _buffer_sizes);
     float _e8 = nyq_rev_to_f32_(_e7);
     return _e8;
 }
 
 float nyq_owen_sobol_get_1d(
-    thread NyqOwenSobolSampler& s_16,
+    thread NyqOwenSobolSampler& s_25,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_6 = s_16.dim;
-    s_16.dim = d_6 + 1u;
-    float _e6 = nyq_owen_sobol_value(s_16, d_6, nyq_sobol_matrices, _buffer_sizes);
+    uint d_9 = s_25.dim;
+    s_25.dim = d_9 + 1u;
+    float _e6 = nyq_owen_sobol_value(s_25, d_9, nyq_sobol_matrices, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_owen_sobol_get_2d(
-    thread NyqOwenSobolSampler& s_17,
+    thread NyqOwenSobolSampler& s_26,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_7 = s_17.dim;
-    s_17.dim = d_7 + 2u;
-    float _e6 = nyq_owen_sobol_value(s_17, d_7, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_17, d_7 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_10 = s_26.dim;
+    s_26.dim = d_10 + 2u;
+    float _e6 = nyq_owen_sobol_value(s_26, d_10, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_26, d_10 + 1u, nyq_sobol_matrices, _buffer_sizes);
     return metal::float2(_e6, _e9);
 }
 
 metal::float2 nyq_owen_sobol_get_pixel_2d(
-    thread NyqOwenSobolSampler& s_18,
+    thread NyqOwenSobolSampler& s_27,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_18.dim;
-    s_18.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_value(s_18, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_18, 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = s_27.dim;
+    s_27.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_value(s_27, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_27, 1u, nyq_sobol_matrices, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_owen_sobol_camera_sample(
-    thread NyqOwenSobolSampler& s_19,
-    metal::uint2 pixel_2,
-    uint sample_index_1,
+    thread NyqOwenSobolSampler& s_28,
+    metal::uint2 pixel_5,
+    uint sample_index_4,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    type_8 v_2 = {};
+    type_12 v_4 = {};
     uint d_1 = 0u;
-    nyq_owen_sobol_start(s_19, pixel_2, sample_index_1, 0u);
-    uint2 loop_bound_3 = uint2(4294967295u);
-    bool loop_init_2 = true;
+    nyq_owen_sobol_start(s_28, pixel_5, sample_index_4, 0u);
+    uint2 loop_bound_12 = uint2(4294967295u);
+    bool loop_init_10 = true;
     while(true) {
-        if (metal::all(loop_bound_3 == uint2(0u))) { break; }
-        loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
-        if (!loop_init_2) {
+        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
+        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (!loop_init_10) {
             uint _e15 = d_1;
             d_1 = _e15 + 1u;
         }
-        loop_init_2 = false;
+        loop_init_10 = false;
         uint _e7 = d_1;
         if (_e7 < 5u) {
         } else {
@@ -722,19 +1284,19 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            float _e13 = nyq_owen_sobol_value(s_19, _e12, nyq_sobol_matrices, _buffer_sizes);
-            v_2.inner[_e10] = _e13;
+            float _e13 = nyq_owen_sobol_value(s_28, _e12, nyq_sobol_matrices, _buffer_sizes);
+            v_4.inner[_e10] = _e13;
         }
     }
-    s_19.dim = 5u;
-    float _e21 = v_2.inner[0];
-    float _e22 = nyq_film_coordinate(pixel_2.x, _e21);
-    float _e25 = v_2.inner[1];
-    float _e26 = nyq_film_coordinate(pixel_2.y, _e25);
+    s_28.dim = 5u;
+    float _e21 = v_4.inner[0];
+    float _e22 = nyq_film_coordinate(pixel_5.x, _e21);
+    float _e25 = v_4.inner[1];
+    float _e26 = nyq_film_coordinate(pixel_5.y, _e25);
     metal::float2 p_2 = metal::float2(_e22, _e26);
-    float _e29 = v_2.inner[3];
-    float _e31 = v_2.inner[4];
-    float _e34 = v_2.inner[2];
+    float _e29 = v_4.inner[3];
+    float _e31 = v_4.inner[4];
+    float _e34 = v_4.inner[2];
     return NyqCameraSample {p_2, metal::float2(_e29, _e31), _e34};
 }
 
@@ -743,17 +1305,17 @@ uint naga_div(uint lhs, uint rhs) {
 }
 
 NyqZSobolSampler nyq_zsobol_sampler(
-    metal::uint2 resolution,
-    uint spp_requested,
-    uint scramble,
-    metal::uint2 seed_8
+    metal::uint2 resolution_1,
+    uint spp_requested_1,
+    uint scramble_1,
+    metal::uint2 seed_9
 ) {
-    uint spp = (spp_requested <= 1u) ? 1u : (1u << (32u - metal::clz(spp_requested - 1u)));
-    uint side = metal::max(resolution.x, resolution.y);
-    uint log2_res = 32u - metal::clz(side - 1u);
-    uint log2_spp = metal::ctz(spp);
-    uint bits_1 = (2u * log2_res) + log2_spp;
-    return NyqZSobolSampler {spp, log2_spp, log2_res, scramble, seed_8, naga_div(bits_1, 2u), naga_div(log2_spp, 2u), log2_spp & 1u, 0u, 0u};
+    uint spp_1 = (spp_requested_1 <= 1u) ? 1u : (1u << (32u - metal::clz(spp_requested_1 - 1u)));
+    uint side_1 = metal::max(resolution_1.x, resolution_1.y);
+    uint log2_res = 32u - metal::clz(side_1 - 1u);
+    uint log2_spp = metal::ctz(spp_1);
+    uint bits_2 = (2u * log2_res) + log2_spp;
+    return NyqZSobolSampler {spp_1, log2_spp, log2_res, scramble_1, seed_9, naga_div(bits_2, 2u), naga_div(log2_spp, 2u), log2_spp & 1u, 0u, 0u};
 }
 
 uint nyq_spread(
@@ -776,12 +1338,12 @@ uint nyq_spread(
 }
 
 uint nyq_zsobol_morton(
-    NyqZSobolSampler s_20,
-    metal::uint2 pixel_3
+    NyqZSobolSampler s_29,
+    metal::uint2 pixel_6
 ) {
-    uint mask = (s_20.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_20.log2_res) & 31u));
-    uint _e16 = nyq_spread(pixel_3.x & mask);
-    uint _e19 = nyq_spread(pixel_3.y & mask);
+    uint mask_2 = (s_29.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_29.log2_res) & 31u));
+    uint _e16 = nyq_spread(pixel_6.x & mask_2);
+    uint _e19 = nyq_spread(pixel_6.y & mask_2);
     return _e16 | (_e19 << 1u);
 }
 
@@ -793,10 +1355,10 @@ uint nyq_one_of_24_(
 }
 
 metal::uint2 nyq_zsobol_dim_key(
-    metal::uint2 seed_9,
-    uint dim_10
+    metal::uint2 seed_10,
+    uint dim_12
 ) {
-    metal::uint2 _e6 = nyq_hash2_(seed_9, metal::uint2(dim_10 ^ 1329745740u, 23123u));
+    metal::uint2 _e6 = nyq_hash2_(seed_10, metal::uint2(dim_12 ^ 1329745740u, 23123u));
     return _e6;
 }
 
@@ -813,9 +1375,9 @@ uint nyq_zsobol_pixel_node(
 uint nyq_permuted_digit(
     uint perm,
     uint digit,
-    uint shift_1
+    uint shift_2
 ) {
-    return ((perm >> (2u * digit)) & 3u) << shift_1;
+    return ((perm >> (2u * digit)) & 3u) << shift_2;
 }
 
 metal::uint2 nyq_zsobol_pixel_word(
@@ -832,81 +1394,81 @@ metal::uint2 nyq_zsobol_pixel_word(
 metal::uint2 nyq_zsobol_nested_word(
     metal::uint2 w,
     uint higher_1,
-    uint shift_2
+    uint shift_3
 ) {
-    metal::uint2 tag = metal::uint2((higher_1 << 6u) | shift_2, higher_1 >> 26u);
+    metal::uint2 tag = metal::uint2((higher_1 << 6u) | shift_3, higher_1 >> 26u);
     metal::uint2 _e12 = nyq_mul64_(tag, metal::uint2(2135587861u, 2654435769u));
     metal::uint2 _e17 = nyq_mul64_(w ^ _e12, metal::uint2(3516067075u, 3518319154u));
     return _e17;
 }
 
 uint nyq_zsobol_index(
-    NyqZSobolSampler s_21,
+    NyqZSobolSampler s_30,
     uint morton,
     metal::uint2 key_3
 ) {
     uint index_8 = 0u;
-    uint i = {};
-    uint i_1 = {};
-    i = s_21.digits;
-    uint2 loop_bound_4 = uint2(4294967295u);
-    bool loop_init_3 = true;
+    uint i_3 = {};
+    uint i_4 = {};
+    i_3 = s_30.digits;
+    uint2 loop_bound_13 = uint2(4294967295u);
+    bool loop_init_11 = true;
     while(true) {
-        if (metal::all(loop_bound_4 == uint2(0u))) { break; }
-        loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
-        if (!loop_init_3) {
-            uint _e28 = i;
-            i = _e28 - 1u;
+        if (metal::all(loop_bound_13 == uint2(0u))) { break; }
+        loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
+        if (!loop_init_11) {
+            uint _e28 = i_3;
+            i_3 = _e28 - 1u;
         }
-        loop_init_3 = false;
-        uint _e7 = i;
-        if (_e7 > s_21.sample_digits) {
+        loop_init_11 = false;
+        uint _e7 = i_3;
+        if (_e7 > s_30.sample_digits) {
         } else {
             break;
         }
         {
-            uint _e11 = i;
-            uint shift_3 = (2u * (_e11 - 1u)) + s_21.odd;
-            uint digit_1 = (morton >> shift_3) & 3u;
+            uint _e11 = i_3;
+            uint shift_4 = (2u * (_e11 - 1u)) + s_30.odd;
+            uint digit_1 = (morton >> shift_4) & 3u;
             uint _e20 = index_8;
-            uint _e23 = nyq_shr(morton, shift_3 + 2u);
+            uint _e23 = nyq_shr(morton, shift_4 + 2u);
             uint _e24 = nyq_zsobol_pixel_node(_e23, key_3);
-            uint _e25 = nyq_permuted_digit(_e24, digit_1, shift_3);
+            uint _e25 = nyq_permuted_digit(_e24, digit_1, shift_4);
             index_8 = _e20 | _e25;
         }
     }
-    uint _e31 = nyq_shr(morton, s_21.log2_spp);
+    uint _e31 = nyq_shr(morton, s_30.log2_spp);
     metal::uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample = morton & (s_21.spp - 1u);
-    i_1 = s_21.sample_digits;
-    uint2 loop_bound_5 = uint2(4294967295u);
-    bool loop_init_4 = true;
+    uint sample = morton & (s_30.spp - 1u);
+    i_4 = s_30.sample_digits;
+    uint2 loop_bound_14 = uint2(4294967295u);
+    bool loop_init_12 = true;
     while(true) {
-        if (metal::all(loop_bound_5 == uint2(0u))) { break; }
-        loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
-        if (!loop_init_4) {
-            uint _e64 = i_1;
-            i_1 = _e64 - 1u;
+        if (metal::all(loop_bound_14 == uint2(0u))) { break; }
+        loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
+        if (!loop_init_12) {
+            uint _e64 = i_4;
+            i_4 = _e64 - 1u;
         }
-        loop_init_4 = false;
-        uint _e39 = i_1;
+        loop_init_12 = false;
+        uint _e39 = i_4;
         if (_e39 > 0u) {
         } else {
             break;
         }
         {
-            uint _e43 = i_1;
-            uint shift_4 = (2u * (_e43 - 1u)) + s_21.odd;
-            uint digit_2 = (sample >> shift_4) & 3u;
-            uint _e54 = nyq_shr(sample, shift_4 + 2u);
-            metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_4);
+            uint _e43 = i_4;
+            uint shift_5 = (2u * (_e43 - 1u)) + s_30.odd;
+            uint digit_2 = (sample >> shift_5) & 3u;
+            uint _e54 = nyq_shr(sample, shift_5 + 2u);
+            metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_5);
             uint _e57 = nyq_one_of_24_(_e55.y);
             uint _e58 = index_8;
-            uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_.inner[_e57], digit_2, shift_4);
+            uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_.inner[_e57], digit_2, shift_5);
             index_8 = _e58 | _e61;
         }
     }
-    if (s_21.odd == 1u) {
+    if (s_30.odd == 1u) {
         uint _e69 = index_8;
         metal::uint2 _e75 = nyq_zsobol_nested_word(_e32, sample >> 1u, 0u);
         index_8 = _e69 | ((sample & 1u) ^ (_e75.y >> 31u));
@@ -916,68 +1478,68 @@ uint nyq_zsobol_index(
 }
 
 uint nyq_zsobol_sequence_index(
-    NyqZSobolSampler s_22,
-    metal::uint2 pixel_4,
-    uint sample_index_2,
-    uint dim_11
+    NyqZSobolSampler s_31,
+    metal::uint2 pixel_7,
+    uint sample_index_5,
+    uint dim_13
 ) {
-    uint _e4 = nyq_zsobol_morton(s_22, pixel_4);
-    uint morton_1 = (_e4 << s_22.log2_spp) | (sample_index_2 & (s_22.spp - 1u));
-    metal::uint2 _e13 = nyq_zsobol_dim_key(s_22.seed, dim_11);
-    uint _e14 = nyq_zsobol_index(s_22, morton_1, _e13);
+    uint _e4 = nyq_zsobol_morton(s_31, pixel_7);
+    uint morton_1 = (_e4 << s_31.log2_spp) | (sample_index_5 & (s_31.spp - 1u));
+    metal::uint2 _e13 = nyq_zsobol_dim_key(s_31.seed, dim_13);
+    uint _e14 = nyq_zsobol_index(s_31, morton_1, _e13);
     return _e14;
 }
 
 uint nyq_zsobol_dim0_(
     uint index_9,
-    uint seed_10,
+    uint seed_11,
     uint how_1
 ) {
     if (how_1 == NYQ_SCRAMBLE_FAST_OWEN) {
-        uint _e5 = nyq_lk_hash(index_9, seed_10);
+        uint _e5 = nyq_lk_hash(index_9, seed_11);
         return metal::reverse_bits(_e5);
     }
-    uint _e8 = nyq_scramble_u32_(metal::reverse_bits(index_9), seed_10, how_1);
+    uint _e8 = nyq_scramble_u32_(metal::reverse_bits(index_9), seed_11, how_1);
     return _e8;
 }
 
 float nyq_zsobol_value_1d(
-    thread NyqZSobolSampler& s_23,
-    uint dim_12
+    thread NyqZSobolSampler& s_32,
+    uint dim_14
 ) {
-    metal::uint2 _e3 = s_23.seed;
-    metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_12);
-    NyqZSobolSampler _e5 = s_23;
-    uint _e7 = s_23.morton;
+    metal::uint2 _e3 = s_32.seed;
+    metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_14);
+    NyqZSobolSampler _e5 = s_32;
+    uint _e7 = s_32.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_23.scramble;
+    uint _e11 = s_32.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
     float _e13 = nyq_fraction_to_f32_(_e12);
     return _e13;
 }
 
 metal::float2 nyq_zsobol_value_2d(
-    thread NyqZSobolSampler& s_24,
-    uint dim_13,
+    thread NyqZSobolSampler& s_33,
+    uint dim_15,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint y = {};
-    metal::uint2 _e3 = s_24.seed;
-    metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_13);
-    NyqZSobolSampler _e5 = s_24;
-    uint _e7 = s_24.morton;
+    metal::uint2 _e3 = s_33.seed;
+    metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_15);
+    NyqZSobolSampler _e5 = s_33;
+    uint _e7 = s_33.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_24.scramble;
+    uint _e11 = s_33.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_24.scramble;
+    uint _e15 = s_33.scramble;
     if (_e15 == NYQ_SCRAMBLE_FAST_OWEN) {
         uint _e19 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
         uint _e22 = nyq_lk_hash(metal::reverse_bits(_e19), _e4.y);
         y = metal::reverse_bits(_e22);
     } else {
         uint _e25 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
-        uint _e28 = s_24.scramble;
+        uint _e28 = s_33.scramble;
         uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -988,67 +1550,67 @@ metal::float2 nyq_zsobol_value_2d(
 }
 
 void nyq_zsobol_start(
-    thread NyqZSobolSampler& s_25,
-    metal::uint2 pixel_5,
-    uint sample_index_3,
-    uint dim_14
+    thread NyqZSobolSampler& s_34,
+    metal::uint2 pixel_8,
+    uint sample_index_6,
+    uint dim_16
 ) {
-    NyqZSobolSampler _e5 = s_25;
-    uint _e6 = nyq_zsobol_morton(_e5, pixel_5);
-    uint _e8 = s_25.log2_spp;
-    uint _e11 = s_25.spp;
-    s_25.morton = (_e6 << _e8) | (sample_index_3 & (_e11 - 1u));
-    s_25.dim = dim_14;
+    NyqZSobolSampler _e5 = s_34;
+    uint _e6 = nyq_zsobol_morton(_e5, pixel_8);
+    uint _e8 = s_34.log2_spp;
+    uint _e11 = s_34.spp;
+    s_34.morton = (_e6 << _e8) | (sample_index_6 & (_e11 - 1u));
+    s_34.dim = dim_16;
     return;
 }
 
 float nyq_zsobol_get_1d(
-    thread NyqZSobolSampler& s_26
+    thread NyqZSobolSampler& s_35
 ) {
-    uint d_8 = s_26.dim;
-    s_26.dim = d_8 + 1u;
-    float _e6 = nyq_zsobol_value_1d(s_26, d_8);
+    uint d_11 = s_35.dim;
+    s_35.dim = d_11 + 1u;
+    float _e6 = nyq_zsobol_value_1d(s_35, d_11);
     return _e6;
 }
 
 metal::float2 nyq_zsobol_get_2d(
-    thread NyqZSobolSampler& s_27,
+    thread NyqZSobolSampler& s_36,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_9 = s_27.dim;
-    s_27.dim = d_9 + 2u;
-    metal::float2 _e6 = nyq_zsobol_value_2d(s_27, d_9, nyq_sobol_matrices, _buffer_sizes);
+    uint d_12 = s_36.dim;
+    s_36.dim = d_12 + 2u;
+    metal::float2 _e6 = nyq_zsobol_value_2d(s_36, d_12, nyq_sobol_matrices, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_zsobol_get_pixel_2d(
-    thread NyqZSobolSampler& s_28,
+    thread NyqZSobolSampler& s_37,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_28.dim;
-    s_28.dim = metal::max(_e3, 2u);
-    metal::float2 _e7 = nyq_zsobol_value_2d(s_28, 0u, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = s_37.dim;
+    s_37.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_zsobol_value_2d(s_37, 0u, nyq_sobol_matrices, _buffer_sizes);
     return _e7;
 }
 
 NyqCameraSample nyq_zsobol_camera_sample(
-    thread NyqZSobolSampler& s_29,
-    metal::uint2 pixel_6,
-    uint sample_index_4,
+    thread NyqZSobolSampler& s_38,
+    metal::uint2 pixel_9,
+    uint sample_index_7,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_zsobol_start(s_29, pixel_6, sample_index_4, 0u);
-    metal::float2 _e5 = nyq_zsobol_value_2d(s_29, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e7 = nyq_zsobol_value_1d(s_29, 2u);
-    metal::float2 _e9 = nyq_zsobol_value_2d(s_29, 3u, nyq_sobol_matrices, _buffer_sizes);
-    s_29.dim = 5u;
-    float _e14 = nyq_film_coordinate(pixel_6.x, _e5.x);
-    float _e17 = nyq_film_coordinate(pixel_6.y, _e5.y);
-    metal::float2 film = metal::float2(_e14, _e17);
-    return NyqCameraSample {film, _e9, _e7};
+    nyq_zsobol_start(s_38, pixel_9, sample_index_7, 0u);
+    metal::float2 _e5 = nyq_zsobol_value_2d(s_38, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e7 = nyq_zsobol_value_1d(s_38, 2u);
+    metal::float2 _e9 = nyq_zsobol_value_2d(s_38, 3u, nyq_sobol_matrices, _buffer_sizes);
+    s_38.dim = 5u;
+    float _e14 = nyq_film_coordinate(pixel_9.x, _e5.x);
+    float _e17 = nyq_film_coordinate(pixel_9.y, _e5.y);
+    metal::float2 film_1 = metal::float2(_e14, _e17);
+    return NyqCameraSample {film_1, _e9, _e7};
 }
 
 NyqPcg32_ nyq_pcg32_(
@@ -1084,10 +1646,10 @@ void nyq_pcg32_advance(
     metal::uint2 cur_plus = NYQ_RANDOM_INCREMENT;
     uint d_2 = {};
     d_2 = delta;
-    uint2 loop_bound_6 = uint2(4294967295u);
+    uint2 loop_bound_15 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_6 == uint2(0u))) { break; }
-        loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
+        if (metal::all(loop_bound_15 == uint2(0u))) { break; }
+        loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
         uint _e15 = d_2;
         if (_e15 > 0u) {
         } else {
@@ -1138,169 +1700,169 @@ float nyq_unit_f32_(
 metal::uint2 nyq_hash3_(
     metal::uint2 a_7,
     metal::uint2 b_5,
-    metal::uint2 c_1
+    metal::uint2 c_2
 ) {
     metal::uint2 _e3 = nyq_hash2_(a_7, b_5);
-    metal::uint2 _e7 = nyq_add64_(c_1, metal::uint2(2111796287u, 3668340012u));
+    metal::uint2 _e7 = nyq_add64_(c_2, metal::uint2(2111796287u, 3668340012u));
     metal::uint2 _e9 = nyq_mix64_(_e3 ^ _e7);
     return _e9;
 }
 
 NyqRandomSampler nyq_random_sampler(
-    metal::uint2 seed_11
+    metal::uint2 seed_12
 ) {
-    return NyqRandomSampler {seed_11, metal::uint2(0u, 0u), NyqPcg32_ {metal::uint2(0u, 0u)}, 0u};
+    return NyqRandomSampler {seed_12, metal::uint2(0u, 0u), NyqPcg32_ {metal::uint2(0u, 0u)}, 0u};
 }
 
 NyqPcg32_ nyq_random_at(
-    thread NyqRandomSampler& s_30,
-    uint dim_15
+    thread NyqRandomSampler& s_39,
+    uint dim_17
 ) {
     NyqPcg32_ g_2 = {};
-    metal::uint2 _e3 = s_30.base;
+    metal::uint2 _e3 = s_39.base;
     NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
-    uint d_10 = dim_15 & 65535u;
-    if (d_10 != 0u) {
-        nyq_pcg32_advance(g_2, d_10);
+    uint d_13 = dim_17 & 65535u;
+    if (d_13 != 0u) {
+        nyq_pcg32_advance(g_2, d_13);
     }
     NyqPcg32_ _e10 = g_2;
     return _e10;
 }
 
 void nyq_random_start(
-    thread NyqRandomSampler& s_31,
-    metal::uint2 pixel_7,
-    uint sample_index_5,
-    uint dim_16
+    thread NyqRandomSampler& s_40,
+    metal::uint2 pixel_10,
+    uint sample_index_8,
+    uint dim_18
 ) {
-    metal::uint2 _e5 = s_31.seed;
+    metal::uint2 _e5 = s_40.seed;
     metal::uint2 _e7 = nyq_u64_(1918987876u);
-    metal::uint2 _e8 = nyq_hash3_(pixel_7, _e5, _e7);
+    metal::uint2 _e8 = nyq_hash3_(pixel_10, _e5, _e7);
     metal::uint2 golden_2 = metal::uint2(2135587861u, 2654435769u);
-    metal::uint2 _e13 = nyq_u64_(sample_index_5);
+    metal::uint2 _e13 = nyq_u64_(sample_index_8);
     metal::uint2 _e14 = nyq_mul64_(_e13, golden_2);
     metal::uint2 _e16 = nyq_mix64_(_e8 ^ _e14);
-    s_31.base = _e16;
-    s_31.dim = dim_16;
-    NyqPcg32_ _e19 = nyq_random_at(s_31, dim_16);
-    s_31.rng = _e19;
+    s_40.base = _e16;
+    s_40.dim = dim_18;
+    NyqPcg32_ _e19 = nyq_random_at(s_40, dim_18);
+    s_40.rng = _e19;
     return;
 }
 
 float nyq_random_get_1d(
-    thread NyqRandomSampler& s_32
+    thread NyqRandomSampler& s_41
 ) {
     NyqPcg32_ g_3 = {};
-    NyqPcg32_ _e2 = s_32.rng;
+    NyqPcg32_ _e2 = s_41.rng;
     g_3 = _e2;
     uint _e4 = nyq_pcg32_next(g_3);
     float _e5 = nyq_unit_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_32.rng = _e7;
-    uint _e9 = s_32.dim;
-    s_32.dim = _e9 + 1u;
-    uint _e13 = s_32.dim;
+    s_41.rng = _e7;
+    uint _e9 = s_41.dim;
+    s_41.dim = _e9 + 1u;
+    uint _e13 = s_41.dim;
     if ((_e13 & 65535u) == 0u) {
-        NyqPcg32_ _e20 = nyq_random_at(s_32, 0u);
-        s_32.rng = _e20;
+        NyqPcg32_ _e20 = nyq_random_at(s_41, 0u);
+        s_41.rng = _e20;
     }
     return _e5;
 }
 
 metal::float2 nyq_random_get_2d(
-    thread NyqRandomSampler& s_33
+    thread NyqRandomSampler& s_42
 ) {
-    float _e1 = nyq_random_get_1d(s_33);
-    float _e2 = nyq_random_get_1d(s_33);
+    float _e1 = nyq_random_get_1d(s_42);
+    float _e2 = nyq_random_get_1d(s_42);
     return metal::float2(_e1, _e2);
 }
 
 metal::float2 nyq_random_get_pixel_2d(
-    thread NyqRandomSampler& s_34
+    thread NyqRandomSampler& s_43
 ) {
     NyqPcg32_ g_4 = {};
-    uint _e2 = s_34.dim;
+    uint _e2 = s_43.dim;
     if (_e2 == 0u) {
-        metal::float2 _e5 = nyq_random_get_2d(s_34);
+        metal::float2 _e5 = nyq_random_get_2d(s_43);
         return _e5;
     }
-    NyqPcg32_ _e7 = nyq_random_at(s_34, 0u);
+    NyqPcg32_ _e7 = nyq_random_at(s_43, 0u);
     g_4 = _e7;
     uint _e9 = nyq_pcg32_next(g_4);
     float _e10 = nyq_unit_f32_(_e9);
     uint _e11 = nyq_pcg32_next(g_4);
     float _e12 = nyq_unit_f32_(_e11);
     metal::float2 p_3 = metal::float2(_e10, _e12);
-    uint _e15 = s_34.dim;
+    uint _e15 = s_43.dim;
     if (_e15 < 2u) {
-        s_34.dim = 2u;
+        s_43.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_34.rng = _e21;
+        s_43.rng = _e21;
     }
     return p_3;
 }
 
 NyqCameraSample nyq_random_camera_sample(
-    thread NyqRandomSampler& s_35,
-    metal::uint2 pixel_8,
-    uint sample_index_6
+    thread NyqRandomSampler& s_44,
+    metal::uint2 pixel_11,
+    uint sample_index_9
 ) {
-    nyq_random_start(s_35, pixel_8, sample_index_6, 0u);
-    metal::float2 _e4 = nyq_random_get_pixel_2d(s_35);
-    float _e5 = nyq_random_get_1d(s_35);
-    metal::float2 _e6 = nyq_random_get_2d(s_35);
-    float _e9 = nyq_film_coordinate(pixel_8.x, _e4.x);
-    float _e12 = nyq_film_coordinate(pixel_8.y, _e4.y);
-    metal::float2 film_1 = metal::float2(_e9, _e12);
-    return NyqCameraSample {film_1, _e6, _e5};
+    nyq_random_start(s_44, pixel_11, sample_index_9, 0u);
+    metal::float2 _e4 = nyq_random_get_pixel_2d(s_44);
+    float _e5 = nyq_random_get_1d(s_44);
+    metal::float2 _e6 = nyq_random_get_2d(s_44);
+    float _e9 = nyq_film_coordinate(pixel_11.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_11.y, _e4.y);
+    metal::float2 film_2 = metal::float2(_e9, _e12);
+    return NyqCameraSample {film_2, _e6, _e5};
 }
 
 uint nyq_mod64_(
     metal::uint2 x_9,
     uint n
 ) {
-    uint r_2 = 0u;
-    uint i_2 = 0u;
-    bool local = {};
-    uint2 loop_bound_7 = uint2(4294967295u);
-    bool loop_init_5 = true;
+    uint r_5 = 0u;
+    uint i_5 = 0u;
+    bool local_3 = {};
+    uint2 loop_bound_16 = uint2(4294967295u);
+    bool loop_init_13 = true;
     while(true) {
-        if (metal::all(loop_bound_7 == uint2(0u))) { break; }
-        loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
-        if (!loop_init_5) {
-            uint _e42 = i_2;
-            i_2 = _e42 + 1u;
+        if (metal::all(loop_bound_16 == uint2(0u))) { break; }
+        loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
+        if (!loop_init_13) {
+            uint _e42 = i_5;
+            i_5 = _e42 + 1u;
         }
-        loop_init_5 = false;
-        uint _e6 = i_2;
+        loop_init_13 = false;
+        uint _e6 = i_5;
         if (_e6 < 64u) {
         } else {
             break;
         }
         {
-            uint _e11 = i_2;
+            uint _e11 = i_5;
             uint word_1 = (_e11 < 32u) ? x_9.y : x_9.x;
-            uint _e16 = i_2;
-            uint bit = (word_1 >> (31u - (_e16 & 31u))) & 1u;
-            uint _e23 = r_2;
+            uint _e16 = i_5;
+            uint bit_1 = (word_1 >> (31u - (_e16 & 31u))) & 1u;
+            uint _e23 = r_5;
             uint carry = _e23 >> 31u;
-            uint _e26 = r_2;
-            r_2 = (_e26 << 1u) | bit;
+            uint _e26 = r_5;
+            r_5 = (_e26 << 1u) | bit_1;
             if (!((carry == 1u))) {
-                uint _e35 = r_2;
-                local = _e35 >= n;
+                uint _e35 = r_5;
+                local_3 = _e35 >= n;
             } else {
-                local = true;
+                local_3 = true;
             }
-            bool _e38 = local;
+            bool _e38 = local_3;
             if (_e38) {
-                uint _e39 = r_2;
-                r_2 = _e39 - n;
+                uint _e39 = r_5;
+                r_5 = _e39 - n;
             }
         }
     }
-    uint _e44 = r_2;
+    uint _e44 = r_5;
     return _e44;
 }
 
@@ -1308,44 +1870,44 @@ metal::uint2 nyq_fixed_ratio(
     uint num,
     uint den
 ) {
-    uint r_3 = {};
+    uint r_6 = {};
     metal::uint2 q = metal::uint2(0u, 0u);
-    uint i_3 = 0u;
-    bool local_1 = {};
-    r_3 = num;
-    uint2 loop_bound_8 = uint2(4294967295u);
-    bool loop_init_6 = true;
+    uint i_6 = 0u;
+    bool local_4 = {};
+    r_6 = num;
+    uint2 loop_bound_17 = uint2(4294967295u);
+    bool loop_init_14 = true;
     while(true) {
-        if (metal::all(loop_bound_8 == uint2(0u))) { break; }
-        loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
-        if (!loop_init_6) {
-            uint _e37 = i_3;
-            i_3 = _e37 + 1u;
+        if (metal::all(loop_bound_17 == uint2(0u))) { break; }
+        loop_bound_17 -= uint2(loop_bound_17.y == 0u, 1u);
+        if (!loop_init_14) {
+            uint _e37 = i_6;
+            i_6 = _e37 + 1u;
         }
-        loop_init_6 = false;
-        uint _e9 = i_3;
+        loop_init_14 = false;
+        uint _e9 = i_6;
         if (_e9 < 64u) {
         } else {
             break;
         }
         {
-            uint _e12 = r_3;
+            uint _e12 = r_6;
             uint carry_1 = _e12 >> 31u;
-            uint _e15 = r_3;
-            r_3 = _e15 << 1u;
+            uint _e15 = r_6;
+            r_6 = _e15 << 1u;
             metal::uint2 _e18 = q;
             metal::uint2 _e20 = nyq_shl64_(_e18, 1u);
             q = _e20;
             if (!((carry_1 == 1u))) {
-                uint _e26 = r_3;
-                local_1 = _e26 >= den;
+                uint _e26 = r_6;
+                local_4 = _e26 >= den;
             } else {
-                local_1 = true;
+                local_4 = true;
             }
-            bool _e29 = local_1;
+            bool _e29 = local_4;
             if (_e29) {
-                uint _e30 = r_3;
-                r_3 = _e30 - den;
+                uint _e30 = r_6;
+                r_6 = _e30 - den;
                 uint _e33 = q.x;
                 q.x = _e33 | 1u;
             }
@@ -1365,47 +1927,47 @@ NyqLatticeSampler nyq_lattice_sampler(
     uint lattice,
     uint n_1,
     uint g_5,
-    metal::uint2 seed_12
+    metal::uint2 seed_13
 ) {
-    return NyqLatticeSampler {lattice, n_1, g_5, {}, seed_12, metal::uint2(0u, 0u), 0u, 0u};
+    return NyqLatticeSampler {lattice, n_1, g_5, {}, seed_13, metal::uint2(0u, 0u), 0u, 0u};
 }
 
 float nyq_lattice_value(
-    thread NyqLatticeSampler& s_36,
-    uint dim_17
+    thread NyqLatticeSampler& s_45,
+    uint dim_19
 ) {
     metal::uint2 base = {};
     uint g_6 = {};
-    uint n_3 = s_36.n;
-    uint _e5 = s_36.index;
-    uint k_10 = naga_mod(_e5, n_3);
-    uint component = naga_mod(dim_17, 2u);
-    uint _e11 = s_36.lattice;
+    uint n_4 = s_45.n;
+    uint _e5 = s_45.index;
+    uint k_11 = naga_mod(_e5, n_4);
+    uint component = naga_mod(dim_19, 2u);
+    uint _e11 = s_45.lattice;
     switch(_e11) {
         case 2u: {
-            metal::uint2 _e15 = nyq_u64_(k_10);
+            metal::uint2 _e15 = nyq_u64_(k_11);
             metal::uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA.inner[component]);
             metal::uint2 _e19 = nyq_add64_(metal::uint2(0u, 2147483648u), _e18);
             base = _e19;
             break;
         }
         default: {
-            uint _e21 = s_36.g;
+            uint _e21 = s_45.g;
             g_6 = _e21;
             if (component == 0u) {
-                g_6 = naga_mod(1u, n_3);
+                g_6 = naga_mod(1u, n_4);
             }
             uint _e27 = g_6;
-            metal::uint2 _e28 = nyq_mul_wide(k_10, _e27);
-            uint _e29 = nyq_mod64_(_e28, n_3);
-            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_3);
+            metal::uint2 _e28 = nyq_mul_wide(k_11, _e27);
+            uint _e29 = nyq_mod64_(_e28, n_4);
+            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_4);
             base = _e30;
             break;
         }
     }
-    metal::uint2 _e32 = s_36.pixel;
-    metal::uint2 _e35 = nyq_u64_(naga_div(dim_17, 2u));
-    metal::uint2 _e37 = s_36.seed;
+    metal::uint2 _e32 = s_45.pixel;
+    metal::uint2 _e35 = nyq_u64_(naga_div(dim_19, 2u));
+    metal::uint2 _e37 = s_45.seed;
     metal::uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     metal::uint2 _e39 = base;
     metal::uint2 _e40 = nyq_u64_(component);
@@ -1416,67 +1978,67 @@ float nyq_lattice_value(
 }
 
 void nyq_lattice_start(
-    thread NyqLatticeSampler& s_37,
-    metal::uint2 pixel_9,
-    uint sample_index_7,
-    uint dim_18
+    thread NyqLatticeSampler& s_46,
+    metal::uint2 pixel_12,
+    uint sample_index_10,
+    uint dim_20
 ) {
-    s_37.pixel = pixel_9;
-    s_37.index = sample_index_7;
-    s_37.dim = dim_18;
+    s_46.pixel = pixel_12;
+    s_46.index = sample_index_10;
+    s_46.dim = dim_20;
     return;
 }
 
 float nyq_lattice_get_1d(
-    thread NyqLatticeSampler& s_38
+    thread NyqLatticeSampler& s_47
 ) {
-    uint d_11 = s_38.dim;
-    s_38.dim = d_11 + 1u;
-    float _e6 = nyq_lattice_value(s_38, d_11);
+    uint d_14 = s_47.dim;
+    s_47.dim = d_14 + 1u;
+    float _e6 = nyq_lattice_value(s_47, d_14);
     return _e6;
 }
 
 metal::float2 nyq_lattice_get_2d(
-    thread NyqLatticeSampler& s_39
+    thread NyqLatticeSampler& s_48
 ) {
-    uint d_12 = s_39.dim;
-    s_39.dim = d_12 + 2u;
-    float _e6 = nyq_lattice_value(s_39, d_12);
-    float _e9 = nyq_lattice_value(s_39, d_12 + 1u);
+    uint d_15 = s_48.dim;
+    s_48.dim = d_15 + 2u;
+    float _e6 = nyq_lattice_value(s_48, d_15);
+    float _e9 = nyq_lattice_value(s_48, d_15 + 1u);
     return metal::float2(_e6, _e9);
 }
 
 metal::float2 nyq_lattice_get_pixel_2d(
-    thread NyqLatticeSampler& s_40
+    thread NyqLatticeSampler& s_49
 ) {
-    uint _e3 = s_40.dim;
-    s_40.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_lattice_value(s_40, 0u);
-    float _e9 = nyq_lattice_value(s_40, 1u);
+    uint _e3 = s_49.dim;
+    s_49.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_lattice_value(s_49, 0u);
+    float _e9 = nyq_lattice_value(s_49, 1u);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_lattice_camera_sample(
-    thread NyqLatticeSampler& s_41,
-    metal::uint2 pixel_10,
-    uint sample_index_8
+    thread NyqLatticeSampler& s_50,
+    metal::uint2 pixel_13,
+    uint sample_index_11
 ) {
-    nyq_lattice_start(s_41, pixel_10, sample_index_8, 0u);
-    metal::float2 _e4 = nyq_lattice_get_pixel_2d(s_41);
-    float _e5 = nyq_lattice_get_1d(s_41);
-    metal::float2 _e6 = nyq_lattice_get_2d(s_41);
-    float _e9 = nyq_film_coordinate(pixel_10.x, _e4.x);
-    float _e12 = nyq_film_coordinate(pixel_10.y, _e4.y);
-    metal::float2 film_2 = metal::float2(_e9, _e12);
-    return NyqCameraSample {film_2, _e6, _e5};
+    nyq_lattice_start(s_50, pixel_13, sample_index_11, 0u);
+    metal::float2 _e4 = nyq_lattice_get_pixel_2d(s_50);
+    float _e5 = nyq_lattice_get_1d(s_50);
+    metal::float2 _e6 = nyq_lattice_get_2d(s_50);
+    float _e9 = nyq_film_coordinate(pixel_13.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_13.y, _e4.y);
+    metal::float2 film_3 = metal::float2(_e9, _e12);
+    return NyqCameraSample {film_3, _e6, _e5};
 }
 
 float nyq_u32_to_f32_(
     uint x_11
 ) {
     uint m = {};
-    bool local_2 = {};
-    bool local_3 = {};
+    bool local_5 = {};
+    bool local_6 = {};
     if (x_11 < 16777216u) {
         return static_cast<float>(x_11);
     }
@@ -1488,16 +2050,16 @@ float nyq_u32_to_f32_(
     if (!((rest > half_))) {
         if (rest == half_) {
             uint _e27 = m;
-            local_3 = (_e27 & 1u) == 1u;
+            local_6 = (_e27 & 1u) == 1u;
         } else {
-            local_3 = false;
+            local_6 = false;
         }
-        bool _e33 = local_3;
-        local_2 = _e33;
+        bool _e33 = local_6;
+        local_5 = _e33;
     } else {
-        local_2 = true;
+        local_5 = true;
     }
-    bool _e35 = local_2;
+    bool _e35 = local_5;
     if (_e35) {
         uint _e36 = m;
         m = _e36 + 1u;
@@ -1509,28 +2071,28 @@ float nyq_u32_to_f32_(
 float nyq_recip_f32_(
     float x_12
 ) {
-    uint r_4 = 16777216u;
+    uint r_7 = 16777216u;
     uint q_1 = 0u;
-    uint i_4 = 0u;
-    bool local_4 = {};
-    bool local_5 = {};
-    uint bits_2 = as_type<uint>(x_12);
-    uint m_2 = (bits_2 & 8388607u) | 8388608u;
-    int e = as_type<int>(as_type<uint>(static_cast<int>(bits_2 >> 23u)) - as_type<uint>(127));
-    if (m_2 == 8388608u) {
+    uint i_7 = 0u;
+    bool local_7 = {};
+    bool local_8 = {};
+    uint bits_3 = as_type<uint>(x_12);
+    uint m_4 = (bits_3 & 8388607u) | 8388608u;
+    int e = as_type<int>(as_type<uint>(static_cast<int>(bits_3 >> 23u)) - as_type<uint>(127));
+    if (m_4 == 8388608u) {
         return as_type<float>(static_cast<uint>(as_type<int>(as_type<uint>(127) - as_type<uint>(e))) << 23u);
     }
-    uint2 loop_bound_9 = uint2(4294967295u);
-    bool loop_init_7 = true;
+    uint2 loop_bound_18 = uint2(4294967295u);
+    bool loop_init_15 = true;
     while(true) {
-        if (metal::all(loop_bound_9 == uint2(0u))) { break; }
-        loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
-        if (!loop_init_7) {
-            uint _e42 = i_4;
-            i_4 = _e42 + 1u;
+        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (!loop_init_15) {
+            uint _e42 = i_7;
+            i_7 = _e42 + 1u;
         }
-        loop_init_7 = false;
-        uint _e25 = i_4;
+        loop_init_15 = false;
+        uint _e25 = i_7;
         if (_e25 < 25u) {
         } else {
             break;
@@ -1538,15 +2100,15 @@ float nyq_recip_f32_(
         {
             uint _e28 = q_1;
             q_1 = _e28 << 1u;
-            uint _e31 = r_4;
-            if (_e31 >= m_2) {
-                uint _e33 = r_4;
-                r_4 = _e33 - m_2;
+            uint _e31 = r_7;
+            if (_e31 >= m_4) {
+                uint _e33 = r_7;
+                r_7 = _e33 - m_4;
                 uint _e35 = q_1;
                 q_1 = _e35 | 1u;
             }
-            uint _e38 = r_4;
-            r_4 = _e38 << 1u;
+            uint _e38 = r_7;
+            r_7 = _e38 << 1u;
         }
     }
     uint _e44 = q_1;
@@ -1554,19 +2116,19 @@ float nyq_recip_f32_(
     uint _e47 = q_1;
     q_1 = _e47 >> 1u;
     if (round == 1u) {
-        uint _e54 = r_4;
+        uint _e54 = r_7;
         if (!((_e54 != 0u))) {
             uint _e60 = q_1;
-            local_5 = (_e60 & 1u) == 1u;
+            local_8 = (_e60 & 1u) == 1u;
         } else {
-            local_5 = true;
+            local_8 = true;
         }
-        bool _e66 = local_5;
-        local_4 = _e66;
+        bool _e66 = local_8;
+        local_7 = _e66;
     } else {
-        local_4 = false;
+        local_7 = false;
     }
-    bool _e68 = local_4;
+    bool _e68 = local_7;
     if (_e68) {
         uint _e69 = q_1;
         q_1 = _e69 + 1u;
@@ -1576,33 +2138,33 @@ float nyq_recip_f32_(
 }
 
 metal::uint3 nyq_mul64x32_(
-    metal::uint2 r_5,
+    metal::uint2 r_8,
     uint k_6
 ) {
-    metal::uint2 _e3 = nyq_mul_wide(r_5.x, k_6);
-    metal::uint2 _e5 = nyq_mul_wide(r_5.y, k_6);
+    metal::uint2 _e3 = nyq_mul_wide(r_8.x, k_6);
+    metal::uint2 _e5 = nyq_mul_wide(r_8.y, k_6);
     metal::uint2 _e9 = nyq_add64_(_e5, metal::uint2(_e3.y, 0u));
     return metal::uint3(_e3.x, _e9.x, _e9.y);
 }
 
 uint nyq_nibble(
-    metal::uint2 t,
-    uint s_42
+    metal::uint2 t_1,
+    uint s_51
 ) {
-    return (((s_42 >= 32u) ? t.y : t.x) >> (s_42 & 31u)) & 15u;
+    return (((s_51 >= 32u) ? t_1.y : t_1.x) >> (s_51 & 31u)) & 15u;
 }
 
 metal::uint2 nyq_shl64_any(
     metal::uint2 x_13,
-    uint s_43
+    uint s_52
 ) {
-    if (s_43 == 0u) {
+    if (s_52 == 0u) {
         return x_13;
     }
-    if (s_43 >= 32u) {
-        return metal::uint2(0u, x_13.x << (s_43 - 32u));
+    if (s_52 >= 32u) {
+        return metal::uint2(0u, x_13.x << (s_52 - 32u));
     }
-    metal::uint2 _e12 = nyq_shl64_(x_13, s_43);
+    metal::uint2 _e12 = nyq_shl64_(x_13, s_52);
     return _e12;
 }
 
@@ -1610,15 +2172,15 @@ metal::uint2 nyq_packed_table(
     uint n_2,
     metal::uint2 r_in
 ) {
-    metal::uint2 t_1 = metal::uint2(1985229328u, 4275878552u);
-    metal::uint2 r_6 = {};
+    metal::uint2 t_2 = metal::uint2(1985229328u, 4275878552u);
+    metal::uint2 r_9 = {};
     uint k_7 = {};
     if (n_2 <= 4u) {
         if (n_2 < 2u) {
             return metal::uint2(0u, 0u);
         }
-        type_17 factorial = type_17 {{1u, 1u, 2u, 6u, 24u}};
-        type_17 start = type_17 {{0u, 0u, 0u, 2u, 8u}};
+        type_20 factorial = type_20 {{1u, 1u, 2u, 6u, 24u}};
+        type_20 start = type_20 {{0u, 0u, 0u, 2u, 8u}};
         metal::uint3 _e22 = nyq_mul64x32_(r_in, factorial.inner[n_2]);
         uint rank = _e22.z;
         return metal::uint2(NYQ_SMALL_PERMUTATIONS.inner[(start.inner[n_2] + rank) & 31u], 0u);
@@ -1626,90 +2188,90 @@ metal::uint2 nyq_packed_table(
     if (n_2 < 16u) {
         uint keep = 4u * n_2;
         if (keep < 32u) {
-            uint _e43 = t_1.x;
-            t_1 = metal::uint2(_e43 & ((1u << keep) - 1u), 0u);
+            uint _e43 = t_2.x;
+            t_2 = metal::uint2(_e43 & ((1u << keep) - 1u), 0u);
         } else {
-            uint _e52 = t_1.y;
-            t_1.y = _e52 & ((1u << (keep - 32u)) - 1u);
+            uint _e52 = t_2.y;
+            t_2.y = _e52 & ((1u << (keep - 32u)) - 1u);
         }
     }
-    r_6 = r_in;
+    r_9 = r_in;
     k_7 = n_2;
-    uint2 loop_bound_10 = uint2(4294967295u);
-    bool loop_init_8 = true;
+    uint2 loop_bound_19 = uint2(4294967295u);
+    bool loop_init_16 = true;
     while(true) {
-        if (metal::all(loop_bound_10 == uint2(0u))) { break; }
-        loop_bound_10 -= uint2(loop_bound_10.y == 0u, 1u);
-        if (!loop_init_8) {
+        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (!loop_init_16) {
             uint _e94 = k_7;
             k_7 = _e94 - 1u;
         }
-        loop_init_8 = false;
+        loop_init_16 = false;
         uint _e62 = k_7;
         if (_e62 > 1u) {
         } else {
             break;
         }
         {
-            metal::uint2 _e65 = r_6;
+            metal::uint2 _e65 = r_9;
             uint _e66 = k_7;
             metal::uint3 _e67 = nyq_mul64x32_(_e65, _e66);
             uint j_1 = _e67.z;
-            r_6 = _e67.xy;
+            r_9 = _e67.xy;
             uint _e71 = k_7;
             uint hi = 4u * (_e71 - 1u);
             uint lo = 4u * j_1;
-            metal::uint2 _e77 = t_1;
+            metal::uint2 _e77 = t_2;
             uint _e78 = nyq_nibble(_e77, hi);
-            metal::uint2 _e79 = t_1;
+            metal::uint2 _e79 = t_2;
             uint _e80 = nyq_nibble(_e79, lo);
             uint x_19 = (_e78 ^ _e80) & 15u;
-            metal::uint2 _e84 = t_1;
+            metal::uint2 _e84 = t_2;
             metal::uint2 _e87 = nyq_shl64_any(metal::uint2(x_19, 0u), hi);
             metal::uint2 _e90 = nyq_shl64_any(metal::uint2(x_19, 0u), lo);
-            t_1 = _e84 ^ (_e87 | _e90);
+            t_2 = _e84 ^ (_e87 | _e90);
         }
     }
-    metal::uint2 _e96 = t_1;
+    metal::uint2 _e96 = t_2;
     return _e96;
 }
 
 NyqPermutation nyq_permutation(
     uint n_in,
-    uint seed_13
+    uint seed_14
 ) {
-    uint n_4 = metal::max(n_in, 1u);
-    if (n_4 <= 16u) {
-        metal::uint2 _e10 = nyq_mix64_(metal::uint2(seed_13 ^ 2242054355u, 608135816u));
-        metal::uint2 _e11 = nyq_packed_table(n_4, _e10);
-        return NyqPermutation {n_4, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
+    uint n_5 = metal::max(n_in, 1u);
+    if (n_5 <= 16u) {
+        metal::uint2 _e10 = nyq_mix64_(metal::uint2(seed_14 ^ 2242054355u, 608135816u));
+        metal::uint2 _e11 = nyq_packed_table(n_5, _e10);
+        return NyqPermutation {n_5, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
     }
-    uint mask_1 = 4294967295u >> metal::clz(n_4 - 1u);
-    uint bits_3 = 32u - metal::clz(mask_1);
-    uint _e29 = nyq_mix32_(seed_13 ^ 1540483477u);
+    uint mask_3 = 4294967295u >> metal::clz(n_5 - 1u);
+    uint bits_4 = 32u - metal::clz(mask_3);
+    uint _e29 = nyq_mix32_(seed_14 ^ 1540483477u);
     uint _e32 = nyq_mix32_(_e29 + 1759714724u);
     uint _e35 = nyq_mix32_(_e32 ^ 625341585u);
-    metal::uint2 _e36 = nyq_mul_wide(_e35, n_4);
+    metal::uint2 _e36 = nyq_mul_wide(_e35, n_5);
     uint offset_1 = _e36.y;
-    return NyqPermutation {n_4, mask_1, metal::max(naga_div(bits_3 + 1u, 2u), 1u), metal::max(naga_div(bits_3, 3u), 1u), _e29, _e32, offset_1, {}, metal::uint2(0u, 0u)};
+    return NyqPermutation {n_5, mask_3, metal::max(naga_div(bits_4 + 1u, 2u), 1u), metal::max(naga_div(bits_4, 3u), 1u), _e29, _e32, offset_1, {}, metal::uint2(0u, 0u)};
 }
 
 uint nyq_permutation_apply(
     NyqPermutation p,
-    uint i_5
+    uint i_8
 ) {
     uint x_14 = {};
-    bool local_6 = {};
-    uint n_5 = p.n;
-    if (n_5 <= 16u) {
-        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_5, n_5) & 15u));
+    bool local_9 = {};
+    uint n_6 = p.n;
+    if (n_6 <= 16u) {
+        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_8, n_6) & 15u));
         return _e11;
     }
-    x_14 = naga_mod(i_5, n_5);
-    uint2 loop_bound_11 = uint2(4294967295u);
+    x_14 = naga_mod(i_8, n_6);
+    uint2 loop_bound_20 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_11 == uint2(0u))) { break; }
-        loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
+        if (metal::all(loop_bound_20 == uint2(0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         uint _e14 = x_14;
         x_14 = _e14 ^ (p.key & p.mask);
         uint _e19 = x_14;
@@ -1737,7 +2299,7 @@ uint nyq_permutation_apply(
         uint _e73 = x_14;
         x_14 = _e72 ^ (_e73 >> p.third);
         uint _e77 = x_14;
-        if (_e77 < n_5) {
+        if (_e77 < n_6) {
             break;
         }
     }
@@ -1745,87 +2307,87 @@ uint nyq_permutation_apply(
     uint q_2 = _e79 + p.offset;
     uint _e83 = x_14;
     if (!((q_2 < _e83))) {
-        local_6 = q_2 >= n_5;
+        local_9 = q_2 >= n_6;
     } else {
-        local_6 = true;
+        local_9 = true;
     }
-    bool _e90 = local_6;
-    return _e90 ? (q_2 - n_5) : q_2;
+    bool _e90 = local_9;
+    return _e90 ? (q_2 - n_6) : q_2;
 }
 
 NyqStratifiedSampler nyq_stratified_sampler(
     uint xs,
     uint ys,
     uint jitter,
-    metal::uint2 seed_14
+    metal::uint2 seed_15
 ) {
-    uint spp_1 = xs * ys;
+    uint spp_2 = xs * ys;
     float _e5 = nyq_u32_to_f32_(xs);
     float _e6 = nyq_recip_f32_(_e5);
     float _e7 = nyq_u32_to_f32_(ys);
     float _e8 = nyq_recip_f32_(_e7);
-    float _e9 = nyq_u32_to_f32_(spp_1);
+    float _e9 = nyq_u32_to_f32_(spp_2);
     float _e10 = nyq_recip_f32_(_e9);
     metal::float3 inv = metal::float3(_e6, _e8, _e10);
     metal::uint2 zero = metal::uint2(0u, 0u);
-    return NyqStratifiedSampler {xs, ys, spp_1, {}, inv, jitter, seed_14, zero, zero, 0u, 0u};
+    return NyqStratifiedSampler {xs, ys, spp_2, {}, inv, jitter, seed_15, zero, zero, 0u, 0u};
 }
 
 uint nyq_stratified_dim_key(
     metal::uint2 pixel_key,
-    uint dim_19
+    uint dim_21
 ) {
-    metal::uint2 _e2 = nyq_u64_(dim_19);
+    metal::uint2 _e2 = nyq_u64_(dim_21);
     metal::uint2 _e4 = nyq_mul64_(_e2, NYQ_DIM_STEP);
     metal::uint2 _e6 = nyq_mix64_(pixel_key ^ _e4);
     return _e6.x ^ _e6.y;
 }
 
 uint nyq_stratified_stratum(
-    thread NyqStratifiedSampler& s_44,
-    uint dim_20
+    thread NyqStratifiedSampler& s_53,
+    uint dim_22
 ) {
-    if (dim_20 == 0u) {
-        uint _e5 = s_44.index;
-        uint _e7 = s_44.spp;
+    if (dim_22 == 0u) {
+        uint _e5 = s_53.index;
+        uint _e7 = s_53.spp;
         return naga_mod(_e5, _e7);
     }
-    uint _e10 = s_44.spp;
-    metal::uint2 _e12 = s_44.pixel_key;
-    uint _e13 = nyq_stratified_dim_key(_e12, dim_20);
+    uint _e10 = s_53.spp;
+    metal::uint2 _e12 = s_53.pixel_key;
+    uint _e13 = nyq_stratified_dim_key(_e12, dim_22);
     NyqPermutation _e14 = nyq_permutation(_e10, _e13);
-    uint _e16 = s_44.index;
+    uint _e16 = s_53.index;
     uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
 metal::float2 nyq_stratified_jitters(
-    thread NyqStratifiedSampler& s_45,
-    uint dim_21
+    thread NyqStratifiedSampler& s_54,
+    uint dim_23
 ) {
-    bool local_7 = {};
-    uint _e3 = s_45.jitter;
+    bool local_10 = {};
+    uint _e3 = s_54.jitter;
     if (_e3 != NYQ_JITTERED) {
         return metal::float2(0.5, 0.5);
     }
-    if (!((dim_21 == 2u))) {
-        local_7 = dim_21 == 3u;
+    if (!((dim_23 == 2u))) {
+        local_10 = dim_23 == 3u;
     } else {
-        local_7 = true;
+        local_10 = true;
     }
-    bool _e17 = local_7;
+    bool _e17 = local_10;
     if (_e17) {
-        metal::uint2 _e19 = s_45.sample_key;
+        metal::uint2 _e19 = s_54.sample_key;
         metal::uint2 _e24 = nyq_mul64_(metal::uint2(2u, 0u), NYQ_JITTER_STEP);
         metal::uint2 _e26 = nyq_mix64_(_e19 ^ _e24);
-        if (dim_21 == 2u) {
+        if (dim_23 == 2u) {
             return metal::float2(static_cast<float>((_e26.y >> 11u) & 2097151u) * 0.00000047683716, 0.5);
         }
         metal::uint2 _e40 = nyq_shr64_(_e26, 22u);
         return metal::float2(static_cast<float>(_e40.x & 2097151u) * 0.00000047683716, static_cast<float>((_e26.x >> 1u) & 2097151u) * 0.00000047683716);
     }
-    metal::uint2 _e55 = s_45.sample_key;
-    metal::uint2 _e56 = nyq_u64_(dim_21);
+    metal::uint2 _e55 = s_54.sample_key;
+    metal::uint2 _e56 = nyq_u64_(dim_23);
     metal::uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     metal::uint2 _e60 = nyq_mix64_(_e55 ^ _e58);
     float _e62 = nyq_unit_f32_(_e60.y);
@@ -1840,90 +2402,90 @@ float nyq_below_one(
 }
 
 metal::float2 nyq_stratified_cell(
-    thread NyqStratifiedSampler& s_46,
+    thread NyqStratifiedSampler& s_55,
     uint st,
     metal::float2 j
 ) {
-    uint _e4 = s_46.xs;
+    uint _e4 = s_55.xs;
     uint cx = naga_mod(st, _e4);
-    uint _e7 = s_46.xs;
+    uint _e7 = s_55.xs;
     uint cy = naga_div(st, _e7);
     float _e9 = nyq_u32_to_f32_(cx);
-    float _e14 = s_46.inv[0];
+    float _e14 = s_55.inv[0];
     float _e16 = nyq_below_one((_e9 + j.x) * _e14);
     float _e17 = nyq_u32_to_f32_(cy);
-    float _e22 = s_46.inv[1];
+    float _e22 = s_55.inv[1];
     float _e24 = nyq_below_one((_e17 + j.y) * _e22);
     return metal::float2(_e16, _e24);
 }
 
 void nyq_stratified_start(
-    thread NyqStratifiedSampler& s_47,
-    metal::uint2 pixel_11,
-    uint sample_index_9,
-    uint dim_22
+    thread NyqStratifiedSampler& s_56,
+    metal::uint2 pixel_14,
+    uint sample_index_12,
+    uint dim_24
 ) {
-    metal::uint2 _e6 = s_47.seed;
+    metal::uint2 _e6 = s_56.seed;
     metal::uint2 _e8 = nyq_u64_(1937011297u);
-    metal::uint2 _e9 = nyq_hash3_(pixel_11, _e6, _e8);
-    s_47.pixel_key = _e9;
-    s_47.index = sample_index_9;
-    metal::uint2 _e13 = s_47.pixel_key;
-    metal::uint2 _e14 = nyq_u64_(sample_index_9);
+    metal::uint2 _e9 = nyq_hash3_(pixel_14, _e6, _e8);
+    s_56.pixel_key = _e9;
+    s_56.index = sample_index_12;
+    metal::uint2 _e13 = s_56.pixel_key;
+    metal::uint2 _e14 = nyq_u64_(sample_index_12);
     metal::uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
-    s_47.sample_key = _e13 ^ _e16;
-    s_47.dim = dim_22;
+    s_56.sample_key = _e13 ^ _e16;
+    s_56.dim = dim_24;
     return;
 }
 
 float nyq_stratified_get_1d(
-    thread NyqStratifiedSampler& s_48
+    thread NyqStratifiedSampler& s_57
 ) {
-    uint d_13 = s_48.dim;
-    s_48.dim = d_13 + 1u;
-    uint _e6 = nyq_stratified_stratum(s_48, d_13);
+    uint d_16 = s_57.dim;
+    s_57.dim = d_16 + 1u;
+    uint _e6 = nyq_stratified_stratum(s_57, d_16);
     float _e7 = nyq_u32_to_f32_(_e6);
-    metal::float2 _e8 = nyq_stratified_jitters(s_48, d_13);
-    float _e13 = s_48.inv[2];
+    metal::float2 _e8 = nyq_stratified_jitters(s_57, d_16);
+    float _e13 = s_57.inv[2];
     float _e15 = nyq_below_one((_e7 + _e8.x) * _e13);
     return _e15;
 }
 
 metal::float2 nyq_stratified_get_2d(
-    thread NyqStratifiedSampler& s_49
+    thread NyqStratifiedSampler& s_58
 ) {
-    uint d_14 = s_49.dim;
-    s_49.dim = d_14 + 2u;
-    uint _e6 = nyq_stratified_stratum(s_49, d_14);
-    metal::float2 _e7 = nyq_stratified_jitters(s_49, d_14);
-    metal::float2 _e8 = nyq_stratified_cell(s_49, _e6, _e7);
+    uint d_17 = s_58.dim;
+    s_58.dim = d_17 + 2u;
+    uint _e6 = nyq_stratified_stratum(s_58, d_17);
+    metal::float2 _e7 = nyq_stratified_jitters(s_58, d_17);
+    metal::float2 _e8 = nyq_stratified_cell(s_58, _e6, _e7);
     return _e8;
 }
 
 metal::float2 nyq_stratified_get_pixel_2d(
-    thread NyqStratifiedSampler& s_50
+    thread NyqStratifiedSampler& s_59
 ) {
-    uint _e3 = s_50.dim;
-    s_50.dim = metal::max(_e3, 2u);
-    uint _e7 = nyq_stratified_stratum(s_50, 0u);
-    metal::float2 _e9 = nyq_stratified_jitters(s_50, 0u);
-    metal::float2 _e10 = nyq_stratified_cell(s_50, _e7, _e9);
+    uint _e3 = s_59.dim;
+    s_59.dim = metal::max(_e3, 2u);
+    uint _e7 = nyq_stratified_stratum(s_59, 0u);
+    metal::float2 _e9 = nyq_stratified_jitters(s_59, 0u);
+    metal::float2 _e10 = nyq_stratified_cell(s_59, _e7, _e9);
     return _e10;
 }
 
 NyqCameraSample nyq_stratified_camera_sample(
-    thread NyqStratifiedSampler& s_51,
-    metal::uint2 pixel_12,
-    uint sample_index_10
+    thread NyqStratifiedSampler& s_60,
+    metal::uint2 pixel_15,
+    uint sample_index_13
 ) {
-    nyq_stratified_start(s_51, pixel_12, sample_index_10, 0u);
-    metal::float2 _e4 = nyq_stratified_get_pixel_2d(s_51);
-    float _e5 = nyq_stratified_get_1d(s_51);
-    metal::float2 _e6 = nyq_stratified_get_2d(s_51);
-    float _e9 = nyq_film_coordinate(pixel_12.x, _e4.x);
-    float _e12 = nyq_film_coordinate(pixel_12.y, _e4.y);
-    metal::float2 film_3 = metal::float2(_e9, _e12);
-    return NyqCameraSample {film_3, _e6, _e5};
+    nyq_stratified_start(s_60, pixel_15, sample_index_13, 0u);
+    metal::float2 _e4 = nyq_stratified_get_pixel_2d(s_60);
+    float _e5 = nyq_stratified_get_1d(s_60);
+    metal::float2 _e6 = nyq_stratified_get_2d(s_60);
+    float _e9 = nyq_film_coordinate(pixel_15.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_15.y, _e4.y);
+    metal::float2 film_4 = metal::float2(_e9, _e12);
+    return NyqCameraSample {film_4, _e6, _e5};
 }
 
 metal::uint2 nyq_mul64_high(
@@ -1943,32 +2505,32 @@ metal::uint2 nyq_mul64_high(
 }
 
 metal::uint2 nyq_wyrand(
-    metal::uint2 seed_15,
-    uint i_6
+    metal::uint2 seed_16,
+    uint i_9
 ) {
-    metal::uint2 _e5 = nyq_u64_(i_6 + 1u);
+    metal::uint2 _e5 = nyq_u64_(i_9 + 1u);
     metal::uint2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
-    metal::uint2 _e7 = nyq_add64_(seed_15, _e6);
-    metal::uint2 t_2 = _e7 ^ NYQ_WYRAND_FOLD;
-    metal::uint2 _e10 = nyq_mul64_high(_e7, t_2);
-    metal::uint2 _e11 = nyq_mul64_(_e7, t_2);
+    metal::uint2 _e7 = nyq_add64_(seed_16, _e6);
+    metal::uint2 t_4 = _e7 ^ NYQ_WYRAND_FOLD;
+    metal::uint2 _e10 = nyq_mul64_high(_e7, t_4);
+    metal::uint2 _e11 = nyq_mul64_(_e7, t_4);
     return _e10 ^ _e11;
 }
 
 uint nyq_pmj02_point(
-    metal::uint2 seed_16,
+    metal::uint2 seed_17,
     uint index_10,
-    uint dim_23
+    uint dim_25
 ) {
     uint x_16 = 0u;
     uint known = 0u;
     uint flips = 0u;
     uint p_1 = {};
     p_1 = index_10 & 65535u;
-    uint2 loop_bound_12 = uint2(4294967295u);
+    uint2 loop_bound_21 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_12 == uint2(0u))) { break; }
-        loop_bound_12 -= uint2(loop_bound_12.y == 0u, 1u);
+        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
         uint _e12 = p_1;
         if (_e12 != 0u) {
         } else {
@@ -1978,26 +2540,26 @@ uint nyq_pmj02_point(
             uint _e16 = p_1;
             uint level = 31u - metal::clz(_e16);
             uint swap = 2147483648u >> level;
-            uint low_1 = swap - 1u;
+            uint low_2 = swap - 1u;
             uint _e23 = p_1;
-            metal::uint2 _e24 = nyq_wyrand(seed_16, _e23);
-            uint bits_4 = (dim_23 == 0u) ? _e24.x : _e24.y;
+            metal::uint2 _e24 = nyq_wyrand(seed_17, _e23);
+            uint bits_5 = (dim_25 == 0u) ? _e24.x : _e24.y;
             uint _e30 = x_16;
             uint _e32 = known;
-            x_16 = _e30 | ((bits_4 & low_1) & ~(_e32));
+            x_16 = _e30 | ((bits_5 & low_2) & ~(_e32));
             uint _e36 = known;
-            known = _e36 | low_1;
+            known = _e36 | low_2;
             uint _e38 = flips;
             flips = _e38 ^ swap;
-            uint c_3 = (dim_23 == 0u) ? NYQ_PMJ02_XOR_X.inner[level & 15u] : NYQ_PMJ02_XOR_Y.inner[level & 15u];
+            uint c_4 = (dim_25 == 0u) ? NYQ_PMJ02_XOR_X.inner[level & 15u] : NYQ_PMJ02_XOR_Y.inner[level & 15u];
             uint _e51 = p_1;
-            p_1 = (_e51 - (1u << level)) ^ c_3;
+            p_1 = (_e51 - (1u << level)) ^ c_4;
         }
     }
-    metal::uint2 _e57 = nyq_wyrand(seed_16, 0u);
+    metal::uint2 _e57 = nyq_wyrand(seed_17, 0u);
     uint _e58 = x_16;
     uint _e64 = known;
-    x_16 = _e58 | (((dim_23 == 0u) ? _e57.x : _e57.y) & ~(_e64));
+    x_16 = _e58 | (((dim_25 == 0u) ? _e57.x : _e57.y) & ~(_e64));
     uint _e68 = x_16;
     uint _e69 = flips;
     return _e68 ^ _e69;
@@ -2005,40 +2567,40 @@ uint nyq_pmj02_point(
 
 NyqPmj02_ nyq_pmj02_(
     bool scrambled_1,
-    metal::uint2 seed_17
+    metal::uint2 seed_18
 ) {
-    metal::uint2 _e5 = nyq_hash2_(seed_17, metal::uint2(845115255u, 1886218800u));
+    metal::uint2 _e5 = nyq_hash2_(seed_18, metal::uint2(845115255u, 1886218800u));
     return NyqPmj02_ {scrambled_1 ? 1u : 0u, {}, _e5};
 }
 
 uint nyq_pmj02_sample_u32_(
-    NyqPmj02_ s_52,
+    NyqPmj02_ s_61,
     uint index_11,
-    uint dim_24
+    uint dim_26
 ) {
-    uint d_15 = dim_24 & 1u;
-    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_15);
-    if (s_52.scrambled == 0u) {
+    uint d_18 = dim_26 & 1u;
+    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_18);
+    if (s_61.scrambled == 0u) {
         return _e6;
     }
-    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_52.keys[d_15]);
+    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_61.keys[d_18]);
     return metal::reverse_bits(_e13);
 }
 
 float nyq_pmj02_sample(
-    NyqPmj02_ s_53,
+    NyqPmj02_ s_62,
     uint index_12,
-    uint dim_25
+    uint dim_27
 ) {
-    uint _e3 = nyq_pmj02_sample_u32_(s_53, index_12, dim_25);
+    uint _e3 = nyq_pmj02_sample_u32_(s_62, index_12, dim_27);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
 NyqPmj02Sampler nyq_pmj02_sampler(
-    metal::uint2 seed_18
+    metal::uint2 seed_19
 ) {
-    return NyqPmj02Sampler {seed_18, metal::uint2(0u, 0u), 0u, 0u};
+    return NyqPmj02Sampler {seed_19, metal::uint2(0u, 0u), 0u, 0u};
 }
 
 uint nyq_reverse16_(
@@ -2048,10 +2610,10 @@ uint nyq_reverse16_(
 }
 
 metal::uint3 nyq_pmj02_keys(
-    thread NyqPmj02Sampler& s_54,
+    thread NyqPmj02Sampler& s_63,
     metal::uint2 request
 ) {
-    metal::uint2 _e3 = s_54.pixel_key;
+    metal::uint2 _e3 = s_63.pixel_key;
     metal::uint2 _e7 = nyq_mul64_(request, metal::uint2(2135587861u, 2654435769u));
     metal::uint2 _e9 = nyq_mix64_(_e3 ^ _e7);
     metal::uint2 _e14 = nyq_mix64_(_e9 ^ metal::uint2(1781543545u, 28781u));
@@ -2060,10 +2622,10 @@ metal::uint3 nyq_pmj02_keys(
 
 metal::float2 nyq_pmj02_keyed_point(
     metal::uint3 k_8,
-    uint i_7
+    uint i_10
 ) {
-    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_7, 0u);
-    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_7, 1u);
+    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 0u);
+    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 1u);
     uint _e10 = nyq_lk_hash(metal::reverse_bits(_e4), k_8.y);
     float _e11 = nyq_rev_to_f32_(_e10);
     uint _e14 = nyq_lk_hash(metal::reverse_bits(_e7), k_8.z);
@@ -2072,39 +2634,39 @@ metal::float2 nyq_pmj02_keyed_point(
 }
 
 uint nyq_pmj02_row(
-    thread NyqPmj02Sampler& s_55,
+    thread NyqPmj02Sampler& s_64,
     metal::uint3 k_9
 ) {
-    uint _e3 = s_55.index_rev;
+    uint _e3 = s_64.index_rev;
     uint _e5 = nyq_lk_hash(_e3, k_9.x);
     return _e5 >> 16u;
 }
 
 void nyq_pmj02_start(
-    thread NyqPmj02Sampler& s_56,
-    metal::uint2 pixel_13,
-    uint sample_index_11,
-    uint dim_26
+    thread NyqPmj02Sampler& s_65,
+    metal::uint2 pixel_16,
+    uint sample_index_14,
+    uint dim_28
 ) {
-    metal::uint2 _e6 = s_56.seed;
-    metal::uint2 _e10 = nyq_hash3_(pixel_13, _e6, metal::uint2(1835675698u, 112u));
-    s_56.pixel_key = _e10;
-    uint _e12 = nyq_reverse16_(sample_index_11);
-    s_56.index_rev = _e12 << 16u;
-    s_56.dim = dim_26;
+    metal::uint2 _e6 = s_65.seed;
+    metal::uint2 _e10 = nyq_hash3_(pixel_16, _e6, metal::uint2(1835675698u, 112u));
+    s_65.pixel_key = _e10;
+    uint _e12 = nyq_reverse16_(sample_index_14);
+    s_65.index_rev = _e12 << 16u;
+    s_65.dim = dim_28;
     return;
 }
 
 float nyq_pmj02_get_1d(
-    thread NyqPmj02Sampler& s_57
+    thread NyqPmj02Sampler& s_66
 ) {
-    uint d_16 = s_57.dim;
-    s_57.dim = d_16 + 1u;
-    metal::uint2 _e6 = nyq_u64_(d_16);
+    uint d_19 = s_66.dim;
+    s_66.dim = d_19 + 1u;
+    metal::uint2 _e6 = nyq_u64_(d_19);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
     metal::uint2 _e12 = nyq_add64_(_e8, metal::uint2(1u, 0u));
-    metal::uint3 _e13 = nyq_pmj02_keys(s_57, _e12);
-    uint _e14 = nyq_pmj02_row(s_57, _e13);
+    metal::uint3 _e13 = nyq_pmj02_keys(s_66, _e12);
+    uint _e14 = nyq_pmj02_row(s_66, _e13);
     uint _e15 = nyq_reverse16_(_e14);
     uint _e17 = nyq_lk_hash(_e15, _e13.y);
     float _e18 = nyq_rev_to_f32_(_e17);
@@ -2112,84 +2674,84 @@ float nyq_pmj02_get_1d(
 }
 
 metal::float2 nyq_pmj02_get_2d(
-    thread NyqPmj02Sampler& s_58
+    thread NyqPmj02Sampler& s_67
 ) {
-    uint d_17 = s_58.dim;
-    s_58.dim = d_17 + 2u;
-    metal::uint2 _e6 = nyq_u64_(d_17);
+    uint d_20 = s_67.dim;
+    s_67.dim = d_20 + 2u;
+    metal::uint2 _e6 = nyq_u64_(d_20);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
-    metal::uint3 _e9 = nyq_pmj02_keys(s_58, _e8);
-    if (d_17 == 0u) {
-        uint _e13 = s_58.index_rev;
+    metal::uint3 _e9 = nyq_pmj02_keys(s_67, _e8);
+    if (d_20 == 0u) {
+        uint _e13 = s_67.index_rev;
         uint _e16 = nyq_reverse16_(_e13 >> 16u);
         metal::float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    uint _e18 = nyq_pmj02_row(s_58, _e9);
+    uint _e18 = nyq_pmj02_row(s_67, _e9);
     uint _e19 = nyq_reverse16_(_e18);
     metal::float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
 metal::float2 nyq_pmj02_get_pixel_2d(
-    thread NyqPmj02Sampler& s_59
+    thread NyqPmj02Sampler& s_68
 ) {
-    uint _e3 = s_59.dim;
-    s_59.dim = metal::max(_e3, 2u);
-    metal::uint3 _e9 = nyq_pmj02_keys(s_59, metal::uint2(0u, 0u));
-    uint _e11 = s_59.index_rev;
+    uint _e3 = s_68.dim;
+    s_68.dim = metal::max(_e3, 2u);
+    metal::uint3 _e9 = nyq_pmj02_keys(s_68, metal::uint2(0u, 0u));
+    uint _e11 = s_68.index_rev;
     uint _e14 = nyq_reverse16_(_e11 >> 16u);
     metal::float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
 NyqCameraSample nyq_pmj02_camera_sample(
-    thread NyqPmj02Sampler& s_60,
-    metal::uint2 pixel_14,
-    uint sample_index_12
+    thread NyqPmj02Sampler& s_69,
+    metal::uint2 pixel_17,
+    uint sample_index_15
 ) {
-    nyq_pmj02_start(s_60, pixel_14, sample_index_12, 0u);
-    metal::float2 _e4 = nyq_pmj02_get_pixel_2d(s_60);
-    float _e5 = nyq_pmj02_get_1d(s_60);
-    metal::float2 _e6 = nyq_pmj02_get_2d(s_60);
-    float _e9 = nyq_film_coordinate(pixel_14.x, _e4.x);
-    float _e12 = nyq_film_coordinate(pixel_14.y, _e4.y);
-    metal::float2 film_4 = metal::float2(_e9, _e12);
-    return NyqCameraSample {film_4, _e6, _e5};
+    nyq_pmj02_start(s_69, pixel_17, sample_index_15, 0u);
+    metal::float2 _e4 = nyq_pmj02_get_pixel_2d(s_69);
+    float _e5 = nyq_pmj02_get_1d(s_69);
+    metal::float2 _e6 = nyq_pmj02_get_2d(s_69);
+    float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
+    float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
+    metal::float2 film_5 = metal::float2(_e9, _e12);
+    return NyqCameraSample {film_5, _e6, _e5};
 }
 
 metal::uint4 nyq_fill_request(
-    uint i_8,
+    uint i_11,
     constant NyqFillJob& nyq_job,
-    device type_23 const& nyq_requests,
+    device type_25 const& nyq_requests,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = nyq_job.implicit;
     if (_e3 == 0u) {
-        metal::uint4 _e8 = nyq_requests[i_8];
+        metal::uint4 _e8 = nyq_requests[i_11];
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_6 = _e11 + i_8;
+    uint n_7 = _e11 + i_11;
     uint _e15 = nyq_job.spp;
-    uint pixel_15 = naga_div(n_6, _e15);
+    uint pixel_18 = naga_div(n_7, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_15, _e20), naga_div(pixel_15, _e25), naga_mod(n_6, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_18, _e20), naga_div(pixel_18, _e25), naga_mod(n_7, _e29), 5u);
 }
 
 void nyq_fill_camera(
     uint out_2,
-    NyqCameraSample c_2,
+    NyqCameraSample c_3,
     device type_4& nyq_values,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_values[out_2] = as_type<uint>(c_2.p_film.x);
-    nyq_values[out_2 + 1u] = as_type<uint>(c_2.p_film.y);
-    nyq_values[out_2 + 2u] = as_type<uint>(c_2.time);
-    nyq_values[out_2 + 3u] = as_type<uint>(c_2.lens.x);
-    nyq_values[out_2 + 4u] = as_type<uint>(c_2.lens.y);
+    nyq_values[out_2] = as_type<uint>(c_3.p_film.x);
+    nyq_values[out_2 + 1u] = as_type<uint>(c_3.p_film.y);
+    nyq_values[out_2 + 2u] = as_type<uint>(c_3.time);
+    nyq_values[out_2 + 3u] = as_type<uint>(c_3.lens.x);
+    nyq_values[out_2 + 4u] = as_type<uint>(c_3.lens.y);
     return;
 }
 
@@ -2212,7 +2774,7 @@ kernel void nyq_fill(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_4 const& nyq_sobol_matrices [[user(fake0)]]
 , constant NyqFillJob& nyq_job [[user(fake0)]]
-, device type_23 const& nyq_requests [[user(fake0)]]
+, device type_25 const& nyq_requests [[user(fake0)]]
 , device type_4& nyq_values [[user(fake0)]]
 , constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
 ) {
@@ -2222,18 +2784,19 @@ kernel void nyq_fill(
     NyqLatticeSampler s_3 = {};
     NyqStratifiedSampler s_4 = {};
     NyqPmj02Sampler s_5 = {};
+    NyqSobolSampler s_6 = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
     uint k_3 = 0u;
-    uint i_9 = id.x;
+    uint i_12 = id.x;
     uint _e4 = nyq_job.count;
-    if (i_9 >= _e4) {
+    if (i_12 >= _e4) {
         return;
     }
-    metal::uint4 _e6 = nyq_fill_request(i_9, nyq_job, nyq_requests, _buffer_sizes);
-    metal::uint2 pixel_16 = _e6.xy;
-    uint out_4 = 8u * i_9;
+    metal::uint4 _e6 = nyq_fill_request(i_12, nyq_job, nyq_requests, _buffer_sizes);
+    metal::uint2 pixel_19 = _e6.xy;
+    uint out_4 = 8u * i_12;
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -2241,9 +2804,9 @@ kernel void nyq_fill(
             uint _e18 = nyq_job.frame;
             NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_16, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_19, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e22, nyq_values, _buffer_sizes);
-            nyq_owen_sobol_start(s, pixel_16, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_19, _e6.z, _e6.w);
             float _e25 = nyq_owen_sobol_get_1d(s, nyq_sobol_matrices, _buffer_sizes);
             metal::float2 _e26 = nyq_owen_sobol_get_2d(s, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e25, _e26, nyq_values, _buffer_sizes);
@@ -2256,9 +2819,9 @@ kernel void nyq_fill(
             metal::uint2 _e38 = nyq_job.seed;
             NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_16, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_19, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_4, _e42, nyq_values, _buffer_sizes);
-            nyq_zsobol_start(s_1, pixel_16, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_19, _e6.z, _e6.w);
             float _e45 = nyq_zsobol_get_1d(s_1);
             metal::float2 _e46 = nyq_zsobol_get_2d(s_1, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_4, _e45, _e46, nyq_values, _buffer_sizes);
@@ -2268,9 +2831,9 @@ kernel void nyq_fill(
             metal::uint2 _e49 = nyq_job.seed;
             NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_16, _e6.z);
+            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_19, _e6.z);
             nyq_fill_camera(out_4, _e53, nyq_values, _buffer_sizes);
-            nyq_random_start(s_2, pixel_16, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_19, _e6.z, _e6.w);
             float _e56 = nyq_random_get_1d(s_2);
             metal::float2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_4, _e56, _e57, nyq_values, _buffer_sizes);
@@ -2283,9 +2846,9 @@ kernel void nyq_fill(
             metal::uint2 _e69 = nyq_job.seed;
             NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_16, _e6.z);
+            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_19, _e6.z);
             nyq_fill_camera(out_4, _e73, nyq_values, _buffer_sizes);
-            nyq_lattice_start(s_3, pixel_16, _e6.z, _e6.w);
+            nyq_lattice_start(s_3, pixel_19, _e6.z, _e6.w);
             float _e76 = nyq_lattice_get_1d(s_3);
             metal::float2 _e77 = nyq_lattice_get_2d(s_3);
             nyq_fill_values(out_4, _e76, _e77, nyq_values, _buffer_sizes);
@@ -2298,9 +2861,9 @@ kernel void nyq_fill(
             metal::uint2 _e91 = nyq_job.seed;
             NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
             s_4 = _e92;
-            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_16, _e6.z);
+            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_19, _e6.z);
             nyq_fill_camera(out_4, _e95, nyq_values, _buffer_sizes);
-            nyq_stratified_start(s_4, pixel_16, _e6.z, _e6.w);
+            nyq_stratified_start(s_4, pixel_19, _e6.z, _e6.w);
             float _e98 = nyq_stratified_get_1d(s_4);
             metal::float2 _e99 = nyq_stratified_get_2d(s_4);
             nyq_fill_values(out_4, _e98, _e99, nyq_values, _buffer_sizes);
@@ -2310,130 +2873,145 @@ kernel void nyq_fill(
             metal::uint2 _e102 = nyq_job.seed;
             NyqPmj02Sampler _e103 = nyq_pmj02_sampler(_e102);
             s_5 = _e103;
-            NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_16, _e6.z);
+            NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_19, _e6.z);
             nyq_fill_camera(out_4, _e106, nyq_values, _buffer_sizes);
-            nyq_pmj02_start(s_5, pixel_16, _e6.z, _e6.w);
+            nyq_pmj02_start(s_5, pixel_19, _e6.z, _e6.w);
             float _e109 = nyq_pmj02_get_1d(s_5);
             metal::float2 _e110 = nyq_pmj02_get_2d(s_5);
             nyq_fill_values(out_4, _e109, _e110, nyq_values, _buffer_sizes);
             return;
         }
+        case 6u: {
+            metal::uint2 _e113 = nyq_job.resolution;
+            uint _e116 = nyq_job.spp;
+            uint _e119 = nyq_job.scramble;
+            metal::uint2 _e122 = nyq_job.seed;
+            NyqSobolSampler _e123 = nyq_sobol_sampler(_e113, _e116, _e119, _e122, nyq_sobol_matrices, _buffer_sizes);
+            s_6 = _e123;
+            NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_19, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            nyq_fill_camera(out_4, _e126, nyq_values, _buffer_sizes);
+            nyq_sobol_sampler_start(s_6, pixel_19, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
+            float _e129 = nyq_sobol_sampler_get_1d(s_6, nyq_sobol_matrices, _buffer_sizes);
+            metal::float2 _e130 = nyq_sobol_sampler_get_2d(s_6, nyq_sobol_matrices, _buffer_sizes);
+            nyq_fill_values(out_4, _e129, _e130, nyq_values, _buffer_sizes);
+            return;
+        }
         case 16u: {
-            uint _e113 = nyq_job.dims;
-            uint _e116 = nyq_job.scramble;
-            metal::uint2 _e121 = nyq_job.seed;
-            NyqSobol _e122 = nyq_sobol(_e113, _e116 != 0u, _e121);
-            uint2 loop_bound_13 = uint2(4294967295u);
-            bool loop_init_9 = true;
+            uint _e133 = nyq_job.dims;
+            uint _e136 = nyq_job.scramble;
+            metal::uint2 _e141 = nyq_job.seed;
+            NyqSobol _e142 = nyq_sobol(_e133, _e136 != 0u, _e141);
+            uint2 loop_bound_22 = uint2(4294967295u);
+            bool loop_init_17 = true;
             while(true) {
-                if (metal::all(loop_bound_13 == uint2(0u))) { break; }
-                loop_bound_13 -= uint2(loop_bound_13.y == 0u, 1u);
-                if (!loop_init_9) {
-                    uint _e150 = k;
-                    k = _e150 + 1u;
+                if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+                if (!loop_init_17) {
+                    uint _e170 = k;
+                    k = _e170 + 1u;
                 }
-                loop_init_9 = false;
-                uint _e125 = k;
-                if (_e125 < 4u) {
+                loop_init_17 = false;
+                uint _e145 = k;
+                if (_e145 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e129 = k;
-                    uint _e134 = k;
-                    uint _e136 = nyq_sobol_sample_u32_(_e122, _e6.z, _e6.w + _e134, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e129] = _e136;
-                    uint _e140 = k;
-                    uint _e145 = k;
-                    float _e147 = nyq_sobol_sample(_e122, _e6.z, _e6.w + _e145, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[(out_4 + 4u) + _e140] = as_type<uint>(_e147);
+                    uint _e149 = k;
+                    uint _e154 = k;
+                    uint _e156 = nyq_sobol_sample_u32_(_e142, _e6.z, _e6.w + _e154, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e149] = _e156;
+                    uint _e160 = k;
+                    uint _e165 = k;
+                    float _e167 = nyq_sobol_sample(_e142, _e6.z, _e6.w + _e165, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[(out_4 + 4u) + _e160] = as_type<uint>(_e167);
                 }
             }
             return;
         }
         case 17u: {
-            uint _e154 = nyq_job.dims;
-            metal::uint2 _e157 = nyq_job.seed;
-            NyqOwenSobol _e158 = nyq_owen_sobol(_e154, _e157);
-            metal::float4 _e161 = nyq_owen_sobol_sample_4d(_e158, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
-            uint2 loop_bound_14 = uint2(4294967295u);
-            bool loop_init_10 = true;
+            uint _e174 = nyq_job.dims;
+            metal::uint2 _e177 = nyq_job.seed;
+            NyqOwenSobol _e178 = nyq_owen_sobol(_e174, _e177);
+            metal::float4 _e181 = nyq_owen_sobol_sample_4d(_e178, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
+            uint2 loop_bound_23 = uint2(4294967295u);
+            bool loop_init_18 = true;
             while(true) {
-                if (metal::all(loop_bound_14 == uint2(0u))) { break; }
-                loop_bound_14 -= uint2(loop_bound_14.y == 0u, 1u);
-                if (!loop_init_10) {
-                    uint _e186 = k_1;
-                    k_1 = _e186 + 1u;
+                if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+                if (!loop_init_18) {
+                    uint _e206 = k_1;
+                    k_1 = _e206 + 1u;
                 }
-                loop_init_10 = false;
-                uint _e164 = k_1;
-                if (_e164 < 4u) {
+                loop_init_18 = false;
+                uint _e184 = k_1;
+                if (_e184 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e168 = k_1;
-                    uint _e173 = k_1;
-                    uint _e175 = nyq_owen_sobol_sample_u32_(_e158, _e6.z, _e6.w + _e173, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_4 + _e168] = _e175;
-                    uint _e179 = k_1;
-                    uint _e182 = k_1;
-                    nyq_values[(out_4 + 4u) + _e179] = as_type<uint>(_e161[_e182]);
+                    uint _e188 = k_1;
+                    uint _e193 = k_1;
+                    uint _e195 = nyq_owen_sobol_sample_u32_(_e178, _e6.z, _e6.w + _e193, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_4 + _e188] = _e195;
+                    uint _e199 = k_1;
+                    uint _e202 = k_1;
+                    nyq_values[(out_4 + 4u) + _e199] = as_type<uint>(_e181[_e202]);
                 }
             }
             return;
         }
         case 18u: {
-            uint _e190 = nyq_job.scramble;
-            metal::uint2 _e195 = nyq_job.seed;
-            NyqPmj02_ _e196 = nyq_pmj02_(_e190 != 0u, _e195);
-            uint2 loop_bound_15 = uint2(4294967295u);
-            bool loop_init_11 = true;
+            uint _e210 = nyq_job.scramble;
+            metal::uint2 _e215 = nyq_job.seed;
+            NyqPmj02_ _e216 = nyq_pmj02_(_e210 != 0u, _e215);
+            uint2 loop_bound_24 = uint2(4294967295u);
+            bool loop_init_19 = true;
             while(true) {
-                if (metal::all(loop_bound_15 == uint2(0u))) { break; }
-                loop_bound_15 -= uint2(loop_bound_15.y == 0u, 1u);
-                if (!loop_init_11) {
-                    uint _e224 = k_2;
-                    k_2 = _e224 + 1u;
+                if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+                if (!loop_init_19) {
+                    uint _e244 = k_2;
+                    k_2 = _e244 + 1u;
                 }
-                loop_init_11 = false;
-                uint _e199 = k_2;
-                if (_e199 < 4u) {
+                loop_init_19 = false;
+                uint _e219 = k_2;
+                if (_e219 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e203 = k_2;
-                    uint _e208 = k_2;
-                    uint _e210 = nyq_pmj02_sample_u32_(_e196, _e6.z, _e6.w + _e208);
-                    nyq_values[out_4 + _e203] = _e210;
-                    uint _e214 = k_2;
-                    uint _e219 = k_2;
-                    float _e221 = nyq_pmj02_sample(_e196, _e6.z, _e6.w + _e219);
-                    nyq_values[(out_4 + 4u) + _e214] = as_type<uint>(_e221);
+                    uint _e223 = k_2;
+                    uint _e228 = k_2;
+                    uint _e230 = nyq_pmj02_sample_u32_(_e216, _e6.z, _e6.w + _e228);
+                    nyq_values[out_4 + _e223] = _e230;
+                    uint _e234 = k_2;
+                    uint _e239 = k_2;
+                    float _e241 = nyq_pmj02_sample(_e216, _e6.z, _e6.w + _e239);
+                    nyq_values[(out_4 + 4u) + _e234] = as_type<uint>(_e241);
                 }
             }
             return;
         }
         default: {
-            uint2 loop_bound_16 = uint2(4294967295u);
-            bool loop_init_12 = true;
+            uint2 loop_bound_25 = uint2(4294967295u);
+            bool loop_init_20 = true;
             while(true) {
-                if (metal::all(loop_bound_16 == uint2(0u))) { break; }
-                loop_bound_16 -= uint2(loop_bound_16.y == 0u, 1u);
-                if (!loop_init_12) {
-                    uint _e237 = k_3;
-                    k_3 = _e237 + 1u;
+                if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+                if (!loop_init_20) {
+                    uint _e257 = k_3;
+                    k_3 = _e257 + 1u;
                 }
-                loop_init_12 = false;
-                uint _e228 = k_3;
-                if (_e228 < 8u) {
+                loop_init_20 = false;
+                uint _e248 = k_3;
+                if (_e248 < 8u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e232 = k_3;
-                    nyq_values[out_4 + _e232] = 4294967295u;
+                    uint _e252 = k_3;
+                    nyq_values[out_4 + _e252] = 4294967295u;
                 }
             }
             return;

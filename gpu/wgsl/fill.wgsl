@@ -19,6 +19,7 @@ const NYQ_FILL_RANDOM_SAMPLER: u32 = 2u;
 const NYQ_FILL_LATTICE_SAMPLER: u32 = 3u;
 const NYQ_FILL_STRATIFIED_SAMPLER: u32 = 4u;
 const NYQ_FILL_PMJ02_SAMPLER: u32 = 5u;
+const NYQ_FILL_SOBOL_SAMPLER: u32 = 6u;
 const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 const NYQ_FILL_PMJ02: u32 = 18u;
@@ -122,6 +123,13 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             nyq_pmj02_start(&s, pixel, q.z, q.w);
             let one = nyq_pmj02_get_1d(&s);
             nyq_fill_values(out, one, nyq_pmj02_get_2d(&s));
+        }
+        case 6u: {
+            var s = nyq_sobol_sampler(nyq_job.resolution, nyq_job.spp, nyq_job.scramble, nyq_job.seed);
+            nyq_fill_camera(out, nyq_sobol_sampler_camera_sample(&s, pixel, q.z));
+            nyq_sobol_sampler_start(&s, pixel, q.z, q.w);
+            let one = nyq_sobol_sampler_get_1d(&s);
+            nyq_fill_values(out, one, nyq_sobol_sampler_get_2d(&s));
         }
         case 16u: {
             let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);

@@ -14,7 +14,7 @@ use std::borrow::Cow;
 
 use nyquist::lattice::FibonacciLattice;
 use nyquist::sampler::{
-    Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
+    Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler,
     StratifiedSampler, ZSobolSampler,
 };
 use nyquist::scramble::Scramble;
@@ -117,6 +117,17 @@ pub enum Job {
         /// The scramble's seed, if any.
         seed: Option<u64>,
     },
+    /// `SobolSampler::with_scramble(resolution, spp, scramble, seed)`.
+    SobolSampler {
+        /// Image size.
+        resolution: [u32; 2],
+        /// Samples per pixel, rounded up to a power of two.
+        spp: u32,
+        /// The values' scramble.
+        scramble: Scramble,
+        /// The seed.
+        seed: u64,
+    },
     /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
     Sobol {
         /// Dimensions, 1..=1024.
@@ -184,6 +195,7 @@ impl Job {
             Job::Pmj02Sampler { .. } => "pmj02 sampler".into(),
             Job::Pmj02 { seed: None } => "pmj02".into(),
             Job::Pmj02 { seed: Some(_) } => "pmj02 (owen)".into(),
+            Job::SobolSampler { scramble, .. } => format!("sobol sampler ({})", scramble.name()),
             Job::Sobol { seed: None, .. } => "sobol".into(),
             Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
             Job::OwenSobol { .. } => "owen-sobol".into(),
@@ -258,6 +270,19 @@ impl Job {
                 kind: 18,
                 scramble: u32::from(seed.is_some()),
                 seed: seed_words(seed.unwrap_or(0)),
+                ..FillJob::default()
+            },
+            Job::SobolSampler {
+                resolution,
+                spp,
+                scramble,
+                seed,
+            } => FillJob {
+                kind: 6,
+                scramble: scramble_code(scramble),
+                spp,
+                seed: seed_words(seed),
+                resolution,
                 ..FillJob::default()
             },
             Job::Sobol { dims, seed } => FillJob {
@@ -340,6 +365,16 @@ impl Job {
                     })
                     .collect()
             }
+            Job::SobolSampler {
+                resolution,
+                spp,
+                scramble,
+                seed,
+            } => sampler_answers(
+                SobolSampler::with_scramble(resolution, spp, scramble, seed)
+                    .expect("valid sampler"),
+                requests,
+            ),
             Job::Sobol { dims, seed } => {
                 let s = match seed {
                     None => Sobol::new(dims),

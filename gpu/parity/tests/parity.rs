@@ -111,6 +111,39 @@ fn jobs() -> Vec<Job> {
             seed: 3 + k as u64,
         });
     }
+    for (k, scramble) in Scramble::ALL.into_iter().enumerate() {
+        jobs.push(Job::SobolSampler {
+            resolution: [1280, 720],
+            spp: 16,
+            scramble,
+            seed: 20 + k as u64,
+        });
+    }
+    // The seed-0 sampler `SobolSampler::new` builds, a one-pixel image, 32 index bits, odd m.
+    jobs.push(Job::SobolSampler {
+        resolution: [640, 480],
+        spp: 8,
+        scramble: Scramble::None,
+        seed: 0,
+    });
+    jobs.push(Job::SobolSampler {
+        resolution: [1, 1],
+        spp: 2,
+        scramble: Scramble::PermuteDigits,
+        seed: 24,
+    });
+    jobs.push(Job::SobolSampler {
+        resolution: [65536, 3],
+        spp: 1,
+        scramble: Scramble::Owen,
+        seed: 25,
+    });
+    jobs.push(Job::SobolSampler {
+        resolution: [100, 37],
+        spp: 64,
+        scramble: Scramble::FastOwen,
+        seed: 26,
+    });
     // Odd log2 spp (a last base-2 digit), a one-pixel image, and the 32-bit edge.
     jobs.push(Job::ZSobolSampler {
         resolution: [64, 64],
