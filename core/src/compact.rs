@@ -548,5 +548,15 @@ impl<const N: usize> Sequence for OwenSobol<N> {
     }
 }
 
+mod owen_sobol_sampler;
+mod sobol_sampler;
+mod zsobol_sampler;
+
+pub use owen_sobol_sampler::OwenSobolSampler;
+pub use sobol_sampler::SobolSampler;
+pub use zsobol_sampler::ZSobolSampler;
+
+#[cfg(test)]
+mod sampler_tests;
 #[cfg(test)]
 mod tests;

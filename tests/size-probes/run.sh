@@ -22,6 +22,9 @@ budgets=(
     "stratify 4096 f32"
     "stratified_sampler 8192 f32"
     "mitchell 8192 f32"
+    "owen_sampler 8192 f32"
+    "zsobol_sampler 8192 f32"
+    "sobol_sampler 16384 f32"
 )
 wasm_budget=8192
 thumb=thumbv7em-none-eabihf

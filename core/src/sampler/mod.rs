@@ -132,6 +132,7 @@ pub use sobol::SobolSampler;
 pub use stratified::{Jitter, StratifiedSampler};
 pub use zero_two::ZeroTwoSampler;
 pub use zsobol::ZSobolSampler;
+pub(crate) use zsobol::{key_seed as zsobol_key_seed, scramble_dim0 as zsobol_scramble_dim0};
 
 /// A source of sample values addressed by (pixel, sample index, dimension).
 ///

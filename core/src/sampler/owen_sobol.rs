@@ -45,9 +45,9 @@ pub struct OwenSobolSampler {
     /// The pixel whose key is cached (`None` before the first).
     pixel: Option<[u32; 2]>,
     shuffle: IndexShuffle,
-    seeds: DimSeeds<CACHED>,
+    pub(crate) seeds: DimSeeds<CACHED>,
     /// The current sample's reversed shuffled index.
-    r: u32,
+    pub(crate) r: u32,
     dim: u32,
 }
 

@@ -122,6 +122,20 @@ impl SobolSampler {
         scramble: Scramble,
         seed: u64,
     ) -> Result<Self, Error> {
+        Self::build(resolution, spp, scramble, seed, sobol_u32)
+    }
+
+    /// [`SobolSampler::with_scramble`] with Sobol dimensions 0 and 1 read through `sobol01`
+    /// (`sobol01(index, dim)` for `dim < 2`, equal to [`sobol_u32`]): the setup's only reads of
+    /// the sequence, so that `compact::SobolSampler` builds the same sampler without its
+    /// tables.
+    pub(crate) fn build(
+        resolution: [u32; 2],
+        spp: u32,
+        scramble: Scramble,
+        seed: u64,
+        sobol01: impl Fn(u32, u32) -> u32 + Copy,
+    ) -> Result<Self, Error> {
         let seed = if scramble == Scramble::None { 0 } else { seed };
         super::check_image(resolution, spp)?;
         let (spp, _) = Self::rounded_spp(spp);
@@ -141,7 +155,7 @@ impl SobolSampler {
             };
             [low(0), low(1)]
         };
-        let inverse = Self::invert(m);
+        let inverse = Self::invert(m, sobol01);
         let mut sample_low = [0u32; 32];
         for (b, low) in sample_low.iter_mut().enumerate() {
             let high = if 2 * m as usize + b >= 32 {
@@ -149,7 +163,7 @@ impl SobolSampler {
             } else {
                 1u32 << (2 * m as usize + b)
             };
-            *low = apply_inverse(&inverse, have(high, m));
+            *low = apply_inverse(&inverse, have(high, m, sobol01));
         }
         let scrambles = core::array::from_fn(|k| match scramble {
             Scramble::PermuteDigits => xor_scramble(seed, 2 + k as u32),
@@ -176,14 +190,14 @@ impl SobolSampler {
 
     /// Gauss–Jordan elimination over GF(2) of the map "low 2m index bits → top m bits of
     /// dimensions 0 and 1".
-    fn invert(m: u32) -> [u32; 32] {
+    fn invert(m: u32, sobol01: impl Fn(u32, u32) -> u32) -> [u32; 32] {
         let n = (2 * m) as usize;
         // rows[i]: low 32 bits = row i of the map (which index bits feed target bit i),
         // high 32 bits = row i of the identity, becoming the inverse.
         let mut rows = [0u64; 32];
         for c in 0..n as u32 {
-            let x = top(sobol_u32(1 << c, 0), m);
-            let y = top(sobol_u32(1 << c, 1), m);
+            let x = top(sobol01(1 << c, 0), m);
+            let y = top(sobol01(1 << c, 1), m);
             let target = u64::from(x) | (u64::from(y) << m);
             for (i, row) in rows.iter_mut().enumerate().take(n) {
                 if target >> i & 1 == 1 {
@@ -229,8 +243,22 @@ impl SobolSampler {
     /// assert_eq!(all, [0, 1, 2, 3]);
     /// ```
     pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u32 {
+        self.sequence_index_by(pixel, sample_index, sobol_u32)
+    }
+
+    /// [`SobolSampler::sequence_index`] with Sobol dimensions 0 and 1 read through `sobol01`
+    /// (see [`SobolSampler::build`]).
+    pub(crate) fn sequence_index_by(
+        &self,
+        pixel: [u32; 2],
+        sample_index: u32,
+        sobol01: impl Fn(u32, u32) -> u32,
+    ) -> u32 {
         let (_, high) = self.sample_bits(sample_index);
-        high | apply_inverse(&self.inverse, self.want(pixel) ^ have(high, self.m))
+        high | apply_inverse(
+            &self.inverse,
+            self.want(pixel) ^ have(high, self.m, sobol01),
+        )
     }
 
     /// The sample's number in the pixel (`sample_index mod spp`) and the index bits it sets
@@ -272,11 +300,18 @@ impl SobolSampler {
 
     #[inline]
     fn sample(&self, dim: u32) -> f32 {
+        self.sample_by(dim, sobol_u32)
+    }
+
+    /// Dimension `dim` of the current sample, with `sobol(index, d)` (`d < 1024`, equal to
+    /// [`sobol_u32`] for the desktop sampler) the source of the Sobol values.
+    #[inline]
+    pub(crate) fn sample_by(&self, dim: u32, sobol: impl Fn(u32, u32) -> u32) -> f32 {
         if self.owen {
-            return self.owen_sample(dim);
+            return self.owen_sample(dim, sobol);
         }
         let dim = dim % DIMS;
-        let mut v = sobol_u32(self.index, dim);
+        let mut v = sobol(self.index, dim);
         if dim < 2 {
             // `m ≤ 16` (checked in `new`): keep the bits below the pixel's.
             v = (v ^ self.shift[dim as usize]) << self.m;
@@ -292,9 +327,9 @@ impl SobolSampler {
     /// digit-permuted paths stay as short as before the scrambles came (inlined, the match
     /// cost the camera sample 14 %).
     #[inline(never)]
-    fn owen_sample(&self, dim: u32) -> f32 {
+    fn owen_sample(&self, dim: u32, sobol: impl Fn(u32, u32) -> u32) -> f32 {
         let dim = dim % DIMS;
-        let v = sobol_u32(self.index, dim);
+        let v = sobol(self.index, dim);
         let seed = if dim >= 2
             && let Some(&x) = self.scrambles.get((dim - 2) as usize)
         {
@@ -344,8 +379,8 @@ fn xor_scramble(seed: u64, dim: u32) -> u32 {
 
 /// The top `m` bits of dimensions 0 and 1 of Sobol point `high`, interleaved.
 #[inline]
-fn have(high: u32, m: u32) -> u32 {
-    top(sobol_u32(high, 0), m) | (top(sobol_u32(high, 1), m) << m)
+fn have(high: u32, m: u32, sobol01: impl Fn(u32, u32) -> u32) -> u32 {
+    top(sobol01(high, 0), m) | (top(sobol01(high, 1), m) << m)
 }
 
 /// `inverse · t` over GF(2).

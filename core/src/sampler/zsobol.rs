@@ -362,7 +362,7 @@ impl ZSobolSampler {
 
     /// The index for the request at `dim`, through the cached pixel digits where there are some.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn index(&self, dim: u32) -> (u32, u64) {
+    pub(crate) fn index(&self, dim: u32) -> (u32, u64) {
         let k = match dim {
             0 => 0,
             2 => 1,
@@ -448,7 +448,7 @@ fn sobol1_rev(index: u32) -> u32 {
 
 /// The 32-bit LK-hash seed of a request's second coordinate, from its (mixed) 64-bit key.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-fn key_seed(key: u64) -> u32 {
+pub(crate) fn key_seed(key: u64) -> u32 {
     (key >> 32) as u32
 }
 
@@ -456,7 +456,7 @@ fn key_seed(key: u64) -> u32 {
 /// The fast Owen scramble of a reversed word is the LK hash of the word itself, reversed: one
 /// bit reversal.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-fn scramble_dim0(index: u32, seed: u32, how: Scramble) -> u32 {
+pub(crate) fn scramble_dim0(index: u32, seed: u32, how: Scramble) -> u32 {
     match how {
         Scramble::FastOwen => lk_hash(index, seed).reverse_bits(),
         how => scramble_u32(index.reverse_bits(), seed, how),

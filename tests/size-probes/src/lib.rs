@@ -127,3 +127,25 @@ mod semihosting {
         }
     }
 }
+
+/// One step of a camera-sample loop: the camera sample of a pixel and sample index taken from
+/// `i` (pixel `(i mod 64, ⌊i/64⌋ mod 64)`, sample `⌊i/4096⌋` cut to 32 bits), then one `get_1d`
+/// and one `get_2d` (dimensions 5 to 7); emits the eight values. `host/` runs the same steps.
+#[inline(always)]
+pub fn camera_loop<S: nyquist::sampler::Sampler>(s: &mut S, i: u64) {
+    let c = s.camera_sample([(i & 63) as u32, (i >> 6 & 63) as u32], (i >> 12) as u32);
+    let t = s.get_1d();
+    let [u, v] = s.get_2d();
+    for x in [
+        c.p_film[0],
+        c.p_film[1],
+        c.lens[0],
+        c.lens[1],
+        c.time,
+        t,
+        u,
+        v,
+    ] {
+        emit(x.to_bits());
+    }
+}

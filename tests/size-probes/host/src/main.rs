@@ -3,13 +3,36 @@
 
 use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
 use nyquist::rng::default_rng;
-use nyquist::sampler::{Jitter, Sampler, StratifiedSampler};
+use nyquist::sampler::{
+    Jitter, OwenSobolSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
+};
+use nyquist::scramble::Scramble;
 use nyquist::sequence::{Halton, OwenSobol, Sequence, Sobol, pmj02_build};
 use nyquist::stratify::{Jitter as StrataJitter, latin_hypercube, shuffle, stratified_2d};
 use std::io::{BufWriter, Write};
 use std::process::ExitCode;
 
 include!("../../src/indices.rs");
+
+/// The probes' `camera_loop`: the camera sample of the pixel and sample index taken from `i`,
+/// one `get_1d`, one `get_2d`, eight values.
+fn camera_loop(s: &mut impl Sampler, i: u64, emit: &mut impl FnMut(u32)) {
+    let c = s.camera_sample([(i & 63) as u32, (i >> 6 & 63) as u32], (i >> 12) as u32);
+    let t = s.get_1d();
+    let [u, v] = s.get_2d();
+    for x in [
+        c.p_film[0],
+        c.p_film[1],
+        c.lens[0],
+        c.lens[1],
+        c.time,
+        t,
+        u,
+        v,
+    ] {
+        emit(x.to_bits());
+    }
+}
 
 fn main() -> ExitCode {
     let Some(probe) = std::env::args().nth(1) else {
@@ -84,6 +107,18 @@ fn main() -> ExitCode {
                     w.iter().for_each(|x| emit(x.to_bits()));
                 }
             }
+        }
+        "owen_sampler" => {
+            let mut s = OwenSobolSampler::new(16, 7).unwrap().with_frame(2);
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
+        "sobol_sampler" => {
+            let mut s = SobolSampler::with_scramble([64, 64], 16, Scramble::Owen, 7).unwrap();
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
+        "zsobol_sampler" => {
+            let mut s = ZSobolSampler::new([64, 64], 16, Scramble::FastOwen, 7).unwrap();
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
         _ => {
             eprintln!("nyquist-probe-host: unknown probe {probe}");

@@ -1,0 +1,259 @@
+//! The compact pixel samplers against the desktop ones, value for value.
+
+use super::*;
+use crate::hash::mix64;
+use crate::sampler::{self, Sampler};
+use crate::scramble::Scramble;
+use proptest::prelude::*;
+
+/// The float's bits, so that the comparisons below tell `-0.0` from `0.0`.
+fn bits2(v: [f32; 2]) -> [u32; 2] {
+    v.map(f32::to_bits)
+}
+
+/// `a` and `b` give the same bits for `pixel`'s sample `index`: its camera sample and the
+/// values after it (dimensions 0 to 7), then the values from `dim` on (1D, 2D and the pixel
+/// sample in turn), and an array there: dimensions `dim .. dim + 15`.
+fn same_values(a: &mut impl Sampler, b: &mut impl Sampler, pixel: [u32; 2], index: u32, dim: u32) {
+    let (ca, cb) = (a.camera_sample(pixel, index), b.camera_sample(pixel, index));
+    let what = || std::format!("pixel {pixel:?} sample {index} dim {dim}");
+    assert_eq!(bits2(ca.p_film), bits2(cb.p_film), "film, {}", what());
+    assert_eq!(bits2(ca.lens), bits2(cb.lens), "lens, {}", what());
+    assert_eq!(ca.time.to_bits(), cb.time.to_bits(), "time, {}", what());
+    assert_eq!(
+        a.get_1d().to_bits(),
+        b.get_1d().to_bits(),
+        "dim 5, {}",
+        what()
+    );
+    assert_eq!(
+        bits2(a.get_2d()),
+        bits2(b.get_2d()),
+        "dims 6, 7, {}",
+        what()
+    );
+    a.start_pixel_sample(pixel, index, dim);
+    b.start_pixel_sample(pixel, index, dim);
+    for k in 0..3 {
+        assert_eq!(
+            a.get_1d().to_bits(),
+            b.get_1d().to_bits(),
+            "1d {k}, {}",
+            what()
+        );
+        assert_eq!(bits2(a.get_2d()), bits2(b.get_2d()), "2d {k}, {}", what());
+    }
+    assert_eq!(
+        bits2(a.get_pixel_2d()),
+        bits2(b.get_pixel_2d()),
+        "pixel 2d, {}",
+        what()
+    );
+    assert_eq!(
+        a.get_1d().to_bits(),
+        b.get_1d().to_bits(),
+        "after pixel, {}",
+        what()
+    );
+    let (mut xa, mut xb) = ([0f32; 5], [0f32; 5]);
+    a.get_array_1d(&mut xa);
+    b.get_array_1d(&mut xb);
+    assert_eq!(
+        xa.map(f32::to_bits),
+        xb.map(f32::to_bits),
+        "array, {}",
+        what()
+    );
+    assert_eq!(a.samples_per_pixel(), b.samples_per_pixel());
+}
+
+/// Pixels, sample indices and dimensions from small to the largest: `k` hashed and cut to
+/// every bit length.
+fn spread(k: u64) -> u32 {
+    if k < 16 {
+        return k as u32;
+    }
+    (mix64(k) >> 32) as u32 >> (k % 32)
+}
+
+/// Each scramble, from an integer.
+fn scramble(k: u8) -> Scramble {
+    Scramble::ALL[usize::from(k) % 4]
+}
+
+#[test]
+fn owen_sobol_sampler_equals_the_desktop_sampler_on_a_sweep() {
+    for seed in [0u64, 1, 7, u64::MAX] {
+        for frame in [0u32, 3, u32::MAX] {
+            let mut small = OwenSobolSampler::<32>::new(16, seed)
+                .unwrap()
+                .with_frame(frame);
+            let mut all = OwenSobolSampler::<1024>::new(16, seed)
+                .unwrap()
+                .with_frame(frame);
+            let mut desk = sampler::OwenSobolSampler::new(16, seed)
+                .unwrap()
+                .with_frame(frame);
+            for k in 0..300u64 {
+                let (pixel, index) = ([spread(k), spread(k + 7)], spread(3 * k));
+                same_values(&mut small, &mut desk, pixel, index, (k % 16) as u32);
+                same_values(&mut all, &mut desk, pixel, index, spread(k ^ 0x55));
+            }
+        }
+    }
+}
+
+/// Past `N` dimensions: the direction numbers of `d mod N`, the scramble of `d` itself.
+#[test]
+fn owen_sobol_sampler_past_n_wraps_the_matrix_and_keeps_the_scramble() {
+    let mut s = OwenSobolSampler::<4>::new(8, 3).unwrap();
+    let mut wide = OwenSobolSampler::<1024>::new(8, 3).unwrap();
+    let mut values = std::vec::Vec::new();
+    for i in 0..64 {
+        s.start_pixel_sample([5, 9], i, 2);
+        let below = s.get_1d();
+        s.start_pixel_sample([5, 9], i, 6);
+        let above = s.get_1d();
+        wide.start_pixel_sample([5, 9], i, 6);
+        values.push((below, above, wide.get_1d()));
+    }
+    // Dimension 6 here is dimension 2's Sobol points under another scramble: stratified as
+    // dimension 2 is, and not the same values (nor the 1024-dimension sampler's dimension 6).
+    assert!(values.iter().any(|v| v.0 != v.1));
+    assert!(values.iter().any(|v| v.1 != v.2));
+    let mut strata: std::vec::Vec<u32> = values.iter().map(|v| (v.1 * 64.0) as u32).collect();
+    strata.sort_unstable();
+    assert_eq!(strata, (0..64).collect::<std::vec::Vec<u32>>());
+}
+
+#[test]
+fn zsobol_sampler_equals_the_desktop_sampler_on_a_sweep() {
+    for (res, spp) in [
+        ([64u32, 64u32], 16u32),
+        ([1, 1], 1),
+        ([1920, 1080], 8),
+        ([65536, 3], 1),
+    ] {
+        for how in Scramble::ALL {
+            let mut small = ZSobolSampler::new(res, spp, how, 5).unwrap();
+            let mut desk = sampler::ZSobolSampler::new(res, spp, how, 5).unwrap();
+            for k in 0..200u64 {
+                // Runs of samples in one pixel (the desktop sampler tables them) and jumps.
+                let pixel = [spread(k / 4), spread(k / 4 + 9)];
+                same_values(&mut small, &mut desk, pixel, spread(k), spread(k ^ 0xa5));
+            }
+        }
+    }
+}
+
+#[test]
+fn sobol_sampler_equals_the_desktop_sampler_on_a_sweep() {
+    for (res, spp) in [
+        ([64u32, 64u32], 16u32),
+        ([1, 1], 1),
+        ([1920, 1080], 64),
+        ([65536, 3], 1),
+    ] {
+        for (how, seed) in [(Scramble::None, 0), (Scramble::PermuteDigits, 9)]
+            .into_iter()
+            .chain(Scramble::ALL.map(|how| (how, 5)))
+        {
+            let mut small = SobolSampler::<24>::with_scramble(res, spp, how, seed).unwrap();
+            let mut all = SobolSampler::<1024>::with_scramble(res, spp, how, seed).unwrap();
+            let mut desk = sampler::SobolSampler::with_scramble(res, spp, how, seed).unwrap();
+            for k in 0..200u64 {
+                let (pixel, index) = ([spread(k / 4), spread(k / 4 + 9)], spread(k));
+                same_values(&mut small, &mut desk, pixel, index, (k % 8) as u32);
+                same_values(&mut all, &mut desk, pixel, index, spread(k ^ 0xa5));
+                assert_eq!(
+                    small.sequence_index(pixel, index),
+                    desk.sequence_index(pixel, index)
+                );
+            }
+        }
+    }
+}
+
+/// Past `N` dimensions: dimensions 2 and up again, never the pixel's 0 and 1, each under its
+/// own scramble.
+#[test]
+fn sobol_sampler_past_n_wraps_into_the_dimensions_above_the_pixel() {
+    let how = Scramble::PermuteDigits;
+    let mut s = SobolSampler::<5>::with_scramble([4, 4], 64, how, 3).unwrap();
+    let mut wide = SobolSampler::<1024>::with_scramble([4, 4], 64, how, 3).unwrap();
+    // The 24-bit fraction of dimension `d` of sample `i` of pixel (1, 2).
+    let at = |s: &mut dyn Sampler, i: u32, d: u32| {
+        s.start_pixel_sample([1, 2], i, d);
+        (s.get_1d() * 16_777_216.0) as u32
+    };
+    let mut xors = std::collections::BTreeSet::new();
+    for i in 0..64 {
+        // Dimension 6 reads dimension 3's direction numbers (2 + 4 mod 3) under its own
+        // digital shift: the two differ by one XOR, the same for every sample.
+        xors.insert(at(&mut s, i, 3) ^ at(&mut s, i, 6));
+        assert_eq!(
+            at(&mut s, i, 3),
+            at(&mut wide, i, 3),
+            "below N: the desktop's values"
+        );
+    }
+    assert_eq!(xors.len(), 1, "{xors:?}");
+    assert_ne!(xors.first(), Some(&0));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn owen_sobol_sampler_equals_the_desktop_sampler(
+        spp in 1u32.., seed: u64, frame: u32, pixel: [u32; 2], index: u32, dim in 0u32..16,
+        far_dim: u32,
+    ) {
+        let mut desk = sampler::OwenSobolSampler::new(spp, seed).unwrap().with_frame(frame);
+        let mut small = OwenSobolSampler::<32>::new(spp, seed).unwrap().with_frame(frame);
+        same_values(&mut small, &mut desk, pixel, index, dim);
+        let mut all = OwenSobolSampler::<1024>::new(spp, seed).unwrap().with_frame(frame);
+        same_values(&mut all, &mut desk, pixel, index, far_dim);
+    }
+
+    #[test]
+    fn sobol_sampler_equals_the_desktop_sampler(
+        log2_res in 0u32..=16, log2_spp in 0u32..=32, aspect in 1u32..=8, how: u8, seed: u64,
+        pixel: [u32; 2], index: u32, dim in 0u32..16, far_dim: u32,
+    ) {
+        let side = 1u32 << log2_res;
+        let res = [(side / aspect).max(1), side];
+        let spp = (1u64 << log2_spp).min(u64::from(u32::MAX)) as u32;
+        let (small, all, desk) = (
+            SobolSampler::<32>::with_scramble(res, spp, scramble(how), seed),
+            SobolSampler::<1024>::with_scramble(res, spp, scramble(how), seed),
+            sampler::SobolSampler::with_scramble(res, spp, scramble(how), seed),
+        );
+        prop_assert_eq!(small.is_ok(), desk.is_ok());
+        if let (Ok(mut small), Ok(mut all), Ok(mut desk)) = (small, all, desk) {
+            same_values(&mut small, &mut desk, pixel, index, dim);
+            same_values(&mut all, &mut desk, pixel, index, far_dim);
+            prop_assert_eq!(small.sequence_index(pixel, index), desk.sequence_index(pixel, index));
+        }
+    }
+
+    #[test]
+    fn zsobol_sampler_equals_the_desktop_sampler(
+        log2_res in 0u32..=16, log2_spp in 0u32..=32, aspect in 1u32..=8, how: u8, seed: u64,
+        pixel: [u32; 2], index: u32, dim: u32,
+    ) {
+        let side = 1u32 << log2_res;
+        let res = [side, (side / aspect).max(1)];
+        let spp = (1u64 << log2_spp).min(u64::from(u32::MAX)) as u32;
+        let (small, desk) = (
+            ZSobolSampler::new(res, spp, scramble(how), seed),
+            sampler::ZSobolSampler::new(res, spp, scramble(how), seed),
+        );
+        prop_assert_eq!(small.is_ok(), desk.is_ok());
+        if let (Ok(mut small), Ok(mut desk)) = (small, desk) {
+            same_values(&mut small, &mut desk, pixel, index, dim);
+            // A second sample of the same pixel, where the desktop sampler tables its digits.
+            same_values(&mut small, &mut desk, pixel, index ^ 1, dim);
+        }
+    }
+}

@@ -1,0 +1,163 @@
+//! [`SobolSampler<N>`]: pbrt-v3's Sobol sampler over the whole image with its first `N`
+//! dimensions' direction numbers as constants instead of the byte tables.
+
+use super::sobol_directions;
+use crate::Error;
+use crate::sampler::{self, Sampler};
+use crate::scramble::Scramble;
+use crate::sequence::sobol_product;
+
+/// `N` is in `3 ..= 1024`, or the type does not compile.
+const fn check_sampler_dims<const N: usize>() {
+    assert!(
+        N >= 3 && N <= 1024,
+        "the sampler's dimension count must be in 3..=1024"
+    );
+}
+
+/// Sobol sampling over the whole image (pbrt-v3's `SobolSampler`) without the desktop tables:
+/// bit for bit what [`sampler::SobolSampler`] returns for every resolution, spp, scramble,
+/// seed, pixel and sample index, in dimensions `0..N` (`3 <= N <= 1024`, checked at compile
+/// time).
+///
+/// The image-to-index setup (the GF(2) inverse, the per-pixel and per-sample index shares) and
+/// the scrambles are the desktop sampler's own; the values come from the `N` dimensions'
+/// direction numbers (128 bytes each, computed at compile time) by a 32-column masked XOR
+/// where the desktop sampler reads 280 KB of byte tables. As in the desktop sampler dimension
+/// `d` is read as `d mod 1024`; past `N` of those, `d` takes the direction numbers of
+/// `2 + (d − 2) mod (N − 2)` (never those of dimensions 0 and 1, which carry the pixel) under
+/// its own scramble: with `N = 1024` every dimension is the desktop sampler's. A camera sample
+/// and an integrator's first few values need `N = 8`. Allocates: no.
+///
+/// ```
+/// use nyquist::{compact, sampler::{self, Sampler}, scramble::Scramble};
+/// let mut small = compact::SobolSampler::<8>::with_scramble([64, 64], 16, Scramble::Owen, 3)
+///     .unwrap();
+/// let mut desk = sampler::SobolSampler::with_scramble([64, 64], 16, Scramble::Owen, 3).unwrap();
+/// assert_eq!(small.camera_sample([10, 20], 5), desk.camera_sample([10, 20], 5));
+/// assert_eq!(small.get_2d(), desk.get_2d());
+/// ```
+#[derive(Clone, Debug)]
+pub struct SobolSampler<const N: usize> {
+    inner: sampler::SobolSampler,
+    dim: u32,
+}
+
+impl<const N: usize> SobolSampler<N> {
+    const DIRECTIONS: [[u32; 32]; N] = sobol_directions::<N>();
+
+    /// Sobol dimension `dim` (below 1024) at `index`: dimension `dim`, or past `N` the
+    /// dimension it wraps to.
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn sobol(index: u32, dim: u32) -> u32 {
+        let d = dim as usize;
+        let d = if d < N { d } else { 2 + (d - 2) % (N - 2) };
+        sobol_product(&Self::DIRECTIONS[d], index)
+    }
+
+    /// As [`sampler::SobolSampler::rounded_spp`]: the next power of two and whether it differs
+    /// from `requested`.
+    ///
+    /// ```
+    /// assert_eq!(nyquist::compact::SobolSampler::<8>::rounded_spp(5), (8, true));
+    /// ```
+    pub fn rounded_spp(requested: u32) -> (u32, bool) {
+        sampler::SobolSampler::rounded_spp(requested)
+    }
+
+    /// A Sobol sampler for an image of `resolution` pixels, `spp` rounded up to a power of two,
+    /// as [`sampler::SobolSampler::new`] ([`Scramble::None`] for seed 0, else
+    /// [`Scramble::PermuteDigits`]). `N` outside `3..=1024` does not compile.
+    ///
+    /// # Errors
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
+    /// `spp · 2^(2m)` passes 2³² (`2^m` the image's square).
+    ///
+    /// ```
+    /// use nyquist::compact::SobolSampler;
+    /// assert!(SobolSampler::<8>::new([16384, 16384], 16, 0).is_ok());
+    /// assert!(SobolSampler::<8>::new([16384, 16384], 32, 0).is_err());
+    /// ```
+    pub fn new(resolution: [u32; 2], spp: u32, seed: u64) -> Result<Self, Error> {
+        let scramble = if seed == 0 {
+            Scramble::None
+        } else {
+            Scramble::PermuteDigits
+        };
+        Self::with_scramble(resolution, spp, scramble, seed)
+    }
+
+    /// A Sobol sampler scrambled by `scramble` under `seed`, as
+    /// [`sampler::SobolSampler::with_scramble`].
+    ///
+    /// # Errors
+    /// As [`SobolSampler::new`].
+    ///
+    /// ```
+    /// use nyquist::{compact::SobolSampler, sampler::Sampler, scramble::Scramble};
+    /// let mut s = SobolSampler::<8>::with_scramble([8, 8], 4, Scramble::FastOwen, 3).unwrap();
+    /// s.start_pixel_sample([2, 5], 1, 0);
+    /// let [x, y] = s.get_pixel_2d();
+    /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
+    /// ```
+    pub fn with_scramble(
+        resolution: [u32; 2],
+        spp: u32,
+        scramble: Scramble,
+        seed: u64,
+    ) -> Result<Self, Error> {
+        const { check_sampler_dims::<N>() };
+        Ok(Self {
+            inner: sampler::SobolSampler::build(resolution, spp, scramble, seed, Self::sobol)?,
+            dim: 0,
+        })
+    }
+
+    /// The scramble used, [`Scramble::None`] included.
+    ///
+    /// ```
+    /// use nyquist::{compact::SobolSampler, scramble::Scramble};
+    /// assert_eq!(SobolSampler::<8>::new([4, 4], 4, 1).unwrap().scramble(), Scramble::PermuteDigits);
+    /// ```
+    pub fn scramble(&self) -> Scramble {
+        self.inner.scramble()
+    }
+
+    /// The global Sobol index of sample `sample_index` (modulo spp) of `pixel`, as
+    /// [`sampler::SobolSampler::sequence_index`].
+    ///
+    /// ```
+    /// use nyquist::compact::SobolSampler;
+    /// let s = SobolSampler::<8>::new([2, 2], 1, 0).unwrap();
+    /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
+    /// all.sort();
+    /// assert_eq!(all, [0, 1, 2, 3]);
+    /// ```
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u32 {
+        self.inner
+            .sequence_index_by(pixel, sample_index, Self::sobol)
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn sample(&self, dim: u32) -> f32 {
+        self.inner.sample_by(dim, Self::sobol)
+    }
+}
+
+impl<const N: usize> Sampler for SobolSampler<N> {
+    fn samples_per_pixel(&self) -> u32 {
+        self.inner.samples_per_pixel()
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        self.inner.start_pixel_sample(pixel, sample_index, dim);
+        self.dim = dim;
+    }
+
+    crate::sampler::global_point_dimensions!();
+
+    fn arrays_are_dimension_runs(&self) -> bool {
+        true
+    }
+}
