@@ -17,12 +17,21 @@ pub struct ShadersArgs {
     pub lang: Languages,
     /// Folder to write nyquist.wgsl, nyquist.comp.glsl, nyquist.hlsl, nyquist.metal and
     /// nyquist.spv into (it must exist).
-    #[arg(short, long, value_name = "DIR", required_unless_present = "check")]
+    #[arg(
+        short,
+        long,
+        value_name = "DIR",
+        required_unless_present_any = ["check", "costs"]
+    )]
     pub output: Option<PathBuf>,
     /// Compare the files in DIR with what would be written, write nothing, and fail (one
     /// line, status 2) naming every file that differs or is missing.
     #[arg(long, value_name = "DIR", conflicts_with = "output")]
     pub check: Option<PathBuf>,
+    /// Print each pixel sampler's size in SPIR-V instructions (camera sample, get_1d, get_2d,
+    /// each with everything it calls) as a Markdown table, and write nothing.
+    #[arg(long, conflicts_with_all = ["output", "check"])]
+    pub costs: bool,
 }
 
 /// A set of languages, in [`Language::ALL`]'s order, without repeats.
@@ -77,10 +86,13 @@ pub fn parse_languages(s: &str) -> Result<Languages, String> {
 
 /// Runs `nyquist shaders`.
 pub fn run(args: &ShadersArgs) -> Result<()> {
+    if args.costs {
+        return crate::output::print(&nyquist_gpu::costs::sampler_table()?);
+    }
     let (dir, flag) = match (&args.output, &args.check) {
         (Some(dir), _) => (dir, "--output"),
         (None, Some(dir)) => (dir, "--check"),
-        (None, None) => bail!("--output: a folder is required"),
+        (None, None) => bail!("--output: a folder is required (or --check DIR, or --costs)"),
     };
     if !dir.is_dir() {
         bail!("{flag} {}: not an existing folder", dir.display());

@@ -22,6 +22,8 @@
 
 use std::fmt;
 
+pub mod costs;
+
 /// The library and its `nyq_fill` kernel, in WGSL: the source every other language is emitted
 /// from. Bindings: group 0, binding 0 the Sobol matrices; bindings 1–3 the kernel's job,
 /// requests and values.
