@@ -549,10 +549,12 @@ impl<const N: usize> Sequence for OwenSobol<N> {
 }
 
 mod owen_sobol_sampler;
+mod pmj02_sampler;
 mod sobol_sampler;
 mod zsobol_sampler;
 
 pub use owen_sobol_sampler::OwenSobolSampler;
+pub use pmj02_sampler::Pmj02Sampler;
 pub use sobol_sampler::SobolSampler;
 pub use zsobol_sampler::ZSobolSampler;
 

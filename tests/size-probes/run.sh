@@ -25,6 +25,7 @@ budgets=(
     "owen_sampler 8192 f32"
     "zsobol_sampler 8192 f32"
     "sobol_sampler 16384 f32"
+    "pmj02_sampler 16384 f32"
 )
 wasm_budget=8192
 thumb=thumbv7em-none-eabihf

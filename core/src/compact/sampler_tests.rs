@@ -201,8 +201,58 @@ fn sobol_sampler_past_n_wraps_into_the_dimensions_above_the_pixel() {
     assert_ne!(xors.first(), Some(&0));
 }
 
+/// The backward construction rebuilds the baked table point for point, and the buffer
+/// construction's points for other seeds.
+#[test]
+fn pmj02_points_rebuilt_alone_equal_the_construction() {
+    use super::pmj02_sampler::pmj02_point;
+    use crate::sequence::{PMJ02_TABLE, PMJ02_TABLE_SEED, pmj02_build};
+    for (j, p) in PMJ02_TABLE.iter().enumerate() {
+        let j = j as u32;
+        let point = [0, 1].map(|d| pmj02_point(PMJ02_TABLE_SEED, j, d));
+        assert_eq!(point, *p, "point {j}");
+        // The index wraps modulo 2^16.
+        assert_eq!(pmj02_point(PMJ02_TABLE_SEED, j | 0xabc << 16, 1), p[1]);
+    }
+    let mut built = std::vec![[0u32; 2]; 4096];
+    for seed in [0u64, 1, 0xdead_beef, u64::MAX] {
+        pmj02_build(seed, &mut built).unwrap();
+        for (j, p) in built.iter().enumerate() {
+            assert_eq!(
+                [0, 1].map(|d| pmj02_point(seed, j as u32, d)),
+                *p,
+                "seed {seed} {j}"
+            );
+        }
+    }
+}
+
+#[test]
+fn pmj02_sampler_equals_the_desktop_sampler_on_a_sweep() {
+    for spp in [1u32, 16, 100, 65_536] {
+        for seed in [0u64, 7, u64::MAX] {
+            let mut small = Pmj02Sampler::new(spp, seed).unwrap();
+            let mut desk = sampler::Pmj02Sampler::new(spp, seed).unwrap();
+            for k in 0..300u64 {
+                let (pixel, index) = ([spread(k / 4), spread(k / 4 + 9)], spread(k));
+                same_values(&mut small, &mut desk, pixel, index, spread(k ^ 0x3c));
+            }
+        }
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn pmj02_sampler_equals_the_desktop_sampler(
+        spp in 1u32..=65_536, seed: u64, pixel: [u32; 2], index: u32, dim: u32,
+    ) {
+        let mut small = Pmj02Sampler::new(spp, seed).unwrap();
+        let mut desk = sampler::Pmj02Sampler::new(spp, seed).unwrap();
+        same_values(&mut small, &mut desk, pixel, index, dim);
+        same_values(&mut small, &mut desk, pixel, index.wrapping_add(1), dim % 8);
+    }
 
     #[test]
     fn owen_sobol_sampler_equals_the_desktop_sampler(

@@ -126,6 +126,7 @@ pub use lattice::LatticeSampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use named::{NAMES, NamedSampler, NamedSamplerError, SCRAMBLE_NAMES};
 pub use owen_sobol::OwenSobolSampler;
+pub(crate) use pmj02::Keys as Pmj02Keys;
 pub use pmj02::Pmj02Sampler;
 pub use random::RandomSampler;
 pub use sobol::SobolSampler;

@@ -16,16 +16,16 @@ const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
 /// The three keys of one request (a 2D pair or a 1D value at one dimension of one pixel): the
 /// index shuffle and the Owen scrambles of x and y, each a well-mixed 32-bit hash.
 #[derive(Clone, Copy, Debug)]
-struct Keys {
+pub(crate) struct Keys {
     shuffle: Key,
-    x: Key,
-    y: Key,
+    pub(crate) x: Key,
+    pub(crate) y: Key,
 }
 
 /// One [`lk_hash`](crate::scramble::lk_hash) seed with its multiplier, derived once per key
 /// rather than per hash.
 #[derive(Clone, Copy, Debug)]
-struct Key {
+pub(crate) struct Key {
     seed: u32,
     multiplier: u32,
 }
@@ -41,7 +41,7 @@ impl Key {
 
     /// `lk_hash(x_rev, seed)`.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn hash(self, x_rev: u32) -> u32 {
+    pub(crate) fn hash(self, x_rev: u32) -> u32 {
         lk_hash_by(x_rev, self.seed, self.multiplier)
     }
 
@@ -72,7 +72,7 @@ impl Keys {
     /// `2^k` table points for every `k ≤ 16`. The scramble's output is bit-reversed; its top 16
     /// bits are the reversed point index, which is that point's row in the reversed table.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn row(&self, index_rev: u32) -> usize {
+    pub(crate) fn row(&self, index_rev: u32) -> usize {
         (self.shuffle.hash(index_rev) >> 16) as usize
     }
 
@@ -157,7 +157,7 @@ pub struct Pmj02Sampler {
     /// The camera's keys for the current pixel, built once per pixel.
     camera: [Keys; 3],
     /// The sample index modulo 65536, bit-reversed into a 32-bit word (what the shuffles read).
-    index_rev: u32,
+    pub(crate) index_rev: u32,
     dim: u32,
 }
 
@@ -211,8 +211,10 @@ impl Pmj02Sampler {
         self.camera[0].point((self.index_rev >> 16) as usize)
     }
 
+    /// The keys of request `request` (`2d` for the pair at dimension `d`, `2d + 1` for the 1D
+    /// value there) of the current pixel.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn keys(&self, request: u64) -> Keys {
+    pub(crate) fn keys(&self, request: u64) -> Keys {
         match request {
             0 => self.camera[0],
             r if r == CAMERA[1] => self.camera[1],

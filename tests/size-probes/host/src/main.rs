@@ -4,7 +4,7 @@
 use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
 use nyquist::rng::default_rng;
 use nyquist::sampler::{
-    Jitter, OwenSobolSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
+    Jitter, OwenSobolSampler, Pmj02Sampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
 };
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{Halton, OwenSobol, Sequence, Sobol, pmj02_build};
@@ -114,6 +114,10 @@ fn main() -> ExitCode {
         }
         "sobol_sampler" => {
             let mut s = SobolSampler::with_scramble([64, 64], 16, Scramble::Owen, 7).unwrap();
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
+        "pmj02_sampler" => {
+            let mut s = Pmj02Sampler::new(16, 7).unwrap();
             indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
         "zsobol_sampler" => {
