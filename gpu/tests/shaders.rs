@@ -45,3 +45,24 @@ fn emission_is_deterministic_and_every_language_names_the_entry_point() {
         }
     }
 }
+
+/// The costs table in docs/gpu.md is what `nyquist shaders --costs` prints today.
+#[test]
+fn docs_cost_table_is_current() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../docs/gpu.md");
+    let doc = std::fs::read_to_string(&path).unwrap();
+    let (begin, end) = ("<!-- costs: begin -->\n", "<!-- costs: end -->");
+    let start = doc.find(begin).expect("begin marker") + begin.len();
+    let stop = doc.find(end).expect("end marker");
+    let table = nyquist_gpu::costs::sampler_table().unwrap();
+    if std::env::var_os("NYQUIST_UPDATE_SHADERS").is_some() {
+        let updated = format!("{}{table}{}", &doc[..start], &doc[stop..]);
+        std::fs::write(&path, updated).unwrap();
+        return;
+    }
+    assert_eq!(
+        &doc[start..stop],
+        table,
+        "docs/gpu.md's cost table is stale: NYQUIST_UPDATE_SHADERS=1 cargo test -p nyquist-gpu --test shaders"
+    );
+}
