@@ -548,11 +548,13 @@ impl<const N: usize> Sequence for OwenSobol<N> {
     }
 }
 
+mod halton_sampler;
 mod owen_sobol_sampler;
 mod pmj02_sampler;
 mod sobol_sampler;
 mod zsobol_sampler;
 
+pub use halton_sampler::HaltonSampler;
 pub use owen_sobol_sampler::OwenSobolSampler;
 pub use pmj02_sampler::Pmj02Sampler;
 pub use sobol_sampler::SobolSampler;

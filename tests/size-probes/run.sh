@@ -26,6 +26,10 @@ budgets=(
     "zsobol_sampler 8192 f32"
     "sobol_sampler 16384 f32"
     "pmj02_sampler 16384 f32"
+    "halton_sampler_none 16384 f32"
+    "halton_sampler_permute 16384 f32"
+    "halton_sampler_fast_owen 16384 f32"
+    "halton_sampler_owen 16384 f32"
 )
 wasm_budget=8192
 thumb=thumbv7em-none-eabihf

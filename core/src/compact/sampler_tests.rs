@@ -201,6 +201,70 @@ fn sobol_sampler_past_n_wraps_into_the_dimensions_above_the_pixel() {
     assert_ne!(xors.first(), Some(&0));
 }
 
+#[test]
+fn halton_sampler_equals_the_desktop_sampler_on_a_sweep() {
+    for (res, spp) in [
+        ([64u32, 64u32], 16u32),
+        ([1, 1], 1),
+        ([1920, 1080], 64),
+        ([7, 300], 3),
+    ] {
+        for how in Scramble::ALL {
+            for seed in [0u64, 5, u64::MAX] {
+                let mut small = HaltonSampler::<24>::new(res, spp, how, seed).unwrap();
+                let mut desk = sampler::HaltonSampler::new(res, spp, how, seed).unwrap();
+                for k in 0..100u64 {
+                    let (pixel, index) = ([spread(k / 4), spread(k / 4 + 9)], spread(k));
+                    same_values(&mut small, &mut desk, pixel, index, (k % 8) as u32);
+                }
+            }
+            // Every base, through the dimensions of a 1024-dimension sampler.
+            let mut all = HaltonSampler::<1024>::new(res, spp, how, 9).unwrap();
+            let mut desk = sampler::HaltonSampler::new(res, spp, how, 9).unwrap();
+            for k in 0..70u64 {
+                let (pixel, index) = ([spread(k), spread(k + 9)], spread(k ^ 0x77));
+                same_values(&mut all, &mut desk, pixel, index, 16 * k as u32);
+            }
+        }
+    }
+}
+
+/// Past `N` dimensions: the bases above the pixel's again, under scrambles of their own.
+#[test]
+fn halton_sampler_past_n_takes_the_bases_above_the_pixel_under_new_scrambles() {
+    for how in Scramble::ALL {
+        let mut s = HaltonSampler::<5>::new([8, 8], 64, how, 3).unwrap();
+        // Dimension 6 takes base 7 (dimension 3's, 2 + 4 mod 3): 49 consecutive samples of a
+        // pixel step its index by the stride, coprime to 7, so they fall one per 1/49 as
+        // dimension 3's do, whatever the scramble.
+        for d in [3u32, 6] {
+            let mut cells: std::vec::Vec<u32> = (0..49)
+                .map(|i| {
+                    s.start_pixel_sample([2, 5], i, d);
+                    (s.get_1d() * 49.0) as u32
+                })
+                .collect();
+            cells.sort_unstable();
+            assert_eq!(
+                cells,
+                (0..49).collect::<std::vec::Vec<u32>>(),
+                "{how:?} dim {d}"
+            );
+        }
+        let values = |s: &mut HaltonSampler<5>, d: u32| -> std::vec::Vec<u32> {
+            (0..16)
+                .map(|i| {
+                    s.start_pixel_sample([2, 5], i, d);
+                    s.get_1d().to_bits()
+                })
+                .collect()
+        };
+        let (three, six) = (values(&mut s, 3), values(&mut s, 6));
+        // Unscrambled, dimension 6 repeats dimension 3; scrambled, it has its own scramble.
+        assert_eq!(three == six, how == Scramble::None, "{how:?}");
+    }
+}
+
 /// The backward construction rebuilds the baked table point for point, and the buffer
 /// construction's points for other seeds.
 #[test]
@@ -243,6 +307,19 @@ fn pmj02_sampler_equals_the_desktop_sampler_on_a_sweep() {
 
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn halton_sampler_equals_the_desktop_sampler(
+        res in [1u32..5000, 1u32..5000], spp in 1u32.., how: u8, seed: u64, pixel: [u32; 2],
+        index: u32, dim in 0u32..16, far_dim: u32,
+    ) {
+        let mut desk = sampler::HaltonSampler::new(res, spp, scramble(how), seed).unwrap();
+        let mut small = HaltonSampler::<32>::new(res, spp, scramble(how), seed).unwrap();
+        same_values(&mut small, &mut desk, pixel, index, dim);
+        prop_assert_eq!(small.sequence_index(pixel, index), desk.sequence_index(pixel, index));
+        let mut all = HaltonSampler::<1024>::new(res, spp, scramble(how), seed).unwrap();
+        same_values(&mut all, &mut desk, pixel, index, far_dim);
+    }
 
     #[test]
     fn pmj02_sampler_equals_the_desktop_sampler(

@@ -120,6 +120,19 @@ fn main() -> ExitCode {
             let mut s = Pmj02Sampler::new(16, 7).unwrap();
             indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
+        "halton_sampler_none"
+        | "halton_sampler_permute"
+        | "halton_sampler_fast_owen"
+        | "halton_sampler_owen" => {
+            let scramble = match probe.as_str() {
+                "halton_sampler_none" => Scramble::None,
+                "halton_sampler_permute" => Scramble::PermuteDigits,
+                "halton_sampler_fast_owen" => Scramble::FastOwen,
+                _ => Scramble::Owen,
+            };
+            let mut s = HaltonSampler::new([64, 64], 16, scramble, 7).unwrap();
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
         "zsobol_sampler" => {
             let mut s = ZSobolSampler::new([64, 64], 16, Scramble::FastOwen, 7).unwrap();
             indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
