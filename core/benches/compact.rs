@@ -1,6 +1,8 @@
 //! What the compact const-generic point sets (`nyquist::compact`) cost on the desktop beside the
 //! table paths they equal bit for bit: one value per call, 1024 indices, coherent (`0..1024`, a
 //! pixel's samples) and incoherent (hashed 32-bit indices, a global sequence over a large image).
+//! And the compact pixel samplers beside the desktop ones: camera-sample loops (`camera_sample`,
+//! `get_1d`, `get_2d`) over 64 pixels of a scanline, 16 samples each, pixel by pixel.
 
 mod cpu_time;
 
@@ -9,6 +11,8 @@ use std::hint::black_box;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::compact;
 use nyquist::hash::mix32;
+use nyquist::sampler::{self, Sampler};
+use nyquist::scramble::Scramble;
 use nyquist::sequence::{Halton, OwenSobol, Sequence, Sobol};
 
 const POINTS: u32 = 1024;
@@ -89,9 +93,92 @@ fn bench_compact(c: &mut Criterion<cpu_time::BenchClock>) {
     }
 }
 
+/// 1024 camera-sample loops: 64 pixels along a scanline, their 16 samples each in turn.
+fn bench_camera(
+    g: &mut criterion::BenchmarkGroup<'_, cpu_time::BenchClock>,
+    name: &str,
+    s: &mut impl Sampler,
+) {
+    g.bench_function(name, |b| {
+        b.iter(|| {
+            let mut acc = 0.0f32;
+            for k in 0..1024u32 {
+                let c = s.camera_sample(black_box([100 + k / 16, 37]), k % 16);
+                let [u, v] = s.get_2d();
+                acc += c.p_film[0] + c.time + c.lens[1] + s.get_1d() + u + v;
+            }
+            acc
+        })
+    });
+}
+
+/// The group of one sampler's camera loops, 1024 per iteration.
+fn group<'a>(
+    c: &'a mut Criterion<cpu_time::BenchClock>,
+    name: &str,
+) -> criterion::BenchmarkGroup<'a, cpu_time::BenchClock> {
+    let mut g = c.benchmark_group(format!("compact_camera_{name}"));
+    g.throughput(Throughput::Elements(1024));
+    g
+}
+
+fn bench_samplers(c: &mut Criterion<cpu_time::BenchClock>) {
+    let (res, how) = ([1920, 1080], Scramble::FastOwen);
+    let mut g = group(c, "owen_sobol");
+    bench_camera(
+        &mut g,
+        "desktop",
+        &mut sampler::OwenSobolSampler::new(16, 7).unwrap(),
+    );
+    bench_camera(
+        &mut g,
+        "compact",
+        &mut compact::OwenSobolSampler::<8>::new(16, 7).unwrap(),
+    );
+    g.finish();
+    let mut g = group(c, "zsobol");
+    bench_camera(
+        &mut g,
+        "desktop",
+        &mut sampler::ZSobolSampler::new(res, 16, how, 7).unwrap(),
+    );
+    bench_camera(
+        &mut g,
+        "compact",
+        &mut compact::ZSobolSampler::new(res, 16, how, 7).unwrap(),
+    );
+    g.finish();
+    let mut g = group(c, "sobol_owen");
+    let desk = sampler::SobolSampler::with_scramble(res, 16, Scramble::Owen, 7);
+    let small = compact::SobolSampler::<8>::with_scramble(res, 16, Scramble::Owen, 7);
+    bench_camera(&mut g, "desktop", &mut desk.unwrap());
+    bench_camera(&mut g, "compact", &mut small.unwrap());
+    g.finish();
+    let mut g = group(c, "pmj02");
+    bench_camera(
+        &mut g,
+        "desktop",
+        &mut sampler::Pmj02Sampler::new(16, 7).unwrap(),
+    );
+    bench_camera(
+        &mut g,
+        "compact",
+        &mut compact::Pmj02Sampler::new(16, 7).unwrap(),
+    );
+    g.finish();
+    for how in Scramble::ALL {
+        let mut g = group(c, &format!("halton_{}", how.name()));
+        let desk = sampler::HaltonSampler::new(res, 16, how, 7);
+        bench_camera(&mut g, "desktop", &mut desk.unwrap());
+        let small = compact::HaltonSampler::<8>::new(res, 16, how, 7);
+        bench_camera(&mut g, "compact", &mut small.unwrap());
+        g.finish();
+    }
+}
+
 criterion_group! {
     name = benches;
     config = cpu_time::config();
-    targets = bench_compact
+    targets = bench_compact, bench_samplers
 }
 criterion_main!(benches);

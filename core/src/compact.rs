@@ -19,6 +19,16 @@
 //! | [`Sobol<N>`] | about 200 bytes + 128 bytes per dimension | 32 masked XORs |
 //! | [`OwenSobol<N>`] | about 650 bytes + 128 bytes per dimension | 32 masked XORs, two hashes |
 //!
+//! The pixel samplers that read those tables have compact twins here too, each returning the
+//! desktop sampler's bits through the same [`Sampler`](crate::sampler::Sampler) trait and
+//! constructors: [`OwenSobolSampler<N>`], [`ZSobolSampler`], [`SobolSampler<N>`],
+//! [`HaltonSampler<N>`] (every scramble) and [`Pmj02Sampler`] (its table points rebuilt one at a
+//! time by running their construction backwards). The per-pixel hashing and index maps are the
+//! desktop samplers' own code; only the values change source. `N` is the number of dimensions
+//! whose constants a sampler carries (a camera sample and an integrator's first values: `N =
+//! 8`); what a sampler does past `N` is in its docs. The lattice, stratified and random samplers
+//! link no large table and need no twin.
+//!
 //! The desktop types stay the fast choice where memory is plentiful; `docs/embedded.md` in the
 //! repository has the measured sizes and speeds.
 //!

@@ -12,7 +12,10 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 cd "$here"
 
-# Probe, budget in bytes, and whether it must be free of f64 routines.
+# Probe, budget in bytes, and whether it must be free of f64 routines (`f32`; `f64`: the
+# probe's constructor computes in f64, software routines on a single-precision FPU). The
+# `*_sampler` and `lattice_*` probes are camera-sample loops (`camera_sample`, `get_1d`,
+# `get_2d`): 16 KB each, 8 KB for Owen-Sobol and ZSobol.
 budgets=(
     "halton2 4096 f32"
     "halton16 8192 f32"
@@ -30,6 +33,10 @@ budgets=(
     "halton_sampler_permute 16384 f32"
     "halton_sampler_fast_owen 16384 f32"
     "halton_sampler_owen 16384 f32"
+    "lattice_fibonacci 16384 f32"
+    "lattice_korobov 16384 f64"
+    "lattice_r2 16384 f64"
+    "random_sampler 16384 f32"
 )
 wasm_budget=8192
 thumb=thumbv7em-none-eabihf
@@ -60,7 +67,7 @@ have_target() {
 failed=0
 if have_target "$thumb"; then
     cargo build --quiet --release --target "$thumb"
-    printf '%-20s %8s %8s  %s\n' probe bytes budget result
+    printf '%-26s %8s %8s  %s\n' probe bytes budget result
     for entry in "${budgets[@]}"; do
         read -r probe budget float <<<"$entry"
         elf=$target_dir/$thumb/release/$probe
@@ -82,7 +89,7 @@ if have_target "$thumb"; then
                 failed=1
             fi
         fi
-        printf '%-20s %8d %8d  %s\n' "$probe" "$bytes" "$budget" "$result"
+        printf '%-26s %8d %8d  %s\n' "$probe" "$bytes" "$budget" "$result"
     done
 else
     echo "SKIPPED: rustup could not install $thumb; the Cortex-M probes were not built"
@@ -98,7 +105,7 @@ if have_target wasm32-unknown-unknown; then
         result=OVER
         failed=1
     fi
-    printf '%-20s %8d %8d  %s\n' wasm-halton2 "$bytes" "$wasm_budget" "$result"
+    printf '%-26s %8d %8d  %s\n' wasm-halton2 "$bytes" "$wasm_budget" "$result"
 else
     echo "SKIPPED: rustup could not install wasm32-unknown-unknown; the WASM probe was not built"
 fi
@@ -135,9 +142,9 @@ else
             "$host_dir/release/nyquist-probe-host" "$probe" >"$scratch/$probe.host"
             values=$(($(wc -l <"$scratch/$probe.host") - 1))
             if cmp -s "$scratch/$probe.arm" "$scratch/$probe.host"; then
-                printf 'qemu %-20s %5d values, bit for bit the host'"'"'s\n' "$probe" "$values"
+                printf 'qemu %-26s %5d values, bit for bit the host'"'"'s\n' "$probe" "$values"
             else
-                printf 'qemu %-20s DIFFERS from the host:\n' "$probe"
+                printf 'qemu %-26s DIFFERS from the host:\n' "$probe"
                 diff "$scratch/$probe.arm" "$scratch/$probe.host" | head -10
                 failed=1
             fi

@@ -4,7 +4,8 @@
 use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
 use nyquist::rng::default_rng;
 use nyquist::sampler::{
-    Jitter, OwenSobolSampler, Pmj02Sampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
+    HaltonSampler, Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
+    SobolSampler, StratifiedSampler, ZSobolSampler,
 };
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{Halton, OwenSobol, Sequence, Sobol, pmj02_build};
@@ -91,12 +92,20 @@ fn main() -> ExitCode {
         }
         "stratified_sampler" => {
             let mut s = StratifiedSampler::new(4, 4, Jitter::Jittered, 9).unwrap();
-            for i in indices {
-                let c = s.camera_sample([(i & 63) as u32, (i >> 6 & 63) as u32], (i >> 12) as u32);
-                for x in [c.p_film[0], c.p_film[1], c.lens[0], c.lens[1], c.time] {
-                    emit(x.to_bits());
-                }
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
+        "lattice_fibonacci" | "lattice_korobov" | "lattice_r2" => {
+            let mut s = match probe.as_str() {
+                "lattice_fibonacci" => LatticeSampler::fibonacci(16, 7),
+                "lattice_korobov" => LatticeSampler::korobov(16, 7),
+                _ => LatticeSampler::r2(16, 7),
             }
+            .unwrap();
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
+        "random_sampler" => {
+            let mut s = RandomSampler::new(16, 7).unwrap();
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
         "mitchell" => {
             let t = SeparableTable::<16>::new(&Mitchell::default(), Interpolation::Linear).unwrap();
