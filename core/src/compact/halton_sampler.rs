@@ -262,6 +262,13 @@ impl<const N: usize> HaltonSampler<N> {
     /// use nyquist::{compact::HaltonSampler, scramble::Scramble};
     /// assert!(HaltonSampler::<8>::new([0, 4], 1, Scramble::None, 0).is_err());
     /// ```
+    ///
+    /// Dimensions 0 and 1 carry the pixel, so fewer than three do not compile:
+    ///
+    /// ```compile_fail
+    /// use nyquist::{compact::HaltonSampler, scramble::Scramble};
+    /// let _ = HaltonSampler::<2>::new([4, 4], 1, Scramble::None, 0);
+    /// ```
     pub fn new(
         resolution: [u32; 2],
         spp: u32,

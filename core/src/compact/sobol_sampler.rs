@@ -78,6 +78,12 @@ impl<const N: usize> SobolSampler<N> {
     /// assert!(SobolSampler::<8>::new([16384, 16384], 16, 0).is_ok());
     /// assert!(SobolSampler::<8>::new([16384, 16384], 32, 0).is_err());
     /// ```
+    ///
+    /// Dimensions 0 and 1 carry the pixel, so fewer than three do not compile:
+    ///
+    /// ```compile_fail
+    /// let _ = nyquist::compact::SobolSampler::<2>::new([4, 4], 1, 0);
+    /// ```
     pub fn new(resolution: [u32; 2], spp: u32, seed: u64) -> Result<Self, Error> {
         let scramble = if seed == 0 {
             Scramble::None
