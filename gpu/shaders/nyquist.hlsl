@@ -122,6 +122,43 @@ struct NyqPmj02Sampler {
     uint dim;
 };
 
+struct NyqRounding {
+    uint4 x;
+    int e;
+    uint sticky;
+    uint twice;
+    uint below;
+};
+
+struct NyqFraction {
+    uint4 num;
+    uint4 den;
+    uint twice;
+    uint below;
+    int _end_pad_0;
+    int _end_pad_1;
+};
+
+struct NyqHalton {
+    uint dims;
+    uint scramble;
+    uint2 seed;
+};
+
+struct NyqHaltonSampler {
+    uint spp;
+    uint scramble;
+    uint2 seed;
+    uint2 exponents;
+    uint2 scales;
+    uint stride;
+    int _pad6_0;
+    uint2 basis;
+    uint2 index;
+    uint dim;
+    int _end_pad_0;
+};
+
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -185,6 +222,13 @@ static const uint2 NYQ_WYRAND_INC = uint2(2025677871u, 2692095332u);
 static const uint2 NYQ_WYRAND_FOLD = uint2(2696161499u, 3875765969u);
 static const uint NYQ_PMJ02_XOR_X[16] = Constructarray16_uint_(0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u);
 static const uint NYQ_PMJ02_XOR_Y[16] = Constructarray16_uint_(0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u);
+static const uint NYQ_HALTON_WORDS = 24u;
+static const uint NYQ_BELOW_ONE_BITS = 1065353215u;
+static const uint NYQ_PRIME_COUNT = 1024u;
+static const uint2 NYQ_OWEN_TAG_UNIFORM = uint2(1599426121u, 1331119438u);
+static const uint2 NYQ_OWEN_TAG_AFFINE = uint2(1598113350u, 1331119438u);
+static const uint2 NYQ_OWEN_LEVEL_STEP = uint2(2135587861u, 2654435769u);
+static const uint2 NYQ_OWEN_PREFIX_MUL = uint2(656542357u, 1367130551u);
 static const uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 static const uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 static const uint NYQ_FILL_RANDOM_SAMPLER = 2u;
@@ -192,11 +236,14 @@ static const uint NYQ_FILL_LATTICE_SAMPLER = 3u;
 static const uint NYQ_FILL_STRATIFIED_SAMPLER = 4u;
 static const uint NYQ_FILL_PMJ02_SAMPLER = 5u;
 static const uint NYQ_FILL_SOBOL_SAMPLER = 6u;
+static const uint NYQ_FILL_HALTON_SAMPLER = 7u;
 static const uint NYQ_FILL_SOBOL = 16u;
 static const uint NYQ_FILL_OWEN_SOBOL = 17u;
 static const uint NYQ_FILL_PMJ02_ = 18u;
+static const uint NYQ_FILL_HALTON = 19u;
 
 ByteAddressBuffer nyq_sobol_matrices : register(t0);
+ByteAddressBuffer nyq_halton_bases : register(t4);
 cbuffer nyq_job : register(b1) { NyqFillJob nyq_job; }
 ByteAddressBuffer nyq_requests : register(t2);
 RWByteAddressBuffer nyq_values : register(u3);
@@ -227,14 +274,14 @@ uint2 nyq_add64_(uint2 a_2, uint2 b_2)
     return uint2(low_1, ((a_2.y + b_2.y) + ((low_1 < a_2.x) ? 1u : 0u)));
 }
 
-uint2 nyq_shr64_(uint2 a_3, uint s_7)
+uint2 nyq_shr64_(uint2 a_3, uint s_8)
 {
-    return uint2(((a_3.x >> s_7) | (a_3.y << (32u - s_7))), (a_3.y >> s_7));
+    return uint2(((a_3.x >> s_8) | (a_3.y << (32u - s_8))), (a_3.y >> s_8));
 }
 
-uint2 nyq_shl64_(uint2 a_4, uint s_8)
+uint2 nyq_shl64_(uint2 a_4, uint s_9)
 {
-    return uint2((a_4.x << s_8), ((a_4.y << s_8) | (a_4.x >> (32u - s_8))));
+    return uint2((a_4.x << s_9), ((a_4.y << s_9) | (a_4.x >> (32u - s_9))));
 }
 
 uint2 nyq_u64_(uint x)
@@ -319,18 +366,18 @@ float nyq_rev_to_f32_(uint w_rev)
     return _e2;
 }
 
-uint nyq_shr(uint x_3, uint s_9)
+uint nyq_shr(uint x_3, uint s_10)
 {
-    return ((s_9 >= 32u) ? 0u : (x_3 >> (s_9 & 31u)));
+    return ((s_10 >= 32u) ? 0u : (x_3 >> (s_10 & 31u)));
 }
 
 float nyq_film_coordinate(uint pixel, float offset)
 {
     float base_1 = float(pixel);
-    float x_17 = (base_1 + offset);
+    float x_24 = (base_1 + offset);
     float edge = (base_1 + 1.0);
-    if ((x_17 < edge)) {
-        return x_17;
+    if ((x_24 < edge)) {
+        return x_24;
     }
     float below = asfloat((asuint(edge) - 1u));
     return ((below >= base_1) ? below : base_1);
@@ -369,7 +416,7 @@ uint nyq_nested_uniform_shuffle(uint index, uint seed_2)
 uint nyq_owen_scramble(uint x_6, uint seed_3)
 {
     uint out_ = (uint)0;
-    uint k_4 = 0u;
+    uint k_5 = 0u;
 
     const uint _e4 = nyq_mix32_((seed_3 ^ 3144134277u));
     out_ = x_6;
@@ -379,25 +426,25 @@ uint nyq_owen_scramble(uint x_6, uint seed_3)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e41 = k_4;
-            k_4 = (_e41 + 1u);
+            uint _e41 = k_5;
+            k_5 = (_e41 + 1u);
         }
         loop_init = false;
-        uint _e8 = k_4;
+        uint _e8 = k_5;
         if ((_e8 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e12 = k_4;
-            uint _e18 = k_4;
+            uint _e12 = k_5;
+            uint _e18 = k_5;
             uint prefix = ((_e18 == 0u) ? 0u : (x_6 >> ((32u - _e12) & 31u)));
-            uint _e23 = k_4;
+            uint _e23 = k_5;
             uint2 word = uint2(((1u << _e23) | prefix), _e4);
             const uint2 _e27 = nyq_mix64_(word);
             if (((_e27.y >> 31u) == 1u)) {
                 uint _e33 = out_;
-                uint _e36 = k_4;
+                uint _e36 = k_5;
                 out_ = (_e33 ^ (1u << (31u - _e36)));
             }
         }
@@ -481,24 +528,24 @@ NyqSobol nyq_sobol(uint dims, bool scrambled, uint2 seed_5)
     return nyqsobol;
 }
 
-uint nyq_sobol_sample_u32_(NyqSobol s_10, uint index_2, uint dim_2)
+uint nyq_sobol_sample_u32_(NyqSobol s_11, uint index_2, uint dim_2)
 {
     uint shift = 0u;
 
-    uint d_3 = naga_mod(dim_2, s_10.dims);
-    if ((s_10.scrambled != 0u)) {
-        const uint2 _e11 = nyq_u64_(d_3);
-        const uint2 _e12 = nyq_hash2_(s_10.seed, _e11);
+    uint d_6 = naga_mod(dim_2, s_11.dims);
+    if ((s_11.scrambled != 0u)) {
+        const uint2 _e11 = nyq_u64_(d_6);
+        const uint2 _e12 = nyq_hash2_(s_11.seed, _e11);
         shift = _e12.y;
     }
-    const uint _e14 = nyq_sobol_u32_(index_2, d_3);
+    const uint _e14 = nyq_sobol_u32_(index_2, d_6);
     uint _e15 = shift;
     return (_e14 ^ _e15);
 }
 
-float nyq_sobol_sample(NyqSobol s_11, uint index_3, uint dim_3)
+float nyq_sobol_sample(NyqSobol s_12, uint index_3, uint dim_3)
 {
-    const uint _e3 = nyq_sobol_sample_u32_(s_11, index_3, dim_3);
+    const uint _e3 = nyq_sobol_sample_u32_(s_12, index_3, dim_3);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -545,15 +592,15 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
     uint i_2 = 0u;
     uint r_3 = (uint)0;
 
-    uint spp = ((spp_requested <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((spp_requested - 1u))))));
+    uint spp_1 = ((spp_requested <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((spp_requested - 1u))))));
     uint side = max(resolution.x, resolution.y);
-    uint m_2 = (32u - (31u - firstbithigh((side - 1u))));
+    uint m_4 = (32u - (31u - firstbithigh((side - 1u))));
     seed_6 = seed_in;
     if ((scramble == NYQ_SCRAMBLE_NONE)) {
         seed_6 = uint2(0u, 0u);
     }
     if ((scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-        uint mask = ((m_2 == 0u) ? 4294967295u : (4294967295u >> (m_2 & 31u)));
+        uint mask = ((m_4 == 0u) ? 4294967295u : (4294967295u >> (m_4 & 31u)));
         uint2 _e43 = seed_6;
         const uint2 _e45 = nyq_u64_(0u);
         const uint2 _e46 = nyq_hash2_(_e43, _e45);
@@ -562,7 +609,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         const uint2 _e52 = nyq_hash2_(_e49, _e51);
         shift_1 = uint2((_e46.x & mask), (_e52.x & mask));
     }
-    uint n_3 = (2u * m_2);
+    uint n_5 = (2u * m_4);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -574,18 +621,18 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_1 = false;
         uint _e61 = c_1;
-        if ((_e61 < n_3)) {
+        if ((_e61 < n_5)) {
         } else {
             break;
         }
         {
             uint _e64 = c_1;
             const uint _e67 = nyq_sobol_u32_((1u << _e64), 0u);
-            const uint _e68 = nyq_top(_e67, m_2);
+            const uint _e68 = nyq_top(_e67, m_4);
             uint _e70 = c_1;
             const uint _e73 = nyq_sobol_u32_((1u << _e70), 1u);
-            const uint _e74 = nyq_top(_e73, m_2);
-            uint2 image_bits = uint2((_e68 | (_e74 << (m_2 & 31u))), ((m_2 == 0u) ? 0u : (_e74 >> ((32u - m_2) & 31u))));
+            const uint _e74 = nyq_top(_e73, m_4);
+            uint2 image_bits = uint2((_e68 | (_e74 << (m_4 & 31u))), ((m_4 == 0u) ? 0u : (_e74 >> ((32u - m_4) & 31u))));
             i = 0u;
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
@@ -598,7 +645,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_2 = false;
                 uint _e91 = i;
-                if ((_e91 < n_3)) {
+                if ((_e91 < n_5)) {
                 } else {
                     break;
                 }
@@ -628,7 +675,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_3 = false;
         uint _e125 = i_1;
-        if ((_e125 < n_3)) {
+        if ((_e125 < n_5)) {
         } else {
             break;
         }
@@ -650,7 +697,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_4 = false;
         uint _e140 = col;
-        if ((_e140 < n_3)) {
+        if ((_e140 < n_5)) {
         } else {
             break;
         }
@@ -670,7 +717,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_5 = false;
                 uint _e146 = r_1;
-                if ((_e146 < n_3)) {
+                if ((_e146 < n_5)) {
                 } else {
                     break;
                 }
@@ -686,13 +733,13 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
             }
             uint _e162 = col;
-            uint2 t_3 = rows[min(uint(_e162), 31u)];
+            uint2 t_6 = rows[min(uint(_e162), 31u)];
             uint _e165 = col;
             uint _e167 = pivot;
             uint2 _e169 = rows[min(uint(_e167), 31u)];
             rows[min(uint(_e165), 31u)] = _e169;
             uint _e170 = pivot;
-            rows[min(uint(_e170), 31u)] = t_3;
+            rows[min(uint(_e170), 31u)] = t_6;
             r_2 = 0u;
             uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
             bool loop_init_6 = true;
@@ -705,7 +752,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_6 = false;
                 uint _e174 = r_2;
-                if ((_e174 < n_3)) {
+                if ((_e174 < n_5)) {
                 } else {
                     break;
                 }
@@ -743,7 +790,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_7 = false;
         uint _e209 = i_2;
-        if ((_e209 < n_3)) {
+        if ((_e209 < n_5)) {
         } else {
             break;
         }
@@ -760,7 +807,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_8 = false;
                 uint _e213 = r_3;
-                if ((_e213 < n_3)) {
+                if ((_e213 < n_5)) {
                 } else {
                     break;
                 }
@@ -820,7 +867,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
     uint4 v7_ = uint4(_e302, _e304, _e306, _e308);
     uint2 _e310 = seed_6;
     uint2 _e311 = shift_1;
-    const NyqSobolSampler nyqsobolsampler = ConstructNyqSobolSampler(spp, m_2, scramble, _e310, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e311, 0u, 0u);
+    const NyqSobolSampler nyqsobolsampler = ConstructNyqSobolSampler(spp_1, m_4, scramble, _e310, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e311, 0u, 0u);
     return nyqsobolsampler;
 }
 
@@ -828,7 +875,7 @@ uint4 ZeroValueuint4() {
     return (uint4)0;
 }
 
-uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_12, uint t_in)
+uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_13, uint t_in)
 {
     uint low = 0u;
     uint t = (uint)0;
@@ -846,53 +893,53 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_12, uint t_in)
         }
         {
             uint _e8 = t;
-            uint k_10 = min(32u, firstbitlow(_e8));
+            uint k_15 = min(32u, firstbitlow(_e8));
             four = ZeroValueuint4();
             bool should_continue = false;
-            switch((k_10 >> 2u)) {
+            switch((k_15 >> 2u)) {
                 case 0u: {
-                    uint4 _e15 = s_12.inverse0_;
+                    uint4 _e15 = s_13.inverse0_;
                     four = _e15;
                     break;
                 }
                 case 1u: {
-                    uint4 _e17 = s_12.inverse1_;
+                    uint4 _e17 = s_13.inverse1_;
                     four = _e17;
                     break;
                 }
                 case 2u: {
-                    uint4 _e19 = s_12.inverse2_;
+                    uint4 _e19 = s_13.inverse2_;
                     four = _e19;
                     break;
                 }
                 case 3u: {
-                    uint4 _e21 = s_12.inverse3_;
+                    uint4 _e21 = s_13.inverse3_;
                     four = _e21;
                     break;
                 }
                 case 4u: {
-                    uint4 _e23 = s_12.inverse4_;
+                    uint4 _e23 = s_13.inverse4_;
                     four = _e23;
                     break;
                 }
                 case 5u: {
-                    uint4 _e25 = s_12.inverse5_;
+                    uint4 _e25 = s_13.inverse5_;
                     four = _e25;
                     break;
                 }
                 case 6u: {
-                    uint4 _e27 = s_12.inverse6_;
+                    uint4 _e27 = s_13.inverse6_;
                     four = _e27;
                     break;
                 }
                 default: {
-                    uint4 _e29 = s_12.inverse7_;
+                    uint4 _e29 = s_13.inverse7_;
                     four = _e29;
                     break;
                 }
             }
             uint _e30 = low;
-            uint _e34 = four[min(uint((k_10 & 3u)), 3u)];
+            uint _e34 = four[min(uint((k_15 & 3u)), 3u)];
             low = (_e30 ^ _e34);
             uint _e36 = t;
             uint _e37 = t;
@@ -903,37 +950,37 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_12, uint t_in)
     return _e41;
 }
 
-uint nyq_sobol_sampler_index(inout NyqSobolSampler s_13, uint2 pixel_1, uint sample_index)
+uint nyq_sobol_sampler_index(inout NyqSobolSampler s_14, uint2 pixel_1, uint sample_index)
 {
-    uint m_3 = s_13.m;
-    uint _e6 = s_13.spp;
+    uint m_5 = s_14.m;
+    uint _e6 = s_14.spp;
     uint si = naga_mod(sample_index, _e6);
-    uint high = (((2u * m_3) >= 32u) ? 0u : (si << ((2u * m_3) & 31u)));
-    uint mask_1 = ((m_3 == 0u) ? 0u : (4294967295u >> ((32u - m_3) & 31u)));
-    uint want = ((pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_3 & 31u)));
+    uint high = (((2u * m_5) >= 32u) ? 0u : (si << ((2u * m_5) & 31u)));
+    uint mask_1 = ((m_5 == 0u) ? 0u : (4294967295u >> ((32u - m_5) & 31u)));
+    uint want = ((pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_5 & 31u)));
     const uint _e38 = nyq_sobol_u32_(high, 0u);
-    const uint _e39 = nyq_top(_e38, m_3);
+    const uint _e39 = nyq_top(_e38, m_5);
     const uint _e41 = nyq_sobol_u32_(high, 1u);
-    const uint _e42 = nyq_top(_e41, m_3);
-    uint have = (_e39 | (_e42 << (m_3 & 31u)));
-    const uint _e48 = nyq_sobol_sampler_invert(s_13, (want ^ have));
+    const uint _e42 = nyq_top(_e41, m_5);
+    uint have = (_e39 | (_e42 << (m_5 & 31u)));
+    const uint _e48 = nyq_sobol_sampler_invert(s_14, (want ^ have));
     return (high | _e48);
 }
 
-float nyq_sobol_sampler_value(inout NyqSobolSampler s_14, uint dim_4)
+float nyq_sobol_sampler_value(inout NyqSobolSampler s_15, uint dim_4)
 {
     uint v_3 = (uint)0;
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
 
-    uint d_4 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
-    uint2 seed_20 = s_14.seed;
-    uint _e7 = s_14.index;
-    const uint _e8 = nyq_sobol_u32_(_e7, d_4);
+    uint d_7 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
+    uint2 seed_28 = s_15.seed;
+    uint _e7 = s_15.index;
+    const uint _e8 = nyq_sobol_u32_(_e7, d_7);
     v_3 = _e8;
-    uint how_2 = s_14.scramble;
-    if (!((how_2 == NYQ_SCRAMBLE_FAST_OWEN))) {
-        local_1 = (how_2 == NYQ_SCRAMBLE_OWEN);
+    uint how_3 = s_15.scramble;
+    if (!((how_3 == NYQ_SCRAMBLE_FAST_OWEN))) {
+        local_1 = (how_3 == NYQ_SCRAMBLE_OWEN);
     } else {
         local_1 = true;
     }
@@ -941,44 +988,44 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_14, uint dim_4)
     if (_e20) {
         uint _e21 = v_3;
         uint _e22 = v_3;
-        uint _e24 = s_14.m;
-        if ((d_4 < 2u)) {
-            uint _e33 = s_14.m;
+        uint _e24 = s_15.m;
+        if ((d_7 < 2u)) {
+            uint _e33 = s_15.m;
             local_2 = (_e33 < 32u);
         } else {
             local_2 = false;
         }
         bool _e37 = local_2;
         uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
-        const uint2 _e39 = nyq_u64_(d_4);
-        const uint2 _e40 = nyq_hash2_(seed_20, _e39);
-        const uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_2);
+        const uint2 _e39 = nyq_u64_(d_7);
+        const uint2 _e40 = nyq_hash2_(seed_28, _e39);
+        const uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         const float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
-    if ((d_4 < 2u)) {
+    if ((d_7 < 2u)) {
         uint _e46 = v_3;
-        uint _e49 = s_14.shift[min(uint(d_4), 1u)];
-        uint _e52 = s_14.m;
+        uint _e49 = s_15.shift[min(uint(d_7), 1u)];
+        uint _e52 = s_15.m;
         v_3 = ((_e46 ^ _e49) << _e52);
     } else {
-        if ((d_4 < 32u)) {
-            if ((how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
+        if ((d_7 < 32u)) {
+            if ((how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
                 uint _e58 = v_3;
-                const uint2 _e59 = nyq_u64_(d_4);
-                const uint2 _e60 = nyq_hash2_(seed_20, _e59);
-                v_3 = (_e58 ^ (all((seed_20 == uint2(0u, 0u))) ? 0u : _e60.x));
+                const uint2 _e59 = nyq_u64_(d_7);
+                const uint2 _e60 = nyq_hash2_(seed_28, _e59);
+                v_3 = (_e58 ^ (all((seed_28 == uint2(0u, 0u))) ? 0u : _e60.x));
             } else {
                 uint _e70 = v_3;
-                const uint2 _e71 = nyq_u64_(d_4);
-                const uint2 _e72 = nyq_hash2_(seed_20, _e71);
+                const uint2 _e71 = nyq_u64_(d_7);
+                const uint2 _e72 = nyq_hash2_(seed_28, _e71);
                 v_3 = (_e70 ^ _e72.y);
             }
         } else {
             uint _e75 = v_3;
-            const uint2 _e76 = nyq_u64_(d_4);
-            const uint2 _e77 = nyq_hash2_(seed_20, _e76);
-            v_3 = (_e75 ^ (all((seed_20 == uint2(0u, 0u))) ? 0u : _e77.x));
+            const uint2 _e76 = nyq_u64_(d_7);
+            const uint2 _e77 = nyq_hash2_(seed_28, _e76);
+            v_3 = (_e75 ^ (all((seed_28 == uint2(0u, 0u))) ? 0u : _e77.x));
         }
     }
     uint _e87 = v_3;
@@ -986,37 +1033,37 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_14, uint dim_4)
     return _e88;
 }
 
-void nyq_sobol_sampler_start(inout NyqSobolSampler s_15, uint2 pixel_2, uint sample_index_1, uint dim_5)
+void nyq_sobol_sampler_start(inout NyqSobolSampler s_16, uint2 pixel_2, uint sample_index_1, uint dim_5)
 {
-    const uint _e5 = nyq_sobol_sampler_index(s_15, pixel_2, sample_index_1);
-    s_15.index = _e5;
-    s_15.dim = dim_5;
+    const uint _e5 = nyq_sobol_sampler_index(s_16, pixel_2, sample_index_1);
+    s_16.index = _e5;
+    s_16.dim = dim_5;
     return;
 }
 
-float nyq_sobol_sampler_get_1d(inout NyqSobolSampler s_16)
+float nyq_sobol_sampler_get_1d(inout NyqSobolSampler s_17)
 {
-    uint d_5 = s_16.dim;
-    s_16.dim = (d_5 + 1u);
-    const float _e6 = nyq_sobol_sampler_value(s_16, d_5);
+    uint d_8 = s_17.dim;
+    s_17.dim = (d_8 + 1u);
+    const float _e6 = nyq_sobol_sampler_value(s_17, d_8);
     return _e6;
 }
 
-float2 nyq_sobol_sampler_get_2d(inout NyqSobolSampler s_17)
+float2 nyq_sobol_sampler_get_2d(inout NyqSobolSampler s_18)
 {
-    uint d_6 = s_17.dim;
-    s_17.dim = (d_6 + 2u);
-    const float _e6 = nyq_sobol_sampler_value(s_17, d_6);
-    const float _e9 = nyq_sobol_sampler_value(s_17, (d_6 + 1u));
+    uint d_9 = s_18.dim;
+    s_18.dim = (d_9 + 2u);
+    const float _e6 = nyq_sobol_sampler_value(s_18, d_9);
+    const float _e9 = nyq_sobol_sampler_value(s_18, (d_9 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_sobol_sampler_get_pixel_2d(inout NyqSobolSampler s_18)
+float2 nyq_sobol_sampler_get_pixel_2d(inout NyqSobolSampler s_19)
 {
-    uint _e3 = s_18.dim;
-    s_18.dim = max(_e3, 2u);
-    const float _e7 = nyq_sobol_sampler_value(s_18, 0u);
-    const float _e9 = nyq_sobol_sampler_value(s_18, 1u);
+    uint _e3 = s_19.dim;
+    s_19.dim = max(_e3, 2u);
+    const float _e7 = nyq_sobol_sampler_value(s_19, 0u);
+    const float _e9 = nyq_sobol_sampler_value(s_19, 1u);
     return float2(_e7, _e9);
 }
 
@@ -1028,12 +1075,12 @@ NyqCameraSample ConstructNyqCameraSample(float2 arg0, float2 arg1, float arg2) {
     return ret;
 }
 
-NyqCameraSample nyq_sobol_sampler_camera_sample(inout NyqSobolSampler s_19, uint2 pixel_3, uint sample_index_2)
+NyqCameraSample nyq_sobol_sampler_camera_sample(inout NyqSobolSampler s_20, uint2 pixel_3, uint sample_index_2)
 {
-    nyq_sobol_sampler_start(s_19, pixel_3, sample_index_2, 0u);
-    const float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_19);
-    const float _e5 = nyq_sobol_sampler_get_1d(s_19);
-    const float2 _e6 = nyq_sobol_sampler_get_2d(s_19);
+    nyq_sobol_sampler_start(s_20, pixel_3, sample_index_2, 0u);
+    const float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_20);
+    const float _e5 = nyq_sobol_sampler_get_1d(s_20);
+    const float2 _e6 = nyq_sobol_sampler_get_2d(s_20);
     const float _e9 = nyq_film_coordinate(pixel_3.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_3.y, _e4.y);
     float2 film = float2(_e9, _e12);
@@ -1079,49 +1126,49 @@ NyqOwenSobol nyq_owen_sobol(uint dims_1, uint2 seed_7)
     return nyqowensobol;
 }
 
-uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_20, uint index_5, uint dim_8)
+uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_21, uint index_5, uint dim_8)
 {
-    uint d_7 = naga_mod(dim_8, s_20.dims);
-    const uint _e6 = nyq_shuffle_rev(index_5, s_20.shuffle_seed);
-    const uint _e8 = nyq_dim_seed(s_20.key, d_7);
-    const uint _e9 = nyq_owen_sobol_rev(_e6, d_7, _e8);
+    uint d_10 = naga_mod(dim_8, s_21.dims);
+    const uint _e6 = nyq_shuffle_rev(index_5, s_21.shuffle_seed);
+    const uint _e8 = nyq_dim_seed(s_21.key, d_10);
+    const uint _e9 = nyq_owen_sobol_rev(_e6, d_10, _e8);
     return reversebits(_e9);
 }
 
-float nyq_owen_sobol_sample(NyqOwenSobol s_21, uint index_6, uint dim_9)
+float nyq_owen_sobol_sample(NyqOwenSobol s_22, uint index_6, uint dim_9)
 {
-    const uint _e3 = nyq_owen_sobol_sample_u32_(s_21, index_6, dim_9);
+    const uint _e3 = nyq_owen_sobol_sample_u32_(s_22, index_6, dim_9);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
-float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_22, uint index_7, uint first_dim)
+float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_23, uint index_7, uint first_dim)
 {
     float4 out_1 = (float4)0;
-    uint k_5 = 0u;
+    uint k_6 = 0u;
 
-    const uint _e4 = nyq_shuffle_rev(index_7, s_22.shuffle_seed);
+    const uint _e4 = nyq_shuffle_rev(index_7, s_23.shuffle_seed);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
         if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e22 = k_5;
-            k_5 = (_e22 + 1u);
+            uint _e22 = k_6;
+            k_6 = (_e22 + 1u);
         }
         loop_init_9 = false;
-        uint _e8 = k_5;
+        uint _e8 = k_6;
         if ((_e8 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e11 = k_5;
-            uint d_8 = naga_mod((first_dim + _e11), s_22.dims);
-            uint _e15 = k_5;
-            const uint _e18 = nyq_dim_seed(s_22.key, d_8);
-            const uint _e19 = nyq_owen_sobol_rev(_e4, d_8, _e18);
+            uint _e11 = k_6;
+            uint d_11 = naga_mod((first_dim + _e11), s_23.dims);
+            uint _e15 = k_6;
+            const uint _e18 = nyq_dim_seed(s_23.key, d_11);
+            const uint _e19 = nyq_owen_sobol_rev(_e4, d_11, _e18);
             const float _e20 = nyq_rev_to_f32_(_e19);
             out_1[min(uint(_e15), 3u)] = _e20;
         }
@@ -1146,64 +1193,64 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(uint2 seed_8, uint frame)
     return nyqowensobolsampler;
 }
 
-void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_23, uint2 pixel_4, uint sample_index_3, uint dim_10)
+void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_24, uint2 pixel_4, uint sample_index_3, uint dim_10)
 {
     const uint2 _e5 = nyq_u64_(pixel_4.x);
     const uint2 _e7 = nyq_u64_(pixel_4.y);
-    uint _e9 = s_23.frame;
+    uint _e9 = s_24.frame;
     const uint2 _e10 = nyq_u64_(_e9);
-    uint2 _e12 = s_23.seed;
+    uint2 _e12 = s_24.seed;
     const uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_23.key = _e13.x;
+    s_24.key = _e13.x;
     const uint _e18 = nyq_mix32_(_e13.y);
     const uint _e19 = nyq_shuffle_rev(sample_index_3, _e18);
-    s_23.r = _e19;
-    s_23.dim = dim_10;
+    s_24.r = _e19;
+    s_24.dim = dim_10;
     return;
 }
 
-float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_24, uint dim_11)
+float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_25, uint dim_11)
 {
-    uint _e3 = s_24.r;
-    uint _e5 = s_24.key;
+    uint _e3 = s_25.r;
+    uint _e5 = s_25.key;
     const uint _e6 = nyq_dim_seed(_e5, dim_11);
     const uint _e7 = nyq_owen_sobol_rev(_e3, dim_11, _e6);
     const float _e8 = nyq_rev_to_f32_(_e7);
     return _e8;
 }
 
-float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_25)
+float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_26)
 {
-    uint d_9 = s_25.dim;
-    s_25.dim = (d_9 + 1u);
-    const float _e6 = nyq_owen_sobol_value(s_25, d_9);
+    uint d_12 = s_26.dim;
+    s_26.dim = (d_12 + 1u);
+    const float _e6 = nyq_owen_sobol_value(s_26, d_12);
     return _e6;
 }
 
-float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_26)
+float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_27)
 {
-    uint d_10 = s_26.dim;
-    s_26.dim = (d_10 + 2u);
-    const float _e6 = nyq_owen_sobol_value(s_26, d_10);
-    const float _e9 = nyq_owen_sobol_value(s_26, (d_10 + 1u));
+    uint d_13 = s_27.dim;
+    s_27.dim = (d_13 + 2u);
+    const float _e6 = nyq_owen_sobol_value(s_27, d_13);
+    const float _e9 = nyq_owen_sobol_value(s_27, (d_13 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_27)
+float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_28)
 {
-    uint _e3 = s_27.dim;
-    s_27.dim = max(_e3, 2u);
-    const float _e7 = nyq_owen_sobol_value(s_27, 0u);
-    const float _e9 = nyq_owen_sobol_value(s_27, 1u);
+    uint _e3 = s_28.dim;
+    s_28.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_value(s_28, 0u);
+    const float _e9 = nyq_owen_sobol_value(s_28, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_28, uint2 pixel_5, uint sample_index_4)
+NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_29, uint2 pixel_5, uint sample_index_4)
 {
     float v_4[5] = (float[5])0;
     uint d_1 = 0u;
 
-    nyq_owen_sobol_start(s_28, pixel_5, sample_index_4, 0u);
+    nyq_owen_sobol_start(s_29, pixel_5, sample_index_4, 0u);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_10 = true;
     while(true) {
@@ -1222,11 +1269,11 @@ NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_28, uin
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            const float _e13 = nyq_owen_sobol_value(s_28, _e12);
+            const float _e13 = nyq_owen_sobol_value(s_29, _e12);
             v_4[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_28.dim = 5u;
+    s_29.dim = 5u;
     float _e21 = v_4[0];
     const float _e22 = nyq_film_coordinate(pixel_5.x, _e21);
     float _e25 = v_4[1];
@@ -1260,12 +1307,12 @@ NyqZSobolSampler ConstructNyqZSobolSampler(uint arg0, uint arg1, uint arg2, uint
 
 NyqZSobolSampler nyq_zsobol_sampler(uint2 resolution_1, uint spp_requested_1, uint scramble_1, uint2 seed_9)
 {
-    uint spp_1 = ((spp_requested_1 <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((spp_requested_1 - 1u))))));
+    uint spp_2 = ((spp_requested_1 <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((spp_requested_1 - 1u))))));
     uint side_1 = max(resolution_1.x, resolution_1.y);
     uint log2_res = (32u - (31u - firstbithigh((side_1 - 1u))));
-    uint log2_spp = min(32u, firstbitlow(spp_1));
-    uint bits_2 = ((2u * log2_res) + log2_spp);
-    const NyqZSobolSampler nyqzsobolsampler = ConstructNyqZSobolSampler(spp_1, log2_spp, log2_res, scramble_1, seed_9, naga_div(bits_2, 2u), naga_div(log2_spp, 2u), (log2_spp & 1u), 0u, 0u);
+    uint log2_spp = min(32u, firstbitlow(spp_2));
+    uint bits_3 = ((2u * log2_res) + log2_spp);
+    const NyqZSobolSampler nyqzsobolsampler = ConstructNyqZSobolSampler(spp_2, log2_spp, log2_res, scramble_1, seed_9, naga_div(bits_3, 2u), naga_div(log2_spp, 2u), (log2_spp & 1u), 0u, 0u);
     return nyqzsobolsampler;
 }
 
@@ -1288,9 +1335,9 @@ uint nyq_spread(uint x_in_2)
     return ((_e25 | (_e26 << 1u)) & 1431655765u);
 }
 
-uint nyq_zsobol_morton(NyqZSobolSampler s_29, uint2 pixel_6)
+uint nyq_zsobol_morton(NyqZSobolSampler s_30, uint2 pixel_6)
 {
-    uint mask_2 = ((s_29.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_29.log2_res) & 31u)));
+    uint mask_2 = ((s_30.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_30.log2_res) & 31u)));
     const uint _e16 = nyq_spread((pixel_6.x & mask_2));
     const uint _e19 = nyq_spread((pixel_6.y & mask_2));
     return (_e16 | (_e19 << 1u));
@@ -1338,13 +1385,13 @@ uint2 nyq_zsobol_nested_word(uint2 w, uint higher_1, uint shift_3)
     return _e17;
 }
 
-uint nyq_zsobol_index(NyqZSobolSampler s_30, uint morton, uint2 key_3)
+uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
 {
     uint index_8 = 0u;
     uint i_3 = (uint)0;
     uint i_4 = (uint)0;
 
-    i_3 = s_30.digits;
+    i_3 = s_31.digits;
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
     bool loop_init_11 = true;
     while(true) {
@@ -1356,25 +1403,25 @@ uint nyq_zsobol_index(NyqZSobolSampler s_30, uint morton, uint2 key_3)
         }
         loop_init_11 = false;
         uint _e7 = i_3;
-        if ((_e7 > s_30.sample_digits)) {
+        if ((_e7 > s_31.sample_digits)) {
         } else {
             break;
         }
         {
             uint _e11 = i_3;
-            uint shift_4 = ((2u * (_e11 - 1u)) + s_30.odd);
-            uint digit_1 = ((morton >> shift_4) & 3u);
+            uint shift_4 = ((2u * (_e11 - 1u)) + s_31.odd);
+            uint digit_2 = ((morton >> shift_4) & 3u);
             uint _e20 = index_8;
             const uint _e23 = nyq_shr(morton, (shift_4 + 2u));
             const uint _e24 = nyq_zsobol_pixel_node(_e23, key_3);
-            const uint _e25 = nyq_permuted_digit(_e24, digit_1, shift_4);
+            const uint _e25 = nyq_permuted_digit(_e24, digit_2, shift_4);
             index_8 = (_e20 | _e25);
         }
     }
-    const uint _e31 = nyq_shr(morton, s_30.log2_spp);
+    const uint _e31 = nyq_shr(morton, s_31.log2_spp);
     const uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample_ = (morton & (s_30.spp - 1u));
-    i_4 = s_30.sample_digits;
+    uint sample_ = (morton & (s_31.spp - 1u));
+    i_4 = s_31.sample_digits;
     uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -1392,17 +1439,17 @@ uint nyq_zsobol_index(NyqZSobolSampler s_30, uint morton, uint2 key_3)
         }
         {
             uint _e43 = i_4;
-            uint shift_5 = ((2u * (_e43 - 1u)) + s_30.odd);
-            uint digit_2 = ((sample_ >> shift_5) & 3u);
+            uint shift_5 = ((2u * (_e43 - 1u)) + s_31.odd);
+            uint digit_3 = ((sample_ >> shift_5) & 3u);
             const uint _e54 = nyq_shr(sample_, (shift_5 + 2u));
             const uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_5);
             const uint _e57 = nyq_one_of_24_(_e55.y);
             uint _e58 = index_8;
-            const uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_[min(uint(_e57), 23u)], digit_2, shift_5);
+            const uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_[min(uint(_e57), 23u)], digit_3, shift_5);
             index_8 = (_e58 | _e61);
         }
     }
-    if ((s_30.odd == 1u)) {
+    if ((s_31.odd == 1u)) {
         uint _e69 = index_8;
         const uint2 _e75 = nyq_zsobol_nested_word(_e32, (sample_ >> 1u), 0u);
         index_8 = (_e69 | ((sample_ & 1u) ^ (_e75.y >> 31u)));
@@ -1411,12 +1458,12 @@ uint nyq_zsobol_index(NyqZSobolSampler s_30, uint morton, uint2 key_3)
     return _e81;
 }
 
-uint nyq_zsobol_sequence_index(NyqZSobolSampler s_31, uint2 pixel_7, uint sample_index_5, uint dim_13)
+uint nyq_zsobol_sequence_index(NyqZSobolSampler s_32, uint2 pixel_7, uint sample_index_5, uint dim_13)
 {
-    const uint _e4 = nyq_zsobol_morton(s_31, pixel_7);
-    uint morton_1 = ((_e4 << s_31.log2_spp) | (sample_index_5 & (s_31.spp - 1u)));
-    const uint2 _e13 = nyq_zsobol_dim_key(s_31.seed, dim_13);
-    const uint _e14 = nyq_zsobol_index(s_31, morton_1, _e13);
+    const uint _e4 = nyq_zsobol_morton(s_32, pixel_7);
+    uint morton_1 = ((_e4 << s_32.log2_spp) | (sample_index_5 & (s_32.spp - 1u)));
+    const uint2 _e13 = nyq_zsobol_dim_key(s_32.seed, dim_13);
+    const uint _e14 = nyq_zsobol_index(s_32, morton_1, _e13);
     return _e14;
 }
 
@@ -1430,38 +1477,38 @@ uint nyq_zsobol_dim0_(uint index_9, uint seed_11, uint how_1)
     return _e8;
 }
 
-float nyq_zsobol_value_1d(inout NyqZSobolSampler s_32, uint dim_14)
+float nyq_zsobol_value_1d(inout NyqZSobolSampler s_33, uint dim_14)
 {
-    uint2 _e3 = s_32.seed;
-    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_14);
-    NyqZSobolSampler _e5 = s_32;
-    uint _e7 = s_32.morton;
-    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_32.scramble;
-    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    const float _e13 = nyq_fraction_to_f32_(_e12);
-    return _e13;
-}
-
-float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_33, uint dim_15)
-{
-    uint y = (uint)0;
-
     uint2 _e3 = s_33.seed;
-    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_15);
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_14);
     NyqZSobolSampler _e5 = s_33;
     uint _e7 = s_33.morton;
     const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
     uint _e11 = s_33.scramble;
     const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_33.scramble;
+    const float _e13 = nyq_fraction_to_f32_(_e12);
+    return _e13;
+}
+
+float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_34, uint dim_15)
+{
+    uint y = (uint)0;
+
+    uint2 _e3 = s_34.seed;
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_15);
+    NyqZSobolSampler _e5 = s_34;
+    uint _e7 = s_34.morton;
+    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_34.scramble;
+    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    uint _e15 = s_34.scramble;
     if ((_e15 == NYQ_SCRAMBLE_FAST_OWEN)) {
         const uint _e19 = nyq_sobol_u32_(_e8, 1u);
         const uint _e22 = nyq_lk_hash(reversebits(_e19), _e4.y);
         y = reversebits(_e22);
     } else {
         const uint _e25 = nyq_sobol_u32_(_e8, 1u);
-        uint _e28 = s_33.scramble;
+        uint _e28 = s_34.scramble;
         const uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -1471,48 +1518,48 @@ float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_33, uint dim_15)
     return float2(_e30, _e32);
 }
 
-void nyq_zsobol_start(inout NyqZSobolSampler s_34, uint2 pixel_8, uint sample_index_6, uint dim_16)
+void nyq_zsobol_start(inout NyqZSobolSampler s_35, uint2 pixel_8, uint sample_index_6, uint dim_16)
 {
-    NyqZSobolSampler _e5 = s_34;
+    NyqZSobolSampler _e5 = s_35;
     const uint _e6 = nyq_zsobol_morton(_e5, pixel_8);
-    uint _e8 = s_34.log2_spp;
-    uint _e11 = s_34.spp;
-    s_34.morton = ((_e6 << _e8) | (sample_index_6 & (_e11 - 1u)));
-    s_34.dim = dim_16;
+    uint _e8 = s_35.log2_spp;
+    uint _e11 = s_35.spp;
+    s_35.morton = ((_e6 << _e8) | (sample_index_6 & (_e11 - 1u)));
+    s_35.dim = dim_16;
     return;
 }
 
-float nyq_zsobol_get_1d(inout NyqZSobolSampler s_35)
+float nyq_zsobol_get_1d(inout NyqZSobolSampler s_36)
 {
-    uint d_11 = s_35.dim;
-    s_35.dim = (d_11 + 1u);
-    const float _e6 = nyq_zsobol_value_1d(s_35, d_11);
+    uint d_14 = s_36.dim;
+    s_36.dim = (d_14 + 1u);
+    const float _e6 = nyq_zsobol_value_1d(s_36, d_14);
     return _e6;
 }
 
-float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_36)
+float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_37)
 {
-    uint d_12 = s_36.dim;
-    s_36.dim = (d_12 + 2u);
-    const float2 _e6 = nyq_zsobol_value_2d(s_36, d_12);
+    uint d_15 = s_37.dim;
+    s_37.dim = (d_15 + 2u);
+    const float2 _e6 = nyq_zsobol_value_2d(s_37, d_15);
     return _e6;
 }
 
-float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_37)
+float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_38)
 {
-    uint _e3 = s_37.dim;
-    s_37.dim = max(_e3, 2u);
-    const float2 _e7 = nyq_zsobol_value_2d(s_37, 0u);
+    uint _e3 = s_38.dim;
+    s_38.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_zsobol_value_2d(s_38, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_38, uint2 pixel_9, uint sample_index_7)
+NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_39, uint2 pixel_9, uint sample_index_7)
 {
-    nyq_zsobol_start(s_38, pixel_9, sample_index_7, 0u);
-    const float2 _e5 = nyq_zsobol_value_2d(s_38, 0u);
-    const float _e7 = nyq_zsobol_value_1d(s_38, 2u);
-    const float2 _e9 = nyq_zsobol_value_2d(s_38, 3u);
-    s_38.dim = 5u;
+    nyq_zsobol_start(s_39, pixel_9, sample_index_7, 0u);
+    const float2 _e5 = nyq_zsobol_value_2d(s_39, 0u);
+    const float _e7 = nyq_zsobol_value_1d(s_39, 2u);
+    const float2 _e9 = nyq_zsobol_value_2d(s_39, 3u);
+    s_39.dim = 5u;
     const float _e14 = nyq_film_coordinate(pixel_9.x, _e5.x);
     const float _e17 = nyq_film_coordinate(pixel_9.y, _e5.y);
     float2 film_1 = float2(_e14, _e17);
@@ -1543,9 +1590,9 @@ uint nyq_pcg32_next(inout NyqPcg32_ g)
     g.state = _e7;
     const uint2 _e9 = nyq_shr64_(old, 18u);
     const uint2 _e12 = nyq_shr64_((_e9 ^ old), 27u);
-    uint x_18 = _e12.x;
+    uint x_25 = _e12.x;
     uint rot = (old.y >> 27u);
-    return ((x_18 >> rot) | (x_18 << ((32u - rot) & 31u)));
+    return ((x_25 >> rot) | (x_25 << ((32u - rot) & 31u)));
 }
 
 void nyq_pcg32_advance(inout NyqPcg32_ g_1, uint delta)
@@ -1630,96 +1677,96 @@ NyqRandomSampler nyq_random_sampler(uint2 seed_12)
     return nyqrandomsampler;
 }
 
-NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_39, uint dim_17)
+NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_40, uint dim_17)
 {
     NyqPcg32_ g_2 = (NyqPcg32_)0;
 
-    uint2 _e3 = s_39.base;
+    uint2 _e3 = s_40.base;
     const NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
-    uint d_13 = (dim_17 & 65535u);
-    if ((d_13 != 0u)) {
-        nyq_pcg32_advance(g_2, d_13);
+    uint d_16 = (dim_17 & 65535u);
+    if ((d_16 != 0u)) {
+        nyq_pcg32_advance(g_2, d_16);
     }
     NyqPcg32_ _e10 = g_2;
     const NyqPcg32_ nyqpcg32_1 = _e10;
     return nyqpcg32_1;
 }
 
-void nyq_random_start(inout NyqRandomSampler s_40, uint2 pixel_10, uint sample_index_8, uint dim_18)
+void nyq_random_start(inout NyqRandomSampler s_41, uint2 pixel_10, uint sample_index_8, uint dim_18)
 {
-    uint2 _e5 = s_40.seed;
+    uint2 _e5 = s_41.seed;
     const uint2 _e7 = nyq_u64_(1918987876u);
     const uint2 _e8 = nyq_hash3_(pixel_10, _e5, _e7);
     uint2 golden_2 = uint2(2135587861u, 2654435769u);
     const uint2 _e13 = nyq_u64_(sample_index_8);
     const uint2 _e14 = nyq_mul64_(_e13, golden_2);
     const uint2 _e16 = nyq_mix64_((_e8 ^ _e14));
-    s_40.base = _e16;
-    s_40.dim = dim_18;
-    const NyqPcg32_ _e19 = nyq_random_at(s_40, dim_18);
-    s_40.rng = _e19;
+    s_41.base = _e16;
+    s_41.dim = dim_18;
+    const NyqPcg32_ _e19 = nyq_random_at(s_41, dim_18);
+    s_41.rng = _e19;
     return;
 }
 
-float nyq_random_get_1d(inout NyqRandomSampler s_41)
+float nyq_random_get_1d(inout NyqRandomSampler s_42)
 {
     NyqPcg32_ g_3 = (NyqPcg32_)0;
 
-    NyqPcg32_ _e2 = s_41.rng;
+    NyqPcg32_ _e2 = s_42.rng;
     g_3 = _e2;
     const uint _e4 = nyq_pcg32_next(g_3);
     const float _e5 = nyq_unit_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_41.rng = _e7;
-    uint _e9 = s_41.dim;
-    s_41.dim = (_e9 + 1u);
-    uint _e13 = s_41.dim;
+    s_42.rng = _e7;
+    uint _e9 = s_42.dim;
+    s_42.dim = (_e9 + 1u);
+    uint _e13 = s_42.dim;
     if (((_e13 & 65535u) == 0u)) {
-        const NyqPcg32_ _e20 = nyq_random_at(s_41, 0u);
-        s_41.rng = _e20;
+        const NyqPcg32_ _e20 = nyq_random_at(s_42, 0u);
+        s_42.rng = _e20;
     }
     return _e5;
 }
 
-float2 nyq_random_get_2d(inout NyqRandomSampler s_42)
+float2 nyq_random_get_2d(inout NyqRandomSampler s_43)
 {
-    const float _e1 = nyq_random_get_1d(s_42);
-    const float _e2 = nyq_random_get_1d(s_42);
+    const float _e1 = nyq_random_get_1d(s_43);
+    const float _e2 = nyq_random_get_1d(s_43);
     return float2(_e1, _e2);
 }
 
-float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_43)
+float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_44)
 {
     NyqPcg32_ g_4 = (NyqPcg32_)0;
 
-    uint _e2 = s_43.dim;
+    uint _e2 = s_44.dim;
     if ((_e2 == 0u)) {
-        const float2 _e5 = nyq_random_get_2d(s_43);
+        const float2 _e5 = nyq_random_get_2d(s_44);
         return _e5;
     }
-    const NyqPcg32_ _e7 = nyq_random_at(s_43, 0u);
+    const NyqPcg32_ _e7 = nyq_random_at(s_44, 0u);
     g_4 = _e7;
     const uint _e9 = nyq_pcg32_next(g_4);
     const float _e10 = nyq_unit_f32_(_e9);
     const uint _e11 = nyq_pcg32_next(g_4);
     const float _e12 = nyq_unit_f32_(_e11);
     float2 p_3 = float2(_e10, _e12);
-    uint _e15 = s_43.dim;
+    uint _e15 = s_44.dim;
     if ((_e15 < 2u)) {
-        s_43.dim = 2u;
+        s_44.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_43.rng = _e21;
+        s_44.rng = _e21;
     }
     return p_3;
 }
 
-NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_44, uint2 pixel_11, uint sample_index_9)
+NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_45, uint2 pixel_11, uint sample_index_9)
 {
-    nyq_random_start(s_44, pixel_11, sample_index_9, 0u);
-    const float2 _e4 = nyq_random_get_pixel_2d(s_44);
-    const float _e5 = nyq_random_get_1d(s_44);
-    const float2 _e6 = nyq_random_get_2d(s_44);
+    nyq_random_start(s_45, pixel_11, sample_index_9, 0u);
+    const float2 _e4 = nyq_random_get_pixel_2d(s_45);
+    const float _e5 = nyq_random_get_1d(s_45);
+    const float2 _e6 = nyq_random_get_2d(s_45);
     const float _e9 = nyq_film_coordinate(pixel_11.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_11.y, _e4.y);
     float2 film_2 = float2(_e9, _e12);
@@ -1847,41 +1894,41 @@ NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_1, uint g_5, uint2 se
     return nyqlatticesampler;
 }
 
-float nyq_lattice_value(inout NyqLatticeSampler s_45, uint dim_19)
+float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
 {
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_4 = s_45.n;
-    uint _e5 = s_45.index;
-    uint k_11 = naga_mod(_e5, n_4);
+    uint n_6 = s_46.n;
+    uint _e5 = s_46.index;
+    uint k_16 = naga_mod(_e5, n_6);
     uint component = naga_mod(dim_19, 2u);
-    uint _e11 = s_45.lattice;
+    uint _e11 = s_46.lattice;
     switch(_e11) {
         case 2u: {
-            const uint2 _e15 = nyq_u64_(k_11);
+            const uint2 _e15 = nyq_u64_(k_16);
             const uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA[min(uint(component), 1u)]);
             const uint2 _e19 = nyq_add64_(uint2(0u, 2147483648u), _e18);
             base = _e19;
             break;
         }
         default: {
-            uint _e21 = s_45.g;
+            uint _e21 = s_46.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = naga_mod(1u, n_4);
+                g_6 = naga_mod(1u, n_6);
             }
             uint _e27 = g_6;
-            const uint2 _e28 = nyq_mul_wide(k_11, _e27);
-            const uint _e29 = nyq_mod64_(_e28, n_4);
-            const uint2 _e30 = nyq_fixed_ratio(_e29, n_4);
+            const uint2 _e28 = nyq_mul_wide(k_16, _e27);
+            const uint _e29 = nyq_mod64_(_e28, n_6);
+            const uint2 _e30 = nyq_fixed_ratio(_e29, n_6);
             base = _e30;
             break;
         }
     }
-    uint2 _e32 = s_45.pixel;
+    uint2 _e32 = s_46.pixel;
     const uint2 _e35 = nyq_u64_(naga_div(dim_19, 2u));
-    uint2 _e37 = s_45.seed;
+    uint2 _e37 = s_46.seed;
     const uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     uint2 _e39 = base;
     const uint2 _e40 = nyq_u64_(component);
@@ -1891,46 +1938,46 @@ float nyq_lattice_value(inout NyqLatticeSampler s_45, uint dim_19)
     return _e43;
 }
 
-void nyq_lattice_start(inout NyqLatticeSampler s_46, uint2 pixel_12, uint sample_index_10, uint dim_20)
+void nyq_lattice_start(inout NyqLatticeSampler s_47, uint2 pixel_12, uint sample_index_10, uint dim_20)
 {
-    s_46.pixel = pixel_12;
-    s_46.index = sample_index_10;
-    s_46.dim = dim_20;
+    s_47.pixel = pixel_12;
+    s_47.index = sample_index_10;
+    s_47.dim = dim_20;
     return;
 }
 
-float nyq_lattice_get_1d(inout NyqLatticeSampler s_47)
+float nyq_lattice_get_1d(inout NyqLatticeSampler s_48)
 {
-    uint d_14 = s_47.dim;
-    s_47.dim = (d_14 + 1u);
-    const float _e6 = nyq_lattice_value(s_47, d_14);
+    uint d_17 = s_48.dim;
+    s_48.dim = (d_17 + 1u);
+    const float _e6 = nyq_lattice_value(s_48, d_17);
     return _e6;
 }
 
-float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_48)
+float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_49)
 {
-    uint d_15 = s_48.dim;
-    s_48.dim = (d_15 + 2u);
-    const float _e6 = nyq_lattice_value(s_48, d_15);
-    const float _e9 = nyq_lattice_value(s_48, (d_15 + 1u));
+    uint d_18 = s_49.dim;
+    s_49.dim = (d_18 + 2u);
+    const float _e6 = nyq_lattice_value(s_49, d_18);
+    const float _e9 = nyq_lattice_value(s_49, (d_18 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_49)
+float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_50)
 {
-    uint _e3 = s_49.dim;
-    s_49.dim = max(_e3, 2u);
-    const float _e7 = nyq_lattice_value(s_49, 0u);
-    const float _e9 = nyq_lattice_value(s_49, 1u);
+    uint _e3 = s_50.dim;
+    s_50.dim = max(_e3, 2u);
+    const float _e7 = nyq_lattice_value(s_50, 0u);
+    const float _e9 = nyq_lattice_value(s_50, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_50, uint2 pixel_13, uint sample_index_11)
+NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_51, uint2 pixel_13, uint sample_index_11)
 {
-    nyq_lattice_start(s_50, pixel_13, sample_index_11, 0u);
-    const float2 _e4 = nyq_lattice_get_pixel_2d(s_50);
-    const float _e5 = nyq_lattice_get_1d(s_50);
-    const float2 _e6 = nyq_lattice_get_2d(s_50);
+    nyq_lattice_start(s_51, pixel_13, sample_index_11, 0u);
+    const float2 _e4 = nyq_lattice_get_pixel_2d(s_51);
+    const float _e5 = nyq_lattice_get_1d(s_51);
+    const float2 _e6 = nyq_lattice_get_2d(s_51);
     const float _e9 = nyq_film_coordinate(pixel_13.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_13.y, _e4.y);
     float2 film_3 = float2(_e9, _e12);
@@ -1950,10 +1997,10 @@ float nyq_u32_to_f32_(uint x_11)
     uint top = (31u - (31u - firstbithigh(x_11)));
     uint drop = (top - 23u);
     m = (x_11 >> drop);
-    uint rest = (x_11 & ((1u << drop) - 1u));
+    uint rest_1 = (x_11 & ((1u << drop) - 1u));
     uint half_ = (1u << (drop - 1u));
-    if (!((rest > half_))) {
-        if ((rest == half_)) {
+    if (!((rest_1 > half_))) {
+        if ((rest_1 == half_)) {
             uint _e27 = m;
             local_6 = ((_e27 & 1u) == 1u);
         } else {
@@ -1981,11 +2028,11 @@ float nyq_recip_f32_(float x_12)
     bool local_7 = (bool)0;
     bool local_8 = (bool)0;
 
-    uint bits_3 = asuint(x_12);
-    uint m_4 = ((bits_3 & 8388607u) | 8388608u);
-    int e = asint(asuint(int((bits_3 >> 23u))) - asuint(int(127)));
-    if ((m_4 == 8388608u)) {
-        return asfloat((uint(asint(asuint(int(127)) - asuint(e))) << 23u));
+    uint bits_4 = asuint(x_12);
+    uint m_6 = ((bits_4 & 8388607u) | 8388608u);
+    int e_1 = asint(asuint(int((bits_4 >> 23u))) - asuint(int(127)));
+    if ((m_6 == 8388608u)) {
+        return asfloat((uint(asint(asuint(int(127)) - asuint(e_1))) << 23u));
     }
     uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
     bool loop_init_15 = true;
@@ -2006,9 +2053,9 @@ float nyq_recip_f32_(float x_12)
             uint _e28 = q_1;
             q_1 = (_e28 << 1u);
             uint _e31 = r_7;
-            if ((_e31 >= m_4)) {
+            if ((_e31 >= m_6)) {
                 uint _e33 = r_7;
-                r_7 = (_e33 - m_4);
+                r_7 = (_e33 - m_6);
                 uint _e35 = q_1;
                 q_1 = (_e35 | 1u);
             }
@@ -2039,31 +2086,31 @@ float nyq_recip_f32_(float x_12)
         q_1 = (_e69 + 1u);
     }
     uint _e79 = q_1;
-    return asfloat((((uint(asint(asuint(asint(asuint(int(127)) - asuint(e))) - asuint(int(1)))) << 23u) + _e79) - 8388608u));
+    return asfloat((((uint(asint(asuint(asint(asuint(int(127)) - asuint(e_1))) - asuint(int(1)))) << 23u) + _e79) - 8388608u));
 }
 
-uint3 nyq_mul64x32_(uint2 r_8, uint k_6)
+uint3 nyq_mul64x32_(uint2 r_8, uint k_7)
 {
-    const uint2 _e3 = nyq_mul_wide(r_8.x, k_6);
-    const uint2 _e5 = nyq_mul_wide(r_8.y, k_6);
+    const uint2 _e3 = nyq_mul_wide(r_8.x, k_7);
+    const uint2 _e5 = nyq_mul_wide(r_8.y, k_7);
     const uint2 _e9 = nyq_add64_(_e5, uint2(_e3.y, 0u));
     return uint3(_e3.x, _e9.x, _e9.y);
 }
 
-uint nyq_nibble(uint2 t_1, uint s_51)
+uint nyq_nibble(uint2 t_1, uint s_52)
 {
-    return ((((s_51 >= 32u) ? t_1.y : t_1.x) >> (s_51 & 31u)) & 15u);
+    return ((((s_52 >= 32u) ? t_1.y : t_1.x) >> (s_52 & 31u)) & 15u);
 }
 
-uint2 nyq_shl64_any(uint2 x_13, uint s_52)
+uint2 nyq_shl64_any(uint2 x_13, uint s_53)
 {
-    if ((s_52 == 0u)) {
+    if ((s_53 == 0u)) {
         return x_13;
     }
-    if ((s_52 >= 32u)) {
-        return uint2(0u, (x_13.x << (s_52 - 32u)));
+    if ((s_53 >= 32u)) {
+        return uint2(0u, (x_13.x << (s_53 - 32u)));
     }
-    const uint2 _e12 = nyq_shl64_(x_13, s_52);
+    const uint2 _e12 = nyq_shl64_(x_13, s_53);
     return _e12;
 }
 
@@ -2077,7 +2124,7 @@ uint2 nyq_packed_table(uint n_2, uint2 r_in)
 {
     uint2 t_2 = uint2(1985229328u, 4275878552u);
     uint2 r_9 = (uint2)0;
-    uint k_7 = (uint)0;
+    uint k_8 = (uint)0;
 
     if ((n_2 <= 4u)) {
         if ((n_2 < 2u)) {
@@ -2100,39 +2147,39 @@ uint2 nyq_packed_table(uint n_2, uint2 r_in)
         }
     }
     r_9 = r_in;
-    k_7 = n_2;
+    k_8 = n_2;
     uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
     bool loop_init_16 = true;
     while(true) {
         if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
         loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e94 = k_7;
-            k_7 = (_e94 - 1u);
+            uint _e94 = k_8;
+            k_8 = (_e94 - 1u);
         }
         loop_init_16 = false;
-        uint _e62 = k_7;
+        uint _e62 = k_8;
         if ((_e62 > 1u)) {
         } else {
             break;
         }
         {
             uint2 _e65 = r_9;
-            uint _e66 = k_7;
+            uint _e66 = k_8;
             const uint3 _e67 = nyq_mul64x32_(_e65, _e66);
             uint j_1 = _e67.z;
             r_9 = _e67.xy;
-            uint _e71 = k_7;
+            uint _e71 = k_8;
             uint hi = (4u * (_e71 - 1u));
             uint lo = (4u * j_1);
             uint2 _e77 = t_2;
             const uint _e78 = nyq_nibble(_e77, hi);
             uint2 _e79 = t_2;
             const uint _e80 = nyq_nibble(_e79, lo);
-            uint x_19 = ((_e78 ^ _e80) & 15u);
+            uint x_26 = ((_e78 ^ _e80) & 15u);
             uint2 _e84 = t_2;
-            const uint2 _e87 = nyq_shl64_any(uint2(x_19, 0u), hi);
-            const uint2 _e90 = nyq_shl64_any(uint2(x_19, 0u), lo);
+            const uint2 _e87 = nyq_shl64_any(uint2(x_26, 0u), hi);
+            const uint2 _e90 = nyq_shl64_any(uint2(x_26, 0u), lo);
             t_2 = (_e84 ^ (_e87 | _e90));
         }
     }
@@ -2155,21 +2202,21 @@ NyqPermutation ConstructNyqPermutation(uint arg0, uint arg1, uint arg2, uint arg
 
 NyqPermutation nyq_permutation(uint n_in, uint seed_14)
 {
-    uint n_5 = max(n_in, 1u);
-    if ((n_5 <= 16u)) {
+    uint n_7 = max(n_in, 1u);
+    if ((n_7 <= 16u)) {
         const uint2 _e10 = nyq_mix64_(uint2((seed_14 ^ 2242054355u), 608135816u));
-        const uint2 _e11 = nyq_packed_table(n_5, _e10);
-        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_5, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        const uint2 _e11 = nyq_packed_table(n_7, _e10);
+        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_7, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
         return nyqpermutation;
     }
-    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_5 - 1u))));
-    uint bits_4 = (32u - (31u - firstbithigh(mask_3)));
+    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_7 - 1u))));
+    uint bits_5 = (32u - (31u - firstbithigh(mask_3)));
     const uint _e29 = nyq_mix32_((seed_14 ^ 1540483477u));
     const uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     const uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    const uint2 _e36 = nyq_mul_wide(_e35, n_5);
-    uint offset_1 = _e36.y;
-    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_5, mask_3, max(naga_div((bits_4 + 1u), 2u), 1u), max(naga_div(bits_4, 3u), 1u), _e29, _e32, offset_1, uint2(0u, 0u));
+    const uint2 _e36 = nyq_mul_wide(_e35, n_7);
+    uint offset_2 = _e36.y;
+    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_7, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, uint2(0u, 0u));
     return nyqpermutation_1;
 }
 
@@ -2178,12 +2225,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
     uint x_14 = (uint)0;
     bool local_9 = (bool)0;
 
-    uint n_6 = p.n;
-    if ((n_6 <= 16u)) {
-        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_6) & 15u)));
+    uint n_8 = p.n;
+    if ((n_8 <= 16u)) {
+        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_8) & 15u)));
         return _e11;
     }
-    x_14 = naga_mod(i_8, n_6);
+    x_14 = naga_mod(i_8, n_8);
     uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
@@ -2215,20 +2262,20 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
         uint _e73 = x_14;
         x_14 = (_e72 ^ (_e73 >> p.third));
         uint _e77 = x_14;
-        if ((_e77 < n_6)) {
+        if ((_e77 < n_8)) {
             break;
         }
     }
     uint _e79 = x_14;
-    uint q_2 = (_e79 + p.offset);
+    uint q_3 = (_e79 + p.offset);
     uint _e83 = x_14;
-    if (!((q_2 < _e83))) {
-        local_9 = (q_2 >= n_6);
+    if (!((q_3 < _e83))) {
+        local_9 = (q_3 >= n_8);
     } else {
         local_9 = true;
     }
     bool _e90 = local_9;
-    return (_e90 ? (q_2 - n_6) : q_2);
+    return (_e90 ? (q_3 - n_8) : q_3);
 }
 
 NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint arg2, float3 arg3, uint arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint arg8, uint arg9) {
@@ -2248,16 +2295,16 @@ NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint ar
 
 NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uint2 seed_15)
 {
-    uint spp_2 = (xs * ys);
+    uint spp_3 = (xs * ys);
     const float _e5 = nyq_u32_to_f32_(xs);
     const float _e6 = nyq_recip_f32_(_e5);
     const float _e7 = nyq_u32_to_f32_(ys);
     const float _e8 = nyq_recip_f32_(_e7);
-    const float _e9 = nyq_u32_to_f32_(spp_2);
+    const float _e9 = nyq_u32_to_f32_(spp_3);
     const float _e10 = nyq_recip_f32_(_e9);
     float3 inv = float3(_e6, _e8, _e10);
     uint2 zero = uint2(0u, 0u);
-    const NyqStratifiedSampler nyqstratifiedsampler = ConstructNyqStratifiedSampler(xs, ys, spp_2, inv, jitter, seed_15, zero, zero, 0u, 0u);
+    const NyqStratifiedSampler nyqstratifiedsampler = ConstructNyqStratifiedSampler(xs, ys, spp_3, inv, jitter, seed_15, zero, zero, 0u, 0u);
     return nyqstratifiedsampler;
 }
 
@@ -2269,27 +2316,27 @@ uint nyq_stratified_dim_key(uint2 pixel_key, uint dim_21)
     return (_e6.x ^ _e6.y);
 }
 
-uint nyq_stratified_stratum(inout NyqStratifiedSampler s_53, uint dim_22)
+uint nyq_stratified_stratum(inout NyqStratifiedSampler s_54, uint dim_22)
 {
     if ((dim_22 == 0u)) {
-        uint _e5 = s_53.index;
-        uint _e7 = s_53.spp;
+        uint _e5 = s_54.index;
+        uint _e7 = s_54.spp;
         return naga_mod(_e5, _e7);
     }
-    uint _e10 = s_53.spp;
-    uint2 _e12 = s_53.pixel_key;
+    uint _e10 = s_54.spp;
+    uint2 _e12 = s_54.pixel_key;
     const uint _e13 = nyq_stratified_dim_key(_e12, dim_22);
     const NyqPermutation _e14 = nyq_permutation(_e10, _e13);
-    uint _e16 = s_53.index;
+    uint _e16 = s_54.index;
     const uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
-float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_54, uint dim_23)
+float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_23)
 {
     bool local_10 = (bool)0;
 
-    uint _e3 = s_54.jitter;
+    uint _e3 = s_55.jitter;
     if ((_e3 != NYQ_JITTERED)) {
         return float2(0.5, 0.5);
     }
@@ -2300,7 +2347,7 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_54, uint dim_23)
     }
     bool _e17 = local_10;
     if (_e17) {
-        uint2 _e19 = s_54.sample_key;
+        uint2 _e19 = s_55.sample_key;
         const uint2 _e24 = nyq_mul64_(uint2(2u, 0u), NYQ_JITTER_STEP);
         const uint2 _e26 = nyq_mix64_((_e19 ^ _e24));
         if ((dim_23 == 2u)) {
@@ -2309,7 +2356,7 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_54, uint dim_23)
         const uint2 _e40 = nyq_shr64_(_e26, 22u);
         return float2((float((_e40.x & 2097151u)) * 4.7683716e-7), (float(((_e26.x >> 1u) & 2097151u)) * 4.7683716e-7));
     }
-    uint2 _e55 = s_54.sample_key;
+    uint2 _e55 = s_55.sample_key;
     const uint2 _e56 = nyq_u64_(dim_23);
     const uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     const uint2 _e60 = nyq_mix64_((_e55 ^ _e58));
@@ -2323,74 +2370,74 @@ float nyq_below_one(float x_15)
     return min(x_15, asfloat(1065353215u));
 }
 
-float2 nyq_stratified_cell(inout NyqStratifiedSampler s_55, uint st, float2 j)
+float2 nyq_stratified_cell(inout NyqStratifiedSampler s_56, uint st, float2 j)
 {
-    uint _e4 = s_55.xs;
+    uint _e4 = s_56.xs;
     uint cx = naga_mod(st, _e4);
-    uint _e7 = s_55.xs;
+    uint _e7 = s_56.xs;
     uint cy = naga_div(st, _e7);
     const float _e9 = nyq_u32_to_f32_(cx);
-    float _e14 = s_55.inv.x;
+    float _e14 = s_56.inv.x;
     const float _e16 = nyq_below_one(((_e9 + j.x) * _e14));
     const float _e17 = nyq_u32_to_f32_(cy);
-    float _e22 = s_55.inv.y;
+    float _e22 = s_56.inv.y;
     const float _e24 = nyq_below_one(((_e17 + j.y) * _e22));
     return float2(_e16, _e24);
 }
 
-void nyq_stratified_start(inout NyqStratifiedSampler s_56, uint2 pixel_14, uint sample_index_12, uint dim_24)
+void nyq_stratified_start(inout NyqStratifiedSampler s_57, uint2 pixel_14, uint sample_index_12, uint dim_24)
 {
-    uint2 _e6 = s_56.seed;
+    uint2 _e6 = s_57.seed;
     const uint2 _e8 = nyq_u64_(1937011297u);
     const uint2 _e9 = nyq_hash3_(pixel_14, _e6, _e8);
-    s_56.pixel_key = _e9;
-    s_56.index = sample_index_12;
-    uint2 _e13 = s_56.pixel_key;
+    s_57.pixel_key = _e9;
+    s_57.index = sample_index_12;
+    uint2 _e13 = s_57.pixel_key;
     const uint2 _e14 = nyq_u64_(sample_index_12);
     const uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
-    s_56.sample_key = (_e13 ^ _e16);
-    s_56.dim = dim_24;
+    s_57.sample_key = (_e13 ^ _e16);
+    s_57.dim = dim_24;
     return;
 }
 
-float nyq_stratified_get_1d(inout NyqStratifiedSampler s_57)
+float nyq_stratified_get_1d(inout NyqStratifiedSampler s_58)
 {
-    uint d_16 = s_57.dim;
-    s_57.dim = (d_16 + 1u);
-    const uint _e6 = nyq_stratified_stratum(s_57, d_16);
+    uint d_19 = s_58.dim;
+    s_58.dim = (d_19 + 1u);
+    const uint _e6 = nyq_stratified_stratum(s_58, d_19);
     const float _e7 = nyq_u32_to_f32_(_e6);
-    const float2 _e8 = nyq_stratified_jitters(s_57, d_16);
-    float _e13 = s_57.inv.z;
+    const float2 _e8 = nyq_stratified_jitters(s_58, d_19);
+    float _e13 = s_58.inv.z;
     const float _e15 = nyq_below_one(((_e7 + _e8.x) * _e13));
     return _e15;
 }
 
-float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_58)
+float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_59)
 {
-    uint d_17 = s_58.dim;
-    s_58.dim = (d_17 + 2u);
-    const uint _e6 = nyq_stratified_stratum(s_58, d_17);
-    const float2 _e7 = nyq_stratified_jitters(s_58, d_17);
-    const float2 _e8 = nyq_stratified_cell(s_58, _e6, _e7);
+    uint d_20 = s_59.dim;
+    s_59.dim = (d_20 + 2u);
+    const uint _e6 = nyq_stratified_stratum(s_59, d_20);
+    const float2 _e7 = nyq_stratified_jitters(s_59, d_20);
+    const float2 _e8 = nyq_stratified_cell(s_59, _e6, _e7);
     return _e8;
 }
 
-float2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_59)
+float2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_60)
 {
-    uint _e3 = s_59.dim;
-    s_59.dim = max(_e3, 2u);
-    const uint _e7 = nyq_stratified_stratum(s_59, 0u);
-    const float2 _e9 = nyq_stratified_jitters(s_59, 0u);
-    const float2 _e10 = nyq_stratified_cell(s_59, _e7, _e9);
+    uint _e3 = s_60.dim;
+    s_60.dim = max(_e3, 2u);
+    const uint _e7 = nyq_stratified_stratum(s_60, 0u);
+    const float2 _e9 = nyq_stratified_jitters(s_60, 0u);
+    const float2 _e10 = nyq_stratified_cell(s_60, _e7, _e9);
     return _e10;
 }
 
-NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_60, uint2 pixel_15, uint sample_index_13)
+NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_61, uint2 pixel_15, uint sample_index_13)
 {
-    nyq_stratified_start(s_60, pixel_15, sample_index_13, 0u);
-    const float2 _e4 = nyq_stratified_get_pixel_2d(s_60);
-    const float _e5 = nyq_stratified_get_1d(s_60);
-    const float2 _e6 = nyq_stratified_get_2d(s_60);
+    nyq_stratified_start(s_61, pixel_15, sample_index_13, 0u);
+    const float2 _e4 = nyq_stratified_get_pixel_2d(s_61);
+    const float _e5 = nyq_stratified_get_1d(s_61);
+    const float2 _e6 = nyq_stratified_get_2d(s_61);
     const float _e9 = nyq_film_coordinate(pixel_15.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_15.y, _e4.y);
     float2 film_4 = float2(_e9, _e12);
@@ -2417,9 +2464,9 @@ uint2 nyq_wyrand(uint2 seed_16, uint i_9)
     const uint2 _e5 = nyq_u64_((i_9 + 1u));
     const uint2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
     const uint2 _e7 = nyq_add64_(seed_16, _e6);
-    uint2 t_4 = (_e7 ^ NYQ_WYRAND_FOLD);
-    const uint2 _e10 = nyq_mul64_high(_e7, t_4);
-    const uint2 _e11 = nyq_mul64_(_e7, t_4);
+    uint2 t_7 = (_e7 ^ NYQ_WYRAND_FOLD);
+    const uint2 _e10 = nyq_mul64_high(_e7, t_7);
+    const uint2 _e11 = nyq_mul64_(_e7, t_7);
     return (_e10 ^ _e11);
 }
 
@@ -2442,22 +2489,22 @@ uint nyq_pmj02_point(uint2 seed_17, uint index_10, uint dim_25)
         }
         {
             uint _e16 = p_1;
-            uint level = (31u - (31u - firstbithigh(_e16)));
-            uint swap = (2147483648u >> level);
+            uint level_1 = (31u - (31u - firstbithigh(_e16)));
+            uint swap = (2147483648u >> level_1);
             uint low_2 = (swap - 1u);
             uint _e23 = p_1;
             const uint2 _e24 = nyq_wyrand(seed_17, _e23);
-            uint bits_5 = ((dim_25 == 0u) ? _e24.x : _e24.y);
+            uint bits_6 = ((dim_25 == 0u) ? _e24.x : _e24.y);
             uint _e30 = x_16;
             uint _e32 = known;
-            x_16 = (_e30 | ((bits_5 & low_2) & ~(_e32)));
+            x_16 = (_e30 | ((bits_6 & low_2) & ~(_e32)));
             uint _e36 = known;
             known = (_e36 | low_2);
             uint _e38 = flips;
             flips = (_e38 ^ swap);
-            uint c_4 = ((dim_25 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level & 15u)), 15u)]);
+            uint c_6 = ((dim_25 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
             uint _e51 = p_1;
-            p_1 = ((_e51 - (1u << level)) ^ c_4);
+            p_1 = ((_e51 - (1u << level_1)) ^ c_6);
         }
     }
     const uint2 _e57 = nyq_wyrand(seed_17, 0u);
@@ -2483,20 +2530,20 @@ NyqPmj02_ nyq_pmj02_(bool scrambled_1, uint2 seed_18)
     return nyqpmj02_;
 }
 
-uint nyq_pmj02_sample_u32_(NyqPmj02_ s_61, uint index_11, uint dim_26)
+uint nyq_pmj02_sample_u32_(NyqPmj02_ s_62, uint index_11, uint dim_26)
 {
-    uint d_18 = (dim_26 & 1u);
-    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_18);
-    if ((s_61.scrambled == 0u)) {
+    uint d_21 = (dim_26 & 1u);
+    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_21);
+    if ((s_62.scrambled == 0u)) {
         return _e6;
     }
-    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_61.keys[min(uint(d_18), 1u)]);
+    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_62.keys[min(uint(d_21), 1u)]);
     return reversebits(_e13);
 }
 
-float nyq_pmj02_sample(NyqPmj02_ s_62, uint index_12, uint dim_27)
+float nyq_pmj02_sample(NyqPmj02_ s_63, uint index_12, uint dim_27)
 {
-    const uint _e3 = nyq_pmj02_sample_u32_(s_62, index_12, dim_27);
+    const uint _e3 = nyq_pmj02_sample_u32_(s_63, index_12, dim_27);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2521,95 +2568,95 @@ uint nyq_reverse16_(uint m_1)
     return (reversebits((m_1 & 65535u)) >> 16u);
 }
 
-uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_63, uint2 request)
+uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_64, uint2 request)
 {
-    uint2 _e3 = s_63.pixel_key;
+    uint2 _e3 = s_64.pixel_key;
     const uint2 _e7 = nyq_mul64_(request, uint2(2135587861u, 2654435769u));
     const uint2 _e9 = nyq_mix64_((_e3 ^ _e7));
     const uint2 _e14 = nyq_mix64_((_e9 ^ uint2(1781543545u, 28781u)));
     return uint3(_e9.x, _e9.y, _e14.x);
 }
 
-float2 nyq_pmj02_keyed_point(uint3 k_8, uint i_10)
+float2 nyq_pmj02_keyed_point(uint3 k_9, uint i_10)
 {
     const uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 0u);
     const uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 1u);
-    const uint _e10 = nyq_lk_hash(reversebits(_e4), k_8.y);
+    const uint _e10 = nyq_lk_hash(reversebits(_e4), k_9.y);
     const float _e11 = nyq_rev_to_f32_(_e10);
-    const uint _e14 = nyq_lk_hash(reversebits(_e7), k_8.z);
+    const uint _e14 = nyq_lk_hash(reversebits(_e7), k_9.z);
     const float _e15 = nyq_rev_to_f32_(_e14);
     return float2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_64, uint3 k_9)
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_65, uint3 k_10)
 {
-    uint _e3 = s_64.index_rev;
-    const uint _e5 = nyq_lk_hash(_e3, k_9.x);
+    uint _e3 = s_65.index_rev;
+    const uint _e5 = nyq_lk_hash(_e3, k_10.x);
     return (_e5 >> 16u);
 }
 
-void nyq_pmj02_start(inout NyqPmj02Sampler s_65, uint2 pixel_16, uint sample_index_14, uint dim_28)
+void nyq_pmj02_start(inout NyqPmj02Sampler s_66, uint2 pixel_16, uint sample_index_14, uint dim_28)
 {
-    uint2 _e6 = s_65.seed;
+    uint2 _e6 = s_66.seed;
     const uint2 _e10 = nyq_hash3_(pixel_16, _e6, uint2(1835675698u, 112u));
-    s_65.pixel_key = _e10;
+    s_66.pixel_key = _e10;
     const uint _e12 = nyq_reverse16_(sample_index_14);
-    s_65.index_rev = (_e12 << 16u);
-    s_65.dim = dim_28;
+    s_66.index_rev = (_e12 << 16u);
+    s_66.dim = dim_28;
     return;
 }
 
-float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_66)
+float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_67)
 {
-    uint d_19 = s_66.dim;
-    s_66.dim = (d_19 + 1u);
-    const uint2 _e6 = nyq_u64_(d_19);
+    uint d_22 = s_67.dim;
+    s_67.dim = (d_22 + 1u);
+    const uint2 _e6 = nyq_u64_(d_22);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
     const uint2 _e12 = nyq_add64_(_e8, uint2(1u, 0u));
-    const uint3 _e13 = nyq_pmj02_keys(s_66, _e12);
-    const uint _e14 = nyq_pmj02_row(s_66, _e13);
+    const uint3 _e13 = nyq_pmj02_keys(s_67, _e12);
+    const uint _e14 = nyq_pmj02_row(s_67, _e13);
     const uint _e15 = nyq_reverse16_(_e14);
     const uint _e17 = nyq_lk_hash(_e15, _e13.y);
     const float _e18 = nyq_rev_to_f32_(_e17);
     return _e18;
 }
 
-float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_67)
+float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_68)
 {
-    uint d_20 = s_67.dim;
-    s_67.dim = (d_20 + 2u);
-    const uint2 _e6 = nyq_u64_(d_20);
+    uint d_23 = s_68.dim;
+    s_68.dim = (d_23 + 2u);
+    const uint2 _e6 = nyq_u64_(d_23);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
-    const uint3 _e9 = nyq_pmj02_keys(s_67, _e8);
-    if ((d_20 == 0u)) {
-        uint _e13 = s_67.index_rev;
+    const uint3 _e9 = nyq_pmj02_keys(s_68, _e8);
+    if ((d_23 == 0u)) {
+        uint _e13 = s_68.index_rev;
         const uint _e16 = nyq_reverse16_((_e13 >> 16u));
         const float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    const uint _e18 = nyq_pmj02_row(s_67, _e9);
+    const uint _e18 = nyq_pmj02_row(s_68, _e9);
     const uint _e19 = nyq_reverse16_(_e18);
     const float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
-float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_68)
+float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_69)
 {
-    uint _e3 = s_68.dim;
-    s_68.dim = max(_e3, 2u);
-    const uint3 _e9 = nyq_pmj02_keys(s_68, uint2(0u, 0u));
-    uint _e11 = s_68.index_rev;
+    uint _e3 = s_69.dim;
+    s_69.dim = max(_e3, 2u);
+    const uint3 _e9 = nyq_pmj02_keys(s_69, uint2(0u, 0u));
+    uint _e11 = s_69.index_rev;
     const uint _e14 = nyq_reverse16_((_e11 >> 16u));
     const float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
-NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_69, uint2 pixel_17, uint sample_index_15)
+NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_70, uint2 pixel_17, uint sample_index_15)
 {
-    nyq_pmj02_start(s_69, pixel_17, sample_index_15, 0u);
-    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_69);
-    const float _e5 = nyq_pmj02_get_1d(s_69);
-    const float2 _e6 = nyq_pmj02_get_2d(s_69);
+    nyq_pmj02_start(s_70, pixel_17, sample_index_15, 0u);
+    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_70);
+    const float _e5 = nyq_pmj02_get_1d(s_70);
+    const float2 _e6 = nyq_pmj02_get_2d(s_70);
     const float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
     float2 film_5 = float2(_e9, _e12);
@@ -2617,38 +2664,1283 @@ NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_69, uint2 pixel_
     return nyqcamerasample_6;
 }
 
-uint4 nyq_fill_request(uint i_11)
+uint2 nyq_sub64_(uint2 a_9, uint2 b_7)
 {
-    uint _e3 = nyq_job.implicit;
-    if ((_e3 == 0u)) {
-        uint4 _e8 = asuint(nyq_requests.Load4(i_11*16));
-        return _e8;
-    }
-    uint _e11 = nyq_job.first;
-    uint n_7 = (_e11 + i_11);
-    uint _e15 = nyq_job.spp;
-    uint pixel_18 = naga_div(n_7, _e15);
-    uint _e20 = nyq_job.resolution.x;
-    uint _e25 = nyq_job.resolution.x;
-    uint _e29 = nyq_job.spp;
-    return uint4(naga_mod(pixel_18, _e20), naga_div(pixel_18, _e25), naga_mod(n_7, _e29), 5u);
+    return uint2((a_9.x - b_7.x), ((a_9.y - b_7.y) - ((a_9.x < b_7.x) ? 1u : 0u)));
 }
 
-void nyq_fill_camera(uint out_2, NyqCameraSample c_3)
+uint3 nyq_divmod64_small(uint2 x_17, uint d_3)
 {
-    nyq_values.Store(out_2*4, asuint(asuint(c_3.p_film.x)));
-    nyq_values.Store((out_2 + 1u)*4, asuint(asuint(c_3.p_film.y)));
-    nyq_values.Store((out_2 + 2u)*4, asuint(asuint(c_3.time)));
-    nyq_values.Store((out_2 + 3u)*4, asuint(asuint(c_3.lens.x)));
-    nyq_values.Store((out_2 + 4u)*4, asuint(asuint(c_3.lens.y)));
+    if ((x_17.y == 0u)) {
+        uint q_4 = naga_div(x_17.x, d_3);
+        return uint3(q_4, 0u, (x_17.x - (q_4 * d_3)));
+    }
+    uint t3_ = (x_17.y >> 16u);
+    uint q3_ = naga_div(t3_, d_3);
+    uint t2_ = (((t3_ - (q3_ * d_3)) << 16u) | (x_17.y & 65535u));
+    uint q2_ = naga_div(t2_, d_3);
+    uint t1_1 = (((t2_ - (q2_ * d_3)) << 16u) | (x_17.x >> 16u));
+    uint q1_ = naga_div(t1_1, d_3);
+    uint t0_1 = (((t1_1 - (q1_ * d_3)) << 16u) | (x_17.x & 65535u));
+    uint q0_ = naga_div(t0_1, d_3);
+    return uint3(((q1_ << 16u) | q0_), ((q3_ << 16u) | q2_), (t0_1 - (q0_ * d_3)));
+}
+
+uint4 nyq_add128_(uint4 a_10, uint4 b_8)
+{
+    uint4 s_80 = (a_10 + b_8);
+    uint4 c_7 = ((s_80 < a_10) ? (1u).xxxx : (0u).xxxx);
+    uint t1_2 = (s_80.y + c_7.x);
+    uint k1_ = (c_7.y + ((t1_2 < c_7.x) ? 1u : 0u));
+    uint t2_1 = (s_80.z + k1_);
+    uint k2_ = (c_7.z + ((t2_1 < k1_) ? 1u : 0u));
+    return uint4(s_80.x, t1_2, t2_1, (s_80.w + k2_));
+}
+
+uint4 nyq_sub128_(uint4 a_11, uint4 b_9)
+{
+    uint4 s_81 = (a_11 - b_9);
+    uint4 o = ((a_11 < b_9) ? (1u).xxxx : (0u).xxxx);
+    uint t1_3 = (s_81.y - o.x);
+    uint k1_1 = (o.y + ((s_81.y < o.x) ? 1u : 0u));
+    uint t2_2 = (s_81.z - k1_1);
+    uint k2_1 = (o.z + ((s_81.z < k1_1) ? 1u : 0u));
+    return uint4(s_81.x, t1_3, t2_2, (s_81.w - k2_1));
+}
+
+bool nyq_lt128_(uint4 a_12, uint4 b_10)
+{
+    if ((a_12.w != b_10.w)) {
+        return (a_12.w < b_10.w);
+    }
+    if ((a_12.z != b_10.z)) {
+        return (a_12.z < b_10.z);
+    }
+    if ((a_12.y != b_10.y)) {
+        return (a_12.y < b_10.y);
+    }
+    return (a_12.x < b_10.x);
+}
+
+uint4 nyq_mul128_u32_(uint4 x_18, uint k_11)
+{
+    const uint2 _e3 = nyq_mul_wide(x_18.x, k_11);
+    const uint2 _e5 = nyq_mul_wide(x_18.y, k_11);
+    const uint2 _e9 = nyq_add64_(_e5, uint2(_e3.y, 0u));
+    const uint2 _e11 = nyq_mul_wide(x_18.z, k_11);
+    const uint2 _e15 = nyq_add64_(_e11, uint2(_e9.y, 0u));
+    return uint4(_e3.x, _e9.x, _e15.x, ((x_18.w * k_11) + _e15.y));
+}
+
+uint4 nyq_mul64_wide(uint2 a_13, uint2 b_11)
+{
+    const uint2 _e4 = nyq_mul_wide(a_13.x, b_11.x);
+    const uint2 _e7 = nyq_mul_wide(a_13.x, b_11.y);
+    const uint2 _e10 = nyq_mul_wide(a_13.y, b_11.x);
+    const uint2 _e13 = nyq_mul_wide(a_13.y, b_11.y);
+    uint4 outer = uint4(_e4.x, _e4.y, _e13.x, _e13.y);
+    const uint4 _e24 = nyq_add128_(outer, uint4(0u, _e7.x, _e7.y, 0u));
+    const uint4 _e30 = nyq_add128_(_e24, uint4(0u, _e10.x, _e10.y, 0u));
+    return _e30;
+}
+
+uint nyq_clz128_(uint4 x_19)
+{
+    if ((x_19.w != 0u)) {
+        return (31u - firstbithigh(x_19.w));
+    }
+    if ((x_19.z != 0u)) {
+        return (32u + (31u - firstbithigh(x_19.z)));
+    }
+    if ((x_19.y != 0u)) {
+        return (64u + (31u - firstbithigh(x_19.y)));
+    }
+    return (96u + (31u - firstbithigh(x_19.x)));
+}
+
+uint4 nyq_shl128_(uint4 x_20, uint s_71)
+{
+    uint4 v_5 = (uint4)0;
+    uint k_12 = (uint)0;
+
+    v_5 = x_20;
+    k_12 = s_71;
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        uint _e4 = k_12;
+        if ((_e4 >= 32u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e9 = v_5.x;
+            uint _e11 = v_5.y;
+            uint _e13 = v_5.z;
+            v_5 = uint4(0u, _e9, _e11, _e13);
+            uint _e15 = k_12;
+            k_12 = (_e15 - 32u);
+        }
+    }
+    uint _e18 = k_12;
+    if ((_e18 == 0u)) {
+        uint4 _e21 = v_5;
+        return _e21;
+    }
+    uint _e23 = k_12;
+    uint r_13 = (32u - _e23);
+    uint _e26 = v_5.x;
+    uint _e27 = k_12;
+    uint _e30 = v_5.y;
+    uint _e31 = k_12;
+    uint _e34 = v_5.x;
+    uint _e38 = v_5.z;
+    uint _e39 = k_12;
+    uint _e42 = v_5.y;
+    uint _e46 = v_5.w;
+    uint _e47 = k_12;
+    uint _e50 = v_5.z;
+    return uint4((_e26 << _e27), ((_e30 << _e31) | (_e34 >> r_13)), ((_e38 << _e39) | (_e42 >> r_13)), ((_e46 << _e47) | (_e50 >> r_13)));
+}
+
+uint nyq_round_bits(uint4 x_in_3, int e_in, bool sticky, bool twice)
+{
+    bool local_11 = (bool)0;
+    bool local_12 = (bool)0;
+    uint m_2 = (uint)0;
+    uint ml = (uint)0;
+    uint mh = (uint)0;
+    bool local_13 = (bool)0;
+    bool local_14 = (bool)0;
+    bool local_15 = (bool)0;
+    bool local_16 = (bool)0;
+    bool local_17 = (bool)0;
+    bool local_18 = (bool)0;
+    bool local_19 = (bool)0;
+    bool local_20 = (bool)0;
+    bool local_21 = (bool)0;
+
+    if (all((x_in_3 == (0u).xxxx))) {
+        return 0u;
+    }
+    const uint _e9 = nyq_clz128_(x_in_3);
+    const uint4 _e10 = nyq_shl128_(x_in_3, _e9);
+    int e_2 = asint(asuint(e_in) - asuint(int(_e9)));
+    if (!((_e10.x != 0u))) {
+        local_11 = (_e10.y != 0u);
+    } else {
+        local_11 = true;
+    }
+    bool _e23 = local_11;
+    if (!(_e23)) {
+        local_12 = sticky;
+    } else {
+        local_12 = true;
+    }
+    bool rest_2 = local_12;
+    if (twice) {
+        ml = ((_e10.w << 21u) | (_e10.z >> 11u));
+        mh = (_e10.w >> 11u);
+        uint r_14 = (_e10.z & 2047u);
+        if (!((r_14 > 1024u))) {
+            if ((r_14 == 1024u)) {
+                if (!(rest_2)) {
+                    uint _e57 = ml;
+                    local_15 = ((_e57 & 1u) == 1u);
+                } else {
+                    local_15 = true;
+                }
+                bool _e63 = local_15;
+                local_14 = _e63;
+            } else {
+                local_14 = false;
+            }
+            bool _e65 = local_14;
+            local_13 = _e65;
+        } else {
+            local_13 = true;
+        }
+        bool _e67 = local_13;
+        if (_e67) {
+            uint _e68 = ml;
+            ml = (_e68 + 1u);
+            uint _e71 = mh;
+            uint _e74 = ml;
+            mh = (_e71 + ((_e74 == 0u) ? 1u : 0u));
+        }
+        uint _e79 = mh;
+        uint _e82 = ml;
+        m_2 = ((_e79 << 3u) | (_e82 >> 29u));
+        uint _e86 = ml;
+        uint r2_ = (_e86 & 536870911u);
+        if (!((r2_ > 268435456u))) {
+            if ((r2_ == 268435456u)) {
+                uint _e98 = m_2;
+                local_17 = ((_e98 & 1u) == 1u);
+            } else {
+                local_17 = false;
+            }
+            bool _e104 = local_17;
+            local_16 = _e104;
+        } else {
+            local_16 = true;
+        }
+        bool _e106 = local_16;
+        if (_e106) {
+            uint _e107 = m_2;
+            m_2 = (_e107 + 1u);
+        }
+    } else {
+        m_2 = (_e10.w >> 8u);
+        uint r_15 = (_e10.w & 255u);
+        if (!((r_15 > 128u))) {
+            if ((r_15 == 128u)) {
+                if (!((_e10.z != 0u))) {
+                    local_20 = rest_2;
+                } else {
+                    local_20 = true;
+                }
+                bool _e132 = local_20;
+                if (!(_e132)) {
+                    uint _e136 = m_2;
+                    local_21 = ((_e136 & 1u) == 1u);
+                } else {
+                    local_21 = true;
+                }
+                bool _e142 = local_21;
+                local_19 = _e142;
+            } else {
+                local_19 = false;
+            }
+            bool _e144 = local_19;
+            local_18 = _e144;
+        } else {
+            local_18 = true;
+        }
+        bool _e146 = local_18;
+        if (_e146) {
+            uint _e147 = m_2;
+            m_2 = (_e147 + 1u);
+        }
+    }
+    uint _e155 = m_2;
+    return (((uint(asint(asuint(e_2) + asuint(int(254)))) << 23u) + _e155) - 8388608u);
+}
+
+NyqRounding ConstructNyqRounding(uint4 arg0, int arg1, uint arg2, uint arg3, uint arg4) {
+    NyqRounding ret = (NyqRounding)0;
+    ret.x = arg0;
+    ret.e = arg1;
+    ret.sticky = arg2;
+    ret.twice = arg3;
+    ret.below = arg4;
+    return ret;
+}
+
+NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
+{
+    uint2 q_2 = uint2(0u, 0u);
+    bool sticky_1 = false;
+    bool local_22 = (bool)0;
+    bool local_23 = (bool)0;
+    uint2 r_10 = (uint2)0;
+    uint i_11 = 0u;
+    bool local_24 = (bool)0;
+    bool local_25 = (bool)0;
+    bool local_26 = (bool)0;
+    uint4 r_11 = (uint4)0;
+    uint i_12 = 0u;
+
+    uint tw = (twice_1 ? 1u : 0u);
+    if (all((num_1 == (0u).xxxx))) {
+        const NyqRounding nyqrounding = ConstructNyqRounding((0u).xxxx, int(0), 0u, tw, 0u);
+        return nyqrounding;
+    }
+    const uint _e16 = nyq_clz128_(num_1);
+    const uint _e17 = nyq_clz128_(den_1);
+    uint s_82 = (_e16 - _e17);
+    uint steps = (twice_1 ? 55u : 26u);
+    if ((den_1.z == 0u)) {
+        local_22 = (den_1.w == 0u);
+    } else {
+        local_22 = false;
+    }
+    bool _e37 = local_22;
+    if (_e37) {
+        local_23 = (den_1.y < 2147483648u);
+    } else {
+        local_23 = false;
+    }
+    bool _e44 = local_23;
+    if (_e44) {
+        uint2 d_24 = den_1.xy;
+        const uint4 _e46 = nyq_shl128_(num_1, s_82);
+        r_10 = _e46.xy;
+        uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+        bool loop_init_17 = true;
+        while(true) {
+            if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+            loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+            if (!loop_init_17) {
+                uint _e109 = i_11;
+                i_11 = (_e109 + 1u);
+            }
+            loop_init_17 = false;
+            uint _e51 = i_11;
+            if ((_e51 < steps)) {
+            } else {
+                break;
+            }
+            {
+                uint _e54 = q_2.x;
+                uint _e58 = q_2.y;
+                uint _e62 = q_2.x;
+                q_2 = uint2((_e54 << 1u), ((_e58 << 1u) | (_e62 >> 31u)));
+                uint _e68 = r_10.y;
+                if (!((_e68 > d_24.y))) {
+                    uint _e75 = r_10.y;
+                    if ((_e75 == d_24.y)) {
+                        uint _e81 = r_10.x;
+                        local_25 = (_e81 >= d_24.x);
+                    } else {
+                        local_25 = false;
+                    }
+                    bool _e85 = local_25;
+                    local_24 = _e85;
+                } else {
+                    local_24 = true;
+                }
+                bool _e87 = local_24;
+                if (_e87) {
+                    uint2 _e88 = r_10;
+                    const uint2 _e89 = nyq_sub64_(_e88, d_24);
+                    r_10 = _e89;
+                    uint _e91 = q_2.x;
+                    q_2.x = (_e91 | 1u);
+                }
+                uint _e95 = r_10.x;
+                uint _e99 = r_10.y;
+                uint _e103 = r_10.x;
+                r_10 = uint2((_e95 << 1u), ((_e99 << 1u) | (_e103 >> 31u)));
+            }
+        }
+        uint _e112 = r_10.x;
+        if (!((_e112 != 0u))) {
+            uint _e119 = r_10.y;
+            local_26 = (_e119 != 0u);
+        } else {
+            local_26 = true;
+        }
+        bool _e123 = local_26;
+        sticky_1 = _e123;
+    } else {
+        const uint4 _e124 = nyq_shl128_(num_1, s_82);
+        r_11 = _e124;
+        uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
+        bool loop_init_18 = true;
+        while(true) {
+            if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+            loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+            if (!loop_init_18) {
+                uint _e186 = i_12;
+                i_12 = (_e186 + 1u);
+            }
+            loop_init_18 = false;
+            uint _e128 = i_12;
+            if ((_e128 < steps)) {
+            } else {
+                break;
+            }
+            {
+                uint _e131 = q_2.x;
+                uint _e135 = q_2.y;
+                uint _e139 = q_2.x;
+                q_2 = uint2((_e131 << 1u), ((_e135 << 1u) | (_e139 >> 31u)));
+                uint4 _e144 = r_11;
+                const bool _e145 = nyq_lt128_(_e144, den_1);
+                if (!(_e145)) {
+                    uint4 _e147 = r_11;
+                    const uint4 _e148 = nyq_sub128_(_e147, den_1);
+                    r_11 = _e148;
+                    uint _e150 = q_2.x;
+                    q_2.x = (_e150 | 1u);
+                }
+                uint _e154 = r_11.x;
+                uint _e158 = r_11.y;
+                uint _e162 = r_11.x;
+                uint _e167 = r_11.z;
+                uint _e171 = r_11.y;
+                uint _e176 = r_11.w;
+                uint _e180 = r_11.z;
+                r_11 = uint4((_e154 << 1u), ((_e158 << 1u) | (_e162 >> 31u)), ((_e167 << 1u) | (_e171 >> 31u)), ((_e176 << 1u) | (_e180 >> 31u)));
+            }
+        }
+        uint4 _e188 = r_11;
+        sticky_1 = any((_e188 != (0u).xxxx));
+    }
+    uint2 _e193 = q_2;
+    bool _e203 = sticky_1;
+    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_82)))), (_e203 ? 1u : 0u), tw, 0u);
+    return nyqrounding_1;
+}
+
+uint nyq_prime(uint dim_29)
+{
+    uint _e7 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * naga_mod(dim_29, NYQ_PRIME_COUNT))*4));
+    return _e7;
+}
+
+NyqRounding nyq_phi_short(uint t_3, uint a_14)
+{
+    uint x_21 = (uint)0;
+    uint2 rev = uint2(0u, 0u);
+    uint i_13 = 0u;
+
+    uint b_14 = asuint(nyq_halton_bases.Load(t_3*4));
+    uint c_8 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
+    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_8, 4u))*4));
+    uint places = ((_e19 >> (8u * naga_mod(c_8, 4u))) & 255u);
+    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_8))*4));
+    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_8))*4));
+    x_21 = a_14;
+    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    bool loop_init_19 = true;
+    while(true) {
+        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (!loop_init_19) {
+            uint _e64 = i_13;
+            i_13 = (_e64 + 1u);
+        }
+        loop_init_19 = false;
+        uint _e50 = i_13;
+        if ((_e50 < places)) {
+        } else {
+            break;
+        }
+        {
+            uint _e52 = x_21;
+            uint q_5 = naga_div(_e52, b_14);
+            uint2 _e54 = rev;
+            const uint3 _e55 = nyq_mul64x32_(_e54, b_14);
+            uint _e57 = x_21;
+            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_14)), 0u));
+            rev = _e62;
+            x_21 = q_5;
+        }
+    }
+    uint2 mantissa = uint2(low_3, ((high_1 & 1048575u) | 1048576u));
+    int e_3 = asint(asuint(int(((high_1 >> 20u) & 2047u))) - asuint(int(1075)));
+    uint2 _e78 = rev;
+    const uint4 _e79 = nyq_mul64_wide(_e78, mantissa);
+    const NyqRounding nyqrounding_2 = ConstructNyqRounding(_e79, e_3, 0u, 1u, 0u);
+    return nyqrounding_2;
+}
+
+NyqFraction ConstructNyqFraction(uint4 arg0, uint4 arg1, uint arg2, uint arg3) {
+    NyqFraction ret = (NyqFraction)0;
+    ret.num = arg0;
+    ret.den = arg1;
+    ret.twice = arg2;
+    ret.below = arg3;
+    return ret;
+}
+
+NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
+{
+    uint2 x_22 = (uint2)0;
+    uint4 num_2 = (0u).xxxx;
+    uint4 den_2 = uint4(1u, 0u, 0u, 0u);
+    bool local_27 = (bool)0;
+    uint c_3 = (uint)0;
+    uint rev_1 = (uint)0;
+    uint i_14 = (uint)0;
+
+    uint b_15 = asuint(nyq_halton_bases.Load(t_4*4));
+    uint chunk = asuint(nyq_halton_bases.Load((t_4 + 4u)*4));
+    uint run = asuint(nyq_halton_bases.Load((t_4 + 5u)*4));
+    x_22 = a_15;
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+        uint _e26 = x_22.x;
+        if (!((_e26 != 0u))) {
+            uint _e33 = x_22.y;
+            local_27 = (_e33 != 0u);
+        } else {
+            local_27 = true;
+        }
+        bool _e37 = local_27;
+        if (_e37) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e38 = x_22;
+            const uint3 _e39 = nyq_divmod64_small(_e38, chunk);
+            x_22 = _e39.xy;
+            c_3 = _e39.z;
+            rev_1 = 0u;
+            i_14 = 0u;
+            uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+            bool loop_init_20 = true;
+            while(true) {
+                if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+                loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                if (!loop_init_20) {
+                    uint _e58 = i_14;
+                    i_14 = (_e58 + 1u);
+                }
+                loop_init_20 = false;
+                uint _e47 = i_14;
+                if ((_e47 < run)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e49 = c_3;
+                    uint q_6 = naga_div(_e49, b_15);
+                    uint _e51 = rev_1;
+                    uint _e53 = c_3;
+                    rev_1 = ((_e51 * b_15) + (_e53 - (q_6 * b_15)));
+                    c_3 = q_6;
+                }
+            }
+            uint4 _e60 = num_2;
+            const uint4 _e61 = nyq_mul128_u32_(_e60, chunk);
+            uint _e62 = rev_1;
+            const uint4 _e67 = nyq_add128_(_e61, uint4(_e62, 0u, 0u, 0u));
+            num_2 = _e67;
+            uint4 _e68 = den_2;
+            const uint4 _e69 = nyq_mul128_u32_(_e68, chunk);
+            den_2 = _e69;
+        }
+    }
+    uint4 _e70 = num_2;
+    uint4 _e71 = den_2;
+    const NyqFraction nyqfraction = ConstructNyqFraction(_e70, _e71, 0u, 0u);
+    return nyqfraction;
+}
+
+NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_20)
+{
+    uint2 x_23 = (uint2)0;
+    uint4 num_3 = (0u).xxxx;
+    uint4 den_3 = uint4(1u, 0u, 0u, 0u);
+    bool local_28 = (bool)0;
+    bool local_29 = (bool)0;
+    uint c_4 = (uint)0;
+    uint part = (uint)0;
+    uint scale = (uint)0;
+    uint i_15 = (uint)0;
+    bool local_30 = (bool)0;
+    bool local_31 = (bool)0;
+    bool local_32 = (bool)0;
+
+    uint b_16 = asuint(nyq_halton_bases.Load(t_5*4));
+    uint chunk_1 = asuint(nyq_halton_bases.Load((t_5 + 4u)*4));
+    uint run_1 = asuint(nyq_halton_bases.Load((t_5 + 5u)*4));
+    const uint2 _e16 = nyq_u64_(b_16);
+    const uint2 _e17 = nyq_hash2_(seed_20, _e16);
+    const NyqPermutation _e21 = nyq_permutation(b_16, (_e17.x ^ _e17.y));
+    x_23 = a_16;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
+        uint _e33 = x_23.x;
+        if (!((_e33 != 0u))) {
+            uint _e40 = x_23.y;
+            local_28 = (_e40 != 0u);
+        } else {
+            local_28 = true;
+        }
+        bool _e44 = local_28;
+        if (_e44) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e45 = x_23;
+            const uint3 _e46 = nyq_divmod64_small(_e45, chunk_1);
+            x_23 = _e46.xy;
+            uint _e49 = x_23.x;
+            if ((_e49 == 0u)) {
+                uint _e55 = x_23.y;
+                local_29 = (_e55 == 0u);
+            } else {
+                local_29 = false;
+            }
+            bool last = local_29;
+            c_4 = _e46.z;
+            part = 0u;
+            scale = 1u;
+            i_15 = 0u;
+            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+            bool loop_init_21 = true;
+            while(true) {
+                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_21) {
+                    uint _e89 = i_15;
+                    i_15 = (_e89 + 1u);
+                }
+                loop_init_21 = false;
+                uint _e68 = i_15;
+                if ((_e68 < run_1)) {
+                } else {
+                    break;
+                }
+                {
+                    if (last) {
+                        uint _e72 = c_4;
+                        local_30 = (_e72 == 0u);
+                    } else {
+                        local_30 = false;
+                    }
+                    bool _e76 = local_30;
+                    if (_e76) {
+                        break;
+                    }
+                    uint _e77 = c_4;
+                    uint q_7 = naga_div(_e77, b_16);
+                    uint _e79 = part;
+                    uint _e81 = c_4;
+                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_16)));
+                    part = ((_e79 * b_16) + _e84);
+                    uint _e86 = scale;
+                    scale = (_e86 * b_16);
+                    c_4 = q_7;
+                }
+            }
+            uint4 _e91 = num_3;
+            uint _e92 = scale;
+            const uint4 _e93 = nyq_mul128_u32_(_e91, _e92);
+            uint _e94 = part;
+            const uint4 _e99 = nyq_add128_(_e93, uint4(_e94, 0u, 0u, 0u));
+            num_3 = _e99;
+            uint4 _e100 = den_3;
+            uint _e101 = scale;
+            const uint4 _e102 = nyq_mul128_u32_(_e100, _e101);
+            den_3 = _e102;
+        }
+    }
+    const uint _e104 = nyq_permutation_apply(_e21, 0u);
+    uint4 _e105 = num_3;
+    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_16 - 1u));
+    const uint4 _e113 = nyq_add128_(_e108, uint4(_e104, 0u, 0u, 0u));
+    num_3 = _e113;
+    uint4 _e114 = den_3;
+    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_16 - 1u));
+    den_3 = _e117;
+    uint _e119 = den_3.w;
+    if ((_e119 == 0u)) {
+        uint _e125 = den_3.z;
+        local_31 = (_e125 == 0u);
+    } else {
+        local_31 = false;
+    }
+    bool _e129 = local_31;
+    if (_e129) {
+        uint _e133 = den_3.y;
+        local_32 = (_e133 < 2097152u);
+    } else {
+        local_32 = false;
+    }
+    bool small = local_32;
+    uint4 _e138 = num_3;
+    uint4 _e139 = den_3;
+    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_16 - 1u)) ? 1u : 0u));
+    return nyqfraction_1;
+}
+
+uint ZeroValueuint() {
+    return (uint)0;
+}
+
+NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_21, bool affine)
+{
+    uint2 rest = (uint2)0;
+    uint2 pow_ = uint2(1u, 0u);
+    uint level = 0u;
+    uint2 num_4 = uint2(0u, 0u);
+    uint2 den_4 = uint2(1u, 0u);
+    uint2 next = (uint2)0;
+    uint digit_1 = (uint)0;
+    bool local_33 = (bool)0;
+    uint out_2 = (uint)0;
+
+    uint b_17 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
+    const uint2 _e9 = nyq_u64_(d_4);
+    const uint2 _e13 = nyq_hash3_(seed_21, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
+    rest = a_17;
+    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        uint _e30 = den_4.y;
+        if ((_e30 == 0u)) {
+        } else {
+            break;
+        }
+        {
+            next = uint2(0u, 0u);
+            digit_1 = 0u;
+            uint _e40 = rest.x;
+            if (!((_e40 != 0u))) {
+                uint _e47 = rest.y;
+                local_33 = (_e47 != 0u);
+            } else {
+                local_33 = true;
+            }
+            bool _e51 = local_33;
+            if (_e51) {
+                uint2 _e52 = rest;
+                const uint3 _e53 = nyq_divmod64_small(_e52, b_17);
+                next = _e53.xy;
+                digit_1 = _e53.z;
+            }
+            uint2 _e56 = rest;
+            uint2 _e57 = pow_;
+            const uint2 _e58 = nyq_mul64_(_e56, _e57);
+            const uint2 _e59 = nyq_sub64_(a_17, _e58);
+            const uint2 _e61 = nyq_mul64_(_e59, NYQ_OWEN_PREFIX_MUL);
+            uint _e63 = level;
+            const uint2 _e64 = nyq_u64_(_e63);
+            const uint2 _e66 = nyq_mul64_(_e64, NYQ_OWEN_LEVEL_STEP);
+            const uint2 _e67 = nyq_add64_((_e13 ^ _e61), _e66);
+            const uint2 _e68 = nyq_mix64_(_e67);
+            uint2 _e69 = next;
+            rest = _e69;
+            uint2 _e70 = pow_;
+            const uint2 _e71 = nyq_u64_(b_17);
+            const uint2 _e72 = nyq_mul64_(_e70, _e71);
+            pow_ = _e72;
+            uint _e73 = level;
+            level = (_e73 + 1u);
+            out_2 = ZeroValueuint();
+            if (affine) {
+                const uint3 _e78 = nyq_mul64x32_(_e68, b_17);
+                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_17 - 1u));
+                uint m_7 = (1u + _e83.z);
+                uint _e86 = digit_1;
+                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_17);
+            } else {
+                if ((b_17 <= 16u)) {
+                    const uint2 _e93 = nyq_packed_table(b_17, _e68);
+                    uint _e95 = digit_1;
+                    const uint _e97 = nyq_nibble(_e93, (4u * _e95));
+                    out_2 = _e97;
+                } else {
+                    const NyqPermutation _e101 = nyq_permutation(b_17, (_e68.x ^ _e68.y));
+                    uint _e102 = digit_1;
+                    const uint _e103 = nyq_permutation_apply(_e101, _e102);
+                    out_2 = _e103;
+                }
+            }
+            uint2 _e104 = num_4;
+            const uint3 _e105 = nyq_mul64x32_(_e104, b_17);
+            uint _e107 = out_2;
+            const uint2 _e110 = nyq_add64_(_e105.xy, uint2(_e107, 0u));
+            num_4 = _e110;
+            uint2 _e111 = den_4;
+            const uint3 _e112 = nyq_mul64x32_(_e111, b_17);
+            den_4 = _e112.xy;
+        }
+    }
+    uint2 _e114 = num_4;
+    uint2 _e118 = den_4;
+    const NyqFraction nyqfraction_2 = ConstructNyqFraction(uint4(_e114, 0u, 0u), uint4(_e118, 0u, 0u), 1u, 0u);
+    return nyqfraction_2;
+}
+
+float nyq_radical_inverse_scrambled(uint dim_30, uint2 a_18, uint2 seed_22, uint how_2)
+{
+    NyqRounding r_12 = (NyqRounding)0;
+    bool local_34 = (bool)0;
+    bool local_35 = (bool)0;
+    bool local_36 = (bool)0;
+    NyqFraction f = (NyqFraction)0;
+    uint bits_2 = (uint)0;
+
+    uint d_25 = naga_mod(dim_30, NYQ_PRIME_COUNT);
+    uint t_8 = (NYQ_HALTON_WORDS * d_25);
+    if ((how_2 == NYQ_SCRAMBLE_NONE)) {
+        local_34 = (d_25 == 0u);
+    } else {
+        local_34 = false;
+    }
+    bool _e16 = local_34;
+    if (_e16) {
+        r_12 = ConstructNyqRounding(uint4(reversebits(a_18.y), reversebits(a_18.x), 0u, 0u), int(-64), 0u, 0u, 0u);
+    } else {
+        if ((how_2 == NYQ_SCRAMBLE_NONE)) {
+            local_35 = (a_18.y == 0u);
+        } else {
+            local_35 = false;
+        }
+        bool _e37 = local_35;
+        if (_e37) {
+            uint _e45 = asuint(nyq_halton_bases.Load((t_8 + 1u)*4));
+            local_36 = (a_18.x < _e45);
+        } else {
+            local_36 = false;
+        }
+        bool _e48 = local_36;
+        if (_e48) {
+            if ((a_18.x != 0u)) {
+                const NyqRounding _e53 = nyq_phi_short(t_8, a_18.x);
+                r_12 = _e53;
+            }
+        } else {
+            if ((how_2 == NYQ_SCRAMBLE_NONE)) {
+                const NyqFraction _e57 = nyq_phi_fraction(t_8, a_18);
+                f = _e57;
+            } else {
+                if ((how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
+                    const NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_22);
+                    f = _e60;
+                } else {
+                    const NyqFraction _e63 = nyq_nested_fraction(d_25, a_18, seed_22, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    f = _e63;
+                }
+            }
+            uint4 _e65 = f.num;
+            uint4 _e67 = f.den;
+            uint _e69 = f.twice;
+            const NyqRounding _e72 = nyq_divide(_e65, _e67, (_e69 != 0u));
+            r_12 = _e72;
+            uint _e75 = f.below;
+            r_12.below = _e75;
+        }
+    }
+    uint4 _e77 = r_12.x;
+    int _e79 = r_12.e;
+    uint _e81 = r_12.sticky;
+    uint _e85 = r_12.twice;
+    const uint _e88 = nyq_round_bits(_e77, _e79, (_e81 != 0u), (_e85 != 0u));
+    bits_2 = _e88;
+    uint _e91 = r_12.below;
+    if ((_e91 != 0u)) {
+        uint _e95 = r_12.twice;
+        if ((_e95 == 0u)) {
+            uint _e98 = bits_2;
+            bits_2 = min(_e98, NYQ_BELOW_ONE_BITS);
+        }
+        uint _e101 = bits_2;
+        bits_2 = (_e101 - 1u);
+    }
+    uint _e104 = bits_2;
+    return asfloat(min(_e104, NYQ_BELOW_ONE_BITS));
+}
+
+float nyq_radical_inverse(uint dim_31, uint2 a_19)
+{
+    const float _e6 = nyq_radical_inverse_scrambled(dim_31, a_19, uint2(0u, 0u), NYQ_SCRAMBLE_NONE);
+    return _e6;
+}
+
+float nyq_scrambled_radical_inverse(uint dim_32, uint2 a_20, uint2 seed_23)
+{
+    const float _e4 = nyq_radical_inverse_scrambled(dim_32, a_20, seed_23, NYQ_SCRAMBLE_PERMUTE_DIGITS);
+    return _e4;
+}
+
+float nyq_owen_scrambled_radical_inverse(uint dim_33, uint2 a_21, uint2 seed_24)
+{
+    const float _e4 = nyq_radical_inverse_scrambled(dim_33, a_21, seed_24, NYQ_SCRAMBLE_OWEN);
+    return _e4;
+}
+
+float nyq_fast_owen_scrambled_radical_inverse(uint dim_34, uint2 a_22, uint2 seed_25)
+{
+    const float _e4 = nyq_radical_inverse_scrambled(dim_34, a_22, seed_25, NYQ_SCRAMBLE_FAST_OWEN);
+    return _e4;
+}
+
+NyqHalton ConstructNyqHalton(uint arg0, uint arg1, uint2 arg2) {
+    NyqHalton ret = (NyqHalton)0;
+    ret.dims = arg0;
+    ret.scramble = arg1;
+    ret.seed = arg2;
+    return ret;
+}
+
+NyqHalton nyq_halton(uint dims_2, uint scramble_2, uint2 seed_26)
+{
+    const NyqHalton nyqhalton = ConstructNyqHalton(dims_2, scramble_2, seed_26);
+    return nyqhalton;
+}
+
+float nyq_halton_sample(NyqHalton h_2, uint2 index_13, uint dim_35)
+{
+    const float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_35, h_2.dims), index_13, h_2.seed, h_2.scramble);
+    return _e7;
+}
+
+int naga_div(int lhs, int rhs) {
+    return lhs / (((lhs == int(-2147483647 - 1) & rhs == -1) | (rhs == 0)) ? 1 : rhs);
+}
+
+int naga_mod(int lhs, int rhs) {
+    int divisor = ((lhs == int(-2147483647 - 1) & rhs == -1) | (rhs == 0)) ? 1 : rhs;
+    return lhs - (lhs / divisor) * divisor;
+}
+
+uint nyq_mod_inverse(uint a_23, uint n_3)
+{
+    int r0_ = (int)0;
+    int r1_ = (int)0;
+    int t0_ = int(0);
+    int t1_ = int(1);
+    int m_3 = (int)0;
+
+    r0_ = int(n_3);
+    r1_ = int(naga_mod(a_23, n_3));
+    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        int _e11 = r1_;
+        if ((_e11 != int(0))) {
+        } else {
+            break;
+        }
+        {
+            int _e14 = r0_;
+            int _e15 = r1_;
+            int q_8 = naga_div(_e14, _e15);
+            int _e17 = r0_;
+            int _e18 = r1_;
+            int r2_1 = asint(asuint(_e17) - asuint(asint(asuint(q_8) * asuint(_e18))));
+            int _e21 = t0_;
+            int _e22 = t1_;
+            int t2_3 = asint(asuint(_e21) - asuint(asint(asuint(q_8) * asuint(_e22))));
+            int _e25 = r1_;
+            r0_ = _e25;
+            r1_ = r2_1;
+            int _e26 = t1_;
+            t0_ = _e26;
+            t1_ = t2_3;
+        }
+    }
+    int _e27 = t0_;
+    m_3 = naga_mod(_e27, int(n_3));
+    int _e31 = m_3;
+    if ((_e31 < int(0))) {
+        int _e34 = m_3;
+        m_3 = asint(asuint(_e34) + asuint(int(n_3)));
+    }
+    int _e37 = m_3;
+    return uint(_e37);
+}
+
+uint2 nyq_halton_scale(uint extent, uint b_12)
+{
+    uint scale_1 = 1u;
+    uint e = 0u;
+
+    uint goal = min(extent, 128u);
+    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        uint _e8 = scale_1;
+        if ((_e8 < goal)) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = scale_1;
+            scale_1 = (_e10 * b_12);
+            uint _e12 = e;
+            e = (_e12 + 1u);
+        }
+    }
+    uint _e15 = scale_1;
+    uint _e16 = e;
+    return uint2(_e15, _e16);
+}
+
+NyqHaltonSampler ConstructNyqHaltonSampler(uint arg0, uint arg1, uint2 arg2, uint2 arg3, uint2 arg4, uint arg5, uint2 arg6, uint2 arg7, uint arg8) {
+    NyqHaltonSampler ret = (NyqHaltonSampler)0;
+    ret.spp = arg0;
+    ret.scramble = arg1;
+    ret.seed = arg2;
+    ret.exponents = arg3;
+    ret.scales = arg4;
+    ret.stride = arg5;
+    ret.basis = arg6;
+    ret.index = arg7;
+    ret.dim = arg8;
+    return ret;
+}
+
+NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_3, uint2 seed_27)
+{
+    const uint2 _e6 = nyq_halton_scale(resolution_2.x, 2u);
+    const uint2 _e9 = nyq_halton_scale(resolution_2.y, 3u);
+    uint2 scales = uint2(_e6.x, _e9.x);
+    const uint _e16 = nyq_mod_inverse(_e9.x, _e6.x);
+    const uint _e21 = nyq_mod_inverse(_e6.x, _e9.x);
+    uint2 basis = uint2((_e9.x * _e16), (_e6.x * _e21));
+    const NyqHaltonSampler nyqhaltonsampler = ConstructNyqHaltonSampler(spp, scramble_3, seed_27, uint2(_e6.y, _e9.y), scales, (_e6.x * _e9.x), basis, uint2(0u, 0u), 0u);
+    return nyqhaltonsampler;
+}
+
+uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_4)
+{
+    uint inverse_1 = (uint)0;
+    uint index_14 = 0u;
+    uint done = 0u;
+    uint k_13 = (uint)0;
+
+    inverse_1 = inverse_in;
+    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
+    bool loop_init_22 = true;
+    while(true) {
+        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
+        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+        if (!loop_init_22) {
+            uint _e32 = done;
+            done = (_e32 + 1u);
+        }
+        loop_init_22 = false;
+        uint _e8 = done;
+        if ((_e8 < n_4)) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = inverse_1;
+            if ((_e10 == 0u)) {
+                uint _e13 = done;
+                k_13 = _e13;
+                uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
+                bool loop_init_23 = true;
+                while(true) {
+                    if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
+                    loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+                    if (!loop_init_23) {
+                        uint _e20 = k_13;
+                        k_13 = (_e20 + 1u);
+                    }
+                    loop_init_23 = false;
+                    uint _e15 = k_13;
+                    if ((_e15 < n_4)) {
+                    } else {
+                        break;
+                    }
+                    {
+                        uint _e17 = index_14;
+                        index_14 = (_e17 * b_13);
+                    }
+                }
+                uint _e22 = index_14;
+                return _e22;
+            }
+            uint _e23 = inverse_1;
+            uint q_9 = naga_div(_e23, b_13);
+            uint _e25 = index_14;
+            uint _e27 = inverse_1;
+            index_14 = ((_e25 * b_13) + (_e27 - (q_9 * b_13)));
+            inverse_1 = q_9;
+        }
+    }
+    uint _e34 = index_14;
+    return _e34;
+}
+
+uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_72, uint2 pixel_18, uint sample_index_16)
+{
+    uint offset_1 = (uint)0;
+
+    uint stride = s_72.stride;
+    uint2 scales_1 = s_72.scales;
+    uint2 exponents = s_72.exponents;
+    uint2 basis_1 = s_72.basis;
+    const uint _e16 = nyq_inverse_radical_inverse(2u, naga_mod(pixel_18.x, scales_1.x), exponents.x);
+    offset_1 = naga_mod((_e16 * basis_1.x), stride);
+    const uint _e26 = nyq_inverse_radical_inverse(3u, naga_mod(pixel_18.y, scales_1.y), exponents.y);
+    uint _e27 = offset_1;
+    offset_1 = naga_mod((_e27 + (_e26 * basis_1.y)), stride);
+    const uint2 _e32 = nyq_mul_wide(sample_index_16, stride);
+    uint _e33 = offset_1;
+    const uint2 _e34 = nyq_u64_(_e33);
+    const uint2 _e35 = nyq_add64_(_e32, _e34);
+    return _e35;
+}
+
+float nyq_halton_sampler_value(inout NyqHaltonSampler s_73, uint dim_36)
+{
+    uint2 a_24 = (uint2)0;
+
+    uint d_26 = naga_mod(dim_36, NYQ_PRIME_COUNT);
+    uint2 index_15 = s_73.index;
+    a_24 = index_15;
+    if ((d_26 == 0u)) {
+        uint e_4 = s_73.exponents.x;
+        if ((e_4 != 0u)) {
+            const uint2 _e14 = nyq_shr64_(index_15, e_4);
+            a_24 = _e14;
+        }
+    } else {
+        if ((d_26 == 1u)) {
+            uint _e19 = s_73.scales.y;
+            const uint3 _e20 = nyq_divmod64_small(index_15, _e19);
+            a_24 = _e20.xy;
+        }
+    }
+    uint2 _e22 = a_24;
+    uint2 _e24 = s_73.seed;
+    uint _e26 = s_73.scramble;
+    const float _e27 = nyq_radical_inverse_scrambled(d_26, _e22, _e24, _e26);
+    return _e27;
+}
+
+void nyq_halton_sampler_start(inout NyqHaltonSampler s_74, uint2 pixel_19, uint sample_index_17, uint dim_37)
+{
+    const uint2 _e5 = nyq_halton_sampler_index(s_74, pixel_19, sample_index_17);
+    s_74.index = _e5;
+    s_74.dim = dim_37;
     return;
 }
 
-void nyq_fill_values(uint out_3, float one, float2 two)
+float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_75)
 {
-    nyq_values.Store((out_3 + 5u)*4, asuint(asuint(one)));
-    nyq_values.Store((out_3 + 6u)*4, asuint(asuint(two.x)));
-    nyq_values.Store((out_3 + 7u)*4, asuint(asuint(two.y)));
+    uint d_27 = s_75.dim;
+    s_75.dim = (d_27 + 1u);
+    const float _e6 = nyq_halton_sampler_value(s_75, d_27);
+    return _e6;
+}
+
+float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_76, uint dim_38)
+{
+    float2 v_6 = float2(0.0, 0.0);
+    uint k_14 = 0u;
+
+    uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
+    bool loop_init_24 = true;
+    while(true) {
+        if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
+        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (!loop_init_24) {
+            uint _e17 = k_14;
+            k_14 = (_e17 + 1u);
+        }
+        loop_init_24 = false;
+        uint _e8 = k_14;
+        if ((_e8 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e11 = k_14;
+            uint _e13 = k_14;
+            const float _e15 = nyq_halton_sampler_value(s_76, (dim_38 + _e13));
+            v_6[min(uint(_e11), 1u)] = _e15;
+        }
+    }
+    float2 _e19 = v_6;
+    return _e19;
+}
+
+float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_77)
+{
+    uint d_28 = s_77.dim;
+    s_77.dim = (d_28 + 2u);
+    const float2 _e6 = nyq_halton_sampler_pair(s_77, d_28);
+    return _e6;
+}
+
+float2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_78)
+{
+    uint _e3 = s_78.dim;
+    s_78.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_halton_sampler_pair(s_78, 0u);
+    return _e7;
+}
+
+NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_79, uint2 pixel_20, uint sample_index_18)
+{
+    float4 v_7 = float4(0.0, 0.0, 0.0, 0.0);
+    float lens_y = 0.0;
+    uint d_5 = 0u;
+
+    nyq_halton_sampler_start(s_79, pixel_20, sample_index_18, 5u);
+    uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
+    while(true) {
+        if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
+        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+        if (!loop_init_25) {
+            uint _e25 = d_5;
+            d_5 = (_e25 + 1u);
+        }
+        loop_init_25 = false;
+        uint _e14 = d_5;
+        if ((_e14 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e17 = d_5;
+            const float _e18 = nyq_halton_sampler_value(s_79, _e17);
+            uint _e19 = d_5;
+            if ((_e19 < 4u)) {
+                uint _e22 = d_5;
+                v_7[min(uint(_e22), 3u)] = _e18;
+            } else {
+                lens_y = _e18;
+            }
+        }
+    }
+    float _e29 = v_7.x;
+    const float _e30 = nyq_film_coordinate(pixel_20.x, _e29);
+    float _e33 = v_7.y;
+    const float _e34 = nyq_film_coordinate(pixel_20.y, _e33);
+    float2 film_6 = float2(_e30, _e34);
+    float _e37 = v_7.w;
+    float _e38 = lens_y;
+    float _e41 = v_7.z;
+    const NyqCameraSample nyqcamerasample_7 = ConstructNyqCameraSample(film_6, float2(_e37, _e38), _e41);
+    return nyqcamerasample_7;
+}
+
+uint4 nyq_fill_request(uint i_16)
+{
+    uint _e3 = nyq_job.implicit;
+    if ((_e3 == 0u)) {
+        uint4 _e8 = asuint(nyq_requests.Load4(i_16*16));
+        return _e8;
+    }
+    uint _e11 = nyq_job.first;
+    uint n_9 = (_e11 + i_16);
+    uint _e15 = nyq_job.spp;
+    uint pixel_21 = naga_div(n_9, _e15);
+    uint _e20 = nyq_job.resolution.x;
+    uint _e25 = nyq_job.resolution.x;
+    uint _e29 = nyq_job.spp;
+    return uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_9, _e29), 5u);
+}
+
+void nyq_fill_camera(uint out_3, NyqCameraSample c_5)
+{
+    nyq_values.Store(out_3*4, asuint(asuint(c_5.p_film.x)));
+    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_5.p_film.y)));
+    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_5.time)));
+    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_5.lens.x)));
+    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_5.lens.y)));
+    return;
+}
+
+void nyq_fill_values(uint out_4, float one, float2 two)
+{
+    nyq_values.Store((out_4 + 5u)*4, asuint(asuint(one)));
+    nyq_values.Store((out_4 + 6u)*4, asuint(asuint(two.x)));
+    nyq_values.Store((out_4 + 7u)*4, asuint(asuint(two.y)));
     return;
 }
 
@@ -2662,19 +3954,21 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
     NyqStratifiedSampler s_4 = (NyqStratifiedSampler)0;
     NyqPmj02Sampler s_5 = (NyqPmj02Sampler)0;
     NyqSobolSampler s_6 = (NyqSobolSampler)0;
+    NyqHaltonSampler s_7 = (NyqHaltonSampler)0;
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
     uint k_3 = 0u;
+    uint k_4 = 0u;
 
-    uint i_12 = id.x;
+    uint i_17 = id.x;
     uint _e4 = nyq_job.count;
-    if ((i_12 >= _e4)) {
+    if ((i_17 >= _e4)) {
         return;
     }
-    const uint4 _e6 = nyq_fill_request(i_12);
-    uint2 pixel_19 = _e6.xy;
-    uint out_4 = (8u * i_12);
+    const uint4 _e6 = nyq_fill_request(i_17);
+    uint2 pixel_22 = _e6.xy;
+    uint out_5 = (8u * i_17);
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -2682,12 +3976,12 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e18 = nyq_job.frame;
             const NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_19, _e6.z);
-            nyq_fill_camera(out_4, _e22);
-            nyq_owen_sobol_start(s, pixel_19, _e6.z, _e6.w);
+            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e22);
+            nyq_owen_sobol_start(s, pixel_22, _e6.z, _e6.w);
             const float _e25 = nyq_owen_sobol_get_1d(s);
             const float2 _e26 = nyq_owen_sobol_get_2d(s);
-            nyq_fill_values(out_4, _e25, _e26);
+            nyq_fill_values(out_5, _e25, _e26);
             return;
         }
         case 1u: {
@@ -2697,24 +3991,24 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e38 = nyq_job.seed;
             const NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_19, _e6.z);
-            nyq_fill_camera(out_4, _e42);
-            nyq_zsobol_start(s_1, pixel_19, _e6.z, _e6.w);
+            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e42);
+            nyq_zsobol_start(s_1, pixel_22, _e6.z, _e6.w);
             const float _e45 = nyq_zsobol_get_1d(s_1);
             const float2 _e46 = nyq_zsobol_get_2d(s_1);
-            nyq_fill_values(out_4, _e45, _e46);
+            nyq_fill_values(out_5, _e45, _e46);
             return;
         }
         case 2u: {
             uint2 _e49 = nyq_job.seed;
             const NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_19, _e6.z);
-            nyq_fill_camera(out_4, _e53);
-            nyq_random_start(s_2, pixel_19, _e6.z, _e6.w);
+            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e53);
+            nyq_random_start(s_2, pixel_22, _e6.z, _e6.w);
             const float _e56 = nyq_random_get_1d(s_2);
             const float2 _e57 = nyq_random_get_2d(s_2);
-            nyq_fill_values(out_4, _e56, _e57);
+            nyq_fill_values(out_5, _e56, _e57);
             return;
         }
         case 3u: {
@@ -2724,12 +4018,12 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e69 = nyq_job.seed;
             const NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_19, _e6.z);
-            nyq_fill_camera(out_4, _e73);
-            nyq_lattice_start(s_3, pixel_19, _e6.z, _e6.w);
+            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e73);
+            nyq_lattice_start(s_3, pixel_22, _e6.z, _e6.w);
             const float _e76 = nyq_lattice_get_1d(s_3);
             const float2 _e77 = nyq_lattice_get_2d(s_3);
-            nyq_fill_values(out_4, _e76, _e77);
+            nyq_fill_values(out_5, _e76, _e77);
             return;
         }
         case 4u: {
@@ -2739,24 +4033,24 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e91 = nyq_job.seed;
             const NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
             s_4 = _e92;
-            const NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_19, _e6.z);
-            nyq_fill_camera(out_4, _e95);
-            nyq_stratified_start(s_4, pixel_19, _e6.z, _e6.w);
+            const NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e95);
+            nyq_stratified_start(s_4, pixel_22, _e6.z, _e6.w);
             const float _e98 = nyq_stratified_get_1d(s_4);
             const float2 _e99 = nyq_stratified_get_2d(s_4);
-            nyq_fill_values(out_4, _e98, _e99);
+            nyq_fill_values(out_5, _e98, _e99);
             return;
         }
         case 5u: {
             uint2 _e102 = nyq_job.seed;
             const NyqPmj02Sampler _e103 = nyq_pmj02_sampler(_e102);
             s_5 = _e103;
-            const NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_19, _e6.z);
-            nyq_fill_camera(out_4, _e106);
-            nyq_pmj02_start(s_5, pixel_19, _e6.z, _e6.w);
+            const NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e106);
+            nyq_pmj02_start(s_5, pixel_22, _e6.z, _e6.w);
             const float _e109 = nyq_pmj02_get_1d(s_5);
             const float2 _e110 = nyq_pmj02_get_2d(s_5);
-            nyq_fill_values(out_4, _e109, _e110);
+            nyq_fill_values(out_5, _e109, _e110);
             return;
         }
         case 6u: {
@@ -2766,130 +4060,177 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e122 = nyq_job.seed;
             const NyqSobolSampler _e123 = nyq_sobol_sampler(_e113, _e116, _e119, _e122);
             s_6 = _e123;
-            const NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_19, _e6.z);
-            nyq_fill_camera(out_4, _e126);
-            nyq_sobol_sampler_start(s_6, pixel_19, _e6.z, _e6.w);
+            const NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e126);
+            nyq_sobol_sampler_start(s_6, pixel_22, _e6.z, _e6.w);
             const float _e129 = nyq_sobol_sampler_get_1d(s_6);
             const float2 _e130 = nyq_sobol_sampler_get_2d(s_6);
-            nyq_fill_values(out_4, _e129, _e130);
+            nyq_fill_values(out_5, _e129, _e130);
+            return;
+        }
+        case 7u: {
+            uint2 _e133 = nyq_job.resolution;
+            uint _e136 = nyq_job.spp;
+            uint _e139 = nyq_job.scramble;
+            uint2 _e142 = nyq_job.seed;
+            const NyqHaltonSampler _e143 = nyq_halton_sampler(_e133, _e136, _e139, _e142);
+            s_7 = _e143;
+            const NyqCameraSample _e146 = nyq_halton_sampler_camera_sample(s_7, pixel_22, _e6.z);
+            nyq_fill_camera(out_5, _e146);
+            nyq_halton_sampler_start(s_7, pixel_22, _e6.z, _e6.w);
+            const float _e149 = nyq_halton_sampler_get_1d(s_7);
+            const float2 _e150 = nyq_halton_sampler_get_2d(s_7);
+            nyq_fill_values(out_5, _e149, _e150);
             return;
         }
         case 16u: {
-            uint _e133 = nyq_job.dims;
-            uint _e136 = nyq_job.scramble;
-            uint2 _e141 = nyq_job.seed;
-            const NyqSobol _e142 = nyq_sobol(_e133, (_e136 != 0u), _e141);
-            uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-            bool loop_init_17 = true;
+            uint _e153 = nyq_job.dims;
+            uint _e156 = nyq_job.scramble;
+            uint2 _e161 = nyq_job.seed;
+            const NyqSobol _e162 = nyq_sobol(_e153, (_e156 != 0u), _e161);
+            uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+            bool loop_init_26 = true;
             while(true) {
-                if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-                loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-                if (!loop_init_17) {
-                    uint _e170 = k;
-                    k = (_e170 + 1u);
+                if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+                loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                if (!loop_init_26) {
+                    uint _e190 = k;
+                    k = (_e190 + 1u);
                 }
-                loop_init_17 = false;
-                uint _e145 = k;
-                if ((_e145 < 4u)) {
+                loop_init_26 = false;
+                uint _e165 = k;
+                if ((_e165 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e149 = k;
-                    uint _e154 = k;
-                    const uint _e156 = nyq_sobol_sample_u32_(_e142, _e6.z, (_e6.w + _e154));
-                    nyq_values.Store((out_4 + _e149)*4, asuint(_e156));
-                    uint _e160 = k;
-                    uint _e165 = k;
-                    const float _e167 = nyq_sobol_sample(_e142, _e6.z, (_e6.w + _e165));
-                    nyq_values.Store(((out_4 + 4u) + _e160)*4, asuint(asuint(_e167)));
+                    uint _e169 = k;
+                    uint _e174 = k;
+                    const uint _e176 = nyq_sobol_sample_u32_(_e162, _e6.z, (_e6.w + _e174));
+                    nyq_values.Store((out_5 + _e169)*4, asuint(_e176));
+                    uint _e180 = k;
+                    uint _e185 = k;
+                    const float _e187 = nyq_sobol_sample(_e162, _e6.z, (_e6.w + _e185));
+                    nyq_values.Store(((out_5 + 4u) + _e180)*4, asuint(asuint(_e187)));
                 }
             }
             return;
         }
         case 17u: {
-            uint _e174 = nyq_job.dims;
-            uint2 _e177 = nyq_job.seed;
-            const NyqOwenSobol _e178 = nyq_owen_sobol(_e174, _e177);
-            const float4 _e181 = nyq_owen_sobol_sample_4d(_e178, _e6.z, _e6.w);
-            uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
-            bool loop_init_18 = true;
+            uint _e194 = nyq_job.dims;
+            uint2 _e197 = nyq_job.seed;
+            const NyqOwenSobol _e198 = nyq_owen_sobol(_e194, _e197);
+            const float4 _e201 = nyq_owen_sobol_sample_4d(_e198, _e6.z, _e6.w);
+            uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+            bool loop_init_27 = true;
             while(true) {
-                if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-                loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
-                if (!loop_init_18) {
-                    uint _e206 = k_1;
-                    k_1 = (_e206 + 1u);
+                if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+                if (!loop_init_27) {
+                    uint _e226 = k_1;
+                    k_1 = (_e226 + 1u);
                 }
-                loop_init_18 = false;
-                uint _e184 = k_1;
-                if ((_e184 < 4u)) {
+                loop_init_27 = false;
+                uint _e204 = k_1;
+                if ((_e204 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e188 = k_1;
-                    uint _e193 = k_1;
-                    const uint _e195 = nyq_owen_sobol_sample_u32_(_e178, _e6.z, (_e6.w + _e193));
-                    nyq_values.Store((out_4 + _e188)*4, asuint(_e195));
-                    uint _e199 = k_1;
-                    uint _e202 = k_1;
-                    nyq_values.Store(((out_4 + 4u) + _e199)*4, asuint(asuint(_e181[min(uint(_e202), 3u)])));
+                    uint _e208 = k_1;
+                    uint _e213 = k_1;
+                    const uint _e215 = nyq_owen_sobol_sample_u32_(_e198, _e6.z, (_e6.w + _e213));
+                    nyq_values.Store((out_5 + _e208)*4, asuint(_e215));
+                    uint _e219 = k_1;
+                    uint _e222 = k_1;
+                    nyq_values.Store(((out_5 + 4u) + _e219)*4, asuint(asuint(_e201[min(uint(_e222), 3u)])));
                 }
             }
             return;
         }
         case 18u: {
-            uint _e210 = nyq_job.scramble;
-            uint2 _e215 = nyq_job.seed;
-            const NyqPmj02_ _e216 = nyq_pmj02_((_e210 != 0u), _e215);
-            uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-            bool loop_init_19 = true;
+            uint _e230 = nyq_job.scramble;
+            uint2 _e235 = nyq_job.seed;
+            const NyqPmj02_ _e236 = nyq_pmj02_((_e230 != 0u), _e235);
+            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+            bool loop_init_28 = true;
             while(true) {
-                if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-                loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-                if (!loop_init_19) {
-                    uint _e244 = k_2;
-                    k_2 = (_e244 + 1u);
+                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+                if (!loop_init_28) {
+                    uint _e264 = k_2;
+                    k_2 = (_e264 + 1u);
                 }
-                loop_init_19 = false;
-                uint _e219 = k_2;
-                if ((_e219 < 4u)) {
+                loop_init_28 = false;
+                uint _e239 = k_2;
+                if ((_e239 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e223 = k_2;
-                    uint _e228 = k_2;
-                    const uint _e230 = nyq_pmj02_sample_u32_(_e216, _e6.z, (_e6.w + _e228));
-                    nyq_values.Store((out_4 + _e223)*4, asuint(_e230));
-                    uint _e234 = k_2;
-                    uint _e239 = k_2;
-                    const float _e241 = nyq_pmj02_sample(_e216, _e6.z, (_e6.w + _e239));
-                    nyq_values.Store(((out_4 + 4u) + _e234)*4, asuint(asuint(_e241)));
+                    uint _e243 = k_2;
+                    uint _e248 = k_2;
+                    const uint _e250 = nyq_pmj02_sample_u32_(_e236, _e6.z, (_e6.w + _e248));
+                    nyq_values.Store((out_5 + _e243)*4, asuint(_e250));
+                    uint _e254 = k_2;
+                    uint _e259 = k_2;
+                    const float _e261 = nyq_pmj02_sample(_e236, _e6.z, (_e6.w + _e259));
+                    nyq_values.Store(((out_5 + 4u) + _e254)*4, asuint(asuint(_e261)));
+                }
+            }
+            return;
+        }
+        case 19u: {
+            uint _e268 = nyq_job.dims;
+            uint _e271 = nyq_job.scramble;
+            uint2 _e274 = nyq_job.seed;
+            const NyqHalton _e275 = nyq_halton(_e268, _e271, _e274);
+            uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
+            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+            bool loop_init_29 = true;
+            while(true) {
+                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                if (!loop_init_29) {
+                    uint _e309 = k_3;
+                    k_3 = (_e309 + 1u);
+                }
+                loop_init_29 = false;
+                uint _e287 = k_3;
+                if ((_e287 < 8u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e292 = k_3;
+                    uint2 index_16 = uint2(_e6.z, ((_e292 >= 4u) ? high_2 : 0u));
+                    uint _e298 = k_3;
+                    uint _e302 = k_3;
+                    const float _e306 = nyq_halton_sample(_e275, index_16, (_e6.w + (_e302 & 3u)));
+                    nyq_values.Store((out_5 + _e298)*4, asuint(asuint(_e306)));
                 }
             }
             return;
         }
         default: {
-            uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-            bool loop_init_20 = true;
+            uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+            bool loop_init_30 = true;
             while(true) {
-                if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-                loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-                if (!loop_init_20) {
-                    uint _e257 = k_3;
-                    k_3 = (_e257 + 1u);
+                if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+                if (!loop_init_30) {
+                    uint _e322 = k_4;
+                    k_4 = (_e322 + 1u);
                 }
-                loop_init_20 = false;
-                uint _e248 = k_3;
-                if ((_e248 < 8u)) {
+                loop_init_30 = false;
+                uint _e313 = k_4;
+                if ((_e313 < 8u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e252 = k_3;
-                    nyq_values.Store((out_4 + _e252)*4, asuint(4294967295u));
+                    uint _e317 = k_4;
+                    nyq_values.Store((out_5 + _e317)*4, asuint(4294967295u));
                 }
             }
             return;

@@ -14,9 +14,10 @@
 //! assert!(glsl.starts_with(b"#version 450"));
 //! ```
 //!
-//! The samplers read one table, the Sobol generator matrices, from a storage buffer the engine
-//! binds ([`sobol_matrices`], 128 KiB, at [`Bindings::sobol_matrices`]). Everything else is
-//! integer arithmetic on 32-bit words (64-bit words as `vec2<u32>` halves) and exact
+//! The samplers read two tables from storage buffers the engine binds: the Sobol generator
+//! matrices ([`sobol_matrices`], 128 KiB, at [`Bindings::sobol_matrices`]) and the Halton
+//! per-base constants ([`halton_bases`], 96 KiB, at [`Bindings::halton_bases`]). Everything
+//! else is integer arithmetic on 32-bit words (64-bit words as `vec2<u32>` halves) and exact
 //! conversions; `docs/gpu.md` in the repository gives the float rules that keep every device's
 //! bits equal to the CPU's.
 
@@ -26,7 +27,7 @@ pub mod costs;
 
 /// The library and its `nyq_fill` kernel, in WGSL: the source every other language is emitted
 /// from. Bindings: group 0, binding 0 the Sobol matrices; bindings 1–3 the kernel's job,
-/// requests and values.
+/// requests and values; binding 4 the Halton bases.
 ///
 /// ```
 /// assert!(nyquist_gpu::WGSL.contains("fn nyq_owen_sobol_camera_sample("));
@@ -49,6 +50,8 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/stratified.wgsl"),
     "\n",
     include_str!("../wgsl/pmj02.wgsl"),
+    "\n",
+    include_str!("../wgsl/halton.wgsl"),
     "\n",
     include_str!("../wgsl/fill.wgsl"),
 );
@@ -160,21 +163,36 @@ impl std::error::Error for EmitError {}
 ///
 /// ```
 /// use nyquist_gpu::Bindings;
-/// let b = Bindings { group: 2, sobol_matrices: 7 };
+/// let b = Bindings { group: 2, sobol_matrices: 7, halton_bases: 8 };
 /// let wgsl = b.apply(nyquist_gpu::WGSL);
 /// assert!(wgsl.contains("@group(2) @binding(7) var<storage, read> nyq_sobol_matrices"));
+/// assert!(wgsl.contains("@group(2) @binding(8) var<storage, read> nyq_halton_bases"));
+/// assert_eq!(Bindings::default().apply(nyquist_gpu::WGSL), nyquist_gpu::WGSL);
 /// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Bindings {
     /// The bind group of every buffer.
     pub group: u32,
     /// The binding of the Sobol matrices.
     pub sobol_matrices: u32,
+    /// The binding of the Halton bases.
+    pub halton_bases: u32,
+}
+
+impl Default for Bindings {
+    /// Group 0, the Sobol matrices at binding 0 and the Halton bases at 4, as in [`WGSL`].
+    fn default() -> Bindings {
+        Bindings {
+            group: 0,
+            sobol_matrices: 0,
+            halton_bases: 4,
+        }
+    }
 }
 
 impl Bindings {
-    /// `source` (the [`WGSL`] module or a copy of its library part) with the matrices'
-    /// declaration moved to these bindings. The kernel's own bindings keep their numbers in
+    /// `source` (the [`WGSL`] module or a copy of its library part) with the tables'
+    /// declarations moved to these bindings. The kernel's own bindings keep their numbers in
     /// the new group.
     pub fn apply(&self, source: &str) -> String {
         source
@@ -183,6 +201,13 @@ impl Bindings {
                 &format!(
                     "@group({}) @binding({}) var<storage, read> nyq_sobol_matrices",
                     self.group, self.sobol_matrices
+                ),
+            )
+            .replace(
+                "@group(0) @binding(4) var<storage, read> nyq_halton_bases",
+                &format!(
+                    "@group({}) @binding({}) var<storage, read> nyq_halton_bases",
+                    self.group, self.halton_bases
                 ),
             )
             .replace(
@@ -205,6 +230,71 @@ pub fn sobol_matrices() -> Vec<u32> {
     for d in 0..nyquist::sequence::SOBOL_DIMS {
         for k in 0..32 {
             out.push(nyquist::sequence::sobol_u32(1 << k, d));
+        }
+    }
+    out
+}
+
+/// Words per base in [`halton_bases`].
+pub const HALTON_BASE_WORDS: usize = 24;
+
+/// The Halton per-base constants the shaders read: 1024 bases × [`HALTON_BASE_WORDS`] words,
+/// base `d` (the `d`-th prime) at `24·d`. Word 0 is `b`; 1 is `b^k`, `k` the largest with
+/// `b^k < 2³²` (indices below take the core's short path); 2 and 3 hold, in byte `c`, the
+/// digits `N_c` the short path's reversal spans for an index of `c + 1` nibbles; 4 is the
+/// largest power of `b` up to 2¹⁶ and 5 its exponent; 6 and 7 are zero; `8 + 2c` and `9 + 2c`
+/// are the low and high words of the `f64` bits of `1/b^N_c`, the reciprocal the core's short
+/// path multiplies by (its `fast_class`, rebuilt here from the primes).
+///
+/// ```
+/// let t = nyquist_gpu::halton_bases();
+/// assert_eq!(t.len(), 1024 * nyquist_gpu::HALTON_BASE_WORDS);
+/// assert_eq!((t[24], t[25]), (3, 3486784401)); // base 3, 3²⁰
+/// assert_eq!((t[1023 * 24], t[1023 * 24 + 4]), (8161, 8161));
+/// ```
+pub fn halton_bases() -> Vec<u32> {
+    use nyquist::radical::{PRIME_COUNT, prime};
+    let mut out = Vec::with_capacity(PRIME_COUNT as usize * HALTON_BASE_WORDS);
+    for d in 0..PRIME_COUNT {
+        let b = u64::from(prime(d));
+        // k: the largest with b^k < 2³².
+        let mut k = 0u32;
+        while b.pow(k + 1) < 1 << 32 {
+            k += 1;
+        }
+        // The core's digits per table chunk (`chunk_len`): its short path's reversal spans
+        // whole chunks, which fixes how it rounds.
+        let chunk_limit = if b == 3 { 6561 } else { 4096 };
+        let mut j = 0u32;
+        while b.pow(j + 1) <= chunk_limit {
+            j += 1;
+        }
+        if j < 2 {
+            j = if b <= 83 { 2 } else { 1 };
+        }
+        let mut places = [0u32; 8];
+        let mut inverses = [0u64; 8];
+        for c in 1..=8u32 {
+            let mut x = (1u64 << (4 * c)) - 1;
+            let mut n = 0u32;
+            while x > 0 {
+                x /= b;
+                n += 1;
+            }
+            let spanned = n.min(k).div_ceil(j) * j;
+            places[c as usize - 1] = spanned;
+            inverses[c as usize - 1] = (1.0 / b.pow(spanned) as f64).to_bits();
+        }
+        let mut run = 0u32;
+        while b.pow(run + 1) <= 1 << 16 {
+            run += 1;
+        }
+        let bytes =
+            |c: usize| places[c] | places[c + 1] << 8 | places[c + 2] << 16 | places[c + 3] << 24;
+        out.extend([b as u32, b.pow(k) as u32, bytes(0), bytes(4)]);
+        out.extend([b.pow(run) as u32, run, 0, 0]);
+        for inv in inverses {
+            out.extend([inv as u32, (inv >> 32) as u32]);
         }
     }
     out
@@ -248,7 +338,7 @@ pub fn emit(language: Language) -> Result<Vec<u8>, EmitError> {
         Language::Wgsl => unreachable!("returned above"),
         Language::Glsl => {
             // Binding b of group 0 as `layout(binding = b)`: the numbers the other languages use.
-            let binding_map = (0..4)
+            let binding_map = (0..5)
                 .map(|b| {
                     let target = naga::ResourceBinding {
                         group: 0,

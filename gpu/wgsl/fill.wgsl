@@ -7,7 +7,10 @@
 // time, lens x, lens y), then after start(pixel, sample index, dimension) one get_1d and one
 // get_2d; for a sequence, dimensions dimension .. dimension + 4 of point `sample index` as
 // 32-bit fractions, then the same four as the f32 bits of the 4-D form (or of single values
-// where a sequence has none).
+// where a sequence has none). The Halton sequence (kind 19) writes the f32 bits of point
+// `sample index` in words 0..3 and, in words 4..7, those of the 64-bit point
+// high·2³² + sample index, high = (pixel.x · 0x9e3779b9 + pixel.y) >> (pixel.y mod 32) (mod 2³²):
+// indices of every length from 33 to 64 bits, where its long path runs.
 //
 // With `implicit` set, request i is sample i mod spp of pixel ⌊i / spp⌋ in row-major order
 // over `resolution`, at dimension 5 (a whole image's camera samples without a request buffer).
@@ -20,9 +23,11 @@ const NYQ_FILL_LATTICE_SAMPLER: u32 = 3u;
 const NYQ_FILL_STRATIFIED_SAMPLER: u32 = 4u;
 const NYQ_FILL_PMJ02_SAMPLER: u32 = 5u;
 const NYQ_FILL_SOBOL_SAMPLER: u32 = 6u;
+const NYQ_FILL_HALTON_SAMPLER: u32 = 7u;
 const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 const NYQ_FILL_PMJ02: u32 = 18u;
+const NYQ_FILL_HALTON: u32 = 19u;
 
 struct NyqFillJob {
     kind: u32,
@@ -131,6 +136,13 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             let one = nyq_sobol_sampler_get_1d(&s);
             nyq_fill_values(out, one, nyq_sobol_sampler_get_2d(&s));
         }
+        case 7u: {
+            var s = nyq_halton_sampler(nyq_job.resolution, nyq_job.spp, nyq_job.scramble, nyq_job.seed);
+            nyq_fill_camera(out, nyq_halton_sampler_camera_sample(&s, pixel, q.z));
+            nyq_halton_sampler_start(&s, pixel, q.z, q.w);
+            let one = nyq_halton_sampler_get_1d(&s);
+            nyq_fill_values(out, one, nyq_halton_sampler_get_2d(&s));
+        }
         case 16u: {
             let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);
             for (var k = 0u; k < 4u; k++) {
@@ -151,6 +163,14 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             for (var k = 0u; k < 4u; k++) {
                 nyq_values[out + k] = nyq_pmj02_sample_u32(s, q.z, q.w + k);
                 nyq_values[out + 4u + k] = bitcast<u32>(nyq_pmj02_sample(s, q.z, q.w + k));
+            }
+        }
+        case 19u: {
+            let h = nyq_halton(nyq_job.dims, nyq_job.scramble, nyq_job.seed);
+            let high = (q.x * 0x9e3779b9u + q.y) >> (q.y & 31u);
+            for (var k = 0u; k < 8u; k++) {
+                let index = vec2<u32>(q.z, select(0u, high, k >= 4u));
+                nyq_values[out + k] = bitcast<u32>(nyq_halton_sample(h, index, q.w + (k & 3u)));
             }
         }
         default: {

@@ -14,11 +14,11 @@ use std::borrow::Cow;
 
 use nyquist::lattice::FibonacciLattice;
 use nyquist::sampler::{
-    Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler,
-    StratifiedSampler, ZSobolSampler,
+    HaltonSampler, Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
+    SobolSampler, StratifiedSampler, ZSobolSampler,
 };
 use nyquist::scramble::Scramble;
-use nyquist::sequence::{OwenSobol, Pmj02, Sequence, Sobol};
+use nyquist::sequence::{Halton, OwenSobol, Pmj02, ScrambledHalton, Sequence, Sobol};
 use nyquist_gpu::WORDS_PER_REQUEST;
 
 /// A request: `[pixel.x, pixel.y, sample index, dimension]` (for a sequence: the point index in
@@ -142,6 +142,36 @@ pub enum Job {
         /// The seed.
         seed: u64,
     },
+    /// `HaltonSampler::new(resolution, spp, scramble, seed)`.
+    HaltonSampler {
+        /// Image size.
+        resolution: [u32; 2],
+        /// Samples per pixel (reported only; every index is a new point).
+        spp: u32,
+        /// The values' scramble.
+        scramble: Scramble,
+        /// The seed.
+        seed: u64,
+    },
+    /// `Halton::new(dims)` for `Scramble::None`, else
+    /// `ScrambledHalton::with_strategy(dims, scramble, seed)`: point `index` in words 0..3 and
+    /// the 64-bit point [`halton_high_index`] in words 4..7.
+    Halton {
+        /// Dimensions, 1..=1024.
+        dims: u32,
+        /// The scramble.
+        scramble: Scramble,
+        /// The seed.
+        seed: u64,
+    },
+}
+
+/// The 64-bit index whose point the Halton sequence job writes in words 4..7 of a request:
+/// `high·2³² + index`, `high = (x · 0x9e3779b9 + y) >> (y mod 32)` (wrapping), as fill.wgsl
+/// documents.
+pub fn halton_high_index(&[x, y, index, _]: &Request) -> u64 {
+    let high = x.wrapping_mul(0x9e37_79b9).wrapping_add(y) >> (y & 31);
+    u64::from(high) << 32 | u64::from(index)
 }
 
 /// The kernel's uniform block (`NyqFillJob` in fill.wgsl), 48 bytes.
@@ -199,6 +229,19 @@ impl Job {
             Job::Sobol { seed: None, .. } => "sobol".into(),
             Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
             Job::OwenSobol { .. } => "owen-sobol".into(),
+            Job::HaltonSampler {
+                resolution,
+                scramble,
+                ..
+            } => format!(
+                "halton sampler {}x{} ({})",
+                resolution[0],
+                resolution[1],
+                scramble.name()
+            ),
+            Job::Halton { dims, scramble, .. } => {
+                format!("halton {dims}-d ({})", scramble.name())
+            }
         }
     }
 
@@ -294,6 +337,30 @@ impl Job {
             },
             Job::OwenSobol { dims, seed } => FillJob {
                 kind: 17,
+                seed: seed_words(seed),
+                dims,
+                ..FillJob::default()
+            },
+            Job::HaltonSampler {
+                resolution,
+                spp,
+                scramble,
+                seed,
+            } => FillJob {
+                kind: 7,
+                scramble: scramble_code(scramble),
+                spp,
+                seed: seed_words(seed),
+                resolution,
+                ..FillJob::default()
+            },
+            Job::Halton {
+                dims,
+                scramble,
+                seed,
+            } => FillJob {
+                kind: 19,
+                scramble: scramble_code(scramble),
                 seed: seed_words(seed),
                 dims,
                 ..FillJob::default()
@@ -409,6 +476,45 @@ impl Job {
                     })
                     .collect()
             }
+            Job::HaltonSampler {
+                resolution,
+                spp,
+                scramble,
+                seed,
+            } => sampler_answers(
+                HaltonSampler::new(resolution, spp, scramble, seed).expect("valid sampler"),
+                requests,
+            ),
+            Job::Halton {
+                dims,
+                scramble,
+                seed,
+            } => {
+                let plain = Halton::new(dims).expect("valid sequence");
+                let scrambled =
+                    ScrambledHalton::with_strategy(dims, scramble, seed).expect("valid sequence");
+                let sample = |index: u64, dim: u32| {
+                    if scramble == Scramble::None {
+                        plain.sample(index, dim)
+                    } else {
+                        scrambled.sample(index, dim)
+                    }
+                };
+                requests
+                    .iter()
+                    .map(|q| {
+                        let (index, dim) = (q[2], q[3]);
+                        let high = halton_high_index(q);
+                        let mut a = [0; WORDS_PER_REQUEST];
+                        for k in 0..4 {
+                            let d = dim.wrapping_add(k as u32);
+                            a[k] = sample(u64::from(index), d).to_bits();
+                            a[4 + k] = sample(high, d).to_bits();
+                        }
+                        a
+                    })
+                    .collect()
+            }
         }
     }
 }
@@ -437,13 +543,14 @@ fn sampler_answers<S: Sampler>(mut s: S, requests: &[Request]) -> Vec<Answer> {
         .collect()
 }
 
-/// A device, its queue and the Sobol matrices uploaded once.
+/// A device, its queue and the tables (the Sobol matrices, the Halton bases) uploaded once.
 #[derive(Debug)]
 pub struct Gpu {
     device: wgpu::Device,
     queue: wgpu::Queue,
     info: wgpu::AdapterInfo,
     matrices: wgpu::Buffer,
+    halton_bases: wgpu::Buffer,
 }
 
 /// The kernel built from one [`Source`].
@@ -489,19 +596,24 @@ impl Gpu {
             ..Default::default()
         }))
         .map_err(|e| format!("adapter {} refused a device: {e}", info.name))?;
-        let words = nyquist_gpu::sobol_matrices();
-        let matrices = device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("nyq_sobol_matrices"),
-            size: (words.len() * 4) as u64,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
-        });
-        queue.write_buffer(&matrices, 0, bytemuck::cast_slice(&words));
+        let table = |label: &str, words: &[u32]| {
+            let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(label),
+                size: (words.len() * 4) as u64,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            });
+            queue.write_buffer(&buffer, 0, bytemuck::cast_slice(words));
+            buffer
+        };
+        let matrices = table("nyq_sobol_matrices", &nyquist_gpu::sobol_matrices());
+        let halton_bases = table("nyq_halton_bases", &nyquist_gpu::halton_bases());
         Ok(Gpu {
             device,
             queue,
             info,
             matrices,
+            halton_bases,
         })
     }
 
@@ -662,6 +774,10 @@ impl Gpu {
                 wgpu::BindGroupEntry {
                     binding: 3,
                     resource: values.as_entire_binding(),
+                },
+                wgpu::BindGroupEntry {
+                    binding: 4,
+                    resource: self.halton_bases.as_entire_binding(),
                 },
             ],
         });

@@ -1,11 +1,13 @@
 //! Every sampler and sequence of the shaders, from each checked-in source (the WGSL, and the
 //! emitted SPIR-V and GLSL through wgpu's front ends), against the core, bit for bit: 2¹⁷
-//! random requests (2²⁰ values) per job and source. Where no adapter can be had the test says
-//! so and passes (`.ci/run` prints `SKIPPED` before it gets here).
+//! random requests (2²⁰ values) per job and source, fewer per Halton job but 2²⁰ values or more
+//! per Halton sampler and sequence ([`halton_jobs`]). Where no adapter can be had the test says
+//! so and passes (`.ci/run` prints `SKIPPED` before it gets here). `NYQUIST_PARITY_JOBS=halton`
+//! runs only the jobs whose name contains the string.
 
 use nyquist::sampler::Jitter;
 use nyquist::scramble::Scramble;
-use nyquist_gpu_parity::{Gpu, Job, Source, first_mismatch, random_requests};
+use nyquist_gpu_parity::{Gpu, Job, Request, Source, first_mismatch, random_requests};
 
 fn jobs() -> Vec<Job> {
     let mut jobs = vec![
@@ -166,6 +168,104 @@ fn jobs() -> Vec<Job> {
     jobs
 }
 
+/// The Halton jobs and their request counts: 2¹⁵ requests (2¹⁸ values) for the sampler under
+/// each scramble and for the sequence under each, 2¹³ for the sampler's other shapes, so each
+/// has 2²⁰ values or more in all, at a quarter of the time 2¹⁷ per job would take.
+fn halton_jobs() -> Vec<(Job, usize)> {
+    let mut jobs = Vec::new();
+    // Indices up to 2³²·31104 (every sample index of a u32): short and long paths, dimensions
+    // past 1024.
+    for (k, scramble) in Scramble::ALL.into_iter().enumerate() {
+        jobs.push((
+            Job::HaltonSampler {
+                resolution: [1920, 1080],
+                spp: 16,
+                scramble,
+                seed: 30 + k as u64,
+            },
+            1 << 15,
+        ));
+    }
+    // 4K and 8K, a one-pixel image (stride 1), a 2 × 3 image, odd sizes.
+    let shapes = [
+        ([3840, 2160], 64, Scramble::Owen, 34),
+        ([7680, 4320], 1024, Scramble::None, 0),
+        ([1, 1], 1, Scramble::PermuteDigits, u64::MAX),
+        ([2, 3], 4, Scramble::None, 0),
+        ([100, 37], 8, Scramble::FastOwen, 35),
+    ];
+    for (resolution, spp, scramble, seed) in shapes {
+        jobs.push((
+            Job::HaltonSampler {
+                resolution,
+                spp,
+                scramble,
+                seed,
+            },
+            1 << 13,
+        ));
+    }
+    // The sequence: words 0..3 at 32-bit indices, 4..7 at 64-bit ones of every length.
+    for (k, scramble) in Scramble::ALL.into_iter().enumerate() {
+        jobs.push((
+            Job::Halton {
+                dims: if k == 2 { 37 } else { 1024 },
+                scramble,
+                seed: 0x5eed_0000_0000_0000 + k as u64,
+            },
+            1 << 15,
+        ));
+    }
+    jobs
+}
+
+/// Requests at the Halton code's edges, appended to each Halton job's random ones. For the
+/// sequence: for dimensions of every kind of base (2, 3, the chunked bases up to 83, one-digit
+/// chunks, the last prime, past 1024), indices 0, 1, bʲ − 1 and bʲ up to 2³² − 1 (the short
+/// path's classes and its limit b^k) with high words 0, 1 and 2³² − 1 (`halton_high_index`: the
+/// long path's shortest and longest indices). For the sampler: the image's first and last
+/// pixels, sample indices 0, 1 and 2³² − 1.
+fn halton_edge_requests(job: &Job) -> Vec<Request> {
+    let mut out = Vec::new();
+    if let Job::HaltonSampler { .. } = job {
+        for (x, y) in [
+            (0, 0),
+            (1, 2),
+            (127, 242),
+            (128, 243),
+            ((1 << 24) - 1, (1 << 24) - 1),
+        ] {
+            for index in [0, 1, 2, 15, 16, u32::MAX - 1, u32::MAX] {
+                for dim in [0, 1, 2, 1021, 1022, 1023, 1024, 2047] {
+                    out.push([x, y, index, dim]);
+                }
+            }
+        }
+        return out;
+    }
+    // The inverse of the high word's multiplier modulo 2³², so y = 0 picks any high word.
+    let phi = 0x9e37_79b9u32;
+    let mut inv = phi;
+    for _ in 0..5 {
+        inv = inv.wrapping_mul(2u32.wrapping_sub(phi.wrapping_mul(inv)));
+    }
+    for dim in [0, 1, 2, 3, 4, 10, 17, 18, 22, 23, 100, 1023, 1024, 1025] {
+        let b = u64::from(nyquist::radical::prime(dim));
+        let mut indices = vec![0u32, 1, u32::MAX];
+        let mut p = b;
+        while p < 1 << 32 {
+            indices.extend([(p - 1) as u32, p as u32]);
+            p *= b;
+        }
+        for index in indices {
+            for high in [0u32, 1, u32::MAX] {
+                out.push([high.wrapping_mul(inv), 0, index, dim]);
+            }
+        }
+    }
+    out
+}
+
 #[test]
 fn every_job_matches_the_core_from_every_source() {
     let gpu = match Gpu::new() {
@@ -179,17 +279,34 @@ fn every_job_matches_the_core_from_every_source() {
     let n = 1 << 17;
     let pipelines: Vec<_> = Source::ALL
         .into_iter()
-        .map(|source| gpu.pipeline(source).unwrap())
+        .map(|source| {
+            let t = std::time::Instant::now();
+            let pipeline = gpu.pipeline(source).unwrap();
+            println!(
+                "{} pipeline built in {:.2} s",
+                source.name(),
+                t.elapsed().as_secs_f64()
+            );
+            pipeline
+        })
         .collect();
     let mut failures = Vec::new();
-    for (j, job) in jobs().iter().enumerate() {
-        let requests = random_requests(n, j as u64);
+    let only = std::env::var("NYQUIST_PARITY_JOBS").unwrap_or_default();
+    let all = jobs().into_iter().map(|job| (job, n)).chain(halton_jobs());
+    for (j, (job, count)) in all.enumerate() {
+        if !job.name().contains(&only) {
+            continue;
+        }
+        let mut requests = random_requests(count, j as u64);
+        if let Job::HaltonSampler { .. } | Job::Halton { .. } = job {
+            requests.extend(halton_edge_requests(&job));
+        }
         let t = std::time::Instant::now();
         let want = job.cpu(&requests);
         let cpu_seconds = t.elapsed().as_secs_f64();
         for pipeline in &pipelines {
             let t = std::time::Instant::now();
-            let have = gpu.run(pipeline, job, &requests);
+            let have = gpu.run(pipeline, &job, &requests);
             let values = have.len() * have[0].len();
             let source = pipeline.source().name();
             match first_mismatch(&requests, &have, &want) {
