@@ -223,8 +223,9 @@ fn halton_jobs() -> Vec<(Job, usize)> {
 /// sequence: for dimensions of every kind of base (2, 3, the chunked bases up to 83, one-digit
 /// chunks, the last prime, past 1024), indices 0, 1, bʲ − 1 and bʲ up to 2³² − 1 (the short
 /// path's classes and its limit b^k) with high words 0, 1 and 2³² − 1 (`halton_high_index`: the
-/// long path's shortest and longest indices). For the sampler: the image's first and last
-/// pixels, sample indices 0, 1 and 2³² − 1.
+/// long path's shortest and longest indices), and indices where the short path's two roundings
+/// differ from one. For the sampler: the image's first and last pixels, sample indices 0, 1 and
+/// 2³² − 1.
 fn halton_edge_requests(job: &Job) -> Vec<Request> {
     let mut out = Vec::new();
     if let Job::HaltonSampler { .. } = job {
@@ -248,6 +249,20 @@ fn halton_edge_requests(job: &Job) -> Vec<Request> {
     let mut inv = phi;
     for _ in 0..5 {
         inv = inv.wrapping_mul(2u32.wrapping_sub(phi.wrapping_mul(inv)));
+    }
+    // Short-path indices whose product rev·inv, rounded to 53 bits, lands on a midpoint of 24
+    // bits: rounded once it would give another float (found by enumerating a fraction of each
+    // class with the exact product in u128).
+    for (dim, index) in [
+        (3, 946_924_512),
+        (3, 1_583_193_480),
+        (3, 1_892_926_704),
+        (7, 60_548_006),
+        (7, 120_959_212),
+        (7, 192_533_624),
+        (8, 3_329_654_896),
+    ] {
+        out.push([0, 0, index, dim]);
     }
     for dim in [0, 1, 2, 3, 4, 10, 17, 18, 22, 23, 100, 1023, 1024, 1025] {
         let b = u64::from(nyquist::radical::prime(dim));
