@@ -4109,12 +4109,12 @@ struct nyq_fillInput {
 };
 kernel void nyq_fill(
   metal::uint3 id [[thread_position_in_grid]]
-, device type_4 const& nyq_sobol_matrices [[user(fake0)]]
-, device type_4 const& nyq_halton_bases [[user(fake0)]]
-, constant NyqFillJob& nyq_job [[user(fake0)]]
-, device type_27 const& nyq_requests [[user(fake0)]]
-, device type_4& nyq_values [[user(fake0)]]
-, constant _mslBufferSizes& _buffer_sizes [[user(fake0)]]
+, device type_4 const& nyq_sobol_matrices [[buffer(0)]]
+, device type_4 const& nyq_halton_bases [[buffer(4)]]
+, constant NyqFillJob& nyq_job [[buffer(1)]]
+, device type_27 const& nyq_requests [[buffer(2)]]
+, device type_4& nyq_values [[buffer(3)]]
+, constant _mslBufferSizes& _buffer_sizes [[buffer(5)]]
 ) {
     NyqOwenSobolSampler s = {};
     NyqZSobolSampler s_1 = {};

@@ -135,7 +135,7 @@ pub fn sampler_table() -> Result<String, EmitError> {
 }
 
 /// Each sampler's label, WGSL prefix and the table it reads.
-const SAMPLERS: [(&str, &str, &str); 7] = [
+const SAMPLERS: [(&str, &str, &str); 8] = [
     (
         "owen-sobol",
         "owen_sobol",
@@ -150,6 +150,11 @@ const SAMPLERS: [(&str, &str, &str); 7] = [
         "sobol",
         "sobol_sampler",
         "Sobol matrices: 4 bytes per set index bit per value",
+    ),
+    (
+        "halton",
+        "halton_sampler",
+        "Halton bases: 96 bytes per dimension",
     ),
     ("pmj02", "pmj02", "none"),
     ("random", "random", "none"),

@@ -386,9 +386,33 @@ pub fn emit(language: Language) -> Result<Vec<u8>, EmitError> {
             out
         }
         Language::Msl => {
+            // Binding b of group 0 as [[buffer(b)]] (binding 3, the values, writable), and the
+            // buffer-size table naga needs for the runtime-sized arrays at [[buffer(5)]].
+            let resources = (0..5)
+                .map(|b| {
+                    let target = naga::back::msl::BindTarget {
+                        buffer: Some(b as u8),
+                        mutable: b == 3,
+                        ..Default::default()
+                    };
+                    (
+                        naga::ResourceBinding {
+                            group: 0,
+                            binding: b,
+                        },
+                        target,
+                    )
+                })
+                .collect();
+            let entry = naga::back::msl::EntryPointResources {
+                resources,
+                immediates_buffer: None,
+                sizes_buffer: Some(5),
+            };
             let options = naga::back::msl::Options {
                 lang_version: (2, 0),
-                fake_missing_bindings: true,
+                per_entry_point_map: [(ENTRY_POINT.to_string(), entry)].into_iter().collect(),
+                fake_missing_bindings: false,
                 ..Default::default()
             };
             let pipeline = naga::back::msl::PipelineOptions {

@@ -6,57 +6,16 @@
 //!     [WIDTHxHEIGHT] [SPP] [SAMPLER]
 //! ```
 //!
-//! Defaults: 1024x1024, 16 spp, owen-sobol (also zsobol, sobol, pmj02, random, stratified,
-//! fibonacci, korobov, r2). Each request is sample `i mod spp` of pixel `⌊i / spp⌋` in row-major
+//! Defaults: 1024x1024, 16 spp, owen-sobol (also zsobol, sobol, halton, pmj02, random,
+//! stratified, fibonacci, korobov, r2; the ZSobol, Sobol and Halton samplers fast-Owen
+//! scrambled). Each request is sample `i mod spp` of pixel `⌊i / spp⌋` in row-major
 //! order; the kernel writes its camera sample and two more values (`get_1d`, `get_2d` from
 //! dimension 5), 2²⁰ samples per dispatch.
 
 use std::process::ExitCode;
 use std::time::Instant;
 
-use nyquist::sampler::Jitter;
-use nyquist::scramble::Scramble;
 use nyquist_gpu_parity::{Gpu, Job, Source};
-
-fn job(name: &str, resolution: [u32; 2], spp: u32) -> Option<Job> {
-    let seed = 7;
-    Some(match name {
-        "owen-sobol" => Job::OwenSobolSampler {
-            spp,
-            seed,
-            frame: 0,
-        },
-        "zsobol" => Job::ZSobolSampler {
-            resolution,
-            spp,
-            scramble: Scramble::FastOwen,
-            seed,
-        },
-        "sobol" => Job::SobolSampler {
-            resolution,
-            spp,
-            scramble: Scramble::FastOwen,
-            seed,
-        },
-        "pmj02" => Job::Pmj02Sampler { spp, seed },
-        "random" => Job::RandomSampler { spp, seed },
-        "stratified" => {
-            let side = (1..=spp).find(|s| s * s >= spp)?;
-            if side * side != spp {
-                return None;
-            }
-            Job::StratifiedSampler {
-                strata: [side, side],
-                jitter: Jitter::Jittered,
-                seed,
-            }
-        }
-        "fibonacci" => Job::LatticeSampler { set: 0, spp, seed },
-        "korobov" => Job::LatticeSampler { set: 1, spp, seed },
-        "r2" => Job::LatticeSampler { set: 2, spp, seed },
-        _ => return None,
-    })
-}
 
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -83,7 +42,7 @@ fn main() -> ExitCode {
         }
     };
     let name = args.get(2).map_or("owen-sobol", String::as_str);
-    let Some(job) = job(name, resolution, spp) else {
+    let Some(job) = Job::by_name(name, resolution, spp, 7) else {
         eprintln!(
             "camera_image: sampler {name}: unknown, or stratified with a spp that is not a square"
         );

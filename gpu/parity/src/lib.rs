@@ -206,7 +206,70 @@ fn scramble_code(s: Scramble) -> u32 {
     }
 }
 
+/// The sampler names [`Job::by_name`] knows, in the order the examples print them.
+pub const SAMPLER_NAMES: [&str; 10] = [
+    "owen-sobol",
+    "zsobol",
+    "sobol",
+    "halton",
+    "pmj02",
+    "random",
+    "stratified",
+    "fibonacci",
+    "korobov",
+    "r2",
+];
+
 impl Job {
+    /// The pixel sampler called `name` (one of [`SAMPLER_NAMES`]) for an image of `resolution`
+    /// at `spp` under `seed`, with the scramble each defaults to in the CLI (fast Owen for
+    /// ZSobol, Sobol and Halton); `None` for another name, or for `stratified` with a `spp`
+    /// that is not a square.
+    pub fn by_name(name: &str, resolution: [u32; 2], spp: u32, seed: u64) -> Option<Job> {
+        Some(match name {
+            "owen-sobol" => Job::OwenSobolSampler {
+                spp,
+                seed,
+                frame: 0,
+            },
+            "zsobol" => Job::ZSobolSampler {
+                resolution,
+                spp,
+                scramble: Scramble::FastOwen,
+                seed,
+            },
+            "sobol" => Job::SobolSampler {
+                resolution,
+                spp,
+                scramble: Scramble::FastOwen,
+                seed,
+            },
+            "halton" => Job::HaltonSampler {
+                resolution,
+                spp,
+                scramble: Scramble::FastOwen,
+                seed,
+            },
+            "pmj02" => Job::Pmj02Sampler { spp, seed },
+            "random" => Job::RandomSampler { spp, seed },
+            "stratified" => {
+                let side = (1..=spp).find(|s| s * s >= spp)?;
+                if side * side != spp {
+                    return None;
+                }
+                Job::StratifiedSampler {
+                    strata: [side, side],
+                    jitter: Jitter::Jittered,
+                    seed,
+                }
+            }
+            "fibonacci" => Job::LatticeSampler { set: 0, spp, seed },
+            "korobov" => Job::LatticeSampler { set: 1, spp, seed },
+            "r2" => Job::LatticeSampler { set: 2, spp, seed },
+            _ => return None,
+        })
+    }
+
     /// A short name for reports.
     pub fn name(&self) -> String {
         match self {
@@ -721,6 +784,84 @@ impl Gpu {
             .chunks_exact(WORDS_PER_REQUEST)
             .map(|w| <Answer>::try_from(w).expect("whole answers"))
             .collect()
+    }
+
+    /// Seconds per dispatch of `count` image requests (as [`Gpu::run_image`], from request 0),
+    /// the median of `repeats` dispatches each timed from submission to completion, after one
+    /// untimed warm-up; no read-back, so the figure is the kernel's.
+    pub fn time_image(
+        &self,
+        pipeline: &Pipeline,
+        job: &Job,
+        resolution: [u32; 2],
+        spp: u32,
+        count: u32,
+        repeats: usize,
+    ) -> f64 {
+        use wgpu::util::DeviceExt;
+        let mut uniform = job.uniform();
+        uniform.resolution = resolution;
+        uniform.spp = spp;
+        uniform.implicit = 1;
+        uniform.count = count;
+        let job = self
+            .device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("job"),
+                contents: bytemuck::bytes_of(&uniform),
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
+        let reqs = self
+            .device
+            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("requests"),
+                contents: bytemuck::cast_slice(&[0u32; 4]),
+                usage: wgpu::BufferUsages::STORAGE,
+            });
+        let values = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("values"),
+            size: (count.max(1) as usize * WORDS_PER_REQUEST * 4) as u64,
+            usage: wgpu::BufferUsages::STORAGE,
+            mapped_at_creation: false,
+        });
+        let layout = pipeline.pipeline.get_bind_group_layout(0);
+        let entries = [
+            (0, &self.matrices),
+            (1, &job),
+            (2, &reqs),
+            (3, &values),
+            (4, &self.halton_bases),
+        ]
+        .map(|(binding, buffer)| wgpu::BindGroupEntry {
+            binding,
+            resource: buffer.as_entire_binding(),
+        });
+        let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+            label: Some("nyq_fill"),
+            layout: &layout,
+            entries: &entries,
+        });
+        let once = || {
+            let mut encoder = self
+                .device
+                .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
+            {
+                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
+                pass.set_pipeline(&pipeline.pipeline);
+                pass.set_bind_group(0, &bind, &[]);
+                pass.dispatch_workgroups(count.div_ceil(nyquist_gpu::WORKGROUP_SIZE), 1, 1);
+            }
+            let t = std::time::Instant::now();
+            self.queue.submit([encoder.finish()]);
+            self.device
+                .poll(wgpu::PollType::wait_indefinitely())
+                .expect("the device finished");
+            t.elapsed().as_secs_f64()
+        };
+        once();
+        let mut times: Vec<f64> = (0..repeats.max(1)).map(|_| once()).collect();
+        times.sort_by(f64::total_cmp);
+        times[times.len() / 2]
     }
 
     /// One dispatch of `uniform.count` requests; returns the values buffer.
