@@ -34,10 +34,10 @@
 # as in scripts/mutants.sh), MUTANTS_OUT (default $CARGO_TARGET_DIR/mutants-diff, else
 # target/mutants-diff).
 #
-# Exit status: 0 when nothing was missed (or there was nothing to test), 2 when a mutant outside
-# the equivalent list was missed, 3 when the time box left more than half of the change's
-# mutants untested (and none was missed), 1 on any other failure. The last line starts with
-# MUTANTS_IN_DIFF and gives the counts.
+# Exit status: 0 when nothing was missed (or there was nothing to test; mutants the time box left
+# untested are named, with a warning when they are more than half of the change's), 2 when a
+# mutant outside the equivalent list was missed, 1 on any other failure. The last line starts
+# with MUTANTS_IN_DIFF and gives the counts.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 begin=$SECONDS
@@ -230,9 +230,10 @@ done
 if [ "$unreached" -gt 0 ]; then
     echo "time box: $unreached of $total mutants were not tested, in: ${not_reached[*]}"
     echo "    run scripts/mutants-in-diff.sh ${base:0:12} with a larger MUTANTS_DIFF_SECONDS for them"
-    if [ $((2 * unreached)) -gt "$total" ] && [ $status = 0 ]; then
-        echo "more than half of the change's mutants were left untested"
-        status=3
+    # Reported, not failed: CI's box cannot grow with a change, and a change larger than it
+    # would otherwise never land. Whoever records the next .ci/last-tested runs these first.
+    if [ $((2 * unreached)) -gt "$total" ]; then
+        echo "WARNING: more than half of the change's mutants were left untested; run them before recording .ci/last-tested"
     fi
 fi
 echo "MUTANTS_IN_DIFF $tested of $total mutants tested in $((SECONDS - begin)) s: caught $caught, missed $missed ($equivalent listed equivalent), unviable $unviable, timeouts $timeouts, not reached $unreached"
