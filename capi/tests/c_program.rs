@@ -6,10 +6,10 @@
 mod common;
 
 use std::fmt::Write as _;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
-use common::Clipped;
+use common::{Clipped, staticlib, workspace};
 use nyquist::filter::{Filter, FilterKind, FilterSampler, FilterTable, Interpolation};
 use nyquist::radical;
 use nyquist::rng::default_rng;
@@ -20,52 +20,6 @@ use nyquist::sequence::{
 };
 use nyquist::stratify;
 use nyquist_capi::{NyqStatus, TabulatedFilter};
-
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
-}
-
-/// Builds the staticlib with the cargo running this test (same target directory, so
-/// `CARGO_TARGET_DIR` is respected, and the test profile, which `cargo test` already built it
-/// with) and returns the path cargo reports for it.
-fn staticlib() -> PathBuf {
-    let out = Command::new(env!("CARGO"))
-        .current_dir(workspace())
-        .args([
-            "build",
-            "--profile",
-            "test",
-            "-p",
-            "nyquist-capi",
-            "--lib",
-            "--message-format=json-render-diagnostics",
-        ])
-        .output()
-        .expect("run cargo build -p nyquist-capi");
-    assert!(
-        out.status.success(),
-        "cargo build -p nyquist-capi failed:\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    for line in stdout.lines() {
-        if !line.contains("\"compiler-artifact\"") || !line.contains("\"name\":\"nyquist_capi\"") {
-            continue;
-        }
-        let Some(start) = line.find("\"filenames\":[") else {
-            continue;
-        };
-        let rest = &line[start + "\"filenames\":[".len()..];
-        let list = &rest[..rest.find(']').unwrap_or(rest.len())];
-        for name in list.split(',') {
-            let name = name.trim().trim_matches('"');
-            if name.ends_with(".a") {
-                return PathBuf::from(name);
-            }
-        }
-    }
-    panic!("cargo build -p nyquist-capi reported no .a artifact:\n{stdout}");
-}
 
 /// How a C program is built: plain (`-Wall -Wextra -Werror -O1`), or also with AddressSanitizer
 /// and UndefinedBehaviorSanitizer, which abort on the first report.

@@ -9,6 +9,9 @@
 //!
 //! A second test holds the header's generated block (the Joe–Kuo parameters) to the data file.
 
+mod common;
+
+use common::{staticlib, workspace};
 use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -18,51 +21,6 @@ use nyquist::sampler::{
 };
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Pmj02, Sequence};
-
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
-}
-
-/// Builds the staticlib with the cargo running this test (same target directory and profile as
-/// `c_program.rs` does) and returns its path.
-fn staticlib() -> PathBuf {
-    let out = Command::new(env!("CARGO"))
-        .current_dir(workspace())
-        .args([
-            "build",
-            "--profile",
-            "test",
-            "-p",
-            "nyquist-capi",
-            "--lib",
-            "--message-format=json-render-diagnostics",
-        ])
-        .output()
-        .expect("run cargo build -p nyquist-capi");
-    assert!(
-        out.status.success(),
-        "cargo build -p nyquist-capi failed:\n{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    for line in stdout.lines() {
-        if !line.contains("\"compiler-artifact\"") || !line.contains("\"name\":\"nyquist_capi\"") {
-            continue;
-        }
-        let Some(start) = line.find("\"filenames\":[") else {
-            continue;
-        };
-        let rest = &line[start + "\"filenames\":[".len()..];
-        let list = &rest[..rest.find(']').unwrap_or(rest.len())];
-        for name in list.split(',') {
-            let name = name.trim().trim_matches('"');
-            if name.ends_with(".a") {
-                return PathBuf::from(name);
-            }
-        }
-    }
-    panic!("cargo build -p nyquist-capi reported no .a artifact:\n{stdout}");
-}
 
 /// SplitMix64, the queries' source.
 struct Rng(u64);

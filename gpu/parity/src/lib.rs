@@ -798,59 +798,14 @@ impl Gpu {
         count: u32,
         repeats: usize,
     ) -> f64 {
-        use wgpu::util::DeviceExt;
         let mut uniform = job.uniform();
         uniform.resolution = resolution;
         uniform.spp = spp;
         uniform.implicit = 1;
         uniform.count = count;
-        let job = self
-            .device
-            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("job"),
-                contents: bytemuck::bytes_of(&uniform),
-                usage: wgpu::BufferUsages::UNIFORM,
-            });
-        let reqs = self
-            .device
-            .create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: Some("requests"),
-                contents: bytemuck::cast_slice(&[0u32; 4]),
-                usage: wgpu::BufferUsages::STORAGE,
-            });
-        let values = self.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("values"),
-            size: (count.max(1) as usize * WORDS_PER_REQUEST * 4) as u64,
-            usage: wgpu::BufferUsages::STORAGE,
-            mapped_at_creation: false,
-        });
-        let layout = pipeline.pipeline.get_bind_group_layout(0);
-        let entries = [
-            (0, &self.matrices),
-            (1, &job),
-            (2, &reqs),
-            (3, &values),
-            (4, &self.halton_bases),
-        ]
-        .map(|(binding, buffer)| wgpu::BindGroupEntry {
-            binding,
-            resource: buffer.as_entire_binding(),
-        });
-        let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("nyq_fill"),
-            layout: &layout,
-            entries: &entries,
-        });
+        let (bind, _values) = self.bind(pipeline, uniform, &[0u32; 4], wgpu::BufferUsages::empty());
         let once = || {
-            let mut encoder = self
-                .device
-                .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
-            {
-                let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
-                pass.set_pipeline(&pipeline.pipeline);
-                pass.set_bind_group(0, &bind, &[]);
-                pass.dispatch_workgroups(count.div_ceil(nyquist_gpu::WORKGROUP_SIZE), 1, 1);
-            }
+            let encoder = self.encode(pipeline, &bind, count);
             let t = std::time::Instant::now();
             self.queue.submit([encoder.finish()]);
             self.device
@@ -864,10 +819,17 @@ impl Gpu {
         times[times.len() / 2]
     }
 
-    /// One dispatch of `uniform.count` requests; returns the values buffer.
-    fn dispatch(&self, pipeline: &Pipeline, uniform: FillJob, requests: &[u32]) -> Vec<u32> {
+    /// The kernel's bind group for `uniform` and `requests` (the tables bound once in
+    /// [`Gpu::new`]), and its values buffer (`uniform.count` answers; `usage` added to
+    /// `STORAGE`).
+    fn bind(
+        &self,
+        pipeline: &Pipeline,
+        uniform: FillJob,
+        requests: &[u32],
+        usage: wgpu::BufferUsages,
+    ) -> (wgpu::BindGroup, wgpu::Buffer) {
         use wgpu::util::DeviceExt;
-        let count = uniform.count as usize;
         let job = self
             .device
             .create_buffer_init(&wgpu::util::BufferInitDescriptor {
@@ -882,56 +844,62 @@ impl Gpu {
                 contents: bytemuck::cast_slice(requests),
                 usage: wgpu::BufferUsages::STORAGE,
             });
-        let size = (count.max(1) * WORDS_PER_REQUEST * 4) as u64;
         let values = self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("values"),
-            size,
-            usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC,
+            size: (uniform.count.max(1) as usize * WORDS_PER_REQUEST * 4) as u64,
+            usage: wgpu::BufferUsages::STORAGE | usage,
             mapped_at_creation: false,
         });
-        let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
-            label: Some("readback"),
-            size,
-            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
-            mapped_at_creation: false,
+        let entries = [
+            (0, &self.matrices),
+            (1, &job),
+            (2, &reqs),
+            (3, &values),
+            (4, &self.halton_bases),
+        ]
+        .map(|(binding, buffer)| wgpu::BindGroupEntry {
+            binding,
+            resource: buffer.as_entire_binding(),
         });
-        let layout = pipeline.pipeline.get_bind_group_layout(0);
         let bind = self.device.create_bind_group(&wgpu::BindGroupDescriptor {
             label: Some("nyq_fill"),
-            layout: &layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: self.matrices.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: job.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 2,
-                    resource: reqs.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 3,
-                    resource: values.as_entire_binding(),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 4,
-                    resource: self.halton_bases.as_entire_binding(),
-                },
-            ],
+            layout: &pipeline.pipeline.get_bind_group_layout(0),
+            entries: &entries,
         });
+        (bind, values)
+    }
+
+    /// A command encoder holding one dispatch of the kernel over `count` requests.
+    fn encode(
+        &self,
+        pipeline: &Pipeline,
+        bind: &wgpu::BindGroup,
+        count: u32,
+    ) -> wgpu::CommandEncoder {
         let mut encoder = self
             .device
             .create_command_encoder(&wgpu::CommandEncoderDescriptor { label: None });
         {
             let mut pass = encoder.begin_compute_pass(&wgpu::ComputePassDescriptor::default());
             pass.set_pipeline(&pipeline.pipeline);
-            pass.set_bind_group(0, &bind, &[]);
-            let groups = count.div_ceil(nyquist_gpu::WORKGROUP_SIZE as usize) as u32;
-            pass.dispatch_workgroups(groups, 1, 1);
+            pass.set_bind_group(0, bind, &[]);
+            pass.dispatch_workgroups(count.div_ceil(nyquist_gpu::WORKGROUP_SIZE), 1, 1);
         }
+        encoder
+    }
+
+    /// One dispatch of `uniform.count` requests; returns the values buffer.
+    fn dispatch(&self, pipeline: &Pipeline, uniform: FillJob, requests: &[u32]) -> Vec<u32> {
+        let count = uniform.count as usize;
+        let (bind, values) = self.bind(pipeline, uniform, requests, wgpu::BufferUsages::COPY_SRC);
+        let size = values.size();
+        let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
+            label: Some("readback"),
+            size,
+            usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+            mapped_at_creation: false,
+        });
+        let mut encoder = self.encode(pipeline, &bind, count as u32);
         encoder.copy_buffer_to_buffer(&values, 0, &readback, 0, size);
         self.queue.submit([encoder.finish()]);
         readback.map_async(wgpu::MapMode::Read, .., |r| r.expect("map the values"));
