@@ -3,8 +3,8 @@
 //! for bit.
 //!
 //! - [`Gpu::new`] takes the first adapter wgpu offers (a real GPU, or Mesa's software Vulkan,
-//!   lavapipe, which is what CI has); `NYQUIST_GPU_BACKENDS` (e.g. `vulkan`, `gl`) narrows the
-//!   search as wgpu's `WGPU_BACKEND` does.
+//!   lavapipe, which is what CI has); `NYQUIST_GPU_BACKENDS` (e.g. `vulkan`, `metal`, `dx12`)
+//!   narrows the search as wgpu's `WGPU_BACKEND` does.
 //! - [`Gpu::pipeline`] builds the kernel from one of the checked-in shaders ([`Source`]): the
 //!   WGSL itself, or the emitted SPIR-V or GLSL loaded back through wgpu's front ends.
 //! - [`Job`] names a sampler or sequence and its parameters; [`Job::cpu`] is the core's answer
