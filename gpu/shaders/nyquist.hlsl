@@ -83,6 +83,16 @@ struct NyqLatticeSampler {
     uint dim;
 };
 
+struct NyqLattice {
+    uint lattice;
+    uint n;
+    uint g;
+    uint dims;
+    uint rotated;
+    int _pad5_0;
+    uint2 seed;
+};
+
 struct NyqPermutation {
     uint n;
     uint mask;
@@ -241,6 +251,7 @@ static const uint NYQ_FILL_SOBOL = 16u;
 static const uint NYQ_FILL_OWEN_SOBOL = 17u;
 static const uint NYQ_FILL_PMJ02_ = 18u;
 static const uint NYQ_FILL_HALTON = 19u;
+static const uint NYQ_FILL_LATTICE = 20u;
 
 ByteAddressBuffer nyq_sobol_matrices : register(t0);
 ByteAddressBuffer nyq_halton_bases : register(t4);
@@ -373,14 +384,14 @@ uint nyq_shr(uint x_3, uint s_10)
 
 float nyq_film_coordinate(uint pixel, float offset)
 {
-    float base_1 = float(pixel);
-    float x_24 = (base_1 + offset);
-    float edge = (base_1 + 1.0);
-    if ((x_24 < edge)) {
-        return x_24;
+    float base_2 = float(pixel);
+    float x_25 = (base_2 + offset);
+    float edge = (base_2 + 1.0);
+    if ((x_25 < edge)) {
+        return x_25;
     }
     float below = asfloat((asuint(edge) - 1u));
-    return ((below >= base_1) ? below : base_1);
+    return ((below >= base_2) ? below : base_2);
 }
 
 uint nyq_lk_hash(uint x_rev, uint seed)
@@ -416,7 +427,7 @@ uint nyq_nested_uniform_shuffle(uint index, uint seed_2)
 uint nyq_owen_scramble(uint x_6, uint seed_3)
 {
     uint out_ = (uint)0;
-    uint k_5 = 0u;
+    uint k_6 = 0u;
 
     const uint _e4 = nyq_mix32_((seed_3 ^ 3144134277u));
     out_ = x_6;
@@ -426,25 +437,25 @@ uint nyq_owen_scramble(uint x_6, uint seed_3)
         if (all(loop_bound == uint2(0u, 0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e41 = k_5;
-            k_5 = (_e41 + 1u);
+            uint _e41 = k_6;
+            k_6 = (_e41 + 1u);
         }
         loop_init = false;
-        uint _e8 = k_5;
+        uint _e8 = k_6;
         if ((_e8 < 32u)) {
         } else {
             break;
         }
         {
-            uint _e12 = k_5;
-            uint _e18 = k_5;
+            uint _e12 = k_6;
+            uint _e18 = k_6;
             uint prefix = ((_e18 == 0u) ? 0u : (x_6 >> ((32u - _e12) & 31u)));
-            uint _e23 = k_5;
+            uint _e23 = k_6;
             uint2 word = uint2(((1u << _e23) | prefix), _e4);
             const uint2 _e27 = nyq_mix64_(word);
             if (((_e27.y >> 31u) == 1u)) {
                 uint _e33 = out_;
-                uint _e36 = k_5;
+                uint _e36 = k_6;
                 out_ = (_e33 ^ (1u << (31u - _e36)));
             }
         }
@@ -483,7 +494,7 @@ uint nyq_sobol_u32_(uint index_1, uint dim)
     uint v_1 = 0u;
     uint bits = (uint)0;
 
-    uint base_2 = (naga_mod(dim, NYQ_SOBOL_DIMS) * 32u);
+    uint base_3 = (naga_mod(dim, NYQ_SOBOL_DIMS) * 32u);
     bits = index_1;
     uint2 loop_bound_1 = uint2(4294967295u, 4294967295u);
     while(true) {
@@ -497,7 +508,7 @@ uint nyq_sobol_u32_(uint index_1, uint dim)
         {
             uint _e12 = v_1;
             uint _e14 = bits;
-            uint _e18 = asuint(nyq_sobol_matrices.Load((base_2 + min(32u, firstbitlow(_e14)))*4));
+            uint _e18 = asuint(nyq_sobol_matrices.Load((base_3 + min(32u, firstbitlow(_e14)))*4));
             v_1 = (_e12 ^ _e18);
             uint _e20 = bits;
             uint _e21 = bits;
@@ -609,7 +620,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         const uint2 _e52 = nyq_hash2_(_e49, _e51);
         shift_1 = uint2((_e46.x & mask), (_e52.x & mask));
     }
-    uint n_5 = (2u * m_4);
+    uint n_7 = (2u * m_4);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -621,7 +632,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_1 = false;
         uint _e61 = c_1;
-        if ((_e61 < n_5)) {
+        if ((_e61 < n_7)) {
         } else {
             break;
         }
@@ -645,7 +656,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_2 = false;
                 uint _e91 = i;
-                if ((_e91 < n_5)) {
+                if ((_e91 < n_7)) {
                 } else {
                     break;
                 }
@@ -675,7 +686,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_3 = false;
         uint _e125 = i_1;
-        if ((_e125 < n_5)) {
+        if ((_e125 < n_7)) {
         } else {
             break;
         }
@@ -697,7 +708,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_4 = false;
         uint _e140 = col;
-        if ((_e140 < n_5)) {
+        if ((_e140 < n_7)) {
         } else {
             break;
         }
@@ -717,7 +728,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_5 = false;
                 uint _e146 = r_1;
-                if ((_e146 < n_5)) {
+                if ((_e146 < n_7)) {
                 } else {
                     break;
                 }
@@ -752,7 +763,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_6 = false;
                 uint _e174 = r_2;
-                if ((_e174 < n_5)) {
+                if ((_e174 < n_7)) {
                 } else {
                     break;
                 }
@@ -790,7 +801,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_7 = false;
         uint _e209 = i_2;
-        if ((_e209 < n_5)) {
+        if ((_e209 < n_7)) {
         } else {
             break;
         }
@@ -807,7 +818,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_8 = false;
                 uint _e213 = r_3;
-                if ((_e213 < n_5)) {
+                if ((_e213 < n_7)) {
                 } else {
                     break;
                 }
@@ -893,10 +904,10 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_13, uint t_in)
         }
         {
             uint _e8 = t;
-            uint k_15 = min(32u, firstbitlow(_e8));
+            uint k_16 = min(32u, firstbitlow(_e8));
             four = ZeroValueuint4();
             bool should_continue = false;
-            switch((k_15 >> 2u)) {
+            switch((k_16 >> 2u)) {
                 case 0u: {
                     uint4 _e15 = s_13.inverse0_;
                     four = _e15;
@@ -939,7 +950,7 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_13, uint t_in)
                 }
             }
             uint _e30 = low;
-            uint _e34 = four[min(uint((k_15 & 3u)), 3u)];
+            uint _e34 = four[min(uint((k_16 & 3u)), 3u)];
             low = (_e30 ^ _e34);
             uint _e36 = t;
             uint _e37 = t;
@@ -974,7 +985,7 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_15, uint dim_4)
     bool local_2 = (bool)0;
 
     uint d_7 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
-    uint2 seed_28 = s_15.seed;
+    uint2 seed_29 = s_15.seed;
     uint _e7 = s_15.index;
     const uint _e8 = nyq_sobol_u32_(_e7, d_7);
     v_3 = _e8;
@@ -998,7 +1009,7 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_15, uint dim_4)
         bool _e37 = local_2;
         uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
         const uint2 _e39 = nyq_u64_(d_7);
-        const uint2 _e40 = nyq_hash2_(seed_28, _e39);
+        const uint2 _e40 = nyq_hash2_(seed_29, _e39);
         const uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         const float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
@@ -1013,19 +1024,19 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_15, uint dim_4)
             if ((how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
                 uint _e58 = v_3;
                 const uint2 _e59 = nyq_u64_(d_7);
-                const uint2 _e60 = nyq_hash2_(seed_28, _e59);
-                v_3 = (_e58 ^ (all((seed_28 == uint2(0u, 0u))) ? 0u : _e60.x));
+                const uint2 _e60 = nyq_hash2_(seed_29, _e59);
+                v_3 = (_e58 ^ (all((seed_29 == uint2(0u, 0u))) ? 0u : _e60.x));
             } else {
                 uint _e70 = v_3;
                 const uint2 _e71 = nyq_u64_(d_7);
-                const uint2 _e72 = nyq_hash2_(seed_28, _e71);
+                const uint2 _e72 = nyq_hash2_(seed_29, _e71);
                 v_3 = (_e70 ^ _e72.y);
             }
         } else {
             uint _e75 = v_3;
             const uint2 _e76 = nyq_u64_(d_7);
-            const uint2 _e77 = nyq_hash2_(seed_28, _e76);
-            v_3 = (_e75 ^ (all((seed_28 == uint2(0u, 0u))) ? 0u : _e77.x));
+            const uint2 _e77 = nyq_hash2_(seed_29, _e76);
+            v_3 = (_e75 ^ (all((seed_29 == uint2(0u, 0u))) ? 0u : _e77.x));
         }
     }
     uint _e87 = v_3;
@@ -1145,7 +1156,7 @@ float nyq_owen_sobol_sample(NyqOwenSobol s_22, uint index_6, uint dim_9)
 float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_23, uint index_7, uint first_dim)
 {
     float4 out_1 = (float4)0;
-    uint k_6 = 0u;
+    uint k_7 = 0u;
 
     const uint _e4 = nyq_shuffle_rev(index_7, s_23.shuffle_seed);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
@@ -1154,19 +1165,19 @@ float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_23, uint index_7, uint first_dim)
         if (all(loop_bound_11 == uint2(0u, 0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e22 = k_6;
-            k_6 = (_e22 + 1u);
+            uint _e22 = k_7;
+            k_7 = (_e22 + 1u);
         }
         loop_init_9 = false;
-        uint _e8 = k_6;
+        uint _e8 = k_7;
         if ((_e8 < 4u)) {
         } else {
             break;
         }
         {
-            uint _e11 = k_6;
+            uint _e11 = k_7;
             uint d_11 = naga_mod((first_dim + _e11), s_23.dims);
-            uint _e15 = k_6;
+            uint _e15 = k_7;
             const uint _e18 = nyq_dim_seed(s_23.key, d_11);
             const uint _e19 = nyq_owen_sobol_rev(_e4, d_11, _e18);
             const float _e20 = nyq_rev_to_f32_(_e19);
@@ -1371,9 +1382,9 @@ uint nyq_permuted_digit(uint perm, uint digit, uint shift_2)
 uint2 nyq_zsobol_pixel_word(uint pixel_morton, uint2 key_2)
 {
     const uint2 _e3 = nyq_shl64_(key_2, 17u);
-    uint2 rotated = (_e3 | uint2((key_2.y >> 15u), 0u));
+    uint2 rotated_1 = (_e3 | uint2((key_2.y >> 15u), 0u));
     const uint2 _e10 = nyq_u64_(pixel_morton);
-    const uint2 _e12 = nyq_mix64_((_e10 ^ rotated));
+    const uint2 _e12 = nyq_mix64_((_e10 ^ rotated_1));
     return _e12;
 }
 
@@ -1409,12 +1420,12 @@ uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
         }
         {
             uint _e11 = i_3;
-            uint shift_4 = ((2u * (_e11 - 1u)) + s_31.odd);
-            uint digit_2 = ((morton >> shift_4) & 3u);
+            uint shift_5 = ((2u * (_e11 - 1u)) + s_31.odd);
+            uint digit_2 = ((morton >> shift_5) & 3u);
             uint _e20 = index_8;
-            const uint _e23 = nyq_shr(morton, (shift_4 + 2u));
+            const uint _e23 = nyq_shr(morton, (shift_5 + 2u));
             const uint _e24 = nyq_zsobol_pixel_node(_e23, key_3);
-            const uint _e25 = nyq_permuted_digit(_e24, digit_2, shift_4);
+            const uint _e25 = nyq_permuted_digit(_e24, digit_2, shift_5);
             index_8 = (_e20 | _e25);
         }
     }
@@ -1439,13 +1450,13 @@ uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
         }
         {
             uint _e43 = i_4;
-            uint shift_5 = ((2u * (_e43 - 1u)) + s_31.odd);
-            uint digit_3 = ((sample_ >> shift_5) & 3u);
-            const uint _e54 = nyq_shr(sample_, (shift_5 + 2u));
-            const uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_5);
+            uint shift_6 = ((2u * (_e43 - 1u)) + s_31.odd);
+            uint digit_3 = ((sample_ >> shift_6) & 3u);
+            const uint _e54 = nyq_shr(sample_, (shift_6 + 2u));
+            const uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_6);
             const uint _e57 = nyq_one_of_24_(_e55.y);
             uint _e58 = index_8;
-            const uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_[min(uint(_e57), 23u)], digit_3, shift_5);
+            const uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_[min(uint(_e57), 23u)], digit_3, shift_6);
             index_8 = (_e58 | _e61);
         }
     }
@@ -1590,9 +1601,9 @@ uint nyq_pcg32_next(inout NyqPcg32_ g)
     g.state = _e7;
     const uint2 _e9 = nyq_shr64_(old, 18u);
     const uint2 _e12 = nyq_shr64_((_e9 ^ old), 27u);
-    uint x_25 = _e12.x;
+    uint x_26 = _e12.x;
     uint rot = (old.y >> 27u);
-    return ((x_25 >> rot) | (x_25 << ((32u - rot) & 31u)));
+    return ((x_26 >> rot) | (x_26 << ((32u - rot) & 31u)));
 }
 
 void nyq_pcg32_advance(inout NyqPcg32_ g_1, uint delta)
@@ -1899,14 +1910,14 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_6 = s_46.n;
+    uint n_8 = s_46.n;
     uint _e5 = s_46.index;
-    uint k_16 = naga_mod(_e5, n_6);
+    uint k_17 = naga_mod(_e5, n_8);
     uint component = naga_mod(dim_19, 2u);
     uint _e11 = s_46.lattice;
     switch(_e11) {
         case 2u: {
-            const uint2 _e15 = nyq_u64_(k_16);
+            const uint2 _e15 = nyq_u64_(k_17);
             const uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA[min(uint(component), 1u)]);
             const uint2 _e19 = nyq_add64_(uint2(0u, 2147483648u), _e18);
             base = _e19;
@@ -1916,12 +1927,12 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
             uint _e21 = s_46.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = naga_mod(1u, n_6);
+                g_6 = naga_mod(1u, n_8);
             }
             uint _e27 = g_6;
-            const uint2 _e28 = nyq_mul_wide(k_16, _e27);
-            const uint _e29 = nyq_mod64_(_e28, n_6);
-            const uint2 _e30 = nyq_fixed_ratio(_e29, n_6);
+            const uint2 _e28 = nyq_mul_wide(k_17, _e27);
+            const uint _e29 = nyq_mod64_(_e28, n_8);
+            const uint2 _e30 = nyq_fixed_ratio(_e29, n_8);
             base = _e30;
             break;
         }
@@ -1985,33 +1996,165 @@ NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_51, uint2 pi
     return nyqcamerasample_4;
 }
 
-float nyq_u32_to_f32_(uint x_11)
+uint nyq_pow_mod(uint b_6, uint e_in, uint n_2)
+{
+    uint base_1 = (uint)0;
+    uint r_7 = (uint)0;
+    uint e = (uint)0;
+
+    base_1 = naga_mod(b_6, n_2);
+    r_7 = naga_mod(1u, n_2);
+    e = e_in;
+    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+    while(true) {
+        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        uint _e9 = e;
+        if ((_e9 > 0u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = e;
+            if (((_e12 & 1u) == 1u)) {
+                uint _e17 = r_7;
+                uint _e18 = base_1;
+                const uint2 _e19 = nyq_mul_wide(_e17, _e18);
+                const uint _e20 = nyq_mod64_(_e19, n_2);
+                r_7 = _e20;
+            }
+            uint _e21 = base_1;
+            uint _e22 = base_1;
+            const uint2 _e23 = nyq_mul_wide(_e21, _e22);
+            const uint _e24 = nyq_mod64_(_e23, n_2);
+            base_1 = _e24;
+            uint _e25 = e;
+            e = (_e25 >> 1u);
+        }
+    }
+    uint _e28 = r_7;
+    return _e28;
+}
+
+NyqLattice ConstructNyqLattice(uint arg0, uint arg1, uint arg2, uint arg3, uint arg4, uint2 arg5) {
+    NyqLattice ret = (NyqLattice)0;
+    ret.lattice = arg0;
+    ret.n = arg1;
+    ret.g = arg2;
+    ret.dims = arg3;
+    ret.rotated = arg4;
+    ret.seed = arg5;
+    return ret;
+}
+
+NyqLattice nyq_lattice(uint lattice_1, uint n_3, uint g_7, uint dims_2, bool rotated, uint2 seed_14)
+{
+    const NyqLattice nyqlattice = ConstructNyqLattice(lattice_1, n_3, g_7, dims_2, (rotated ? 1u : 0u), seed_14);
+    return nyqlattice;
+}
+
+uint2 nyq_lattice_fixed(NyqLattice l, uint index_10, uint dim_21)
+{
+    uint2 shift_4 = uint2(0u, 0u);
+    uint g_8 = (uint)0;
+
+    uint d_19 = naga_mod(dim_21, l.dims);
+    if ((l.rotated != 0u)) {
+        const uint2 _e13 = nyq_u64_(d_19);
+        const uint2 _e14 = nyq_hash2_(l.seed, _e13);
+        shift_4 = _e14;
+    }
+    if ((l.lattice == NYQ_LATTICE_R2_)) {
+        uint2 _e21 = shift_4;
+        uint2 start = ((l.rotated != 0u) ? _e21 : uint2(0u, 2147483648u));
+        const uint2 _e26 = nyq_u64_(index_10);
+        const uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA[min(uint((d_19 & 1u)), 1u)]);
+        const uint2 _e32 = nyq_add64_(start, _e31);
+        return _e32;
+    }
+    g_8 = l.g;
+    if ((d_19 == 0u)) {
+        g_8 = naga_mod(1u, l.n);
+    } else {
+        if ((d_19 > 1u)) {
+            const uint _e44 = nyq_pow_mod(l.g, d_19, l.n);
+            g_8 = _e44;
+        }
+    }
+    uint _e47 = g_8;
+    const uint2 _e48 = nyq_mul_wide(naga_mod(index_10, l.n), _e47);
+    const uint _e50 = nyq_mod64_(_e48, l.n);
+    const uint2 _e52 = nyq_fixed_ratio(_e50, l.n);
+    uint2 _e53 = shift_4;
+    const uint2 _e54 = nyq_add64_(_e52, _e53);
+    return _e54;
+}
+
+float nyq_lattice_sample(NyqLattice l_1, uint index_11, uint dim_22)
+{
+    const uint2 _e3 = nyq_lattice_fixed(l_1, index_11, dim_22);
+    const float _e4 = nyq_fixed_to_f32_(_e3);
+    return _e4;
+}
+
+uint2 nyq_fixed_to_f64_bits(uint2 x_11)
+{
+    bool local_5 = (bool)0;
+    uint2 frac_ = (uint2)0;
+
+    const uint2 _e2 = nyq_shr64_(x_11, 11u);
+    if ((_e2.x == 0u)) {
+        local_5 = (_e2.y == 0u);
+    } else {
+        local_5 = false;
+    }
+    bool _e12 = local_5;
+    if (_e12) {
+        return uint2(0u, 0u);
+    }
+    uint e_2 = ((_e2.y != 0u) ? (63u - (31u - firstbithigh(_e2.y))) : (31u - (31u - firstbithigh(_e2.x))));
+    frac_ = _e2;
+    uint s_80 = (52u - e_2);
+    if ((s_80 >= 32u)) {
+        frac_ = uint2(0u, (_e2.x << (s_80 - 32u)));
+    } else {
+        if ((s_80 > 0u)) {
+            const uint2 _e41 = nyq_shl64_(_e2, s_80);
+            frac_ = _e41;
+        }
+    }
+    uint _e43 = frac_.x;
+    uint _e45 = frac_.y;
+    return uint2(_e43, ((_e45 & 1048575u) | (((1023u + e_2) - 53u) << 20u)));
+}
+
+float nyq_u32_to_f32_(uint x_12)
 {
     uint m = (uint)0;
-    bool local_5 = (bool)0;
     bool local_6 = (bool)0;
+    bool local_7 = (bool)0;
 
-    if ((x_11 < 16777216u)) {
-        return float(x_11);
+    if ((x_12 < 16777216u)) {
+        return float(x_12);
     }
-    uint top = (31u - (31u - firstbithigh(x_11)));
+    uint top = (31u - (31u - firstbithigh(x_12)));
     uint drop = (top - 23u);
-    m = (x_11 >> drop);
-    uint rest_1 = (x_11 & ((1u << drop) - 1u));
+    m = (x_12 >> drop);
+    uint rest_1 = (x_12 & ((1u << drop) - 1u));
     uint half_ = (1u << (drop - 1u));
     if (!((rest_1 > half_))) {
         if ((rest_1 == half_)) {
             uint _e27 = m;
-            local_6 = ((_e27 & 1u) == 1u);
+            local_7 = ((_e27 & 1u) == 1u);
         } else {
-            local_6 = false;
+            local_7 = false;
         }
-        bool _e33 = local_6;
-        local_5 = _e33;
+        bool _e33 = local_7;
+        local_6 = _e33;
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e35 = local_5;
+    bool _e35 = local_6;
     if (_e35) {
         uint _e36 = m;
         m = (_e36 + 1u);
@@ -2020,25 +2163,25 @@ float nyq_u32_to_f32_(uint x_11)
     return asfloat(((((top + 127u) << 23u) + _e43) - 8388608u));
 }
 
-float nyq_recip_f32_(float x_12)
+float nyq_recip_f32_(float x_13)
 {
-    uint r_7 = 16777216u;
+    uint r_8 = 16777216u;
     uint q_1 = 0u;
     uint i_7 = 0u;
-    bool local_7 = (bool)0;
     bool local_8 = (bool)0;
+    bool local_9 = (bool)0;
 
-    uint bits_4 = asuint(x_12);
+    uint bits_4 = asuint(x_13);
     uint m_6 = ((bits_4 & 8388607u) | 8388608u);
-    int e_1 = asint(asuint(int((bits_4 >> 23u))) - asuint(int(127)));
+    int e_3 = asint(asuint(int((bits_4 >> 23u))) - asuint(int(127)));
     if ((m_6 == 8388608u)) {
-        return asfloat((uint(asint(asuint(int(127)) - asuint(e_1))) << 23u));
+        return asfloat((uint(asint(asuint(int(127)) - asuint(e_3))) << 23u));
     }
-    uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
     bool loop_init_15 = true;
     while(true) {
-        if (all(loop_bound_18 == uint2(0u, 0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_15) {
             uint _e42 = i_7;
             i_7 = (_e42 + 1u);
@@ -2052,15 +2195,15 @@ float nyq_recip_f32_(float x_12)
         {
             uint _e28 = q_1;
             q_1 = (_e28 << 1u);
-            uint _e31 = r_7;
+            uint _e31 = r_8;
             if ((_e31 >= m_6)) {
-                uint _e33 = r_7;
-                r_7 = (_e33 - m_6);
+                uint _e33 = r_8;
+                r_8 = (_e33 - m_6);
                 uint _e35 = q_1;
                 q_1 = (_e35 | 1u);
             }
-            uint _e38 = r_7;
-            r_7 = (_e38 << 1u);
+            uint _e38 = r_8;
+            r_8 = (_e38 << 1u);
         }
     }
     uint _e44 = q_1;
@@ -2068,31 +2211,31 @@ float nyq_recip_f32_(float x_12)
     uint _e47 = q_1;
     q_1 = (_e47 >> 1u);
     if ((round_ == 1u)) {
-        uint _e54 = r_7;
+        uint _e54 = r_8;
         if (!((_e54 != 0u))) {
             uint _e60 = q_1;
-            local_8 = ((_e60 & 1u) == 1u);
+            local_9 = ((_e60 & 1u) == 1u);
         } else {
-            local_8 = true;
+            local_9 = true;
         }
-        bool _e66 = local_8;
-        local_7 = _e66;
+        bool _e66 = local_9;
+        local_8 = _e66;
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    bool _e68 = local_7;
+    bool _e68 = local_8;
     if (_e68) {
         uint _e69 = q_1;
         q_1 = (_e69 + 1u);
     }
     uint _e79 = q_1;
-    return asfloat((((uint(asint(asuint(asint(asuint(int(127)) - asuint(e_1))) - asuint(int(1)))) << 23u) + _e79) - 8388608u));
+    return asfloat((((uint(asint(asuint(asint(asuint(int(127)) - asuint(e_3))) - asuint(int(1)))) << 23u) + _e79) - 8388608u));
 }
 
-uint3 nyq_mul64x32_(uint2 r_8, uint k_7)
+uint3 nyq_mul64x32_(uint2 r_9, uint k_8)
 {
-    const uint2 _e3 = nyq_mul_wide(r_8.x, k_7);
-    const uint2 _e5 = nyq_mul_wide(r_8.y, k_7);
+    const uint2 _e3 = nyq_mul_wide(r_9.x, k_8);
+    const uint2 _e5 = nyq_mul_wide(r_9.y, k_8);
     const uint2 _e9 = nyq_add64_(_e5, uint2(_e3.y, 0u));
     return uint3(_e3.x, _e9.x, _e9.y);
 }
@@ -2102,15 +2245,15 @@ uint nyq_nibble(uint2 t_1, uint s_52)
     return ((((s_52 >= 32u) ? t_1.y : t_1.x) >> (s_52 & 31u)) & 15u);
 }
 
-uint2 nyq_shl64_any(uint2 x_13, uint s_53)
+uint2 nyq_shl64_any(uint2 x_14, uint s_53)
 {
     if ((s_53 == 0u)) {
-        return x_13;
+        return x_14;
     }
     if ((s_53 >= 32u)) {
-        return uint2(0u, (x_13.x << (s_53 - 32u)));
+        return uint2(0u, (x_14.x << (s_53 - 32u)));
     }
-    const uint2 _e12 = nyq_shl64_(x_13, s_53);
+    const uint2 _e12 = nyq_shl64_(x_14, s_53);
     return _e12;
 }
 
@@ -2120,24 +2263,24 @@ ret_Constructarray5_uint_ Constructarray5_uint_(uint arg0, uint arg1, uint arg2,
     return ret;
 }
 
-uint2 nyq_packed_table(uint n_2, uint2 r_in)
+uint2 nyq_packed_table(uint n_4, uint2 r_in)
 {
     uint2 t_2 = uint2(1985229328u, 4275878552u);
-    uint2 r_9 = (uint2)0;
-    uint k_8 = (uint)0;
+    uint2 r_10 = (uint2)0;
+    uint k_9 = (uint)0;
 
-    if ((n_2 <= 4u)) {
-        if ((n_2 < 2u)) {
+    if ((n_4 <= 4u)) {
+        if ((n_4 < 2u)) {
             return uint2(0u, 0u);
         }
         uint factorial[5] = Constructarray5_uint_(1u, 1u, 2u, 6u, 24u);
-        uint start[5] = Constructarray5_uint_(0u, 0u, 0u, 2u, 8u);
-        const uint3 _e22 = nyq_mul64x32_(r_in, factorial[min(uint(n_2), 4u)]);
+        uint start_1[5] = Constructarray5_uint_(0u, 0u, 0u, 2u, 8u);
+        const uint3 _e22 = nyq_mul64x32_(r_in, factorial[min(uint(n_4), 4u)]);
         uint rank = _e22.z;
-        return uint2(NYQ_SMALL_PERMUTATIONS[min(uint(((start[min(uint(n_2), 4u)] + rank) & 31u)), 31u)], 0u);
+        return uint2(NYQ_SMALL_PERMUTATIONS[min(uint(((start_1[min(uint(n_4), 4u)] + rank) & 31u)), 31u)], 0u);
     }
-    if ((n_2 < 16u)) {
-        uint keep = (4u * n_2);
+    if ((n_4 < 16u)) {
+        uint keep = (4u * n_4);
         if ((keep < 32u)) {
             uint _e43 = t_2.x;
             t_2 = uint2((_e43 & ((1u << keep) - 1u)), 0u);
@@ -2146,40 +2289,40 @@ uint2 nyq_packed_table(uint n_2, uint2 r_in)
             t_2.y = (_e52 & ((1u << (keep - 32u)) - 1u));
         }
     }
-    r_9 = r_in;
-    k_8 = n_2;
-    uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
+    r_10 = r_in;
+    k_9 = n_4;
+    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
     bool loop_init_16 = true;
     while(true) {
-        if (all(loop_bound_19 == uint2(0u, 0u))) { break; }
-        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e94 = k_8;
-            k_8 = (_e94 - 1u);
+            uint _e94 = k_9;
+            k_9 = (_e94 - 1u);
         }
         loop_init_16 = false;
-        uint _e62 = k_8;
+        uint _e62 = k_9;
         if ((_e62 > 1u)) {
         } else {
             break;
         }
         {
-            uint2 _e65 = r_9;
-            uint _e66 = k_8;
+            uint2 _e65 = r_10;
+            uint _e66 = k_9;
             const uint3 _e67 = nyq_mul64x32_(_e65, _e66);
             uint j_1 = _e67.z;
-            r_9 = _e67.xy;
-            uint _e71 = k_8;
+            r_10 = _e67.xy;
+            uint _e71 = k_9;
             uint hi = (4u * (_e71 - 1u));
             uint lo = (4u * j_1);
             uint2 _e77 = t_2;
             const uint _e78 = nyq_nibble(_e77, hi);
             uint2 _e79 = t_2;
             const uint _e80 = nyq_nibble(_e79, lo);
-            uint x_26 = ((_e78 ^ _e80) & 15u);
+            uint x_27 = ((_e78 ^ _e80) & 15u);
             uint2 _e84 = t_2;
-            const uint2 _e87 = nyq_shl64_any(uint2(x_26, 0u), hi);
-            const uint2 _e90 = nyq_shl64_any(uint2(x_26, 0u), lo);
+            const uint2 _e87 = nyq_shl64_any(uint2(x_27, 0u), hi);
+            const uint2 _e90 = nyq_shl64_any(uint2(x_27, 0u), lo);
             t_2 = (_e84 ^ (_e87 | _e90));
         }
     }
@@ -2200,82 +2343,82 @@ NyqPermutation ConstructNyqPermutation(uint arg0, uint arg1, uint arg2, uint arg
     return ret;
 }
 
-NyqPermutation nyq_permutation(uint n_in, uint seed_14)
+NyqPermutation nyq_permutation(uint n_in, uint seed_15)
 {
-    uint n_7 = max(n_in, 1u);
-    if ((n_7 <= 16u)) {
-        const uint2 _e10 = nyq_mix64_(uint2((seed_14 ^ 2242054355u), 608135816u));
-        const uint2 _e11 = nyq_packed_table(n_7, _e10);
-        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_7, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+    uint n_9 = max(n_in, 1u);
+    if ((n_9 <= 16u)) {
+        const uint2 _e10 = nyq_mix64_(uint2((seed_15 ^ 2242054355u), 608135816u));
+        const uint2 _e11 = nyq_packed_table(n_9, _e10);
+        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_9, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
         return nyqpermutation;
     }
-    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_7 - 1u))));
+    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_9 - 1u))));
     uint bits_5 = (32u - (31u - firstbithigh(mask_3)));
-    const uint _e29 = nyq_mix32_((seed_14 ^ 1540483477u));
+    const uint _e29 = nyq_mix32_((seed_15 ^ 1540483477u));
     const uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     const uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    const uint2 _e36 = nyq_mul_wide(_e35, n_7);
+    const uint2 _e36 = nyq_mul_wide(_e35, n_9);
     uint offset_2 = _e36.y;
-    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_7, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, uint2(0u, 0u));
+    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_9, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, uint2(0u, 0u));
     return nyqpermutation_1;
 }
 
 uint nyq_permutation_apply(NyqPermutation p, uint i_8)
 {
-    uint x_14 = (uint)0;
-    bool local_9 = (bool)0;
+    uint x_15 = (uint)0;
+    bool local_10 = (bool)0;
 
-    uint n_8 = p.n;
-    if ((n_8 <= 16u)) {
-        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_8) & 15u)));
+    uint n_10 = p.n;
+    if ((n_10 <= 16u)) {
+        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_10) & 15u)));
         return _e11;
     }
-    x_14 = naga_mod(i_8, n_8);
-    uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
+    x_15 = naga_mod(i_8, n_10);
+    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_20 == uint2(0u, 0u))) { break; }
-        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-        uint _e14 = x_14;
-        x_14 = (_e14 ^ (p.key & p.mask));
-        uint _e19 = x_14;
-        x_14 = ((_e19 * 3782248765u) & p.mask);
-        uint _e24 = x_14;
-        uint _e25 = x_14;
-        x_14 = (_e24 ^ (_e25 >> p.half_));
-        uint _e29 = x_14;
-        x_14 = ((_e29 + p.key2_) & p.mask);
-        uint _e34 = x_14;
-        x_14 = ((_e34 * (p.key | 1u)) & p.mask);
-        uint _e41 = x_14;
-        uint _e42 = x_14;
-        x_14 = (_e41 ^ (_e42 >> p.half_));
-        uint _e46 = x_14;
-        x_14 = (_e46 ^ ((p.key2_ >> 7u) & p.mask));
-        uint _e53 = x_14;
-        x_14 = ((_e53 * 153742143u) & p.mask);
-        uint _e58 = x_14;
-        uint _e59 = x_14;
-        x_14 = (_e58 ^ (_e59 >> p.half_));
-        uint _e63 = x_14;
-        x_14 = ((_e63 * (1765145193u ^ (p.key2_ & 4294967294u))) & p.mask);
-        uint _e72 = x_14;
-        uint _e73 = x_14;
-        x_14 = (_e72 ^ (_e73 >> p.third));
-        uint _e77 = x_14;
-        if ((_e77 < n_8)) {
+        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        uint _e14 = x_15;
+        x_15 = (_e14 ^ (p.key & p.mask));
+        uint _e19 = x_15;
+        x_15 = ((_e19 * 3782248765u) & p.mask);
+        uint _e24 = x_15;
+        uint _e25 = x_15;
+        x_15 = (_e24 ^ (_e25 >> p.half_));
+        uint _e29 = x_15;
+        x_15 = ((_e29 + p.key2_) & p.mask);
+        uint _e34 = x_15;
+        x_15 = ((_e34 * (p.key | 1u)) & p.mask);
+        uint _e41 = x_15;
+        uint _e42 = x_15;
+        x_15 = (_e41 ^ (_e42 >> p.half_));
+        uint _e46 = x_15;
+        x_15 = (_e46 ^ ((p.key2_ >> 7u) & p.mask));
+        uint _e53 = x_15;
+        x_15 = ((_e53 * 153742143u) & p.mask);
+        uint _e58 = x_15;
+        uint _e59 = x_15;
+        x_15 = (_e58 ^ (_e59 >> p.half_));
+        uint _e63 = x_15;
+        x_15 = ((_e63 * (1765145193u ^ (p.key2_ & 4294967294u))) & p.mask);
+        uint _e72 = x_15;
+        uint _e73 = x_15;
+        x_15 = (_e72 ^ (_e73 >> p.third));
+        uint _e77 = x_15;
+        if ((_e77 < n_10)) {
             break;
         }
     }
-    uint _e79 = x_14;
+    uint _e79 = x_15;
     uint q_3 = (_e79 + p.offset);
-    uint _e83 = x_14;
+    uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_9 = (q_3 >= n_8);
+        local_10 = (q_3 >= n_10);
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e90 = local_9;
-    return (_e90 ? (q_3 - n_8) : q_3);
+    bool _e90 = local_10;
+    return (_e90 ? (q_3 - n_10) : q_3);
 }
 
 NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint arg2, float3 arg3, uint arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint arg8, uint arg9) {
@@ -2293,7 +2436,7 @@ NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint ar
     return ret;
 }
 
-NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uint2 seed_15)
+NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uint2 seed_16)
 {
     uint spp_3 = (xs * ys);
     const float _e5 = nyq_u32_to_f32_(xs);
@@ -2304,60 +2447,60 @@ NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uint2
     const float _e10 = nyq_recip_f32_(_e9);
     float3 inv = float3(_e6, _e8, _e10);
     uint2 zero = uint2(0u, 0u);
-    const NyqStratifiedSampler nyqstratifiedsampler = ConstructNyqStratifiedSampler(xs, ys, spp_3, inv, jitter, seed_15, zero, zero, 0u, 0u);
+    const NyqStratifiedSampler nyqstratifiedsampler = ConstructNyqStratifiedSampler(xs, ys, spp_3, inv, jitter, seed_16, zero, zero, 0u, 0u);
     return nyqstratifiedsampler;
 }
 
-uint nyq_stratified_dim_key(uint2 pixel_key, uint dim_21)
+uint nyq_stratified_dim_key(uint2 pixel_key, uint dim_23)
 {
-    const uint2 _e2 = nyq_u64_(dim_21);
+    const uint2 _e2 = nyq_u64_(dim_23);
     const uint2 _e4 = nyq_mul64_(_e2, NYQ_DIM_STEP);
     const uint2 _e6 = nyq_mix64_((pixel_key ^ _e4));
     return (_e6.x ^ _e6.y);
 }
 
-uint nyq_stratified_stratum(inout NyqStratifiedSampler s_54, uint dim_22)
+uint nyq_stratified_stratum(inout NyqStratifiedSampler s_54, uint dim_24)
 {
-    if ((dim_22 == 0u)) {
+    if ((dim_24 == 0u)) {
         uint _e5 = s_54.index;
         uint _e7 = s_54.spp;
         return naga_mod(_e5, _e7);
     }
     uint _e10 = s_54.spp;
     uint2 _e12 = s_54.pixel_key;
-    const uint _e13 = nyq_stratified_dim_key(_e12, dim_22);
+    const uint _e13 = nyq_stratified_dim_key(_e12, dim_24);
     const NyqPermutation _e14 = nyq_permutation(_e10, _e13);
     uint _e16 = s_54.index;
     const uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
-float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_23)
+float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_25)
 {
-    bool local_10 = (bool)0;
+    bool local_11 = (bool)0;
 
     uint _e3 = s_55.jitter;
     if ((_e3 != NYQ_JITTERED)) {
         return float2(0.5, 0.5);
     }
-    if (!((dim_23 == 2u))) {
-        local_10 = (dim_23 == 3u);
+    if (!((dim_25 == 2u))) {
+        local_11 = (dim_25 == 3u);
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    bool _e17 = local_10;
+    bool _e17 = local_11;
     if (_e17) {
         uint2 _e19 = s_55.sample_key;
         const uint2 _e24 = nyq_mul64_(uint2(2u, 0u), NYQ_JITTER_STEP);
         const uint2 _e26 = nyq_mix64_((_e19 ^ _e24));
-        if ((dim_23 == 2u)) {
+        if ((dim_25 == 2u)) {
             return float2((float(((_e26.y >> 11u) & 2097151u)) * 4.7683716e-7), 0.5);
         }
         const uint2 _e40 = nyq_shr64_(_e26, 22u);
         return float2((float((_e40.x & 2097151u)) * 4.7683716e-7), (float(((_e26.x >> 1u) & 2097151u)) * 4.7683716e-7));
     }
     uint2 _e55 = s_55.sample_key;
-    const uint2 _e56 = nyq_u64_(dim_23);
+    const uint2 _e56 = nyq_u64_(dim_25);
     const uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     const uint2 _e60 = nyq_mix64_((_e55 ^ _e58));
     const float _e62 = nyq_unit_f32_(_e60.y);
@@ -2365,9 +2508,9 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_23)
     return float2(_e62, _e64);
 }
 
-float nyq_below_one(float x_15)
+float nyq_below_one(float x_16)
 {
-    return min(x_15, asfloat(1065353215u));
+    return min(x_16, asfloat(1065353215u));
 }
 
 float2 nyq_stratified_cell(inout NyqStratifiedSampler s_56, uint st, float2 j)
@@ -2385,7 +2528,7 @@ float2 nyq_stratified_cell(inout NyqStratifiedSampler s_56, uint st, float2 j)
     return float2(_e16, _e24);
 }
 
-void nyq_stratified_start(inout NyqStratifiedSampler s_57, uint2 pixel_14, uint sample_index_12, uint dim_24)
+void nyq_stratified_start(inout NyqStratifiedSampler s_57, uint2 pixel_14, uint sample_index_12, uint dim_26)
 {
     uint2 _e6 = s_57.seed;
     const uint2 _e8 = nyq_u64_(1937011297u);
@@ -2396,17 +2539,17 @@ void nyq_stratified_start(inout NyqStratifiedSampler s_57, uint2 pixel_14, uint 
     const uint2 _e14 = nyq_u64_(sample_index_12);
     const uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
     s_57.sample_key = (_e13 ^ _e16);
-    s_57.dim = dim_24;
+    s_57.dim = dim_26;
     return;
 }
 
 float nyq_stratified_get_1d(inout NyqStratifiedSampler s_58)
 {
-    uint d_19 = s_58.dim;
-    s_58.dim = (d_19 + 1u);
-    const uint _e6 = nyq_stratified_stratum(s_58, d_19);
+    uint d_20 = s_58.dim;
+    s_58.dim = (d_20 + 1u);
+    const uint _e6 = nyq_stratified_stratum(s_58, d_20);
     const float _e7 = nyq_u32_to_f32_(_e6);
-    const float2 _e8 = nyq_stratified_jitters(s_58, d_19);
+    const float2 _e8 = nyq_stratified_jitters(s_58, d_20);
     float _e13 = s_58.inv.z;
     const float _e15 = nyq_below_one(((_e7 + _e8.x) * _e13));
     return _e15;
@@ -2414,10 +2557,10 @@ float nyq_stratified_get_1d(inout NyqStratifiedSampler s_58)
 
 float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_59)
 {
-    uint d_20 = s_59.dim;
-    s_59.dim = (d_20 + 2u);
-    const uint _e6 = nyq_stratified_stratum(s_59, d_20);
-    const float2 _e7 = nyq_stratified_jitters(s_59, d_20);
+    uint d_21 = s_59.dim;
+    s_59.dim = (d_21 + 2u);
+    const uint _e6 = nyq_stratified_stratum(s_59, d_21);
+    const float2 _e7 = nyq_stratified_jitters(s_59, d_21);
     const float2 _e8 = nyq_stratified_cell(s_59, _e6, _e7);
     return _e8;
 }
@@ -2445,12 +2588,12 @@ NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_61, ui
     return nyqcamerasample_5;
 }
 
-uint2 nyq_mul64_high(uint2 a_8, uint2 b_6)
+uint2 nyq_mul64_high(uint2 a_8, uint2 b_7)
 {
-    const uint2 _e4 = nyq_mul_wide(a_8.x, b_6.x);
-    const uint2 _e7 = nyq_mul_wide(a_8.x, b_6.y);
-    const uint2 _e10 = nyq_mul_wide(a_8.y, b_6.x);
-    const uint2 _e13 = nyq_mul_wide(a_8.y, b_6.y);
+    const uint2 _e4 = nyq_mul_wide(a_8.x, b_7.x);
+    const uint2 _e7 = nyq_mul_wide(a_8.x, b_7.y);
+    const uint2 _e10 = nyq_mul_wide(a_8.y, b_7.x);
+    const uint2 _e13 = nyq_mul_wide(a_8.y, b_7.y);
     const uint2 _e20 = nyq_add64_(uint2(_e4.y, 0u), uint2(_e7.x, 0u));
     const uint2 _e24 = nyq_add64_(_e20, uint2(_e10.x, 0u));
     const uint2 _e28 = nyq_add64_(_e13, uint2(_e7.y, 0u));
@@ -2459,29 +2602,29 @@ uint2 nyq_mul64_high(uint2 a_8, uint2 b_6)
     return _e36;
 }
 
-uint2 nyq_wyrand(uint2 seed_16, uint i_9)
+uint2 nyq_wyrand(uint2 seed_17, uint i_9)
 {
     const uint2 _e5 = nyq_u64_((i_9 + 1u));
     const uint2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
-    const uint2 _e7 = nyq_add64_(seed_16, _e6);
+    const uint2 _e7 = nyq_add64_(seed_17, _e6);
     uint2 t_7 = (_e7 ^ NYQ_WYRAND_FOLD);
     const uint2 _e10 = nyq_mul64_high(_e7, t_7);
     const uint2 _e11 = nyq_mul64_(_e7, t_7);
     return (_e10 ^ _e11);
 }
 
-uint nyq_pmj02_point(uint2 seed_17, uint index_10, uint dim_25)
+uint nyq_pmj02_point(uint2 seed_18, uint index_12, uint dim_27)
 {
-    uint x_16 = 0u;
+    uint x_17 = 0u;
     uint known = 0u;
     uint flips = 0u;
     uint p_1 = (uint)0;
 
-    p_1 = (index_10 & 65535u);
-    uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
+    p_1 = (index_12 & 65535u);
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         uint _e12 = p_1;
         if ((_e12 != 0u)) {
         } else {
@@ -2493,25 +2636,25 @@ uint nyq_pmj02_point(uint2 seed_17, uint index_10, uint dim_25)
             uint swap = (2147483648u >> level_1);
             uint low_2 = (swap - 1u);
             uint _e23 = p_1;
-            const uint2 _e24 = nyq_wyrand(seed_17, _e23);
-            uint bits_6 = ((dim_25 == 0u) ? _e24.x : _e24.y);
-            uint _e30 = x_16;
+            const uint2 _e24 = nyq_wyrand(seed_18, _e23);
+            uint bits_6 = ((dim_27 == 0u) ? _e24.x : _e24.y);
+            uint _e30 = x_17;
             uint _e32 = known;
-            x_16 = (_e30 | ((bits_6 & low_2) & ~(_e32)));
+            x_17 = (_e30 | ((bits_6 & low_2) & ~(_e32)));
             uint _e36 = known;
             known = (_e36 | low_2);
             uint _e38 = flips;
             flips = (_e38 ^ swap);
-            uint c_6 = ((dim_25 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
+            uint c_6 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
             uint _e51 = p_1;
             p_1 = ((_e51 - (1u << level_1)) ^ c_6);
         }
     }
-    const uint2 _e57 = nyq_wyrand(seed_17, 0u);
-    uint _e58 = x_16;
+    const uint2 _e57 = nyq_wyrand(seed_18, 0u);
+    uint _e58 = x_17;
     uint _e64 = known;
-    x_16 = (_e58 | (((dim_25 == 0u) ? _e57.x : _e57.y) & ~(_e64)));
-    uint _e68 = x_16;
+    x_17 = (_e58 | (((dim_27 == 0u) ? _e57.x : _e57.y) & ~(_e64)));
+    uint _e68 = x_17;
     uint _e69 = flips;
     return (_e68 ^ _e69);
 }
@@ -2523,27 +2666,27 @@ NyqPmj02_ ConstructNyqPmj02_(uint arg0, uint2 arg1) {
     return ret;
 }
 
-NyqPmj02_ nyq_pmj02_(bool scrambled_1, uint2 seed_18)
+NyqPmj02_ nyq_pmj02_(bool scrambled_1, uint2 seed_19)
 {
-    const uint2 _e5 = nyq_hash2_(seed_18, uint2(845115255u, 1886218800u));
+    const uint2 _e5 = nyq_hash2_(seed_19, uint2(845115255u, 1886218800u));
     const NyqPmj02_ nyqpmj02_ = ConstructNyqPmj02_((scrambled_1 ? 1u : 0u), _e5);
     return nyqpmj02_;
 }
 
-uint nyq_pmj02_sample_u32_(NyqPmj02_ s_62, uint index_11, uint dim_26)
+uint nyq_pmj02_sample_u32_(NyqPmj02_ s_62, uint index_13, uint dim_28)
 {
-    uint d_21 = (dim_26 & 1u);
-    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_21);
+    uint d_22 = (dim_28 & 1u);
+    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_22);
     if ((s_62.scrambled == 0u)) {
         return _e6;
     }
-    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_62.keys[min(uint(d_21), 1u)]);
+    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_62.keys[min(uint(d_22), 1u)]);
     return reversebits(_e13);
 }
 
-float nyq_pmj02_sample(NyqPmj02_ s_63, uint index_12, uint dim_27)
+float nyq_pmj02_sample(NyqPmj02_ s_63, uint index_14, uint dim_29)
 {
-    const uint _e3 = nyq_pmj02_sample_u32_(s_63, index_12, dim_27);
+    const uint _e3 = nyq_pmj02_sample_u32_(s_63, index_14, dim_29);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2557,9 +2700,9 @@ NyqPmj02Sampler ConstructNyqPmj02Sampler(uint2 arg0, uint2 arg1, uint arg2, uint
     return ret;
 }
 
-NyqPmj02Sampler nyq_pmj02_sampler(uint2 seed_19)
+NyqPmj02Sampler nyq_pmj02_sampler(uint2 seed_20)
 {
-    const NyqPmj02Sampler nyqpmj02sampler = ConstructNyqPmj02Sampler(seed_19, uint2(0u, 0u), 0u, 0u);
+    const NyqPmj02Sampler nyqpmj02sampler = ConstructNyqPmj02Sampler(seed_20, uint2(0u, 0u), 0u, 0u);
     return nyqpmj02sampler;
 }
 
@@ -2577,40 +2720,40 @@ uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_64, uint2 request)
     return uint3(_e9.x, _e9.y, _e14.x);
 }
 
-float2 nyq_pmj02_keyed_point(uint3 k_9, uint i_10)
+float2 nyq_pmj02_keyed_point(uint3 k_10, uint i_10)
 {
     const uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 0u);
     const uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 1u);
-    const uint _e10 = nyq_lk_hash(reversebits(_e4), k_9.y);
+    const uint _e10 = nyq_lk_hash(reversebits(_e4), k_10.y);
     const float _e11 = nyq_rev_to_f32_(_e10);
-    const uint _e14 = nyq_lk_hash(reversebits(_e7), k_9.z);
+    const uint _e14 = nyq_lk_hash(reversebits(_e7), k_10.z);
     const float _e15 = nyq_rev_to_f32_(_e14);
     return float2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_65, uint3 k_10)
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_65, uint3 k_11)
 {
     uint _e3 = s_65.index_rev;
-    const uint _e5 = nyq_lk_hash(_e3, k_10.x);
+    const uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return (_e5 >> 16u);
 }
 
-void nyq_pmj02_start(inout NyqPmj02Sampler s_66, uint2 pixel_16, uint sample_index_14, uint dim_28)
+void nyq_pmj02_start(inout NyqPmj02Sampler s_66, uint2 pixel_16, uint sample_index_14, uint dim_30)
 {
     uint2 _e6 = s_66.seed;
     const uint2 _e10 = nyq_hash3_(pixel_16, _e6, uint2(1835675698u, 112u));
     s_66.pixel_key = _e10;
     const uint _e12 = nyq_reverse16_(sample_index_14);
     s_66.index_rev = (_e12 << 16u);
-    s_66.dim = dim_28;
+    s_66.dim = dim_30;
     return;
 }
 
 float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_67)
 {
-    uint d_22 = s_67.dim;
-    s_67.dim = (d_22 + 1u);
-    const uint2 _e6 = nyq_u64_(d_22);
+    uint d_23 = s_67.dim;
+    s_67.dim = (d_23 + 1u);
+    const uint2 _e6 = nyq_u64_(d_23);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
     const uint2 _e12 = nyq_add64_(_e8, uint2(1u, 0u));
     const uint3 _e13 = nyq_pmj02_keys(s_67, _e12);
@@ -2623,12 +2766,12 @@ float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_67)
 
 float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_68)
 {
-    uint d_23 = s_68.dim;
-    s_68.dim = (d_23 + 2u);
-    const uint2 _e6 = nyq_u64_(d_23);
+    uint d_24 = s_68.dim;
+    s_68.dim = (d_24 + 2u);
+    const uint2 _e6 = nyq_u64_(d_24);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
     const uint3 _e9 = nyq_pmj02_keys(s_68, _e8);
-    if ((d_23 == 0u)) {
+    if ((d_24 == 0u)) {
         uint _e13 = s_68.index_rev;
         const uint _e16 = nyq_reverse16_((_e13 >> 16u));
         const float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
@@ -2664,112 +2807,112 @@ NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_70, uint2 pixel_
     return nyqcamerasample_6;
 }
 
-uint2 nyq_sub64_(uint2 a_9, uint2 b_7)
+uint2 nyq_sub64_(uint2 a_9, uint2 b_8)
 {
-    return uint2((a_9.x - b_7.x), ((a_9.y - b_7.y) - ((a_9.x < b_7.x) ? 1u : 0u)));
+    return uint2((a_9.x - b_8.x), ((a_9.y - b_8.y) - ((a_9.x < b_8.x) ? 1u : 0u)));
 }
 
-uint3 nyq_divmod64_small(uint2 x_17, uint d_3)
+uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
 {
-    if ((x_17.y == 0u)) {
-        uint q_4 = naga_div(x_17.x, d_3);
-        return uint3(q_4, 0u, (x_17.x - (q_4 * d_3)));
+    if ((x_18.y == 0u)) {
+        uint q_4 = naga_div(x_18.x, d_3);
+        return uint3(q_4, 0u, (x_18.x - (q_4 * d_3)));
     }
-    uint t3_ = (x_17.y >> 16u);
+    uint t3_ = (x_18.y >> 16u);
     uint q3_ = naga_div(t3_, d_3);
-    uint t2_ = (((t3_ - (q3_ * d_3)) << 16u) | (x_17.y & 65535u));
+    uint t2_ = (((t3_ - (q3_ * d_3)) << 16u) | (x_18.y & 65535u));
     uint q2_ = naga_div(t2_, d_3);
-    uint t1_1 = (((t2_ - (q2_ * d_3)) << 16u) | (x_17.x >> 16u));
+    uint t1_1 = (((t2_ - (q2_ * d_3)) << 16u) | (x_18.x >> 16u));
     uint q1_ = naga_div(t1_1, d_3);
-    uint t0_1 = (((t1_1 - (q1_ * d_3)) << 16u) | (x_17.x & 65535u));
+    uint t0_1 = (((t1_1 - (q1_ * d_3)) << 16u) | (x_18.x & 65535u));
     uint q0_ = naga_div(t0_1, d_3);
     return uint3(((q1_ << 16u) | q0_), ((q3_ << 16u) | q2_), (t0_1 - (q0_ * d_3)));
 }
 
-uint4 nyq_add128_(uint4 a_10, uint4 b_8)
+uint4 nyq_add128_(uint4 a_10, uint4 b_9)
 {
-    uint4 s_80 = (a_10 + b_8);
-    uint4 c_7 = ((s_80 < a_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_2 = (s_80.y + c_7.x);
+    uint4 s_81 = (a_10 + b_9);
+    uint4 c_7 = ((s_81 < a_10) ? (1u).xxxx : (0u).xxxx);
+    uint t1_2 = (s_81.y + c_7.x);
     uint k1_ = (c_7.y + ((t1_2 < c_7.x) ? 1u : 0u));
-    uint t2_1 = (s_80.z + k1_);
+    uint t2_1 = (s_81.z + k1_);
     uint k2_ = (c_7.z + ((t2_1 < k1_) ? 1u : 0u));
-    return uint4(s_80.x, t1_2, t2_1, (s_80.w + k2_));
+    return uint4(s_81.x, t1_2, t2_1, (s_81.w + k2_));
 }
 
-uint4 nyq_sub128_(uint4 a_11, uint4 b_9)
+uint4 nyq_sub128_(uint4 a_11, uint4 b_10)
 {
-    uint4 s_81 = (a_11 - b_9);
-    uint4 o = ((a_11 < b_9) ? (1u).xxxx : (0u).xxxx);
-    uint t1_3 = (s_81.y - o.x);
-    uint k1_1 = (o.y + ((s_81.y < o.x) ? 1u : 0u));
-    uint t2_2 = (s_81.z - k1_1);
-    uint k2_1 = (o.z + ((s_81.z < k1_1) ? 1u : 0u));
-    return uint4(s_81.x, t1_3, t2_2, (s_81.w - k2_1));
+    uint4 s_82 = (a_11 - b_10);
+    uint4 o = ((a_11 < b_10) ? (1u).xxxx : (0u).xxxx);
+    uint t1_3 = (s_82.y - o.x);
+    uint k1_1 = (o.y + ((s_82.y < o.x) ? 1u : 0u));
+    uint t2_2 = (s_82.z - k1_1);
+    uint k2_1 = (o.z + ((s_82.z < k1_1) ? 1u : 0u));
+    return uint4(s_82.x, t1_3, t2_2, (s_82.w - k2_1));
 }
 
-bool nyq_lt128_(uint4 a_12, uint4 b_10)
+bool nyq_lt128_(uint4 a_12, uint4 b_11)
 {
-    if ((a_12.w != b_10.w)) {
-        return (a_12.w < b_10.w);
+    if ((a_12.w != b_11.w)) {
+        return (a_12.w < b_11.w);
     }
-    if ((a_12.z != b_10.z)) {
-        return (a_12.z < b_10.z);
+    if ((a_12.z != b_11.z)) {
+        return (a_12.z < b_11.z);
     }
-    if ((a_12.y != b_10.y)) {
-        return (a_12.y < b_10.y);
+    if ((a_12.y != b_11.y)) {
+        return (a_12.y < b_11.y);
     }
-    return (a_12.x < b_10.x);
+    return (a_12.x < b_11.x);
 }
 
-uint4 nyq_mul128_u32_(uint4 x_18, uint k_11)
+uint4 nyq_mul128_u32_(uint4 x_19, uint k_12)
 {
-    const uint2 _e3 = nyq_mul_wide(x_18.x, k_11);
-    const uint2 _e5 = nyq_mul_wide(x_18.y, k_11);
+    const uint2 _e3 = nyq_mul_wide(x_19.x, k_12);
+    const uint2 _e5 = nyq_mul_wide(x_19.y, k_12);
     const uint2 _e9 = nyq_add64_(_e5, uint2(_e3.y, 0u));
-    const uint2 _e11 = nyq_mul_wide(x_18.z, k_11);
+    const uint2 _e11 = nyq_mul_wide(x_19.z, k_12);
     const uint2 _e15 = nyq_add64_(_e11, uint2(_e9.y, 0u));
-    return uint4(_e3.x, _e9.x, _e15.x, ((x_18.w * k_11) + _e15.y));
+    return uint4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_12) + _e15.y));
 }
 
-uint4 nyq_mul64_wide(uint2 a_13, uint2 b_11)
+uint4 nyq_mul64_wide(uint2 a_13, uint2 b_12)
 {
-    const uint2 _e4 = nyq_mul_wide(a_13.x, b_11.x);
-    const uint2 _e7 = nyq_mul_wide(a_13.x, b_11.y);
-    const uint2 _e10 = nyq_mul_wide(a_13.y, b_11.x);
-    const uint2 _e13 = nyq_mul_wide(a_13.y, b_11.y);
+    const uint2 _e4 = nyq_mul_wide(a_13.x, b_12.x);
+    const uint2 _e7 = nyq_mul_wide(a_13.x, b_12.y);
+    const uint2 _e10 = nyq_mul_wide(a_13.y, b_12.x);
+    const uint2 _e13 = nyq_mul_wide(a_13.y, b_12.y);
     uint4 outer = uint4(_e4.x, _e4.y, _e13.x, _e13.y);
     const uint4 _e24 = nyq_add128_(outer, uint4(0u, _e7.x, _e7.y, 0u));
     const uint4 _e30 = nyq_add128_(_e24, uint4(0u, _e10.x, _e10.y, 0u));
     return _e30;
 }
 
-uint nyq_clz128_(uint4 x_19)
+uint nyq_clz128_(uint4 x_20)
 {
-    if ((x_19.w != 0u)) {
-        return (31u - firstbithigh(x_19.w));
+    if ((x_20.w != 0u)) {
+        return (31u - firstbithigh(x_20.w));
     }
-    if ((x_19.z != 0u)) {
-        return (32u + (31u - firstbithigh(x_19.z)));
+    if ((x_20.z != 0u)) {
+        return (32u + (31u - firstbithigh(x_20.z)));
     }
-    if ((x_19.y != 0u)) {
-        return (64u + (31u - firstbithigh(x_19.y)));
+    if ((x_20.y != 0u)) {
+        return (64u + (31u - firstbithigh(x_20.y)));
     }
-    return (96u + (31u - firstbithigh(x_19.x)));
+    return (96u + (31u - firstbithigh(x_20.x)));
 }
 
-uint4 nyq_shl128_(uint4 x_20, uint s_71)
+uint4 nyq_shl128_(uint4 x_21, uint s_71)
 {
     uint4 v_5 = (uint4)0;
-    uint k_12 = (uint)0;
+    uint k_13 = (uint)0;
 
-    v_5 = x_20;
-    k_12 = s_71;
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    v_5 = x_21;
+    k_13 = s_71;
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        uint _e4 = k_12;
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        uint _e4 = k_13;
         if ((_e4 >= 32u)) {
         } else {
             break;
@@ -2779,39 +2922,38 @@ uint4 nyq_shl128_(uint4 x_20, uint s_71)
             uint _e11 = v_5.y;
             uint _e13 = v_5.z;
             v_5 = uint4(0u, _e9, _e11, _e13);
-            uint _e15 = k_12;
-            k_12 = (_e15 - 32u);
+            uint _e15 = k_13;
+            k_13 = (_e15 - 32u);
         }
     }
-    uint _e18 = k_12;
+    uint _e18 = k_13;
     if ((_e18 == 0u)) {
         uint4 _e21 = v_5;
         return _e21;
     }
-    uint _e23 = k_12;
-    uint r_13 = (32u - _e23);
+    uint _e23 = k_13;
+    uint r_14 = (32u - _e23);
     uint _e26 = v_5.x;
-    uint _e27 = k_12;
+    uint _e27 = k_13;
     uint _e30 = v_5.y;
-    uint _e31 = k_12;
+    uint _e31 = k_13;
     uint _e34 = v_5.x;
     uint _e38 = v_5.z;
-    uint _e39 = k_12;
+    uint _e39 = k_13;
     uint _e42 = v_5.y;
     uint _e46 = v_5.w;
-    uint _e47 = k_12;
+    uint _e47 = k_13;
     uint _e50 = v_5.z;
-    return uint4((_e26 << _e27), ((_e30 << _e31) | (_e34 >> r_13)), ((_e38 << _e39) | (_e42 >> r_13)), ((_e46 << _e47) | (_e50 >> r_13)));
+    return uint4((_e26 << _e27), ((_e30 << _e31) | (_e34 >> r_14)), ((_e38 << _e39) | (_e42 >> r_14)), ((_e46 << _e47) | (_e50 >> r_14)));
 }
 
-uint nyq_round_bits(uint4 x_in_3, int e_in, bool sticky, bool twice)
+uint nyq_round_bits(uint4 x_in_3, int e_in_1, bool sticky, bool twice)
 {
-    bool local_11 = (bool)0;
     bool local_12 = (bool)0;
+    bool local_13 = (bool)0;
     uint m_2 = (uint)0;
     uint ml = (uint)0;
     uint mh = (uint)0;
-    bool local_13 = (bool)0;
     bool local_14 = (bool)0;
     bool local_15 = (bool)0;
     bool local_16 = (bool)0;
@@ -2820,48 +2962,49 @@ uint nyq_round_bits(uint4 x_in_3, int e_in, bool sticky, bool twice)
     bool local_19 = (bool)0;
     bool local_20 = (bool)0;
     bool local_21 = (bool)0;
+    bool local_22 = (bool)0;
 
     if (all((x_in_3 == (0u).xxxx))) {
         return 0u;
     }
     const uint _e9 = nyq_clz128_(x_in_3);
     const uint4 _e10 = nyq_shl128_(x_in_3, _e9);
-    int e_2 = asint(asuint(e_in) - asuint(int(_e9)));
+    int e_4 = asint(asuint(e_in_1) - asuint(int(_e9)));
     if (!((_e10.x != 0u))) {
-        local_11 = (_e10.y != 0u);
-    } else {
-        local_11 = true;
-    }
-    bool _e23 = local_11;
-    if (!(_e23)) {
-        local_12 = sticky;
+        local_12 = (_e10.y != 0u);
     } else {
         local_12 = true;
     }
-    bool rest_2 = local_12;
+    bool _e23 = local_12;
+    if (!(_e23)) {
+        local_13 = sticky;
+    } else {
+        local_13 = true;
+    }
+    bool rest_2 = local_13;
     if (twice) {
         ml = ((_e10.w << 21u) | (_e10.z >> 11u));
         mh = (_e10.w >> 11u);
-        uint r_14 = (_e10.z & 2047u);
-        if (!((r_14 > 1024u))) {
-            if ((r_14 == 1024u)) {
+        uint r_15 = (_e10.z & 2047u);
+        if (!((r_15 > 1024u))) {
+            if ((r_15 == 1024u)) {
                 if (!(rest_2)) {
                     uint _e57 = ml;
-                    local_15 = ((_e57 & 1u) == 1u);
+                    local_16 = ((_e57 & 1u) == 1u);
                 } else {
-                    local_15 = true;
+                    local_16 = true;
                 }
-                bool _e63 = local_15;
-                local_14 = _e63;
+                bool _e63 = local_16;
+                local_15 = _e63;
             } else {
-                local_14 = false;
+                local_15 = false;
             }
-            bool _e65 = local_14;
-            local_13 = _e65;
+            bool _e65 = local_15;
+            local_14 = _e65;
         } else {
-            local_13 = true;
+            local_14 = true;
         }
-        bool _e67 = local_13;
+        bool _e67 = local_14;
         if (_e67) {
             uint _e68 = ml;
             ml = (_e68 + 1u);
@@ -2877,55 +3020,55 @@ uint nyq_round_bits(uint4 x_in_3, int e_in, bool sticky, bool twice)
         if (!((r2_ > 268435456u))) {
             if ((r2_ == 268435456u)) {
                 uint _e98 = m_2;
-                local_17 = ((_e98 & 1u) == 1u);
+                local_18 = ((_e98 & 1u) == 1u);
             } else {
-                local_17 = false;
+                local_18 = false;
             }
-            bool _e104 = local_17;
-            local_16 = _e104;
+            bool _e104 = local_18;
+            local_17 = _e104;
         } else {
-            local_16 = true;
+            local_17 = true;
         }
-        bool _e106 = local_16;
+        bool _e106 = local_17;
         if (_e106) {
             uint _e107 = m_2;
             m_2 = (_e107 + 1u);
         }
     } else {
         m_2 = (_e10.w >> 8u);
-        uint r_15 = (_e10.w & 255u);
-        if (!((r_15 > 128u))) {
-            if ((r_15 == 128u)) {
+        uint r_16 = (_e10.w & 255u);
+        if (!((r_16 > 128u))) {
+            if ((r_16 == 128u)) {
                 if (!((_e10.z != 0u))) {
-                    local_20 = rest_2;
-                } else {
-                    local_20 = true;
-                }
-                bool _e132 = local_20;
-                if (!(_e132)) {
-                    uint _e136 = m_2;
-                    local_21 = ((_e136 & 1u) == 1u);
+                    local_21 = rest_2;
                 } else {
                     local_21 = true;
                 }
-                bool _e142 = local_21;
-                local_19 = _e142;
+                bool _e132 = local_21;
+                if (!(_e132)) {
+                    uint _e136 = m_2;
+                    local_22 = ((_e136 & 1u) == 1u);
+                } else {
+                    local_22 = true;
+                }
+                bool _e142 = local_22;
+                local_20 = _e142;
             } else {
-                local_19 = false;
+                local_20 = false;
             }
-            bool _e144 = local_19;
-            local_18 = _e144;
+            bool _e144 = local_20;
+            local_19 = _e144;
         } else {
-            local_18 = true;
+            local_19 = true;
         }
-        bool _e146 = local_18;
+        bool _e146 = local_19;
         if (_e146) {
             uint _e147 = m_2;
             m_2 = (_e147 + 1u);
         }
     }
     uint _e155 = m_2;
-    return (((uint(asint(asuint(e_2) + asuint(int(254)))) << 23u) + _e155) - 8388608u);
+    return (((uint(asint(asuint(e_4) + asuint(int(254)))) << 23u) + _e155) - 8388608u);
 }
 
 NyqRounding ConstructNyqRounding(uint4 arg0, int arg1, uint arg2, uint arg3, uint arg4) {
@@ -2942,14 +3085,14 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
 {
     uint2 q_2 = uint2(0u, 0u);
     bool sticky_1 = false;
-    bool local_22 = (bool)0;
     bool local_23 = (bool)0;
-    uint2 r_10 = (uint2)0;
-    uint i_11 = 0u;
     bool local_24 = (bool)0;
+    uint2 r_11 = (uint2)0;
+    uint i_11 = 0u;
     bool local_25 = (bool)0;
     bool local_26 = (bool)0;
-    uint4 r_11 = (uint4)0;
+    bool local_27 = (bool)0;
+    uint4 r_12 = (uint4)0;
     uint i_12 = 0u;
 
     uint tw = (twice_1 ? 1u : 0u);
@@ -2959,29 +3102,29 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     const uint _e16 = nyq_clz128_(num_1);
     const uint _e17 = nyq_clz128_(den_1);
-    uint s_82 = (_e16 - _e17);
+    uint s_83 = (_e16 - _e17);
     uint steps = (twice_1 ? 55u : 26u);
     if ((den_1.z == 0u)) {
-        local_22 = (den_1.w == 0u);
-    } else {
-        local_22 = false;
-    }
-    bool _e37 = local_22;
-    if (_e37) {
-        local_23 = (den_1.y < 2147483648u);
+        local_23 = (den_1.w == 0u);
     } else {
         local_23 = false;
     }
-    bool _e44 = local_23;
+    bool _e37 = local_23;
+    if (_e37) {
+        local_24 = (den_1.y < 2147483648u);
+    } else {
+        local_24 = false;
+    }
+    bool _e44 = local_24;
     if (_e44) {
-        uint2 d_24 = den_1.xy;
-        const uint4 _e46 = nyq_shl128_(num_1, s_82);
-        r_10 = _e46.xy;
-        uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+        uint2 d_25 = den_1.xy;
+        const uint4 _e46 = nyq_shl128_(num_1, s_83);
+        r_11 = _e46.xy;
+        uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
         bool loop_init_17 = true;
         while(true) {
-            if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-            loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+            if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+            loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
             if (!loop_init_17) {
                 uint _e109 = i_11;
                 i_11 = (_e109 + 1u);
@@ -2997,51 +3140,51 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
                 uint _e58 = q_2.y;
                 uint _e62 = q_2.x;
                 q_2 = uint2((_e54 << 1u), ((_e58 << 1u) | (_e62 >> 31u)));
-                uint _e68 = r_10.y;
-                if (!((_e68 > d_24.y))) {
-                    uint _e75 = r_10.y;
-                    if ((_e75 == d_24.y)) {
-                        uint _e81 = r_10.x;
-                        local_25 = (_e81 >= d_24.x);
+                uint _e68 = r_11.y;
+                if (!((_e68 > d_25.y))) {
+                    uint _e75 = r_11.y;
+                    if ((_e75 == d_25.y)) {
+                        uint _e81 = r_11.x;
+                        local_26 = (_e81 >= d_25.x);
                     } else {
-                        local_25 = false;
+                        local_26 = false;
                     }
-                    bool _e85 = local_25;
-                    local_24 = _e85;
+                    bool _e85 = local_26;
+                    local_25 = _e85;
                 } else {
-                    local_24 = true;
+                    local_25 = true;
                 }
-                bool _e87 = local_24;
+                bool _e87 = local_25;
                 if (_e87) {
-                    uint2 _e88 = r_10;
-                    const uint2 _e89 = nyq_sub64_(_e88, d_24);
-                    r_10 = _e89;
+                    uint2 _e88 = r_11;
+                    const uint2 _e89 = nyq_sub64_(_e88, d_25);
+                    r_11 = _e89;
                     uint _e91 = q_2.x;
                     q_2.x = (_e91 | 1u);
                 }
-                uint _e95 = r_10.x;
-                uint _e99 = r_10.y;
-                uint _e103 = r_10.x;
-                r_10 = uint2((_e95 << 1u), ((_e99 << 1u) | (_e103 >> 31u)));
+                uint _e95 = r_11.x;
+                uint _e99 = r_11.y;
+                uint _e103 = r_11.x;
+                r_11 = uint2((_e95 << 1u), ((_e99 << 1u) | (_e103 >> 31u)));
             }
         }
-        uint _e112 = r_10.x;
+        uint _e112 = r_11.x;
         if (!((_e112 != 0u))) {
-            uint _e119 = r_10.y;
-            local_26 = (_e119 != 0u);
+            uint _e119 = r_11.y;
+            local_27 = (_e119 != 0u);
         } else {
-            local_26 = true;
+            local_27 = true;
         }
-        bool _e123 = local_26;
+        bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        const uint4 _e124 = nyq_shl128_(num_1, s_82);
-        r_11 = _e124;
-        uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
+        const uint4 _e124 = nyq_shl128_(num_1, s_83);
+        r_12 = _e124;
+        uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
         bool loop_init_18 = true;
         while(true) {
-            if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-            loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+            if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
             if (!loop_init_18) {
                 uint _e186 = i_12;
                 i_12 = (_e186 + 1u);
@@ -3057,58 +3200,58 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
                 uint _e135 = q_2.y;
                 uint _e139 = q_2.x;
                 q_2 = uint2((_e131 << 1u), ((_e135 << 1u) | (_e139 >> 31u)));
-                uint4 _e144 = r_11;
+                uint4 _e144 = r_12;
                 const bool _e145 = nyq_lt128_(_e144, den_1);
                 if (!(_e145)) {
-                    uint4 _e147 = r_11;
+                    uint4 _e147 = r_12;
                     const uint4 _e148 = nyq_sub128_(_e147, den_1);
-                    r_11 = _e148;
+                    r_12 = _e148;
                     uint _e150 = q_2.x;
                     q_2.x = (_e150 | 1u);
                 }
-                uint _e154 = r_11.x;
-                uint _e158 = r_11.y;
-                uint _e162 = r_11.x;
-                uint _e167 = r_11.z;
-                uint _e171 = r_11.y;
-                uint _e176 = r_11.w;
-                uint _e180 = r_11.z;
-                r_11 = uint4((_e154 << 1u), ((_e158 << 1u) | (_e162 >> 31u)), ((_e167 << 1u) | (_e171 >> 31u)), ((_e176 << 1u) | (_e180 >> 31u)));
+                uint _e154 = r_12.x;
+                uint _e158 = r_12.y;
+                uint _e162 = r_12.x;
+                uint _e167 = r_12.z;
+                uint _e171 = r_12.y;
+                uint _e176 = r_12.w;
+                uint _e180 = r_12.z;
+                r_12 = uint4((_e154 << 1u), ((_e158 << 1u) | (_e162 >> 31u)), ((_e167 << 1u) | (_e171 >> 31u)), ((_e176 << 1u) | (_e180 >> 31u)));
             }
         }
-        uint4 _e188 = r_11;
+        uint4 _e188 = r_12;
         sticky_1 = any((_e188 != (0u).xxxx));
     }
     uint2 _e193 = q_2;
     bool _e203 = sticky_1;
-    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_82)))), (_e203 ? 1u : 0u), tw, 0u);
+    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_83)))), (_e203 ? 1u : 0u), tw, 0u);
     return nyqrounding_1;
 }
 
-uint nyq_prime(uint dim_29)
+uint nyq_prime(uint dim_31)
 {
-    uint _e7 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * naga_mod(dim_29, NYQ_PRIME_COUNT))*4));
+    uint _e7 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * naga_mod(dim_31, NYQ_PRIME_COUNT))*4));
     return _e7;
 }
 
 NyqRounding nyq_phi_short(uint t_3, uint a_14)
 {
-    uint x_21 = (uint)0;
+    uint x_22 = (uint)0;
     uint2 rev = uint2(0u, 0u);
     uint i_13 = 0u;
 
-    uint b_14 = asuint(nyq_halton_bases.Load(t_3*4));
+    uint b_15 = asuint(nyq_halton_bases.Load(t_3*4));
     uint c_8 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
     uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_8, 4u))*4));
     uint places = ((_e19 >> (8u * naga_mod(c_8, 4u))) & 255u);
     uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_8))*4));
     uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_8))*4));
-    x_21 = a_14;
-    uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+    x_22 = a_14;
+    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
     bool loop_init_19 = true;
     while(true) {
-        if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
         if (!loop_init_19) {
             uint _e64 = i_13;
             i_13 = (_e64 + 1u);
@@ -3120,21 +3263,21 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14)
             break;
         }
         {
-            uint _e52 = x_21;
-            uint q_5 = naga_div(_e52, b_14);
+            uint _e52 = x_22;
+            uint q_5 = naga_div(_e52, b_15);
             uint2 _e54 = rev;
-            const uint3 _e55 = nyq_mul64x32_(_e54, b_14);
-            uint _e57 = x_21;
-            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_14)), 0u));
+            const uint3 _e55 = nyq_mul64x32_(_e54, b_15);
+            uint _e57 = x_22;
+            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_15)), 0u));
             rev = _e62;
-            x_21 = q_5;
+            x_22 = q_5;
         }
     }
     uint2 mantissa = uint2(low_3, ((high_1 & 1048575u) | 1048576u));
-    int e_3 = asint(asuint(int(((high_1 >> 20u) & 2047u))) - asuint(int(1075)));
+    int e_5 = asint(asuint(int(((high_1 >> 20u) & 2047u))) - asuint(int(1075)));
     uint2 _e78 = rev;
     const uint4 _e79 = nyq_mul64_wide(_e78, mantissa);
-    const NyqRounding nyqrounding_2 = ConstructNyqRounding(_e79, e_3, 0u, 1u, 0u);
+    const NyqRounding nyqrounding_2 = ConstructNyqRounding(_e79, e_5, 0u, 1u, 0u);
     return nyqrounding_2;
 }
 
@@ -3149,46 +3292,46 @@ NyqFraction ConstructNyqFraction(uint4 arg0, uint4 arg1, uint arg2, uint arg3) {
 
 NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
 {
-    uint2 x_22 = (uint2)0;
+    uint2 x_23 = (uint2)0;
     uint4 num_2 = (0u).xxxx;
     uint4 den_2 = uint4(1u, 0u, 0u, 0u);
-    bool local_27 = (bool)0;
+    bool local_28 = (bool)0;
     uint c_3 = (uint)0;
     uint rev_1 = (uint)0;
     uint i_14 = (uint)0;
 
-    uint b_15 = asuint(nyq_halton_bases.Load(t_4*4));
+    uint b_16 = asuint(nyq_halton_bases.Load(t_4*4));
     uint chunk = asuint(nyq_halton_bases.Load((t_4 + 4u)*4));
     uint run = asuint(nyq_halton_bases.Load((t_4 + 5u)*4));
-    x_22 = a_15;
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+    x_23 = a_15;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        uint _e26 = x_22.x;
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        uint _e26 = x_23.x;
         if (!((_e26 != 0u))) {
-            uint _e33 = x_22.y;
-            local_27 = (_e33 != 0u);
+            uint _e33 = x_23.y;
+            local_28 = (_e33 != 0u);
         } else {
-            local_27 = true;
+            local_28 = true;
         }
-        bool _e37 = local_27;
+        bool _e37 = local_28;
         if (_e37) {
         } else {
             break;
         }
         {
-            uint2 _e38 = x_22;
+            uint2 _e38 = x_23;
             const uint3 _e39 = nyq_divmod64_small(_e38, chunk);
-            x_22 = _e39.xy;
+            x_23 = _e39.xy;
             c_3 = _e39.z;
             rev_1 = 0u;
             i_14 = 0u;
-            uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
             bool loop_init_20 = true;
             while(true) {
-                if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-                loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
                 if (!loop_init_20) {
                     uint _e58 = i_14;
                     i_14 = (_e58 + 1u);
@@ -3201,10 +3344,10 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = naga_div(_e49, b_15);
+                    uint q_6 = naga_div(_e49, b_16);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = ((_e51 * b_15) + (_e53 - (q_6 * b_15)));
+                    rev_1 = ((_e51 * b_16) + (_e53 - (q_6 * b_16)));
                     c_3 = q_6;
                 }
             }
@@ -3224,65 +3367,65 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
     return nyqfraction;
 }
 
-NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_20)
+NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
 {
-    uint2 x_23 = (uint2)0;
+    uint2 x_24 = (uint2)0;
     uint4 num_3 = (0u).xxxx;
     uint4 den_3 = uint4(1u, 0u, 0u, 0u);
-    bool local_28 = (bool)0;
     bool local_29 = (bool)0;
+    bool local_30 = (bool)0;
     uint c_4 = (uint)0;
     uint part = (uint)0;
     uint scale = (uint)0;
     uint i_15 = (uint)0;
-    bool local_30 = (bool)0;
     bool local_31 = (bool)0;
     bool local_32 = (bool)0;
+    bool local_33 = (bool)0;
 
-    uint b_16 = asuint(nyq_halton_bases.Load(t_5*4));
+    uint b_17 = asuint(nyq_halton_bases.Load(t_5*4));
     uint chunk_1 = asuint(nyq_halton_bases.Load((t_5 + 4u)*4));
     uint run_1 = asuint(nyq_halton_bases.Load((t_5 + 5u)*4));
-    const uint2 _e16 = nyq_u64_(b_16);
-    const uint2 _e17 = nyq_hash2_(seed_20, _e16);
-    const NyqPermutation _e21 = nyq_permutation(b_16, (_e17.x ^ _e17.y));
-    x_23 = a_16;
-    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
+    const uint2 _e16 = nyq_u64_(b_17);
+    const uint2 _e17 = nyq_hash2_(seed_21, _e16);
+    const NyqPermutation _e21 = nyq_permutation(b_17, (_e17.x ^ _e17.y));
+    x_24 = a_16;
+    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        uint _e33 = x_23.x;
+        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        uint _e33 = x_24.x;
         if (!((_e33 != 0u))) {
-            uint _e40 = x_23.y;
-            local_28 = (_e40 != 0u);
+            uint _e40 = x_24.y;
+            local_29 = (_e40 != 0u);
         } else {
-            local_28 = true;
+            local_29 = true;
         }
-        bool _e44 = local_28;
+        bool _e44 = local_29;
         if (_e44) {
         } else {
             break;
         }
         {
-            uint2 _e45 = x_23;
+            uint2 _e45 = x_24;
             const uint3 _e46 = nyq_divmod64_small(_e45, chunk_1);
-            x_23 = _e46.xy;
-            uint _e49 = x_23.x;
+            x_24 = _e46.xy;
+            uint _e49 = x_24.x;
             if ((_e49 == 0u)) {
-                uint _e55 = x_23.y;
-                local_29 = (_e55 == 0u);
+                uint _e55 = x_24.y;
+                local_30 = (_e55 == 0u);
             } else {
-                local_29 = false;
+                local_30 = false;
             }
-            bool last = local_29;
+            bool last = local_30;
             c_4 = _e46.z;
             part = 0u;
             scale = 1u;
             i_15 = 0u;
-            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
             bool loop_init_21 = true;
             while(true) {
-                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+                loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
                 if (!loop_init_21) {
                     uint _e89 = i_15;
                     i_15 = (_e89 + 1u);
@@ -3296,22 +3439,22 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_20)
                 {
                     if (last) {
                         uint _e72 = c_4;
-                        local_30 = (_e72 == 0u);
+                        local_31 = (_e72 == 0u);
                     } else {
-                        local_30 = false;
+                        local_31 = false;
                     }
-                    bool _e76 = local_30;
+                    bool _e76 = local_31;
                     if (_e76) {
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = naga_div(_e77, b_16);
+                    uint q_7 = naga_div(_e77, b_17);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_16)));
-                    part = ((_e79 * b_16) + _e84);
+                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_17)));
+                    part = ((_e79 * b_17) + _e84);
                     uint _e86 = scale;
-                    scale = (_e86 * b_16);
+                    scale = (_e86 * b_17);
                     c_4 = q_7;
                 }
             }
@@ -3329,30 +3472,30 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_20)
     }
     const uint _e104 = nyq_permutation_apply(_e21, 0u);
     uint4 _e105 = num_3;
-    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_16 - 1u));
+    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_17 - 1u));
     const uint4 _e113 = nyq_add128_(_e108, uint4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     uint4 _e114 = den_3;
-    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_16 - 1u));
+    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_17 - 1u));
     den_3 = _e117;
     uint _e119 = den_3.w;
     if ((_e119 == 0u)) {
         uint _e125 = den_3.z;
-        local_31 = (_e125 == 0u);
-    } else {
-        local_31 = false;
-    }
-    bool _e129 = local_31;
-    if (_e129) {
-        uint _e133 = den_3.y;
-        local_32 = (_e133 < 2097152u);
+        local_32 = (_e125 == 0u);
     } else {
         local_32 = false;
     }
-    bool small = local_32;
+    bool _e129 = local_32;
+    if (_e129) {
+        uint _e133 = den_3.y;
+        local_33 = (_e133 < 2097152u);
+    } else {
+        local_33 = false;
+    }
+    bool small = local_33;
     uint4 _e138 = num_3;
     uint4 _e139 = den_3;
-    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_16 - 1u)) ? 1u : 0u));
+    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_17 - 1u)) ? 1u : 0u));
     return nyqfraction_1;
 }
 
@@ -3360,7 +3503,7 @@ uint ZeroValueuint() {
     return (uint)0;
 }
 
-NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_21, bool affine)
+NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine)
 {
     uint2 rest = (uint2)0;
     uint2 pow_ = uint2(1u, 0u);
@@ -3369,17 +3512,17 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_21, bool affine
     uint2 den_4 = uint2(1u, 0u);
     uint2 next = (uint2)0;
     uint digit_1 = (uint)0;
-    bool local_33 = (bool)0;
+    bool local_34 = (bool)0;
     uint out_2 = (uint)0;
 
-    uint b_17 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
+    uint b_18 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
     const uint2 _e9 = nyq_u64_(d_4);
-    const uint2 _e13 = nyq_hash3_(seed_21, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
+    const uint2 _e13 = nyq_hash3_(seed_22, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
     rest = a_17;
-    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
         uint _e30 = den_4.y;
         if ((_e30 == 0u)) {
         } else {
@@ -3391,14 +3534,14 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_21, bool affine
             uint _e40 = rest.x;
             if (!((_e40 != 0u))) {
                 uint _e47 = rest.y;
-                local_33 = (_e47 != 0u);
+                local_34 = (_e47 != 0u);
             } else {
-                local_33 = true;
+                local_34 = true;
             }
-            bool _e51 = local_33;
+            bool _e51 = local_34;
             if (_e51) {
                 uint2 _e52 = rest;
-                const uint3 _e53 = nyq_divmod64_small(_e52, b_17);
+                const uint3 _e53 = nyq_divmod64_small(_e52, b_18);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
@@ -3415,38 +3558,38 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_21, bool affine
             uint2 _e69 = next;
             rest = _e69;
             uint2 _e70 = pow_;
-            const uint2 _e71 = nyq_u64_(b_17);
+            const uint2 _e71 = nyq_u64_(b_18);
             const uint2 _e72 = nyq_mul64_(_e70, _e71);
             pow_ = _e72;
             uint _e73 = level;
             level = (_e73 + 1u);
             out_2 = ZeroValueuint();
             if (affine) {
-                const uint3 _e78 = nyq_mul64x32_(_e68, b_17);
-                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_17 - 1u));
+                const uint3 _e78 = nyq_mul64x32_(_e68, b_18);
+                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_18 - 1u));
                 uint m_7 = (1u + _e83.z);
                 uint _e86 = digit_1;
-                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_17);
+                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_18);
             } else {
-                if ((b_17 <= 16u)) {
-                    const uint2 _e93 = nyq_packed_table(b_17, _e68);
+                if ((b_18 <= 16u)) {
+                    const uint2 _e93 = nyq_packed_table(b_18, _e68);
                     uint _e95 = digit_1;
                     const uint _e97 = nyq_nibble(_e93, (4u * _e95));
                     out_2 = _e97;
                 } else {
-                    const NyqPermutation _e101 = nyq_permutation(b_17, (_e68.x ^ _e68.y));
+                    const NyqPermutation _e101 = nyq_permutation(b_18, (_e68.x ^ _e68.y));
                     uint _e102 = digit_1;
                     const uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             uint2 _e104 = num_4;
-            const uint3 _e105 = nyq_mul64x32_(_e104, b_17);
+            const uint3 _e105 = nyq_mul64x32_(_e104, b_18);
             uint _e107 = out_2;
             const uint2 _e110 = nyq_add64_(_e105.xy, uint2(_e107, 0u));
             num_4 = _e110;
             uint2 _e111 = den_4;
-            const uint3 _e112 = nyq_mul64x32_(_e111, b_17);
+            const uint3 _e112 = nyq_mul64x32_(_e111, b_18);
             den_4 = _e112.xy;
         }
     }
@@ -3456,43 +3599,43 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_21, bool affine
     return nyqfraction_2;
 }
 
-float nyq_radical_inverse_scrambled(uint dim_30, uint2 a_18, uint2 seed_22, uint how_2)
+float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint how_2)
 {
-    NyqRounding r_12 = (NyqRounding)0;
-    bool local_34 = (bool)0;
+    NyqRounding r_13 = (NyqRounding)0;
     bool local_35 = (bool)0;
     bool local_36 = (bool)0;
+    bool local_37 = (bool)0;
     NyqFraction f = (NyqFraction)0;
     uint bits_2 = (uint)0;
 
-    uint d_25 = naga_mod(dim_30, NYQ_PRIME_COUNT);
-    uint t_8 = (NYQ_HALTON_WORDS * d_25);
+    uint d_26 = naga_mod(dim_32, NYQ_PRIME_COUNT);
+    uint t_8 = (NYQ_HALTON_WORDS * d_26);
     if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-        local_34 = (d_25 == 0u);
+        local_35 = (d_26 == 0u);
     } else {
-        local_34 = false;
+        local_35 = false;
     }
-    bool _e16 = local_34;
+    bool _e16 = local_35;
     if (_e16) {
-        r_12 = ConstructNyqRounding(uint4(reversebits(a_18.y), reversebits(a_18.x), 0u, 0u), int(-64), 0u, 0u, 0u);
+        r_13 = ConstructNyqRounding(uint4(reversebits(a_18.y), reversebits(a_18.x), 0u, 0u), int(-64), 0u, 0u, 0u);
     } else {
         if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-            local_35 = (a_18.y == 0u);
-        } else {
-            local_35 = false;
-        }
-        bool _e37 = local_35;
-        if (_e37) {
-            uint _e45 = asuint(nyq_halton_bases.Load((t_8 + 1u)*4));
-            local_36 = (a_18.x < _e45);
+            local_36 = (a_18.y == 0u);
         } else {
             local_36 = false;
         }
-        bool _e48 = local_36;
+        bool _e37 = local_36;
+        if (_e37) {
+            uint _e45 = asuint(nyq_halton_bases.Load((t_8 + 1u)*4));
+            local_37 = (a_18.x < _e45);
+        } else {
+            local_37 = false;
+        }
+        bool _e48 = local_37;
         if (_e48) {
             if ((a_18.x != 0u)) {
                 const NyqRounding _e53 = nyq_phi_short(t_8, a_18.x);
-                r_12 = _e53;
+                r_13 = _e53;
             }
         } else {
             if ((how_2 == NYQ_SCRAMBLE_NONE)) {
@@ -3500,10 +3643,10 @@ float nyq_radical_inverse_scrambled(uint dim_30, uint2 a_18, uint2 seed_22, uint
                 f = _e57;
             } else {
                 if ((how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-                    const NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_22);
+                    const NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23);
                     f = _e60;
                 } else {
-                    const NyqFraction _e63 = nyq_nested_fraction(d_25, a_18, seed_22, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    const NyqFraction _e63 = nyq_nested_fraction(d_26, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
                     f = _e63;
                 }
             }
@@ -3511,20 +3654,20 @@ float nyq_radical_inverse_scrambled(uint dim_30, uint2 a_18, uint2 seed_22, uint
             uint4 _e67 = f.den;
             uint _e69 = f.twice;
             const NyqRounding _e72 = nyq_divide(_e65, _e67, (_e69 != 0u));
-            r_12 = _e72;
+            r_13 = _e72;
             uint _e75 = f.below;
-            r_12.below = _e75;
+            r_13.below = _e75;
         }
     }
-    uint4 _e77 = r_12.x;
-    int _e79 = r_12.e;
-    uint _e81 = r_12.sticky;
-    uint _e85 = r_12.twice;
+    uint4 _e77 = r_13.x;
+    int _e79 = r_13.e;
+    uint _e81 = r_13.sticky;
+    uint _e85 = r_13.twice;
     const uint _e88 = nyq_round_bits(_e77, _e79, (_e81 != 0u), (_e85 != 0u));
     bits_2 = _e88;
-    uint _e91 = r_12.below;
+    uint _e91 = r_13.below;
     if ((_e91 != 0u)) {
-        uint _e95 = r_12.twice;
+        uint _e95 = r_13.twice;
         if ((_e95 == 0u)) {
             uint _e98 = bits_2;
             bits_2 = min(_e98, NYQ_BELOW_ONE_BITS);
@@ -3536,27 +3679,27 @@ float nyq_radical_inverse_scrambled(uint dim_30, uint2 a_18, uint2 seed_22, uint
     return asfloat(min(_e104, NYQ_BELOW_ONE_BITS));
 }
 
-float nyq_radical_inverse(uint dim_31, uint2 a_19)
+float nyq_radical_inverse(uint dim_33, uint2 a_19)
 {
-    const float _e6 = nyq_radical_inverse_scrambled(dim_31, a_19, uint2(0u, 0u), NYQ_SCRAMBLE_NONE);
+    const float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, uint2(0u, 0u), NYQ_SCRAMBLE_NONE);
     return _e6;
 }
 
-float nyq_scrambled_radical_inverse(uint dim_32, uint2 a_20, uint2 seed_23)
+float nyq_scrambled_radical_inverse(uint dim_34, uint2 a_20, uint2 seed_24)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_32, a_20, seed_23, NYQ_SCRAMBLE_PERMUTE_DIGITS);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
     return _e4;
 }
 
-float nyq_owen_scrambled_radical_inverse(uint dim_33, uint2 a_21, uint2 seed_24)
+float nyq_owen_scrambled_radical_inverse(uint dim_35, uint2 a_21, uint2 seed_25)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_33, a_21, seed_24, NYQ_SCRAMBLE_OWEN);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN);
     return _e4;
 }
 
-float nyq_fast_owen_scrambled_radical_inverse(uint dim_34, uint2 a_22, uint2 seed_25)
+float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uint2 a_22, uint2 seed_26)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_34, a_22, seed_25, NYQ_SCRAMBLE_FAST_OWEN);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
     return _e4;
 }
 
@@ -3568,15 +3711,15 @@ NyqHalton ConstructNyqHalton(uint arg0, uint arg1, uint2 arg2) {
     return ret;
 }
 
-NyqHalton nyq_halton(uint dims_2, uint scramble_2, uint2 seed_26)
+NyqHalton nyq_halton(uint dims_3, uint scramble_2, uint2 seed_27)
 {
-    const NyqHalton nyqhalton = ConstructNyqHalton(dims_2, scramble_2, seed_26);
+    const NyqHalton nyqhalton = ConstructNyqHalton(dims_3, scramble_2, seed_27);
     return nyqhalton;
 }
 
-float nyq_halton_sample(NyqHalton h_2, uint2 index_13, uint dim_35)
+float nyq_halton_sample(NyqHalton h_2, uint2 index_15, uint dim_37)
 {
-    const float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_35, h_2.dims), index_13, h_2.seed, h_2.scramble);
+    const float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_37, h_2.dims), index_15, h_2.seed, h_2.scramble);
     return _e7;
 }
 
@@ -3589,7 +3732,7 @@ int naga_mod(int lhs, int rhs) {
     return lhs - (lhs / divisor) * divisor;
 }
 
-uint nyq_mod_inverse(uint a_23, uint n_3)
+uint nyq_mod_inverse(uint a_23, uint n_5)
 {
     int r0_ = (int)0;
     int r1_ = (int)0;
@@ -3597,12 +3740,12 @@ uint nyq_mod_inverse(uint a_23, uint n_3)
     int t1_ = int(1);
     int m_3 = (int)0;
 
-    r0_ = int(n_3);
-    r1_ = int(naga_mod(a_23, n_3));
-    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+    r0_ = int(n_5);
+    r1_ = int(naga_mod(a_23, n_5));
+    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         int _e11 = r1_;
         if ((_e11 != int(0))) {
         } else {
@@ -3627,26 +3770,26 @@ uint nyq_mod_inverse(uint a_23, uint n_3)
         }
     }
     int _e27 = t0_;
-    m_3 = naga_mod(_e27, int(n_3));
+    m_3 = naga_mod(_e27, int(n_5));
     int _e31 = m_3;
     if ((_e31 < int(0))) {
         int _e34 = m_3;
-        m_3 = asint(asuint(_e34) + asuint(int(n_3)));
+        m_3 = asint(asuint(_e34) + asuint(int(n_5)));
     }
     int _e37 = m_3;
     return uint(_e37);
 }
 
-uint2 nyq_halton_scale(uint extent, uint b_12)
+uint2 nyq_halton_scale(uint extent, uint b_13)
 {
     uint scale_1 = 1u;
-    uint e = 0u;
+    uint e_1 = 0u;
 
     uint goal = min(extent, 128u);
-    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
-        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
+        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
         uint _e8 = scale_1;
         if ((_e8 < goal)) {
         } else {
@@ -3654,13 +3797,13 @@ uint2 nyq_halton_scale(uint extent, uint b_12)
         }
         {
             uint _e10 = scale_1;
-            scale_1 = (_e10 * b_12);
-            uint _e12 = e;
-            e = (_e12 + 1u);
+            scale_1 = (_e10 * b_13);
+            uint _e12 = e_1;
+            e_1 = (_e12 + 1u);
         }
     }
     uint _e15 = scale_1;
-    uint _e16 = e;
+    uint _e16 = e_1;
     return uint2(_e15, _e16);
 }
 
@@ -3678,7 +3821,7 @@ NyqHaltonSampler ConstructNyqHaltonSampler(uint arg0, uint arg1, uint2 arg2, uin
     return ret;
 }
 
-NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_3, uint2 seed_27)
+NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_3, uint2 seed_28)
 {
     const uint2 _e6 = nyq_halton_scale(resolution_2.x, 2u);
     const uint2 _e9 = nyq_halton_scale(resolution_2.y, 3u);
@@ -3686,30 +3829,30 @@ NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_
     const uint _e16 = nyq_mod_inverse(_e9.x, _e6.x);
     const uint _e21 = nyq_mod_inverse(_e6.x, _e9.x);
     uint2 basis = uint2((_e9.x * _e16), (_e6.x * _e21));
-    const NyqHaltonSampler nyqhaltonsampler = ConstructNyqHaltonSampler(spp, scramble_3, seed_27, uint2(_e6.y, _e9.y), scales, (_e6.x * _e9.x), basis, uint2(0u, 0u), 0u);
+    const NyqHaltonSampler nyqhaltonsampler = ConstructNyqHaltonSampler(spp, scramble_3, seed_28, uint2(_e6.y, _e9.y), scales, (_e6.x * _e9.x), basis, uint2(0u, 0u), 0u);
     return nyqhaltonsampler;
 }
 
-uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_4)
+uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_6)
 {
     uint inverse_1 = (uint)0;
-    uint index_14 = 0u;
+    uint index_16 = 0u;
     uint done = 0u;
-    uint k_13 = (uint)0;
+    uint k_14 = (uint)0;
 
     inverse_1 = inverse_in;
-    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
     bool loop_init_22 = true;
     while(true) {
-        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
-        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+        if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         if (!loop_init_22) {
             uint _e32 = done;
             done = (_e32 + 1u);
         }
         loop_init_22 = false;
         uint _e8 = done;
-        if ((_e8 < n_4)) {
+        if ((_e8 < n_6)) {
         } else {
             break;
         }
@@ -3717,39 +3860,39 @@ uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_4)
             uint _e10 = inverse_1;
             if ((_e10 == 0u)) {
                 uint _e13 = done;
-                k_13 = _e13;
-                uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
+                k_14 = _e13;
+                uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
                 bool loop_init_23 = true;
                 while(true) {
-                    if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
-                    loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+                    if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
+                    loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
                     if (!loop_init_23) {
-                        uint _e20 = k_13;
-                        k_13 = (_e20 + 1u);
+                        uint _e20 = k_14;
+                        k_14 = (_e20 + 1u);
                     }
                     loop_init_23 = false;
-                    uint _e15 = k_13;
-                    if ((_e15 < n_4)) {
+                    uint _e15 = k_14;
+                    if ((_e15 < n_6)) {
                     } else {
                         break;
                     }
                     {
-                        uint _e17 = index_14;
-                        index_14 = (_e17 * b_13);
+                        uint _e17 = index_16;
+                        index_16 = (_e17 * b_14);
                     }
                 }
-                uint _e22 = index_14;
+                uint _e22 = index_16;
                 return _e22;
             }
             uint _e23 = inverse_1;
-            uint q_9 = naga_div(_e23, b_13);
-            uint _e25 = index_14;
+            uint q_9 = naga_div(_e23, b_14);
+            uint _e25 = index_16;
             uint _e27 = inverse_1;
-            index_14 = ((_e25 * b_13) + (_e27 - (q_9 * b_13)));
+            index_16 = ((_e25 * b_14) + (_e27 - (q_9 * b_14)));
             inverse_1 = q_9;
         }
     }
-    uint _e34 = index_14;
+    uint _e34 = index_16;
     return _e34;
 }
 
@@ -3773,73 +3916,73 @@ uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_72, uint2 pixel_18, uint
     return _e35;
 }
 
-float nyq_halton_sampler_value(inout NyqHaltonSampler s_73, uint dim_36)
+float nyq_halton_sampler_value(inout NyqHaltonSampler s_73, uint dim_38)
 {
     uint2 a_24 = (uint2)0;
 
-    uint d_26 = naga_mod(dim_36, NYQ_PRIME_COUNT);
-    uint2 index_15 = s_73.index;
-    a_24 = index_15;
-    if ((d_26 == 0u)) {
-        uint e_4 = s_73.exponents.x;
-        if ((e_4 != 0u)) {
-            const uint2 _e14 = nyq_shr64_(index_15, e_4);
+    uint d_27 = naga_mod(dim_38, NYQ_PRIME_COUNT);
+    uint2 index_17 = s_73.index;
+    a_24 = index_17;
+    if ((d_27 == 0u)) {
+        uint e_6 = s_73.exponents.x;
+        if ((e_6 != 0u)) {
+            const uint2 _e14 = nyq_shr64_(index_17, e_6);
             a_24 = _e14;
         }
     } else {
-        if ((d_26 == 1u)) {
+        if ((d_27 == 1u)) {
             uint _e19 = s_73.scales.y;
-            const uint3 _e20 = nyq_divmod64_small(index_15, _e19);
+            const uint3 _e20 = nyq_divmod64_small(index_17, _e19);
             a_24 = _e20.xy;
         }
     }
     uint2 _e22 = a_24;
     uint2 _e24 = s_73.seed;
     uint _e26 = s_73.scramble;
-    const float _e27 = nyq_radical_inverse_scrambled(d_26, _e22, _e24, _e26);
+    const float _e27 = nyq_radical_inverse_scrambled(d_27, _e22, _e24, _e26);
     return _e27;
 }
 
-void nyq_halton_sampler_start(inout NyqHaltonSampler s_74, uint2 pixel_19, uint sample_index_17, uint dim_37)
+void nyq_halton_sampler_start(inout NyqHaltonSampler s_74, uint2 pixel_19, uint sample_index_17, uint dim_39)
 {
     const uint2 _e5 = nyq_halton_sampler_index(s_74, pixel_19, sample_index_17);
     s_74.index = _e5;
-    s_74.dim = dim_37;
+    s_74.dim = dim_39;
     return;
 }
 
 float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_75)
 {
-    uint d_27 = s_75.dim;
-    s_75.dim = (d_27 + 1u);
-    const float _e6 = nyq_halton_sampler_value(s_75, d_27);
+    uint d_28 = s_75.dim;
+    s_75.dim = (d_28 + 1u);
+    const float _e6 = nyq_halton_sampler_value(s_75, d_28);
     return _e6;
 }
 
-float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_76, uint dim_38)
+float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_76, uint dim_40)
 {
     float2 v_6 = float2(0.0, 0.0);
-    uint k_14 = 0u;
+    uint k_15 = 0u;
 
-    uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
     bool loop_init_24 = true;
     while(true) {
-        if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
-        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
+        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
         if (!loop_init_24) {
-            uint _e17 = k_14;
-            k_14 = (_e17 + 1u);
+            uint _e17 = k_15;
+            k_15 = (_e17 + 1u);
         }
         loop_init_24 = false;
-        uint _e8 = k_14;
+        uint _e8 = k_15;
         if ((_e8 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e11 = k_14;
-            uint _e13 = k_14;
-            const float _e15 = nyq_halton_sampler_value(s_76, (dim_38 + _e13));
+            uint _e11 = k_15;
+            uint _e13 = k_15;
+            const float _e15 = nyq_halton_sampler_value(s_76, (dim_40 + _e13));
             v_6[min(uint(_e11), 1u)] = _e15;
         }
     }
@@ -3849,9 +3992,9 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_76, uint dim_38)
 
 float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_77)
 {
-    uint d_28 = s_77.dim;
-    s_77.dim = (d_28 + 2u);
-    const float2 _e6 = nyq_halton_sampler_pair(s_77, d_28);
+    uint d_29 = s_77.dim;
+    s_77.dim = (d_29 + 2u);
+    const float2 _e6 = nyq_halton_sampler_pair(s_77, d_29);
     return _e6;
 }
 
@@ -3870,11 +4013,11 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_79, ui
     uint d_5 = 0u;
 
     nyq_halton_sampler_start(s_79, pixel_20, sample_index_18, 5u);
-    uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
     bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
-        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+        if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
         if (!loop_init_25) {
             uint _e25 = d_5;
             d_5 = (_e25 + 1u);
@@ -3917,13 +4060,13 @@ uint4 nyq_fill_request(uint i_16)
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_9 = (_e11 + i_16);
+    uint n_11 = (_e11 + i_16);
     uint _e15 = nyq_job.spp;
-    uint pixel_21 = naga_div(n_9, _e15);
+    uint pixel_21 = naga_div(n_11, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_9, _e29), 5u);
+    return uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_11, _e29), 5u);
 }
 
 void nyq_fill_camera(uint out_3, NyqCameraSample c_5)
@@ -3960,6 +4103,7 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
     uint k_2 = 0u;
     uint k_3 = 0u;
     uint k_4 = 0u;
+    uint k_5 = 0u;
 
     uint i_17 = id.x;
     uint _e4 = nyq_job.count;
@@ -4088,11 +4232,11 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e156 = nyq_job.scramble;
             uint2 _e161 = nyq_job.seed;
             const NyqSobol _e162 = nyq_sobol(_e153, (_e156 != 0u), _e161);
-            uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
             bool loop_init_26 = true;
             while(true) {
-                if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
-                loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
                 if (!loop_init_26) {
                     uint _e190 = k;
                     k = (_e190 + 1u);
@@ -4121,11 +4265,11 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e197 = nyq_job.seed;
             const NyqOwenSobol _e198 = nyq_owen_sobol(_e194, _e197);
             const float4 _e201 = nyq_owen_sobol_sample_4d(_e198, _e6.z, _e6.w);
-            uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
             bool loop_init_27 = true;
             while(true) {
-                if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
-                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
                 if (!loop_init_27) {
                     uint _e226 = k_1;
                     k_1 = (_e226 + 1u);
@@ -4152,11 +4296,11 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e230 = nyq_job.scramble;
             uint2 _e235 = nyq_job.seed;
             const NyqPmj02_ _e236 = nyq_pmj02_((_e230 != 0u), _e235);
-            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
             bool loop_init_28 = true;
             while(true) {
-                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
-                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
                 if (!loop_init_28) {
                     uint _e264 = k_2;
                     k_2 = (_e264 + 1u);
@@ -4186,11 +4330,11 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e274 = nyq_job.seed;
             const NyqHalton _e275 = nyq_halton(_e268, _e271, _e274);
             uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
-            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+            uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
             bool loop_init_29 = true;
             while(true) {
-                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
                 if (!loop_init_29) {
                     uint _e309 = k_3;
                     k_3 = (_e309 + 1u);
@@ -4203,34 +4347,74 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
                 }
                 {
                     uint _e292 = k_3;
-                    uint2 index_16 = uint2(_e6.z, ((_e292 >= 4u) ? high_2 : 0u));
+                    uint2 index_18 = uint2(_e6.z, ((_e292 >= 4u) ? high_2 : 0u));
                     uint _e298 = k_3;
                     uint _e302 = k_3;
-                    const float _e306 = nyq_halton_sample(_e275, index_16, (_e6.w + (_e302 & 3u)));
+                    const float _e306 = nyq_halton_sample(_e275, index_18, (_e6.w + (_e302 & 3u)));
                     nyq_values.Store((out_5 + _e298)*4, asuint(asuint(_e306)));
                 }
             }
             return;
         }
-        default: {
-            uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+        case 20u: {
+            uint _e313 = nyq_job.lattice;
+            uint _e316 = nyq_job.spp;
+            uint _e319 = nyq_job.generator;
+            uint _e322 = nyq_job.dims;
+            uint _e325 = nyq_job.scramble;
+            uint2 _e330 = nyq_job.seed;
+            const NyqLattice _e331 = nyq_lattice(_e313, _e316, _e319, _e322, (_e325 != 0u), _e330);
+            uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
             bool loop_init_30 = true;
             while(true) {
-                if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
-                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+                if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+                loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
                 if (!loop_init_30) {
-                    uint _e322 = k_4;
-                    k_4 = (_e322 + 1u);
+                    uint _e348 = k_4;
+                    k_4 = (_e348 + 1u);
                 }
                 loop_init_30 = false;
-                uint _e313 = k_4;
-                if ((_e313 < 8u)) {
+                uint _e334 = k_4;
+                if ((_e334 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e317 = k_4;
-                    nyq_values.Store((out_5 + _e317)*4, asuint(4294967295u));
+                    uint _e338 = k_4;
+                    uint _e343 = k_4;
+                    const float _e345 = nyq_lattice_sample(_e331, _e6.z, (_e6.w + _e343));
+                    nyq_values.Store((out_5 + _e338)*4, asuint(asuint(_e345)));
+                }
+            }
+            const uint2 _e352 = nyq_lattice_fixed(_e331, _e6.z, _e6.w);
+            const uint2 _e353 = nyq_fixed_to_f64_bits(_e352);
+            const uint2 _e358 = nyq_lattice_fixed(_e331, _e6.z, (_e6.w + 1u));
+            const uint2 _e359 = nyq_fixed_to_f64_bits(_e358);
+            nyq_values.Store((out_5 + 4u)*4, asuint(_e353.x));
+            nyq_values.Store((out_5 + 5u)*4, asuint(_e353.y));
+            nyq_values.Store((out_5 + 6u)*4, asuint(_e359.x));
+            nyq_values.Store((out_5 + 7u)*4, asuint(_e359.y));
+            return;
+        }
+        default: {
+            uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+            bool loop_init_31 = true;
+            while(true) {
+                if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+                if (!loop_init_31) {
+                    uint _e391 = k_5;
+                    k_5 = (_e391 + 1u);
+                }
+                loop_init_31 = false;
+                uint _e382 = k_5;
+                if ((_e382 < 8u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e386 = k_5;
+                    nyq_values.Store((out_5 + _e386)*4, asuint(4294967295u));
                 }
             }
             return;

@@ -102,6 +102,15 @@ struct NyqLatticeSampler {
     uint index;
     uint dim;
 };
+struct NyqLattice {
+    uint lattice;
+    uint n;
+    uint g;
+    uint dims;
+    uint rotated;
+    char _pad5[4];
+    metal::uint2 seed;
+};
 struct type_21 {
     uint inner[5];
 };
@@ -233,6 +242,7 @@ constant uint NYQ_FILL_SOBOL = 16u;
 constant uint NYQ_FILL_OWEN_SOBOL = 17u;
 constant uint NYQ_FILL_PMJ02_ = 18u;
 constant uint NYQ_FILL_HALTON = 19u;
+constant uint NYQ_FILL_LATTICE = 20u;
 
 metal::uint2 nyq_mul_wide(
     uint a,
@@ -382,14 +392,14 @@ float nyq_film_coordinate(
     uint pixel,
     float offset
 ) {
-    float base_1 = static_cast<float>(pixel);
-    float x_24 = base_1 + offset;
-    float edge = base_1 + 1.0;
-    if (x_24 < edge) {
-        return x_24;
+    float base_2 = static_cast<float>(pixel);
+    float x_25 = base_2 + offset;
+    float edge = base_2 + 1.0;
+    if (x_25 < edge) {
+        return x_25;
     }
     float below = as_type<float>(as_type<uint>(edge) - 1u);
-    return (below >= base_1) ? below : base_1;
+    return (below >= base_2) ? below : base_2;
 }
 
 uint nyq_lk_hash(
@@ -432,7 +442,7 @@ uint nyq_owen_scramble(
     uint seed_3
 ) {
     uint out = {};
-    uint k_5 = 0u;
+    uint k_6 = 0u;
     uint _e4 = nyq_mix32_(seed_3 ^ 3144134277u);
     out = x_6;
     uint2 loop_bound = uint2(4294967295u);
@@ -441,25 +451,25 @@ uint nyq_owen_scramble(
         if (metal::all(loop_bound == uint2(0u))) { break; }
         loop_bound -= uint2(loop_bound.y == 0u, 1u);
         if (!loop_init) {
-            uint _e41 = k_5;
-            k_5 = _e41 + 1u;
+            uint _e41 = k_6;
+            k_6 = _e41 + 1u;
         }
         loop_init = false;
-        uint _e8 = k_5;
+        uint _e8 = k_6;
         if (_e8 < 32u) {
         } else {
             break;
         }
         {
-            uint _e12 = k_5;
-            uint _e18 = k_5;
+            uint _e12 = k_6;
+            uint _e18 = k_6;
             uint prefix = (_e18 == 0u) ? 0u : (x_6 >> ((32u - _e12) & 31u));
-            uint _e23 = k_5;
+            uint _e23 = k_6;
             metal::uint2 word = metal::uint2((1u << _e23) | prefix, _e4);
             metal::uint2 _e27 = nyq_mix64_(word);
             if ((_e27.y >> 31u) == 1u) {
                 uint _e33 = out;
-                uint _e36 = k_5;
+                uint _e36 = k_6;
                 out = _e33 ^ (1u << (31u - _e36));
             }
         }
@@ -504,7 +514,7 @@ uint nyq_sobol_u32_(
 ) {
     uint v_1 = 0u;
     uint bits = {};
-    uint base_2 = naga_mod(dim, NYQ_SOBOL_DIMS) * 32u;
+    uint base_3 = naga_mod(dim, NYQ_SOBOL_DIMS) * 32u;
     bits = index_1;
     uint2 loop_bound_1 = uint2(4294967295u);
     while(true) {
@@ -518,7 +528,7 @@ uint nyq_sobol_u32_(
         {
             uint _e12 = v_1;
             uint _e14 = bits;
-            uint _e18 = nyq_sobol_matrices[base_2 + metal::ctz(_e14)];
+            uint _e18 = nyq_sobol_matrices[base_3 + metal::ctz(_e14)];
             v_1 = _e12 ^ _e18;
             uint _e20 = bits;
             uint _e21 = bits;
@@ -624,7 +634,7 @@ NyqSobolSampler nyq_sobol_sampler(
         metal::uint2 _e52 = nyq_hash2_(_e49, _e51);
         shift_1 = metal::uint2(_e46.x & mask, _e52.x & mask);
     }
-    uint n_5 = 2u * m_4;
+    uint n_7 = 2u * m_4;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -636,7 +646,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_1 = false;
         uint _e61 = c_1;
-        if (_e61 < n_5) {
+        if (_e61 < n_7) {
         } else {
             break;
         }
@@ -660,7 +670,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_2 = false;
                 uint _e91 = i;
-                if (_e91 < n_5) {
+                if (_e91 < n_7) {
                 } else {
                     break;
                 }
@@ -690,7 +700,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_3 = false;
         uint _e125 = i_1;
-        if (_e125 < n_5) {
+        if (_e125 < n_7) {
         } else {
             break;
         }
@@ -712,7 +722,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_4 = false;
         uint _e140 = col;
-        if (_e140 < n_5) {
+        if (_e140 < n_7) {
         } else {
             break;
         }
@@ -732,7 +742,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_5 = false;
                 uint _e146 = r_1;
-                if (_e146 < n_5) {
+                if (_e146 < n_7) {
                 } else {
                     break;
                 }
@@ -767,7 +777,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_6 = false;
                 uint _e174 = r_2;
-                if (_e174 < n_5) {
+                if (_e174 < n_7) {
                 } else {
                     break;
                 }
@@ -805,7 +815,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_7 = false;
         uint _e209 = i_2;
-        if (_e209 < n_5) {
+        if (_e209 < n_7) {
         } else {
             break;
         }
@@ -822,7 +832,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_8 = false;
                 uint _e213 = r_3;
-                if (_e213 < n_5) {
+                if (_e213 < n_7) {
                 } else {
                     break;
                 }
@@ -904,9 +914,9 @@ uint nyq_sobol_sampler_invert(
         }
         {
             uint _e8 = t;
-            uint k_15 = metal::ctz(_e8);
+            uint k_16 = metal::ctz(_e8);
             four = metal::uint4 {};
-            switch(k_15 >> 2u) {
+            switch(k_16 >> 2u) {
                 case 0u: {
                     metal::uint4 _e15 = s_13.inverse0_;
                     four = _e15;
@@ -949,7 +959,7 @@ uint nyq_sobol_sampler_invert(
                 }
             }
             uint _e30 = low;
-            uint _e34 = four[k_15 & 3u];
+            uint _e34 = four[k_16 & 3u];
             low = _e30 ^ _e34;
             uint _e36 = t;
             uint _e37 = t;
@@ -992,7 +1002,7 @@ float nyq_sobol_sampler_value(
     bool local_1 = {};
     bool local_2 = {};
     uint d_7 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
-    metal::uint2 seed_28 = s_15.seed;
+    metal::uint2 seed_29 = s_15.seed;
     uint _e7 = s_15.index;
     uint _e8 = nyq_sobol_u32_(_e7, d_7, nyq_sobol_matrices, _buffer_sizes);
     v_3 = _e8;
@@ -1016,7 +1026,7 @@ float nyq_sobol_sampler_value(
         bool _e37 = local_2;
         uint w_1 = _e37 ? (_e22 << (_e24 & 31u)) : _e21;
         metal::uint2 _e39 = nyq_u64_(d_7);
-        metal::uint2 _e40 = nyq_hash2_(seed_28, _e39);
+        metal::uint2 _e40 = nyq_hash2_(seed_29, _e39);
         uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
@@ -1031,19 +1041,19 @@ float nyq_sobol_sampler_value(
             if (how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
                 uint _e58 = v_3;
                 metal::uint2 _e59 = nyq_u64_(d_7);
-                metal::uint2 _e60 = nyq_hash2_(seed_28, _e59);
-                v_3 = _e58 ^ (metal::all(seed_28 == metal::uint2(0u, 0u)) ? 0u : _e60.x);
+                metal::uint2 _e60 = nyq_hash2_(seed_29, _e59);
+                v_3 = _e58 ^ (metal::all(seed_29 == metal::uint2(0u, 0u)) ? 0u : _e60.x);
             } else {
                 uint _e70 = v_3;
                 metal::uint2 _e71 = nyq_u64_(d_7);
-                metal::uint2 _e72 = nyq_hash2_(seed_28, _e71);
+                metal::uint2 _e72 = nyq_hash2_(seed_29, _e71);
                 v_3 = _e70 ^ _e72.y;
             }
         } else {
             uint _e75 = v_3;
             metal::uint2 _e76 = nyq_u64_(d_7);
-            metal::uint2 _e77 = nyq_hash2_(seed_28, _e76);
-            v_3 = _e75 ^ (metal::all(seed_28 == metal::uint2(0u, 0u)) ? 0u : _e77.x);
+            metal::uint2 _e77 = nyq_hash2_(seed_29, _e76);
+            v_3 = _e75 ^ (metal::all(seed_29 == metal::uint2(0u, 0u)) ? 0u : _e77.x);
         }
     }
     uint _e87 = v_3;
@@ -1191,7 +1201,7 @@ metal::float4 nyq_owen_sobol_sample_4d(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float4 out_1 = {};
-    uint k_6 = 0u;
+    uint k_7 = 0u;
     uint _e4 = nyq_shuffle_rev(index_7, s_23.shuffle_seed);
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_9 = true;
@@ -1199,19 +1209,19 @@ metal::float4 nyq_owen_sobol_sample_4d(
         if (metal::all(loop_bound_11 == uint2(0u))) { break; }
         loop_bound_11 -= uint2(loop_bound_11.y == 0u, 1u);
         if (!loop_init_9) {
-            uint _e22 = k_6;
-            k_6 = _e22 + 1u;
+            uint _e22 = k_7;
+            k_7 = _e22 + 1u;
         }
         loop_init_9 = false;
-        uint _e8 = k_6;
+        uint _e8 = k_7;
         if (_e8 < 4u) {
         } else {
             break;
         }
         {
-            uint _e11 = k_6;
+            uint _e11 = k_7;
             uint d_11 = naga_mod(first_dim + _e11, s_23.dims);
-            uint _e15 = k_6;
+            uint _e15 = k_7;
             uint _e18 = nyq_dim_seed(s_23.key, d_11);
             uint _e19 = nyq_owen_sobol_rev(_e4, d_11, _e18, nyq_sobol_matrices, _buffer_sizes);
             float _e20 = nyq_rev_to_f32_(_e19);
@@ -1427,9 +1437,9 @@ metal::uint2 nyq_zsobol_pixel_word(
     metal::uint2 key_2
 ) {
     metal::uint2 _e3 = nyq_shl64_(key_2, 17u);
-    metal::uint2 rotated = _e3 | metal::uint2(key_2.y >> 15u, 0u);
+    metal::uint2 rotated_1 = _e3 | metal::uint2(key_2.y >> 15u, 0u);
     metal::uint2 _e10 = nyq_u64_(pixel_morton);
-    metal::uint2 _e12 = nyq_mix64_(_e10 ^ rotated);
+    metal::uint2 _e12 = nyq_mix64_(_e10 ^ rotated_1);
     return _e12;
 }
 
@@ -1470,12 +1480,12 @@ uint nyq_zsobol_index(
         }
         {
             uint _e11 = i_3;
-            uint shift_4 = (2u * (_e11 - 1u)) + s_31.odd;
-            uint digit_2 = (morton >> shift_4) & 3u;
+            uint shift_5 = (2u * (_e11 - 1u)) + s_31.odd;
+            uint digit_2 = (morton >> shift_5) & 3u;
             uint _e20 = index_8;
-            uint _e23 = nyq_shr(morton, shift_4 + 2u);
+            uint _e23 = nyq_shr(morton, shift_5 + 2u);
             uint _e24 = nyq_zsobol_pixel_node(_e23, key_3);
-            uint _e25 = nyq_permuted_digit(_e24, digit_2, shift_4);
+            uint _e25 = nyq_permuted_digit(_e24, digit_2, shift_5);
             index_8 = _e20 | _e25;
         }
     }
@@ -1500,13 +1510,13 @@ uint nyq_zsobol_index(
         }
         {
             uint _e43 = i_4;
-            uint shift_5 = (2u * (_e43 - 1u)) + s_31.odd;
-            uint digit_3 = (sample >> shift_5) & 3u;
-            uint _e54 = nyq_shr(sample, shift_5 + 2u);
-            metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_5);
+            uint shift_6 = (2u * (_e43 - 1u)) + s_31.odd;
+            uint digit_3 = (sample >> shift_6) & 3u;
+            uint _e54 = nyq_shr(sample, shift_6 + 2u);
+            metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_6);
             uint _e57 = nyq_one_of_24_(_e55.y);
             uint _e58 = index_8;
-            uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_.inner[_e57], digit_3, shift_5);
+            uint _e61 = nyq_permuted_digit(NYQ_PERMUTATIONS_4_.inner[_e57], digit_3, shift_6);
             index_8 = _e58 | _e61;
         }
     }
@@ -1673,9 +1683,9 @@ uint nyq_pcg32_next(
     g.state = _e7;
     metal::uint2 _e9 = nyq_shr64_(old, 18u);
     metal::uint2 _e12 = nyq_shr64_(_e9 ^ old, 27u);
-    uint x_25 = _e12.x;
+    uint x_26 = _e12.x;
     uint rot = old.y >> 27u;
-    return (x_25 >> rot) | (x_25 << ((32u - rot) & 31u));
+    return (x_26 >> rot) | (x_26 << ((32u - rot) & 31u));
 }
 
 void nyq_pcg32_advance(
@@ -1980,14 +1990,14 @@ float nyq_lattice_value(
 ) {
     metal::uint2 base = {};
     uint g_6 = {};
-    uint n_6 = s_46.n;
+    uint n_8 = s_46.n;
     uint _e5 = s_46.index;
-    uint k_16 = naga_mod(_e5, n_6);
+    uint k_17 = naga_mod(_e5, n_8);
     uint component = naga_mod(dim_19, 2u);
     uint _e11 = s_46.lattice;
     switch(_e11) {
         case 2u: {
-            metal::uint2 _e15 = nyq_u64_(k_16);
+            metal::uint2 _e15 = nyq_u64_(k_17);
             metal::uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA.inner[component]);
             metal::uint2 _e19 = nyq_add64_(metal::uint2(0u, 2147483648u), _e18);
             base = _e19;
@@ -1997,12 +2007,12 @@ float nyq_lattice_value(
             uint _e21 = s_46.g;
             g_6 = _e21;
             if (component == 0u) {
-                g_6 = naga_mod(1u, n_6);
+                g_6 = naga_mod(1u, n_8);
             }
             uint _e27 = g_6;
-            metal::uint2 _e28 = nyq_mul_wide(k_16, _e27);
-            uint _e29 = nyq_mod64_(_e28, n_6);
-            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_6);
+            metal::uint2 _e28 = nyq_mul_wide(k_17, _e27);
+            uint _e29 = nyq_mod64_(_e28, n_8);
+            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_8);
             base = _e30;
             break;
         }
@@ -2075,33 +2085,166 @@ NyqCameraSample nyq_lattice_camera_sample(
     return NyqCameraSample {film_3, _e6, _e5};
 }
 
+uint nyq_pow_mod(
+    uint b_6,
+    uint e_in,
+    uint n_2
+) {
+    uint base_1 = {};
+    uint r_7 = {};
+    uint e = {};
+    base_1 = naga_mod(b_6, n_2);
+    r_7 = naga_mod(1u, n_2);
+    e = e_in;
+    uint2 loop_bound_18 = uint2(4294967295u);
+    while(true) {
+        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
+        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        uint _e9 = e;
+        if (_e9 > 0u) {
+        } else {
+            break;
+        }
+        {
+            uint _e12 = e;
+            if ((_e12 & 1u) == 1u) {
+                uint _e17 = r_7;
+                uint _e18 = base_1;
+                metal::uint2 _e19 = nyq_mul_wide(_e17, _e18);
+                uint _e20 = nyq_mod64_(_e19, n_2);
+                r_7 = _e20;
+            }
+            uint _e21 = base_1;
+            uint _e22 = base_1;
+            metal::uint2 _e23 = nyq_mul_wide(_e21, _e22);
+            uint _e24 = nyq_mod64_(_e23, n_2);
+            base_1 = _e24;
+            uint _e25 = e;
+            e = _e25 >> 1u;
+        }
+    }
+    uint _e28 = r_7;
+    return _e28;
+}
+
+NyqLattice nyq_lattice(
+    uint lattice_1,
+    uint n_3,
+    uint g_7,
+    uint dims_2,
+    bool rotated,
+    metal::uint2 seed_14
+) {
+    return NyqLattice {lattice_1, n_3, g_7, dims_2, rotated ? 1u : 0u, {}, seed_14};
+}
+
+metal::uint2 nyq_lattice_fixed(
+    NyqLattice l,
+    uint index_10,
+    uint dim_21
+) {
+    metal::uint2 shift_4 = metal::uint2(0u, 0u);
+    uint g_8 = {};
+    uint d_19 = naga_mod(dim_21, l.dims);
+    if (l.rotated != 0u) {
+        metal::uint2 _e13 = nyq_u64_(d_19);
+        metal::uint2 _e14 = nyq_hash2_(l.seed, _e13);
+        shift_4 = _e14;
+    }
+    if (l.lattice == NYQ_LATTICE_R2_) {
+        metal::uint2 _e21 = shift_4;
+        metal::uint2 start = (l.rotated != 0u) ? _e21 : metal::uint2(0u, 2147483648u);
+        metal::uint2 _e26 = nyq_u64_(index_10);
+        metal::uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA.inner[d_19 & 1u]);
+        metal::uint2 _e32 = nyq_add64_(start, _e31);
+        return _e32;
+    }
+    g_8 = l.g;
+    if (d_19 == 0u) {
+        g_8 = naga_mod(1u, l.n);
+    } else {
+        if (d_19 > 1u) {
+            uint _e44 = nyq_pow_mod(l.g, d_19, l.n);
+            g_8 = _e44;
+        }
+    }
+    uint _e47 = g_8;
+    metal::uint2 _e48 = nyq_mul_wide(naga_mod(index_10, l.n), _e47);
+    uint _e50 = nyq_mod64_(_e48, l.n);
+    metal::uint2 _e52 = nyq_fixed_ratio(_e50, l.n);
+    metal::uint2 _e53 = shift_4;
+    metal::uint2 _e54 = nyq_add64_(_e52, _e53);
+    return _e54;
+}
+
+float nyq_lattice_sample(
+    NyqLattice l_1,
+    uint index_11,
+    uint dim_22
+) {
+    metal::uint2 _e3 = nyq_lattice_fixed(l_1, index_11, dim_22);
+    float _e4 = nyq_fixed_to_f32_(_e3);
+    return _e4;
+}
+
+metal::uint2 nyq_fixed_to_f64_bits(
+    metal::uint2 x_11
+) {
+    bool local_5 = {};
+    metal::uint2 frac = {};
+    metal::uint2 _e2 = nyq_shr64_(x_11, 11u);
+    if (_e2.x == 0u) {
+        local_5 = _e2.y == 0u;
+    } else {
+        local_5 = false;
+    }
+    bool _e12 = local_5;
+    if (_e12) {
+        return metal::uint2(0u, 0u);
+    }
+    uint e_2 = (_e2.y != 0u) ? (63u - metal::clz(_e2.y)) : (31u - metal::clz(_e2.x));
+    frac = _e2;
+    uint s_80 = 52u - e_2;
+    if (s_80 >= 32u) {
+        frac = metal::uint2(0u, _e2.x << (s_80 - 32u));
+    } else {
+        if (s_80 > 0u) {
+            metal::uint2 _e41 = nyq_shl64_(_e2, s_80);
+            frac = _e41;
+        }
+    }
+    uint _e43 = frac.x;
+    uint _e45 = frac.y;
+    return metal::uint2(_e43, (_e45 & 1048575u) | (((1023u + e_2) - 53u) << 20u));
+}
+
 float nyq_u32_to_f32_(
-    uint x_11
+    uint x_12
 ) {
     uint m = {};
-    bool local_5 = {};
     bool local_6 = {};
-    if (x_11 < 16777216u) {
-        return static_cast<float>(x_11);
+    bool local_7 = {};
+    if (x_12 < 16777216u) {
+        return static_cast<float>(x_12);
     }
-    uint top = 31u - metal::clz(x_11);
+    uint top = 31u - metal::clz(x_12);
     uint drop = top - 23u;
-    m = x_11 >> drop;
-    uint rest_1 = x_11 & ((1u << drop) - 1u);
+    m = x_12 >> drop;
+    uint rest_1 = x_12 & ((1u << drop) - 1u);
     uint half_ = 1u << (drop - 1u);
     if (!((rest_1 > half_))) {
         if (rest_1 == half_) {
             uint _e27 = m;
-            local_6 = (_e27 & 1u) == 1u;
+            local_7 = (_e27 & 1u) == 1u;
         } else {
-            local_6 = false;
+            local_7 = false;
         }
-        bool _e33 = local_6;
-        local_5 = _e33;
+        bool _e33 = local_7;
+        local_6 = _e33;
     } else {
-        local_5 = true;
+        local_6 = true;
     }
-    bool _e35 = local_5;
+    bool _e35 = local_6;
     if (_e35) {
         uint _e36 = m;
         m = _e36 + 1u;
@@ -2111,24 +2254,24 @@ float nyq_u32_to_f32_(
 }
 
 float nyq_recip_f32_(
-    float x_12
+    float x_13
 ) {
-    uint r_7 = 16777216u;
+    uint r_8 = 16777216u;
     uint q_1 = 0u;
     uint i_7 = 0u;
-    bool local_7 = {};
     bool local_8 = {};
-    uint bits_4 = as_type<uint>(x_12);
+    bool local_9 = {};
+    uint bits_4 = as_type<uint>(x_13);
     uint m_6 = (bits_4 & 8388607u) | 8388608u;
-    int e_1 = as_type<int>(as_type<uint>(static_cast<int>(bits_4 >> 23u)) - as_type<uint>(127));
+    int e_3 = as_type<int>(as_type<uint>(static_cast<int>(bits_4 >> 23u)) - as_type<uint>(127));
     if (m_6 == 8388608u) {
-        return as_type<float>(static_cast<uint>(as_type<int>(as_type<uint>(127) - as_type<uint>(e_1))) << 23u);
+        return as_type<float>(static_cast<uint>(as_type<int>(as_type<uint>(127) - as_type<uint>(e_3))) << 23u);
     }
-    uint2 loop_bound_18 = uint2(4294967295u);
+    uint2 loop_bound_19 = uint2(4294967295u);
     bool loop_init_15 = true;
     while(true) {
-        if (metal::all(loop_bound_18 == uint2(0u))) { break; }
-        loop_bound_18 -= uint2(loop_bound_18.y == 0u, 1u);
+        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
+        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
         if (!loop_init_15) {
             uint _e42 = i_7;
             i_7 = _e42 + 1u;
@@ -2142,15 +2285,15 @@ float nyq_recip_f32_(
         {
             uint _e28 = q_1;
             q_1 = _e28 << 1u;
-            uint _e31 = r_7;
+            uint _e31 = r_8;
             if (_e31 >= m_6) {
-                uint _e33 = r_7;
-                r_7 = _e33 - m_6;
+                uint _e33 = r_8;
+                r_8 = _e33 - m_6;
                 uint _e35 = q_1;
                 q_1 = _e35 | 1u;
             }
-            uint _e38 = r_7;
-            r_7 = _e38 << 1u;
+            uint _e38 = r_8;
+            r_8 = _e38 << 1u;
         }
     }
     uint _e44 = q_1;
@@ -2158,33 +2301,33 @@ float nyq_recip_f32_(
     uint _e47 = q_1;
     q_1 = _e47 >> 1u;
     if (round == 1u) {
-        uint _e54 = r_7;
+        uint _e54 = r_8;
         if (!((_e54 != 0u))) {
             uint _e60 = q_1;
-            local_8 = (_e60 & 1u) == 1u;
+            local_9 = (_e60 & 1u) == 1u;
         } else {
-            local_8 = true;
+            local_9 = true;
         }
-        bool _e66 = local_8;
-        local_7 = _e66;
+        bool _e66 = local_9;
+        local_8 = _e66;
     } else {
-        local_7 = false;
+        local_8 = false;
     }
-    bool _e68 = local_7;
+    bool _e68 = local_8;
     if (_e68) {
         uint _e69 = q_1;
         q_1 = _e69 + 1u;
     }
     uint _e79 = q_1;
-    return as_type<float>(((static_cast<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(127) - as_type<uint>(e_1))) - as_type<uint>(1))) << 23u) + _e79) - 8388608u);
+    return as_type<float>(((static_cast<uint>(as_type<int>(as_type<uint>(as_type<int>(as_type<uint>(127) - as_type<uint>(e_3))) - as_type<uint>(1))) << 23u) + _e79) - 8388608u);
 }
 
 metal::uint3 nyq_mul64x32_(
-    metal::uint2 r_8,
-    uint k_7
+    metal::uint2 r_9,
+    uint k_8
 ) {
-    metal::uint2 _e3 = nyq_mul_wide(r_8.x, k_7);
-    metal::uint2 _e5 = nyq_mul_wide(r_8.y, k_7);
+    metal::uint2 _e3 = nyq_mul_wide(r_9.x, k_8);
+    metal::uint2 _e5 = nyq_mul_wide(r_9.y, k_8);
     metal::uint2 _e9 = nyq_add64_(_e5, metal::uint2(_e3.y, 0u));
     return metal::uint3(_e3.x, _e9.x, _e9.y);
 }
@@ -2197,38 +2340,38 @@ uint nyq_nibble(
 }
 
 metal::uint2 nyq_shl64_any(
-    metal::uint2 x_13,
+    metal::uint2 x_14,
     uint s_53
 ) {
     if (s_53 == 0u) {
-        return x_13;
+        return x_14;
     }
     if (s_53 >= 32u) {
-        return metal::uint2(0u, x_13.x << (s_53 - 32u));
+        return metal::uint2(0u, x_14.x << (s_53 - 32u));
     }
-    metal::uint2 _e12 = nyq_shl64_(x_13, s_53);
+    metal::uint2 _e12 = nyq_shl64_(x_14, s_53);
     return _e12;
 }
 
 metal::uint2 nyq_packed_table(
-    uint n_2,
+    uint n_4,
     metal::uint2 r_in
 ) {
     metal::uint2 t_2 = metal::uint2(1985229328u, 4275878552u);
-    metal::uint2 r_9 = {};
-    uint k_8 = {};
-    if (n_2 <= 4u) {
-        if (n_2 < 2u) {
+    metal::uint2 r_10 = {};
+    uint k_9 = {};
+    if (n_4 <= 4u) {
+        if (n_4 < 2u) {
             return metal::uint2(0u, 0u);
         }
         type_21 factorial = type_21 {{1u, 1u, 2u, 6u, 24u}};
-        type_21 start = type_21 {{0u, 0u, 0u, 2u, 8u}};
-        metal::uint3 _e22 = nyq_mul64x32_(r_in, factorial.inner[n_2]);
+        type_21 start_1 = type_21 {{0u, 0u, 0u, 2u, 8u}};
+        metal::uint3 _e22 = nyq_mul64x32_(r_in, factorial.inner[n_4]);
         uint rank = _e22.z;
-        return metal::uint2(NYQ_SMALL_PERMUTATIONS.inner[(start.inner[n_2] + rank) & 31u], 0u);
+        return metal::uint2(NYQ_SMALL_PERMUTATIONS.inner[(start_1.inner[n_4] + rank) & 31u], 0u);
     }
-    if (n_2 < 16u) {
-        uint keep = 4u * n_2;
+    if (n_4 < 16u) {
+        uint keep = 4u * n_4;
         if (keep < 32u) {
             uint _e43 = t_2.x;
             t_2 = metal::uint2(_e43 & ((1u << keep) - 1u), 0u);
@@ -2237,40 +2380,40 @@ metal::uint2 nyq_packed_table(
             t_2.y = _e52 & ((1u << (keep - 32u)) - 1u);
         }
     }
-    r_9 = r_in;
-    k_8 = n_2;
-    uint2 loop_bound_19 = uint2(4294967295u);
+    r_10 = r_in;
+    k_9 = n_4;
+    uint2 loop_bound_20 = uint2(4294967295u);
     bool loop_init_16 = true;
     while(true) {
-        if (metal::all(loop_bound_19 == uint2(0u))) { break; }
-        loop_bound_19 -= uint2(loop_bound_19.y == 0u, 1u);
+        if (metal::all(loop_bound_20 == uint2(0u))) { break; }
+        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
         if (!loop_init_16) {
-            uint _e94 = k_8;
-            k_8 = _e94 - 1u;
+            uint _e94 = k_9;
+            k_9 = _e94 - 1u;
         }
         loop_init_16 = false;
-        uint _e62 = k_8;
+        uint _e62 = k_9;
         if (_e62 > 1u) {
         } else {
             break;
         }
         {
-            metal::uint2 _e65 = r_9;
-            uint _e66 = k_8;
+            metal::uint2 _e65 = r_10;
+            uint _e66 = k_9;
             metal::uint3 _e67 = nyq_mul64x32_(_e65, _e66);
             uint j_1 = _e67.z;
-            r_9 = _e67.xy;
-            uint _e71 = k_8;
+            r_10 = _e67.xy;
+            uint _e71 = k_9;
             uint hi = 4u * (_e71 - 1u);
             uint lo = 4u * j_1;
             metal::uint2 _e77 = t_2;
             uint _e78 = nyq_nibble(_e77, hi);
             metal::uint2 _e79 = t_2;
             uint _e80 = nyq_nibble(_e79, lo);
-            uint x_26 = (_e78 ^ _e80) & 15u;
+            uint x_27 = (_e78 ^ _e80) & 15u;
             metal::uint2 _e84 = t_2;
-            metal::uint2 _e87 = nyq_shl64_any(metal::uint2(x_26, 0u), hi);
-            metal::uint2 _e90 = nyq_shl64_any(metal::uint2(x_26, 0u), lo);
+            metal::uint2 _e87 = nyq_shl64_any(metal::uint2(x_27, 0u), hi);
+            metal::uint2 _e90 = nyq_shl64_any(metal::uint2(x_27, 0u), lo);
             t_2 = _e84 ^ (_e87 | _e90);
         }
     }
@@ -2280,88 +2423,88 @@ metal::uint2 nyq_packed_table(
 
 NyqPermutation nyq_permutation(
     uint n_in,
-    uint seed_14
+    uint seed_15
 ) {
-    uint n_7 = metal::max(n_in, 1u);
-    if (n_7 <= 16u) {
-        metal::uint2 _e10 = nyq_mix64_(metal::uint2(seed_14 ^ 2242054355u, 608135816u));
-        metal::uint2 _e11 = nyq_packed_table(n_7, _e10);
-        return NyqPermutation {n_7, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
+    uint n_9 = metal::max(n_in, 1u);
+    if (n_9 <= 16u) {
+        metal::uint2 _e10 = nyq_mix64_(metal::uint2(seed_15 ^ 2242054355u, 608135816u));
+        metal::uint2 _e11 = nyq_packed_table(n_9, _e10);
+        return NyqPermutation {n_9, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
     }
-    uint mask_3 = 4294967295u >> metal::clz(n_7 - 1u);
+    uint mask_3 = 4294967295u >> metal::clz(n_9 - 1u);
     uint bits_5 = 32u - metal::clz(mask_3);
-    uint _e29 = nyq_mix32_(seed_14 ^ 1540483477u);
+    uint _e29 = nyq_mix32_(seed_15 ^ 1540483477u);
     uint _e32 = nyq_mix32_(_e29 + 1759714724u);
     uint _e35 = nyq_mix32_(_e32 ^ 625341585u);
-    metal::uint2 _e36 = nyq_mul_wide(_e35, n_7);
+    metal::uint2 _e36 = nyq_mul_wide(_e35, n_9);
     uint offset_2 = _e36.y;
-    return NyqPermutation {n_7, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, {}, metal::uint2(0u, 0u)};
+    return NyqPermutation {n_9, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, {}, metal::uint2(0u, 0u)};
 }
 
 uint nyq_permutation_apply(
     NyqPermutation p,
     uint i_8
 ) {
-    uint x_14 = {};
-    bool local_9 = {};
-    uint n_8 = p.n;
-    if (n_8 <= 16u) {
-        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_8, n_8) & 15u));
+    uint x_15 = {};
+    bool local_10 = {};
+    uint n_10 = p.n;
+    if (n_10 <= 16u) {
+        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_8, n_10) & 15u));
         return _e11;
     }
-    x_14 = naga_mod(i_8, n_8);
-    uint2 loop_bound_20 = uint2(4294967295u);
+    x_15 = naga_mod(i_8, n_10);
+    uint2 loop_bound_21 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_20 == uint2(0u))) { break; }
-        loop_bound_20 -= uint2(loop_bound_20.y == 0u, 1u);
-        uint _e14 = x_14;
-        x_14 = _e14 ^ (p.key & p.mask);
-        uint _e19 = x_14;
-        x_14 = (_e19 * 3782248765u) & p.mask;
-        uint _e24 = x_14;
-        uint _e25 = x_14;
-        x_14 = _e24 ^ (_e25 >> p.half_);
-        uint _e29 = x_14;
-        x_14 = (_e29 + p.key2_) & p.mask;
-        uint _e34 = x_14;
-        x_14 = (_e34 * (p.key | 1u)) & p.mask;
-        uint _e41 = x_14;
-        uint _e42 = x_14;
-        x_14 = _e41 ^ (_e42 >> p.half_);
-        uint _e46 = x_14;
-        x_14 = _e46 ^ ((p.key2_ >> 7u) & p.mask);
-        uint _e53 = x_14;
-        x_14 = (_e53 * 153742143u) & p.mask;
-        uint _e58 = x_14;
-        uint _e59 = x_14;
-        x_14 = _e58 ^ (_e59 >> p.half_);
-        uint _e63 = x_14;
-        x_14 = (_e63 * (1765145193u ^ (p.key2_ & 4294967294u))) & p.mask;
-        uint _e72 = x_14;
-        uint _e73 = x_14;
-        x_14 = _e72 ^ (_e73 >> p.third);
-        uint _e77 = x_14;
-        if (_e77 < n_8) {
+        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
+        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        uint _e14 = x_15;
+        x_15 = _e14 ^ (p.key & p.mask);
+        uint _e19 = x_15;
+        x_15 = (_e19 * 3782248765u) & p.mask;
+        uint _e24 = x_15;
+        uint _e25 = x_15;
+        x_15 = _e24 ^ (_e25 >> p.half_);
+        uint _e29 = x_15;
+        x_15 = (_e29 + p.key2_) & p.mask;
+        uint _e34 = x_15;
+        x_15 = (_e34 * (p.key | 1u)) & p.mask;
+        uint _e41 = x_15;
+        uint _e42 = x_15;
+        x_15 = _e41 ^ (_e42 >> p.half_);
+        uint _e46 = x_15;
+        x_15 = _e46 ^ ((p.key2_ >> 7u) & p.mask);
+        uint _e53 = x_15;
+        x_15 = (_e53 * 153742143u) & p.mask;
+        uint _e58 = x_15;
+        uint _e59 = x_15;
+        x_15 = _e58 ^ (_e59 >> p.half_);
+        uint _e63 = x_15;
+        x_15 = (_e63 * (1765145193u ^ (p.key2_ & 4294967294u))) & p.mask;
+        uint _e72 = x_15;
+        uint _e73 = x_15;
+        x_15 = _e72 ^ (_e73 >> p.third);
+        uint _e77 = x_15;
+        if (_e77 < n_10) {
             break;
         }
     }
-    uint _e79 = x_14;
+    uint _e79 = x_15;
     uint q_3 = _e79 + p.offset;
-    uint _e83 = x_14;
+    uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_9 = q_3 >= n_8;
+        local_10 = q_3 >= n_10;
     } else {
-        local_9 = true;
+        local_10 = true;
     }
-    bool _e90 = local_9;
-    return _e90 ? (q_3 - n_8) : q_3;
+    bool _e90 = local_10;
+    return _e90 ? (q_3 - n_10) : q_3;
 }
 
 NyqStratifiedSampler nyq_stratified_sampler(
     uint xs,
     uint ys,
     uint jitter,
-    metal::uint2 seed_15
+    metal::uint2 seed_16
 ) {
     uint spp_3 = xs * ys;
     float _e5 = nyq_u32_to_f32_(xs);
@@ -2372,14 +2515,14 @@ NyqStratifiedSampler nyq_stratified_sampler(
     float _e10 = nyq_recip_f32_(_e9);
     metal::float3 inv = metal::float3(_e6, _e8, _e10);
     metal::uint2 zero = metal::uint2(0u, 0u);
-    return NyqStratifiedSampler {xs, ys, spp_3, {}, inv, jitter, seed_15, zero, zero, 0u, 0u};
+    return NyqStratifiedSampler {xs, ys, spp_3, {}, inv, jitter, seed_16, zero, zero, 0u, 0u};
 }
 
 uint nyq_stratified_dim_key(
     metal::uint2 pixel_key,
-    uint dim_21
+    uint dim_23
 ) {
-    metal::uint2 _e2 = nyq_u64_(dim_21);
+    metal::uint2 _e2 = nyq_u64_(dim_23);
     metal::uint2 _e4 = nyq_mul64_(_e2, NYQ_DIM_STEP);
     metal::uint2 _e6 = nyq_mix64_(pixel_key ^ _e4);
     return _e6.x ^ _e6.y;
@@ -2387,16 +2530,16 @@ uint nyq_stratified_dim_key(
 
 uint nyq_stratified_stratum(
     thread NyqStratifiedSampler& s_54,
-    uint dim_22
+    uint dim_24
 ) {
-    if (dim_22 == 0u) {
+    if (dim_24 == 0u) {
         uint _e5 = s_54.index;
         uint _e7 = s_54.spp;
         return naga_mod(_e5, _e7);
     }
     uint _e10 = s_54.spp;
     metal::uint2 _e12 = s_54.pixel_key;
-    uint _e13 = nyq_stratified_dim_key(_e12, dim_22);
+    uint _e13 = nyq_stratified_dim_key(_e12, dim_24);
     NyqPermutation _e14 = nyq_permutation(_e10, _e13);
     uint _e16 = s_54.index;
     uint _e17 = nyq_permutation_apply(_e14, _e16);
@@ -2405,31 +2548,31 @@ uint nyq_stratified_stratum(
 
 metal::float2 nyq_stratified_jitters(
     thread NyqStratifiedSampler& s_55,
-    uint dim_23
+    uint dim_25
 ) {
-    bool local_10 = {};
+    bool local_11 = {};
     uint _e3 = s_55.jitter;
     if (_e3 != NYQ_JITTERED) {
         return metal::float2(0.5, 0.5);
     }
-    if (!((dim_23 == 2u))) {
-        local_10 = dim_23 == 3u;
+    if (!((dim_25 == 2u))) {
+        local_11 = dim_25 == 3u;
     } else {
-        local_10 = true;
+        local_11 = true;
     }
-    bool _e17 = local_10;
+    bool _e17 = local_11;
     if (_e17) {
         metal::uint2 _e19 = s_55.sample_key;
         metal::uint2 _e24 = nyq_mul64_(metal::uint2(2u, 0u), NYQ_JITTER_STEP);
         metal::uint2 _e26 = nyq_mix64_(_e19 ^ _e24);
-        if (dim_23 == 2u) {
+        if (dim_25 == 2u) {
             return metal::float2(static_cast<float>((_e26.y >> 11u) & 2097151u) * 0.00000047683716, 0.5);
         }
         metal::uint2 _e40 = nyq_shr64_(_e26, 22u);
         return metal::float2(static_cast<float>(_e40.x & 2097151u) * 0.00000047683716, static_cast<float>((_e26.x >> 1u) & 2097151u) * 0.00000047683716);
     }
     metal::uint2 _e55 = s_55.sample_key;
-    metal::uint2 _e56 = nyq_u64_(dim_23);
+    metal::uint2 _e56 = nyq_u64_(dim_25);
     metal::uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     metal::uint2 _e60 = nyq_mix64_(_e55 ^ _e58);
     float _e62 = nyq_unit_f32_(_e60.y);
@@ -2438,9 +2581,9 @@ metal::float2 nyq_stratified_jitters(
 }
 
 float nyq_below_one(
-    float x_15
+    float x_16
 ) {
-    return metal::min(x_15, as_type<float>(1065353215u));
+    return metal::min(x_16, as_type<float>(1065353215u));
 }
 
 metal::float2 nyq_stratified_cell(
@@ -2465,7 +2608,7 @@ void nyq_stratified_start(
     thread NyqStratifiedSampler& s_57,
     metal::uint2 pixel_14,
     uint sample_index_12,
-    uint dim_24
+    uint dim_26
 ) {
     metal::uint2 _e6 = s_57.seed;
     metal::uint2 _e8 = nyq_u64_(1937011297u);
@@ -2476,18 +2619,18 @@ void nyq_stratified_start(
     metal::uint2 _e14 = nyq_u64_(sample_index_12);
     metal::uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
     s_57.sample_key = _e13 ^ _e16;
-    s_57.dim = dim_24;
+    s_57.dim = dim_26;
     return;
 }
 
 float nyq_stratified_get_1d(
     thread NyqStratifiedSampler& s_58
 ) {
-    uint d_19 = s_58.dim;
-    s_58.dim = d_19 + 1u;
-    uint _e6 = nyq_stratified_stratum(s_58, d_19);
+    uint d_20 = s_58.dim;
+    s_58.dim = d_20 + 1u;
+    uint _e6 = nyq_stratified_stratum(s_58, d_20);
     float _e7 = nyq_u32_to_f32_(_e6);
-    metal::float2 _e8 = nyq_stratified_jitters(s_58, d_19);
+    metal::float2 _e8 = nyq_stratified_jitters(s_58, d_20);
     float _e13 = s_58.inv[2];
     float _e15 = nyq_below_one((_e7 + _e8.x) * _e13);
     return _e15;
@@ -2496,10 +2639,10 @@ float nyq_stratified_get_1d(
 metal::float2 nyq_stratified_get_2d(
     thread NyqStratifiedSampler& s_59
 ) {
-    uint d_20 = s_59.dim;
-    s_59.dim = d_20 + 2u;
-    uint _e6 = nyq_stratified_stratum(s_59, d_20);
-    metal::float2 _e7 = nyq_stratified_jitters(s_59, d_20);
+    uint d_21 = s_59.dim;
+    s_59.dim = d_21 + 2u;
+    uint _e6 = nyq_stratified_stratum(s_59, d_21);
+    metal::float2 _e7 = nyq_stratified_jitters(s_59, d_21);
     metal::float2 _e8 = nyq_stratified_cell(s_59, _e6, _e7);
     return _e8;
 }
@@ -2532,12 +2675,12 @@ NyqCameraSample nyq_stratified_camera_sample(
 
 metal::uint2 nyq_mul64_high(
     metal::uint2 a_8,
-    metal::uint2 b_6
+    metal::uint2 b_7
 ) {
-    metal::uint2 _e4 = nyq_mul_wide(a_8.x, b_6.x);
-    metal::uint2 _e7 = nyq_mul_wide(a_8.x, b_6.y);
-    metal::uint2 _e10 = nyq_mul_wide(a_8.y, b_6.x);
-    metal::uint2 _e13 = nyq_mul_wide(a_8.y, b_6.y);
+    metal::uint2 _e4 = nyq_mul_wide(a_8.x, b_7.x);
+    metal::uint2 _e7 = nyq_mul_wide(a_8.x, b_7.y);
+    metal::uint2 _e10 = nyq_mul_wide(a_8.y, b_7.x);
+    metal::uint2 _e13 = nyq_mul_wide(a_8.y, b_7.y);
     metal::uint2 _e20 = nyq_add64_(metal::uint2(_e4.y, 0u), metal::uint2(_e7.x, 0u));
     metal::uint2 _e24 = nyq_add64_(_e20, metal::uint2(_e10.x, 0u));
     metal::uint2 _e28 = nyq_add64_(_e13, metal::uint2(_e7.y, 0u));
@@ -2547,12 +2690,12 @@ metal::uint2 nyq_mul64_high(
 }
 
 metal::uint2 nyq_wyrand(
-    metal::uint2 seed_16,
+    metal::uint2 seed_17,
     uint i_9
 ) {
     metal::uint2 _e5 = nyq_u64_(i_9 + 1u);
     metal::uint2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
-    metal::uint2 _e7 = nyq_add64_(seed_16, _e6);
+    metal::uint2 _e7 = nyq_add64_(seed_17, _e6);
     metal::uint2 t_7 = _e7 ^ NYQ_WYRAND_FOLD;
     metal::uint2 _e10 = nyq_mul64_high(_e7, t_7);
     metal::uint2 _e11 = nyq_mul64_(_e7, t_7);
@@ -2560,19 +2703,19 @@ metal::uint2 nyq_wyrand(
 }
 
 uint nyq_pmj02_point(
-    metal::uint2 seed_17,
-    uint index_10,
-    uint dim_25
+    metal::uint2 seed_18,
+    uint index_12,
+    uint dim_27
 ) {
-    uint x_16 = 0u;
+    uint x_17 = 0u;
     uint known = 0u;
     uint flips = 0u;
     uint p_1 = {};
-    p_1 = index_10 & 65535u;
-    uint2 loop_bound_21 = uint2(4294967295u);
+    p_1 = index_12 & 65535u;
+    uint2 loop_bound_22 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_21 == uint2(0u))) { break; }
-        loop_bound_21 -= uint2(loop_bound_21.y == 0u, 1u);
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
         uint _e12 = p_1;
         if (_e12 != 0u) {
         } else {
@@ -2584,65 +2727,65 @@ uint nyq_pmj02_point(
             uint swap = 2147483648u >> level_1;
             uint low_2 = swap - 1u;
             uint _e23 = p_1;
-            metal::uint2 _e24 = nyq_wyrand(seed_17, _e23);
-            uint bits_6 = (dim_25 == 0u) ? _e24.x : _e24.y;
-            uint _e30 = x_16;
+            metal::uint2 _e24 = nyq_wyrand(seed_18, _e23);
+            uint bits_6 = (dim_27 == 0u) ? _e24.x : _e24.y;
+            uint _e30 = x_17;
             uint _e32 = known;
-            x_16 = _e30 | ((bits_6 & low_2) & ~(_e32));
+            x_17 = _e30 | ((bits_6 & low_2) & ~(_e32));
             uint _e36 = known;
             known = _e36 | low_2;
             uint _e38 = flips;
             flips = _e38 ^ swap;
-            uint c_6 = (dim_25 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
+            uint c_6 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
             uint _e51 = p_1;
             p_1 = (_e51 - (1u << level_1)) ^ c_6;
         }
     }
-    metal::uint2 _e57 = nyq_wyrand(seed_17, 0u);
-    uint _e58 = x_16;
+    metal::uint2 _e57 = nyq_wyrand(seed_18, 0u);
+    uint _e58 = x_17;
     uint _e64 = known;
-    x_16 = _e58 | (((dim_25 == 0u) ? _e57.x : _e57.y) & ~(_e64));
-    uint _e68 = x_16;
+    x_17 = _e58 | (((dim_27 == 0u) ? _e57.x : _e57.y) & ~(_e64));
+    uint _e68 = x_17;
     uint _e69 = flips;
     return _e68 ^ _e69;
 }
 
 NyqPmj02_ nyq_pmj02_(
     bool scrambled_1,
-    metal::uint2 seed_18
+    metal::uint2 seed_19
 ) {
-    metal::uint2 _e5 = nyq_hash2_(seed_18, metal::uint2(845115255u, 1886218800u));
+    metal::uint2 _e5 = nyq_hash2_(seed_19, metal::uint2(845115255u, 1886218800u));
     return NyqPmj02_ {scrambled_1 ? 1u : 0u, {}, _e5};
 }
 
 uint nyq_pmj02_sample_u32_(
     NyqPmj02_ s_62,
-    uint index_11,
-    uint dim_26
+    uint index_13,
+    uint dim_28
 ) {
-    uint d_21 = dim_26 & 1u;
-    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_11, d_21);
+    uint d_22 = dim_28 & 1u;
+    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_22);
     if (s_62.scrambled == 0u) {
         return _e6;
     }
-    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_62.keys[d_21]);
+    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_62.keys[d_22]);
     return metal::reverse_bits(_e13);
 }
 
 float nyq_pmj02_sample(
     NyqPmj02_ s_63,
-    uint index_12,
-    uint dim_27
+    uint index_14,
+    uint dim_29
 ) {
-    uint _e3 = nyq_pmj02_sample_u32_(s_63, index_12, dim_27);
+    uint _e3 = nyq_pmj02_sample_u32_(s_63, index_14, dim_29);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
 NyqPmj02Sampler nyq_pmj02_sampler(
-    metal::uint2 seed_19
+    metal::uint2 seed_20
 ) {
-    return NyqPmj02Sampler {seed_19, metal::uint2(0u, 0u), 0u, 0u};
+    return NyqPmj02Sampler {seed_20, metal::uint2(0u, 0u), 0u, 0u};
 }
 
 uint nyq_reverse16_(
@@ -2663,24 +2806,24 @@ metal::uint3 nyq_pmj02_keys(
 }
 
 metal::float2 nyq_pmj02_keyed_point(
-    metal::uint3 k_9,
+    metal::uint3 k_10,
     uint i_10
 ) {
     uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 0u);
     uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 1u);
-    uint _e10 = nyq_lk_hash(metal::reverse_bits(_e4), k_9.y);
+    uint _e10 = nyq_lk_hash(metal::reverse_bits(_e4), k_10.y);
     float _e11 = nyq_rev_to_f32_(_e10);
-    uint _e14 = nyq_lk_hash(metal::reverse_bits(_e7), k_9.z);
+    uint _e14 = nyq_lk_hash(metal::reverse_bits(_e7), k_10.z);
     float _e15 = nyq_rev_to_f32_(_e14);
     return metal::float2(_e11, _e15);
 }
 
 uint nyq_pmj02_row(
     thread NyqPmj02Sampler& s_65,
-    metal::uint3 k_10
+    metal::uint3 k_11
 ) {
     uint _e3 = s_65.index_rev;
-    uint _e5 = nyq_lk_hash(_e3, k_10.x);
+    uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return _e5 >> 16u;
 }
 
@@ -2688,23 +2831,23 @@ void nyq_pmj02_start(
     thread NyqPmj02Sampler& s_66,
     metal::uint2 pixel_16,
     uint sample_index_14,
-    uint dim_28
+    uint dim_30
 ) {
     metal::uint2 _e6 = s_66.seed;
     metal::uint2 _e10 = nyq_hash3_(pixel_16, _e6, metal::uint2(1835675698u, 112u));
     s_66.pixel_key = _e10;
     uint _e12 = nyq_reverse16_(sample_index_14);
     s_66.index_rev = _e12 << 16u;
-    s_66.dim = dim_28;
+    s_66.dim = dim_30;
     return;
 }
 
 float nyq_pmj02_get_1d(
     thread NyqPmj02Sampler& s_67
 ) {
-    uint d_22 = s_67.dim;
-    s_67.dim = d_22 + 1u;
-    metal::uint2 _e6 = nyq_u64_(d_22);
+    uint d_23 = s_67.dim;
+    s_67.dim = d_23 + 1u;
+    metal::uint2 _e6 = nyq_u64_(d_23);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
     metal::uint2 _e12 = nyq_add64_(_e8, metal::uint2(1u, 0u));
     metal::uint3 _e13 = nyq_pmj02_keys(s_67, _e12);
@@ -2718,12 +2861,12 @@ float nyq_pmj02_get_1d(
 metal::float2 nyq_pmj02_get_2d(
     thread NyqPmj02Sampler& s_68
 ) {
-    uint d_23 = s_68.dim;
-    s_68.dim = d_23 + 2u;
-    metal::uint2 _e6 = nyq_u64_(d_23);
+    uint d_24 = s_68.dim;
+    s_68.dim = d_24 + 2u;
+    metal::uint2 _e6 = nyq_u64_(d_24);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
     metal::uint3 _e9 = nyq_pmj02_keys(s_68, _e8);
-    if (d_23 == 0u) {
+    if (d_24 == 0u) {
         uint _e13 = s_68.index_rev;
         uint _e16 = nyq_reverse16_(_e13 >> 16u);
         metal::float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
@@ -2764,92 +2907,92 @@ NyqCameraSample nyq_pmj02_camera_sample(
 
 metal::uint2 nyq_sub64_(
     metal::uint2 a_9,
-    metal::uint2 b_7
+    metal::uint2 b_8
 ) {
-    return metal::uint2(a_9.x - b_7.x, (a_9.y - b_7.y) - ((a_9.x < b_7.x) ? 1u : 0u));
+    return metal::uint2(a_9.x - b_8.x, (a_9.y - b_8.y) - ((a_9.x < b_8.x) ? 1u : 0u));
 }
 
 metal::uint3 nyq_divmod64_small(
-    metal::uint2 x_17,
+    metal::uint2 x_18,
     uint d_3
 ) {
-    if (x_17.y == 0u) {
-        uint q_4 = naga_div(x_17.x, d_3);
-        return metal::uint3(q_4, 0u, x_17.x - (q_4 * d_3));
+    if (x_18.y == 0u) {
+        uint q_4 = naga_div(x_18.x, d_3);
+        return metal::uint3(q_4, 0u, x_18.x - (q_4 * d_3));
     }
-    uint t3_ = x_17.y >> 16u;
+    uint t3_ = x_18.y >> 16u;
     uint q3_ = naga_div(t3_, d_3);
-    uint t2_ = ((t3_ - (q3_ * d_3)) << 16u) | (x_17.y & 65535u);
+    uint t2_ = ((t3_ - (q3_ * d_3)) << 16u) | (x_18.y & 65535u);
     uint q2_ = naga_div(t2_, d_3);
-    uint t1_1 = ((t2_ - (q2_ * d_3)) << 16u) | (x_17.x >> 16u);
+    uint t1_1 = ((t2_ - (q2_ * d_3)) << 16u) | (x_18.x >> 16u);
     uint q1_ = naga_div(t1_1, d_3);
-    uint t0_1 = ((t1_1 - (q1_ * d_3)) << 16u) | (x_17.x & 65535u);
+    uint t0_1 = ((t1_1 - (q1_ * d_3)) << 16u) | (x_18.x & 65535u);
     uint q0_ = naga_div(t0_1, d_3);
     return metal::uint3((q1_ << 16u) | q0_, (q3_ << 16u) | q2_, t0_1 - (q0_ * d_3));
 }
 
 metal::uint4 nyq_add128_(
     metal::uint4 a_10,
-    metal::uint4 b_8
+    metal::uint4 b_9
 ) {
-    metal::uint4 s_80 = a_10 + b_8;
-    metal::uint4 c_7 = metal::select(metal::uint4(0u), metal::uint4(1u), s_80 < a_10);
-    uint t1_2 = s_80.y + c_7.x;
+    metal::uint4 s_81 = a_10 + b_9;
+    metal::uint4 c_7 = metal::select(metal::uint4(0u), metal::uint4(1u), s_81 < a_10);
+    uint t1_2 = s_81.y + c_7.x;
     uint k1_ = c_7.y + ((t1_2 < c_7.x) ? 1u : 0u);
-    uint t2_1 = s_80.z + k1_;
+    uint t2_1 = s_81.z + k1_;
     uint k2_ = c_7.z + ((t2_1 < k1_) ? 1u : 0u);
-    return metal::uint4(s_80.x, t1_2, t2_1, s_80.w + k2_);
+    return metal::uint4(s_81.x, t1_2, t2_1, s_81.w + k2_);
 }
 
 metal::uint4 nyq_sub128_(
     metal::uint4 a_11,
-    metal::uint4 b_9
+    metal::uint4 b_10
 ) {
-    metal::uint4 s_81 = a_11 - b_9;
-    metal::uint4 o = metal::select(metal::uint4(0u), metal::uint4(1u), a_11 < b_9);
-    uint t1_3 = s_81.y - o.x;
-    uint k1_1 = o.y + ((s_81.y < o.x) ? 1u : 0u);
-    uint t2_2 = s_81.z - k1_1;
-    uint k2_1 = o.z + ((s_81.z < k1_1) ? 1u : 0u);
-    return metal::uint4(s_81.x, t1_3, t2_2, s_81.w - k2_1);
+    metal::uint4 s_82 = a_11 - b_10;
+    metal::uint4 o = metal::select(metal::uint4(0u), metal::uint4(1u), a_11 < b_10);
+    uint t1_3 = s_82.y - o.x;
+    uint k1_1 = o.y + ((s_82.y < o.x) ? 1u : 0u);
+    uint t2_2 = s_82.z - k1_1;
+    uint k2_1 = o.z + ((s_82.z < k1_1) ? 1u : 0u);
+    return metal::uint4(s_82.x, t1_3, t2_2, s_82.w - k2_1);
 }
 
 bool nyq_lt128_(
     metal::uint4 a_12,
-    metal::uint4 b_10
+    metal::uint4 b_11
 ) {
-    if (a_12.w != b_10.w) {
-        return a_12.w < b_10.w;
+    if (a_12.w != b_11.w) {
+        return a_12.w < b_11.w;
     }
-    if (a_12.z != b_10.z) {
-        return a_12.z < b_10.z;
+    if (a_12.z != b_11.z) {
+        return a_12.z < b_11.z;
     }
-    if (a_12.y != b_10.y) {
-        return a_12.y < b_10.y;
+    if (a_12.y != b_11.y) {
+        return a_12.y < b_11.y;
     }
-    return a_12.x < b_10.x;
+    return a_12.x < b_11.x;
 }
 
 metal::uint4 nyq_mul128_u32_(
-    metal::uint4 x_18,
-    uint k_11
+    metal::uint4 x_19,
+    uint k_12
 ) {
-    metal::uint2 _e3 = nyq_mul_wide(x_18.x, k_11);
-    metal::uint2 _e5 = nyq_mul_wide(x_18.y, k_11);
+    metal::uint2 _e3 = nyq_mul_wide(x_19.x, k_12);
+    metal::uint2 _e5 = nyq_mul_wide(x_19.y, k_12);
     metal::uint2 _e9 = nyq_add64_(_e5, metal::uint2(_e3.y, 0u));
-    metal::uint2 _e11 = nyq_mul_wide(x_18.z, k_11);
+    metal::uint2 _e11 = nyq_mul_wide(x_19.z, k_12);
     metal::uint2 _e15 = nyq_add64_(_e11, metal::uint2(_e9.y, 0u));
-    return metal::uint4(_e3.x, _e9.x, _e15.x, (x_18.w * k_11) + _e15.y);
+    return metal::uint4(_e3.x, _e9.x, _e15.x, (x_19.w * k_12) + _e15.y);
 }
 
 metal::uint4 nyq_mul64_wide(
     metal::uint2 a_13,
-    metal::uint2 b_11
+    metal::uint2 b_12
 ) {
-    metal::uint2 _e4 = nyq_mul_wide(a_13.x, b_11.x);
-    metal::uint2 _e7 = nyq_mul_wide(a_13.x, b_11.y);
-    metal::uint2 _e10 = nyq_mul_wide(a_13.y, b_11.x);
-    metal::uint2 _e13 = nyq_mul_wide(a_13.y, b_11.y);
+    metal::uint2 _e4 = nyq_mul_wide(a_13.x, b_12.x);
+    metal::uint2 _e7 = nyq_mul_wide(a_13.x, b_12.y);
+    metal::uint2 _e10 = nyq_mul_wide(a_13.y, b_12.x);
+    metal::uint2 _e13 = nyq_mul_wide(a_13.y, b_12.y);
     metal::uint4 outer = metal::uint4(_e4.x, _e4.y, _e13.x, _e13.y);
     metal::uint4 _e24 = nyq_add128_(outer, metal::uint4(0u, _e7.x, _e7.y, 0u));
     metal::uint4 _e30 = nyq_add128_(_e24, metal::uint4(0u, _e10.x, _e10.y, 0u));
@@ -2857,33 +3000,33 @@ metal::uint4 nyq_mul64_wide(
 }
 
 uint nyq_clz128_(
-    metal::uint4 x_19
+    metal::uint4 x_20
 ) {
-    if (x_19.w != 0u) {
-        return metal::clz(x_19.w);
+    if (x_20.w != 0u) {
+        return metal::clz(x_20.w);
     }
-    if (x_19.z != 0u) {
-        return 32u + metal::clz(x_19.z);
+    if (x_20.z != 0u) {
+        return 32u + metal::clz(x_20.z);
     }
-    if (x_19.y != 0u) {
-        return 64u + metal::clz(x_19.y);
+    if (x_20.y != 0u) {
+        return 64u + metal::clz(x_20.y);
     }
-    return 96u + metal::clz(x_19.x);
+    return 96u + metal::clz(x_20.x);
 }
 
 metal::uint4 nyq_shl128_(
-    metal::uint4 x_20,
+    metal::uint4 x_21,
     uint s_71
 ) {
     metal::uint4 v_5 = {};
-    uint k_12 = {};
-    v_5 = x_20;
-    k_12 = s_71;
-    uint2 loop_bound_22 = uint2(4294967295u);
+    uint k_13 = {};
+    v_5 = x_21;
+    k_13 = s_71;
+    uint2 loop_bound_23 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        uint _e4 = k_12;
+        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        uint _e4 = k_13;
         if (_e4 >= 32u) {
         } else {
             break;
@@ -2893,43 +3036,42 @@ metal::uint4 nyq_shl128_(
             uint _e11 = v_5.y;
             uint _e13 = v_5.z;
             v_5 = metal::uint4(0u, _e9, _e11, _e13);
-            uint _e15 = k_12;
-            k_12 = _e15 - 32u;
+            uint _e15 = k_13;
+            k_13 = _e15 - 32u;
         }
     }
-    uint _e18 = k_12;
+    uint _e18 = k_13;
     if (_e18 == 0u) {
         metal::uint4 _e21 = v_5;
         return _e21;
     }
-    uint _e23 = k_12;
-    uint r_13 = 32u - _e23;
+    uint _e23 = k_13;
+    uint r_14 = 32u - _e23;
     uint _e26 = v_5.x;
-    uint _e27 = k_12;
+    uint _e27 = k_13;
     uint _e30 = v_5.y;
-    uint _e31 = k_12;
+    uint _e31 = k_13;
     uint _e34 = v_5.x;
     uint _e38 = v_5.z;
-    uint _e39 = k_12;
+    uint _e39 = k_13;
     uint _e42 = v_5.y;
     uint _e46 = v_5.w;
-    uint _e47 = k_12;
+    uint _e47 = k_13;
     uint _e50 = v_5.z;
-    return metal::uint4(_e26 << _e27, (_e30 << _e31) | (_e34 >> r_13), (_e38 << _e39) | (_e42 >> r_13), (_e46 << _e47) | (_e50 >> r_13));
+    return metal::uint4(_e26 << _e27, (_e30 << _e31) | (_e34 >> r_14), (_e38 << _e39) | (_e42 >> r_14), (_e46 << _e47) | (_e50 >> r_14));
 }
 
 uint nyq_round_bits(
     metal::uint4 x_in_3,
-    int e_in,
+    int e_in_1,
     bool sticky,
     bool twice
 ) {
-    bool local_11 = {};
     bool local_12 = {};
+    bool local_13 = {};
     uint m_2 = {};
     uint ml = {};
     uint mh = {};
-    bool local_13 = {};
     bool local_14 = {};
     bool local_15 = {};
     bool local_16 = {};
@@ -2938,47 +3080,48 @@ uint nyq_round_bits(
     bool local_19 = {};
     bool local_20 = {};
     bool local_21 = {};
+    bool local_22 = {};
     if (metal::all(x_in_3 == metal::uint4(0u))) {
         return 0u;
     }
     uint _e9 = nyq_clz128_(x_in_3);
     metal::uint4 _e10 = nyq_shl128_(x_in_3, _e9);
-    int e_2 = as_type<int>(as_type<uint>(e_in) - as_type<uint>(static_cast<int>(_e9)));
+    int e_4 = as_type<int>(as_type<uint>(e_in_1) - as_type<uint>(static_cast<int>(_e9)));
     if (!((_e10.x != 0u))) {
-        local_11 = _e10.y != 0u;
-    } else {
-        local_11 = true;
-    }
-    bool _e23 = local_11;
-    if (!(_e23)) {
-        local_12 = sticky;
+        local_12 = _e10.y != 0u;
     } else {
         local_12 = true;
     }
-    bool rest_2 = local_12;
+    bool _e23 = local_12;
+    if (!(_e23)) {
+        local_13 = sticky;
+    } else {
+        local_13 = true;
+    }
+    bool rest_2 = local_13;
     if (twice) {
         ml = (_e10.w << 21u) | (_e10.z >> 11u);
         mh = _e10.w >> 11u;
-        uint r_14 = _e10.z & 2047u;
-        if (!((r_14 > 1024u))) {
-            if (r_14 == 1024u) {
+        uint r_15 = _e10.z & 2047u;
+        if (!((r_15 > 1024u))) {
+            if (r_15 == 1024u) {
                 if (!(rest_2)) {
                     uint _e57 = ml;
-                    local_15 = (_e57 & 1u) == 1u;
+                    local_16 = (_e57 & 1u) == 1u;
                 } else {
-                    local_15 = true;
+                    local_16 = true;
                 }
-                bool _e63 = local_15;
-                local_14 = _e63;
+                bool _e63 = local_16;
+                local_15 = _e63;
             } else {
-                local_14 = false;
+                local_15 = false;
             }
-            bool _e65 = local_14;
-            local_13 = _e65;
+            bool _e65 = local_15;
+            local_14 = _e65;
         } else {
-            local_13 = true;
+            local_14 = true;
         }
-        bool _e67 = local_13;
+        bool _e67 = local_14;
         if (_e67) {
             uint _e68 = ml;
             ml = _e68 + 1u;
@@ -2994,55 +3137,55 @@ uint nyq_round_bits(
         if (!((r2_ > 268435456u))) {
             if (r2_ == 268435456u) {
                 uint _e98 = m_2;
-                local_17 = (_e98 & 1u) == 1u;
+                local_18 = (_e98 & 1u) == 1u;
             } else {
-                local_17 = false;
+                local_18 = false;
             }
-            bool _e104 = local_17;
-            local_16 = _e104;
+            bool _e104 = local_18;
+            local_17 = _e104;
         } else {
-            local_16 = true;
+            local_17 = true;
         }
-        bool _e106 = local_16;
+        bool _e106 = local_17;
         if (_e106) {
             uint _e107 = m_2;
             m_2 = _e107 + 1u;
         }
     } else {
         m_2 = _e10.w >> 8u;
-        uint r_15 = _e10.w & 255u;
-        if (!((r_15 > 128u))) {
-            if (r_15 == 128u) {
+        uint r_16 = _e10.w & 255u;
+        if (!((r_16 > 128u))) {
+            if (r_16 == 128u) {
                 if (!((_e10.z != 0u))) {
-                    local_20 = rest_2;
-                } else {
-                    local_20 = true;
-                }
-                bool _e132 = local_20;
-                if (!(_e132)) {
-                    uint _e136 = m_2;
-                    local_21 = (_e136 & 1u) == 1u;
+                    local_21 = rest_2;
                 } else {
                     local_21 = true;
                 }
-                bool _e142 = local_21;
-                local_19 = _e142;
+                bool _e132 = local_21;
+                if (!(_e132)) {
+                    uint _e136 = m_2;
+                    local_22 = (_e136 & 1u) == 1u;
+                } else {
+                    local_22 = true;
+                }
+                bool _e142 = local_22;
+                local_20 = _e142;
             } else {
-                local_19 = false;
+                local_20 = false;
             }
-            bool _e144 = local_19;
-            local_18 = _e144;
+            bool _e144 = local_20;
+            local_19 = _e144;
         } else {
-            local_18 = true;
+            local_19 = true;
         }
-        bool _e146 = local_18;
+        bool _e146 = local_19;
         if (_e146) {
             uint _e147 = m_2;
             m_2 = _e147 + 1u;
         }
     }
     uint _e155 = m_2;
-    return ((static_cast<uint>(as_type<int>(as_type<uint>(e_2) + as_type<uint>(254))) << 23u) + _e155) - 8388608u;
+    return ((static_cast<uint>(as_type<int>(as_type<uint>(e_4) + as_type<uint>(254))) << 23u) + _e155) - 8388608u;
 }
 
 NyqRounding nyq_divide(
@@ -3052,14 +3195,14 @@ NyqRounding nyq_divide(
 ) {
     metal::uint2 q_2 = metal::uint2(0u, 0u);
     bool sticky_1 = false;
-    bool local_22 = {};
     bool local_23 = {};
-    metal::uint2 r_10 = {};
-    uint i_11 = 0u;
     bool local_24 = {};
+    metal::uint2 r_11 = {};
+    uint i_11 = 0u;
     bool local_25 = {};
     bool local_26 = {};
-    metal::uint4 r_11 = {};
+    bool local_27 = {};
+    metal::uint4 r_12 = {};
     uint i_12 = 0u;
     uint tw = twice_1 ? 1u : 0u;
     if (metal::all(num_1 == metal::uint4(0u))) {
@@ -3067,29 +3210,29 @@ NyqRounding nyq_divide(
     }
     uint _e16 = nyq_clz128_(num_1);
     uint _e17 = nyq_clz128_(den_1);
-    uint s_82 = _e16 - _e17;
+    uint s_83 = _e16 - _e17;
     uint steps = twice_1 ? 55u : 26u;
     if (den_1.z == 0u) {
-        local_22 = den_1.w == 0u;
-    } else {
-        local_22 = false;
-    }
-    bool _e37 = local_22;
-    if (_e37) {
-        local_23 = den_1.y < 2147483648u;
+        local_23 = den_1.w == 0u;
     } else {
         local_23 = false;
     }
-    bool _e44 = local_23;
+    bool _e37 = local_23;
+    if (_e37) {
+        local_24 = den_1.y < 2147483648u;
+    } else {
+        local_24 = false;
+    }
+    bool _e44 = local_24;
     if (_e44) {
-        metal::uint2 d_24 = den_1.xy;
-        metal::uint4 _e46 = nyq_shl128_(num_1, s_82);
-        r_10 = _e46.xy;
-        uint2 loop_bound_23 = uint2(4294967295u);
+        metal::uint2 d_25 = den_1.xy;
+        metal::uint4 _e46 = nyq_shl128_(num_1, s_83);
+        r_11 = _e46.xy;
+        uint2 loop_bound_24 = uint2(4294967295u);
         bool loop_init_17 = true;
         while(true) {
-            if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-            loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+            if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+            loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
             if (!loop_init_17) {
                 uint _e109 = i_11;
                 i_11 = _e109 + 1u;
@@ -3105,51 +3248,51 @@ NyqRounding nyq_divide(
                 uint _e58 = q_2.y;
                 uint _e62 = q_2.x;
                 q_2 = metal::uint2(_e54 << 1u, (_e58 << 1u) | (_e62 >> 31u));
-                uint _e68 = r_10.y;
-                if (!((_e68 > d_24.y))) {
-                    uint _e75 = r_10.y;
-                    if (_e75 == d_24.y) {
-                        uint _e81 = r_10.x;
-                        local_25 = _e81 >= d_24.x;
+                uint _e68 = r_11.y;
+                if (!((_e68 > d_25.y))) {
+                    uint _e75 = r_11.y;
+                    if (_e75 == d_25.y) {
+                        uint _e81 = r_11.x;
+                        local_26 = _e81 >= d_25.x;
                     } else {
-                        local_25 = false;
+                        local_26 = false;
                     }
-                    bool _e85 = local_25;
-                    local_24 = _e85;
+                    bool _e85 = local_26;
+                    local_25 = _e85;
                 } else {
-                    local_24 = true;
+                    local_25 = true;
                 }
-                bool _e87 = local_24;
+                bool _e87 = local_25;
                 if (_e87) {
-                    metal::uint2 _e88 = r_10;
-                    metal::uint2 _e89 = nyq_sub64_(_e88, d_24);
-                    r_10 = _e89;
+                    metal::uint2 _e88 = r_11;
+                    metal::uint2 _e89 = nyq_sub64_(_e88, d_25);
+                    r_11 = _e89;
                     uint _e91 = q_2.x;
                     q_2.x = _e91 | 1u;
                 }
-                uint _e95 = r_10.x;
-                uint _e99 = r_10.y;
-                uint _e103 = r_10.x;
-                r_10 = metal::uint2(_e95 << 1u, (_e99 << 1u) | (_e103 >> 31u));
+                uint _e95 = r_11.x;
+                uint _e99 = r_11.y;
+                uint _e103 = r_11.x;
+                r_11 = metal::uint2(_e95 << 1u, (_e99 << 1u) | (_e103 >> 31u));
             }
         }
-        uint _e112 = r_10.x;
+        uint _e112 = r_11.x;
         if (!((_e112 != 0u))) {
-            uint _e119 = r_10.y;
-            local_26 = _e119 != 0u;
+            uint _e119 = r_11.y;
+            local_27 = _e119 != 0u;
         } else {
-            local_26 = true;
+            local_27 = true;
         }
-        bool _e123 = local_26;
+        bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        metal::uint4 _e124 = nyq_shl128_(num_1, s_82);
-        r_11 = _e124;
-        uint2 loop_bound_24 = uint2(4294967295u);
+        metal::uint4 _e124 = nyq_shl128_(num_1, s_83);
+        r_12 = _e124;
+        uint2 loop_bound_25 = uint2(4294967295u);
         bool loop_init_18 = true;
         while(true) {
-            if (metal::all(loop_bound_24 == uint2(0u))) { break; }
-            loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
+            if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
             if (!loop_init_18) {
                 uint _e186 = i_12;
                 i_12 = _e186 + 1u;
@@ -3165,39 +3308,39 @@ NyqRounding nyq_divide(
                 uint _e135 = q_2.y;
                 uint _e139 = q_2.x;
                 q_2 = metal::uint2(_e131 << 1u, (_e135 << 1u) | (_e139 >> 31u));
-                metal::uint4 _e144 = r_11;
+                metal::uint4 _e144 = r_12;
                 bool _e145 = nyq_lt128_(_e144, den_1);
                 if (!(_e145)) {
-                    metal::uint4 _e147 = r_11;
+                    metal::uint4 _e147 = r_12;
                     metal::uint4 _e148 = nyq_sub128_(_e147, den_1);
-                    r_11 = _e148;
+                    r_12 = _e148;
                     uint _e150 = q_2.x;
                     q_2.x = _e150 | 1u;
                 }
-                uint _e154 = r_11.x;
-                uint _e158 = r_11.y;
-                uint _e162 = r_11.x;
-                uint _e167 = r_11.z;
-                uint _e171 = r_11.y;
-                uint _e176 = r_11.w;
-                uint _e180 = r_11.z;
-                r_11 = metal::uint4(_e154 << 1u, (_e158 << 1u) | (_e162 >> 31u), (_e167 << 1u) | (_e171 >> 31u), (_e176 << 1u) | (_e180 >> 31u));
+                uint _e154 = r_12.x;
+                uint _e158 = r_12.y;
+                uint _e162 = r_12.x;
+                uint _e167 = r_12.z;
+                uint _e171 = r_12.y;
+                uint _e176 = r_12.w;
+                uint _e180 = r_12.z;
+                r_12 = metal::uint4(_e154 << 1u, (_e158 << 1u) | (_e162 >> 31u), (_e167 << 1u) | (_e171 >> 31u), (_e176 << 1u) | (_e180 >> 31u));
             }
         }
-        metal::uint4 _e188 = r_11;
+        metal::uint4 _e188 = r_12;
         sticky_1 = metal::any(_e188 != metal::uint4(0u));
     }
     metal::uint2 _e193 = q_2;
     bool _e203 = sticky_1;
-    return NyqRounding {metal::uint4(_e193, 0u, 0u), as_type<int>(as_type<uint>(1) - as_type<uint>(static_cast<int>(steps + s_82))), _e203 ? 1u : 0u, tw, 0u};
+    return NyqRounding {metal::uint4(_e193, 0u, 0u), as_type<int>(as_type<uint>(1) - as_type<uint>(static_cast<int>(steps + s_83))), _e203 ? 1u : 0u, tw, 0u};
 }
 
 uint nyq_prime(
-    uint dim_29,
+    uint dim_31,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e7 = nyq_halton_bases[NYQ_HALTON_WORDS * naga_mod(dim_29, NYQ_PRIME_COUNT)];
+    uint _e7 = nyq_halton_bases[NYQ_HALTON_WORDS * naga_mod(dim_31, NYQ_PRIME_COUNT)];
     return _e7;
 }
 
@@ -3207,21 +3350,21 @@ NyqRounding nyq_phi_short(
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint x_21 = {};
+    uint x_22 = {};
     metal::uint2 rev = metal::uint2(0u, 0u);
     uint i_13 = 0u;
-    uint b_14 = nyq_halton_bases[t_3];
+    uint b_15 = nyq_halton_bases[t_3];
     uint c_8 = naga_div(35u - metal::clz(a_14), 4u) - 1u;
     uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_8, 4u)];
     uint places = (_e19 >> (8u * naga_mod(c_8, 4u))) & 255u;
     uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_8)];
     uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_8)];
-    x_21 = a_14;
-    uint2 loop_bound_25 = uint2(4294967295u);
+    x_22 = a_14;
+    uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_19 = true;
     while(true) {
-        if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-        loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
         if (!loop_init_19) {
             uint _e64 = i_13;
             i_13 = _e64 + 1u;
@@ -3233,21 +3376,21 @@ NyqRounding nyq_phi_short(
             break;
         }
         {
-            uint _e52 = x_21;
-            uint q_5 = naga_div(_e52, b_14);
+            uint _e52 = x_22;
+            uint q_5 = naga_div(_e52, b_15);
             metal::uint2 _e54 = rev;
-            metal::uint3 _e55 = nyq_mul64x32_(_e54, b_14);
-            uint _e57 = x_21;
-            metal::uint2 _e62 = nyq_add64_(_e55.xy, metal::uint2(_e57 - (q_5 * b_14), 0u));
+            metal::uint3 _e55 = nyq_mul64x32_(_e54, b_15);
+            uint _e57 = x_22;
+            metal::uint2 _e62 = nyq_add64_(_e55.xy, metal::uint2(_e57 - (q_5 * b_15), 0u));
             rev = _e62;
-            x_21 = q_5;
+            x_22 = q_5;
         }
     }
     metal::uint2 mantissa = metal::uint2(low_3, (high_1 & 1048575u) | 1048576u);
-    int e_3 = as_type<int>(as_type<uint>(static_cast<int>((high_1 >> 20u) & 2047u)) - as_type<uint>(1075));
+    int e_5 = as_type<int>(as_type<uint>(static_cast<int>((high_1 >> 20u) & 2047u)) - as_type<uint>(1075));
     metal::uint2 _e78 = rev;
     metal::uint4 _e79 = nyq_mul64_wide(_e78, mantissa);
-    return NyqRounding {_e79, e_3, 0u, 1u, 0u};
+    return NyqRounding {_e79, e_5, 0u, 1u, 0u};
 }
 
 NyqFraction nyq_phi_fraction(
@@ -3256,45 +3399,45 @@ NyqFraction nyq_phi_fraction(
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::uint2 x_22 = {};
+    metal::uint2 x_23 = {};
     metal::uint4 num_2 = metal::uint4(0u);
     metal::uint4 den_2 = metal::uint4(1u, 0u, 0u, 0u);
-    bool local_27 = {};
+    bool local_28 = {};
     uint c_3 = {};
     uint rev_1 = {};
     uint i_14 = {};
-    uint b_15 = nyq_halton_bases[t_4];
+    uint b_16 = nyq_halton_bases[t_4];
     uint chunk = nyq_halton_bases[t_4 + 4u];
     uint run = nyq_halton_bases[t_4 + 5u];
-    x_22 = a_15;
-    uint2 loop_bound_26 = uint2(4294967295u);
+    x_23 = a_15;
+    uint2 loop_bound_27 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        uint _e26 = x_22.x;
+        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        uint _e26 = x_23.x;
         if (!((_e26 != 0u))) {
-            uint _e33 = x_22.y;
-            local_27 = _e33 != 0u;
+            uint _e33 = x_23.y;
+            local_28 = _e33 != 0u;
         } else {
-            local_27 = true;
+            local_28 = true;
         }
-        bool _e37 = local_27;
+        bool _e37 = local_28;
         if (_e37) {
         } else {
             break;
         }
         {
-            metal::uint2 _e38 = x_22;
+            metal::uint2 _e38 = x_23;
             metal::uint3 _e39 = nyq_divmod64_small(_e38, chunk);
-            x_22 = _e39.xy;
+            x_23 = _e39.xy;
             c_3 = _e39.z;
             rev_1 = 0u;
             i_14 = 0u;
-            uint2 loop_bound_27 = uint2(4294967295u);
+            uint2 loop_bound_28 = uint2(4294967295u);
             bool loop_init_20 = true;
             while(true) {
-                if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-                loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+                if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
                 if (!loop_init_20) {
                     uint _e58 = i_14;
                     i_14 = _e58 + 1u;
@@ -3307,10 +3450,10 @@ NyqFraction nyq_phi_fraction(
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = naga_div(_e49, b_15);
+                    uint q_6 = naga_div(_e49, b_16);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = (_e51 * b_15) + (_e53 - (q_6 * b_15));
+                    rev_1 = (_e51 * b_16) + (_e53 - (q_6 * b_16));
                     c_3 = q_6;
                 }
             }
@@ -3332,66 +3475,66 @@ NyqFraction nyq_phi_fraction(
 NyqFraction nyq_permuted_fraction(
     uint t_5,
     metal::uint2 a_16,
-    metal::uint2 seed_20,
+    metal::uint2 seed_21,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::uint2 x_23 = {};
+    metal::uint2 x_24 = {};
     metal::uint4 num_3 = metal::uint4(0u);
     metal::uint4 den_3 = metal::uint4(1u, 0u, 0u, 0u);
-    bool local_28 = {};
     bool local_29 = {};
+    bool local_30 = {};
     uint c_4 = {};
     uint part = {};
     uint scale = {};
     uint i_15 = {};
-    bool local_30 = {};
     bool local_31 = {};
     bool local_32 = {};
-    uint b_16 = nyq_halton_bases[t_5];
+    bool local_33 = {};
+    uint b_17 = nyq_halton_bases[t_5];
     uint chunk_1 = nyq_halton_bases[t_5 + 4u];
     uint run_1 = nyq_halton_bases[t_5 + 5u];
-    metal::uint2 _e16 = nyq_u64_(b_16);
-    metal::uint2 _e17 = nyq_hash2_(seed_20, _e16);
-    NyqPermutation _e21 = nyq_permutation(b_16, _e17.x ^ _e17.y);
-    x_23 = a_16;
-    uint2 loop_bound_28 = uint2(4294967295u);
+    metal::uint2 _e16 = nyq_u64_(b_17);
+    metal::uint2 _e17 = nyq_hash2_(seed_21, _e16);
+    NyqPermutation _e21 = nyq_permutation(b_17, _e17.x ^ _e17.y);
+    x_24 = a_16;
+    uint2 loop_bound_29 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-        uint _e33 = x_23.x;
+        if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        uint _e33 = x_24.x;
         if (!((_e33 != 0u))) {
-            uint _e40 = x_23.y;
-            local_28 = _e40 != 0u;
+            uint _e40 = x_24.y;
+            local_29 = _e40 != 0u;
         } else {
-            local_28 = true;
+            local_29 = true;
         }
-        bool _e44 = local_28;
+        bool _e44 = local_29;
         if (_e44) {
         } else {
             break;
         }
         {
-            metal::uint2 _e45 = x_23;
+            metal::uint2 _e45 = x_24;
             metal::uint3 _e46 = nyq_divmod64_small(_e45, chunk_1);
-            x_23 = _e46.xy;
-            uint _e49 = x_23.x;
+            x_24 = _e46.xy;
+            uint _e49 = x_24.x;
             if (_e49 == 0u) {
-                uint _e55 = x_23.y;
-                local_29 = _e55 == 0u;
+                uint _e55 = x_24.y;
+                local_30 = _e55 == 0u;
             } else {
-                local_29 = false;
+                local_30 = false;
             }
-            bool last = local_29;
+            bool last = local_30;
             c_4 = _e46.z;
             part = 0u;
             scale = 1u;
             i_15 = 0u;
-            uint2 loop_bound_29 = uint2(4294967295u);
+            uint2 loop_bound_30 = uint2(4294967295u);
             bool loop_init_21 = true;
             while(true) {
-                if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+                loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
                 if (!loop_init_21) {
                     uint _e89 = i_15;
                     i_15 = _e89 + 1u;
@@ -3405,22 +3548,22 @@ NyqFraction nyq_permuted_fraction(
                 {
                     if (last) {
                         uint _e72 = c_4;
-                        local_30 = _e72 == 0u;
+                        local_31 = _e72 == 0u;
                     } else {
-                        local_30 = false;
+                        local_31 = false;
                     }
-                    bool _e76 = local_30;
+                    bool _e76 = local_31;
                     if (_e76) {
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = naga_div(_e77, b_16);
+                    uint q_7 = naga_div(_e77, b_17);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    uint _e84 = nyq_permutation_apply(_e21, _e81 - (q_7 * b_16));
-                    part = (_e79 * b_16) + _e84;
+                    uint _e84 = nyq_permutation_apply(_e21, _e81 - (q_7 * b_17));
+                    part = (_e79 * b_17) + _e84;
                     uint _e86 = scale;
-                    scale = _e86 * b_16;
+                    scale = _e86 * b_17;
                     c_4 = q_7;
                 }
             }
@@ -3438,36 +3581,36 @@ NyqFraction nyq_permuted_fraction(
     }
     uint _e104 = nyq_permutation_apply(_e21, 0u);
     metal::uint4 _e105 = num_3;
-    metal::uint4 _e108 = nyq_mul128_u32_(_e105, b_16 - 1u);
+    metal::uint4 _e108 = nyq_mul128_u32_(_e105, b_17 - 1u);
     metal::uint4 _e113 = nyq_add128_(_e108, metal::uint4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     metal::uint4 _e114 = den_3;
-    metal::uint4 _e117 = nyq_mul128_u32_(_e114, b_16 - 1u);
+    metal::uint4 _e117 = nyq_mul128_u32_(_e114, b_17 - 1u);
     den_3 = _e117;
     uint _e119 = den_3.w;
     if (_e119 == 0u) {
         uint _e125 = den_3.z;
-        local_31 = _e125 == 0u;
-    } else {
-        local_31 = false;
-    }
-    bool _e129 = local_31;
-    if (_e129) {
-        uint _e133 = den_3.y;
-        local_32 = _e133 < 2097152u;
+        local_32 = _e125 == 0u;
     } else {
         local_32 = false;
     }
-    bool small = local_32;
+    bool _e129 = local_32;
+    if (_e129) {
+        uint _e133 = den_3.y;
+        local_33 = _e133 < 2097152u;
+    } else {
+        local_33 = false;
+    }
+    bool small = local_33;
     metal::uint4 _e138 = num_3;
     metal::uint4 _e139 = den_3;
-    return NyqFraction {_e138, _e139, small ? 1u : 0u, (_e104 == (b_16 - 1u)) ? 1u : 0u};
+    return NyqFraction {_e138, _e139, small ? 1u : 0u, (_e104 == (b_17 - 1u)) ? 1u : 0u};
 }
 
 NyqFraction nyq_nested_fraction(
     uint d_4,
     metal::uint2 a_17,
-    metal::uint2 seed_21,
+    metal::uint2 seed_22,
     bool affine,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
@@ -3479,16 +3622,16 @@ NyqFraction nyq_nested_fraction(
     metal::uint2 den_4 = metal::uint2(1u, 0u);
     metal::uint2 next = {};
     uint digit_1 = {};
-    bool local_33 = {};
+    bool local_34 = {};
     uint out_2 = {};
-    uint b_17 = nyq_halton_bases[NYQ_HALTON_WORDS * d_4];
+    uint b_18 = nyq_halton_bases[NYQ_HALTON_WORDS * d_4];
     metal::uint2 _e9 = nyq_u64_(d_4);
-    metal::uint2 _e13 = nyq_hash3_(seed_21, _e9, affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM);
+    metal::uint2 _e13 = nyq_hash3_(seed_22, _e9, affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM);
     rest = a_17;
-    uint2 loop_bound_30 = uint2(4294967295u);
+    uint2 loop_bound_31 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
-        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
+        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
+        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
         uint _e30 = den_4.y;
         if (_e30 == 0u) {
         } else {
@@ -3500,14 +3643,14 @@ NyqFraction nyq_nested_fraction(
             uint _e40 = rest.x;
             if (!((_e40 != 0u))) {
                 uint _e47 = rest.y;
-                local_33 = _e47 != 0u;
+                local_34 = _e47 != 0u;
             } else {
-                local_33 = true;
+                local_34 = true;
             }
-            bool _e51 = local_33;
+            bool _e51 = local_34;
             if (_e51) {
                 metal::uint2 _e52 = rest;
-                metal::uint3 _e53 = nyq_divmod64_small(_e52, b_17);
+                metal::uint3 _e53 = nyq_divmod64_small(_e52, b_18);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
@@ -3524,38 +3667,38 @@ NyqFraction nyq_nested_fraction(
             metal::uint2 _e69 = next;
             rest = _e69;
             metal::uint2 _e70 = pow;
-            metal::uint2 _e71 = nyq_u64_(b_17);
+            metal::uint2 _e71 = nyq_u64_(b_18);
             metal::uint2 _e72 = nyq_mul64_(_e70, _e71);
             pow = _e72;
             uint _e73 = level;
             level = _e73 + 1u;
             out_2 = uint {};
             if (affine) {
-                metal::uint3 _e78 = nyq_mul64x32_(_e68, b_17);
-                metal::uint3 _e83 = nyq_mul64x32_(_e78.xy, b_17 - 1u);
+                metal::uint3 _e78 = nyq_mul64x32_(_e68, b_18);
+                metal::uint3 _e83 = nyq_mul64x32_(_e78.xy, b_18 - 1u);
                 uint m_7 = 1u + _e83.z;
                 uint _e86 = digit_1;
-                out_2 = naga_mod((m_7 * _e86) + _e78.z, b_17);
+                out_2 = naga_mod((m_7 * _e86) + _e78.z, b_18);
             } else {
-                if (b_17 <= 16u) {
-                    metal::uint2 _e93 = nyq_packed_table(b_17, _e68);
+                if (b_18 <= 16u) {
+                    metal::uint2 _e93 = nyq_packed_table(b_18, _e68);
                     uint _e95 = digit_1;
                     uint _e97 = nyq_nibble(_e93, 4u * _e95);
                     out_2 = _e97;
                 } else {
-                    NyqPermutation _e101 = nyq_permutation(b_17, _e68.x ^ _e68.y);
+                    NyqPermutation _e101 = nyq_permutation(b_18, _e68.x ^ _e68.y);
                     uint _e102 = digit_1;
                     uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             metal::uint2 _e104 = num_4;
-            metal::uint3 _e105 = nyq_mul64x32_(_e104, b_17);
+            metal::uint3 _e105 = nyq_mul64x32_(_e104, b_18);
             uint _e107 = out_2;
             metal::uint2 _e110 = nyq_add64_(_e105.xy, metal::uint2(_e107, 0u));
             num_4 = _e110;
             metal::uint2 _e111 = den_4;
-            metal::uint3 _e112 = nyq_mul64x32_(_e111, b_17);
+            metal::uint3 _e112 = nyq_mul64x32_(_e111, b_18);
             den_4 = _e112.xy;
         }
     }
@@ -3565,47 +3708,47 @@ NyqFraction nyq_nested_fraction(
 }
 
 float nyq_radical_inverse_scrambled(
-    uint dim_30,
+    uint dim_32,
     metal::uint2 a_18,
-    metal::uint2 seed_22,
+    metal::uint2 seed_23,
     uint how_2,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    NyqRounding r_12 = {};
-    bool local_34 = {};
+    NyqRounding r_13 = {};
     bool local_35 = {};
     bool local_36 = {};
+    bool local_37 = {};
     NyqFraction f = {};
     uint bits_2 = {};
-    uint d_25 = naga_mod(dim_30, NYQ_PRIME_COUNT);
-    uint t_8 = NYQ_HALTON_WORDS * d_25;
+    uint d_26 = naga_mod(dim_32, NYQ_PRIME_COUNT);
+    uint t_8 = NYQ_HALTON_WORDS * d_26;
     if (how_2 == NYQ_SCRAMBLE_NONE) {
-        local_34 = d_25 == 0u;
+        local_35 = d_26 == 0u;
     } else {
-        local_34 = false;
+        local_35 = false;
     }
-    bool _e16 = local_34;
+    bool _e16 = local_35;
     if (_e16) {
-        r_12 = NyqRounding {metal::uint4(metal::reverse_bits(a_18.y), metal::reverse_bits(a_18.x), 0u, 0u), -64, 0u, 0u, 0u};
+        r_13 = NyqRounding {metal::uint4(metal::reverse_bits(a_18.y), metal::reverse_bits(a_18.x), 0u, 0u), -64, 0u, 0u, 0u};
     } else {
         if (how_2 == NYQ_SCRAMBLE_NONE) {
-            local_35 = a_18.y == 0u;
-        } else {
-            local_35 = false;
-        }
-        bool _e37 = local_35;
-        if (_e37) {
-            uint _e45 = nyq_halton_bases[t_8 + 1u];
-            local_36 = a_18.x < _e45;
+            local_36 = a_18.y == 0u;
         } else {
             local_36 = false;
         }
-        bool _e48 = local_36;
+        bool _e37 = local_36;
+        if (_e37) {
+            uint _e45 = nyq_halton_bases[t_8 + 1u];
+            local_37 = a_18.x < _e45;
+        } else {
+            local_37 = false;
+        }
+        bool _e48 = local_37;
         if (_e48) {
             if (a_18.x != 0u) {
                 NyqRounding _e53 = nyq_phi_short(t_8, a_18.x, nyq_halton_bases, _buffer_sizes);
-                r_12 = _e53;
+                r_13 = _e53;
             }
         } else {
             if (how_2 == NYQ_SCRAMBLE_NONE) {
@@ -3613,10 +3756,10 @@ float nyq_radical_inverse_scrambled(
                 f = _e57;
             } else {
                 if (how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
-                    NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_22, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23, nyq_halton_bases, _buffer_sizes);
                     f = _e60;
                 } else {
-                    NyqFraction _e63 = nyq_nested_fraction(d_25, a_18, seed_22, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e63 = nyq_nested_fraction(d_26, a_18, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
                     f = _e63;
                 }
             }
@@ -3624,20 +3767,20 @@ float nyq_radical_inverse_scrambled(
             metal::uint4 _e67 = f.den;
             uint _e69 = f.twice;
             NyqRounding _e72 = nyq_divide(_e65, _e67, _e69 != 0u);
-            r_12 = _e72;
+            r_13 = _e72;
             uint _e75 = f.below;
-            r_12.below = _e75;
+            r_13.below = _e75;
         }
     }
-    metal::uint4 _e77 = r_12.x;
-    int _e79 = r_12.e;
-    uint _e81 = r_12.sticky;
-    uint _e85 = r_12.twice;
+    metal::uint4 _e77 = r_13.x;
+    int _e79 = r_13.e;
+    uint _e81 = r_13.sticky;
+    uint _e85 = r_13.twice;
     uint _e88 = nyq_round_bits(_e77, _e79, _e81 != 0u, _e85 != 0u);
     bits_2 = _e88;
-    uint _e91 = r_12.below;
+    uint _e91 = r_13.below;
     if (_e91 != 0u) {
-        uint _e95 = r_12.twice;
+        uint _e95 = r_13.twice;
         if (_e95 == 0u) {
             uint _e98 = bits_2;
             bits_2 = metal::min(_e98, NYQ_BELOW_ONE_BITS);
@@ -3650,64 +3793,64 @@ float nyq_radical_inverse_scrambled(
 }
 
 float nyq_radical_inverse(
-    uint dim_31,
+    uint dim_33,
     metal::uint2 a_19,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e6 = nyq_radical_inverse_scrambled(dim_31, a_19, metal::uint2(0u, 0u), NYQ_SCRAMBLE_NONE, nyq_halton_bases, _buffer_sizes);
+    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, metal::uint2(0u, 0u), NYQ_SCRAMBLE_NONE, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 float nyq_scrambled_radical_inverse(
-    uint dim_32,
+    uint dim_34,
     metal::uint2 a_20,
-    metal::uint2 seed_23,
-    device type_4 const& nyq_halton_bases,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_32, a_20, seed_23, NYQ_SCRAMBLE_PERMUTE_DIGITS, nyq_halton_bases, _buffer_sizes);
-    return _e4;
-}
-
-float nyq_owen_scrambled_radical_inverse(
-    uint dim_33,
-    metal::uint2 a_21,
     metal::uint2 seed_24,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_33, a_21, seed_24, NYQ_SCRAMBLE_OWEN, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
-float nyq_fast_owen_scrambled_radical_inverse(
-    uint dim_34,
-    metal::uint2 a_22,
+float nyq_owen_scrambled_radical_inverse(
+    uint dim_35,
+    metal::uint2 a_21,
     metal::uint2 seed_25,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_22, seed_25, NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN, nyq_halton_bases, _buffer_sizes);
+    return _e4;
+}
+
+float nyq_fast_owen_scrambled_radical_inverse(
+    uint dim_36,
+    metal::uint2 a_22,
+    metal::uint2 seed_26,
+    device type_4 const& nyq_halton_bases,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
 NyqHalton nyq_halton(
-    uint dims_2,
+    uint dims_3,
     uint scramble_2,
-    metal::uint2 seed_26
+    metal::uint2 seed_27
 ) {
-    return NyqHalton {dims_2, scramble_2, seed_26};
+    return NyqHalton {dims_3, scramble_2, seed_27};
 }
 
 float nyq_halton_sample(
     NyqHalton h_2,
-    metal::uint2 index_13,
-    uint dim_35,
+    metal::uint2 index_15,
+    uint dim_37,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_35, h_2.dims), index_13, h_2.seed, h_2.scramble, nyq_halton_bases, _buffer_sizes);
+    float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_37, h_2.dims), index_15, h_2.seed, h_2.scramble, nyq_halton_bases, _buffer_sizes);
     return _e7;
 }
 
@@ -3722,19 +3865,19 @@ int naga_mod(int lhs, int rhs) {
 
 uint nyq_mod_inverse(
     uint a_23,
-    uint n_3
+    uint n_5
 ) {
     int r0_ = {};
     int r1_ = {};
     int t0_ = 0;
     int t1_ = 1;
     int m_3 = {};
-    r0_ = static_cast<int>(n_3);
-    r1_ = static_cast<int>(naga_mod(a_23, n_3));
-    uint2 loop_bound_31 = uint2(4294967295u);
+    r0_ = static_cast<int>(n_5);
+    r1_ = static_cast<int>(naga_mod(a_23, n_5));
+    uint2 loop_bound_32 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         int _e11 = r1_;
         if (_e11 != 0) {
         } else {
@@ -3759,11 +3902,11 @@ uint nyq_mod_inverse(
         }
     }
     int _e27 = t0_;
-    m_3 = naga_mod(_e27, static_cast<int>(n_3));
+    m_3 = naga_mod(_e27, static_cast<int>(n_5));
     int _e31 = m_3;
     if (_e31 < 0) {
         int _e34 = m_3;
-        m_3 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_3)));
+        m_3 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_5)));
     }
     int _e37 = m_3;
     return static_cast<uint>(_e37);
@@ -3771,15 +3914,15 @@ uint nyq_mod_inverse(
 
 metal::uint2 nyq_halton_scale(
     uint extent,
-    uint b_12
+    uint b_13
 ) {
     uint scale_1 = 1u;
-    uint e = 0u;
+    uint e_1 = 0u;
     uint goal = metal::min(extent, 128u);
-    uint2 loop_bound_32 = uint2(4294967295u);
+    uint2 loop_bound_33 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
-        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
+        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
         uint _e8 = scale_1;
         if (_e8 < goal) {
         } else {
@@ -3787,13 +3930,13 @@ metal::uint2 nyq_halton_scale(
         }
         {
             uint _e10 = scale_1;
-            scale_1 = _e10 * b_12;
-            uint _e12 = e;
-            e = _e12 + 1u;
+            scale_1 = _e10 * b_13;
+            uint _e12 = e_1;
+            e_1 = _e12 + 1u;
         }
     }
     uint _e15 = scale_1;
-    uint _e16 = e;
+    uint _e16 = e_1;
     return metal::uint2(_e15, _e16);
 }
 
@@ -3801,7 +3944,7 @@ NyqHaltonSampler nyq_halton_sampler(
     metal::uint2 resolution_2,
     uint spp,
     uint scramble_3,
-    metal::uint2 seed_27
+    metal::uint2 seed_28
 ) {
     metal::uint2 _e6 = nyq_halton_scale(resolution_2.x, 2u);
     metal::uint2 _e9 = nyq_halton_scale(resolution_2.y, 3u);
@@ -3809,31 +3952,31 @@ NyqHaltonSampler nyq_halton_sampler(
     uint _e16 = nyq_mod_inverse(_e9.x, _e6.x);
     uint _e21 = nyq_mod_inverse(_e6.x, _e9.x);
     metal::uint2 basis = metal::uint2(_e9.x * _e16, _e6.x * _e21);
-    return NyqHaltonSampler {spp, scramble_3, seed_27, metal::uint2(_e6.y, _e9.y), scales, _e6.x * _e9.x, {}, basis, metal::uint2(0u, 0u), 0u};
+    return NyqHaltonSampler {spp, scramble_3, seed_28, metal::uint2(_e6.y, _e9.y), scales, _e6.x * _e9.x, {}, basis, metal::uint2(0u, 0u), 0u};
 }
 
 uint nyq_inverse_radical_inverse(
-    uint b_13,
+    uint b_14,
     uint inverse_in,
-    uint n_4
+    uint n_6
 ) {
     uint inverse_1 = {};
-    uint index_14 = 0u;
+    uint index_16 = 0u;
     uint done = 0u;
-    uint k_13 = {};
+    uint k_14 = {};
     inverse_1 = inverse_in;
-    uint2 loop_bound_33 = uint2(4294967295u);
+    uint2 loop_bound_34 = uint2(4294967295u);
     bool loop_init_22 = true;
     while(true) {
-        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
-        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         if (!loop_init_22) {
             uint _e32 = done;
             done = _e32 + 1u;
         }
         loop_init_22 = false;
         uint _e8 = done;
-        if (_e8 < n_4) {
+        if (_e8 < n_6) {
         } else {
             break;
         }
@@ -3841,39 +3984,39 @@ uint nyq_inverse_radical_inverse(
             uint _e10 = inverse_1;
             if (_e10 == 0u) {
                 uint _e13 = done;
-                k_13 = _e13;
-                uint2 loop_bound_34 = uint2(4294967295u);
+                k_14 = _e13;
+                uint2 loop_bound_35 = uint2(4294967295u);
                 bool loop_init_23 = true;
                 while(true) {
-                    if (metal::all(loop_bound_34 == uint2(0u))) { break; }
-                    loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
+                    if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+                    loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
                     if (!loop_init_23) {
-                        uint _e20 = k_13;
-                        k_13 = _e20 + 1u;
+                        uint _e20 = k_14;
+                        k_14 = _e20 + 1u;
                     }
                     loop_init_23 = false;
-                    uint _e15 = k_13;
-                    if (_e15 < n_4) {
+                    uint _e15 = k_14;
+                    if (_e15 < n_6) {
                     } else {
                         break;
                     }
                     {
-                        uint _e17 = index_14;
-                        index_14 = _e17 * b_13;
+                        uint _e17 = index_16;
+                        index_16 = _e17 * b_14;
                     }
                 }
-                uint _e22 = index_14;
+                uint _e22 = index_16;
                 return _e22;
             }
             uint _e23 = inverse_1;
-            uint q_9 = naga_div(_e23, b_13);
-            uint _e25 = index_14;
+            uint q_9 = naga_div(_e23, b_14);
+            uint _e25 = index_16;
             uint _e27 = inverse_1;
-            index_14 = (_e25 * b_13) + (_e27 - (q_9 * b_13));
+            index_16 = (_e25 * b_14) + (_e27 - (q_9 * b_14));
             inverse_1 = q_9;
         }
     }
-    uint _e34 = index_14;
+    uint _e34 = index_16;
     return _e34;
 }
 
@@ -3901,31 +4044,31 @@ metal::uint2 nyq_halton_sampler_index(
 
 float nyq_halton_sampler_value(
     thread NyqHaltonSampler& s_73,
-    uint dim_36,
+    uint dim_38,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::uint2 a_24 = {};
-    uint d_26 = naga_mod(dim_36, NYQ_PRIME_COUNT);
-    metal::uint2 index_15 = s_73.index;
-    a_24 = index_15;
-    if (d_26 == 0u) {
-        uint e_4 = s_73.exponents.x;
-        if (e_4 != 0u) {
-            metal::uint2 _e14 = nyq_shr64_(index_15, e_4);
+    uint d_27 = naga_mod(dim_38, NYQ_PRIME_COUNT);
+    metal::uint2 index_17 = s_73.index;
+    a_24 = index_17;
+    if (d_27 == 0u) {
+        uint e_6 = s_73.exponents.x;
+        if (e_6 != 0u) {
+            metal::uint2 _e14 = nyq_shr64_(index_17, e_6);
             a_24 = _e14;
         }
     } else {
-        if (d_26 == 1u) {
+        if (d_27 == 1u) {
             uint _e19 = s_73.scales.y;
-            metal::uint3 _e20 = nyq_divmod64_small(index_15, _e19);
+            metal::uint3 _e20 = nyq_divmod64_small(index_17, _e19);
             a_24 = _e20.xy;
         }
     }
     metal::uint2 _e22 = a_24;
     metal::uint2 _e24 = s_73.seed;
     uint _e26 = s_73.scramble;
-    float _e27 = nyq_radical_inverse_scrambled(d_26, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
+    float _e27 = nyq_radical_inverse_scrambled(d_27, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
     return _e27;
 }
 
@@ -3933,11 +4076,11 @@ void nyq_halton_sampler_start(
     thread NyqHaltonSampler& s_74,
     metal::uint2 pixel_19,
     uint sample_index_17,
-    uint dim_37
+    uint dim_39
 ) {
     metal::uint2 _e5 = nyq_halton_sampler_index(s_74, pixel_19, sample_index_17);
     s_74.index = _e5;
-    s_74.dim = dim_37;
+    s_74.dim = dim_39;
     return;
 }
 
@@ -3946,39 +4089,39 @@ float nyq_halton_sampler_get_1d(
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_27 = s_75.dim;
-    s_75.dim = d_27 + 1u;
-    float _e6 = nyq_halton_sampler_value(s_75, d_27, nyq_halton_bases, _buffer_sizes);
+    uint d_28 = s_75.dim;
+    s_75.dim = d_28 + 1u;
+    float _e6 = nyq_halton_sampler_value(s_75, d_28, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_halton_sampler_pair(
     thread NyqHaltonSampler& s_76,
-    uint dim_38,
+    uint dim_40,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float2 v_6 = metal::float2(0.0, 0.0);
-    uint k_14 = 0u;
-    uint2 loop_bound_35 = uint2(4294967295u);
+    uint k_15 = 0u;
+    uint2 loop_bound_36 = uint2(4294967295u);
     bool loop_init_24 = true;
     while(true) {
-        if (metal::all(loop_bound_35 == uint2(0u))) { break; }
-        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
         if (!loop_init_24) {
-            uint _e17 = k_14;
-            k_14 = _e17 + 1u;
+            uint _e17 = k_15;
+            k_15 = _e17 + 1u;
         }
         loop_init_24 = false;
-        uint _e8 = k_14;
+        uint _e8 = k_15;
         if (_e8 < 2u) {
         } else {
             break;
         }
         {
-            uint _e11 = k_14;
-            uint _e13 = k_14;
-            float _e15 = nyq_halton_sampler_value(s_76, dim_38 + _e13, nyq_halton_bases, _buffer_sizes);
+            uint _e11 = k_15;
+            uint _e13 = k_15;
+            float _e15 = nyq_halton_sampler_value(s_76, dim_40 + _e13, nyq_halton_bases, _buffer_sizes);
             v_6[_e11] = _e15;
         }
     }
@@ -3991,9 +4134,9 @@ metal::float2 nyq_halton_sampler_get_2d(
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_28 = s_77.dim;
-    s_77.dim = d_28 + 2u;
-    metal::float2 _e6 = nyq_halton_sampler_pair(s_77, d_28, nyq_halton_bases, _buffer_sizes);
+    uint d_29 = s_77.dim;
+    s_77.dim = d_29 + 2u;
+    metal::float2 _e6 = nyq_halton_sampler_pair(s_77, d_29, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
@@ -4019,11 +4162,11 @@ NyqCameraSample nyq_halton_sampler_camera_sample(
     float lens_y = 0.0;
     uint d_5 = 0u;
     nyq_halton_sampler_start(s_79, pixel_20, sample_index_18, 5u);
-    uint2 loop_bound_36 = uint2(4294967295u);
+    uint2 loop_bound_37 = uint2(4294967295u);
     bool loop_init_25 = true;
     while(true) {
-        if (metal::all(loop_bound_36 == uint2(0u))) { break; }
-        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
+        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
         if (!loop_init_25) {
             uint _e25 = d_5;
             d_5 = _e25 + 1u;
@@ -4069,13 +4212,13 @@ metal::uint4 nyq_fill_request(
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_9 = _e11 + i_16;
+    uint n_11 = _e11 + i_16;
     uint _e15 = nyq_job.spp;
-    uint pixel_21 = naga_div(n_9, _e15);
+    uint pixel_21 = naga_div(n_11, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_9, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_11, _e29), 5u);
 }
 
 void nyq_fill_camera(
@@ -4129,6 +4272,7 @@ kernel void nyq_fill(
     uint k_2 = 0u;
     uint k_3 = 0u;
     uint k_4 = 0u;
+    uint k_5 = 0u;
     uint i_17 = id.x;
     uint _e4 = nyq_job.count;
     if (i_17 >= _e4) {
@@ -4256,11 +4400,11 @@ kernel void nyq_fill(
             uint _e156 = nyq_job.scramble;
             metal::uint2 _e161 = nyq_job.seed;
             NyqSobol _e162 = nyq_sobol(_e153, _e156 != 0u, _e161);
-            uint2 loop_bound_37 = uint2(4294967295u);
+            uint2 loop_bound_38 = uint2(4294967295u);
             bool loop_init_26 = true;
             while(true) {
-                if (metal::all(loop_bound_37 == uint2(0u))) { break; }
-                loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+                if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
                 if (!loop_init_26) {
                     uint _e190 = k;
                     k = _e190 + 1u;
@@ -4289,11 +4433,11 @@ kernel void nyq_fill(
             metal::uint2 _e197 = nyq_job.seed;
             NyqOwenSobol _e198 = nyq_owen_sobol(_e194, _e197);
             metal::float4 _e201 = nyq_owen_sobol_sample_4d(_e198, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
-            uint2 loop_bound_38 = uint2(4294967295u);
+            uint2 loop_bound_39 = uint2(4294967295u);
             bool loop_init_27 = true;
             while(true) {
-                if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+                if (metal::all(loop_bound_39 == uint2(0u))) { break; }
+                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
                 if (!loop_init_27) {
                     uint _e226 = k_1;
                     k_1 = _e226 + 1u;
@@ -4320,11 +4464,11 @@ kernel void nyq_fill(
             uint _e230 = nyq_job.scramble;
             metal::uint2 _e235 = nyq_job.seed;
             NyqPmj02_ _e236 = nyq_pmj02_(_e230 != 0u, _e235);
-            uint2 loop_bound_39 = uint2(4294967295u);
+            uint2 loop_bound_40 = uint2(4294967295u);
             bool loop_init_28 = true;
             while(true) {
-                if (metal::all(loop_bound_39 == uint2(0u))) { break; }
-                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+                if (metal::all(loop_bound_40 == uint2(0u))) { break; }
+                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
                 if (!loop_init_28) {
                     uint _e264 = k_2;
                     k_2 = _e264 + 1u;
@@ -4354,11 +4498,11 @@ kernel void nyq_fill(
             metal::uint2 _e274 = nyq_job.seed;
             NyqHalton _e275 = nyq_halton(_e268, _e271, _e274);
             uint high_2 = ((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u);
-            uint2 loop_bound_40 = uint2(4294967295u);
+            uint2 loop_bound_41 = uint2(4294967295u);
             bool loop_init_29 = true;
             while(true) {
-                if (metal::all(loop_bound_40 == uint2(0u))) { break; }
-                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+                if (metal::all(loop_bound_41 == uint2(0u))) { break; }
+                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
                 if (!loop_init_29) {
                     uint _e309 = k_3;
                     k_3 = _e309 + 1u;
@@ -4371,34 +4515,74 @@ kernel void nyq_fill(
                 }
                 {
                     uint _e292 = k_3;
-                    metal::uint2 index_16 = metal::uint2(_e6.z, (_e292 >= 4u) ? high_2 : 0u);
+                    metal::uint2 index_18 = metal::uint2(_e6.z, (_e292 >= 4u) ? high_2 : 0u);
                     uint _e298 = k_3;
                     uint _e302 = k_3;
-                    float _e306 = nyq_halton_sample(_e275, index_16, _e6.w + (_e302 & 3u), nyq_halton_bases, _buffer_sizes);
+                    float _e306 = nyq_halton_sample(_e275, index_18, _e6.w + (_e302 & 3u), nyq_halton_bases, _buffer_sizes);
                     nyq_values[out_5 + _e298] = as_type<uint>(_e306);
                 }
             }
             return;
         }
-        default: {
-            uint2 loop_bound_41 = uint2(4294967295u);
+        case 20u: {
+            uint _e313 = nyq_job.lattice;
+            uint _e316 = nyq_job.spp;
+            uint _e319 = nyq_job.generator;
+            uint _e322 = nyq_job.dims;
+            uint _e325 = nyq_job.scramble;
+            metal::uint2 _e330 = nyq_job.seed;
+            NyqLattice _e331 = nyq_lattice(_e313, _e316, _e319, _e322, _e325 != 0u, _e330);
+            uint2 loop_bound_42 = uint2(4294967295u);
             bool loop_init_30 = true;
             while(true) {
-                if (metal::all(loop_bound_41 == uint2(0u))) { break; }
-                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+                if (metal::all(loop_bound_42 == uint2(0u))) { break; }
+                loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
                 if (!loop_init_30) {
-                    uint _e322 = k_4;
-                    k_4 = _e322 + 1u;
+                    uint _e348 = k_4;
+                    k_4 = _e348 + 1u;
                 }
                 loop_init_30 = false;
-                uint _e313 = k_4;
-                if (_e313 < 8u) {
+                uint _e334 = k_4;
+                if (_e334 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e317 = k_4;
-                    nyq_values[out_5 + _e317] = 4294967295u;
+                    uint _e338 = k_4;
+                    uint _e343 = k_4;
+                    float _e345 = nyq_lattice_sample(_e331, _e6.z, _e6.w + _e343);
+                    nyq_values[out_5 + _e338] = as_type<uint>(_e345);
+                }
+            }
+            metal::uint2 _e352 = nyq_lattice_fixed(_e331, _e6.z, _e6.w);
+            metal::uint2 _e353 = nyq_fixed_to_f64_bits(_e352);
+            metal::uint2 _e358 = nyq_lattice_fixed(_e331, _e6.z, _e6.w + 1u);
+            metal::uint2 _e359 = nyq_fixed_to_f64_bits(_e358);
+            nyq_values[out_5 + 4u] = _e353.x;
+            nyq_values[out_5 + 5u] = _e353.y;
+            nyq_values[out_5 + 6u] = _e359.x;
+            nyq_values[out_5 + 7u] = _e359.y;
+            return;
+        }
+        default: {
+            uint2 loop_bound_43 = uint2(4294967295u);
+            bool loop_init_31 = true;
+            while(true) {
+                if (metal::all(loop_bound_43 == uint2(0u))) { break; }
+                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+                if (!loop_init_31) {
+                    uint _e391 = k_5;
+                    k_5 = _e391 + 1u;
+                }
+                loop_init_31 = false;
+                uint _e382 = k_5;
+                if (_e382 < 8u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e386 = k_5;
+                    nyq_values[out_5 + _e386] = 4294967295u;
                 }
             }
             return;

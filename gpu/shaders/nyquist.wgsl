@@ -1026,6 +1026,83 @@ fn nyq_lattice_camera_sample(s: ptr<function, NyqLatticeSampler>, pixel: vec2<u3
     return NyqCameraSample(film, lens, time);
 }
 
+// b^e mod n for n < 2³²: core `pow_mod`.
+fn nyq_pow_mod(b: u32, e_in: u32, n: u32) -> u32 {
+    var base = b % n;
+    var r = 1u % n;
+    var e = e_in;
+    while e > 0u {
+        if (e & 1u) == 1u {
+            r = nyq_mod64(nyq_mul_wide(r, base), n);
+        }
+        base = nyq_mod64(nyq_mul_wide(base, base), n);
+        e >>= 1u;
+    }
+    return r;
+}
+
+// A lattice as a sequence (core `FibonacciLattice`, `Korobov`, and `Kronecker::new(2)`, R2),
+// plain or Cranley–Patterson rotated. Build it with `nyq_lattice`.
+struct NyqLattice {
+    lattice: u32,
+    n: u32,
+    g: u32,
+    dims: u32,
+    rotated: u32,
+    seed: vec2<u32>,
+}
+
+// The lattice `lattice` (NYQ_LATTICE_*) of `n` points (n < 2³²: Fibonacci lattices up to F_47)
+// with generator `g` (F_{m−1}, or the Korobov multiplier) in `dims` dimensions (2 for Fibonacci
+// and R2), rotated by `seed` when `rotated` (core `rotated(seed)`).
+fn nyq_lattice(lattice: u32, n: u32, g: u32, dims: u32, rotated: bool, seed: vec2<u32>) -> NyqLattice {
+    return NyqLattice(lattice, n, g, dims, select(0u, 1u, rotated), seed);
+}
+
+// Point `index`, dimension `dim` (mod dims) as a 64-bit fixed-point fraction.
+fn nyq_lattice_fixed(l: NyqLattice, index: u32, dim: u32) -> vec2<u32> {
+    let d = dim % l.dims;
+    var shift = vec2<u32>(0u, 0u);
+    if l.rotated != 0u {
+        shift = nyq_hash2(l.seed, nyq_u64(d));
+    }
+    if l.lattice == NYQ_LATTICE_R2 {
+        let start = select(vec2<u32>(0u, 0x80000000u), shift, l.rotated != 0u);
+        return nyq_add64(start, nyq_mul64(nyq_u64(index), NYQ_R2_ALPHA[d & 1u]));
+    }
+    var g = l.g;
+    if d == 0u {
+        g = 1u % l.n;
+    } else if d > 1u {
+        g = nyq_pow_mod(l.g, d, l.n);
+    }
+    let step = nyq_mod64(nyq_mul_wide(index % l.n, g), l.n);
+    return nyq_add64(nyq_fixed_ratio(step, l.n), shift);
+}
+
+// Point `index`, dimension `dim` as an f32 (its top 24 bits): core `Sequence::sample`.
+fn nyq_lattice_sample(l: NyqLattice, index: u32, dim: u32) -> f32 {
+    return nyq_fixed_to_f32(nyq_lattice_fixed(l, index, dim));
+}
+
+// The bits of the f64 the core's `sample_f64` returns: the top 53 bits of the fraction.
+fn nyq_fixed_to_f64_bits(x: vec2<u32>) -> vec2<u32> {
+    let m = nyq_shr64(x, 11u);
+    if m.x == 0u && m.y == 0u {
+        return vec2<u32>(0u, 0u);
+    }
+    // The leading bit's position, then the 52 bits below it and the exponent 1023 + e − 53.
+    let e = select(31u - countLeadingZeros(m.x), 63u - countLeadingZeros(m.y), m.y != 0u);
+    var frac = m;
+    let s = 52u - e;
+    if s >= 32u {
+        frac = vec2<u32>(0u, m.x << (s - 32u));
+    } else if s > 0u {
+        frac = nyq_shl64(m, s);
+    }
+    return vec2<u32>(frac.x, (frac.y & 0xfffffu) | ((1023u + e - 53u) << 20u));
+}
+
 // ---------------------------------------------------------------------------------------------
 // stratified: jittered or centred strata, hash-permuted per dimension
 // (core/src/sampler/stratified.rs), and the keyed permutation behind them (core/src/hash.rs).
@@ -2152,7 +2229,9 @@ fn nyq_halton_sampler_camera_sample(s: ptr<function, NyqHaltonSampler>, pixel: v
 // where a sequence has none). The Halton sequence (kind 19) writes the f32 bits of point
 // `sample index` in words 0..3 and, in words 4..7, those of the 64-bit point
 // high·2³² + sample index, high = (pixel.x · 0x9e3779b9 + pixel.y) >> (pixel.y mod 32) (mod 2³²):
-// indices of every length from 33 to 64 bits, where its long path runs.
+// indices of every length from 33 to 64 bits, where its long path runs. The lattice sequences
+// (kind 20) write the f32 bits of four dimensions in words 0..3 and the f64 bits (low word
+// first) of the first two in words 4..7.
 //
 // With `implicit` set, request i is sample i mod spp of pixel ⌊i / spp⌋ in row-major order
 // over `resolution`, at dimension 5 (a whole image's camera samples without a request buffer).
@@ -2170,6 +2249,7 @@ const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 const NYQ_FILL_PMJ02: u32 = 18u;
 const NYQ_FILL_HALTON: u32 = 19u;
+const NYQ_FILL_LATTICE: u32 = 20u;
 
 struct NyqFillJob {
     kind: u32,
@@ -2314,6 +2394,19 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
                 let index = vec2<u32>(q.z, select(0u, high, k >= 4u));
                 nyq_values[out + k] = bitcast<u32>(nyq_halton_sample(h, index, q.w + (k & 3u)));
             }
+        }
+        case 20u: {
+            // lattice: the set; spp: its size; generator; dims; scramble: rotated.
+            let l = nyq_lattice(nyq_job.lattice, nyq_job.spp, nyq_job.generator, nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);
+            for (var k = 0u; k < 4u; k++) {
+                nyq_values[out + k] = bitcast<u32>(nyq_lattice_sample(l, q.z, q.w + k));
+            }
+            let lo = nyq_fixed_to_f64_bits(nyq_lattice_fixed(l, q.z, q.w));
+            let hi = nyq_fixed_to_f64_bits(nyq_lattice_fixed(l, q.z, q.w + 1u));
+            nyq_values[out + 4u] = lo.x;
+            nyq_values[out + 5u] = lo.y;
+            nyq_values[out + 6u] = hi.x;
+            nyq_values[out + 7u] = hi.y;
         }
         default: {
             for (var k = 0u; k < 8u; k++) {

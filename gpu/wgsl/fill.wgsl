@@ -10,7 +10,9 @@
 // where a sequence has none). The Halton sequence (kind 19) writes the f32 bits of point
 // `sample index` in words 0..3 and, in words 4..7, those of the 64-bit point
 // high·2³² + sample index, high = (pixel.x · 0x9e3779b9 + pixel.y) >> (pixel.y mod 32) (mod 2³²):
-// indices of every length from 33 to 64 bits, where its long path runs.
+// indices of every length from 33 to 64 bits, where its long path runs. The lattice sequences
+// (kind 20) write the f32 bits of four dimensions in words 0..3 and the f64 bits (low word
+// first) of the first two in words 4..7.
 //
 // With `implicit` set, request i is sample i mod spp of pixel ⌊i / spp⌋ in row-major order
 // over `resolution`, at dimension 5 (a whole image's camera samples without a request buffer).
@@ -28,6 +30,7 @@ const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 const NYQ_FILL_PMJ02: u32 = 18u;
 const NYQ_FILL_HALTON: u32 = 19u;
+const NYQ_FILL_LATTICE: u32 = 20u;
 
 struct NyqFillJob {
     kind: u32,
@@ -172,6 +175,19 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
                 let index = vec2<u32>(q.z, select(0u, high, k >= 4u));
                 nyq_values[out + k] = bitcast<u32>(nyq_halton_sample(h, index, q.w + (k & 3u)));
             }
+        }
+        case 20u: {
+            // lattice: the set; spp: its size; generator; dims; scramble: rotated.
+            let l = nyq_lattice(nyq_job.lattice, nyq_job.spp, nyq_job.generator, nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);
+            for (var k = 0u; k < 4u; k++) {
+                nyq_values[out + k] = bitcast<u32>(nyq_lattice_sample(l, q.z, q.w + k));
+            }
+            let lo = nyq_fixed_to_f64_bits(nyq_lattice_fixed(l, q.z, q.w));
+            let hi = nyq_fixed_to_f64_bits(nyq_lattice_fixed(l, q.z, q.w + 1u));
+            nyq_values[out + 4u] = lo.x;
+            nyq_values[out + 5u] = lo.y;
+            nyq_values[out + 6u] = hi.x;
+            nyq_values[out + 7u] = hi.y;
         }
         default: {
             for (var k = 0u; k < 8u; k++) {

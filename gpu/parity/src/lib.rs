@@ -12,7 +12,7 @@
 
 use std::borrow::Cow;
 
-use nyquist::lattice::FibonacciLattice;
+use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
 use nyquist::sampler::{
     HaltonSampler, Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
     SobolSampler, StratifiedSampler, ZSobolSampler,
@@ -127,6 +127,21 @@ pub enum Job {
         scramble: Scramble,
         /// The seed.
         seed: u64,
+    },
+    /// A lattice as a sequence: `FibonacciLattice::new(m)` (`lattice` 0, `n` = m),
+    /// `Korobov::new(n, generator, dims)` (1) or `Kronecker::new(2)` (2, R2), rotated by the
+    /// seed if there is one.
+    Lattice {
+        /// 0 Fibonacci, 1 Korobov, 2 R2.
+        lattice: u32,
+        /// Fibonacci: the index m of F_m; Korobov: the point count.
+        n: u32,
+        /// Korobov: the multiplier.
+        generator: u32,
+        /// Korobov: the dimension count.
+        dims: u32,
+        /// The rotation's seed, if any.
+        seed: Option<u64>,
     },
     /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
     Sobol {
@@ -289,6 +304,11 @@ impl Job {
             Job::Pmj02 { seed: None } => "pmj02".into(),
             Job::Pmj02 { seed: Some(_) } => "pmj02 (owen)".into(),
             Job::SobolSampler { scramble, .. } => format!("sobol sampler ({})", scramble.name()),
+            Job::Lattice { lattice, seed, .. } => format!(
+                "{} lattice{}",
+                ["fibonacci", "korobov", "r2"][*lattice as usize],
+                if seed.is_some() { " (rotated)" } else { "" }
+            ),
             Job::Sobol { seed: None, .. } => "sobol".into(),
             Job::Sobol { seed: Some(_), .. } => "sobol (digital shift)".into(),
             Job::OwenSobol { .. } => "owen-sobol".into(),
@@ -391,6 +411,32 @@ impl Job {
                 resolution,
                 ..FillJob::default()
             },
+            Job::Lattice {
+                lattice,
+                n,
+                generator,
+                dims,
+                seed,
+            } => {
+                let (n, generator, dims) = match lattice {
+                    0 => {
+                        let f = FibonacciLattice::new(n).expect("valid lattice");
+                        (f.point_count_u64() as u32, f.generator() as u32, 2)
+                    }
+                    1 => (n, generator, dims),
+                    _ => (1, 0, 2),
+                };
+                FillJob {
+                    kind: 20,
+                    scramble: u32::from(seed.is_some()),
+                    spp: n,
+                    seed: seed_words(seed.unwrap_or(0)),
+                    dims,
+                    set: lattice,
+                    generator,
+                    ..FillJob::default()
+                }
+            }
             Job::Sobol { dims, seed } => FillJob {
                 kind: 16,
                 scramble: u32::from(seed.is_some()),
@@ -505,6 +551,44 @@ impl Job {
                     .expect("valid sampler"),
                 requests,
             ),
+            Job::Lattice {
+                lattice,
+                n,
+                generator,
+                dims,
+                seed,
+            } => {
+                let s: Box<dyn Sequence> = match (lattice, seed) {
+                    (0, None) => Box::new(FibonacciLattice::new(n).expect("valid")),
+                    (0, Some(s)) => Box::new(FibonacciLattice::new(n).expect("valid").rotated(s)),
+                    (1, None) => Box::new(
+                        Korobov::new(u64::from(n), u64::from(generator), dims).expect("valid"),
+                    ),
+                    (1, Some(s)) => Box::new(
+                        Korobov::new(u64::from(n), u64::from(generator), dims)
+                            .expect("valid")
+                            .rotated(s),
+                    ),
+                    (_, None) => Box::new(Kronecker::new(2).expect("valid")),
+                    (_, Some(s)) => Box::new(Kronecker::new(2).expect("valid").rotated(s)),
+                };
+                requests
+                    .iter()
+                    .map(|&[_, _, index, dim]| {
+                        let i = u64::from(index);
+                        let mut a = [0; WORDS_PER_REQUEST];
+                        for (k, word) in a[..4].iter_mut().enumerate() {
+                            *word = s.sample(i, dim.wrapping_add(k as u32)).to_bits();
+                        }
+                        for k in 0..2 {
+                            let bits = s.sample_f64(i, dim.wrapping_add(k as u32)).to_bits();
+                            a[4 + 2 * k] = bits as u32;
+                            a[5 + 2 * k] = (bits >> 32) as u32;
+                        }
+                        a
+                    })
+                    .collect()
+            }
             Job::Sobol { dims, seed } => {
                 let s = match seed {
                     None => Sobol::new(dims),

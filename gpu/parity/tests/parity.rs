@@ -63,6 +63,48 @@ fn jobs() -> Vec<Job> {
             dims: 1024,
             seed: None,
         },
+        Job::Lattice {
+            lattice: 0,
+            n: 20,
+            generator: 0,
+            dims: 2,
+            seed: None,
+        },
+        Job::Lattice {
+            lattice: 0,
+            n: 47,
+            generator: 0,
+            dims: 2,
+            seed: Some(31),
+        },
+        Job::Lattice {
+            lattice: 1,
+            n: 1021,
+            generator: 76,
+            dims: 16,
+            seed: Some(32),
+        },
+        Job::Lattice {
+            lattice: 1,
+            n: 4_000_000_007,
+            generator: 1_234_567_891,
+            dims: 1000,
+            seed: None,
+        },
+        Job::Lattice {
+            lattice: 2,
+            n: 0,
+            generator: 0,
+            dims: 2,
+            seed: None,
+        },
+        Job::Lattice {
+            lattice: 2,
+            n: 0,
+            generator: 0,
+            dims: 2,
+            seed: Some(33),
+        },
         Job::StratifiedSampler {
             strata: [4, 4],
             jitter: Jitter::Jittered,
@@ -313,7 +355,8 @@ fn every_job_matches_the_core_from_every_source() {
     let mut seen = Vec::new();
     let sized = jobs().into_iter().map(|job| {
         let family = match &job {
-            Job::LatticeSampler { set, .. } => format!("lattice {set}"),
+            Job::LatticeSampler { set, .. } => format!("lattice sampler {set}"),
+            Job::Lattice { lattice, .. } => format!("lattice {lattice}"),
             other => format!("{:?}", std::mem::discriminant(other)),
         };
         let count = if seen.contains(&family) { n >> 3 } else { n };
