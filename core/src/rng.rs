@@ -373,7 +373,8 @@ mod tests {
     /// `r·3 mod 2³²` is 0 (the word 0) is redrawn, and the redraw's high word is the value. The
     /// word `0xaaaa_aaab` (3⁻¹ mod 2³²) has the low word 1, the threshold itself: kept, value 2.
     /// The 64-bit draw on n = 3·2³² has the same words shifted: threshold 2³², the word 0
-    /// redrawn, a low word of exactly 2³² kept.
+    /// redrawn, a low word of exactly 2³² kept; on n = 2⁶³ + 1 the threshold is most of the
+    /// range.
     #[test]
     fn uniform_below_redraws_exactly_the_rejected_words() {
         let value = |r: u32| ((u64::from(r) * 3) >> 32) as u32;
@@ -399,6 +400,15 @@ mod tests {
             kept_value
         );
         assert_ne!(kept_value, want);
+        // n = 2⁶³ + 1: the threshold 2⁶⁴ mod n = 2⁶³ − 1 is most of the range. The word 2 (low
+        // word 2) is redrawn; u64::MAX has the low word 2⁶³ − 1, the threshold itself: kept, and
+        // its value is n − 1.
+        let n: u64 = (1 << 63) + 1;
+        assert_eq!(n.wrapping_neg() % n, (1 << 63) - 1);
+        assert_eq!(
+            uniform_below_u64(&mut Scripted64(&[2, u64::MAX]), n),
+            1 << 63
+        );
     }
 
     #[test]
