@@ -83,7 +83,7 @@ while IFS='|' read -r module package file _; do
     mutants_in "$package" "$file" "$tmp/covered.diff" >"$tmp/covered.txt" || true
     uncovered=$(grep -c -v -F -x -f <(cat "$tmp/covered.txt" <(echo)) "$tmp/since-row.txt" || true)
     if [ "$uncovered" -gt 0 ]; then
-        echo "$module: $file changed since ${at} (${commits% }); $uncovered mutants on lines changed before ${start:0:12} were never tested: $again"
+        echo "$module: $file changed since ${at} (${commits% }); $uncovered mutants on lines changed between ${at} and ${start:0:12}, which neither its row nor a recorded mutation stage covers: $again"
         status=2
     else
         current=$((current + 1))
