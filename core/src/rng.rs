@@ -296,9 +296,9 @@ mod tests {
         assert!(chi < 36.12, "chi2 {chi} cells {cells:?}");
     }
 
-    /// Distinct seeds give distinct streams (the seed's bits all reach the state), and the
-    /// stream each seed picks is pinned: seeded output is what a render reproduces. The values
-    /// are golden (this crate's own choice of seeding, recorded from this code).
+    /// Distinct seeds give distinct streams (every bit of a seed reaches the generator's
+    /// state), and the stream each seed picks is pinned: seeded output is what a render
+    /// reproduces. The values are golden, recorded from `default_rng`'s seeding.
     #[test]
     fn default_rng_streams_differ_by_seed_and_are_pinned() {
         let mut firsts: std::vec::Vec<u64> = (0..4096).map(|s| default_rng(s).next_u64()).collect();
