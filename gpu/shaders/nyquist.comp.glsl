@@ -310,6 +310,10 @@ float nyq_fraction_to_f32_(uint v) {
     return (float((v >> 8u)) * 5.9604645e-8);
 }
 
+uint nyq_round_up_pow2_(uint n) {
+    return ((n <= 1u) ? 1u : (1u << (32u - uint(31 - findMSB((n - 1u))))));
+}
+
 float nyq_rev_to_f32_(uint w_rev) {
     float _e2 = nyq_fraction_to_f32_(bitfieldReverse(w_rev));
     return _e2;
@@ -483,7 +487,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
     uint inverse_[32] = uint[32](0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u);
     uint i_2 = 0u;
     uint r_3 = 0u;
-    uint spp_1 = ((spp_requested <= 1u) ? 1u : (1u << (32u - uint(31 - findMSB((spp_requested - 1u))))));
+    uint _e4 = nyq_round_up_pow2_(spp_requested);
     uint side = max(resolution.x, resolution.y);
     uint m_4 = (32u - uint(31 - findMSB((side - 1u))));
     seed_6 = seed_in;
@@ -492,58 +496,58 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
     }
     if ((scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
         uint mask = ((m_4 == 0u) ? 4294967295u : (4294967295u >> (m_4 & 31u)));
-        uvec2 _e43 = seed_6;
-        uvec2 _e45 = nyq_u64_(0u);
-        uvec2 _e46 = nyq_hash2_(_e43, _e45);
-        uvec2 _e49 = seed_6;
-        uvec2 _e51 = nyq_u64_(1u);
-        uvec2 _e52 = nyq_hash2_(_e49, _e51);
-        shift_1 = uvec2((_e46.x & mask), (_e52.x & mask));
+        uvec2 _e33 = seed_6;
+        uvec2 _e35 = nyq_u64_(0u);
+        uvec2 _e36 = nyq_hash2_(_e33, _e35);
+        uvec2 _e39 = seed_6;
+        uvec2 _e41 = nyq_u64_(1u);
+        uvec2 _e42 = nyq_hash2_(_e39, _e41);
+        shift_1 = uvec2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_7 = (2u * m_4);
+    uint n_8 = (2u * m_4);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            uint _e121 = c_1;
-            c_1 = (_e121 + 1u);
+            uint _e111 = c_1;
+            c_1 = (_e111 + 1u);
         }
         loop_init_1 = false;
-        uint _e61 = c_1;
-        if ((_e61 < n_7)) {
+        uint _e51 = c_1;
+        if ((_e51 < n_8)) {
         } else {
             break;
         }
         {
-            uint _e64 = c_1;
-            uint _e67 = nyq_sobol_u32_((1u << _e64), 0u);
-            uint _e68 = nyq_top(_e67, m_4);
-            uint _e70 = c_1;
-            uint _e73 = nyq_sobol_u32_((1u << _e70), 1u);
-            uint _e74 = nyq_top(_e73, m_4);
-            uvec2 image_bits = uvec2((_e68 | (_e74 << (m_4 & 31u))), ((m_4 == 0u) ? 0u : (_e74 >> ((32u - m_4) & 31u))));
+            uint _e54 = c_1;
+            uint _e57 = nyq_sobol_u32_((1u << _e54), 0u);
+            uint _e58 = nyq_top(_e57, m_4);
+            uint _e60 = c_1;
+            uint _e63 = nyq_sobol_u32_((1u << _e60), 1u);
+            uint _e64 = nyq_top(_e63, m_4);
+            uvec2 image_bits = uvec2((_e58 | (_e64 << (m_4 & 31u))), ((m_4 == 0u) ? 0u : (_e64 >> ((32u - m_4) & 31u))));
             i = 0u;
             bool loop_init_2 = true;
             while(true) {
                 if (!loop_init_2) {
-                    uint _e118 = i;
-                    i = (_e118 + 1u);
+                    uint _e108 = i;
+                    i = (_e108 + 1u);
                 }
                 loop_init_2 = false;
-                uint _e91 = i;
-                if ((_e91 < n_7)) {
+                uint _e81 = i;
+                if ((_e81 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e94 = i;
-                    uint _e97 = i;
-                    uint _e101 = i;
-                    uint bit = (((_e101 >= 32u) ? (image_bits.y >> (_e97 - 32u)) : (image_bits.x >> _e94)) & 1u);
+                    uint _e84 = i;
+                    uint _e87 = i;
+                    uint _e91 = i;
+                    uint bit = (((_e91 >= 32u) ? (image_bits.y >> (_e87 - 32u)) : (image_bits.x >> _e84)) & 1u);
                     if ((bit == 1u)) {
-                        uint _e109 = i;
-                        uint _e112 = rows[_e109].x;
-                        uint _e114 = c_1;
-                        rows[_e109].x = (_e112 | (1u << _e114));
+                        uint _e99 = i;
+                        uint _e102 = rows[_e99].x;
+                        uint _e104 = c_1;
+                        rows[_e99].x = (_e102 | (1u << _e104));
                     }
                 }
             }
@@ -552,101 +556,101 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            uint _e136 = i_1;
-            i_1 = (_e136 + 1u);
+            uint _e126 = i_1;
+            i_1 = (_e126 + 1u);
         }
         loop_init_3 = false;
-        uint _e125 = i_1;
-        if ((_e125 < n_7)) {
+        uint _e115 = i_1;
+        if ((_e115 < n_8)) {
         } else {
             break;
         }
         {
-            uint _e127 = i_1;
-            uint _e130 = rows[_e127].y;
-            uint _e132 = i_1;
-            rows[_e127].y = (_e130 | (1u << _e132));
+            uint _e117 = i_1;
+            uint _e120 = rows[_e117].y;
+            uint _e122 = i_1;
+            rows[_e117].y = (_e120 | (1u << _e122));
         }
     }
     bool loop_init_4 = true;
     while(true) {
         if (!loop_init_4) {
-            uint _e204 = col;
-            col = (_e204 + 1u);
+            uint _e194 = col;
+            col = (_e194 + 1u);
         }
         loop_init_4 = false;
-        uint _e140 = col;
-        if ((_e140 < n_7)) {
+        uint _e130 = col;
+        if ((_e130 < n_8)) {
         } else {
             break;
         }
         {
-            uint _e142 = col;
-            pivot = _e142;
-            uint _e144 = col;
-            r_1 = _e144;
+            uint _e132 = col;
+            pivot = _e132;
+            uint _e134 = col;
+            r_1 = _e134;
             bool loop_init_5 = true;
             while(true) {
                 if (!loop_init_5) {
-                    uint _e160 = r_1;
-                    r_1 = (_e160 + 1u);
+                    uint _e150 = r_1;
+                    r_1 = (_e150 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e146 = r_1;
-                if ((_e146 < n_7)) {
+                uint _e136 = r_1;
+                if ((_e136 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e148 = r_1;
-                    uint _e151 = rows[_e148].x;
-                    uint _e152 = col;
-                    if ((((_e151 >> _e152) & 1u) == 1u)) {
-                        uint _e158 = r_1;
-                        pivot = _e158;
+                    uint _e138 = r_1;
+                    uint _e141 = rows[_e138].x;
+                    uint _e142 = col;
+                    if ((((_e141 >> _e142) & 1u) == 1u)) {
+                        uint _e148 = r_1;
+                        pivot = _e148;
                         break;
                     }
                 }
             }
-            uint _e162 = col;
-            uvec2 t_6 = rows[_e162];
-            uint _e165 = col;
-            uint _e167 = pivot;
-            uvec2 _e169 = rows[_e167];
-            rows[_e165] = _e169;
-            uint _e170 = pivot;
-            rows[_e170] = t_6;
+            uint _e152 = col;
+            uvec2 t_6 = rows[_e152];
+            uint _e155 = col;
+            uint _e157 = pivot;
+            uvec2 _e159 = rows[_e157];
+            rows[_e155] = _e159;
+            uint _e160 = pivot;
+            rows[_e160] = t_6;
             r_2 = 0u;
             bool loop_init_6 = true;
             while(true) {
                 if (!loop_init_6) {
-                    uint _e201 = r_2;
-                    r_2 = (_e201 + 1u);
+                    uint _e191 = r_2;
+                    r_2 = (_e191 + 1u);
                 }
                 loop_init_6 = false;
-                uint _e174 = r_2;
-                if ((_e174 < n_7)) {
+                uint _e164 = r_2;
+                if ((_e164 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e176 = r_2;
-                    uint _e177 = col;
-                    if ((_e176 != _e177)) {
-                        uint _e181 = r_2;
-                        uint _e184 = rows[_e181].x;
-                        uint _e185 = col;
-                        local = (((_e184 >> _e185) & 1u) == 1u);
+                    uint _e166 = r_2;
+                    uint _e167 = col;
+                    if ((_e166 != _e167)) {
+                        uint _e171 = r_2;
+                        uint _e174 = rows[_e171].x;
+                        uint _e175 = col;
+                        local = (((_e174 >> _e175) & 1u) == 1u);
                     } else {
                         local = false;
                     }
-                    bool _e192 = local;
-                    if (_e192) {
-                        uint _e193 = r_2;
-                        uvec2 _e195 = rows[_e193];
-                        uint _e196 = col;
-                        uvec2 _e198 = rows[_e196];
-                        rows[_e193] = (_e195 ^ _e198);
+                    bool _e182 = local;
+                    if (_e182) {
+                        uint _e183 = r_2;
+                        uvec2 _e185 = rows[_e183];
+                        uint _e186 = col;
+                        uvec2 _e188 = rows[_e186];
+                        rows[_e183] = (_e185 ^ _e188);
                     }
                 }
             }
@@ -655,12 +659,12 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
     bool loop_init_7 = true;
     while(true) {
         if (!loop_init_7) {
-            uint _e236 = i_2;
-            i_2 = (_e236 + 1u);
+            uint _e226 = i_2;
+            i_2 = (_e226 + 1u);
         }
         loop_init_7 = false;
-        uint _e209 = i_2;
-        if ((_e209 < n_7)) {
+        uint _e199 = i_2;
+        if ((_e199 < n_8)) {
         } else {
             break;
         }
@@ -669,72 +673,72 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
             bool loop_init_8 = true;
             while(true) {
                 if (!loop_init_8) {
-                    uint _e233 = r_3;
-                    r_3 = (_e233 + 1u);
+                    uint _e223 = r_3;
+                    r_3 = (_e223 + 1u);
                 }
                 loop_init_8 = false;
-                uint _e213 = r_3;
-                if ((_e213 < n_7)) {
+                uint _e203 = r_3;
+                if ((_e203 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e215 = i_2;
-                    uint _e218 = rows[_e215].y;
-                    uint _e219 = r_3;
-                    if ((((_e218 >> _e219) & 1u) == 1u)) {
-                        uint _e225 = r_3;
-                        uint _e227 = inverse_[_e225];
-                        uint _e229 = i_2;
-                        inverse_[_e225] = (_e227 | (1u << _e229));
+                    uint _e205 = i_2;
+                    uint _e208 = rows[_e205].y;
+                    uint _e209 = r_3;
+                    if ((((_e208 >> _e209) & 1u) == 1u)) {
+                        uint _e215 = r_3;
+                        uint _e217 = inverse_[_e215];
+                        uint _e219 = i_2;
+                        inverse_[_e215] = (_e217 | (1u << _e219));
                     }
                 }
             }
         }
     }
-    uint _e239 = inverse_[0];
-    uint _e241 = inverse_[1];
-    uint _e243 = inverse_[2];
-    uint _e245 = inverse_[3];
-    uvec4 v0_ = uvec4(_e239, _e241, _e243, _e245);
-    uint _e248 = inverse_[4];
-    uint _e250 = inverse_[5];
-    uint _e252 = inverse_[6];
-    uint _e254 = inverse_[7];
-    uvec4 v1_ = uvec4(_e248, _e250, _e252, _e254);
-    uint _e257 = inverse_[8];
-    uint _e259 = inverse_[9];
-    uint _e261 = inverse_[10];
-    uint _e263 = inverse_[11];
-    uvec4 v2_ = uvec4(_e257, _e259, _e261, _e263);
-    uint _e266 = inverse_[12];
-    uint _e268 = inverse_[13];
-    uint _e270 = inverse_[14];
-    uint _e272 = inverse_[15];
-    uvec4 v3_ = uvec4(_e266, _e268, _e270, _e272);
-    uint _e275 = inverse_[16];
-    uint _e277 = inverse_[17];
-    uint _e279 = inverse_[18];
-    uint _e281 = inverse_[19];
-    uvec4 v4_ = uvec4(_e275, _e277, _e279, _e281);
-    uint _e284 = inverse_[20];
-    uint _e286 = inverse_[21];
-    uint _e288 = inverse_[22];
-    uint _e290 = inverse_[23];
-    uvec4 v5_ = uvec4(_e284, _e286, _e288, _e290);
-    uint _e293 = inverse_[24];
-    uint _e295 = inverse_[25];
-    uint _e297 = inverse_[26];
-    uint _e299 = inverse_[27];
-    uvec4 v6_ = uvec4(_e293, _e295, _e297, _e299);
-    uint _e302 = inverse_[28];
-    uint _e304 = inverse_[29];
-    uint _e306 = inverse_[30];
-    uint _e308 = inverse_[31];
-    uvec4 v7_ = uvec4(_e302, _e304, _e306, _e308);
-    uvec2 _e310 = seed_6;
-    uvec2 _e311 = shift_1;
-    return NyqSobolSampler(spp_1, m_4, scramble, _e310, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e311, 0u, 0u);
+    uint _e229 = inverse_[0];
+    uint _e231 = inverse_[1];
+    uint _e233 = inverse_[2];
+    uint _e235 = inverse_[3];
+    uvec4 v0_ = uvec4(_e229, _e231, _e233, _e235);
+    uint _e238 = inverse_[4];
+    uint _e240 = inverse_[5];
+    uint _e242 = inverse_[6];
+    uint _e244 = inverse_[7];
+    uvec4 v1_ = uvec4(_e238, _e240, _e242, _e244);
+    uint _e247 = inverse_[8];
+    uint _e249 = inverse_[9];
+    uint _e251 = inverse_[10];
+    uint _e253 = inverse_[11];
+    uvec4 v2_ = uvec4(_e247, _e249, _e251, _e253);
+    uint _e256 = inverse_[12];
+    uint _e258 = inverse_[13];
+    uint _e260 = inverse_[14];
+    uint _e262 = inverse_[15];
+    uvec4 v3_ = uvec4(_e256, _e258, _e260, _e262);
+    uint _e265 = inverse_[16];
+    uint _e267 = inverse_[17];
+    uint _e269 = inverse_[18];
+    uint _e271 = inverse_[19];
+    uvec4 v4_ = uvec4(_e265, _e267, _e269, _e271);
+    uint _e274 = inverse_[20];
+    uint _e276 = inverse_[21];
+    uint _e278 = inverse_[22];
+    uint _e280 = inverse_[23];
+    uvec4 v5_ = uvec4(_e274, _e276, _e278, _e280);
+    uint _e283 = inverse_[24];
+    uint _e285 = inverse_[25];
+    uint _e287 = inverse_[26];
+    uint _e289 = inverse_[27];
+    uvec4 v6_ = uvec4(_e283, _e285, _e287, _e289);
+    uint _e292 = inverse_[28];
+    uint _e294 = inverse_[29];
+    uint _e296 = inverse_[30];
+    uint _e298 = inverse_[31];
+    uvec4 v7_ = uvec4(_e292, _e294, _e296, _e298);
+    uvec2 _e300 = seed_6;
+    uvec2 _e301 = shift_1;
+    return NyqSobolSampler(_e4, m_4, scramble, _e300, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u);
 }
 
 uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_13, uint t_in) {
@@ -1083,12 +1087,12 @@ NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_29, uve
 }
 
 NyqZSobolSampler nyq_zsobol_sampler(uvec2 resolution_1, uint spp_requested_1, uint scramble_1, uvec2 seed_9) {
-    uint spp_2 = ((spp_requested_1 <= 1u) ? 1u : (1u << (32u - uint(31 - findMSB((spp_requested_1 - 1u))))));
+    uint _e4 = nyq_round_up_pow2_(spp_requested_1);
     uint side_1 = max(resolution_1.x, resolution_1.y);
     uint log2_res = (32u - uint(31 - findMSB((side_1 - 1u))));
-    uint log2_spp = min(uint(findLSB(spp_2)), 32u);
+    uint log2_spp = min(uint(findLSB(_e4)), 32u);
     uint bits_3 = ((2u * log2_res) + log2_spp);
-    return NyqZSobolSampler(spp_2, log2_spp, log2_res, scramble_1, seed_9, (bits_3 / 2u), (log2_spp / 2u), (log2_spp & 1u), 0u, 0u);
+    return NyqZSobolSampler(_e4, log2_spp, log2_res, scramble_1, seed_9, (bits_3 / 2u), (log2_spp / 2u), (log2_spp & 1u), 0u, 0u);
 }
 
 uint nyq_spread(uint x_in_2) {
@@ -1382,10 +1386,6 @@ void nyq_pcg32_advance(inout NyqPcg32_ g_1, uint delta) {
     return;
 }
 
-float nyq_unit_f32_(uint h_1) {
-    return (float((h_1 >> 8u)) * 5.9604645e-8);
-}
-
 uvec2 nyq_hash3_(uvec2 a_7, uvec2 b_5, uvec2 c_2) {
     uvec2 _e3 = nyq_hash2_(a_7, b_5);
     uvec2 _e7 = nyq_add64_(c_2, uvec2(2111796287u, 3668340012u));
@@ -1430,7 +1430,7 @@ float nyq_random_get_1d(inout NyqRandomSampler s_42) {
     NyqPcg32_ _e2 = s_42.rng;
     g_3 = _e2;
     uint _e4 = nyq_pcg32_next(g_3);
-    float _e5 = nyq_unit_f32_(_e4);
+    float _e5 = nyq_fraction_to_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
     s_42.rng = _e7;
     uint _e9 = s_42.dim;
@@ -1459,9 +1459,9 @@ vec2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_44) {
     NyqPcg32_ _e7 = nyq_random_at(s_44, 0u);
     g_4 = _e7;
     uint _e9 = nyq_pcg32_next(g_4);
-    float _e10 = nyq_unit_f32_(_e9);
+    float _e10 = nyq_fraction_to_f32_(_e9);
     uint _e11 = nyq_pcg32_next(g_4);
-    float _e12 = nyq_unit_f32_(_e11);
+    float _e12 = nyq_fraction_to_f32_(_e11);
     vec2 p_3 = vec2(_e10, _e12);
     uint _e15 = s_44.dim;
     if ((_e15 < 2u)) {
@@ -1483,7 +1483,7 @@ NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_45, uvec2 pixe
     return NyqCameraSample(film_2, _e6, _e5);
 }
 
-uint nyq_mod64_(uvec2 x_9, uint n) {
+uint nyq_mod64_(uvec2 x_9, uint n_1) {
     uint r_5 = 0u;
     uint i_5 = 0u;
     bool local_3 = false;
@@ -1510,14 +1510,14 @@ uint nyq_mod64_(uvec2 x_9, uint n) {
             r_5 = ((_e26 << 1u) | bit_1);
             if (!((carry == 1u))) {
                 uint _e35 = r_5;
-                local_3 = (_e35 >= n);
+                local_3 = (_e35 >= n_1);
             } else {
                 local_3 = true;
             }
             bool _e38 = local_3;
             if (_e38) {
                 uint _e39 = r_5;
-                r_5 = (_e39 - n);
+                r_5 = (_e39 - n_1);
             }
         }
     }
@@ -1574,16 +1574,16 @@ float nyq_fixed_to_f32_(uvec2 x_10) {
     return (float((x_10.y >> 8u)) * 5.9604645e-8);
 }
 
-NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_1, uint g_5, uvec2 seed_13) {
-    return NyqLatticeSampler(lattice, n_1, g_5, seed_13, uvec2(0u, 0u), 0u, 0u);
+NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_2, uint g_5, uvec2 seed_13) {
+    return NyqLatticeSampler(lattice, n_2, g_5, seed_13, uvec2(0u, 0u), 0u, 0u);
 }
 
 float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19) {
     uvec2 base = uvec2(0u);
     uint g_6 = 0u;
-    uint n_8 = s_46.n;
+    uint n_9 = s_46.n;
     uint _e5 = s_46.index;
-    uint k_17 = (_e5 % n_8);
+    uint k_17 = (_e5 % n_9);
     uint component = (dim_19 % 2u);
     uint _e11 = s_46.lattice;
     switch(_e11) {
@@ -1598,12 +1598,12 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19) {
             uint _e21 = s_46.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = (1u % n_8);
+                g_6 = (1u % n_9);
             }
             uint _e27 = g_6;
             uvec2 _e28 = nyq_mul_wide(k_17, _e27);
-            uint _e29 = nyq_mod64_(_e28, n_8);
-            uvec2 _e30 = nyq_fixed_ratio(_e29, n_8);
+            uint _e29 = nyq_mod64_(_e28, n_9);
+            uvec2 _e30 = nyq_fixed_ratio(_e29, n_9);
             base = _e30;
             break;
         }
@@ -1661,12 +1661,12 @@ NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_51, uvec2 pi
     return NyqCameraSample(film_3, _e6, _e5);
 }
 
-uint nyq_pow_mod(uint b_6, uint e_in, uint n_2) {
+uint nyq_pow_mod(uint b_6, uint e_in, uint n_3) {
     uint base_1 = 0u;
     uint r_7 = 0u;
     uint e = 0u;
-    base_1 = (b_6 % n_2);
-    r_7 = (1u % n_2);
+    base_1 = (b_6 % n_3);
+    r_7 = (1u % n_3);
     e = e_in;
     while(true) {
         uint _e9 = e;
@@ -1680,13 +1680,13 @@ uint nyq_pow_mod(uint b_6, uint e_in, uint n_2) {
                 uint _e17 = r_7;
                 uint _e18 = base_1;
                 uvec2 _e19 = nyq_mul_wide(_e17, _e18);
-                uint _e20 = nyq_mod64_(_e19, n_2);
+                uint _e20 = nyq_mod64_(_e19, n_3);
                 r_7 = _e20;
             }
             uint _e21 = base_1;
             uint _e22 = base_1;
             uvec2 _e23 = nyq_mul_wide(_e21, _e22);
-            uint _e24 = nyq_mod64_(_e23, n_2);
+            uint _e24 = nyq_mod64_(_e23, n_3);
             base_1 = _e24;
             uint _e25 = e;
             e = (_e25 >> 1u);
@@ -1696,8 +1696,8 @@ uint nyq_pow_mod(uint b_6, uint e_in, uint n_2) {
     return _e28;
 }
 
-NyqLattice nyq_lattice(uint lattice_1, uint n_3, uint g_7, uint dims_2, bool rotated, uvec2 seed_14) {
-    return NyqLattice(lattice_1, n_3, g_7, dims_2, (rotated ? 1u : 0u), seed_14);
+NyqLattice nyq_lattice(uint lattice_1, uint n_4, uint g_7, uint dims_2, bool rotated, uvec2 seed_14) {
+    return NyqLattice(lattice_1, n_4, g_7, dims_2, (rotated ? 1u : 0u), seed_14);
 }
 
 uvec2 nyq_lattice_fixed(NyqLattice l, uint index_10, uint dim_21) {
@@ -1889,22 +1889,22 @@ uvec2 nyq_shl64_any(uvec2 x_14, uint s_53) {
     return _e12;
 }
 
-uvec2 nyq_packed_table(uint n_4, uvec2 r_in) {
+uvec2 nyq_packed_table(uint n_5, uvec2 r_in) {
     uvec2 t_2 = uvec2(1985229328u, 4275878552u);
     uvec2 r_10 = uvec2(0u);
     uint k_9 = 0u;
-    if ((n_4 <= 4u)) {
-        if ((n_4 < 2u)) {
+    if ((n_5 <= 4u)) {
+        if ((n_5 < 2u)) {
             return uvec2(0u, 0u);
         }
         uint factorial[5] = uint[5](1u, 1u, 2u, 6u, 24u);
         uint start_1[5] = uint[5](0u, 0u, 0u, 2u, 8u);
-        uvec3 _e22 = nyq_mul64x32_(r_in, factorial[n_4]);
+        uvec3 _e22 = nyq_mul64x32_(r_in, factorial[n_5]);
         uint rank = _e22.z;
-        return uvec2(NYQ_SMALL_PERMUTATIONS[((start_1[n_4] + rank) & 31u)], 0u);
+        return uvec2(NYQ_SMALL_PERMUTATIONS[((start_1[n_5] + rank) & 31u)], 0u);
     }
-    if ((n_4 < 16u)) {
-        uint keep = (4u * n_4);
+    if ((n_5 < 16u)) {
+        uint keep = (4u * n_5);
         if ((keep < 32u)) {
             uint _e43 = t_2.x;
             t_2 = uvec2((_e43 & ((1u << keep) - 1u)), 0u);
@@ -1914,7 +1914,7 @@ uvec2 nyq_packed_table(uint n_4, uvec2 r_in) {
         }
     }
     r_10 = r_in;
-    k_9 = n_4;
+    k_9 = n_5;
     bool loop_init_16 = true;
     while(true) {
         if (!loop_init_16) {
@@ -1952,31 +1952,31 @@ uvec2 nyq_packed_table(uint n_4, uvec2 r_in) {
 }
 
 NyqPermutation nyq_permutation(uint n_in, uint seed_15) {
-    uint n_9 = max(n_in, 1u);
-    if ((n_9 <= 16u)) {
+    uint n_10 = max(n_in, 1u);
+    if ((n_10 <= 16u)) {
         uvec2 _e10 = nyq_mix64_(uvec2((seed_15 ^ 2242054355u), 608135816u));
-        uvec2 _e11 = nyq_packed_table(n_9, _e10);
-        return NyqPermutation(n_9, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        uvec2 _e11 = nyq_packed_table(n_10, _e10);
+        return NyqPermutation(n_10, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
     }
-    uint mask_3 = (4294967295u >> uint(31 - findMSB((n_9 - 1u))));
+    uint mask_3 = (4294967295u >> uint(31 - findMSB((n_10 - 1u))));
     uint bits_5 = (32u - uint(31 - findMSB(mask_3)));
     uint _e29 = nyq_mix32_((seed_15 ^ 1540483477u));
     uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    uvec2 _e36 = nyq_mul_wide(_e35, n_9);
+    uvec2 _e36 = nyq_mul_wide(_e35, n_10);
     uint offset_2 = _e36.y;
-    return NyqPermutation(n_9, mask_3, max(((bits_5 + 1u) / 2u), 1u), max((bits_5 / 3u), 1u), _e29, _e32, offset_2, uvec2(0u, 0u));
+    return NyqPermutation(n_10, mask_3, max(((bits_5 + 1u) / 2u), 1u), max((bits_5 / 3u), 1u), _e29, _e32, offset_2, uvec2(0u, 0u));
 }
 
 uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
     uint x_15 = 0u;
     bool local_10 = false;
-    uint n_10 = p.n;
-    if ((n_10 <= 16u)) {
-        uint _e11 = nyq_nibble(p.table, (4u * ((i_8 % n_10) & 15u)));
+    uint n_11 = p.n;
+    if ((n_11 <= 16u)) {
+        uint _e11 = nyq_nibble(p.table, (4u * ((i_8 % n_11) & 15u)));
         return _e11;
     }
-    x_15 = (i_8 % n_10);
+    x_15 = (i_8 % n_11);
     while(true) {
         uint _e14 = x_15;
         x_15 = (_e14 ^ (p.key & p.mask));
@@ -2005,7 +2005,7 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
         uint _e73 = x_15;
         x_15 = (_e72 ^ (_e73 >> p.third));
         uint _e77 = x_15;
-        if ((_e77 < n_10)) {
+        if ((_e77 < n_11)) {
             break;
         }
     }
@@ -2013,25 +2013,25 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
     uint q_3 = (_e79 + p.offset);
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = (q_3 >= n_10);
+        local_10 = (q_3 >= n_11);
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return (_e90 ? (q_3 - n_10) : q_3);
+    return (_e90 ? (q_3 - n_11) : q_3);
 }
 
 NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uvec2 seed_16) {
-    uint spp_3 = (xs * ys);
+    uint spp_1 = (xs * ys);
     float _e5 = nyq_u32_to_f32_(xs);
     float _e6 = nyq_recip_f32_(_e5);
     float _e7 = nyq_u32_to_f32_(ys);
     float _e8 = nyq_recip_f32_(_e7);
-    float _e9 = nyq_u32_to_f32_(spp_3);
+    float _e9 = nyq_u32_to_f32_(spp_1);
     float _e10 = nyq_recip_f32_(_e9);
     vec3 inv = vec3(_e6, _e8, _e10);
     uvec2 zero = uvec2(0u, 0u);
-    return NyqStratifiedSampler(xs, ys, spp_3, inv, jitter, seed_16, zero, zero, 0u, 0u);
+    return NyqStratifiedSampler(xs, ys, spp_1, inv, jitter, seed_16, zero, zero, 0u, 0u);
 }
 
 uint nyq_stratified_dim_key(uvec2 pixel_key, uint dim_23) {
@@ -2082,8 +2082,8 @@ vec2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_25) {
     uvec2 _e56 = nyq_u64_(dim_25);
     uvec2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     uvec2 _e60 = nyq_mix64_((_e55 ^ _e58));
-    float _e62 = nyq_unit_f32_(_e60.y);
-    float _e64 = nyq_unit_f32_(_e60.x);
+    float _e62 = nyq_fraction_to_f32_(_e60.y);
+    float _e64 = nyq_fraction_to_f32_(_e60.x);
     return vec2(_e62, _e64);
 }
 
@@ -3154,19 +3154,19 @@ NyqHalton nyq_halton(uint dims_3, uint scramble_2, uvec2 seed_27) {
     return NyqHalton(dims_3, scramble_2, seed_27);
 }
 
-float nyq_halton_sample(NyqHalton h_2, uvec2 index_15, uint dim_37) {
-    float _e7 = nyq_radical_inverse_scrambled((dim_37 % h_2.dims), index_15, h_2.seed, h_2.scramble);
+float nyq_halton_sample(NyqHalton h_1, uvec2 index_15, uint dim_37) {
+    float _e7 = nyq_radical_inverse_scrambled((dim_37 % h_1.dims), index_15, h_1.seed, h_1.scramble);
     return _e7;
 }
 
-uint nyq_mod_inverse(uint a_23, uint n_5) {
+uint nyq_mod_inverse(uint a_23, uint n_6) {
     int r0_ = 0;
     int r1_ = 0;
     int t0_ = 0;
     int t1_ = 1;
     int m_3 = 0;
-    r0_ = int(n_5);
-    r1_ = int((a_23 % n_5));
+    r0_ = int(n_6);
+    r1_ = int((a_23 % n_6));
     while(true) {
         int _e11 = r1_;
         if ((_e11 != 0)) {
@@ -3192,11 +3192,11 @@ uint nyq_mod_inverse(uint a_23, uint n_5) {
         }
     }
     int _e27 = t0_;
-    m_3 = (_e27 % int(n_5));
+    m_3 = (_e27 % int(n_6));
     int _e31 = m_3;
     if ((_e31 < 0)) {
         int _e34 = m_3;
-        m_3 = (_e34 + int(n_5));
+        m_3 = (_e34 + int(n_6));
     }
     int _e37 = m_3;
     return uint(_e37);
@@ -3234,7 +3234,7 @@ NyqHaltonSampler nyq_halton_sampler(uvec2 resolution_2, uint spp, uint scramble_
     return NyqHaltonSampler(spp, scramble_3, seed_28, uvec2(_e6.y, _e9.y), scales, (_e6.x * _e9.x), basis, uvec2(0u, 0u), 0u);
 }
 
-uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_6) {
+uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7) {
     uint inverse_1 = 0u;
     uint index_16 = 0u;
     uint done = 0u;
@@ -3248,7 +3248,7 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_6) {
         }
         loop_init_22 = false;
         uint _e8 = done;
-        if ((_e8 < n_6)) {
+        if ((_e8 < n_7)) {
         } else {
             break;
         }
@@ -3265,7 +3265,7 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_6) {
                     }
                     loop_init_23 = false;
                     uint _e15 = k_14;
-                    if ((_e15 < n_6)) {
+                    if ((_e15 < n_7)) {
                     } else {
                         break;
                     }
@@ -3433,13 +3433,13 @@ uvec4 nyq_fill_request(uint i_16) {
         return _e8;
     }
     uint _e11 = _group_0_binding_1_cs.first;
-    uint n_11 = (_e11 + i_16);
+    uint n_12 = (_e11 + i_16);
     uint _e15 = _group_0_binding_1_cs.spp;
-    uint pixel_21 = (n_11 / _e15);
+    uint pixel_21 = (n_12 / _e15);
     uint _e20 = _group_0_binding_1_cs.resolution.x;
     uint _e25 = _group_0_binding_1_cs.resolution.x;
     uint _e29 = _group_0_binding_1_cs.spp;
-    return uvec4((pixel_21 % _e20), (pixel_21 / _e25), (n_11 % _e29), 5u);
+    return uvec4((pixel_21 % _e20), (pixel_21 / _e25), (n_12 % _e29), 5u);
 }
 
 void nyq_fill_camera(uint out_3, NyqCameraSample c_5) {

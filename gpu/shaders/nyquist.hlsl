@@ -371,6 +371,11 @@ float nyq_fraction_to_f32_(uint v)
     return (float((v >> 8u)) * 5.9604645e-8);
 }
 
+uint nyq_round_up_pow2_(uint n)
+{
+    return ((n <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((n - 1u))))));
+}
+
 float nyq_rev_to_f32_(uint w_rev)
 {
     const float _e2 = nyq_fraction_to_f32_(reversebits(w_rev));
@@ -603,7 +608,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
     uint i_2 = 0u;
     uint r_3 = (uint)0;
 
-    uint spp_1 = ((spp_requested <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((spp_requested - 1u))))));
+    const uint _e4 = nyq_round_up_pow2_(spp_requested);
     uint side = max(resolution.x, resolution.y);
     uint m_4 = (32u - (31u - firstbithigh((side - 1u))));
     seed_6 = seed_in;
@@ -612,38 +617,38 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
     }
     if ((scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
         uint mask = ((m_4 == 0u) ? 4294967295u : (4294967295u >> (m_4 & 31u)));
-        uint2 _e43 = seed_6;
-        const uint2 _e45 = nyq_u64_(0u);
-        const uint2 _e46 = nyq_hash2_(_e43, _e45);
-        uint2 _e49 = seed_6;
-        const uint2 _e51 = nyq_u64_(1u);
-        const uint2 _e52 = nyq_hash2_(_e49, _e51);
-        shift_1 = uint2((_e46.x & mask), (_e52.x & mask));
+        uint2 _e33 = seed_6;
+        const uint2 _e35 = nyq_u64_(0u);
+        const uint2 _e36 = nyq_hash2_(_e33, _e35);
+        uint2 _e39 = seed_6;
+        const uint2 _e41 = nyq_u64_(1u);
+        const uint2 _e42 = nyq_hash2_(_e39, _e41);
+        shift_1 = uint2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_7 = (2u * m_4);
+    uint n_8 = (2u * m_4);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (all(loop_bound_2 == uint2(0u, 0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e121 = c_1;
-            c_1 = (_e121 + 1u);
+            uint _e111 = c_1;
+            c_1 = (_e111 + 1u);
         }
         loop_init_1 = false;
-        uint _e61 = c_1;
-        if ((_e61 < n_7)) {
+        uint _e51 = c_1;
+        if ((_e51 < n_8)) {
         } else {
             break;
         }
         {
-            uint _e64 = c_1;
-            const uint _e67 = nyq_sobol_u32_((1u << _e64), 0u);
-            const uint _e68 = nyq_top(_e67, m_4);
-            uint _e70 = c_1;
-            const uint _e73 = nyq_sobol_u32_((1u << _e70), 1u);
-            const uint _e74 = nyq_top(_e73, m_4);
-            uint2 image_bits = uint2((_e68 | (_e74 << (m_4 & 31u))), ((m_4 == 0u) ? 0u : (_e74 >> ((32u - m_4) & 31u))));
+            uint _e54 = c_1;
+            const uint _e57 = nyq_sobol_u32_((1u << _e54), 0u);
+            const uint _e58 = nyq_top(_e57, m_4);
+            uint _e60 = c_1;
+            const uint _e63 = nyq_sobol_u32_((1u << _e60), 1u);
+            const uint _e64 = nyq_top(_e63, m_4);
+            uint2 image_bits = uint2((_e58 | (_e64 << (m_4 & 31u))), ((m_4 == 0u) ? 0u : (_e64 >> ((32u - m_4) & 31u))));
             i = 0u;
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
@@ -651,25 +656,25 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 if (all(loop_bound_3 == uint2(0u, 0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e118 = i;
-                    i = (_e118 + 1u);
+                    uint _e108 = i;
+                    i = (_e108 + 1u);
                 }
                 loop_init_2 = false;
-                uint _e91 = i;
-                if ((_e91 < n_7)) {
+                uint _e81 = i;
+                if ((_e81 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e94 = i;
-                    uint _e97 = i;
-                    uint _e101 = i;
-                    uint bit = (((_e101 >= 32u) ? (image_bits.y >> (_e97 - 32u)) : (image_bits.x >> _e94)) & 1u);
+                    uint _e84 = i;
+                    uint _e87 = i;
+                    uint _e91 = i;
+                    uint bit = (((_e91 >= 32u) ? (image_bits.y >> (_e87 - 32u)) : (image_bits.x >> _e84)) & 1u);
                     if ((bit == 1u)) {
-                        uint _e109 = i;
-                        uint _e112 = rows[min(uint(_e109), 31u)].x;
-                        uint _e114 = c_1;
-                        rows[min(uint(_e109), 31u)].x = (_e112 | (1u << _e114));
+                        uint _e99 = i;
+                        uint _e102 = rows[min(uint(_e99), 31u)].x;
+                        uint _e104 = c_1;
+                        rows[min(uint(_e99), 31u)].x = (_e102 | (1u << _e104));
                     }
                 }
             }
@@ -681,20 +686,20 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         if (all(loop_bound_4 == uint2(0u, 0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e136 = i_1;
-            i_1 = (_e136 + 1u);
+            uint _e126 = i_1;
+            i_1 = (_e126 + 1u);
         }
         loop_init_3 = false;
-        uint _e125 = i_1;
-        if ((_e125 < n_7)) {
+        uint _e115 = i_1;
+        if ((_e115 < n_8)) {
         } else {
             break;
         }
         {
-            uint _e127 = i_1;
-            uint _e130 = rows[min(uint(_e127), 31u)].y;
-            uint _e132 = i_1;
-            rows[min(uint(_e127), 31u)].y = (_e130 | (1u << _e132));
+            uint _e117 = i_1;
+            uint _e120 = rows[min(uint(_e117), 31u)].y;
+            uint _e122 = i_1;
+            rows[min(uint(_e117), 31u)].y = (_e120 | (1u << _e122));
         }
     }
     uint2 loop_bound_5 = uint2(4294967295u, 4294967295u);
@@ -703,54 +708,54 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         if (all(loop_bound_5 == uint2(0u, 0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e204 = col;
-            col = (_e204 + 1u);
+            uint _e194 = col;
+            col = (_e194 + 1u);
         }
         loop_init_4 = false;
-        uint _e140 = col;
-        if ((_e140 < n_7)) {
+        uint _e130 = col;
+        if ((_e130 < n_8)) {
         } else {
             break;
         }
         {
-            uint _e142 = col;
-            pivot = _e142;
-            uint _e144 = col;
-            r_1 = _e144;
+            uint _e132 = col;
+            pivot = _e132;
+            uint _e134 = col;
+            r_1 = _e134;
             uint2 loop_bound_6 = uint2(4294967295u, 4294967295u);
             bool loop_init_5 = true;
             while(true) {
                 if (all(loop_bound_6 == uint2(0u, 0u))) { break; }
                 loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e160 = r_1;
-                    r_1 = (_e160 + 1u);
+                    uint _e150 = r_1;
+                    r_1 = (_e150 + 1u);
                 }
                 loop_init_5 = false;
-                uint _e146 = r_1;
-                if ((_e146 < n_7)) {
+                uint _e136 = r_1;
+                if ((_e136 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e148 = r_1;
-                    uint _e151 = rows[min(uint(_e148), 31u)].x;
-                    uint _e152 = col;
-                    if ((((_e151 >> _e152) & 1u) == 1u)) {
-                        uint _e158 = r_1;
-                        pivot = _e158;
+                    uint _e138 = r_1;
+                    uint _e141 = rows[min(uint(_e138), 31u)].x;
+                    uint _e142 = col;
+                    if ((((_e141 >> _e142) & 1u) == 1u)) {
+                        uint _e148 = r_1;
+                        pivot = _e148;
                         break;
                     }
                 }
             }
-            uint _e162 = col;
-            uint2 t_6 = rows[min(uint(_e162), 31u)];
-            uint _e165 = col;
-            uint _e167 = pivot;
-            uint2 _e169 = rows[min(uint(_e167), 31u)];
-            rows[min(uint(_e165), 31u)] = _e169;
-            uint _e170 = pivot;
-            rows[min(uint(_e170), 31u)] = t_6;
+            uint _e152 = col;
+            uint2 t_6 = rows[min(uint(_e152), 31u)];
+            uint _e155 = col;
+            uint _e157 = pivot;
+            uint2 _e159 = rows[min(uint(_e157), 31u)];
+            rows[min(uint(_e155), 31u)] = _e159;
+            uint _e160 = pivot;
+            rows[min(uint(_e160), 31u)] = t_6;
             r_2 = 0u;
             uint2 loop_bound_7 = uint2(4294967295u, 4294967295u);
             bool loop_init_6 = true;
@@ -758,33 +763,33 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 if (all(loop_bound_7 == uint2(0u, 0u))) { break; }
                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                 if (!loop_init_6) {
-                    uint _e201 = r_2;
-                    r_2 = (_e201 + 1u);
+                    uint _e191 = r_2;
+                    r_2 = (_e191 + 1u);
                 }
                 loop_init_6 = false;
-                uint _e174 = r_2;
-                if ((_e174 < n_7)) {
+                uint _e164 = r_2;
+                if ((_e164 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e176 = r_2;
-                    uint _e177 = col;
-                    if ((_e176 != _e177)) {
-                        uint _e181 = r_2;
-                        uint _e184 = rows[min(uint(_e181), 31u)].x;
-                        uint _e185 = col;
-                        local = (((_e184 >> _e185) & 1u) == 1u);
+                    uint _e166 = r_2;
+                    uint _e167 = col;
+                    if ((_e166 != _e167)) {
+                        uint _e171 = r_2;
+                        uint _e174 = rows[min(uint(_e171), 31u)].x;
+                        uint _e175 = col;
+                        local = (((_e174 >> _e175) & 1u) == 1u);
                     } else {
                         local = false;
                     }
-                    bool _e192 = local;
-                    if (_e192) {
-                        uint _e193 = r_2;
-                        uint2 _e195 = rows[min(uint(_e193), 31u)];
-                        uint _e196 = col;
-                        uint2 _e198 = rows[min(uint(_e196), 31u)];
-                        rows[min(uint(_e193), 31u)] = (_e195 ^ _e198);
+                    bool _e182 = local;
+                    if (_e182) {
+                        uint _e183 = r_2;
+                        uint2 _e185 = rows[min(uint(_e183), 31u)];
+                        uint _e186 = col;
+                        uint2 _e188 = rows[min(uint(_e186), 31u)];
+                        rows[min(uint(_e183), 31u)] = (_e185 ^ _e188);
                     }
                 }
             }
@@ -796,12 +801,12 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         if (all(loop_bound_8 == uint2(0u, 0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e236 = i_2;
-            i_2 = (_e236 + 1u);
+            uint _e226 = i_2;
+            i_2 = (_e226 + 1u);
         }
         loop_init_7 = false;
-        uint _e209 = i_2;
-        if ((_e209 < n_7)) {
+        uint _e199 = i_2;
+        if ((_e199 < n_8)) {
         } else {
             break;
         }
@@ -813,72 +818,72 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 if (all(loop_bound_9 == uint2(0u, 0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_8) {
-                    uint _e233 = r_3;
-                    r_3 = (_e233 + 1u);
+                    uint _e223 = r_3;
+                    r_3 = (_e223 + 1u);
                 }
                 loop_init_8 = false;
-                uint _e213 = r_3;
-                if ((_e213 < n_7)) {
+                uint _e203 = r_3;
+                if ((_e203 < n_8)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e215 = i_2;
-                    uint _e218 = rows[min(uint(_e215), 31u)].y;
-                    uint _e219 = r_3;
-                    if ((((_e218 >> _e219) & 1u) == 1u)) {
-                        uint _e225 = r_3;
-                        uint _e227 = inverse[min(uint(_e225), 31u)];
-                        uint _e229 = i_2;
-                        inverse[min(uint(_e225), 31u)] = (_e227 | (1u << _e229));
+                    uint _e205 = i_2;
+                    uint _e208 = rows[min(uint(_e205), 31u)].y;
+                    uint _e209 = r_3;
+                    if ((((_e208 >> _e209) & 1u) == 1u)) {
+                        uint _e215 = r_3;
+                        uint _e217 = inverse[min(uint(_e215), 31u)];
+                        uint _e219 = i_2;
+                        inverse[min(uint(_e215), 31u)] = (_e217 | (1u << _e219));
                     }
                 }
             }
         }
     }
-    uint _e239 = inverse[0];
-    uint _e241 = inverse[1];
-    uint _e243 = inverse[2];
-    uint _e245 = inverse[3];
-    uint4 v0_ = uint4(_e239, _e241, _e243, _e245);
-    uint _e248 = inverse[4];
-    uint _e250 = inverse[5];
-    uint _e252 = inverse[6];
-    uint _e254 = inverse[7];
-    uint4 v1_ = uint4(_e248, _e250, _e252, _e254);
-    uint _e257 = inverse[8];
-    uint _e259 = inverse[9];
-    uint _e261 = inverse[10];
-    uint _e263 = inverse[11];
-    uint4 v2_ = uint4(_e257, _e259, _e261, _e263);
-    uint _e266 = inverse[12];
-    uint _e268 = inverse[13];
-    uint _e270 = inverse[14];
-    uint _e272 = inverse[15];
-    uint4 v3_ = uint4(_e266, _e268, _e270, _e272);
-    uint _e275 = inverse[16];
-    uint _e277 = inverse[17];
-    uint _e279 = inverse[18];
-    uint _e281 = inverse[19];
-    uint4 v4_ = uint4(_e275, _e277, _e279, _e281);
-    uint _e284 = inverse[20];
-    uint _e286 = inverse[21];
-    uint _e288 = inverse[22];
-    uint _e290 = inverse[23];
-    uint4 v5_ = uint4(_e284, _e286, _e288, _e290);
-    uint _e293 = inverse[24];
-    uint _e295 = inverse[25];
-    uint _e297 = inverse[26];
-    uint _e299 = inverse[27];
-    uint4 v6_ = uint4(_e293, _e295, _e297, _e299);
-    uint _e302 = inverse[28];
-    uint _e304 = inverse[29];
-    uint _e306 = inverse[30];
-    uint _e308 = inverse[31];
-    uint4 v7_ = uint4(_e302, _e304, _e306, _e308);
-    uint2 _e310 = seed_6;
-    uint2 _e311 = shift_1;
-    const NyqSobolSampler nyqsobolsampler = ConstructNyqSobolSampler(spp_1, m_4, scramble, _e310, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e311, 0u, 0u);
+    uint _e229 = inverse[0];
+    uint _e231 = inverse[1];
+    uint _e233 = inverse[2];
+    uint _e235 = inverse[3];
+    uint4 v0_ = uint4(_e229, _e231, _e233, _e235);
+    uint _e238 = inverse[4];
+    uint _e240 = inverse[5];
+    uint _e242 = inverse[6];
+    uint _e244 = inverse[7];
+    uint4 v1_ = uint4(_e238, _e240, _e242, _e244);
+    uint _e247 = inverse[8];
+    uint _e249 = inverse[9];
+    uint _e251 = inverse[10];
+    uint _e253 = inverse[11];
+    uint4 v2_ = uint4(_e247, _e249, _e251, _e253);
+    uint _e256 = inverse[12];
+    uint _e258 = inverse[13];
+    uint _e260 = inverse[14];
+    uint _e262 = inverse[15];
+    uint4 v3_ = uint4(_e256, _e258, _e260, _e262);
+    uint _e265 = inverse[16];
+    uint _e267 = inverse[17];
+    uint _e269 = inverse[18];
+    uint _e271 = inverse[19];
+    uint4 v4_ = uint4(_e265, _e267, _e269, _e271);
+    uint _e274 = inverse[20];
+    uint _e276 = inverse[21];
+    uint _e278 = inverse[22];
+    uint _e280 = inverse[23];
+    uint4 v5_ = uint4(_e274, _e276, _e278, _e280);
+    uint _e283 = inverse[24];
+    uint _e285 = inverse[25];
+    uint _e287 = inverse[26];
+    uint _e289 = inverse[27];
+    uint4 v6_ = uint4(_e283, _e285, _e287, _e289);
+    uint _e292 = inverse[28];
+    uint _e294 = inverse[29];
+    uint _e296 = inverse[30];
+    uint _e298 = inverse[31];
+    uint4 v7_ = uint4(_e292, _e294, _e296, _e298);
+    uint2 _e300 = seed_6;
+    uint2 _e301 = shift_1;
+    const NyqSobolSampler nyqsobolsampler = ConstructNyqSobolSampler(_e4, m_4, scramble, _e300, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u);
     return nyqsobolsampler;
 }
 
@@ -1318,12 +1323,12 @@ NyqZSobolSampler ConstructNyqZSobolSampler(uint arg0, uint arg1, uint arg2, uint
 
 NyqZSobolSampler nyq_zsobol_sampler(uint2 resolution_1, uint spp_requested_1, uint scramble_1, uint2 seed_9)
 {
-    uint spp_2 = ((spp_requested_1 <= 1u) ? 1u : (1u << (32u - (31u - firstbithigh((spp_requested_1 - 1u))))));
+    const uint _e4 = nyq_round_up_pow2_(spp_requested_1);
     uint side_1 = max(resolution_1.x, resolution_1.y);
     uint log2_res = (32u - (31u - firstbithigh((side_1 - 1u))));
-    uint log2_spp = min(32u, firstbitlow(spp_2));
+    uint log2_spp = min(32u, firstbitlow(_e4));
     uint bits_3 = ((2u * log2_res) + log2_spp);
-    const NyqZSobolSampler nyqzsobolsampler = ConstructNyqZSobolSampler(spp_2, log2_spp, log2_res, scramble_1, seed_9, naga_div(bits_3, 2u), naga_div(log2_spp, 2u), (log2_spp & 1u), 0u, 0u);
+    const NyqZSobolSampler nyqzsobolsampler = ConstructNyqZSobolSampler(_e4, log2_spp, log2_res, scramble_1, seed_9, naga_div(bits_3, 2u), naga_div(log2_spp, 2u), (log2_spp & 1u), 0u, 0u);
     return nyqzsobolsampler;
 }
 
@@ -1660,11 +1665,6 @@ void nyq_pcg32_advance(inout NyqPcg32_ g_1, uint delta)
     return;
 }
 
-float nyq_unit_f32_(uint h_1)
-{
-    return (float((h_1 >> 8u)) * 5.9604645e-8);
-}
-
 uint2 nyq_hash3_(uint2 a_7, uint2 b_5, uint2 c_2)
 {
     const uint2 _e3 = nyq_hash2_(a_7, b_5);
@@ -1727,7 +1727,7 @@ float nyq_random_get_1d(inout NyqRandomSampler s_42)
     NyqPcg32_ _e2 = s_42.rng;
     g_3 = _e2;
     const uint _e4 = nyq_pcg32_next(g_3);
-    const float _e5 = nyq_unit_f32_(_e4);
+    const float _e5 = nyq_fraction_to_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
     s_42.rng = _e7;
     uint _e9 = s_42.dim;
@@ -1759,9 +1759,9 @@ float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_44)
     const NyqPcg32_ _e7 = nyq_random_at(s_44, 0u);
     g_4 = _e7;
     const uint _e9 = nyq_pcg32_next(g_4);
-    const float _e10 = nyq_unit_f32_(_e9);
+    const float _e10 = nyq_fraction_to_f32_(_e9);
     const uint _e11 = nyq_pcg32_next(g_4);
-    const float _e12 = nyq_unit_f32_(_e11);
+    const float _e12 = nyq_fraction_to_f32_(_e11);
     float2 p_3 = float2(_e10, _e12);
     uint _e15 = s_44.dim;
     if ((_e15 < 2u)) {
@@ -1785,7 +1785,7 @@ NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_45, uint2 pixe
     return nyqcamerasample_3;
 }
 
-uint nyq_mod64_(uint2 x_9, uint n)
+uint nyq_mod64_(uint2 x_9, uint n_1)
 {
     uint r_5 = 0u;
     uint i_5 = 0u;
@@ -1817,14 +1817,14 @@ uint nyq_mod64_(uint2 x_9, uint n)
             r_5 = ((_e26 << 1u) | bit_1);
             if (!((carry == 1u))) {
                 uint _e35 = r_5;
-                local_3 = (_e35 >= n);
+                local_3 = (_e35 >= n_1);
             } else {
                 local_3 = true;
             }
             bool _e38 = local_3;
             if (_e38) {
                 uint _e39 = r_5;
-                r_5 = (_e39 - n);
+                r_5 = (_e39 - n_1);
             }
         }
     }
@@ -1899,9 +1899,9 @@ NyqLatticeSampler ConstructNyqLatticeSampler(uint arg0, uint arg1, uint arg2, ui
     return ret;
 }
 
-NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_1, uint g_5, uint2 seed_13)
+NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_2, uint g_5, uint2 seed_13)
 {
-    const NyqLatticeSampler nyqlatticesampler = ConstructNyqLatticeSampler(lattice, n_1, g_5, seed_13, uint2(0u, 0u), 0u, 0u);
+    const NyqLatticeSampler nyqlatticesampler = ConstructNyqLatticeSampler(lattice, n_2, g_5, seed_13, uint2(0u, 0u), 0u, 0u);
     return nyqlatticesampler;
 }
 
@@ -1910,9 +1910,9 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_8 = s_46.n;
+    uint n_9 = s_46.n;
     uint _e5 = s_46.index;
-    uint k_17 = naga_mod(_e5, n_8);
+    uint k_17 = naga_mod(_e5, n_9);
     uint component = naga_mod(dim_19, 2u);
     uint _e11 = s_46.lattice;
     switch(_e11) {
@@ -1927,12 +1927,12 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
             uint _e21 = s_46.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = naga_mod(1u, n_8);
+                g_6 = naga_mod(1u, n_9);
             }
             uint _e27 = g_6;
             const uint2 _e28 = nyq_mul_wide(k_17, _e27);
-            const uint _e29 = nyq_mod64_(_e28, n_8);
-            const uint2 _e30 = nyq_fixed_ratio(_e29, n_8);
+            const uint _e29 = nyq_mod64_(_e28, n_9);
+            const uint2 _e30 = nyq_fixed_ratio(_e29, n_9);
             base = _e30;
             break;
         }
@@ -1996,14 +1996,14 @@ NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_51, uint2 pi
     return nyqcamerasample_4;
 }
 
-uint nyq_pow_mod(uint b_6, uint e_in, uint n_2)
+uint nyq_pow_mod(uint b_6, uint e_in, uint n_3)
 {
     uint base_1 = (uint)0;
     uint r_7 = (uint)0;
     uint e = (uint)0;
 
-    base_1 = naga_mod(b_6, n_2);
-    r_7 = naga_mod(1u, n_2);
+    base_1 = naga_mod(b_6, n_3);
+    r_7 = naga_mod(1u, n_3);
     e = e_in;
     uint2 loop_bound_18 = uint2(4294967295u, 4294967295u);
     while(true) {
@@ -2020,13 +2020,13 @@ uint nyq_pow_mod(uint b_6, uint e_in, uint n_2)
                 uint _e17 = r_7;
                 uint _e18 = base_1;
                 const uint2 _e19 = nyq_mul_wide(_e17, _e18);
-                const uint _e20 = nyq_mod64_(_e19, n_2);
+                const uint _e20 = nyq_mod64_(_e19, n_3);
                 r_7 = _e20;
             }
             uint _e21 = base_1;
             uint _e22 = base_1;
             const uint2 _e23 = nyq_mul_wide(_e21, _e22);
-            const uint _e24 = nyq_mod64_(_e23, n_2);
+            const uint _e24 = nyq_mod64_(_e23, n_3);
             base_1 = _e24;
             uint _e25 = e;
             e = (_e25 >> 1u);
@@ -2047,9 +2047,9 @@ NyqLattice ConstructNyqLattice(uint arg0, uint arg1, uint arg2, uint arg3, uint 
     return ret;
 }
 
-NyqLattice nyq_lattice(uint lattice_1, uint n_3, uint g_7, uint dims_2, bool rotated, uint2 seed_14)
+NyqLattice nyq_lattice(uint lattice_1, uint n_4, uint g_7, uint dims_2, bool rotated, uint2 seed_14)
 {
-    const NyqLattice nyqlattice = ConstructNyqLattice(lattice_1, n_3, g_7, dims_2, (rotated ? 1u : 0u), seed_14);
+    const NyqLattice nyqlattice = ConstructNyqLattice(lattice_1, n_4, g_7, dims_2, (rotated ? 1u : 0u), seed_14);
     return nyqlattice;
 }
 
@@ -2263,24 +2263,24 @@ ret_Constructarray5_uint_ Constructarray5_uint_(uint arg0, uint arg1, uint arg2,
     return ret;
 }
 
-uint2 nyq_packed_table(uint n_4, uint2 r_in)
+uint2 nyq_packed_table(uint n_5, uint2 r_in)
 {
     uint2 t_2 = uint2(1985229328u, 4275878552u);
     uint2 r_10 = (uint2)0;
     uint k_9 = (uint)0;
 
-    if ((n_4 <= 4u)) {
-        if ((n_4 < 2u)) {
+    if ((n_5 <= 4u)) {
+        if ((n_5 < 2u)) {
             return uint2(0u, 0u);
         }
         uint factorial[5] = Constructarray5_uint_(1u, 1u, 2u, 6u, 24u);
         uint start_1[5] = Constructarray5_uint_(0u, 0u, 0u, 2u, 8u);
-        const uint3 _e22 = nyq_mul64x32_(r_in, factorial[min(uint(n_4), 4u)]);
+        const uint3 _e22 = nyq_mul64x32_(r_in, factorial[min(uint(n_5), 4u)]);
         uint rank = _e22.z;
-        return uint2(NYQ_SMALL_PERMUTATIONS[min(uint(((start_1[min(uint(n_4), 4u)] + rank) & 31u)), 31u)], 0u);
+        return uint2(NYQ_SMALL_PERMUTATIONS[min(uint(((start_1[min(uint(n_5), 4u)] + rank) & 31u)), 31u)], 0u);
     }
-    if ((n_4 < 16u)) {
-        uint keep = (4u * n_4);
+    if ((n_5 < 16u)) {
+        uint keep = (4u * n_5);
         if ((keep < 32u)) {
             uint _e43 = t_2.x;
             t_2 = uint2((_e43 & ((1u << keep) - 1u)), 0u);
@@ -2290,7 +2290,7 @@ uint2 nyq_packed_table(uint n_4, uint2 r_in)
         }
     }
     r_10 = r_in;
-    k_9 = n_4;
+    k_9 = n_5;
     uint2 loop_bound_20 = uint2(4294967295u, 4294967295u);
     bool loop_init_16 = true;
     while(true) {
@@ -2345,21 +2345,21 @@ NyqPermutation ConstructNyqPermutation(uint arg0, uint arg1, uint arg2, uint arg
 
 NyqPermutation nyq_permutation(uint n_in, uint seed_15)
 {
-    uint n_9 = max(n_in, 1u);
-    if ((n_9 <= 16u)) {
+    uint n_10 = max(n_in, 1u);
+    if ((n_10 <= 16u)) {
         const uint2 _e10 = nyq_mix64_(uint2((seed_15 ^ 2242054355u), 608135816u));
-        const uint2 _e11 = nyq_packed_table(n_9, _e10);
-        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_9, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        const uint2 _e11 = nyq_packed_table(n_10, _e10);
+        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_10, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
         return nyqpermutation;
     }
-    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_9 - 1u))));
+    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_10 - 1u))));
     uint bits_5 = (32u - (31u - firstbithigh(mask_3)));
     const uint _e29 = nyq_mix32_((seed_15 ^ 1540483477u));
     const uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     const uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    const uint2 _e36 = nyq_mul_wide(_e35, n_9);
+    const uint2 _e36 = nyq_mul_wide(_e35, n_10);
     uint offset_2 = _e36.y;
-    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_9, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, uint2(0u, 0u));
+    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_10, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, uint2(0u, 0u));
     return nyqpermutation_1;
 }
 
@@ -2368,12 +2368,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
     uint x_15 = (uint)0;
     bool local_10 = (bool)0;
 
-    uint n_10 = p.n;
-    if ((n_10 <= 16u)) {
-        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_10) & 15u)));
+    uint n_11 = p.n;
+    if ((n_11 <= 16u)) {
+        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_11) & 15u)));
         return _e11;
     }
-    x_15 = naga_mod(i_8, n_10);
+    x_15 = naga_mod(i_8, n_11);
     uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
@@ -2405,7 +2405,7 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
         uint _e73 = x_15;
         x_15 = (_e72 ^ (_e73 >> p.third));
         uint _e77 = x_15;
-        if ((_e77 < n_10)) {
+        if ((_e77 < n_11)) {
             break;
         }
     }
@@ -2413,12 +2413,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
     uint q_3 = (_e79 + p.offset);
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = (q_3 >= n_10);
+        local_10 = (q_3 >= n_11);
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return (_e90 ? (q_3 - n_10) : q_3);
+    return (_e90 ? (q_3 - n_11) : q_3);
 }
 
 NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint arg2, float3 arg3, uint arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint arg8, uint arg9) {
@@ -2438,16 +2438,16 @@ NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint ar
 
 NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uint2 seed_16)
 {
-    uint spp_3 = (xs * ys);
+    uint spp_1 = (xs * ys);
     const float _e5 = nyq_u32_to_f32_(xs);
     const float _e6 = nyq_recip_f32_(_e5);
     const float _e7 = nyq_u32_to_f32_(ys);
     const float _e8 = nyq_recip_f32_(_e7);
-    const float _e9 = nyq_u32_to_f32_(spp_3);
+    const float _e9 = nyq_u32_to_f32_(spp_1);
     const float _e10 = nyq_recip_f32_(_e9);
     float3 inv = float3(_e6, _e8, _e10);
     uint2 zero = uint2(0u, 0u);
-    const NyqStratifiedSampler nyqstratifiedsampler = ConstructNyqStratifiedSampler(xs, ys, spp_3, inv, jitter, seed_16, zero, zero, 0u, 0u);
+    const NyqStratifiedSampler nyqstratifiedsampler = ConstructNyqStratifiedSampler(xs, ys, spp_1, inv, jitter, seed_16, zero, zero, 0u, 0u);
     return nyqstratifiedsampler;
 }
 
@@ -2503,8 +2503,8 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_25)
     const uint2 _e56 = nyq_u64_(dim_25);
     const uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     const uint2 _e60 = nyq_mix64_((_e55 ^ _e58));
-    const float _e62 = nyq_unit_f32_(_e60.y);
-    const float _e64 = nyq_unit_f32_(_e60.x);
+    const float _e62 = nyq_fraction_to_f32_(_e60.y);
+    const float _e64 = nyq_fraction_to_f32_(_e60.x);
     return float2(_e62, _e64);
 }
 
@@ -3717,9 +3717,9 @@ NyqHalton nyq_halton(uint dims_3, uint scramble_2, uint2 seed_27)
     return nyqhalton;
 }
 
-float nyq_halton_sample(NyqHalton h_2, uint2 index_15, uint dim_37)
+float nyq_halton_sample(NyqHalton h_1, uint2 index_15, uint dim_37)
 {
-    const float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_37, h_2.dims), index_15, h_2.seed, h_2.scramble);
+    const float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_37, h_1.dims), index_15, h_1.seed, h_1.scramble);
     return _e7;
 }
 
@@ -3732,7 +3732,7 @@ int naga_mod(int lhs, int rhs) {
     return lhs - (lhs / divisor) * divisor;
 }
 
-uint nyq_mod_inverse(uint a_23, uint n_5)
+uint nyq_mod_inverse(uint a_23, uint n_6)
 {
     int r0_ = (int)0;
     int r1_ = (int)0;
@@ -3740,8 +3740,8 @@ uint nyq_mod_inverse(uint a_23, uint n_5)
     int t1_ = int(1);
     int m_3 = (int)0;
 
-    r0_ = int(n_5);
-    r1_ = int(naga_mod(a_23, n_5));
+    r0_ = int(n_6);
+    r1_ = int(naga_mod(a_23, n_6));
     uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
@@ -3770,11 +3770,11 @@ uint nyq_mod_inverse(uint a_23, uint n_5)
         }
     }
     int _e27 = t0_;
-    m_3 = naga_mod(_e27, int(n_5));
+    m_3 = naga_mod(_e27, int(n_6));
     int _e31 = m_3;
     if ((_e31 < int(0))) {
         int _e34 = m_3;
-        m_3 = asint(asuint(_e34) + asuint(int(n_5)));
+        m_3 = asint(asuint(_e34) + asuint(int(n_6)));
     }
     int _e37 = m_3;
     return uint(_e37);
@@ -3833,7 +3833,7 @@ NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_
     return nyqhaltonsampler;
 }
 
-uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_6)
+uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
 {
     uint inverse_1 = (uint)0;
     uint index_16 = 0u;
@@ -3852,7 +3852,7 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_6)
         }
         loop_init_22 = false;
         uint _e8 = done;
-        if ((_e8 < n_6)) {
+        if ((_e8 < n_7)) {
         } else {
             break;
         }
@@ -3872,7 +3872,7 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_6)
                     }
                     loop_init_23 = false;
                     uint _e15 = k_14;
-                    if ((_e15 < n_6)) {
+                    if ((_e15 < n_7)) {
                     } else {
                         break;
                     }
@@ -4060,13 +4060,13 @@ uint4 nyq_fill_request(uint i_16)
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_11 = (_e11 + i_16);
+    uint n_12 = (_e11 + i_16);
     uint _e15 = nyq_job.spp;
-    uint pixel_21 = naga_div(n_11, _e15);
+    uint pixel_21 = naga_div(n_12, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_11, _e29), 5u);
+    return uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_12, _e29), 5u);
 }
 
 void nyq_fill_camera(uint out_3, NyqCameraSample c_5)

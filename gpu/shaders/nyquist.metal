@@ -374,6 +374,12 @@ float nyq_fraction_to_f32_(
     return static_cast<float>(v >> 8u) * 0.000000059604645;
 }
 
+uint nyq_round_up_pow2_(
+    uint n
+) {
+    return (n <= 1u) ? 1u : (1u << (32u - metal::clz(n - 1u)));
+}
+
 float nyq_rev_to_f32_(
     uint w_rev
 ) {
@@ -617,7 +623,7 @@ NyqSobolSampler nyq_sobol_sampler(
     type_8 inverse = {};
     uint i_2 = 0u;
     uint r_3 = {};
-    uint spp_1 = (spp_requested <= 1u) ? 1u : (1u << (32u - metal::clz(spp_requested - 1u)));
+    uint _e4 = nyq_round_up_pow2_(spp_requested);
     uint side = metal::max(resolution.x, resolution.y);
     uint m_4 = 32u - metal::clz(side - 1u);
     seed_6 = seed_in;
@@ -626,38 +632,38 @@ NyqSobolSampler nyq_sobol_sampler(
     }
     if (scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
         uint mask = (m_4 == 0u) ? 4294967295u : (4294967295u >> (m_4 & 31u));
-        metal::uint2 _e43 = seed_6;
-        metal::uint2 _e45 = nyq_u64_(0u);
-        metal::uint2 _e46 = nyq_hash2_(_e43, _e45);
-        metal::uint2 _e49 = seed_6;
-        metal::uint2 _e51 = nyq_u64_(1u);
-        metal::uint2 _e52 = nyq_hash2_(_e49, _e51);
-        shift_1 = metal::uint2(_e46.x & mask, _e52.x & mask);
+        metal::uint2 _e33 = seed_6;
+        metal::uint2 _e35 = nyq_u64_(0u);
+        metal::uint2 _e36 = nyq_hash2_(_e33, _e35);
+        metal::uint2 _e39 = seed_6;
+        metal::uint2 _e41 = nyq_u64_(1u);
+        metal::uint2 _e42 = nyq_hash2_(_e39, _e41);
+        shift_1 = metal::uint2(_e36.x & mask, _e42.x & mask);
     }
-    uint n_7 = 2u * m_4;
+    uint n_8 = 2u * m_4;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
         if (metal::all(loop_bound_2 == uint2(0u))) { break; }
         loop_bound_2 -= uint2(loop_bound_2.y == 0u, 1u);
         if (!loop_init_1) {
-            uint _e121 = c_1;
-            c_1 = _e121 + 1u;
+            uint _e111 = c_1;
+            c_1 = _e111 + 1u;
         }
         loop_init_1 = false;
-        uint _e61 = c_1;
-        if (_e61 < n_7) {
+        uint _e51 = c_1;
+        if (_e51 < n_8) {
         } else {
             break;
         }
         {
-            uint _e64 = c_1;
-            uint _e67 = nyq_sobol_u32_(1u << _e64, 0u, nyq_sobol_matrices, _buffer_sizes);
-            uint _e68 = nyq_top(_e67, m_4);
-            uint _e70 = c_1;
-            uint _e73 = nyq_sobol_u32_(1u << _e70, 1u, nyq_sobol_matrices, _buffer_sizes);
-            uint _e74 = nyq_top(_e73, m_4);
-            metal::uint2 image_bits = metal::uint2(_e68 | (_e74 << (m_4 & 31u)), (m_4 == 0u) ? 0u : (_e74 >> ((32u - m_4) & 31u)));
+            uint _e54 = c_1;
+            uint _e57 = nyq_sobol_u32_(1u << _e54, 0u, nyq_sobol_matrices, _buffer_sizes);
+            uint _e58 = nyq_top(_e57, m_4);
+            uint _e60 = c_1;
+            uint _e63 = nyq_sobol_u32_(1u << _e60, 1u, nyq_sobol_matrices, _buffer_sizes);
+            uint _e64 = nyq_top(_e63, m_4);
+            metal::uint2 image_bits = metal::uint2(_e58 | (_e64 << (m_4 & 31u)), (m_4 == 0u) ? 0u : (_e64 >> ((32u - m_4) & 31u)));
             i = 0u;
             uint2 loop_bound_3 = uint2(4294967295u);
             bool loop_init_2 = true;
@@ -665,25 +671,25 @@ NyqSobolSampler nyq_sobol_sampler(
                 if (metal::all(loop_bound_3 == uint2(0u))) { break; }
                 loop_bound_3 -= uint2(loop_bound_3.y == 0u, 1u);
                 if (!loop_init_2) {
-                    uint _e118 = i;
-                    i = _e118 + 1u;
+                    uint _e108 = i;
+                    i = _e108 + 1u;
                 }
                 loop_init_2 = false;
-                uint _e91 = i;
-                if (_e91 < n_7) {
+                uint _e81 = i;
+                if (_e81 < n_8) {
                 } else {
                     break;
                 }
                 {
-                    uint _e94 = i;
-                    uint _e97 = i;
-                    uint _e101 = i;
-                    uint bit = ((_e101 >= 32u) ? (image_bits.y >> (_e97 - 32u)) : (image_bits.x >> _e94)) & 1u;
+                    uint _e84 = i;
+                    uint _e87 = i;
+                    uint _e91 = i;
+                    uint bit = ((_e91 >= 32u) ? (image_bits.y >> (_e87 - 32u)) : (image_bits.x >> _e84)) & 1u;
                     if (bit == 1u) {
-                        uint _e109 = i;
-                        uint _e112 = rows.inner[_e109].x;
-                        uint _e114 = c_1;
-                        rows.inner[_e109].x = _e112 | (1u << _e114);
+                        uint _e99 = i;
+                        uint _e102 = rows.inner[_e99].x;
+                        uint _e104 = c_1;
+                        rows.inner[_e99].x = _e102 | (1u << _e104);
                     }
                 }
             }
@@ -695,20 +701,20 @@ NyqSobolSampler nyq_sobol_sampler(
         if (metal::all(loop_bound_4 == uint2(0u))) { break; }
         loop_bound_4 -= uint2(loop_bound_4.y == 0u, 1u);
         if (!loop_init_3) {
-            uint _e136 = i_1;
-            i_1 = _e136 + 1u;
+            uint _e126 = i_1;
+            i_1 = _e126 + 1u;
         }
         loop_init_3 = false;
-        uint _e125 = i_1;
-        if (_e125 < n_7) {
+        uint _e115 = i_1;
+        if (_e115 < n_8) {
         } else {
             break;
         }
         {
-            uint _e127 = i_1;
-            uint _e130 = rows.inner[_e127].y;
-            uint _e132 = i_1;
-            rows.inner[_e127].y = _e130 | (1u << _e132);
+            uint _e117 = i_1;
+            uint _e120 = rows.inner[_e117].y;
+            uint _e122 = i_1;
+            rows.inner[_e117].y = _e120 | (1u << _e122);
         }
     }
     uint2 loop_bound_5 = uint2(4294967295u);
@@ -717,54 +723,54 @@ NyqSobolSampler nyq_sobol_sampler(
         if (metal::all(loop_bound_5 == uint2(0u))) { break; }
         loop_bound_5 -= uint2(loop_bound_5.y == 0u, 1u);
         if (!loop_init_4) {
-            uint _e204 = col;
-            col = _e204 + 1u;
+            uint _e194 = col;
+            col = _e194 + 1u;
         }
         loop_init_4 = false;
-        uint _e140 = col;
-        if (_e140 < n_7) {
+        uint _e130 = col;
+        if (_e130 < n_8) {
         } else {
             break;
         }
         {
-            uint _e142 = col;
-            pivot = _e142;
-            uint _e144 = col;
-            r_1 = _e144;
+            uint _e132 = col;
+            pivot = _e132;
+            uint _e134 = col;
+            r_1 = _e134;
             uint2 loop_bound_6 = uint2(4294967295u);
             bool loop_init_5 = true;
             while(true) {
                 if (metal::all(loop_bound_6 == uint2(0u))) { break; }
                 loop_bound_6 -= uint2(loop_bound_6.y == 0u, 1u);
                 if (!loop_init_5) {
-                    uint _e160 = r_1;
-                    r_1 = _e160 + 1u;
+                    uint _e150 = r_1;
+                    r_1 = _e150 + 1u;
                 }
                 loop_init_5 = false;
-                uint _e146 = r_1;
-                if (_e146 < n_7) {
+                uint _e136 = r_1;
+                if (_e136 < n_8) {
                 } else {
                     break;
                 }
                 {
-                    uint _e148 = r_1;
-                    uint _e151 = rows.inner[_e148].x;
-                    uint _e152 = col;
-                    if (((_e151 >> _e152) & 1u) == 1u) {
-                        uint _e158 = r_1;
-                        pivot = _e158;
+                    uint _e138 = r_1;
+                    uint _e141 = rows.inner[_e138].x;
+                    uint _e142 = col;
+                    if (((_e141 >> _e142) & 1u) == 1u) {
+                        uint _e148 = r_1;
+                        pivot = _e148;
                         break;
                     }
                 }
             }
-            uint _e162 = col;
-            metal::uint2 t_6 = rows.inner[_e162];
-            uint _e165 = col;
-            uint _e167 = pivot;
-            metal::uint2 _e169 = rows.inner[_e167];
-            rows.inner[_e165] = _e169;
-            uint _e170 = pivot;
-            rows.inner[_e170] = t_6;
+            uint _e152 = col;
+            metal::uint2 t_6 = rows.inner[_e152];
+            uint _e155 = col;
+            uint _e157 = pivot;
+            metal::uint2 _e159 = rows.inner[_e157];
+            rows.inner[_e155] = _e159;
+            uint _e160 = pivot;
+            rows.inner[_e160] = t_6;
             r_2 = 0u;
             uint2 loop_bound_7 = uint2(4294967295u);
             bool loop_init_6 = true;
@@ -772,33 +778,33 @@ NyqSobolSampler nyq_sobol_sampler(
                 if (metal::all(loop_bound_7 == uint2(0u))) { break; }
                 loop_bound_7 -= uint2(loop_bound_7.y == 0u, 1u);
                 if (!loop_init_6) {
-                    uint _e201 = r_2;
-                    r_2 = _e201 + 1u;
+                    uint _e191 = r_2;
+                    r_2 = _e191 + 1u;
                 }
                 loop_init_6 = false;
-                uint _e174 = r_2;
-                if (_e174 < n_7) {
+                uint _e164 = r_2;
+                if (_e164 < n_8) {
                 } else {
                     break;
                 }
                 {
-                    uint _e176 = r_2;
-                    uint _e177 = col;
-                    if (_e176 != _e177) {
-                        uint _e181 = r_2;
-                        uint _e184 = rows.inner[_e181].x;
-                        uint _e185 = col;
-                        local = ((_e184 >> _e185) & 1u) == 1u;
+                    uint _e166 = r_2;
+                    uint _e167 = col;
+                    if (_e166 != _e167) {
+                        uint _e171 = r_2;
+                        uint _e174 = rows.inner[_e171].x;
+                        uint _e175 = col;
+                        local = ((_e174 >> _e175) & 1u) == 1u;
                     } else {
                         local = false;
                     }
-                    bool _e192 = local;
-                    if (_e192) {
-                        uint _e193 = r_2;
-                        metal::uint2 _e195 = rows.inner[_e193];
-                        uint _e196 = col;
-                        metal::uint2 _e198 = rows.inner[_e196];
-                        rows.inner[_e193] = _e195 ^ _e198;
+                    bool _e182 = local;
+                    if (_e182) {
+                        uint _e183 = r_2;
+                        metal::uint2 _e185 = rows.inner[_e183];
+                        uint _e186 = col;
+                        metal::uint2 _e188 = rows.inner[_e186];
+                        rows.inner[_e183] = _e185 ^ _e188;
                     }
                 }
             }
@@ -810,12 +816,12 @@ NyqSobolSampler nyq_sobol_sampler(
         if (metal::all(loop_bound_8 == uint2(0u))) { break; }
         loop_bound_8 -= uint2(loop_bound_8.y == 0u, 1u);
         if (!loop_init_7) {
-            uint _e236 = i_2;
-            i_2 = _e236 + 1u;
+            uint _e226 = i_2;
+            i_2 = _e226 + 1u;
         }
         loop_init_7 = false;
-        uint _e209 = i_2;
-        if (_e209 < n_7) {
+        uint _e199 = i_2;
+        if (_e199 < n_8) {
         } else {
             break;
         }
@@ -827,72 +833,72 @@ NyqSobolSampler nyq_sobol_sampler(
                 if (metal::all(loop_bound_9 == uint2(0u))) { break; }
                 loop_bound_9 -= uint2(loop_bound_9.y == 0u, 1u);
                 if (!loop_init_8) {
-                    uint _e233 = r_3;
-                    r_3 = _e233 + 1u;
+                    uint _e223 = r_3;
+                    r_3 = _e223 + 1u;
                 }
                 loop_init_8 = false;
-                uint _e213 = r_3;
-                if (_e213 < n_7) {
+                uint _e203 = r_3;
+                if (_e203 < n_8) {
                 } else {
                     break;
                 }
                 {
-                    uint _e215 = i_2;
-                    uint _e218 = rows.inner[_e215].y;
-                    uint _e219 = r_3;
-                    if (((_e218 >> _e219) & 1u) == 1u) {
-                        uint _e225 = r_3;
-                        uint _e227 = inverse.inner[_e225];
-                        uint _e229 = i_2;
-                        inverse.inner[_e225] = _e227 | (1u << _e229);
+                    uint _e205 = i_2;
+                    uint _e208 = rows.inner[_e205].y;
+                    uint _e209 = r_3;
+                    if (((_e208 >> _e209) & 1u) == 1u) {
+                        uint _e215 = r_3;
+                        uint _e217 = inverse.inner[_e215];
+                        uint _e219 = i_2;
+                        inverse.inner[_e215] = _e217 | (1u << _e219);
                     }
                 }
             }
         }
     }
-    uint _e239 = inverse.inner[0];
-    uint _e241 = inverse.inner[1];
-    uint _e243 = inverse.inner[2];
-    uint _e245 = inverse.inner[3];
-    metal::uint4 v0_ = metal::uint4(_e239, _e241, _e243, _e245);
-    uint _e248 = inverse.inner[4];
-    uint _e250 = inverse.inner[5];
-    uint _e252 = inverse.inner[6];
-    uint _e254 = inverse.inner[7];
-    metal::uint4 v1_ = metal::uint4(_e248, _e250, _e252, _e254);
-    uint _e257 = inverse.inner[8];
-    uint _e259 = inverse.inner[9];
-    uint _e261 = inverse.inner[10];
-    uint _e263 = inverse.inner[11];
-    metal::uint4 v2_ = metal::uint4(_e257, _e259, _e261, _e263);
-    uint _e266 = inverse.inner[12];
-    uint _e268 = inverse.inner[13];
-    uint _e270 = inverse.inner[14];
-    uint _e272 = inverse.inner[15];
-    metal::uint4 v3_ = metal::uint4(_e266, _e268, _e270, _e272);
-    uint _e275 = inverse.inner[16];
-    uint _e277 = inverse.inner[17];
-    uint _e279 = inverse.inner[18];
-    uint _e281 = inverse.inner[19];
-    metal::uint4 v4_ = metal::uint4(_e275, _e277, _e279, _e281);
-    uint _e284 = inverse.inner[20];
-    uint _e286 = inverse.inner[21];
-    uint _e288 = inverse.inner[22];
-    uint _e290 = inverse.inner[23];
-    metal::uint4 v5_ = metal::uint4(_e284, _e286, _e288, _e290);
-    uint _e293 = inverse.inner[24];
-    uint _e295 = inverse.inner[25];
-    uint _e297 = inverse.inner[26];
-    uint _e299 = inverse.inner[27];
-    metal::uint4 v6_ = metal::uint4(_e293, _e295, _e297, _e299);
-    uint _e302 = inverse.inner[28];
-    uint _e304 = inverse.inner[29];
-    uint _e306 = inverse.inner[30];
-    uint _e308 = inverse.inner[31];
-    metal::uint4 v7_ = metal::uint4(_e302, _e304, _e306, _e308);
-    metal::uint2 _e310 = seed_6;
-    metal::uint2 _e311 = shift_1;
-    return NyqSobolSampler {spp_1, m_4, scramble, {}, _e310, {}, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e311, 0u, 0u};
+    uint _e229 = inverse.inner[0];
+    uint _e231 = inverse.inner[1];
+    uint _e233 = inverse.inner[2];
+    uint _e235 = inverse.inner[3];
+    metal::uint4 v0_ = metal::uint4(_e229, _e231, _e233, _e235);
+    uint _e238 = inverse.inner[4];
+    uint _e240 = inverse.inner[5];
+    uint _e242 = inverse.inner[6];
+    uint _e244 = inverse.inner[7];
+    metal::uint4 v1_ = metal::uint4(_e238, _e240, _e242, _e244);
+    uint _e247 = inverse.inner[8];
+    uint _e249 = inverse.inner[9];
+    uint _e251 = inverse.inner[10];
+    uint _e253 = inverse.inner[11];
+    metal::uint4 v2_ = metal::uint4(_e247, _e249, _e251, _e253);
+    uint _e256 = inverse.inner[12];
+    uint _e258 = inverse.inner[13];
+    uint _e260 = inverse.inner[14];
+    uint _e262 = inverse.inner[15];
+    metal::uint4 v3_ = metal::uint4(_e256, _e258, _e260, _e262);
+    uint _e265 = inverse.inner[16];
+    uint _e267 = inverse.inner[17];
+    uint _e269 = inverse.inner[18];
+    uint _e271 = inverse.inner[19];
+    metal::uint4 v4_ = metal::uint4(_e265, _e267, _e269, _e271);
+    uint _e274 = inverse.inner[20];
+    uint _e276 = inverse.inner[21];
+    uint _e278 = inverse.inner[22];
+    uint _e280 = inverse.inner[23];
+    metal::uint4 v5_ = metal::uint4(_e274, _e276, _e278, _e280);
+    uint _e283 = inverse.inner[24];
+    uint _e285 = inverse.inner[25];
+    uint _e287 = inverse.inner[26];
+    uint _e289 = inverse.inner[27];
+    metal::uint4 v6_ = metal::uint4(_e283, _e285, _e287, _e289);
+    uint _e292 = inverse.inner[28];
+    uint _e294 = inverse.inner[29];
+    uint _e296 = inverse.inner[30];
+    uint _e298 = inverse.inner[31];
+    metal::uint4 v7_ = metal::uint4(_e292, _e294, _e296, _e298);
+    metal::uint2 _e300 = seed_6;
+    metal::uint2 _e301 = shift_1;
+    return NyqSobolSampler {_e4, m_4, scramble, {}, _e300, {}, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u};
 }
 
 uint nyq_sobol_sampler_invert(
@@ -1362,12 +1368,12 @@ NyqZSobolSampler nyq_zsobol_sampler(
     uint scramble_1,
     metal::uint2 seed_9
 ) {
-    uint spp_2 = (spp_requested_1 <= 1u) ? 1u : (1u << (32u - metal::clz(spp_requested_1 - 1u)));
+    uint _e4 = nyq_round_up_pow2_(spp_requested_1);
     uint side_1 = metal::max(resolution_1.x, resolution_1.y);
     uint log2_res = 32u - metal::clz(side_1 - 1u);
-    uint log2_spp = metal::ctz(spp_2);
+    uint log2_spp = metal::ctz(_e4);
     uint bits_3 = (2u * log2_res) + log2_spp;
-    return NyqZSobolSampler {spp_2, log2_spp, log2_res, scramble_1, seed_9, naga_div(bits_3, 2u), naga_div(log2_spp, 2u), log2_spp & 1u, 0u, 0u};
+    return NyqZSobolSampler {_e4, log2_spp, log2_res, scramble_1, seed_9, naga_div(bits_3, 2u), naga_div(log2_spp, 2u), log2_spp & 1u, 0u, 0u};
 }
 
 uint nyq_spread(
@@ -1743,12 +1749,6 @@ void nyq_pcg32_advance(
     return;
 }
 
-float nyq_unit_f32_(
-    uint h_1
-) {
-    return static_cast<float>(h_1 >> 8u) * 0.000000059604645;
-}
-
 metal::uint2 nyq_hash3_(
     metal::uint2 a_7,
     metal::uint2 b_5,
@@ -1809,7 +1809,7 @@ float nyq_random_get_1d(
     NyqPcg32_ _e2 = s_42.rng;
     g_3 = _e2;
     uint _e4 = nyq_pcg32_next(g_3);
-    float _e5 = nyq_unit_f32_(_e4);
+    float _e5 = nyq_fraction_to_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
     s_42.rng = _e7;
     uint _e9 = s_42.dim;
@@ -1842,9 +1842,9 @@ metal::float2 nyq_random_get_pixel_2d(
     NyqPcg32_ _e7 = nyq_random_at(s_44, 0u);
     g_4 = _e7;
     uint _e9 = nyq_pcg32_next(g_4);
-    float _e10 = nyq_unit_f32_(_e9);
+    float _e10 = nyq_fraction_to_f32_(_e9);
     uint _e11 = nyq_pcg32_next(g_4);
-    float _e12 = nyq_unit_f32_(_e11);
+    float _e12 = nyq_fraction_to_f32_(_e11);
     metal::float2 p_3 = metal::float2(_e10, _e12);
     uint _e15 = s_44.dim;
     if (_e15 < 2u) {
@@ -1872,7 +1872,7 @@ NyqCameraSample nyq_random_camera_sample(
 
 uint nyq_mod64_(
     metal::uint2 x_9,
-    uint n
+    uint n_1
 ) {
     uint r_5 = 0u;
     uint i_5 = 0u;
@@ -1903,14 +1903,14 @@ uint nyq_mod64_(
             r_5 = (_e26 << 1u) | bit_1;
             if (!((carry == 1u))) {
                 uint _e35 = r_5;
-                local_3 = _e35 >= n;
+                local_3 = _e35 >= n_1;
             } else {
                 local_3 = true;
             }
             bool _e38 = local_3;
             if (_e38) {
                 uint _e39 = r_5;
-                r_5 = _e39 - n;
+                r_5 = _e39 - n_1;
             }
         }
     }
@@ -1977,11 +1977,11 @@ float nyq_fixed_to_f32_(
 
 NyqLatticeSampler nyq_lattice_sampler(
     uint lattice,
-    uint n_1,
+    uint n_2,
     uint g_5,
     metal::uint2 seed_13
 ) {
-    return NyqLatticeSampler {lattice, n_1, g_5, {}, seed_13, metal::uint2(0u, 0u), 0u, 0u};
+    return NyqLatticeSampler {lattice, n_2, g_5, {}, seed_13, metal::uint2(0u, 0u), 0u, 0u};
 }
 
 float nyq_lattice_value(
@@ -1990,9 +1990,9 @@ float nyq_lattice_value(
 ) {
     metal::uint2 base = {};
     uint g_6 = {};
-    uint n_8 = s_46.n;
+    uint n_9 = s_46.n;
     uint _e5 = s_46.index;
-    uint k_17 = naga_mod(_e5, n_8);
+    uint k_17 = naga_mod(_e5, n_9);
     uint component = naga_mod(dim_19, 2u);
     uint _e11 = s_46.lattice;
     switch(_e11) {
@@ -2007,12 +2007,12 @@ float nyq_lattice_value(
             uint _e21 = s_46.g;
             g_6 = _e21;
             if (component == 0u) {
-                g_6 = naga_mod(1u, n_8);
+                g_6 = naga_mod(1u, n_9);
             }
             uint _e27 = g_6;
             metal::uint2 _e28 = nyq_mul_wide(k_17, _e27);
-            uint _e29 = nyq_mod64_(_e28, n_8);
-            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_8);
+            uint _e29 = nyq_mod64_(_e28, n_9);
+            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_9);
             base = _e30;
             break;
         }
@@ -2088,13 +2088,13 @@ NyqCameraSample nyq_lattice_camera_sample(
 uint nyq_pow_mod(
     uint b_6,
     uint e_in,
-    uint n_2
+    uint n_3
 ) {
     uint base_1 = {};
     uint r_7 = {};
     uint e = {};
-    base_1 = naga_mod(b_6, n_2);
-    r_7 = naga_mod(1u, n_2);
+    base_1 = naga_mod(b_6, n_3);
+    r_7 = naga_mod(1u, n_3);
     e = e_in;
     uint2 loop_bound_18 = uint2(4294967295u);
     while(true) {
@@ -2111,13 +2111,13 @@ uint nyq_pow_mod(
                 uint _e17 = r_7;
                 uint _e18 = base_1;
                 metal::uint2 _e19 = nyq_mul_wide(_e17, _e18);
-                uint _e20 = nyq_mod64_(_e19, n_2);
+                uint _e20 = nyq_mod64_(_e19, n_3);
                 r_7 = _e20;
             }
             uint _e21 = base_1;
             uint _e22 = base_1;
             metal::uint2 _e23 = nyq_mul_wide(_e21, _e22);
-            uint _e24 = nyq_mod64_(_e23, n_2);
+            uint _e24 = nyq_mod64_(_e23, n_3);
             base_1 = _e24;
             uint _e25 = e;
             e = _e25 >> 1u;
@@ -2129,13 +2129,13 @@ uint nyq_pow_mod(
 
 NyqLattice nyq_lattice(
     uint lattice_1,
-    uint n_3,
+    uint n_4,
     uint g_7,
     uint dims_2,
     bool rotated,
     metal::uint2 seed_14
 ) {
-    return NyqLattice {lattice_1, n_3, g_7, dims_2, rotated ? 1u : 0u, {}, seed_14};
+    return NyqLattice {lattice_1, n_4, g_7, dims_2, rotated ? 1u : 0u, {}, seed_14};
 }
 
 metal::uint2 nyq_lattice_fixed(
@@ -2354,24 +2354,24 @@ metal::uint2 nyq_shl64_any(
 }
 
 metal::uint2 nyq_packed_table(
-    uint n_4,
+    uint n_5,
     metal::uint2 r_in
 ) {
     metal::uint2 t_2 = metal::uint2(1985229328u, 4275878552u);
     metal::uint2 r_10 = {};
     uint k_9 = {};
-    if (n_4 <= 4u) {
-        if (n_4 < 2u) {
+    if (n_5 <= 4u) {
+        if (n_5 < 2u) {
             return metal::uint2(0u, 0u);
         }
         type_21 factorial = type_21 {{1u, 1u, 2u, 6u, 24u}};
         type_21 start_1 = type_21 {{0u, 0u, 0u, 2u, 8u}};
-        metal::uint3 _e22 = nyq_mul64x32_(r_in, factorial.inner[n_4]);
+        metal::uint3 _e22 = nyq_mul64x32_(r_in, factorial.inner[n_5]);
         uint rank = _e22.z;
-        return metal::uint2(NYQ_SMALL_PERMUTATIONS.inner[(start_1.inner[n_4] + rank) & 31u], 0u);
+        return metal::uint2(NYQ_SMALL_PERMUTATIONS.inner[(start_1.inner[n_5] + rank) & 31u], 0u);
     }
-    if (n_4 < 16u) {
-        uint keep = 4u * n_4;
+    if (n_5 < 16u) {
+        uint keep = 4u * n_5;
         if (keep < 32u) {
             uint _e43 = t_2.x;
             t_2 = metal::uint2(_e43 & ((1u << keep) - 1u), 0u);
@@ -2381,7 +2381,7 @@ metal::uint2 nyq_packed_table(
         }
     }
     r_10 = r_in;
-    k_9 = n_4;
+    k_9 = n_5;
     uint2 loop_bound_20 = uint2(4294967295u);
     bool loop_init_16 = true;
     while(true) {
@@ -2425,20 +2425,20 @@ NyqPermutation nyq_permutation(
     uint n_in,
     uint seed_15
 ) {
-    uint n_9 = metal::max(n_in, 1u);
-    if (n_9 <= 16u) {
+    uint n_10 = metal::max(n_in, 1u);
+    if (n_10 <= 16u) {
         metal::uint2 _e10 = nyq_mix64_(metal::uint2(seed_15 ^ 2242054355u, 608135816u));
-        metal::uint2 _e11 = nyq_packed_table(n_9, _e10);
-        return NyqPermutation {n_9, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
+        metal::uint2 _e11 = nyq_packed_table(n_10, _e10);
+        return NyqPermutation {n_10, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
     }
-    uint mask_3 = 4294967295u >> metal::clz(n_9 - 1u);
+    uint mask_3 = 4294967295u >> metal::clz(n_10 - 1u);
     uint bits_5 = 32u - metal::clz(mask_3);
     uint _e29 = nyq_mix32_(seed_15 ^ 1540483477u);
     uint _e32 = nyq_mix32_(_e29 + 1759714724u);
     uint _e35 = nyq_mix32_(_e32 ^ 625341585u);
-    metal::uint2 _e36 = nyq_mul_wide(_e35, n_9);
+    metal::uint2 _e36 = nyq_mul_wide(_e35, n_10);
     uint offset_2 = _e36.y;
-    return NyqPermutation {n_9, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, {}, metal::uint2(0u, 0u)};
+    return NyqPermutation {n_10, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, {}, metal::uint2(0u, 0u)};
 }
 
 uint nyq_permutation_apply(
@@ -2447,12 +2447,12 @@ uint nyq_permutation_apply(
 ) {
     uint x_15 = {};
     bool local_10 = {};
-    uint n_10 = p.n;
-    if (n_10 <= 16u) {
-        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_8, n_10) & 15u));
+    uint n_11 = p.n;
+    if (n_11 <= 16u) {
+        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_8, n_11) & 15u));
         return _e11;
     }
-    x_15 = naga_mod(i_8, n_10);
+    x_15 = naga_mod(i_8, n_11);
     uint2 loop_bound_21 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_21 == uint2(0u))) { break; }
@@ -2484,7 +2484,7 @@ uint nyq_permutation_apply(
         uint _e73 = x_15;
         x_15 = _e72 ^ (_e73 >> p.third);
         uint _e77 = x_15;
-        if (_e77 < n_10) {
+        if (_e77 < n_11) {
             break;
         }
     }
@@ -2492,12 +2492,12 @@ uint nyq_permutation_apply(
     uint q_3 = _e79 + p.offset;
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = q_3 >= n_10;
+        local_10 = q_3 >= n_11;
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return _e90 ? (q_3 - n_10) : q_3;
+    return _e90 ? (q_3 - n_11) : q_3;
 }
 
 NyqStratifiedSampler nyq_stratified_sampler(
@@ -2506,16 +2506,16 @@ NyqStratifiedSampler nyq_stratified_sampler(
     uint jitter,
     metal::uint2 seed_16
 ) {
-    uint spp_3 = xs * ys;
+    uint spp_1 = xs * ys;
     float _e5 = nyq_u32_to_f32_(xs);
     float _e6 = nyq_recip_f32_(_e5);
     float _e7 = nyq_u32_to_f32_(ys);
     float _e8 = nyq_recip_f32_(_e7);
-    float _e9 = nyq_u32_to_f32_(spp_3);
+    float _e9 = nyq_u32_to_f32_(spp_1);
     float _e10 = nyq_recip_f32_(_e9);
     metal::float3 inv = metal::float3(_e6, _e8, _e10);
     metal::uint2 zero = metal::uint2(0u, 0u);
-    return NyqStratifiedSampler {xs, ys, spp_3, {}, inv, jitter, seed_16, zero, zero, 0u, 0u};
+    return NyqStratifiedSampler {xs, ys, spp_1, {}, inv, jitter, seed_16, zero, zero, 0u, 0u};
 }
 
 uint nyq_stratified_dim_key(
@@ -2575,8 +2575,8 @@ metal::float2 nyq_stratified_jitters(
     metal::uint2 _e56 = nyq_u64_(dim_25);
     metal::uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     metal::uint2 _e60 = nyq_mix64_(_e55 ^ _e58);
-    float _e62 = nyq_unit_f32_(_e60.y);
-    float _e64 = nyq_unit_f32_(_e60.x);
+    float _e62 = nyq_fraction_to_f32_(_e60.y);
+    float _e64 = nyq_fraction_to_f32_(_e60.x);
     return metal::float2(_e62, _e64);
 }
 
@@ -3844,13 +3844,13 @@ NyqHalton nyq_halton(
 }
 
 float nyq_halton_sample(
-    NyqHalton h_2,
+    NyqHalton h_1,
     metal::uint2 index_15,
     uint dim_37,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_37, h_2.dims), index_15, h_2.seed, h_2.scramble, nyq_halton_bases, _buffer_sizes);
+    float _e7 = nyq_radical_inverse_scrambled(naga_mod(dim_37, h_1.dims), index_15, h_1.seed, h_1.scramble, nyq_halton_bases, _buffer_sizes);
     return _e7;
 }
 
@@ -3865,15 +3865,15 @@ int naga_mod(int lhs, int rhs) {
 
 uint nyq_mod_inverse(
     uint a_23,
-    uint n_5
+    uint n_6
 ) {
     int r0_ = {};
     int r1_ = {};
     int t0_ = 0;
     int t1_ = 1;
     int m_3 = {};
-    r0_ = static_cast<int>(n_5);
-    r1_ = static_cast<int>(naga_mod(a_23, n_5));
+    r0_ = static_cast<int>(n_6);
+    r1_ = static_cast<int>(naga_mod(a_23, n_6));
     uint2 loop_bound_32 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_32 == uint2(0u))) { break; }
@@ -3902,11 +3902,11 @@ uint nyq_mod_inverse(
         }
     }
     int _e27 = t0_;
-    m_3 = naga_mod(_e27, static_cast<int>(n_5));
+    m_3 = naga_mod(_e27, static_cast<int>(n_6));
     int _e31 = m_3;
     if (_e31 < 0) {
         int _e34 = m_3;
-        m_3 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_5)));
+        m_3 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_6)));
     }
     int _e37 = m_3;
     return static_cast<uint>(_e37);
@@ -3958,7 +3958,7 @@ NyqHaltonSampler nyq_halton_sampler(
 uint nyq_inverse_radical_inverse(
     uint b_14,
     uint inverse_in,
-    uint n_6
+    uint n_7
 ) {
     uint inverse_1 = {};
     uint index_16 = 0u;
@@ -3976,7 +3976,7 @@ uint nyq_inverse_radical_inverse(
         }
         loop_init_22 = false;
         uint _e8 = done;
-        if (_e8 < n_6) {
+        if (_e8 < n_7) {
         } else {
             break;
         }
@@ -3996,7 +3996,7 @@ uint nyq_inverse_radical_inverse(
                     }
                     loop_init_23 = false;
                     uint _e15 = k_14;
-                    if (_e15 < n_6) {
+                    if (_e15 < n_7) {
                     } else {
                         break;
                     }
@@ -4212,13 +4212,13 @@ metal::uint4 nyq_fill_request(
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_11 = _e11 + i_16;
+    uint n_12 = _e11 + i_16;
     uint _e15 = nyq_job.spp;
-    uint pixel_21 = naga_div(n_11, _e15);
+    uint pixel_21 = naga_div(n_12, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_11, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_12, _e29), 5u);
 }
 
 void nyq_fill_camera(

@@ -85,6 +85,11 @@ fn nyq_fraction_to_f32(v: u32) -> f32 {
     return f32(v >> 8u) * (1.0 / 16777216.0);
 }
 
+// The next power of two of n (at least 1): the samplers' rounded spp (core `rounded_spp`).
+fn nyq_round_up_pow2(n: u32) -> u32 {
+    return select(1u << (32u - countLeadingZeros(n - 1u)), 1u, n <= 1u);
+}
+
 // The f32 of the binary fraction reverse(w_rev): what the core's reversed-table reads return.
 fn nyq_rev_to_f32(w_rev: u32) -> f32 {
     return nyq_fraction_to_f32(reverseBits(w_rev));
@@ -277,7 +282,7 @@ fn nyq_top(v: u32, bits: u32) -> u32 {
 // checks 2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32). The core's `SobolSampler::new(.., seed)`
 // is NYQ_SCRAMBLE_NONE for seed 0 and NYQ_SCRAMBLE_PERMUTE_DIGITS otherwise.
 fn nyq_sobol_sampler(resolution: vec2<u32>, spp_requested: u32, scramble: u32, seed_in: vec2<u32>) -> NyqSobolSampler {
-    let spp = select(1u << (32u - countLeadingZeros(spp_requested - 1u)), 1u, spp_requested <= 1u);
+    let spp = nyq_round_up_pow2(spp_requested);
     let side = max(resolution.x, resolution.y);
     let m = 32u - countLeadingZeros(side - 1u);
     var seed = seed_in;
@@ -604,7 +609,7 @@ struct NyqZSobolSampler {
 // power of two), scrambled by `scramble` (NYQ_SCRAMBLE_*) under `seed`. The host checks the
 // arguments as core `ZSobolSampler::new` does (2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32).
 fn nyq_zsobol_sampler(resolution: vec2<u32>, spp_requested: u32, scramble: u32, seed: vec2<u32>) -> NyqZSobolSampler {
-    let spp = select(1u << (32u - countLeadingZeros(spp_requested - 1u)), 1u, spp_requested <= 1u);
+    let spp = nyq_round_up_pow2(spp_requested);
     let side = max(resolution.x, resolution.y);
     let log2_res = 32u - countLeadingZeros(side - 1u);
     let log2_spp = countTrailingZeros(spp);
@@ -808,11 +813,6 @@ fn nyq_pcg32_advance(g: ptr<function, NyqPcg32>, delta: u32) {
     (*g).state = nyq_add64(nyq_mul64(acc_mult, (*g).state), acc_plus);
 }
 
-// A hash's top 24 bits as an f32 in [0, 1): core `unit_f32`.
-fn nyq_unit_f32(h: u32) -> f32 {
-    return f32(h >> 8u) * (1.0 / 16777216.0);
-}
-
 // hash3(a, b, c) = mix64(hash2(a, b) ^ (c + 3·⌊2⁶⁴/φ⌋)): core `hash3`.
 fn nyq_hash3(a: vec2<u32>, b: vec2<u32>, c: vec2<u32>) -> vec2<u32> {
     return nyq_mix64(nyq_hash2(a, b) ^ nyq_add64(c, vec2<u32>(0x7ddf743fu, 0xdaa66d2cu)));
@@ -856,7 +856,7 @@ fn nyq_random_start(s: ptr<function, NyqRandomSampler>, pixel: vec2<u32>, sample
 fn nyq_random_get_1d(s: ptr<function, NyqRandomSampler>) -> f32 {
     // A local copy: naga's SPIR-V writer cannot pass a pointer to a member of a pointee.
     var g = (*s).rng;
-    let v = nyq_unit_f32(nyq_pcg32_next(&g));
+    let v = nyq_fraction_to_f32(nyq_pcg32_next(&g));
     (*s).rng = g;
     (*s).dim += 1u;
     if ((*s).dim & 0xffffu) == 0u {
@@ -878,8 +878,8 @@ fn nyq_random_get_pixel_2d(s: ptr<function, NyqRandomSampler>) -> vec2<f32> {
         return nyq_random_get_2d(s);
     }
     var g = nyq_random_at(s, 0u);
-    let u = nyq_unit_f32(nyq_pcg32_next(&g));
-    let p = vec2<f32>(u, nyq_unit_f32(nyq_pcg32_next(&g)));
+    let u = nyq_fraction_to_f32(nyq_pcg32_next(&g));
+    let p = vec2<f32>(u, nyq_fraction_to_f32(nyq_pcg32_next(&g)));
     if (*s).dim < 2u {
         (*s).dim = 2u;
         (*s).rng = g;
@@ -1341,7 +1341,7 @@ fn nyq_stratified_jitters(s: ptr<function, NyqStratifiedSampler>, dim: u32) -> v
         return vec2<f32>(f32(nyq_shr64(h, 22u).x & 0x1fffffu) * scale, f32((h.x >> 1u) & 0x1fffffu) * scale);
     }
     let h = nyq_mix64((*s).sample_key ^ nyq_mul64(nyq_u64(dim), NYQ_JITTER_STEP));
-    return vec2<f32>(nyq_unit_f32(h.y), nyq_unit_f32(h.x));
+    return vec2<f32>(nyq_fraction_to_f32(h.y), nyq_fraction_to_f32(h.x));
 }
 
 // min(x, the largest f32 below one).

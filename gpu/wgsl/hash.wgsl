@@ -85,6 +85,11 @@ fn nyq_fraction_to_f32(v: u32) -> f32 {
     return f32(v >> 8u) * (1.0 / 16777216.0);
 }
 
+// The next power of two of n (at least 1): the samplers' rounded spp (core `rounded_spp`).
+fn nyq_round_up_pow2(n: u32) -> u32 {
+    return select(1u << (32u - countLeadingZeros(n - 1u)), 1u, n <= 1u);
+}
+
 // The f32 of the binary fraction reverse(w_rev): what the core's reversed-table reads return.
 fn nyq_rev_to_f32(w_rev: u32) -> f32 {
     return nyq_fraction_to_f32(reverseBits(w_rev));

@@ -45,11 +45,6 @@ fn nyq_pcg32_advance(g: ptr<function, NyqPcg32>, delta: u32) {
     (*g).state = nyq_add64(nyq_mul64(acc_mult, (*g).state), acc_plus);
 }
 
-// A hash's top 24 bits as an f32 in [0, 1): core `unit_f32`.
-fn nyq_unit_f32(h: u32) -> f32 {
-    return f32(h >> 8u) * (1.0 / 16777216.0);
-}
-
 // hash3(a, b, c) = mix64(hash2(a, b) ^ (c + 3·⌊2⁶⁴/φ⌋)): core `hash3`.
 fn nyq_hash3(a: vec2<u32>, b: vec2<u32>, c: vec2<u32>) -> vec2<u32> {
     return nyq_mix64(nyq_hash2(a, b) ^ nyq_add64(c, vec2<u32>(0x7ddf743fu, 0xdaa66d2cu)));
@@ -93,7 +88,7 @@ fn nyq_random_start(s: ptr<function, NyqRandomSampler>, pixel: vec2<u32>, sample
 fn nyq_random_get_1d(s: ptr<function, NyqRandomSampler>) -> f32 {
     // A local copy: naga's SPIR-V writer cannot pass a pointer to a member of a pointee.
     var g = (*s).rng;
-    let v = nyq_unit_f32(nyq_pcg32_next(&g));
+    let v = nyq_fraction_to_f32(nyq_pcg32_next(&g));
     (*s).rng = g;
     (*s).dim += 1u;
     if ((*s).dim & 0xffffu) == 0u {
@@ -115,8 +110,8 @@ fn nyq_random_get_pixel_2d(s: ptr<function, NyqRandomSampler>) -> vec2<f32> {
         return nyq_random_get_2d(s);
     }
     var g = nyq_random_at(s, 0u);
-    let u = nyq_unit_f32(nyq_pcg32_next(&g));
-    let p = vec2<f32>(u, nyq_unit_f32(nyq_pcg32_next(&g)));
+    let u = nyq_fraction_to_f32(nyq_pcg32_next(&g));
+    let p = vec2<f32>(u, nyq_fraction_to_f32(nyq_pcg32_next(&g)));
     if (*s).dim < 2u {
         (*s).dim = 2u;
         (*s).rng = g;

@@ -93,7 +93,7 @@ fn nyq_top(v: u32, bits: u32) -> u32 {
 // checks 2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32). The core's `SobolSampler::new(.., seed)`
 // is NYQ_SCRAMBLE_NONE for seed 0 and NYQ_SCRAMBLE_PERMUTE_DIGITS otherwise.
 fn nyq_sobol_sampler(resolution: vec2<u32>, spp_requested: u32, scramble: u32, seed_in: vec2<u32>) -> NyqSobolSampler {
-    let spp = select(1u << (32u - countLeadingZeros(spp_requested - 1u)), 1u, spp_requested <= 1u);
+    let spp = nyq_round_up_pow2(spp_requested);
     let side = max(resolution.x, resolution.y);
     let m = 32u - countLeadingZeros(side - 1u);
     var seed = seed_in;

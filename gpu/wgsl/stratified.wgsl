@@ -236,7 +236,7 @@ fn nyq_stratified_jitters(s: ptr<function, NyqStratifiedSampler>, dim: u32) -> v
         return vec2<f32>(f32(nyq_shr64(h, 22u).x & 0x1fffffu) * scale, f32((h.x >> 1u) & 0x1fffffu) * scale);
     }
     let h = nyq_mix64((*s).sample_key ^ nyq_mul64(nyq_u64(dim), NYQ_JITTER_STEP));
-    return vec2<f32>(nyq_unit_f32(h.y), nyq_unit_f32(h.x));
+    return vec2<f32>(nyq_fraction_to_f32(h.y), nyq_fraction_to_f32(h.x));
 }
 
 // min(x, the largest f32 below one).

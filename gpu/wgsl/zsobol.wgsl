@@ -30,7 +30,7 @@ struct NyqZSobolSampler {
 // power of two), scrambled by `scramble` (NYQ_SCRAMBLE_*) under `seed`. The host checks the
 // arguments as core `ZSobolSampler::new` does (2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32).
 fn nyq_zsobol_sampler(resolution: vec2<u32>, spp_requested: u32, scramble: u32, seed: vec2<u32>) -> NyqZSobolSampler {
-    let spp = select(1u << (32u - countLeadingZeros(spp_requested - 1u)), 1u, spp_requested <= 1u);
+    let spp = nyq_round_up_pow2(spp_requested);
     let side = max(resolution.x, resolution.y);
     let log2_res = 32u - countLeadingZeros(side - 1u);
     let log2_spp = countTrailingZeros(spp);
