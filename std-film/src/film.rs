@@ -112,10 +112,10 @@ pub(crate) struct Setup {
 /// A film: accumulates filtered samples from tiles into `f64` pixel sums and resolves them into
 /// an [`Image`].
 ///
-/// Reconstruction is the seed's I(x, y) = Σ f(x − xᵢ, y − yᵢ)·L(xᵢ, yᵢ) / Σ f(x − xᵢ, y − yᵢ),
-/// with the filter read from a table built once. Tiles are merged in tile-index order whatever
-/// order they arrive in (a tile that arrives early waits), so the image is bit-identical for any
-/// thread count or schedule.
+/// Reconstruction is the pixel filtering equation (Dippé and Wold 1985; pbrt-v2's film),
+/// I(x, y) = Σ f(x − xᵢ, y − yᵢ)·L(xᵢ, yᵢ) / Σ f(x − xᵢ, y − yᵢ), with the filter read from a
+/// table built once. Tiles are merged in tile-index order whatever order they arrive in (a tile
+/// that arrives early waits), so the image is bit-identical for any thread count or schedule.
 ///
 /// ```
 /// use nyquist_film::{Film, FilmConfig};

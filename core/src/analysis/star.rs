@@ -610,7 +610,8 @@ mod tests {
             let d2 = exact(&pts, 2);
             assert!(d2 >= exact(&xs, 1) - 1e-15 && d2 >= exact(&ys, 1) - 1e-15);
             // The same x's at y = 1: closed boxes [0,ξ] × [0,1] give the 1D excess, but the
-            // empty box [0,1) × [0,1) has area 1, so D* = 1 (the brief's "equals 1D" fails here).
+            // empty box [0,1) × [0,1) has area 1, so D* = 1 ("a set on a line has its 1D
+            // discrepancy" fails here).
             let line: Vec<f64> = xs.iter().flat_map(|&x| [x, 1.0]).collect();
             assert_eq!(exact(&line, 2), 1.0);
             // Points (x, x) on the diagonal: every anchored box [0,ξ)×[0,η) holds the points

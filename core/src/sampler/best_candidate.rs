@@ -54,9 +54,10 @@ pub fn table_row(k: u32) -> [f32; 5] {
 ///   blue noise on the torus, and a toroidal shift keeps every distance, so each pixel's `spp`
 ///   samples are blue noise; the shift differs from pixel to pixel, so the image is not one
 ///   pattern repeated with a period of one pixel (which aliases like a uniform grid at low
-///   `spp`: the seed's "prefer noise over aliasing"). Deviation from pbrt-v2, whose table spans
-///   a tile of `√(4096/spp)` pixels: there a pixel gets a varying number of samples, which the
-///   random-access interface cannot express; here every pixel gets exactly `spp`.
+///   `spp`, where nonuniform samples are meant to turn aliasing into noise: Cook 1986, Dippé
+///   and Wold 1985). Deviation from pbrt-v2, whose table spans a tile of `√(4096/spp)` pixels:
+///   there a pixel gets a varying number of samples, which the random-access interface cannot
+///   express; here every pixel gets exactly `spp`.
 /// - Time (dimension 2) and lens (dimensions 3, 4): the same row's values with their own
 ///   per-pixel shifts (toroidal, so the redistribution against image neighbours is kept inside
 ///   the pixel), so neighbouring pixels do not repeat them.

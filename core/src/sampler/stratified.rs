@@ -23,7 +23,8 @@ pub use crate::stratify::Jitter;
 ///   position; the jitter comes from `hash(pixel, i, dim, seed)`.
 /// - Arrays ([`Sampler::get_array_1d`] / [`Sampler::get_array_2d`]) are Latin hypercubes of
 ///   their length (one value per stratum on every axis), hash-permuted: any array length works,
-///   which fixes the seed's "7 stratified 2D samples" problem.
+///   where a grid of strata would need a count such as 7 to factor (pbrt-v2's `StratifiedSampler`
+///   answers that with Latin hypercubes too).
 ///
 /// `sample_index >= spp` wraps the stratum modulo `spp` (the jitter still changes).
 ///

@@ -1,8 +1,10 @@
 //! The Hammersley point set and its folded (Hammersley–Zaremba) variant: `N` points, point `k`
 //! is `((k + ½)/N, Φ₂(k), Φ₃(k), …)` (Ψ in place of Φ for the Zaremba form).
 //!
-//! Sources: Hammersley (1960); the centred first coordinate follows the seed's `(i − ½)/N` with
-//! 0-based `k`; De Clerck (1986) for the exact star discrepancy used in the tests.
+//! Sources: Hammersley (1960); the first coordinate is centred, `(i − ½)/N` for 1-based `i`,
+//! which is `(k + ½)/N` for 0-based `k`: the `N`-point set of least star discrepancy in one
+//! dimension, `1/(2N)` (Niederreiter 1992, ch. 2); De Clerck (1986) for the exact star
+//! discrepancy used in the tests.
 
 use super::Sequence;
 use crate::Error;

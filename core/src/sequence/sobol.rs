@@ -402,7 +402,7 @@ mod tests {
                 assert_eq!(s.sample_f64(i as u64, d as u32), f64::from(eighths) / 8.0);
             }
         }
-        // The brief's dimension-1 vector.
+        // Dimension 1 is pbrt-v2's `Sobol2(i, 0)`, the (0,2)-sequence's second coordinate.
         let dim1: std::vec::Vec<f32> = (0..8).map(|i| s.sample(i, 1)).collect();
         assert_eq!(dim1, [0.0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875]);
     }

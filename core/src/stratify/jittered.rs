@@ -18,7 +18,8 @@ use crate::{Error, hash, rng::CounterRng};
 pub enum Jitter {
     /// Uniformly random inside the stratum.
     Jittered,
-    /// At the stratum's centre, `(k + ½) / n`: the seed's "uniform" baseline; draws nothing.
+    /// At the stratum's centre, `(k + ½) / n`: the unjittered baseline (pbrt-v2's
+    /// `StratifiedSampler` with `jitter` off, the `uniform` sampler); draws nothing.
     Centered,
 }
 
