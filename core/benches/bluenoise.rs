@@ -2,8 +2,8 @@
 //! kernel footprint, clusters and voids from tournament trees) against the straightforward one
 //! (`generate_straightforward`: every pixel's energy updated and every pixel scanned at each
 //! step), one 128 × 128 channel per iteration; 64 × 64 for the scaling. Also Poisson-disk sets
-//! of about 1000 points (Bridson alone and maximal) and 4096 points of the Fibonacci lattice
-//! and R2.
+//! of about 1000 points (Bridson alone and maximal), 4096 points of the Fibonacci lattice and
+//! R2, and the two-dimensional Korobov search (`Korobov::searched_2d`).
 //!
 //! Medians (shared 2-core VM, thread CPU time, `nice -n 15 cargo bench -p nyquist --bench
 //! bluenoise -- --warm-up-time 1 --measurement-time 3`): 128²: fast 162 ms, straightforward
@@ -18,7 +18,7 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use nyquist::analysis::Topology;
 use nyquist::bluenoise::{PoissonDisk, VoidAndCluster};
-use nyquist::lattice::{FibonacciLattice, Kronecker};
+use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
 use nyquist::sequence::Sequence;
 
 fn bench_masks(c: &mut Criterion<cpu_time::BenchClock>) {
@@ -86,9 +86,22 @@ fn bench_lattices(c: &mut Criterion<cpu_time::BenchClock>) {
     g.finish();
 }
 
+/// `Korobov::searched_2d(n)`, the two-dimensional P₂ search `LatticeSampler::korobov` runs once
+/// per sampler, at 2¹², 2¹⁶ and 2²⁰ points.
+fn bench_korobov_search(c: &mut Criterion<cpu_time::BenchClock>) {
+    let mut g = c.benchmark_group("korobov_searched_2d");
+    g.sample_size(10);
+    for log2 in [12u32, 16, 20] {
+        g.bench_function(format!("2^{log2}"), |b| {
+            b.iter(|| Korobov::searched_2d(black_box(1 << log2)).unwrap())
+        });
+    }
+    g.finish();
+}
+
 criterion_group! {
     name = benches;
     config = cpu_time::config();
-    targets = bench_masks, bench_poisson, bench_lattices
+    targets = bench_masks, bench_poisson, bench_lattices, bench_korobov_search
 }
 criterion_main!(benches);

@@ -4,7 +4,8 @@
 //! bits, the case of a sampler walking a pixel's samples) and once with incoherent, hashed 32-bit
 //! indices (16 set bits on average, the case of a global sequence over a large image). The peers
 //! and candidates read the same `[[u32; 32]; 64]` columns (or tables built from them); throughput
-//! is per value. Figures: `docs/performance.md`.
+//! is per value. `sobol_by_index_dims_64_127_*` times `sobol_u32` on the next 64 dimensions,
+//! which have no byte tables (the masked XOR over 32 columns). Figures: `docs/performance.md`.
 
 mod cpu_time;
 
@@ -194,6 +195,28 @@ fn bench_kernels(c: &mut Criterion<cpu_time::BenchClock>) {
     }
 }
 
+/// `sobol_u32` on dimensions 64..128, past the byte tables: the path of every dimension from 64
+/// to 1023, beside the byte-table dimensions' figure above.
+fn bench_upper_dims(c: &mut Criterion<cpu_time::BenchClock>) {
+    for (name, coherent) in [("coherent", true), ("incoherent", false)] {
+        let idx = indices(coherent);
+        let mut g = c.benchmark_group(format!("sobol_by_index_dims_64_127_{name}"));
+        g.throughput(Throughput::Elements(u64::from(DIMS * POINTS)));
+        g.bench_function("nyquist_sobol_u32", |b| {
+            b.iter(|| {
+                let mut acc = 0u32;
+                for d in DIMS..2 * DIMS {
+                    for &i in &idx {
+                        acc ^= sobol_u32(black_box(i), d);
+                    }
+                }
+                acc
+            })
+        });
+        g.finish();
+    }
+}
+
 fn bench_fill(c: &mut Criterion<cpu_time::BenchClock>) {
     // Point-major fill of 1024 consecutive points × 64 dims: the trait's default (one `sample`
     // per value) against Sobol's incremental override.
@@ -226,6 +249,6 @@ fn bench_fill(c: &mut Criterion<cpu_time::BenchClock>) {
 criterion_group! {
     name = benches;
     config = cpu_time::config();
-    targets = bench_kernels, bench_fill
+    targets = bench_kernels, bench_upper_dims, bench_fill
 }
 criterion_main!(benches);

@@ -1,19 +1,17 @@
 //! Speed tables stored in the binary, or built in zeroed memory at first use.
 //!
-//! The samplers read about 2.1 MiB of tables that are functions of a few constants (Sobol byte
-//! and nibble products, radical-inverse constants and digit reversals, the baked PMJ(0,2)
-//! sequence). By default they are evaluated at compile time and stored in the binary's read-only
+//! The samplers read about 2.7 MiB of tables that are functions of a few constants (the Sobol
+//! matrices, Sobol byte and nibble products, radical-inverse constants and digit reversals, the
+//! baked PMJ(0,2) sequence). By default they are evaluated at compile time and stored in the binary's read-only
 //! data, which costs nothing at run time and suits firmware, where flash is cheaper than RAM.
 //!
 //! With the `lazy-tables` feature each table is instead a zero-initialised static (`.bss`, which
 //! takes no room in an executable or a WebAssembly module) that the same `const fn` fills the
 //! first time any thread reads it. The values are the same bit for bit (each table has a test that
 //! compares the two); the module shrinks by the tables' size and the first read of each table
-//! pays its construction once: natively at `opt-level = "z"`, 5.3 ms for the radical inverse's
-//! tables (Halton's first value), 0.4–0.7 ms for the Sobol, Owen-Sobol and PMJ(0,2) ones. The
-//! best-candidate table is generated the same way by its own fill (`sampler/best_candidate/
-//! generate.rs`): 0.4 s with `opt-level = 3`, 0.7 s at `"z"` (first `table_row` call, a
-//! throwaway program, median of three on a 2-core machine under load). The browser explorer
+//! pays its construction once. The best-candidate table is generated the same way by its own
+//! fill (`sampler/best_candidate/generate.rs`), and so is the dither mask. What each first read
+//! costs: `docs/performance.md` (`core/examples/first_use.rs` measures it). The browser explorer
 //! (`web/`) builds this way.
 //!
 //! [`baked_table!`] declares one table either way, so the code that reads it (indexing, `iter`)

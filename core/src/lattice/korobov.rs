@@ -138,7 +138,7 @@ impl Korobov {
 
     /// The two-dimensional lattice of `n` points whose multiplier minimises `P₂` (as
     /// [`Korobov::searched`]`(n, 2)`), for up to 2²⁴ points, in time about linear in `n`
-    /// (measured, optimised build: 0.6 ms at 4096 points, 10 ms at 2¹⁶, 0.17 s at 2²⁰).
+    /// (timings: `docs/performance.md`).
     ///
     /// In two dimensions the dual lattice of `(1, a)` is `{h : h₁ + a·h₂ ≡ 0 (mod n)}` and `P₂`
     /// is the sum of `1/(h̄₁·h̄₂)²`, `h̄ = max(1, |h|)`, over its non-zero vectors

@@ -20,7 +20,7 @@ use crate::math::ONE_MINUS_EPSILON;
 /// (49) and 1 of base 11 (11): 128 bytes in all, which every `HaltonSampler` carries. Larger
 /// groups (8, 5, 3, 2 and 2 digits, 794 bytes) take fewer steps per value, but would make the
 /// sampler six times larger on a firmware stack for a camera sample that is already several
-/// times faster than pbrt-v4's (`peers/`).
+/// times faster than pbrt-v4's (the peer table of `docs/performance.md`).
 #[derive(Clone, Debug)]
 pub(crate) struct PermutedDigitGroups {
     t2: [u8; 16],

@@ -63,8 +63,8 @@ impl LatticeSampler {
     /// The Korobov lattice of `N = spp` points, generator `(1, a)` with `a` the minimiser of
     /// `P₂` ([`Korobov::searched_2d`]): a rank-1 lattice of any size; where spp is a Fibonacci
     /// number the search finds the Fibonacci lattice (up to a reflection of the second
-    /// coordinate). The search runs here, once, in
-    /// time about linear in spp (measured: 0.6 ms at 4096 spp, 10 ms at 2¹⁶, 0.17 s at 2²⁰).
+    /// coordinate). The search runs here, once, in time about linear in spp (timings:
+    /// `docs/performance.md`).
     ///
     /// # Errors
     /// [`Error::ZeroSize`] for `spp == 0`; [`Error::OutOfRange`] (`what: "spp"`) above 2²⁴.

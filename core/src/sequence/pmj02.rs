@@ -307,8 +307,8 @@ impl Pmj02 {
     }
 
     /// The points at many indices at once: `out[k] = sample_2d(indices[k])`, the same values.
-    /// Scrambled, four coordinates (two points) hash at a time on vector lanes: 1.80× the
-    /// throughput of per-point calls on x86-64 (criterion, `pmj02` bench, docs/performance.md).
+    /// Scrambled, four coordinates (two points) hash at a time on vector lanes, a higher
+    /// throughput than per-point calls on x86-64 (the `pmj02` rows of `docs/performance.md`).
     ///
     /// # Errors
     /// [`Error::BufferLength`] unless `out` is as long as `indices`.

@@ -13,9 +13,9 @@
 //! enumerates the same points in Gray-code order: its point `i` is our point `i ^ (i >> 1)`.
 //!
 //! Speed and memory: the direction numbers take 128 KiB (`1024 × 32 × u32`). Dimensions 0..63
-//! also have compile-time byte tables (256 KiB more): a value there is four lookups and three
-//! XORs (≈ 1.5 ns); dimensions 64..1023 use a branch-free masked XOR over the 32 columns
-//! (≈ 7 ns). Both cost the same for every index.
+//! also have compile-time byte tables (272 KiB more): a value there is four lookups and three
+//! XORs; dimensions 64..1023 use a branch-free masked XOR over the 32 columns, several times
+//! slower. Neither path's cost depends on the index (timings: `docs/performance.md`).
 
 use super::{SOBOL_MATRICES, Sequence, check_fill};
 use crate::lazy_table::{baked_table, const_unless_lazy};
@@ -31,7 +31,7 @@ use crate::{Error, hash};
 pub const SOBOL_DIMS: u32 = 1024;
 
 /// Dimensions `0..FAST_DIMS` also have byte tables: four lookups per value instead of 32
-/// masked XORs (about 3× faster, see `core/benches/sobol.rs`), at 4 KiB per dimension.
+/// masked XORs (several times faster: `docs/performance.md`), at 4¼ KiB per dimension.
 const FAST_DIMS: usize = 64;
 
 baked_table! {

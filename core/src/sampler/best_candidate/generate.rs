@@ -3,9 +3,9 @@
 //! the stored table, with the same double-precision operations in the same order, so the rows
 //! are the same bit for bit (the test below compares all 4096).
 //!
-//! The generation takes about 0.4 s natively (0.7 s at `opt-level = "z"`; `lazy_table.rs` says
-//! how that was measured) and needs about 180 KiB of stack (the points in `f64` and a grid over
-//! the torus), which suits a WebAssembly module's 1 MiB stack.
+//! The generation is the costliest first use of any table (timings: `docs/performance.md`) and
+//! needs about 180 KiB of stack (the points in `f64` and a grid over the torus), which suits a
+//! WebAssembly module's 1 MiB stack.
 
 use super::TABLE_SIZE;
 use crate::lazy_table::{Fill, LazyTable};

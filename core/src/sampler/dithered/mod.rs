@@ -189,8 +189,8 @@ impl<'a> MaskView<'a> {
 pub static DITHER_MASK_RANKS: [u16; 2 * 64 * 64] = include!("dither_mask.in");
 
 /// The built-in mask as [`MaskView::builtin`] reads it: [`DITHER_MASK_RANKS`], or with the
-/// `lazy-tables` feature the same ranks generated at first use (16 KiB less in the binary; 0.14 s
-/// at `opt-level = "z"` and 100 KiB of stack, once), so a program that does not name the
+/// `lazy-tables` feature the same ranks generated at first use (16 KiB less in the binary; once,
+/// with 100 KiB of stack; its cost: `docs/performance.md`), so a program that does not name the
 /// static does not carry it.
 #[cfg(not(feature = "lazy-tables"))]
 fn builtin_ranks() -> &'static [u16; 2 * 64 * 64] {
