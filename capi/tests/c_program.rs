@@ -1,4 +1,4 @@
-//! Compiles `tests/c/capi_test.c` with the system C compiler (`cc -std=c99 -Wall -Wextra
+//! Compiles `capi/tests/c/capi_test.c` with the system C compiler (`cc -std=c99 -Wall -Wextra
 //! -Werror`) against the committed header and the static library, runs it, and compares every
 //! line it prints with the same values computed here from the `nyquist` crate: floats bit for
 //! bit, counts exactly, and the status code of each bad call.
@@ -358,7 +358,12 @@ fn error_lines(e: &mut Expected) {
     e.line(&format!("version {}", env!("CARGO_PKG_VERSION")));
 }
 
-/// Every line `tests/c/capi_test.c` must print, from the Rust side.
+/// A C program of this package's tests, `capi/tests/c/NAME`.
+fn c_source(name: &str) -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/c").join(name)
+}
+
+/// Every line `capi/tests/c/capi_test.c` must print, from the Rust side.
 fn expected_c_output() -> String {
     let mut e = Expected(String::new());
     radical_lines(&mut e);
@@ -371,10 +376,10 @@ fn expected_c_output() -> String {
     e.0
 }
 
-/// Runs `tests/c/capi_test.c` built as `build` and compares its output line by line.
+/// Runs `capi/tests/c/capi_test.c` built as `build` and compares its output line by line.
 fn check_c_program(build: Build) {
     let want = expected_c_output();
-    let actual = run_c_program(&workspace().join("tests/c/capi_test.c"), "capi_test", build);
+    let actual = run_c_program(&c_source("capi_test.c"), "capi_test", build);
     let (want, got): (Vec<&str>, Vec<&str>) = (want.lines().collect(), actual.lines().collect());
     for (i, (w, g)) in want.iter().zip(&got).enumerate() {
         assert_eq!(
@@ -405,14 +410,14 @@ fn c_program_is_clean_under_sanitizers() {
     check_c_program(Build::Sanitized);
 }
 
-/// `tests/c/capi_misuse.c` misuses the API on purpose (null handles and out-pointers, zero and
+/// `capi/tests/c/capi_misuse.c` misuses the API on purpose (null handles and out-pointers, zero and
 /// wrong lengths, misaligned buffers, bad enums and specs, a double destroy through the
 /// null guard): every call gets its documented status, no output is touched, and the
 /// sanitizers report nothing.
 #[test]
 fn misuse_gets_error_codes_and_no_sanitizer_report() {
     let out = run_c_program(
-        &workspace().join("tests/c/capi_misuse.c"),
+        &c_source("capi_misuse.c"),
         "capi_misuse",
         Build::Sanitized,
     );
