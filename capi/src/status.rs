@@ -58,7 +58,7 @@ impl From<NamedSamplerError> for NyqStatus {
     fn from(e: NamedSamplerError) -> NyqStatus {
         match e {
             NamedSamplerError::UnknownName => NyqStatus::NYQ_ERR_PARSE,
-            NamedSamplerError::NotSquare { .. } => NyqStatus::NYQ_ERR_OUT_OF_RANGE,
+            NamedSamplerError::SppAboveLimit { .. } => NyqStatus::NYQ_ERR_OUT_OF_RANGE,
             NamedSamplerError::Sampler(e) => e.into(),
             _ => NyqStatus::NYQ_ERR_OTHER,
         }

@@ -5,7 +5,6 @@
 //! header line) or are generated with the same flags as `points`. Everything is validated and
 //! computed before anything is written, so an error leaves no file and prints one line.
 
-use crate::clock::Stopwatch;
 use crate::points::{self, Format, PointsArgs, SamplerName, parse_grid};
 use anyhow::{Context, Result, anyhow, bail};
 use clap::{Args, ValueEnum};
@@ -13,6 +12,7 @@ use nyquist::analysis::{
     self, ENUMERATION_LIMIT, MAX_DIMS, PointSet, StarBounds, Topology, star_bounds_scratch_len,
     star_discrepancy_scratch_len,
 };
+use nyquist_lab::clock::Stopwatch;
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Read};
 use std::path::{Path, PathBuf};
@@ -304,7 +304,7 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
         }
     }
     if let Some(path) = &args.spectrum {
-        crate::plot::kind_of(path, "--spectrum")?;
+        crate::pictures::kind_of(path, "--spectrum")?;
         let freq = args.freq.unwrap_or(DEFAULT_FREQ);
         if freq == 0 || freq > nyquist_film::periodogram::MAX_FREQ {
             bail!(
@@ -317,9 +317,9 @@ fn check_args(args: &AnalyzeArgs) -> Result<()> {
         }
         // The (2F+1)² power sums in f64 and the picture drawn from them (4 bytes a cell).
         let side = 2 * u64::from(freq) + 1;
-        crate::memory::check(
+        nyquist_lab::memory::check(
             &format!("--spectrum with --freq {freq}"),
-            crate::memory::bytes(side * side, 8 + 4),
+            nyquist_lab::memory::bytes(side * side, 8 + 4),
         )?;
     }
     Ok(())
@@ -758,7 +758,7 @@ fn spectrum(
             s.max_freq, s.realisations
         ),
     };
-    crate::plot::save(&figure, path, "--spectrum")?;
+    crate::pictures::save(&figure, path, "--spectrum")?;
     Ok(SpectrumInfo {
         path: path.to_path_buf(),
         max_freq: s.max_freq,
@@ -877,7 +877,7 @@ struct SpectrumPlot<'a> {
 }
 
 #[cfg(not(target_family = "wasm"))]
-impl crate::plot::Figure for SpectrumPlot<'_> {
+impl nyquist_lab::plot::Figure for SpectrumPlot<'_> {
     fn size(&self) -> (u32, u32) {
         (SPECTRUM_WIDTH, SPECTRUM_HEIGHT)
     }
@@ -885,11 +885,11 @@ impl crate::plot::Figure for SpectrumPlot<'_> {
     fn draw<DB: plotters::prelude::DrawingBackend>(
         &self,
         root: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
-    ) -> Result<Vec<crate::plot::Raster>>
+    ) -> Result<Vec<nyquist_lab::plot::Raster>>
     where
         DB::ErrorType: 'static,
     {
-        use crate::plot::{Axes, GUIDE, INK, Raster, color, font, panel, title};
+        use nyquist_lab::plot::{Axes, GUIDE, INK, Raster, color, font, panel, title};
         use plotters::prelude::*;
         use plotters::style::text_anchor::{HPos, Pos, VPos};
         let s = self.spectrum;
@@ -1164,7 +1164,7 @@ mod tests {
 
     #[test]
     fn spectrum_picture_has_the_documented_size_in_png_and_svg() {
-        use crate::plot::{Kind, render};
+        use nyquist_lab::plot::{Kind, render};
         let s = nyquist_film::periodogram::periodogram(&[&[[0.1, 0.2], [0.6, 0.7]]], 3).unwrap();
         let fig = SpectrumPlot {
             spectrum: &s,

@@ -1,20 +1,20 @@
 //! `nyquist compare`: render one scene with every combination of samplers, filters and sample
 //! counts, in parallel, and write one labelled contact sheet, a Markdown table and JSON.
 
-use crate::clock::Stopwatch;
 use crate::progress::Progress;
-use crate::raster::{Canvas, LINE, text_width};
 use crate::render::{
     Rendered, SamplerName, ScrambleName, build_sampler, check_output, default_threads, json_number,
     json_string, parse_filter, parse_size, psnr, reference, reference_kind, render, rmse,
     tile_count,
 };
-use crate::scene::Scene;
 use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, SCRAMBLE_NAMES, Sampler};
 use nyquist_film::CAN_START_THREADS;
+use nyquist_lab::clock::Stopwatch;
+use nyquist_lab::raster::{Canvas, LINE, text_width};
+use nyquist_lab::scene::Scene;
 use std::fmt::Write as _;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -84,7 +84,8 @@ pub struct CompareArgs {
     /// Filter specs, comma-separated (e.g. box,mitchell:b=0.5,c=0.25,gaussian:alpha=2).
     #[arg(long, value_name = "SPECS", default_value = "box,mitchell", value_parser = parse_filters)]
     pub filters: FilterList,
-    /// Samples per pixel, comma-separated (squares for uniform and stratified).
+    /// Samples per pixel, comma-separated (uniform and stratified take a √spp × √spp grid for a
+    /// square, else the squarest rectangle of spp cells).
     #[arg(long, value_delimiter = ',', default_value = "1,4,16",
           value_parser = clap::value_parser!(u32).range(1..=65536))]
     pub spp: Vec<u32>,
@@ -183,9 +184,9 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     let per_pixel = count as u64 * crate::render::IMAGE_PIXEL_BYTES
         + threads as u64 * crate::render::FILM_PIXEL_BYTES
         + (filters.len() as u64 + 1) * 8;
-    crate::memory::check(
+    nyquist_lab::memory::check(
         &format!("--size {}x{} × {count} renders", args.size[0], args.size[1]),
-        crate::memory::bytes(u64::from(args.size[0]) * u64::from(args.size[1]), per_pixel)
+        nyquist_lab::memory::bytes(u64::from(args.size[0]) * u64::from(args.size[1]), per_pixel)
             .saturating_add(crate::render::render_bytes(args.scene, args.size, true)),
     )?;
     // Every sampler is built (and every combination checked) before anything renders.
@@ -304,7 +305,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         }
     }
     if let Some(p) = &output {
-        sheet.write_png(p, "--output")?;
+        crate::pictures::write_bytes(p, "--output", &sheet.png()?)?;
     }
 
     let samples: u64 = results.iter().map(|r| r.stats.samples).sum();

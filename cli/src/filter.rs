@@ -51,7 +51,7 @@ fn parse_spec(s: &str) -> std::result::Result<FilterKind, String> {
 /// Runs the subcommand: rows on stdout, `radius` and `integral` lines on stderr.
 pub fn run(args: &FilterArgs) -> Result<()> {
     if let Some(path) = &args.plot {
-        crate::plot::kind_of(path, "--plot")?;
+        crate::pictures::kind_of(path, "--plot")?;
     }
     let f = &args.filter;
     let [rx, ry] = f.radius();
@@ -69,9 +69,9 @@ pub fn run(args: &FilterArgs) -> Result<()> {
         rows
     } else {
         let n = args.grid;
-        crate::memory::check(
+        nyquist_lab::memory::check(
             &format!("--grid {n}"),
-            crate::memory::bytes(u64::from(n) * u64::from(n), 12),
+            nyquist_lab::memory::bytes(u64::from(n) * u64::from(n), 12),
         )?;
         let at = |k: u32, r: f32| {
             if n == 1 {
@@ -90,7 +90,7 @@ pub fn run(args: &FilterArgs) -> Result<()> {
         rows
     };
     if let Some(path) = &args.plot {
-        crate::plot::save(&Plot { filter: f }, path, "--plot")?;
+        crate::pictures::save(&Plot { filter: f }, path, "--plot")?;
     }
     to_stdout_or_file(None, |w| write_rows(w, &rows, args.format))?;
     eprintln!("radius {rx} {ry}");
@@ -169,7 +169,7 @@ struct Plot<'a> {
 }
 
 #[cfg(not(target_family = "wasm"))]
-impl crate::plot::Figure for Plot<'_> {
+impl nyquist_lab::plot::Figure for Plot<'_> {
     fn size(&self) -> (u32, u32) {
         (3 * MARGIN + 2 * PANEL.0, 2 * MARGIN + HEADER + PANEL.1)
     }
@@ -177,11 +177,11 @@ impl crate::plot::Figure for Plot<'_> {
     fn draw<DB: plotters::prelude::DrawingBackend>(
         &self,
         root: &plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
-    ) -> Result<Vec<crate::plot::Raster>>
+    ) -> Result<Vec<nyquist_lab::plot::Raster>>
     where
         DB::ErrorType: 'static,
     {
-        use crate::plot::{Axes, GUIDE, INK, color, font, panel, title};
+        use nyquist_lab::plot::{Axes, GUIDE, INK, color, font, panel, title};
         use plotters::prelude::*;
         use plotters::style::text_anchor::{HPos, Pos, VPos};
         let f: &dyn Filter = self.filter.as_dyn();

@@ -29,7 +29,7 @@ struct Cli {
     /// (films, references, images, points, spectra) passes it is refused before it allocates
     /// [default: half of the physical memory, or of the address-space limit (`ulimit -v`) when
     /// that is lower].
-    #[arg(long, global = true, value_name = "SIZE", value_parser = nyquist_cli::memory::parse_size)]
+    #[arg(long, global = true, value_name = "SIZE", value_parser = nyquist_lab::memory::parse_size)]
     max_memory: Option<u64>,
 }
 
@@ -84,7 +84,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };
-    nyquist_cli::memory::set_limit(cli.max_memory);
+    nyquist_lab::memory::set_limit(cli.max_memory);
     if let Err(e) = nyquist_cli::output::remove_temporaries_on_signals() {
         eprintln!("nyquist: {e:#}");
         return ExitCode::from(2);

@@ -101,9 +101,9 @@ pub fn run(args: &MaskArgs) -> Result<()> {
         crate::output::note("--bits applies to PNG output only");
     }
     let n = (w * h) as usize;
-    crate::memory::check(
+    nyquist_lab::memory::check(
         &format!("--size {w}x{h} --channels {}", args.channels),
-        crate::memory::bytes(n as u64, 4 * u64::from(args.channels) + 24),
+        nyquist_lab::memory::bytes(n as u64, 4 * u64::from(args.channels) + 24),
     )?;
     let ranks = ranks(args.size, args.channels, args.seed)?;
     for path in &args.output {

@@ -202,10 +202,11 @@ pub fn run(args: &PointsArgs) -> Result<()> {
     };
     let title = format!("nyquist points --sampler {}", name(args.sampler));
     if let (Format::Png, Some(path)) = (args.format, &args.output) {
-        return crate::svg::plot_points(&points, dims, grid, &title).write_png(path, "--output");
+        let canvas = nyquist_lab::svg::plot_points(&points, dims, grid, &title);
+        return crate::pictures::write_bytes(path, "--output", &canvas.png()?);
     }
     crate::output::to_stdout_or_file(args.output.as_deref(), |w| match args.format {
-        Format::Svg => crate::svg::write_svg(w, &points, dims, grid, &title),
+        Format::Svg => nyquist_lab::svg::write_svg(w, &points, dims, grid, &title),
         f => write_points(w, &points, dims, f),
     })
 }
@@ -553,11 +554,11 @@ pub fn generate(args: &PointsArgs) -> Result<(Vec<f32>, usize)> {
             name(args.sampler)
         );
     }
-    crate::memory::check(
+    nyquist_lab::memory::check(
         &format!("--count {count} × --dims {dims}"),
-        crate::memory::bytes(values, 4),
+        nyquist_lab::memory::bytes(values, 4),
     )?;
-    let mut out = crate::memory::try_filled(values as usize, 0.0f32, "the points")?;
+    let mut out = nyquist_lab::memory::try_filled(values as usize, 0.0f32, "the points")?;
     let set_error = |e: nyquist::Error| anyhow::anyhow!("{}: {e}", name(args.sampler));
     match args.sampler {
         S::Random => {
@@ -782,7 +783,7 @@ pub fn write_points(w: &mut dyn Write, points: &[f32], dims: usize, format: Form
             }
             w.write_all(b"]\n")?;
         }
-        Format::Svg => crate::svg::write_svg(w, points, dims, None, "nyquist points")?,
+        Format::Svg => nyquist_lab::svg::write_svg(w, points, dims, None, "nyquist points")?,
         Format::Png => bail!("--format png writes a picture: give --output FILE.png"),
     }
     Ok(())

@@ -2,7 +2,7 @@
 
 mod common;
 
-use nyquist_cli::raster::text_width;
+use nyquist_lab::raster::text_width;
 
 use common::{
     assert_one_line_error, files, json_field, nyquist_cached, png_size, stdout, temp_dir,
@@ -43,7 +43,7 @@ fn compare_writes_one_sheet_of_the_expected_size_and_one_json_entry_per_cell() {
     let (w, h) = png_size(&out);
     let (label, line) = (
         text_width("mitchell:b=0.5,c=0.25 4spp"),
-        nyquist_cli::raster::LINE,
+        nyquist_lab::raster::LINE,
     );
     assert_eq!(
         (w, h),
@@ -135,8 +135,8 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
     let cases: Vec<(Vec<&str>, &str)> = vec![
         (vec!["--samplers", "uniform,nope"], "--samplers"),
         (
-            vec!["--samplers", "stratified", "--spp", "1,2"],
-            "--spp 2 is not a square",
+            vec!["--samplers", "best-candidate", "--spp", "1,5000"],
+            "best-candidate",
         ),
         (vec!["--spp", "0"], "--spp"),
         (vec!["--spp", "4,x"], "--spp"),

@@ -5,7 +5,7 @@ mod common;
 use common::{
     SMALL_STUDY, assert_one_line_error, files, json_field, nyquist, png_size, stdout, temp_dir,
 };
-use nyquist_cli::converge::plot_size;
+use nyquist_lab::study::figure::plot_size;
 
 #[test]
 fn table_has_a_row_per_sampler_and_a_column_per_integrand() {

@@ -71,7 +71,7 @@ fn converge_svg_has_a_curve_per_sampler_and_integrand_and_the_command_as_title()
     let dir = temp_dir("plots-converge-svg");
     let svg = String::from_utf8(plot(&STUDY, "--plot", &dir.join("c.svg"))).unwrap();
     let (w, h) = {
-        let [w, h] = nyquist_cli::converge::plot_size(2);
+        let [w, h] = nyquist_lab::study::figure::plot_size(2);
         (w, h)
     };
     assert!(svg.starts_with(&format!(

@@ -262,10 +262,9 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
         (vec!["--sampler", "nope"], "--sampler"),
         (vec!["--scene", "teapot"], "--scene"),
         (
-            vec!["--sampler", "stratified", "--spp", "8"],
-            "--spp 8 is not a square",
+            vec!["--sampler", "best-candidate", "--spp", "5000"],
+            "--spp 5000: best-candidate takes at most 4096",
         ),
-        (vec!["--sampler", "uniform", "--spp", "2"], "--spp"),
         (vec!["--spp", "0"], "--spp"),
         (vec!["--spp", "1.5"], "--spp"),
         (vec!["--filter", "mitchel"], "--filter"),

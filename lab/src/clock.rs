@@ -3,7 +3,7 @@
 //! so in the browser every duration reads 0 and the page times the work itself.
 //!
 //! ```
-//! let watch = nyquist_cli::clock::Stopwatch::start();
+//! let watch = nyquist_lab::clock::Stopwatch::start();
 //! assert!(watch.seconds() >= 0.0);
 //! ```
 

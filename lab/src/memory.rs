@@ -6,7 +6,7 @@
 //! with `try_reserve`, so an allocator that still says no is a one-line error, not an abort.
 //!
 //! ```
-//! use nyquist_cli::memory::{parse_size, human};
+//! use nyquist_lab::memory::{parse_size, human};
 //! assert_eq!(parse_size("1.5G"), Ok(1_500_000_000));
 //! assert_eq!(parse_size("512MiB"), Ok(512 << 20));
 //! assert_eq!(human(2_147_483_648), "2.1 GB");

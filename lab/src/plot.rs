@@ -7,8 +7,7 @@
 //!
 //! A figure implements [`Figure`]; [`save`] draws it on the backend the path asks for.
 
-use crate::output::write_atomic;
-use anyhow::{Context, Result, anyhow};
+use anyhow::{Context, Result};
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -100,16 +99,20 @@ pub enum Kind {
     Svg,
 }
 
-/// The format `path` asks for by its extension (`.png` or `.svg`); any other extension, a
-/// missing folder or a folder in the way is one line naming `flag` (see
-/// [`check_output`](crate::output::check_output)).
-pub fn kind_of(path: &Path, flag: &str) -> Result<Kind> {
-    crate::output::check_output(path, flag, &["png", "svg"])?;
+/// The format `path` names by its extension: `.svg` (any case) is SVG, anything else PNG
+/// (front ends check the extension and the folder before drawing).
+///
+/// ```
+/// use nyquist_lab::plot::{Kind, kind};
+/// assert_eq!(kind(std::path::Path::new("a.SVG")), Kind::Svg);
+/// assert_eq!(kind(std::path::Path::new("a.png")), Kind::Png);
+/// ```
+pub fn kind(path: &Path) -> Kind {
     let svg = path
         .extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
-    Ok(if svg { Kind::Svg } else { Kind::Png })
+    if svg { Kind::Svg } else { Kind::Png }
 }
 
 /// An RGB picture placed on a figure after drawing: in a PNG its pixels are copied in, in an
@@ -141,22 +144,6 @@ pub trait Figure {
     fn draw<DB: DrawingBackend>(&self, root: &DrawingArea<DB, Shift>) -> Result<Vec<Raster>>
     where
         DB::ErrorType: 'static;
-}
-
-/// Draws `fig` and writes it to `path` atomically, as PNG or SVG by the extension; `flag` names
-/// the option in error messages.
-///
-/// # Errors
-/// An extension other than `.png` or `.svg`, a drawing error, or a failed write; the file is
-/// then left as it was.
-pub fn save(fig: &impl Figure, path: &Path, flag: &str) -> Result<()> {
-    let kind = kind_of(path, flag)?;
-    let bytes = render(fig, kind)?;
-    write_atomic(path, |w| {
-        w.write_all(&bytes)?;
-        Ok(())
-    })
-    .map_err(|e| anyhow!("{}", format!("{e:#}").replace("--output", flag)))
 }
 
 /// The bytes of `fig` as a PNG or an SVG file.

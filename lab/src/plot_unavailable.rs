@@ -17,21 +17,19 @@ pub enum Kind {
 /// What can be drawn (nothing, here).
 pub trait Figure {}
 
+/// The format `path` names by its extension, as in native builds.
+pub fn kind(path: &Path) -> Kind {
+    let svg = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("svg"));
+    if svg { Kind::Svg } else { Kind::Png }
+}
+
 /// Refuses: no picture is drawn in a WebAssembly build.
 ///
 /// # Errors
 /// Always.
-pub fn kind_of(path: &Path, flag: &str) -> Result<Kind> {
-    bail!(
-        "{flag} {}: pictures are drawn by the native nyquist command only",
-        path.display()
-    )
-}
-
-/// Refuses, as [`kind_of`].
-///
-/// # Errors
-/// Always.
-pub fn save<F>(_figure: &F, path: &Path, flag: &str) -> Result<()> {
-    kind_of(path, flag).map(|_| ())
+pub fn render<F>(_figure: &F, _kind: Kind) -> Result<Vec<u8>> {
+    bail!("pictures are drawn by the native nyquist command only")
 }

@@ -1,9 +1,8 @@
 //! A small 8-bit RGB canvas for the CLI's pictures (contact sheets, point plots): rectangles,
 //! discs, image crops and anti-aliased text in the embedded DejaVu Sans (through
-//! [`crate::plot`]), written as PNG atomically.
+//! [`crate::plot`]), encoded as PNG.
 
 use anyhow::{Context, Result};
-use std::path::Path;
 
 /// Text size in pixels (plotters' size: the em is `TEXT_PX / 1.24`).
 pub const TEXT_PX: f64 = 14.0;
@@ -128,21 +127,21 @@ impl Canvas {
         );
     }
 
-    /// Writes the canvas as an 8-bit RGB PNG to `path`, atomically (`flag` names the option in
-    /// error messages).
-    pub fn write_png(&self, path: &Path, flag: &str) -> Result<()> {
-        crate::output::write_atomic(path, |w| {
-            let mut enc = png::Encoder::new(w, self.width, self.height);
-            enc.set_color(png::ColorType::Rgb);
-            enc.set_depth(png::BitDepth::Eight);
-            enc.set_compression(png::Compression::High);
-            enc.set_filter(png::Filter::Paeth);
-            let mut writer = enc.write_header().context("PNG header")?;
-            writer.write_image_data(&self.rgb).context("PNG data")?;
-            writer.finish().context("PNG end")?;
-            Ok(())
-        })
-        .map_err(|e| anyhow::anyhow!("{}", format!("{e:#}").replace("--output", flag)))
+    /// The canvas as an 8-bit RGB PNG file's bytes.
+    ///
+    /// # Errors
+    /// An encoding error.
+    pub fn png(&self) -> Result<Vec<u8>> {
+        let mut out = Vec::new();
+        let mut enc = png::Encoder::new(&mut out, self.width, self.height);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        enc.set_compression(png::Compression::High);
+        enc.set_filter(png::Filter::Paeth);
+        let mut writer = enc.write_header().context("PNG header")?;
+        writer.write_image_data(&self.rgb).context("PNG data")?;
+        writer.finish().context("PNG end")?;
+        Ok(out)
     }
 }
 

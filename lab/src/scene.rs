@@ -16,10 +16,9 @@
 //!   bottom): the time sample turns motion into blur, a fixed time freezes it (the
 //!   wagon-wheel effect).
 
-use clap::ValueEnum;
-
 /// The built-in scenes of `render` and `compare`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
 pub enum Scene {
     /// ½ + ½·cos(π r²/W): rings whose frequency reaches Nyquist at the edge midpoints.
     Zoneplate,
@@ -30,7 +29,7 @@ pub enum Scene {
     /// A hard edge tilted 8° from vertical.
     Edge,
     /// Stripes moving during the shutter (uses the time sample): motion blur vs strobing.
-    #[value(alias = "moving-stripes")]
+    #[cfg_attr(feature = "clap", value(alias = "moving-stripes"))]
     Stripes,
 }
 

@@ -8,10 +8,11 @@ use anyhow::{Result, anyhow, bail};
 use nyquist::filter::{Axis, Filter, FilterKind, FilterSampler, FilterTable, Interpolation};
 use nyquist::sampler::Sampler;
 use nyquist_cli::analyze::{self, AnalyzeArgs, Measure, StarMethod};
-use nyquist_cli::converge::{self, ConvergeArgs, Integrand};
+use nyquist_cli::converge::{self, ConvergeArgs};
 use nyquist_cli::points::{self, SamplerName as PointSet};
 use nyquist_cli::render::{self, SamplerName};
-use nyquist_cli::scene::Scene;
+use nyquist_lab::scene::Scene;
+use nyquist_lab::study::unit_square::SquareIntegrand as Integrand;
 
 /// Points in the Points view (every measure is at most quadratic in the count).
 const MAX_POINTS: u64 = 16384;

@@ -124,7 +124,10 @@ pub use halton::{HaltonSampler, HaltonScramble};
 pub use hammersley::HammersleySampler;
 pub use lattice::LatticeSampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
-pub use named::{NAMES, NamedSampler, NamedSamplerError, SCRAMBLE_NAMES};
+pub use named::{
+    NAMES, NamedSampler, NamedSamplerError, OTHER_NAMES, SCRAMBLE_NAMES, canonical_name, spp_limit,
+    strata,
+};
 pub use owen_sobol::OwenSobolSampler;
 pub(crate) use pmj02::Keys as Pmj02Keys;
 pub use pmj02::Pmj02Sampler;

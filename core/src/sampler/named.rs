@@ -47,6 +47,75 @@ pub const NAMES: [&str; 16] = [
 /// ```
 pub const SCRAMBLE_NAMES: [&str; 3] = ["halton", "sobol", "zsobol"];
 
+/// Names [`NamedSampler::new`] also accepts: `halton-plain` and `sobol-plain` are `halton` and
+/// `sobol` with seed 0 whatever seed is given (the unscrambled sequences, one deterministic set;
+/// their [`NamedSampler::name`] is `halton` and `sobol`), and `sobol-owen` is `owen-sobol`.
+///
+/// ```
+/// use nyquist::sampler::{NamedSampler, Sampler, OTHER_NAMES};
+/// assert_eq!(OTHER_NAMES, ["halton-plain", "sobol-plain", "sobol-owen"]);
+/// let mut plain = NamedSampler::new("sobol-plain", [4, 4], 4, 99).unwrap();
+/// let mut zero = NamedSampler::new("sobol", [4, 4], 4, 0).unwrap();
+/// plain.start_pixel_sample([1, 2], 3, 0);
+/// zero.start_pixel_sample([1, 2], 3, 0);
+/// assert_eq!(plain.get_2d(), zero.get_2d());
+/// ```
+pub const OTHER_NAMES: [&str; 3] = ["halton-plain", "sobol-plain", "sobol-owen"];
+
+/// The name [`NamedSampler::new`] builds for `name`: one of [`NAMES`] or [`OTHER_NAMES`],
+/// compared ignoring ASCII case, as its canonical spelling (`None` for an unknown name).
+///
+/// ```
+/// use nyquist::sampler::canonical_name;
+/// assert_eq!(canonical_name("ZSobol"), Some("zsobol"));
+/// assert_eq!(canonical_name("Sobol-Owen"), Some("sobol-owen"));
+/// assert_eq!(canonical_name("sobol "), None);
+/// ```
+pub fn canonical_name(name: &str) -> Option<&'static str> {
+    NAMES
+        .iter()
+        .chain(&OTHER_NAMES)
+        .find(|n| n.eq_ignore_ascii_case(name))
+        .copied()
+}
+
+/// The most samples per pixel sampler `name` takes (`None`: no limit of its own below
+/// `u32::MAX`; the image-wide samplers `sobol` and `zsobol` also bound spp × pixels, which
+/// depends on the size): `best-candidate`'s baked table has 4096 rows, `pmj02`'s
+/// construction 65536 points. Names as [`canonical_name`] takes them.
+///
+/// ```
+/// use nyquist::sampler::spp_limit;
+/// assert_eq!(spp_limit("best-candidate"), Some(4096));
+/// assert_eq!(spp_limit("PMJ02"), Some(65536));
+/// assert_eq!(spp_limit("random"), None);
+/// ```
+pub fn spp_limit(name: &str) -> Option<u32> {
+    match canonical_name(name)? {
+        "best-candidate" => Some(super::best_candidate::TABLE_SIZE),
+        "pmj02" => u32::try_from(crate::sequence::PMJ02_MAX_POINTS).ok(),
+        _ => None,
+    }
+}
+
+/// The strata grid `[nx, ny]` of `uniform` and `stratified` for `spp` samples: `ny` the largest
+/// divisor of `spp` with `ny² ≤ spp`, `nx = spp / ny` (√spp × √spp for a square; for
+/// `spp = 2^m`, `2^⌈m/2⌉ × 2^⌊m/2⌋`), so that every spp has a grid.
+///
+/// ```
+/// use nyquist::sampler::strata;
+/// assert_eq!(strata(16), [4, 4]);
+/// assert_eq!(strata(32), [8, 4]);
+/// assert_eq!(strata(7), [7, 1]);
+/// ```
+pub fn strata(spp: u32) -> [u32; 2] {
+    let ny = (1..=spp.max(1).isqrt())
+        .rev()
+        .find(|&d| spp.is_multiple_of(d))
+        .unwrap_or(1);
+    [spp.max(1) / ny, ny]
+}
+
 /// Threshold of the `adaptive` sampler (see [`AdaptiveSampler::new`]).
 const ADAPTIVE_THRESHOLD: f32 = 0.1;
 
@@ -61,10 +130,12 @@ const ADAPTIVE_THRESHOLD: f32 = 0.1;
 pub enum NamedSamplerError {
     /// The name is not one of [`NAMES`].
     UnknownName,
-    /// `uniform` and `stratified` take a √spp × √spp grid, and `spp` is not a square.
-    NotSquare {
+    /// `spp` is above the sampler's own limit ([`spp_limit`]).
+    SppAboveLimit {
         /// The samples per pixel asked for.
         spp: u32,
+        /// The most the sampler takes.
+        max: u32,
     },
     /// Width, height or spp was zero ([`crate::Error::ZeroSize`]), or the sampler rejected
     /// the parameters.
@@ -79,12 +150,24 @@ impl fmt::Display for NamedSamplerError {
     ///
     /// ```
     /// use nyquist::sampler::NamedSamplerError;
-    /// assert_eq!(NamedSamplerError::NotSquare { spp: 8 }.to_string(), "spp 8 is not a square");
+    /// let e = NamedSamplerError::SppAboveLimit { spp: 5000, max: 4096 };
+    /// assert_eq!(e.to_string(), "spp 5000 is above this sampler's limit of 4096");
     /// ```
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {
-            NamedSamplerError::UnknownName => f.write_str("unknown sampler name"),
-            NamedSamplerError::NotSquare { spp } => write!(f, "spp {spp} is not a square"),
+            NamedSamplerError::UnknownName => {
+                f.write_str("unknown sampler name (known: ")?;
+                for (i, n) in NAMES.iter().chain(&OTHER_NAMES).enumerate() {
+                    if i > 0 {
+                        f.write_str(", ")?;
+                    }
+                    f.write_str(n)?;
+                }
+                f.write_str(")")
+            }
+            NamedSamplerError::SppAboveLimit { spp, max } => {
+                write!(f, "spp {spp} is above this sampler's limit of {max}")
+            }
             NamedSamplerError::Sampler(e) => e.fmt(f),
             NamedSamplerError::NoScramble => {
                 f.write_str("no scramble choice (halton, sobol and zsobol have one)")
@@ -186,8 +269,8 @@ impl NamedSampler {
     /// (`[width, height]` in pixels) with `seed`:
     ///
     /// - `random`: [`RandomSampler`];
-    /// - `uniform`, `stratified`: a √spp × √spp [`StratifiedSampler`], cell centres
-    ///   ([`Jitter::Centered`]) or jittered; `spp` must be a square;
+    /// - `uniform`, `stratified`: a [`StratifiedSampler`] on the [`strata`] grid (√spp × √spp
+    ///   for a square spp), cell centres ([`Jitter::Centered`]) or jittered;
     /// - `halton`: [`HaltonSampler`] over the image, digit-permuted when `seed != 0`;
     /// - `hammersley`: [`HammersleySampler`], scrambled when `seed != 0`;
     /// - `zero-two`: [`ZeroTwoSampler`] (spp rounded up to a power of two);
@@ -205,21 +288,23 @@ impl NamedSampler {
     ///   Fibonacci number), [`LatticeSampler::r2`] and [`LatticeSampler::korobov`] (exactly spp
     ///   points, its multiplier searched here: 10 ms at 2¹⁶ spp).
     ///
-    /// The size matters to `halton`, `hammersley`, `sobol` and `zsobol` only, but must be non-zero for
-    /// all. Allocates: no.
+    /// Names are compared ignoring ASCII case, and [`OTHER_NAMES`] are accepted too
+    /// ([`canonical_name`]). The size matters to `halton`, `hammersley`, `sobol` and `zsobol`
+    /// only, but must be non-zero for all. Allocates: no.
     ///
     /// # Errors
     /// Checked in this order: [`NamedSamplerError::Sampler`]`(`[`ZeroSize`](crate::Error::ZeroSize)`)`
     /// if the width, height or `spp` is 0; [`NamedSamplerError::UnknownName`];
-    /// [`NamedSamplerError::NotSquare`] for `uniform`/`stratified`; then whatever the sampler's
+    /// [`NamedSamplerError::SppAboveLimit`] above [`spp_limit`]; then whatever the sampler's
     /// constructor rejects, as [`NamedSamplerError::Sampler`].
     ///
     /// ```
     /// use nyquist::{Error, sampler::{NamedSampler, NamedSamplerError, Sampler}};
     /// assert_eq!(NamedSampler::new("stratified", [4, 4], 9, 0).unwrap().samples_per_pixel(), 9);
+    /// assert_eq!(NamedSampler::new("Uniform", [4, 4], 8, 0).unwrap().samples_per_pixel(), 8);
     /// assert_eq!(
-    ///     NamedSampler::new("uniform", [4, 4], 8, 0).unwrap_err(),
-    ///     NamedSamplerError::NotSquare { spp: 8 }
+    ///     NamedSampler::new("pmj02", [4, 4], 1 << 17, 0).unwrap_err(),
+    ///     NamedSamplerError::SppAboveLimit { spp: 1 << 17, max: 1 << 16 }
     /// );
     /// assert_eq!(
     ///     NamedSampler::new("nope", [0, 4], 8, 0).unwrap_err(),
@@ -237,28 +322,18 @@ impl NamedSampler {
                 return Err(crate::Error::ZeroSize { what }.into());
             }
         }
-        let side = || {
-            let side = spp.isqrt();
-            if side * side == spp {
-                Ok(side)
-            } else {
-                Err(NamedSamplerError::NotSquare { spp })
-            }
-        };
+        let name = canonical_name(name).ok_or(NamedSamplerError::UnknownName)?;
+        if let Some(max) = spp_limit(name)
+            && spp > max
+        {
+            return Err(NamedSamplerError::SppAboveLimit { spp, max });
+        }
+        let [nx, ny] = strata(spp);
         Ok(match name {
             "random" => NamedSampler::Random(RandomSampler::new(spp, seed)?),
-            "uniform" => {
-                let side = side()?;
-                NamedSampler::Stratified(StratifiedSampler::uniform(side, side, seed)?)
-            }
+            "uniform" => NamedSampler::Stratified(StratifiedSampler::uniform(nx, ny, seed)?),
             "stratified" => {
-                let side = side()?;
-                NamedSampler::Stratified(StratifiedSampler::new(
-                    side,
-                    side,
-                    Jitter::Jittered,
-                    seed,
-                )?)
+                NamedSampler::Stratified(StratifiedSampler::new(nx, ny, Jitter::Jittered, seed)?)
             }
             "halton" => {
                 let scramble = if seed == 0 {
@@ -279,7 +354,11 @@ impl NamedSampler {
                 let min = (inner.samples_per_pixel() / 4).max(1);
                 NamedSampler::Adaptive(AdaptiveSampler::new(inner, min, ADAPTIVE_THRESHOLD)?)
             }
-            "owen-sobol" => NamedSampler::OwenSobol(OwenSobolSampler::new(spp, seed)?),
+            "halton-plain" => {
+                NamedSampler::Halton(HaltonSampler::new(size, spp, HaltonScramble::None, 0)?)
+            }
+            "sobol-plain" => NamedSampler::Sobol(SobolSampler::new(size, spp, 0)?),
+            "owen-sobol" | "sobol-owen" => NamedSampler::OwenSobol(OwenSobolSampler::new(spp, seed)?),
             "zsobol" => {
                 NamedSampler::ZSobol(ZSobolSampler::new(size, spp, Scramble::FastOwen, seed)?)
             }
@@ -323,8 +402,9 @@ impl NamedSampler {
         seed: u64,
         scramble: Scramble,
     ) -> Result<NamedSampler, NamedSamplerError> {
+        let name = canonical_name(name).ok_or(NamedSamplerError::UnknownName)?;
         if !SCRAMBLE_NAMES.contains(&name) {
-            return Err(if NAMES.contains(&name) {
+            return Err(if NAMES.contains(&name) || OTHER_NAMES.contains(&name) {
                 NamedSamplerError::NoScramble
             } else {
                 NamedSamplerError::UnknownName
@@ -567,16 +647,61 @@ mod tests {
             new("uniform", [1, 1], 0),
             Error::ZeroSize { what: "spp" }.into()
         );
-        assert_eq!(new("Random", [1, 1], 4), NamedSamplerError::UnknownName);
         assert_eq!(new("", [1, 1], 4), NamedSamplerError::UnknownName);
+        assert_eq!(new("random ", [1, 1], 4), NamedSamplerError::UnknownName);
         assert_eq!(
-            new("stratified", [1, 1], 2),
-            NamedSamplerError::NotSquare { spp: 2 }
+            new("best-candidate", [1, 1], 4097),
+            NamedSamplerError::SppAboveLimit { spp: 4097, max: 4096 }
+        );
+        assert!(NamedSampler::new("best-candidate", [1, 1], 4096, 0).is_ok());
+        assert_eq!(
+            new("PMJ02", [0, 1], 1 << 17),
+            Error::ZeroSize { what: "width" }.into()
         );
         assert_eq!(
-            new("uniform", [1, 1], u32::MAX),
-            NamedSamplerError::NotSquare { spp: u32::MAX }
+            new("pmj02", [1, 1], (1 << 16) + 1),
+            NamedSamplerError::SppAboveLimit { spp: (1 << 16) + 1, max: 1 << 16 }
         );
+        assert!(NamedSampler::new("pmj02", [1, 1], 1 << 16, 0).is_ok());
+    }
+
+    /// Other spellings build the same sampler: any ASCII case, the `-plain` names (seed 0
+    /// whatever the seed), `sobol-owen`; and `uniform`/`stratified` take any spp on the
+    /// [`strata`] grid, every stratum hit once.
+    #[test]
+    fn other_names_and_grids() {
+        let values = |name: &str, seed: u64| {
+            let mut s = NamedSampler::new(name, [8, 8], 16, seed).unwrap();
+            (0..16u32)
+                .flat_map(|i| record(&mut s, [3, 1], i))
+                .map(f32::to_bits)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(values("ZSOBOL", 5), values("zsobol", 5));
+        assert_eq!(values("Owen-Sobol", 5), values("owen-sobol", 5));
+        assert_eq!(values("sobol-owen", 5), values("owen-sobol", 5));
+        assert_eq!(values("halton-plain", 5), values("halton", 0));
+        assert_eq!(values("sobol-plain", 5), values("sobol", 0));
+        assert_ne!(values("sobol", 5), values("sobol", 0));
+        assert_eq!(NamedSampler::new("SOBOL-plain", [8, 8], 16, 5).unwrap().name(), "sobol");
+        assert_eq!(NamedSampler::new("sobol-owen", [8, 8], 16, 5).unwrap().name(), "owen-sobol");
+        for spp in [2u32, 6, 7, 8, 12, 32] {
+            let [nx, ny] = strata(spp);
+            assert_eq!(nx * ny, spp);
+            assert!(ny <= nx && (ny..=nx).filter(|d| spp % d == 0 && *d * *d <= spp).count() <= 1);
+            for name in ["uniform", "stratified"] {
+                let mut s = NamedSampler::new(name, [1, 1], spp, 3).unwrap();
+                assert_eq!(s.samples_per_pixel(), spp);
+                let mut hit = std::vec![0u32; spp as usize];
+                for i in 0..spp {
+                    s.start_pixel_sample([0, 0], i, 0);
+                    let [x, y] = s.get_pixel_2d();
+                    let cell = (y * ny as f32) as u32 * nx + (x * nx as f32) as u32;
+                    hit[cell as usize] += 1;
+                }
+                assert!(hit.iter().all(|&h| h == 1), "{name} {spp}: {hit:?}");
+            }
+        }
     }
 
     proptest::proptest! {
@@ -606,9 +731,7 @@ mod tests {
                     } else if which == NAMES.len() {
                         e == NamedSamplerError::UnknownName
                     } else {
-                        (which == 1 || which == 2)
-                            && spp.isqrt() * spp.isqrt() != spp
-                            && e == NamedSamplerError::NotSquare { spp }
+                        false
                     };
                     proptest::prop_assert!(expected, "{} {:?}", name, e);
                 }

@@ -5,7 +5,8 @@
 use clap::{Args, FromArgMatches, ValueEnum};
 use nyquist::filter::{Filter, FilterKind, MAX_RADIUS};
 use nyquist_cli::render::{MAX_PIXELS, MAX_SIDE, parse_filter, parse_size};
-use nyquist_cli::{analyze, compare, points, render, scene};
+use nyquist_cli::{analyze, compare, points, render};
+use nyquist_lab::scene;
 
 use crate::Bytes;
 

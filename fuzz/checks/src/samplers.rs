@@ -32,8 +32,8 @@ struct Args {
 /// `camera_sample` lands inside the pixel; a `PixelRangeSampler` yields exactly
 /// `total_samples()` samples, all in range, and its bands together yield the same samples;
 /// `AdaptiveSampler` answers `pixel_samples` within its `spp_range` whatever is reported;
-/// `NamedSampler` builds exactly the names in `NAMES` (a non-square spp is `NotSquare` for
-/// the two grid samplers) and its samplers pass the same checks.
+/// `NamedSampler` builds exactly the names in `NAMES` (an spp above `spp_limit` is
+/// `SppAboveLimit`) and its samplers pass the same checks.
 pub fn samplers(data: &[u8]) {
     let mut b = Bytes::new(data);
     let kind = b.u8() % 13;
@@ -188,12 +188,13 @@ pub fn samplers(data: &[u8]) {
 /// names `UnknownName`.
 fn named_scrambled(name: &str, size: [u32; 2], spp: u32, seed: u64, scramble: Scramble, a: &Args) {
     let r = NamedSampler::with_scramble(name, size, spp, seed, scramble);
-    match name {
-        _ if SCRAMBLE_NAMES.contains(&name) => {
+    let canonical = nyquist::sampler::canonical_name(name);
+    match canonical.unwrap_or_default() {
+        c if SCRAMBLE_NAMES.contains(&c) => {
             let plain = NamedSampler::new(name, size, spp, seed);
             assert_eq!(r.is_ok(), plain.is_ok(), "{name}: with_scramble vs new");
             if let Ok(s) = &r {
-                assert_eq!(s.name(), name);
+                assert_eq!(s.name(), c);
             }
             let r = r.map_err(|e| match e {
                 NamedSamplerError::Sampler(e) => e,
@@ -201,18 +202,25 @@ fn named_scrambled(name: &str, size: [u32; 2], spp: u32, seed: u64, scramble: Sc
             });
             run("NamedSampler::with_scramble", spp, r, a);
         }
-        _ if NAMES.contains(&name) => assert_eq!(r.err(), Some(NamedSamplerError::NoScramble)),
+        _ if canonical.is_some() => assert_eq!(r.err(), Some(NamedSamplerError::NoScramble)),
         _ => assert_eq!(r.err(), Some(NamedSamplerError::UnknownName)),
     }
 }
 
 /// `NamedSampler::new` with any name: a sampler named as asked, or the documented error.
 fn named(name: &str, size: [u32; 2], spp: u32, seed: u64, a: &Args) {
-    let known = NAMES.contains(&name);
+    let canonical = nyquist::sampler::canonical_name(name);
+    let known = canonical.is_some();
     match NamedSampler::new(name, size, spp, seed) {
         Ok(mut s) => {
             assert!(known, "NamedSampler built unknown name {name:?}");
-            assert_eq!(s.name(), name);
+            let reported = match canonical {
+                Some("halton-plain") => "halton",
+                Some("sobol-plain") => "sobol",
+                Some("sobol-owen") => "owen-sobol",
+                c => c.unwrap_or_default(),
+            };
+            assert_eq!(s.name(), reported);
             if name == "adaptive" {
                 // Fewer samples than the maximum where the pixel converged: the adaptive checks.
                 check_sampler_adaptive(&mut s, a);
@@ -225,17 +233,10 @@ fn named(name: &str, size: [u32; 2], spp: u32, seed: u64, a: &Args) {
         Err(NamedSamplerError::UnknownName) => {
             assert!(!known, "NamedSampler rejected {name:?}");
         }
-        Err(NamedSamplerError::NotSquare { spp: got }) => {
-            assert!(
-                matches!(name, "uniform" | "stratified"),
-                "{name}: NotSquare"
-            );
+        Err(NamedSamplerError::SppAboveLimit { spp: got, max }) => {
             assert_eq!(got, spp);
-            assert_ne!(
-                u64::from(spp.isqrt()).pow(2),
-                u64::from(spp),
-                "{name}: {spp} is square"
-            );
+            assert_eq!(nyquist::sampler::spp_limit(name), Some(max), "{name}");
+            assert!(spp > max, "{name}: {spp} ≤ {max}");
         }
         Err(NamedSamplerError::Sampler(e)) => {
             assert!(

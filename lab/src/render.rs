@@ -1,0 +1,409 @@
+//! Rendering the test scenes: the sample loop over a film, the references an image is
+//! measured against (exact, or a cached stratified render), and the image error.
+//!
+//! ```
+//! use nyquist::{filter::FilterKind, sampler::NamedSampler};
+//! use nyquist_lab::{render, scene::Scene};
+//! let sampler = NamedSampler::new("stratified", [16, 16], 16, 1).unwrap();
+//! let filter = FilterKind::parse("box").unwrap();
+//! let r = render::render(Scene::Zoneplate, [16, 16], &sampler, &filter, 1, &mut || {}).unwrap();
+//! let exact = render::reference_with_progress(Scene::Zoneplate, [16, 16], None, 1, &mut || {})
+//!     .unwrap()
+//!     .unwrap();
+//! assert!(render::rmse(&r.image, &exact) < 0.1);
+//! ```
+
+use crate::clock::Stopwatch;
+use crate::scene::Scene;
+use anyhow::{Result, anyhow};
+use nyquist::filter::FilterKind;
+use nyquist::sampler::{NamedSampler, Sampler, film_coordinate};
+use nyquist_film::{Film, FilmConfig, FilmStats, Image, render_tiles};
+use std::path::{Path, PathBuf};
+
+/// No file system in the browser (`wasm32-unknown-unknown`): there the references are not
+/// cached on disk (the explorer keeps them in memory).
+const NO_FILE_SYSTEM: bool = cfg!(all(target_arch = "wasm32", target_os = "unknown"));
+
+/// Tile side of the film: small enough to balance two threads on a 64 × 64 image.
+pub const TILE: u32 = 16;
+/// The largest image side `--size` accepts.
+pub const MAX_SIDE: u32 = 16384;
+/// The most pixels `--size` accepts (the film keeps 32 bytes per pixel: 2 GiB).
+pub const MAX_PIXELS: u64 = 1 << 26;
+/// The cached reference of scenes without a closed form: stratified, this many strata per axis.
+const REFERENCE_STRATA: u32 = 32;
+/// Seed of the cached reference renders.
+const REFERENCE_SEED: u64 = 0x5eed_4ef0;
+
+/// Pixel updates above which `render` and `compare` warn before they start (a minute or more
+/// of one core's work).
+pub const LARGE_WORK: f64 = 2e10;
+
+/// Pixels one sample of a `size` image adds to through `filter`: its footprint, `2r + 1`
+/// pixels per axis, clipped to the image.
+pub fn footprint_pixels(size: [u32; 2], filter: &FilterKind) -> f64 {
+    let [rx, ry] = nyquist::filter::Filter::radius(filter);
+    let side = |r: f32, n: u32| (2.0 * f64::from(r)).ceil().clamp(0.0, f64::from(n) - 1.0) + 1.0;
+    side(rx, size[0]) * side(ry, size[1])
+}
+
+/// Prints one warning line when `work` pixel updates exceed [`LARGE_WORK`] and returns whether
+/// it did (the caller then shows its progress bar at once).
+pub fn warn_if_large(work: f64, what: &str) -> bool {
+    if work <= LARGE_WORK {
+        return false;
+    }
+    eprintln!("nyquist: warning: {what}: about {work:.1e} pixel updates; this may take minutes");
+    true
+}
+
+/// A finished render.
+#[derive(Debug)]
+pub struct Rendered {
+    /// The resolved image.
+    pub image: Image,
+    /// Samples added and rejected.
+    pub stats: FilmStats,
+    /// Wall-clock seconds of sampling and reconstruction (not the reference, not the file).
+    pub seconds: f64,
+}
+
+/// Renders `scene` at `size` through `sampler` and `filter` on `threads` threads; `tick` is
+/// called once per finished tile (on the calling thread).
+pub fn render(
+    scene: Scene,
+    size: [u32; 2],
+    sampler: &NamedSampler,
+    filter: &FilterKind,
+    threads: usize,
+    tick: &mut dyn FnMut(),
+) -> Result<Rendered> {
+    let mut film =
+        Film::new(FilmConfig::new(size[0], size[1]), filter.as_dyn()).map_err(|e| match e {
+            nyquist_film::Error::OutOfMemory { .. } => {
+                anyhow!("--size {}x{}: {e} (try a smaller --size)", size[0], size[1])
+            }
+            e => anyhow!("--filter {}: {e}", filter.name()),
+        })?;
+    let start = Stopwatch::start();
+    render_with(&mut film, sampler, scene, size, threads, tick)
+        .map_err(|e| anyhow!("render: {e}"))?;
+    let (image, _) = film.image();
+    Ok(Rendered {
+        image,
+        stats: film.stats(),
+        seconds: start.seconds(),
+    })
+}
+
+/// How many tiles a `size` film splits into (the progress bar's units).
+pub fn tile_count(size: [u32; 2]) -> u64 {
+    u64::from(size[0].div_ceil(TILE)) * u64::from(size[1].div_ceil(TILE))
+}
+
+/// The sample loop. Each sample is the sampler's camera sample: the image sample (dimensions
+/// 0 and 1) and, for scenes that move, the time (dimension 2), exactly as
+/// [`nyquist::sampler::camera_sample`] reads them; the lens dimensions are not drawn because no
+/// scene has a lens. Every value depends only on (pixel, sample, dimension, seed), and the film
+/// merges tiles in order, so the image is the same for every thread count.
+fn render_with<S: Sampler + Clone + Sync>(
+    film: &mut Film,
+    sampler: &S,
+    scene: Scene,
+    size: [u32; 2],
+    threads: usize,
+    tick: &mut dyn FnMut(),
+) -> Result<(), nyquist_film::Error> {
+    let (w, h) = (f64::from(size[0]), f64::from(size[1]));
+    let time = scene.uses_time();
+    render_tiles(
+        film,
+        TILE,
+        threads,
+        |tile, ctx| {
+            let mut s = sampler.clone();
+            let b = ctx.bounds;
+            for py in b.y0..b.y1 {
+                for px in b.x0..b.x1 {
+                    let pixel = [px as u32, py as u32];
+                    let mut i = 0;
+                    while i < s.pixel_samples(pixel) {
+                        s.start_pixel_sample(pixel, i, 0);
+                        let [ox, oy] = s.get_pixel_2d();
+                        let t = if time { s.get_1d() } else { 0.5 };
+                        let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
+                        let l =
+                            scene.eval(f64::from(p[0]), f64::from(p[1]), f64::from(t), w, h) as f32;
+                        tile.add_sample(p, [l; 3], 1.0);
+                        s.report(pixel, i, &[l]);
+                        i += 1;
+                    }
+                }
+            }
+        },
+        |_, _| tick(),
+    )
+}
+
+/// Bytes a film pixel takes (weighted RGB and weight sums in `f64`).
+pub const FILM_PIXEL_BYTES: u64 = 32;
+/// Bytes an image pixel takes (RGB in `f32`).
+pub const IMAGE_PIXEL_BYTES: u64 = 12;
+
+/// The memory a render of `scene` at `size` takes: the film, the resolved image and its encoded
+/// rows, and with `metrics` the two references (and, for scenes without a closed form, the
+/// reference render's own film and image).
+pub fn render_bytes(scene: Scene, size: [u32; 2], metrics: bool) -> u64 {
+    let pixels = u64::from(size[0]) * u64::from(size[1]);
+    let mut per_pixel = FILM_PIXEL_BYTES + IMAGE_PIXEL_BYTES + 4;
+    if metrics {
+        per_pixel += 2 * 8;
+        if scene != Scene::Zoneplate {
+            per_pixel += FILM_PIXEL_BYTES + IMAGE_PIXEL_BYTES;
+        }
+    }
+    crate::memory::bytes(pixels, per_pixel)
+}
+
+/// What the reference of a scene is, in words (for tables and JSON).
+pub fn reference_kind(scene: Scene) -> String {
+    match scene {
+        Scene::Zoneplate => "exact pixel means (box filter, Fresnel integrals)".into(),
+        _ => format!(
+            "pixel means from a cached {REFERENCE_STRATA}x{REFERENCE_STRATA} spp stratified box render"
+        ),
+    }
+}
+
+/// The reference image of `scene` seen through `filter` (`None`: the pixel means, i.e. the box),
+/// calling `tick` once per finished tile when the reference is rendered (a scene without a
+/// closed form and no cached copy); a closed form or a cache hit ticks nothing.
+///
+/// The zone plate's references are exact: the Fresnel pixel means, or the filtered zone plate by
+/// 1D quadrature ([`crate::scene::zoneplate_filtered_reference`]; `None` for a non-separable
+/// filter). For the other scenes it is a stratified `32 × 32` spp render through the filter,
+/// cached under the user's cache folder (`$XDG_CACHE_HOME/nyquist`, else `~/.cache/nyquist`)
+/// keyed by scene, size and filter spec.
+///
+/// ```
+/// use nyquist_lab::{render::reference_with_progress, scene::Scene};
+/// let mut ticks = 0;
+/// let means = reference_with_progress(Scene::Zoneplate, [8, 4], None, 1, &mut || ticks += 1)
+///     .unwrap()
+///     .unwrap();
+/// assert_eq!((means.len(), ticks), (32, 0)); // the zone plate's means are exact: no render
+/// ```
+///
+/// # Errors
+/// A render error (the film could not be allocated).
+pub fn reference_with_progress(
+    scene: Scene,
+    size: [u32; 2],
+    filter: Option<&FilterKind>,
+    threads: usize,
+    tick: &mut dyn FnMut(),
+) -> Result<Option<Vec<f64>>> {
+    let boxed = FilterKind::parse("box").map_err(|e| anyhow!("{e}"))?;
+    let filter = filter.unwrap_or(&boxed);
+    if scene == Scene::Zoneplate {
+        return Ok(if filter.to_string() == boxed.to_string() {
+            Some(crate::scene::zoneplate_reference(size[0], size[1]))
+        } else {
+            crate::scene::zoneplate_filtered_reference(size[0], size[1], filter.as_dyn())
+        });
+    }
+    let spec = filter.to_string();
+    let key: String = spec
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '.' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    // No cache without a file system (the explorer keeps references in memory instead). The
+    // cache's two uses test `NO_FILE_SYSTEM` again: only then does the compiler drop their code.
+    let dir = if NO_FILE_SYSTEM { None } else { cache_dir() };
+    let path = dir.map(|d| {
+        d.join(format!(
+            "reference-v2-{}-{}x{}-stratified{REFERENCE_STRATA}-{key}.pfm",
+            scene.name(),
+            size[0],
+            size[1]
+        ))
+    });
+    let header = reference_header(scene, size, &spec);
+    if !NO_FILE_SYSTEM && let Some(p) = &path {
+        match read_cached_reference(p, &header, size) {
+            Ok(Some(img)) => return Ok(Some(channel0(&img))),
+            Ok(None) => {}
+            Err(why) => eprintln!(
+                "nyquist: note: the cached reference {} {why}; rendering it again",
+                p.display()
+            ),
+        }
+    }
+    let sampler = NamedSampler::new(
+        "stratified",
+        size,
+        REFERENCE_STRATA * REFERENCE_STRATA,
+        REFERENCE_SEED,
+    )
+    .map_err(|e| anyhow!("the reference's sampler: {e}"))?;
+    let r = render(scene, size, &sampler, filter, threads, tick)?;
+    if !NO_FILE_SYSTEM && let Some(p) = &path {
+        // A cache that cannot be written only costs time next run.
+        let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new(".")))
+            .map_err(anyhow::Error::from)
+            .and_then(|()| write_cache_file(p, &header, &r.image));
+    }
+    Ok(Some(channel0(&r.image)))
+}
+
+/// The first lines of a cached reference: what it was made from. A cache file whose header
+/// differs was made from other parameters (or by another version of the format).
+fn reference_header(scene: Scene, size: [u32; 2], filter: &str) -> String {
+    format!(
+        "nyquist reference image\nscene {}\nsize {}x{}\nsampler stratified {REFERENCE_STRATA}x{REFERENCE_STRATA} spp, seed {REFERENCE_SEED}\nfilter {filter}\n",
+        scene.name(),
+        size[0],
+        size[1]
+    )
+}
+
+/// FNV-1a, 64 bits: the checksum of a cached reference's image bytes.
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
+/// Writes a cached reference: `header`, a line with the checksum and length of the image bytes,
+/// then the image as PFM.
+fn write_cached_reference(w: &mut dyn std::io::Write, header: &str, image: &Image) -> Result<()> {
+    let mut pfm = Vec::new();
+    nyquist_film::output::pfm::write_pfm(&mut pfm, image)?;
+    writeln!(
+        w,
+        "{header}fnv1a64 {:016x} bytes {}",
+        fnv1a64(&pfm),
+        pfm.len()
+    )?;
+    w.write_all(&pfm)?;
+    Ok(())
+}
+
+/// Writes a cached reference to `path` through a temporary file in the same folder, renamed into
+/// place, so a reader never sees half a file.
+fn write_cache_file(path: &Path, header: &str, image: &Image) -> Result<()> {
+    let tmp = path.with_extension(format!("pfm.tmp-{}", std::process::id()));
+    let written = std::fs::File::create(&tmp)
+        .map_err(anyhow::Error::from)
+        .and_then(|f| {
+            let mut w = std::io::BufWriter::new(f);
+            write_cached_reference(&mut w, header, image)?;
+            std::io::Write::flush(&mut w)?;
+            Ok(())
+        })
+        .and_then(|()| Ok(std::fs::rename(&tmp, path)?));
+    if written.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    written
+}
+
+/// Reads the cached reference at `path`: `Ok(None)` when there is none, `Err(why)` when the file
+/// is there but unusable — made from other parameters, truncated, its checksum wrong, not an
+/// image of `size`, or holding a non-finite pixel — and the image otherwise.
+fn read_cached_reference(
+    path: &Path,
+    header: &str,
+    size: [u32; 2],
+) -> std::result::Result<Option<Image>, String> {
+    let bytes = match std::fs::read(path) {
+        Ok(b) => b,
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
+        Err(e) => return Err(format!("cannot be read ({e})")),
+    };
+    let rest = bytes
+        .strip_prefix(header.as_bytes())
+        .ok_or("was made from other parameters")?;
+    let line_end = rest
+        .iter()
+        .position(|&b| b == b'\n')
+        .ok_or("is truncated")?;
+    let line = std::str::from_utf8(&rest[..line_end]).map_err(|_| "has a malformed checksum")?;
+    let payload = &rest[line_end + 1..];
+    let (sum, len) = line
+        .strip_prefix("fnv1a64 ")
+        .and_then(|l| l.split_once(" bytes "))
+        .and_then(|(h, n)| Some((u64::from_str_radix(h, 16).ok()?, n.parse::<usize>().ok()?)))
+        .ok_or("has a malformed checksum line")?;
+    if payload.len() != len {
+        return Err(format!(
+            "is truncated or padded ({} image bytes, {len} expected)",
+            payload.len()
+        ));
+    }
+    if fnv1a64(payload) != sum {
+        return Err("does not match its checksum".into());
+    }
+    let img = nyquist_film::output::pfm::read_pfm(&mut &payload[..])
+        .map_err(|e| format!("is not a PFM image ({e})"))?;
+    if [img.width(), img.height()] != size {
+        return Err(format!(
+            "is {}x{}, not {}x{}",
+            img.width(),
+            img.height(),
+            size[0],
+            size[1]
+        ));
+    }
+    if img.data().iter().any(|v| !v.is_finite()) {
+        return Err("has a non-finite pixel".into());
+    }
+    Ok(Some(img))
+}
+
+/// The folder of cached references: `$XDG_CACHE_HOME/nyquist` (absolute), else
+/// `$HOME/.cache/nyquist`.
+fn cache_dir() -> Option<PathBuf> {
+    let base = match std::env::var_os("XDG_CACHE_HOME") {
+        Some(d) if !d.is_empty() && Path::new(&d).is_absolute() => PathBuf::from(d),
+        _ => PathBuf::from(std::env::var_os("HOME").filter(|h| !h.is_empty())?).join(".cache"),
+    };
+    Some(base.join("nyquist"))
+}
+
+/// The first channel of every pixel (the scenes are grey).
+pub fn channel0(img: &Image) -> Vec<f64> {
+    img.data()
+        .chunks_exact(3)
+        .map(|p| f64::from(p[0]))
+        .collect()
+}
+
+/// Root-mean-square difference between `img`'s first channel and `reference`.
+pub fn rmse(img: &Image, reference: &[f64]) -> f64 {
+    let n = reference.len().max(1) as f64;
+    let sum: f64 = img
+        .data()
+        .chunks_exact(3)
+        .zip(reference)
+        .map(|(p, r)| (f64::from(p[0]) - r).powi(2))
+        .sum();
+    (sum / n).sqrt()
+}
+
+/// Peak signal-to-noise ratio in dB for a peak of 1 (infinite for a perfect match).
+pub fn psnr(rmse: f64) -> f64 {
+    -20.0 * libm::log10(rmse)
+}
+
+/// The default thread count: the machine's parallelism.
+pub fn default_threads() -> usize {
+    std::thread::available_parallelism().map_or(1, |n| n.get())
+}
