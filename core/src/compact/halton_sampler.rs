@@ -406,6 +406,17 @@ mod tests {
     use crate::radical::ratio_f32;
     use proptest::prelude::*;
 
+    /// The quotient aligns the numerator's top bit with the denominator's whatever their gap:
+    /// 58 significant bits and the exponent of `num / den`, also when `num` is 2⁻¹⁰⁰ of `den`
+    /// (a shift by the difference of the leading zeros, not any other function of them).
+    #[test]
+    fn quotients_keep_their_bits_across_any_gap() {
+        assert_eq!(quotient(1, 1 << 100), (1 << 57, -157, false));
+        assert_eq!(quotient(3, 1 << 126), (3 << 56, -182, false));
+        assert_eq!(ratio_f32_int(1, 1 << 100), 2f32.powi(-100));
+        assert_eq!(ratio_f32_int(5, 3 << 90), (5.0f64 / 3.0 * 2f64.powi(-90)) as f32);
+    }
+
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(20_000))]
 
