@@ -25,7 +25,9 @@
 //! `OwenScrambledRadicalInverse` (Pharr, Jakob & Humphreys, 4th ed., §8.6), implemented here
 //! from the description, with the position and the input prefix in the key.
 
-use super::{BASES, PRIME_COUNT, fraction_f64};
+use super::PRIME_COUNT;
+use super::exact::fraction_f64;
+use super::tables::BASES;
 use crate::hash::{self, Permutation, mix64, packed_entry, packed_table};
 use crate::math::{ONE_MINUS_EPSILON, ONE_MINUS_EPSILON_F64};
 

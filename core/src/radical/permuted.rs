@@ -11,7 +11,7 @@
 //! bit-equal (a test holds them to it). Beyond that bound the caller falls back to the digit
 //! loop.
 
-use super::{below_f32, digit_permutation};
+use super::scrambled::{below_f32, digit_permutation};
 use crate::math::ONE_MINUS_EPSILON;
 
 /// The digit-group tables of one seed for bases 2, 3, 5, 7 and 11.

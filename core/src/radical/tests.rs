@@ -1,4 +1,11 @@
+use super::exact::*;
+use super::fast::*;
+use super::folded::*;
+use super::scrambled::*;
+use super::tables::*;
 use super::*;
+use crate::Error;
+use crate::math::ONE_MINUS_EPSILON;
 use proptest::prelude::*;
 
 #[test]
