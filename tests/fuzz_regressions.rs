@@ -1,22 +1,29 @@
 //! Replays fuzz inputs on stable through the same contract checks the cargo-fuzz targets run
 //! (`nyquist_fuzz_checks`, in `fuzz/checks`): every minimised crash kept in
-//! `fuzz/regressions/<target>/` and every seed in `fuzz/corpus/<target>/`. Passes with empty or
-//! missing folders; fails on a folder that names no target.
+//! `fuzz/regressions/<target>/` and every seed in `fuzz/corpus/<target>/`. Fails when either
+//! folder is missing or holds no input (a wrong path would otherwise replay nothing and pass), on
+//! a target folder with no input, and on a folder that names no target. The folders are found
+//! from this package's manifest directory, so the working directory and `CARGO_TARGET_DIR` do
+//! not matter.
 
 use std::fs;
 use std::panic;
 use std::path::{Path, PathBuf};
 
+/// The fuzz crate's folder: `fuzz/` beside this package's folder `tests/`.
 fn fuzz_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../fuzz")
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("the tests package sits in the workspace root")
+        .join("fuzz")
 }
 
-/// Every `(target, file)` under `root/<target>/`, sorted; `README*` files are skipped.
+/// Every `(target, file)` under `root/<target>/`, sorted; `README*` and dot files are skipped.
+/// Panics if `root` cannot be read, if a target folder holds no input, or if the whole tree
+/// holds none.
 fn inputs(root: &Path) -> Vec<(String, PathBuf)> {
     let mut out = Vec::new();
-    let Ok(dirs) = fs::read_dir(root) else {
-        return out;
-    };
+    let dirs = fs::read_dir(root).unwrap_or_else(|e| panic!("{}: {e}", root.display()));
     for dir in dirs {
         let dir = dir.unwrap().path();
         if !dir.is_dir() {
@@ -28,6 +35,7 @@ fn inputs(root: &Path) -> Vec<(String, PathBuf)> {
             "{}: no fuzz target is called {target:?}",
             dir.display()
         );
+        let before = out.len();
         for file in fs::read_dir(&dir).unwrap() {
             let file = file.unwrap().path();
             let name = file.file_name().unwrap().to_string_lossy();
@@ -35,7 +43,9 @@ fn inputs(root: &Path) -> Vec<(String, PathBuf)> {
                 out.push((target.clone(), file));
             }
         }
+        assert!(out.len() > before, "{}: no input in it", dir.display());
     }
+    assert!(!out.is_empty(), "{}: no input under it", root.display());
     out.sort();
     out
 }
