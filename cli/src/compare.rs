@@ -143,7 +143,7 @@ pub fn crop(scene: Scene, size: [u32; 2]) -> [u32; 4] {
 /// The three label lines of a cell.
 fn label(sampler: SamplerName, filter: &str, spp: u32, rmse: f64, sampling: f64) -> [String; 3] {
     [
-        sampler.name(),
+        sampler.name().to_owned(),
         format!("{filter} {spp}spp"),
         format!("RMSE {rmse:.4} ({sampling:.4})"),
     ]
@@ -196,7 +196,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             for (k, &spp) in args.spp.iter().enumerate() {
                 let scramble = args
                     .scramble
-                    .filter(|_| SCRAMBLE_NAMES.contains(&name.name().as_str()));
+                    .filter(|_| SCRAMBLE_NAMES.contains(&name.name()));
                 let sampler =
                     build_sampler(name, spp, args.size, args.seed, scramble).map_err(|e| {
                         anyhow!("{}", e.to_string().replace("--sampler ", "--samplers "))
@@ -333,7 +333,7 @@ pub fn run(args: &CompareArgs) -> Result<()> {
             }
             s.push_str(&format!(
                 "{{\"sampler\":{},\"filter\":{},\"filter_spec\":{},\"spp\":{},\"spp_requested\":{},\"row\":{},\"column\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
-                json_string(&c.sampler_name.name()),
+                json_string(c.sampler_name.name()),
                 json_string(&filters[c.filter].0),
                 json_string(&filters[c.filter].1.to_string()),
                 c.sampler.samples_per_pixel(),

@@ -16,11 +16,6 @@ use std::sync::{Mutex, MutexGuard, PoisonError};
 /// is printed.
 pub const BROKEN_PIPE_STATUS: u8 = 141;
 
-/// No file system and no standard input: `wasm32-unknown-unknown`, where the browser explorer
-/// runs the library. The command line's file reading and disk caches test it, so that build
-/// leaves their code out.
-pub(crate) const NO_FILE_SYSTEM: bool = cfg!(all(target_arch = "wasm32", target_os = "unknown"));
-
 /// The temporary files of the writes in progress. A file is created and renamed into place while
 /// this lock is held, so the signal handler sees every temporary file that exists, and removes
 /// them before the process exits.

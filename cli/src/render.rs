@@ -3,135 +3,13 @@
 
 use crate::progress::Progress;
 use anyhow::{Context, Result, anyhow, bail};
-use clap::{Args, ValueEnum};
+use clap::Args;
 use nyquist::filter::FilterKind;
-use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler};
-use nyquist::scramble::Scramble;
+use nyquist::sampler::Sampler;
 use nyquist_film::{Image, ImageFormat};
 use nyquist_lab::scene::Scene;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-
-/// Pixel samplers by their command-line names.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum SamplerName {
-    /// One sample at the centre of each of √spp × √spp strata: the aliasing baseline.
-    Uniform,
-    /// Independent uniform random samples (PCG32).
-    Random,
-    /// Jittered strata, √spp × √spp per pixel.
-    Stratified,
-    /// One Halton sequence over the whole image (scrambled when --seed is not 0).
-    Halton,
-    /// Hammersley points per pixel block (scrambled when --seed is not 0).
-    Hammersley,
-    /// Scrambled (0,2)-sequence per pixel (spp rounded up to a power of two).
-    ZeroTwo,
-    /// One Sobol sequence over the whole image (spp rounded up to a power of two).
-    Sobol,
-    /// Mitchell's best-candidate blue noise.
-    BestCandidate,
-    /// Adaptive: zero-two, spp/4 samples, all spp where the first ones disagree.
-    Adaptive,
-    /// Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed.
-    #[value(alias = "sobol-owen")]
-    OwenSobol,
-    /// Sobol along a hash-permuted Morton curve: blue-noise error across pixels (spp rounded
-    /// up to a power of two).
-    #[value(name = "zsobol")]
-    ZSobol,
-    /// Progressive multi-jittered (0,2) points, shuffled and Owen-scrambled per pixel.
-    Pmj02,
-    /// Blue-noise dithered: one zero-two set for every pixel, toroidally shifted by a 64 × 64
-    /// blue-noise mask, so the error is blue noise (spp rounded up to a power of two).
-    #[value(name = "bluenoise-dithered")]
-    BluenoiseDithered,
-    /// The Fibonacci lattice per dimension pair, Cranley–Patterson rotated per pixel and pair
-    /// (spp rounded up to a Fibonacci number).
-    Fibonacci,
-    /// Roberts' R2 per dimension pair, rotated per pixel and pair.
-    #[value(name = "r2")]
-    R2,
-    /// The Korobov lattice of exactly spp points per dimension pair (multiplier minimising
-    /// P2), Cranley–Patterson rotated per pixel and pair.
-    Korobov,
-}
-
-impl SamplerName {
-    /// The command-line name.
-    pub fn name(self) -> String {
-        self.to_possible_value()
-            .map_or_else(String::new, |v| v.get_name().to_owned())
-    }
-}
-
-/// The scrambles of `--scramble`: core's [`Scramble`], under the same names
-/// ([`Scramble::name`]; a test holds them equal), and `permute` for `permute-digits`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum ScrambleName {
-    /// The plain sequence.
-    None,
-    /// A random permutation of the digits per digit position (and dimension).
-    #[value(alias = "permute")]
-    PermuteDigits,
-    /// Burley's hash-based Owen scramble (Laine–Karras hash, Vegdahl's constants).
-    FastOwen,
-    /// The exact Owen scramble: one hash per digit.
-    Owen,
-}
-
-impl ScrambleName {
-    /// The core scramble.
-    pub fn scramble(self) -> Scramble {
-        match self {
-            ScrambleName::None => Scramble::None,
-            ScrambleName::PermuteDigits => Scramble::PermuteDigits,
-            ScrambleName::FastOwen => Scramble::FastOwen,
-            ScrambleName::Owen => Scramble::Owen,
-        }
-    }
-}
-
-/// The error for `spp` above [`nyquist::sampler::spp_limit`], naming `flag` (`--sampler`,
-/// `--samplers`).
-pub fn check_spp_limit(flag: &str, name: &str, spp: u32) -> Result<()> {
-    match nyquist::sampler::spp_limit(name) {
-        Some(max) if spp > max => {
-            bail!("{flag} {name} --spp {spp}: {name} takes at most {max} samples per pixel")
-        }
-        _ => Ok(()),
-    }
-}
-
-/// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
-/// [`NamedSampler`]), with `scramble` if given (only the samplers of
-/// [`SCRAMBLE_NAMES`](nyquist::sampler::SCRAMBLE_NAMES) take one: an error names `--scramble`
-/// for the others). The error names the flag at fault. Samplers that round spp (zero-two,
-/// sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
-pub fn build_sampler(
-    name: SamplerName,
-    spp: u32,
-    size: [u32; 2],
-    seed: u64,
-    scramble: Option<ScrambleName>,
-) -> Result<NamedSampler> {
-    let n = name.name();
-    if spp == 0 {
-        bail!("--spp 0: need at least one sample per pixel");
-    }
-    if spp > 1 << 20 {
-        bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
-    }
-    check_spp_limit("--sampler", &n, spp)?;
-    let built = match scramble {
-        Some(sc) => NamedSampler::with_scramble(&n, size, spp, seed, sc.scramble()),
-        None => NamedSampler::new(&n, size, spp, seed),
-    };
-    built.map_err(|e| match e {
-        NamedSamplerError::NoScramble => anyhow!("--scramble: --sampler {n}: {e}"),
-        e => anyhow!("--sampler {n} --spp {spp}: {e}"),
-    })
-}
 
 /// The reference image of `scene` seen through `filter` (`None`: the pixel means, i.e. the box).
 ///
@@ -154,36 +32,15 @@ pub fn reference(
     r
 }
 
-/// Parses `WxH` (e.g. `256x256`) into an image size, each side 1 to [`MAX_SIDE`].
-pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
-    let bad = || format!("'{s}' is not WxH with sides 1 to {MAX_SIDE} (e.g. 256x256)");
-    let (a, b) = s.split_once(['x', 'X']).ok_or_else(bad)?;
-    let side = |t: &str| match t.trim().parse::<u32>() {
-        Ok(v) if (1..=MAX_SIDE).contains(&v) => Ok(v),
-        _ => Err(bad()),
-    };
-    let size = [side(a)?, side(b)?];
-    if u64::from(size[0]) * u64::from(size[1]) > MAX_PIXELS {
-        return Err(format!("'{s}' has more than {MAX_PIXELS} pixels"));
-    }
-    Ok(size)
-}
-
-/// Parses a filter spec, the error listing the filters and keys.
-pub fn parse_filter(s: &str) -> Result<FilterKind, String> {
-    FilterKind::parse(s).map_err(|e| {
-        format!(
-            "{e} (filters: box, triangle, gaussian, mitchell, lanczos; e.g. mitchell:b=0.5,c=0.25)"
-        )
-    })
-}
-
 pub use crate::output::check_output;
 pub use nyquist_lab::json::{json_number, json_string};
 pub use nyquist_lab::render::{
     FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, Rendered, TILE,
     channel0, default_threads, footprint_pixels, psnr, reference_kind, reference_with_progress,
     render, render_bytes, rmse, tile_count, warn_if_large,
+};
+pub use nyquist_lab::render::{
+    SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter, parse_size,
 };
 
 /// Arguments of `nyquist render`.
@@ -348,7 +205,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 json_string(args.scene.name()),
                 args.size[0],
                 args.size[1],
-                json_string(&args.sampler.name()),
+                json_string(args.sampler.name()),
                 sampler.samples_per_pixel(),
                 json_string(&args.filter.to_string()),
                 args.seed,
@@ -393,6 +250,27 @@ pub fn run(args: &RenderArgs) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use clap::ValueEnum;
+    use nyquist::scramble::Scramble;
+
+    /// `--sampler`'s names are the lab's `name()` and core's `NAMES`, in the same order.
+    #[test]
+    fn sampler_names_are_cores() {
+        let flags: Vec<String> = SamplerName::value_variants()
+            .iter()
+            .map(|v| v.to_possible_value().unwrap().get_name().to_owned())
+            .collect();
+        let names: Vec<&str> = SamplerName::value_variants()
+            .iter()
+            .map(|v| v.name())
+            .collect();
+        assert_eq!(flags, names);
+        let mut core = nyquist::sampler::NAMES.to_vec();
+        let mut ours = names.clone();
+        core.sort_unstable();
+        ours.sort_unstable();
+        assert_eq!(ours, core);
+    }
 
     /// `--scramble`'s names are core's, each mapping to the scramble of that name.
     #[test]

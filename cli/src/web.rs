@@ -5,6 +5,7 @@
 
 use anyhow::{Context, Result, anyhow, bail};
 use clap::Args;
+pub use nyquist_lab::url::{DecodeError, percent_decode};
 use std::io::{BufRead, BufReader, Write};
 use std::net::{IpAddr, SocketAddr, TcpListener, TcpStream};
 use std::path::{Component, Path, PathBuf};
@@ -85,46 +86,6 @@ pub fn resolve(root: &Path, target: &str) -> Option<PathBuf> {
         out.push("index.html");
     }
     Some(out)
-}
-
-/// Why [`percent_decode`] refused its text.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DecodeError {
-    /// A `%` not followed by two hex digits.
-    BadEscape,
-    /// The decoded bytes are not UTF-8.
-    NotUtf8,
-}
-
-/// `%XX` decoding (no `+` rule: that belongs to query strings).
-///
-/// ```
-/// use nyquist_cli::web::{DecodeError, percent_decode};
-/// assert_eq!(percent_decode("a%20b+c").as_deref(), Ok("a b+c"));
-/// assert_eq!(percent_decode("%zz"), Err(DecodeError::BadEscape));
-/// assert_eq!(percent_decode("%ff"), Err(DecodeError::NotUtf8));
-/// ```
-///
-/// # Errors
-/// [`DecodeError`].
-pub fn percent_decode(s: &str) -> Result<String, DecodeError> {
-    let b = s.as_bytes();
-    let mut out = Vec::with_capacity(b.len());
-    let mut i = 0;
-    while i < b.len() {
-        if b[i] == b'%' {
-            let hex = s
-                .get(i + 1..i + 3)
-                .and_then(|h| u8::from_str_radix(h, 16).ok())
-                .ok_or(DecodeError::BadEscape)?;
-            out.push(hex);
-            i += 3;
-        } else {
-            out.push(b[i]);
-            i += 1;
-        }
-    }
-    String::from_utf8(out).map_err(|_| DecodeError::NotUtf8)
 }
 
 /// Runs `nyquist web`: checks the root, binds, prints the address and serves until stopped.

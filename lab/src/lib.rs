@@ -18,7 +18,9 @@
 // In WebAssembly the figures are refused (`plot_unavailable.rs`), so their drawing code is unused.
 #![cfg_attr(target_family = "wasm", allow(dead_code))]
 
+pub mod analysis;
 pub mod clock;
+pub mod filter;
 pub mod json;
 pub mod memory;
 pub mod parallel;
@@ -27,8 +29,10 @@ pub mod plot;
 #[cfg(target_family = "wasm")]
 #[path = "plot_unavailable.rs"]
 pub mod plot;
+pub mod points;
 pub mod raster;
 pub mod render;
 pub mod scene;
 pub mod study;
 pub mod svg;
+pub mod url;

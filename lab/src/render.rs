@@ -15,9 +15,11 @@
 
 use crate::clock::Stopwatch;
 use crate::scene::Scene;
+use anyhow::bail;
 use anyhow::{Result, anyhow};
 use nyquist::filter::FilterKind;
-use nyquist::sampler::{NamedSampler, Sampler, film_coordinate};
+use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler, film_coordinate};
+use nyquist::scramble::Scramble;
 use nyquist_film::{Film, FilmConfig, FilmStats, Image, render_tiles};
 use std::path::{Path, PathBuf};
 
@@ -35,6 +37,177 @@ pub const MAX_PIXELS: u64 = 1 << 26;
 const REFERENCE_STRATA: u32 = 32;
 /// Seed of the cached reference renders.
 const REFERENCE_SEED: u64 = 0x5eed_4ef0;
+
+/// Pixel samplers by name: the names of [`nyquist::sampler::NAMES`], each with its one-line
+/// description (the command line's `--sampler` of `render` and `compare`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum SamplerName {
+    /// One sample at the centre of each of √spp × √spp strata: the aliasing baseline.
+    Uniform,
+    /// Independent uniform random samples (PCG32).
+    Random,
+    /// Jittered strata, √spp × √spp per pixel.
+    Stratified,
+    /// One Halton sequence over the whole image (scrambled when --seed is not 0).
+    Halton,
+    /// Hammersley points per pixel block (scrambled when --seed is not 0).
+    Hammersley,
+    /// Scrambled (0,2)-sequence per pixel (spp rounded up to a power of two).
+    ZeroTwo,
+    /// One Sobol sequence over the whole image (spp rounded up to a power of two).
+    Sobol,
+    /// Mitchell's best-candidate blue noise.
+    BestCandidate,
+    /// Adaptive: zero-two, spp/4 samples, all spp where the first ones disagree.
+    Adaptive,
+    /// Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed.
+    #[cfg_attr(feature = "clap", value(alias = "sobol-owen"))]
+    OwenSobol,
+    /// Sobol along a hash-permuted Morton curve: blue-noise error across pixels (spp rounded
+    /// up to a power of two).
+    #[cfg_attr(feature = "clap", value(name = "zsobol"))]
+    ZSobol,
+    /// Progressive multi-jittered (0,2) points, shuffled and Owen-scrambled per pixel.
+    Pmj02,
+    /// Blue-noise dithered: one zero-two set for every pixel, toroidally shifted by a 64 × 64
+    /// blue-noise mask, so the error is blue noise (spp rounded up to a power of two).
+    #[cfg_attr(feature = "clap", value(name = "bluenoise-dithered"))]
+    BluenoiseDithered,
+    /// The Fibonacci lattice per dimension pair, Cranley–Patterson rotated per pixel and pair
+    /// (spp rounded up to a Fibonacci number).
+    Fibonacci,
+    /// Roberts' R2 per dimension pair, rotated per pixel and pair.
+    #[cfg_attr(feature = "clap", value(name = "r2"))]
+    R2,
+    /// The Korobov lattice of exactly spp points per dimension pair (multiplier minimising
+    /// P2), Cranley–Patterson rotated per pixel and pair.
+    Korobov,
+}
+
+impl SamplerName {
+    /// The name, as [`NamedSampler::new`] takes it.
+    ///
+    /// ```
+    /// use nyquist_lab::render::SamplerName;
+    /// assert_eq!(SamplerName::ZSobol.name(), "zsobol");
+    /// assert_eq!(SamplerName::BluenoiseDithered.name(), "bluenoise-dithered");
+    /// ```
+    pub fn name(self) -> &'static str {
+        use SamplerName as S;
+        match self {
+            S::Uniform => "uniform",
+            S::Random => "random",
+            S::Stratified => "stratified",
+            S::Halton => "halton",
+            S::Hammersley => "hammersley",
+            S::ZeroTwo => "zero-two",
+            S::Sobol => "sobol",
+            S::BestCandidate => "best-candidate",
+            S::Adaptive => "adaptive",
+            S::OwenSobol => "owen-sobol",
+            S::ZSobol => "zsobol",
+            S::Pmj02 => "pmj02",
+            S::BluenoiseDithered => "bluenoise-dithered",
+            S::Fibonacci => "fibonacci",
+            S::R2 => "r2",
+            S::Korobov => "korobov",
+        }
+    }
+}
+
+/// The scrambles of `--scramble`: core's [`Scramble`], under the same names
+/// ([`Scramble::name`]; a test holds them equal), and `permute` for `permute-digits`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum ScrambleName {
+    /// The plain sequence.
+    None,
+    /// A random permutation of the digits per digit position (and dimension).
+    #[cfg_attr(feature = "clap", value(alias = "permute"))]
+    PermuteDigits,
+    /// Burley's hash-based Owen scramble (Laine–Karras hash, Vegdahl's constants).
+    FastOwen,
+    /// The exact Owen scramble: one hash per digit.
+    Owen,
+}
+
+impl ScrambleName {
+    /// The core scramble.
+    pub fn scramble(self) -> Scramble {
+        match self {
+            ScrambleName::None => Scramble::None,
+            ScrambleName::PermuteDigits => Scramble::PermuteDigits,
+            ScrambleName::FastOwen => Scramble::FastOwen,
+            ScrambleName::Owen => Scramble::Owen,
+        }
+    }
+}
+
+/// The error for `spp` above [`nyquist::sampler::spp_limit`], naming `flag` (`--sampler`,
+/// `--samplers`).
+pub fn check_spp_limit(flag: &str, name: &str, spp: u32) -> Result<()> {
+    match nyquist::sampler::spp_limit(name) {
+        Some(max) if spp > max => {
+            bail!("{flag} {name} --spp {spp}: {name} takes at most {max} samples per pixel")
+        }
+        _ => Ok(()),
+    }
+}
+
+/// Builds sampler `name` for `spp` samples per pixel of a `size` image (core's
+/// [`NamedSampler`]), with `scramble` if given (only the samplers of
+/// [`SCRAMBLE_NAMES`](nyquist::sampler::SCRAMBLE_NAMES) take one: an error names `--scramble`
+/// for the others). The error names the flag at fault. Samplers that round spp (zero-two,
+/// sobol, adaptive) report the spp they use through [`Sampler::samples_per_pixel`].
+pub fn build_sampler(
+    name: SamplerName,
+    spp: u32,
+    size: [u32; 2],
+    seed: u64,
+    scramble: Option<ScrambleName>,
+) -> Result<NamedSampler> {
+    let n = name.name();
+    if spp == 0 {
+        bail!("--spp 0: need at least one sample per pixel");
+    }
+    if spp > 1 << 20 {
+        bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
+    }
+    check_spp_limit("--sampler", n, spp)?;
+    let built = match scramble {
+        Some(sc) => NamedSampler::with_scramble(n, size, spp, seed, sc.scramble()),
+        None => NamedSampler::new(n, size, spp, seed),
+    };
+    built.map_err(|e| match e {
+        NamedSamplerError::NoScramble => anyhow!("--scramble: --sampler {n}: {e}"),
+        e => anyhow!("--sampler {n} --spp {spp}: {e}"),
+    })
+}
+
+/// Parses `WxH` (e.g. `256x256`) into an image size, each side 1 to [`MAX_SIDE`].
+pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
+    let bad = || format!("'{s}' is not WxH with sides 1 to {MAX_SIDE} (e.g. 256x256)");
+    let (a, b) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let side = |t: &str| match t.trim().parse::<u32>() {
+        Ok(v) if (1..=MAX_SIDE).contains(&v) => Ok(v),
+        _ => Err(bad()),
+    };
+    let size = [side(a)?, side(b)?];
+    if u64::from(size[0]) * u64::from(size[1]) > MAX_PIXELS {
+        return Err(format!("'{s}' has more than {MAX_PIXELS} pixels"));
+    }
+    Ok(size)
+}
+
+/// Parses a filter spec, the error listing the filters and keys.
+pub fn parse_filter(s: &str) -> Result<FilterKind, String> {
+    FilterKind::parse(s).map_err(|e| {
+        format!(
+            "{e} (filters: box, triangle, gaussian, mitchell, lanczos; e.g. mitchell:b=0.5,c=0.25)"
+        )
+    })
+}
 
 /// Pixel updates above which `render` and `compare` warn before they start (a minute or more
 /// of one core's work).

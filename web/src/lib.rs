@@ -1,7 +1,7 @@
 //! The nyquist explorer's engine: one function, [`handle`], that answers a request from the
 //! page (its URL query, e.g. `view=points&sampler=halton&count=256&x=3&y=7`) with a JSON text
 //! and an array of `f32` (points, images, spectra). It calls the same library functions as the
-//! `nyquist` command (`nyquist_cli`), so the numbers the page shows are the numbers the command
+//! `nyquist` command (`nyquist_lab`), so the numbers the page shows are the numbers the command
 //! prints, and each reply carries that command line (`"cli"`).
 //!
 //! Compiled to `wasm32-unknown-unknown`, [`abi`] exports [`handle`] to the page's worker
@@ -57,12 +57,12 @@ pub fn handle(request: &str, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Rep
 
 /// A JSON string literal.
 fn js(s: &str) -> String {
-    nyquist_cli::render::json_string(s)
+    nyquist_lab::json::json_string(s)
 }
 
 /// A JSON number (`null` where not finite).
 fn jn(x: f64) -> String {
-    nyquist_cli::render::json_number(x)
+    nyquist_lab::json::json_number(x)
 }
 
 /// A JSON array of numbers.

@@ -13,7 +13,7 @@ pub struct Query {
 
 /// `%XX` and `+` decoding of one query component (`+` is a space in a query string).
 fn decode(s: &str) -> Result<String> {
-    use nyquist_cli::web::{DecodeError, percent_decode};
+    use nyquist_lab::url::{DecodeError, percent_decode};
     percent_decode(&s.replace('+', " ")).map_err(|e| match e {
         DecodeError::BadEscape => anyhow!("query: bad escape in {s:?}"),
         DecodeError::NotUtf8 => anyhow!("query: {s:?} is not UTF-8"),

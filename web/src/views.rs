@@ -7,11 +7,13 @@ use crate::{Reply, jlist, jn, js};
 use anyhow::{Result, anyhow, bail};
 use nyquist::filter::{Axis, Filter, FilterKind, FilterSampler, FilterTable, Interpolation};
 use nyquist::sampler::Sampler;
-use nyquist_cli::analyze::{self, AnalyzeArgs, Measure, StarMethod};
-use nyquist_cli::converge::{self, ConvergeArgs};
-use nyquist_cli::points::{self, SamplerName as PointSet};
-use nyquist_cli::render::{self, SamplerName};
+use nyquist_lab::analysis::{
+    self as analyze, AnalyzeSpec as AnalyzeArgs, Measure, Quiet, StarMethod,
+};
+use nyquist_lab::points::{self, PointSetName as PointSet};
+use nyquist_lab::render::{self, SamplerName};
 use nyquist_lab::scene::Scene;
+use nyquist_lab::study::convergence::{self as converge, ConvergeSpec as ConvergeArgs};
 use nyquist_lab::study::unit_square::SquareIntegrand as Integrand;
 
 /// Points in the Points view (every measure is at most quadratic in the count).
@@ -71,7 +73,7 @@ struct SetQuery {
 
 fn set_query(q: &Query, max_count: u64) -> Result<SetQuery> {
     let sampler: PointSet = q.choice("sampler", "halton")?;
-    let name = points::name(sampler);
+    let name = sampler.name();
     let seed = q.int("seed", 0, 0, u64::MAX)?;
     let x = q.int("x", 0, 0, MAX_DIM)? as u32;
     let y = q.int("y", 1, 0, MAX_DIM)? as u32;
@@ -190,7 +192,7 @@ pub fn points(q: &Query) -> Result<Reply> {
         Measure::WraparoundL2,
         Measure::MinDistance,
     ];
-    let analysis = analyze::report(&s.args)?;
+    let analysis = analyze::report(&s.args, &mut Quiet::default())?;
     let (coords, _, _) = analyze::load(&s.args, s.args.seed.unwrap_or(0))?;
     let pairs: Vec<[f64; 2]> = coords.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
     let pair =
@@ -366,7 +368,7 @@ pub fn aliasing(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply
             js(scene.name()),
             size[0],
             size[1],
-            js(&sampler_name.name()),
+            js(sampler_name.name()),
             js(&filter.to_string()),
             sampler.samples_per_pixel(),
             r.stats.samples,
@@ -459,18 +461,18 @@ pub fn filters(q: &Query) -> Result<Reply> {
             format!(
                 "[{},{}]",
                 jn(x),
-                jn(nyquist_cli::filter::profile(f, x as f32))
+                jn(nyquist_lab::filter::profile(f, x as f32))
             )
         })
         .collect();
-    let dc = nyquist_cli::filter::spectrum(f, 0.0).max(1e-300);
+    let dc = nyquist_lab::filter::spectrum(f, 0.0).max(1e-300);
     let response: Vec<String> = (0..=STEPS / 2)
         .map(|i| {
             let nu = 2.0 * i as f64 / (STEPS / 2) as f64;
             format!(
                 "[{},{}]",
                 jn(nu),
-                jn(nyquist_cli::filter::spectrum(f, nu) / dc)
+                jn(nyquist_lab::filter::spectrum(f, nu) / dc)
             )
         })
         .collect();

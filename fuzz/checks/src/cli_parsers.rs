@@ -118,7 +118,7 @@ pub fn cli_parsers(data: &[u8]) {
             }
             Err(e) => one_line(s, &format!("{e:#}")),
         },
-        6 => value_enum::<points::SamplerName>(s),
+        6 => value_enum::<nyquist_lab::points::PointSetName>(s),
         7 => value_enum::<render::SamplerName>(s),
         8 => {
             value_enum::<scene::Scene>(s);

@@ -3,6 +3,7 @@
 
 use super::unit_square::SquareIntegrand;
 use super::{Curve, Study};
+#[cfg(not(target_family = "wasm"))]
 use anyhow::Result;
 
 /// Width of one panel of the plot: the log-log chart and its legend beside it.

@@ -29,6 +29,7 @@
 //! assert!((-0.9..-0.2).contains(&slope), "{slope}");
 //! ```
 
+pub mod convergence;
 pub mod figure;
 pub mod genz;
 pub mod unit_square;
