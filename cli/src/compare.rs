@@ -11,13 +11,11 @@ use anyhow::{Result, anyhow, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, SCRAMBLE_NAMES, Sampler};
-use nyquist_film::CAN_START_THREADS;
 use nyquist_lab::clock::Stopwatch;
 use nyquist_lab::raster::{Canvas, LINE, text_width};
 use nyquist_lab::scene::Scene;
 use std::fmt::Write as _;
 use std::path::PathBuf;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Space between cells and around the sheet, in pixels.
 pub const PAD: u32 = 8;
@@ -424,44 +422,19 @@ fn render_cells(
     }
     let mut order: Vec<usize> = (0..cells.len()).collect();
     order.sort_by_key(|&i| std::cmp::Reverse(cells[i].sampler.samples_per_pixel()));
-    let next = AtomicUsize::new(0);
-    let (tx, rx) = std::sync::mpsc::channel::<(usize, Result<Rendered>)>();
-    let work = |tx: std::sync::mpsc::Sender<(usize, Result<Rendered>)>| {
-        while let Some(&i) = order.get(next.fetch_add(1, Ordering::Relaxed)) {
-            let c = &cells[i];
-            let r = render(
-                args.scene,
-                args.size,
-                &c.sampler,
-                &args.filters.0[c.filter].1,
-                1,
-                &mut || bar.inc(1),
-            );
-            let failed = r.is_err();
-            if tx.send((i, r)).is_err() || failed {
-                break;
-            }
-        }
-    };
-    if threads <= 1 || !CAN_START_THREADS {
-        work(tx.clone());
-    } else {
-        std::thread::scope(|scope| {
-            for _ in 0..threads.min(cells.len()) {
-                let tx = tx.clone();
-                scope.spawn(|| work(tx));
-            }
-        });
-    }
-    drop(tx);
+    let out = nyquist_lab::parallel::map_tasks(&order, threads, |i| {
+        let c = &cells[i];
+        render(
+            args.scene,
+            args.size,
+            &c.sampler,
+            &args.filters.0[c.filter].1,
+            1,
+            &mut || bar.inc(1),
+        )
+    });
     bar.finish();
-    let mut out: Vec<Option<Rendered>> = (0..cells.len()).map(|_| None).collect();
-    for (i, r) in rx {
-        out[i] = Some(r?);
-    }
-    out.into_iter()
-        .map(|r| r.ok_or_else(|| anyhow!("a render did not finish")))
-        .collect()
+    out
 }
 
 #[cfg(test)]

@@ -67,6 +67,11 @@ fn mod_inverse(a: u64, n: u64) -> u64 {
 /// All index arithmetic is `u64`: no overflow for any `u32` pixel and sample index. Every sample
 /// index gives a new point (no wrap at `samples_per_pixel`).
 ///
+/// **Pixels outside the image** are not an error: the samples depend on `p.x mod 2^j` and
+/// `p.y mod 3^k` only ([`HaltonSampler::scales`]), so pixel `(x + 2^j, y)` repeats pixel
+/// `(x, y)`'s samples, inside the image (when it is wider than `2^j`, past 128 pixels) and
+/// outside it alike.
+///
 /// ```
 /// use nyquist::sampler::{HaltonSampler, HaltonScramble, Sampler};
 /// let mut s = HaltonSampler::new([64, 64], 16, HaltonScramble::None, 0).unwrap();
@@ -293,6 +298,34 @@ mod tests {
     use super::*;
     use crate::radical::radical_inverse;
     use crate::sampler::tests::{consistent_values, threads_agree};
+
+    /// The in-pixel offset (`get_pixel_2d`, exact at any pixel coordinate, where `p_film` would
+    /// round) and the next six dimensions of sample `i` of `pixel`.
+    fn record(s: &mut impl Sampler, pixel: [u32; 2], i: u32) -> std::vec::Vec<f32> {
+        s.start_pixel_sample(pixel, i, 0);
+        let mut v = s.get_pixel_2d().to_vec();
+        v.extend((0..6).map(|_| s.get_1d()));
+        v
+    }
+
+    /// As documented: pixel (x + 2^j, y + 3^k) repeats pixel (x, y)'s samples, inside the image
+    /// and outside it.
+    #[test]
+    fn pixels_repeat_every_scale_inside_and_outside_the_image() {
+        for scramble in Scramble::ALL {
+            let mut s = HaltonSampler::new([300, 200], 4, scramble, 7).unwrap();
+            let [sx, sy] = s.scales().map(|v| v as u32);
+            assert_eq!([sx, sy], [128, 243]);
+            for (pixel, i) in [([3u32, 4u32], 0u32), ([130, 7], 2), ([5, 250], 3)] {
+                let base = [pixel[0] % sx, pixel[1] % sy];
+                let a = record(&mut s, pixel, i);
+                assert_eq!(a, record(&mut s, base, i), "{scramble:?} {pixel:?}");
+                let far = [pixel[0] + 7 * sx, pixel[1] + 3 * sy];
+                assert_eq!(a, record(&mut s, far, i), "{scramble:?} {far:?}");
+            }
+            assert_ne!(record(&mut s, [1, 0], 0), record(&mut s, [0, 0], 0));
+        }
+    }
 
     #[test]
     fn halton_is_consistent_and_thread_independent() {

@@ -33,6 +33,11 @@ const DIMS: u32 = 1024;
 /// here are 32-bit, `spp · 2^(2m) ≤ 2³²` is required (e.g. 16 spp at 16384², 65536 spp at
 /// 256²). `sample_index >= spp` wraps modulo `spp`.
 ///
+/// **Pixels outside the image** are not an error: a pixel is read modulo the `2^m × 2^m`
+/// square (its low `m` bits per axis), so pixel `(x + 2^m, y)` repeats pixel `(x, y)`'s
+/// samples. An 8 × 8 image has `m = 3`: pixel (8, 0) gives pixel (0, 0)'s samples, and a 6 × 6
+/// image (also `m = 3`) gives pixels 6 and 7 of each axis samples of their own, then repeats.
+///
 /// ```
 /// use nyquist::sampler::{Sampler, SobolSampler};
 /// let mut s = SobolSampler::new([4, 4], 4, 0).unwrap();
@@ -427,7 +432,40 @@ impl Sampler for SobolSampler {
 mod tests {
     use super::*;
     use crate::sampler::tests::{consistent_values, is_zero_two_net, threads_agree};
+
+    /// The in-pixel offset (`get_pixel_2d`, exact at any pixel coordinate, where `p_film` would
+    /// round) and the next six dimensions of sample `i` of `pixel`.
+    fn record(s: &mut impl Sampler, pixel: [u32; 2], i: u32) -> Vec<f32> {
+        s.start_pixel_sample(pixel, i, 0);
+        let mut v = s.get_pixel_2d().to_vec();
+        v.extend((0..6).map(|_| s.get_1d()));
+        v
+    }
     use std::vec::Vec;
+
+    /// As documented: a pixel is read modulo the 2^m square; inside it every pixel has samples
+    /// of its own (an 8 × 8 image: pixel (8, 0) is pixel (0, 0); a 6 × 6 image: pixels 6 and 7
+    /// are new, 8 repeats 0).
+    #[test]
+    fn pixels_outside_the_image_wrap_modulo_the_square() {
+        for scramble in Scramble::ALL {
+            for (res, pixel, same_as) in [
+                ([8, 8], [8, 0], [0, 0]),
+                ([8, 8], [13, 21], [5, 5]),
+                ([6, 6], [8, 7], [0, 7]),
+            ] {
+                let mut s = SobolSampler::with_scramble(res, 4, scramble, 5).unwrap();
+                for i in 0..4 {
+                    let (a, b) = (record(&mut s, pixel, i), record(&mut s, same_as, i));
+                    // Dimensions 0 and 1 are the offsets inside the pixel; the rest are values.
+                    assert_eq!(a, b, "{scramble:?} {res:?} {pixel:?} {i}");
+                }
+            }
+            let mut s = SobolSampler::with_scramble([6, 6], 4, scramble, 5).unwrap();
+            assert_ne!(record(&mut s, [6, 0], 0), record(&mut s, [0, 0], 0));
+            assert_ne!(record(&mut s, [7, 0], 1), record(&mut s, [5, 0], 1));
+        }
+    }
 
     /// The cached per-pixel and per-sample shares give the same index as the direct search.
     #[test]
