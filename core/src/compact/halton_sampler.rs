@@ -414,7 +414,10 @@ mod tests {
         assert_eq!(quotient(1, 1 << 100), (1 << 57, -157, false));
         assert_eq!(quotient(3, 1 << 126), (3 << 56, -182, false));
         assert_eq!(ratio_f32_int(1, 1 << 100), 2f32.powi(-100));
-        assert_eq!(ratio_f32_int(5, 3 << 90), (5.0f64 / 3.0 * 2f64.powi(-90)) as f32);
+        assert_eq!(
+            ratio_f32_int(5, 3 << 90),
+            (5.0f64 / 3.0 * 2f64.powi(-90)) as f32
+        );
     }
 
     proptest! {

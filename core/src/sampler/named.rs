@@ -358,7 +358,9 @@ impl NamedSampler {
                 NamedSampler::Halton(HaltonSampler::new(size, spp, HaltonScramble::None, 0)?)
             }
             "sobol-plain" => NamedSampler::Sobol(SobolSampler::new(size, spp, 0)?),
-            "owen-sobol" | "sobol-owen" => NamedSampler::OwenSobol(OwenSobolSampler::new(spp, seed)?),
+            "owen-sobol" | "sobol-owen" => {
+                NamedSampler::OwenSobol(OwenSobolSampler::new(spp, seed)?)
+            }
             "zsobol" => {
                 NamedSampler::ZSobol(ZSobolSampler::new(size, spp, Scramble::FastOwen, seed)?)
             }
@@ -651,7 +653,10 @@ mod tests {
         assert_eq!(new("random ", [1, 1], 4), NamedSamplerError::UnknownName);
         assert_eq!(
             new("best-candidate", [1, 1], 4097),
-            NamedSamplerError::SppAboveLimit { spp: 4097, max: 4096 }
+            NamedSamplerError::SppAboveLimit {
+                spp: 4097,
+                max: 4096
+            }
         );
         assert!(NamedSampler::new("best-candidate", [1, 1], 4096, 0).is_ok());
         assert_eq!(
@@ -660,7 +665,10 @@ mod tests {
         );
         assert_eq!(
             new("pmj02", [1, 1], (1 << 16) + 1),
-            NamedSamplerError::SppAboveLimit { spp: (1 << 16) + 1, max: 1 << 16 }
+            NamedSamplerError::SppAboveLimit {
+                spp: (1 << 16) + 1,
+                max: 1 << 16
+            }
         );
         assert!(NamedSampler::new("pmj02", [1, 1], 1 << 16, 0).is_ok());
     }
@@ -683,8 +691,18 @@ mod tests {
         assert_eq!(values("halton-plain", 5), values("halton", 0));
         assert_eq!(values("sobol-plain", 5), values("sobol", 0));
         assert_ne!(values("sobol", 5), values("sobol", 0));
-        assert_eq!(NamedSampler::new("SOBOL-plain", [8, 8], 16, 5).unwrap().name(), "sobol");
-        assert_eq!(NamedSampler::new("sobol-owen", [8, 8], 16, 5).unwrap().name(), "owen-sobol");
+        assert_eq!(
+            NamedSampler::new("SOBOL-plain", [8, 8], 16, 5)
+                .unwrap()
+                .name(),
+            "sobol"
+        );
+        assert_eq!(
+            NamedSampler::new("sobol-owen", [8, 8], 16, 5)
+                .unwrap()
+                .name(),
+            "owen-sobol"
+        );
         for spp in [2u32, 6, 7, 8, 12, 32] {
             let [nx, ny] = strata(spp);
             assert_eq!(nx * ny, spp);
