@@ -360,7 +360,9 @@ fn error_lines(e: &mut Expected) {
 
 /// A C program of this package's tests, `capi/tests/c/NAME`.
 fn c_source(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/c").join(name)
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/c")
+        .join(name)
 }
 
 /// Every line `capi/tests/c/capi_test.c` must print, from the Rust side.
@@ -416,11 +418,7 @@ fn c_program_is_clean_under_sanitizers() {
 /// sanitizers report nothing.
 #[test]
 fn misuse_gets_error_codes_and_no_sanitizer_report() {
-    let out = run_c_program(
-        &c_source("capi_misuse.c"),
-        "capi_misuse",
-        Build::Sanitized,
-    );
+    let out = run_c_program(&c_source("capi_misuse.c"), "capi_misuse", Build::Sanitized);
     assert_eq!(out, "misuse ok\n");
 }
 
