@@ -169,7 +169,7 @@ fn sequence_lines(e: &mut Expected) {
         (4, Box::new(Hammersley::new(16, 3).unwrap())),
         (9, Box::new(HammersleyZaremba::new(16, 2).unwrap())),
         (5, Box::new(Sobol::new(4).unwrap())),
-        (6, Box::new(Sobol::with_scramble(4, 7).unwrap())),
+        (6, Box::new(Sobol::with_digital_shift(4, 7).unwrap())),
         (7, Box::new(ZeroTwo::new([0, 0]))),
         (8, Box::new(ZeroTwo::from_seed(9))),
     ];

@@ -343,8 +343,8 @@ const fn sobol_directions<const N: usize>() -> [[u32; 32]; N] {
 /// use nyquist::sequence::{self, Sequence};
 /// let s = Sobol::<4>::new();
 /// assert_eq!([0, 1, 2, 3].map(|i| s.sample(i, 1)), [0.0, 0.5, 0.75, 0.25]);
-/// let table = sequence::Sobol::with_scramble(4, 9).unwrap();
-/// assert_eq!(Sobol::<4>::with_scramble(9).sample_u32(77, 3), table.sample_u32(77, 3));
+/// let table = sequence::Sobol::with_digital_shift(4, 9).unwrap();
+/// assert_eq!(Sobol::<4>::with_digital_shift(9).sample_u32(77, 3), table.sample_u32(77, 3));
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Sobol<const N: usize> {
@@ -371,16 +371,16 @@ impl<const N: usize> Sobol<N> {
     }
 
     /// The sequence with the digital shift of
-    /// [`sequence::Sobol::with_scramble`](crate::sequence::Sobol::with_scramble).
+    /// [`sequence::Sobol::with_digital_shift`](crate::sequence::Sobol::with_digital_shift).
     ///
     /// ```
     /// use nyquist::compact::Sobol;
-    /// let (plain, shifted) = (Sobol::<2>::new(), Sobol::<2>::with_scramble(7));
+    /// let (plain, shifted) = (Sobol::<2>::new(), Sobol::<2>::with_digital_shift(7));
     /// // A digital shift XORs each dimension with one constant.
     /// let x = plain.sample_u32(0, 1) ^ shifted.sample_u32(0, 1);
     /// assert_eq!(plain.sample_u32(9, 1) ^ shifted.sample_u32(9, 1), x);
     /// ```
-    pub const fn with_scramble(seed: u64) -> Self {
+    pub const fn with_digital_shift(seed: u64) -> Self {
         const { check_dims::<N>() };
         Sobol {
             seed,

@@ -60,11 +60,11 @@ fn halton_rounds_like_the_fast_path_where_that_is_not_correct_rounding() {
 #[test]
 fn sobol_and_owen_sobol_equal_the_table_paths_in_every_dimension() {
     let s = Sobol::<1024>::new();
-    let shifted = Sobol::<1024>::with_scramble(11);
+    let shifted = Sobol::<1024>::with_digital_shift(11);
     let owen = OwenSobol::<1024>::new(5);
     let (ts, tshifted) = (
         sequence::Sobol::new(1024).unwrap(),
-        sequence::Sobol::with_scramble(1024, 11).unwrap(),
+        sequence::Sobol::with_digital_shift(1024, 11).unwrap(),
     );
     let towen = sequence::OwenSobol::new(1024, 5).unwrap();
     for d in 0..1024u32 {
@@ -108,8 +108,8 @@ proptest! {
         let towen = sequence::OwenSobol::new(1024, seed).unwrap();
         prop_assert_eq!(owen.sample(i, d).to_bits(), towen.sample(i, d).to_bits());
         prop_assert_eq!(owen.sample_4d(i as u32, d), towen.sample_4d(i as u32, d));
-        let s = Sobol::<1024>::with_scramble(seed);
-        let ts = sequence::Sobol::with_scramble(1024, seed).unwrap();
+        let s = Sobol::<1024>::with_digital_shift(seed);
+        let ts = sequence::Sobol::with_digital_shift(1024, seed).unwrap();
         prop_assert_eq!(s.sample(i, d).to_bits(), ts.sample(i, d).to_bits());
     }
 }

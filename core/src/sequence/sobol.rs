@@ -203,14 +203,14 @@ impl Sobol {
     }
 
     /// The sequence with a digital shift: dimension `d`'s 32-bit values are XOR-ed with a hash
-    /// of `(seed, d)`. Every seed, 0 included, gives a scramble. Net properties are kept.
+    /// of `(seed, d)`. Every seed, 0 included, gives a shift. Net properties are kept.
     ///
     /// # Errors
     /// As [`Sobol::new`].
     ///
     /// ```
     /// use nyquist::sequence::{Sequence, Sobol};
-    /// let s = Sobol::with_scramble(2, 7).unwrap();
+    /// let s = Sobol::with_digital_shift(2, 7).unwrap();
     /// let plain = Sobol::new(2).unwrap();
     /// assert_ne!(s.sample(0, 1), plain.sample(0, 1));
     /// // A digital shift is a bijection on the 2^m strata: 8 points, 8 distinct eighths.
@@ -220,7 +220,7 @@ impl Sobol {
     /// }
     /// assert!(seen.iter().all(|&x| x));
     /// ```
-    pub fn with_scramble(dims: u32, seed: u64) -> Result<Sobol, Error> {
+    pub fn with_digital_shift(dims: u32, seed: u64) -> Result<Sobol, Error> {
         Ok(Sobol {
             seed,
             scrambled: true,
@@ -232,10 +232,10 @@ impl Sobol {
     ///
     /// ```
     /// use nyquist::sequence::Sobol;
-    /// assert!(!Sobol::new(3).unwrap().is_scrambled());
-    /// assert!(Sobol::with_scramble(3, 0).unwrap().is_scrambled());
+    /// assert!(!Sobol::new(3).unwrap().is_shifted());
+    /// assert!(Sobol::with_digital_shift(3, 0).unwrap().is_shifted());
     /// ```
-    pub fn is_scrambled(&self) -> bool {
+    pub fn is_shifted(&self) -> bool {
         self.scrambled
     }
 
@@ -414,7 +414,7 @@ mod tests {
                 .map(|i| [sobol_u32(i, 0), sobol_u32(i, 1)])
                 .collect();
             sobol_oracle::assert_elementary_intervals(&pts, m);
-            let s = Sobol::with_scramble(2, 99).unwrap();
+            let s = Sobol::with_digital_shift(2, 99).unwrap();
             let pts: std::vec::Vec<[u32; 2]> = (0..1u64 << m)
                 .map(|i| [s.sample_u32(i, 0), s.sample_u32(i, 1)])
                 .collect();
@@ -474,10 +474,10 @@ mod tests {
     }
 
     #[test]
-    fn is_scrambled_says_which_constructor_made_it() {
-        assert!(!Sobol::new(3).unwrap().is_scrambled());
+    fn is_shifted_says_which_constructor_made_it() {
+        assert!(!Sobol::new(3).unwrap().is_shifted());
         for seed in [0, 1, u64::MAX] {
-            assert!(Sobol::with_scramble(3, seed).unwrap().is_scrambled());
+            assert!(Sobol::with_digital_shift(3, seed).unwrap().is_shifted());
         }
     }
 
@@ -510,8 +510,8 @@ mod tests {
     #[test]
     fn scramble_is_a_per_dimension_xor() {
         let plain = Sobol::new(16).unwrap();
-        let a = Sobol::with_scramble(16, 1).unwrap();
-        let b = Sobol::with_scramble(16, 2).unwrap();
+        let a = Sobol::with_digital_shift(16, 1).unwrap();
+        let b = Sobol::with_digital_shift(16, 2).unwrap();
         for d in 0..16 {
             let shift = a.sample_u32(0, d);
             for i in [1u64, 2, 77, 4095] {
@@ -525,7 +525,7 @@ mod tests {
 
     #[test]
     fn fill_equals_repeated_sample_and_checks_sizes() {
-        for s in [Sobol::new(7).unwrap(), Sobol::with_scramble(7, 3).unwrap()] {
+        for s in [Sobol::new(7).unwrap(), Sobol::with_digital_shift(7, 3).unwrap()] {
             for first in [0u64, 1, 5, 1023, (1 << 32) - 40] {
                 for dims in 1..=7u32 {
                     let mut buf = [0.0f32; 7 * 40];
@@ -558,7 +558,7 @@ mod tests {
     proptest::proptest! {
         #[test]
         fn values_in_unit_interval(index: u64, dim: u32, seed: u64) {
-            for s in [Sobol::new(1024).unwrap(), Sobol::with_scramble(1024, seed).unwrap()] {
+            for s in [Sobol::new(1024).unwrap(), Sobol::with_digital_shift(1024, seed).unwrap()] {
                 let x = s.sample(index, dim);
                 proptest::prop_assert!((0.0..1.0).contains(&x));
                 let y = s.sample_f64(index, dim);
@@ -576,7 +576,7 @@ mod tests {
         fn constructors_never_panic(dims: u32, seed: u64) {
             let ok = (1..=SOBOL_DIMS).contains(&dims);
             proptest::prop_assert_eq!(Sobol::new(dims).is_ok(), ok);
-            proptest::prop_assert_eq!(Sobol::with_scramble(dims, seed).is_ok(), ok);
+            proptest::prop_assert_eq!(Sobol::with_digital_shift(dims, seed).is_ok(), ok);
         }
     }
 }

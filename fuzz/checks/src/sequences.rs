@@ -113,9 +113,9 @@ pub fn sequences(data: &[u8]) {
         assert!(n > 0, "Hammersley::new accepted n = 0");
     }
     built("Sobol", dims, Sobol::new(dims), &check);
-    let scrambled = Sobol::with_scramble(dims, seed);
+    let scrambled = Sobol::with_digital_shift(dims, seed);
     if let Ok(s) = &scrambled {
-        assert!(s.is_scrambled());
+        assert!(s.is_shifted());
         let v = s.sample_u32(index, dim);
         let x = f64::from(s.sample(index, dim));
         let exact = f64::from(v) / 4_294_967_296.0;
@@ -124,9 +124,9 @@ pub fn sequences(data: &[u8]) {
             "Sobol::sample = {x} is not sample_u32 = {v} as a fraction"
         );
     }
-    built("Sobol::with_scramble", dims, scrambled, &check);
+    built("Sobol::with_digital_shift", dims, scrambled, &check);
     if let Ok(s) = Sobol::new(dims) {
-        assert!(!s.is_scrambled());
+        assert!(!s.is_shifted());
         // Unscrambled: the table's value for the wrapped index and dimension.
         assert_eq!(
             s.sample_u32(index, dim),

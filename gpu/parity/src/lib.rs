@@ -143,7 +143,7 @@ pub enum Job {
         /// The rotation's seed, if any.
         seed: Option<u64>,
     },
-    /// `Sobol::new(dims)` or, with a seed, `Sobol::with_scramble(dims, seed)`.
+    /// `Sobol::new(dims)` or, with a seed, `Sobol::with_digital_shift(dims, seed)`.
     Sobol {
         /// Dimensions, 1..=1024.
         dims: u32,
@@ -592,7 +592,7 @@ impl Job {
             Job::Sobol { dims, seed } => {
                 let s = match seed {
                     None => Sobol::new(dims),
-                    Some(seed) => Sobol::with_scramble(dims, seed),
+                    Some(seed) => Sobol::with_digital_shift(dims, seed),
                 }
                 .expect("valid sequence");
                 requests
