@@ -140,7 +140,9 @@ impl AnySequence {
                 AnySequence::HammersleyZaremba(HammersleyZaremba::new(s.points, s.dims)?)
             }
             K::NYQ_SEQ_SOBOL => AnySequence::Sobol(Sobol::new(s.dims)?),
-            K::NYQ_SEQ_SOBOL_SCRAMBLED => AnySequence::Sobol(Sobol::with_digital_shift(s.dims, s.seed)?),
+            K::NYQ_SEQ_SOBOL_SCRAMBLED => {
+                AnySequence::Sobol(Sobol::with_digital_shift(s.dims, s.seed)?)
+            }
             K::NYQ_SEQ_ZERO_TWO => {
                 small_dims(s.dims, 2)?;
                 AnySequence::ZeroTwo(ZeroTwo::new([0, 0]))

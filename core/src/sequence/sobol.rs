@@ -525,7 +525,10 @@ mod tests {
 
     #[test]
     fn fill_equals_repeated_sample_and_checks_sizes() {
-        for s in [Sobol::new(7).unwrap(), Sobol::with_digital_shift(7, 3).unwrap()] {
+        for s in [
+            Sobol::new(7).unwrap(),
+            Sobol::with_digital_shift(7, 3).unwrap(),
+        ] {
             for first in [0u64, 1, 5, 1023, (1 << 32) - 40] {
                 for dims in 1..=7u32 {
                     let mut buf = [0.0f32; 7 * 40];
