@@ -12,9 +12,9 @@ mod cpu_time;
 use criterion::{BenchmarkId, Criterion, Throughput, criterion_group, criterion_main};
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sampler::{
-    BestCandidateSampler, HaltonSampler, HaltonScramble, Jitter, OwenSobolSampler,
-    PixelRangeSampler, RandomSampler, Sample, SampleLayout, Sampler, SobolSampler,
-    StratifiedSampler, ZSobolSampler, ZeroTwoSampler, camera_sample,
+    BestCandidateSampler, HaltonSampler, Jitter, OwenSobolSampler, PixelRangeSampler,
+    RandomSampler, Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
+    ZeroTwoSampler, camera_sample,
 };
 use nyquist::scramble::Scramble;
 use std::hint::black_box;
@@ -65,7 +65,7 @@ fn camera_sample_bench(c: &mut Criterion<cpu_time::BenchClock>) {
     bench!("sobol", SobolSampler::new([1024, 1024], SPP, 1).unwrap());
     bench!(
         "halton",
-        HaltonSampler::new([1024, 1024], SPP, HaltonScramble::None, 1).unwrap()
+        HaltonSampler::new([1024, 1024], SPP, Scramble::None, 1).unwrap()
     );
     bench!(
         "zsobol",
@@ -132,7 +132,7 @@ fn request_and_fill_bench(c: &mut Criterion<cpu_time::BenchClock>) {
     bench!("sobol", SobolSampler::new([1024, 1024], SPP, 1).unwrap());
     bench!(
         "halton",
-        HaltonSampler::new([1024, 1024], SPP, HaltonScramble::None, 1).unwrap()
+        HaltonSampler::new([1024, 1024], SPP, Scramble::None, 1).unwrap()
     );
     bench!(
         "zsobol",

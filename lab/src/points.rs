@@ -360,9 +360,9 @@ fn pixel_mode(args: &PointsSpec) -> bool {
 fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoints> {
     use PointSetName as S;
     use nyquist::sampler::{
-        AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-        OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler,
-        ZSobolSampler, ZeroTwoSampler,
+        AdaptiveSampler, BestCandidateSampler, HaltonSampler, HammersleySampler, OwenSobolSampler,
+        Pmj02Sampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
+        ZeroTwoSampler,
     };
     let n = args.sampler.name();
     let dims = dims_of(args);
@@ -469,9 +469,9 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
                 resolution,
                 spp,
                 if args.seed == 0 {
-                    HaltonScramble::None
+                    nyquist::scramble::Scramble::None
                 } else {
-                    HaltonScramble::PermuteDigits
+                    nyquist::scramble::Scramble::PermuteDigits
                 },
                 args.seed,
             )

@@ -7,7 +7,7 @@ use crate::hash::{self, Permutation, mix64, packed_entry, packed_table};
 use crate::math::ONE_MINUS_EPSILON;
 #[cfg(doc)]
 use crate::sampler;
-use crate::sampler::{HaltonScramble, Sampler};
+use crate::sampler::Sampler;
 use crate::scramble::Scramble;
 use crate::sequence::Sequence;
 
@@ -230,7 +230,7 @@ fn reversed_digits(b: u32, mut x: u32, n: u32) -> u32 {
 #[derive(Clone, Debug)]
 pub struct HaltonSampler<const N: usize> {
     spp: u32,
-    scramble: HaltonScramble,
+    scramble: Scramble,
     seed: u64,
     exponents: [u32; 2],
     scales: [u32; 2],
@@ -272,7 +272,7 @@ impl<const N: usize> HaltonSampler<N> {
     pub fn new(
         resolution: [u32; 2],
         spp: u32,
-        scramble: HaltonScramble,
+        scramble: Scramble,
         seed: u64,
     ) -> Result<Self, Error> {
         const { check_sampler_dims::<N>() };

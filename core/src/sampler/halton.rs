@@ -9,26 +9,6 @@ use crate::radical::{
 };
 use crate::scramble::Scramble;
 
-/// Scrambling of [`HaltonSampler`]'s values: the crate-wide [`Scramble`], under the name this
-/// module has always exported.
-///
-/// - `None`: plain radical inverses.
-/// - `PermuteDigits`: one seeded digit permutation per base
-///   ([`scrambled_radical_inverse`](crate::radical::scrambled_radical_inverse)).
-/// - `Owen`: the nested uniform scramble
-///   ([`owen_scrambled_radical_inverse`](crate::radical::owen_scrambled_radical_inverse)).
-/// - `FastOwen`: pbrt-v4 has none for Halton; here the nested scramble with affine digit
-///   permutations
-///   ([`fast_owen_scrambled_radical_inverse`](crate::radical::fast_owen_scrambled_radical_inverse)):
-///   the same two-point law as `Owen` at a fraction of its cost.
-///
-/// ```
-/// use nyquist::sampler::HaltonScramble;
-/// assert_ne!(HaltonScramble::None, HaltonScramble::PermuteDigits);
-/// assert_eq!(HaltonScramble::Owen, nyquist::scramble::Scramble::Owen);
-/// ```
-pub type HaltonScramble = Scramble;
-
 /// The largest scale per axis: pixels repeat their sample pattern every 128 (x) and 243 (y)
 /// pixels, as in pbrt.
 const MAX_RESOLUTION: u32 = 128;
@@ -56,7 +36,7 @@ fn mod_inverse(a: u64, n: u64) -> u64 {
 /// part of the scaled radical inverses; dimension `d ≥ 2` is `Φ_{prime(d)}(idx)` (dimensions
 /// wrap modulo 1024).
 ///
-/// Scrambling ([`HaltonScramble`]) applies to every dimension. In dimensions 0 and 1 it
+/// Scrambling ([`Scramble`]) applies to every dimension. In dimensions 0 and 1 it
 /// scrambles the in-pixel values `Φ₂(idx >> j)` and `Φ₃(idx / 3^k)`, the same way for every
 /// pixel, so each pixel keeps its own samples (the pixel's digits are never touched) and the
 /// samples of a pixel keep their strata: `Owen` and `FastOwen` are nested scrambles, which map
@@ -73,8 +53,9 @@ fn mod_inverse(a: u64, n: u64) -> u64 {
 /// outside it alike.
 ///
 /// ```
-/// use nyquist::sampler::{HaltonSampler, HaltonScramble, Sampler};
-/// let mut s = HaltonSampler::new([64, 64], 16, HaltonScramble::None, 0).unwrap();
+/// use nyquist::scramble::Scramble;
+/// use nyquist::sampler::{HaltonSampler, Sampler};
+/// let mut s = HaltonSampler::new([64, 64], 16, Scramble::None, 0).unwrap();
 /// // Pixel (0, 0), sample 0 is index 0: the origin.
 /// s.start_pixel_sample([0, 0], 0, 0);
 /// assert_eq!(s.get_pixel_2d(), [0.0, 0.0]);
@@ -82,7 +63,7 @@ fn mod_inverse(a: u64, n: u64) -> u64 {
 #[derive(Clone, Debug)]
 pub struct HaltonSampler {
     spp: u32,
-    scramble: HaltonScramble,
+    scramble: Scramble,
     seed: u64,
     exponents: [u32; 2],
     scales: [u64; 2],
@@ -112,13 +93,14 @@ impl HaltonSampler {
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0.
     ///
     /// ```
-    /// use nyquist::sampler::{HaltonSampler, HaltonScramble};
-    /// assert!(HaltonSampler::new([0, 4], 1, HaltonScramble::None, 0).is_err());
+    /// use nyquist::scramble::Scramble;
+    /// use nyquist::sampler::{HaltonSampler};
+    /// assert!(HaltonSampler::new([0, 4], 1, Scramble::None, 0).is_err());
     /// ```
     pub fn new(
         resolution: [u32; 2],
         spp: u32,
-        scramble: HaltonScramble,
+        scramble: Scramble,
         seed: u64,
     ) -> Result<Self, Error> {
         super::check_image(resolution, spp)?;
@@ -158,8 +140,9 @@ impl HaltonSampler {
     /// The scales `[2^j, 3^k]`: the pattern repeats every `2^j` pixels in x and `3^k` in y.
     ///
     /// ```
-    /// use nyquist::sampler::{HaltonSampler, HaltonScramble};
-    /// let s = HaltonSampler::new([100, 30], 1, HaltonScramble::None, 0).unwrap();
+    /// use nyquist::scramble::Scramble;
+    /// use nyquist::sampler::{HaltonSampler};
+    /// let s = HaltonSampler::new([100, 30], 1, Scramble::None, 0).unwrap();
     /// assert_eq!(s.scales(), [128, 81]);
     /// ```
     pub fn scales(&self) -> [u64; 2] {
@@ -169,8 +152,9 @@ impl HaltonSampler {
     /// The global Halton index of sample `sample_index` of `pixel`.
     ///
     /// ```
-    /// use nyquist::sampler::{HaltonSampler, HaltonScramble};
-    /// let s = HaltonSampler::new([2, 3], 1, HaltonScramble::None, 0).unwrap();
+    /// use nyquist::scramble::Scramble;
+    /// use nyquist::sampler::{HaltonSampler};
+    /// let s = HaltonSampler::new([2, 3], 1, Scramble::None, 0).unwrap();
     /// // 2 × 3 pixels, stride 6: pixel (1, 0) owns the indices whose base-2 last digit is 1
     /// // and whose base-3 last digit is 0 — 3, 9, 15, …
     /// assert_eq!(s.sequence_index([1, 0], 0), 3);
@@ -339,7 +323,7 @@ mod tests {
     #[test]
     fn halton_image_sample_is_the_scaled_global_point() {
         // Film position / resolution scale equals (Φ₂(idx), Φ₃(idx)) of the global sequence.
-        let s0 = HaltonSampler::new([8, 9], 4, HaltonScramble::None, 0).unwrap();
+        let s0 = HaltonSampler::new([8, 9], 4, Scramble::None, 0).unwrap();
         let mut s = s0.clone();
         let mut hit = std::vec![false; 8 * 9 * 4];
         for y in 0..9u32 {
@@ -368,7 +352,7 @@ mod tests {
 
     #[test]
     fn halton_corner_pixel_of_a_huge_image() {
-        let mut s = HaltonSampler::new([16384, 16384], 65536, HaltonScramble::None, 0).unwrap();
+        let mut s = HaltonSampler::new([16384, 16384], 65536, Scramble::None, 0).unwrap();
         let mut seen = std::vec::Vec::new();
         for dim in [0u32, 2] {
             s.start_pixel_sample([16383, 16383], 65535, dim);

@@ -120,7 +120,7 @@ pub mod layout;
 pub use adaptive::{ADAPTIVE_CHANNELS, AdaptiveSampler};
 pub use best_candidate::BestCandidateSampler;
 pub use dithered::{DITHER_MASK_RANKS, DitheredSampler, MaskView};
-pub use halton::{HaltonSampler, HaltonScramble};
+pub use halton::HaltonSampler;
 pub use hammersley::HammersleySampler;
 pub use lattice::LatticeSampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};

@@ -4,9 +4,9 @@
 use core::fmt;
 
 use super::{
-    AdaptiveSampler, BestCandidateSampler, DitheredSampler, HaltonSampler, HaltonScramble,
-    HammersleySampler, Jitter, LatticeSampler, MaskView, OwenSobolSampler, Pmj02Sampler,
-    RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
+    AdaptiveSampler, BestCandidateSampler, DitheredSampler, HaltonSampler, HammersleySampler,
+    Jitter, LatticeSampler, MaskView, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
+    SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
 };
 use crate::scramble::Scramble;
 
@@ -337,9 +337,9 @@ impl NamedSampler {
             }
             "halton" => {
                 let scramble = if seed == 0 {
-                    HaltonScramble::None
+                    Scramble::None
                 } else {
-                    HaltonScramble::PermuteDigits
+                    Scramble::PermuteDigits
                 };
                 NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?)
             }
@@ -355,7 +355,7 @@ impl NamedSampler {
                 NamedSampler::Adaptive(AdaptiveSampler::new(inner, min, ADAPTIVE_THRESHOLD)?)
             }
             "halton-plain" => {
-                NamedSampler::Halton(HaltonSampler::new(size, spp, HaltonScramble::None, 0)?)
+                NamedSampler::Halton(HaltonSampler::new(size, spp, Scramble::None, 0)?)
             }
             "sobol-plain" => NamedSampler::Sobol(SobolSampler::new(size, spp, 0)?),
             "owen-sobol" | "sobol-owen" => {
@@ -547,9 +547,9 @@ mod tests {
                             size,
                             16,
                             if seed == 0 {
-                                HaltonScramble::None
+                                Scramble::None
                             } else {
-                                HaltonScramble::PermuteDigits
+                                Scramble::PermuteDigits
                             },
                             seed,
                         )

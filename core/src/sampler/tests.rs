@@ -442,7 +442,8 @@ fn film_coordinates_stay_in_the_pixel_at_the_offset() {
 /// film coordinate rounded to 106 and was moved to 105.0, the wrong end of the pixel.
 #[test]
 fn a_far_end_offset_stays_at_the_far_end_of_its_pixel() {
-    let mut s = HaltonSampler::new([1024; 2], 16, HaltonScramble::PermuteDigits, 1).unwrap();
+    let mut s =
+        HaltonSampler::new([1024; 2], 16, crate::scramble::Scramble::PermuteDigits, 1).unwrap();
     s.start_pixel_sample([105, 51], 0, 0);
     let offset = s.get_pixel_2d();
     let c = s.camera_sample([105, 51], 0);

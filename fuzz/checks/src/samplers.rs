@@ -3,10 +3,10 @@
 
 use nyquist::Error;
 use nyquist::sampler::{
-    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HaltonScramble, HammersleySampler,
-    Jitter, NAMES, NamedSampler, NamedSamplerError, OwenSobolSampler, PixelRangeSampler,
-    Pmj02Sampler, RandomSampler, SCRAMBLE_NAMES, Sample, SampleLayout, Sampler, SobolSampler,
-    StratifiedSampler, ZSobolSampler, ZeroTwoSampler, camera_sample,
+    AdaptiveSampler, BestCandidateSampler, HaltonSampler, HammersleySampler, Jitter, NAMES,
+    NamedSampler, NamedSamplerError, OwenSobolSampler, PixelRangeSampler, Pmj02Sampler,
+    RandomSampler, SCRAMBLE_NAMES, Sample, SampleLayout, Sampler, SobolSampler, StratifiedSampler,
+    ZSobolSampler, ZeroTwoSampler, camera_sample,
 };
 use nyquist::scramble::Scramble;
 
@@ -94,9 +94,9 @@ pub fn samplers(data: &[u8]) {
         ),
         3 => {
             let scramble = if flag {
-                HaltonScramble::PermuteDigits
+                Scramble::PermuteDigits
             } else {
-                HaltonScramble::None
+                Scramble::None
             };
             let r = HaltonSampler::new(resolution, spp, scramble, seed);
             if resolution.contains(&0) {
