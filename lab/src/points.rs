@@ -478,7 +478,17 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
             .map_err(err)?,
         ),
         S::Hammersley => Box::new(
-            HammersleySampler::new(resolution, spp, args.seed != 0, args.seed).map_err(err)?,
+            HammersleySampler::new(
+                resolution,
+                spp,
+                if args.seed == 0 {
+                    nyquist::scramble::Scramble::None
+                } else {
+                    nyquist::scramble::Scramble::PermuteDigits
+                },
+                args.seed,
+            )
+            .map_err(err)?,
         ),
         S::BestCandidate => Box::new(BestCandidateSampler::new(spp, args.seed).map_err(err)?),
         S::OwenSobol => Box::new(OwenSobolSampler::new(spp, args.seed).map_err(err)?),

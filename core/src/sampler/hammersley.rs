@@ -3,7 +3,11 @@
 use super::Sampler;
 use crate::Error;
 use crate::math::clamp_unit;
-use crate::radical::{radical_inverse, scrambled_radical_inverse};
+use crate::radical::{
+    fast_owen_scrambled_radical_inverse, owen_scrambled_radical_inverse, radical_inverse,
+    scrambled_radical_inverse,
+};
+use crate::scramble::Scramble;
 
 /// Hammersley sampling over the whole image: the `N = width · H · spp` points of one Hammersley
 /// set `((k + ½)/N, Φ₂(k), Φ₃(k), Φ₅(k), …)`, scaled to `width × H` pixels, where
@@ -16,15 +20,16 @@ use crate::radical::{radical_inverse, scrambled_radical_inverse};
 /// `(px, py, s) ↦ k` is a bijection onto `0..N`: the pixels' samples together are exactly the
 /// Hammersley set (the rows `py ≥ height` of the padding are never asked for).
 ///
-/// Dimension `d ≥ 2` is `Φ_{prime(d − 1)}(k)` (base 3, 5, …; wrapping after 1024 bases), with a
-/// seeded digit permutation when `scramble` is set. `sample_index >= spp` wraps modulo `spp`,
+/// Dimension `d ≥ 2` is `Φ_{prime(d − 1)}(k)` (base 3, 5, …; wrapping after 1024 bases),
+/// scrambled under `seed` by the [`Scramble`] chosen (as the Halton sampler's dimensions are;
+/// dimensions 0 and 1 are never scrambled: they place the sample in its pixel). `sample_index >= spp` wraps modulo `spp`,
 /// `px >= width` modulo `width` and `py` modulo `H`, so every pixel argument addresses a point of
 /// the set. Index arithmetic is `u64` (`N` reaches 2⁴⁴ at 16384² pixels × 65536 spp);
 /// [`HammersleySampler::new`] refuses sizes whose `N` would not fit.
 ///
 /// ```
-/// use nyquist::sampler::{HammersleySampler, Sampler};
-/// let mut s = HammersleySampler::new([4, 4], 2, false, 0).unwrap();
+/// use nyquist::{sampler::{HammersleySampler, Sampler}, scramble::Scramble};
+/// let mut s = HammersleySampler::new([4, 4], 2, Scramble::Owen, 9).unwrap();
 /// s.start_pixel_sample([2, 3], 1, 0);
 /// let [x, y] = s.get_pixel_2d();
 /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
@@ -32,7 +37,7 @@ use crate::radical::{radical_inverse, scrambled_radical_inverse};
 #[derive(Clone, Debug)]
 pub struct HammersleySampler {
     spp: u32,
-    scramble: bool,
+    scramble: Scramble,
     seed: u64,
     j: u32,
     /// Image width in pixels (`px` wraps modulo it).
@@ -45,22 +50,28 @@ pub struct HammersleySampler {
 }
 
 impl HammersleySampler {
-    /// A Hammersley sampler for an image of `resolution` pixels; `scramble` turns on seeded
-    /// digit permutations of dimensions ≥ 2.
+    /// A Hammersley sampler for an image of `resolution` pixels, its dimensions ≥ 2 scrambled
+    /// by `scramble` under `seed` ([`Scramble::None`]: the plain set; the seed is then
+    /// ignored).
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if the
     /// point count `N = width · H · spp` does not fit a `u64`.
     ///
     /// ```
-    /// use nyquist::{sampler::HammersleySampler, Error};
-    /// assert!(HammersleySampler::new([4, 0], 1, false, 0).is_err());
+    /// use nyquist::{sampler::HammersleySampler, scramble::Scramble, Error};
+    /// assert!(HammersleySampler::new([4, 0], 1, Scramble::None, 0).is_err());
     /// assert_eq!(
-    ///     HammersleySampler::new([u32::MAX, u32::MAX], u32::MAX, false, 0).err(),
+    ///     HammersleySampler::new([u32::MAX, u32::MAX], u32::MAX, Scramble::None, 0).err(),
     ///     Some(Error::TooMany { what: "width × height × spp" })
     /// );
     /// ```
-    pub fn new(resolution: [u32; 2], spp: u32, scramble: bool, seed: u64) -> Result<Self, Error> {
+    pub fn new(
+        resolution: [u32; 2],
+        spp: u32,
+        scramble: Scramble,
+        seed: u64,
+    ) -> Result<Self, Error> {
         super::check_image(resolution, spp)?;
         let j = 32 - (resolution[1] - 1).leading_zeros();
         let column = (1u64 << j) * u64::from(spp);
@@ -86,8 +97,8 @@ impl HammersleySampler {
     /// wraps modulo `2^j`.
     ///
     /// ```
-    /// use nyquist::sampler::HammersleySampler;
-    /// let s = HammersleySampler::new([2, 2], 1, false, 0).unwrap();
+    /// use nyquist::{sampler::HammersleySampler, scramble::Scramble};
+    /// let s = HammersleySampler::new([2, 2], 1, Scramble::None, 0).unwrap();
     /// // H = 2: pixel (0, 1) takes k = rev₁(1) = 1; pixel (1, 0) takes k = 2.
     /// assert_eq!(s.point_index([0, 1], 0), 1);
     /// assert_eq!(s.point_index([1, 0], 0), 2);
@@ -112,10 +123,11 @@ impl HammersleySampler {
             1 => radical_inverse(0, self.k >> self.j),
             _ => {
                 let d = (dim - 1) % 1024;
-                if self.scramble {
-                    scrambled_radical_inverse(d, self.k, self.seed)
-                } else {
-                    radical_inverse(d, self.k)
+                match self.scramble {
+                    Scramble::None => radical_inverse(d, self.k),
+                    Scramble::PermuteDigits => scrambled_radical_inverse(d, self.k, self.seed),
+                    Scramble::FastOwen => fast_owen_scrambled_radical_inverse(d, self.k, self.seed),
+                    Scramble::Owen => owen_scrambled_radical_inverse(d, self.k, self.seed),
                 }
             }
         }
@@ -150,7 +162,7 @@ mod tests {
     /// Found by the fuzzer: pixels past the width overflowed the index; they wrap now.
     #[test]
     fn pixels_past_the_width_wrap_instead_of_overflowing() {
-        let mut s = HammersleySampler::new([17, 421_068_800], 47, false, 0).unwrap();
+        let mut s = HammersleySampler::new([17, 421_068_800], 47, Scramble::None, 0).unwrap();
         s.start_pixel_sample([1_465_358_105, 0], 3, 0);
         let a = s.get_pixel_2d();
         s.start_pixel_sample([1_465_358_105 % 17, 0], 3, 0);
@@ -159,9 +171,38 @@ mod tests {
     }
     use crate::sampler::tests::{consistent_values, threads_agree};
 
+    /// Each scramble reaches dimensions ≥ 2 only, through the radical inverse of that
+    /// scramble (base 3 for dimension 2); dimensions 0 and 1 keep the sample in its pixel.
+    #[test]
+    fn scrambles_reach_the_dimensions_above_the_pixel_only() {
+        let (pixel, i, seed) = ([3, 5], 2, 11);
+        let mut plain = HammersleySampler::new([8, 8], 4, Scramble::None, seed).unwrap();
+        plain.start_pixel_sample(pixel, i, 0);
+        let offset = plain.get_pixel_2d();
+        let k = plain.point_index(pixel, i);
+        let mut dim2 = std::vec::Vec::new();
+        for scramble in Scramble::ALL {
+            let mut s = HammersleySampler::new([8, 8], 4, scramble, seed).unwrap();
+            s.start_pixel_sample(pixel, i, 0);
+            assert_eq!(s.get_pixel_2d(), offset, "{scramble:?}");
+            let v = s.get_1d();
+            let want = match scramble {
+                Scramble::None => radical_inverse(1, k),
+                Scramble::PermuteDigits => scrambled_radical_inverse(1, k, seed),
+                Scramble::FastOwen => fast_owen_scrambled_radical_inverse(1, k, seed),
+                Scramble::Owen => owen_scrambled_radical_inverse(1, k, seed),
+            };
+            assert_eq!(v, want, "{scramble:?}");
+            dim2.push(v.to_bits());
+        }
+        dim2.sort_unstable();
+        dim2.dedup();
+        assert_eq!(dim2.len(), 4, "four scrambles, four values");
+    }
+
     #[test]
     fn hammersley_is_consistent_and_thread_independent() {
-        for scramble in [false, true] {
+        for scramble in Scramble::ALL {
             let s = HammersleySampler::new([20, 30], 8, scramble, 3).unwrap();
             consistent_values(&s);
             threads_agree(&s);
@@ -172,7 +213,7 @@ mod tests {
     fn hammersley_samples_land_in_their_pixel_and_form_the_whole_set() {
         let (w, h, spp) = (5u32, 8u32, 4u32);
         let n = u64::from(w * h * spp);
-        let mut s = HammersleySampler::new([w, h], spp, false, 0).unwrap();
+        let mut s = HammersleySampler::new([w, h], spp, Scramble::None, 0).unwrap();
         let mut hit = std::vec![false; n as usize];
         for py in 0..h {
             for px in 0..w {
@@ -196,7 +237,8 @@ mod tests {
 
     #[test]
     fn hammersley_huge_image_corner() {
-        let mut s = HammersleySampler::new([16384, 16384], 65536, true, 1).unwrap();
+        let mut s =
+            HammersleySampler::new([16384, 16384], 65536, Scramble::PermuteDigits, 1).unwrap();
         let r = crate::sampler::tests::record(&mut s, [16383, 16383], 65535);
         assert!(r.iter().all(|x| (0.0..1.0).contains(x)));
         assert_eq!(s.point_index([16383, 16383], 65535), (1u64 << 44) - 1);

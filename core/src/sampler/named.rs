@@ -344,7 +344,12 @@ impl NamedSampler {
                 NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?)
             }
             "hammersley" => {
-                NamedSampler::Hammersley(HammersleySampler::new(size, spp, seed != 0, seed)?)
+                let scramble = if seed == 0 {
+                    Scramble::None
+                } else {
+                    Scramble::PermuteDigits
+                };
+                NamedSampler::Hammersley(HammersleySampler::new(size, spp, scramble, seed)?)
             }
             "zero-two" => NamedSampler::ZeroTwo(ZeroTwoSampler::new(spp, seed)?),
             "sobol" => NamedSampler::Sobol(SobolSampler::new(size, spp, seed)?),
@@ -559,7 +564,17 @@ mod tests {
                 (
                     "hammersley",
                     std::boxed::Box::new(
-                        HammersleySampler::new(size, 16, seed != 0, seed).unwrap(),
+                        HammersleySampler::new(
+                            size,
+                            16,
+                            if seed == 0 {
+                                Scramble::None
+                            } else {
+                                Scramble::PermuteDigits
+                            },
+                            seed,
+                        )
+                        .unwrap(),
                     ),
                 ),
                 (

@@ -108,7 +108,7 @@ pub fn samplers(data: &[u8]) {
             run("HaltonSampler", spp, r, &args)
         }
         4 => {
-            let r = HammersleySampler::new(resolution, spp, flag, seed);
+            let r = HammersleySampler::new(resolution, spp, scramble, seed);
             if resolution.contains(&0) {
                 assert!(
                     r.is_err(),
