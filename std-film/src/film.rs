@@ -1,8 +1,8 @@
 //! The film: resolution, crop window, filter weights, merged pixel sums, and statistics.
 
 use crate::tile::{FilmTile, Pixel};
-use crate::weights::Weights;
 use crate::{Bounds, Error, Image};
+use nyquist::filter::{FilmTable, Weights};
 use std::sync::Arc;
 
 /// How a [`Film`] is set up.
@@ -105,7 +105,7 @@ impl TileFactory {
 #[derive(Debug)]
 pub(crate) struct Setup {
     pub(crate) pixel_bounds: Bounds,
-    pub(crate) weights: Weights,
+    pub(crate) table: FilmTable,
     pub(crate) max_component: Option<f32>,
 }
 
@@ -181,13 +181,12 @@ impl Film {
                 "crop window {c:?} covers no pixel of {w}x{h}"
             )));
         }
-        let weights = Weights::new(filter)?;
         let n = pixel_bounds.area() as usize;
         let pixels = crate::error::try_filled(n, Pixel::default(), "the film's pixels")?;
         Ok(Film {
             setup: Arc::new(Setup {
                 pixel_bounds,
-                weights,
+                table: FilmTable::new(filter)?,
                 max_component: config.max_component,
             }),
             pixels,
@@ -206,13 +205,13 @@ impl Film {
 
     /// The filter radius the film reconstructs with, `[rx, ry]` in pixels.
     pub fn filter_radius(&self) -> [f32; 2] {
-        self.setup.weights.radius()
+        self.setup.table.radius()
     }
 
     /// The filter weight the film uses at offset `(dx, dy)` from a pixel centre (the table
     /// lookup, not a direct evaluation).
     pub fn filter_weight(&self, dx: f32, dy: f32) -> f32 {
-        self.setup.weights.weight(dx, dy)
+        self.setup.table.weight(dx, dy)
     }
 
     /// Splits the film's pixels into tiles of at most `size × size`, row by row from the top
@@ -369,7 +368,7 @@ impl Film {
         let b = self.setup.pixel_bounds;
         let mut image = Image::new(b.width() as u32, b.height() as u32)
             .expect("the film has at least one pixel");
-        let integral = f64::from(self.setup.weights.integral());
+        let integral = f64::from(self.setup.table.integral());
         let splat_scale = if integral.is_finite() && integral != 0.0 {
             1.0 / integral
         } else {

@@ -22,7 +22,6 @@ mod image;
 pub mod output;
 mod render;
 mod tile;
-mod weights;
 
 pub use bounds::Bounds;
 pub use error::Error;

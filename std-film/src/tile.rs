@@ -2,8 +2,7 @@
 
 use crate::Bounds;
 use crate::film::{FilmStats, Setup, TileSpec};
-use crate::weights::{Direct, WeightSource, Weights};
-use nyquist::filter::{Axis, Filter, FilterTable, MAX_TAPS, PhaseTable};
+use nyquist::filter::{Axis, FilmTable, Filter, MAX_TAPS, PhaseTable, Weights};
 use std::sync::Arc;
 
 /// Accumulated sums of one pixel: Σ f·w·L per channel and Σ f, in `f64`.
@@ -226,11 +225,11 @@ fn phase_footprint(rows: &mut [Pixel], stride: usize, fp: &Footprint, l: [f64; 3
     );
 }
 
-/// Adds `f·l` and `f` to every pixel of the footprint, `f` from `w`. Separable sources take
-/// `nx + ny` 1D weights (once per column and row) and an outer product; the others one `xy`
-/// per pixel.
+/// Adds `f·l` and `f` to every pixel of the footprint, `f` from `w`. Separable weights take
+/// `nx + ny` 1D factors (once per column and row) and an outer product; the others one
+/// `weight` per pixel.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-fn accumulate<W: WeightSource + ?Sized>(
+fn accumulate<W: Weights + ?Sized>(
     rows: &mut [Pixel],
     stride: usize,
     fp: &Footprint,
@@ -238,15 +237,18 @@ fn accumulate<W: WeightSource + ?Sized>(
     w: &W,
 ) {
     let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
+    let separable = w.is_separable();
+    let x = |d: f32| w.weight_1d(Axis::X, d).unwrap_or(0.0);
+    let y = |d: f32| w.weight_1d(Axis::Y, d).unwrap_or(0.0);
     // Footprints up to 32 wide take the separable path; wider ones fall through.
-    if w.separable() && nx <= 32 && ny <= 32 {
+    if separable && nx <= 32 && ny <= 32 {
         let mut fx = [0.0f32; 32];
         let mut fy = [0.0f32; 32];
         for (i, f) in fx[..nx].iter_mut().enumerate() {
-            *f = w.x(fp.dx(fp.x0 + i));
+            *f = x(fp.dx(fp.x0 + i));
         }
         for (j, f) in fy[..ny].iter_mut().enumerate() {
-            *f = w.y(fp.dy(fp.y0 + j));
+            *f = y(fp.dy(fp.y0 + j));
         }
         return outer_product(rows, stride, [nx, ny], &fx, &fy, l);
     }
@@ -254,13 +256,42 @@ fn accumulate<W: WeightSource + ?Sized>(
         let dy = fp.dy(fp.y0 + j);
         for (i, p) in rows[j * stride..j * stride + nx].iter_mut().enumerate() {
             let dx = fp.dx(fp.x0 + i);
-            let f = if w.separable() {
-                f64::from(w.x(dx)) * f64::from(w.y(dy))
+            let f = if separable {
+                f64::from(x(dx)) * f64::from(y(dy))
             } else {
-                f64::from(w.xy(dx, dy))
+                f64::from(w.weight(dx, dy))
             };
             add(p, f, l);
         }
+    }
+}
+
+/// A filter evaluated directly, as weights: `eval_1d` per axis when `separable`, else `eval`.
+/// [`FilmTile::add_sample_direct`]'s source, beside the film's table.
+struct Direct<'a, F: ?Sized> {
+    filter: &'a F,
+    separable: bool,
+}
+
+impl<F: Filter + ?Sized> Weights for Direct<'_, F> {
+    fn radius(&self) -> [f32; 2] {
+        self.filter.radius()
+    }
+    fn integral(&self) -> f32 {
+        self.filter.integral()
+    }
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn weight(&self, dx: f32, dy: f32) -> f32 {
+        self.filter.eval(dx, dy)
+    }
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn weight_1d(&self, axis: Axis, d: f32) -> Option<f32> {
+        self.separable
+            .then(|| self.filter.eval_1d(axis, d).unwrap_or(0.0))
+    }
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn is_separable(&self) -> bool {
+        self.separable
     }
 }
 
@@ -467,11 +498,11 @@ enum FastPath {
 impl FastPath {
     fn for_setup(setup: &Setup) -> FastPath {
         if let Some(weight) = one_pixel_weight(setup) {
-            let narrow = setup.weights.radius().iter().any(|&r| r < 0.5);
+            let narrow = setup.table.radius().iter().any(|&r| r < 0.5);
             return FastPath::OnePixel { weight, narrow };
         }
-        match &setup.weights {
-            Weights::Phase(t)
+        match &setup.table {
+            FilmTable::Phase(t)
                 if setup.max_component.is_none()
                     && [Axis::X, Axis::Y]
                         .iter()
@@ -490,7 +521,7 @@ impl FastPath {
 /// footprint machinery is skipped. Samples on a pixel edge (a box of radius ½ reaches both
 /// neighbours) and near the stored area's border take the general path.
 fn one_pixel_weight(setup: &Setup) -> Option<f64> {
-    let Weights::Phase(t) = &setup.weights else {
+    let FilmTable::Phase(t) = &setup.table else {
         return None;
     };
     let weight = f64::from(t.constant()?);
@@ -515,7 +546,7 @@ fn reach(b: Bounds, [rx, ry]: [f32; 2]) -> Bounds {
 
 impl FilmTile {
     pub(crate) fn new(spec: TileSpec, setup: Arc<Setup>) -> FilmTile {
-        let radius = setup.weights.radius();
+        let radius = setup.table.radius();
         let b = spec.bounds;
         let grown = reach(b, radius);
         let fb = setup.pixel_bounds;
@@ -673,7 +704,7 @@ impl FilmTile {
         self.queued = 0;
         let queue = self.queue;
         let mut blocks = [None; QUEUE];
-        if let Weights::Phase(t) = &self.setup.weights {
+        if let FilmTable::Phase(t) = &self.setup.table {
             for (b, q) in blocks.iter_mut().zip(&queue[..n]) {
                 *b = block4(&self.geometry, t, q.p);
             }
@@ -751,17 +782,14 @@ impl FilmTile {
         let Some(rows) = footprint_rows(&mut self.pixels, stride, &fp) else {
             return;
         };
-        match &self.setup.weights {
-            Weights::Phase(t) => {
+        match &self.setup.table {
+            FilmTable::Phase(t) => {
                 if fp.x1 - fp.x0 == 1 && fp.y1 - fp.y0 == 1 {
                     return add(&mut rows[0], single_weight(&fp, t), l);
                 }
                 phase_footprint(rows, stride, &fp, l, t)
             }
-            Weights::Table(table) => match &**table {
-                FilterTable::Separable(t) => accumulate(rows, stride, &fp, l, t),
-                FilterTable::Full(t) => accumulate(rows, stride, &fp, l, t),
-            },
+            FilmTable::Table(t) => accumulate(rows, stride, &fp, l, t),
         }
     }
 
@@ -798,7 +826,7 @@ impl FilmTile {
             return;
         };
         let stride = self.geometry.size[0] as usize;
-        let separable = self.setup.weights.is_separable() && filter.is_separable();
+        let separable = self.setup.table.is_separable() && filter.is_separable();
         let direct = Direct { filter, separable };
         if let Some(rows) = footprint_rows(&mut self.pixels, stride, &fp) {
             accumulate(rows, stride, &fp, l, &direct);
@@ -840,7 +868,7 @@ impl FilmTile {
         }
         for y in fp.y0..fp.y1 {
             for x in fp.x0..fp.x1 {
-                let f = f64::from(self.setup.weights.weight(fp.dx(x), fp.dy(y)));
+                let f = f64::from(self.setup.table.weight(fp.dx(x), fp.dy(y)));
                 let s = &mut self.splats[y * stride + x];
                 for c in 0..3 {
                     s[c] += f * f64::from(rgb[c]);
@@ -927,7 +955,7 @@ mod tests {
         let cfg = FilmConfig::new(16, 16);
         let t = tile_for(&Mitchell::default(), cfg);
         assert_eq!(t.fast, FastPath::Block4);
-        let Weights::Phase(table) = &t.setup.weights else {
+        let FilmTable::Phase(table) = &t.setup.table else {
             panic!("Mitchell has a phase table");
         };
         let taken = |p: [f32; 2]| block4(&t.geometry, table, p).is_some();

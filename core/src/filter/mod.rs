@@ -16,10 +16,14 @@
 //! Every built-in filter is separable, `f(x, y) = f(x)·f(y)` with a radius per axis.
 //!
 //! - [`FilterTable`] tabulates any filter once (separable: two 1D tables; otherwise a full 2D
-//!   table) for a branch-free lookup; [`FilterTable::footprint`] fills every weight of one
-//!   sample's footprint at once; [`TableView`] is its size-erased view.
+//!   table) for a branch-free lookup; [`Table::footprint`] fills every weight of one sample's
+//!   footprint at once. [`SeparableTable`], [`Table2d`] and the size-erased [`TableView`] are
+//!   the same [`Table`] over other storages: one implementation, the same bits.
 //! - [`PhaseTable`] tabulates a separable filter by footprint phase: all of a sample's weights
 //!   along an axis come from one interpolated row (the film's fast path, radii below 8).
+//! - [`FilmTable`] is the table a film reads: the phase table where it holds the filter, a
+//!   64-entry [`FilterTable`] elsewhere. Every table implements [`Weights`], the one interface
+//!   a film accumulates through.
 //! - [`FilterSampler`] draws offsets with density ∝ `|f|` and returns the weight `f/pdf`
 //!   (pbrt-v4's filter importance sampling).
 //! - [`FilterKind`] gathers the built-ins for configuration, with a parser for command-line specs
@@ -45,6 +49,7 @@
 use crate::Error;
 
 mod boxcar;
+mod film_table;
 mod gaussian;
 mod kind;
 mod lanczos;
@@ -53,19 +58,22 @@ mod phase;
 mod sample;
 mod table;
 mod triangle;
+mod weights;
 
 #[cfg(test)]
 mod tests;
 
 pub use boxcar::Boxcar;
+pub use film_table::FilmTable;
 pub use gaussian::Gaussian;
 pub use kind::{FilterKind, SpecError};
 pub use lanczos::{Lanczos, sinc};
 pub use mitchell::Mitchell;
 pub use phase::{MAX_TAPS, PHASES, PhaseTable};
 pub use sample::{FilterSample, FilterSampler};
-pub use table::{FilterTable, Interpolation, SeparableTable, Table2d, TableView};
+pub use table::{FilterTable, Interpolation, SeparableTable, Table, Table2d, TableView, storage};
 pub use triangle::Triangle;
+pub use weights::Weights;
 
 /// The smallest radius a built-in filter accepts, `2⁻¹⁶` pixels.
 ///

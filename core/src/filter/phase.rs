@@ -30,7 +30,7 @@
 //! [`FilterTable`]: super::FilterTable
 
 use super::table::{MAGIC, MAGIC_BITS, constant_weight, finite_or_zero, mask, table_radius};
-use super::{Axis, Filter};
+use super::{Axis, Filter, Weights};
 use crate::Error;
 
 /// Phases per pixel of a [`PhaseTable`]: its grid spacing is 1/64 pixel.
@@ -447,6 +447,35 @@ impl PhaseTable {
     /// ```
     pub fn integral(&self) -> f32 {
         self.integral
+    }
+}
+
+impl Weights for PhaseTable {
+    fn radius(&self) -> [f32; 2] {
+        self.radius
+    }
+
+    fn integral(&self) -> f32 {
+        self.integral
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn weight(&self, dx: f32, dy: f32) -> f32 {
+        PhaseTable::weight(self, dx, dy)
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn weight_1d(&self, axis: Axis, d: f32) -> Option<f32> {
+        Some(PhaseTable::weight_1d(self, axis, d))
+    }
+
+    fn is_separable(&self) -> bool {
+        true
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        PhaseTable::footprint(self, d0, nx, out)
     }
 }
 

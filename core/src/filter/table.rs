@@ -1,49 +1,7 @@
-//! Precomputed filter tables: the film's per-sample weight lookup.
-//!
-//! A table samples the filter at `N` points per axis, `xᵢ ≈ i·r/(N − 1)` for `i = 0 … N − 1`
-//! (both the centre and the radius are sample points), over the quadrant `[0, rx] × [0, ry]`;
-//! lookups fold the offset with `|·|`, so the filter is assumed even on each axis (pbrt-v2/v3
-//! make the same assumption; every practical reconstruction filter is). The default `N = 16`
-//! is pbrt-v2/v3's size.
-//!
-//! Lookups are exactly 0 past the radius and for NaN or infinite offsets, and exact (bit for
-//! bit) at the sample points: `weight(xᵢ, yⱼ) == eval(xᵢ, yⱼ)` where `xᵢ` is
-//! [`sample_point`](SeparableTable::sample_point). Elsewhere the error against direct evaluation
-//! at the default size, measured over a 2001 × 2001 grid on `[−r, r]²` (the test
-//! `documented_table_error_bounds` holds these bounds):
-//!
-//! | filter (defaults) | peak | nearest: max abs error | linear: max abs error |
-//! |---|---|---|---|
-//! | box, r = ½ | 1 | 0 | 0 |
-//! | triangle, r = 2 | 4 | 0.26 | 7.2e-7 (rounding only) |
-//! | gaussian, r = 2, α = 2 | 1 | 0.113 | 0.0171 |
-//! | mitchell, r = 2, B = C = ⅓ | 0.79 | 0.089 | 0.0138 |
-//! | lanczos, r = 4, τ = 3 | 1 | 0.223 | 0.0575 |
-//!
-//! Linear error falls about 4× per doubling of `N` (Lanczos at `N = 256`: below 5·10⁻⁴).
-//! Linear interpolation is the default ([`Interpolation::Linear`]); it is exact for the box and
-//! the triangle (piecewise bilinear) and costs one more multiply-add per axis.
-//!
-//! # Speed
-//!
-//! Every lookup is branch-free apart from never-taken bounds checks: the coordinate is clamped
-//! with one `min`, the cell found by the `1.5·2²³` rounding trick (no saturating float-to-int
-//! conversion), and the radius test is a 0/1 factor, so NaN and offsets past the radius cost
-//! the same as any other. Entries are finite and capped at `2⁶²`, so that factor yields an
-//! exact 0. Measured per weight on the project's shared 2-core bench machine (x86-64 baseline
-//! SSE2, `cargo bench -p nyquist --bench filter`, 16 entries, medians of runs): a single
-//! [`weight`](FilterTable::weight) call costs about 1.9 ns nearest and 3.9 ns linear, the same
-//! through a [`TableView`]; isolated lookups do not reach 1 ns, and the Mitchell cubic
-//! evaluated directly (about 2.7 ns) beats its linear lookup. The fast path is
-//! [`footprint`](FilterTable::footprint) (also on [`SeparableTable`], [`Table2d`] and
-//! [`TableView`]): it computes the `nx` x factors and `ny` y factors of one sample, four lanes
-//! at a time, and writes their outer product — about 0.6 ns per weight for Lanczos (8 × 8
-//! pixels, direct 5.3 ns) and 1.7 ns for Mitchell, Gaussian and triangle (4 × 4, direct 3.0,
-//! 13 and 1.0 ns). A 1 × 1 footprint (the box) is all call overhead (about 11 ns): use
-//! [`weight`](FilterTable::weight) there. Code that accumulates pixel by pixel
-//! can do the same with [`weight_1d`](FilterTable::weight_1d) per row and column.
+//! Precomputed filter tables: [`Table`] over its storages, the lookups every form shares, and
+//! the lookup kernel [`PhaseTable`](super::PhaseTable) reuses.
 
-use super::{Axis, Filter, radius_or_zero};
+use super::{Axis, Filter, Weights, radius_or_zero};
 use crate::Error;
 
 /// How a table reads between its sample points.
@@ -164,7 +122,7 @@ pub(super) const MAGIC_BITS: u32 = 0x4B40_0000;
 /// x86-64): entries per axis `n`, the last coordinate `n − 1`, the last cell `n − 2` and the
 /// snap tolerance `(n − 1)·2⁻²¹`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Grid {
+pub struct Grid {
     n: usize,
     last: f32,
     last_cell: f32,
@@ -437,7 +395,7 @@ pub(super) fn one_weight(nx: usize, out: &mut [f32]) -> Option<&mut f32> {
 /// `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`, one lookup per weight (2D tables and tiny
 /// footprints). Offsets counted in floats as in [`factors_into`].
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-fn per_weight(
+pub(super) fn per_weight(
     d0: [f32; 2],
     [nx, ny]: [usize; 2],
     out: &mut [f32],
@@ -511,8 +469,244 @@ fn separable_batch(
     }
 }
 
-/// A separable filter's table: two 1D tables of `N` entries each (default 16), stored inline.
-/// Allocates: no; size `8·N + 24` bytes.
+/// Where a [`Table`]'s entries live. Each storage is one form of table; the lookups are the
+/// same code over all of them ([`Table`]).
+///
+/// ```
+/// use nyquist::filter::{storage, FilterTable, Interpolation, Mitchell, Table};
+/// // `FilterTable<16>` is the table over `storage::Either<16>`.
+/// let t: Table<storage::Either<16>> = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+/// assert_eq!(t.len(), 16);
+/// ```
+pub mod storage {
+    use super::{Entries, Grid};
+
+    /// The storages of a [`Table`](super::Table). Sealed: the four below are all there are.
+    pub trait Storage: sealed::Sealed {}
+
+    impl<T: sealed::Sealed> Storage for T {}
+
+    pub(super) mod sealed {
+        use super::super::{Entries, Grid};
+
+        /// What the lookups read from a storage: the per-size constants and the entries.
+        pub trait Sealed {
+            /// The lookup constants of the entries' size (a constant for the inline forms).
+            fn grid(&self) -> Grid;
+            /// The entries: two 1D tables or one row-major 2D table.
+            fn entries(&self) -> Entries<'_>;
+        }
+    }
+
+    /// Two inline 1D tables of `N` entries each, x then y: the storage of
+    /// [`SeparableTable`](super::SeparableTable). Allocates: no.
+    ///
+    /// ```
+    /// use nyquist::filter::storage;
+    /// assert_eq!(size_of::<storage::Separable<16>>(), 2 * 16 * 4);
+    /// ```
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Separable<const N: usize>(pub(super) [[f32; N]; 2]);
+
+    /// One inline `N × N` table, row-major (`[j][i]`, `i` along x): the storage of
+    /// [`Table2d`](super::Table2d). Allocates: no.
+    ///
+    /// ```
+    /// use nyquist::filter::storage;
+    /// assert_eq!(size_of::<storage::Full<16>>(), 16 * 16 * 4);
+    /// ```
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Full<const N: usize>(pub(super) [[f32; N]; N]);
+
+    /// [`Separable`] or [`Full`], chosen by the filter when the table is built: the storage of
+    /// [`FilterTable`](super::FilterTable). As large as the larger, [`Full`]. Allocates: no.
+    ///
+    /// ```
+    /// use nyquist::filter::storage;
+    /// assert!(size_of::<storage::Either<16>>() >= size_of::<storage::Full<16>>());
+    /// ```
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Either<const N: usize>(pub(super) EitherForm<N>);
+
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub(super) enum EitherForm<const N: usize> {
+        Separable([[f32; N]; 2]),
+        Full([[f32; N]; N]),
+    }
+
+    /// The entries of any other storage, borrowed, with their size held as a value rather than
+    /// a type parameter: the storage of [`TableView`](super::TableView). `Copy`: a pointer or
+    /// two and a few numbers.
+    ///
+    /// ```
+    /// use nyquist::filter::{FilterTable, Interpolation, Triangle};
+    /// let t: FilterTable<64> = FilterTable::new(&Triangle::default(), Interpolation::Linear).unwrap();
+    /// let v = t.view(); // a Table<storage::View<'_>>
+    /// assert_eq!((v.len(), v.weight(0.0, 0.0)), (64, 4.0));
+    /// ```
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct View<'a> {
+        pub(super) grid: Grid,
+        pub(super) entries: Entries<'a>,
+    }
+
+    impl<const N: usize> sealed::Sealed for Separable<N> {
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn grid(&self) -> Grid {
+            const { Grid::new(N) }
+        }
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn entries(&self) -> Entries<'_> {
+            Entries::Separable(&self.0[0], &self.0[1])
+        }
+    }
+
+    impl<const N: usize> sealed::Sealed for Full<N> {
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn grid(&self) -> Grid {
+            const { Grid::new(N) }
+        }
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn entries(&self) -> Entries<'_> {
+            Entries::Full(self.0.as_flattened())
+        }
+    }
+
+    impl<const N: usize> sealed::Sealed for Either<N> {
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn grid(&self) -> Grid {
+            const { Grid::new(N) }
+        }
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn entries(&self) -> Entries<'_> {
+            match &self.0 {
+                EitherForm::Separable([x, y]) => Entries::Separable(x, y),
+                EitherForm::Full(v) => Entries::Full(v.as_flattened()),
+            }
+        }
+    }
+
+    impl sealed::Sealed for View<'_> {
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn grid(&self) -> Grid {
+            self.grid
+        }
+        #[cfg_attr(not(feature = "small-code"), inline(always))]
+        fn entries(&self) -> Entries<'_> {
+            self.entries
+        }
+    }
+}
+
+use storage::{Either, EitherForm, Full, Separable, Storage, View};
+
+/// A table's entries as the lookups read them: two 1D tables (x, y) of `n` entries each, or one
+/// row-major `n × n` table (`v[j·n + i]`, `i` along x).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Entries<'a> {
+    /// The x and the y table.
+    Separable(&'a [f32], &'a [f32]),
+    /// The 2D table.
+    Full(&'a [f32]),
+}
+
+/// A filter tabulated for branch-free lookups: the one implementation behind every table form
+/// (below), over a storage `S` ([`storage`]).
+///
+/// A table samples the filter at `N` points per axis, `xᵢ ≈ i·r/(N − 1)` for `i = 0 … N − 1`
+/// (both the centre and the radius are sample points), over the quadrant `[0, rx] × [0, ry]`;
+/// lookups fold the offset with `|·|`, so the filter is assumed even on each axis (pbrt-v2/v3
+/// make the same assumption; every practical reconstruction filter is).
+///
+/// Lookups are exactly 0 past the radius and for NaN or infinite offsets, and exact (bit for
+/// bit) at the sample points: `weight(xᵢ, yⱼ) == eval(xᵢ, yⱼ)` where `xᵢ` is
+/// [`sample_point`](Table::sample_point). Elsewhere the error against direct evaluation
+/// at the default size, measured over a 2001 × 2001 grid on `[−r, r]²` (the test
+/// `documented_table_error_bounds` holds these bounds):
+///
+/// | filter (defaults) | peak | nearest: max abs error | linear: max abs error |
+/// |---|---|---|---|
+/// | box, r = ½ | 1 | 0 | 0 |
+/// | triangle, r = 2 | 4 | 0.26 | 7.2e-7 (rounding only) |
+/// | gaussian, r = 2, α = 2 | 1 | 0.113 | 0.0171 |
+/// | mitchell, r = 2, B = C = ⅓ | 0.79 | 0.089 | 0.0138 |
+/// | lanczos, r = 4, τ = 3 | 1 | 0.223 | 0.0575 |
+///
+/// Linear error falls about 4× per doubling of `N` (Lanczos at `N = 256`: below 5·10⁻⁴).
+/// Linear interpolation is the default ([`Interpolation::Linear`]); it is exact for the box and
+/// the triangle (piecewise bilinear) and costs one more multiply-add per axis.
+///
+/// # One implementation over four storages
+///
+/// The lookups are written once, over a storage `S` that only says where the entries live
+/// ([`storage`]), as heapless writes `Vec<T, N>` and `VecView<T>` once over one `VecInner`. Each
+/// table form is an alias of `Table` over one storage, and the same lookup gives the same bits
+/// through every form:
+///
+/// | type | storage | entries |
+/// |---|---|---|
+/// | [`SeparableTable<N>`] | [`storage::Separable<N>`] | two inline 1D tables (`2·N` floats) |
+/// | [`Table2d<N>`] | [`storage::Full<N>`] | one inline 2D table (`N²` floats), for any filter |
+/// | [`FilterTable<N>`] | [`storage::Either<N>`] | either, chosen by the filter at construction |
+/// | [`TableView<'a>`](TableView) | [`storage::View<'a>`](storage::View) | borrowed from any of them, with no `N` in the type |
+///
+/// All of them, [`PhaseTable`](super::PhaseTable) and [`FilmTable`](super::FilmTable)
+/// implement [`Weights`](super::Weights), the interface a film accumulates through.
+///
+/// # Table size
+///
+/// `N` defaults to 16, pbrt-v2/v3's size and the C API's (`NYQ_FILTER_TABLE_SIZE`), for which the
+/// error table above is given. Tables are stored inline, on the caller's stack or in a static:
+/// a `Table2d<16>` holds 1 KB of entries, a `Table2d<64>` 16 KB, more stack than many embedded
+/// targets (this crate's `no_std`, no-alloc users) can spare. A film is the other case: each
+/// pixel is a weighted mean of many samples, so the table's interpolation error does not average
+/// out but biases the converged image: where a film does not read a phase table it reads 64
+/// entries per axis ([`FilmTable`](super::FilmTable)'s default, a linear error about 16× below
+/// 16 entries').
+/// Choose `N` per table: `FilterTable::<64>::new(…)`.
+///
+/// # Speed
+///
+/// Every lookup is branch-free apart from never-taken bounds checks: the coordinate is clamped
+/// with one `min`, the cell found by the `1.5·2²³` rounding trick (no saturating float-to-int
+/// conversion), and the radius test is a 0/1 factor, so NaN and offsets past the radius cost
+/// the same as any other. Entries are finite and capped at `2⁶²`, so that factor yields an
+/// exact 0. A single [`weight`](Table::weight) costs about as much as evaluating a cheap filter
+/// directly. The fast path is [`footprint`](Table::footprint): it computes the `nx` x factors
+/// and `ny` y factors of one sample, four lanes at a time, and writes their outer product, a
+/// fraction of a lookup per weight for separable tables. A 1 × 1 footprint (the box) is all
+/// call overhead: use [`weight`](Table::weight) there. Code that accumulates pixel by pixel can
+/// do the same with [`weight_1d`](SeparableTable::weight_1d) per row and column. Measured
+/// figures, and the commands that measure them, are in `docs/performance.md` (section "Filter
+/// tables").
+///
+/// # Examples
+///
+/// ```
+/// use nyquist::filter::{Filter, FilterTable, Interpolation, Lanczos};
+/// let l = Lanczos::default();
+/// let table: FilterTable = FilterTable::new(&l, Interpolation::Linear).unwrap();
+/// assert!(table.is_separable());
+/// assert!((table.weight(1.3, -0.2) - l.eval(1.3, -0.2)).abs() <= 0.0575);
+/// assert_eq!(table.weight(4.001, 0.0), 0.0);
+/// assert_eq!(table.view().weight(1.3, -0.2), table.weight(1.3, -0.2));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Table<S> {
+    radius: [f32; 2],
+    scale: [f32; 2],
+    integral: f32,
+    interp: Interpolation,
+    /// Each axis's value when every entry of both axes equals its axis's first (a box; separable
+    /// entries only): a one-weight [`footprint`](Table::footprint) then answers it with no
+    /// lookup. (Checked in `weight` itself, the branch slowed every other table's lookup by a
+    /// fifth.)
+    constant: Option<[f32; 2]>,
+    values: S,
+}
+
+/// A separable filter's table: two 1D tables of `N` entries each (default 16, see the
+/// [`Table`] docs), stored inline. Allocates: no; size `8·N + 36` bytes.
 ///
 /// # Examples
 ///
@@ -522,18 +716,81 @@ fn separable_batch(
 /// let t: SeparableTable = SeparableTable::new(&g, Interpolation::Linear).unwrap();
 /// assert!((t.weight(0.3, 1.1) - g.eval(0.3, 1.1)).abs() <= 0.0171);
 /// assert_eq!(t.weight(2.01, 0.0), 0.0);
+/// assert_eq!(size_of::<SeparableTable<16>>(), 8 * 16 + 36);
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SeparableTable<const N: usize = 16> {
-    values: [[f32; N]; 2],
-    radius: [f32; 2],
-    scale: [f32; 2],
-    integral: f32,
+pub type SeparableTable<const N: usize = 16> = Table<Separable<N>>;
+
+/// A full 2D table of `N × N` entries (default 16 × 16) over `[0, rx] × [0, ry]`, for filters
+/// that are not separable. Allocates: no; size `4·N² + 36` bytes.
+///
+/// ```
+/// use nyquist::filter::{Filter, Interpolation, Table2d, Triangle};
+/// // Any filter can use a 2D table, separable or not.
+/// let t: Table2d = Table2d::new(&Triangle::default(), Interpolation::Linear).unwrap();
+/// assert!((t.weight(0.3, 1.7) - Triangle::default().eval(0.3, 1.7)).abs() < 1e-5);
+/// assert_eq!(size_of::<Table2d<16>>(), 4 * 16 * 16 + 36);
+/// ```
+pub type Table2d<const N: usize = 16> = Table<Full<N>>;
+
+/// A filter table that picks its layout: two 1D tables ([`SeparableTable`]'s) for separable
+/// filters, a 2D table ([`Table2d`]'s) otherwise. As large as a [`Table2d<N>`]. Allocates: no.
+///
+/// ```
+/// use nyquist::filter::{Filter, FilterTable, Interpolation, Lanczos};
+/// let l = Lanczos::default();
+/// let table: FilterTable = FilterTable::new(&l, Interpolation::Linear).unwrap();
+/// assert!(table.is_separable());
+/// assert!((table.weight(1.3, -0.2) - l.eval(1.3, -0.2)).abs() <= 0.0575);
+/// assert_eq!(table.weight(4.001, 0.0), 0.0);
+/// ```
+pub type FilterTable<const N: usize = 16> = Table<Either<N>>;
+
+/// A borrowed, size-erased view of any table ([`FilterTable`], [`SeparableTable`],
+/// [`Table2d`]): the same lookups, without the const generic. `Copy`; from
+/// [`Table::view`].
+///
+/// ```
+/// use nyquist::filter::{FilterTable, Interpolation, TableView, Triangle};
+/// fn centre(view: TableView<'_>) -> f32 { view.weight(0.0, 0.0) }
+/// let t: FilterTable<64> = FilterTable::new(&Triangle::default(), Interpolation::Linear).unwrap();
+/// assert_eq!(centre(t.view()), 4.0);
+/// ```
+pub type TableView<'a> = Table<View<'a>>;
+
+/// Validates the filter and tabulates it: the radius (finite and `> 0`), the separable form
+/// when `separable` asks for it, the scale for `n` entries per axis, then `values(radius,
+/// scale)` and the integral.
+fn tabulate<F: Filter + ?Sized, S>(
+    filter: &F,
     interp: Interpolation,
-    /// Each axis's value when every entry of both axes equals its axis's first (a box): a
-    /// one-weight [`footprint`](SeparableTable::footprint) then answers it with no lookup.
-    /// (Checked in `weight` itself, the branch slowed every other table's lookup by a fifth.)
-    constant: Option<[f32; 2]>,
+    n: usize,
+    separable: bool,
+    values: impl FnOnce([f32; 2], [f32; 2]) -> S,
+) -> Result<Table<S>, Error> {
+    let radius = table_radius(filter)?;
+    if separable && !filter.is_separable() {
+        return Err(Error::OutOfRange {
+            what: "filter (not separable)",
+        });
+    }
+    let scale = [table_scale(radius[0], n), table_scale(radius[1], n)];
+    let values = values(radius, scale);
+    Ok(Table {
+        radius,
+        scale,
+        integral: filter.integral(),
+        interp,
+        constant: None,
+        values,
+    })
+}
+
+/// `2 ≤ N < 2²²`, checked at compile time by the constructors.
+const fn check_size<const N: usize>() {
+    assert!(
+        N >= 2 && N < 1 << 22,
+        "a filter table needs 2 ≤ N < 2²² entries per axis"
+    );
 }
 
 impl<const N: usize> SeparableTable<N> {
@@ -554,59 +811,25 @@ impl<const N: usize> SeparableTable<N> {
         filter: &F,
         interp: Interpolation,
     ) -> Result<SeparableTable<N>, Error> {
-        const {
-            assert!(
-                N >= 2 && N < 1 << 22,
-                "a filter table needs 2 ≤ N < 2²² entries per axis"
-            )
-        };
-        let radius = table_radius(filter)?;
-        if !filter.is_separable() {
-            return Err(Error::OutOfRange {
-                what: "filter (not separable)",
-            });
-        }
-        let scale = [table_scale(radius[0], N), table_scale(radius[1], N)];
-        let mut values = [[0.0f32; N]; 2];
-        for (a, axis) in [Axis::X, Axis::Y].into_iter().enumerate() {
-            for (i, v) in values[a].iter_mut().enumerate() {
-                let x = table_point(i, N, radius[a], scale[a]);
-                *v = finite_or_zero(filter.eval_1d(axis, x).unwrap_or(0.0));
+        const { check_size::<N>() };
+        let mut table = tabulate(filter, interp, N, true, |radius, scale| {
+            let mut values = [[0.0f32; N]; 2];
+            for (a, axis) in [Axis::X, Axis::Y].into_iter().enumerate() {
+                for (i, v) in values[a].iter_mut().enumerate() {
+                    let x = table_point(i, N, radius[a], scale[a]);
+                    *v = finite_or_zero(filter.eval_1d(axis, x).unwrap_or(0.0));
+                }
             }
-        }
-        Ok(SeparableTable {
-            values,
-            radius,
-            scale,
-            integral: filter.integral(),
-            interp,
-            constant: constant_axes(&values[0], &values[1]),
-        })
-    }
-
-    /// The weight at offset `(dx, dy)` from the pixel centre: the product of the two 1D lookups.
-    /// 0 past the radius and for NaN or infinite offsets. This is the film's hot path.
-    ///
-    /// ```
-    /// use nyquist::filter::{Boxcar, Interpolation, SeparableTable};
-    /// let t: SeparableTable = SeparableTable::new(&Boxcar::default(), Interpolation::Linear).unwrap();
-    /// assert_eq!(t.weight(0.25, -0.5), 1.0);
-    /// assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
-    /// ```
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub fn weight(&self, dx: f32, dy: f32) -> f32 {
-        let (ax, ay) = (dx.abs(), dy.abs());
-        // Look up unconditionally (coordinates are clamped), then mask: no branch to mispredict.
-        let g = const { Grid::new(N) };
-        let cx = g.coord(ax, self.scale[0]);
-        let cy = g.coord(ay, self.scale[1]);
-        let wx = lookup_1d(&self.values[0], g, cx, self.interp) * mask(ax <= self.radius[0]);
-        let wy = lookup_1d(&self.values[1], g, cy, self.interp) * mask(ay <= self.radius[1]);
-        wx * wy
+            Separable(values)
+        })?;
+        let [x, y] = &table.values.0;
+        table.constant = constant_axes(x, y);
+        Ok(table)
     }
 
     /// The 1D factor along `axis` at offset `d`, so that
-    /// `weight(dx, dy) == weight_1d(X, dx) * weight_1d(Y, dy)` (the same product).
+    /// `weight(dx, dy) == weight_1d(X, dx) * weight_1d(Y, dy)` (the same product). (The
+    /// [`Weights`] form returns it as `Some`, as other tables may have no such factor.)
     ///
     /// ```
     /// use nyquist::filter::{Axis, Interpolation, SeparableTable, Triangle};
@@ -616,10 +839,10 @@ impl<const N: usize> SeparableTable<N> {
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> f32 {
         let a = axis.index();
-        let g = const { Grid::new(N) };
+        let v = &self.values.0[a];
         factor(
-            &self.values[a],
-            g,
+            v,
+            const { Grid::new(N) },
             self.radius[a],
             self.scale[a],
             self.interp,
@@ -627,101 +850,8 @@ impl<const N: usize> SeparableTable<N> {
         )
     }
 
-    /// The weights at many offsets at once: `out[i] = weight(dx[i], dy[i])`, the same values as
-    /// per-offset [`weight`](Self::weight) calls, four lanes at a time (for splatting batches
-    /// of samples, or evaluating the filter over any set of points).
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
-    ///
-    /// ```
-    /// use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
-    /// let t: SeparableTable = SeparableTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
-    /// let (dx, dy) = ([0.1, -1.3, 2.5, 0.7, f32::NAN], [0.0, 0.4, 0.2, -1.9, 0.0]);
-    /// let mut w = [0.0f32; 5];
-    /// t.weights(&dx, &dy, &mut w).unwrap();
-    /// assert!((0..5).all(|i| w[i] == t.weight(dx[i], dy[i])));
-    /// assert!(t.weights(&dx, &dy[..4], &mut w).is_err());
-    /// ```
-    pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
-        self.view().weights(dx, dy, out)
-    }
-
-    /// The weights of a whole footprint: `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)` for
-    /// `j < out.len() / nx` — the offsets from one sample to a block of pixel centres. The same
-    /// values as per-weight [`weight`](Self::weight) calls, from
-    /// `nx + ny` 1D lookups and one multiply per weight: the film's fast path, well under the
-    /// cost of a lookup per weight.
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
-    ///
-    /// ```
-    /// use nyquist::filter::{Interpolation, Lanczos, SeparableTable};
-    /// let t: SeparableTable = SeparableTable::new(&Lanczos::default(), Interpolation::Linear).unwrap();
-    /// let mut w = [0.0f32; 8 * 8];
-    /// t.footprint([-3.6, -3.1], 8, &mut w).unwrap();
-    /// assert_eq!(w[5 * 8 + 2], t.weight(-3.6 + 2.0, -3.1 + 5.0));
-    /// ```
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        if let Some(w) = one_weight(nx, &mut *out) {
-            // A constant table (a box) answers its constant, exactly and with no lookup.
-            *w = match self.constant {
-                Some(c) => constant_weight(c, self.radius, d0[0].abs(), d0[1].abs()),
-                None => self.weight(d0[0], d0[1]),
-            };
-            return Ok(());
-        }
-        self.footprint_many(d0, nx, out)
-    }
-
-    /// [`footprint`](Self::footprint) past the one-weight case.
-    #[inline]
-    fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        let ny = check_footprint(nx, out)?;
-        if out.len() < SMALL_FOOTPRINT {
-            per_weight(
-                d0,
-                [nx, ny],
-                out,
-                #[cfg_attr(not(feature = "small-code"), inline(always))]
-                |x, y| self.weight(x, y),
-            );
-            return Ok(());
-        }
-        let g = const { Grid::new(N) };
-        let [vx, vy] = &self.values;
-        let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
-        match self.interp {
-            Interpolation::Nearest => outer_product(
-                d0,
-                [nx, ny],
-                out,
-                #[cfg_attr(not(feature = "small-code"), inline(always))]
-                |d| factor4(vx, g, rx, sx, Interpolation::Nearest, d),
-                #[cfg_attr(not(feature = "small-code"), inline(always))]
-                |d| factor(vx, g, rx, sx, Interpolation::Nearest, d),
-                #[cfg_attr(not(feature = "small-code"), inline(always))]
-                |d| factor4(vy, g, ry, sy, Interpolation::Nearest, d),
-            ),
-            Interpolation::Linear => outer_product(
-                d0,
-                [nx, ny],
-                out,
-                #[cfg_attr(not(feature = "small-code"), inline(always))]
-                |d| factor4(vx, g, rx, sx, Interpolation::Linear, d),
-                #[cfg_attr(not(feature = "small-code"), inline(always))]
-                |d| factor(vx, g, rx, sx, Interpolation::Linear, d),
-                #[cfg_attr(not(feature = "small-code"), inline(always))]
-                |d| factor4(vy, g, ry, sy, Interpolation::Linear, d),
-            ),
-        }
-        Ok(())
-    }
-
     /// The stored values along `axis`: entry `i` is the filter's 1D factor at
-    /// [`sample_point(axis, i)`](Self::sample_point).
+    /// [`sample_point(axis, i)`](Table::sample_point).
     ///
     /// ```
     /// use nyquist::filter::{Axis, Boxcar, Interpolation, SeparableTable};
@@ -729,74 +859,8 @@ impl<const N: usize> SeparableTable<N> {
     /// assert_eq!(t.values(Axis::X), &[1.0; 16]);
     /// ```
     pub fn values(&self, axis: Axis) -> &[f32; N] {
-        &self.values[axis.index()]
+        &self.values.0[axis.index()]
     }
-
-    /// The offset of sample `i` along `axis` (`i ≥ N` gives the radius).
-    ///
-    /// ```
-    /// use nyquist::filter::{Axis, Interpolation, SeparableTable, Triangle};
-    /// let t: SeparableTable = SeparableTable::new(&Triangle::default(), Interpolation::Linear).unwrap();
-    /// assert_eq!(t.sample_point(Axis::X, 0), 0.0);
-    /// assert_eq!(t.sample_point(Axis::X, 15), 2.0);
-    /// ```
-    pub fn sample_point(&self, axis: Axis, i: usize) -> f32 {
-        let a = axis.index();
-        table_point(i.min(N - 1), N, self.radius[a], self.scale[a])
-    }
-
-    /// The filter's radius `[rx, ry]`.
-    pub fn radius(&self) -> [f32; 2] {
-        self.radius
-    }
-
-    /// The filter's integral (from [`Filter::integral`] at build time).
-    pub fn integral(&self) -> f32 {
-        self.integral
-    }
-
-    /// The interpolation chosen at build time.
-    pub fn interpolation(&self) -> Interpolation {
-        self.interp
-    }
-
-    /// A size-erased view, so code that holds tables need not be generic over `N`.
-    ///
-    /// ```
-    /// use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
-    /// let t: SeparableTable = SeparableTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
-    /// assert_eq!(t.view().weight(0.4, 0.9), t.weight(0.4, 0.9));
-    /// ```
-    pub fn view(&self) -> TableView<'_> {
-        TableView {
-            radius: self.radius,
-            scale: self.scale,
-            integral: self.integral,
-            interp: self.interp,
-            grid: Grid::new(N),
-            data: ViewData::Separable(&self.values[0], &self.values[1]),
-            constant: self.constant,
-        }
-    }
-}
-
-/// A full 2D table of `N × N` entries (default 16 × 16) over `[0, rx] × [0, ry]`, for filters that
-/// are not separable. Allocates: no; size `4·N² + 24` bytes.
-///
-/// ```
-/// use nyquist::filter::{Filter, Interpolation, Table2d, Triangle};
-/// // Any filter can use a 2D table, separable or not.
-/// let t: Table2d = Table2d::new(&Triangle::default(), Interpolation::Linear).unwrap();
-/// assert!((t.weight(0.3, 1.7) - Triangle::default().eval(0.3, 1.7)).abs() < 1e-5);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Table2d<const N: usize = 16> {
-    /// `values[j][i]`: `i` along x, `j` along y.
-    values: [[f32; N]; N],
-    radius: [f32; 2],
-    scale: [f32; 2],
-    integral: f32,
-    interp: Interpolation,
 }
 
 impl<const N: usize> Table2d<N> {
@@ -812,107 +876,21 @@ impl<const N: usize> Table2d<N> {
     /// assert!(Table2d::<8>::new(&Boxcar::default(), Interpolation::Nearest).is_ok());
     /// ```
     pub fn new<F: Filter + ?Sized>(filter: &F, interp: Interpolation) -> Result<Table2d<N>, Error> {
-        const {
-            assert!(
-                N >= 2 && N < 1 << 22,
-                "a filter table needs 2 ≤ N < 2²² entries per axis"
-            )
-        };
-        let radius = table_radius(filter)?;
-        let scale = [table_scale(radius[0], N), table_scale(radius[1], N)];
-        let mut values = [[0.0f32; N]; N];
-        for (j, row) in values.iter_mut().enumerate() {
-            let y = table_point(j, N, radius[1], scale[1]);
-            for (i, v) in row.iter_mut().enumerate() {
-                let x = table_point(i, N, radius[0], scale[0]);
-                *v = finite_or_zero(filter.eval(x, y));
+        const { check_size::<N>() };
+        tabulate(filter, interp, N, false, |radius, scale| {
+            let mut values = [[0.0f32; N]; N];
+            for (j, row) in values.iter_mut().enumerate() {
+                let y = table_point(j, N, radius[1], scale[1]);
+                for (i, v) in row.iter_mut().enumerate() {
+                    let x = table_point(i, N, radius[0], scale[0]);
+                    *v = finite_or_zero(filter.eval(x, y));
+                }
             }
-        }
-        Ok(Table2d {
-            values,
-            radius,
-            scale,
-            integral: filter.integral(),
-            interp,
+            Full(values)
         })
     }
 
-    /// The weight at offset `(dx, dy)` from the pixel centre; 0 past the radius and for NaN or
-    /// infinite offsets.
-    ///
-    /// ```
-    /// use nyquist::filter::{Interpolation, Table2d, Triangle};
-    /// let t: Table2d = Table2d::new(&Triangle::default(), Interpolation::Nearest).unwrap();
-    /// assert_eq!(t.weight(0.0, 0.0), 4.0);
-    /// assert_eq!(t.weight(0.0, -2.5), 0.0);
-    /// ```
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub fn weight(&self, dx: f32, dy: f32) -> f32 {
-        let (ax, ay) = (dx.abs(), dy.abs());
-        let inside = mask(ax <= self.radius[0]) * mask(ay <= self.radius[1]);
-        let g = const { Grid::new(N) };
-        let cx = g.coord(ax, self.scale[0]);
-        let cy = g.coord(ay, self.scale[1]);
-        lookup_2d(self.values.as_flattened(), g, cx, cy, self.interp) * inside
-    }
-
-    /// The weights at many offsets, `out[i] = weight(dx[i], dy[i])`: one 2D lookup each.
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
-    ///
-    /// ```
-    /// use nyquist::filter::{Interpolation, Table2d, Triangle};
-    /// let t: Table2d = Table2d::new(&Triangle::default(), Interpolation::Linear).unwrap();
-    /// let mut w = [0.0f32; 2];
-    /// t.weights(&[0.5, 3.0], &[-0.25, 0.0], &mut w).unwrap();
-    /// assert_eq!(w, [t.weight(0.5, -0.25), 0.0]);
-    /// ```
-    pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
-        check_batch(dx, dy, out)?;
-        for ((o, &x), &y) in out.iter_mut().zip(dx).zip(dy) {
-            *o = self.weight(x, y);
-        }
-        Ok(())
-    }
-
-    /// The weights of a whole footprint, `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`: one
-    /// bilinear (or nearest) 2D lookup per weight.
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
-    ///
-    /// ```
-    /// use nyquist::filter::{Interpolation, Table2d, Triangle};
-    /// let t: Table2d = Table2d::new(&Triangle::default(), Interpolation::Linear).unwrap();
-    /// let mut w = [0.0f32; 4 * 4];
-    /// t.footprint([-1.5, -1.5], 4, &mut w).unwrap();
-    /// assert_eq!(w[4 + 1], t.weight(-0.5, -0.5));
-    /// ```
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        if let Some(w) = one_weight(nx, &mut *out) {
-            *w = self.weight(d0[0], d0[1]);
-            return Ok(());
-        }
-        self.footprint_many(d0, nx, out)
-    }
-
-    /// [`footprint`](Self::footprint) past the one-weight case.
-    #[inline]
-    fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        let ny = check_footprint(nx, out)?;
-        per_weight(
-            d0,
-            [nx, ny],
-            out,
-            #[cfg_attr(not(feature = "small-code"), inline(always))]
-            |x, y| self.weight(x, y),
-        );
-        Ok(())
-    }
-
-    /// The stored values, `values()[j][i]` at ([`sample_point(X, i)`](Self::sample_point),
+    /// The stored values, `values()[j][i]` at ([`sample_point(X, i)`](Table::sample_point),
     /// `sample_point(Y, j)`).
     ///
     /// ```
@@ -921,67 +899,13 @@ impl<const N: usize> Table2d<N> {
     /// assert_eq!(t.values(), &[[1.0; 4]; 4]);
     /// ```
     pub fn values(&self) -> &[[f32; N]; N] {
-        &self.values
+        &self.values.0
     }
-
-    /// The offset of sample `i` along `axis` (`i ≥ N` gives the radius).
-    pub fn sample_point(&self, axis: Axis, i: usize) -> f32 {
-        let a = axis.index();
-        table_point(i.min(N - 1), N, self.radius[a], self.scale[a])
-    }
-
-    /// The filter's radius `[rx, ry]`.
-    pub fn radius(&self) -> [f32; 2] {
-        self.radius
-    }
-
-    /// The filter's integral (from [`Filter::integral`] at build time).
-    pub fn integral(&self) -> f32 {
-        self.integral
-    }
-
-    /// A size-erased view.
-    ///
-    /// ```
-    /// use nyquist::filter::{Interpolation, Table2d, Triangle};
-    /// let t: Table2d = Table2d::new(&Triangle::default(), Interpolation::Linear).unwrap();
-    /// assert_eq!(t.view().weight(0.4, 0.9), t.weight(0.4, 0.9));
-    /// ```
-    pub fn view(&self) -> TableView<'_> {
-        TableView {
-            radius: self.radius,
-            scale: self.scale,
-            integral: self.integral,
-            interp: self.interp,
-            grid: Grid::new(N),
-            data: ViewData::Full(self.values.as_flattened()),
-            constant: None,
-        }
-    }
-}
-
-/// A filter table that picks its layout: [`SeparableTable`] for separable filters, [`Table2d`]
-/// otherwise. This is what a film holds. Allocates: no.
-///
-/// ```
-/// use nyquist::filter::{Filter, FilterTable, Interpolation, Lanczos};
-/// let l = Lanczos::default();
-/// let table: FilterTable = FilterTable::new(&l, Interpolation::Linear).unwrap();
-/// assert!(table.is_separable());
-/// assert!((table.weight(1.3, -0.2) - l.eval(1.3, -0.2)).abs() <= 0.0575);
-/// assert_eq!(table.weight(4.001, 0.0), 0.0);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum FilterTable<const N: usize = 16> {
-    /// Two 1D tables.
-    Separable(SeparableTable<N>),
-    /// One 2D table.
-    Full(Table2d<N>),
 }
 
 impl<const N: usize> FilterTable<N> {
     /// Tabulates any filter, built-in or plugin, in one call: separable filters get two 1D
-    /// tables, others a 2D table.
+    /// tables ([`SeparableTable::new`]), others a 2D table ([`Table2d::new`]).
     ///
     /// # Errors
     /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0`.
@@ -997,74 +921,14 @@ impl<const N: usize> FilterTable<N> {
         interp: Interpolation,
     ) -> Result<FilterTable<N>, Error> {
         if filter.is_separable() {
-            SeparableTable::new(filter, interp).map(FilterTable::Separable)
+            SeparableTable::new(filter, interp).map(FilterTable::from)
         } else {
-            Table2d::new(filter, interp).map(FilterTable::Full)
+            Table2d::new(filter, interp).map(FilterTable::from)
         }
     }
 
-    /// The weight at offset `(dx, dy)` from the pixel centre; 0 past the radius and for NaN or
-    /// infinite offsets. Exact at the sample points.
-    ///
-    /// ```
-    /// use nyquist::filter::{Boxcar, FilterTable, Interpolation};
-    /// let t: FilterTable = FilterTable::new(&Boxcar::default(), Interpolation::Linear).unwrap();
-    /// assert_eq!(t.weight(0.1, 0.2), 1.0);
-    /// ```
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub fn weight(&self, dx: f32, dy: f32) -> f32 {
-        match self {
-            FilterTable::Separable(t) => t.weight(dx, dy),
-            FilterTable::Full(t) => t.weight(dx, dy),
-        }
-    }
-
-    /// The weights at many offsets, `out[i] = weight(dx[i], dy[i])`, four lanes at a time for
-    /// separable tables ([`SeparableTable::weights`]).
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
-    ///
-    /// ```
-    /// use nyquist::filter::{FilterTable, Interpolation, Lanczos};
-    /// let t: FilterTable = FilterTable::new(&Lanczos::default(), Interpolation::Nearest).unwrap();
-    /// let mut w = [0.0f32; 3];
-    /// t.weights(&[0.0, 1.5, 9.0], &[0.0, -2.2, 0.0], &mut w).unwrap();
-    /// assert_eq!(w, [t.weight(0.0, 0.0), t.weight(1.5, -2.2), 0.0]);
-    /// ```
-    pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
-        match self {
-            FilterTable::Separable(t) => t.weights(dx, dy, out),
-            FilterTable::Full(t) => t.weights(dx, dy, out),
-        }
-    }
-
-    /// The weights of a whole footprint, `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)` for
-    /// `j < out.len() / nx`: the offsets from one sample to a block of pixel centres. A
-    /// separable table does `nx + ny` 1D lookups and one multiply per weight
-    /// ([`SeparableTable::footprint`]); a 2D table one 2D lookup per weight. Prefer this to
-    /// per-weight [`weight`](Self::weight) calls in a film's inner loop.
-    ///
-    /// # Errors
-    /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
-    ///
-    /// ```
-    /// use nyquist::filter::{FilterTable, Interpolation, Mitchell};
-    /// let t: FilterTable = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
-    /// let mut w = [0.0f32; 16];
-    /// t.footprint([-1.7, -1.2], 4, &mut w).unwrap();
-    /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
-    /// ```
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
-        match self {
-            FilterTable::Separable(t) => t.footprint(d0, nx, out),
-            FilterTable::Full(t) => t.footprint(d0, nx, out),
-        }
-    }
-
-    /// The 1D factor along `axis` for separable tables (see [`SeparableTable::weight_1d`]),
-    /// `None` for 2D tables.
+    /// The 1D factor along `axis` when the table is separable (see
+    /// [`SeparableTable::weight_1d`]), `None` for a 2D table.
     ///
     /// ```
     /// use nyquist::filter::{Axis, Boxcar, FilterTable, Interpolation};
@@ -1073,100 +937,37 @@ impl<const N: usize> FilterTable<N> {
     /// ```
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> Option<f32> {
-        match self {
-            FilterTable::Separable(t) => Some(t.weight_1d(axis, d)),
-            FilterTable::Full(_) => None,
-        }
+        self.factor_1d(axis, d)
     }
+}
 
-    /// Whether the table is two 1D tables.
-    pub fn is_separable(&self) -> bool {
-        matches!(self, FilterTable::Separable(_))
-    }
-
-    /// The filter's radius `[rx, ry]`.
-    pub fn radius(&self) -> [f32; 2] {
-        match self {
-            FilterTable::Separable(t) => t.radius(),
-            FilterTable::Full(t) => t.radius(),
-        }
-    }
-
-    /// The filter's integral (from [`Filter::integral`] at build time).
-    pub fn integral(&self) -> f32 {
-        match self {
-            FilterTable::Separable(t) => t.integral(),
-            FilterTable::Full(t) => t.integral(),
-        }
-    }
-
-    /// A size-erased view.
+impl<const N: usize> From<SeparableTable<N>> for FilterTable<N> {
+    /// The same table, as a [`FilterTable`]: the same lookups, bit for bit.
     ///
     /// ```
-    /// use nyquist::filter::{FilterTable, Interpolation, Mitchell};
-    /// let t: FilterTable = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
-    /// let v = t.view();
-    /// assert_eq!((v.len(), v.weight(0.5, 0.5)), (16, t.weight(0.5, 0.5)));
+    /// use nyquist::filter::{FilterTable, Interpolation, Mitchell, SeparableTable};
+    /// let t = SeparableTable::<16>::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// assert_eq!(FilterTable::from(t).weight(0.3, 0.7), t.weight(0.3, 0.7));
     /// ```
-    pub fn view(&self) -> TableView<'_> {
-        match self {
-            FilterTable::Separable(t) => t.view(),
-            FilterTable::Full(t) => t.view(),
-        }
+    fn from(t: SeparableTable<N>) -> FilterTable<N> {
+        t.with_values(Either(EitherForm::Separable(t.values.0)))
     }
 }
 
-#[derive(Clone, Copy, Debug, PartialEq)]
-enum ViewData<'a> {
-    Separable(&'a [f32], &'a [f32]),
-    Full(&'a [f32]),
-}
-
-/// A borrowed, size-erased view of any table ([`FilterTable`], [`SeparableTable`],
-/// [`Table2d`]): the same lookups, without the const generic. `Copy`, two pointers and a few
-/// floats.
-///
-/// ```
-/// use nyquist::filter::{FilterTable, Interpolation, TableView, Triangle};
-/// fn centre(view: TableView<'_>) -> f32 { view.weight(0.0, 0.0) }
-/// let t: FilterTable<64> = FilterTable::new(&Triangle::default(), Interpolation::Linear).unwrap();
-/// assert_eq!(centre(t.view()), 4.0);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct TableView<'a> {
-    radius: [f32; 2],
-    scale: [f32; 2],
-    integral: f32,
-    interp: Interpolation,
-    grid: Grid,
-    data: ViewData<'a>,
-    /// The separable table's constant axes, if any (see [`SeparableTable`]).
-    constant: Option<[f32; 2]>,
+impl<const N: usize> From<Table2d<N>> for FilterTable<N> {
+    /// The same table, as a [`FilterTable`]: the same lookups, bit for bit.
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, FilterTable, Interpolation, Table2d};
+    /// let t = Table2d::<8>::new(&Boxcar::default(), Interpolation::Linear).unwrap();
+    /// assert!(!FilterTable::from(t).is_separable());
+    /// ```
+    fn from(t: Table2d<N>) -> FilterTable<N> {
+        t.with_values(Either(EitherForm::Full(t.values.0)))
+    }
 }
 
 impl TableView<'_> {
-    /// The weight at offset `(dx, dy)` from the pixel centre, identical to the table's.
-    ///
-    /// ```
-    /// use nyquist::filter::{FilterTable, Interpolation, Lanczos};
-    /// let t: FilterTable = FilterTable::new(&Lanczos::default(), Interpolation::Linear).unwrap();
-    /// assert_eq!(t.view().weight(f32::INFINITY, 0.0), 0.0);
-    /// ```
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub fn weight(&self, dx: f32, dy: f32) -> f32 {
-        let (ax, ay) = (dx.abs(), dy.abs());
-        let (mx, my) = (mask(ax <= self.radius[0]), mask(ay <= self.radius[1]));
-        let g = self.grid;
-        let cx = g.coord(ax, self.scale[0]);
-        let cy = g.coord(ay, self.scale[1]);
-        match self.data {
-            ViewData::Separable(x, y) => {
-                (lookup_1d(x, g, cx, self.interp) * mx) * (lookup_1d(y, g, cy, self.interp) * my)
-            }
-            ViewData::Full(v) => lookup_2d(v, g, cx, cy, self.interp) * (mx * my),
-        }
-    }
-
     /// The 1D factor along `axis` for separable tables (so `weight(dx, dy) ==
     /// weight_1d(X, dx)·weight_1d(Y, dy)`, the same product), `None` for 2D tables.
     ///
@@ -1179,14 +980,63 @@ impl TableView<'_> {
     /// ```
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn weight_1d(&self, axis: Axis, d: f32) -> Option<f32> {
-        let ViewData::Separable(x, y) = self.data else {
+        self.factor_1d(axis, d)
+    }
+}
+
+impl<S> Table<S> {
+    /// This table's header over other values.
+    fn with_values<T>(&self, values: T) -> Table<T> {
+        Table {
+            radius: self.radius,
+            scale: self.scale,
+            integral: self.integral,
+            interp: self.interp,
+            constant: self.constant,
+            values,
+        }
+    }
+}
+
+impl<S: Storage> Table<S> {
+    /// The weight at offset `(dx, dy)` from the pixel centre: the product of the two 1D lookups
+    /// for separable entries, one 2D lookup otherwise. 0 past the radius and for NaN or
+    /// infinite offsets; exact at the sample points.
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, Interpolation, SeparableTable};
+    /// let t: SeparableTable = SeparableTable::new(&Boxcar::default(), Interpolation::Linear).unwrap();
+    /// assert_eq!(t.weight(0.25, -0.5), 1.0);
+    /// assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
+    /// assert_eq!(t.view().weight(f32::INFINITY, 0.0), 0.0);
+    /// ```
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    pub fn weight(&self, dx: f32, dy: f32) -> f32 {
+        let (ax, ay) = (dx.abs(), dy.abs());
+        // Look up unconditionally (coordinates are clamped), then mask: no branch to mispredict.
+        let (mx, my) = (mask(ax <= self.radius[0]), mask(ay <= self.radius[1]));
+        let g = self.values.grid();
+        let cx = g.coord(ax, self.scale[0]);
+        let cy = g.coord(ay, self.scale[1]);
+        match self.values.entries() {
+            Entries::Separable(x, y) => {
+                (lookup_1d(x, g, cx, self.interp) * mx) * (lookup_1d(y, g, cy, self.interp) * my)
+            }
+            Entries::Full(v) => lookup_2d(v, g, cx, cy, self.interp) * (mx * my),
+        }
+    }
+
+    /// The 1D factor along `axis` of separable entries, `None` for 2D entries.
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn factor_1d(&self, axis: Axis, d: f32) -> Option<f32> {
+        let Entries::Separable(x, y) = self.values.entries() else {
             return None;
         };
         let a = axis.index();
         let v = if a == 0 { x } else { y };
         Some(factor(
             v,
-            self.grid,
+            self.values.grid(),
             self.radius[a],
             self.scale[a],
             self.interp,
@@ -1194,25 +1044,27 @@ impl TableView<'_> {
         ))
     }
 
-    /// The weights at many offsets, `out[i] = weight(dx[i], dy[i])`, four lanes at a time for
-    /// separable tables.
+    /// The weights at many offsets at once: `out[i] = weight(dx[i], dy[i])`, the same values as
+    /// per-offset [`weight`](Self::weight) calls, four lanes at a time for separable entries (for
+    /// splatting batches of samples, or evaluating the filter over any set of points).
     ///
     /// # Errors
     /// [`Error::BufferLength`] unless `dy` and `out` are as long as `dx`.
     ///
     /// ```
-    /// use nyquist::filter::{FilterTable, Gaussian, Interpolation};
-    /// let t: FilterTable = FilterTable::new(&Gaussian::default(), Interpolation::Linear).unwrap();
-    /// let (dx, dy) = ([0.1f32; 6], [-0.4f32; 6]);
-    /// let mut w = [0.0f32; 6];
-    /// t.view().weights(&dx, &dy, &mut w).unwrap();
-    /// assert!(w.iter().all(|&x| x == t.weight(0.1, -0.4)));
+    /// use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
+    /// let t: SeparableTable = SeparableTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// let (dx, dy) = ([0.1, -1.3, 2.5, 0.7, f32::NAN], [0.0, 0.4, 0.2, -1.9, 0.0]);
+    /// let mut w = [0.0f32; 5];
+    /// t.weights(&dx, &dy, &mut w).unwrap();
+    /// assert!((0..5).all(|i| w[i] == t.weight(dx[i], dy[i])));
+    /// assert!(t.weights(&dx, &dy[..4], &mut w).is_err());
     /// ```
     pub fn weights(&self, dx: &[f32], dy: &[f32], out: &mut [f32]) -> Result<(), Error> {
         check_batch(dx, dy, out)?;
-        let g = self.grid;
-        match self.data {
-            ViewData::Separable(vx, vy) => {
+        let g = self.values.grid();
+        match self.values.entries() {
+            Entries::Separable(vx, vy) => {
                 let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
                 let product =
                     |a: [f32; 4], b: [f32; 4]| [a[0] * b[0], a[1] * b[1], a[2] * b[2], a[3] * b[3]];
@@ -1245,7 +1097,7 @@ impl TableView<'_> {
                     ),
                 }
             }
-            ViewData::Full(_) => {
+            Entries::Full(_) => {
                 for ((o, &x), &y) in out.iter_mut().zip(dx).zip(dy) {
                     *o = self.weight(x, y);
                 }
@@ -1255,19 +1107,24 @@ impl TableView<'_> {
     }
 
     /// The weights of a whole footprint at once: `out[j·nx + i] = weight(d0[0] + i, d0[1] + j)`
-    /// for `j < out.len() / nx` — the offsets from one sample to a block of pixel centres.
-    /// Identical to calling [`weight`](Self::weight) per entry, but a separable table does
-    /// `nx + ny` 1D lookups and one multiply per weight. This is the film's fast path.
+    /// for `j < out.len() / nx`, the offsets from one sample to a block of pixel centres.
+    /// Identical to calling [`weight`](Self::weight) per entry, but separable entries take
+    /// `nx + ny` 1D lookups and one multiply per weight, well under a lookup per weight: the
+    /// film's fast path. 2D entries take one lookup per weight.
     ///
     /// # Errors
     /// [`Error::BufferLength`] unless `out.len()` is a positive multiple of `nx`.
     ///
     /// ```
-    /// use nyquist::filter::{FilterTable, Interpolation, Mitchell};
+    /// use nyquist::filter::{FilterTable, Interpolation, Lanczos, Mitchell};
     /// let t: FilterTable = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
     /// let mut w = [0.0f32; 16];
-    /// t.view().footprint([-1.7, -1.2], 4, &mut w).unwrap();
+    /// t.footprint([-1.7, -1.2], 4, &mut w).unwrap();
     /// assert_eq!(w[2 * 4 + 3], t.weight(-1.7 + 3.0, -1.2 + 2.0));
+    /// let l: FilterTable = FilterTable::new(&Lanczos::default(), Interpolation::Linear).unwrap();
+    /// let mut w = [0.0f32; 8 * 8];
+    /// l.view().footprint([-3.6, -3.1], 8, &mut w).unwrap();
+    /// assert_eq!(w[5 * 8 + 2], l.weight(-3.6 + 2.0, -3.1 + 5.0));
     /// ```
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
@@ -1283,11 +1140,12 @@ impl TableView<'_> {
     }
 
     /// [`footprint`](Self::footprint) past the one-weight case.
+    #[inline]
     fn footprint_many(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
         let ny = check_footprint(nx, out)?;
-        let g = self.grid;
-        match self.data {
-            ViewData::Separable(..) if out.len() < SMALL_FOOTPRINT => {
+        let g = self.values.grid();
+        match self.values.entries() {
+            Entries::Separable(..) if out.len() < SMALL_FOOTPRINT => {
                 per_weight(
                     d0,
                     [nx, ny],
@@ -1296,7 +1154,7 @@ impl TableView<'_> {
                     |x, y| self.weight(x, y),
                 );
             }
-            ViewData::Separable(vx, vy) => {
+            Entries::Separable(vx, vy) => {
                 let ([rx, ry], [sx, sy]) = (self.radius, self.scale);
                 // One dispatch per footprint, then monomorphic loops.
                 match self.interp {
@@ -1324,20 +1182,41 @@ impl TableView<'_> {
                     ),
                 }
             }
-            ViewData::Full(_) => per_weight(d0, [nx, ny], out, |x, y| self.weight(x, y)),
+            Entries::Full(_) => per_weight(
+                d0,
+                [nx, ny],
+                out,
+                #[cfg_attr(not(feature = "small-code"), inline(always))]
+                |x, y| self.weight(x, y),
+            ),
         }
         Ok(())
     }
 
-    /// Whether the viewed table is two 1D tables.
+    /// Whether the entries are two 1D tables (then `weight` is the product of two
+    /// [`weight_1d`](SeparableTable::weight_1d) factors).
+    ///
+    /// ```
+    /// use nyquist::filter::{FilterTable, Interpolation, Mitchell, Table2d};
+    /// let t: FilterTable = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// assert!(t.is_separable() && t.view().is_separable());
+    /// let full: Table2d = Table2d::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// assert!(!full.is_separable());
+    /// ```
     pub fn is_separable(&self) -> bool {
-        matches!(self.data, ViewData::Separable(..))
+        matches!(self.values.entries(), Entries::Separable(..))
     }
 
     /// Entries per axis (`N`).
+    ///
+    /// ```
+    /// use nyquist::filter::{FilterTable, Interpolation, Mitchell};
+    /// let t: FilterTable<32> = FilterTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// assert_eq!((t.len(), t.view().len()), (32, 32));
+    /// ```
     #[allow(clippy::len_without_is_empty)] // never empty: N ≥ 2
     pub fn len(&self) -> usize {
-        self.grid.n
+        self.values.grid().n
     }
 
     /// The offset of sample `i` along `axis` (`i ≥ len()` gives the radius).
@@ -1345,6 +1224,8 @@ impl TableView<'_> {
     /// ```
     /// use nyquist::filter::{Axis, FilterTable, Interpolation, Triangle};
     /// let t: FilterTable = FilterTable::new(&Triangle::default(), Interpolation::Linear).unwrap();
+    /// assert_eq!(t.sample_point(Axis::X, 0), 0.0);
+    /// assert_eq!(t.sample_point(Axis::X, 15), 2.0);
     /// assert_eq!(t.view().sample_point(Axis::Y, 99), 2.0);
     /// ```
     pub fn sample_point(&self, axis: Axis, i: usize) -> f32 {
@@ -1359,30 +1240,94 @@ impl TableView<'_> {
     /// ```
     /// use nyquist::filter::{FilterTable, Interpolation, Triangle};
     /// let t: FilterTable = FilterTable::new(&Triangle::default(), Interpolation::Linear).unwrap();
-    /// assert_eq!(t.view().entry(0, 0), 4.0);
+    /// assert_eq!(t.entry(0, 0), 4.0);
+    /// assert_eq!(t.view().entry(99, 0), 0.0);
     /// ```
     pub fn entry(&self, i: usize, j: usize) -> f32 {
         let n = self.len();
         let (i, j) = (i.min(n - 1), j.min(n - 1));
-        match self.data {
-            ViewData::Separable(x, y) => x[i] * y[j],
-            ViewData::Full(v) => v[j * n + i],
+        match self.values.entries() {
+            Entries::Separable(x, y) => x[i] * y[j],
+            Entries::Full(v) => v[j * n + i],
         }
     }
 
     /// The filter's radius `[rx, ry]`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Interpolation, Lanczos, Table2d};
+    /// let t: Table2d = Table2d::new(&Lanczos::default(), Interpolation::Linear).unwrap();
+    /// assert_eq!(t.radius(), [4.0, 4.0]);
+    /// ```
     pub fn radius(&self) -> [f32; 2] {
         self.radius
     }
 
     /// The filter's integral (from [`Filter::integral`] at build time).
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, FilterTable, Interpolation};
+    /// let t: FilterTable = FilterTable::new(&Boxcar::default(), Interpolation::Linear).unwrap();
+    /// assert_eq!(t.integral(), 1.0);
+    /// ```
     pub fn integral(&self) -> f32 {
         self.integral
     }
 
     /// The interpolation chosen at build time.
+    ///
+    /// ```
+    /// use nyquist::filter::{Boxcar, FilterTable, Interpolation};
+    /// let t: FilterTable = FilterTable::new(&Boxcar::default(), Interpolation::Nearest).unwrap();
+    /// assert_eq!(t.interpolation(), Interpolation::Nearest);
+    /// ```
     pub fn interpolation(&self) -> Interpolation {
         self.interp
+    }
+
+    /// A borrowed view of the same table without the size parameter ([`TableView`]), so code
+    /// that holds tables need not be generic over `N`. Its lookups are this table's, bit for
+    /// bit.
+    ///
+    /// ```
+    /// use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
+    /// let t: SeparableTable = SeparableTable::new(&Mitchell::default(), Interpolation::Linear).unwrap();
+    /// assert_eq!(t.view().weight(0.4, 0.9), t.weight(0.4, 0.9));
+    /// ```
+    pub fn view(&self) -> TableView<'_> {
+        self.with_values(View {
+            grid: self.values.grid(),
+            entries: self.values.entries(),
+        })
+    }
+}
+
+impl<S: Storage> Weights for Table<S> {
+    fn radius(&self) -> [f32; 2] {
+        self.radius
+    }
+
+    fn integral(&self) -> f32 {
+        self.integral
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn weight(&self, dx: f32, dy: f32) -> f32 {
+        Table::weight(self, dx, dy)
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn weight_1d(&self, axis: Axis, d: f32) -> Option<f32> {
+        self.factor_1d(axis, d)
+    }
+
+    fn is_separable(&self) -> bool {
+        Table::is_separable(self)
+    }
+
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn footprint(&self, d0: [f32; 2], nx: usize, out: &mut [f32]) -> Result<(), Error> {
+        Table::footprint(self, d0, nx, out)
     }
 }
 
@@ -1415,8 +1360,8 @@ mod tests {
             let sep = SeparableTable::<16>::new(&mitchell, interp).unwrap();
             let full = Table2d::<16>::new(&EllipticCone, interp).unwrap();
             let tables = [
-                (FilterTable::Separable(sep), &mitchell as &dyn Filter),
-                (FilterTable::Full(full), &EllipticCone as &dyn Filter),
+                (FilterTable::from(sep), &mitchell as &dyn Filter),
+                (FilterTable::from(full), &EllipticCone as &dyn Filter),
             ];
             for (table, filter) in &tables {
                 let (r, integral) = (filter.radius(), filter.integral());

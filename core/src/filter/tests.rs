@@ -1300,7 +1300,7 @@ proptest! {
     ) {
         let interp = if linear { Interpolation::Linear } else { Interpolation::Nearest };
         let table: FilterTable = if full {
-            Table2d::new(&f, interp).map(FilterTable::Full).unwrap()
+            Table2d::new(&f, interp).map(FilterTable::from).unwrap()
         } else {
             FilterTable::new(&f, interp).unwrap()
         };
@@ -1952,4 +1952,161 @@ fn constant_plugin_filters_answer_their_constant() {
             assert_eq!(w, phase.weight(dx, dy), "phase footprint {d0:?} entry {i}");
         }
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// One interface over every table: `Weights`, and the film's table.
+
+/// Every answer of `w` equals `table`'s own, bit for bit, at offsets inside, on and past the
+/// radius and at NaN: weight, weight_1d, is_separable, radius, integral and a footprint.
+fn assert_same_weights(w: &dyn Weights, table: &dyn Weights, what: &str) {
+    assert_eq!(w.radius(), table.radius(), "{what}");
+    assert_eq!(w.integral().to_bits(), table.integral().to_bits(), "{what}");
+    assert_eq!(w.is_separable(), table.is_separable(), "{what}");
+    let r = table.radius();
+    for (x, y) in [
+        (0.0, 0.0),
+        (0.3, -0.7),
+        (r[0], -r[1]),
+        (r[0].next_up(), 0.1),
+        (-1.9, 2.6),
+        (f32::NAN, 0.5),
+    ] {
+        assert_eq!(
+            w.weight(x, y).to_bits(),
+            table.weight(x, y).to_bits(),
+            "{what} ({x}, {y})"
+        );
+        for (axis, d) in [(Axis::X, x), (Axis::Y, y)] {
+            assert_eq!(
+                w.weight_1d(axis, d).map(f32::to_bits),
+                table.weight_1d(axis, d).map(f32::to_bits),
+                "{what} {axis:?} {d}"
+            );
+        }
+    }
+    let (mut a, mut b) = ([f32::NAN; 12], [f32::NAN; 12]);
+    w.footprint([-1.3, -0.8], 4, &mut a).unwrap();
+    table.footprint([-1.3, -0.8], 4, &mut b).unwrap();
+    assert_eq!(a.map(f32::to_bits), b.map(f32::to_bits), "{what}");
+    assert!(w.footprint([0.0, 0.0], 5, &mut a).is_err(), "{what}");
+}
+
+/// `FilmTable` holds a phase table exactly when one holds the filter (separable, radii below
+/// 8) and a linear 64-entry table otherwise, and answers through `Weights` what that table
+/// answers; through `&FilmTable` and `&dyn Weights` as well.
+#[test]
+fn film_tables_pick_their_table_and_answer_as_it_does() {
+    let wide = Gaussian::new([9.0, 2.0], 2.0).unwrap();
+    let filters: [(&dyn Filter, bool); 5] = [
+        (&Mitchell::default(), true),
+        (&Lanczos::default(), true),
+        (&Boxcar::new([0.3, 1.5]).unwrap(), true),
+        (&wide, false),
+        (&Cone, false),
+    ];
+    for (f, phase) in filters {
+        let film = FilmTable::<64>::new(f).unwrap();
+        match &film {
+            FilmTable::Phase(t) => {
+                assert!(phase, "{:?}", f.radius());
+                assert_eq!(*t, PhaseTable::new(f).unwrap());
+                assert_same_weights(&film, t, "phase");
+            }
+            FilmTable::Table(t) => {
+                assert!(!phase, "{:?}", f.radius());
+                assert_eq!(
+                    *t,
+                    FilterTable::<64>::new(f, Interpolation::Linear).unwrap()
+                );
+                assert_eq!(t.interpolation(), Interpolation::Linear);
+                assert_same_weights(&film, t, "table");
+            }
+        }
+        assert_same_weights(&&film, &film, "by reference");
+    }
+    struct NoRadius;
+    impl Filter for NoRadius {
+        fn radius(&self) -> [f32; 2] {
+            [f32::NAN, 1.0]
+        }
+        fn eval(&self, _: f32, _: f32) -> f32 {
+            0.0
+        }
+    }
+    assert!(FilmTable::<64>::new(&NoRadius).is_err());
+}
+
+/// Every table form answers through `Weights` what its own methods answer, and the forms
+/// agree with one another: a `SeparableTable`, the `FilterTable` made from it, their views; a
+/// `Table2d` and its `FilterTable`.
+#[test]
+fn every_table_form_answers_the_same_through_weights() {
+    for interp in [Interpolation::Nearest, Interpolation::Linear] {
+        let m = Mitchell::new([2.0, 1.5], 0.3, 0.35).unwrap();
+        let sep = SeparableTable::<16>::new(&m, interp).unwrap();
+        let either = FilterTable::from(sep);
+        assert_eq!(either, FilterTable::<16>::new(&m, interp).unwrap());
+        assert_same_weights(&either, &sep, "FilterTable from SeparableTable");
+        assert_same_weights(&sep.view(), &sep, "view of SeparableTable");
+        assert_same_weights(&either.view(), &sep, "view of FilterTable");
+        for (x, y) in [(0.3, -0.7), (1.2, 1.4)] {
+            assert_eq!(
+                Some(sep.weight_1d(Axis::X, x)),
+                either.weight_1d(Axis::X, x)
+            );
+            assert_eq!(
+                either.weight_1d(Axis::Y, y),
+                sep.view().weight_1d(Axis::Y, y)
+            );
+        }
+        let full = Table2d::<16>::new(&Cone, interp).unwrap();
+        let either = FilterTable::from(full);
+        assert_eq!(either, FilterTable::<16>::new(&Cone, interp).unwrap());
+        assert_same_weights(&either, &full, "FilterTable from Table2d");
+        assert_same_weights(&full.view(), &full, "view of Table2d");
+        assert_eq!(Weights::weight_1d(&full, Axis::X, 0.0), None);
+        assert_eq!(either.weight_1d(Axis::X, 0.0), None);
+        assert_eq!((full.len(), full.view().len()), (16, 16));
+    }
+}
+
+/// The trait's provided methods: a source that gives only a weight is not separable and fills
+/// footprints weight by weight, with the footprint's length checks.
+#[test]
+fn weights_provided_methods_fill_footprints_weight_by_weight() {
+    struct Ramp;
+    impl Weights for Ramp {
+        fn radius(&self) -> [f32; 2] {
+            [4.0, 4.0]
+        }
+        fn integral(&self) -> f32 {
+            0.0
+        }
+        fn weight(&self, dx: f32, dy: f32) -> f32 {
+            dx + 10.0 * dy
+        }
+    }
+    assert!(!Ramp.is_separable());
+    assert_eq!(Ramp.weight_1d(Axis::Y, 1.0), None);
+    let mut out = [0.0f32; 6];
+    Ramp.footprint([0.5, -1.0], 3, &mut out).unwrap();
+    assert_eq!(out, [-9.5, -8.5, -7.5, 0.5, 1.5, 2.5]);
+    let mut one = [0.0f32; 1];
+    Ramp.footprint([0.25, 2.0], 1, &mut one).unwrap();
+    assert_eq!(one, [20.25]);
+    assert!(Ramp.footprint([0.0, 0.0], 4, &mut out).is_err());
+    assert!(Ramp.footprint([0.0, 0.0], 0, &mut out).is_err());
+    assert!(Ramp.footprint([0.0, 0.0], 2, &mut []).is_err());
+}
+
+/// The sizes the table docs state: `8·N + 36` bytes separable, `4·N² + 36` in 2D, and a
+/// `FilterTable` as large as its 2D form would be.
+#[test]
+fn table_sizes_are_the_documented_ones() {
+    assert_eq!(size_of::<SeparableTable<16>>(), 8 * 16 + 36);
+    assert_eq!(size_of::<SeparableTable<64>>(), 8 * 64 + 36);
+    assert_eq!(size_of::<Table2d<16>>(), 4 * 16 * 16 + 36);
+    assert!(size_of::<FilterTable<16>>() >= size_of::<Table2d<16>>());
+    assert!(size_of::<FilterTable<16>>() <= size_of::<Table2d<16>>() + 4);
 }
