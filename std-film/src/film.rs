@@ -1,121 +1,35 @@
-//! The film: resolution, crop window, filter weights, merged pixel sums, and statistics.
+//! [`Film`]: the merged pixel sums, their tiles' merge order, and resolving them into an image.
 
-use crate::tile::{FilmTile, Pixel};
-use crate::{Bounds, Error, Image};
-use nyquist::filter::{FilmTable, Weights};
+use crate::bounds::Bounds;
+use crate::coverage::Coverage;
+use crate::error::Error;
+use crate::image::Image;
+use crate::pixel::Pixel;
+use crate::setup::{FilmConfig, Setup};
+use crate::stats::{FilmStats, ResolveStats};
+use crate::tile::FilmTile;
+use crate::tile_spec::TileSpec;
+use nyquist::filter::{Filter, Weights};
 use std::sync::Arc;
-
-/// How a [`Film`] is set up.
-///
-/// ```
-/// let c = nyquist_film::FilmConfig::new(640, 480);
-/// assert_eq!(c.crop_window, [0.0, 1.0, 0.0, 1.0]);
-/// assert_eq!(c.max_component, None);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FilmConfig {
-    /// Full resolution in pixels `[width, height]`.
-    pub resolution: [u32; 2],
-    /// Crop window in normalised film coordinates `[x0, x1, y0, y1]`, each in `[0, 1]`; the film
-    /// stores the pixels `⌈x0·W⌉ … ⌈x1·W⌉ − 1` (and likewise in y), as pbrt does.
-    pub crop_window: [f32; 4],
-    /// Per-sample clamp: a sample whose largest RGB component exceeds this is scaled down to it
-    /// (counted in [`FilmStats::clamped`]). `None` keeps every sample as it is.
-    pub max_component: Option<f32>,
-}
-
-impl FilmConfig {
-    /// A full-frame film of `width × height` pixels with no clamp.
-    pub fn new(width: u32, height: u32) -> FilmConfig {
-        FilmConfig {
-            resolution: [width, height],
-            crop_window: [0.0, 1.0, 0.0, 1.0],
-            max_component: None,
-        }
-    }
-}
-
-/// Counters kept by tiles and summed by the film.
-///
-/// ```
-/// let s = nyquist_film::FilmStats::default();
-/// assert_eq!(s.samples + s.rejected + s.clamped + s.splats, 0);
-/// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct FilmStats {
-    /// Samples added (accepted).
-    pub samples: u64,
-    /// Samples dropped because a radiance component or the weight was NaN or infinite.
-    pub rejected: u64,
-    /// Accepted samples scaled down by the `max_component` clamp.
-    pub clamped: u64,
-    /// Splats added (accepted).
-    pub splats: u64,
-}
-
-impl FilmStats {
-    pub(crate) fn add(&mut self, o: &FilmStats) {
-        self.samples += o.samples;
-        self.rejected += o.rejected;
-        self.clamped += o.clamped;
-        self.splats += o.splats;
-    }
-}
-
-/// What resolving the film into an image found.
-///
-/// ```
-/// let r = nyquist_film::ResolveStats::default();
-/// assert_eq!(r.negative_components, 0);
-/// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct ResolveStats {
-    /// Final pixel components below zero (from negative filter lobes), written as 0.
-    pub negative_components: u64,
-    /// Pixels whose weight sum was ≤ 0 and that resolved to 0 (before splats).
-    pub zero_weight_pixels: u64,
-}
-
-/// Which part of the film a tile covers: its place in the merge order and its pixels.
-///
-/// ```
-/// use nyquist_film::{Bounds, TileSpec};
-/// let t = TileSpec { index: 3, bounds: Bounds::new(0, 0, 16, 16) };
-/// assert_eq!(t.bounds.area(), 256);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct TileSpec {
-    /// Position in the merge order (0, 1, 2, …).
-    pub index: usize,
-    /// The pixels whose samples the tile takes (film coordinates).
-    pub bounds: Bounds,
-}
-
-/// Makes tiles of one film from any thread.
-#[derive(Debug)]
-pub(crate) struct TileFactory(Arc<Setup>);
-
-impl TileFactory {
-    pub(crate) fn tile(&self, spec: TileSpec) -> FilmTile {
-        FilmTile::new(spec, Arc::clone(&self.0))
-    }
-}
-
-/// The parts of a film that tiles share (read-only).
-#[derive(Debug)]
-pub(crate) struct Setup {
-    pub(crate) pixel_bounds: Bounds,
-    pub(crate) table: FilmTable,
-    pub(crate) max_component: Option<f32>,
-}
 
 /// A film: accumulates filtered samples from tiles into `f64` pixel sums and resolves them into
 /// an [`Image`].
 ///
 /// Reconstruction is the pixel filtering equation (Dippé and Wold 1985; pbrt-v2's film),
 /// I(x, y) = Σ f(x − xᵢ, y − yᵢ)·L(xᵢ, yᵢ) / Σ f(x − xᵢ, y − yᵢ), with the filter read from a
-/// table built once. Tiles are merged in tile-index order whatever order they arrive in (a tile
-/// that arrives early waits), so the image is bit-identical for any thread count or schedule.
+/// table built once. Two ways in:
+///
+/// - **Tiles**, for any number of threads: [`Film::tiles`] splits the film, [`Film::tile`]
+///   hands out an owned [`FilmTile`] per part, [`Film::merge`] adds it back ([`render_tiles`]
+///   runs that loop). Tiles are merged in tile-index order whatever order they arrive in (a tile
+///   that arrives early waits), so the image is bit-identical for any thread count or schedule.
+/// - **The film itself**, on one thread: [`Film::add_sample`] and [`Film::add_splat`] add
+///   straight into the film's sums, with a tile's arithmetic.
+///
+/// [`Film::try_image`] resolves the image and refuses while a tile is missing;
+/// [`Film::image`] resolves whatever has arrived.
+///
+/// [`render_tiles`]: crate::render_tiles
 ///
 /// ```
 /// use nyquist_film::{Film, FilmConfig};
@@ -131,85 +45,88 @@ pub(crate) struct Setup {
 ///     }
 ///     film.merge(tile).unwrap();
 /// }
-/// let (image, _) = film.image();
+/// let (image, _) = film.try_image().unwrap();
 /// assert_eq!(image.get(3, 1), [0.25, 0.5, 1.0]);
 /// ```
 #[derive(Debug)]
 pub struct Film {
     setup: Arc<Setup>,
-    pixels: Vec<Pixel>,
-    splats: Vec<[f64; 3]>,
+    /// The film's sums: a tile over exactly the film's pixels (no guard band), into which
+    /// merged tiles are added and [`Film::add_sample`] adds directly. Its counters are the
+    /// film's own samples.
+    sums: FilmTile,
     next_tile: usize,
     /// Tiles that arrived ahead of `next_tile`, by index, in arrival order (few: a plain list
     /// keeps the ordered-map code out of small builds such as the WebAssembly explorer).
     pending: Vec<(usize, FilmTile)>,
-    stats: FilmStats,
+    /// Counters of the merged tiles.
+    merged: FilmStats,
+    /// The pixels inside a merged tile's bounds.
+    coverage: Coverage,
 }
 
 impl Film {
-    /// A film with `config`, reconstructing through `filter` (tabulated once, here).
+    /// A film with `config`, reconstructing through `filter` (tabulated once, here: a
+    /// [`FilmTable`](nyquist::filter::FilmTable)).
     ///
     /// # Errors
-    /// [`Error::Config`] for a zero resolution, a crop window outside `[0, 1]` or empty, or a
-    /// non-finite or non-positive `max_component`; [`Error::OutOfMemory`] if the allocator cannot
-    /// provide the pixels (a film of `w × h` pixels takes `32·w·h` bytes).
-    pub fn new(config: FilmConfig, filter: &dyn nyquist::filter::Filter) -> Result<Film, Error> {
-        let [w, h] = config.resolution;
-        if w == 0 || h == 0 {
-            return Err(Error::Config(format!(
-                "resolution {w}x{h}: both sides must be positive"
-            )));
-        }
-        let c = config.crop_window;
-        if !(c.iter().all(|v| (0.0..=1.0).contains(v)) && c[0] < c[1] && c[2] < c[3]) {
-            return Err(Error::Config(format!(
-                "crop window {c:?} must be [x0, x1, y0, y1] with 0 ≤ x0 < x1 ≤ 1 and 0 ≤ y0 < y1 ≤ 1"
-            )));
-        }
-        if let Some(m) = config.max_component
-            && !(m.is_finite() && m > 0.0)
-        {
-            return Err(Error::Config(format!(
-                "max component {m} must be finite and positive"
-            )));
-        }
-        // In f32, as pbrt does, so that 0.2 × 10 is 2 (not 2.0000000298 → 3).
-        let ceil = |v: f32, n: u32| (v * n as f32).ceil() as i64;
-        let pixel_bounds = Bounds::new(ceil(c[0], w), ceil(c[2], h), ceil(c[1], w), ceil(c[3], h));
-        if pixel_bounds.is_empty() {
-            return Err(Error::Config(format!(
-                "crop window {c:?} covers no pixel of {w}x{h}"
-            )));
-        }
-        let n = pixel_bounds.area() as usize;
-        let pixels = crate::error::try_filled(n, Pixel::default(), "the film's pixels")?;
+    /// [`Error::OutOfRange`] for a zero side or a crop coordinate outside `[0, 1]`;
+    /// [`Error::Config`] for an empty crop window (or one that covers no pixel) and a
+    /// non-finite or non-positive `max_component`; [`Error::Core`] for a filter that cannot be
+    /// tabulated; [`Error::OutOfMemory`] if the allocator cannot provide the pixels (a film of
+    /// `w × h` pixels takes `32·w·h` bytes).
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut config = FilmConfig::new(4, 4);
+    /// config.crop_window = [0.5, 0.25, 0.0, 1.0];
+    /// let e = Film::new(config, &nyquist::filter::Boxcar::default()).unwrap_err();
+    /// assert!(e.to_string().contains("x0 0.5 is not below x1 0.25"), "{e}");
+    /// ```
+    pub fn new(config: FilmConfig, filter: &dyn Filter) -> Result<Film, Error> {
+        let setup = Arc::new(Setup::new(&config, filter)?);
+        let sums = FilmTile::whole(Arc::clone(&setup))?;
+        let coverage = Coverage::new(setup.pixel_bounds)?;
         Ok(Film {
-            setup: Arc::new(Setup {
-                pixel_bounds,
-                table: FilmTable::new(filter)?,
-                max_component: config.max_component,
-            }),
-            pixels,
-            // Allocated when the first tile with splats is merged.
-            splats: Vec::new(),
+            setup,
+            sums,
             next_tile: 0,
             pending: Vec::new(),
-            stats: FilmStats::default(),
+            merged: FilmStats::default(),
+            coverage,
         })
     }
 
     /// The pixels the film stores (the crop window's pixels), in film coordinates.
+    ///
+    /// ```
+    /// use nyquist_film::{Bounds, Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(5, 3), &nyquist::filter::Boxcar::default()).unwrap();
+    /// assert_eq!(film.pixel_bounds(), Bounds::new(0, 0, 5, 3));
+    /// ```
     pub fn pixel_bounds(&self) -> Bounds {
         self.setup.pixel_bounds
     }
 
     /// The filter radius the film reconstructs with, `[rx, ry]` in pixels.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(5, 3), &nyquist::filter::Mitchell::default()).unwrap();
+    /// assert_eq!(film.filter_radius(), [2.0, 2.0]);
+    /// ```
     pub fn filter_radius(&self) -> [f32; 2] {
         self.setup.table.radius()
     }
 
     /// The filter weight the film uses at offset `(dx, dy)` from a pixel centre (the table
     /// lookup, not a direct evaluation).
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(5, 3), &nyquist::filter::Boxcar::default()).unwrap();
+    /// assert_eq!((film.filter_weight(0.5, 0.0), film.filter_weight(0.51, 0.0)), (1.0, 0.0));
+    /// ```
     pub fn filter_weight(&self, dx: f32, dy: f32) -> f32 {
         self.setup.table.weight(dx, dy)
     }
@@ -218,7 +135,7 @@ impl Film {
     /// left; the order is the merge order.
     ///
     /// # Errors
-    /// [`Error::Config`] if `size` is zero.
+    /// [`Error::OutOfRange`] if `size` is zero.
     ///
     /// ```
     /// use nyquist_film::{Film, FilmConfig};
@@ -226,10 +143,11 @@ impl Film {
     /// let tiles = film.tiles(2).unwrap();
     /// assert_eq!(tiles.len(), 6);
     /// assert_eq!(tiles.iter().map(|t| t.bounds.area()).sum::<u64>(), 15);
+    /// assert_eq!(film.tiles(0).unwrap_err().to_string(), "tile size 0 is outside 1..=4294967295");
     /// ```
     pub fn tiles(&self, size: u32) -> Result<Vec<TileSpec>, Error> {
         if size == 0 {
-            return Err(Error::Config("tile size must be positive".into()));
+            return Err(Error::below_one("tile size", 0, f64::from(u32::MAX)));
         }
         let b = self.setup.pixel_bounds;
         let s = i64::from(size);
@@ -251,13 +169,63 @@ impl Film {
 
     /// An owned tile for `spec`: it takes samples whose film positions lie in `spec.bounds`
     /// and stores every pixel they reach, `⌈p − ½ − r⌉ … ⌊p − ½ + r⌋` clipped to the film.
+    ///
+    /// ```
+    /// use nyquist_film::{Bounds, Film, FilmConfig, TileSpec};
+    /// let film = Film::new(FilmConfig::new(8, 8), &nyquist::filter::Mitchell::default()).unwrap();
+    /// let tile = film.tile(TileSpec { index: 0, bounds: Bounds::new(2, 2, 4, 4) });
+    /// // The bounds grown by the radius (2), clipped to the film.
+    /// assert_eq!(tile.pixel_bounds(), Bounds::new(0, 0, 6, 6));
+    /// ```
     pub fn tile(&self, spec: TileSpec) -> FilmTile {
         FilmTile::new(spec, Arc::clone(&self.setup))
     }
 
-    /// A handle that makes tiles without borrowing the film (for worker threads).
-    pub(crate) fn tile_factory(&self) -> TileFactory {
-        TileFactory(Arc::clone(&self.setup))
+    /// The setup the film's tiles share (for the tile driver's worker threads).
+    pub(crate) fn setup(&self) -> &Arc<Setup> {
+        &self.setup
+    }
+
+    /// Adds a sample to the film itself, on the calling thread: the single-threaded way in,
+    /// with no tiles to make or merge. The same arithmetic as [`FilmTile::add_sample`] (its
+    /// rejection of non-finite values, clamp and counters); the film then counts as one
+    /// whole-film tile, so [`Film::try_image`] finds nothing missing.
+    ///
+    /// ```
+    /// use nyquist::filter::Mitchell;
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(8, 6), &Mitchell::default()).unwrap();
+    /// for y in 0..6 {
+    ///     for x in 0..8 {
+    ///         film.add_sample([x as f32 + 0.5, y as f32 + 0.5], [0.5, 0.25, 1.0], 1.0);
+    ///     }
+    /// }
+    /// film.add_sample([1.0, 1.0], [f32::NAN; 3], 1.0); // dropped and counted
+    /// assert_eq!((film.stats().samples, film.rejected()), (48, 1));
+    /// let (image, _) = film.try_image().unwrap();
+    /// let p = image.get(4, 3);
+    /// assert!((p[0] - 0.5).abs() < 1e-6 && (p[2] - 1.0).abs() < 1e-6);
+    /// ```
+    pub fn add_sample(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
+        self.sums.add_sample_now(p_film, rgb, weight);
+        self.coverage.mark_all();
+    }
+
+    /// Adds a splat to the film itself, on the calling thread, as [`FilmTile::add_splat`] does
+    /// to a tile; the film then counts as one whole-film tile.
+    ///
+    /// ```
+    /// use nyquist::filter::Boxcar;
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &Boxcar::default()).unwrap();
+    /// film.add_splat([1.5, 2.5], [2.0, 0.0, 0.0]);
+    /// let (image, _) = film.try_image().unwrap();
+    /// assert_eq!(image.get(1, 2), [2.0, 0.0, 0.0]); // a box's integral is 1
+    /// assert_eq!(film.stats().splats, 1);
+    /// ```
+    pub fn add_splat(&mut self, p_film: [f32; 2], rgb: [f32; 3]) {
+        self.sums.add_splat(p_film, rgb);
+        self.coverage.mark_all();
     }
 
     /// Adds a tile's pixels, splats and counters to the film. Tiles are applied in index order:
@@ -267,6 +235,15 @@ impl Film {
     /// # Errors
     /// [`Error::Config`] if a tile with this index was already merged or is held, or if the
     /// tile was made by another film (its pixels are not this film's).
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let spec = film.tiles(4).unwrap()[0];
+    /// film.merge(film.tile(spec)).unwrap();
+    /// assert_eq!(film.merge(film.tile(spec)).unwrap_err().to_string(),
+    ///            "invalid configuration: tile 0 merged twice");
+    /// ```
     pub fn merge(&mut self, mut tile: FilmTile) -> Result<(), Error> {
         tile.drain_queue();
         let index = tile.index();
@@ -298,7 +275,7 @@ impl Film {
         for y in tb.y0..tb.y1 {
             let frow = (y - fb.y0) as usize * fw + (tb.x0 - fb.x0) as usize;
             let trow = (y - sb.y0) as usize * sw + (tb.x0 - sb.x0) as usize;
-            for (dst, src) in self.pixels[frow..frow + tw]
+            for (dst, src) in self.sums.pixels_mut()[frow..frow + tw]
                 .iter_mut()
                 .zip(&tile.pixels()[trow..trow + tw])
             {
@@ -307,10 +284,7 @@ impl Film {
             if tile.splats().is_empty() {
                 continue;
             }
-            if self.splats.is_empty() {
-                self.splats = vec![[0.0; 3]; self.pixels.len()];
-            }
-            for (dst, src) in self.splats[frow..frow + tw]
+            for (dst, src) in self.sums.splats_mut()[frow..frow + tw]
                 .iter_mut()
                 .zip(&tile.splats()[trow..trow + tw])
             {
@@ -319,7 +293,8 @@ impl Film {
                 }
             }
         }
-        self.stats.add(&tile.stats());
+        self.merged.add(&tile.stats());
+        self.coverage.mark(tile.bounds());
     }
 
     /// Applies held tiles in index order, whatever gaps remain.
@@ -331,18 +306,35 @@ impl Film {
         }
     }
 
-    /// Counters over every merged tile: samples, rejected (non-finite) samples, clamps, splats.
+    /// Counters over every merged tile and the film's own samples: samples, rejected
+    /// (non-finite) samples, clamps, splats.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// film.add_sample([0.5, 0.5], [1.0; 3], 1.0);
+    /// assert_eq!(film.stats().samples, 1);
+    /// ```
     pub fn stats(&self) -> FilmStats {
-        self.stats
+        let mut s = self.merged;
+        s.add(&self.sums.stats());
+        s
     }
 
     /// Samples dropped because a radiance component or weight was NaN or infinite.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// film.add_sample([0.5, 0.5], [1.0; 3], f32::INFINITY);
+    /// assert_eq!(film.rejected(), 1);
+    /// ```
     pub fn rejected(&self) -> u64 {
-        self.stats.rejected
+        self.stats().rejected
     }
 
     /// Bytes of pixel storage the film holds: the [`Pixel`] sums (32 bytes a pixel), plus 24
-    /// bytes a pixel of splat sums once a tile with splats has been merged.
+    /// bytes a pixel of splat sums once a splat has reached the film.
     ///
     /// ```
     /// use nyquist_film::{Film, FilmConfig};
@@ -350,43 +342,116 @@ impl Film {
     /// assert_eq!(film.storage_bytes(), 1000 * 32);
     /// ```
     pub fn storage_bytes(&self) -> usize {
-        self.pixels.len() * size_of::<Pixel>() + self.splats.len() * size_of::<[f64; 3]>()
+        self.sums.storage_bytes()
     }
 
     /// The accumulated sums of pixel `(x, y)` (film coordinates), or `None` outside the film.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// film.add_sample([2.5, 1.5], [3.0; 3], 1.0);
+    /// assert_eq!(film.pixel(2, 1).unwrap().weight_sum, 1.0);
+    /// assert_eq!(film.pixel(4, 1), None);
+    /// ```
     pub fn pixel(&self, x: i64, y: i64) -> Option<Pixel> {
         let b = self.setup.pixel_bounds;
-        b.contains(x, y)
-            .then(|| self.pixels[(y - b.y0) as usize * b.width() as usize + (x - b.x0) as usize])
+        b.contains(x, y).then(|| {
+            self.sums.pixels()[(y - b.y0) as usize * b.width() as usize + (x - b.x0) as usize]
+        })
     }
 
-    /// Resolves the film: each pixel is `rgb_sum / weight_sum` (0 where `weight_sum ≤ 0`) plus
-    /// its splats divided by the filter integral; negative components become 0 and are counted.
-    /// Applies any held tiles first.
+    /// Resolves the film once every part of it has arrived, as [`Film::image`] does; the film
+    /// is unchanged by an error, so the missing tiles can still be merged.
+    ///
+    /// # Errors
+    /// [`Error::Incomplete`] while a film pixel lies in no merged tile's bounds, or a tile is
+    /// held waiting for a predecessor that was never merged: a tile is missing. Samples added
+    /// to the film itself ([`Film::add_sample`]) count as one whole-film tile.
+    /// [`Error::OutOfMemory`] if the allocator cannot provide the image.
+    ///
+    /// ```
+    /// use nyquist_film::{Error, Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let specs = film.tiles(2).unwrap(); // four 2 × 2 tiles
+    /// for &spec in &specs[..3] {
+    ///     film.merge(film.tile(spec)).unwrap();
+    /// }
+    /// assert!(matches!(film.try_image(), Err(Error::Incomplete { uncovered: 4, pixels: 16, held: 0 })));
+    /// film.merge(film.tile(specs[3])).unwrap();
+    /// assert!(film.try_image().is_ok());
+    /// ```
+    pub fn try_image(&mut self) -> Result<(Image, ResolveStats), Error> {
+        // Held tiles wait for a missing predecessor: count what they would cover, without
+        // applying them (that would move the film past the missing tile for good).
+        let mut coverage = self.coverage.clone();
+        for (_, tile) in &self.pending {
+            coverage.mark(tile.bounds());
+        }
+        let (uncovered, held) = (coverage.uncovered(), self.pending.len());
+        if uncovered > 0 || held > 0 {
+            return Err(Error::Incomplete {
+                uncovered,
+                pixels: self.setup.pixel_bounds.area(),
+                held,
+            });
+        }
+        self.resolve()
+    }
+
+    /// Resolves the film into an image, complete or not: each pixel is `rgb_sum / weight_sum`
+    /// (0 where `weight_sum ≤ 0`) plus its splats divided by the filter integral; negative
+    /// components become 0 and are counted. Held tiles are applied first, in index order, past
+    /// any gap: the film then moves past them, and a missing tile can no longer be merged.
+    ///
+    /// A film with a missing tile resolves to an image whose missing part holds only what
+    /// other tiles' filters spread into it: [`ResolveStats::uncovered_pixels`] counts the
+    /// pixels no merged tile covered. Use [`Film::try_image`] to refuse such a film; this method
+    /// is for a partial image on purpose (a preview while tiles are still arriving).
+    ///
+    /// # Panics
+    /// If the allocator cannot provide the image (12 bytes a pixel, against the film's 32);
+    /// [`Film::try_image`] returns [`Error::OutOfMemory`] instead.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let spec = film.tiles(2).unwrap()[0];
+    /// let mut tile = film.tile(spec);
+    /// tile.add_sample([0.5, 0.5], [1.0; 3], 1.0);
+    /// film.merge(tile).unwrap();
+    /// let (preview, stats) = film.image();
+    /// assert_eq!((preview.get(0, 0), stats.uncovered_pixels), ([1.0; 3], 12));
+    /// ```
     pub fn image(&mut self) -> (Image, ResolveStats) {
+        self.resolve()
+            .expect("the allocator provides an image a third the film's size")
+    }
+
+    /// [`Film::image`], with the image's allocation failure as an error.
+    fn resolve(&mut self) -> Result<(Image, ResolveStats), Error> {
         self.flush();
         let b = self.setup.pixel_bounds;
-        let mut image = Image::new(b.width() as u32, b.height() as u32)
-            .expect("the film has at least one pixel");
+        let mut image = Image::new(b.width() as u32, b.height() as u32)?;
         let integral = f64::from(self.setup.table.integral());
         let splat_scale = if integral.is_finite() && integral != 0.0 {
             1.0 / integral
         } else {
             0.0
         };
-        let mut stats = ResolveStats::default();
+        let mut stats = ResolveStats {
+            uncovered_pixels: self.coverage.uncovered(),
+            ..ResolveStats::default()
+        };
+        let pixels = self.sums.pixels();
         let no_splats = [[0.0f64; 3]];
         let splats = self
-            .splats
+            .sums
+            .splats()
             .iter()
             .chain(no_splats.iter().cycle())
-            .take(self.pixels.len());
-        for ((out, p), s) in image
-            .data_mut()
-            .chunks_exact_mut(3)
-            .zip(&self.pixels)
-            .zip(splats)
-        {
+            .take(pixels.len());
+        for ((out, p), s) in image.data_mut().chunks_exact_mut(3).zip(pixels).zip(splats) {
             let inv = if p.weight_sum > 0.0 {
                 1.0 / p.weight_sum
             } else {
@@ -403,6 +468,6 @@ impl Film {
                 };
             }
         }
-        (image, stats)
+        Ok((image, stats))
     }
 }

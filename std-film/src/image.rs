@@ -1,6 +1,6 @@
 //! A linear-RGB `f32` image.
 
-use crate::Error;
+use crate::error::Error;
 
 /// A linear-RGB image, `f32` per channel, rows top to bottom, pixels left to right.
 ///
@@ -21,8 +21,13 @@ impl Image {
     /// A black image.
     ///
     /// # Errors
-    /// [`Error::Config`] if a side is zero or the pixel count overflows memory limits;
-    /// [`Error::OutOfMemory`] if the allocator cannot provide the pixels.
+    /// [`Error::OutOfRange`] if a side is zero; [`Error::Config`] if the pixel count overflows
+    /// memory limits; [`Error::OutOfMemory`] if the allocator cannot provide the pixels.
+    ///
+    /// ```
+    /// let e = nyquist_film::Image::new(0, 3).unwrap_err();
+    /// assert_eq!(e.to_string(), "image width 0 is outside 1..=4294967295");
+    /// ```
     pub fn new(width: u32, height: u32) -> Result<Image, Error> {
         let len = Self::data_len(width, height)?;
         Ok(Image {
@@ -33,16 +38,23 @@ impl Image {
     }
 
     fn data_len(width: u32, height: u32) -> Result<usize, Error> {
-        if width == 0 || height == 0 {
-            return Err(Error::Config(format!(
-                "image size {width}x{height}: both sides must be positive"
-            )));
+        for (what, side) in [("image width", width), ("image height", height)] {
+            if side == 0 {
+                return Err(Error::below_one(what, 0, f64::from(u32::MAX)));
+            }
         }
-        (width as usize)
-            .checked_mul(height as usize)
-            .and_then(|n| n.checked_mul(3))
-            .filter(|&n| n <= isize::MAX as usize / 4)
-            .ok_or_else(|| Error::Config(format!("image size {width}x{height} is too large")))
+        // The floats of the image, at most what one allocation can hold.
+        const LIMIT: usize = isize::MAX as usize / 4;
+        let floats = u128::from(width) * u128::from(height) * 3;
+        usize::try_from(floats)
+            .ok()
+            .filter(|&n| n <= LIMIT)
+            .ok_or_else(|| {
+                Error::Config(format!(
+                    "image size {width}x{height} needs {floats} floats, more than the {LIMIT} \
+                     an allocation can hold"
+                ))
+            })
     }
 
     /// An image whose pixel `(x, y)` is `f(x, y)`.
@@ -89,21 +101,40 @@ impl Image {
     }
 
     /// Width in pixels.
+    ///
+    /// ```
+    /// assert_eq!(nyquist_film::Image::new(4, 3).unwrap().width(), 4);
+    /// ```
     pub fn width(&self) -> u32 {
         self.width
     }
 
     /// Height in pixels.
+    ///
+    /// ```
+    /// assert_eq!(nyquist_film::Image::new(4, 3).unwrap().height(), 3);
+    /// ```
     pub fn height(&self) -> u32 {
         self.height
     }
 
     /// The RGB floats, row-major from the top row.
+    ///
+    /// ```
+    /// let img = nyquist_film::Image::from_fn(2, 1, |x, _| [x as f32, 0.5, 0.25]);
+    /// assert_eq!(img.data(), &[0.0, 0.5, 0.25, 1.0, 0.5, 0.25]);
+    /// ```
     pub fn data(&self) -> &[f32] {
         &self.data
     }
 
     /// The RGB floats, mutable.
+    ///
+    /// ```
+    /// let mut img = nyquist_film::Image::new(2, 1).unwrap();
+    /// img.data_mut()[3] = 1.0;
+    /// assert_eq!(img.get(1, 0), [1.0, 0.0, 0.0]);
+    /// ```
     pub fn data_mut(&mut self) -> &mut [f32] {
         &mut self.data
     }
@@ -120,6 +151,11 @@ impl Image {
     ///
     /// # Panics
     /// If `(x, y)` is outside the image.
+    ///
+    /// ```
+    /// let img = nyquist_film::Image::from_fn(3, 2, |x, y| [x as f32, y as f32, 0.0]);
+    /// assert_eq!(img.get(2, 1), [2.0, 1.0, 0.0]);
+    /// ```
     pub fn get(&self, x: u32, y: u32) -> [f32; 3] {
         let o = self.offset(x, y);
         [self.data[o], self.data[o + 1], self.data[o + 2]]
@@ -129,6 +165,12 @@ impl Image {
     ///
     /// # Panics
     /// If `(x, y)` is outside the image.
+    ///
+    /// ```
+    /// let mut img = nyquist_film::Image::new(3, 2).unwrap();
+    /// img.set(2, 1, [0.5; 3]);
+    /// assert_eq!(img.get(2, 1), [0.5; 3]);
+    /// ```
     pub fn set(&mut self, x: u32, y: u32, rgb: [f32; 3]) {
         let o = self.offset(x, y);
         self.data[o..o + 3].copy_from_slice(&rgb);

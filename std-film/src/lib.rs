@@ -16,20 +16,29 @@
 #![deny(missing_docs)]
 
 mod bounds;
+mod coverage;
 mod error;
 mod film;
 mod image;
 pub mod output;
+mod pixel;
 mod render;
+mod setup;
+mod stats;
 mod tile;
+mod tile_spec;
 
 pub use bounds::Bounds;
 pub use error::Error;
-pub use film::{Film, FilmConfig, FilmStats, ResolveStats, TileSpec};
+pub use film::Film;
 pub use image::Image;
 pub use output::{ImageFormat, write_image, write_image_file};
+pub use pixel::Pixel;
 pub use render::{CAN_START_THREADS, TileContext, render_tiles};
-pub use tile::{FilmTile, Pixel};
+pub use setup::FilmConfig;
+pub use stats::{FilmStats, ResolveStats};
+pub use tile::FilmTile;
+pub use tile_spec::TileSpec;
 
 /// Film-space centre of pixel `(x, y)`: pixel `(x, y)` covers `[x, x+1) × [y, y+1)`.
 ///

@@ -1,8 +1,11 @@
 //! The parallel tile driver.
 
-use crate::{Bounds, Error, Film, FilmTile};
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::mpsc;
+use crate::bounds::Bounds;
+use crate::error::Error;
+use crate::film::Film;
+use crate::tile::FilmTile;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Arc, mpsc};
 
 /// What a [`render_tiles`] closure is told about its tile, to build the tile's sampler: its
 /// place in the merge order, the number of tiles, the pixels to sample, and a per-tile seed.
@@ -86,10 +89,13 @@ pub const CAN_START_THREADS: bool = !cfg!(all(target_arch = "wasm32", target_os 
 /// calling thread after each merge (a CLI turns it into a progress bar).
 ///
 /// # Errors
-/// [`Error::Config`] if `tile_size` or `threads` is zero.
+/// [`Error::OutOfRange`] if `tile_size` or `threads` is zero; [`Error::Config`] if a tile cannot
+/// be merged.
 ///
 /// # Panics
-/// If `render` panics (the panic is propagated after the other workers stop).
+/// If `render` panics: the other workers take no further tile, and once they have stopped the
+/// panic continues on the calling thread with the closure's own payload, so its message reaches
+/// the caller (and a `std::panic::catch_unwind` around this call receives it).
 ///
 /// # Examples
 ///
@@ -147,11 +153,11 @@ pub fn render_tiles(
     mut progress: impl FnMut(usize, usize),
 ) -> Result<(), Error> {
     if threads == 0 {
-        return Err(Error::Config("thread count must be positive".into()));
+        return Err(Error::below_one("thread count", 0, f64::INFINITY));
     }
     let specs = film.tiles(tile_size)?;
     let total = specs.len();
-    let factory = film.tile_factory();
+    let setup = Arc::clone(film.setup());
     // Tile `i` rendered; `None` past the last.
     let render_tile = |i: usize| {
         let spec = *specs.get(i)?;
@@ -160,7 +166,7 @@ pub fn render_tiles(
             count: total,
             bounds: spec.bounds,
         };
-        let mut tile = factory.tile(spec);
+        let mut tile = FilmTile::new(spec, Arc::clone(&setup));
         render(&mut tile, &ctx);
         Some(tile)
     };
@@ -176,24 +182,143 @@ pub fn render_tiles(
         return Ok(());
     }
     let next = AtomicUsize::new(0);
+    // Raised when a worker panics or the calling thread stops merging: no worker takes
+    // another tile.
+    let stop = AtomicBool::new(false);
     let (tx, rx) = mpsc::channel::<FilmTile>();
     std::thread::scope(|scope| -> Result<(), Error> {
-        for _ in 0..threads.min(total.max(1)) {
-            let tx = tx.clone();
-            let (next, render_tile) = (&next, &render_tile);
-            scope.spawn(move || {
-                while let Some(tile) = render_tile(next.fetch_add(1, Ordering::Relaxed)) {
-                    if tx.send(tile).is_err() {
-                        break;
+        let workers: Vec<_> = (0..threads.min(total.max(1)))
+            .map(|_| {
+                let tx = tx.clone();
+                let (next, stop, render_tile) = (&next, &stop, &render_tile);
+                scope.spawn(move || {
+                    let _stop = StopOnPanic(stop);
+                    while !stop.load(Ordering::Relaxed) {
+                        let Some(tile) = render_tile(next.fetch_add(1, Ordering::Relaxed)) else {
+                            break;
+                        };
+                        if tx.send(tile).is_err() {
+                            break;
+                        }
                     }
-                }
-            });
-        }
+                })
+            })
+            .collect();
         drop(tx);
-        for (done, tile) in rx.iter().enumerate() {
-            film.merge(tile)?;
-            progress(done + 1, total);
+        let merged = {
+            // A panic in `progress` stops the workers too, before the scope waits for them.
+            let _stop = StopOnPanic(&stop);
+            let mut merged = Ok(());
+            for (done, tile) in rx.iter().enumerate() {
+                if let Err(e) = film.merge(tile) {
+                    merged = Err(e);
+                    stop.store(true, Ordering::Relaxed);
+                    break;
+                }
+                progress(done + 1, total);
+            }
+            merged
+        };
+        // Join every worker, then carry the first panic (in worker order) on with its own
+        // payload: the scope's own report would replace it with "a scoped thread panicked".
+        let mut panic = None;
+        for worker in workers {
+            if let Err(payload) = worker.join() {
+                panic.get_or_insert(payload);
+            }
         }
-        Ok(())
+        if let Some(payload) = panic {
+            std::panic::resume_unwind(payload);
+        }
+        merged
     })
+}
+
+/// Raises its flag when dropped by a panic unwinding: the workers' signal to stop.
+struct StopOnPanic<'a>(&'a AtomicBool);
+
+impl Drop for StopOnPanic<'_> {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            self.0.store(true, Ordering::Relaxed);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::setup::FilmConfig;
+    use nyquist::filter::Boxcar;
+    use std::panic::{AssertUnwindSafe, catch_unwind};
+
+    /// The text of a panic payload (`panic!` with a literal or with arguments).
+    fn message(payload: &(dyn std::any::Any + Send)) -> Option<&str> {
+        payload
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| payload.downcast_ref::<&str>().copied())
+    }
+
+    /// A panic inside the closure reaches the caller with its own message on one thread and
+    /// on several, and the other workers stop taking tiles: of 64 tiles that each take 10 ms,
+    /// far fewer than 64 are rendered once tile 0 has panicked.
+    #[test]
+    fn a_workers_panic_reaches_the_caller_with_its_message() {
+        for threads in [1, 2, 3] {
+            let mut film = Film::new(FilmConfig::new(16, 16), &Boxcar::default()).unwrap();
+            let rendered = AtomicUsize::new(0);
+            let result = catch_unwind(AssertUnwindSafe(|| {
+                render_tiles(
+                    &mut film,
+                    2,
+                    threads,
+                    |_, ctx| {
+                        if ctx.index == 0 {
+                            panic!("tile {} of {} exploded", ctx.index, ctx.count);
+                        }
+                        std::thread::sleep(std::time::Duration::from_millis(10));
+                        rendered.fetch_add(1, Ordering::Relaxed);
+                    },
+                    |_, _| {},
+                )
+            }));
+            let payload = result.expect_err("the panic propagates");
+            assert_eq!(
+                message(&*payload),
+                Some("tile 0 of 64 exploded"),
+                "{threads} threads"
+            );
+            assert!(rendered.load(Ordering::Relaxed) < 63, "{threads} threads");
+        }
+    }
+
+    /// A panic in the progress callback stops the workers and reaches the caller too.
+    #[test]
+    fn a_progress_panic_reaches_the_caller() {
+        let mut film = Film::new(FilmConfig::new(8, 8), &Boxcar::default()).unwrap();
+        let result = catch_unwind(AssertUnwindSafe(|| {
+            render_tiles(
+                &mut film,
+                2,
+                2,
+                |_, _| {},
+                |done, _| {
+                    assert!(done < 3, "progress stops at {done}");
+                },
+            )
+        }));
+        let payload = result.expect_err("the panic propagates");
+        assert_eq!(message(&*payload), Some("progress stops at 3"));
+    }
+
+    /// Zero threads or a zero tile size are errors that name the value and the range.
+    #[test]
+    fn zero_threads_or_tile_size_are_range_errors() {
+        let mut film = Film::new(FilmConfig::new(8, 8), &Boxcar::default()).unwrap();
+        let e = render_tiles(&mut film, 4, 0, |_, _| {}, |_, _| {}).unwrap_err();
+        assert_eq!(e.to_string(), "thread count 0 is outside 1..");
+        let e = render_tiles(&mut film, 0, 2, |_, _| {}, |_, _| {}).unwrap_err();
+        assert_eq!(e.to_string(), "tile size 0 is outside 1..=4294967295");
+    }
 }

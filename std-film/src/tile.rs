@@ -1,32 +1,13 @@
 //! Film tiles: owned by one thread, filled with samples, merged back into the film.
 
-use crate::Bounds;
-use crate::film::{FilmStats, Setup, TileSpec};
+use crate::bounds::Bounds;
+use crate::error::Error;
+use crate::pixel::Pixel;
+use crate::setup::Setup;
+use crate::stats::FilmStats;
+use crate::tile_spec::TileSpec;
 use nyquist::filter::{Axis, FilmTable, Filter, MAX_TAPS, PhaseTable, Weights};
 use std::sync::Arc;
-
-/// Accumulated sums of one pixel: Σ f·w·L per channel and Σ f, in `f64`.
-///
-/// ```
-/// let p = nyquist_film::Pixel::default();
-/// assert_eq!(p.weight_sum, 0.0);
-/// ```
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Pixel {
-    /// Σ filter weight × sample weight × radiance, per RGB channel.
-    pub rgb_sum: [f64; 3],
-    /// Σ filter weight.
-    pub weight_sum: f64,
-}
-
-impl Pixel {
-    pub(crate) fn add(&mut self, o: &Pixel) {
-        for c in 0..3 {
-            self.rgb_sum[c] += o.rgb_sum[c];
-        }
-        self.weight_sum += o.weight_sum;
-    }
-}
 
 /// Where a tile's samples go, cached per tile in the forms the per-sample path uses.
 #[derive(Clone, Copy, Debug)]
@@ -401,6 +382,17 @@ fn wide_columns(rows: &mut [Pixel], stride: usize, nx: usize, fx: &[f32], fy: &[
 ///
 /// Created by [`crate::Film::tile`], filled with [`FilmTile::add_sample`], handed back with
 /// [`crate::Film::merge`]. NaN or infinite radiance or weight is dropped and counted, never added.
+/// (A renderer on one thread can skip tiles: [`crate::Film::add_sample`].)
+///
+/// ```
+/// use nyquist_film::{Film, FilmConfig};
+/// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Mitchell::default()).unwrap();
+/// let spec = film.tiles(4).unwrap()[0];
+/// let mut tile = film.tile(spec);
+/// tile.add_sample([2.0, 2.0], [1.0; 3], 1.0);
+/// film.merge(tile).unwrap();
+/// assert_eq!(film.stats().samples, 1);
+/// ```
 #[derive(Debug)]
 pub struct FilmTile {
     spec: TileSpec,
@@ -546,21 +538,42 @@ fn reach(b: Bounds, [rx, ry]: [f32; 2]) -> Bounds {
 
 impl FilmTile {
     pub(crate) fn new(spec: TileSpec, setup: Arc<Setup>) -> FilmTile {
+        let (pixel_bounds, stored) = Self::layout(spec.bounds, &setup, true);
+        let pixels = vec![Pixel::default(); stored.area() as usize];
+        Self::with_pixels(spec, setup, pixel_bounds, stored, pixels)
+    }
+
+    /// The film's own sums: a tile taking samples anywhere in the film and storing exactly the
+    /// film's pixels (no guard band: these sums are the film's), outside the merge order.
+    ///
+    /// # Errors
+    /// [`Error::OutOfMemory`] if the allocator cannot provide the pixels.
+    pub(crate) fn whole(setup: Arc<Setup>) -> Result<FilmTile, Error> {
+        let bounds = setup.pixel_bounds;
+        let (pixel_bounds, stored) = Self::layout(bounds, &setup, false);
+        let n = stored.area() as usize;
+        let pixels = crate::error::try_filled(n, Pixel::default(), "the film's pixels")?;
+        let spec = TileSpec {
+            index: usize::MAX,
+            bounds,
+        };
+        Ok(Self::with_pixels(spec, setup, pixel_bounds, stored, pixels))
+    }
+
+    /// The film pixels a tile over `b` merges and the pixels it stores: those and, with `band`,
+    /// for radii below `BAND_RADIUS` (every film that can take the 4 × 4 path, clamped or
+    /// not), a guard band along the film's edges of the pixels just outside it that the tile's
+    /// samples reach, at most two wide. The band's sums are never merged; they let a sample
+    /// near the film's edge take the 4 × 4 path with its whole footprint stored, instead of the
+    /// general path that clips it, and the general path then stores the same unclipped
+    /// footprint, so both add the same bits. Wider filters, whose radius may reach
+    /// `MAX_RADIUS`, store no band: it would be most of the allocation for nothing.
+    fn layout(b: Bounds, setup: &Setup, band: bool) -> (Bounds, Bounds) {
         let radius = setup.table.radius();
-        let b = spec.bounds;
         let grown = reach(b, radius);
         let fb = setup.pixel_bounds;
         let mut pixel_bounds = grown.intersect(&fb);
-        let fast = FastPath::for_setup(&setup);
-        // The stored pixels: the film pixels above and, for radii below `BAND_RADIUS` (every
-        // film that can take the 4 × 4 path, clamped or not), a guard band along the film's
-        // edges of the pixels just outside it that the tile's samples reach, at most two wide.
-        // Their sums are never merged; they let a sample near the film's edge take the 4 × 4
-        // path with its whole footprint stored, instead of the general path that clips it, and
-        // the general path then stores the same unclipped footprint, so both add the same bits.
-        // Wider filters, whose radius may reach `MAX_RADIUS`, store no band: it would be most
-        // of the allocation for nothing.
-        let mut stored = if radius.iter().all(|&r| r < BAND_RADIUS) {
+        let mut stored = if band && radius.iter().all(|&r| r < BAND_RADIUS) {
             grown.intersect(&reach(fb, radius))
         } else {
             pixel_bounds
@@ -570,12 +583,22 @@ impl FilmTile {
             pixel_bounds = Bounds::new(fb.x0, fb.y0, fb.x0, fb.y0);
             stored = pixel_bounds;
         }
-        let n = stored.area() as usize;
+        (pixel_bounds, stored)
+    }
+
+    fn with_pixels(
+        spec: TileSpec,
+        setup: Arc<Setup>,
+        pixel_bounds: Bounds,
+        stored: Bounds,
+        pixels: Vec<Pixel>,
+    ) -> FilmTile {
+        let fast = FastPath::for_setup(&setup);
         FilmTile {
             spec,
             pixel_bounds,
-            geometry: Geometry::new(stored, radius),
-            pixels: vec![Pixel::default(); n],
+            geometry: Geometry::new(stored, setup.table.radius()),
+            pixels,
             // Allocated by the first splat: most renderers never splat.
             splats: Vec::new(),
             setup,
@@ -587,17 +610,38 @@ impl FilmTile {
     }
 
     /// The tile's place in the merge order.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let spec = film.tiles(2).unwrap()[3];
+    /// assert_eq!(film.tile(spec).index(), 3);
+    /// ```
     pub fn index(&self) -> usize {
         self.spec.index
     }
 
     /// The pixels whose samples this tile takes.
+    ///
+    /// ```
+    /// use nyquist_film::{Bounds, Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let spec = film.tiles(2).unwrap()[1];
+    /// assert_eq!(film.tile(spec).bounds(), Bounds::new(2, 0, 4, 2));
+    /// ```
     pub fn bounds(&self) -> Bounds {
         self.spec.bounds
     }
 
     /// The film pixels this tile holds sums for, and merges: its bounds grown by the filter
     /// radius, clipped to the film.
+    ///
+    /// ```
+    /// use nyquist_film::{Bounds, Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(8, 8), &nyquist::filter::Triangle::default()).unwrap();
+    /// let spec = film.tiles(4).unwrap()[3]; // pixels 4..8 × 4..8
+    /// assert_eq!(film.tile(spec).pixel_bounds(), Bounds::new(2, 2, 8, 8));
+    /// ```
     pub fn pixel_bounds(&self) -> Bounds {
         self.pixel_bounds
     }
@@ -617,17 +661,50 @@ impl FilmTile {
         &self.pixels
     }
 
+    pub(crate) fn pixels_mut(&mut self) -> &mut [Pixel] {
+        &mut self.pixels
+    }
+
     /// The splat sums, row-major like the pixels, or empty if nothing was splatted.
     pub(crate) fn splats(&self) -> &[[f64; 3]] {
         &self.splats
     }
 
+    /// The splat sums, allocated (zero) on first use.
+    pub(crate) fn splats_mut(&mut self) -> &mut [[f64; 3]] {
+        if self.splats.is_empty() {
+            self.splats = vec![[0.0; 3]; self.pixels.len()];
+        }
+        &mut self.splats
+    }
+
+    /// Bytes of the pixel sums (32 a pixel) and of the splat sums once allocated (24 a pixel).
+    pub(crate) fn storage_bytes(&self) -> usize {
+        self.pixels.len() * size_of::<Pixel>() + self.splats.len() * size_of::<[f64; 3]>()
+    }
+
     /// Counters of this tile.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let mut tile = film.tile(film.tiles(4).unwrap()[0]);
+    /// tile.add_splat([1.0, 1.0], [1.0; 3]);
+    /// assert_eq!((tile.stats().samples, tile.stats().splats), (0, 1));
+    /// ```
     pub fn stats(&self) -> FilmStats {
         self.stats
     }
 
     /// Samples this tile dropped for NaN or infinite radiance or weight.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let mut tile = film.tile(film.tiles(4).unwrap()[0]);
+    /// tile.add_sample([1.0, f32::NAN], [1.0; 3], 1.0);
+    /// assert_eq!(tile.rejected(), 1);
+    /// ```
     pub fn rejected(&self) -> u64 {
         self.stats.rejected
     }
@@ -678,6 +755,40 @@ impl FilmTile {
         }
     }
 
+    /// [`FilmTile::add_sample`] without the queue: each sample is in the sums when this returns
+    /// (the film's own sums, which [`crate::Film::pixel`] reads at any time). The same sums, bit
+    /// for bit: the queue only reorders the work, never the additions.
+    pub(crate) fn add_sample_now(&mut self, p_film: [f32; 2], rgb: [f32; 3], weight: f32) {
+        match self.fast {
+            FastPath::Block4 => {
+                let Some(l) = self.prepare(p_film, rgb, weight) else {
+                    return;
+                };
+                let block = match &self.setup.table {
+                    FilmTable::Phase(t) => block4(&self.geometry, t, p_film),
+                    FilmTable::Table(_) => None,
+                };
+                self.add_block_or_footprint(block, p_film, l);
+            }
+            _ => self.add_sample(p_film, rgb, weight),
+        }
+    }
+
+    /// Adds a checked sample through its 4 × 4 block when it has one, else its footprint.
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn add_block_or_footprint(&mut self, block: Option<Block4>, p: [f32; 2], l: [f64; 3]) {
+        match block {
+            Some(b) => {
+                let stride = self.geometry.size[0] as usize;
+                let start = b.start;
+                if let Some(rows) = self.pixels.get_mut(start..start + 3 * stride + 4) {
+                    columns::<4>(rows, stride, &b.fx, &b.fy, l);
+                }
+            }
+            None => self.add_footprint(p, l),
+        }
+    }
+
     /// [`FilmTile::add_sample`] for [`FastPath::Block4`]: checks and counts the sample now
     /// ([`FilmTile::prepare`]), holds it in the queue ([`Queued`]), and adds the queue when it
     /// is full.
@@ -709,17 +820,8 @@ impl FilmTile {
                 *b = block4(&self.geometry, t, q.p);
             }
         }
-        let stride = self.geometry.size[0] as usize;
-        for (b, q) in blocks.iter().zip(&queue[..n]) {
-            match b {
-                Some(b) => {
-                    let start = b.start;
-                    if let Some(rows) = self.pixels.get_mut(start..start + 3 * stride + 4) {
-                        columns::<4>(rows, stride, &b.fx, &b.fy, q.l);
-                    }
-                }
-                None => self.add_footprint(q.p, q.l),
-            }
+        for (&b, q) in blocks.iter().zip(&queue[..n]) {
+            self.add_block_or_footprint(b, q.p, q.l);
         }
     }
 
@@ -852,6 +954,17 @@ impl FilmTile {
     /// Adds a splat (pbrt-v4 style, e.g. for light tracing): every reached pixel gets
     /// `f(centre − p)·rgb`, and the film divides splats by the filter integral when it resolves.
     /// Non-finite values are dropped and counted as rejected.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let mut tile = film.tile(film.tiles(4).unwrap()[0]);
+    /// tile.add_splat([2.5, 0.5], [4.0, 0.0, 0.0]);
+    /// tile.add_splat([2.5, 0.5], [f32::INFINITY, 0.0, 0.0]);
+    /// assert_eq!((tile.stats().splats, tile.rejected()), (1, 1));
+    /// film.merge(tile).unwrap();
+    /// assert_eq!(film.image().0.get(2, 0), [4.0, 0.0, 0.0]);
+    /// ```
     pub fn add_splat(&mut self, p_film: [f32; 2], rgb: [f32; 3]) {
         if !(rgb.iter().all(|c| c.is_finite()) && p_film[0].is_finite() && p_film[1].is_finite()) {
             self.stats.rejected += 1;
@@ -916,12 +1029,14 @@ impl FilmTile {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Film, FilmConfig};
+    use crate::setup::FilmConfig;
     use nyquist::filter::{Boxcar, Gaussian, Lanczos, Mitchell, Triangle};
 
+    /// The tile over the film's first 16 × 16 pixels.
     fn tile_for(filter: &dyn Filter, config: FilmConfig) -> FilmTile {
-        let film = Film::new(config, filter).unwrap();
-        film.tile(film.tiles(16).unwrap()[0])
+        let setup = Arc::new(Setup::new(&config, filter).unwrap());
+        let bounds = Bounds::new(0, 0, 16, 16).intersect(&setup.pixel_bounds);
+        FilmTile::new(TileSpec { index: 0, bounds }, setup)
     }
 
     /// Only filters of radius below 2.5 (those of the 4 × 4 path and smaller) store a guard

@@ -1026,3 +1026,206 @@ fn films_and_images_larger_than_memory_are_errors() {
         other => panic!("{:?}", other.map(|_| ())),
     }
 }
+
+/// Samples added to the film itself (`Film::add_sample`, `Film::add_splat`) sum exactly what
+/// the same samples sum through one tile over the whole film, merged: every pixel's bits, the
+/// counters and the storage, for filters on every path (box, 4 × 4 block, general phase table,
+/// the 64-entry fallback for a wide filter and for a non-separable one), at positions on and
+/// off pixel edges and outside the film.
+#[test]
+fn the_film_itself_sums_what_one_whole_film_tile_sums() {
+    let mut filters: Vec<Box<dyn Filter>> = block4_filters().into_iter().collect();
+    filters.push(Box::new(Boxcar::default()));
+    filters.push(Box::new(Boxcar::new([0.3, 1.5]).unwrap()));
+    filters.push(Box::new(Lanczos::default()));
+    filters.push(Box::new(Gaussian::new([9.0, 8.5], 2.0).unwrap()));
+    filters.push(Box::new(Cone(1.5)));
+    let samples = eighth_pixel_grids();
+    for (i, f) in filters.iter().enumerate() {
+        for max_component in [None, Some(1.0)] {
+            let config = FilmConfig {
+                max_component,
+                ..FilmConfig::new(10, 9)
+            };
+            let mut itself = Film::new(config, &**f).unwrap();
+            let mut tiled = Film::new(config, &**f).unwrap();
+            let spec = nyquist_film::TileSpec {
+                index: 0,
+                bounds: tiled.pixel_bounds(),
+            };
+            let mut tile = tiled.tile(spec);
+            for (k, &(x, y, l, w)) in samples.iter().enumerate() {
+                let rgb = [l, 0.5, 2.0];
+                if k % 7 == 3 {
+                    itself.add_splat([x, y], rgb);
+                    tile.add_splat([x, y], rgb);
+                } else {
+                    itself.add_sample([x, y], rgb, w);
+                    tile.add_sample([x, y], rgb, w);
+                }
+            }
+            tiled.merge(tile).unwrap();
+            assert_eq!(itself.stats(), tiled.stats(), "filter {i}");
+            assert_eq!(itself.storage_bytes(), tiled.storage_bytes(), "filter {i}");
+            for y in 0..9 {
+                for x in 0..10 {
+                    let (a, b) = (itself.pixel(x, y).unwrap(), tiled.pixel(x, y).unwrap());
+                    assert_eq!(
+                        (a.rgb_sum.map(f64::to_bits), a.weight_sum.to_bits()),
+                        (b.rgb_sum.map(f64::to_bits), b.weight_sum.to_bits()),
+                        "filter {i}, pixel ({x}, {y})"
+                    );
+                }
+            }
+            assert_eq!(bits(&mut itself), bits(&mut tiled), "filter {i}");
+        }
+    }
+}
+
+/// `try_image` refuses a film while a tile is missing (after the last merged one, or before a
+/// held one), says how many pixels no merged tile covers and how many tiles wait, and leaves
+/// the film as it was, so the missing tile can still be merged; then it gives the image of the
+/// film merged in order. `image` resolves the partial film anyway and counts the uncovered
+/// pixels.
+#[test]
+fn try_image_refuses_a_film_with_a_missing_tile() {
+    let make = || Film::new(FilmConfig::new(6, 4), &Mitchell::default()).unwrap();
+    let filled = |film: &Film, spec| {
+        let mut t = film.tile(spec);
+        fill_tile(&mut t, 2, zoneplate);
+        t
+    };
+    let mut reference = make();
+    let specs = reference.tiles(2).unwrap(); // 3 × 2 tiles of 2 × 2
+    for &s in &specs {
+        let t = filled(&reference, s);
+        reference.merge(t).unwrap();
+    }
+    let want = bits(&mut reference);
+
+    // The last tile missing: nothing held, its 4 pixels uncovered.
+    let mut film = make();
+    for &s in &specs[..5] {
+        let t = filled(&film, s);
+        film.merge(t).unwrap();
+    }
+    match film.try_image() {
+        Err(nyquist_film::Error::Incomplete {
+            uncovered,
+            pixels,
+            held,
+        }) => assert_eq!((uncovered, pixels, held), (4, 24, 0)),
+        other => panic!("{:?}", other.map(|_| ())),
+    }
+    let t = filled(&film, specs[5]);
+    film.merge(t).unwrap();
+    let (image, stats) = film.try_image().unwrap();
+    assert_eq!(stats.uncovered_pixels, 0);
+    assert_eq!(
+        image.data().iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        want
+    );
+
+    // Tile 1 missing, tiles 2 … 5 held behind it: the error counts what is missing without
+    // applying the held tiles, so tile 1 can still be merged and the film ends bit-identical.
+    let mut film = make();
+    for &s in specs.iter().filter(|s| s.index != 1) {
+        let t = filled(&film, s);
+        film.merge(t).unwrap();
+    }
+    let e = film.try_image().unwrap_err();
+    assert!(
+        matches!(
+            e,
+            nyquist_film::Error::Incomplete {
+                uncovered: 4,
+                pixels: 24,
+                held: 4
+            }
+        ),
+        "{e:?}"
+    );
+    assert!(e.to_string().contains("4 of its 24 pixels"), "{e}");
+    assert_eq!(film.stats().samples, 16, "the held tiles are still held");
+    let t = filled(&film, specs[1]);
+    film.merge(t).unwrap();
+    assert_eq!(bits(&mut film), want);
+
+    // `image` resolves a partial film and counts its uncovered pixels.
+    let mut partial = make();
+    let t = filled(&partial, specs[0]);
+    partial.merge(t).unwrap();
+    assert_eq!(partial.image().1.uncovered_pixels, 20);
+    // A film that took its samples itself is one whole-film tile: complete.
+    let mut itself = make();
+    itself.add_sample([0.5, 0.5], [1.0; 3], 1.0);
+    assert_eq!(itself.try_image().unwrap().1.uncovered_pixels, 0);
+}
+
+/// Bad parameters are errors whose message names the parameter, the value and the range or
+/// the value it had to exceed.
+#[test]
+fn film_errors_name_the_value_and_the_limit() {
+    let boxcar = Boxcar::default();
+    let msg = |config: FilmConfig| Film::new(config, &boxcar).unwrap_err().to_string();
+    assert_eq!(
+        msg(FilmConfig::new(0, 4)),
+        "width 0 is outside 1..=4294967295"
+    );
+    assert_eq!(
+        msg(FilmConfig::new(4, 0)),
+        "height 0 is outside 1..=4294967295"
+    );
+    let crop = |c: [f32; 4]| FilmConfig {
+        crop_window: c,
+        ..FilmConfig::new(4, 4)
+    };
+    assert_eq!(
+        msg(crop([0.0, 1.5, 0.0, 1.0])),
+        "crop window x1 1.5 is outside 0..=1"
+    );
+    assert_eq!(
+        msg(crop([0.0, 1.0, f32::NAN, 1.0])),
+        "crop window y0 NaN is outside 0..=1"
+    );
+    assert!(msg(crop([0.0, 1.0, 0.75, 0.5])).contains("y0 0.75 is not below y1 0.5"));
+    assert!(msg(crop([0.1, 0.2, 0.0, 1.0])).contains("covers no pixel of 4x4"));
+    let clamp = FilmConfig {
+        max_component: Some(-2.0),
+        ..FilmConfig::new(4, 4)
+    };
+    assert!(msg(clamp).contains("max component -2 must be finite and above 0"));
+    let film = Film::new(FilmConfig::new(4, 4), &boxcar).unwrap();
+    assert_eq!(
+        film.tiles(0).unwrap_err().to_string(),
+        "tile size 0 is outside 1..=4294967295"
+    );
+    let e = nyquist_film::Image::new(3, 0).unwrap_err().to_string();
+    assert_eq!(e, "image height 0 is outside 1..=4294967295");
+    let e = nyquist_film::Image::new(u32::MAX, u32::MAX)
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("4294967295x4294967295 needs"), "{e}");
+}
+
+/// A splat whose footprint holds no column (a box of radius 0.3 at x = 1.0: the pixel centres
+/// 0.5 and 1.5 are both 0.5 away) reaches no pixel, so it allocates no splat sums: the film's
+/// storage stays 32 bytes a pixel, and the splat is counted. (A footprint test that let zero
+/// columns through would allocate 24 more bytes a pixel: 896 bytes instead of 512.)
+#[test]
+fn a_splat_that_reaches_no_column_allocates_no_splat_sums() {
+    let boxcar = Boxcar::new([0.3, 0.3]).unwrap();
+    let mut film = Film::new(FilmConfig::new(4, 4), &boxcar).unwrap();
+    let spec = film.tiles(4).unwrap()[0];
+    let mut tile = film.tile(spec);
+    tile.add_splat([1.0, 2.5], [1.0; 3]);
+    film.merge(tile).unwrap();
+    assert_eq!(film.storage_bytes(), 16 * 32);
+    assert_eq!(film.stats().splats, 1);
+    // The same through the film itself.
+    film.add_splat([1.0, 2.5], [1.0; 3]);
+    assert_eq!(film.storage_bytes(), 16 * 32);
+    // A splat that reaches a pixel allocates the splat sums.
+    film.add_splat([1.5, 2.5], [1.0; 3]);
+    assert_eq!(film.storage_bytes(), 16 * (32 + 24));
+}

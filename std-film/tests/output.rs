@@ -225,3 +225,43 @@ proptest! {
 fn rand_bits(rng: &mut nyquist::rng::DefaultRng) -> u32 {
     (nyquist::rng::uniform_f64(rng) * 4_294_967_296.0) as u32
 }
+
+/// Every I/O failure of `write_image_file` names the file: a missing folder (the temporary
+/// file cannot be created) and a full device (the encoder's own writes fail, for PNG inside
+/// the encoder), for each format.
+#[test]
+fn io_errors_name_the_file_they_are_about() {
+    use nyquist_film::Error;
+    let img = test_image();
+    let dir = TempDir::new("nyquist-film-io-errors");
+    for ext in ["png", "exr", "pfm"] {
+        let missing = dir.join("missing").join(format!("x.{ext}"));
+        match write_image_file(&missing, &img) {
+            Err(e @ Error::File { .. }) => {
+                let Error::File { path, source } = &e else {
+                    unreachable!()
+                };
+                assert_eq!(path, &missing);
+                assert_eq!(source.kind(), std::io::ErrorKind::NotFound);
+                let text = e.to_string();
+                assert!(
+                    text.starts_with(&format!("{}: ", missing.display())),
+                    "{text}"
+                );
+            }
+            other => panic!("{ext}: {other:?}"),
+        }
+        let full = dir.join(format!("full.{ext}"));
+        std::os::unix::fs::symlink("/dev/full", &full).unwrap();
+        match write_image_file(&full, &img) {
+            Err(Error::File { path, source }) => {
+                assert_eq!(path, full, "{ext}");
+                assert!(
+                    source.to_string().contains("No space left"),
+                    "{ext}: {source}"
+                );
+            }
+            other => panic!("{ext}: {other:?}"),
+        }
+    }
+}

@@ -1,7 +1,8 @@
 //! OpenEXR output and read-back through the `exr` crate (single-threaded, so the bytes are
 //! deterministic).
 
-use crate::{Error, Image};
+use crate::error::Error;
+use crate::image::Image;
 use ::exr::prelude::{self as x, ReadChannels, ReadLayers, ReadSpecificChannel, WritableImage};
 use std::io::{Cursor, Read, Write};
 
@@ -34,7 +35,6 @@ pub enum ExrPrecision {
 pub fn write_exr(w: &mut dyn Write, image: &Image, precision: ExrPrecision) -> Result<(), Error> {
     let size = (image.width() as usize, image.height() as usize);
     let mut buffer = Cursor::new(Vec::new());
-    let fmt = |e: ::exr::error::Error| Error::Format(format!("OpenEXR: {e}"));
     let encoding = x::Encoding::SMALL_LOSSLESS;
     match precision {
         ExrPrecision::F32 => {
@@ -47,7 +47,7 @@ pub fn write_exr(w: &mut dyn Write, image: &Image, precision: ExrPrecision) -> R
                 .write()
                 .non_parallel()
                 .to_buffered(&mut buffer)
-                .map_err(fmt)?;
+                .map_err(exr_error)?;
         }
         ExrPrecision::F16 => {
             let channels = x::SpecificChannels::rgb(|p: x::Vec2<usize>| {
@@ -63,7 +63,7 @@ pub fn write_exr(w: &mut dyn Write, image: &Image, precision: ExrPrecision) -> R
                 .write()
                 .non_parallel()
                 .to_buffered(&mut buffer)
-                .map_err(fmt)?;
+                .map_err(exr_error)?;
         }
     }
     w.write_all(buffer.get_ref())?;
@@ -97,7 +97,6 @@ pub fn write_exr_planes(
             "OpenEXR: every plane needs {n} samples ({width}x{height})"
         )));
     }
-    let fmt = |e: ::exr::error::Error| Error::Format(format!("OpenEXR: {e}"));
     let list: x::SmallVec<[x::AnyChannel<x::FlatSamples>; 4]> = planes
         .iter()
         .map(|(name, p)| x::AnyChannel::new(*name, x::FlatSamples::F32(p.to_vec())))
@@ -113,7 +112,7 @@ pub fn write_exr_planes(
         .write()
         .non_parallel()
         .to_buffered(&mut buffer)
-        .map_err(fmt)?;
+        .map_err(exr_error)?;
     w.write_all(buffer.get_ref())?;
     Ok(())
 }
@@ -129,7 +128,6 @@ pub fn write_exr_planes(
 pub fn read_exr(r: &mut dyn Read) -> Result<Image, Error> {
     let mut all = Vec::new();
     r.read_to_end(&mut all)?;
-    let fmt = |e: ::exr::error::Error| Error::Format(format!("OpenEXR: {e}"));
     let read = x::read()
         .no_deep_data()
         .largest_resolution_level()
@@ -148,7 +146,7 @@ pub fn read_exr(r: &mut dyn Read) -> Result<Image, Error> {
         .all_attributes()
         .non_parallel()
         .from_buffered(Cursor::new(all))
-        .map_err(fmt)?;
+        .map_err(exr_error)?;
     let layer = read.layer_data;
     let size = layer.size;
     let (_, data) = layer.channel_data.pixels;
@@ -157,4 +155,13 @@ pub fn read_exr(r: &mut dyn Read) -> Result<Image, Error> {
         u32::try_from(size.height()).map_err(|_| Error::Format("OpenEXR: too tall".into()))?,
     );
     Image::from_rgb(w, h, data)
+}
+
+/// An OpenEXR error as the film's: the stream's I/O errors as [`Error::Io`], the rest as
+/// [`Error::Format`].
+fn exr_error(e: ::exr::error::Error) -> Error {
+    match e {
+        ::exr::error::Error::Io(e) => Error::Io(e),
+        e => Error::Format(format!("OpenEXR: {e}")),
+    }
 }

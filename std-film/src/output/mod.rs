@@ -8,7 +8,8 @@ pub mod exr;
 pub mod pfm;
 pub mod png;
 
-use crate::{Error, Image};
+use crate::error::Error;
+use crate::image::Image;
 use std::io::Write;
 use std::path::Path;
 
@@ -77,8 +78,8 @@ pub fn write_image(w: &mut dyn Write, image: &Image, format: ImageFormat) -> Res
 /// the same folder, renamed into place after a complete write; on error nothing is left behind.
 ///
 /// # Errors
-/// [`Error::Config`] for an unknown extension, [`Error::Io`] for an unwritable folder,
-/// [`Error::Format`] if the encoder fails.
+/// [`Error::Config`] for an unknown extension, [`Error::File`] (naming `path`) when the file
+/// cannot be created, written or renamed into place, [`Error::Format`] if the encoder fails.
 ///
 /// ```
 /// let dir = std::env::temp_dir();
@@ -87,7 +88,9 @@ pub fn write_image(w: &mut dyn Write, image: &Image, format: ImageFormat) -> Res
 /// nyquist_film::write_image_file(&path, &img).unwrap();
 /// assert!(path.exists());
 /// std::fs::remove_file(&path).unwrap();
-/// assert!(nyquist_film::write_image_file(&dir.join("missing/x.png"), &img).is_err());
+/// let missing = dir.join("nyquist-no-such-folder/x.png");
+/// let e = nyquist_film::write_image_file(&missing, &img).unwrap_err();
+/// assert!(e.to_string().starts_with(&format!("{}: ", missing.display())), "{e}");
 /// ```
 pub fn write_image_file(path: &Path, image: &Image) -> Result<(), Error> {
     let format = ImageFormat::from_path(path)?;
@@ -100,7 +103,9 @@ pub fn write_image_file(path: &Path, image: &Image) -> Result<(), Error> {
 /// renaming over it would replace the device with a regular file.
 ///
 /// # Errors
-/// Whatever `write` returns, or [`Error::Io`] for create/flush/rename failures.
+/// Whatever `write` returns, with its stream errors as [`Error::File`] naming `path`;
+/// [`Error::File`] for create, flush and rename failures; [`Error::Config`] if `path` has no
+/// file name.
 ///
 /// ```
 /// use std::io::Write;
@@ -122,10 +127,13 @@ pub fn write_file_atomic(
         .file_name()
         .ok_or_else(|| Error::Config(format!("{}: not a file name", path.display())))?;
     if std::fs::metadata(path).is_ok_and(|m| !m.is_file() && !m.is_dir()) {
-        let file = std::fs::OpenOptions::new().write(true).open(path)?;
-        let mut w = std::io::BufWriter::new(file);
-        write(&mut w)?;
-        return Ok(w.flush()?);
+        return (|| {
+            let file = std::fs::OpenOptions::new().write(true).open(path)?;
+            let mut w = std::io::BufWriter::new(file);
+            write(&mut w)?;
+            Ok(w.flush()?)
+        })()
+        .map_err(|e: Error| e.at(path));
     }
     let tmp = dir.join(format!(
         ".{}.tmp-{}",
@@ -140,7 +148,8 @@ pub fn write_file_atomic(
         file.sync_all()?;
         std::fs::rename(&tmp, path)?;
         Ok(())
-    })();
+    })()
+    .map_err(|e: Error| e.at(path));
     if result.is_err() {
         let _ = std::fs::remove_file(&tmp);
     }

@@ -1,7 +1,8 @@
 //! Portable float map (PFM): `PF\n<w> <h>\n-1.0\n` then little-endian `f32` RGB rows from the
 //! bottom row up (the format's convention).
 
-use crate::{Error, Image};
+use crate::error::Error;
+use crate::image::Image;
 use std::io::{Read, Write};
 
 /// Writes `image` as a little-endian colour PFM.

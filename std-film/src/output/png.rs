@@ -1,6 +1,7 @@
 //! 8-bit sRGB PNG output, through the `png` crate.
 
-use crate::{Error, Image};
+use crate::error::Error;
+use crate::image::Image;
 use std::io::Write;
 
 /// Options of the PNG writer.
@@ -86,7 +87,12 @@ pub fn write_png(w: &mut dyn Write, image: &Image, options: &PngOptions) -> Resu
     encoder.set_color(::png::ColorType::Rgb);
     encoder.set_depth(::png::BitDepth::Eight);
     encoder.set_source_srgb(::png::SrgbRenderingIntent::Perceptual);
-    let fmt = |e: ::png::EncodingError| Error::Format(format!("PNG: {e}"));
+    // A failing writer is an I/O error (named with its path by `write_image_file`), not the
+    // encoder's.
+    let fmt = |e: ::png::EncodingError| match e {
+        ::png::EncodingError::IoError(e) => Error::Io(e),
+        e => Error::Format(format!("PNG: {e}")),
+    };
     let mut writer = encoder.write_header().map_err(fmt)?;
     writer.write_image_data(&bytes).map_err(fmt)?;
     writer.finish().map_err(fmt)
