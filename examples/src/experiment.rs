@@ -17,7 +17,7 @@ use std::path::PathBuf;
 use anyhow::{Context, Result};
 use nyquist_film::{Image, output::pfm::read_pfm, write_image_file};
 
-use crate::{RenderConfig, render, rmse};
+use crate::{RenderConfig, render};
 
 /// The three splits of 16 light samples per pixel: (camera samples, light samples each).
 pub const SPLITS: [(u32, u32); 3] = [(1, 16), (16, 1), (4, 4)];
@@ -198,7 +198,11 @@ impl Experiment {
             config.threads = self.threads;
             let out =
                 render(&config, |_, _| {}).with_context(|| format!("{name} {camera}x{light}"))?;
-            sum_sq += rmse(&out.image, reference).powi(2);
+            let rmse = out
+                .image
+                .rmse(reference)
+                .context("RMSE against the reference")?;
+            sum_sq += rmse.powi(2);
             seconds = seconds.min(out.seconds);
             first.get_or_insert(out.image);
             *done += 1;

@@ -154,19 +154,3 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
         seconds,
     })
 }
-
-/// Root-mean-square difference of two images of the same size, over all channels.
-///
-/// # Panics
-/// If the sizes differ.
-pub fn rmse(a: &Image, b: &Image) -> f64 {
-    assert_eq!((a.width(), a.height()), (b.width(), b.height()));
-    let n = a.data().len().max(1) as f64;
-    let s: f64 = a
-        .data()
-        .iter()
-        .zip(b.data())
-        .map(|(x, y)| (f64::from(*x) - f64::from(*y)).powi(2))
-        .sum();
-    (s / n).sqrt()
-}

@@ -175,4 +175,177 @@ impl Image {
         let o = self.offset(x, y);
         self.data[o..o + 3].copy_from_slice(&rgb);
     }
+
+    /// Root-mean-square difference from `reference` over every channel of every pixel, in
+    /// `f64`: `√(Σ (a − b)² / (3·width·height))`. 0 for identical images.
+    ///
+    /// # Errors
+    /// [`Error::Config`] if the sizes differ.
+    ///
+    /// ```
+    /// use nyquist_film::Image;
+    /// let a = Image::from_fn(2, 1, |x, _| [x as f32; 3]);
+    /// let b = Image::from_fn(2, 1, |_, _| [0.0; 3]);
+    /// // Three channels of 1 − 0 and three of 0 − 0: √(3 / 6).
+    /// assert_eq!(a.rmse(&b).unwrap(), 0.5f64.sqrt());
+    /// assert_eq!(a.rmse(&a).unwrap(), 0.0);
+    /// assert!(a.rmse(&Image::new(1, 2).unwrap()).is_err());
+    /// ```
+    pub fn rmse(&self, reference: &Image) -> Result<f64, Error> {
+        self.check_same_size(reference)?;
+        let n = self.data.len() as f64;
+        let sum: f64 = self
+            .data
+            .iter()
+            .zip(&reference.data)
+            .map(|(&a, &b)| (f64::from(a) - f64::from(b)).powi(2))
+            .sum();
+        Ok((sum / n).sqrt())
+    }
+
+    /// Peak signal-to-noise ratio against `reference` in decibels for a peak of 1 (linear
+    /// radiance in `[0, 1]`): `−20·log₁₀(`[`rmse`](Image::rmse)`)`, infinite for identical
+    /// images.
+    ///
+    /// # Errors
+    /// [`Error::Config`] if the sizes differ.
+    ///
+    /// ```
+    /// use nyquist_film::Image;
+    /// let a = Image::from_fn(2, 2, |_, _| [0.5; 3]);
+    /// let b = Image::from_fn(2, 2, |_, _| [0.6; 3]);
+    /// assert!((a.psnr(&b).unwrap() - 20.0).abs() < 1e-5); // an error of 0.1 everywhere
+    /// assert_eq!(a.psnr(&a).unwrap(), f64::INFINITY);
+    /// ```
+    pub fn psnr(&self, reference: &Image) -> Result<f64, Error> {
+        self.rmse(reference).map(psnr_of_rmse)
+    }
+
+    /// Root-mean-square difference between one channel (0 red, 1 green, 2 blue) and a
+    /// reference value per pixel (row-major, in `f64`, such as an analytic scene's pixel
+    /// means): `√(Σ (a − r)² / (width·height))`.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] if `channel` is above 2; [`Error::Config`] unless `reference`
+    /// holds one value per pixel.
+    ///
+    /// ```
+    /// use nyquist_film::Image;
+    /// let img = Image::from_fn(2, 1, |x, _| [x as f32, 9.0, 9.0]);
+    /// assert_eq!(img.channel_rmse(0, &[0.0, 0.5]).unwrap(), 0.125f64.sqrt());
+    /// assert!(img.channel_rmse(3, &[0.0, 0.5]).is_err());
+    /// assert!(img.channel_rmse(0, &[0.0]).is_err());
+    /// ```
+    pub fn channel_rmse(&self, channel: usize, reference: &[f64]) -> Result<f64, Error> {
+        if channel > 2 {
+            return Err(Error::OutOfRange {
+                what: "channel",
+                value: channel as f64,
+                min: 0.0,
+                max: 2.0,
+            });
+        }
+        let pixels = self.data.len() / 3;
+        if reference.len() != pixels {
+            return Err(Error::Config(format!(
+                "{} reference values for a {}x{} image ({pixels} needed)",
+                reference.len(),
+                self.width,
+                self.height
+            )));
+        }
+        let sum: f64 = self
+            .data
+            .chunks_exact(3)
+            .zip(reference)
+            .map(|(p, &r)| (f64::from(p[channel]) - r).powi(2))
+            .sum();
+        Ok((sum / pixels as f64).sqrt())
+    }
+
+    /// [`psnr`](Image::psnr) of one channel against a reference value per pixel:
+    /// `−20·log₁₀(`[`channel_rmse`](Image::channel_rmse)`)`.
+    ///
+    /// # Errors
+    /// As [`channel_rmse`](Image::channel_rmse).
+    ///
+    /// ```
+    /// use nyquist_film::Image;
+    /// let img = Image::from_fn(3, 1, |_, _| [0.25, 0.0, 0.0]);
+    /// assert!((img.channel_psnr(0, &[0.35; 3]).unwrap() - 20.0).abs() < 1e-5);
+    /// ```
+    pub fn channel_psnr(&self, channel: usize, reference: &[f64]) -> Result<f64, Error> {
+        self.channel_rmse(channel, reference).map(psnr_of_rmse)
+    }
+
+    fn check_same_size(&self, other: &Image) -> Result<(), Error> {
+        if (self.width, self.height) != (other.width, other.height) {
+            return Err(Error::Config(format!(
+                "image sizes differ: {}x{} against a {}x{} reference",
+                self.width, self.height, other.width, other.height
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// PSNR in dB for a peak of 1: `−20·log₁₀(rmse)`, through `libm` so every target gives the same
+/// bits.
+fn psnr_of_rmse(rmse: f64) -> f64 {
+    -20.0 * libm::log10(rmse)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A deterministic image with values spread over `[−1, 2)`.
+    fn noisy(width: u32, height: u32, seed: u64) -> Image {
+        let mut rng = nyquist::rng::default_rng(seed);
+        Image::from_fn(width, height, |_, _| {
+            [(); 3].map(|_| 3.0 * nyquist::rng::uniform_f32(&mut rng) - 1.0)
+        })
+    }
+
+    /// The metrics are, bit for bit, the formulas the command line and the path tracer used
+    /// before them: all channels against an image (mean over every float), one channel against
+    /// per-pixel `f64` references (mean over the pixels), PSNR `−20·log₁₀(rmse)` through `libm`.
+    #[test]
+    fn metrics_are_the_front_ends_formulas() {
+        let (a, b) = (noisy(7, 5, 1), noisy(7, 5, 2));
+        let n = a.data().len() as f64;
+        let sum: f64 = a
+            .data()
+            .iter()
+            .zip(b.data())
+            .map(|(x, y)| (f64::from(*x) - f64::from(*y)).powi(2))
+            .sum();
+        let want = (sum / n).sqrt();
+        assert_eq!(a.rmse(&b).unwrap().to_bits(), want.to_bits());
+        assert_eq!(
+            a.psnr(&b).unwrap().to_bits(),
+            (-20.0 * libm::log10(want)).to_bits()
+        );
+        let reference: Vec<f64> = (0..35).map(|i| f64::from(i) / 35.0).collect();
+        for channel in 0..3 {
+            let sum: f64 = a
+                .data()
+                .chunks_exact(3)
+                .zip(&reference)
+                .map(|(p, r)| (f64::from(p[channel]) - r).powi(2))
+                .sum();
+            let want = (sum / 35.0).sqrt();
+            let got = a.channel_rmse(channel, &reference).unwrap();
+            assert_eq!(got.to_bits(), want.to_bits(), "channel {channel}");
+            let psnr = a.channel_psnr(channel, &reference).unwrap();
+            assert_eq!(psnr.to_bits(), (-20.0 * libm::log10(want)).to_bits());
+        }
+        // Sizes and lengths that do not match, and channels past blue, are errors.
+        assert!(a.rmse(&noisy(5, 7, 1)).is_err());
+        assert!(a.psnr(&noisy(7, 4, 1)).is_err());
+        assert!(a.channel_rmse(0, &reference[1..]).is_err());
+        let e = a.channel_psnr(3, &reference).unwrap_err();
+        assert_eq!(e.to_string(), "channel 3 is outside 0..=2");
+        assert_eq!(a.psnr(&a).unwrap(), f64::INFINITY);
+    }
 }
