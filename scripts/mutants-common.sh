@@ -1,13 +1,195 @@
-# Helpers shared by scripts/mutants.sh and scripts/mutants-in-diff.sh (sourced; they set
-# EQUIVALENT to the list of equivalent mutants first).
+# shellcheck shell=bash
+# Helpers shared by the scripts/mutants*.sh scripts (sourced).
 
-# A mutant's name without its line and column, as scripts/mutants-equivalent.txt lists it:
-# "core/src/hash.rs:12:5: replace + with - in mix" -> "core/src/hash.rs: replace + with - in mix".
-strip_position() { sed -E 's/^([^:]+):[0-9]+:[0-9]+: /\1: /'; }
-# The listed equivalent mutants' names (the part of each line before "  # ").
-equivalent_names() { grep -v -e '^#' -e '^[[:space:]]*$' "$EQUIVALENT" | sed -E 's/  # .*$//'; }
+EQUIVALENT=${EQUIVALENT:-scripts/mutants-equivalent.txt}
+MODULES_FILE=${MODULES_FILE:-scripts/mutants-modules.txt}
+
 # The number of non-empty lines of a file (0 when it is missing or empty).
 count() { if [ -s "$1" ]; then grep -c . "$1"; else echo 0; fi; }
+
+# The package of a source file: its row's in scripts/mutants-modules.txt, else by its folder.
+package_of() {
+    local p
+    p=$(grep -v '^#' "$MODULES_FILE" | awk -F'|' -v f="$1" '$3 == f { print $2; exit }')
+    if [ -n "$p" ]; then
+        echo "$p"
+    else
+        case $1 in std-film/*) echo nyquist-film ;; *) echo nyquist ;; esac
+    fi
+}
+
+# The files scripts/mutants-equivalent.txt has entries for, one a line.
+equivalent_files() { grep -v -e '^#' -e '^[[:space:]]*$' "$EQUIVALENT" | cut -d: -f1 | sort -u; }
+
+# Every mutant of FILE... in the working tree, one name a line, as `cargo mutants --list` names
+# them (one call per package).
+list_mutants() {
+    local f pkg
+    declare -A by_pkg=()
+    for f in "$@"; do
+        [ -f "$f" ] || continue
+        pkg=$(package_of "$f")
+        by_pkg[$pkg]+=" --file $f"
+    done
+    for pkg in "${!by_pkg[@]}"; do
+        # shellcheck disable=SC2086 # the --file arguments
+        cargo mutants --list --package "$pkg" ${by_pkg[$pkg]} </dev/null 2>/dev/null
+    done
+}
+
+# Resolves the entries of scripts/mutants-equivalent.txt to the mutants they name in one tree.
+#
+#   equivalent_resolve MODE ROOT MUTANTS [FILE...]
+#
+# An entry is one equivalent mutant: its name as cargo-mutants prints it, with line and column,
+# then "  @ " and the text of its line (trimmed), then "  # " and why it is equivalent. The line
+# text anchors the entry when code moves: an entry names the mutant of its name (without the
+# position) on a line of its file whose text is the anchor, at the entry's column (or, on a
+# re-indented line, the same number of mutants of that name as entries name there). Entries that
+# share file, name and anchor are resolved together: at their recorded positions when those still
+# hold, else to the sites found, paired in order. An entry resolves when its group finds exactly
+# as many sites as it has entries; otherwise the entry matches more or fewer sites than it says.
+#
+# ROOT is the folder the listed files are read from; MUTANTS a file of the tree's mutant names
+# (all of each file's, for `check`), one a line; FILE... limits the entries to these files.
+#   names     prints the name (with position) of every mutant an entry resolves to
+#   check     prints every entry that does not resolve and every entry whose mutant moved;
+#             exit status 1 when some entry does not resolve
+#   reanchor  prints the list with each resolved entry's position set to where its mutant is now
+equivalent_resolve() {
+    local mode=$1 root=$2 mutants=$3
+    shift 3
+    local sources=() files=() f
+    if [ $# -eq 0 ]; then mapfile -t files < <(equivalent_files); else files=("$@"); fi
+    for f in "${files[@]}"; do
+        [ -f "$root/$f" ] && sources+=("$root/$f")
+    done
+    awk -v mode="$mode" -v eq="$EQUIVALENT" -v mutants="$mutants" -v root="$root" \
+        -v only="${files[*]}" -f /dev/fd/3 "$EQUIVALENT" "$mutants" "${sources[@]}" 3<<'AWK'
+function trim(s) { sub(/^[ \t]+/, "", s); sub(/[ \t]+$/, "", s); return s }
+# "F:L:C: NAME" -> P_f, P_l, P_c, P_n; 0 when it is not such a name.
+function parse(s,    p, r) {
+    p = index(s, ":"); if (p == 0) return 0
+    P_f = substr(s, 1, p - 1); r = substr(s, p + 1)
+    p = index(r, ":"); if (p == 0) return 0
+    P_l = substr(r, 1, p - 1); r = substr(r, p + 1)
+    p = index(r, ": "); if (p == 0) return 0
+    P_c = substr(r, 1, p - 1); P_n = substr(r, p + 2)
+    return P_l ~ /^[0-9]+$/ && P_c ~ /^[0-9]+$/
+}
+function before(l1, c1, l2, c2) { return l1 < l2 || (l1 == l2 && c1 < c2) }
+BEGIN {
+    n = split(only, o, " ")
+    for (i = 1; i <= n; i++) wanted[o[i]] = 1
+}
+FILENAME == eq {
+    text[FNR] = $0; nlines = FNR
+    if ($0 ~ /^#/ || $0 ~ /^[ \t]*$/) next
+    a = index($0, "  @ ")
+    if (a == 0 || !parse(substr($0, 1, a - 1))) {
+        if (!(substr($0, 1, index($0, ":") - 1) in wanted)) next
+        problem[++nproblems] = eq ":" FNR ": not \"FILE:LINE:COLUMN: NAME  @ LINE TEXT  # REASON\": " $0
+        next
+    }
+    if (!(P_f in wanted)) next
+    rest = substr($0, a + 4)
+    b = index(rest, "  # ")
+    anchor = trim(b ? substr(rest, 1, b - 1) : rest)
+    E_f[FNR] = P_f; E_l[FNR] = P_l + 0; E_c[FNR] = P_c + 0; E_n[FNR] = P_n; E_a[FNR] = anchor
+    g = P_f SUBSEP P_n SUBSEP anchor
+    if (!(g in gsize)) { groups[++ngroups] = g }
+    gsize[g]++; gmember[g, gsize[g]] = FNR
+    next
+}
+FILENAME == mutants {
+    if (parse($0)) at[P_f, P_l + 0, P_n] = at[P_f, P_l + 0, P_n] " " (P_c + 0)
+    next
+}
+{
+    f = substr(FILENAME, length(root) + 2)
+    t = trim($0)
+    src[f, FNR] = t
+    lines_of[f, t] = lines_of[f, t] " " FNR
+}
+END {
+    for (gi = 1; gi <= ngroups; gi++) {
+        g = groups[gi]; k = gsize[g]
+        e1 = gmember[g, 1]; f = E_f[e1]; nm = E_n[e1]; anchor = E_a[e1]
+        split("", cols); ncols = 0
+        for (m = 1; m <= k; m++) {
+            e = gmember[g, m]
+            if (!(E_c[e] in cols)) { cols[E_c[e]] = 1; ncols++ }
+        }
+        # The sites: on each line whose text is the anchor, the mutants of this name at the
+        # entries' columns, or, where none is (a re-indented line), all of them if they are as
+        # many as the entries' columns.
+        ns = 0; split("", here)
+        nl = split(lines_of[f, anchor], ls, " ")
+        for (i = 1; i <= nl; i++) {
+            ln = ls[i] + 0
+            nc = split(at[f, ln, nm], cs, " ")
+            exact = 0
+            for (j = 1; j <= nc; j++) if ((cs[j] + 0) in cols) exact++
+            for (j = 1; j <= nc; j++) {
+                if (exact > 0 && !((cs[j] + 0) in cols)) continue
+                if (exact == 0 && nc != ncols) continue
+                ns++; S_l[ns] = ln; S_c[ns] = cs[j] + 0; here[ln, cs[j] + 0] = ns
+            }
+        }
+        # In order of position, for pairing.
+        for (i = 2; i <= ns; i++) {
+            l = S_l[i]; c = S_c[i]
+            for (j = i - 1; j >= 1 && before(l, c, S_l[j], S_c[j]); j--) { S_l[j + 1] = S_l[j]; S_c[j + 1] = S_c[j] }
+            S_l[j + 1] = l; S_c[j + 1] = c
+        }
+        for (i = 1; i <= k; i++) order[i] = gmember[g, i]
+        for (i = 2; i <= k; i++) {
+            e = order[i]
+            for (j = i - 1; j >= 1 && before(E_l[e], E_c[e], E_l[order[j]], E_c[order[j]]); j--) order[j + 1] = order[j]
+            order[j + 1] = e
+        }
+        recorded = 1
+        for (i = 1; i <= k; i++) {
+            e = order[i]
+            if (!((E_l[e], E_c[e]) in here) || (i > 1 && E_l[e] == E_l[order[i - 1]] && E_c[e] == E_c[order[i - 1]])) recorded = 0
+        }
+        if (!recorded && ns != k) {
+            for (i = 1; i <= k; i++) {
+                e = order[i]
+                problem[++nproblems] = eq ":" e ": " E_f[e] ":" E_l[e] ":" E_c[e] ": " E_n[e] \
+                    ": its anchor finds " ns " mutant" (ns == 1 ? "" : "s") " of this name, the list names " k \
+                    " (" (nl == 0 ? "no line of " f " reads `" anchor "`" : "on " nl " line" (nl == 1 ? "" : "s") " reading `" anchor "`") ")"
+            }
+            continue
+        }
+        for (i = 1; i <= k; i++) {
+            e = order[i]
+            if (recorded) { R_l[e] = E_l[e]; R_c[e] = E_c[e] } else { R_l[e] = S_l[i]; R_c[e] = S_c[i] }
+            resolved[e] = 1
+            if (R_l[e] != E_l[e] || R_c[e] != E_c[e]) {
+                moved[++nmoved] = eq ":" e ": " E_f[e] ":" E_l[e] ":" E_c[e] ": " E_n[e] " is now at " R_l[e] ":" R_c[e]
+            }
+        }
+    }
+    if (mode == "names") {
+        for (e = 1; e <= nlines; e++) if (e in resolved) print E_f[e] ":" R_l[e] ":" R_c[e] ": " E_n[e]
+    } else if (mode == "reanchor") {
+        for (e = 1; e <= nlines; e++) {
+            if (e in resolved) {
+                a = index(text[e], "  @ ")
+                print E_f[e] ":" R_l[e] ":" R_c[e] ": " E_n[e] substr(text[e], a)
+            } else print text[e]
+        }
+    } else {
+        for (i = 1; i <= nmoved; i++) print "moved: " moved[i]
+        for (i = 1; i <= nproblems; i++) print "NOT RESOLVED: " problem[i]
+        nres = 0; for (e in resolved) nres++
+        print "EQUIVALENT " nres " entries resolved, " (nmoved + 0) " moved (scripts/mutants-equivalent.sh --reanchor), " (nproblems + 0) " not resolved"
+    }
+    exit nproblems > 0 ? 1 : 0
+}
+AWK
+}
 
 # The commit that .ci/last-tested names in COMMIT's tree (the last commit CI passed on when
 # COMMIT was tested), as a full hash; nothing when the file is absent or names no commit here.
@@ -24,6 +206,7 @@ recorded_pass() {
 # .ci/last-tested names, when it is HEAD or an ancestor of it; else the merge base with
 # origin/main, when that is not HEAD itself; else HEAD's first parent (only the last commit is
 # then tested); else BASE is empty.
+# shellcheck disable=SC2034 # BASE, BASE_WHY and BASE_RECORDED are the callers' to read
 diff_base() {
     local last head merge
     head=$(git rev-parse HEAD)
@@ -66,4 +249,33 @@ coverage_start() {
         start=$prev
     done
     echo "$start"
+}
+
+# The mutants the equivalent list's entries for FILE name, one a line with position, in FILE as
+# at COMMIT (the working tree when COMMIT is empty or `uncommitted`), among the mutant names in
+# MUTANTS (a file, one a line). Entries that do not resolve name nothing (see
+# scripts/mutants-equivalent.sh).
+equivalent_sites() {
+    local file=$1 commit=$2 mutants=$3 root=.
+    local tmp
+    tmp=$(mktemp -d)
+    if [ -n "$commit" ] && [ "$commit" != uncommitted ]; then
+        root=$tmp
+        mkdir -p "$tmp/$(dirname "$file")"
+        git show "$commit:$file" >"$tmp/$file" 2>/dev/null || rm -f "$tmp/$file"
+    fi
+    equivalent_resolve names "$root" "$mutants" "$file" || true
+    rm -rf "$tmp"
+}
+
+# The entry line for each mutant NAME given (with position), as scripts/mutants-equivalent.txt
+# takes it, its reason left to write: "NAME  @ LINE TEXT  # ".
+equivalent_entry() {
+    local name file line
+    for name in "$@"; do
+        file=${name%%:*}
+        line=${name#*:}
+        line=${line%%:*}
+        printf '%s  @ %s  # \n' "$name" "$(sed -n "${line}p" "$file" | sed -E 's/^[[:space:]]+//; s/[[:space:]]+$//')"
+    done
 }

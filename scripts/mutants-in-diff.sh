@@ -8,8 +8,8 @@
 # core and the film, one file at a time, the files with the most added or changed lines first,
 # each against the tests scripts/mutants-modules.txt names for it (a file not listed there: the
 # lib tests under its module path, or all of its package's lib tests when none match). Missed
-# mutants listed in scripts/mutants-equivalent.txt are forgiven; any other missed mutant fails
-# the script.
+# mutants that scripts/mutants-equivalent.txt names (each entry one mutant, by position or, where
+# the code moved, by its line's text) are forgiven; any other missed mutant fails the script.
 #
 # BASE defaults to the commit .ci/last-tested names, the last commit CI passed on, so every
 # commit since, not only the last one, is tested. When HEAD has no such file, or it names a
@@ -69,15 +69,13 @@ while [ $# -gt 0 ]; do
     shift
 done
 
-EQUIVALENT=scripts/mutants-equivalent.txt
-MODULES_FILE=scripts/mutants-modules.txt
 BOX=${MUTANTS_DIFF_SECONDS:-300}
 TIMEOUT=${MUTANTS_TIMEOUT:-60}
 OPT_LEVEL=${MUTANTS_OPT_LEVEL:-0}
 OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants-diff}
 SOURCES=(core/src std-film/src)
 
-# strip_position, equivalent_names, count, diff_base.
+# count, diff_base, equivalent_sites; MODULES_FILE, EQUIVALENT.
 . scripts/mutants-common.sh
 
 if [ $# -gt 0 ]; then
@@ -129,6 +127,7 @@ if [ $in_place = 1 ]; then
     regressions() { git ls-files --others --exclude-standard -- '*proptest-regressions/*'; }
     mapfile -t kept < <(regressions)
     # (`|| true`: grep -v selecting nothing, the usual case, must not fail the script on exit.)
+    # shellcheck disable=SC2317 # called by the trap
     restore() {
         git checkout -q HEAD -- "${SOURCES[@]}"
         regressions | { grep -v -F -x -f <(printf '%s\n' "${kept[@]}" "") || true; } | xargs -r rm -f
@@ -195,6 +194,7 @@ for file in "${files[@]}"; do
     cmd=(cargo mutants --in-diff "$diff" --package "$package" --file "$file" --test-package "$package"
         --no-shuffle --timeout "$TIMEOUT" --baseline skip --output "$dir" "${cargo_args[@]}")
     [ $in_place = 1 ] && cmd+=(--in-place) # one mutant at a time (the default), as it must be here
+    # shellcheck disable=SC2206 # the filters are separate libtest arguments
     [ -n "$filters" ] && cmd+=(-- -- $filters)
     echo "== $file: $n mutants, at most ${left} s: ${cmd[*]}"
     rc=0
@@ -213,11 +213,15 @@ for file in "${files[@]}"; do
     unreached=$((unreached + n - (c + m + u + t)))
     [ $((c + m + u + t)) -ge "$n" ] || not_reached+=("$file ($((n - (c + m + u + t))) of $n)")
     if [ -s "$res/missed.txt" ]; then
-        e=$(strip_position <"$res/missed.txt" | grep -c -F -x -f <(equivalent_names) || true)
+        # The listed mutants among all of the file's (the tree cargo-mutants copied or mutated).
+        cargo mutants --list --package "$package" --file "$file" </dev/null 2>/dev/null >"$dir/all.txt" || true
+        equivalent_sites "$file" "" "$dir/all.txt" >"$dir/equivalent-sites.txt"
+        e=$(grep -c -F -x -f "$dir/equivalent-sites.txt" "$res/missed.txt" || true)
         equivalent=$((equivalent + e))
-        unlisted=$(strip_position <"$res/missed.txt" | grep -v -F -x -f <(equivalent_names) || true)
+        unlisted=$(grep -v -F -x -f "$dir/equivalent-sites.txt" "$res/missed.txt" || true)
         if [ -n "$unlisted" ]; then
-            echo "$file: missed mutants not listed in $EQUIVALENT (a test should catch each):"
+            echo "$file: missed mutants not listed in $EQUIVALENT (a test should catch each; list an"
+            echo "    equivalent one with the line scripts/mutants-equivalent.sh --entry 'NAME' prints):"
             printf '%s\n' "$unlisted" | sed 's/^/    /'
             status=2
         fi

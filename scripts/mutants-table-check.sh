@@ -11,20 +11,23 @@
 # (tests, comments, attributes, deleted lines) leave a row current. A module of
 # scripts/mutants-modules.txt that has mutants but no row is out of date too.
 #
+# It then checks the list of equivalent mutants as scripts/mutants-equivalent.sh does: every
+# entry must name exactly one mutant of the working tree.
+#
 # BASE is chosen as scripts/mutants-in-diff.sh chooses it (from .ci/last-tested, else the merge
 # base with origin/main, else HEAD's first parent); only with the first is the record's history
 # counted. Costs a `git log` per row and, for a row whose file changed, two
 # `cargo mutants --list` (about a second each). SKIPPED without cargo-mutants.
 #
-# Exit status: 0 when every row is current, 2 when some row is out of date (each is printed with
-# the command that measures it again), 1 on any other failure.
+# Exit status: 0 when every row is current and every entry resolves, 2 when some row is out of
+# date (each is printed with the command that measures it again) or some entry does not resolve,
+# 1 on any other failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 DOC=docs/mutation.md
-MODULES_FILE=scripts/mutants-modules.txt
 
-# diff_base, coverage_start.
+# diff_base, coverage_start, list_mutants, equivalent_files, equivalent_resolve; MODULES_FILE.
 . scripts/mutants-common.sh
 
 if [ $# -gt 0 ]; then
@@ -90,4 +93,8 @@ while IFS='|' read -r module package file _; do
     fi
 done < <(grep -v -e '^#' -e '^[[:space:]]*$' "$MODULES_FILE")
 echo "MUTANTS_TABLE $current rows current$([ $status = 0 ] || echo "; out of date: see above")"
+
+mapfile -t files < <(equivalent_files)
+list_mutants "${files[@]}" >"$tmp/all-mutants.txt"
+equivalent_resolve check . "$tmp/all-mutants.txt" || status=2
 exit $status

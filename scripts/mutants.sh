@@ -20,7 +20,8 @@
 # its targets in a fifth field, e.g. `--test=film`.)
 #
 # then counts caught, missed, unviable and timed-out mutants from OUT/<module>/mutants.out/,
-# subtracts the missed mutants listed in scripts/mutants-equivalent.txt, and writes the module's
+# subtracts the missed mutants that scripts/mutants-equivalent.txt names (each entry one mutant,
+# found by its position or, where the code moved, by its line's text), and writes the module's
 # row of the table in docs/mutation.md (rows of modules not run this time are kept). The row
 # names the commit it was measured at: HEAD when the run starts, or `uncommitted` when the
 # module's file differs from HEAD (cargo-mutants copies the working tree), which
@@ -48,14 +49,15 @@ export CARGO_PROFILE_DEV_DEBUG=${CARGO_PROFILE_DEV_DEBUG:-line-tables-only}
 # slowest module's tests take 10 s instead of 2 (docs/mutation.md).
 OPT_LEVEL=${MUTANTS_OPT_LEVEL:-0}
 
-MODULES_FILE=scripts/mutants-modules.txt
-EQUIVALENT=scripts/mutants-equivalent.txt
 DOC=docs/mutation.md
 JOBS=${MUTANTS_JOBS:-1}
 TIMEOUT=${MUTANTS_TIMEOUT:-30}
 OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants}
 BASELINE=${MUTANTS_BASELINE:-run}
 ITERATE=${MUTANTS_ITERATE:-0}
+
+# count, equivalent_sites; MODULES_FILE, EQUIVALENT.
+. scripts/mutants-common.sh
 
 modules() { grep -v -e '^#' -e '^[[:space:]]*$' "$MODULES_FILE"; }
 
@@ -72,9 +74,6 @@ if ! cargo mutants --version >/dev/null 2>&1; then
     echo "cargo-mutants is not installed: cargo install cargo-mutants --locked" >&2
     exit 1
 fi
-
-# strip_position, equivalent_names, count.
-. scripts/mutants-common.sh
 
 selected=("$@")
 [ ${#selected[@]} -gt 0 ] || mapfile -t selected < <(modules | cut -d'|' -f1)
@@ -152,10 +151,12 @@ for module in "${selected[@]}"; do
     : >"$dir/unlisted.txt"
     equivalent=0
     if [ -s "$res/missed.txt" ]; then
-        strip_position <"$res/missed.txt" | sort >"$dir/missed-names.txt"
-        equivalent_names >"$dir/equivalent-names.txt"
-        equivalent=$(grep -c -F -x -f "$dir/equivalent-names.txt" "$dir/missed-names.txt" || true)
-        grep -v -F -x -f "$dir/equivalent-names.txt" "$dir/missed-names.txt" >"$dir/unlisted.txt" || true
+        # The listed mutants among the file's, as the run saw it: the tree at the row's commit
+        # (the working tree when uncommitted) and the file's mutants listed after the run.
+        [ -s "$dir/current.txt" ] || jq -r '.[].name' "$res/mutants.json" >"$dir/current.txt"
+        equivalent_sites "$file" "$at" "$dir/current.txt" >"$dir/equivalent-sites.txt"
+        equivalent=$(grep -c -F -x -f "$dir/equivalent-sites.txt" "$res/missed.txt" || true)
+        grep -v -F -x -f "$dir/equivalent-sites.txt" "$res/missed.txt" >"$dir/unlisted.txt" || true
     fi
     denominator=$((caught + missed - equivalent))
     if [ "$denominator" -gt 0 ]; then
@@ -170,7 +171,8 @@ for module in "${selected[@]}"; do
     row="| \`$module\` | $at | $total | $caught | $missed | $unviable | $timeouts | $equivalent | $score | ${seconds} s (${per} s) |"
     echo "$row"
     if [ -s "$dir/unlisted.txt" ]; then
-        echo "$module: missed and not listed in $EQUIVALENT:"
+        echo "$module: missed and not listed in $EQUIVALENT (a test should catch each; if one is"
+        echo "    equivalent, list it: scripts/mutants-equivalent.sh --entry 'NAME' prints its entry):"
         sed 's/^/    /' "$dir/unlisted.txt"
         status=2
     fi
@@ -179,8 +181,16 @@ for module in "${selected[@]}"; do
         /<!-- mutants-table-end -->/ { if (!done) print row; done = 1; print; next }
         index($0, "| " m " |") == 1 { if (!done) print row; done = 1; next }
         { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
-    # Record how and where this row was measured.
-    awk -v m="$module" -v run="- \`$module\`: \`${cmd[*]}\` — at $at, $(date -u +%Y-%m-%d), $machine, $version" '
+    # Record how and where this row was measured (the output folder left out: it is this
+    # machine's).
+    shown=()
+    skip=0
+    for arg in "${cmd[@]}"; do
+        if [ $skip = 1 ]; then skip=0; continue; fi
+        if [ "$arg" = --output ]; then skip=1; continue; fi
+        shown+=("$arg")
+    done
+    awk -v m="$module" -v run="- \`$module\`: \`${shown[*]}\` — at $at, $(date -u +%Y-%m-%d), $machine, $version" '
         /<!-- mutants-runs-end -->/ { if (!done) print run; done = 1; print; next }
         index($0, "- `" m "`: `cargo mutants ") == 1 { if (!done) print run; done = 1; next }
         { print }' "$DOC" >"$DOC.tmp.$$" && mv "$DOC.tmp.$$" "$DOC"
