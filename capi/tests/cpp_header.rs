@@ -192,7 +192,7 @@ fn expected() -> Expected {
             .enumerate()
         {
             let seed = if k == 0 { 0 } else { r.next() };
-            let mut s = SobolSampler::with_scramble(size, spp, scramble, seed).unwrap();
+            let mut s = SobolSampler::new(size, spp, scramble, seed).unwrap();
             let spp = s.samples_per_pixel();
             e.config(SOBOL_SAMPLER, scramble, size, spp, 0, 0, seed, queries);
             e.sampler(&mut s, queries, &mut r);

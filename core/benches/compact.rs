@@ -149,8 +149,8 @@ fn bench_samplers(c: &mut Criterion<cpu_time::BenchClock>) {
     );
     g.finish();
     let mut g = group(c, "sobol_owen");
-    let desk = sampler::SobolSampler::with_scramble(res, 16, Scramble::Owen, 7);
-    let small = compact::SobolSampler::<8>::with_scramble(res, 16, Scramble::Owen, 7);
+    let desk = sampler::SobolSampler::new(res, 16, Scramble::Owen, 7);
+    let small = compact::SobolSampler::<8>::new(res, 16, Scramble::Owen, 7);
     bench_camera(&mut g, "desktop", &mut desk.unwrap());
     bench_camera(&mut g, "compact", &mut small.unwrap());
     g.finish();

@@ -62,7 +62,10 @@ fn camera_sample_bench(c: &mut Criterion<cpu_time::BenchClock>) {
     );
     bench!("best_candidate", BestCandidateSampler::new(SPP, 1).unwrap());
     bench!("zero_two", ZeroTwoSampler::new(SPP, 1).unwrap());
-    bench!("sobol", SobolSampler::new([1024, 1024], SPP, 1).unwrap());
+    bench!(
+        "sobol",
+        SobolSampler::new([1024, 1024], SPP, Scramble::PermuteDigits, 1).unwrap()
+    );
     bench!(
         "halton",
         HaltonSampler::new([1024, 1024], SPP, Scramble::None, 1).unwrap()
@@ -129,7 +132,10 @@ fn request_and_fill_bench(c: &mut Criterion<cpu_time::BenchClock>) {
     );
     bench!("random", RandomSampler::new(SPP, 1).unwrap());
     bench!("zero_two", ZeroTwoSampler::new(SPP, 1).unwrap());
-    bench!("sobol", SobolSampler::new([1024, 1024], SPP, 1).unwrap());
+    bench!(
+        "sobol",
+        SobolSampler::new([1024, 1024], SPP, Scramble::PermuteDigits, 1).unwrap()
+    );
     bench!(
         "halton",
         HaltonSampler::new([1024, 1024], SPP, Scramble::None, 1).unwrap()

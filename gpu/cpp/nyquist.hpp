@@ -1595,7 +1595,7 @@ NYQ_HD inline std::uint32_t sobol_u32(std::uint32_t index, std::uint32_t dim) {
 }
 
 /// The Sobol sequence over `N` dimensions, optionally digitally shifted: the core's
-/// `sequence::Sobol::new(N)` / `with_scramble(N, seed)` (and `compact::Sobol<N>`). Indices are
+/// `sequence::Sobol::new(N)` / `with_digital_shift(N, seed)` (and `compact::Sobol<N>`). Indices are
 /// 32-bit (a 64-bit index wraps), `dim` wraps modulo `N`. Table: 128 bytes per dimension.
 template <std::uint32_t N>
 struct Sobol {
@@ -1603,7 +1603,7 @@ struct Sobol {
     bool scrambled = false;
 
     NYQ_HD static Sobol plain() { return Sobol{}; }
-    NYQ_HD static Sobol with_scramble(std::uint64_t seed) {
+    NYQ_HD static Sobol with_digital_shift(std::uint64_t seed) {
         Sobol s;
         s.seed = seed;
         s.scrambled = true;
@@ -1998,12 +1998,13 @@ struct SobolSampler {
     }
 
     SobolSampler() = default;
-    /// The core's `SobolSampler::new`: no scramble for seed 0, digit permutation otherwise.
+    /// The sampler the core's `NamedSampler` calls `sobol`: no scramble for seed 0, digit
+    /// permutation otherwise.
     NYQ_HD SobolSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_,
                         std::uint64_t seed_)
         : SobolSampler(width, height, spp_, seed_ == 0 ? Scramble::None : Scramble::PermuteDigits,
                        seed_) {}
-    /// The core's `SobolSampler::with_scramble`.
+    /// The core's `SobolSampler::new`.
     NYQ_HD SobolSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_, Scramble how,
                         std::uint64_t seed_) {
         seed = how == Scramble::None ? 0 : seed_;

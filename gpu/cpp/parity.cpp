@@ -287,7 +287,7 @@ bool sobol_sequence_capi(Rng& rng) {
         seq.kind = k < 2 ? NYQ_SEQ_SOBOL : NYQ_SEQ_SOBOL_SCRAMBLED;
         seq.dims = k % 2 ? 1024 : 3;
         seq.seed = k < 3 ? k : rng.next();
-        const Sobol<1024> s = k < 2 ? Sobol<1024>::plain() : Sobol<1024>::with_scramble(seq.seed);
+        const Sobol<1024> s = k < 2 ? Sobol<1024>::plain() : Sobol<1024>::with_digital_shift(seq.seed);
         if (!sequence_capi("Sobol", seq, std::uint64_t{1} << 32,
                            [&](std::uint64_t i, std::uint32_t d) { return s.sample(i, d); }, 260000 / g_scale,
                            rng))

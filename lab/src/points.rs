@@ -462,7 +462,12 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
         }
         S::Sobol => {
             notice(SobolSampler::rounded_spp(spp));
-            Box::new(SobolSampler::new(resolution, spp, args.seed).map_err(err)?)
+            let scramble = if args.seed == 0 {
+                nyquist::scramble::Scramble::None
+            } else {
+                nyquist::scramble::Scramble::PermuteDigits
+            };
+            Box::new(SobolSampler::new(resolution, spp, scramble, args.seed).map_err(err)?)
         }
         S::Halton => Box::new(
             HaltonSampler::new(

@@ -158,9 +158,9 @@ fn sobol_sampler_equals_the_desktop_sampler_on_a_sweep() {
             .into_iter()
             .chain(Scramble::ALL.map(|how| (how, 5)))
         {
-            let mut small = SobolSampler::<24>::with_scramble(res, spp, how, seed).unwrap();
-            let mut all = SobolSampler::<1024>::with_scramble(res, spp, how, seed).unwrap();
-            let mut desk = sampler::SobolSampler::with_scramble(res, spp, how, seed).unwrap();
+            let mut small = SobolSampler::<24>::new(res, spp, how, seed).unwrap();
+            let mut all = SobolSampler::<1024>::new(res, spp, how, seed).unwrap();
+            let mut desk = sampler::SobolSampler::new(res, spp, how, seed).unwrap();
             for k in 0..200u64 {
                 let (pixel, index) = ([spread(k / 4), spread(k / 4 + 9)], spread(k));
                 same_values(&mut small, &mut desk, pixel, index, (k % 8) as u32);
@@ -179,8 +179,8 @@ fn sobol_sampler_equals_the_desktop_sampler_on_a_sweep() {
 #[test]
 fn sobol_sampler_past_n_wraps_into_the_dimensions_above_the_pixel() {
     let how = Scramble::PermuteDigits;
-    let mut s = SobolSampler::<5>::with_scramble([4, 4], 64, how, 3).unwrap();
-    let mut wide = SobolSampler::<1024>::with_scramble([4, 4], 64, how, 3).unwrap();
+    let mut s = SobolSampler::<5>::new([4, 4], 64, how, 3).unwrap();
+    let mut wide = SobolSampler::<1024>::new([4, 4], 64, how, 3).unwrap();
     // The 24-bit fraction of dimension `d` of sample `i` of pixel (1, 2).
     let at = |s: &mut dyn Sampler, i: u32, d: u32| {
         s.start_pixel_sample([1, 2], i, d);
@@ -352,9 +352,9 @@ proptest! {
         let res = [(side / aspect).max(1), side];
         let spp = (1u64 << log2_spp).min(u64::from(u32::MAX)) as u32;
         let (small, all, desk) = (
-            SobolSampler::<32>::with_scramble(res, spp, scramble(how), seed),
-            SobolSampler::<1024>::with_scramble(res, spp, scramble(how), seed),
-            sampler::SobolSampler::with_scramble(res, spp, scramble(how), seed),
+            SobolSampler::<32>::new(res, spp, scramble(how), seed),
+            SobolSampler::<1024>::new(res, spp, scramble(how), seed),
+            sampler::SobolSampler::new(res, spp, scramble(how), seed),
         );
         prop_assert_eq!(small.is_ok(), desk.is_ok());
         if let (Ok(mut small), Ok(mut all), Ok(mut desk)) = (small, all, desk) {

@@ -31,9 +31,9 @@ const fn check_sampler_dims<const N: usize>() {
 ///
 /// ```
 /// use nyquist::{compact, sampler::{self, Sampler}, scramble::Scramble};
-/// let mut small = compact::SobolSampler::<8>::with_scramble([64, 64], 16, Scramble::Owen, 3)
+/// let mut small = compact::SobolSampler::<8>::new([64, 64], 16, Scramble::Owen, 3)
 ///     .unwrap();
-/// let mut desk = sampler::SobolSampler::with_scramble([64, 64], 16, Scramble::Owen, 3).unwrap();
+/// let mut desk = sampler::SobolSampler::new([64, 64], 16, Scramble::Owen, 3).unwrap();
 /// assert_eq!(small.camera_sample([10, 20], 5), desk.camera_sample([10, 20], 5));
 /// assert_eq!(small.get_2d(), desk.get_2d());
 /// ```
@@ -66,47 +66,25 @@ impl<const N: usize> SobolSampler<N> {
     }
 
     /// A Sobol sampler for an image of `resolution` pixels, `spp` rounded up to a power of two,
-    /// as [`sampler::SobolSampler::new`] ([`Scramble::None`] for seed 0, else
-    /// [`Scramble::PermuteDigits`]). `N` outside `3..=1024` does not compile.
+    /// scrambled by `scramble` under `seed`, as [`sampler::SobolSampler::new`]. `N` outside
+    /// `3..=1024` does not compile.
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
     /// `spp · 2^(2m)` passes 2³² (`2^m` the image's square).
     ///
     /// ```
-    /// use nyquist::compact::SobolSampler;
-    /// assert!(SobolSampler::<8>::new([16384, 16384], 16, 0).is_ok());
-    /// assert!(SobolSampler::<8>::new([16384, 16384], 32, 0).is_err());
+    /// use nyquist::{compact::SobolSampler, scramble::Scramble};
+    /// assert!(SobolSampler::<8>::new([16384, 16384], 16, Scramble::None, 0).is_ok());
+    /// assert!(SobolSampler::<8>::new([16384, 16384], 32, Scramble::None, 0).is_err());
     /// ```
     ///
     /// Dimensions 0 and 1 carry the pixel, so fewer than three do not compile:
     ///
     /// ```compile_fail
-    /// let _ = nyquist::compact::SobolSampler::<2>::new([4, 4], 1, 0);
+    /// let _ = nyquist::compact::SobolSampler::<2>::new([4, 4], 1, nyquist::scramble::Scramble::None, 0);
     /// ```
-    pub fn new(resolution: [u32; 2], spp: u32, seed: u64) -> Result<Self, Error> {
-        let scramble = if seed == 0 {
-            Scramble::None
-        } else {
-            Scramble::PermuteDigits
-        };
-        Self::with_scramble(resolution, spp, scramble, seed)
-    }
-
-    /// A Sobol sampler scrambled by `scramble` under `seed`, as
-    /// [`sampler::SobolSampler::with_scramble`].
-    ///
-    /// # Errors
-    /// As [`SobolSampler::new`].
-    ///
-    /// ```
-    /// use nyquist::{compact::SobolSampler, sampler::Sampler, scramble::Scramble};
-    /// let mut s = SobolSampler::<8>::with_scramble([8, 8], 4, Scramble::FastOwen, 3).unwrap();
-    /// s.start_pixel_sample([2, 5], 1, 0);
-    /// let [x, y] = s.get_pixel_2d();
-    /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
-    /// ```
-    pub fn with_scramble(
+    pub fn new(
         resolution: [u32; 2],
         spp: u32,
         scramble: Scramble,
@@ -123,7 +101,7 @@ impl<const N: usize> SobolSampler<N> {
     ///
     /// ```
     /// use nyquist::{compact::SobolSampler, scramble::Scramble};
-    /// assert_eq!(SobolSampler::<8>::new([4, 4], 4, 1).unwrap().scramble(), Scramble::PermuteDigits);
+    /// assert_eq!(SobolSampler::<8>::new([4, 4], 4, Scramble::PermuteDigits, 1).unwrap().scramble(), Scramble::PermuteDigits);
     /// ```
     pub fn scramble(&self) -> Scramble {
         self.inner.scramble()
@@ -133,8 +111,9 @@ impl<const N: usize> SobolSampler<N> {
     /// [`sampler::SobolSampler::sequence_index`].
     ///
     /// ```
+    /// use nyquist::scramble::Scramble;
     /// use nyquist::compact::SobolSampler;
-    /// let s = SobolSampler::<8>::new([2, 2], 1, 0).unwrap();
+    /// let s = SobolSampler::<8>::new([2, 2], 1, Scramble::None, 0).unwrap();
     /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
     /// all.sort();
     /// assert_eq!(all, [0, 1, 2, 3]);

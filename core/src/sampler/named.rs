@@ -352,7 +352,14 @@ impl NamedSampler {
                 NamedSampler::Hammersley(HammersleySampler::new(size, spp, scramble, seed)?)
             }
             "zero-two" => NamedSampler::ZeroTwo(ZeroTwoSampler::new(spp, seed)?),
-            "sobol" => NamedSampler::Sobol(SobolSampler::new(size, spp, seed)?),
+            "sobol" => {
+                let scramble = if seed == 0 {
+                    Scramble::None
+                } else {
+                    Scramble::PermuteDigits
+                };
+                NamedSampler::Sobol(SobolSampler::new(size, spp, scramble, seed)?)
+            }
             "best-candidate" => NamedSampler::BestCandidate(BestCandidateSampler::new(spp, seed)?),
             "adaptive" => {
                 let inner = ZeroTwoSampler::new(spp, seed)?;
@@ -362,7 +369,7 @@ impl NamedSampler {
             "halton-plain" => {
                 NamedSampler::Halton(HaltonSampler::new(size, spp, Scramble::None, 0)?)
             }
-            "sobol-plain" => NamedSampler::Sobol(SobolSampler::new(size, spp, 0)?),
+            "sobol-plain" => NamedSampler::Sobol(SobolSampler::new(size, spp, Scramble::None, 0)?),
             "owen-sobol" | "sobol-owen" => {
                 NamedSampler::OwenSobol(OwenSobolSampler::new(spp, seed)?)
             }
@@ -421,7 +428,7 @@ impl NamedSampler {
         NamedSampler::new(name, size, spp, seed)?;
         Ok(match name {
             "halton" => NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?),
-            "sobol" => NamedSampler::Sobol(SobolSampler::with_scramble(size, spp, scramble, seed)?),
+            "sobol" => NamedSampler::Sobol(SobolSampler::new(size, spp, scramble, seed)?),
             _ => NamedSampler::ZSobol(ZSobolSampler::new(size, spp, scramble, seed)?),
         })
     }
@@ -583,7 +590,19 @@ mod tests {
                 ),
                 (
                     "sobol",
-                    std::boxed::Box::new(SobolSampler::new(size, 16, seed).unwrap()),
+                    std::boxed::Box::new(
+                        SobolSampler::new(
+                            size,
+                            16,
+                            if seed == 0 {
+                                Scramble::None
+                            } else {
+                                Scramble::PermuteDigits
+                            },
+                            seed,
+                        )
+                        .unwrap(),
+                    ),
                 ),
                 (
                     "best-candidate",
@@ -791,7 +810,7 @@ mod tests {
         for scramble in Scramble::ALL {
             let direct = [
                 values(HaltonSampler::new(size, spp, scramble, seed).unwrap()),
-                values(SobolSampler::with_scramble(size, spp, scramble, seed).unwrap()),
+                values(SobolSampler::new(size, spp, scramble, seed).unwrap()),
                 values(ZSobolSampler::new(size, spp, scramble, seed).unwrap()),
             ];
             for (name, want) in ["halton", "sobol", "zsobol"].iter().zip(direct) {

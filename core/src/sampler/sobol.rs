@@ -25,7 +25,7 @@ const DIMS: u32 = 1024;
 /// (XOR) from `hash(seed, d)` to every dimension — for dimensions 0 and 1 only below the top
 /// `m` bits, so pixels keep their samples. Digital shifts keep every net a net.
 ///
-/// [`SobolSampler::with_scramble`] picks any [`Scramble`] instead: with the Owen scrambles
+/// [`Scramble::PermuteDigits`] is that digital shift; any other [`Scramble`] can be chosen: with the Owen scrambles
 /// every dimension's value is scrambled under `hash(seed, d)` — dimensions 0 and 1 inside the
 /// pixel (the fraction below the top `m` bits), so each pixel keeps its samples and their nets.
 ///
@@ -39,8 +39,9 @@ const DIMS: u32 = 1024;
 /// image (also `m = 3`) gives pixels 6 and 7 of each axis samples of their own, then repeats.
 ///
 /// ```
+/// use nyquist::scramble::Scramble;
 /// use nyquist::sampler::{Sampler, SobolSampler};
-/// let mut s = SobolSampler::new([4, 4], 4, 0).unwrap();
+/// let mut s = SobolSampler::new([4, 4], 4, Scramble::None, 0).unwrap();
 /// s.start_pixel_sample([3, 1], 2, 0);
 /// let [x, y] = s.get_pixel_2d();
 /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
@@ -87,41 +88,24 @@ impl SobolSampler {
         super::ZeroTwoSampler::rounded_spp(requested)
     }
 
-    /// A Sobol sampler for an image of `resolution` pixels, `spp` rounded up to a power of two.
+    /// A Sobol sampler for an image of `resolution` pixels, `spp` rounded up to a power of two,
+    /// scrambled by `scramble` under `seed` ([`Scramble::None`]: the plain sequence; the seed is
+    /// then ignored).
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
     /// `spp · 2^(2m)` passes 2³² (see above).
     ///
     /// ```
-    /// use nyquist::sampler::SobolSampler;
-    /// assert!(SobolSampler::new([16384, 16384], 16, 0).is_ok());
-    /// assert!(SobolSampler::new([16384, 16384], 32, 0).is_err());
-    /// ```
-    pub fn new(resolution: [u32; 2], spp: u32, seed: u64) -> Result<Self, Error> {
-        let scramble = if seed == 0 {
-            Scramble::None
-        } else {
-            Scramble::PermuteDigits
-        };
-        Self::with_scramble(resolution, spp, scramble, seed)
-    }
-
-    /// A Sobol sampler scrambled by `scramble` under `seed` ([`SobolSampler::new`] is
-    /// [`Scramble::None`] for seed 0 and [`Scramble::PermuteDigits`] otherwise). With
-    /// [`Scramble::None`] the seed is ignored.
-    ///
-    /// # Errors
-    /// As [`SobolSampler::new`].
-    ///
-    /// ```
     /// use nyquist::{sampler::{Sampler, SobolSampler}, scramble::Scramble};
-    /// let mut s = SobolSampler::with_scramble([8, 8], 4, Scramble::Owen, 3).unwrap();
+    /// assert!(SobolSampler::new([16384, 16384], 16, Scramble::None, 0).is_ok());
+    /// assert!(SobolSampler::new([16384, 16384], 32, Scramble::None, 0).is_err());
+    /// let mut s = SobolSampler::new([8, 8], 4, Scramble::Owen, 3).unwrap();
     /// s.start_pixel_sample([2, 5], 1, 0);
     /// let [x, y] = s.get_pixel_2d();
     /// assert!((0.0..1.0).contains(&x) && (0.0..1.0).contains(&y));
     /// ```
-    pub fn with_scramble(
+    pub fn new(
         resolution: [u32; 2],
         spp: u32,
         scramble: Scramble,
@@ -130,7 +114,7 @@ impl SobolSampler {
         Self::build(resolution, spp, scramble, seed, sobol_u32)
     }
 
-    /// [`SobolSampler::with_scramble`] with Sobol dimensions 0 and 1 read through `sobol01`
+    /// [`SobolSampler::new`] with Sobol dimensions 0 and 1 read through `sobol01`
     /// (`sobol01(index, dim)` for `dim < 2`, equal to [`sobol_u32`]): the setup's only reads of
     /// the sequence, so that `compact::SobolSampler` builds the same sampler without its
     /// tables.
@@ -241,8 +225,9 @@ impl SobolSampler {
     /// wrap modulo `2^m`).
     ///
     /// ```
+    /// use nyquist::scramble::Scramble;
     /// use nyquist::sampler::SobolSampler;
-    /// let s = SobolSampler::new([2, 2], 1, 0).unwrap();
+    /// let s = SobolSampler::new([2, 2], 1, Scramble::None, 0).unwrap();
     /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
     /// all.sort();
     /// assert_eq!(all, [0, 1, 2, 3]);
@@ -297,7 +282,7 @@ impl SobolSampler {
     ///
     /// ```
     /// use nyquist::{sampler::SobolSampler, scramble::Scramble};
-    /// assert_eq!(SobolSampler::new([4, 4], 4, 1).unwrap().scramble(), Scramble::PermuteDigits);
+    /// assert_eq!(SobolSampler::new([4, 4], 4, Scramble::PermuteDigits, 1).unwrap().scramble(), Scramble::PermuteDigits);
     /// ```
     pub fn scramble(&self) -> Scramble {
         self.scramble
@@ -454,14 +439,14 @@ mod tests {
                 ([8, 8], [13, 21], [5, 5]),
                 ([6, 6], [8, 7], [0, 7]),
             ] {
-                let mut s = SobolSampler::with_scramble(res, 4, scramble, 5).unwrap();
+                let mut s = SobolSampler::new(res, 4, scramble, 5).unwrap();
                 for i in 0..4 {
                     let (a, b) = (record(&mut s, pixel, i), record(&mut s, same_as, i));
                     // Dimensions 0 and 1 are the offsets inside the pixel; the rest are values.
                     assert_eq!(a, b, "{scramble:?} {res:?} {pixel:?} {i}");
                 }
             }
-            let mut s = SobolSampler::with_scramble([6, 6], 4, scramble, 5).unwrap();
+            let mut s = SobolSampler::new([6, 6], 4, scramble, 5).unwrap();
             assert_ne!(record(&mut s, [6, 0], 0), record(&mut s, [0, 0], 0));
             assert_ne!(record(&mut s, [7, 0], 1), record(&mut s, [5, 0], 1));
         }
@@ -475,7 +460,8 @@ mod tests {
             ([1024, 1024], 64, 5),
             ([3, 1], 1, 9),
         ] {
-            let mut s = SobolSampler::new(res, spp, seed).unwrap();
+            let mut s =
+                SobolSampler::new(res, spp, Scramble::ALL[seed as usize % 4], seed).unwrap();
             for pixel in [[0u32, 0u32], [1, 0], [63, 47], [5, 40], [1023, 2]] {
                 for i in [0u32, 1, 2, 3, 7, spp - 1, spp, 3 * spp + 1, u32::MAX] {
                     s.start_pixel_sample(pixel, i, 0);
@@ -487,21 +473,21 @@ mod tests {
 
     #[test]
     fn sobol_arrays_equal_values_taken_one_at_a_time() {
-        for seed in [0, 9] {
-            let s = SobolSampler::new([640, 480], 16, seed).unwrap();
+        for scramble in Scramble::ALL {
+            let s = SobolSampler::new([640, 480], 16, scramble, 9).unwrap();
             crate::sampler::tests::arrays_are_values_in_order(&s);
         }
     }
 
     #[test]
     fn sobol_is_consistent_and_thread_independent() {
-        for seed in [0, 9] {
-            let s = SobolSampler::new([40, 30], 16, seed).unwrap();
+        for scramble in Scramble::ALL {
+            let s = SobolSampler::new([40, 30], 16, scramble, 9).unwrap();
             consistent_values(&s);
             threads_agree(&s);
         }
         for how in Scramble::ALL {
-            let s = SobolSampler::with_scramble([40, 30], 16, how, 9).unwrap();
+            let s = SobolSampler::new([40, 30], 16, how, 9).unwrap();
             consistent_values(&s);
             threads_agree(&s);
             crate::sampler::tests::arrays_are_values_in_order(&s);
@@ -513,9 +499,9 @@ mod tests {
     /// dimensions 0 and 1); and the values change.
     #[test]
     fn scrambles_keep_strata_and_change_values() {
-        let plain = SobolSampler::new([16, 16], 64, 0).unwrap();
+        let plain = SobolSampler::new([16, 16], 64, Scramble::None, 0).unwrap();
         for how in [Scramble::FastOwen, Scramble::Owen] {
-            let mut s = SobolSampler::with_scramble([16, 16], 64, how, 4).unwrap();
+            let mut s = SobolSampler::new([16, 16], 64, how, 4).unwrap();
             let mut p = plain.clone();
             let mut differ = 0;
             for d in 0..12u32 {
@@ -547,7 +533,7 @@ mod tests {
                 (5, Scramble::FastOwen),
                 (6, Scramble::Owen),
             ] {
-                let mut s = SobolSampler::with_scramble([37, 20], 1 << m, how, seed).unwrap();
+                let mut s = SobolSampler::new([37, 20], 1 << m, how, seed).unwrap();
                 for pixel in [[0, 0], [36, 19], [5, 11]] {
                     let pts: Vec<[f32; 2]> = (0..1u32 << m)
                         .map(|i| {
@@ -565,7 +551,7 @@ mod tests {
     fn sobol_pixels_own_their_global_points() {
         // Over a 4 × 4 image, the 4 × 4 × 4 samples are exactly Sobol indices 0..64, and each
         // sample's film position is the global point scaled by 4.
-        let mut s = SobolSampler::new([4, 4], 4, 0).unwrap();
+        let mut s = SobolSampler::new([4, 4], 4, Scramble::None, 0).unwrap();
         let mut hit = [false; 64];
         for y in 0..4u32 {
             for x in 0..4u32 {
@@ -586,7 +572,7 @@ mod tests {
 
     #[test]
     fn sobol_large_image_limit() {
-        let mut s = SobolSampler::new([16384, 16384], 16, 1).unwrap();
+        let mut s = SobolSampler::new([16384, 16384], 16, Scramble::PermuteDigits, 1).unwrap();
         let r = crate::sampler::tests::record(&mut s, [16383, 16383], 15);
         assert!(r.iter().all(|x| (0.0..1.0).contains(x)));
         assert_eq!(SobolSampler::rounded_spp(3), (4, true));

@@ -131,7 +131,7 @@ pub fn samplers(data: &[u8]) {
             run("HammersleySampler", spp, r, &args)
         }
         5 => {
-            let r = SobolSampler::new(resolution, spp, seed);
+            let r = SobolSampler::new(resolution, spp, scramble, seed);
             if resolution.contains(&0) {
                 assert!(
                     r.is_err(),
@@ -165,7 +165,7 @@ pub fn samplers(data: &[u8]) {
         }
         11 => run("Pmj02Sampler", spp, Pmj02Sampler::new(spp, seed), &args),
         10 => {
-            let r = SobolSampler::with_scramble(resolution, spp, scramble, seed);
+            let r = SobolSampler::new(resolution, spp, scramble, seed);
             if let Ok(s) = &r {
                 assert_eq!(s.scramble(), scramble);
             }

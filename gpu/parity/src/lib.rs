@@ -117,7 +117,7 @@ pub enum Job {
         /// The scramble's seed, if any.
         seed: Option<u64>,
     },
-    /// `SobolSampler::with_scramble(resolution, spp, scramble, seed)`.
+    /// `SobolSampler::new(resolution, spp, scramble, seed)`.
     SobolSampler {
         /// Image size.
         resolution: [u32; 2],
@@ -547,7 +547,7 @@ impl Job {
                 scramble,
                 seed,
             } => sampler_answers(
-                SobolSampler::with_scramble(resolution, spp, scramble, seed)
+                SobolSampler::new(resolution, spp, scramble, seed)
                     .expect("valid sampler"),
                 requests,
             ),

@@ -122,7 +122,7 @@ fn main() -> ExitCode {
             indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
         "sobol_sampler" => {
-            let mut s = SobolSampler::with_scramble([64, 64], 16, Scramble::Owen, 7).unwrap();
+            let mut s = SobolSampler::new([64, 64], 16, Scramble::Owen, 7).unwrap();
             indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
         "pmj02_sampler" => {

@@ -8,6 +8,6 @@ use nyquist_size_probes::{camera_loop, run};
 
 #[unsafe(no_mangle)]
 extern "C" fn probe_main() -> ! {
-    let mut s = SobolSampler::<8>::with_scramble([64, 64], 16, Scramble::Owen, 7).unwrap();
+    let mut s = SobolSampler::<8>::new([64, 64], 16, Scramble::Owen, 7).unwrap();
     run(|i| camera_loop(&mut s, i))
 }
