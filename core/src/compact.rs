@@ -332,7 +332,7 @@ const fn sobol_directions<const N: usize>() -> [[u32; 32]; N] {
 
 /// The Sobol sequence over its first `N` dimensions (`1 <= N <= 1024`, checked at compile
 /// time), optionally digitally shifted: bit for bit what
-/// [`sequence::Sobol`](crate::sequence::Sobol)`::new(N)` (or `with_scramble(N, seed)`) returns.
+/// [`sequence::Sobol`](crate::sequence::Sobol)`::new(N)` (or `with_digital_shift(N, seed)`) returns.
 ///
 /// Carries the `N` dimensions' direction numbers (128 bytes each, computed at compile time)
 /// and none of the byte tables; each value is a 32-column masked XOR. Indices are 32-bit (a

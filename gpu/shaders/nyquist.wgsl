@@ -220,7 +220,7 @@ fn nyq_sobol_rev(r: u32, dim: u32) -> u32 {
 }
 
 // The Sobol sequence over `dims` dimensions, plain or with a per-dimension digital shift
-// (core `Sobol::new`, `Sobol::with_scramble`). Build it with `nyq_sobol`.
+// (core `Sobol::new`, `Sobol::with_digital_shift`). Build it with `nyq_sobol`.
 struct NyqSobol {
     dims: u32,
     scrambled: u32,
@@ -278,8 +278,8 @@ fn nyq_top(v: u32, bits: u32) -> u32 {
 }
 
 // The sampler for an image of `resolution` at `spp` (rounded up to a power of two), scrambled
-// by `scramble` (NYQ_SCRAMBLE_*) under `seed`: core `SobolSampler::with_scramble` (the host
-// checks 2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32). The core's `SobolSampler::new(.., seed)`
+// by `scramble` (NYQ_SCRAMBLE_*) under `seed`: core `SobolSampler::new` (the host
+// checks 2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32). The core's sampler named `sobol` (NamedSampler)
 // is NYQ_SCRAMBLE_NONE for seed 0 and NYQ_SCRAMBLE_PERMUTE_DIGITS otherwise.
 fn nyq_sobol_sampler(resolution: vec2<u32>, spp_requested: u32, scramble: u32, seed_in: vec2<u32>) -> NyqSobolSampler {
     let spp = nyq_round_up_pow2(spp_requested);

@@ -390,7 +390,7 @@ impl NamedSampler {
 
     /// [`NamedSampler::new`] with the scramble chosen instead of defaulted, for the samplers
     /// that offer the four of [`Scramble`] (pbrt-v4's names): `halton`
-    /// ([`HaltonSampler::new`]), `sobol` ([`SobolSampler::with_scramble`]) and `zsobol`
+    /// ([`HaltonSampler::new`]), `sobol` ([`SobolSampler::new`]) and `zsobol`
     /// ([`ZSobolSampler::new`]). `new` picks none or digit permutation (by `seed`) for halton,
     /// fast Owen for zsobol, and sobol's own random-digit scramble.
     ///
