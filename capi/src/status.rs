@@ -44,9 +44,9 @@ impl From<Error> for NyqStatus {
         match e {
             Error::ZeroSize { .. } => NyqStatus::NYQ_ERR_ZERO_SIZE,
             Error::NonFinite { .. } => NyqStatus::NYQ_ERR_NON_FINITE,
-            Error::OutOfRange { .. } | Error::DimensionOutOfRange { .. } => {
-                NyqStatus::NYQ_ERR_OUT_OF_RANGE
-            }
+            Error::OutOfRange { .. }
+            | Error::NotInRange { .. }
+            | Error::DimensionOutOfRange { .. } => NyqStatus::NYQ_ERR_OUT_OF_RANGE,
             Error::BufferLength { .. } | Error::BufferTooShort { .. } => NyqStatus::NYQ_ERR_BUFFER,
             Error::TooMany { .. } => NyqStatus::NYQ_ERR_TOO_MANY,
             _ => NyqStatus::NYQ_ERR_OTHER,

@@ -28,6 +28,25 @@ pub enum Error {
         /// The parameter.
         what: &'static str,
     },
+    /// An integer parameter is outside `min..=max` (a dimension count above what a set has,
+    /// for example).
+    ///
+    /// ```
+    /// use nyquist::{sequence::Halton, Error};
+    /// let e = Halton::new(2000).unwrap_err();
+    /// assert_eq!(e, Error::NotInRange { what: "dims", value: 2000, min: 1, max: 1024 });
+    /// assert_eq!(e.to_string(), "dims 2000 is outside 1..=1024");
+    /// ```
+    NotInRange {
+        /// The parameter.
+        what: &'static str,
+        /// The value given.
+        value: u64,
+        /// The smallest value accepted.
+        min: u64,
+        /// The largest value accepted.
+        max: u64,
+    },
     /// `dim` is not below the number of dimensions the set has.
     DimensionOutOfRange {
         /// The dimension asked for.
@@ -62,6 +81,12 @@ impl fmt::Display for Error {
             Error::ZeroSize { what } => write!(f, "{what} must be greater than zero"),
             Error::NonFinite { what } => write!(f, "{what} must be finite (got NaN or infinity)"),
             Error::OutOfRange { what } => write!(f, "{what} is out of range"),
+            Error::NotInRange {
+                what,
+                value,
+                min,
+                max,
+            } => write!(f, "{what} {value} is outside {min}..={max}"),
             Error::DimensionOutOfRange { dim, dims } => {
                 write!(
                     f,

@@ -179,7 +179,12 @@ pub fn min_distance(
     scratch: &mut [u64],
 ) -> Result<MinDistance, Error> {
     if points.dims() != 2 {
-        return Err(Error::OutOfRange { what: "dims" });
+        return Err(Error::NotInRange {
+            what: "dims",
+            value: points.dims() as u64,
+            min: 2,
+            max: 2,
+        });
     }
     let n = points.len();
     let needed = min_distance_scratch_len(n).ok_or(Error::TooMany { what: "points" })?;
@@ -536,7 +541,12 @@ mod tests {
         let set3 = PointSet::new(&[0.5; 3], 3).unwrap();
         assert_eq!(
             min_distance(&set3, Topology::Square, &mut [0u64; 16]),
-            Err(Error::OutOfRange { what: "dims" })
+            Err(Error::NotInRange {
+                what: "dims",
+                value: 3,
+                min: 2,
+                max: 2
+            })
         );
     }
 

@@ -78,7 +78,12 @@ pub fn star_discrepancy(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f6
 /// ```
 pub fn star_discrepancy_1d(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f64, Error> {
     if points.dims() != 1 {
-        return Err(Error::OutOfRange { what: "dims" });
+        return Err(Error::NotInRange {
+            what: "dims",
+            value: points.dims() as u64,
+            min: 1,
+            max: 1,
+        });
     }
     let n = points.len();
     let xs = check_scratch(scratch, n)?;
@@ -109,7 +114,12 @@ pub fn star_discrepancy_1d(points: &PointSet<'_>, scratch: &mut [f64]) -> Result
 /// ```
 pub fn star_discrepancy_2d(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f64, Error> {
     if points.dims() != 2 {
-        return Err(Error::OutOfRange { what: "dims" });
+        return Err(Error::NotInRange {
+            what: "dims",
+            value: points.dims() as u64,
+            min: 2,
+            max: 2,
+        });
     }
     let n = points.len();
     let buf = check_scratch(scratch, 3 * n)?;
@@ -181,7 +191,12 @@ pub fn star_discrepancy_enumerate(
 ) -> Result<f64, Error> {
     let d = points.dims();
     if d > MAX_DIMS {
-        return Err(Error::OutOfRange { what: "dims" });
+        return Err(Error::NotInRange {
+            what: "dims",
+            value: d as u64,
+            min: 1,
+            max: MAX_DIMS as u64,
+        });
     }
     let n = points.len();
     let needed = star_discrepancy_scratch_len(n, d).ok_or(Error::TooMany { what: "points" })?;
@@ -325,7 +340,12 @@ pub fn star_discrepancy_bounds(
     }
     let d = points.dims();
     if d > MAX_DIMS {
-        return Err(Error::OutOfRange { what: "dims" });
+        return Err(Error::NotInRange {
+            what: "dims",
+            value: d as u64,
+            min: 1,
+            max: MAX_DIMS as u64,
+        });
     }
     let needed = star_bounds_scratch_len(d, m).ok_or(Error::TooMany { what: "m" })?;
     let buf = check_scratch(scratch, needed)?;
@@ -675,7 +695,12 @@ mod tests {
         );
         assert_eq!(
             star_discrepancy_1d(&set, &mut s),
-            Err(Error::OutOfRange { what: "dims" })
+            Err(Error::NotInRange {
+                what: "dims",
+                value: 2,
+                min: 1,
+                max: 1
+            })
         );
         let mut u = [0u32; 3];
         assert!(matches!(
@@ -857,12 +882,22 @@ mod tests {
         let mut s = vec![0.0; star_discrepancy_scratch_len(1, MAX_DIMS + 1).unwrap()];
         assert_eq!(
             star_discrepancy_enumerate(&set, &mut s),
-            Err(Error::OutOfRange { what: "dims" })
+            Err(Error::NotInRange {
+                what: "dims",
+                value: MAX_DIMS as u64 + 1,
+                min: 1,
+                max: MAX_DIMS as u64
+            })
         );
         let mut u = [0u32; 4];
         assert_eq!(
             star_discrepancy_bounds(&set, 1, &mut u),
-            Err(Error::OutOfRange { what: "dims" })
+            Err(Error::NotInRange {
+                what: "dims",
+                value: MAX_DIMS as u64 + 1,
+                min: 1,
+                max: MAX_DIMS as u64
+            })
         );
         // The bracket accepts 32 dimensions too: with m = 1 it asks for its 2 · 2^32 counters
         // (more than this test can give it) rather than refusing the dimension.

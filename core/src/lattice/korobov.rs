@@ -92,7 +92,12 @@ impl Korobov {
             return Err(Error::ZeroSize { what: "dims" });
         }
         if dims > MAX_DIMS {
-            return Err(Error::OutOfRange { what: "dims" });
+            return Err(Error::NotInRange {
+                what: "dims",
+                value: u64::from(dims),
+                min: 1,
+                max: u64::from(MAX_DIMS),
+            });
         }
         if n > 1 && (a == 0 || a >= n || gcd(a, n) != 1) {
             return Err(Error::OutOfRange { what: "a" });
@@ -203,11 +208,16 @@ impl Korobov {
     /// use nyquist::{lattice::Korobov, Error};
     /// assert_eq!(Korobov::tabled(1069, 4).unwrap().multiplier(), 71);
     /// assert_eq!(Korobov::tabled(1024, 4), Err(Error::OutOfRange { what: "n" }));
-    /// assert_eq!(Korobov::tabled(1069, 2), Err(Error::OutOfRange { what: "dims" }));
+    /// assert_eq!(Korobov::tabled(1069, 2).unwrap_err().to_string(), "dims 2 is outside 3..=6");
     /// ```
     pub fn tabled(n: u64, dims: u32) -> Result<Korobov, Error> {
         if !(3..=6).contains(&dims) {
-            return Err(Error::OutOfRange { what: "dims" });
+            return Err(Error::NotInRange {
+                what: "dims",
+                value: u64::from(dims),
+                min: 3,
+                max: 6,
+            });
         }
         let row = KOROBOV_TABLE
             .iter()

@@ -62,7 +62,12 @@ impl Kronecker {
             return Err(Error::ZeroSize { what: "dims" });
         }
         if dims > KRONECKER_MAX_DIMS {
-            return Err(Error::OutOfRange { what: "dims" });
+            return Err(Error::NotInRange {
+                what: "dims",
+                value: u64::from(dims),
+                min: 1,
+                max: u64::from(KRONECKER_MAX_DIMS),
+            });
         }
         // x ← (1 + x)^{1/(d+1)} contracts to the root (Roberts 2018); Newton then polishes it.
         let e = f64::from(dims + 1);

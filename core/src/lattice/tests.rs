@@ -245,7 +245,12 @@ fn stroud_table_rows_minimise_h() {
     );
     assert_eq!(
         Korobov::tabled(101, 7),
-        Err(crate::Error::OutOfRange { what: "dims" })
+        Err(crate::Error::NotInRange {
+            what: "dims",
+            value: 7,
+            min: 3,
+            max: 6
+        })
     );
 }
 

@@ -19,7 +19,12 @@ use crate::scramble::Scramble;
 fn check_dims(dims: u32) -> Result<u32, Error> {
     match dims {
         0 => Err(Error::ZeroSize { what: "dims" }),
-        d if d > PRIME_COUNT => Err(Error::OutOfRange { what: "dims" }),
+        d if d > PRIME_COUNT => Err(Error::NotInRange {
+            what: "dims",
+            value: u64::from(d),
+            min: 1,
+            max: u64::from(PRIME_COUNT),
+        }),
         d => Ok(d),
     }
 }
@@ -85,7 +90,7 @@ impl Halton {
     /// use nyquist::{sequence::Halton, Error};
     /// assert!(Halton::new(1024).is_ok());
     /// assert_eq!(Halton::new(0), Err(Error::ZeroSize { what: "dims" }));
-    /// assert_eq!(Halton::new(1025), Err(Error::OutOfRange { what: "dims" }));
+    /// assert_eq!(Halton::new(1025).unwrap_err().to_string(), "dims 1025 is outside 1..=1024");
     /// ```
     pub fn new(dims: u32) -> Result<Halton, Error> {
         Ok(Halton {
@@ -367,7 +372,15 @@ mod tests {
     #[test]
     fn constructors_validate_dims() {
         assert_eq!(Halton::new(0), Err(Error::ZeroSize { what: "dims" }));
-        assert_eq!(Halton::new(1025), Err(Error::OutOfRange { what: "dims" }));
+        assert_eq!(
+            Halton::new(1025),
+            Err(Error::NotInRange {
+                what: "dims",
+                value: 1025,
+                min: 1,
+                max: 1024
+            })
+        );
         assert!(HaltonZaremba::new(1025).is_err());
         assert!(ScrambledHalton::new(0, 1).is_err());
         assert_eq!(Halton::new(1024).unwrap().dims(), 1024);

@@ -22,7 +22,12 @@ fn check(n: u64, dims: u32) -> Result<(), Error> {
         return Err(Error::ZeroSize { what: "dims" });
     }
     if dims > PRIME_COUNT + 1 {
-        return Err(Error::OutOfRange { what: "dims" });
+        return Err(Error::NotInRange {
+            what: "dims",
+            value: dims as u64,
+            min: 1,
+            max: PRIME_COUNT as u64 + 1,
+        });
     }
     Ok(())
 }
@@ -79,7 +84,10 @@ impl Hammersley {
     /// use nyquist::{sequence::Hammersley, Error};
     /// assert!(Hammersley::new(16, 1025).is_ok());
     /// assert_eq!(Hammersley::new(0, 2), Err(Error::ZeroSize { what: "n" }));
-    /// assert_eq!(Hammersley::new(16, 1026), Err(Error::OutOfRange { what: "dims" }));
+    /// assert_eq!(
+    ///     Hammersley::new(16, 1026).unwrap_err().to_string(),
+    ///     "dims 1026 is outside 1..=1025"
+    /// );
     /// ```
     pub fn new(n: u64, dims: u32) -> Result<Hammersley, Error> {
         check(n, dims)?;
