@@ -37,6 +37,23 @@ list_mutants() {
     done
 }
 
+# awk functions shared by equivalent_resolve and equivalent_entry.
+# shellcheck disable=SC2016 # awk code, not shell expansions
+ANCHOR_AWK='
+function trim(s) { sub(/^[ \t]+/, "", s); sub(/[ \t]+$/, "", s); return s }
+# A line as an anchor: trimmed, without a trailing `// comment` (one after whitespace, outside a
+# string: an even number of quotes before it), so editing a comment does not move an entry.
+function anchor_of(s,    p, q, before) {
+    s = trim(s)
+    if (match(s, /[ \t]+\/\//)) {
+        before = substr(s, 1, RSTART - 1)
+        q = gsub(/"/, "\"", before)
+        if (q % 2 == 0) s = before
+    }
+    return s
+}
+'
+
 # Resolves the entries of scripts/mutants-equivalent.txt to the mutants they name in one tree.
 #
 #   equivalent_resolve MODE ROOT MUTANTS [FILE...]
@@ -65,8 +82,8 @@ equivalent_resolve() {
         [ -f "$root/$f" ] && sources+=("$root/$f")
     done
     awk -v mode="$mode" -v eq="$EQUIVALENT" -v mutants="$mutants" -v root="$root" \
-        -v only="${files[*]}" -f /dev/fd/3 "$EQUIVALENT" "$mutants" "${sources[@]}" 3<<'AWK'
-function trim(s) { sub(/^[ \t]+/, "", s); sub(/[ \t]+$/, "", s); return s }
+        -v only="${files[*]}" -f <(printf '%s' "$ANCHOR_AWK") -f /dev/fd/3 \
+        "$EQUIVALENT" "$mutants" "${sources[@]}" 3<<'AWK'
 # "F:L:C: NAME" -> P_f, P_l, P_c, P_n; 0 when it is not such a name.
 function parse(s,    p, r) {
     p = index(s, ":"); if (p == 0) return 0
@@ -94,7 +111,7 @@ FILENAME == eq {
     if (!(P_f in wanted)) next
     rest = substr($0, a + 4)
     b = index(rest, "  # ")
-    anchor = trim(b ? substr(rest, 1, b - 1) : rest)
+    anchor = anchor_of(b ? substr(rest, 1, b - 1) : rest)
     E_f[FNR] = P_f; E_l[FNR] = P_l + 0; E_c[FNR] = P_c + 0; E_n[FNR] = P_n; E_a[FNR] = anchor
     g = P_f SUBSEP P_n SUBSEP anchor
     if (!(g in gsize)) { groups[++ngroups] = g }
@@ -107,8 +124,7 @@ FILENAME == mutants {
 }
 {
     f = substr(FILENAME, length(root) + 2)
-    t = trim($0)
-    src[f, FNR] = t
+    t = anchor_of($0)
     lines_of[f, t] = lines_of[f, t] " " FNR
 }
 END {
@@ -276,6 +292,8 @@ equivalent_entry() {
         file=${name%%:*}
         line=${name#*:}
         line=${line%%:*}
-        printf '%s  @ %s  # \n' "$name" "$(sed -n "${line}p" "$file" | sed -E 's/^[[:space:]]+//; s/[[:space:]]+$//')"
+        # shellcheck disable=SC2016 # awk code, not shell expansions
+        printf '%s  @ %s  # \n' "$name" "$(awk -v n="$line" -f <(printf '%s' "$ANCHOR_AWK") \
+            -f <(echo 'NR == n { print anchor_of($0); exit }') "$file")"
     done
 }
