@@ -286,7 +286,7 @@ impl NamedSampler {
     ///   shifted per pixel by the built-in 64 × 64 two-channel mask ([`MaskView::builtin`]);
     /// - `fibonacci`, `r2`, `korobov`: [`LatticeSampler::fibonacci`] (spp rounded up to a
     ///   Fibonacci number), [`LatticeSampler::r2`] and [`LatticeSampler::korobov`] (exactly spp
-    ///   points, its multiplier searched here: 10 ms at 2¹⁶ spp).
+    ///   points, its multiplier searched here, in time about linear in spp: `docs/performance.md`).
     ///
     /// Names are compared ignoring ASCII case, and [`OTHER_NAMES`] are accepted too
     /// ([`canonical_name`]). The size matters to `halton`, `hammersley`, `sobol` and `zsobol`
