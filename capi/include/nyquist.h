@@ -418,8 +418,9 @@ enum NyqStatus nyq_inverse_radical_inverse(uint32_t dim,
 // as the CLI's `--sampler NAME --spp SPP --size WxH --seed SEED` does, and writes the handle
 // to `*out`.
 //
-// Names: `random`; `uniform` and `stratified` (a √spp × √spp grid, cell centres or jittered;
-// `spp` must be a square); `halton` (digit-permuted when `seed != 0`); `hammersley` (scrambled
+// Names (any ASCII case; also `halton-plain`, `sobol-plain` and `sobol-owen`): `random`;
+// `uniform` and `stratified` (cell centres or jittered, on a √spp × √spp grid for a square spp,
+// else the squarest rectangle of spp cells); `halton` (digit-permuted when `seed != 0`); `hammersley` (scrambled
 // when `seed != 0`); `zero-two` and `sobol` (spp rounded up to a power of two:
 // [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
 // spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
@@ -434,7 +435,8 @@ enum NyqStatus nyq_inverse_radical_inverse(uint32_t dim,
 // # Errors
 // `NYQ_ERR_NULL` if `name` or `out` is null; `NYQ_ERR_PARSE` for an unknown or non-UTF-8
 // name; `NYQ_ERR_ZERO_SIZE` if `width`, `height` or `spp` is 0; `NYQ_ERR_OUT_OF_RANGE` if
-// `spp` is not a square for `uniform`/`stratified`; `NYQ_ERR_TOO_MANY` (or another core error)
+// `spp` is above the sampler's own limit (4096 for `best-candidate`, 65536 for `pmj02`);
+// `NYQ_ERR_TOO_MANY` (or another core error)
 // if the sampler cannot take `spp` at that size.
 //
 // # Safety

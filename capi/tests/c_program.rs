@@ -322,7 +322,7 @@ fn error_lines(e: &mut Expected) {
         ("sampler_null_out", NYQ_ERR_NULL),
         ("sampler_spp0", NYQ_ERR_ZERO_SIZE),
         ("sampler_width0", NYQ_ERR_ZERO_SIZE),
-        ("sampler_not_square", NYQ_ERR_OUT_OF_RANGE),
+        ("sampler_above_limit", NYQ_ERR_OUT_OF_RANGE),
         ("sampler_bad_utf8", NYQ_ERR_PARSE),
         ("sampler_null_handle", NYQ_ERR_NULL),
         ("sampler_start_null", NYQ_ERR_NULL),

@@ -313,7 +313,7 @@ static void errors(void) {
     put_status("sampler_null_out", nyq_sampler_create("random", 8, 8, 4, 0, NULL));
     put_status("sampler_spp0", nyq_sampler_create("random", 8, 8, 0, 0, &s));
     put_status("sampler_width0", nyq_sampler_create("sobol", 0, 8, 4, 0, &s));
-    put_status("sampler_not_square", nyq_sampler_create("stratified", 8, 8, 5, 0, &s));
+    put_status("sampler_above_limit", nyq_sampler_create("best-candidate", 8, 8, 5000, 0, &s));
     put_status("sampler_bad_utf8", nyq_sampler_create("\xff", 8, 8, 4, 0, &s));
     put_status("sampler_null_handle", nyq_sampler_get_1d(NULL, &f));
     put_status("sampler_start_null", nyq_sampler_start_pixel_sample(NULL, 0, 0, 0, 0));
