@@ -9,7 +9,9 @@
 # every line changed since BASE; the earlier passing runs that .ci/last-tested's history records
 # tested the commits before BASE back to where that record starts. Changes that carry no mutant
 # (tests, comments, attributes, deleted lines) leave a row current. A module of
-# scripts/mutants-modules.txt that has mutants but no row is out of date too.
+# scripts/mutants-modules.txt that has mutants but no row yet (a new file, or a file split off
+# another) makes no claim the code could contradict: it gets a warning with the command that
+# measures it, and the mutation stage still tests every line of it that a change touches.
 #
 # It then checks the list of equivalent mutants as scripts/mutants-equivalent.sh does: every
 # entry must name exactly one mutant of the working tree.
@@ -63,8 +65,7 @@ while IFS='|' read -r module package file _; do
     if [ -z "$row" ]; then
         n=$(cargo mutants --list --package "$package" --file "$file" </dev/null 2>/dev/null | grep -c . || true)
         if [ "$n" -gt 0 ]; then
-            echo "$module: no row for its $n mutants: $again"
-            status=2
+            echo "WARNING: $module: no row yet for its $n mutants: $again"
         fi
         continue
     fi
