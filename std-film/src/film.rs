@@ -424,8 +424,10 @@ impl Film {
     /// assert_eq!((preview.get(0, 0), stats.uncovered_pixels), ([1.0; 3], 12));
     /// ```
     pub fn image(&mut self) -> (Image, ResolveStats) {
+        // Display, not Debug: the error's Debug form would carry a path formatter into every
+        // program that resolves a film (about 1 KB of the explorer's WebAssembly).
         self.resolve()
-            .expect("the allocator provides an image a third the film's size")
+            .unwrap_or_else(|e| panic!("the film's image could not be allocated: {e}"))
     }
 
     /// [`Film::image`], with the image's allocation failure as an error.

@@ -43,15 +43,20 @@ impl Image {
                 return Err(Error::below_one(what, 0, f64::from(u32::MAX)));
             }
         }
-        // The floats of the image, at most what one allocation can hold.
+        // The floats of the image, at most what one allocation can hold. In u64 (an overflow
+        // is reported as more than u64::MAX): no u128 formatter in the programs that link this.
         const LIMIT: usize = isize::MAX as usize / 4;
-        let floats = u128::from(width) * u128::from(height) * 3;
-        usize::try_from(floats)
-            .ok()
+        let floats = u64::from(width)
+            .checked_mul(u64::from(height))
+            .and_then(|p| p.checked_mul(3));
+        floats
+            .and_then(|n| usize::try_from(n).ok())
             .filter(|&n| n <= LIMIT)
             .ok_or_else(|| {
+                let needs =
+                    floats.map_or_else(|| format!("more than {}", u64::MAX), |n| n.to_string());
                 Error::Config(format!(
-                    "image size {width}x{height} needs {floats} floats, more than the {LIMIT} \
+                    "image size {width}x{height} needs {needs} floats, more than the {LIMIT} \
                      an allocation can hold"
                 ))
             })
@@ -67,7 +72,7 @@ impl Image {
     /// assert_eq!(img.get(1, 0), [1.0, 0.0, 0.0]);
     /// ```
     pub fn from_fn(width: u32, height: u32, mut f: impl FnMut(u32, u32) -> [f32; 3]) -> Image {
-        let mut img = Image::new(width, height).expect("positive image size");
+        let mut img = Image::new(width, height).unwrap_or_else(|e| panic!("{e}"));
         for y in 0..height {
             for x in 0..width {
                 img.set(x, y, f(x, y));
