@@ -674,11 +674,11 @@ pub enum Entries<'a> {
 /// exact 0. A single [`weight`](Table::weight) costs about as much as evaluating a cheap filter
 /// directly. The fast path is [`footprint`](Table::footprint): it computes the `nx` x factors
 /// and `ny` y factors of one sample, four lanes at a time, and writes their outer product, a
-/// fraction of a lookup per weight for separable tables. A 1 × 1 footprint (the box) is all
-/// call overhead: use [`weight`](Table::weight) there. Code that accumulates pixel by pixel can
-/// do the same with [`weight_1d`](SeparableTable::weight_1d) per row and column. Measured
-/// figures, and the commands that measure them, are in `docs/performance.md` (section "Filter
-/// tables").
+/// fraction of a lookup per weight for separable tables; a one-weight footprint of a constant
+/// table (a box) answers the constant without reading the table. Code that accumulates pixel by
+/// pixel can do the same with [`weight_1d`](SeparableTable::weight_1d) per row and column.
+/// Measured figures, and the command that measures them, are in `docs/performance.md` (section
+/// "Filter tables").
 ///
 /// # Examples
 ///
