@@ -547,8 +547,7 @@ impl Job {
                 scramble,
                 seed,
             } => sampler_answers(
-                SobolSampler::new(resolution, spp, scramble, seed)
-                    .expect("valid sampler"),
+                SobolSampler::new(resolution, spp, scramble, seed).expect("valid sampler"),
                 requests,
             ),
             Job::Lattice {
