@@ -2072,7 +2072,8 @@ fn every_table_form_answers_the_same_through_weights() {
 }
 
 /// The trait's provided methods: a source that gives only a weight is not separable and fills
-/// footprints weight by weight, with the footprint's length checks.
+/// footprints weight by weight, with the footprint's length checks; one that gives per-axis
+/// factors is separable.
 #[test]
 fn weights_provided_methods_fill_footprints_weight_by_weight() {
     struct Ramp;
@@ -2098,6 +2099,24 @@ fn weights_provided_methods_fill_footprints_weight_by_weight() {
     assert!(Ramp.footprint([0.0, 0.0], 4, &mut out).is_err());
     assert!(Ramp.footprint([0.0, 0.0], 0, &mut out).is_err());
     assert!(Ramp.footprint([0.0, 0.0], 2, &mut []).is_err());
+    // A source that gives the per-axis factors is separable without saying so.
+    struct Product;
+    impl Weights for Product {
+        fn radius(&self) -> [f32; 2] {
+            [4.0, 4.0]
+        }
+        fn integral(&self) -> f32 {
+            0.0
+        }
+        fn weight(&self, dx: f32, dy: f32) -> f32 {
+            dx * dy
+        }
+        fn weight_1d(&self, _: Axis, d: f32) -> Option<f32> {
+            Some(d)
+        }
+    }
+    assert!(Product.is_separable());
+    assert!((&Product as &dyn Weights).is_separable());
 }
 
 /// The sizes the table docs state: `8·N + 36` bytes separable, `4·N² + 36` in 2D, and a
