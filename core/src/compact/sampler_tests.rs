@@ -265,6 +265,28 @@ fn halton_sampler_past_n_takes_the_bases_above_the_pixel_under_new_scrambles() {
     }
 }
 
+/// Unscrambled, dimension `d ≥ N` is exactly dimension `2 + (d − 2) mod (N − 2)` (dimension
+/// `N` itself included), and the scales are the desktop sampler's.
+#[test]
+fn halton_sampler_dimensions_from_n_on_wrap_onto_the_bases_above_the_pixel() {
+    let mut s = HaltonSampler::<8>::new([8, 8], 16, Scramble::None, 0).unwrap();
+    let value = |s: &mut HaltonSampler<8>, d: u32, i: u32| {
+        s.start_pixel_sample([3, 6], i, d);
+        s.get_1d().to_bits()
+    };
+    for d in 8u32..40 {
+        let same = 2 + (d - 2) % 6;
+        for i in [0u32, 5, 15] {
+            assert_eq!(value(&mut s, d, i), value(&mut s, same, i), "dim {d} vs {same}");
+        }
+    }
+    for res in [[1u32, 1u32], [100, 30], [640, 480], [7, 300]] {
+        let small = HaltonSampler::<8>::new(res, 4, Scramble::None, 0).unwrap();
+        let desk = sampler::HaltonSampler::new(res, 4, Scramble::None, 0).unwrap();
+        assert_eq!(small.scales(), desk.scales(), "{res:?}");
+    }
+}
+
 /// The backward construction rebuilds the baked table point for point, and the buffer
 /// construction's points for other seeds.
 #[test]
