@@ -277,7 +277,11 @@ fn halton_sampler_dimensions_from_n_on_wrap_onto_the_bases_above_the_pixel() {
     for d in 8u32..40 {
         let same = 2 + (d - 2) % 6;
         for i in [0u32, 5, 15] {
-            assert_eq!(value(&mut s, d, i), value(&mut s, same, i), "dim {d} vs {same}");
+            assert_eq!(
+                value(&mut s, d, i),
+                value(&mut s, same, i),
+                "dim {d} vs {same}"
+            );
         }
     }
     for res in [[1u32, 1u32], [100, 30], [640, 480], [7, 300]] {
