@@ -79,6 +79,7 @@ pub fn analysis(data: &[u8]) {
                         | Error::BufferLength { .. }
                         | Error::NonFinite { .. }
                         | Error::OutOfRange { .. }
+                        | Error::NotInRange { .. }
                 ),
                 "PointSet::new: {e:?}"
             );
@@ -88,7 +89,12 @@ pub fn analysis(data: &[u8]) {
                 && coords.len() % dims == 0
             {
                 assert!(
-                    matches!(e, Error::NonFinite { .. } | Error::OutOfRange { .. }),
+                    matches!(
+                        e,
+                        Error::NonFinite { .. }
+                            | Error::OutOfRange { .. }
+                            | Error::NotInRange { .. }
+                    ),
                     "PointSet::new with non-finite values: {e:?}"
                 );
             }
@@ -168,7 +174,10 @@ pub fn analysis(data: &[u8]) {
         Err(e) => {
             assert!(dims >= 3, "star_discrepancy failed in {dims} dims: {e:?}");
             assert!(
-                matches!(e, Error::TooMany { .. } | Error::OutOfRange { .. }),
+                matches!(
+                    e,
+                    Error::TooMany { .. } | Error::OutOfRange { .. } | Error::NotInRange { .. }
+                ),
                 "{e:?}"
             );
             None
@@ -198,8 +207,14 @@ pub fn analysis(data: &[u8]) {
         "star_discrepancy_2d in {dims} dims: {d2:?}"
     );
     if dims > 2 {
-        assert!(matches!(d1, Err(Error::OutOfRange { .. })));
-        assert!(matches!(d2, Err(Error::OutOfRange { .. })));
+        assert!(matches!(
+            d1,
+            Err(Error::OutOfRange { .. } | Error::NotInRange { .. })
+        ));
+        assert!(matches!(
+            d2,
+            Err(Error::OutOfRange { .. } | Error::NotInRange { .. })
+        ));
     }
     let en = star_discrepancy_enumerate(&set, &mut scratch);
     match (en, exact) {
@@ -208,7 +223,10 @@ pub fn analysis(data: &[u8]) {
             "enumeration {e} vs star_discrepancy {x}"
         ),
         (Err(e), _) => assert!(
-            matches!(e, Error::TooMany { .. } | Error::OutOfRange { .. }),
+            matches!(
+                e,
+                Error::TooMany { .. } | Error::OutOfRange { .. } | Error::NotInRange { .. }
+            ),
             "enumerate: {e:?}"
         ),
         (Ok(e), None) => panic!("enumeration gave {e} where star_discrepancy failed"),
@@ -245,7 +263,7 @@ pub fn analysis(data: &[u8]) {
                     }
                 }
                 Err(e) => assert!(
-                    matches!(e, Error::OutOfRange { .. }),
+                    matches!(e, Error::OutOfRange { .. } | Error::NotInRange { .. }),
                     "star_discrepancy_bounds({dims} dims, m = {m}): {e:?}"
                 ),
             }
@@ -294,7 +312,10 @@ pub fn analysis(data: &[u8]) {
         }
         Err(e) => {
             assert_ne!(dims, 2, "min_distance failed on a 2D set: {e:?}");
-            assert!(matches!(e, Error::OutOfRange { .. }), "{e:?}");
+            assert!(
+                matches!(e, Error::OutOfRange { .. } | Error::NotInRange { .. }),
+                "{e:?}"
+            );
         }
     }
 }

@@ -242,7 +242,10 @@ fn named(name: &str, size: [u32; 2], spp: u32, seed: u64, a: &Args) {
             assert!(
                 matches!(
                     e,
-                    Error::ZeroSize { .. } | Error::TooMany { .. } | Error::OutOfRange { .. }
+                    Error::ZeroSize { .. }
+                        | Error::TooMany { .. }
+                        | Error::OutOfRange { .. }
+                        | Error::NotInRange { .. }
                 ),
                 "NamedSampler {name:?}: unexpected error {e:?}"
             );
@@ -274,7 +277,10 @@ fn run<S: Sampler + Clone>(name: &str, spp: u32, r: Result<S, Error>, a: &Args) 
             assert!(
                 matches!(
                     e,
-                    Error::ZeroSize { .. } | Error::TooMany { .. } | Error::OutOfRange { .. }
+                    Error::ZeroSize { .. }
+                        | Error::TooMany { .. }
+                        | Error::OutOfRange { .. }
+                        | Error::NotInRange { .. }
                 ),
                 "{name}: unexpected error {e:?}"
             );

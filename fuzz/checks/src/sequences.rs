@@ -162,6 +162,7 @@ fn built<S: Sequence>(
                 Error::ZeroSize { .. }
                     | Error::DimensionOutOfRange { .. }
                     | Error::OutOfRange { .. }
+                    | Error::NotInRange { .. }
                     | Error::TooMany { .. }
             ),
             "{name}::new({dims}): unexpected error {e:?}"
