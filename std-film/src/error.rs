@@ -193,6 +193,22 @@ mod tests {
         };
         assert!(e.to_string().contains("4 of its 16 pixels"), "{e}");
         assert!(e.to_string().contains("2 merged tiles wait"), "{e}");
+        let e = Error::Incomplete {
+            uncovered: 4,
+            pixels: 16,
+            held: 0,
+        };
+        assert_eq!(
+            e.to_string(),
+            "film incomplete: 4 of its 16 pixels lie in no merged tile (merge every tile, or \
+             resolve a partial image with Film::image)"
+        );
+        // The stream's and the core's errors are the sources of theirs.
+        let io = Error::Io(std::io::Error::other("disk"));
+        assert_eq!(std::error::Error::source(&io).unwrap().to_string(), "disk");
+        let core = Error::Core(nyquist::Error::TooMany { what: "points" });
+        assert!(std::error::Error::source(&core).is_some());
+        assert!(std::error::Error::source(&Error::Config("x".into())).is_none());
         // Errors that carry no stream keep their kind when a path is attached.
         let e = Error::Format("PNG: bad".into()).at(Path::new("x.png"));
         assert!(matches!(e, Error::Format(_)));

@@ -293,6 +293,44 @@ mod tests {
         }
     }
 
+    /// One thread renders every tile on the calling thread; more threads render them on that
+    /// many workers, none of them the caller (where threads can start).
+    #[test]
+    fn tiles_render_on_the_threads_asked_for() {
+        let caller = std::thread::current().id();
+        for threads in [1, 2] {
+            let mut film = Film::new(FilmConfig::new(16, 16), &Boxcar::default()).unwrap();
+            let seen = std::sync::Mutex::new(Vec::new());
+            render_tiles(
+                &mut film,
+                4,
+                threads,
+                |_, _| {
+                    // Long enough that every worker takes a tile.
+                    std::thread::sleep(std::time::Duration::from_millis(10));
+                    let id = std::thread::current().id();
+                    let mut seen = seen.lock().unwrap();
+                    if !seen.contains(&id) {
+                        seen.push(id);
+                    }
+                },
+                |_, _| {},
+            )
+            .unwrap();
+            let seen = seen.into_inner().unwrap();
+            if threads == 1 || !CAN_START_THREADS {
+                assert_eq!(seen, [caller], "{threads} threads");
+            } else {
+                assert_eq!(seen.len(), threads, "{threads} threads");
+                assert!(!seen.contains(&caller), "{threads} threads");
+            }
+        }
+        assert_eq!(
+            CAN_START_THREADS,
+            !cfg!(all(target_arch = "wasm32", target_os = "unknown"))
+        );
+    }
+
     /// A panic in the progress callback stops the workers and reaches the caller too.
     #[test]
     fn a_progress_panic_reaches_the_caller() {
