@@ -360,9 +360,8 @@ fn pixel_mode(args: &PointsSpec) -> bool {
 fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoints> {
     use PointSetName as S;
     use nyquist::sampler::{
-        AdaptiveSampler, BestCandidateSampler, HaltonSampler, HammersleySampler, OwenSobolSampler,
-        Pmj02Sampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler,
-        ZeroTwoSampler,
+        AdaptiveSampler, BestCandidateSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler,
+        Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
     };
     let n = args.sampler.name();
     let dims = dims_of(args);
@@ -422,6 +421,10 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
         bail!("--grid applies to uniform and stratified, not to {n}");
     }
     let err = |e: nyquist::Error| anyhow::anyhow!("{n}: {e}");
+    let named = |name: &str, size: [u32; 2], spp: u32, seed: u64| {
+        nyquist::sampler::NamedSampler::new(name, size, spp, seed)
+            .map_err(|e| anyhow::anyhow!("{n}: {e}"))
+    };
     let mut notice = |rounded: (u32, bool)| {
         if rounded.1 {
             notes.push(format!(
@@ -462,39 +465,11 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
         }
         S::Sobol => {
             notice(SobolSampler::rounded_spp(spp));
-            let scramble = if args.seed == 0 {
-                nyquist::scramble::Scramble::None
-            } else {
-                nyquist::scramble::Scramble::PermuteDigits
-            };
-            Box::new(SobolSampler::new(resolution, spp, scramble, args.seed).map_err(err)?)
+            Box::new(named(n, resolution, spp, args.seed)?)
         }
-        S::Halton => Box::new(
-            HaltonSampler::new(
-                resolution,
-                spp,
-                if args.seed == 0 {
-                    nyquist::scramble::Scramble::None
-                } else {
-                    nyquist::scramble::Scramble::PermuteDigits
-                },
-                args.seed,
-            )
-            .map_err(err)?,
-        ),
-        S::Hammersley => Box::new(
-            HammersleySampler::new(
-                resolution,
-                spp,
-                if args.seed == 0 {
-                    nyquist::scramble::Scramble::None
-                } else {
-                    nyquist::scramble::Scramble::PermuteDigits
-                },
-                args.seed,
-            )
-            .map_err(err)?,
-        ),
+        // The names' own scramble rule (none for seed 0, digit permutation otherwise) is
+        // NamedSampler's; build them through it.
+        S::Halton | S::Hammersley => Box::new(named(n, resolution, spp, args.seed)?),
         S::BestCandidate => Box::new(BestCandidateSampler::new(spp, args.seed).map_err(err)?),
         S::OwenSobol => Box::new(OwenSobolSampler::new(spp, args.seed).map_err(err)?),
         S::Pmj02 => Box::new(Pmj02Sampler::new(spp, args.seed).map_err(err)?),

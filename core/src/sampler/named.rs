@@ -329,37 +329,25 @@ impl NamedSampler {
             return Err(NamedSamplerError::SppAboveLimit { spp, max });
         }
         let [nx, ny] = strata(spp);
+        // The rule of the names halton, hammersley and sobol: unscrambled for seed 0, digit
+        // permutation otherwise.
+        let scramble = if seed == 0 {
+            Scramble::None
+        } else {
+            Scramble::PermuteDigits
+        };
         Ok(match name {
             "random" => NamedSampler::Random(RandomSampler::new(spp, seed)?),
             "uniform" => NamedSampler::Stratified(StratifiedSampler::uniform(nx, ny, seed)?),
             "stratified" => {
                 NamedSampler::Stratified(StratifiedSampler::new(nx, ny, Jitter::Jittered, seed)?)
             }
-            "halton" => {
-                let scramble = if seed == 0 {
-                    Scramble::None
-                } else {
-                    Scramble::PermuteDigits
-                };
-                NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?)
-            }
+            "halton" => NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?),
             "hammersley" => {
-                let scramble = if seed == 0 {
-                    Scramble::None
-                } else {
-                    Scramble::PermuteDigits
-                };
                 NamedSampler::Hammersley(HammersleySampler::new(size, spp, scramble, seed)?)
             }
             "zero-two" => NamedSampler::ZeroTwo(ZeroTwoSampler::new(spp, seed)?),
-            "sobol" => {
-                let scramble = if seed == 0 {
-                    Scramble::None
-                } else {
-                    Scramble::PermuteDigits
-                };
-                NamedSampler::Sobol(SobolSampler::new(size, spp, scramble, seed)?)
-            }
+            "sobol" => NamedSampler::Sobol(SobolSampler::new(size, spp, scramble, seed)?),
             "best-candidate" => NamedSampler::BestCandidate(BestCandidateSampler::new(spp, seed)?),
             "adaptive" => {
                 let inner = ZeroTwoSampler::new(spp, seed)?;
