@@ -145,3 +145,20 @@ pub fn write_points(w: &mut dyn Write, points: &[f32], dims: usize, format: Form
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod name_tests {
+    use clap::ValueEnum;
+    use nyquist_lab::points::PointSetName;
+
+    /// `PointSetName::name` and `ALL` are the command line's spellings, every one, in order.
+    #[test]
+    fn point_set_names_are_the_flag_values() {
+        let flags: Vec<String> = PointSetName::value_variants()
+            .iter()
+            .map(|v| v.to_possible_value().unwrap().get_name().to_owned())
+            .collect();
+        let names: Vec<&str> = PointSetName::ALL.iter().map(|s| s.name()).collect();
+        assert_eq!(flags, names);
+    }
+}
