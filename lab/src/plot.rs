@@ -5,7 +5,8 @@
 //! CLI's plots share: log-log and linear panels with major and minor ticks, a frame, and legend
 //! rows.
 //!
-//! A figure implements [`Figure`]; [`save`] draws it on the backend the path asks for.
+//! A figure implements [`Figure`]; [`render`] draws it as the PNG or SVG bytes that [`kind`] picks from the
+//! output path (the front end writes the file).
 
 use anyhow::{Context, Result};
 use plotters::coord::Shift;
