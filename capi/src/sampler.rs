@@ -25,10 +25,11 @@ pub struct NyqSampler {
 /// as the CLI's `--sampler NAME --spp SPP --size WxH --seed SEED` does, and writes the handle
 /// to `*out`.
 ///
-/// Names (any ASCII case; also `halton-plain`, `sobol-plain` and `sobol-owen`): `random`;
-/// `uniform` and `stratified` (cell centres or jittered, on a √spp × √spp grid for a square spp,
-/// else the squarest rectangle of spp cells); `halton` (digit-permuted when `seed != 0`); `hammersley` (scrambled
-/// when `seed != 0`); `zero-two` and `sobol` (spp rounded up to a power of two:
+/// Names (any ASCII case; also `sobol-owen`, and `halton-plain`, `hammersley-plain` and
+/// `sobol-plain` for the unscrambled sequences): `random`; `uniform` and `stratified` (cell
+/// centres or jittered, on a √spp × √spp grid for a square spp, else the squarest rectangle of
+/// spp cells); `halton`, `hammersley` (digit-permuted by `seed`, every seed 0 included);
+/// `zero-two` and `sobol` (digit-permuted too; spp rounded up to a power of two:
 /// [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
 /// spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
 /// (Owen-scrambled Sobol per pixel); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to

@@ -25,17 +25,14 @@ use nyquist_film::{Film, FilmConfig, Image, render_tiles};
 use crate::scene::Scene;
 use crate::trace::{PathLayout, for_each_sample, for_each_sample_stateless};
 
-/// Builds the sampler called `name`: any of [`nyquist::sampler::NAMES`], or `halton-plain` and
-/// `sobol-plain` for the unscrambled Halton and Sobol samplers (seed 0, whatever `seed` is).
+/// Builds the sampler called `name` ([`NamedSampler::new`]: any of
+/// [`nyquist::sampler::NAMES`] or [`nyquist::sampler::OTHER_NAMES`], such as `halton-plain` and
+/// `sobol-plain` for the unscrambled Halton and Sobol samplers), with the error naming it.
 ///
 /// # Errors
-/// An unknown name, or sizes the sampler rejects (e.g. `stratified` with a non-square `spp`).
+/// An unknown name, or sizes the sampler rejects (e.g. `pmj02` above 65536 spp).
 pub fn build_sampler(name: &str, size: [u32; 2], spp: u32, seed: u64) -> Result<NamedSampler> {
-    let (base, seed) = match name.strip_suffix("-plain") {
-        Some(b @ ("halton" | "sobol")) => (b, 0),
-        _ => (name, seed),
-    };
-    NamedSampler::new(base, size, spp, seed)
+    NamedSampler::new(name, size, spp, seed)
         .map_err(|e| anyhow!("sampler {name:?} with {spp} spp: {e}"))
 }
 

@@ -1994,16 +1994,14 @@ struct SobolSampler {
         return static_cast<std::uint32_t>(hash2(seed, d) >> 32);
     }
     NYQ_HD static std::uint32_t xor_scramble(std::uint64_t seed, std::uint32_t d) {
-        return seed == 0 ? 0 : static_cast<std::uint32_t>(hash2(seed, d));
+        return static_cast<std::uint32_t>(hash2(seed, d));
     }
 
     SobolSampler() = default;
-    /// The sampler the core's `NamedSampler` calls `sobol`: no scramble for seed 0, digit
-    /// permutation otherwise.
+    /// The sampler the core's `NamedSampler` calls `sobol`: digit permutation by `seed`.
     NYQ_HD SobolSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_,
                         std::uint64_t seed_)
-        : SobolSampler(width, height, spp_, seed_ == 0 ? Scramble::None : Scramble::PermuteDigits,
-                       seed_) {}
+        : SobolSampler(width, height, spp_, Scramble::PermuteDigits, seed_) {}
     /// The core's `SobolSampler::new`.
     NYQ_HD SobolSampler(std::uint32_t width, std::uint32_t height, std::uint32_t spp_, Scramble how,
                         std::uint64_t seed_) {
@@ -2090,11 +2088,7 @@ struct SobolSampler {
         }
         if (d < 2) {
             v = (v ^ shift[d]) << m;
-        } else if (d - 2 < 30) {
-            // The core caches dimensions 2..32's words: the XOR word for digit permutation,
-            // else the Owen seed word (applied here as an XOR for the plain scramble too).
-            v ^= scramble == Scramble::PermuteDigits ? xor_scramble(seed, d) : owen_seed(seed, d);
-        } else {
+        } else if (scramble == Scramble::PermuteDigits) {
             v ^= xor_scramble(seed, d);
         }
         return fraction_to_f32(v);

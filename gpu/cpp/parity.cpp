@@ -379,7 +379,7 @@ bool lattice_sequences_capi(Rng& rng) {
 }
 
 bool halton_capi(Rng& rng) {
-    Tally t("halton none/permute-digits (C API)");
+    Tally t("halton, permute-digits (C API)");
     struct Config {
         std::uint32_t w, h, spp;
     };
@@ -387,7 +387,7 @@ bool halton_capi(Rng& rng) {
     for (std::uint32_t k = 0; k < 8; ++k) {
         const Config c = configs[k % 4];
         const std::uint64_t seed = k < 4 ? 0 : rng.next();
-        const Scramble how = seed == 0 ? Scramble::None : Scramble::PermuteDigits;
+        const Scramble how = Scramble::PermuteDigits;
         if (!capi_sampler("halton", c.w, c.h, c.spp, seed, HaltonSampler<>(c.w, c.h, c.spp, how, seed),
                           kQueries / g_scale, rng))
             return false;

@@ -47,20 +47,27 @@ pub const NAMES: [&str; 16] = [
 /// ```
 pub const SCRAMBLE_NAMES: [&str; 3] = ["halton", "sobol", "zsobol"];
 
-/// Names [`NamedSampler::new`] also accepts: `halton-plain` and `sobol-plain` are `halton` and
-/// `sobol` with seed 0 whatever seed is given (the unscrambled sequences, one deterministic set;
-/// their [`NamedSampler::name`] is `halton` and `sobol`), and `sobol-owen` is `owen-sobol`.
+/// Names [`NamedSampler::new`] also accepts: `halton-plain`, `hammersley-plain` and
+/// `sobol-plain` are `halton`, `hammersley` and `sobol` without their digit permutation (the
+/// unscrambled sequences, one deterministic set whatever the seed; their [`NamedSampler::name`]
+/// is `halton`, `hammersley` and `sobol`), and `sobol-owen` is `owen-sobol`.
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, Sampler, OTHER_NAMES};
-/// assert_eq!(OTHER_NAMES, ["halton-plain", "sobol-plain", "sobol-owen"]);
+/// use nyquist::{sampler::SobolSampler, scramble::Scramble};
+/// assert_eq!(OTHER_NAMES, ["halton-plain", "hammersley-plain", "sobol-plain", "sobol-owen"]);
 /// let mut plain = NamedSampler::new("sobol-plain", [4, 4], 4, 99).unwrap();
-/// let mut zero = NamedSampler::new("sobol", [4, 4], 4, 0).unwrap();
+/// let mut direct = SobolSampler::new([4, 4], 4, Scramble::None, 0).unwrap();
 /// plain.start_pixel_sample([1, 2], 3, 0);
-/// zero.start_pixel_sample([1, 2], 3, 0);
-/// assert_eq!(plain.get_2d(), zero.get_2d());
+/// direct.start_pixel_sample([1, 2], 3, 0);
+/// assert_eq!(plain.get_2d(), direct.get_2d());
 /// ```
-pub const OTHER_NAMES: [&str; 3] = ["halton-plain", "sobol-plain", "sobol-owen"];
+pub const OTHER_NAMES: [&str; 4] = [
+    "halton-plain",
+    "hammersley-plain",
+    "sobol-plain",
+    "sobol-owen",
+];
 
 /// The name [`NamedSampler::new`] builds for `name`: one of [`NAMES`] or [`OTHER_NAMES`],
 /// compared ignoring ASCII case, as its canonical spelling (`None` for an unknown name).
@@ -271,10 +278,12 @@ impl NamedSampler {
     /// - `random`: [`RandomSampler`];
     /// - `uniform`, `stratified`: a [`StratifiedSampler`] on the [`strata`] grid (√spp × √spp
     ///   for a square spp), cell centres ([`Jitter::Centered`]) or jittered;
-    /// - `halton`: [`HaltonSampler`] over the image, digit-permuted when `seed != 0`;
-    /// - `hammersley`: [`HammersleySampler`], scrambled when `seed != 0`;
+    /// - `halton`: [`HaltonSampler`] over the image, digit-permuted by `seed`
+    ///   ([`Scramble::PermuteDigits`]; every seed, 0 included, permutes);
+    /// - `hammersley`: [`HammersleySampler`], digit-permuted by `seed`;
     /// - `zero-two`: [`ZeroTwoSampler`] (spp rounded up to a power of two);
-    /// - `sobol`: [`SobolSampler`] over the image (spp rounded up to a power of two);
+    /// - `sobol`: [`SobolSampler`] over the image, digit-permuted by `seed` (spp rounded up to
+    ///   a power of two);
     /// - `best-candidate`: [`BestCandidateSampler`];
     /// - `adaptive`: an [`AdaptiveSampler`] over a `zero-two` sampler, between a quarter of its
     ///   spp (at least 1) and all of it, threshold 0.1;
@@ -329,13 +338,7 @@ impl NamedSampler {
             return Err(NamedSamplerError::SppAboveLimit { spp, max });
         }
         let [nx, ny] = strata(spp);
-        // The rule of the names halton, hammersley and sobol: unscrambled for seed 0, digit
-        // permutation otherwise.
-        let scramble = if seed == 0 {
-            Scramble::None
-        } else {
-            Scramble::PermuteDigits
-        };
+        let scramble = Scramble::PermuteDigits;
         Ok(match name {
             "random" => NamedSampler::Random(RandomSampler::new(spp, seed)?),
             "uniform" => NamedSampler::Stratified(StratifiedSampler::uniform(nx, ny, seed)?),
@@ -356,6 +359,9 @@ impl NamedSampler {
             }
             "halton-plain" => {
                 NamedSampler::Halton(HaltonSampler::new(size, spp, Scramble::None, 0)?)
+            }
+            "hammersley-plain" => {
+                NamedSampler::Hammersley(HammersleySampler::new(size, spp, Scramble::None, 0)?)
             }
             "sobol-plain" => NamedSampler::Sobol(SobolSampler::new(size, spp, Scramble::None, 0)?),
             "owen-sobol" | "sobol-owen" => {
@@ -379,8 +385,8 @@ impl NamedSampler {
     /// [`NamedSampler::new`] with the scramble chosen instead of defaulted, for the samplers
     /// that offer the four of [`Scramble`] (pbrt-v4's names): `halton`
     /// ([`HaltonSampler::new`]), `sobol` ([`SobolSampler::new`]) and `zsobol`
-    /// ([`ZSobolSampler::new`]). `new` picks none or digit permutation (by `seed`) for halton,
-    /// fast Owen for zsobol, and sobol's own random-digit scramble.
+    /// ([`ZSobolSampler::new`]). `new` picks digit permutation for halton and sobol and fast
+    /// Owen for zsobol.
     ///
     /// # Errors
     /// As [`NamedSampler::new`]; [`NamedSamplerError::NoScramble`] for the other names in
@@ -546,11 +552,7 @@ mod tests {
                         HaltonSampler::new(
                             size,
                             16,
-                            if seed == 0 {
-                                Scramble::None
-                            } else {
-                                Scramble::PermuteDigits
-                            },
+                            Scramble::PermuteDigits,
                             seed,
                         )
                         .unwrap(),
@@ -562,11 +564,7 @@ mod tests {
                         HammersleySampler::new(
                             size,
                             16,
-                            if seed == 0 {
-                                Scramble::None
-                            } else {
-                                Scramble::PermuteDigits
-                            },
+                            Scramble::PermuteDigits,
                             seed,
                         )
                         .unwrap(),
@@ -582,11 +580,7 @@ mod tests {
                         SobolSampler::new(
                             size,
                             16,
-                            if seed == 0 {
-                                Scramble::None
-                            } else {
-                                Scramble::PermuteDigits
-                            },
+                            Scramble::PermuteDigits,
                             seed,
                         )
                         .unwrap(),
@@ -695,7 +689,7 @@ mod tests {
         assert!(NamedSampler::new("pmj02", [1, 1], 1 << 16, 0).is_ok());
     }
 
-    /// Other spellings build the same sampler: any ASCII case, the `-plain` names (seed 0
+    /// Other spellings build the same sampler: any ASCII case, the `-plain` names (no scramble,
     /// whatever the seed), `sobol-owen`; and `uniform`/`stratified` take any spp on the
     /// [`strata`] grid, every stratum hit once.
     #[test]
@@ -710,9 +704,31 @@ mod tests {
         assert_eq!(values("ZSOBOL", 5), values("zsobol", 5));
         assert_eq!(values("Owen-Sobol", 5), values("owen-sobol", 5));
         assert_eq!(values("sobol-owen", 5), values("owen-sobol", 5));
-        assert_eq!(values("halton-plain", 5), values("halton", 0));
-        assert_eq!(values("sobol-plain", 5), values("sobol", 0));
-        assert_ne!(values("sobol", 5), values("sobol", 0));
+        let direct = |mut s: std::boxed::Box<dyn Sampler>| {
+            (0..16u32)
+                .flat_map(|i| record(&mut *s, [3, 1], i))
+                .map(f32::to_bits)
+                .collect::<Vec<_>>()
+        };
+        let none = Scramble::None;
+        assert_eq!(
+            values("halton-plain", 5),
+            direct(std::boxed::Box::new(HaltonSampler::new([8, 8], 16, none, 0).unwrap()))
+        );
+        assert_eq!(
+            values("hammersley-plain", 5),
+            direct(std::boxed::Box::new(HammersleySampler::new([8, 8], 16, none, 0).unwrap()))
+        );
+        assert_eq!(
+            values("sobol-plain", 5),
+            direct(std::boxed::Box::new(SobolSampler::new([8, 8], 16, none, 0).unwrap()))
+        );
+        for name in ["halton", "hammersley", "sobol"] {
+            // Seed 0 is a permutation like any other: not the plain set, not seed 5's.
+            let plain = std::format!("{name}-plain");
+            assert_ne!(values(name, 0), values(&plain, 0), "{name}");
+            assert_ne!(values(name, 5), values(name, 0), "{name}");
+        }
         assert_eq!(
             NamedSampler::new("SOBOL-plain", [8, 8], 16, 5)
                 .unwrap()

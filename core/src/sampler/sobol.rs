@@ -155,8 +155,9 @@ impl SobolSampler {
             *low = apply_inverse(&inverse, have(high, m, sobol01));
         }
         let scrambles = core::array::from_fn(|k| match scramble {
+            Scramble::None => 0,
             Scramble::PermuteDigits => xor_scramble(seed, 2 + k as u32),
-            _ => owen_seed(seed, 2 + k as u32),
+            Scramble::FastOwen | Scramble::Owen => owen_seed(seed, 2 + k as u32),
         });
         let mut sampler = Self {
             spp,
@@ -307,7 +308,7 @@ impl SobolSampler {
             v = (v ^ self.shift[dim as usize]) << self.m;
         } else if let Some(&x) = self.scrambles.get((dim - 2) as usize) {
             v ^= x;
-        } else {
+        } else if self.scramble == Scramble::PermuteDigits {
             v ^= xor_scramble(self.seed, dim);
         }
         fraction_to_f32(v)
@@ -357,14 +358,11 @@ fn owen_seed(seed: u64, dim: u32) -> u32 {
     (hash2(seed, u64::from(dim)) >> 32) as u32
 }
 
-/// The XOR scramble of dimension `dim ≥ 2` under `seed` (0 for seed 0: the plain sequence).
+/// The XOR word (digit permutation) of dimension `dim ≥ 2` under `seed`; every seed, 0
+/// included, gives a permutation.
 #[inline]
 fn xor_scramble(seed: u64, dim: u32) -> u32 {
-    if seed == 0 {
-        0
-    } else {
-        hash2(seed, u64::from(dim)) as u32
-    }
+    hash2(seed, u64::from(dim)) as u32
 }
 
 /// The top `m` bits of dimensions 0 and 1 of Sobol point `high`, interleaved.
@@ -568,6 +566,31 @@ mod tests {
             }
         }
         assert!(hit.iter().all(|&b| b));
+    }
+
+    /// Without a scramble every dimension is the plain sequence at the sample's global index
+    /// (dimensions 0 and 1 as the fraction inside the pixel), past the 30 cached scramble words
+    /// too; a digit permutation changes them for every seed, 0 included.
+    #[test]
+    fn no_scramble_is_the_plain_sequence_and_seed_0_permutes() {
+        let mut plain = SobolSampler::new([4, 4], 4, Scramble::None, 9).unwrap();
+        let mut permuted = SobolSampler::new([4, 4], 4, Scramble::PermuteDigits, 0).unwrap();
+        let mut changed = 0;
+        for pixel in [[0, 0], [3, 1]] {
+            for i in 0..4 {
+                let idx = plain.sequence_index(pixel, i) as u32;
+                plain.start_pixel_sample(pixel, i, 0);
+                permuted.start_pixel_sample(pixel, i, 0);
+                for d in 0..40u32 {
+                    let (a, b) = (plain.get_1d(), permuted.get_1d());
+                    let v = sobol_u32(idx, d);
+                    let want = if d < 2 { v << 2 } else { v };
+                    assert_eq!(a, fraction_to_f32(want), "pixel {pixel:?} sample {i} dim {d}");
+                    changed += usize::from(a != b && d >= 2);
+                }
+            }
+        }
+        assert!(changed > 8 * 30, "{changed}");
     }
 
     #[test]
