@@ -46,6 +46,8 @@ impl From<Error> for NyqStatus {
             Error::NonFinite { .. } => NyqStatus::NYQ_ERR_NON_FINITE,
             Error::OutOfRange { .. }
             | Error::NotInRange { .. }
+            | Error::Invalid { .. }
+            | Error::NotSeparable { .. }
             | Error::DimensionOutOfRange { .. } => NyqStatus::NYQ_ERR_OUT_OF_RANGE,
             Error::BufferLength { .. } | Error::BufferTooShort { .. } => NyqStatus::NYQ_ERR_BUFFER,
             Error::TooMany { .. } => NyqStatus::NYQ_ERR_TOO_MANY,

@@ -19,7 +19,38 @@ fn every_core_error_maps_to_its_status() {
     let cases = [
         (Error::ZeroSize { what: "n" }, NYQ_ERR_ZERO_SIZE),
         (Error::NonFinite { what: "r" }, NYQ_ERR_NON_FINITE),
-        (Error::OutOfRange { what: "r" }, NYQ_ERR_OUT_OF_RANGE),
+        (
+            Error::OutOfRange {
+                what: "r",
+                value: 2.0,
+                range: nyquist::error::Interval::closed(0.0, 1.0),
+            },
+            NYQ_ERR_OUT_OF_RANGE,
+        ),
+        (
+            Error::NotInRange {
+                what: "dims",
+                value: 2000,
+                min: 1,
+                max: 1024,
+            },
+            NYQ_ERR_OUT_OF_RANGE,
+        ),
+        (
+            Error::Invalid {
+                what: "a",
+                value: 190,
+                rule: "is not coprime to n =",
+                other: 1024,
+            },
+            NYQ_ERR_OUT_OF_RANGE,
+        ),
+        (
+            Error::NotSeparable {
+                what: "phase table",
+            },
+            NYQ_ERR_OUT_OF_RANGE,
+        ),
         (
             Error::DimensionOutOfRange { dim: 3, dims: 2 },
             NYQ_ERR_OUT_OF_RANGE,
@@ -38,7 +69,14 @@ fn every_core_error_maps_to_its_status() {
             },
             NYQ_ERR_BUFFER,
         ),
-        (Error::TooMany { what: "n" }, NYQ_ERR_TOO_MANY),
+        (
+            Error::TooMany {
+                what: "n",
+                value: 5000,
+                max: 4096,
+            },
+            NYQ_ERR_TOO_MANY,
+        ),
     ];
     for (e, s) in cases {
         assert_eq!(NyqStatus::from(e), s, "{e}");

@@ -701,7 +701,7 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
         }
         S::Korobov => {
             let lattice = korobov_lattice(count, dims, notes).map_err(|e| match e {
-                nyquist::Error::OutOfRange { what: "n" } => {
+                nyquist::Error::NotInRange { what: "n", .. } => {
                     let tabled: Vec<String> =
                         Korobov::tabled_sizes(dims).map(|n| n.to_string()).collect();
                     let tabled = if tabled.is_empty() {

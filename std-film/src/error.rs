@@ -206,7 +206,11 @@ mod tests {
         // The stream's and the core's errors are the sources of theirs.
         let io = Error::Io(std::io::Error::other("disk"));
         assert_eq!(std::error::Error::source(&io).unwrap().to_string(), "disk");
-        let core = Error::Core(nyquist::Error::TooMany { what: "points" });
+        let core = Error::Core(nyquist::Error::TooMany {
+            what: "points",
+            value: 5000,
+            max: 4096,
+        });
         assert!(std::error::Error::source(&core).is_some());
         assert!(std::error::Error::source(&Error::Config("x".into())).is_none());
         // Errors that carry no stream keep their kind when a path is attached.

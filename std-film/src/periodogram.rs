@@ -45,11 +45,15 @@ impl Periodogram {
     /// An empty periodogram over `f ∈ [−max_freq, max_freq]²`.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] for `max_freq == 0`; [`Error::OutOfRange`] above [`MAX_FREQ`].
+    /// [`Error::ZeroSize`] for `max_freq == 0`; [`Error::NotInRange`] above [`MAX_FREQ`].
     ///
     /// ```
     /// use nyquist_film::periodogram::Periodogram;
     /// assert!(Periodogram::new(0).is_err());
+    /// assert_eq!(
+    ///     Periodogram::new(5000).unwrap_err().to_string(),
+    ///     "max_freq 5000 is outside 1..=4096"
+    /// );
     /// assert_eq!(Periodogram::new(8).unwrap().side(), 17);
     /// ```
     pub fn new(max_freq: u32) -> Result<Self, Error> {
@@ -57,7 +61,12 @@ impl Periodogram {
             return Err(Error::ZeroSize { what: "max_freq" });
         }
         if max_freq > MAX_FREQ {
-            return Err(Error::OutOfRange { what: "max_freq" });
+            return Err(Error::NotInRange {
+                what: "max_freq",
+                value: u64::from(max_freq),
+                min: 1,
+                max: u64::from(MAX_FREQ),
+            });
         }
         let side = 2 * max_freq as usize + 1;
         Ok(Periodogram {

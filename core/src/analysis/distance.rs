@@ -160,7 +160,7 @@ fn search_done(r: usize, max_ring: usize, gap: f64, best2: f64) -> bool {
 /// distance the domain allows (√2 in the square, √2/2 on the torus). Allocates: no.
 ///
 /// # Errors
-/// [`Error::OutOfRange`] (`"dims"`) unless the set is 2D; [`Error::BufferTooShort`] if `scratch`
+/// [`Error::NotInRange`] (`"dims"`) unless the set is 2D; [`Error::BufferTooShort`] if `scratch`
 /// is shorter than [`min_distance_scratch_len`].
 ///
 /// ```
@@ -187,7 +187,11 @@ pub fn min_distance(
         });
     }
     let n = points.len();
-    let needed = min_distance_scratch_len(n).ok_or(Error::TooMany { what: "points" })?;
+    let needed = min_distance_scratch_len(n).ok_or(Error::TooMany {
+        what: "points",
+        value: n as u64,
+        max: ((usize::MAX - 1) / 3) as u64,
+    })?;
     let buf = check_scratch(scratch, needed)?;
     let rho = |d: f64| d / sqrt(2.0 / (sqrt(3.0) * n as f64));
     if n == 1 {

@@ -43,6 +43,7 @@ pub use star::{
 };
 
 use crate::Error;
+use crate::error::Interval;
 
 /// A validated, borrowed point set: `len() · dims()` coordinates, point-major, each finite and
 /// in `[0, 1]`, at least one point, at most `u32::MAX` points.
@@ -66,14 +67,16 @@ impl<'a> PointSet<'a> {
     /// # Errors
     /// [`Error::ZeroSize`] for `dims == 0` or no coordinates; [`Error::BufferLength`] if the
     /// length is not a multiple of `dims`; [`Error::NonFinite`] for NaN or ±∞;
-    /// [`Error::OutOfRange`] for a value outside `[0, 1]`; [`Error::TooMany`] above `u32::MAX`
-    /// points.
+    /// [`Error::OutOfRange`] (`what: "point coordinate"`) for a value outside `[0, 1]`;
+    /// [`Error::TooMany`] above `u32::MAX` points.
     ///
     /// ```
     /// use nyquist::{analysis::PointSet, Error};
     /// assert!(PointSet::new(&[0.0, 1.0], 1).is_ok());
     /// assert_eq!(PointSet::new(&[], 2).unwrap_err(), Error::ZeroSize { what: "points" });
-    /// assert_eq!(PointSet::new(&[1.5], 1).unwrap_err(), Error::OutOfRange { what: "points" });
+    /// let e = PointSet::new(&[0.5, 1.5], 1).unwrap_err();
+    /// assert!(matches!(e, Error::OutOfRange { what: "point coordinate", value: 1.5, .. }));
+    /// assert_eq!(e.to_string(), "point coordinate 1.5 is outside [0, 1]");
     /// assert_eq!(PointSet::new(&[f64::NAN], 1).unwrap_err(), Error::NonFinite { what: "points" });
     /// ```
     pub fn new(coords: &'a [f64], dims: usize) -> Result<Self, Error> {
@@ -91,14 +94,22 @@ impl<'a> PointSet<'a> {
         }
         let len = coords.len() / dims;
         if u32::try_from(len).is_err() {
-            return Err(Error::TooMany { what: "points" });
+            return Err(Error::TooMany {
+                what: "points",
+                value: len as u64,
+                max: u64::from(u32::MAX),
+            });
         }
         for &x in coords {
             if !x.is_finite() {
                 return Err(Error::NonFinite { what: "points" });
             }
             if !(0.0..=1.0).contains(&x) {
-                return Err(Error::OutOfRange { what: "points" });
+                return Err(Error::OutOfRange {
+                    what: "point coordinate",
+                    value: x,
+                    range: Interval::closed(0.0, 1.0),
+                });
             }
         }
         Ok(PointSet { coords, dims, len })

@@ -67,7 +67,7 @@ pub fn star_discrepancy(points: &PointSet<'_>, scratch: &mut [f64]) -> Result<f6
 /// (Niederreiter 1992, Thm. 2.6). O(N log N); `scratch` needs `N` elements. Allocates: no.
 ///
 /// # Errors
-/// [`Error::OutOfRange`] (`"dims"`) unless the set is 1D; [`Error::BufferTooShort`].
+/// [`Error::NotInRange`] (`"dims"`) unless the set is 1D; [`Error::BufferTooShort`].
 ///
 /// ```
 /// use nyquist::analysis::{star_discrepancy_1d, PointSet};
@@ -103,7 +103,7 @@ pub fn star_discrepancy_1d(points: &PointSet<'_>, scratch: &mut [f64]) -> Result
 /// `scratch` of `3N` elements (`2N` for the x-sorted points, `N` for the y list). Allocates: no.
 ///
 /// # Errors
-/// [`Error::OutOfRange`] (`"dims"`) unless the set is 2D; [`Error::BufferTooShort`].
+/// [`Error::NotInRange`] (`"dims"`) unless the set is 2D; [`Error::BufferTooShort`].
 ///
 /// ```
 /// use nyquist::analysis::{star_discrepancy_2d, PointSet};
@@ -175,7 +175,8 @@ fn closed_scan(v: f64, ys: &[f64], inv_n: f64) -> f64 {
 /// (slower than the dedicated functions). Allocates: no.
 ///
 /// # Errors
-/// [`Error::OutOfRange`] (`"dims"`) above [`MAX_DIMS`]; [`Error::TooMany`] when the cost exceeds
+/// [`Error::NotInRange`] (`"dims"`) above [`MAX_DIMS`]; [`Error::TooMany`]
+/// (`"enumeration cost"`, the estimated cost saturated at `u64::MAX`) when the cost exceeds
 /// [`ENUMERATION_LIMIT`]; [`Error::BufferTooShort`].
 ///
 /// ```
@@ -199,7 +200,12 @@ pub fn star_discrepancy_enumerate(
         });
     }
     let n = points.len();
-    let needed = star_discrepancy_scratch_len(n, d).ok_or(Error::TooMany { what: "points" })?;
+    // 2n + (d − 1)(n + 1) ≤ usize::MAX.
+    let needed = star_discrepancy_scratch_len(n, d).ok_or(Error::TooMany {
+        what: "points",
+        value: n as u64,
+        max: ((usize::MAX - (d - 1)) / (d + 1)) as u64,
+    })?;
     let buf = check_scratch(scratch, needed)?;
     let (order, axes) = buf.split_at_mut(2 * n);
     let coords = points.coords();
@@ -234,7 +240,11 @@ pub fn star_discrepancy_enumerate(
         work = work.saturating_mul(m as u64);
     }
     if !within_enumeration_limit(work) {
-        return Err(Error::TooMany { what: "points" });
+        return Err(Error::TooMany {
+            what: "enumeration cost",
+            value: work,
+            max: ENUMERATION_LIMIT,
+        });
     }
     let inv_n = 1.0 / n as f64;
     let mut idx = [0usize; MAX_DIMS];
@@ -308,6 +318,21 @@ pub fn star_bounds_scratch_len(dims: usize, m: u32) -> Option<usize> {
     cells.checked_mul(2)
 }
 
+/// The largest `m` for which [`star_bounds_scratch_len`] is `Some` in `dims ≥ 1` dimensions.
+fn largest_bounds_m(dims: usize) -> u32 {
+    // The length grows with m: bisect for the last m that fits (m = 1 always does).
+    let (mut fits, mut overflows) = (1u64, 1u64 << 32);
+    while overflows - fits > 1 {
+        let mid = fits + (overflows - fits) / 2;
+        if star_bounds_scratch_len(dims, mid as u32).is_some() {
+            fits = mid;
+        } else {
+            overflows = mid;
+        }
+    }
+    fits as u32
+}
+
 /// Brackets the star discrepancy with a regular grid of `m` cells per axis (grid values
 /// `j/m`): counts of open and closed anchored boxes at every grid point come from a
 /// d-dimensional histogram and prefix sums. Every `t` lies in a cell `[a, a + 1/m]`, and
@@ -320,8 +345,9 @@ pub fn star_bounds_scratch_len(dims: usize, m: u32) -> Option<usize> {
 /// method for large `N·d` (cost O(N·d + d·(m+1)^d)). Allocates: no.
 ///
 /// # Errors
-/// [`Error::ZeroSize`] (`"m"`) for `m == 0`; [`Error::OutOfRange`] (`"dims"`) above
-/// [`MAX_DIMS`]; [`Error::TooMany`] if the grid size overflows; [`Error::BufferTooShort`].
+/// [`Error::ZeroSize`] (`"m"`) for `m == 0`; [`Error::NotInRange`] (`"dims"`) above
+/// [`MAX_DIMS`]; [`Error::TooMany`] (`"m"`, with the largest `m` whose scratch length fits a
+/// `usize`) if the grid size overflows; [`Error::BufferTooShort`].
 ///
 /// ```
 /// use nyquist::analysis::{star_discrepancy_bounds, PointSet};
@@ -347,7 +373,11 @@ pub fn star_discrepancy_bounds(
             max: MAX_DIMS as u64,
         });
     }
-    let needed = star_bounds_scratch_len(d, m).ok_or(Error::TooMany { what: "m" })?;
+    let needed = star_bounds_scratch_len(d, m).ok_or_else(|| Error::TooMany {
+        what: "m",
+        value: u64::from(m),
+        max: u64::from(largest_bounds_m(d)),
+    })?;
     let buf = check_scratch(scratch, needed)?;
     buf.fill(0);
     let cells = needed / 2;
@@ -711,13 +741,33 @@ mod tests {
             star_discrepancy_bounds(&set, 0, &mut u),
             Err(Error::ZeroSize { what: "m" })
         );
+        // 2 · (m + 1)² overflows for m = 2³² − 1; the error names the largest m that fits.
+        let largest = largest_bounds_m(2);
+        assert_eq!(
+            star_discrepancy_bounds(&set, u32::MAX, &mut u),
+            Err(Error::TooMany {
+                what: "m",
+                value: u64::from(u32::MAX),
+                max: u64::from(largest)
+            })
+        );
+        for d in 1..=MAX_DIMS {
+            let m = largest_bounds_m(d);
+            assert!(star_bounds_scratch_len(d, m).is_some(), "dims {d}");
+            assert!(m == u32::MAX || star_bounds_scratch_len(d, m + 1).is_none());
+        }
         // 200 points in 6D: 200^5 · 1200 critical-box work is far beyond the limit.
         let pts = random(200, 6, 1);
         let set = PointSet::new(&pts, 6).unwrap();
         let mut s = vec![0.0; star_discrepancy_scratch_len(200, 6).unwrap()];
+        let cost = 6 * 200 * 201u64.pow(5);
         assert_eq!(
             star_discrepancy(&set, &mut s),
-            Err(Error::TooMany { what: "points" })
+            Err(Error::TooMany {
+                what: "enumeration cost",
+                value: cost,
+                max: ENUMERATION_LIMIT
+            })
         );
         assert_eq!(star_bounds_scratch_len(MAX_DIMS, u32::MAX), None);
     }

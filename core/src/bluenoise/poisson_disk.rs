@@ -3,6 +3,7 @@
 
 use crate::Error;
 use crate::analysis::Topology;
+use crate::error::Interval;
 use crate::math::{ONE_MINUS_EPSILON_F64, ceil, cos, sin, sqrt};
 use crate::rng::{default_rng, uniform_below, uniform_f64};
 
@@ -72,14 +73,20 @@ impl PoissonDisk {
     /// ```
     /// use nyquist::{analysis::Topology, bluenoise::PoissonDisk, Error};
     /// assert!(PoissonDisk::new(0.01, Topology::Torus, 0).is_ok());
-    /// assert_eq!(PoissonDisk::new(0.0, Topology::Torus, 0), Err(Error::OutOfRange { what: "radius" }));
+    /// let e = PoissonDisk::new(1.5, Topology::Torus, 0).unwrap_err();
+    /// assert!(matches!(e, Error::OutOfRange { what: "radius", value: 1.5, .. }));
+    /// assert_eq!(e.to_string(), "radius 1.5 is outside [0.0006906077348066298, 1]");
     /// ```
     pub fn new(radius: f64, topology: Topology, seed: u64) -> Result<PoissonDisk, Error> {
         if !radius.is_finite() {
             return Err(Error::NonFinite { what: "radius" });
         }
         if !(MIN_RADIUS..=1.0).contains(&radius) {
-            return Err(Error::OutOfRange { what: "radius" });
+            return Err(Error::OutOfRange {
+                what: "radius",
+                value: radius,
+                range: Interval::closed(MIN_RADIUS, 1.0),
+            });
         }
         Ok(PoissonDisk {
             radius,
@@ -95,8 +102,9 @@ impl PoissonDisk {
     /// packing scaled by ρ). The count itself varies with the seed by a few per cent.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] for `count == 0`; [`Error::OutOfRange`] when the radius falls below
-    /// [`MIN_RADIUS`] (about 1.2 million points).
+    /// [`Error::ZeroSize`] for `count == 0`; [`Error::NotInRange`] (`what: "count"`, `max` the
+    /// largest count allowed) when the radius falls below [`MIN_RADIUS`] (above about 1.2
+    /// million points).
     ///
     /// ```
     /// use nyquist::{analysis::Topology, bluenoise::PoissonDisk};
@@ -107,7 +115,26 @@ impl PoissonDisk {
         if count == 0 {
             return Err(Error::ZeroSize { what: "count" });
         }
-        let r = 0.78 * sqrt(2.0 / (sqrt(3.0) * f64::from(count)));
+        let radius = |count: u32| 0.78 * sqrt(2.0 / (sqrt(3.0) * f64::from(count)));
+        let r = radius(count);
+        if r < MIN_RADIUS {
+            // The radius falls with the count: bisect for the last count it allows (1 does).
+            let (mut fits, mut over) = (1u32, count);
+            while over - fits > 1 {
+                let mid = fits + (over - fits) / 2;
+                if radius(mid) >= MIN_RADIUS {
+                    fits = mid;
+                } else {
+                    over = mid;
+                }
+            }
+            return Err(Error::NotInRange {
+                what: "count",
+                value: u64::from(count),
+                min: 1,
+                max: u64::from(fits),
+            });
+        }
         PoissonDisk::new(r.min(1.0), topology, seed)
     }
 

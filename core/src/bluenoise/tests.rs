@@ -335,7 +335,33 @@ fn poisson_disk_errors() {
     );
     assert_eq!(
         PoissonDisk::new(1.5, Topology::Square, 0),
-        Err(Error::OutOfRange { what: "radius" })
+        Err(Error::OutOfRange {
+            what: "radius",
+            value: 1.5,
+            range: crate::error::Interval::closed(super::MIN_RADIUS, 1.0)
+        })
+    );
+    // The largest count whose radius is allowed is the limit with_count reports.
+    let radius = |count: u32| 0.78 * (2.0 / (3f64.sqrt() * f64::from(count))).sqrt();
+    let max = match PoissonDisk::with_count(u32::MAX, Topology::Square, 0) {
+        Err(Error::NotInRange {
+            what: "count",
+            value,
+            min: 1,
+            max,
+        }) if value == u64::from(u32::MAX) => u32::try_from(max).unwrap(),
+        r => panic!("{r:?}"),
+    };
+    assert!(radius(max) >= super::MIN_RADIUS && radius(max + 1) < super::MIN_RADIUS);
+    assert!(PoissonDisk::with_count(max, Topology::Square, 0).is_ok());
+    assert_eq!(
+        PoissonDisk::with_count(max + 1, Topology::Square, 0).map(|p| p.radius()),
+        Err(Error::NotInRange {
+            what: "count",
+            value: u64::from(max) + 1,
+            min: 1,
+            max: u64::from(max)
+        })
     );
     assert_eq!(
         PoissonDisk::with_count(0, Topology::Square, 0),

@@ -48,7 +48,11 @@ pub fn rank_to_value(rank: u32, n: u32) -> f32 {
 /// assert_eq!(v, [0.75, 0.25]);
 /// ```
 pub fn ranks_to_values(ranks: &[u32], out: &mut [f32]) -> Result<(), Error> {
-    let n = u32::try_from(ranks.len()).map_err(|_| Error::TooMany { what: "ranks" })?;
+    let n = u32::try_from(ranks.len()).map_err(|_| Error::TooMany {
+        what: "ranks",
+        value: ranks.len() as u64,
+        max: u64::from(u32::MAX),
+    })?;
     let out = crate::analysis::check_scratch(out, ranks.len())?;
     for (o, &r) in out.iter_mut().zip(ranks) {
         *o = rank_to_value(r, n);
@@ -115,7 +119,14 @@ impl VoidAndCluster {
     /// assert!(VoidAndCluster::new(256, 256, 0).is_ok());
     /// assert!(VoidAndCluster::new(3, 5, 0).is_ok());
     /// assert_eq!(VoidAndCluster::new(0, 5, 0), Err(Error::ZeroSize { what: "width" }));
-    /// assert_eq!(VoidAndCluster::new(2048, 1024, 0), Err(Error::TooMany { what: "pixels" }));
+    /// assert_eq!(
+    ///     VoidAndCluster::new(2048, 1024, 0),
+    ///     Err(Error::TooMany { what: "pixels", value: 2048 * 1024, max: 1 << 20 })
+    /// );
+    /// assert_eq!(
+    ///     VoidAndCluster::new(2048, 1024, 0).unwrap_err().to_string(),
+    ///     "pixels 2097152 is above 1048576"
+    /// );
     /// ```
     pub fn new(width: u32, height: u32, seed: u64) -> Result<VoidAndCluster, Error> {
         if width == 0 {
@@ -124,8 +135,13 @@ impl VoidAndCluster {
         if height == 0 {
             return Err(Error::ZeroSize { what: "height" });
         }
-        if u64::from(width) * u64::from(height) > u64::from(MAX_MASK_PIXELS) {
-            return Err(Error::TooMany { what: "pixels" });
+        let pixels = u64::from(width) * u64::from(height);
+        if pixels > u64::from(MAX_MASK_PIXELS) {
+            return Err(Error::TooMany {
+                what: "pixels",
+                value: pixels,
+                max: u64::from(MAX_MASK_PIXELS),
+            });
         }
         let taps = 2 * KERNEL_RADIUS + 1;
         let axis = |size: u32| -> ([f64; 13], u32, u32) {

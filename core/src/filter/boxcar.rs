@@ -30,7 +30,9 @@ impl Boxcar {
     /// ```
     /// use nyquist::{filter::Boxcar, Error};
     /// assert!(Boxcar::new([1.0, 0.5]).is_ok());
-    /// assert_eq!(Boxcar::new([0.0, 0.5]), Err(Error::OutOfRange { what: "rx" }));
+    /// let e = Boxcar::new([0.0, 0.5]).unwrap_err();
+    /// assert!(matches!(e, Error::OutOfRange { what: "rx", value: 0.0, .. }));
+    /// assert_eq!(e.to_string(), "rx 0 is outside [0.000015258789, 1024]");
     /// ```
     pub fn new(radius: [f32; 2]) -> Result<Boxcar, Error> {
         Ok(Boxcar {

@@ -3,6 +3,11 @@
 use super::{Axis, Filter, check, check_radius};
 use crate::{Error, math};
 
+/// The smallest `f32` σ whose `α = 1/(2σ²)` (in `f64`) is at most `f32::MAX`.
+pub(super) const MIN_SIGMA: f32 = 3.833_233_8e-20;
+/// The largest `f32` σ whose `α = 1/(2σ²)` (in `f64`) is at least `f32::MIN_POSITIVE`.
+pub(super) const MAX_SIGMA: f32 = 6.521_909e18;
+
 /// The Gaussian filter, shifted to reach 0 at the radius: per axis
 /// `max(0, e^(−αx²) − e^(−αr²))` for `|x| ≤ r`, the 2D weight being the product. Defaults:
 /// radius 2, α = 2. [`Gaussian::with_sigma`] takes the standard deviation instead,
@@ -35,7 +40,9 @@ impl Gaussian {
     /// ```
     /// use nyquist::{filter::Gaussian, Error};
     /// assert!(Gaussian::new([1.5, 1.5], 4.0).is_ok());
-    /// assert_eq!(Gaussian::new([1.5, 1.5], 0.0), Err(Error::OutOfRange { what: "alpha" }));
+    /// let e = Gaussian::new([1.5, 1.5], 0.0).unwrap_err();
+    /// assert!(matches!(e, Error::OutOfRange { what: "alpha", value: 0.0, .. }));
+    /// assert_eq!(e.to_string(), "alpha 0 is outside [1.1754944e-38, 3.4028235e38]");
     /// ```
     pub fn new(radius: [f32; 2], alpha: f32) -> Result<Gaussian, Error> {
         let radius = check_radius(radius)?;
@@ -51,21 +58,22 @@ impl Gaussian {
     /// A Gaussian of half-widths `[rx, ry]` and standard deviation `sigma`: `α = 1/(2σ²)`.
     ///
     /// # Errors
-    /// As [`Gaussian::new`] for the radius; [`Error::NonFinite`] / [`Error::OutOfRange`] with
-    /// `what = "sigma"` unless `sigma > 0` is finite and `1/(2σ²)` is a finite, normal `f32`.
+    /// [`Error::NonFinite`] / [`Error::OutOfRange`] with `what = "sigma"` unless `sigma` is in
+    /// `[3.8332338e-20, 6.521909e18]`, the `f32` values for which `1/(2σ²)` is a finite, normal
+    /// `f32`; then as [`Gaussian::new`] for the radius.
     ///
     /// ```
     /// use nyquist::filter::Gaussian;
     /// let g = Gaussian::with_sigma([1.5, 1.5], 0.5).unwrap();
     /// assert_eq!(g.alpha(), 2.0);
-    /// assert!(Gaussian::with_sigma([1.5, 1.5], -0.5).is_err());
+    /// assert_eq!(
+    ///     Gaussian::with_sigma([1.5, 1.5], -0.5).unwrap_err().to_string(),
+    ///     "sigma -0.5 is outside [3.8332338e-20, 6.521909e18]"
+    /// );
     /// ```
     pub fn with_sigma(radius: [f32; 2], sigma: f32) -> Result<Gaussian, Error> {
-        let sigma = check(sigma, "sigma", f32::MIN_POSITIVE, f32::MAX)?;
+        let sigma = check(sigma, "sigma", MIN_SIGMA, MAX_SIGMA)?;
         let alpha = 1.0 / (2.0 * f64::from(sigma) * f64::from(sigma));
-        if !(alpha >= f64::from(f32::MIN_POSITIVE) && alpha <= f64::from(f32::MAX)) {
-            return Err(Error::OutOfRange { what: "sigma" });
-        }
         Gaussian::new(radius, alpha as f32)
     }
 

@@ -48,7 +48,7 @@ pub enum FilterKind {
 /// assert_eq!(e, SpecError::BadNumber { key: "b", value: "x" });
 /// assert_eq!(e.to_string(), "filter spec: value `x` of key `b` is not a number");
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum SpecError<'a> {
     /// The spec, or its name, is empty.
@@ -125,13 +125,17 @@ impl fmt::Display for SpecError<'_> {
             SpecError::Invalid {
                 key,
                 value,
-                error: Error::OutOfRange { what },
+                error: Error::OutOfRange { what, range, .. },
             } => {
+                // The value as typed is already named (an `f32` may have rounded it).
                 write!(
                     f,
-                    "invalid value `{value}` for key `{key}`: {what} must be "
+                    "invalid value `{value}` for key `{key}`: {what} must be in {range}"
                 )?;
-                range(f, what)
+                if matches!(what, "rx" | "ry") {
+                    f.write_str(" (2^-16 to 1024 pixels)")?;
+                }
+                Ok(())
             }
             SpecError::Invalid { key, value, error } => {
                 write!(f, "invalid value `{value}` for key `{key}`: {error}")
@@ -141,23 +145,6 @@ impl fmt::Display for SpecError<'_> {
 }
 
 impl core::error::Error for SpecError<'_> {}
-
-/// Writes the range the constructors accept for parameter `what`.
-fn range(f: &mut fmt::Formatter<'_>, what: &str) -> fmt::Result {
-    use super::{MAX_RADIUS, MIN_RADIUS, mitchell::MAX_BC};
-    match what {
-        "rx" | "ry" => write!(f, "in [{MIN_RADIUS}, {MAX_RADIUS}] (2^-16 to 1024 pixels)"),
-        "b" | "c" => write!(f, "in [-{MAX_BC}, {MAX_BC}]"),
-        "alpha" | "tau" => write!(f, "in [{:e}, {:e}]", f32::MIN_POSITIVE, f32::MAX),
-        "sigma" => write!(
-            f,
-            "positive with 1/(2 sigma^2) in [{:e}, {:e}]",
-            f32::MIN_POSITIVE,
-            f32::MAX
-        ),
-        _ => f.write_str("in its documented range"),
-    }
-}
 
 /// Every key a spec may hold (each at most once).
 const KEYS: [&str; 8] = ["radius", "rx", "ry", "alpha", "sigma", "b", "c", "tau"];
@@ -310,7 +297,7 @@ impl FilterKind {
         };
         built.map_err(|error| {
             let what = match error {
-                Error::NonFinite { what } | Error::OutOfRange { what } => what,
+                Error::NonFinite { what } | Error::OutOfRange { what, .. } => what,
                 _ => "",
             };
             let param = match what {

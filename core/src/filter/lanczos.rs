@@ -129,7 +129,9 @@ impl Lanczos {
     /// ```
     /// use nyquist::{filter::Lanczos, Error};
     /// assert!(Lanczos::new([3.0, 3.0], 3.0).is_ok());
-    /// assert_eq!(Lanczos::new([3.0, 3.0], -1.0), Err(Error::OutOfRange { what: "tau" }));
+    /// let e = Lanczos::new([3.0, 3.0], -1.0).unwrap_err();
+    /// assert!(matches!(e, Error::OutOfRange { what: "tau", value: -1.0, .. }));
+    /// assert_eq!(e.to_string(), "tau -1 is outside [1.1754944e-38, 3.4028235e38]");
     /// ```
     pub fn new(radius: [f32; 2], tau: f32) -> Result<Lanczos, Error> {
         let tau = check(tau, "tau", f32::MIN_POSITIVE, f32::MAX)?;

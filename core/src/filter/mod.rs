@@ -47,6 +47,7 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 use crate::Error;
+use crate::error::Interval;
 
 mod boxcar;
 mod film_table;
@@ -283,14 +284,18 @@ pub(crate) fn radius_or_zero<F: Filter + ?Sized>(filter: &F) -> [f32; 2] {
 }
 
 /// Checks a finite float parameter lies in `[lo, hi]`: NaN/∞ → [`Error::NonFinite`], outside →
-/// [`Error::OutOfRange`].
+/// [`Error::OutOfRange`] with the value and `[lo, hi]`.
 pub(crate) fn check(value: f32, what: &'static str, lo: f32, hi: f32) -> Result<f32, Error> {
     if !value.is_finite() {
         Err(Error::NonFinite { what })
     } else if value >= lo && value <= hi {
         Ok(value)
     } else {
-        Err(Error::OutOfRange { what })
+        Err(Error::OutOfRange {
+            what,
+            value: f64::from(value),
+            range: Interval::closed(f64::from(lo), f64::from(hi)),
+        })
     }
 }
 

@@ -32,6 +32,7 @@
 use super::table::{MAGIC, MAGIC_BITS, constant_weight, finite_or_zero, mask, table_radius};
 use super::{Axis, Filter, Weights};
 use crate::Error;
+use crate::error::Interval;
 
 /// Phases per pixel of a [`PhaseTable`]: its grid spacing is 1/64 pixel.
 ///
@@ -70,13 +71,15 @@ struct PhaseAxis {
 }
 
 impl PhaseAxis {
-    fn new(r: f32, eval: impl Fn(f32) -> f32) -> Result<PhaseAxis, Error> {
+    fn new(r: f32, what: &'static str, eval: impl Fn(f32) -> f32) -> Result<PhaseAxis, Error> {
         // ⌊2r⌋ + 1 taps: k + φ − r ≤ r has solutions k = 0 … ⌊2r − φ⌋.
         // r is finite and > 0; below 8 the truncation is the floor.
         let span = 2.0 * f64::from(r);
         if span >= MAX_TAPS as f64 {
             return Err(Error::OutOfRange {
-                what: "filter radius (a phase table holds radii below 8)",
+                what,
+                value: f64::from(r),
+                range: Interval::open(0.0, MAX_TAPS as f64 / 2.0),
             });
         }
         let taps = span as usize + 1;
@@ -216,23 +219,35 @@ impl PhaseTable {
     /// [`Filter::integral`].
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] if the filter is not separable, its radius is not finite and `> 0`,
-    /// or a radius is 8 or more (more than [`MAX_TAPS`] taps). Non-finite values from a plugin
-    /// filter are stored as 0, magnitudes above 2⁶² as ±2⁶².
+    /// [`Error::OutOfRange`] if a radius is not finite and `> 0` (the range `(0, ∞)`) or is 8
+    /// or more (more than [`MAX_TAPS`] taps; the range `(0, 8)`), `what` being
+    /// `"filter radius rx"` or `"filter radius ry"`; [`Error::NotSeparable`] if the filter is
+    /// not separable. Non-finite values from a plugin filter are stored as 0, magnitudes above
+    /// 2⁶² as ±2⁶².
     ///
     /// ```
-    /// use nyquist::filter::{Lanczos, PhaseTable};
+    /// use nyquist::filter::{Lanczos, PhaseTable, Triangle};
     /// assert_eq!(PhaseTable::new(&Lanczos::default()).unwrap().radius(), [4.0, 4.0]);
+    /// let wide = Triangle::new([2.0, 8.0]).unwrap();
+    /// assert_eq!(
+    ///     PhaseTable::new(&wide).unwrap_err().to_string(),
+    ///     "filter radius ry 8 is outside (0, 8)"
+    /// );
     /// ```
     pub fn new<F: Filter + ?Sized>(filter: &F) -> Result<PhaseTable, Error> {
         let [rx, ry] = table_radius(filter)?;
         if !filter.is_separable() {
-            return Err(Error::OutOfRange {
-                what: "filter (not separable)",
+            return Err(Error::NotSeparable {
+                what: "phase table",
             });
         }
-        let axis = |a: Axis, r: f32| PhaseAxis::new(r, |d| filter.eval_1d(a, d).unwrap_or(0.0));
-        let axes = [axis(Axis::X, rx)?, axis(Axis::Y, ry)?];
+        let axis = |a: Axis, r: f32, what| {
+            PhaseAxis::new(r, what, |d| filter.eval_1d(a, d).unwrap_or(0.0))
+        };
+        let axes = [
+            axis(Axis::X, rx, "filter radius rx")?,
+            axis(Axis::Y, ry, "filter radius ry")?,
+        ];
         let constant = match (axes[0].constant, axes[1].constant) {
             (Some(x), Some(y)) => Some([x, y]),
             _ => None,
@@ -387,7 +402,9 @@ impl PhaseTable {
         let ny = super::table::check_footprint(nx, out)?;
         if nx.max(ny) > SHIFT_LIMIT as usize {
             return Err(Error::TooMany {
-                what: "footprint side (more than 2^22 pixels)",
+                what: "footprint side",
+                value: nx.max(ny) as u64,
+                max: SHIFT_LIMIT as u64,
             });
         }
         let (sx, px) = self.axes[0].locate(d0[0]);

@@ -1,6 +1,8 @@
 //! Filter importance sampling (pbrt-v4 style): offsets drawn with density ∝ `|f|`.
 
-use super::{Filter, radius_or_zero};
+use super::Filter;
+use super::table::table_radius;
+use crate::error::Interval;
 use crate::{Error, math::clamp_unit};
 
 /// An offset drawn by [`FilterSampler::sample`] and its weight `f(offset)/pdf(offset)`.
@@ -63,9 +65,11 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
     /// not compile.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0`, or so small that a
-    /// cell's area `(2rx/N)·(2ry/N)` is below the smallest normal `f32` (the density `1/area`
-    /// would not be finite: only plugin filters can get there, built-ins need `r ≥ 2⁻¹⁶`).
+    /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0` (`what` is
+    /// `"filter radius rx"` or `"filter radius ry"`, the range `(0, ∞)`), or so small that a
+    /// cell's area `(2rx/N)·(2ry/N)` (in `f32`) is below the smallest normal `f32` (the density
+    /// `1/area` would not be finite: only plugin filters can get there, built-ins need
+    /// `r ≥ 2⁻¹⁶`).
     ///
     /// ```
     /// use nyquist::filter::{Filter, FilterSampler, Lanczos};
@@ -75,19 +79,17 @@ impl<F: Filter, const N: usize> FilterSampler<F, N> {
     /// ```
     pub fn new(filter: F) -> Result<FilterSampler<F, N>, Error> {
         const { assert!(N >= 1, "a filter sampler needs at least one cell per axis") };
-        let [rx, ry] = radius_or_zero(&filter);
-        if rx == 0.0 || ry == 0.0 {
-            return Err(Error::OutOfRange {
-                what: "filter radius (must be finite and > 0)",
-            });
-        }
+        let [rx, ry] = table_radius(&filter)?;
         let hx = 2.0 * f64::from(rx) / N as f64;
         let hy = 2.0 * f64::from(ry) / N as f64;
         // `pdf` divides by the f32 cell area: it must be a normal f32 so that every density is
         // finite (found by the fuzzer: a subnormal radius gave a zero cell and a NaN pdf).
-        if !((hx as f32) * (hy as f32) >= f32::MIN_POSITIVE) {
+        let area = (hx as f32) * (hy as f32);
+        if !(area >= f32::MIN_POSITIVE) {
             return Err(Error::OutOfRange {
-                what: "filter radius (too small: the sampler's cell area must be a normal f32)",
+                what: "filter sampler cell area (2rx/N)·(2ry/N)",
+                value: f64::from(area),
+                range: Interval::at_least(f64::from(f32::MIN_POSITIVE)),
             });
         }
         let at = |i: f64, j: f64| -> f64 {

@@ -1,8 +1,9 @@
 //! Precomputed filter tables: [`Table`] over its storages, the lookups every form shares, and
 //! the lookup kernel [`PhaseTable`](super::PhaseTable) reuses.
 
-use super::{Axis, Filter, Weights, radius_or_zero};
+use super::{Axis, Filter, Weights};
 use crate::Error;
+use crate::error::Interval;
 
 /// How a table reads between its sample points.
 ///
@@ -19,15 +20,23 @@ pub enum Interpolation {
     Linear,
 }
 
-/// Validates a plugin filter's radius for tabulation.
+/// Validates a plugin filter's radius for tabulation: each finite and `> 0`, else
+/// [`Error::OutOfRange`] naming `"filter radius rx"` or `"filter radius ry"` with `(0, ∞)`.
 pub(super) fn table_radius<F: Filter + ?Sized>(filter: &F) -> Result<[f32; 2], Error> {
-    let [rx, ry] = radius_or_zero(filter);
-    if rx == 0.0 || ry == 0.0 {
-        return Err(Error::OutOfRange {
-            what: "filter radius (must be finite and > 0)",
-        });
+    let radius = filter.radius();
+    for (r, what) in radius
+        .into_iter()
+        .zip(["filter radius rx", "filter radius ry"])
+    {
+        if !(r > 0.0 && r <= f32::MAX) {
+            return Err(Error::OutOfRange {
+                what,
+                value: f64::from(r),
+                range: Interval::above(0.0),
+            });
+        }
     }
-    Ok([rx, ry])
+    Ok(radius)
 }
 
 /// The scale from `|offset|` to table coordinates, `(n − 1)/r`, nudged up so that
@@ -769,8 +778,8 @@ fn tabulate<F: Filter + ?Sized, S>(
 ) -> Result<Table<S>, Error> {
     let radius = table_radius(filter)?;
     if separable && !filter.is_separable() {
-        return Err(Error::OutOfRange {
-            what: "filter (not separable)",
+        return Err(Error::NotSeparable {
+            what: "separable table",
         });
     }
     let scale = [table_scale(radius[0], n), table_scale(radius[1], n)];
@@ -798,9 +807,10 @@ impl<const N: usize> SeparableTable<N> {
     /// stores [`Filter::integral`]. `N < 2` (or `N ≥ 2²²`) does not compile.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] if the filter is not separable or its radius is not finite and
-    /// `> 0`. Non-finite values from a plugin filter are stored as 0, magnitudes above 2⁶²
-    /// as ±2⁶².
+    /// [`Error::OutOfRange`] if the filter's radius is not finite and `> 0` (`what` is
+    /// `"filter radius rx"` or `"filter radius ry"`, the range `(0, ∞)`);
+    /// [`Error::NotSeparable`] if the filter is not separable. Non-finite values from a plugin
+    /// filter are stored as 0, magnitudes above 2⁶² as ±2⁶².
     ///
     /// ```
     /// use nyquist::filter::{Interpolation, Mitchell, SeparableTable};

@@ -1,6 +1,7 @@
 //! Tests of the filters against f64 oracles, published integrals and invariants.
 
 use super::*;
+use crate::error::Interval;
 use crate::rng::{default_rng, uniform_f32, uniform_f64};
 use proptest::prelude::*;
 use std::string::ToString;
@@ -1030,7 +1031,14 @@ fn spec_errors_name_the_offence() {
         Err(Invalid {
             key: "sigma",
             value: "0",
-            error: crate::Error::OutOfRange { what: "sigma" }
+            error: crate::Error::OutOfRange {
+                what: "sigma",
+                value: 0.0,
+                range: Interval::closed(
+                    f64::from(gaussian::MIN_SIGMA),
+                    f64::from(gaussian::MAX_SIGMA)
+                )
+            }
         })
     );
     assert_eq!(
@@ -1046,7 +1054,11 @@ fn spec_errors_name_the_offence() {
         Err(Invalid {
             key: "c",
             value: "1e9",
-            error: crate::Error::OutOfRange { what: "c" }
+            error: crate::Error::OutOfRange {
+                what: "c",
+                value: 1e9,
+                range: Interval::closed(-1000.0, 1000.0)
+            }
         })
     );
     let e = FilterKind::parse("triangle:radius=0")
@@ -1068,14 +1080,19 @@ fn spec_errors_give_the_range_and_refuse_repeated_keys() {
         "filter spec: invalid value `1e9` for key `c`: c must be in [-1000, 1000]"
     );
     // Finite as typed but beyond f32: out of range, not "must be finite".
-    for big in ["1e308", "-1e400"] {
+    // The error's value is the f32 the text rounds to.
+    for (big, rounded) in [("1e308", f32::MAX), ("-1e400", f32::MIN)] {
         let spec = std::format!("mitchell:b={big}");
         assert_eq!(
             FilterKind::parse(&spec),
             Err(Invalid {
                 key: "b",
                 value: big,
-                error: crate::Error::OutOfRange { what: "b" }
+                error: crate::Error::OutOfRange {
+                    what: "b",
+                    value: f64::from(rounded),
+                    range: Interval::closed(-1000.0, 1000.0)
+                }
             })
         );
     }
@@ -1138,7 +1155,7 @@ fn bare_names_give_the_documented_defaults_and_every_range_is_spelled_out() {
             "sigma",
             "-1",
             "sigma",
-            std::format!("positive with 1/(2 sigma^2) in {f32_range}"),
+            "in [3.8332338e-20, 6.521909e18]".into(),
         ),
         (
             "lanczos:tau=0",
@@ -1163,14 +1180,17 @@ fn bare_names_give_the_documented_defaults_and_every_range_is_spelled_out() {
         ),
     ] {
         let e = FilterKind::parse(spec).unwrap_err();
-        assert_eq!(
-            e,
-            SpecError::Invalid {
-                key,
-                value,
-                error: crate::Error::OutOfRange { what }
-            },
-            "{spec}"
+        let number = f64::from(value.parse::<f32>().unwrap());
+        assert!(
+            matches!(
+                e,
+                SpecError::Invalid {
+                    key: k,
+                    value: v,
+                    error: crate::Error::OutOfRange { what: w, value: x, range }
+                } if (k, v, w, x) == (key, value, what, number) && !range.contains(x)
+            ),
+            "{spec}: {e:?}"
         );
         assert_eq!(
             e.to_string(),
@@ -1438,9 +1458,16 @@ fn tiny_radii_are_refused_or_sampled_with_finite_density() {
         [1.7e-18, 1.7e-18],
     ] {
         let r = FilterSampler::<Flat>::new(Flat(radius));
-        assert!(
-            matches!(r, Err(Error::OutOfRange { .. })),
-            "{radius:?}: {r:?}"
+        let area =
+            (2.0 * f64::from(radius[0]) / 32.0) as f32 * (2.0 * f64::from(radius[1]) / 32.0) as f32;
+        assert_eq!(
+            r.err(),
+            Some(Error::OutOfRange {
+                what: "filter sampler cell area (2rx/N)·(2ry/N)",
+                value: f64::from(area),
+                range: Interval::at_least(f64::from(f32::MIN_POSITIVE)),
+            }),
+            "{radius:?}"
         );
     }
     for radius in [[91.660_16f32, 1e-37], [1e-35, 0.5], [1.8e-18, 1.8e-18]] {
@@ -1579,15 +1606,21 @@ fn phase_table_error_is_below_the_64_entry_tables() {
 #[test]
 fn phase_table_rejects_what_it_cannot_hold() {
     let cone = Cone;
-    assert!(matches!(
-        PhaseTable::new(&cone),
-        Err(Error::OutOfRange { .. })
-    ));
+    assert_eq!(
+        PhaseTable::new(&cone).err(),
+        Some(Error::NotSeparable {
+            what: "phase table"
+        })
+    );
     let wide = Triangle::new([2.0, 8.0]).unwrap();
-    assert!(matches!(
-        PhaseTable::new(&wide),
-        Err(Error::OutOfRange { .. })
-    ));
+    assert_eq!(
+        PhaseTable::new(&wide).err(),
+        Some(Error::OutOfRange {
+            what: "filter radius ry",
+            value: 8.0,
+            range: Interval::open(0.0, 8.0),
+        })
+    );
     let just = Triangle::new([2.0, 7.999]).unwrap();
     assert_eq!(PhaseTable::new(&just).unwrap().taps(Axis::Y), 16);
 }
@@ -1734,7 +1767,9 @@ fn phase_footprints_wider_than_2_pow_22_are_refused() {
     let t = PhaseTable::new(&Mitchell::default()).unwrap();
     let mut out = std::vec![0.0f32; (1 << 22) + 1];
     let refused = Err(Error::TooMany {
-        what: "footprint side (more than 2^22 pixels)",
+        what: "footprint side",
+        value: (1 << 22) + 1,
+        max: 1 << 22,
     });
     assert_eq!(t.footprint([0.0, 0.0], 1, &mut out), refused);
     assert_eq!(t.footprint([0.0, 0.0], (1 << 22) + 1, &mut out), refused);
@@ -2128,4 +2163,40 @@ fn table_sizes_are_the_documented_ones() {
     assert_eq!(size_of::<Table2d<16>>(), 4 * 16 * 16 + 36);
     assert!(size_of::<FilterTable<16>>() >= size_of::<Table2d<16>>());
     assert!(size_of::<FilterTable<16>>() <= size_of::<Table2d<16>>() + 4);
+}
+
+/// `with_sigma` accepts exactly the `f32` σ whose `α = 1/(2σ²)` is a finite, normal `f32`, and
+/// its error carries σ and those bounds.
+#[test]
+fn sigma_bounds_are_those_of_a_normal_alpha() {
+    use gaussian::{MAX_SIGMA, MIN_SIGMA};
+    let alpha_ok = |s: f32| {
+        let a = 1.0 / (2.0 * f64::from(s) * f64::from(s));
+        s > 0.0 && a >= f64::from(f32::MIN_POSITIVE) && a <= f64::from(f32::MAX)
+    };
+    let step = |s: f32, by: i32| f32::from_bits(s.to_bits().wrapping_add_signed(by));
+    for s in [MIN_SIGMA, MAX_SIGMA] {
+        assert!(
+            alpha_ok(s) && Gaussian::with_sigma([1.5, 1.5], s).is_ok(),
+            "{s:e}"
+        );
+    }
+    let range = Interval::closed(f64::from(MIN_SIGMA), f64::from(MAX_SIGMA));
+    for s in [step(MIN_SIGMA, -1), step(MAX_SIGMA, 1), 1e-30, 1e30, -1.0] {
+        assert!(!alpha_ok(s), "{s:e}");
+        assert_eq!(
+            Gaussian::with_sigma([1.5, 1.5], s),
+            Err(Error::OutOfRange {
+                what: "sigma",
+                value: f64::from(s),
+                range
+            })
+        );
+    }
+    assert_eq!(
+        Gaussian::with_sigma([1.5, 1.5], 1e19)
+            .unwrap_err()
+            .to_string(),
+        "sigma 1e19 is outside [3.8332338e-20, 6.521909e18]"
+    );
 }

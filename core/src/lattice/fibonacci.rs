@@ -55,13 +55,16 @@ impl FibonacciLattice {
     /// The lattice of `F_m` points, unshifted.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] (`what: "m"`) unless `3 ≤ m ≤ 93` (`F_3 = 2` points up to `F_93`).
+    /// [`Error::NotInRange`] (`what: "m"`) unless `3 ≤ m ≤ 93` (`F_3 = 2` points up to `F_93`).
     ///
     /// ```
     /// use nyquist::{lattice::FibonacciLattice, Error};
     /// assert!(FibonacciLattice::new(17).is_ok()); // 1597 points
-    /// assert_eq!(FibonacciLattice::new(2), Err(Error::OutOfRange { what: "m" }));
-    /// assert_eq!(FibonacciLattice::new(94), Err(Error::OutOfRange { what: "m" }));
+    /// assert_eq!(
+    ///     FibonacciLattice::new(2),
+    ///     Err(Error::NotInRange { what: "m", value: 2, min: 3, max: 93 })
+    /// );
+    /// assert_eq!(FibonacciLattice::new(94).unwrap_err().to_string(), "m 94 is outside 3..=93");
     /// ```
     pub fn new(m: u32) -> Result<FibonacciLattice, Error> {
         match (m >= 3).then(|| (fibonacci(m), fibonacci(m - 1))) {
@@ -70,14 +73,20 @@ impl FibonacciLattice {
                 g,
                 shift: [0; 2],
             }),
-            _ => Err(Error::OutOfRange { what: "m" }),
+            _ => Err(Error::NotInRange {
+                what: "m",
+                value: u64::from(m),
+                min: 3,
+                max: u64::from(FIBONACCI_MAX_INDEX),
+            }),
         }
     }
 
     /// The smallest lattice with at least `n` points (`F_m ≥ n`).
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] for `n == 0`; [`Error::OutOfRange`] (`what: "n"`) above `F_93`.
+    /// [`Error::ZeroSize`] for `n == 0`; [`Error::NotInRange`] (`what: "n"`, `1..=F_93`) above
+    /// `F_93`.
     ///
     /// ```
     /// use nyquist::lattice::FibonacciLattice;
@@ -90,7 +99,12 @@ impl FibonacciLattice {
         }
         let m = (3..=FIBONACCI_MAX_INDEX)
             .find(|&m| fibonacci(m).is_some_and(|f| f >= n))
-            .ok_or(Error::OutOfRange { what: "n" })?;
+            .ok_or(Error::NotInRange {
+                what: "n",
+                value: n,
+                min: 1,
+                max: fibonacci(FIBONACCI_MAX_INDEX).unwrap_or(u64::MAX),
+            })?;
         FibonacciLattice::new(m)
     }
 

@@ -75,14 +75,22 @@ impl Korobov {
     /// The lattice of `n` points, multiplier `a`, in `dims` dimensions, unshifted.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] for `n == 0` or `dims == 0`; [`Error::OutOfRange`] (`what: "a"`) unless
-    /// `1 ≤ a < n` and `gcd(a, n) = 1` (so that every coordinate is a permutation of the
-    /// `k/N`), or `n == 1`; [`Error::OutOfRange`] (`what: "dims"`) above 1024.
+    /// [`Error::ZeroSize`] for `n == 0` or `dims == 0`; [`Error::NotInRange`] (`what: "dims"`)
+    /// above 1024. Unless `n == 1`: [`Error::NotInRange`] (`what: "a"`) unless `1 ≤ a < n`,
+    /// and [`Error::Invalid`] (`what: "a"`, `other: n`) unless `gcd(a, n) = 1` (so that every
+    /// coordinate is a permutation of the `k/N`).
     ///
     /// ```
     /// use nyquist::{lattice::Korobov, Error};
     /// assert!(Korobov::new(1024, 189, 4).is_ok());
-    /// assert_eq!(Korobov::new(1024, 190, 4), Err(Error::OutOfRange { what: "a" }));
+    /// assert_eq!(
+    ///     Korobov::new(1024, 190, 4).unwrap_err().to_string(),
+    ///     "a 190 is not coprime to n = 1024"
+    /// );
+    /// assert_eq!(
+    ///     Korobov::new(1024, 1024, 4),
+    ///     Err(Error::NotInRange { what: "a", value: 1024, min: 1, max: 1023 })
+    /// );
     /// ```
     pub fn new(n: u64, a: u64, dims: u32) -> Result<Korobov, Error> {
         if n == 0 {
@@ -99,8 +107,21 @@ impl Korobov {
                 max: u64::from(MAX_DIMS),
             });
         }
-        if n > 1 && (a == 0 || a >= n || gcd(a, n) != 1) {
-            return Err(Error::OutOfRange { what: "a" });
+        if n > 1 && (a == 0 || a >= n) {
+            return Err(Error::NotInRange {
+                what: "a",
+                value: a,
+                min: 1,
+                max: n - 1,
+            });
+        }
+        if n > 1 && gcd(a, n) != 1 {
+            return Err(Error::Invalid {
+                what: "a",
+                value: a,
+                rule: "is not coprime to n =",
+                other: n,
+            });
         }
         Ok(Korobov {
             n,
@@ -117,7 +138,7 @@ impl Korobov {
     /// 4096.
     ///
     /// # Errors
-    /// As [`Korobov::new`]; [`Error::OutOfRange`] (`what: "n"`) above 4096.
+    /// [`Error::NotInRange`] (`what: "n"`, `1..=4096`) above 4096; then as [`Korobov::new`].
     ///
     /// ```
     /// use nyquist::lattice::Korobov;
@@ -128,7 +149,12 @@ impl Korobov {
     /// ```
     pub fn searched(n: u64, dims: u32) -> Result<Korobov, Error> {
         if n > MAX_SEARCHED {
-            return Err(Error::OutOfRange { what: "n" });
+            return Err(Error::NotInRange {
+                what: "n",
+                value: n,
+                min: 1,
+                max: MAX_SEARCHED,
+            });
         }
         Korobov::new(n, 1, dims)?;
         let mut best = (f64::INFINITY, 1);
@@ -157,7 +183,8 @@ impl Korobov {
     /// `searched_2d_matches_the_exhaustive_search`), though nothing guarantees that in general.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] for `n == 0`; [`Error::OutOfRange`] (`what: "n"`) above 2²⁴.
+    /// [`Error::ZeroSize`] for `n == 0`; [`Error::NotInRange`] (`what: "n"`, `1..=2²⁴`) above
+    /// 2²⁴.
     ///
     /// ```
     /// use nyquist::lattice::Korobov;
@@ -167,7 +194,12 @@ impl Korobov {
     /// ```
     pub fn searched_2d(n: u64) -> Result<Korobov, Error> {
         if n > KOROBOV_MAX_SEARCHED_2D {
-            return Err(Error::OutOfRange { what: "n" });
+            return Err(Error::NotInRange {
+                what: "n",
+                value: n,
+                min: 1,
+                max: KOROBOV_MAX_SEARCHED_2D,
+            });
         }
         Korobov::new(n, 1, 2)?;
         // The CANDIDATES_2D multipliers with the smallest estimate, kept sorted by estimate.
@@ -198,16 +230,18 @@ impl Korobov {
     /// of the two multipliers the table prints.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] (`what: "dims"`) unless `3 ≤ dims ≤ 6`; [`Error::OutOfRange`]
-    /// (`what: "n"`) when the table has no row for `n` points in `dims` dimensions
-    /// ([`Korobov::tabled_sizes`] lists those it has).
+    /// [`Error::NotInRange`] (`what: "dims"`) unless `3 ≤ dims ≤ 6`; [`Error::Invalid`]
+    /// (`what: "n"`, `other: dims`) when the table has no row for `n` points in `dims`
+    /// dimensions ([`Korobov::tabled_sizes`] lists those it has).
     ///
     /// [`KOROBOV_TABLE`]: super::KOROBOV_TABLE
     ///
     /// ```
     /// use nyquist::{lattice::Korobov, Error};
     /// assert_eq!(Korobov::tabled(1069, 4).unwrap().multiplier(), 71);
-    /// assert_eq!(Korobov::tabled(1024, 4), Err(Error::OutOfRange { what: "n" }));
+    /// let e = Korobov::tabled(1024, 4).unwrap_err();
+    /// assert!(matches!(e, Error::Invalid { what: "n", value: 1024, other: 4, .. }));
+    /// assert_eq!(e.to_string(), "n 1024 has no tabled multiplier for dims 4");
     /// assert_eq!(Korobov::tabled(1069, 2).unwrap_err().to_string(), "dims 2 is outside 3..=6");
     /// ```
     pub fn tabled(n: u64, dims: u32) -> Result<Korobov, Error> {
@@ -222,7 +256,12 @@ impl Korobov {
         let row = KOROBOV_TABLE
             .iter()
             .find(|r| r.dims == dims && r.n == n)
-            .ok_or(Error::OutOfRange { what: "n" })?;
+            .ok_or(Error::Invalid {
+                what: "n",
+                value: n,
+                rule: "has no tabled multiplier for dims",
+                other: u64::from(dims),
+            })?;
         Korobov::new(n, row.multipliers[0], dims)
     }
 

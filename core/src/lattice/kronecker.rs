@@ -49,7 +49,7 @@ impl Kronecker {
     /// Roberts' `R_d` in `dims` dimensions.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] for `dims == 0`; [`Error::OutOfRange`] above
+    /// [`Error::ZeroSize`] for `dims == 0`; [`Error::NotInRange`] above
     /// [`KRONECKER_MAX_DIMS`].
     ///
     /// ```

@@ -112,7 +112,12 @@ fn korobov_contains_the_fibonacci_lattice() {
     }
     assert_eq!(
         Korobov::searched(4097, 2),
-        Err(crate::Error::OutOfRange { what: "n" })
+        Err(crate::Error::NotInRange {
+            what: "n",
+            value: 4097,
+            min: 1,
+            max: 4096
+        })
     );
 }
 
@@ -241,7 +246,12 @@ fn stroud_table_rows_minimise_h() {
     assert!((h(2129, 41, 6) - 1.185_752).abs() < 5e-7);
     assert_eq!(
         Korobov::tabled(101, 4),
-        Err(crate::Error::OutOfRange { what: "n" })
+        Err(crate::Error::Invalid {
+            what: "n",
+            value: 101,
+            rule: "has no tabled multiplier for dims",
+            other: 4
+        })
     );
     assert_eq!(
         Korobov::tabled(101, 7),
@@ -306,7 +316,12 @@ fn searched_2d_matches_the_exhaustive_search() {
     );
     assert_eq!(
         Korobov::searched_2d(KOROBOV_MAX_SEARCHED_2D + 1),
-        Err(crate::Error::OutOfRange { what: "n" })
+        Err(crate::Error::NotInRange {
+            what: "n",
+            value: KOROBOV_MAX_SEARCHED_2D + 1,
+            min: 1,
+            max: KOROBOV_MAX_SEARCHED_2D
+        })
     );
     // 2^16 points: the multiplier's P₂ is below a fifth of the median of 63 spread-out odd ones
     // (measured: 7.1e-8 against 4.8e-7).
@@ -318,4 +333,51 @@ fn searched_2d_matches_the_exhaustive_search() {
         .collect();
     others.sort_by(f64::total_cmp);
     assert!(p < others[31] / 5.0, "a {a}: {p} vs median {}", others[31]);
+}
+
+/// The constructors' errors carry the value given and the limit or the number the rule names.
+#[test]
+fn lattice_errors_carry_the_value_and_the_limit() {
+    use crate::Error;
+    use std::string::ToString;
+    assert_eq!(
+        Korobov::new(100, 0, 2),
+        Err(Error::NotInRange {
+            what: "a",
+            value: 0,
+            min: 1,
+            max: 99
+        })
+    );
+    assert_eq!(
+        Korobov::new(100, 35, 2),
+        Err(Error::Invalid {
+            what: "a",
+            value: 35,
+            rule: "is not coprime to n =",
+            other: 100
+        })
+    );
+    assert!(
+        Korobov::new(1, 7, 2).is_ok(),
+        "one point takes any multiplier"
+    );
+    let f93 = crate::lattice::fibonacci(93).unwrap();
+    assert_eq!(
+        FibonacciLattice::at_least(f93 + 1),
+        Err(Error::NotInRange {
+            what: "n",
+            value: f93 + 1,
+            min: 1,
+            max: f93
+        })
+    );
+    assert_eq!(
+        FibonacciLattice::at_least(f93).unwrap().point_count(),
+        Some(f93)
+    );
+    assert_eq!(
+        FibonacciLattice::new(1).unwrap_err().to_string(),
+        "m 1 is outside 3..=93"
+    );
 }

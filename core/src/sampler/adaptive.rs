@@ -2,6 +2,7 @@
 
 use super::Sampler;
 use crate::Error;
+use crate::error::Interval;
 
 /// Channels of reported radiance that the contrast test looks at.
 ///
@@ -54,14 +55,17 @@ impl<S: Sampler> AdaptiveSampler<S> {
     /// threshold serves all channels here).
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] if `min_spp == 0`; [`Error::OutOfRange`] if `min_spp` exceeds the
-    /// wrapped sampler's spp or `threshold < 0`; [`Error::NonFinite`] for a NaN or infinite
-    /// threshold.
+    /// [`Error::ZeroSize`] if `min_spp == 0`; [`Error::NotInRange`] if `min_spp` exceeds the
+    /// wrapped sampler's spp; [`Error::NonFinite`] for a NaN or infinite threshold;
+    /// [`Error::OutOfRange`] if `threshold < 0`.
     ///
     /// ```
     /// use nyquist::sampler::{AdaptiveSampler, RandomSampler};
     /// let inner = RandomSampler::new(8, 0).unwrap();
-    /// assert!(AdaptiveSampler::new(inner.clone(), 9, 0.1).is_err());
+    /// let e = AdaptiveSampler::new(inner.clone(), 9, 0.1).unwrap_err();
+    /// assert_eq!(e.to_string(), "min_spp 9 is outside 1..=8");
+    /// let e = AdaptiveSampler::new(inner.clone(), 2, -0.5).unwrap_err();
+    /// assert_eq!(e.to_string(), "threshold -0.5 is outside [0, ∞)");
     /// assert!(AdaptiveSampler::new(inner, 2, f32::NAN).is_err());
     /// ```
     pub fn new(inner: S, min_spp: u32, threshold: f32) -> Result<Self, Error> {
@@ -69,13 +73,22 @@ impl<S: Sampler> AdaptiveSampler<S> {
             return Err(Error::ZeroSize { what: "min_spp" });
         }
         if min_spp > inner.samples_per_pixel() {
-            return Err(Error::OutOfRange { what: "min_spp" });
+            return Err(Error::NotInRange {
+                what: "min_spp",
+                value: u64::from(min_spp),
+                min: 1,
+                max: u64::from(inner.samples_per_pixel()),
+            });
         }
         if !threshold.is_finite() {
             return Err(Error::NonFinite { what: "threshold" });
         }
         if threshold < 0.0 {
-            return Err(Error::OutOfRange { what: "threshold" });
+            return Err(Error::OutOfRange {
+                what: "threshold",
+                value: f64::from(threshold),
+                range: Interval::at_least(0.0),
+            });
         }
         Ok(Self {
             inner,

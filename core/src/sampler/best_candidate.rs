@@ -114,7 +114,11 @@ impl BestCandidateSampler {
             return Err(Error::ZeroSize { what: "spp" });
         }
         if spp > TABLE_SIZE {
-            return Err(Error::TooMany { what: "spp" });
+            return Err(Error::TooMany {
+                what: "spp",
+                value: u64::from(spp),
+                max: u64::from(TABLE_SIZE),
+            });
         }
         Ok(Self {
             spp,

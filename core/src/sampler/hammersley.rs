@@ -56,14 +56,19 @@ impl HammersleySampler {
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if the
-    /// point count `N = width · H · spp` does not fit a `u64`.
+    /// point count `N = width · H · spp` does not fit a `u64` (`max` is the largest width that
+    /// fits with this `H · spp`).
     ///
     /// ```
     /// use nyquist::{sampler::HammersleySampler, scramble::Scramble, Error};
     /// assert!(HammersleySampler::new([4, 0], 1, Scramble::None, 0).is_err());
     /// assert_eq!(
     ///     HammersleySampler::new([u32::MAX, u32::MAX], u32::MAX, Scramble::None, 0).err(),
-    ///     Some(Error::TooMany { what: "width × height × spp" })
+    ///     Some(Error::TooMany {
+    ///         what: "width (at this height and spp)",
+    ///         value: u32::MAX.into(),
+    ///         max: 1
+    ///     })
     /// );
     /// ```
     pub fn new(
@@ -78,7 +83,9 @@ impl HammersleySampler {
         column
             .checked_mul(u64::from(resolution[0]))
             .ok_or(Error::TooMany {
-                what: "width × height × spp",
+                what: "width (at this height and spp)",
+                value: u64::from(resolution[0]),
+                max: u64::MAX / column,
             })?;
         Ok(Self {
             spp,

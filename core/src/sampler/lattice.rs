@@ -46,8 +46,8 @@ impl LatticeSampler {
     /// The Fibonacci lattice of the smallest Fibonacci number `≥ max(spp, 2)` of points.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] for `spp == 0`; [`Error::TooMany`] when the rounded count passes
-    /// `u32::MAX`.
+    /// [`Error::ZeroSize`] for `spp == 0`; [`Error::TooMany`] (`what: "Fibonacci point count"`)
+    /// when the rounded count passes `u32::MAX` (for `spp` above `F_47 = 2971215073`).
     pub fn fibonacci(spp: u32, seed: u64) -> Result<LatticeSampler, Error> {
         if spp == 0 {
             return Err(Error::ZeroSize { what: "spp" });
@@ -56,7 +56,11 @@ impl LatticeSampler {
         let n = set
             .point_count_u64()
             .try_into()
-            .map_err(|_| Error::TooMany { what: "spp" })?;
+            .map_err(|_| Error::TooMany {
+                what: "Fibonacci point count",
+                value: set.point_count_u64(),
+                max: u64::from(u32::MAX),
+            })?;
         Ok(LatticeSampler::with(Set::Fibonacci(set), n, seed))
     }
 
@@ -81,7 +85,17 @@ impl LatticeSampler {
             return Err(Error::ZeroSize { what: "spp" });
         }
         let set = Korobov::searched_2d(u64::from(spp)).map_err(|e| match e {
-            Error::OutOfRange { .. } => Error::OutOfRange { what: "spp" },
+            Error::NotInRange {
+                what: "n",
+                value,
+                min,
+                max,
+            } => Error::NotInRange {
+                what: "spp",
+                value,
+                min,
+                max,
+            },
             e => e,
         })?;
         Ok(LatticeSampler::with(Set::Korobov(set), spp, seed))
@@ -307,7 +321,20 @@ mod tests {
         }
         assert_eq!(
             LatticeSampler::korobov(u32::MAX, 0).unwrap_err(),
-            Error::OutOfRange { what: "spp" }
+            Error::NotInRange {
+                what: "spp",
+                value: u64::from(u32::MAX),
+                min: 1,
+                max: 1 << 24
+            }
+        );
+        assert_eq!(
+            LatticeSampler::fibonacci(2_971_215_074, 0).unwrap_err(),
+            Error::TooMany {
+                what: "Fibonacci point count",
+                value: 4_807_526_976,
+                max: u64::from(u32::MAX)
+            }
         );
     }
 

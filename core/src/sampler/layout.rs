@@ -89,7 +89,8 @@ impl<const N: usize> SampleLayout<N> {
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `n == 0`; [`Error::TooMany`] if the layout already holds `N`
-    /// arrays or its length would overflow `usize`.
+    /// arrays (`what: "array requests"`, `max: N`) or its length would overflow `usize`
+    /// (`what: "array length"`, the room left as `max`).
     ///
     /// ```
     /// use nyquist::sampler::{RandomSampler, SampleLayout};
@@ -129,11 +130,15 @@ impl<const N: usize> SampleLayout<N> {
             offset: self.len,
         };
         let len = self.len.checked_add(request.len()).ok_or(Error::TooMany {
-            what: "sample length",
+            what: "array length",
+            value: request.len() as u64,
+            max: (usize::MAX - self.len) as u64,
         })?;
         let handle = self.requests.len();
         self.requests.push(request).map_err(|_| Error::TooMany {
             what: "array requests",
+            value: N as u64 + 1,
+            max: N as u64,
         })?;
         self.len = len;
         Ok(handle)
@@ -588,7 +593,9 @@ mod tests {
         assert_eq!(
             l.add_1d(&s, 1),
             Err(Error::TooMany {
-                what: "array requests"
+                what: "array requests",
+                value: 3,
+                max: 2
             })
         );
         assert_eq!(l.len(), 25);

@@ -132,7 +132,7 @@ const ADAPTIVE_THRESHOLD: f32 = 0.1;
 /// use nyquist::sampler::{NamedSampler, NamedSamplerError};
 /// assert_eq!(NamedSampler::new("nope", [1, 1], 4, 0).unwrap_err(), NamedSamplerError::UnknownName);
 /// ```
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum NamedSamplerError {
     /// The name is not one of [`NAMES`].
@@ -197,8 +197,11 @@ impl From<crate::Error> for NamedSamplerError {
     ///
     /// ```
     /// use nyquist::{Error, sampler::NamedSamplerError};
-    /// let e = NamedSamplerError::from(Error::TooMany { what: "spp" });
-    /// assert_eq!(e, NamedSamplerError::Sampler(Error::TooMany { what: "spp" }));
+    /// let e = NamedSamplerError::from(Error::TooMany { what: "spp", value: 5000, max: 4096 });
+    /// assert_eq!(
+    ///     e,
+    ///     NamedSamplerError::Sampler(Error::TooMany { what: "spp", value: 5000, max: 4096 })
+    /// );
     /// ```
     fn from(e: crate::Error) -> Self {
         NamedSamplerError::Sampler(e)
@@ -549,25 +552,13 @@ mod tests {
                 (
                     "halton",
                     std::boxed::Box::new(
-                        HaltonSampler::new(
-                            size,
-                            16,
-                            Scramble::PermuteDigits,
-                            seed,
-                        )
-                        .unwrap(),
+                        HaltonSampler::new(size, 16, Scramble::PermuteDigits, seed).unwrap(),
                     ),
                 ),
                 (
                     "hammersley",
                     std::boxed::Box::new(
-                        HammersleySampler::new(
-                            size,
-                            16,
-                            Scramble::PermuteDigits,
-                            seed,
-                        )
-                        .unwrap(),
+                        HammersleySampler::new(size, 16, Scramble::PermuteDigits, seed).unwrap(),
                     ),
                 ),
                 (
@@ -577,13 +568,7 @@ mod tests {
                 (
                     "sobol",
                     std::boxed::Box::new(
-                        SobolSampler::new(
-                            size,
-                            16,
-                            Scramble::PermuteDigits,
-                            seed,
-                        )
-                        .unwrap(),
+                        SobolSampler::new(size, 16, Scramble::PermuteDigits, seed).unwrap(),
                     ),
                 ),
                 (
@@ -713,15 +698,21 @@ mod tests {
         let none = Scramble::None;
         assert_eq!(
             values("halton-plain", 5),
-            direct(std::boxed::Box::new(HaltonSampler::new([8, 8], 16, none, 0).unwrap()))
+            direct(std::boxed::Box::new(
+                HaltonSampler::new([8, 8], 16, none, 0).unwrap()
+            ))
         );
         assert_eq!(
             values("hammersley-plain", 5),
-            direct(std::boxed::Box::new(HammersleySampler::new([8, 8], 16, none, 0).unwrap()))
+            direct(std::boxed::Box::new(
+                HammersleySampler::new([8, 8], 16, none, 0).unwrap()
+            ))
         );
         assert_eq!(
             values("sobol-plain", 5),
-            direct(std::boxed::Box::new(SobolSampler::new([8, 8], 16, none, 0).unwrap()))
+            direct(std::boxed::Box::new(
+                SobolSampler::new([8, 8], 16, none, 0).unwrap()
+            ))
         );
         for name in ["halton", "hammersley", "sobol"] {
             // Seed 0 is a permutation like any other: not the plain set, not seed 5's.

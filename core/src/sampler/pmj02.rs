@@ -181,7 +181,11 @@ impl Pmj02Sampler {
             return Err(Error::ZeroSize { what: "spp" });
         }
         if spp as usize > PMJ02_MAX_POINTS {
-            return Err(Error::TooMany { what: "spp" });
+            return Err(Error::TooMany {
+                what: "spp",
+                value: u64::from(spp),
+                max: PMJ02_MAX_POINTS as u64,
+            });
         }
         let pixel_key = pixel_hash([0; 2], seed, PIXEL_TAG);
         Ok(Self {
@@ -479,7 +483,11 @@ mod tests {
         );
         assert_eq!(
             Pmj02Sampler::new(65_537, 0).unwrap_err(),
-            Error::TooMany { what: "spp" }
+            Error::TooMany {
+                what: "spp",
+                value: 65_537,
+                max: 65_536
+            }
         );
         assert!(Pmj02Sampler::new(65_536, 0).is_ok());
     }

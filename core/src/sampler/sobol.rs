@@ -127,12 +127,22 @@ impl SobolSampler {
     ) -> Result<Self, Error> {
         let seed = if scramble == Scramble::None { 0 } else { seed };
         super::check_image(resolution, spp)?;
+        let requested = spp;
         let (spp, _) = Self::rounded_spp(spp);
+        if spp == 0 {
+            return Err(Error::TooMany {
+                what: "spp",
+                value: u64::from(requested),
+                max: 1 << 31,
+            });
+        }
         let side = resolution[0].max(resolution[1]);
         let m = 32 - (side - 1).leading_zeros();
-        if spp == 0 || 2 * m + spp.trailing_zeros() > 32 {
+        if 2 * m + spp.trailing_zeros() > 32 {
             return Err(Error::TooMany {
-                what: "spp × pixels of the power-of-two square",
+                what: "log2(spp × pixels of the power-of-two square)",
+                value: u64::from(2 * m + spp.trailing_zeros()),
+                max: 32,
             });
         }
         let shift = if scramble != Scramble::PermuteDigits {
@@ -585,7 +595,11 @@ mod tests {
                     let (a, b) = (plain.get_1d(), permuted.get_1d());
                     let v = sobol_u32(idx, d);
                     let want = if d < 2 { v << 2 } else { v };
-                    assert_eq!(a, fraction_to_f32(want), "pixel {pixel:?} sample {i} dim {d}");
+                    assert_eq!(
+                        a,
+                        fraction_to_f32(want),
+                        "pixel {pixel:?} sample {i} dim {d}"
+                    );
                     changed += usize::from(a != b && d >= 2);
                 }
             }

@@ -98,9 +98,11 @@ impl StratifiedSampler {
         if x_samples == 0 || y_samples == 0 {
             return Err(Error::ZeroSize { what: "samples" });
         }
-        let spp = x_samples
-            .checked_mul(y_samples)
-            .ok_or(Error::TooMany { what: "spp" })?;
+        let spp = x_samples.checked_mul(y_samples).ok_or(Error::TooMany {
+            what: "spp",
+            value: u64::from(x_samples) * u64::from(y_samples),
+            max: u64::from(u32::MAX),
+        })?;
         Ok(Self {
             xs: x_samples,
             ys: y_samples,

@@ -134,9 +134,14 @@ impl ZeroTwoSampler {
         if spp == 0 {
             return Err(Error::ZeroSize { what: "spp" });
         }
+        let requested = spp;
         let (spp, _) = round_up(spp);
         if spp == 0 {
-            return Err(Error::TooMany { what: "spp" });
+            return Err(Error::TooMany {
+                what: "spp",
+                value: u64::from(requested),
+                max: 1 << 31,
+            });
         }
         Ok(Self {
             spp,

@@ -140,13 +140,17 @@ impl ZSobolSampler {
     /// A ZSobol sampler for an image of `resolution` pixels, `spp` rounded up to a power of two.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if the
-    /// Morton index would pass 32 bits (`2r + log₂ spp > 32`).
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
+    /// `spp > 2³¹` (`what: "spp"`) or the Morton index would pass 32 bits (`2r + log₂ spp > 32`,
+    /// `value` being `2r + log₂ spp`).
     ///
     /// ```
     /// use nyquist::{sampler::ZSobolSampler, scramble::Scramble};
     /// assert!(ZSobolSampler::new([4096, 2160], 256, Scramble::FastOwen, 0).is_ok());
-    /// assert!(ZSobolSampler::new([4096, 2160], 512, Scramble::FastOwen, 0).is_err());
+    /// assert_eq!(
+    ///     ZSobolSampler::new([4096, 2160], 512, Scramble::FastOwen, 0).unwrap_err().to_string(),
+    ///     "log2(spp × pixels of the power-of-two square) 33 is above 32"
+    /// );
     /// ```
     pub fn new(
         resolution: [u32; 2],
@@ -155,16 +159,26 @@ impl ZSobolSampler {
         seed: u64,
     ) -> Result<Self, Error> {
         super::check_image(resolution, spp)?;
+        let requested = spp;
         let (spp, _) = Self::rounded_spp(spp);
+        if spp == 0 {
+            return Err(Error::TooMany {
+                what: "spp",
+                value: u64::from(requested),
+                max: 1 << 31,
+            });
+        }
         let side = resolution[0].max(resolution[1]);
         let log2_res = 32 - (side - 1).leading_zeros();
         let log2_spp = spp.trailing_zeros();
-        if spp == 0 || 2 * log2_res + log2_spp > 32 {
+        let bits = 2 * log2_res + log2_spp;
+        if bits > 32 {
             return Err(Error::TooMany {
-                what: "spp × pixels of the power-of-two square",
+                what: "log2(spp × pixels of the power-of-two square)",
+                value: u64::from(bits),
+                max: 32,
             });
         }
-        let bits = 2 * log2_res + log2_spp;
         let mut s = Self {
             spp,
             log2_spp,

@@ -84,7 +84,7 @@ impl Halton {
     /// A Halton sequence with `dims` dimensions.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] if `dims == 0`; [`Error::OutOfRange`] (`what: "dims"`) if `dims > 1024`.
+    /// [`Error::ZeroSize`] if `dims == 0`; [`Error::NotInRange`] (`what: "dims"`) if `dims > 1024`.
     ///
     /// ```
     /// use nyquist::{sequence::Halton, Error};

@@ -77,7 +77,7 @@ impl Hammersley {
     /// A Hammersley set of `n` points in `dims` dimensions.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] if `n == 0` (`what: "n"`) or `dims == 0`; [`Error::OutOfRange`]
+    /// [`Error::ZeroSize`] if `n == 0` (`what: "n"`) or `dims == 0`; [`Error::NotInRange`]
     /// (`what: "dims"`) if `dims > 1025`.
     ///
     /// ```

@@ -116,7 +116,10 @@ pub trait Sequence {
 /// ```
 /// use nyquist::{sequence::check_fill, Error};
 /// assert_eq!(check_fill(2, None, 0, 2, 8), Ok(4));
-/// assert_eq!(check_fill(2, Some(4), 2, 2, 8), Err(Error::TooMany { what: "index range" }));
+/// assert_eq!(
+///     check_fill(2, Some(4), 2, 2, 8),
+///     Err(Error::TooMany { what: "index range", value: 6, max: 4 })
+/// );
 /// ```
 pub fn check_fill(
     set_dims: u32,
@@ -140,15 +143,20 @@ pub fn check_fill(
             actual: len,
         });
     }
-    let n = u64::try_from(len / dims as usize).map_err(|_| Error::TooMany { what: "points" })?;
+    // usize has at most 64 bits on every target.
+    let n = (len / dims as usize) as u64;
     let end = first.checked_add(n).ok_or(Error::TooMany {
-        what: "index range",
+        what: "first",
+        value: first,
+        max: u64::MAX - n,
     })?;
     if let Some(count) = point_count
         && end > count
     {
         return Err(Error::TooMany {
             what: "index range",
+            value: end,
+            max: count,
         });
     }
     Ok(n)

@@ -116,7 +116,11 @@ pub const fn pmj02_build(seed: u64, out: &mut [[u32; 2]]) -> Result<(), Error> {
         return Err(Error::ZeroSize { what: "points" });
     }
     if out.len() > PMJ02_MAX_POINTS {
-        return Err(Error::TooMany { what: "points" });
+        return Err(Error::TooMany {
+            what: "points",
+            value: out.len() as u64,
+            max: PMJ02_MAX_POINTS as u64,
+        });
     }
     construct(seed, out);
     Ok(())
@@ -508,7 +512,11 @@ mod tests {
         let mut big = vec![[7u32; 2]; PMJ02_MAX_POINTS + 1];
         assert_eq!(
             pmj02_build(0, &mut big),
-            Err(Error::TooMany { what: "points" })
+            Err(Error::TooMany {
+                what: "points",
+                value: PMJ02_MAX_POINTS as u64 + 1,
+                max: PMJ02_MAX_POINTS as u64,
+            })
         );
         assert!(big.iter().all(|&p| p == [7, 7]), "left untouched");
         assert_eq!(pmj02_build(0, &mut big[..PMJ02_MAX_POINTS]), Ok(()));

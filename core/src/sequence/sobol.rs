@@ -545,7 +545,9 @@ mod tests {
             assert_eq!(
                 s.fill((1 << 32) - 3, 2, &mut buf),
                 Err(Error::TooMany {
-                    what: "index range"
+                    what: "index range",
+                    value: (1 << 32) + 1,
+                    max: 1 << 32
                 })
             );
             assert_eq!(

@@ -51,7 +51,11 @@ pub fn stratified_1d<R: Rng + ?Sized>(
     if out.is_empty() {
         return Err(Error::ZeroSize { what: "samples" });
     }
-    let n = u32::try_from(out.len()).map_err(|_| Error::TooMany { what: "samples" })?;
+    let n = u32::try_from(out.len()).map_err(|_| Error::TooMany {
+        what: "samples",
+        value: out.len() as u64,
+        max: u64::from(u32::MAX),
+    })?;
     let strata = Strata::new(n);
     match jitter {
         Jitter::Jittered => {
@@ -83,9 +87,9 @@ const HASH_BLOCK: usize = 16;
 /// [`stratified_1d`]), 24 beyond `2²²` strata. Allocates: no.
 ///
 /// # Errors
-/// [`Error::ZeroSize`] if `nx` or `ny` is 0; [`Error::TooMany`] if `2 · nx · ny` overflows
-/// `usize`; [`Error::BufferTooShort`] if `out` is shorter than `2 · nx · ny`;
-/// [`Error::BufferLength`] if it is longer.
+/// [`Error::ZeroSize`] if `nx` or `ny` is 0; [`Error::TooMany`] (`what: "nx * ny"`, the
+/// limit `usize::MAX / 2`) if `2 · nx · ny` overflows `usize`; [`Error::BufferTooShort`] if
+/// `out` is shorter than `2 · nx · ny`; [`Error::BufferLength`] if it is longer.
 ///
 /// ```
 /// use nyquist::{Error, rng::default_rng, stratify::{Jitter, stratified_2d}};
@@ -114,7 +118,11 @@ pub fn stratified_2d<R: Rng + ?Sized>(
     let needed = (nx as usize)
         .checked_mul(ny as usize)
         .and_then(|c| c.checked_mul(2))
-        .ok_or(Error::TooMany { what: "nx * ny" })?;
+        .ok_or(Error::TooMany {
+            what: "nx * ny",
+            value: u64::from(nx) * u64::from(ny),
+            max: (usize::MAX / 2) as u64,
+        })?;
     if out.len() < needed {
         return Err(Error::BufferTooShort {
             needed,
@@ -263,7 +271,14 @@ mod tests {
             &mut default_rng(0),
         );
         if usize::BITS <= 64 {
-            assert_eq!(r, Err(Error::TooMany { what: "nx * ny" }));
+            assert_eq!(
+                r,
+                Err(Error::TooMany {
+                    what: "nx * ny",
+                    value: u64::from(u32::MAX) * u64::from(u32::MAX),
+                    max: (usize::MAX / 2) as u64,
+                })
+            );
         }
         assert_eq!(
             stratified_1d(&mut [], Jitter::Centered, &mut default_rng(0)),

@@ -21,7 +21,11 @@ fn points_in(len: usize, dims: u32) -> Result<u32, Error> {
             actual: len,
         });
     }
-    u32::try_from(len / d).map_err(|_| Error::TooMany { what: "points" })
+    u32::try_from(len / d).map_err(|_| Error::TooMany {
+        what: "points",
+        value: (len / d) as u64,
+        max: u64::from(u32::MAX),
+    })
 }
 
 /// Fills `out` with `n = out.len() / dims` Latin-hypercube points, point-major

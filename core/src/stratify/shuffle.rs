@@ -14,10 +14,10 @@ use crate::{
 /// Allocates: no.
 ///
 /// # Errors
-/// [`Error::ZeroSize`] if `dims == 0`; [`Error::TooMany`] if `count · dims` overflows;
-/// [`Error::BufferLength`] if `buf.len()` is not a multiple of `dims`;
-/// [`Error::BufferTooShort`] if it is shorter than `count · dims`; [`Error::OutOfRange`]
-/// (`count`) if it is longer.
+/// [`Error::ZeroSize`] if `dims == 0`; [`Error::TooMany`] (`what: "count"`, the limit
+/// `usize::MAX / dims`) if `count · dims` overflows; [`Error::BufferLength`] if `buf.len()` is
+/// not a multiple of `dims`; [`Error::BufferTooShort`] if it is shorter than `count · dims`;
+/// [`Error::NotInRange`] (`what: "count"`, `min = max = buf.len() / dims`) if it is longer.
 ///
 /// ```
 /// use nyquist::{rng::default_rng, stratify::shuffle};
@@ -38,7 +38,9 @@ pub fn shuffle<T, R: Rng + ?Sized>(
         return Err(Error::ZeroSize { what: "dims" });
     }
     let needed = count.checked_mul(dims).ok_or(Error::TooMany {
-        what: "count * dims",
+        what: "count",
+        value: count as u64,
+        max: (usize::MAX / dims) as u64,
     })?;
     let len = buf.len();
     if !len.is_multiple_of(dims) {
@@ -54,7 +56,12 @@ pub fn shuffle<T, R: Rng + ?Sized>(
         });
     }
     if len > needed {
-        return Err(Error::OutOfRange { what: "count" });
+        return Err(Error::NotInRange {
+            what: "count",
+            value: count as u64,
+            min: (len / dims) as u64,
+            max: (len / dims) as u64,
+        });
     }
     // Draws straight from `rng` (a counter stream measured no faster here, unlike in
     // stratification and LHS).
@@ -141,7 +148,12 @@ mod tests {
             } else if len < count * dims {
                 Err(Error::BufferTooShort { needed: count * dims, actual: len })
             } else if len > count * dims {
-                Err(Error::OutOfRange { what: "count" })
+                Err(Error::NotInRange {
+                    what: "count",
+                    value: count as u64,
+                    min: (len / dims) as u64,
+                    max: (len / dims) as u64,
+                })
             } else {
                 Ok(())
             };
@@ -155,7 +167,9 @@ mod tests {
         assert_eq!(
             shuffle(&mut buf, usize::MAX, 2, &mut default_rng(0)),
             Err(Error::TooMany {
-                what: "count * dims"
+                what: "count",
+                value: usize::MAX as u64,
+                max: (usize::MAX / 2) as u64,
             })
         );
     }

@@ -84,7 +84,15 @@ pub fn bluenoise(data: &[u8]) {
             let f = if b.bool() { f.rotated(b.u64()) } else { f };
             assert!(in_unit(f.sample(index, dim)) && in_unit_f64(f.sample_f64(index, dim)));
         }
-        Err(e) => assert!(!(3..=93).contains(&m) && e == Error::OutOfRange { what: "m" }),
+        Err(e) => assert!(
+            !(3..=93).contains(&m)
+                && e == Error::NotInRange {
+                    what: "m",
+                    value: u64::from(m),
+                    min: 3,
+                    max: 93
+                }
+        ),
     }
     let (n, mult, dims) = (b.u64(), b.u64(), b.below(1100));
     if let Ok(k) = Korobov::new(n, mult, dims) {

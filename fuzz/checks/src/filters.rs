@@ -7,7 +7,7 @@ use nyquist::filter::{
     MAX_RADIUS, MAX_TAPS, Mitchell, PhaseTable, SeparableTable, Table2d, Triangle, sinc,
 };
 
-use crate::Bytes;
+use crate::{Bytes, error_numbers_hold};
 
 /// Filters: `FilterKind::parse` never panics on any string and what it accepts prints back to
 /// itself; constructors return a filter or a typed error for any `f32`s (NaN, ∞ included); every
@@ -155,7 +155,8 @@ fn built<F: Filter + core::fmt::Debug>(name: &str, r: Result<F, Error>, ctx: &Ct
     match r {
         Ok(f) => check_filter(name, &f, ctx),
         Err(e) => assert!(
-            matches!(e, Error::OutOfRange { .. } | Error::NonFinite { .. }),
+            matches!(e, Error::OutOfRange { .. } | Error::NonFinite { .. })
+                && error_numbers_hold(&e),
             "{name}: unexpected error {e:?}"
         ),
     }
@@ -366,9 +367,10 @@ fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
 }
 
 /// `PhaseTable`: built exactly for valid separable filters with radii below 8 (else
-/// `OutOfRange`); lookups finite and 0 past the radius; rows clamp their phase and agree with
-/// `tap`; `footprint` is, bit for bit, the masked product of the two rows at the phase of
-/// `d0 + r` (its definition, replayed through the public `row`).
+/// `NotSeparable` or `OutOfRange`, whose value lies outside its range); lookups finite and 0
+/// past the radius; rows clamp their phase and agree with `tap`; `footprint` is, bit for bit,
+/// the masked product of the two rows at the phase of `d0 + r` (its definition, replayed through
+/// the public `row`).
 fn check_phase_table(name: &str, f: &dyn Filter, ctx: &Ctx) {
     let r = f.radius();
     let fits = r
@@ -387,7 +389,20 @@ fn check_phase_table(name: &str, f: &dyn Filter, ctx: &Ctx) {
                 !(fits && f.is_separable()),
                 "{name}: PhaseTable rejected radius {r:?}: {e:?}"
             );
-            assert!(matches!(e, Error::OutOfRange { .. }), "{name}: {e:?}");
+            // A bad radius is reported before separability.
+            let valid = r.iter().all(|&v| v.is_finite() && v > 0.0);
+            if valid && !f.is_separable() {
+                assert_eq!(
+                    e,
+                    Error::NotSeparable {
+                        what: "phase table"
+                    },
+                    "{name}"
+                );
+            } else {
+                assert!(matches!(e, Error::OutOfRange { .. }), "{name}: {e:?}");
+                assert!(error_numbers_hold(&e), "{name}: {e:?}");
+            }
             return;
         }
     };

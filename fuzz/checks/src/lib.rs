@@ -61,3 +61,17 @@ pub fn in_unit(x: f32) -> bool {
 pub fn in_unit_f64(x: f64) -> bool {
     (0.0..1.0).contains(&x)
 }
+
+/// Whether a core error's numbers state a real violation: the value it carries lies outside
+/// the range it names, or above the maximum. Variants without such numbers pass.
+pub fn error_numbers_hold(e: &nyquist::Error) -> bool {
+    use nyquist::Error;
+    match *e {
+        Error::OutOfRange { value, range, .. } => !range.contains(value),
+        Error::NotInRange {
+            value, min, max, ..
+        } => min <= max && !(min..=max).contains(&value),
+        Error::TooMany { value, max, .. } => value > max,
+        _ => true,
+    }
+}

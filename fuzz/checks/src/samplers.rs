@@ -10,7 +10,7 @@ use nyquist::sampler::{
 };
 use nyquist::scramble::Scramble;
 
-use crate::{Bytes, in_unit};
+use crate::{Bytes, error_numbers_hold, in_unit};
 
 struct Args {
     pixel: [u32; 2],
@@ -115,15 +115,20 @@ pub fn samplers(data: &[u8]) {
                     "HammersleySampler accepted resolution {resolution:?}"
                 );
             }
-            // N = width · H · spp (H the height padded to a power of two) must fit a u64.
+            // N = width · H · spp (H the height padded to a power of two) must fit a u64; the
+            // error gives the largest width that fits with H · spp.
             let h = u128::from(resolution[1].max(1)).next_power_of_two();
             if !resolution.contains(&0)
+                && spp != 0
                 && u128::from(resolution[0]) * h * u128::from(spp) >= 1 << 64
             {
+                let max = (u128::from(u64::MAX) / (h * u128::from(spp))) as u64;
                 assert_eq!(
                     r.as_ref().err(),
                     Some(&Error::TooMany {
-                        what: "width × height × spp"
+                        what: "width (at this height and spp)",
+                        value: u64::from(resolution[0]),
+                        max,
                     }),
                     "HammersleySampler accepted {resolution:?} × {spp}"
                 );
@@ -249,6 +254,7 @@ fn named(name: &str, size: [u32; 2], spp: u32, seed: u64, a: &Args) {
                 ),
                 "NamedSampler {name:?}: unexpected error {e:?}"
             );
+            assert!(error_numbers_hold(&e), "NamedSampler {name:?}: {e:?}");
         }
         Err(e) => panic!("NamedSampler {name:?}: an error this check does not know: {e:?}"),
     }
@@ -284,6 +290,7 @@ fn run<S: Sampler + Clone>(name: &str, spp: u32, r: Result<S, Error>, a: &Args) 
                 ),
                 "{name}: unexpected error {e:?}"
             );
+            assert!(error_numbers_hold(&e), "{name}: {e:?}");
         }
     }
 }

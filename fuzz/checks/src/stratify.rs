@@ -214,7 +214,7 @@ pub fn stratify(data: &[u8]) {
                 | (Err(Error::TooMany { .. }), "too many")
                 | (Err(Error::BufferLength { .. }), "length")
                 | (Err(Error::BufferTooShort { .. }), "short")
-                | (Err(Error::OutOfRange { .. }), "long") => {
+                | (Err(Error::NotInRange { .. }), "long") => {
                     let same = buf.iter().enumerate().all(|(i, &v)| v as usize == i);
                     assert!(same, "shuffle changed the buffer and failed");
                 }

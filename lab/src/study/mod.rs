@@ -167,7 +167,7 @@ pub fn default_samplers() -> Vec<String> {
 }
 
 /// A sampler the study could not build: its name, the count, and why.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct StudyError {
     /// The sampler's name as the study lists it.
     pub sampler: String,

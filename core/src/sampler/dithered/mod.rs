@@ -73,7 +73,8 @@ impl<'a> MaskView<'a> {
     /// # Errors
     /// [`Error::ZeroSize`] for a zero width, height or channel count;
     /// [`Error::BufferLength`] unless `ranks.len() == width · height · channels`;
-    /// [`Error::OutOfRange`] (`what: "ranks"`) for a rank `≥ width · height`.
+    /// [`Error::NotInRange`] (`what: "rank"`, the largest rank given) for a rank
+    /// `≥ width · height`.
     ///
     /// ```
     /// use nyquist::{sampler::MaskView, Error};
@@ -81,7 +82,10 @@ impl<'a> MaskView<'a> {
     ///     MaskView::new(&[0, 1, 2], 2, 2, 1).unwrap_err(),
     ///     Error::BufferLength { multiple_of: 4, actual: 3 }
     /// );
-    /// assert_eq!(MaskView::new(&[0, 9], 2, 1, 1).unwrap_err(), Error::OutOfRange { what: "ranks" });
+    /// assert_eq!(
+    ///     MaskView::new(&[0, 9], 2, 1, 1).unwrap_err(),
+    ///     Error::NotInRange { what: "rank", value: 9, min: 0, max: 1 }
+    /// );
     /// ```
     pub fn new(
         ranks: &'a [u32],
@@ -130,8 +134,13 @@ impl<'a> MaskView<'a> {
                 actual: ranks.len(),
             });
         }
-        if ranks.max().is_some_and(|r| u64::from(r) >= n) {
-            return Err(Error::OutOfRange { what: "ranks" });
+        if let Some(r) = ranks.max().filter(|&r| u64::from(r) >= n) {
+            return Err(Error::NotInRange {
+                what: "rank",
+                value: u64::from(r),
+                min: 0,
+                max: n - 1,
+            });
         }
         Ok(MaskView {
             ranks,
