@@ -549,25 +549,13 @@ mod tests {
                 (
                     "halton",
                     std::boxed::Box::new(
-                        HaltonSampler::new(
-                            size,
-                            16,
-                            Scramble::PermuteDigits,
-                            seed,
-                        )
-                        .unwrap(),
+                        HaltonSampler::new(size, 16, Scramble::PermuteDigits, seed).unwrap(),
                     ),
                 ),
                 (
                     "hammersley",
                     std::boxed::Box::new(
-                        HammersleySampler::new(
-                            size,
-                            16,
-                            Scramble::PermuteDigits,
-                            seed,
-                        )
-                        .unwrap(),
+                        HammersleySampler::new(size, 16, Scramble::PermuteDigits, seed).unwrap(),
                     ),
                 ),
                 (
@@ -577,13 +565,7 @@ mod tests {
                 (
                     "sobol",
                     std::boxed::Box::new(
-                        SobolSampler::new(
-                            size,
-                            16,
-                            Scramble::PermuteDigits,
-                            seed,
-                        )
-                        .unwrap(),
+                        SobolSampler::new(size, 16, Scramble::PermuteDigits, seed).unwrap(),
                     ),
                 ),
                 (
@@ -713,15 +695,21 @@ mod tests {
         let none = Scramble::None;
         assert_eq!(
             values("halton-plain", 5),
-            direct(std::boxed::Box::new(HaltonSampler::new([8, 8], 16, none, 0).unwrap()))
+            direct(std::boxed::Box::new(
+                HaltonSampler::new([8, 8], 16, none, 0).unwrap()
+            ))
         );
         assert_eq!(
             values("hammersley-plain", 5),
-            direct(std::boxed::Box::new(HammersleySampler::new([8, 8], 16, none, 0).unwrap()))
+            direct(std::boxed::Box::new(
+                HammersleySampler::new([8, 8], 16, none, 0).unwrap()
+            ))
         );
         assert_eq!(
             values("sobol-plain", 5),
-            direct(std::boxed::Box::new(SobolSampler::new([8, 8], 16, none, 0).unwrap()))
+            direct(std::boxed::Box::new(
+                SobolSampler::new([8, 8], 16, none, 0).unwrap()
+            ))
         );
         for name in ["halton", "hammersley", "sobol"] {
             // Seed 0 is a permutation like any other: not the plain set, not seed 5's.

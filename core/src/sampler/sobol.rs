@@ -585,7 +585,11 @@ mod tests {
                     let (a, b) = (plain.get_1d(), permuted.get_1d());
                     let v = sobol_u32(idx, d);
                     let want = if d < 2 { v << 2 } else { v };
-                    assert_eq!(a, fraction_to_f32(want), "pixel {pixel:?} sample {i} dim {d}");
+                    assert_eq!(
+                        a,
+                        fraction_to_f32(want),
+                        "pixel {pixel:?} sample {i} dim {d}"
+                    );
                     changed += usize::from(a != b && d >= 2);
                 }
             }

@@ -21,8 +21,8 @@ use crate::Error;
 
 mod halton;
 mod hammersley;
-mod owen_sobol;
 mod named;
+mod owen_sobol;
 pub(crate) mod pmj02;
 mod sobol;
 #[cfg(any(feature = "lazy-tables", test))]

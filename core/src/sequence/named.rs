@@ -340,9 +340,7 @@ impl NamedSequence {
                 None => Sobol::new(dims)?,
                 Some(seed) => Sobol::with_digital_shift(dims, seed)?,
             }),
-            "owen-sobol" => {
-                NamedSequence::OwenSobol(OwenSobol::new(dims, spec.seed.unwrap_or(0))?)
-            }
+            "owen-sobol" => NamedSequence::OwenSobol(OwenSobol::new(dims, spec.seed.unwrap_or(0))?),
             "zero-two" => {
                 at_most(2)?;
                 NamedSequence::ZeroTwo(spec.seed.map_or(ZeroTwo::new([0, 0]), ZeroTwo::from_seed))
@@ -476,7 +474,13 @@ mod tests {
                 &Halton::new(3).unwrap(),
                 Some(&ScrambledHalton::new(3, 0).unwrap()),
             ),
-            ("halton-zaremba", 3, None, &HaltonZaremba::new(3).unwrap(), None),
+            (
+                "halton-zaremba",
+                3,
+                None,
+                &HaltonZaremba::new(3).unwrap(),
+                None,
+            ),
             (
                 "hammersley",
                 3,
@@ -570,7 +574,10 @@ mod tests {
         let NamedSequence::Korobov(k) = korobov(Some(101), None, 3).unwrap() else {
             panic!("not korobov")
         };
-        assert_eq!(k.multiplier(), Korobov::tabled(101, 3).unwrap().multiplier());
+        assert_eq!(
+            k.multiplier(),
+            Korobov::tabled(101, 3).unwrap().multiplier()
+        );
         let NamedSequence::Korobov(k) = korobov(Some(101), Some(12), 3).unwrap() else {
             panic!("not korobov")
         };
@@ -579,11 +586,17 @@ mod tests {
         let NamedSequence::Korobov(k) = korobov(Some(64), None, 2).unwrap() else {
             panic!("not korobov")
         };
-        assert_eq!(k.multiplier(), Korobov::searched(64, 2).unwrap().multiplier());
+        assert_eq!(
+            k.multiplier(),
+            Korobov::searched(64, 2).unwrap().multiplier()
+        );
         let NamedSequence::Korobov(k) = korobov(Some(5000), None, 2).unwrap() else {
             panic!("not korobov")
         };
-        assert_eq!(k.multiplier(), Korobov::searched_2d(5000).unwrap().multiplier());
+        assert_eq!(
+            k.multiplier(),
+            Korobov::searched_2d(5000).unwrap().multiplier()
+        );
         assert!(matches!(
             korobov(Some(64), Some(4), 2),
             Err(NamedSequenceError::Sequence(_))
@@ -611,7 +624,12 @@ mod tests {
             with("fibonacci", spec(2, Some(20), None)),
             NamedSequenceError::Sequence(Error::OutOfRange { what: "points" })
         );
-        for (name, max) in [("vdc", 1u32), ("zero-two", 2), ("pmj02", 2), ("fibonacci", 2)] {
+        for (name, max) in [
+            ("vdc", 1u32),
+            ("zero-two", 2),
+            ("pmj02", 2),
+            ("fibonacci", 2),
+        ] {
             let points = (name == "fibonacci").then_some(21);
             assert_eq!(
                 with(name, spec(max + 1, points, None)),
