@@ -35,7 +35,7 @@ pub enum PointSetName {
     Lhs,
     /// Van der Corput sequence (base 2, one dimension).
     Vdc,
-    /// Halton sequence.
+    /// Halton sequence (--seed permutes its digits).
     Halton,
     /// Hammersley set (needs --count).
     Hammersley,
@@ -43,9 +43,9 @@ pub enum PointSetName {
     HaltonZaremba,
     /// Hammersley set with the folded radical inverse (needs --count).
     HammersleyZaremba,
-    /// Scrambled (0,2)-sequence (two dimensions).
+    /// The (0,2)-sequence (two dimensions; --seed adds a digital shift).
     ZeroTwo,
-    /// Sobol sequence (Joe–Kuo, 1024 dimensions).
+    /// Sobol sequence (Joe–Kuo, 1024 dimensions; --seed adds a digital shift).
     Sobol,
     /// Mitchell's best-candidate blue noise from the baked table (pixel sampler: --spp).
     BestCandidate,
@@ -59,19 +59,19 @@ pub enum PointSetName {
     /// --resolution).
     #[cfg_attr(feature = "clap", value(name = "zsobol"))]
     ZSobol,
-    /// Progressive multi-jittered (0,2) sequence (two dimensions; --seed picks the Owen
-    /// scramble, 0 the baked table itself); with --spp, shuffled and scrambled per pixel.
+    /// Progressive multi-jittered (0,2) sequence (two dimensions: the baked table, or with
+    /// --seed Owen-scrambled); with --spp, shuffled and scrambled per pixel.
     Pmj02,
-    /// Fibonacci lattice (two dimensions; --count a Fibonacci number, default 21; --seed not 0
-    /// picks a Cranley–Patterson rotation).
+    /// Fibonacci lattice (two dimensions; --count a Fibonacci number, default 21; --seed picks
+    /// a Cranley–Patterson rotation).
     Fibonacci,
     /// Korobov rank-1 lattice of --count points: the multiplier of Stroud's (1971) tables where
     /// they have --count and --dims (3 to 6 dimensions, primes 101 to 10007), else the minimiser
-    /// of the P2 criterion (at most 4096 points; 2^24 in two dimensions); --seed not 0 picks a
+    /// of the P2 criterion (at most 4096 points; 2^24 in two dimensions); --seed picks a
     /// Cranley–Patterson rotation. With --spp, the pixel sampler korobov.
     Korobov,
-    /// Roberts' R_d Kronecker sequence (R2 in two dimensions; --seed not 0 picks a
-    /// Cranley–Patterson rotation in place of the start ½).
+    /// Roberts' R_d Kronecker sequence (R2 in two dimensions; --seed picks a Cranley–Patterson
+    /// rotation in place of the start ½).
     #[cfg_attr(feature = "clap", value(name = "rd", alias = "r2"))]
     Rd,
     /// Blue-noise dithered sampling: the zero-two set of pixel (0, 0) shifted per pixel by the
