@@ -50,7 +50,9 @@ typedef enum NyqStatus {
   NYQ_ERR_OTHER = 8,
 } NyqStatus;
 
-// The sequence families, the values of [`NyqSequence::kind`].
+// The sequence families and their randomizations, the values of [`NyqSequence::kind`]. The
+// randomized kinds (`*_SCRAMBLED`, `*_ROTATED`, `NYQ_SEQ_OWEN_SOBOL`) take `seed`, and every
+// seed, 0 included, randomizes; the other kinds ignore it.
 enum NyqSequenceKind
 #if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
   : uint32_t
@@ -62,7 +64,7 @@ enum NyqSequenceKind
   NYQ_SEQ_HALTON = 1,
   // Halton–Zaremba: Halton with the folded radical inverse Ψ: up to 1024 dimensions.
   NYQ_SEQ_HALTON_ZAREMBA = 2,
-  // Halton with seeded digit permutations (`seed`): up to 1024 dimensions.
+  // Halton with seeded digit permutations: up to 1024 dimensions.
   NYQ_SEQ_HALTON_SCRAMBLED = 3,
   // Hammersley, ((i + ½)/N, Φ₂(i), Φ₃(i), …) with `N = points`: up to 1025 dimensions.
   NYQ_SEQ_HAMMERSLEY = 4,
@@ -72,19 +74,34 @@ enum NyqSequenceKind
   NYQ_SEQ_SOBOL_SCRAMBLED = 6,
   // The (0,2)-sequence (Sobol's first two dimensions), 2 dimensions, 2³² points.
   NYQ_SEQ_ZERO_TWO = 7,
-  // The (0,2)-sequence XOR-scrambled by a hash of `seed`.
+  // The (0,2)-sequence with a digital shift keyed by `seed`.
   NYQ_SEQ_ZERO_TWO_SCRAMBLED = 8,
   // Hammersley–Zaremba: Hammersley with Ψ in place of Φ, `N = points`.
   NYQ_SEQ_HAMMERSLEY_ZAREMBA = 9,
   // The Fibonacci lattice of `N = points` points (a Fibonacci number, 2 … F₉₃), 2
-  // dimensions; `seed != 0` picks a Cranley–Patterson rotation.
+  // dimensions, unrotated.
   NYQ_SEQ_FIBONACCI = 10,
-  // Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2);
-  // `seed != 0` picks a Cranley–Patterson rotation in place of the start ½.
+  // Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2), starting
+  // at ½.
   NYQ_SEQ_RD = 11,
-  // The Korobov rank-1 lattice of `N = points` points with multiplier `a = seed` (coprime to
-  // `N`, `1 ≤ a < N`), generator `(1, a, a², …)`, up to 1024 dimensions, unrotated.
+  // The Korobov rank-1 lattice of `N = points` points, generator `(1, a, a², …)` with `a =
+  // multiplier` (coprime to `N`, `1 ≤ a < N`; 0: nyquist picks it, from Stroud's 1971 tables
+  // or by minimising P2), up to 1024 dimensions, unrotated.
   NYQ_SEQ_KOROBOV = 12,
+  // [`NyqSequenceKind::NYQ_SEQ_FIBONACCI`] with a Cranley–Patterson rotation keyed by `seed`.
+  NYQ_SEQ_FIBONACCI_ROTATED = 13,
+  // [`NyqSequenceKind::NYQ_SEQ_RD`] with a Cranley–Patterson rotation keyed by `seed` in
+  // place of the start ½.
+  NYQ_SEQ_RD_ROTATED = 14,
+  // [`NyqSequenceKind::NYQ_SEQ_KOROBOV`] with a Cranley–Patterson rotation keyed by `seed`.
+  NYQ_SEQ_KOROBOV_ROTATED = 15,
+  // Owen-scrambled Sobol (Burley 2020: nested uniform shuffle and scramble) keyed by `seed`,
+  // up to 1024 dimensions.
+  NYQ_SEQ_OWEN_SOBOL = 16,
+  // PMJ(0,2), 2 dimensions, 65536 points: the baked table.
+  NYQ_SEQ_PMJ02 = 17,
+  // PMJ(0,2) Owen-scrambled by `seed`.
+  NYQ_SEQ_PMJ02_SCRAMBLED = 18,
 };
 #ifndef __cplusplus
 #if __STDC_VERSION__ >= 202311L
@@ -144,15 +161,17 @@ typedef struct NyqCameraSample {
 typedef struct NyqSequence {
   // One of [`NyqSequenceKind`], as an integer (other values give `NYQ_ERR_OUT_OF_RANGE`).
   uint32_t kind;
-  // Number of dimensions, at least 1 (van der Corput: 1; (0,2): 1 or 2).
+  // Number of dimensions, at least 1 (van der Corput: 1; (0,2), PMJ(0,2), Fibonacci: 1 or 2).
   uint32_t dims;
   // The point count `N` of Hammersley (at least 1), of the Fibonacci lattice (a Fibonacci
   // number) and of the Korobov lattice; ignored by the other families.
   uint64_t points;
-  // Scramble seed of the `*_SCRAMBLED` kinds, rotation seed of the Fibonacci lattice and
-  // R_d (0: none) (every value is valid), the multiplier of the Korobov lattice; ignored
-  // otherwise.
+  // The seed of the randomized kinds (every value is valid and randomizes); ignored by the
+  // others.
   uint64_t seed;
+  // The Korobov multiplier `a` (0: nyquist picks it); ignored by the other families. Last,
+  // so that a C initializer of the first four fields leaves it 0.
+  uint64_t multiplier;
 } NyqSequence;
 
 // A user filter: `eval(user, x, y)` is the weight at offset `(x, y)` pixels from the pixel
@@ -418,10 +437,11 @@ enum NyqStatus nyq_inverse_radical_inverse(uint32_t dim,
 // as the CLI's `--sampler NAME --spp SPP --size WxH --seed SEED` does, and writes the handle
 // to `*out`.
 //
-// Names (any ASCII case; also `halton-plain`, `sobol-plain` and `sobol-owen`): `random`;
-// `uniform` and `stratified` (cell centres or jittered, on a √spp × √spp grid for a square spp,
-// else the squarest rectangle of spp cells); `halton` (digit-permuted when `seed != 0`); `hammersley` (scrambled
-// when `seed != 0`); `zero-two` and `sobol` (spp rounded up to a power of two:
+// Names (any ASCII case; also `sobol-owen`, and `halton-plain`, `hammersley-plain` and
+// `sobol-plain` for the unscrambled sequences): `random`; `uniform` and `stratified` (cell
+// centres or jittered, on a √spp × √spp grid for a square spp, else the squarest rectangle of
+// spp cells); `halton`, `hammersley` (digit-permuted by `seed`, every seed 0 included);
+// `zero-two` and `sobol` (digit-permuted too; spp rounded up to a power of two:
 // [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
 // spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
 // (Owen-scrambled Sobol per pixel); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to

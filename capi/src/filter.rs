@@ -3,7 +3,7 @@
 //! (nearest and linear), the integral, and filter importance sampling.
 //!
 //! Every handle holds two [`FilterTable`]s of [`NYQ_FILTER_TABLE_SIZE`] points per axis (the
-//! size the film uses), one per [`NyqInterpolation`], and a [`FilterSampler`] on a
+//! core's default table size; the film keeps its own, finer table), one per [`NyqInterpolation`], and a [`FilterSampler`] on a
 //! [`NYQ_FILTER_SAMPLER_GRID`]² grid. A callback filter's callback is called only inside
 //! [`nyq_filter_create_callback`]; afterwards its linear table *is* the filter (its `eval`,
 //! its importance sampling), and its integral is the core's numeric integral of the callback.

@@ -272,7 +272,7 @@ pub unsafe extern "C" fn nyq_sampler_get_1d(sampler: *mut NyqSampler, out: *mut 
 /// let mut uv = [2.0f32; 2];
 /// // SAFETY: valid pointers; the handle is destroyed once.
 /// unsafe {
-///     nyq_sampler_create(c"halton".as_ptr(), 64, 64, 16, 0, &mut s);
+///     nyq_sampler_create(c"halton-plain".as_ptr(), 64, 64, 16, 0, &mut s);
 ///     nyq_sampler_start_pixel_sample(s, 0, 0, 0, 2);
 ///     assert_eq!(nyq_sampler_get_2d(s, uv.as_mut_ptr()), NyqStatus::NYQ_OK);
 ///     nyq_sampler_destroy(s);

@@ -1,21 +1,20 @@
-//! Sequences by index: van der Corput, Halton (plain, Zaremba, scrambled), Hammersley (plain,
-//! Zaremba), Sobol (plain, digitally shifted), the (0,2)-sequence, the Fibonacci and Korobov
-//! lattices and Roberts' R_d.
+//! Sequences by index: van der Corput, Halton (plain, Zaremba, digit-permuted), Hammersley
+//! (plain, Zaremba), Sobol (plain, digitally shifted), Owen-scrambled Sobol, the
+//! (0,2)-sequence, PMJ(0,2), the Fibonacci and Korobov lattices and Roberts' R_d, plain or
+//! rotated: the core's [`NamedSequence`], one kind per family and randomization.
 //!
 //! A sequence is described by a plain [`NyqSequence`] value (no allocation, no handle); each
-//! call validates it and builds the core's sequence, which costs a few integer operations.
+//! call validates it and builds the core's sequence, which costs a few integer operations (a
+//! Korobov lattice whose multiplier is left to nyquist also searches it, about linear in `N`).
 
-use nyquist::sequence::{
-    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, ScrambledHalton, Sequence, Sobol,
-    VanDerCorput, ZeroTwo,
-};
-
-use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
+use nyquist::sequence::{NamedSequence, NamedSequenceError, Sequence, SequenceSpec};
 
 use crate::NyqStatus;
 use crate::ffi::{get, need, put, run, slice_mut};
 
-/// The sequence families, the values of [`NyqSequence::kind`].
+/// The sequence families and their randomizations, the values of [`NyqSequence::kind`]. The
+/// randomized kinds (`*_SCRAMBLED`, `*_ROTATED`, `NYQ_SEQ_OWEN_SOBOL`) take `seed`, and every
+/// seed, 0 included, randomizes; the other kinds ignore it.
 ///
 /// ```
 /// use nyquist_capi::NyqSequenceKind;
@@ -31,7 +30,7 @@ pub enum NyqSequenceKind {
     NYQ_SEQ_HALTON = 1,
     /// Halton–Zaremba: Halton with the folded radical inverse Ψ: up to 1024 dimensions.
     NYQ_SEQ_HALTON_ZAREMBA = 2,
-    /// Halton with seeded digit permutations (`seed`): up to 1024 dimensions.
+    /// Halton with seeded digit permutations: up to 1024 dimensions.
     NYQ_SEQ_HALTON_SCRAMBLED = 3,
     /// Hammersley, ((i + ½)/N, Φ₂(i), Φ₃(i), …) with `N = points`: up to 1025 dimensions.
     NYQ_SEQ_HAMMERSLEY = 4,
@@ -41,26 +40,73 @@ pub enum NyqSequenceKind {
     NYQ_SEQ_SOBOL_SCRAMBLED = 6,
     /// The (0,2)-sequence (Sobol's first two dimensions), 2 dimensions, 2³² points.
     NYQ_SEQ_ZERO_TWO = 7,
-    /// The (0,2)-sequence XOR-scrambled by a hash of `seed`.
+    /// The (0,2)-sequence with a digital shift keyed by `seed`.
     NYQ_SEQ_ZERO_TWO_SCRAMBLED = 8,
     /// Hammersley–Zaremba: Hammersley with Ψ in place of Φ, `N = points`.
     NYQ_SEQ_HAMMERSLEY_ZAREMBA = 9,
     /// The Fibonacci lattice of `N = points` points (a Fibonacci number, 2 … F₉₃), 2
-    /// dimensions; `seed != 0` picks a Cranley–Patterson rotation.
+    /// dimensions, unrotated.
     NYQ_SEQ_FIBONACCI = 10,
-    /// Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2);
-    /// `seed != 0` picks a Cranley–Patterson rotation in place of the start ½.
+    /// Roberts' R_d Kronecker sequence in `dims` dimensions (up to 1024; R2 for 2), starting
+    /// at ½.
     NYQ_SEQ_RD = 11,
-    /// The Korobov rank-1 lattice of `N = points` points with multiplier `a = seed` (coprime to
-    /// `N`, `1 ≤ a < N`), generator `(1, a, a², …)`, up to 1024 dimensions, unrotated.
+    /// The Korobov rank-1 lattice of `N = points` points, generator `(1, a, a², …)` with `a =
+    /// multiplier` (coprime to `N`, `1 ≤ a < N`; 0: nyquist picks it, from Stroud's 1971 tables
+    /// or by minimising P2), up to 1024 dimensions, unrotated.
     NYQ_SEQ_KOROBOV = 12,
+    /// [`NyqSequenceKind::NYQ_SEQ_FIBONACCI`] with a Cranley–Patterson rotation keyed by `seed`.
+    NYQ_SEQ_FIBONACCI_ROTATED = 13,
+    /// [`NyqSequenceKind::NYQ_SEQ_RD`] with a Cranley–Patterson rotation keyed by `seed` in
+    /// place of the start ½.
+    NYQ_SEQ_RD_ROTATED = 14,
+    /// [`NyqSequenceKind::NYQ_SEQ_KOROBOV`] with a Cranley–Patterson rotation keyed by `seed`.
+    NYQ_SEQ_KOROBOV_ROTATED = 15,
+    /// Owen-scrambled Sobol (Burley 2020: nested uniform shuffle and scramble) keyed by `seed`,
+    /// up to 1024 dimensions.
+    NYQ_SEQ_OWEN_SOBOL = 16,
+    /// PMJ(0,2), 2 dimensions, 65536 points: the baked table.
+    NYQ_SEQ_PMJ02 = 17,
+    /// PMJ(0,2) Owen-scrambled by `seed`.
+    NYQ_SEQ_PMJ02_SCRAMBLED = 18,
 }
+
+/// Every kind with the core name it builds and whether it is randomized.
+const KINDS: [(NyqSequenceKind, &str, bool); 19] = {
+    use NyqSequenceKind as K;
+    [
+        (K::NYQ_SEQ_VAN_DER_CORPUT, "vdc", false),
+        (K::NYQ_SEQ_HALTON, "halton", false),
+        (K::NYQ_SEQ_HALTON_ZAREMBA, "halton-zaremba", false),
+        (K::NYQ_SEQ_HALTON_SCRAMBLED, "halton", true),
+        (K::NYQ_SEQ_HAMMERSLEY, "hammersley", false),
+        (K::NYQ_SEQ_SOBOL, "sobol", false),
+        (K::NYQ_SEQ_SOBOL_SCRAMBLED, "sobol", true),
+        (K::NYQ_SEQ_ZERO_TWO, "zero-two", false),
+        (K::NYQ_SEQ_ZERO_TWO_SCRAMBLED, "zero-two", true),
+        (K::NYQ_SEQ_HAMMERSLEY_ZAREMBA, "hammersley-zaremba", false),
+        (K::NYQ_SEQ_FIBONACCI, "fibonacci", false),
+        (K::NYQ_SEQ_RD, "rd", false),
+        (K::NYQ_SEQ_KOROBOV, "korobov", false),
+        (K::NYQ_SEQ_FIBONACCI_ROTATED, "fibonacci", true),
+        (K::NYQ_SEQ_RD_ROTATED, "rd", true),
+        (K::NYQ_SEQ_KOROBOV_ROTATED, "korobov", true),
+        (K::NYQ_SEQ_OWEN_SOBOL, "owen-sobol", true),
+        (K::NYQ_SEQ_PMJ02, "pmj02", false),
+        (K::NYQ_SEQ_PMJ02_SCRAMBLED, "pmj02", true),
+    ]
+};
 
 /// A point set, by value: which family and its parameters.
 ///
 /// ```
 /// use nyquist_capi::{NyqSequence, NyqSequenceKind};
-/// let s = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32, dims: 3, points: 0, seed: 0 };
+/// let s = NyqSequence {
+///     kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32,
+///     dims: 3,
+///     points: 0,
+///     seed: 0,
+///     multiplier: 0,
+/// };
 /// assert_eq!(s.dims, 3);
 /// ```
 #[repr(C)]
@@ -68,131 +114,54 @@ pub enum NyqSequenceKind {
 pub struct NyqSequence {
     /// One of [`NyqSequenceKind`], as an integer (other values give `NYQ_ERR_OUT_OF_RANGE`).
     pub kind: u32,
-    /// Number of dimensions, at least 1 (van der Corput: 1; (0,2): 1 or 2).
+    /// Number of dimensions, at least 1 (van der Corput: 1; (0,2), PMJ(0,2), Fibonacci: 1 or 2).
     pub dims: u32,
     /// The point count `N` of Hammersley (at least 1), of the Fibonacci lattice (a Fibonacci
     /// number) and of the Korobov lattice; ignored by the other families.
     pub points: u64,
-    /// Scramble seed of the `*_SCRAMBLED` kinds, rotation seed of the Fibonacci lattice and
-    /// R_d (0: none) (every value is valid), the multiplier of the Korobov lattice; ignored
-    /// otherwise.
+    /// The seed of the randomized kinds (every value is valid and randomizes); ignored by the
+    /// others.
     pub seed: u64,
+    /// The Korobov multiplier `a` (0: nyquist picks it); ignored by the other families. Last,
+    /// so that a C initializer of the first four fields leaves it 0.
+    pub multiplier: u64,
 }
 
-/// The core sequence a [`NyqSequence`] describes.
-enum AnySequence {
-    VanDerCorput(VanDerCorput),
-    Halton(Halton),
-    HaltonZaremba(HaltonZaremba),
-    ScrambledHalton(ScrambledHalton),
-    Hammersley(Hammersley),
-    HammersleyZaremba(HammersleyZaremba),
-    Sobol(Sobol),
-    ZeroTwo(ZeroTwo),
-    Fibonacci(FibonacciLattice),
-    Rd(Kronecker),
-    Korobov(Korobov),
-}
-
-/// `dims` for the fixed-size families: 1 ≤ dims ≤ max.
-fn small_dims(dims: u32, max: u32) -> Result<(), NyqStatus> {
-    match dims {
-        0 => Err(NyqStatus::NYQ_ERR_ZERO_SIZE),
-        d if d > max => Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE),
-        _ => Ok(()),
-    }
-}
-
-impl AnySequence {
-    fn new(s: &NyqSequence) -> Result<AnySequence, NyqStatus> {
-        use NyqSequenceKind as K;
-        let kinds = [
-            K::NYQ_SEQ_VAN_DER_CORPUT,
-            K::NYQ_SEQ_HALTON,
-            K::NYQ_SEQ_HALTON_ZAREMBA,
-            K::NYQ_SEQ_HALTON_SCRAMBLED,
-            K::NYQ_SEQ_HAMMERSLEY,
-            K::NYQ_SEQ_SOBOL,
-            K::NYQ_SEQ_SOBOL_SCRAMBLED,
-            K::NYQ_SEQ_ZERO_TWO,
-            K::NYQ_SEQ_ZERO_TWO_SCRAMBLED,
-            K::NYQ_SEQ_HAMMERSLEY_ZAREMBA,
-            K::NYQ_SEQ_FIBONACCI,
-            K::NYQ_SEQ_RD,
-            K::NYQ_SEQ_KOROBOV,
-        ];
-        let kind = kinds
-            .into_iter()
-            .find(|&k| k as u32 == s.kind)
-            .ok_or(NyqStatus::NYQ_ERR_OUT_OF_RANGE)?;
-        Ok(match kind {
-            K::NYQ_SEQ_VAN_DER_CORPUT => {
-                small_dims(s.dims, 1)?;
-                AnySequence::VanDerCorput(VanDerCorput)
-            }
-            K::NYQ_SEQ_HALTON => AnySequence::Halton(Halton::new(s.dims)?),
-            K::NYQ_SEQ_HALTON_ZAREMBA => AnySequence::HaltonZaremba(HaltonZaremba::new(s.dims)?),
-            K::NYQ_SEQ_HALTON_SCRAMBLED => {
-                AnySequence::ScrambledHalton(ScrambledHalton::new(s.dims, s.seed)?)
-            }
-            K::NYQ_SEQ_HAMMERSLEY => AnySequence::Hammersley(Hammersley::new(s.points, s.dims)?),
-            K::NYQ_SEQ_HAMMERSLEY_ZAREMBA => {
-                AnySequence::HammersleyZaremba(HammersleyZaremba::new(s.points, s.dims)?)
-            }
-            K::NYQ_SEQ_SOBOL => AnySequence::Sobol(Sobol::new(s.dims)?),
-            K::NYQ_SEQ_SOBOL_SCRAMBLED => {
-                AnySequence::Sobol(Sobol::with_digital_shift(s.dims, s.seed)?)
-            }
-            K::NYQ_SEQ_ZERO_TWO => {
-                small_dims(s.dims, 2)?;
-                AnySequence::ZeroTwo(ZeroTwo::new([0, 0]))
-            }
-            K::NYQ_SEQ_ZERO_TWO_SCRAMBLED => {
-                small_dims(s.dims, 2)?;
-                AnySequence::ZeroTwo(ZeroTwo::from_seed(s.seed))
-            }
-            K::NYQ_SEQ_FIBONACCI => {
-                small_dims(s.dims, 2)?;
-                let f = FibonacciLattice::at_least(s.points)?;
-                if f.point_count() != Some(s.points) {
-                    return Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE);
-                }
-                AnySequence::Fibonacci(if s.seed == 0 { f } else { f.rotated(s.seed) })
-            }
-            K::NYQ_SEQ_RD => {
-                let r = Kronecker::new(s.dims)?;
-                AnySequence::Rd(if s.seed == 0 { r } else { r.rotated(s.seed) })
-            }
-            K::NYQ_SEQ_KOROBOV => AnySequence::Korobov(Korobov::new(s.points, s.seed, s.dims)?),
-        })
-    }
-
-    fn as_dyn(&self) -> &dyn Sequence {
-        match self {
-            AnySequence::VanDerCorput(s) => s,
-            AnySequence::Halton(s) => s,
-            AnySequence::HaltonZaremba(s) => s,
-            AnySequence::ScrambledHalton(s) => s,
-            AnySequence::Hammersley(s) => s,
-            AnySequence::HammersleyZaremba(s) => s,
-            AnySequence::Sobol(s) => s,
-            AnySequence::ZeroTwo(s) => s,
-            AnySequence::Fibonacci(s) => s,
-            AnySequence::Rd(s) => s,
-            AnySequence::Korobov(s) => s,
-        }
-    }
+/// The core sequence `*s` describes.
+fn build(s: &NyqSequence) -> Result<NamedSequence, NyqStatus> {
+    let &(_, name, randomized) = KINDS
+        .iter()
+        .find(|(k, ..)| *k as u32 == s.kind)
+        .ok_or(NyqStatus::NYQ_ERR_OUT_OF_RANGE)?;
+    let sized = matches!(
+        name,
+        "hammersley" | "hammersley-zaremba" | "fibonacci" | "korobov"
+    );
+    let spec = SequenceSpec {
+        dims: s.dims,
+        points: sized.then_some(s.points),
+        seed: randomized.then_some(s.seed),
+        multiplier: (name == "korobov" && s.multiplier != 0).then_some(s.multiplier),
+    };
+    NamedSequence::new(name, spec).map_err(|e| match e {
+        NamedSequenceError::Sequence(e) => e.into(),
+        _ => NyqStatus::NYQ_ERR_OUT_OF_RANGE,
+    })
 }
 
 /// Reads and validates `*seq`, and checks `(index, dim)` addresses a point of it.
 ///
 /// # Safety
 /// `seq` is null or points to a readable `NyqSequence`.
-unsafe fn checked(seq: *const NyqSequence, index: u64, dim: u32) -> Result<AnySequence, NyqStatus> {
+unsafe fn checked(
+    seq: *const NyqSequence,
+    index: u64,
+    dim: u32,
+) -> Result<NamedSequence, NyqStatus> {
     // SAFETY: forwarded caller contract.
     let spec = unsafe { get(seq)? };
-    let s = AnySequence::new(spec)?;
-    if dim >= spec.dims || s.as_dyn().point_count().is_some_and(|n| index >= n) {
+    let s = build(spec)?;
+    if dim >= spec.dims || s.point_count().is_some_and(|n| index >= n) {
         return Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE);
     }
     Ok(s)
@@ -213,7 +182,7 @@ unsafe fn checked(seq: *const NyqSequence, index: u64, dim: u32) -> Result<AnySe
 ///
 /// ```
 /// use nyquist_capi::{NyqSequence, NyqSequenceKind, NyqStatus, nyq_sequence_sample};
-/// let halton = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32, dims: 2, points: 0, seed: 0 };
+/// let halton = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32, dims: 2, points: 0, seed: 0, multiplier: 0 };
 /// let mut x = 0.0f32;
 /// // SAFETY: valid pointers.
 /// assert_eq!(unsafe { nyq_sequence_sample(&halton, 3, 0, &mut x) }, NyqStatus::NYQ_OK);
@@ -232,7 +201,7 @@ pub unsafe extern "C" fn nyq_sequence_sample(
         // SAFETY: `seq` is null or readable (caller).
         let s = unsafe { checked(seq, index, dim)? };
         // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, s.as_dyn().sample(index, dim)) }
+        unsafe { put(out, s.sample(index, dim)) }
     })
 }
 
@@ -246,7 +215,7 @@ pub unsafe extern "C" fn nyq_sequence_sample(
 ///
 /// ```
 /// use nyquist_capi::{NyqSequence, NyqSequenceKind, NyqStatus, nyq_sequence_sample_f64};
-/// let vdc = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_VAN_DER_CORPUT as u32, dims: 1, points: 0, seed: 0 };
+/// let vdc = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_VAN_DER_CORPUT as u32, dims: 1, points: 0, seed: 0, multiplier: 0 };
 /// let mut x = 0.0f64;
 /// // SAFETY: valid pointers.
 /// assert_eq!(unsafe { nyq_sequence_sample_f64(&vdc, 5, 0, &mut x) }, NyqStatus::NYQ_OK);
@@ -264,7 +233,7 @@ pub unsafe extern "C" fn nyq_sequence_sample_f64(
         // SAFETY: `seq` is null or readable (caller).
         let s = unsafe { checked(seq, index, dim)? };
         // SAFETY: `out` is null or writable (caller).
-        unsafe { put(out, s.as_dyn().sample_f64(index, dim)) }
+        unsafe { put(out, s.sample_f64(index, dim)) }
     })
 }
 
@@ -284,7 +253,7 @@ pub unsafe extern "C" fn nyq_sequence_sample_f64(
 ///
 /// ```
 /// use nyquist_capi::{NyqSequence, NyqSequenceKind, NyqStatus, nyq_sequence_fill};
-/// let sobol = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_SOBOL as u32, dims: 2, points: 0, seed: 0 };
+/// let sobol = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_SOBOL as u32, dims: 2, points: 0, seed: 0, multiplier: 0 };
 /// let (mut pts, mut n) = ([0.0f32; 8], 0u64);
 /// // SAFETY: valid pointers, `pts` holds 8 floats.
 /// assert_eq!(unsafe { nyq_sequence_fill(&sobol, 0, 2, pts.as_mut_ptr(), 8, &mut n) }, NyqStatus::NYQ_OK);
@@ -305,14 +274,14 @@ pub unsafe extern "C" fn nyq_sequence_fill(
         need(written)?;
         // SAFETY: `out` is null or writable for `len` floats (caller).
         let out = unsafe { slice_mut(out, len)? };
-        let s = AnySequence::new(spec)?;
+        let s = build(spec)?;
         if dims == 0 {
             return Err(NyqStatus::NYQ_ERR_ZERO_SIZE);
         }
         if dims > spec.dims {
             return Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE);
         }
-        let n = s.as_dyn().fill(first, dims, out)?;
+        let n = s.fill(first, dims, out)?;
         // SAFETY: `written` is writable (caller; null checked above).
         unsafe { put(written, n) }
     })
@@ -329,7 +298,7 @@ pub unsafe extern "C" fn nyq_sequence_fill(
 ///
 /// ```
 /// use nyquist_capi::{NyqSequence, NyqSequenceKind, NyqStatus, nyq_sequence_point_count};
-/// let h = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HAMMERSLEY as u32, dims: 2, points: 16, seed: 0 };
+/// let h = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HAMMERSLEY as u32, dims: 2, points: 16, seed: 0, multiplier: 0 };
 /// let mut n = 0u64;
 /// // SAFETY: valid pointers.
 /// assert_eq!(unsafe { nyq_sequence_point_count(&h, &mut n) }, NyqStatus::NYQ_OK);
@@ -344,7 +313,7 @@ pub unsafe extern "C" fn nyq_sequence_point_count(
         // SAFETY: `seq` is null or readable (caller).
         let spec = unsafe { get(seq)? };
         need(out)?;
-        let n = AnySequence::new(spec)?.as_dyn().point_count().unwrap_or(0);
+        let n = build(spec)?.point_count().unwrap_or(0);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, n) }
     })

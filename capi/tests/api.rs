@@ -133,6 +133,7 @@ fn outputs_are_untouched_on_error() {
         dims: 2,
         points: 0,
         seed: 0,
+        multiplier: 0,
     };
     // SAFETY: valid pointers.
     unsafe {
@@ -159,6 +160,7 @@ fn sequence_fill_equals_the_cores_samples() {
         dims: 5,
         points: 0,
         seed: 0,
+        multiplier: 0,
     };
     let core = Sobol::new(5).unwrap();
     let mut buf = vec![0.0f32; 5 * 100];
@@ -176,16 +178,18 @@ fn sequence_fill_equals_the_cores_samples() {
 /// Arbitrary `NyqSequence` values, including bad kinds, sizes and counts.
 fn any_sequence() -> impl Strategy<Value = NyqSequence> {
     (
-        0u32..12,
+        0u32..20,
         0u32..1100,
         prop_oneof![Just(0u64), 1u64..100, any::<u64>()],
         any::<u64>(),
+        prop_oneof![Just(0u64), 1u64..100, any::<u64>()],
     )
-        .prop_map(|(kind, dims, points, seed)| NyqSequence {
+        .prop_map(|(kind, dims, points, seed, multiplier)| NyqSequence {
             kind,
             dims,
             points,
             seed,
+            multiplier,
         })
 }
 
@@ -209,7 +213,7 @@ proptest! {
 
     #[test]
     fn halton_through_the_api_is_the_cores(index in any::<u64>(), dim in 0u32..8) {
-        let seq = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32, dims: 8, points: 0, seed: 0 };
+        let seq = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32, dims: 8, points: 0, seed: 0, multiplier: 0 };
         let mut x = 0.0f32;
         // SAFETY: valid pointers.
         prop_assert_eq!(unsafe { nyq_sequence_sample(&seq, index, dim, &mut x) }, NyqStatus::NYQ_OK);
@@ -347,6 +351,7 @@ fn null_pointers_are_reported_before_other_errors() {
         dims: 0,
         points: 0,
         seed: 0,
+        multiplier: 0,
     };
     let mut f: *mut NyqFilter = ptr::null_mut();
     let mut n = 0u32;
@@ -396,16 +401,18 @@ fn lattices_through_the_c_api() {
     use nyquist::lattice::{FibonacciLattice, Kronecker};
     use nyquist::sequence::Sequence;
     let fib = NyqSequence {
-        kind: NyqSequenceKind::NYQ_SEQ_FIBONACCI as u32,
+        kind: NyqSequenceKind::NYQ_SEQ_FIBONACCI_ROTATED as u32,
         dims: 2,
         points: 89,
         seed: 3,
+        multiplier: 0,
     };
     let rd = NyqSequence {
         kind: NyqSequenceKind::NYQ_SEQ_RD as u32,
         dims: 3,
         points: 0,
         seed: 0,
+        multiplier: 0,
     };
     let (f, r) = (
         FibonacciLattice::new(11).unwrap().rotated(3),
@@ -431,7 +438,8 @@ fn lattices_through_the_c_api() {
         kind: NyqSequenceKind::NYQ_SEQ_KOROBOV as u32,
         dims: 3,
         points: 1024,
-        seed: 189,
+        seed: 0,
+        multiplier: 189,
     };
     let k = nyquist::lattice::Korobov::new(1024, 189, 3).unwrap();
     for i in [0u64, 5, 1023] {
@@ -443,7 +451,10 @@ fn lattices_through_the_c_api() {
         );
         assert_eq!(x, k.sample(i, 2));
     }
-    let even = NyqSequence { seed: 190, ..kor };
+    let even = NyqSequence {
+        multiplier: 190,
+        ..kor
+    };
     let mut x = 0.0f32;
     // SAFETY: as above.
     assert_eq!(
@@ -457,4 +468,118 @@ fn lattices_through_the_c_api() {
         unsafe { nyq_sequence_sample(&bad, 0, 0, &mut x) },
         NyqStatus::NYQ_ERR_OUT_OF_RANGE
     );
+}
+
+/// Every kind gives the values of the core's `NamedSequence` it names: the plain kinds ignore
+/// `seed`, the randomized ones randomize for every seed (0 included), and a Korobov multiplier
+/// of 0 is the one nyquist picks (Stroud's table for 101 points in 3 dimensions).
+#[test]
+fn every_kind_is_the_cores_named_sequence() {
+    use nyquist::sequence::{NamedSequence, Sequence, SequenceSpec};
+    let kinds = [
+        (NyqSequenceKind::NYQ_SEQ_VAN_DER_CORPUT, "vdc", false, 0),
+        (NyqSequenceKind::NYQ_SEQ_HALTON, "halton", false, 0),
+        (
+            NyqSequenceKind::NYQ_SEQ_HALTON_ZAREMBA,
+            "halton-zaremba",
+            false,
+            0,
+        ),
+        (NyqSequenceKind::NYQ_SEQ_HALTON_SCRAMBLED, "halton", true, 0),
+        (NyqSequenceKind::NYQ_SEQ_HAMMERSLEY, "hammersley", false, 16),
+        (NyqSequenceKind::NYQ_SEQ_SOBOL, "sobol", false, 0),
+        (NyqSequenceKind::NYQ_SEQ_SOBOL_SCRAMBLED, "sobol", true, 0),
+        (NyqSequenceKind::NYQ_SEQ_ZERO_TWO, "zero-two", false, 0),
+        (
+            NyqSequenceKind::NYQ_SEQ_ZERO_TWO_SCRAMBLED,
+            "zero-two",
+            true,
+            0,
+        ),
+        (
+            NyqSequenceKind::NYQ_SEQ_HAMMERSLEY_ZAREMBA,
+            "hammersley-zaremba",
+            false,
+            16,
+        ),
+        (NyqSequenceKind::NYQ_SEQ_FIBONACCI, "fibonacci", false, 21),
+        (NyqSequenceKind::NYQ_SEQ_RD, "rd", false, 0),
+        (NyqSequenceKind::NYQ_SEQ_KOROBOV, "korobov", false, 101),
+        (
+            NyqSequenceKind::NYQ_SEQ_FIBONACCI_ROTATED,
+            "fibonacci",
+            true,
+            21,
+        ),
+        (NyqSequenceKind::NYQ_SEQ_RD_ROTATED, "rd", true, 0),
+        (
+            NyqSequenceKind::NYQ_SEQ_KOROBOV_ROTATED,
+            "korobov",
+            true,
+            101,
+        ),
+        (NyqSequenceKind::NYQ_SEQ_OWEN_SOBOL, "owen-sobol", true, 0),
+        (NyqSequenceKind::NYQ_SEQ_PMJ02, "pmj02", false, 0),
+        (NyqSequenceKind::NYQ_SEQ_PMJ02_SCRAMBLED, "pmj02", true, 0),
+    ];
+    for (k, (kind, name, randomized, points)) in kinds.into_iter().enumerate() {
+        assert_eq!(kind as usize, k);
+        let dims = match name {
+            "vdc" => 1,
+            "zero-two" | "pmj02" | "fibonacci" => 2,
+            _ => 3,
+        };
+        for seed in [0u64, 77] {
+            let c = NyqSequence {
+                kind: kind as u32,
+                dims,
+                points,
+                seed,
+                multiplier: 0,
+            };
+            let core = NamedSequence::new(
+                name,
+                SequenceSpec {
+                    dims,
+                    points: (points != 0).then_some(points),
+                    seed: randomized.then_some(seed),
+                    multiplier: None,
+                },
+            )
+            .unwrap();
+            let (mut got, mut n) = (vec![0.0f32; 8 * dims as usize], 0u64);
+            let len = got.len();
+            // SAFETY: valid pointers; `got` holds `len` floats.
+            let status = unsafe { nyq_sequence_fill(&c, 1, dims, got.as_mut_ptr(), len, &mut n) };
+            assert_eq!(status, NyqStatus::NYQ_OK, "{name}");
+            let mut want = vec![0.0f32; len];
+            core.fill(1, dims, &mut want).unwrap();
+            assert_eq!(got, want, "{name} seed {seed}");
+        }
+    }
+    let korobov = |multiplier| NyqSequence {
+        kind: NyqSequenceKind::NYQ_SEQ_KOROBOV as u32,
+        dims: 3,
+        points: 101,
+        seed: 0,
+        multiplier,
+    };
+    let tabled = nyquist::lattice::Korobov::tabled(101, 3)
+        .unwrap()
+        .multiplier();
+    let mut a = [0.0f32; 3];
+    let mut b = [0.0f32; 3];
+    let mut n = 0u64;
+    // SAFETY: valid pointers; three floats each.
+    unsafe {
+        assert_eq!(
+            nyq_sequence_fill(&korobov(0), 1, 3, a.as_mut_ptr(), 3, &mut n),
+            NyqStatus::NYQ_OK
+        );
+        assert_eq!(
+            nyq_sequence_fill(&korobov(tabled), 1, 3, b.as_mut_ptr(), 3, &mut n),
+            NyqStatus::NYQ_OK
+        );
+    }
+    assert_eq!(a, b);
 }

@@ -3,7 +3,7 @@
 
 use anyhow::{Result, bail};
 use clap::{Args, ValueEnum};
-use nyquist_lab::points::{PointsSpec, ignores_seed};
+use nyquist_lab::points::PointsSpec;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -50,14 +50,6 @@ pub fn run(args: &PointsArgs) -> Result<()> {
         None => {}
     }
     let spec = &args.spec;
-    if spec.seed != 0 && !spec.pixel_mode() && ignores_seed(spec.sampler) {
-        crate::output::note(&format!(
-            "--seed {} changes nothing: {} points do not depend on a seed (with --spp, the \
-             halton, hammersley and sobol pixel samplers are scrambled by it)",
-            spec.seed,
-            spec.sampler.name()
-        ));
-    }
     let generated = spec.generate()?;
     generated.notes.iter().for_each(|n| crate::output::note(n));
     let (points, dims, grid) = (generated.values, generated.dims, generated.grid);

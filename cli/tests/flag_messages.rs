@@ -122,32 +122,28 @@ fn a_missing_required_flag_reads_as_one_sentence() {
     );
 }
 
+/// A seed asks for a set's randomization: refused by the sets without one, and it changes the
+/// points of those that have one (seed 0 included: there is no seed that means "none").
 #[test]
-fn seed_on_an_unscrambled_set_gets_a_note() {
-    let plain = nyquist(&["points", "--sampler", "halton", "--count", "4"]);
-    for s in ["halton", "sobol"] {
-        let o = assert_note(
+fn a_seed_randomizes_or_is_refused() {
+    for s in ["hammersley", "vdc", "uniform", "halton-zaremba"] {
+        assert_error(
             &["points", "--sampler", s, "--count", "4", "--seed", "5"],
             &format!(
-                "--seed 5 changes nothing: {s} points do not depend on a seed (with --spp, the \
-                 halton, hammersley and sobol pixel samplers are scrambled by it)"
+                "--seed 5: {s} has no randomization, its points do not depend on a \
+                 seed (drop --seed; halton, sobol, zero-two, pmj02, fibonacci, korobov and rd \
+                 take one)"
             ),
         );
-        if s == "halton" {
-            assert_eq!(o.stdout, plain.stdout);
+    }
+    for s in ["halton", "sobol", "zero-two", "pmj02", "rd"] {
+        let plain = nyquist(&["points", "--sampler", s, "--count", "4"]);
+        for seed in ["0", "5"] {
+            let o = nyquist(&["points", "--sampler", s, "--count", "4", "--seed", seed]);
+            assert_eq!(stderr(&o), "", "{s}");
+            assert_ne!(o.stdout, plain.stdout, "{s} --seed {seed}");
         }
     }
-    // A seed that does something: no note.
-    let o = nyquist(&[
-        "points",
-        "--sampler",
-        "owen-sobol",
-        "--count",
-        "4",
-        "--seed",
-        "5",
-    ]);
-    assert_eq!(stderr(&o), "");
 }
 
 #[test]

@@ -149,7 +149,15 @@ fn pixel_sampler_bad_input_is_one_line_and_status_2() {
         "pixel sampler",
     );
     assert_one_line_error(
-        &nyquist(&["points", "--sampler", "stratified", "--spp", "10"]),
+        &nyquist(&[
+            "points",
+            "--sampler",
+            "stratified",
+            "--spp",
+            "10",
+            "--grid",
+            "3x3",
+        ]),
         "--grid",
     );
     assert_one_line_error(
@@ -213,4 +221,19 @@ fn korobov_pixel_samples_form_a_rotated_lattice() {
         }
     }
     assert_ne!(r[0][0], r[0][2], "each pair its own shift");
+}
+
+/// Without --grid, a non-square spp takes the core's strata grid (5 × 2 for 10): one sample in
+/// every cell.
+#[test]
+fn stratified_pixel_samples_of_any_spp_fill_the_strata_grid() {
+    let o = nyquist(&["points", "--sampler", "stratified", "--spp", "10"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8(o.stdout).unwrap();
+    let mut hit = [0u32; 10];
+    for line in text.lines().filter(|l| !l.starts_with('x')) {
+        let v: Vec<f64> = line.split(',').map(|t| t.trim().parse().unwrap()).collect();
+        hit[(v[1] * 2.0) as usize * 5 + (v[0] * 5.0) as usize] += 1;
+    }
+    assert_eq!(hit, [1; 10]);
 }

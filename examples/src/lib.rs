@@ -146,7 +146,7 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
     let seconds = start.elapsed().as_secs_f64();
     let samples = film.stats().samples + film.stats().rejected;
     Ok(Rendered {
-        image: film.image().0,
+        image: film.try_image().context("render")?.0,
         samples,
         seconds,
     })

@@ -347,28 +347,29 @@ bool lattice_sequences_capi(Rng& rng) {
     Tally t("Fibonacci, R2, Korobov sequences (C API nyq_sequence_fill)");
     for (std::uint32_t k = 0; k < 4; ++k) {
         NyqSequence seq{};
-        seq.kind = NYQ_SEQ_FIBONACCI;
+        const bool rotated = k % 2 != 0;
+        seq.kind = rotated ? NYQ_SEQ_FIBONACCI_ROTATED : NYQ_SEQ_FIBONACCI;
         seq.dims = 2;
         seq.points = detail::fibonacci(10 + 20 * k);
-        seq.seed = k % 2 ? rng.next() : 0;
+        seq.seed = rotated ? rng.next() : 0;
         Lattice l = Lattice::fibonacci_at_least(seq.points);
-        if (seq.seed != 0) l = l.rotated_by(seq.seed);
+        if (rotated) l = l.rotated_by(seq.seed);
         if (!sequence_capi("Fibonacci", seq, seq.points,
                            [&](std::uint64_t i, std::uint32_t d) { return l.sample(i, d); }, 100000 / g_scale,
                            rng))
             return false;
-        seq.kind = NYQ_SEQ_RD;
+        seq.kind = rotated ? NYQ_SEQ_RD_ROTATED : NYQ_SEQ_RD;
         seq.points = 0;
         Lattice r = Lattice::r2();
-        if (seq.seed != 0) r = r.rotated_by(seq.seed);
+        if (rotated) r = r.rotated_by(seq.seed);
         if (!sequence_capi("R2", seq, 0, [&](std::uint64_t i, std::uint32_t d) { return r.sample(i, d); },
                            100000 / g_scale, rng))
             return false;
         seq.kind = NYQ_SEQ_KOROBOV;
         seq.dims = k % 2 ? 1024 : 8;
         seq.points = k < 2 ? 1021 : (std::uint64_t{1} << 40) + 15;
-        seq.seed = k < 2 ? 76 : 0x1234567891ull;  // the multiplier, coprime to the points
-        const Lattice kor = Lattice::korobov(seq.points, seq.seed, seq.dims);
+        seq.multiplier = k < 2 ? 76 : 0x1234567891ull;  // coprime to the points
+        const Lattice kor = Lattice::korobov(seq.points, seq.multiplier, seq.dims);
         if (!sequence_capi("Korobov", seq, seq.points,
                            [&](std::uint64_t i, std::uint32_t d) { return kor.sample(i, d); }, 100000 / g_scale,
                            rng))

@@ -1043,28 +1043,16 @@ float nyq_sobol_sampler_value(
         uint _e52 = s_15.m;
         v_3 = (_e46 ^ _e49) << _e52;
     } else {
-        if (d_7 < 32u) {
-            if (how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
-                uint _e58 = v_3;
-                metal::uint2 _e59 = nyq_u64_(d_7);
-                metal::uint2 _e60 = nyq_hash2_(seed_29, _e59);
-                v_3 = _e58 ^ (metal::all(seed_29 == metal::uint2(0u, 0u)) ? 0u : _e60.x);
-            } else {
-                uint _e70 = v_3;
-                metal::uint2 _e71 = nyq_u64_(d_7);
-                metal::uint2 _e72 = nyq_hash2_(seed_29, _e71);
-                v_3 = _e70 ^ _e72.y;
-            }
-        } else {
-            uint _e75 = v_3;
-            metal::uint2 _e76 = nyq_u64_(d_7);
-            metal::uint2 _e77 = nyq_hash2_(seed_29, _e76);
-            v_3 = _e75 ^ (metal::all(seed_29 == metal::uint2(0u, 0u)) ? 0u : _e77.x);
+        if (how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
+            uint _e56 = v_3;
+            metal::uint2 _e57 = nyq_u64_(d_7);
+            metal::uint2 _e58 = nyq_hash2_(seed_29, _e57);
+            v_3 = _e56 ^ _e58.x;
         }
     }
-    uint _e87 = v_3;
-    float _e88 = nyq_fraction_to_f32_(_e87);
-    return _e88;
+    uint _e61 = v_3;
+    float _e62 = nyq_fraction_to_f32_(_e61);
+    return _e62;
 }
 
 void nyq_sobol_sampler_start(

@@ -280,7 +280,7 @@ fn nyq_top(v: u32, bits: u32) -> u32 {
 // The sampler for an image of `resolution` at `spp` (rounded up to a power of two), scrambled
 // by `scramble` (NYQ_SCRAMBLE_*) under `seed`: core `SobolSampler::new` (the host
 // checks 2·⌈log₂ max(resolution)⌉ + log₂ spp ≤ 32). The core's sampler named `sobol` (NamedSampler)
-// is NYQ_SCRAMBLE_NONE for seed 0 and NYQ_SCRAMBLE_PERMUTE_DIGITS otherwise.
+// is NYQ_SCRAMBLE_PERMUTE_DIGITS, `sobol-plain` NYQ_SCRAMBLE_NONE.
 fn nyq_sobol_sampler(resolution: vec2<u32>, spp_requested: u32, scramble: u32, seed_in: vec2<u32>) -> NyqSobolSampler {
     let spp = nyq_round_up_pow2(spp_requested);
     let side = max(resolution.x, resolution.y);
@@ -396,17 +396,8 @@ fn nyq_sobol_sampler_value(s: ptr<function, NyqSobolSampler>, dim: u32) -> f32 {
     }
     if d < 2u {
         v = (v ^ (*s).shift[d]) << (*s).m;
-    } else if d < 32u {
-        // The core keeps dimensions 2..32's words: the XOR word for digit permutation, else
-        // the Owen seed's word (which it also XORs without a scramble: zero only for seed 0's
-        // XOR word, not this one).
-        if how == NYQ_SCRAMBLE_PERMUTE_DIGITS {
-            v ^= select(nyq_hash2(seed, nyq_u64(d)).x, 0u, all(seed == vec2<u32>(0u, 0u)));
-        } else {
-            v ^= nyq_hash2(seed, nyq_u64(d)).y;
-        }
-    } else {
-        v ^= select(nyq_hash2(seed, nyq_u64(d)).x, 0u, all(seed == vec2<u32>(0u, 0u)));
+    } else if how == NYQ_SCRAMBLE_PERMUTE_DIGITS {
+        v ^= nyq_hash2(seed, nyq_u64(d)).x;
     }
     return nyq_fraction_to_f32(v);
 }

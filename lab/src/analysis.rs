@@ -10,7 +10,7 @@
 use crate::clock::Stopwatch;
 #[cfg(feature = "clap")]
 use crate::points::parse_grid;
-use crate::points::{PointSetName, PointsSpec, ignores_seed};
+use crate::points::{PointSetName, PointsSpec, ignores_seed, randomized_on_request};
 use anyhow::{Context, Result, anyhow, bail};
 use nyquist::analysis::{
     self, ENUMERATION_LIMIT, MAX_DIMS, PointSet, StarBounds, Topology, star_bounds_scratch_len,
@@ -317,7 +317,7 @@ pub fn report(args: &AnalyzeSpec, host: &mut dyn Host) -> Result<String> {
         None => args,
     };
     check_args(args, host)?;
-    let (coords, dims, source) = load_with(args, args.seed.unwrap_or(0), host)?;
+    let (coords, dims, source) = load_with(args, args.seed, host)?;
     let set = PointSet::new(&coords, dims).map_err(|e| anyhow!("points: {e}"))?;
     let measures = chosen_measures(args, set.len(), dims)?;
     let mut rows = Vec::new();
@@ -374,16 +374,6 @@ fn check_args(args: &AnalyzeSpec, host: &mut dyn Host) -> Result<()> {
             bail!("no points: give a CSV file, pipe one into stdin, or use --sampler NAME");
         }
     }
-    if let (Some(sampler), Some(seed)) = (args.sampler, args.seed)
-        && seed != 0
-        && args.spp.is_none()
-        && ignores_seed(sampler)
-    {
-        host.note(&format!(
-            "--seed {seed} changes nothing: {} points do not depend on a seed",
-            sampler.name()
-        ));
-    }
     if args.star_grid == Some(0) {
         bail!("--star-grid 0: need at least one cell per axis");
     }
@@ -437,7 +427,7 @@ fn check_args(args: &AnalyzeSpec, host: &mut dyn Host) -> Result<()> {
 /// use nyquist_lab::{analysis::{AnalyzeSpec, load}, points::PointSetName};
 /// let spec = AnalyzeSpec { sampler: Some(PointSetName::Halton), count: Some(4),
 ///                          project: vec![2, 0], ..AnalyzeSpec::default() };
-/// let (coords, dims, source) = load(&spec, 0).unwrap();
+/// let (coords, dims, source) = load(&spec, None).unwrap();
 /// assert_eq!(dims, 2);
 /// // Point 1 of Halton: bases 2, 3, 5 give (1/2, 1/3, 1/5); the projection keeps (1/5, 1/2).
 /// assert_eq!(&coords[2..4], &[0.2f32 as f64, 0.5]);
@@ -447,14 +437,14 @@ fn check_args(args: &AnalyzeSpec, host: &mut dyn Host) -> Result<()> {
 /// # Errors
 /// One line naming the flag at fault: an unreadable input, a bad CSV, a sampler that refuses
 /// its flags, or a `--project` dimension the set does not have.
-pub fn load(args: &AnalyzeSpec, seed: u64) -> Result<(Vec<f64>, usize, String)> {
+pub fn load(args: &AnalyzeSpec, seed: Option<u64>) -> Result<(Vec<f64>, usize, String)> {
     load_with(args, seed, &mut Quiet::default())
 }
 
 /// [`load`], with the generator's notes going to `host`.
 fn load_with(
     args: &AnalyzeSpec,
-    seed: u64,
+    seed: Option<u64>,
     host: &mut dyn Host,
 ) -> Result<(Vec<f64>, usize, String)> {
     let (coords, dims, mut source) = load_all(args, seed, host)?;
@@ -490,7 +480,7 @@ fn load_with(
 /// The points before projection.
 fn load_all(
     args: &AnalyzeSpec,
-    seed: u64,
+    seed: Option<u64>,
     host: &mut dyn Host,
 ) -> Result<(Vec<f64>, usize, String)> {
     if let Some(sampler) = args.sampler {
@@ -499,7 +489,14 @@ fn load_all(
         if let Some(spp) = args.spp {
             source = format!("{} --spp {spp}", sampler.name());
         }
-        let _ = write!(source, " --dims {dims} --seed {seed}");
+        let _ = write!(source, " --dims {dims}");
+        // The seed the points were made with: given, or 0 for the always-random sets and the
+        // pixel samplers; none for the deterministic sets.
+        let always =
+            args.spp.is_some() || !(ignores_seed(sampler) || randomized_on_request(sampler));
+        if let Some(seed) = seed.or(always.then_some(0)) {
+            let _ = write!(source, " --seed {seed}");
+        }
         return Ok((pts.iter().map(|&v| f64::from(v)).collect(), dims, source));
     }
     if cfg!(all(target_arch = "wasm32", target_os = "unknown")) {
@@ -534,7 +531,7 @@ fn load_all(
 fn generate(
     args: &AnalyzeSpec,
     sampler: PointSetName,
-    seed: u64,
+    seed: Option<u64>,
     host: &mut dyn Host,
 ) -> Result<(Vec<f32>, usize)> {
     // Without --dims, a projection asks for as many dimensions as its largest index needs.
@@ -900,7 +897,7 @@ fn spectrum(
 /// use nyquist_lab::{analysis::{AnalyzeSpec, load, periodogram}, points::PointSetName};
 /// let spec = AnalyzeSpec { sampler: Some(PointSetName::Random), count: Some(64), freq: Some(4),
 ///                          realisations: 3, ..AnalyzeSpec::default() };
-/// let (coords, dims, _) = load(&spec, 0).unwrap();
+/// let (coords, dims, _) = load(&spec, None).unwrap();
 /// let (s, identical) = periodogram(&spec, &coords, dims, &mut |_, _| {}).unwrap();
 /// assert_eq!((s.max_freq, s.realisations, identical), (4, 3, false));
 /// assert_eq!(s.radial_mean[0], 64.0); // DC: the mean of |Σ 1|² / N = N
@@ -929,10 +926,18 @@ pub fn periodogram(
         .map_err(|e| anyhow!("--spectrum: {e}"))?;
     progress(1, total);
     let mut identical = false;
-    if args.sampler.is_some() {
-        let seed = args.seed.unwrap_or(0);
+    if let Some(sampler) = args.sampler {
+        // Realisation k takes seed + k; a set randomized only on request (halton, sobol, the
+        // lattices, …) stays the deterministic set without --seed, so its realisations agree.
+        let plain = ignores_seed(sampler)
+            || (randomized_on_request(sampler) && args.seed.is_none() && args.spp.is_none());
         for k in 1..total {
-            let (c, d, _) = load(args, seed.wrapping_add(u64::from(k)))?;
+            let seed = if plain {
+                args.seed
+            } else {
+                Some(args.seed.unwrap_or(0).wrapping_add(u64::from(k)))
+            };
+            let (c, d, _) = load(args, seed)?;
             if k == 1 && c == coords {
                 identical = true;
             }

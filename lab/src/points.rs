@@ -12,12 +12,9 @@
 use anyhow::{Result, bail};
 use nyquist::analysis::Topology;
 use nyquist::bluenoise::PoissonDisk;
-use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
+use nyquist::lattice::{FibonacciLattice, Korobov};
 use nyquist::rng::{default_rng, uniform_f32};
-use nyquist::sequence::{
-    Halton, HaltonZaremba, Hammersley, HammersleyZaremba, OwenSobol, Pmj02, Sequence, Sobol,
-    VanDerCorput, ZeroTwo,
-};
+use nyquist::sequence::{NamedSequence, NamedSequenceError, Sequence, SequenceSpec, VanDerCorput};
 use nyquist::stratify::{self, Jitter};
 
 /// The most values (`count × dims`) one call generates: 2²⁸ (1 GiB of `f32`).
@@ -38,7 +35,7 @@ pub enum PointSetName {
     Lhs,
     /// Van der Corput sequence (base 2, one dimension).
     Vdc,
-    /// Halton sequence.
+    /// Halton sequence (--seed permutes its digits).
     Halton,
     /// Hammersley set (needs --count).
     Hammersley,
@@ -46,9 +43,9 @@ pub enum PointSetName {
     HaltonZaremba,
     /// Hammersley set with the folded radical inverse (needs --count).
     HammersleyZaremba,
-    /// Scrambled (0,2)-sequence (two dimensions).
+    /// The (0,2)-sequence (two dimensions; --seed adds a digital shift).
     ZeroTwo,
-    /// Sobol sequence (Joe–Kuo, 1024 dimensions).
+    /// Sobol sequence (Joe–Kuo, 1024 dimensions; --seed adds a digital shift).
     Sobol,
     /// Mitchell's best-candidate blue noise from the baked table (pixel sampler: --spp).
     BestCandidate,
@@ -62,19 +59,19 @@ pub enum PointSetName {
     /// --resolution).
     #[cfg_attr(feature = "clap", value(name = "zsobol"))]
     ZSobol,
-    /// Progressive multi-jittered (0,2) sequence (two dimensions; --seed picks the Owen
-    /// scramble, 0 the baked table itself); with --spp, shuffled and scrambled per pixel.
+    /// Progressive multi-jittered (0,2) sequence (two dimensions: the baked table, or with
+    /// --seed Owen-scrambled); with --spp, shuffled and scrambled per pixel.
     Pmj02,
-    /// Fibonacci lattice (two dimensions; --count a Fibonacci number, default 21; --seed not 0
-    /// picks a Cranley–Patterson rotation).
+    /// Fibonacci lattice (two dimensions; --count a Fibonacci number, default 21; --seed picks
+    /// a Cranley–Patterson rotation).
     Fibonacci,
     /// Korobov rank-1 lattice of --count points: the multiplier of Stroud's (1971) tables where
     /// they have --count and --dims (3 to 6 dimensions, primes 101 to 10007), else the minimiser
-    /// of the P2 criterion (at most 4096 points; 2^24 in two dimensions); --seed not 0 picks a
+    /// of the P2 criterion (at most 4096 points; 2^24 in two dimensions); --seed picks a
     /// Cranley–Patterson rotation. With --spp, the pixel sampler korobov.
     Korobov,
-    /// Roberts' R_d Kronecker sequence (R2 in two dimensions; --seed not 0 picks a
-    /// Cranley–Patterson rotation in place of the start ½).
+    /// Roberts' R_d Kronecker sequence (R2 in two dimensions; --seed picks a Cranley–Patterson
+    /// rotation in place of the start ½).
     #[cfg_attr(feature = "clap", value(name = "rd", alias = "r2"))]
     Rd,
     /// Blue-noise dithered sampling: the zero-two set of pixel (0, 0) shifted per pixel by the
@@ -168,10 +165,12 @@ pub struct PointsSpec {
     /// Dimensions per point [default: 2, or the set's own count when it has fewer (vdc: 1)].
     #[cfg_attr(feature = "clap", arg(long))]
     pub dims: Option<u32>,
-    /// Seed of random and scrambled sets (plain vdc, halton, hammersley, their zaremba forms,
-    /// sobol and uniform take none: a note says so).
-    #[cfg_attr(feature = "clap", arg(long, default_value_t = 0))]
-    pub seed: u64,
+    /// Seed of the random sets and pixel samplers [default: 0]; for halton, sobol, zero-two,
+    /// pmj02, fibonacci, korobov and rd it asks for their randomization (digit permutation,
+    /// digital shift, Owen scramble, rotation; any seed, 0 included), which they lack without
+    /// it. vdc, hammersley, the zaremba forms and uniform point sets take none.
+    #[cfg_attr(feature = "clap", arg(long))]
+    pub seed: Option<u64>,
     /// Index of the first point of a sequence (sequences and random only).
     #[cfg_attr(feature = "clap", arg(long, default_value_t = 0))]
     pub skip: u64,
@@ -199,7 +198,7 @@ impl Default for PointsSpec {
             sampler: PointSetName::Halton,
             count: None,
             dims: None,
-            seed: 0,
+            seed: None,
             skip: 0,
             grid: None,
             spp: None,
@@ -302,18 +301,37 @@ pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     Ok((x, y))
 }
 
-/// Whether the point set `sampler` prints (without `--spp`) is the same for every seed.
+/// Whether the point set `sampler` (without `--spp`) has no randomization, so that a seed is
+/// refused: uniform, vdc, hammersley and the zaremba forms.
+///
+/// ```
+/// use nyquist_lab::points::{PointSetName, ignores_seed};
+/// assert!(ignores_seed(PointSetName::Hammersley));
+/// assert!(!ignores_seed(PointSetName::Halton)); // a seed permutes its digits
+/// ```
 pub fn ignores_seed(sampler: PointSetName) -> bool {
     use PointSetName as S;
     matches!(
         sampler,
-        S::Uniform
-            | S::Vdc
-            | S::Halton
-            | S::Hammersley
-            | S::HaltonZaremba
-            | S::HammersleyZaremba
-            | S::Sobol
+        S::Uniform | S::Vdc | S::Hammersley | S::HaltonZaremba | S::HammersleyZaremba
+    )
+}
+
+/// Whether the point set `sampler` (without `--spp`) is deterministic unless a seed asks for
+/// its randomization: halton, sobol, zero-two, pmj02 and the lattices. The other sets (random,
+/// stratified, lhs, owen-sobol, the Poisson-disk sets) are always random (seed 0 by default),
+/// or have no randomization ([`ignores_seed`]).
+///
+/// ```
+/// use nyquist_lab::points::{PointSetName, randomized_on_request};
+/// assert!(randomized_on_request(PointSetName::Sobol));
+/// assert!(!randomized_on_request(PointSetName::Random));
+/// ```
+pub fn randomized_on_request(sampler: PointSetName) -> bool {
+    use PointSetName as S;
+    matches!(
+        sampler,
+        S::Halton | S::Sobol | S::ZeroTwo | S::Pmj02 | S::Fibonacci | S::Korobov | S::Rd
     )
 }
 
@@ -359,10 +377,7 @@ fn pixel_mode(args: &PointsSpec) -> bool {
 /// dimension count and the strata grid to draw (if any).
 fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoints> {
     use PointSetName as S;
-    use nyquist::sampler::{
-        AdaptiveSampler, BestCandidateSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler,
-        Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
-    };
+    use nyquist::sampler::{NamedSampler, Sampler, StratifiedSampler};
     let n = args.sampler.name();
     let dims = dims_of(args);
     if dims == 0 {
@@ -420,101 +435,54 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
     if args.grid.is_some() && !matches!(args.sampler, S::Uniform | S::Stratified) {
         bail!("--grid applies to uniform and stratified, not to {n}");
     }
-    let err = |e: nyquist::Error| anyhow::anyhow!("{n}: {e}");
-    let named = |name: &str, size: [u32; 2], spp: u32, seed: u64| {
-        nyquist::sampler::NamedSampler::new(name, size, spp, seed)
-            .map_err(|e| anyhow::anyhow!("{n}: {e}"))
-    };
-    let mut notice = |rounded: (u32, bool)| {
-        if rounded.1 {
-            notes.push(format!(
-                "{n} uses a power-of-two spp: --spp {spp} rounded up to {}",
-                rounded.0
-            ));
-        }
-    };
-    let mut grid = None;
-    let mut sampler: Box<dyn Sampler> = match args.sampler {
-        S::Random => Box::new(RandomSampler::new(spp, args.seed).map_err(err)?),
-        S::Uniform | S::Stratified => {
-            let (nx, ny) = match args.grid {
-                Some((nx, ny)) if u64::from(nx) * u64::from(ny) == u64::from(spp) => (nx, ny),
-                Some((nx, ny)) => bail!(
-                    "--grid {nx}x{ny} has {} cells but --spp is {spp}",
-                    u64::from(nx) * u64::from(ny)
-                ),
-                None => {
-                    let side = spp.isqrt();
-                    if side * side != spp {
-                        bail!("--spp {spp} is not a square: give --grid NXxNY for {n}");
-                    }
-                    (side, side)
-                }
-            };
-            grid = Some((nx, ny));
-            Box::new(if args.sampler == S::Uniform {
-                StratifiedSampler::uniform(nx, ny, args.seed).map_err(err)?
-            } else {
-                StratifiedSampler::new(nx, ny, nyquist::sampler::Jitter::Jittered, args.seed)
-                    .map_err(err)?
-            })
-        }
-        S::ZeroTwo => {
-            notice(ZeroTwoSampler::rounded_spp(spp));
-            Box::new(ZeroTwoSampler::new(spp, args.seed).map_err(err)?)
-        }
-        S::Sobol => {
-            notice(SobolSampler::rounded_spp(spp));
-            Box::new(named(n, resolution, spp, args.seed)?)
-        }
-        // The names' own scramble rule (none for seed 0, digit permutation otherwise) is
-        // NamedSampler's; build them through it.
-        S::Halton | S::Hammersley => Box::new(named(n, resolution, spp, args.seed)?),
-        S::BestCandidate => Box::new(BestCandidateSampler::new(spp, args.seed).map_err(err)?),
-        S::OwenSobol => Box::new(OwenSobolSampler::new(spp, args.seed).map_err(err)?),
-        S::Pmj02 => Box::new(Pmj02Sampler::new(spp, args.seed).map_err(err)?),
-        S::ZSobol => {
-            notice(ZSobolSampler::rounded_spp(spp));
-            Box::new(
-                ZSobolSampler::new(
-                    resolution,
-                    spp,
-                    nyquist::scramble::Scramble::FastOwen,
-                    args.seed,
-                )
-                .map_err(err)?,
-            )
-        }
-        S::Adaptive => {
-            notice(ZeroTwoSampler::rounded_spp(spp));
-            let inner = ZeroTwoSampler::new(spp, args.seed).map_err(err)?;
-            let min = (inner.samples_per_pixel() / 4).max(1);
-            Box::new(AdaptiveSampler::new(inner, min, 0.1).map_err(err)?)
-        }
-        S::Fibonacci | S::Rd | S::Korobov => {
-            let which = match args.sampler {
-                S::Fibonacci => "fibonacci",
-                S::Korobov => "korobov",
-                _ => "r2",
-            };
-            let s = nyquist::sampler::NamedSampler::new(which, [1, 1], spp, args.seed)
-                .map_err(|e| anyhow::anyhow!("--sampler {n}: {e}"))?;
-            if s.samples_per_pixel() != spp {
-                notice((s.samples_per_pixel(), true));
-            }
-            Box::new(s)
-        }
-        S::BluenoiseDithered => {
-            notice(ZeroTwoSampler::rounded_spp(spp));
-            Box::new(nyquist::sampler::DitheredSampler::new(
-                ZeroTwoSampler::new(spp, args.seed).map_err(err)?,
-                nyquist::sampler::MaskView::builtin(),
-            ))
-        }
+    let seed = args.seed.unwrap_or(0);
+    let name = match args.sampler {
+        S::Rd => "r2",
         S::Lhs | S::Vdc | S::HaltonZaremba | S::HammersleyZaremba | S::PoissonDisk | S::Bridson => {
             bail!(
                 "{n} is a point set, not a pixel sampler: drop --spp/--pixel/--resolution and use --count"
             )
+        }
+        other => other.name(),
+    };
+    let mut grid = None;
+    let mut sampler: Box<dyn Sampler> = match (args.sampler, args.grid) {
+        (S::Uniform | S::Stratified, Some((nx, ny))) => {
+            if u64::from(nx) * u64::from(ny) != u64::from(spp) {
+                bail!(
+                    "--grid {nx}x{ny} has {} cells but --spp is {spp}",
+                    u64::from(nx) * u64::from(ny)
+                );
+            }
+            grid = Some((nx, ny));
+            let jitter = if args.sampler == S::Uniform {
+                nyquist::sampler::Jitter::Centered
+            } else {
+                nyquist::sampler::Jitter::Jittered
+            };
+            Box::new(
+                StratifiedSampler::new(nx, ny, jitter, seed)
+                    .map_err(|e| anyhow::anyhow!("{n}: {e}"))?,
+            )
+        }
+        _ => {
+            let s = NamedSampler::new(name, resolution, spp, seed)
+                .map_err(|e| anyhow::anyhow!("--sampler {n}: {e}"))?;
+            if matches!(args.sampler, S::Uniform | S::Stratified) {
+                let [nx, ny] = nyquist::sampler::strata(spp);
+                grid = Some((nx, ny));
+            }
+            if s.samples_per_pixel() != spp {
+                let why = match args.sampler {
+                    S::Fibonacci => "a Fibonacci number of samples",
+                    _ => "a power-of-two spp",
+                };
+                notes.push(format!(
+                    "{n} uses {why}: --spp {spp} rounded up to {}",
+                    s.samples_per_pixel()
+                ));
+            }
+            Box::new(s)
         }
     };
     let spp = sampler.samples_per_pixel();
@@ -533,24 +501,82 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
     Ok((out, dims as usize, grid))
 }
 
-/// The Korobov lattice of `count` points in `dims` dimensions: Stroud's tabled multiplier where
-/// the table has (`count`, `dims`), else the exhaustive P2 search up to 4096 points, and the
-/// two-dimensional one above. A note on stderr says which.
-fn korobov_lattice(
+/// The core's [`NamedSequence`] for the sequence `args` names: `count` is the set's size for
+/// hammersley, its zaremba form, fibonacci and korobov; `--seed` asks for the randomization.
+/// Notes which Korobov multiplier was taken.
+fn named_sequence(
+    args: &PointsSpec,
     count: u64,
     dims: u32,
     notes: &mut Vec<String>,
-) -> Result<Korobov, nyquist::Error> {
-    let (lattice, how) = match Korobov::tabled(count, dims) {
-        Ok(k) => (k, "from Stroud (1971), Tables 6.2–6.5"),
-        Err(_) if dims == 2 && count > 4096 => (Korobov::searched_2d(count)?, "minimising P2"),
-        Err(_) => (Korobov::searched(count, dims)?, "minimising P2"),
+) -> Result<NamedSequence> {
+    use PointSetName as S;
+    let name = match args.sampler {
+        S::Rd => "rd",
+        other => other.name(),
     };
-    notes.push(format!(
-        "korobov: {count} points, multiplier {} {how}",
-        lattice.multiplier()
-    ));
-    Ok(lattice)
+    let sized = matches!(
+        args.sampler,
+        S::Hammersley | S::HammersleyZaremba | S::Fibonacci | S::Korobov
+    );
+    if args.sampler == S::Fibonacci {
+        let next = FibonacciLattice::at_least(count)
+            .ok()
+            .and_then(|f| f.point_count())
+            .filter(|&n| n != count);
+        if let Some(n) = next {
+            bail!("--count {count} is not a Fibonacci number (the next is {n})");
+        }
+    }
+    let tabled = args.sampler == S::Korobov && Korobov::tabled(count, dims).is_ok();
+    if args.sampler == S::Korobov && !tabled {
+        let max = if dims == 2 {
+            nyquist::lattice::KOROBOV_MAX_SEARCHED_2D
+        } else {
+            4096
+        };
+        if count > max {
+            let sizes: Vec<String> = Korobov::tabled_sizes(dims).map(|n| n.to_string()).collect();
+            let table = if sizes.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    "; Stroud's table has {} for {dims} dimensions",
+                    sizes.join(", ")
+                )
+            };
+            bail!(
+                "--count {count}: korobov searches its multiplier for at most {max} points in \
+                 {dims} dimensions{table}"
+            );
+        }
+    }
+    let spec = SequenceSpec {
+        dims,
+        points: sized.then_some(count),
+        seed: args.seed,
+        multiplier: None,
+    };
+    let set = NamedSequence::new(name, spec).map_err(|e| match (e, args.seed) {
+        (NamedSequenceError::NotRandomized { .. }, Some(seed)) => anyhow::anyhow!(
+            "--seed {seed}: {} has no randomization, its points do not depend on a seed (drop \
+             --seed; halton, sobol, zero-two, pmj02, fibonacci, korobov and rd take one)",
+            args.sampler.name()
+        ),
+        (e, _) => anyhow::anyhow!("--sampler {}: {e}", args.sampler.name()),
+    })?;
+    if let NamedSequence::Korobov(k) = &set {
+        let how = if tabled {
+            "from Stroud (1971), Tables 6.2–6.5"
+        } else {
+            "minimising P2"
+        };
+        notes.push(format!(
+            "korobov: {count} points, multiplier {} {how}",
+            k.multiplier()
+        ));
+    }
+    Ok(set)
 }
 
 /// Generates the points `args` asks for, point-major, and their dimension count.
@@ -604,11 +630,20 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
         &format!("--count {count} × --dims {dims}"),
         crate::memory::bytes(values, 4),
     )?;
+    if let Some(seed) = args.seed
+        && ignores_seed(args.sampler)
+    {
+        bail!(
+            "--seed {seed}: {} has no randomization, its points do not depend on a seed (drop \
+             --seed; halton, sobol, zero-two, pmj02, fibonacci, korobov and rd take one)",
+            args.sampler.name()
+        );
+    }
     let mut out = crate::memory::try_filled(values as usize, 0.0f32, "the points")?;
     let set_error = |e: nyquist::Error| anyhow::anyhow!("{}: {e}", args.sampler.name());
     match args.sampler {
         S::Random => {
-            let mut rng = default_rng(args.seed);
+            let mut rng = default_rng(args.seed.unwrap_or(0));
             for _ in 0..args.skip.saturating_mul(u64::from(dims)) {
                 uniform_f32(&mut rng);
             }
@@ -620,7 +655,7 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
             } else {
                 Jitter::Jittered
             };
-            let mut rng = default_rng(args.seed);
+            let mut rng = default_rng(args.seed.unwrap_or(0));
             match dims {
                 1 => stratify::stratified_1d(&mut out, jitter, &mut rng).map_err(set_error)?,
                 2 => {
@@ -651,86 +686,20 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
             }
         }
         S::Lhs => {
-            stratify::latin_hypercube(&mut out, dims, &mut default_rng(args.seed))
+            stratify::latin_hypercube(&mut out, dims, &mut default_rng(args.seed.unwrap_or(0)))
                 .map_err(set_error)?;
         }
-        S::Vdc => fill(&VanDerCorput, args, &mut out)?,
-        S::Halton => fill(&Halton::new(dims).map_err(set_error)?, args, &mut out)?,
-        S::HaltonZaremba => fill(
-            &HaltonZaremba::new(dims).map_err(set_error)?,
-            args,
-            &mut out,
-        )?,
-        S::Hammersley => fill(
-            &Hammersley::new(count, dims).map_err(set_error)?,
-            args,
-            &mut out,
-        )?,
-        S::HammersleyZaremba => fill(
-            &HammersleyZaremba::new(count, dims).map_err(set_error)?,
-            args,
-            &mut out,
-        )?,
-        S::ZeroTwo => fill(&ZeroTwo::from_seed(args.seed), args, &mut out)?,
-        S::Sobol => fill(&Sobol::new(dims).map_err(set_error)?, args, &mut out)?,
-        S::OwenSobol => fill(
-            &OwenSobol::new(dims, args.seed).map_err(set_error)?,
-            args,
-            &mut out,
-        )?,
-        S::Pmj02 => {
-            let set = if args.seed == 0 {
-                Pmj02::new()
-            } else {
-                Pmj02::scrambled(args.seed)
-            };
-            fill(&set, args, &mut out)?
-        }
-        S::Fibonacci => {
-            let lattice = FibonacciLattice::at_least(count).map_err(set_error)?;
-            let n = lattice.point_count().unwrap_or(count);
-            if n != count {
-                bail!("--count {count} is not a Fibonacci number (the next is {n})");
-            }
-            let lattice = if args.seed == 0 {
-                lattice
-            } else {
-                lattice.rotated(args.seed)
-            };
-            fill(&lattice, args, &mut out)?
-        }
-        S::Korobov => {
-            let lattice = korobov_lattice(count, dims, notes).map_err(|e| match e {
-                nyquist::Error::NotInRange { what: "n", .. } => {
-                    let tabled: Vec<String> =
-                        Korobov::tabled_sizes(dims).map(|n| n.to_string()).collect();
-                    let tabled = if tabled.is_empty() {
-                        String::new()
-                    } else {
-                        format!(
-                            "; Stroud's table has {} for {dims} dimensions",
-                            tabled.join(", ")
-                        )
-                    };
-                    anyhow::anyhow!(
-                        "--count {count}: korobov searches its multiplier for at most {} points \
-                         in {dims} dimensions{tabled}",
-                        if dims == 2 {
-                            nyquist::lattice::KOROBOV_MAX_SEARCHED_2D
-                        } else {
-                            4096
-                        }
-                    )
-                }
-                e => set_error(e),
-            })?;
-            let lattice = if args.seed == 0 {
-                lattice
-            } else {
-                lattice.rotated(args.seed)
-            };
-            fill(&lattice, args, &mut out)?
-        }
+        S::Vdc
+        | S::Halton
+        | S::HaltonZaremba
+        | S::Hammersley
+        | S::HammersleyZaremba
+        | S::ZeroTwo
+        | S::Sobol
+        | S::OwenSobol
+        | S::Pmj02
+        | S::Fibonacci
+        | S::Korobov => fill(&named_sequence(args, count, dims, notes)?, args, &mut out)?,
         S::PoissonDisk | S::Bridson => {
             if args.skip != 0 {
                 bail!(
@@ -744,12 +713,13 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
             };
             let count = u32::try_from(count)
                 .map_err(|_| anyhow::anyhow!("--count {count}: too many for a Poisson-disk set"))?;
-            let pd = PoissonDisk::with_count(count, topology, args.seed).map_err(|e| {
-                anyhow::anyhow!(
-                    "--count {count}: {}: {e} (at most about 1.2 million points)",
-                    args.sampler.name()
-                )
-            })?;
+            let pd =
+                PoissonDisk::with_count(count, topology, args.seed.unwrap_or(0)).map_err(|e| {
+                    anyhow::anyhow!(
+                        "--count {count}: {}: {e} (at most about 1.2 million points)",
+                        args.sampler.name()
+                    )
+                })?;
             let pd = if maximal { pd.maximal() } else { pd };
             let (g, a) = pd.scratch_len();
             let mut pts = vec![0.0f64; 2 * g];
@@ -763,15 +733,7 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
             ));
             out = pts[..2 * n].iter().map(|&v| v as f32).collect();
         }
-        S::Rd => {
-            let seq = Kronecker::new(dims).map_err(set_error)?;
-            let seq = if args.seed == 0 {
-                seq
-            } else {
-                seq.rotated(args.seed)
-            };
-            fill(&seq, args, &mut out)?
-        }
+        S::Rd => fill(&named_sequence(args, count, dims, notes)?, args, &mut out)?,
         S::BestCandidate | S::Adaptive | S::ZSobol | S::BluenoiseDithered => {
             bail!("{} is a pixel sampler: give --spp", args.sampler.name())
         }

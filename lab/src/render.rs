@@ -262,7 +262,7 @@ pub fn render(
     let start = Stopwatch::start();
     render_with(&mut film, sampler, scene, size, threads, tick)
         .map_err(|e| anyhow!("render: {e}"))?;
-    let (image, _) = film.image();
+    let (image, _) = film.try_image().map_err(|e| anyhow!("render: {e}"))?;
     Ok(Rendered {
         image,
         stats: film.stats(),

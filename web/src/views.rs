@@ -74,7 +74,11 @@ struct SetQuery {
 fn set_query(q: &Query, max_count: u64) -> Result<SetQuery> {
     let sampler: PointSet = q.choice("sampler", "halton")?;
     let name = sampler.name();
-    let seed = q.int("seed", 0, 0, u64::MAX)?;
+    // No seed: the deterministic sets stay deterministic (as on the command line).
+    let seed = match q.has("seed") {
+        true => Some(q.int("seed", 0, 0, u64::MAX)?),
+        false => None,
+    };
     let x = q.int("x", 0, 0, MAX_DIM)? as u32;
     let y = q.int("y", 1, 0, MAX_DIM)? as u32;
     if x == y {
@@ -111,14 +115,18 @@ fn set_query(q: &Query, max_count: u64) -> Result<SetQuery> {
         }
         _ => None,
     };
-    flags.push_str(&format!(" --dims {dims} --seed {seed} --project {x},{y}"));
+    flags.push_str(&format!(" --dims {dims}"));
+    if let Some(seed) = seed {
+        flags.push_str(&format!(" --seed {seed}"));
+    }
+    flags.push_str(&format!(" --project {x},{y}"));
     let args = AnalyzeArgs {
         input: None,
         input_flag: None,
         sampler: Some(sampler),
         count,
         dims: Some(dims.max(2)),
-        seed: Some(seed),
+        seed,
         skip: None,
         grid,
         spp,
@@ -193,7 +201,7 @@ pub fn points(q: &Query) -> Result<Reply> {
         Measure::MinDistance,
     ];
     let analysis = analyze::report(&s.args, &mut Quiet::default())?;
-    let (coords, _, _) = analyze::load(&s.args, s.args.seed.unwrap_or(0))?;
+    let (coords, _, _) = analyze::load(&s.args, s.args.seed)?;
     let pairs: Vec<[f64; 2]> = coords.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
     let pair =
         closest_pair(&pairs).map_or_else(|| "null".to_owned(), |(i, j)| format!("[{i},{j}]"));
@@ -261,7 +269,7 @@ pub fn spectrum(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply
     let realisations = q.int("realisations", 16, 1, 1024)? as u32;
     s.args.freq = Some(freq);
     s.args.realisations = realisations;
-    let (coords, dims, _) = analyze::load(&s.args, s.args.seed.unwrap_or(0))?;
+    let (coords, dims, _) = analyze::load(&s.args, s.args.seed)?;
     let n = coords.len() / dims;
     let side = 2.0 * f64::from(freq) + 1.0;
     let terms = f64::from(realisations) * n as f64 * side * side;

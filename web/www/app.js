@@ -5,9 +5,9 @@ const VIEWS = ['points', 'spectrum', 'aliasing', 'filters', 'convergence'];
 /** Keys that only the page reads; the request to the worker leaves them out. */
 const PAGE_KEYS = new Set(['overlay', 'shape', 'crop']);
 const DEFAULTS = {
-  points: { sampler: 'halton', count: '256', spp: '', grid: '', seed: '0', x: '0', y: '1',
+  points: { sampler: 'halton', count: '256', spp: '', grid: '', seed: '', x: '0', y: '1',
     overlay: 'strata', shape: '' },
-  spectrum: { sampler: 'stratified', count: '256', spp: '', grid: '', seed: '0', x: '0', y: '1',
+  spectrum: { sampler: 'stratified', count: '256', spp: '', grid: '', seed: '', x: '0', y: '1',
     freq: '32', realisations: '16' },
   aliasing: { scene: 'zoneplate', size: '256x256', sampler: 'stratified', filter: 'box',
     spp: '16', seed: '0', crop: '' },

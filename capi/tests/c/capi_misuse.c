@@ -72,7 +72,7 @@ int main(void) {
     EXPECT(nyq_fill_radical_inverse(0, 0, buf, 0), NYQ_ERR_ZERO_SIZE);
     EXPECT(nyq_stratified_1d(buf, 0, true, 1), NYQ_ERR_ZERO_SIZE);
     EXPECT(nyq_stratified_2d(buf, 7, 2, 2, true, 1), NYQ_ERR_BUFFER); /* 2 × 2 points need 8 */
-    NyqSequence halton = {NYQ_SEQ_HALTON, 2, 0, 0};
+    NyqSequence halton = {NYQ_SEQ_HALTON, 2, 0, 0, 0};
     EXPECT(nyq_sequence_fill(&halton, 0, 2, buf, 3, &written), NYQ_ERR_BUFFER); /* not a multiple */
     UNTOUCHED(written == 777u);
 
@@ -93,7 +93,7 @@ int main(void) {
     /* Out-of-range values. */
     EXPECT(nyq_radical_inverse(1024, 1, &x), NYQ_ERR_OUT_OF_RANGE);
     EXPECT(nyq_radical_inverse_f64(5000, 1, &d), NYQ_ERR_OUT_OF_RANGE);
-    NyqSequence bad_kind = {999, 2, 0, 0};
+    NyqSequence bad_kind = {999, 2, 0, 0, 0};
     EXPECT(nyq_sequence_sample(&bad_kind, 0, 0, &x), NYQ_ERR_OUT_OF_RANGE);
     UNTOUCHED(x == -1.0f && d == -1.0);
 

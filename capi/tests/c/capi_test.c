@@ -89,13 +89,13 @@ static void radical(void) {
 
 static void sequences(void) {
     const NyqSequence seqs[] = {
-        {NYQ_SEQ_VAN_DER_CORPUT, 1, 0, 0},  {NYQ_SEQ_HALTON, 3, 0, 0},
-        {NYQ_SEQ_HALTON_ZAREMBA, 3, 0, 0},  {NYQ_SEQ_HALTON_SCRAMBLED, 3, 0, 42},
-        {NYQ_SEQ_HAMMERSLEY, 3, 16, 0},     {NYQ_SEQ_HAMMERSLEY_ZAREMBA, 2, 16, 0},
-        {NYQ_SEQ_SOBOL, 4, 0, 0},           {NYQ_SEQ_SOBOL_SCRAMBLED, 4, 0, 7},
-        {NYQ_SEQ_ZERO_TWO, 2, 0, 0},        {NYQ_SEQ_ZERO_TWO_SCRAMBLED, 2, 0, 9},
+        {NYQ_SEQ_VAN_DER_CORPUT, 1, 0, 0, 0},  {NYQ_SEQ_HALTON, 3, 0, 0, 0},
+        {NYQ_SEQ_HALTON_ZAREMBA, 3, 0, 0, 0},  {NYQ_SEQ_HALTON_SCRAMBLED, 3, 0, 42, 0},
+        {NYQ_SEQ_HAMMERSLEY, 3, 16, 0, 0},     {NYQ_SEQ_HAMMERSLEY_ZAREMBA, 2, 16, 0, 0},
+        {NYQ_SEQ_SOBOL, 4, 0, 0, 0},           {NYQ_SEQ_SOBOL_SCRAMBLED, 4, 0, 7, 0},
+        {NYQ_SEQ_ZERO_TWO, 2, 0, 0, 0},        {NYQ_SEQ_ZERO_TWO_SCRAMBLED, 2, 0, 9, 0},
     };
-    static const uint64_t idx[] = {0, 1, 7, 13};
+    static const uint64_t idx[] = {0, 1, 7, 13, 0};
     for (size_t s = 0; s < sizeof seqs / sizeof seqs[0]; s++) {
         const NyqSequence *q = &seqs[s];
         for (size_t i = 0; i < 4; i++) {
@@ -273,13 +273,13 @@ static void errors(void) {
     put_status("fill_ri_zero", nyq_fill_radical_inverse(0, 0, buf, 0));
     put_status("fill_ri_null", nyq_fill_radical_inverse(0, 0, NULL, 4));
 
-    NyqSequence halton = {NYQ_SEQ_HALTON, 2, 0, 0};
-    NyqSequence bad_kind = {99, 2, 0, 0};
-    NyqSequence zero_dims = {NYQ_SEQ_SOBOL, 0, 0, 0};
-    NyqSequence sobol_big = {NYQ_SEQ_SOBOL, 1025, 0, 0};
-    NyqSequence hammersley = {NYQ_SEQ_HAMMERSLEY, 2, 16, 0};
-    NyqSequence hammersley0 = {NYQ_SEQ_HAMMERSLEY, 2, 0, 0};
-    NyqSequence vdc2 = {NYQ_SEQ_VAN_DER_CORPUT, 2, 0, 0};
+    NyqSequence halton = {NYQ_SEQ_HALTON, 2, 0, 0, 0};
+    NyqSequence bad_kind = {99, 2, 0, 0, 0};
+    NyqSequence zero_dims = {NYQ_SEQ_SOBOL, 0, 0, 0, 0};
+    NyqSequence sobol_big = {NYQ_SEQ_SOBOL, 1025, 0, 0, 0};
+    NyqSequence hammersley = {NYQ_SEQ_HAMMERSLEY, 2, 16, 0, 0};
+    NyqSequence hammersley0 = {NYQ_SEQ_HAMMERSLEY, 2, 0, 0, 0};
+    NyqSequence vdc2 = {NYQ_SEQ_VAN_DER_CORPUT, 2, 0, 0, 0};
     put_status("seq_null_seq", nyq_sequence_sample(NULL, 0, 0, &f));
     put_status("seq_null_out", nyq_sequence_sample(&halton, 0, 0, NULL));
     put_status("seq_bad_kind", nyq_sequence_sample(&bad_kind, 0, 0, &f));

@@ -588,7 +588,7 @@ mod tests {
         let mut changed = 0;
         for pixel in [[0, 0], [3, 1]] {
             for i in 0..4 {
-                let idx = plain.sequence_index(pixel, i) as u32;
+                let idx = plain.sequence_index(pixel, i);
                 plain.start_pixel_sample(pixel, i, 0);
                 permuted.start_pixel_sample(pixel, i, 0);
                 for d in 0..40u32 {

@@ -21,6 +21,7 @@ use crate::Error;
 
 mod halton;
 mod hammersley;
+mod named;
 mod owen_sobol;
 pub(crate) mod pmj02;
 mod sobol;
@@ -31,6 +32,10 @@ mod zero_two;
 
 pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 pub use hammersley::{Hammersley, HammersleyZaremba};
+pub use named::{
+    NamedSequence, NamedSequenceError, SEQUENCE_NAMES, SequenceSpec, canonical_sequence_name,
+    randomization,
+};
 pub use owen_sobol::OwenSobol;
 pub(crate) use owen_sobol::{DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32};
 pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
