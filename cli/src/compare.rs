@@ -96,8 +96,8 @@ pub struct CompareArgs {
     /// Seed of every sampler.
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Scramble of the halton, sobol and zsobol rows (the other rows have none) [default: each
-    /// sampler's own, as in `render`].
+    /// Scramble of the halton, hammersley, sobol and zsobol rows (the other rows have none)
+    /// [default: each sampler's own, as in `render`].
     #[arg(long, value_enum, value_name = "SCRAMBLE")]
     pub scramble: Option<ScrambleName>,
     /// The contact sheet (PNG) [default: compare.png; with --json, no sheet is written unless

@@ -74,8 +74,9 @@ pub struct RenderArgs {
     /// Seed of the sampler's random numbers and scrambles (0: unscrambled halton/hammersley).
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
-    /// Scramble of halton, sobol and zsobol [default: each sampler's own: digit permutation for
-    /// halton when --seed is not 0, sobol's random digits, fast-owen for zsobol].
+    /// Scramble of halton, hammersley (its dimensions from 2 on), sobol and zsobol [default:
+    /// each sampler's own: digit permutation for halton, hammersley and sobol (every seed),
+    /// fast-owen for zsobol; none: the unscrambled sequences].
     #[arg(long, value_enum, value_name = "SCRAMBLE")]
     pub scramble: Option<ScrambleName>,
     /// Write the image here: .png (8-bit sRGB), .exr (32-bit float) or .pfm (32-bit float).

@@ -304,7 +304,8 @@ fn help_has_an_example() {
 }
 
 /// `--scramble` picks the scramble of halton, sobol and zsobol: each of the four gives its own
-/// image; for halton and sobol `none` ignores the seed (zsobol's seed also permutes its Morton
+/// image (hammersley takes it too, for its dimensions from 2 on, which a zone plate does not
+/// read); for halton and sobol `none` ignores the seed (zsobol's seed also permutes its Morton
 /// digits); samplers without a choice refuse it (one line, exit 2, nothing written). `compare`
 /// applies it to those rows only.
 #[test]

@@ -49,13 +49,16 @@ pub enum SamplerName {
     Random,
     /// Jittered strata, √spp × √spp per pixel.
     Stratified,
-    /// One Halton sequence over the whole image (scrambled when --seed is not 0).
+    /// One Halton sequence over the whole image, digit-permuted by --seed (--scramble none:
+    /// unscrambled).
     Halton,
-    /// Hammersley points per pixel block (scrambled when --seed is not 0).
+    /// Hammersley points per pixel block, digit-permuted by --seed (--scramble none:
+    /// unscrambled).
     Hammersley,
     /// Scrambled (0,2)-sequence per pixel (spp rounded up to a power of two).
     ZeroTwo,
-    /// One Sobol sequence over the whole image (spp rounded up to a power of two).
+    /// One Sobol sequence over the whole image, digit-permuted by --seed (--scramble none:
+    /// unscrambled; spp rounded up to a power of two).
     Sobol,
     /// Mitchell's best-candidate blue noise.
     BestCandidate,

@@ -45,7 +45,7 @@ pub const NAMES: [&str; 16] = [
 /// use nyquist::sampler::{NAMES, SCRAMBLE_NAMES};
 /// assert!(SCRAMBLE_NAMES.iter().all(|n| NAMES.contains(n)));
 /// ```
-pub const SCRAMBLE_NAMES: [&str; 3] = ["halton", "sobol", "zsobol"];
+pub const SCRAMBLE_NAMES: [&str; 4] = ["halton", "hammersley", "sobol", "zsobol"];
 
 /// Names [`NamedSampler::new`] also accepts: `halton-plain`, `hammersley-plain` and
 /// `sobol-plain` are `halton`, `hammersley` and `sobol` without their digit permutation (the
@@ -177,7 +177,7 @@ impl fmt::Display for NamedSamplerError {
             }
             NamedSamplerError::Sampler(e) => e.fmt(f),
             NamedSamplerError::NoScramble => {
-                f.write_str("no scramble choice (halton, sobol and zsobol have one)")
+                f.write_str("no scramble choice (halton, hammersley, sobol and zsobol have one)")
             }
         }
     }
@@ -387,9 +387,10 @@ impl NamedSampler {
 
     /// [`NamedSampler::new`] with the scramble chosen instead of defaulted, for the samplers
     /// that offer the four of [`Scramble`] (pbrt-v4's names): `halton`
-    /// ([`HaltonSampler::new`]), `sobol` ([`SobolSampler::new`]) and `zsobol`
-    /// ([`ZSobolSampler::new`]). `new` picks digit permutation for halton and sobol and fast
-    /// Owen for zsobol.
+    /// ([`HaltonSampler::new`]), `hammersley` ([`HammersleySampler::new`]), `sobol`
+    /// ([`SobolSampler::new`]) and `zsobol` ([`ZSobolSampler::new`]). `new` picks digit
+    /// permutation for halton, hammersley and sobol and fast Owen for zsobol;
+    /// [`Scramble::None`] gives the unscrambled sets (as the `-plain` names do).
     ///
     /// # Errors
     /// As [`NamedSampler::new`]; [`NamedSamplerError::NoScramble`] for the other names in
@@ -425,6 +426,9 @@ impl NamedSampler {
         NamedSampler::new(name, size, spp, seed)?;
         Ok(match name {
             "halton" => NamedSampler::Halton(HaltonSampler::new(size, spp, scramble, seed)?),
+            "hammersley" => {
+                NamedSampler::Hammersley(HammersleySampler::new(size, spp, scramble, seed)?)
+            }
             "sobol" => NamedSampler::Sobol(SobolSampler::new(size, spp, scramble, seed)?),
             _ => NamedSampler::ZSobol(ZSobolSampler::new(size, spp, scramble, seed)?),
         })
@@ -786,11 +790,11 @@ mod tests {
         }
     }
 
-    /// `with_scramble` builds halton, sobol and zsobol with the asked scramble: the same values
+    /// `with_scramble` builds halton, hammersley, sobol and zsobol with the asked scramble: the same values
     /// as the sampler built directly, every scramble a different set (seed ≠ 0), and the other
     /// names refused by kind.
     #[test]
-    fn with_scramble_builds_the_three_and_refuses_the_rest() {
+    fn with_scramble_builds_the_four_and_refuses_the_rest() {
         fn values(mut s: impl Sampler) -> Vec<u32> {
             let mut v = Vec::new();
             for i in 0..16 {
@@ -805,16 +809,17 @@ mod tests {
         for scramble in Scramble::ALL {
             let direct = [
                 values(HaltonSampler::new(size, spp, scramble, seed).unwrap()),
+                values(HammersleySampler::new(size, spp, scramble, seed).unwrap()),
                 values(SobolSampler::new(size, spp, scramble, seed).unwrap()),
                 values(ZSobolSampler::new(size, spp, scramble, seed).unwrap()),
             ];
-            for (name, want) in ["halton", "sobol", "zsobol"].iter().zip(direct) {
+            for (name, want) in SCRAMBLE_NAMES.iter().zip(direct) {
                 let s = NamedSampler::with_scramble(name, size, spp, seed, scramble).unwrap();
                 assert_eq!(s.name(), *name);
                 assert_eq!(values(s), want, "{name} {scramble:?}");
             }
         }
-        for name in ["halton", "sobol", "zsobol"] {
+        for name in SCRAMBLE_NAMES {
             let mut sets: Vec<Vec<u32>> = Scramble::ALL
                 .iter()
                 .map(|&sc| values(NamedSampler::with_scramble(name, size, spp, seed, sc).unwrap()))
@@ -829,7 +834,7 @@ mod tests {
         }
         for name in NAMES
             .iter()
-            .filter(|n| !matches!(**n, "halton" | "sobol" | "zsobol"))
+            .filter(|n| !matches!(**n, "halton" | "hammersley" | "sobol" | "zsobol"))
         {
             assert_eq!(
                 NamedSampler::with_scramble(name, size, spp, seed, Scramble::Owen).unwrap_err(),
@@ -841,6 +846,6 @@ mod tests {
             NamedSampler::with_scramble("nope", size, spp, seed, Scramble::Owen).unwrap_err(),
             NamedSamplerError::UnknownName
         );
-        assert_eq!(SCRAMBLE_NAMES, ["halton", "sobol", "zsobol"]);
+        assert_eq!(SCRAMBLE_NAMES, ["halton", "hammersley", "sobol", "zsobol"]);
     }
 }
