@@ -106,8 +106,8 @@ pub struct SequenceSpec {
     pub seed: Option<u64>,
     /// `korobov`'s multiplier `a` (coprime to `N`, `1 ≤ a < N`); `None` picks one: Stroud's
     /// (1971) tabled multiplier where the table has (`N`, `dims`), else the minimiser of the P2
-    /// criterion ([`Korobov::searched`], [`Korobov::searched_2d`] above 4096 points in two
-    /// dimensions). Rejected by the other families.
+    /// criterion ([`Korobov::searched`]; in two dimensions [`Korobov::searched_2d`], the same
+    /// minimiser in linear time, up to 2²⁴ points). Rejected by the other families.
     pub multiplier: Option<u64>,
 }
 
@@ -371,7 +371,8 @@ impl NamedSequence {
                     Some(a) => Korobov::new(n, a, dims)?,
                     None => match Korobov::tabled(n, dims) {
                         Ok(k) => k,
-                        Err(_) if dims == 2 && n > 4096 => Korobov::searched_2d(n)?,
+                        // The same minimiser as `searched(n, 2)`, in linear time.
+                        Err(_) if dims == 2 => Korobov::searched_2d(n)?,
                         Err(_) => Korobov::searched(n, dims)?,
                     },
                 };
@@ -560,6 +561,10 @@ mod tests {
             assert_eq!(s.point_count(), plain.point_count(), "{name}");
             assert_eq!(values(&s, dims), values(plain, dims), "{name}");
             assert_eq!(s.sample_f64(5, dims - 1), plain.sample_f64(5, dims - 1));
+            assert_eq!(
+                s.sample(5, dims - 1).to_bits(),
+                plain.sample(5, dims - 1).to_bits()
+            );
             match seeded {
                 Some(want) => {
                     let r = NamedSequence::new(name, spec(dims, points, Some(0))).unwrap();
@@ -601,7 +606,8 @@ mod tests {
             panic!("not korobov")
         };
         assert_eq!(k.multiplier(), 12);
-        // Not tabled: searched (two dimensions above 4096 points: the 2-D search).
+        // Not tabled: searched (in two dimensions by the linear-time 2-D search, which finds the
+        // same multiplier).
         let NamedSequence::Korobov(k) = korobov(Some(64), None, 2).unwrap() else {
             panic!("not korobov")
         };
@@ -687,6 +693,63 @@ mod tests {
             with("nope", SequenceSpec::default()),
             NamedSequenceError::UnknownName
         );
+    }
+
+    /// Every error prints one line naming the fault; a wrapped core error prints as itself and
+    /// is the source.
+    #[test]
+    fn errors_print_their_fault() {
+        use core::error::Error as _;
+        let known = SEQUENCE_NAMES.join(", ");
+        assert_eq!(
+            NamedSequenceError::UnknownName.to_string(),
+            std::format!("unknown sequence name (known: {known})")
+        );
+        let name = "vdc";
+        for (e, want) in [
+            (
+                NamedSequenceError::NotRandomized { name },
+                "vdc has no randomization: give no seed",
+            ),
+            (
+                NamedSequenceError::PointsRequired { name },
+                "vdc needs its point count N",
+            ),
+            (
+                NamedSequenceError::PointsNotTaken { name },
+                "vdc takes no point count: its points go by index",
+            ),
+            (
+                NamedSequenceError::MultiplierNotTaken { name },
+                "vdc takes no multiplier (korobov does)",
+            ),
+        ] {
+            assert_eq!(e.to_string(), want);
+            assert!(e.source().is_none());
+        }
+        let core = Error::ZeroSize { what: "dims" };
+        let e = NamedSequenceError::from(core);
+        assert_eq!(e, NamedSequenceError::Sequence(core));
+        assert_eq!(e.to_string(), core.to_string());
+        assert_eq!(e.source().map(|s| s.to_string()), Some(core.to_string()));
+    }
+
+    /// Names in any ASCII case and the aliases build the canonical set.
+    #[test]
+    fn case_and_aliases() {
+        for (alias, name) in [
+            ("R2", "rd"),
+            ("Sobol-Owen", "owen-sobol"),
+            ("HALTON", "halton"),
+        ] {
+            assert_eq!(canonical_sequence_name(alias), Some(name));
+            let s = NamedSequence::new(alias, SequenceSpec::default()).unwrap();
+            assert_eq!(s.name(), name);
+        }
+        assert_eq!(canonical_sequence_name("rd2"), None);
+        assert_eq!(randomization("nope"), None);
+        assert_eq!(randomization("PMJ02"), Some("Owen scramble"));
+        assert_eq!(randomization("zero-two"), Some("digital shift"));
     }
 
     proptest::proptest! {
