@@ -817,6 +817,13 @@ impl<const N: usize> SeparableTable<N> {
     /// let t = SeparableTable::<32>::new(&Mitchell::default(), Interpolation::Nearest).unwrap();
     /// assert_eq!(t.radius(), [2.0, 2.0]);
     /// ```
+    ///
+    /// One entry per axis is refused when the program is compiled:
+    ///
+    /// ```compile_fail
+    /// use nyquist::filter::{Interpolation, Mitchell, SeparableTable};
+    /// let t = SeparableTable::<1>::new(&Mitchell::default(), Interpolation::Nearest);
+    /// ```
     pub fn new<F: Filter + ?Sized>(
         filter: &F,
         interp: Interpolation,
@@ -1358,6 +1365,53 @@ mod tests {
             let d = 1.0 - (x / 1.5) * (x / 1.5) - (y / 1.25) * (y / 1.25);
             if d > 0.0 { d } else { 0.0 }
         }
+    }
+
+    /// A plugin filter of any radius, for the radius checks.
+    struct Radius([f32; 2]);
+
+    impl Filter for Radius {
+        fn radius(&self) -> [f32; 2] {
+            self.0
+        }
+        fn eval(&self, _: f32, _: f32) -> f32 {
+            1.0
+        }
+    }
+
+    /// A radius is tabulated when it is finite and above 0 on both axes; otherwise the error
+    /// names the axis, carries the value and says `(0, ∞)`.
+    #[test]
+    fn radii_must_be_finite_and_positive() {
+        let tiny = f32::from_bits(1);
+        for r in [[tiny, f32::MAX], [1.0, 2.0], [f32::MAX, tiny]] {
+            assert_eq!(table_radius(&Radius(r)), Ok(r));
+        }
+        for (r, what, value) in [
+            ([0.0, 1.0], "filter radius rx", 0.0),
+            ([1.0, -0.0], "filter radius ry", -0.0),
+            ([-1.0, 1.0], "filter radius rx", -1.0),
+            ([1.0, f32::INFINITY], "filter radius ry", f64::INFINITY),
+            (
+                [f32::NEG_INFINITY, 1.0],
+                "filter radius rx",
+                f64::NEG_INFINITY,
+            ),
+        ] {
+            assert_eq!(
+                table_radius(&Radius(r)),
+                Err(Error::OutOfRange {
+                    what,
+                    value,
+                    range: Interval::above(0.0)
+                }),
+                "{r:?}"
+            );
+        }
+        assert!(matches!(
+            table_radius(&Radius([f32::NAN, 1.0])),
+            Err(Error::OutOfRange { what: "filter radius rx", value, .. }) if value.is_nan()
+        ));
     }
 
     /// Every table form reports the radius and integral of its filter and the interpolation it
