@@ -12,7 +12,7 @@
 use anyhow::{Result, bail};
 use nyquist::analysis::Topology;
 use nyquist::bluenoise::PoissonDisk;
-use nyquist::lattice::{FibonacciLattice, Korobov};
+use nyquist::lattice::Korobov;
 use nyquist::rng::{default_rng, uniform_f32};
 use nyquist::sequence::{NamedSequence, NamedSequenceError, Sequence, SequenceSpec, VanDerCorput};
 use nyquist::stratify::{self, Jitter};
@@ -519,23 +519,34 @@ fn named_sequence(
         args.sampler,
         S::Hammersley | S::HammersleyZaremba | S::Fibonacci | S::Korobov
     );
-    if args.sampler == S::Fibonacci {
-        let next = FibonacciLattice::at_least(count)
-            .ok()
-            .and_then(|f| f.point_count())
-            .filter(|&n| n != count);
-        if let Some(n) = next {
-            bail!("--count {count} is not a Fibonacci number (the next is {n})");
-        }
-    }
     let tabled = args.sampler == S::Korobov && Korobov::tabled(count, dims).is_ok();
-    if args.sampler == S::Korobov && !tabled {
-        let max = if dims == 2 {
-            nyquist::lattice::KOROBOV_MAX_SEARCHED_2D
-        } else {
-            4096
-        };
-        if count > max {
+    let spec = SequenceSpec {
+        dims,
+        points: sized.then_some(count),
+        seed: args.seed,
+        multiplier: None,
+    };
+    let set = NamedSequence::new(name, spec).map_err(|e| match (e, args.seed) {
+        (
+            NamedSequenceError::Sequence(nyquist::Error::Invalid {
+                what: "points",
+                other: next,
+                ..
+            }),
+            _,
+        ) if args.sampler == S::Fibonacci => {
+            anyhow::anyhow!("--count {count} is not a Fibonacci number (the next is {next})")
+        }
+        // Above the multiplier search's limit: say which sizes Stroud's table has instead.
+        (
+            NamedSequenceError::Sequence(nyquist::Error::NotInRange {
+                what: "n",
+                value,
+                max,
+                ..
+            }),
+            _,
+        ) if args.sampler == S::Korobov && value > max => {
             let sizes: Vec<String> = Korobov::tabled_sizes(dims).map(|n| n.to_string()).collect();
             let table = if sizes.is_empty() {
                 String::new()
@@ -545,19 +556,11 @@ fn named_sequence(
                     sizes.join(", ")
                 )
             };
-            bail!(
+            anyhow::anyhow!(
                 "--count {count}: korobov searches its multiplier for at most {max} points in \
                  {dims} dimensions{table}"
-            );
+            )
         }
-    }
-    let spec = SequenceSpec {
-        dims,
-        points: sized.then_some(count),
-        seed: args.seed,
-        multiplier: None,
-    };
-    let set = NamedSequence::new(name, spec).map_err(|e| match (e, args.seed) {
         (NamedSequenceError::NotRandomized { .. }, Some(seed)) => anyhow::anyhow!(
             "--seed {seed}: {} has no randomization, its points do not depend on a seed (drop \
              --seed; halton, sobol, zero-two, pmj02, fibonacci, korobov and rd take one)",

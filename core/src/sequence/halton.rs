@@ -17,16 +17,7 @@ use crate::scramble::Scramble;
 
 /// Validates a dimension count for the radical-inverse sets: `1 ..= 1024`.
 fn check_dims(dims: u32) -> Result<u32, Error> {
-    match dims {
-        0 => Err(Error::ZeroSize { what: "dims" }),
-        d if d > PRIME_COUNT => Err(Error::NotInRange {
-            what: "dims",
-            value: u64::from(d),
-            min: 1,
-            max: u64::from(PRIME_COUNT),
-        }),
-        d => Ok(d),
-    }
+    super::dims_within(dims, PRIME_COUNT)
 }
 
 /// The van der Corput sequence: Φ₂(i), one dimension, every `u64` index its own point.

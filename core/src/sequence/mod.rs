@@ -50,6 +50,21 @@ pub(crate) use sobol_lazy::{SOBOL_MATRICES, matrix_rows as sobol_matrix_rows};
 pub(crate) use sobol_table::SOBOL_MATRICES;
 pub use zero_two::ZeroTwo;
 
+/// `dims` if it is in `1 ..= max`: else [`Error::ZeroSize`] for 0 and [`Error::NotInRange`]
+/// (`what: "dims"`) above `max`.
+pub(crate) fn dims_within(dims: u32, max: u32) -> Result<u32, Error> {
+    match dims {
+        0 => Err(Error::ZeroSize { what: "dims" }),
+        d if d > max => Err(Error::NotInRange {
+            what: "dims",
+            value: u64::from(d),
+            min: 1,
+            max: u64::from(max),
+        }),
+        d => Ok(d),
+    }
+}
+
 /// A deterministic point set in `[0, 1)^d`, addressed by index.
 ///
 /// Contract for every implementation:

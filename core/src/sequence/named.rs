@@ -313,18 +313,7 @@ impl NamedSequence {
             return Err(NamedSequenceError::MultiplierNotTaken { name });
         }
         let dims = spec.dims;
-        let at_most = |max: u32| -> Result<(), Error> {
-            match dims {
-                0 => Err(Error::ZeroSize { what: "dims" }),
-                d if d > max => Err(Error::NotInRange {
-                    what: "dims",
-                    value: u64::from(d),
-                    min: 1,
-                    max: u64::from(max),
-                }),
-                _ => Ok(()),
-            }
-        };
+        let at_most = |max: u32| super::dims_within(dims, max);
         Ok(match name {
             "vdc" => {
                 at_most(1)?;
