@@ -329,3 +329,27 @@ fn long_work_is_announced_with_its_size() {
     let o = nyquist(&["render", "--size", "16x16", "--spp", "4", "--metrics"]);
     assert_eq!(stderr(&o), "");
 }
+
+/// A lattice's size errors say what would be accepted: the next Fibonacci number, the Korobov
+/// search's limit and the sizes Stroud's table has.
+#[test]
+fn lattice_sizes_name_what_is_accepted() {
+    assert_error(
+        &["points", "--sampler", "fibonacci", "--count", "20"],
+        "--count 20 is not a Fibonacci number (the next is 21)",
+    );
+    assert_error(
+        &[
+            "points",
+            "--sampler",
+            "korobov",
+            "--count",
+            "5000",
+            "--dims",
+            "3",
+        ],
+        "--count 5000: korobov searches its multiplier for at most 4096 points in 3 dimensions; \
+         Stroud's table has 101, 199, 307, 523, 701, 1069, 1543, 2129, 3001, 4001, 5003, 6007, \
+         8191, 10007 for 3 dimensions",
+    );
+}
