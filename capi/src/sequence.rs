@@ -7,7 +7,7 @@
 //! call validates it and builds the core's sequence, which costs a few integer operations (a
 //! Korobov lattice whose multiplier is left to nyquist also searches it, about linear in `N`).
 
-use nyquist::sequence::{NamedSequence, NamedSequenceError, Sequence, SequenceSpec};
+use nyquist::sequence::{NamedSequence, NamedSequenceError, Sequence, SequenceSpec, takes_points};
 
 use crate::NyqStatus;
 use crate::ffi::{get, need, put, run, slice_mut};
@@ -133,13 +133,9 @@ fn build(s: &NyqSequence) -> Result<NamedSequence, NyqStatus> {
         .iter()
         .find(|(k, ..)| *k as u32 == s.kind)
         .ok_or(NyqStatus::NYQ_ERR_OUT_OF_RANGE)?;
-    let sized = matches!(
-        name,
-        "hammersley" | "hammersley-zaremba" | "fibonacci" | "korobov"
-    );
     let spec = SequenceSpec {
         dims: s.dims,
-        points: sized.then_some(s.points),
+        points: takes_points(name).then_some(s.points),
         seed: randomized.then_some(s.seed),
         multiplier: (name == "korobov" && s.multiplier != 0).then_some(s.multiplier),
     };

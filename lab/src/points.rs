@@ -515,14 +515,10 @@ fn named_sequence(
         S::Rd => "rd",
         other => other.name(),
     };
-    let sized = matches!(
-        args.sampler,
-        S::Hammersley | S::HammersleyZaremba | S::Fibonacci | S::Korobov
-    );
     let tabled = args.sampler == S::Korobov && Korobov::tabled(count, dims).is_ok();
     let spec = SequenceSpec {
         dims,
-        points: sized.then_some(count),
+        points: nyquist::sequence::takes_points(name).then_some(count),
         seed: args.seed,
         multiplier: None,
     };

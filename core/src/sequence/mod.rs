@@ -34,7 +34,7 @@ pub use halton::{Halton, HaltonZaremba, ScrambledHalton, VanDerCorput};
 pub use hammersley::{Hammersley, HammersleyZaremba};
 pub use named::{
     NamedSequence, NamedSequenceError, SEQUENCE_NAMES, SequenceSpec, canonical_sequence_name,
-    randomization,
+    randomization, takes_points,
 };
 pub use owen_sobol::OwenSobol;
 pub(crate) use owen_sobol::{DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32};

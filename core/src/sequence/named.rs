@@ -86,6 +86,23 @@ pub fn randomization(name: &str) -> Option<&'static str> {
     }
 }
 
+/// Whether sequence `name` (as [`canonical_sequence_name`] takes it) is a set of `N` points
+/// whose size is part of its definition, so that [`SequenceSpec::points`] is required:
+/// `hammersley`, `hammersley-zaremba`, `fibonacci` and `korobov`.
+///
+/// ```
+/// use nyquist::sequence::takes_points;
+/// assert!(takes_points("Korobov"));
+/// assert!(!takes_points("halton"));
+/// assert!(!takes_points("nope"));
+/// ```
+pub fn takes_points(name: &str) -> bool {
+    matches!(
+        canonical_sequence_name(name),
+        Some("hammersley" | "hammersley-zaremba" | "fibonacci" | "korobov")
+    )
+}
+
 /// What [`NamedSequence::new`] builds besides the name.
 ///
 /// ```
@@ -299,11 +316,7 @@ impl NamedSequence {
         if spec.seed.is_some() && randomization(name).is_none() {
             return Err(NamedSequenceError::NotRandomized { name });
         }
-        let sized = matches!(
-            name,
-            "hammersley" | "hammersley-zaremba" | "fibonacci" | "korobov"
-        );
-        let n = match (spec.points, sized) {
+        let n = match (spec.points, takes_points(name)) {
             (Some(n), true) => n,
             (None, true) => return Err(NamedSequenceError::PointsRequired { name }),
             (Some(_), false) => return Err(NamedSequenceError::PointsNotTaken { name }),
@@ -735,6 +748,15 @@ mod tests {
             let s = NamedSequence::new(alias, SequenceSpec::default()).unwrap();
             assert_eq!(s.name(), name);
         }
+        let sized: Vec<&str> = SEQUENCE_NAMES
+            .into_iter()
+            .filter(|n| takes_points(n))
+            .collect();
+        assert_eq!(
+            sized,
+            ["hammersley", "hammersley-zaremba", "fibonacci", "korobov"]
+        );
+        assert!(takes_points("Hammersley-Zaremba") && !takes_points("nope"));
         assert_eq!(canonical_sequence_name("rd2"), None);
         assert_eq!(randomization("nope"), None);
         assert_eq!(randomization("PMJ02"), Some("Owen scramble"));
