@@ -17,7 +17,7 @@ use nyquist::analysis::{
     star_discrepancy_scratch_len,
 };
 use std::fmt::Write as _;
-use std::io::{IsTerminal, Read};
+use std::io::{BufRead as _, IsTerminal, Read as _};
 use std::path::{Path, PathBuf};
 
 /// The most coordinates a CSV input may hold: 2²⁸ (as `points`).
@@ -503,22 +503,19 @@ fn load_all(
         // The browser explorer always names a sampler.
         bail!("give --sampler: points cannot be read from a file or stdin in WebAssembly");
     }
-    let (text, name) = match args.input.as_deref() {
-        Some(p) if p != Path::new("-") => (
-            std::fs::read(p).with_context(|| format!("{}: cannot read", p.display()))?,
-            p.display().to_string(),
-        ),
+    let limit = crate::memory::limit();
+    let (coords, dims, name) = match args.input.as_deref() {
+        Some(p) if p != Path::new("-") => {
+            let name = p.display().to_string();
+            let file = std::fs::File::open(p).with_context(|| format!("{name}: cannot read"))?;
+            let (c, d) = read_csv(&mut std::io::BufReader::new(file), &name, limit)?;
+            (c, d, name)
+        }
         _ => {
-            let mut buf = Vec::new();
-            std::io::stdin()
-                .read_to_end(&mut buf)
-                .context("stdin: cannot read")?;
-            (buf, "stdin".to_owned())
+            let (c, d) = read_csv(&mut std::io::stdin().lock(), "stdin", limit)?;
+            (c, d, "stdin".to_owned())
         }
     };
-    let text =
-        String::from_utf8(text).map_err(|_| anyhow!("{name}: not UTF-8 text (expected CSV)"))?;
-    let (coords, dims) = parse_csv(&text, &name)?;
     if let Some(d) = args.dims
         && d as usize != dims
     {
@@ -557,20 +554,88 @@ fn generate(
     Ok((points.values, points.dims))
 }
 
-/// Parses CSV points: comma-separated numbers, the same count on every line, each finite and in
-/// `[0, 1)`. Blank lines are skipped; a first line with no number in it is a header.
+/// The longest CSV line [`read_csv`] accepts, in bytes: 1 MiB, room for more than 40 000
+/// coordinates of 25 characters. A longer line (a file with no line breaks, `/dev/zero`) is
+/// refused after reading this much, not after reading the whole input.
+pub const MAX_LINE_BYTES: usize = 1 << 20;
+
+/// Parses CSV points held in memory: [`read_csv`] on `text`, under the memory limit in force.
+///
+/// ```
+/// let (coords, dims) = nyquist_lab::analysis::parse_csv("x,y\n0.5,0.25\n", "t").unwrap();
+/// assert_eq!((coords, dims), (vec![0.5, 0.25], 2));
+/// ```
+///
+/// # Errors
+/// As [`read_csv`].
 pub fn parse_csv(text: &str, name: &str) -> Result<(Vec<f64>, usize)> {
-    let mut coords = Vec::new();
+    read_csv(&mut text.as_bytes(), name, crate::memory::limit())
+}
+
+/// Reads CSV points from `input` as it streams: comma-separated numbers, the same count on every
+/// line, each finite and in `[0, 1)`. Blank lines are skipped; a first line none of whose
+/// fields starts like a number (`x,y`, `dim 0,dim 1`) is a header, while a first line such as
+/// `0.1;0.2` is an error like any other line.
+///
+/// Reading is bounded: a line longer than [`MAX_LINE_BYTES`], more than 2²⁸ coordinates, or
+/// coordinates whose buffer would pass `limit` end the read with one line naming `name` and the
+/// limit, after reading at most that much. So an endless stdin (`yes 0.5,0.25 | nyquist
+/// analyze`) or `/dev/zero` is refused in bounded time and memory.
+///
+/// ```
+/// use nyquist_lab::{analysis::read_csv, memory::Limit};
+/// let limit = Limit { bytes: 64, source: "--max-memory".into() };
+/// let ok = read_csv(&mut "0.5,0.25\n0,0.75\n".as_bytes(), "stdin", &limit).unwrap();
+/// assert_eq!(ok, (vec![0.5, 0.25, 0.0, 0.75], 2));
+/// // 64 bytes hold 8 coordinates: the fifth point is refused.
+/// let many = "0.5,0.25\n".repeat(100);
+/// let err = read_csv(&mut many.as_bytes(), "stdin", &limit).unwrap_err().to_string();
+/// assert!(err.starts_with("stdin: the points pass the 64 bytes limit (--max-memory) after 8 values"), "{err}");
+/// // An endless line of zeros ends after 1 MiB.
+/// let mut zeros = std::io::BufReader::new(std::io::repeat(b'0'));
+/// let err = read_csv(&mut zeros, "/dev/zero", &limit).unwrap_err().to_string();
+/// assert!(err.starts_with("/dev/zero line 1: longer than 1048576 bytes"), "{err}");
+/// ```
+///
+/// # Errors
+/// One line naming the input and the line: a value that is not a number, not finite or outside
+/// `[0, 1)`, a line with another count of values than the first point, text that is not UTF-8,
+/// a line longer than [`MAX_LINE_BYTES`], too many points for `limit` or for 2²⁸ coordinates,
+/// no points, or a read error.
+pub fn read_csv(
+    input: &mut dyn std::io::BufRead,
+    name: &str,
+    limit: &crate::memory::Limit,
+) -> Result<(Vec<f64>, usize)> {
+    let mut coords: Vec<f64> = Vec::new();
     let mut dims = 0usize;
     let mut first = true;
-    for (i, line) in text.lines().enumerate() {
-        let line = line.trim();
+    let mut raw = Vec::new();
+    let mut at = 0usize;
+    loop {
+        raw.clear();
+        let read = (&mut *input)
+            .take(MAX_LINE_BYTES as u64 + 1)
+            .read_until(b'\n', &mut raw)
+            .with_context(|| format!("{name}: cannot read"))?;
+        if read == 0 {
+            break;
+        }
+        at += 1;
+        if raw.len() > MAX_LINE_BYTES && raw.last() != Some(&b'\n') {
+            bail!(
+                "{name} line {at}: longer than {MAX_LINE_BYTES} bytes, the longest line read \
+                 (expected CSV of points)"
+            );
+        }
+        let line = std::str::from_utf8(&raw)
+            .map_err(|_| anyhow!("{name} line {at}: not UTF-8 text (expected CSV)"))?
+            .trim();
         if line.is_empty() {
             continue;
         }
-        let at = i + 1;
-        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
-        if std::mem::take(&mut first) && fields.iter().all(|f| f.parse::<f64>().is_err()) {
+        let mut fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        if std::mem::take(&mut first) && !fields.iter().any(|f| starts_like_a_number(f)) {
             continue; // header
         }
         if dims == 0 {
@@ -581,27 +646,85 @@ pub fn parse_csv(text: &str, name: &str) -> Result<(Vec<f64>, usize)> {
                 fields.len()
             );
         }
-        for f in fields {
-            let shown: String = f.chars().take(40).collect();
+        if coords.len() + dims > coords.capacity() {
+            grow(&mut coords, dims, name, limit, MAX_VALUES)?;
+        }
+        for f in fields.drain(..) {
+            let shown = || f.chars().take(40).collect::<String>();
             let v: f64 = f
                 .parse()
-                .map_err(|_| anyhow!("{name} line {at}: '{shown}' is not a number"))?;
+                .map_err(|_| anyhow!("{name} line {at}: '{}' is not a number", shown()))?;
             if !v.is_finite() {
-                bail!("{name} line {at}: {shown} is not a finite number");
+                bail!("{name} line {at}: {} is not a finite number", shown());
             }
             if !(0.0..1.0).contains(&v) {
-                bail!("{name} line {at}: {shown} is outside [0, 1)");
+                bail!("{name} line {at}: {} is outside [0, 1)", shown());
             }
             coords.push(v);
-        }
-        if coords.len() > MAX_VALUES {
-            bail!("{name}: more than {MAX_VALUES} values");
         }
     }
     if coords.is_empty() {
         bail!("{name}: no points");
     }
     Ok((coords, dims))
+}
+
+/// Whether a CSV field begins as a number does (`0.5`, `-1`, `.5`, `+2e3`, `nan`, `inf`): a
+/// first line with such a field is data, never a header.
+fn starts_like_a_number(field: &str) -> bool {
+    let t = field.trim_start_matches(['+', '-']);
+    let mut chars = t.chars();
+    match chars.next() {
+        Some(c) if c.is_ascii_digit() => true,
+        Some('.') => chars.next().is_some_and(|c| c.is_ascii_digit()),
+        _ => {
+            let lower = t.to_ascii_lowercase();
+            lower.starts_with("nan") || lower.starts_with("inf")
+        }
+    }
+}
+
+/// Doubles the room of `coords` (at least one more point of `dims` values), refusing when the
+/// new buffer would pass `limit` or hold more than `max_values` coordinates: the check is made
+/// before the allocation, so reading never holds more than the limit.
+fn grow(
+    coords: &mut Vec<f64>,
+    dims: usize,
+    name: &str,
+    limit: &crate::memory::Limit,
+    max_values: usize,
+) -> Result<()> {
+    let len = coords.len();
+    if len + dims > max_values {
+        bail!(
+            "{name}: more than {max_values} coordinates, the most analyze reads; give fewer points"
+        );
+    }
+    let wanted = (2 * coords.capacity())
+        .max(len + dims)
+        .max(4096)
+        .min(max_values);
+    // The point that does not fit is the one being read: refuse once even the exact size would
+    // not fit, else settle for what the limit allows.
+    let fits = |n: usize| crate::memory::bytes(n as u64, 8) <= limit.bytes;
+    let wanted = if fits(wanted) {
+        wanted
+    } else if fits(len + dims) {
+        (limit.bytes / 8) as usize
+    } else {
+        bail!(
+            "{name}: the points pass the {} limit ({}) after {} values ({} point{}); give \
+             fewer points or a larger --max-memory",
+            crate::memory::human(limit.bytes),
+            limit.source,
+            len,
+            len / dims,
+            if len / dims == 1 { "" } else { "s" },
+        );
+    };
+    coords
+        .try_reserve_exact(wanted - len)
+        .map_err(|_| anyhow!("{name}: out of memory after {len} values"))
 }
 
 /// The measures to compute: the explicit list (each must apply to `dims`), or the defaults that
@@ -1247,6 +1370,103 @@ mod tests {
     fn csv_accepts_a_header_and_blank_lines() {
         let (c, d) = parse_csv("x,y\n0.5,0.25\n\n0,0.75\n", "t").unwrap();
         assert_eq!((c, d), (vec![0.5, 0.25, 0.0, 0.75], 2));
+    }
+
+    #[test]
+    fn csv_lines_are_bounded_at_one_mebibyte() {
+        let limit = crate::memory::Limit {
+            bytes: 1 << 20,
+            source: "t".into(),
+        };
+        let padded = |len: usize| format!("0.5{}\n", " ".repeat(len - 3));
+        // A line of exactly MAX_LINE_BYTES before its line break is read; one byte more is not.
+        let ok = read_csv(&mut padded(MAX_LINE_BYTES).as_bytes(), "t", &limit).unwrap();
+        assert_eq!(ok, (vec![0.5], 1));
+        let last = &padded(MAX_LINE_BYTES)[..MAX_LINE_BYTES];
+        assert_eq!(
+            read_csv(&mut last.as_bytes(), "t", &limit).unwrap().0,
+            [0.5]
+        );
+        let err = read_csv(&mut padded(MAX_LINE_BYTES + 1).as_bytes(), "t", &limit).unwrap_err();
+        assert!(
+            err.to_string()
+                .starts_with("t line 1: longer than 1048576 bytes")
+        );
+    }
+
+    #[test]
+    fn csv_buffers_stop_at_the_memory_and_count_limits() {
+        let limit = |bytes| crate::memory::Limit {
+            bytes,
+            source: "--max-memory".into(),
+        };
+        let text = "0.5,0.25,0.125\n".repeat(10);
+        // 48 bytes hold six coordinates, two points of three: the third is refused.
+        let err = read_csv(&mut text.as_bytes(), "t", &limit(48))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.starts_with(
+                "t: the points pass the 48 bytes limit (--max-memory) after 6 values (2 points)"
+            ),
+            "{err}"
+        );
+        // 47 bytes hold one point; 240 bytes hold all ten, 239 all but the last.
+        let err = read_csv(&mut text.as_bytes(), "t", &limit(47))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("after 3 values (1 point);"), "{err}");
+        assert_eq!(
+            read_csv(&mut text.as_bytes(), "t", &limit(240))
+                .unwrap()
+                .0
+                .len(),
+            30
+        );
+        let err = read_csv(&mut text.as_bytes(), "t", &limit(239))
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("after 27 values (9 points)"), "{err}");
+        // The coordinate cap, met exactly and passed by one point.
+        let mut coords = vec![0.0; 6];
+        grow(&mut coords, 3, "t", &limit(1 << 20), 9).unwrap();
+        assert!(coords.capacity() >= 9);
+        let mut coords = vec![0.0; 7];
+        let err = grow(&mut coords, 3, "t", &limit(1 << 20), 9)
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            err,
+            "t: more than 9 coordinates, the most analyze reads; give fewer points"
+        );
+        // Below the limit, room doubles (amortised reading), never past the cap.
+        let mut coords: Vec<f64> = Vec::with_capacity(5000);
+        coords.resize(5000, 0.0);
+        grow(&mut coords, 1, "t", &limit(1 << 20), 1 << 28).unwrap();
+        assert!(coords.capacity() >= 10_000);
+        let mut coords: Vec<f64> = Vec::with_capacity(5000);
+        coords.resize(5000, 0.0);
+        grow(&mut coords, 1, "t", &limit(1 << 20), 6000).unwrap();
+        assert!(
+            (5001..=6000).contains(&coords.capacity()),
+            "{}",
+            coords.capacity()
+        );
+    }
+
+    #[test]
+    fn a_header_is_a_first_line_where_no_field_starts_like_a_number() {
+        for numeric in [
+            "0.5", "-1", "+2e3", ".5", "-.5", "nan", "-inf", "Infinity", "7x",
+        ] {
+            assert!(starts_like_a_number(numeric), "{numeric}");
+        }
+        for name in ["x1", "u", "dim 0", ".", "-", "", ".x", "n"] {
+            assert!(!starts_like_a_number(name), "{name}");
+        }
+        assert!(parse_csv("x1,0.5\n0.5,0.5\n", "t").is_err());
+        assert!(parse_csv("0.1;0.2\n0.5\n", "t").is_err());
+        assert_eq!(parse_csv("x1;x2\n0.5\n", "t").unwrap().0, [0.5]);
     }
 
     #[test]
