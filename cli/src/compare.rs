@@ -85,16 +85,16 @@ pub struct CompareArgs {
     /// Samples per pixel, comma-separated (uniform and stratified take a √spp × √spp grid for a
     /// square, else the squarest rectangle of spp cells).
     #[arg(long, value_delimiter = ',', default_value = "1,4,16",
-          value_parser = clap::value_parser!(u32).range(1..=65536))]
+          value_parser = nyquist_lab::flags::whole(1u32, 65536))]
     pub spp: Vec<u32>,
     /// Image size of every render (the sheet shows a crop of at most 256 × 256).
     #[arg(long, value_name = "WxH", default_value = "256x256", value_parser = parse_size)]
     pub size: [u32; 2],
     /// Worker threads [default: the number of cores]; renders run in parallel, one per thread.
-    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
+    #[arg(long, value_parser = nyquist_lab::flags::whole(1u16, 1024))]
     pub threads: Option<u16>,
     /// Seed of every sampler.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = nyquist_lab::flags::whole(0, u64::MAX))]
     pub seed: u64,
     /// Scramble of the halton, hammersley, sobol and zsobol rows (the other rows have none)
     /// [default: each sampler's own, as in `render`].
@@ -164,15 +164,17 @@ pub fn run(args: &CompareArgs) -> Result<()> {
     let count = args.samplers.len() * columns;
     if count > MAX_CELLS {
         bail!(
-            "--samplers × --filters × --spp is {count} renders; a sheet takes at most {MAX_CELLS}"
+            "--samplers × --filters × --spp is {}; a sheet takes at most {MAX_CELLS}",
+            nyquist_lab::words::count(count as u64, "render")
         );
     }
     let pixels = u64::from(args.size[0]) * u64::from(args.size[1]) * count as u64;
     if pixels > crate::render::MAX_PIXELS {
         bail!(
-            "--size {}x{} × {count} renders is more than {} pixels in all",
+            "--size {}x{} × {} is more than {} pixels in all",
             args.size[0],
             args.size[1],
+            nyquist_lab::words::count(count as u64, "render"),
             crate::render::MAX_PIXELS
         );
     }
@@ -183,7 +185,12 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         + threads as u64 * crate::render::FILM_PIXEL_BYTES
         + (filters.len() as u64 + 1) * 8;
     nyquist_lab::memory::check(
-        &format!("--size {}x{} × {count} renders", args.size[0], args.size[1]),
+        &format!(
+            "--size {}x{} × {}",
+            args.size[0],
+            args.size[1],
+            nyquist_lab::words::count(count as u64, "render")
+        ),
         nyquist_lab::memory::bytes(u64::from(args.size[0]) * u64::from(args.size[1]), per_pixel)
             .saturating_add(crate::render::render_bytes(args.scene, args.size, true)),
     )?;
@@ -390,7 +397,8 @@ pub fn run(args: &CompareArgs) -> Result<()> {
         writeln!(out)?;
         writeln!(
             out,
-            "{count} renders, {:.1} M samples in {seconds:.2} s on {threads} thread{}",
+            "{}, {:.1} M samples in {seconds:.2} s on {threads} thread{}",
+            nyquist_lab::words::count(count as u64, "render"),
             samples as f64 / 1e6,
             if threads == 1 { "" } else { "s" }
         )?;

@@ -24,6 +24,7 @@ pub fn run(args: &ConvergeArgs) -> Result<()> {
     let mut notes = Vec::new();
     let study = study(args, &mut notes)?;
     study.check().map_err(study_error)?;
+    nyquist_lab::study::convergence::check_memory(&study, threads)?;
     notes.iter().for_each(|n| crate::output::note(n));
     let start = Stopwatch::start();
     let outcome = study.run(threads).map_err(study_error)?;

@@ -30,7 +30,7 @@ pub struct FilterArgs {
     pub filter: FilterKind,
     /// Grid points per axis over [−rx, rx] × [−ry, ry], ends included.
     #[arg(long, value_name = "N", default_value_t = 9,
-          value_parser = clap::value_parser!(u32).range(1..=4096))]
+          value_parser = nyquist_lab::flags::whole(1u32, 4096))]
     pub grid: u32,
     /// Print the precomputed 16 × 16 lookup table (the quadrant [0, rx] × [0, ry]) instead of
     /// the grid.

@@ -4,7 +4,7 @@
 //! file beside the target and renamed into place, so a failure leaves nothing behind.
 #![forbid(unsafe_code)]
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use nyquist_cli::{analyze, compare, converge, filter, mask, points, render, shaders, web};
 use std::process::ExitCode;
 
@@ -80,7 +80,10 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    let cli = match command()
+        .try_get_matches()
+        .and_then(|m| Cli::from_arg_matches(&m))
+    {
         Ok(cli) => cli,
         Err(e) => return clap_exit(&e),
     };
@@ -113,6 +116,24 @@ fn main() -> ExitCode {
     }
 }
 
+/// The command line's parser: every flag that takes a value also takes one that starts with a
+/// hyphen, so `--spp -1` and `--size -5x5` reach the flag's own parser, which names its range,
+/// instead of reading as an unknown flag `-1`.
+fn command() -> clap::Command {
+    fn hyphen_values(cmd: clap::Command) -> clap::Command {
+        let ids: Vec<clap::Id> = cmd
+            .get_arguments()
+            .filter(|a| a.get_long().is_some() && a.get_action().takes_values())
+            .map(|a| a.get_id().clone())
+            .collect();
+        let cmd = ids
+            .iter()
+            .fold(cmd, |c, id| c.mut_arg(id, |a| a.allow_hyphen_values(true)));
+        cmd.mut_subcommands(hyphen_values)
+    }
+    hyphen_values(Cli::command())
+}
+
 /// Help and version go to stdout with status 0; every parse error becomes one line, status 2.
 fn clap_exit(e: &clap::Error) -> ExitCode {
     use clap::error::ErrorKind;
@@ -129,6 +150,10 @@ fn clap_exit(e: &clap::Error) -> ExitCode {
         }
         _ if empty_value(e).is_some() => {
             eprintln!("nyquist: {}", empty_value(e).unwrap_or_default());
+            ExitCode::from(2)
+        }
+        ErrorKind::ValueValidation if rejected_value(e).is_some() => {
+            eprintln!("nyquist: {}", rejected_value(e).unwrap_or_default());
             ExitCode::from(2)
         }
         _ => {
@@ -167,10 +192,34 @@ fn empty_value(e: &clap::Error) -> Option<String> {
         Some(t) if list => format!("{flag} '{t}': an empty item in the comma-separated list"),
         _ => format!("{flag}: a value is required"),
     };
-    if let Some(ContextValue::Strings(valid)) = e.get(ContextKind::ValidValue) {
+    if let Some(ContextValue::Strings(valid)) = e.get(ContextKind::ValidValue)
+        && !valid.is_empty()
+    {
         msg.push_str(&format!(" (possible values: {})", valid.join(", ")));
     }
     Some(msg)
+}
+
+/// A value the flag's parser refused, as `FLAG VALUE: REASON` (`--spp -1: not in 1 ..= 1048576`),
+/// where clap would say "invalid value '-1' for '--spp <SPP>': …". A value with spaces, or an
+/// empty one, is quoted.
+fn rejected_value(e: &clap::Error) -> Option<String> {
+    use clap::error::{ContextKind, ContextValue};
+    use std::error::Error as _;
+    let Some(ContextValue::String(arg)) = e.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let Some(ContextValue::String(value)) = e.get(ContextKind::InvalidValue) else {
+        return None;
+    };
+    let flag = arg.split([' ', '=']).next().unwrap_or(arg);
+    let reason = e.source()?.to_string();
+    let shown = if value.is_empty() || value.contains(char::is_whitespace) {
+        format!("'{value}'")
+    } else {
+        value.clone()
+    };
+    Some(one_line(&format!("{flag} {shown}: {reason}")))
 }
 
 /// Folds a multi-line message into one line, dropping clap's usage and "--help" hints: lines

@@ -22,10 +22,10 @@ pub struct MaskArgs {
     pub size: [u32; 2],
     /// Channels, 1 to 4 (PNG: grey, grey + alpha, RGB, RGBA; OpenEXR: Y or R, G, B, A), each an
     /// independent mask, decorrelated.
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=4))]
+    #[arg(long, default_value_t = 1, value_parser = nyquist_lab::flags::whole(1u32, 4))]
     pub channels: u32,
     /// Seed: the same seed and size give the same mask.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = 0, value_parser = nyquist_lab::flags::whole(0, u64::MAX))]
     pub seed: u64,
     /// Bits per PNG sample, 8 or 16: rank r of N pixels becomes ⌊r·2^bits/N⌋.
     #[arg(long, default_value_t = 8, value_parser = parse_bits)]
@@ -50,7 +50,7 @@ pub struct MaskArgs {
 /// assert!(parse_mask_size("1024x2048").is_err());
 /// ```
 pub fn parse_mask_size(s: &str) -> Result<[u32; 2], String> {
-    let bad = || format!("'{s}' is not N or WxH with sides 1 to {MAX_MASK_SIDE} (e.g. 128)");
+    let bad = || format!("not N or WxH with sides 1 to {MAX_MASK_SIDE} (e.g. 128)");
     let side = |t: &str| match t.trim().parse::<u32>() {
         Ok(v) if (1..=MAX_MASK_SIDE).contains(&v) => Ok(v),
         _ => Err(bad()),
@@ -66,7 +66,7 @@ fn parse_bits(s: &str) -> Result<u8, String> {
     match s.trim() {
         "8" => Ok(8),
         "16" => Ok(16),
-        _ => Err(format!("'{s}' is not 8 or 16")),
+        _ => Err("not 8 or 16".to_owned()),
     }
 }
 

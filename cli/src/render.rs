@@ -59,7 +59,7 @@ pub struct RenderArgs {
     /// Samples per pixel (uniform and stratified: a √spp × √spp grid for a square, else the
     /// squarest rectangle of spp cells; zero-two, sobol and adaptive
     /// round up to a power of two).
-    #[arg(long, default_value_t = 16)]
+    #[arg(long, default_value_t = 16, value_parser = nyquist_lab::flags::whole(1, nyquist_lab::study::MAX_SPP))]
     pub spp: u32,
     /// Reconstruction filter spec `name[:key=value,…]`: box, triangle, gaussian, mitchell,
     /// lanczos (e.g. gaussian:alpha=2, mitchell:b=0.5,c=0.25).
@@ -69,10 +69,10 @@ pub struct RenderArgs {
     #[arg(long, value_name = "WxH", default_value = "256x256", value_parser = parse_size)]
     pub size: [u32; 2],
     /// Worker threads [default: the number of cores]. The image is the same for any count.
-    #[arg(long, value_parser = clap::value_parser!(u16).range(1..=1024))]
+    #[arg(long, value_parser = nyquist_lab::flags::whole(1u16, 1024))]
     pub threads: Option<u16>,
-    /// Seed of the sampler's random numbers and scrambles (0: unscrambled halton/hammersley).
-    #[arg(long, default_value_t = 0)]
+    /// Seed of the sampler's random numbers and scrambles.
+    #[arg(long, default_value_t = 0, value_parser = nyquist_lab::flags::whole(0, u64::MAX))]
     pub seed: u64,
     /// Scramble of halton, hammersley (its dimensions from 2 on), sobol and zsobol [default:
     /// each sampler's own: digit permutation for halton, hammersley and sobol (every seed),

@@ -23,7 +23,7 @@ pub struct WebArgs {
     #[arg(long, default_value = "127.0.0.1", value_name = "IP")]
     pub addr: IpAddr,
     /// Port to listen on; 0 picks a free one (the address is printed either way).
-    #[arg(long, default_value_t = 8000)]
+    #[arg(long, default_value_t = 8000, value_parser = nyquist_lab::flags::whole(0u16, u16::MAX))]
     pub port: u16,
 }
 

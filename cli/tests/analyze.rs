@@ -280,7 +280,7 @@ fn bad_input_is_one_line_exit_2_and_writes_nothing() {
     let gif = gif.to_str().unwrap();
     let cases: [(&[u8], &[&str], &str); 9] = [
         (b"0.5,0.5\n0.25,oops\n", &[], "not a number"),
-        (b"0.5,0.5\n0.25\n", &[], "1 values, expected 2"),
+        (b"0.5,0.5\n0.25\n", &[], "1 value, expected 2"),
         (b"0.5,0.5\n0.25,1.0\n", &[], "outside [0, 1)"),
         (b"0.5,-0.1\n", &[], "outside [0, 1)"),
         (b"0.5,NaN\n", &[], "not a finite number"),

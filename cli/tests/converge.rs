@@ -88,7 +88,10 @@ fn bad_flags_are_one_line_exit_2_and_write_nothing() {
             &["--min-spp", "64", "--max-spp", "64"][..],
             "two sample counts",
         ),
-        (&["--max-spp", "2097152"][..], "at most"),
+        (
+            &["--max-spp", "2097152"][..],
+            "--max-spp 2097152: not in 1 ..= 1048576",
+        ),
         (&["--runs", "0"][..], "--runs"),
         (
             &["--max-spp", "1048576", "--runs", "100000"][..],

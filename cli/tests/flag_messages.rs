@@ -76,13 +76,13 @@ fn dims_above_a_sets_limit_name_the_limit() {
 fn filter_values_out_of_range_give_the_range() {
     assert_error(
         &["filter", "--filter", "box:radius=0"],
-        "invalid value 'box:radius=0' for '--filter <SPEC>': filter spec: invalid value `0` for \
-         key `radius`: rx must be in [0.000015258789, 1024] (2^-16 to 1024 pixels)",
+        "--filter box:radius=0: filter spec: invalid value `0` for key `radius`: rx must be in \
+         [0.000015258789, 1024] (2^-16 to 1024 pixels)",
     );
     assert_error(
         &["filter", "--filter", "mitchell:b=1e308"],
-        "invalid value 'mitchell:b=1e308' for '--filter <SPEC>': filter spec: invalid value \
-         `1e308` for key `b`: b must be in [-1000, 1000]",
+        "--filter mitchell:b=1e308: filter spec: invalid value `1e308` for key `b`: b must be in \
+         [-1000, 1000]",
     );
 }
 
@@ -90,8 +90,7 @@ fn filter_values_out_of_range_give_the_range() {
 fn a_filter_key_given_twice_is_refused() {
     assert_error(
         &["filter", "--filter", "mitchell:b=0.5,c=0.25,b=1"],
-        "invalid value 'mitchell:b=0.5,c=0.25,b=1' for '--filter <SPEC>': filter spec: key `b` \
-         is given twice",
+        "--filter mitchell:b=0.5,c=0.25,b=1: filter spec: key `b` is given twice",
     );
 }
 
@@ -281,7 +280,8 @@ fn long_work_is_announced_with_its_size() {
     assert_eq!(
         line,
         "nyquist: warning: --filter box:rx=1000,ry=1000 adds each of 1048576 samples to up to \
-         65536 pixels: about 6.9e10 pixel updates; this may take minutes\n"
+         65536 pixels: about 6.9e10 pixel updates; this may take a while; a smaller --size, \
+         fewer --spp or a narrower --filter make it shorter\n"
     );
     assert!(!out.exists());
     let line = first_stderr_line(
@@ -303,7 +303,8 @@ fn long_work_is_announced_with_its_size() {
     assert_eq!(
         line,
         "nyquist: warning: --spectrum: 100000 realisations × 64 points × 129² frequencies is \
-         about 1.1e11 terms; this may take minutes\n"
+         about 1.1e11 terms; this may take minutes; fewer --realisations, a lower --freq or \
+         fewer points make it shorter\n"
     );
     let sheet = dir.join("sheet.png");
     let line = first_stderr_line(
@@ -322,9 +323,78 @@ fn long_work_is_announced_with_its_size() {
     );
     assert_eq!(
         line,
-        "nyquist: warning: 2 renders: about 1.4e11 pixel updates; this may take minutes\n"
+        "nyquist: warning: 2 renders: about 1.4e11 pixel updates; this may take a while; a \
+         smaller --size, fewer --spp or a narrower --filter make it shorter\n"
     );
     assert!(!sheet.exists());
+    // The quadratic measures and the exact 2D sweep, estimated from the point count.
+    let line = first_stderr_line(
+        &[
+            "analyze",
+            "--sampler",
+            "random",
+            "--count",
+            "300000",
+            "--measures",
+            "l2-star",
+        ],
+        &dir,
+    );
+    assert_eq!(
+        line,
+        "nyquist: warning: --measures l2-star: 300000 points in 2 dimensions, d·N² = 1.8e11 \
+         terms: about 38 s of work; give fewer points, or leave it out of --measures\n"
+    );
+    let line = first_stderr_line(
+        &[
+            "analyze",
+            "--sampler",
+            "random",
+            "--count",
+            "100000",
+            "--measures",
+            "star",
+            "--star-method",
+            "exact",
+        ],
+        &dir,
+    );
+    assert_eq!(
+        line,
+        "nyquist: warning: --measures star: exact 2D sweep of 100000 points, N² = 1.0e10 steps: \
+         about 32 s of work; give fewer points, or --star-method bounds\n"
+    );
+    // Past its stated limit the exact sweep is refused, as its help says.
+    assert_error(
+        &[
+            "analyze",
+            "--sampler",
+            "random",
+            "--count",
+            "131073",
+            "--measures",
+            "star",
+            "--star-method",
+            "exact",
+        ],
+        "--star-method exact: the 2D sweep of 131073 points takes N² = 1.7e10 steps, past its \
+         limit of 131072 points (about 55 s); use --star-method bounds or fewer points",
+    );
+    // Above 65536 points l2-star leaves the defaults with a note.
+    let o = nyquist(&[
+        "analyze",
+        "--sampler",
+        "random",
+        "--count",
+        "70000",
+        "--json",
+    ]);
+    assert_eq!(
+        stderr(&o),
+        "nyquist: note: l2-star is left out of the default measures above 65536 points (its \
+         work grows as d·N²; 70000 points would take about 2 s): name it in --measures to \
+         compute it\n"
+    );
     // Ordinary work: no warning.
     let o = nyquist(&["render", "--size", "16x16", "--spp", "4", "--metrics"]);
     assert_eq!(stderr(&o), "");
@@ -351,5 +421,187 @@ fn lattice_sizes_name_what_is_accepted() {
         "--count 5000: korobov searches its multiplier for at most 4096 points in 3 dimensions; \
          Stroud's table has 101, 199, 307, 523, 701, 1069, 1543, 2129, 3001, 4001, 5003, 6007, \
          8191, 10007 for 3 dimensions",
+    );
+}
+
+#[test]
+fn numeric_flags_name_the_flag_the_value_and_the_real_range() {
+    for (args, line) in [
+        // Negative values reach the flag's parser instead of reading as an unknown flag.
+        (
+            &["render", "--spp", "-1"][..],
+            "--spp -1: not in 1 ..= 1048576",
+        ),
+        // The real limit, not the type's 0..=4294967295.
+        (
+            &["render", "--spp", "4294967296"],
+            "--spp 4294967296: not in 1 ..= 1048576",
+        ),
+        (
+            &["render", "--spp", "1.5"],
+            "--spp 1.5: not a whole number in 1 ..= 1048576",
+        ),
+        (
+            &["render", "--size", "-5x5"],
+            "--size -5x5: not WxH with sides 1 to 16384 (e.g. 256x256)",
+        ),
+        (
+            &["points", "--count", "0"],
+            "--count 0: not in 1 ..= 268435456",
+        ),
+        (
+            &["points", "--seed", "-3"],
+            "--seed -3: not in 0 ..= 18446744073709551615",
+        ),
+        (&["converge", "--dims", "1"], "--dims 1: not in 2 ..= 64"),
+        (
+            &["converge", "--runs", "0"],
+            "--runs 0: not in 1 ..= 1048576",
+        ),
+        (
+            &["compare", "--spp", "1,-4"],
+            "--spp -4: not in 1 ..= 65536",
+        ),
+        (
+            &["compare", "--threads", "0"],
+            "--threads 0: not in 1 ..= 1024",
+        ),
+        (
+            &["filter", "--filter", "box", "--grid", "5000"],
+            "--grid 5000: not in 1 ..= 4096",
+        ),
+        (&["mask", "--channels", "5"], "--channels 5: not in 1 ..= 4"),
+        (&["mask", "--bits", "7"], "--bits 7: not 8 or 16"),
+        (
+            &["analyze", "--sampler", "sobol", "--freq", "5000"],
+            "--freq 5000: not in 1 ..= 4096",
+        ),
+        (
+            &["analyze", "--sampler", "sobol", "--realisations", "0"],
+            "--realisations 0: not in 1 ..= 100000",
+        ),
+        (
+            &["web", "--port", "70000"],
+            "--port 70000: not in 0 ..= 65535",
+        ),
+        (
+            &["points", "--max-memory", "3X"],
+            "--max-memory 3X: not a size such as 512M, 2G or 1.5GiB",
+        ),
+        // A flag without its value: no empty list of possible values.
+        (&["render", "--spp"], "--spp: a value is required"),
+    ] {
+        assert_error(args, line);
+    }
+}
+
+#[test]
+fn set_limits_are_named_in_the_flags_terms() {
+    for (args, line) in [
+        (
+            &["points", "--sampler", "pmj02", "--count", "65537"][..],
+            "--count 65537: pmj02 has at most 65536 points",
+        ),
+        (
+            &[
+                "points",
+                "--sampler",
+                "pmj02",
+                "--count",
+                "10",
+                "--skip",
+                "65530",
+            ],
+            "--skip 65530 --count 10: pmj02 has 65536 points (indices 0 ..= 65535); these would \
+             end at index 65539",
+        ),
+        (
+            &["points", "--sampler", "stratified", "--grid", "65536x65536"],
+            "--grid 65536x65536 (4294967296 points) × --dims 2 is more than 268435456 values",
+        ),
+        (
+            &["filter", "--filter", "box:radius=1,rx=2"],
+            "--filter box:radius=1,rx=2: filter spec: keys `radius` and `rx` cannot both be given",
+        ),
+        (
+            &["filter", "--filter", "gaussian:sigma=1e10"],
+            "--filter gaussian:sigma=1e10: filter spec: invalid value `1e10` for key `sigma`: the \
+             filter's integral 2.844444e-39 is below 1e-12, so every sample would weigh almost \
+             nothing",
+        ),
+        (
+            &["converge", "--dims", "4", "--integrands", "disk"],
+            "--dims 4 --integrands: Genz's six families replace the 2-D integrands (give one or \
+             the other)",
+        ),
+    ] {
+        assert_error(args, line);
+    }
+}
+
+#[test]
+fn counts_of_one_are_singular() {
+    let o = nyquist(&[
+        "converge",
+        "--samplers",
+        "random",
+        "--integrands",
+        "disk",
+        "--runs",
+        "1",
+        "--min-spp",
+        "16",
+        "--max-spp",
+        "32",
+    ]);
+    let text = stdout(&o);
+    assert!(text.contains("; 1 independent run per N,"), "{text}");
+    assert!(text.contains("1 sampler × 2 N × 1 run:"), "{text}");
+    let o = nyquist(&[
+        "compare",
+        "--samplers",
+        "random",
+        "--filters",
+        "box",
+        "--spp",
+        "1",
+        "--size",
+        "8x8",
+    ]);
+    assert!(stdout(&o).contains("\n1 render, "), "{}", stdout(&o));
+}
+
+#[test]
+fn a_missing_slope_says_why() {
+    // The uniform grid integrates the bilinear function exactly at every square count.
+    let o = nyquist(&[
+        "converge",
+        "--samplers",
+        "uniform",
+        "--integrands",
+        "bilinear",
+        "--runs",
+        "2",
+        "--min-spp",
+        "16",
+        "--max-spp",
+        "64",
+    ]);
+    let text = stdout(&o);
+    assert!(text.contains("| uniform | - ("), "{text}");
+    assert!(
+        text.contains("No slope (-): uniform on bilinear, RMSE 0 at N = 16 (exact there;"),
+        "{text}"
+    );
+}
+
+#[test]
+fn converge_honours_the_memory_limit() {
+    let o = nyquist(&["converge", "--max-memory", "1K", "--threads", "1"]);
+    let err = stderr(&o);
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--runs 64 on 1 thread: needs about ") && err.contains("--max-memory"),
+        "{err}"
     );
 }

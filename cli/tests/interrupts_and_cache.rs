@@ -203,7 +203,7 @@ fn memory_estimates_and_failed_allocations_are_one_line_errors() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert_eq!(
         err,
-        "nyquist: --size 8192x8192: out of memory: the film's pixels needs 2147483648 bytes (try \
+        "nyquist: --size 8192x8192: out of memory: 2147483648 bytes for the film's pixels (try \
          a smaller --size)\n"
     );
     assert!(files(&dir).is_empty(), "{:?}", files(&dir));

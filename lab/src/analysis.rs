@@ -21,17 +21,30 @@ use std::io::{BufRead as _, IsTerminal, Read as _};
 use std::path::{Path, PathBuf};
 
 /// The most coordinates a CSV input may hold: 2²⁸ (as `points`).
-const MAX_VALUES: usize = 1 << 28;
+const MAX_VALUES: usize = crate::points::MAX_VALUES as usize;
 /// Largest set whose L2-star discrepancy (O(d·N²)) is among the default measures.
 const DEFAULT_L2_LIMIT: usize = 1 << 16;
 /// Largest set the automatic star method computes exactly in 2D (the sweep is O(N²)).
 const AUTO_EXACT_2D: usize = 1 << 15;
+/// Largest set `--star-method exact` sweeps in 2D: 2¹⁷ points, N² = 2³⁴ steps (about a minute
+/// at [`SWEEP_SECONDS`]); larger sets are refused, as enumeration past [`ENUMERATION_LIMIT`] is.
+pub const EXACT_2D_LIMIT: usize = 1 << 17;
+/// Seconds per step of the 2D sweep (N² steps), from a release build on a 2-core x86-64 machine
+/// (50 000 points in 8.1 s): the basis of the announcement, not a promise.
+const SWEEP_SECONDS: f64 = 3.2e-9;
+/// Seconds per `d·N²` term of the L2 discrepancies, measured the same way (200 000 2D points in
+/// 16.6 s).
+const PAIR_SECONDS: f64 = 2.1e-10;
+/// Estimated work above which a measure is announced before it starts, with a progress bar.
+const ANNOUNCE_SECONDS: f64 = 2.0;
 /// Grid cells `(m + 1)^d` of the automatic bounds grid (32 MiB of counters).
 const BOUNDS_CELLS: u64 = 1 << 22;
 /// Largest automatic bounds grid per axis.
 const BOUNDS_MAX_M: u32 = 1 << 16;
 /// The periodogram's highest frequency unless --freq says otherwise.
 const DEFAULT_FREQ: u32 = 64;
+/// Most realisations one periodogram averages.
+const MAX_REALISATIONS: u32 = 100_000;
 /// Periodogram terms (realisations × points × frequencies) above which `--spectrum` warns.
 const LARGE_SPECTRUM: f64 = 1e10;
 /// Margin around and between the panels of the spectrum picture.
@@ -93,7 +106,8 @@ pub enum StarMethod {
     /// Exact in 1D, in 2D up to 32768 points and by enumeration while its cost is within the
     /// library's limit; otherwise the grid bracket.
     Auto,
-    /// Always exact (an error when enumeration would be too costly).
+    /// Always exact: an error when the work would pass its limit (2D: more than 131072 points;
+    /// 3 or more dimensions: an enumeration of more than 2^32 steps).
     Exact,
     /// Always the grid bracket [lower, upper] (--star-grid cells per axis).
     Bounds,
@@ -129,22 +143,22 @@ pub struct AnalyzeSpec {
     )]
     pub sampler: Option<PointSetName>,
     /// Number of points to generate [default: 16; required for hammersley].
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(1, crate::points::MAX_VALUES)))]
     pub count: Option<u64>,
     /// Dimensions per generated point [default: 2]; with CSV input, the expected column count.
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(1, crate::points::MAX_VALUES as u32)))]
     pub dims: Option<u32>,
     /// Seed of random and scrambled sets [default: 0].
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(0, u64::MAX)))]
     pub seed: Option<u64>,
     /// Index of the first point of a generated sequence.
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(0, u64::MAX)))]
     pub skip: Option<u64>,
     /// Grid `NXxNY` for 2D uniform/stratified sets whose count is not a square.
     #[cfg_attr(feature = "clap", arg(long, value_parser = parse_grid))]
     pub grid: Option<(u32, u32)>,
     /// Pixel-sampler mode (as in `points`): the SPP samples of pixel 0,0.
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(1, crate::study::MAX_SPP)))]
     pub spp: Option<u32>,
     /// Image size `WxH` for halton, hammersley and sobol with --spp.
     #[cfg_attr(feature = "clap", arg(long, value_parser = parse_grid))]
@@ -153,7 +167,7 @@ pub struct AnalyzeSpec {
     /// set's dimension count), e.g. `--dims 8 --project 3,7` for Halton's pair of bases 7 and 19.
     #[cfg_attr(
         feature = "clap",
-        arg(long, value_delimiter = ',', value_name = "LIST")
+        arg(long, value_delimiter = ',', value_name = "LIST", value_parser = crate::flags::whole(0, crate::points::MAX_VALUES as u32 - 1))
     )]
     pub project: Vec<u32>,
     /// Comma-separated measures [default: star; l2-star up to 65536 points; min-distance for 2D
@@ -174,7 +188,7 @@ pub struct AnalyzeSpec {
     pub star_method: StarMethod,
     /// Cells per axis of the star-discrepancy bracket [default: the largest with at most 2^22
     /// grid points]; the bracket's width is at most 1 − (1 − 1/m)^d.
-    #[cfg_attr(feature = "clap", arg(long, value_name = "M"))]
+    #[cfg_attr(feature = "clap", arg(long, value_name = "M", value_parser = crate::flags::whole(1, u32::MAX)))]
     pub star_grid: Option<u32>,
     /// Print one JSON object instead of the table: each measure's number under its name
     /// (`star`, `l2-star`, `centered-l2`, `wraparound-l2`, `min-distance`, `rho`, and the
@@ -190,11 +204,11 @@ pub struct AnalyzeSpec {
     pub spectrum: Option<PathBuf>,
     /// Highest integer frequency F of the periodogram: the grid is (2F+1)² [default: 64]. Without
     /// --spectrum it changes nothing (a note says so).
-    #[cfg_attr(feature = "clap", arg(long, value_name = "F"))]
+    #[cfg_attr(feature = "clap", arg(long, value_name = "F", value_parser = crate::flags::whole(1, nyquist_film::periodogram::MAX_FREQ)))]
     pub freq: Option<u32>,
     /// Realisations averaged in the periodogram: generated sets use seeds seed..seed+M−1. The
     /// work is M × points × (2F+1)²; a warning gives it when it is large.
-    #[cfg_attr(feature = "clap", arg(long, default_value_t = 1, value_name = "M"))]
+    #[cfg_attr(feature = "clap", arg(long, default_value_t = 1, value_name = "M", value_parser = crate::flags::whole(1, MAX_REALISATIONS)))]
     pub realisations: u32,
 }
 
@@ -319,7 +333,9 @@ pub fn report(args: &AnalyzeSpec, host: &mut dyn Host) -> Result<String> {
     check_args(args, host)?;
     let (coords, dims, source) = load_with(args, args.seed, host)?;
     let set = PointSet::new(&coords, dims).map_err(|e| anyhow!("points: {e}"))?;
-    let measures = chosen_measures(args, set.len(), dims)?;
+    let mut notes = Vec::new();
+    let measures = chosen_measures(args, set.len(), dims, &mut notes)?;
+    notes.iter().for_each(|n| host.note(n));
     let mut rows = Vec::new();
     for &m in &measures {
         rows.extend(measure(args, &set, m, host)?);
@@ -406,8 +422,11 @@ fn check_args(args: &AnalyzeSpec, host: &mut dyn Host) -> Result<()> {
                 nyquist_film::periodogram::MAX_FREQ
             );
         }
-        if args.realisations == 0 || args.realisations > 100_000 {
-            bail!("--realisations {}: need 1 ..= 100000", args.realisations);
+        if args.realisations == 0 || args.realisations > MAX_REALISATIONS {
+            bail!(
+                "--realisations {}: need 1 ..= {MAX_REALISATIONS}",
+                args.realisations
+            );
         }
         // The (2F+1)² power sums in f64 and the picture drawn from them (4 bytes a cell).
         let side = 2 * u64::from(freq) + 1;
@@ -642,8 +661,8 @@ pub fn read_csv(
             dims = fields.len();
         } else if fields.len() != dims {
             bail!(
-                "{name} line {at}: {} values, expected {dims} as on the first point",
-                fields.len()
+                "{name} line {at}: {}, expected {dims} as on the first point",
+                crate::words::count(fields.len() as u64, "value")
             );
         }
         if coords.len() + dims > coords.capacity() {
@@ -713,23 +732,30 @@ fn grow(
         (limit.bytes / 8) as usize
     } else {
         bail!(
-            "{name}: the points pass the {} limit ({}) after {} values ({} point{}); give \
-             fewer points or a larger --max-memory",
+            "{name}: the points pass the {} limit ({}) after {} ({}); give fewer points or a \
+             larger --max-memory",
             crate::memory::human(limit.bytes),
             limit.source,
-            len,
-            len / dims,
-            if len / dims == 1 { "" } else { "s" },
+            crate::words::count(len as u64, "value"),
+            crate::words::count((len / dims) as u64, "point"),
         );
     };
-    coords
-        .try_reserve_exact(wanted - len)
-        .map_err(|_| anyhow!("{name}: out of memory after {len} values"))
+    coords.try_reserve_exact(wanted - len).map_err(|_| {
+        anyhow!(
+            "{name}: out of memory after {}",
+            crate::words::count(len as u64, "value")
+        )
+    })
 }
 
 /// The measures to compute: the explicit list (each must apply to `dims`), or the defaults that
 /// apply (the quadratic L2-star only up to [`DEFAULT_L2_LIMIT`] points).
-fn chosen_measures(args: &AnalyzeSpec, n: usize, dims: usize) -> Result<Vec<Measure>> {
+fn chosen_measures(
+    args: &AnalyzeSpec,
+    n: usize,
+    dims: usize,
+    notes: &mut Vec<String>,
+) -> Result<Vec<Measure>> {
     if args.measures.is_empty() {
         let mut m = Vec::new();
         if dims <= MAX_DIMS {
@@ -737,6 +763,13 @@ fn chosen_measures(args: &AnalyzeSpec, n: usize, dims: usize) -> Result<Vec<Meas
         }
         if n <= DEFAULT_L2_LIMIT {
             m.push(Measure::L2Star);
+        } else {
+            notes.push(format!(
+                "l2-star is left out of the default measures above {DEFAULT_L2_LIMIT} points (its \
+                 work grows as d·N²; {n} points would take about {}): name it in --measures to \
+                 compute it",
+                duration(PAIR_SECONDS * dims as f64 * (n as f64) * (n as f64))
+            ));
         }
         if dims == 2 {
             m.push(Measure::MinDistance);
@@ -784,7 +817,25 @@ fn measure(
         method: method.to_owned(),
         seconds: t.seconds(),
     };
-    Ok(match m {
+    let quadratic = matches!(
+        m,
+        Measure::L2Star | Measure::CenteredL2 | Measure::WraparoundL2
+    );
+    let d = set.dims() as f64;
+    let announced = quadratic
+        && announce(
+            host,
+            &format!("--measures {}", m.name()),
+            &format!(
+                "{} in {}, d·N² = {:.1e} terms",
+                crate::words::count(set.len() as u64, "point"),
+                crate::words::count(set.dims() as u64, "dimension"),
+                d * n * n
+            ),
+            PAIR_SECONDS * d * n * n,
+            "give fewer points, or leave it out of --measures",
+        );
+    let rows = match m {
         Measure::Star => vec![star(args, set, host)?],
         Measure::L2Star => vec![disc(
             "L2-star discrepancy",
@@ -845,7 +896,49 @@ fn measure(
                 },
             ]
         }
-    })
+    };
+    if announced {
+        host.progress_inc();
+        host.progress_finish();
+    }
+    Ok(rows)
+}
+
+/// Announces long work before it starts: when `seconds`, the estimate, passes
+/// [`ANNOUNCE_SECONDS`], one warning line `FLAGS: WHAT: about DURATION; SMALLER` and a progress
+/// bar shown at once (one unit: the measure). Returns whether it did, so that the caller ends the
+/// bar.
+fn announce(host: &mut dyn Host, flags: &str, what: &str, seconds: f64, smaller: &str) -> bool {
+    if !(seconds > ANNOUNCE_SECONDS) {
+        return false;
+    }
+    host.warn(&format!(
+        "{flags}: {what}: about {} of work; {smaller}",
+        duration(seconds)
+    ));
+    host.progress_start(1, flags.trim_start_matches("--measures "), "measures", true);
+    true
+}
+
+/// A duration for people: `3 s`, `7 min`, `1.2 h`, `3 days`.
+///
+/// ```
+/// # use nyquist_lab::analysis::duration;
+/// assert_eq!(duration(2.6), "3 s");
+/// assert_eq!(duration(420.0), "7 min");
+/// assert_eq!(duration(4300.0), "1.2 h");
+/// assert_eq!(duration(3.0 * 86400.0), "3.0 days");
+/// ```
+pub fn duration(seconds: f64) -> String {
+    if seconds < 90.0 {
+        format!("{seconds:.0} s")
+    } else if seconds < 3600.0 {
+        format!("{:.0} min", seconds / 60.0)
+    } else if seconds < 86400.0 {
+        format!("{:.1} h", seconds / 3600.0)
+    } else {
+        format!("{:.1} days", seconds / 86400.0)
+    }
 }
 
 /// The star discrepancy by the method `--star-method` picks.
@@ -869,23 +962,56 @@ fn star(args: &AnalyzeSpec, set: &PointSet<'_>, host: &mut dyn Host) -> Result<R
             Err(e) => Err(anyhow!("star: {e}")),
         }
     };
+    if d == 2 && args.star_method == StarMethod::Exact && n > EXACT_2D_LIMIT {
+        bail!(
+            "--star-method exact: the 2D sweep of {n} points takes N² = {:.1e} steps, past its \
+             limit of {EXACT_2D_LIMIT} points (about {}); use --star-method bounds or fewer \
+             points",
+            (n as f64) * (n as f64),
+            duration(SWEEP_SECONDS * (EXACT_2D_LIMIT as f64).powi(2))
+        );
+    }
+    let sweeps = d == 2
+        && match args.star_method {
+            StarMethod::Exact => true,
+            StarMethod::Auto => n <= AUTO_EXACT_2D,
+            StarMethod::Bounds => false,
+        };
+    let announced = sweeps
+        && announce(
+            host,
+            "--measures star",
+            &format!(
+                "exact 2D sweep of {}, N² = {:.1e} steps",
+                crate::words::count(n as u64, "point"),
+                (n as f64) * (n as f64)
+            ),
+            SWEEP_SECONDS * (n as f64) * (n as f64),
+            "give fewer points, or --star-method bounds",
+        );
     let result = match args.star_method {
         StarMethod::Bounds => None,
         StarMethod::Exact => Some(exact(star_discrepancy_scratch_len(n, d))?.ok_or_else(|| {
             anyhow!(
-                "--star-method exact: enumerating {n} points in {d} dimensions exceeds the \
-                     work limit ({ENUMERATION_LIMIT}); use --star-method bounds"
+                "--star-method exact: enumerating {} in {d} dimensions exceeds the work limit \
+                 ({ENUMERATION_LIMIT}); use --star-method bounds",
+                crate::words::count(n as u64, "point")
             )
         })?),
         StarMethod::Auto if d == 2 && n > AUTO_EXACT_2D => None,
         StarMethod::Auto => exact(star_discrepancy_scratch_len(n, d))?,
     };
+    if announced {
+        host.progress_inc();
+        host.progress_finish();
+    }
     let n_f = n as f64;
     if let (Some(_), Some(m)) = (result, args.star_grid) {
         host.note(&format!(
-            "--star-grid {m} unused: the star discrepancy of {n} points in {d} dimension{} is \
-             computed exactly (give --star-method bounds for the bracket)",
-            if d == 1 { "" } else { "s" }
+            "--star-grid {m} unused: the star discrepancy of {} in {} is computed exactly (give \
+             --star-method bounds for the bracket)",
+            crate::words::count(n as u64, "point"),
+            crate::words::count(d as u64, "dimension")
         ));
     }
     if let Some((v, how)) = result {
@@ -978,8 +1104,10 @@ fn spectrum(
     let large = terms > LARGE_SPECTRUM;
     if large {
         host.warn(&format!(
-            "--spectrum: {total} realisations × {n} points × {side}² frequencies is about \
-             {terms:.1e} terms; this may take minutes"
+            "--spectrum: {} × {} × {side}² frequencies is about {terms:.1e} terms; this may take \
+             minutes; fewer --realisations, a lower --freq or fewer points make it shorter",
+            crate::words::count(total, "realisation"),
+            crate::words::count(n, "point")
         ));
     }
     host.progress_start(u64::from(total), "spectrum", "realisations", large);
@@ -1148,11 +1276,9 @@ impl crate::plot::Figure for SpectrumPlot<'_> {
         let used = title(root, &self.title, (m, m), w - 2 * MARGIN, &sizes)?;
         root.draw_text(
             &format!(
-                "N = {} points, {} realisation{} averaged; power P(f) = |Σ exp(−2πi f·x)|² / N, \
-                 white noise 1 (0 dB)",
-                self.points,
-                s.realisations,
-                if s.realisations == 1 { "" } else { "s" }
+                "N = {}, {} averaged; power P(f) = |Σ exp(−2πi f·x)|² / N, white noise 1 (0 dB)",
+                crate::words::count(self.points as u64, "point"),
+                crate::words::count(s.realisations, "realisation")
             ),
             &font(14.0).color(&INK),
             (m, m + used + 3),

@@ -2,7 +2,7 @@
 //! above the library. Point sets and samplers by name come from the core
 //! ([`nyquist::sampler::NamedSampler`]); here are the test scenes and their references
 //! ([`scene`]), convergence studies over any integrand family ([`study`]), one work queue
-//! ([`parallel`]), memory limits ([`memory`]), a clock that also works in WebAssembly
+//! ([`parallel`]), memory limits ([`memory`]), the numeric flags' ranges ([`flags`]), a clock that also works in WebAssembly
 //! ([`clock`]) and the figures ([`plot`], [`raster`], [`svg`]).
 //!
 //! Errors here are messages for people ([`anyhow::Error`]) where a front end only shows them,
@@ -21,6 +21,7 @@
 pub mod analysis;
 pub mod clock;
 pub mod filter;
+pub mod flags;
 pub mod json;
 pub mod memory;
 pub mod parallel;
@@ -36,3 +37,4 @@ pub mod scene;
 pub mod study;
 pub mod svg;
 pub mod url;
+pub mod words;

@@ -160,19 +160,19 @@ pub struct PointsSpec {
     #[cfg_attr(feature = "clap", arg(long, value_enum, default_value = "halton"))]
     pub sampler: PointSetName,
     /// Number of points [default: 16; required for hammersley].
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(1, MAX_VALUES)))]
     pub count: Option<u64>,
     /// Dimensions per point [default: 2, or the set's own count when it has fewer (vdc: 1)].
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(1, MAX_VALUES as u32)))]
     pub dims: Option<u32>,
     /// Seed of the random sets and pixel samplers [default: 0]; for halton, sobol, zero-two,
     /// pmj02, fibonacci, korobov and rd it asks for their randomization (digit permutation,
     /// digital shift, Owen scramble, rotation; any seed, 0 included), which they lack without
     /// it. vdc, hammersley, the zaremba forms and uniform point sets take none.
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(0, u64::MAX)))]
     pub seed: Option<u64>,
     /// Index of the first point of a sequence (sequences and random only).
-    #[cfg_attr(feature = "clap", arg(long, default_value_t = 0))]
+    #[cfg_attr(feature = "clap", arg(long, default_value_t = 0, value_parser = crate::flags::whole(0, u64::MAX)))]
     pub skip: u64,
     /// Grid `NXxNY` for 2D uniform/stratified sets whose count is not a square.
     #[cfg_attr(feature = "clap", arg(long, value_parser = parse_grid))]
@@ -180,7 +180,7 @@ pub struct PointsSpec {
     /// Pixel-sampler mode: the SPP samples of one pixel (--pixel) from the sampler of the
     /// renderer instead of a sequence's points. Each point is the image sample (offset in the
     /// pixel) followed by dimensions 2, 3, … (time, lens u, lens v, …).
-    #[cfg_attr(feature = "clap", arg(long))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(1, crate::study::MAX_SPP)))]
     pub spp: Option<u32>,
     /// The pixel `X,Y` whose samples --spp gives [default: 0,0].
     #[cfg_attr(feature = "clap", arg(long, value_parser = parse_pixel))]
@@ -282,10 +282,10 @@ type PixelPoints = (Vec<f32>, usize, Option<(u32, u32)>);
 pub fn parse_grid(s: &str) -> Result<(u32, u32), String> {
     let (a, b) = s
         .split_once(['x', 'X'])
-        .ok_or_else(|| format!("'{s}' is not NXxNY (e.g. 4x4)"))?;
+        .ok_or_else(|| "not NXxNY (e.g. 4x4)".to_owned())?;
     let parse = |t: &str| -> Result<u32, String> {
         match t.trim().parse::<u32>() {
-            Ok(0) | Err(_) => Err(format!("'{s}' is not NXxNY with positive sizes (e.g. 4x4)")),
+            Ok(0) | Err(_) => Err("not NXxNY with positive sizes (e.g. 4x4)".to_owned()),
             Ok(v) => Ok(v),
         }
     };
@@ -294,7 +294,7 @@ pub fn parse_grid(s: &str) -> Result<(u32, u32), String> {
 
 /// Parses `X,Y` (e.g. `3,4`) into pixel coordinates.
 pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("'{s}' is not X,Y with non-negative integers (e.g. 3,4)");
+    let bad = || "not X,Y with non-negative integers (e.g. 3,4)".to_owned();
     let (a, b) = s.split_once(',').ok_or_else(bad)?;
     let x = a.trim().parse::<u32>().map_err(|_| bad())?;
     let y = b.trim().parse::<u32>().map_err(|_| bad())?;
@@ -607,11 +607,16 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
         (None, _, Some((nx, ny))) => u64::from(nx) * u64::from(ny),
         (None, ..) => 16,
     };
+    // The flags the count came from: --count, or the grid when it gave the count.
+    let count_flags = match (args.count, args.grid) {
+        (None, Some((nx, ny))) => format!("--grid {nx}x{ny} ({count} points)"),
+        _ => format!("--count {count}"),
+    };
     let values = count
         .checked_mul(u64::from(dims))
         .filter(|&v| v <= MAX_VALUES)
         .ok_or_else(|| {
-            anyhow::anyhow!("--count {count} × --dims {dims} is more than {MAX_VALUES} values")
+            anyhow::anyhow!("{count_flags} × --dims {dims} is more than {MAX_VALUES} values")
         })?;
     if args.skip != 0 && matches!(args.sampler, S::Uniform | S::Stratified | S::Lhs) {
         bail!(
@@ -626,7 +631,7 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
         );
     }
     crate::memory::check(
-        &format!("--count {count} × --dims {dims}"),
+        &format!("{count_flags} × --dims {dims}"),
         crate::memory::bytes(values, 4),
     )?;
     if let Some(seed) = args.seed
@@ -750,8 +755,34 @@ fn fill(set: &dyn Sequence, args: &PointsSpec, out: &mut [f32]) -> Result<()> {
             if set.dims() == 1 { "" } else { "s" }
         );
     }
-    set.fill(args.skip, dims, out).map_err(|e| {
-        anyhow::anyhow!("--skip {} --count: {}: {e}", args.skip, args.sampler.name())
-    })?;
+    let count = (out.len() / dims.max(1) as usize) as u64;
+    set.fill(args.skip, dims, out)
+        .map_err(|e| index_error(e, args.sampler.name(), args.skip, count))?;
     Ok(())
+}
+
+/// The sequence's refusal of `--skip`/`--count` in the flags' terms, with the set's index limit.
+fn index_error(e: nyquist::Error, name: &str, skip: u64, count: u64) -> anyhow::Error {
+    use nyquist::Error::TooMany;
+    match e {
+        TooMany {
+            what: "index range",
+            max,
+            ..
+        } if skip == 0 => anyhow::anyhow!("--count {count}: {name} has at most {max} points"),
+        TooMany {
+            what: "index range",
+            max,
+            ..
+        } => anyhow::anyhow!(
+            "--skip {skip} --count {count}: {name} has {max} points (indices 0 ..= {}); these \
+             would end at index {}",
+            max.saturating_sub(1),
+            skip.saturating_add(count - 1)
+        ),
+        TooMany {
+            what: "first", max, ..
+        } => anyhow::anyhow!("--skip {skip}: {name}'s first index is at most {max}"),
+        other => anyhow::anyhow!("--skip {skip} --count {count}: {name}: {other}"),
+    }
 }

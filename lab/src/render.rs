@@ -174,8 +174,11 @@ pub fn build_sampler(
     if spp == 0 {
         bail!("--spp 0: need at least one sample per pixel");
     }
-    if spp > 1 << 20 {
-        bail!("--spp {spp}: at most {} samples per pixel", 1 << 20);
+    if spp > crate::study::MAX_SPP {
+        bail!(
+            "--spp {spp}: at most {} samples per pixel",
+            crate::study::MAX_SPP
+        );
     }
     check_spp_limit("--sampler", n, spp)?;
     let built = match scramble {
@@ -190,7 +193,7 @@ pub fn build_sampler(
 
 /// Parses `WxH` (e.g. `256x256`) into an image size, each side 1 to [`MAX_SIDE`].
 pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
-    let bad = || format!("'{s}' is not WxH with sides 1 to {MAX_SIDE} (e.g. 256x256)");
+    let bad = || format!("not WxH with sides 1 to {MAX_SIDE} (e.g. 256x256)");
     let (a, b) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let side = |t: &str| match t.trim().parse::<u32>() {
         Ok(v) if (1..=MAX_SIDE).contains(&v) => Ok(v),
@@ -198,7 +201,7 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
     };
     let size = [side(a)?, side(b)?];
     if u64::from(size[0]) * u64::from(size[1]) > MAX_PIXELS {
-        return Err(format!("'{s}' has more than {MAX_PIXELS} pixels"));
+        return Err(format!("more than {MAX_PIXELS} pixels"));
     }
     Ok(size)
 }
@@ -212,9 +215,9 @@ pub fn parse_filter(s: &str) -> Result<FilterKind, String> {
     })
 }
 
-/// Pixel updates above which `render` and `compare` warn before they start (a minute or more
-/// of one core's work).
-pub const LARGE_WORK: f64 = 2e10;
+/// Pixel updates above which `render` and `compare` warn before they start (several seconds or
+/// more of one core's work).
+pub const LARGE_WORK: f64 = 2e9;
 
 /// Pixels one sample of a `size` image adds to through `filter`: its footprint, `2r + 1`
 /// pixels per axis, clipped to the image.
@@ -230,7 +233,10 @@ pub fn warn_if_large(work: f64, what: &str) -> bool {
     if work <= LARGE_WORK {
         return false;
     }
-    eprintln!("nyquist: warning: {what}: about {work:.1e} pixel updates; this may take minutes");
+    eprintln!(
+        "nyquist: warning: {what}: about {work:.1e} pixel updates; this may take a while; a \
+         smaller --size, fewer --spp or a narrower --filter make it shorter"
+    );
     true
 }
 

@@ -105,7 +105,7 @@ impl fmt::Display for Error {
             Error::Core(e) => write!(f, "{e}"),
             Error::Format(m) => write!(f, "image format error: {m}"),
             Error::OutOfMemory { what, bytes } => {
-                write!(f, "out of memory: {what} needs {bytes} bytes")
+                write!(f, "out of memory: {bytes} bytes for {what}")
             }
             Error::Incomplete {
                 uncovered,

@@ -35,7 +35,10 @@ impl Gaussian {
     /// # Errors
     /// [`Error::NonFinite`] / [`Error::OutOfRange`] naming `"rx"`, `"ry"` or `"alpha"`: each
     /// radius must be in [`MIN_RADIUS`](super::MIN_RADIUS)`..=`[`MAX_RADIUS`](super::MAX_RADIUS)
-    /// and `alpha` finite and `> 0` (at least `f32::MIN_POSITIVE`).
+    /// and `alpha` finite and `> 0` (at least `f32::MIN_POSITIVE`); then
+    /// [`Error::OutOfRange`] naming `"filter integral"` when the Gaussian's integral is below
+    /// [`MIN_INTEGRAL`](super::MIN_INTEGRAL): α so small against the radius that the filter is
+    /// nearly 0 everywhere (`e^(−αx²) − e^(−αr²)`), or so large that it is a spike.
     ///
     /// ```
     /// use nyquist::{filter::Gaussian, Error};
@@ -48,11 +51,13 @@ impl Gaussian {
         let radius = check_radius(radius)?;
         let alpha = check(alpha, "alpha", f32::MIN_POSITIVE, f32::MAX)?;
         let off = |r: f32| math::exp(-f64::from(alpha) * f64::from(r) * f64::from(r)) as f32;
-        Ok(Gaussian {
+        let g = Gaussian {
             radius,
             alpha,
             offset: [off(radius[0]), off(radius[1])],
-        })
+        };
+        super::check_integral(g.integral())?;
+        Ok(g)
     }
 
     /// A Gaussian of half-widths `[rx, ry]` and standard deviation `sigma`: `α = 1/(2σ²)`.
@@ -60,7 +65,7 @@ impl Gaussian {
     /// # Errors
     /// [`Error::NonFinite`] / [`Error::OutOfRange`] with `what = "sigma"` unless `sigma` is in
     /// `[3.8332338e-20, 6.521909e18]`, the `f32` values for which `1/(2σ²)` is a finite, normal
-    /// `f32`; then as [`Gaussian::new`] for the radius.
+    /// `f32`; then as [`Gaussian::new`] for the radius and the integral.
     ///
     /// ```
     /// use nyquist::filter::Gaussian;

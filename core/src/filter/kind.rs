@@ -10,7 +10,7 @@ use core::fmt;
 /// Spec syntax ([`FilterKind::parse`]): `name[:key=value,…]` with names `box` (or `boxcar`),
 /// `triangle` (or `tent`), `gaussian`, `mitchell`, `lanczos`, and keys
 ///
-/// - `radius` (both axes), `rx`, `ry`: all filters; of `radius` and `rx`/`ry` the later wins;
+/// - `radius` (both axes), `rx`, `ry`: all filters; `radius` with `rx` or `ry` is a conflict;
 /// - `alpha` or `sigma` (`α = 1/(2σ²)`): gaussian;
 /// - `b`, `c`: mitchell;
 /// - `tau`: lanczos.
@@ -77,12 +77,13 @@ pub enum SpecError<'a> {
         /// The value given.
         value: &'a str,
     },
-    /// A key was given twice (`radius` and `rx`/`ry` may be combined: the later one wins).
+    /// A key was given twice.
     Duplicate {
         /// The key.
         key: &'a str,
     },
-    /// Both `alpha` and `sigma` were given.
+    /// Two keys that set the same parameter were given: `alpha` and `sigma`, or `radius` and
+    /// `rx` or `ry` (either order would decide otherwise).
     Conflict {
         /// The first key.
         first: &'a str,
@@ -122,6 +123,21 @@ impl fmt::Display for SpecError<'_> {
             SpecError::Conflict { first, second } => {
                 write!(f, "keys `{first}` and `{second}` cannot both be given")
             }
+            SpecError::Invalid {
+                key,
+                value,
+                error:
+                    Error::OutOfRange {
+                        what: "filter integral",
+                        value: value_f,
+                        range,
+                    },
+            } => write!(
+                f,
+                "invalid value `{value}` for key `{key}`: the filter's integral {:e} is below \
+                 {:e}, so every sample would weigh almost nothing",
+                value_f as f32, range.min as f32
+            ),
             SpecError::Invalid {
                 key,
                 value,
@@ -254,6 +270,20 @@ impl FilterKind {
             if seen & bit != 0 {
                 return Err(SpecError::Duplicate { key });
             }
+            // `radius` sets both half-widths: with `rx` or `ry` the order would decide.
+            let earlier = |k: &str| {
+                KEYS.iter()
+                    .position(|&x| x == k)
+                    .is_some_and(|i| seen & (1 << i) != 0)
+            };
+            let clash = match key {
+                "radius" => ["rx", "ry"].into_iter().find(|k| earlier(k)),
+                "rx" | "ry" => Some("radius").filter(|k| earlier(k)),
+                _ => None,
+            };
+            if let Some(first) = clash {
+                return Err(SpecError::Conflict { first, second: key });
+            }
             seen |= bit;
             match key {
                 "radius" => {
@@ -308,6 +338,8 @@ impl FilterKind {
                 "b" => Some(b),
                 "c" => Some(c),
                 "tau" => Some(tau),
+                // Only a Gaussian's falloff can make its integral negligible.
+                "filter integral" => sigma.or(Some(alpha)),
                 _ => None,
             };
             let (key, value) = param.and_then(|p| p.source).unwrap_or((what, ""));

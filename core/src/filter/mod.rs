@@ -299,6 +299,17 @@ pub(crate) fn check(value: f32, what: &'static str, lo: f32, hi: f32) -> Result<
     }
 }
 
+/// The smallest filter integral a filter or table accepts: below it a filter weights every sample
+/// by almost nothing, and the film's weighted means (sums over sums of weights) lose their
+/// precision or divide zero by zero.
+pub const MIN_INTEGRAL: f32 = 1e-12;
+
+/// Validates a filter's integral: finite and at least [`MIN_INTEGRAL`] (so neither 0, negative
+/// nor NaN), named `filter integral`.
+pub(crate) fn check_integral(integral: f32) -> Result<f32, Error> {
+    check(integral, "filter integral", MIN_INTEGRAL, f32::MAX)
+}
+
 /// Validates a per-axis radius: each in [`MIN_RADIUS`]`..=`[`MAX_RADIUS`], named `rx` / `ry`.
 pub(crate) fn check_radius(radius: [f32; 2]) -> Result<[f32; 2], Error> {
     Ok([

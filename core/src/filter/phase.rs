@@ -236,6 +236,7 @@ impl PhaseTable {
     /// ```
     pub fn new<F: Filter + ?Sized>(filter: &F) -> Result<PhaseTable, Error> {
         let [rx, ry] = table_radius(filter)?;
+        let integral = super::check_integral(filter.integral())?;
         if !filter.is_separable() {
             return Err(Error::NotSeparable {
                 what: "phase table",
@@ -254,7 +255,7 @@ impl PhaseTable {
         };
         Ok(PhaseTable {
             axes,
-            integral: filter.integral(),
+            integral,
             constant,
             radius: [rx, ry],
         })

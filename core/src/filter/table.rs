@@ -777,6 +777,7 @@ fn tabulate<F: Filter + ?Sized, S>(
     values: impl FnOnce([f32; 2], [f32; 2]) -> S,
 ) -> Result<Table<S>, Error> {
     let radius = table_radius(filter)?;
+    let integral = super::check_integral(filter.integral())?;
     if separable && !filter.is_separable() {
         return Err(Error::NotSeparable {
             what: "separable table",
@@ -787,7 +788,7 @@ fn tabulate<F: Filter + ?Sized, S>(
     Ok(Table {
         radius,
         scale,
-        integral: filter.integral(),
+        integral,
         interp,
         constant: None,
         values,

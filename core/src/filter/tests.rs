@@ -624,7 +624,7 @@ fn user_filter_tabulates_like_a_builtin() {
         assert_eq!(t.weight(1.001, 0.0), 0.0);
         assert_eq!(t.weight(f32::NAN, 0.0), 0.0);
     }
-    // A plugin that breaks the contract is refused (radius) or sanitised (values).
+    // A plugin that breaks the contract is refused (radius, integral) or sanitised (values).
     #[derive(Debug)]
     struct Bad(f32);
     impl Filter for Bad {
@@ -634,6 +634,9 @@ fn user_filter_tabulates_like_a_builtin() {
         fn eval(&self, _: f32, _: f32) -> f32 {
             f32::NAN
         }
+        fn integral(&self) -> f32 {
+            1.0
+        }
     }
     assert!(FilterTable::<16>::new(&Bad(f32::NAN), Interpolation::Linear).is_err());
     assert!(FilterTable::<16>::new(&Bad(-1.0), Interpolation::Linear).is_err());
@@ -642,6 +645,128 @@ fn user_filter_tabulates_like_a_builtin() {
     assert!(FilterSampler::<_, 8>::new(Bad(0.0)).is_err());
     let s = FilterSampler::<_, 8>::new(Bad(1.0)).unwrap();
     assert_eq!(s.sample([0.5, 0.5]).weight, 0.0);
+}
+
+#[test]
+fn a_negligible_or_undefined_integral_is_refused_by_every_table() {
+    // A filter of the given integral (its values do not matter here).
+    #[derive(Debug)]
+    struct Weighs(f32);
+    impl Filter for Weighs {
+        fn radius(&self) -> [f32; 2] {
+            [1.0, 1.0]
+        }
+        fn eval(&self, _: f32, _: f32) -> f32 {
+            1.0
+        }
+        fn integral(&self) -> f32 {
+            self.0
+        }
+        fn eval_1d(&self, _: Axis, _: f32) -> Option<f32> {
+            Some(1.0)
+        }
+    }
+    for bad in [
+        0.0,
+        -1.0,
+        9.9e-13,
+        f32::NAN,
+        f32::INFINITY,
+        -f32::MIN_POSITIVE,
+    ] {
+        let f = Weighs(bad);
+        for e in [
+            FilterTable::<16>::new(&f, Interpolation::Linear).err(),
+            SeparableTable::<16>::new(&f, Interpolation::Nearest).err(),
+            Table2d::<16>::new(&f, Interpolation::Linear).err(),
+            PhaseTable::new(&f).err(),
+            FilmTable::<16>::new(&f).err(),
+        ] {
+            let e = e.unwrap_or_else(|| panic!("integral {bad} accepted"));
+            assert!(
+                matches!(
+                    e,
+                    Error::OutOfRange {
+                        what: "filter integral",
+                        ..
+                    } | Error::NonFinite {
+                        what: "filter integral"
+                    }
+                ),
+                "{bad}: {e:?}"
+            );
+        }
+    }
+    // At the limit and above: accepted, and the tables keep the filter's integral.
+    for good in [MIN_INTEGRAL, 1e-6, 1.0, f32::MAX] {
+        let f = Weighs(good);
+        assert_eq!(PhaseTable::new(&f).unwrap().integral(), good);
+        assert_eq!(
+            FilterTable::<16>::new(&f, Interpolation::Linear)
+                .unwrap()
+                .integral(),
+            good
+        );
+    }
+    // A C-style callback that answers NaN everywhere has a NaN numeric integral: refused.
+    #[derive(Debug)]
+    struct NanEverywhere;
+    impl Filter for NanEverywhere {
+        fn radius(&self) -> [f32; 2] {
+            [1.0, 1.0]
+        }
+        fn eval(&self, _: f32, _: f32) -> f32 {
+            f32::NAN
+        }
+    }
+    assert!(FilmTable::<16>::new(&NanEverywhere).is_err());
+}
+
+#[test]
+fn a_gaussian_whose_integral_is_negligible_is_refused() {
+    // σ = 10¹⁰ over radius 2: α = 5·10⁻²¹, integral about 2.8·10⁻³⁹ (the image would be black).
+    let e = Gaussian::with_sigma([2.0, 2.0], 1e10).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::OutOfRange {
+                what: "filter integral",
+                ..
+            }
+        ),
+        "{e:?}"
+    );
+    let e = Gaussian::new([2.0, 2.0], 1e30).unwrap_err();
+    assert!(
+        matches!(
+            e,
+            Error::OutOfRange {
+                what: "filter integral",
+                ..
+            }
+        ),
+        "{e:?}"
+    );
+    let msg = FilterKind::parse("gaussian:sigma=1e10")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        msg.starts_with(
+            "filter spec: invalid value `1e10` for key `sigma`: the filter's integral "
+        ) && msg.ends_with("is below 1e-12, so every sample would weigh almost nothing"),
+        "{msg}"
+    );
+    let msg = FilterKind::parse("gaussian:alpha=1e30")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        msg.contains("for key `alpha`: the filter's integral"),
+        "{msg}"
+    );
+    // Wide and narrow Gaussians well past any practical use are kept: σ = 1000 at radius 2
+    // integrates to about 2.8e-11, α = 10⁶ to about π·10⁻⁶.
+    assert!(Gaussian::with_sigma([2.0, 2.0], 1000.0).is_ok());
+    assert!(Gaussian::new([2.0, 2.0], 1e6).is_ok());
 }
 
 #[test]
@@ -661,6 +786,10 @@ fn huge_plugin_values_are_capped_so_masking_stays_exact() {
         }
         fn eval_1d(&self, _: Axis, x: f32) -> Option<f32> {
             Some(if x.abs() <= 1.0 { f32::MAX } else { 0.0 })
+        }
+        // Stated, so the tables accept it (the numeric one would overflow).
+        fn integral(&self) -> f32 {
+            1.0
         }
     }
     let cap = 4_611_686_018_427_387_904.0f32; // 2⁶²
@@ -1026,6 +1155,24 @@ fn spec_errors_name_the_offence() {
             second: "sigma"
         })
     );
+    // `radius` with `rx` or `ry`, in either order: refused, not settled by the order.
+    for (spec, first, second) in [
+        ("box:radius=1,rx=2", "radius", "rx"),
+        ("box:rx=2,radius=1", "rx", "radius"),
+        ("mitchell:ry=2,radius=1", "ry", "radius"),
+        ("triangle:radius=1,ry=0.5", "radius", "ry"),
+        ("lanczos:rx=1,ry=2,radius=3", "rx", "radius"),
+    ] {
+        assert_eq!(
+            FilterKind::parse(spec),
+            Err(Conflict { first, second }),
+            "{spec}"
+        );
+    }
+    assert_eq!(
+        FilterKind::parse("box:rx=2,ry=1").unwrap().radius(),
+        [2.0, 1.0]
+    );
     assert_eq!(
         FilterKind::parse("gaussian:sigma=0"),
         Err(Invalid {
@@ -1042,7 +1189,7 @@ fn spec_errors_name_the_offence() {
         })
     );
     assert_eq!(
-        FilterKind::parse("lanczos:radius=2,ry=nan"),
+        FilterKind::parse("lanczos:rx=2,ry=nan"),
         Err(Invalid {
             key: "ry",
             value: "nan",
@@ -1113,10 +1260,12 @@ fn spec_errors_give_the_range_and_refuse_repeated_keys() {
             .to_string(),
         "filter spec: key `radius` is given twice"
     );
-    // `radius` then `rx` is the documented override, not a repeat.
+    // `radius` then `rx` would let the order decide: refused.
     assert_eq!(
-        FilterKind::parse("box:radius=2,rx=1").unwrap().radius(),
-        [1.0, 2.0]
+        FilterKind::parse("box:radius=2,rx=1")
+            .unwrap_err()
+            .to_string(),
+        "filter spec: keys `radius` and `rx` cannot both be given"
     );
 }
 
@@ -1236,7 +1385,7 @@ fn specs_parse_and_round_trip() {
         g,
         FilterKind::Gaussian(Gaussian::with_sigma([1.5, 1.5], 0.5).unwrap())
     );
-    let t = FilterKind::parse("tent:radius=3,ry=1").unwrap();
+    let t = FilterKind::parse("tent:rx=3,ry=1").unwrap();
     assert_eq!(t.radius(), [3.0, 1.0]);
     assert_eq!(
         FilterKind::parse("boxcar:").unwrap(),
@@ -1294,7 +1443,10 @@ fn filter_with(
             radius(),
             prop_oneof![f32::MIN_POSITIVE..=f32::MAX, 1e-6f32..100.0]
         )
-            .prop_map(|(r, a)| FilterKind::Gaussian(Gaussian::new(r, a).unwrap())),
+            // The falloffs whose integral is not negligible (the others are refused).
+            .prop_filter_map("negligible integral", |(r, a)| Gaussian::new(r, a)
+                .ok()
+                .map(FilterKind::Gaussian)),
         (radius(), -1000.0f32..=1000.0, -1000.0f32..=1000.0)
             .prop_map(|(r, b, c)| FilterKind::Mitchell(Mitchell::new(r, b, c).unwrap())),
         (
@@ -2175,9 +2327,18 @@ fn sigma_bounds_are_those_of_a_normal_alpha() {
         s > 0.0 && a >= f64::from(f32::MIN_POSITIVE) && a <= f64::from(f32::MAX)
     };
     let step = |s: f32, by: i32| f32::from_bits(s.to_bits().wrapping_add_signed(by));
+    // At the ends σ passes its own check; the Gaussian is then refused for its negligible
+    // integral, a later check.
     for s in [MIN_SIGMA, MAX_SIGMA] {
+        assert!(alpha_ok(s), "{s:e}");
         assert!(
-            alpha_ok(s) && Gaussian::with_sigma([1.5, 1.5], s).is_ok(),
+            matches!(
+                Gaussian::with_sigma([1.5, 1.5], s),
+                Err(Error::OutOfRange {
+                    what: "filter integral",
+                    ..
+                })
+            ),
             "{s:e}"
         );
     }

@@ -207,9 +207,28 @@ fn check_filter(name: &str, f: &dyn Filter, ctx: &Ctx) {
     check_tables(name, f, ctx);
 }
 
+/// Whether a table accepts the filter's integral: finite and at least `MIN_INTEGRAL`.
+fn integral_ok(f: &dyn Filter) -> bool {
+    let i = f.integral();
+    i.is_finite() && i >= nyquist::filter::MIN_INTEGRAL
+}
+
+/// The tables' refusal of a negligible, negative or undefined integral.
+fn is_integral_error(e: &Error) -> bool {
+    matches!(
+        e,
+        Error::OutOfRange {
+            what: "filter integral",
+            ..
+        } | Error::NonFinite {
+            what: "filter integral"
+        }
+    )
+}
+
 fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
     let r = f.radius();
-    let valid = r.iter().all(|&v| v.is_finite() && v > 0.0);
+    let valid = r.iter().all(|&v| v.is_finite() && v > 0.0) && integral_ok(f);
     match FilterTable::<16>::new(f, ctx.interp) {
         Ok(t) => {
             assert!(valid, "{name}: FilterTable accepted radius {r:?}");
@@ -290,7 +309,10 @@ fn check_tables(name: &str, f: &dyn Filter, ctx: &Ctx) {
         }
         Err(e) => {
             assert!(!valid, "{name}: FilterTable rejected radius {r:?}: {e:?}");
-            assert!(matches!(e, Error::OutOfRange { .. }), "{name}: {e:?}");
+            assert!(
+                matches!(e, Error::OutOfRange { .. }) || is_integral_error(&e),
+                "{name}: {e:?}"
+            );
         }
     }
     let sep = SeparableTable::<8>::new(f, ctx.interp);
@@ -375,7 +397,8 @@ fn check_phase_table(name: &str, f: &dyn Filter, ctx: &Ctx) {
     let r = f.radius();
     let fits = r
         .iter()
-        .all(|&v| v.is_finite() && v > 0.0 && 2.0 * f64::from(v) < MAX_TAPS as f64);
+        .all(|&v| v.is_finite() && v > 0.0 && 2.0 * f64::from(v) < MAX_TAPS as f64)
+        && integral_ok(f);
     let t = match PhaseTable::new(f) {
         Ok(t) => {
             assert!(
@@ -389,9 +412,11 @@ fn check_phase_table(name: &str, f: &dyn Filter, ctx: &Ctx) {
                 !(fits && f.is_separable()),
                 "{name}: PhaseTable rejected radius {r:?}: {e:?}"
             );
-            // A bad radius is reported before separability.
+            // A bad radius is reported before the integral, and that before separability.
             let valid = r.iter().all(|&v| v.is_finite() && v > 0.0);
-            if valid && !f.is_separable() {
+            if valid && !integral_ok(f) {
+                assert!(is_integral_error(&e), "{name}: {e:?}");
+            } else if valid && !f.is_separable() {
                 assert_eq!(
                     e,
                     Error::NotSeparable {

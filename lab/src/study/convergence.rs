@@ -35,6 +35,7 @@ use super::{
 };
 use crate::clock::Stopwatch;
 use crate::json::{json_number, json_string};
+use crate::words::count;
 use anyhow::{Result, anyhow, bail};
 use nyquist::sampler::NamedSamplerError;
 use std::fmt::Write as _;
@@ -77,33 +78,27 @@ pub struct ConvergeSpec {
         arg(long, value_delimiter = ',', value_name = "LIST")
     )]
     pub samplers: Vec<String>,
-    /// Integrands, comma-separated.
+    /// Integrands, comma-separated [default: disk,triangle,step,gaussian,bilinear].
     #[cfg_attr(
         feature = "clap",
-        arg(
-            long,
-            value_enum,
-            value_delimiter = ',',
-            value_name = "LIST",
-            default_value = "disk,triangle,step,gaussian,bilinear"
-        )
+        arg(long, value_enum, value_delimiter = ',', value_name = "LIST")
     )]
     pub integrands: Vec<Integrand>,
     /// Smallest sample count N (a power of two).
-    #[cfg_attr(feature = "clap", arg(long, value_name = "N", default_value_t = 16))]
+    #[cfg_attr(feature = "clap", arg(long, value_name = "N", default_value_t = 16, value_parser = crate::flags::whole(1, MAX_SPP)))]
     pub min_spp: u32,
     /// Largest sample count N (a power of two, at most 2^20); the study takes every power of two
     /// from --min-spp to --max-spp.
-    #[cfg_attr(feature = "clap", arg(long, value_name = "N", default_value_t = 4096))]
+    #[cfg_attr(feature = "clap", arg(long, value_name = "N", default_value_t = 4096, value_parser = crate::flags::whole(1, MAX_SPP)))]
     pub max_spp: u32,
     /// Independent runs (scrambles) per sampler and N.
-    #[cfg_attr(feature = "clap", arg(long, default_value_t = 64, value_parser = clap::value_parser!(u32).range(1..=1 << 20)))]
+    #[cfg_attr(feature = "clap", arg(long, default_value_t = 64, value_parser = crate::flags::whole(1u32, 1 << 20)))]
     pub runs: u32,
     /// Base seed: run r uses a hash of (seed, r).
-    #[cfg_attr(feature = "clap", arg(long, default_value_t = 0))]
+    #[cfg_attr(feature = "clap", arg(long, default_value_t = 0, value_parser = crate::flags::whole(0, u64::MAX)))]
     pub seed: u64,
     /// Worker threads [default: the number of cores]; the numbers do not depend on it.
-    #[cfg_attr(feature = "clap", arg(long, value_parser = clap::value_parser!(u16).range(1..=1024)))]
+    #[cfg_attr(feature = "clap", arg(long, value_parser = crate::flags::whole(1u16, 1024)))]
     pub threads: Option<u16>,
     /// Also draw RMSE against N, log-log, one panel per integrand and one line per sampler,
     /// each panel with a legend of the samplers' slopes: SVG for FILE.svg, PNG for FILE.png.
@@ -116,17 +111,17 @@ pub struct ConvergeSpec {
     /// 4, 16, 64), with fixed parameters and exact integrals; the samplers also take
     /// halton-plain and sobol-plain (unscrambled). Prints a table of slopes and relative RMSE;
     /// --integrands, --plot and --json do not apply.
-    #[cfg_attr(feature = "clap", arg(long, value_name = "D", value_parser = clap::value_parser!(u32).range(2..=64)))]
+    #[cfg_attr(feature = "clap", arg(long, value_name = "D", value_parser = crate::flags::whole(2, crate::study::genz::MAX_DIMS)))]
     pub dims: Option<u32>,
 }
 
 impl Default for ConvergeSpec {
-    /// The command's defaults: every default sampler, the five integrands, N = 16 … 4096, 64
-    /// runs, seed 0, a table.
+    /// The command's defaults: every default sampler, the five integrands (an empty list), N =
+    /// 16 … 4096, 64 runs, seed 0, a table.
     fn default() -> ConvergeSpec {
         ConvergeSpec {
             samplers: Vec::new(),
-            integrands: Integrand::ALL.to_vec(),
+            integrands: Vec::new(),
             min_spp: 16,
             max_spp: 4096,
             runs: 64,
@@ -196,16 +191,20 @@ pub fn study(args: &ConvergeSpec, notes: &mut Vec<String>) -> Result<Study<Integ
     }
     let study = Study {
         samplers,
-        integrands: args.integrands.clone(),
+        integrands: if args.integrands.is_empty() {
+            Integrand::ALL.to_vec()
+        } else {
+            args.integrands.clone()
+        },
         counts: powers_of_two(args.min_spp, args.max_spp),
         runs: args.runs,
         seed: args.seed,
     };
     if study.work() > MAX_SAMPLES {
         bail!(
-            "{} samplers × {} runs × N = {}..{} is {} samples; at most {MAX_SAMPLES}",
-            study.samplers.len(),
-            study.runs,
+            "{} × {} × N = {}..{} is {} samples; at most {MAX_SAMPLES}",
+            count(study.samplers.len() as u64, "sampler"),
+            count(study.runs, "run"),
             args.min_spp,
             args.max_spp,
             study.work()
@@ -213,6 +212,24 @@ pub fn study(args: &ConvergeSpec, notes: &mut Vec<String>) -> Result<Study<Integ
     }
     notes.extend(left_out);
     Ok(study)
+}
+
+/// Refuses a study whose [`Study::memory`] on `threads` threads passes the memory limit
+/// (`--max-memory`), naming the flags that size it.
+///
+/// # Errors
+/// The one-line refusal of [`crate::memory::check`].
+pub fn check_memory<I: super::Integrand + Clone>(study: &Study<I>, threads: usize) -> Result<()> {
+    crate::memory::check(
+        &format!(
+            "{} × {} × --runs {} on {}",
+            count(study.samplers.len() as u64, "sampler"),
+            count(study.counts.len() as u64, "sample count"),
+            study.runs,
+            count(threads as u64, "thread")
+        ),
+        study.memory(threads),
+    )
 }
 
 /// The study `nyquist converge ARGS --json` prints (without `--dims`), run on `threads` threads
@@ -238,6 +255,7 @@ pub fn json_report(
         bail!("--dims: Genz's study prints a table only");
     }
     let study = study(args, &mut Vec::new())?;
+    check_memory(&study, threads)?;
     let start = Stopwatch::start();
     let outcome = study
         .run_with_progress(threads, progress)
@@ -260,12 +278,12 @@ pub fn table(
     seconds: f64,
 ) -> String {
     let mut s = format!(
-        "Slope of log RMSE against log N (least squares over N = {}, {}, …, {}; {} independent runs \
-         per N, seeds hashed from --seed {}), with the RMSE at N = {} in brackets{}\n\n",
+        "Slope of log RMSE against log N (least squares over N = {}, {}, …, {}; {} per N, seeds \
+         hashed from --seed {}), with the RMSE at N = {} in brackets{}\n\n",
         args.min_spp,
         2 * args.min_spp,
         args.max_spp,
-        study.runs,
+        count(study.runs, "independent run"),
         study.seed,
         args.max_spp,
         args.plot
@@ -309,6 +327,10 @@ pub fn table(
         })
         .collect();
     s.push('\n');
+    if let Some(line) = super::missing_slopes(&o.curves, |f| f.name().to_owned()) {
+        s.push_str(&line);
+        s.push('\n');
+    }
     if !rounded.is_empty() {
         s.push_str(&format!(
             "Rounded sample counts (slopes fit the counts used): {}\n",
@@ -325,10 +347,10 @@ pub fn table(
             .join(", ")
     ));
     s.push_str(&format!(
-        "{} samplers × {} N × {} runs: {:.1} M samples in {seconds:.2} s on {threads} thread{}\n",
-        study.samplers.len(),
+        "{} × {} N × {}: {:.1} M samples in {seconds:.2} s on {threads} thread{}\n",
+        count(study.samplers.len() as u64, "sampler"),
         study.counts.len(),
-        study.runs,
+        count(study.runs, "run"),
         o.samples as f64 / 1e6,
         if threads == 1 { "" } else { "s" }
     ));
@@ -417,8 +439,9 @@ pub fn command(study: &Study<Integrand>) -> String {
 /// Genz's Markdown table: per sampler, each family's slope and relative RMSE at the largest count.
 fn genz_table(curves: &[Curve<Genz>], dims: u32, runs: u32) -> String {
     let mut s = format!(
-        "Genz families in {dims} dimensions, {runs} runs: slope of log relative RMSE against \
-         log N, and relative RMSE at the largest N.\n\n| sampler |"
+        "Genz families in {dims} dimensions, {}: slope of log relative RMSE against log N, \
+         and relative RMSE at the largest N.\n\n| sampler |",
+        count(runs, "run")
     );
     for f in Family::ALL {
         let _ = write!(s, " {} |", f.name());
@@ -437,6 +460,11 @@ fn genz_table(curves: &[Curve<Genz>], dims: u32, runs: u32) -> String {
         }
         s.push('\n');
     }
+    if let Some(line) = super::missing_slopes(curves, |f| f.family.name().to_owned()) {
+        s.push('\n');
+        s.push_str(&line);
+        s.push('\n');
+    }
     s
 }
 
@@ -448,6 +476,12 @@ fn genz_table(curves: &[Curve<Genz>], dims: u32, runs: u32) -> String {
 pub fn genz_report(args: &ConvergeSpec, dims: u32, threads: usize) -> Result<String> {
     if args.plot.is_some() || args.json {
         bail!("--dims {dims}: --plot and --json apply to the 2-D study only");
+    }
+    if !args.integrands.is_empty() {
+        bail!(
+            "--dims {dims} --integrands: Genz's six families replace the 2-D integrands (give \
+             one or the other)"
+        );
     }
     for (flag, n) in [("--min-spp", args.min_spp), ("--max-spp", args.max_spp)] {
         if !n.is_power_of_two() || n > MAX_SPP {
@@ -484,6 +518,7 @@ pub fn genz_report(args: &ConvergeSpec, dims: u32, threads: usize) -> Result<Str
         runs: args.runs,
         seed: args.seed,
     };
+    check_memory(&study, threads)?;
     let curves = study.run(threads).map_err(study_error)?.curves;
     Ok(genz_table(&curves, dims, args.runs))
 }

@@ -73,9 +73,9 @@ impl crate::plot::Figure for Plot<'_> {
         let sizes = [(18.0, 2), (14.0, 3)];
         let mut y = m + title(root, self.title, (m, m), w - 2 * MARGIN, &sizes)?;
         let notes = format!(
-            "RMSE of the mean over N samples against N, {} independent runs per N; slope: \
-             least-squares fit of log RMSE on log N; grey dashed: slopes −1/2 and −1 for scale",
-            study.runs
+            "RMSE of the mean over N samples against N, {} per N; slope: least-squares fit of \
+             log RMSE on log N; grey dashed: slopes −1/2 and −1 for scale",
+            crate::words::count(study.runs, "independent run")
         );
         for line in wrap(&notes, w - 2 * MARGIN, 13.0).iter().take(2) {
             root.draw_text(line, &font(13.0).color(&INK), (m, y + 2))?;

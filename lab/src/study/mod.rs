@@ -135,6 +135,43 @@ pub fn fit_slope(points: &[(f64, f64)]) -> Option<f64> {
     (sxx > 0.0).then(|| sxy / sxx)
 }
 
+/// The line under a slope table that says why a slope is missing (`-`): for each such curve, the
+/// sampler, the integrand (named by `name`) and the first count whose RMSE is 0 (the sampler
+/// integrates the function exactly there, so log RMSE is undefined) or not finite. `None` when
+/// every curve has its slope.
+///
+/// ```
+/// use nyquist_lab::study::{Curve, missing_slopes};
+/// let c = Curve { sampler: "uniform".into(), integrand: "bilinear", spp: vec![16, 32],
+///                 rmse: vec![0.0, 0.0], slope: None };
+/// assert_eq!(missing_slopes(&[c], |i| i.to_string()).unwrap(),
+///            "No slope (-): uniform on bilinear, RMSE 0 at N = 16 (exact there; log 0 is undefined)");
+/// ```
+pub fn missing_slopes<I>(curves: &[Curve<I>], name: impl Fn(&I) -> String) -> Option<String> {
+    let why: Vec<String> = curves
+        .iter()
+        .filter(|c| c.slope.is_none())
+        .map(|c| {
+            let at = |pred: &dyn Fn(f64) -> bool| {
+                c.rmse
+                    .iter()
+                    .zip(&c.spp)
+                    .find(|(e, _)| pred(**e))
+                    .map(|(_, n)| *n)
+            };
+            let reason = if let Some(n) = at(&|e| e == 0.0) {
+                format!("RMSE 0 at N = {n} (exact there; log 0 is undefined)")
+            } else if let Some(n) = at(&|e| !e.is_finite()) {
+                format!("RMSE not finite at N = {n}")
+            } else {
+                "fewer than two distinct sample counts".to_owned()
+            };
+            format!("{} on {}, {reason}", c.sampler, name(&c.integrand))
+        })
+        .collect();
+    (!why.is_empty()).then(|| format!("No slope (-): {}", why.join("; ")))
+}
+
 /// The powers of two from `min` to `max` (both powers of two, `min ≤ max`).
 ///
 /// ```
@@ -251,6 +288,29 @@ impl<I: Integrand + Clone> Study<I> {
         per_run
             .saturating_mul(u64::from(self.runs))
             .saturating_mul(self.samplers.len() as u64)
+    }
+
+    /// Bytes the study holds while it runs on `threads` threads (an estimate for
+    /// [`crate::memory::check`]): per task (sampler × count × run) its estimates and its place
+    /// in the work order, per thread one sampler at the largest count with up to 64 bytes a
+    /// sample (the samplers that precompute their points) and one point.
+    ///
+    /// ```
+    /// use nyquist_lab::study::{Study, unit_square::SquareIntegrand};
+    /// let s = Study { samplers: vec!["random".into()], integrands: vec![SquareIntegrand::Disk],
+    ///                 counts: vec![16, 32], runs: 10, seed: 0 };
+    /// assert_eq!(s.memory(1), 20 * (8 + 8 + 24) + 32 * 64 + 2 * 8);
+    /// ```
+    pub fn memory(&self, threads: usize) -> u64 {
+        let tasks = (self.samplers.len() as u64)
+            .saturating_mul(self.counts.len() as u64)
+            .saturating_mul(u64::from(self.runs));
+        let per_task = 8 * self.integrands.len() as u64 + 8 + 24;
+        let largest = self.counts.iter().copied().max().unwrap_or(0);
+        let per_thread = u64::from(largest) * 64 + 8 * self.dims() as u64;
+        tasks
+            .saturating_mul(per_task)
+            .saturating_add((threads.max(1) as u64).saturating_mul(per_thread))
     }
 
     /// Dimensions of the study's points: the largest of its integrands' (2 at least).
