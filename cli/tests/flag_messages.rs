@@ -557,6 +557,8 @@ fn counts_of_one_are_singular() {
     let text = stdout(&o);
     assert!(text.contains("; 1 independent run per N,"), "{text}");
     assert!(text.contains("1 sampler × 2 N × 1 run:"), "{text}");
+    let dir = temp_dir("singular");
+    let sheet = dir.join("sheet.png");
     let o = nyquist(&[
         "compare",
         "--samplers",
@@ -567,6 +569,8 @@ fn counts_of_one_are_singular() {
         "1",
         "--size",
         "8x8",
+        "-o",
+        sheet.to_str().unwrap(),
     ]);
     assert!(stdout(&o).contains("\n1 render, "), "{}", stdout(&o));
 }
