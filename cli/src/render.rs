@@ -24,8 +24,18 @@ pub fn reference(
     filter: Option<&FilterKind>,
     threads: usize,
 ) -> Result<Option<Vec<f64>>> {
+    Ok(traced_reference(scene, size, filter, threads)?.map(|(r, _)| r))
+}
+
+/// [`reference`], with where it came from ([`ReferenceSource`]).
+pub fn traced_reference(
+    scene: Scene,
+    size: [u32; 2],
+    filter: Option<&FilterKind>,
+    threads: usize,
+) -> Result<Option<(Vec<f64>, ReferenceSource)>> {
     let bar = Progress::new(tile_count(size), "reference");
-    let r = nyquist_lab::render::reference_with_progress(scene, size, filter, threads, &mut || {
+    let r = nyquist_lab::render::reference_with_source(scene, size, filter, threads, &mut || {
         bar.inc(1)
     });
     bar.finish();
@@ -35,9 +45,9 @@ pub fn reference(
 pub use crate::output::check_output;
 pub use nyquist_lab::json::{json_number, json_string};
 pub use nyquist_lab::render::{
-    FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, Rendered, TILE,
-    channel0, default_threads, footprint_pixels, psnr, reference_kind, reference_with_progress,
-    render, render_bytes, rmse, tile_count, warn_if_large,
+    FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, ReferenceSource,
+    Rendered, TILE, channel0, default_threads, describe_reference, footprint_pixels, psnr,
+    reference_kind, reference_with_progress, render, render_bytes, rmse, tile_count, warn_if_large,
 };
 pub use nyquist_lab::render::{
     SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter, parse_size,
@@ -261,8 +271,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         write_error_png(p, &r.image, &filtered)?;
     }
     if metrics {
-        let means = reference(args.scene, args.size, None, threads)?
+        let (means, source) = traced_reference(args.scene, args.size, None, threads)?
             .context("no reference for this scene")?;
+        let described = describe_reference(args.scene, source);
         let filtered = reference(args.scene, args.size, Some(&args.filter), threads)?;
         let e = rmse(&r.image, &means);
         let sampling = filtered.as_ref().map_or(f64::NAN, |f| rmse(&r.image, f));
@@ -279,7 +290,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 sampler.samples_per_pixel(),
                 json_string(&args.filter.to_string()),
                 args.seed,
-                json_string(&reference_kind(args.scene)),
+                json_string(&described),
                 json_number(e),
                 json_number(psnr(e)),
                 json_number(sampling),
@@ -300,7 +311,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 args.filter,
                 if threads == 1 { "" } else { "s" }
             )?;
-            writeln!(out, "reference      {}", reference_kind(args.scene))?;
+            writeln!(out, "reference      {described}")?;
             writeln!(out, "rmse           {e:.6}")?;
             writeln!(out, "psnr           {:.2} dB", psnr(e))?;
             writeln!(
