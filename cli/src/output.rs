@@ -321,11 +321,13 @@ pub fn choose_format(
             .join(", ")
     };
     match (named, given) {
-        (Some(e), Some(g)) if e != g => bail!(
-            "{flag} {}: .{e} names {e} output but {} is {g}: give {0} {e} or another name",
-            path.display(),
-            format_flag.unwrap_or("--format")
-        ),
+        (Some(e), Some(g)) if e != g => {
+            let ff = format_flag.unwrap_or("--format");
+            bail!(
+                "{flag} {}: .{e} names {e} output but {ff} is {g}: give {ff} {e} or another name",
+                path.display()
+            )
+        }
         (Some(e), _) => Ok(e),
         (None, Some(g)) => Ok(g),
         (None, None) => {
@@ -563,6 +565,94 @@ mod tests {
         assert_eq!(
             m.to_string(),
             "--output no-such-folder-x/a.png: folder no-such-folder-x does not exist"
+        );
+    }
+
+    #[test]
+    fn temporary_names_fit_name_max_and_stay_distinct() {
+        let short = temporary(Path::new("dir/a.png")).unwrap();
+        assert_eq!(
+            short,
+            Path::new(&format!("dir/.a.png.tmp-{}", std::process::id()))
+        );
+        let mut seen = Vec::new();
+        for name in [
+            format!("{}.png", "a".repeat(247)),
+            format!("{}.png", "a".repeat(251)),
+            format!("{}.exr", "a".repeat(251)),
+            format!("{}.png", "é".repeat(125)),
+        ] {
+            let t = temporary(&Path::new("d").join(&name)).unwrap();
+            let t = t.file_name().unwrap().to_str().unwrap().to_owned();
+            assert!(t.len() <= NAME_MAX, "{} bytes", t.len());
+            assert!(t.starts_with(".a") || t.starts_with(".é"), "{t}");
+            assert!(t.ends_with(&format!(".tmp-{}", std::process::id())));
+            assert!(!seen.contains(&t), "{t} twice");
+            seen.push(t);
+        }
+    }
+
+    #[test]
+    fn formats_come_from_the_flag_or_the_extension() {
+        let f = &["png", "exr", "pfm"][..];
+        let pick =
+            |p: &str, given| choose_format(Path::new(p), "--output", f, given, Some("--format"));
+        assert_eq!(pick("a.PNG", None).unwrap(), "png");
+        assert_eq!(pick("a.exr", Some("exr")).unwrap(), "exr");
+        assert_eq!(pick("-", Some("pfm")).unwrap(), "pfm");
+        assert_eq!(pick("a.dat", Some("pfm")).unwrap(), "pfm");
+        for (p, given, message) in [
+            (
+                "a.png",
+                Some("exr"),
+                "--output a.png: .png names png output but --format is exr: give --format png or another name",
+            ),
+            (
+                "-",
+                None,
+                "--output -: no extension to tell the format: give --format png|exr|pfm",
+            ),
+            (
+                "a",
+                None,
+                "--output a: no extension to tell the format: give --format png|exr|pfm",
+            ),
+            (
+                "a.tif",
+                None,
+                "--output a.tif: unknown image extension (expected .png, .exr, .pfm, or give --format)",
+            ),
+        ] {
+            assert_eq!(pick(p, given).unwrap_err().to_string(), message);
+        }
+        // One format: stdout and devices take it; a file still needs its extension.
+        let png = |p: &str| choose_format(Path::new(p), "--error", &["png"], None, None);
+        assert_eq!(png("-").unwrap(), "png");
+        assert_eq!(png("/dev/null").unwrap(), "png");
+        assert_eq!(
+            png("e.tif").unwrap_err().to_string(),
+            "--error e.tif: unknown image extension (expected .png)"
+        );
+    }
+
+    #[test]
+    fn targets_resolve_links_and_devices() {
+        assert_eq!(target(Path::new("-"), "--output").unwrap(), Target::Stdout);
+        assert_eq!(
+            target(Path::new("/dev/null"), "--output").unwrap(),
+            Target::InPlace
+        );
+        assert_eq!(
+            target(Path::new("/dev/stdout"), "--output").unwrap(),
+            Target::InPlace
+        );
+        assert_eq!(
+            target(Path::new("no-such-file.png"), "--output").unwrap(),
+            Target::File("no-such-file.png".into())
+        );
+        assert_eq!(
+            target(Path::new("/"), "--plot").unwrap_err().to_string(),
+            "--plot /: is a folder"
         );
     }
 

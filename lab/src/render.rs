@@ -739,3 +739,46 @@ pub fn psnr(rmse: f64) -> f64 {
 pub fn default_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn damaged_cache_headers_are_told_apart() {
+        let header = reference_header(Scene::Disk, [16, 8], "box:rx=0.5,ry=0.5");
+        let h = header.as_bytes();
+        assert_eq!(
+            header_mismatch(b"", &header),
+            "is truncated (in its header)"
+        );
+        for cut in [1, 10, 24, 30, h.len() - 1] {
+            assert_eq!(
+                header_mismatch(&h[..cut], &header),
+                "is truncated (in its header)",
+                "{cut}"
+            );
+        }
+        let other = header.replacen("size 16x8", "size 8x16", 1);
+        assert_eq!(
+            header_mismatch(other.as_bytes(), &header),
+            "was made from other parameters"
+        );
+        let other = header.replacen("filter box", "filter gaussian", 1);
+        assert_eq!(
+            header_mismatch(other.as_bytes(), &header),
+            "was made from other parameters"
+        );
+        for bad in [
+            header.replacen("nyquist reference image", "nyquist reference imagf", 1),
+            header.replacen("scene disk", "scenery disk", 1),
+            "P6\n16 8\n255\n".to_owned(),
+        ] {
+            assert_eq!(
+                header_mismatch(bad.as_bytes(), &header),
+                "is corrupt (not a nyquist reference header)",
+                "{bad:?}"
+            );
+        }
+    }
+}
