@@ -151,6 +151,12 @@ fn label(sampler: SamplerName, filter: &str, spp: u32, rmse: f64, sampling: f64)
 pub fn run(args: &CompareArgs) -> Result<()> {
     let output = sheet_path(args);
     if let Some(p) = &output {
+        if crate::output::is_stdout(p) {
+            bail!(
+                "--output -: stdout carries the {}: give --output FILE.png",
+                if args.json { "JSON" } else { "table" }
+            );
+        }
         check_output(p, "--output", &["png"])?;
     }
     if args.samplers.is_empty() {

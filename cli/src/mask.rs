@@ -1,7 +1,7 @@
 //! `nyquist mask`: a blue-noise threshold mask by void-and-cluster, as PNG (8 or 16 bits per
 //! channel) and OpenEXR (32-bit float values), and optionally the picture of its spectrum.
 
-use crate::output::{check_output, extension, write_atomic};
+use crate::output::{check_output, write_atomic, write_output};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use nyquist::bluenoise::{VoidAndCluster, rank_to_value};
@@ -31,13 +31,47 @@ pub struct MaskArgs {
     #[arg(long, default_value_t = 8, value_parser = parse_bits)]
     pub bits: u8,
     /// Write the mask here: .png (integer levels) or .exr (values (r + ½)/N as 32-bit floats);
-    /// repeat for both.
+    /// repeat for both; `-` for stdout (with --format).
     #[arg(short, long, required = true, value_name = "FILE.png|FILE.exr")]
     pub output: Vec<PathBuf>,
+    /// The format of an --output without an extension to tell it (`-`, /dev/stdout, a FIFO);
+    /// an extension that names another format is an error.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub format: Option<MaskFormat>,
     /// Also write the periodogram of channel 0's values (log scale, zero frequency at the
     /// centre) as a grey PNG; masks up to 256 × 256.
     #[arg(long, value_name = "FILE.png")]
     pub spectrum: Option<PathBuf>,
+}
+
+/// The formats of `mask --format`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum MaskFormat {
+    /// PNG, 8 or 16 bits per channel (--bits).
+    Png,
+    /// OpenEXR, 32-bit float.
+    Exr,
+}
+
+impl MaskFormat {
+    /// The name, as the extension and the flag value.
+    pub fn name(self) -> &'static str {
+        match self {
+            MaskFormat::Png => "png",
+            MaskFormat::Exr => "exr",
+        }
+    }
+}
+
+/// The format of `--output path`: by `--format`, else by the extension.
+fn format_of(path: &Path, format: Option<MaskFormat>) -> Result<&'static str> {
+    crate::output::choose_format(
+        path,
+        "--output",
+        &["png", "exr"],
+        format.map(MaskFormat::name),
+        Some("--format"),
+    )
 }
 
 /// Parses `N` or `WxH` into a mask size.
@@ -83,8 +117,19 @@ pub fn ranks(size: [u32; 2], channels: u32, seed: u64) -> Result<Vec<u32>> {
 /// Runs the subcommand.
 pub fn run(args: &MaskArgs) -> Result<()> {
     let [w, h] = args.size;
+    let to_stdout = args
+        .output
+        .iter()
+        .chain(&args.spectrum)
+        .filter(|p| crate::output::is_stdout(p))
+        .count();
+    if to_stdout > 1 {
+        bail!("--output -, --spectrum -: only one output can go to stdout");
+    }
+    let mut formats = Vec::with_capacity(args.output.len());
     for path in &args.output {
-        check_output(path, "--output", &["png", "exr"])?;
+        formats.push(format_of(path, args.format)?);
+        crate::output::check_target(path, "--output")?;
     }
     if let Some(path) = &args.spectrum {
         if w * h > MAX_SPECTRUM_PIXELS {
@@ -92,12 +137,7 @@ pub fn run(args: &MaskArgs) -> Result<()> {
         }
         check_output(path, "--spectrum", &["png"])?;
     }
-    if args.bits != 8
-        && !args
-            .output
-            .iter()
-            .any(|p| extension(p).as_deref() == Some("png"))
-    {
+    if args.bits != 8 && !formats.contains(&"png") {
         crate::output::note("--bits applies to PNG output only");
     }
     let n = (w * h) as usize;
@@ -106,9 +146,9 @@ pub fn run(args: &MaskArgs) -> Result<()> {
         nyquist_lab::memory::bytes(n as u64, 4 * u64::from(args.channels) + 24),
     )?;
     let ranks = ranks(args.size, args.channels, args.seed)?;
-    for path in &args.output {
-        match extension(path).as_deref() {
-            Some("png") => write_png(path, &ranks, args, n)?,
+    for (path, format) in args.output.iter().zip(formats) {
+        match format {
+            "png" => write_png(path, &ranks, args, n)?,
             _ => write_exr(path, &ranks, args, n)?,
         }
     }
@@ -230,7 +270,7 @@ fn write_spectrum(path: &Path, ranks: &[u32], w: usize, h: usize) -> Result<()> 
             (((db + 40.0) / 40.0).clamp(0.0, 1.0) * 255.0).round() as u8
         })
         .collect();
-    write_atomic(path, |out| {
+    write_output(path, "--spectrum", |out| {
         let mut enc = png::Encoder::new(out, w as u32, h as u32);
         enc.set_color(png::ColorType::Grayscale);
         enc.set_depth(png::BitDepth::Eight);
@@ -239,5 +279,4 @@ fn write_spectrum(path: &Path, ranks: &[u32], w: usize, h: usize) -> Result<()> 
         writer.finish().context("PNG end")?;
         Ok(())
     })
-    .map_err(|e| anyhow::anyhow!("{}", format!("{e:#}").replace("--output", "--spectrum")))
 }

@@ -2,14 +2,14 @@
 //! image, and measure it against a reference.
 
 use crate::progress::Progress;
-use anyhow::{Context, Result, anyhow, bail};
+use anyhow::{Context, Result, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::Sampler;
 use nyquist_film::{Image, ImageFormat};
 use nyquist_lab::scene::Scene;
 use std::fmt::Write as _;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// The reference image of `scene` seen through `filter` (`None`: the pixel means, i.e. the box).
 ///
@@ -24,8 +24,18 @@ pub fn reference(
     filter: Option<&FilterKind>,
     threads: usize,
 ) -> Result<Option<Vec<f64>>> {
+    Ok(traced_reference(scene, size, filter, threads)?.map(|(r, _)| r))
+}
+
+/// [`reference`], with where it came from ([`ReferenceSource`]).
+pub fn traced_reference(
+    scene: Scene,
+    size: [u32; 2],
+    filter: Option<&FilterKind>,
+    threads: usize,
+) -> Result<Option<(Vec<f64>, ReferenceSource)>> {
     let bar = Progress::new(tile_count(size), "reference");
-    let r = nyquist_lab::render::reference_with_progress(scene, size, filter, threads, &mut || {
+    let r = nyquist_lab::render::reference_with_source(scene, size, filter, threads, &mut || {
         bar.inc(1)
     });
     bar.finish();
@@ -35,9 +45,9 @@ pub fn reference(
 pub use crate::output::check_output;
 pub use nyquist_lab::json::{json_number, json_string};
 pub use nyquist_lab::render::{
-    FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, Rendered, TILE,
-    channel0, default_threads, footprint_pixels, psnr, reference_kind, reference_with_progress,
-    render, render_bytes, rmse, tile_count, warn_if_large,
+    FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, ReferenceSource,
+    Rendered, TILE, channel0, default_threads, describe_reference, footprint_pixels, psnr,
+    reference_kind, reference_with_progress, render, render_bytes, rmse, tile_count, warn_if_large,
 };
 pub use nyquist_lab::render::{
     SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter, parse_size,
@@ -79,9 +89,14 @@ pub struct RenderArgs {
     /// fast-owen for zsobol; none: the unscrambled sequences].
     #[arg(long, value_enum, value_name = "SCRAMBLE")]
     pub scramble: Option<ScrambleName>,
-    /// Write the image here: .png (8-bit sRGB), .exr (32-bit float) or .pfm (32-bit float).
+    /// Write the image here: .png (8-bit sRGB), .exr (32-bit float) or .pfm (32-bit float); `-`
+    /// for stdout. A symbolic link is written through; a device or FIFO is written in place.
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// The image format where --output has no extension to tell it (`-`, /dev/stdout, a FIFO);
+    /// an extension that names another format is an error.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub format: Option<OutputFormat>,
     /// Compare with the reference and print RMSE, PSNR, samples per second and rejected samples.
     #[arg(long)]
     pub metrics: bool,
@@ -94,11 +109,52 @@ pub struct RenderArgs {
     pub error: Option<PathBuf>,
 }
 
+/// The image formats of `render --format`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum OutputFormat {
+    /// 8-bit sRGB PNG.
+    Png,
+    /// OpenEXR, 32-bit float.
+    Exr,
+    /// Portable float map, 32-bit float.
+    Pfm,
+}
+
+impl OutputFormat {
+    /// The name, as the extension and the flag value.
+    pub fn name(self) -> &'static str {
+        match self {
+            OutputFormat::Png => "png",
+            OutputFormat::Exr => "exr",
+            OutputFormat::Pfm => "pfm",
+        }
+    }
+}
+
+/// The image format of `render --output path`: by `--format`, else by the extension.
+///
+/// # Errors
+/// As [`crate::output::choose_format`].
+pub fn image_format(path: &Path, format: Option<OutputFormat>) -> Result<ImageFormat> {
+    let name = crate::output::choose_format(
+        path,
+        "--output",
+        &["png", "exr", "pfm"],
+        format.map(OutputFormat::name),
+        Some("--format"),
+    )?;
+    Ok(match name {
+        "exr" => ImageFormat::Exr,
+        "pfm" => ImageFormat::Pfm,
+        _ => ImageFormat::Png,
+    })
+}
+
 /// Gain of `render --error`: grey level `½ + ERROR_GAIN · error`.
 pub const ERROR_GAIN: f64 = 4.0;
 
 /// Writes `½ + ERROR_GAIN · (image − reference)` (first channel) as an 8-bit grey PNG.
-fn write_error_png(path: &std::path::Path, image: &Image, reference: &[f64]) -> Result<()> {
+fn write_error_png(path: &Path, image: &Image, reference: &[f64]) -> Result<()> {
     let bytes: Vec<u8> = image
         .data()
         .chunks_exact(3)
@@ -108,7 +164,7 @@ fn write_error_png(path: &std::path::Path, image: &Image, reference: &[f64]) -> 
             (g.clamp(0.0, 1.0) * 255.0).round() as u8
         })
         .collect();
-    crate::output::write_atomic(path, |w| {
+    crate::output::write_output(path, "--error", |w| {
         let mut enc = png::Encoder::new(w, image.width(), image.height());
         enc.set_color(png::ColorType::Grayscale);
         enc.set_depth(png::BitDepth::Eight);
@@ -117,7 +173,6 @@ fn write_error_png(path: &std::path::Path, image: &Image, reference: &[f64]) -> 
         writer.finish().context("PNG end")?;
         Ok(())
     })
-    .map_err(|e| anyhow!("{}", format!("{e:#}").replace("--output", "--error")))
 }
 
 /// Runs `nyquist render`.
@@ -126,13 +181,38 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     if args.output.is_none() && !metrics && args.error.is_none() {
         bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics, --error FILE.png");
     }
+    let stdout = |p: &Option<PathBuf>| p.as_deref().is_some_and(crate::output::is_stdout);
+    if stdout(&args.output) && stdout(&args.error) {
+        bail!("--output - and --error -: only one of them can go to stdout");
+    }
+    for (flag, p) in [("--output", &args.output), ("--error", &args.error)] {
+        if metrics && stdout(p) {
+            bail!(
+                "{flag} -: stdout carries the {}: give {flag} FILE",
+                if args.json {
+                    "JSON (--json)"
+                } else {
+                    "metrics (--metrics)"
+                }
+            );
+        }
+    }
     if let Some(p) = &args.error {
         check_output(p, "--error", &["png"])?;
     }
-    if let Some(p) = &args.output {
-        check_output(p, "--output", &["png", "exr", "pfm"])?;
-        ImageFormat::from_path(p).map_err(|e| anyhow!("--output: {e}"))?;
-    }
+    let format = match &args.output {
+        Some(p) => {
+            let format = image_format(p, args.format)?;
+            crate::output::check_target(p, "--output")?;
+            Some(format)
+        }
+        None => {
+            if let Some(f) = args.format {
+                crate::output::note(&format!("--format {} applies to --output only", f.name()));
+            }
+            None
+        }
+    };
     let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed, args.scramble)?;
     if sampler.samples_per_pixel() != args.spp {
         eprintln!(
@@ -180,8 +260,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         &mut || bar.inc(1),
     )?;
     bar.finish();
-    if let Some(p) = &args.output {
-        let format = ImageFormat::from_path(p).map_err(|e| anyhow!("--output: {e}"))?;
+    if let (Some(p), Some(format)) = (&args.output, format) {
         crate::output::write_atomic(p, |w| {
             Ok(nyquist_film::output::write_image(w, &r.image, format)?)
         })?;
@@ -192,8 +271,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         write_error_png(p, &r.image, &filtered)?;
     }
     if metrics {
-        let means = reference(args.scene, args.size, None, threads)?
+        let (means, source) = traced_reference(args.scene, args.size, None, threads)?
             .context("no reference for this scene")?;
+        let described = describe_reference(args.scene, source);
         let filtered = reference(args.scene, args.size, Some(&args.filter), threads)?;
         let e = rmse(&r.image, &means);
         let sampling = filtered.as_ref().map_or(f64::NAN, |f| rmse(&r.image, f));
@@ -210,7 +290,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 sampler.samples_per_pixel(),
                 json_string(&args.filter.to_string()),
                 args.seed,
-                json_string(&reference_kind(args.scene)),
+                json_string(&described),
                 json_number(e),
                 json_number(psnr(e)),
                 json_number(sampling),
@@ -231,7 +311,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 args.filter,
                 if threads == 1 { "" } else { "s" }
             )?;
-            writeln!(out, "reference      {}", reference_kind(args.scene))?;
+            writeln!(out, "reference      {described}")?;
             writeln!(out, "rmse           {e:.6}")?;
             writeln!(out, "psnr           {:.2} dB", psnr(e))?;
             writeln!(

@@ -13,7 +13,12 @@ use std::time::{Duration, Instant};
 /// waits until its temporary file appears (the encoder is then writing), sends `signal` with
 /// `kill`, and returns the exit code and the folder's files afterwards.
 fn interrupt_a_write(signal: &str, dir: &Path) -> (Option<i32>, Vec<String>) {
-    let out = dir.join("big.png");
+    interrupt_a_write_to(signal, &dir.join("big.png"), dir)
+}
+
+/// [`interrupt_a_write`] to `out`, whose temporary file appears in `dir` as `.big.png.tmp-PID`
+/// (`out` may be a link to `dir/big.png`).
+fn interrupt_a_write_to(signal: &str, out: &Path, dir: &Path) -> (Option<i32>, Vec<String>) {
     let mut child = Command::new(env!("CARGO_BIN_EXE_nyquist"))
         .args([
             "render",
@@ -25,7 +30,7 @@ fn interrupt_a_write(signal: &str, dir: &Path) -> (Option<i32>, Vec<String>) {
             "uniform",
         ])
         .args(["--filter", "box", "-o"])
-        .arg(&out)
+        .arg(out)
         .stdout(Stdio::null())
         .stderr(Stdio::null())
         .spawn()
@@ -64,6 +69,18 @@ fn sigint_during_a_write_removes_the_temporary_file_and_exits_130() {
     let (code, left) = interrupt_a_write("-INT", &dir);
     assert_eq!(code, Some(130));
     assert!(left.is_empty(), "left behind: {left:?}");
+}
+
+#[test]
+fn sigint_during_a_write_through_a_link_removes_the_temporary_file_in_the_targets_folder() {
+    let dir = temp_dir("sigint-link");
+    let target = temp_dir("sigint-link-target");
+    let link = dir.join("link.png");
+    std::os::unix::fs::symlink(target.join("big.png"), &link).unwrap();
+    let (code, left) = interrupt_a_write_to("-INT", &link, &target);
+    assert_eq!(code, Some(130));
+    assert!(left.is_empty(), "left behind: {left:?}");
+    assert_eq!(files(&dir), ["link.png"]);
 }
 
 /// The `rmse` value of a `render --metrics --json` run.

@@ -348,13 +348,49 @@ pub fn render_bytes(scene: Scene, size: [u32; 2], metrics: bool) -> u64 {
     crate::memory::bytes(pixels, per_pixel)
 }
 
-/// What the reference of a scene is, in words (for tables and JSON).
+/// What the reference of a scene is, in words (for tables and JSON); [`describe_reference`]
+/// adds where a rendered one came from.
 pub fn reference_kind(scene: Scene) -> String {
     match scene {
         Scene::Zoneplate => "exact pixel means (box filter, Fresnel integrals)".into(),
         _ => format!(
-            "pixel means from a cached {REFERENCE_STRATA}x{REFERENCE_STRATA} spp stratified box render"
+            "pixel means from a {REFERENCE_STRATA}x{REFERENCE_STRATA} spp stratified box render"
         ),
+    }
+}
+
+/// Where a reference came from ([`reference_with_source`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ReferenceSource {
+    /// A closed form: nothing rendered, nothing cached.
+    Exact,
+    /// Read from the cache folder.
+    Cached,
+    /// Rendered by this run; `kept`: written to the cache folder for the next runs.
+    Rendered {
+        /// Whether the render was written to the cache.
+        kept: bool,
+    },
+}
+
+/// [`reference_kind`] with where the reference came from, e.g. `pixel means from a 32x32 spp
+/// stratified box render, read from the cache`.
+///
+/// ```
+/// use nyquist_lab::render::{ReferenceSource, describe_reference};
+/// use nyquist_lab::scene::Scene;
+/// let d = describe_reference(Scene::Disk, ReferenceSource::Rendered { kept: false });
+/// assert!(d.ends_with("render, rendered now (not cached)"), "{d}");
+/// ```
+pub fn describe_reference(scene: Scene, source: ReferenceSource) -> String {
+    let kind = reference_kind(scene);
+    match source {
+        ReferenceSource::Exact => kind,
+        ReferenceSource::Cached => format!("{kind}, read from the cache"),
+        ReferenceSource::Rendered { kept: true } => format!("{kind}, rendered now and cached"),
+        ReferenceSource::Rendered { kept: false } => {
+            format!("{kind}, rendered now (not cached)")
+        }
     }
 }
 
@@ -386,14 +422,32 @@ pub fn reference_with_progress(
     threads: usize,
     tick: &mut dyn FnMut(),
 ) -> Result<Option<Vec<f64>>> {
+    Ok(reference_with_source(scene, size, filter, threads, tick)?.map(|(r, _)| r))
+}
+
+/// [`reference_with_progress`], with where the reference came from. The cache's troubles are
+/// notes on stderr, each printed once a run: a cache folder that cannot be created or
+/// written, a home folder that does not exist (no cache then), a cached file that cannot be
+/// used (then rendered again and rewritten).
+///
+/// # Errors
+/// A render error (the film could not be allocated).
+pub fn reference_with_source(
+    scene: Scene,
+    size: [u32; 2],
+    filter: Option<&FilterKind>,
+    threads: usize,
+    tick: &mut dyn FnMut(),
+) -> Result<Option<(Vec<f64>, ReferenceSource)>> {
     let boxed = FilterKind::parse("box").map_err(|e| anyhow!("{e}"))?;
     let filter = filter.unwrap_or(&boxed);
     if scene == Scene::Zoneplate {
-        return Ok(if filter.to_string() == boxed.to_string() {
+        let exact = if filter.to_string() == boxed.to_string() {
             Some(crate::scene::zoneplate_reference(size[0], size[1]))
         } else {
             crate::scene::zoneplate_filtered_reference(size[0], size[1], filter.as_dyn())
-        });
+        };
+        return Ok(exact.map(|r| (r, ReferenceSource::Exact)));
     }
     let spec = filter.to_string();
     let key: String = spec
@@ -407,8 +461,12 @@ pub fn reference_with_progress(
         })
         .collect();
     // No cache without a file system (the explorer keeps references in memory instead). The
-    // cache's two uses test `NO_FILE_SYSTEM` again: only then does the compiler drop their code.
-    let dir = if NO_FILE_SYSTEM { None } else { cache_dir() };
+    // cache's uses test `NO_FILE_SYSTEM` again: only then does the compiler drop their code.
+    let dir = if NO_FILE_SYSTEM {
+        None
+    } else {
+        usable_cache_dir()
+    };
     let path = dir.map(|d| {
         d.join(format!(
             "reference-v2-{}-{}x{}-stratified{REFERENCE_STRATA}-{key}.pfm",
@@ -420,12 +478,12 @@ pub fn reference_with_progress(
     let header = reference_header(scene, size, &spec);
     if !NO_FILE_SYSTEM && let Some(p) = &path {
         match read_cached_reference(p, &header, size) {
-            Ok(Some(img)) => return Ok(Some(channel0(&img))),
+            Ok(Some(img)) => return Ok(Some((channel0(&img), ReferenceSource::Cached))),
             Ok(None) => {}
-            Err(why) => eprintln!(
-                "nyquist: note: the cached reference {} {why}; rendering it again",
+            Err(why) => note_once(&format!(
+                "the cached reference {} {why}; rendering it again",
                 p.display()
-            ),
+            )),
         }
     }
     let sampler = NamedSampler::new(
@@ -436,13 +494,57 @@ pub fn reference_with_progress(
     )
     .map_err(|e| anyhow!("the reference's sampler: {e}"))?;
     let r = render(scene, size, &sampler, filter, threads, tick)?;
+    let mut kept = false;
     if !NO_FILE_SYSTEM && let Some(p) = &path {
         // A cache that cannot be written only costs time next run.
-        let _ = std::fs::create_dir_all(p.parent().unwrap_or(Path::new(".")))
-            .map_err(anyhow::Error::from)
-            .and_then(|()| write_cache_file(p, &header, &r.image));
+        match write_cache_file(p, &header, &r.image) {
+            Ok(()) => kept = true,
+            Err(e) => note_once(&format!(
+                "the reference cannot be cached in {} ({e:#}); it is rendered on every run",
+                p.parent().unwrap_or(Path::new(".")).display()
+            )),
+        }
     }
-    Ok(Some(channel0(&r.image)))
+    Ok(Some((
+        channel0(&r.image),
+        ReferenceSource::Rendered { kept },
+    )))
+}
+
+/// Prints `nyquist: note: <text>` on stderr unless this run printed that text already.
+fn note_once(text: &str) {
+    static PRINTED: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+    let mut printed = PRINTED
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    if !printed.iter().any(|t| t == text) {
+        eprintln!("nyquist: note: {text}");
+        printed.push(text.to_owned());
+    }
+}
+
+/// The cache folder ([`cache_dir`]), created if missing; `None`, with one note, when there is
+/// none or it cannot be used.
+fn usable_cache_dir() -> Option<PathBuf> {
+    let dir = match cache_dir() {
+        Ok(d) => d,
+        Err(why) => {
+            note_once(&format!(
+                "no reference cache: {why}; references are rendered every run"
+            ));
+            return None;
+        }
+    };
+    match std::fs::create_dir_all(&dir) {
+        Ok(()) => Some(dir),
+        Err(e) => {
+            note_once(&format!(
+                "the reference cache {} cannot be used ({e}); references are rendered every run",
+                dir.display()
+            ));
+            None
+        }
+    }
 }
 
 /// The first lines of a cached reference: what it was made from. A cache file whose header
@@ -510,13 +612,14 @@ fn read_cached_reference(
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(None),
         Err(e) => return Err(format!("cannot be read ({e})")),
     };
-    let rest = bytes
-        .strip_prefix(header.as_bytes())
-        .ok_or("was made from other parameters")?;
+    let rest = match bytes.strip_prefix(header.as_bytes()) {
+        Some(rest) => rest,
+        None => return Err(header_mismatch(&bytes, header).into()),
+    };
     let line_end = rest
         .iter()
         .position(|&b| b == b'\n')
-        .ok_or("is truncated")?;
+        .ok_or("is truncated (in its checksum line)")?;
     let line = std::str::from_utf8(&rest[..line_end]).map_err(|_| "has a malformed checksum")?;
     let payload = &rest[line_end + 1..];
     let (sum, len) = line
@@ -524,9 +627,15 @@ fn read_cached_reference(
         .and_then(|l| l.split_once(" bytes "))
         .and_then(|(h, n)| Some((u64::from_str_radix(h, 16).ok()?, n.parse::<usize>().ok()?)))
         .ok_or("has a malformed checksum line")?;
-    if payload.len() != len {
+    if payload.len() < len {
         return Err(format!(
-            "is truncated or padded ({} image bytes, {len} expected)",
+            "is truncated ({} image bytes, {len} expected)",
+            payload.len()
+        ));
+    }
+    if payload.len() > len {
+        return Err(format!(
+            "is corrupt ({} image bytes, {len} expected)",
             payload.len()
         ));
     }
@@ -550,14 +659,61 @@ fn read_cached_reference(
     Ok(Some(img))
 }
 
-/// The folder of cached references: `$XDG_CACHE_HOME/nyquist` (absolute), else
-/// `$HOME/.cache/nyquist`.
-fn cache_dir() -> Option<PathBuf> {
-    let base = match std::env::var_os("XDG_CACHE_HOME") {
-        Some(d) if !d.is_empty() && Path::new(&d).is_absolute() => PathBuf::from(d),
-        _ => PathBuf::from(std::env::var_os("HOME").filter(|h| !h.is_empty())?).join(".cache"),
-    };
-    Some(base.join("nyquist"))
+/// Why a cache file's first lines are not `header`: it ends inside them ("is truncated"), a
+/// line is not the header line it should be ("is corrupt"), or a line names another value of
+/// the same parameter ("was made from other parameters").
+fn header_mismatch(bytes: &[u8], header: &str) -> &'static str {
+    let mut rest = bytes;
+    for want in header.lines() {
+        let Some(end) = rest.iter().position(|&b| b == b'\n') else {
+            // The file ends in this line: truncated if what is there begins it.
+            return if want.as_bytes().starts_with(rest) {
+                "is truncated (in its header)"
+            } else {
+                "is corrupt (not a nyquist reference header)"
+            };
+        };
+        let got = &rest[..end];
+        if got != want.as_bytes() {
+            // The parameter's name: the first line's whole text, else its first word.
+            let key = if want.starts_with("nyquist ") {
+                want
+            } else {
+                want.split(' ').next().unwrap_or(want)
+            };
+            let same_key = got
+                .strip_prefix(key.as_bytes())
+                .is_some_and(|r| r.first() == Some(&b' ') && std::str::from_utf8(r).is_ok());
+            return if same_key && key != want {
+                "was made from other parameters"
+            } else {
+                "is corrupt (not a nyquist reference header)"
+            };
+        }
+        rest = &rest[end + 1..];
+    }
+    "is corrupt (not a nyquist reference header)"
+}
+
+/// The folder of cached references: `$XDG_CACHE_HOME/nyquist` when that variable is an
+/// absolute path, else `$HOME/.cache/nyquist` when the home folder exists (a cache is never
+/// made under a home that is missing, as `/nonexistent` for system users); `Err(why)` when
+/// there is neither.
+fn cache_dir() -> std::result::Result<PathBuf, String> {
+    if let Some(d) = std::env::var_os("XDG_CACHE_HOME")
+        && !d.is_empty()
+        && Path::new(&d).is_absolute()
+    {
+        return Ok(PathBuf::from(d).join("nyquist"));
+    }
+    let home = std::env::var_os("HOME")
+        .filter(|h| !h.is_empty())
+        .ok_or("neither XDG_CACHE_HOME (absolute) nor HOME is set")?;
+    let home = PathBuf::from(home);
+    if !home.is_dir() {
+        return Err(format!("the home folder {} does not exist", home.display()));
+    }
+    Ok(home.join(".cache").join("nyquist"))
 }
 
 /// The first channel of every pixel (the scenes are grey).
@@ -588,4 +744,47 @@ pub fn psnr(rmse: f64) -> f64 {
 /// The default thread count: the machine's parallelism.
 pub fn default_threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn damaged_cache_headers_are_told_apart() {
+        let header = reference_header(Scene::Disk, [16, 8], "box:rx=0.5,ry=0.5");
+        let h = header.as_bytes();
+        assert_eq!(
+            header_mismatch(b"", &header),
+            "is truncated (in its header)"
+        );
+        for cut in [1, 10, 24, 30, h.len() - 1] {
+            assert_eq!(
+                header_mismatch(&h[..cut], &header),
+                "is truncated (in its header)",
+                "{cut}"
+            );
+        }
+        let other = header.replacen("size 16x8", "size 8x16", 1);
+        assert_eq!(
+            header_mismatch(other.as_bytes(), &header),
+            "was made from other parameters"
+        );
+        let other = header.replacen("filter box", "filter gaussian", 1);
+        assert_eq!(
+            header_mismatch(other.as_bytes(), &header),
+            "was made from other parameters"
+        );
+        for bad in [
+            header.replacen("nyquist reference image", "nyquist reference imagf", 1),
+            header.replacen("scene disk", "scenery disk", 1),
+            "P6\n16 8\n255\n".to_owned(),
+        ] {
+            assert_eq!(
+                header_mismatch(bad.as_bytes(), &header),
+                "is corrupt (not a nyquist reference header)",
+                "{bad:?}"
+            );
+        }
+    }
 }
