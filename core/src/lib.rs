@@ -27,7 +27,8 @@
 //! ## Limits
 //!
 //! - Radical-inverse based sets (Halton and friends) have 1024 dimensions, one per prime
-//!   2 … 8161; Sobol has 1024 dimensions (Joe–Kuo `new-joe-kuo-6.21201`) and 32-bit indices.
+//!   2 … 8161; Sobol has 1024 dimensions (Joe–Kuo's direction numbers `new-joe-kuo-6.21201`,
+//!   its first 1024 dimensions: `data/sobol/new-joe-kuo-6.1024.txt`) and 32-bit indices.
 //!
 //! ## `no_std`
 //!
