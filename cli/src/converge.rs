@@ -9,6 +9,9 @@ use nyquist_lab::study::figure::Plot;
 
 pub use nyquist_lab::study::convergence::{ConvergeSpec as ConvergeArgs, json_report};
 
+/// Samples above which a study is announced before it starts (several seconds of work or more).
+const LARGE_STUDY: u64 = 1 << 28;
+
 /// Runs `nyquist converge`.
 pub fn run(args: &ConvergeArgs) -> Result<()> {
     let threads = args
@@ -26,8 +29,27 @@ pub fn run(args: &ConvergeArgs) -> Result<()> {
     study.check().map_err(study_error)?;
     nyquist_lab::study::convergence::check_memory(&study, threads)?;
     notes.iter().for_each(|n| crate::output::note(n));
+    // Long studies say so first, and show their progress over the (sampler, N, run) tasks.
+    let samples = study.work();
+    let tasks = study.samplers.len() * study.counts.len() * study.runs as usize;
+    let bar = crate::progress::Progress::with_unit(tasks as u64, "converge", "tasks");
+    if samples > LARGE_STUDY {
+        eprintln!(
+            "nyquist: warning: {} × {} N × --runs {}: about {samples:.1e} samples; this may take \
+             a while; fewer --runs or --samplers, or a lower --max-spp, make it shorter",
+            nyquist_lab::words::count(study.samplers.len() as u64, "sampler"),
+            study.counts.len(),
+            study.runs,
+            samples = samples as f64
+        );
+        bar.show_now();
+    }
     let start = Stopwatch::start();
-    let outcome = study.run(threads).map_err(study_error)?;
+    let outcome = study
+        .run_with_progress(threads, &|_, _| bar.inc(1))
+        .map_err(study_error);
+    bar.finish();
+    let outcome = outcome?;
     let seconds = start.seconds();
     if let Some(p) = &args.plot {
         let title = command(&study);

@@ -364,6 +364,23 @@ fn long_work_is_announced_with_its_size() {
         "nyquist: warning: --measures star: exact 2D sweep of 100000 points, N² = 1.0e10 steps: \
          about 32 s of work; give fewer points, or --star-method bounds\n"
     );
+    let line = first_stderr_line(
+        &[
+            "converge",
+            "--samplers",
+            "random,sobol",
+            "--runs",
+            "200000",
+            "--max-spp",
+            "1024",
+        ],
+        &dir,
+    );
+    assert_eq!(
+        line,
+        "nyquist: warning: 2 samplers × 7 N × --runs 200000: about 8.1e8 samples; this may take \
+         a while; fewer --runs or --samplers, or a lower --max-spp, make it shorter\n"
+    );
     // Past its stated limit the exact sweep is refused, as its help says.
     assert_error(
         &[
