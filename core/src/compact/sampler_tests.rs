@@ -497,3 +497,23 @@ fn sobol_sampler_dimensions_from_n_on_wrap_onto_the_dimensions_above_the_pixel()
         }
     }
 }
+
+/// Pixels at the top of the `u32` range, as the desktop sampler reads them: each axis's digits
+/// are those of the pixel modulo its scale (`3^k` does not divide 2³², so a sum that wraps
+/// would not give them).
+#[test]
+fn halton_sampler_equals_the_desktop_sampler_at_the_largest_pixels() {
+    for how in Scramble::ALL {
+        let mut small = HaltonSampler::<24>::new([1920, 1080], 16, how, 5).unwrap();
+        let mut desk = sampler::HaltonSampler::new([1920, 1080], 16, how, 5).unwrap();
+        for k in 0..300u32 {
+            let pixel = [u32::MAX - k, u32::MAX - (k * 7) % 300];
+            assert_eq!(
+                small.sequence_index(pixel, 3),
+                desk.sequence_index(pixel, 3),
+                "{pixel:?}"
+            );
+            same_values(&mut small, &mut desk, pixel, k % 16, k % 8);
+        }
+    }
+}
