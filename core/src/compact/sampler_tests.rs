@@ -65,6 +65,7 @@ fn same_values(a: &mut impl Sampler, b: &mut impl Sampler, pixel: [u32; 2], inde
         what()
     );
     assert_eq!(a.samples_per_pixel(), b.samples_per_pixel());
+    assert_eq!(a.arrays_are_dimension_runs(), b.arrays_are_dimension_runs());
 }
 
 /// Pixels, sample indices and dimensions from small to the largest: `k` hashed and cut to
@@ -407,6 +408,112 @@ proptest! {
             same_values(&mut small, &mut desk, pixel, index, dim);
             // A second sample of the same pixel, where the desktop sampler tables its digits.
             same_values(&mut small, &mut desk, pixel, index ^ 1, dim);
+        }
+    }
+}
+
+/// The accessors report what the desktop samplers report (and what they were built with): the
+/// seed and frame, the scramble, the rounded spp and, for ZSobol, the permuted index.
+#[test]
+fn accessors_equal_the_desktop_samplers() {
+    for seed in [0u64, 3, u64::MAX] {
+        for frame in [0u32, 9, u32::MAX] {
+            let small = OwenSobolSampler::<8>::new(4, seed)
+                .unwrap()
+                .with_frame(frame);
+            let desk = sampler::OwenSobolSampler::new(4, seed)
+                .unwrap()
+                .with_frame(frame);
+            assert_eq!((small.frame(), small.seed()), (frame, seed));
+            assert_eq!((desk.frame(), desk.seed()), (frame, seed));
+        }
+        let (small, desk) = (
+            Pmj02Sampler::new(16, seed).unwrap(),
+            sampler::Pmj02Sampler::new(16, seed).unwrap(),
+        );
+        assert_eq!((small.seed(), desk.seed()), (seed, seed));
+    }
+    for requested in [
+        0u32,
+        1,
+        2,
+        3,
+        5,
+        12,
+        16,
+        1000,
+        1 << 31,
+        (1 << 31) + 1,
+        u32::MAX,
+    ] {
+        let want = sampler::SobolSampler::rounded_spp(requested);
+        assert_eq!(
+            SobolSampler::<8>::rounded_spp(requested),
+            want,
+            "{requested}"
+        );
+        assert_eq!(ZSobolSampler::rounded_spp(requested), want, "{requested}");
+    }
+    for how in Scramble::ALL {
+        let small = SobolSampler::<8>::new([16, 16], 4, how, 2).unwrap();
+        assert_eq!(small.scramble(), how);
+        let (small, desk) = (
+            ZSobolSampler::new([16, 8], 4, how, 2).unwrap(),
+            sampler::ZSobolSampler::new([16, 8], 4, how, 2).unwrap(),
+        );
+        assert_eq!(small.scramble(), how);
+        for k in 0..64u64 {
+            let (pixel, index, dim) = (
+                [spread(k) % 16, spread(k + 3) % 8],
+                spread(k),
+                spread(k ^ 9),
+            );
+            assert_eq!(
+                small.sequence_index(pixel, index, dim),
+                desk.sequence_index(pixel, index, dim),
+                "{how:?} {pixel:?} {index} {dim}"
+            );
+        }
+    }
+}
+
+/// Unscrambled, dimension `d ≥ N` is exactly dimension `2 + (d − 2) mod (N − 2)`, dimension
+/// `N` itself included.
+#[test]
+fn sobol_sampler_dimensions_from_n_on_wrap_onto_the_dimensions_above_the_pixel() {
+    let mut s = SobolSampler::<5>::new([8, 8], 16, Scramble::None, 0).unwrap();
+    let value = |s: &mut SobolSampler<5>, d: u32, i: u32| {
+        s.start_pixel_sample([3, 6], i, d);
+        s.get_1d().to_bits()
+    };
+    for d in 5u32..40 {
+        let same = 2 + (d - 2) % 3;
+        for i in [1u32, 5, 15] {
+            assert_eq!(
+                value(&mut s, d, i),
+                value(&mut s, same, i),
+                "dim {d} vs {same}"
+            );
+        }
+    }
+}
+
+/// Pixels at the top of the `u32` range, as the desktop sampler reads them: each axis's digits
+/// are those of the pixel modulo its scale (`3^k` does not divide 2³², so a sum that wraps
+/// would not give them).
+#[test]
+fn halton_sampler_equals_the_desktop_sampler_at_the_largest_pixels() {
+    for how in Scramble::ALL {
+        let mut small = HaltonSampler::<24>::new([1920, 1080], 16, how, 5).unwrap();
+        let mut desk = sampler::HaltonSampler::new([1920, 1080], 16, how, 5).unwrap();
+        for k in 0..300u32 {
+            let pixel = [u32::MAX - k, u32::MAX - (k * 7) % 300];
+            assert_eq!(
+                small.sequence_index(pixel, 3),
+                desk.sequence_index(pixel, 3),
+                "{pixel:?}"
+            );
+            same_values(&mut small, &mut desk, pixel, k % 16, k % 8);
         }
     }
 }

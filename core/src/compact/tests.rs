@@ -145,3 +145,64 @@ fn integer_rounding_equals_the_f64_expression() {
     }
     assert_eq!(checked, 1023 * 8 * 200);
 }
+
+/// Each type reports the table path's dimension count and point count: `N`; no end for Halton,
+/// 2³² points for the Sobol types.
+#[test]
+fn dims_and_point_counts_equal_the_table_paths() {
+    fn same(a: &impl Sequence, b: &impl Sequence, n: u32) {
+        assert_eq!(
+            (a.dims(), a.point_count()),
+            (b.dims(), b.point_count()),
+            "{n} dims"
+        );
+        assert_eq!(a.dims(), n);
+    }
+    same(&Halton::<3>::new(), &sequence::Halton::new(3).unwrap(), 3);
+    same(
+        &Halton::<1024>::new(),
+        &sequence::Halton::new(1024).unwrap(),
+        1024,
+    );
+    same(&Sobol::<5>::new(), &sequence::Sobol::new(5).unwrap(), 5);
+    same(
+        &Sobol::<7>::with_digital_shift(3),
+        &sequence::Sobol::with_digital_shift(7, 3).unwrap(),
+        7,
+    );
+    same(
+        &OwenSobol::<6>::new(2),
+        &sequence::OwenSobol::new(6, 2).unwrap(),
+        6,
+    );
+}
+
+/// `sample_f64` is the table paths' 32-bit fraction exactly (`value / 2³²`), for the plain and
+/// the shifted Sobol sequence and for Owen-Sobol, and Owen-Sobol keeps its seed.
+#[test]
+fn sobol_sample_f64_and_seed_equal_the_table_paths() {
+    for seed in [0u64, 5, u64::MAX] {
+        let plain = (Sobol::<8>::new(), sequence::Sobol::new(8).unwrap());
+        let shifted = (
+            Sobol::<8>::with_digital_shift(seed),
+            sequence::Sobol::with_digital_shift(8, seed).unwrap(),
+        );
+        let (o, to) = (
+            OwenSobol::<8>::new(seed),
+            sequence::OwenSobol::new(8, seed).unwrap(),
+        );
+        assert_eq!(o.seed(), seed);
+        for i in (0..64u64).chain([1 << 31, u64::from(u32::MAX), 1 << 40]) {
+            for d in 0..10 {
+                for (s, ts) in [&plain, &shifted] {
+                    let x = s.sample_f64(i, d);
+                    assert_eq!(x.to_bits(), ts.sample_f64(i, d).to_bits(), "{i} {d}");
+                    assert_eq!(x, f64::from(s.sample_u32(i, d)) / 4_294_967_296.0);
+                }
+                let x = o.sample_f64(i, d);
+                assert_eq!(x.to_bits(), to.sample_f64(i, d).to_bits(), "{i} {d}");
+                assert_eq!(x, f64::from(o.sample_u32(i as u32, d)) / 4_294_967_296.0);
+            }
+        }
+    }
+}
