@@ -24,8 +24,9 @@ pub enum Format {
     after_help = "Example: nyquist filter --filter mitchell:b=0.5,c=0.25 --grid 9 --plot m.png"
 )]
 pub struct FilterArgs {
-    /// Filter spec `name[:key=value,…]`: box, triangle, gaussian, mitchell, lanczos; keys
-    /// radius, rx, ry, alpha, sigma (gaussian), b, c (mitchell), tau (lanczos).
+    /// Filter spec `name[:key=value,…]`: box, triangle, gaussian, mitchell, catmull-rom,
+    /// blackman-harris, lanczos; keys radius, rx, ry, alpha, sigma (gaussian), b, c (mitchell),
+    /// tau (lanczos).
     #[arg(long, value_name = "SPEC", value_parser = parse_spec)]
     pub filter: FilterKind,
     /// Grid points per axis over [−rx, rx] × [−ry, ry], ends included.

@@ -72,7 +72,7 @@ pub struct RenderArgs {
     #[arg(long, default_value_t = 16, value_parser = nyquist_lab::flags::whole(1, nyquist_lab::study::MAX_SPP))]
     pub spp: u32,
     /// Reconstruction filter spec `name[:key=value,…]`: box, triangle, gaussian, mitchell,
-    /// lanczos (e.g. gaussian:alpha=2, mitchell:b=0.5,c=0.25).
+    /// catmull-rom, blackman-harris, lanczos (e.g. gaussian:alpha=2, mitchell:b=0.5,c=0.25).
     #[arg(long, value_name = "SPEC", default_value = "box", value_parser = parse_filter)]
     pub filter: FilterKind,
     /// Image size in pixels.

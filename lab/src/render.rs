@@ -210,7 +210,8 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
 pub fn parse_filter(s: &str) -> Result<FilterKind, String> {
     FilterKind::parse(s).map_err(|e| {
         format!(
-            "{e} (filters: box, triangle, gaussian, mitchell, lanczos; e.g. mitchell:b=0.5,c=0.25)"
+            "{e} (filters: {}; e.g. mitchell:b=0.5,c=0.25)",
+            nyquist::filter::FILTER_NAMES.join(", ")
         )
     })
 }

@@ -54,7 +54,7 @@ pub fn names() -> Reply {
         pairs(described::<Scene>()),
         pairs(described::<Integrand>()),
         plain(&nyquist::sampler::NAMES),
-        plain(&["box", "triangle", "gaussian", "mitchell", "lanczos"]),
+        plain(&nyquist::filter::FILTER_NAMES),
     );
     Reply {
         json,

@@ -1,6 +1,6 @@
 //! The closed set of built-in filters, for configuration and command-line specs.
 
-use super::{Axis, Boxcar, Filter, Gaussian, Lanczos, Mitchell, Triangle};
+use super::{Axis, BlackmanHarris, Boxcar, Filter, Gaussian, Lanczos, Mitchell, Triangle};
 use crate::Error;
 use core::fmt;
 
@@ -8,7 +8,9 @@ use core::fmt;
 /// [`Filter`] itself, dispatching by `match`.
 ///
 /// Spec syntax ([`FilterKind::parse`]): `name[:key=value,…]` with names `box` (or `boxcar`),
-/// `triangle` (or `tent`), `gaussian`, `mitchell`, `lanczos`, and keys
+/// `triangle` (or `tent`), `gaussian`, `mitchell`, `catmull-rom` (the Mitchell–Netravali cubic
+/// at `B = 0`, `C = ½`: a [`Mitchell`] filter, so it takes only the radius keys),
+/// `blackman-harris`, `lanczos`, and keys
 ///
 /// - `radius` (both axes), `rx`, `ry`: all filters; `radius` with `rx` or `ry` is a conflict;
 /// - `alpha` or `sigma` (`α = 1/(2σ²)`): gaussian;
@@ -38,7 +40,27 @@ pub enum FilterKind {
     Mitchell(Mitchell),
     /// [`Lanczos`].
     Lanczos(Lanczos),
+    /// [`BlackmanHarris`].
+    BlackmanHarris(BlackmanHarris),
 }
+
+/// The filter names [`FilterKind::parse`] takes (each alias aside): the list front ends offer.
+///
+/// ```
+/// use nyquist::filter::{FilterKind, FILTER_NAMES};
+/// for name in FILTER_NAMES {
+///     assert!(FilterKind::parse(name).is_ok(), "{name}");
+/// }
+/// ```
+pub const FILTER_NAMES: [&str; 7] = [
+    "box",
+    "triangle",
+    "gaussian",
+    "mitchell",
+    "catmull-rom",
+    "blackman-harris",
+    "lanczos",
+];
 
 /// Why [`FilterKind::parse`] rejected a spec; borrows the offending text.
 ///
@@ -106,10 +128,18 @@ impl fmt::Display for SpecError<'_> {
         f.write_str("filter spec: ")?;
         match *self {
             SpecError::Empty => f.write_str("empty (expected e.g. `mitchell:b=0.5,c=0.25`)"),
-            SpecError::UnknownFilter { name } => write!(
-                f,
-                "unknown filter `{name}` (expected box, triangle, gaussian, mitchell or lanczos)"
-            ),
+            SpecError::UnknownFilter { name } => {
+                write!(f, "unknown filter `{name}` (expected ")?;
+                for (i, n) in FILTER_NAMES.iter().enumerate() {
+                    let sep = match i {
+                        0 => "",
+                        _ if i + 1 == FILTER_NAMES.len() => " or ",
+                        _ => ", ",
+                    };
+                    write!(f, "{sep}{n}")?;
+                }
+                f.write_str(")")
+            }
             SpecError::UnknownKey { filter, key } => {
                 write!(f, "filter `{filter}` has no key `{key}`")
             }
@@ -227,6 +257,13 @@ impl FilterKind {
                 ("gaussian", FilterKind::Gaussian(Gaussian::default()))
             } else if lower(name, "mitchell") {
                 ("mitchell", FilterKind::Mitchell(Mitchell::default()))
+            } else if lower(name, "catmull-rom") || lower(name, "catmullrom") {
+                ("catmull-rom", FilterKind::Mitchell(Mitchell::catmull_rom()))
+            } else if lower(name, "blackman-harris") || lower(name, "blackmanharris") {
+                (
+                    "blackman-harris",
+                    FilterKind::BlackmanHarris(BlackmanHarris::default()),
+                )
             } else if lower(name, "lanczos") {
                 ("lanczos", FilterKind::Lanczos(Lanczos::default()))
             } else {
@@ -236,7 +273,10 @@ impl FilterKind {
         let (mut rx, mut ry) = (Param::new(r[0]), Param::new(r[1]));
         let mut alpha = Param::new(2.0);
         let mut sigma: Option<Param<'_>> = None;
-        let (mut b, mut c) = (Param::new(1.0 / 3.0), Param::new(1.0 / 3.0));
+        let (mut b, mut c) = match defaults {
+            FilterKind::Mitchell(m) => (Param::new(m.bc()[0]), Param::new(m.bc()[1])),
+            _ => (Param::new(1.0 / 3.0), Param::new(1.0 / 3.0)),
+        };
         let mut tau = Param::new(3.0);
         let mut alpha_key: Option<&str> = None;
         let mut seen = 0u16;
@@ -324,6 +364,9 @@ impl FilterKind {
                 Mitchell::new(radius, b.value, c.value).map(FilterKind::Mitchell)
             }
             FilterKind::Lanczos(_) => Lanczos::new(radius, tau.value).map(FilterKind::Lanczos),
+            FilterKind::BlackmanHarris(_) => {
+                BlackmanHarris::new(radius).map(FilterKind::BlackmanHarris)
+            }
         };
         built.map_err(|error| {
             let what = match error {
@@ -347,7 +390,8 @@ impl FilterKind {
         })
     }
 
-    /// The canonical spec name: `box`, `triangle`, `gaussian`, `mitchell` or `lanczos`.
+    /// The canonical spec name: `box`, `triangle`, `gaussian`, `mitchell`, `lanczos` or
+    /// `blackman-harris` (a `catmull-rom` spec is a `mitchell` filter).
     ///
     /// ```
     /// use nyquist::filter::{Boxcar, FilterKind};
@@ -360,6 +404,7 @@ impl FilterKind {
             FilterKind::Gaussian(_) => "gaussian",
             FilterKind::Mitchell(_) => "mitchell",
             FilterKind::Lanczos(_) => "lanczos",
+            FilterKind::BlackmanHarris(_) => "blackman-harris",
         }
     }
 
@@ -377,6 +422,7 @@ impl FilterKind {
             FilterKind::Gaussian(f) => f,
             FilterKind::Mitchell(f) => f,
             FilterKind::Lanczos(f) => f,
+            FilterKind::BlackmanHarris(f) => f,
         }
     }
 }
@@ -407,6 +453,7 @@ macro_rules! dispatch {
             FilterKind::Gaussian($f) => $e,
             FilterKind::Mitchell($f) => $e,
             FilterKind::Lanczos($f) => $e,
+            FilterKind::BlackmanHarris($f) => $e,
         }
     };
 }

@@ -73,6 +73,26 @@ impl Mitchell {
         })
     }
 
+    /// The Catmull–Rom spline as a filter (Catmull & Rom 1974): the Mitchell–Netravali cubic at
+    /// `B = 0`, `C = ½`, radius 2 (Mitsuba's `catmullrom`). It interpolates (1 at 0, 0 at the
+    /// other integers) and has negative lobes of −0.0741 at `|x| = 4/3`; integral 1. Another
+    /// radius: [`Mitchell::new`]`(radius, 0.0, 0.5)`, or the spec `catmull-rom:radius=R`.
+    ///
+    /// ```
+    /// use nyquist::filter::{Axis, Filter, Mitchell};
+    /// let f = Mitchell::catmull_rom();
+    /// assert_eq!(f.bc(), [0.0, 0.5]);
+    /// assert_eq!(f.eval_1d(Axis::X, 0.0), Some(1.0));
+    /// assert_eq!(f.eval_1d(Axis::X, 1.0), Some(0.0));
+    /// assert_eq!(f.integral(), 1.0);
+    /// ```
+    pub fn catmull_rom() -> Mitchell {
+        match Mitchell::new([2.0, 2.0], 0.0, 0.5) {
+            Ok(m) => m,
+            Err(_) => unreachable!("the Catmull–Rom parameters are valid"),
+        }
+    }
+
     /// The parameters `[B, C]`.
     ///
     /// ```

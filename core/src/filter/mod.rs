@@ -1,4 +1,4 @@
-//! Reconstruction filters: the [`Filter`] trait (the plugin point), the five built-in filters,
+//! Reconstruction filters: the [`Filter`] trait (the plugin point), the six built-in filters,
 //! precomputed lookup tables and filter importance sampling.
 //!
 //! A filter is a weight function `f(x, y)` of the offset from a pixel centre, in pixels, with
@@ -10,8 +10,9 @@
 //! | [`Boxcar`] | ½ | `1` |
 //! | [`Triangle`] | 2 | `r − |x|` |
 //! | [`Gaussian`] | 2, α = 2 | `e^(−αx²) − e^(−αr²)`; `σ` form α = 1/(2σ²) |
-//! | [`Mitchell`] | 2, B = C = ⅓ | Mitchell–Netravali cubic at `t = 2|x|/r` |
+//! | [`Mitchell`] | 2, B = C = ⅓ | Mitchell–Netravali cubic at `t = 2|x|/r`; Catmull–Rom is B = 0, C = ½ ([`Mitchell::catmull_rom`]) |
 //! | [`Lanczos`] | 4, τ = 3 | `sinc(x)·sinc(x/τ)`, `sinc(x) = sin(πx)/(πx)` |
+//! | [`BlackmanHarris`] | 1.5 | `a₀ − a₁cos 2πu + a₂cos 4πu − a₃cos 6πu`, `u = x/(2r) + ½` |
 //!
 //! Every built-in filter is separable, `f(x, y) = f(x)·f(y)` with a radius per axis.
 //!
@@ -30,7 +31,8 @@
 //!   like `mitchell:b=0.5,c=0.25` ([`FilterKind::parse`]).
 //!
 //! Sources: Mitchell & Netravali 1988, "Reconstruction Filters in Computer Graphics" (the
-//! cubic); Duchon 1979 (Lanczos windowed sinc); Pharr, Jakob & Humphreys, *Physically Based
+//! cubic); Catmull & Rom 1974 (the interpolating spline, the cubic's B = 0, C = ½); Harris 1978
+//! (the 4-term Blackman–Harris window); Duchon 1979 (Lanczos windowed sinc); Pharr, Jakob & Humphreys, *Physically Based
 //! Rendering* 2nd–4th ed. (the α-form Gaussian, 16-entry tables, filter importance sampling).
 //!
 //! ```
@@ -49,6 +51,7 @@
 use crate::Error;
 use crate::error::Interval;
 
+mod blackman_harris;
 mod boxcar;
 mod film_table;
 mod gaussian;
@@ -64,10 +67,11 @@ mod weights;
 #[cfg(test)]
 mod tests;
 
+pub use blackman_harris::BlackmanHarris;
 pub use boxcar::Boxcar;
 pub use film_table::FilmTable;
 pub use gaussian::Gaussian;
-pub use kind::{FilterKind, SpecError};
+pub use kind::{FILTER_NAMES, FilterKind, SpecError};
 pub use lanczos::{Lanczos, sinc};
 pub use mitchell::Mitchell;
 pub use phase::{MAX_TAPS, PHASES, PhaseTable};

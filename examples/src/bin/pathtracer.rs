@@ -92,7 +92,8 @@ struct RenderArgs {
     /// Worker threads (default: all cores).
     #[arg(long)]
     threads: Option<usize>,
-    /// Reconstruction filter spec (box, triangle, gaussian, mitchell, lanczos[:key=value,…]).
+    /// Reconstruction filter spec (box, triangle, gaussian, mitchell, catmull-rom,
+    /// blackman-harris, lanczos[:key=value,…]).
     #[arg(long, default_value = "box")]
     filter: String,
     /// Draw the values through the stateless layer (camera_sample, get_array_2d, get_2d, get_1d,

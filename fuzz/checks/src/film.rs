@@ -3,7 +3,7 @@
 //! negative), merges in any order.
 
 use nyquist::filter::{
-    Boxcar, Filter, FilterKind, FilterTable, Gaussian, Lanczos, Mitchell, Triangle,
+    BlackmanHarris, Boxcar, Filter, FilterKind, FilterTable, Gaussian, Lanczos, Mitchell, Triangle,
 };
 use nyquist::filter::{Interpolation, MAX_RADIUS};
 use nyquist_film::{Bounds, Film, FilmConfig, FilmStats, FilmTile, TileSpec};
@@ -470,13 +470,14 @@ fn max_weight(film: &Film) -> f64 {
 fn pick_filter(b: &mut Bytes) -> (Box<dyn Filter>, bool) {
     let r = [radius(b), radius(b)];
     let (p, q) = (b.f32_mixed(), b.f32_mixed());
-    let pick = b.u8() % 7;
+    let pick = b.u8() % 8;
     let filter: Box<dyn Filter> = match pick {
         0 => Box::new(Boxcar::new(r).unwrap_or_default()),
         1 => Box::new(Triangle::new(r).unwrap_or_default()),
         2 => Box::new(Gaussian::new(r, p).unwrap_or_default()),
         3 => Box::new(Mitchell::new(r, p, q).unwrap_or_default()),
         4 => Box::new(Lanczos::new(r, p).unwrap_or_default()),
+        6 => Box::new(BlackmanHarris::new(r).unwrap_or_default()),
         5 => {
             let text = String::from_utf8_lossy(b.take(24)).into_owned();
             Box::new(FilterKind::parse(&text).unwrap_or(FilterKind::Mitchell(Mitchell::default())))

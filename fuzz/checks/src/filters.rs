@@ -3,8 +3,9 @@
 
 use nyquist::Error;
 use nyquist::filter::{
-    Axis, Boxcar, Filter, FilterKind, FilterSampler, FilterTable, Gaussian, Interpolation, Lanczos,
-    MAX_RADIUS, MAX_TAPS, Mitchell, PhaseTable, SeparableTable, Table2d, Triangle, sinc,
+    Axis, BlackmanHarris, Boxcar, Filter, FilterKind, FilterSampler, FilterTable, Gaussian,
+    Interpolation, Lanczos, MAX_RADIUS, MAX_TAPS, Mitchell, PhaseTable, SeparableTable, Table2d,
+    Triangle, sinc,
 };
 
 use crate::{Bytes, error_numbers_hold};
@@ -17,7 +18,7 @@ use crate::{Bytes, error_numbers_hold};
 /// importance sampler draws offsets inside the support with finite weights and positive pdf.
 pub fn filters(data: &[u8]) {
     let mut b = Bytes::new(data);
-    let op = b.u8() % 8;
+    let op = b.u8() % 9;
     let offsets: Vec<[f32; 2]> = (0..4).map(|_| [b.f32_mixed(), b.f32_mixed()]).collect();
     let interp = if b.bool() {
         Interpolation::Linear
@@ -73,6 +74,7 @@ pub fn filters(data: &[u8]) {
         ),
         5 => built("Mitchell", Mitchell::new(r, params[2], params[3]), &ctx),
         6 => built("Lanczos", Lanczos::new(r, params[2]), &ctx),
+        7 => built("BlackmanHarris", BlackmanHarris::new(r), &ctx),
         _ => {
             // A plugin filter with arbitrary (even non-finite) values: tables and the sampler
             // must still be built or refused with a typed error, and stay finite.
