@@ -239,23 +239,6 @@ fn phi_long(b: u32, a: u64) -> f32 {
     scale(m as u32, e).min(ONE_MINUS_EPSILON)
 }
 
-/// Φ_b(a), `b` an odd prime base, bit for bit the table path's: below `limit` (the fast path's,
-/// `b^k < 2³²`) the fast path's two roundings with the digit count and reciprocal `class(c)`
-/// returns for the index's length in nibbles `c` (1 ..= 8), at or past it [`phi_long`].
-#[cfg_attr(not(feature = "small-code"), inline(always))]
-fn phi(b: u32, limit: u64, a: u64, class: impl FnOnce(usize) -> (u32, u64)) -> f32 {
-    if a >= limit {
-        return phi_long(b, a);
-    }
-    // Below 2³²: the class is the index's length in nibbles, 1 ..= 8 (0 is index 0).
-    let c = (64 - a.leading_zeros()).div_ceil(4) as usize;
-    if c == 0 {
-        return 0.0;
-    }
-    let (digits, inv) = class(c);
-    phi_short(b, digits, inv, a as u32)
-}
-
 /// The Halton sequence over its first `N` dimensions (`1 <= N <= 1024`, checked at compile
 /// time): dimension `d` of point `i` is Φ_{p_d}(i), bit for bit what
 /// [`sequence::Halton`](crate::sequence::Halton)`::new(N)` returns, for every `u64` index.
@@ -312,9 +295,15 @@ impl<const N: usize> Sequence for Halton<N> {
             return phi2(index);
         }
         let base = &Self::BASES[d];
-        phi(base.b, base.limit, index, |c| {
-            (u32::from(base.digits[c - 1]), base.inv[c - 1])
-        })
+        if index < base.limit {
+            // Below 2³²: the class is the index's length in nibbles, 1 ..= 8 (0 is index 0).
+            let class = (64 - index.leading_zeros()).div_ceil(4) as usize;
+            let Some(c) = class.checked_sub(1) else {
+                return 0.0;
+            };
+            return phi_short(base.b, u32::from(base.digits[c]), base.inv[c], index as u32);
+        }
+        phi_long(base.b, index)
     }
 
     /// As [`sequence::Halton`](crate::sequence::Halton)'s (the table path, in `f64`).
@@ -382,7 +371,17 @@ impl Sequence for RuntimeHalton {
         if d == 0 {
             return phi2(index);
         }
-        phi(PRIMES[d], fast_limit(d), index, |c| fast_class(d, c))
+        let b = PRIMES[d];
+        if index < fast_limit(d) {
+            // As `Halton<N>`, with the class's constants computed here.
+            let class = (64 - index.leading_zeros()).div_ceil(4) as usize;
+            if class == 0 {
+                return 0.0;
+            }
+            let (digits, inv) = fast_class(d, class);
+            return phi_short(b, digits, inv, index as u32);
+        }
+        phi_long(b, index)
     }
 
     /// As [`sequence::Halton`](crate::sequence::Halton)'s (the table path, in `f64`, which
