@@ -135,8 +135,13 @@ typedef uint32_t NyqInterpolation;
 // creation: any number of threads may read one handle at once.
 typedef struct NyqFilter NyqFilter;
 
-// A sampler behind an opaque handle, made by [`nyq_sampler_create`] or [`nyq_sampler_clone`]
-// and released by [`nyq_sampler_destroy`]. Not safe to use from two threads at once.
+// A sampler behind an opaque handle, made by [`nyq_sampler_create`],
+// [`nyq_sampler_create_owen_sobol`] or [`nyq_sampler_clone`] and released by
+// [`nyq_sampler_destroy`]. Not safe to use from two threads at once.
+//
+// The handle calls its sampler through a vtable that only the constructor that made it names,
+// so a program that creates its samplers with a per-kind constructor links that kind's code
+// and tables alone; [`nyq_sampler_create`], which takes any name, links every kind.
 typedef struct NyqSampler NyqSampler;
 
 // A filter importance sample: an offset from the pixel centre and its weight.
@@ -468,6 +473,23 @@ enum NyqStatus nyq_sampler_create(const char *name,
                                   uint64_t seed,
                                   struct NyqSampler **out);
 
+// [`nyq_sampler_create`]`("owen-sobol", width, height, spp, seed, out)`: the same sampler,
+// the same values and errors, without the name. A program that creates its samplers this way
+// links the Owen-Sobol sampler's code and tables alone (about 1 MB of tables, or, in the
+// static library built with the `lazy-tables` feature, the 10 KB they are built from at first
+// use, in about a millisecond: `docs/c.md`).
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_ZERO_SIZE` if `width`, `height` or `spp` is 0.
+//
+// # Safety
+// `out` is null or valid for writing one pointer.
+enum NyqStatus nyq_sampler_create_owen_sobol(uint32_t width,
+                                             uint32_t height,
+                                             uint32_t spp,
+                                             uint64_t seed,
+                                             struct NyqSampler **out);
+
 // Writes a new handle with the same parameters and cursor as `*sampler` to `*out` (one per
 // thread).
 //
@@ -673,6 +695,40 @@ enum NyqStatus nyq_sequence_fill(const struct NyqSequence *seq,
 // `seq` is null or readable; `out` is null or valid for writing one `uint64_t`.
 enum NyqStatus nyq_sequence_point_count(const struct NyqSequence *seq,
                                         uint64_t *out);
+
+// [`nyq_sequence_sample`] of the Halton sequence in `dims` dimensions (kind
+// `NYQ_SEQ_HALTON`): the same value and errors. A program that calls the Halton functions and
+// not [`nyq_sequence_sample`] links no radical-inverse table: the value comes from the core's
+// [`RuntimeHalton`], which computes its base's constants per call (bit for bit the tables'
+// value, somewhat slower).
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_ZERO_SIZE` if `dims == 0`;
+// `NYQ_ERR_OUT_OF_RANGE` if `dims > 1024` or `dim >= dims`.
+//
+// # Safety
+// `out` is null or valid for writing one `float`.
+enum NyqStatus nyq_halton_sample(uint32_t dims, uint64_t index, uint32_t dim, float *out);
+
+// [`nyq_sequence_fill`] of the Halton sequence in `dims` dimensions (kind `NYQ_SEQ_HALTON`,
+// all `dims` of them written): points `first, first + 1, …` into `out[0..len]`, point-major,
+// and their number to `*written`; the same values and errors, linking no radical-inverse
+// table (as [`nyq_halton_sample`]).
+//
+// # Errors
+// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_ZERO_SIZE` if `len == 0` or `dims == 0`;
+// `NYQ_ERR_OUT_OF_RANGE` if `dims > 1024`; `NYQ_ERR_BUFFER` if `len` is not a multiple of
+// `dims` or `out` is misaligned; `NYQ_ERR_TOO_MANY` if the points run past `u64::MAX`. On
+// error `out` is unspecified.
+//
+// # Safety
+// `out` is null or valid for writing `len` floats; `written` is null or valid for writing one
+// `uint64_t`.
+enum NyqStatus nyq_halton_fill(uint64_t first,
+                               uint32_t dims,
+                               float *out,
+                               size_t len,
+                               uint64_t *written);
 
 // A static, NUL-terminated English description of `status` (a [`NyqStatus`] value); unknown
 // values give `"unknown status"`. Never null; the caller must not free it. Total.

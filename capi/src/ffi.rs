@@ -1,6 +1,7 @@
 //! Pointer checks shared by every entry point. All the raw-pointer reads of the crate go
 //! through these helpers, so each caller's `unsafe` block only restates the caller contract.
 
+use alloc::boxed::Box;
 use core::ffi::{CStr, c_char};
 
 use crate::NyqStatus;

@@ -13,12 +13,27 @@
 //! nyquist-capi --test header` rewrites it). The staticlib is `libnyquist_capi.a`; link it with
 //! `-lm -lpthread -ldl`.
 //!
+//! # Features and the small static library
+//!
+//! - `std` (default): link Rust's standard library for the heap and panics. Without it the
+//!   crate is `no_std` and brings its own (the C library's `malloc` family; a panic aborts),
+//!   so a C program links none of the standard library's panic and backtrace machinery; the
+//!   Rust tests need `std`.
+//! - `lazy-tables`: the core's speed tables built in zeroed memory at first use instead of
+//!   stored (the `nyquist` feature of that name).
+//!
+//! `cargo rustc --profile capi -p nyquist-capi --no-default-features --features lazy-tables
+//! --lib --crate-type staticlib` builds the small static library; with the per-kind entry
+//! points ([`nyq_halton_sample`], [`nyq_sampler_create_owen_sobol`]) a program links only the
+//! kind it calls. `docs/c.md` gives the link line and the sizes.
+//!
 //! # Unsafe code
 //!
 //! The core forbids `unsafe`; this crate uses it only to read C pointers (null-checked and
 //! alignment-checked first), to turn `(pointer, length)` pairs into slices, to own handles
-//! through `Box::into_raw`/`Box::from_raw`, and to call a C filter callback. Each block states
-//! why it is sound under the caller's documented obligations (`# Safety` on each function).
+//! through `Box::into_raw`/`Box::from_raw`, to call a C filter callback, and, without `std`,
+//! to call the C library's allocator and `abort`. Each block states why it is sound under the
+//! caller's documented obligations (`# Safety` on each function).
 //!
 //! ```
 //! use nyquist_capi::{NyqStatus, nyq_radical_inverse};
@@ -29,13 +44,21 @@
 //! assert_eq!(unsafe { nyq_radical_inverse(1, 5, std::ptr::null_mut()) }, NyqStatus::NYQ_ERR_NULL);
 //! ```
 
+#![no_std]
 #![deny(missing_docs, unsafe_op_in_unsafe_fn)]
 #![deny(clippy::undocumented_unsafe_blocks, clippy::missing_safety_doc)]
+
+extern crate alloc;
+#[cfg(feature = "std")]
+extern crate std;
 
 mod ffi;
 mod filter;
 mod mask;
 mod radical;
+/// cbindgen:ignore
+#[cfg(not(feature = "std"))]
+mod runtime;
 mod sampler;
 mod sequence;
 mod status;

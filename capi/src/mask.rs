@@ -1,5 +1,7 @@
 //! Blue-noise threshold masks (void-and-cluster) and Poisson-disk sets into caller buffers.
 
+use alloc::vec;
+
 use nyquist::bluenoise::VoidAndCluster;
 
 use crate::NyqStatus;

@@ -5,20 +5,73 @@
 //! `nyq_sampler_start_pixel_sample` its values depend only on (pixel, sample index, dimension,
 //! seed, construction parameters), so clones on different threads replay the same bits.
 
+use alloc::boxed::Box;
 use core::ffi::c_char;
+use core::fmt::Debug;
 
-use nyquist::sampler::{CameraSample, NamedSampler, Sampler, camera_sample};
+use nyquist::sampler::{CameraSample, NamedSampler, OwenSobolSampler, Sampler, camera_sample};
 
 use crate::NyqStatus;
 use crate::ffi::{
     drop_box, get_mut, need, put, put_array, put_box, query, query_mut, run, slice, slice_mut, text,
 };
 
-/// A sampler behind an opaque handle, made by [`nyq_sampler_create`] or [`nyq_sampler_clone`]
-/// and released by [`nyq_sampler_destroy`]. Not safe to use from two threads at once.
-#[derive(Clone, Debug)]
+/// A sampler behind an opaque handle, made by [`nyq_sampler_create`],
+/// [`nyq_sampler_create_owen_sobol`] or [`nyq_sampler_clone`] and released by
+/// [`nyq_sampler_destroy`]. Not safe to use from two threads at once.
+///
+/// The handle calls its sampler through a vtable that only the constructor that made it names,
+/// so a program that creates its samplers with a per-kind constructor links that kind's code
+/// and tables alone; [`nyq_sampler_create`], which takes any name, links every kind.
 pub struct NyqSampler {
-    inner: NamedSampler,
+    inner: Box<dyn HandleSampler>,
+}
+
+impl Debug for NyqSampler {
+    /// The type's name only: formatting the sampler would link every sampler's formatting code
+    /// into every program.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("NyqSampler").finish_non_exhaustive()
+    }
+}
+
+impl NyqSampler {
+    /// A handle over `sampler`.
+    fn new(sampler: impl HandleSampler + 'static) -> NyqSampler {
+        NyqSampler {
+            inner: Box::new(sampler),
+        }
+    }
+}
+
+impl Clone for NyqSampler {
+    fn clone(&self) -> NyqSampler {
+        NyqSampler {
+            inner: self.inner.clone_box(),
+        }
+    }
+}
+
+/// A [`Sampler`] a handle can hold: cloneable behind the box.
+trait HandleSampler: Sampler {
+    /// A boxed copy, parameters and cursor included.
+    fn clone_box(&self) -> Box<dyn HandleSampler>;
+}
+
+impl<S: Sampler + Clone + 'static> HandleSampler for S {
+    fn clone_box(&self) -> Box<dyn HandleSampler> {
+        Box::new(self.clone())
+    }
+}
+
+/// Checks what [`nyq_sampler_create`] checks before the name: `NYQ_ERR_ZERO_SIZE` if `width`,
+/// `height` or `spp` is 0.
+fn nonzero_size(width: u32, height: u32, spp: u32) -> Result<(), NyqStatus> {
+    if width == 0 || height == 0 || spp == 0 {
+        Err(NyqStatus::NYQ_ERR_ZERO_SIZE)
+    } else {
+        Ok(())
+    }
 }
 
 /// Creates sampler `name` for `spp` samples per pixel of a `width × height` image with `seed`,
@@ -76,9 +129,56 @@ pub unsafe extern "C" fn nyq_sampler_create(
         // SAFETY: `name` is null or NUL-terminated (caller).
         let name = unsafe { text(name)? };
         need(out)?;
-        let inner = NamedSampler::new(name, [width, height], spp, seed)?;
+        let sampler = NamedSampler::new(name, [width, height], spp, seed)?;
         // SAFETY: `out` is writable (caller).
-        unsafe { put_box(out, NyqSampler { inner }) }
+        unsafe { put_box(out, NyqSampler::new(sampler)) }
+    })
+}
+
+/// [`nyq_sampler_create`]`("owen-sobol", width, height, spp, seed, out)`: the same sampler,
+/// the same values and errors, without the name. A program that creates its samplers this way
+/// links the Owen-Sobol sampler's code and tables alone (about 1 MB of tables, or, in the
+/// static library built with the `lazy-tables` feature, the 10 KB they are built from at first
+/// use, in about a millisecond: `docs/c.md`).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_ZERO_SIZE` if `width`, `height` or `spp` is 0.
+///
+/// # Safety
+/// `out` is null or valid for writing one pointer.
+///
+/// ```
+/// use nyquist_capi::*;
+/// let (mut a, mut b): (*mut NyqSampler, *mut NyqSampler) = (std::ptr::null_mut(), std::ptr::null_mut());
+/// let (mut x, mut y) = ([0.0f32; 2], [0.0f32; 2]);
+/// // SAFETY: valid pointers; each handle is destroyed once.
+/// unsafe {
+///     assert_eq!(nyq_sampler_create_owen_sobol(64, 64, 16, 7, &mut a), NyqStatus::NYQ_OK);
+///     nyq_sampler_create(c"owen-sobol".as_ptr(), 64, 64, 16, 7, &mut b);
+///     nyq_sampler_start_pixel_sample(a, 3, 5, 2, 700);
+///     nyq_sampler_start_pixel_sample(b, 3, 5, 2, 700);
+///     nyq_sampler_get_2d(a, x.as_mut_ptr());
+///     nyq_sampler_get_2d(b, y.as_mut_ptr());
+///     nyq_sampler_destroy(a);
+///     nyq_sampler_destroy(b);
+///     assert_eq!(nyq_sampler_create_owen_sobol(64, 64, 0, 7, &mut a), NyqStatus::NYQ_ERR_ZERO_SIZE);
+/// }
+/// assert_eq!(x, y);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_sampler_create_owen_sobol(
+    width: u32,
+    height: u32,
+    spp: u32,
+    seed: u64,
+    out: *mut *mut NyqSampler,
+) -> NyqStatus {
+    run(|| {
+        need(out)?;
+        nonzero_size(width, height, spp)?;
+        let sampler = OwenSobolSampler::new(spp, seed)?;
+        // SAFETY: `out` is writable (caller).
+        unsafe { put_box(out, NyqSampler::new(sampler)) }
     })
 }
 
@@ -209,7 +309,7 @@ unsafe fn array(
     out: *mut f32,
     len: usize,
     arity: usize,
-    fill: impl FnOnce(&mut NamedSampler, &mut [f32]),
+    fill: impl FnOnce(&mut dyn HandleSampler, &mut [f32]),
 ) -> NyqStatus {
     run(|| {
         // SAFETY: `sampler` is null or live and exclusively ours (caller).
@@ -219,7 +319,7 @@ unsafe fn array(
         if !len.is_multiple_of(arity) {
             return Err(NyqStatus::NYQ_ERR_BUFFER);
         }
-        fill(&mut s.inner, out);
+        fill(&mut *s.inner, out);
         Ok(())
     })
 }
@@ -441,7 +541,7 @@ pub unsafe extern "C" fn nyq_sampler_camera_sample(
     sample_index: u32,
     out: *mut NyqCameraSample,
 ) -> NyqStatus {
-    let camera = |s: &mut NyqSampler| Ok(camera_sample(&mut s.inner, [x, y], sample_index).into());
+    let camera = |s: &mut NyqSampler| Ok(camera_sample(&mut *s.inner, [x, y], sample_index).into());
     // SAFETY: the pointers are as `query_mut` needs (caller).
     unsafe { query_mut(sampler, out, camera, put) }
 }

@@ -7,6 +7,7 @@
 //! call validates it and builds the core's sequence, which costs a few integer operations (a
 //! Korobov lattice whose multiplier is left to nyquist also searches it, about linear in `N`).
 
+use nyquist::compact::RuntimeHalton;
 use nyquist::sequence::{NamedSequence, NamedSequenceError, Sequence, SequenceSpec, takes_points};
 
 use crate::NyqStatus;
@@ -312,5 +313,90 @@ pub unsafe extern "C" fn nyq_sequence_point_count(
         let n = build(spec)?.point_count().unwrap_or(0);
         // SAFETY: `out` is null or writable (caller).
         unsafe { put(out, n) }
+    })
+}
+
+/// The Halton sequence in `dims` dimensions, checked: `NYQ_ERR_ZERO_SIZE` for 0,
+/// `NYQ_ERR_OUT_OF_RANGE` above 1024.
+fn halton(dims: u32) -> Result<RuntimeHalton, NyqStatus> {
+    Ok(RuntimeHalton::new(dims)?)
+}
+
+/// [`nyq_sequence_sample`] of the Halton sequence in `dims` dimensions (kind
+/// `NYQ_SEQ_HALTON`): the same value and errors. A program that calls the Halton functions and
+/// not [`nyq_sequence_sample`] links no radical-inverse table: the value comes from the core's
+/// [`RuntimeHalton`], which computes its base's constants per call (bit for bit the tables'
+/// value, somewhat slower).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_ZERO_SIZE` if `dims == 0`;
+/// `NYQ_ERR_OUT_OF_RANGE` if `dims > 1024` or `dim >= dims`.
+///
+/// # Safety
+/// `out` is null or valid for writing one `float`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_halton_sample};
+/// let mut x = 0.0f32;
+/// // SAFETY: valid pointer.
+/// assert_eq!(unsafe { nyq_halton_sample(2, 3, 1, &mut x) }, NyqStatus::NYQ_OK);
+/// assert_eq!(x, 1.0 / 9.0);
+/// assert_eq!(unsafe { nyq_halton_sample(2, 3, 2, &mut x) }, NyqStatus::NYQ_ERR_OUT_OF_RANGE);
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_halton_sample(
+    dims: u32,
+    index: u64,
+    dim: u32,
+    out: *mut f32,
+) -> NyqStatus {
+    run(|| {
+        need(out)?;
+        let h = halton(dims)?;
+        if dim >= dims {
+            return Err(NyqStatus::NYQ_ERR_OUT_OF_RANGE);
+        }
+        // SAFETY: `out` is null or writable (caller).
+        unsafe { put(out, h.sample(index, dim)) }
+    })
+}
+
+/// [`nyq_sequence_fill`] of the Halton sequence in `dims` dimensions (kind `NYQ_SEQ_HALTON`,
+/// all `dims` of them written): points `first, first + 1, …` into `out[0..len]`, point-major,
+/// and their number to `*written`; the same values and errors, linking no radical-inverse
+/// table (as [`nyq_halton_sample`]).
+///
+/// # Errors
+/// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_ZERO_SIZE` if `len == 0` or `dims == 0`;
+/// `NYQ_ERR_OUT_OF_RANGE` if `dims > 1024`; `NYQ_ERR_BUFFER` if `len` is not a multiple of
+/// `dims` or `out` is misaligned; `NYQ_ERR_TOO_MANY` if the points run past `u64::MAX`. On
+/// error `out` is unspecified.
+///
+/// # Safety
+/// `out` is null or valid for writing `len` floats; `written` is null or valid for writing one
+/// `uint64_t`.
+///
+/// ```
+/// use nyquist_capi::{NyqStatus, nyq_halton_fill};
+/// let (mut pts, mut n) = ([0.0f32; 6], 0u64);
+/// // SAFETY: valid pointers, `pts` holds 6 floats.
+/// assert_eq!(unsafe { nyq_halton_fill(1, 2, pts.as_mut_ptr(), 6, &mut n) }, NyqStatus::NYQ_OK);
+/// assert_eq!((n, pts), (3, [0.5, 1.0 / 3.0, 0.25, 2.0 / 3.0, 0.75, 1.0 / 9.0]));
+/// ```
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn nyq_halton_fill(
+    first: u64,
+    dims: u32,
+    out: *mut f32,
+    len: usize,
+    written: *mut u64,
+) -> NyqStatus {
+    run(|| {
+        need(written)?;
+        // SAFETY: `out` is null or writable for `len` floats (caller).
+        let out = unsafe { slice_mut(out, len)? };
+        let n = halton(dims)?.fill(first, dims, out)?;
+        // SAFETY: `written` is writable (caller; null checked above).
+        unsafe { put(written, n) }
     })
 }

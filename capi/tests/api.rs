@@ -220,6 +220,83 @@ proptest! {
         prop_assert_eq!(x, Halton::new(8).unwrap().sample(index, dim));
     }
 
+    /// `nyq_halton_sample` and `nyq_halton_fill` are `nyq_sequence_sample` and
+    /// `nyq_sequence_fill` of `NYQ_SEQ_HALTON`: the same status and, when it is `NYQ_OK`, the
+    /// same bits, for any dimension count, index, dimension and buffer length.
+    #[test]
+    fn halton_functions_are_the_sequence_functions_of_halton(
+        dims in prop_oneof![0u32..10, 0u32..1100],
+        index in prop_oneof![0u64..300, any::<u64>()],
+        dim in prop_oneof![0u32..10, 0u32..1100],
+        len in 0usize..40,
+    ) {
+        let seq = NyqSequence { kind: NyqSequenceKind::NYQ_SEQ_HALTON as u32, dims, points: 0, seed: 0, multiplier: 0 };
+        let (mut x, mut y) = (f32::NAN, f32::NAN);
+        // SAFETY: valid pointers.
+        let (a, b) = unsafe { (nyq_halton_sample(dims, index, dim, &mut x), nyq_sequence_sample(&seq, index, dim, &mut y)) };
+        prop_assert_eq!(a, b);
+        prop_assert_eq!(x.to_bits(), y.to_bits());
+        let (mut p, mut q) = (vec![f32::NAN; len.max(1)], vec![f32::NAN; len.max(1)]);
+        let (mut n, mut m) = (u64::MAX, u64::MAX);
+        // SAFETY: `p` and `q` hold at least `len` floats.
+        let (a, b) = unsafe {
+            (
+                nyq_halton_fill(index, dims, p.as_mut_ptr(), len, &mut n),
+                nyq_sequence_fill(&seq, index, dims, q.as_mut_ptr(), len, &mut m),
+            )
+        };
+        prop_assert_eq!((a, n), (b, m));
+        if a == NyqStatus::NYQ_OK {
+            prop_assert_eq!(p.iter().map(|v| v.to_bits()).collect::<Vec<_>>(), q.iter().map(|v| v.to_bits()).collect::<Vec<_>>());
+        }
+    }
+
+    /// `nyq_sampler_create_owen_sobol` is `nyq_sampler_create("owen-sobol", …)`: the same
+    /// status and, for every call on the handle (and on its clone), the same bits.
+    #[test]
+    fn the_owen_sobol_constructor_is_the_named_sampler(
+        size in (0u32..3, 0u32..3),
+        spp in 0u32..70,
+        seed in any::<u64>(),
+        pixel in (any::<u32>(), any::<u32>()),
+        index in any::<u32>(),
+        dim in prop_oneof![0u32..16, 1000u32..1100, any::<u32>()],
+    ) {
+        let (mut a, mut b): (*mut NyqSampler, *mut NyqSampler) = (ptr::null_mut(), ptr::null_mut());
+        // SAFETY: valid pointers; each handle is destroyed once.
+        unsafe {
+            let sa = nyq_sampler_create_owen_sobol(size.0, size.1, spp, seed, &mut a);
+            let sb = nyq_sampler_create(c"owen-sobol".as_ptr(), size.0, size.1, spp, seed, &mut b);
+            prop_assert_eq!(sa, sb);
+            if sa != NyqStatus::NYQ_OK {
+                prop_assert!(a.is_null() && b.is_null());
+                return Ok(());
+            }
+            let mut c: *mut NyqSampler = ptr::null_mut();
+            prop_assert_eq!(nyq_sampler_clone(a, &mut c), NyqStatus::NYQ_OK);
+            let mut values = Vec::new();
+            for h in [a, b, c] {
+                let mut v = [0.0f32; 19];
+                let mut n = [0u32; 2];
+                nyq_sampler_samples_per_pixel(h, &mut n[0]);
+                nyq_sampler_pixel_samples(h, pixel.0, pixel.1, &mut n[1]);
+                nyq_sampler_start_pixel_sample(h, pixel.0, pixel.1, index, dim);
+                nyq_sampler_get_1d(h, &mut v[0]);
+                nyq_sampler_get_2d(h, v[1..].as_mut_ptr());
+                nyq_sampler_get_pixel_2d(h, v[3..].as_mut_ptr());
+                nyq_sampler_get_array_1d(h, v[5..].as_mut_ptr(), 3);
+                nyq_sampler_get_array_2d(h, v[8..].as_mut_ptr(), 6);
+                let mut cs = NyqCameraSample { p_film: [0.0; 2], lens: [0.0; 2], time: 0.0 };
+                nyq_sampler_camera_sample(h, pixel.0, pixel.1, index, &mut cs);
+                v[14..].copy_from_slice(&[cs.p_film[0], cs.p_film[1], cs.lens[0], cs.lens[1], cs.time]);
+                values.push((n, v.map(f32::to_bits)));
+                nyq_sampler_destroy(h);
+            }
+            prop_assert_eq!(values[0], values[1]);
+            prop_assert_eq!(values[2], values[1]);
+        }
+    }
+
     #[test]
     fn filter_specs_parse_as_the_core_does(
         spec in "(box|tent|triangle|gaussian|mitchell|lanczos|[a-z]{0,5})(:(radius|rx|ry|sigma|alpha|b|c|tau|[a-z]{1,3})=[-0-9.x]{0,4}(,(radius|b|c|tau|sigma)=[0-9.]{0,4}){0,2})?",
@@ -368,6 +445,23 @@ fn null_pointers_are_reported_before_other_errors() {
         );
         assert_eq!(
             nyq_sequence_fill(&bad, 0, 0, ptr::null_mut(), 0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_halton_sample(0, 0, 9, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_halton_fill(0, 0, ptr::null_mut(), 0, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        let mut buf = [0.0f32; 4];
+        assert_eq!(
+            nyq_halton_fill(0, 0, buf.as_mut_ptr(), 4, ptr::null_mut()),
+            NyqStatus::NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_sampler_create_owen_sobol(0, 0, 0, 0, ptr::null_mut()),
             NyqStatus::NYQ_ERR_NULL
         );
         assert_eq!(

@@ -188,6 +188,18 @@ fn sequence_lines(e: &mut Expected) {
         e.floats(&format!("seqfill {kind} 4"), &v);
         e.line(&format!("seqcount {kind} {}", s.point_count().unwrap_or(0)));
     }
+    // The Halton functions (nyq_halton_sample, nyq_halton_fill) against the table path.
+    let h = Halton::new(300).unwrap();
+    for i in [0u64, 13, 4_000_000_000, u64::MAX] {
+        let v: Vec<f32> = (297..300).map(|d| h.sample(i, d)).collect();
+        e.floats(&format!("halton {i}"), &v);
+    }
+    let h = Halton::new(3).unwrap();
+    let v: Vec<f32> = (5..9u64)
+        .flat_map(|i| (0..3).map(move |d| (i, d)))
+        .map(|(i, d)| h.sample(i, d))
+        .collect();
+    e.floats("haltonfill 4", &v);
 }
 
 fn stratify_lines(e: &mut Expected) {
@@ -210,30 +222,39 @@ fn sampler(name: &str, seed: u64) -> NamedSampler {
     NamedSampler::new(name, [16, 16], 16, seed).unwrap()
 }
 
+/// The lines `sampler_values` prints for the named sampler `name` under `label`.
+fn sampler_value_lines(e: &mut Expected, label: &str, name: &str, seed: u64) {
+    let mut s = sampler(name, seed);
+    s.start_pixel_sample([3, 5], 2, 0);
+    let p = s.get_pixel_2d();
+    let t = s.get_1d();
+    let uv = s.get_2d();
+    e.floats(
+        &format!("sampler {label} {seed} {}", s.samples_per_pixel()),
+        &[p[0], p[1], t, uv[0], uv[1]],
+    );
+    let mut c = sampler(name, seed);
+    c.start_pixel_sample([9, 2], 11, 6);
+    let mut v = [0.0f32; 8];
+    c.get_array_1d(&mut v[..4]);
+    c.get_array_2d(&mut v[4..]);
+    e.floats(&format!("arrays {label} {seed}"), &v);
+    let cs = camera_sample(&mut s, [7, 1], 3);
+    e.floats(
+        &format!("camera {label} {seed}"),
+        &[cs.p_film[0], cs.p_film[1], cs.lens[0], cs.lens[1], cs.time],
+    );
+}
+
 fn sampler_lines(e: &mut Expected) {
     for name in NAMES {
         for seed in [0u64, 7] {
-            let mut s = sampler(name, seed);
-            s.start_pixel_sample([3, 5], 2, 0);
-            let p = s.get_pixel_2d();
-            let t = s.get_1d();
-            let uv = s.get_2d();
-            e.floats(
-                &format!("sampler {name} {seed} {}", s.samples_per_pixel()),
-                &[p[0], p[1], t, uv[0], uv[1]],
-            );
-            let mut c = sampler(name, seed);
-            c.start_pixel_sample([9, 2], 11, 6);
-            let mut v = [0.0f32; 8];
-            c.get_array_1d(&mut v[..4]);
-            c.get_array_2d(&mut v[4..]);
-            e.floats(&format!("arrays {name} {seed}"), &v);
-            let cs = camera_sample(&mut s, [7, 1], 3);
-            e.floats(
-                &format!("camera {name} {seed}"),
-                &[cs.p_film[0], cs.p_film[1], cs.lens[0], cs.lens[1], cs.time],
-            );
+            sampler_value_lines(e, name, name, seed);
         }
+    }
+    // nyq_sampler_create_owen_sobol gives the named sampler's values.
+    for seed in [0u64, 7] {
+        sampler_value_lines(e, "owen-sobol-by-kind", "owen-sobol", seed);
     }
 }
 

@@ -19,6 +19,9 @@
 //! | [`Sobol<N>`] | about 200 bytes + 128 bytes per dimension | 32 masked XORs |
 //! | [`OwenSobol<N>`] | about 650 bytes + 128 bytes per dimension | 32 masked XORs, two hashes |
 //!
+//! [`RuntimeHalton`] is Halton's twin for a dimension count chosen at run time: it stores no
+//! per-base constants and computes the one a value needs from its base.
+//!
 //! The pixel samplers that read those tables have compact twins here too, each returning the
 //! desktop sampler's bits through the same [`Sampler`](crate::sampler::Sampler) trait and
 //! constructors: [`OwenSobolSampler<N>`], [`ZSobolSampler`], [`SobolSampler<N>`],
@@ -36,10 +39,11 @@
 //! [`sequence::Sobol`]: crate::sequence::Sobol
 //! [`sequence::OwenSobol`]: crate::sequence::OwenSobol
 
+use crate::Error;
 use crate::hash::{hash2, mix32};
 use crate::math::TWO_POW_MINUS_32;
 use crate::math::{ONE_MINUS_EPSILON, fraction_to_f32};
-use crate::radical::{fast_class, fast_limit, phi2, radical_inverse_f64};
+use crate::radical::{PRIMES, fast_class, fast_limit, phi2, radical_inverse_f64};
 use crate::scramble::lk_hash;
 use crate::sequence::{IndexShuffle, Sequence, dim_seed, sobol_product};
 
@@ -305,6 +309,85 @@ impl<const N: usize> Sequence for Halton<N> {
     /// As [`sequence::Halton`](crate::sequence::Halton)'s (the table path, in `f64`).
     fn sample_f64(&self, index: u64, dim: u32) -> f64 {
         radical_inverse_f64(wrap::<N>(dim) as u32, index)
+    }
+}
+
+/// The Halton sequence in `dims` dimensions chosen at run time (1 ..= 1024) with no per-base
+/// constants stored: bit for bit what [`sequence::Halton`](crate::sequence::Halton)`::new(dims)`
+/// returns in `f32`, for every `u64` index and dimension (`dim >= dims` wraps modulo `dims`).
+///
+/// Where [`Halton<N>`] stores each base's constants (about 100 bytes per dimension), this type
+/// computes the one it needs for each value from the base (a few dozen integer operations and
+/// one `f64` division more per value), so a program carries the 4 KB prime table and the code
+/// only, whatever `dims` is. For programs that pick the dimension count at run time and count
+/// their bytes (the C library's `nyq_halton_sample`). Allocates: no.
+///
+/// ```
+/// use nyquist::compact::RuntimeHalton;
+/// use nyquist::sequence::{self, Sequence};
+/// let h = RuntimeHalton::new(300).unwrap();
+/// let table = sequence::Halton::new(300).unwrap();
+/// for i in [0, 5, 123_456_789, u64::MAX] {
+///     assert_eq!(h.sample(i, 299).to_bits(), table.sample(i, 299).to_bits());
+/// }
+/// assert!(RuntimeHalton::new(1025).is_err());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RuntimeHalton {
+    dims: u32,
+}
+
+impl RuntimeHalton {
+    /// The sequence in `dims` dimensions.
+    ///
+    /// # Errors
+    /// As [`sequence::Halton::new`](crate::sequence::Halton::new): [`Error::ZeroSize`] for 0,
+    /// [`Error::NotInRange`] above 1024.
+    ///
+    /// ```
+    /// use nyquist::{compact::RuntimeHalton, sequence::Sequence};
+    /// assert_eq!(RuntimeHalton::new(3).unwrap().sample(1, 2), 0.2);
+    /// assert!(RuntimeHalton::new(0).is_err());
+    /// ```
+    pub fn new(dims: u32) -> Result<Self, Error> {
+        Ok(RuntimeHalton {
+            dims: crate::sequence::Halton::new(dims)?.dims(),
+        })
+    }
+}
+
+impl Sequence for RuntimeHalton {
+    fn dims(&self) -> u32 {
+        self.dims
+    }
+
+    fn point_count(&self) -> Option<u64> {
+        None
+    }
+
+    #[inline]
+    fn sample(&self, index: u64, dim: u32) -> f32 {
+        let d = (dim % self.dims) as usize;
+        if d == 0 {
+            return phi2(index);
+        }
+        let b = PRIMES[d];
+        if index < fast_limit(d) {
+            // As `Halton<N>`, with the class's constants computed here.
+            let class = (64 - index.leading_zeros()).div_ceil(4) as usize;
+            if class == 0 {
+                return 0.0;
+            }
+            let (digits, inv) = fast_class(d, class);
+            return phi_short(b, digits, inv, index as u32);
+        }
+        phi_long(b, index)
+    }
+
+    /// As [`sequence::Halton`](crate::sequence::Halton)'s (the table path, in `f64`, which
+    /// links the exact path's tables).
+    fn sample_f64(&self, index: u64, dim: u32) -> f64 {
+        radical_inverse_f64(dim % self.dims, index)
     }
 }
 

@@ -123,6 +123,21 @@ static void sequences(void) {
         CHECK(nyq_sequence_point_count(q, &n));
         printf("seqcount %" PRIu32 " %" PRIu64 "\n", q->kind, n);
     }
+    /* The Halton functions: the last three of 300 dimensions, and four points of three. */
+    static const uint64_t far[] = {0, 13, 4000000000u, UINT64_MAX};
+    for (size_t i = 0; i < 4; i++) {
+        float v[3];
+        for (uint32_t d = 0; d < 3; d++) {
+            CHECK(nyq_halton_sample(300, far[i], 297 + d, &v[d]));
+        }
+        printf("halton %" PRIu64, far[i]);
+        put_floats(v, 3);
+    }
+    float hb[12];
+    uint64_t hn = 0;
+    CHECK(nyq_halton_fill(5, 3, hb, 12, &hn));
+    printf("haltonfill %" PRIu64, hn);
+    put_floats(hb, 12);
 }
 
 /* ---- stratify -------------------------------------------------------------------------- */
@@ -152,6 +167,33 @@ static void stratify(void) {
 
 /* ---- samplers -------------------------------------------------------------------------- */
 
+/* Prints what sampler `s` gives (under `label`, `seed`) and destroys it. */
+static void sampler_values(const char *label, uint64_t seed, NyqSampler *s) {
+    uint32_t spp = 0;
+    CHECK(nyq_sampler_samples_per_pixel(s, &spp));
+    float v[8];
+    CHECK(nyq_sampler_start_pixel_sample(s, 3, 5, 2, 0));
+    CHECK(nyq_sampler_get_pixel_2d(s, &v[0]));
+    CHECK(nyq_sampler_get_1d(s, &v[2]));
+    CHECK(nyq_sampler_get_2d(s, &v[3]));
+    printf("sampler %s %" PRIu64 " %" PRIu32, label, seed, spp);
+    put_floats(v, 5);
+    NyqSampler *c = NULL;
+    CHECK(nyq_sampler_clone(s, &c));
+    CHECK(nyq_sampler_start_pixel_sample(c, 9, 2, 11, 6));
+    CHECK(nyq_sampler_get_array_1d(c, &v[0], 4));
+    CHECK(nyq_sampler_get_array_2d(c, &v[4], 4));
+    printf("arrays %s %" PRIu64, label, seed);
+    put_floats(v, 8);
+    NyqCameraSample cs;
+    CHECK(nyq_sampler_camera_sample(s, 7, 1, 3, &cs));
+    printf("camera %s %" PRIu64, label, seed);
+    float cv[5] = {cs.p_film[0], cs.p_film[1], cs.lens[0], cs.lens[1], cs.time};
+    put_floats(cv, 5);
+    nyq_sampler_destroy(c);
+    nyq_sampler_destroy(s);
+}
+
 static void samplers(void) {
     static const char *names[] = {"random",     "uniform",  "stratified",
                                   "halton",     "hammersley", "zero-two",
@@ -164,30 +206,14 @@ static void samplers(void) {
         for (size_t j = 0; j < 2; j++) {
             NyqSampler *s = NULL;
             CHECK(nyq_sampler_create(names[k], 16, 16, 16, seeds[j], &s));
-            uint32_t spp = 0;
-            CHECK(nyq_sampler_samples_per_pixel(s, &spp));
-            float v[8];
-            CHECK(nyq_sampler_start_pixel_sample(s, 3, 5, 2, 0));
-            CHECK(nyq_sampler_get_pixel_2d(s, &v[0]));
-            CHECK(nyq_sampler_get_1d(s, &v[2]));
-            CHECK(nyq_sampler_get_2d(s, &v[3]));
-            printf("sampler %s %" PRIu64 " %" PRIu32, names[k], seeds[j], spp);
-            put_floats(v, 5);
-            NyqSampler *c = NULL;
-            CHECK(nyq_sampler_clone(s, &c));
-            CHECK(nyq_sampler_start_pixel_sample(c, 9, 2, 11, 6));
-            CHECK(nyq_sampler_get_array_1d(c, &v[0], 4));
-            CHECK(nyq_sampler_get_array_2d(c, &v[4], 4));
-            printf("arrays %s %" PRIu64, names[k], seeds[j]);
-            put_floats(v, 8);
-            NyqCameraSample cs;
-            CHECK(nyq_sampler_camera_sample(s, 7, 1, 3, &cs));
-            printf("camera %s %" PRIu64, names[k], seeds[j]);
-            float cv[5] = {cs.p_film[0], cs.p_film[1], cs.lens[0], cs.lens[1], cs.time};
-            put_floats(cv, 5);
-            nyq_sampler_destroy(c);
-            nyq_sampler_destroy(s);
+            sampler_values(names[k], seeds[j], s);
         }
+    }
+    /* The per-kind constructor, which must give the named sampler's values. */
+    for (size_t j = 0; j < 2; j++) {
+        NyqSampler *s = NULL;
+        CHECK(nyq_sampler_create_owen_sobol(16, 16, 16, seeds[j], &s));
+        sampler_values("owen-sobol-by-kind", seeds[j], s);
     }
 }
 

@@ -42,6 +42,45 @@ fn halton_equals_the_table_path_in_every_dimension() {
     }
 }
 
+#[test]
+fn runtime_halton_equals_the_table_path_in_every_dimension() {
+    let h = RuntimeHalton::new(1024).unwrap();
+    for d in 0..1024u32 {
+        for i in indices(d as usize) {
+            assert_eq!(
+                h.sample(i, d).to_bits(),
+                radical_inverse(d, i).to_bits(),
+                "dim {d} index {i}"
+            );
+        }
+    }
+    // Dimensions past `dims` wrap modulo `dims`, as the table path's Halton does.
+    let (small, table) = (
+        RuntimeHalton::new(5).unwrap(),
+        sequence::Halton::new(5).unwrap(),
+    );
+    for (i, d) in [(7u64, 5u32), (123_456, 13), (u64::MAX, 1029)] {
+        assert_eq!(small.sample(i, d).to_bits(), table.sample(i, d).to_bits());
+        assert_eq!(
+            small.sample_f64(i, d).to_bits(),
+            table.sample_f64(i, d).to_bits()
+        );
+    }
+    assert_eq!(small.dims(), 5);
+    assert_eq!(small.point_count(), None);
+}
+
+#[test]
+fn runtime_halton_takes_the_table_paths_dimension_counts() {
+    for dims in [0, 1, 2, 1024, 1025, u32::MAX] {
+        assert_eq!(
+            RuntimeHalton::new(dims).map(|h| h.dims()),
+            sequence::Halton::new(dims).map(|h| h.dims()),
+            "dims {dims}"
+        );
+    }
+}
+
 /// Base 3 at index 524 199 899 (`R' = 2 411 218 785` over 20 digits, just below an `f32`
 /// midpoint; found with exact rationals): the fast path's two roundings (`R'·inv` to `f64`, then
 /// to `f32`) land one `f32` above the correctly rounded `0x3f31_0829`, within the documented
