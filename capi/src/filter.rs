@@ -196,9 +196,9 @@ impl NyqFilter {
 }
 
 /// Creates a built-in filter from a spec `name[:key=value,…]` and writes the handle to `*out`.
-/// Names `box` (`boxcar`), `triangle` (`tent`), `gaussian`, `mitchell`, `lanczos`; keys
-/// `radius`, `rx`, `ry` (all), `alpha` or `sigma` (gaussian), `b`, `c` (mitchell), `tau`
-/// (lanczos); e.g. `"mitchell:b=0.5,c=0.25"`: the core's
+/// Names `box` (`boxcar`), `triangle` (`tent`), `gaussian`, `mitchell`, `catmull-rom`,
+/// `blackman-harris`, `lanczos`; keys `radius`, `rx`, `ry` (all), `alpha` or `sigma` (gaussian),
+/// `b`, `c` (mitchell), `tau` (lanczos); e.g. `"mitchell:b=0.5,c=0.25"`: the core's
 /// [`FilterKind::parse`](nyquist::filter::FilterKind::parse).
 ///
 /// # Errors
@@ -245,7 +245,9 @@ pub unsafe extern "C" fn nyq_filter_create(
 ///
 /// # Errors
 /// `NYQ_ERR_NULL` if `eval` or `out` is null; `NYQ_ERR_NON_FINITE` if a radius is NaN or
-/// infinite; `NYQ_ERR_OUT_OF_RANGE` if a radius is outside `[2⁻¹⁶, 1024]`.
+/// infinite, or the callback's integral is not finite (it answers NaN or ∞);
+/// `NYQ_ERR_OUT_OF_RANGE` if a radius is outside `[2⁻¹⁶, 1024]`, or the integral is 0, negative
+/// or below `1e-12` (every sample would weigh almost nothing).
 ///
 /// # Safety
 /// `eval` is null or a function that may be called, on this thread and during this call, with
