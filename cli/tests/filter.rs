@@ -93,3 +93,38 @@ fn bad_specs_are_one_line_errors_naming_the_flag() {
         "--grid",
     );
 }
+
+#[test]
+fn blackman_harris_and_catmull_rom_print_their_values_and_plot() {
+    // Blackman–Harris at the centre is a₀ + a₁ + a₂ + a₃ = 1 per axis; at (±r, 0) it is
+    // a₀ − a₁ + a₂ − a₃ = 6·10⁻⁵; its integral (3·a₀)² at radius 1.5.
+    let o = nyquist(&["filter", "--filter", "blackman-harris", "--grid", "3"]);
+    assert!(o.status.success());
+    let rows: Vec<Vec<f64>> = stdout(&o)
+        .lines()
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert!((rows[4][2] - 1.0).abs() < 1e-6, "{rows:?}");
+    assert!((rows[3][2] - 6e-5).abs() < 1e-6, "{rows:?}");
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(err, "radius 1.5 1.5\nintegral 1.1583141\n");
+    // Catmull–Rom interpolates: 1 at the centre, 0 at the other integers; integral 1.
+    let o = nyquist(&["filter", "--filter", "catmull-rom", "--grid", "5"]);
+    let rows: Vec<Vec<f64>> = stdout(&o)
+        .lines()
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows[12], [0.0, 0.0, 1.0]);
+    assert_eq!(rows[13], [1.0, 0.0, 0.0]);
+    assert_eq!(
+        String::from_utf8_lossy(&o.stderr),
+        "radius 2 2\nintegral 1\n"
+    );
+    let dir = temp_dir("new-filters");
+    for spec in ["blackman-harris", "catmull-rom"] {
+        let png = dir.join(format!("{spec}.png"));
+        let o = nyquist(&["filter", "--filter", spec, "--plot", png.to_str().unwrap()]);
+        assert!(o.status.success(), "{spec}");
+        assert!(common::png_size(&png).0 > 0, "{spec}");
+    }
+}
