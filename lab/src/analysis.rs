@@ -825,7 +825,7 @@ fn measure(
     let announced = quadratic
         && announce(
             host,
-            &format!("--measures {}", m.name()),
+            (&format!("--measures {}", m.name()), m.name()),
             &format!(
                 "{} in {}, d·N² = {:.1e} terms",
                 crate::words::count(set.len() as u64, "point"),
@@ -906,9 +906,15 @@ fn measure(
 
 /// Announces long work before it starts: when `seconds`, the estimate, passes
 /// [`ANNOUNCE_SECONDS`], one warning line `FLAGS: WHAT: about DURATION; SMALLER` and a progress
-/// bar shown at once (one unit: the measure). Returns whether it did, so that the caller ends the
-/// bar.
-fn announce(host: &mut dyn Host, flags: &str, what: &str, seconds: f64, smaller: &str) -> bool {
+/// bar named after the measure, shown at once (one unit: the measure). Returns whether it did,
+/// so that the caller ends the bar.
+fn announce(
+    host: &mut dyn Host,
+    (flags, measure): (&str, &str),
+    what: &str,
+    seconds: f64,
+    smaller: &str,
+) -> bool {
     if !(seconds > ANNOUNCE_SECONDS) {
         return false;
     }
@@ -916,7 +922,7 @@ fn announce(host: &mut dyn Host, flags: &str, what: &str, seconds: f64, smaller:
         "{flags}: {what}: about {} of work; {smaller}",
         duration(seconds)
     ));
-    host.progress_start(1, flags.trim_start_matches("--measures "), "measures", true);
+    host.progress_start(1, measure, "measures", true);
     true
 }
 
@@ -980,7 +986,7 @@ fn star(args: &AnalyzeSpec, set: &PointSet<'_>, host: &mut dyn Host) -> Result<R
     let announced = sweeps
         && announce(
             host,
-            "--measures star",
+            ("--measures star", "star"),
             &format!(
                 "exact 2D sweep of {}, N² = {:.1e} steps",
                 crate::words::count(n as u64, "point"),

@@ -208,11 +208,19 @@ pub fn parse_size(s: &str) -> Result<[u32; 2], String> {
 
 /// Parses a filter spec, the error listing the filters and keys.
 pub fn parse_filter(s: &str) -> Result<FilterKind, String> {
-    FilterKind::parse(s).map_err(|e| {
-        format!(
-            "{e} (filters: {}; e.g. mitchell:b=0.5,c=0.25)",
-            nyquist::filter::FILTER_NAMES.join(", ")
-        )
+    FilterKind::parse(s).map_err(|e| match e {
+        // That message lists the names already.
+        nyquist::filter::SpecError::UnknownFilter { .. } => e.to_string(),
+        _ => {
+            let mut names = String::new();
+            for n in nyquist::filter::FILTER_NAMES {
+                if !names.is_empty() {
+                    names.push_str(", ");
+                }
+                names.push_str(n);
+            }
+            format!("{e} (filters: {names}; e.g. mitchell:b=0.5,c=0.25)")
+        }
     })
 }
 
