@@ -3,10 +3,10 @@
 //! ([`write_png_pixels`]).
 //!
 //! The compression depends on the size of the pixel data: up to [`FAST_DEFLATE_ABOVE`] bytes
-//! (4 MiB: a 1024 × 1024 RGB image, every plot) it is deflate level 6, above it level 1, about
-//! ten times faster on a noisy render for about 5 % more bytes (figures: `docs/performance.md`,
-//! "PNG output"). Every row takes the `png` crate's adaptive filter. The bytes are
-//! deterministic.
+//! (4 MiB: a 1024 × 1024 RGB image, every plot) deflate level 2, above it level 1; every row
+//! takes the `png` crate's adaptive filter. Against level 6, the `png` crate's default, a
+//! 4096 × 4096 render encodes about ten times faster for about 5 % more bytes (figures:
+//! `docs/performance.md`, "PNG output"). The bytes are deterministic.
 
 use crate::error::Error;
 use crate::image::Image;
@@ -209,13 +209,14 @@ impl PngLayout {
     }
 }
 
-/// Pixel data of more bytes than this is deflated at level 1, else at level 6.
+/// Pixel data of more bytes than this is deflated at level 1, else at level 2.
 ///
-/// On a noisy render (one sample per pixel) level 6 costs about 95 ns per byte of pixel data on
-/// the machine of `docs/performance.md` and level 1 about a tenth of that, for 5 % more bytes;
-/// plots (flat colours, lines, text) encode several times faster at either level, and there
-/// level 1's files are 7 % to 38 % larger. Up to this size level 6 takes at most about 0.4 s;
-/// above it level 1 keeps the encoding a small part of a render's time.
+/// Level 2 gives files within a few per cent of level 6's (the `png` crate's default) at a
+/// fifth of its time or less on a noisy render; level 1 halves level 2's time again on such an
+/// image for about 1 % more bytes, but makes plots (flat colours, lines, text) 15 % to 30 %
+/// larger than level 2 does. Up to this size (a 1024 × 1024 RGB image, every plot) level 2 costs
+/// well under 0.1 s; above it the time is what matters, so level 1. Figures:
+/// `docs/performance.md`, "PNG output".
 ///
 /// ```
 /// use nyquist_film::output::png::{FAST_DEFLATE_ABOVE, PngColor, PngLayout};
@@ -224,7 +225,7 @@ impl PngLayout {
 /// ```
 pub const FAST_DEFLATE_ABOVE: usize = 4 << 20;
 
-/// Writes `data`, laid out as `layout` says, as a PNG: deflate level 6 up to
+/// Writes `data`, laid out as `layout` says, as a PNG: deflate level 2 up to
 /// [`FAST_DEFLATE_ABOVE`] bytes of data, level 1 above, the adaptive row filter. The one PNG
 /// encoder of the workspace: [`write_png`], the command line's masks and error images, and the
 /// laboratory's plots all go through it.
@@ -255,9 +256,9 @@ pub fn write_png_pixels(w: &mut dyn Write, layout: &PngLayout, data: &[u8]) -> R
     encode(w, layout, data, deflate_level(data.len()))
 }
 
-/// The deflate level of `bytes` bytes of pixel data: 6 up to [`FAST_DEFLATE_ABOVE`], else 1.
+/// The deflate level of `bytes` bytes of pixel data: 2 up to [`FAST_DEFLATE_ABOVE`], else 1.
 fn deflate_level(bytes: usize) -> u8 {
-    if bytes > FAST_DEFLATE_ABOVE { 1 } else { 6 }
+    if bytes > FAST_DEFLATE_ABOVE { 1 } else { 2 }
 }
 
 /// The encoder of [`write_png_pixels`] at a given deflate level; `data` has the layout's size.
@@ -397,9 +398,9 @@ mod tests {
     }
 
     #[test]
-    fn the_deflate_level_is_6_up_to_the_limit_and_1_above() {
-        assert_eq!(deflate_level(0), 6);
-        assert_eq!(deflate_level(FAST_DEFLATE_ABOVE), 6);
+    fn the_deflate_level_is_2_up_to_the_limit_and_1_above() {
+        assert_eq!(deflate_level(0), 2);
+        assert_eq!(deflate_level(FAST_DEFLATE_ABOVE), 2);
         assert_eq!(deflate_level(FAST_DEFLATE_ABOVE + 1), 1);
         assert_eq!(deflate_level(usize::MAX), 1);
     }
@@ -428,7 +429,7 @@ mod tests {
             buf
         };
         let mut by_level = Vec::new();
-        for level in [1, 6] {
+        for level in [1, 2] {
             let mut out = Vec::new();
             encode(&mut out, &layout, &data, level).unwrap();
             assert_eq!(decode(&out), data, "level {level}");
