@@ -83,14 +83,16 @@ const BUCKET_SHIFT: u32 = 16;
 const BUCKETS: usize = (0x3F80_0000 >> BUCKET_SHIFT) as usize;
 
 /// The 8-bit sRGB code without `powf`. The code is a non-decreasing function of the linear
-/// value, so it is the number of thresholds at or below the value; a bucket of the value's bit
-/// pattern gives the code at the bucket's start, and the few thresholds inside the bucket are
-/// then compared.
+/// value, so it is the number of thresholds at or below the value. The bucket of the value's
+/// bit pattern gives the code at the bucket's start; no bucket holds more than one threshold
+/// above its start (checked when the table is built), so one comparison with the next
+/// threshold finishes the code, without a branch.
 struct SrgbTable {
     /// The code of each bucket's smallest float.
     start: [u8; BUCKETS],
-    /// `threshold[b]` (`b ≥ 1`): the smallest float whose code is `b` or more.
-    threshold: [f32; 256],
+    /// `threshold[b]` (`1 ≤ b ≤ 255`): the smallest float whose code is `b` or more;
+    /// `threshold[256]` is infinite.
+    threshold: [f32; 257],
 }
 
 impl SrgbTable {
@@ -99,7 +101,7 @@ impl SrgbTable {
         TABLE.get_or_init(|| {
             let mut t = Box::new(SrgbTable {
                 start: [0; BUCKETS],
-                threshold: [0.0; 256],
+                threshold: [f32::INFINITY; 257],
             });
             for b in 1..=255u8 {
                 // Bisection over the bit patterns of [0, 1], which order as the values do:
@@ -118,6 +120,11 @@ impl SrgbTable {
             for (i, s) in t.start.iter_mut().enumerate() {
                 *s = srgb_code_formula(f32::from_bits((i as u32) << BUCKET_SHIFT));
             }
+            for i in 0..BUCKETS {
+                // The code two above the bucket's start begins in a later bucket.
+                let two_up = usize::from(t.start[i]) + 2;
+                assert!(two_up > 256 || t.threshold[two_up].to_bits() >> BUCKET_SHIFT > i as u32);
+            }
             t
         })
     }
@@ -130,11 +137,8 @@ impl SrgbTable {
         if !(x < 1.0) {
             return 255;
         }
-        let mut b = self.start[(x.to_bits() >> BUCKET_SHIFT) as usize];
-        while b < 255 && x >= self.threshold[usize::from(b) + 1] {
-            b += 1;
-        }
-        b
+        let b = self.start[(x.to_bits() >> BUCKET_SHIFT) as usize];
+        b + u8::from(x >= self.threshold[usize::from(b) + 1])
     }
 }
 
@@ -345,7 +349,7 @@ mod tests {
         let one = 1.0f32.to_bits();
         let mut checked = 0u64;
         let starts = (0..BUCKETS as u32).map(|i| i << BUCKET_SHIFT);
-        let thresholds = t.threshold[1..].iter().map(|x| (x.to_bits(), 1024));
+        let thresholds = t.threshold[1..256].iter().map(|x| (x.to_bits(), 1024));
         for (centre, reach) in thresholds.chain(starts.map(|s| (s, 16))) {
             for bits in centre.saturating_sub(reach)..=(centre + reach).min(one) {
                 check(bits);
@@ -357,6 +361,7 @@ mod tests {
         }
         assert!(checked > 255 * 2000 + (BUCKETS as u64 - 1) * 33);
         // The thresholds are where the formula's code steps up by one.
+        assert_eq!(t.threshold[256], f32::INFINITY);
         for b in 1..=255usize {
             let at = t.threshold[b];
             let below = f32::from_bits(at.to_bits() - 1);
