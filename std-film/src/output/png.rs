@@ -4,9 +4,10 @@
 //!
 //! The compression depends on the size of the pixel data: up to [`FAST_DEFLATE_ABOVE`] bytes
 //! (4 MiB: a 1024 × 1024 RGB image, every plot) deflate level 2, above it level 1; every row
-//! takes the `png` crate's adaptive filter. Against level 6, the `png` crate's default, a
-//! 4096 × 4096 render encodes about ten times faster for about 5 % more bytes (figures:
-//! `docs/performance.md`, "PNG output"). The bytes are deterministic.
+//! takes the `png` crate's adaptive filter. With the sRGB codes from a table, [`write_png`]
+//! writes a 4096 × 4096 render about ten times faster than `powf` codes and level 6 (the `png`
+//! crate's default) would, for about 5 % more bytes (figures: `docs/performance.md`, "PNG
+//! output"). The bytes are deterministic.
 
 use crate::error::Error;
 use crate::image::Image;
@@ -215,12 +216,12 @@ impl PngLayout {
 
 /// Pixel data of more bytes than this is deflated at level 1, else at level 2.
 ///
-/// Level 2 gives files within a few per cent of level 6's (the `png` crate's default) at a
-/// fifth of its time or less on a noisy render; level 1 halves level 2's time again on such an
-/// image for about 1 % more bytes, but makes plots (flat colours, lines, text) 15 % to 30 %
-/// larger than level 2 does. Up to this size (a 1024 × 1024 RGB image, every plot) level 2 costs
-/// well under 0.1 s; above it the time is what matters, so level 1. Figures:
-/// `docs/performance.md`, "PNG output".
+/// Level 2 gives files within 7 % of level 6's (the `png` crate's default) in a sixth of its
+/// time or less on a noisy render; level 1 takes about two thirds of level 2's time on such an
+/// image for about 1 % more bytes, but makes plots (flat colours, lines, text) up to 30 % larger
+/// than level 2 does. Up to this size (a 1024 × 1024 RGB image, every plot) level 2 costs well
+/// under 0.1 s; above it the time is what matters, so level 1. Figures: `docs/performance.md`,
+/// "PNG output".
 ///
 /// ```
 /// use nyquist_film::output::png::{FAST_DEFLATE_ABOVE, PngColor, PngLayout};
