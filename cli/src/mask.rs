@@ -5,6 +5,7 @@ use crate::output::{check_output, write_atomic, write_output};
 use anyhow::{Context, Result, bail};
 use clap::Args;
 use nyquist::bluenoise::{VoidAndCluster, rank_to_value};
+use nyquist_film::output::png::{PngColor, PngDepth, PngLayout, write_png_pixels};
 use std::path::{Path, PathBuf};
 
 /// The largest side of a mask.
@@ -174,25 +175,21 @@ fn write_png(path: &Path, ranks: &[u32], args: &MaskArgs, n: usize) -> Result<()
             }
         }
     }
-    write_atomic(path, |out| {
-        let mut enc = png::Encoder::new(out, w, h);
-        enc.set_color(match channels {
-            1 => png::ColorType::Grayscale,
-            2 => png::ColorType::GrayscaleAlpha,
-            3 => png::ColorType::Rgb,
-            _ => png::ColorType::Rgba,
-        });
-        enc.set_depth(if bits == 8 {
-            png::BitDepth::Eight
+    let color = match channels {
+        1 => PngColor::Grey,
+        2 => PngColor::GreyAlpha,
+        3 => PngColor::Rgb,
+        _ => PngColor::Rgba,
+    };
+    let layout = PngLayout {
+        depth: if bits == 8 {
+            PngDepth::Eight
         } else {
-            png::BitDepth::Sixteen
-        });
-        enc.set_compression(png::Compression::High);
-        let mut writer = enc.write_header().context("PNG header")?;
-        writer.write_image_data(&data).context("PNG data")?;
-        writer.finish().context("PNG end")?;
-        Ok(())
-    })
+            PngDepth::Sixteen
+        },
+        ..PngLayout::new(w, h, color)
+    };
+    write_atomic(path, |out| Ok(write_png_pixels(out, &layout, &data)?))
 }
 
 fn write_exr(path: &Path, ranks: &[u32], args: &MaskArgs, n: usize) -> Result<()> {
@@ -270,13 +267,8 @@ fn write_spectrum(path: &Path, ranks: &[u32], w: usize, h: usize) -> Result<()> 
             (((db + 40.0) / 40.0).clamp(0.0, 1.0) * 255.0).round() as u8
         })
         .collect();
+    let layout = PngLayout::new(w as u32, h as u32, PngColor::Grey);
     write_output(path, "--spectrum", |out| {
-        let mut enc = png::Encoder::new(out, w as u32, h as u32);
-        enc.set_color(png::ColorType::Grayscale);
-        enc.set_depth(png::BitDepth::Eight);
-        let mut writer = enc.write_header().context("PNG header")?;
-        writer.write_image_data(&data).context("PNG data")?;
-        writer.finish().context("PNG end")?;
-        Ok(())
+        Ok(write_png_pixels(out, &layout, &data)?)
     })
 }

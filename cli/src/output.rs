@@ -67,16 +67,10 @@ pub fn is_broken_pipe(e: &anyhow::Error) -> bool {
     io_error(e).is_some_and(|io| io.kind() == ErrorKind::BrokenPipe)
 }
 
-/// The first I/O error `e` wraps, if any (also inside the PNG encoder's error, which does not
-/// report it as its source).
+/// The first I/O error `e` wraps, if any (the PNG writer reports its stream's failure as
+/// `nyquist_film::Error::Io`, whose source is the I/O error).
 fn io_error(e: &anyhow::Error) -> Option<&std::io::Error> {
-    e.chain().find_map(|c| {
-        c.downcast_ref::<std::io::Error>()
-            .or(match c.downcast_ref::<png::EncodingError>() {
-                Some(png::EncodingError::IoError(io)) => Some(io),
-                _ => None,
-            })
-    })
+    e.chain().find_map(|c| c.downcast_ref::<std::io::Error>())
 }
 
 /// The folder `path` goes into (`.` for a bare file name).

@@ -6,6 +6,7 @@ use anyhow::{Context, Result, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::Sampler;
+use nyquist_film::output::png::{PngColor, PngLayout, write_png_pixels};
 use nyquist_film::{Image, ImageFormat};
 use nyquist_lab::scene::Scene;
 use std::fmt::Write as _;
@@ -164,14 +165,9 @@ fn write_error_png(path: &Path, image: &Image, reference: &[f64]) -> Result<()> 
             (g.clamp(0.0, 1.0) * 255.0).round() as u8
         })
         .collect();
-    crate::output::write_output(path, "--error", |w| {
-        let mut enc = png::Encoder::new(w, image.width(), image.height());
-        enc.set_color(png::ColorType::Grayscale);
-        enc.set_depth(png::BitDepth::Eight);
-        let mut writer = enc.write_header().context("PNG header")?;
-        writer.write_image_data(&bytes).context("PNG data")?;
-        writer.finish().context("PNG end")?;
-        Ok(())
+    let layout = PngLayout::new(image.width(), image.height(), PngColor::Grey);
+    crate::output::write_output(path, "--error", |out| {
+        Ok(write_png_pixels(out, &layout, &bytes)?)
     })
 }
 

@@ -9,6 +9,7 @@
 //! output path (the front end writes the file).
 
 use anyhow::{Context, Result};
+use nyquist_film::output::png::{PngColor, PngLayout};
 use plotters::coord::Shift;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
@@ -395,16 +396,8 @@ fn blit(rgb: &mut [u8], w: u32, h: u32, r: &Raster) {
 /// An encoder error.
 pub fn encode_png(rgb: &[u8], w: u32, h: u32) -> Result<Vec<u8>> {
     let mut out = Vec::new();
-    {
-        let mut enc = png::Encoder::new(&mut out, w, h);
-        enc.set_color(png::ColorType::Rgb);
-        enc.set_depth(png::BitDepth::Eight);
-        enc.set_compression(png::Compression::High);
-        enc.set_filter(png::Filter::Paeth);
-        let mut writer = enc.write_header().context("PNG header")?;
-        writer.write_image_data(rgb).context("PNG data")?;
-        writer.finish().context("PNG end")?;
-    }
+    let layout = PngLayout::new(w, h, PngColor::Rgb);
+    nyquist_film::output::png::write_png_pixels(&mut out, &layout, rgb)?;
     Ok(out)
 }
 

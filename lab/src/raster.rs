@@ -2,7 +2,7 @@
 //! discs, image crops and anti-aliased text in the embedded DejaVu Sans (through
 //! [`crate::plot`]), encoded as PNG.
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 
 /// Text size in pixels (plotters' size: the em is `TEXT_PX / 1.24`).
 pub const TEXT_PX: f64 = 14.0;
@@ -132,15 +132,10 @@ impl Canvas {
     /// # Errors
     /// An encoding error.
     pub fn png(&self) -> Result<Vec<u8>> {
+        use nyquist_film::output::png::{PngColor, PngLayout, write_png_pixels};
         let mut out = Vec::new();
-        let mut enc = png::Encoder::new(&mut out, self.width, self.height);
-        enc.set_color(png::ColorType::Rgb);
-        enc.set_depth(png::BitDepth::Eight);
-        enc.set_compression(png::Compression::High);
-        enc.set_filter(png::Filter::Paeth);
-        let mut writer = enc.write_header().context("PNG header")?;
-        writer.write_image_data(&self.rgb).context("PNG data")?;
-        writer.finish().context("PNG end")?;
+        let layout = PngLayout::new(self.width, self.height, PngColor::Rgb);
+        write_png_pixels(&mut out, &layout, &self.rgb)?;
         Ok(out)
     }
 }

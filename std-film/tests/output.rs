@@ -58,6 +58,39 @@ fn png_bytes_are_the_srgb_codes_of_known_linear_values() {
 }
 
 #[test]
+fn a_png_above_the_fast_deflate_limit_decodes_to_the_srgb_codes_of_every_pixel() {
+    use nyquist_film::output::png::{FAST_DEFLATE_ABOVE, linear_to_srgb};
+    // 1184² RGB bytes are just above the 4 MiB limit: deflated at level 1.
+    let side = 1184u32;
+    assert!(3 * (side as usize).pow(2) > FAST_DEFLATE_ABOVE);
+    // Every pixel its own value: a ramp over [-0.1, 1.1] with hashed jitter, and NaN and
+    // infinities on one column.
+    let img = Image::from_fn(side, side, |x, y| {
+        let k = u64::from(y * side + x);
+        let jitter = nyquist::hash::unit_f32(nyquist::hash::hash2(9, k) as u32);
+        let v = -0.1 + 1.2 * (k as f32 + jitter) / (side * side) as f32;
+        match x {
+            0 => [f32::NAN, f32::INFINITY, f32::NEG_INFINITY],
+            _ => [v, v * v, 1.0 - v],
+        }
+    });
+    let mut bytes = Vec::new();
+    write_png(&mut bytes, &img, &PngOptions::default()).unwrap();
+    let (w, h, px) = decode_png(&bytes);
+    assert_eq!((w, h), (side, side));
+    let expected: Vec<u8> = img
+        .data()
+        .iter()
+        .map(|&v| (255.0 * linear_to_srgb(v)).round() as u8)
+        .collect();
+    assert!(
+        px == expected,
+        "decoded codes differ from round(255 · srgb(v))"
+    );
+    assert!(expected.contains(&0) && expected.contains(&255));
+}
+
+#[test]
 fn dithered_png_stays_within_one_code_and_averages_to_the_value() {
     let img = Image::from_fn(64, 64, |_, _| [0.2, 0.2, 0.2]);
     let mut bytes = Vec::new();
