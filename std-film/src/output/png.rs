@@ -404,6 +404,31 @@ mod tests {
     }
 
     #[test]
+    fn srgb_byte_rounds_without_noise_and_floors_with_it() {
+        // 255·srgb(0.5) = 187.52…: rounded 188; with noise u, ⌊187.52 + u⌋.
+        assert_eq!(srgb_byte(0.5, None), 188);
+        assert_eq!(srgb_byte(0.5, Some(0.0)), 187);
+        assert_eq!(srgb_byte(0.5, Some(0.47)), 187);
+        assert_eq!(srgb_byte(0.5, Some(0.49)), 188);
+        assert_eq!(srgb_byte(0.5, Some(0.999)), 188);
+        // 255·srgb(0.2) = 124.0…: the noise decides between 124 and 125.
+        let v = 255.0 * linear_to_srgb(0.2);
+        assert_eq!(srgb_byte(0.2, Some(0.0)), v.floor() as u8);
+        assert_eq!(srgb_byte(0.2, Some(0.999)), (v + 0.999).floor() as u8);
+        // Clamped at both ends; NaN is 0.
+        assert_eq!(srgb_byte(1.0, Some(0.999)), 255);
+        assert_eq!(srgb_byte(2.0, Some(0.5)), 255);
+        assert_eq!(srgb_byte(-1.0, Some(0.999)), 0);
+        assert_eq!(srgb_byte(f32::NAN, Some(0.5)), 0);
+        assert_eq!(srgb_byte(1.0, None), 255);
+        // Without noise, the table's code for every 4099th float of [0, 1].
+        for bits in (0..=1.0f32.to_bits()).step_by(4099) {
+            let x = f32::from_bits(bits);
+            assert_eq!(srgb_byte(x, None), srgb_code_formula(x), "{x:e}");
+        }
+    }
+
+    #[test]
     fn the_deflate_level_is_2_up_to_the_limit_and_1_above() {
         assert_eq!(deflate_level(0), 2);
         assert_eq!(deflate_level(FAST_DEFLATE_ABOVE), 2);
