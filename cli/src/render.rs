@@ -28,7 +28,7 @@ pub fn reference(
     Ok(traced_reference(scene, size, filter, threads)?.map(|(r, _)| r))
 }
 
-/// [`reference`], with where it came from ([`ReferenceSource`]).
+/// [`reference()`], with where it came from ([`ReferenceSource`]).
 pub fn traced_reference(
     scene: Scene,
     size: [u32; 2],

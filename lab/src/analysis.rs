@@ -27,7 +27,7 @@ const DEFAULT_L2_LIMIT: usize = 1 << 16;
 /// Largest set the automatic star method computes exactly in 2D (the sweep is O(N²)).
 const AUTO_EXACT_2D: usize = 1 << 15;
 /// Largest set `--star-method exact` sweeps in 2D: 2¹⁷ points, N² = 2³⁴ steps (about a minute
-/// at [`SWEEP_SECONDS`]); larger sets are refused, as enumeration past [`ENUMERATION_LIMIT`] is.
+/// at the sweep rate below); larger sets are refused, as enumeration past [`ENUMERATION_LIMIT`] is.
 pub const EXACT_2D_LIMIT: usize = 1 << 17;
 /// Seconds per step of the 2D sweep (N² steps), from a release build on a 2-core x86-64 machine
 /// (50 000 points in 8.1 s): the basis of the announcement, not a promise.
