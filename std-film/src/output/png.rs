@@ -107,8 +107,13 @@ impl SrgbTable {
             for b in 1..=255u8 {
                 // Bisection over the bit patterns of [0, 1], which order as the values do:
                 // code(lo) < b ≤ code(hi) throughout.
+                // At most 30 halvings of the 2^30 patterns; the bound keeps a broken split from
+                // looping.
                 let (mut lo, mut hi) = (0u32, 1.0f32.to_bits());
-                while hi - lo > 1 {
+                for _ in 0..32 {
+                    if hi - lo <= 1 {
+                        break;
+                    }
                     let mid = lo + (hi - lo) / 2;
                     if srgb_code_formula(f32::from_bits(mid)) >= b {
                         hi = mid;
