@@ -434,6 +434,85 @@ mod tests {
     }
 
     #[test]
+    fn data_bytes_count_every_channel_and_byte() {
+        let at = |w, h, color, depth| PngLayout {
+            depth,
+            ..PngLayout::new(w, h, color)
+        };
+        assert_eq!(at(3, 2, PngColor::Grey, PngDepth::Eight).data_bytes(), 6);
+        assert_eq!(
+            at(3, 2, PngColor::GreyAlpha, PngDepth::Sixteen).data_bytes(),
+            24
+        );
+        assert_eq!(at(3, 2, PngColor::Rgb, PngDepth::Sixteen).data_bytes(), 36);
+        assert_eq!(at(3, 2, PngColor::Rgba, PngDepth::Sixteen).data_bytes(), 48);
+    }
+
+    /// Decodes a PNG: (width, height, colour type, bit depth, has an sRGB chunk, pixels).
+    fn decode(bytes: &[u8]) -> (u32, u32, ::png::ColorType, ::png::BitDepth, bool, Vec<u8>) {
+        let mut reader = ::png::Decoder::new(std::io::Cursor::new(bytes))
+            .read_info()
+            .unwrap();
+        let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+        let frame = reader.next_frame(&mut pixels).unwrap();
+        pixels.truncate(frame.buffer_size());
+        let info = reader.info();
+        let srgb = info.srgb.is_some();
+        (
+            info.width,
+            info.height,
+            info.color_type,
+            info.bit_depth,
+            srgb,
+            pixels,
+        )
+    }
+
+    #[test]
+    fn write_png_writes_the_images_srgb_codes_with_an_srgb_chunk() {
+        let mut image = Image::new(3, 2).unwrap();
+        let values = [0.0, 0.5, 1.0, 0.2, f32::NAN, 2.0, 0.01, 0.8, -1.0];
+        for (k, v) in image.data_mut().iter_mut().enumerate() {
+            *v = values[k % values.len()];
+        }
+        let mut out = Vec::new();
+        write_png(&mut out, &image, &PngOptions::default()).unwrap();
+        let (w, h, color, depth, srgb, pixels) = decode(&out);
+        assert_eq!((w, h), (3, 2));
+        assert_eq!(
+            (color, depth),
+            (::png::ColorType::Rgb, ::png::BitDepth::Eight)
+        );
+        assert!(srgb, "no sRGB chunk");
+        let want: Vec<u8> = image.data().iter().map(|&v| srgb_code_formula(v)).collect();
+        assert_eq!(pixels, want);
+    }
+
+    #[test]
+    fn dithered_codes_average_to_the_unrounded_value() {
+        // 255·srgb(0.43) = 175.2…: rounding and flooring give 175 everywhere; only noise spread
+        // over [0, 1) averages to the fraction. The hash noise is fixed by the seed, so the test
+        // is deterministic; its mean over 4096 codes is within 0.05 of the target (binomial σ
+        // below 0.007).
+        let mut image = Image::new(64, 64).unwrap();
+        let v = 0.43f32;
+        image.data_mut().iter_mut().for_each(|x| *x = v);
+        let target = 255.0 * f64::from(linear_to_srgb(v));
+        assert!((target.fract() - 0.5).abs() < 0.45, "{target}");
+        let mut out = Vec::new();
+        write_png(&mut out, &image, &PngOptions { dither: Some(7) }).unwrap();
+        let (.., pixels) = decode(&out);
+        let mean = pixels.iter().map(|&p| f64::from(p)).sum::<f64>() / pixels.len() as f64;
+        assert!((mean - target).abs() < 0.05, "mean {mean}, target {target}");
+        // Each code is the floor or the ceiling of the target.
+        assert!(
+            pixels
+                .iter()
+                .all(|&p| f64::from(p) == target.floor() || f64::from(p) == target.ceil())
+        );
+    }
+
+    #[test]
     fn the_deflate_level_is_2_up_to_the_limit_and_1_above() {
         assert_eq!(deflate_level(0), 2);
         assert_eq!(deflate_level(FAST_DEFLATE_ABOVE), 2);
