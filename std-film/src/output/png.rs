@@ -492,8 +492,8 @@ mod tests {
     fn dithered_codes_average_to_the_unrounded_value() {
         // 255·srgb(0.43) = 175.2…: rounding and flooring give 175 everywhere; only noise spread
         // over [0, 1) averages to the fraction. The hash noise is fixed by the seed, so the test
-        // is deterministic; its mean over 4096 codes is within 0.05 of the target (binomial σ
-        // below 0.007).
+        // is deterministic; its mean over 12 288 codes is within 0.05 of the target (binomial σ
+        // below 0.004).
         let mut image = Image::new(64, 64).unwrap();
         let v = 0.43f32;
         image.data_mut().iter_mut().for_each(|x| *x = v);
