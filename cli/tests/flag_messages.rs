@@ -381,6 +381,17 @@ fn long_work_is_announced_with_its_size() {
         "nyquist: warning: 2 samplers × 7 N × --runs 200000: about 8.1e8 samples; this may take \
          a while; fewer --runs or --samplers, or a lower --max-spp, make it shorter\n"
     );
+    let mask = dir.join("m.png");
+    let line = first_stderr_line(
+        &["mask", "--size", "1024", "-o", mask.to_str().unwrap()],
+        &dir,
+    );
+    assert_eq!(
+        line,
+        "nyquist: warning: --size 1024x1024 --channels 1: void-and-cluster over 1048576 pixels: \
+         about 15 s of work; a smaller --size or fewer --channels make it shorter\n"
+    );
+    assert!(!mask.exists());
     // Past its stated limit the exact sweep is refused, as its help says.
     assert_error(
         &[
@@ -415,6 +426,8 @@ fn long_work_is_announced_with_its_size() {
     // Ordinary work: no warning.
     let o = nyquist(&["render", "--size", "16x16", "--spp", "4", "--metrics"]);
     assert_eq!(stderr(&o), "");
+    let o = nyquist(&["mask", "--size", "256", "-o", mask.to_str().unwrap()]);
+    assert_eq!((o.status.code(), stderr(&o).as_str()), (Some(0), ""));
 }
 
 /// A lattice's size errors say what would be accepted: the next Fibonacci number, the Korobov
