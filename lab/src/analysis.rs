@@ -333,9 +333,7 @@ pub fn report(args: &AnalyzeSpec, host: &mut dyn Host) -> Result<String> {
     check_args(args, host)?;
     let (coords, dims, source) = load_with(args, args.seed, host)?;
     let set = PointSet::new(&coords, dims).map_err(|e| anyhow!("points: {e}"))?;
-    let mut notes = Vec::new();
-    let measures = chosen_measures(args, set.len(), dims, &mut notes)?;
-    notes.iter().for_each(|n| host.note(n));
+    let measures = chosen_measures(args, set.len(), dims, host)?;
     let mut rows = Vec::new();
     for &m in &measures {
         rows.extend(measure(args, &set, m, host)?);
@@ -653,7 +651,7 @@ pub fn read_csv(
         if line.is_empty() {
             continue;
         }
-        let mut fields: Vec<&str> = line.split(',').map(str::trim).collect();
+        let fields: Vec<&str> = line.split(',').map(str::trim).collect();
         if std::mem::take(&mut first) && !fields.iter().any(|f| starts_like_a_number(f)) {
             continue; // header
         }
@@ -668,7 +666,7 @@ pub fn read_csv(
         if coords.len() + dims > coords.capacity() {
             grow(&mut coords, dims, name, limit, MAX_VALUES)?;
         }
-        for f in fields.drain(..) {
+        for f in fields {
             let shown = || f.chars().take(40).collect::<String>();
             let v: f64 = f
                 .parse()
@@ -749,12 +747,13 @@ fn grow(
 }
 
 /// The measures to compute: the explicit list (each must apply to `dims`), or the defaults that
-/// apply (the quadratic L2-star only up to [`DEFAULT_L2_LIMIT`] points).
+/// apply (the quadratic L2-star only up to [`DEFAULT_L2_LIMIT`] points, with a note to `host`
+/// when it is left out).
 fn chosen_measures(
     args: &AnalyzeSpec,
     n: usize,
     dims: usize,
-    notes: &mut Vec<String>,
+    host: &mut dyn Host,
 ) -> Result<Vec<Measure>> {
     if args.measures.is_empty() {
         let mut m = Vec::new();
@@ -764,7 +763,7 @@ fn chosen_measures(
         if n <= DEFAULT_L2_LIMIT {
             m.push(Measure::L2Star);
         } else {
-            notes.push(format!(
+            host.note(&format!(
                 "l2-star is left out of the default measures above {DEFAULT_L2_LIMIT} points (its \
                  work grows as d·N²; {n} points would take about {}): name it in --measures to \
                  compute it",
