@@ -24,7 +24,7 @@ impl Host for Command {
     }
 
     fn warn(&mut self, text: &str) {
-        eprintln!("nyquist: warning: {text}");
+        crate::output::warn(text);
     }
 
     fn check_figure(&mut self, path: &Path, flag: &str) -> Result<()> {

@@ -34,14 +34,14 @@ pub fn run(args: &ConvergeArgs) -> Result<()> {
     let tasks = study.samplers.len() * study.counts.len() * study.runs as usize;
     let bar = crate::progress::Progress::with_unit(tasks as u64, "converge", "tasks");
     if samples > LARGE_STUDY {
-        eprintln!(
-            "nyquist: warning: {} × {} N × --runs {}: about {samples:.1e} samples; this may take \
-             a while; fewer --runs or --samplers, or a lower --max-spp, make it shorter",
+        crate::output::warn(&format!(
+            "{} × {} N × --runs {}: about {:.1e} samples; this may take a while; fewer --runs or \
+             --samplers, or a lower --max-spp, make it shorter",
             nyquist_lab::words::count(study.samplers.len() as u64, "sampler"),
             study.counts.len(),
             study.runs,
-            samples = samples as f64
-        );
+            samples as f64
+        ));
         bar.show_now();
     }
     let start = Stopwatch::start();

@@ -165,13 +165,13 @@ pub fn run(args: &MaskArgs) -> Result<()> {
     let seconds = estimated_seconds(u64::from(w) * u64::from(h), args.channels);
     let bar = crate::progress::Progress::with_unit(1, "mask", "masks");
     if seconds > ANNOUNCE_SECONDS {
-        eprintln!(
-            "nyquist: warning: --size {w}x{h} --channels {}: void-and-cluster over {} pixels: about \
-             {} of work; a smaller --size or fewer --channels make it shorter",
+        crate::output::warn(&format!(
+            "--size {w}x{h} --channels {}: void-and-cluster over {} pixels: about {} of work; a \
+             smaller --size or fewer --channels make it shorter",
             args.channels,
             w * h,
             nyquist_lab::analysis::duration(seconds)
-        );
+        ));
         bar.show_now();
     }
     let ranks = ranks(args.size, args.channels, args.seed);

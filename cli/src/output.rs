@@ -541,6 +541,12 @@ pub fn note(text: &str) {
     eprintln!("nyquist: note: {text}");
 }
 
+/// One warning on stderr, `nyquist: warning: <text>`: long work about to start, with its
+/// estimate and how to make it smaller.
+pub fn warn(text: &str) {
+    eprintln!("nyquist: warning: {text}");
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
