@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Mutation testing of the lines a change touches (docs/mutation.md).
 #
-#   scripts/mutants-in-diff.sh [--install] [--in-place] [BASE]
+#   scripts/mutants-in-diff.sh [--install] [--in-place] [--list] [BASE]
 #   scripts/mutants-in-diff.sh --record [COMMIT]
 #
 # Diffs HEAD against BASE and runs `cargo mutants --in-diff` on the changed Rust files of the
@@ -11,6 +11,11 @@
 # mutants that scripts/mutants-equivalent.txt names (each entry one mutant, by position or, where
 # the code moved, by its line's text) are forgiven; any other missed mutant fails the script.
 #
+# A changed file whose row in docs/mutation.md was measured at a commit where the file already
+# read as it does at HEAD is covered by that row: every one of its mutants was run then, against
+# the same tests, so the stage spends its time box on the other files. A large change therefore
+# lands by re-measuring its modules' rows (scripts/mutants.sh) before it is submitted.
+#
 # BASE defaults to the commit .ci/last-tested names, the last commit CI passed on, so every
 # commit since, not only the last one, is tested. When HEAD has no such file, or it names a
 # commit that is not in the clone or not an ancestor of HEAD, the script says so and falls back
@@ -19,6 +24,11 @@
 #
 #   --record    write COMMIT (default HEAD) into .ci/last-tested, after .ci/run passed on it;
 #               commit the file (its commit changes no source, so the next run starts there).
+#               Refused unless the last run in MUTANTS_OUT tested COMMIT's whole change: from
+#               the commit .ci/last-tested names now, nothing missed and nothing left unreached
+#               (rows covering files count), so no mutant of the range is skipped for good.
+#   --list      print the base, the commits and, per file, the mutants that would be tested (or
+#               that a row covers), without building anything; exit 0.
 #
 #   --install   install cargo-mutants (a debug build, within the time box) when it is missing and there
 #               is something to test; without it a missing cargo-mutants is SKIPPED.
@@ -34,10 +44,11 @@
 # as in scripts/mutants.sh), MUTANTS_OUT (default $CARGO_TARGET_DIR/mutants-diff, else
 # target/mutants-diff).
 #
-# Exit status: 0 when nothing was missed (or there was nothing to test; mutants the time box left
-# untested are named, with a warning when they are more than half of the change's), 2 when a
-# mutant outside the equivalent list was missed, 1 on any other failure. The last line starts
-# with MUTANTS_IN_DIFF and gives the counts.
+# Exit status: 0 when nothing was missed (or there was nothing to test) and at least half of the
+# change's mutants were tested or covered by rows (those the time box left untested are named);
+# 2 when a mutant outside the equivalent list was missed, or when more than half of the change's
+# mutants were left untested; 1 on any other failure. The last line starts with MUTANTS_IN_DIFF
+# and gives the counts; $MUTANTS_OUT/summary keeps them for --record.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 begin=$SECONDS
@@ -48,22 +59,18 @@ export CARGO_INCREMENTAL=1
 
 install=0
 in_place=0
+list=0
+record=
 while [ $# -gt 0 ]; do
     case $1 in
         --install) install=1 ;;
         --in-place) in_place=1 ;;
+        --list) list=1 ;;
         --record)
-            commit=$(git rev-parse --verify "${2:-HEAD}^{commit}")
-            {
-                echo "# The last commit .ci/run passed on, its mutation stage included. That stage diffs"
-                echo "# against it (scripts/mutants-in-diff.sh); record the next with"
-                echo "# scripts/mutants-in-diff.sh --record COMMIT (docs/mutation.md)."
-                echo "$commit"
-            } >.ci/last-tested
-            echo ".ci/last-tested: $commit"
-            exit 0
+            record=$(git rev-parse --verify "${2:-HEAD}^{commit}")
+            break
             ;;
-        -*) echo "unknown option '$1' (--install, --in-place, --record)" >&2; exit 1 ;;
+        -*) echo "unknown option '$1' (--install, --in-place, --list, --record)" >&2; exit 1 ;;
         *) break ;;
     esac
     shift
@@ -75,8 +82,65 @@ OPT_LEVEL=${MUTANTS_OPT_LEVEL:-0}
 OUT=${MUTANTS_OUT:-${CARGO_TARGET_DIR:-target}/mutants-diff}
 SOURCES=(core/src std-film/src)
 
-# count, diff_base, equivalent_sites; MODULES_FILE, EQUIVALENT.
+# count, diff_base, recorded_pass, package_of, equivalent_sites; MODULES_FILE, EQUIVALENT.
 . scripts/mutants-common.sh
+# Set by sourcing a run's summary (--record).
+run_base='' run_head='' run_total='' run_tested='' run_covered='' run_unreached='' run_status=''
+
+if [ -n "$record" ]; then
+    commit=$record
+    # The change since the commit recorded now must have been tested whole, up to COMMIT.
+    recorded=$(recorded_pass HEAD)
+    summary="$OUT/summary"
+    if [ ! -s "$summary" ]; then
+        echo "--record: no run in $OUT to vouch for ${commit:0:12}; run scripts/mutants-in-diff.sh at it first" >&2
+        exit 1
+    fi
+    # shellcheck disable=SC1090 # written by this script: key=value lines
+    . "$summary"
+    if [ "$run_head" != "$commit" ]; then
+        echo "--record: the last run in $OUT tested ${run_head:0:12}, not ${commit:0:12}" >&2
+        exit 1
+    fi
+    if [ -n "$recorded" ] && [ "$run_base" != "$recorded" ] && ! git merge-base --is-ancestor "$run_base" "$recorded"; then
+        echo "--record: the last run started at ${run_base:0:12}, after ${recorded:0:12} (.ci/last-tested): the commits between were not tested" >&2
+        exit 1
+    fi
+    if [ "$run_status" != 0 ] || [ "$run_unreached" != 0 ]; then
+        echo "--record: the last run left $run_unreached of $run_total mutants untested (status $run_status); run it again with a larger MUTANTS_DIFF_SECONDS" >&2
+        exit 1
+    fi
+    {
+        echo "# The last commit .ci/run passed on, its mutation stage included. That stage diffs"
+        echo "# against it (scripts/mutants-in-diff.sh); record the next with"
+        echo "# scripts/mutants-in-diff.sh --record COMMIT (docs/mutation.md)."
+        echo "$commit"
+    } >.ci/last-tested
+    echo ".ci/last-tested: $commit ($run_tested tested and $run_covered covered by rows, of $run_total mutants since ${run_base:0:12})"
+    exit 0
+fi
+
+# The run's counts as key=value lines, read back by --record: TOTAL TESTED COVERED UNREACHED
+# STATUS (base and HEAD from the run).
+summary() {
+    printf 'run_base=%s\nrun_head=%s\nrun_total=%s\nrun_tested=%s\nrun_covered=%s\nrun_unreached=%s\nrun_status=%s\n' \
+        "$base" "$(git rev-parse HEAD)" "$@"
+}
+
+# The commit FILE's row in docs/mutation.md was measured at, when the file read then as it does at
+# HEAD (so the row ran every one of its mutants); nothing otherwise.
+covering_row() {
+    local module row at
+    module=$(grep -v '^#' "$MODULES_FILE" | awk -F'|' -v f="$1" '$3 == f { print $1; exit }')
+    [ -n "$module" ] || return 0
+    row=$(awk -v m="| \`$module\` |" '/<!-- mutants-table-end -->/ { exit } index($0, m) == 1 { print; exit }' docs/mutation.md)
+    [ -n "$row" ] || return 0
+    at=$(awk -F'|' '{ gsub(/ /, "", $3); print $3 }' <<<"$row")
+    if git rev-parse -q --verify "$at^{commit}" >/dev/null 2>&1 &&
+        git merge-base --is-ancestor "$at" HEAD && git diff --quiet "$at" HEAD -- "$1"; then
+        echo "$module $at"
+    fi
+}
 
 if [ $# -gt 0 ]; then
     base=$(git rev-parse --verify "$1^{commit}")
@@ -99,6 +163,7 @@ mapfile -t files < <(git diff --numstat --diff-filter=AM "$base" HEAD -- "${SOUR
 if [ ${#files[@]} -eq 0 ]; then
     echo "no change to ${SOURCES[*]} between ${base:0:12} and HEAD: nothing to mutate"
     echo "MUTANTS_IN_DIFF 0 mutants (no source change)"
+    [ $list = 1 ] || { mkdir -p "$OUT" && summary 0 0 0 0 0 >"$OUT/summary"; }
     exit 0
 fi
 echo "changed since ${base:0:12}, most changed lines first: ${files[*]}"
@@ -115,6 +180,27 @@ if ! cargo mutants --version >/dev/null 2>&1; then
         echo "SKIPPED: cargo-mutants could not be installed within $BOX s"
         exit 0
     fi
+fi
+
+if [ $list = 1 ]; then
+    # What a run would do, without building: each file's mutants on the changed lines.
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+    git diff "$base" -- "${SOURCES[@]}" >"$tmp/change.diff"
+    for file in "${files[@]}"; do
+        package=$(package_of "$file")
+        cargo mutants --list --in-diff "$tmp/change.diff" --package "$package" --file "$file" </dev/null 2>/dev/null >"$tmp/m.txt" || true
+        n=$(count "$tmp/m.txt")
+        [ "$n" -gt 0 ] || continue
+        read -r module at <<<"$(covering_row "$file")"
+        if [ -n "${at:-}" ]; then
+            echo "== $file: $n mutants, covered by the row of $module (measured at $at)"
+        else
+            echo "== $file: $n mutants to test"
+        fi
+        sed 's/^/    /' "$tmp/m.txt"
+    done
+    exit 0
 fi
 
 if [ $in_place = 1 ]; then
@@ -155,14 +241,11 @@ module_filter() {
     case $path in lib | main) echo "" ;; *) echo "${path//\//::}::" ;; esac
 }
 
-total=0 tested=0 caught=0 missed=0 unviable=0 timeouts=0 equivalent=0 unreached=0
+total=0 tested=0 caught=0 missed=0 unviable=0 timeouts=0 equivalent=0 unreached=0 covered=0
 status=0
 not_reached=()
 for file in "${files[@]}"; do
-    case $file in
-        core/*) package=nyquist ;;
-        std-film/*) package=nyquist-film ;;
-    esac
+    package=$(package_of "$file")
     line=$(grep -v '^#' "$MODULES_FILE" | awk -F'|' -v f="$file" '$3 == f' | head -1)
     if [ -n "$line" ]; then
         IFS='|' read -r _ package _ filters targets <<<"$line"
@@ -175,6 +258,12 @@ for file in "${files[@]}"; do
     n=$(cargo mutants --list --in-diff "$diff" --package "$package" --file "$file" 2>/dev/null | grep -c . || true)
     [ "$n" -gt 0 ] || continue
     total=$((total + n))
+    read -r module at <<<"$(covering_row "$file")"
+    if [ -n "${at:-}" ]; then
+        echo "== $file: $n mutants, covered by the row of $module (measured at $at, the file unchanged since)"
+        covered=$((covered + n))
+        continue
+    fi
     left=$((BOX - (SECONDS - begin)))
     if [ "$left" -le 0 ]; then
         echo "== $file: $n mutants not tested (time box of ${BOX} s used up)"
@@ -233,12 +322,15 @@ for file in "${files[@]}"; do
 done
 if [ "$unreached" -gt 0 ]; then
     echo "time box: $unreached of $total mutants were not tested, in: ${not_reached[*]}"
-    echo "    run scripts/mutants-in-diff.sh ${base:0:12} with a larger MUTANTS_DIFF_SECONDS for them"
-    # Reported, not failed: CI's box cannot grow with a change, and a change larger than it
-    # would otherwise never land. Whoever records the next .ci/last-tested runs these first.
+    echo "    run scripts/mutants-in-diff.sh ${base:0:12} with a larger MUTANTS_DIFF_SECONDS for them,"
+    echo "    or measure their modules' rows (scripts/mutants.sh MODULE), which then cover them"
+    # Up to half may wait for the run that --record requires; more fails: the change is larger
+    # than CI can check, and its rows are to be measured before it is submitted.
     if [ $((2 * unreached)) -gt "$total" ]; then
-        echo "WARNING: more than half of the change's mutants were left untested; run them before recording .ci/last-tested"
+        echo "FAILED: more than half of the change's mutants ($unreached of $total) were left untested"
+        status=2
     fi
 fi
-echo "MUTANTS_IN_DIFF $tested of $total mutants tested in $((SECONDS - begin)) s: caught $caught, missed $missed ($equivalent listed equivalent), unviable $unviable, timeouts $timeouts, not reached $unreached"
+summary "$total" "$tested" "$covered" "$unreached" "$status" >"$OUT/summary"
+echo "MUTANTS_IN_DIFF $tested of $total mutants tested in $((SECONDS - begin)) s, $covered covered by rows: caught $caught, missed $missed ($equivalent listed equivalent), unviable $unviable, timeouts $timeouts, not reached $unreached"
 exit $status
