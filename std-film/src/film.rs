@@ -3,8 +3,10 @@
 use crate::bounds::Bounds;
 use crate::coverage::Coverage;
 use crate::error::Error;
+use crate::extras::{ChannelImage, Estimate, ExtraImages};
 use crate::image::Image;
 use crate::pixel::Pixel;
+use crate::sample::FilmSample;
 use crate::setup::{FilmConfig, Setup};
 use crate::stats::{FilmStats, ResolveStats};
 use crate::tile::FilmTile;
@@ -211,6 +213,27 @@ impl Film {
         self.coverage.mark_all();
     }
 
+    /// Adds a sample with its index and channel values to the film itself, as
+    /// [`FilmTile::add`] does to a tile; the film then counts as one whole-film tile.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig, FilmSample, PixelExtras};
+    /// let mut config = FilmConfig::new(2, 2);
+    /// config.extras.halves = true;
+    /// let mut film = Film::new(config, &nyquist::filter::Boxcar::default()).unwrap();
+    /// for i in 0..4u64 {
+    ///     let v = if nyquist_film::extras::sample_half(i) == 0 { 1.0 } else { 2.0 };
+    ///     film.add(&FilmSample { index: i, ..FilmSample::new([0.5, 1.5], [v; 3], 1.0) });
+    /// }
+    /// let e = film.estimate(0, 1).unwrap();
+    /// assert_eq!(e.halves, Some([[1.0; 3], [2.0; 3]]));
+    /// assert_eq!(e.half_difference(), Some([0.5; 3]));
+    /// ```
+    pub fn add(&mut self, sample: &FilmSample) {
+        self.sums.add(sample);
+        self.coverage.mark_all();
+    }
+
     /// Adds a splat to the film itself, on the calling thread, as [`FilmTile::add_splat`] does
     /// to a tile; the film then counts as one whole-film tile.
     ///
@@ -280,6 +303,11 @@ impl Film {
                 .zip(&tile.pixels()[trow..trow + tw])
             {
                 dst.add(src);
+            }
+            if let (Some(dst), Some(src)) = (self.sums.extras_mut(), tile.extras()) {
+                for i in 0..tw {
+                    dst.merge_pixel(frow + i, src, trow + i);
+                }
             }
             if tile.splats().is_empty() {
                 continue;
@@ -359,6 +387,141 @@ impl Film {
         b.contains(x, y).then(|| {
             self.sums.pixels()[(y - b.y0) as usize * b.width() as usize + (x - b.x0) as usize]
         })
+    }
+
+    /// Pixel `(x, y)`'s value and the error estimates the film keeps for it (film coordinates),
+    /// or `None` outside the film. Reads the merged sums (held tiles are not applied); see
+    /// [`crate::extras`] for the estimators.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut config = FilmConfig::new(4, 4);
+    /// config.extras.variance = true;
+    /// let mut film = Film::new(config, &nyquist::filter::Boxcar::default()).unwrap();
+    /// for v in [1.0, 2.0, 3.0] {
+    ///     film.add_sample([2.5, 1.5], [v; 3], 1.0);
+    /// }
+    /// let e = film.estimate(2, 1).unwrap();
+    /// assert_eq!(e.value, [2.0; 3]);
+    /// assert_eq!(e.variance, Some([1.0 / 3.0; 3])); // s² = 1 over n = 3
+    /// assert_eq!(e.halves, None); // not kept
+    /// assert_eq!(film.estimate(0, 0).unwrap().variance, None); // no sample
+    /// ```
+    pub fn estimate(&self, x: i64, y: i64) -> Option<Estimate> {
+        let b = self.setup.pixel_bounds;
+        if !b.contains(x, y) {
+            return None;
+        }
+        let i = (y - b.y0) as usize * b.width() as usize + (x - b.x0) as usize;
+        let p = self.sums.pixels()[i];
+        Some(match self.sums.extras() {
+            Some(e) => e.estimate(i, &p),
+            None => Estimate {
+                value: crate::extras::mean(&p),
+                variance: None,
+                halves: None,
+            },
+        })
+    }
+
+    /// The extra channels' values of pixel `(x, y)`, Σ f·a / Σ f each (0 where Σ f ≤ 0), or
+    /// `None` outside the film; empty when the film keeps no channels.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig, FilmSample};
+    /// let mut config = FilmConfig::new(4, 4);
+    /// config.extras.channels = 2;
+    /// let mut film = Film::new(config, &nyquist::filter::Boxcar::default()).unwrap();
+    /// for a in [[0.5, 10.0], [1.5, 20.0]] {
+    ///     film.add(&FilmSample { channels: &a, ..FilmSample::new([1.5, 1.5], [1.0; 3], 3.0) });
+    /// }
+    /// assert_eq!(film.channel_values(1, 1).unwrap(), [1.0, 15.0]);
+    /// assert_eq!(film.channel_values(4, 1), None);
+    /// ```
+    pub fn channel_values(&self, x: i64, y: i64) -> Option<Vec<f64>> {
+        let b = self.setup.pixel_bounds;
+        if !b.contains(x, y) {
+            return None;
+        }
+        let i = (y - b.y0) as usize * b.width() as usize + (x - b.x0) as usize;
+        let w = self.sums.pixels()[i].weight_sum;
+        Some(
+            self.sums
+                .extras()
+                .map(|e| e.channel_means(i, w).collect())
+                .unwrap_or_default(),
+        )
+    }
+
+    /// The images of what the film keeps beside RGB ([`crate::PixelExtras`]), each `None`
+    /// when not kept: the variance of each pixel's value (NaN where it is undefined: fewer than
+    /// two effective samples), the A and B halves' means (0 where a half has no weight), and
+    /// the extra channels. Held tiles are applied first, as [`Film::image`] does. Values are
+    /// not clamped (a negative filter lobe can make a mean negative).
+    ///
+    /// # Errors
+    /// [`Error::OutOfMemory`] if the allocator cannot provide the images.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig, PixelExtras};
+    /// let mut config = FilmConfig::new(3, 2);
+    /// config.extras = PixelExtras { variance: true, halves: true, channels: 0 };
+    /// let mut film = Film::new(config, &nyquist::filter::Boxcar::default()).unwrap();
+    /// film.add_sample([0.5, 0.5], [1.0; 3], 1.0);
+    /// film.add_sample([0.5, 0.5], [3.0; 3], 1.0);
+    /// let layers = film.extra_images().unwrap();
+    /// let variance = layers.variance.unwrap();
+    /// assert_eq!(variance.get(0, 0), [1.0; 3]);
+    /// assert!(variance.get(1, 0)[0].is_nan());
+    /// assert_eq!(layers.halves.unwrap()[0].get(0, 0), [2.0; 3]); // index 0: both in A
+    /// assert!(layers.channels.is_none());
+    /// ```
+    pub fn extra_images(&mut self) -> Result<ExtraImages, Error> {
+        self.flush();
+        let b = self.setup.pixel_bounds;
+        let (w, h) = (b.width() as u32, b.height() as u32);
+        let extras = self.setup.extras;
+        let pixels = self.sums.pixels();
+        let mut out = ExtraImages::default();
+        let Some(sums) = self.sums.extras() else {
+            return Ok(out);
+        };
+        if extras.variance {
+            let mut image = Image::new(w, h)?;
+            for (i, (o, p)) in image.data_mut().chunks_exact_mut(3).zip(pixels).enumerate() {
+                let v = sums.estimate(i, p).variance;
+                for c in 0..3 {
+                    o[c] = v.map_or(f32::NAN, |v| v[c] as f32);
+                }
+            }
+            out.variance = Some(image);
+        }
+        if extras.halves {
+            let mut images = [Image::new(w, h)?, Image::new(w, h)?];
+            for (i, p) in pixels.iter().enumerate() {
+                let b = sums.half_b[i];
+                let a = Pixel {
+                    rgb_sum: [0, 1, 2].map(|c| p.rgb_sum[c] - b.rgb_sum[c]),
+                    weight_sum: p.weight_sum - b.weight_sum,
+                };
+                for (image, half) in images.iter_mut().zip([a, b]) {
+                    let m = crate::extras::mean(&half);
+                    image.data_mut()[3 * i..3 * i + 3].copy_from_slice(&m.map(|v| v as f32));
+                }
+            }
+            out.halves = Some(images);
+        }
+        if extras.channels > 0 {
+            let mut image = ChannelImage::new(w, h, usize::from(extras.channels))?;
+            let n = image.channels();
+            for (i, (o, p)) in image.data_mut().chunks_exact_mut(n).zip(pixels).enumerate() {
+                for (o, v) in o.iter_mut().zip(sums.channel_means(i, p.weight_sum)) {
+                    *o = v as f32;
+                }
+            }
+            out.channels = Some(image);
+        }
+        Ok(out)
     }
 
     /// Resolves the film once every part of it has arrived, as [`Film::image`] does; the film

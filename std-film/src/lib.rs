@@ -18,11 +18,13 @@
 mod bounds;
 mod coverage;
 mod error;
+pub mod extras;
 mod film;
 mod image;
 pub mod output;
 mod pixel;
 mod render;
+mod sample;
 mod setup;
 mod stats;
 mod tile;
@@ -30,11 +32,13 @@ mod tile_spec;
 
 pub use bounds::Bounds;
 pub use error::Error;
+pub use extras::PixelExtras;
 pub use film::Film;
 pub use image::Image;
 pub use output::{ImageFormat, write_image, write_image_file};
 pub use pixel::Pixel;
 pub use render::{CAN_START_THREADS, TileContext, render_tiles};
+pub use sample::FilmSample;
 pub use setup::FilmConfig;
 pub use stats::{FilmStats, ResolveStats};
 pub use tile::FilmTile;

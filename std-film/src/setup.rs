@@ -2,6 +2,7 @@
 
 use crate::bounds::Bounds;
 use crate::error::Error;
+use crate::extras::{MAX_CHANNELS, PixelExtras};
 use nyquist::filter::{FilmTable, Filter};
 
 /// How a [`Film`](crate::Film) is set up.
@@ -10,6 +11,7 @@ use nyquist::filter::{FilmTable, Filter};
 /// let c = nyquist_film::FilmConfig::new(640, 480);
 /// assert_eq!(c.crop_window, [0.0, 1.0, 0.0, 1.0]);
 /// assert_eq!(c.max_component, None);
+/// assert!(!c.extras.any());
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FilmConfig {
@@ -22,6 +24,9 @@ pub struct FilmConfig {
     /// (counted in [`FilmStats::clamped`](crate::FilmStats::clamped)). `None` keeps every
     /// sample as it is.
     pub max_component: Option<f32>,
+    /// What the film keeps per pixel beside its RGB sums (variance, halves, extra channels);
+    /// nothing by default.
+    pub extras: PixelExtras,
 }
 
 impl FilmConfig {
@@ -35,6 +40,7 @@ impl FilmConfig {
             resolution: [width, height],
             crop_window: [0.0, 1.0, 0.0, 1.0],
             max_component: None,
+            extras: PixelExtras::default(),
         }
     }
 }
@@ -46,6 +52,7 @@ pub(crate) struct Setup {
     pub(crate) pixel_bounds: Bounds,
     pub(crate) table: FilmTable,
     pub(crate) max_component: Option<f32>,
+    pub(crate) extras: PixelExtras,
 }
 
 impl Setup {
@@ -54,8 +61,8 @@ impl Setup {
     /// # Errors
     /// [`Error::OutOfRange`] for a zero side or a crop coordinate outside `[0, 1]`;
     /// [`Error::Config`] for an empty crop window or one that covers no pixel, and a
-    /// non-finite or non-positive `max_component`; [`Error::Core`] if the filter cannot be
-    /// tabulated.
+    /// non-finite or non-positive `max_component`; [`Error::OutOfRange`] for more than
+    /// [`MAX_CHANNELS`] extra channels; [`Error::Core`] if the filter cannot be tabulated.
     pub(crate) fn new(config: &FilmConfig, filter: &dyn Filter) -> Result<Setup, Error> {
         let [w, h] = config.resolution;
         for (what, side) in [("width", w), ("height", h)] {
@@ -104,10 +111,19 @@ impl Setup {
                 "crop window {c:?} covers no pixel of {w}x{h}"
             )));
         }
+        if config.extras.channels > MAX_CHANNELS {
+            return Err(Error::OutOfRange {
+                what: "extra channels",
+                value: f64::from(config.extras.channels),
+                min: 0.0,
+                max: f64::from(MAX_CHANNELS),
+            });
+        }
         Ok(Setup {
             pixel_bounds,
             table: FilmTable::new(filter)?,
             max_component: config.max_component,
+            extras: config.extras,
         })
     }
 }

@@ -2,7 +2,9 @@
 
 use crate::bounds::Bounds;
 use crate::error::Error;
+use crate::extras::{ExtraSums, sample_half};
 use crate::pixel::Pixel;
+use crate::sample::FilmSample;
 use crate::setup::Setup;
 use crate::stats::FilmStats;
 use crate::tile_spec::TileSpec;
@@ -247,6 +249,52 @@ fn accumulate<W: Weights + ?Sized>(
     }
 }
 
+/// Visits every pixel of the footprint with the factors `(a, b)` of its weight as the sums
+/// ([`phase_footprint`], [`single_weight`]) take them: the pixel gets `b·(a·l)` and `b·a`.
+fn phase_weights(fp: &Footprint, t: &PhaseTable, mut visit: impl FnMut(usize, usize, f64, f64)) {
+    let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
+    if nx == 1 && ny == 1 {
+        return visit(0, 0, single_weight(fp, t), 1.0);
+    }
+    let mut fx = [0.0f32; MAX_TAPS];
+    let mut fy = [0.0f32; MAX_TAPS];
+    t.row(Axis::X, fp.phase[0], &mut fx);
+    t.row(Axis::Y, fp.phase[1], &mut fy);
+    let fx = fx.get(fp.tap0[0]..).unwrap_or(&[]);
+    let fy = fy.get(fp.tap0[1]..).unwrap_or(&[]);
+    for (j, &b) in fy.iter().take(ny).enumerate() {
+        for (i, &a) in fx.iter().take(nx).enumerate() {
+            visit(i, j, f64::from(a), f64::from(b));
+        }
+    }
+}
+
+/// [`phase_weights`] for weights `w` as [`accumulate`] takes them.
+fn table_weights<W: Weights + ?Sized>(
+    fp: &Footprint,
+    w: &W,
+    mut visit: impl FnMut(usize, usize, f64, f64),
+) {
+    let (nx, ny) = (fp.x1 - fp.x0, fp.y1 - fp.y0);
+    let separable = w.is_separable();
+    let x = |d: f32| w.weight_1d(Axis::X, d).unwrap_or(0.0);
+    let y = |d: f32| w.weight_1d(Axis::Y, d).unwrap_or(0.0);
+    for j in 0..ny {
+        let dy = fp.dy(fp.y0 + j);
+        for i in 0..nx {
+            let dx = fp.dx(fp.x0 + i);
+            if !separable {
+                visit(i, j, f64::from(w.weight(dx, dy)), 1.0);
+            } else if nx <= 32 && ny <= 32 {
+                // The outer product's factors.
+                visit(i, j, f64::from(x(dx)), f64::from(y(dy)));
+            } else {
+                visit(i, j, f64::from(x(dx)) * f64::from(y(dy)), 1.0);
+            }
+        }
+    }
+}
+
 /// A filter evaluated directly, as weights: `eval_1d` per axis when `separable`, else `eval`.
 /// [`FilmTile::add_sample_direct`]'s source, beside the film's table.
 struct Direct<'a, F: ?Sized> {
@@ -402,6 +450,8 @@ pub struct FilmTile {
     geometry: Geometry,
     pixels: Vec<Pixel>,
     splats: Vec<[f64; 3]>,
+    /// The per-pixel extras the film keeps ([`crate::PixelExtras`]), row-major like the pixels.
+    extras: Option<Box<ExtraSums>>,
     setup: Arc<Setup>,
     stats: FilmStats,
     /// The per-sample fast path the film's filter allows (see [`FastPath::for_setup`]).
@@ -477,6 +527,9 @@ fn block4(g: &Geometry, t: &PhaseTable, p: [f32; 2]) -> Option<Block4> {
 enum FastPath {
     /// None applies: every sample takes the general path.
     None,
+    /// The film keeps per-pixel extras: every sample goes through [`FilmTile::add`], which adds
+    /// the sums by the general path and the extras beside them.
+    Extras,
     /// A box of radius ≤ ½ ([`one_pixel_weight`]): the filter's constant weight, and whether
     /// a radius is below ½ (then a sample can miss its pixel's centre, and each is tested).
     OnePixel { weight: f64, narrow: bool },
@@ -489,6 +542,9 @@ enum FastPath {
 
 impl FastPath {
     fn for_setup(setup: &Setup) -> FastPath {
+        if setup.extras.any() {
+            return FastPath::Extras;
+        }
         if let Some(weight) = one_pixel_weight(setup) {
             let narrow = setup.table.radius().iter().any(|&r| r < 0.5);
             return FastPath::OnePixel { weight, narrow };
@@ -539,8 +595,12 @@ fn reach(b: Bounds, [rx, ry]: [f32; 2]) -> Bounds {
 impl FilmTile {
     pub(crate) fn new(spec: TileSpec, setup: Arc<Setup>) -> FilmTile {
         let (pixel_bounds, stored) = Self::layout(spec.bounds, &setup, true);
-        let pixels = vec![Pixel::default(); stored.area() as usize];
-        Self::with_pixels(spec, setup, pixel_bounds, stored, pixels)
+        let n = stored.area() as usize;
+        let pixels = vec![Pixel::default(); n];
+        // As `vec!` above does for the pixels, a tile's allocation failure ends the program.
+        let extras = ExtraSums::new(&setup.extras, n)
+            .unwrap_or_else(|e| panic!("a film tile could not be allocated: {e}"));
+        Self::with_pixels(spec, setup, pixel_bounds, stored, pixels, extras)
     }
 
     /// The film's own sums: a tile taking samples anywhere in the film and storing exactly the
@@ -553,11 +613,19 @@ impl FilmTile {
         let (pixel_bounds, stored) = Self::layout(bounds, &setup, false);
         let n = stored.area() as usize;
         let pixels = crate::error::try_filled(n, Pixel::default(), "the film's pixels")?;
+        let extras = ExtraSums::new(&setup.extras, n)?;
         let spec = TileSpec {
             index: usize::MAX,
             bounds,
         };
-        Ok(Self::with_pixels(spec, setup, pixel_bounds, stored, pixels))
+        Ok(Self::with_pixels(
+            spec,
+            setup,
+            pixel_bounds,
+            stored,
+            pixels,
+            extras,
+        ))
     }
 
     /// The film pixels a tile over `b` merges and the pixels it stores: those and, with `band`,
@@ -592,6 +660,7 @@ impl FilmTile {
         pixel_bounds: Bounds,
         stored: Bounds,
         pixels: Vec<Pixel>,
+        extras: Option<Box<ExtraSums>>,
     ) -> FilmTile {
         let fast = FastPath::for_setup(&setup);
         FilmTile {
@@ -601,6 +670,7 @@ impl FilmTile {
             pixels,
             // Allocated by the first splat: most renderers never splat.
             splats: Vec::new(),
+            extras,
             setup,
             stats: FilmStats::default(),
             fast,
@@ -678,9 +748,21 @@ impl FilmTile {
         &mut self.splats
     }
 
-    /// Bytes of the pixel sums (32 a pixel) and of the splat sums once allocated (24 a pixel).
+    /// The per-pixel extras, when the film keeps any.
+    pub(crate) fn extras(&self) -> Option<&ExtraSums> {
+        self.extras.as_deref()
+    }
+
+    pub(crate) fn extras_mut(&mut self) -> Option<&mut ExtraSums> {
+        self.extras.as_deref_mut()
+    }
+
+    /// Bytes of the pixel sums (32 a pixel), of the splat sums once allocated (24 a pixel) and
+    /// of the extras ([`crate::PixelExtras::bytes_per_pixel`]).
     pub(crate) fn storage_bytes(&self) -> usize {
-        self.pixels.len() * size_of::<Pixel>() + self.splats.len() * size_of::<[f64; 3]>()
+        self.pixels.len() * size_of::<Pixel>()
+            + self.splats.len() * size_of::<[f64; 3]>()
+            + self.extras.as_ref().map_or(0, |e| e.bytes())
     }
 
     /// Counters of this tile.
@@ -752,6 +834,72 @@ impl FilmTile {
             }
             FastPath::Block4 => self.enqueue(p_film, rgb, weight),
             FastPath::None => self.add_sample_footprint(p_film, rgb, weight),
+            FastPath::Extras => self.add(&FilmSample::new(p_film, rgb, weight)),
+        }
+    }
+
+    /// Adds a sample with everything a film that keeps [`crate::PixelExtras`] takes from it:
+    /// the sums as [`FilmTile::add_sample`] adds them (the same bits whether extras are kept or
+    /// not), and per reached pixel with filter weight `f`, the variance moments of
+    /// `weight·rgb` with weight `f²`, the B half's sums when `index` is in the B half
+    /// ([`crate::extras::sample_half`]), and `f·a` for each channel value `a`.
+    ///
+    /// A sample is rejected and counted ([`FilmTile::rejected`]) when a value is NaN or
+    /// infinite (channels included) or when it has another number of channels than the film
+    /// keeps (so on a film that keeps channels, [`FilmTile::add_sample`] is rejected).
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig, FilmSample, PixelExtras};
+    /// let mut config = FilmConfig::new(4, 4);
+    /// config.extras = PixelExtras { variance: true, halves: false, channels: 1 };
+    /// let mut film = Film::new(config, &nyquist::filter::Boxcar::default()).unwrap();
+    /// let mut tile = film.tile(film.tiles(4).unwrap()[0]);
+    /// for (i, v) in [1.0f32, 3.0].into_iter().enumerate() {
+    ///     let depth = [2.5];
+    ///     tile.add(&FilmSample { index: i as u64, channels: &depth, ..FilmSample::new([0.5, 0.5], [v; 3], 1.0) });
+    /// }
+    /// tile.add(&FilmSample::new([0.5, 0.5], [1.0; 3], 1.0)); // no depth: rejected
+    /// assert_eq!((tile.stats().samples, tile.rejected()), (2, 1));
+    /// film.merge(tile).unwrap();
+    /// let e = film.estimate(0, 0).unwrap();
+    /// assert_eq!(e.value, [2.0; 3]);
+    /// assert_eq!(e.variance, Some([1.0; 3])); // s² = 2 over n = 2
+    /// assert_eq!(film.channel_values(0, 0).unwrap(), [2.5]);
+    /// ```
+    pub fn add(&mut self, s: &FilmSample) {
+        let n = self.extras.as_ref().map_or(0, |e| e.n);
+        // The sum is finite exactly when every value is (∞ − ∞ is NaN).
+        let finite = s
+            .channels
+            .iter()
+            .map(|&v| f64::from(v))
+            .sum::<f64>()
+            .is_finite();
+        if s.channels.len() != n || !finite {
+            self.stats.rejected += 1;
+            return;
+        }
+        if self.extras.is_none() {
+            return self.add_sample(s.p_film, s.rgb, s.weight);
+        }
+        let Some(l) = self.prepare(s.p_film, s.rgb, s.weight) else {
+            return;
+        };
+        self.add_footprint(s.p_film, l);
+        let Some(fp) = self.footprint(s.p_film) else {
+            return;
+        };
+        let half = sample_half(s.index);
+        let stride = self.geometry.size[0] as usize;
+        let (Some(extras), setup) = (self.extras.as_deref_mut(), &self.setup) else {
+            return;
+        };
+        let visit = |i: usize, j: usize, a: f64, b: f64| {
+            extras.add((fp.y0 + j) * stride + fp.x0 + i, a, b, l, half, s.channels);
+        };
+        match &setup.table {
+            FilmTable::Phase(t) => phase_weights(&fp, t, visit),
+            FilmTable::Table(t) => table_weights(&fp, t, visit),
         }
     }
 
@@ -921,6 +1069,11 @@ impl FilmTile {
     ) {
         // The held samples first: each pixel's additions stay in arrival order.
         self.drain_queue();
+        if self.extras.as_ref().is_some_and(|e| e.n > 0) {
+            // No channel values: a film that keeps channels takes samples through `add`.
+            self.stats.rejected += 1;
+            return;
+        }
         let Some(l) = self.prepare(p_film, rgb, weight) else {
             return;
         };
@@ -932,6 +1085,11 @@ impl FilmTile {
         let direct = Direct { filter, separable };
         if let Some(rows) = footprint_rows(&mut self.pixels, stride, &fp) {
             accumulate(rows, stride, &fp, l, &direct);
+        }
+        if let Some(extras) = self.extras.as_deref_mut() {
+            table_weights(&fp, &direct, |i, j, a, b| {
+                extras.add((fp.y0 + j) * stride + fp.x0 + i, a, b, l, 0, &[]);
+            });
         }
     }
 

@@ -35,6 +35,7 @@ pub fn film(data: &[u8]) {
             [crop(&mut b), crop(&mut b), crop(&mut b), crop(&mut b)]
         },
         max_component: b.bool().then(|| b.f32_mixed()),
+        extras: nyquist_film::PixelExtras::default(),
     };
     let (filter, is_box) = pick_filter(&mut b);
     let filter: &dyn Filter = filter.as_ref();
