@@ -155,6 +155,99 @@ pub struct ExtraImages {
     pub channels: Option<ChannelImage>,
 }
 
+impl ExtraImages {
+    /// The film's image and these layers as named planes, ready for
+    /// [`write_exr_planes`](crate::output::exr::write_exr_planes): `R`, `G`, `B` for the image,
+    /// `variance.R` …, `half_a.R` …, `half_b.R` … when kept, and one plane per extra channel
+    /// named by `channel_names` (OpenEXR's `layer.channel` convention: `albedo.R`, `normal.X`,
+    /// `depth.Z`). Planes are row-major.
+    ///
+    /// # Errors
+    /// [`Error::Config`] when `channel_names` does not give one name per extra channel, or a
+    /// name is empty or repeats another plane's; [`Error::Format`] when an image's size differs
+    /// from `image`'s.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig, FilmSample, PixelExtras};
+    /// let mut config = FilmConfig::new(2, 2);
+    /// config.extras = PixelExtras { variance: true, halves: false, channels: 1 };
+    /// let mut film = Film::new(config, &nyquist::filter::Boxcar::default()).unwrap();
+    /// film.add(&FilmSample { channels: &[4.0], ..FilmSample::new([0.5, 0.5], [1.0; 3], 1.0) });
+    /// let image = film.try_image().unwrap().0;
+    /// let planes = film.extra_images().unwrap().planes(&image, &["depth.Z"]).unwrap();
+    /// let names: Vec<&str> = planes.iter().map(|(n, _)| n.as_str()).collect();
+    /// assert_eq!(names, ["R", "G", "B", "variance.R", "variance.G", "variance.B", "depth.Z"]);
+    /// assert_eq!(planes[6].1, [4.0, 0.0, 0.0, 0.0]);
+    /// ```
+    pub fn planes(
+        &self,
+        image: &Image,
+        channel_names: &[&str],
+    ) -> Result<Vec<crate::output::exr::Plane>, Error> {
+        let mut planes = Vec::new();
+        let mut rgb = |prefix: &str, im: &Image| -> Result<(), Error> {
+            if (im.width(), im.height()) != (image.width(), image.height()) {
+                return Err(Error::Format(format!(
+                    "layer {prefix}: {}x{} against the image's {}x{}",
+                    im.width(),
+                    im.height(),
+                    image.width(),
+                    image.height()
+                )));
+            }
+            for (c, name) in ["R", "G", "B"].into_iter().enumerate() {
+                let plane = im.data().iter().skip(c).step_by(3).copied().collect();
+                planes.push((format!("{prefix}{name}"), plane));
+            }
+            Ok(())
+        };
+        rgb("", image)?;
+        if let Some(v) = &self.variance {
+            rgb("variance.", v)?;
+        }
+        if let Some([a, b]) = &self.halves {
+            rgb("half_a.", a)?;
+            rgb("half_b.", b)?;
+        }
+        let channels = self.channels.as_ref().map_or(0, |c| c.channels());
+        if channel_names.len() != channels {
+            return Err(Error::Config(format!(
+                "{} channel names for the film's {channels} extra channels",
+                channel_names.len()
+            )));
+        }
+        if let Some(c) = &self.channels {
+            if (c.width(), c.height()) != (image.width(), image.height()) {
+                return Err(Error::Format(format!(
+                    "channels: {}x{} against the image's {}x{}",
+                    c.width(),
+                    c.height(),
+                    image.width(),
+                    image.height()
+                )));
+            }
+            for (k, name) in channel_names.iter().enumerate() {
+                let plane = c
+                    .data()
+                    .iter()
+                    .skip(k)
+                    .step_by(c.channels())
+                    .copied()
+                    .collect();
+                planes.push((name.to_string(), plane));
+            }
+        }
+        for (i, (name, _)) in planes.iter().enumerate() {
+            if name.is_empty() || planes[..i].iter().any(|(n, _)| n == name) {
+                return Err(Error::Config(format!(
+                    "channel name '{name}' is empty or used twice"
+                )));
+            }
+        }
+        Ok(planes)
+    }
+}
+
 /// An image of any number of `f32` channels per pixel, row-major, interleaved.
 ///
 /// ```

@@ -157,6 +157,59 @@ pub fn read_exr(r: &mut dyn Read) -> Result<Image, Error> {
     Image::from_rgb(w, h, data)
 }
 
+/// A named plane of `f32` samples, row-major: one channel of an image (`R`, `variance.R`,
+/// `depth.Z`).
+pub type Plane = (String, Vec<f32>);
+
+/// Reads every channel of the first layer of an OpenEXR file, by name in the file's
+/// (alphabetical) order, each converted to `f32` and row-major: the reader for
+/// [`write_exr_planes`] and for any single-part file with named layers (`variance.R`, …).
+///
+/// # Errors
+/// [`Error::Format`] if the data is not a readable OpenEXR file or its size does not fit `u32`.
+///
+/// ```
+/// use nyquist_film::output::exr::{read_exr_planes, write_exr_planes};
+/// let mut bytes = Vec::new();
+/// write_exr_planes(&mut bytes, 2, 1, &[("depth.Z", &[1.5, 2.0]), ("R", &[0.25, 0.75])]).unwrap();
+/// let (w, h, planes) = read_exr_planes(&mut bytes.as_slice()).unwrap();
+/// assert_eq!((w, h), (2, 1));
+/// assert_eq!(planes, [("R".to_string(), vec![0.25, 0.75]), ("depth.Z".to_string(), vec![1.5, 2.0])]);
+/// ```
+pub fn read_exr_planes(r: &mut dyn Read) -> Result<(u32, u32, Vec<Plane>), Error> {
+    let mut all = Vec::new();
+    r.read_to_end(&mut all)?;
+    let read = x::read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .all_channels()
+        .first_valid_layer()
+        .all_attributes()
+        .non_parallel()
+        .from_buffered(Cursor::new(all))
+        .map_err(exr_error)?;
+    let layer = read.layer_data;
+    let size = layer.size;
+    let (w, h) = (
+        u32::try_from(size.width()).map_err(|_| Error::Format("OpenEXR: too wide".into()))?,
+        u32::try_from(size.height()).map_err(|_| Error::Format("OpenEXR: too tall".into()))?,
+    );
+    let planes = layer
+        .channel_data
+        .list
+        .into_iter()
+        .map(|c| {
+            let values = match c.sample_data {
+                x::FlatSamples::F16(v) => v.into_iter().map(f32::from).collect(),
+                x::FlatSamples::F32(v) => v,
+                x::FlatSamples::U32(v) => v.into_iter().map(|v| v as f32).collect(),
+            };
+            (c.name.to_string(), values)
+        })
+        .collect();
+    Ok((w, h, planes))
+}
+
 /// An OpenEXR error as the film's: the stream's I/O errors as [`Error::Io`], the rest as
 /// [`Error::Format`].
 fn exr_error(e: ::exr::error::Error) -> Error {
