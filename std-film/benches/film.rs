@@ -1,7 +1,7 @@
 //! Film accumulation: `FilmTile::add_sample` (table lookups) side by side with the same
 //! accumulation evaluating the filter directly (`FilmTile::add_sample_direct`), for Mitchell
 //! r = 2 and box r = ½, 4096 samples per iteration (uniform positions over a 64 × 64 tile, each
-//! with its own radiance); and the parallel render of a 1024 × 1024 zone plate at 16 spp on 1
+//! with its own radiance), and into a film that keeps the variance and A/B halves (`extras`); and the parallel render of a 1024 × 1024 zone plate at 16 spp on 1
 //! and 2 threads.
 //!
 //! Beside both runs the peer the targets are quoted against, pbrt-v3's `FilmTile::AddSample`
@@ -25,7 +25,7 @@ mod pbrt_v3;
 use criterion::measurement::Measurement;
 use criterion::{Criterion, Throughput, criterion_group};
 use nyquist::filter::{Boxcar, Filter, Mitchell};
-use nyquist_film::{Film, FilmConfig, render_tiles};
+use nyquist_film::{Film, FilmConfig, FilmSample, PixelExtras, render_tiles};
 use std::hint::black_box;
 
 const SAMPLES: usize = 4096;
@@ -79,6 +79,28 @@ fn add_sample_group<M: Measurement>(c: &mut Criterion<M>, group_name: &str) {
             b.iter(|| {
                 for (&p, &l) in pos.iter().zip(&rad) {
                     tile.add_sample_direct(filter, black_box(p), l, 1.0);
+                }
+            })
+        });
+        // The same samples into a film that keeps the variance and the A/B halves (every
+        // sample through `FilmTile::add`, with its index): what the extras cost per sample.
+        let config = FilmConfig {
+            extras: PixelExtras {
+                variance: true,
+                halves: true,
+                channels: 0,
+            },
+            ..FilmConfig::new(64, 64)
+        };
+        let kept = Film::new(config, filter).unwrap();
+        let mut tile = kept.tile(spec);
+        group.bench_function(format!("{name}/extras"), |b| {
+            b.iter(|| {
+                for (i, (&p, &l)) in pos.iter().zip(&rad).enumerate() {
+                    tile.add(&FilmSample {
+                        index: i as u64,
+                        ..FilmSample::new(black_box(p), l, 1.0)
+                    });
                 }
             })
         });
@@ -166,6 +188,9 @@ fn report(since: std::time::SystemTime) {
                 continue;
             };
             let mut line = format!("{group:15} {name:12} table {table:6.2} ns");
+            if let Some(e) = per("extras") {
+                line += &format!(" | extras {e:6.2} ns (×{:.2} the table)", e / table);
+            }
             if let Some(d) = per("direct") {
                 line += &format!(" | direct {d:6.2} ns (table ×{:.2} faster)", d / table);
             }
