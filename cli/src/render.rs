@@ -51,7 +51,8 @@ pub use nyquist_lab::render::{
     reference_kind, reference_with_progress, render, render_bytes, rmse, tile_count, warn_if_large,
 };
 pub use nyquist_lab::render::{
-    SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter, parse_size,
+    Aov, Layers, SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter,
+    parse_size, render_layers,
 };
 
 /// Arguments of `nyquist render`.
@@ -108,6 +109,20 @@ pub struct RenderArgs {
     /// an 8-bit grey PNG: ½ + 4·error (mid grey is no error; ±0.125 reach white and black).
     #[arg(long, value_name = "FILE.png")]
     pub error: Option<PathBuf>,
+    /// Keep the variance of each pixel's value (the delta method with the effective sample
+    /// count; docs/film.md) and write it as the layer `variance`; --metrics then prints the
+    /// RMSE it predicts.
+    #[arg(long)]
+    pub variance: bool,
+    /// Keep the means of the two sample classes A and B (by the parity of popcount(index &
+    /// 0xaaaa…), as Cycles splits them) and write them as the layers `half_a` and `half_b`;
+    /// --metrics then prints the RMSE |A − B|/2 predicts.
+    #[arg(long)]
+    pub ab: bool,
+    /// Keep extra channels, comma-separated: albedo, normal (camera space), depth (along the
+    /// view axis; 1e10 for the sky), filtered like the image.
+    #[arg(long, value_enum, value_delimiter = ',', value_name = "LIST")]
+    pub aov: Vec<Aov>,
 }
 
 /// The image formats of `render --format`.
@@ -171,9 +186,129 @@ fn write_error_png(path: &Path, image: &Image, reference: &[f64]) -> Result<()> 
     })
 }
 
+/// The layers `render` keeps (`--variance`, `--ab`, `--aov`).
+///
+/// # Errors
+/// An `--aov` group given twice.
+fn layers(args: &RenderArgs) -> Result<Layers> {
+    for (i, a) in args.aov.iter().enumerate() {
+        if args.aov[..i].contains(a) {
+            let list: Vec<&str> = args.aov.iter().map(|a| a.name()).collect();
+            bail!("--aov {}: {} is given twice", list.join(","), a.name());
+        }
+    }
+    Ok(Layers {
+        variance: args.variance,
+        halves: args.ab,
+        aovs: args.aov.clone(),
+    })
+}
+
+/// The path of layer `name` beside `path`: `out.png` → `out.variance.png`.
+fn layer_path(path: &Path, name: &str, ext: &str) -> PathBuf {
+    let stem = path.file_stem().map_or_else(Default::default, |s| s.to_os_string());
+    let mut file = stem;
+    file.push(format!(".{name}.{ext}"));
+    path.with_file_name(file)
+}
+
+/// Writes the image and its layers: one OpenEXR file of named planes for `.exr`; else the image
+/// to `path` and each layer group beside it (`out.variance.png`, `out.half_a.png`, …,
+/// `out.depth.png`; a group of one channel as grey), each file whole or not at all. Returns the
+/// layer files written.
+fn write_layers(
+    path: &Path,
+    format: ImageFormat,
+    r: &Rendered,
+    layers: &Layers,
+) -> Result<Vec<PathBuf>> {
+    let names = layers.channel_names();
+    if matches!(format, ImageFormat::Exr | ImageFormat::ExrHalf) {
+        let planes = r.extras.planes(&r.image, &names)?;
+        let borrowed: Vec<(&str, &[f32])> = planes
+            .iter()
+            .map(|(n, p)| (n.as_str(), p.as_slice()))
+            .collect();
+        let (w, h) = (r.image.width(), r.image.height());
+        crate::output::write_atomic(path, |out| {
+            Ok(nyquist_film::output::exr::write_exr_planes(
+                out, w, h, &borrowed,
+            )?)
+        })?;
+        return Ok(Vec::new());
+    }
+    if crate::output::is_stdout(path) {
+        bail!(
+            "--output -: the layers of --variance, --ab and --aov go to files beside the image, or into one --format exr stream"
+        );
+    }
+    crate::output::write_atomic(path, |w| {
+        Ok(nyquist_film::output::write_image(w, &r.image, format)?)
+    })?;
+    let ext = if format == ImageFormat::Pfm { "pfm" } else { "png" };
+    let mut groups: Vec<(String, Image)> = Vec::new();
+    if let Some(v) = &r.extras.variance {
+        groups.push(("variance".into(), v.clone()));
+    }
+    if let Some([a, b]) = &r.extras.halves {
+        groups.push(("half_a".into(), a.clone()));
+        groups.push(("half_b".into(), b.clone()));
+    }
+    if let Some(c) = &r.extras.channels {
+        let mut k = 0;
+        for a in &layers.aovs {
+            let n = a.channels().len();
+            let image = Image::from_fn(c.width(), c.height(), |x, y| {
+                let p = &c.pixel(x, y)[k..k + n];
+                if n == 1 { [p[0]; 3] } else { [p[0], p[1], p[2]] }
+            });
+            groups.push((a.name().into(), image));
+            k += n;
+        }
+    }
+    let mut written = Vec::new();
+    for (name, image) in groups {
+        let file = layer_path(path, &name, ext);
+        crate::output::write_output(&file, "--output", |w| {
+            Ok(nyquist_film::output::write_image(w, &image, format)?)
+        })?;
+        written.push(file);
+    }
+    Ok(written)
+}
+
+/// The RMSE a render's kept estimates predict, over the first channel: from the variance,
+/// √(mean Var), and from the halves, √(mean ((A − B)/2)²); `None` for an estimate not kept or
+/// undefined in every pixel (one sample per pixel has no variance).
+fn predicted_rmse(r: &Rendered) -> [Option<f64>; 2] {
+    let mean_sqrt = |values: &mut dyn Iterator<Item = f64>| {
+        let (mut sum, mut n) = (0.0, 0u64);
+        for v in values.filter(|v| v.is_finite()) {
+            sum += v;
+            n += 1;
+        }
+        (n > 0).then(|| (sum / n as f64).sqrt())
+    };
+    let variance = r.extras.variance.as_ref().and_then(|v| {
+        mean_sqrt(&mut v.data().iter().step_by(3).map(|&v| f64::from(v)))
+    });
+    let halves = r.extras.halves.as_ref().and_then(|[a, b]| {
+        mean_sqrt(
+            &mut a
+                .data()
+                .iter()
+                .zip(b.data())
+                .step_by(3)
+                .map(|(&a, &b)| (0.5 * (f64::from(a) - f64::from(b))).powi(2)),
+        )
+    });
+    [variance, halves]
+}
+
 /// Runs `nyquist render`.
 pub fn run(args: &RenderArgs) -> Result<()> {
     let metrics = args.metrics || args.json;
+    let layers = layers(args)?;
     if args.output.is_none() && !metrics && args.error.is_none() {
         bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics, --error FILE.png");
     }
@@ -247,19 +382,30 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     if large {
         bar.show_now();
     }
-    let r = render(
+    let r = render_layers(
         args.scene,
         args.size,
         &sampler,
         &args.filter,
         threads,
+        &layers,
         &mut || bar.inc(1),
     )?;
     bar.finish();
-    if let (Some(p), Some(format)) = (&args.output, format) {
-        crate::output::write_atomic(p, |w| {
-            Ok(nyquist_film::output::write_image(w, &r.image, format)?)
-        })?;
+    match (&args.output, format) {
+        (Some(p), Some(format)) if layers.any() => {
+            let written = write_layers(p, format, &r, &layers)?;
+            if !written.is_empty() {
+                let names: Vec<String> = written.iter().map(|p| p.display().to_string()).collect();
+                crate::output::note(&format!("layers written to {}", names.join(", ")));
+            }
+        }
+        (Some(p), Some(format)) => {
+            crate::output::write_atomic(p, |w| {
+                Ok(nyquist_film::output::write_image(w, &r.image, format)?)
+            })?;
+        }
+        _ => {}
     }
     if let Some(p) = &args.error {
         let filtered = reference(args.scene, args.size, Some(&args.filter), threads)?
@@ -274,11 +420,13 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         let e = rmse(&r.image, &means);
         let sampling = filtered.as_ref().map_or(f64::NAN, |f| rmse(&r.image, f));
         let rate = r.stats.samples as f64 / r.seconds.max(1e-9);
+        let [by_variance, by_halves] = predicted_rmse(&r);
         let mut out = String::new();
         if args.json {
+            let predicted = |p: Option<f64>| p.map_or_else(|| "null".to_string(), json_number);
             writeln!(
                 out,
-                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
+                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
                 json_string(args.scene.name()),
                 args.size[0],
                 args.size[1],
@@ -290,6 +438,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 json_number(e),
                 json_number(psnr(e)),
                 json_number(sampling),
+                predicted(by_variance),
+                predicted(by_halves),
                 r.stats.samples,
                 r.stats.rejected,
                 json_number(r.seconds),
@@ -314,6 +464,22 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 out,
                 "sampling rmse  {sampling:.6} (against the same filter's converged image)"
             )?;
+            let kept = |flag: &str, on: bool, p: Option<f64>, how: &str| match (on, p) {
+                (false, _) => None,
+                (true, Some(p)) => Some(format!("predicted rmse {p:.6} ({how}, {flag})")),
+                (true, None) => Some(format!(
+                    "predicted rmse - ({how}, {flag}: no pixel has two samples in it)"
+                )),
+            };
+            for line in [
+                kept("--variance", args.variance, by_variance, "√ mean variance"),
+                kept("--ab", args.ab, by_halves, "√ mean ((A − B)/2)²"),
+            ]
+            .into_iter()
+            .flatten()
+            {
+                writeln!(out, "{line}")?;
+            }
             writeln!(out, "samples/s      {rate:.0}")?;
             writeln!(out, "samples        {}", r.stats.samples)?;
             writeln!(out, "rejected       {}", r.stats.rejected)?;

@@ -20,7 +20,10 @@ use anyhow::{Result, anyhow};
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler, film_coordinate};
 use nyquist::scramble::Scramble;
-use nyquist_film::{Film, FilmConfig, FilmStats, Image, render_tiles};
+use nyquist_film::extras::ExtraImages;
+use nyquist_film::{
+    Film, FilmConfig, FilmSample, FilmStats, Image, PixelExtras, render_tiles,
+};
 use std::path::{Path, PathBuf};
 
 /// No file system in the browser (`wasm32-unknown-unknown`): there the references are not
@@ -258,6 +261,83 @@ pub struct Rendered {
     pub stats: FilmStats,
     /// Wall-clock seconds of sampling and reconstruction (not the reference, not the file).
     pub seconds: f64,
+    /// The layers kept beside the image ([`Layers`]); all `None` when none were asked for.
+    pub extras: ExtraImages,
+}
+
+/// An extra channel group a render can keep per pixel, from the scene's
+/// [`Surface`](crate::scene::Surface).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "clap", derive(clap::ValueEnum))]
+pub enum Aov {
+    /// The surface's reflectance, as `albedo.R`, `albedo.G`, `albedo.B`.
+    Albedo,
+    /// The camera-space normal, as `normal.X`, `normal.Y`, `normal.Z`.
+    Normal,
+    /// The distance along the view axis, as `depth.Z`.
+    Depth,
+}
+
+impl Aov {
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Aov::Albedo => "albedo",
+            Aov::Normal => "normal",
+            Aov::Depth => "depth",
+        }
+    }
+
+    /// The planes' names (OpenEXR's `layer.channel`).
+    pub fn channels(self) -> &'static [&'static str] {
+        match self {
+            Aov::Albedo => &["albedo.R", "albedo.G", "albedo.B"],
+            Aov::Normal => &["normal.X", "normal.Y", "normal.Z"],
+            Aov::Depth => &["depth.Z"],
+        }
+    }
+
+    /// Appends this group's values for `surface` to `out`.
+    fn values(self, surface: &crate::scene::Surface, out: &mut Vec<f32>) {
+        match self {
+            Aov::Albedo => out.extend([surface.albedo as f32; 3]),
+            Aov::Normal => out.extend(surface.normal.map(|v| v as f32)),
+            Aov::Depth => out.push(surface.depth as f32),
+        }
+    }
+}
+
+/// What a render keeps per pixel beside its image: the variance, the A/B halves, channel
+/// groups ([`Aov`]).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Layers {
+    /// The variance of each pixel's value.
+    pub variance: bool,
+    /// The means of the two sample classes A and B.
+    pub halves: bool,
+    /// Channel groups, in order, each at most once.
+    pub aovs: Vec<Aov>,
+}
+
+impl Layers {
+    /// Whether anything beyond the image is kept.
+    pub fn any(&self) -> bool {
+        self.variance || self.halves || !self.aovs.is_empty()
+    }
+
+    /// The film's extras for these layers.
+    pub fn extras(&self) -> PixelExtras {
+        PixelExtras {
+            variance: self.variance,
+            halves: self.halves,
+            channels: self.channel_names().len() as u16,
+        }
+    }
+
+    /// The names of the channel planes, in order.
+    pub fn channel_names(&self) -> Vec<&'static str> {
+        self.aovs.iter().flat_map(|a| a.channels().iter().copied()).collect()
+    }
 }
 
 /// Renders `scene` at `size` through `sampler` and `filter` on `threads` threads; `tick` is
@@ -270,21 +350,59 @@ pub fn render(
     threads: usize,
     tick: &mut dyn FnMut(),
 ) -> Result<Rendered> {
-    let mut film =
-        Film::new(FilmConfig::new(size[0], size[1]), filter.as_dyn()).map_err(|e| match e {
+    render_layers(
+        scene,
+        size,
+        sampler,
+        filter,
+        threads,
+        &Layers::default(),
+        tick,
+    )
+}
+
+/// [`render`], keeping `layers` beside the image ([`Rendered::extras`]).
+///
+/// ```
+/// use nyquist::{filter::FilterKind, sampler::NamedSampler};
+/// use nyquist_lab::{render::{self, Aov, Layers}, scene::Scene};
+/// let sampler = NamedSampler::new("sobol", [8, 8], 16, 1).unwrap();
+/// let filter = FilterKind::parse("box").unwrap();
+/// let layers = Layers { variance: true, halves: true, aovs: vec![Aov::Depth] };
+/// let r = render::render_layers(Scene::Disk, [8, 8], &sampler, &filter, 1, &layers, &mut || {})
+///     .unwrap();
+/// assert_eq!(r.extras.channels.unwrap().pixel(4, 4), [1.0]); // the disk's plane, z = 1
+/// assert!(r.extras.variance.is_some() && r.extras.halves.is_some());
+/// ```
+pub fn render_layers(
+    scene: Scene,
+    size: [u32; 2],
+    sampler: &NamedSampler,
+    filter: &FilterKind,
+    threads: usize,
+    layers: &Layers,
+    tick: &mut dyn FnMut(),
+) -> Result<Rendered> {
+    let config = FilmConfig {
+        extras: layers.extras(),
+        ..FilmConfig::new(size[0], size[1])
+    };
+    let mut film = Film::new(config, filter.as_dyn()).map_err(|e| match e {
             nyquist_film::Error::OutOfMemory { .. } => {
                 anyhow!("--size {}x{}: {e} (try a smaller --size)", size[0], size[1])
             }
             e => anyhow!("--filter {}: {e}", filter.name()),
         })?;
     let start = Stopwatch::start();
-    render_with(&mut film, sampler, scene, size, threads, tick)
+    render_with(&mut film, sampler, scene, size, threads, layers, tick)
         .map_err(|e| anyhow!("render: {e}"))?;
     let (image, _) = film.try_image().map_err(|e| anyhow!("render: {e}"))?;
+    let extras = film.extra_images().map_err(|e| anyhow!("render: {e}"))?;
     Ok(Rendered {
         image,
         stats: film.stats(),
         seconds: start.seconds(),
+        extras,
     })
 }
 
@@ -304,16 +422,19 @@ fn render_with<S: Sampler + Clone + Sync>(
     scene: Scene,
     size: [u32; 2],
     threads: usize,
+    layers: &Layers,
     tick: &mut dyn FnMut(),
 ) -> Result<(), nyquist_film::Error> {
     let (w, h) = (f64::from(size[0]), f64::from(size[1]));
     let time = scene.uses_time();
+    let extras = layers.any();
     render_tiles(
         film,
         TILE,
         threads,
         |tile, ctx| {
             let mut s = sampler.clone();
+            let mut channels = Vec::new();
             let b = ctx.bounds;
             for py in b.y0..b.y1 {
                 for px in b.x0..b.x1 {
@@ -324,9 +445,22 @@ fn render_with<S: Sampler + Clone + Sync>(
                         let [ox, oy] = s.get_pixel_2d();
                         let t = if time { s.get_1d() } else { 0.5 };
                         let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
-                        let l =
-                            scene.eval(f64::from(p[0]), f64::from(p[1]), f64::from(t), w, h) as f32;
-                        tile.add_sample(p, [l; 3], 1.0);
+                        let (x, y, t) = (f64::from(p[0]), f64::from(p[1]), f64::from(t));
+                        let l = scene.eval(x, y, t, w, h) as f32;
+                        if extras {
+                            let surface = scene.surface(x, y, t, w, h);
+                            channels.clear();
+                            for a in &layers.aovs {
+                                a.values(&surface, &mut channels);
+                            }
+                            tile.add(&FilmSample {
+                                index: u64::from(i),
+                                channels: &channels,
+                                ..FilmSample::new(p, [l; 3], 1.0)
+                            });
+                        } else {
+                            tile.add_sample(p, [l; 3], 1.0);
+                        }
                         s.report(pixel, i, &[l]);
                         i += 1;
                     }

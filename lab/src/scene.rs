@@ -80,6 +80,64 @@ impl Scene {
     }
 }
 
+/// What a scene shows at a film position besides its radiance, for the film's extra channels
+/// ([`Scene::surface`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Surface {
+    /// The surface's reflectance (grey): the pattern a uniform light shows as the radiance.
+    pub albedo: f64,
+    /// The unit normal in camera space (x right, y up, z forward, so a surface facing the
+    /// camera has normal (0, 0, −1)); zero where no surface is hit.
+    pub normal: [f64; 3],
+    /// Distance along the view axis (camera space z); [`SKY_DEPTH`] where no surface is hit.
+    pub depth: f64,
+}
+
+/// The depth of the sky (no surface), as renderers write it (Cycles writes 10¹⁰ too): finite,
+/// so a film's average stays finite.
+pub const SKY_DEPTH: f64 = 1e10;
+
+impl Scene {
+    /// The surface at film position `(x, y)` and time `t` of a `width × height` image: every
+    /// scene but the checkerboard is a pattern on the plane z = 1 facing the camera, with its
+    /// radiance as albedo; the checkerboard's ground is the plane y = −1 seen from the camera's
+    /// height, with the sky above the horizon.
+    ///
+    /// ```
+    /// use nyquist_lab::scene::{Scene, SKY_DEPTH};
+    /// let s = Scene::Disk.surface(128.0, 128.0, 0.5, 256.0, 256.0);
+    /// assert_eq!((s.albedo, s.normal, s.depth), (1.0, [0.0, 0.0, -1.0], 1.0));
+    /// let ground = Scene::Checkerboard.surface(128.0, 200.0, 0.5, 256.0, 256.0);
+    /// assert_eq!(ground.normal, [0.0, 1.0, 0.0]);
+    /// assert!((ground.depth - 128.0 / (200.0 - 0.3 * 256.0)).abs() < 1e-12);
+    /// assert_eq!(Scene::Checkerboard.surface(128.0, 10.0, 0.5, 256.0, 256.0).depth, SKY_DEPTH);
+    /// ```
+    pub fn surface(self, x: f64, y: f64, t: f64, width: f64, height: f64) -> Surface {
+        let albedo = self.eval(x, y, t, width, height);
+        if self == Scene::Checkerboard {
+            let sy = (y - 0.3 * height) / (0.5 * width);
+            return if sy > 0.0 {
+                Surface {
+                    albedo,
+                    normal: [0.0, 1.0, 0.0],
+                    depth: 1.0 / sy,
+                }
+            } else {
+                Surface {
+                    albedo,
+                    normal: [0.0; 3],
+                    depth: SKY_DEPTH,
+                }
+            };
+        }
+        Surface {
+            albedo,
+            normal: [0.0, 0.0, -1.0],
+            depth: 1.0,
+        }
+    }
+}
+
 /// The checkerboard: a camera 1 unit above the plane, looking level, focal length W/2 pixels
 /// (90° horizontal field of view), horizon at 30 % of the height; checks of side ¼ unit.
 fn checkerboard(x: f64, y: f64, width: f64, height: f64) -> f64 {
