@@ -46,13 +46,13 @@ pub fn traced_reference(
 pub use crate::output::check_output;
 pub use nyquist_lab::json::{json_number, json_string};
 pub use nyquist_lab::render::{
+    Aov, Layers, SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter,
+    parse_size, render_layers,
+};
+pub use nyquist_lab::render::{
     FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, ReferenceSource,
     Rendered, TILE, channel0, default_threads, describe_reference, footprint_pixels, psnr,
     reference_kind, reference_with_progress, render, render_bytes, rmse, tile_count, warn_if_large,
-};
-pub use nyquist_lab::render::{
-    Aov, Layers, SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter,
-    parse_size, render_layers,
 };
 
 /// Arguments of `nyquist render`.
@@ -206,7 +206,9 @@ fn layers(args: &RenderArgs) -> Result<Layers> {
 
 /// The path of layer `name` beside `path`: `out.png` → `out.variance.png`.
 fn layer_path(path: &Path, name: &str, ext: &str) -> PathBuf {
-    let stem = path.file_stem().map_or_else(Default::default, |s| s.to_os_string());
+    let stem = path
+        .file_stem()
+        .map_or_else(Default::default, |s| s.to_os_string());
     let mut file = stem;
     file.push(format!(".{name}.{ext}"));
     path.with_file_name(file)
@@ -245,7 +247,11 @@ fn write_layers(
     crate::output::write_atomic(path, |w| {
         Ok(nyquist_film::output::write_image(w, &r.image, format)?)
     })?;
-    let ext = if format == ImageFormat::Pfm { "pfm" } else { "png" };
+    let ext = if format == ImageFormat::Pfm {
+        "pfm"
+    } else {
+        "png"
+    };
     let mut groups: Vec<(String, Image)> = Vec::new();
     if let Some(v) = &r.extras.variance {
         groups.push(("variance".into(), v.clone()));
@@ -260,7 +266,11 @@ fn write_layers(
             let n = a.channels().len();
             let image = Image::from_fn(c.width(), c.height(), |x, y| {
                 let p = &c.pixel(x, y)[k..k + n];
-                if n == 1 { [p[0]; 3] } else { [p[0], p[1], p[2]] }
+                if n == 1 {
+                    [p[0]; 3]
+                } else {
+                    [p[0], p[1], p[2]]
+                }
             });
             groups.push((a.name().into(), image));
             k += n;
@@ -289,9 +299,11 @@ fn predicted_rmse(r: &Rendered) -> [Option<f64>; 2] {
         }
         (n > 0).then(|| (sum / n as f64).sqrt())
     };
-    let variance = r.extras.variance.as_ref().and_then(|v| {
-        mean_sqrt(&mut v.data().iter().step_by(3).map(|&v| f64::from(v)))
-    });
+    let variance = r
+        .extras
+        .variance
+        .as_ref()
+        .and_then(|v| mean_sqrt(&mut v.data().iter().step_by(3).map(|&v| f64::from(v))));
     let halves = r.extras.halves.as_ref().and_then(|[a, b]| {
         mean_sqrt(
             &mut a

@@ -383,3 +383,201 @@ fn scramble_chooses_among_four_and_is_refused_elsewhere() {
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
 }
+
+/// The planes of an OpenEXR file, by name.
+fn exr_planes(path: &std::path::Path) -> Vec<(String, Vec<f32>)> {
+    let bytes = std::fs::read(path).unwrap();
+    nyquist_film::output::exr::read_exr_planes(&mut bytes.as_slice())
+        .unwrap()
+        .2
+}
+
+#[test]
+fn layers_go_into_one_exr_of_named_planes_and_leave_the_image_as_it_was() {
+    let dir = temp_dir("render-layers-exr");
+    let (plain, layered) = (dir.join("plain.exr"), dir.join("layered.exr"));
+    let base = [
+        "render",
+        "--scene",
+        "checkerboard",
+        "--sampler",
+        "sobol",
+        "--size",
+        "24x16",
+    ];
+    let run = |extra: &[&str], out: &std::path::Path| {
+        let mut all = base.to_vec();
+        all.extend_from_slice(extra);
+        all.extend_from_slice(&["-o", out.to_str().unwrap()]);
+        let o = nyquist(&all);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    };
+    run(&[], &plain);
+    run(
+        &["--variance", "--ab", "--aov", "albedo,normal,depth"],
+        &layered,
+    );
+    assert_eq!(files(&dir), ["layered.exr", "plain.exr"]);
+    let (plain, layered) = (exr_planes(&plain), exr_planes(&layered));
+    let names: Vec<&str> = layered.iter().map(|(n, _)| n.as_str()).collect();
+    assert_eq!(
+        names,
+        [
+            "B",
+            "G",
+            "R",
+            "albedo.B",
+            "albedo.G",
+            "albedo.R",
+            "depth.Z",
+            "half_a.B",
+            "half_a.G",
+            "half_a.R",
+            "half_b.B",
+            "half_b.G",
+            "half_b.R",
+            "normal.X",
+            "normal.Y",
+            "normal.Z",
+            "variance.B",
+            "variance.G",
+            "variance.R"
+        ]
+    );
+    // The image is the plain render's, bit for bit.
+    for c in ["R", "G", "B"] {
+        let get = |p: &[(String, Vec<f32>)]| p.iter().find(|(n, _)| n == c).unwrap().1.clone();
+        let bits = |v: Vec<f32>| v.into_iter().map(f32::to_bits).collect::<Vec<_>>();
+        assert_eq!(bits(get(&plain)), bits(get(&layered)), "{c}");
+    }
+    let plane = |name: &str| &layered.iter().find(|(n, _)| n == name).unwrap().1;
+    // The checkerboard's horizon is at 30 % of the height (row 4.8): rows 0–3 see only sky,
+    // rows from 6 on only ground, whose normal is up and whose depth grows toward the horizon.
+    let (w, depth, ny) = (24, plane("depth.Z"), plane("normal.Y"));
+    assert!(depth[..4 * w].iter().all(|&d| d == 1e10));
+    assert!(ny[..4 * w].iter().all(|&n| n == 0.0));
+    assert!(ny[6 * w..].iter().all(|&n| (n - 1.0).abs() < 1e-6));
+    for y in 6..15 {
+        assert!(depth[y * w] > depth[(y + 1) * w], "row {y}");
+    }
+    // The checks' albedo is the radiance of a uniformly lit pattern: the image itself.
+    let image_r = plain.iter().find(|(n, _)| n == "R").unwrap().1.clone();
+    for (a, r) in plane("albedo.R").iter().zip(&image_r) {
+        assert!((a - r).abs() < 1e-5, "{a} against {r}");
+    }
+    assert!(plane("variance.R").iter().all(|&v| v >= 0.0));
+}
+
+#[test]
+fn layers_beside_a_png_are_one_file_per_group() {
+    let dir = temp_dir("render-layers-png");
+    let out = dir.join("out.png");
+    let o = nyquist(&[
+        "render",
+        "--size",
+        "16x16",
+        "--variance",
+        "--ab",
+        "--aov",
+        "depth,albedo",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert_eq!(
+        files(&dir),
+        [
+            "out.albedo.png",
+            "out.depth.png",
+            "out.half_a.png",
+            "out.half_b.png",
+            "out.png",
+            "out.variance.png"
+        ]
+    );
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(err.contains("layers written to"), "{err}");
+    // To stdout only as one EXR stream; a group given twice is refused; nothing is written.
+    let dir = temp_dir("render-layers-refused");
+    let o = nyquist(&["render", "--variance", "-o", "-", "--format", "png"]);
+    assert_one_line_error(&o, "--output -: the layers of --variance, --ab and --aov");
+    let x = dir.join("x.png");
+    let o = nyquist(&[
+        "render",
+        "--aov",
+        "depth,albedo,depth",
+        "-o",
+        x.to_str().unwrap(),
+    ]);
+    assert_one_line_error(&o, "--aov depth,albedo,depth: depth is given twice");
+    assert_one_line_error(
+        &nyquist(&["render", "--aov", "id", "-o", x.to_str().unwrap()]),
+        "--aov",
+    );
+    assert!(files(&dir).is_empty(), "{:?}", files(&dir));
+    let o = nyquist(&[
+        "render", "--size", "8x8", "--ab", "-o", "-", "--format", "exr",
+    ]);
+    assert!(o.status.success());
+    assert_eq!(&o.stdout[..4], &[0x76, 0x2f, 0x31, 0x01]);
+}
+
+#[test]
+fn predicted_rmse_matches_the_error_of_independent_samples() {
+    // With independent random samples both estimates are unbiased for the variance of each
+    // pixel's value, so their root mean over 4096 pixels should match the measured sampling
+    // RMSE: the mean of 4096 squared errors has a relative spread of about 2.2 % (halves) and
+    // 1 % (variance) here, so ±15 % is far outside chance (false alarms below 10⁻⁹).
+    let dir = temp_dir("render-predicted");
+    let json = metrics(
+        &[
+            "--sampler",
+            "random",
+            "--spp",
+            "16",
+            "--size",
+            "64x64",
+            "--variance",
+            "--ab",
+        ],
+        &dir,
+    );
+    let sampling = json_field(&json, "sampling_rmse");
+    for key in ["predicted_rmse_variance", "predicted_rmse_halves"] {
+        let predicted = json_field(&json, key);
+        let ratio = predicted / sampling;
+        assert!(
+            (0.85..1.15).contains(&ratio),
+            "{key} {predicted} against {sampling}"
+        );
+    }
+    // One sample per pixel has no variance: null, and a line that says why.
+    let json = metrics(
+        &[
+            "--sampler",
+            "uniform",
+            "--spp",
+            "1",
+            "--size",
+            "8x8",
+            "--variance",
+        ],
+        &dir,
+    );
+    assert!(json.contains("\"predicted_rmse_variance\":null"), "{json}");
+    let o = nyquist_cached(
+        &[
+            "render",
+            "--spp",
+            "1",
+            "--size",
+            "8x8",
+            "--variance",
+            "--metrics",
+        ],
+        &dir,
+    );
+    assert!(stdout(&o).contains(
+        "predicted rmse - (√ mean variance, --variance: no pixel has two samples in it)"
+    ));
+}
