@@ -110,6 +110,52 @@ impl Film {
         self.setup.pixel_bounds
     }
 
+    /// What the film keeps per pixel beside its RGB sums.
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// assert!(!film.extras().any());
+    /// ```
+    pub fn extras(&self) -> crate::PixelExtras {
+        self.setup.extras
+    }
+
+    /// Starts another pass over the film's tiles: every tile index can be merged again, in
+    /// index order as before, adding to what the film holds (adaptive rendering passes,
+    /// [`crate::adaptive::render_adaptive`]).
+    ///
+    /// # Errors
+    /// [`Error::Config`] while tiles are held waiting for a predecessor that was never merged
+    /// (the pass is not complete).
+    ///
+    /// ```
+    /// use nyquist_film::{Film, FilmConfig};
+    /// let mut film = Film::new(FilmConfig::new(4, 4), &nyquist::filter::Boxcar::default()).unwrap();
+    /// let specs = film.tiles(2).unwrap();
+    /// for pass in 0..2 {
+    ///     for &spec in &specs {
+    ///         let mut tile = film.tile(spec);
+    ///         tile.add_sample([spec.bounds.x0 as f32 + 0.5, spec.bounds.y0 as f32 + 0.5], [1.0; 3], 1.0);
+    ///         film.merge(tile).unwrap();
+    ///     }
+    ///     film.next_pass().unwrap();
+    /// }
+    /// assert_eq!(film.pixel(0, 0).unwrap().weight_sum, 2.0);
+    /// film.merge(film.tile(specs[1])).unwrap(); // held: tile 0 of this pass is missing
+    /// assert!(film.next_pass().is_err());
+    /// ```
+    pub fn next_pass(&mut self) -> Result<(), Error> {
+        if let Some(held) = self.pending.iter().map(|(i, _)| *i).min() {
+            return Err(Error::Config(format!(
+                "the pass is not complete: tile {held} is held waiting for tile {}",
+                self.next_tile
+            )));
+        }
+        self.next_tile = 0;
+        Ok(())
+    }
+
     /// The filter radius the film reconstructs with, `[rx, ry]` in pixels.
     ///
     /// ```
