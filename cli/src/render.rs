@@ -6,6 +6,7 @@ use anyhow::{Context, Result, bail};
 use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::Sampler;
+use nyquist_film::adaptive::AdaptiveConfig;
 use nyquist_film::output::png::{PngColor, PngLayout, write_png_pixels};
 use nyquist_film::{Image, ImageFormat};
 use nyquist_lab::scene::Scene;
@@ -46,8 +47,8 @@ pub fn traced_reference(
 pub use crate::output::check_output;
 pub use nyquist_lab::json::{json_number, json_string};
 pub use nyquist_lab::render::{
-    Aov, Layers, SamplerName, ScrambleName, build_sampler, check_spp_limit, parse_filter,
-    parse_size, render_layers,
+    Aov, Layers, PROGRESSIVE_SAMPLERS, SamplerName, ScrambleName, build_sampler, check_spp_limit,
+    parse_filter, parse_size, render_layers,
 };
 pub use nyquist_lab::render::{
     FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, ReferenceSource,
@@ -123,6 +124,17 @@ pub struct RenderArgs {
     /// view axis; 1e10 for the sky), filtered like the image.
     #[arg(long, value_enum, value_delimiter = ',', value_name = "LIST")]
     pub aov: Vec<Aov>,
+    /// Adaptive sampling by error: --spp becomes the budget (samples per pixel on average); a
+    /// first pass of a quarter of it (at least 16), then passes that double the samples of the
+    /// pixels whose relative error, |A − B|/2 over the value (docs/film.md), is above THRESHOLD,
+    /// worst first, up to 16 × --spp in a pixel. Progressive samplers only (random, halton,
+    /// sobol, zero-two, owen-sobol, zsobol, pmj02, r2).
+    #[arg(long, value_name = "THRESHOLD", value_parser = nyquist_lab::flags::number(0.0, 1e6))]
+    pub adaptive: Option<f64>,
+    /// With --adaptive, also write where the samples went as a grey PNG: log₂ of each pixel's
+    /// samples from the fewest (black) to the most (white).
+    #[arg(long, value_name = "FILE.png")]
+    pub spp_map: Option<PathBuf>,
 }
 
 /// The image formats of `render --format`.
@@ -356,8 +368,44 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             None
         }
     };
-    let sampler = build_sampler(args.sampler, args.spp, args.size, args.seed, args.scramble)?;
-    if sampler.samples_per_pixel() != args.spp {
+    if let Some(p) = &args.spp_map {
+        if args.adaptive.is_none() {
+            bail!("--spp-map {}: only with --adaptive", p.display());
+        }
+        check_output(p, "--spp-map", &["png"])?;
+    }
+    let adaptive = match args.adaptive {
+        Some(threshold) => {
+            if !PROGRESSIVE_SAMPLERS.contains(&args.sampler) {
+                let names: Vec<&str> = PROGRESSIVE_SAMPLERS.iter().map(|s| s.name()).collect();
+                bail!(
+                    "--adaptive {threshold}: --sampler {} lays out a fixed set for its spp; adaptive sampling takes one of {}",
+                    args.sampler.name(),
+                    names.join(", ")
+                );
+            }
+            let mut config = AdaptiveConfig::new(args.spp, threshold);
+            config.max_spp = config.max_spp.min(nyquist_lab::study::MAX_SPP);
+            if config.initial_spp < 2 {
+                bail!(
+                    "--adaptive {threshold}: --spp {} leaves no second sample to compare the first with; give --spp 2 or more",
+                    args.spp
+                );
+            }
+            Some(config)
+        }
+        None => None,
+    };
+    // Adaptive sampling draws up to max_spp samples in a pixel: the sampler is made for them.
+    let sampler_spp = adaptive.map_or(args.spp, |a| a.max_spp);
+    let sampler = build_sampler(
+        args.sampler,
+        sampler_spp,
+        args.size,
+        args.seed,
+        args.scramble,
+    )?;
+    if adaptive.is_none() && sampler.samples_per_pixel() != args.spp {
         eprintln!(
             "nyquist: note: --sampler {} uses {}: --spp {} rounded up to {}",
             args.sampler.name(),
@@ -390,7 +438,15 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             pixels * f64::from(sampler.samples_per_pixel())
         ),
     );
-    let bar = Progress::new(tile_count(args.size), "render");
+    // Adaptive rendering counts samples against its budget (each pass reports its own).
+    let bar = match &adaptive {
+        Some(a) => Progress::with_unit(
+            u64::from(a.budget_spp) * u64::from(args.size[0]) * u64::from(args.size[1]),
+            "adaptive",
+            "samples",
+        ),
+        None => Progress::new(tile_count(args.size), "render"),
+    };
     if large {
         bar.show_now();
     }
@@ -401,9 +457,20 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         &args.filter,
         threads,
         &layers,
-        &mut || bar.inc(1),
+        adaptive.as_ref(),
+        &mut |n| bar.inc(n),
     )?;
     bar.finish();
+    if let (Some(p), Some(report)) = (&args.spp_map, &r.adaptive) {
+        let map = report.spp_image()?;
+        crate::output::write_output(p, "--spp-map", |w| {
+            Ok(nyquist_film::output::write_image(
+                w,
+                &map,
+                ImageFormat::Png,
+            )?)
+        })?;
+    }
     match (&args.output, format) {
         (Some(p), Some(format)) if layers.any() => {
             let written = write_layers(p, format, &r, &layers)?;
@@ -438,7 +505,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             let predicted = |p: Option<f64>| p.map_or_else(|| "null".to_string(), json_number);
             writeln!(
                 out,
-                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
+                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"adaptive\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
                 json_string(args.scene.name()),
                 args.size[0],
                 args.size[1],
@@ -452,6 +519,17 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 json_number(sampling),
                 predicted(by_variance),
                 predicted(by_halves),
+                match (&adaptive, &r.adaptive) {
+                    (Some(a), Some(report)) => format!(
+                        "{{\"threshold\":{},\"mean_spp\":{},\"passes\":{},\"converged\":{},\"max_spp\":{}}}",
+                        json_number(a.threshold),
+                        json_number(report.mean_spp()),
+                        report.passes,
+                        report.converged,
+                        report.spp.iter().max().copied().unwrap_or(0)
+                    ),
+                    _ => "null".to_string(),
+                },
                 r.stats.samples,
                 r.stats.rejected,
                 json_number(r.seconds),
@@ -491,6 +569,19 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             .flatten()
             {
                 writeln!(out, "{line}")?;
+            }
+            if let (Some(a), Some(report)) = (&adaptive, &r.adaptive) {
+                writeln!(
+                    out,
+                    "adaptive       {:.2} spp on average ({} samples), {} passes, {} of {} pixels converged at relative error {} (largest {} spp)",
+                    report.mean_spp(),
+                    report.samples,
+                    report.passes,
+                    report.converged,
+                    report.spp.len(),
+                    a.threshold,
+                    report.spp.iter().max().copied().unwrap_or(0)
+                )?;
             }
             writeln!(out, "samples/s      {rate:.0}")?;
             writeln!(out, "samples        {}", r.stats.samples)?;

@@ -56,6 +56,32 @@ where
     }
 }
 
+/// A parser of finite decimal numbers in `min ..= max` (what `f64` reads: `0.01`, `1e-3`;
+/// surrounding spaces ignored). Its errors give the range: `not in MIN ..= MAX` for a number
+/// outside it, `not a number in MIN ..= MAX` for anything else (`nan`, `inf` included).
+///
+/// ```
+/// let threshold = nyquist_lab::flags::number(0.0, 1.0);
+/// assert_eq!(threshold("1e-2"), Ok(0.01));
+/// assert_eq!(threshold("-0.5").unwrap_err(), "not in 0 ..= 1");
+/// assert_eq!(threshold("nan").unwrap_err(), "not a number in 0 ..= 1");
+/// ```
+pub fn number(min: f64, max: f64) -> impl Fn(&str) -> Result<f64, String> + Clone + Send + Sync {
+    move |s: &str| {
+        let v: f64 = s
+            .trim()
+            .parse()
+            .ok()
+            .filter(|v: &f64| v.is_finite())
+            .ok_or_else(|| format!("not a number in {min} ..= {max}"))?;
+        if (min..=max).contains(&v) {
+            Ok(v)
+        } else {
+            Err(format!("not in {min} ..= {max}"))
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -20,10 +20,9 @@ use anyhow::{Result, anyhow};
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler, film_coordinate};
 use nyquist::scramble::Scramble;
+use nyquist_film::adaptive::{AdaptiveConfig, AdaptiveReport, render_adaptive};
 use nyquist_film::extras::ExtraImages;
-use nyquist_film::{
-    Film, FilmConfig, FilmSample, FilmStats, Image, PixelExtras, render_tiles,
-};
+use nyquist_film::{Film, FilmConfig, FilmSample, FilmStats, Image, PixelExtras, render_tiles};
 use std::path::{Path, PathBuf};
 
 /// No file system in the browser (`wasm32-unknown-unknown`): there the references are not
@@ -263,7 +262,23 @@ pub struct Rendered {
     pub seconds: f64,
     /// The layers kept beside the image ([`Layers`]); all `None` when none were asked for.
     pub extras: ExtraImages,
+    /// What adaptive sampling did, when it drove the render ([`render_layers`]).
+    pub adaptive: Option<AdaptiveReport>,
 }
+
+/// The samplers whose pixels take any number of samples, each a prefix of one sequence (so
+/// adaptive sampling can add samples to a pixel): the others lay out a fixed set for their
+/// spp.
+pub const PROGRESSIVE_SAMPLERS: [SamplerName; 8] = [
+    SamplerName::Random,
+    SamplerName::Halton,
+    SamplerName::Sobol,
+    SamplerName::ZeroTwo,
+    SamplerName::OwenSobol,
+    SamplerName::ZSobol,
+    SamplerName::Pmj02,
+    SamplerName::R2,
+];
 
 /// An extra channel group a render can keep per pixel, from the scene's
 /// [`Surface`](crate::scene::Surface).
@@ -336,7 +351,10 @@ impl Layers {
 
     /// The names of the channel planes, in order.
     pub fn channel_names(&self) -> Vec<&'static str> {
-        self.aovs.iter().flat_map(|a| a.channels().iter().copied()).collect()
+        self.aovs
+            .iter()
+            .flat_map(|a| a.channels().iter().copied())
+            .collect()
     }
 }
 
@@ -357,11 +375,17 @@ pub fn render(
         filter,
         threads,
         &Layers::default(),
-        tick,
+        None,
+        &mut |_| tick(),
     )
 }
 
-/// [`render`], keeping `layers` beside the image ([`Rendered::extras`]).
+/// [`render`], keeping `layers` beside the image ([`Rendered::extras`]), and with `adaptive`
+/// rendered by [`render_adaptive`] (passes that double the samples of the pixels whose
+/// relative error is above the threshold; the film then also keeps the halves or the variance
+/// the estimate needs). `sampler` must then be progressive ([`PROGRESSIVE_SAMPLERS`]) and made
+/// for `adaptive.max_spp` samples per pixel. `tick(n)` reports progress: `n = 1` per finished
+/// tile, or with `adaptive` the samples each pass took.
 ///
 /// ```
 /// use nyquist::{filter::FilterKind, sampler::NamedSampler};
@@ -369,7 +393,7 @@ pub fn render(
 /// let sampler = NamedSampler::new("sobol", [8, 8], 16, 1).unwrap();
 /// let filter = FilterKind::parse("box").unwrap();
 /// let layers = Layers { variance: true, halves: true, aovs: vec![Aov::Depth] };
-/// let r = render::render_layers(Scene::Disk, [8, 8], &sampler, &filter, 1, &layers, &mut || {})
+/// let r = render::render_layers(Scene::Disk, [8, 8], &sampler, &filter, 1, &layers, None, &mut |_| {})
 ///     .unwrap();
 /// assert_eq!(r.extras.channels.unwrap().pixel(4, 4), [1.0]); // the disk's plane, z = 1
 /// assert!(r.extras.variance.is_some() && r.extras.halves.is_some());
@@ -381,21 +405,46 @@ pub fn render_layers(
     filter: &FilterKind,
     threads: usize,
     layers: &Layers,
-    tick: &mut dyn FnMut(),
+    adaptive: Option<&AdaptiveConfig>,
+    tick: &mut dyn FnMut(u64),
 ) -> Result<Rendered> {
+    let mut extras = layers.extras();
+    if let Some(a) = adaptive {
+        match a.estimate {
+            nyquist_film::adaptive::ErrorEstimate::Halves => extras.halves = true,
+            nyquist_film::adaptive::ErrorEstimate::Variance => extras.variance = true,
+        }
+    }
     let config = FilmConfig {
-        extras: layers.extras(),
+        extras,
         ..FilmConfig::new(size[0], size[1])
     };
     let mut film = Film::new(config, filter.as_dyn()).map_err(|e| match e {
-            nyquist_film::Error::OutOfMemory { .. } => {
-                anyhow!("--size {}x{}: {e} (try a smaller --size)", size[0], size[1])
-            }
-            e => anyhow!("--filter {}: {e}", filter.name()),
-        })?;
+        nyquist_film::Error::OutOfMemory { .. } => {
+            anyhow!("--size {}x{}: {e} (try a smaller --size)", size[0], size[1])
+        }
+        e => anyhow!("--filter {}: {e}", filter.name()),
+    })?;
     let start = Stopwatch::start();
-    render_with(&mut film, sampler, scene, size, threads, layers, tick)
-        .map_err(|e| anyhow!("render: {e}"))?;
+    let report = match adaptive {
+        Some(a) => Some(
+            render_adaptive_with(&mut film, sampler, scene, size, threads, layers, a, tick)
+                .map_err(|e| anyhow!("render: {e}"))?,
+        ),
+        None => {
+            render_with(
+                &mut film,
+                sampler,
+                scene,
+                size,
+                threads,
+                layers,
+                &mut || tick(1),
+            )
+            .map_err(|e| anyhow!("render: {e}"))?;
+            None
+        }
+    };
     let (image, _) = film.try_image().map_err(|e| anyhow!("render: {e}"))?;
     let extras = film.extra_images().map_err(|e| anyhow!("render: {e}"))?;
     Ok(Rendered {
@@ -403,6 +452,7 @@ pub fn render_layers(
         stats: film.stats(),
         seconds: start.seconds(),
         extras,
+        adaptive: report,
     })
 }
 
@@ -468,6 +518,58 @@ fn render_with<S: Sampler + Clone + Sync>(
             }
         },
         |_, _| tick(),
+    )
+}
+
+/// [`render_with`] driven by [`render_adaptive`]: each pass adds samples `indices` of the
+/// pixels it chose, as the sample loop adds them.
+#[allow(clippy::too_many_arguments)]
+fn render_adaptive_with<S: Sampler + Clone + Sync>(
+    film: &mut Film,
+    sampler: &S,
+    scene: Scene,
+    size: [u32; 2],
+    threads: usize,
+    layers: &Layers,
+    config: &AdaptiveConfig,
+    tick: &mut dyn FnMut(u64),
+) -> Result<AdaptiveReport, nyquist_film::Error> {
+    let mut done = 0;
+    let (w, h) = (f64::from(size[0]), f64::from(size[1]));
+    let time = scene.uses_time();
+    render_adaptive(
+        film,
+        config,
+        TILE,
+        threads,
+        |tile, pixel, indices| {
+            let mut s = sampler.clone();
+            let mut channels = Vec::new();
+            for i in indices {
+                // Below max_spp, which the caller made the sampler for (u32).
+                let i = i as u32;
+                s.start_pixel_sample(pixel, i, 0);
+                let [ox, oy] = s.get_pixel_2d();
+                let t = if time { s.get_1d() } else { 0.5 };
+                let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
+                let (x, y, t) = (f64::from(p[0]), f64::from(p[1]), f64::from(t));
+                let l = scene.eval(x, y, t, w, h) as f32;
+                let surface = scene.surface(x, y, t, w, h);
+                channels.clear();
+                for a in &layers.aovs {
+                    a.values(&surface, &mut channels);
+                }
+                tile.add(&FilmSample {
+                    index: u64::from(i),
+                    channels: &channels,
+                    ..FilmSample::new(p, [l; 3], 1.0)
+                });
+            }
+        },
+        |_, samples| {
+            tick(samples - done);
+            done = samples;
+        },
     )
 }
 
