@@ -42,7 +42,9 @@
 # failed), MUTANTS_TIMEOUT
 # (seconds of tests per mutant, default 60), MUTANTS_OPT_LEVEL (the core's opt-level, default 0
 # as in scripts/mutants.sh), MUTANTS_OUT (default $CARGO_TARGET_DIR/mutants-diff, else
-# target/mutants-diff).
+# target/mutants-diff), MUTANTS_ITERATE=1 (when the run in MUTANTS_OUT had the same base: keep
+# its catches and unviable mutants, test the rest with cargo-mutants' --iterate; for a change
+# that grew, or whose missed mutants got tests, since that run).
 #
 # Exit status: 0 when nothing was missed (or there was nothing to test) and at least half of the
 # change's mutants were tested or covered by rows (those the time box left untested are named);
@@ -223,7 +225,13 @@ fi
 # A caught proptest failure need not be shrunk: one step is enough to count it.
 export PROPTEST_MAX_SHRINK_ITERS=${PROPTEST_MAX_SHRINK_ITERS:-1}
 
-rm -rf "$OUT"
+ITERATE=${MUTANTS_ITERATE:-0}
+if [ "$ITERATE" = 1 ] && [ -s "$OUT/summary" ] && grep -q -x "run_base=$base" "$OUT/summary"; then
+    echo "iterating on the run in $OUT (same base): its catches stand, the rest are tested"
+else
+    ITERATE=0
+    rm -rf "$OUT"
+fi
 mkdir -p "$OUT"
 diff="$OUT/change.diff"
 # The diff of the working tree against BASE: with --in-place it equals HEAD's; otherwise it is
@@ -255,7 +263,10 @@ for file in "${files[@]}"; do
     fi
     cargo_args=("--cargo-arg=$config")
     for t in ${targets:---lib}; do cargo_args+=("--cargo-arg=$t"); done
-    n=$(cargo mutants --list --in-diff "$diff" --package "$package" --file "$file" 2>/dev/null | grep -c . || true)
+    dir="$OUT/${file//\//-}"
+    mkdir -p "$dir"
+    cargo mutants --list --in-diff "$diff" --package "$package" --file "$file" 2>/dev/null >"$dir/listed.txt" || true
+    n=$(count "$dir/listed.txt")
     [ "$n" -gt 0 ] || continue
     total=$((total + n))
     read -r module at <<<"$(covering_row "$file")"
@@ -278,11 +289,13 @@ for file in "${files[@]}"; do
         listed=$(cargo test --quiet -p "$package" --lib "$config" -- --list $filters 2>/dev/null | grep -c ': test$' || true)
         [ "$listed" -gt 0 ] || filters=
     fi
-    dir="$OUT/${file//\//-}"
     # shellcheck disable=SC2206 # the filters are separate libtest arguments
     cmd=(cargo mutants --in-diff "$diff" --package "$package" --file "$file" --test-package "$package"
         --no-shuffle --timeout "$TIMEOUT" --baseline skip --output "$dir" "${cargo_args[@]}")
     [ $in_place = 1 ] && cmd+=(--in-place) # one mutant at a time (the default), as it must be here
+    # An earlier run's catches (and unviable mutants) stand: cargo-mutants skips them and lists
+    # them in previously_caught.txt (a mutant whose line moved is tested again).
+    [ "$ITERATE" = 1 ] && [ -d "$dir/mutants.out" ] && cmd+=(--iterate)
     # shellcheck disable=SC2206 # the filters are separate libtest arguments
     [ -n "$filters" ] && cmd+=(-- -- $filters)
     echo "== $file: $n mutants, at most ${left} s: ${cmd[*]}"
@@ -295,7 +308,12 @@ for file in "${files[@]}"; do
         124 | 130) echo "$file: the time box ran out during this file" ;;
         *) echo "$file: cargo mutants exited $rc" >&2; exit 1 ;;
     esac
-    c=$(count "$res/caught.txt") m=$(count "$res/missed.txt")
+    # Earlier catches of mutants still on the changed lines count as caught.
+    earlier=0
+    if [ -s "$res/previously_caught.txt" ]; then
+        earlier=$(grep -c -F -x -f "$dir/listed.txt" "$res/previously_caught.txt" || true)
+    fi
+    c=$(($(count "$res/caught.txt") + earlier)) m=$(count "$res/missed.txt")
     u=$(count "$res/unviable.txt") t=$(count "$res/timeout.txt")
     caught=$((caught + c)) missed=$((missed + m)) unviable=$((unviable + u)) timeouts=$((timeouts + t))
     tested=$((tested + c + m + u + t))

@@ -10,6 +10,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod adaptive_study;
 pub mod experiment;
 pub mod geometry;
 pub mod scene;
@@ -20,10 +21,11 @@ use std::time::Instant;
 use anyhow::{Context, Result, anyhow};
 use nyquist::filter::FilterKind;
 use nyquist::sampler::NamedSampler;
-use nyquist_film::{Film, FilmConfig, Image, render_tiles};
+use nyquist_film::adaptive::{AdaptiveConfig, AdaptiveReport, render_adaptive};
+use nyquist_film::{Film, FilmConfig, FilmSample, Image, PixelExtras, render_tiles};
 
 use crate::scene::Scene;
-use crate::trace::{PathLayout, for_each_sample, for_each_sample_stateless};
+use crate::trace::{PathLayout, for_each_sample, for_each_sample_stateless, for_pixel_samples};
 
 /// Builds the sampler called `name` ([`NamedSampler::new`]: any of
 /// [`nyquist::sampler::NAMES`] or [`nyquist::sampler::OTHER_NAMES`], such as `halton-plain` and
@@ -60,6 +62,9 @@ pub struct RenderConfig {
     /// Draw the values through the stateless layer (`camera_sample`, `get_array_2d`,
     /// `get_2d`, `get_1d`) instead of `SampleLayout` and `PixelRangeSampler`.
     pub stateless: bool,
+    /// Render adaptively ([`render_adaptive`]; `spp` is then its budget and the sampler is
+    /// made for its `max_spp`); the stateless layer draws the values.
+    pub adaptive: Option<AdaptiveConfig>,
 }
 
 impl RenderConfig {
@@ -77,6 +82,7 @@ impl RenderConfig {
             tile_size: 16,
             filter: FilterKind::parse("box").expect("the box filter parses"),
             stateless: false,
+            adaptive: None,
         }
     }
 }
@@ -90,6 +96,8 @@ pub struct Rendered {
     pub samples: u64,
     /// Wall-clock seconds of the tile rendering (not the film's resolve).
     pub seconds: f64,
+    /// What adaptive sampling did, when it drove the render.
+    pub adaptive: Option<AdaptiveReport>,
 }
 
 /// Renders `config`; `progress(done, total)` after each tile.
@@ -104,6 +112,9 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
             scene::SCENE_NAMES
         )
     })?;
+    if let Some(a) = &config.adaptive {
+        return render_adaptively(config, a, scene);
+    }
     let sampler = build_sampler(&config.sampler, config.size, config.spp, config.seed)?;
     let layout = PathLayout::new(&sampler, config.light_samples)
         .map_err(|e| anyhow!("light samples: {e}"))?;
@@ -149,5 +160,52 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
         image: film.try_image().context("render")?.0,
         samples,
         seconds,
+        adaptive: None,
+    })
+}
+
+/// [`render`] driven by [`render_adaptive`] with the halves' estimate.
+fn render_adaptively(config: &RenderConfig, a: &AdaptiveConfig, scene: Scene) -> Result<Rendered> {
+    let sampler = build_sampler(&config.sampler, config.size, a.max_spp, config.seed)?;
+    let film_config = FilmConfig {
+        extras: PixelExtras {
+            halves: true,
+            ..PixelExtras::default()
+        },
+        ..FilmConfig::new(config.size[0], config.size[1])
+    };
+    let mut film = Film::new(film_config, config.filter.as_dyn()).context("film")?;
+    let start = Instant::now();
+    let report = render_adaptive(
+        &mut film,
+        a,
+        config.tile_size,
+        config.threads,
+        |tile, pixel, indices| {
+            let n = config.light_samples;
+            for_pixel_samples(
+                &scene,
+                sampler.clone(),
+                n,
+                config.size,
+                pixel,
+                indices,
+                |p, i, l| {
+                    tile.add(&FilmSample {
+                        index: i,
+                        ..FilmSample::new(p, l.0, 1.0)
+                    })
+                },
+            );
+        },
+        |_, _| {},
+    )
+    .context("render")?;
+    let seconds = start.elapsed().as_secs_f64();
+    Ok(Rendered {
+        image: film.try_image().context("render")?.0,
+        samples: report.samples,
+        seconds,
+        adaptive: Some(report),
     })
 }

@@ -287,3 +287,31 @@ pub fn for_each_sample<S: Sampler>(
     }
     Ok(())
 }
+
+/// The camera samples `indices` of `pixel`, traced through the stateless layer as
+/// [`for_each_sample_stateless`] traces them: `f(p_film, index, radiance)` for each. For
+/// adaptive rendering, which adds samples to a pixel pass by pass.
+pub fn for_pixel_samples<S: Sampler>(
+    scene: &Scene,
+    mut sampler: S,
+    light_samples: u32,
+    resolution: [u32; 2],
+    pixel: [u32; 2],
+    indices: core::ops::Range<u64>,
+    mut f: impl FnMut([f32; 2], u64, V3),
+) {
+    let first_light = sampler.round_size(light_samples).max(1);
+    let mut buf = Vec::new();
+    for i in indices {
+        // Below the sampler's spp, which the caller made it for (u32).
+        let camera = sampler.camera_sample(pixel, i as u32);
+        let mut src = Stateless {
+            sampler: &mut sampler,
+            first_light,
+            buf: core::mem::take(&mut buf),
+        };
+        let l = radiance(scene, &camera, &mut src, resolution);
+        buf = src.buf;
+        f(camera.p_film, i, l);
+    }
+}

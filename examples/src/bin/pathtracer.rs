@@ -4,6 +4,7 @@
 use std::io::IsTerminal;
 use std::path::PathBuf;
 
+use anyhow::Context;
 use anyhow::{Result, anyhow, bail};
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
@@ -11,8 +12,9 @@ use nyquist::filter::FilterKind;
 use nyquist_examples::experiment::{
     Experiment, contact_sheet, markdown, markdown_equal_time, pixel_reference, pixel_study,
 };
-use nyquist_examples::{RenderConfig, render};
-use nyquist_film::write_image_file;
+use nyquist_examples::{RenderConfig, adaptive_study, render};
+use nyquist_film::adaptive::AdaptiveConfig;
+use nyquist_film::{Image, write_image_file};
 
 #[derive(Parser, Debug)]
 #[command(
@@ -38,6 +40,47 @@ enum Command {
     ///
     /// Example: pathtracer converge --pixel 100,180 --samplers random,sobol,owen-sobol
     Converge(ConvergeArgs),
+    /// Adaptive sampling by error against uniform spp and the contrast-test sampler at equal
+    /// RMSE, against a cached converged reference: prints a Markdown table, optionally writes
+    /// the spp map of the middle budget.
+    ///
+    /// Example: pathtracer adaptive --scene dof --budgets 32,64,128 --map dof-spp.png
+    Adaptive(AdaptiveArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct AdaptiveArgs {
+    /// Scene.
+    #[arg(long, default_value = "cornell")]
+    scene: String,
+    /// Image size WxH.
+    #[arg(long, default_value = "128x128", value_parser = parse_size)]
+    size: [u32; 2],
+    /// The progressive sampler of the uniform and adaptive renders.
+    #[arg(long, default_value = "owen-sobol")]
+    sampler: String,
+    /// Budgets (samples per pixel on average), comma-separated.
+    #[arg(long, value_delimiter = ',', default_value = "32,64,128")]
+    budgets: Vec<u32>,
+    /// Relative error at which a pixel stops.
+    #[arg(long, default_value_t = 0.01)]
+    threshold: f64,
+    /// Added to a pixel's value in the relative error's denominator (large: the error is
+    /// nearly absolute).
+    #[arg(long, default_value_t = 0.01)]
+    floor: f64,
+    /// Camera samples per pixel of the reference (× 4 light samples).
+    #[arg(long, default_value_t = 65536)]
+    reference_spp: u32,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
+    /// Write the spp map of the middle budget's adaptive render here (PNG).
+    #[arg(long)]
+    map: Option<PathBuf>,
+    /// Write the middle budget's uniform and adaptive renders side by side here.
+    #[arg(long)]
+    sheet: Option<PathBuf>,
 }
 
 #[derive(clap::Args, Debug)]
@@ -100,6 +143,15 @@ struct RenderArgs {
     /// only as far as each path goes) instead of SampleLayout and PixelRangeSampler.
     #[arg(long)]
     stateless: bool,
+    /// Adaptive sampling by error (docs/film.md): --spp becomes the budget; pixels whose
+    /// relative error |A − B|/2 over the value is above THRESHOLD double their samples, worst
+    /// first. Progressive samplers (owen-sobol, sobol, pmj02, zsobol, halton, random).
+    #[arg(long, value_name = "THRESHOLD")]
+    adaptive: Option<f64>,
+    /// With --adaptive, also write the spp map (PNG: log₂ spp from the fewest, black, to the
+    /// most, white).
+    #[arg(long)]
+    spp_map: Option<PathBuf>,
     /// Output image (.exr, .png or .pfm).
     #[arg(short, long)]
     output: PathBuf,
@@ -195,10 +247,30 @@ fn main() -> Result<()> {
             config.threads = threads(a.threads);
             config.filter = filter;
             config.stateless = a.stateless;
+            if a.spp_map.is_some() && a.adaptive.is_none() {
+                bail!("--spp-map: only with --adaptive");
+            }
+            if let Some(t) = a.adaptive {
+                if !(t.is_finite() && t >= 0.0) {
+                    bail!("--adaptive {t}: not a threshold (a relative error ≥ 0)");
+                }
+                config.adaptive = Some(AdaptiveConfig::new(a.spp, t));
+            }
             let bar = bar("render", "tiles");
             let out = render(&config, tick(&bar))?;
             bar.finish_and_clear();
             write_image_file(&a.output, &out.image)?;
+            if let Some(report) = &out.adaptive {
+                eprintln!(
+                    "adaptive: {:.2} spp on average over {} passes, {} pixels converged",
+                    report.mean_spp(),
+                    report.passes,
+                    report.converged
+                );
+                if let Some(p) = &a.spp_map {
+                    write_image_file(p, &report.spp_image()?)?;
+                }
+            }
             let per_thread = out.samples as f64 / out.seconds / config.threads as f64;
             eprintln!(
                 "{} camera samples in {:.3} s on {} threads: {:.0} samples/s, {:.0} per thread",
@@ -210,6 +282,7 @@ fn main() -> Result<()> {
             );
         }
         Command::Converge(a) => converge(a)?,
+        Command::Adaptive(a) => adaptive(a)?,
         Command::Experiment(a) => {
             if a.runs == 0 {
                 bail!("--runs must be positive");
@@ -236,6 +309,67 @@ fn main() -> Result<()> {
                 write_image_file(&p, &contact_sheet(&cells, &reference))?;
             }
         }
+    }
+    Ok(())
+}
+
+fn adaptive(a: AdaptiveArgs) -> Result<()> {
+    if a.budgets.is_empty() || a.budgets.iter().any(|&b| b < 16) {
+        bail!("--budgets: at least one, each at least 16 (the first pass takes 16)");
+    }
+    let threads = threads(a.threads);
+    let e = Experiment {
+        scene: a.scene.clone(),
+        size: a.size,
+        samplers: Vec::new(),
+        runs: 1,
+        seed: 1,
+        threads,
+        reference_spp: a.reference_spp,
+    };
+    let bar1 = bar("reference", "tiles");
+    let reference = e.reference(tick(&bar1))?;
+    bar1.finish_and_clear();
+    let mut base = RenderConfig::new(&a.scene);
+    base.size = a.size;
+    base.threads = threads;
+    let bar2 = bar("study", "renders");
+    let rows = adaptive_study::run(
+        &base,
+        &a.sampler,
+        &a.budgets,
+        (a.threshold, a.floor),
+        &reference,
+        tick(&bar2),
+    )?;
+    bar2.finish_and_clear();
+    println!(
+        "{} at {}x{}, {}: RMSE against a {}x4-spp reference.\n",
+        a.scene, a.size[0], a.size[1], a.sampler, a.reference_spp
+    );
+    print!("{}", adaptive_study::markdown(&rows));
+    let middle = a.budgets[a.budgets.len() / 2];
+    let adaptive = rows
+        .iter()
+        .find(|r| r.report.is_some() && r.spp == middle)
+        .context("the middle budget's adaptive render")?;
+    if let (Some(p), Some(report)) = (&a.map, &adaptive.report) {
+        write_image_file(p, &report.spp_image()?)?;
+    }
+    if let Some(p) = &a.sheet {
+        let uniform = rows
+            .iter()
+            .find(|r| r.method == "uniform" && r.spp == middle)
+            .context("the middle budget's uniform render")?;
+        let (w, h) = (a.size[0], a.size[1]);
+        let sheet = Image::from_fn(2 * w, h, |x, y| {
+            if x < w {
+                uniform.image.get(x, y)
+            } else {
+                adaptive.image.get(x - w, y)
+            }
+        });
+        write_image_file(p, &sheet)?;
     }
     Ok(())
 }
