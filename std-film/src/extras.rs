@@ -673,6 +673,56 @@ mod tests {
     }
 
     #[test]
+    fn the_error_estimates_are_the_square_root_and_half_the_difference() {
+        let e = Estimate {
+            value: [1.0; 3],
+            variance: Some([0.04, 0.09, 0.0]),
+            halves: Some([[1.5, 1.0, 0.0], [0.5, 1.25, 0.0]]),
+        };
+        assert_eq!(e.standard_error(), Some([0.2, 0.3, 0.0]));
+        assert_eq!(e.half_difference(), Some([0.5, 0.125, 0.0]));
+        let none = Estimate {
+            variance: None,
+            halves: None,
+            ..e
+        };
+        assert_eq!((none.standard_error(), none.half_difference()), (None, None));
+    }
+
+    #[test]
+    fn a_channel_image_gives_each_channel_and_no_other() {
+        let mut c = ChannelImage::new(2, 1, 3).unwrap();
+        c.data_mut().copy_from_slice(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(c.channel_image(0).unwrap().data(), [1.0, 1.0, 1.0, 4.0, 4.0, 4.0]);
+        assert_eq!(c.channel_image(2).unwrap().data(), [3.0, 3.0, 3.0, 6.0, 6.0, 6.0]);
+        assert!(c.channel_image(3).is_none());
+        assert!(ChannelImage::new(2, 1, 0).is_err());
+        assert!(ChannelImage::new(0, 1, 2).is_err());
+    }
+
+    #[test]
+    fn plane_names_must_be_given_once_and_not_empty() {
+        let image = Image::new(1, 1).unwrap();
+        let layers = ExtraImages {
+            channels: Some(ChannelImage::new(1, 1, 1).unwrap()),
+            ..ExtraImages::default()
+        };
+        assert_eq!(layers.planes(&image, &["depth.Z"]).unwrap().len(), 4);
+        for bad in ["", "G"] {
+            let e = layers.planes(&image, &[bad]).unwrap_err();
+            assert_eq!(
+                e.to_string(),
+                format!("invalid configuration: channel name '{bad}' is empty or used twice")
+            );
+        }
+        let e = layers.planes(&image, &[]).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "invalid configuration: 0 channel names for the film's 1 extra channels"
+        );
+    }
+
+    #[test]
     fn extra_sums_add_and_merge_each_part() {
         let extras = PixelExtras {
             variance: true,
