@@ -368,16 +368,38 @@ pub fn render(
     threads: usize,
     tick: &mut dyn FnMut(),
 ) -> Result<Rendered> {
-    render_layers(
+    // Its own path, not `render_layers`: a program that only renders (the explorer) carries
+    // none of the layers' or adaptive sampling's code.
+    let mut film = new_film(FilmConfig::new(size[0], size[1]), size, filter)?;
+    let start = Stopwatch::start();
+    render_with::<_, false>(
+        &mut film,
+        sampler,
         scene,
         size,
-        sampler,
-        filter,
         threads,
         &Layers::default(),
-        None,
-        &mut |_| tick(),
+        tick,
     )
+    .map_err(|e| anyhow!("render: {e}"))?;
+    let (image, _) = film.try_image().map_err(|e| anyhow!("render: {e}"))?;
+    Ok(Rendered {
+        image,
+        stats: film.stats(),
+        seconds: start.seconds(),
+        extras: ExtraImages::default(),
+        adaptive: None,
+    })
+}
+
+/// A film for `config`, its errors worded for the command line's flags.
+fn new_film(config: FilmConfig, size: [u32; 2], filter: &FilterKind) -> Result<Film> {
+    Film::new(config, filter.as_dyn()).map_err(|e| match e {
+        nyquist_film::Error::OutOfMemory { .. } => {
+            anyhow!("--size {}x{}: {e} (try a smaller --size)", size[0], size[1])
+        }
+        e => anyhow!("--filter {}: {e}", filter.name()),
+    })
 }
 
 /// [`render`], keeping `layers` beside the image ([`Rendered::extras`]), and with `adaptive`
@@ -419,12 +441,7 @@ pub fn render_layers(
         extras,
         ..FilmConfig::new(size[0], size[1])
     };
-    let mut film = Film::new(config, filter.as_dyn()).map_err(|e| match e {
-        nyquist_film::Error::OutOfMemory { .. } => {
-            anyhow!("--size {}x{}: {e} (try a smaller --size)", size[0], size[1])
-        }
-        e => anyhow!("--filter {}: {e}", filter.name()),
-    })?;
+    let mut film = new_film(config, size, filter)?;
     let start = Stopwatch::start();
     let report = match adaptive {
         Some(a) => Some(
@@ -432,7 +449,7 @@ pub fn render_layers(
                 .map_err(|e| anyhow!("render: {e}"))?,
         ),
         None => {
-            render_with(
+            render_with::<_, true>(
                 &mut film,
                 sampler,
                 scene,
@@ -466,7 +483,7 @@ pub fn tile_count(size: [u32; 2]) -> u64 {
 /// [`nyquist::sampler::camera_sample`] reads them; the lens dimensions are not drawn because no
 /// scene has a lens. Every value depends only on (pixel, sample, dimension, seed), and the film
 /// merges tiles in order, so the image is the same for every thread count.
-fn render_with<S: Sampler + Clone + Sync>(
+fn render_with<S: Sampler + Clone + Sync, const EXTRAS: bool>(
     film: &mut Film,
     sampler: &S,
     scene: Scene,
@@ -477,7 +494,6 @@ fn render_with<S: Sampler + Clone + Sync>(
 ) -> Result<(), nyquist_film::Error> {
     let (w, h) = (f64::from(size[0]), f64::from(size[1]));
     let time = scene.uses_time();
-    let extras = layers.any();
     render_tiles(
         film,
         TILE,
@@ -497,7 +513,7 @@ fn render_with<S: Sampler + Clone + Sync>(
                         let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
                         let (x, y, t) = (f64::from(p[0]), f64::from(p[1]), f64::from(t));
                         let l = scene.eval(x, y, t, w, h) as f32;
-                        if extras {
+                        if EXTRAS {
                             let surface = scene.surface(x, y, t, w, h);
                             channels.clear();
                             for a in &layers.aovs {
