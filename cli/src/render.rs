@@ -419,14 +419,25 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         );
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
+    // The layers: the film's extra sums, and their images (4 bytes a value).
+    let mut extras = layers.extras();
+    if adaptive.is_some() {
+        extras.halves = true;
+    }
+    let values = 3 * (u64::from(extras.variance) + 2 * u64::from(extras.halves))
+        + u64::from(extras.channels);
+    let layer_bytes = (extras.bytes_per_pixel() as u64 + 4 * values)
+        * u64::from(args.size[0])
+        * u64::from(args.size[1]);
     nyquist_lab::memory::check(
         &format!(
-            "--size {}x{}{}",
+            "--size {}x{}{}{}",
             args.size[0],
             args.size[1],
-            if metrics { " with --metrics" } else { "" }
+            if metrics { " with --metrics" } else { "" },
+            if extras.any() { " and its layers" } else { "" }
         ),
-        render_bytes(args.scene, args.size, metrics),
+        render_bytes(args.scene, args.size, metrics) + layer_bytes,
     )?;
     let footprint = footprint_pixels(args.size, &args.filter);
     let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
@@ -521,7 +532,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 predicted(by_halves),
                 match (&adaptive, &r.adaptive) {
                     (Some(a), Some(report)) => format!(
-                        "{{\"threshold\":{},\"mean_spp\":{},\"passes\":{},\"converged\":{},\"max_spp\":{}}}",
+                        "{{\"threshold\":{},\"mean_spp\":{},\"passes\":{},\"converged\":{},\"largest_spp\":{}}}",
                         json_number(a.threshold),
                         json_number(report.mean_spp()),
                         report.passes,
