@@ -8,8 +8,9 @@
 //! (`floor` keeps dark pixels from needing an absolute error of 0). A pixel stops when it and
 //! its eight neighbours are at or below the threshold (with few samples the halves can agree by
 //! chance on an edge, rarely in a whole neighbourhood; Cycles dilates its active pixels the same
-//! way); the others, worst first (ties by pixel index), double their samples, as many as the
-//! remaining budget pays for. Doubling keeps each pixel's samples a power-of-two prefix
+//! way); the others, worst first by the mean error of their 3 × 3 neighbourhood (so that one
+//! pixel's noisy estimate does not decide alone; ties by pixel index), double their samples, as
+//! many as the remaining budget pays for. Doubling keeps each pixel's samples a power-of-two prefix
 //! of its sequence, where (0,2) sequences such as Sobol and PMJ(0,2) are nets. Every decision
 //! is made on the calling thread from the merged film, so the result is the same for any thread
 //! count.
@@ -219,7 +220,8 @@ impl AdaptiveReport {
 ///     }
 /// }, |_, _| {}).unwrap();
 /// assert_eq!(report.spp[0], 16); // flat: converged after the first pass
-/// assert!(report.spp[7] > 64);
+/// let noisy: u32 = (0..4).flat_map(|y| &report.spp[8 * y + 4..8 * y + 8]).sum();
+/// assert!(noisy > 3 * 64 * 16 / 2); // the 16 noisy pixels took more than 1.5 times their share
 /// assert!(report.samples <= 64 * 32);
 /// ```
 pub fn render_adaptive(
@@ -288,6 +290,19 @@ pub fn render_adaptive(
                     .all(|u| errors[v * width + u] <= config.threshold)
             })
         };
+        // A pixel's rank: the mean error of its 3 × 3 neighbourhood, so that one pixel's noisy
+        // estimate does not decide alone where samples go.
+        let smoothed = |i: usize| {
+            let (x, y) = (i % width, i / width);
+            let (mut sum, mut n) = (0.0, 0.0);
+            for v in y.saturating_sub(1)..(y + 2).min(height) {
+                for u in x.saturating_sub(1)..(x + 2).min(width) {
+                    sum += errors[v * width + u];
+                    n += 1.0;
+                }
+            }
+            sum / n
+        };
         // The pixels still open that can take more, worst first.
         let mut open: Vec<(f64, usize)> = Vec::new();
         let mut converged = 0u64;
@@ -295,7 +310,7 @@ pub fn render_adaptive(
             if settled(i) {
                 converged += 1;
             } else if n < config.max_spp {
-                open.push((errors[i], i));
+                open.push((smoothed(i), i));
             }
         }
         open.sort_by(|a, b| b.0.total_cmp(&a.0).then(a.1.cmp(&b.1)));

@@ -686,15 +686,25 @@ mod tests {
             halves: None,
             ..e
         };
-        assert_eq!((none.standard_error(), none.half_difference()), (None, None));
+        assert_eq!(
+            (none.standard_error(), none.half_difference()),
+            (None, None)
+        );
     }
 
     #[test]
     fn a_channel_image_gives_each_channel_and_no_other() {
         let mut c = ChannelImage::new(2, 1, 3).unwrap();
-        c.data_mut().copy_from_slice(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
-        assert_eq!(c.channel_image(0).unwrap().data(), [1.0, 1.0, 1.0, 4.0, 4.0, 4.0]);
-        assert_eq!(c.channel_image(2).unwrap().data(), [3.0, 3.0, 3.0, 6.0, 6.0, 6.0]);
+        c.data_mut()
+            .copy_from_slice(&[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(
+            c.channel_image(0).unwrap().data(),
+            [1.0, 1.0, 1.0, 4.0, 4.0, 4.0]
+        );
+        assert_eq!(
+            c.channel_image(2).unwrap().data(),
+            [3.0, 3.0, 3.0, 6.0, 6.0, 6.0]
+        );
         assert!(c.channel_image(3).is_none());
         assert!(ChannelImage::new(2, 1, 0).is_err());
         assert!(ChannelImage::new(0, 1, 2).is_err());
