@@ -758,4 +758,22 @@ mod tests {
                 .is_none()
         );
     }
+
+    #[test]
+    fn channels_merge_between_any_pixels() {
+        // Three channels, pixels 2 and 3: an index formed with + instead of × (or the other
+        // way) would read or write other pixels' channels.
+        let extras = PixelExtras {
+            channels: 3,
+            ..PixelExtras::default()
+        };
+        let mut a = ExtraSums::new(&extras, 4).unwrap().unwrap();
+        a.add(2, 1.0, 1.0, [0.0; 3], 0, &[1.0, 2.0, 3.0]);
+        let mut b = ExtraSums::new(&extras, 5).unwrap().unwrap();
+        b.merge_pixel(3, &a, 2);
+        b.merge_pixel(3, &a, 2);
+        assert_eq!(b.channels[9..12], [2.0, 4.0, 6.0]);
+        assert!(b.channels[..9].iter().chain(&b.channels[12..]).all(|&v| v == 0.0));
+        assert!(a.channels[..6].iter().chain(&a.channels[9..]).all(|&v| v == 0.0));
+    }
 }
