@@ -247,3 +247,22 @@ fn the_experiment_prints_its_tables_and_caches_the_reference() {
     assert_eq!(rmse(&first), rmse(&run()));
     let _ = std::fs::remove_dir_all(dir);
 }
+
+#[test]
+fn adaptive_renders_keep_their_budget_and_do_not_depend_on_the_thread_count() {
+    let mut c = RenderConfig::new("dof");
+    c.size = [20, 12];
+    c.tile_size = 8;
+    c.adaptive = Some(nyquist_film::adaptive::AdaptiveConfig::new(32, 0.02));
+    let one = render(&c, |_, _| {}).unwrap();
+    c.threads = 3;
+    let three = render(&c, |_, _| {}).unwrap();
+    assert_eq!(one.image.data(), three.image.data());
+    let (a, b) = (one.adaptive.unwrap(), three.adaptive.unwrap());
+    assert_eq!(a, b);
+    assert!(a.samples <= 20 * 12 * 32 && a.passes > 1, "{a:?}");
+    assert_eq!(one.samples, a.samples);
+    // The samples went unevenly: some pixels stopped at the first pass's 16, others took more.
+    assert_eq!(a.spp.iter().min(), Some(&16));
+    assert!(a.spp.iter().max().unwrap() > &32);
+}
