@@ -44,7 +44,8 @@
 # as in scripts/mutants.sh), MUTANTS_OUT (default $CARGO_TARGET_DIR/mutants-diff, else
 # target/mutants-diff), MUTANTS_ITERATE=1 (when the run in MUTANTS_OUT had the same base: keep
 # its catches and unviable mutants, test the rest with cargo-mutants' --iterate; for a change
-# that grew, or whose missed mutants got tests, since that run).
+# that grew, or whose missed mutants got tests, since that run), MUTANTS_FILES (a space-separated
+# list: test only these of the changed files).
 #
 # Exit status: 0 when nothing was missed (or there was nothing to test) and at least half of the
 # change's mutants were tested or covered by rows (those the time box left untested are named);
@@ -167,6 +168,12 @@ if [ ${#files[@]} -eq 0 ]; then
     echo "MUTANTS_IN_DIFF 0 mutants (no source change)"
     [ $list = 1 ] || { mkdir -p "$OUT" && summary 0 0 0 0 0 >"$OUT/summary"; }
     exit 0
+fi
+if [ -n "${MUTANTS_FILES:-}" ]; then
+    # Only these of the changed files (a long run split over processes, each with its own
+    # MUTANTS_OUT; their per-file folders copied into one MUTANTS_OUT let a MUTANTS_ITERATE run
+    # there count them all).
+    mapfile -t files < <(printf '%s\n' "${files[@]}" | grep -F -x -f <(tr ' ' '\n' <<<"$MUTANTS_FILES") || true)
 fi
 echo "changed since ${base:0:12}, most changed lines first: ${files[*]}"
 
