@@ -41,9 +41,10 @@ use crate::pixel::Pixel;
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct PixelExtras {
-    /// The variance of each channel's weighted mean ([`crate::Film::variance_image`]).
+    /// The variance of each channel's weighted mean ([`crate::Film::estimate`],
+    /// [`crate::Film::extra_images`]).
     pub variance: bool,
-    /// The sums of the A and B sample classes ([`sample_half`], [`crate::Film::half_images`]).
+    /// The sums of the A and B sample classes ([`sample_half`], [`crate::Film::extra_images`]).
     pub halves: bool,
     /// Extra channels per sample ([`crate::FilmSample::channels`],
     /// [`crate::Film::channel_values`]), at most [`MAX_CHANNELS`].
