@@ -213,6 +213,7 @@ fn layers(args: &RenderArgs) -> Result<Layers> {
         variance: args.variance,
         halves: args.ab,
         aovs: args.aov.clone(),
+        adaptive: None,
     })
 }
 
@@ -467,8 +468,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         &sampler,
         &args.filter,
         threads,
-        &layers,
-        adaptive.as_ref(),
+        &Layers {
+            adaptive,
+            ..layers.clone()
+        },
         &mut |n| bar.inc(n),
     )?;
     bar.finish();

@@ -323,8 +323,8 @@ impl Aov {
 }
 
 /// What a render keeps per pixel beside its image: the variance, the A/B halves, channel
-/// groups ([`Aov`]).
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+/// groups ([`Aov`]); and whether adaptive sampling drives it.
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Layers {
     /// The variance of each pixel's value.
     pub variance: bool,
@@ -332,10 +332,13 @@ pub struct Layers {
     pub halves: bool,
     /// Channel groups, in order, each at most once.
     pub aovs: Vec<Aov>,
+    /// Render by [`render_adaptive`] with these settings (the film then also keeps the estimate
+    /// it steers by; not a layer of the output).
+    pub adaptive: Option<AdaptiveConfig>,
 }
 
 impl Layers {
-    /// Whether anything beyond the image is kept.
+    /// Whether anything beyond the image is kept for the output.
     pub fn any(&self) -> bool {
         self.variance || self.halves || !self.aovs.is_empty()
     }
@@ -402,20 +405,20 @@ fn new_film(config: FilmConfig, size: [u32; 2], filter: &FilterKind) -> Result<F
     })
 }
 
-/// [`render`], keeping `layers` beside the image ([`Rendered::extras`]), and with `adaptive`
-/// rendered by [`render_adaptive`] (passes that double the samples of the pixels whose
-/// relative error is above the threshold; the film then also keeps the halves or the variance
-/// the estimate needs). `sampler` must then be progressive ([`PROGRESSIVE_SAMPLERS`]) and made
-/// for `adaptive.max_spp` samples per pixel. `tick(n)` reports progress: `n = 1` per finished
-/// tile, or with `adaptive` the samples each pass took.
+/// [`render`], keeping `layers` beside the image ([`Rendered::extras`]), and with
+/// `layers.adaptive` rendered by [`render_adaptive`] (passes that double the samples of the
+/// pixels whose relative error is above the threshold; the film then also keeps the halves or
+/// the variance the estimate needs). `sampler` must then be progressive
+/// ([`PROGRESSIVE_SAMPLERS`]) and made for its `max_spp` samples per pixel. `tick(n)` reports
+/// progress: `n = 1` per finished tile, or when adaptive the samples each pass took.
 ///
 /// ```
 /// use nyquist::{filter::FilterKind, sampler::NamedSampler};
 /// use nyquist_lab::{render::{self, Aov, Layers}, scene::Scene};
 /// let sampler = NamedSampler::new("sobol", [8, 8], 16, 1).unwrap();
 /// let filter = FilterKind::parse("box").unwrap();
-/// let layers = Layers { variance: true, halves: true, aovs: vec![Aov::Depth] };
-/// let r = render::render_layers(Scene::Disk, [8, 8], &sampler, &filter, 1, &layers, None, &mut |_| {})
+/// let layers = Layers { variance: true, halves: true, aovs: vec![Aov::Depth], adaptive: None };
+/// let r = render::render_layers(Scene::Disk, [8, 8], &sampler, &filter, 1, &layers, &mut |_| {})
 ///     .unwrap();
 /// assert_eq!(r.extras.channels.unwrap().pixel(4, 4), [1.0]); // the disk's plane, z = 1
 /// assert!(r.extras.variance.is_some() && r.extras.halves.is_some());
@@ -427,10 +430,10 @@ pub fn render_layers(
     filter: &FilterKind,
     threads: usize,
     layers: &Layers,
-    adaptive: Option<&AdaptiveConfig>,
     tick: &mut dyn FnMut(u64),
 ) -> Result<Rendered> {
     let mut extras = layers.extras();
+    let adaptive = layers.adaptive.as_ref();
     if let Some(a) = adaptive {
         match a.estimate {
             nyquist_film::adaptive::ErrorEstimate::Halves => extras.halves = true,

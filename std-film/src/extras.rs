@@ -774,7 +774,17 @@ mod tests {
         b.merge_pixel(3, &a, 2);
         b.merge_pixel(3, &a, 2);
         assert_eq!(b.channels[9..12], [2.0, 4.0, 6.0]);
-        assert!(b.channels[..9].iter().chain(&b.channels[12..]).all(|&v| v == 0.0));
-        assert!(a.channels[..6].iter().chain(&a.channels[9..]).all(|&v| v == 0.0));
+        assert!(
+            b.channels[..9]
+                .iter()
+                .chain(&b.channels[12..])
+                .all(|&v| v == 0.0)
+        );
+        assert!(
+            a.channels[..6]
+                .iter()
+                .chain(&a.channels[9..])
+                .all(|&v| v == 0.0)
+        );
     }
 }
