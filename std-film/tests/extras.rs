@@ -249,10 +249,11 @@ fn halves_split_the_samples_by_class_and_sum_to_the_whole() {
             halves: true,
             ..PixelExtras::default()
         },
-        ..FilmConfig::new(2, 1)
+        ..FilmConfig::new(3, 1)
     };
     let mut film = Film::new(config, &Boxcar::default()).unwrap();
-    // In pixel 0, class A samples are 1 and class B samples 3; in pixel 1 every index is in A.
+    // In pixel 0, class A samples are 1 and class B samples 3; in pixel 1 every index is in A,
+    // in pixel 2 every index is in B.
     for i in 0..64u64 {
         let v = [1.0, 3.0][sample_half(i)];
         film.add(&FilmSample {
@@ -263,13 +264,18 @@ fn halves_split_the_samples_by_class_and_sum_to_the_whole() {
             index: 0,
             ..FilmSample::new([1.5, 0.5], [v; 3], 1.0)
         });
+        film.add(&FilmSample {
+            index: 2,
+            ..FilmSample::new([2.5, 0.5], [v; 3], 1.0)
+        });
     }
     let e = film.estimate(0, 0).unwrap();
     assert_eq!(e.value, [2.0; 3]);
     assert_eq!(e.halves, Some([[1.0; 3], [3.0; 3]]));
     assert_eq!(e.half_difference(), Some([1.0; 3]));
-    // An empty half: no halves estimate, rather than a made-up one.
+    // An empty half, either one: no halves estimate, rather than a made-up one.
     assert_eq!(film.estimate(1, 0).unwrap().halves, None);
+    assert_eq!(film.estimate(2, 0).unwrap().halves, None);
     let [a, b] = film.extra_images().unwrap().halves.unwrap();
     assert_eq!((a.get(0, 0), b.get(0, 0)), ([1.0; 3], [3.0; 3]));
     assert_eq!((a.get(1, 0), b.get(1, 0)), ([2.0; 3], [0.0; 3]));
