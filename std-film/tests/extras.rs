@@ -548,3 +548,62 @@ proptest! {
         }
     }
 }
+
+#[test]
+fn a_cropped_film_answers_for_its_own_pixels() {
+    // Crop to pixels 2..6 × 1..4 of an 8 × 4 film: estimates and channels are looked up by
+    // film coordinates, not from the crop's corner.
+    let config = FilmConfig {
+        crop_window: [0.25, 0.75, 0.25, 1.0],
+        extras: PixelExtras {
+            variance: true,
+            halves: false,
+            channels: 1,
+        },
+        ..FilmConfig::new(8, 4)
+    };
+    let mut film = Film::new(config, &Boxcar::default()).unwrap();
+    for y in 1..4 {
+        for x in 2..6 {
+            let v = (10 * y + x) as f32;
+            for (i, d) in [0.0, 2.0].into_iter().enumerate() {
+                film.add(&FilmSample {
+                    index: i as u64,
+                    channels: &[v],
+                    ..FilmSample::new([x as f32 + 0.5, y as f32 + 0.5], [v + d; 3], 1.0)
+                });
+            }
+        }
+    }
+    for y in 1..4i64 {
+        for x in 2..6i64 {
+            let v = (10 * y + x) as f64;
+            let e = film.estimate(x, y).unwrap();
+            assert_eq!(e.value, [v + 1.0; 3], "({x}, {y})");
+            assert_eq!(e.variance, Some([1.0; 3]));
+            assert_eq!(film.channel_values(x, y).unwrap(), [v]);
+        }
+    }
+    assert_eq!(film.estimate(1, 1), None);
+    assert_eq!(film.channel_values(6, 1), None);
+}
+
+#[test]
+fn a_pixel_without_samples_has_channel_values_of_zero() {
+    let config = FilmConfig {
+        extras: PixelExtras {
+            channels: 2,
+            ..PixelExtras::default()
+        },
+        ..FilmConfig::new(2, 1)
+    };
+    let mut film = Film::new(config, &Boxcar::default()).unwrap();
+    film.add(&FilmSample {
+        channels: &[1.0, 2.0],
+        ..FilmSample::new([0.5, 0.5], [1.0; 3], 1.0)
+    });
+    assert_eq!(film.channel_values(1, 0).unwrap(), [0.0, 0.0]);
+    let c = film.extra_images().unwrap().channels.unwrap();
+    assert_eq!(c.pixel(1, 0), [0.0, 0.0]);
+    assert_eq!(c.pixel(0, 0), [1.0, 2.0]);
+}
