@@ -607,3 +607,94 @@ fn a_pixel_without_samples_has_channel_values_of_zero() {
     assert_eq!(c.pixel(1, 0), [0.0, 0.0]);
     assert_eq!(c.pixel(0, 0), [1.0, 2.0]);
 }
+
+/// A filter that is not separable: the cone 1 − r/1.5 over the disk of radius 1.5.
+#[derive(Debug)]
+struct Cone;
+
+impl Filter for Cone {
+    fn radius(&self) -> [f32; 2] {
+        [1.5, 1.5]
+    }
+    fn eval(&self, x: f32, y: f32) -> f32 {
+        (1.0 - (x * x + y * y).sqrt() / 1.5).max(0.0)
+    }
+}
+
+#[test]
+fn a_half_that_has_every_sample_is_the_whole_bit_for_bit() {
+    // Every sample with radiance in half B: B's RGB sums must be the film's own, bit for bit,
+    // in every pixel. So
+    // the extras see every pixel a sample reaches, with the weights and the arithmetic the sums
+    // use, for every kind of footprint: one pixel, rows of one, the phase tables' rows, the 2D
+    // tables, wide and narrow, and the direct path.
+    let mut all = filters();
+    all.push(("wide box", Box::new(Boxcar::new([1.0, 0.5]).unwrap())));
+    all.push(("tall box", Box::new(Boxcar::new([0.5, 1.5]).unwrap())));
+    all.push((
+        "wide gaussian",
+        Box::new(Gaussian::new([6.0, 3.0], 0.5).unwrap()),
+    ));
+    // Wider than the phase tables reach (separable linear tables, up to 32 columns and more),
+    // and a filter that is not separable (a 2D table of `eval`).
+    all.push((
+        "wide table",
+        Box::new(Gaussian::new([10.0, 2.0], 0.05).unwrap()),
+    ));
+    all.push((
+        "very wide table",
+        Box::new(Gaussian::new([20.0, 0.6], 0.01).unwrap()),
+    ));
+    all.push(("radial cone", Box::new(Cone)));
+    for (name, f) in all {
+        for direct in [false, true] {
+            let config = FilmConfig {
+                extras: PixelExtras {
+                    halves: true,
+                    ..PixelExtras::default()
+                },
+                ..FilmConfig::new(48, 9)
+            };
+            let mut film = Film::new(config, f.as_ref()).unwrap();
+            let mut tile = film.tile(film.tiles(64).unwrap()[0]);
+            let mut rng = Lcg(11);
+            for _ in 0..3000 {
+                let p = [rng.next() * 48.0, rng.next() * 9.0];
+                let rgb = [rng.next(), rng.next() * 3.0, rng.next() + 0.5];
+                if direct {
+                    tile.add_sample_direct(f.as_ref(), p, rgb, 1.0);
+                } else {
+                    // A sample weight with a full mantissa: weight·rgb then has 48 bits, so
+                    // the two ways of forming f·l round differently.
+                    let w = 0.5 + rng.next();
+                    tile.add(&FilmSample {
+                        index: 2,
+                        ..FilmSample::new(p, rgb, w)
+                    });
+                    // A twin in A with sample weight 0: it adds its filter weight to the sums'
+                    // weight and exactly +0 to their RGB, so A's RGB, the whole less B's, is
+                    // exactly 0 when B's sums are formed as the whole's are, and A's mean (an
+                    // f64) shows any difference in the last bit.
+                    tile.add(&FilmSample {
+                        index: 0,
+                        ..FilmSample::new(p, rgb, 0.0)
+                    });
+                }
+            }
+            film.merge(tile).unwrap();
+            let [a, _] = film.extra_images().unwrap().halves.unwrap();
+            for y in 0..9 {
+                for x in 0..48 {
+                    let e = film.estimate(x, y).unwrap();
+                    let value = e.value.map(|v| v as f32);
+                    if direct {
+                        // The direct path adds as index 0: everything in A.
+                        assert_eq!(a.get(x as u32, y as u32), value, "{name} direct ({x}, {y})");
+                    } else if let Some([a, _]) = e.halves {
+                        assert_eq!(a, [0.0; 3], "{name} ({x}, {y})");
+                    }
+                }
+            }
+        }
+    }
+}
