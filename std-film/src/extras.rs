@@ -41,8 +41,7 @@ use crate::pixel::Pixel;
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct PixelExtras {
-    /// The variance of each channel's weighted mean ([`crate::Film::estimate`],
-    /// [`crate::Film::extra_images`]).
+    /// The variance of each channel's weighted mean ([`crate::Film::estimate`]).
     pub variance: bool,
     /// The sums of the A and B sample classes ([`sample_half`], [`crate::Film::extra_images`]).
     pub halves: bool,
