@@ -298,3 +298,90 @@ fn a_new_pass_merges_every_tile_again_in_order() {
     );
     assert!(f.extras() == PixelExtras::default());
 }
+
+/// A 16 × 16 film cropped to pixels 2..12 × 2..10 (80 pixels), box filter, halves kept: every
+/// pixel is a flat 0.5 except film pixel (3, 3), whose value is its samples' half (0 in A, 1 in
+/// B), so its error never falls. Flat pixels' halves agree exactly (sums of 0.5).
+fn cropped_run(config: &AdaptiveConfig) -> AdaptiveReport {
+    let film_config = FilmConfig {
+        crop_window: [0.125, 0.75, 0.125, 0.625],
+        extras: halves(),
+        ..FilmConfig::new(16, 16)
+    };
+    let mut f = Film::new(film_config, &Boxcar::default()).unwrap();
+    let sample = |tile: &mut FilmTile, [x, y]: [u32; 2], indices: Range<u64>| {
+        // The driver never asks for no samples.
+        assert!(!indices.is_empty(), "({x}, {y}) {indices:?}");
+        for i in indices {
+            let l = if [x, y] == [3, 3] {
+                nyquist_film::extras::sample_half(i) as f32
+            } else {
+                0.5
+            };
+            tile.add(&FilmSample {
+                index: i,
+                ..FilmSample::new([x as f32 + 0.5, y as f32 + 0.5], [l; 3], 1.0)
+            });
+        }
+    };
+    render_adaptive(&mut f, config, 4, 2, sample, |_, _| {}).unwrap()
+}
+
+#[test]
+fn the_neighbourhood_decides_which_pixels_stop_and_which_go_first() {
+    // Budget 17 spp: after the first pass (16 each) 80 samples are left, five doublings of 16.
+    // Open: the 3 × 3 block around (3, 3), whose neighbourhoods hold it. Ranked by the mean
+    // error over each one's neighbourhood (clipped to the film): the corner (2, 2) holds 4
+    // pixels (e/4), the edge ones 6 (e/6), the inner ones 9 (e/9); ties by index. So (2, 2),
+    // then (3, 2), (4, 2), (2, 3), (2, 4) double, and the rest stays at 16.
+    let config = AdaptiveConfig {
+        initial_spp: 16,
+        max_spp: 64,
+        budget_spp: 17,
+        threshold: 0.01,
+        floor: 0.01,
+        estimate: ErrorEstimate::Halves,
+    };
+    let r = cropped_run(&config);
+    assert_eq!((r.width, r.spp.len()), (10, 80));
+    let local = |x: usize, y: usize| r.spp[(y - 2) * 10 + (x - 2)];
+    for (x, y) in [(2, 2), (3, 2), (4, 2), (2, 3), (2, 4)] {
+        assert_eq!(local(x, y), 32, "({x}, {y}): {:?}", r.spp);
+    }
+    assert_eq!(
+        r.spp.iter().filter(|&&n| n == 16).count(),
+        75,
+        "{:?}",
+        r.spp
+    );
+    assert_eq!((r.samples, r.passes, r.converged), (80 * 17, 2, 71));
+    assert_eq!(r.mean_spp(), 17.0);
+    // The map: 32 white, 16 black.
+    let map = r.spp_image().unwrap();
+    assert_eq!((map.get(0, 0), map.get(9, 7)), ([1.0; 3], [0.0; 3]));
+}
+
+#[test]
+fn no_pixel_passes_the_most_samples_allowed() {
+    // max 48: the noisy pixel's block goes 16 → 32 → 48 (the last step a half doubling).
+    let config = AdaptiveConfig {
+        initial_spp: 16,
+        max_spp: 48,
+        budget_spp: 48,
+        threshold: 0.01,
+        floor: 0.01,
+        estimate: ErrorEstimate::Halves,
+    };
+    let r = cropped_run(&config);
+    assert_eq!(r.spp[10 + 1], 48, "{:?}", r.spp);
+    assert_eq!(r.spp.iter().filter(|&&n| n == 48).count(), 9);
+    assert!(r.spp.iter().all(|&n| n == 16 || n == 48));
+    // Every pixel with the same spp: the map is white.
+    let flat = cropped_run(&AdaptiveConfig {
+        threshold: 2.0,
+        ..config
+    });
+    assert!(flat.spp.iter().all(|&n| n == 16));
+    assert!(flat.spp_image().unwrap().data().iter().all(|&v| v == 1.0));
+    assert_eq!(flat.mean_spp(), 16.0);
+}
