@@ -303,8 +303,13 @@ fn a_new_pass_merges_every_tile_again_in_order() {
 /// pixel is a flat 0.5 except film pixel (3, 3), whose value is its samples' half (0 in A, 1 in
 /// B), so its error never falls. Flat pixels' halves agree exactly (sums of 0.5).
 fn cropped_run(config: &AdaptiveConfig) -> AdaptiveReport {
+    cropped_run_in(config, [0.125, 0.75, 0.125, 0.625])
+}
+
+/// [`cropped_run`] with another crop window of the 16 × 16 film.
+fn cropped_run_in(config: &AdaptiveConfig, crop_window: [f32; 4]) -> AdaptiveReport {
     let film_config = FilmConfig {
-        crop_window: [0.125, 0.75, 0.125, 0.625],
+        crop_window,
         extras: halves(),
         ..FilmConfig::new(16, 16)
     };
@@ -359,6 +364,15 @@ fn the_neighbourhood_decides_which_pixels_stop_and_which_go_first() {
     // The map: 32 white, 16 black.
     let map = r.spp_image().unwrap();
     assert_eq!((map.get(0, 0), map.get(9, 7)), ([1.0; 3], [0.0; 3]));
+    // Cropped to 8 × 8 (64 pixels), four doublings: (2, 4), ranked by its own neighbourhood
+    // (e/6), waits behind (2, 3), which comes before it by index; a rank read from another
+    // pixel's neighbourhood would put it first (both of the column's would read e/4).
+    let r = cropped_run_in(&config, [0.125, 0.625, 0.125, 0.625]);
+    let local = |x: usize, y: usize| r.spp[(y - 2) * 8 + (x - 2)];
+    for (x, y) in [(2, 2), (3, 2), (4, 2), (2, 3)] {
+        assert_eq!(local(x, y), 32, "({x}, {y}): {:?}", r.spp);
+    }
+    assert_eq!(local(2, 4), 16, "{:?}", r.spp);
 }
 
 #[test]
