@@ -496,7 +496,6 @@ fn render_with<S: Sampler + Clone + Sync, const EXTRAS: bool>(
     tick: &mut dyn FnMut(),
 ) -> Result<(), nyquist_film::Error> {
     let (w, h) = (f64::from(size[0]), f64::from(size[1]));
-    let time = scene.uses_time();
     render_tiles(
         film,
         TILE,
@@ -510,26 +509,16 @@ fn render_with<S: Sampler + Clone + Sync, const EXTRAS: bool>(
                     let pixel = [px as u32, py as u32];
                     let mut i = 0;
                     while i < s.pixel_samples(pixel) {
-                        s.start_pixel_sample(pixel, i, 0);
-                        let [ox, oy] = s.get_pixel_2d();
-                        let t = if time { s.get_1d() } else { 0.5 };
-                        let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
-                        let (x, y, t) = (f64::from(p[0]), f64::from(p[1]), f64::from(t));
-                        let l = scene.eval(x, y, t, w, h) as f32;
-                        if EXTRAS {
-                            let surface = scene.surface(x, y, t, w, h);
-                            channels.clear();
-                            for a in &layers.aovs {
-                                a.values(&surface, &mut channels);
-                            }
-                            tile.add(&FilmSample {
-                                index: u64::from(i),
-                                channels: &channels,
-                                ..FilmSample::new(p, [l; 3], 1.0)
-                            });
-                        } else {
-                            tile.add_sample(p, [l; 3], 1.0);
-                        }
+                        let l = add_camera_sample::<_, EXTRAS>(
+                            tile,
+                            &mut s,
+                            scene,
+                            [w, h],
+                            pixel,
+                            i,
+                            &layers.aovs,
+                            &mut channels,
+                        );
                         s.report(pixel, i, &[l]);
                         i += 1;
                     }
@@ -538,6 +527,48 @@ fn render_with<S: Sampler + Clone + Sync, const EXTRAS: bool>(
         },
         |_, _| tick(),
     )
+}
+
+/// Draws sample `i` of `pixel` from `s` as the sampler's camera sample (the image sample and,
+/// for scenes that move, the time, as [`nyquist::sampler::camera_sample`] reads them), adds
+/// the scene's radiance there to `tile` and returns it. With `EXTRAS` it goes in through
+/// [`FilmTile::add`](nyquist_film::FilmTile::add) with its index and the values of `aovs`
+/// (`channels` is scratch), the radiance being the surface's albedo, which is what
+/// [`Scene::eval`] returns (evaluated once); without, through `add_sample`.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn add_camera_sample<S: Sampler, const EXTRAS: bool>(
+    tile: &mut nyquist_film::FilmTile,
+    s: &mut S,
+    scene: Scene,
+    [w, h]: [f64; 2],
+    pixel: [u32; 2],
+    i: u32,
+    aovs: &[Aov],
+    channels: &mut Vec<f32>,
+) -> f32 {
+    s.start_pixel_sample(pixel, i, 0);
+    let [ox, oy] = s.get_pixel_2d();
+    let t = if scene.uses_time() { s.get_1d() } else { 0.5 };
+    let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
+    let (x, y, t) = (f64::from(p[0]), f64::from(p[1]), f64::from(t));
+    if !EXTRAS {
+        let l = scene.eval(x, y, t, w, h) as f32;
+        tile.add_sample(p, [l; 3], 1.0);
+        return l;
+    }
+    let surface = scene.surface(x, y, t, w, h);
+    let l = surface.albedo as f32;
+    channels.clear();
+    for a in aovs {
+        a.values(&surface, channels);
+    }
+    tile.add(&FilmSample {
+        index: u64::from(i),
+        channels,
+        ..FilmSample::new(p, [l; 3], 1.0)
+    });
+    l
 }
 
 /// [`render_with`] driven by [`render_adaptive`]: each pass adds samples `indices` of the
@@ -555,7 +586,6 @@ fn render_adaptive_with<S: Sampler + Clone + Sync>(
 ) -> Result<AdaptiveReport, nyquist_film::Error> {
     let mut done = 0;
     let (w, h) = (f64::from(size[0]), f64::from(size[1]));
-    let time = scene.uses_time();
     render_adaptive(
         film,
         config,
@@ -567,22 +597,16 @@ fn render_adaptive_with<S: Sampler + Clone + Sync>(
             for i in indices {
                 // Below max_spp, which the caller made the sampler for (u32).
                 let i = i as u32;
-                s.start_pixel_sample(pixel, i, 0);
-                let [ox, oy] = s.get_pixel_2d();
-                let t = if time { s.get_1d() } else { 0.5 };
-                let p = [film_coordinate(pixel[0], ox), film_coordinate(pixel[1], oy)];
-                let (x, y, t) = (f64::from(p[0]), f64::from(p[1]), f64::from(t));
-                let l = scene.eval(x, y, t, w, h) as f32;
-                let surface = scene.surface(x, y, t, w, h);
-                channels.clear();
-                for a in &layers.aovs {
-                    a.values(&surface, &mut channels);
-                }
-                tile.add(&FilmSample {
-                    index: u64::from(i),
-                    channels: &channels,
-                    ..FilmSample::new(p, [l; 3], 1.0)
-                });
+                add_camera_sample::<_, true>(
+                    tile,
+                    &mut s,
+                    scene,
+                    [w, h],
+                    pixel,
+                    i,
+                    &layers.aovs,
+                    &mut channels,
+                );
             }
         },
         |_, samples| {
