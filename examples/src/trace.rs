@@ -241,18 +241,42 @@ pub fn for_each_sample_stateless<S: Sampler>(
     for y in start[1]..end[1] {
         for x in start[0]..end[0] {
             for i in 0..sampler.pixel_samples([x, y]) {
-                let camera = sampler.camera_sample([x, y], i);
-                let mut src = Stateless {
-                    sampler: &mut sampler,
+                let (p, l) = trace_stateless(
+                    scene,
+                    &mut sampler,
                     first_light,
-                    buf: core::mem::take(&mut buf),
-                };
-                let l = radiance(scene, &camera, &mut src, resolution);
-                buf = src.buf;
-                f(camera.p_film, l);
+                    &mut buf,
+                    resolution,
+                    [x, y],
+                    i,
+                );
+                f(p, l);
             }
         }
     }
+}
+
+/// Camera sample `i` of `pixel` traced through the stateless layer: its film position and
+/// radiance. `first_light` is the sampler's rounded light-sample count at vertex 1; `buf` is
+/// the light points' scratch, kept between calls.
+fn trace_stateless<S: Sampler>(
+    scene: &Scene,
+    sampler: &mut S,
+    first_light: u32,
+    buf: &mut Vec<f32>,
+    resolution: [u32; 2],
+    pixel: [u32; 2],
+    i: u32,
+) -> ([f32; 2], V3) {
+    let camera = sampler.camera_sample(pixel, i);
+    let mut src = Stateless {
+        sampler,
+        first_light,
+        buf: core::mem::take(buf),
+    };
+    let l = radiance(scene, &camera, &mut src, resolution);
+    *buf = src.buf;
+    (camera.p_film, l)
 }
 
 /// Calls `f(sample, radiance)` for every camera sample of the pixels `start .. end` (exclusive),
@@ -304,14 +328,15 @@ pub fn for_pixel_samples<S: Sampler>(
     let mut buf = Vec::new();
     for i in indices {
         // Below the sampler's spp, which the caller made it for (u32).
-        let camera = sampler.camera_sample(pixel, i as u32);
-        let mut src = Stateless {
-            sampler: &mut sampler,
+        let (p, l) = trace_stateless(
+            scene,
+            &mut sampler,
             first_light,
-            buf: core::mem::take(&mut buf),
-        };
-        let l = radiance(scene, &camera, &mut src, resolution);
-        buf = src.buf;
-        f(camera.p_film, i, l);
+            &mut buf,
+            resolution,
+            pixel,
+            i as u32,
+        );
+        f(p, i, l);
     }
 }
