@@ -130,6 +130,25 @@ typedef uint32_t NyqInterpolation;
 #endif // __STDC_VERSION__ >= 202311L
 #endif // __cplusplus
 
+// Which estimate [`nyq_pixel_stats_relative_error`] uses.
+enum NyqErrorEstimate
+#if defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+  : uint32_t
+#endif // defined(__cplusplus) || __STDC_VERSION__ >= 202311L
+ {
+  // |A − B| / 2 from the two sample classes.
+  NYQ_ERROR_HALVES = 0,
+  // The standard error, √variance.
+  NYQ_ERROR_VARIANCE = 1,
+};
+#ifndef __cplusplus
+#if __STDC_VERSION__ >= 202311L
+typedef enum NyqErrorEstimate NyqErrorEstimate;
+#else
+typedef uint32_t NyqErrorEstimate;
+#endif // __STDC_VERSION__ >= 202311L
+#endif // __cplusplus
+
 // A filter behind an opaque handle, made by [`nyq_filter_create`] or
 // [`nyq_filter_create_callback`] and released by [`nyq_filter_destroy`]. Immutable after
 // creation: any number of threads may read one handle at once.
@@ -151,6 +170,44 @@ typedef struct NyqFilterSample {
   // `f(offset) / pdf(offset)`, sign included; finite.
   float weight;
 } NyqFilterSample;
+
+// One pixel's sums (the core's `PixelStats`): Σ f·x and Σ f, the second moments, and the B
+// half's sums. Zero every field (`NyqPixelStats s = {0};` or `memset`) for an empty pixel;
+// change them only through the `nyq_pixel_stats_` functions, which reject a struct no samples
+// could give (NaN, infinite, or a negative Σ f² or deviation sum) with `NYQ_ERR_NON_FINITE` or
+// `NYQ_ERR_OUT_OF_RANGE`. 120 bytes.
+typedef struct NyqPixelStats {
+  // Σ f·x per channel.
+  double sum[3];
+  // Σ f.
+  double weight;
+  // Σ f².
+  double weight2_sum;
+  // Σ f²·x / Σ f² per channel.
+  double mean[3];
+  // Σ f²·(x − mean)² per channel.
+  double deviation_sum[3];
+  // Σ f·x per channel over the B half's samples.
+  double half_b_sum[3];
+  // Σ f over the B half's samples.
+  double half_b_weight;
+} NyqPixelStats;
+
+// A pixel's value and error estimates, from [`nyq_pixel_stats_estimate`].
+typedef struct NyqEstimate {
+  // The weighted mean per channel, Σ f·x / Σ f (0 where Σ f ≤ 0).
+  double value[3];
+  // The variance of `value` per channel; 0 unless `has_variance`.
+  double variance[3];
+  // The A half's mean per channel; 0 unless `has_halves`.
+  double half_a[3];
+  // The B half's mean per channel; 0 unless `has_halves`.
+  double half_b[3];
+  // Whether `variance` is set: more than one effective sample.
+  bool has_variance;
+  // Whether `half_a` and `half_b` are set: both halves have Σ f > 0.
+  bool has_halves;
+} NyqEstimate;
 
 // What a camera needs for one pixel sample.
 typedef struct NyqCameraSample {
@@ -341,6 +398,81 @@ enum NyqStatus nyq_poisson_disk(double radius,
                                 double *out,
                                 size_t len,
                                 size_t *count);
+
+// Writes the half of the sample of index `index` within its pixel to `*out`: 0 (A) or 1 (B),
+// the parity of `popcount(index & 0xaaaa…aaaa)` (the core's
+// [`sample_half`](nyquist::pixel_stats::sample_half); below 2³² Cycles' rule).
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_BUFFER` if it is misaligned.
+//
+// # Safety
+// `out` is null or valid for writing a `uint32_t`.
+enum NyqStatus nyq_sample_half(uint64_t index, uint32_t *out);
+
+// Adds the sample of index `index` within the pixel (its half is [`nyq_sample_half`]'s), with
+// filter weight `weight` (negative for a filter's negative lobes) and value `value[0..3]` (the
+// radiance times the sample's own weight), to `*stats`.
+//
+// # Errors
+// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_BUFFER` if one is misaligned;
+// `NYQ_ERR_NON_FINITE` if `weight` or a value is NaN or infinite, or if `*stats` holds one;
+// `NYQ_ERR_OUT_OF_RANGE` if `*stats` holds a negative Σ f² or deviation sum. `*stats` is
+// unchanged on error.
+//
+// # Safety
+// `stats` is null or points to a `NyqPixelStats` not otherwise accessed during the call;
+// `value` is null or valid for reading 3 doubles.
+enum NyqStatus nyq_pixel_stats_add(struct NyqPixelStats *stats,
+                                   uint64_t index,
+                                   double weight,
+                                   const double *value);
+
+// Merges `*other` (the same pixel's samples from another tile or thread) into `*stats`. Merged
+// in a fixed order, the result is the same bits for any number of threads.
+//
+// # Errors
+// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_BUFFER` if one is misaligned;
+// `NYQ_ERR_NON_FINITE` or `NYQ_ERR_OUT_OF_RANGE` if either struct holds what no samples give
+// ([`NyqPixelStats`]). `*stats` is unchanged on error.
+//
+// # Safety
+// `stats` is null or points to a `NyqPixelStats` not otherwise accessed during the call;
+// `other` is null or points to a readable `NyqPixelStats` (it may be `stats` itself).
+enum NyqStatus nyq_pixel_stats_merge(struct NyqPixelStats *stats,
+                                     const struct NyqPixelStats *other);
+
+// Writes the value, variance and halves of the pixel `*stats` to `*out`.
+//
+// # Errors
+// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_BUFFER` if one is misaligned;
+// `NYQ_ERR_NON_FINITE` or `NYQ_ERR_OUT_OF_RANGE` if `*stats` holds what no samples give.
+//
+// # Safety
+// `stats` is null or points to a readable `NyqPixelStats`; `out` is null or valid for writing
+// a `NyqEstimate`.
+enum NyqStatus nyq_pixel_stats_estimate(const struct NyqPixelStats *stats,
+                                        struct NyqEstimate *out);
+
+// Writes the relative error of the pixel `*stats` to `*out`: the error `estimate` gives
+// ([`NyqErrorEstimate`]), summed over the channels, over Σ |value| + `floor`. Adaptive
+// sampling stops a pixel once this is at or below its threshold; the floor keeps dark pixels
+// from asking for samples without end. Where the estimate does not exist yet (one effective
+// sample, an empty half) the error is +∞: such a pixel is never converged.
+//
+// # Errors
+// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_BUFFER` if one is misaligned;
+// `NYQ_ERR_OUT_OF_RANGE` for an unknown `estimate`, or a negative `floor`;
+// `NYQ_ERR_NON_FINITE` if `floor` is NaN or infinite; `NYQ_ERR_NON_FINITE` or
+// `NYQ_ERR_OUT_OF_RANGE` if `*stats` holds what no samples give.
+//
+// # Safety
+// `stats` is null or points to a readable `NyqPixelStats`; `out` is null or valid for writing
+// a double.
+enum NyqStatus nyq_pixel_stats_relative_error(const struct NyqPixelStats *stats,
+                                              uint32_t estimate,
+                                              double floor,
+                                              double *out);
 
 // Writes the `dim`-th prime (`dim = 0` → 2) to `*out`.
 //

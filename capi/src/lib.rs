@@ -55,6 +55,7 @@ extern crate std;
 mod ffi;
 mod filter;
 mod mask;
+mod pixel_stats;
 mod radical;
 /// cbindgen:ignore
 #[cfg(not(feature = "std"))]
@@ -66,6 +67,7 @@ mod stratify;
 
 pub use filter::*;
 pub use mask::*;
+pub use pixel_stats::*;
 pub use radical::*;
 pub use sampler::*;
 pub use sequence::*;

@@ -685,3 +685,200 @@ fn every_kind_is_the_cores_named_sequence() {
     }
     assert_eq!(a, b);
 }
+
+/// Adds `samples` (index, filter weight, value) to a C struct and to the core's `PixelStats`.
+fn stats_of(samples: &[(u64, f64, [f64; 3])]) -> (NyqPixelStats, nyquist::pixel_stats::PixelStats) {
+    let mut c = NyqPixelStats::default();
+    let mut core = nyquist::pixel_stats::PixelStats::default();
+    for (index, f, x) in samples {
+        // SAFETY: `c` is a valid struct and `x` holds 3 doubles.
+        let s = unsafe { nyq_pixel_stats_add(&mut c, *index, *f, x.as_ptr()) };
+        assert_eq!(s, NyqStatus::NYQ_OK);
+        core.add(*index, *f, *x).unwrap();
+    }
+    (c, core)
+}
+
+/// The C struct's fields equal the core's, bit for bit.
+fn assert_same(c: &NyqPixelStats, core: &nyquist::pixel_stats::PixelStats) {
+    assert_eq!(c.sum, core.sum);
+    assert_eq!(c.weight, core.weight);
+    assert_eq!(c.weight2_sum, core.moments.weight2_sum());
+    assert_eq!(c.mean, core.moments.mean());
+    assert_eq!(c.deviation_sum, core.moments.deviation_sum());
+    assert_eq!(c.half_b_sum, core.half_b_sum);
+    assert_eq!(c.half_b_weight, core.half_b_weight);
+}
+
+proptest! {
+    #[test]
+    fn pixel_stats_through_the_c_api_are_the_cores(
+        samples in proptest::collection::vec(
+            (0u64..64, -0.5f64..2.0, proptest::array::uniform3(-10.0f64..10.0)),
+            0..24,
+        ),
+        cut in 0usize..24,
+        floor in 0.0f64..1.0,
+    ) {
+        let cut = cut.min(samples.len());
+        let (c, core) = stats_of(&samples);
+        assert_same(&c, &core);
+        let (mut a, mut a_core) = stats_of(&samples[..cut]);
+        let (b, b_core) = stats_of(&samples[cut..]);
+        // SAFETY: valid structs.
+        prop_assert_eq!(unsafe { nyq_pixel_stats_merge(&mut a, &b) }, NyqStatus::NYQ_OK);
+        a_core.merge(&b_core);
+        assert_same(&a, &a_core);
+
+        let want = core.estimate();
+        let mut e = NyqEstimate::default();
+        // SAFETY: valid structs.
+        prop_assert_eq!(unsafe { nyq_pixel_stats_estimate(&c, &mut e) }, NyqStatus::NYQ_OK);
+        prop_assert_eq!(e.value, want.value);
+        prop_assert_eq!((e.has_variance, e.variance), (want.variance.is_some(), want.variance.unwrap_or_default()));
+        let [half_a, half_b] = want.halves.unwrap_or_default();
+        prop_assert_eq!((e.has_halves, e.half_a, e.half_b), (want.halves.is_some(), half_a, half_b));
+        for (kind, estimate) in [
+            (NyqErrorEstimate::NYQ_ERROR_HALVES, nyquist::pixel_stats::ErrorEstimate::Halves),
+            (NyqErrorEstimate::NYQ_ERROR_VARIANCE, nyquist::pixel_stats::ErrorEstimate::Variance),
+        ] {
+            let mut r = 0.0;
+            // SAFETY: valid structs.
+            let s = unsafe { nyq_pixel_stats_relative_error(&c, kind as u32, floor, &mut r) };
+            prop_assert_eq!(s, NyqStatus::NYQ_OK);
+            let want = want.relative_error(estimate, floor).unwrap_or(f64::INFINITY);
+            prop_assert!(r == want || (r.is_nan() && want.is_nan()), "{} against {}", r, want);
+        }
+    }
+}
+
+#[test]
+fn pixel_stats_refuse_bad_input_and_keep_the_struct() {
+    use NyqStatus::*;
+    let (good, _) = stats_of(&[(0, 1.0, [1.0; 3]), (2, 0.5, [3.0, 2.0, 1.0])]);
+    let one = [1.0f64; 3];
+    let mut s = good;
+    let mut e = NyqEstimate::default();
+    let mut r = 7.0;
+    let mut h = 9u32;
+    // SAFETY: every non-null pointer is to a valid value of its type (or 3 doubles).
+    unsafe {
+        assert_eq!(nyq_sample_half(3, ptr::null_mut()), NYQ_ERR_NULL);
+        assert_eq!(nyq_sample_half(3, &mut h), NYQ_OK);
+        assert_eq!(h, 1);
+        assert_eq!(nyq_sample_half(5, &mut h), NYQ_OK);
+        assert_eq!(h, 0);
+        assert_eq!(
+            nyq_pixel_stats_add(ptr::null_mut(), 0, 1.0, ptr::null()),
+            NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_pixel_stats_add(&mut s, 0, 1.0, ptr::null()),
+            NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_pixel_stats_add(&mut s, 0, f64::NAN, one.as_ptr()),
+            NYQ_ERR_NON_FINITE
+        );
+        let inf = [1.0, f64::INFINITY, 1.0];
+        assert_eq!(
+            nyq_pixel_stats_add(&mut s, 0, 1.0, inf.as_ptr()),
+            NYQ_ERR_NON_FINITE
+        );
+        let bytes = [0u64; 4];
+        let misaligned = bytes.as_ptr().cast::<u8>().wrapping_add(1).cast::<f64>();
+        assert_eq!(
+            nyq_pixel_stats_add(&mut s, 0, 1.0, misaligned),
+            NYQ_ERR_BUFFER
+        );
+        assert_eq!(nyq_pixel_stats_merge(&mut s, ptr::null()), NYQ_ERR_NULL);
+        assert_eq!(nyq_pixel_stats_merge(ptr::null_mut(), &good), NYQ_ERR_NULL);
+        assert_eq!(nyq_pixel_stats_estimate(&s, ptr::null_mut()), NYQ_ERR_NULL);
+        assert_eq!(nyq_pixel_stats_estimate(ptr::null(), &mut e), NYQ_ERR_NULL);
+        assert_eq!(
+            nyq_pixel_stats_relative_error(&s, 2, 0.0, &mut r),
+            NYQ_ERR_OUT_OF_RANGE
+        );
+        assert_eq!(
+            nyq_pixel_stats_relative_error(&s, 0, -0.1, &mut r),
+            NYQ_ERR_OUT_OF_RANGE
+        );
+        assert_eq!(
+            nyq_pixel_stats_relative_error(&s, 0, f64::NAN, &mut r),
+            NYQ_ERR_NON_FINITE
+        );
+        assert_eq!(
+            nyq_pixel_stats_relative_error(ptr::null(), 9, f64::NAN, &mut r),
+            NYQ_ERR_NULL
+        );
+        assert_eq!(
+            nyq_pixel_stats_relative_error(&s, 9, f64::NAN, ptr::null_mut()),
+            NYQ_ERR_NULL
+        );
+    }
+    assert_eq!((s, e, r), (good, NyqEstimate::default(), 7.0));
+
+    // Structs no samples give: each field broken in turn.
+    type Breaks = fn(&mut NyqPixelStats);
+    let broken: [(Breaks, NyqStatus); 7] = [
+        (|s| s.sum[2] = f64::NAN, NYQ_ERR_NON_FINITE),
+        (|s| s.weight = f64::INFINITY, NYQ_ERR_NON_FINITE),
+        (|s| s.weight2_sum = -1.0, NYQ_ERR_OUT_OF_RANGE),
+        (|s| s.mean[1] = f64::NEG_INFINITY, NYQ_ERR_NON_FINITE),
+        (|s| s.deviation_sum[0] = -1e-9, NYQ_ERR_OUT_OF_RANGE),
+        (|s| s.half_b_sum[1] = f64::NAN, NYQ_ERR_NON_FINITE),
+        (|s| s.half_b_weight = f64::NAN, NYQ_ERR_NON_FINITE),
+    ];
+    for (i, (breaks, status)) in broken.into_iter().enumerate() {
+        let mut bad = good;
+        breaks(&mut bad);
+        let kept = bad;
+        let mut s = good;
+        // SAFETY: valid structs and values.
+        unsafe {
+            assert_eq!(
+                nyq_pixel_stats_add(&mut bad, 1, 1.0, one.as_ptr()),
+                status,
+                "field {i}"
+            );
+            assert_eq!(nyq_pixel_stats_merge(&mut s, &bad), status, "field {i}");
+            assert_eq!(nyq_pixel_stats_merge(&mut bad, &good), status, "field {i}");
+            assert_eq!(nyq_pixel_stats_estimate(&bad, &mut e), status, "field {i}");
+            assert_eq!(
+                nyq_pixel_stats_relative_error(&bad, 1, 0.0, &mut r),
+                status,
+                "field {i}"
+            );
+        }
+        assert_eq!(
+            bad.sum.map(f64::to_bits),
+            kept.sum.map(f64::to_bits),
+            "field {i}"
+        );
+        assert_eq!(s, good, "field {i}");
+    }
+}
+
+#[test]
+fn pixel_stats_merged_with_themselves_count_each_sample_twice() {
+    let samples = [
+        (0, 1.0, [1.0; 3]),
+        (1, 0.5, [4.0; 3]),
+        (2, 2.0, [2.0; 3]),
+        (3, 1.0, [0.5; 3]),
+    ];
+    let (mut s, _) = stats_of(&samples);
+    let twice: Vec<_> = samples.iter().chain(&samples).copied().collect();
+    let (_, want) = stats_of(&twice);
+    let p: *mut NyqPixelStats = &mut s;
+    // SAFETY: `p` points to a valid struct; the function allows `other == stats`.
+    assert_eq!(unsafe { nyq_pixel_stats_merge(p, p) }, NyqStatus::NYQ_OK);
+    assert_eq!(
+        (s.sum, s.weight, s.weight2_sum),
+        (want.sum, want.weight, want.moments.weight2_sum())
+    );
+    assert_eq!(s.half_b_sum, want.half_b_sum);
+    for c in 0..3 {
+        assert!((s.deviation_sum[c] - want.moments.deviation_sum()[c]).abs() < 1e-12);
+    }
+}

@@ -105,6 +105,13 @@ impl Expected {
         }
         self.0.push('\n');
     }
+    fn doubles(&mut self, key: &str, v: &[f64]) {
+        self.0.push_str(key);
+        for x in v {
+            write!(self.0, " {:016x}", x.to_bits()).unwrap();
+        }
+        self.0.push('\n');
+    }
     fn double(&mut self, key: &str, v: f64) {
         writeln!(self.0, "{key} {:016x}", v.to_bits()).unwrap();
     }
@@ -304,6 +311,62 @@ fn filter_lines(e: &mut Expected) {
     e.line("cone calls after lookups unchanged");
 }
 
+/// The lines of the C program's `pixel_stats`: four pixels of 16 samples, kept by two threads
+/// and merged, against the core's `PixelStats`.
+fn pixel_stats_lines(e: &mut Expected) {
+    use nyquist::pixel_stats::{ErrorEstimate, PixelStats, sample_half};
+    for p in 0..4i32 {
+        let (mut a, mut b) = (PixelStats::default(), PixelStats::default());
+        for k in 0..16i32 {
+            let w = f64::from((k * 3 + p) % 5) / 4.0 - 0.25;
+            let v0 = f64::from((k * 7 + p) % 11) / 8.0;
+            let half = if k < 9 { &mut a } else { &mut b };
+            half.add(k as u64, w, [v0, 2.0 - v0, f64::from(k % 3)])
+                .unwrap();
+        }
+        a.merge(&b);
+        let m = &a.moments;
+        let mut fields = a.sum.to_vec();
+        fields.extend([a.weight, m.weight2_sum()]);
+        fields.extend(m.mean());
+        fields.extend(m.deviation_sum());
+        fields.extend(a.half_b_sum);
+        fields.push(a.half_b_weight);
+        e.doubles(&format!("stats {p}"), &fields);
+        let est = a.estimate();
+        let [half_a, half_b] = est.halves.unwrap_or_default();
+        let mut values = est.value.to_vec();
+        values.extend(est.variance.unwrap_or_default());
+        values.extend(half_a);
+        values.extend(half_b);
+        e.doubles(
+            &format!(
+                "estimate {p} {} {}",
+                u8::from(est.variance.is_some()),
+                u8::from(est.halves.is_some())
+            ),
+            &values,
+        );
+        let r = [ErrorEstimate::Halves, ErrorEstimate::Variance]
+            .map(|k| est.relative_error(k, 0.01).unwrap_or(f64::INFINITY));
+        e.doubles(&format!("relerr {p}"), &r);
+    }
+    let halves: Vec<String> = (0..8u64)
+        .map(|i| sample_half(i * 5 + (1 << 40)).to_string())
+        .collect();
+    e.line(&format!("halves {}", halves.join(" ")));
+    use NyqStatus::*;
+    for (key, code) in [
+        ("stats_nan_weight", NYQ_ERR_NON_FINITE),
+        ("stats_null_value", NYQ_ERR_NULL),
+        ("stats_bad_struct", NYQ_ERR_OUT_OF_RANGE),
+        ("stats_bad_kind", NYQ_ERR_OUT_OF_RANGE),
+        ("stats_negative_floor", NYQ_ERR_OUT_OF_RANGE),
+    ] {
+        e.status(key, code);
+    }
+}
+
 fn error_lines(e: &mut Expected) {
     use NyqStatus::*;
     let codes = [
@@ -394,6 +457,7 @@ fn expected_c_output() -> String {
     stratify_lines(&mut e);
     sampler_lines(&mut e);
     filter_lines(&mut e);
+    pixel_stats_lines(&mut e);
     error_lines(&mut e);
     e.line("done");
     e.0

@@ -78,6 +78,7 @@ pub mod hash;
 pub mod lattice;
 mod lazy_table;
 pub mod math;
+pub mod pixel_stats;
 pub mod radical;
 pub mod rng;
 pub mod sampler;

@@ -16,23 +16,16 @@
 //! count.
 
 use crate::error::Error;
-use crate::extras::Estimate;
 use crate::film::Film;
 use crate::image::Image;
 use crate::render::render_tiles;
 use crate::tile::FilmTile;
 use std::ops::Range;
 
-/// Which of the film's estimates measures a pixel's error.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ErrorEstimate {
-    /// |A − B| / 2 from the two sample classes (the film must keep
-    /// [`halves`](crate::PixelExtras::halves)).
-    Halves,
-    /// The standard error √Var (the film must keep
-    /// [`variance`](crate::PixelExtras::variance)).
-    Variance,
-}
+/// Which of the film's estimates measures a pixel's error: [`ErrorEstimate::Halves`] needs a
+/// film that keeps [`halves`](crate::PixelExtras::halves), [`ErrorEstimate::Variance`] one that
+/// keeps [`variance`](crate::PixelExtras::variance).
+pub use nyquist::pixel_stats::ErrorEstimate;
 
 /// How [`render_adaptive`] spends its samples.
 ///
@@ -129,26 +122,6 @@ impl AdaptiveConfig {
         }
         Ok(())
     }
-}
-
-/// The relative error of a pixel's estimate: err / (value + floor), err and value summed over
-/// the channels; `None` when the estimate is not there (a half empty, one sample).
-///
-/// ```
-/// use nyquist_film::adaptive::{ErrorEstimate, relative_error};
-/// use nyquist_film::extras::Estimate;
-/// let e = Estimate { value: [0.5; 3], variance: None, halves: Some([[0.6; 3], [0.4; 3]]) };
-/// let r = relative_error(&e, ErrorEstimate::Halves, 0.0).unwrap();
-/// assert!((r - 0.2).abs() < 1e-12); // |0.6 − 0.4| / 2 = 0.1 per channel, over 0.5
-/// assert_eq!(relative_error(&e, ErrorEstimate::Variance, 0.0), None);
-/// ```
-pub fn relative_error(e: &Estimate, estimate: ErrorEstimate, floor: f64) -> Option<f64> {
-    let err = match estimate {
-        ErrorEstimate::Halves => e.half_difference()?,
-        ErrorEstimate::Variance => e.standard_error()?,
-    };
-    let value: f64 = e.value.iter().map(|v| v.abs()).sum();
-    Some(err.iter().sum::<f64>() / (value + floor))
 }
 
 /// What [`render_adaptive`] did: the samples of each pixel and the totals.
@@ -275,7 +248,7 @@ pub fn render_adaptive(
             .map(|i| {
                 let (x, y) = (b.x0 + (i % width) as i64, b.y0 + (i / width) as i64);
                 film.estimate(x, y)
-                    .and_then(|e| relative_error(&e, config.estimate, config.floor))
+                    .and_then(|e| e.relative_error(config.estimate, config.floor))
                     .unwrap_or(f64::INFINITY)
             })
             .collect();

@@ -2,25 +2,10 @@
 //! channel's weighted mean, the sums of two half-sample sets (A and B), and extra channels
 //! (albedo, normal, depth, or any number of floats), all through the film's filter.
 //!
-//! **Variance.** A pixel's value is the weighted mean I = Σ fᵢxᵢ / Σ fᵢ of its samples' values
-//! xᵢ (`weight·rgb`) with filter weights fᵢ. Its variance, by the delta method, is
-//! Σ fᵢ²(xᵢ − I)² / (Σ fᵢ)², and with the effective sample count n = (Σ fᵢ)²/Σ fᵢ² in place of
-//! n − 1 (unbiased for equal weights: the familiar s²/n) it is
-//! Q / ((Σ fᵢ)² − Σ fᵢ²), Q = Σ fᵢ²(xᵢ − I)².
-//! Q is kept without cancellation: the pixel holds the f²-weighted mean m and the sum
-//! S = Σ fᵢ²(xᵢ − m)², updated per sample by Welford's method with weights (West 1979,
-//! "Updating mean and variance estimates: an improved method"), so Q = S + (m − I)²·Σ fᵢ², since
-//! Σ fᵢ²(xᵢ − m) = 0. The weights f² are never negative, so negative filter lobes cannot make
-//! the update unstable. Tiles are merged by Chan, Golub and LeVeque's pairwise formula (1979,
-//! "Updating formulae and a pairwise algorithm for computing sample variances"), in tile-index
-//! order like the sums, so the result is bit-identical for any thread count and arrival order.
-//!
-//! **Halves.** A sample's class is the parity of `popcount(index & 0xaaaa…aaaa)` (Christensen,
-//! Kensler and Kilpatrick 2018, "Progressive multi-jittered sample sequences", §10.2.1; Cycles'
-//! adaptive sampling): for (0,2) sequences such as PMJ02 and Sobol each class is itself well
-//! stratified, so the two half-images are independent estimates of the pixel with half the
-//! samples each, and their difference measures the error: E|A − B|/2 ≈ the standard error of I.
-//! The film keeps the B sums; A is the whole less B.
+//! **Variance** and **halves** are the estimators of [`nyquist::pixel_stats`] (its module docs
+//! give them), kept for every stored pixel: the film holds each pixel's [`Moments`] and the B
+//! half's sums, merges tiles in tile-index order, so the result is bit-identical for any thread
+//! count and arrival order, and gives each pixel's [`Estimate`].
 //!
 //! **Channels.** `channels` floats per sample, accumulated as Σ f·a with the pixel's own Σ f
 //! (not multiplied by the sample weight: an albedo is not radiance).
@@ -28,6 +13,7 @@
 use crate::error::Error;
 use crate::image::Image;
 use crate::pixel::Pixel;
+pub use nyquist::pixel_stats::{Estimate, Moments, sample_half};
 
 /// What a film keeps per pixel beside its RGB sums; all off by default, and a film that asks for
 /// nothing stores and computes nothing more. Costs per stored pixel: variance 56 bytes, halves
@@ -80,67 +66,6 @@ impl PixelExtras {
         usize::from(self.variance) * size_of::<Moments>()
             + usize::from(self.halves) * size_of::<Pixel>()
             + usize::from(self.channels) * size_of::<f64>()
-    }
-}
-
-/// The half a sample of index `index` belongs to: 0 (A) or 1 (B), the parity of
-/// `popcount(index & 0xaaaa_aaaa_aaaa_aaaa)`. Of every 4 consecutive indices from a multiple of
-/// 4, two fall in each half; below 2³² this is Cycles' rule.
-///
-/// ```
-/// use nyquist_film::extras::sample_half;
-/// let halves: Vec<usize> = (0..8).map(sample_half).collect();
-/// assert_eq!(halves, [0, 0, 1, 1, 0, 0, 1, 1]);
-/// ```
-pub fn sample_half(index: u64) -> usize {
-    ((index & 0xaaaa_aaaa_aaaa_aaaa).count_ones() & 1) as usize
-}
-
-/// A pixel's value and the error estimates its film keeps for it ([`crate::Film::estimate`]).
-///
-/// ```
-/// let e = nyquist_film::extras::Estimate {
-///     value: [1.0; 3],
-///     variance: Some([0.04, 0.09, 0.0]),
-///     halves: Some([[1.1, 1.0, 1.0], [0.9, 1.0, 1.0]]),
-/// };
-/// assert_eq!(e.standard_error(), Some([0.2, 0.3, 0.0]));
-/// let d = e.half_difference().unwrap();
-/// assert!((d[0] - 0.1).abs() < 1e-12 && d[1] == 0.0);
-/// ```
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Estimate {
-    /// The weighted mean per channel, Σ f·x / Σ f (0 where Σ f ≤ 0), before splats and
-    /// without the image's clamp of negative values.
-    pub value: [f64; 3],
-    /// The variance of `value` per channel (module docs), when the film keeps variance and the
-    /// pixel has more than one effective sample.
-    pub variance: Option<[f64; 3]>,
-    /// The means of the A and B halves, when the film keeps halves and both have Σ f > 0.
-    pub halves: Option<[[f64; 3]; 2]>,
-}
-
-impl Estimate {
-    /// The standard error of `value`: the square root of `variance`.
-    pub fn standard_error(&self) -> Option<[f64; 3]> {
-        self.variance.map(|v| v.map(f64::sqrt))
-    }
-
-    /// Half the difference of the halves' means, |A − B| / 2: an estimate of the standard
-    /// error of `value` from the halves (for independent halves of n/2 samples each,
-    /// Var(A − B) = 4·Var(value), so |A − B|/2 has the standard error's scale).
-    pub fn half_difference(&self) -> Option<[f64; 3]> {
-        self.halves
-            .map(|[a, b]| [0, 1, 2].map(|c| (a[c] - b[c]).abs() * 0.5))
-    }
-}
-
-/// The mean `sums / weight`, or 0 where `weight ≤ 0`.
-pub(crate) fn mean(p: &Pixel) -> [f64; 3] {
-    if p.weight_sum > 0.0 {
-        p.rgb_sum.map(|s| s / p.weight_sum)
-    } else {
-        [0.0; 3]
     }
 }
 
@@ -355,72 +280,6 @@ impl ChannelImage {
     }
 }
 
-/// One pixel's second moments: Σ f², the f²-weighted mean of each channel and the sum of
-/// f²-weighted squared deviations from it (West's weighted Welford update; see the module
-/// docs).
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct Moments {
-    /// Σ f².
-    pub(crate) w2: f64,
-    /// Σ f²·x / Σ f², per channel.
-    pub(crate) mean: [f64; 3],
-    /// Σ f²·(x − mean)², per channel.
-    pub(crate) m2: [f64; 3],
-}
-
-impl Moments {
-    /// Adds the value `x` with filter weight `f` (weight `f²`); a weight whose square is 0 adds
-    /// nothing.
-    pub(crate) fn add(&mut self, f: f64, x: [f64; 3]) {
-        let v = f * f;
-        if v == 0.0 {
-            return;
-        }
-        self.w2 += v;
-        let r = v / self.w2;
-        for c in 0..3 {
-            let d = x[c] - self.mean[c];
-            self.mean[c] += d * r;
-            self.m2[c] += v * d * (x[c] - self.mean[c]);
-        }
-    }
-
-    /// Merges `o` into these moments (Chan, Golub and LeVeque's pairwise update).
-    pub(crate) fn merge(&mut self, o: &Moments) {
-        if o.w2 == 0.0 {
-            return;
-        }
-        if self.w2 == 0.0 {
-            *self = *o;
-            return;
-        }
-        let w = self.w2 + o.w2;
-        let r = o.w2 / w;
-        let cross = self.w2 * r;
-        for c in 0..3 {
-            let d = o.mean[c] - self.mean[c];
-            self.mean[c] += d * r;
-            self.m2[c] += o.m2[c] + d * d * cross;
-        }
-        self.w2 = w;
-    }
-
-    /// The variance of the weighted mean of channel `c` of a pixel whose sums are `p`:
-    /// Q / ((Σ f)² − Σ f²) with Q = m2 + (mean − I)²·Σ f² (see the module docs); `None` when
-    /// the denominator is not positive (fewer than two effective samples) or the result is not
-    /// finite.
-    pub(crate) fn variance_of_mean(&self, p: &Pixel, c: usize) -> Option<f64> {
-        let w1 = p.weight_sum;
-        let denominator = w1 * w1 - self.w2;
-        if !(denominator > 0.0) {
-            return None;
-        }
-        let d = self.mean[c] - p.rgb_sum[c] / w1;
-        let v = (self.m2[c] + d * d * self.w2) / denominator;
-        v.is_finite().then_some(v.max(0.0))
-    }
-}
-
 /// A tile's (or the film's) extra sums, per stored pixel, row-major like its pixels; each part
 /// empty when the film does not keep it.
 #[derive(Clone, Debug, Default)]
@@ -512,22 +371,12 @@ impl ExtraSums {
 
     /// The estimate of stored pixel `i`, whose sums are `p`.
     pub(crate) fn estimate(&self, i: usize, p: &Pixel) -> Estimate {
-        let variance = self.moments.get(i).and_then(|m| {
-            let v = [0, 1, 2].map(|c| m.variance_of_mean(p, c));
-            Some([v[0]?, v[1]?, v[2]?])
-        });
-        let halves = self.half_b.get(i).and_then(|b| {
-            let a = Pixel {
-                rgb_sum: [0, 1, 2].map(|c| p.rgb_sum[c] - b.rgb_sum[c]),
-                weight_sum: p.weight_sum - b.weight_sum,
-            };
-            (a.weight_sum > 0.0 && b.weight_sum > 0.0).then(|| [mean(&a), mean(b)])
-        });
-        Estimate {
-            value: mean(p),
-            variance,
-            halves,
-        }
+        Estimate::from_sums(
+            p.rgb_sum,
+            p.weight_sum,
+            self.moments.get(i),
+            self.half_b.get(i).map(|b| (b.rgb_sum, b.weight_sum)),
+        )
     }
 
     /// The channel means of stored pixel `i` whose filter weights sum to `weight` (0 where
@@ -550,147 +399,8 @@ impl ExtraSums {
 }
 
 #[cfg(test)]
-#[path = "../tests/support/double_double.rs"]
-mod double_double;
-
-#[cfg(test)]
 mod tests {
-    use super::double_double::{ulps, variance_of_mean};
     use super::*;
-
-    fn pixel_of(samples: &[(f64, f64)]) -> (Pixel, Moments) {
-        let mut p = Pixel::default();
-        let mut m = Moments::default();
-        for &(f, x) in samples {
-            p.rgb_sum[0] += f * x;
-            p.weight_sum += f;
-            m.add(f, [x, 2.0 * x, -x]);
-        }
-        (p, m)
-    }
-
-    #[test]
-    fn equal_weights_give_the_sample_variance_over_n() {
-        // 1, 2, 3, 4: s² = 5/3, so the variance of the mean is 5/12.
-        let s: Vec<(f64, f64)> = (1..=4).map(|x| (0.5, f64::from(x))).collect();
-        let (p, m) = pixel_of(&s);
-        assert_eq!(m.w2, 1.0);
-        assert_eq!(m.mean[0], 2.5);
-        assert_eq!(m.m2[0], 0.25 * 5.0);
-        let v = m.variance_of_mean(&p, 0).unwrap();
-        assert!((v - 5.0 / 12.0).abs() < 1e-15, "{v}");
-    }
-
-    #[test]
-    fn one_sample_or_zero_weights_have_no_variance() {
-        let (p, m) = pixel_of(&[(0.7, 3.0)]);
-        assert_eq!(m.variance_of_mean(&p, 0), None);
-        let (p, m) = pixel_of(&[(0.0, 3.0), (0.0, 1.0)]);
-        assert_eq!((m.w2, m.mean, m.m2), (0.0, [0.0; 3], [0.0; 3]));
-        assert_eq!(m.variance_of_mean(&p, 0), None);
-    }
-
-    #[test]
-    fn a_constant_has_variance_zero() {
-        let s: Vec<(f64, f64)> = (0..9).map(|i| (0.25 + f64::from(i) * 0.1, 7.5)).collect();
-        let (p, m) = pixel_of(&s);
-        assert_eq!(m.m2, [0.0; 3]);
-        assert_eq!(m.mean, [7.5, 15.0, -7.5]);
-        // Only the rounding of I = Σ f·x / Σ f (a few ulps of 7.5) is left.
-        let v = m.variance_of_mean(&p, 0).unwrap();
-        assert!(v < (8.0 * f64::EPSILON * 7.5).powi(2), "{v}");
-    }
-
-    #[test]
-    fn merging_halves_equals_adding_in_one_run() {
-        let s: Vec<(f64, f64)> = (0..40)
-            .map(|i| {
-                let i = f64::from(i);
-                (0.2 + (i * 0.37) % 1.0 - 0.1, (i * 1.618) % 3.0)
-            })
-            .collect();
-        let (p, whole) = pixel_of(&s);
-        for cut in [0, 1, 17, 39, 40] {
-            let (_, mut a) = pixel_of(&s[..cut]);
-            let (_, b) = pixel_of(&s[cut..]);
-            a.merge(&b);
-            assert!((a.w2 - whole.w2).abs() <= 1e-15 * whole.w2, "cut {cut}");
-            for c in 0..3 {
-                let scale = whole.mean[c].abs().max(1.0);
-                assert!(
-                    (a.mean[c] - whole.mean[c]).abs() <= 1e-14 * scale,
-                    "cut {cut}"
-                );
-                assert!(
-                    (a.m2[c] - whole.m2[c]).abs() <= 1e-13 * whole.m2[c],
-                    "cut {cut}"
-                );
-            }
-            let (va, vw) = (a.variance_of_mean(&p, 0), whole.variance_of_mean(&p, 0));
-            assert!(
-                (va.unwrap() - vw.unwrap()).abs() <= 1e-13 * vw.unwrap(),
-                "cut {cut}"
-            );
-        }
-    }
-
-    #[test]
-    fn the_variance_agrees_with_two_passes_in_double_double() {
-        // Weights from a Mitchell-like range with negative lobes, values far from 0 (the case
-        // where a one-pass Σx² form cancels: here the variance's relative condition is about
-        // 10⁶, and a Σx² form loses every digit).
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let mut worst = 0.0f64;
-        for n in [2usize, 3, 10, 100, 1000, 10_000] {
-            let s: Vec<(f64, f64)> = (0..n)
-                .map(|_| (next() * 1.2 - 0.1, 1000.0 + next()))
-                .collect();
-            let (p, m) = pixel_of(&s);
-            let want = variance_of_mean(&s);
-            let got = m.variance_of_mean(&p, 0).unwrap();
-            worst = worst.max(ulps(got, want));
-        }
-        // Measured: 6419 ulps (1.4·10⁻¹² relative) at most over these six sets, against a
-        // condition number of about 10⁶; the bound is 2¹⁴ ulps.
-        assert!(worst <= 16384.0, "{worst} ulps");
-    }
-
-    #[test]
-    fn halves_alternate_in_pairs_and_balance_every_four() {
-        for base in (0..1u64 << 12).step_by(4) {
-            let b: usize = (base..base + 4).map(sample_half).sum();
-            assert_eq!(b, 2, "indices {base}..{}", base + 4);
-        }
-        assert_eq!(sample_half(0xaaaa_aaaa_aaaa_aaaa), 0); // 32 bits set
-        assert_eq!(sample_half(1 << 63), 1);
-        assert_eq!(sample_half((1 << 62) | 1), 0);
-    }
-
-    #[test]
-    fn the_error_estimates_are_the_square_root_and_half_the_difference() {
-        let e = Estimate {
-            value: [1.0; 3],
-            variance: Some([0.04, 0.09, 0.0]),
-            halves: Some([[1.5, 1.0, 0.0], [0.5, 1.25, 0.0]]),
-        };
-        assert_eq!(e.standard_error(), Some([0.2, 0.3, 0.0]));
-        assert_eq!(e.half_difference(), Some([0.5, 0.125, 0.0]));
-        let none = Estimate {
-            variance: None,
-            halves: None,
-            ..e
-        };
-        assert_eq!(
-            (none.standard_error(), none.half_difference()),
-            (None, None)
-        );
-    }
 
     #[test]
     fn a_channel_image_gives_each_channel_and_no_other() {
@@ -745,7 +455,7 @@ mod tests {
         assert_eq!(a.half_b[1].rgb_sum, [1.0, 2.0, 3.0]);
         assert_eq!(a.half_b[1].weight_sum, 0.5);
         assert_eq!(a.channels[2..4], [1.25, 0.75]);
-        assert_eq!(a.moments[1].w2, 0.3125);
+        assert_eq!(a.moments[1].weight2_sum(), 0.3125);
         let mut b = ExtraSums::new(&extras, 2).unwrap().unwrap();
         b.merge_pixel(0, &a, 1);
         assert_eq!(b.half_b[0], a.half_b[1]);

@@ -462,11 +462,7 @@ impl Film {
         let p = self.sums.pixels()[i];
         Some(match self.sums.extras() {
             Some(e) => e.estimate(i, &p),
-            None => Estimate {
-                value: crate::extras::mean(&p),
-                variance: None,
-                halves: None,
-            },
+            None => Estimate::from_sums(p.rgb_sum, p.weight_sum, None, None),
         })
     }
 
@@ -551,7 +547,7 @@ impl Film {
                     weight_sum: p.weight_sum - b.weight_sum,
                 };
                 for (image, half) in images.iter_mut().zip([a, b]) {
-                    let m = crate::extras::mean(&half);
+                    let m = Estimate::from_sums(half.rgb_sum, half.weight_sum, None, None).value;
                     image.data_mut()[3 * i..3 * i + 3].copy_from_slice(&m.map(|v| v as f32));
                 }
             }

@@ -3,9 +3,7 @@
 
 use nyquist::filter::Boxcar;
 use nyquist::sequence::{OwenSobol, Sequence};
-use nyquist_film::adaptive::{
-    AdaptiveConfig, AdaptiveReport, ErrorEstimate, relative_error, render_adaptive,
-};
+use nyquist_film::adaptive::{AdaptiveConfig, AdaptiveReport, ErrorEstimate, render_adaptive};
 use nyquist_film::{Error, Film, FilmConfig, FilmSample, FilmTile, PixelExtras, render_tiles};
 use std::ops::Range;
 
@@ -249,18 +247,6 @@ fn progress_reports_every_pass_and_the_spp_map_shows_the_edge() {
     assert_eq!(map.get(0, 0), [0.0; 3]);
     let brightest = map.data().iter().copied().fold(0.0f32, f32::max);
     assert_eq!(brightest, 1.0);
-}
-
-#[test]
-fn relative_error_uses_the_floor_for_dark_pixels() {
-    let e = nyquist_film::extras::Estimate {
-        value: [0.0; 3],
-        variance: Some([1e-4; 3]),
-        halves: None,
-    };
-    // √(10⁻⁴) = 0.01 per channel, summed 0.03, over the floor 0.01.
-    let r = relative_error(&e, ErrorEstimate::Variance, 0.01).unwrap();
-    assert!((r - 3.0).abs() < 1e-12, "{r}");
 }
 
 #[test]

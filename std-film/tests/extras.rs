@@ -7,7 +7,7 @@ use nyquist_film::extras::sample_half;
 use nyquist_film::{Film, FilmConfig, FilmSample, FilmTile, PixelExtras, render_tiles};
 use proptest::prelude::*;
 
-#[path = "support/double_double.rs"]
+#[path = "../../core/src/tests/double_double.rs"]
 mod double_double;
 #[path = "support/temp_dir.rs"]
 mod temp_dir;

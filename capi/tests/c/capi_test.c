@@ -277,6 +277,83 @@ static void filters(void) {
     nyq_filter_destroy(f);
 }
 
+/* ---- pixel statistics ------------------------------------------------------------------ */
+
+static void put_doubles(const double *v, size_t n) {
+    for (size_t i = 0; i < n; i++) {
+        uint64_t u;
+        memcpy(&u, &v[i], sizeof u);
+        printf(" %016" PRIx64, u);
+    }
+    printf("\n");
+}
+
+/* Sample k of pixel p: filter weight and value, exact in binary so Rust forms the same. */
+static void stats_sample(int p, int k, double *weight, double value[3]) {
+    *weight = (double)((k * 3 + p) % 5) / 4.0 - 0.25;
+    value[0] = (double)((k * 7 + p) % 11) / 8.0;
+    value[1] = 2.0 - value[0];
+    value[2] = (double)(k % 3);
+}
+
+/* Four pixels, 16 samples each, added by two "threads" (samples 0..9 and 9..16) and merged,
+ * the way a renderer with its own film would keep them. */
+static void pixel_stats(void) {
+    NyqPixelStats a[4], b[4];
+    memset(a, 0, sizeof a);
+    memset(b, 0, sizeof b);
+    for (int p = 0; p < 4; p++) {
+        for (int k = 0; k < 16; k++) {
+            double w, v[3];
+            stats_sample(p, k, &w, v);
+            CHECK(nyq_pixel_stats_add(k < 9 ? &a[p] : &b[p], (uint64_t)k, w, v));
+        }
+        CHECK(nyq_pixel_stats_merge(&a[p], &b[p]));
+        const NyqPixelStats *s = &a[p];
+        printf("stats %d", p);
+        double fields[15];
+        memcpy(fields, s->sum, sizeof s->sum);
+        fields[3] = s->weight;
+        fields[4] = s->weight2_sum;
+        memcpy(fields + 5, s->mean, sizeof s->mean);
+        memcpy(fields + 8, s->deviation_sum, sizeof s->deviation_sum);
+        memcpy(fields + 11, s->half_b_sum, sizeof s->half_b_sum);
+        fields[14] = s->half_b_weight;
+        put_doubles(fields, 15);
+        NyqEstimate e;
+        CHECK(nyq_pixel_stats_estimate(s, &e));
+        printf("estimate %d %d %d", p, (int)e.has_variance, (int)e.has_halves);
+        double est[12];
+        memcpy(est, e.value, sizeof e.value);
+        memcpy(est + 3, e.variance, sizeof e.variance);
+        memcpy(est + 6, e.half_a, sizeof e.half_a);
+        memcpy(est + 9, e.half_b, sizeof e.half_b);
+        put_doubles(est, 12);
+        double r[2];
+        CHECK(nyq_pixel_stats_relative_error(s, NYQ_ERROR_HALVES, 0.01, &r[0]));
+        CHECK(nyq_pixel_stats_relative_error(s, NYQ_ERROR_VARIANCE, 0.01, &r[1]));
+        printf("relerr %d", p);
+        put_doubles(r, 2);
+    }
+    uint32_t h[8];
+    for (uint64_t i = 0; i < 8; i++) {
+        CHECK(nyq_sample_half(i * 5 + ((uint64_t)1 << 40), &h[i]));
+    }
+    printf("halves");
+    for (int i = 0; i < 8; i++) {
+        printf(" %" PRIu32, h[i]);
+    }
+    printf("\n");
+    NyqPixelStats bad = a[0];
+    bad.weight2_sum = -1.0;
+    double v[3] = {1.0, 1.0, 1.0}, r;
+    put_status("stats_nan_weight", nyq_pixel_stats_add(&a[0], 0, NAN, v));
+    put_status("stats_null_value", nyq_pixel_stats_add(&a[0], 0, 1.0, NULL));
+    put_status("stats_bad_struct", nyq_pixel_stats_merge(&a[0], &bad));
+    put_status("stats_bad_kind", nyq_pixel_stats_relative_error(&a[0], 7, 0.0, &r));
+    put_status("stats_negative_floor", nyq_pixel_stats_relative_error(&a[0], 0, -1.0, &r));
+}
+
 /* ---- error codes ----------------------------------------------------------------------- */
 
 static int ignore_eval_calls;
@@ -382,6 +459,7 @@ int main(void) {
     stratify();
     samplers();
     filters();
+    pixel_stats();
     errors();
     printf("done\n");
     return 0;

@@ -1,5 +1,6 @@
 //! Naive oracles shared by the unit tests (test builds only).
 
+pub(crate) mod double_double;
 mod radical_oracle;
 pub(crate) mod sobol_oracle;
 

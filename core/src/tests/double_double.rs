@@ -1,5 +1,6 @@
 //! Double-double arithmetic (an unevaluated sum hi + lo of two f64, about 106 bits): reference
-//! values for the film's f64 statistics, exact enough that their distance is the film's error.
+//! values for the f64 pixel statistics (`pixel_stats`, the film), exact enough that their distance
+//! is their error.
 //! Knuth's TwoSum and the FMA-based TwoProduct (Dekker 1971, "A floating-point technique for
 //! extending the available precision"; Hida, Li and Bailey's QD library for the operations).
 
