@@ -657,6 +657,10 @@ mod tests {
             (2.0, [1.0, -2.0, 3.0], [0.5, 0.0, 1.0])
         );
         assert_eq!(
+            (m.weight2_sum(), m.mean(), m.deviation_sum()),
+            (2.0, [1.0, -2.0, 3.0], [0.5, 0.0, 1.0])
+        );
+        assert_eq!(
             Moments::from_parts(f64::NAN, [0.0; 3], [0.0; 3]),
             Err(Error::NonFinite {
                 what: "weight2_sum"
