@@ -35,13 +35,15 @@ pub struct Measured {
     pub image: Image,
 }
 
-/// Renders `base` as configured but with `spp`, the sampler and adaptive settings given, and
-/// measures it against `reference`.
+/// Renders `base` as configured but with `spp`, the sampler and adaptive settings given, once
+/// per seed in `seeds`, and measures it against `reference`: the RMSE over the seeds (the root
+/// of the mean squared RMSE), the mean spp over them, and the first seed's report and image.
 fn measure(
     base: &RenderConfig,
     sampler: &str,
     spp: u32,
     adaptive: Option<AdaptiveConfig>,
+    seeds: &[u64],
     reference: &Image,
 ) -> Result<(f64, f64, Option<AdaptiveReport>, Image)> {
     let mut config = base.clone();
@@ -50,10 +52,19 @@ fn measure(
     config.adaptive = adaptive;
     // The stateless layer for every method, so that they differ only in where samples go.
     config.stateless = true;
-    let out = render(&config, |_, _| {}).with_context(|| format!("{sampler} at {spp} spp"))?;
     let pixels = f64::from(config.size[0]) * f64::from(config.size[1]);
-    let rmse = out.image.rmse(reference).context("RMSE")?;
-    Ok((rmse, out.samples as f64 / pixels, out.adaptive, out.image))
+    let (mut squares, mut samples, mut first) = (0.0, 0.0, None);
+    for &seed in seeds {
+        config.seed = seed;
+        let out = render(&config, |_, _| {})
+            .with_context(|| format!("{sampler} at {spp} spp, seed {seed}"))?;
+        squares += out.image.rmse(reference).context("RMSE")?.powi(2);
+        samples += out.samples as f64 / pixels;
+        first.get_or_insert((out.adaptive, out.image));
+    }
+    let (report, image) = first.context("no seeds")?;
+    let n = seeds.len() as f64;
+    Ok(((squares / n).sqrt(), samples / n, report, image))
 }
 
 /// The uniform spp whose RMSE is `e` on the curve `(spp, rmse)` (increasing spp), by log-log
@@ -80,26 +91,43 @@ pub fn equivalent_spp(curve: &[(f64, f64)], e: f64) -> f64 {
     (s0.ln() + (e.ln() - e0.ln()) / slope).exp()
 }
 
-/// The study for `base` (scene, size, filter, threads, seed): the uniform curve of `sampler`,
-/// adaptive renders at `budgets` with `threshold` and `floor`, and the contrast-test sampler (`adaptive`,
-/// spp/4 samples then all where they disagree) at the same spp. `progress(done, total)`.
+/// What a study renders beside the uniform curve.
+#[derive(Clone, Debug)]
+pub struct StudyConfig {
+    /// The progressive sampler of every render.
+    pub sampler: String,
+    /// Budgets (mean spp) of the adaptive and contrast-test renders.
+    pub budgets: Vec<u32>,
+    /// Thresholds of the adaptive renders, one render per budget and threshold.
+    pub thresholds: Vec<f64>,
+    /// The adaptive renders' floor.
+    pub floor: f64,
+    /// Seeds: every configuration is rendered once per seed.
+    pub seeds: Vec<u64>,
+}
+
+/// The study for `base` (scene, size, filter, threads): the uniform curve of the sampler, adaptive
+/// renders at each budget and threshold, and the contrast-test sampler (`adaptive`, spp/4
+/// samples then all where they disagree) at the same spp, each over every seed.
+/// `progress(done, total)`.
 ///
 /// # Errors
 /// A render that fails.
 pub fn run(
     base: &RenderConfig,
-    sampler: &str,
-    budgets: &[u32],
-    (threshold, floor): (f64, f64),
+    study: &StudyConfig,
     reference: &Image,
     mut progress: impl FnMut(usize, usize),
 ) -> Result<Vec<Measured>> {
-    let total = UNIFORM_SPP.len() + 2 * budgets.len();
+    let per_budget = study.thresholds.len() + 1;
+    let total = UNIFORM_SPP.len() + per_budget * study.budgets.len();
     let mut done = 0;
     let mut out = Vec::new();
     let mut curve = Vec::new();
+    let seeds = &study.seeds;
     for spp in UNIFORM_SPP {
-        let (rmse, mean_spp, _, image) = measure(base, sampler, spp, None, reference)?;
+        let (rmse, mean_spp, _, image) =
+            measure(base, &study.sampler, spp, None, seeds, reference)?;
         curve.push((mean_spp, rmse));
         out.push(Measured {
             method: "uniform".into(),
@@ -113,25 +141,27 @@ pub fn run(
         done += 1;
         progress(done, total);
     }
-    for &budget in budgets {
-        let config = AdaptiveConfig {
-            floor,
-            ..AdaptiveConfig::new(budget, threshold)
-        };
-        let (rmse, mean_spp, report, image) =
-            measure(base, sampler, budget, Some(config), reference)?;
-        out.push(Measured {
-            method: format!("adaptive {threshold}"),
-            spp: budget,
-            mean_spp,
-            rmse,
-            uniform_equivalent: Some(equivalent_spp(&curve, rmse)),
-            report,
-            image,
-        });
-        done += 1;
-        progress(done, total);
-        let (rmse, mean_spp, _, image) = measure(base, "adaptive", budget, None, reference)?;
+    for &budget in &study.budgets {
+        for &threshold in &study.thresholds {
+            let config = AdaptiveConfig {
+                floor: study.floor,
+                ..AdaptiveConfig::new(budget, threshold)
+            };
+            let (rmse, mean_spp, report, image) =
+                measure(base, &study.sampler, budget, Some(config), seeds, reference)?;
+            out.push(Measured {
+                method: format!("adaptive {threshold}"),
+                spp: budget,
+                mean_spp,
+                rmse,
+                uniform_equivalent: Some(equivalent_spp(&curve, rmse)),
+                report,
+                image,
+            });
+            done += 1;
+            progress(done, total);
+        }
+        let (rmse, mean_spp, _, image) = measure(base, "adaptive", budget, None, seeds, reference)?;
         out.push(Measured {
             method: "contrast".into(),
             spp: budget,

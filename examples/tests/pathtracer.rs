@@ -266,3 +266,84 @@ fn adaptive_renders_keep_their_budget_and_do_not_depend_on_the_thread_count() {
     assert_eq!(a.spp.iter().min(), Some(&16));
     assert!(a.spp.iter().max().unwrap() > &32);
 }
+
+#[test]
+fn the_adaptive_study_pools_its_seeds_and_measures_every_method() {
+    use nyquist_examples::adaptive_study::{StudyConfig, UNIFORM_SPP, run};
+    let mut base = RenderConfig::new("cornell");
+    base.size = [8, 8];
+    let mut r = base.clone();
+    r.spp = 64;
+    r.stateless = true;
+    let reference = render(&r, |_, _| {}).unwrap().image;
+    let study = StudyConfig {
+        sampler: "owen-sobol".into(),
+        budgets: vec![16, 32],
+        thresholds: vec![0.05, 0.0],
+        floor: 1.0,
+        seeds: vec![3, 5],
+    };
+    let rows = run(&base, &study, &reference, |_, _| {}).unwrap();
+    let methods: Vec<(&str, u32)> = rows.iter().map(|m| (m.method.as_str(), m.spp)).collect();
+    let mut want: Vec<(&str, u32)> = UNIFORM_SPP.iter().map(|&s| ("uniform", s)).collect();
+    for b in [16, 32] {
+        want.extend([("adaptive 0.05", b), ("adaptive 0", b), ("contrast", b)]);
+    }
+    assert_eq!(methods, want);
+    // The uniform 16-spp row: the root of the mean of the two seeds' squared RMSE.
+    let mut c = base.clone();
+    c.spp = 16;
+    c.stateless = true;
+    let squares: Vec<f64> = [3, 5]
+        .map(|seed| {
+            c.seed = seed;
+            render(&c, |_, _| {})
+                .unwrap()
+                .image
+                .rmse(&reference)
+                .unwrap()
+                .powi(2)
+        })
+        .to_vec();
+    assert_ne!(squares[0], squares[1]);
+    let pooled = ((squares[0] + squares[1]) / 2.0).sqrt();
+    assert!(
+        (rows[0].rmse - pooled).abs() <= 1e-15 * pooled,
+        "{} {pooled}",
+        rows[0].rmse
+    );
+    // Threshold 0 never stops a pixel: the whole budget is spent; the contrast test takes a
+    // quarter of it; every non-uniform row has its uniform equivalent.
+    for m in &rows[UNIFORM_SPP.len()..] {
+        match m.method.as_str() {
+            "adaptive 0" => assert_eq!(m.mean_spp, f64::from(m.spp)),
+            "contrast" => assert_eq!(m.mean_spp, f64::from(m.spp) / 4.0),
+            _ => assert!(m.mean_spp <= f64::from(m.spp)),
+        }
+        assert!(m.uniform_equivalent.unwrap() > 0.0, "{}", m.method);
+    }
+}
+
+#[test]
+fn the_adaptive_study_rejects_bad_settings() {
+    for (flag, value, says) in [
+        ("--seeds", "0", "--seeds 0: at least 1"),
+        ("--thresholds", "0.1,-1", "--thresholds -1: not a threshold"),
+        ("--floor", "NaN", "--floor NaN: must be finite and ≥ 0"),
+        (
+            "--budgets",
+            "8",
+            "--budgets: at least one, each at least 16",
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_pathtracer"))
+            .args(["adaptive", "--size", "4x4", flag, value])
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !out.status.success() && err.contains(says),
+            "{flag} {value}: {err}"
+        );
+    }
+}

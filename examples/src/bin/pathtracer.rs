@@ -62,20 +62,26 @@ struct AdaptiveArgs {
     /// Budgets (samples per pixel on average), comma-separated.
     #[arg(long, value_delimiter = ',', default_value = "32,64,128")]
     budgets: Vec<u32>,
-    /// Relative error at which a pixel stops.
-    #[arg(long, default_value_t = 0.01)]
-    threshold: f64,
+    /// Relative errors at which a pixel stops, comma-separated: one adaptive render per
+    /// budget and threshold.
+    #[arg(long, value_delimiter = ',', default_value = "0.05,0.02")]
+    thresholds: Vec<f64>,
     /// Added to a pixel's value in the relative error's denominator (large: the error is
     /// nearly absolute).
-    #[arg(long, default_value_t = 0.01)]
+    #[arg(long, default_value_t = 1.0)]
     floor: f64,
+    /// Seeds: every configuration is rendered with seeds 1 … N, its RMSE the root of the mean
+    /// squared RMSE.
+    #[arg(long, default_value_t = 4)]
+    seeds: u32,
     /// Camera samples per pixel of the reference (× 4 light samples).
     #[arg(long, default_value_t = 65536)]
     reference_spp: u32,
     /// Worker threads (default: all cores).
     #[arg(long)]
     threads: Option<usize>,
-    /// Write the spp map of the middle budget's adaptive render here (PNG).
+    /// Write the spp map of the middle budget's adaptive render (the first threshold, the first
+    /// seed) here (PNG).
     #[arg(long)]
     map: Option<PathBuf>,
     /// Write the middle budget's uniform and adaptive renders side by side here.
@@ -317,6 +323,15 @@ fn adaptive(a: AdaptiveArgs) -> Result<()> {
     if a.budgets.is_empty() || a.budgets.iter().any(|&b| b < 16) {
         bail!("--budgets: at least one, each at least 16 (the first pass takes 16)");
     }
+    if let Some(t) = a.thresholds.iter().find(|t| !(t.is_finite() && **t >= 0.0)) {
+        bail!("--thresholds {t}: not a threshold (a relative error ≥ 0)");
+    }
+    if !(a.floor.is_finite() && a.floor >= 0.0) {
+        bail!("--floor {}: must be finite and ≥ 0", a.floor);
+    }
+    if a.seeds == 0 {
+        bail!("--seeds 0: at least 1");
+    }
     let threads = threads(a.threads);
     let e = Experiment {
         scene: a.scene.clone(),
@@ -333,19 +348,19 @@ fn adaptive(a: AdaptiveArgs) -> Result<()> {
     let mut base = RenderConfig::new(&a.scene);
     base.size = a.size;
     base.threads = threads;
+    let study = adaptive_study::StudyConfig {
+        sampler: a.sampler.clone(),
+        budgets: a.budgets.clone(),
+        thresholds: a.thresholds.clone(),
+        floor: a.floor,
+        seeds: (1..=u64::from(a.seeds)).collect(),
+    };
     let bar2 = bar("study", "renders");
-    let rows = adaptive_study::run(
-        &base,
-        &a.sampler,
-        &a.budgets,
-        (a.threshold, a.floor),
-        &reference,
-        tick(&bar2),
-    )?;
+    let rows = adaptive_study::run(&base, &study, &reference, tick(&bar2))?;
     bar2.finish_and_clear();
     println!(
-        "{} at {}x{}, {}: RMSE against a {}x4-spp reference.\n",
-        a.scene, a.size[0], a.size[1], a.sampler, a.reference_spp
+        "{} at {}x{}, {}, floor {}, {} seeds: RMSE against a {}x4-spp reference.\n",
+        a.scene, a.size[0], a.size[1], a.sampler, a.floor, a.seeds, a.reference_spp
     );
     print!("{}", adaptive_study::markdown(&rows));
     let middle = a.budgets[a.budgets.len() / 2];
