@@ -7,6 +7,9 @@
 //!   + (1/N²) Σ_i Σ_j Π_k (1 + ½|x_ik − ½| + ½|x_jk − ½| − ½|x_ik − x_jk|)`.
 //! - Wrap-around L2 (Hickernell 1998, eq. 5.1d):
 //!   `WD² = −(4/3)^d + (1/N²) Σ_i Σ_j Π_k (3/2 − |x_ik − x_jk| (1 − |x_ik − x_jk|))`.
+//! - Mixture L2 (Zhou, Fang and Ning 2013, "Mixture discrepancy for quasi-random point sets"):
+//!   `MD² = (19/12)^d − (2/N) Σ_i Π_k (5/3 − ¼|x_ik − ½| − ¼|x_ik − ½|²)
+//!   + (1/N²) Σ_i Σ_j Π_k (15/8 − ¼|x_ik − ½| − ¼|x_jk − ½| − ¾|x_ik − x_jk| + ½|x_ik − x_jk|²)`.
 //!
 //! The double sums use the symmetry of the kernel (diagonal once, each pair twice). The result is
 //! the square root of the formula, clamped at 0 against rounding.
@@ -182,6 +185,42 @@ pub fn wraparound_l2_discrepancy(points: &PointSet<'_>) -> f64 {
     sqrt(w2.max(0.0))
 }
 
+/// Mixture L2 discrepancy (Zhou, Fang and Ning 2013; module docs): invariant under reflections
+/// like the centered one, and free of its flaws under shifts of the points. O(d·N²); allocates:
+/// no.
+///
+/// ```
+/// use nyquist::analysis::{mixture_l2_discrepancy, PointSet};
+/// // One point at the centre of the square: MD² = (19/12)² − 2·(5/3)² + (15/8)².
+/// let md = mixture_l2_discrepancy(&PointSet::new(&[0.5, 0.5], 2).unwrap());
+/// let want: f64 = (19.0f64 / 12.0).powi(2) - 2.0 * (5.0f64 / 3.0).powi(2) + (15.0f64 / 8.0).powi(2);
+/// assert!((md - want.sqrt()).abs() < 1e-15);
+/// ```
+pub fn mixture_l2_discrepancy(points: &PointSet<'_>) -> f64 {
+    let d = points.dims() as f64;
+    let n = points.len() as f64;
+    let single = single_sum(points, |p| {
+        p.iter()
+            .map(|&x| {
+                let a = (x - 0.5).abs();
+                5.0 / 3.0 - 0.25 * a - 0.25 * a * a
+            })
+            .product()
+    });
+    let pairs = double_sum(points, |p, q| {
+        p.iter()
+            .zip(q)
+            .map(|(&a, &b)| {
+                let t = (a - b).abs();
+                15.0 / 8.0 - 0.25 * (a - 0.5).abs() - 0.25 * (b - 0.5).abs() - 0.75 * t
+                    + 0.5 * t * t
+            })
+            .product()
+    });
+    let m2 = pow(19.0 / 12.0, d) - 2.0 / n * single + pairs / (n * n);
+    sqrt(m2.max(0.0))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -284,6 +323,13 @@ mod tests {
             "{}",
             cd * cd
         );
+        // SciPy 1.17.1's qmc.discrepancy(x, method="MD") of the same design.
+        let md = mixture_l2_discrepancy(&set(&pts, 2));
+        assert!(
+            (md * md - 0.014895592206789487).abs() < 1e-15,
+            "{}",
+            md * md
+        );
     }
 
     #[test]
@@ -302,6 +348,11 @@ mod tests {
                 centered_l2_discrepancy(&set(&reflected, 3)),
             );
             assert!((c - cr).abs() < 1e-12);
+            let (m, mr) = (
+                mixture_l2_discrepancy(&set(&pts, 3)),
+                mixture_l2_discrepancy(&set(&reflected, 3)),
+            );
+            assert!((m - mr).abs() < 1e-12);
             // L2-star is not reflection invariant: the check is not vacuous.
             assert!(
                 (l2_star_discrepancy(&set(&pts, 3)) - l2_star_discrepancy(&set(&reflected, 3)))
@@ -311,14 +362,32 @@ mod tests {
         }
     }
 
-    /// The three closed forms of the module docs summed term by term over all ordered pairs
-    /// `(i, j)`, no symmetry, no lanes, no compensation: `[T², CD², WD²]`.
-    fn naive_squares(c: &[f64], d: usize) -> [f64; 3] {
+    /// The four closed forms of the module docs summed term by term over all ordered pairs
+    /// `(i, j)`, no symmetry, no lanes, no compensation: `[T², CD², WD², MD²]`.
+    fn naive_squares(c: &[f64], d: usize) -> [f64; 4] {
         let pts: Vec<&[f64]> = c.chunks_exact(d).collect();
         let n = pts.len() as f64;
         let df = d as f64;
         let (mut s_star, mut s_cd, mut p_star, mut p_cd, mut p_wd) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        let (mut s_md, mut p_md) = (0.0, 0.0);
         for p in &pts {
+            s_md += p
+                .iter()
+                .map(|&x| 5.0 / 3.0 - (x - 0.5).abs() / 4.0 - (x - 0.5).powi(2) / 4.0)
+                .product::<f64>();
+            for q in &pts {
+                p_md += p
+                    .iter()
+                    .zip(q.iter())
+                    .map(|(&a, &b)| {
+                        1.875
+                            - (a - 0.5).abs() / 4.0
+                            - (b - 0.5).abs() / 4.0
+                            - 3.0 * (a - b).abs() / 4.0
+                            + (a - b).powi(2) / 2.0
+                    })
+                    .product::<f64>();
+            }
             s_star += p.iter().map(|&x| 1.0 - x * x).product::<f64>();
             s_cd += p
                 .iter()
@@ -345,6 +414,7 @@ mod tests {
             3f64.powf(-df) - 2f64.powf(1.0 - df) / n * s_star + p_star / (n * n),
             (13.0f64 / 12.0).powf(df) - 2.0 / n * s_cd + p_cd / (n * n),
             -(4.0f64 / 3.0).powf(df) + p_wd / (n * n),
+            (19.0f64 / 12.0).powf(df) - 2.0 / n * s_md + p_md / (n * n),
         ]
     }
 
@@ -360,6 +430,7 @@ mod tests {
                     l2_star_discrepancy(&s),
                     centered_l2_discrepancy(&s),
                     wraparound_l2_discrepancy(&s),
+                    mixture_l2_discrepancy(&s),
                 ];
                 let want = naive_squares(&pts, d);
                 for (g, w) in got.iter().zip(want) {
@@ -384,6 +455,13 @@ mod tests {
             let di = d as i32;
             let t2 = 3f64.powi(-di) - 2f64.powi(1 - di) * 0.75f64.powi(di) + 0.5f64.powi(di);
             let c2 = (13.0f64 / 12.0).powi(di) - 1.0;
+            let m2 = (19.0f64 / 12.0).powi(di) - 2.0 * (5.0f64 / 3.0).powi(di)
+                + (15.0f64 / 8.0).powi(di);
+            let m = mixture_l2_discrepancy(&s);
+            assert!(
+                (m - m2.sqrt()).abs() < 1e-14 * m2.sqrt().max(1.0),
+                "d {d}: {m}"
+            );
             let w2 = 1.5f64.powi(di) - (4.0f64 / 3.0).powi(di);
             assert!((l2_star_discrepancy(&s) - t2.sqrt()).abs() < 1e-14, "d {d}");
             assert!(
@@ -437,7 +515,12 @@ mod tests {
             let mut pts = raw.clone();
             pts.resize(n * dims, 1.0);
             let s = set(&pts, dims);
-            for v in [l2_star_discrepancy(&s), centered_l2_discrepancy(&s), wraparound_l2_discrepancy(&s)] {
+            for v in [
+                l2_star_discrepancy(&s),
+                centered_l2_discrepancy(&s),
+                wraparound_l2_discrepancy(&s),
+                mixture_l2_discrepancy(&s),
+            ] {
                 prop_assert!(v.is_finite() && (0.0..=2.0).contains(&v));
             }
         }

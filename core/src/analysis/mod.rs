@@ -35,7 +35,9 @@ mod l2;
 mod star;
 
 pub use distance::{MinDistance, Topology, min_distance, min_distance_scratch_len};
-pub use l2::{centered_l2_discrepancy, l2_star_discrepancy, wraparound_l2_discrepancy};
+pub use l2::{
+    centered_l2_discrepancy, l2_star_discrepancy, mixture_l2_discrepancy, wraparound_l2_discrepancy,
+};
 pub use star::{
     ENUMERATION_LIMIT, MAX_DIMS, StarBounds, star_bounds_scratch_len, star_discrepancy,
     star_discrepancy_1d, star_discrepancy_2d, star_discrepancy_bounds, star_discrepancy_enumerate,
