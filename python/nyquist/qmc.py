@@ -1,0 +1,306 @@
+"""Quasi-Monte Carlo engines and measures with the interface of SciPy's ``scipy.stats.qmc``.
+
+Where SciPy is installed, every engine here is a subclass of ``scipy.stats.qmc.QMCEngine``, so
+SciPy accepts it wherever it takes an engine (``MultivariateNormalQMC``, ``qmc_quad``); without
+SciPy the engines have the same methods on their own base class.
+
+>>> from nyquist import qmc
+>>> qmc.Sobol(d=2, scramble=False).random_base2(2)
+array([[0.  , 0.  ],
+       [0.5 , 0.5 ],
+       [0.75, 0.25],
+       [0.25, 0.75]])
+"""
+
+from __future__ import annotations
+
+import copy
+import numbers
+import os
+import warnings
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["QMCEngine", "Sobol", "Halton", "discrepancy", "scale"]
+
+try:  # SciPy's base class, so that SciPy accepts these engines.
+    from scipy.stats.qmc import QMCEngine as _Base
+
+    _HAVE_SCIPY = True
+except ImportError:  # pragma: no cover - exercised where SciPy is absent
+    _Base = object
+    _HAVE_SCIPY = False
+
+
+def _check_d(d):
+    if isinstance(d, bool) or not isinstance(d, numbers.Integral) or d < 0:
+        raise ValueError("d must be a non-negative integer value")
+    return int(d)
+
+
+def _seed_of(rng):
+    """A 64-bit seed for the Rust scramble, drawn from ``rng`` the way SciPy draws from it: an
+    int or None seeds a NumPy Generator, a Generator is used as is."""
+    gen = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
+    return int(gen.integers(0, 2**63, dtype=np.int64)) * 2 + int(gen.integers(0, 2))
+
+
+def _rng_argument(rng, seed):
+    if seed is not None:
+        if rng is not None:
+            raise TypeError("pass either rng or seed, not both")
+        return seed
+    return rng
+
+
+class QMCEngine(_Base):
+    """The base of nyquist's engines: ``random``, ``integers``, ``reset`` and ``fast_forward``
+    over a ``_points(first, n)`` each engine defines. A subclass of SciPy's ``QMCEngine`` when
+    SciPy is installed."""
+
+    def __init__(self, d, *, optimization=None, rng=None, seed=None):
+        rng = _rng_argument(rng, seed)
+        if _HAVE_SCIPY:
+            # SciPy's own set-up: d's check, the Generator (a given one is spawned, as SciPy
+            # does), and its optimizers ("random-cd", "lloyd") applied after each draw.
+            self._initialize(d, optimization=optimization, rng=rng)
+            return
+        if optimization is not None:
+            known = {"random-cd", "lloyd"}
+            if str(optimization).lower() in known:
+                raise ValueError(f"optimization {optimization!r} needs SciPy installed")
+            raise ValueError(
+                f"{optimization!r} is not a valid optimization method. It must be one of {known!r}"
+            )
+        self.d = _check_d(d)
+        self.rng = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
+        self.rng_seed = copy.deepcopy(self.rng)
+        self.num_generated = 0
+        self.optimization_method = None
+
+    def _points(self, first, n):  # pragma: no cover - every engine defines it
+        raise NotImplementedError
+
+    def _random(self, n=1, *, workers=1):
+        return self._points(self.num_generated, n)
+
+    def random(self, n=1, *, workers=1):
+        """Draw ``n`` points in ``[0, 1)^d``, continuing where the last draw stopped."""
+        n = _check_n(n)
+        sample = self._random(n, workers=workers)
+        if self.optimization_method is not None:
+            sample = self.optimization_method(sample)
+        self.num_generated += n
+        return sample
+
+    def integers(self, l_bounds, *, u_bounds=None, n=1, endpoint=False, workers=1):
+        """Draw ``n`` integer points in ``[l_bounds, u_bounds)`` (``]`` with ``endpoint``),
+        as SciPy's ``QMCEngine.integers``."""
+        if u_bounds is None:
+            u_bounds = l_bounds
+            l_bounds = 0
+        u_bounds = np.atleast_1d(u_bounds)
+        l_bounds = np.atleast_1d(l_bounds)
+        if endpoint:
+            u_bounds = u_bounds + 1
+        if not np.issubdtype(l_bounds.dtype, np.integer) or not np.issubdtype(
+            u_bounds.dtype, np.integer
+        ):
+            raise ValueError(
+                "'u_bounds' and 'l_bounds' must be integers or array-like of integers"
+            )
+        sample = self.random(n=n, workers=workers)
+        sample = scale(sample, l_bounds=l_bounds, u_bounds=u_bounds)
+        return np.floor(sample).astype(np.int64)
+
+    def reset(self):
+        """Start again from the first point (and the first scramble)."""
+        self.rng = copy.deepcopy(self.rng_seed)
+        self.num_generated = 0
+        return self
+
+    def fast_forward(self, n):
+        """Skip ``n`` points: the next draw starts ``n`` points later. O(1)."""
+        self.num_generated += _check_n(n)
+        return self
+
+
+def _check_n(n):
+    if isinstance(n, bool) or not isinstance(n, numbers.Integral) or n < 0:
+        raise ValueError(f"n {n!r} must be a non-negative integer")
+    return int(n)
+
+
+class Sobol(QMCEngine):
+    """Sobol' points (Joe–Kuo 6.21201 direction numbers, up to 1024 dimensions and 2^32
+    points).
+
+    Unscrambled, the points are SciPy's, in SciPy's (Gray-code) order. ``scramble=True`` gives
+    nyquist's Owen scrambling (nested uniform, hash-based, seeded from ``rng``), where SciPy
+    gives a linear matrix scramble plus a digital shift: both keep every power-of-two prefix a
+    (t, m, d)-net, and Owen's is the stronger randomisation.
+
+    >>> from nyquist.qmc import Sobol
+    >>> x = Sobol(d=3, rng=7).random_base2(4)
+    >>> x.shape
+    (16, 3)
+    >>> sorted((x[:, 0] * 16).astype(int).tolist()) == list(range(16))
+    True
+    """
+
+    MAXDIM = 1024
+
+    def __init__(self, d, *, scramble=True, bits=None, rng=None, optimization=None, seed=None):
+        super().__init__(d, optimization=optimization, rng=rng, seed=seed)
+        if self.d > self.MAXDIM:
+            raise ValueError(f"Maximum supported dimensionality is {self.MAXDIM}.")
+        if bits is None:
+            bits = 30
+        if bits > 64:
+            raise ValueError("Maximum supported 'bits' is 64")
+        if not 1 <= bits <= 32:
+            raise ValueError(
+                f"bits {bits}: nyquist's Sobol points have 32-bit indices and values (1 ≤ bits ≤ 32)"
+            )
+        self.bits = bits
+        self.maxn = 2**bits
+        self.scramble = bool(scramble)
+        self._seed = _seed_of(self.rng) if self.scramble else None
+
+    def reset(self):
+        super().reset()
+        return self
+
+    def _points(self, first, n):
+        total = first + n
+        if total > self.maxn:
+            raise ValueError(
+                f"At most 2**{self.bits}={self.maxn} distinct points can be generated. "
+                f"{first} points have been previously generated, then: n={first}+{n}={total}. "
+                + ("Consider increasing `bits`." if self.bits < 32 else "")
+            )
+        if self.d == 0:
+            return np.empty((n, 0))
+        x = _core.sobol(n, self.d, first, self._seed)
+        if self.bits < 32:
+            step = 2.0 ** -self.bits
+            x = np.floor(x / step) * step
+        return x
+
+    def random(self, n=1, *, workers=1):
+        n = _check_n(n)
+        if self.num_generated == 0 and n & (n - 1) != 0:
+            warnings.warn(
+                "The balance properties of Sobol' points require n to be a power of 2.",
+                stacklevel=2,
+            )
+        return super().random(n, workers=workers)
+
+    def random_base2(self, m):
+        """Draw ``2**m`` points; the total drawn must stay a power of two (the balance
+        properties of the nets)."""
+        n = 2**m
+        total = self.num_generated + n
+        if total & (total - 1) != 0:
+            raise ValueError(
+                "The balance properties of Sobol' points require n to be a power of 2. "
+                f"{self.num_generated} points have been previously generated, then: "
+                f"n={self.num_generated}+2**{m}={total}. "
+                "If you still want to do this, the function 'Sobol.random()' can be used."
+            )
+        return self.random(n)
+
+
+class Halton(QMCEngine):
+    """Halton points: radical inverses in the first ``d`` primes (up to 1024 dimensions).
+    ``scramble=True`` Owen-scrambles each base (nested uniform digit permutations, seeded from
+    ``rng``); SciPy permutes the digits of each position independently, a weaker
+    randomisation. Both keep every base's stratification.
+
+    >>> from nyquist.qmc import Halton
+    >>> Halton(d=2, scramble=False).random(3)
+    array([[0.        , 0.        ],
+           [0.5       , 0.33333333],
+           [0.25      , 0.66666667]])
+    """
+
+    def __init__(self, d, *, scramble=True, optimization=None, rng=None, seed=None):
+        super().__init__(d, optimization=optimization, rng=rng, seed=seed)
+        self.scramble = bool(scramble)
+        self._seed = _seed_of(self.rng) if self.scramble else None
+
+    def _points(self, first, n):
+        if self.d == 0:
+            return np.empty((n, 0))
+        return _core.halton(n, self.d, first, self._seed)
+
+
+def scale(sample, l_bounds, u_bounds, *, reverse=False):
+    """Scale ``sample`` from the unit hypercube to ``[l_bounds, u_bounds]`` (or back with
+    ``reverse``), as SciPy's ``qmc.scale``: the bounds are broadcast to the sample's dimension.
+
+    >>> scale([[0.5, 0.25]], [0, 2], [2, 6])
+    array([[1., 3.]])
+    """
+    sample = np.asarray(sample)
+    if not sample.ndim == 2:
+        raise ValueError("Sample is not a 2D array")
+    d = sample.shape[1]
+    try:
+        lower = np.broadcast_to(l_bounds, d)
+        upper = np.broadcast_to(u_bounds, d)
+    except ValueError as exc:
+        raise ValueError(
+            "'l_bounds' and 'u_bounds' must be broadcastable and respect the sample dimension"
+        ) from exc
+    if not np.all(lower < upper):
+        raise ValueError("Bounds are not consistent 'l_bounds' < 'u_bounds'")
+    if not reverse:
+        if sample.size and (sample.max() > 1.0 or sample.min() < 0.0):
+            raise ValueError("Sample is not in unit hypercube")
+        return sample * (upper - lower) + lower
+    if not (np.all(sample >= lower) and np.all(sample <= upper)):
+        raise ValueError("Sample is out of bounds")
+    return (sample - lower) / (upper - lower)
+
+
+_METHODS = {"CD": "CD", "WD": "WD", "MD": "MD", "L2-star": "L2-star", "star": "star"}
+
+
+def _check_workers(workers):
+    """SciPy's rules for ``workers``: a positive count, or -1 for every CPU (which must be
+    known). nyquist computes a discrepancy on one thread whatever the count."""
+    workers = int(workers)
+    if workers == -1:
+        workers = os.cpu_count()
+        if workers is None:
+            raise NotImplementedError("Cannot determine the number of cpus using os.cpu_count(), "
+                                      "cannot use -1 for the number of workers")
+    elif workers <= 0:
+        raise ValueError(f"Invalid number of workers: {workers}, must be -1 or > 0")
+    return workers
+
+
+def discrepancy(sample, *, iterative=False, method="CD", workers=1):
+    """The discrepancy of ``sample`` (an ``(n, d)`` array in ``[0, 1]``): ``"CD"``, ``"WD"``
+    and ``"MD"`` squared and ``"L2-star"`` not, as SciPy returns them, and ``"star"``,
+    nyquist's exact star discrepancy.
+
+    >>> discrepancy([[0.5]], method="star")
+    0.5
+    """
+    sample = np.ascontiguousarray(sample, dtype=np.float64)
+    if sample.ndim != 2:
+        raise ValueError("Sample is not a 2D array")
+    if (sample.max() > 1.0) or (sample.min() < 0.0):
+        raise ValueError("Sample is not in unit hypercube")
+    if iterative:
+        raise ValueError("iterative=True: not offered by nyquist's discrepancy")
+    _check_workers(workers)
+    if method not in _METHODS:
+        raise ValueError(
+            f"{method!r} is not a valid method. It must be one of {set(_METHODS)!r}"
+        )
+    return _core.discrepancy(sample, _METHODS[method])

@@ -1,0 +1,174 @@
+//! `nyquist._core`: the Rust side of the Python package. Each function validates its arguments
+//! with the core's own checks (a bad one raises `ValueError` with the core's one-line message),
+//! releases the GIL while it computes, and returns a NumPy array that owns the `Vec` it was
+//! computed into (no copy). The Python layer (`nyquist/qmc.py`) gives these SciPy's
+//! `stats.qmc` interface.
+
+use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+
+use nyquist::analysis::{
+    PointSet, centered_l2_discrepancy, l2_star_discrepancy, mixture_l2_discrepancy,
+    star_discrepancy, star_discrepancy_scratch_len, wraparound_l2_discrepancy,
+};
+use nyquist::scramble::Scramble;
+use nyquist::sequence::{Halton, OwenSobol, ScrambledHalton, Sequence, Sobol};
+
+/// A `ValueError` with the core error's message.
+fn value_error(e: impl std::fmt::Display) -> PyErr {
+    PyValueError::new_err(e.to_string())
+}
+
+/// The number of values of an `n × d` array, or a `ValueError` when it does not fit.
+fn values(n: u64, d: u32) -> PyResult<usize> {
+    usize::try_from(n)
+        .ok()
+        .and_then(|n| n.checked_mul(d as usize))
+        .ok_or_else(|| value_error(format!("n {n} × d {d} values do not fit in memory")))
+}
+
+/// Checks that points `first .. first + n` exist in a set of `count` points.
+fn check_range(first: u64, n: u64, count: u64, what: &str) -> PyResult<()> {
+    match first.checked_add(n) {
+        Some(end) if end <= count => Ok(()),
+        _ => Err(value_error(format!(
+            "points {first}..{} are past the {count} points of {what}",
+            first as u128 + n as u128
+        ))),
+    }
+}
+
+/// Wraps `v` (row-major, `n × d`) as an `(n, d)` array without copying.
+fn array(py: Python<'_>, v: Vec<f64>, n: u64, d: u32) -> PyResult<Bound<'_, PyArray2<f64>>> {
+    v.into_pyarray(py).reshape([n as usize, d as usize])
+}
+
+/// The index of the `k`-th point in Gray-code order: `k ^ (k >> 1)`.
+fn gray(k: u64) -> u64 {
+    k ^ (k >> 1)
+}
+
+/// Points `first .. first + n` of the `d`-dimensional Sobol sequence (Joe–Kuo 6.21201
+/// direction numbers), as an `(n, d)` float64 array. Unscrambled (`seed` None) the points come
+/// in Gray-code order, SciPy's: point k is the sequence's point `k ^ (k >> 1)`, so every
+/// power-of-two prefix is the same set as in natural order. With a seed they are Owen-scrambled
+/// (nyquist's hash-based nested uniform scramble, by index, natural order).
+#[pyfunction]
+#[pyo3(signature = (n, d, first=0, seed=None))]
+fn sobol<'py>(
+    py: Python<'py>,
+    n: u64,
+    d: u32,
+    first: u64,
+    seed: Option<u64>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let len = values(n, d)?;
+    check_range(first, n, 1 << 32, "the Sobol sequence")?;
+    let v = match seed {
+        None => {
+            let s = Sobol::new(d).map_err(value_error)?;
+            py.detach(|| sobol_gray(&s, first, n, d, len))
+        }
+        Some(seed) => {
+            let s = OwenSobol::new(d, seed).map_err(value_error)?;
+            py.detach(|| fill_f64(&s, first, n, d, len))
+        }
+    };
+    array(py, v, n, d)
+}
+
+/// Unscrambled Sobol points `first .. first + n` in Gray-code order: from one point to the
+/// next, the Gray code flips bit `t` (the trailing zeros of k + 1), so the value changes by the
+/// XOR of direction column `t`.
+fn sobol_gray(s: &Sobol, first: u64, n: u64, d: u32, len: usize) -> Vec<f64> {
+    let mut out = vec![0.0; len];
+    let d_us = d as usize;
+    for dim in 0..d {
+        let columns: [u32; 32] = core::array::from_fn(|j| s.sample_u32(1 << j, dim));
+        let mut x = s.sample_u32(gray(first), dim);
+        for (k, row) in (first..first + n).zip(out.chunks_exact_mut(d_us)) {
+            row[dim as usize] = f64::from(x) * (1.0 / 4_294_967_296.0);
+            // k + 1 < 2³² here except after the last point, whose step is never used.
+            x ^= columns[((k + 1).trailing_zeros() as usize).min(31)];
+        }
+    }
+    out
+}
+
+/// Points `first .. first + n` of `s` (first `d` dimensions), row-major.
+fn fill_f64(s: &impl Sequence, first: u64, n: u64, d: u32, len: usize) -> Vec<f64> {
+    let mut out = vec![0.0; len];
+    for (index, row) in (first..first + n).zip(out.chunks_exact_mut(d as usize)) {
+        for (dim, x) in (0..d).zip(row) {
+            *x = s.sample_f64(index, dim);
+        }
+    }
+    out
+}
+
+/// Points `first .. first + n` of the `d`-dimensional Halton sequence (radical inverses in
+/// the first `d` primes), as an `(n, d)` float64 array; with a seed, Owen-scrambled in each
+/// base (nested uniform digit permutations, nyquist's `ScrambledHalton` with `Scramble::Owen`).
+#[pyfunction]
+#[pyo3(signature = (n, d, first=0, seed=None))]
+fn halton<'py>(
+    py: Python<'py>,
+    n: u64,
+    d: u32,
+    first: u64,
+    seed: Option<u64>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let len = values(n, d)?;
+    check_range(first, n, u64::MAX, "the Halton sequence")?;
+    let v = match seed {
+        None => {
+            let s = Halton::new(d).map_err(value_error)?;
+            py.detach(|| fill_f64(&s, first, n, d, len))
+        }
+        Some(seed) => {
+            let s = ScrambledHalton::with_strategy(d, Scramble::Owen, seed).map_err(value_error)?;
+            py.detach(|| fill_f64(&s, first, n, d, len))
+        }
+    };
+    array(py, v, n, d)
+}
+
+/// The discrepancy of `sample` (an `(n, d)` float64 array in `[0, 1]`) by `method`: `"CD"`
+/// (centered L2), `"WD"` (wrap-around L2) and `"MD"` (mixture L2) squared, `"L2-star"` not
+/// squared — as SciPy's
+/// `qmc.discrepancy` returns them — or `"star"`, the exact star discrepancy.
+#[pyfunction]
+fn discrepancy(py: Python<'_>, sample: PyReadonlyArray2<'_, f64>, method: &str) -> PyResult<f64> {
+    let dims = sample.shape()[1];
+    let coords = sample.as_slice().map_err(value_error)?;
+    let points = PointSet::new(coords, dims).map_err(value_error)?;
+    let squared = |v: f64| v * v;
+    match method {
+        "CD" => Ok(squared(py.detach(|| centered_l2_discrepancy(&points)))),
+        "WD" => Ok(squared(py.detach(|| wraparound_l2_discrepancy(&points)))),
+        "MD" => Ok(squared(py.detach(|| mixture_l2_discrepancy(&points)))),
+        "L2-star" => Ok(py.detach(|| l2_star_discrepancy(&points))),
+        "star" => {
+            let len = star_discrepancy_scratch_len(points.len(), dims)
+                .ok_or_else(|| value_error("the star discrepancy's scratch does not fit"))?;
+            py.detach(|| {
+                let mut scratch = vec![0.0; len];
+                star_discrepancy(&points, &mut scratch)
+            })
+            .map_err(value_error)
+        }
+        other => Err(value_error(format!(
+            "method {other:?} is not one of 'CD', 'WD', 'MD', 'L2-star', 'star'"
+        ))),
+    }
+}
+
+/// The extension module.
+#[pymodule]
+fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(sobol, m)?)?;
+    m.add_function(wrap_pyfunction!(halton, m)?)?;
+    m.add_function(wrap_pyfunction!(discrepancy, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,216 @@
+"""nyquist.qmc: exact values, net properties, SciPy's values where SciPy defines them, and
+properties of the bindings (shapes, dtypes, bounds, seeds, fast_forward) with Hypothesis."""
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from nyquist import qmc
+
+try:
+    import scipy.stats.qmc as sqmc
+except ImportError:  # pragma: no cover
+    sqmc = None
+
+needs_scipy = pytest.mark.skipif(sqmc is None, reason="SciPy is not installed")
+
+
+def is_net(points, m, t=0):
+    """Whether the 2-D ``points`` (2**m of them) are a (t, m, 2)-net in base 2: every
+    elementary box of area 2**(t - m) holds exactly 2**t points."""
+    for j in range(m - t + 1):
+        k = m - t - j
+        ix = np.floor(points[:, 0] * 2**j).astype(np.int64)
+        iy = np.floor(points[:, 1] * 2**k).astype(np.int64)
+        counts = np.bincount(ix * 2**k + iy, minlength=2 ** (m - t))
+        if not np.all(counts == 2**t):
+            return False
+    return True
+
+
+def test_unscrambled_sobol_starts_as_published():
+    # Gray-code order, as SciPy draws them.
+    x = qmc.Sobol(d=2, scramble=False).random_base2(3)
+    assert x.tolist() == [
+        [0.0, 0.0],
+        [0.5, 0.5],
+        [0.75, 0.25],
+        [0.25, 0.75],
+        [0.375, 0.375],
+        [0.875, 0.875],
+        [0.625, 0.125],
+        [0.125, 0.625],
+    ]
+
+
+@needs_scipy
+@pytest.mark.parametrize("d", [1, 2, 5, 64, 1024])
+def test_unscrambled_sobol_is_scipys_bit_for_bit(d):
+    ours = qmc.Sobol(d=d, scramble=False).random_base2(8)
+    theirs = sqmc.Sobol(d=d, scramble=False).random_base2(8)
+    assert np.array_equal(ours, theirs)
+    # Continuing draws and skips land on the same points too.
+    a, b = qmc.Sobol(d=d, scramble=False), sqmc.Sobol(d=d, scramble=False)
+    a.fast_forward(37)
+    b.fast_forward(37)
+    assert np.array_equal(a.random(5), b.random(5))
+
+
+@needs_scipy
+def test_unscrambled_halton_is_scipys():
+    ours = qmc.Halton(d=7, scramble=False).random(500)
+    theirs = sqmc.Halton(d=7, scramble=False).random(500)
+    np.testing.assert_allclose(ours, theirs, rtol=0, atol=1e-15)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 12345])
+@pytest.mark.parametrize("m", [1, 4, 9])
+def test_scrambled_sobol_keeps_the_first_pair_a_zero_net(seed, m):
+    x = qmc.Sobol(d=4, rng=seed).random_base2(m)
+    assert is_net(x[:, :2], m)
+    assert np.all((x >= 0) & (x < 1))
+    # Every 1-D projection is stratified: one point in each interval of length 2**-m.
+    for dim in range(4):
+        assert sorted(np.floor(x[:, dim] * 2**m).astype(int).tolist()) == list(range(2**m))
+
+
+def test_seeds_decide_the_scramble():
+    a = qmc.Sobol(d=3, rng=5).random(8)
+    b = qmc.Sobol(d=3, rng=5).random(8)
+    c = qmc.Sobol(d=3, rng=6).random(8)
+    assert np.array_equal(a, b) and not np.array_equal(a, c)
+    h1, h2 = qmc.Halton(d=3, rng=5).random(8), qmc.Halton(d=3, rng=6).random(8)
+    assert not np.array_equal(h1, h2)
+    gen = np.random.default_rng(3)
+    assert np.array_equal(
+        qmc.Sobol(d=2, rng=gen).random(4), qmc.Sobol(d=2, rng=np.random.default_rng(3)).random(4)
+    )
+
+
+def test_reset_starts_again():
+    e = qmc.Sobol(d=2, rng=9)
+    first = e.random(16)
+    e.random(16)
+    assert np.array_equal(e.reset().random(16), first)
+    assert e.num_generated == 16
+
+
+@settings(max_examples=60, deadline=None)
+@given(
+    d=st.integers(1, 40),
+    skip=st.integers(0, 5000),
+    n=st.integers(0, 300),
+    scramble=st.booleans(),
+    kind=st.sampled_from(["sobol", "halton"]),
+)
+def test_fast_forward_equals_skipping(d, skip, n, scramble, kind):
+    make = {
+        "sobol": lambda: qmc.Sobol(d=d, scramble=scramble, rng=4),
+        "halton": lambda: qmc.Halton(d=d, scramble=scramble, rng=4),
+    }[kind]
+    a, b = make(), make()
+    with np.errstate(all="raise"), _quiet():
+        whole = a.random(skip + n)
+        b.fast_forward(skip)
+        tail = b.random(n)
+    assert tail.shape == (n, d) and tail.dtype == np.float64
+    assert np.array_equal(whole[skip:], tail)
+    assert np.all((tail >= 0) & (tail < 1))
+    assert b.num_generated == skip + n
+
+
+@settings(max_examples=40, deadline=None)
+@given(
+    lo=st.lists(st.integers(-50, 50), min_size=1, max_size=5),
+    width=st.integers(1, 20),
+    endpoint=st.booleans(),
+)
+def test_integers_stay_in_bounds(lo, width, endpoint):
+    lo = np.array(lo)
+    hi = lo + width
+    with _quiet():
+        x = qmc.Sobol(d=len(lo), rng=1).integers(lo, u_bounds=hi, n=64, endpoint=endpoint)
+    assert x.shape == (64, len(lo)) and x.dtype == np.int64
+    top = hi if endpoint else hi - 1
+    assert np.all((x >= lo) & (x <= top))
+
+
+def test_bad_arguments_raise_value_errors_naming_the_limit():
+    with pytest.raises(ValueError, match="Maximum supported dimensionality is 1024"):
+        qmc.Sobol(d=1025)
+    with pytest.raises(ValueError, match="d must be a non-negative integer value"):
+        qmc.Halton(d=-1)
+    with pytest.raises(ValueError, match="dims 2000 is outside 1..=1024"):
+        qmc.Halton(d=2000).random(1)
+    with pytest.raises(ValueError, match=r"At most 2\*\*4=16 distinct points"):
+        qmc.Sobol(d=1, bits=4).random(32)
+    with pytest.raises(ValueError, match="balance properties"):
+        e = qmc.Sobol(d=1)
+        e.random_base2(1)
+        e.random_base2(2)
+    with pytest.raises(ValueError, match="not a valid method"):
+        qmc.discrepancy([[0.5]], method="XX")
+    with pytest.raises(ValueError, match="not in unit hypercube"):
+        qmc.discrepancy([[1.5]])
+    with pytest.raises(ValueError, match="'toto' is not a valid optimization method"):
+        qmc.Sobol(d=2, optimization="toto")
+    with pytest.raises(ValueError, match="Maximum supported 'bits' is 64"):
+        qmc.Sobol(d=2, bits=65)
+    with pytest.raises(ValueError, match=r"bits 64: .*1 ≤ bits ≤ 32"):
+        qmc.Sobol(d=2, bits=64)
+    with pytest.raises(TypeError, match="either rng or seed"):
+        qmc.Sobol(d=2, rng=1, seed=1)
+    with pytest.warns(UserWarning, match="power of 2"):
+        qmc.Sobol(d=1).random(3)
+
+
+def test_the_star_discrepancy_is_exact():
+    # Centred points (2i + 1) / 2n have D* = 1 / 2n.
+    for n in [1, 2, 7, 100]:
+        x = ((2 * np.arange(n) + 1) / (2 * n)).reshape(-1, 1)
+        assert qmc.discrepancy(x, method="star") == pytest.approx(1 / (2 * n), rel=1e-14)
+    # The 2-D origin point: the box [0, 1)² minus nothing has volume 1, but the origin lies
+    # in every anchored box: D* = 1.
+    assert qmc.discrepancy([[0.0, 0.0]], method="star") == pytest.approx(1.0)
+
+
+@needs_scipy
+@pytest.mark.parametrize("method", ["CD", "WD", "MD", "L2-star"])
+def test_l2_discrepancies_are_scipys(method):
+    x = np.random.default_rng(2).random((200, 4))
+    ours = qmc.discrepancy(x, method=method)
+    theirs = sqmc.discrepancy(x, method=method)
+    assert ours == pytest.approx(theirs, rel=1e-10)
+
+
+@needs_scipy
+def test_scipy_takes_these_engines():
+    engine = qmc.Sobol(d=2, rng=3)
+    normal = sqmc.MultivariateNormalQMC(mean=[0, 0], engine=engine)
+    z = normal.random(1024)
+    assert z.shape == (1024, 2)
+    assert abs(z.mean()) < 0.01 and abs(z.std() - 1) < 0.02
+
+
+def test_the_scale_maps_and_maps_back():
+    x = qmc.Halton(d=2, rng=1).random(10)
+    y = qmc.scale(x, [-1, 10], [1, 20])
+    assert np.all((y >= [-1, 10]) & (y < [1, 20]))
+    assert np.allclose(qmc.scale(y, [-1, 10], [1, 20], reverse=True), x)
+    with pytest.raises(ValueError, match="Bounds are not consistent"):
+        qmc.scale(x, [1, 1], [0, 2])
+
+
+class _quiet:
+    """Silences the Sobol balance warning inside property tests."""
+
+    def __enter__(self):
+        import warnings
+
+        self._ctx = warnings.catch_warnings()
+        self._ctx.__enter__()
+        warnings.simplefilter("ignore", UserWarning)
+
+    def __exit__(self, *exc):
+        return self._ctx.__exit__(*exc)
