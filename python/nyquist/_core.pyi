@@ -10,3 +10,12 @@ def halton(
     n: int, d: int, first: int = 0, seed: int | None = None
 ) -> npt.NDArray[np.float64]: ...
 def discrepancy(sample: npt.NDArray[np.float64], method: str) -> float: ...
+def sequence(
+    name: str,
+    n: int,
+    d: int,
+    first: int = 0,
+    seed: int | None = None,
+    points: int | None = None,
+    multiplier: int | None = None,
+) -> npt.NDArray[np.float64]: ...

@@ -23,7 +23,17 @@ import numpy as np
 
 from . import _core
 
-__all__ = ["QMCEngine", "Sobol", "Halton", "discrepancy", "scale"]
+__all__ = [
+    "QMCEngine",
+    "Sobol",
+    "Halton",
+    "PMJ02",
+    "ZeroTwo",
+    "R2",
+    "Lattice",
+    "discrepancy",
+    "scale",
+]
 
 try:  # SciPy's base class, so that SciPy accepts these engines.
     from scipy.stats.qmc import QMCEngine as _Base
@@ -235,6 +245,92 @@ class Halton(QMCEngine):
         if self.d == 0:
             return np.empty((n, 0))
         return _core.halton(n, self.d, first, self._seed)
+
+
+class _Named(QMCEngine):
+    """An engine over one of the core's named point sets (``NamedSequence``)."""
+
+    _name = ""
+
+    def __init__(self, d, *, scramble=True, rng=None, optimization=None, seed=None,
+                 points=None, multiplier=None):
+        super().__init__(d, optimization=optimization, rng=rng, seed=seed)
+        self.scramble = bool(scramble)
+        self._seed = _seed_of(self.rng) if self.scramble else None
+        self._set_size = points
+        self._multiplier = multiplier
+        if self.d:
+            self._points(0, 0)  # the core's checks, now rather than at the first draw
+
+    def _points(self, first, n):
+        if self.d == 0:
+            return np.empty((n, 0))
+        return _core.sequence(
+            self._name, n, self.d, first, self._seed, self._set_size, self._multiplier
+        )
+
+
+class PMJ02(_Named):
+    """Progressive multi-jittered (0,2) points (Christensen, Kensler and Kilpatrick 2018), in
+    one or two dimensions: every power-of-two prefix is a (0, m, 2)-net. ``scramble=True``
+    Owen-scrambles them (seeded from ``rng``); unscrambled they are nyquist's baked sequence.
+
+    >>> from nyquist.qmc import PMJ02
+    >>> x = PMJ02(d=2, rng=3).random(16)
+    >>> sorted((x[:, 1] * 16).astype(int).tolist()) == list(range(16))
+    True
+    """
+
+    _name = "pmj02"
+
+
+class ZeroTwo(_Named):
+    """The (0,2)-sequence in base 2 (Sobol's first two dimensions, van der Corput and its
+    Pascal-matrix partner), in one or two dimensions; ``scramble=True`` applies a random
+    digital shift (seeded from ``rng``), which keeps every net.
+
+    >>> from nyquist.qmc import ZeroTwo
+    >>> ZeroTwo(d=2, scramble=False).random(4).tolist()
+    [[0.0, 0.0], [0.5, 0.5], [0.25, 0.75], [0.75, 0.25]]
+    """
+
+    _name = "zero-two"
+
+
+class R2(_Named):
+    """Roberts' R_d Kronecker sequence: point i is {½ + i·α}, with α the powers of the inverse
+    of the generalised golden ratio in ``d`` dimensions (Roberts' start at ½).
+    ``scramble=True`` replaces the ½ by a random Cranley–Patterson rotation (seeded from
+    ``rng``).
+
+    >>> from nyquist.qmc import R2
+    >>> R2(d=1, scramble=False).random(2)[:, 0].tolist()  # ½, then ½ + 1/φ − 1
+    [0.5, 0.11803398874989479]
+    """
+
+    _name = "rd"
+
+
+class Lattice(_Named):
+    """A rank-1 lattice of ``n`` points: ``kind="fibonacci"`` (two dimensions, ``n`` a Fibonacci
+    number) or ``"korobov"`` (generator (1, a, a², …) mod ``n``; ``multiplier`` a, or Stroud's
+    tabled one, else the minimiser of the P2 criterion). Point i is {i·z / n}; ``scramble=True``
+    adds a random Cranley–Patterson rotation (seeded from ``rng``). At most ``n`` points can be
+    drawn.
+
+    >>> from nyquist.qmc import Lattice
+    >>> (Lattice(d=2, n=5, multiplier=2, scramble=False).random(5) * 5).round().tolist()
+    [[0.0, 0.0], [1.0, 2.0], [2.0, 4.0], [3.0, 1.0], [4.0, 3.0]]
+    """
+
+    def __init__(self, d, n, *, kind="korobov", multiplier=None, scramble=True, rng=None,
+                 optimization=None, seed=None):
+        if kind not in ("fibonacci", "korobov"):
+            raise ValueError(f"kind {kind!r} is not 'fibonacci' or 'korobov'")
+        self._name = kind
+        super().__init__(d, scramble=scramble, rng=rng, optimization=optimization, seed=seed,
+                         points=n, multiplier=multiplier)
+        self.n = n
 
 
 def scale(sample, l_bounds, u_bounds, *, reverse=False):

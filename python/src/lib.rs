@@ -13,7 +13,9 @@ use nyquist::analysis::{
     star_discrepancy, star_discrepancy_scratch_len, wraparound_l2_discrepancy,
 };
 use nyquist::scramble::Scramble;
-use nyquist::sequence::{Halton, OwenSobol, ScrambledHalton, Sequence, Sobol};
+use nyquist::sequence::{
+    Halton, NamedSequence, OwenSobol, ScrambledHalton, Sequence, SequenceSpec, Sobol,
+};
 
 /// A `ValueError` with the core error's message.
 fn value_error(e: impl std::fmt::Display) -> PyErr {
@@ -134,6 +136,38 @@ fn halton<'py>(
     array(py, v, n, d)
 }
 
+/// Points `first .. first + n` of the named point set `name` (any of the core's
+/// `SEQUENCE_NAMES`: `pmj02`, `zero-two`, `fibonacci`, `korobov`, `rd`, …) in `d` dimensions, as
+/// an `(n, d)` float64 array: `points` is the size of a finite set (required by `fibonacci`,
+/// `korobov`, `hammersley`), `seed` the family's randomization (Owen scramble, digital shift or
+/// Cranley–Patterson rotation), `multiplier` Korobov's.
+#[pyfunction]
+#[pyo3(signature = (name, n, d, first=0, seed=None, points=None, multiplier=None))]
+#[allow(clippy::too_many_arguments)]
+fn sequence<'py>(
+    py: Python<'py>,
+    name: &str,
+    n: u64,
+    d: u32,
+    first: u64,
+    seed: Option<u64>,
+    points: Option<u64>,
+    multiplier: Option<u64>,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let len = values(n, d)?;
+    let spec = SequenceSpec {
+        dims: d,
+        points,
+        seed,
+        multiplier,
+    };
+    let s = NamedSequence::new(name, spec).map_err(value_error)?;
+    let count = s.point_count().unwrap_or(u64::MAX);
+    check_range(first, n, count, &format!("the {name} set"))?;
+    let v = py.detach(|| fill_f64(&s, first, n, d, len));
+    array(py, v, n, d)
+}
+
 /// The discrepancy of `sample` (an `(n, d)` float64 array in `[0, 1]`) by `method`: `"CD"`
 /// (centered L2), `"WD"` (wrap-around L2) and `"MD"` (mixture L2) squared, `"L2-star"` not
 /// squared — as SciPy's
@@ -169,6 +203,7 @@ fn discrepancy(py: Python<'_>, sample: PyReadonlyArray2<'_, f64>, method: &str) 
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sobol, m)?)?;
     m.add_function(wrap_pyfunction!(halton, m)?)?;
+    m.add_function(wrap_pyfunction!(sequence, m)?)?;
     m.add_function(wrap_pyfunction!(discrepancy, m)?)?;
     Ok(())
 }

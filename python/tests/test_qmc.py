@@ -214,3 +214,45 @@ class _quiet:
 
     def __exit__(self, *exc):
         return self._ctx.__exit__(*exc)
+
+
+@pytest.mark.parametrize("engine", [qmc.PMJ02, qmc.ZeroTwo])
+@pytest.mark.parametrize("scramble", [False, True])
+def test_the_zero_two_sets_are_nets_at_every_power_of_two(engine, scramble):
+    x = engine(d=2, scramble=scramble, rng=11).random(2**10)
+    for m in range(1, 11):
+        assert is_net(x[: 2**m], m), f"{engine.__name__} m={m}"
+
+
+def test_lattices_are_their_generators():
+    n, a = 13, 5
+    x = qmc.Lattice(d=3, n=n, multiplier=a, scramble=False).random(n)
+    i = np.arange(n)
+    want = np.stack([i / n, (i * a % n) / n, (i * a * a % n) / n], axis=1)
+    np.testing.assert_allclose(x, want, rtol=0, atol=1e-15)
+    fib = qmc.Lattice(d=2, n=21, kind="fibonacci", scramble=False).random(21)
+    np.testing.assert_allclose(fib[:, 1], (np.arange(21) * 13 % 21) / 21, rtol=0, atol=1e-15)
+    with pytest.raises(ValueError, match="past the 13 points"):
+        qmc.Lattice(d=2, n=13, multiplier=5).random(14)
+    with pytest.raises(ValueError):
+        qmc.Lattice(d=2, n=20, kind="fibonacci")  # not a Fibonacci number
+
+
+def test_r2_is_the_golden_kronecker_sequence():
+    x = qmc.R2(d=2, scramble=False).random(100)
+    # φ₂ is the real root of x³ = x + 1; α = (1/φ₂, 1/φ₂²); Roberts starts at ½.
+    phi = 1.324717957244746
+    i = np.arange(100)[:, None]
+    want = np.mod(0.5 + i * np.array([1 / phi, 1 / phi**2]), 1.0)
+    np.testing.assert_allclose(x, want, rtol=0, atol=1e-12)
+
+
+def test_named_engines_check_their_arguments_at_construction():
+    with pytest.raises(ValueError, match="dims 3 is outside"):
+        qmc.PMJ02(d=3)
+    with pytest.raises(ValueError, match="kind 'x'"):
+        qmc.Lattice(d=2, n=8, kind="x")
+    e = qmc.ZeroTwo(d=2, rng=1)
+    first = e.random(8)
+    assert np.array_equal(e.reset().random(8), first)
+    assert not np.array_equal(qmc.ZeroTwo(d=2, rng=2).random(8), first)
