@@ -4,7 +4,7 @@ import numpy as np
 import numpy.typing as npt
 
 def sobol(
-    n: int, d: int, first: int = 0, seed: int | None = None
+    n: int, d: int, first: int = 0, seed: int | None = None, bits: int = 32
 ) -> npt.NDArray[np.float64]: ...
 def halton(
     n: int, d: int, first: int = 0, seed: int | None = None

@@ -193,11 +193,7 @@ class Sobol(QMCEngine):
             )
         if self.d == 0:
             return np.empty((n, 0))
-        x = _core.sobol(n, self.d, first, self._seed)
-        if self.bits < 32:
-            step = 2.0 ** -self.bits
-            x = np.floor(x / step) * step
-        return x
+        return _core.sobol(n, self.d, first, self._seed, self.bits)
 
     def random(self, n=1, *, workers=1):
         n = _check_n(n)
