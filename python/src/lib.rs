@@ -81,7 +81,11 @@ fn sobol<'py>(
         }
         Some(seed) => {
             let s = OwenSobol::new(d, seed).map_err(value_error)?;
-            py.detach(|| par_rows(&mut v, dims, first, |f, b| owen_sobol_rows(&s, f, d, bits, b)));
+            py.detach(|| {
+                par_rows(&mut v, dims, first, |f, b| {
+                    owen_sobol_rows(&s, f, d, bits, b)
+                })
+            });
         }
     }
     array(py, v, n, d)
@@ -133,7 +137,11 @@ fn sobol_gray(s: &Sobol, first: u64, d: u32, bits: u32, out: &mut [f64]) {
 
 /// The mask that keeps the top `bits` of a 32-bit value (SciPy's `bits`).
 fn keep(bits: u32) -> u32 {
-    if bits >= 32 { u32::MAX } else { !(u32::MAX >> bits) }
+    if bits >= 32 {
+        u32::MAX
+    } else {
+        !(u32::MAX >> bits)
+    }
 }
 
 /// Owen-scrambled Sobol points into `out` (rows of `d`, the first row point `first`), keeping
@@ -160,7 +168,9 @@ fn fill_rows(s: &(impl Sequence + Sync), first: u64, d: u32, out: &mut [f64]) {
 /// Points `first .. first + n` of `s`, `(n, d)` row-major, on every thread.
 fn fill_f64(s: &(impl Sequence + Sync), first: u64, d: u32, len: usize) -> Vec<f64> {
     let mut out = vec![0.0; len];
-    par_rows(&mut out, d as usize, first, |f, block| fill_rows(s, f, d, block));
+    par_rows(&mut out, d as usize, first, |f, block| {
+        fill_rows(s, f, d, block)
+    });
     out
 }
 
