@@ -96,19 +96,28 @@ def test_reset_starts_again():
     assert e.num_generated == 16
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=120, deadline=None)
 @given(
     d=st.integers(1, 40),
     skip=st.integers(0, 5000),
     n=st.integers(0, 300),
     scramble=st.booleans(),
-    kind=st.sampled_from(["sobol", "halton"]),
+    kind=st.sampled_from(["sobol", "halton", "pmj02", "zero-two", "r2", "lattice"]),
 )
 def test_fast_forward_equals_skipping(d, skip, n, scramble, kind):
+    two = min(d, 2)
     make = {
         "sobol": lambda: qmc.Sobol(d=d, scramble=scramble, rng=4),
         "halton": lambda: qmc.Halton(d=d, scramble=scramble, rng=4),
+        "pmj02": lambda: qmc.PMJ02(d=two, scramble=scramble, rng=4),
+        "zero-two": lambda: qmc.ZeroTwo(d=two, scramble=scramble, rng=4),
+        "r2": lambda: qmc.R2(d=d, scramble=scramble, rng=4),
+        "lattice": lambda: qmc.Lattice(d=d, n=4096, multiplier=1487, scramble=scramble, rng=4),
     }[kind]
+    if kind == "lattice":
+        skip %= 3000  # the lattice has 4096 points
+    if kind in ("pmj02", "zero-two"):
+        d = two
     a, b = make(), make()
     with np.errstate(all="raise"), _quiet():
         whole = a.random(skip + n)
