@@ -333,7 +333,7 @@ fn predicted_rmse(r: &Rendered) -> [Option<f64>; 2] {
 /// Runs `nyquist render`.
 pub fn run(args: &RenderArgs) -> Result<()> {
     let metrics = args.metrics || args.json;
-    let layers = layers(args)?;
+    let mut layers = layers(args)?;
     if args.output.is_none() && !metrics && args.error.is_none() {
         bail!("nothing to do: give --output FILE.png|.exr|.pfm, --metrics, --error FILE.png");
     }
@@ -421,10 +421,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     }
     let threads = args.threads.map_or_else(default_threads, usize::from);
     // The layers: the film's extra sums, and their images (4 bytes a value).
-    let mut extras = layers.extras();
-    if adaptive.is_some() {
-        extras.halves = true;
-    }
+    layers.adaptive = adaptive;
+    let extras = layers.extras();
     let values = 3 * (u64::from(extras.variance) + 2 * u64::from(extras.halves))
         + u64::from(extras.channels);
     let layer_bytes = (extras.bytes_per_pixel() as u64 + 4 * values)
@@ -468,10 +466,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         &sampler,
         &args.filter,
         threads,
-        &Layers {
-            adaptive,
-            ..layers.clone()
-        },
+        &layers,
         &mut |n| bar.inc(n),
     )?;
     bar.finish();

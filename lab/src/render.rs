@@ -20,7 +20,7 @@ use anyhow::{Result, anyhow};
 use nyquist::filter::FilterKind;
 use nyquist::sampler::{NamedSampler, NamedSamplerError, Sampler, film_coordinate};
 use nyquist::scramble::Scramble;
-use nyquist_film::adaptive::{AdaptiveConfig, AdaptiveReport, render_adaptive};
+use nyquist_film::adaptive::{AdaptiveConfig, AdaptiveReport, ErrorEstimate, render_adaptive};
 use nyquist_film::extras::ExtraImages;
 use nyquist_film::{Film, FilmConfig, FilmSample, FilmStats, Image, PixelExtras, render_tiles};
 use std::path::{Path, PathBuf};
@@ -343,11 +343,25 @@ impl Layers {
         self.variance || self.halves || !self.aovs.is_empty()
     }
 
-    /// The film's extras for these layers.
+    /// The film's extras for these layers, and the estimate adaptive sampling steers by.
+    ///
+    /// ```
+    /// use nyquist_film::adaptive::{AdaptiveConfig, ErrorEstimate};
+    /// use nyquist_lab::render::Layers;
+    /// let mut layers = Layers { variance: true, ..Layers::default() };
+    /// assert!(layers.extras().variance && !layers.extras().halves);
+    /// layers.adaptive = Some(AdaptiveConfig::new(64, 0.02)); // steers by the halves
+    /// assert!(layers.extras().variance && layers.extras().halves);
+    /// let by_variance = AdaptiveConfig { estimate: ErrorEstimate::Variance, ..AdaptiveConfig::new(64, 0.02) };
+    /// let layers = Layers { adaptive: Some(by_variance), ..Layers::default() };
+    /// assert!(layers.extras().variance && !layers.extras().halves);
+    /// assert!(!layers.any()); // none of them is an output layer
+    /// ```
     pub fn extras(&self) -> PixelExtras {
+        let steers_by = self.adaptive.map(|a| a.estimate);
         PixelExtras {
-            variance: self.variance,
-            halves: self.halves,
+            variance: self.variance || steers_by == Some(ErrorEstimate::Variance),
+            halves: self.halves || steers_by == Some(ErrorEstimate::Halves),
             channels: self.channel_names().len() as u16,
         }
     }
@@ -432,14 +446,8 @@ pub fn render_layers(
     layers: &Layers,
     tick: &mut dyn FnMut(u64),
 ) -> Result<Rendered> {
-    let mut extras = layers.extras();
+    let extras = layers.extras();
     let adaptive = layers.adaptive.as_ref();
-    if let Some(a) = adaptive {
-        match a.estimate {
-            nyquist_film::adaptive::ErrorEstimate::Halves => extras.halves = true,
-            nyquist_film::adaptive::ErrorEstimate::Variance => extras.variance = true,
-        }
-    }
     let config = FilmConfig {
         extras,
         ..FilmConfig::new(size[0], size[1])
