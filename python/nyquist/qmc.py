@@ -179,10 +179,6 @@ class Sobol(QMCEngine):
         self.scramble = bool(scramble)
         self._seed = _seed_of(self.rng) if self.scramble else None
 
-    def reset(self):
-        super().reset()
-        return self
-
     def _points(self, first, n):
         total = first + n
         if total > self.maxn:

@@ -257,9 +257,7 @@ fn main() -> Result<()> {
                 bail!("--spp-map: only with --adaptive");
             }
             if let Some(t) = a.adaptive {
-                if !(t.is_finite() && t >= 0.0) {
-                    bail!("--adaptive {t}: not a threshold (a relative error ≥ 0)");
-                }
+                check_threshold("--adaptive", t)?;
                 config.adaptive = Some(AdaptiveConfig::new(a.spp, t));
             }
             let bar = bar("render", "tiles");
@@ -319,12 +317,20 @@ fn main() -> Result<()> {
     Ok(())
 }
 
+/// Refuses a `flag` value that is not a relative error threshold (finite, ≥ 0).
+fn check_threshold(flag: &str, t: f64) -> Result<()> {
+    if !(t.is_finite() && t >= 0.0) {
+        bail!("{flag} {t}: not a threshold (a relative error ≥ 0)");
+    }
+    Ok(())
+}
+
 fn adaptive(a: AdaptiveArgs) -> Result<()> {
     if a.budgets.is_empty() || a.budgets.iter().any(|&b| b < 16) {
         bail!("--budgets: at least one, each at least 16 (the first pass takes 16)");
     }
-    if let Some(t) = a.thresholds.iter().find(|t| !(t.is_finite() && **t >= 0.0)) {
-        bail!("--thresholds {t}: not a threshold (a relative error ≥ 0)");
+    for &t in &a.thresholds {
+        check_threshold("--thresholds", t)?;
     }
     if !(a.floor.is_finite() && a.floor >= 0.0) {
         bail!("--floor {}: must be finite and ≥ 0", a.floor);
