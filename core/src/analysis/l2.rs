@@ -15,6 +15,7 @@
 //! the square root of the formula, clamped at 0 against rounding.
 
 use super::PointSet;
+use crate::Error;
 use crate::math::{pow, sqrt};
 
 /// `Σ_i Σ_j K(x_i, x_j)` for a symmetric kernel: each row summed in four lanes (less rounding,
@@ -107,6 +108,234 @@ fn single_sum(points: &PointSet<'_>, f: impl Fn(&[f64]) -> f64) -> f64 {
     total.sum()
 }
 
+/// One of the four L2 discrepancies of the module docs.
+///
+/// ```
+/// use nyquist::analysis::{l2_sums, L2Kind, PointSet};
+/// let set = PointSet::new(&[0.25, 0.75], 1).unwrap();
+/// assert_eq!(l2_sums(&set, L2Kind::WrapAround).weight, 0.0);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum L2Kind {
+    /// The L2-star discrepancy (Warnock 1972): boxes anchored at the origin.
+    Star,
+    /// The centered L2 discrepancy (Hickernell 1998): boxes anchored at the nearest corner.
+    Centered,
+    /// The wrap-around L2 discrepancy (Hickernell 1998): boxes on the torus.
+    WrapAround,
+    /// The mixture L2 discrepancy (Zhou, Fang and Ning 2013).
+    Mixture,
+}
+
+/// The sums of an L2 discrepancy's closed form (module docs): for `N` points,
+/// `D² = constant − (weight / N)·single + pairs / N²`, where `single = Σ_i f(x_i)` and
+/// `pairs = Σ_i Σ_j K(x_i, x_j)` with the kind's `f` and `K`.
+///
+/// Keeping the sums instead of `D` lets a caller change `N` ([`L2Sums::squared`] with `N + 1`
+/// is SciPy's `discrepancy(..., iterative=True)`), and add a point in `O(d·N)`
+/// ([`l2_point_sums`]).
+///
+/// ```
+/// use nyquist::analysis::{centered_l2_discrepancy, l2_sums, L2Kind, PointSet};
+/// let set = PointSet::new(&[0.1, 0.4, 0.8], 1).unwrap();
+/// let sums = l2_sums(&set, L2Kind::Centered);
+/// assert_eq!(sums.squared(3.0).sqrt(), centered_l2_discrepancy(&set));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct L2Sums {
+    /// Which discrepancy.
+    pub kind: L2Kind,
+    /// The integral of the kernel over the cube: `3^−d`, `(13/12)^d`, `−(4/3)^d` or
+    /// `(19/12)^d` (0 in the sums one point adds, [`l2_point_sums`]).
+    pub constant: f64,
+    /// The factor of the single sum: `2^{1−d}` for L2-star, 2 for centered and mixture, 0 for
+    /// wrap-around.
+    pub weight: f64,
+    /// `Σ_i f(x_i)`.
+    pub single: f64,
+    /// `Σ_i Σ_j K(x_i, x_j)`, each pair twice and the diagonal once.
+    pub pairs: f64,
+}
+
+impl L2Sums {
+    /// `D²` for `n` points: `constant − (weight / n)·single + pairs / n²`, not clamped (a
+    /// rounding can make a tiny `D²` negative).
+    ///
+    /// ```
+    /// use nyquist::analysis::{l2_sums, L2Kind, PointSet};
+    /// // One point at the origin: T² = 1/3 − 1 + 1.
+    /// let sums = l2_sums(&PointSet::new(&[0.0], 1).unwrap(), L2Kind::Star);
+    /// assert!((sums.squared(1.0) - 1.0 / 3.0).abs() < 1e-15);
+    /// ```
+    pub fn squared(&self, n: f64) -> f64 {
+        self.constant - self.weight / n * self.single + self.pairs / (n * n)
+    }
+}
+
+/// `1 − x²` per coordinate: L2-star's `f`.
+#[inline]
+fn star_single(p: &[f64]) -> f64 {
+    p.iter().map(|&x| 1.0 - x * x).product()
+}
+
+#[inline]
+fn star_pair(p: &[f64], q: &[f64]) -> f64 {
+    p.iter().zip(q).map(|(&a, &b)| 1.0 - max2(a, b)).product()
+}
+
+#[inline]
+fn centered_single(p: &[f64]) -> f64 {
+    p.iter()
+        .map(|&x| {
+            let a = (x - 0.5).abs();
+            1.0 + 0.5 * a - 0.5 * a * a
+        })
+        .product()
+}
+
+#[inline]
+fn centered_pair(p: &[f64], q: &[f64]) -> f64 {
+    p.iter()
+        .zip(q)
+        .map(|(&a, &b)| 1.0 + 0.5 * (a - 0.5).abs() + 0.5 * (b - 0.5).abs() - 0.5 * (a - b).abs())
+        .product()
+}
+
+#[inline]
+fn wraparound_pair(p: &[f64], q: &[f64]) -> f64 {
+    p.iter()
+        .zip(q)
+        .map(|(&a, &b)| {
+            let t = (a - b).abs();
+            1.5 - t * (1.0 - t)
+        })
+        .product()
+}
+
+#[inline]
+fn mixture_single(p: &[f64]) -> f64 {
+    p.iter()
+        .map(|&x| {
+            let a = (x - 0.5).abs();
+            5.0 / 3.0 - 0.25 * a - 0.25 * a * a
+        })
+        .product()
+}
+
+#[inline]
+fn mixture_pair(p: &[f64], q: &[f64]) -> f64 {
+    p.iter()
+        .zip(q)
+        .map(|(&a, &b)| {
+            let t = (a - b).abs();
+            15.0 / 8.0 - 0.25 * (a - 0.5).abs() - 0.25 * (b - 0.5).abs() - 0.75 * t + 0.5 * t * t
+        })
+        .product()
+}
+
+/// A kind's `f`.
+type Single = fn(&[f64]) -> f64;
+
+/// A kind's `K`.
+type Pair = fn(&[f64], &[f64]) -> f64;
+
+/// The kind's constant and single-sum weight in `d` dimensions.
+fn constant_and_weight(kind: L2Kind, d: f64) -> (f64, f64) {
+    match kind {
+        L2Kind::Star => (pow(3.0, -d), pow(2.0, 1.0 - d)),
+        L2Kind::Centered => (pow(13.0 / 12.0, d), 2.0),
+        L2Kind::WrapAround => (-pow(4.0 / 3.0, d), 0.0),
+        L2Kind::Mixture => (pow(19.0 / 12.0, d), 2.0),
+    }
+}
+
+/// The sums of `kind`'s closed form over `points` ([`L2Sums`]). O(d·N²); allocates: no.
+///
+/// ```
+/// use nyquist::analysis::{l2_sums, L2Kind, PointSet};
+/// let sums = l2_sums(&PointSet::new(&[0.5, 0.5], 2).unwrap(), L2Kind::Mixture);
+/// assert_eq!(sums.single, (5.0f64 / 3.0).powi(2));
+/// assert_eq!(sums.pairs, (15.0f64 / 8.0).powi(2));
+/// ```
+pub fn l2_sums(points: &PointSet<'_>, kind: L2Kind) -> L2Sums {
+    let (constant, weight) = constant_and_weight(kind, points.dims() as f64);
+    let (single, pairs) = match kind {
+        L2Kind::Star => (
+            single_sum(points, star_single),
+            double_sum(points, star_pair),
+        ),
+        L2Kind::Centered => (
+            single_sum(points, centered_single),
+            double_sum(points, centered_pair),
+        ),
+        L2Kind::WrapAround => (0.0, double_sum(points, wraparound_pair)),
+        L2Kind::Mixture => (
+            single_sum(points, mixture_single),
+            double_sum(points, mixture_pair),
+        ),
+    };
+    L2Sums {
+        kind,
+        constant,
+        weight,
+        single,
+        pairs,
+    }
+}
+
+/// The sums that adding point `x` to `points` adds to [`l2_sums`]`(points, kind)`: `constant`
+/// 0, `single = f(x)`, `pairs = 2·Σ_i K(x_i, x) + K(x, x)`. So for `N` points and a discrepancy
+/// `D²` computed with `N + 1` in its normalisation, `D² + l2_point_sums(..).squared(N + 1)` is
+/// the squared discrepancy of the `N + 1` points: SciPy's `update_discrepancy` (which offers
+/// the centered one only). O(d·N); allocates: no.
+///
+/// # Errors
+/// [`Error::NotInRange`] (`what: "point dims"`) when `x` does not have `points.dims()`
+/// coordinates; [`Error::NonFinite`] or [`Error::OutOfRange`] for a coordinate that is NaN, ±∞
+/// or outside `[0, 1]`, as [`PointSet::new`].
+///
+/// ```
+/// use nyquist::analysis::{l2_point_sums, l2_sums, L2Kind, PointSet};
+/// let all = [0.1, 0.2, 0.7, 0.4, 0.35, 0.9];
+/// let first = PointSet::new(&all[..4], 2).unwrap();
+/// let whole = l2_sums(&PointSet::new(&all, 2).unwrap(), L2Kind::Centered).squared(3.0);
+/// let before = l2_sums(&first, L2Kind::Centered).squared(3.0);
+/// let added = l2_point_sums(&first, &all[4..], L2Kind::Centered).unwrap().squared(3.0);
+/// assert!((before + added - whole).abs() < 1e-15);
+/// ```
+pub fn l2_point_sums(points: &PointSet<'_>, x: &[f64], kind: L2Kind) -> Result<L2Sums, Error> {
+    let d = points.dims();
+    if x.len() != d {
+        return Err(Error::NotInRange {
+            what: "point dims",
+            value: x.len() as u64,
+            min: d as u64,
+            max: d as u64,
+        });
+    }
+    PointSet::new(x, d)?;
+    let (_, weight) = constant_and_weight(kind, d as f64);
+    let (f, k): (Single, Pair) = match kind {
+        L2Kind::Star => (star_single, star_pair),
+        L2Kind::Centered => (centered_single, centered_pair),
+        L2Kind::WrapAround => (|_| 0.0, wraparound_pair),
+        L2Kind::Mixture => (mixture_single, mixture_pair),
+    };
+    let cross = single_sum(points, |p| k(p, x));
+    Ok(L2Sums {
+        kind,
+        constant: 0.0,
+        weight,
+        single: f(x),
+        pairs: 2.0 * cross + k(x, x),
+    })
+}
+
+/// `sqrt(max(D², 0))` for `kind` over `points`, with `N` their count.
+fn l2_discrepancy(points: &PointSet<'_>, kind: L2Kind) -> f64 {
+    sqrt(l2_sums(points, kind).squared(points.len() as f64).max(0.0))
+}
+
 /// L2-star discrepancy `T_N` by Warnock's formula (module docs). O(d·N²); allocates: no.
 /// `N·T_N` for the van der Corput set of `N = 2^m` points is `1/√3`.
 ///
@@ -117,14 +346,7 @@ fn single_sum(points: &PointSet<'_>, f: impl Fn(&[f64]) -> f64) -> f64 {
 /// assert!((t - (1.0f64 / 3.0).sqrt()).abs() < 1e-15);
 /// ```
 pub fn l2_star_discrepancy(points: &PointSet<'_>) -> f64 {
-    let d = points.dims() as f64;
-    let n = points.len() as f64;
-    let single = single_sum(points, |p| p.iter().map(|&x| 1.0 - x * x).product());
-    let pairs = double_sum(points, |p, q| {
-        p.iter().zip(q).map(|(&a, &b)| 1.0 - max2(a, b)).product()
-    });
-    let t2 = pow(3.0, -d) - pow(2.0, 1.0 - d) / n * single + pairs / (n * n);
-    sqrt(t2.max(0.0))
+    l2_discrepancy(points, L2Kind::Star)
 }
 
 /// Centered L2 discrepancy (Hickernell 1998; module docs): invariant under reflections
@@ -137,26 +359,7 @@ pub fn l2_star_discrepancy(points: &PointSet<'_>) -> f64 {
 /// assert!((a - b).abs() < 1e-15);
 /// ```
 pub fn centered_l2_discrepancy(points: &PointSet<'_>) -> f64 {
-    let d = points.dims() as f64;
-    let n = points.len() as f64;
-    let single = single_sum(points, |p| {
-        p.iter()
-            .map(|&x| {
-                let a = (x - 0.5).abs();
-                1.0 + 0.5 * a - 0.5 * a * a
-            })
-            .product()
-    });
-    let pairs = double_sum(points, |p, q| {
-        p.iter()
-            .zip(q)
-            .map(|(&a, &b)| {
-                1.0 + 0.5 * (a - 0.5).abs() + 0.5 * (b - 0.5).abs() - 0.5 * (a - b).abs()
-            })
-            .product()
-    });
-    let c2 = pow(13.0 / 12.0, d) - 2.0 / n * single + pairs / (n * n);
-    sqrt(c2.max(0.0))
+    l2_discrepancy(points, L2Kind::Centered)
 }
 
 /// Wrap-around L2 discrepancy (Hickernell 1998; module docs): invariant under toroidal shifts.
@@ -170,19 +373,7 @@ pub fn centered_l2_discrepancy(points: &PointSet<'_>) -> f64 {
 /// assert!((a - b).abs() < 1e-15);
 /// ```
 pub fn wraparound_l2_discrepancy(points: &PointSet<'_>) -> f64 {
-    let d = points.dims() as f64;
-    let n = points.len() as f64;
-    let pairs = double_sum(points, |p, q| {
-        p.iter()
-            .zip(q)
-            .map(|(&a, &b)| {
-                let t = (a - b).abs();
-                1.5 - t * (1.0 - t)
-            })
-            .product()
-    });
-    let w2 = -pow(4.0 / 3.0, d) + pairs / (n * n);
-    sqrt(w2.max(0.0))
+    l2_discrepancy(points, L2Kind::WrapAround)
 }
 
 /// Mixture L2 discrepancy (Zhou, Fang and Ning 2013; module docs): invariant under reflections
@@ -197,28 +388,7 @@ pub fn wraparound_l2_discrepancy(points: &PointSet<'_>) -> f64 {
 /// assert!((md - want.sqrt()).abs() < 1e-15);
 /// ```
 pub fn mixture_l2_discrepancy(points: &PointSet<'_>) -> f64 {
-    let d = points.dims() as f64;
-    let n = points.len() as f64;
-    let single = single_sum(points, |p| {
-        p.iter()
-            .map(|&x| {
-                let a = (x - 0.5).abs();
-                5.0 / 3.0 - 0.25 * a - 0.25 * a * a
-            })
-            .product()
-    });
-    let pairs = double_sum(points, |p, q| {
-        p.iter()
-            .zip(q)
-            .map(|(&a, &b)| {
-                let t = (a - b).abs();
-                15.0 / 8.0 - 0.25 * (a - 0.5).abs() - 0.25 * (b - 0.5).abs() - 0.75 * t
-                    + 0.5 * t * t
-            })
-            .product()
-    });
-    let m2 = pow(19.0 / 12.0, d) - 2.0 / n * single + pairs / (n * n);
-    sqrt(m2.max(0.0))
+    l2_discrepancy(points, L2Kind::Mixture)
 }
 
 #[cfg(test)]
@@ -365,8 +535,12 @@ mod tests {
     /// The four closed forms of the module docs summed term by term over all ordered pairs
     /// `(i, j)`, no symmetry, no lanes, no compensation: `[T², CD², WD², MD²]`.
     fn naive_squares(c: &[f64], d: usize) -> [f64; 4] {
+        naive_squares_normalised(c, d, (c.len() / d) as f64)
+    }
+
+    /// [`naive_squares`] with `n` in the normalisation instead of the number of points.
+    fn naive_squares_normalised(c: &[f64], d: usize, n: f64) -> [f64; 4] {
         let pts: Vec<&[f64]> = c.chunks_exact(d).collect();
-        let n = pts.len() as f64;
         let df = d as f64;
         let (mut s_star, mut s_cd, mut p_star, mut p_cd, mut p_wd) = (0.0, 0.0, 0.0, 0.0, 0.0);
         let (mut s_md, mut p_md) = (0.0, 0.0);
@@ -442,6 +616,85 @@ mod tests {
                 }
             }
         }
+    }
+
+    const KINDS: [L2Kind; 4] = [
+        L2Kind::Star,
+        L2Kind::Centered,
+        L2Kind::WrapAround,
+        L2Kind::Mixture,
+    ];
+
+    #[test]
+    fn sums_renormalised_and_extended_match_the_naive_formulas() {
+        // `squared(N + 1)` is SciPy's `iterative=True`; the sums of the first N − 1 points plus
+        // those the last point adds give the whole set's discrepancy, both normalised by N.
+        for d in 1..=6usize {
+            for n in 2..=9usize {
+                let pts = random(n, d, (d * 1000 + n) as u64);
+                let whole = set(&pts, d);
+                let first = set(&pts[..(n - 1) * d], d);
+                let last = &pts[(n - 1) * d..];
+                let renormalised = naive_squares_normalised(&pts, d, (n + 1) as f64);
+                let want = naive_squares(&pts, d);
+                for (k, kind) in KINDS.into_iter().enumerate() {
+                    let sums = l2_sums(&whole, kind);
+                    assert_eq!(sums.kind, kind);
+                    let it = sums.squared((n + 1) as f64);
+                    let tol = 1e-12 * (1.0 + renormalised[k].abs());
+                    assert!(
+                        (it - renormalised[k]).abs() < tol,
+                        "{kind:?} d {d} n {n}: {it}"
+                    );
+                    let added = l2_point_sums(&first, last, kind).unwrap();
+                    assert_eq!((added.kind, added.constant), (kind, 0.0));
+                    let nf = n as f64;
+                    let got = l2_sums(&first, kind).squared(nf) + added.squared(nf);
+                    let tol = 1e-12 * (1.0 + want[k]);
+                    assert!((got - want[k]).abs() < tol, "{kind:?} d {d} n {n}: {got}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn point_sums_update_fang_et_als_design() {
+        // Fang, Li and Sudjianto, "Design and Modeling for Computer Experiments" (2006): the
+        // U-type design (1,3) (2,6) (3,2) (4,5) (5,1) (6,4), scaled by (2x − 1)/12, has
+        // CD² = 0.0081 to the 4 decimals they print; SciPy's test of `update_discrepancy` builds it
+        // from the first five points.
+        let design = [1.0, 3.0, 2.0, 6.0, 3.0, 2.0, 4.0, 5.0, 5.0, 1.0, 6.0, 4.0];
+        let pts: Vec<f64> = design.iter().map(|&x| (2.0 * x - 1.0) / 12.0).collect();
+        let first = set(&pts[..10], 2);
+        let before = l2_sums(&first, L2Kind::Centered).squared(6.0);
+        let added = l2_point_sums(&first, &pts[10..], L2Kind::Centered).unwrap();
+        let cd2 = before + added.squared(6.0);
+        assert!((cd2 - 0.0081).abs() < 0.5e-4, "{cd2}");
+        let whole = centered_l2_discrepancy(&set(&pts, 2));
+        assert!((cd2 - whole * whole).abs() < 1e-15);
+    }
+
+    #[test]
+    fn point_sums_refuse_a_bad_point() {
+        let s = set(&[0.1, 0.2, 0.3, 0.4], 2);
+        assert_eq!(
+            l2_point_sums(&s, &[0.5], L2Kind::Centered).unwrap_err(),
+            Error::NotInRange {
+                what: "point dims",
+                value: 1,
+                min: 2,
+                max: 2
+            }
+        );
+        assert_eq!(
+            l2_point_sums(&s, &[0.5, f64::NAN], L2Kind::Star).unwrap_err(),
+            Error::NonFinite { what: "points" }
+        );
+        assert!(matches!(
+            l2_point_sums(&s, &[1.5, 0.5], L2Kind::Mixture).unwrap_err(),
+            Error::OutOfRange { value: 1.5, .. }
+        ));
+        assert!(l2_point_sums(&s, &[1.0, 0.0], L2Kind::WrapAround).is_ok());
     }
 
     #[test]

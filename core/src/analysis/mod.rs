@@ -1,5 +1,6 @@
 //! Quality measures of point sets: exact and bracketed star discrepancy, the L2 discrepancies
-//! (star, centered, wrap-around) and the minimum distance with its relative radius ρ.
+//! (star, centered, wrap-around, mixture, and their sums for updates), the t-value of a base-2 net,
+//! and the minimum distance with its relative radius ρ.
 //!
 //! # Points
 //!
@@ -32,12 +33,15 @@
 
 mod distance;
 mod l2;
+mod net;
 mod star;
 
 pub use distance::{MinDistance, Topology, min_distance, min_distance_scratch_len};
 pub use l2::{
-    centered_l2_discrepancy, l2_star_discrepancy, mixture_l2_discrepancy, wraparound_l2_discrepancy,
+    L2Kind, L2Sums, centered_l2_discrepancy, l2_point_sums, l2_star_discrepancy, l2_sums,
+    mixture_l2_discrepancy, wraparound_l2_discrepancy,
 };
+pub use net::{net_t_value, net_t_value_scratch_len};
 pub use star::{
     ENUMERATION_LIMIT, MAX_DIMS, StarBounds, star_bounds_scratch_len, star_discrepancy,
     star_discrepancy_1d, star_discrepancy_2d, star_discrepancy_bounds, star_discrepancy_enumerate,
