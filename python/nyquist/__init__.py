@@ -8,7 +8,7 @@
 0.25
 """
 
-from . import qmc
+from . import analysis, pixel, qmc
 
-__all__ = ["qmc"]
+__all__ = ["analysis", "pixel", "qmc"]
 __version__ = "0.1.0"

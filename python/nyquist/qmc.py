@@ -31,7 +31,14 @@ __all__ = [
     "ZeroTwo",
     "R2",
     "Lattice",
+    "LatinHypercube",
+    "PoissonDisk",
+    "PixelSampler",
+    "ZSobol",
+    "BestCandidate",
     "discrepancy",
+    "update_discrepancy",
+    "geometric_discrepancy",
     "scale",
 ]
 
@@ -51,18 +58,23 @@ def _check_d(d):
 
 
 def _seed_of(rng):
-    """A 64-bit seed for the Rust scramble, drawn from ``rng`` the way SciPy draws from it: an
-    int or None seeds a NumPy Generator, a Generator is used as is."""
+    """A 64-bit seed for the Rust side, drawn from ``rng`` the way SciPy draws from it: an int or
+    None seeds a NumPy Generator, a Generator (or a legacy ``RandomState``) is used as is."""
+    if isinstance(rng, np.random.RandomState):
+        return int(rng.randint(0, 2**63, dtype=np.int64)) * 2 + int(rng.randint(0, 2))
     gen = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
     return int(gen.integers(0, 2**63, dtype=np.int64)) * 2 + int(gen.integers(0, 2))
 
 
 def _rng_argument(rng, seed):
+    """SciPy's SPEC 7 rules (its ``_transition_to_rng("seed")``): ``rng`` is passed through
+    ``numpy.random.default_rng``; the older ``seed`` is passed as given, so an int seeds a legacy
+    ``RandomState`` and a Generator is used (spawned) as is."""
     if seed is not None:
         if rng is not None:
-            raise TypeError("pass either rng or seed, not both")
+            raise TypeError("got multiple values for argument now known as `rng`")
         return seed
-    return rng
+    return None if rng is None else np.random.default_rng(rng)
 
 
 class QMCEngine(_Base):
@@ -85,7 +97,8 @@ class QMCEngine(_Base):
                 f"{optimization!r} is not a valid optimization method. It must be one of {known!r}"
             )
         self.d = _check_d(d)
-        self.rng = rng if isinstance(rng, np.random.Generator) else np.random.default_rng(rng)
+        legacy = (np.random.Generator, np.random.RandomState)
+        self.rng = rng if isinstance(rng, legacy) else np.random.default_rng(rng)
         self.rng_seed = copy.deepcopy(self.rng)
         self.num_generated = 0
         self.optimization_method = None
@@ -325,6 +338,223 @@ class Lattice(_Named):
         self.n = n
 
 
+class LatinHypercube(QMCEngine):
+    """Latin hypercube points: in every dimension the ``n`` values of a draw fall one in each
+    stratum ``[k/n, (k+1)/n)``. ``scramble=True`` jitters each value uniformly inside its
+    stratum, ``False`` puts it at the stratum's centre. ``strength=2`` gives an orthogonal-array
+    Latin hypercube (Tang 1993; Art Owen's construction, as SciPy's): ``n = p²`` for a prime
+    ``p`` and ``d ≤ p + 1``, and every pair of dimensions puts one point in each of the ``p × p``
+    coarse cells. Each ``random(n)`` is a new, independent design (not a continuation).
+
+    Strength 1 is computed in Rust (one independent permutation per dimension, on every
+    thread); strength 2 builds its small orthogonal array with NumPy from ``rng``.
+
+    >>> from nyquist.qmc import LatinHypercube
+    >>> x = LatinHypercube(d=2, rng=5).random(8)
+    >>> sorted((x[:, 0] * 8).astype(int).tolist())
+    [0, 1, 2, 3, 4, 5, 6, 7]
+    """
+
+    def __init__(self, d, *, scramble=True, strength=1, optimization=None, rng=None, seed=None):
+        super().__init__(d, optimization=optimization, rng=rng, seed=seed)
+        if strength not in (1, 2):
+            raise ValueError(f"{strength!r} is not a valid strength. It must be one of {{1, 2}}")
+        self.scramble = bool(scramble)
+        self.strength = strength
+
+    def _random(self, n=1, *, workers=1):
+        if self.strength == 2:
+            return self._orthogonal_array(n)
+        seed = _seed_of(self.rng)
+        if self.d == 0 or n == 0:
+            return np.empty((n, self.d))
+        return _core.latin_hypercube(n, self.d, seed, centered=not self.scramble)
+
+    def _orthogonal_array(self, n):
+        p = int(np.sqrt(n))
+        if p * p != n or not _is_prime(p):
+            near = [q * q for q in range(max(p - 3, 2), p + 4) if _is_prime(q)][-2:]
+            raise ValueError(f"n is not the square of a prime number. Close values are {near}")
+        if self.d > p + 1:
+            raise ValueError("n is too small for d. Must be n > (d-1)**2")
+        # The orthogonal array OA(p², p + 1, p, 2): columns i, j and i + k·j mod p.
+        i, j = np.divmod(np.arange(n), p)
+        columns = [i, j] + [(i + k * j) % p for k in range(1, p)]
+        out = np.empty((n, self.d))
+        for c, column in enumerate(columns[: self.d]):
+            symbols = self.rng.permutation(p)[column]
+            # Within each symbol's p rows, a Latin hypercube of p strata.
+            for symbol in range(p):
+                rows = np.flatnonzero(symbols == symbol)
+                strata = self.rng.permutation(p)
+                jitter = self.rng.random(p) if self.scramble else 0.5
+                out[rows, c] = (symbol * p + strata + jitter) / n
+        return out
+
+    def fast_forward(self, n):
+        """Counts ``n`` points as drawn and moves ``rng`` on as one draw would (a Latin
+        hypercube is a set, not a sequence: there is nothing to skip to)."""
+        n = _check_n(n)
+        if self.strength == 1:
+            _seed_of(self.rng)
+        self.num_generated += n
+        return self
+
+
+def _is_prime(p):
+    return p >= 2 and all(p % q for q in range(2, int(p**0.5) + 1))
+
+
+def _validate_bounds(l_bounds, u_bounds, d):
+    try:
+        lower = np.broadcast_to(np.asarray(l_bounds, dtype=float), d)
+        upper = np.broadcast_to(np.asarray(u_bounds, dtype=float), d)
+    except ValueError as exc:
+        raise ValueError(
+            "'l_bounds' and 'u_bounds' must be broadcastable and respect the sample dimension"
+        ) from exc
+    if not np.all(lower < upper):
+        raise ValueError("Bounds are not consistent 'l_bounds' < 'u_bounds'")
+    return lower, upper
+
+
+class PoissonDisk(QMCEngine):
+    """Poisson-disk points in the box ``[l_bounds, u_bounds)`` of any dimension: no two closer
+    than ``radius``. Bridson's algorithm in Rust: an active list and a grid of cell side
+    ``radius/√d``; each step tries up to ``ncandidates`` candidates around a random active point
+    and keeps the first one far enough from every point. Candidates are uniform in the shell
+    between ``radius`` and ``2·radius`` (``hypersphere="volume"``) or on the sphere of radius
+    ``1.001·radius`` (``"surface"``).
+
+    ``random(n)`` returns up to ``n`` new points of the same set (fewer once the space is
+    full); ``fill_space()`` adds points until no active point is left.
+
+    >>> from nyquist.qmc import PoissonDisk
+    >>> x = PoissonDisk(d=2, radius=0.2, rng=1).fill_space()
+    >>> bool(min(np.hypot(*(a - b)) for k, a in enumerate(x) for b in x[:k]) >= 0.2)
+    True
+    """
+
+    def __init__(self, d, *, radius=0.05, hypersphere="volume", ncandidates=30,
+                 optimization=None, rng=None, seed=None, l_bounds=None, u_bounds=None):
+        super().__init__(d, optimization=optimization, rng=rng, seed=seed)
+        if hypersphere not in ("volume", "surface"):
+            raise ValueError(
+                f"{hypersphere!r} is not a valid hypersphere sampling method. It must be one of "
+                "{'volume', 'surface'}"
+            )
+        self.radius = float(radius)
+        self.hypersphere = hypersphere
+        self.ncandidates = int(ncandidates)
+        lower = np.zeros(self.d) if l_bounds is None else l_bounds
+        upper = np.ones(self.d) if u_bounds is None else u_bounds
+        self.l_bounds, self.u_bounds = _validate_bounds(lower, upper, self.d)
+        self._new_state()
+
+    def _new_state(self):
+        self._state = None
+        if self.d:
+            self._state = _core.PoissonDiskState(
+                self.radius, self.l_bounds.tolist(), self.u_bounds.tolist(),
+                self.hypersphere == "surface", self.ncandidates, _seed_of(self.rng),
+            )
+
+    def _draw(self, n):
+        if n == 0 or self._state is None:
+            return np.empty((0 if n is None else n, self.d))
+        return self._state.extend(n)
+
+    def random(self, n=1, *, workers=1):
+        """Up to ``n`` new points of the set, fewer when the space is full."""
+        sample = self._draw(_check_n(n))
+        if self.optimization_method is not None:
+            sample = self.optimization_method(sample)
+        self.num_generated += len(sample)
+        return sample
+
+    def fill_space(self):
+        """Adds points until no active point can place another, and returns them."""
+        sample = self._draw(None)
+        self.num_generated += len(sample)
+        return sample
+
+    def reset(self):
+        super().reset()
+        self._new_state()
+        return self
+
+    def fast_forward(self, n):
+        """Adds ``n`` points to the set without returning them (a Poisson-disk set grows by a
+        random process: later points depend on earlier ones)."""
+        self.random(n)
+        return self
+
+
+class PixelSampler(QMCEngine):
+    """The samples of one pixel from one of nyquist's pixel samplers, as an engine: point k is
+    pixel sample k, its ``d`` values the sampler's dimensions in the renderer's order (the image
+    sample first, then 2-D draws, a last 1-D draw when ``d`` is odd). ``sampler`` is any of
+    ``nyquist.pixel.SAMPLERS`` (``"zsobol"``, ``"pmj02"``, ``"best-candidate"``, ``"sobol"``,
+    …); ``size`` is the image in pixels and ``spp`` the samples per pixel the sampler is built
+    for (at most ``spp`` points can be drawn). The scramble is seeded from ``rng``;
+    ``scramble=False`` (for ``halton``, ``hammersley``, ``sobol``, ``zsobol``) gives the
+    unscrambled sets.
+
+    >>> from nyquist.qmc import PixelSampler
+    >>> x = PixelSampler(2, "pmj02", spp=16, rng=2).random(16)
+    >>> sorted((x[:, 0] * 16).astype(int).tolist()) == list(range(16))
+    True
+    """
+
+    def __init__(self, d, sampler="zsobol", *, pixel=(0, 0), size=(1, 1), spp=256,
+                 scramble=True, rng=None, optimization=None, seed=None):
+        super().__init__(d, optimization=optimization, rng=rng, seed=seed)
+        self.sampler = sampler
+        self.pixel = tuple(int(v) for v in pixel)
+        self.size = tuple(int(v) for v in size)
+        self.spp = int(spp)
+        self.scramble = bool(scramble)
+        self._seed = _seed_of(self.rng)
+        self._points(0, 0)  # the core's checks, now rather than at the first draw
+
+    def _points(self, first, n):
+        return _core.pixel_samples(
+            self.sampler, self.pixel, n, self.d, first=first, size=self.size, spp=self.spp,
+            seed=self._seed, scramble=None if self.scramble else "none",
+        )
+
+
+class ZSobol(PixelSampler):
+    """Ahmed and Wonka's ZSobol pixel sampler (pbrt-v4's ``ZSobolSampler``): one Owen-scrambled
+    Sobol sequence over the whole image, indexed by the pixel's Morton code, so every pixel's
+    samples are a (0, m, 2)-net and neighbouring pixels are decorrelated.
+
+    >>> from nyquist.qmc import ZSobol
+    >>> ZSobol(2, pixel=(3, 1), size=(8, 8), spp=4, rng=1).random(4).shape
+    (4, 2)
+    """
+
+    def __init__(self, d, *, pixel=(0, 0), size=(1, 1), spp=256, scramble=True, rng=None,
+                 optimization=None, seed=None):
+        super().__init__(d, "zsobol", pixel=pixel, size=size, spp=spp, scramble=scramble,
+                         rng=rng, optimization=optimization, seed=seed)
+
+
+class BestCandidate(PixelSampler):
+    """Mitchell's best-candidate pixel sampler (pbrt-v2's): the image samples are a toroidal
+    best-candidate (blue-noise) pattern, the other dimensions stratified.
+
+    >>> from nyquist.qmc import BestCandidate
+    >>> BestCandidate(2, spp=8, rng=1).random(8).shape
+    (8, 2)
+    """
+
+    def __init__(self, d, *, pixel=(0, 0), size=(1, 1), spp=256, rng=None, optimization=None,
+                 seed=None):
+        super().__init__(d, "best-candidate", pixel=pixel, size=size, spp=spp, rng=rng,
+                         optimization=optimization, seed=seed)
+
+
 def scale(sample, l_bounds, u_bounds, *, reverse=False):
     """Scale ``sample`` from the unit hypercube to ``[l_bounds, u_bounds]`` (or back with
     ``reverse``), as SciPy's ``qmc.scale``: the bounds are broadcast to the sample's dimension.
@@ -371,24 +601,71 @@ def _check_workers(workers):
     return workers
 
 
+def _unit_sample(sample, name="Sample"):
+    sample = np.ascontiguousarray(sample, dtype=np.float64)
+    if sample.ndim != 2:
+        raise ValueError(f"{name} is not a 2D array")
+    if sample.size and ((sample.max() > 1.0) or (sample.min() < 0.0)):
+        raise ValueError(f"{name} is not in unit hypercube")
+    return sample
+
+
 def discrepancy(sample, *, iterative=False, method="CD", workers=1):
     """The discrepancy of ``sample`` (an ``(n, d)`` array in ``[0, 1]``): ``"CD"``, ``"WD"``
     and ``"MD"`` squared and ``"L2-star"`` not, as SciPy returns them, and ``"star"``,
-    nyquist's exact star discrepancy.
+    nyquist's exact star discrepancy. ``iterative=True`` normalises an L2 discrepancy by
+    ``n + 1``, ready for :func:`update_discrepancy`.
 
     >>> discrepancy([[0.5]], method="star")
     0.5
     """
-    sample = np.ascontiguousarray(sample, dtype=np.float64)
-    if sample.ndim != 2:
-        raise ValueError("Sample is not a 2D array")
-    if (sample.max() > 1.0) or (sample.min() < 0.0):
-        raise ValueError("Sample is not in unit hypercube")
-    if iterative:
-        raise ValueError("iterative=True: not offered by nyquist's discrepancy")
+    sample = _unit_sample(sample)
     _check_workers(workers)
     if method not in _METHODS:
         raise ValueError(
             f"{method!r} is not a valid method. It must be one of {set(_METHODS)!r}"
         )
-    return _core.discrepancy(sample, _METHODS[method])
+    return _core.discrepancy(sample, _METHODS[method], bool(iterative))
+
+
+def update_discrepancy(x_new, sample, initial_disc):
+    """The squared centered discrepancy of ``sample`` with ``x_new`` added, in O(n·d), from
+    ``initial_disc = discrepancy(sample, iterative=True)`` (SciPy's ``update_discrepancy``).
+
+    >>> import numpy as np
+    >>> x = np.array([[0.1, 0.3], [0.6, 0.8], [0.35, 0.55]])
+    >>> d0 = discrepancy(x[:2], iterative=True)
+    >>> bool(abs(update_discrepancy(x[2], x[:2], d0) - discrepancy(x)) < 1e-15)
+    True
+    """
+    sample = _unit_sample(sample)
+    x_new = np.ascontiguousarray(x_new, dtype=np.float64)
+    if x_new.ndim != 1:
+        raise ValueError("x_new is not a 1D array")
+    if x_new.size and ((x_new.max() > 1.0) or (x_new.min() < 0.0)):
+        raise ValueError("x_new is not in unit hypercube")
+    if x_new.shape[0] != sample.shape[1]:
+        raise ValueError("x_new and sample must be broadcastable")
+    return _core.update_discrepancy(x_new, sample, float(initial_disc))
+
+
+def geometric_discrepancy(sample, method="mindist", metric="euclidean"):
+    """SciPy's geometric discrepancy: ``"mindist"``, the smallest distance between two distinct
+    points, or ``"mst"``, the mean edge length of a minimum spanning tree. ``metric`` is
+    ``"euclidean"``, ``"cityblock"`` or ``"chebyshev"``. Duplicate points raise a warning; the
+    spanning tree counts their zero-length edges (SciPy's drops them, its issue #18892).
+
+    >>> geometric_discrepancy([[0, 0], [0, 1], [0.5, 1]], method="mst")
+    0.75
+    """
+    sample = _unit_sample(sample)
+    if sample.shape[0] < 2:
+        raise ValueError("Sample must contain at least two points")
+    if method not in ("mindist", "mst"):
+        raise ValueError(f"{method!r} is not a valid method. It must be one of {{'mindist', 'mst'}}")
+    value, duplicate = _core.geometric_discrepancy(sample, method, metric)
+    if duplicate:
+        warnings.warn("Sample contains duplicate points.", stacklevel=2)
+    return value
+
+

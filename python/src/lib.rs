@@ -4,26 +4,26 @@
 //! computed into (no copy). The Python layer (`nyquist/qmc.py`) gives these SciPy's
 //! `stats.qmc` interface.
 
-use numpy::{IntoPyArray, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use nyquist::analysis::{
-    PointSet, centered_l2_discrepancy, l2_star_discrepancy, mixture_l2_discrepancy,
-    star_discrepancy, star_discrepancy_scratch_len, wraparound_l2_discrepancy,
-};
+mod design;
+mod measures;
+mod pixel;
+
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{
     Halton, NamedSequence, OwenSobol, ScrambledHalton, Sequence, SequenceSpec, Sobol,
 };
 
 /// A `ValueError` with the core error's message.
-fn value_error(e: impl std::fmt::Display) -> PyErr {
+pub(crate) fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
 }
 
 /// The number of values of an `n × d` array, or a `ValueError` when it does not fit.
-fn values(n: u64, d: u32) -> PyResult<usize> {
+pub(crate) fn values(n: u64, d: u32) -> PyResult<usize> {
     usize::try_from(n)
         .ok()
         .and_then(|n| n.checked_mul(d as usize))
@@ -94,7 +94,12 @@ fn sobol<'py>(
 /// Splits the rows of `out` (`d` values each, the first at index `first`) over the machine's
 /// threads, in contiguous blocks of at least 2¹⁴ rows, and runs `fill(first_row, block)` on
 /// each; one block on one thread when the work is small.
-fn par_rows(out: &mut [f64], d: usize, first: u64, fill: impl Fn(u64, &mut [f64]) + Sync) {
+pub(crate) fn par_rows(
+    out: &mut [f64],
+    d: usize,
+    first: u64,
+    fill: impl Fn(u64, &mut [f64]) + Sync,
+) {
     let rows = out.len() / d.max(1);
     let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
     let blocks = threads.min(rows / (1 << 14)).max(1);
@@ -233,42 +238,20 @@ fn sequence<'py>(
     array(py, v, n, d)
 }
 
-/// The discrepancy of `sample` (an `(n, d)` float64 array in `[0, 1]`) by `method`: `"CD"`
-/// (centered L2), `"WD"` (wrap-around L2) and `"MD"` (mixture L2) squared, `"L2-star"` not
-/// squared — as SciPy's
-/// `qmc.discrepancy` returns them — or `"star"`, the exact star discrepancy.
-#[pyfunction]
-fn discrepancy(py: Python<'_>, sample: PyReadonlyArray2<'_, f64>, method: &str) -> PyResult<f64> {
-    let dims = sample.shape()[1];
-    let coords = sample.as_slice().map_err(value_error)?;
-    let points = PointSet::new(coords, dims).map_err(value_error)?;
-    let squared = |v: f64| v * v;
-    match method {
-        "CD" => Ok(squared(py.detach(|| centered_l2_discrepancy(&points)))),
-        "WD" => Ok(squared(py.detach(|| wraparound_l2_discrepancy(&points)))),
-        "MD" => Ok(squared(py.detach(|| mixture_l2_discrepancy(&points)))),
-        "L2-star" => Ok(py.detach(|| l2_star_discrepancy(&points))),
-        "star" => {
-            let len = star_discrepancy_scratch_len(points.len(), dims)
-                .ok_or_else(|| value_error("the star discrepancy's scratch does not fit"))?;
-            py.detach(|| {
-                let mut scratch = vec![0.0; len];
-                star_discrepancy(&points, &mut scratch)
-            })
-            .map_err(value_error)
-        }
-        other => Err(value_error(format!(
-            "method {other:?} is not one of 'CD', 'WD', 'MD', 'L2-star', 'star'"
-        ))),
-    }
-}
-
 /// The extension module.
 #[pymodule]
 fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sobol, m)?)?;
     m.add_function(wrap_pyfunction!(halton, m)?)?;
     m.add_function(wrap_pyfunction!(sequence, m)?)?;
-    m.add_function(wrap_pyfunction!(discrepancy, m)?)?;
+    m.add_function(wrap_pyfunction!(measures::discrepancy, m)?)?;
+    m.add_function(wrap_pyfunction!(measures::update_discrepancy, m)?)?;
+    m.add_function(wrap_pyfunction!(measures::geometric_discrepancy, m)?)?;
+    m.add_function(wrap_pyfunction!(measures::t_value, m)?)?;
+    m.add_function(wrap_pyfunction!(measures::periodogram, m)?)?;
+    m.add_function(wrap_pyfunction!(design::latin_hypercube, m)?)?;
+    m.add_class::<design::PoissonDiskState>()?;
+    m.add_function(wrap_pyfunction!(pixel::pixel_samples, m)?)?;
+    m.add_class::<pixel::Filter>()?;
     Ok(())
 }

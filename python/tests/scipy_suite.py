@@ -22,18 +22,29 @@ import pytest
 HERE = pathlib.Path(__file__).resolve().parent
 
 # What nyquist replaces: the names in scipy.stats.qmc and scipy.stats._qmc.
-PATCHED = ["Sobol", "Halton", "discrepancy", "scale"]
+PATCHED = [
+    "Sobol",
+    "Halton",
+    "LatinHypercube",
+    "PoissonDisk",
+    "discrepancy",
+    "update_discrepancy",
+    "geometric_discrepancy",
+    "scale",
+]
 
 # The tests of what nyquist replaces: pytest -k expressions over the test ids.
 APPLICABLE = " or ".join(
     [
         "TestSobol",
         "TestHalton",
+        "TestLHS",
+        "TestPoisson",
+        "test_deterministic",
         "TestMultinomialQMC",
         "TestNormalQMC",
         "TestMultivariateNormalQMC",
-        "(TestUtils and (scale or discrepancy) and not update and not perturb"
-        " and not geometric and not l1_norm)",
+        "(TestUtils and (scale or discrepancy))",
     ]
 )
 

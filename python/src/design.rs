@@ -1,0 +1,333 @@
+//! Random designs of SciPy's interface: Latin hypercubes and incremental Poisson-disk sets in
+//! any dimension.
+
+use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
+use pyo3::prelude::*;
+
+use nyquist::hash::hash2;
+use nyquist::rng::{DefaultRng, default_rng, uniform_below_u64, uniform_f64};
+
+use crate::{par_rows, value_error, values};
+
+/// `n` Latin-hypercube points in `d` dimensions as an `(n, d)` float64 array: in every dimension
+/// the values fall one in each stratum `[k/n, (k+1)/n)`, the strata assigned to points by an
+/// independent uniform permutation per dimension (an inside-out Fisher–Yates from the core's
+/// PCG32, keyed by `hash2(seed, dimension)`), each value jittered uniformly inside its stratum,
+/// or at its centre with `centered`. The dimensions are drawn on every thread.
+#[pyfunction]
+#[pyo3(signature = (n, d, seed, centered=false))]
+pub fn latin_hypercube<'py>(
+    py: Python<'py>,
+    n: u64,
+    d: u32,
+    seed: u64,
+    centered: bool,
+) -> PyResult<Bound<'py, PyArray2<f64>>> {
+    let len = values(n, d)?;
+    let rows = n as usize;
+    let dims = d as usize;
+    let v = py.detach(|| {
+        let mut columns = vec![Vec::new(); dims];
+        let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+        let per = dims.div_ceil(threads).max(1);
+        std::thread::scope(|scope| {
+            for (k, block) in columns.chunks_mut(per).enumerate() {
+                scope.spawn(move || {
+                    for (j, column) in block.iter_mut().enumerate() {
+                        let dim = (k * per + j) as u64;
+                        *column = lhs_column(rows, hash2(seed, dim), centered);
+                    }
+                });
+            }
+        });
+        let mut out = vec![0.0; len];
+        par_rows(&mut out, dims, 0, |first, block| {
+            for (i, row) in (first as usize..).zip(block.chunks_exact_mut(dims)) {
+                for (x, column) in row.iter_mut().zip(&columns) {
+                    *x = column[i];
+                }
+            }
+        });
+        out
+    });
+    v.into_pyarray(py).reshape([rows, dims])
+}
+
+/// One dimension of a Latin hypercube of `n` points: a uniform permutation of the strata,
+/// jittered (or centred).
+fn lhs_column(n: usize, key: u64, centered: bool) -> Vec<f64> {
+    let mut rng = default_rng(key);
+    let mut strata = vec![0u64; n];
+    // Inside-out Fisher–Yates: after step k, positions 0..=k hold a uniform permutation of
+    // 0..=k.
+    for k in 0..n {
+        let j = uniform_below_u64(&mut rng, k as u64 + 1) as usize;
+        strata[k] = strata[j];
+        strata[j] = k as u64;
+    }
+    let scale = 1.0 / n as f64;
+    strata
+        .into_iter()
+        .map(|s| {
+            let jitter = if centered { 0.5 } else { uniform_f64(&mut rng) };
+            ((s as f64 + jitter) * scale).min(nyquist::ONE_MINUS_EPSILON_F64)
+        })
+        .collect()
+}
+
+/// Cells the Poisson-disk grid may have (2²⁷ `u32`s, 512 MiB).
+const MAX_CELLS: u64 = 1 << 27;
+
+const EMPTY: u32 = u32::MAX;
+
+/// An incremental Poisson-disk set in a box of any dimension, by Bridson's algorithm ("Fast
+/// Poisson disk sampling in arbitrary dimensions", SIGGRAPH 2007 sketches): a background grid
+/// of cell side `r/√d` (at most one point per cell) and an active list. Each step picks a
+/// random active point and throws up to `candidates` candidates around it; the first one at
+/// least `r` from every point (checked against the `⌈√d⌉` neighbouring cells on each side) is
+/// added, and a point whose candidates all fail is retired. `extend(n)` continues the same set,
+/// so successive calls give one Poisson-disk set.
+///
+/// Candidates are uniform in the shell `r ≤ |x − c| < 2r` (`volume`) or on the sphere of radius
+/// `1.001·r` (`surface`), as SciPy's `PoissonDisk` draws them; the box is `[lower, upper)`.
+#[pyclass(module = "nyquist._core")]
+pub struct PoissonDiskState {
+    radius: f64,
+    lower: Vec<f64>,
+    upper: Vec<f64>,
+    cell: f64,
+    shape: Vec<usize>,
+    reach: i64,
+    surface: bool,
+    candidates: u32,
+    grid: Vec<u32>,
+    points: Vec<f64>,
+    active: Vec<u32>,
+    rng: DefaultRng,
+}
+
+#[pymethods]
+impl PoissonDiskState {
+    /// An empty set in the box `[lower, upper)` (one bound per dimension).
+    #[new]
+    #[pyo3(signature = (radius, lower, upper, surface, candidates, seed))]
+    fn new(
+        radius: f64,
+        lower: Vec<f64>,
+        upper: Vec<f64>,
+        surface: bool,
+        candidates: u32,
+        seed: u64,
+    ) -> PyResult<Self> {
+        let d = lower.len();
+        if !(radius.is_finite() && radius > 0.0) {
+            return Err(value_error(format!("radius {radius} is outside (0, ∞)")));
+        }
+        if candidates == 0 {
+            return Err(value_error("ncandidates 0 is outside 1..=4294967295"));
+        }
+        if upper.len() != d || d == 0 {
+            return Err(value_error("the bounds must have one value per dimension"));
+        }
+        if d > 64 {
+            return Err(value_error(format!(
+                "d {d} is outside 1..=64 for a Poisson-disk set (a grid of 3 cells per side would have 3^{d} cells)"
+            )));
+        }
+        let cell = radius / (d as f64).sqrt();
+        let mut shape = Vec::with_capacity(d);
+        let mut cells = 1u64;
+        for (l, u) in lower.iter().zip(&upper) {
+            if !(l.is_finite() && u.is_finite() && l < u) {
+                return Err(value_error(
+                    "Bounds are not consistent 'l_bounds' < 'u_bounds'",
+                ));
+            }
+            let side = ((u - l) / cell).ceil().max(1.0);
+            cells = cells.saturating_mul(side.min(u64::MAX as f64) as u64);
+            if cells > MAX_CELLS {
+                return Err(value_error(format!(
+                    "radius {radius}: the Poisson-disk grid of cells of side r/√d = {cell} has more than {MAX_CELLS} cells; take a larger radius or fewer dimensions"
+                )));
+            }
+            shape.push(side as usize);
+        }
+        Ok(PoissonDiskState {
+            radius,
+            lower,
+            upper,
+            cell,
+            shape,
+            reach: (d as f64).sqrt().ceil() as i64,
+            surface,
+            candidates,
+            grid: vec![EMPTY; cells as usize],
+            points: Vec::new(),
+            active: Vec::new(),
+            rng: default_rng(seed),
+        })
+    }
+
+    /// Adds up to `n` points (`None`: until no active point is left, the set then being
+    /// saturated for these candidates) and returns them as an `(k, d)` array, `k ≤ n`.
+    #[pyo3(signature = (n=None))]
+    fn extend<'py>(
+        &mut self,
+        py: Python<'py>,
+        n: Option<u64>,
+    ) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let d = self.lower.len();
+        let start = self.points.len();
+        py.detach(|| self.grow(n.unwrap_or(u64::MAX)));
+        let new = self.points[start..].to_vec();
+        let k = new.len() / d;
+        new.into_pyarray(py).reshape([k, d])
+    }
+
+    /// The number of points so far.
+    fn __len__(&self) -> usize {
+        self.points.len() / self.lower.len()
+    }
+}
+
+impl PoissonDiskState {
+    fn grow(&mut self, n: u64) {
+        let d = self.lower.len();
+        let mut drawn = 0u64;
+        let mut candidate = vec![0.0; d];
+        if self.points.is_empty() && n > 0 {
+            for (j, c) in candidate.iter_mut().enumerate() {
+                let (l, u) = (self.lower[j], self.upper[j]);
+                *c = (l + uniform_f64(&mut self.rng) * (u - l)).min(prev(u));
+            }
+            self.insert(&candidate);
+            drawn = 1;
+        }
+        let mut direction = vec![0.0; d];
+        while drawn < n && !self.active.is_empty() {
+            let slot = uniform_below_u64(&mut self.rng, self.active.len() as u64) as usize;
+            let centre = self.active[slot] as usize * d;
+            let mut found = false;
+            for _ in 0..self.candidates {
+                self.direction(&mut direction);
+                let r = if self.surface {
+                    1.001 * self.radius
+                } else {
+                    // Uniform by volume in the shell [r, 2r).
+                    let u = uniform_f64(&mut self.rng);
+                    self.radius
+                        * (1.0 + u * ((1u64 << d.min(63)) as f64 - 1.0)).powf(1.0 / d as f64)
+                };
+                for j in 0..d {
+                    candidate[j] = self.points[centre + j] + r * direction[j];
+                }
+                if self.inside(&candidate) && !self.crowded(&candidate) {
+                    self.insert(&candidate);
+                    drawn += 1;
+                    found = true;
+                    break;
+                }
+            }
+            if !found {
+                self.active.swap_remove(slot);
+            }
+        }
+    }
+
+    /// A uniform direction on the unit sphere: normalised Gaussian coordinates (Box–Muller).
+    fn direction(&mut self, out: &mut [f64]) {
+        loop {
+            let mut norm = 0.0;
+            for x in out.iter_mut() {
+                let u1 = 1.0 - uniform_f64(&mut self.rng);
+                let u2 = uniform_f64(&mut self.rng);
+                *x = (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos();
+                norm += *x * *x;
+            }
+            if norm > 1e-300 {
+                let scale = 1.0 / norm.sqrt();
+                out.iter_mut().for_each(|x| *x *= scale);
+                return;
+            }
+        }
+    }
+
+    fn inside(&self, x: &[f64]) -> bool {
+        x.iter()
+            .zip(self.lower.iter().zip(&self.upper))
+            .all(|(&v, (&l, &u))| l <= v && v < u)
+    }
+
+    /// The grid cell of `x` on each axis.
+    fn cell_of(&self, x: &[f64], j: usize) -> usize {
+        (((x[j] - self.lower[j]) / self.cell) as usize).min(self.shape[j] - 1)
+    }
+
+    fn insert(&mut self, x: &[f64]) {
+        let d = x.len();
+        let index = (0..d).fold(0, |index, j| index * self.shape[j] + self.cell_of(x, j));
+        let id = (self.points.len() / d) as u32;
+        self.grid[index] = id;
+        self.points.extend_from_slice(x);
+        self.active.push(id);
+    }
+
+    /// Whether a point lies closer than `r` to `x`: the cells within `reach` of `x`'s cell on
+    /// every axis, visited as an odometer.
+    fn crowded(&self, x: &[f64]) -> bool {
+        let d = x.len();
+        let r2 = self.radius * self.radius;
+        // At most 64 dimensions on the stack; above that, a grid with 3 cells per side would
+        // already exceed MAX_CELLS, so `new` has refused it.
+        let mut centre = [0i64; 64];
+        let mut offset = [-self.reach; 64];
+        for (j, c) in centre[..d].iter_mut().enumerate() {
+            *c = self.cell_of(x, j) as i64;
+        }
+        loop {
+            let mut index = 0usize;
+            let mut inside = true;
+            for j in 0..d {
+                let v = centre[j] + offset[j];
+                if v < 0 || v >= self.shape[j] as i64 {
+                    inside = false;
+                    break;
+                }
+                index = index * self.shape[j] + v as usize;
+            }
+            if inside {
+                let id = self.grid[index];
+                if id != EMPTY {
+                    let p = &self.points[id as usize * d..(id as usize + 1) * d];
+                    let dist2: f64 = p.iter().zip(x).map(|(a, b)| (a - b) * (a - b)).sum();
+                    if dist2 < r2 {
+                        return true;
+                    }
+                }
+            }
+            let mut j = 0;
+            loop {
+                if j == d {
+                    return false;
+                }
+                offset[j] += 1;
+                if offset[j] <= self.reach {
+                    break;
+                }
+                offset[j] = -self.reach;
+                j += 1;
+            }
+        }
+    }
+}
+
+/// The largest float below `x`.
+fn prev(x: f64) -> f64 {
+    if x > 0.0 {
+        f64::from_bits(x.to_bits() - 1)
+    } else if x < 0.0 {
+        f64::from_bits(x.to_bits() + 1)
+    } else {
+        -f64::from_bits(1)
+    }
+}
