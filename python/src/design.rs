@@ -65,12 +65,12 @@ fn lhs_column(n: usize, key: u64, centered: bool) -> Vec<f64> {
         strata[k] = strata[j];
         strata[j] = k as u64;
     }
-    let scale = 1.0 / n as f64;
+    let count = n as f64;
     strata
         .into_iter()
         .map(|s| {
             let jitter = if centered { 0.5 } else { uniform_f64(&mut rng) };
-            ((s as f64 + jitter) * scale).min(nyquist::ONE_MINUS_EPSILON_F64)
+            ((s as f64 + jitter) / count).min(nyquist::ONE_MINUS_EPSILON_F64)
         })
         .collect()
 }

@@ -45,16 +45,20 @@ pub fn discrepancy(
     let points = point_set(&sample)?;
     if let Some(kind) = l2_kind(method) {
         let n = points.len() as f64 + f64::from(u8::from(iterative));
-        let squared = py.detach(|| l2_sums(&points, kind).squared(n)).max(0.0);
+        // D² is a small difference of O(1) sums, so rounding can make it slightly negative: the
+        // discrepancy clamps it at 0, as the core's functions do. With `iterative` it is not a
+        // discrepancy but a partial sum for `update_discrepancy`, and SciPy returns it as is.
+        let squared = py.detach(|| l2_sums(&points, kind).squared(n));
+        let squared = if iterative { squared } else { squared.max(0.0) };
         return Ok(if kind == L2Kind::Star {
-            squared.sqrt()
+            squared.max(0.0).sqrt()
         } else {
             squared
         });
     }
     if method != "star" {
         return Err(value_error(format!(
-            "method {method:?} is not one of 'CD', 'WD', 'MD', 'L2-star', 'star'"
+            "method '{method}' is not one of 'CD', 'WD', 'MD', 'L2-star', 'star'"
         )));
     }
     if iterative {
@@ -111,7 +115,7 @@ fn metric(name: &str) -> PyResult<Metric> {
         },
         other => {
             return Err(value_error(format!(
-                "metric {other:?} is not one of 'euclidean', 'cityblock', 'chebyshev'"
+                "metric '{other}' is not one of 'euclidean', 'cityblock', 'chebyshev'"
             )));
         }
     })
@@ -177,7 +181,7 @@ pub fn geometric_discrepancy(
             (total / (n - 1).max(1) as f64, duplicate)
         })),
         other => Err(value_error(format!(
-            "{other:?} is not a valid method. It must be one of {{'mindist', 'mst'}}"
+            "'{other}' is not a valid method. It must be one of {{'mindist', 'mst'}}"
         ))),
     }
 }

@@ -20,7 +20,7 @@ fn scramble_of(name: &str) -> PyResult<Scramble> {
         "owen" => Scramble::Owen,
         other => {
             return Err(value_error(format!(
-                "scramble {other:?} is not one of 'none', 'permute-digits', 'fast-owen', 'owen'"
+                "scramble '{other}' is not one of 'none', 'permute-digits', 'fast-owen', 'owen'"
             )));
         }
     })

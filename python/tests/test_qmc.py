@@ -168,7 +168,7 @@ def test_bad_arguments_raise_value_errors_naming_the_limit():
         qmc.Sobol(d=2, bits=65)
     with pytest.raises(ValueError, match=r"bits 64: .*1 ≤ bits ≤ 32"):
         qmc.Sobol(d=2, bits=64)
-    with pytest.raises(TypeError, match="either rng or seed"):
+    with pytest.raises(TypeError, match="got multiple values for argument now known as `rng`"):
         qmc.Sobol(d=2, rng=1, seed=1)
     with pytest.warns(UserWarning, match="power of 2"):
         qmc.Sobol(d=1).random(3)
