@@ -13,7 +13,7 @@ A filter's importance samples integrate it: the mean weight is its integral.
 >>> import numpy as np
 >>> f = pixel.Filter("gaussian:sigma=0.5")
 >>> f.name, f.radius
-('gaussian', (1.5, 1.5))
+('gaussian', (2.0, 2.0))
 >>> offsets, weights = f.sample(np.random.default_rng(1).random((20000, 2)))
 >>> bool(abs(weights.mean() - f.integral) < 0.01 * f.integral)
 True
