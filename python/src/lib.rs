@@ -12,10 +12,10 @@ mod design;
 mod measures;
 mod pixel;
 
-use nyquist::scramble::Scramble;
-use nyquist::sequence::{
-    Halton, NamedSequence, OwenSobol, ScrambledHalton, Sequence, SequenceSpec, Sobol,
-};
+use nyquist::hash::hash2;
+use nyquist::radical::positional_radical_inverse_column_f64;
+use nyquist::scramble::{Scramble, fast_owen_scramble};
+use nyquist::sequence::{Halton, NamedSequence, ScrambledHalton, Sequence, SequenceSpec, Sobol};
 
 /// A `ValueError` with the core error's message.
 pub(crate) fn value_error(e: impl std::fmt::Display) -> PyErr {
@@ -52,11 +52,11 @@ fn gray(k: u64) -> u64 {
 }
 
 /// Points `first .. first + n` of the `d`-dimensional Sobol sequence (Joe–Kuo 6.21201
-/// direction numbers), as an `(n, d)` float64 array. Unscrambled (`seed` None) the points come
-/// in Gray-code order, SciPy's: point k is the sequence's point `k ^ (k >> 1)`, so every
-/// power-of-two prefix is the same set as in natural order. With a seed they are Owen-scrambled
-/// (nyquist's hash-based nested uniform scramble, by index, natural order). `bits` (1 to 32)
-/// keeps that many leading bits of each coordinate, as SciPy's `bits` does.
+/// direction numbers), as an `(n, d)` float64 array, in Gray-code order, SciPy's: point k is the
+/// sequence's point `k ^ (k >> 1)`, so every power-of-two prefix is the same set as in natural
+/// order. With a seed each coordinate is Owen-scrambled: Burley's hash-based nested uniform
+/// scramble (the core's `fast_owen_scramble`), keyed per dimension by `hash2(seed, dimension)`.
+/// `bits` (1 to 32) keeps that many leading bits of each coordinate, as SciPy's `bits` does.
 #[pyfunction]
 #[pyo3(signature = (n, d, first=0, seed=None, bits=32))]
 fn sobol<'py>(
@@ -72,22 +72,19 @@ fn sobol<'py>(
     if !(1..=32).contains(&bits) {
         return Err(value_error(format!("bits {bits} is outside 1..=32")));
     }
+    let s = Sobol::new(d).map_err(value_error)?;
+    let keys: Option<Vec<u32>> = seed.map(|seed| {
+        (0..u64::from(d))
+            .map(|dim| hash2(seed, dim) as u32)
+            .collect()
+    });
     let mut v = vec![0.0; len];
     let dims = d as usize;
-    match seed {
-        None => {
-            let s = Sobol::new(d).map_err(value_error)?;
-            py.detach(|| par_rows(&mut v, dims, first, |f, b| sobol_gray(&s, f, d, bits, b)));
-        }
-        Some(seed) => {
-            let s = OwenSobol::new(d, seed).map_err(value_error)?;
-            py.detach(|| {
-                par_rows(&mut v, dims, first, |f, b| {
-                    owen_sobol_rows(&s, f, d, bits, b)
-                })
-            });
-        }
-    }
+    py.detach(|| {
+        par_rows(&mut v, dims, first, |f, b| {
+            sobol_gray(&s, f, d, bits, keys.as_deref(), b)
+        })
+    });
     array(py, v, n, d)
 }
 
@@ -116,11 +113,12 @@ pub(crate) fn par_rows(
     });
 }
 
-/// Unscrambled Sobol points in Gray-code order into `out` (rows of `d`, the first row point
-/// `first`), keeping `bits` bits: from one point to the next the Gray code flips bit `t` (the
-/// trailing zeros of k + 1), so every coordinate changes by the XOR of its direction column
-/// `t`. Row by row, so the writes are sequential.
-fn sobol_gray(s: &Sobol, first: u64, d: u32, bits: u32, out: &mut [f64]) {
+/// Sobol points in Gray-code order into `out` (rows of `d`, the first row point `first`),
+/// Owen-scrambled with one key per dimension when `keys` is given, keeping `bits` bits: from
+/// one point to the next the Gray code flips bit `t` (the trailing zeros of k + 1), so every
+/// coordinate changes by the XOR of its direction column `t`. Row by row, so the writes are
+/// sequential.
+fn sobol_gray(s: &Sobol, first: u64, d: u32, bits: u32, keys: Option<&[u32]>, out: &mut [f64]) {
     let d_us = d as usize;
     // columns[t][dim]: the direction number t of dimension dim.
     let columns: Vec<u32> = (0..32)
@@ -129,8 +127,18 @@ fn sobol_gray(s: &Sobol, first: u64, d: u32, bits: u32, out: &mut [f64]) {
     let mut x: Vec<u32> = (0..d).map(|dim| s.sample_u32(gray(first), dim)).collect();
     let mask = keep(bits);
     for (k, row) in (first..).zip(out.chunks_exact_mut(d_us)) {
-        for (o, &v) in row.iter_mut().zip(&x) {
-            *o = f64::from(v & mask) * (1.0 / 4_294_967_296.0);
+        match keys {
+            None => {
+                for (o, &v) in row.iter_mut().zip(&x) {
+                    *o = f64::from(v & mask) * (1.0 / 4_294_967_296.0);
+                }
+            }
+            Some(keys) => {
+                for ((o, &v), &key) in row.iter_mut().zip(&x).zip(keys) {
+                    let scrambled = fast_owen_scramble(v, key);
+                    *o = f64::from(scrambled & mask) * (1.0 / 4_294_967_296.0);
+                }
+            }
         }
         // k + 1 < 2³² here except after the last point, whose step is never used.
         let t = ((k + 1).trailing_zeros() as usize).min(31);
@@ -146,17 +154,6 @@ fn keep(bits: u32) -> u32 {
         u32::MAX
     } else {
         !(u32::MAX >> bits)
-    }
-}
-
-/// Owen-scrambled Sobol points into `out` (rows of `d`, the first row point `first`), keeping
-/// `bits` bits.
-fn owen_sobol_rows(s: &OwenSobol, first: u64, d: u32, bits: u32, out: &mut [f64]) {
-    let mask = keep(bits);
-    for (index, row) in (first..).zip(out.chunks_exact_mut(d as usize)) {
-        for (dim, o) in (0..d).zip(row) {
-            *o = f64::from(s.sample_u32(index as u32, dim) & mask) * (1.0 / 4_294_967_296.0);
-        }
     }
 }
 
@@ -180,30 +177,82 @@ fn fill_f64(s: &(impl Sequence + Sync), first: u64, d: u32, len: usize) -> Vec<f
 }
 
 /// Points `first .. first + n` of the `d`-dimensional Halton sequence (radical inverses in
-/// the first `d` primes), as an `(n, d)` float64 array; with a seed, Owen-scrambled in each
-/// base (nested uniform digit permutations, nyquist's `ScrambledHalton` with `Scramble::Owen`).
+/// the first `d` primes), as an `(n, d)` float64 array; with a seed, randomized by `scramble`:
+/// - `"permute-positions"`: each digit position through its own random permutation (Owen's
+///   randomized Halton, SciPy's law; the core's `positional_radical_inverse_column_f64`), for
+///   the first 2⁴² points;
+/// - `"permute-digits"`: one permutation per base (the core's `ScrambledHalton::fill_f64`);
+/// - `"fast-owen"` or `"owen"`: nested uniform digit permutations, value by value.
 #[pyfunction]
-#[pyo3(signature = (n, d, first=0, seed=None))]
+#[pyo3(signature = (n, d, first=0, seed=None, scramble="permute-positions"))]
 fn halton<'py>(
     py: Python<'py>,
     n: u64,
     d: u32,
     first: u64,
     seed: Option<u64>,
+    scramble: &str,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let len = values(n, d)?;
     check_range(first, n, u64::MAX, "the Halton sequence")?;
-    let v = match seed {
-        None => {
-            let s = Halton::new(d).map_err(value_error)?;
-            py.detach(|| fill_f64(&s, first, d, len))
-        }
-        Some(seed) => {
-            let s = ScrambledHalton::with_strategy(d, Scramble::Owen, seed).map_err(value_error)?;
-            py.detach(|| fill_f64(&s, first, d, len))
+    let Some(seed) = seed else {
+        let s = Halton::new(d).map_err(value_error)?;
+        let v = py.detach(|| fill_f64(&s, first, d, len));
+        return array(py, v, n, d);
+    };
+    let strategy = match scramble {
+        "permute-positions" => None,
+        "permute-digits" => Some(Scramble::PermuteDigits),
+        "fast-owen" => Some(Scramble::FastOwen),
+        "owen" => Some(Scramble::Owen),
+        other => {
+            return Err(value_error(format!(
+                "scramble '{other}' is not one of 'permute-positions', 'permute-digits', 'fast-owen', 'owen'"
+            )));
         }
     };
+    let s = ScrambledHalton::with_strategy(d, strategy.unwrap_or(Scramble::None), seed)
+        .map_err(value_error)?;
+    if strategy.is_none() {
+        check_range(
+            first,
+            n,
+            1 << 42,
+            "a Halton sequence with permuted digit positions",
+        )?;
+    }
+    let mut v = vec![0.0; len];
+    let failed = std::sync::Mutex::new(None);
+    let dims = d as usize;
+    py.detach(|| {
+        par_rows(&mut v, dims, first, |f, block| {
+            let done = match strategy {
+                None => positional_rows(f, d, seed, block),
+                Some(_) => s.fill_f64(f, d, block).map(|_| ()),
+            };
+            if let Err(e) = done {
+                *failed.lock().unwrap_or_else(|p| p.into_inner()) = Some(e);
+            }
+        })
+    });
+    if let Some(e) = failed.into_inner().unwrap_or_else(|p| p.into_inner()) {
+        return Err(value_error(e));
+    }
     array(py, v, n, d)
+}
+
+/// Halton points `first ..` with permuted digit positions into `out` (rows of `d`): each
+/// dimension of a block of 256 rows by the core's column writer, so the block stays in cache.
+fn positional_rows(first: u64, d: u32, seed: u64, out: &mut [f64]) -> Result<(), nyquist::Error> {
+    const BLOCK: usize = 256;
+    let dims = d as usize;
+    for (b, block) in out.chunks_mut(BLOCK * dims).enumerate() {
+        let start = first + (b * BLOCK) as u64;
+        for (dim, column) in (0..d).zip(0..dims) {
+            positional_radical_inverse_column_f64(dim, start, seed, &mut block[column..], dims)?;
+        }
+    }
+    Ok(())
 }
 
 /// Points `first .. first + n` of the named point set `name` (any of the core's

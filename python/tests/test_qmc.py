@@ -102,13 +102,19 @@ def test_reset_starts_again():
     skip=st.integers(0, 5000),
     n=st.integers(0, 300),
     scramble=st.booleans(),
-    kind=st.sampled_from(["sobol", "halton", "pmj02", "zero-two", "r2", "lattice"]),
+    kind=st.sampled_from(
+        ["sobol", "halton", "halton-digits", "halton-owen", "pmj02", "zero-two", "r2", "lattice"]
+    ),
 )
 def test_fast_forward_equals_skipping(d, skip, n, scramble, kind):
     two = min(d, 2)
     make = {
         "sobol": lambda: qmc.Sobol(d=d, scramble=scramble, rng=4),
         "halton": lambda: qmc.Halton(d=d, scramble=scramble, rng=4),
+        "halton-digits": lambda: qmc.Halton(
+            d=d, scramble=scramble, scrambling="permute-digits", rng=4
+        ),
+        "halton-owen": lambda: qmc.Halton(d=d, scramble=scramble, scrambling="owen", rng=4),
         "pmj02": lambda: qmc.PMJ02(d=two, scramble=scramble, rng=4),
         "zero-two": lambda: qmc.ZeroTwo(d=two, scramble=scramble, rng=4),
         "r2": lambda: qmc.R2(d=d, scramble=scramble, rng=4),

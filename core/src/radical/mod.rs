@@ -56,7 +56,10 @@ pub use owen::{
 };
 pub(crate) use permuted::PermutedDigitGroups;
 pub use primes::PRIMES;
-pub use scrambled::{scrambled_radical_inverse, scrambled_radical_inverse_f64};
+pub use scrambled::{
+    positional_radical_inverse_column_f64, positional_radical_inverse_f64,
+    scrambled_radical_inverse, scrambled_radical_inverse_column_f64, scrambled_radical_inverse_f64,
+};
 #[cfg(test)]
 pub(crate) use tables::fast_class_of_table;
 pub(crate) use tables::{fast_class, fast_limit};

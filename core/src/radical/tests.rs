@@ -914,3 +914,196 @@ fn batch_and_run_forms_agree_at_the_fast_path_edges() {
         assert!(out[k] > 0.0);
     }
 }
+
+/// The column writer against the value-by-value function, bit for bit: carries through every
+/// digit, the switch to more digits, the stride, and the indices past 2⁵³/b where it falls
+/// back to the one-by-one path.
+fn column_matches(dim: u32, first: u64, count: usize, seed: u64, stride: usize) {
+    let mut out = std::vec![f64::NAN; count * stride];
+    let written = scrambled_radical_inverse_column_f64(dim, first, seed, &mut out, stride);
+    assert_eq!(written, Ok(count as u64));
+    for (k, chunk) in out.chunks(stride).enumerate() {
+        let want = scrambled_radical_inverse_f64(dim, first + k as u64, seed);
+        assert_eq!(
+            chunk[0].to_bits(),
+            want.to_bits(),
+            "dim {dim} first {first} k {k}"
+        );
+        assert!(
+            chunk[1..].iter().all(|x| x.is_nan()),
+            "stride {stride} wrote between"
+        );
+    }
+}
+
+#[test]
+fn columns_cross_every_carry_and_the_exactness_limit() {
+    // Base 2 (dim 0) from 0 through 2^12, base 3 across 3^7, base 8161 (dim 1023) across
+    // one carry, and indices where (b−1)·b^K reaches 2^53.
+    column_matches(0, 0, 4097, 5, 1);
+    column_matches(1, 3u64.pow(7) - 40, 100, 6, 3);
+    column_matches(1023, 8161 * 3 - 5, 20, 7, 2);
+    column_matches(0, (1 << 52) - 10, 20, 8, 1);
+    column_matches(5, u64::MAX - 9, 10, 9, 1);
+    // Seeds that put π(0) = b − 1 (the stratum-edge rule) in base 2 and 3.
+    for seed in 0..40 {
+        column_matches(0, 0, 9, seed, 1);
+        column_matches(1, 0, 30, seed, 2);
+    }
+}
+
+#[test]
+fn columns_refuse_a_zero_stride_and_an_overflowing_index() {
+    let mut out = [0.0; 4];
+    assert_eq!(
+        scrambled_radical_inverse_column_f64(0, 0, 1, &mut out, 0),
+        Err(Error::ZeroSize { what: "stride" })
+    );
+    assert_eq!(
+        scrambled_radical_inverse_column_f64(0, u64::MAX - 2, 1, &mut out, 1),
+        Err(Error::TooMany {
+            what: "first",
+            value: u64::MAX - 2,
+            max: u64::MAX - 3
+        })
+    );
+    assert_eq!(
+        scrambled_radical_inverse_column_f64(0, 5, 1, &mut [], 3),
+        Ok(0)
+    );
+    // A partial last stride still holds a value: 5 slots at stride 2 are 3 values.
+    assert_eq!(
+        scrambled_radical_inverse_column_f64(0, 0, 1, &mut [0.0; 5], 2),
+        Ok(3)
+    );
+}
+
+proptest! {
+    #[test]
+    fn columns_equal_the_values_one_by_one(
+        dim in 0u32..1100,
+        first in prop_oneof![0u64..100_000, any::<u64>().prop_map(|a| a >> 20)],
+        count in 1usize..300,
+        seed in any::<u64>(),
+        stride in 1usize..5,
+    ) {
+        column_matches(dim, first, count, seed, stride);
+    }
+}
+
+fn positional_column_matches(dim: u32, first: u64, count: usize, seed: u64, stride: usize) {
+    let mut out = std::vec![f64::NAN; count * stride];
+    let written = positional_radical_inverse_column_f64(dim, first, seed, &mut out, stride);
+    assert_eq!(written, Ok(count as u64));
+    for (k, chunk) in out.chunks(stride).enumerate() {
+        let want = positional_radical_inverse_f64(dim, first + k as u64, seed);
+        assert_eq!(
+            chunk[0].to_bits(),
+            want.to_bits(),
+            "dim {dim} first {first} k {k}"
+        );
+        assert!((0.0..1.0).contains(&want));
+        assert!(
+            chunk[1..].iter().all(|x| x.is_nan()),
+            "stride {stride} wrote between"
+        );
+    }
+}
+
+#[test]
+fn positional_columns_cross_carries_and_wrap_after_k_digits() {
+    positional_column_matches(0, 0, 4097, 5, 1);
+    positional_column_matches(1, 3u64.pow(7) - 40, 100, 6, 3);
+    positional_column_matches(1023, 8161 * 8161 - 5, 20, 7, 2);
+    // Base 2 keeps 53 digits: index 2^53 wraps to the value of index 0.
+    positional_column_matches(0, (1 << 53) - 3, 6, 8, 1);
+    assert_eq!(
+        positional_radical_inverse_f64(0, 1 << 53, 8),
+        positional_radical_inverse_f64(0, 0, 8)
+    );
+    // Base 1553 keeps 4 digits (1553^5 > 2^53): index 1553^4 wraps to 0.
+    let b4 = 1553u64.pow(4);
+    let dim = PRIMES.iter().position(|&p| p == 1553).unwrap() as u32;
+    assert_eq!(
+        positional_radical_inverse_f64(dim, b4, 8),
+        positional_radical_inverse_f64(dim, 0, 8)
+    );
+    assert_ne!(
+        positional_radical_inverse_f64(dim, b4 - 1, 8),
+        positional_radical_inverse_f64(dim, 0, 8)
+    );
+    positional_column_matches(dim, b4 - 4, 8, 2, 1);
+    positional_column_matches(5, u64::MAX - 9, 10, 9, 1);
+    let mut out = [0.0; 4];
+    assert_eq!(
+        positional_radical_inverse_column_f64(0, 0, 1, &mut out, 0),
+        Err(Error::ZeroSize { what: "stride" })
+    );
+    assert_eq!(
+        positional_radical_inverse_column_f64(0, u64::MAX - 2, 1, &mut out, 1),
+        Err(Error::TooMany {
+            what: "first",
+            value: u64::MAX - 2,
+            max: u64::MAX - 3
+        })
+    );
+    assert_eq!(
+        positional_radical_inverse_column_f64(0, 5, 1, &mut [], 3),
+        Ok(0)
+    );
+}
+
+#[test]
+fn positional_permutations_keep_strata_and_differ_by_position() {
+    // b^m consecutive points from a multiple of b^m fall one per cell of side b^−m.
+    for (dim, b, m) in [(0u32, 2u64, 6u32), (1, 3, 4), (2, 5, 3), (9, 29, 2)] {
+        for seed in [1u64, 77] {
+            let n = b.pow(m);
+            let mut cells: std::vec::Vec<u64> = (3 * n..4 * n)
+                .map(|a| (positional_radical_inverse_f64(dim, a, seed) * n as f64) as u64)
+                .collect();
+            cells.sort_unstable();
+            assert!(cells.iter().copied().eq(0..n), "dim {dim} seed {seed}");
+        }
+    }
+    // One permutation per base gives base 2 two randomizations; one per position gives each
+    // seed its own: the first four base-2 values of 64 seeds are 64 distinct sets.
+    let mut sets: std::vec::Vec<[u64; 4]> = (0..64)
+        .map(|seed| {
+            core::array::from_fn(|a| positional_radical_inverse_f64(0, a as u64, seed).to_bits())
+        })
+        .collect();
+    sets.sort_unstable();
+    sets.dedup();
+    assert_eq!(sets.len(), 64);
+    let per_base: std::collections::BTreeSet<u64> = (0..64)
+        .map(|seed| scrambled_radical_inverse_f64(0, 1, seed).to_bits())
+        .collect();
+    assert_eq!(per_base.len(), 2);
+}
+
+#[test]
+fn positional_values_are_uniform_over_seeds() {
+    // The mean of 4000 seeds' values of one index is 1/2 within 0.02: the standard error is
+    // sqrt(1/12/4000) = 0.0046, so the bound is 4.3 standard errors (false alarm about 2e-5).
+    for (dim, a) in [(0u32, 5u64), (1, 1000), (40, 123_456)] {
+        let mean = (0..4000u64)
+            .map(|seed| positional_radical_inverse_f64(dim, a, seed))
+            .sum::<f64>()
+            / 4000.0;
+        assert!((mean - 0.5).abs() < 0.02, "dim {dim} a {a}: {mean}");
+    }
+}
+
+proptest! {
+    #[test]
+    fn positional_columns_equal_the_values_one_by_one(
+        dim in 0u32..1100,
+        first in prop_oneof![0u64..100_000, any::<u64>().prop_map(|a| a >> 20)],
+        count in 1usize..300,
+        seed in any::<u64>(),
+        stride in 1usize..5,
+    ) {
+        positional_column_matches(dim, first, count, seed, stride);
+    }
+}
