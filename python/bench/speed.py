@@ -1,7 +1,8 @@
 """nyquist.qmc against scipy.stats.qmc in one process: the median wall time of several
 interleaved runs of each case (nyquist, SciPy, nyquist, …), their ratio, and a check that both
 results follow the same law (the same points where both are deterministic, the net or
-stratification property where they are scrambled, the same discrepancy to 1e-10 absolute).
+stratification property where they are scrambled or random, the Poisson-disk radius, the same
+discrepancy to 1e-10 absolute).
 
     python python/bench/speed.py [runs]      # default 7
 
@@ -74,12 +75,41 @@ def centered_discrepancy():
     return run, check
 
 
+def latin_hypercube():
+    def run(module):
+        return module.LatinHypercube(d=8, rng=1).random(10**6)
+
+    def check(ours, theirs):
+        return all(stratified(x[:, j], 10**6) for x in (ours, theirs) for j in range(8))
+
+    return run, check
+
+
+def poisson_disk():
+    # Radius 0.005 leaves room for about 3·10⁴ points, so both stop at 10⁴.
+    def run(module):
+        return module.PoissonDisk(d=2, radius=0.005, rng=1).random(10**4)
+
+    def check(ours, theirs):
+        from scipy.spatial import cKDTree
+
+        def ok(x):
+            nearest, _ = cKDTree(x).query(x, k=2)
+            return len(x) == 10**4 and nearest[:, 1].min() >= 0.005
+
+        return ok(ours) and ok(theirs)
+
+    return run, check
+
+
 CASES = [
     ("Sobol `random_base2(20)`, d = 2", *sobol(2, False)),
     ("Sobol `random_base2(20)`, d = 2, scrambled", *sobol(2, True)),
     ("Sobol `random_base2(20)`, d = 32", *sobol(32, False)),
     ("Sobol `random_base2(20)`, d = 32, scrambled", *sobol(32, True)),
     ("Halton 10⁶ × 8, scrambled", *halton()),
+    ("Latin hypercube 10⁶ × 8", *latin_hypercube()),
+    ("Poisson disk, 10⁴ points in 2-D", *poisson_disk()),
     ("centered discrepancy of 10⁴ × 4", *centered_discrepancy()),
 ]
 

@@ -222,6 +222,9 @@ fn halton<'py>(
         )?;
     }
     let mut v = vec![0.0; len];
+    if len == 0 {
+        return array(py, v, n, d);
+    }
     let failed = std::sync::Mutex::new(None);
     let dims = d as usize;
     py.detach(|| {

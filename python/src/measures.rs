@@ -6,8 +6,8 @@ use numpy::{PyReadonlyArray3, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
 use nyquist::analysis::{
-    L2Kind, PointSet, l2_point_sums, l2_sums, net_t_value, net_t_value_scratch_len,
-    star_discrepancy, star_discrepancy_scratch_len,
+    L2Kind, L2Sums, PointSet, l2_point_sums, l2_sums, l2_sums_rows, net_t_value,
+    net_t_value_scratch_len, star_discrepancy, star_discrepancy_scratch_len,
 };
 
 use crate::value_error;
@@ -48,7 +48,7 @@ pub fn discrepancy(
         // D² is a small difference of O(1) sums, so rounding can make it slightly negative: the
         // discrepancy clamps it at 0, as the core's functions do. With `iterative` it is not a
         // discrepancy but a partial sum for `update_discrepancy`, and SciPy returns it as is.
-        let squared = py.detach(|| l2_sums(&points, kind).squared(n));
+        let squared = py.detach(|| parallel_l2_sums(&points, kind).squared(n));
         let squared = if iterative { squared } else { squared.max(0.0) };
         return Ok(if kind == L2Kind::Star {
             squared.max(0.0).sqrt()
@@ -73,6 +73,55 @@ pub fn discrepancy(
         star_discrepancy(&points, &mut scratch)
     })
     .map_err(value_error)
+}
+
+/// The core's `l2_sums` on every thread: the rows split into one range per thread with equal
+/// shares of the triangle of pairs (row `i` costs `N − i`), each summed by `l2_sums_rows`, the
+/// parts added. One thread below 2048 points.
+fn parallel_l2_sums(points: &PointSet<'_>, kind: L2Kind) -> L2Sums {
+    let n = points.len();
+    let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
+    if n < 2048 || threads == 1 {
+        return l2_sums(points, kind);
+    }
+    // Pairs before row r: r·n − r(r − 1)/2; the k-th cut is the first row past k/threads of
+    // all n(n + 1)/2.
+    let before = |r: usize| (r * n - r * r.saturating_sub(1) / 2) as f64;
+    let total = before(n);
+    let mut cuts = vec![0];
+    for k in 1..threads {
+        let target = total * k as f64 / threads as f64;
+        let (mut lo, mut hi) = (*cuts.last().unwrap_or(&0), n);
+        while lo < hi {
+            let mid = (lo + hi) / 2;
+            if before(mid) < target {
+                lo = mid + 1
+            } else {
+                hi = mid
+            }
+        }
+        cuts.push(lo);
+    }
+    cuts.push(n);
+    let parts: Vec<L2Sums> = std::thread::scope(|scope| {
+        let handles: Vec<_> = cuts
+            .windows(2)
+            .map(|w| {
+                let rows = w[0]..w[1];
+                scope.spawn(move || l2_sums_rows(points, kind, rows))
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    });
+    let mut sums = parts[0];
+    for p in &parts[1..] {
+        sums.single += p.single;
+        sums.pairs += p.pairs;
+    }
+    sums
 }
 
 /// SciPy's `update_discrepancy`: the squared centered L2 discrepancy of `sample` plus `x_new`,

@@ -14,6 +14,8 @@
 //! The double sums use the symmetry of the kernel (diagonal once, each pair twice). The result is
 //! the square root of the formula, clamped at 0 against rounding.
 
+use core::ops::Range;
+
 use super::PointSet;
 use crate::Error;
 use crate::math::{pow, sqrt};
@@ -22,17 +24,28 @@ use crate::math::{pow, sqrt};
 /// and the lanes vectorise), the rows added with Neumaier's compensated summation. The result
 /// is a small difference of O(1) terms, so summation error would otherwise dominate for large N.
 /// Dimensions 1–4 get a copy with the dimension fixed at compile time (unrolled kernels).
+/// Only the rows `i` in `rows` are summed, each with the points `j ≥ i`: rows that partition
+/// `0..N` give sums that add up to the whole.
 #[inline]
-fn double_sum(points: &PointSet<'_>, kernel: impl Fn(&[f64], &[f64]) -> f64) -> f64 {
+fn double_sum(
+    points: &PointSet<'_>,
+    rows: Range<usize>,
+    kernel: impl Fn(&[f64], &[f64]) -> f64,
+) -> f64 {
     let c = points.coords();
     match points.dims() {
-        1 => double_sum_fixed::<1>(c, &kernel),
-        2 => double_sum_fixed::<2>(c, &kernel),
-        3 => double_sum_fixed::<3>(c, &kernel),
-        4 => double_sum_fixed::<4>(c, &kernel),
+        1 => double_sum_fixed::<1>(c, rows, &kernel),
+        2 => double_sum_fixed::<2>(c, rows, &kernel),
+        3 => double_sum_fixed::<3>(c, rows, &kernel),
+        4 => double_sum_fixed::<4>(c, rows, &kernel),
         d => {
             let mut total = Neumaier::default();
-            for (i, p) in c.chunks_exact(d).enumerate() {
+            for (i, p) in c
+                .chunks_exact(d)
+                .enumerate()
+                .take(rows.end)
+                .skip(rows.start)
+            {
                 let mut row = 0.0;
                 for q in c[(i + 1) * d..].chunks_exact(d) {
                     row += kernel(p, q);
@@ -46,10 +59,14 @@ fn double_sum(points: &PointSet<'_>, kernel: impl Fn(&[f64], &[f64]) -> f64) -> 
 }
 
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-fn double_sum_fixed<const D: usize>(c: &[f64], kernel: &impl Fn(&[f64], &[f64]) -> f64) -> f64 {
+fn double_sum_fixed<const D: usize>(
+    c: &[f64],
+    rows: Range<usize>,
+    kernel: &impl Fn(&[f64], &[f64]) -> f64,
+) -> f64 {
     let (pts, _) = c.as_chunks::<D>();
     let mut total = Neumaier::default();
-    for (i, p) in pts.iter().enumerate() {
+    for (i, p) in pts.iter().enumerate().take(rows.end).skip(rows.start) {
         let mut lanes = [0.0f64; 4];
         let (quads, tail) = pts[i + 1..].as_chunks::<4>();
         for quad in quads {
@@ -98,11 +115,16 @@ impl Neumaier {
     }
 }
 
-/// `Σ_i f(x_i)`, compensated.
+/// `Σ_i f(x_i)` over the rows `i` in `rows`, compensated.
 #[inline]
-fn single_sum(points: &PointSet<'_>, f: impl Fn(&[f64]) -> f64) -> f64 {
+fn single_sum(points: &PointSet<'_>, rows: Range<usize>, f: impl Fn(&[f64]) -> f64) -> f64 {
     let mut total = Neumaier::default();
-    for p in points.coords().chunks_exact(points.dims()) {
+    for p in points
+        .coords()
+        .chunks_exact(points.dims())
+        .take(rows.end)
+        .skip(rows.start)
+    {
         total.add(f(p));
     }
     total.sum()
@@ -258,20 +280,41 @@ fn constant_and_weight(kind: L2Kind, d: f64) -> (f64, f64) {
 /// assert_eq!(sums.pairs, (15.0f64 / 8.0).powi(2));
 /// ```
 pub fn l2_sums(points: &PointSet<'_>, kind: L2Kind) -> L2Sums {
+    l2_sums_rows(points, kind, 0..points.len())
+}
+
+/// The part of [`l2_sums`] that the rows `i` in `rows` contribute: `f(x_i)` to `single`, and
+/// `K(x_i, x_i) + 2·Σ_{j>i} K(x_i, x_j)` to `pairs` (`constant` and `weight` are the whole
+/// set's). Sums over rows that partition `0..N` add up to `l2_sums` (up to rounding), so
+/// threads can share the O(d·N²) work: row `i` costs `N − i` kernel calls. `rows` is clamped
+/// to `0..N`. Allocates: no.
+///
+/// ```
+/// use nyquist::analysis::{l2_sums, l2_sums_rows, L2Kind, PointSet};
+/// let set = PointSet::new(&[0.1, 0.9, 0.4, 0.3, 0.75, 0.2], 2).unwrap();
+/// let (a, b) = (l2_sums_rows(&set, L2Kind::Star, 0..1), l2_sums_rows(&set, L2Kind::Star, 1..9));
+/// let whole = l2_sums(&set, L2Kind::Star);
+/// assert!((a.pairs + b.pairs - whole.pairs).abs() < 1e-15);
+/// assert!((a.single + b.single - whole.single).abs() < 1e-15);
+/// ```
+pub fn l2_sums_rows(points: &PointSet<'_>, kind: L2Kind, rows: Range<usize>) -> L2Sums {
+    let n = points.len();
+    let rows = rows.start.min(n)..rows.end.min(n);
     let (constant, weight) = constant_and_weight(kind, points.dims() as f64);
+    let r = || rows.clone();
     let (single, pairs) = match kind {
         L2Kind::Star => (
-            single_sum(points, star_single),
-            double_sum(points, star_pair),
+            single_sum(points, r(), star_single),
+            double_sum(points, r(), star_pair),
         ),
         L2Kind::Centered => (
-            single_sum(points, centered_single),
-            double_sum(points, centered_pair),
+            single_sum(points, r(), centered_single),
+            double_sum(points, r(), centered_pair),
         ),
-        L2Kind::WrapAround => (0.0, double_sum(points, wraparound_pair)),
+        L2Kind::WrapAround => (0.0, double_sum(points, r(), wraparound_pair)),
         L2Kind::Mixture => (
-            single_sum(points, mixture_single),
-            double_sum(points, mixture_pair),
+            single_sum(points, r(), mixture_single),
+            double_sum(points, r(), mixture_pair),
         ),
     };
     L2Sums {
@@ -321,7 +364,7 @@ pub fn l2_point_sums(points: &PointSet<'_>, x: &[f64], kind: L2Kind) -> Result<L
         L2Kind::WrapAround => (|_| 0.0, wraparound_pair),
         L2Kind::Mixture => (mixture_single, mixture_pair),
     };
-    let cross = single_sum(points, |p| k(p, x));
+    let cross = single_sum(points, 0..points.len(), |p| k(p, x));
     Ok(L2Sums {
         kind,
         constant: 0.0,
@@ -653,6 +696,38 @@ mod tests {
                     let tol = 1e-12 * (1.0 + want[k]);
                     assert!((got - want[k]).abs() < tol, "{kind:?} d {d} n {n}: {got}");
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn row_ranges_that_partition_the_set_add_up_to_its_sums() {
+        // Dimensions 1–4 (unrolled) and 5–6 (generic); cuts at the ends, in the middle, and a
+        // range past the end, which is clamped.
+        for d in 1..=6usize {
+            let n = 23;
+            let pts = random(n, d, (d * 7) as u64);
+            let s = set(&pts, d);
+            for kind in KINDS {
+                let whole = l2_sums(&s, kind);
+                for cut in [0, 1, 5, 11, 22, 23] {
+                    let a = l2_sums_rows(&s, kind, 0..cut);
+                    let b = l2_sums_rows(&s, kind, cut..n + 40);
+                    assert_eq!((a.constant, a.weight), (whole.constant, whole.weight));
+                    assert!((a.pairs + b.pairs - whole.pairs).abs() < 1e-12 * whole.pairs);
+                    let single = a.single + b.single - whole.single;
+                    assert!(
+                        single.abs() < 1e-12 * (1.0 + whole.single),
+                        "{kind:?} d {d}"
+                    );
+                }
+                // One row alone: its own kernel value plus twice those with the rows after it.
+                let row = l2_sums_rows(&s, kind, 5..6);
+                let rest = l2_sums_rows(&s, kind, 6..n);
+                let from5 = l2_sums_rows(&s, kind, 5..n);
+                assert!((row.pairs + rest.pairs - from5.pairs).abs() < 1e-12 * from5.pairs);
+                assert!(row.pairs > 0.0 && row.pairs < from5.pairs, "{kind:?} d {d}");
+                assert_eq!(l2_sums_rows(&s, kind, 30..40).pairs, 0.0);
             }
         }
     }

@@ -39,7 +39,7 @@ mod star;
 pub use distance::{MinDistance, Topology, min_distance, min_distance_scratch_len};
 pub use l2::{
     L2Kind, L2Sums, centered_l2_discrepancy, l2_point_sums, l2_star_discrepancy, l2_sums,
-    mixture_l2_discrepancy, wraparound_l2_discrepancy,
+    l2_sums_rows, mixture_l2_discrepancy, wraparound_l2_discrepancy,
 };
 pub use net::{net_t_value, net_t_value_scratch_len};
 pub use star::{
