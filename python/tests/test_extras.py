@@ -313,3 +313,17 @@ def test_everything_is_quiet_on_good_input():
         warnings.simplefilter("error")
         qmc.geometric_discrepancy(np.random.default_rng(1).random((50, 2)))
         qmc.LatinHypercube(2, rng=1).random(10)
+
+
+def test_the_readme_example_runs_as_printed():
+    import pathlib
+    import re
+
+    readme = pathlib.Path(__file__).resolve().parents[2] / "README.md"
+    if not readme.exists():  # pragma: no cover - an installed copy without the repository
+        pytest.skip("README.md is not beside the tests")
+    block = re.search(r"```python\n(.*?)```", readme.read_text(), re.S).group(1)
+    scope = {}
+    exec(block, scope)
+    assert scope["analysis"].t_value(scope["x"]) == 0
+    assert 0 < scope["qmc"].discrepancy(scope["x"], method="star") < 0.01
