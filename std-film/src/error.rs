@@ -1,7 +1,7 @@
 //! Errors of the film crate, by category.
 
 use std::fmt;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 /// Why a film or image operation failed. Each message names the parameter, the value given and
 /// what was allowed, or the file.
@@ -73,7 +73,8 @@ impl Error {
     }
 
     /// This error with `path` named: a stream error becomes [`Error::File`]; others are kept.
-    pub(crate) fn at(self, path: &Path) -> Error {
+    #[cfg(feature = "output")]
+    pub(crate) fn at(self, path: &std::path::Path) -> Error {
         match self {
             Error::Io(source) => Error::File {
                 path: path.to_path_buf(),
@@ -169,6 +170,7 @@ pub(crate) fn try_filled<T: Clone>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::path::Path;
 
     /// Every message carries the numbers or the file it is about.
     #[test]

@@ -13,6 +13,10 @@
 use crate::error::Error;
 use crate::image::Image;
 use crate::pixel::Pixel;
+
+/// A named plane of `f32` samples, row-major: one channel of an image (`R`, `variance.R`,
+/// `depth.Z`), as the EXR writer takes them.
+pub type Plane = (String, Vec<f32>);
 pub use nyquist::pixel_stats::{Estimate, Moments, sample_half};
 
 /// What a film keeps per pixel beside its RGB sums; all off by default, and a film that asks for
@@ -104,11 +108,7 @@ impl ExtraImages {
     /// assert_eq!(names, ["R", "G", "B", "variance.R", "variance.G", "variance.B", "depth.Z"]);
     /// assert_eq!(planes[6].1, [4.0, 0.0, 0.0, 0.0]);
     /// ```
-    pub fn planes(
-        &self,
-        image: &Image,
-        channel_names: &[&str],
-    ) -> Result<Vec<crate::output::exr::Plane>, Error> {
+    pub fn planes(&self, image: &Image, channel_names: &[&str]) -> Result<Vec<Plane>, Error> {
         let mut planes = Vec::new();
         let mut rgb = |prefix: &str, im: &Image| -> Result<(), Error> {
             if (im.width(), im.height()) != (image.width(), image.height()) {

@@ -22,6 +22,7 @@ mod error;
 pub mod extras;
 mod film;
 mod image;
+#[cfg(feature = "output")]
 pub mod output;
 mod pixel;
 mod render;
@@ -36,6 +37,7 @@ pub use error::Error;
 pub use extras::PixelExtras;
 pub use film::Film;
 pub use image::Image;
+#[cfg(feature = "output")]
 pub use output::{ImageFormat, write_image, write_image_file};
 pub use pixel::Pixel;
 pub use render::{CAN_START_THREADS, TileContext, render_tiles};

@@ -157,9 +157,7 @@ pub fn read_exr(r: &mut dyn Read) -> Result<Image, Error> {
     Image::from_rgb(w, h, data)
 }
 
-/// A named plane of `f32` samples, row-major: one channel of an image (`R`, `variance.R`,
-/// `depth.Z`).
-pub type Plane = (String, Vec<f32>);
+pub use crate::extras::Plane;
 
 /// Reads every channel of the first layer of an OpenEXR file, by name in the file's
 /// (alphabetical) order, each converted to `f32` and row-major: the reader for
