@@ -190,7 +190,9 @@ pub fn scrambled_radical_inverse_column_f64(
             break;
         }
     }
-    // weight[j] = b^(K−1−j); the digits of `first`; N.
+    // weight[j] = b^(K−1−j); the digits of `first`; N. Both cut to K entries, so a carry
+    // past them could not go unnoticed.
+    let (digits, weight) = (&mut digits[..k], &mut weight[..k]);
     let mut w = 1u64;
     for j in (0..k).rev() {
         weight[j] = w;
@@ -206,28 +208,27 @@ pub fn scrambled_radical_inverse_column_f64(
     let tail = perm(0);
     let at_edge = tail == b - 1;
     let den = den as f64;
-    let mut values = out.iter_mut().step_by(stride);
-    loop {
-        let Some(x) = values.next() else {
-            return Ok(count);
-        };
+    for (i, x) in out.iter_mut().step_by(stride).enumerate() {
+        if i > 0 {
+            // The next index: the low digit steps and carries move up. The index stays at
+            // most the last one, which has K digits, so no carry leaves the K digits.
+            let mut j = 0;
+            loop {
+                let old = digits[j];
+                let new = if old + 1 == b as u32 { 0 } else { old + 1 };
+                digits[j] = new;
+                n = n + perm(new) * weight[j] - perm(old) * weight[j];
+                if new != 0 {
+                    break;
+                }
+                j += 1;
+            }
+        }
         let v = (n * (b - 1) + tail) as f64 / den;
         let v = if at_edge { below_f64(v) } else { v };
         *x = v.min(ONE_MINUS_EPSILON_F64);
-        // The next index: the low digit steps, carries move up (never past K before the
-        // last index, whose step is not taken).
-        let mut j = 0;
-        while j < k {
-            let old = digits[j];
-            let new = if old + 1 == b as u32 { 0 } else { old + 1 };
-            digits[j] = new;
-            n = n + perm(new) * weight[j] - perm(old) * weight[j];
-            if new != 0 {
-                break;
-            }
-            j += 1;
-        }
     }
+    Ok(count)
 }
 
 /// The digits [`positional_radical_inverse_f64`] keeps in base `b`: the most `K` with
@@ -318,6 +319,7 @@ pub fn positional_radical_inverse_column_f64(
     let (k, den) = positional_digits(b);
     let mut digits = [0u32; 64];
     let mut weight = [0u64; 64];
+    let (digits, weight) = (&mut digits[..k], &mut weight[..k]);
     let mut w = 1u64;
     for j in (0..k).rev() {
         weight[j] = w;
@@ -344,24 +346,23 @@ pub fn positional_radical_inverse_column_f64(
         num += perm(j, digits[j]) * weight[j];
     }
     let den = den as f64;
-    let mut values = out.iter_mut().step_by(stride);
-    loop {
-        let Some(x) = values.next() else {
-            return Ok(count);
-        };
-        *x = num as f64 / den;
-        // The next index's low K digits: a carry out of the top digit wraps, as the value
-        // keeps only those digits.
-        let mut j = 0;
-        while j < k {
-            let old = digits[j];
-            let new = if old + 1 == b as u32 { 0 } else { old + 1 };
-            digits[j] = new;
-            num = num + perm(j, new) * weight[j] - perm(j, old) * weight[j];
-            if new != 0 {
-                break;
+    for (i, x) in out.iter_mut().step_by(stride).enumerate() {
+        if i > 0 {
+            // The next index's low K digits: a carry out of the top digit wraps, as the value
+            // keeps only those digits.
+            let mut j = 0;
+            while j < k {
+                let old = digits[j];
+                let new = if old + 1 == b as u32 { 0 } else { old + 1 };
+                digits[j] = new;
+                num = num + perm(j, new) * weight[j] - perm(j, old) * weight[j];
+                if new != 0 {
+                    break;
+                }
+                j += 1;
             }
-            j += 1;
         }
+        *x = num as f64 / den;
     }
+    Ok(count)
 }
