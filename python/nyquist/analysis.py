@@ -10,6 +10,7 @@
 from __future__ import annotations
 
 import math
+import numbers
 from typing import NamedTuple
 
 import numpy as np
@@ -76,4 +77,8 @@ def periodogram(sample, max_freq=32):
         sample = sample[np.newaxis]
     if sample.ndim != 3 or sample.shape[2] != 2:
         raise ValueError("sample must have shape (n, 2) or (k, n, 2)")
+    if isinstance(max_freq, bool) or not isinstance(max_freq, numbers.Integral) or max_freq < 1:
+        raise ValueError(f"max_freq {max_freq!r} must be a positive integer")
+    if max_freq >= 2**32:
+        raise ValueError(f"max_freq {max_freq} is above 4096")
     return Periodogram(*_core.periodogram(sample, int(max_freq)))

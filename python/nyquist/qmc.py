@@ -68,8 +68,9 @@ def _seed_of(rng):
 
 def _rng_argument(rng, seed):
     """SciPy's SPEC 7 rules (its ``_transition_to_rng("seed")``): ``rng`` is passed through
-    ``numpy.random.default_rng``; the older ``seed`` is passed as given, so an int seeds a legacy
-    ``RandomState`` and a Generator is used (spawned) as is."""
+    ``numpy.random.default_rng``; the older ``seed`` is passed as given to SciPy's set-up, which
+    spawns a given Generator, keeps a legacy ``RandomState`` and seeds a new Generator from an
+    int."""
     if seed is not None:
         if rng is not None:
             raise TypeError("got multiple values for argument now known as `rng`")
@@ -112,7 +113,13 @@ class QMCEngine(_Base):
     def random(self, n=1, *, workers=1):
         """Draw ``n`` points in ``[0, 1)^d``, continuing where the last draw stopped."""
         n = _check_n(n)
-        sample = self._random(n, workers=workers)
+        try:
+            sample = self._random(n, workers=workers)
+        except OverflowError as exc:  # an index past what the Rust side takes (u64, u32)
+            raise ValueError(
+                f"points {self.num_generated}..{self.num_generated + n} are past the points "
+                f"this engine indexes ({exc})"
+            ) from None
         if self.optimization_method is not None:
             sample = self.optimization_method(sample)
         self.num_generated += n
@@ -412,6 +419,8 @@ class LatinHypercube(QMCEngine):
         n = _check_n(n)
         if self.strength == 1:
             _seed_of(self.rng)
+        else:
+            self._orthogonal_array(n)  # as SciPy: the draw is made and dropped
         self.num_generated += n
         return self
 
@@ -480,8 +489,9 @@ class PoissonDisk(QMCEngine):
         return self._state.extend(n)
 
     def random(self, n=1, *, workers=1):
-        """Up to ``n`` new points of the set, fewer when the space is full."""
-        sample = self._draw(_check_n(n))
+        """Up to ``n`` new points of the set, fewer when the space is full; ``n=np.inf`` (as
+        SciPy's ``fill_space`` passes it) until it is full."""
+        sample = self._draw(None if n == np.inf else _check_n(n))
         if self.optimization_method is not None:
             sample = self.optimization_method(sample)
         self.num_generated += len(sample)
@@ -525,17 +535,23 @@ class PixelSampler(QMCEngine):
                  scramble=True, rng=None, optimization=None, seed=None):
         super().__init__(d, optimization=optimization, rng=rng, seed=seed)
         self.sampler = sampler
-        self.pixel = tuple(int(v) for v in pixel)
-        self.size = tuple(int(v) for v in size)
-        self.spp = int(spp)
+        self.pixel = tuple(pixel)
+        self.size = tuple(size)
+        self.spp = spp
+        if any(isinstance(v, bool) or not isinstance(v, numbers.Integral) or v < 0
+               for v in (*self.pixel, *self.size, self.spp)):
+            raise ValueError(f"pixel {pixel}, size {size} and spp {spp} must be non-negative integers")
         self.scramble = bool(scramble)
-        self._seed = _seed_of(self.rng)
+        # Unscrambled, one fixed set whatever rng says (ZSobol's Morton-index shuffle included);
+        # the samplers with a choice of scramble get none, the others their seed-0 set.
+        self._seed = _seed_of(self.rng) if self.scramble else 0
+        self._choice = str(sampler).lower() in ("halton", "hammersley", "sobol", "zsobol")
         self._points(0, 0)  # the core's checks, now rather than at the first draw
 
     def _points(self, first, n):
         return _core.pixel_samples(
             self.sampler, self.pixel, n, self.d, first=first, size=self.size, spp=self.spp,
-            seed=self._seed, scramble=None if self.scramble else "none",
+            seed=self._seed, scramble=None if self.scramble or not self._choice else "none",
         )
 
 

@@ -7,7 +7,7 @@ use pyo3::prelude::*;
 use nyquist::hash::hash2;
 use nyquist::rng::{DefaultRng, default_rng, uniform_below_u64, uniform_f64};
 
-use crate::{par_rows, value_error, values};
+use crate::{filled, par_rows, value_error, values};
 
 /// `n` Latin-hypercube points in `d` dimensions as an `(n, d)` float64 array: in every dimension
 /// the values fall one in each stratum `[k/n, (k+1)/n)`, the strata assigned to points by an
@@ -26,53 +26,51 @@ pub fn latin_hypercube<'py>(
     let len = values(n, d)?;
     let rows = n as usize;
     let dims = d as usize;
-    let v = py.detach(|| {
-        let mut columns = vec![Vec::new(); dims];
+    // One column per dimension, then the rows interleaved: twice the output's memory.
+    let mut columns = filled(len, 0.0)?;
+    let mut out = filled(len, 0.0)?;
+    py.detach(|| {
         let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
         let per = dims.div_ceil(threads).max(1);
         std::thread::scope(|scope| {
-            for (k, block) in columns.chunks_mut(per).enumerate() {
+            for (k, block) in columns.chunks_mut((per * rows).max(1)).enumerate() {
                 scope.spawn(move || {
-                    for (j, column) in block.iter_mut().enumerate() {
+                    for (j, column) in block.chunks_mut(rows.max(1)).enumerate() {
                         let dim = (k * per + j) as u64;
-                        *column = lhs_column(rows, hash2(seed, dim), centered);
+                        lhs_column(column, hash2(seed, dim), centered);
                     }
                 });
             }
         });
-        let mut out = vec![0.0; len];
         par_rows(&mut out, dims, 0, |first, block| {
             for (i, row) in (first as usize..).zip(block.chunks_exact_mut(dims)) {
-                for (x, column) in row.iter_mut().zip(&columns) {
-                    *x = column[i];
+                for (j, x) in row.iter_mut().enumerate() {
+                    *x = columns[j * rows + i];
                 }
             }
         });
-        out
     });
+    let v = out;
     v.into_pyarray(py).reshape([rows, dims])
 }
 
-/// One dimension of a Latin hypercube of `n` points: a uniform permutation of the strata,
-/// jittered (or centred).
-fn lhs_column(n: usize, key: u64, centered: bool) -> Vec<f64> {
+/// One dimension of a Latin hypercube of `column.len()` points, in place: a uniform
+/// permutation of the strata (held as exact `f64` integers), each jittered (or centred).
+fn lhs_column(column: &mut [f64], key: u64, centered: bool) {
     let mut rng = default_rng(key);
-    let mut strata = vec![0u64; n];
+    let n = column.len();
     // Inside-out Fisher–Yates: after step k, positions 0..=k hold a uniform permutation of
     // 0..=k.
     for k in 0..n {
         let j = uniform_below_u64(&mut rng, k as u64 + 1) as usize;
-        strata[k] = strata[j];
-        strata[j] = k as u64;
+        column[k] = column[j];
+        column[j] = k as f64;
     }
     let count = n as f64;
-    strata
-        .into_iter()
-        .map(|s| {
-            let jitter = if centered { 0.5 } else { uniform_f64(&mut rng) };
-            ((s as f64 + jitter) / count).min(nyquist::ONE_MINUS_EPSILON_F64)
-        })
-        .collect()
+    for x in column.iter_mut() {
+        let jitter = if centered { 0.5 } else { uniform_f64(&mut rng) };
+        *x = ((*x + jitter) / count).min(nyquist::ONE_MINUS_EPSILON_F64);
+    }
 }
 
 /// Cells the Poisson-disk grid may have (2²⁷ `u32`s, 512 MiB).
@@ -89,7 +87,9 @@ const EMPTY: u32 = u32::MAX;
 /// so successive calls give one Poisson-disk set.
 ///
 /// Candidates are uniform in the shell `r ≤ |x − c| < 2r` (`volume`) or on the sphere of radius
-/// `1.001·r` (`surface`), as SciPy's `PoissonDisk` draws them; the box is `[lower, upper)`.
+/// `1.001·r` (`surface`); SciPy's `PoissonDisk` draws its volume candidates in the whole ball of
+/// radius `2r`, where those within `r` are always rejected, so a candidate count means more
+/// here. The box is `[lower, upper)`.
 #[pyclass(module = "nyquist._core")]
 pub struct PoissonDiskState {
     radius: f64,
@@ -97,7 +97,7 @@ pub struct PoissonDiskState {
     upper: Vec<f64>,
     cell: f64,
     shape: Vec<usize>,
-    reach: i64,
+    reach: u32,
     surface: bool,
     candidates: u32,
     grid: Vec<u32>,
@@ -158,7 +158,7 @@ impl PoissonDiskState {
             upper,
             cell,
             shape,
-            reach: (d as f64).sqrt().ceil() as i64,
+            reach: (d as f64).sqrt().ceil() as u32,
             surface,
             candidates,
             grid: vec![EMPTY; cells as usize],
@@ -272,49 +272,43 @@ impl PoissonDiskState {
         self.active.push(id);
     }
 
-    /// Whether a point lies closer than `r` to `x`: the cells within `reach` of `x`'s cell on
-    /// every axis, visited as an odometer.
+    /// Whether a point lies closer than `r` to `x`: the grid cells within `reach` of `x`'s cell
+    /// on every axis (cut at the grid's edges), visited as an odometer, or every point when
+    /// there are fewer points than such cells (high dimensions: 9¹² cells at d = 12).
     fn crowded(&self, x: &[f64]) -> bool {
         let d = x.len();
         let r2 = self.radius * self.radius;
-        // At most 64 dimensions on the stack; above that, a grid with 3 cells per side would
-        // already exceed MAX_CELLS, so `new` has refused it.
-        let mut centre = [0i64; 64];
-        let mut offset = [-self.reach; 64];
-        for (j, c) in centre[..d].iter_mut().enumerate() {
-            *c = self.cell_of(x, j) as i64;
+        let near = |p: &[f64]| p.iter().zip(x).map(|(a, b)| (a - b) * (a - b)).sum::<f64>() < r2;
+        // At most 64 dimensions, as `new` checks.
+        let (mut lo, mut hi, mut cell) = ([0usize; 64], [0usize; 64], [0usize; 64]);
+        let mut cells = 1u64;
+        for j in 0..d {
+            let c = self.cell_of(x, j);
+            let reach = self.reach as usize;
+            lo[j] = c.saturating_sub(reach);
+            hi[j] = (c + reach).min(self.shape[j] - 1);
+            cell[j] = lo[j];
+            cells = cells.saturating_mul((hi[j] - lo[j] + 1) as u64);
+        }
+        if cells > (self.points.len() / d) as u64 {
+            return self.points.chunks_exact(d).any(near);
         }
         loop {
-            let mut index = 0usize;
-            let mut inside = true;
-            for j in 0..d {
-                let v = centre[j] + offset[j];
-                if v < 0 || v >= self.shape[j] as i64 {
-                    inside = false;
-                    break;
-                }
-                index = index * self.shape[j] + v as usize;
-            }
-            if inside {
-                let id = self.grid[index];
-                if id != EMPTY {
-                    let p = &self.points[id as usize * d..(id as usize + 1) * d];
-                    let dist2: f64 = p.iter().zip(x).map(|(a, b)| (a - b) * (a - b)).sum();
-                    if dist2 < r2 {
-                        return true;
-                    }
-                }
+            let index = (0..d).fold(0, |index, j| index * self.shape[j] + cell[j]);
+            let id = self.grid[index];
+            if id != EMPTY && near(&self.points[id as usize * d..(id as usize + 1) * d]) {
+                return true;
             }
             let mut j = 0;
             loop {
                 if j == d {
                     return false;
                 }
-                offset[j] += 1;
-                if offset[j] <= self.reach {
+                cell[j] += 1;
+                if cell[j] <= hi[j] {
                     break;
                 }
-                offset[j] = -self.reach;
+                cell[j] = lo[j];
                 j += 1;
             }
         }

@@ -5,7 +5,7 @@
 //! `stats.qmc` interface.
 
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyMemoryError, PyValueError};
 use pyo3::prelude::*;
 
 mod design;
@@ -20,6 +20,20 @@ use nyquist::sequence::{Halton, NamedSequence, ScrambledHalton, Sequence, Sequen
 /// A `ValueError` with the core error's message.
 pub(crate) fn value_error(e: impl std::fmt::Display) -> PyErr {
     PyValueError::new_err(e.to_string())
+}
+
+/// `len` copies of `value`, or a `MemoryError` when the allocation fails (instead of the
+/// abort a failed `vec!` would be).
+pub(crate) fn filled<T: Clone>(len: usize, value: T) -> PyResult<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(len).map_err(|_| {
+        PyMemoryError::new_err(format!(
+            "{len} values of {} bytes do not fit in memory",
+            std::mem::size_of::<T>()
+        ))
+    })?;
+    v.resize(len, value);
+    Ok(v)
 }
 
 /// The number of values of an `n × d` array, or a `ValueError` when it does not fit.
@@ -78,7 +92,7 @@ fn sobol<'py>(
             .map(|dim| hash2(seed, dim) as u32)
             .collect()
     });
-    let mut v = vec![0.0; len];
+    let mut v = filled(len, 0.0)?;
     let dims = d as usize;
     py.detach(|| {
         par_rows(&mut v, dims, first, |f, b| {
@@ -167,13 +181,9 @@ fn fill_rows(s: &(impl Sequence + Sync), first: u64, d: u32, out: &mut [f64]) {
     }
 }
 
-/// Points `first .. first + n` of `s`, `(n, d)` row-major, on every thread.
-fn fill_f64(s: &(impl Sequence + Sync), first: u64, d: u32, len: usize) -> Vec<f64> {
-    let mut out = vec![0.0; len];
-    par_rows(&mut out, d as usize, first, |f, block| {
-        fill_rows(s, f, d, block)
-    });
-    out
+/// Points `first ..` of `s` into `out`, `(n, d)` row-major, on every thread.
+fn fill_f64(s: &(impl Sequence + Sync), first: u64, d: u32, out: &mut [f64]) {
+    par_rows(out, d as usize, first, |f, block| fill_rows(s, f, d, block));
 }
 
 /// Points `first .. first + n` of the `d`-dimensional Halton sequence (radical inverses in
@@ -197,7 +207,8 @@ fn halton<'py>(
     check_range(first, n, u64::MAX, "the Halton sequence")?;
     let Some(seed) = seed else {
         let s = Halton::new(d).map_err(value_error)?;
-        let v = py.detach(|| fill_f64(&s, first, d, len));
+        let mut v = filled(len, 0.0)?;
+        py.detach(|| fill_f64(&s, first, d, &mut v));
         return array(py, v, n, d);
     };
     let strategy = match scramble {
@@ -221,7 +232,7 @@ fn halton<'py>(
             "a Halton sequence with permuted digit positions",
         )?;
     }
-    let mut v = vec![0.0; len];
+    let mut v = filled(len, 0.0)?;
     if len == 0 {
         return array(py, v, n, d);
     }
@@ -286,7 +297,8 @@ fn sequence<'py>(
     let s = NamedSequence::new(name, spec).map_err(value_error)?;
     let count = s.point_count().unwrap_or(u64::MAX);
     check_range(first, n, count, &format!("the {name} set"))?;
-    let v = py.detach(|| fill_f64(&s, first, d, len));
+    let mut v = filled(len, 0.0)?;
+    py.detach(|| fill_f64(&s, first, d, &mut v));
     array(py, v, n, d)
 }
 

@@ -10,7 +10,7 @@ use nyquist::analysis::{
     net_t_value_scratch_len, star_discrepancy, star_discrepancy_scratch_len,
 };
 
-use crate::value_error;
+use crate::{filled, value_error};
 
 /// A read-only `(n, d)` array as a validated point set.
 fn point_set<'a>(sample: &'a PyReadonlyArray2<'_, f64>) -> PyResult<PointSet<'a>> {
@@ -68,11 +68,9 @@ pub fn discrepancy(
     }
     let len = star_discrepancy_scratch_len(points.len(), points.dims())
         .ok_or_else(|| value_error("the star discrepancy's scratch does not fit"))?;
-    py.detach(|| {
-        let mut scratch = vec![0.0; len];
-        star_discrepancy(&points, &mut scratch)
-    })
-    .map_err(value_error)
+    let mut scratch = filled(len, 0.0)?;
+    py.detach(|| star_discrepancy(&points, &mut scratch))
+        .map_err(value_error)
 }
 
 /// The core's `l2_sums` on every thread: the rows split into one range per thread with equal
@@ -188,20 +186,28 @@ pub fn geometric_discrepancy(
     let p = |i: usize| &c[i * d..(i + 1) * d];
     let n = points.len();
     match method {
-        "mindist" => Ok(py.detach(|| {
-            let (mut best, mut duplicate) = (f64::INFINITY, false);
-            for i in 0..n {
-                for j in i + 1..n {
-                    let r = dist(p(i), p(j));
-                    if r == 0.0 {
-                        duplicate = true;
-                    } else if r < best {
-                        best = r;
+        "mindist" => {
+            let (best, duplicate) = py.detach(|| {
+                let (mut best, mut duplicate) = (f64::INFINITY, false);
+                for i in 0..n {
+                    for j in i + 1..n {
+                        let r = dist(p(i), p(j));
+                        if r == 0.0 {
+                            duplicate = true;
+                        } else if r < best {
+                            best = r;
+                        }
                     }
                 }
+                (best, duplicate)
+            });
+            if best.is_infinite() {
+                return Err(value_error(
+                    "Sample has no two distinct points, so no smallest distance between them",
+                ));
             }
-            (best, duplicate)
-        })),
+            Ok((best, duplicate))
+        }
         "mst" => Ok(py.detach(|| {
             // Prim: `near[k]` is the shortest edge from point k to the tree so far.
             let mut near = vec![f64::INFINITY; n];
@@ -243,11 +249,9 @@ pub fn t_value(py: Python<'_>, sample: PyReadonlyArray2<'_, f64>) -> PyResult<u3
     let points = point_set(&sample)?;
     let len = net_t_value_scratch_len(points.len(), points.dims())
         .ok_or_else(|| value_error("the t-value's scratch does not fit"))?;
-    py.detach(|| {
-        let mut scratch = vec![0u32; len];
-        net_t_value(&points, &mut scratch)
-    })
-    .map_err(value_error)
+    let mut scratch = filled(len, 0u32)?;
+    py.detach(|| net_t_value(&points, &mut scratch))
+        .map_err(value_error)
 }
 
 /// The periodogram of 2-D point sets (an `(k, n, 2)` array: `k` realisations of `n` points),

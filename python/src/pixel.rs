@@ -3,14 +3,13 @@
 
 use numpy::PyUntypedArrayMethods;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2};
-use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 
 use nyquist::filter::{Filter as _, FilterKind, FilterSampler, Interpolation, Table2d};
 use nyquist::sampler::{NamedSampler, Sampler};
 use nyquist::scramble::Scramble;
 
-use crate::value_error;
+use crate::{filled, value_error, values};
 
 fn scramble_of(name: &str) -> PyResult<Scramble> {
     Ok(match name {
@@ -51,10 +50,14 @@ pub fn pixel_samples<'py>(
     let size = [size.0, size.1];
     let spp = match spp {
         Some(s) => s,
-        None => first.checked_add(n).filter(|&s| s > 0).ok_or_else(|| {
-            value_error(format!("samples {first}..{first}+{n} do not fit in u32"))
+        None => first.checked_add(n).ok_or_else(|| {
+            value_error(format!(
+                "samples {first}..{} are past the 2^32 samples a pixel has",
+                u64::from(first) + u64::from(n)
+            ))
         })?,
-    };
+    }
+    .max(1);
     let mut sampler = match scramble {
         None => NamedSampler::new(name, size, spp, seed),
         Some(s) => NamedSampler::with_scramble(name, size, spp, seed, scramble_of(s)?),
@@ -74,8 +77,8 @@ pub fn pixel_samples<'py>(
         )));
     }
     let dims = d as usize;
-    let v = py.detach(|| {
-        let mut out = vec![0.0f64; n as usize * dims];
+    let mut out = filled(values(u64::from(n), d)?, 0.0f64)?;
+    py.detach(|| {
         for (s, row) in (first..).zip(out.chunks_exact_mut(dims.max(1))) {
             sampler.start_pixel_sample([pixel.0, pixel.1], s, 0);
             let mut k = 0;
@@ -95,9 +98,8 @@ pub fn pixel_samples<'py>(
                 row[k] = f64::from(sampler.get_1d());
             }
         }
-        out
     });
-    v.into_pyarray(py).reshape([n as usize, dims])
+    out.into_pyarray(py).reshape([n as usize, dims])
 }
 
 /// A filter table's values and sample points, as `Filter.table` returns them.
@@ -236,7 +238,7 @@ impl Filter {
         u: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<FilterSamples<'py>> {
         if u.shape()[1] != 2 {
-            return Err(PyTypeError::new_err("u must have shape (n, 2)"));
+            return Err(value_error("u must have shape (n, 2)"));
         }
         let flat = u.as_slice().map_err(value_error)?;
         if let Some(&bad) = flat.iter().find(|v| !(0.0..1.0).contains(*v)) {
@@ -264,7 +266,7 @@ impl Filter {
         offsets: PyReadonlyArray2<'py, f64>,
     ) -> PyResult<Bound<'py, PyArray1<f32>>> {
         if offsets.shape()[1] != 2 {
-            return Err(PyTypeError::new_err("offsets must have shape (n, 2)"));
+            return Err(value_error("offsets must have shape (n, 2)"));
         }
         let flat = offsets.as_slice().map_err(value_error)?;
         let v: Vec<f32> = flat

@@ -327,3 +327,59 @@ def test_the_readme_example_runs_as_printed():
     exec(block, scope)
     assert scope["analysis"].t_value(scope["x"]) == 0
     assert 0 < scope["qmc"].discrepancy(scope["x"], method="star") < 0.01
+
+
+def test_hostile_requests_raise_python_errors():
+    # An allocation that cannot succeed is a MemoryError, not an aborted interpreter.
+    with pytest.raises(MemoryError):
+        qmc.Halton(1024, scramble=False).random(2**40)
+    with pytest.raises(MemoryError):
+        qmc.LatinHypercube(1024, rng=1).random(2**40)
+    # Indices past what the Rust side takes are ValueErrors, not OverflowErrors.
+    with pytest.raises(ValueError, match="past the points this engine indexes"):
+        qmc.Halton(2).fast_forward(2**64).random(1)
+    with pytest.raises(ValueError, match="past the points this engine indexes"):
+        qmc.PixelSampler(2, "zsobol", spp=16, rng=1).fast_forward(2**40).random(1)
+    with pytest.raises(ValueError, match="must be a non-negative integer"):
+        pixel.samples("zsobol", (-1, 0), 4, 2)
+    with pytest.raises(ValueError, match="must fit in 32 bits"):
+        pixel.samples("zsobol", (0, 0), 2**33, 2)
+    with pytest.raises(ValueError, match="max_freq -1 must be a positive integer"):
+        analysis.periodogram(np.zeros((1, 2)), max_freq=-1)
+    assert pixel.samples("sobol", (0, 0), 0, 2).shape == (0, 2)
+    with pytest.raises(ValueError, match="no two distinct points"):
+        qmc.geometric_discrepancy([[0.5, 0.5], [0.5, 0.5]])
+
+
+def test_poisson_disk_in_twelve_dimensions_finishes():
+    # (2·⌈√12⌉ + 1)^12 neighbour cells would be 2.8·10¹¹ per candidate; the grid's edges and
+    # the point list bound the work instead.
+    e = qmc.PoissonDisk(12, radius=1.0, l_bounds=[0] * 12, u_bounds=[1.15] * 12,
+                        hypersphere="surface", ncandidates=2000, rng=1)
+    x = e.random(3)
+    assert min_distance(x) >= 1.0
+    assert len(qmc.PoissonDisk(2, radius=0.2, rng=2).random(np.inf)) > 10
+
+
+def test_filters_take_array_likes_and_name_bad_shapes():
+    f = pixel.Filter("mitchell")
+    assert f.evaluate([0.0, 0.5], [0.0, 0.5]).shape == (2,)
+    assert np.array_equal(f.evaluate(np.array([0, 1]), 0), f.evaluate([0.0, 1.0], [0.0, 0.0]))
+    u = np.random.default_rng(1).random((100, 3))
+    offsets, weights = f.sample(u[:, :2])  # not contiguous
+    assert offsets.shape == (100, 2) and weights.shape == (100,)
+    assert f.pdf(u[:, 1:]).shape == (100,)
+    with pytest.raises(ValueError, match=r"u must have shape \(n, 2\), not \(100, 3\)"):
+        f.sample(u)
+
+
+def test_engines_follow_scipys_semantics_for_skips_and_unscrambled_pixels():
+    e = qmc.LatinHypercube(3, strength=2, rng=4)
+    first, second = e.random(9), e.random(9)
+    e.reset()
+    e.fast_forward(9)
+    assert np.array_equal(e.random(9), second) and not np.array_equal(second, first)
+    for sampler in ["zsobol", "pmj02", "sobol"]:
+        a = qmc.PixelSampler(2, sampler, spp=16, scramble=False, rng=1).random(16)
+        b = qmc.PixelSampler(2, sampler, spp=16, scramble=False, rng=2).random(16)
+        assert np.array_equal(a, b), sampler
