@@ -30,6 +30,6 @@ fi
 }
 # From a folder outside python/, whose nyquist/ would shadow the installed package.
 cd "$work"
-"$py" -m pytest -q -p no:cacheprovider "$root/python/tests/test_qmc.py"
+"$py" -m pytest -q -p no:cacheprovider "$root/python/tests"
 "$py" -m pytest -q -p no:cacheprovider --doctest-modules --pyargs nyquist
 "$py" "$root/python/tests/scipy_suite.py" --tb=line
