@@ -4,16 +4,17 @@
 use numpy::{IntoPyArray, PyArray2, PyArrayMethods};
 use pyo3::prelude::*;
 
-use nyquist::hash::hash2;
-use nyquist::rng::{DefaultRng, default_rng, uniform_below_u64, uniform_f64};
+use nyquist::hash::{hash2, unit_f64, wyrand};
+use nyquist::rng::{DefaultRng, default_rng, uniform_below, uniform_below_u64, uniform_f64};
 
 use crate::{filled, par_rows, value_error, values};
 
 /// `n` Latin-hypercube points in `d` dimensions as an `(n, d)` float64 array: in every dimension
 /// the values fall one in each stratum `[k/n, (k+1)/n)`, the strata assigned to points by an
-/// independent uniform permutation per dimension (an inside-out Fisher–Yates from the core's
-/// PCG32, keyed by `hash2(seed, dimension)`), each value jittered uniformly inside its stratum,
-/// or at its centre with `centered`. The dimensions are drawn on every thread.
+/// independent uniform permutation per dimension (an inside-out Fisher–Yates over `u32`s from
+/// the core's PCG32, keyed by `hash2(seed, dimension)`, the dimensions shared among the
+/// threads), each value jittered uniformly inside its stratum (`wyrand` of the point's index,
+/// so the rows fill in parallel), or at its centre with `centered`. At most 2³² points.
 #[pyfunction]
 #[pyo3(signature = (n, d, seed, centered=false))]
 pub fn latin_hypercube<'py>(
@@ -24,52 +25,57 @@ pub fn latin_hypercube<'py>(
     centered: bool,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let len = values(n, d)?;
+    if n > u64::from(u32::MAX) {
+        return Err(value_error(format!(
+            "n {n} is above {} for a Latin hypercube",
+            u32::MAX
+        )));
+    }
     let rows = n as usize;
     let dims = d as usize;
-    // One column per dimension, then the rows interleaved: twice the output's memory.
-    let mut columns = filled(len, 0.0)?;
+    let mut strata = filled(len, 0u32)?;
     let mut out = filled(len, 0.0)?;
     py.detach(|| {
         let threads = std::thread::available_parallelism().map_or(1, |t| t.get());
         let per = dims.div_ceil(threads).max(1);
         std::thread::scope(|scope| {
-            for (k, block) in columns.chunks_mut((per * rows).max(1)).enumerate() {
+            for (k, block) in strata.chunks_mut((per * rows).max(1)).enumerate() {
                 scope.spawn(move || {
                     for (j, column) in block.chunks_mut(rows.max(1)).enumerate() {
-                        let dim = (k * per + j) as u64;
-                        lhs_column(column, hash2(seed, dim), centered);
+                        shuffle_strata(column, hash2(seed, (k * per + j) as u64));
                     }
                 });
             }
         });
+        let count = n as f64;
+        let keys: Vec<u64> = (0..d)
+            .map(|j| hash2(seed ^ 0x5bd1_e995, u64::from(j)))
+            .collect();
         par_rows(&mut out, dims, 0, |first, block| {
             for (i, row) in (first as usize..).zip(block.chunks_exact_mut(dims)) {
                 for (j, x) in row.iter_mut().enumerate() {
-                    *x = columns[j * rows + i];
+                    let jitter = if centered {
+                        0.5
+                    } else {
+                        unit_f64(wyrand(keys[j], i as u64))
+                    };
+                    let v = (f64::from(strata[j * rows + i]) + jitter) / count;
+                    *x = v.min(nyquist::ONE_MINUS_EPSILON_F64);
                 }
             }
         });
     });
-    let v = out;
-    v.into_pyarray(py).reshape([rows, dims])
+    out.into_pyarray(py).reshape([rows, dims])
 }
 
-/// One dimension of a Latin hypercube of `column.len()` points, in place: a uniform
-/// permutation of the strata (held as exact `f64` integers), each jittered (or centred).
-fn lhs_column(column: &mut [f64], key: u64, centered: bool) {
+/// A uniform permutation of the strata `0..column.len()`, in place: an inside-out
+/// Fisher–Yates (after step k, positions 0..=k hold a uniform permutation of 0..=k).
+fn shuffle_strata(column: &mut [u32], key: u64) {
     let mut rng = default_rng(key);
-    let n = column.len();
-    // Inside-out Fisher–Yates: after step k, positions 0..=k hold a uniform permutation of
-    // 0..=k.
-    for k in 0..n {
-        let j = uniform_below_u64(&mut rng, k as u64 + 1) as usize;
+    for k in 0..column.len() {
+        let j = uniform_below(&mut rng, k as u32 + 1) as usize;
         column[k] = column[j];
-        column[j] = k as f64;
-    }
-    let count = n as f64;
-    for x in column.iter_mut() {
-        let jitter = if centered { 0.5 } else { uniform_f64(&mut rng) };
-        *x = ((*x + jitter) / count).min(nyquist::ONE_MINUS_EPSILON_F64);
+        column[j] = k as u32;
     }
 }
 

@@ -334,7 +334,9 @@ def test_hostile_requests_raise_python_errors():
     with pytest.raises(MemoryError):
         qmc.Halton(1024, scramble=False).random(2**40)
     with pytest.raises(MemoryError):
-        qmc.LatinHypercube(1024, rng=1).random(2**40)
+        qmc.LatinHypercube(1024, rng=1).random(2**32 - 1)
+    with pytest.raises(ValueError, match="n 1099511627776 is above 4294967295"):
+        qmc.LatinHypercube(2, rng=1).random(2**40)
     # Indices past what the Rust side takes are ValueErrors, not OverflowErrors.
     with pytest.raises(ValueError, match="past the points this engine indexes"):
         qmc.Halton(2).fast_forward(2**64).random(1)

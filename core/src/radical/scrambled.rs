@@ -325,18 +325,23 @@ pub fn positional_radical_inverse_column_f64(
         weight[j] = w;
         w *= b;
     }
-    let low = position_permutation(seed, b, 0);
+    // Each position's permutation built once (a carry reaches position j once per b^j steps,
+    // position 1 every other step in base 2), and position 0's as a table for bases up to 64.
+    let mut perms = [position_permutation(seed, b, 0); 64];
+    for (j, p) in perms.iter_mut().enumerate().take(k).skip(1) {
+        *p = position_permutation(seed, b, j);
+    }
     let mut table = [0u32; 64];
     if b <= 64 {
         for (v, t) in table.iter_mut().enumerate().take(b as usize) {
-            *t = low.apply(v as u32);
+            *t = perms[0].apply(v as u32);
         }
     }
     let perm = |j: usize, v: u32| {
-        u64::from(match j {
-            0 if b <= 64 => table[v as usize],
-            0 => low.apply(v),
-            _ => position_permutation(seed, b, j).apply(v),
+        u64::from(if j == 0 && b <= 64 {
+            table[v as usize]
+        } else {
+            perms[j].apply(v)
         })
     };
     let (mut rest, mut num) = (first, 0u64);
