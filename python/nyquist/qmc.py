@@ -170,8 +170,7 @@ class Sobol(QMCEngine):
     The points come in SciPy's (Gray-code) order; unscrambled they are SciPy's, bit for bit.
     ``scramble=True`` Owen-scrambles each coordinate (Burley's hash-based nested uniform
     scramble, one key per dimension drawn from ``rng``), where SciPy applies a linear matrix
-    scramble plus a digital shift: both keep every power-of-two prefix a (t, m, d)-net, and
-    Owen's is the stronger randomisation (variance O(n^-3) for smooth integrands).
+    scramble plus a digital shift: both keep every power-of-two prefix a (t, m, d)-net.
 
     >>> from nyquist.qmc import Sobol
     >>> x = Sobol(d=3, rng=7).random_base2(4)
