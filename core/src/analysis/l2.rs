@@ -298,31 +298,34 @@ pub fn l2_sums(points: &PointSet<'_>, kind: L2Kind) -> L2Sums {
 /// assert!((a.single + b.single - whole.single).abs() < 1e-15);
 /// ```
 pub fn l2_sums_rows(points: &PointSet<'_>, kind: L2Kind, rows: Range<usize>) -> L2Sums {
+    match kind {
+        L2Kind::Star => sums_of(points, kind, rows, star_single, star_pair),
+        L2Kind::Centered => sums_of(points, kind, rows, centered_single, centered_pair),
+        L2Kind::WrapAround => sums_of(points, kind, rows, |_| 0.0, wraparound_pair),
+        L2Kind::Mixture => sums_of(points, kind, rows, mixture_single, mixture_pair),
+    }
+}
+
+/// [`l2_sums_rows`] for one kind's `f` and `K`, so that a caller naming one kind (the
+/// `*_l2_discrepancy` functions) carries only that kind's kernels: a browser build that uses
+/// three of the four does not link the fourth.
+#[inline]
+fn sums_of(
+    points: &PointSet<'_>,
+    kind: L2Kind,
+    rows: Range<usize>,
+    f: impl Fn(&[f64]) -> f64,
+    k: impl Fn(&[f64], &[f64]) -> f64,
+) -> L2Sums {
     let n = points.len();
     let rows = rows.start.min(n)..rows.end.min(n);
     let (constant, weight) = constant_and_weight(kind, points.dims() as f64);
-    let r = || rows.clone();
-    let (single, pairs) = match kind {
-        L2Kind::Star => (
-            single_sum(points, r(), star_single),
-            double_sum(points, r(), star_pair),
-        ),
-        L2Kind::Centered => (
-            single_sum(points, r(), centered_single),
-            double_sum(points, r(), centered_pair),
-        ),
-        L2Kind::WrapAround => (0.0, double_sum(points, r(), wraparound_pair)),
-        L2Kind::Mixture => (
-            single_sum(points, r(), mixture_single),
-            double_sum(points, r(), mixture_pair),
-        ),
-    };
     L2Sums {
         kind,
         constant,
         weight,
-        single,
-        pairs,
+        single: single_sum(points, rows.clone(), f),
+        pairs: double_sum(points, rows, k),
     }
 }
 
@@ -374,9 +377,9 @@ pub fn l2_point_sums(points: &PointSet<'_>, x: &[f64], kind: L2Kind) -> Result<L
     })
 }
 
-/// `sqrt(max(D², 0))` for `kind` over `points`, with `N` their count.
-fn l2_discrepancy(points: &PointSet<'_>, kind: L2Kind) -> f64 {
-    sqrt(l2_sums(points, kind).squared(points.len() as f64).max(0.0))
+/// `sqrt(max(D², 0))` from the sums over all of `points`, with `N` their count.
+fn l2_discrepancy(points: &PointSet<'_>, sums: L2Sums) -> f64 {
+    sqrt(sums.squared(points.len() as f64).max(0.0))
 }
 
 /// L2-star discrepancy `T_N` by Warnock's formula (module docs). O(d·N²); allocates: no.
@@ -389,7 +392,14 @@ fn l2_discrepancy(points: &PointSet<'_>, kind: L2Kind) -> f64 {
 /// assert!((t - (1.0f64 / 3.0).sqrt()).abs() < 1e-15);
 /// ```
 pub fn l2_star_discrepancy(points: &PointSet<'_>) -> f64 {
-    l2_discrepancy(points, L2Kind::Star)
+    let sums = sums_of(
+        points,
+        L2Kind::Star,
+        0..points.len(),
+        star_single,
+        star_pair,
+    );
+    l2_discrepancy(points, sums)
 }
 
 /// Centered L2 discrepancy (Hickernell 1998; module docs): invariant under reflections
@@ -402,7 +412,14 @@ pub fn l2_star_discrepancy(points: &PointSet<'_>) -> f64 {
 /// assert!((a - b).abs() < 1e-15);
 /// ```
 pub fn centered_l2_discrepancy(points: &PointSet<'_>) -> f64 {
-    l2_discrepancy(points, L2Kind::Centered)
+    let sums = sums_of(
+        points,
+        L2Kind::Centered,
+        0..points.len(),
+        centered_single,
+        centered_pair,
+    );
+    l2_discrepancy(points, sums)
 }
 
 /// Wrap-around L2 discrepancy (Hickernell 1998; module docs): invariant under toroidal shifts.
@@ -416,7 +433,14 @@ pub fn centered_l2_discrepancy(points: &PointSet<'_>) -> f64 {
 /// assert!((a - b).abs() < 1e-15);
 /// ```
 pub fn wraparound_l2_discrepancy(points: &PointSet<'_>) -> f64 {
-    l2_discrepancy(points, L2Kind::WrapAround)
+    let sums = sums_of(
+        points,
+        L2Kind::WrapAround,
+        0..points.len(),
+        |_| 0.0,
+        wraparound_pair,
+    );
+    l2_discrepancy(points, sums)
 }
 
 /// Mixture L2 discrepancy (Zhou, Fang and Ning 2013; module docs): invariant under reflections
@@ -431,7 +455,14 @@ pub fn wraparound_l2_discrepancy(points: &PointSet<'_>) -> f64 {
 /// assert!((md - want.sqrt()).abs() < 1e-15);
 /// ```
 pub fn mixture_l2_discrepancy(points: &PointSet<'_>) -> f64 {
-    l2_discrepancy(points, L2Kind::Mixture)
+    let sums = sums_of(
+        points,
+        L2Kind::Mixture,
+        0..points.len(),
+        mixture_single,
+        mixture_pair,
+    );
+    l2_discrepancy(points, sums)
 }
 
 #[cfg(test)]
