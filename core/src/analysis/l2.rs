@@ -24,8 +24,8 @@ use crate::math::{pow, sqrt};
 /// and the lanes vectorise), the rows added with Neumaier's compensated summation. The result
 /// is a small difference of O(1) terms, so summation error would otherwise dominate for large N.
 /// Dimensions 1–4 get a copy with the dimension fixed at compile time (unrolled kernels).
-/// Only the rows `i` in `rows` are summed, each with the points `j ≥ i`: rows that partition
-/// `0..N` give sums that add up to the whole.
+/// Only the rows `i` in `rows` (within `0..N`) are summed, each with the points `j ≥ i`: rows
+/// that partition `0..N` give sums that add up to the whole.
 #[inline]
 fn double_sum(
     points: &PointSet<'_>,
@@ -40,12 +40,7 @@ fn double_sum(
         4 => double_sum_fixed::<4>(c, rows, &kernel),
         d => {
             let mut total = Neumaier::default();
-            for (i, p) in c
-                .chunks_exact(d)
-                .enumerate()
-                .take(rows.end)
-                .skip(rows.start)
-            {
+            for (i, p) in (rows.start..).zip(c[rows.start * d..rows.end * d].chunks_exact(d)) {
                 let mut row = 0.0;
                 for q in c[(i + 1) * d..].chunks_exact(d) {
                     row += kernel(p, q);
@@ -66,7 +61,7 @@ fn double_sum_fixed<const D: usize>(
 ) -> f64 {
     let (pts, _) = c.as_chunks::<D>();
     let mut total = Neumaier::default();
-    for (i, p) in pts.iter().enumerate().take(rows.end).skip(rows.start) {
+    for (i, p) in (rows.start..).zip(&pts[rows.clone()]) {
         let mut lanes = [0.0f64; 4];
         let (quads, tail) = pts[i + 1..].as_chunks::<4>();
         for quad in quads {
@@ -115,16 +110,12 @@ impl Neumaier {
     }
 }
 
-/// `Σ_i f(x_i)` over the rows `i` in `rows`, compensated.
+/// `Σ_i f(x_i)` over the rows `i` in `rows` (within `0..N`), compensated.
 #[inline]
 fn single_sum(points: &PointSet<'_>, rows: Range<usize>, f: impl Fn(&[f64]) -> f64) -> f64 {
+    let d = points.dims();
     let mut total = Neumaier::default();
-    for p in points
-        .coords()
-        .chunks_exact(points.dims())
-        .take(rows.end)
-        .skip(rows.start)
-    {
+    for p in points.coords()[rows.start * d..rows.end * d].chunks_exact(d) {
         total.add(f(p));
     }
     total.sum()
