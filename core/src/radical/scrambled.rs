@@ -106,6 +106,28 @@ pub fn scrambled_radical_inverse_f64(dim: u32, a: u64, seed: u64) -> f64 {
     x.min(ONE_MINUS_EPSILON_F64)
 }
 
+/// The values a column writer puts in `len` slots at `stride` (the last slot may be partial)
+/// and the last index it reaches from `first`: `None` for no values.
+///
+/// # Errors
+/// [`Error::ZeroSize`] for `stride == 0`; [`Error::TooMany`] (`what: "first"`) when the last
+/// index passes `u64::MAX`.
+fn column_span(first: u64, len: usize, stride: usize) -> Result<Option<(u64, u64)>, Error> {
+    if stride == 0 {
+        return Err(Error::ZeroSize { what: "stride" });
+    }
+    let count = len.div_ceil(stride) as u64;
+    if count == 0 {
+        return Ok(None);
+    }
+    let last = first.checked_add(count - 1).ok_or(Error::TooMany {
+        what: "first",
+        value: first,
+        max: u64::MAX - (count - 1),
+    })?;
+    Ok(Some((count, last)))
+}
+
 /// [`scrambled_radical_inverse_f64`]`(dim, first + k, seed)` for `k = 0, 1, …` into
 /// `out[0]`, `out[stride]`, `out[2·stride]`, … (as many as `out` holds), bit for bit, in
 /// amortised O(1) per value: a column of a point-major array, for filling many points.
@@ -137,18 +159,9 @@ pub fn scrambled_radical_inverse_column_f64(
     out: &mut [f64],
     stride: usize,
 ) -> Result<u64, Error> {
-    if stride == 0 {
-        return Err(Error::ZeroSize { what: "stride" });
-    }
-    let count = out.len().div_ceil(stride) as u64;
-    if count == 0 {
+    let Some((count, last)) = column_span(first, out.len(), stride)? else {
         return Ok(0);
-    }
-    let last = first.checked_add(count - 1).ok_or(Error::TooMany {
-        what: "first",
-        value: first,
-        max: u64::MAX - (count - 1),
-    })?;
+    };
     let d = (dim % PRIME_COUNT) as usize;
     let b = BASES[d].b;
     let pi = digit_permutation(seed, b);
@@ -303,18 +316,9 @@ pub fn positional_radical_inverse_column_f64(
     out: &mut [f64],
     stride: usize,
 ) -> Result<u64, Error> {
-    if stride == 0 {
-        return Err(Error::ZeroSize { what: "stride" });
-    }
-    let count = out.len().div_ceil(stride) as u64;
-    if count == 0 {
+    let Some((count, _)) = column_span(first, out.len(), stride)? else {
         return Ok(0);
-    }
-    first.checked_add(count - 1).ok_or(Error::TooMany {
-        what: "first",
-        value: first,
-        max: u64::MAX - (count - 1),
-    })?;
+    };
     let b = BASES[(dim % PRIME_COUNT) as usize].b;
     let (k, den) = positional_digits(b);
     let mut digits = [0u32; 64];
