@@ -595,16 +595,7 @@ def scale(sample, l_bounds, u_bounds, *, reverse=False):
     sample = np.asarray(sample)
     if not sample.ndim == 2:
         raise ValueError("Sample is not a 2D array")
-    d = sample.shape[1]
-    try:
-        lower = np.broadcast_to(l_bounds, d)
-        upper = np.broadcast_to(u_bounds, d)
-    except ValueError as exc:
-        raise ValueError(
-            "'l_bounds' and 'u_bounds' must be broadcastable and respect the sample dimension"
-        ) from exc
-    if not np.all(lower < upper):
-        raise ValueError("Bounds are not consistent 'l_bounds' < 'u_bounds'")
+    lower, upper = _validate_bounds(l_bounds, u_bounds, sample.shape[1])
     if not reverse:
         if sample.size and (sample.max() > 1.0 or sample.min() < 0.0):
             raise ValueError("Sample is not in unit hypercube")
