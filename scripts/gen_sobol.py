@@ -19,7 +19,13 @@ with a_1 the most significant of the s-1 bits of `a`. Dimension 0 (no line in th
 van der Corput sequence: V_k = 2^(32-k).
 
 The table row for dimension d holds V_1 .. V_32: entry k (0-based) is the direction number
-XOR-ed in when bit k of the index is set. Standard library only.
+XOR-ed in when bit k of the index is set.
+
+For indices past 2^32 the script also writes SOBOL_MATRICES_HI, the columns V_33 .. V_64 read to
+32 bits: the same recurrence run on 64-bit words (V_k = m_k * 2^(64-k), exact for every k <= 64),
+each word's upper half. Columns 1 .. 32 of that run equal the 32-bit table (checked here).
+`scripts/sobol64_reference.py` checks the result against an independent computation. Standard
+library only.
 """
 
 import os
@@ -33,11 +39,12 @@ BITS = 32
 MASK = (1 << BITS) - 1
 
 
-def direction_numbers(s, a, m):
-    v = [0] * (BITS + 1)  # 1-based
-    for k in range(1, BITS + 1):
+def direction_numbers(s, a, m, bits=BITS):
+    mask = (1 << bits) - 1
+    v = [0] * (bits + 1)  # 1-based
+    for k in range(1, bits + 1):
         if k <= s:
-            v[k] = (m[k - 1] << (BITS - k)) & MASK
+            v[k] = (m[k - 1] << (bits - k)) & mask
         else:
             x = v[k - s] ^ (v[k - s] >> s)
             for j in range(1, s):
@@ -76,6 +83,19 @@ def matrices(dims):
     return rows
 
 
+def high_matrices(dims, rows):
+    """Columns V_33 .. V_64 to 32 bits, from the recurrence on 64-bit words."""
+    wide = [[1 << (64 - k) for k in range(1, 65)]]
+    for s, a, m in dims:
+        wide.append(direction_numbers(s, a, m, 64))
+    high = []
+    for d, (row, w) in enumerate(zip(rows, wide)):
+        if [x >> 32 for x in w[:BITS]] != row:
+            raise SystemExit(f"dimension {d}: the 64-bit run disagrees with the 32-bit table")
+        high.append([x >> 32 for x in w[BITS:]])
+    return high
+
+
 def render_directions(dims):
     """SOBOL_DIRECTION_BITS: a bit stream, least significant bit of each byte first; per
     dimension 1 .. DIMS - 1, each field least significant bit first: s in 4 bits, a in s - 1
@@ -112,8 +132,7 @@ def render_directions(dims):
     return "\n".join(out) + "\n"
 
 
-def render_rows(rows):
-    out = render_header()
+def render_rows(rows, out):
     for d, row in enumerate(rows):
         first = ", ".join(f"0x{x:08x}" for x in row[:16])
         second = ", ".join(f"0x{x:08x}" for x in row[16:])
@@ -142,9 +161,27 @@ def render_header():
     ]
 
 
+def render_high():
+    return [
+        "",
+        "/// `SOBOL_MATRICES_HI[d][k]` is direction number `V_{k+33}` of dimension `d` to 32 bits: the",
+        "/// column XOR-ed in when bit `k + 32` of a 64-bit index is set (the recurrence run on 64-bit",
+        "/// words, each word's upper half; dimension 0's are all zero). With `lazy-tables` the library",
+        "/// builds the same table at first use (`sobol_lazy.rs`).",
+        '#[cfg(any(not(feature = "lazy-tables"), test))]',
+        "#[rustfmt::skip]",
+        f"pub(crate) static SOBOL_MATRICES_HI: [[u32; {BITS}]; {DIMS}] = [",
+    ]
+
+
 def main():
     dims = parse()
-    text = render_rows(matrices(dims)) + render_directions(dims)
+    rows = matrices(dims)
+    text = (
+        render_rows(rows, render_header())
+        + render_rows(high_matrices(dims, rows), render_high())
+        + render_directions(dims)
+    )
     if "--check" in sys.argv[1:]:
         with open(OUT, encoding="utf-8") as f:
             if f.read() != text:

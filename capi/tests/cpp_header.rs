@@ -248,7 +248,7 @@ fn expected() -> Expected {
                 let dim = r.below(dims + 8);
                 e.u32(index);
                 e.u32(dim);
-                let four = s.sample_4d(index, dim);
+                let four = s.sample_4d(u64::from(index), dim);
                 e.f32s(&[s.sample(u64::from(index), dim)]);
                 e.f32s(&four);
             }

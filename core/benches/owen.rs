@@ -53,7 +53,7 @@ fn bench_owen_sobol(c: &mut Criterion<cpu_time::BenchClock>) {
                 let mut acc = 0.0f32;
                 for i in 0..POINTS {
                     for set in d.clone().step_by(4) {
-                        let v = ours.sample_4d(black_box(i), set);
+                        let v = ours.sample_4d(u64::from(black_box(i)), set);
                         acc += v[0] + v[1] + v[2] + v[3];
                     }
                 }

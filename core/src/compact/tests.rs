@@ -111,8 +111,14 @@ fn sobol_and_owen_sobol_equal_the_table_paths_in_every_dimension() {
             assert_eq!(s.sample(i, d).to_bits(), ts.sample(i, d).to_bits());
             assert_eq!(shifted.sample_u32(i, d), tshifted.sample_u32(i, d));
             assert_eq!(owen.sample(i, d).to_bits(), towen.sample(i, d).to_bits());
-            assert_eq!(owen.sample_u32(i as u32, d), towen.sample_u32(i as u32, d));
-            assert_eq!(owen.sample_4d(i as u32, d), towen.sample_4d(i as u32, d));
+            assert_eq!(
+                owen.sample_u32(i as u32, d),
+                towen.sample_u32(u64::from(i as u32), d)
+            );
+            assert_eq!(
+                owen.sample_4d(i as u32, d),
+                towen.sample_4d(u64::from(i as u32), d)
+            );
         }
     }
 }
@@ -129,7 +135,10 @@ fn short_dimension_counts_wrap_like_the_table_paths() {
             assert_eq!(h.sample(i, d).to_bits(), th.sample(i, d).to_bits());
             assert_eq!(h.sample_f64(i, d).to_bits(), th.sample_f64(i, d).to_bits());
             assert_eq!(o.sample(i, d).to_bits(), to.sample(i, d).to_bits());
-            assert_eq!(o.sample_4d(i as u32, d), to.sample_4d(i as u32, d));
+            assert_eq!(
+                o.sample_4d(i as u32, d),
+                to.sample_4d(u64::from(i as u32), d)
+            );
         }
     }
 }
@@ -146,7 +155,7 @@ proptest! {
         let owen = OwenSobol::<1024>::new(seed);
         let towen = sequence::OwenSobol::new(1024, seed).unwrap();
         prop_assert_eq!(owen.sample(i, d).to_bits(), towen.sample(i, d).to_bits());
-        prop_assert_eq!(owen.sample_4d(i as u32, d), towen.sample_4d(i as u32, d));
+        prop_assert_eq!(owen.sample_4d(i as u32, d), towen.sample_4d(u64::from(i as u32), d));
         let s = Sobol::<1024>::with_digital_shift(seed);
         let ts = sequence::Sobol::with_digital_shift(1024, seed).unwrap();
         prop_assert_eq!(s.sample(i, d).to_bits(), ts.sample(i, d).to_bits());

@@ -40,14 +40,14 @@ pub use owen_sobol::OwenSobol;
 pub(crate) use owen_sobol::{DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32};
 pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
 
-pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32};
+pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32, sobol_u64};
 pub(crate) use sobol::{product as sobol_product, sobol_run_f32};
 // The generator matrices: stored, or with `lazy-tables` built at first use (the tests compile
 // both and compare them).
 #[cfg(all(feature = "lazy-tables", not(test)))]
-pub(crate) use sobol_lazy::{SOBOL_MATRICES, matrix_rows as sobol_matrix_rows};
+pub(crate) use sobol_lazy::{SOBOL_MATRICES, SOBOL_MATRICES_HI, matrix_rows as sobol_matrix_rows};
 #[cfg(any(not(feature = "lazy-tables"), test))]
-pub(crate) use sobol_table::SOBOL_MATRICES;
+pub(crate) use sobol_table::{SOBOL_MATRICES, SOBOL_MATRICES_HI};
 pub use zero_two::ZeroTwo;
 
 /// `dims` if it is in `1 ..= max`: else [`Error::ZeroSize`] for 0 and [`Error::NotInRange`]

@@ -17,13 +17,15 @@
 //! XORs; dimensions 64..1023 use a branch-free masked XOR over the 32 columns, several times
 //! slower. Neither path's cost depends on the index (timings: `docs/performance.md`).
 
-use super::{SOBOL_MATRICES, Sequence, check_fill};
+use super::owen_sobol::padded_u32;
+use super::{SOBOL_MATRICES, SOBOL_MATRICES_HI, Sequence, check_fill};
 use crate::lazy_table::{baked_table, const_unless_lazy};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::{Error, hash};
 
 /// Number of Sobol dimensions the table holds (Joe–Kuo's first 1024, dimension 0 being van der
-/// Corput). Higher dimensions wrap modulo this in [`sobol_u32`].
+/// Corput). Higher dimensions wrap modulo this in [`sobol_u32`] and [`sobol_u64`]; the
+/// sequences and samplers pad past it instead ([`Sobol`]).
 ///
 /// ```
 /// assert_eq!(nyquist::sequence::SOBOL_DIMS, 1024);
@@ -139,19 +141,58 @@ pub fn sobol_u32(index: u32, dim: u32) -> u32 {
     product_dim((dim % SOBOL_DIMS) as usize, index)
 }
 
+/// Sobol point `index` (64-bit) in dimension `dim`, as a 32-bit binary fraction.
+///
+/// The index's low half goes through the 32 columns of [`sobol_u32`], its upper half through
+/// the columns `V_33 … V_64` read to 32 bits (the Joe–Kuo recurrence run to 64 columns by
+/// `scripts/gen_sobol.py`, checked against `scripts/sobol64_reference.py`'s independent
+/// computation). So `sobol_u64(i, d) == sobol_u32(i as u32, d)` for `i < 2³²`, and in every
+/// pair of dimensions the first `2^k` points stay a (t, k, 2)-net for `k ≤ 64` (at 32-bit
+/// resolution: dimension 0, van der Corput, has no digits past 2⁻³² to give, so its values
+/// repeat with period 2³²). Total: `dim >= SOBOL_DIMS` wraps to `dim % SOBOL_DIMS`. Allocates: no.
+///
+/// ```
+/// use nyquist::sequence::{sobol_u32, sobol_u64};
+/// assert_eq!(sobol_u64(77, 3), sobol_u32(77, 3));
+/// // Dimension 1's column 33 is 2^-1 (Pascal's triangle mod 2: C(32, r) is odd for r = 0, 32).
+/// assert_eq!(sobol_u64(1 << 32, 1), 1 << 31);
+/// assert_eq!(sobol_u64(1 << 32, 0), 0);
+/// ```
+#[inline]
+pub fn sobol_u64(index: u64, dim: u32) -> u32 {
+    let dim = (dim % SOBOL_DIMS) as usize;
+    product_dim(dim, index as u32) ^ product_hi(dim, index)
+}
+
+/// The columns past 32 of dimension `dim < SOBOL_DIMS` over the upper half of `index` (0 below
+/// 2³², without reading the table).
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn product_hi(dim: usize, index: u64) -> u32 {
+    let hi = (index >> 32) as u32;
+    if hi == 0 {
+        0
+    } else {
+        product(&SOBOL_MATRICES_HI[dim], hi)
+    }
+}
+
 /// A 32-bit binary fraction as an `f64`, exactly.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn to_f64(v: u32) -> f64 {
     f64::from(v) * crate::math::TWO_POW_MINUS_32
 }
 
-/// The Sobol sequence (Joe–Kuo direction numbers) over up to [`SOBOL_DIMS`] dimensions,
-/// optionally with a per-dimension digital shift (random XOR).
+/// The Sobol sequence (Joe–Kuo direction numbers), optionally with a per-dimension digital shift
+/// (random XOR).
 ///
 /// - `f32` values are the top 24 bits of the 32-bit fraction (truncation, so never 1);
 ///   `f64` values are all 32 bits, exactly.
-/// - Indices are 32-bit: [`Sequence::point_count`] is `Some(2³²)`, and a `u64` index wraps
-///   modulo `2³²`. `dim >= dims()` wraps modulo `dims()`.
+/// - Indices are 64-bit ([`sobol_u64`]; [`Sequence::point_count`] is `None`). Below 2³² the
+///   values are the 32-bit sequence's, bit for bit.
+/// - Dimensions `0 .. SOBOL_DIMS` are Joe and Kuo's; from [`SOBOL_DIMS`] on they are padding:
+///   independently seeded Owen-scrambled 4-D blocks (Burley 2020, §6) keyed by the seed (0
+///   for [`Sobol::new`]), so no dimension repeats a lower one. `dim >= dims()` wraps modulo
+///   `dims()`.
 /// - Unscrambled, the first `2^m` points of dimensions (0, 1) form a (0, m, 2)-net; a digital
 ///   shift keeps every such net property.
 ///
@@ -163,7 +204,8 @@ fn to_f64(v: u32) -> f64 {
 /// // Published first points (dimension 1, natural order): 0, .5, .75, .25, .625, .125, …
 /// let dim1: Vec<f32> = (0..6).map(|i| s.sample(i, 1)).collect();
 /// assert_eq!(dim1, [0.0, 0.5, 0.75, 0.25, 0.625, 0.125]);
-/// assert_eq!(s.sample(1 << 32 | 3, 1), s.sample(3, 1)); // 32-bit indices wrap
+/// assert_ne!(s.sample(1 << 32 | 3, 1), s.sample(3, 1)); // 64-bit indices
+/// assert!(Sobol::new(5000).is_ok()); // dimensions past 1024 are padded
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Sobol {
@@ -176,24 +218,17 @@ impl Sobol {
     /// The unscrambled sequence with `dims` dimensions.
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] if `dims == 0`; [`Error::DimensionOutOfRange`] if
-    /// `dims > SOBOL_DIMS`.
+    /// [`Error::ZeroSize`] if `dims == 0`.
     ///
     /// ```
     /// use nyquist::{sequence::Sobol, Error};
     /// assert!(Sobol::new(1024).is_ok());
+    /// assert!(Sobol::new(u32::MAX).is_ok());
     /// assert_eq!(Sobol::new(0), Err(Error::ZeroSize { what: "dims" }));
-    /// assert_eq!(Sobol::new(1025), Err(Error::DimensionOutOfRange { dim: 1024, dims: 1024 }));
     /// ```
     pub fn new(dims: u32) -> Result<Sobol, Error> {
         if dims == 0 {
             return Err(Error::ZeroSize { what: "dims" });
-        }
-        if dims > SOBOL_DIMS {
-            return Err(Error::DimensionOutOfRange {
-                dim: dims - 1,
-                dims: SOBOL_DIMS,
-            });
         }
         Ok(Sobol {
             dims,
@@ -250,13 +285,14 @@ impl Sobol {
     }
 
     /// Point `index`, dimension `dim` as a 32-bit fraction, with the scramble applied.
-    /// Total: `index` wraps modulo `2³²`, `dim` modulo [`Sequence::dims`].
+    /// Total: `dim` wraps modulo [`Sequence::dims`].
     ///
     /// ```
-    /// use nyquist::sequence::{Sobol, sobol_u32};
+    /// use nyquist::sequence::{Sobol, sobol_u32, sobol_u64};
     /// let s = Sobol::new(8).unwrap();
     /// assert_eq!(s.sample_u32(77, 5), sobol_u32(77, 5));
     /// assert_eq!(s.sample_u32(77, 8 + 5), sobol_u32(77, 5));
+    /// assert_eq!(s.sample_u32(3 << 40, 5), sobol_u64(3 << 40, 5));
     /// ```
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub fn sample_u32(&self, index: u64, dim: u32) -> u32 {
@@ -266,7 +302,21 @@ impl Sobol {
         } else {
             dim % self.dims
         };
-        product_dim(dim as usize, index as u32) ^ self.shift(dim)
+        if dim >= SOBOL_DIMS {
+            return self.padded(index, dim);
+        }
+        (product_dim(dim as usize, index as u32) ^ product_hi(dim as usize, index))
+            ^ self.shift(dim)
+    }
+
+    /// A padding dimension (`dim >= SOBOL_DIMS`), keyed by the seed.
+    #[inline(never)]
+    fn padded(&self, index: u64, dim: u32) -> u32 {
+        padded_u32(
+            (hash::hash2(self.seed, 0x5041_4444) >> 32) as u32,
+            index,
+            dim,
+        ) // "PADD"
     }
 }
 
@@ -276,7 +326,7 @@ impl Sequence for Sobol {
     }
 
     fn point_count(&self) -> Option<u64> {
-        Some(1 << 32)
+        None
     }
 
     #[inline]
@@ -291,27 +341,32 @@ impl Sequence for Sobol {
 
     /// Point-major fill, computed dimension by dimension with the natural-order increment:
     /// going from point `i` to `i + 1` flips bits `0..=t` of the index (`t` the trailing zeros
-    /// of `i + 1`), so the value changes by the XOR of the first `t + 1` columns. Equal, bit for
-    /// bit, to repeated [`Sequence::sample`].
+    /// of `i + 1`), so the value changes by the XOR of the first `t + 1` of the 64 columns.
+    /// Equal, bit for bit, to repeated [`Sequence::sample`] (padding dimensions are computed
+    /// value by value).
     fn fill(&self, first: u64, dims: u32, out: &mut [f32]) -> Result<u64, Error> {
-        let n = check_fill(self.dims, Some(1 << 32), first, dims, out.len())?;
-        // check_fill guarantees first + n <= 2^32, so every index below fits in a u32.
-        let first = first as u32;
-        for dim in 0..dims {
-            let m = &SOBOL_MATRICES[dim as usize];
-            let mut prefix = [0u32; 32];
+        let n = check_fill(self.dims, None, first, dims, out.len())?;
+        for dim in 0..dims.min(SOBOL_DIMS) {
+            let d = dim as usize;
+            let mut prefix = [0u32; 64];
             let mut acc = 0;
-            for (p, &col) in prefix.iter_mut().zip(m) {
+            let columns = SOBOL_MATRICES[d].iter().chain(&SOBOL_MATRICES_HI[d]);
+            for (p, &col) in prefix.iter_mut().zip(columns) {
                 acc ^= col;
                 *p = acc;
             }
             let shift = self.shift(dim);
-            let mut v = product_dim(dim as usize, first);
+            let mut v = product_dim(d, first as u32) ^ product_hi(d, first);
             let mut index = first;
             for point in out.chunks_exact_mut(dims as usize) {
-                point[dim as usize] = to_f32(v ^ shift);
+                point[d] = to_f32(v ^ shift);
                 index = index.wrapping_add(1);
-                v ^= prefix[(index.trailing_zeros() & 31) as usize];
+                v ^= prefix[(index.trailing_zeros() & 63) as usize];
+            }
+        }
+        for (k, point) in (0..n).zip(out.chunks_exact_mut(dims as usize)) {
+            for dim in SOBOL_DIMS..dims {
+                point[dim as usize] = to_f32(self.padded(first + k, dim));
             }
         }
         Ok(n)
@@ -422,6 +477,67 @@ mod tests {
         }
     }
 
+    /// Past 2³² against `scripts/sobol64_reference.py`: Bratley and Fox's integer recurrence in
+    /// Python big integers, an independent computation of the columns past 32.
+    #[test]
+    fn agrees_with_the_python_reference_past_2_32() {
+        let text = include_str!("sobol64_reference.txt");
+        let mut checked = 0;
+        for line in text.lines().filter(|l| !l.starts_with('#')) {
+            let f: std::vec::Vec<u64> = line.split(' ').map(|x| x.parse().unwrap()).collect();
+            let (dim, index, value) = (f[0] as u32, f[1], f[2] as u32);
+            assert!(index >> 32 != 0);
+            assert_eq!(sobol_u64(index, dim), value, "dim {dim} index {index:#x}");
+            assert_eq!(Sobol::new(1024).unwrap().sample_u32(index, dim), value);
+            checked += 1;
+        }
+        assert_eq!(checked, 16 * 24);
+    }
+
+    /// Aligned blocks past 2³² are digitally shifted copies of the first block: the same
+    /// t-value in every pair of dimensions, and (0, m, 2)-nets in dimensions 0 and 1.
+    #[test]
+    fn aligned_blocks_past_2_32_keep_the_first_blocks_t_value() {
+        use crate::analysis::{PointSet, net_t_value};
+        let t_value = |first: u64, m: u32, pair: [u32; 2]| {
+            let coords: std::vec::Vec<f64> = (first..first + (1 << m))
+                .flat_map(|i| pair.map(|d| f64::from(sobol_u64(i, d)) / 4_294_967_296.0))
+                .collect();
+            let mut scratch = std::vec![0; (1 << m) + 2];
+            net_t_value(&PointSet::new(&coords, 2).unwrap(), &mut scratch).unwrap()
+        };
+        for base in [1u64 << 32, 0xdead_beef << 32, u64::MAX - 0xffff] {
+            for m in [4u32, 8, 12] {
+                let first = base & !((1 << m) - 1);
+                for pair in [[0u32, 1], [2, 3], [7, 8], [100, 900]] {
+                    assert_eq!(
+                        t_value(first, m, pair),
+                        t_value(0, m, pair),
+                        "{pair:?} m {m}"
+                    );
+                }
+                let pts: std::vec::Vec<[u32; 2]> = (first..first + (1 << m))
+                    .map(|i| [sobol_u64(i, 0), sobol_u64(i, 1)])
+                    .collect();
+                sobol_oracle::assert_elementary_intervals(&pts, m);
+            }
+        }
+    }
+
+    /// Padding dimensions: values in range, keyed by the seed, no copy of a lower dimension.
+    #[test]
+    fn padding_dimensions_are_not_wraps() {
+        let s = Sobol::new(3000).unwrap();
+        let shifted = Sobol::with_digital_shift(3000, 5).unwrap();
+        for i in 0..64u64 {
+            assert_eq!(s.sample_u32(i, 1024 + 3000), s.sample_u32(i, 1024));
+            assert_ne!(s.sample_u32(i | 1 << 40, 1030), s.sample_u32(i, 1030));
+        }
+        let differs = |a: u32, b: u32| (0..64u64).any(|i| s.sample_u32(i, a) != s.sample_u32(i, b));
+        assert!(differs(1024, 0) && differs(2048, 0) && differs(1025, 1));
+        assert!((0..64u64).any(|i| s.sample_u32(i, 1500) != shifted.sample_u32(i, 1500)));
+    }
+
     #[test]
     fn every_dimension_stratifies_each_power_of_two() {
         // Each one-dimensional projection is a (0, m, 1)-net: 2^m points, 2^m distinct strata.
@@ -455,13 +571,19 @@ mod tests {
     }
 
     #[test]
-    fn wrapping_of_index_and_dim() {
+    fn wrapping_of_dim_and_64_bit_indices() {
         let s = Sobol::new(5).unwrap();
-        assert_eq!(s.point_count(), Some(1 << 32));
+        assert_eq!(s.point_count(), None);
         assert_eq!(s.dims(), 5);
         for i in [0u64, 3, 1000, u64::from(u32::MAX)] {
-            assert_eq!(s.sample(i + (1 << 32), 2), s.sample(i, 2));
-            assert_eq!(s.sample(i + (7 << 32), 2), s.sample(i, 2));
+            for hi in [1u64, 7, u64::from(u32::MAX)] {
+                let j = i | hi << 32;
+                assert_eq!(s.sample_u32(j, 2), sobol_u64(j, 2));
+                // The upper half adds the columns past 32 to the lower half's value.
+                let upper = product(&SOBOL_MATRICES_HI[2], hi as u32);
+                assert_ne!(upper, 0);
+                assert_eq!(sobol_u64(j, 2), sobol_u32(i as u32, 2) ^ upper);
+            }
             assert_eq!(s.sample(i, 5 + 3), s.sample(i, 3));
             assert_eq!(s.sample(i, 5), s.sample(i, 0)); // the first dimension past the end
             let last = sobol_u32(i as u32, 4) >> 8; // the last dimension in it, unwrapped
@@ -529,7 +651,15 @@ mod tests {
             Sobol::new(7).unwrap(),
             Sobol::with_digital_shift(7, 3).unwrap(),
         ] {
-            for first in [0u64, 1, 5, 1023, (1 << 32) - 40] {
+            for first in [
+                0u64,
+                1,
+                5,
+                1023,
+                (1 << 32) - 20,
+                (3 << 40) - 7,
+                u64::MAX - 40,
+            ] {
                 for dims in 1..=7u32 {
                     let mut buf = [0.0f32; 7 * 40];
                     let len = 40 * dims as usize;
@@ -543,11 +673,11 @@ mod tests {
             }
             let mut buf = [0.0f32; 8];
             assert_eq!(
-                s.fill((1 << 32) - 3, 2, &mut buf),
+                s.fill(u64::MAX - 2, 2, &mut buf),
                 Err(Error::TooMany {
-                    what: "index range",
-                    value: (1 << 32) + 1,
-                    max: 1 << 32
+                    what: "first",
+                    value: u64::MAX - 2,
+                    max: u64::MAX - 4
                 })
             );
             assert_eq!(
@@ -579,7 +709,7 @@ mod tests {
 
         #[test]
         fn constructors_never_panic(dims: u32, seed: u64) {
-            let ok = (1..=SOBOL_DIMS).contains(&dims);
+            let ok = dims >= 1;
             proptest::prop_assert_eq!(Sobol::new(dims).is_ok(), ok);
             proptest::prop_assert_eq!(Sobol::with_digital_shift(dims, seed).is_ok(), ok);
         }

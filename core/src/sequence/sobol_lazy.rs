@@ -61,6 +61,38 @@ pub(crate) const fn matrix_rows(t: &mut [[u32; 32]]) {
     }
 }
 
+/// Rows `0 .. t.len()` (at most 1024) of the columns past 32 ([`SOBOL_MATRICES_HI`]): the same
+/// recurrence on 64-bit words (`V_k = m_k · 2^(64 − k)`, exact up to `k = 64`), each word's upper
+/// half for `k = 33 ..= 64`.
+pub(crate) fn matrix_rows_hi(t: &mut [[u32; 32]]) {
+    let mut at = 0;
+    for (d, row) in t.iter_mut().enumerate().take(1024) {
+        // Dimension 0 (van der Corput) has no bits past 2^-32 in these columns: all zero.
+        if d == 0 {
+            continue;
+        }
+        let s = take(&mut at, 4) as usize;
+        let a = take(&mut at, s - 1);
+        let mut v = [0u64; 64];
+        for k in 0..64 {
+            v[k] = if k < s {
+                u64::from(2 * take(&mut at, k) + 1) << (63 - k)
+            } else {
+                let mut x = v[k - s] ^ (v[k - s] >> s);
+                for j in 1..s {
+                    if (a >> (s - 1 - j)) & 1 == 1 {
+                        x ^= v[k - j];
+                    }
+                }
+                x
+            };
+        }
+        for (out, w) in row.iter_mut().zip(&v[32..]) {
+            *out = (w >> 32) as u32;
+        }
+    }
+}
+
 /// [`SOBOL_MATRICES`]' fill.
 pub(crate) struct FromDirections;
 
@@ -76,6 +108,22 @@ impl Fill for FromDirections {
 /// tests, next to the stored table).
 #[cfg_attr(all(test, not(feature = "lazy-tables")), allow(dead_code))]
 pub(crate) static SOBOL_MATRICES: LazyTable<FromDirections> = LazyTable::new([[0; 32]; 1024]);
+
+/// [`SOBOL_MATRICES_HI`]' fill.
+pub(crate) struct HighFromDirections;
+
+impl Fill for HighFromDirections {
+    type Table = [[u32; 32]; 1024];
+
+    fn fill(t: &mut [[u32; 32]; 1024]) {
+        matrix_rows_hi(t)
+    }
+}
+
+/// `SOBOL_MATRICES_HI[d][k]`: as the stored table in `sobol_table.rs`, built at first use.
+#[cfg_attr(all(test, not(feature = "lazy-tables")), allow(dead_code))]
+pub(crate) static SOBOL_MATRICES_HI: LazyTable<HighFromDirections> =
+    LazyTable::new([[0; 32]; 1024]);
 
 #[cfg(test)]
 mod tests {
@@ -93,5 +141,11 @@ mod tests {
             t
         };
         assert_eq!(FIRST, stored[..5]);
+    }
+
+    /// The columns past 32 built from the packed numbers equal the stored ones.
+    #[test]
+    fn high_columns_from_packed_directions_equal_the_stored_table() {
+        assert!(*SOBOL_MATRICES_HI == super::super::sobol_table::SOBOL_MATRICES_HI);
     }
 }

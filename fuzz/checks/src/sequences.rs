@@ -49,12 +49,12 @@ pub fn sequences(data: &[u8]) {
     built("OwenSobol", dims, OwenSobol::new(dims, seed), &check);
     if let Ok(s) = OwenSobol::new(dims, seed) {
         // The 4-wide and run forms equal single values.
-        let (i, d) = (index as u32, dim);
+        let (i, d) = (index, dim);
         let four = s.sample_4d(i, d);
         let mut run = [0.0f32; 4];
         s.sample_dims(i, d, &mut run);
         for k in 0..4u32 {
-            let one = s.sample(u64::from(i), d.wrapping_add(k));
+            let one = s.sample(i, d.wrapping_add(k));
             assert_eq!(
                 four[k as usize].to_bits(),
                 one.to_bits(),
