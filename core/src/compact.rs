@@ -413,13 +413,32 @@ const fn sobol_directions<const N: usize>() -> [[u32; 32]; N] {
     out
 }
 
+/// The columns past 32 of dimensions `0..N` ([`sobol_u64`](crate::sequence::sobol_u64)), copied
+/// or built at compile time as [`sobol_directions`] is.
+const fn sobol_directions_hi<const N: usize>() -> [[u32; 32]; N] {
+    check_dims::<N>();
+    let mut out = [[0u32; 32]; N];
+    #[cfg(all(feature = "lazy-tables", not(test)))]
+    crate::sequence::sobol_matrix_rows_hi(&mut out);
+    #[cfg(any(not(feature = "lazy-tables"), test))]
+    {
+        let mut d = 0;
+        while d < N {
+            out[d] = crate::sequence::SOBOL_MATRICES_HI[d];
+            d += 1;
+        }
+    }
+    out
+}
+
 /// The Sobol sequence over its first `N` dimensions (`1 <= N <= 1024`, checked at compile
 /// time), optionally digitally shifted: bit for bit what
 /// [`sequence::Sobol`](crate::sequence::Sobol)`::new(N)` (or `with_digital_shift(N, seed)`) returns.
 ///
-/// Carries the `N` dimensions' direction numbers (128 bytes each, computed at compile time)
-/// and none of the byte tables; each value is a 32-column masked XOR. Indices are 32-bit (a
-/// `u64` index wraps modulo 2³²); `dim >= N` wraps modulo `N`. Allocates: no.
+/// Carries the `N` dimensions' direction numbers (128 bytes each, computed at compile time),
+/// their columns past 32 (128 bytes more, linked only where an index past 2³² can reach
+/// them) and none of the byte tables; each value is a 32-column masked XOR, two past 2³².
+/// Indices are 64-bit; `dim >= N` wraps modulo `N`. Allocates: no.
 ///
 /// ```
 /// use nyquist::compact::Sobol;
@@ -437,6 +456,7 @@ pub struct Sobol<const N: usize> {
 
 impl<const N: usize> Sobol<N> {
     const DIRECTIONS: [[u32; 32]; N] = sobol_directions::<N>();
+    const DIRECTIONS_HI: [[u32; 32]; N] = sobol_directions_hi::<N>();
 
     /// The unscrambled sequence. `N` outside `1..=1024` does not compile.
     ///
@@ -485,7 +505,13 @@ impl<const N: usize> Sobol<N> {
         } else {
             0
         };
-        sobol_product(&Self::DIRECTIONS[d], index as u32) ^ shift
+        let hi = (index >> 32) as u32;
+        let upper = if hi == 0 {
+            0
+        } else {
+            sobol_product(&Self::DIRECTIONS_HI[d], hi)
+        };
+        sobol_product(&Self::DIRECTIONS[d], index as u32) ^ upper ^ shift
     }
 }
 
@@ -495,7 +521,7 @@ impl<const N: usize> Sequence for Sobol<N> {
     }
 
     fn point_count(&self) -> Option<u64> {
-        Some(1 << 32)
+        None
     }
 
     #[inline]
@@ -517,8 +543,8 @@ impl<const N: usize> Sequence for Sobol<N> {
 ///
 /// Carries the `N` dimensions' direction numbers (computed at compile time) and their `N`
 /// scramble seeds, and none of the byte tables; each value is a 32-column masked XOR and two
-/// hashes. Indices are 32-bit (a `u64` index wraps modulo 2³²); `dim >= N` wraps modulo `N`.
-/// Allocates: no.
+/// hashes (past 2³², the columns past 32 and the upper half's shuffle too). Indices are
+/// 64-bit; `dim >= N` wraps modulo `N`. Allocates: no.
 ///
 /// ```
 /// use nyquist::compact::OwenSobol;
@@ -555,6 +581,7 @@ const fn reversed_directions<const N: usize>() -> [[u32; 32]; N] {
 
 impl<const N: usize> OwenSobol<N> {
     const REVERSED: [[u32; 32]; N] = reversed_directions::<N>();
+    const DIRECTIONS_HI: [[u32; 32]; N] = sobol_directions_hi::<N>();
 
     /// The sequence scrambled by `seed` (every seed, 0 included, is a scramble). `N` outside
     /// `1..=1024` does not compile.
@@ -584,11 +611,15 @@ impl<const N: usize> OwenSobol<N> {
         self.seed
     }
 
-    /// The scrambled value, bit-reversed, of dimension `d < N` at the reversed shuffled
-    /// index `r`.
+    /// The scrambled value, bit-reversed, of dimension `d < N` at the shuffled index
+    /// `(r, hi)` ([`IndexShuffle::rev64`]'s split: the reversed low half, the upper half).
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn value_rev(&self, r: u32, d: usize) -> u32 {
-        lk_hash(sobol_product(&Self::REVERSED[d], r), self.seeds[d])
+    fn value_rev(&self, (r, hi): (u32, u32), d: usize) -> u32 {
+        let mut p = sobol_product(&Self::REVERSED[d], r);
+        if hi != 0 {
+            p ^= sobol_product(&Self::DIRECTIONS_HI[d], hi).reverse_bits();
+        }
+        lk_hash(p, self.seeds[d])
     }
 
     /// Point `index`, dimension `dim` as a 32-bit binary fraction.
@@ -599,8 +630,8 @@ impl<const N: usize> OwenSobol<N> {
     /// assert_eq!(OwenSobol::<3>::new(1).sample_u32(5, 4), table.sample_u32(5, 4));
     /// ```
     #[inline]
-    pub fn sample_u32(&self, index: u32, dim: u32) -> u32 {
-        self.value_rev(self.shuffle.rev(index), wrap::<N>(dim))
+    pub fn sample_u32(&self, index: u64, dim: u32) -> u32 {
+        self.value_rev(self.shuffle.rev64(index), wrap::<N>(dim))
             .reverse_bits()
     }
 
@@ -613,8 +644,8 @@ impl<const N: usize> OwenSobol<N> {
     /// assert_eq!(s.sample_4d(77, 6), [6, 7, 0, 1].map(|d| s.sample(77, d)));
     /// ```
     #[inline]
-    pub fn sample_4d(&self, index: u32, first_dim: u32) -> [f32; 4] {
-        let r = self.shuffle.rev(index);
+    pub fn sample_4d(&self, index: u64, first_dim: u32) -> [f32; 4] {
+        let r = self.shuffle.rev64(index);
         core::array::from_fn(|k| {
             let d = wrap::<N>(first_dim.wrapping_add(k as u32));
             fraction_to_f32(self.value_rev(r, d).reverse_bits())
@@ -628,16 +659,16 @@ impl<const N: usize> Sequence for OwenSobol<N> {
     }
 
     fn point_count(&self) -> Option<u64> {
-        Some(1 << 32)
+        None
     }
 
     #[inline]
     fn sample(&self, index: u64, dim: u32) -> f32 {
-        fraction_to_f32(self.sample_u32(index as u32, dim))
+        fraction_to_f32(self.sample_u32(index, dim))
     }
 
     fn sample_f64(&self, index: u64, dim: u32) -> f64 {
-        f64::from(self.sample_u32(index as u32, dim)) * TWO_POW_MINUS_32
+        f64::from(self.sample_u32(index, dim)) * TWO_POW_MINUS_32
     }
 }
 

@@ -1,7 +1,7 @@
 //! [`SobolSampler<N>`]: pbrt-v3's Sobol sampler over the whole image with its first `N`
 //! dimensions' direction numbers as constants instead of the byte tables.
 
-use super::sobol_directions;
+use super::{sobol_directions, sobol_directions_hi};
 use crate::Error;
 use crate::sampler::{self, Sampler};
 use crate::scramble::Scramble;
@@ -23,8 +23,9 @@ const fn check_sampler_dims<const N: usize>() {
 /// The image-to-index setup (the GF(2) inverse, the per-pixel and per-sample index shares) and
 /// the scrambles are the desktop sampler's own; the values come from the `N` dimensions'
 /// direction numbers (128 bytes each, computed at compile time) by a 32-column masked XOR
-/// where the desktop sampler reads 280 KB of byte tables. As in the desktop sampler dimension
-/// `d` is read as `d mod 1024`; past `N` of those, `d` takes the direction numbers of
+/// where the desktop sampler reads 280 KB of byte tables (and their columns past 32, 128 bytes
+/// more each, for the sample indices past 2³²). Dimensions from 1024 on are the desktop
+/// sampler's padding; a dimension `N ≤ d < 1024` takes the direction numbers of
 /// `2 + (d − 2) mod (N − 2)` (never those of dimensions 0 and 1, which carry the pixel) under
 /// its own scramble: with `N = 1024` every dimension is the desktop sampler's. A camera sample
 /// and an integrator's first few values need `N = 8`. Allocates: no.
@@ -45,14 +46,21 @@ pub struct SobolSampler<const N: usize> {
 
 impl<const N: usize> SobolSampler<N> {
     const DIRECTIONS: [[u32; 32]; N] = sobol_directions::<N>();
+    const DIRECTIONS_HI: [[u32; 32]; N] = sobol_directions_hi::<N>();
 
     /// Sobol dimension `dim` (below 1024) at `index`: dimension `dim`, or past `N` the
     /// dimension it wraps to.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn sobol(index: u32, dim: u32) -> u32 {
+    fn sobol(index: u64, dim: u32) -> u32 {
         let d = dim as usize;
         let d = if d < N { d } else { 2 + (d - 2) % (N - 2) };
-        sobol_product(&Self::DIRECTIONS[d], index)
+        let hi = (index >> 32) as u32;
+        let upper = if hi == 0 {
+            0
+        } else {
+            sobol_product(&Self::DIRECTIONS_HI[d], hi)
+        };
+        sobol_product(&Self::DIRECTIONS[d], index as u32) ^ upper
     }
 
     /// As [`sampler::SobolSampler::rounded_spp`]: the next power of two and whether it differs
@@ -71,7 +79,7 @@ impl<const N: usize> SobolSampler<N> {
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
-    /// `spp · 2^(2m)` passes 2³² (`2^m` the image's square).
+    /// `spp > 2³¹` or a side passes 65536.
     ///
     /// ```
     /// use nyquist::{compact::SobolSampler, scramble::Scramble};
@@ -114,11 +122,11 @@ impl<const N: usize> SobolSampler<N> {
     /// use nyquist::scramble::Scramble;
     /// use nyquist::compact::SobolSampler;
     /// let s = SobolSampler::<8>::new([2, 2], 1, Scramble::None, 0).unwrap();
-    /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
+    /// let mut all: Vec<u64> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
     /// all.sort();
     /// assert_eq!(all, [0, 1, 2, 3]);
     /// ```
-    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u32 {
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u64 {
         self.inner
             .sequence_index_by(pixel, sample_index, Self::sobol)
     }

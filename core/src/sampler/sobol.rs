@@ -5,10 +5,7 @@ use crate::Error;
 use crate::hash::hash2;
 use crate::math::fraction_to_f32;
 use crate::scramble::{Scramble, scramble_u32};
-use crate::sequence::{sobol_run_f32, sobol_u32};
-
-/// Number of Sobol dimensions ([`crate::sequence::Sobol`]); higher dimensions wrap.
-const DIMS: u32 = 1024;
+use crate::sequence::{SOBOL_DIMS as DIMS, padded_u32, sobol_run_f32, sobol_u64};
 
 /// Sobol sampling over the whole image (pbrt-v3's `SobolSampler`).
 ///
@@ -20,8 +17,11 @@ const DIMS: u32 = 1024;
 /// "top `m` bits of dimensions 0 and 1 equal `p`" after the contribution of `s · 2^(2m)` is
 /// XOR-ed out; the inverse matrix is computed once, at construction, by Gaussian elimination.
 ///
-/// Image sample: the fractional part of `(x · 2^m − p.x, y · 2^m − p.y)`; dimension `d ≥ 2` is
-/// Sobol dimension `d` (wrapping modulo 1024) at `idx`. A nonzero seed adds a digital shift
+/// Image sample: the fractional part of `(x · 2^m − p.x, y · 2^m − p.y)`; dimension
+/// `2 ≤ d < 1024` is Sobol dimension `d` at `idx`. Dimensions from 1024 on are padding
+/// (Burley 2020, §6): independently seeded Owen-scrambled 4-D blocks of the pixel's own
+/// sample index, keyed by the pixel and the seed, so they stay stratified in each pixel and no
+/// dimension repeats a lower one. A nonzero seed adds a digital shift
 /// (XOR) from `hash(seed, d)` to every dimension — for dimensions 0 and 1 only below the top
 /// `m` bits, so pixels keep their samples. Digital shifts keep every net a net.
 ///
@@ -29,9 +29,11 @@ const DIMS: u32 = 1024;
 /// every dimension's value is scrambled under `hash(seed, d)` — dimensions 0 and 1 inside the
 /// pixel (the fraction below the top `m` bits), so each pixel keeps its samples and their nets.
 ///
-/// `spp` is rounded up to a power of two ([`SobolSampler::rounded_spp`]); since Sobol indices
-/// here are 32-bit, `spp · 2^(2m) ≤ 2³²` is required (e.g. 16 spp at 16384², 65536 spp at
-/// 256²). `sample_index >= spp` wraps modulo `spp`.
+/// `spp` is rounded up to a power of two ([`SobolSampler::rounded_spp`]); it is only a hint.
+/// Sobol indices are 64-bit ([`sobol_u64`]), so **every** `sample_index` of the `u32` range is a
+/// new sample of the pixel: sample `s` is the `s`-th Sobol point in the pixel, and the first
+/// `2^k` of them are a (0, k, 2)-net in the pixel for every `k` (progressive rendering past the
+/// hint loses nothing). The square's side must be at most 2¹⁶ pixels (`m ≤ 16`).
 ///
 /// **Pixels outside the image** are not an error: a pixel is read modulo the `2^m × 2^m`
 /// square (its low `m` bits per axis), so pixel `(x + 2^m, y)` repeats pixel `(x, y)`'s
@@ -67,7 +69,11 @@ pub struct SobolSampler {
     /// The scrambles of dimensions `2 .. 2 + SCRAMBLES` (the camera's and the first
     /// integrator dimensions), hashed once.
     scrambles: [u32; SCRAMBLES],
-    index: u32,
+    index: u64,
+    /// The current pixel's key for the padding dimensions (a hash of pixel and seed), and the
+    /// sample's number in the pixel.
+    pad_key: u32,
+    sample: u32,
     dim: u32,
 }
 
@@ -94,12 +100,12 @@ impl SobolSampler {
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
-    /// `spp · 2^(2m)` passes 2³² (see above).
+    /// `spp > 2³¹` or a side of the image passes 65536 (`m > 16`, see above).
     ///
     /// ```
     /// use nyquist::{sampler::{Sampler, SobolSampler}, scramble::Scramble};
-    /// assert!(SobolSampler::new([16384, 16384], 16, Scramble::None, 0).is_ok());
-    /// assert!(SobolSampler::new([16384, 16384], 32, Scramble::None, 0).is_err());
+    /// assert!(SobolSampler::new([16384, 16384], 4096, Scramble::None, 0).is_ok());
+    /// assert!(SobolSampler::new([65537, 16], 1, Scramble::None, 0).is_err());
     /// let mut s = SobolSampler::new([8, 8], 4, Scramble::Owen, 3).unwrap();
     /// s.start_pixel_sample([2, 5], 1, 0);
     /// let [x, y] = s.get_pixel_2d();
@@ -111,11 +117,11 @@ impl SobolSampler {
         scramble: Scramble,
         seed: u64,
     ) -> Result<Self, Error> {
-        Self::build(resolution, spp, scramble, seed, sobol_u32)
+        Self::build(resolution, spp, scramble, seed, sobol_u64)
     }
 
     /// [`SobolSampler::new`] with Sobol dimensions 0 and 1 read through `sobol01`
-    /// (`sobol01(index, dim)` for `dim < 2`, equal to [`sobol_u32`]): the setup's only reads of
+    /// (`sobol01(index, dim)` for `dim < 2`, equal to [`sobol_u64`]): the setup's only reads of
     /// the sequence, so that `compact::SobolSampler` builds the same sampler without its
     /// tables.
     pub(crate) fn build(
@@ -123,7 +129,7 @@ impl SobolSampler {
         spp: u32,
         scramble: Scramble,
         seed: u64,
-        sobol01: impl Fn(u32, u32) -> u32 + Copy,
+        sobol01: impl Fn(u64, u32) -> u32 + Copy,
     ) -> Result<Self, Error> {
         let seed = if scramble == Scramble::None { 0 } else { seed };
         super::check_image(resolution, spp)?;
@@ -138,11 +144,11 @@ impl SobolSampler {
         }
         let side = resolution[0].max(resolution[1]);
         let m = 32 - (side - 1).leading_zeros();
-        if 2 * m + spp.trailing_zeros() > 32 {
+        if m > 16 {
             return Err(Error::TooMany {
-                what: "log2(spp × pixels of the power-of-two square)",
-                value: u64::from(2 * m + spp.trailing_zeros()),
-                max: 32,
+                what: "resolution",
+                value: u64::from(side),
+                max: 1 << 16,
             });
         }
         let shift = if scramble != Scramble::PermuteDigits {
@@ -157,12 +163,8 @@ impl SobolSampler {
         let inverse = Self::invert(m, sobol01);
         let mut sample_low = [0u32; 32];
         for (b, low) in sample_low.iter_mut().enumerate() {
-            let high = if 2 * m as usize + b >= 32 {
-                0
-            } else {
-                1u32 << (2 * m as usize + b)
-            };
-            *low = apply_inverse(&inverse, have(high, m, sobol01));
+            // 2m + b < 64: m ≤ 16 and b < 32.
+            *low = apply_inverse(&inverse, have(1u64 << (2 * m as usize + b), m, sobol01));
         }
         let scrambles = core::array::from_fn(|k| match scramble {
             Scramble::None => 0,
@@ -182,15 +184,18 @@ impl SobolSampler {
             sample_low,
             scrambles,
             index: 0,
+            pad_key: 0,
+            sample: 0,
             dim: 0,
         };
         sampler.pixel_low = apply_inverse(&sampler.inverse, sampler.want([0; 2]));
+        sampler.pad_key = sampler.pad_key_of([0; 2]);
         Ok(sampler)
     }
 
     /// Gauss–Jordan elimination over GF(2) of the map "low 2m index bits → top m bits of
     /// dimensions 0 and 1".
-    fn invert(m: u32, sobol01: impl Fn(u32, u32) -> u32) -> [u32; 32] {
+    fn invert(m: u32, sobol01: impl Fn(u64, u32) -> u32) -> [u32; 32] {
         let n = (2 * m) as usize;
         // rows[i]: low 32 bits = row i of the map (which index bits feed target bit i),
         // high 32 bits = row i of the identity, becoming the inverse.
@@ -232,19 +237,22 @@ impl SobolSampler {
         inverse
     }
 
-    /// The global Sobol index of sample `sample_index` (modulo spp) of `pixel` (coordinates
-    /// wrap modulo `2^m`).
+    /// The global Sobol index of sample `sample_index` of `pixel` (coordinates wrap modulo
+    /// `2^m`): below `2^(2m) · (sample_index + 1)`.
     ///
     /// ```
     /// use nyquist::scramble::Scramble;
     /// use nyquist::sampler::SobolSampler;
     /// let s = SobolSampler::new([2, 2], 1, Scramble::None, 0).unwrap();
-    /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
+    /// let mut all: Vec<u64> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0)).collect();
     /// all.sort();
     /// assert_eq!(all, [0, 1, 2, 3]);
+    /// // Past the spp hint, and past 2^32: sample 2^31 of a 65536² image.
+    /// let big = SobolSampler::new([65536, 65536], 1, Scramble::None, 0).unwrap();
+    /// assert_eq!(big.sequence_index([0, 0], 1 << 31) >> 32, 1 << 31);
     /// ```
-    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u32 {
-        self.sequence_index_by(pixel, sample_index, sobol_u32)
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32) -> u64 {
+        self.sequence_index_by(pixel, sample_index, sobol_u64)
     }
 
     /// [`SobolSampler::sequence_index`] with Sobol dimensions 0 and 1 read through `sobol01`
@@ -253,32 +261,24 @@ impl SobolSampler {
         &self,
         pixel: [u32; 2],
         sample_index: u32,
-        sobol01: impl Fn(u32, u32) -> u32,
-    ) -> u32 {
-        let (_, high) = self.sample_bits(sample_index);
-        high | apply_inverse(
+        sobol01: impl Fn(u64, u32) -> u32,
+    ) -> u64 {
+        let high = self.sample_bits(sample_index);
+        high | u64::from(apply_inverse(
             &self.inverse,
             self.want(pixel) ^ have(high, self.m, sobol01),
-        )
+        ))
     }
 
-    /// The sample's number in the pixel (`sample_index mod spp`) and the index bits it sets
-    /// above the pixel's `2m` (0 when `2m ≥ 32`).
+    /// The index bits sample `s` sets above the pixel's `2m` (`2m + 32 ≤ 64`).
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn sample_bits(&self, sample_index: u32) -> (u32, u32) {
-        let s = if sample_index < self.spp {
-            sample_index
-        } else {
-            sample_index % self.spp
-        };
-        (
-            s,
-            if 2 * self.m >= 32 {
-                0
-            } else {
-                s << (2 * self.m)
-            },
-        )
+    fn sample_bits(&self, s: u32) -> u64 {
+        u64::from(s) << (2 * self.m)
+    }
+
+    /// The padding key of `pixel`.
+    fn pad_key_of(&self, pixel: [u32; 2]) -> u32 {
+        (super::pixel_hash(pixel, 0x5041_4444, self.seed) >> 32) as u32 // "PADD"
     }
 
     /// The pixel's low coordinate bits, interleaved as the index search wants them.
@@ -301,17 +301,19 @@ impl SobolSampler {
 
     #[inline]
     fn sample(&self, dim: u32) -> f32 {
-        self.sample_by(dim, sobol_u32)
+        self.sample_by(dim, sobol_u64)
     }
 
     /// Dimension `dim` of the current sample, with `sobol(index, d)` (`d < 1024`, equal to
-    /// [`sobol_u32`] for the desktop sampler) the source of the Sobol values.
+    /// [`sobol_u64`] for the desktop sampler) the source of the Sobol values.
     #[inline]
-    pub(crate) fn sample_by(&self, dim: u32, sobol: impl Fn(u32, u32) -> u32) -> f32 {
+    pub(crate) fn sample_by(&self, dim: u32, sobol: impl Fn(u64, u32) -> u32) -> f32 {
+        if dim >= DIMS {
+            return self.padded(dim);
+        }
         if self.owen {
             return self.owen_sample(dim, sobol);
         }
-        let dim = dim % DIMS;
         let mut v = sobol(self.index, dim);
         if dim < 2 {
             // `m ≤ 16` (checked in `new`): keep the bits below the pixel's.
@@ -328,8 +330,7 @@ impl SobolSampler {
     /// digit-permuted paths stay as short as before the scrambles came (inlined, the match
     /// cost the camera sample 14 %).
     #[inline(never)]
-    fn owen_sample(&self, dim: u32, sobol: impl Fn(u32, u32) -> u32) -> f32 {
-        let dim = dim % DIMS;
+    fn owen_sample(&self, dim: u32, sobol: impl Fn(u64, u32) -> u32) -> f32 {
         let v = sobol(self.index, dim);
         let seed = if dim >= 2
             && let Some(&x) = self.scrambles.get((dim - 2) as usize)
@@ -343,18 +344,27 @@ impl SobolSampler {
         fraction_to_f32(scramble_u32(w, seed, self.scramble))
     }
 
+    /// A padding dimension (`dim >= 1024`) of the current sample.
+    #[inline(never)]
+    fn padded(&self, dim: u32) -> f32 {
+        fraction_to_f32(padded_u32(self.pad_key, u64::from(self.sample), dim))
+    }
+
     /// Dimensions `dim, dim + 1, …` into `out` as `sample` gives them, when they are a run of
-    /// dimensions 2 and up with cached scrambles and byte tables: one loop. `false`, with nothing
-    /// written, otherwise.
+    /// dimensions 2 and up with cached scrambles and byte tables at an index below 2³²: one
+    /// loop. `false`, with nothing written, otherwise.
     #[inline]
     fn batch(&self, dim: u32, out: &mut [f32]) -> bool {
-        let d = (dim % DIMS) as usize;
+        let d = dim as usize;
+        let Ok(index) = u32::try_from(self.index) else {
+            return false;
+        };
         !self.owen
             && d >= 2
             && self
                 .scrambles
                 .get(d - 2..)
-                .and_then(|shifts| sobol_run_f32(self.index, d, shifts, out))
+                .and_then(|shifts| sobol_run_f32(index, d, shifts, out))
                 .is_some()
     }
 }
@@ -377,7 +387,7 @@ fn xor_scramble(seed: u64, dim: u32) -> u32 {
 
 /// The top `m` bits of dimensions 0 and 1 of Sobol point `high`, interleaved.
 #[inline]
-fn have(high: u32, m: u32, sobol01: impl Fn(u32, u32) -> u32) -> u32 {
+fn have(high: u64, m: u32, sobol01: impl Fn(u64, u32) -> u32) -> u32 {
     top(sobol01(high, 0), m) | (top(sobol01(high, 1), m) << m)
 }
 
@@ -404,15 +414,17 @@ impl Sampler for SobolSampler {
         if pixel != self.pixel {
             self.pixel = pixel;
             self.pixel_low = apply_inverse(&self.inverse, self.want(pixel));
+            self.pad_key = self.pad_key_of(pixel);
         }
-        let (s, high) = self.sample_bits(sample_index);
+        let high = self.sample_bits(sample_index);
         let mut low = self.pixel_low;
-        let mut bits = s;
+        let mut bits = sample_index;
         while bits != 0 {
             low ^= self.sample_low[bits.trailing_zeros() as usize];
             bits &= bits - 1;
         }
-        self.index = high | low;
+        self.index = high | u64::from(low);
+        self.sample = sample_index;
         self.dim = dim;
     }
 
@@ -424,7 +436,10 @@ impl Sampler for SobolSampler {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sampler::tests::{consistent_values, is_zero_two_net, threads_agree};
+    use crate::sampler::tests::{
+        consistent_values, is_zero_two_net, progressive_nets, progressive_samples_are_distinct,
+        threads_agree,
+    };
 
     /// The in-pixel offset (`get_pixel_2d`, exact at any pixel coordinate, where `p_film` would
     /// round) and the next six dimensions of sample `i` of `pixel`.
@@ -435,6 +450,62 @@ mod tests {
         v
     }
     use std::vec::Vec;
+
+    /// Past the spp hint and past 32-bit indices: new samples, nets at every power of two.
+    #[test]
+    fn samples_past_the_hint_are_new_and_keep_the_nets() {
+        for scramble in Scramble::ALL {
+            let mut s = SobolSampler::new([64, 48], 4, scramble, 9).unwrap();
+            progressive_nets(&mut s, [5, 40], None, 12);
+            let mut big = SobolSampler::new([65536, 65536], 1, scramble, 9).unwrap();
+            // 2m = 32: every sample past the first needs index bits past 2^32.
+            assert!(big.sequence_index([7, 9], 1) >> 32 == 1);
+            progressive_nets(&mut big, [7, 9], None, 10);
+        }
+        let mut s = SobolSampler::new([640, 480], 16, Scramble::FastOwen, 3).unwrap();
+        assert_eq!(progressive_samples_are_distinct(&mut s, [100, 200]), 1 << 20);
+        let e = SobolSampler::new([65537, 4], 1, Scramble::None, 0).unwrap_err();
+        assert_eq!(
+            e,
+            Error::TooMany {
+                what: "resolution",
+                value: 65537,
+                max: 65536
+            }
+        );
+    }
+
+    /// Dimensions past 1024 are padding keyed by the pixel: (0, k, 2)-nets in each pixel, not
+    /// a repeat of dimension `d − 1024`.
+    #[test]
+    fn dimensions_past_1024_are_padded_per_pixel() {
+        for scramble in Scramble::ALL {
+            let mut s = SobolSampler::new([32, 32], 16, scramble, 4).unwrap();
+            // The padding's 4-D blocks start at multiples of 4: 4000 and 4001 are one block's
+            // first pair, an Owen-scrambled Sobol (0, 2)-sequence of the pixel's sample index.
+            let pairs: Vec<[f32; 2]> = (0..256)
+                .map(|i| {
+                    s.start_pixel_sample([3, 30], i, 4000);
+                    s.get_2d()
+                })
+                .collect();
+            for k in 0..=8 {
+                assert!(is_zero_two_net(&pairs[..1 << k]), "{scramble:?} {k}");
+            }
+            let values = |s: &mut SobolSampler, d: u32| -> Vec<f32> {
+                (0..16)
+                    .map(|i| {
+                        s.start_pixel_sample([3, 30], i, d);
+                        s.get_1d()
+                    })
+                    .collect()
+            };
+            assert_ne!(values(&mut s, 1030), values(&mut s, 6));
+            let a = values(&mut s, 2000);
+            s.start_pixel_sample([4, 30], 0, 0);
+            assert_eq!(values(&mut s, 2000), a);
+        }
+    }
 
     /// As documented: a pixel is read modulo the 2^m square; inside it every pixel has samples
     /// of its own (an 8 × 8 image: pixel (8, 0) is pixel (0, 0); a 6 × 6 image: pixels 6 and 7
@@ -568,8 +639,8 @@ mod tests {
                     hit[idx as usize] = true;
                     s.start_pixel_sample([x, y], i, 0);
                     let [u, v] = s.get_pixel_2d();
-                    let gx = f64::from(sobol_u32(idx, 0)) / 4_294_967_296.0 * 4.0;
-                    let gy = f64::from(sobol_u32(idx, 1)) / 4_294_967_296.0 * 4.0;
+                    let gx = f64::from(sobol_u64(idx, 0)) / 4_294_967_296.0 * 4.0;
+                    let gy = f64::from(sobol_u64(idx, 1)) / 4_294_967_296.0 * 4.0;
                     assert!((gx - f64::from(x) - f64::from(u)).abs() < 1e-6);
                     assert!((gy - f64::from(y) - f64::from(v)).abs() < 1e-6);
                 }
@@ -593,7 +664,7 @@ mod tests {
                 permuted.start_pixel_sample(pixel, i, 0);
                 for d in 0..40u32 {
                     let (a, b) = (plain.get_1d(), permuted.get_1d());
-                    let v = sobol_u32(idx, d);
+                    let v = sobol_u64(idx, d);
                     let want = if d < 2 { v << 2 } else { v };
                     assert_eq!(
                         a,

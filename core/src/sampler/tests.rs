@@ -450,3 +450,51 @@ fn a_far_end_offset_stays_at_the_far_end_of_its_pixel() {
     assert_eq!(c.p_film[0], film_coordinate(105, offset[0]));
     assert!(c.p_film[0] > 105.99, "{c:?} from offset {offset:?}");
 }
+
+/// The progressive contract past the spp hint: sample indices up to `2^20` of `pixel` give
+/// pairwise distinct first four dimensions (the image sample and the next pair), so no sample
+/// repeats an earlier one. Returns the number of samples checked.
+pub(crate) fn progressive_samples_are_distinct<S: Sampler>(s: &mut S, pixel: [u32; 2]) -> usize {
+    let n = 1u32 << 20;
+    let mut seen: Vec<[u32; 4]> = (0..n)
+        .map(|i| {
+            s.start_pixel_sample(pixel, i, 0);
+            let [a, b] = s.get_pixel_2d();
+            let [c, d] = s.get_2d();
+            [a, b, c, d].map(f32::to_bits)
+        })
+        .collect();
+    seen.sort_unstable();
+    let before = seen.len();
+    seen.dedup();
+    assert_eq!(seen.len(), before, "a sample repeats an earlier one");
+    before
+}
+
+/// The image samples (and, given `pair`, the 2D request at dimensions `pair`, `pair + 1`) of
+/// `pixel`'s first `2^k` samples are (0, k, 2)-nets for every `k ≤ max_k`, whatever the spp
+/// hint.
+pub(crate) fn progressive_nets<S: Sampler>(
+    s: &mut S,
+    pixel: [u32; 2],
+    pair: Option<u32>,
+    max_k: u32,
+) {
+    let (mut image, mut request) = (Vec::new(), Vec::new());
+    for i in 0..1u32 << max_k {
+        s.start_pixel_sample(pixel, i, 0);
+        image.push(s.get_pixel_2d());
+        if let Some(d) = pair {
+            s.start_pixel_sample(pixel, i, d);
+            request.push(s.get_2d());
+        }
+        if (i + 1).is_power_of_two() {
+            assert!(is_zero_two_net(&image), "image samples, {} samples", i + 1);
+            assert!(
+                pair.is_none() || is_zero_two_net(&request),
+                "dimensions {pair:?}, {} samples",
+                i + 1
+            );
+        }
+    }
+}

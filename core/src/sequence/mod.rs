@@ -37,7 +37,9 @@ pub use named::{
     randomization, takes_points,
 };
 pub use owen_sobol::OwenSobol;
-pub(crate) use owen_sobol::{DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32};
+pub(crate) use owen_sobol::{
+    DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32, padded_u32,
+};
 pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
 
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32, sobol_u64};
@@ -45,7 +47,10 @@ pub(crate) use sobol::{product as sobol_product, sobol_run_f32};
 // The generator matrices: stored, or with `lazy-tables` built at first use (the tests compile
 // both and compare them).
 #[cfg(all(feature = "lazy-tables", not(test)))]
-pub(crate) use sobol_lazy::{SOBOL_MATRICES, SOBOL_MATRICES_HI, matrix_rows as sobol_matrix_rows};
+pub(crate) use sobol_lazy::{
+    SOBOL_MATRICES, SOBOL_MATRICES_HI, matrix_rows as sobol_matrix_rows,
+    matrix_rows_hi as sobol_matrix_rows_hi,
+};
 #[cfg(any(not(feature = "lazy-tables"), test))]
 pub(crate) use sobol_table::{SOBOL_MATRICES, SOBOL_MATRICES_HI};
 pub use zero_two::ZeroTwo;

@@ -63,33 +63,40 @@ pub(crate) const fn matrix_rows(t: &mut [[u32; 32]]) {
 
 /// Rows `0 .. t.len()` (at most 1024) of the columns past 32 ([`SOBOL_MATRICES_HI`]): the same
 /// recurrence on 64-bit words (`V_k = m_k · 2^(64 − k)`, exact up to `k = 64`), each word's upper
-/// half for `k = 33 ..= 64`.
-pub(crate) fn matrix_rows_hi(t: &mut [[u32; 32]]) {
+/// half for `k = 33 ..= 64`. A `const fn`, so `compact::Sobol` bakes its few rows too.
+pub(crate) const fn matrix_rows_hi(t: &mut [[u32; 32]]) {
     let mut at = 0;
-    for (d, row) in t.iter_mut().enumerate().take(1024) {
+    let mut d = 0;
+    while d < t.len() && d < 1024 {
         // Dimension 0 (van der Corput) has no bits past 2^-32 in these columns: all zero.
-        if d == 0 {
-            continue;
-        }
-        let s = take(&mut at, 4) as usize;
-        let a = take(&mut at, s - 1);
-        let mut v = [0u64; 64];
-        for k in 0..64 {
-            v[k] = if k < s {
-                u64::from(2 * take(&mut at, k) + 1) << (63 - k)
-            } else {
-                let mut x = v[k - s] ^ (v[k - s] >> s);
-                for j in 1..s {
-                    if (a >> (s - 1 - j)) & 1 == 1 {
-                        x ^= v[k - j];
+        if d > 0 {
+            let s = take(&mut at, 4) as usize;
+            let a = take(&mut at, s - 1);
+            let mut v = [0u64; 64];
+            let mut k = 0;
+            while k < 64 {
+                v[k] = if k < s {
+                    ((2 * take(&mut at, k) + 1) as u64) << (63 - k)
+                } else {
+                    let mut x = v[k - s] ^ (v[k - s] >> s);
+                    let mut j = 1;
+                    while j < s {
+                        if (a >> (s - 1 - j)) & 1 == 1 {
+                            x ^= v[k - j];
+                        }
+                        j += 1;
                     }
-                }
-                x
-            };
+                    x
+                };
+                k += 1;
+            }
+            let mut k = 0;
+            while k < 32 {
+                t[d][k] = (v[32 + k] >> 32) as u32;
+                k += 1;
+            }
         }
-        for (out, w) in row.iter_mut().zip(&v[32..]) {
-            *out = (w >> 32) as u32;
-        }
+        d += 1;
     }
 }
 
@@ -146,6 +153,13 @@ mod tests {
     /// The columns past 32 built from the packed numbers equal the stored ones.
     #[test]
     fn high_columns_from_packed_directions_equal_the_stored_table() {
-        assert!(*SOBOL_MATRICES_HI == super::super::sobol_table::SOBOL_MATRICES_HI);
+        let stored = &super::super::sobol_table::SOBOL_MATRICES_HI;
+        assert!(*SOBOL_MATRICES_HI == *stored);
+        const FIRST: [[u32; 32]; 5] = {
+            let mut t = [[0; 32]; 5];
+            matrix_rows_hi(&mut t);
+            t
+        };
+        assert_eq!(FIRST, stored[..5]);
     }
 }
