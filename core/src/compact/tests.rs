@@ -111,14 +111,8 @@ fn sobol_and_owen_sobol_equal_the_table_paths_in_every_dimension() {
             assert_eq!(s.sample(i, d).to_bits(), ts.sample(i, d).to_bits());
             assert_eq!(shifted.sample_u32(i, d), tshifted.sample_u32(i, d));
             assert_eq!(owen.sample(i, d).to_bits(), towen.sample(i, d).to_bits());
-            assert_eq!(
-                owen.sample_u32(i, d),
-                towen.sample_u32(i, d)
-            );
-            assert_eq!(
-                owen.sample_4d(i, d),
-                towen.sample_4d(i, d)
-            );
+            assert_eq!(owen.sample_u32(i, d), towen.sample_u32(i, d));
+            assert_eq!(owen.sample_4d(i, d), towen.sample_4d(i, d));
         }
     }
 }
@@ -135,10 +129,7 @@ fn short_dimension_counts_wrap_like_the_table_paths() {
             assert_eq!(h.sample(i, d).to_bits(), th.sample(i, d).to_bits());
             assert_eq!(h.sample_f64(i, d).to_bits(), th.sample_f64(i, d).to_bits());
             assert_eq!(o.sample(i, d).to_bits(), to.sample(i, d).to_bits());
-            assert_eq!(
-                o.sample_4d(i, d),
-                to.sample_4d(i, d)
-            );
+            assert_eq!(o.sample_4d(i, d), to.sample_4d(i, d));
         }
     }
 }

@@ -463,7 +463,10 @@ mod tests {
             progressive_nets(&mut big, [7, 9], None, 10);
         }
         let mut s = SobolSampler::new([640, 480], 16, Scramble::FastOwen, 3).unwrap();
-        assert_eq!(progressive_samples_are_distinct(&mut s, [100, 200]), 1 << 20);
+        assert_eq!(
+            progressive_samples_are_distinct(&mut s, [100, 200]),
+            1 << 20
+        );
         let e = SobolSampler::new([65537, 4], 1, Scramble::None, 0).unwrap_err();
         assert_eq!(
             e,
