@@ -478,6 +478,10 @@ mod tests {
         );
     }
 
+    /// [`dimensions_past_1024_are_padded_per_pixel`]'s first padded value per scramble (its
+    /// `f32` bits without the low 12).
+    const PADDED_FIRST: [u32; 4] = [0x3ec64, 0x3e333, 0x3e333, 0x3e333];
+
     /// Dimensions past 1024 are padding keyed by the pixel: (0, k, 2)-nets in each pixel, not
     /// a repeat of dimension `d − 1024`.
     #[test]
@@ -495,18 +499,24 @@ mod tests {
             for k in 0..=8 {
                 assert!(is_zero_two_net(&pairs[..1 << k]), "{scramble:?} {k}");
             }
-            let values = |s: &mut SobolSampler, d: u32| -> Vec<f32> {
+            let values = |s: &mut SobolSampler, pixel: [u32; 2], d: u32| -> Vec<f32> {
                 (0..16)
                     .map(|i| {
-                        s.start_pixel_sample([3, 30], i, d);
+                        s.start_pixel_sample(pixel, i, d);
                         s.get_1d()
                     })
                     .collect()
             };
-            assert_ne!(values(&mut s, 1030), values(&mut s, 6));
-            let a = values(&mut s, 2000);
-            s.start_pixel_sample([4, 30], 0, 0);
-            assert_eq!(values(&mut s, 2000), a);
+            let a = values(&mut s, [3, 30], 2000);
+            assert_ne!(values(&mut s, [3, 30], 1030), values(&mut s, [3, 30], 6));
+            assert_ne!(values(&mut s, [4, 30], 2000), a);
+            assert_eq!(values(&mut s, [3, 30], 2000), a);
+            // Pinned: the padding's key is part of the sampler.
+            assert_eq!(
+                a[0].to_bits() >> 12,
+                PADDED_FIRST[scramble as usize],
+                "{scramble:?}"
+            );
         }
     }
 

@@ -720,6 +720,56 @@ mod tests {
         );
     }
 
+    /// Past 2³²: the Owen scramble of `sobol_u64` at the 64-bit shuffled index, for the
+    /// sequence's dimensions and for the padding (Sobol dimensions 0..3 of a block's own
+    /// shuffle, under the dimension's own seed).
+    #[test]
+    fn values_past_2_32_are_scrambled_sobol_u64_at_the_shuffled_index() {
+        use crate::sequence::sobol_u64;
+        let s = OwenSobol::new(3000, 42).unwrap();
+        let key = s.seeds.key();
+        for i in [
+            1u64 << 32,
+            (1 << 32) + 1,
+            0xabcd_ef01_2345_6789,
+            u64::MAX,
+            7,
+        ] {
+            let (r, hi) = s.shuffle.rev64(i);
+            let shuffled = (u64::from(hi) << 32) | u64::from(r.reverse_bits());
+            for d in [0u32, 1, 2, 17, 63, 64, 500, 1023] {
+                let v = sobol_u64(shuffled, d);
+                let want = lk_hash(v.reverse_bits(), s.seeds.get(d)).reverse_bits();
+                assert_eq!(s.sample_u32(i, d), want, "i {i} d {d}");
+            }
+            for d in [1024u32, 1027, 2999] {
+                let (r, hi) = IndexShuffle::new(dim_seed(!key, d / 4)).rev64(i);
+                let shuffled = (u64::from(hi) << 32) | u64::from(r.reverse_bits());
+                let v = sobol_u64(shuffled, d % 4);
+                let want = lk_hash(v.reverse_bits(), dim_seed(key, d)).reverse_bits();
+                assert_eq!(s.sample_u32(i, d), want, "i {i} d {d}");
+                assert_eq!(padded_u32(key, i, d), want);
+            }
+        }
+    }
+
+    /// The values past 2³² and in the padding, pinned: the shuffle's and the blocks' seed
+    /// derivations are part of the sequence (a renderer's images depend on them).
+    #[test]
+    fn values_past_2_32_and_padding_are_pinned() {
+        let s = OwenSobol::new(3000, 42).unwrap();
+        for (i, want) in [
+            (1u64 << 32, [0x84c9_a0b0, 0x1cff_06bf, 0xd96e_0605]),
+            (
+                0xabcd_ef01_2345_6789,
+                [0xf94b_104d, 0x3fa7_4c51, 0xc071_4805],
+            ),
+            (u64::MAX, [0xbecb_09f7, 0x87b7_463d, 0x34b3_30d7]),
+        ] {
+            assert_eq!([0, 5, 2000].map(|d| s.sample_u32(i, d)), want, "{i:#x}");
+        }
+    }
+
     #[test]
     fn dims_0_1_are_nets_and_every_dimension_is_stratified() {
         for seed in [0u64, 1, 5, 6, 10, 15, 0xdead_beef] {
