@@ -45,7 +45,7 @@ use crate::math::TWO_POW_MINUS_32;
 use crate::math::{ONE_MINUS_EPSILON, fraction_to_f32};
 use crate::radical::{PRIMES, fast_class, fast_limit, phi2, radical_inverse_f64};
 use crate::scramble::lk_hash;
-use crate::sequence::{IndexShuffle, Sequence, dim_seed, sobol_product};
+use crate::sequence::{IndexShuffle, Sequence, dim_seed, padded_u32_by, sobol_product};
 
 /// `N` is in `1 ..= 1024`, or the type does not compile.
 const fn check_dims<const N: usize>() {
@@ -577,6 +577,22 @@ const fn reversed_directions<const N: usize>() -> [[u32; 32]; N] {
         d += 1;
     }
     out
+}
+
+/// A padding dimension as [`padded_u32`](crate::sequence::padded_u32) gives it (`dim >= 1024`
+/// of the stream `key`), from Sobol dimensions 0..3 as compile-time constants (1 KiB, linked
+/// only where a padding dimension can be asked for) instead of the desktop byte tables.
+pub(crate) fn padded_u32(key: u32, index: u64, dim: u32) -> u32 {
+    const REVERSED: [[u32; 32]; 4] = reversed_directions::<4>();
+    const HI: [[u32; 32]; 4] = sobol_directions_hi::<4>();
+    padded_u32_by(key, index, dim, |d, (r, hi)| {
+        let p = sobol_product(&REVERSED[d], r);
+        if hi == 0 {
+            p
+        } else {
+            p ^ sobol_product(&HI[d], hi).reverse_bits()
+        }
+    })
 }
 
 impl<const N: usize> OwenSobol<N> {

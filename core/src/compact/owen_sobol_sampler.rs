@@ -1,9 +1,10 @@
 //! [`OwenSobolSampler<N>`]: the desktop Owen-Sobol pixel sampler with its first `N` dimensions'
 //! direction numbers as constants instead of the byte tables.
 
-use super::{check_dims, reversed_directions, wrap};
+use super::{check_dims, padded_u32, reversed_directions, wrap};
 use crate::Error;
 use crate::sampler::{self, Sampler};
+use crate::math::fraction_to_f32;
 use crate::scramble::{lk_hash, rev_to_f32};
 use crate::sequence::sobol_product;
 
@@ -14,9 +15,9 @@ use crate::sequence::sobol_product;
 /// The per-pixel hashing (index shuffle, scramble seeds) is the desktop sampler's own; the
 /// values come from the `N` dimensions' direction numbers, computed at compile time (128 bytes
 /// per dimension), by a 32-column masked XOR and a hash each, where the desktop sampler reads
-/// 1 MB of byte tables. Dimension `d >= N` takes the direction numbers of `d mod N` under its
-/// own scramble, as the desktop sampler does past its 1024 dimensions: with `N = 1024` every
-/// dimension is the desktop sampler's. A camera sample and an integrator's first few values
+/// 1 MB of byte tables. A dimension `N ≤ d < 1024` takes the direction numbers of `d mod N`
+/// under its own scramble; from 1024 on, dimensions are the desktop sampler's padding, computed
+/// from four dimensions' constants: with `N = 1024` every dimension is the desktop sampler's. A camera sample and an integrator's first few values
 /// need `N = 8` (dimensions 0 to 7). Allocates: no.
 ///
 /// ```
@@ -87,6 +88,10 @@ impl<const N: usize> OwenSobolSampler<N> {
     /// Dimension `dim` of the current sample.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, dim: u32) -> f32 {
+        if dim >= 1024 {
+            let (key, index) = (self.inner.seeds.key(), u64::from(self.inner.index));
+            return fraction_to_f32(padded_u32(key, index, dim));
+        }
         let columns = &Self::REVERSED[wrap::<N>(dim)];
         rev_to_f32(lk_hash(
             sobol_product(columns, self.inner.r),

@@ -517,3 +517,38 @@ fn halton_sampler_equals_the_desktop_sampler_at_the_largest_pixels() {
         }
     }
 }
+
+/// From dimension 1024 on, the compact samplers give the desktop samplers' padding, whatever
+/// `N`: the four dimensions' constants reproduce the tables bit for bit.
+#[test]
+fn padding_dimensions_equal_the_desktop_samplers() {
+    for how in Scramble::ALL {
+        let mut small = SobolSampler::<5>::new([64, 48], 4, how, 3).unwrap();
+        let mut desk = crate::sampler::SobolSampler::new([64, 48], 4, how, 3).unwrap();
+        let mut owen = OwenSobolSampler::<4>::new(8, 3).unwrap();
+        let mut owen_desk = crate::sampler::OwenSobolSampler::new(8, 3).unwrap();
+        for (pixel, i) in [([0u32, 0u32], 0u32), ([63, 47], 9), ([5, 9], 1 << 20)] {
+            for d in [1024u32, 1027, 2000, 1 << 20, u32::MAX - 1] {
+                for (a, b) in [
+                    (&mut small as &mut dyn Sampler, &mut desk as &mut dyn Sampler),
+                    (&mut owen, &mut owen_desk),
+                ] {
+                    a.start_pixel_sample(pixel, i, d);
+                    b.start_pixel_sample(pixel, i, d);
+                    assert_eq!(a.get_2d(), b.get_2d(), "{how:?} {pixel:?} {i} {d}");
+                }
+            }
+        }
+    }
+}
+
+proptest::proptest! {
+    /// The compact padding equals the desktop's for any key, index and dimension.
+    #[test]
+    fn compact_padding_equals_the_desktop_padding(key: u32, index: u64, dim in 1024u32..) {
+        proptest::prop_assert_eq!(
+            super::padded_u32(key, index, dim),
+            crate::sequence::padded_u32(key, index, dim)
+        );
+    }
+}

@@ -133,7 +133,7 @@ impl<const N: usize> SobolSampler<N> {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, dim: u32) -> f32 {
-        self.inner.sample_by(dim, Self::sobol)
+        self.inner.sample_by(dim, Self::sobol, super::padded_u32)
     }
 }
 

@@ -4,7 +4,8 @@
 use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::hash::{hash_slice, mix32};
-use crate::sequence::{DimSeeds, IndexShuffle, owen_sobol_rev_f32};
+use crate::math::fraction_to_f32;
+use crate::sequence::{DimSeeds, IndexShuffle, SOBOL_DIMS, owen_sobol_rev_f32, padded_u32};
 
 /// Dimensions whose scramble seeds are hashed once per pixel: the camera's five.
 const CACHED: usize = 5;
@@ -24,7 +25,10 @@ const CACHED: usize = 5;
 /// - every sample index (all of `u32`) is a new point; `spp` is what the sampler reports, not a
 ///   wrap.
 ///
-/// Dimensions past 1023 reuse the Sobol matrix of `dim mod 1024` under their own scramble.
+/// Dimensions from 1024 on are padding (Burley 2020, §6): independently seeded Owen-scrambled
+/// 4-D blocks of the sample index under the pixel's key, as
+/// [`OwenSobol`](crate::sequence::OwenSobol) pads, so they too are nets in every pixel and no
+/// dimension repeats a lower one.
 ///
 /// ```
 /// use nyquist::sampler::{OwenSobolSampler, Sampler};
@@ -46,8 +50,9 @@ pub struct OwenSobolSampler {
     pixel: Option<[u32; 2]>,
     shuffle: IndexShuffle,
     pub(crate) seeds: DimSeeds<CACHED>,
-    /// The current sample's reversed shuffled index.
+    /// The current sample's reversed shuffled index, and the sample index itself.
     pub(crate) r: u32,
+    pub(crate) index: u32,
     dim: u32,
 }
 
@@ -72,6 +77,7 @@ impl OwenSobolSampler {
             shuffle: IndexShuffle::default(),
             seeds: DimSeeds::new(0),
             r: 0,
+            index: 0,
             dim: 0,
         })
     }
@@ -108,7 +114,16 @@ impl OwenSobolSampler {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, dim: u32) -> f32 {
+        if dim >= SOBOL_DIMS {
+            return self.padded(dim);
+        }
         owen_sobol_rev_f32(self.r, dim, self.seeds.get(dim))
+    }
+
+    /// A padding dimension (`dim >= 1024`) of the current sample.
+    #[inline(never)]
+    fn padded(&self, dim: u32) -> f32 {
+        fraction_to_f32(padded_u32(self.seeds.key(), u64::from(self.index), dim))
     }
 
     /// Dimensions `dim, dim + 1, …` into `out`: always one run.
@@ -142,6 +157,7 @@ impl Sampler for OwenSobolSampler {
             self.seeds = DimSeeds::new(h as u32);
         }
         self.r = self.shuffle.rev(sample_index);
+        self.index = sample_index;
         self.dim = dim;
     }
 
@@ -173,6 +189,32 @@ mod tests {
     use crate::sampler::tests::{
         arrays_are_values_in_order, consistent_values, is_zero_two_net, record, threads_agree,
     };
+
+    /// Past 1024 dimensions: each padded block's first pair is a (0, k, 2)-net in every pixel,
+    /// the pixels differ, and no dimension repeats the one 1024 below it. Any sample index is
+    /// a new sample.
+    #[test]
+    fn padding_and_samples_past_the_hint() {
+        let mut s = OwenSobolSampler::new(4, 11).unwrap();
+        let pair = |s: &mut OwenSobolSampler, pixel: [u32; 2], d: u32| -> Vec<[f32; 2]> {
+            (0..256)
+                .map(|i| {
+                    s.start_pixel_sample(pixel, i, d);
+                    s.get_2d()
+                })
+                .collect()
+        };
+        let a = pair(&mut s, [3, 4], 5000);
+        for k in 0..=8 {
+            assert!(is_zero_two_net(&a[..1 << k]), "{k}");
+        }
+        assert_ne!(pair(&mut s, [3, 5], 5000), a);
+        assert_ne!(pair(&mut s, [3, 4], 5000 - 1024), a);
+        assert_eq!(a[0][0].to_bits() >> 12, 0x3f203, "pinned");
+        crate::sampler::tests::progressive_nets(&mut s, [7, 7], None, 12);
+        let n = crate::sampler::tests::progressive_samples_are_distinct(&mut s, [7, 7]);
+        assert_eq!(n, 1 << 20);
+    }
     use std::vec::Vec;
 
     #[test]

@@ -301,15 +301,21 @@ impl SobolSampler {
 
     #[inline]
     fn sample(&self, dim: u32) -> f32 {
-        self.sample_by(dim, sobol_u64)
+        self.sample_by(dim, sobol_u64, padded_u32)
     }
 
     /// Dimension `dim` of the current sample, with `sobol(index, d)` (`d < 1024`, equal to
-    /// [`sobol_u64`] for the desktop sampler) the source of the Sobol values.
+    /// [`sobol_u64`] for the desktop sampler) the source of the Sobol values and `pad` (equal
+    /// to [`padded_u32`]) that of the padding dimensions.
     #[inline]
-    pub(crate) fn sample_by(&self, dim: u32, sobol: impl Fn(u64, u32) -> u32) -> f32 {
+    pub(crate) fn sample_by(
+        &self,
+        dim: u32,
+        sobol: impl Fn(u64, u32) -> u32,
+        pad: impl Fn(u32, u64, u32) -> u32,
+    ) -> f32 {
         if dim >= DIMS {
-            return self.padded(dim);
+            return self.padded(dim, pad);
         }
         if self.owen {
             return self.owen_sample(dim, sobol);
@@ -344,10 +350,10 @@ impl SobolSampler {
         fraction_to_f32(scramble_u32(w, seed, self.scramble))
     }
 
-    /// A padding dimension (`dim >= 1024`) of the current sample.
+    /// A padding dimension (`dim >= 1024`) of the current sample, through `pad`.
     #[inline(never)]
-    fn padded(&self, dim: u32) -> f32 {
-        fraction_to_f32(padded_u32(self.pad_key, u64::from(self.sample), dim))
+    fn padded(&self, dim: u32, pad: impl Fn(u32, u64, u32) -> u32) -> f32 {
+        fraction_to_f32(pad(self.pad_key, u64::from(self.sample), dim))
     }
 
     /// Dimensions `dim, dim + 1, …` into `out` as `sample` gives them, when they are a run of

@@ -37,7 +37,9 @@ pub use named::{
     randomization, takes_points,
 };
 pub use owen_sobol::OwenSobol;
-pub(crate) use owen_sobol::{DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32, padded_u32};
+pub(crate) use owen_sobol::{
+    DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32, padded_u32, padded_u32_by,
+};
 pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
 
 pub use sobol::{SOBOL_DIMS, Sobol, sobol_u32, sobol_u64};

@@ -282,18 +282,24 @@ pub(crate) fn owen_sobol_rev_u32(shuffled_rev: u32, dim: u32, dim_seed: u32) -> 
 }
 
 /// The Owen-scrambled Sobol value of dimension `dim < 1024` at a shuffled 64-bit index given as
-/// [`IndexShuffle::rev64`] splits it, as a 32-bit fraction: the low half through the 32
-/// columns, the upper half through the columns past 32 ([`SOBOL_MATRICES_HI`]). Equal to
-/// [`owen_sobol_rev_u32`] when `hi` is 0.
+/// [`IndexShuffle::rev64`] splits it, as a 32-bit fraction. Equal to [`owen_sobol_rev_u32`]
+/// when the upper half is 0.
 #[inline]
 pub(crate) fn owen_sobol_u64(shuffled: (u32, u32), dim: u32, dim_seed: u32) -> u32 {
-    let (lo_rev, hi) = shuffled;
-    let d = (dim as usize) & 1023;
-    let mut rev = product_rev(d, lo_rev);
-    if hi != 0 {
-        rev ^= product(&SOBOL_MATRICES_HI[d], hi).reverse_bits();
+    lk_hash(product_rev64((dim as usize) & 1023, shuffled), dim_seed).reverse_bits()
+}
+
+/// The bit-reversed Sobol product of dimension `d < 1024` at a shuffled 64-bit index split as
+/// [`IndexShuffle::rev64`] splits it: the low half through the 32 columns, the upper half
+/// through the columns past 32 ([`SOBOL_MATRICES_HI`]).
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn product_rev64(d: usize, (lo_rev, hi): (u32, u32)) -> u32 {
+    let p = product_rev(d, lo_rev);
+    if hi == 0 {
+        p
+    } else {
+        p ^ product(&SOBOL_MATRICES_HI[d], hi).reverse_bits()
     }
-    lk_hash(rev, dim_seed).reverse_bits()
 }
 
 /// A padding dimension (Burley 2020, §6): dimension `dim` of point `index` from the
@@ -305,8 +311,22 @@ pub(crate) fn owen_sobol_u64(shuffled: (u32, u32), dim: u32, dim_seed: u32) -> u
 /// is a copy of another under a different scramble, as a wrap modulo 1024 would make it.
 #[inline]
 pub(crate) fn padded_u32(key: u32, index: u64, dim: u32) -> u32 {
+    padded_u32_by(key, index, dim, |d, shuffled| product_rev64(d, shuffled))
+}
+
+/// [`padded_u32`] with the bit-reversed product of Sobol dimension `d < 4` at a split shuffled
+/// index ([`IndexShuffle::rev64`]) given by `product_rev`: the compact samplers pass their
+/// constant rows.
+#[inline]
+pub(crate) fn padded_u32_by(
+    key: u32,
+    index: u64,
+    dim: u32,
+    product_rev: impl Fn(usize, (u32, u32)) -> u32,
+) -> u32 {
     let shuffle = IndexShuffle::new(dim_seed(!key, dim >> 2));
-    owen_sobol_u64(shuffle.rev64(index), dim & 3, dim_seed(key, dim))
+    let p = product_rev((dim & 3) as usize, shuffle.rev64(index));
+    lk_hash(p, dim_seed(key, dim)).reverse_bits()
 }
 
 /// As [`owen_sobol_rev_u32`], as an `f32` (top 24 bits, truncated).
