@@ -4,7 +4,7 @@
 use super::{Halton, round_bits, scale};
 use crate::Error;
 use crate::hash::{self, Permutation, mix64, packed_entry, packed_table};
-use crate::math::ONE_MINUS_EPSILON;
+use crate::math::{ONE_MINUS_EPSILON, fraction_to_f32};
 #[cfg(doc)]
 use crate::sampler;
 use crate::sampler::Sampler;
@@ -350,7 +350,13 @@ impl<const N: usize> HaltonSampler<N> {
     /// Dimension `dim` of the current sample.
     #[inline(never)]
     fn sample(&self, dim: u32) -> f32 {
-        let d = dim % 1024;
+        if dim >= 1024 {
+            // The desktop sampler's padding, from four dimensions' constants.
+            let key = crate::sampler::padding_key(u64::from(self.offset), self.seed);
+            let s = (self.index - u64::from(self.offset)) / u64::from(self.stride);
+            return fraction_to_f32(super::padded_u32(key, s, dim));
+        }
+        let d = dim;
         let a = match d {
             0 => self.axis_index[0],
             1 => self.axis_index[1],

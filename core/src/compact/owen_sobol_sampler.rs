@@ -3,8 +3,8 @@
 
 use super::{check_dims, padded_u32, reversed_directions, wrap};
 use crate::Error;
-use crate::sampler::{self, Sampler};
 use crate::math::fraction_to_f32;
+use crate::sampler::{self, Sampler};
 use crate::scramble::{lk_hash, rev_to_f32};
 use crate::sequence::sobol_product;
 

@@ -527,11 +527,17 @@ fn padding_dimensions_equal_the_desktop_samplers() {
         let mut desk = crate::sampler::SobolSampler::new([64, 48], 4, how, 3).unwrap();
         let mut owen = OwenSobolSampler::<4>::new(8, 3).unwrap();
         let mut owen_desk = crate::sampler::OwenSobolSampler::new(8, 3).unwrap();
+        let mut halton = HaltonSampler::<5>::new([64, 48], 4, how, 3).unwrap();
+        let mut halton_desk = crate::sampler::HaltonSampler::new([64, 48], 4, how, 3).unwrap();
         for (pixel, i) in [([0u32, 0u32], 0u32), ([63, 47], 9), ([5, 9], 1 << 20)] {
             for d in [1024u32, 1027, 2000, 1 << 20, u32::MAX - 1] {
                 for (a, b) in [
-                    (&mut small as &mut dyn Sampler, &mut desk as &mut dyn Sampler),
+                    (
+                        &mut small as &mut dyn Sampler,
+                        &mut desk as &mut dyn Sampler,
+                    ),
                     (&mut owen, &mut owen_desk),
+                    (&mut halton, &mut halton_desk),
                 ] {
                     a.start_pixel_sample(pixel, i, d);
                     b.start_pixel_sample(pixel, i, d);

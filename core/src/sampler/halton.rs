@@ -33,8 +33,10 @@ fn mod_inverse(a: u64, n: u64) -> u64 {
 /// unique value modulo `2^j·3^k` whose last `j` base-2 digits reversed are `p.x mod 2^j` and last
 /// `k` base-3 digits reversed are `p.y mod 3^k` (Chinese remainder theorem with inverses computed
 /// at construction). The image sample is `(Φ₂(idx >> j), Φ₃(idx / 3^k))` — the exact fractional
-/// part of the scaled radical inverses; dimension `d ≥ 2` is `Φ_{prime(d)}(idx)` (dimensions
-/// wrap modulo 1024).
+/// part of the scaled radical inverses; dimension `2 ≤ d < 1024` is `Φ_{prime(d)}(idx)`.
+/// Dimensions from 1024 on are padding (Burley 2020, §6): independently seeded Owen-scrambled
+/// 4-D blocks of the pixel's sample index `s`, keyed by `h(p)` and the seed, so they are nets
+/// inside each pixel and no dimension repeats a lower one.
 ///
 /// Scrambling ([`Scramble`]) applies to every dimension. In dimensions 0 and 1 it
 /// scrambles the in-pixel values `Φ₂(idx >> j)` and `Φ₃(idx / 3^k)`, the same way for every
@@ -202,7 +204,6 @@ impl HaltonSampler {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn sample(&self, dim: u32) -> f32 {
-        let dim = dim % 1024;
         match dim {
             0 => self.value(0, self.axis_index[0]),
             1 => self.value(1, self.axis_index[1]),
@@ -211,8 +212,17 @@ impl HaltonSampler {
             2 if self.scramble == Scramble::None => radical_inverse_inlined(2, self.index),
             3 if self.scramble == Scramble::None => radical_inverse_inlined(3, self.index),
             4 if self.scramble == Scramble::None => radical_inverse_inlined(4, self.index),
-            _ => self.value(dim, self.index),
+            ..1024 => self.value(dim, self.index),
+            _ => self.padded(dim),
         }
+    }
+
+    /// A padding dimension (`dim >= 1024`) of the current sample.
+    #[inline(never)]
+    fn padded(&self, dim: u32) -> f32 {
+        let key = super::padding_key(self.offset, self.seed);
+        let s = (self.index - self.offset) / self.stride;
+        crate::math::fraction_to_f32(crate::sequence::padded_u32(key, s, dim))
     }
 
     /// Dimensions `dim, dim + 1, …` into `out` as `sample` gives them, when they are a run of
@@ -221,8 +231,10 @@ impl HaltonSampler {
     /// `false`, with nothing written, otherwise.
     #[inline]
     fn batch(&self, dim: u32, out: &mut [f32]) -> bool {
-        let d = dim % 1024;
-        let fits = self.scramble == Scramble::None && d >= 2 && d as usize + out.len() <= 1024;
+        let d = dim;
+        let fits = self.scramble == Scramble::None
+            && d >= 2
+            && (d as usize).saturating_add(out.len()) <= 1024;
         if fits {
             radical_inverse_dims(d, self.index, out);
         }
@@ -282,6 +294,16 @@ mod tests {
     use super::*;
     use crate::radical::radical_inverse;
     use crate::sampler::tests::{consistent_values, threads_agree};
+
+    /// Dimensions past 1024: padding, per pixel (repeated where the pixels repeat).
+    #[test]
+    fn dimensions_past_1024_are_padded_per_pixel() {
+        for scramble in Scramble::ALL {
+            let mut s = HaltonSampler::new([300, 200], 4, scramble, 7).unwrap();
+            let [sx, sy] = s.scales().map(|v| v as u32);
+            crate::sampler::tests::padding_holds(&mut s, [5, 6], [6, 6], [5 + sx, 6 + sy], 64);
+        }
+    }
 
     /// The in-pixel offset (`get_pixel_2d`, exact at any pixel coordinate, where `p_film` would
     /// round) and the next six dimensions of sample `i` of `pixel`.

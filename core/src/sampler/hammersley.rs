@@ -20,9 +20,12 @@ use crate::scramble::Scramble;
 /// `(px, py, s) ↦ k` is a bijection onto `0..N`: the pixels' samples together are exactly the
 /// Hammersley set (the rows `py ≥ height` of the padding are never asked for).
 ///
-/// Dimension `d ≥ 2` is `Φ_{prime(d − 1)}(k)` (base 3, 5, …; wrapping after 1024 bases),
-/// scrambled under `seed` by the [`Scramble`] chosen (as the Halton sampler's dimensions are;
-/// dimensions 0 and 1 are never scrambled: they place the sample in its pixel). `sample_index >= spp` wraps modulo `spp`,
+/// Dimension `2 ≤ d < 1024` is `Φ_{prime(d − 1)}(k)` (base 3, 5, …), scrambled under `seed` by
+/// the [`Scramble`] chosen (as the Halton sampler's dimensions are;
+/// dimensions 0 and 1 are never scrambled: they place the sample in its pixel). Dimensions from
+/// 1024 on are padding (Burley 2020, §6): independently seeded Owen-scrambled 4-D blocks of the
+/// sample's number in its pixel, keyed by the pixel and the seed. `sample_index >= spp` wraps
+/// modulo `spp`,
 /// `px >= width` modulo `width` and `py` modulo `H`, so every pixel argument addresses a point of
 /// the set. Index arithmetic is `u64` (`N` reaches 2⁴⁴ at 16384² pixels × 65536 spp);
 /// [`HammersleySampler::new`] refuses sizes whose `N` would not fit.
@@ -128,8 +131,9 @@ impl HammersleySampler {
         match dim {
             0 => self.film_x,
             1 => radical_inverse(0, self.k >> self.j),
+            1024.. => self.padded(dim),
             _ => {
-                let d = (dim - 1) % 1024;
+                let d = dim - 1;
                 match self.scramble {
                     Scramble::None => radical_inverse(d, self.k),
                     Scramble::PermuteDigits => scrambled_radical_inverse(d, self.k, self.seed),
@@ -138,6 +142,18 @@ impl HammersleySampler {
                 }
             }
         }
+    }
+}
+
+impl HammersleySampler {
+    /// A padding dimension (`dim >= 1024`) of the current sample: the pixel is the point's
+    /// index without its sample bits, the sample its number in the pixel.
+    #[inline(never)]
+    fn padded(&self, dim: u32) -> f32 {
+        // k = px·column + rev_j(py) + s·2^j with rev_j(py) < 2^j and s·2^j < column.
+        let s = (self.k % self.column) >> self.j;
+        let key = super::padding_key(self.k - (s << self.j), self.seed);
+        crate::math::fraction_to_f32(crate::sequence::padded_u32(key, s, dim))
     }
 }
 
@@ -165,6 +181,15 @@ impl Sampler for HammersleySampler {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Dimensions past 1024: padding, per pixel (repeated where the pixels repeat).
+    #[test]
+    fn dimensions_past_1024_are_padded_per_pixel() {
+        for scramble in Scramble::ALL {
+            let mut s = HammersleySampler::new([20, 10], 64, scramble, 7).unwrap();
+            crate::sampler::tests::padding_holds(&mut s, [5, 6], [6, 6], [25, 6], 64);
+        }
+    }
 
     /// Found by the fuzzer: pixels past the width overflowed the index; they wrap now.
     #[test]

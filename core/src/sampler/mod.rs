@@ -440,6 +440,15 @@ pub(crate) fn check_image(resolution: [u32; 2], spp: u32) -> Result<(), crate::E
     Ok(())
 }
 
+/// The key of a pixel's padding dimensions (those from 1024 on, [`crate::sequence::padded_u32`])
+/// in the global samplers: a hash of `pixel_id`, a number each sampler gives its pixels after
+/// its own wrapping of their coordinates (so pixels it repeats repeat their padding too), and
+/// the seed.
+#[inline]
+pub(crate) fn padding_key(pixel_id: u64, seed: u64) -> u32 {
+    (crate::hash::hash3(pixel_id, 0x5041_4444, seed) >> 32) as u32 // "PADD"
+}
+
 /// Hash of a pixel's coordinates with two more words (dimension, seed, …).
 #[inline]
 pub(crate) fn pixel_hash(pixel: [u32; 2], a: u64, b: u64) -> u64 {

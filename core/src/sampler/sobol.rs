@@ -70,7 +70,7 @@ pub struct SobolSampler {
     /// integrator dimensions), hashed once.
     scrambles: [u32; SCRAMBLES],
     index: u64,
-    /// The current pixel's key for the padding dimensions (a hash of pixel and seed), and the
+    /// The current pixel's key for the padding dimensions ([`super::padding_key`]), and the
     /// sample's number in the pixel.
     pad_key: u32,
     sample: u32,
@@ -276,9 +276,9 @@ impl SobolSampler {
         u64::from(s) << (2 * self.m)
     }
 
-    /// The padding key of `pixel`.
+    /// The padding key of `pixel`, from its coordinates modulo `2^m`.
     fn pad_key_of(&self, pixel: [u32; 2]) -> u32 {
-        (super::pixel_hash(pixel, 0x5041_4444, self.seed) >> 32) as u32 // "PADD"
+        super::padding_key(u64::from(self.want(pixel)), self.seed)
     }
 
     /// The pixel's low coordinate bits, interleaved as the index search wants them.
@@ -447,6 +447,15 @@ mod tests {
         threads_agree,
     };
 
+    /// Dimensions past 1024: padding, per pixel (repeated where the pixels repeat).
+    #[test]
+    fn padding_repeats_where_the_pixels_repeat() {
+        for scramble in Scramble::ALL {
+            let mut s = SobolSampler::new([8, 8], 4, scramble, 7).unwrap();
+            crate::sampler::tests::padding_holds(&mut s, [5, 6], [6, 6], [13, 14], 64);
+        }
+    }
+
     /// The in-pixel offset (`get_pixel_2d`, exact at any pixel coordinate, where `p_film` would
     /// round) and the next six dimensions of sample `i` of `pixel`.
     fn record(s: &mut impl Sampler, pixel: [u32; 2], i: u32) -> Vec<f32> {
@@ -486,7 +495,7 @@ mod tests {
 
     /// [`dimensions_past_1024_are_padded_per_pixel`]'s first padded value per scramble (its
     /// `f32` bits without the low 12).
-    const PADDED_FIRST: [u32; 4] = [0x3ec64, 0x3e333, 0x3e333, 0x3e333];
+    const PADDED_FIRST: [u32; 4] = [0x3f1af, 0x3dc1a, 0x3dc1a, 0x3dc1a];
 
     /// Dimensions past 1024 are padding keyed by the pixel: (0, k, 2)-nets in each pixel, not
     /// a repeat of dimension `d − 1024`.

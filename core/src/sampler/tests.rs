@@ -498,3 +498,37 @@ pub(crate) fn progressive_nets<S: Sampler>(
         }
     }
 }
+
+/// The padding dimensions (from 1024 on) of a sampler at `pixel`: each block's first pair a
+/// (0, k, 2)-net over the pixel's first `2^k ≤ n` samples, not the values 1024 dimensions
+/// below, different in `other` pixel, and the same in `same` pixel (one the sampler wraps onto
+/// `pixel`, or `pixel` itself).
+pub(crate) fn padding_holds<S: Sampler>(
+    s: &mut S,
+    pixel: [u32; 2],
+    other: [u32; 2],
+    same: [u32; 2],
+    n: u32,
+) {
+    let mut pair = |p: [u32; 2], d: u32| -> Vec<[f32; 2]> {
+        (0..n)
+            .map(|i| {
+                s.start_pixel_sample(p, i, d);
+                s.get_2d()
+            })
+            .collect()
+    };
+    for d in [1024u32, 5000, 1 << 30] {
+        let a = pair(pixel, d);
+        for k in 0..=n.trailing_zeros() {
+            assert!(
+                is_zero_two_net(&a[..1 << k]),
+                "dimension {d}, {} samples",
+                1 << k
+            );
+        }
+        assert_ne!(pair(pixel, d - 1024), a, "dimension {d}");
+        assert_ne!(pair(other, d), a, "dimension {d}");
+        assert_eq!(pair(same, d), a, "dimension {d}");
+    }
+}
