@@ -213,8 +213,8 @@ fn reversed_digits(b: u32, mut x: u32, n: u32) -> u32 {
 /// desktop sampler's (pixel `p`'s samples are the indices `h(p) + s·2^j·3^k`), computed in
 /// 32-bit arithmetic.
 ///
-/// As in the desktop sampler dimension `d` is read as `d mod 1024`; past `N` of those, `d`
-/// takes the base of dimension `2 + (d − 2) mod (N − 2)` (never bases 2 and 3 of the pixel) and
+/// Dimensions from 1024 on are the desktop sampler's padding (from four dimensions' Sobol
+/// constants, 1 KiB). A dimension `N ≤ d < 1024` takes the base of dimension `2 + (d − 2) mod (N − 2)` (never bases 2 and 3 of the pixel) and
 /// its own scramble: the nested scrambles key on `d`, digit permutations on a seed hashed
 /// from `(seed, d)`; unscrambled, such a dimension repeats the values of the one whose base
 /// it takes. With `N = 1024` every dimension is the desktop sampler's. A camera sample and an
