@@ -1,15 +1,28 @@
 //! [`ZSobolSampler`]: the desktop ZSobol sampler with Sobol dimensions 0 and 1 from their
 //! direction numbers instead of the byte tables.
 
-use super::sobol_directions;
+use super::{sobol_directions, sobol_directions_hi};
 use crate::Error;
 use crate::math::fraction_to_f32;
 use crate::sampler::{self, Sampler, zsobol_key_seed, zsobol_scramble_dim0};
 use crate::scramble::{Scramble, lk_hash, rev_to_f32, scramble_u32};
 use crate::sequence::sobol_product;
 
-/// Sobol dimension 1's direction numbers.
+/// Sobol dimension 1's direction numbers, and its columns past 32.
 const SOBOL1: [u32; 32] = sobol_directions::<2>()[1];
+const SOBOL1_HI: [u32; 32] = sobol_directions_hi::<2>()[1];
+
+/// Sobol dimension 1 at a 64-bit index: the columns past 32 only where the upper half is set.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn sobol1(index: u64) -> u32 {
+    let (lo, hi) = (index as u32, (index >> 32) as u32);
+    let low = sobol_product(&SOBOL1, lo);
+    if hi == 0 {
+        low
+    } else {
+        low ^ sobol_product(&SOBOL1_HI, hi)
+    }
+}
 
 /// [`SOBOL1`] with each column bit-reversed: the product over an index's bits is the reversed
 /// value.
@@ -28,7 +41,7 @@ const SOBOL1_REVERSED: [u32; 32] = {
 /// seed, pixel, sample index and dimension.
 ///
 /// The Morton-order index permutation is the desktop sampler's own (it needs no table); the
-/// sampler reads only Sobol dimensions 0 and 1, which here come from 32 direction numbers
+/// sampler reads only Sobol dimensions 0 and 1, which here come from 64 direction numbers
 /// (dimension 0 is the index reversed) where the desktop sampler reads the Sobol byte tables
 /// and a 4 KiB reversed table. Allocates: no.
 ///
@@ -97,18 +110,18 @@ impl ZSobolSampler {
     /// ```
     /// use nyquist::{compact::ZSobolSampler, scramble::Scramble};
     /// let s = ZSobolSampler::new([2, 2], 1, Scramble::None, 3).unwrap();
-    /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0, 7)).collect();
+    /// let mut all: Vec<u64> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0, 7)).collect();
     /// all.sort();
     /// assert_eq!(all, [0, 1, 2, 3]);
     /// ```
-    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32, dim: u32) -> u32 {
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32, dim: u32) -> u64 {
         self.inner.sequence_index(pixel, sample_index, dim)
     }
 
     /// The request's index and key, out of line: one copy of the index permutation serves the
     /// 1D and 2D requests.
     #[inline(never)]
-    fn index(&self, dim: u32) -> (u32, u64) {
+    fn index(&self, dim: u32) -> (u64, u64) {
         self.inner.index(dim)
     }
 
@@ -116,6 +129,7 @@ impl ZSobolSampler {
     #[inline]
     fn value_1d(&self, dim: u32) -> f32 {
         let (index, key) = self.index(dim);
+        let index = index as u32; // Sobol dimension 0 reads the low half only.
         let how = self.inner.scramble();
         if how == Scramble::FastOwen {
             return rev_to_f32(lk_hash(index, key as u32));
@@ -126,18 +140,21 @@ impl ZSobolSampler {
     /// The 2D request at `dim`: Sobol dimensions 0 and 1 at the request's index, scrambled.
     #[inline]
     fn value_2d(&self, dim: u32) -> [f32; 2] {
-        let (index, key) = self.index(dim);
+        let (wide, key) = self.index(dim);
+        let index = wide as u32;
         let how = self.inner.scramble();
         if how == Scramble::FastOwen {
+            let rev = if wide >> 32 == 0 {
+                sobol_product(&SOBOL1_REVERSED, index)
+            } else {
+                sobol1(wide).reverse_bits()
+            };
             return [
                 rev_to_f32(lk_hash(index, key as u32)),
-                rev_to_f32(lk_hash(
-                    sobol_product(&SOBOL1_REVERSED, index),
-                    zsobol_key_seed(key),
-                )),
+                rev_to_f32(lk_hash(rev, zsobol_key_seed(key))),
             ];
         }
-        let y = scramble_u32(sobol_product(&SOBOL1, index), (key >> 32) as u32, how);
+        let y = scramble_u32(sobol1(wide), (key >> 32) as u32, how);
         [
             fraction_to_f32(zsobol_scramble_dim0(index, key as u32, how)),
             fraction_to_f32(y),

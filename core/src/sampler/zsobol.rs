@@ -9,7 +9,7 @@ use crate::hash::{hash2, mix32, mix64};
 use crate::lazy_table::{baked_table, const_unless_lazy};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::scramble::{Scramble, lk_hash, reversed_to_f32, scramble_u32};
-use crate::sequence::{SOBOL_MATRICES, sobol_u32};
+use crate::sequence::{SOBOL_MATRICES, SOBOL_MATRICES_HI, sobol_product, sobol_u64};
 
 /// All 24 permutations of `0..4`, lexicographic, entry `k` in bits `2k .. 2k + 2`.
 const PERMUTATIONS_4: [u8; 24] = permutations_4();
@@ -86,8 +86,18 @@ const CAMERA_DIMS: [u32; 3] = [0, 2, 3];
 ///   screen-space stratification that makes the error blue noise.
 ///
 /// `spp` is rounded up to a power of two ([`ZSobolSampler::rounded_spp`]); the image is
-/// embedded in a `2^r × 2^r` square, and `2r + log₂ spp ≤ 32` is required (e.g. 4096² at 256
-/// spp). Pixel coordinates wrap modulo `2^r`; `sample_index` wraps modulo `spp`.
+/// embedded in a `2^r × 2^r` square with `r ≤ 16` (sides up to 65536 pixels). Sobol indices are
+/// 64-bit ([`sobol_u64`]), so any `spp` up to 2³¹ fits at any such size (16384² at 4096 spp is
+/// `2r + log₂ spp = 40` bits; below 2³² the values are the 32-bit construction's). Pixel
+/// coordinates wrap modulo `2^r`.
+///
+/// **Past `spp`** (progressive rendering) every sample index is a new sample: samples
+/// `spp·2^(k−1) .. spp·2^k` (`k ≥ 1`) are epoch `k`, a ZSobol pattern of its own with
+/// `spp·2^(k−1)` samples per pixel under the seed `hash(seed, k)`. Each epoch is a net in every
+/// pixel and blue across pixels as the first is; epochs are independent, and each one is as
+/// large as all before it together, so the error keeps the nets' convergence rate (the union of
+/// two epochs is not one net: a finer net of one pixel would need the index blocks of its
+/// neighbours, whose values the pixel would then repeat, as pbrt-v4's ZSobol does past its spp).
 ///
 /// ```
 /// use nyquist::sampler::{Sampler, ZSobolSampler};
@@ -124,7 +134,21 @@ pub struct ZSobolSampler {
     sample_bits: [[u8; TABLE_SPP as usize]; 3],
     flips: [u32; 3],
     morton: u64,
+    /// For a sample past `spp`: its epoch's own sampler state (module docs), read instead of
+    /// the caches above.
+    epoch: Option<Epoch>,
     dim: u32,
+}
+
+/// A progressive epoch's layout and the current sample's Morton index in it.
+#[derive(Clone, Copy, Debug)]
+struct Epoch {
+    log2_spp: u32,
+    digits: u32,
+    sample_digits: u32,
+    odd: u32,
+    seed: u64,
+    morton: u64,
 }
 
 impl ZSobolSampler {
@@ -141,15 +165,14 @@ impl ZSobolSampler {
     ///
     /// # Errors
     /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
-    /// `spp > 2³¹` (`what: "spp"`) or the Morton index would pass 32 bits (`2r + log₂ spp > 32`,
-    /// `value` being `2r + log₂ spp`).
+    /// `spp > 2³¹` (`what: "spp"`) or a side passes 65536 (`what: "resolution"`).
     ///
     /// ```
     /// use nyquist::{sampler::ZSobolSampler, scramble::Scramble};
-    /// assert!(ZSobolSampler::new([4096, 2160], 256, Scramble::FastOwen, 0).is_ok());
+    /// assert!(ZSobolSampler::new([16384, 16384], 4096, Scramble::FastOwen, 0).is_ok());
     /// assert_eq!(
-    ///     ZSobolSampler::new([4096, 2160], 512, Scramble::FastOwen, 0).unwrap_err().to_string(),
-    ///     "log2(spp × pixels of the power-of-two square) 33 is above 32"
+    ///     ZSobolSampler::new([65537, 2160], 512, Scramble::FastOwen, 0).unwrap_err().to_string(),
+    ///     "resolution 65537 is above 65536"
     /// );
     /// ```
     pub fn new(
@@ -170,15 +193,21 @@ impl ZSobolSampler {
         }
         let side = resolution[0].max(resolution[1]);
         let log2_res = 32 - (side - 1).leading_zeros();
-        let log2_spp = spp.trailing_zeros();
-        let bits = 2 * log2_res + log2_spp;
-        if bits > 32 {
+        if log2_res > 16 {
             return Err(Error::TooMany {
-                what: "log2(spp × pixels of the power-of-two square)",
-                value: u64::from(bits),
-                max: 32,
+                what: "resolution",
+                value: u64::from(side),
+                max: 1 << 16,
             });
         }
+        Ok(Self::with_layout(log2_res, spp, scramble, seed))
+    }
+
+    /// The sampler for a `2^log2_res` square (`log2_res ≤ 16`) at `spp` (a power of two up to
+    /// 2³¹) under `seed`: [`ZSobolSampler::new`] past its checks, and each progressive epoch.
+    fn with_layout(log2_res: u32, spp: u32, scramble: Scramble, seed: u64) -> Self {
+        let log2_spp = spp.trailing_zeros();
+        let bits = 2 * log2_res + log2_spp;
         let mut s = Self {
             spp,
             log2_spp,
@@ -198,10 +227,11 @@ impl ZSobolSampler {
             sample_bits: [[0; TABLE_SPP as usize]; 3],
             flips: [0; 3],
             morton: 0,
+            epoch: None,
             dim: 0,
         };
         s.set_pixel([0, 0]);
-        Ok(s)
+        s
     }
 
     /// The scramble applied to the values.
@@ -215,18 +245,19 @@ impl ZSobolSampler {
         self.scramble
     }
 
-    /// The permuted Sobol index of sample `sample_index` of `pixel` for the request at
-    /// dimension `dim` (a value below `2^(2r + log₂ spp)`).
+    /// The permuted Sobol index of sample `sample_index < spp` of `pixel` for the request at
+    /// dimension `dim` (a value below `2^(2r + log₂ spp)`; `sample_index` wraps modulo `spp`
+    /// here, the sampler's epochs past it are not sequence indices of this layout).
     ///
     /// ```
     /// use nyquist::{sampler::ZSobolSampler, scramble::Scramble};
     /// let s = ZSobolSampler::new([2, 2], 1, Scramble::None, 3).unwrap();
     /// // The four pixels of a 2 × 2 image own the four indices 0..4.
-    /// let mut all: Vec<u32> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0, 7)).collect();
+    /// let mut all: Vec<u64> = (0..4).map(|k| s.sequence_index([k % 2, k / 2], 0, 7)).collect();
     /// all.sort();
     /// assert_eq!(all, [0, 1, 2, 3]);
     /// ```
-    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32, dim: u32) -> u32 {
+    pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32, dim: u32) -> u64 {
         let morton =
             (self.morton_of(pixel) << self.log2_spp) | u64::from(sample_index & (self.spp - 1));
         let key = dim_key(self.seed, dim);
@@ -246,15 +277,7 @@ impl ZSobolSampler {
     /// Digits `from .. to` of `morton` (base-4 digit `i` at bit `2i + odd`), permuted.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn permute_digits(&self, morton: u64, key: u64, from: u32, to: u32) -> u64 {
-        let mut out = 0u64;
-        let mut i = to;
-        while i > from {
-            i -= 1;
-            let shift = 2 * i + self.odd;
-            let digit = (morton >> shift) & 3;
-            out |= permuted_digit(pixel_node(morton >> (shift + 2), key), digit, shift);
-        }
-        out
+        permute_digits(self.odd, morton, key, from, to)
     }
 
     /// The whole permuted index from the permuted pixel digits `prefix` and the request's
@@ -262,21 +285,34 @@ impl ZSobolSampler {
     /// when `log₂ spp` is odd), each permuted by a multiplicative hash of `w` and the sample
     /// digits above it — one 64-bit hash per pixel and request instead of one per digit.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn finish_index(&self, morton: u64, w: u64, prefix: u64) -> u32 {
-        let sample = morton & u64::from(self.spp - 1);
-        let mut index = prefix;
-        let mut i = self.sample_digits;
-        while i > 0 {
-            i -= 1;
-            let shift = 2 * i + self.odd;
-            let digit = (sample >> shift) & 3;
-            let node = sample_node(w, sample >> (shift + 2), shift);
-            index |= permuted_digit(PERMUTATIONS_4[node], digit, shift);
+    fn finish_index(&self, morton: u64, w: u64, prefix: u64) -> u64 {
+        finish_index(
+            self.sample_digits,
+            self.odd,
+            self.log2_spp,
+            morton,
+            w,
+            prefix,
+        )
+    }
+
+    /// The epoch of sample `sample_index ≥ spp` of `pixel` (module docs): epoch `k` holds
+    /// samples `spp·2^(k−1) .. spp·2^k`, a layout of `spp·2^(k−1)` samples per pixel under the
+    /// seed `hash(seed, k)`.
+    fn epoch_of(&self, pixel: [u32; 2], sample_index: u32) -> Epoch {
+        // k = ⌊log₂(sample_index / spp)⌋ + 1, and the epoch's samples per pixel spp·2^(k−1).
+        let k = (31 - sample_index.leading_zeros()) - self.log2_spp + 1;
+        let log2_spp = self.log2_spp + k - 1;
+        let sample = u64::from(sample_index) - (1u64 << log2_spp);
+        let bits = 2 * self.log2_res + log2_spp;
+        Epoch {
+            log2_spp,
+            digits: bits / 2,
+            sample_digits: log2_spp / 2,
+            odd: log2_spp & 1,
+            seed: hash2(self.seed, u64::from(k)),
+            morton: (self.morton_of(pixel) << log2_spp) | sample,
         }
-        if self.odd == 1 {
-            index |= (sample & 1) ^ (nested_word(w, sample >> 1, 0) >> 63);
-        }
-        index as u32
     }
 
     /// Moves the per-pixel caches to `pixel`. The pixel digits' permutations depend only on the
@@ -376,7 +412,10 @@ impl ZSobolSampler {
 
     /// The index for the request at `dim`, through the cached pixel digits where there are some.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub(crate) fn index(&self, dim: u32) -> (u32, u64) {
+    pub(crate) fn index(&self, dim: u32) -> (u64, u64) {
+        if let Some(e) = &self.epoch {
+            return epoch_index(e, dim);
+        }
         let k = match dim {
             0 => 0,
             2 => 1,
@@ -391,7 +430,7 @@ impl ZSobolSampler {
         let key = self.keys[k];
         let index = if self.tabled {
             let sample = self.morton & u64::from(self.spp - 1);
-            (self.prefix[k] | self.tabled_sample_bits(k, sample)) as u32
+            self.prefix[k] | self.tabled_sample_bits(k, sample)
         } else {
             self.finish_index(self.morton, self.words[k], self.prefix[k])
         };
@@ -401,6 +440,8 @@ impl ZSobolSampler {
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value_1d(&self, dim: u32) -> f32 {
         let (index, key) = self.index(dim);
+        // Sobol dimension 0 reads only the low 32 bits of an index (its columns past 32 are 0).
+        let index = index as u32;
         if self.scramble == Scramble::FastOwen {
             return reversed_to_f32(lk_hash(index, key as u32));
         }
@@ -409,17 +450,18 @@ impl ZSobolSampler {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value_2d(&self, dim: u32) -> [f32; 2] {
-        let (index, key) = self.index(dim);
+        let (wide, key) = self.index(dim);
+        let index = wide as u32;
         let y = match self.scramble {
             // The reversed-table form of the fast Owen scramble of Sobol dimension 1: two bit
             // reversals instead of three.
             Scramble::FastOwen => {
                 return [
                     reversed_to_f32(lk_hash(index, key as u32)),
-                    reversed_to_f32(lk_hash(sobol1_rev(index), key_seed(key))),
+                    reversed_to_f32(lk_hash(sobol1_rev(wide), key_seed(key))),
                 ];
             }
-            how => scramble_u32(sobol_u32(index, 1), (key >> 32) as u32, how),
+            how => scramble_u32(sobol_u64(wide, 1), (key >> 32) as u32, how),
         };
         [
             to_f32(scramble_dim0(index, key as u32, self.scramble)),
@@ -450,14 +492,74 @@ const_unless_lazy! {
     }
 }
 
-/// `reverse(sobol_u32(index, 1))`.
+/// `reverse(sobol_u64(index, 1))`: four table reads for the low half, and the columns past 32
+/// for an upper half (indices past 2³²).
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-fn sobol1_rev(index: u32) -> u32 {
-    let [b0, b1, b2, b3] = index.to_le_bytes();
-    SOBOL1_REVERSED[0][b0 as usize]
+fn sobol1_rev(index: u64) -> u32 {
+    let [b0, b1, b2, b3] = (index as u32).to_le_bytes();
+    let low = SOBOL1_REVERSED[0][b0 as usize]
         ^ SOBOL1_REVERSED[1][b1 as usize]
         ^ SOBOL1_REVERSED[2][b2 as usize]
-        ^ SOBOL1_REVERSED[3][b3 as usize]
+        ^ SOBOL1_REVERSED[3][b3 as usize];
+    let hi = (index >> 32) as u32;
+    if hi == 0 {
+        low
+    } else {
+        low ^ sobol_product(&SOBOL_MATRICES_HI[1], hi).reverse_bits()
+    }
+}
+
+/// Digits `from .. to` of `morton` (base-4 digit `i` at bit `2i + odd`), each permuted by the
+/// pixel node of the digits above it under `key`.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn permute_digits(odd: u32, morton: u64, key: u64, from: u32, to: u32) -> u64 {
+    let mut out = 0u64;
+    let mut i = to;
+    while i > from {
+        i -= 1;
+        let shift = 2 * i + odd;
+        let digit = (morton >> shift) & 3;
+        out |= permuted_digit(pixel_node(morton >> (shift + 2), key), digit, shift);
+    }
+    out
+}
+
+/// The whole permuted index from the permuted pixel digits `prefix` and the request's pixel
+/// word `w` ([`pixel_word`]) in a layout of `sample_digits` base-4 sample digits (and a last
+/// base-2 one when `odd`): [`ZSobolSampler::finish_index`].
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn finish_index(
+    sample_digits: u32,
+    odd: u32,
+    log2_spp: u32,
+    morton: u64,
+    w: u64,
+    prefix: u64,
+) -> u64 {
+    let sample = morton & ((1u64 << log2_spp) - 1);
+    let mut index = prefix;
+    let mut i = sample_digits;
+    while i > 0 {
+        i -= 1;
+        let shift = 2 * i + odd;
+        let digit = (sample >> shift) & 3;
+        let node = sample_node(w, sample >> (shift + 2), shift);
+        index |= permuted_digit(PERMUTATIONS_4[node], digit, shift);
+    }
+    if odd == 1 {
+        index |= (sample & 1) ^ (nested_word(w, sample >> 1, 0) >> 63);
+    }
+    index
+}
+
+/// The index and key of the request at `dim` in a progressive epoch: the uncached path.
+#[inline(never)]
+fn epoch_index(e: &Epoch, dim: u32) -> (u64, u64) {
+    let key = dim_key(e.seed, dim);
+    let prefix = permute_digits(e.odd, e.morton, key, e.sample_digits, e.digits);
+    let w = pixel_word(e.morton >> e.log2_spp, key);
+    let index = finish_index(e.sample_digits, e.odd, e.log2_spp, e.morton, w, prefix);
+    (index, key)
 }
 
 /// The 32-bit LK-hash seed of a request's second coordinate, from its (mixed) 64-bit key.
@@ -540,7 +642,12 @@ impl Sampler for ZSobolSampler {
             // all the permutations of its camera sample digits now.
             self.fill_tables();
         }
-        self.morton = self.pixel_morton | u64::from(sample_index & (self.spp - 1));
+        if sample_index < self.spp {
+            self.morton = self.pixel_morton | u64::from(sample_index);
+            self.epoch = None;
+        } else {
+            self.epoch = Some(self.epoch_of(pixel, sample_index));
+        }
         self.dim = dim;
     }
 
@@ -585,7 +692,9 @@ impl Sampler for ZSobolSampler {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sampler::tests::{consistent_values, is_zero_two_net, threads_agree};
+    use crate::sampler::tests::{
+        consistent_values, is_zero_two_net, progressive_samples_are_distinct, threads_agree,
+    };
     use std::vec::Vec;
 
     /// The table forms equal the direct ones: the reversed Sobol dimension 1, the float of a
@@ -594,7 +703,11 @@ mod tests {
     #[test]
     fn reversed_tables_equal_the_direct_forms() {
         for i in (0..4096u32).chain((0..4096).map(|i| mix32(i ^ 0xabc))) {
-            assert_eq!(sobol1_rev(i), sobol_u32(i, 1).reverse_bits());
+            for hi in [0u64, 1, 0xdead_beef] {
+                let wide = u64::from(i) | hi << 32;
+                assert_eq!(sobol1_rev(wide), sobol_u64(wide, 1).reverse_bits());
+            }
+            let (i, sobol_u32) = (u64::from(i), |i: u64, d: u32| sobol_u64(i, d));
             let key = hash2(9, u64::from(i));
             let want = |v: u32, seed: u32| to_f32(lk_hash(v.reverse_bits(), seed).reverse_bits());
             assert_eq!(
@@ -602,7 +715,7 @@ mod tests {
                 want(sobol_u32(i, 1), key_seed(key))
             );
             assert_eq!(
-                reversed_to_f32(lk_hash(i, key as u32)),
+                reversed_to_f32(lk_hash(i as u32, key as u32)),
                 want(sobol_u32(i, 0), key as u32)
             );
         }
@@ -615,7 +728,7 @@ mod tests {
         for m in 0..=8u32 {
             let mut s = ZSobolSampler::new([50, 20], 1 << m, Scramble::FastOwen, 6).unwrap();
             for pixel in [[0u32, 0u32], [49, 19], [17, 5]] {
-                for i in (0..1u32 << m).chain([0, 1]) {
+                for i in (0..1u32 << m).chain([0, (1u32 << m) - 1]) {
                     s.start_pixel_sample(pixel, i, 0);
                     for d in [0u32, 2, 3] {
                         assert_eq!(
@@ -652,7 +765,7 @@ mod tests {
                 pixels.push([h % (res[0] + 5), (h >> 16) % (res[1] + 5)]);
             }
             for (n, &pixel) in pixels.iter().enumerate() {
-                let i = n as u32 % (spp + 1);
+                let i = n as u32 % spp;
                 s.start_pixel_sample(pixel, i, 0);
                 for d in [0u32, 2, 3] {
                     assert_eq!(
@@ -692,7 +805,7 @@ mod tests {
         for spp in [1u32, 2, 8, 32, 128] {
             let mut s = ZSobolSampler::new([100, 37], spp, Scramble::FastOwen, 4).unwrap();
             for pixel in [[0u32, 0u32], [99, 36], [17, 5], [130, 2]] {
-                for i in [0u32, 1, spp - 1, spp + 1] {
+                for i in [0u32, 1 % spp, spp - 1, spp / 2] {
                     s.start_pixel_sample(pixel, i, 0);
                     for d in [0u32, 1, 2, 3, 4, 5, 77] {
                         assert_eq!(
@@ -785,6 +898,78 @@ mod tests {
         s.start_pixel_sample([0, 0], 5, 0);
         let a = s.get_pixel_2d();
         s.start_pixel_sample([0, 0], 1, 0);
-        assert_eq!(s.get_pixel_2d(), a);
+        assert_ne!(s.get_pixel_2d(), a, "past spp: a new sample, not a wrap");
+        assert_eq!(
+            ZSobolSampler::new([65537, 1], 1, Scramble::None, 0).unwrap_err(),
+            Error::TooMany {
+                what: "resolution",
+                value: 65537,
+                max: 65536
+            }
+        );
+    }
+
+    /// Past `spp`, sample `i` is sample `i − spp·2^(k−1)` of epoch `k`: the sampler of
+    /// `spp·2^(k−1)` samples per pixel under `hash(seed, k)`, every request and scramble.
+    #[test]
+    fn samples_past_spp_are_their_epochs_samples() {
+        for scramble in Scramble::ALL {
+            let mut s = ZSobolSampler::new([100, 37], 4, scramble, 4).unwrap();
+            for (i, k, first) in [
+                (4u32, 1u32, 4u32),
+                (7, 1, 4),
+                (8, 2, 8),
+                (15, 2, 8),
+                (100, 5, 64),
+            ] {
+                let mut e =
+                    ZSobolSampler::with_layout(7, 4 << (k - 1), scramble, hash2(4, u64::from(k)));
+                for pixel in [[0u32, 0u32], [99, 36], [17, 5]] {
+                    for d in [0u32, 2, 3, 5, 77] {
+                        s.start_pixel_sample(pixel, i, d);
+                        e.start_pixel_sample(pixel, i - first, d);
+                        assert_eq!(s.get_2d(), e.get_2d(), "{scramble:?} {pixel:?} {i} {d}");
+                        s.start_pixel_sample(pixel, i, d);
+                        e.start_pixel_sample(pixel, i - first, d);
+                        assert_eq!(s.get_1d(), e.get_1d());
+                    }
+                    assert_eq!(s.camera_sample(pixel, i), e.camera_sample(pixel, i - first));
+                }
+            }
+        }
+    }
+
+    /// The progressive contract: no sample of a pixel repeats over 2^20 samples; every epoch
+    /// is a net in the pixel; and 16384² at 4096 spp, a 40-bit index, works.
+    #[test]
+    fn progressive_epochs_and_64_bit_indices() {
+        let mut s = ZSobolSampler::new([640, 480], 16, Scramble::FastOwen, 3).unwrap();
+        assert_eq!(
+            progressive_samples_are_distinct(&mut s, [100, 200]),
+            1 << 20
+        );
+        for (first, n) in [(16u32, 16u32), (32, 32), (64, 64), (1024, 1024)] {
+            let pts: Vec<[f32; 2]> = (first..first + n)
+                .map(|i| {
+                    s.start_pixel_sample([100, 200], i, 0);
+                    s.get_pixel_2d()
+                })
+                .collect();
+            assert!(is_zero_two_net(&pts), "epoch from {first}");
+        }
+        for scramble in Scramble::ALL {
+            let mut big = ZSobolSampler::new([16384, 16384], 4096, scramble, 5).unwrap();
+            let pixel = [16383, 9000];
+            assert!(big.sequence_index(pixel, 4095, 0) >> 32 != 0);
+            let pts: Vec<[f32; 2]> = (0..4096)
+                .map(|i| {
+                    big.start_pixel_sample(pixel, i, 0);
+                    big.get_pixel_2d()
+                })
+                .collect();
+            // The pixel's whole block of 4096 (its prefixes are not nets: the sample digits
+            // are permuted).
+            assert!(is_zero_two_net(&pts), "{scramble:?}");
+        }
     }
 }
