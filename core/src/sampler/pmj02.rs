@@ -132,9 +132,13 @@ fn camera_keys(pixel_key: u64) -> [Keys; 3] {
 /// independent random net (a hash per camera sample fewer).
 ///
 /// `samples_per_pixel` is any value in `1..=65536` and is not rounded; the net property holds
-/// at every power of two below it, and samples past it continue the sequence. Sample indices
-/// wrap modulo 65536 (the table's size). Arrays are the trait's defaults: one pair or value per
-/// dimension, in order. Allocates: no.
+/// at every power of two below it, and samples past it continue the sequence. Past 65536
+/// samples (the table's size: the construction is a stochastic table, which cannot be extended
+/// without a larger one) the sampler starts **epochs** of 65536: sample `i` is sample
+/// `i mod 65536` under the pixel key hashed with the epoch `⌊i / 65536⌋`, so each epoch is
+/// a (0, 16, 2)-net in every pixel and pair, independent of the others, and no sample repeats
+/// an earlier one. Arrays are the trait's defaults: one pair or value per dimension, in order.
+/// Allocates: no.
 ///
 /// ```
 /// use nyquist::sampler::{Pmj02Sampler, Sampler};
@@ -152,8 +156,11 @@ pub struct Pmj02Sampler {
     spp: u32,
     seed: u64,
     pixel: [u32; 2],
-    /// `hash(pixel, seed)`, cached across the samples of one pixel.
+    /// `hash(pixel, seed)` (hashed with the epoch past the first), cached across the samples of
+    /// one pixel and epoch.
     pixel_key: u64,
+    /// The epoch of the cached keys: `sample_index >> 16`.
+    epoch: u32,
     /// The camera's keys for the current pixel, built once per pixel.
     camera: [Keys; 3],
     /// The sample index modulo 65536, bit-reversed into a 32-bit word (what the shuffles read).
@@ -193,6 +200,7 @@ impl Pmj02Sampler {
             seed,
             pixel: [0; 2],
             pixel_key,
+            epoch: 0,
             camera: camera_keys(pixel_key),
             index_rev: 0,
             dim: 0,
@@ -235,9 +243,14 @@ impl Sampler for Pmj02Sampler {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
-        if pixel != self.pixel {
+        let epoch = sample_index >> 16;
+        if pixel != self.pixel || epoch != self.epoch {
             self.pixel = pixel;
+            self.epoch = epoch;
             self.pixel_key = pixel_hash(pixel, self.seed, PIXEL_TAG);
+            if epoch != 0 {
+                self.pixel_key = crate::hash::hash2(self.pixel_key, u64::from(epoch));
+            }
             self.camera = camera_keys(self.pixel_key);
         }
         self.index_rev = reverse16(sample_index) << 16;
@@ -459,17 +472,33 @@ mod tests {
     }
 
     #[test]
-    fn pmj02_sampler_index_wraps_at_the_table_size() {
+    fn pmj02_sampler_epochs_past_the_table_size() {
         let mut s = Pmj02Sampler::new(4, 8).unwrap();
         let mut get = |i: u32| {
             s.start_pixel_sample([1, 1], i, 0);
             (s.get_pixel_2d(), s.get_1d(), s.get_2d())
         };
+        // Epoch e is the first epoch's pattern under the pixel key hashed with e.
         for i in [0u32, 5, 65535] {
-            assert_eq!(get(i), get(i + 65536), "index {i}");
-            assert_eq!(get(i), get(i + 7 * 65536), "index {i}");
+            assert_ne!(get(i), get(i + 65536), "index {i}");
+            assert_ne!(get(i + 65536), get(i + 7 * 65536), "index {i}");
         }
-        assert_ne!(get(1), get(65536 + 2));
+        let key = pixel_hash([1, 1], 8, PIXEL_TAG);
+        let keys = camera_keys(crate::hash::hash2(key, 3));
+        s.start_pixel_sample([1, 1], 3 * 65536 + 9, 0);
+        assert_eq!(s.get_pixel_2d(), keys[0].point(reverse16(9) as usize));
+        // Each epoch is a net: an epoch's first 1024 samples.
+        let pts: Vec<[f32; 2]> = (0..1024)
+            .map(|i| {
+                s.start_pixel_sample([1, 1], 2 * 65536 + i, 0);
+                s.get_pixel_2d()
+            })
+            .collect();
+        assert!(is_zero_two_net(&pts));
+        assert_eq!(
+            crate::sampler::tests::progressive_samples_are_distinct(&mut s, [2, 3]),
+            1 << 20
+        );
         // Past spp the sequence goes on: samples 4..8 complete the net of 8.
         let pts = run(&mut s, [1, 1], 0, 8, |s| s.get_pixel_2d());
         assert!(is_zero_two_net(&pts));
