@@ -380,7 +380,7 @@ fn error_lines(e: &mut Expected) {
         ("seq_null_out", NYQ_ERR_NULL),
         ("seq_bad_kind", NYQ_ERR_OUT_OF_RANGE),
         ("seq_zero_dims", NYQ_ERR_ZERO_SIZE),
-        ("seq_sobol_1025", NYQ_ERR_OUT_OF_RANGE),
+        ("seq_sobol_2000", NYQ_OK),
         ("seq_dim_past", NYQ_ERR_OUT_OF_RANGE),
         ("seq_index_past", NYQ_ERR_OUT_OF_RANGE),
         ("seq_hammersley_n0", NYQ_ERR_ZERO_SIZE),

@@ -379,7 +379,7 @@ static void errors(void) {
     NyqSequence halton = {NYQ_SEQ_HALTON, 2, 0, 0, 0};
     NyqSequence bad_kind = {99, 2, 0, 0, 0};
     NyqSequence zero_dims = {NYQ_SEQ_SOBOL, 0, 0, 0, 0};
-    NyqSequence sobol_big = {NYQ_SEQ_SOBOL, 1025, 0, 0, 0};
+    NyqSequence sobol_big = {NYQ_SEQ_SOBOL, 2000, 0, 0, 0};
     NyqSequence hammersley = {NYQ_SEQ_HAMMERSLEY, 2, 16, 0, 0};
     NyqSequence hammersley0 = {NYQ_SEQ_HAMMERSLEY, 2, 0, 0, 0};
     NyqSequence vdc2 = {NYQ_SEQ_VAN_DER_CORPUT, 2, 0, 0, 0};
@@ -387,7 +387,7 @@ static void errors(void) {
     put_status("seq_null_out", nyq_sequence_sample(&halton, 0, 0, NULL));
     put_status("seq_bad_kind", nyq_sequence_sample(&bad_kind, 0, 0, &f));
     put_status("seq_zero_dims", nyq_sequence_sample(&zero_dims, 0, 0, &f));
-    put_status("seq_sobol_1025", nyq_sequence_sample(&sobol_big, 0, 0, &f));
+    put_status("seq_sobol_2000", nyq_sequence_sample(&sobol_big, 1ull << 40, 1500, &f));
     put_status("seq_dim_past", nyq_sequence_sample(&halton, 0, 2, &f));
     put_status("seq_index_past", nyq_sequence_sample(&hammersley, 16, 0, &f));
     put_status("seq_hammersley_n0", nyq_sequence_sample(&hammersley0, 0, 0, &f));
