@@ -524,6 +524,21 @@ mod tests {
         }
     }
 
+    /// `fill` past 1024 dimensions: the padding, value for value, at any first index.
+    #[test]
+    fn fill_with_padding_equals_repeated_sample() {
+        let s = Sobol::with_digital_shift(1030, 3).unwrap();
+        for first in [0u64, 9, 1 << 33] {
+            let mut buf = std::vec![0.0f32; 1030 * 3];
+            assert_eq!(s.fill(first, 1030, &mut buf), Ok(3));
+            for (k, p) in buf.chunks_exact(1030).enumerate() {
+                for d in [0usize, 1023, 1024, 1029] {
+                    assert_eq!(p[d], s.sample(first + k as u64, d as u32), "{first} {k} {d}");
+                }
+            }
+        }
+    }
+
     /// Padding dimensions: values in range, keyed by the seed, no copy of a lower dimension.
     #[test]
     fn padding_dimensions_are_not_wraps() {
