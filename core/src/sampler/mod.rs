@@ -103,6 +103,7 @@ fn values_one_at_a_time(dim: u32, out: &mut [f32], sample: impl Fn(u32) -> f32) 
 mod adaptive;
 pub mod best_candidate;
 mod dithered;
+pub mod domain;
 mod halton;
 mod hammersley;
 mod lattice;
@@ -120,6 +121,7 @@ pub mod layout;
 pub use adaptive::{ADAPTIVE_CHANNELS, AdaptiveSampler};
 pub use best_candidate::BestCandidateSampler;
 pub use dithered::{DITHER_MASK_RANKS, DitheredSampler, MaskView};
+pub use domain::Domain;
 pub use halton::HaltonSampler;
 pub use hammersley::HammersleySampler;
 pub use lattice::LatticeSampler;

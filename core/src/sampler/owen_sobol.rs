@@ -1,7 +1,7 @@
 //! Owen-scrambled Sobol per pixel, decorrelated by hashing the full pixel coordinates, the frame
 //! and the seed.
 
-use super::{CameraSample, Sampler, film_coordinate};
+use super::{CameraSample, Domain, Sampler, film_coordinate};
 use crate::Error;
 use crate::hash::{hash_slice, mix32};
 use crate::math::fraction_to_f32;
@@ -46,8 +46,9 @@ pub struct OwenSobolSampler {
     spp: u32,
     seed: u64,
     frame: u32,
-    /// The pixel whose key is cached (`None` before the first).
+    /// The pixel whose key is cached (`None` before the first), and that key.
     pixel: Option<[u32; 2]>,
+    key: u64,
     shuffle: IndexShuffle,
     pub(crate) seeds: DimSeeds<CACHED>,
     /// The current sample's reversed shuffled index, and the sample index itself.
@@ -74,6 +75,7 @@ impl OwenSobolSampler {
             seed,
             frame: 0,
             pixel: None,
+            key: 0,
             shuffle: IndexShuffle::default(),
             seeds: DimSeeds::new(0),
             r: 0,
@@ -110,6 +112,22 @@ impl OwenSobolSampler {
     /// ```
     pub fn seed(&self) -> u64 {
         self.seed
+    }
+
+    /// The current pixel sample as a [`Domain`]: its dimension `d` is this sampler's dimension
+    /// `d`, and [`Domain::split`], [`Domain::branch`] and the others derive sub-streams from it
+    /// (valid after [`Sampler::start_pixel_sample`]).
+    ///
+    /// ```
+    /// use nyquist::sampler::{OwenSobolSampler, Sampler};
+    /// let mut s = OwenSobolSampler::new(4, 1).unwrap();
+    /// s.start_pixel_sample([2, 2], 3, 6);
+    /// let d = s.domain();
+    /// assert_eq!(d.index(), 3);
+    /// assert_eq!(d.get_1d(6), s.get_1d());
+    /// ```
+    pub fn domain(&self) -> Domain {
+        Domain::new(self.key, u64::from(self.index))
     }
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
@@ -153,6 +171,7 @@ impl Sampler for OwenSobolSampler {
                 u64::from(self.frame),
                 self.seed,
             ]);
+            self.key = h;
             self.shuffle = IndexShuffle::new(mix32((h >> 32) as u32));
             self.seeds = DimSeeds::new(h as u32);
         }

@@ -38,7 +38,7 @@ pub use named::{
 };
 pub use owen_sobol::OwenSobol;
 pub(crate) use owen_sobol::{
-    DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32, padded_u32, padded_u32_by,
+    DimSeeds, IndexShuffle, dim_seed, owen_sobol_rev_f32, owen_sobol_u64, padded_u32, padded_u32_by,
 };
 pub use pmj02::{PMJ02_MAX_POINTS, PMJ02_TABLE, PMJ02_TABLE_SEED, Pmj02, pmj02_build};
 

@@ -533,7 +533,11 @@ mod tests {
             assert_eq!(s.fill(first, 1030, &mut buf), Ok(3));
             for (k, p) in buf.chunks_exact(1030).enumerate() {
                 for d in [0usize, 1023, 1024, 1029] {
-                    assert_eq!(p[d], s.sample(first + k as u64, d as u32), "{first} {k} {d}");
+                    assert_eq!(
+                        p[d],
+                        s.sample(first + k as u64, d as u32),
+                        "{first} {k} {d}"
+                    );
                 }
             }
         }
