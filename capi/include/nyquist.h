@@ -68,7 +68,8 @@ enum NyqSequenceKind
   NYQ_SEQ_HALTON_SCRAMBLED = 3,
   // Hammersley, ((i + ½)/N, Φ₂(i), Φ₃(i), …) with `N = points`: up to 1025 dimensions.
   NYQ_SEQ_HAMMERSLEY = 4,
-  // Sobol (Joe–Kuo direction numbers), natural order, 2³² points: up to 1024 dimensions.
+  // Sobol (Joe–Kuo direction numbers), natural order, every `u64` index a point: any number
+  // of dimensions (from 1024 on, seeded Owen-scrambled 4-D blocks).
   NYQ_SEQ_SOBOL = 5,
   // Sobol with a digital shift keyed by `seed`.
   NYQ_SEQ_SOBOL_SCRAMBLED = 6,
@@ -96,7 +97,7 @@ enum NyqSequenceKind
   // [`NyqSequenceKind::NYQ_SEQ_KOROBOV`] with a Cranley–Patterson rotation keyed by `seed`.
   NYQ_SEQ_KOROBOV_ROTATED = 15,
   // Owen-scrambled Sobol (Burley 2020: nested uniform shuffle and scramble) keyed by `seed`,
-  // up to 1024 dimensions.
+  // every `u64` index a point, any number of dimensions (padded from 1024 on).
   NYQ_SEQ_OWEN_SOBOL = 16,
   // PMJ(0,2), 2 dimensions, 65536 points: the baked table.
   NYQ_SEQ_PMJ02 = 17,

@@ -131,10 +131,27 @@ impl Expected {
         self.bytes.extend_from_slice(&seed.to_le_bytes());
         self.u32(count);
     }
-    fn sampler<S: Sampler>(&mut self, s: &mut S, queries: u32, r: &mut Rng) {
+    /// `queries` drawn queries of `s` and its values. `index_below` and `dims_below` keep the
+    /// queries where the header follows the core (`docs/c.md`): the header's samplers wrap
+    /// past the spp they were made for and past 1024 dimensions, where the core's continue
+    /// progressively and pad.
+    fn sampler<S: Sampler>(
+        &mut self,
+        s: &mut S,
+        queries: u32,
+        r: &mut Rng,
+        index_below: Option<u32>,
+        dims_below: Option<u32>,
+    ) {
         let spp = s.samples_per_pixel();
         for _ in 0..queries {
-            let q = draw(r, spp);
+            let mut q = draw(r, spp);
+            if let Some(n) = index_below {
+                q[2] %= n;
+            }
+            if let Some(n) = dims_below {
+                q[3] %= n;
+            }
             for v in q {
                 self.u32(v);
             }
@@ -172,7 +189,7 @@ fn expected() -> Expected {
             seed,
             queries,
         );
-        e.sampler(&mut s, queries, &mut r);
+        e.sampler(&mut s, queries, &mut r, None, Some(1000));
     }
     for scramble in [Scramble::None, Scramble::PermuteDigits, Scramble::Owen] {
         for (k, (size, spp)) in [([64u32, 64], 16u32), ([1920, 1080], 8), ([3, 1], 1)]
@@ -183,7 +200,7 @@ fn expected() -> Expected {
             let mut s = ZSobolSampler::new(size, spp, scramble, seed).unwrap();
             let spp = s.samples_per_pixel();
             e.config(ZSOBOL_SAMPLER, scramble, size, spp, 0, 0, seed, queries);
-            e.sampler(&mut s, queries, &mut r);
+            e.sampler(&mut s, queries, &mut r, Some(spp), None);
         }
     }
     for scramble in [Scramble::FastOwen, Scramble::Owen, Scramble::PermuteDigits] {
@@ -195,7 +212,7 @@ fn expected() -> Expected {
             let mut s = SobolSampler::new(size, spp, scramble, seed).unwrap();
             let spp = s.samples_per_pixel();
             e.config(SOBOL_SAMPLER, scramble, size, spp, 0, 0, seed, queries);
-            e.sampler(&mut s, queries, &mut r);
+            e.sampler(&mut s, queries, &mut r, Some(spp), Some(1000));
         }
     }
     for scramble in [Scramble::FastOwen, Scramble::Owen, Scramble::PermuteDigits] {
@@ -206,7 +223,7 @@ fn expected() -> Expected {
             let seed = if k == 0 { 0 } else { r.next() };
             let mut s = HaltonSampler::new(size, spp, scramble, seed).unwrap();
             e.config(HALTON_SAMPLER, scramble, size, spp, 0, 0, seed, queries);
-            e.sampler(&mut s, queries, &mut r);
+            e.sampler(&mut s, queries, &mut r, None, Some(1000));
         }
     }
     for k in 0..4 {

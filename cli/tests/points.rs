@@ -154,7 +154,7 @@ fn bad_input_is_one_line_and_status_2() {
             "--sampler",
             "sobol",
             "--skip",
-            "4294967295",
+            "18446744073709551615",
             "--count",
             "2",
         ]),

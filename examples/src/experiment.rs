@@ -85,7 +85,7 @@ impl Experiment {
         let mut config = RenderConfig::new(&self.scene);
         config.size = self.size;
         config.spp = self.reference_spp;
-        config.light_samples = 4;
+        config.light_samples = crate::trace::LightSamples::first(4);
         config.sampler = "owen-sobol".into();
         config.seed = 0x5eed;
         config.threads = self.threads;
@@ -192,7 +192,7 @@ impl Experiment {
             let mut config = RenderConfig::new(&self.scene);
             config.size = self.size;
             config.spp = camera;
-            config.light_samples = light;
+            config.light_samples = crate::trace::LightSamples::first(light);
             config.sampler = name.to_owned();
             config.seed = run_seed(self.seed, r);
             config.threads = self.threads;
@@ -215,6 +215,130 @@ impl Experiment {
             first.expect("at least one run"),
         ))
     }
+}
+
+/// How a path's values past the camera sample are drawn, for light samples that vary per
+/// vertex.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightLayout {
+    /// pbrt-v2: one array per vertex, sized up front (`SampleLayout::add_2d(N_k)`), filled by
+    /// `PixelRangeSampler`; samplers that stratify arrays stratify each.
+    Arrays,
+    /// pbrt-v4: the next dimensions in order (`get_array_2d`, `get_2d`, `get_1d`), as far as
+    /// the path goes.
+    Counter,
+    /// The camera sample's domains: light sample `j` of vertex `k` is
+    /// `Domain::split(k, N_k, j)` (owen-sobol).
+    Domains,
+}
+
+impl LightLayout {
+    /// The row label.
+    pub fn label(self) -> &'static str {
+        match self {
+            LightLayout::Arrays => "pbrt-v2 arrays",
+            LightLayout::Counter => "pbrt-v4 counter",
+            LightLayout::Domains => "domains (split)",
+        }
+    }
+}
+
+/// One row of [`Experiment::light_layouts`].
+#[derive(Clone, Debug)]
+pub struct LayoutRow {
+    /// How the values were drawn.
+    pub layout: LightLayout,
+    /// Sampler name.
+    pub sampler: String,
+    /// Camera samples per pixel and light samples per vertex.
+    pub spp: u32,
+    /// The light samples, as given (`4,2,1`).
+    pub light: String,
+    /// `√(mean RMSE²)` over the runs.
+    pub rmse: f64,
+    /// Least seconds per render over the runs.
+    pub seconds: f64,
+}
+
+impl Experiment {
+    /// Light samples `light` per vertex at `spp` camera samples, drawn each [`LightLayout`]
+    /// way: the arrays and the counter with every sampler of the experiment, the domains with
+    /// `owen-sobol` (whose samples are domains). `progress(done, total)` after each render.
+    ///
+    /// # Errors
+    /// An unknown sampler, or one that rejects the sizes.
+    pub fn light_layouts(
+        &self,
+        spp: u32,
+        light: &crate::trace::LightSamples,
+        reference: &Image,
+        mut progress: impl FnMut(usize, usize),
+    ) -> Result<Vec<LayoutRow>> {
+        let mut plan = Vec::new();
+        for layout in [LightLayout::Arrays, LightLayout::Counter] {
+            for name in &self.samplers {
+                plan.push((layout, name.clone()));
+            }
+        }
+        plan.push((LightLayout::Domains, "owen-sobol".to_owned()));
+        let total = plan.len() * self.runs as usize;
+        let mut done = 0;
+        let mut rows = Vec::new();
+        for (layout, name) in plan {
+            let (mut sum_sq, mut seconds) = (0.0, f64::INFINITY);
+            for r in 0..self.runs {
+                let mut config = RenderConfig::new(&self.scene);
+                config.size = self.size;
+                config.spp = spp;
+                config.light_samples = *light;
+                config.sampler = name.clone();
+                config.seed = run_seed(self.seed, r);
+                config.threads = self.threads;
+                config.stateless = layout == LightLayout::Counter;
+                config.domains = layout == LightLayout::Domains;
+                let out = render(&config, |_, _| {})
+                    .with_context(|| format!("{} {name}", layout.label()))?;
+                sum_sq += out.image.rmse(reference).context("RMSE")?.powi(2);
+                seconds = seconds.min(out.seconds);
+                done += 1;
+                progress(done, total);
+            }
+            rows.push(LayoutRow {
+                layout,
+                sampler: name,
+                spp,
+                light: light.label(),
+                rmse: (sum_sq / f64::from(self.runs.max(1))).sqrt(),
+                seconds,
+            });
+        }
+        Ok(rows)
+    }
+}
+
+/// The Markdown table of [`Experiment::light_layouts`]: RMSE, its ratio to the domains' row,
+/// and milliseconds per render.
+pub fn light_layouts_markdown(rows: &[LayoutRow]) -> String {
+    let base = rows
+        .iter()
+        .find(|r| r.layout == LightLayout::Domains)
+        .map_or(f64::NAN, |r| r.rmse);
+    let mut s = String::from(
+        "| values past the camera sample | sampler | spp | light samples | RMSE | ÷ domains | ms |\n|---|---|---|---|---|---|---|\n",
+    );
+    for r in rows {
+        s.push_str(&format!(
+            "| {} | {} | {} | {} | {:.5} | {:.2} | {:.0} |\n",
+            r.layout.label(),
+            r.sampler,
+            r.spp,
+            r.light,
+            r.rmse,
+            r.rmse / base,
+            r.seconds * 1e3
+        ));
+    }
+    s
 }
 
 /// The seed of run `r`: hashed from the base seed, never 0 (0 turns scrambling off).
@@ -352,7 +476,7 @@ pub fn pixel_mean(
     let sc = crate::scene::Scene::by_name(scene)
         .ok_or_else(|| anyhow::anyhow!("unknown scene {scene:?}"))?;
     let s = crate::build_sampler(sampler, size, spp, seed)?;
-    let layout = crate::trace::PathLayout::new(&s, 1)?;
+    let layout = crate::trace::PathLayout::new(&s, &crate::trace::LightSamples::first(1))?;
     let (mut sum, mut n) = (0.0f64, 0u32);
     let end = [pixel[0] + 1, pixel[1] + 1];
     crate::trace::for_each_sample(&sc, &layout, s, size, pixel, end, |_, l| {

@@ -18,14 +18,17 @@ pub mod trace;
 
 use std::time::Instant;
 
-use anyhow::{Context, Result, anyhow};
+use anyhow::{Context, Result, anyhow, bail};
 use nyquist::filter::FilterKind;
-use nyquist::sampler::NamedSampler;
+use nyquist::sampler::{NamedSampler, OwenSobolSampler};
 use nyquist_film::adaptive::{AdaptiveConfig, AdaptiveReport, render_adaptive};
 use nyquist_film::{Film, FilmConfig, FilmSample, Image, PixelExtras, render_tiles};
 
 use crate::scene::Scene;
-use crate::trace::{PathLayout, for_each_sample, for_each_sample_stateless, for_pixel_samples};
+use crate::trace::{
+    LightSamples, PathLayout, for_each_sample, for_each_sample_domains, for_each_sample_stateless,
+    for_pixel_samples,
+};
 
 /// Builds the sampler called `name` ([`NamedSampler::new`]: any of
 /// [`nyquist::sampler::NAMES`] or [`nyquist::sampler::OTHER_NAMES`], such as `halton-plain` and
@@ -47,8 +50,8 @@ pub struct RenderConfig {
     pub size: [u32; 2],
     /// Camera samples per pixel.
     pub spp: u32,
-    /// Light samples at the first vertex per camera sample.
-    pub light_samples: u32,
+    /// Light samples per camera sample at each vertex.
+    pub light_samples: LightSamples,
     /// Sampler name (see [`build_sampler`]).
     pub sampler: String,
     /// Sampler seed.
@@ -62,6 +65,11 @@ pub struct RenderConfig {
     /// Draw the values through the stateless layer (`camera_sample`, `get_array_2d`,
     /// `get_2d`, `get_1d`) instead of `SampleLayout` and `PixelRangeSampler`.
     pub stateless: bool,
+    /// Draw the values past the camera sample from the camera sample's [`Domain`]s
+    /// ([`trace::DomainSource`]; the `owen-sobol` sampler only).
+    ///
+    /// [`Domain`]: nyquist::sampler::Domain
+    pub domains: bool,
     /// Render adaptively ([`render_adaptive`]; `spp` is then its budget and the sampler is
     /// made for its `max_spp`); the stateless layer draws the values.
     pub adaptive: Option<AdaptiveConfig>,
@@ -75,13 +83,14 @@ impl RenderConfig {
             scene: scene.into(),
             size: [256, 256],
             spp: 16,
-            light_samples: 1,
+            light_samples: LightSamples::first(1),
             sampler: "owen-sobol".into(),
             seed: 1,
             threads: 1,
             tile_size: 16,
             filter: FilterKind::parse("box").expect("the box filter parses"),
             stateless: false,
+            domains: false,
             adaptive: None,
         }
     }
@@ -116,7 +125,14 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
         return render_adaptively(config, a, scene);
     }
     let sampler = build_sampler(&config.sampler, config.size, config.spp, config.seed)?;
-    let layout = PathLayout::new(&sampler, config.light_samples)
+    if config.domains && config.sampler != "owen-sobol" {
+        bail!(
+            "domains: the sampler is {:?}; only owen-sobol's samples are domains",
+            config.sampler
+        );
+    }
+    let domain_sampler = OwenSobolSampler::new(config.spp, config.seed)?;
+    let layout = PathLayout::new(&sampler, &config.light_samples)
         .map_err(|e| anyhow!("light samples: {e}"))?;
     let mut film = Film::new(
         FilmConfig::new(config.size[0], config.size[1]),
@@ -132,9 +148,14 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
             let Some((a, b)) = ctx.pixel_range() else {
                 return;
             };
-            if config.stateless {
+            let n = &config.light_samples;
+            if config.domains {
+                let s = domain_sampler.clone();
+                for_each_sample_domains(&scene, s, n, config.size, a, b, |p, l| {
+                    tile.add_sample(p, l.0, 1.0)
+                });
+            } else if config.stateless {
                 let s = sampler.clone();
-                let n = config.light_samples;
                 for_each_sample_stateless(&scene, s, n, config.size, a, b, |p, l| {
                     tile.add_sample(p, l.0, 1.0)
                 });
@@ -182,7 +203,7 @@ fn render_adaptively(config: &RenderConfig, a: &AdaptiveConfig, scene: Scene) ->
         config.tile_size,
         config.threads,
         |tile, pixel, indices| {
-            let n = config.light_samples;
+            let n = &config.light_samples;
             for_pixel_samples(
                 &scene,
                 sampler.clone(),

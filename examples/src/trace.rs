@@ -37,7 +37,9 @@
 //! Russian roulette at vertex k ≥ 3 continues with probability `min(1, max(0.05, max β))`, β
 //! the path throughput, and divides β by it.
 
-use nyquist::sampler::{CameraSample, PixelRangeSampler, Sample, SampleLayout, Sampler};
+use nyquist::sampler::{
+    CameraSample, Domain, OwenSobolSampler, PixelRangeSampler, Sample, SampleLayout, Sampler,
+};
 
 use crate::geometry::{Ray, V3, cosine_hemisphere};
 use crate::scene::{EPSILON, Scene};
@@ -51,6 +53,57 @@ pub const ARRAYS: usize = 3 * MAX_VERTICES;
 /// Russian roulette applies from this vertex on (1-based).
 pub const ROULETTE_FROM: usize = 3;
 
+/// Light samples per vertex: `counts[k]` points on the light at vertex `k + 1`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LightSamples {
+    counts: [u32; MAX_VERTICES],
+}
+
+impl LightSamples {
+    /// `n` light samples at the first vertex and one at every later vertex.
+    pub fn first(n: u32) -> LightSamples {
+        let mut counts = [1; MAX_VERTICES];
+        counts[0] = n;
+        LightSamples { counts }
+    }
+
+    /// Counts per vertex from a list (`4,2,1`: four at the first vertex, two at the second,
+    /// one at each vertex past the list).
+    ///
+    /// # Errors
+    /// An empty list, a count that is not a positive integer, or more counts than vertices.
+    pub fn parse(text: &str) -> Result<LightSamples, String> {
+        let mut counts = [1; MAX_VERTICES];
+        let fields: Vec<&str> = text.split(',').map(str::trim).collect();
+        if fields.len() > MAX_VERTICES {
+            return Err(format!(
+                "{text:?}: {} counts, at most {MAX_VERTICES} (one per vertex)",
+                fields.len()
+            ));
+        }
+        for (c, f) in counts.iter_mut().zip(&fields) {
+            *c = f
+                .parse::<u32>()
+                .ok()
+                .filter(|&n| (1..=1 << 16).contains(&n))
+                .ok_or_else(|| format!("{text:?}: {f:?} is not a count in 1..=65536"))?;
+        }
+        Ok(LightSamples { counts })
+    }
+
+    /// Light samples at vertex `k + 1`.
+    pub fn at(&self, k: usize) -> u32 {
+        self.counts.get(k).copied().unwrap_or(1)
+    }
+
+    /// The list, without the trailing ones past the first vertex (`4,2`, or `3`).
+    pub fn label(&self) -> String {
+        let last = self.counts.iter().rposition(|&c| c != 1).unwrap_or(0);
+        let shown: Vec<String> = self.counts[..=last].iter().map(u32::to_string).collect();
+        shown.join(",")
+    }
+}
+
 /// The sample layout of a path: the handles of each vertex's arrays.
 #[derive(Clone, Debug)]
 pub struct PathLayout {
@@ -62,21 +115,21 @@ pub struct PathLayout {
 }
 
 impl PathLayout {
-    /// The layout for `light_samples` light samples at the first vertex (rounded by the
-    /// sampler's `round_size`; one at every other vertex).
+    /// The layout for `light_samples` light samples per vertex (each rounded by the sampler's
+    /// `round_size`): pbrt-v2's arrays, one per vertex, sized up front.
     ///
     /// # Errors
-    /// If the sampler rejects the sizes (`light_samples == 0`).
+    /// If the sampler rejects the sizes.
     pub fn new<S: Sampler + ?Sized>(
         sampler: &S,
-        light_samples: u32,
+        light_samples: &LightSamples,
     ) -> Result<PathLayout, nyquist::Error> {
         let mut layout = SampleLayout::new();
         let mut light = [0; MAX_VERTICES];
         let mut direction = [0; MAX_VERTICES];
         let mut roulette = [0; MAX_VERTICES];
         for k in 0..MAX_VERTICES {
-            light[k] = layout.add_2d(sampler, if k == 0 { light_samples } else { 1 })?;
+            light[k] = layout.add_2d(sampler, light_samples.at(k))?;
             direction[k] = layout.add_2d(sampler, 1)?;
             roulette[k] = layout.add_1d(sampler, 1)?;
         }
@@ -130,27 +183,23 @@ impl PathSource for FilledSample<'_, '_> {
 }
 
 /// The stateless layer: after [`Sampler::camera_sample`], each vertex takes its light points
-/// with one [`Sampler::get_array_2d`] (vertex 1: `round_size(N)` points, later vertices
-/// `round_size(1)`), then [`Sampler::get_2d`] for the direction and [`Sampler::get_1d`] for
-/// the roulette, only as far as the path goes. For samplers whose arrays are dimension runs
+/// with one [`Sampler::get_array_2d`] (`round_size(N)` points for the vertex's `N`), then
+/// [`Sampler::get_2d`] for the direction and [`Sampler::get_1d`] for the roulette, only as far
+/// as the path goes: pbrt-v4's dimension counter. For samplers whose arrays are dimension runs
 /// the values equal the layout's bit for bit.
 #[derive(Debug)]
 pub struct Stateless<'a, S: ?Sized> {
     /// The sampler, positioned after the camera sample.
     pub sampler: &'a mut S,
-    /// Light points at vertex 1 (already rounded by `round_size`).
-    pub first_light: u32,
+    /// Light points per vertex.
+    pub light: LightSamples,
     /// Scratch for the light points.
     pub buf: Vec<f32>,
 }
 
 impl<S: Sampler + ?Sized> PathSource for Stateless<'_, S> {
     fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
-        let n = if k == 0 {
-            self.first_light
-        } else {
-            self.sampler.round_size(1).max(1)
-        };
+        let n = self.sampler.round_size(self.light.at(k)).max(1);
         self.buf.resize(2 * n as usize, 0.0);
         self.sampler.get_array_2d(&mut self.buf);
         let u = self.sampler.get_2d();
@@ -230,26 +279,18 @@ pub fn radiance(
 pub fn for_each_sample_stateless<S: Sampler>(
     scene: &Scene,
     mut sampler: S,
-    light_samples: u32,
+    light: &LightSamples,
     resolution: [u32; 2],
     start: [u32; 2],
     end: [u32; 2],
     mut f: impl FnMut([f32; 2], V3),
 ) {
-    let first_light = sampler.round_size(light_samples).max(1);
     let mut buf = Vec::new();
     for y in start[1]..end[1] {
         for x in start[0]..end[0] {
             for i in 0..sampler.pixel_samples([x, y]) {
-                let (p, l) = trace_stateless(
-                    scene,
-                    &mut sampler,
-                    first_light,
-                    &mut buf,
-                    resolution,
-                    [x, y],
-                    i,
-                );
+                let (p, l) =
+                    trace_stateless(scene, &mut sampler, light, &mut buf, resolution, [x, y], i);
                 f(p, l);
             }
         }
@@ -257,12 +298,11 @@ pub fn for_each_sample_stateless<S: Sampler>(
 }
 
 /// Camera sample `i` of `pixel` traced through the stateless layer: its film position and
-/// radiance. `first_light` is the sampler's rounded light-sample count at vertex 1; `buf` is
-/// the light points' scratch, kept between calls.
+/// radiance. `buf` is the light points' scratch, kept between calls.
 fn trace_stateless<S: Sampler>(
     scene: &Scene,
     sampler: &mut S,
-    first_light: u32,
+    light: &LightSamples,
     buf: &mut Vec<f32>,
     resolution: [u32; 2],
     pixel: [u32; 2],
@@ -271,7 +311,7 @@ fn trace_stateless<S: Sampler>(
     let camera = sampler.camera_sample(pixel, i);
     let mut src = Stateless {
         sampler,
-        first_light,
+        light: *light,
         buf: core::mem::take(buf),
     };
     let l = radiance(scene, &camera, &mut src, resolution);
@@ -318,25 +358,88 @@ pub fn for_each_sample<S: Sampler>(
 pub fn for_pixel_samples<S: Sampler>(
     scene: &Scene,
     mut sampler: S,
-    light_samples: u32,
+    light: &LightSamples,
     resolution: [u32; 2],
     pixel: [u32; 2],
     indices: core::ops::Range<u64>,
     mut f: impl FnMut([f32; 2], u64, V3),
 ) {
-    let first_light = sampler.round_size(light_samples).max(1);
     let mut buf = Vec::new();
     for i in indices {
         // Below the sampler's spp, which the caller made it for (u32).
         let (p, l) = trace_stateless(
             scene,
             &mut sampler,
-            first_light,
+            light,
             &mut buf,
             resolution,
             pixel,
             i as u32,
         );
         f(p, i, l);
+    }
+}
+
+/// Domain keys of a path's values at vertex `k`: its light samples, its direction and its
+/// roulette, each vertex its own (so each vertex's count may differ).
+const LIGHT_KEY: u64 = 0x100;
+const DIRECTION_KEY: u64 = 0x200;
+const ROULETTE_KEY: u64 = 0x300;
+
+/// A path's values from the camera sample's [`Domain`]: at vertex `k`, light sample `j` of
+/// `N_k` is [`Domain::split`]`(light key of k, N_k, j)`, so over the pixel's camera samples a
+/// vertex's light samples are one stratified sequence of `spp · N_k` points; the direction and
+/// the roulette are [`Domain::branch`]es.
+#[derive(Debug)]
+pub struct DomainSource {
+    /// The camera sample's domain.
+    pub root: Domain,
+    /// Light points per vertex.
+    pub light: LightSamples,
+    /// Scratch for the light points.
+    pub buf: Vec<f32>,
+}
+
+impl PathSource for DomainSource {
+    fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
+        let n = self.light.at(k);
+        self.buf.clear();
+        for j in 0..n {
+            // `n ≤ 65536` and a camera index below 2³²: the split's index fits.
+            let d = self.root.split(LIGHT_KEY + k as u64, n, j);
+            self.buf.extend(d.map_or([0.5; 2], |d| d.get_2d(0)));
+        }
+        let u = self.root.branch(DIRECTION_KEY + k as u64).get_2d(0);
+        let rr = self.root.branch(ROULETTE_KEY + k as u64).get_1d(0);
+        (&self.buf, u, rr)
+    }
+}
+
+/// Calls `f(p_film, radiance)` for every camera sample of the pixels `start .. end`, the camera
+/// values from `sampler` and the rest from its samples' domains ([`DomainSource`]).
+pub fn for_each_sample_domains(
+    scene: &Scene,
+    mut sampler: OwenSobolSampler,
+    light: &LightSamples,
+    resolution: [u32; 2],
+    start: [u32; 2],
+    end: [u32; 2],
+    mut f: impl FnMut([f32; 2], V3),
+) {
+    let mut buf = Vec::new();
+    for y in start[1]..end[1] {
+        for x in start[0]..end[0] {
+            for i in 0..sampler.pixel_samples([x, y]) {
+                let camera = sampler.camera_sample([x, y], i);
+                let mut src = DomainSource {
+                    root: sampler.domain(),
+                    light: *light,
+                    buf: core::mem::take(&mut buf),
+                };
+                let l = radiance(scene, &camera, &mut src, resolution);
+                buf = src.buf;
+                f(camera.p_film, l);
+            }
+        }
     }
 }

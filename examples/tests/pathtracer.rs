@@ -5,8 +5,11 @@ use std::path::PathBuf;
 use std::process::Command;
 
 use nyquist::sampler::NAMES;
+use nyquist::sampler::OwenSobolSampler;
 use nyquist_examples::scene::Scene;
-use nyquist_examples::trace::{PathLayout, for_each_sample, for_each_sample_stateless};
+use nyquist_examples::trace::{
+    LightSamples, PathLayout, for_each_sample, for_each_sample_domains, for_each_sample_stateless,
+};
 use nyquist_examples::{RenderConfig, build_sampler, render};
 use nyquist_film::output::{exr::read_exr, pfm::read_pfm};
 
@@ -75,7 +78,7 @@ fn renders_do_not_depend_on_the_thread_count() {
     let mut c = RenderConfig::new("dof");
     c.size = [20, 12];
     c.spp = 4;
-    c.light_samples = 3;
+    c.light_samples = LightSamples::first(3);
     c.tile_size = 8;
     c.sampler = "zsobol".into();
     let one = render(&c, |_, _| {}).unwrap();
@@ -97,6 +100,17 @@ fn mean_se(xs: &[f64]) -> (f64, f64) {
 /// `spp` camera samples × `light` light samples from `sampler` at `seed`, through the
 /// request-and-fill layer or the stateless one.
 fn block_mean(sampler: &str, spp: u32, light: u32, seed: u64, stateless: bool) -> f64 {
+    block_mean_per_vertex(sampler, spp, &LightSamples::first(light), seed, stateless)
+}
+
+/// [`block_mean`] with light samples per vertex.
+fn block_mean_per_vertex(
+    sampler: &str,
+    spp: u32,
+    light: &LightSamples,
+    seed: u64,
+    stateless: bool,
+) -> f64 {
     const SIZE: [u32; 2] = [32, 32];
     let scene = Scene::cornell();
     let s = build_sampler(sampler, SIZE, spp, seed).unwrap();
@@ -150,6 +164,55 @@ fn every_randomised_sampler_is_unbiased() {
     assert!(failures.is_empty(), "{failures:#?}");
 }
 
+/// Light samples varying per vertex (4, 2, 1), drawn from the camera sample's domains and
+/// through the arrays and the counter: each unbiased against the same reference as
+/// [`every_randomised_sampler_is_unbiased`] (the same 4σ rule: about 6·10⁻⁵ per comparison,
+/// three comparisons; fixed seeds).
+#[test]
+fn light_samples_per_vertex_are_unbiased_in_every_layout() {
+    const SIZE: [u32; 2] = [32, 32];
+    let reference: Vec<f64> = (0..256)
+        .map(|r| block_mean("random", 16, 1, 3_000_017 + r, false))
+        .collect();
+    let (m_ref, se_ref) = mean_se(&reference);
+    let light = LightSamples::parse("4,2,1").unwrap();
+    let scene = Scene::cornell();
+    let domains = |seed: u64| {
+        let s = OwenSobolSampler::new(4, seed).unwrap();
+        let (mut sum, mut n) = (0.0f64, 0u32);
+        for_each_sample_domains(&scene, s, &light, SIZE, [6, 10], [22, 26], |_, l| {
+            sum += f64::from(l.0.iter().sum::<f32>()) / 3.0;
+            n += 1;
+        });
+        sum / f64::from(n)
+    };
+    let layouts: [(&str, Box<dyn Fn(u64) -> f64>); 3] = [
+        ("domains", Box::new(domains)),
+        (
+            "arrays",
+            Box::new(|seed| block_mean_per_vertex("owen-sobol", 4, &light, seed, false)),
+        ),
+        (
+            "counter",
+            Box::new(|seed| block_mean_per_vertex("owen-sobol", 4, &light, seed, true)),
+        ),
+    ];
+    for (name, mean) in layouts {
+        let xs: Vec<f64> = (0..32).map(|r| mean(1 + 7919 * r)).collect();
+        let (m, se) = mean_se(&xs);
+        let z = (m - m_ref) / (se * se + se_ref * se_ref).sqrt();
+        assert!(
+            z.abs() <= 4.0,
+            "{name}: {m:.5} ± {se:.5} vs {m_ref:.5} ± {se_ref:.5}"
+        );
+    }
+    assert_eq!(light.label(), "4,2");
+    assert_eq!(
+        LightSamples::parse("4,0").unwrap_err(),
+        "\"4,0\": \"0\" is not a count in 1..=65536"
+    );
+}
+
 /// The estimator is consistent too: the unscrambled Halton sampler (deterministic) converges
 /// to the reference as spp grows (error at 256 spp well under that at 4 spp).
 #[test]
@@ -174,7 +237,7 @@ fn the_stateless_layer_renders_what_the_layout_renders() {
     let mut c = RenderConfig::new("dof");
     c.size = [16, 12];
     c.spp = 4;
-    c.light_samples = 3;
+    c.light_samples = LightSamples::first(3);
     for name in [
         "random",
         "halton",

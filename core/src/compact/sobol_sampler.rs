@@ -83,8 +83,8 @@ impl<const N: usize> SobolSampler<N> {
     ///
     /// ```
     /// use nyquist::{compact::SobolSampler, scramble::Scramble};
-    /// assert!(SobolSampler::<8>::new([16384, 16384], 16, Scramble::None, 0).is_ok());
-    /// assert!(SobolSampler::<8>::new([16384, 16384], 32, Scramble::None, 0).is_err());
+    /// assert!(SobolSampler::<8>::new([16384, 16384], 4096, Scramble::None, 0).is_ok());
+    /// assert!(SobolSampler::<8>::new([65537, 16], 32, Scramble::None, 0).is_err());
     /// ```
     ///
     /// Dimensions 0 and 1 carry the pixel, so fewer than three do not compile:

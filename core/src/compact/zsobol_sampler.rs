@@ -73,13 +73,13 @@ impl ZSobolSampler {
     /// as [`sampler::ZSobolSampler::new`].
     ///
     /// # Errors
-    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if the
-    /// Morton index would pass 32 bits (`2r + log₂ spp > 32`, `2^r` the image's square).
+    /// [`Error::ZeroSize`] if `spp` or a resolution component is 0; [`Error::TooMany`] if
+    /// `spp > 2³¹` or a side passes 65536.
     ///
     /// ```
     /// use nyquist::{compact::ZSobolSampler, scramble::Scramble};
-    /// assert!(ZSobolSampler::new([4096, 2160], 256, Scramble::FastOwen, 0).is_ok());
-    /// assert!(ZSobolSampler::new([4096, 2160], 512, Scramble::FastOwen, 0).is_err());
+    /// assert!(ZSobolSampler::new([16384, 16384], 4096, Scramble::FastOwen, 0).is_ok());
+    /// assert!(ZSobolSampler::new([65537, 2160], 512, Scramble::FastOwen, 0).is_err());
     /// ```
     pub fn new(
         resolution: [u32; 2],

@@ -10,8 +10,10 @@ use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use nyquist::filter::FilterKind;
 use nyquist_examples::experiment::{
-    Experiment, contact_sheet, markdown, markdown_equal_time, pixel_reference, pixel_study,
+    Experiment, contact_sheet, light_layouts_markdown, markdown, markdown_equal_time,
+    pixel_reference, pixel_study,
 };
+use nyquist_examples::trace::LightSamples;
 use nyquist_examples::{RenderConfig, adaptive_study, render};
 use nyquist_film::adaptive::AdaptiveConfig;
 use nyquist_film::{Image, write_image_file};
@@ -46,6 +48,43 @@ enum Command {
     ///
     /// Example: pathtracer adaptive --scene dof --budgets 32,64,128 --map dof-spp.png
     Adaptive(AdaptiveArgs),
+    /// Light samples varying per vertex, three ways: pbrt-v2's arrays sized up front,
+    /// pbrt-v4's dimension counter, and domains split per vertex; RMSE against the cached
+    /// reference as a Markdown table.
+    ///
+    /// Example: pathtracer domains --light-samples 4,2,1 --spp 16
+    Domains(DomainsArgs),
+}
+
+#[derive(clap::Args, Debug)]
+struct DomainsArgs {
+    /// Scene.
+    #[arg(long, default_value = "cornell")]
+    scene: String,
+    /// Image size WxH.
+    #[arg(long, default_value = "128x128", value_parser = parse_size)]
+    size: [u32; 2],
+    /// Camera samples per pixel.
+    #[arg(long, default_value_t = 16)]
+    spp: u32,
+    /// Light samples per vertex (N1,N2,…).
+    #[arg(long, default_value = "4,2,1", value_parser = LightSamples::parse)]
+    light_samples: LightSamples,
+    /// Samplers of the arrays and counter rows (the domain row is owen-sobol's).
+    #[arg(long, value_delimiter = ',', default_value = "owen-sobol,pmj02,zsobol")]
+    samplers: Vec<String>,
+    /// Renders (seeds) per configuration.
+    #[arg(long, default_value_t = 8)]
+    runs: u32,
+    /// Base seed.
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+    /// Camera samples per pixel of the reference (× 4 light samples).
+    #[arg(long, default_value_t = 1024)]
+    reference_spp: u32,
+    /// Worker threads (default: all cores).
+    #[arg(long)]
+    threads: Option<usize>,
 }
 
 #[derive(clap::Args, Debug)]
@@ -129,9 +168,10 @@ struct RenderArgs {
     /// Camera samples per pixel.
     #[arg(long, default_value_t = 16)]
     spp: u32,
-    /// Light samples per camera sample at the first vertex.
-    #[arg(long, default_value_t = 1)]
-    light_samples: u32,
+    /// Light samples per camera sample at each vertex: N (at the first vertex, one at the
+    /// others) or a list N1,N2,… (one per vertex from the first; one past the list).
+    #[arg(long, default_value = "1", value_parser = LightSamples::parse)]
+    light_samples: LightSamples,
     /// Image size WxH.
     #[arg(long, default_value = "256x256", value_parser = parse_size)]
     size: [u32; 2],
@@ -149,6 +189,10 @@ struct RenderArgs {
     /// only as far as each path goes) instead of SampleLayout and PixelRangeSampler.
     #[arg(long)]
     stateless: bool,
+    /// Draw the values past the camera sample from the camera sample's domains: light sample
+    /// j of vertex k is Domain::split(k, N_k, j) (owen-sobol only).
+    #[arg(long, conflicts_with_all = ["stateless", "adaptive"])]
+    domains: bool,
     /// Adaptive sampling by error (docs/film.md): --spp becomes the budget; pixels whose
     /// relative error |A − B|/2 over the value is above THRESHOLD double their samples, worst
     /// first. Progressive samplers (owen-sobol, sobol, pmj02, zsobol, halton, random).
@@ -253,6 +297,7 @@ fn main() -> Result<()> {
             config.threads = threads(a.threads);
             config.filter = filter;
             config.stateless = a.stateless;
+            config.domains = a.domains;
             if a.spp_map.is_some() && a.adaptive.is_none() {
                 bail!("--spp-map: only with --adaptive");
             }
@@ -287,6 +332,27 @@ fn main() -> Result<()> {
         }
         Command::Converge(a) => converge(a)?,
         Command::Adaptive(a) => adaptive(a)?,
+        Command::Domains(a) => {
+            if a.runs == 0 {
+                bail!("--runs must be positive");
+            }
+            let e = Experiment {
+                scene: a.scene,
+                size: a.size,
+                samplers: a.samplers,
+                runs: a.runs,
+                seed: a.seed,
+                threads: threads(a.threads),
+                reference_spp: a.reference_spp,
+            };
+            let bar1 = bar("reference", "tiles");
+            let reference = e.reference(tick(&bar1))?;
+            bar1.finish_and_clear();
+            let bar2 = bar("domains", "renders");
+            let rows = e.light_layouts(a.spp, &a.light_samples, &reference, tick(&bar2))?;
+            bar2.finish_and_clear();
+            print!("{}", light_layouts_markdown(&rows));
+        }
         Command::Experiment(a) => {
             if a.runs == 0 {
                 bail!("--runs must be positive");

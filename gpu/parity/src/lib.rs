@@ -613,9 +613,9 @@ impl Job {
                     .iter()
                     .map(|&[_, _, index, dim]| {
                         let mut a = [0; WORDS_PER_REQUEST];
-                        let four = s.sample_4d(index, dim);
+                        let four = s.sample_4d(u64::from(index), dim);
                         for k in 0..4 {
-                            a[k] = s.sample_u32(index, dim.wrapping_add(k as u32));
+                            a[k] = s.sample_u32(u64::from(index), dim.wrapping_add(k as u32));
                             a[4 + k] = four[k].to_bits();
                         }
                         a
@@ -1021,6 +1021,32 @@ pub fn random_requests(n: usize, seed: u64) -> Vec<Request> {
             ]
         })
         .collect()
+}
+
+/// Limits `requests` to where the shaders follow the core: for the samplers the core made
+/// progressive and padded (`docs/gpu.md`), sample indices below the spp the job was made for
+/// (PMJ(0,2): below 2¹⁶, its table) and dimensions below 1000 (a request reads a few past its
+/// first, all below the 1024 where the core's padding starts). The shaders still wrap past
+/// those; the sequences are unchanged.
+pub fn restrict_to_the_shaders_domain(job: &Job, requests: &mut [Request]) {
+    let spp = match *job {
+        Job::ZSobolSampler { spp, .. } => Some(spp.next_power_of_two()),
+        Job::SobolSampler { spp, .. } => Some(spp.next_power_of_two()),
+        Job::Pmj02Sampler { .. } => Some(1 << 16),
+        _ => None,
+    };
+    let padded = matches!(
+        job,
+        Job::SobolSampler { .. } | Job::OwenSobolSampler { .. } | Job::HaltonSampler { .. }
+    );
+    for q in requests {
+        if let Some(spp) = spp {
+            q[2] %= spp;
+        }
+        if padded {
+            q[3] %= 1000;
+        }
+    }
 }
 
 /// The first request whose answers differ, with both answers.

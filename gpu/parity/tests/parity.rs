@@ -8,7 +8,9 @@
 
 use nyquist::sampler::Jitter;
 use nyquist::scramble::Scramble;
-use nyquist_gpu_parity::{Gpu, Job, Request, Source, first_mismatch, random_requests};
+use nyquist_gpu_parity::{
+    Gpu, Job, Request, Source, first_mismatch, random_requests, restrict_to_the_shaders_domain,
+};
 
 fn jobs() -> Vec<Job> {
     let mut jobs = vec![
@@ -372,6 +374,7 @@ fn every_job_matches_the_core_from_every_source() {
         if let Job::HaltonSampler { .. } | Job::Halton { .. } = job {
             requests.extend(halton_edge_requests(&job));
         }
+        restrict_to_the_shaders_domain(&job, &mut requests);
         let t = std::time::Instant::now();
         let want = job.cpu(&requests);
         let cpu_seconds = t.elapsed().as_secs_f64();
