@@ -164,6 +164,15 @@ typedef struct NyqFilter NyqFilter;
 // and tables alone; [`nyq_sampler_create`], which takes any name, links every kind.
 typedef struct NyqSampler NyqSampler;
 
+// A domain: the key of its Owen-scrambled Sobol sequence and its point's index (see
+// `nyquist::sampler::Domain`).
+typedef struct NyqDomain {
+  // The sequence's key.
+  uint64_t key;
+  // The point's index in it.
+  uint64_t index;
+} NyqDomain;
+
 // A filter importance sample: an offset from the pixel centre and its weight.
 typedef struct NyqFilterSample {
   // Offset `[x, y]` in pixels, inside the filter's support.
@@ -245,6 +254,93 @@ typedef float (*NyqFilterEval)(void *user, float x, float y);
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+// Writes the current sample of `sampler` as a domain to `*out`: its dimension `d` is the
+// sampler's dimension `d` (after `nyq_sampler_start_pixel_sample`).
+//
+// # Errors
+// `NYQ_ERR_NULL` if a pointer is null; `NYQ_ERR_OUT_OF_RANGE` if the sampler's samples are not
+// domains (every sampler but `owen-sobol`).
+//
+// # Safety
+// `sampler` is null or a live handle; `out` is null or valid for writing one [`NyqDomain`].
+enum NyqStatus nyq_sampler_domain(const struct NyqSampler *sampler, struct NyqDomain *out);
+
+// Writes `domain`'s branch for `key` (a purpose: light, BSDF, roulette) to `*out`: a new
+// sequence at the same index.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null.
+//
+// # Safety
+// `out` is null or valid for writing one [`NyqDomain`].
+enum NyqStatus nyq_domain_branch(struct NyqDomain domain,
+                                 uint64_t key,
+                                 struct NyqDomain *out);
+
+// Writes sub-sample `k` of `count` of `domain`'s sample, for `key`, to `*out`: point
+// `count·index + k` of a new sequence (over N parent samples, the first N·count points).
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null; `NYQ_ERR_ZERO_SIZE` if `count` is 0;
+// `NYQ_ERR_OUT_OF_RANGE` if `k >= count`; `NYQ_ERR_TOO_MANY` if the index passes 2⁶⁴ − 1.
+//
+// # Safety
+// `out` is null or valid for writing one [`NyqDomain`].
+enum NyqStatus nyq_domain_split(struct NyqDomain domain,
+                                uint64_t key,
+                                uint32_t count,
+                                uint32_t k,
+                                struct NyqDomain *out);
+
+// Writes sub-sample `k` of `domain`'s sample, for `key`, to `*out`, for a count that varies
+// per sample: point `k` of a sequence of the sample's own.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null.
+//
+// # Safety
+// `out` is null or valid for writing one [`NyqDomain`].
+enum NyqStatus nyq_domain_distribute(struct NyqDomain domain,
+                                     uint64_t key,
+                                     uint32_t k,
+                                     struct NyqDomain *out);
+
+// Writes sub-sample `k` of `domain`'s sample, for `key`, to `*out`, for a count that varies
+// per sample: the sample's index in a sequence of sub-sample `k`'s own.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null.
+//
+// # Safety
+// `out` is null or valid for writing one [`NyqDomain`].
+enum NyqStatus nyq_domain_chain(struct NyqDomain domain,
+                                uint64_t key,
+                                uint32_t k,
+                                struct NyqDomain *out);
+
+// Writes dimension `dim` of `domain`'s point, in `[0, 1)`, to `*out`.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null.
+//
+// # Safety
+// `out` is null or valid for writing one `float`.
+enum NyqStatus nyq_domain_get_1d(struct NyqDomain domain,
+                                 uint32_t dim,
+                                 float *out);
+
+// Writes dimensions `dim` and `dim + 1` of `domain`'s point, in `[0, 1)²`, to `out[0]` and
+// `out[1]`.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `out` is null.
+//
+// # Safety
+// `out` is null or valid for writing two `float`s.
+enum NyqStatus nyq_domain_get_2d(struct NyqDomain domain,
+                                 uint32_t dim,
+                                 float *out);
 
 // Creates a built-in filter from a spec `name[:key=value,…]` and writes the handle to `*out`.
 // Names `box` (`boxcar`), `triangle` (`tent`), `gaussian`, `mitchell`, `catmull-rom`,

@@ -52,6 +52,7 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
+mod domain;
 mod ffi;
 mod filter;
 mod mask;
@@ -65,6 +66,7 @@ mod sequence;
 mod status;
 mod stratify;
 
+pub use domain::*;
 pub use filter::*;
 pub use mask::*;
 pub use pixel_stats::*;

@@ -36,6 +36,11 @@ impl Debug for NyqSampler {
 }
 
 impl NyqSampler {
+    /// The current sample as a domain, where the sampler's samples are domains.
+    pub(crate) fn domain(&self) -> Option<nyquist::sampler::Domain> {
+        self.inner.domain()
+    }
+
     /// A handle over `sampler`.
     fn new(sampler: impl HandleSampler + 'static) -> NyqSampler {
         NyqSampler {

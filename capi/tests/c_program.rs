@@ -355,6 +355,16 @@ fn pixel_stats_lines(e: &mut Expected) {
         .map(|i| sample_half(i * 5 + (1 << 40)).to_string())
         .collect();
     e.line(&format!("halves {}", halves.join(" ")));
+    let mut os = nyquist::sampler::OwenSobolSampler::new(16, 7).unwrap();
+    os.start_pixel_sample([3, 5], 2, 0);
+    let root = os.pixel_domain();
+    let mut dv: Vec<f32> = (0..4)
+        .flat_map(|k| root.split(1, 4, k).unwrap().get_2d(0))
+        .collect();
+    dv.push(root.branch(2).get_1d(1030));
+    dv.push(root.chain(3, 1).get_1d(0));
+    e.floats("domain", &dv);
+    e.status("domain_random", NyqStatus::NYQ_ERR_NULL);
     use NyqStatus::*;
     for (key, code) in [
         ("stats_nan_weight", NYQ_ERR_NON_FINITE),

@@ -432,7 +432,7 @@ pub fn for_each_sample_domains(
             for i in 0..sampler.pixel_samples([x, y]) {
                 let camera = sampler.camera_sample([x, y], i);
                 let mut src = DomainSource {
-                    root: sampler.domain(),
+                    root: sampler.pixel_domain(),
                     light: *light,
                     buf: core::mem::take(&mut buf),
                 };

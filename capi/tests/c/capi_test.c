@@ -344,6 +344,25 @@ static void pixel_stats(void) {
         printf(" %" PRIu32, h[i]);
     }
     printf("\n");
+    /* Domains: an owen-sobol sample's domain, four light samples split from it, a branch. */
+    NyqSampler *os = NULL;
+    NyqDomain root, sub;
+    float dv[2 * 4 + 2];
+    CHECK(nyq_sampler_create("owen-sobol", 64, 64, 16, 7, &os));
+    CHECK(nyq_sampler_start_pixel_sample(os, 3, 5, 2, 0));
+    CHECK(nyq_sampler_domain(os, &root));
+    for (uint32_t k = 0; k < 4; k++) {
+        CHECK(nyq_domain_split(root, 1, 4, k, &sub));
+        CHECK(nyq_domain_get_2d(sub, 0, &dv[2 * k]));
+    }
+    CHECK(nyq_domain_branch(root, 2, &sub));
+    CHECK(nyq_domain_get_1d(sub, 1030, &dv[8]));
+    CHECK(nyq_domain_chain(root, 3, 1, &sub));
+    CHECK(nyq_domain_get_1d(sub, 0, &dv[9]));
+    printf("domain");
+    put_floats(dv, 10);
+    put_status("domain_random", nyq_sampler_domain(NULL, &root));
+    nyq_sampler_destroy(os);
     NyqPixelStats bad = a[0];
     bad.weight2_sum = -1.0;
     double v[3] = {1.0, 1.0, 1.0}, r;

@@ -175,6 +175,10 @@ impl<S: Sampler> Sampler for AdaptiveSampler<S> {
         self.inner.arrays_are_dimension_runs()
     }
 
+    fn domain(&self) -> Option<super::Domain> {
+        self.inner.domain()
+    }
+
     /// `min_spp` until `min_spp` samples of `pixel` were reported; then the maximum if they
     /// disagree, else `min_spp`.
     fn pixel_samples(&self, pixel: [u32; 2]) -> u32 {

@@ -39,7 +39,7 @@ const CHAIN: u64 = 0x4348_4149_4e; // "CHAIN"
 /// use nyquist::sampler::{Domain, OwenSobolSampler, Sampler};
 /// let mut s = OwenSobolSampler::new(16, 7).unwrap();
 /// s.start_pixel_sample([3, 5], 2, 0);
-/// let pixel: Domain = s.domain();
+/// let pixel: Domain = s.pixel_domain();
 /// assert_eq!(pixel.get_2d(0), s.get_pixel_2d()); // the sample itself
 /// // Four light samples per camera sample, still one stratified stream per pixel.
 /// let lights: Vec<[f32; 2]> = (0..4).map(|k| pixel.split(1, 4, k).unwrap().get_2d(0)).collect();
@@ -236,8 +236,9 @@ mod tests {
                 s.start_pixel_sample(pixel, i, d);
                 let want = s.get_1d();
                 s.start_pixel_sample(pixel, i, d);
-                assert_eq!(s.domain().get_1d(d), want, "{pixel:?} {i} {d}");
-                assert_eq!(s.domain().index(), u64::from(i));
+                assert_eq!(s.pixel_domain().get_1d(d), want, "{pixel:?} {i} {d}");
+                assert_eq!(s.domain(), Some(s.pixel_domain()));
+                assert_eq!(s.pixel_domain().index(), u64::from(i));
             }
         }
     }

@@ -336,6 +336,21 @@ pub trait Sampler {
     fn report(&mut self, pixel: [u32; 2], sample_index: u32, radiance: &[f32]) {
         let _ = (pixel, sample_index, radiance);
     }
+
+    /// The current pixel sample as a [`Domain`], for samplers whose samples are domains
+    /// ([`OwenSobolSampler`]: its dimension `d` is the domain's dimension `d`), from which
+    /// [`Domain::split`] and the others derive sub-streams. `None` (the default) for the others.
+    ///
+    /// ```
+    /// use nyquist::sampler::{OwenSobolSampler, RandomSampler, Sampler};
+    /// let mut s = OwenSobolSampler::new(4, 7).unwrap();
+    /// s.start_pixel_sample([1, 2], 3, 0);
+    /// assert_eq!(s.domain().map(|d| d.index()), Some(3));
+    /// assert_eq!(RandomSampler::new(4, 7).unwrap().domain(), None);
+    /// ```
+    fn domain(&self) -> Option<Domain> {
+        None
+    }
 }
 
 /// What a camera needs for one pixel sample.

@@ -494,6 +494,10 @@ impl Sampler for NamedSampler {
         delegate!(self, s => s.camera_sample(pixel, sample_index))
     }
 
+    fn domain(&self) -> Option<super::Domain> {
+        delegate!(self, s => s.domain())
+    }
+
     #[inline]
     fn round_size(&self, n: u32) -> u32 {
         delegate!(self, s => s.round_size(n))

@@ -116,17 +116,17 @@ impl OwenSobolSampler {
 
     /// The current pixel sample as a [`Domain`]: its dimension `d` is this sampler's dimension
     /// `d`, and [`Domain::split`], [`Domain::branch`] and the others derive sub-streams from it
-    /// (valid after [`Sampler::start_pixel_sample`]).
+    /// (valid after [`Sampler::start_pixel_sample`]; [`Sampler::domain`] returns the same).
     ///
     /// ```
     /// use nyquist::sampler::{OwenSobolSampler, Sampler};
     /// let mut s = OwenSobolSampler::new(4, 1).unwrap();
     /// s.start_pixel_sample([2, 2], 3, 6);
-    /// let d = s.domain();
+    /// let d = s.pixel_domain();
     /// assert_eq!(d.index(), 3);
     /// assert_eq!(d.get_1d(6), s.get_1d());
     /// ```
-    pub fn domain(&self) -> Domain {
+    pub fn pixel_domain(&self) -> Domain {
         Domain::new(self.key, u64::from(self.index))
     }
 
@@ -200,6 +200,10 @@ impl Sampler for OwenSobolSampler {
     }
 
     super::global_point_arrays!();
+
+    fn domain(&self) -> Option<Domain> {
+        Some(self.pixel_domain())
+    }
 }
 
 #[cfg(test)]
