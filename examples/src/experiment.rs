@@ -227,9 +227,9 @@ pub enum LightLayout {
     /// pbrt-v4: the next dimensions in order (`get_array_2d`, `get_2d`, `get_1d`), as far as
     /// the path goes.
     Counter,
-    /// The camera sample's domains: light sample `j` of vertex `k` is
-    /// `Domain::split(k, N_k, j)` (owen-sobol).
-    Domains,
+    /// The camera sample's domains: light sample `j` of vertex `k` derives from the vertex's key
+    /// by split, distribute or chain (owen-sobol).
+    Domains(crate::trace::Derivation),
 }
 
 impl LightLayout {
@@ -238,7 +238,11 @@ impl LightLayout {
         match self {
             LightLayout::Arrays => "pbrt-v2 arrays",
             LightLayout::Counter => "pbrt-v4 counter",
-            LightLayout::Domains => "domains (split)",
+            LightLayout::Domains(d) => match d {
+                crate::trace::Derivation::Split => "domains: split",
+                crate::trace::Derivation::Distribute => "domains: distribute",
+                crate::trace::Derivation::Chain => "domains: chain",
+            },
         }
     }
 }
@@ -280,7 +284,13 @@ impl Experiment {
                 plan.push((layout, name.clone()));
             }
         }
-        plan.push((LightLayout::Domains, "owen-sobol".to_owned()));
+        for how in [
+            crate::trace::Derivation::Split,
+            crate::trace::Derivation::Distribute,
+            crate::trace::Derivation::Chain,
+        ] {
+            plan.push((LightLayout::Domains(how), "owen-sobol".to_owned()));
+        }
         let total = plan.len() * self.runs as usize;
         let mut done = 0;
         let mut rows = Vec::new();
@@ -295,7 +305,11 @@ impl Experiment {
                 config.seed = run_seed(self.seed, r);
                 config.threads = self.threads;
                 config.stateless = layout == LightLayout::Counter;
-                config.domains = layout == LightLayout::Domains;
+                config.counter = layout == LightLayout::Counter;
+                config.domains = match layout {
+                    LightLayout::Domains(how) => Some(how),
+                    _ => None,
+                };
                 let out = render(&config, |_, _| {})
                     .with_context(|| format!("{} {name}", layout.label()))?;
                 sum_sq += out.image.rmse(reference).context("RMSE")?.powi(2);
@@ -321,10 +335,10 @@ impl Experiment {
 pub fn light_layouts_markdown(rows: &[LayoutRow]) -> String {
     let base = rows
         .iter()
-        .find(|r| r.layout == LightLayout::Domains)
+        .find(|r| r.layout == LightLayout::Domains(crate::trace::Derivation::Split))
         .map_or(f64::NAN, |r| r.rmse);
     let mut s = String::from(
-        "| values past the camera sample | sampler | spp | light samples | RMSE | ÷ domains | ms |\n|---|---|---|---|---|---|---|\n",
+        "| light samples drawn by | sampler | spp | light samples | RMSE | ÷ split | ms |\n|---|---|---|---|---|---|---|\n",
     );
     for r in rows {
         s.push_str(&format!(

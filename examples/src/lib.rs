@@ -26,8 +26,8 @@ use nyquist_film::{Film, FilmConfig, FilmSample, Image, PixelExtras, render_tile
 
 use crate::scene::Scene;
 use crate::trace::{
-    LightSamples, PathLayout, for_each_sample, for_each_sample_domains, for_each_sample_stateless,
-    for_pixel_samples,
+    Derivation, LightSamples, PathLayout, for_each_sample, for_each_sample_counter,
+    for_each_sample_domains, for_each_sample_stateless, for_pixel_samples,
 };
 
 /// Builds the sampler called `name` ([`NamedSampler::new`]: any of
@@ -65,11 +65,14 @@ pub struct RenderConfig {
     /// Draw the values through the stateless layer (`camera_sample`, `get_array_2d`,
     /// `get_2d`, `get_1d`) instead of `SampleLayout` and `PixelRangeSampler`.
     pub stateless: bool,
-    /// Draw the values past the camera sample from the camera sample's [`Domain`]s
-    /// ([`trace::DomainSource`]; the `owen-sobol` sampler only).
+    /// With `stateless`, draw the light points one `get_2d` each (pbrt-v4's counter) instead of
+    /// one `get_array_2d` per vertex.
+    pub counter: bool,
+    /// Draw the values past the camera sample from the camera sample's [`Domain`]s, the light
+    /// samples by this derivation ([`trace::DomainSource`]; the `owen-sobol` sampler only).
     ///
     /// [`Domain`]: nyquist::sampler::Domain
-    pub domains: bool,
+    pub domains: Option<Derivation>,
     /// Render adaptively ([`render_adaptive`]; `spp` is then its budget and the sampler is
     /// made for its `max_spp`); the stateless layer draws the values.
     pub adaptive: Option<AdaptiveConfig>,
@@ -90,7 +93,8 @@ impl RenderConfig {
             tile_size: 16,
             filter: FilterKind::parse("box").expect("the box filter parses"),
             stateless: false,
-            domains: false,
+            counter: false,
+            domains: None,
             adaptive: None,
         }
     }
@@ -125,7 +129,7 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
         return render_adaptively(config, a, scene);
     }
     let sampler = build_sampler(&config.sampler, config.size, config.spp, config.seed)?;
-    if config.domains && config.sampler != "owen-sobol" {
+    if config.domains.is_some() && config.sampler != "owen-sobol" {
         bail!(
             "domains: the sampler is {:?}; only owen-sobol's samples are domains",
             config.sampler
@@ -149,9 +153,14 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
                 return;
             };
             let n = &config.light_samples;
-            if config.domains {
+            if let Some(how) = config.domains {
                 let s = domain_sampler.clone();
-                for_each_sample_domains(&scene, s, n, config.size, a, b, |p, l| {
+                for_each_sample_domains(&scene, s, n, how, config.size, a, b, |p, l| {
+                    tile.add_sample(p, l.0, 1.0)
+                });
+            } else if config.stateless && config.counter {
+                let s = sampler.clone();
+                for_each_sample_counter(&scene, s, n, config.size, a, b, |p, l| {
                     tile.add_sample(p, l.0, 1.0)
                 });
             } else if config.stateless {

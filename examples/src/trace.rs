@@ -195,13 +195,22 @@ pub struct Stateless<'a, S: ?Sized> {
     pub light: LightSamples,
     /// Scratch for the light points.
     pub buf: Vec<f32>,
+    /// Draw the light points one `get_2d` each (pbrt-v4's counter) instead of one
+    /// `get_array_2d` per vertex (equal for samplers whose arrays are dimension runs).
+    pub counter: bool,
 }
 
 impl<S: Sampler + ?Sized> PathSource for Stateless<'_, S> {
     fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
         let n = self.sampler.round_size(self.light.at(k)).max(1);
         self.buf.resize(2 * n as usize, 0.0);
-        self.sampler.get_array_2d(&mut self.buf);
+        if self.counter {
+            for p in self.buf.chunks_exact_mut(2) {
+                p.copy_from_slice(&self.sampler.get_2d());
+            }
+        } else {
+            self.sampler.get_array_2d(&mut self.buf);
+        }
         let u = self.sampler.get_2d();
         let rr = self.sampler.get_1d();
         (&self.buf, u, rr)
@@ -278,8 +287,50 @@ pub fn radiance(
 /// stateless layer ([`Stateless`]), pixel by pixel in row order, `pixel_samples` each.
 pub fn for_each_sample_stateless<S: Sampler>(
     scene: &Scene,
-    mut sampler: S,
+    sampler: S,
     light: &LightSamples,
+    resolution: [u32; 2],
+    start: [u32; 2],
+    end: [u32; 2],
+    f: impl FnMut([f32; 2], V3),
+) {
+    let light = Lights {
+        counts: *light,
+        counter: false,
+    };
+    stateless_pixels(scene, sampler, &light, resolution, start, end, f);
+}
+
+/// [`for_each_sample_stateless`] with the light points one `get_2d` each: pbrt-v4's dimension
+/// counter, which a sampler that stratifies its arrays (pmj02, zsobol) does not stratify.
+pub fn for_each_sample_counter<S: Sampler>(
+    scene: &Scene,
+    sampler: S,
+    light: &LightSamples,
+    resolution: [u32; 2],
+    start: [u32; 2],
+    end: [u32; 2],
+    f: impl FnMut([f32; 2], V3),
+) {
+    let light = Lights {
+        counts: *light,
+        counter: true,
+    };
+    stateless_pixels(scene, sampler, &light, resolution, start, end, f);
+}
+
+/// Light samples per vertex and how the stateless layer draws them.
+#[derive(Clone, Copy, Debug)]
+struct Lights {
+    counts: LightSamples,
+    counter: bool,
+}
+
+/// The pixels `start .. end` in row order through the stateless layer.
+fn stateless_pixels<S: Sampler>(
+    scene: &Scene,
+    mut sampler: S,
+    light: &Lights,
     resolution: [u32; 2],
     start: [u32; 2],
     end: [u32; 2],
@@ -302,7 +353,7 @@ pub fn for_each_sample_stateless<S: Sampler>(
 fn trace_stateless<S: Sampler>(
     scene: &Scene,
     sampler: &mut S,
-    light: &LightSamples,
+    light: &Lights,
     buf: &mut Vec<f32>,
     resolution: [u32; 2],
     pixel: [u32; 2],
@@ -311,8 +362,9 @@ fn trace_stateless<S: Sampler>(
     let camera = sampler.camera_sample(pixel, i);
     let mut src = Stateless {
         sampler,
-        light: *light,
+        light: light.counts,
         buf: core::mem::take(buf),
+        counter: light.counter,
     };
     let l = radiance(scene, &camera, &mut src, resolution);
     *buf = src.buf;
@@ -365,12 +417,16 @@ pub fn for_pixel_samples<S: Sampler>(
     mut f: impl FnMut([f32; 2], u64, V3),
 ) {
     let mut buf = Vec::new();
+    let light = Lights {
+        counts: *light,
+        counter: false,
+    };
     for i in indices {
         // Below the sampler's spp, which the caller made it for (u32).
         let (p, l) = trace_stateless(
             scene,
             &mut sampler,
-            light,
+            &light,
             &mut buf,
             resolution,
             pixel,
@@ -386,16 +442,44 @@ const LIGHT_KEY: u64 = 0x100;
 const DIRECTION_KEY: u64 = 0x200;
 const ROULETTE_KEY: u64 = 0x300;
 
+/// How a vertex's light samples derive from the camera sample's domain (OpenQMC's three).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Derivation {
+    /// [`Domain::split`]: over the pixel's camera samples, a vertex's light samples are one
+    /// stratified sequence of `spp · N_k` points.
+    Split,
+    /// [`Domain::distribute`]: each camera sample's `N_k` light samples are a net of their own.
+    Distribute,
+    /// [`Domain::chain`]: light sample `j` of every camera sample is one net over the pixel.
+    Chain,
+}
+
+impl Derivation {
+    /// `split`, `distribute` or `chain`.
+    ///
+    /// # Errors
+    /// Any other name.
+    pub fn parse(name: &str) -> Result<Derivation, String> {
+        match name {
+            "split" => Ok(Derivation::Split),
+            "distribute" => Ok(Derivation::Distribute),
+            "chain" => Ok(Derivation::Chain),
+            other => Err(format!("{other:?}: one of split, distribute, chain")),
+        }
+    }
+}
+
 /// A path's values from the camera sample's [`Domain`]: at vertex `k`, light sample `j` of
-/// `N_k` is [`Domain::split`]`(light key of k, N_k, j)`, so over the pixel's camera samples a
-/// vertex's light samples are one stratified sequence of `spp · N_k` points; the direction and
-/// the roulette are [`Domain::branch`]es.
+/// `N_k` derives from the vertex's light key by [`Derivation`]; the direction and the roulette
+/// are [`Domain::branch`]es.
 #[derive(Debug)]
 pub struct DomainSource {
     /// The camera sample's domain.
     pub root: Domain,
     /// Light points per vertex.
     pub light: LightSamples,
+    /// How light samples derive from the root.
+    pub derivation: Derivation,
     /// Scratch for the light points.
     pub buf: Vec<f32>,
 }
@@ -403,11 +487,16 @@ pub struct DomainSource {
 impl PathSource for DomainSource {
     fn vertex(&mut self, k: usize) -> (&[f32], [f32; 2], f32) {
         let n = self.light.at(k);
+        let key = LIGHT_KEY + k as u64;
         self.buf.clear();
         for j in 0..n {
-            // `n ≤ 65536` and a camera index below 2³²: the split's index fits.
-            let d = self.root.split(LIGHT_KEY + k as u64, n, j);
-            self.buf.extend(d.map_or([0.5; 2], |d| d.get_2d(0)));
+            let d = match self.derivation {
+                // `n ≤ 65536` and a camera index below 2³²: the split's index fits.
+                Derivation::Split => self.root.split(key, n, j).unwrap_or(self.root),
+                Derivation::Distribute => self.root.distribute(key, j),
+                Derivation::Chain => self.root.chain(key, j),
+            };
+            self.buf.extend(d.get_2d(0));
         }
         let u = self.root.branch(DIRECTION_KEY + k as u64).get_2d(0);
         let rr = self.root.branch(ROULETTE_KEY + k as u64).get_1d(0);
@@ -417,10 +506,12 @@ impl PathSource for DomainSource {
 
 /// Calls `f(p_film, radiance)` for every camera sample of the pixels `start .. end`, the camera
 /// values from `sampler` and the rest from its samples' domains ([`DomainSource`]).
+#[allow(clippy::too_many_arguments)]
 pub fn for_each_sample_domains(
     scene: &Scene,
     mut sampler: OwenSobolSampler,
     light: &LightSamples,
+    derivation: Derivation,
     resolution: [u32; 2],
     start: [u32; 2],
     end: [u32; 2],
@@ -434,6 +525,7 @@ pub fn for_each_sample_domains(
                 let mut src = DomainSource {
                     root: sampler.pixel_domain(),
                     light: *light,
+                    derivation,
                     buf: core::mem::take(&mut buf),
                 };
                 let l = radiance(scene, &camera, &mut src, resolution);

@@ -8,7 +8,8 @@ use nyquist::sampler::NAMES;
 use nyquist::sampler::OwenSobolSampler;
 use nyquist_examples::scene::Scene;
 use nyquist_examples::trace::{
-    LightSamples, PathLayout, for_each_sample, for_each_sample_domains, for_each_sample_stateless,
+    Derivation, LightSamples, PathLayout, for_each_sample, for_each_sample_domains,
+    for_each_sample_stateless,
 };
 use nyquist_examples::{RenderConfig, build_sampler, render};
 use nyquist_film::output::{exr::read_exr, pfm::read_pfm};
@@ -167,7 +168,7 @@ fn every_randomised_sampler_is_unbiased() {
 /// Light samples varying per vertex (4, 2, 1), drawn from the camera sample's domains and
 /// through the arrays and the counter: each unbiased against the same reference as
 /// [`every_randomised_sampler_is_unbiased`] (the same 4σ rule: about 6·10⁻⁵ per comparison,
-/// three comparisons; fixed seeds).
+/// five comparisons; fixed seeds).
 #[test]
 fn light_samples_per_vertex_are_unbiased_in_every_layout() {
     const SIZE: [u32; 2] = [32, 32];
@@ -177,17 +178,23 @@ fn light_samples_per_vertex_are_unbiased_in_every_layout() {
     let (m_ref, se_ref) = mean_se(&reference);
     let light = LightSamples::parse("4,2,1").unwrap();
     let scene = Scene::cornell();
-    let domains = |seed: u64| {
+    let domains = |seed: u64, how: Derivation| {
         let s = OwenSobolSampler::new(4, seed).unwrap();
         let (mut sum, mut n) = (0.0f64, 0u32);
-        for_each_sample_domains(&scene, s, &light, SIZE, [6, 10], [22, 26], |_, l| {
+        for_each_sample_domains(&scene, s, &light, how, SIZE, [6, 10], [22, 26], |_, l| {
             sum += f64::from(l.0.iter().sum::<f32>()) / 3.0;
             n += 1;
         });
         sum / f64::from(n)
     };
-    let layouts: [(&str, Box<dyn Fn(u64) -> f64>); 3] = [
-        ("domains", Box::new(domains)),
+    type Mean<'a> = Box<dyn Fn(u64) -> f64 + 'a>;
+    let layouts: [(&str, Mean); 5] = [
+        ("split", Box::new(|s| domains(s, Derivation::Split))),
+        (
+            "distribute",
+            Box::new(|s| domains(s, Derivation::Distribute)),
+        ),
+        ("chain", Box::new(|s| domains(s, Derivation::Chain))),
         (
             "arrays",
             Box::new(|seed| block_mean_per_vertex("owen-sobol", 4, &light, seed, false)),

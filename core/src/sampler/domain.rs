@@ -28,9 +28,9 @@ use crate::math::fraction_to_f32;
 use crate::sequence::{IndexShuffle, SOBOL_DIMS, dim_seed, owen_sobol_u64, padded_u32};
 
 /// Tags that keep the four derivations' keys apart.
-const SPLIT: u64 = 0x5350_4c49_54; // "SPLIT"
-const DISTRIBUTE: u64 = 0x4449_5354_52; // "DISTR"
-const CHAIN: u64 = 0x4348_4149_4e; // "CHAIN"
+const SPLIT: u64 = 0x0053_504c_4954; // "SPLIT"
+const DISTRIBUTE: u64 = 0x0044_4953_5452; // "DISTR"
+const CHAIN: u64 = 0x0043_4841_494e; // "CHAIN"
 
 /// A sub-stream of samples: an Owen-scrambled Sobol sequence chosen by `key`, at point `index`
 /// (module docs).

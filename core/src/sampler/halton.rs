@@ -212,8 +212,8 @@ impl HaltonSampler {
             2 if self.scramble == Scramble::None => radical_inverse_inlined(2, self.index),
             3 if self.scramble == Scramble::None => radical_inverse_inlined(3, self.index),
             4 if self.scramble == Scramble::None => radical_inverse_inlined(4, self.index),
-            ..1024 => self.value(dim, self.index),
-            _ => self.padded(dim),
+            1024.. => self.padded(dim),
+            _ => self.value(dim, self.index),
         }
     }
 

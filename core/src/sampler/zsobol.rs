@@ -708,7 +708,7 @@ mod tests {
                 assert_eq!(sobol1_rev(wide), sobol_u64(wide, 1).reverse_bits());
             }
             let (i, sobol_u32) = (u64::from(i), |i: u64, d: u32| sobol_u64(i, d));
-            let key = hash2(9, u64::from(i));
+            let key = hash2(9, i);
             let want = |v: u32, seed: u32| to_f32(lk_hash(v.reverse_bits(), seed).reverse_bits());
             assert_eq!(
                 reversed_to_f32(lk_hash(sobol1_rev(i), key_seed(key))),

@@ -311,7 +311,7 @@ fn product_rev64(d: usize, (lo_rev, hi): (u32, u32)) -> u32 {
 /// is a copy of another under a different scramble, as a wrap modulo 1024 would make it.
 #[inline]
 pub(crate) fn padded_u32(key: u32, index: u64, dim: u32) -> u32 {
-    padded_u32_by(key, index, dim, |d, shuffled| product_rev64(d, shuffled))
+    padded_u32_by(key, index, dim, product_rev64)
 }
 
 /// [`padded_u32`] with the bit-reversed product of Sobol dimension `d < 4` at a split shuffled

@@ -13,7 +13,7 @@ use nyquist_examples::experiment::{
     Experiment, contact_sheet, light_layouts_markdown, markdown, markdown_equal_time,
     pixel_reference, pixel_study,
 };
-use nyquist_examples::trace::LightSamples;
+use nyquist_examples::trace::{Derivation, LightSamples};
 use nyquist_examples::{RenderConfig, adaptive_study, render};
 use nyquist_film::adaptive::AdaptiveConfig;
 use nyquist_film::{Image, write_image_file};
@@ -189,10 +189,16 @@ struct RenderArgs {
     /// only as far as each path goes) instead of SampleLayout and PixelRangeSampler.
     #[arg(long)]
     stateless: bool,
-    /// Draw the values past the camera sample from the camera sample's domains: light sample
-    /// j of vertex k is Domain::split(k, N_k, j) (owen-sobol only).
-    #[arg(long, conflicts_with_all = ["stateless", "adaptive"])]
-    domains: bool,
+    /// With --stateless, draw the light points one get_2d each (pbrt-v4's counter) instead of
+    /// one get_array_2d per vertex.
+    #[arg(long, requires = "stateless")]
+    counter: bool,
+    /// Draw the values past the camera sample from the camera sample's domains, light sample j
+    /// of vertex k by Domain::split(k, N_k, j), distribute(k, j) or chain(k, j) (owen-sobol
+    /// only).
+    #[arg(long, value_name = "split|distribute|chain", value_parser = Derivation::parse,
+          conflicts_with_all = ["stateless", "adaptive"])]
+    domains: Option<Derivation>,
     /// Adaptive sampling by error (docs/film.md): --spp becomes the budget; pixels whose
     /// relative error |A − B|/2 over the value is above THRESHOLD double their samples, worst
     /// first. Progressive samplers (owen-sobol, sobol, pmj02, zsobol, halton, random).
@@ -297,6 +303,7 @@ fn main() -> Result<()> {
             config.threads = threads(a.threads);
             config.filter = filter;
             config.stateless = a.stateless;
+            config.counter = a.counter;
             config.domains = a.domains;
             if a.spp_map.is_some() && a.adaptive.is_none() {
                 bail!("--spp-map: only with --adaptive");
