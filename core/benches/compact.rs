@@ -87,7 +87,10 @@ fn bench_compact(c: &mut Criterion<cpu_time::BenchClock>) {
             b.iter(|| {
                 let mut acc = 0.0f32;
                 for &i in &idx {
-                    acc += small.sample_4d(u64::from(black_box(i) as u32), 0).iter().sum::<f32>();
+                    acc += small
+                        .sample_4d(u64::from(black_box(i) as u32), 0)
+                        .iter()
+                        .sum::<f32>();
                 }
                 acc
             })
