@@ -47,8 +47,8 @@ pub fn traced_reference(
 pub use crate::output::check_output;
 pub use nyquist_lab::json::{json_number, json_string};
 pub use nyquist_lab::render::{
-    Aov, Layers, PROGRESSIVE_SAMPLERS, SamplerName, ScrambleName, build_sampler, check_spp_limit,
-    parse_filter, parse_size, render_layers,
+    Aov, CONTINUING_SAMPLERS, Layers, PROGRESSIVE_SAMPLERS, SamplerName, ScrambleName,
+    build_sampler, check_spp_limit, parse_filter, parse_size, render_layers,
 };
 pub use nyquist_lab::render::{
     FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, ReferenceSource,
@@ -135,6 +135,13 @@ pub struct RenderArgs {
     /// samples from the fewest (black) to the most (white).
     #[arg(long, value_name = "FILE.png")]
     pub spp_map: Option<PathBuf>,
+    /// Make the sampler for this many samples per pixel and draw --spp of them, past it where
+    /// --spp is larger: progressive rendering past the spp a sampler was set up with.
+    /// Samplers whose every sample index is new only (random, halton, sobol, owen-sobol,
+    /// zsobol, pmj02); not with --adaptive.
+    #[arg(long, value_name = "N", conflicts_with = "adaptive",
+          value_parser = nyquist_lab::flags::whole(1, nyquist_lab::study::MAX_SPP))]
+    pub spp_hint: Option<u32>,
 }
 
 /// The image formats of `render --format`.
@@ -214,6 +221,7 @@ fn layers(args: &RenderArgs) -> Result<Layers> {
         halves: args.ab,
         aovs: args.aov.clone(),
         adaptive: None,
+        spp: None,
     })
 }
 
@@ -397,8 +405,18 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         }
         None => None,
     };
+    if let Some(hint) = args.spp_hint
+        && !CONTINUING_SAMPLERS.contains(&args.sampler)
+    {
+        let names: Vec<&str> = CONTINUING_SAMPLERS.iter().map(|s| s.name()).collect();
+        bail!(
+            "--spp-hint {hint}: --sampler {} lays out a fixed set for its spp; drawing past it takes one of {}",
+            args.sampler.name(),
+            names.join(", ")
+        );
+    }
     // Adaptive sampling draws up to max_spp samples in a pixel: the sampler is made for them.
-    let sampler_spp = adaptive.map_or(args.spp, |a| a.max_spp);
+    let sampler_spp = adaptive.map_or(args.spp_hint.unwrap_or(args.spp), |a| a.max_spp);
     let sampler = build_sampler(
         args.sampler,
         sampler_spp,
@@ -406,7 +424,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         args.seed,
         args.scramble,
     )?;
-    if adaptive.is_none() && sampler.samples_per_pixel() != args.spp {
+    if adaptive.is_none() && args.spp_hint.is_none() && sampler.samples_per_pixel() != args.spp {
         eprintln!(
             "nyquist: note: --sampler {} uses {}: --spp {} rounded up to {}",
             args.sampler.name(),
@@ -419,9 +437,14 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             sampler.samples_per_pixel()
         );
     }
+    // The samples each pixel takes: the sampler's, or --spp past its --spp-hint.
+    let spp_drawn = args
+        .spp_hint
+        .map_or(sampler.samples_per_pixel(), |_| args.spp);
     let threads = args.threads.map_or_else(default_threads, usize::from);
     // The layers: the film's extra sums, and their images (4 bytes a value).
     layers.adaptive = adaptive;
+    layers.spp = args.spp_hint.map(|_| args.spp);
     let extras = layers.extras();
     let values = 3 * (u64::from(extras.variance) + 2 * u64::from(extras.halves))
         + u64::from(extras.channels);
@@ -441,11 +464,11 @@ pub fn run(args: &RenderArgs) -> Result<()> {
     let footprint = footprint_pixels(args.size, &args.filter);
     let pixels = f64::from(args.size[0]) * f64::from(args.size[1]);
     let large = warn_if_large(
-        pixels * f64::from(sampler.samples_per_pixel()) * footprint,
+        pixels * f64::from(spp_drawn) * footprint,
         &format!(
             "--filter {} adds each of {} samples to up to {footprint} pixels",
             args.filter,
-            pixels * f64::from(sampler.samples_per_pixel())
+            pixels * f64::from(spp_drawn)
         ),
     );
     // Adaptive rendering counts samples against its budget (each pass reports its own).
@@ -519,7 +542,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 args.size[0],
                 args.size[1],
                 json_string(args.sampler.name()),
-                sampler.samples_per_pixel(),
+                spp_drawn,
                 json_string(&args.filter.to_string()),
                 args.seed,
                 json_string(&described),
@@ -552,7 +575,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 args.size[0],
                 args.size[1],
                 args.sampler.name(),
-                sampler.samples_per_pixel(),
+                spp_drawn,
                 args.filter,
                 if threads == 1 { "" } else { "s" }
             )?;

@@ -665,3 +665,34 @@ fn adaptive_sampling_refuses_what_it_cannot_do() {
     );
     assert!(files(&dir).is_empty(), "{:?}", files(&dir));
 }
+
+/// `--spp-hint`: the sampler is made for the hint and draws `--spp` samples past it. Owen-Sobol's
+/// samples do not depend on its spp, so the image is the one of `--spp` alone; ZSobol's past
+/// the hint are new epochs, closer to the reference than the hint's own render. A sampler
+/// that wraps at its spp is refused.
+#[test]
+fn spp_hint_draws_past_the_samplers_spp() {
+    let cache = temp_dir("render-spp-hint");
+    let rmse = |args: &[&str]| -> f64 {
+        let mut all = vec!["--size", "48x32", "--scene", "zoneplate"];
+        all.extend_from_slice(args);
+        json_field(&metrics(&all, &cache), "rmse")
+    };
+    let plain = rmse(&["--sampler", "owen-sobol", "--spp", "32"]);
+    let hinted = rmse(&["--sampler", "owen-sobol", "--spp", "32", "--spp-hint", "8"]);
+    assert_eq!(plain, hinted);
+    let eight = rmse(&["--sampler", "zsobol", "--spp", "8"]);
+    let past = rmse(&["--sampler", "zsobol", "--spp", "64", "--spp-hint", "8"]);
+    assert!(past < eight / 2.0, "{past} against {eight}");
+    let o = nyquist(&[
+        "render",
+        "--sampler",
+        "zero-two",
+        "--spp",
+        "64",
+        "--spp-hint",
+        "8",
+        "--metrics",
+    ]);
+    assert_one_line_error(&o, "--spp-hint");
+}

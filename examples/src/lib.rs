@@ -20,7 +20,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, anyhow, bail};
 use nyquist::filter::FilterKind;
-use nyquist::sampler::{NamedSampler, OwenSobolSampler};
+use nyquist::sampler::{CameraSample, NamedSampler, OwenSobolSampler, Sampler};
 use nyquist_film::adaptive::{AdaptiveConfig, AdaptiveReport, render_adaptive};
 use nyquist_film::{Film, FilmConfig, FilmSample, Image, PixelExtras, render_tiles};
 
@@ -68,6 +68,10 @@ pub struct RenderConfig {
     /// With `stateless`, draw the light points one `get_2d` each (pbrt-v4's counter) instead of
     /// one `get_array_2d` per vertex.
     pub counter: bool,
+    /// Make the sampler for this many samples per pixel and draw `spp` of them through the
+    /// stateless layer, past it where `spp` is larger (samplers whose every sample index is a
+    /// new sample: random, halton, sobol, owen-sobol, zsobol, pmj02).
+    pub spp_hint: Option<u32>,
     /// Draw the values past the camera sample from the camera sample's [`Domain`]s, the light
     /// samples by this derivation ([`trace::DomainSource`]; the `owen-sobol` sampler only).
     ///
@@ -94,9 +98,63 @@ impl RenderConfig {
             filter: FilterKind::parse("box").expect("the box filter parses"),
             stateless: false,
             counter: false,
+            spp_hint: None,
             domains: None,
             adaptive: None,
         }
+    }
+}
+
+/// A sampler drawn for `spp` samples per pixel whatever it was made for: past its spp for the
+/// samplers whose every sample index is new (`RenderConfig::spp_hint`). With `spp` `None`, the
+/// sampler itself.
+#[derive(Clone, Debug)]
+pub struct PastHint<S> {
+    /// The sampler.
+    pub inner: S,
+    /// Samples per pixel to draw, if not the sampler's own.
+    pub spp: Option<u32>,
+}
+
+impl<S: Sampler> Sampler for PastHint<S> {
+    fn samples_per_pixel(&self) -> u32 {
+        self.spp.unwrap_or_else(|| self.inner.samples_per_pixel())
+    }
+    fn pixel_samples(&self, pixel: [u32; 2]) -> u32 {
+        self.spp.unwrap_or_else(|| self.inner.pixel_samples(pixel))
+    }
+    fn report(&mut self, pixel: [u32; 2], sample_index: u32, radiance: &[f32]) {
+        self.inner.report(pixel, sample_index, radiance);
+    }
+    fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        self.inner.start_pixel_sample(pixel, sample_index, dim);
+    }
+    fn get_1d(&mut self) -> f32 {
+        self.inner.get_1d()
+    }
+    fn get_2d(&mut self) -> [f32; 2] {
+        self.inner.get_2d()
+    }
+    fn get_pixel_2d(&mut self) -> [f32; 2] {
+        self.inner.get_pixel_2d()
+    }
+    fn round_size(&self, n: u32) -> u32 {
+        self.inner.round_size(n)
+    }
+    fn get_array_1d(&mut self, out: &mut [f32]) {
+        self.inner.get_array_1d(out);
+    }
+    fn get_array_2d(&mut self, out: &mut [f32]) {
+        self.inner.get_array_2d(out);
+    }
+    fn arrays_are_dimension_runs(&self) -> bool {
+        self.inner.arrays_are_dimension_runs()
+    }
+    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
+        self.inner.camera_sample(pixel, sample_index)
+    }
+    fn domain(&self) -> Option<nyquist::sampler::Domain> {
+        self.inner.domain()
     }
 }
 
@@ -128,7 +186,24 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
     if let Some(a) = &config.adaptive {
         return render_adaptively(config, a, scene);
     }
-    let sampler = build_sampler(&config.sampler, config.size, config.spp, config.seed)?;
+    if let Some(hint) = config.spp_hint {
+        const CONTINUING: [&str; 6] =
+            ["random", "halton", "sobol", "owen-sobol", "zsobol", "pmj02"];
+        if !CONTINUING.contains(&config.sampler.as_str()) {
+            bail!(
+                "--spp-hint {hint}: {:?} wraps at its spp; one of {CONTINUING:?} draws past it",
+                config.sampler
+            );
+        }
+        if !config.stateless {
+            bail!("--spp-hint {hint}: with --stateless (the layout fills the sampler's own spp)");
+        }
+    }
+    let made_for = config.spp_hint.unwrap_or(config.spp);
+    let sampler = PastHint {
+        inner: build_sampler(&config.sampler, config.size, made_for, config.seed)?,
+        spp: config.spp_hint.map(|_| config.spp),
+    };
     if config.domains.is_some() && config.sampler != "owen-sobol" {
         bail!(
             "domains: the sampler is {:?}; only owen-sobol's samples are domains",

@@ -417,3 +417,26 @@ fn the_adaptive_study_rejects_bad_settings() {
         );
     }
 }
+
+/// `--spp-hint`: the sampler made for fewer samples draws `spp` of them. Owen-Sobol's samples
+/// do not depend on its spp, so the image equals the one made for `spp`; a sampler that wraps
+/// at its spp, or the layout (which fills the sampler's own spp), is refused.
+#[test]
+fn spp_hint_draws_past_the_samplers_spp() {
+    let mut c = RenderConfig::new("cornell");
+    c.size = [12, 8];
+    c.spp = 16;
+    c.stateless = true;
+    let plain = render(&c, |_, _| {}).unwrap();
+    c.spp_hint = Some(4);
+    let hinted = render(&c, |_, _| {}).unwrap();
+    assert_eq!(plain.image.data(), hinted.image.data());
+    assert_eq!(hinted.samples, 12 * 8 * 16);
+    c.sampler = "zsobol".into();
+    assert_eq!(render(&c, |_, _| {}).unwrap().samples, 12 * 8 * 16);
+    c.sampler = "stratified".into();
+    assert!(render(&c, |_, _| {}).is_err());
+    c.sampler = "owen-sobol".into();
+    c.stateless = false;
+    assert!(render(&c, |_, _| {}).is_err());
+}

@@ -280,6 +280,18 @@ pub const PROGRESSIVE_SAMPLERS: [SamplerName; 8] = [
     SamplerName::R2,
 ];
 
+/// The samplers whose every sample index is a new sample, past the spp they were made for:
+/// the ones `render --spp-hint` takes (zero-two and r2 are progressive up to their spp and
+/// wrap past it).
+pub const CONTINUING_SAMPLERS: [SamplerName; 6] = [
+    SamplerName::Random,
+    SamplerName::Halton,
+    SamplerName::Sobol,
+    SamplerName::OwenSobol,
+    SamplerName::ZSobol,
+    SamplerName::Pmj02,
+];
+
 /// An extra channel group a render can keep per pixel, from the scene's
 /// [`Surface`](crate::scene::Surface).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -335,6 +347,9 @@ pub struct Layers {
     /// Render by [`render_adaptive`] with these settings (the film then also keeps the estimate
     /// it steers by; not a layer of the output).
     pub adaptive: Option<AdaptiveConfig>,
+    /// Samples per pixel to draw when they differ from the sampler's own (a progressive
+    /// sampler made for fewer, its spp a hint: `render --spp-hint`); not with `adaptive`.
+    pub spp: Option<u32>,
 }
 
 impl Layers {
@@ -431,7 +446,7 @@ fn new_film(config: FilmConfig, size: [u32; 2], filter: &FilterKind) -> Result<F
 /// use nyquist_lab::{render::{self, Aov, Layers}, scene::Scene};
 /// let sampler = NamedSampler::new("sobol", [8, 8], 16, 1).unwrap();
 /// let filter = FilterKind::parse("box").unwrap();
-/// let layers = Layers { variance: true, halves: true, aovs: vec![Aov::Depth], adaptive: None };
+/// let layers = Layers { variance: true, halves: true, aovs: vec![Aov::Depth], ..Layers::default() };
 /// let r = render::render_layers(Scene::Disk, [8, 8], &sampler, &filter, 1, &layers, &mut |_| {})
 ///     .unwrap();
 /// assert_eq!(r.extras.channels.unwrap().pixel(4, 4), [1.0]); // the disk's plane, z = 1
@@ -516,7 +531,7 @@ fn render_with<S: Sampler + Clone + Sync, const EXTRAS: bool>(
                 for px in b.x0..b.x1 {
                     let pixel = [px as u32, py as u32];
                     let mut i = 0;
-                    while i < s.pixel_samples(pixel) {
+                    while i < layers.spp.unwrap_or_else(|| s.pixel_samples(pixel)) {
                         let l = add_camera_sample::<_, EXTRAS>(
                             tile,
                             &mut s,

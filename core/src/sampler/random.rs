@@ -11,7 +11,8 @@ use rand_pcg::Pcg32;
 /// is a hash of (`p`, `i`, seed), reached with PCG's O(log d) jump-ahead, so any value can be
 /// asked for first. (Hashing the sample index into the state, rather than jumping `i · 65536`
 /// ahead in one per-pixel stream, keeps the jump short: the camera sample needs none.)
-/// Dimensions wrap modulo 65536; every `sample_index` gives new values (no wrap at
+/// Every dimension of the `u32` range is its own output (no wrap to an earlier one; the jump is
+/// at most 32 steps), and every `sample_index` gives new values (no wrap at
 /// `samples_per_pixel`).
 ///
 /// ```
@@ -65,9 +66,8 @@ impl RandomSampler {
 
     fn at(&self, dim: u32) -> Pcg32 {
         let mut rng = Pcg32::new(self.base, STREAM);
-        let d = dim & 0xffff;
-        if d != 0 {
-            rng.advance(u64::from(d));
+        if dim != 0 {
+            rng.advance(u64::from(dim));
         }
         rng
     }
@@ -95,8 +95,8 @@ impl Sampler for RandomSampler {
     fn get_1d(&mut self) -> f32 {
         let v = uniform_f32(&mut self.rng);
         self.dim = self.dim.wrapping_add(1);
-        if self.dim & 0xffff == 0 {
-            // Dimensions wrap modulo 65536.
+        if self.dim == 0 {
+            // The cursor wrapped past u32::MAX: dimension 0 again.
             self.rng = self.at(0);
         }
         v
@@ -126,5 +126,30 @@ impl Sampler for RandomSampler {
     /// The default arrays: one dimension per value.
     fn arrays_are_dimension_runs(&self) -> bool {
         true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// No dimension repeats an earlier one: 65536 and up are their own outputs, a run across
+    /// 65536 equals starting there, and the cursor past `u32::MAX` starts again at 0.
+    #[test]
+    fn dimensions_do_not_wrap_before_u32_max() {
+        let mut s = RandomSampler::new(4, 9).unwrap();
+        let at = |s: &mut RandomSampler, d: u32| {
+            s.start_pixel_sample([3, 4], 1, d);
+            s.get_1d()
+        };
+        for d in [0u32, 1, 7, 60_000] {
+            assert_ne!(at(&mut s, d), at(&mut s, d + 65_536), "{d}");
+        }
+        s.start_pixel_sample([3, 4], 1, 65_534);
+        let run = [s.get_1d(), s.get_1d(), s.get_1d()];
+        assert_eq!(run, [65_534, 65_535, 65_536].map(|d| at(&mut s, d)));
+        s.start_pixel_sample([3, 4], 1, u32::MAX);
+        let (last, first) = (s.get_1d(), s.get_1d());
+        assert_eq!([last, first], [at(&mut s, u32::MAX), at(&mut s, 0)]);
     }
 }

@@ -189,6 +189,10 @@ struct RenderArgs {
     /// only as far as each path goes) instead of SampleLayout and PixelRangeSampler.
     #[arg(long)]
     stateless: bool,
+    /// With --stateless: make the sampler for this many samples per pixel and draw --spp of
+    /// them, past it where --spp is larger (random, halton, sobol, owen-sobol, zsobol, pmj02).
+    #[arg(long, value_name = "N", requires = "stateless")]
+    spp_hint: Option<u32>,
     /// With --stateless, draw the light points one get_2d each (pbrt-v4's counter) instead of
     /// one get_array_2d per vertex.
     #[arg(long, requires = "stateless")]
@@ -304,6 +308,7 @@ fn main() -> Result<()> {
             config.filter = filter;
             config.stateless = a.stateless;
             config.counter = a.counter;
+            config.spp_hint = a.spp_hint;
             config.domains = a.domains;
             if a.spp_map.is_some() && a.adaptive.is_none() {
                 bail!("--spp-map: only with --adaptive");
