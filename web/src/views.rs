@@ -189,10 +189,16 @@ fn closest_pair(p: &[[f64; 2]]) -> Option<(usize, usize)> {
 /// it (star, L2-star, centered and wrap-around L2 discrepancies, minimum distance and ρ).
 ///
 /// Parameters: `sampler` (a `points` name), `count` (1 ..= 16384) or `spp` (pixel-sampler
-/// mode), `seed`, `x`, `y` (0 ..= 31), `grid` (`NXxNY`, for stratified/uniform).
-/// Data: `x0, y0, x1, y1, …`.
+/// mode), `seed`, `x`, `y` (0 ..= 31), `grid` (`NXxNY`, for stratified/uniform), `split`
+/// (1 ..= 64, `owen-sobol` with `spp`: each sample's `Domain::split(1, split, k)`, its
+/// dimensions `x`, `y`). Data: `x0, y0, x1, y1, …`, then the sub-samples' pairs, parent by
+/// parent.
 pub fn points(q: &Query) -> Result<Reply> {
     let mut s = set_query(q, MAX_POINTS)?;
+    let split = match q.has("split") {
+        true => Some(domain_split(q, &s)?),
+        false => None,
+    };
     s.args.measures = vec![
         Measure::Star,
         Measure::L2Star,
@@ -212,17 +218,51 @@ pub fn points(q: &Query) -> Result<Reply> {
         "nyquist analyze {} --measures star,l2-star,centered-l2,wraparound-l2,min-distance --json",
         s.flags
     );
+    let mut data: Vec<f32> = coords.iter().map(|&v| v as f32).collect();
+    let split_json = match &split {
+        Some((k, sub)) => {
+            data.extend(sub);
+            format!("{{\"k\":{k}}}")
+        }
+        None => "null".to_owned(),
+    };
     Ok(Reply {
         json: format!(
-            "{{\"cli\":{},\"x\":{},\"y\":{},\"count\":{},\"closest_pair\":{pair},\"strata\":{strata},\"analysis\":{}}}",
+            "{{\"cli\":{},\"x\":{},\"y\":{},\"count\":{},\"closest_pair\":{pair},\"strata\":{strata},\"split\":{split_json},\"analysis\":{}}}",
             js(&cli),
             s.x,
             s.y,
             pairs.len(),
             analysis.trim_end()
         ),
-        data: coords.iter().map(|&v| v as f32).collect(),
+        data,
     })
+}
+
+/// The `split` of the Points view: for each of the pixel's `spp` samples of `owen-sobol`
+/// (pixel (0, 0), the set's seed), its `k` sub-samples `Domain::split(1, k, j)` at dimensions
+/// `x`, `y`.
+fn domain_split(q: &Query, s: &SetQuery) -> Result<(u32, Vec<f32>)> {
+    let k = q.int("split", 4, 1, 64)? as u32;
+    let (Some(PointSet::OwenSobol), Some(spp)) = (s.args.sampler, s.args.spp) else {
+        bail!(
+            "split={k}: a domain split shows owen-sobol's pixel samples: sampler=owen-sobol with spp"
+        );
+    };
+    if u64::from(spp) * u64::from(k) > MAX_POINTS {
+        bail!("split={k}: spp × split is more than {MAX_POINTS} points");
+    }
+    let mut sampler = nyquist::sampler::OwenSobolSampler::new(spp, s.args.seed.unwrap_or(0))?;
+    let mut sub = Vec::with_capacity(2 * (spp * k) as usize);
+    for i in 0..spp {
+        sampler.start_pixel_sample([0, 0], i, 0);
+        let parent = sampler.pixel_domain();
+        for j in 0..k {
+            let d = parent.split(1, k, j)?;
+            sub.extend([d.get_1d(s.x), d.get_1d(s.y)]);
+        }
+    }
+    Ok((k, sub))
 }
 
 /// The expected periodogram of jittered points on an `nx × ny` grid at integer frequency `f`:

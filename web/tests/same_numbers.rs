@@ -86,6 +86,37 @@ fn points_equal_analyze_json_for_the_same_flags() {
     }
 }
 
+/// The domain split of the Points view: after the parents' pairs, each parent's `split`
+/// sub-samples, the core's `Domain::split` of the Owen-Sobol sampler's sample, and all
+/// `spp·split` of them a (0, m, 2)-net in dimensions 0 and 1.
+#[test]
+fn the_domain_split_gives_each_samples_sub_samples() {
+    use nyquist::sampler::{OwenSobolSampler, Sampler};
+    let (json, data, _) = reply("view=points&sampler=owen-sobol&spp=16&split=4&seed=2");
+    assert_eq!(field(&json, "split"), "{\"k\":4}");
+    assert_eq!(data.len(), 2 * 16 + 2 * 16 * 4);
+    let sub: Vec<[f32; 2]> = data[32..].chunks_exact(2).map(|p| [p[0], p[1]]).collect();
+    // Every 2^a × 2^b box with a + b = 6 holds one of the 64.
+    for (a, b) in [(0u32, 6u32), (3, 3), (6, 0), (2, 4)] {
+        let mut seen = [false; 64];
+        for p in &sub {
+            let cell = ((p[1] * (1 << b) as f32) as usize) << a | (p[0] * (1 << a) as f32) as usize;
+            assert!(!std::mem::replace(&mut seen[cell], true), "{a} {b}");
+        }
+    }
+    let mut s = OwenSobolSampler::new(16, 2).unwrap();
+    s.start_pixel_sample([0, 0], 5, 0);
+    assert_eq!(&data[10..12], &s.get_pixel_2d());
+    let d = s.pixel_domain().split(1, 4, 3).unwrap();
+    assert_eq!(&data[32 + 2 * (5 * 4 + 3)..][..2], &d.get_2d(0));
+    let err = |q: &str| format!("{:#}", handle(q, &|_, _| {}).unwrap_err());
+    assert!(err("view=points&sampler=halton&spp=16&split=4").starts_with("split=4: "));
+    assert_eq!(
+        err("view=points&sampler=owen-sobol&spp=16&split=65"),
+        "split=65: need an integer in 1 ..= 64"
+    );
+}
+
 #[test]
 fn the_closest_pair_is_at_the_minimum_distance() {
     let (json, data, _) = reply("view=points&sampler=random&count=700&seed=3");

@@ -6,7 +6,7 @@ const VIEWS = ['points', 'spectrum', 'aliasing', 'filters', 'convergence'];
 const PAGE_KEYS = new Set(['overlay', 'shape', 'crop']);
 const DEFAULTS = {
   points: { sampler: 'halton', count: '256', spp: '', grid: '', seed: '', x: '0', y: '1',
-    overlay: 'strata', shape: '' },
+    overlay: 'strata', shape: '', split: '' },
   spectrum: { sampler: 'stratified', count: '256', spp: '', grid: '', seed: '', x: '0', y: '1',
     freq: '32', realisations: '16' },
   aliasing: { scene: 'zoneplate', size: '256x256', sampler: 'stratified', filter: 'box',
@@ -477,6 +477,21 @@ function drawPoints(r, p) {
     }
   });
   const rad = Math.max(1.1, Math.min(3.2, 3.2 * Math.sqrt(256 / n)));
+  if (json.split) {
+    // The sub-samples (orange) under their parents: spp·K points of one Owen-scrambled Sobol
+    // sequence, K per parent sample.
+    const k = json.split.k;
+    const m2 = n * k;
+    const small = Math.max(1, Math.min(2.4, 2.4 * Math.sqrt(256 / m2)));
+    ctx.fillStyle = '#e8891a';
+    for (let q = 0; q < m2; q++) {
+      ctx.beginPath();
+      ctx.arc(f.x(data[2 * n + 2 * q]), f.y(data[2 * n + 2 * q + 1]), small, 0, 2 * Math.PI);
+      ctx.fill();
+    }
+    const text = `${m2} sub-samples (orange): the ${k} of Domain::split(1, ${k}, k) under each of the ${n} samples (blue), together the first ${m2} points of one Owen-scrambled Sobol sequence.`;
+    verdict.textContent = verdict.textContent ? `${verdict.textContent} ${text}` : text;
+  }
   ctx.fillStyle = '#17406d';
   for (let k = 0; k < n; k++) {
     ctx.beginPath();
