@@ -164,13 +164,15 @@ def _check_n(n):
 
 
 class Sobol(QMCEngine):
-    """Sobol' points (Joe–Kuo 6.21201 direction numbers, up to 1024 dimensions and 2^32
-    points).
+    """Sobol' points (Joe–Kuo 6.21201 direction numbers; 2^64 points; past 1024 dimensions the
+    core's padding, independently seeded Owen-scrambled 4-D blocks).
 
     The points come in SciPy's (Gray-code) order; unscrambled they are SciPy's, bit for bit.
     ``scramble=True`` Owen-scrambles each coordinate (Burley's hash-based nested uniform
     scramble, one key per dimension drawn from ``rng``), where SciPy applies a linear matrix
     scramble plus a digital shift: both keep every power-of-two prefix a (t, m, d)-net.
+    ``bits`` (up to 64) bounds the number of points, ``2**bits``; the values keep at most 32
+    bits.
 
     >>> from nyquist.qmc import Sobol
     >>> x = Sobol(d=3, rng=7).random_base2(4)
@@ -180,7 +182,7 @@ class Sobol(QMCEngine):
     True
     """
 
-    MAXDIM = 1024
+    MAXDIM = 2**32 - 1
 
     def __init__(self, d, *, scramble=True, bits=None, rng=None, optimization=None, seed=None):
         super().__init__(d, optimization=optimization, rng=rng, seed=seed)
@@ -190,10 +192,8 @@ class Sobol(QMCEngine):
             bits = 30
         if bits > 64:
             raise ValueError("Maximum supported 'bits' is 64")
-        if not 1 <= bits <= 32:
-            raise ValueError(
-                f"bits {bits}: nyquist's Sobol points have 32-bit indices and values (1 ≤ bits ≤ 32)"
-            )
+        if bits < 1:
+            raise ValueError(f"bits {bits}: need at least 1")
         self.bits = bits
         self.maxn = 2**bits
         self.scramble = bool(scramble)
@@ -205,7 +205,7 @@ class Sobol(QMCEngine):
             raise ValueError(
                 f"At most 2**{self.bits}={self.maxn} distinct points can be generated. "
                 f"{first} points have been previously generated, then: n={first}+{n}={total}. "
-                + ("Consider increasing `bits`." if self.bits < 32 else "")
+                + ("Consider increasing `bits`." if self.bits < 64 else "")
             )
         if self.d == 0:
             return np.empty((n, 0))

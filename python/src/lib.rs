@@ -15,7 +15,9 @@ mod pixel;
 use nyquist::hash::hash2;
 use nyquist::radical::positional_radical_inverse_column_f64;
 use nyquist::scramble::{Scramble, fast_owen_scramble};
-use nyquist::sequence::{Halton, NamedSequence, ScrambledHalton, Sequence, SequenceSpec, Sobol};
+use nyquist::sequence::{
+    Halton, NamedSequence, SOBOL_DIMS, ScrambledHalton, Sequence, SequenceSpec, Sobol,
+};
 
 /// A `ValueError` with the core error's message.
 pub(crate) fn value_error(e: impl std::fmt::Display) -> PyErr {
@@ -82,9 +84,15 @@ fn sobol<'py>(
     bits: u32,
 ) -> PyResult<Bound<'py, PyArray2<f64>>> {
     let len = values(n, d)?;
-    check_range(first, n, 1 << 32, "the Sobol sequence")?;
-    if !(1..=32).contains(&bits) {
-        return Err(value_error(format!("bits {bits} is outside 1..=32")));
+    // Every 64-bit index is a point: the range must end by 2⁶⁴.
+    if n > 0 && first.checked_add(n - 1).is_none() {
+        return Err(value_error(format!(
+            "points {first}..{} are past the 2**64 points of the Sobol sequence",
+            u128::from(first) + u128::from(n)
+        )));
+    }
+    if !(1..=64).contains(&bits) {
+        return Err(value_error(format!("bits {bits} is outside 1..=64")));
     }
     let s = Sobol::new(d).map_err(value_error)?;
     let keys: Option<Vec<u32>> = seed.map(|seed| {
@@ -134,13 +142,20 @@ pub(crate) fn par_rows(
 /// sequential.
 fn sobol_gray(s: &Sobol, first: u64, d: u32, bits: u32, keys: Option<&[u32]>, out: &mut [f64]) {
     let d_us = d as usize;
-    // columns[t][dim]: the direction number t of dimension dim.
-    let columns: Vec<u32> = (0..32)
-        .flat_map(|t| (0..d).map(move |dim| s.sample_u32(1 << t, dim)))
+    // Dimensions past 1024 are the core's padding, not linear in the index: computed point by
+    // point below. The first ones step by the Gray code: columns[t][dim], the direction number
+    // t (of 64) of dimension dim.
+    let linear = d.min(SOBOL_DIMS);
+    let columns: Vec<u32> = (0..64)
+        .flat_map(|t| (0..linear).map(move |dim| s.sample_u32(1 << t, dim)))
         .collect();
     let mut x: Vec<u32> = (0..d).map(|dim| s.sample_u32(gray(first), dim)).collect();
     let mask = keep(bits);
-    for (k, row) in (first..).zip(out.chunks_exact_mut(d_us)) {
+    for (j, row) in out.chunks_exact_mut(d_us).enumerate() {
+        let k = first + j as u64;
+        for (dim, v) in x.iter_mut().enumerate().skip(linear as usize) {
+            *v = s.sample_u32(gray(k), dim as u32);
+        }
         match keys {
             None => {
                 for (o, &v) in row.iter_mut().zip(&x) {
@@ -154,15 +169,17 @@ fn sobol_gray(s: &Sobol, first: u64, d: u32, bits: u32, keys: Option<&[u32]>, ou
                 }
             }
         }
-        // k + 1 < 2³² here except after the last point, whose step is never used.
-        let t = ((k + 1).trailing_zeros() as usize).min(31);
-        for (v, c) in x.iter_mut().zip(&columns[t * d_us..(t + 1) * d_us]) {
+        // The step to point k + 1 (after the last point, never used).
+        let t = (k.wrapping_add(1).trailing_zeros() as usize).min(63);
+        let l = linear as usize;
+        for (v, c) in x.iter_mut().zip(&columns[t * l..(t + 1) * l]) {
             *v ^= c;
         }
     }
 }
 
-/// The mask that keeps the top `bits` of a 32-bit value (SciPy's `bits`).
+/// The mask that keeps the top `bits` of a 32-bit value (SciPy's `bits`; from 32 on, every bit
+/// of nyquist's 32-bit values).
 fn keep(bits: u32) -> u32 {
     if bits >= 32 {
         u32::MAX
