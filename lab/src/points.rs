@@ -353,7 +353,6 @@ fn max_dims(sampler: PointSetName) -> Option<u32> {
         S::Korobov | S::Rd => Some(1024),
         S::Halton | S::HaltonZaremba => Some(nyquist::radical::PRIME_COUNT),
         S::Hammersley | S::HammersleyZaremba => Some(nyquist::radical::PRIME_COUNT + 1),
-        S::Sobol | S::OwenSobol => Some(nyquist::sequence::SOBOL_DIMS),
         _ => None,
     }
 }
@@ -382,9 +381,6 @@ fn pixel_samples(args: &PointsSpec, notes: &mut Vec<String>) -> Result<PixelPoin
     let dims = dims_of(args);
     if dims == 0 {
         bail!("--dims 0: a point needs at least one dimension");
-    }
-    if dims > 1024 {
-        bail!("--dims {dims}: samplers have at most 1024 dimensions");
     }
     if let Some(count) = args.count {
         if args.spp.is_none() {

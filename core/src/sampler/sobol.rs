@@ -5,7 +5,7 @@ use crate::Error;
 use crate::hash::hash2;
 use crate::math::fraction_to_f32;
 use crate::scramble::{Scramble, scramble_u32};
-use crate::sequence::{SOBOL_DIMS as DIMS, padded_u32, sobol_run_f32, sobol_u64};
+use crate::sequence::{SOBOL_DIMS as DIMS, padded_u32, sobol_run_f32, sobol_u32, sobol_u64};
 
 /// Sobol sampling over the whole image (pbrt-v3's `SobolSampler`).
 ///
@@ -70,9 +70,7 @@ pub struct SobolSampler {
     /// integrator dimensions), hashed once.
     scrambles: [u32; SCRAMBLES],
     index: u64,
-    /// The current pixel's key for the padding dimensions ([`super::padding_key`]), and the
-    /// sample's number in the pixel.
-    pad_key: u32,
+    /// The sample's number in the pixel (what the padding dimensions index).
     sample: u32,
     dim: u32,
 }
@@ -184,12 +182,10 @@ impl SobolSampler {
             sample_low,
             scrambles,
             index: 0,
-            pad_key: 0,
             sample: 0,
             dim: 0,
         };
         sampler.pixel_low = apply_inverse(&sampler.inverse, sampler.want([0; 2]));
-        sampler.pad_key = sampler.pad_key_of([0; 2]);
         Ok(sampler)
     }
 
@@ -301,13 +297,25 @@ impl SobolSampler {
 
     #[inline]
     fn sample(&self, dim: u32) -> f32 {
+        // Below 2³² the 32-bit product alone: the path (and speed) of the 32-bit sampler.
+        if self.index >> 32 == 0 {
+            self.sample_by(dim, |i, d| sobol_u32(i as u32, d), padded_u32)
+        } else {
+            self.sample_wide(dim)
+        }
+    }
+
+    /// [`SobolSampler::sample`] at an index past 2³², out of line.
+    #[cold]
+    #[inline(never)]
+    fn sample_wide(&self, dim: u32) -> f32 {
         self.sample_by(dim, sobol_u64, padded_u32)
     }
 
     /// Dimension `dim` of the current sample, with `sobol(index, d)` (`d < 1024`, equal to
     /// [`sobol_u64`] for the desktop sampler) the source of the Sobol values and `pad` (equal
     /// to [`padded_u32`]) that of the padding dimensions.
-    #[inline]
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn sample_by(
         &self,
         dim: u32,
@@ -350,10 +358,13 @@ impl SobolSampler {
         fraction_to_f32(scramble_u32(w, seed, self.scramble))
     }
 
-    /// A padding dimension (`dim >= 1024`) of the current sample, through `pad`.
+    /// A padding dimension (`dim >= 1024`) of the current sample, through `pad`, keyed by the
+    /// current pixel (hashed here: padding dimensions are rare, pixel changes are not).
+    #[cold]
     #[inline(never)]
     fn padded(&self, dim: u32, pad: impl Fn(u32, u64, u32) -> u32) -> f32 {
-        fraction_to_f32(pad(self.pad_key, u64::from(self.sample), dim))
+        let key = self.pad_key_of(self.pixel);
+        fraction_to_f32(pad(key, u64::from(self.sample), dim))
     }
 
     /// Dimensions `dim, dim + 1, …` into `out` as `sample` gives them, when they are a run of
@@ -420,7 +431,6 @@ impl Sampler for SobolSampler {
         if pixel != self.pixel {
             self.pixel = pixel;
             self.pixel_low = apply_inverse(&self.inverse, self.want(pixel));
-            self.pad_key = self.pad_key_of(pixel);
         }
         let high = self.sample_bits(sample_index);
         let mut low = self.pixel_low;

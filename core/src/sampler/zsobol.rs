@@ -9,7 +9,7 @@ use crate::hash::{hash2, mix32, mix64};
 use crate::lazy_table::{baked_table, const_unless_lazy};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::scramble::{Scramble, lk_hash, reversed_to_f32, scramble_u32};
-use crate::sequence::{SOBOL_MATRICES, SOBOL_MATRICES_HI, sobol_product, sobol_u64};
+use crate::sequence::{SOBOL_MATRICES, SOBOL_MATRICES_HI, sobol_product, sobol_u32, sobol_u64};
 
 /// All 24 permutations of `0..4`, lexicographic, entry `k` in bits `2k .. 2k + 2`.
 const PERMUTATIONS_4: [u8; 24] = permutations_4();
@@ -134,21 +134,14 @@ pub struct ZSobolSampler {
     sample_bits: [[u8; TABLE_SPP as usize]; 3],
     flips: [u32; 3],
     morton: u64,
-    /// For a sample past `spp`: its epoch's own sampler state (module docs), read instead of
-    /// the caches above.
-    epoch: Option<Epoch>,
+    /// The spp and seed the sampler was made with, and the progressive epoch (module docs)
+    /// whose layout the fields above hold: 0 for samples below `base_spp`, `k ≥ 1` for samples
+    /// `base_spp·2^(k−1) .. base_spp·2^k` (`spp` then `base_spp·2^(k−1)`, the seed
+    /// `hash(base_seed, k)`).
+    base_spp: u32,
+    base_seed: u64,
+    epoch: u32,
     dim: u32,
-}
-
-/// A progressive epoch's layout and the current sample's Morton index in it.
-#[derive(Clone, Copy, Debug)]
-struct Epoch {
-    log2_spp: u32,
-    digits: u32,
-    sample_digits: u32,
-    odd: u32,
-    seed: u64,
-    morton: u64,
 }
 
 impl ZSobolSampler {
@@ -227,7 +220,9 @@ impl ZSobolSampler {
             sample_bits: [[0; TABLE_SPP as usize]; 3],
             flips: [0; 3],
             morton: 0,
-            epoch: None,
+            base_spp: spp,
+            base_seed: seed,
+            epoch: 0,
             dim: 0,
         };
         s.set_pixel([0, 0]);
@@ -258,6 +253,11 @@ impl ZSobolSampler {
     /// assert_eq!(all, [0, 1, 2, 3]);
     /// ```
     pub fn sequence_index(&self, pixel: [u32; 2], sample_index: u32, dim: u32) -> u64 {
+        if self.epoch != 0 {
+            let base =
+                Self::with_layout(self.log2_res, self.base_spp, self.scramble, self.base_seed);
+            return base.sequence_index(pixel, sample_index, dim);
+        }
         let morton =
             (self.morton_of(pixel) << self.log2_spp) | u64::from(sample_index & (self.spp - 1));
         let key = dim_key(self.seed, dim);
@@ -296,23 +296,43 @@ impl ZSobolSampler {
         )
     }
 
-    /// The epoch of sample `sample_index ≥ spp` of `pixel` (module docs): epoch `k` holds
-    /// samples `spp·2^(k−1) .. spp·2^k`, a layout of `spp·2^(k−1)` samples per pixel under the
-    /// seed `hash(seed, k)`.
-    fn epoch_of(&self, pixel: [u32; 2], sample_index: u32) -> Epoch {
-        // k = ⌊log₂(sample_index / spp)⌋ + 1, and the epoch's samples per pixel spp·2^(k−1).
-        let k = (31 - sample_index.leading_zeros()) - self.log2_spp + 1;
-        let log2_spp = self.log2_spp + k - 1;
-        let sample = u64::from(sample_index) - (1u64 << log2_spp);
-        let bits = 2 * self.log2_res + log2_spp;
-        Epoch {
-            log2_spp,
-            digits: bits / 2,
-            sample_digits: log2_spp / 2,
-            odd: log2_spp & 1,
-            seed: hash2(self.seed, u64::from(k)),
-            morton: (self.morton_of(pixel) << log2_spp) | sample,
+    /// The epoch of sample `sample_index` (module docs), entered if it is not the current one,
+    /// and the sample's number in it.
+    #[cold]
+    #[inline(never)]
+    fn epoch_sample(&mut self, sample_index: u32) -> u32 {
+        let (k, s) = if sample_index < self.base_spp {
+            (0, sample_index)
+        } else {
+            let top = 31 - sample_index.leading_zeros();
+            (
+                top + 1 - self.base_spp.trailing_zeros(),
+                sample_index - (1 << top),
+            )
+        };
+        if k != self.epoch {
+            self.enter_epoch(k);
         }
+        s
+    }
+
+    /// Moves the sampler to epoch `k` (module docs): the layout of `base_spp·2^(k−1)` samples
+    /// per pixel under `hash(base_seed, k)`, or the sampler's own for `k = 0`. A renderer that
+    /// takes a pixel's samples in order switches `log₂` times per pixel past `spp`; below it,
+    /// never.
+    #[cold]
+    #[inline(never)]
+    fn enter_epoch(&mut self, k: u32) {
+        let (spp, seed) = match k {
+            0 => (self.base_spp, self.base_seed),
+            k => (
+                self.base_spp << (k - 1),
+                hash2(self.base_seed, u64::from(k)),
+            ),
+        };
+        let (base_spp, base_seed) = (self.base_spp, self.base_seed);
+        *self = Self::with_layout(self.log2_res, spp, self.scramble, seed);
+        (self.base_spp, self.base_seed, self.epoch) = (base_spp, base_seed, k);
     }
 
     /// Moves the per-pixel caches to `pixel`. The pixel digits' permutations depend only on the
@@ -413,9 +433,6 @@ impl ZSobolSampler {
     /// The index for the request at `dim`, through the cached pixel digits where there are some.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     pub(crate) fn index(&self, dim: u32) -> (u64, u64) {
-        if let Some(e) = &self.epoch {
-            return epoch_index(e, dim);
-        }
         let k = match dim {
             0 => 0,
             2 => 1,
@@ -461,7 +478,14 @@ impl ZSobolSampler {
                     reversed_to_f32(lk_hash(sobol1_rev(wide), key_seed(key))),
                 ];
             }
-            how => scramble_u32(sobol_u64(wide, 1), (key >> 32) as u32, how),
+            how => {
+                let y = if wide >> 32 == 0 {
+                    sobol_u32(index, 1)
+                } else {
+                    sobol_u64(wide, 1)
+                };
+                scramble_u32(y, (key >> 32) as u32, how)
+            }
         };
         [
             to_f32(scramble_dim0(index, key as u32, self.scramble)),
@@ -505,8 +529,15 @@ fn sobol1_rev(index: u64) -> u32 {
     if hi == 0 {
         low
     } else {
-        low ^ sobol_product(&SOBOL_MATRICES_HI[1], hi).reverse_bits()
+        low ^ sobol1_rev_hi(hi)
     }
+}
+
+/// The reversed columns past 32 of Sobol dimension 1 over `hi`, out of line.
+#[cold]
+#[inline(never)]
+fn sobol1_rev_hi(hi: u32) -> u32 {
+    sobol_product(&SOBOL_MATRICES_HI[1], hi).reverse_bits()
 }
 
 /// Digits `from .. to` of `morton` (base-4 digit `i` at bit `2i + odd`), each permuted by the
@@ -550,16 +581,6 @@ fn finish_index(
         index |= (sample & 1) ^ (nested_word(w, sample >> 1, 0) >> 63);
     }
     index
-}
-
-/// The index and key of the request at `dim` in a progressive epoch: the uncached path.
-#[inline(never)]
-fn epoch_index(e: &Epoch, dim: u32) -> (u64, u64) {
-    let key = dim_key(e.seed, dim);
-    let prefix = permute_digits(e.odd, e.morton, key, e.sample_digits, e.digits);
-    let w = pixel_word(e.morton >> e.log2_spp, key);
-    let index = finish_index(e.sample_digits, e.odd, e.log2_spp, e.morton, w, prefix);
-    (index, key)
 }
 
 /// The 32-bit LK-hash seed of a request's second coordinate, from its (mixed) 64-bit key.
@@ -630,11 +651,18 @@ fn dim_key(seed: u64, dim: u32) -> u64 {
 
 impl Sampler for ZSobolSampler {
     fn samples_per_pixel(&self) -> u32 {
-        self.spp
+        self.base_spp
     }
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn start_pixel_sample(&mut self, pixel: [u32; 2], sample_index: u32, dim: u32) {
+        // Below spp in the first epoch: one test. Else the epoch (module docs) and the
+        // sample's number in it.
+        let sample_index = if sample_index < self.base_spp && self.epoch == 0 {
+            sample_index
+        } else {
+            self.epoch_sample(sample_index)
+        };
         if self.pixel != Some(pixel) {
             self.set_pixel(pixel);
         } else if !self.tabled && self.spp <= TABLE_SPP {
@@ -642,12 +670,7 @@ impl Sampler for ZSobolSampler {
             // all the permutations of its camera sample digits now.
             self.fill_tables();
         }
-        if sample_index < self.spp {
-            self.morton = self.pixel_morton | u64::from(sample_index);
-            self.epoch = None;
-        } else {
-            self.epoch = Some(self.epoch_of(pixel, sample_index));
-        }
+        self.morton = self.pixel_morton | u64::from(sample_index);
         self.dim = dim;
     }
 

@@ -302,6 +302,16 @@ impl Sobol {
         } else {
             dim % self.dims
         };
+        if index >> 32 != 0 || dim >= SOBOL_DIMS {
+            return self.wide_u32(index, dim);
+        }
+        product_dim(dim as usize, index as u32) ^ self.shift(dim)
+    }
+
+    /// [`Sobol::sample_u32`] past the 32-bit path: an index past 2³² or a padding dimension.
+    #[cold]
+    #[inline(never)]
+    fn wide_u32(&self, index: u64, dim: u32) -> u32 {
         if dim >= SOBOL_DIMS {
             return self.padded(index, dim);
         }
