@@ -338,11 +338,47 @@ mod tests {
         }
     }
 
+    /// The derivations' keys, pinned: they are part of every image a renderer makes with them.
+    #[test]
+    fn derived_keys_are_pinned() {
+        let d = Domain::new(1, 5);
+        let keys = [
+            d.branch(2).key(),
+            d.split(2, 4, 1).unwrap().key(),
+            d.distribute(2, 3).key(),
+            d.chain(2, 3).key(),
+        ];
+        assert_eq!(keys, PINNED_KEYS);
+    }
+
+    const PINNED_KEYS: [u64; 4] = [
+        0xbf7f_6a7a_7887_b1ee,
+        0x6d3e_6c72_864a_50d3,
+        0x69e1_7e9f_e79f_354c,
+        0x2736_8d61_8c7a_4fd0,
+    ];
+
     #[test]
     fn split_checks_its_arguments() {
         let d = Domain::new(1, u64::MAX / 2);
         assert_eq!(d.split(1, 0, 0), Err(Error::ZeroSize { what: "count" }));
-        assert!(matches!(d.split(1, 3, 0), Err(Error::TooMany { .. })));
+        assert_eq!(
+            d.split(1, 3, 0),
+            Err(Error::TooMany {
+                what: "count × index",
+                value: u64::MAX / 2,
+                max: u64::MAX / 3
+            })
+        );
+        assert_eq!(
+            d.split(7, 4, 4),
+            Err(Error::NotInRange {
+                what: "k",
+                value: 4,
+                min: 0,
+                max: 3
+            })
+        );
         assert!(d.split(1, 2, 1).is_ok());
         assert_eq!(d.split(1, 2, 1).unwrap().index(), u64::MAX);
     }
