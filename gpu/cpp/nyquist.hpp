@@ -2173,8 +2173,7 @@ struct RandomSampler {
 
     NYQ_HD Pcg32 at(std::uint32_t d) const {
         Pcg32 r = Pcg32::make(base, kStream);
-        const std::uint32_t k = d & 0xffffu;
-        if (k != 0) r.advance(k);
+        if (d != 0) r.advance(d);
         return r;
     }
     NYQ_HD void start_pixel_sample(std::uint32_t px, std::uint32_t py, std::uint32_t sample_index,
@@ -2187,7 +2186,7 @@ struct RandomSampler {
     NYQ_HD float get_1d() {
         const float v = unit_f32(rng.next_u32());
         dim += 1;
-        if ((dim & 0xffffu) == 0) rng = at(0);
+        if (dim == 0) rng = at(0);  // the cursor wrapped past UINT32_MAX
         return v;
     }
     NYQ_HD Float2 get_2d() {

@@ -1762,12 +1762,11 @@ NyqPcg32_ nyq_random_at(
     metal::uint2 _e3 = s_40.base;
     NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
-    uint d_16 = dim_17 & 65535u;
-    if (d_16 != 0u) {
-        nyq_pcg32_advance(g_2, d_16);
+    if (dim_17 != 0u) {
+        nyq_pcg32_advance(g_2, dim_17);
     }
-    NyqPcg32_ _e10 = g_2;
-    return _e10;
+    NyqPcg32_ _e8 = g_2;
+    return _e8;
 }
 
 void nyq_random_start(
@@ -1803,9 +1802,9 @@ float nyq_random_get_1d(
     uint _e9 = s_42.dim;
     s_42.dim = _e9 + 1u;
     uint _e13 = s_42.dim;
-    if ((_e13 & 65535u) == 0u) {
-        NyqPcg32_ _e20 = nyq_random_at(s_42, 0u);
-        s_42.rng = _e20;
+    if (_e13 == 0u) {
+        NyqPcg32_ _e18 = nyq_random_at(s_42, 0u);
+        s_42.rng = _e18;
     }
     return _e5;
 }
@@ -2032,19 +2031,19 @@ void nyq_lattice_start(
 float nyq_lattice_get_1d(
     thread NyqLatticeSampler& s_48
 ) {
-    uint d_17 = s_48.dim;
-    s_48.dim = d_17 + 1u;
-    float _e6 = nyq_lattice_value(s_48, d_17);
+    uint d_16 = s_48.dim;
+    s_48.dim = d_16 + 1u;
+    float _e6 = nyq_lattice_value(s_48, d_16);
     return _e6;
 }
 
 metal::float2 nyq_lattice_get_2d(
     thread NyqLatticeSampler& s_49
 ) {
-    uint d_18 = s_49.dim;
-    s_49.dim = d_18 + 2u;
-    float _e6 = nyq_lattice_value(s_49, d_18);
-    float _e9 = nyq_lattice_value(s_49, d_18 + 1u);
+    uint d_17 = s_49.dim;
+    s_49.dim = d_17 + 2u;
+    float _e6 = nyq_lattice_value(s_49, d_17);
+    float _e9 = nyq_lattice_value(s_49, d_17 + 1u);
     return metal::float2(_e6, _e9);
 }
 
@@ -2133,9 +2132,9 @@ metal::uint2 nyq_lattice_fixed(
 ) {
     metal::uint2 shift_4 = metal::uint2(0u, 0u);
     uint g_8 = {};
-    uint d_19 = naga_mod(dim_21, l.dims);
+    uint d_18 = naga_mod(dim_21, l.dims);
     if (l.rotated != 0u) {
-        metal::uint2 _e13 = nyq_u64_(d_19);
+        metal::uint2 _e13 = nyq_u64_(d_18);
         metal::uint2 _e14 = nyq_hash2_(l.seed, _e13);
         shift_4 = _e14;
     }
@@ -2143,16 +2142,16 @@ metal::uint2 nyq_lattice_fixed(
         metal::uint2 _e21 = shift_4;
         metal::uint2 start = (l.rotated != 0u) ? _e21 : metal::uint2(0u, 2147483648u);
         metal::uint2 _e26 = nyq_u64_(index_10);
-        metal::uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA.inner[d_19 & 1u]);
+        metal::uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA.inner[d_18 & 1u]);
         metal::uint2 _e32 = nyq_add64_(start, _e31);
         return _e32;
     }
     g_8 = l.g;
-    if (d_19 == 0u) {
+    if (d_18 == 0u) {
         g_8 = naga_mod(1u, l.n);
     } else {
-        if (d_19 > 1u) {
-            uint _e44 = nyq_pow_mod(l.g, d_19, l.n);
+        if (d_18 > 1u) {
+            uint _e44 = nyq_pow_mod(l.g, d_18, l.n);
             g_8 = _e44;
         }
     }
@@ -2614,11 +2613,11 @@ void nyq_stratified_start(
 float nyq_stratified_get_1d(
     thread NyqStratifiedSampler& s_58
 ) {
-    uint d_20 = s_58.dim;
-    s_58.dim = d_20 + 1u;
-    uint _e6 = nyq_stratified_stratum(s_58, d_20);
+    uint d_19 = s_58.dim;
+    s_58.dim = d_19 + 1u;
+    uint _e6 = nyq_stratified_stratum(s_58, d_19);
     float _e7 = nyq_u32_to_f32_(_e6);
-    metal::float2 _e8 = nyq_stratified_jitters(s_58, d_20);
+    metal::float2 _e8 = nyq_stratified_jitters(s_58, d_19);
     float _e13 = s_58.inv[2];
     float _e15 = nyq_below_one((_e7 + _e8.x) * _e13);
     return _e15;
@@ -2627,10 +2626,10 @@ float nyq_stratified_get_1d(
 metal::float2 nyq_stratified_get_2d(
     thread NyqStratifiedSampler& s_59
 ) {
-    uint d_21 = s_59.dim;
-    s_59.dim = d_21 + 2u;
-    uint _e6 = nyq_stratified_stratum(s_59, d_21);
-    metal::float2 _e7 = nyq_stratified_jitters(s_59, d_21);
+    uint d_20 = s_59.dim;
+    s_59.dim = d_20 + 2u;
+    uint _e6 = nyq_stratified_stratum(s_59, d_20);
+    metal::float2 _e7 = nyq_stratified_jitters(s_59, d_20);
     metal::float2 _e8 = nyq_stratified_cell(s_59, _e6, _e7);
     return _e8;
 }
@@ -2751,12 +2750,12 @@ uint nyq_pmj02_sample_u32_(
     uint index_13,
     uint dim_28
 ) {
-    uint d_22 = dim_28 & 1u;
-    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_22);
+    uint d_21 = dim_28 & 1u;
+    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_21);
     if (s_62.scrambled == 0u) {
         return _e6;
     }
-    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_62.keys[d_22]);
+    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_62.keys[d_21]);
     return metal::reverse_bits(_e13);
 }
 
@@ -2833,9 +2832,9 @@ void nyq_pmj02_start(
 float nyq_pmj02_get_1d(
     thread NyqPmj02Sampler& s_67
 ) {
-    uint d_23 = s_67.dim;
-    s_67.dim = d_23 + 1u;
-    metal::uint2 _e6 = nyq_u64_(d_23);
+    uint d_22 = s_67.dim;
+    s_67.dim = d_22 + 1u;
+    metal::uint2 _e6 = nyq_u64_(d_22);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
     metal::uint2 _e12 = nyq_add64_(_e8, metal::uint2(1u, 0u));
     metal::uint3 _e13 = nyq_pmj02_keys(s_67, _e12);
@@ -2849,12 +2848,12 @@ float nyq_pmj02_get_1d(
 metal::float2 nyq_pmj02_get_2d(
     thread NyqPmj02Sampler& s_68
 ) {
-    uint d_24 = s_68.dim;
-    s_68.dim = d_24 + 2u;
-    metal::uint2 _e6 = nyq_u64_(d_24);
+    uint d_23 = s_68.dim;
+    s_68.dim = d_23 + 2u;
+    metal::uint2 _e6 = nyq_u64_(d_23);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
     metal::uint3 _e9 = nyq_pmj02_keys(s_68, _e8);
-    if (d_24 == 0u) {
+    if (d_23 == 0u) {
         uint _e13 = s_68.index_rev;
         uint _e16 = nyq_reverse16_(_e13 >> 16u);
         metal::float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
@@ -3213,7 +3212,7 @@ NyqRounding nyq_divide(
     }
     bool _e44 = local_24;
     if (_e44) {
-        metal::uint2 d_25 = den_1.xy;
+        metal::uint2 d_24 = den_1.xy;
         metal::uint4 _e46 = nyq_shl128_(num_1, s_83);
         r_11 = _e46.xy;
         uint2 loop_bound_24 = uint2(4294967295u);
@@ -3237,11 +3236,11 @@ NyqRounding nyq_divide(
                 uint _e62 = q_2.x;
                 q_2 = metal::uint2(_e54 << 1u, (_e58 << 1u) | (_e62 >> 31u));
                 uint _e68 = r_11.y;
-                if (!((_e68 > d_25.y))) {
+                if (!((_e68 > d_24.y))) {
                     uint _e75 = r_11.y;
-                    if (_e75 == d_25.y) {
+                    if (_e75 == d_24.y) {
                         uint _e81 = r_11.x;
-                        local_26 = _e81 >= d_25.x;
+                        local_26 = _e81 >= d_24.x;
                     } else {
                         local_26 = false;
                     }
@@ -3253,7 +3252,7 @@ NyqRounding nyq_divide(
                 bool _e87 = local_25;
                 if (_e87) {
                     metal::uint2 _e88 = r_11;
-                    metal::uint2 _e89 = nyq_sub64_(_e88, d_25);
+                    metal::uint2 _e89 = nyq_sub64_(_e88, d_24);
                     r_11 = _e89;
                     uint _e91 = q_2.x;
                     q_2.x = _e91 | 1u;
@@ -3709,10 +3708,10 @@ float nyq_radical_inverse_scrambled(
     bool local_37 = {};
     NyqFraction f = {};
     uint bits_2 = {};
-    uint d_26 = naga_mod(dim_32, NYQ_PRIME_COUNT);
-    uint t_8 = NYQ_HALTON_WORDS * d_26;
+    uint d_25 = naga_mod(dim_32, NYQ_PRIME_COUNT);
+    uint t_8 = NYQ_HALTON_WORDS * d_25;
     if (how_2 == NYQ_SCRAMBLE_NONE) {
-        local_35 = d_26 == 0u;
+        local_35 = d_25 == 0u;
     } else {
         local_35 = false;
     }
@@ -3747,7 +3746,7 @@ float nyq_radical_inverse_scrambled(
                     NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23, nyq_halton_bases, _buffer_sizes);
                     f = _e60;
                 } else {
-                    NyqFraction _e63 = nyq_nested_fraction(d_26, a_18, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e63 = nyq_nested_fraction(d_25, a_18, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
                     f = _e63;
                 }
             }
@@ -4037,17 +4036,17 @@ float nyq_halton_sampler_value(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::uint2 a_24 = {};
-    uint d_27 = naga_mod(dim_38, NYQ_PRIME_COUNT);
+    uint d_26 = naga_mod(dim_38, NYQ_PRIME_COUNT);
     metal::uint2 index_17 = s_73.index;
     a_24 = index_17;
-    if (d_27 == 0u) {
+    if (d_26 == 0u) {
         uint e_6 = s_73.exponents.x;
         if (e_6 != 0u) {
             metal::uint2 _e14 = nyq_shr64_(index_17, e_6);
             a_24 = _e14;
         }
     } else {
-        if (d_27 == 1u) {
+        if (d_26 == 1u) {
             uint _e19 = s_73.scales.y;
             metal::uint3 _e20 = nyq_divmod64_small(index_17, _e19);
             a_24 = _e20.xy;
@@ -4056,7 +4055,7 @@ float nyq_halton_sampler_value(
     metal::uint2 _e22 = a_24;
     metal::uint2 _e24 = s_73.seed;
     uint _e26 = s_73.scramble;
-    float _e27 = nyq_radical_inverse_scrambled(d_27, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
+    float _e27 = nyq_radical_inverse_scrambled(d_26, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
     return _e27;
 }
 
@@ -4077,9 +4076,9 @@ float nyq_halton_sampler_get_1d(
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_28 = s_75.dim;
-    s_75.dim = d_28 + 1u;
-    float _e6 = nyq_halton_sampler_value(s_75, d_28, nyq_halton_bases, _buffer_sizes);
+    uint d_27 = s_75.dim;
+    s_75.dim = d_27 + 1u;
+    float _e6 = nyq_halton_sampler_value(s_75, d_27, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
@@ -4122,9 +4121,9 @@ metal::float2 nyq_halton_sampler_get_2d(
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_29 = s_77.dim;
-    s_77.dim = d_29 + 2u;
-    metal::float2 _e6 = nyq_halton_sampler_pair(s_77, d_29, nyq_halton_bases, _buffer_sizes);
+    uint d_28 = s_77.dim;
+    s_77.dim = d_28 + 2u;
+    metal::float2 _e6 = nyq_halton_sampler_pair(s_77, d_28, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 

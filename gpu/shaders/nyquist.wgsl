@@ -823,12 +823,11 @@ fn nyq_random_sampler(seed: vec2<u32>) -> NyqRandomSampler {
     return NyqRandomSampler(seed, vec2<u32>(0u, 0u), NyqPcg32(vec2<u32>(0u, 0u)), 0u);
 }
 
-// The generator of dimension `dim` (mod 65536) of the current sample.
+// The generator of dimension `dim` of the current sample (every u32 dimension its own output).
 fn nyq_random_at(s: ptr<function, NyqRandomSampler>, dim: u32) -> NyqPcg32 {
     var g = nyq_pcg32((*s).base);
-    let d = dim & 0xffffu;
-    if d != 0u {
-        nyq_pcg32_advance(&g, d);
+    if dim != 0u {
+        nyq_pcg32_advance(&g, dim);
     }
     return g;
 }
@@ -850,8 +849,8 @@ fn nyq_random_get_1d(s: ptr<function, NyqRandomSampler>) -> f32 {
     let v = nyq_fraction_to_f32(nyq_pcg32_next(&g));
     (*s).rng = g;
     (*s).dim += 1u;
-    if ((*s).dim & 0xffffu) == 0u {
-        // Dimensions wrap modulo 65536.
+    if (*s).dim == 0u {
+        // The cursor wrapped past u32's last dimension.
         (*s).rng = nyq_random_at(s, 0u);
     }
     return v;
