@@ -17,8 +17,7 @@
 //! XORs; dimensions 64..1023 use a branch-free masked XOR over the 32 columns, several times
 //! slower. Neither path's cost depends on the index (timings: `docs/performance.md`).
 
-use super::owen_sobol::padded_u32;
-use super::{SOBOL_MATRICES, SOBOL_MATRICES_HI, Sequence, check_fill};
+use super::{SOBOL_MATRICES, SOBOL_MATRICES_HI, Sequence, check_fill, padded_u32};
 use crate::lazy_table::{baked_table, const_unless_lazy};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::{Error, hash};
