@@ -962,6 +962,29 @@ mod tests {
         }
     }
 
+    /// Past 2³², the values are the scrambled Sobol points of the 64-bit index: dimension 0 the
+    /// low half reversed, dimension 1 `sobol_u64`, each under the request's key.
+    #[test]
+    fn values_at_64_bit_indices_are_the_scrambled_sobol_points() {
+        for how in Scramble::ALL {
+            let mut s = ZSobolSampler::new([16384, 16384], 4096, how, 5).unwrap();
+            for (pixel, i) in [([16383u32, 9000u32], 4095u32), ([12000, 16000], 77)] {
+                let index = s.sequence_index(pixel, i, 0);
+                assert!(index >> 32 != 0);
+                let key = dim_key(5, 0);
+                let x = to_f32(scramble_dim0(index as u32, key as u32, how));
+                let v = sobol_u64(index, 1);
+                let y = to_f32(match how {
+                    // The sampler's fast Owen scramble is the LK hash on the reversed word.
+                    Scramble::FastOwen => lk_hash(v.reverse_bits(), key_seed(key)).reverse_bits(),
+                    how => scramble_u32(v, key_seed(key), how),
+                });
+                s.start_pixel_sample(pixel, i, 0);
+                assert_eq!(s.get_pixel_2d(), [x, y], "{how:?} {pixel:?} {i}");
+            }
+        }
+    }
+
     /// The progressive contract: no sample of a pixel repeats over 2^20 samples; every epoch
     /// is a net in the pixel; and 16384² at 4096 spp, a 40-bit index, works.
     #[test]
