@@ -298,7 +298,7 @@ impl SobolSampler {
     #[inline]
     fn sample(&self, dim: u32) -> f32 {
         // Below 2³² the 32-bit product alone: the path (and speed) of the 32-bit sampler.
-        if self.index >> 32 == 0 {
+        if (self.index >> 32) as u32 == 0 {
             self.sample_by(dim, |i, d| sobol_u32(i as u32, d), padded_u32)
         } else {
             self.sample_wide(dim)

@@ -479,7 +479,7 @@ impl ZSobolSampler {
                 ];
             }
             how => {
-                let y = if wide >> 32 == 0 {
+                let y = if (wide >> 32) as u32 == 0 {
                     sobol_u32(index, 1)
                 } else {
                     sobol_u64(wide, 1)

@@ -301,7 +301,7 @@ impl Sobol {
         } else {
             dim % self.dims
         };
-        if index >> 32 != 0 || dim >= SOBOL_DIMS {
+        if (index >> 32) as u32 != 0 || dim >= SOBOL_DIMS {
             return self.wide_u32(index, dim);
         }
         product_dim(dim as usize, index as u32) ^ self.shift(dim)
