@@ -227,6 +227,9 @@ mod tests {
                 })
                 .collect()
         };
+        s.start_pixel_sample([3, 4], 9, 0);
+        assert_eq!(s.domain(), Some(s.pixel_domain()));
+        assert_eq!(s.pixel_domain().index(), 9);
         let a = pair(&mut s, [3, 4], 5000);
         for k in 0..=8 {
             assert!(is_zero_two_net(&a[..1 << k]), "{k}");

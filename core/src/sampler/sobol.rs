@@ -457,6 +457,29 @@ mod tests {
         threads_agree,
     };
 
+    /// Past 2³², every dimension is the Sobol point of the 64-bit index (unscrambled: the plain
+    /// `sobol_u64`; dimensions 0 and 1 the fraction inside the pixel).
+    #[test]
+    fn values_at_64_bit_indices_are_sobol_u64() {
+        let mut s = SobolSampler::new([65536, 65536], 1, Scramble::None, 0).unwrap();
+        for (pixel, i) in [([7u32, 9u32], 1u32), ([65535, 3], 1000)] {
+            let index = s.sequence_index(pixel, i);
+            assert!(index >> 32 != 0);
+            s.start_pixel_sample(pixel, i, 2);
+            let v: Vec<f32> = (0..4).map(|_| s.get_1d()).collect();
+            let want: Vec<f32> = (2..6)
+                .map(|d| fraction_to_f32(sobol_u64(index, d)))
+                .collect();
+            assert_eq!(v, want, "{pixel:?} {i}");
+            s.start_pixel_sample(pixel, i, 0);
+            let p = s.get_pixel_2d();
+            assert_eq!(
+                p,
+                [0, 1].map(|d| fraction_to_f32(sobol_u64(index, d) << 16))
+            );
+        }
+    }
+
     /// Dimensions past 1024: padding, per pixel (repeated where the pixels repeat).
     #[test]
     fn padding_repeats_where_the_pixels_repeat() {
