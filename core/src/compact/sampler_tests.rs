@@ -134,6 +134,7 @@ fn zsobol_sampler_equals_the_desktop_sampler_on_a_sweep() {
         ([1, 1], 1),
         ([1920, 1080], 8),
         ([65536, 3], 1),
+        ([16384, 16384], 4096),
     ] {
         for how in Scramble::ALL {
             let mut small = ZSobolSampler::new(res, spp, how, 5).unwrap();

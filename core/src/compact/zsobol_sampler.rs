@@ -144,7 +144,7 @@ impl ZSobolSampler {
         let index = wide as u32;
         let how = self.inner.scramble();
         if how == Scramble::FastOwen {
-            let rev = if wide >> 32 == 0 {
+            let rev = if (wide >> 32) as u32 == 0 {
                 sobol_product(&SOBOL1_REVERSED, index)
             } else {
                 sobol1(wide).reverse_bits()

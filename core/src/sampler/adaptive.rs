@@ -223,6 +223,17 @@ mod tests {
     use crate::sampler::tests::{consistent_values, threads_agree};
     use crate::sampler::{Jitter, PixelRangeSampler, Sample, SampleLayout, StratifiedSampler};
 
+    /// An adaptive sampler's samples are its inner sampler's domains.
+    #[test]
+    fn domains_are_the_inner_samplers() {
+        let inner = crate::sampler::OwenSobolSampler::new(16, 3).unwrap();
+        let mut a = AdaptiveSampler::new(inner.clone(), 4, 0.1).unwrap();
+        a.start_pixel_sample([1, 2], 5, 0);
+        let mut o = inner;
+        o.start_pixel_sample([1, 2], 5, 0);
+        assert_eq!(a.domain(), Some(o.pixel_domain()));
+    }
+
     fn run(scene: impl Fn([f32; 2]) -> f32) -> std::vec::Vec<u32> {
         let inner = StratifiedSampler::new(4, 4, Jitter::Jittered, 1).unwrap();
         let a = AdaptiveSampler::new(inner, 8, 0.05).unwrap();

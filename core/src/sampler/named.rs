@@ -535,6 +535,19 @@ mod tests {
     use crate::sampler::tests::record;
     use std::vec::Vec;
 
+    /// The owen-sobol sampler's samples are domains through the enum too; the others have none.
+    #[test]
+    fn domains_come_through_the_enum() {
+        let mut s = NamedSampler::new("owen-sobol", [8, 8], 16, 3).unwrap();
+        s.start_pixel_sample([1, 2], 5, 0);
+        let mut o = crate::sampler::OwenSobolSampler::new(16, 3).unwrap();
+        o.start_pixel_sample([1, 2], 5, 0);
+        assert_eq!(s.domain(), Some(o.pixel_domain()));
+        let mut r = NamedSampler::new("random", [8, 8], 16, 3).unwrap();
+        r.start_pixel_sample([1, 2], 5, 0);
+        assert_eq!(r.domain(), None);
+    }
+
     /// Each name gives the same values as its sampler built directly, as the CLI built them.
     #[test]
     fn names_build_the_samplers_they_name() {
