@@ -3,7 +3,8 @@
 //! A [`Domain`] is one Owen-scrambled Sobol sequence (the construction of
 //! [`OwenSobol`](crate::sequence::OwenSobol), keyed by a 64-bit word) and an index into it. A
 //! pixel sample of [`OwenSobolSampler`](super::OwenSobolSampler) *is* a domain
-//! ([`OwenSobolSampler::domain`](super::OwenSobolSampler::domain)): its dimension `d` is the
+//! ([`OwenSobolSampler::pixel_domain`](super::OwenSobolSampler::pixel_domain),
+//! [`Sampler::domain`](super::Sampler::domain)): its dimension `d` is the
 //! sampler's dimension `d`. From a domain an integrator derives others:
 //!
 //! | derivation | key | index | the points of `K` sub-samples over `N` parent samples |

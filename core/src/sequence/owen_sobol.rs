@@ -429,7 +429,7 @@ const LOW_BLOCK: u32 = 1 << 16;
 ///
 /// - `f32` values are the top 24 bits (never 1); `f64` values all 32 bits, exactly.
 /// - Indices are 64-bit ([`Sequence::point_count`] is `None`): past 2³² the index shuffle and
-///   the Sobol product take the upper half too ([`IndexShuffle::rev64`], the columns past 32),
+///   the Sobol product take the upper half too (a nested shuffle of 64 bits, the columns past 32),
 ///   so the first `2^k` points of dimensions 0 and 1 are a (0, k, 2)-net for every `k ≤ 64`.
 ///   Below 2³² the values are those of the 32-bit construction, bit for bit.
 /// - Dimensions from [`SOBOL_DIMS`] (1024) on are padding: independently seeded
