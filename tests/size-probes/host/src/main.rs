@@ -61,7 +61,7 @@ fn main() -> ExitCode {
             let s = OwenSobol::new(4, 7).unwrap();
             for i in indices {
                 (0..4).for_each(|d| emit(s.sample(i, d).to_bits()));
-                s.sample_4d(i as u32, 0)
+                s.sample_4d(i, 0)
                     .iter()
                     .for_each(|x| emit(x.to_bits()));
             }

@@ -12,7 +12,7 @@ extern "C" fn probe_main() -> ! {
         for d in 0..4 {
             emit(s.sample(i, d).to_bits());
         }
-        for x in s.sample_4d(i as u32, 0) {
+        for x in s.sample_4d(i, 0) {
             emit(x.to_bits());
         }
     })
