@@ -47,8 +47,8 @@ pub fn traced_reference(
 pub use crate::output::check_output;
 pub use nyquist_lab::json::{json_number, json_string};
 pub use nyquist_lab::render::{
-    Aov, CONTINUING_SAMPLERS, Layers, PROGRESSIVE_SAMPLERS, SamplerName, ScrambleName,
-    build_sampler, check_spp_limit, parse_filter, parse_size, render_layers,
+    Aov, Layers, PROGRESSIVE_SAMPLERS, SamplerName, ScrambleName, build_sampler, check_spp_limit,
+    parse_filter, parse_size, render_layers,
 };
 pub use nyquist_lab::render::{
     FILM_PIXEL_BYTES, IMAGE_PIXEL_BYTES, LARGE_WORK, MAX_PIXELS, MAX_SIDE, ReferenceSource,
@@ -406,13 +406,12 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         None => None,
     };
     if let Some(hint) = args.spp_hint
-        && !CONTINUING_SAMPLERS.contains(&args.sampler)
+        && !args.sampler.continues()
     {
-        let names: Vec<&str> = CONTINUING_SAMPLERS.iter().map(|s| s.name()).collect();
         bail!(
             "--spp-hint {hint}: --sampler {} lays out a fixed set for its spp; drawing past it takes one of {}",
             args.sampler.name(),
-            names.join(", ")
+            nyquist::sampler::CONTINUING_NAMES.join(", ")
         );
     }
     // Adaptive sampling draws up to max_spp samples in a pixel: the sampler is made for them.

@@ -158,3 +158,50 @@ fn dims_study_has_a_row_per_sampler_and_a_column_per_genz_family() {
         assert!(err.contains("--dims") || err.contains("--json"), "{err}");
     }
 }
+
+/// `--spp-hint H`: every sampler is made for H and draws each N. Owen-Sobol's samples do not
+/// depend on its spp, so its curve is the one without the hint; ZSobol's past the hint come
+/// from new epochs, which are not one net with the hint's own samples, so its error on the
+/// smooth Gaussian falls more slowly than ZSobol made for each N. A sampler that wraps at
+/// its spp is refused in one line.
+#[test]
+fn spp_hint_makes_the_samplers_for_the_hint_and_draws_past_it() {
+    let run = |samplers: &str, hint: Option<&str>| -> String {
+        let mut args = vec![
+            "converge",
+            "--samplers",
+            samplers,
+            "--integrands",
+            "gaussian",
+            "--min-spp",
+            "16",
+            "--max-spp",
+            "1024",
+            "--runs",
+            "16",
+            "--json",
+        ];
+        if let Some(h) = hint {
+            args.extend(["--spp-hint", h]);
+        }
+        let o = nyquist(&args);
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        stdout(&o)
+    };
+    let curves = |s: &str| s[s.find("\"curves\"").unwrap()..].to_owned();
+    let plain = run("owen-sobol", None);
+    let hinted = run("owen-sobol", Some("16"));
+    assert_eq!(curves(&plain), curves(&hinted));
+    assert_eq!(json_field(&hinted, "spp_hint"), 16.0);
+    assert!(plain.contains("\"spp_hint\":null,"), "{plain}");
+    let slope = |s: &str| json_field(s, "slope");
+    let made_for_each = slope(&run("zsobol", None));
+    let past_the_hint = slope(&run("zsobol", Some("16")));
+    assert!(made_for_each < -1.3, "{made_for_each}");
+    assert!(
+        (-1.2..-0.6).contains(&past_the_hint),
+        "{past_the_hint} (made for each N: {made_for_each})"
+    );
+    let o = nyquist(&["converge", "--samplers", "zero-two", "--spp-hint", "16"]);
+    assert_one_line_error(&o, "zero-two at 16 spp: made for 16, it wraps past its spp");
+}

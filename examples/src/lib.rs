@@ -187,12 +187,11 @@ pub fn render(config: &RenderConfig, progress: impl FnMut(usize, usize)) -> Resu
         return render_adaptively(config, a, scene);
     }
     if let Some(hint) = config.spp_hint {
-        const CONTINUING: [&str; 6] =
-            ["random", "halton", "sobol", "owen-sobol", "zsobol", "pmj02"];
-        if !CONTINUING.contains(&config.sampler.as_str()) {
+        if !nyquist::sampler::continues(&config.sampler) {
             bail!(
-                "--spp-hint {hint}: {:?} wraps at its spp; one of {CONTINUING:?} draws past it",
-                config.sampler
+                "--spp-hint {hint}: {:?} wraps at its spp; one of {:?} draws past it",
+                config.sampler,
+                nyquist::sampler::CONTINUING_NAMES
             );
         }
         if !config.stateless {

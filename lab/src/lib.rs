@@ -11,7 +11,7 @@
 //! ```
 //! use nyquist_lab::study::{Study, unit_square::SquareIntegrand};
 //! let study = Study { samplers: vec!["stratified".into()], integrands: vec![SquareIntegrand::Disk],
-//!                     counts: vec![16, 64], runs: 4, seed: 1 };
+//!                     counts: vec![16, 64], runs: 4, seed: 1, spp_hint: None };
 //! assert_eq!(study.run(1).unwrap().curves[0].spp, [16, 64]);
 //! ```
 #![forbid(unsafe_code)]

@@ -91,6 +91,17 @@ pub enum SamplerName {
 }
 
 impl SamplerName {
+    /// Whether the sampler continues past the spp it was made for
+    /// ([`nyquist::sampler::continues`]): the ones `render --spp-hint` takes.
+    ///
+    /// ```
+    /// use nyquist_lab::render::SamplerName;
+    /// assert!(SamplerName::ZSobol.continues() && !SamplerName::ZeroTwo.continues());
+    /// ```
+    pub fn continues(self) -> bool {
+        nyquist::sampler::continues(self.name())
+    }
+
     /// The name, as [`NamedSampler::new`] takes it.
     ///
     /// ```
@@ -278,18 +289,6 @@ pub const PROGRESSIVE_SAMPLERS: [SamplerName; 8] = [
     SamplerName::ZSobol,
     SamplerName::Pmj02,
     SamplerName::R2,
-];
-
-/// The samplers whose every sample index is a new sample, past the spp they were made for:
-/// the ones `render --spp-hint` takes (zero-two and r2 are progressive up to their spp and
-/// wrap past it).
-pub const CONTINUING_SAMPLERS: [SamplerName; 6] = [
-    SamplerName::Random,
-    SamplerName::Halton,
-    SamplerName::Sobol,
-    SamplerName::OwenSobol,
-    SamplerName::ZSobol,
-    SamplerName::Pmj02,
 ];
 
 /// An extra channel group a render can keep per pixel, from the scene's

@@ -18,6 +18,7 @@ fn study(samplers: &[&str], seed: u64) -> Vec<Curve<Integrand>> {
         counts: powers_of_two(16, 4096),
         runs: 64,
         seed,
+        spp_hint: None,
     }
     .run(std::thread::available_parallelism().map_or(1, usize::from))
     .unwrap()

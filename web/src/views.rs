@@ -563,7 +563,8 @@ pub fn filters(q: &Query) -> Result<Reply> {
 /// least-squares slopes).
 ///
 /// Parameters: `samplers`, `integrands` (comma lists), `min`, `max` (powers of two, N range),
-/// `runs` (1 ..= 1024), `seed`. No data.
+/// `runs` (1 ..= 1024), `seed`, and `hint` (`--spp-hint`: every sampler made for `hint` spp,
+/// drawing each N). No data.
 pub fn convergence(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply> {
     let samplers = q.list("samplers", "random,stratified,halton,sobol,pmj02");
     let integrand_names = q.list("integrands", "disk,triangle,step,gaussian,bilinear");
@@ -575,6 +576,11 @@ pub fn convergence(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Re
     let max = q.int("max", 1024, 2, 1 << 16)? as u32;
     let runs = q.int("runs", 16, 1, 1024)? as u32;
     let seed = q.int("seed", 0, 0, u64::MAX)?;
+    let hint = if q.has("hint") {
+        Some(q.int("hint", 16, 1, 1 << 16)? as u32)
+    } else {
+        None
+    };
     let args = ConvergeArgs {
         samplers: samplers.clone(),
         integrands,
@@ -586,6 +592,7 @@ pub fn convergence(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Re
         plot: None,
         json: true,
         dims: None,
+        spp_hint: hint,
     };
     let per_run: u64 = (min.trailing_zeros()..=max.trailing_zeros())
         .map(|k| 1u64 << k)
@@ -598,9 +605,10 @@ pub fn convergence(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Re
         );
     }
     let cli = format!(
-        "nyquist converge --samplers {} --integrands {} --min-spp {min} --max-spp {max} --runs {runs} --seed {seed} --json",
+        "nyquist converge --samplers {} --integrands {} --min-spp {min} --max-spp {max} --runs {runs} --seed {seed}{} --json",
         samplers.join(","),
-        integrand_names.join(",")
+        integrand_names.join(","),
+        hint.map_or_else(String::new, |h| format!(" --spp-hint {h}"))
     );
     let study =
         converge::json_report(&args, 1, &|done, total| progress(done as u32, total as u32))?;

@@ -207,6 +207,22 @@ fn convergence_equals_converge_json() {
     let printed = nyquist_cli::converge::json_report(&args, 2, &|_, _| {}).unwrap();
     assert_eq!(field(&json, "curves"), field(&printed, "curves"));
     assert!(field(&json, "curves").matches("\"slope\":").count() == 6);
+    // `hint` is `--spp-hint`, and the page's error for a sampler that wraps is the command's.
+    let q = "view=convergence&samplers=zsobol&integrands=gaussian&min=16&max=256&runs=8&hint=16";
+    let (json, _, cli) = reply(q);
+    let Cli::Converge(args) = cli else {
+        panic!("not converge")
+    };
+    assert_eq!(args.spp_hint, Some(16));
+    let printed = nyquist_cli::converge::json_report(&args, 2, &|_, _| {}).unwrap();
+    assert_eq!(field(&json, "curves"), field(&printed, "curves"));
+    let plain = reply(&q.replace("&hint=16", "")).0;
+    assert_ne!(field(&json, "curves"), field(&plain, "curves"));
+    let e = format!(
+        "{:#}",
+        handle("view=convergence&samplers=zero-two&hint=16", &|_, _| {}).unwrap_err()
+    );
+    assert!(e.contains("wraps past its spp"), "{e}");
 }
 
 #[test]

@@ -14,7 +14,7 @@ const DEFAULTS = {
   filters: { filter: 'mitchell', grid: '65', samples: '4096', seed: '0' },
   convergence: { samplers: 'random,stratified,halton,sobol,pmj02',
     integrands: 'disk,triangle,step,gaussian,bilinear', min: '16', max: '1024', runs: '16',
-    seed: '0' },
+    seed: '0', hint: '' },
 };
 const CROP = 32;
 

@@ -127,8 +127,8 @@ pub use hammersley::HammersleySampler;
 pub use lattice::LatticeSampler;
 pub use layout::{PixelRangeSampler, Sample, SampleLayout};
 pub use named::{
-    NAMES, NamedSampler, NamedSamplerError, OTHER_NAMES, SCRAMBLE_NAMES, canonical_name, spp_limit,
-    strata,
+    CONTINUING_NAMES, NAMES, NamedSampler, NamedSamplerError, OTHER_NAMES, SCRAMBLE_NAMES,
+    canonical_name, continues, spp_limit, strata,
 };
 pub use owen_sobol::OwenSobolSampler;
 pub(crate) use pmj02::Keys as Pmj02Keys;

@@ -86,6 +86,32 @@ pub fn canonical_name(name: &str) -> Option<&'static str> {
         .copied()
 }
 
+/// The names of [`NAMES`] whose every sample index is a new sample, past the spp they were
+/// made for: drawing `spp · k` samples from one made for `spp` continues the set instead of
+/// repeating it (the spp given is a hint). The others lay out a fixed set for their spp and
+/// wrap past it (zero-two and r2 are progressive up to their spp).
+///
+/// ```
+/// use nyquist::sampler::{NAMES, CONTINUING_NAMES, continues};
+/// assert!(CONTINUING_NAMES.iter().all(|n| NAMES.contains(n)));
+/// assert!(continues("ZSobol") && continues("sobol-plain") && !continues("zero-two"));
+/// ```
+pub const CONTINUING_NAMES: [&str; 6] =
+    ["random", "halton", "sobol", "owen-sobol", "zsobol", "pmj02"];
+
+/// Whether sampler `name` (as [`canonical_name`] takes it) is one of [`CONTINUING_NAMES`],
+/// or an [`OTHER_NAMES`] spelling of one (`halton-plain`, `sobol-plain`, `sobol-owen`).
+pub fn continues(name: &str) -> bool {
+    let name = match canonical_name(name) {
+        Some("halton-plain") => "halton",
+        Some("sobol-plain") => "sobol",
+        Some("sobol-owen") => "owen-sobol",
+        Some(n) => n,
+        None => return false,
+    };
+    CONTINUING_NAMES.contains(&name)
+}
+
 /// The most samples per pixel sampler `name` takes (`None`: no limit of its own below
 /// `u32::MAX`; the image-wide samplers `sobol` and `zsobol` also bound spp × pixels, which
 /// depends on the size): `best-candidate`'s baked table has 4096 rows, `pmj02`'s
@@ -864,5 +890,31 @@ mod tests {
             NamedSamplerError::UnknownName
         );
         assert_eq!(SCRAMBLE_NAMES, ["halton", "hammersley", "sobol", "zsobol"]);
+    }
+
+    /// The continuing samplers give 256 distinct image samples from one pixel of a sampler
+    /// made for 4. (The others' values may differ too, by a fresh jitter in repeated strata,
+    /// so distinctness does not tell them apart.)
+    #[test]
+    fn continuing_samplers_draw_new_samples_past_their_spp() {
+        for name in NAMES.iter().chain(&OTHER_NAMES) {
+            if !continues(name) {
+                continue;
+            }
+            let mut s = NamedSampler::new(name, [4, 4], 4, 7).unwrap();
+            let mut seen: Vec<[u32; 2]> = (0..256)
+                .map(|i| {
+                    s.start_pixel_sample([1, 2], i, 0);
+                    s.get_pixel_2d().map(f32::to_bits)
+                })
+                .collect();
+            seen.sort_unstable();
+            seen.dedup();
+            assert_eq!(seen.len(), 256, "{name}");
+        }
+        assert!(!continues("nope") && !continues("zero-two") && !continues("hammersley-plain"));
+        for alias in ["Halton-Plain", "sobol-plain", "sobol-owen", "ZSOBOL"] {
+            assert!(continues(alias), "{alias}");
+        }
     }
 }

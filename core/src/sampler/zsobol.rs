@@ -94,10 +94,13 @@ const CAMERA_DIMS: [u32; 3] = [0, 2, 3];
 /// **Past `spp`** (progressive rendering) every sample index is a new sample: samples
 /// `spp·2^(k−1) .. spp·2^k` (`k ≥ 1`) are epoch `k`, a ZSobol pattern of its own with
 /// `spp·2^(k−1)` samples per pixel under the seed `hash(seed, k)`. Each epoch is a net in every
-/// pixel and blue across pixels as the first is; epochs are independent, and each one is as
-/// large as all before it together, so the error keeps the nets' convergence rate (the union of
-/// two epochs is not one net: a finer net of one pixel would need the index blocks of its
-/// neighbours, whose values the pixel would then repeat, as pbrt-v4's ZSobol does past its spp).
+/// pixel and blue across pixels as the first is, and epochs are independent. The union of two
+/// epochs is not one net (a finer net of one pixel would need the index blocks of its
+/// neighbours, whose values the pixel would then repeat, as pbrt-v4's ZSobol does past its
+/// spp), so past `spp` the error of a smooth integrand falls as `1/N` (the first epoch's error
+/// dominates the mean) instead of the net's `N^−1.5`. Below `spp`, a pixel's first `4^j`
+/// samples are a net (`2·4^j` when `log₂ spp` is odd): a progressive renderer gives the
+/// largest spp it may reach.
 ///
 /// ```
 /// use nyquist::sampler::{Sampler, ZSobolSampler};
@@ -1013,9 +1016,42 @@ mod tests {
                     big.get_pixel_2d()
                 })
                 .collect();
-            // The pixel's whole block of 4096 (its prefixes are not nets: the sample digits
-            // are permuted).
+            // The pixel's whole block of 4096 (of its prefixes, only those of whole digits
+            // are nets: `prefixes_of_whole_digits_are_nets`).
             assert!(is_zero_two_net(&pts), "{scramble:?}");
+        }
+    }
+
+    /// Below its spp, a pixel's prefixes of whole base-4 index digits are nets: the first
+    /// `4^j` samples, or `2·4^j` when `log₂ spp` is odd (its lowest digit is binary). The
+    /// others are not (the sample digits are permuted), which is why a progressive renderer
+    /// draws powers of 4 from a sampler made for the most it may reach.
+    #[test]
+    fn prefixes_of_whole_digits_are_nets() {
+        for spp in [1024u32, 2048, 4096] {
+            for scramble in Scramble::ALL {
+                let mut s = ZSobolSampler::new([8, 8], spp, scramble, 3).unwrap();
+                for k in 0..=spp.trailing_zeros() {
+                    let whole = (spp.trailing_zeros() - k) % 2 == 0 || k == 0;
+                    let nets = (0..16)
+                        .filter(|p| {
+                            let pts: Vec<[f32; 2]> = (0..1u32 << k)
+                                .map(|i| {
+                                    s.start_pixel_sample([p % 8, p / 3], i, 0);
+                                    s.get_pixel_2d()
+                                })
+                                .collect();
+                            is_zero_two_net(&pts)
+                        })
+                        .count();
+                    // Small sets may be nets by chance; from 8 points on, not all 16 are.
+                    if whole {
+                        assert_eq!(nets, 16, "{spp} {scramble:?} 2^{k}");
+                    } else if k >= 3 {
+                        assert!(nets < 16, "{spp} {scramble:?} 2^{k}");
+                    }
+                }
+            }
         }
     }
 }

@@ -21,6 +21,7 @@
 //!     counts: vec![16, 64, 256],
 //!     runs: 16,
 //!     seed: 7,
+//!     spp_hint: None,
 //! };
 //! let curves = study.run(1).unwrap().curves;
 //! assert_eq!(curves.len(), 1);
@@ -31,7 +32,8 @@
 use super::genz::{Family, Genz};
 use super::unit_square::SquareIntegrand as Integrand;
 use super::{
-    Curve, MAX_SAMPLES, MAX_SPP, Outcome, Study, StudyError, default_samplers, powers_of_two,
+    Curve, MAX_SAMPLES, MAX_SPP, Outcome, Study, StudyError, StudyFault, default_samplers,
+    powers_of_two,
 };
 use crate::clock::Stopwatch;
 use crate::json::{json_number, json_string};
@@ -45,7 +47,7 @@ use std::path::PathBuf;
 /// where a sampler's limit is passed).
 pub fn study_error(e: StudyError) -> anyhow::Error {
     match e.error {
-        NamedSamplerError::SppAboveLimit { max, .. } => anyhow!(
+        StudyFault::Sampler(NamedSamplerError::SppAboveLimit { max, .. }) => anyhow!(
             "--samplers {} at {} spp: {} takes at most {max} samples per pixel (give --max-spp \
              {max} or less)",
             e.sampler,
@@ -113,6 +115,12 @@ pub struct ConvergeSpec {
     /// --integrands, --plot and --json do not apply.
     #[cfg_attr(feature = "clap", arg(long, value_name = "D", value_parser = crate::flags::whole(2, crate::study::genz::MAX_DIMS)))]
     pub dims: Option<u32>,
+    /// Make every sampler for H samples per pixel and draw each N from it, past H or short of
+    /// it: how a progressive renderer that keeps sampling sees the sampler. Takes the samplers
+    /// that continue past their spp (random, halton, sobol, owen-sobol, zsobol, pmj02; the
+    /// default list with this flag).
+    #[cfg_attr(feature = "clap", arg(long, value_name = "H", value_parser = crate::flags::whole(1, MAX_SPP)))]
+    pub spp_hint: Option<u32>,
 }
 
 impl Default for ConvergeSpec {
@@ -130,7 +138,23 @@ impl Default for ConvergeSpec {
             plot: None,
             json: false,
             dims: None,
+            spp_hint: None,
         }
+    }
+}
+
+/// The spec's samplers: `--samplers`, trimmed, or the default list (with `--spp-hint`, the
+/// samplers that continue past their spp).
+fn samplers(args: &ConvergeSpec) -> Vec<String> {
+    if !args.samplers.is_empty() {
+        args.samplers.iter().map(|s| s.trim().to_owned()).collect()
+    } else if args.spp_hint.is_some() {
+        nyquist::sampler::CONTINUING_NAMES
+            .iter()
+            .map(|&n| n.to_owned())
+            .collect()
+    } else {
+        default_samplers()
     }
 }
 
@@ -140,11 +164,7 @@ impl Default for ConvergeSpec {
 /// # Errors
 /// One line naming the field at fault as a flag.
 pub fn study(args: &ConvergeSpec, notes: &mut Vec<String>) -> Result<Study<Integrand>> {
-    let mut samplers = if args.samplers.is_empty() {
-        default_samplers()
-    } else {
-        args.samplers.iter().map(|s| s.trim().to_owned()).collect()
-    };
+    let mut samplers = samplers(args);
     for (i, s) in samplers.iter().enumerate() {
         if s.is_empty() {
             bail!("--samplers: empty sampler name (e.g. random,stratified)");
@@ -174,9 +194,10 @@ pub fn study(args: &ConvergeSpec, notes: &mut Vec<String>) -> Result<Study<Integ
         );
     }
     // A default sampler whose limit is below --max-spp is left out, with a note once every
-    // flag is checked; named in --samplers it is an error.
+    // flag is checked; named in --samplers it is an error. With --spp-hint the samplers are
+    // made for the hint, which the study checks.
     let mut left_out = Vec::new();
-    if args.samplers.is_empty() {
+    if args.samplers.is_empty() && args.spp_hint.is_none() {
         samplers.retain(|name| match nyquist::sampler::spp_limit(name) {
             Some(max) if args.max_spp > max => {
                 left_out.push(format!(
@@ -199,6 +220,7 @@ pub fn study(args: &ConvergeSpec, notes: &mut Vec<String>) -> Result<Study<Integ
         counts: powers_of_two(args.min_spp, args.max_spp),
         runs: args.runs,
         seed: args.seed,
+        spp_hint: args.spp_hint,
     };
     if study.work() > MAX_SAMPLES {
         bail!(
@@ -279,12 +301,15 @@ pub fn table(
 ) -> String {
     let mut s = format!(
         "Slope of log RMSE against log N (least squares over N = {}, {}, …, {}; {} per N, seeds \
-         hashed from --seed {}), with the RMSE at N = {} in brackets{}\n\n",
+         hashed from --seed {}{}), with the RMSE at N = {} in brackets{}\n\n",
         args.min_spp,
         2 * args.min_spp,
         args.max_spp,
         count(study.runs, "independent run"),
         study.seed,
+        study.spp_hint.map_or_else(String::new, |h| format!(
+            "; every sampler made for --spp-hint {h} and drawing N"
+        )),
         args.max_spp,
         args.plot
             .as_ref()
@@ -395,11 +420,14 @@ pub fn json(
             .collect(),
     );
     format!(
-        "{{\"runs\":{},\"seed\":{},\"min_spp\":{},\"max_spp\":{},\"counts\":[{}],\"plot\":{},\"threads\":{threads},\"seconds\":{},\"samples\":{},\"integrands\":[{integrands}],\"curves\":[{curves}]}}\n",
+        "{{\"runs\":{},\"seed\":{},\"min_spp\":{},\"max_spp\":{},\"spp_hint\":{},\"counts\":[{}],\"plot\":{},\"threads\":{threads},\"seconds\":{},\"samples\":{},\"integrands\":[{integrands}],\"curves\":[{curves}]}}\n",
         study.runs,
         study.seed,
         args.min_spp,
         args.max_spp,
+        study
+            .spp_hint
+            .map_or_else(|| "null".to_owned(), |h| h.to_string()),
         list(study.counts.iter().map(u32::to_string).collect()),
         args.plot
             .as_ref()
@@ -415,13 +443,13 @@ pub fn json(
 /// use nyquist_lab::study::convergence::command;
 /// use nyquist_lab::study::{Study, unit_square::SquareIntegrand as Integrand};
 /// let s = Study { samplers: vec!["random".into()], integrands: vec![Integrand::Disk],
-///                 counts: vec![16, 32], runs: 8, seed: 1 };
+///                 counts: vec![16, 32], runs: 8, seed: 1, spp_hint: None };
 /// assert_eq!(command(&s), "nyquist converge --samplers random --integrands disk \
 ///     --min-spp 16 --max-spp 32 --runs 8 --seed 1");
 /// ```
 pub fn command(study: &Study<Integrand>) -> String {
     format!(
-        "nyquist converge --samplers {} --integrands {} --min-spp {} --max-spp {} --runs {} --seed {}",
+        "nyquist converge --samplers {} --integrands {} --min-spp {} --max-spp {} --runs {} --seed {}{}",
         study.samplers.join(","),
         study
             .integrands
@@ -432,7 +460,10 @@ pub fn command(study: &Study<Integrand>) -> String {
         study.counts.first().copied().unwrap_or(1),
         study.counts.last().copied().unwrap_or(1),
         study.runs,
-        study.seed
+        study.seed,
+        study
+            .spp_hint
+            .map_or_else(String::new, |h| format!(" --spp-hint {h}"))
     )
 }
 
@@ -495,18 +526,19 @@ pub fn genz_report(args: &ConvergeSpec, dims: u32, threads: usize) -> Result<Str
             args.max_spp
         );
     }
-    let samplers: Vec<String> = if args.samplers.is_empty() {
-        default_samplers()
-    } else {
-        args.samplers.iter().map(|s| s.trim().to_owned()).collect()
-    };
+    let samplers = samplers(args);
     for name in &samplers {
         let base = name.strip_suffix("-plain").unwrap_or(name);
         if let Some(max) = nyquist::sampler::spp_limit(base)
-            && args.max_spp > max
+            && args.spp_hint.unwrap_or(args.max_spp) > max
         {
             bail!(
-                "--samplers {name}: takes at most {max} samples per pixel (give --max-spp {max} or less)"
+                "--samplers {name}: takes at most {max} samples per pixel (give {} {max} or less)",
+                if args.spp_hint.is_some() {
+                    "--spp-hint"
+                } else {
+                    "--max-spp"
+                }
             );
         }
     }
@@ -517,6 +549,7 @@ pub fn genz_report(args: &ConvergeSpec, dims: u32, threads: usize) -> Result<Str
         counts,
         runs: args.runs,
         seed: args.seed,
+        spp_hint: args.spp_hint,
     };
     check_memory(&study, threads)?;
     let curves = study.run(threads).map_err(study_error)?.curves;
@@ -535,6 +568,7 @@ mod tests {
             counts: vec![16],
             runs: 2,
             seed: 0,
+            spp_hint: None,
         };
         let e = study_error(s.run(1).unwrap_err()).to_string();
         assert!(e.starts_with("--samplers nope: unknown sampler"), "{e}");

@@ -215,6 +215,7 @@ mod tests {
             counts: crate::study::powers_of_two(4, 64),
             runs: 8,
             seed: 11,
+            spp_hint: None,
         };
         let o = s.run(2).unwrap();
         let figure = Plot {

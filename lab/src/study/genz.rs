@@ -30,7 +30,7 @@
 //! ```
 //! use nyquist_lab::study::{Study, genz::Genz};
 //! let study = Study { samplers: vec!["sobol".into()], integrands: Genz::all(4),
-//!                     counts: vec![64, 256], runs: 4, seed: 1 };
+//!                     counts: vec![64, 256], runs: 4, seed: 1, spp_hint: None };
 //! assert_eq!(study.run(1).unwrap().curves.len(), 6);
 //! ```
 
@@ -347,6 +347,7 @@ mod tests {
             counts: counts.to_vec(),
             runs,
             seed,
+            spp_hint: None,
         }
     }
 

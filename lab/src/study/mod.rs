@@ -22,6 +22,7 @@
 //!     counts: vec![16, 64, 256],
 //!     runs: 16,
 //!     seed: 7,
+//!     spp_hint: None,
 //! };
 //! let curves = study.run(1).unwrap().curves;
 //! assert_eq!(curves.len(), 1);
@@ -210,8 +211,21 @@ pub struct StudyError {
     pub sampler: String,
     /// The sample count asked for.
     pub count: u32,
+    /// Why.
+    pub error: StudyFault,
+}
+
+/// Why a study could not build a sampler.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StudyFault {
     /// What [`NamedSampler::new`] answered.
-    pub error: NamedSamplerError,
+    Sampler(NamedSamplerError),
+    /// The study has an [`Study::spp_hint`] and the sampler lays out a fixed set for its spp
+    /// (it is not one of [`nyquist::sampler::CONTINUING_NAMES`]).
+    Wraps {
+        /// The hint.
+        hint: u32,
+    },
 }
 
 impl fmt::Display for StudyError {
@@ -220,13 +234,27 @@ impl fmt::Display for StudyError {
     /// ```
     /// use nyquist_lab::study::{Study, unit_square::SquareIntegrand};
     /// let s = Study { samplers: vec!["nope".into()], integrands: vec![SquareIntegrand::Disk],
-    ///                 counts: vec![16], runs: 1, seed: 0 };
+    ///                 counts: vec![16], runs: 1, seed: 0, spp_hint: None };
     /// assert!(s.check().unwrap_err().to_string().starts_with("nope: unknown sampler name"));
+    /// let s = Study { samplers: vec!["zero-two".into()], spp_hint: Some(4), ..s };
+    /// assert_eq!(s.check().unwrap_err().to_string(),
+    ///            "zero-two at 16 spp: made for 4, it wraps past its spp (the samplers that \
+    ///             continue: random, halton, sobol, owen-sobol, zsobol, pmj02)");
     /// ```
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.error {
-            NamedSamplerError::UnknownName => write!(f, "{}: {}", self.sampler, self.error),
-            e => write!(f, "{} at {} spp: {e}", self.sampler, self.count),
+            StudyFault::Sampler(NamedSamplerError::UnknownName) => {
+                write!(f, "{}: {}", self.sampler, NamedSamplerError::UnknownName)
+            }
+            StudyFault::Sampler(e) => write!(f, "{} at {} spp: {e}", self.sampler, self.count),
+            StudyFault::Wraps { hint } => write!(
+                f,
+                "{} at {} spp: made for {hint}, it wraps past its spp (the samplers that \
+                 continue: {})",
+                self.sampler,
+                self.count,
+                nyquist::sampler::CONTINUING_NAMES.join(", ")
+            ),
         }
     }
 }
@@ -247,6 +275,10 @@ pub struct Study<I> {
     pub runs: u32,
     /// Base seed; run `r` uses [`run_seed`]`(seed, r)`.
     pub seed: u64,
+    /// `Some(h)`: every sampler is made for `h` samples per pixel and draws each count past
+    /// (or short of) it, which only the samplers that continue past their spp can
+    /// ([`nyquist::sampler::continues`]); `None`: each is made for the count itself.
+    pub spp_hint: Option<u32>,
 }
 
 /// RMSE against `N` of one sampler on one integrand.
@@ -280,7 +312,7 @@ impl<I: Integrand + Clone> Study<I> {
     /// ```
     /// use nyquist_lab::study::{Study, unit_square::SquareIntegrand};
     /// let s = Study { samplers: vec!["random".into(); 2], integrands: vec![SquareIntegrand::Disk],
-    ///                 counts: vec![16, 32], runs: 10, seed: 0 };
+    ///                 counts: vec![16, 32], runs: 10, seed: 0, spp_hint: None };
     /// assert_eq!(s.work(), 2 * 10 * 48);
     /// ```
     pub fn work(&self) -> u64 {
@@ -298,7 +330,7 @@ impl<I: Integrand + Clone> Study<I> {
     /// ```
     /// use nyquist_lab::study::{Study, unit_square::SquareIntegrand};
     /// let s = Study { samplers: vec!["random".into()], integrands: vec![SquareIntegrand::Disk],
-    ///                 counts: vec![16, 32], runs: 10, seed: 0 };
+    ///                 counts: vec![16, 32], runs: 10, seed: 0, spp_hint: None };
     /// assert_eq!(s.memory(1), 20 * (8 + 8 + 24) + 32 * 64 + 2 * 8);
     /// ```
     pub fn memory(&self, threads: usize) -> u64 {
@@ -335,18 +367,30 @@ impl<I: Integrand + Clone> Study<I> {
             .map(|name| {
                 self.counts
                     .iter()
-                    .map(|&n| {
-                        NamedSampler::new(name, [1, 1], n, seed)
-                            .map(|s| s.samples_per_pixel())
-                            .map_err(|error| StudyError {
-                                sampler: name.clone(),
-                                count: n,
-                                error,
-                            })
-                    })
+                    .map(|&n| self.sampler(name, n, seed).map(|(_, drawn)| drawn))
                     .collect()
             })
             .collect()
+    }
+
+    /// Sampler `name` for count `n` under `seed`, and the samples it draws: made for `n` (its
+    /// spp where it rounds), or for [`Study::spp_hint`] drawing `n`.
+    fn sampler(&self, name: &str, n: u32, seed: u64) -> Result<(NamedSampler, u32), StudyError> {
+        let fault = |error| StudyError {
+            sampler: name.to_owned(),
+            count: n,
+            error,
+        };
+        if let Some(hint) = self.spp_hint
+            && !nyquist::sampler::continues(name)
+            && nyquist::sampler::canonical_name(name).is_some()
+        {
+            return Err(fault(StudyFault::Wraps { hint }));
+        }
+        let s = NamedSampler::new(name, [1, 1], self.spp_hint.unwrap_or(n), seed)
+            .map_err(|e| fault(StudyFault::Sampler(e)))?;
+        let drawn = self.spp_hint.map_or(s.samples_per_pixel(), |_| n);
+        Ok((s, drawn))
     }
 
     /// Runs the study on `threads` threads. The result depends on the study only, not on the
@@ -367,7 +411,7 @@ impl<I: Integrand + Clone> Study<I> {
     /// use nyquist_lab::study::{Study, unit_square::SquareIntegrand};
     /// use std::sync::atomic::{AtomicUsize, Ordering};
     /// let s = Study { samplers: vec!["random".into()], integrands: vec![SquareIntegrand::Disk],
-    ///                 counts: vec![16, 32], runs: 3, seed: 0 };
+    ///                 counts: vec![16, 32], runs: 3, seed: 0, spp_hint: None };
     /// let calls = AtomicUsize::new(0);
     /// let o = s.run_with_progress(1, &|_, total| { calls.fetch_add(1, Ordering::Relaxed); assert_eq!(total, 6); })
     ///     .unwrap();
@@ -396,15 +440,11 @@ impl<I: Integrand + Clone> Study<I> {
         let done = AtomicUsize::new(0);
         let estimates = crate::parallel::map_tasks(&order, threads, |t| {
             let (s, c, r) = (t / (nc * nr), (t / nr) % nc, t % nr);
-            let name = &self.samplers[s];
-            let mut sampler =
-                NamedSampler::new(name, [1, 1], self.counts[c], run_seed(self.seed, r as u32))
-                    .map_err(|error| StudyError {
-                        sampler: name.clone(),
-                        count: self.counts[c],
-                        error,
-                    })?;
-            let n = sampler.samples_per_pixel();
+            let (mut sampler, n) = self.sampler(
+                &self.samplers[s],
+                self.counts[c],
+                run_seed(self.seed, r as u32),
+            )?;
             let mut x = vec![0.0; dims];
             let mut sums = vec![0.0f64; self.integrands.len()];
             for i in 0..n {
@@ -506,6 +546,7 @@ mod tests {
             counts: powers_of_two(4, 64),
             runs: 8,
             seed: 11,
+            spp_hint: None,
         }
     }
 
@@ -530,6 +571,7 @@ mod tests {
             counts: vec![8, 16],
             runs: 5,
             seed: 2,
+            spp_hint: None,
         };
         let got = s.run(2).unwrap().curves[0].rmse.clone();
         for (c, &n) in s.counts.iter().enumerate() {
