@@ -680,7 +680,8 @@ enum NyqStatus nyq_inverse_radical_inverse(uint32_t dim,
 // `zero-two` and `sobol` (digit-permuted too; spp rounded up to a power of two:
 // [`nyq_sampler_samples_per_pixel`] tells); `best-candidate`; `adaptive` ((0,2) values, between
 // spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
-// (Owen-scrambled Sobol per pixel); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
+// (Owen-scrambled Sobol per pixel); `owen-sobol-bn` (the same with blue-noise error across
+// pixels, from a 128 × 128 tile); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
 // a power of two); `pmj02` (up to 65536 spp); `bluenoise-dithered` (the zero-two set of pixel
 // (0, 0) in every pixel, toroidally shifted by a built-in 64 × 64 blue-noise mask, spp rounded
 // up to a power of two); `fibonacci`, `r2` and `korobov` (the Fibonacci lattice, spp rounded up

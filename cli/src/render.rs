@@ -128,7 +128,7 @@ pub struct RenderArgs {
     /// first pass of a quarter of it (at least 16), then passes that double the samples of the
     /// pixels whose relative error, |A − B|/2 over the value (docs/film.md), is above THRESHOLD,
     /// worst first, up to 16 × --spp in a pixel. Progressive samplers only (random, halton,
-    /// sobol, zero-two, owen-sobol, zsobol, pmj02, r2).
+    /// sobol, zero-two, owen-sobol, owen-sobol-bn, zsobol, pmj02, r2).
     #[arg(long, value_name = "THRESHOLD", value_parser = nyquist_lab::flags::number(0.0, 1e6))]
     pub adaptive: Option<f64>,
     /// With --adaptive, also write where the samples went as a grey PNG: log₂ of each pixel's

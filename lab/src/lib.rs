@@ -19,6 +19,7 @@
 #![cfg_attr(target_family = "wasm", allow(dead_code))]
 
 pub mod analysis;
+pub mod blue_tile;
 pub mod clock;
 pub mod filter;
 pub mod flags;

@@ -55,6 +55,10 @@ pub enum PointSetName {
     /// --spp, one independent scramble per pixel.
     #[cfg_attr(feature = "clap", value(alias = "sobol-owen"))]
     OwenSobol,
+    /// Owen-scrambled Sobol with blue-noise error across pixels, its scrambles from an
+    /// optimised 128 × 128 tile (pixel sampler: --spp).
+    #[cfg_attr(feature = "clap", value(name = "owen-sobol-bn"))]
+    OwenSobolBn,
     /// ZSobol: Sobol along a hash-permuted Morton curve over the image (pixel sampler: --spp,
     /// --resolution).
     #[cfg_attr(feature = "clap", value(name = "zsobol"))]
@@ -88,7 +92,7 @@ pub enum PointSetName {
 
 impl PointSetName {
     /// Every name, in the order above.
-    pub const ALL: [PointSetName; 22] = [
+    pub const ALL: [PointSetName; 23] = [
         PointSetName::Random,
         PointSetName::Uniform,
         PointSetName::Stratified,
@@ -103,6 +107,7 @@ impl PointSetName {
         PointSetName::BestCandidate,
         PointSetName::Adaptive,
         PointSetName::OwenSobol,
+        PointSetName::OwenSobolBn,
         PointSetName::ZSobol,
         PointSetName::Pmj02,
         PointSetName::Fibonacci,
@@ -137,6 +142,7 @@ impl PointSetName {
             S::BestCandidate => "best-candidate",
             S::Adaptive => "adaptive",
             S::OwenSobol => "owen-sobol",
+            S::OwenSobolBn => "owen-sobol-bn",
             S::ZSobol => "zsobol",
             S::Pmj02 => "pmj02",
             S::Fibonacci => "fibonacci",
@@ -734,7 +740,7 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
             out = pts[..2 * n].iter().map(|&v| v as f32).collect();
         }
         S::Rd => fill(&named_sequence(args, count, dims, notes)?, args, &mut out)?,
-        S::BestCandidate | S::Adaptive | S::ZSobol | S::BluenoiseDithered => {
+        S::BestCandidate | S::Adaptive | S::ZSobol | S::OwenSobolBn | S::BluenoiseDithered => {
             bail!("{} is a pixel sampler: give --spp", args.sampler.name())
         }
     }

@@ -69,6 +69,10 @@ pub enum SamplerName {
     /// Owen-scrambled Sobol per pixel, hashed by pixel, frame and seed.
     #[cfg_attr(feature = "clap", value(alias = "sobol-owen"))]
     OwenSobol,
+    /// Owen-scrambled Sobol per pixel with blue-noise error across pixels: the scrambles come
+    /// from an optimised 128 × 128 tile (docs/blue-noise.md).
+    #[cfg_attr(feature = "clap", value(name = "owen-sobol-bn"))]
+    OwenSobolBn,
     /// Sobol along a hash-permuted Morton curve: blue-noise error across pixels (spp rounded
     /// up to a power of two).
     #[cfg_attr(feature = "clap", value(name = "zsobol"))]
@@ -122,6 +126,7 @@ impl SamplerName {
             S::BestCandidate => "best-candidate",
             S::Adaptive => "adaptive",
             S::OwenSobol => "owen-sobol",
+            S::OwenSobolBn => "owen-sobol-bn",
             S::ZSobol => "zsobol",
             S::Pmj02 => "pmj02",
             S::BluenoiseDithered => "bluenoise-dithered",
@@ -280,12 +285,13 @@ pub struct Rendered {
 /// The samplers whose pixels take any number of samples, each a prefix of one sequence (so
 /// adaptive sampling can add samples to a pixel): the others lay out a fixed set for their
 /// spp.
-pub const PROGRESSIVE_SAMPLERS: [SamplerName; 8] = [
+pub const PROGRESSIVE_SAMPLERS: [SamplerName; 9] = [
     SamplerName::Random,
     SamplerName::Halton,
     SamplerName::Sobol,
     SamplerName::ZeroTwo,
     SamplerName::OwenSobol,
+    SamplerName::OwenSobolBn,
     SamplerName::ZSobol,
     SamplerName::Pmj02,
     SamplerName::R2,

@@ -2,6 +2,7 @@
 // lookup functions (include/oqmc, header-only). Every loop writes its values to a caller buffer
 // so that the Rust side can check them and nothing is optimised away.
 #include <oqmc/float.h>
+#include <oqmc/oqmc.h>
 #include <oqmc/lookup.h>
 #include <oqmc/owen.h>
 #include <oqmc/pmj.h>
@@ -83,3 +84,39 @@ void peer_oqmc_sobol_4d(uint32_t n_points, const uint32_t *seeds, uint32_t n_see
 }
 
 } // extern "C"
+
+// Screen-space blue noise: the four values of one domain's `drawSample<4>` for `spp` samples
+// of each of `nx` x `ny` pixels from (0, 0) in frame `frame`, for OpenQMC's samplers by kind
+// (0 SobolBn, 1 PmjBn, 2 LatticeBn, 3 Sobol, 4 Pmj, 5 Lattice). Domain 0 is the pixel's own
+// domain; domain `d > 0` is `newDomain(d)`. Writes 4 floats per sample, pixel-major.
+template <typename Sampler>
+static void bn_draw(int nx, int ny, int frame, int spp, int domain, float *out) {
+    char *cache = new char[Sampler::cacheSize];
+    Sampler::initialiseCache(cache);
+    for (int y = 0; y < ny; ++y) {
+        for (int x = 0; x < nx; ++x) {
+            for (int i = 0; i < spp; ++i) {
+                auto s = Sampler(x, y, frame, i, cache);
+                if (domain > 0) {
+                    s = s.newDomain(domain);
+                }
+                s.template drawSample<4>(out);
+                out += 4;
+            }
+        }
+    }
+    delete[] cache;
+}
+
+extern "C" int peer_oqmc_bn_draw(int kind, int nx, int ny, int frame, int spp, int domain,
+                                 float *out) {
+    switch (kind) {
+    case 0: bn_draw<oqmc::SobolBnSampler>(nx, ny, frame, spp, domain, out); return 0;
+    case 1: bn_draw<oqmc::PmjBnSampler>(nx, ny, frame, spp, domain, out); return 0;
+    case 2: bn_draw<oqmc::LatticeBnSampler>(nx, ny, frame, spp, domain, out); return 0;
+    case 3: bn_draw<oqmc::SobolSampler>(nx, ny, frame, spp, domain, out); return 0;
+    case 4: bn_draw<oqmc::PmjSampler>(nx, ny, frame, spp, domain, out); return 0;
+    case 5: bn_draw<oqmc::LatticeSampler>(nx, ny, frame, spp, domain, out); return 0;
+    default: return 1;
+    }
+}

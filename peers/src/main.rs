@@ -5,6 +5,7 @@
 //! `cargo run --release --manifest-path peers/Cargo.toml -- [--samples N] [--runs N]
 //! [--sample-ms MS] [--only TEXT]`
 
+mod blue_noise;
 mod check;
 mod harness;
 #[cfg(peer_openqmc)]
@@ -24,6 +25,7 @@ fn main() {
         sample_ns: 2_000_000,
     };
     let mut only: Vec<String> = Vec::new();
+    let (mut blue, mut size, mut frame, mut images) = (false, 256u32, 0u32, None);
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         let mut value = || {
@@ -38,9 +40,17 @@ fn main() {
                 settings.sample_ns = (ms * 1e6).max(1e3) as u64;
             }
             "--only" => only.push(value()),
+            "--blue-noise" => blue = true,
+            "--size" => size = number(&value()) as u32,
+            "--frame" => frame = number(&value()) as u32,
+            "--images" => images = Some(std::path::PathBuf::from(value())),
             "-h" | "--help" => usage(""),
             _ => usage(&format!("unknown argument {a}")),
         }
+    }
+    if blue {
+        blue_noise::run(size, frame, images.as_deref());
+        return;
     }
     println!(
         "nyquist peer benchmark: {} runs × {} rotated samples of ≈ {:.1} ms CPU time per \
@@ -77,7 +87,8 @@ fn usage(err: &str) -> ! {
     }
     eprintln!(
         "usage: nyquist-peers [--samples N (61)] [--runs N (3)] [--sample-ms MS (2)] \
-         [--only TEXT]…"
+         [--only TEXT]…\n       nyquist-peers --blue-noise [--size N (256)] [--frame F (0)] \
+         [--images DIR]"
     );
     std::process::exit(if err.is_empty() { 0 } else { 2 })
 }

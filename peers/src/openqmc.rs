@@ -24,6 +24,15 @@ unsafe extern "C" {
         out: *mut f32,
     );
     fn peer_oqmc_sobol_4d(n_points: u32, seeds: *const u32, n_seeds: u32, out: *mut f32);
+    fn peer_oqmc_bn_draw(
+        kind: i32,
+        nx: i32,
+        ny: i32,
+        frame: i32,
+        spp: i32,
+        domain: i32,
+        out: *mut f32,
+    ) -> i32;
 }
 
 /// `PmjSampler`'s cache, initialised by OpenQMC.
@@ -91,4 +100,25 @@ pub fn sobol_4d(points: u32, seeds: &[u32], out: &mut [f32]) {
     assert_eq!(out.len(), 4 * points as usize * seeds.len());
     // SAFETY: `out` holds 4 floats per (index, seed).
     unsafe { peer_oqmc_sobol_4d(points, seeds.as_ptr(), seeds.len() as u32, out.as_mut_ptr()) }
+}
+
+/// `drawSample<4>` of domain `domain` (0: the pixel's; `d`: `newDomain(d)`) for `spp` samples
+/// of every pixel of a `size × size` image in `frame`, by sampler kind (0 SobolBn, 1 PmjBn,
+/// 2 LatticeBn, 3 Sobol, 4 Pmj, 5 Lattice): 4 floats per sample, pixel-major.
+pub fn bn_draw(kind: i32, size: u32, frame: u32, spp: u32, domain: u32) -> Vec<f32> {
+    let mut out = vec![0f32; 4 * (size * size * spp) as usize];
+    // SAFETY: `out` holds the 4 floats per (pixel, sample) the shim writes.
+    let status = unsafe {
+        peer_oqmc_bn_draw(
+            kind,
+            size as i32,
+            size as i32,
+            frame as i32,
+            spp as i32,
+            domain as i32,
+            out.as_mut_ptr(),
+        )
+    };
+    assert_eq!(status, 0, "unknown OpenQMC sampler kind {kind}");
+    out
 }

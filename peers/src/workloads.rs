@@ -10,7 +10,7 @@ use crate::harness::{Entry, Job, Workload};
 use nyquist::filter::{Boxcar, Filter, FilterTable, Interpolation, Lanczos, Mitchell};
 use nyquist::hash::mix32;
 use nyquist::radical::radical_inverse;
-use nyquist::sampler::{HaltonSampler, HaltonScramble, Pmj02Sampler, ZSobolSampler, camera_sample};
+use nyquist::sampler::{HaltonSampler, Pmj02Sampler, ZSobolSampler, camera_sample};
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Pmj02, Sequence, Sobol};
 use nyquist::stratify::shuffle;
@@ -266,7 +266,7 @@ fn owen_sobol_4d() -> Workload<'static> {
         let mut chunks = out.chunks_exact_mut(4);
         for i in 0..POINTS {
             for set in 0..DIMS / 4 {
-                let v = ours.sample_4d(black_box(i), set * 4);
+                let v = ours.sample_4d(u64::from(black_box(i)), set * 4);
                 chunks.next().unwrap().copy_from_slice(&v);
             }
         }
@@ -398,7 +398,7 @@ fn halton_camera() -> Workload<'static> {
     });
     #[cfg(not(peer_pbrt_v4))]
     let peer = unbuilt(PEER, "NYQUIST_PBRT_V4");
-    let ours = HaltonSampler::new([RESOLUTION; 2], SPP, HaltonScramble::PermuteDigits, 1);
+    let ours = HaltonSampler::new([RESOLUTION; 2], SPP, Scramble::PermuteDigits, 1);
     camera_workload(
         "`HaltonSampler` (`PermuteDigits`) camera sample, 8 × 8 px × 16 spp, 1024² image",
         1,

@@ -31,7 +31,8 @@ __all__ = ["samples", "Filter", "SAMPLERS", "FILTERS", "SCRAMBLES"]
 
 SAMPLERS = (
     "random", "uniform", "stratified", "halton", "hammersley", "zero-two", "sobol",
-    "best-candidate", "adaptive", "owen-sobol", "zsobol", "pmj02", "bluenoise-dithered",
+    "best-candidate", "adaptive", "owen-sobol", "owen-sobol-bn", "zsobol", "pmj02",
+    "bluenoise-dithered",
     "fibonacci", "r2", "korobov",
 )
 """The pixel samplers' names (the CLI's ``--sampler`` list)."""

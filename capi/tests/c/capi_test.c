@@ -198,7 +198,7 @@ static void samplers(void) {
     static const char *names[] = {"random",     "uniform",  "stratified",
                                   "halton",     "hammersley", "zero-two",
                                   "sobol",      "best-candidate", "adaptive",
-                                  "owen-sobol", "zsobol",   "pmj02",
+                                  "owen-sobol", "owen-sobol-bn", "zsobol", "pmj02",
                                   "bluenoise-dithered", "fibonacci", "r2",
                                   "korobov"};
     static const uint64_t seeds[] = {0, 7};

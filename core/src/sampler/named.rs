@@ -5,8 +5,8 @@ use core::fmt;
 
 use super::{
     AdaptiveSampler, BestCandidateSampler, DitheredSampler, HaltonSampler, HammersleySampler,
-    Jitter, LatticeSampler, MaskView, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
-    SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
+    Jitter, LatticeSampler, MaskView, OwenSobolBlueSampler, OwenSobolSampler, Pmj02Sampler,
+    RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
 };
 use crate::scramble::Scramble;
 
@@ -20,7 +20,7 @@ use crate::scramble::Scramble;
 ///     assert_eq!(s.name(), name);
 /// }
 /// ```
-pub const NAMES: [&str; 16] = [
+pub const NAMES: [&str; 17] = [
     "random",
     "uniform",
     "stratified",
@@ -31,6 +31,7 @@ pub const NAMES: [&str; 16] = [
     "best-candidate",
     "adaptive",
     "owen-sobol",
+    "owen-sobol-bn",
     "zsobol",
     "pmj02",
     "bluenoise-dithered",
@@ -96,8 +97,15 @@ pub fn canonical_name(name: &str) -> Option<&'static str> {
 /// assert!(CONTINUING_NAMES.iter().all(|n| NAMES.contains(n)));
 /// assert!(continues("ZSobol") && continues("sobol-plain") && !continues("zero-two"));
 /// ```
-pub const CONTINUING_NAMES: [&str; 6] =
-    ["random", "halton", "sobol", "owen-sobol", "zsobol", "pmj02"];
+pub const CONTINUING_NAMES: [&str; 7] = [
+    "random",
+    "halton",
+    "sobol",
+    "owen-sobol",
+    "owen-sobol-bn",
+    "zsobol",
+    "pmj02",
+];
 
 /// Whether sampler `name` (as [`canonical_name`] takes it) is one of [`CONTINUING_NAMES`],
 /// or an [`OTHER_NAMES`] spelling of one (`halton-plain`, `sobol-plain`, `sobol-owen`).
@@ -269,6 +277,8 @@ pub enum NamedSampler {
     Adaptive(AdaptiveSampler<ZeroTwoSampler>),
     /// `owen-sobol`.
     OwenSobol(OwenSobolSampler),
+    /// `owen-sobol-bn`.
+    OwenSobolBlue(OwenSobolBlueSampler),
     /// `zsobol`.
     ZSobol(ZSobolSampler),
     /// `pmj02`.
@@ -292,6 +302,7 @@ macro_rules! delegate {
             NamedSampler::BestCandidate($s) => $body,
             NamedSampler::Adaptive($s) => $body,
             NamedSampler::OwenSobol($s) => $body,
+            NamedSampler::OwenSobolBlue($s) => $body,
             NamedSampler::ZSobol($s) => $body,
             NamedSampler::Pmj02($s) => $body,
             NamedSampler::Dithered($s) => $body,
@@ -317,6 +328,8 @@ impl NamedSampler {
     /// - `adaptive`: an [`AdaptiveSampler`] over a `zero-two` sampler, between a quarter of its
     ///   spp (at least 1) and all of it, threshold 0.1;
     /// - `owen-sobol`: [`OwenSobolSampler`] (frame 0);
+    /// - `owen-sobol-bn`: [`OwenSobolBlueSampler`] (frame 0): Owen-Sobol with blue-noise error
+    ///   across pixels;
     /// - `zsobol`: [`ZSobolSampler`] over the image, fast-Owen scrambled (spp rounded up to a
     ///   power of two);
     /// - `pmj02`: [`Pmj02Sampler`] (spp up to 65536);
@@ -396,6 +409,7 @@ impl NamedSampler {
             "owen-sobol" | "sobol-owen" => {
                 NamedSampler::OwenSobol(OwenSobolSampler::new(spp, seed)?)
             }
+            "owen-sobol-bn" => NamedSampler::OwenSobolBlue(OwenSobolBlueSampler::new(spp, seed)?),
             "zsobol" => {
                 NamedSampler::ZSobol(ZSobolSampler::new(size, spp, Scramble::FastOwen, seed)?)
             }
@@ -481,6 +495,7 @@ impl NamedSampler {
             NamedSampler::BestCandidate(_) => "best-candidate",
             NamedSampler::Adaptive(_) => "adaptive",
             NamedSampler::OwenSobol(_) => "owen-sobol",
+            NamedSampler::OwenSobolBlue(_) => "owen-sobol-bn",
             NamedSampler::ZSobol(_) => "zsobol",
             NamedSampler::Pmj02(_) => "pmj02",
             NamedSampler::Dithered(_) => "bluenoise-dithered",
@@ -579,7 +594,7 @@ mod tests {
     fn names_build_the_samplers_they_name() {
         let size = [16, 16];
         for seed in [0u64, 7] {
-            let direct: [(&str, std::boxed::Box<dyn Sampler>); 16] = [
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 17] = [
                 (
                     "random",
                     std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
@@ -632,6 +647,10 @@ mod tests {
                 (
                     "owen-sobol",
                     std::boxed::Box::new(OwenSobolSampler::new(16, seed).unwrap()),
+                ),
+                (
+                    "owen-sobol-bn",
+                    std::boxed::Box::new(OwenSobolBlueSampler::new(16, seed).unwrap()),
                 ),
                 (
                     "zsobol",

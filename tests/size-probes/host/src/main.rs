@@ -107,6 +107,12 @@ fn main() -> ExitCode {
             let mut s = RandomSampler::new(16, 7).unwrap();
             indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
+        "owen_sobol_bn_sampler" => {
+            let mut s = nyquist::sampler::OwenSobolBlueSampler::new(16, 7)
+                .unwrap()
+                .with_frame(2);
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
         "mitchell" => {
             let t = SeparableTable::<16>::new(&Mitchell::default(), Interpolation::Linear).unwrap();
             for i in indices {

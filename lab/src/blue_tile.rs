@@ -1,0 +1,648 @@
+//! The optimiser of the screen-space blue-noise tile ([`nyquist::sampler::screen_blue`]).
+//!
+//! Every slot of a `size × size` torus starts with the key [`initial_key`]`(slot)`. A key's
+//! *error vector* holds, for each power-of-two spp `1 … 2^levels` and each test integrand, the
+//! error of the estimate from that many samples of a pixel with that key
+//! ([`owen_sobol_blue_values`]), each component centred and scaled to unit variance over the
+//! keys. The test integrands are oriented Heavisides and Gaussians over dimensions (0, 1) and
+//! over (2, 3), and a Heaviside and a Gaussian over all four, with parameters drawn from the
+//! seed.
+//!
+//! The energy is the Gaussian-weighted correlation of neighbouring pixels' errors,
+//! `E = Σ_p Σ_{q ≠ p, |q − p|∞ ≤ 6} exp(−|q − p|²/σ²) e_p · e_q` with `σ = 2.1` (Georgiev and
+//! Fajardo's σ), which is the error image's power seen through a low-pass filter: lowering it
+//! moves the error's power to high frequencies. Swapping two pixels' keys swaps their error
+//! vectors, so the optimiser searches permutations; it keeps `S_p = Σ_q w(q − p) e_q`, so a
+//! proposed swap of `p` and `q` costs one dot product,
+//! `ΔE = 2 (e_q − e_p)·(S_p − S_q) − 2 w(p − q) |e_q − e_p|²`, and it takes every swap that
+//! lowers `E`, and under simulated annealing some that raise it early on, half of them between random pixels and half between pixels at
+//! most 8 apart. All levels and integrands are optimised together, with one key per pixel, as
+//! Belcour and Heitz (2021) do.
+
+use nyquist::rng::{default_rng, uniform_below, uniform_f64};
+use nyquist::sampler::owen_sobol_blue_values;
+use nyquist::sampler::screen_blue::initial_entry;
+
+/// Radius of the energy's window, in pixels (a 13 × 13 window).
+const RADIUS: i32 = 6;
+/// The energy kernel's σ, in pixels.
+const SIGMA: f64 = 2.1;
+/// Oriented Heavisides over the first pair of dimensions (the image sample's, in the first
+/// block): most of the energy, as the first pair is what a renderer's error shows most.
+const FIRST_PAIR_HEAVISIDES: usize = 256;
+/// Oriented Heavisides over the second pair.
+const SECOND_PAIR_HEAVISIDES: usize = 32;
+/// Oriented Heavisides over the whole 4-D block.
+const BLOCK_HEAVISIDES: usize = 8;
+
+/// What the optimiser builds.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TileSpec {
+    /// Side of the torus (a power of two, at least 16).
+    pub size: u32,
+    /// The largest spp is `2^levels`.
+    pub levels: u32,
+    /// Proposed swaps, in multiples of the pixel count.
+    pub sweeps: u32,
+    /// Seed of the integrands and of the proposals.
+    pub seed: u64,
+}
+
+impl TileSpec {
+    /// The shipped tile's spec: 128², spp 1 … 256, 256 sweeps, seed 1.
+    pub const SHIPPED: TileSpec = TileSpec {
+        size: 128,
+        levels: 8,
+        sweeps: 256,
+        seed: 1,
+    };
+}
+
+/// The optimiser's result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tile {
+    /// The keys, row-major.
+    pub keys: Vec<u32>,
+    /// The energy of the starting layout (slot order) and of the key stage's permutation.
+    pub energy: [f64; 2],
+    /// Swaps taken.
+    pub swaps: u64,
+}
+
+/// One test integrand over the first `k` of the dimensions `dims` of a 4-D block.
+#[derive(Clone, Copy, Debug)]
+struct Test {
+    dims: [usize; 4],
+    k: usize,
+    shape: Shape,
+}
+
+#[derive(Clone, Copy, Debug)]
+enum Shape {
+    /// `1` where `(x − c)·n < 0`.
+    Heaviside { n: [f64; 4], c: [f64; 4] },
+    /// `exp(−|x − c|² / (2 s²))`.
+    Gaussian { c: [f64; 4], s: f64 },
+}
+
+impl Test {
+    fn eval(&self, x: &[f32; 4]) -> f64 {
+        let t = |j: usize, c: &[f64; 4]| f64::from(x[self.dims[j]]) - c[j];
+        match self.shape {
+            Shape::Heaviside { n, c } => {
+                let dot: f64 = (0..self.k).map(|j| t(j, &c) * n[j]).sum();
+                f64::from(u8::from(dot < 0.0))
+            }
+            Shape::Gaussian { c, s } => {
+                let r2: f64 = (0..self.k).map(|j| t(j, &c).powi(2)).sum();
+                (-r2 / (2.0 * s * s)).exp()
+            }
+        }
+    }
+}
+
+/// The test integrands of `seed`: over dimensions (0, 1) [`FIRST_PAIR_HEAVISIDES`] and over
+/// (2, 3) [`SECOND_PAIR_HEAVISIDES`] oriented Heavisides through a point of `[0, 1)²`, and two
+/// Gaussians each (centre in `[0.2, 0.8)²`, σ in `[0.1, 0.3)`); over all four dimensions
+/// [`BLOCK_HEAVISIDES`] Heavisides and one Gaussian.
+fn tests(seed: u64) -> Vec<Test> {
+    let mut rng = default_rng(seed);
+    let mut u = move || uniform_f64(&mut rng);
+    let mut out = Vec::new();
+    for (dims, k, heavisides) in [
+        ([0, 1, 0, 0], 2, FIRST_PAIR_HEAVISIDES),
+        ([2, 3, 0, 0], 2, SECOND_PAIR_HEAVISIDES),
+        ([0, 1, 2, 3], 4, BLOCK_HEAVISIDES),
+    ] {
+        for _ in 0..heavisides {
+            let g: [f64; 4] = std::array::from_fn(|j| if j < k { u() - 0.5 } else { 0.0 });
+            let len = g.iter().map(|v| v * v).sum::<f64>().sqrt().max(1e-9);
+            let c: [f64; 4] = std::array::from_fn(|_| u());
+            let shape = Shape::Heaviside {
+                n: g.map(|v| v / len),
+                c,
+            };
+            out.push(Test { dims, k, shape });
+        }
+        for _ in 0..(if k == 2 { 2 } else { 1 }) {
+            let c: [f64; 4] = std::array::from_fn(|_| 0.2 + 0.6 * u());
+            let shape = Shape::Gaussian {
+                c,
+                s: 0.1 + 0.2 * u(),
+            };
+            out.push(Test { dims, k, shape });
+        }
+    }
+    out
+}
+
+/// The error vectors of the `count` keys `keys(0..count)`: `components()` values per key,
+/// level-major, each component centred and scaled to unit variance over the keys.
+pub fn error_vectors(spec: &TileSpec, keys: &[u32]) -> (Vec<f32>, usize) {
+    let tests = tests(spec.seed);
+    let levels = spec.levels as usize + 1;
+    let c = levels * tests.len();
+    let mut e = vec![0f32; keys.len() * c];
+    let rows = per_key(keys, |key| {
+        let mut out = vec![0f32; c];
+        let mut sums = vec![0f64; tests.len()];
+        for i in 0..1u32 << spec.levels {
+            let x = owen_sobol_blue_values(key, i);
+            for (s, t) in sums.iter_mut().zip(&tests) {
+                *s += t.eval(&x);
+            }
+            let n = i + 1;
+            if n.is_power_of_two() {
+                let l = n.trailing_zeros() as usize;
+                for (j, s) in sums.iter().enumerate() {
+                    out[l * tests.len() + j] = (s / f64::from(n)) as f32;
+                }
+            }
+        }
+        out
+    });
+    for (k, row) in rows.into_iter().enumerate() {
+        e[k * c..(k + 1) * c].copy_from_slice(&row);
+    }
+    // Centre and scale each component over the keys (a constant shift of every pixel's error
+    // does not change which permutation is best: the window's weights sum alike everywhere).
+    for j in 0..c {
+        let n = keys.len() as f64;
+        let mean = (0..keys.len())
+            .map(|k| f64::from(e[k * c + j]))
+            .sum::<f64>()
+            / n;
+        let var = (0..keys.len())
+            .map(|k| (f64::from(e[k * c + j]) - mean).powi(2))
+            .sum::<f64>()
+            / n;
+        let scale = if var > 0.0 { 1.0 / var.sqrt() } else { 0.0 };
+        for k in 0..keys.len() {
+            e[k * c + j] = ((f64::from(e[k * c + j]) - mean) * scale) as f32;
+        }
+    }
+    (e, c)
+}
+
+/// `f` of every key, in order, on as many threads as the machine has (contiguous chunks, so
+/// the result does not depend on the thread count).
+fn per_key<T: Send>(keys: &[u32], f: impl Fn(u32) -> T + Sync) -> Vec<T> {
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    let chunk = keys.len().div_ceil(threads).max(1);
+    std::thread::scope(|scope| {
+        let handles: Vec<_> = keys
+            .chunks(chunk)
+            .map(|part| scope.spawn(|| part.iter().map(|&k| f(k)).collect::<Vec<T>>()))
+            .collect();
+        handles
+            .into_iter()
+            .flat_map(|h| h.join().expect("a tile worker panicked"))
+            .collect()
+    })
+}
+
+/// The window's offsets and weights (the centre left out).
+fn window() -> Vec<(i32, i32, f64)> {
+    let mut w = Vec::new();
+    for dy in -RADIUS..=RADIUS {
+        for dx in -RADIUS..=RADIUS {
+            if (dx, dy) != (0, 0) {
+                w.push((
+                    dx,
+                    dy,
+                    (-f64::from(dx * dx + dy * dy) / (SIGMA * SIGMA)).exp(),
+                ));
+            }
+        }
+    }
+    w
+}
+
+/// The energy of error vectors `e` (`c` per pixel) laid out on a `size`² torus.
+pub fn energy(e: &[f32], c: usize, size: u32) -> f64 {
+    let s = blurred(e, c, size);
+    (0..e.len()).map(|i| f64::from(e[i]) * s[i]).sum()
+}
+
+/// `S_p = Σ_q w(q − p) e_q` for every pixel.
+fn blurred(e: &[f32], c: usize, size: u32) -> Vec<f64> {
+    let n = size as i32;
+    let mut s = vec![0f64; e.len()];
+    for y in 0..n {
+        for x in 0..n {
+            let p = (y * n + x) as usize;
+            for &(dx, dy, w) in &window() {
+                let q = (((y + dy) & (n - 1)) * n + ((x + dx) & (n - 1))) as usize;
+                for j in 0..c {
+                    s[p * c + j] += w * f64::from(e[q * c + j]);
+                }
+            }
+        }
+    }
+    s
+}
+
+/// Optimises a tile (module docs): the keys' permutation, then the ranks. `progress(done,
+/// total)` is called once per sweep of the permutation.
+pub fn optimise(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
+    let mut tile = permute_keys(spec, progress);
+    choose_ranks(spec, &mut tile.keys);
+    tile
+}
+
+/// The means of the test integrands over samples `0..2^level` of a pixel with `entry`.
+fn level_means(tests: &[Test], entry: u32, level: u32) -> Vec<f64> {
+    let mut sums = vec![0f64; tests.len()];
+    let n = 1u32 << level;
+    for i in 0..n {
+        let x = owen_sobol_blue_values(entry, i);
+        for (s, t) in sums.iter_mut().zip(tests) {
+            *s += t.eval(&x);
+        }
+    }
+    sums.iter().map(|s| s / f64::from(n)).collect()
+}
+
+/// The rank stage: for `n = 2^(levels − 1)` down to 1, each pixel chooses rank bit `log₂ n`
+/// (which of two aligned blocks of `n` points its first `n` samples are, given the bits
+/// above) to lower the energy of the level-`n` errors, by coordinate descent over the pixels
+/// (eight sweeps in a random order). Here the energy keeps each pixel's own term,
+/// `Σ_p |e_p|²` (the kernel's weight at distance 0 is 1): the key stage permutes the error
+/// vectors, which leaves that sum alone, but a rank chooses between two, and without the term
+/// the larger error of opposite sign to its neighbours would win.
+fn choose_ranks(spec: &TileSpec, entries: &mut [u32]) {
+    let tests = tests(spec.seed);
+    let t = tests.len();
+    let size = spec.size;
+    let n = entries.len();
+    let win = window();
+    let mut rng = default_rng(spec.seed ^ 0x5241_4e4b); // "RANK"
+    for level in (0..spec.levels).rev() {
+        let bit = 1u32 << level;
+        let mut e0 = vec![0f32; n * t];
+        let mut e1 = vec![0f32; n * t];
+        let rows = per_key(entries, |entry| {
+            (
+                level_means(&tests, entry, level),
+                level_means(&tests, entry | bit, level),
+            )
+        });
+        for (p, (a, b)) in rows.into_iter().enumerate() {
+            for j in 0..t {
+                e0[p * t + j] = a[j] as f32;
+                e1[p * t + j] = b[j] as f32;
+            }
+        }
+        // One centring and scale per integrand, from both choices.
+        for j in 0..t {
+            let all = || (0..n).flat_map(|p| [e0[p * t + j], e1[p * t + j]]);
+            let mean = all().map(f64::from).sum::<f64>() / (2 * n) as f64;
+            let var = all().map(|v| (f64::from(v) - mean).powi(2)).sum::<f64>() / (2 * n) as f64;
+            let scale = if var > 0.0 { 1.0 / var.sqrt() } else { 0.0 };
+            for p in 0..n {
+                for e in [&mut e0, &mut e1] {
+                    e[p * t + j] = ((f64::from(e[p * t + j]) - mean) * scale) as f32;
+                }
+            }
+        }
+        let mut chosen = vec![false; n];
+        let mut s = blurred(&e0, t, size);
+        for _ in 0..8 {
+            for _ in 0..n {
+                let p = uniform_below(&mut rng, n as u32) as usize;
+                let (from, to) = if chosen[p] { (&e1, &e0) } else { (&e0, &e1) };
+                let d: Vec<f64> = (0..t)
+                    .map(|j| f64::from(to[p * t + j]) - f64::from(from[p * t + j]))
+                    .collect();
+                // The change of the filtered power with the pixel's own term (kernel weight 1
+                // at distance 0): without it a choice could lower the neighbours' correlation
+                // by raising its own error, and the per-pixel RMSE would grow.
+                let own: f64 = (0..t)
+                    .map(|j| f64::from(to[p * t + j]).powi(2) - f64::from(from[p * t + j]).powi(2))
+                    .sum();
+                let delta: f64 = 2.0 * (0..t).map(|j| d[j] * s[p * t + j]).sum::<f64>() + own;
+                if delta >= 0.0 {
+                    continue;
+                }
+                chosen[p] = !chosen[p];
+                let m = size as i32;
+                let (cx, cy) = ((p as i32) % m, (p as i32) / m);
+                for &(dx, dy, w) in &win {
+                    let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
+                    for j in 0..t {
+                        s[r * t + j] += w * d[j];
+                    }
+                }
+            }
+        }
+        for (e, c) in entries.iter_mut().zip(chosen) {
+            if c {
+                *e |= bit;
+            }
+        }
+    }
+}
+
+/// The key stage: the permutation of the initial entries (module docs).
+fn permute_keys(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
+    let size = spec.size;
+    let n = (size * size) as usize;
+    let mut keys: Vec<u32> = (0..size * size).map(initial_entry).collect();
+    let (mut e, c) = error_vectors(spec, &keys);
+    let mut s = blurred(&e, c, size);
+    let before: f64 = (0..e.len()).map(|i| f64::from(e[i]) * s[i]).sum();
+    let win = window();
+    let weight = |p: usize, q: usize| -> f64 {
+        let m = size as i32;
+        let (px, py) = ((p as i32) % m, (p as i32) / m);
+        let (qx, qy) = ((q as i32) % m, (q as i32) / m);
+        let wrap = |d: i32| {
+            let d = d.rem_euclid(m);
+            if d > m / 2 { d - m } else { d }
+        };
+        let (dx, dy) = (wrap(qx - px), wrap(qy - py));
+        if dx.abs() > RADIUS || dy.abs() > RADIUS || (dx, dy) == (0, 0) {
+            0.0
+        } else {
+            (-f64::from(dx * dx + dy * dy) / (SIGMA * SIGMA)).exp()
+        }
+    };
+    let mut rng = default_rng(spec.seed ^ 0x5357_4150); // "SWAP"
+    let mut swaps = 0u64;
+    let mut d = vec![0f64; c];
+    // The mean |ΔE| of the first proposals: the annealing's temperature scale.
+    let mut scale = 0.0;
+    for sweep in 0..spec.sweeps {
+        for t in 0..n {
+            let p = uniform_below(&mut rng, n as u32) as usize;
+            let q = if t % 2 == 0 {
+                uniform_below(&mut rng, n as u32) as usize
+            } else {
+                let m = size as i32;
+                let dx = uniform_below(&mut rng, 17) as i32 - 8;
+                let dy = uniform_below(&mut rng, 17) as i32 - 8;
+                let (px, py) = ((p as i32) % m, (p as i32) / m);
+                (((py + dy) & (m - 1)) * m + ((px + dx) & (m - 1))) as usize
+            };
+            if p == q {
+                continue;
+            }
+            let (mut dot, mut norm) = (0.0, 0.0);
+            for j in 0..c {
+                let dj = f64::from(e[q * c + j]) - f64::from(e[p * c + j]);
+                d[j] = dj;
+                dot += dj * (s[p * c + j] - s[q * c + j]);
+                norm += dj * dj;
+            }
+            let delta = 2.0 * dot - 2.0 * weight(p, q) * norm;
+            if sweep == 0 && t < 4096 {
+                scale += delta.abs() / 4096.0;
+            }
+            // Annealing: a swap that raises the energy is taken with probability
+            // exp(−ΔE / T), T falling quadratically to 0 over the sweeps.
+            let temperature =
+                0.05 * scale * (1.0 - f64::from(sweep) / f64::from(spec.sweeps)).powi(2);
+            if delta >= 0.0
+                && (temperature == 0.0 || uniform_f64(&mut rng) >= (-delta / temperature).exp())
+            {
+                continue;
+            }
+            swaps += 1;
+            keys.swap(p, q);
+            for j in 0..c {
+                e.swap(p * c + j, q * c + j);
+            }
+            // S moves by +w·d around p and −w·d around q.
+            let m = size as i32;
+            for (centre, sign) in [(p, 1.0), (q, -1.0)] {
+                let (cx, cy) = ((centre as i32) % m, (centre as i32) / m);
+                for &(dx, dy, w) in &win {
+                    let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
+                    for j in 0..c {
+                        s[r * c + j] += sign * w * d[j];
+                    }
+                }
+            }
+        }
+        progress(sweep + 1, spec.sweeps);
+    }
+    let after = energy(&e, c, size);
+    Tile {
+        keys,
+        energy: [before, after],
+        swaps,
+    }
+}
+
+/// The low-frequency ratio of a `size`² image: the mean periodogram power at the frequencies
+/// `0 < |f| < size/8` (below a quarter of the Nyquist radius), divided by the mean over every
+/// frequency but 0, which is what white noise of the same variance has at every frequency. Blue
+/// error is well below 1; white error near 1.
+pub fn low_frequency_ratio(image: &[f64], size: usize) -> f64 {
+    let mean = image.iter().sum::<f64>() / image.len() as f64;
+    let centred: Vec<f64> = image.iter().map(|v| v - mean).collect();
+    // Separable DFT: rows, then columns.
+    let tw: Vec<(f64, f64)> = (0..size)
+        .map(|k| {
+            let a = -std::f64::consts::TAU * k as f64 / size as f64;
+            (a.cos(), a.sin())
+        })
+        .collect();
+    let mut rows = vec![(0.0, 0.0); size * size];
+    for y in 0..size {
+        for u in 0..size {
+            let (mut re, mut im) = (0.0, 0.0);
+            for x in 0..size {
+                let (c, s) = tw[(u * x) % size];
+                re += centred[y * size + x] * c;
+                im += centred[y * size + x] * s;
+            }
+            rows[y * size + u] = (re, im);
+        }
+    }
+    let (mut low, mut nlow, mut all) = (0.0, 0usize, 0.0);
+    for v in 0..size {
+        for u in 0..size {
+            let (mut re, mut im) = (0.0, 0.0);
+            for y in 0..size {
+                let (c, s) = tw[(v * y) % size];
+                let (a, b) = rows[y * size + u];
+                re += a * c - b * s;
+                im += a * s + b * c;
+            }
+            if (u, v) == (0, 0) {
+                continue;
+            }
+            let p = re * re + im * im;
+            all += p;
+            let fu = if u > size / 2 { size - u } else { u } as f64;
+            let fv = if v > size / 2 { size - v } else { v } as f64;
+            if (fu * fu + fv * fv).sqrt() < size as f64 / 8.0 {
+                low += p;
+                nlow += 1;
+            }
+        }
+    }
+    (low / nlow.max(1) as f64) / (all / (size * size - 1) as f64)
+}
+
+/// The mean [`low_frequency_ratio`] over the test integrands of the error images of `keys`
+/// laid out on the spec's torus, at each spp `2^level`, `level = 0 ..= spec.levels`.
+pub fn level_ratios(spec: &TileSpec, keys: &[u32]) -> Vec<f64> {
+    let (e, c) = error_vectors(spec, keys);
+    let levels = spec.levels as usize + 1;
+    let per_level = c / levels;
+    let size = spec.size as usize;
+    (0..levels)
+        .map(|level| {
+            // A component with no error at this spp (a Heaviside no first sample crosses) has
+            // no spectrum; it is left out.
+            let ratios: Vec<f64> = (0..per_level)
+                .map(|j| {
+                    let comp = level * per_level + j;
+                    let img: Vec<f64> = (0..keys.len())
+                        .map(|k| f64::from(e[k * c + comp]))
+                        .collect();
+                    low_frequency_ratio(&img, size)
+                })
+                .filter(|r| r.is_finite())
+                .collect();
+            ratios.iter().sum::<f64>() / ratios.len().max(1) as f64
+        })
+        .collect()
+}
+
+/// A function of the four values of a 4-D block of dimensions.
+pub type BlockIntegrand = fn(&[f32; 4]) -> f64;
+
+/// Integrands none of the optimiser's: a disk of area ½ and a Gaussian bump (σ = 0.15) over
+/// dimensions (0, 1) and over (2, 3), and a Heaviside and a Gaussian over all four — as the
+/// peer comparison measures them (`peers/src/blue_noise.rs`).
+pub const HELD_OUT: [(&str, BlockIntegrand); 6] = [
+    ("disk 0-1", |v| disk(v[0], v[1])),
+    ("gaussian 0-1", |v| bump(v[0], v[1])),
+    ("disk 2-3", |v| disk(v[2], v[3])),
+    ("gaussian 2-3", |v| bump(v[2], v[3])),
+    ("heaviside 4-D", |v| {
+        let s: f64 = v.iter().map(|&x| f64::from(x) - 0.5).sum::<f64>()
+            + 0.3 * (f64::from(v[0]) - f64::from(v[3]));
+        f64::from(u8::from(s < 0.0))
+    }),
+    ("gaussian 4-D", |v| {
+        let r2: f64 = v.iter().map(|&x| (f64::from(x) - 0.5).powi(2)).sum();
+        (-r2 / (2.0 * 0.25 * 0.25)).exp()
+    }),
+];
+
+fn disk(x: f32, y: f32) -> f64 {
+    let (dx, dy) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
+    f64::from(u8::from(dx * dx + dy * dy < 0.5 / std::f64::consts::PI))
+}
+
+fn bump(x: f32, y: f32) -> f64 {
+    let (dx, dy) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
+    (-(dx * dx + dy * dy) / (2.0 * 0.15 * 0.15)).exp()
+}
+
+/// The low-frequency ratio of each [`HELD_OUT`] integrand's error image at spp `1, 2, … 2^max`
+/// from `keys` on the spec's torus: `[integrand][level]`.
+pub fn held_out_ratios(spec: &TileSpec, keys: &[u32], max: u32) -> Vec<Vec<f64>> {
+    let size = spec.size as usize;
+    HELD_OUT
+        .iter()
+        .map(|(_, f)| {
+            (0..=max)
+                .map(|level| {
+                    let n = 1u32 << level;
+                    let img: Vec<f64> = keys
+                        .iter()
+                        .map(|&k| {
+                            (0..n)
+                                .map(|i| f(&owen_sobol_blue_values(k, i)))
+                                .sum::<f64>()
+                                / f64::from(n)
+                        })
+                        .collect();
+                    low_frequency_ratio(&img, size)
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The tile as `screen_blue_tile.in` holds it: a Rust array literal of three bytes per entry
+/// (the key's low and high byte, the rank), four entries a line.
+pub fn source(tile: &Tile, spec: &TileSpec) -> String {
+    let mut s = format!(
+        "// Generated by `cargo run --release -p nyquist-lab --bin blue-tile` ({}², spp 1 … {}, \
+         {} sweeps, seed {}); do not edit.\n[\n",
+        spec.size,
+        1u32 << spec.levels,
+        spec.sweeps,
+        spec.seed
+    );
+    for row in tile.keys.chunks(4) {
+        s.push_str("   ");
+        for e in row {
+            let [lo, hi] = ((e >> 8) as u16).to_le_bytes();
+            s.push_str(&format!(" [0x{lo:02x}, 0x{hi:02x}, 0x{:02x}],", e & 0xff));
+        }
+        s.push('\n');
+    }
+    s.push_str("]\n");
+    s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SMALL: TileSpec = TileSpec {
+        size: 32,
+        levels: 3,
+        sweeps: 16,
+        seed: 5,
+    };
+
+    /// The optimised layout's error images are blue at every level (low-frequency ratio
+    /// below 0.7 in the mean over the integrands; the 32² torus's band has about 50
+    /// frequencies), the slot order's are white (0.6 to 1.6);
+    /// the energy falls, the keys are a permutation of the initial ones, and the run is
+    /// deterministic.
+    #[test]
+    fn optimisation_makes_the_error_blue_and_permutes_the_keys() {
+        let t = optimise(&SMALL, &|_, _| {});
+        assert!(t.energy[1] < t.energy[0] - 1000.0, "{:?}", t.energy);
+        let mut k: Vec<u32> = t.keys.iter().map(|e| e & !0xff).collect();
+        k.sort_unstable();
+        let mut want: Vec<u32> = (0..32 * 32).map(initial_entry).collect();
+        want.sort_unstable();
+        assert_eq!(k, want);
+        let start: Vec<u32> = (0..32 * 32).map(initial_entry).collect();
+        let (blue, white) = (level_ratios(&SMALL, &t.keys), level_ratios(&SMALL, &start));
+        eprintln!("{blue:?} {white:?}");
+        for level in 0..=3 {
+            let (blue, white) = (blue[level], white[level]);
+            assert!(blue < 0.7, "level {level}: {blue}");
+            assert!((0.6..1.6).contains(&white), "level {level}: {white}");
+        }
+        assert_eq!(optimise(&SMALL, &|_, _| {}), t, "deterministic");
+    }
+
+    #[test]
+    fn white_noise_has_a_low_frequency_ratio_near_one() {
+        let mut rng = default_rng(3);
+        let mut r = Vec::new();
+        for _ in 0..8 {
+            let img: Vec<f64> = (0..32 * 32).map(|_| uniform_f64(&mut rng)).collect();
+            r.push(low_frequency_ratio(&img, 32));
+        }
+        let mean = r.iter().sum::<f64>() / 8.0;
+        assert!((0.7..1.3).contains(&mean), "{r:?}");
+        // A smooth image is all low frequencies.
+        let smooth: Vec<f64> = (0..32 * 32)
+            .map(|i| ((i % 32) as f64 * std::f64::consts::TAU / 32.0).sin())
+            .collect();
+        assert!(low_frequency_ratio(&smooth, 32) > 10.0);
+    }
+}
