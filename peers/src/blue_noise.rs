@@ -42,6 +42,7 @@ fn openqmc_draw(kind: i32) -> Draw {
 
 /// The samplers compared, by name.
 fn sources(frame: u32) -> Vec<(&'static str, Draw)> {
+    #[cfg_attr(not(peer_openqmc), allow(unused_mut))]
     let mut v: Vec<(&'static str, Draw)> = vec![
         (
             "nyquist owen-sobol-bn",
@@ -51,7 +52,10 @@ fn sources(frame: u32) -> Vec<(&'static str, Draw)> {
             "nyquist owen-sobol",
             nyquist_draw(OwenSobolSampler::new(1, 0).unwrap().with_frame(frame)),
         ),
-        ("white (random)", nyquist_draw(RandomSampler::new(1, 0).unwrap())),
+        (
+            "white (random)",
+            nyquist_draw(RandomSampler::new(1, 0).unwrap()),
+        ),
     ];
     #[cfg(peer_openqmc)]
     {
@@ -86,11 +90,31 @@ fn gaussian(x: f32, y: f32) -> f64 {
 
 fn integrands() -> Vec<Integrand> {
     vec![
-        Integrand { name: "disk, dims 0-1", block: 0, f: |v| disk(v[0], v[1]) },
-        Integrand { name: "gaussian, dims 0-1", block: 0, f: |v| gaussian(v[0], v[1]) },
-        Integrand { name: "disk, dims 2-3", block: 0, f: |v| disk(v[2], v[3]) },
-        Integrand { name: "gaussian, dims 2-3", block: 0, f: |v| gaussian(v[2], v[3]) },
-        Integrand { name: "disk, next block 0-1", block: 1, f: |v| disk(v[0], v[1]) },
+        Integrand {
+            name: "disk, dims 0-1",
+            block: 0,
+            f: |v| disk(v[0], v[1]),
+        },
+        Integrand {
+            name: "gaussian, dims 0-1",
+            block: 0,
+            f: |v| gaussian(v[0], v[1]),
+        },
+        Integrand {
+            name: "disk, dims 2-3",
+            block: 0,
+            f: |v| disk(v[2], v[3]),
+        },
+        Integrand {
+            name: "gaussian, dims 2-3",
+            block: 0,
+            f: |v| gaussian(v[2], v[3]),
+        },
+        Integrand {
+            name: "disk, next block 0-1",
+            block: 1,
+            f: |v| disk(v[0], v[1]),
+        },
         Integrand {
             name: "heaviside 4-D",
             block: 0,
@@ -192,8 +216,7 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
                     let err: Vec<f64> = values
                         .chunks(4 * spp as usize)
                         .map(|px| {
-                            px.chunks(4).map(|v| (g.f)(v)).sum::<f64>() / f64::from(spp)
-                                - exact[ii]
+                            px.chunks(4).map(|v| (g.f)(v)).sum::<f64>() / f64::from(spp) - exact[ii]
                         })
                         .collect();
                     let rmse = (err.iter().map(|e| e * e).sum::<f64>() / err.len() as f64).sqrt();
@@ -214,7 +237,10 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
     );
     for (ii, g) in integrands.iter().enumerate() {
         println!("### {}\n", g.name);
-        println!("| sampler | {} |", SPPS.map(|s| format!("{s} spp")).join(" | "));
+        println!(
+            "| sampler | {} |",
+            SPPS.map(|s| format!("{s} spp")).join(" | ")
+        );
         println!("|---|{}", "---:|".repeat(SPPS.len()));
         for (si, (name, _)) in sources.iter().enumerate() {
             let cells: Vec<String> = results[si][ii]
@@ -236,7 +262,9 @@ fn write_error_image(dir: &std::path::Path, name: &str, err: &[f64], size: u32) 
         .collect();
     let file = dir.join(format!(
         "blue-error-{}.png",
-        name.to_lowercase().replace([' ', '(', ')'], "-").trim_matches('-')
+        name.to_lowercase()
+            .replace([' ', '(', ')'], "-")
+            .trim_matches('-')
     ));
     let mut out = Vec::new();
     write_png_pixels(&mut out, &PngLayout::new(size, size, PngColor::Grey), &grey).unwrap();
