@@ -1,23 +1,27 @@
 //! The optimiser of the screen-space blue-noise tile ([`nyquist::sampler::screen_blue`]).
 //!
-//! Every slot of a `size × size` torus starts with the key [`initial_key`]`(slot)`. A key's
-//! *error vector* holds, for each power-of-two spp `1 … 2^levels` and each test integrand, the
-//! error of the estimate from that many samples of a pixel with that key
-//! ([`owen_sobol_blue_values`]), each component centred and scaled to unit variance over the
-//! keys. The test integrands are oriented Heavisides and Gaussians over dimensions (0, 1) and
-//! over (2, 3), and a Heaviside and a Gaussian over all four, with parameters drawn from the
-//! seed.
+//! Every slot of a `size × size` torus starts with the entry [`initial_entry`]`(slot)`: key
+//! `slot`, rank 0. An entry's *error vector* holds, for each power-of-two spp `1 … 2^levels`
+//! and each test integrand, the error of the estimate from that many samples of a pixel with
+//! that entry ([`owen_sobol_blue_values`]), each component centred and scaled to unit variance
+//! over the entries. The test integrands are oriented Heavisides and Gaussians over dimensions
+//! (0, 1) and over (2, 3), and Heavisides and a Gaussian over all four, with parameters drawn
+//! from the seed.
 //!
 //! The energy is the Gaussian-weighted correlation of neighbouring pixels' errors,
 //! `E = Σ_p Σ_{q ≠ p, |q − p|∞ ≤ 6} exp(−|q − p|²/σ²) e_p · e_q` with `σ = 2.1` (Georgiev and
 //! Fajardo's σ), which is the error image's power seen through a low-pass filter: lowering it
-//! moves the error's power to high frequencies. Swapping two pixels' keys swaps their error
-//! vectors, so the optimiser searches permutations; it keeps `S_p = Σ_q w(q − p) e_q`, so a
-//! proposed swap of `p` and `q` costs one dot product,
-//! `ΔE = 2 (e_q − e_p)·(S_p − S_q) − 2 w(p − q) |e_q − e_p|²`, and it takes every swap that
-//! lowers `E`, and under simulated annealing some that raise it early on, half of them between random pixels and half between pixels at
-//! most 8 apart. All levels and integrands are optimised together, with one key per pixel, as
-//! Belcour and Heitz (2021) do.
+//! moves the error's power to high frequencies.
+//!
+//! **Key stage.** Swapping two pixels' keys swaps their error vectors, so this stage searches
+//! permutations. It keeps `S_p = Σ_q w(q − p) e_q`, so a proposed swap of `p` and `q` costs one
+//! dot product, `ΔE = 2 (e_q − e_p)·(S_p − S_q) − 2 w(p − q) |e_q − e_p|²`. It takes every
+//! swap that lowers `E` and, under simulated annealing, some that raise it early on; half the
+//! proposals pair random pixels, half pixels at most 8 apart. All spp are optimised together.
+//!
+//! **Rank stage.** Then, from the top spp down, each pixel chooses one rank bit: which of two
+//! aligned blocks its first `n` samples are, as Heitz et al. (2019) and
+//! OpenQMC rank their pixels.
 
 use nyquist::rng::{default_rng, uniform_below, uniform_f64};
 use nyquist::sampler::owen_sobol_blue_values;

@@ -223,7 +223,7 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
                     results[si][ii][k] = (rmse, low_frequency_ratio(&err, size as usize));
                     if let Some(dir) = images
                         && spp == 4
-                        && ii == 0
+                        && ii == 1
                     {
                         write_error_image(dir, name, &err, size);
                     }
@@ -253,7 +253,8 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
     }
 }
 
-/// `½ + 4·error` as grey, a PNG named after the sampler.
+/// `½ + 4·error` as grey, a PNG named after the sampler (the Gaussian of the first pair at 4
+/// spp).
 fn write_error_image(dir: &std::path::Path, name: &str, err: &[f64], size: u32) {
     use nyquist_film::output::png::{PngColor, PngLayout, write_png_pixels};
     let grey: Vec<u8> = err
@@ -263,8 +264,8 @@ fn write_error_image(dir: &std::path::Path, name: &str, err: &[f64], size: u32) 
     let file = dir.join(format!(
         "blue-error-{}.png",
         name.to_lowercase()
-            .replace([' ', '(', ')'], "-")
-            .trim_matches('-')
+            .replace(['(', ')'], "")
+            .replace(' ', "-")
     ));
     let mut out = Vec::new();
     write_png_pixels(&mut out, &PngLayout::new(size, size, PngColor::Grey), &grey).unwrap();

@@ -14,7 +14,7 @@ use crate::scramble::Scramble;
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, NAMES};
-/// assert_eq!(NAMES.len(), 16);
+/// assert_eq!(NAMES.len(), 17);
 /// for name in NAMES {
 ///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
 ///     assert_eq!(s.name(), name);
