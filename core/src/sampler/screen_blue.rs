@@ -12,7 +12,7 @@
 //! the Gaussian-weighted correlation of neighbouring pixels' errors over test integrands,
 //! which is the error image's power at low frequencies: first by permuting the keys (for
 //! every power-of-two spp from 1 to 256 at once), then by choosing each pixel's rank bits from
-//! the top, one spp at a time. [`TILE`] is its output.
+//! the top, one spp at a time. The tile (`screen_blue_tile.in`) is its output; [`entry`] reads it.
 //!
 //! A pixel reads the tile at its coordinates plus an offset (toroidally): one per 4-D block of
 //! dimensions, hashed from the seed and the block, and one per frame from Roberts' R2
