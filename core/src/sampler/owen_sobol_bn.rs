@@ -35,7 +35,7 @@ impl Block {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value(&self, rev: u32, component: u32) -> f32 {
-        owen_sobol_rev_f32(rev, component, self.seeds[component as usize & 3])
+        owen_sobol_rev_f32(rev, component, self.seeds[component as usize])
     }
 }
 
@@ -288,6 +288,7 @@ mod tests {
         assert_ne!(first(&s, [0, 0], 0), first(&s, [1, 0], 0));
         assert_ne!(first(&s, [0, 0], 0), first(&s, [0, 0], 4));
         let f1 = s.clone().with_frame(1);
+        assert_eq!(s.frame(), 0);
         assert_eq!(f1.frame(), 1);
         assert_eq!(f1.seed(), 9);
         assert_ne!(first(&s, [0, 0], 0), first(&f1, [0, 0], 0));
@@ -312,6 +313,34 @@ mod tests {
             Error::ZeroSize { what: "spp" }
         );
         assert_eq!(s.samples_per_pixel(), 4);
+    }
+
+    /// The sampler's values, pinned: ten dimensions of one sample (blocks 0, 1 and 2), and the
+    /// optimiser's values of one entry.
+    #[test]
+    fn values_are_pinned() {
+        let mut s = OwenSobolBlueSampler::new(4, 9).unwrap();
+        s.start_pixel_sample([3, 4], 5, 0);
+        let v: Vec<u32> = (0..10).map(|_| s.get_1d().to_bits()).collect();
+        assert_eq!(
+            v,
+            [
+                0x3e5a_e6b4,
+                0x3f15_21e8,
+                0x3e03_05a0,
+                0x3f13_f8bb,
+                0x3eb3_a0a6,
+                0x3f6c_1d19,
+                0x3e9a_b0ac,
+                0x3f6c_2a72,
+                0x3d32_b310,
+                0x3f27_ee70
+            ]
+        );
+        assert_eq!(
+            owen_sobol_blue_values(entry(3, 4), 5).map(f32::to_bits),
+            [1_043_493_632, 1_062_860_919, 1_033_604_872, 1_061_669_637]
+        );
     }
 
     /// The values the optimiser integrates are block 0's at the pixel's key.

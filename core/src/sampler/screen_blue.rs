@@ -75,3 +75,60 @@ pub fn offset(seed: u64, frame: u32, block: u32) -> [u32; 2] {
         ((h >> (32 * k)) as u32).wrapping_add(r) & (TILE_SIZE - 1)
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn initial_entries_are_slots_with_rank_zero() {
+        assert_eq!(initial_entry(0), 0);
+        assert_eq!(initial_entry(3), 0x300);
+        assert_eq!(initial_entry(TILE_SIZE * TILE_SIZE - 1), 16383 << 8);
+    }
+
+    /// The shipped tile, pinned at three pixels, read as a torus.
+    #[test]
+    fn entries_are_pinned_and_wrap() {
+        assert_eq!(entry(0, 0), 0x24_5681);
+        assert_eq!(entry(127, 0), 0x3e_d832);
+        assert_eq!(entry(5, 77), 0x34_6fd1);
+        assert_eq!(entry(5 + 128, 77 + 256), entry(5, 77));
+        assert_eq!(entry(128, 0), entry(0, 0));
+        assert_eq!(entry(0, 128 * 7), entry(0, 0));
+        assert_ne!(entry(1, 0), entry(0, 0));
+        assert_ne!(entry(0, 1), entry(0, 0));
+    }
+
+    /// Offsets: pinned; inside the tile; the frame's part is R2's point `frac(f·α)` in
+    /// 1/128 steps, computed here in f64 from α = 1/φ₂, 1/φ₂².
+    #[test]
+    fn offsets_are_pinned_and_frames_follow_r2() {
+        assert_eq!(offset(0, 0, 0), [102, 28]);
+        assert_eq!(offset(0, 1, 0), [70, 100]);
+        assert_eq!(offset(0, 2, 1), [69, 110]);
+        assert_eq!(offset(7, 5, 3), [76, 5]);
+        let plastic = 1.324_717_957_244_746_f64;
+        let alpha = [1.0 / plastic, 1.0 / (plastic * plastic)];
+        for seed in [0u64, 9] {
+            for block in [0u32, 1, 40] {
+                let o0 = offset(seed, 0, block);
+                for f in 0..2000u32 {
+                    let o = offset(seed, f, block);
+                    for k in 0..2 {
+                        assert!(o[k] < TILE_SIZE);
+                        let want = ((f64::from(f) * alpha[k]).fract() * 128.0) as u32;
+                        let got = (o[k] + TILE_SIZE - o0[k]) % TILE_SIZE;
+                        // The fixed-point product may round across a 1/128 step.
+                        assert!(
+                            got == want || got == (want + 1) % 128 || (got + 1) % 128 == want,
+                            "{f} {k}"
+                        );
+                    }
+                }
+            }
+        }
+        assert_ne!(offset(0, 0, 0), offset(1, 0, 0));
+        assert_ne!(offset(0, 0, 0), offset(0, 0, 1));
+    }
+}
