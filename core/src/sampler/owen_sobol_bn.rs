@@ -5,7 +5,9 @@ use super::screen_blue::{entry, offset};
 use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::hash::mix32;
-use crate::sequence::{DimSeeds, IndexShuffle, owen_sobol_rev_f32};
+use crate::lazy_table::{baked_table, const_unless_lazy};
+use crate::scramble::{lk_hash, rev_to_f32};
+use crate::sequence::{DimSeeds, IndexShuffle, SOBOL_MATRICES};
 
 /// One 4-D block's scramble: the rank, index shuffle and four dimensions' seeds of a tile
 /// entry.
@@ -35,8 +37,51 @@ impl Block {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value(&self, rev: u32, component: u32) -> f32 {
-        owen_sobol_rev_f32(rev, component, self.seeds[component as usize])
+        let c = component as usize;
+        rev_to_f32(lk_hash(block_product_rev(rev, c), self.seeds[c]))
     }
+}
+
+baked_table! {
+    /// `BLOCK_REVERSED[n][v][d]`: the bit-reversed XOR of Sobol dimension `d`'s columns
+    /// `31 − 4n − m` over the set bits `m` of `v`, so that a block's value at a reversed index
+    /// is eight reads (2 KiB: the sampler carries four dimensions' columns, not the 1024 of
+    /// the Owen-Sobol tables).
+    static BLOCK_REVERSED: [[[u32; 4]; 16]; 8] = [[[0; 4]; 16]; 8], block_reversed,
+        block_reversed_at_first_use_equals_the_baked_table;
+}
+
+const_unless_lazy! {
+    fn block_reversed(t: &mut [[[u32; 4]; 16]; 8]) {
+        let mut n = 0;
+        while n < 8 {
+            let mut v = 1;
+            while v < 16 {
+                let m = (v as u32).trailing_zeros() as usize;
+                let mut d = 0;
+                while d < 4 {
+                    t[n][v][d] =
+                        t[n][v & (v - 1)][d] ^ SOBOL_MATRICES[d][31 - 4 * n - m].reverse_bits();
+                    d += 1;
+                }
+                v += 1;
+            }
+            n += 1;
+        }
+    }
+}
+
+/// Sobol dimension `d < 4`, bit-reversed, at the index whose reversal is `rev`.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn block_product_rev(rev: u32, d: usize) -> u32 {
+    let t = &BLOCK_REVERSED;
+    let mut out = 0;
+    let mut n = 0;
+    while n < 8 {
+        out ^= t[n][((rev >> (4 * n)) & 15) as usize][d];
+        n += 1;
+    }
+    out
 }
 
 /// Owen-scrambled Sobol samples whose error is blue noise across the screen (Heitz et al.
@@ -313,6 +358,29 @@ mod tests {
             Error::ZeroSize { what: "spp" }
         );
         assert_eq!(s.samples_per_pixel(), 4);
+    }
+
+    /// The block's nibble table gives the Owen-Sobol sequence's values (its 1024-dimension
+    /// tables) for the four dimensions, at indices over all 32 bits.
+    #[test]
+    fn block_values_are_owen_sobols() {
+        let mut x = 0x1234_5678u32;
+        for _ in 0..4096 {
+            x = crate::hash::mix32(x.wrapping_add(0x9e37_79b9));
+            for d in 0..4u32 {
+                let seed = crate::hash::mix32(x ^ d);
+                let b = Block {
+                    rank: 0,
+                    shuffle: IndexShuffle::new(1),
+                    seeds: [seed; 4],
+                };
+                assert_eq!(
+                    b.value(x, d),
+                    crate::sequence::owen_sobol_rev_f32(x, d, seed),
+                    "{x:#x} {d}"
+                );
+            }
+        }
     }
 
     /// The sampler's values, pinned: ten dimensions of one sample (blocks 0, 1 and 2), and the
