@@ -232,10 +232,11 @@ pub fn energy(e: &[f32], c: usize, size: u32) -> f64 {
 fn blurred(e: &[f32], c: usize, size: u32) -> Vec<f64> {
     let n = size as i32;
     let mut s = vec![0f64; e.len()];
+    let win = window();
     for y in 0..n {
         for x in 0..n {
             let p = (y * n + x) as usize;
-            for &(dx, dy, w) in &window() {
+            for &(dx, dy, w) in &win {
                 let q = (((y + dy) & (n - 1)) * n + ((x + dx) & (n - 1))) as usize;
                 for j in 0..c {
                     s[p * c + j] += w * f64::from(e[q * c + j]);

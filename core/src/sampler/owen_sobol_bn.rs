@@ -1,8 +1,8 @@
 //! Owen-scrambled Sobol per pixel with blue-noise error across pixels: the pixels' scrambles
 //! come from the optimised tile of [`super::screen_blue`].
 
+use super::Sampler;
 use super::screen_blue::{entry, offset};
-use super::{CameraSample, Sampler, film_coordinate};
 use crate::Error;
 use crate::hash::mix32;
 use crate::lazy_table::{baked_table, const_unless_lazy};
@@ -224,21 +224,6 @@ impl Sampler for OwenSobolBlueSampler {
     }
 
     super::global_point_dimensions!();
-
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    fn camera_sample(&mut self, pixel: [u32; 2], sample_index: u32) -> CameraSample {
-        self.start_pixel_sample(pixel, sample_index, 0);
-        let v: [f32; 5] = core::array::from_fn(|d| self.sample(d as u32));
-        self.dim = 5;
-        CameraSample {
-            p_film: [
-                film_coordinate(pixel[0], v[0]),
-                film_coordinate(pixel[1], v[1]),
-            ],
-            lens: [v[3], v[4]],
-            time: v[2],
-        }
-    }
 
     super::global_point_arrays!();
 }
