@@ -92,7 +92,8 @@ fn nonzero_size(width: u32, height: u32, spp: u32) -> Result<(), NyqStatus> {
 /// spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
 /// (Owen-scrambled Sobol per pixel); `owen-sobol-bn` (the same with blue-noise error across
 /// pixels, from a 128 × 128 tile); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
-/// a power of two); `pmj02` (up to 65536 spp); `bluenoise-dithered` (the zero-two set of pixel
+/// a power of two); `pmj02` (up to 65536 spp); `pmj02-bn` and `lattice-bn` (PMJ(0,2) and a
+/// rank-1 lattice per pixel with blue-noise error across pixels); `bluenoise-dithered` (the zero-two set of pixel
 /// (0, 0) in every pixel, toroidally shifted by a built-in 64 × 64 blue-noise mask, spp rounded
 /// up to a power of two); `fibonacci`, `r2` and `korobov` (the Fibonacci lattice, spp rounded up
 /// to a Fibonacci number, R2, or the Korobov lattice of exactly spp points whose multiplier

@@ -322,7 +322,7 @@ proptest! {
 
     #[test]
     fn samplers_give_values_in_range_for_any_input(
-        name in prop::sample::select(vec!["random", "uniform", "stratified", "halton", "hammersley", "zero-two", "sobol", "best-candidate", "adaptive", "owen-sobol", "owen-sobol-bn", "zsobol", "pmj02", "bluenoise-dithered", "fibonacci", "r2", "korobov", "bogus"]),
+        name in prop::sample::select(vec!["random", "uniform", "stratified", "halton", "hammersley", "zero-two", "sobol", "best-candidate", "adaptive", "owen-sobol", "owen-sobol-bn", "zsobol", "pmj02", "pmj02-bn", "bluenoise-dithered", "fibonacci", "r2", "korobov", "lattice-bn", "bogus"]),
         size in (0u32..70, 0u32..70),
         spp in 0u32..70,
         seed in any::<u64>(),

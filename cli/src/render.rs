@@ -7,6 +7,7 @@ use clap::Args;
 use nyquist::filter::FilterKind;
 use nyquist::sampler::Sampler;
 use nyquist_film::adaptive::AdaptiveConfig;
+use nyquist_film::error_spectrum::error_spectrum;
 use nyquist_film::output::png::{PngColor, PngLayout, write_png_pixels};
 use nyquist_film::{Image, ImageFormat};
 use nyquist_lab::scene::Scene;
@@ -128,7 +129,7 @@ pub struct RenderArgs {
     /// first pass of a quarter of it (at least 16), then passes that double the samples of the
     /// pixels whose relative error, |A − B|/2 over the value (docs/film.md), is above THRESHOLD,
     /// worst first, up to 16 × --spp in a pixel. Progressive samplers only (random, halton,
-    /// sobol, zero-two, owen-sobol, owen-sobol-bn, zsobol, pmj02, r2).
+    /// sobol, zero-two, owen-sobol, owen-sobol-bn, zsobol, pmj02, pmj02-bn, r2, lattice-bn).
     #[arg(long, value_name = "THRESHOLD", value_parser = nyquist_lab::flags::number(0.0, 1e6))]
     pub adaptive: Option<f64>,
     /// With --adaptive, also write where the samples went as a grey PNG: log₂ of each pixel's
@@ -531,12 +532,23 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         let sampling = filtered.as_ref().map_or(f64::NAN, |f| rmse(&r.image, f));
         let rate = r.stats.samples as f64 / r.seconds.max(1e-9);
         let [by_variance, by_halves] = predicted_rmse(&r);
+        // The sampling error's spectrum: how blue the error is (docs/blue-noise.md).
+        let spectrum = filtered.as_ref().and_then(|f| {
+            let error: Vec<f64> = r
+                .image
+                .data()
+                .chunks_exact(3)
+                .zip(f)
+                .map(|(p, r)| f64::from(p[0]) - r)
+                .collect();
+            error_spectrum(&error, r.image.width(), r.image.height()).ok()
+        });
         let mut out = String::new();
         if args.json {
             let predicted = |p: Option<f64>| p.map_or_else(|| "null".to_string(), json_number);
             writeln!(
                 out,
-                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"adaptive\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
+                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"adaptive\":{},\"error_low_frequency_ratio\":{},\"error_radial_spectrum\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
                 json_string(args.scene.name()),
                 args.size[0],
                 args.size[1],
@@ -561,6 +573,16 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                     ),
                     _ => "null".to_string(),
                 },
+                spectrum
+                    .as_ref()
+                    .map_or_else(|| "null".to_string(), |s| json_number(s.low_frequency_ratio)),
+                spectrum.as_ref().map_or_else(
+                    || "null".to_string(),
+                    |s| {
+                        let cells: Vec<String> = s.radial.iter().map(|&v| json_number(v)).collect();
+                        format!("[{}]", cells.join(","))
+                    }
+                ),
                 r.stats.samples,
                 r.stats.rejected,
                 json_number(r.seconds),
@@ -585,6 +607,23 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 out,
                 "sampling rmse  {sampling:.6} (against the same filter's converged image)"
             )?;
+            if let Some(s) = &spectrum {
+                writeln!(
+                    out,
+                    "error spectrum low-frequency ratio {:.3} (mean power below ¼ Nyquist over white noise's: 1 white, below 1 blue)",
+                    s.low_frequency_ratio
+                )?;
+                let cells: Vec<String> = s
+                    .radial
+                    .iter()
+                    .map(|v| if v.is_finite() { format!("{v:.2}") } else { "-".into() })
+                    .collect();
+                writeln!(
+                    out,
+                    "radial power   {} (annuli of 1/32 cycle per pixel up to Nyquist, over white's)",
+                    cells.join(" ")
+                )?;
+            }
             let kept = |flag: &str, on: bool, p: Option<f64>, how: &str| match (on, p) {
                 (false, _) => None,
                 (true, Some(p)) => Some(format!("predicted rmse {p:.6} ({how}, {flag})")),

@@ -70,7 +70,7 @@ pub struct RenderConfig {
     pub counter: bool,
     /// Make the sampler for this many samples per pixel and draw `spp` of them through the
     /// stateless layer, past it where `spp` is larger (samplers whose every sample index is a
-    /// new sample: random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02).
+    /// new sample: random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02, pmj02-bn, lattice-bn).
     pub spp_hint: Option<u32>,
     /// Draw the values past the camera sample from the camera sample's [`Domain`]s, the light
     /// samples by this derivation ([`trace::DomainSource`]; the `owen-sobol` sampler only).

@@ -3,7 +3,7 @@
 //! Every slot of a `size × size` torus starts with the entry [`initial_entry`]`(slot)`: key
 //! `slot`, rank 0. An entry's *error vector* holds, for each power-of-two spp `1 … 2^levels`
 //! and each test integrand, the error of the estimate from that many samples of a pixel with
-//! that entry ([`owen_sobol_blue_values`]), each component centred and scaled to unit variance
+//! that entry ([`BlueFamily::values`] of the spec's [`Family`]), each component centred and scaled to unit variance
 //! over the entries. The test integrands are oriented Heavisides and Gaussians over dimensions
 //! (0, 1) and over (2, 3), and Heavisides and a Gaussian over all four, with parameters drawn
 //! from the seed.
@@ -24,8 +24,9 @@
 //! OpenQMC rank their pixels.
 
 use nyquist::rng::{default_rng, uniform_below, uniform_f64};
-use nyquist::sampler::owen_sobol_blue_values;
-use nyquist::sampler::screen_blue::initial_entry;
+use nyquist::sampler::screen_blue::{
+    BlueFamily, LatticeBlue, OwenSobolBlue, Pmj02Blue, initial_entry,
+};
 
 /// Radius of the energy's window, in pixels (a 13 × 13 window).
 const RADIUS: i32 = 6;
@@ -39,9 +40,69 @@ const SECOND_PAIR_HEAVISIDES: usize = 32;
 /// Oriented Heavisides over the whole 4-D block.
 const BLOCK_HEAVISIDES: usize = 8;
 
+/// The families of nets a tile is optimised for ([`BlueFamily`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// [`OwenSobolBlue`]: `owen-sobol-bn`.
+    OwenSobol,
+    /// [`Pmj02Blue`]: `pmj02-bn`.
+    Pmj02,
+    /// [`LatticeBlue`]: `lattice-bn`.
+    Lattice,
+}
+
+impl Family {
+    /// Every family.
+    pub const ALL: [Family; 3] = [Family::OwenSobol, Family::Pmj02, Family::Lattice];
+
+    /// The four values of sample `index` of a pixel whose entry is `entry`
+    /// ([`BlueFamily::values`]).
+    pub fn values(self, entry: u32, index: u32) -> [f32; 4] {
+        match self {
+            Family::OwenSobol => OwenSobolBlue::values(entry, index),
+            Family::Pmj02 => Pmj02Blue::values(entry, index),
+            Family::Lattice => LatticeBlue::values(entry, index),
+        }
+    }
+
+    /// The family's entry at `(x, y)` of its shipped tile ([`BlueFamily::entry`]).
+    pub fn entry(self, x: u32, y: u32) -> u32 {
+        match self {
+            Family::OwenSobol => OwenSobolBlue::entry(x, y),
+            Family::Pmj02 => Pmj02Blue::entry(x, y),
+            Family::Lattice => LatticeBlue::entry(x, y),
+        }
+    }
+
+    /// The sampler's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Family::OwenSobol => OwenSobolBlue::NAME,
+            Family::Pmj02 => Pmj02Blue::NAME,
+            Family::Lattice => LatticeBlue::NAME,
+        }
+    }
+
+    /// The family named `name` (a sampler name of [`Family::name`]).
+    pub fn from_name(name: &str) -> Option<Family> {
+        Family::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// The shipped tile's file, under `core/src/sampler/screen_blue/`.
+    pub fn tile_file(self) -> &'static str {
+        match self {
+            Family::OwenSobol => "owen_sobol_tile.in",
+            Family::Pmj02 => "pmj02_tile.in",
+            Family::Lattice => "lattice_tile.in",
+        }
+    }
+}
+
 /// What the optimiser builds.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TileSpec {
+    /// The family of nets.
+    pub family: Family,
     /// Side of the torus (a power of two, at least 16).
     pub size: u32,
     /// The largest spp is `2^levels`.
@@ -53,13 +114,16 @@ pub struct TileSpec {
 }
 
 impl TileSpec {
-    /// The shipped tile's spec: 128², spp 1 … 256, 256 sweeps, seed 1.
-    pub const SHIPPED: TileSpec = TileSpec {
-        size: 128,
-        levels: 8,
-        sweeps: 256,
-        seed: 1,
-    };
+    /// The shipped tile's spec for `family`: 128², spp 1 … 256, 256 sweeps, seed 1.
+    pub const fn shipped(family: Family) -> TileSpec {
+        TileSpec {
+            family,
+            size: 128,
+            levels: 8,
+            sweeps: 256,
+            seed: 1,
+        }
+    }
 }
 
 /// The optimiser's result.
@@ -151,7 +215,7 @@ pub fn error_vectors(spec: &TileSpec, keys: &[u32]) -> (Vec<f32>, usize) {
         let mut out = vec![0f32; c];
         let mut sums = vec![0f64; tests.len()];
         for i in 0..1u32 << spec.levels {
-            let x = owen_sobol_blue_values(key, i);
+            let x = spec.family.values(key, i);
             for (s, t) in sums.iter_mut().zip(&tests) {
                 *s += t.eval(&x);
             }
@@ -256,11 +320,11 @@ pub fn optimise(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
 }
 
 /// The means of the test integrands over samples `0..2^level` of a pixel with `entry`.
-fn level_means(tests: &[Test], entry: u32, level: u32) -> Vec<f64> {
+fn level_means(family: Family, tests: &[Test], entry: u32, level: u32) -> Vec<f64> {
     let mut sums = vec![0f64; tests.len()];
     let n = 1u32 << level;
     for i in 0..n {
-        let x = owen_sobol_blue_values(entry, i);
+        let x = family.values(entry, i);
         for (s, t) in sums.iter_mut().zip(tests) {
             *s += t.eval(&x);
         }
@@ -288,8 +352,8 @@ fn choose_ranks(spec: &TileSpec, entries: &mut [u32]) {
         let mut e1 = vec![0f32; n * t];
         let rows = per_key(entries, |entry| {
             (
-                level_means(&tests, entry, level),
-                level_means(&tests, entry | bit, level),
+                level_means(spec.family, &tests, entry, level),
+                level_means(spec.family, &tests, entry | bit, level),
             )
         });
         for (p, (a, b)) in rows.into_iter().enumerate() {
@@ -439,56 +503,15 @@ fn permute_keys(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
     }
 }
 
-/// The low-frequency ratio of a `size`² image: the mean periodogram power at the frequencies
-/// `0 < |f| < size/8` (below a quarter of the Nyquist radius), divided by the mean over every
-/// frequency but 0, which is what white noise of the same variance has at every frequency. Blue
-/// error is well below 1; white error near 1.
+/// The low-frequency ratio of a `size`² image
+/// ([`ErrorSpectrum::low_frequency_ratio`](nyquist_film::error_spectrum::ErrorSpectrum)): the
+/// mean periodogram power at the frequencies `0 < |f| < size/8` (below a quarter of the Nyquist
+/// radius), divided by the mean over every frequency but 0, which is what white noise of the
+/// same variance has at every frequency. Blue error is well below 1; white error near 1. An
+/// image with no error has no spectrum: `NaN`.
 pub fn low_frequency_ratio(image: &[f64], size: usize) -> f64 {
-    let mean = image.iter().sum::<f64>() / image.len() as f64;
-    let centred: Vec<f64> = image.iter().map(|v| v - mean).collect();
-    // Separable DFT: rows, then columns.
-    let tw: Vec<(f64, f64)> = (0..size)
-        .map(|k| {
-            let a = -std::f64::consts::TAU * k as f64 / size as f64;
-            (a.cos(), a.sin())
-        })
-        .collect();
-    let mut rows = vec![(0.0, 0.0); size * size];
-    for y in 0..size {
-        for u in 0..size {
-            let (mut re, mut im) = (0.0, 0.0);
-            for x in 0..size {
-                let (c, s) = tw[(u * x) % size];
-                re += centred[y * size + x] * c;
-                im += centred[y * size + x] * s;
-            }
-            rows[y * size + u] = (re, im);
-        }
-    }
-    let (mut low, mut nlow, mut all) = (0.0, 0usize, 0.0);
-    for v in 0..size {
-        for u in 0..size {
-            let (mut re, mut im) = (0.0, 0.0);
-            for y in 0..size {
-                let (c, s) = tw[(v * y) % size];
-                let (a, b) = rows[y * size + u];
-                re += a * c - b * s;
-                im += a * s + b * c;
-            }
-            if (u, v) == (0, 0) {
-                continue;
-            }
-            let p = re * re + im * im;
-            all += p;
-            let fu = if u > size / 2 { size - u } else { u } as f64;
-            let fv = if v > size / 2 { size - v } else { v } as f64;
-            if (fu * fu + fv * fv).sqrt() < size as f64 / 8.0 {
-                low += p;
-                nlow += 1;
-            }
-        }
-    }
-    (low / nlow.max(1) as f64) / (all / (size * size - 1) as f64)
+    nyquist_film::error_spectrum::error_spectrum(image, size as u32, size as u32)
+        .map_or(f64::NAN, |s| s.low_frequency_ratio)
 }
 
 /// The mean [`low_frequency_ratio`] over the test integrands of the error images of `keys`
@@ -563,7 +586,7 @@ pub fn held_out_ratios(spec: &TileSpec, keys: &[u32], max: u32) -> Vec<Vec<f64>>
                         .iter()
                         .map(|&k| {
                             (0..n)
-                                .map(|i| f(&owen_sobol_blue_values(k, i)))
+                                .map(|i| f(&spec.family.values(k, i)))
                                 .sum::<f64>()
                                 / f64::from(n)
                         })
@@ -579,8 +602,9 @@ pub fn held_out_ratios(spec: &TileSpec, keys: &[u32], max: u32) -> Vec<Vec<f64>>
 /// (the key's low and high byte, the rank), four entries a line.
 pub fn source(tile: &Tile, spec: &TileSpec) -> String {
     let mut s = format!(
-        "// Generated by `cargo run --release -p nyquist-lab --bin blue-tile` ({}², spp 1 … {}, \
-         {} sweeps, seed {}); do not edit.\n[\n",
+        "// Generated by `cargo run --release -p nyquist-lab --bin blue-tile -- --family {}` \
+         ({}², spp 1 … {}, {} sweeps, seed {}); do not edit.\n[\n",
+        spec.family.name(),
         spec.size,
         1u32 << spec.levels,
         spec.sweeps,
@@ -603,6 +627,7 @@ mod tests {
     use super::*;
 
     const SMALL: TileSpec = TileSpec {
+        family: Family::OwenSobol,
         size: 32,
         levels: 3,
         sweeps: 16,

@@ -66,6 +66,14 @@ pub enum PointSetName {
     /// Progressive multi-jittered (0,2) sequence (two dimensions: the baked table, or with
     /// --seed Owen-scrambled); with --spp, shuffled and scrambled per pixel.
     Pmj02,
+    /// PMJ(0,2) with blue-noise error across pixels, its scrambles from an optimised
+    /// 128 × 128 tile (pixel sampler: --spp).
+    #[cfg_attr(feature = "clap", value(name = "pmj02-bn"))]
+    Pmj02Bn,
+    /// An extensible rank-1 lattice with blue-noise error across pixels, its shifts from an
+    /// optimised 128 × 128 tile (pixel sampler: --spp).
+    #[cfg_attr(feature = "clap", value(name = "lattice-bn"))]
+    LatticeBn,
     /// Fibonacci lattice (two dimensions; --count a Fibonacci number, default 21; --seed picks
     /// a Cranley–Patterson rotation).
     Fibonacci,
@@ -92,7 +100,7 @@ pub enum PointSetName {
 
 impl PointSetName {
     /// Every name, in the order above.
-    pub const ALL: [PointSetName; 23] = [
+    pub const ALL: [PointSetName; 25] = [
         PointSetName::Random,
         PointSetName::Uniform,
         PointSetName::Stratified,
@@ -110,6 +118,8 @@ impl PointSetName {
         PointSetName::OwenSobolBn,
         PointSetName::ZSobol,
         PointSetName::Pmj02,
+        PointSetName::Pmj02Bn,
+        PointSetName::LatticeBn,
         PointSetName::Fibonacci,
         PointSetName::Korobov,
         PointSetName::Rd,
@@ -145,6 +155,8 @@ impl PointSetName {
             S::OwenSobolBn => "owen-sobol-bn",
             S::ZSobol => "zsobol",
             S::Pmj02 => "pmj02",
+            S::Pmj02Bn => "pmj02-bn",
+            S::LatticeBn => "lattice-bn",
             S::Fibonacci => "fibonacci",
             S::Korobov => "korobov",
             S::Rd => "rd",
@@ -740,7 +752,13 @@ fn generate(args: &PointsSpec, notes: &mut Vec<String>) -> Result<(Vec<f32>, usi
             out = pts[..2 * n].iter().map(|&v| v as f32).collect();
         }
         S::Rd => fill(&named_sequence(args, count, dims, notes)?, args, &mut out)?,
-        S::BestCandidate | S::Adaptive | S::ZSobol | S::OwenSobolBn | S::BluenoiseDithered => {
+        S::BestCandidate
+        | S::Adaptive
+        | S::ZSobol
+        | S::OwenSobolBn
+        | S::Pmj02Bn
+        | S::LatticeBn
+        | S::BluenoiseDithered => {
             bail!("{} is a pixel sampler: give --spp", args.sampler.name())
         }
     }

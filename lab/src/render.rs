@@ -79,6 +79,10 @@ pub enum SamplerName {
     ZSobol,
     /// Progressive multi-jittered (0,2) points, shuffled and Owen-scrambled per pixel.
     Pmj02,
+    /// PMJ(0,2) per pixel with blue-noise error across pixels, from an optimised 128 × 128
+    /// tile (docs/blue-noise.md).
+    #[cfg_attr(feature = "clap", value(name = "pmj02-bn"))]
+    Pmj02Bn,
     /// Blue-noise dithered: one zero-two set for every pixel, toroidally shifted by a 64 × 64
     /// blue-noise mask, so the error is blue noise (spp rounded up to a power of two).
     #[cfg_attr(feature = "clap", value(name = "bluenoise-dithered"))]
@@ -92,6 +96,10 @@ pub enum SamplerName {
     /// The Korobov lattice of exactly spp points per dimension pair (multiplier minimising
     /// P2), Cranley–Patterson rotated per pixel and pair.
     Korobov,
+    /// An extensible rank-1 lattice per pixel with blue-noise error across pixels, from an
+    /// optimised 128 × 128 tile (docs/blue-noise.md).
+    #[cfg_attr(feature = "clap", value(name = "lattice-bn"))]
+    LatticeBn,
 }
 
 impl SamplerName {
@@ -129,10 +137,12 @@ impl SamplerName {
             S::OwenSobolBn => "owen-sobol-bn",
             S::ZSobol => "zsobol",
             S::Pmj02 => "pmj02",
+            S::Pmj02Bn => "pmj02-bn",
             S::BluenoiseDithered => "bluenoise-dithered",
             S::Fibonacci => "fibonacci",
             S::R2 => "r2",
             S::Korobov => "korobov",
+            S::LatticeBn => "lattice-bn",
         }
     }
 }
@@ -285,7 +295,7 @@ pub struct Rendered {
 /// The samplers whose pixels take any number of samples, each a prefix of one sequence (so
 /// adaptive sampling can add samples to a pixel): the others lay out a fixed set for their
 /// spp.
-pub const PROGRESSIVE_SAMPLERS: [SamplerName; 9] = [
+pub const PROGRESSIVE_SAMPLERS: [SamplerName; 11] = [
     SamplerName::Random,
     SamplerName::Halton,
     SamplerName::Sobol,
@@ -294,7 +304,9 @@ pub const PROGRESSIVE_SAMPLERS: [SamplerName; 9] = [
     SamplerName::OwenSobolBn,
     SamplerName::ZSobol,
     SamplerName::Pmj02,
+    SamplerName::Pmj02Bn,
     SamplerName::R2,
+    SamplerName::LatticeBn,
 ];
 
 /// An extra channel group a render can keep per pixel, from the scene's

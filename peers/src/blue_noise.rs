@@ -10,7 +10,12 @@
 //! `cargo run --release --manifest-path peers/Cargo.toml -- --blue-noise [--size N]
 //! [--frame F] [--images DIR]`
 
-use nyquist::sampler::{OwenSobolBlueSampler, OwenSobolSampler, RandomSampler, Sampler};
+use nyquist::sampler::{
+    LatticeBlueSampler, OwenSobolBlueSampler, OwenSobolSampler, Pmj02BlueSampler, Pmj02Sampler,
+    RandomSampler, Sampler,
+};
+use nyquist_film::error_spectrum::error_spectrum;
+use nyquist_lab::blue_tile::{BlockIntegrand, HELD_OUT};
 
 /// Four values per (pixel, sample), pixel-major, for block `block` (dimensions `4b .. 4b+4`).
 type Draw = Box<dyn Fn(u32, u32, u32, u32) -> Vec<f32>>;
@@ -53,6 +58,18 @@ fn sources(frame: u32) -> Vec<(&'static str, Draw)> {
             nyquist_draw(OwenSobolSampler::new(1, 0).unwrap().with_frame(frame)),
         ),
         (
+            "nyquist pmj02-bn",
+            nyquist_draw(Pmj02BlueSampler::new(1, 0).unwrap().with_frame(frame)),
+        ),
+        (
+            "nyquist pmj02",
+            nyquist_draw(Pmj02Sampler::new(1, frame.into()).unwrap()),
+        ),
+        (
+            "nyquist lattice-bn",
+            nyquist_draw(LatticeBlueSampler::new(1, 0).unwrap().with_frame(frame)),
+        ),
+        (
             "white (random)",
             nyquist_draw(RandomSampler::new(1, 0).unwrap()),
         ),
@@ -63,6 +80,8 @@ fn sources(frame: u32) -> Vec<(&'static str, Draw)> {
         v.push(("OpenQMC pmjbn", openqmc_draw(1)));
         v.push(("OpenQMC latticebn", openqmc_draw(2)));
         v.push(("OpenQMC sobol", openqmc_draw(3)));
+        v.push(("OpenQMC pmj", openqmc_draw(4)));
+        v.push(("OpenQMC lattice", openqmc_draw(5)));
     }
     #[cfg(not(peer_openqmc))]
     eprintln!("OpenQMC: not built (set NYQUIST_OPENQMC; README.md)");
@@ -74,69 +93,29 @@ fn sources(frame: u32) -> Vec<(&'static str, Draw)> {
 struct Integrand {
     name: &'static str,
     block: u32,
-    f: fn(&[f32]) -> f64,
+    f: BlockIntegrand,
 }
 
-fn disk(x: f32, y: f32) -> f64 {
-    // Area ½, centred: the 2021 paper's disk.
-    let (dx, dy) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
-    f64::from(u8::from(dx * dx + dy * dy < 0.5 / std::f64::consts::PI))
-}
-
-fn gaussian(x: f32, y: f32) -> f64 {
-    let (dx, dy) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
-    (-(dx * dx + dy * dy) / (2.0 * 0.15 * 0.15)).exp()
-}
-
+/// The lab's held-out integrands ([`HELD_OUT`]: a disk and a Gaussian on dimensions 0–1 and
+/// 2–3, a Heaviside and a Gaussian in 4-D) on the first block, and the disk on the next block.
 fn integrands() -> Vec<Integrand> {
-    vec![
+    let mut v: Vec<Integrand> = HELD_OUT
+        .iter()
+        .map(|&(name, f)| Integrand { name, block: 0, f })
+        .collect();
+    v.insert(
+        4,
         Integrand {
-            name: "disk, dims 0-1",
-            block: 0,
-            f: |v| disk(v[0], v[1]),
-        },
-        Integrand {
-            name: "gaussian, dims 0-1",
-            block: 0,
-            f: |v| gaussian(v[0], v[1]),
-        },
-        Integrand {
-            name: "disk, dims 2-3",
-            block: 0,
-            f: |v| disk(v[2], v[3]),
-        },
-        Integrand {
-            name: "gaussian, dims 2-3",
-            block: 0,
-            f: |v| gaussian(v[2], v[3]),
-        },
-        Integrand {
-            name: "disk, next block 0-1",
+            name: "disk 0-1, next block",
             block: 1,
-            f: |v| disk(v[0], v[1]),
+            f: HELD_OUT[0].1,
         },
-        Integrand {
-            name: "heaviside 4-D",
-            block: 0,
-            f: |v| {
-                let s: f64 = v.iter().map(|&x| f64::from(x) - 0.5).sum::<f64>()
-                    + 0.3 * (f64::from(v[0]) - f64::from(v[3]));
-                f64::from(u8::from(s < 0.0))
-            },
-        },
-        Integrand {
-            name: "gaussian 4-D",
-            block: 0,
-            f: |v| {
-                let r2: f64 = v.iter().map(|&x| (f64::from(x) - 0.5).powi(2)).sum();
-                (-r2 / (2.0 * 0.25 * 0.25)).exp()
-            },
-        },
-    ]
+    );
+    v
 }
 
 /// The integral of `f`, from 2²⁰ Owen-scrambled Sobol points of four dimensions.
-fn reference(f: fn(&[f32]) -> f64) -> f64 {
+fn reference(f: BlockIntegrand) -> f64 {
     let mut s = OwenSobolSampler::new(1, 12345).unwrap();
     let n = 1u32 << 20;
     let mut sum = 0.0;
@@ -148,52 +127,9 @@ fn reference(f: fn(&[f32]) -> f64) -> f64 {
     sum / f64::from(n)
 }
 
-/// The low-frequency ratio of a square image (module docs), by a separable DFT.
-pub fn low_frequency_ratio(image: &[f64], size: usize) -> f64 {
-    let mean = image.iter().sum::<f64>() / image.len() as f64;
-    let tw: Vec<(f64, f64)> = (0..size)
-        .map(|k| {
-            let a = -std::f64::consts::TAU * k as f64 / size as f64;
-            (a.cos(), a.sin())
-        })
-        .collect();
-    let mut rows = vec![(0.0, 0.0); size * size];
-    for y in 0..size {
-        for u in 0..size {
-            let (mut re, mut im) = (0.0, 0.0);
-            for x in 0..size {
-                let (c, s) = tw[(u * x) % size];
-                let v = image[y * size + x] - mean;
-                re += v * c;
-                im += v * s;
-            }
-            rows[y * size + u] = (re, im);
-        }
-    }
-    let (mut low, mut nlow, mut all) = (0.0, 0usize, 0.0);
-    for v in 0..size {
-        for u in 0..size {
-            if (u, v) == (0, 0) {
-                continue;
-            }
-            let (mut re, mut im) = (0.0, 0.0);
-            for y in 0..size {
-                let (c, s) = tw[(v * y) % size];
-                let (a, b) = rows[y * size + u];
-                re += a * c - b * s;
-                im += a * s + b * c;
-            }
-            let p = re * re + im * im;
-            all += p;
-            let fu = u.min(size - u) as f64;
-            let fv = v.min(size - v) as f64;
-            if (fu * fu + fv * fv).sqrt() < size as f64 / 8.0 {
-                low += p;
-                nlow += 1;
-            }
-        }
-    }
-    (low / nlow.max(1) as f64) / (all / (size * size - 1) as f64)
+/// The low-frequency ratio of a square error image (module docs).
+fn low_frequency_ratio(image: &[f64], size: u32) -> f64 {
+    error_spectrum(image, size, size).map_or(f64::NAN, |s| s.low_frequency_ratio)
 }
 
 /// Runs the study and prints its tables.
@@ -216,11 +152,15 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
                     let err: Vec<f64> = values
                         .chunks(4 * spp as usize)
                         .map(|px| {
-                            px.chunks(4).map(|v| (g.f)(v)).sum::<f64>() / f64::from(spp) - exact[ii]
+                            px.chunks_exact(4)
+                                .map(|v| (g.f)(&[v[0], v[1], v[2], v[3]]))
+                                .sum::<f64>()
+                                / f64::from(spp)
+                                - exact[ii]
                         })
                         .collect();
                     let rmse = (err.iter().map(|e| e * e).sum::<f64>() / err.len() as f64).sqrt();
-                    results[si][ii][k] = (rmse, low_frequency_ratio(&err, size as usize));
+                    results[si][ii][k] = (rmse, low_frequency_ratio(&err, size));
                     if let Some(dir) = images
                         && spp == 4
                         && ii == 1

@@ -32,8 +32,8 @@ __all__ = ["samples", "Filter", "SAMPLERS", "FILTERS", "SCRAMBLES"]
 SAMPLERS = (
     "random", "uniform", "stratified", "halton", "hammersley", "zero-two", "sobol",
     "best-candidate", "adaptive", "owen-sobol", "owen-sobol-bn", "zsobol", "pmj02",
-    "bluenoise-dithered",
-    "fibonacci", "r2", "korobov",
+    "pmj02-bn", "bluenoise-dithered",
+    "fibonacci", "r2", "korobov", "lattice-bn",
 )
 """The pixel samplers' names (the CLI's ``--sampler`` list)."""
 

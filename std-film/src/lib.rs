@@ -19,6 +19,7 @@ pub mod adaptive;
 mod bounds;
 mod coverage;
 mod error;
+pub mod error_spectrum;
 pub mod extras;
 mod film;
 mod image;

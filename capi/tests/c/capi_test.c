@@ -199,8 +199,8 @@ static void samplers(void) {
                                   "halton",     "hammersley", "zero-two",
                                   "sobol",      "best-candidate", "adaptive",
                                   "owen-sobol", "owen-sobol-bn", "zsobol", "pmj02",
-                                  "bluenoise-dithered", "fibonacci", "r2",
-                                  "korobov"};
+                                  "pmj02-bn", "bluenoise-dithered", "fibonacci",
+                                  "r2", "korobov", "lattice-bn"};
     static const uint64_t seeds[] = {0, 7};
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
         for (size_t j = 0; j < 2; j++) {

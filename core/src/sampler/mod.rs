@@ -109,7 +109,6 @@ mod hammersley;
 mod lattice;
 mod named;
 mod owen_sobol;
-mod owen_sobol_bn;
 mod pmj02;
 mod random;
 pub mod screen_blue;
@@ -133,7 +132,7 @@ pub use named::{
     canonical_name, continues, spp_limit, strata,
 };
 pub use owen_sobol::OwenSobolSampler;
-pub use owen_sobol_bn::{OwenSobolBlueSampler, owen_sobol_blue_values};
+pub use screen_blue::{BlueNoiseSampler, LatticeBlueSampler, OwenSobolBlueSampler, Pmj02BlueSampler};
 pub(crate) use pmj02::Keys as Pmj02Keys;
 pub use pmj02::Pmj02Sampler;
 pub use random::RandomSampler;

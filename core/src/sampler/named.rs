@@ -5,7 +5,7 @@ use core::fmt;
 
 use super::{
     AdaptiveSampler, BestCandidateSampler, DitheredSampler, HaltonSampler, HammersleySampler,
-    Jitter, LatticeSampler, MaskView, OwenSobolBlueSampler, OwenSobolSampler, Pmj02Sampler,
+    Jitter, LatticeSampler, MaskView, OwenSobolBlueSampler, OwenSobolSampler, Pmj02Sampler, Pmj02BlueSampler, LatticeBlueSampler,
     RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
 };
 use crate::scramble::Scramble;
@@ -14,13 +14,13 @@ use crate::scramble::Scramble;
 ///
 /// ```
 /// use nyquist::sampler::{NamedSampler, NAMES};
-/// assert_eq!(NAMES.len(), 17);
+/// assert_eq!(NAMES.len(), 19);
 /// for name in NAMES {
 ///     let s = NamedSampler::new(name, [8, 8], 16, 1).unwrap();
 ///     assert_eq!(s.name(), name);
 /// }
 /// ```
-pub const NAMES: [&str; 17] = [
+pub const NAMES: [&str; 19] = [
     "random",
     "uniform",
     "stratified",
@@ -34,10 +34,12 @@ pub const NAMES: [&str; 17] = [
     "owen-sobol-bn",
     "zsobol",
     "pmj02",
+    "pmj02-bn",
     "bluenoise-dithered",
     "fibonacci",
     "r2",
     "korobov",
+    "lattice-bn",
 ];
 
 /// The names of [`NAMES`] that take a scramble through [`NamedSampler::with_scramble`].
@@ -97,7 +99,7 @@ pub fn canonical_name(name: &str) -> Option<&'static str> {
 /// assert!(CONTINUING_NAMES.iter().all(|n| NAMES.contains(n)));
 /// assert!(continues("ZSobol") && continues("sobol-plain") && !continues("zero-two"));
 /// ```
-pub const CONTINUING_NAMES: [&str; 7] = [
+pub const CONTINUING_NAMES: [&str; 9] = [
     "random",
     "halton",
     "sobol",
@@ -105,6 +107,8 @@ pub const CONTINUING_NAMES: [&str; 7] = [
     "owen-sobol-bn",
     "zsobol",
     "pmj02",
+    "pmj02-bn",
+    "lattice-bn",
 ];
 
 /// Whether sampler `name` (as [`canonical_name`] takes it) is one of [`CONTINUING_NAMES`],
@@ -279,6 +283,10 @@ pub enum NamedSampler {
     OwenSobol(OwenSobolSampler),
     /// `owen-sobol-bn`.
     OwenSobolBlue(OwenSobolBlueSampler),
+    /// `pmj02-bn`.
+    Pmj02Blue(Pmj02BlueSampler),
+    /// `lattice-bn`.
+    LatticeBlue(LatticeBlueSampler),
     /// `zsobol`.
     ZSobol(ZSobolSampler),
     /// `pmj02`.
@@ -303,6 +311,8 @@ macro_rules! delegate {
             NamedSampler::Adaptive($s) => $body,
             NamedSampler::OwenSobol($s) => $body,
             NamedSampler::OwenSobolBlue($s) => $body,
+            NamedSampler::Pmj02Blue($s) => $body,
+            NamedSampler::LatticeBlue($s) => $body,
             NamedSampler::ZSobol($s) => $body,
             NamedSampler::Pmj02($s) => $body,
             NamedSampler::Dithered($s) => $body,
@@ -333,6 +343,9 @@ impl NamedSampler {
     /// - `zsobol`: [`ZSobolSampler`] over the image, fast-Owen scrambled (spp rounded up to a
     ///   power of two);
     /// - `pmj02`: [`Pmj02Sampler`] (spp up to 65536);
+    /// - `pmj02-bn`, `lattice-bn`: [`Pmj02BlueSampler`] and [`LatticeBlueSampler`] (frame 0):
+    ///   PMJ(0,2) and an extensible rank-1 lattice per pixel, with blue-noise error across
+    ///   pixels;
     /// - `bluenoise-dithered`: a [`DitheredSampler`] over the `zero-two` set of pixel (0, 0),
     ///   shifted per pixel by the built-in 64 × 64 two-channel mask ([`MaskView::builtin`]);
     /// - `fibonacci`, `r2`, `korobov`: [`LatticeSampler::fibonacci`] (spp rounded up to a
@@ -414,6 +427,8 @@ impl NamedSampler {
                 NamedSampler::ZSobol(ZSobolSampler::new(size, spp, Scramble::FastOwen, seed)?)
             }
             "pmj02" => NamedSampler::Pmj02(Pmj02Sampler::new(spp, seed)?),
+            "pmj02-bn" => NamedSampler::Pmj02Blue(Pmj02BlueSampler::new(spp, seed)?),
+            "lattice-bn" => NamedSampler::LatticeBlue(LatticeBlueSampler::new(spp, seed)?),
             "bluenoise-dithered" => NamedSampler::Dithered(DitheredSampler::new(
                 ZeroTwoSampler::new(spp, seed)?,
                 MaskView::builtin(),
@@ -496,6 +511,8 @@ impl NamedSampler {
             NamedSampler::Adaptive(_) => "adaptive",
             NamedSampler::OwenSobol(_) => "owen-sobol",
             NamedSampler::OwenSobolBlue(_) => "owen-sobol-bn",
+            NamedSampler::Pmj02Blue(_) => "pmj02-bn",
+            NamedSampler::LatticeBlue(_) => "lattice-bn",
             NamedSampler::ZSobol(_) => "zsobol",
             NamedSampler::Pmj02(_) => "pmj02",
             NamedSampler::Dithered(_) => "bluenoise-dithered",
@@ -594,7 +611,7 @@ mod tests {
     fn names_build_the_samplers_they_name() {
         let size = [16, 16];
         for seed in [0u64, 7] {
-            let direct: [(&str, std::boxed::Box<dyn Sampler>); 17] = [
+            let direct: [(&str, std::boxed::Box<dyn Sampler>); 19] = [
                 (
                     "random",
                     std::boxed::Box::new(RandomSampler::new(16, seed).unwrap()),
@@ -663,6 +680,10 @@ mod tests {
                     std::boxed::Box::new(Pmj02Sampler::new(16, seed).unwrap()),
                 ),
                 (
+                    "pmj02-bn",
+                    std::boxed::Box::new(Pmj02BlueSampler::new(16, seed).unwrap()),
+                ),
+                (
                     "bluenoise-dithered",
                     std::boxed::Box::new(DitheredSampler::new(
                         ZeroTwoSampler::new(16, seed).unwrap(),
@@ -680,6 +701,10 @@ mod tests {
                 (
                     "korobov",
                     std::boxed::Box::new(LatticeSampler::korobov(16, seed).unwrap()),
+                ),
+                (
+                    "lattice-bn",
+                    std::boxed::Box::new(LatticeBlueSampler::new(16, seed).unwrap()),
                 ),
             ];
             for (i, (name, mut d)) in direct.into_iter().enumerate() {

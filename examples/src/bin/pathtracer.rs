@@ -190,7 +190,7 @@ struct RenderArgs {
     #[arg(long)]
     stateless: bool,
     /// With --stateless: make the sampler for this many samples per pixel and draw --spp of
-    /// them, past it where --spp is larger (random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02).
+    /// them, past it where --spp is larger (random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02, pmj02-bn, lattice-bn).
     #[arg(long, value_name = "N", requires = "stateless")]
     spp_hint: Option<u32>,
     /// With --stateless, draw the light points one get_2d each (pbrt-v4's counter) instead of

@@ -117,7 +117,7 @@ pub struct ConvergeSpec {
     pub dims: Option<u32>,
     /// Make every sampler for H samples per pixel and draw each N from it, past H or short of
     /// it: how a progressive renderer that keeps sampling sees the sampler. Takes the samplers
-    /// that continue past their spp (random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02; the
+    /// that continue past their spp (random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02, pmj02-bn, lattice-bn; the
     /// default list with this flag).
     #[cfg_attr(feature = "clap", arg(long, value_name = "H", value_parser = crate::flags::whole(1, MAX_SPP)))]
     pub spp_hint: Option<u32>,

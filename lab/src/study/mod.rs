@@ -239,7 +239,7 @@ impl fmt::Display for StudyError {
     /// let s = Study { samplers: vec!["zero-two".into()], spp_hint: Some(4), ..s };
     /// assert_eq!(s.check().unwrap_err().to_string(),
     ///            "zero-two at 16 spp: made for 4, it wraps past its spp (the samplers that \
-    ///             continue: random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02)");
+    ///             continue: random, halton, sobol, owen-sobol, owen-sobol-bn, zsobol, pmj02, pmj02-bn, lattice-bn)");
     /// ```
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.error {

@@ -1,0 +1,286 @@
+//! The power spectrum of an error image: how much of a render's error sits at low spatial
+//! frequencies, where a denoiser or the eye cannot remove it, and how much at high ones, where
+//! it can (blue noise).
+//!
+//! The periodogram `P(u, v) = |Σ_{x,y} (e(x, y) − ē) e^(−2πi (u x / W + v y / H))|²` of the
+//! centred image is taken on every frequency of the `W × H` grid (a separable FFT for power-of-two
+//! sides, a direct DFT otherwise). A frequency's radius is `ρ = √((u/W)² + (v/H)²)` in cycles
+//! per pixel, with `u`, `v` folded into `(−W/2, W/2]` and `(−H/2, H/2]`; the Nyquist radius is ½.
+//!
+//! Powers are stated relative to white noise of the same variance, whose expected periodogram
+//! is the same at every frequency: each figure is a mean power divided by the mean over all
+//! frequencies but 0. So white error measures about 1 everywhere, blue error well below 1 at
+//! low radii, and a smooth error image far above 1 there.
+//!
+//! ```
+//! use nyquist_film::error_spectrum::error_spectrum;
+//! // A checkerboard's power is all at the highest frequency: none below a quarter of Nyquist.
+//! let img: Vec<f64> = (0..64).map(|i| f64::from(((i % 8) + (i / 8)) % 2)).collect();
+//! let s = error_spectrum(&img, 8, 8).unwrap();
+//! assert!(s.low_frequency_ratio < 1e-12);
+//! ```
+
+use crate::Error;
+
+/// Radius of the low band, in cycles per pixel: a quarter of the Nyquist radius.
+pub const LOW_RADIUS: f64 = 0.125;
+
+/// Width of an annulus of [`ErrorSpectrum::radial`], in cycles per pixel (16 annuli up to the
+/// Nyquist radius ½).
+pub const ANNULUS_WIDTH: f64 = 1.0 / 32.0;
+
+/// Largest side [`error_spectrum`] takes (its direct DFT costs `W · H · (W + H)` for sides that
+/// are not powers of two).
+pub const MAX_SIDE: u32 = 8192;
+
+/// An error image's spectrum, relative to white noise of the same variance.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ErrorSpectrum {
+    /// Mean power at the frequencies `0 < ρ < ¼ · ½` ([`LOW_RADIUS`]), over the mean power of
+    /// every frequency but 0: about 1 for white error, well below 1 for blue error.
+    pub low_frequency_ratio: f64,
+    /// Mean power in each annulus `k · w ≤ ρ < (k + 1) · w` (`w` = [`ANNULUS_WIDTH`], `k` =
+    /// 0 … 15, frequency 0 left out), over the same mean; `NaN` for an annulus the grid has
+    /// no frequency in (the innermost ones of a small image).
+    pub radial: Vec<f64>,
+}
+
+/// The spectrum of the `width × height` image `image` (row-major), centred first, so a
+/// constant offset (a biased estimator) does not count.
+///
+/// # Errors
+/// [`Error::Config`] if `image.len() != width · height`, a side is 0 or above [`MAX_SIDE`],
+/// or the image has fewer than two pixels or a non-finite value; an image with no variation
+/// has no spectrum (`Error::Config` too).
+///
+/// ```
+/// use nyquist_film::error_spectrum::error_spectrum;
+/// assert!(error_spectrum(&[0.0; 6], 3, 2).is_err()); // constant
+/// assert!(error_spectrum(&[0.0, 1.0], 3, 2).is_err()); // wrong length
+/// ```
+pub fn error_spectrum(image: &[f64], width: u32, height: u32) -> Result<ErrorSpectrum, Error> {
+    let (w, h) = (width as usize, height as usize);
+    if w == 0 || h == 0 || width > MAX_SIDE || height > MAX_SIDE || w * h < 2 {
+        return Err(Error::Config(format!(
+            "error spectrum of a {width} × {height} image: sides from 1 to {MAX_SIDE}, two pixels at least"
+        )));
+    }
+    if image.len() != w * h {
+        return Err(Error::Config(format!(
+            "error spectrum: {} values for a {width} × {height} image",
+            image.len()
+        )));
+    }
+    if image.iter().any(|v| !v.is_finite()) {
+        return Err(Error::Config(
+            "error spectrum: the image has a value that is not finite".into(),
+        ));
+    }
+    let mean = image.iter().sum::<f64>() / image.len() as f64;
+    let mut data: Vec<(f64, f64)> = image.iter().map(|v| (v - mean, 0.0)).collect();
+    let row_plan = Dft::new(w);
+    for row in data.chunks_exact_mut(w) {
+        row_plan.run(row);
+    }
+    let col_plan = Dft::new(h);
+    let mut col = vec![(0.0, 0.0); h];
+    for u in 0..w {
+        for (y, c) in col.iter_mut().enumerate() {
+            *c = data[y * w + u];
+        }
+        col_plan.run(&mut col);
+        for (y, c) in col.iter().enumerate() {
+            data[y * w + u] = *c;
+        }
+    }
+    let annuli = (0.5 / ANNULUS_WIDTH) as usize;
+    let (mut all, mut low, mut nlow) = (0.0, 0.0, 0usize);
+    let mut ring = vec![(0.0, 0usize); annuli];
+    for v in 0..h {
+        for u in 0..w {
+            if (u, v) == (0, 0) {
+                continue;
+            }
+            let (re, im) = data[v * w + u];
+            let p = re * re + im * im;
+            all += p;
+            let fold = |k: usize, n: usize| (if k > n / 2 { n - k } else { k }) as f64 / n as f64;
+            let rho = fold(u, w).hypot(fold(v, h));
+            if rho < LOW_RADIUS {
+                low += p;
+                nlow += 1;
+            }
+            let k = (rho / ANNULUS_WIDTH) as usize;
+            if k < annuli {
+                ring[k].0 += p;
+                ring[k].1 += 1;
+            }
+        }
+    }
+    let white = all / (w * h - 1) as f64;
+    if white <= 0.0 {
+        return Err(Error::Config(
+            "error spectrum: the image is constant (no error to analyse)".into(),
+        ));
+    }
+    let ratio = |sum: f64, n: usize| {
+        if n == 0 {
+            f64::NAN
+        } else {
+            sum / n as f64 / white
+        }
+    };
+    Ok(ErrorSpectrum {
+        low_frequency_ratio: ratio(low, nlow),
+        radial: ring.iter().map(|&(s, n)| ratio(s, n)).collect(),
+    })
+}
+
+/// A one-dimensional DFT of length `n`: radix-2 FFT for a power of two, the direct sum
+/// otherwise, with the twiddles `e^(−2πi k/n)` computed once.
+struct Dft {
+    n: usize,
+    twiddles: Vec<(f64, f64)>,
+}
+
+impl Dft {
+    fn new(n: usize) -> Dft {
+        let twiddles = (0..n)
+            .map(|k| {
+                let a = -std::f64::consts::TAU * k as f64 / n as f64;
+                (libm::cos(a), libm::sin(a))
+            })
+            .collect();
+        Dft { n, twiddles }
+    }
+
+    /// Replaces `x` by its DFT.
+    fn run(&self, x: &mut [(f64, f64)]) {
+        let n = self.n;
+        let mul = |(a, b): (f64, f64), (c, d): (f64, f64)| (a * c - b * d, a * d + b * c);
+        if !n.is_power_of_two() {
+            let out: Vec<(f64, f64)> = (0..n)
+                .map(|k| {
+                    x.iter().enumerate().fold((0.0, 0.0), |acc, (j, &v)| {
+                        let t = mul(v, self.twiddles[(k * j) % n]);
+                        (acc.0 + t.0, acc.1 + t.1)
+                    })
+                })
+                .collect();
+            x.copy_from_slice(&out);
+            return;
+        }
+        // Bit-reversal permutation, then butterflies of growing span.
+        let bits = n.trailing_zeros();
+        for i in 0..n {
+            let j = if bits == 0 {
+                0
+            } else {
+                i.reverse_bits() >> (usize::BITS - bits)
+            };
+            if i < j {
+                x.swap(i, j);
+            }
+        }
+        let mut span = 1;
+        while span < n {
+            let step = n / (2 * span);
+            for start in (0..n).step_by(2 * span) {
+                for k in 0..span {
+                    let t = mul(x[start + k + span], self.twiddles[k * step]);
+                    let a = x[start + k];
+                    x[start + k] = (a.0 + t.0, a.1 + t.1);
+                    x[start + k + span] = (a.0 - t.0, a.1 - t.1);
+                }
+            }
+            span *= 2;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The FFT equals the direct DFT (lengths 1 … 64, powers of two and not).
+    #[test]
+    fn fft_is_the_dft() {
+        for n in [1usize, 2, 3, 4, 6, 8, 16, 17, 64] {
+            let x: Vec<(f64, f64)> = (0..n)
+                .map(|i| (((i * 7 + 3) % 11) as f64 - 5.0, ((i * 5) % 7) as f64))
+                .collect();
+            let mut fast = x.clone();
+            Dft::new(n).run(&mut fast);
+            for (k, got) in fast.iter().enumerate() {
+                let mut want = (0.0, 0.0);
+                for (j, v) in x.iter().enumerate() {
+                    let a = -std::f64::consts::TAU * (k * j) as f64 / n as f64;
+                    want.0 += v.0 * a.cos() - v.1 * a.sin();
+                    want.1 += v.0 * a.sin() + v.1 * a.cos();
+                }
+                assert!((got.0 - want.0).abs() < 1e-9 && (got.1 - want.1).abs() < 1e-9, "{n} {k}");
+            }
+        }
+    }
+
+    /// A cosine's power lands in its annulus and the low band, nowhere else, on a square and
+    /// on a non-square grid (a side that is not a power of two takes the direct DFT).
+    #[test]
+    fn a_cosine_lands_in_its_annulus_and_band() {
+        for (w, h) in [(32u32, 32u32), (48, 20)] {
+            // u = 3 cycles across: ρ = 3 / w, in the low band and annulus ⌊ρ / w⌋.
+            let img: Vec<f64> = (0..w * h)
+                .map(|i| (std::f64::consts::TAU * 3.0 * f64::from(i % w) / f64::from(w)).cos())
+                .collect();
+            let s = error_spectrum(&img, w, h).unwrap();
+            let rho = 3.0 / f64::from(w);
+            assert!(s.low_frequency_ratio > 10.0, "{w}×{h} {s:?}");
+            let k = (rho / ANNULUS_WIDTH) as usize;
+            for (j, r) in s.radial.iter().enumerate() {
+                if j == k {
+                    assert!(*r > 1.0, "{w}×{h} annulus {j}: {r}");
+                } else if r.is_finite() {
+                    assert!(*r < 1e-9, "{w}×{h} annulus {j}: {r}");
+                }
+            }
+        }
+    }
+
+    /// White noise: the low-frequency ratio's mean over 16 images of 64² is within 0.1 of 1
+    /// (its standard deviation per image is about 1/√(π·8²) ≈ 0.07, so the mean's is 0.018:
+    /// a false alarm is a 5.5-σ event), and every annulus near 1.
+    #[test]
+    fn white_noise_measures_one() {
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            state = nyquist::hash::mix64(state.wrapping_add(0x9e37_79b9_7f4a_7c15));
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let mut ratios = Vec::new();
+        let mut radial = vec![0.0; 16];
+        for _ in 0..16 {
+            let img: Vec<f64> = (0..64 * 64).map(|_| next()).collect();
+            let s = error_spectrum(&img, 64, 64).unwrap();
+            ratios.push(s.low_frequency_ratio);
+            for (a, r) in radial.iter_mut().zip(&s.radial) {
+                *a += r / 16.0;
+            }
+        }
+        let mean = ratios.iter().sum::<f64>() / 16.0;
+        assert!((mean - 1.0).abs() < 0.1, "{ratios:?}");
+        for (k, r) in radial.iter().enumerate().skip(1) {
+            assert!((r - 1.0).abs() < 0.25, "annulus {k}: {r}");
+        }
+    }
+
+    #[test]
+    fn bad_images_are_refused() {
+        assert!(error_spectrum(&[], 0, 0).is_err());
+        assert!(error_spectrum(&[1.0], 1, 1).is_err());
+        assert!(error_spectrum(&[1.0, f64::NAN], 2, 1).is_err());
+        assert!(error_spectrum(&[1.0, 2.0, 3.0], 2, 1).is_err());
+        assert!(error_spectrum(&[2.0; 4], 2, 2).is_err());
+        assert!(error_spectrum(&vec![0.0; 2], MAX_SIDE + 1, 1).is_err());
+        assert!(error_spectrum(&[1.0, 2.0], 2, 1).is_ok());
+    }
+}
