@@ -332,13 +332,122 @@ fn level_means(family: Family, tests: &[Test], entry: u32, level: u32) -> Vec<f6
     sums.iter().map(|s| s / f64::from(n)).collect()
 }
 
-/// The rank stage: for `n = 2^(levels − 1)` down to 1, each pixel chooses rank bit `log₂ n`
-/// (which of two aligned blocks of `n` points its first `n` samples are, given the bits
-/// above) to lower the energy of the level-`n` errors, by coordinate descent over the pixels
-/// (eight sweeps in a random order). Here the energy keeps each pixel's own term,
-/// `Σ_p |e_p|²` (the kernel's weight at distance 0 is 1): the key stage permutes the error
-/// vectors, which leaves that sum alone, but a rank chooses between two, and without the term
-/// the larger error of opposite sign to its neighbours would win.
+/// Rank bits the rank stage chooses together, from the top ([`choose_ranks`]).
+const JOINT_BITS: u32 = 4;
+
+/// The rank stage's joint step: sets rank bits `low .. levels` of every entry, `low = levels −
+/// min(levels, JOINT_BITS)`, and returns `low`.
+fn choose_top_ranks(
+    spec: &TileSpec,
+    tests: &[Test],
+    entries: &mut [u32],
+    rng: &mut nyquist::rng::DefaultRng,
+) -> u32 {
+    let t = tests.len();
+    let n = entries.len();
+    let top = spec.levels.min(JOINT_BITS);
+    let low = spec.levels - top;
+    let options = 1usize << top;
+    let levels = top as usize;
+    // Per pixel and option, the errors at levels low .. levels − 1: option `o` puts the first
+    // 2^l samples in the aligned block of 2^l containing sample o · 2^low.
+    let c = levels * t;
+    let rows = per_key(entries, |entry| {
+        let mut block = vec![0f64; options * t];
+        for i in 0..1u32 << spec.levels {
+            let x = spec.family.values(entry, i);
+            let b = (i >> low) as usize;
+            for (j, test) in tests.iter().enumerate() {
+                block[b * t + j] += test.eval(&x);
+            }
+        }
+        let mut out = vec![0f32; options * c];
+        for o in 0..options {
+            for li in 0..levels {
+                let start = (o >> li) << li;
+                let count = f64::from(1u32 << (low as usize + li));
+                for j in 0..t {
+                    let sum: f64 = (start..start + (1 << li)).map(|b| block[b * t + j]).sum();
+                    out[o * c + li * t + j] = (sum / count) as f32;
+                }
+            }
+        }
+        out
+    });
+    let mut e: Vec<f32> = rows.into_iter().flatten().collect();
+    // One centring and scale per component, over every pixel and option.
+    for k in 0..c {
+        let all = || (0..n * options).map(|po| f64::from(e[po * c + k]));
+        let count = (n * options) as f64;
+        let mean = all().sum::<f64>() / count;
+        let var = all().map(|v| (v - mean).powi(2)).sum::<f64>() / count;
+        let scale = if var > 0.0 { 1.0 / var.sqrt() } else { 0.0 };
+        for po in 0..n * options {
+            e[po * c + k] = ((f64::from(e[po * c + k]) - mean) * scale) as f32;
+        }
+    }
+    let at = |p: usize, o: usize| &e[(p * options + o) * c..(p * options + o + 1) * c];
+    let mut chosen = vec![0usize; n];
+    let current: Vec<f32> = (0..n).flat_map(|p| at(p, 0).to_vec()).collect();
+    let mut s = blurred(&current, c, spec.size);
+    let win = window();
+    let m = spec.size as i32;
+    let norm = |v: &[f32]| v.iter().map(|&x| f64::from(x).powi(2)).sum::<f64>();
+    for _ in 0..8 {
+        for _ in 0..n {
+            let p = uniform_below(rng, n as u32) as usize;
+            let from = at(p, chosen[p]);
+            let own_from = norm(from);
+            let mut best = (0.0, chosen[p]);
+            for o in 0..options {
+                if o == chosen[p] {
+                    continue;
+                }
+                let to = at(p, o);
+                let dot: f64 = (0..c)
+                    .map(|k| (f64::from(to[k]) - f64::from(from[k])) * s[p * c + k])
+                    .sum();
+                let delta = 2.0 * dot + norm(to) - own_from;
+                if delta < best.0 {
+                    best = (delta, o);
+                }
+            }
+            if best.1 == chosen[p] {
+                continue;
+            }
+            let to = at(p, best.1);
+            let d: Vec<f64> = (0..c)
+                .map(|k| f64::from(to[k]) - f64::from(from[k]))
+                .collect();
+            chosen[p] = best.1;
+            let (cx, cy) = ((p as i32) % m, (p as i32) / m);
+            for &(dx, dy, w) in &win {
+                let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
+                for k in 0..c {
+                    s[r * c + k] += w * d[k];
+                }
+            }
+        }
+    }
+    for (entry, o) in entries.iter_mut().zip(chosen) {
+        *entry |= (o as u32) << low;
+    }
+    low
+}
+
+/// The rank stage. First the top [`JOINT_BITS`] rank bits together: each pixel chooses which
+/// aligned block of `2^(levels − JOINT_BITS)` of its first `2^levels` samples comes first
+/// (sixteen choices for the shipped spec), to lower the summed energy of the errors at those
+/// levels (16 … 128 spp for the shipped spec), so that 16 and 32 spp get as many choices as
+/// 128 does rather than the one bit the levels above leave them. Then, for the levels below,
+/// from the top down, rank bit `log₂ n` alone (which of two aligned blocks of `n` points the
+/// first `n` samples are, given the bits above) for the level-`n` errors. Both by coordinate
+/// descent over the pixels (eight sweeps in a random order).
+///
+/// Here the energy keeps each pixel's own term, `Σ_p |e_p|²` (the kernel's weight at distance
+/// 0 is 1): the key stage permutes the error vectors, which leaves that sum alone, but a rank
+/// chooses between errors, and without the term the larger error of opposite sign to its
+/// neighbours would win.
 fn choose_ranks(spec: &TileSpec, entries: &mut [u32]) {
     let tests = tests(spec.seed);
     let t = tests.len();
@@ -346,7 +455,8 @@ fn choose_ranks(spec: &TileSpec, entries: &mut [u32]) {
     let n = entries.len();
     let win = window();
     let mut rng = default_rng(spec.seed ^ 0x5241_4e4b); // "RANK"
-    for level in (0..spec.levels).rev() {
+    let low = choose_top_ranks(spec, &tests, entries, &mut rng);
+    for level in (0..low).rev() {
         let bit = 1u32 << level;
         let mut e0 = vec![0f32; n * t];
         let mut e1 = vec![0f32; n * t];

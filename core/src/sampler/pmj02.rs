@@ -15,7 +15,7 @@ const REQUEST_STEP: u64 = 0x9e37_79b9_7f4a_7c15;
 
 /// The three keys of one request (a 2D pair or a 1D value at one dimension of one pixel): the
 /// index shuffle and the Owen scrambles of x and y, each a well-mixed 32-bit hash.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct Keys {
     shuffle: Key,
     pub(crate) x: Key,
@@ -24,7 +24,7 @@ pub(crate) struct Keys {
 
 /// One [`lk_hash`](crate::scramble::lk_hash) seed with its multiplier, derived once per key
 /// rather than per hash.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct Key {
     seed: u32,
     multiplier: u32,
@@ -56,7 +56,7 @@ impl Keys {
     /// Keys of request `request` (`2d` for the pair at dimension `d`, `2d + 1` for the 1D value
     /// there: the two kinds never share keys) of the pixel whose key is `pixel_key`.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub(crate) fn new(pixel_key: u64, request: u64) -> Keys {
+    fn new(pixel_key: u64, request: u64) -> Keys {
         let h = mix64(pixel_key ^ request.wrapping_mul(REQUEST_STEP));
         let g = mix64(h ^ 0x706d_6a30_3279);
         Keys {
@@ -85,13 +85,6 @@ impl Keys {
             reversed_to_f32(self.x.hash_premixed(x)),
             reversed_to_f32(self.y.hash_premixed(y)),
         ]
-    }
-
-    /// Coordinate `axis` (0 for x, 1 for y) of [`point`](Self::point)`(row)`.
-    #[cfg_attr(not(feature = "small-code"), inline(always))]
-    pub(crate) fn coordinate(&self, row: usize, axis: usize) -> f32 {
-        let key = if axis == 0 { self.x } else { self.y };
-        reversed_to_f32(key.hash_premixed(PMJ02_PREMIXED[row][axis]))
     }
 
     /// The 1D value of the sample whose 16-bit index reversed into a 32-bit word is

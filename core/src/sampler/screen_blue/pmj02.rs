@@ -1,19 +1,24 @@
 //! The PMJ(0,2) family of the blue-noise samplers.
 
 use super::{BlueFamily, TileBytes, read};
-use crate::hash::{hash2, mix32};
-use crate::sampler::Pmj02Keys;
-use crate::scramble::reverse16;
+use crate::hash::mix32;
+use crate::math::fraction_to_f32;
+use crate::sequence::{IndexShuffle, PMJ02_TABLE};
 
 /// The optimised tile of [`Pmj02Blue`].
 static TILE: TileBytes = include!("pmj02_tile.in");
 
 /// Progressive multi-jittered (0,2) points in 4-D blocks: a block is two pairs, each a point
-/// of the baked pmj02 table ([`PMJ02_TABLE`](crate::sequence::PMJ02_TABLE)) at a nested
-/// uniform shuffle of the index, its coordinates Owen-scrambled, with keys hashed from the
-/// entry's key and the pair (the [`Pmj02Sampler`](crate::sampler::Pmj02Sampler)'s
-/// randomisation). So each pair is a (0, k, 2)-net at every `2^k`, and the two pairs are
-/// shuffled independently. Past 65536 samples (the table) each epoch of 65536 is hashed anew.
+/// of the baked pmj02 table ([`PMJ02_TABLE`]) at a nested uniform shuffle of the index, its
+/// coordinates XOR-ed with a random digital shift, with shuffles and shifts hashed from the
+/// entry's key and the pair. So each pair is a (0, k, 2)-net at every `2^k` (the shuffle maps
+/// the first `2^k` samples onto an aligned block of the table, which is a net, and a digital
+/// shift keeps a net a net), and the two pairs are shuffled independently.
+///
+/// A digital shift, not an Owen scramble (which [`Pmj02Sampler`](crate::sampler::Pmj02Sampler)
+/// applies): it keeps the table's jitter below the net's strata, which is what makes a pmj02
+/// set's error lower than an Owen-scrambled Sobol net's (docs/blue-noise.md measures it). Past
+/// 65536 samples (the table) each epoch of 65536 is hashed anew.
 ///
 /// ```
 /// use nyquist::sampler::screen_blue::{BlueFamily, Pmj02Blue};
@@ -23,31 +28,39 @@ static TILE: TileBytes = include!("pmj02_tile.in");
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Pmj02Blue;
 
-/// One 4-D block's randomisation: the rank, the entry's hashed key, and the two pairs' keys in
-/// the first epoch.
-#[derive(Clone, Copy, Debug, Default)]
+/// One 4-D block's randomisation in one epoch of 65536 samples: the rank, the two pairs'
+/// index shuffles and the four coordinates' digital shifts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Pmj02Block {
     rank: u32,
-    key: u64,
-    pairs: [Pmj02Keys; 2],
+    key: u32,
+    shuffles: [IndexShuffle; 2],
+    shifts: [u32; 4],
 }
 
-/// A sample of a block: each pair's table row, and the epoch (`index >> 16`).
-#[derive(Clone, Copy, Debug, Default)]
+impl Pmj02Block {
+    /// The block of hashed key `key` in `epoch`.
+    #[cfg_attr(not(feature = "small-code"), inline(always))]
+    fn new(rank: u32, key: u32, epoch: u32) -> Pmj02Block {
+        let k = if epoch == 0 {
+            key
+        } else {
+            mix32(key ^ mix32(epoch))
+        };
+        Pmj02Block {
+            rank,
+            key,
+            shuffles: [0x5348_5546u32, 0x5348_5547].map(|t| IndexShuffle::new(mix32(k ^ t))), // "SHUF"
+            shifts: [1u32, 2, 3, 4].map(|c| mix32(k ^ c.wrapping_mul(0x9e37_79b9))),
+        }
+    }
+}
+
+/// A sample of a block: each pair's table index, and the epoch (`index >> 16`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Pmj02Index {
-    rows: [u16; 2],
+    points: [u16; 2],
     epoch: u32,
-}
-
-/// The two pairs' keys of `key` in `epoch`.
-#[cfg_attr(not(feature = "small-code"), inline(always))]
-fn pair_keys(key: u64, epoch: u32) -> [Pmj02Keys; 2] {
-    let key = if epoch == 0 {
-        key
-    } else {
-        hash2(key, u64::from(epoch))
-    };
-    [0, 1].map(|p| Pmj02Keys::new(key, p))
 }
 
 impl BlueFamily for Pmj02Blue {
@@ -62,37 +75,34 @@ impl BlueFamily for Pmj02Blue {
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn block(entry: u32) -> Pmj02Block {
-        let key = u64::from(mix32((entry >> 8) ^ 0x504d_4a00)); // "PMJ"
-        Pmj02Block {
-            rank: entry & 0xff,
-            key,
-            pairs: pair_keys(key, 0),
-        }
+        Pmj02Block::new(entry & 0xff, mix32((entry >> 8) ^ 0x504d_4a00), 0) // "PMJ"
     }
 
-    /// The rank XOR-ed into the index, then each pair's shuffled table row.
+    /// The rank XOR-ed into the index, then each pair's shuffled table index: the shuffle of
+    /// the index's low 16 bits within `0 .. 2^16`.
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn index(b: &Pmj02Block, index: u32) -> Pmj02Index {
         let index = index ^ b.rank;
         let epoch = index >> 16;
-        let rev = reverse16(index) << 16;
-        let rows = if epoch == 0 {
-            b.pairs.map(|k| k.row(rev) as u16)
+        let point = |b: &Pmj02Block, p: usize| (b.shuffles[p].rev(index & 0xffff).reverse_bits()) as u16;
+        let points = if epoch == 0 {
+            [point(b, 0), point(b, 1)]
         } else {
-            pair_keys(b.key, epoch).map(|k| k.row(rev) as u16)
+            let e = Pmj02Block::new(b.rank, b.key, epoch);
+            [point(&e, 0), point(&e, 1)]
         };
-        Pmj02Index { rows, epoch }
+        Pmj02Index { points, epoch }
     }
 
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn value(b: &Pmj02Block, i: &Pmj02Index, c: u32) -> f32 {
-        let pair = (c / 2) as usize;
-        let row = usize::from(i.rows[pair]);
-        if i.epoch == 0 {
-            b.pairs[pair].coordinate(row, (c % 2) as usize)
+        let shift = if i.epoch == 0 {
+            b.shifts[c as usize]
         } else {
-            pair_keys(b.key, i.epoch)[pair].coordinate(row, (c % 2) as usize)
-        }
+            Pmj02Block::new(b.rank, b.key, i.epoch).shifts[c as usize]
+        };
+        let point = PMJ02_TABLE[usize::from(i.points[(c / 2) as usize])];
+        fraction_to_f32(point[(c % 2) as usize] ^ shift)
     }
 }
 
