@@ -169,6 +169,17 @@ struct NyqHaltonSampler {
     int _end_pad_0;
 };
 
+struct NyqBlueSampler {
+    uint2 seed;
+    uint frame;
+    int _pad2_0;
+    uint2 pixel;
+    uint index;
+    uint dim;
+    uint2 key;
+    uint2 prepared;
+};
+
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -239,6 +250,11 @@ static const uint2 NYQ_OWEN_TAG_UNIFORM = uint2(1599426121u, 1331119438u);
 static const uint2 NYQ_OWEN_TAG_AFFINE = uint2(1598113350u, 1331119438u);
 static const uint2 NYQ_OWEN_LEVEL_STEP = uint2(2135587861u, 2654435769u);
 static const uint2 NYQ_OWEN_PREFIX_MUL = uint2(656542357u, 1367130551u);
+static const uint NYQ_BLUE_OWEN_SOBOL = 0u;
+static const uint NYQ_BLUE_PMJ02_ = 1u;
+static const uint NYQ_BLUE_LATTICE = 2u;
+static const uint NYQ_BLUE_TILE_SIZE = 128u;
+static const uint4 NYQ_LATTICE_BN_GENERATOR = uint4(1u, 364981u, 245389u, 97823u);
 static const uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 static const uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 static const uint NYQ_FILL_RANDOM_SAMPLER = 2u;
@@ -247,6 +263,9 @@ static const uint NYQ_FILL_STRATIFIED_SAMPLER = 4u;
 static const uint NYQ_FILL_PMJ02_SAMPLER = 5u;
 static const uint NYQ_FILL_SOBOL_SAMPLER = 6u;
 static const uint NYQ_FILL_HALTON_SAMPLER = 7u;
+static const uint NYQ_FILL_OWEN_SOBOL_BN_SAMPLER = 8u;
+static const uint NYQ_FILL_PMJ02_BN_SAMPLER = 9u;
+static const uint NYQ_FILL_LATTICE_BN_SAMPLER = 10u;
 static const uint NYQ_FILL_SOBOL = 16u;
 static const uint NYQ_FILL_OWEN_SOBOL = 17u;
 static const uint NYQ_FILL_PMJ02_ = 18u;
@@ -255,6 +274,7 @@ static const uint NYQ_FILL_LATTICE = 20u;
 
 ByteAddressBuffer nyq_sobol_matrices : register(t0);
 ByteAddressBuffer nyq_halton_bases : register(t4);
+ByteAddressBuffer nyq_blue_tiles : register(t5);
 cbuffer nyq_job : register(b1) { NyqFillJob nyq_job; }
 ByteAddressBuffer nyq_requests : register(t2);
 RWByteAddressBuffer nyq_values : register(u3);
@@ -285,14 +305,14 @@ uint2 nyq_add64_(uint2 a_2, uint2 b_2)
     return uint2(low_1, ((a_2.y + b_2.y) + ((low_1 < a_2.x) ? 1u : 0u)));
 }
 
-uint2 nyq_shr64_(uint2 a_3, uint s_8)
+uint2 nyq_shr64_(uint2 a_3, uint s_10)
 {
-    return uint2(((a_3.x >> s_8) | (a_3.y << (32u - s_8))), (a_3.y >> s_8));
+    return uint2(((a_3.x >> s_10) | (a_3.y << (32u - s_10))), (a_3.y >> s_10));
 }
 
-uint2 nyq_shl64_(uint2 a_4, uint s_9)
+uint2 nyq_shl64_(uint2 a_4, uint s_11)
 {
-    return uint2((a_4.x << s_9), ((a_4.y << s_9) | (a_4.x >> (32u - s_9))));
+    return uint2((a_4.x << s_11), ((a_4.y << s_11) | (a_4.x >> (32u - s_11))));
 }
 
 uint2 nyq_u64_(uint x)
@@ -382,18 +402,18 @@ float nyq_rev_to_f32_(uint w_rev)
     return _e2;
 }
 
-uint nyq_shr(uint x_3, uint s_10)
+uint nyq_shr(uint x_3, uint s_12)
 {
-    return ((s_10 >= 32u) ? 0u : (x_3 >> (s_10 & 31u)));
+    return ((s_12 >= 32u) ? 0u : (x_3 >> (s_12 & 31u)));
 }
 
 float nyq_film_coordinate(uint pixel, float offset)
 {
     float base_2 = float(pixel);
-    float x_25 = (base_2 + offset);
+    float x_26 = (base_2 + offset);
     float edge = (base_2 + 1.0);
-    if ((x_25 < edge)) {
-        return x_25;
+    if ((x_26 < edge)) {
+        return x_26;
     }
     float below = asfloat((asuint(edge) - 1u));
     return ((below >= base_2) ? below : base_2);
@@ -544,24 +564,24 @@ NyqSobol nyq_sobol(uint dims, bool scrambled, uint2 seed_5)
     return nyqsobol;
 }
 
-uint nyq_sobol_sample_u32_(NyqSobol s_11, uint index_2, uint dim_2)
+uint nyq_sobol_sample_u32_(NyqSobol s_13, uint index_2, uint dim_2)
 {
     uint shift = 0u;
 
-    uint d_6 = naga_mod(dim_2, s_11.dims);
-    if ((s_11.scrambled != 0u)) {
-        const uint2 _e11 = nyq_u64_(d_6);
-        const uint2 _e12 = nyq_hash2_(s_11.seed, _e11);
+    uint d_8 = naga_mod(dim_2, s_13.dims);
+    if ((s_13.scrambled != 0u)) {
+        const uint2 _e11 = nyq_u64_(d_8);
+        const uint2 _e12 = nyq_hash2_(s_13.seed, _e11);
         shift = _e12.y;
     }
-    const uint _e14 = nyq_sobol_u32_(index_2, d_6);
+    const uint _e14 = nyq_sobol_u32_(index_2, d_8);
     uint _e15 = shift;
     return (_e14 ^ _e15);
 }
 
-float nyq_sobol_sample(NyqSobol s_12, uint index_3, uint dim_3)
+float nyq_sobol_sample(NyqSobol s_14, uint index_3, uint dim_3)
 {
-    const uint _e3 = nyq_sobol_sample_u32_(s_12, index_3, dim_3);
+    const uint _e3 = nyq_sobol_sample_u32_(s_14, index_3, dim_3);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -891,7 +911,7 @@ uint4 ZeroValueuint4() {
     return (uint4)0;
 }
 
-uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_13, uint t_in)
+uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_15, uint t_in)
 {
     uint low = 0u;
     uint t = (uint)0;
@@ -914,42 +934,42 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_13, uint t_in)
             bool should_continue = false;
             switch((k_16 >> 2u)) {
                 case 0u: {
-                    uint4 _e15 = s_13.inverse0_;
+                    uint4 _e15 = s_15.inverse0_;
                     four = _e15;
                     break;
                 }
                 case 1u: {
-                    uint4 _e17 = s_13.inverse1_;
+                    uint4 _e17 = s_15.inverse1_;
                     four = _e17;
                     break;
                 }
                 case 2u: {
-                    uint4 _e19 = s_13.inverse2_;
+                    uint4 _e19 = s_15.inverse2_;
                     four = _e19;
                     break;
                 }
                 case 3u: {
-                    uint4 _e21 = s_13.inverse3_;
+                    uint4 _e21 = s_15.inverse3_;
                     four = _e21;
                     break;
                 }
                 case 4u: {
-                    uint4 _e23 = s_13.inverse4_;
+                    uint4 _e23 = s_15.inverse4_;
                     four = _e23;
                     break;
                 }
                 case 5u: {
-                    uint4 _e25 = s_13.inverse5_;
+                    uint4 _e25 = s_15.inverse5_;
                     four = _e25;
                     break;
                 }
                 case 6u: {
-                    uint4 _e27 = s_13.inverse6_;
+                    uint4 _e27 = s_15.inverse6_;
                     four = _e27;
                     break;
                 }
                 default: {
-                    uint4 _e29 = s_13.inverse7_;
+                    uint4 _e29 = s_15.inverse7_;
                     four = _e29;
                     break;
                 }
@@ -966,10 +986,10 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_13, uint t_in)
     return _e41;
 }
 
-uint nyq_sobol_sampler_index(inout NyqSobolSampler s_14, uint2 pixel_1, uint sample_index)
+uint nyq_sobol_sampler_index(inout NyqSobolSampler s_16, uint2 pixel_1, uint sample_index)
 {
-    uint m_5 = s_14.m;
-    uint _e6 = s_14.spp;
+    uint m_5 = s_16.m;
+    uint _e6 = s_16.spp;
     uint si = naga_mod(sample_index, _e6);
     uint high = (((2u * m_5) >= 32u) ? 0u : (si << ((2u * m_5) & 31u)));
     uint mask_1 = ((m_5 == 0u) ? 0u : (4294967295u >> ((32u - m_5) & 31u)));
@@ -979,22 +999,22 @@ uint nyq_sobol_sampler_index(inout NyqSobolSampler s_14, uint2 pixel_1, uint sam
     const uint _e41 = nyq_sobol_u32_(high, 1u);
     const uint _e42 = nyq_top(_e41, m_5);
     uint have = (_e39 | (_e42 << (m_5 & 31u)));
-    const uint _e48 = nyq_sobol_sampler_invert(s_14, (want ^ have));
+    const uint _e48 = nyq_sobol_sampler_invert(s_16, (want ^ have));
     return (high | _e48);
 }
 
-float nyq_sobol_sampler_value(inout NyqSobolSampler s_15, uint dim_4)
+float nyq_sobol_sampler_value(inout NyqSobolSampler s_17, uint dim_4)
 {
     uint v_3 = (uint)0;
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
 
-    uint d_7 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
-    uint2 seed_29 = s_15.seed;
-    uint _e7 = s_15.index;
-    const uint _e8 = nyq_sobol_u32_(_e7, d_7);
+    uint d_9 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
+    uint2 seed_34 = s_17.seed;
+    uint _e7 = s_17.index;
+    const uint _e8 = nyq_sobol_u32_(_e7, d_9);
     v_3 = _e8;
-    uint how_3 = s_15.scramble;
+    uint how_3 = s_17.scramble;
     if (!((how_3 == NYQ_SCRAMBLE_FAST_OWEN))) {
         local_1 = (how_3 == NYQ_SCRAMBLE_OWEN);
     } else {
@@ -1004,31 +1024,31 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_15, uint dim_4)
     if (_e20) {
         uint _e21 = v_3;
         uint _e22 = v_3;
-        uint _e24 = s_15.m;
-        if ((d_7 < 2u)) {
-            uint _e33 = s_15.m;
+        uint _e24 = s_17.m;
+        if ((d_9 < 2u)) {
+            uint _e33 = s_17.m;
             local_2 = (_e33 < 32u);
         } else {
             local_2 = false;
         }
         bool _e37 = local_2;
         uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
-        const uint2 _e39 = nyq_u64_(d_7);
-        const uint2 _e40 = nyq_hash2_(seed_29, _e39);
+        const uint2 _e39 = nyq_u64_(d_9);
+        const uint2 _e40 = nyq_hash2_(seed_34, _e39);
         const uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         const float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
-    if ((d_7 < 2u)) {
+    if ((d_9 < 2u)) {
         uint _e46 = v_3;
-        uint _e49 = s_15.shift[min(uint(d_7), 1u)];
-        uint _e52 = s_15.m;
+        uint _e49 = s_17.shift[min(uint(d_9), 1u)];
+        uint _e52 = s_17.m;
         v_3 = ((_e46 ^ _e49) << _e52);
     } else {
         if ((how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
             uint _e56 = v_3;
-            const uint2 _e57 = nyq_u64_(d_7);
-            const uint2 _e58 = nyq_hash2_(seed_29, _e57);
+            const uint2 _e57 = nyq_u64_(d_9);
+            const uint2 _e58 = nyq_hash2_(seed_34, _e57);
             v_3 = (_e56 ^ _e58.x);
         }
     }
@@ -1037,37 +1057,37 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_15, uint dim_4)
     return _e62;
 }
 
-void nyq_sobol_sampler_start(inout NyqSobolSampler s_16, uint2 pixel_2, uint sample_index_1, uint dim_5)
+void nyq_sobol_sampler_start(inout NyqSobolSampler s_18, uint2 pixel_2, uint sample_index_1, uint dim_5)
 {
-    const uint _e5 = nyq_sobol_sampler_index(s_16, pixel_2, sample_index_1);
-    s_16.index = _e5;
-    s_16.dim = dim_5;
+    const uint _e5 = nyq_sobol_sampler_index(s_18, pixel_2, sample_index_1);
+    s_18.index = _e5;
+    s_18.dim = dim_5;
     return;
 }
 
-float nyq_sobol_sampler_get_1d(inout NyqSobolSampler s_17)
+float nyq_sobol_sampler_get_1d(inout NyqSobolSampler s_19)
 {
-    uint d_8 = s_17.dim;
-    s_17.dim = (d_8 + 1u);
-    const float _e6 = nyq_sobol_sampler_value(s_17, d_8);
+    uint d_10 = s_19.dim;
+    s_19.dim = (d_10 + 1u);
+    const float _e6 = nyq_sobol_sampler_value(s_19, d_10);
     return _e6;
 }
 
-float2 nyq_sobol_sampler_get_2d(inout NyqSobolSampler s_18)
+float2 nyq_sobol_sampler_get_2d(inout NyqSobolSampler s_20)
 {
-    uint d_9 = s_18.dim;
-    s_18.dim = (d_9 + 2u);
-    const float _e6 = nyq_sobol_sampler_value(s_18, d_9);
-    const float _e9 = nyq_sobol_sampler_value(s_18, (d_9 + 1u));
+    uint d_11 = s_20.dim;
+    s_20.dim = (d_11 + 2u);
+    const float _e6 = nyq_sobol_sampler_value(s_20, d_11);
+    const float _e9 = nyq_sobol_sampler_value(s_20, (d_11 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_sobol_sampler_get_pixel_2d(inout NyqSobolSampler s_19)
+float2 nyq_sobol_sampler_get_pixel_2d(inout NyqSobolSampler s_21)
 {
-    uint _e3 = s_19.dim;
-    s_19.dim = max(_e3, 2u);
-    const float _e7 = nyq_sobol_sampler_value(s_19, 0u);
-    const float _e9 = nyq_sobol_sampler_value(s_19, 1u);
+    uint _e3 = s_21.dim;
+    s_21.dim = max(_e3, 2u);
+    const float _e7 = nyq_sobol_sampler_value(s_21, 0u);
+    const float _e9 = nyq_sobol_sampler_value(s_21, 1u);
     return float2(_e7, _e9);
 }
 
@@ -1079,12 +1099,12 @@ NyqCameraSample ConstructNyqCameraSample(float2 arg0, float2 arg1, float arg2) {
     return ret;
 }
 
-NyqCameraSample nyq_sobol_sampler_camera_sample(inout NyqSobolSampler s_20, uint2 pixel_3, uint sample_index_2)
+NyqCameraSample nyq_sobol_sampler_camera_sample(inout NyqSobolSampler s_22, uint2 pixel_3, uint sample_index_2)
 {
-    nyq_sobol_sampler_start(s_20, pixel_3, sample_index_2, 0u);
-    const float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_20);
-    const float _e5 = nyq_sobol_sampler_get_1d(s_20);
-    const float2 _e6 = nyq_sobol_sampler_get_2d(s_20);
+    nyq_sobol_sampler_start(s_22, pixel_3, sample_index_2, 0u);
+    const float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_22);
+    const float _e5 = nyq_sobol_sampler_get_1d(s_22);
+    const float2 _e6 = nyq_sobol_sampler_get_2d(s_22);
     const float _e9 = nyq_film_coordinate(pixel_3.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_3.y, _e4.y);
     float2 film = float2(_e9, _e12);
@@ -1130,28 +1150,28 @@ NyqOwenSobol nyq_owen_sobol(uint dims_1, uint2 seed_7)
     return nyqowensobol;
 }
 
-uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_21, uint index_5, uint dim_8)
+uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_23, uint index_5, uint dim_8)
 {
-    uint d_10 = naga_mod(dim_8, s_21.dims);
-    const uint _e6 = nyq_shuffle_rev(index_5, s_21.shuffle_seed);
-    const uint _e8 = nyq_dim_seed(s_21.key, d_10);
-    const uint _e9 = nyq_owen_sobol_rev(_e6, d_10, _e8);
+    uint d_12 = naga_mod(dim_8, s_23.dims);
+    const uint _e6 = nyq_shuffle_rev(index_5, s_23.shuffle_seed);
+    const uint _e8 = nyq_dim_seed(s_23.key, d_12);
+    const uint _e9 = nyq_owen_sobol_rev(_e6, d_12, _e8);
     return reversebits(_e9);
 }
 
-float nyq_owen_sobol_sample(NyqOwenSobol s_22, uint index_6, uint dim_9)
+float nyq_owen_sobol_sample(NyqOwenSobol s_24, uint index_6, uint dim_9)
 {
-    const uint _e3 = nyq_owen_sobol_sample_u32_(s_22, index_6, dim_9);
+    const uint _e3 = nyq_owen_sobol_sample_u32_(s_24, index_6, dim_9);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
-float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_23, uint index_7, uint first_dim)
+float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_25, uint index_7, uint first_dim)
 {
     float4 out_1 = (float4)0;
     uint k_7 = 0u;
 
-    const uint _e4 = nyq_shuffle_rev(index_7, s_23.shuffle_seed);
+    const uint _e4 = nyq_shuffle_rev(index_7, s_25.shuffle_seed);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -1169,10 +1189,10 @@ float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_23, uint index_7, uint first_dim)
         }
         {
             uint _e11 = k_7;
-            uint d_11 = naga_mod((first_dim + _e11), s_23.dims);
+            uint d_13 = naga_mod((first_dim + _e11), s_25.dims);
             uint _e15 = k_7;
-            const uint _e18 = nyq_dim_seed(s_23.key, d_11);
-            const uint _e19 = nyq_owen_sobol_rev(_e4, d_11, _e18);
+            const uint _e18 = nyq_dim_seed(s_25.key, d_13);
+            const uint _e19 = nyq_owen_sobol_rev(_e4, d_13, _e18);
             const float _e20 = nyq_rev_to_f32_(_e19);
             out_1[min(uint(_e15), 3u)] = _e20;
         }
@@ -1197,64 +1217,64 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(uint2 seed_8, uint frame)
     return nyqowensobolsampler;
 }
 
-void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_24, uint2 pixel_4, uint sample_index_3, uint dim_10)
+void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_26, uint2 pixel_4, uint sample_index_3, uint dim_10)
 {
     const uint2 _e5 = nyq_u64_(pixel_4.x);
     const uint2 _e7 = nyq_u64_(pixel_4.y);
-    uint _e9 = s_24.frame;
+    uint _e9 = s_26.frame;
     const uint2 _e10 = nyq_u64_(_e9);
-    uint2 _e12 = s_24.seed;
+    uint2 _e12 = s_26.seed;
     const uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_24.key = _e13.x;
+    s_26.key = _e13.x;
     const uint _e18 = nyq_mix32_(_e13.y);
     const uint _e19 = nyq_shuffle_rev(sample_index_3, _e18);
-    s_24.r = _e19;
-    s_24.dim = dim_10;
+    s_26.r = _e19;
+    s_26.dim = dim_10;
     return;
 }
 
-float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_25, uint dim_11)
+float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_27, uint dim_11)
 {
-    uint _e3 = s_25.r;
-    uint _e5 = s_25.key;
+    uint _e3 = s_27.r;
+    uint _e5 = s_27.key;
     const uint _e6 = nyq_dim_seed(_e5, dim_11);
     const uint _e7 = nyq_owen_sobol_rev(_e3, dim_11, _e6);
     const float _e8 = nyq_rev_to_f32_(_e7);
     return _e8;
 }
 
-float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_26)
+float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_28)
 {
-    uint d_12 = s_26.dim;
-    s_26.dim = (d_12 + 1u);
-    const float _e6 = nyq_owen_sobol_value(s_26, d_12);
+    uint d_14 = s_28.dim;
+    s_28.dim = (d_14 + 1u);
+    const float _e6 = nyq_owen_sobol_value(s_28, d_14);
     return _e6;
 }
 
-float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_27)
+float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_29)
 {
-    uint d_13 = s_27.dim;
-    s_27.dim = (d_13 + 2u);
-    const float _e6 = nyq_owen_sobol_value(s_27, d_13);
-    const float _e9 = nyq_owen_sobol_value(s_27, (d_13 + 1u));
+    uint d_15 = s_29.dim;
+    s_29.dim = (d_15 + 2u);
+    const float _e6 = nyq_owen_sobol_value(s_29, d_15);
+    const float _e9 = nyq_owen_sobol_value(s_29, (d_15 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_28)
+float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_30)
 {
-    uint _e3 = s_28.dim;
-    s_28.dim = max(_e3, 2u);
-    const float _e7 = nyq_owen_sobol_value(s_28, 0u);
-    const float _e9 = nyq_owen_sobol_value(s_28, 1u);
+    uint _e3 = s_30.dim;
+    s_30.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_value(s_30, 0u);
+    const float _e9 = nyq_owen_sobol_value(s_30, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_29, uint2 pixel_5, uint sample_index_4)
+NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_31, uint2 pixel_5, uint sample_index_4)
 {
     float v_4[5] = (float[5])0;
     uint d_1 = 0u;
 
-    nyq_owen_sobol_start(s_29, pixel_5, sample_index_4, 0u);
+    nyq_owen_sobol_start(s_31, pixel_5, sample_index_4, 0u);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_10 = true;
     while(true) {
@@ -1273,11 +1293,11 @@ NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_29, uin
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            const float _e13 = nyq_owen_sobol_value(s_29, _e12);
+            const float _e13 = nyq_owen_sobol_value(s_31, _e12);
             v_4[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_29.dim = 5u;
+    s_31.dim = 5u;
     float _e21 = v_4[0];
     const float _e22 = nyq_film_coordinate(pixel_5.x, _e21);
     float _e25 = v_4[1];
@@ -1339,9 +1359,9 @@ uint nyq_spread(uint x_in_2)
     return ((_e25 | (_e26 << 1u)) & 1431655765u);
 }
 
-uint nyq_zsobol_morton(NyqZSobolSampler s_30, uint2 pixel_6)
+uint nyq_zsobol_morton(NyqZSobolSampler s_32, uint2 pixel_6)
 {
-    uint mask_2 = ((s_30.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_30.log2_res) & 31u)));
+    uint mask_2 = ((s_32.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_32.log2_res) & 31u)));
     const uint _e16 = nyq_spread((pixel_6.x & mask_2));
     const uint _e19 = nyq_spread((pixel_6.y & mask_2));
     return (_e16 | (_e19 << 1u));
@@ -1389,13 +1409,13 @@ uint2 nyq_zsobol_nested_word(uint2 w, uint higher_1, uint shift_3)
     return _e17;
 }
 
-uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
+uint nyq_zsobol_index(NyqZSobolSampler s_33, uint morton, uint2 key_3)
 {
     uint index_8 = 0u;
     uint i_3 = (uint)0;
     uint i_4 = (uint)0;
 
-    i_3 = s_31.digits;
+    i_3 = s_33.digits;
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
     bool loop_init_11 = true;
     while(true) {
@@ -1407,13 +1427,13 @@ uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
         }
         loop_init_11 = false;
         uint _e7 = i_3;
-        if ((_e7 > s_31.sample_digits)) {
+        if ((_e7 > s_33.sample_digits)) {
         } else {
             break;
         }
         {
             uint _e11 = i_3;
-            uint shift_5 = ((2u * (_e11 - 1u)) + s_31.odd);
+            uint shift_5 = ((2u * (_e11 - 1u)) + s_33.odd);
             uint digit_2 = ((morton >> shift_5) & 3u);
             uint _e20 = index_8;
             const uint _e23 = nyq_shr(morton, (shift_5 + 2u));
@@ -1422,10 +1442,10 @@ uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
             index_8 = (_e20 | _e25);
         }
     }
-    const uint _e31 = nyq_shr(morton, s_31.log2_spp);
+    const uint _e31 = nyq_shr(morton, s_33.log2_spp);
     const uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample_ = (morton & (s_31.spp - 1u));
-    i_4 = s_31.sample_digits;
+    uint sample_ = (morton & (s_33.spp - 1u));
+    i_4 = s_33.sample_digits;
     uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -1443,7 +1463,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
         }
         {
             uint _e43 = i_4;
-            uint shift_6 = ((2u * (_e43 - 1u)) + s_31.odd);
+            uint shift_6 = ((2u * (_e43 - 1u)) + s_33.odd);
             uint digit_3 = ((sample_ >> shift_6) & 3u);
             const uint _e54 = nyq_shr(sample_, (shift_6 + 2u));
             const uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_6);
@@ -1453,7 +1473,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
             index_8 = (_e58 | _e61);
         }
     }
-    if ((s_31.odd == 1u)) {
+    if ((s_33.odd == 1u)) {
         uint _e69 = index_8;
         const uint2 _e75 = nyq_zsobol_nested_word(_e32, (sample_ >> 1u), 0u);
         index_8 = (_e69 | ((sample_ & 1u) ^ (_e75.y >> 31u)));
@@ -1462,12 +1482,12 @@ uint nyq_zsobol_index(NyqZSobolSampler s_31, uint morton, uint2 key_3)
     return _e81;
 }
 
-uint nyq_zsobol_sequence_index(NyqZSobolSampler s_32, uint2 pixel_7, uint sample_index_5, uint dim_13)
+uint nyq_zsobol_sequence_index(NyqZSobolSampler s_34, uint2 pixel_7, uint sample_index_5, uint dim_13)
 {
-    const uint _e4 = nyq_zsobol_morton(s_32, pixel_7);
-    uint morton_1 = ((_e4 << s_32.log2_spp) | (sample_index_5 & (s_32.spp - 1u)));
-    const uint2 _e13 = nyq_zsobol_dim_key(s_32.seed, dim_13);
-    const uint _e14 = nyq_zsobol_index(s_32, morton_1, _e13);
+    const uint _e4 = nyq_zsobol_morton(s_34, pixel_7);
+    uint morton_1 = ((_e4 << s_34.log2_spp) | (sample_index_5 & (s_34.spp - 1u)));
+    const uint2 _e13 = nyq_zsobol_dim_key(s_34.seed, dim_13);
+    const uint _e14 = nyq_zsobol_index(s_34, morton_1, _e13);
     return _e14;
 }
 
@@ -1481,38 +1501,38 @@ uint nyq_zsobol_dim0_(uint index_9, uint seed_11, uint how_1)
     return _e8;
 }
 
-float nyq_zsobol_value_1d(inout NyqZSobolSampler s_33, uint dim_14)
+float nyq_zsobol_value_1d(inout NyqZSobolSampler s_35, uint dim_14)
 {
-    uint2 _e3 = s_33.seed;
+    uint2 _e3 = s_35.seed;
     const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_14);
-    NyqZSobolSampler _e5 = s_33;
-    uint _e7 = s_33.morton;
+    NyqZSobolSampler _e5 = s_35;
+    uint _e7 = s_35.morton;
     const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_33.scramble;
+    uint _e11 = s_35.scramble;
     const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
     const float _e13 = nyq_fraction_to_f32_(_e12);
     return _e13;
 }
 
-float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_34, uint dim_15)
+float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_36, uint dim_15)
 {
     uint y = (uint)0;
 
-    uint2 _e3 = s_34.seed;
+    uint2 _e3 = s_36.seed;
     const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_15);
-    NyqZSobolSampler _e5 = s_34;
-    uint _e7 = s_34.morton;
+    NyqZSobolSampler _e5 = s_36;
+    uint _e7 = s_36.morton;
     const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_34.scramble;
+    uint _e11 = s_36.scramble;
     const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_34.scramble;
+    uint _e15 = s_36.scramble;
     if ((_e15 == NYQ_SCRAMBLE_FAST_OWEN)) {
         const uint _e19 = nyq_sobol_u32_(_e8, 1u);
         const uint _e22 = nyq_lk_hash(reversebits(_e19), _e4.y);
         y = reversebits(_e22);
     } else {
         const uint _e25 = nyq_sobol_u32_(_e8, 1u);
-        uint _e28 = s_34.scramble;
+        uint _e28 = s_36.scramble;
         const uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -1522,48 +1542,48 @@ float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_34, uint dim_15)
     return float2(_e30, _e32);
 }
 
-void nyq_zsobol_start(inout NyqZSobolSampler s_35, uint2 pixel_8, uint sample_index_6, uint dim_16)
+void nyq_zsobol_start(inout NyqZSobolSampler s_37, uint2 pixel_8, uint sample_index_6, uint dim_16)
 {
-    NyqZSobolSampler _e5 = s_35;
+    NyqZSobolSampler _e5 = s_37;
     const uint _e6 = nyq_zsobol_morton(_e5, pixel_8);
-    uint _e8 = s_35.log2_spp;
-    uint _e11 = s_35.spp;
-    s_35.morton = ((_e6 << _e8) | (sample_index_6 & (_e11 - 1u)));
-    s_35.dim = dim_16;
+    uint _e8 = s_37.log2_spp;
+    uint _e11 = s_37.spp;
+    s_37.morton = ((_e6 << _e8) | (sample_index_6 & (_e11 - 1u)));
+    s_37.dim = dim_16;
     return;
 }
 
-float nyq_zsobol_get_1d(inout NyqZSobolSampler s_36)
+float nyq_zsobol_get_1d(inout NyqZSobolSampler s_38)
 {
-    uint d_14 = s_36.dim;
-    s_36.dim = (d_14 + 1u);
-    const float _e6 = nyq_zsobol_value_1d(s_36, d_14);
+    uint d_16 = s_38.dim;
+    s_38.dim = (d_16 + 1u);
+    const float _e6 = nyq_zsobol_value_1d(s_38, d_16);
     return _e6;
 }
 
-float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_37)
+float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_39)
 {
-    uint d_15 = s_37.dim;
-    s_37.dim = (d_15 + 2u);
-    const float2 _e6 = nyq_zsobol_value_2d(s_37, d_15);
+    uint d_17 = s_39.dim;
+    s_39.dim = (d_17 + 2u);
+    const float2 _e6 = nyq_zsobol_value_2d(s_39, d_17);
     return _e6;
 }
 
-float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_38)
+float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_40)
 {
-    uint _e3 = s_38.dim;
-    s_38.dim = max(_e3, 2u);
-    const float2 _e7 = nyq_zsobol_value_2d(s_38, 0u);
+    uint _e3 = s_40.dim;
+    s_40.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_zsobol_value_2d(s_40, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_39, uint2 pixel_9, uint sample_index_7)
+NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_41, uint2 pixel_9, uint sample_index_7)
 {
-    nyq_zsobol_start(s_39, pixel_9, sample_index_7, 0u);
-    const float2 _e5 = nyq_zsobol_value_2d(s_39, 0u);
-    const float _e7 = nyq_zsobol_value_1d(s_39, 2u);
-    const float2 _e9 = nyq_zsobol_value_2d(s_39, 3u);
-    s_39.dim = 5u;
+    nyq_zsobol_start(s_41, pixel_9, sample_index_7, 0u);
+    const float2 _e5 = nyq_zsobol_value_2d(s_41, 0u);
+    const float _e7 = nyq_zsobol_value_1d(s_41, 2u);
+    const float2 _e9 = nyq_zsobol_value_2d(s_41, 3u);
+    s_41.dim = 5u;
     const float _e14 = nyq_film_coordinate(pixel_9.x, _e5.x);
     const float _e17 = nyq_film_coordinate(pixel_9.y, _e5.y);
     float2 film_1 = float2(_e14, _e17);
@@ -1594,9 +1614,9 @@ uint nyq_pcg32_next(inout NyqPcg32_ g)
     g.state = _e7;
     const uint2 _e9 = nyq_shr64_(old, 18u);
     const uint2 _e12 = nyq_shr64_((_e9 ^ old), 27u);
-    uint x_26 = _e12.x;
+    uint x_27 = _e12.x;
     uint rot = (old.y >> 27u);
-    return ((x_26 >> rot) | (x_26 << ((32u - rot) & 31u)));
+    return ((x_27 >> rot) | (x_27 << ((32u - rot) & 31u)));
 }
 
 void nyq_pcg32_advance(inout NyqPcg32_ g_1, uint delta)
@@ -1676,11 +1696,11 @@ NyqRandomSampler nyq_random_sampler(uint2 seed_12)
     return nyqrandomsampler;
 }
 
-NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_40, uint dim_17)
+NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_42, uint dim_17)
 {
     NyqPcg32_ g_2 = (NyqPcg32_)0;
 
-    uint2 _e3 = s_40.base;
+    uint2 _e3 = s_42.base;
     const NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
     if ((dim_17 != 0u)) {
@@ -1691,80 +1711,80 @@ NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_40, uint dim_17)
     return nyqpcg32_1;
 }
 
-void nyq_random_start(inout NyqRandomSampler s_41, uint2 pixel_10, uint sample_index_8, uint dim_18)
+void nyq_random_start(inout NyqRandomSampler s_43, uint2 pixel_10, uint sample_index_8, uint dim_18)
 {
-    uint2 _e5 = s_41.seed;
+    uint2 _e5 = s_43.seed;
     const uint2 _e7 = nyq_u64_(1918987876u);
     const uint2 _e8 = nyq_hash3_(pixel_10, _e5, _e7);
     uint2 golden_2 = uint2(2135587861u, 2654435769u);
     const uint2 _e13 = nyq_u64_(sample_index_8);
     const uint2 _e14 = nyq_mul64_(_e13, golden_2);
     const uint2 _e16 = nyq_mix64_((_e8 ^ _e14));
-    s_41.base = _e16;
-    s_41.dim = dim_18;
-    const NyqPcg32_ _e19 = nyq_random_at(s_41, dim_18);
-    s_41.rng = _e19;
+    s_43.base = _e16;
+    s_43.dim = dim_18;
+    const NyqPcg32_ _e19 = nyq_random_at(s_43, dim_18);
+    s_43.rng = _e19;
     return;
 }
 
-float nyq_random_get_1d(inout NyqRandomSampler s_42)
+float nyq_random_get_1d(inout NyqRandomSampler s_44)
 {
     NyqPcg32_ g_3 = (NyqPcg32_)0;
 
-    NyqPcg32_ _e2 = s_42.rng;
+    NyqPcg32_ _e2 = s_44.rng;
     g_3 = _e2;
     const uint _e4 = nyq_pcg32_next(g_3);
     const float _e5 = nyq_fraction_to_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_42.rng = _e7;
-    uint _e9 = s_42.dim;
-    s_42.dim = (_e9 + 1u);
-    uint _e13 = s_42.dim;
+    s_44.rng = _e7;
+    uint _e9 = s_44.dim;
+    s_44.dim = (_e9 + 1u);
+    uint _e13 = s_44.dim;
     if ((_e13 == 0u)) {
-        const NyqPcg32_ _e18 = nyq_random_at(s_42, 0u);
-        s_42.rng = _e18;
+        const NyqPcg32_ _e18 = nyq_random_at(s_44, 0u);
+        s_44.rng = _e18;
     }
     return _e5;
 }
 
-float2 nyq_random_get_2d(inout NyqRandomSampler s_43)
+float2 nyq_random_get_2d(inout NyqRandomSampler s_45)
 {
-    const float _e1 = nyq_random_get_1d(s_43);
-    const float _e2 = nyq_random_get_1d(s_43);
+    const float _e1 = nyq_random_get_1d(s_45);
+    const float _e2 = nyq_random_get_1d(s_45);
     return float2(_e1, _e2);
 }
 
-float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_44)
+float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_46)
 {
     NyqPcg32_ g_4 = (NyqPcg32_)0;
 
-    uint _e2 = s_44.dim;
+    uint _e2 = s_46.dim;
     if ((_e2 == 0u)) {
-        const float2 _e5 = nyq_random_get_2d(s_44);
+        const float2 _e5 = nyq_random_get_2d(s_46);
         return _e5;
     }
-    const NyqPcg32_ _e7 = nyq_random_at(s_44, 0u);
+    const NyqPcg32_ _e7 = nyq_random_at(s_46, 0u);
     g_4 = _e7;
     const uint _e9 = nyq_pcg32_next(g_4);
     const float _e10 = nyq_fraction_to_f32_(_e9);
     const uint _e11 = nyq_pcg32_next(g_4);
     const float _e12 = nyq_fraction_to_f32_(_e11);
     float2 p_3 = float2(_e10, _e12);
-    uint _e15 = s_44.dim;
+    uint _e15 = s_46.dim;
     if ((_e15 < 2u)) {
-        s_44.dim = 2u;
+        s_46.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_44.rng = _e21;
+        s_46.rng = _e21;
     }
     return p_3;
 }
 
-NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_45, uint2 pixel_11, uint sample_index_9)
+NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_47, uint2 pixel_11, uint sample_index_9)
 {
-    nyq_random_start(s_45, pixel_11, sample_index_9, 0u);
-    const float2 _e4 = nyq_random_get_pixel_2d(s_45);
-    const float _e5 = nyq_random_get_1d(s_45);
-    const float2 _e6 = nyq_random_get_2d(s_45);
+    nyq_random_start(s_47, pixel_11, sample_index_9, 0u);
+    const float2 _e4 = nyq_random_get_pixel_2d(s_47);
+    const float _e5 = nyq_random_get_1d(s_47);
+    const float2 _e6 = nyq_random_get_2d(s_47);
     const float _e9 = nyq_film_coordinate(pixel_11.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_11.y, _e4.y);
     float2 film_2 = float2(_e9, _e12);
@@ -1892,16 +1912,16 @@ NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_2, uint g_5, uint2 se
     return nyqlatticesampler;
 }
 
-float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
+float nyq_lattice_value(inout NyqLatticeSampler s_48, uint dim_19)
 {
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_9 = s_46.n;
-    uint _e5 = s_46.index;
+    uint n_9 = s_48.n;
+    uint _e5 = s_48.index;
     uint k_17 = naga_mod(_e5, n_9);
     uint component = naga_mod(dim_19, 2u);
-    uint _e11 = s_46.lattice;
+    uint _e11 = s_48.lattice;
     switch(_e11) {
         case 2u: {
             const uint2 _e15 = nyq_u64_(k_17);
@@ -1911,7 +1931,7 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
             break;
         }
         default: {
-            uint _e21 = s_46.g;
+            uint _e21 = s_48.g;
             g_6 = _e21;
             if ((component == 0u)) {
                 g_6 = naga_mod(1u, n_9);
@@ -1924,9 +1944,9 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
             break;
         }
     }
-    uint2 _e32 = s_46.pixel;
+    uint2 _e32 = s_48.pixel;
     const uint2 _e35 = nyq_u64_(naga_div(dim_19, 2u));
-    uint2 _e37 = s_46.seed;
+    uint2 _e37 = s_48.seed;
     const uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     uint2 _e39 = base;
     const uint2 _e40 = nyq_u64_(component);
@@ -1936,46 +1956,46 @@ float nyq_lattice_value(inout NyqLatticeSampler s_46, uint dim_19)
     return _e43;
 }
 
-void nyq_lattice_start(inout NyqLatticeSampler s_47, uint2 pixel_12, uint sample_index_10, uint dim_20)
+void nyq_lattice_start(inout NyqLatticeSampler s_49, uint2 pixel_12, uint sample_index_10, uint dim_20)
 {
-    s_47.pixel = pixel_12;
-    s_47.index = sample_index_10;
-    s_47.dim = dim_20;
+    s_49.pixel = pixel_12;
+    s_49.index = sample_index_10;
+    s_49.dim = dim_20;
     return;
 }
 
-float nyq_lattice_get_1d(inout NyqLatticeSampler s_48)
+float nyq_lattice_get_1d(inout NyqLatticeSampler s_50)
 {
-    uint d_16 = s_48.dim;
-    s_48.dim = (d_16 + 1u);
-    const float _e6 = nyq_lattice_value(s_48, d_16);
+    uint d_18 = s_50.dim;
+    s_50.dim = (d_18 + 1u);
+    const float _e6 = nyq_lattice_value(s_50, d_18);
     return _e6;
 }
 
-float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_49)
+float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_51)
 {
-    uint d_17 = s_49.dim;
-    s_49.dim = (d_17 + 2u);
-    const float _e6 = nyq_lattice_value(s_49, d_17);
-    const float _e9 = nyq_lattice_value(s_49, (d_17 + 1u));
+    uint d_19 = s_51.dim;
+    s_51.dim = (d_19 + 2u);
+    const float _e6 = nyq_lattice_value(s_51, d_19);
+    const float _e9 = nyq_lattice_value(s_51, (d_19 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_50)
+float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_52)
 {
-    uint _e3 = s_50.dim;
-    s_50.dim = max(_e3, 2u);
-    const float _e7 = nyq_lattice_value(s_50, 0u);
-    const float _e9 = nyq_lattice_value(s_50, 1u);
+    uint _e3 = s_52.dim;
+    s_52.dim = max(_e3, 2u);
+    const float _e7 = nyq_lattice_value(s_52, 0u);
+    const float _e9 = nyq_lattice_value(s_52, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_51, uint2 pixel_13, uint sample_index_11)
+NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_53, uint2 pixel_13, uint sample_index_11)
 {
-    nyq_lattice_start(s_51, pixel_13, sample_index_11, 0u);
-    const float2 _e4 = nyq_lattice_get_pixel_2d(s_51);
-    const float _e5 = nyq_lattice_get_1d(s_51);
-    const float2 _e6 = nyq_lattice_get_2d(s_51);
+    nyq_lattice_start(s_53, pixel_13, sample_index_11, 0u);
+    const float2 _e4 = nyq_lattice_get_pixel_2d(s_53);
+    const float _e5 = nyq_lattice_get_1d(s_53);
+    const float2 _e6 = nyq_lattice_get_2d(s_53);
     const float _e9 = nyq_film_coordinate(pixel_13.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_13.y, _e4.y);
     float2 film_3 = float2(_e9, _e12);
@@ -2045,9 +2065,9 @@ uint2 nyq_lattice_fixed(NyqLattice l, uint index_10, uint dim_21)
     uint2 shift_4 = uint2(0u, 0u);
     uint g_8 = (uint)0;
 
-    uint d_18 = naga_mod(dim_21, l.dims);
+    uint d_20 = naga_mod(dim_21, l.dims);
     if ((l.rotated != 0u)) {
-        const uint2 _e13 = nyq_u64_(d_18);
+        const uint2 _e13 = nyq_u64_(d_20);
         const uint2 _e14 = nyq_hash2_(l.seed, _e13);
         shift_4 = _e14;
     }
@@ -2055,16 +2075,16 @@ uint2 nyq_lattice_fixed(NyqLattice l, uint index_10, uint dim_21)
         uint2 _e21 = shift_4;
         uint2 start = ((l.rotated != 0u) ? _e21 : uint2(0u, 2147483648u));
         const uint2 _e26 = nyq_u64_(index_10);
-        const uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA[min(uint((d_18 & 1u)), 1u)]);
+        const uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA[min(uint((d_20 & 1u)), 1u)]);
         const uint2 _e32 = nyq_add64_(start, _e31);
         return _e32;
     }
     g_8 = l.g;
-    if ((d_18 == 0u)) {
+    if ((d_20 == 0u)) {
         g_8 = naga_mod(1u, l.n);
     } else {
-        if ((d_18 > 1u)) {
-            const uint _e44 = nyq_pow_mod(l.g, d_18, l.n);
+        if ((d_20 > 1u)) {
+            const uint _e44 = nyq_pow_mod(l.g, d_20, l.n);
             g_8 = _e44;
         }
     }
@@ -2101,12 +2121,12 @@ uint2 nyq_fixed_to_f64_bits(uint2 x_11)
     }
     uint e_2 = ((_e2.y != 0u) ? (63u - (31u - firstbithigh(_e2.y))) : (31u - (31u - firstbithigh(_e2.x))));
     frac_ = _e2;
-    uint s_80 = (52u - e_2);
-    if ((s_80 >= 32u)) {
-        frac_ = uint2(0u, (_e2.x << (s_80 - 32u)));
+    uint s_94 = (52u - e_2);
+    if ((s_94 >= 32u)) {
+        frac_ = uint2(0u, (_e2.x << (s_94 - 32u)));
     } else {
-        if ((s_80 > 0u)) {
-            const uint2 _e41 = nyq_shl64_(_e2, s_80);
+        if ((s_94 > 0u)) {
+            const uint2 _e41 = nyq_shl64_(_e2, s_94);
             frac_ = _e41;
         }
     }
@@ -2227,20 +2247,20 @@ uint3 nyq_mul64x32_(uint2 r_9, uint k_8)
     return uint3(_e3.x, _e9.x, _e9.y);
 }
 
-uint nyq_nibble(uint2 t_1, uint s_52)
+uint nyq_nibble(uint2 t_1, uint s_54)
 {
-    return ((((s_52 >= 32u) ? t_1.y : t_1.x) >> (s_52 & 31u)) & 15u);
+    return ((((s_54 >= 32u) ? t_1.y : t_1.x) >> (s_54 & 31u)) & 15u);
 }
 
-uint2 nyq_shl64_any(uint2 x_14, uint s_53)
+uint2 nyq_shl64_any(uint2 x_14, uint s_55)
 {
-    if ((s_53 == 0u)) {
+    if ((s_55 == 0u)) {
         return x_14;
     }
-    if ((s_53 >= 32u)) {
-        return uint2(0u, (x_14.x << (s_53 - 32u)));
+    if ((s_55 >= 32u)) {
+        return uint2(0u, (x_14.x << (s_55 - 32u)));
     }
-    const uint2 _e12 = nyq_shl64_(x_14, s_53);
+    const uint2 _e12 = nyq_shl64_(x_14, s_55);
     return _e12;
 }
 
@@ -2306,10 +2326,10 @@ uint2 nyq_packed_table(uint n_5, uint2 r_in)
             const uint _e78 = nyq_nibble(_e77, hi);
             uint2 _e79 = t_2;
             const uint _e80 = nyq_nibble(_e79, lo);
-            uint x_27 = ((_e78 ^ _e80) & 15u);
+            uint x_28 = ((_e78 ^ _e80) & 15u);
             uint2 _e84 = t_2;
-            const uint2 _e87 = nyq_shl64_any(uint2(x_27, 0u), hi);
-            const uint2 _e90 = nyq_shl64_any(uint2(x_27, 0u), lo);
+            const uint2 _e87 = nyq_shl64_any(uint2(x_28, 0u), hi);
+            const uint2 _e90 = nyq_shl64_any(uint2(x_28, 0u), lo);
             t_2 = (_e84 ^ (_e87 | _e90));
         }
     }
@@ -2345,8 +2365,8 @@ NyqPermutation nyq_permutation(uint n_in, uint seed_15)
     const uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     const uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
     const uint2 _e36 = nyq_mul_wide(_e35, n_10);
-    uint offset_2 = _e36.y;
-    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_10, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, uint2(0u, 0u));
+    uint offset_3 = _e36.y;
+    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_10, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, uint2(0u, 0u));
     return nyqpermutation_1;
 }
 
@@ -2446,27 +2466,27 @@ uint nyq_stratified_dim_key(uint2 pixel_key, uint dim_23)
     return (_e6.x ^ _e6.y);
 }
 
-uint nyq_stratified_stratum(inout NyqStratifiedSampler s_54, uint dim_24)
+uint nyq_stratified_stratum(inout NyqStratifiedSampler s_56, uint dim_24)
 {
     if ((dim_24 == 0u)) {
-        uint _e5 = s_54.index;
-        uint _e7 = s_54.spp;
+        uint _e5 = s_56.index;
+        uint _e7 = s_56.spp;
         return naga_mod(_e5, _e7);
     }
-    uint _e10 = s_54.spp;
-    uint2 _e12 = s_54.pixel_key;
+    uint _e10 = s_56.spp;
+    uint2 _e12 = s_56.pixel_key;
     const uint _e13 = nyq_stratified_dim_key(_e12, dim_24);
     const NyqPermutation _e14 = nyq_permutation(_e10, _e13);
-    uint _e16 = s_54.index;
+    uint _e16 = s_56.index;
     const uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
-float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_25)
+float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_57, uint dim_25)
 {
     bool local_11 = (bool)0;
 
-    uint _e3 = s_55.jitter;
+    uint _e3 = s_57.jitter;
     if ((_e3 != NYQ_JITTERED)) {
         return float2(0.5, 0.5);
     }
@@ -2477,7 +2497,7 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_25)
     }
     bool _e17 = local_11;
     if (_e17) {
-        uint2 _e19 = s_55.sample_key;
+        uint2 _e19 = s_57.sample_key;
         const uint2 _e24 = nyq_mul64_(uint2(2u, 0u), NYQ_JITTER_STEP);
         const uint2 _e26 = nyq_mix64_((_e19 ^ _e24));
         if ((dim_25 == 2u)) {
@@ -2486,7 +2506,7 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_55, uint dim_25)
         const uint2 _e40 = nyq_shr64_(_e26, 22u);
         return float2((float((_e40.x & 2097151u)) * 4.7683716e-7), (float(((_e26.x >> 1u) & 2097151u)) * 4.7683716e-7));
     }
-    uint2 _e55 = s_55.sample_key;
+    uint2 _e55 = s_57.sample_key;
     const uint2 _e56 = nyq_u64_(dim_25);
     const uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     const uint2 _e60 = nyq_mix64_((_e55 ^ _e58));
@@ -2500,74 +2520,74 @@ float nyq_below_one(float x_16)
     return min(x_16, asfloat(1065353215u));
 }
 
-float2 nyq_stratified_cell(inout NyqStratifiedSampler s_56, uint st, float2 j)
+float2 nyq_stratified_cell(inout NyqStratifiedSampler s_58, uint st, float2 j)
 {
-    uint _e4 = s_56.xs;
+    uint _e4 = s_58.xs;
     uint cx = naga_mod(st, _e4);
-    uint _e7 = s_56.xs;
+    uint _e7 = s_58.xs;
     uint cy = naga_div(st, _e7);
     const float _e9 = nyq_u32_to_f32_(cx);
-    float _e14 = s_56.inv.x;
+    float _e14 = s_58.inv.x;
     const float _e16 = nyq_below_one(((_e9 + j.x) * _e14));
     const float _e17 = nyq_u32_to_f32_(cy);
-    float _e22 = s_56.inv.y;
+    float _e22 = s_58.inv.y;
     const float _e24 = nyq_below_one(((_e17 + j.y) * _e22));
     return float2(_e16, _e24);
 }
 
-void nyq_stratified_start(inout NyqStratifiedSampler s_57, uint2 pixel_14, uint sample_index_12, uint dim_26)
+void nyq_stratified_start(inout NyqStratifiedSampler s_59, uint2 pixel_14, uint sample_index_12, uint dim_26)
 {
-    uint2 _e6 = s_57.seed;
+    uint2 _e6 = s_59.seed;
     const uint2 _e8 = nyq_u64_(1937011297u);
     const uint2 _e9 = nyq_hash3_(pixel_14, _e6, _e8);
-    s_57.pixel_key = _e9;
-    s_57.index = sample_index_12;
-    uint2 _e13 = s_57.pixel_key;
+    s_59.pixel_key = _e9;
+    s_59.index = sample_index_12;
+    uint2 _e13 = s_59.pixel_key;
     const uint2 _e14 = nyq_u64_(sample_index_12);
     const uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
-    s_57.sample_key = (_e13 ^ _e16);
-    s_57.dim = dim_26;
+    s_59.sample_key = (_e13 ^ _e16);
+    s_59.dim = dim_26;
     return;
 }
 
-float nyq_stratified_get_1d(inout NyqStratifiedSampler s_58)
+float nyq_stratified_get_1d(inout NyqStratifiedSampler s_60)
 {
-    uint d_19 = s_58.dim;
-    s_58.dim = (d_19 + 1u);
-    const uint _e6 = nyq_stratified_stratum(s_58, d_19);
+    uint d_21 = s_60.dim;
+    s_60.dim = (d_21 + 1u);
+    const uint _e6 = nyq_stratified_stratum(s_60, d_21);
     const float _e7 = nyq_u32_to_f32_(_e6);
-    const float2 _e8 = nyq_stratified_jitters(s_58, d_19);
-    float _e13 = s_58.inv.z;
+    const float2 _e8 = nyq_stratified_jitters(s_60, d_21);
+    float _e13 = s_60.inv.z;
     const float _e15 = nyq_below_one(((_e7 + _e8.x) * _e13));
     return _e15;
 }
 
-float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_59)
+float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_61)
 {
-    uint d_20 = s_59.dim;
-    s_59.dim = (d_20 + 2u);
-    const uint _e6 = nyq_stratified_stratum(s_59, d_20);
-    const float2 _e7 = nyq_stratified_jitters(s_59, d_20);
-    const float2 _e8 = nyq_stratified_cell(s_59, _e6, _e7);
+    uint d_22 = s_61.dim;
+    s_61.dim = (d_22 + 2u);
+    const uint _e6 = nyq_stratified_stratum(s_61, d_22);
+    const float2 _e7 = nyq_stratified_jitters(s_61, d_22);
+    const float2 _e8 = nyq_stratified_cell(s_61, _e6, _e7);
     return _e8;
 }
 
-float2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_60)
+float2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_62)
 {
-    uint _e3 = s_60.dim;
-    s_60.dim = max(_e3, 2u);
-    const uint _e7 = nyq_stratified_stratum(s_60, 0u);
-    const float2 _e9 = nyq_stratified_jitters(s_60, 0u);
-    const float2 _e10 = nyq_stratified_cell(s_60, _e7, _e9);
+    uint _e3 = s_62.dim;
+    s_62.dim = max(_e3, 2u);
+    const uint _e7 = nyq_stratified_stratum(s_62, 0u);
+    const float2 _e9 = nyq_stratified_jitters(s_62, 0u);
+    const float2 _e10 = nyq_stratified_cell(s_62, _e7, _e9);
     return _e10;
 }
 
-NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_61, uint2 pixel_15, uint sample_index_13)
+NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_63, uint2 pixel_15, uint sample_index_13)
 {
-    nyq_stratified_start(s_61, pixel_15, sample_index_13, 0u);
-    const float2 _e4 = nyq_stratified_get_pixel_2d(s_61);
-    const float _e5 = nyq_stratified_get_1d(s_61);
-    const float2 _e6 = nyq_stratified_get_2d(s_61);
+    nyq_stratified_start(s_63, pixel_15, sample_index_13, 0u);
+    const float2 _e4 = nyq_stratified_get_pixel_2d(s_63);
+    const float _e5 = nyq_stratified_get_1d(s_63);
+    const float2 _e6 = nyq_stratified_get_2d(s_63);
     const float _e9 = nyq_film_coordinate(pixel_15.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_15.y, _e4.y);
     float2 film_4 = float2(_e9, _e12);
@@ -2632,9 +2652,9 @@ uint nyq_pmj02_point(uint2 seed_18, uint index_12, uint dim_27)
             known = (_e36 | low_2);
             uint _e38 = flips;
             flips = (_e38 ^ swap);
-            uint c_6 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
+            uint c_8 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
             uint _e51 = p_1;
-            p_1 = ((_e51 - (1u << level_1)) ^ c_6);
+            p_1 = ((_e51 - (1u << level_1)) ^ c_8);
         }
     }
     const uint2 _e57 = nyq_wyrand(seed_18, 0u);
@@ -2660,20 +2680,20 @@ NyqPmj02_ nyq_pmj02_(bool scrambled_1, uint2 seed_19)
     return nyqpmj02_;
 }
 
-uint nyq_pmj02_sample_u32_(NyqPmj02_ s_62, uint index_13, uint dim_28)
+uint nyq_pmj02_sample_u32_(NyqPmj02_ s_64, uint index_13, uint dim_28)
 {
-    uint d_21 = (dim_28 & 1u);
-    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_21);
-    if ((s_62.scrambled == 0u)) {
+    uint d_23 = (dim_28 & 1u);
+    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_23);
+    if ((s_64.scrambled == 0u)) {
         return _e6;
     }
-    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_62.keys[min(uint(d_21), 1u)]);
+    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_64.keys[min(uint(d_23), 1u)]);
     return reversebits(_e13);
 }
 
-float nyq_pmj02_sample(NyqPmj02_ s_63, uint index_14, uint dim_29)
+float nyq_pmj02_sample(NyqPmj02_ s_65, uint index_14, uint dim_29)
 {
-    const uint _e3 = nyq_pmj02_sample_u32_(s_63, index_14, dim_29);
+    const uint _e3 = nyq_pmj02_sample_u32_(s_65, index_14, dim_29);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2698,9 +2718,9 @@ uint nyq_reverse16_(uint m_1)
     return (reversebits((m_1 & 65535u)) >> 16u);
 }
 
-uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_64, uint2 request)
+uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_66, uint2 request)
 {
-    uint2 _e3 = s_64.pixel_key;
+    uint2 _e3 = s_66.pixel_key;
     const uint2 _e7 = nyq_mul64_(request, uint2(2135587861u, 2654435769u));
     const uint2 _e9 = nyq_mix64_((_e3 ^ _e7));
     const uint2 _e14 = nyq_mix64_((_e9 ^ uint2(1781543545u, 28781u)));
@@ -2718,75 +2738,75 @@ float2 nyq_pmj02_keyed_point(uint3 k_10, uint i_10)
     return float2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_65, uint3 k_11)
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_67, uint3 k_11)
 {
-    uint _e3 = s_65.index_rev;
+    uint _e3 = s_67.index_rev;
     const uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return (_e5 >> 16u);
 }
 
-void nyq_pmj02_start(inout NyqPmj02Sampler s_66, uint2 pixel_16, uint sample_index_14, uint dim_30)
+void nyq_pmj02_start(inout NyqPmj02Sampler s_68, uint2 pixel_16, uint sample_index_14, uint dim_30)
 {
-    uint2 _e6 = s_66.seed;
+    uint2 _e6 = s_68.seed;
     const uint2 _e10 = nyq_hash3_(pixel_16, _e6, uint2(1835675698u, 112u));
-    s_66.pixel_key = _e10;
+    s_68.pixel_key = _e10;
     const uint _e12 = nyq_reverse16_(sample_index_14);
-    s_66.index_rev = (_e12 << 16u);
-    s_66.dim = dim_30;
+    s_68.index_rev = (_e12 << 16u);
+    s_68.dim = dim_30;
     return;
 }
 
-float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_67)
+float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_69)
 {
-    uint d_22 = s_67.dim;
-    s_67.dim = (d_22 + 1u);
-    const uint2 _e6 = nyq_u64_(d_22);
+    uint d_24 = s_69.dim;
+    s_69.dim = (d_24 + 1u);
+    const uint2 _e6 = nyq_u64_(d_24);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
     const uint2 _e12 = nyq_add64_(_e8, uint2(1u, 0u));
-    const uint3 _e13 = nyq_pmj02_keys(s_67, _e12);
-    const uint _e14 = nyq_pmj02_row(s_67, _e13);
+    const uint3 _e13 = nyq_pmj02_keys(s_69, _e12);
+    const uint _e14 = nyq_pmj02_row(s_69, _e13);
     const uint _e15 = nyq_reverse16_(_e14);
     const uint _e17 = nyq_lk_hash(_e15, _e13.y);
     const float _e18 = nyq_rev_to_f32_(_e17);
     return _e18;
 }
 
-float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_68)
+float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_70)
 {
-    uint d_23 = s_68.dim;
-    s_68.dim = (d_23 + 2u);
-    const uint2 _e6 = nyq_u64_(d_23);
+    uint d_25 = s_70.dim;
+    s_70.dim = (d_25 + 2u);
+    const uint2 _e6 = nyq_u64_(d_25);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
-    const uint3 _e9 = nyq_pmj02_keys(s_68, _e8);
-    if ((d_23 == 0u)) {
-        uint _e13 = s_68.index_rev;
+    const uint3 _e9 = nyq_pmj02_keys(s_70, _e8);
+    if ((d_25 == 0u)) {
+        uint _e13 = s_70.index_rev;
         const uint _e16 = nyq_reverse16_((_e13 >> 16u));
         const float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    const uint _e18 = nyq_pmj02_row(s_68, _e9);
+    const uint _e18 = nyq_pmj02_row(s_70, _e9);
     const uint _e19 = nyq_reverse16_(_e18);
     const float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
-float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_69)
+float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_71)
 {
-    uint _e3 = s_69.dim;
-    s_69.dim = max(_e3, 2u);
-    const uint3 _e9 = nyq_pmj02_keys(s_69, uint2(0u, 0u));
-    uint _e11 = s_69.index_rev;
+    uint _e3 = s_71.dim;
+    s_71.dim = max(_e3, 2u);
+    const uint3 _e9 = nyq_pmj02_keys(s_71, uint2(0u, 0u));
+    uint _e11 = s_71.index_rev;
     const uint _e14 = nyq_reverse16_((_e11 >> 16u));
     const float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
-NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_70, uint2 pixel_17, uint sample_index_15)
+NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_72, uint2 pixel_17, uint sample_index_15)
 {
-    nyq_pmj02_start(s_70, pixel_17, sample_index_15, 0u);
-    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_70);
-    const float _e5 = nyq_pmj02_get_1d(s_70);
-    const float2 _e6 = nyq_pmj02_get_2d(s_70);
+    nyq_pmj02_start(s_72, pixel_17, sample_index_15, 0u);
+    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_72);
+    const float _e5 = nyq_pmj02_get_1d(s_72);
+    const float2 _e6 = nyq_pmj02_get_2d(s_72);
     const float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
     float2 film_5 = float2(_e9, _e12);
@@ -2818,24 +2838,24 @@ uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
 
 uint4 nyq_add128_(uint4 a_10, uint4 b_9)
 {
-    uint4 s_81 = (a_10 + b_9);
-    uint4 c_7 = ((s_81 < a_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_2 = (s_81.y + c_7.x);
-    uint k1_ = (c_7.y + ((t1_2 < c_7.x) ? 1u : 0u));
-    uint t2_1 = (s_81.z + k1_);
-    uint k2_ = (c_7.z + ((t2_1 < k1_) ? 1u : 0u));
-    return uint4(s_81.x, t1_2, t2_1, (s_81.w + k2_));
+    uint4 s_95 = (a_10 + b_9);
+    uint4 c_9 = ((s_95 < a_10) ? (1u).xxxx : (0u).xxxx);
+    uint t1_2 = (s_95.y + c_9.x);
+    uint k1_ = (c_9.y + ((t1_2 < c_9.x) ? 1u : 0u));
+    uint t2_1 = (s_95.z + k1_);
+    uint k2_ = (c_9.z + ((t2_1 < k1_) ? 1u : 0u));
+    return uint4(s_95.x, t1_2, t2_1, (s_95.w + k2_));
 }
 
 uint4 nyq_sub128_(uint4 a_11, uint4 b_10)
 {
-    uint4 s_82 = (a_11 - b_10);
+    uint4 s_96 = (a_11 - b_10);
     uint4 o = ((a_11 < b_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_3 = (s_82.y - o.x);
-    uint k1_1 = (o.y + ((s_82.y < o.x) ? 1u : 0u));
-    uint t2_2 = (s_82.z - k1_1);
-    uint k2_1 = (o.z + ((s_82.z < k1_1) ? 1u : 0u));
-    return uint4(s_82.x, t1_3, t2_2, (s_82.w - k2_1));
+    uint t1_3 = (s_96.y - o.x);
+    uint k1_1 = (o.y + ((s_96.y < o.x) ? 1u : 0u));
+    uint t2_2 = (s_96.z - k1_1);
+    uint k2_1 = (o.z + ((s_96.z < k1_1) ? 1u : 0u));
+    return uint4(s_96.x, t1_3, t2_2, (s_96.w - k2_1));
 }
 
 bool nyq_lt128_(uint4 a_12, uint4 b_11)
@@ -2888,13 +2908,13 @@ uint nyq_clz128_(uint4 x_20)
     return (96u + (31u - firstbithigh(x_20.x)));
 }
 
-uint4 nyq_shl128_(uint4 x_21, uint s_71)
+uint4 nyq_shl128_(uint4 x_21, uint s_73)
 {
     uint4 v_5 = (uint4)0;
     uint k_13 = (uint)0;
 
     v_5 = x_21;
-    k_13 = s_71;
+    k_13 = s_73;
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
@@ -3089,7 +3109,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     const uint _e16 = nyq_clz128_(num_1);
     const uint _e17 = nyq_clz128_(den_1);
-    uint s_83 = (_e16 - _e17);
+    uint s_97 = (_e16 - _e17);
     uint steps = (twice_1 ? 55u : 26u);
     if ((den_1.z == 0u)) {
         local_23 = (den_1.w == 0u);
@@ -3104,8 +3124,8 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     bool _e44 = local_24;
     if (_e44) {
-        uint2 d_24 = den_1.xy;
-        const uint4 _e46 = nyq_shl128_(num_1, s_83);
+        uint2 d_26 = den_1.xy;
+        const uint4 _e46 = nyq_shl128_(num_1, s_97);
         r_11 = _e46.xy;
         uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
         bool loop_init_17 = true;
@@ -3128,11 +3148,11 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
                 uint _e62 = q_2.x;
                 q_2 = uint2((_e54 << 1u), ((_e58 << 1u) | (_e62 >> 31u)));
                 uint _e68 = r_11.y;
-                if (!((_e68 > d_24.y))) {
+                if (!((_e68 > d_26.y))) {
                     uint _e75 = r_11.y;
-                    if ((_e75 == d_24.y)) {
+                    if ((_e75 == d_26.y)) {
                         uint _e81 = r_11.x;
-                        local_26 = (_e81 >= d_24.x);
+                        local_26 = (_e81 >= d_26.x);
                     } else {
                         local_26 = false;
                     }
@@ -3144,7 +3164,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
                 bool _e87 = local_25;
                 if (_e87) {
                     uint2 _e88 = r_11;
-                    const uint2 _e89 = nyq_sub64_(_e88, d_24);
+                    const uint2 _e89 = nyq_sub64_(_e88, d_26);
                     r_11 = _e89;
                     uint _e91 = q_2.x;
                     q_2.x = (_e91 | 1u);
@@ -3165,7 +3185,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
         bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        const uint4 _e124 = nyq_shl128_(num_1, s_83);
+        const uint4 _e124 = nyq_shl128_(num_1, s_97);
         r_12 = _e124;
         uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
         bool loop_init_18 = true;
@@ -3211,7 +3231,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     uint2 _e193 = q_2;
     bool _e203 = sticky_1;
-    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_83)))), (_e203 ? 1u : 0u), tw, 0u);
+    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_97)))), (_e203 ? 1u : 0u), tw, 0u);
     return nyqrounding_1;
 }
 
@@ -3227,12 +3247,12 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14)
     uint2 rev = uint2(0u, 0u);
     uint i_13 = 0u;
 
-    uint b_15 = asuint(nyq_halton_bases.Load(t_3*4));
-    uint c_8 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
-    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_8, 4u))*4));
-    uint places = ((_e19 >> (8u * naga_mod(c_8, 4u))) & 255u);
-    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_8))*4));
-    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_8))*4));
+    uint b_17 = asuint(nyq_halton_bases.Load(t_3*4));
+    uint c_10 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
+    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_10, 4u))*4));
+    uint places = ((_e19 >> (8u * naga_mod(c_10, 4u))) & 255u);
+    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_10))*4));
+    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_10))*4));
     x_22 = a_14;
     uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
     bool loop_init_19 = true;
@@ -3251,11 +3271,11 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14)
         }
         {
             uint _e52 = x_22;
-            uint q_5 = naga_div(_e52, b_15);
+            uint q_5 = naga_div(_e52, b_17);
             uint2 _e54 = rev;
-            const uint3 _e55 = nyq_mul64x32_(_e54, b_15);
+            const uint3 _e55 = nyq_mul64x32_(_e54, b_17);
             uint _e57 = x_22;
-            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_15)), 0u));
+            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_17)), 0u));
             rev = _e62;
             x_22 = q_5;
         }
@@ -3287,7 +3307,7 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
     uint rev_1 = (uint)0;
     uint i_14 = (uint)0;
 
-    uint b_16 = asuint(nyq_halton_bases.Load(t_4*4));
+    uint b_18 = asuint(nyq_halton_bases.Load(t_4*4));
     uint chunk = asuint(nyq_halton_bases.Load((t_4 + 4u)*4));
     uint run = asuint(nyq_halton_bases.Load((t_4 + 5u)*4));
     x_23 = a_15;
@@ -3331,10 +3351,10 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = naga_div(_e49, b_16);
+                    uint q_6 = naga_div(_e49, b_18);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = ((_e51 * b_16) + (_e53 - (q_6 * b_16)));
+                    rev_1 = ((_e51 * b_18) + (_e53 - (q_6 * b_18)));
                     c_3 = q_6;
                 }
             }
@@ -3369,12 +3389,12 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     bool local_32 = (bool)0;
     bool local_33 = (bool)0;
 
-    uint b_17 = asuint(nyq_halton_bases.Load(t_5*4));
+    uint b_19 = asuint(nyq_halton_bases.Load(t_5*4));
     uint chunk_1 = asuint(nyq_halton_bases.Load((t_5 + 4u)*4));
     uint run_1 = asuint(nyq_halton_bases.Load((t_5 + 5u)*4));
-    const uint2 _e16 = nyq_u64_(b_17);
+    const uint2 _e16 = nyq_u64_(b_19);
     const uint2 _e17 = nyq_hash2_(seed_21, _e16);
-    const NyqPermutation _e21 = nyq_permutation(b_17, (_e17.x ^ _e17.y));
+    const NyqPermutation _e21 = nyq_permutation(b_19, (_e17.x ^ _e17.y));
     x_24 = a_16;
     uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
     while(true) {
@@ -3435,13 +3455,13 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = naga_div(_e77, b_17);
+                    uint q_7 = naga_div(_e77, b_19);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_17)));
-                    part = ((_e79 * b_17) + _e84);
+                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_19)));
+                    part = ((_e79 * b_19) + _e84);
                     uint _e86 = scale;
-                    scale = (_e86 * b_17);
+                    scale = (_e86 * b_19);
                     c_4 = q_7;
                 }
             }
@@ -3459,11 +3479,11 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     }
     const uint _e104 = nyq_permutation_apply(_e21, 0u);
     uint4 _e105 = num_3;
-    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_17 - 1u));
+    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_19 - 1u));
     const uint4 _e113 = nyq_add128_(_e108, uint4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     uint4 _e114 = den_3;
-    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_17 - 1u));
+    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_19 - 1u));
     den_3 = _e117;
     uint _e119 = den_3.w;
     if ((_e119 == 0u)) {
@@ -3482,7 +3502,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     bool small = local_33;
     uint4 _e138 = num_3;
     uint4 _e139 = den_3;
-    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_17 - 1u)) ? 1u : 0u));
+    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_19 - 1u)) ? 1u : 0u));
     return nyqfraction_1;
 }
 
@@ -3502,7 +3522,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
     bool local_34 = (bool)0;
     uint out_2 = (uint)0;
 
-    uint b_18 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
+    uint b_20 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
     const uint2 _e9 = nyq_u64_(d_4);
     const uint2 _e13 = nyq_hash3_(seed_22, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
     rest = a_17;
@@ -3528,7 +3548,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
             bool _e51 = local_34;
             if (_e51) {
                 uint2 _e52 = rest;
-                const uint3 _e53 = nyq_divmod64_small(_e52, b_18);
+                const uint3 _e53 = nyq_divmod64_small(_e52, b_20);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
@@ -3545,38 +3565,38 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
             uint2 _e69 = next;
             rest = _e69;
             uint2 _e70 = pow_;
-            const uint2 _e71 = nyq_u64_(b_18);
+            const uint2 _e71 = nyq_u64_(b_20);
             const uint2 _e72 = nyq_mul64_(_e70, _e71);
             pow_ = _e72;
             uint _e73 = level;
             level = (_e73 + 1u);
             out_2 = ZeroValueuint();
             if (affine) {
-                const uint3 _e78 = nyq_mul64x32_(_e68, b_18);
-                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_18 - 1u));
+                const uint3 _e78 = nyq_mul64x32_(_e68, b_20);
+                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_20 - 1u));
                 uint m_7 = (1u + _e83.z);
                 uint _e86 = digit_1;
-                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_18);
+                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_20);
             } else {
-                if ((b_18 <= 16u)) {
-                    const uint2 _e93 = nyq_packed_table(b_18, _e68);
+                if ((b_20 <= 16u)) {
+                    const uint2 _e93 = nyq_packed_table(b_20, _e68);
                     uint _e95 = digit_1;
                     const uint _e97 = nyq_nibble(_e93, (4u * _e95));
                     out_2 = _e97;
                 } else {
-                    const NyqPermutation _e101 = nyq_permutation(b_18, (_e68.x ^ _e68.y));
+                    const NyqPermutation _e101 = nyq_permutation(b_20, (_e68.x ^ _e68.y));
                     uint _e102 = digit_1;
                     const uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             uint2 _e104 = num_4;
-            const uint3 _e105 = nyq_mul64x32_(_e104, b_18);
+            const uint3 _e105 = nyq_mul64x32_(_e104, b_20);
             uint _e107 = out_2;
             const uint2 _e110 = nyq_add64_(_e105.xy, uint2(_e107, 0u));
             num_4 = _e110;
             uint2 _e111 = den_4;
-            const uint3 _e112 = nyq_mul64x32_(_e111, b_18);
+            const uint3 _e112 = nyq_mul64x32_(_e111, b_20);
             den_4 = _e112.xy;
         }
     }
@@ -3595,10 +3615,10 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint
     NyqFraction f = (NyqFraction)0;
     uint bits_2 = (uint)0;
 
-    uint d_25 = naga_mod(dim_32, NYQ_PRIME_COUNT);
-    uint t_8 = (NYQ_HALTON_WORDS * d_25);
+    uint d_27 = naga_mod(dim_32, NYQ_PRIME_COUNT);
+    uint t_8 = (NYQ_HALTON_WORDS * d_27);
     if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-        local_35 = (d_25 == 0u);
+        local_35 = (d_27 == 0u);
     } else {
         local_35 = false;
     }
@@ -3633,7 +3653,7 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint
                     const NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23);
                     f = _e60;
                 } else {
-                    const NyqFraction _e63 = nyq_nested_fraction(d_25, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    const NyqFraction _e63 = nyq_nested_fraction(d_27, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
                     f = _e63;
                 }
             }
@@ -3883,14 +3903,14 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
     return _e34;
 }
 
-uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_72, uint2 pixel_18, uint sample_index_16)
+uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_74, uint2 pixel_18, uint sample_index_16)
 {
     uint offset_1 = (uint)0;
 
-    uint stride = s_72.stride;
-    uint2 scales_1 = s_72.scales;
-    uint2 exponents = s_72.exponents;
-    uint2 basis_1 = s_72.basis;
+    uint stride = s_74.stride;
+    uint2 scales_1 = s_74.scales;
+    uint2 exponents = s_74.exponents;
+    uint2 basis_1 = s_74.basis;
     const uint _e16 = nyq_inverse_radical_inverse(2u, naga_mod(pixel_18.x, scales_1.x), exponents.x);
     offset_1 = naga_mod((_e16 * basis_1.x), stride);
     const uint _e26 = nyq_inverse_radical_inverse(3u, naga_mod(pixel_18.y, scales_1.y), exponents.y);
@@ -3903,50 +3923,50 @@ uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_72, uint2 pixel_18, uint
     return _e35;
 }
 
-float nyq_halton_sampler_value(inout NyqHaltonSampler s_73, uint dim_38)
+float nyq_halton_sampler_value(inout NyqHaltonSampler s_75, uint dim_38)
 {
     uint2 a_24 = (uint2)0;
 
-    uint d_26 = naga_mod(dim_38, NYQ_PRIME_COUNT);
-    uint2 index_17 = s_73.index;
-    a_24 = index_17;
-    if ((d_26 == 0u)) {
-        uint e_6 = s_73.exponents.x;
+    uint d_28 = naga_mod(dim_38, NYQ_PRIME_COUNT);
+    uint2 index_19 = s_75.index;
+    a_24 = index_19;
+    if ((d_28 == 0u)) {
+        uint e_6 = s_75.exponents.x;
         if ((e_6 != 0u)) {
-            const uint2 _e14 = nyq_shr64_(index_17, e_6);
+            const uint2 _e14 = nyq_shr64_(index_19, e_6);
             a_24 = _e14;
         }
     } else {
-        if ((d_26 == 1u)) {
-            uint _e19 = s_73.scales.y;
-            const uint3 _e20 = nyq_divmod64_small(index_17, _e19);
+        if ((d_28 == 1u)) {
+            uint _e19 = s_75.scales.y;
+            const uint3 _e20 = nyq_divmod64_small(index_19, _e19);
             a_24 = _e20.xy;
         }
     }
     uint2 _e22 = a_24;
-    uint2 _e24 = s_73.seed;
-    uint _e26 = s_73.scramble;
-    const float _e27 = nyq_radical_inverse_scrambled(d_26, _e22, _e24, _e26);
+    uint2 _e24 = s_75.seed;
+    uint _e26 = s_75.scramble;
+    const float _e27 = nyq_radical_inverse_scrambled(d_28, _e22, _e24, _e26);
     return _e27;
 }
 
-void nyq_halton_sampler_start(inout NyqHaltonSampler s_74, uint2 pixel_19, uint sample_index_17, uint dim_39)
+void nyq_halton_sampler_start(inout NyqHaltonSampler s_76, uint2 pixel_19, uint sample_index_17, uint dim_39)
 {
-    const uint2 _e5 = nyq_halton_sampler_index(s_74, pixel_19, sample_index_17);
-    s_74.index = _e5;
-    s_74.dim = dim_39;
+    const uint2 _e5 = nyq_halton_sampler_index(s_76, pixel_19, sample_index_17);
+    s_76.index = _e5;
+    s_76.dim = dim_39;
     return;
 }
 
-float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_75)
+float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_77)
 {
-    uint d_27 = s_75.dim;
-    s_75.dim = (d_27 + 1u);
-    const float _e6 = nyq_halton_sampler_value(s_75, d_27);
+    uint d_29 = s_77.dim;
+    s_77.dim = (d_29 + 1u);
+    const float _e6 = nyq_halton_sampler_value(s_77, d_29);
     return _e6;
 }
 
-float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_76, uint dim_40)
+float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_78, uint dim_40)
 {
     float2 v_6 = float2(0.0, 0.0);
     uint k_15 = 0u;
@@ -3969,7 +3989,7 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_76, uint dim_40)
         {
             uint _e11 = k_15;
             uint _e13 = k_15;
-            const float _e15 = nyq_halton_sampler_value(s_76, (dim_40 + _e13));
+            const float _e15 = nyq_halton_sampler_value(s_78, (dim_40 + _e13));
             v_6[min(uint(_e11), 1u)] = _e15;
         }
     }
@@ -3977,29 +3997,29 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_76, uint dim_40)
     return _e19;
 }
 
-float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_77)
+float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_79)
 {
-    uint d_28 = s_77.dim;
-    s_77.dim = (d_28 + 2u);
-    const float2 _e6 = nyq_halton_sampler_pair(s_77, d_28);
+    uint d_30 = s_79.dim;
+    s_79.dim = (d_30 + 2u);
+    const float2 _e6 = nyq_halton_sampler_pair(s_79, d_30);
     return _e6;
 }
 
-float2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_78)
+float2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_80)
 {
-    uint _e3 = s_78.dim;
-    s_78.dim = max(_e3, 2u);
-    const float2 _e7 = nyq_halton_sampler_pair(s_78, 0u);
+    uint _e3 = s_80.dim;
+    s_80.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_halton_sampler_pair(s_80, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_79, uint2 pixel_20, uint sample_index_18)
+NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_81, uint2 pixel_20, uint sample_index_18)
 {
     float4 v_7 = float4(0.0, 0.0, 0.0, 0.0);
     float lens_y = 0.0;
     uint d_5 = 0u;
 
-    nyq_halton_sampler_start(s_79, pixel_20, sample_index_18, 5u);
+    nyq_halton_sampler_start(s_81, pixel_20, sample_index_18, 5u);
     uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
     bool loop_init_25 = true;
     while(true) {
@@ -4017,7 +4037,7 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_79, ui
         }
         {
             uint _e17 = d_5;
-            const float _e18 = nyq_halton_sampler_value(s_79, _e17);
+            const float _e18 = nyq_halton_sampler_value(s_81, _e17);
             uint _e19 = d_5;
             if ((_e19 < 4u)) {
                 uint _e22 = d_5;
@@ -4039,6 +4059,362 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_79, ui
     return nyqcamerasample_7;
 }
 
+uint nyq_blue_entry(uint family, uint x_25, uint y_1)
+{
+    uint _e16 = asuint(nyq_blue_tiles.Load(((((family * NYQ_BLUE_TILE_SIZE) * NYQ_BLUE_TILE_SIZE) + ((y_1 & 127u) * NYQ_BLUE_TILE_SIZE)) + (x_25 & 127u))*4));
+    return _e16;
+}
+
+uint2 nyq_blue_offset(uint2 seed_29, uint frame_1, uint block)
+{
+    const uint2 _e5 = nyq_u64_((block ^ 1112298821u));
+    const uint2 _e6 = nyq_hash2_(seed_29, _e5);
+    uint2 r_17 = uint2(((frame_1 * 3242174889u) >> 25u), ((frame_1 * 2447445414u) >> 25u));
+    return ((_e6 + r_17) & (127u).xx);
+}
+
+uint nyq_blue_block_entry(uint family_1, uint2 seed_30, uint frame_2, uint2 pixel_21, uint block_1)
+{
+    const uint2 _e5 = nyq_blue_offset(seed_30, frame_2, block_1);
+    uint2 p_4 = (pixel_21 + _e5);
+    const uint _e9 = nyq_blue_entry(family_1, p_4.x, p_4.y);
+    return _e9;
+}
+
+float nyq_blue_film_coordinate(uint pixel_22, float offset_2)
+{
+    const float _e2 = nyq_u32_to_f32_(pixel_22);
+    float x_29 = (_e2 + offset_2);
+    float edge_1 = (_e2 + 1.0);
+    if ((x_29 < edge_1)) {
+        return x_29;
+    }
+    float below_1 = asfloat((asuint(edge_1) - 1u));
+    return ((below_1 >= _e2) ? below_1 : _e2);
+}
+
+NyqCameraSample nyq_blue_camera(uint2 pixel_23, float v_8[5])
+{
+    const float _e4 = nyq_blue_film_coordinate(pixel_23.x, v_8[0]);
+    const float _e7 = nyq_blue_film_coordinate(pixel_23.y, v_8[1]);
+    float2 p_5 = float2(_e4, _e7);
+    const NyqCameraSample nyqcamerasample_8 = ConstructNyqCameraSample(p_5, float2(v_8[3], v_8[4]), v_8[2]);
+    return nyqcamerasample_8;
+}
+
+NyqBlueSampler ConstructNyqBlueSampler(uint2 arg0, uint arg1, uint2 arg2, uint arg3, uint arg4, uint2 arg5, uint2 arg6) {
+    NyqBlueSampler ret = (NyqBlueSampler)0;
+    ret.seed = arg0;
+    ret.frame = arg1;
+    ret.pixel = arg2;
+    ret.index = arg3;
+    ret.dim = arg4;
+    ret.key = arg5;
+    ret.prepared = arg6;
+    return ret;
+}
+
+NyqBlueSampler nyq_blue_sampler(uint2 seed_31, uint frame_3)
+{
+    const NyqBlueSampler nyqbluesampler = ConstructNyqBlueSampler(seed_31, frame_3, (0u).xx, 0u, 0u, (0u).xx, (0u).xx);
+    return nyqbluesampler;
+}
+
+uint nyq_owen_sobol_bn_key(uint entry)
+{
+    const uint _e5 = nyq_mix32_(((entry >> 8u) ^ 1112296192u));
+    return _e5;
+}
+
+uint nyq_owen_sobol_bn_rev(uint entry_1, uint key_4, uint index_17)
+{
+    const uint _e8 = nyq_mix32_((key_4 ^ 1397249350u));
+    const uint _e9 = nyq_shuffle_rev((index_17 ^ (entry_1 & 255u)), _e8);
+    return _e9;
+}
+
+float nyq_owen_sobol_bn_value_at(uint key_5, uint rev_2, uint c_5)
+{
+    const uint _e3 = nyq_dim_seed(key_5, c_5);
+    const uint _e4 = nyq_owen_sobol_rev(rev_2, c_5, _e3);
+    const float _e5 = nyq_rev_to_f32_(_e4);
+    return _e5;
+}
+
+NyqBlueSampler nyq_owen_sobol_bn_sampler(uint2 seed_32, uint frame_4)
+{
+    const NyqBlueSampler _e2 = nyq_blue_sampler(seed_32, frame_4);
+    const NyqBlueSampler nyqbluesampler_1 = _e2;
+    return nyqbluesampler_1;
+}
+
+void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_82, uint2 pixel_24, uint sample_index_19, uint dim_41)
+{
+    uint b_15 = 0u;
+
+    s_82.pixel = pixel_24;
+    s_82.index = sample_index_19;
+    s_82.dim = dim_41;
+    uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+    bool loop_init_26 = true;
+    while(true) {
+        if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e28 = b_15;
+            b_15 = (_e28 + 1u);
+        }
+        loop_init_26 = false;
+        uint _e9 = b_15;
+        if ((_e9 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e14 = s_82.seed;
+            uint _e16 = s_82.frame;
+            uint _e17 = b_15;
+            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e14, _e16, pixel_24, _e17);
+            const uint _e19 = nyq_owen_sobol_bn_key(_e18);
+            uint _e21 = b_15;
+            s_82.key[min(uint(_e21), 1u)] = _e19;
+            uint _e24 = b_15;
+            const uint _e26 = nyq_owen_sobol_bn_rev(_e18, _e19, sample_index_19);
+            s_82.prepared[min(uint(_e24), 1u)] = _e26;
+        }
+    }
+    return;
+}
+
+float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_83, uint dim_42)
+{
+    uint b_21 = naga_div(dim_42, 4u);
+    uint c_11 = naga_mod(dim_42, 4u);
+    if ((b_21 < 2u)) {
+        uint _e10 = s_83.key[min(uint(b_21), 1u)];
+        uint _e13 = s_83.prepared[min(uint(b_21), 1u)];
+        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_11);
+        return _e14;
+    }
+    uint2 _e17 = s_83.seed;
+    uint _e19 = s_83.frame;
+    uint2 _e21 = s_83.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_21);
+    const uint _e23 = nyq_owen_sobol_bn_key(_e22);
+    uint _e25 = s_83.index;
+    const uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
+    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_11);
+    return _e27;
+}
+
+float nyq_owen_sobol_bn_get_1d(inout NyqBlueSampler s_84)
+{
+    uint d_31 = s_84.dim;
+    s_84.dim = (d_31 + 1u);
+    const float _e6 = nyq_owen_sobol_bn_value(s_84, d_31);
+    return _e6;
+}
+
+float2 nyq_owen_sobol_bn_get_2d(inout NyqBlueSampler s_85)
+{
+    uint d_32 = s_85.dim;
+    s_85.dim = (d_32 + 2u);
+    const float _e6 = nyq_owen_sobol_bn_value(s_85, d_32);
+    const float _e9 = nyq_owen_sobol_bn_value(s_85, (d_32 + 1u));
+    return float2(_e6, _e9);
+}
+
+float2 nyq_owen_sobol_bn_get_pixel_2d(inout NyqBlueSampler s_86)
+{
+    uint _e3 = s_86.dim;
+    s_86.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_bn_value(s_86, 0u);
+    const float _e9 = nyq_owen_sobol_bn_value(s_86, 1u);
+    return float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_87, uint2 pixel_25, uint sample_index_20)
+{
+    float v_9[5] = (float[5])0;
+    uint d_6 = 0u;
+
+    nyq_owen_sobol_bn_start(s_87, pixel_25, sample_index_20, 0u);
+    uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
+    bool loop_init_27 = true;
+    while(true) {
+        if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
+        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+        if (!loop_init_27) {
+            uint _e15 = d_6;
+            d_6 = (_e15 + 1u);
+        }
+        loop_init_27 = false;
+        uint _e7 = d_6;
+        if ((_e7 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = d_6;
+            uint _e12 = d_6;
+            const float _e13 = nyq_owen_sobol_bn_value(s_87, _e12);
+            v_9[min(uint(_e10), 4u)] = _e13;
+        }
+    }
+    s_87.dim = 5u;
+    float _e19[5] = v_9;
+    const NyqCameraSample _e20 = nyq_blue_camera(pixel_25, _e19);
+    const NyqCameraSample nyqcamerasample_9 = _e20;
+    return nyqcamerasample_9;
+}
+
+uint nyq_lattice_bn_key(uint entry_2)
+{
+    const uint _e5 = nyq_mix32_(((entry_2 >> 8u) ^ 1279349760u));
+    return _e5;
+}
+
+uint nyq_lattice_bn_rev(uint entry_3, uint key_6, uint index_18)
+{
+    const uint _e8 = nyq_mix32_((key_6 ^ 1397249350u));
+    const uint _e9 = nyq_shuffle_rev((index_18 ^ (entry_3 & 255u)), _e8);
+    return _e9;
+}
+
+float nyq_lattice_bn_value_at(uint key_7, uint rev_3, uint c_6)
+{
+    const uint _e8 = nyq_mix32_((key_7 ^ ((c_6 + 1u) * 2654435769u)));
+    const float _e13 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[min(uint(c_6), 3u)]) + _e8));
+    return _e13;
+}
+
+NyqBlueSampler nyq_lattice_bn_sampler(uint2 seed_33, uint frame_5)
+{
+    const NyqBlueSampler _e2 = nyq_blue_sampler(seed_33, frame_5);
+    const NyqBlueSampler nyqbluesampler_2 = _e2;
+    return nyqbluesampler_2;
+}
+
+void nyq_lattice_bn_start(inout NyqBlueSampler s_88, uint2 pixel_26, uint sample_index_21, uint dim_43)
+{
+    uint b_16 = 0u;
+
+    s_88.pixel = pixel_26;
+    s_88.index = sample_index_21;
+    s_88.dim = dim_43;
+    uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
+    while(true) {
+        if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+        if (!loop_init_28) {
+            uint _e28 = b_16;
+            b_16 = (_e28 + 1u);
+        }
+        loop_init_28 = false;
+        uint _e9 = b_16;
+        if ((_e9 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e14 = s_88.seed;
+            uint _e16 = s_88.frame;
+            uint _e17 = b_16;
+            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_26, _e17);
+            const uint _e19 = nyq_lattice_bn_key(_e18);
+            uint _e21 = b_16;
+            s_88.key[min(uint(_e21), 1u)] = _e19;
+            uint _e24 = b_16;
+            const uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_21);
+            s_88.prepared[min(uint(_e24), 1u)] = _e26;
+        }
+    }
+    return;
+}
+
+float nyq_lattice_bn_value(inout NyqBlueSampler s_89, uint dim_44)
+{
+    uint b_22 = naga_div(dim_44, 4u);
+    uint c_12 = naga_mod(dim_44, 4u);
+    if ((b_22 < 2u)) {
+        uint _e10 = s_89.key[min(uint(b_22), 1u)];
+        uint _e13 = s_89.prepared[min(uint(b_22), 1u)];
+        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_12);
+        return _e14;
+    }
+    uint2 _e17 = s_89.seed;
+    uint _e19 = s_89.frame;
+    uint2 _e21 = s_89.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_22);
+    const uint _e23 = nyq_lattice_bn_key(_e22);
+    uint _e25 = s_89.index;
+    const uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
+    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_12);
+    return _e27;
+}
+
+float nyq_lattice_bn_get_1d(inout NyqBlueSampler s_90)
+{
+    uint d_33 = s_90.dim;
+    s_90.dim = (d_33 + 1u);
+    const float _e6 = nyq_lattice_bn_value(s_90, d_33);
+    return _e6;
+}
+
+float2 nyq_lattice_bn_get_2d(inout NyqBlueSampler s_91)
+{
+    uint d_34 = s_91.dim;
+    s_91.dim = (d_34 + 2u);
+    const float _e6 = nyq_lattice_bn_value(s_91, d_34);
+    const float _e9 = nyq_lattice_bn_value(s_91, (d_34 + 1u));
+    return float2(_e6, _e9);
+}
+
+float2 nyq_lattice_bn_get_pixel_2d(inout NyqBlueSampler s_92)
+{
+    uint _e3 = s_92.dim;
+    s_92.dim = max(_e3, 2u);
+    const float _e7 = nyq_lattice_bn_value(s_92, 0u);
+    const float _e9 = nyq_lattice_bn_value(s_92, 1u);
+    return float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_93, uint2 pixel_27, uint sample_index_22)
+{
+    float v_10[5] = (float[5])0;
+    uint d_7 = 0u;
+
+    nyq_lattice_bn_start(s_93, pixel_27, sample_index_22, 0u);
+    uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
+    bool loop_init_29 = true;
+    while(true) {
+        if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_29) {
+            uint _e15 = d_7;
+            d_7 = (_e15 + 1u);
+        }
+        loop_init_29 = false;
+        uint _e7 = d_7;
+        if ((_e7 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = d_7;
+            uint _e12 = d_7;
+            const float _e13 = nyq_lattice_bn_value(s_93, _e12);
+            v_10[min(uint(_e10), 4u)] = _e13;
+        }
+    }
+    s_93.dim = 5u;
+    float _e19[5] = v_10;
+    const NyqCameraSample _e20 = nyq_blue_camera(pixel_27, _e19);
+    const NyqCameraSample nyqcamerasample_10 = _e20;
+    return nyqcamerasample_10;
+}
+
 uint4 nyq_fill_request(uint i_16)
 {
     uint _e3 = nyq_job.implicit;
@@ -4049,20 +4425,20 @@ uint4 nyq_fill_request(uint i_16)
     uint _e11 = nyq_job.first;
     uint n_12 = (_e11 + i_16);
     uint _e15 = nyq_job.spp;
-    uint pixel_21 = naga_div(n_12, _e15);
+    uint pixel_28 = naga_div(n_12, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_12, _e29), 5u);
+    return uint4(naga_mod(pixel_28, _e20), naga_div(pixel_28, _e25), naga_mod(n_12, _e29), 5u);
 }
 
-void nyq_fill_camera(uint out_3, NyqCameraSample c_5)
+void nyq_fill_camera(uint out_3, NyqCameraSample c_7)
 {
-    nyq_values.Store(out_3*4, asuint(asuint(c_5.p_film.x)));
-    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_5.p_film.y)));
-    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_5.time)));
-    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_5.lens.x)));
-    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_5.lens.y)));
+    nyq_values.Store(out_3*4, asuint(asuint(c_7.p_film.x)));
+    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_7.p_film.y)));
+    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_7.time)));
+    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_7.lens.x)));
+    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_7.lens.y)));
     return;
 }
 
@@ -4085,6 +4461,8 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
     NyqPmj02Sampler s_5 = (NyqPmj02Sampler)0;
     NyqSobolSampler s_6 = (NyqSobolSampler)0;
     NyqHaltonSampler s_7 = (NyqHaltonSampler)0;
+    NyqBlueSampler s_8 = (NyqBlueSampler)0;
+    NyqBlueSampler s_9 = (NyqBlueSampler)0;
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
@@ -4098,7 +4476,7 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
         return;
     }
     const uint4 _e6 = nyq_fill_request(i_17);
-    uint2 pixel_22 = _e6.xy;
+    uint2 pixel_29 = _e6.xy;
     uint out_5 = (8u * i_17);
     uint _e12 = nyq_job.kind;
     switch(_e12) {
@@ -4107,9 +4485,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e18 = nyq_job.frame;
             const NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_22, _e6.z);
+            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e22);
-            nyq_owen_sobol_start(s, pixel_22, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_29, _e6.z, _e6.w);
             const float _e25 = nyq_owen_sobol_get_1d(s);
             const float2 _e26 = nyq_owen_sobol_get_2d(s);
             nyq_fill_values(out_5, _e25, _e26);
@@ -4122,9 +4500,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e38 = nyq_job.seed;
             const NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_22, _e6.z);
+            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e42);
-            nyq_zsobol_start(s_1, pixel_22, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_29, _e6.z, _e6.w);
             const float _e45 = nyq_zsobol_get_1d(s_1);
             const float2 _e46 = nyq_zsobol_get_2d(s_1);
             nyq_fill_values(out_5, _e45, _e46);
@@ -4134,9 +4512,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e49 = nyq_job.seed;
             const NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_22, _e6.z);
+            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e53);
-            nyq_random_start(s_2, pixel_22, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_29, _e6.z, _e6.w);
             const float _e56 = nyq_random_get_1d(s_2);
             const float2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_5, _e56, _e57);
@@ -4149,9 +4527,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e69 = nyq_job.seed;
             const NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_22, _e6.z);
+            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e73);
-            nyq_lattice_start(s_3, pixel_22, _e6.z, _e6.w);
+            nyq_lattice_start(s_3, pixel_29, _e6.z, _e6.w);
             const float _e76 = nyq_lattice_get_1d(s_3);
             const float2 _e77 = nyq_lattice_get_2d(s_3);
             nyq_fill_values(out_5, _e76, _e77);
@@ -4164,9 +4542,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e91 = nyq_job.seed;
             const NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
             s_4 = _e92;
-            const NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_22, _e6.z);
+            const NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e95);
-            nyq_stratified_start(s_4, pixel_22, _e6.z, _e6.w);
+            nyq_stratified_start(s_4, pixel_29, _e6.z, _e6.w);
             const float _e98 = nyq_stratified_get_1d(s_4);
             const float2 _e99 = nyq_stratified_get_2d(s_4);
             nyq_fill_values(out_5, _e98, _e99);
@@ -4176,9 +4554,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e102 = nyq_job.seed;
             const NyqPmj02Sampler _e103 = nyq_pmj02_sampler(_e102);
             s_5 = _e103;
-            const NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_22, _e6.z);
+            const NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e106);
-            nyq_pmj02_start(s_5, pixel_22, _e6.z, _e6.w);
+            nyq_pmj02_start(s_5, pixel_29, _e6.z, _e6.w);
             const float _e109 = nyq_pmj02_get_1d(s_5);
             const float2 _e110 = nyq_pmj02_get_2d(s_5);
             nyq_fill_values(out_5, _e109, _e110);
@@ -4191,9 +4569,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e122 = nyq_job.seed;
             const NyqSobolSampler _e123 = nyq_sobol_sampler(_e113, _e116, _e119, _e122);
             s_6 = _e123;
-            const NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_22, _e6.z);
+            const NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e126);
-            nyq_sobol_sampler_start(s_6, pixel_22, _e6.z, _e6.w);
+            nyq_sobol_sampler_start(s_6, pixel_29, _e6.z, _e6.w);
             const float _e129 = nyq_sobol_sampler_get_1d(s_6);
             const float2 _e130 = nyq_sobol_sampler_get_2d(s_6);
             nyq_fill_values(out_5, _e129, _e130);
@@ -4206,202 +4584,228 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e142 = nyq_job.seed;
             const NyqHaltonSampler _e143 = nyq_halton_sampler(_e133, _e136, _e139, _e142);
             s_7 = _e143;
-            const NyqCameraSample _e146 = nyq_halton_sampler_camera_sample(s_7, pixel_22, _e6.z);
+            const NyqCameraSample _e146 = nyq_halton_sampler_camera_sample(s_7, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e146);
-            nyq_halton_sampler_start(s_7, pixel_22, _e6.z, _e6.w);
+            nyq_halton_sampler_start(s_7, pixel_29, _e6.z, _e6.w);
             const float _e149 = nyq_halton_sampler_get_1d(s_7);
             const float2 _e150 = nyq_halton_sampler_get_2d(s_7);
             nyq_fill_values(out_5, _e149, _e150);
             return;
         }
+        case 8u: {
+            uint2 _e153 = nyq_job.seed;
+            uint _e156 = nyq_job.frame;
+            const NyqBlueSampler _e157 = nyq_owen_sobol_bn_sampler(_e153, _e156);
+            s_8 = _e157;
+            const NyqCameraSample _e160 = nyq_owen_sobol_bn_camera_sample(s_8, pixel_29, _e6.z);
+            nyq_fill_camera(out_5, _e160);
+            nyq_owen_sobol_bn_start(s_8, pixel_29, _e6.z, _e6.w);
+            const float _e163 = nyq_owen_sobol_bn_get_1d(s_8);
+            const float2 _e164 = nyq_owen_sobol_bn_get_2d(s_8);
+            nyq_fill_values(out_5, _e163, _e164);
+            return;
+        }
+        case 10u: {
+            uint2 _e167 = nyq_job.seed;
+            uint _e170 = nyq_job.frame;
+            const NyqBlueSampler _e171 = nyq_lattice_bn_sampler(_e167, _e170);
+            s_9 = _e171;
+            const NyqCameraSample _e174 = nyq_lattice_bn_camera_sample(s_9, pixel_29, _e6.z);
+            nyq_fill_camera(out_5, _e174);
+            nyq_lattice_bn_start(s_9, pixel_29, _e6.z, _e6.w);
+            const float _e177 = nyq_lattice_bn_get_1d(s_9);
+            const float2 _e178 = nyq_lattice_bn_get_2d(s_9);
+            nyq_fill_values(out_5, _e177, _e178);
+            return;
+        }
         case 16u: {
-            uint _e153 = nyq_job.dims;
-            uint _e156 = nyq_job.scramble;
-            uint2 _e161 = nyq_job.seed;
-            const NyqSobol _e162 = nyq_sobol(_e153, (_e156 != 0u), _e161);
-            uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
-            bool loop_init_26 = true;
-            while(true) {
-                if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
-                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-                if (!loop_init_26) {
-                    uint _e190 = k;
-                    k = (_e190 + 1u);
-                }
-                loop_init_26 = false;
-                uint _e165 = k;
-                if ((_e165 < 4u)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e169 = k;
-                    uint _e174 = k;
-                    const uint _e176 = nyq_sobol_sample_u32_(_e162, _e6.z, (_e6.w + _e174));
-                    nyq_values.Store((out_5 + _e169)*4, asuint(_e176));
-                    uint _e180 = k;
-                    uint _e185 = k;
-                    const float _e187 = nyq_sobol_sample(_e162, _e6.z, (_e6.w + _e185));
-                    nyq_values.Store(((out_5 + 4u) + _e180)*4, asuint(asuint(_e187)));
-                }
-            }
-            return;
-        }
-        case 17u: {
-            uint _e194 = nyq_job.dims;
-            uint2 _e197 = nyq_job.seed;
-            const NyqOwenSobol _e198 = nyq_owen_sobol(_e194, _e197);
-            const float4 _e201 = nyq_owen_sobol_sample_4d(_e198, _e6.z, _e6.w);
-            uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
-            bool loop_init_27 = true;
-            while(true) {
-                if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
-                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-                if (!loop_init_27) {
-                    uint _e226 = k_1;
-                    k_1 = (_e226 + 1u);
-                }
-                loop_init_27 = false;
-                uint _e204 = k_1;
-                if ((_e204 < 4u)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e208 = k_1;
-                    uint _e213 = k_1;
-                    const uint _e215 = nyq_owen_sobol_sample_u32_(_e198, _e6.z, (_e6.w + _e213));
-                    nyq_values.Store((out_5 + _e208)*4, asuint(_e215));
-                    uint _e219 = k_1;
-                    uint _e222 = k_1;
-                    nyq_values.Store(((out_5 + 4u) + _e219)*4, asuint(asuint(_e201[min(uint(_e222), 3u)])));
-                }
-            }
-            return;
-        }
-        case 18u: {
-            uint _e230 = nyq_job.scramble;
-            uint2 _e235 = nyq_job.seed;
-            const NyqPmj02_ _e236 = nyq_pmj02_((_e230 != 0u), _e235);
-            uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-            bool loop_init_28 = true;
-            while(true) {
-                if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-                if (!loop_init_28) {
-                    uint _e264 = k_2;
-                    k_2 = (_e264 + 1u);
-                }
-                loop_init_28 = false;
-                uint _e239 = k_2;
-                if ((_e239 < 4u)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e243 = k_2;
-                    uint _e248 = k_2;
-                    const uint _e250 = nyq_pmj02_sample_u32_(_e236, _e6.z, (_e6.w + _e248));
-                    nyq_values.Store((out_5 + _e243)*4, asuint(_e250));
-                    uint _e254 = k_2;
-                    uint _e259 = k_2;
-                    const float _e261 = nyq_pmj02_sample(_e236, _e6.z, (_e6.w + _e259));
-                    nyq_values.Store(((out_5 + 4u) + _e254)*4, asuint(asuint(_e261)));
-                }
-            }
-            return;
-        }
-        case 19u: {
-            uint _e268 = nyq_job.dims;
-            uint _e271 = nyq_job.scramble;
-            uint2 _e274 = nyq_job.seed;
-            const NyqHalton _e275 = nyq_halton(_e268, _e271, _e274);
-            uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
-            uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-            bool loop_init_29 = true;
-            while(true) {
-                if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
-                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-                if (!loop_init_29) {
-                    uint _e309 = k_3;
-                    k_3 = (_e309 + 1u);
-                }
-                loop_init_29 = false;
-                uint _e287 = k_3;
-                if ((_e287 < 8u)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e292 = k_3;
-                    uint2 index_18 = uint2(_e6.z, ((_e292 >= 4u) ? high_2 : 0u));
-                    uint _e298 = k_3;
-                    uint _e302 = k_3;
-                    const float _e306 = nyq_halton_sample(_e275, index_18, (_e6.w + (_e302 & 3u)));
-                    nyq_values.Store((out_5 + _e298)*4, asuint(asuint(_e306)));
-                }
-            }
-            return;
-        }
-        case 20u: {
-            uint _e313 = nyq_job.lattice;
-            uint _e316 = nyq_job.spp;
-            uint _e319 = nyq_job.generator;
-            uint _e322 = nyq_job.dims;
-            uint _e325 = nyq_job.scramble;
-            uint2 _e330 = nyq_job.seed;
-            const NyqLattice _e331 = nyq_lattice(_e313, _e316, _e319, _e322, (_e325 != 0u), _e330);
+            uint _e181 = nyq_job.dims;
+            uint _e184 = nyq_job.scramble;
+            uint2 _e189 = nyq_job.seed;
+            const NyqSobol _e190 = nyq_sobol(_e181, (_e184 != 0u), _e189);
             uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
             bool loop_init_30 = true;
             while(true) {
                 if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
                 loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
                 if (!loop_init_30) {
-                    uint _e348 = k_4;
-                    k_4 = (_e348 + 1u);
+                    uint _e218 = k;
+                    k = (_e218 + 1u);
                 }
                 loop_init_30 = false;
-                uint _e334 = k_4;
-                if ((_e334 < 4u)) {
+                uint _e193 = k;
+                if ((_e193 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e338 = k_4;
-                    uint _e343 = k_4;
-                    const float _e345 = nyq_lattice_sample(_e331, _e6.z, (_e6.w + _e343));
-                    nyq_values.Store((out_5 + _e338)*4, asuint(asuint(_e345)));
+                    uint _e197 = k;
+                    uint _e202 = k;
+                    const uint _e204 = nyq_sobol_sample_u32_(_e190, _e6.z, (_e6.w + _e202));
+                    nyq_values.Store((out_5 + _e197)*4, asuint(_e204));
+                    uint _e208 = k;
+                    uint _e213 = k;
+                    const float _e215 = nyq_sobol_sample(_e190, _e6.z, (_e6.w + _e213));
+                    nyq_values.Store(((out_5 + 4u) + _e208)*4, asuint(asuint(_e215)));
                 }
             }
-            const uint2 _e352 = nyq_lattice_fixed(_e331, _e6.z, _e6.w);
-            const uint2 _e353 = nyq_fixed_to_f64_bits(_e352);
-            const uint2 _e358 = nyq_lattice_fixed(_e331, _e6.z, (_e6.w + 1u));
-            const uint2 _e359 = nyq_fixed_to_f64_bits(_e358);
-            nyq_values.Store((out_5 + 4u)*4, asuint(_e353.x));
-            nyq_values.Store((out_5 + 5u)*4, asuint(_e353.y));
-            nyq_values.Store((out_5 + 6u)*4, asuint(_e359.x));
-            nyq_values.Store((out_5 + 7u)*4, asuint(_e359.y));
             return;
         }
-        default: {
+        case 17u: {
+            uint _e222 = nyq_job.dims;
+            uint2 _e225 = nyq_job.seed;
+            const NyqOwenSobol _e226 = nyq_owen_sobol(_e222, _e225);
+            const float4 _e229 = nyq_owen_sobol_sample_4d(_e226, _e6.z, _e6.w);
             uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
             bool loop_init_31 = true;
             while(true) {
                 if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
                 loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
                 if (!loop_init_31) {
-                    uint _e391 = k_5;
-                    k_5 = (_e391 + 1u);
+                    uint _e254 = k_1;
+                    k_1 = (_e254 + 1u);
                 }
                 loop_init_31 = false;
-                uint _e382 = k_5;
-                if ((_e382 < 8u)) {
+                uint _e232 = k_1;
+                if ((_e232 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e386 = k_5;
-                    nyq_values.Store((out_5 + _e386)*4, asuint(4294967295u));
+                    uint _e236 = k_1;
+                    uint _e241 = k_1;
+                    const uint _e243 = nyq_owen_sobol_sample_u32_(_e226, _e6.z, (_e6.w + _e241));
+                    nyq_values.Store((out_5 + _e236)*4, asuint(_e243));
+                    uint _e247 = k_1;
+                    uint _e250 = k_1;
+                    nyq_values.Store(((out_5 + 4u) + _e247)*4, asuint(asuint(_e229[min(uint(_e250), 3u)])));
+                }
+            }
+            return;
+        }
+        case 18u: {
+            uint _e258 = nyq_job.scramble;
+            uint2 _e263 = nyq_job.seed;
+            const NyqPmj02_ _e264 = nyq_pmj02_((_e258 != 0u), _e263);
+            uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+            bool loop_init_32 = true;
+            while(true) {
+                if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+                loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                if (!loop_init_32) {
+                    uint _e292 = k_2;
+                    k_2 = (_e292 + 1u);
+                }
+                loop_init_32 = false;
+                uint _e267 = k_2;
+                if ((_e267 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e271 = k_2;
+                    uint _e276 = k_2;
+                    const uint _e278 = nyq_pmj02_sample_u32_(_e264, _e6.z, (_e6.w + _e276));
+                    nyq_values.Store((out_5 + _e271)*4, asuint(_e278));
+                    uint _e282 = k_2;
+                    uint _e287 = k_2;
+                    const float _e289 = nyq_pmj02_sample(_e264, _e6.z, (_e6.w + _e287));
+                    nyq_values.Store(((out_5 + 4u) + _e282)*4, asuint(asuint(_e289)));
+                }
+            }
+            return;
+        }
+        case 19u: {
+            uint _e296 = nyq_job.dims;
+            uint _e299 = nyq_job.scramble;
+            uint2 _e302 = nyq_job.seed;
+            const NyqHalton _e303 = nyq_halton(_e296, _e299, _e302);
+            uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
+            uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+            bool loop_init_33 = true;
+            while(true) {
+                if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                if (!loop_init_33) {
+                    uint _e337 = k_3;
+                    k_3 = (_e337 + 1u);
+                }
+                loop_init_33 = false;
+                uint _e315 = k_3;
+                if ((_e315 < 8u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e320 = k_3;
+                    uint2 index_20 = uint2(_e6.z, ((_e320 >= 4u) ? high_2 : 0u));
+                    uint _e326 = k_3;
+                    uint _e330 = k_3;
+                    const float _e334 = nyq_halton_sample(_e303, index_20, (_e6.w + (_e330 & 3u)));
+                    nyq_values.Store((out_5 + _e326)*4, asuint(asuint(_e334)));
+                }
+            }
+            return;
+        }
+        case 20u: {
+            uint _e341 = nyq_job.lattice;
+            uint _e344 = nyq_job.spp;
+            uint _e347 = nyq_job.generator;
+            uint _e350 = nyq_job.dims;
+            uint _e353 = nyq_job.scramble;
+            uint2 _e358 = nyq_job.seed;
+            const NyqLattice _e359 = nyq_lattice(_e341, _e344, _e347, _e350, (_e353 != 0u), _e358);
+            uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+            bool loop_init_34 = true;
+            while(true) {
+                if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                if (!loop_init_34) {
+                    uint _e376 = k_4;
+                    k_4 = (_e376 + 1u);
+                }
+                loop_init_34 = false;
+                uint _e362 = k_4;
+                if ((_e362 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e366 = k_4;
+                    uint _e371 = k_4;
+                    const float _e373 = nyq_lattice_sample(_e359, _e6.z, (_e6.w + _e371));
+                    nyq_values.Store((out_5 + _e366)*4, asuint(asuint(_e373)));
+                }
+            }
+            const uint2 _e380 = nyq_lattice_fixed(_e359, _e6.z, _e6.w);
+            const uint2 _e381 = nyq_fixed_to_f64_bits(_e380);
+            const uint2 _e386 = nyq_lattice_fixed(_e359, _e6.z, (_e6.w + 1u));
+            const uint2 _e387 = nyq_fixed_to_f64_bits(_e386);
+            nyq_values.Store((out_5 + 4u)*4, asuint(_e381.x));
+            nyq_values.Store((out_5 + 5u)*4, asuint(_e381.y));
+            nyq_values.Store((out_5 + 6u)*4, asuint(_e387.x));
+            nyq_values.Store((out_5 + 7u)*4, asuint(_e387.y));
+            return;
+        }
+        default: {
+            uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+            bool loop_init_35 = true;
+            while(true) {
+                if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_35) {
+                    uint _e419 = k_5;
+                    k_5 = (_e419 + 1u);
+                }
+                loop_init_35 = false;
+                uint _e410 = k_5;
+                if ((_e410 < 8u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e414 = k_5;
+                    nyq_values.Store((out_5 + _e414)*4, asuint(4294967295u));
                 }
             }
             return;

@@ -7,8 +7,9 @@ using metal::uint;
 struct _mslBufferSizes {
     uint size0;
     uint size1;
-    uint size3;
+    uint size2;
     uint size4;
+    uint size5;
 };
 
 struct NyqCameraSample {
@@ -184,6 +185,16 @@ struct NyqHaltonSampler {
     uint dim;
     char _pad9[4];
 };
+struct NyqBlueSampler {
+    metal::uint2 seed;
+    uint frame;
+    char _pad2[4];
+    metal::uint2 pixel;
+    uint index;
+    uint dim;
+    metal::uint2 key;
+    metal::uint2 prepared;
+};
 struct NyqFillJob {
     uint kind;
     uint scramble;
@@ -200,7 +211,7 @@ struct NyqFillJob {
     uint pad0_;
     uint pad1_;
 };
-typedef metal::uint4 type_27[1];
+typedef metal::uint4 type_28[1];
 constant uint NYQ_SCRAMBLE_NONE = 0u;
 constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
@@ -230,6 +241,11 @@ constant metal::uint2 NYQ_OWEN_TAG_UNIFORM = metal::uint2(1599426121u, 133111943
 constant metal::uint2 NYQ_OWEN_TAG_AFFINE = metal::uint2(1598113350u, 1331119438u);
 constant metal::uint2 NYQ_OWEN_LEVEL_STEP = metal::uint2(2135587861u, 2654435769u);
 constant metal::uint2 NYQ_OWEN_PREFIX_MUL = metal::uint2(656542357u, 1367130551u);
+constant uint NYQ_BLUE_OWEN_SOBOL = 0u;
+constant uint NYQ_BLUE_PMJ02_ = 1u;
+constant uint NYQ_BLUE_LATTICE = 2u;
+constant uint NYQ_BLUE_TILE_SIZE = 128u;
+constant metal::uint4 NYQ_LATTICE_BN_GENERATOR = metal::uint4(1u, 364981u, 245389u, 97823u);
 constant uint NYQ_FILL_OWEN_SOBOL_SAMPLER = 0u;
 constant uint NYQ_FILL_ZSOBOL_SAMPLER = 1u;
 constant uint NYQ_FILL_RANDOM_SAMPLER = 2u;
@@ -238,6 +254,9 @@ constant uint NYQ_FILL_STRATIFIED_SAMPLER = 4u;
 constant uint NYQ_FILL_PMJ02_SAMPLER = 5u;
 constant uint NYQ_FILL_SOBOL_SAMPLER = 6u;
 constant uint NYQ_FILL_HALTON_SAMPLER = 7u;
+constant uint NYQ_FILL_OWEN_SOBOL_BN_SAMPLER = 8u;
+constant uint NYQ_FILL_PMJ02_BN_SAMPLER = 9u;
+constant uint NYQ_FILL_LATTICE_BN_SAMPLER = 10u;
 constant uint NYQ_FILL_SOBOL = 16u;
 constant uint NYQ_FILL_OWEN_SOBOL = 17u;
 constant uint NYQ_FILL_PMJ02_ = 18u;
@@ -278,16 +297,16 @@ metal::uint2 nyq_add64_(
 
 metal::uint2 nyq_shr64_(
     metal::uint2 a_3,
-    uint s_8
+    uint s_10
 ) {
-    return metal::uint2((a_3.x >> s_8) | (a_3.y << (32u - s_8)), a_3.y >> s_8);
+    return metal::uint2((a_3.x >> s_10) | (a_3.y << (32u - s_10)), a_3.y >> s_10);
 }
 
 metal::uint2 nyq_shl64_(
     metal::uint2 a_4,
-    uint s_9
+    uint s_11
 ) {
-    return metal::uint2(a_4.x << s_9, (a_4.y << s_9) | (a_4.x >> (32u - s_9)));
+    return metal::uint2(a_4.x << s_11, (a_4.y << s_11) | (a_4.x >> (32u - s_11)));
 }
 
 metal::uint2 nyq_u64_(
@@ -389,9 +408,9 @@ float nyq_rev_to_f32_(
 
 uint nyq_shr(
     uint x_3,
-    uint s_10
+    uint s_12
 ) {
-    return (s_10 >= 32u) ? 0u : (x_3 >> (s_10 & 31u));
+    return (s_12 >= 32u) ? 0u : (x_3 >> (s_12 & 31u));
 }
 
 float nyq_film_coordinate(
@@ -399,10 +418,10 @@ float nyq_film_coordinate(
     float offset
 ) {
     float base_2 = static_cast<float>(pixel);
-    float x_25 = base_2 + offset;
+    float x_26 = base_2 + offset;
     float edge = base_2 + 1.0;
-    if (x_25 < edge) {
-        return x_25;
+    if (x_26 < edge) {
+        return x_26;
     }
     float below = as_type<float>(as_type<uint>(edge) - 1u);
     return (below >= base_2) ? below : base_2;
@@ -564,32 +583,32 @@ NyqSobol nyq_sobol(
 }
 
 uint nyq_sobol_sample_u32_(
-    NyqSobol s_11,
+    NyqSobol s_13,
     uint index_2,
     uint dim_2,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint shift = 0u;
-    uint d_6 = naga_mod(dim_2, s_11.dims);
-    if (s_11.scrambled != 0u) {
-        metal::uint2 _e11 = nyq_u64_(d_6);
-        metal::uint2 _e12 = nyq_hash2_(s_11.seed, _e11);
+    uint d_8 = naga_mod(dim_2, s_13.dims);
+    if (s_13.scrambled != 0u) {
+        metal::uint2 _e11 = nyq_u64_(d_8);
+        metal::uint2 _e12 = nyq_hash2_(s_13.seed, _e11);
         shift = _e12.y;
     }
-    uint _e14 = nyq_sobol_u32_(index_2, d_6, nyq_sobol_matrices, _buffer_sizes);
+    uint _e14 = nyq_sobol_u32_(index_2, d_8, nyq_sobol_matrices, _buffer_sizes);
     uint _e15 = shift;
     return _e14 ^ _e15;
 }
 
 float nyq_sobol_sample(
-    NyqSobol s_12,
+    NyqSobol s_14,
     uint index_3,
     uint dim_3,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_sobol_sample_u32_(s_12, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_sobol_sample_u32_(s_14, index_3, dim_3, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -902,7 +921,7 @@ NyqSobolSampler nyq_sobol_sampler(
 }
 
 uint nyq_sobol_sampler_invert(
-    thread NyqSobolSampler& s_13,
+    thread NyqSobolSampler& s_15,
     uint t_in
 ) {
     uint low = 0u;
@@ -924,42 +943,42 @@ uint nyq_sobol_sampler_invert(
             four = metal::uint4 {};
             switch(k_16 >> 2u) {
                 case 0u: {
-                    metal::uint4 _e15 = s_13.inverse0_;
+                    metal::uint4 _e15 = s_15.inverse0_;
                     four = _e15;
                     break;
                 }
                 case 1u: {
-                    metal::uint4 _e17 = s_13.inverse1_;
+                    metal::uint4 _e17 = s_15.inverse1_;
                     four = _e17;
                     break;
                 }
                 case 2u: {
-                    metal::uint4 _e19 = s_13.inverse2_;
+                    metal::uint4 _e19 = s_15.inverse2_;
                     four = _e19;
                     break;
                 }
                 case 3u: {
-                    metal::uint4 _e21 = s_13.inverse3_;
+                    metal::uint4 _e21 = s_15.inverse3_;
                     four = _e21;
                     break;
                 }
                 case 4u: {
-                    metal::uint4 _e23 = s_13.inverse4_;
+                    metal::uint4 _e23 = s_15.inverse4_;
                     four = _e23;
                     break;
                 }
                 case 5u: {
-                    metal::uint4 _e25 = s_13.inverse5_;
+                    metal::uint4 _e25 = s_15.inverse5_;
                     four = _e25;
                     break;
                 }
                 case 6u: {
-                    metal::uint4 _e27 = s_13.inverse6_;
+                    metal::uint4 _e27 = s_15.inverse6_;
                     four = _e27;
                     break;
                 }
                 default: {
-                    metal::uint4 _e29 = s_13.inverse7_;
+                    metal::uint4 _e29 = s_15.inverse7_;
                     four = _e29;
                     break;
                 }
@@ -977,14 +996,14 @@ uint nyq_sobol_sampler_invert(
 }
 
 uint nyq_sobol_sampler_index(
-    thread NyqSobolSampler& s_14,
+    thread NyqSobolSampler& s_16,
     metal::uint2 pixel_1,
     uint sample_index,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint m_5 = s_14.m;
-    uint _e6 = s_14.spp;
+    uint m_5 = s_16.m;
+    uint _e6 = s_16.spp;
     uint si = naga_mod(sample_index, _e6);
     uint high = ((2u * m_5) >= 32u) ? 0u : (si << ((2u * m_5) & 31u));
     uint mask_1 = (m_5 == 0u) ? 0u : (4294967295u >> ((32u - m_5) & 31u));
@@ -994,12 +1013,12 @@ uint nyq_sobol_sampler_index(
     uint _e41 = nyq_sobol_u32_(high, 1u, nyq_sobol_matrices, _buffer_sizes);
     uint _e42 = nyq_top(_e41, m_5);
     uint have = _e39 | (_e42 << (m_5 & 31u));
-    uint _e48 = nyq_sobol_sampler_invert(s_14, want ^ have);
+    uint _e48 = nyq_sobol_sampler_invert(s_16, want ^ have);
     return high | _e48;
 }
 
 float nyq_sobol_sampler_value(
-    thread NyqSobolSampler& s_15,
+    thread NyqSobolSampler& s_17,
     uint dim_4,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
@@ -1007,12 +1026,12 @@ float nyq_sobol_sampler_value(
     uint v_3 = {};
     bool local_1 = {};
     bool local_2 = {};
-    uint d_7 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
-    metal::uint2 seed_29 = s_15.seed;
-    uint _e7 = s_15.index;
-    uint _e8 = nyq_sobol_u32_(_e7, d_7, nyq_sobol_matrices, _buffer_sizes);
+    uint d_9 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
+    metal::uint2 seed_34 = s_17.seed;
+    uint _e7 = s_17.index;
+    uint _e8 = nyq_sobol_u32_(_e7, d_9, nyq_sobol_matrices, _buffer_sizes);
     v_3 = _e8;
-    uint how_3 = s_15.scramble;
+    uint how_3 = s_17.scramble;
     if (!((how_3 == NYQ_SCRAMBLE_FAST_OWEN))) {
         local_1 = how_3 == NYQ_SCRAMBLE_OWEN;
     } else {
@@ -1022,31 +1041,31 @@ float nyq_sobol_sampler_value(
     if (_e20) {
         uint _e21 = v_3;
         uint _e22 = v_3;
-        uint _e24 = s_15.m;
-        if (d_7 < 2u) {
-            uint _e33 = s_15.m;
+        uint _e24 = s_17.m;
+        if (d_9 < 2u) {
+            uint _e33 = s_17.m;
             local_2 = _e33 < 32u;
         } else {
             local_2 = false;
         }
         bool _e37 = local_2;
         uint w_1 = _e37 ? (_e22 << (_e24 & 31u)) : _e21;
-        metal::uint2 _e39 = nyq_u64_(d_7);
-        metal::uint2 _e40 = nyq_hash2_(seed_29, _e39);
+        metal::uint2 _e39 = nyq_u64_(d_9);
+        metal::uint2 _e40 = nyq_hash2_(seed_34, _e39);
         uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
-    if (d_7 < 2u) {
+    if (d_9 < 2u) {
         uint _e46 = v_3;
-        uint _e49 = s_15.shift[d_7];
-        uint _e52 = s_15.m;
+        uint _e49 = s_17.shift[d_9];
+        uint _e52 = s_17.m;
         v_3 = (_e46 ^ _e49) << _e52;
     } else {
         if (how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
             uint _e56 = v_3;
-            metal::uint2 _e57 = nyq_u64_(d_7);
-            metal::uint2 _e58 = nyq_hash2_(seed_29, _e57);
+            metal::uint2 _e57 = nyq_u64_(d_9);
+            metal::uint2 _e58 = nyq_hash2_(seed_34, _e57);
             v_3 = _e56 ^ _e58.x;
         }
     }
@@ -1056,65 +1075,65 @@ float nyq_sobol_sampler_value(
 }
 
 void nyq_sobol_sampler_start(
-    thread NyqSobolSampler& s_16,
+    thread NyqSobolSampler& s_18,
     metal::uint2 pixel_2,
     uint sample_index_1,
     uint dim_5,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e5 = nyq_sobol_sampler_index(s_16, pixel_2, sample_index_1, nyq_sobol_matrices, _buffer_sizes);
-    s_16.index = _e5;
-    s_16.dim = dim_5;
+    uint _e5 = nyq_sobol_sampler_index(s_18, pixel_2, sample_index_1, nyq_sobol_matrices, _buffer_sizes);
+    s_18.index = _e5;
+    s_18.dim = dim_5;
     return;
 }
 
 float nyq_sobol_sampler_get_1d(
-    thread NyqSobolSampler& s_17,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_8 = s_17.dim;
-    s_17.dim = d_8 + 1u;
-    float _e6 = nyq_sobol_sampler_value(s_17, d_8, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_sobol_sampler_get_2d(
-    thread NyqSobolSampler& s_18,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_9 = s_18.dim;
-    s_18.dim = d_9 + 2u;
-    float _e6 = nyq_sobol_sampler_value(s_18, d_9, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_sobol_sampler_value(s_18, d_9 + 1u, nyq_sobol_matrices, _buffer_sizes);
-    return metal::float2(_e6, _e9);
-}
-
-metal::float2 nyq_sobol_sampler_get_pixel_2d(
     thread NyqSobolSampler& s_19,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_19.dim;
-    s_19.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_sobol_sampler_value(s_19, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_sobol_sampler_value(s_19, 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_10 = s_19.dim;
+    s_19.dim = d_10 + 1u;
+    float _e6 = nyq_sobol_sampler_value(s_19, d_10, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_sobol_sampler_get_2d(
+    thread NyqSobolSampler& s_20,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_11 = s_20.dim;
+    s_20.dim = d_11 + 2u;
+    float _e6 = nyq_sobol_sampler_value(s_20, d_11, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_sobol_sampler_value(s_20, d_11 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_sobol_sampler_get_pixel_2d(
+    thread NyqSobolSampler& s_21,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_21.dim;
+    s_21.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_sobol_sampler_value(s_21, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_sobol_sampler_value(s_21, 1u, nyq_sobol_matrices, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_sobol_sampler_camera_sample(
-    thread NyqSobolSampler& s_20,
+    thread NyqSobolSampler& s_22,
     metal::uint2 pixel_3,
     uint sample_index_2,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_sobol_sampler_start(s_20, pixel_3, sample_index_2, 0u, nyq_sobol_matrices, _buffer_sizes);
-    metal::float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_20, nyq_sobol_matrices, _buffer_sizes);
-    float _e5 = nyq_sobol_sampler_get_1d(s_20, nyq_sobol_matrices, _buffer_sizes);
-    metal::float2 _e6 = nyq_sobol_sampler_get_2d(s_20, nyq_sobol_matrices, _buffer_sizes);
+    nyq_sobol_sampler_start(s_22, pixel_3, sample_index_2, 0u, nyq_sobol_matrices, _buffer_sizes);
+    metal::float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_22, nyq_sobol_matrices, _buffer_sizes);
+    float _e5 = nyq_sobol_sampler_get_1d(s_22, nyq_sobol_matrices, _buffer_sizes);
+    metal::float2 _e6 = nyq_sobol_sampler_get_2d(s_22, nyq_sobol_matrices, _buffer_sizes);
     float _e9 = nyq_film_coordinate(pixel_3.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_3.y, _e4.y);
     metal::float2 film = metal::float2(_e9, _e12);
@@ -1162,33 +1181,33 @@ NyqOwenSobol nyq_owen_sobol(
 }
 
 uint nyq_owen_sobol_sample_u32_(
-    NyqOwenSobol s_21,
+    NyqOwenSobol s_23,
     uint index_5,
     uint dim_8,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_10 = naga_mod(dim_8, s_21.dims);
-    uint _e6 = nyq_shuffle_rev(index_5, s_21.shuffle_seed);
-    uint _e8 = nyq_dim_seed(s_21.key, d_10);
-    uint _e9 = nyq_owen_sobol_rev(_e6, d_10, _e8, nyq_sobol_matrices, _buffer_sizes);
+    uint d_12 = naga_mod(dim_8, s_23.dims);
+    uint _e6 = nyq_shuffle_rev(index_5, s_23.shuffle_seed);
+    uint _e8 = nyq_dim_seed(s_23.key, d_12);
+    uint _e9 = nyq_owen_sobol_rev(_e6, d_12, _e8, nyq_sobol_matrices, _buffer_sizes);
     return metal::reverse_bits(_e9);
 }
 
 float nyq_owen_sobol_sample(
-    NyqOwenSobol s_22,
+    NyqOwenSobol s_24,
     uint index_6,
     uint dim_9,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_owen_sobol_sample_u32_(s_22, index_6, dim_9, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_owen_sobol_sample_u32_(s_24, index_6, dim_9, nyq_sobol_matrices, _buffer_sizes);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
 metal::float4 nyq_owen_sobol_sample_4d(
-    NyqOwenSobol s_23,
+    NyqOwenSobol s_25,
     uint index_7,
     uint first_dim,
     device type_4 const& nyq_sobol_matrices,
@@ -1196,7 +1215,7 @@ metal::float4 nyq_owen_sobol_sample_4d(
 ) {
     metal::float4 out_1 = {};
     uint k_7 = 0u;
-    uint _e4 = nyq_shuffle_rev(index_7, s_23.shuffle_seed);
+    uint _e4 = nyq_shuffle_rev(index_7, s_25.shuffle_seed);
     uint2 loop_bound_11 = uint2(4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -1214,10 +1233,10 @@ metal::float4 nyq_owen_sobol_sample_4d(
         }
         {
             uint _e11 = k_7;
-            uint d_11 = naga_mod(first_dim + _e11, s_23.dims);
+            uint d_13 = naga_mod(first_dim + _e11, s_25.dims);
             uint _e15 = k_7;
-            uint _e18 = nyq_dim_seed(s_23.key, d_11);
-            uint _e19 = nyq_owen_sobol_rev(_e4, d_11, _e18, nyq_sobol_matrices, _buffer_sizes);
+            uint _e18 = nyq_dim_seed(s_25.key, d_13);
+            uint _e19 = nyq_owen_sobol_rev(_e4, d_13, _e18, nyq_sobol_matrices, _buffer_sizes);
             float _e20 = nyq_rev_to_f32_(_e19);
             out_1[_e15] = _e20;
         }
@@ -1234,33 +1253,33 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(
 }
 
 void nyq_owen_sobol_start(
-    thread NyqOwenSobolSampler& s_24,
+    thread NyqOwenSobolSampler& s_26,
     metal::uint2 pixel_4,
     uint sample_index_3,
     uint dim_10
 ) {
     metal::uint2 _e5 = nyq_u64_(pixel_4.x);
     metal::uint2 _e7 = nyq_u64_(pixel_4.y);
-    uint _e9 = s_24.frame;
+    uint _e9 = s_26.frame;
     metal::uint2 _e10 = nyq_u64_(_e9);
-    metal::uint2 _e12 = s_24.seed;
+    metal::uint2 _e12 = s_26.seed;
     metal::uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_24.key = _e13.x;
+    s_26.key = _e13.x;
     uint _e18 = nyq_mix32_(_e13.y);
     uint _e19 = nyq_shuffle_rev(sample_index_3, _e18);
-    s_24.r = _e19;
-    s_24.dim = dim_10;
+    s_26.r = _e19;
+    s_26.dim = dim_10;
     return;
 }
 
 float nyq_owen_sobol_value(
-    thread NyqOwenSobolSampler& s_25,
+    thread NyqOwenSobolSampler& s_27,
     uint dim_11,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_25.r;
-    uint _e5 = s_25.key;
+    uint _e3 = s_27.r;
+    uint _e5 = s_27.key;
     uint _e6 = nyq_dim_seed(_e5, dim_11);
     uint _e7 = nyq_owen_sobol_rev(_e3, dim_11, _e6, nyq_sobol_matrices, _buffer_sizes);
     float _e8 = nyq_rev_to_f32_(_e7);
@@ -1268,42 +1287,42 @@ float nyq_owen_sobol_value(
 }
 
 float nyq_owen_sobol_get_1d(
-    thread NyqOwenSobolSampler& s_26,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_12 = s_26.dim;
-    s_26.dim = d_12 + 1u;
-    float _e6 = nyq_owen_sobol_value(s_26, d_12, nyq_sobol_matrices, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_owen_sobol_get_2d(
-    thread NyqOwenSobolSampler& s_27,
-    device type_4 const& nyq_sobol_matrices,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_13 = s_27.dim;
-    s_27.dim = d_13 + 2u;
-    float _e6 = nyq_owen_sobol_value(s_27, d_13, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_27, d_13 + 1u, nyq_sobol_matrices, _buffer_sizes);
-    return metal::float2(_e6, _e9);
-}
-
-metal::float2 nyq_owen_sobol_get_pixel_2d(
     thread NyqOwenSobolSampler& s_28,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_28.dim;
-    s_28.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_value(s_28, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_value(s_28, 1u, nyq_sobol_matrices, _buffer_sizes);
+    uint d_14 = s_28.dim;
+    s_28.dim = d_14 + 1u;
+    float _e6 = nyq_owen_sobol_value(s_28, d_14, nyq_sobol_matrices, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_owen_sobol_get_2d(
+    thread NyqOwenSobolSampler& s_29,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_15 = s_29.dim;
+    s_29.dim = d_15 + 2u;
+    float _e6 = nyq_owen_sobol_value(s_29, d_15, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_29, d_15 + 1u, nyq_sobol_matrices, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_owen_sobol_get_pixel_2d(
+    thread NyqOwenSobolSampler& s_30,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_30.dim;
+    s_30.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_value(s_30, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_value(s_30, 1u, nyq_sobol_matrices, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_owen_sobol_camera_sample(
-    thread NyqOwenSobolSampler& s_29,
+    thread NyqOwenSobolSampler& s_31,
     metal::uint2 pixel_5,
     uint sample_index_4,
     device type_4 const& nyq_sobol_matrices,
@@ -1311,7 +1330,7 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
 ) {
     type_12 v_4 = {};
     uint d_1 = 0u;
-    nyq_owen_sobol_start(s_29, pixel_5, sample_index_4, 0u);
+    nyq_owen_sobol_start(s_31, pixel_5, sample_index_4, 0u);
     uint2 loop_bound_12 = uint2(4294967295u);
     bool loop_init_10 = true;
     while(true) {
@@ -1330,11 +1349,11 @@ NyqCameraSample nyq_owen_sobol_camera_sample(
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            float _e13 = nyq_owen_sobol_value(s_29, _e12, nyq_sobol_matrices, _buffer_sizes);
+            float _e13 = nyq_owen_sobol_value(s_31, _e12, nyq_sobol_matrices, _buffer_sizes);
             v_4.inner[_e10] = _e13;
         }
     }
-    s_29.dim = 5u;
+    s_31.dim = 5u;
     float _e21 = v_4.inner[0];
     float _e22 = nyq_film_coordinate(pixel_5.x, _e21);
     float _e25 = v_4.inner[1];
@@ -1384,10 +1403,10 @@ uint nyq_spread(
 }
 
 uint nyq_zsobol_morton(
-    NyqZSobolSampler s_30,
+    NyqZSobolSampler s_32,
     metal::uint2 pixel_6
 ) {
-    uint mask_2 = (s_30.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_30.log2_res) & 31u));
+    uint mask_2 = (s_32.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_32.log2_res) & 31u));
     uint _e16 = nyq_spread(pixel_6.x & mask_2);
     uint _e19 = nyq_spread(pixel_6.y & mask_2);
     return _e16 | (_e19 << 1u);
@@ -1449,14 +1468,14 @@ metal::uint2 nyq_zsobol_nested_word(
 }
 
 uint nyq_zsobol_index(
-    NyqZSobolSampler s_31,
+    NyqZSobolSampler s_33,
     uint morton,
     metal::uint2 key_3
 ) {
     uint index_8 = 0u;
     uint i_3 = {};
     uint i_4 = {};
-    i_3 = s_31.digits;
+    i_3 = s_33.digits;
     uint2 loop_bound_13 = uint2(4294967295u);
     bool loop_init_11 = true;
     while(true) {
@@ -1468,13 +1487,13 @@ uint nyq_zsobol_index(
         }
         loop_init_11 = false;
         uint _e7 = i_3;
-        if (_e7 > s_31.sample_digits) {
+        if (_e7 > s_33.sample_digits) {
         } else {
             break;
         }
         {
             uint _e11 = i_3;
-            uint shift_5 = (2u * (_e11 - 1u)) + s_31.odd;
+            uint shift_5 = (2u * (_e11 - 1u)) + s_33.odd;
             uint digit_2 = (morton >> shift_5) & 3u;
             uint _e20 = index_8;
             uint _e23 = nyq_shr(morton, shift_5 + 2u);
@@ -1483,10 +1502,10 @@ uint nyq_zsobol_index(
             index_8 = _e20 | _e25;
         }
     }
-    uint _e31 = nyq_shr(morton, s_31.log2_spp);
+    uint _e31 = nyq_shr(morton, s_33.log2_spp);
     metal::uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample = morton & (s_31.spp - 1u);
-    i_4 = s_31.sample_digits;
+    uint sample = morton & (s_33.spp - 1u);
+    i_4 = s_33.sample_digits;
     uint2 loop_bound_14 = uint2(4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -1504,7 +1523,7 @@ uint nyq_zsobol_index(
         }
         {
             uint _e43 = i_4;
-            uint shift_6 = (2u * (_e43 - 1u)) + s_31.odd;
+            uint shift_6 = (2u * (_e43 - 1u)) + s_33.odd;
             uint digit_3 = (sample >> shift_6) & 3u;
             uint _e54 = nyq_shr(sample, shift_6 + 2u);
             metal::uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_6);
@@ -1514,7 +1533,7 @@ uint nyq_zsobol_index(
             index_8 = _e58 | _e61;
         }
     }
-    if (s_31.odd == 1u) {
+    if (s_33.odd == 1u) {
         uint _e69 = index_8;
         metal::uint2 _e75 = nyq_zsobol_nested_word(_e32, sample >> 1u, 0u);
         index_8 = _e69 | ((sample & 1u) ^ (_e75.y >> 31u));
@@ -1524,15 +1543,15 @@ uint nyq_zsobol_index(
 }
 
 uint nyq_zsobol_sequence_index(
-    NyqZSobolSampler s_32,
+    NyqZSobolSampler s_34,
     metal::uint2 pixel_7,
     uint sample_index_5,
     uint dim_13
 ) {
-    uint _e4 = nyq_zsobol_morton(s_32, pixel_7);
-    uint morton_1 = (_e4 << s_32.log2_spp) | (sample_index_5 & (s_32.spp - 1u));
-    metal::uint2 _e13 = nyq_zsobol_dim_key(s_32.seed, dim_13);
-    uint _e14 = nyq_zsobol_index(s_32, morton_1, _e13);
+    uint _e4 = nyq_zsobol_morton(s_34, pixel_7);
+    uint morton_1 = (_e4 << s_34.log2_spp) | (sample_index_5 & (s_34.spp - 1u));
+    metal::uint2 _e13 = nyq_zsobol_dim_key(s_34.seed, dim_13);
+    uint _e14 = nyq_zsobol_index(s_34, morton_1, _e13);
     return _e14;
 }
 
@@ -1550,42 +1569,42 @@ uint nyq_zsobol_dim0_(
 }
 
 float nyq_zsobol_value_1d(
-    thread NyqZSobolSampler& s_33,
+    thread NyqZSobolSampler& s_35,
     uint dim_14
 ) {
-    metal::uint2 _e3 = s_33.seed;
+    metal::uint2 _e3 = s_35.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_14);
-    NyqZSobolSampler _e5 = s_33;
-    uint _e7 = s_33.morton;
+    NyqZSobolSampler _e5 = s_35;
+    uint _e7 = s_35.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_33.scramble;
+    uint _e11 = s_35.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
     float _e13 = nyq_fraction_to_f32_(_e12);
     return _e13;
 }
 
 metal::float2 nyq_zsobol_value_2d(
-    thread NyqZSobolSampler& s_34,
+    thread NyqZSobolSampler& s_36,
     uint dim_15,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint y = {};
-    metal::uint2 _e3 = s_34.seed;
+    metal::uint2 _e3 = s_36.seed;
     metal::uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_15);
-    NyqZSobolSampler _e5 = s_34;
-    uint _e7 = s_34.morton;
+    NyqZSobolSampler _e5 = s_36;
+    uint _e7 = s_36.morton;
     uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_34.scramble;
+    uint _e11 = s_36.scramble;
     uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_34.scramble;
+    uint _e15 = s_36.scramble;
     if (_e15 == NYQ_SCRAMBLE_FAST_OWEN) {
         uint _e19 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
         uint _e22 = nyq_lk_hash(metal::reverse_bits(_e19), _e4.y);
         y = metal::reverse_bits(_e22);
     } else {
         uint _e25 = nyq_sobol_u32_(_e8, 1u, nyq_sobol_matrices, _buffer_sizes);
-        uint _e28 = s_34.scramble;
+        uint _e28 = s_36.scramble;
         uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -1596,63 +1615,63 @@ metal::float2 nyq_zsobol_value_2d(
 }
 
 void nyq_zsobol_start(
-    thread NyqZSobolSampler& s_35,
+    thread NyqZSobolSampler& s_37,
     metal::uint2 pixel_8,
     uint sample_index_6,
     uint dim_16
 ) {
-    NyqZSobolSampler _e5 = s_35;
+    NyqZSobolSampler _e5 = s_37;
     uint _e6 = nyq_zsobol_morton(_e5, pixel_8);
-    uint _e8 = s_35.log2_spp;
-    uint _e11 = s_35.spp;
-    s_35.morton = (_e6 << _e8) | (sample_index_6 & (_e11 - 1u));
-    s_35.dim = dim_16;
+    uint _e8 = s_37.log2_spp;
+    uint _e11 = s_37.spp;
+    s_37.morton = (_e6 << _e8) | (sample_index_6 & (_e11 - 1u));
+    s_37.dim = dim_16;
     return;
 }
 
 float nyq_zsobol_get_1d(
-    thread NyqZSobolSampler& s_36
+    thread NyqZSobolSampler& s_38
 ) {
-    uint d_14 = s_36.dim;
-    s_36.dim = d_14 + 1u;
-    float _e6 = nyq_zsobol_value_1d(s_36, d_14);
+    uint d_16 = s_38.dim;
+    s_38.dim = d_16 + 1u;
+    float _e6 = nyq_zsobol_value_1d(s_38, d_16);
     return _e6;
 }
 
 metal::float2 nyq_zsobol_get_2d(
-    thread NyqZSobolSampler& s_37,
+    thread NyqZSobolSampler& s_39,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_15 = s_37.dim;
-    s_37.dim = d_15 + 2u;
-    metal::float2 _e6 = nyq_zsobol_value_2d(s_37, d_15, nyq_sobol_matrices, _buffer_sizes);
+    uint d_17 = s_39.dim;
+    s_39.dim = d_17 + 2u;
+    metal::float2 _e6 = nyq_zsobol_value_2d(s_39, d_17, nyq_sobol_matrices, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_zsobol_get_pixel_2d(
-    thread NyqZSobolSampler& s_38,
+    thread NyqZSobolSampler& s_40,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_38.dim;
-    s_38.dim = metal::max(_e3, 2u);
-    metal::float2 _e7 = nyq_zsobol_value_2d(s_38, 0u, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = s_40.dim;
+    s_40.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_zsobol_value_2d(s_40, 0u, nyq_sobol_matrices, _buffer_sizes);
     return _e7;
 }
 
 NyqCameraSample nyq_zsobol_camera_sample(
-    thread NyqZSobolSampler& s_39,
+    thread NyqZSobolSampler& s_41,
     metal::uint2 pixel_9,
     uint sample_index_7,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_zsobol_start(s_39, pixel_9, sample_index_7, 0u);
-    metal::float2 _e5 = nyq_zsobol_value_2d(s_39, 0u, nyq_sobol_matrices, _buffer_sizes);
-    float _e7 = nyq_zsobol_value_1d(s_39, 2u);
-    metal::float2 _e9 = nyq_zsobol_value_2d(s_39, 3u, nyq_sobol_matrices, _buffer_sizes);
-    s_39.dim = 5u;
+    nyq_zsobol_start(s_41, pixel_9, sample_index_7, 0u);
+    metal::float2 _e5 = nyq_zsobol_value_2d(s_41, 0u, nyq_sobol_matrices, _buffer_sizes);
+    float _e7 = nyq_zsobol_value_1d(s_41, 2u);
+    metal::float2 _e9 = nyq_zsobol_value_2d(s_41, 3u, nyq_sobol_matrices, _buffer_sizes);
+    s_41.dim = 5u;
     float _e14 = nyq_film_coordinate(pixel_9.x, _e5.x);
     float _e17 = nyq_film_coordinate(pixel_9.y, _e5.y);
     metal::float2 film_1 = metal::float2(_e14, _e17);
@@ -1677,9 +1696,9 @@ uint nyq_pcg32_next(
     g.state = _e7;
     metal::uint2 _e9 = nyq_shr64_(old, 18u);
     metal::uint2 _e12 = nyq_shr64_(_e9 ^ old, 27u);
-    uint x_26 = _e12.x;
+    uint x_27 = _e12.x;
     uint rot = old.y >> 27u;
-    return (x_26 >> rot) | (x_26 << ((32u - rot) & 31u));
+    return (x_27 >> rot) | (x_27 << ((32u - rot) & 31u));
 }
 
 void nyq_pcg32_advance(
@@ -1755,11 +1774,11 @@ NyqRandomSampler nyq_random_sampler(
 }
 
 NyqPcg32_ nyq_random_at(
-    thread NyqRandomSampler& s_40,
+    thread NyqRandomSampler& s_42,
     uint dim_17
 ) {
     NyqPcg32_ g_2 = {};
-    metal::uint2 _e3 = s_40.base;
+    metal::uint2 _e3 = s_42.base;
     NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
     if (dim_17 != 0u) {
@@ -1770,87 +1789,87 @@ NyqPcg32_ nyq_random_at(
 }
 
 void nyq_random_start(
-    thread NyqRandomSampler& s_41,
+    thread NyqRandomSampler& s_43,
     metal::uint2 pixel_10,
     uint sample_index_8,
     uint dim_18
 ) {
-    metal::uint2 _e5 = s_41.seed;
+    metal::uint2 _e5 = s_43.seed;
     metal::uint2 _e7 = nyq_u64_(1918987876u);
     metal::uint2 _e8 = nyq_hash3_(pixel_10, _e5, _e7);
     metal::uint2 golden_2 = metal::uint2(2135587861u, 2654435769u);
     metal::uint2 _e13 = nyq_u64_(sample_index_8);
     metal::uint2 _e14 = nyq_mul64_(_e13, golden_2);
     metal::uint2 _e16 = nyq_mix64_(_e8 ^ _e14);
-    s_41.base = _e16;
-    s_41.dim = dim_18;
-    NyqPcg32_ _e19 = nyq_random_at(s_41, dim_18);
-    s_41.rng = _e19;
+    s_43.base = _e16;
+    s_43.dim = dim_18;
+    NyqPcg32_ _e19 = nyq_random_at(s_43, dim_18);
+    s_43.rng = _e19;
     return;
 }
 
 float nyq_random_get_1d(
-    thread NyqRandomSampler& s_42
+    thread NyqRandomSampler& s_44
 ) {
     NyqPcg32_ g_3 = {};
-    NyqPcg32_ _e2 = s_42.rng;
+    NyqPcg32_ _e2 = s_44.rng;
     g_3 = _e2;
     uint _e4 = nyq_pcg32_next(g_3);
     float _e5 = nyq_fraction_to_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_42.rng = _e7;
-    uint _e9 = s_42.dim;
-    s_42.dim = _e9 + 1u;
-    uint _e13 = s_42.dim;
+    s_44.rng = _e7;
+    uint _e9 = s_44.dim;
+    s_44.dim = _e9 + 1u;
+    uint _e13 = s_44.dim;
     if (_e13 == 0u) {
-        NyqPcg32_ _e18 = nyq_random_at(s_42, 0u);
-        s_42.rng = _e18;
+        NyqPcg32_ _e18 = nyq_random_at(s_44, 0u);
+        s_44.rng = _e18;
     }
     return _e5;
 }
 
 metal::float2 nyq_random_get_2d(
-    thread NyqRandomSampler& s_43
+    thread NyqRandomSampler& s_45
 ) {
-    float _e1 = nyq_random_get_1d(s_43);
-    float _e2 = nyq_random_get_1d(s_43);
+    float _e1 = nyq_random_get_1d(s_45);
+    float _e2 = nyq_random_get_1d(s_45);
     return metal::float2(_e1, _e2);
 }
 
 metal::float2 nyq_random_get_pixel_2d(
-    thread NyqRandomSampler& s_44
+    thread NyqRandomSampler& s_46
 ) {
     NyqPcg32_ g_4 = {};
-    uint _e2 = s_44.dim;
+    uint _e2 = s_46.dim;
     if (_e2 == 0u) {
-        metal::float2 _e5 = nyq_random_get_2d(s_44);
+        metal::float2 _e5 = nyq_random_get_2d(s_46);
         return _e5;
     }
-    NyqPcg32_ _e7 = nyq_random_at(s_44, 0u);
+    NyqPcg32_ _e7 = nyq_random_at(s_46, 0u);
     g_4 = _e7;
     uint _e9 = nyq_pcg32_next(g_4);
     float _e10 = nyq_fraction_to_f32_(_e9);
     uint _e11 = nyq_pcg32_next(g_4);
     float _e12 = nyq_fraction_to_f32_(_e11);
     metal::float2 p_3 = metal::float2(_e10, _e12);
-    uint _e15 = s_44.dim;
+    uint _e15 = s_46.dim;
     if (_e15 < 2u) {
-        s_44.dim = 2u;
+        s_46.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_44.rng = _e21;
+        s_46.rng = _e21;
     }
     return p_3;
 }
 
 NyqCameraSample nyq_random_camera_sample(
-    thread NyqRandomSampler& s_45,
+    thread NyqRandomSampler& s_47,
     metal::uint2 pixel_11,
     uint sample_index_9
 ) {
-    nyq_random_start(s_45, pixel_11, sample_index_9, 0u);
-    metal::float2 _e4 = nyq_random_get_pixel_2d(s_45);
-    float _e5 = nyq_random_get_1d(s_45);
-    metal::float2 _e6 = nyq_random_get_2d(s_45);
+    nyq_random_start(s_47, pixel_11, sample_index_9, 0u);
+    metal::float2 _e4 = nyq_random_get_pixel_2d(s_47);
+    float _e5 = nyq_random_get_1d(s_47);
+    metal::float2 _e6 = nyq_random_get_2d(s_47);
     float _e9 = nyq_film_coordinate(pixel_11.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_11.y, _e4.y);
     metal::float2 film_2 = metal::float2(_e9, _e12);
@@ -1972,16 +1991,16 @@ NyqLatticeSampler nyq_lattice_sampler(
 }
 
 float nyq_lattice_value(
-    thread NyqLatticeSampler& s_46,
+    thread NyqLatticeSampler& s_48,
     uint dim_19
 ) {
     metal::uint2 base = {};
     uint g_6 = {};
-    uint n_9 = s_46.n;
-    uint _e5 = s_46.index;
+    uint n_9 = s_48.n;
+    uint _e5 = s_48.index;
     uint k_17 = naga_mod(_e5, n_9);
     uint component = naga_mod(dim_19, 2u);
-    uint _e11 = s_46.lattice;
+    uint _e11 = s_48.lattice;
     switch(_e11) {
         case 2u: {
             metal::uint2 _e15 = nyq_u64_(k_17);
@@ -1991,7 +2010,7 @@ float nyq_lattice_value(
             break;
         }
         default: {
-            uint _e21 = s_46.g;
+            uint _e21 = s_48.g;
             g_6 = _e21;
             if (component == 0u) {
                 g_6 = naga_mod(1u, n_9);
@@ -2004,9 +2023,9 @@ float nyq_lattice_value(
             break;
         }
     }
-    metal::uint2 _e32 = s_46.pixel;
+    metal::uint2 _e32 = s_48.pixel;
     metal::uint2 _e35 = nyq_u64_(naga_div(dim_19, 2u));
-    metal::uint2 _e37 = s_46.seed;
+    metal::uint2 _e37 = s_48.seed;
     metal::uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     metal::uint2 _e39 = base;
     metal::uint2 _e40 = nyq_u64_(component);
@@ -2017,55 +2036,55 @@ float nyq_lattice_value(
 }
 
 void nyq_lattice_start(
-    thread NyqLatticeSampler& s_47,
+    thread NyqLatticeSampler& s_49,
     metal::uint2 pixel_12,
     uint sample_index_10,
     uint dim_20
 ) {
-    s_47.pixel = pixel_12;
-    s_47.index = sample_index_10;
-    s_47.dim = dim_20;
+    s_49.pixel = pixel_12;
+    s_49.index = sample_index_10;
+    s_49.dim = dim_20;
     return;
 }
 
 float nyq_lattice_get_1d(
-    thread NyqLatticeSampler& s_48
+    thread NyqLatticeSampler& s_50
 ) {
-    uint d_16 = s_48.dim;
-    s_48.dim = d_16 + 1u;
-    float _e6 = nyq_lattice_value(s_48, d_16);
+    uint d_18 = s_50.dim;
+    s_50.dim = d_18 + 1u;
+    float _e6 = nyq_lattice_value(s_50, d_18);
     return _e6;
 }
 
 metal::float2 nyq_lattice_get_2d(
-    thread NyqLatticeSampler& s_49
+    thread NyqLatticeSampler& s_51
 ) {
-    uint d_17 = s_49.dim;
-    s_49.dim = d_17 + 2u;
-    float _e6 = nyq_lattice_value(s_49, d_17);
-    float _e9 = nyq_lattice_value(s_49, d_17 + 1u);
+    uint d_19 = s_51.dim;
+    s_51.dim = d_19 + 2u;
+    float _e6 = nyq_lattice_value(s_51, d_19);
+    float _e9 = nyq_lattice_value(s_51, d_19 + 1u);
     return metal::float2(_e6, _e9);
 }
 
 metal::float2 nyq_lattice_get_pixel_2d(
-    thread NyqLatticeSampler& s_50
+    thread NyqLatticeSampler& s_52
 ) {
-    uint _e3 = s_50.dim;
-    s_50.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_lattice_value(s_50, 0u);
-    float _e9 = nyq_lattice_value(s_50, 1u);
+    uint _e3 = s_52.dim;
+    s_52.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_lattice_value(s_52, 0u);
+    float _e9 = nyq_lattice_value(s_52, 1u);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_lattice_camera_sample(
-    thread NyqLatticeSampler& s_51,
+    thread NyqLatticeSampler& s_53,
     metal::uint2 pixel_13,
     uint sample_index_11
 ) {
-    nyq_lattice_start(s_51, pixel_13, sample_index_11, 0u);
-    metal::float2 _e4 = nyq_lattice_get_pixel_2d(s_51);
-    float _e5 = nyq_lattice_get_1d(s_51);
-    metal::float2 _e6 = nyq_lattice_get_2d(s_51);
+    nyq_lattice_start(s_53, pixel_13, sample_index_11, 0u);
+    metal::float2 _e4 = nyq_lattice_get_pixel_2d(s_53);
+    float _e5 = nyq_lattice_get_1d(s_53);
+    metal::float2 _e6 = nyq_lattice_get_2d(s_53);
     float _e9 = nyq_film_coordinate(pixel_13.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_13.y, _e4.y);
     metal::float2 film_3 = metal::float2(_e9, _e12);
@@ -2132,9 +2151,9 @@ metal::uint2 nyq_lattice_fixed(
 ) {
     metal::uint2 shift_4 = metal::uint2(0u, 0u);
     uint g_8 = {};
-    uint d_18 = naga_mod(dim_21, l.dims);
+    uint d_20 = naga_mod(dim_21, l.dims);
     if (l.rotated != 0u) {
-        metal::uint2 _e13 = nyq_u64_(d_18);
+        metal::uint2 _e13 = nyq_u64_(d_20);
         metal::uint2 _e14 = nyq_hash2_(l.seed, _e13);
         shift_4 = _e14;
     }
@@ -2142,16 +2161,16 @@ metal::uint2 nyq_lattice_fixed(
         metal::uint2 _e21 = shift_4;
         metal::uint2 start = (l.rotated != 0u) ? _e21 : metal::uint2(0u, 2147483648u);
         metal::uint2 _e26 = nyq_u64_(index_10);
-        metal::uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA.inner[d_18 & 1u]);
+        metal::uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA.inner[d_20 & 1u]);
         metal::uint2 _e32 = nyq_add64_(start, _e31);
         return _e32;
     }
     g_8 = l.g;
-    if (d_18 == 0u) {
+    if (d_20 == 0u) {
         g_8 = naga_mod(1u, l.n);
     } else {
-        if (d_18 > 1u) {
-            uint _e44 = nyq_pow_mod(l.g, d_18, l.n);
+        if (d_20 > 1u) {
+            uint _e44 = nyq_pow_mod(l.g, d_20, l.n);
             g_8 = _e44;
         }
     }
@@ -2191,12 +2210,12 @@ metal::uint2 nyq_fixed_to_f64_bits(
     }
     uint e_2 = (_e2.y != 0u) ? (63u - metal::clz(_e2.y)) : (31u - metal::clz(_e2.x));
     frac = _e2;
-    uint s_80 = 52u - e_2;
-    if (s_80 >= 32u) {
-        frac = metal::uint2(0u, _e2.x << (s_80 - 32u));
+    uint s_94 = 52u - e_2;
+    if (s_94 >= 32u) {
+        frac = metal::uint2(0u, _e2.x << (s_94 - 32u));
     } else {
-        if (s_80 > 0u) {
-            metal::uint2 _e41 = nyq_shl64_(_e2, s_80);
+        if (s_94 > 0u) {
+            metal::uint2 _e41 = nyq_shl64_(_e2, s_94);
             frac = _e41;
         }
     }
@@ -2321,22 +2340,22 @@ metal::uint3 nyq_mul64x32_(
 
 uint nyq_nibble(
     metal::uint2 t_1,
-    uint s_52
+    uint s_54
 ) {
-    return (((s_52 >= 32u) ? t_1.y : t_1.x) >> (s_52 & 31u)) & 15u;
+    return (((s_54 >= 32u) ? t_1.y : t_1.x) >> (s_54 & 31u)) & 15u;
 }
 
 metal::uint2 nyq_shl64_any(
     metal::uint2 x_14,
-    uint s_53
+    uint s_55
 ) {
-    if (s_53 == 0u) {
+    if (s_55 == 0u) {
         return x_14;
     }
-    if (s_53 >= 32u) {
-        return metal::uint2(0u, x_14.x << (s_53 - 32u));
+    if (s_55 >= 32u) {
+        return metal::uint2(0u, x_14.x << (s_55 - 32u));
     }
-    metal::uint2 _e12 = nyq_shl64_(x_14, s_53);
+    metal::uint2 _e12 = nyq_shl64_(x_14, s_55);
     return _e12;
 }
 
@@ -2397,10 +2416,10 @@ metal::uint2 nyq_packed_table(
             uint _e78 = nyq_nibble(_e77, hi);
             metal::uint2 _e79 = t_2;
             uint _e80 = nyq_nibble(_e79, lo);
-            uint x_27 = (_e78 ^ _e80) & 15u;
+            uint x_28 = (_e78 ^ _e80) & 15u;
             metal::uint2 _e84 = t_2;
-            metal::uint2 _e87 = nyq_shl64_any(metal::uint2(x_27, 0u), hi);
-            metal::uint2 _e90 = nyq_shl64_any(metal::uint2(x_27, 0u), lo);
+            metal::uint2 _e87 = nyq_shl64_any(metal::uint2(x_28, 0u), hi);
+            metal::uint2 _e90 = nyq_shl64_any(metal::uint2(x_28, 0u), lo);
             t_2 = _e84 ^ (_e87 | _e90);
         }
     }
@@ -2424,8 +2443,8 @@ NyqPermutation nyq_permutation(
     uint _e32 = nyq_mix32_(_e29 + 1759714724u);
     uint _e35 = nyq_mix32_(_e32 ^ 625341585u);
     metal::uint2 _e36 = nyq_mul_wide(_e35, n_10);
-    uint offset_2 = _e36.y;
-    return NyqPermutation {n_10, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_2, {}, metal::uint2(0u, 0u)};
+    uint offset_3 = _e36.y;
+    return NyqPermutation {n_10, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, {}, metal::uint2(0u, 0u)};
 }
 
 uint nyq_permutation_apply(
@@ -2516,29 +2535,29 @@ uint nyq_stratified_dim_key(
 }
 
 uint nyq_stratified_stratum(
-    thread NyqStratifiedSampler& s_54,
+    thread NyqStratifiedSampler& s_56,
     uint dim_24
 ) {
     if (dim_24 == 0u) {
-        uint _e5 = s_54.index;
-        uint _e7 = s_54.spp;
+        uint _e5 = s_56.index;
+        uint _e7 = s_56.spp;
         return naga_mod(_e5, _e7);
     }
-    uint _e10 = s_54.spp;
-    metal::uint2 _e12 = s_54.pixel_key;
+    uint _e10 = s_56.spp;
+    metal::uint2 _e12 = s_56.pixel_key;
     uint _e13 = nyq_stratified_dim_key(_e12, dim_24);
     NyqPermutation _e14 = nyq_permutation(_e10, _e13);
-    uint _e16 = s_54.index;
+    uint _e16 = s_56.index;
     uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
 metal::float2 nyq_stratified_jitters(
-    thread NyqStratifiedSampler& s_55,
+    thread NyqStratifiedSampler& s_57,
     uint dim_25
 ) {
     bool local_11 = {};
-    uint _e3 = s_55.jitter;
+    uint _e3 = s_57.jitter;
     if (_e3 != NYQ_JITTERED) {
         return metal::float2(0.5, 0.5);
     }
@@ -2549,7 +2568,7 @@ metal::float2 nyq_stratified_jitters(
     }
     bool _e17 = local_11;
     if (_e17) {
-        metal::uint2 _e19 = s_55.sample_key;
+        metal::uint2 _e19 = s_57.sample_key;
         metal::uint2 _e24 = nyq_mul64_(metal::uint2(2u, 0u), NYQ_JITTER_STEP);
         metal::uint2 _e26 = nyq_mix64_(_e19 ^ _e24);
         if (dim_25 == 2u) {
@@ -2558,7 +2577,7 @@ metal::float2 nyq_stratified_jitters(
         metal::uint2 _e40 = nyq_shr64_(_e26, 22u);
         return metal::float2(static_cast<float>(_e40.x & 2097151u) * 0.00000047683716, static_cast<float>((_e26.x >> 1u) & 2097151u) * 0.00000047683716);
     }
-    metal::uint2 _e55 = s_55.sample_key;
+    metal::uint2 _e55 = s_57.sample_key;
     metal::uint2 _e56 = nyq_u64_(dim_25);
     metal::uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     metal::uint2 _e60 = nyq_mix64_(_e55 ^ _e58);
@@ -2574,86 +2593,86 @@ float nyq_below_one(
 }
 
 metal::float2 nyq_stratified_cell(
-    thread NyqStratifiedSampler& s_56,
+    thread NyqStratifiedSampler& s_58,
     uint st,
     metal::float2 j
 ) {
-    uint _e4 = s_56.xs;
+    uint _e4 = s_58.xs;
     uint cx = naga_mod(st, _e4);
-    uint _e7 = s_56.xs;
+    uint _e7 = s_58.xs;
     uint cy = naga_div(st, _e7);
     float _e9 = nyq_u32_to_f32_(cx);
-    float _e14 = s_56.inv[0];
+    float _e14 = s_58.inv[0];
     float _e16 = nyq_below_one((_e9 + j.x) * _e14);
     float _e17 = nyq_u32_to_f32_(cy);
-    float _e22 = s_56.inv[1];
+    float _e22 = s_58.inv[1];
     float _e24 = nyq_below_one((_e17 + j.y) * _e22);
     return metal::float2(_e16, _e24);
 }
 
 void nyq_stratified_start(
-    thread NyqStratifiedSampler& s_57,
+    thread NyqStratifiedSampler& s_59,
     metal::uint2 pixel_14,
     uint sample_index_12,
     uint dim_26
 ) {
-    metal::uint2 _e6 = s_57.seed;
+    metal::uint2 _e6 = s_59.seed;
     metal::uint2 _e8 = nyq_u64_(1937011297u);
     metal::uint2 _e9 = nyq_hash3_(pixel_14, _e6, _e8);
-    s_57.pixel_key = _e9;
-    s_57.index = sample_index_12;
-    metal::uint2 _e13 = s_57.pixel_key;
+    s_59.pixel_key = _e9;
+    s_59.index = sample_index_12;
+    metal::uint2 _e13 = s_59.pixel_key;
     metal::uint2 _e14 = nyq_u64_(sample_index_12);
     metal::uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
-    s_57.sample_key = _e13 ^ _e16;
-    s_57.dim = dim_26;
+    s_59.sample_key = _e13 ^ _e16;
+    s_59.dim = dim_26;
     return;
 }
 
 float nyq_stratified_get_1d(
-    thread NyqStratifiedSampler& s_58
+    thread NyqStratifiedSampler& s_60
 ) {
-    uint d_19 = s_58.dim;
-    s_58.dim = d_19 + 1u;
-    uint _e6 = nyq_stratified_stratum(s_58, d_19);
+    uint d_21 = s_60.dim;
+    s_60.dim = d_21 + 1u;
+    uint _e6 = nyq_stratified_stratum(s_60, d_21);
     float _e7 = nyq_u32_to_f32_(_e6);
-    metal::float2 _e8 = nyq_stratified_jitters(s_58, d_19);
-    float _e13 = s_58.inv[2];
+    metal::float2 _e8 = nyq_stratified_jitters(s_60, d_21);
+    float _e13 = s_60.inv[2];
     float _e15 = nyq_below_one((_e7 + _e8.x) * _e13);
     return _e15;
 }
 
 metal::float2 nyq_stratified_get_2d(
-    thread NyqStratifiedSampler& s_59
+    thread NyqStratifiedSampler& s_61
 ) {
-    uint d_20 = s_59.dim;
-    s_59.dim = d_20 + 2u;
-    uint _e6 = nyq_stratified_stratum(s_59, d_20);
-    metal::float2 _e7 = nyq_stratified_jitters(s_59, d_20);
-    metal::float2 _e8 = nyq_stratified_cell(s_59, _e6, _e7);
+    uint d_22 = s_61.dim;
+    s_61.dim = d_22 + 2u;
+    uint _e6 = nyq_stratified_stratum(s_61, d_22);
+    metal::float2 _e7 = nyq_stratified_jitters(s_61, d_22);
+    metal::float2 _e8 = nyq_stratified_cell(s_61, _e6, _e7);
     return _e8;
 }
 
 metal::float2 nyq_stratified_get_pixel_2d(
-    thread NyqStratifiedSampler& s_60
+    thread NyqStratifiedSampler& s_62
 ) {
-    uint _e3 = s_60.dim;
-    s_60.dim = metal::max(_e3, 2u);
-    uint _e7 = nyq_stratified_stratum(s_60, 0u);
-    metal::float2 _e9 = nyq_stratified_jitters(s_60, 0u);
-    metal::float2 _e10 = nyq_stratified_cell(s_60, _e7, _e9);
+    uint _e3 = s_62.dim;
+    s_62.dim = metal::max(_e3, 2u);
+    uint _e7 = nyq_stratified_stratum(s_62, 0u);
+    metal::float2 _e9 = nyq_stratified_jitters(s_62, 0u);
+    metal::float2 _e10 = nyq_stratified_cell(s_62, _e7, _e9);
     return _e10;
 }
 
 NyqCameraSample nyq_stratified_camera_sample(
-    thread NyqStratifiedSampler& s_61,
+    thread NyqStratifiedSampler& s_63,
     metal::uint2 pixel_15,
     uint sample_index_13
 ) {
-    nyq_stratified_start(s_61, pixel_15, sample_index_13, 0u);
-    metal::float2 _e4 = nyq_stratified_get_pixel_2d(s_61);
-    float _e5 = nyq_stratified_get_1d(s_61);
-    metal::float2 _e6 = nyq_stratified_get_2d(s_61);
+    nyq_stratified_start(s_63, pixel_15, sample_index_13, 0u);
+    metal::float2 _e4 = nyq_stratified_get_pixel_2d(s_63);
+    float _e5 = nyq_stratified_get_1d(s_63);
+    metal::float2 _e6 = nyq_stratified_get_2d(s_63);
     float _e9 = nyq_film_coordinate(pixel_15.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_15.y, _e4.y);
     metal::float2 film_4 = metal::float2(_e9, _e12);
@@ -2723,9 +2742,9 @@ uint nyq_pmj02_point(
             known = _e36 | low_2;
             uint _e38 = flips;
             flips = _e38 ^ swap;
-            uint c_6 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
+            uint c_8 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
             uint _e51 = p_1;
-            p_1 = (_e51 - (1u << level_1)) ^ c_6;
+            p_1 = (_e51 - (1u << level_1)) ^ c_8;
         }
     }
     metal::uint2 _e57 = nyq_wyrand(seed_18, 0u);
@@ -2746,25 +2765,25 @@ NyqPmj02_ nyq_pmj02_(
 }
 
 uint nyq_pmj02_sample_u32_(
-    NyqPmj02_ s_62,
+    NyqPmj02_ s_64,
     uint index_13,
     uint dim_28
 ) {
-    uint d_21 = dim_28 & 1u;
-    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_21);
-    if (s_62.scrambled == 0u) {
+    uint d_23 = dim_28 & 1u;
+    uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_23);
+    if (s_64.scrambled == 0u) {
         return _e6;
     }
-    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_62.keys[d_21]);
+    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_64.keys[d_23]);
     return metal::reverse_bits(_e13);
 }
 
 float nyq_pmj02_sample(
-    NyqPmj02_ s_63,
+    NyqPmj02_ s_65,
     uint index_14,
     uint dim_29
 ) {
-    uint _e3 = nyq_pmj02_sample_u32_(s_63, index_14, dim_29);
+    uint _e3 = nyq_pmj02_sample_u32_(s_65, index_14, dim_29);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2782,10 +2801,10 @@ uint nyq_reverse16_(
 }
 
 metal::uint3 nyq_pmj02_keys(
-    thread NyqPmj02Sampler& s_64,
+    thread NyqPmj02Sampler& s_66,
     metal::uint2 request
 ) {
-    metal::uint2 _e3 = s_64.pixel_key;
+    metal::uint2 _e3 = s_66.pixel_key;
     metal::uint2 _e7 = nyq_mul64_(request, metal::uint2(2135587861u, 2654435769u));
     metal::uint2 _e9 = nyq_mix64_(_e3 ^ _e7);
     metal::uint2 _e14 = nyq_mix64_(_e9 ^ metal::uint2(1781543545u, 28781u));
@@ -2806,39 +2825,39 @@ metal::float2 nyq_pmj02_keyed_point(
 }
 
 uint nyq_pmj02_row(
-    thread NyqPmj02Sampler& s_65,
+    thread NyqPmj02Sampler& s_67,
     metal::uint3 k_11
 ) {
-    uint _e3 = s_65.index_rev;
+    uint _e3 = s_67.index_rev;
     uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return _e5 >> 16u;
 }
 
 void nyq_pmj02_start(
-    thread NyqPmj02Sampler& s_66,
+    thread NyqPmj02Sampler& s_68,
     metal::uint2 pixel_16,
     uint sample_index_14,
     uint dim_30
 ) {
-    metal::uint2 _e6 = s_66.seed;
+    metal::uint2 _e6 = s_68.seed;
     metal::uint2 _e10 = nyq_hash3_(pixel_16, _e6, metal::uint2(1835675698u, 112u));
-    s_66.pixel_key = _e10;
+    s_68.pixel_key = _e10;
     uint _e12 = nyq_reverse16_(sample_index_14);
-    s_66.index_rev = _e12 << 16u;
-    s_66.dim = dim_30;
+    s_68.index_rev = _e12 << 16u;
+    s_68.dim = dim_30;
     return;
 }
 
 float nyq_pmj02_get_1d(
-    thread NyqPmj02Sampler& s_67
+    thread NyqPmj02Sampler& s_69
 ) {
-    uint d_22 = s_67.dim;
-    s_67.dim = d_22 + 1u;
-    metal::uint2 _e6 = nyq_u64_(d_22);
+    uint d_24 = s_69.dim;
+    s_69.dim = d_24 + 1u;
+    metal::uint2 _e6 = nyq_u64_(d_24);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
     metal::uint2 _e12 = nyq_add64_(_e8, metal::uint2(1u, 0u));
-    metal::uint3 _e13 = nyq_pmj02_keys(s_67, _e12);
-    uint _e14 = nyq_pmj02_row(s_67, _e13);
+    metal::uint3 _e13 = nyq_pmj02_keys(s_69, _e12);
+    uint _e14 = nyq_pmj02_row(s_69, _e13);
     uint _e15 = nyq_reverse16_(_e14);
     uint _e17 = nyq_lk_hash(_e15, _e13.y);
     float _e18 = nyq_rev_to_f32_(_e17);
@@ -2846,46 +2865,46 @@ float nyq_pmj02_get_1d(
 }
 
 metal::float2 nyq_pmj02_get_2d(
-    thread NyqPmj02Sampler& s_68
+    thread NyqPmj02Sampler& s_70
 ) {
-    uint d_23 = s_68.dim;
-    s_68.dim = d_23 + 2u;
-    metal::uint2 _e6 = nyq_u64_(d_23);
+    uint d_25 = s_70.dim;
+    s_70.dim = d_25 + 2u;
+    metal::uint2 _e6 = nyq_u64_(d_25);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
-    metal::uint3 _e9 = nyq_pmj02_keys(s_68, _e8);
-    if (d_23 == 0u) {
-        uint _e13 = s_68.index_rev;
+    metal::uint3 _e9 = nyq_pmj02_keys(s_70, _e8);
+    if (d_25 == 0u) {
+        uint _e13 = s_70.index_rev;
         uint _e16 = nyq_reverse16_(_e13 >> 16u);
         metal::float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    uint _e18 = nyq_pmj02_row(s_68, _e9);
+    uint _e18 = nyq_pmj02_row(s_70, _e9);
     uint _e19 = nyq_reverse16_(_e18);
     metal::float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
 metal::float2 nyq_pmj02_get_pixel_2d(
-    thread NyqPmj02Sampler& s_69
+    thread NyqPmj02Sampler& s_71
 ) {
-    uint _e3 = s_69.dim;
-    s_69.dim = metal::max(_e3, 2u);
-    metal::uint3 _e9 = nyq_pmj02_keys(s_69, metal::uint2(0u, 0u));
-    uint _e11 = s_69.index_rev;
+    uint _e3 = s_71.dim;
+    s_71.dim = metal::max(_e3, 2u);
+    metal::uint3 _e9 = nyq_pmj02_keys(s_71, metal::uint2(0u, 0u));
+    uint _e11 = s_71.index_rev;
     uint _e14 = nyq_reverse16_(_e11 >> 16u);
     metal::float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
 NyqCameraSample nyq_pmj02_camera_sample(
-    thread NyqPmj02Sampler& s_70,
+    thread NyqPmj02Sampler& s_72,
     metal::uint2 pixel_17,
     uint sample_index_15
 ) {
-    nyq_pmj02_start(s_70, pixel_17, sample_index_15, 0u);
-    metal::float2 _e4 = nyq_pmj02_get_pixel_2d(s_70);
-    float _e5 = nyq_pmj02_get_1d(s_70);
-    metal::float2 _e6 = nyq_pmj02_get_2d(s_70);
+    nyq_pmj02_start(s_72, pixel_17, sample_index_15, 0u);
+    metal::float2 _e4 = nyq_pmj02_get_pixel_2d(s_72);
+    float _e5 = nyq_pmj02_get_1d(s_72);
+    metal::float2 _e6 = nyq_pmj02_get_2d(s_72);
     float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
     metal::float2 film_5 = metal::float2(_e9, _e12);
@@ -2922,26 +2941,26 @@ metal::uint4 nyq_add128_(
     metal::uint4 a_10,
     metal::uint4 b_9
 ) {
-    metal::uint4 s_81 = a_10 + b_9;
-    metal::uint4 c_7 = metal::select(metal::uint4(0u), metal::uint4(1u), s_81 < a_10);
-    uint t1_2 = s_81.y + c_7.x;
-    uint k1_ = c_7.y + ((t1_2 < c_7.x) ? 1u : 0u);
-    uint t2_1 = s_81.z + k1_;
-    uint k2_ = c_7.z + ((t2_1 < k1_) ? 1u : 0u);
-    return metal::uint4(s_81.x, t1_2, t2_1, s_81.w + k2_);
+    metal::uint4 s_95 = a_10 + b_9;
+    metal::uint4 c_9 = metal::select(metal::uint4(0u), metal::uint4(1u), s_95 < a_10);
+    uint t1_2 = s_95.y + c_9.x;
+    uint k1_ = c_9.y + ((t1_2 < c_9.x) ? 1u : 0u);
+    uint t2_1 = s_95.z + k1_;
+    uint k2_ = c_9.z + ((t2_1 < k1_) ? 1u : 0u);
+    return metal::uint4(s_95.x, t1_2, t2_1, s_95.w + k2_);
 }
 
 metal::uint4 nyq_sub128_(
     metal::uint4 a_11,
     metal::uint4 b_10
 ) {
-    metal::uint4 s_82 = a_11 - b_10;
+    metal::uint4 s_96 = a_11 - b_10;
     metal::uint4 o = metal::select(metal::uint4(0u), metal::uint4(1u), a_11 < b_10);
-    uint t1_3 = s_82.y - o.x;
-    uint k1_1 = o.y + ((s_82.y < o.x) ? 1u : 0u);
-    uint t2_2 = s_82.z - k1_1;
-    uint k2_1 = o.z + ((s_82.z < k1_1) ? 1u : 0u);
-    return metal::uint4(s_82.x, t1_3, t2_2, s_82.w - k2_1);
+    uint t1_3 = s_96.y - o.x;
+    uint k1_1 = o.y + ((s_96.y < o.x) ? 1u : 0u);
+    uint t2_2 = s_96.z - k1_1;
+    uint k2_1 = o.z + ((s_96.z < k1_1) ? 1u : 0u);
+    return metal::uint4(s_96.x, t1_3, t2_2, s_96.w - k2_1);
 }
 
 bool nyq_lt128_(
@@ -3003,12 +3022,12 @@ uint nyq_clz128_(
 
 metal::uint4 nyq_shl128_(
     metal::uint4 x_21,
-    uint s_71
+    uint s_73
 ) {
     metal::uint4 v_5 = {};
     uint k_13 = {};
     v_5 = x_21;
-    k_13 = s_71;
+    k_13 = s_73;
     uint2 loop_bound_23 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_23 == uint2(0u))) { break; }
@@ -3197,7 +3216,7 @@ NyqRounding nyq_divide(
     }
     uint _e16 = nyq_clz128_(num_1);
     uint _e17 = nyq_clz128_(den_1);
-    uint s_83 = _e16 - _e17;
+    uint s_97 = _e16 - _e17;
     uint steps = twice_1 ? 55u : 26u;
     if (den_1.z == 0u) {
         local_23 = den_1.w == 0u;
@@ -3212,8 +3231,8 @@ NyqRounding nyq_divide(
     }
     bool _e44 = local_24;
     if (_e44) {
-        metal::uint2 d_24 = den_1.xy;
-        metal::uint4 _e46 = nyq_shl128_(num_1, s_83);
+        metal::uint2 d_26 = den_1.xy;
+        metal::uint4 _e46 = nyq_shl128_(num_1, s_97);
         r_11 = _e46.xy;
         uint2 loop_bound_24 = uint2(4294967295u);
         bool loop_init_17 = true;
@@ -3236,11 +3255,11 @@ NyqRounding nyq_divide(
                 uint _e62 = q_2.x;
                 q_2 = metal::uint2(_e54 << 1u, (_e58 << 1u) | (_e62 >> 31u));
                 uint _e68 = r_11.y;
-                if (!((_e68 > d_24.y))) {
+                if (!((_e68 > d_26.y))) {
                     uint _e75 = r_11.y;
-                    if (_e75 == d_24.y) {
+                    if (_e75 == d_26.y) {
                         uint _e81 = r_11.x;
-                        local_26 = _e81 >= d_24.x;
+                        local_26 = _e81 >= d_26.x;
                     } else {
                         local_26 = false;
                     }
@@ -3252,7 +3271,7 @@ NyqRounding nyq_divide(
                 bool _e87 = local_25;
                 if (_e87) {
                     metal::uint2 _e88 = r_11;
-                    metal::uint2 _e89 = nyq_sub64_(_e88, d_24);
+                    metal::uint2 _e89 = nyq_sub64_(_e88, d_26);
                     r_11 = _e89;
                     uint _e91 = q_2.x;
                     q_2.x = _e91 | 1u;
@@ -3273,7 +3292,7 @@ NyqRounding nyq_divide(
         bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        metal::uint4 _e124 = nyq_shl128_(num_1, s_83);
+        metal::uint4 _e124 = nyq_shl128_(num_1, s_97);
         r_12 = _e124;
         uint2 loop_bound_25 = uint2(4294967295u);
         bool loop_init_18 = true;
@@ -3319,7 +3338,7 @@ NyqRounding nyq_divide(
     }
     metal::uint2 _e193 = q_2;
     bool _e203 = sticky_1;
-    return NyqRounding {metal::uint4(_e193, 0u, 0u), as_type<int>(as_type<uint>(1) - as_type<uint>(static_cast<int>(steps + s_83))), _e203 ? 1u : 0u, tw, 0u};
+    return NyqRounding {metal::uint4(_e193, 0u, 0u), as_type<int>(as_type<uint>(1) - as_type<uint>(static_cast<int>(steps + s_97))), _e203 ? 1u : 0u, tw, 0u};
 }
 
 uint nyq_prime(
@@ -3340,12 +3359,12 @@ NyqRounding nyq_phi_short(
     uint x_22 = {};
     metal::uint2 rev = metal::uint2(0u, 0u);
     uint i_13 = 0u;
-    uint b_15 = nyq_halton_bases[t_3];
-    uint c_8 = naga_div(35u - metal::clz(a_14), 4u) - 1u;
-    uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_8, 4u)];
-    uint places = (_e19 >> (8u * naga_mod(c_8, 4u))) & 255u;
-    uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_8)];
-    uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_8)];
+    uint b_17 = nyq_halton_bases[t_3];
+    uint c_10 = naga_div(35u - metal::clz(a_14), 4u) - 1u;
+    uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_10, 4u)];
+    uint places = (_e19 >> (8u * naga_mod(c_10, 4u))) & 255u;
+    uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_10)];
+    uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_10)];
     x_22 = a_14;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_19 = true;
@@ -3364,11 +3383,11 @@ NyqRounding nyq_phi_short(
         }
         {
             uint _e52 = x_22;
-            uint q_5 = naga_div(_e52, b_15);
+            uint q_5 = naga_div(_e52, b_17);
             metal::uint2 _e54 = rev;
-            metal::uint3 _e55 = nyq_mul64x32_(_e54, b_15);
+            metal::uint3 _e55 = nyq_mul64x32_(_e54, b_17);
             uint _e57 = x_22;
-            metal::uint2 _e62 = nyq_add64_(_e55.xy, metal::uint2(_e57 - (q_5 * b_15), 0u));
+            metal::uint2 _e62 = nyq_add64_(_e55.xy, metal::uint2(_e57 - (q_5 * b_17), 0u));
             rev = _e62;
             x_22 = q_5;
         }
@@ -3393,7 +3412,7 @@ NyqFraction nyq_phi_fraction(
     uint c_3 = {};
     uint rev_1 = {};
     uint i_14 = {};
-    uint b_16 = nyq_halton_bases[t_4];
+    uint b_18 = nyq_halton_bases[t_4];
     uint chunk = nyq_halton_bases[t_4 + 4u];
     uint run = nyq_halton_bases[t_4 + 5u];
     x_23 = a_15;
@@ -3437,10 +3456,10 @@ NyqFraction nyq_phi_fraction(
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = naga_div(_e49, b_16);
+                    uint q_6 = naga_div(_e49, b_18);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = (_e51 * b_16) + (_e53 - (q_6 * b_16));
+                    rev_1 = (_e51 * b_18) + (_e53 - (q_6 * b_18));
                     c_3 = q_6;
                 }
             }
@@ -3478,12 +3497,12 @@ NyqFraction nyq_permuted_fraction(
     bool local_31 = {};
     bool local_32 = {};
     bool local_33 = {};
-    uint b_17 = nyq_halton_bases[t_5];
+    uint b_19 = nyq_halton_bases[t_5];
     uint chunk_1 = nyq_halton_bases[t_5 + 4u];
     uint run_1 = nyq_halton_bases[t_5 + 5u];
-    metal::uint2 _e16 = nyq_u64_(b_17);
+    metal::uint2 _e16 = nyq_u64_(b_19);
     metal::uint2 _e17 = nyq_hash2_(seed_21, _e16);
-    NyqPermutation _e21 = nyq_permutation(b_17, _e17.x ^ _e17.y);
+    NyqPermutation _e21 = nyq_permutation(b_19, _e17.x ^ _e17.y);
     x_24 = a_16;
     uint2 loop_bound_29 = uint2(4294967295u);
     while(true) {
@@ -3544,13 +3563,13 @@ NyqFraction nyq_permuted_fraction(
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = naga_div(_e77, b_17);
+                    uint q_7 = naga_div(_e77, b_19);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    uint _e84 = nyq_permutation_apply(_e21, _e81 - (q_7 * b_17));
-                    part = (_e79 * b_17) + _e84;
+                    uint _e84 = nyq_permutation_apply(_e21, _e81 - (q_7 * b_19));
+                    part = (_e79 * b_19) + _e84;
                     uint _e86 = scale;
-                    scale = _e86 * b_17;
+                    scale = _e86 * b_19;
                     c_4 = q_7;
                 }
             }
@@ -3568,11 +3587,11 @@ NyqFraction nyq_permuted_fraction(
     }
     uint _e104 = nyq_permutation_apply(_e21, 0u);
     metal::uint4 _e105 = num_3;
-    metal::uint4 _e108 = nyq_mul128_u32_(_e105, b_17 - 1u);
+    metal::uint4 _e108 = nyq_mul128_u32_(_e105, b_19 - 1u);
     metal::uint4 _e113 = nyq_add128_(_e108, metal::uint4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     metal::uint4 _e114 = den_3;
-    metal::uint4 _e117 = nyq_mul128_u32_(_e114, b_17 - 1u);
+    metal::uint4 _e117 = nyq_mul128_u32_(_e114, b_19 - 1u);
     den_3 = _e117;
     uint _e119 = den_3.w;
     if (_e119 == 0u) {
@@ -3591,7 +3610,7 @@ NyqFraction nyq_permuted_fraction(
     bool small = local_33;
     metal::uint4 _e138 = num_3;
     metal::uint4 _e139 = den_3;
-    return NyqFraction {_e138, _e139, small ? 1u : 0u, (_e104 == (b_17 - 1u)) ? 1u : 0u};
+    return NyqFraction {_e138, _e139, small ? 1u : 0u, (_e104 == (b_19 - 1u)) ? 1u : 0u};
 }
 
 NyqFraction nyq_nested_fraction(
@@ -3611,7 +3630,7 @@ NyqFraction nyq_nested_fraction(
     uint digit_1 = {};
     bool local_34 = {};
     uint out_2 = {};
-    uint b_18 = nyq_halton_bases[NYQ_HALTON_WORDS * d_4];
+    uint b_20 = nyq_halton_bases[NYQ_HALTON_WORDS * d_4];
     metal::uint2 _e9 = nyq_u64_(d_4);
     metal::uint2 _e13 = nyq_hash3_(seed_22, _e9, affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM);
     rest = a_17;
@@ -3637,7 +3656,7 @@ NyqFraction nyq_nested_fraction(
             bool _e51 = local_34;
             if (_e51) {
                 metal::uint2 _e52 = rest;
-                metal::uint3 _e53 = nyq_divmod64_small(_e52, b_18);
+                metal::uint3 _e53 = nyq_divmod64_small(_e52, b_20);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
@@ -3654,38 +3673,38 @@ NyqFraction nyq_nested_fraction(
             metal::uint2 _e69 = next;
             rest = _e69;
             metal::uint2 _e70 = pow;
-            metal::uint2 _e71 = nyq_u64_(b_18);
+            metal::uint2 _e71 = nyq_u64_(b_20);
             metal::uint2 _e72 = nyq_mul64_(_e70, _e71);
             pow = _e72;
             uint _e73 = level;
             level = _e73 + 1u;
             out_2 = uint {};
             if (affine) {
-                metal::uint3 _e78 = nyq_mul64x32_(_e68, b_18);
-                metal::uint3 _e83 = nyq_mul64x32_(_e78.xy, b_18 - 1u);
+                metal::uint3 _e78 = nyq_mul64x32_(_e68, b_20);
+                metal::uint3 _e83 = nyq_mul64x32_(_e78.xy, b_20 - 1u);
                 uint m_7 = 1u + _e83.z;
                 uint _e86 = digit_1;
-                out_2 = naga_mod((m_7 * _e86) + _e78.z, b_18);
+                out_2 = naga_mod((m_7 * _e86) + _e78.z, b_20);
             } else {
-                if (b_18 <= 16u) {
-                    metal::uint2 _e93 = nyq_packed_table(b_18, _e68);
+                if (b_20 <= 16u) {
+                    metal::uint2 _e93 = nyq_packed_table(b_20, _e68);
                     uint _e95 = digit_1;
                     uint _e97 = nyq_nibble(_e93, 4u * _e95);
                     out_2 = _e97;
                 } else {
-                    NyqPermutation _e101 = nyq_permutation(b_18, _e68.x ^ _e68.y);
+                    NyqPermutation _e101 = nyq_permutation(b_20, _e68.x ^ _e68.y);
                     uint _e102 = digit_1;
                     uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             metal::uint2 _e104 = num_4;
-            metal::uint3 _e105 = nyq_mul64x32_(_e104, b_18);
+            metal::uint3 _e105 = nyq_mul64x32_(_e104, b_20);
             uint _e107 = out_2;
             metal::uint2 _e110 = nyq_add64_(_e105.xy, metal::uint2(_e107, 0u));
             num_4 = _e110;
             metal::uint2 _e111 = den_4;
-            metal::uint3 _e112 = nyq_mul64x32_(_e111, b_18);
+            metal::uint3 _e112 = nyq_mul64x32_(_e111, b_20);
             den_4 = _e112.xy;
         }
     }
@@ -3708,10 +3727,10 @@ float nyq_radical_inverse_scrambled(
     bool local_37 = {};
     NyqFraction f = {};
     uint bits_2 = {};
-    uint d_25 = naga_mod(dim_32, NYQ_PRIME_COUNT);
-    uint t_8 = NYQ_HALTON_WORDS * d_25;
+    uint d_27 = naga_mod(dim_32, NYQ_PRIME_COUNT);
+    uint t_8 = NYQ_HALTON_WORDS * d_27;
     if (how_2 == NYQ_SCRAMBLE_NONE) {
-        local_35 = d_25 == 0u;
+        local_35 = d_27 == 0u;
     } else {
         local_35 = false;
     }
@@ -3746,7 +3765,7 @@ float nyq_radical_inverse_scrambled(
                     NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23, nyq_halton_bases, _buffer_sizes);
                     f = _e60;
                 } else {
-                    NyqFraction _e63 = nyq_nested_fraction(d_25, a_18, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e63 = nyq_nested_fraction(d_27, a_18, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
                     f = _e63;
                 }
             }
@@ -4008,15 +4027,15 @@ uint nyq_inverse_radical_inverse(
 }
 
 metal::uint2 nyq_halton_sampler_index(
-    thread NyqHaltonSampler& s_72,
+    thread NyqHaltonSampler& s_74,
     metal::uint2 pixel_18,
     uint sample_index_16
 ) {
     uint offset_1 = {};
-    uint stride = s_72.stride;
-    metal::uint2 scales_1 = s_72.scales;
-    metal::uint2 exponents = s_72.exponents;
-    metal::uint2 basis_1 = s_72.basis;
+    uint stride = s_74.stride;
+    metal::uint2 scales_1 = s_74.scales;
+    metal::uint2 exponents = s_74.exponents;
+    metal::uint2 basis_1 = s_74.basis;
     uint _e16 = nyq_inverse_radical_inverse(2u, naga_mod(pixel_18.x, scales_1.x), exponents.x);
     offset_1 = naga_mod(_e16 * basis_1.x, stride);
     uint _e26 = nyq_inverse_radical_inverse(3u, naga_mod(pixel_18.y, scales_1.y), exponents.y);
@@ -4030,60 +4049,60 @@ metal::uint2 nyq_halton_sampler_index(
 }
 
 float nyq_halton_sampler_value(
-    thread NyqHaltonSampler& s_73,
+    thread NyqHaltonSampler& s_75,
     uint dim_38,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::uint2 a_24 = {};
-    uint d_26 = naga_mod(dim_38, NYQ_PRIME_COUNT);
-    metal::uint2 index_17 = s_73.index;
-    a_24 = index_17;
-    if (d_26 == 0u) {
-        uint e_6 = s_73.exponents.x;
+    uint d_28 = naga_mod(dim_38, NYQ_PRIME_COUNT);
+    metal::uint2 index_19 = s_75.index;
+    a_24 = index_19;
+    if (d_28 == 0u) {
+        uint e_6 = s_75.exponents.x;
         if (e_6 != 0u) {
-            metal::uint2 _e14 = nyq_shr64_(index_17, e_6);
+            metal::uint2 _e14 = nyq_shr64_(index_19, e_6);
             a_24 = _e14;
         }
     } else {
-        if (d_26 == 1u) {
-            uint _e19 = s_73.scales.y;
-            metal::uint3 _e20 = nyq_divmod64_small(index_17, _e19);
+        if (d_28 == 1u) {
+            uint _e19 = s_75.scales.y;
+            metal::uint3 _e20 = nyq_divmod64_small(index_19, _e19);
             a_24 = _e20.xy;
         }
     }
     metal::uint2 _e22 = a_24;
-    metal::uint2 _e24 = s_73.seed;
-    uint _e26 = s_73.scramble;
-    float _e27 = nyq_radical_inverse_scrambled(d_26, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
+    metal::uint2 _e24 = s_75.seed;
+    uint _e26 = s_75.scramble;
+    float _e27 = nyq_radical_inverse_scrambled(d_28, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
     return _e27;
 }
 
 void nyq_halton_sampler_start(
-    thread NyqHaltonSampler& s_74,
+    thread NyqHaltonSampler& s_76,
     metal::uint2 pixel_19,
     uint sample_index_17,
     uint dim_39
 ) {
-    metal::uint2 _e5 = nyq_halton_sampler_index(s_74, pixel_19, sample_index_17);
-    s_74.index = _e5;
-    s_74.dim = dim_39;
+    metal::uint2 _e5 = nyq_halton_sampler_index(s_76, pixel_19, sample_index_17);
+    s_76.index = _e5;
+    s_76.dim = dim_39;
     return;
 }
 
 float nyq_halton_sampler_get_1d(
-    thread NyqHaltonSampler& s_75,
+    thread NyqHaltonSampler& s_77,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_27 = s_75.dim;
-    s_75.dim = d_27 + 1u;
-    float _e6 = nyq_halton_sampler_value(s_75, d_27, nyq_halton_bases, _buffer_sizes);
+    uint d_29 = s_77.dim;
+    s_77.dim = d_29 + 1u;
+    float _e6 = nyq_halton_sampler_value(s_77, d_29, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_halton_sampler_pair(
-    thread NyqHaltonSampler& s_76,
+    thread NyqHaltonSampler& s_78,
     uint dim_40,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
@@ -4108,7 +4127,7 @@ metal::float2 nyq_halton_sampler_pair(
         {
             uint _e11 = k_15;
             uint _e13 = k_15;
-            float _e15 = nyq_halton_sampler_value(s_76, dim_40 + _e13, nyq_halton_bases, _buffer_sizes);
+            float _e15 = nyq_halton_sampler_value(s_78, dim_40 + _e13, nyq_halton_bases, _buffer_sizes);
             v_6[_e11] = _e15;
         }
     }
@@ -4117,29 +4136,29 @@ metal::float2 nyq_halton_sampler_pair(
 }
 
 metal::float2 nyq_halton_sampler_get_2d(
-    thread NyqHaltonSampler& s_77,
+    thread NyqHaltonSampler& s_79,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_28 = s_77.dim;
-    s_77.dim = d_28 + 2u;
-    metal::float2 _e6 = nyq_halton_sampler_pair(s_77, d_28, nyq_halton_bases, _buffer_sizes);
+    uint d_30 = s_79.dim;
+    s_79.dim = d_30 + 2u;
+    metal::float2 _e6 = nyq_halton_sampler_pair(s_79, d_30, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_halton_sampler_get_pixel_2d(
-    thread NyqHaltonSampler& s_78,
+    thread NyqHaltonSampler& s_80,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_78.dim;
-    s_78.dim = metal::max(_e3, 2u);
-    metal::float2 _e7 = nyq_halton_sampler_pair(s_78, 0u, nyq_halton_bases, _buffer_sizes);
+    uint _e3 = s_80.dim;
+    s_80.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_halton_sampler_pair(s_80, 0u, nyq_halton_bases, _buffer_sizes);
     return _e7;
 }
 
 NyqCameraSample nyq_halton_sampler_camera_sample(
-    thread NyqHaltonSampler& s_79,
+    thread NyqHaltonSampler& s_81,
     metal::uint2 pixel_20,
     uint sample_index_18,
     device type_4 const& nyq_halton_bases,
@@ -4148,7 +4167,7 @@ NyqCameraSample nyq_halton_sampler_camera_sample(
     metal::float4 v_7 = metal::float4(0.0, 0.0, 0.0, 0.0);
     float lens_y = 0.0;
     uint d_5 = 0u;
-    nyq_halton_sampler_start(s_79, pixel_20, sample_index_18, 5u);
+    nyq_halton_sampler_start(s_81, pixel_20, sample_index_18, 5u);
     uint2 loop_bound_37 = uint2(4294967295u);
     bool loop_init_25 = true;
     while(true) {
@@ -4166,7 +4185,7 @@ NyqCameraSample nyq_halton_sampler_camera_sample(
         }
         {
             uint _e17 = d_5;
-            float _e18 = nyq_halton_sampler_value(s_79, _e17, nyq_halton_bases, _buffer_sizes);
+            float _e18 = nyq_halton_sampler_value(s_81, _e17, nyq_halton_bases, _buffer_sizes);
             uint _e19 = d_5;
             if (_e19 < 4u) {
                 uint _e22 = d_5;
@@ -4187,10 +4206,438 @@ NyqCameraSample nyq_halton_sampler_camera_sample(
     return NyqCameraSample {film_6, metal::float2(_e37, _e38), _e41};
 }
 
+uint nyq_blue_entry(
+    uint family,
+    uint x_25,
+    uint y_1,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e16 = nyq_blue_tiles[(((family * NYQ_BLUE_TILE_SIZE) * NYQ_BLUE_TILE_SIZE) + ((y_1 & 127u) * NYQ_BLUE_TILE_SIZE)) + (x_25 & 127u)];
+    return _e16;
+}
+
+metal::uint2 nyq_blue_offset(
+    metal::uint2 seed_29,
+    uint frame_1,
+    uint block
+) {
+    metal::uint2 _e5 = nyq_u64_(block ^ 1112298821u);
+    metal::uint2 _e6 = nyq_hash2_(seed_29, _e5);
+    metal::uint2 r_17 = metal::uint2((frame_1 * 3242174889u) >> 25u, (frame_1 * 2447445414u) >> 25u);
+    return (_e6 + r_17) & metal::uint2(127u);
+}
+
+uint nyq_blue_block_entry(
+    uint family_1,
+    metal::uint2 seed_30,
+    uint frame_2,
+    metal::uint2 pixel_21,
+    uint block_1,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    metal::uint2 _e5 = nyq_blue_offset(seed_30, frame_2, block_1);
+    metal::uint2 p_4 = pixel_21 + _e5;
+    uint _e9 = nyq_blue_entry(family_1, p_4.x, p_4.y, nyq_blue_tiles, _buffer_sizes);
+    return _e9;
+}
+
+float nyq_blue_film_coordinate(
+    uint pixel_22,
+    float offset_2
+) {
+    float _e2 = nyq_u32_to_f32_(pixel_22);
+    float x_29 = _e2 + offset_2;
+    float edge_1 = _e2 + 1.0;
+    if (x_29 < edge_1) {
+        return x_29;
+    }
+    float below_1 = as_type<float>(as_type<uint>(edge_1) - 1u);
+    return (below_1 >= _e2) ? below_1 : _e2;
+}
+
+NyqCameraSample nyq_blue_camera(
+    metal::uint2 pixel_23,
+    type_12 v_8
+) {
+    float _e4 = nyq_blue_film_coordinate(pixel_23.x, v_8.inner[0]);
+    float _e7 = nyq_blue_film_coordinate(pixel_23.y, v_8.inner[1]);
+    metal::float2 p_5 = metal::float2(_e4, _e7);
+    return NyqCameraSample {p_5, metal::float2(v_8.inner[3], v_8.inner[4]), v_8.inner[2]};
+}
+
+NyqBlueSampler nyq_blue_sampler(
+    metal::uint2 seed_31,
+    uint frame_3
+) {
+    return NyqBlueSampler {seed_31, frame_3, {}, metal::uint2(0u), 0u, 0u, metal::uint2(0u), metal::uint2(0u)};
+}
+
+uint nyq_owen_sobol_bn_key(
+    uint entry
+) {
+    uint _e5 = nyq_mix32_((entry >> 8u) ^ 1112296192u);
+    return _e5;
+}
+
+uint nyq_owen_sobol_bn_rev(
+    uint entry_1,
+    uint key_4,
+    uint index_17
+) {
+    uint _e8 = nyq_mix32_(key_4 ^ 1397249350u);
+    uint _e9 = nyq_shuffle_rev(index_17 ^ (entry_1 & 255u), _e8);
+    return _e9;
+}
+
+float nyq_owen_sobol_bn_value_at(
+    uint key_5,
+    uint rev_2,
+    uint c_5,
+    device type_4 const& nyq_sobol_matrices,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = nyq_dim_seed(key_5, c_5);
+    uint _e4 = nyq_owen_sobol_rev(rev_2, c_5, _e3, nyq_sobol_matrices, _buffer_sizes);
+    float _e5 = nyq_rev_to_f32_(_e4);
+    return _e5;
+}
+
+NyqBlueSampler nyq_owen_sobol_bn_sampler(
+    metal::uint2 seed_32,
+    uint frame_4
+) {
+    NyqBlueSampler _e2 = nyq_blue_sampler(seed_32, frame_4);
+    return _e2;
+}
+
+void nyq_owen_sobol_bn_start(
+    thread NyqBlueSampler& s_82,
+    metal::uint2 pixel_24,
+    uint sample_index_19,
+    uint dim_41,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint b_15 = 0u;
+    s_82.pixel = pixel_24;
+    s_82.index = sample_index_19;
+    s_82.dim = dim_41;
+    uint2 loop_bound_38 = uint2(4294967295u);
+    bool loop_init_26 = true;
+    while(true) {
+        if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_26) {
+            uint _e28 = b_15;
+            b_15 = _e28 + 1u;
+        }
+        loop_init_26 = false;
+        uint _e9 = b_15;
+        if (_e9 < 2u) {
+        } else {
+            break;
+        }
+        {
+            metal::uint2 _e14 = s_82.seed;
+            uint _e16 = s_82.frame;
+            uint _e17 = b_15;
+            uint _e18 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e14, _e16, pixel_24, _e17, nyq_blue_tiles, _buffer_sizes);
+            uint _e19 = nyq_owen_sobol_bn_key(_e18);
+            uint _e21 = b_15;
+            s_82.key[_e21] = _e19;
+            uint _e24 = b_15;
+            uint _e26 = nyq_owen_sobol_bn_rev(_e18, _e19, sample_index_19);
+            s_82.prepared[_e24] = _e26;
+        }
+    }
+    return;
+}
+
+float nyq_owen_sobol_bn_value(
+    thread NyqBlueSampler& s_83,
+    uint dim_42,
+    device type_4 const& nyq_sobol_matrices,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint b_21 = naga_div(dim_42, 4u);
+    uint c_11 = naga_mod(dim_42, 4u);
+    if (b_21 < 2u) {
+        uint _e10 = s_83.key[b_21];
+        uint _e13 = s_83.prepared[b_21];
+        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_11, nyq_sobol_matrices, _buffer_sizes);
+        return _e14;
+    }
+    metal::uint2 _e17 = s_83.seed;
+    uint _e19 = s_83.frame;
+    metal::uint2 _e21 = s_83.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_21, nyq_blue_tiles, _buffer_sizes);
+    uint _e23 = nyq_owen_sobol_bn_key(_e22);
+    uint _e25 = s_83.index;
+    uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
+    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_11, nyq_sobol_matrices, _buffer_sizes);
+    return _e27;
+}
+
+float nyq_owen_sobol_bn_get_1d(
+    thread NyqBlueSampler& s_84,
+    device type_4 const& nyq_sobol_matrices,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_31 = s_84.dim;
+    s_84.dim = d_31 + 1u;
+    float _e6 = nyq_owen_sobol_bn_value(s_84, d_31, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_owen_sobol_bn_get_2d(
+    thread NyqBlueSampler& s_85,
+    device type_4 const& nyq_sobol_matrices,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_32 = s_85.dim;
+    s_85.dim = d_32 + 2u;
+    float _e6 = nyq_owen_sobol_bn_value(s_85, d_32, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_bn_value(s_85, d_32 + 1u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_owen_sobol_bn_get_pixel_2d(
+    thread NyqBlueSampler& s_86,
+    device type_4 const& nyq_sobol_matrices,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_86.dim;
+    s_86.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_bn_value(s_86, 0u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_bn_value(s_86, 1u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    return metal::float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_owen_sobol_bn_camera_sample(
+    thread NyqBlueSampler& s_87,
+    metal::uint2 pixel_25,
+    uint sample_index_20,
+    device type_4 const& nyq_sobol_matrices,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    type_12 v_9 = {};
+    uint d_6 = 0u;
+    nyq_owen_sobol_bn_start(s_87, pixel_25, sample_index_20, 0u, nyq_blue_tiles, _buffer_sizes);
+    uint2 loop_bound_39 = uint2(4294967295u);
+    bool loop_init_27 = true;
+    while(true) {
+        if (metal::all(loop_bound_39 == uint2(0u))) { break; }
+        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+        if (!loop_init_27) {
+            uint _e15 = d_6;
+            d_6 = _e15 + 1u;
+        }
+        loop_init_27 = false;
+        uint _e7 = d_6;
+        if (_e7 < 5u) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = d_6;
+            uint _e12 = d_6;
+            float _e13 = nyq_owen_sobol_bn_value(s_87, _e12, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+            v_9.inner[_e10] = _e13;
+        }
+    }
+    s_87.dim = 5u;
+    type_12 _e19 = v_9;
+    NyqCameraSample _e20 = nyq_blue_camera(pixel_25, _e19);
+    return _e20;
+}
+
+uint nyq_lattice_bn_key(
+    uint entry_2
+) {
+    uint _e5 = nyq_mix32_((entry_2 >> 8u) ^ 1279349760u);
+    return _e5;
+}
+
+uint nyq_lattice_bn_rev(
+    uint entry_3,
+    uint key_6,
+    uint index_18
+) {
+    uint _e8 = nyq_mix32_(key_6 ^ 1397249350u);
+    uint _e9 = nyq_shuffle_rev(index_18 ^ (entry_3 & 255u), _e8);
+    return _e9;
+}
+
+float nyq_lattice_bn_value_at(
+    uint key_7,
+    uint rev_3,
+    uint c_6
+) {
+    uint _e8 = nyq_mix32_(key_7 ^ ((c_6 + 1u) * 2654435769u));
+    float _e13 = nyq_fraction_to_f32_((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_6]) + _e8);
+    return _e13;
+}
+
+NyqBlueSampler nyq_lattice_bn_sampler(
+    metal::uint2 seed_33,
+    uint frame_5
+) {
+    NyqBlueSampler _e2 = nyq_blue_sampler(seed_33, frame_5);
+    return _e2;
+}
+
+void nyq_lattice_bn_start(
+    thread NyqBlueSampler& s_88,
+    metal::uint2 pixel_26,
+    uint sample_index_21,
+    uint dim_43,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint b_16 = 0u;
+    s_88.pixel = pixel_26;
+    s_88.index = sample_index_21;
+    s_88.dim = dim_43;
+    uint2 loop_bound_40 = uint2(4294967295u);
+    bool loop_init_28 = true;
+    while(true) {
+        if (metal::all(loop_bound_40 == uint2(0u))) { break; }
+        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+        if (!loop_init_28) {
+            uint _e28 = b_16;
+            b_16 = _e28 + 1u;
+        }
+        loop_init_28 = false;
+        uint _e9 = b_16;
+        if (_e9 < 2u) {
+        } else {
+            break;
+        }
+        {
+            metal::uint2 _e14 = s_88.seed;
+            uint _e16 = s_88.frame;
+            uint _e17 = b_16;
+            uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_26, _e17, nyq_blue_tiles, _buffer_sizes);
+            uint _e19 = nyq_lattice_bn_key(_e18);
+            uint _e21 = b_16;
+            s_88.key[_e21] = _e19;
+            uint _e24 = b_16;
+            uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_21);
+            s_88.prepared[_e24] = _e26;
+        }
+    }
+    return;
+}
+
+float nyq_lattice_bn_value(
+    thread NyqBlueSampler& s_89,
+    uint dim_44,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint b_22 = naga_div(dim_44, 4u);
+    uint c_12 = naga_mod(dim_44, 4u);
+    if (b_22 < 2u) {
+        uint _e10 = s_89.key[b_22];
+        uint _e13 = s_89.prepared[b_22];
+        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_12);
+        return _e14;
+    }
+    metal::uint2 _e17 = s_89.seed;
+    uint _e19 = s_89.frame;
+    metal::uint2 _e21 = s_89.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_22, nyq_blue_tiles, _buffer_sizes);
+    uint _e23 = nyq_lattice_bn_key(_e22);
+    uint _e25 = s_89.index;
+    uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
+    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_12);
+    return _e27;
+}
+
+float nyq_lattice_bn_get_1d(
+    thread NyqBlueSampler& s_90,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_33 = s_90.dim;
+    s_90.dim = d_33 + 1u;
+    float _e6 = nyq_lattice_bn_value(s_90, d_33, nyq_blue_tiles, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_lattice_bn_get_2d(
+    thread NyqBlueSampler& s_91,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_34 = s_91.dim;
+    s_91.dim = d_34 + 2u;
+    float _e6 = nyq_lattice_bn_value(s_91, d_34, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_lattice_bn_value(s_91, d_34 + 1u, nyq_blue_tiles, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_lattice_bn_get_pixel_2d(
+    thread NyqBlueSampler& s_92,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_92.dim;
+    s_92.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_lattice_bn_value(s_92, 0u, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_lattice_bn_value(s_92, 1u, nyq_blue_tiles, _buffer_sizes);
+    return metal::float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_lattice_bn_camera_sample(
+    thread NyqBlueSampler& s_93,
+    metal::uint2 pixel_27,
+    uint sample_index_22,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    type_12 v_10 = {};
+    uint d_7 = 0u;
+    nyq_lattice_bn_start(s_93, pixel_27, sample_index_22, 0u, nyq_blue_tiles, _buffer_sizes);
+    uint2 loop_bound_41 = uint2(4294967295u);
+    bool loop_init_29 = true;
+    while(true) {
+        if (metal::all(loop_bound_41 == uint2(0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_29) {
+            uint _e15 = d_7;
+            d_7 = _e15 + 1u;
+        }
+        loop_init_29 = false;
+        uint _e7 = d_7;
+        if (_e7 < 5u) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = d_7;
+            uint _e12 = d_7;
+            float _e13 = nyq_lattice_bn_value(s_93, _e12, nyq_blue_tiles, _buffer_sizes);
+            v_10.inner[_e10] = _e13;
+        }
+    }
+    s_93.dim = 5u;
+    type_12 _e19 = v_10;
+    NyqCameraSample _e20 = nyq_blue_camera(pixel_27, _e19);
+    return _e20;
+}
+
 metal::uint4 nyq_fill_request(
     uint i_16,
     constant NyqFillJob& nyq_job,
-    device type_27 const& nyq_requests,
+    device type_28 const& nyq_requests,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = nyq_job.implicit;
@@ -4201,24 +4648,24 @@ metal::uint4 nyq_fill_request(
     uint _e11 = nyq_job.first;
     uint n_12 = _e11 + i_16;
     uint _e15 = nyq_job.spp;
-    uint pixel_21 = naga_div(n_12, _e15);
+    uint pixel_28 = naga_div(n_12, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_21, _e20), naga_div(pixel_21, _e25), naga_mod(n_12, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_28, _e20), naga_div(pixel_28, _e25), naga_mod(n_12, _e29), 5u);
 }
 
 void nyq_fill_camera(
     uint out_3,
-    NyqCameraSample c_5,
+    NyqCameraSample c_7,
     device type_4& nyq_values,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_values[out_3] = as_type<uint>(c_5.p_film.x);
-    nyq_values[out_3 + 1u] = as_type<uint>(c_5.p_film.y);
-    nyq_values[out_3 + 2u] = as_type<uint>(c_5.time);
-    nyq_values[out_3 + 3u] = as_type<uint>(c_5.lens.x);
-    nyq_values[out_3 + 4u] = as_type<uint>(c_5.lens.y);
+    nyq_values[out_3] = as_type<uint>(c_7.p_film.x);
+    nyq_values[out_3 + 1u] = as_type<uint>(c_7.p_film.y);
+    nyq_values[out_3 + 2u] = as_type<uint>(c_7.time);
+    nyq_values[out_3 + 3u] = as_type<uint>(c_7.lens.x);
+    nyq_values[out_3 + 4u] = as_type<uint>(c_7.lens.y);
     return;
 }
 
@@ -4241,10 +4688,11 @@ kernel void nyq_fill(
   metal::uint3 id [[thread_position_in_grid]]
 , device type_4 const& nyq_sobol_matrices [[buffer(0)]]
 , device type_4 const& nyq_halton_bases [[buffer(4)]]
+, device type_4 const& nyq_blue_tiles [[buffer(5)]]
 , constant NyqFillJob& nyq_job [[buffer(1)]]
-, device type_27 const& nyq_requests [[buffer(2)]]
+, device type_28 const& nyq_requests [[buffer(2)]]
 , device type_4& nyq_values [[buffer(3)]]
-, constant _mslBufferSizes& _buffer_sizes [[buffer(5)]]
+, constant _mslBufferSizes& _buffer_sizes [[buffer(6)]]
 ) {
     NyqOwenSobolSampler s = {};
     NyqZSobolSampler s_1 = {};
@@ -4254,6 +4702,8 @@ kernel void nyq_fill(
     NyqPmj02Sampler s_5 = {};
     NyqSobolSampler s_6 = {};
     NyqHaltonSampler s_7 = {};
+    NyqBlueSampler s_8 = {};
+    NyqBlueSampler s_9 = {};
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
@@ -4266,7 +4716,7 @@ kernel void nyq_fill(
         return;
     }
     metal::uint4 _e6 = nyq_fill_request(i_17, nyq_job, nyq_requests, _buffer_sizes);
-    metal::uint2 pixel_22 = _e6.xy;
+    metal::uint2 pixel_29 = _e6.xy;
     uint out_5 = 8u * i_17;
     uint _e12 = nyq_job.kind;
     switch(_e12) {
@@ -4275,9 +4725,9 @@ kernel void nyq_fill(
             uint _e18 = nyq_job.frame;
             NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_22, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_29, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_5, _e22, nyq_values, _buffer_sizes);
-            nyq_owen_sobol_start(s, pixel_22, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_29, _e6.z, _e6.w);
             float _e25 = nyq_owen_sobol_get_1d(s, nyq_sobol_matrices, _buffer_sizes);
             metal::float2 _e26 = nyq_owen_sobol_get_2d(s, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_5, _e25, _e26, nyq_values, _buffer_sizes);
@@ -4290,9 +4740,9 @@ kernel void nyq_fill(
             metal::uint2 _e38 = nyq_job.seed;
             NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_22, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_29, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_5, _e42, nyq_values, _buffer_sizes);
-            nyq_zsobol_start(s_1, pixel_22, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_29, _e6.z, _e6.w);
             float _e45 = nyq_zsobol_get_1d(s_1);
             metal::float2 _e46 = nyq_zsobol_get_2d(s_1, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_5, _e45, _e46, nyq_values, _buffer_sizes);
@@ -4302,9 +4752,9 @@ kernel void nyq_fill(
             metal::uint2 _e49 = nyq_job.seed;
             NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_22, _e6.z);
+            NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e53, nyq_values, _buffer_sizes);
-            nyq_random_start(s_2, pixel_22, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_29, _e6.z, _e6.w);
             float _e56 = nyq_random_get_1d(s_2);
             metal::float2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_5, _e56, _e57, nyq_values, _buffer_sizes);
@@ -4317,9 +4767,9 @@ kernel void nyq_fill(
             metal::uint2 _e69 = nyq_job.seed;
             NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_22, _e6.z);
+            NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e73, nyq_values, _buffer_sizes);
-            nyq_lattice_start(s_3, pixel_22, _e6.z, _e6.w);
+            nyq_lattice_start(s_3, pixel_29, _e6.z, _e6.w);
             float _e76 = nyq_lattice_get_1d(s_3);
             metal::float2 _e77 = nyq_lattice_get_2d(s_3);
             nyq_fill_values(out_5, _e76, _e77, nyq_values, _buffer_sizes);
@@ -4332,9 +4782,9 @@ kernel void nyq_fill(
             metal::uint2 _e91 = nyq_job.seed;
             NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
             s_4 = _e92;
-            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_22, _e6.z);
+            NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e95, nyq_values, _buffer_sizes);
-            nyq_stratified_start(s_4, pixel_22, _e6.z, _e6.w);
+            nyq_stratified_start(s_4, pixel_29, _e6.z, _e6.w);
             float _e98 = nyq_stratified_get_1d(s_4);
             metal::float2 _e99 = nyq_stratified_get_2d(s_4);
             nyq_fill_values(out_5, _e98, _e99, nyq_values, _buffer_sizes);
@@ -4344,9 +4794,9 @@ kernel void nyq_fill(
             metal::uint2 _e102 = nyq_job.seed;
             NyqPmj02Sampler _e103 = nyq_pmj02_sampler(_e102);
             s_5 = _e103;
-            NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_22, _e6.z);
+            NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_29, _e6.z);
             nyq_fill_camera(out_5, _e106, nyq_values, _buffer_sizes);
-            nyq_pmj02_start(s_5, pixel_22, _e6.z, _e6.w);
+            nyq_pmj02_start(s_5, pixel_29, _e6.z, _e6.w);
             float _e109 = nyq_pmj02_get_1d(s_5);
             metal::float2 _e110 = nyq_pmj02_get_2d(s_5);
             nyq_fill_values(out_5, _e109, _e110, nyq_values, _buffer_sizes);
@@ -4359,9 +4809,9 @@ kernel void nyq_fill(
             metal::uint2 _e122 = nyq_job.seed;
             NyqSobolSampler _e123 = nyq_sobol_sampler(_e113, _e116, _e119, _e122, nyq_sobol_matrices, _buffer_sizes);
             s_6 = _e123;
-            NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_22, _e6.z, nyq_sobol_matrices, _buffer_sizes);
+            NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_29, _e6.z, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_camera(out_5, _e126, nyq_values, _buffer_sizes);
-            nyq_sobol_sampler_start(s_6, pixel_22, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
+            nyq_sobol_sampler_start(s_6, pixel_29, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
             float _e129 = nyq_sobol_sampler_get_1d(s_6, nyq_sobol_matrices, _buffer_sizes);
             metal::float2 _e130 = nyq_sobol_sampler_get_2d(s_6, nyq_sobol_matrices, _buffer_sizes);
             nyq_fill_values(out_5, _e129, _e130, nyq_values, _buffer_sizes);
@@ -4374,202 +4824,228 @@ kernel void nyq_fill(
             metal::uint2 _e142 = nyq_job.seed;
             NyqHaltonSampler _e143 = nyq_halton_sampler(_e133, _e136, _e139, _e142);
             s_7 = _e143;
-            NyqCameraSample _e146 = nyq_halton_sampler_camera_sample(s_7, pixel_22, _e6.z, nyq_halton_bases, _buffer_sizes);
+            NyqCameraSample _e146 = nyq_halton_sampler_camera_sample(s_7, pixel_29, _e6.z, nyq_halton_bases, _buffer_sizes);
             nyq_fill_camera(out_5, _e146, nyq_values, _buffer_sizes);
-            nyq_halton_sampler_start(s_7, pixel_22, _e6.z, _e6.w);
+            nyq_halton_sampler_start(s_7, pixel_29, _e6.z, _e6.w);
             float _e149 = nyq_halton_sampler_get_1d(s_7, nyq_halton_bases, _buffer_sizes);
             metal::float2 _e150 = nyq_halton_sampler_get_2d(s_7, nyq_halton_bases, _buffer_sizes);
             nyq_fill_values(out_5, _e149, _e150, nyq_values, _buffer_sizes);
             return;
         }
+        case 8u: {
+            metal::uint2 _e153 = nyq_job.seed;
+            uint _e156 = nyq_job.frame;
+            NyqBlueSampler _e157 = nyq_owen_sobol_bn_sampler(_e153, _e156);
+            s_8 = _e157;
+            NyqCameraSample _e160 = nyq_owen_sobol_bn_camera_sample(s_8, pixel_29, _e6.z, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+            nyq_fill_camera(out_5, _e160, nyq_values, _buffer_sizes);
+            nyq_owen_sobol_bn_start(s_8, pixel_29, _e6.z, _e6.w, nyq_blue_tiles, _buffer_sizes);
+            float _e163 = nyq_owen_sobol_bn_get_1d(s_8, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+            metal::float2 _e164 = nyq_owen_sobol_bn_get_2d(s_8, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+            nyq_fill_values(out_5, _e163, _e164, nyq_values, _buffer_sizes);
+            return;
+        }
+        case 10u: {
+            metal::uint2 _e167 = nyq_job.seed;
+            uint _e170 = nyq_job.frame;
+            NyqBlueSampler _e171 = nyq_lattice_bn_sampler(_e167, _e170);
+            s_9 = _e171;
+            NyqCameraSample _e174 = nyq_lattice_bn_camera_sample(s_9, pixel_29, _e6.z, nyq_blue_tiles, _buffer_sizes);
+            nyq_fill_camera(out_5, _e174, nyq_values, _buffer_sizes);
+            nyq_lattice_bn_start(s_9, pixel_29, _e6.z, _e6.w, nyq_blue_tiles, _buffer_sizes);
+            float _e177 = nyq_lattice_bn_get_1d(s_9, nyq_blue_tiles, _buffer_sizes);
+            metal::float2 _e178 = nyq_lattice_bn_get_2d(s_9, nyq_blue_tiles, _buffer_sizes);
+            nyq_fill_values(out_5, _e177, _e178, nyq_values, _buffer_sizes);
+            return;
+        }
         case 16u: {
-            uint _e153 = nyq_job.dims;
-            uint _e156 = nyq_job.scramble;
-            metal::uint2 _e161 = nyq_job.seed;
-            NyqSobol _e162 = nyq_sobol(_e153, _e156 != 0u, _e161);
-            uint2 loop_bound_38 = uint2(4294967295u);
-            bool loop_init_26 = true;
-            while(true) {
-                if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-                loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-                if (!loop_init_26) {
-                    uint _e190 = k;
-                    k = _e190 + 1u;
-                }
-                loop_init_26 = false;
-                uint _e165 = k;
-                if (_e165 < 4u) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e169 = k;
-                    uint _e174 = k;
-                    uint _e176 = nyq_sobol_sample_u32_(_e162, _e6.z, _e6.w + _e174, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_5 + _e169] = _e176;
-                    uint _e180 = k;
-                    uint _e185 = k;
-                    float _e187 = nyq_sobol_sample(_e162, _e6.z, _e6.w + _e185, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[(out_5 + 4u) + _e180] = as_type<uint>(_e187);
-                }
-            }
-            return;
-        }
-        case 17u: {
-            uint _e194 = nyq_job.dims;
-            metal::uint2 _e197 = nyq_job.seed;
-            NyqOwenSobol _e198 = nyq_owen_sobol(_e194, _e197);
-            metal::float4 _e201 = nyq_owen_sobol_sample_4d(_e198, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
-            uint2 loop_bound_39 = uint2(4294967295u);
-            bool loop_init_27 = true;
-            while(true) {
-                if (metal::all(loop_bound_39 == uint2(0u))) { break; }
-                loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-                if (!loop_init_27) {
-                    uint _e226 = k_1;
-                    k_1 = _e226 + 1u;
-                }
-                loop_init_27 = false;
-                uint _e204 = k_1;
-                if (_e204 < 4u) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e208 = k_1;
-                    uint _e213 = k_1;
-                    uint _e215 = nyq_owen_sobol_sample_u32_(_e198, _e6.z, _e6.w + _e213, nyq_sobol_matrices, _buffer_sizes);
-                    nyq_values[out_5 + _e208] = _e215;
-                    uint _e219 = k_1;
-                    uint _e222 = k_1;
-                    nyq_values[(out_5 + 4u) + _e219] = as_type<uint>(_e201[_e222]);
-                }
-            }
-            return;
-        }
-        case 18u: {
-            uint _e230 = nyq_job.scramble;
-            metal::uint2 _e235 = nyq_job.seed;
-            NyqPmj02_ _e236 = nyq_pmj02_(_e230 != 0u, _e235);
-            uint2 loop_bound_40 = uint2(4294967295u);
-            bool loop_init_28 = true;
-            while(true) {
-                if (metal::all(loop_bound_40 == uint2(0u))) { break; }
-                loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-                if (!loop_init_28) {
-                    uint _e264 = k_2;
-                    k_2 = _e264 + 1u;
-                }
-                loop_init_28 = false;
-                uint _e239 = k_2;
-                if (_e239 < 4u) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e243 = k_2;
-                    uint _e248 = k_2;
-                    uint _e250 = nyq_pmj02_sample_u32_(_e236, _e6.z, _e6.w + _e248);
-                    nyq_values[out_5 + _e243] = _e250;
-                    uint _e254 = k_2;
-                    uint _e259 = k_2;
-                    float _e261 = nyq_pmj02_sample(_e236, _e6.z, _e6.w + _e259);
-                    nyq_values[(out_5 + 4u) + _e254] = as_type<uint>(_e261);
-                }
-            }
-            return;
-        }
-        case 19u: {
-            uint _e268 = nyq_job.dims;
-            uint _e271 = nyq_job.scramble;
-            metal::uint2 _e274 = nyq_job.seed;
-            NyqHalton _e275 = nyq_halton(_e268, _e271, _e274);
-            uint high_2 = ((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u);
-            uint2 loop_bound_41 = uint2(4294967295u);
-            bool loop_init_29 = true;
-            while(true) {
-                if (metal::all(loop_bound_41 == uint2(0u))) { break; }
-                loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-                if (!loop_init_29) {
-                    uint _e309 = k_3;
-                    k_3 = _e309 + 1u;
-                }
-                loop_init_29 = false;
-                uint _e287 = k_3;
-                if (_e287 < 8u) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e292 = k_3;
-                    metal::uint2 index_18 = metal::uint2(_e6.z, (_e292 >= 4u) ? high_2 : 0u);
-                    uint _e298 = k_3;
-                    uint _e302 = k_3;
-                    float _e306 = nyq_halton_sample(_e275, index_18, _e6.w + (_e302 & 3u), nyq_halton_bases, _buffer_sizes);
-                    nyq_values[out_5 + _e298] = as_type<uint>(_e306);
-                }
-            }
-            return;
-        }
-        case 20u: {
-            uint _e313 = nyq_job.lattice;
-            uint _e316 = nyq_job.spp;
-            uint _e319 = nyq_job.generator;
-            uint _e322 = nyq_job.dims;
-            uint _e325 = nyq_job.scramble;
-            metal::uint2 _e330 = nyq_job.seed;
-            NyqLattice _e331 = nyq_lattice(_e313, _e316, _e319, _e322, _e325 != 0u, _e330);
+            uint _e181 = nyq_job.dims;
+            uint _e184 = nyq_job.scramble;
+            metal::uint2 _e189 = nyq_job.seed;
+            NyqSobol _e190 = nyq_sobol(_e181, _e184 != 0u, _e189);
             uint2 loop_bound_42 = uint2(4294967295u);
             bool loop_init_30 = true;
             while(true) {
                 if (metal::all(loop_bound_42 == uint2(0u))) { break; }
                 loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
                 if (!loop_init_30) {
-                    uint _e348 = k_4;
-                    k_4 = _e348 + 1u;
+                    uint _e218 = k;
+                    k = _e218 + 1u;
                 }
                 loop_init_30 = false;
-                uint _e334 = k_4;
-                if (_e334 < 4u) {
+                uint _e193 = k;
+                if (_e193 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e338 = k_4;
-                    uint _e343 = k_4;
-                    float _e345 = nyq_lattice_sample(_e331, _e6.z, _e6.w + _e343);
-                    nyq_values[out_5 + _e338] = as_type<uint>(_e345);
+                    uint _e197 = k;
+                    uint _e202 = k;
+                    uint _e204 = nyq_sobol_sample_u32_(_e190, _e6.z, _e6.w + _e202, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_5 + _e197] = _e204;
+                    uint _e208 = k;
+                    uint _e213 = k;
+                    float _e215 = nyq_sobol_sample(_e190, _e6.z, _e6.w + _e213, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[(out_5 + 4u) + _e208] = as_type<uint>(_e215);
                 }
             }
-            metal::uint2 _e352 = nyq_lattice_fixed(_e331, _e6.z, _e6.w);
-            metal::uint2 _e353 = nyq_fixed_to_f64_bits(_e352);
-            metal::uint2 _e358 = nyq_lattice_fixed(_e331, _e6.z, _e6.w + 1u);
-            metal::uint2 _e359 = nyq_fixed_to_f64_bits(_e358);
-            nyq_values[out_5 + 4u] = _e353.x;
-            nyq_values[out_5 + 5u] = _e353.y;
-            nyq_values[out_5 + 6u] = _e359.x;
-            nyq_values[out_5 + 7u] = _e359.y;
             return;
         }
-        default: {
+        case 17u: {
+            uint _e222 = nyq_job.dims;
+            metal::uint2 _e225 = nyq_job.seed;
+            NyqOwenSobol _e226 = nyq_owen_sobol(_e222, _e225);
+            metal::float4 _e229 = nyq_owen_sobol_sample_4d(_e226, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
             uint2 loop_bound_43 = uint2(4294967295u);
             bool loop_init_31 = true;
             while(true) {
                 if (metal::all(loop_bound_43 == uint2(0u))) { break; }
                 loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
                 if (!loop_init_31) {
-                    uint _e391 = k_5;
-                    k_5 = _e391 + 1u;
+                    uint _e254 = k_1;
+                    k_1 = _e254 + 1u;
                 }
                 loop_init_31 = false;
-                uint _e382 = k_5;
-                if (_e382 < 8u) {
+                uint _e232 = k_1;
+                if (_e232 < 4u) {
                 } else {
                     break;
                 }
                 {
-                    uint _e386 = k_5;
-                    nyq_values[out_5 + _e386] = 4294967295u;
+                    uint _e236 = k_1;
+                    uint _e241 = k_1;
+                    uint _e243 = nyq_owen_sobol_sample_u32_(_e226, _e6.z, _e6.w + _e241, nyq_sobol_matrices, _buffer_sizes);
+                    nyq_values[out_5 + _e236] = _e243;
+                    uint _e247 = k_1;
+                    uint _e250 = k_1;
+                    nyq_values[(out_5 + 4u) + _e247] = as_type<uint>(_e229[_e250]);
+                }
+            }
+            return;
+        }
+        case 18u: {
+            uint _e258 = nyq_job.scramble;
+            metal::uint2 _e263 = nyq_job.seed;
+            NyqPmj02_ _e264 = nyq_pmj02_(_e258 != 0u, _e263);
+            uint2 loop_bound_44 = uint2(4294967295u);
+            bool loop_init_32 = true;
+            while(true) {
+                if (metal::all(loop_bound_44 == uint2(0u))) { break; }
+                loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+                if (!loop_init_32) {
+                    uint _e292 = k_2;
+                    k_2 = _e292 + 1u;
+                }
+                loop_init_32 = false;
+                uint _e267 = k_2;
+                if (_e267 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e271 = k_2;
+                    uint _e276 = k_2;
+                    uint _e278 = nyq_pmj02_sample_u32_(_e264, _e6.z, _e6.w + _e276);
+                    nyq_values[out_5 + _e271] = _e278;
+                    uint _e282 = k_2;
+                    uint _e287 = k_2;
+                    float _e289 = nyq_pmj02_sample(_e264, _e6.z, _e6.w + _e287);
+                    nyq_values[(out_5 + 4u) + _e282] = as_type<uint>(_e289);
+                }
+            }
+            return;
+        }
+        case 19u: {
+            uint _e296 = nyq_job.dims;
+            uint _e299 = nyq_job.scramble;
+            metal::uint2 _e302 = nyq_job.seed;
+            NyqHalton _e303 = nyq_halton(_e296, _e299, _e302);
+            uint high_2 = ((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u);
+            uint2 loop_bound_45 = uint2(4294967295u);
+            bool loop_init_33 = true;
+            while(true) {
+                if (metal::all(loop_bound_45 == uint2(0u))) { break; }
+                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                if (!loop_init_33) {
+                    uint _e337 = k_3;
+                    k_3 = _e337 + 1u;
+                }
+                loop_init_33 = false;
+                uint _e315 = k_3;
+                if (_e315 < 8u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e320 = k_3;
+                    metal::uint2 index_20 = metal::uint2(_e6.z, (_e320 >= 4u) ? high_2 : 0u);
+                    uint _e326 = k_3;
+                    uint _e330 = k_3;
+                    float _e334 = nyq_halton_sample(_e303, index_20, _e6.w + (_e330 & 3u), nyq_halton_bases, _buffer_sizes);
+                    nyq_values[out_5 + _e326] = as_type<uint>(_e334);
+                }
+            }
+            return;
+        }
+        case 20u: {
+            uint _e341 = nyq_job.lattice;
+            uint _e344 = nyq_job.spp;
+            uint _e347 = nyq_job.generator;
+            uint _e350 = nyq_job.dims;
+            uint _e353 = nyq_job.scramble;
+            metal::uint2 _e358 = nyq_job.seed;
+            NyqLattice _e359 = nyq_lattice(_e341, _e344, _e347, _e350, _e353 != 0u, _e358);
+            uint2 loop_bound_46 = uint2(4294967295u);
+            bool loop_init_34 = true;
+            while(true) {
+                if (metal::all(loop_bound_46 == uint2(0u))) { break; }
+                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                if (!loop_init_34) {
+                    uint _e376 = k_4;
+                    k_4 = _e376 + 1u;
+                }
+                loop_init_34 = false;
+                uint _e362 = k_4;
+                if (_e362 < 4u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e366 = k_4;
+                    uint _e371 = k_4;
+                    float _e373 = nyq_lattice_sample(_e359, _e6.z, _e6.w + _e371);
+                    nyq_values[out_5 + _e366] = as_type<uint>(_e373);
+                }
+            }
+            metal::uint2 _e380 = nyq_lattice_fixed(_e359, _e6.z, _e6.w);
+            metal::uint2 _e381 = nyq_fixed_to_f64_bits(_e380);
+            metal::uint2 _e386 = nyq_lattice_fixed(_e359, _e6.z, _e6.w + 1u);
+            metal::uint2 _e387 = nyq_fixed_to_f64_bits(_e386);
+            nyq_values[out_5 + 4u] = _e381.x;
+            nyq_values[out_5 + 5u] = _e381.y;
+            nyq_values[out_5 + 6u] = _e387.x;
+            nyq_values[out_5 + 7u] = _e387.y;
+            return;
+        }
+        default: {
+            uint2 loop_bound_47 = uint2(4294967295u);
+            bool loop_init_35 = true;
+            while(true) {
+                if (metal::all(loop_bound_47 == uint2(0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_35) {
+                    uint _e419 = k_5;
+                    k_5 = _e419 + 1u;
+                }
+                loop_init_35 = false;
+                uint _e410 = k_5;
+                if (_e410 < 8u) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e414 = k_5;
+                    nyq_values[out_5 + _e414] = 4294967295u;
                 }
             }
             return;

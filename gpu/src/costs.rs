@@ -135,7 +135,7 @@ pub fn sampler_table() -> Result<String, EmitError> {
 }
 
 /// Each sampler's label, WGSL prefix and the table it reads.
-const SAMPLERS: [(&str, &str, &str); 8] = [
+const SAMPLERS: [(&str, &str, &str); 11] = [
     (
         "owen-sobol",
         "owen_sobol",
@@ -160,6 +160,17 @@ const SAMPLERS: [(&str, &str, &str); 8] = [
     ("random", "random", "none"),
     ("stratified", "stratified", "none"),
     ("fibonacci, korobov, r2", "lattice", "none"),
+    (
+        "owen-sobol-bn",
+        "owen_sobol_bn",
+        "blue tile: 4 bytes per 4-D block; Sobol matrices (dimensions 0–3): 4 bytes per set index bit per value",
+    ),
+    ("pmj02-bn", "pmj02_bn", "blue tile: 4 bytes per 4-D block"),
+    (
+        "lattice-bn",
+        "lattice_bn",
+        "blue tile: 4 bytes per 4-D block",
+    ),
 ];
 
 #[cfg(test)]

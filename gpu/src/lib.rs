@@ -14,9 +14,10 @@
 //! assert!(glsl.starts_with(b"#version 450"));
 //! ```
 //!
-//! The samplers read two tables from storage buffers the engine binds: the Sobol generator
-//! matrices ([`sobol_matrices`], 128 KiB, at [`Bindings::sobol_matrices`]) and the Halton
-//! per-base constants ([`halton_bases`], 96 KiB, at [`Bindings::halton_bases`]). Everything
+//! The samplers read three tables from storage buffers the engine binds: the Sobol generator
+//! matrices ([`sobol_matrices`], 128 KiB, at [`Bindings::sobol_matrices`]), the Halton
+//! per-base constants ([`halton_bases`], 96 KiB, at [`Bindings::halton_bases`]) and the
+//! blue-noise samplers' tiles ([`blue_tiles`], 192 KiB, at [`Bindings::blue_tiles`]). Everything
 //! else is integer arithmetic on 32-bit words (64-bit words as `vec2<u32>` halves) and exact
 //! conversions; `docs/gpu.md` in the repository gives the float rules that keep every device's
 //! bits equal to the CPU's.
@@ -27,7 +28,7 @@ pub mod costs;
 
 /// The library and its `nyq_fill` kernel, in WGSL: the source every other language is emitted
 /// from. Bindings: group 0, binding 0 the Sobol matrices; bindings 1–3 the kernel's job,
-/// requests and values; binding 4 the Halton bases.
+/// requests and values; binding 4 the Halton bases; binding 5 the blue-noise tiles.
 ///
 /// ```
 /// assert!(nyquist_gpu::WGSL.contains("fn nyq_owen_sobol_camera_sample("));
@@ -52,6 +53,8 @@ pub const WGSL: &str = concat!(
     include_str!("../wgsl/pmj02.wgsl"),
     "\n",
     include_str!("../wgsl/halton.wgsl"),
+    "\n",
+    include_str!("../wgsl/screen_blue.wgsl"),
     "\n",
     include_str!("../wgsl/fill.wgsl"),
 );
@@ -163,10 +166,11 @@ impl std::error::Error for EmitError {}
 ///
 /// ```
 /// use nyquist_gpu::Bindings;
-/// let b = Bindings { group: 2, sobol_matrices: 7, halton_bases: 8 };
+/// let b = Bindings { group: 2, sobol_matrices: 7, halton_bases: 8, blue_tiles: 9 };
 /// let wgsl = b.apply(nyquist_gpu::WGSL);
 /// assert!(wgsl.contains("@group(2) @binding(7) var<storage, read> nyq_sobol_matrices"));
 /// assert!(wgsl.contains("@group(2) @binding(8) var<storage, read> nyq_halton_bases"));
+/// assert!(wgsl.contains("@group(2) @binding(9) var<storage, read> nyq_blue_tiles"));
 /// assert_eq!(Bindings::default().apply(nyquist_gpu::WGSL), nyquist_gpu::WGSL);
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -177,15 +181,19 @@ pub struct Bindings {
     pub sobol_matrices: u32,
     /// The binding of the Halton bases.
     pub halton_bases: u32,
+    /// The binding of the blue-noise samplers' tiles.
+    pub blue_tiles: u32,
 }
 
 impl Default for Bindings {
-    /// Group 0, the Sobol matrices at binding 0 and the Halton bases at 4, as in [`WGSL`].
+    /// Group 0, the Sobol matrices at binding 0, the Halton bases at 4 and the blue-noise
+    /// tiles at 5, as in [`WGSL`].
     fn default() -> Bindings {
         Bindings {
             group: 0,
             sobol_matrices: 0,
             halton_bases: 4,
+            blue_tiles: 5,
         }
     }
 }
@@ -211,6 +219,13 @@ impl Bindings {
                 ),
             )
             .replace(
+                "@group(0) @binding(5) var<storage, read> nyq_blue_tiles",
+                &format!(
+                    "@group({}) @binding({}) var<storage, read> nyq_blue_tiles",
+                    self.group, self.blue_tiles
+                ),
+            )
+            .replace(
                 "@group(0) @binding(",
                 &format!("@group({}) @binding(", self.group),
             )
@@ -232,6 +247,45 @@ pub fn sobol_matrices() -> Vec<u32> {
             out.push(nyquist::sequence::sobol_u32(1 << k, d));
         }
     }
+    out
+}
+
+/// The side of each blue-noise tile ([`blue_tiles`]).
+pub const BLUE_TILE_SIZE: u32 = nyquist::sampler::screen_blue::TILE_SIZE;
+
+/// The blue-noise families in the order of [`blue_tiles`]: each sampler's name (the core's
+/// `BlueFamily::NAME`).
+pub const BLUE_FAMILIES: [&str; 3] = [
+    <nyquist::sampler::screen_blue::OwenSobolBlue as nyquist::sampler::screen_blue::BlueFamily>::NAME,
+    <nyquist::sampler::screen_blue::Pmj02Blue as nyquist::sampler::screen_blue::BlueFamily>::NAME,
+    <nyquist::sampler::screen_blue::LatticeBlue as nyquist::sampler::screen_blue::BlueFamily>::NAME,
+];
+
+/// One family's tile as the shaders read it: entry `(x, y)` (`key << 8 | rank`) at
+/// `y · 128 + x`, from the core's `F::entry`.
+fn blue_tile<F: nyquist::sampler::screen_blue::BlueFamily>() -> impl Iterator<Item = u32> {
+    (0..BLUE_TILE_SIZE).flat_map(|y| (0..BLUE_TILE_SIZE).map(move |x| F::entry(x, y)))
+}
+
+/// The tiles the blue-noise samplers (`owen-sobol-bn`, `pmj02-bn`, `lattice-bn`) read:
+/// 3 × 128 × 128 words, family-major in the order of [`BLUE_FAMILIES`], each tile row-major:
+/// entry `(x, y)` of family `f` at `f · 16384 + y · 128 + x`, the core's
+/// `BlueFamily::entry(x, y)` (a 24-bit key and an 8-bit rank, `key << 8 | rank`). 192 KiB.
+/// Read from the core at run time: the tiles are the optimiser's output, so take them from the
+/// `nyquist` version the shaders are held to.
+///
+/// ```
+/// use nyquist::sampler::screen_blue::{BlueFamily, LatticeBlue};
+/// let t = nyquist_gpu::blue_tiles();
+/// assert_eq!(t.len(), 3 * 128 * 128);
+/// assert_eq!(t[2 * 16384 + 77 * 128 + 5], LatticeBlue::entry(5, 77));
+/// ```
+pub fn blue_tiles() -> Vec<u32> {
+    use nyquist::sampler::screen_blue::{LatticeBlue, OwenSobolBlue, Pmj02Blue};
+    let mut out = Vec::with_capacity(3 * (BLUE_TILE_SIZE * BLUE_TILE_SIZE) as usize);
+    out.extend(blue_tile::<OwenSobolBlue>());
+    out.extend(blue_tile::<Pmj02Blue>());
+    out.extend(blue_tile::<LatticeBlue>());
     out
 }
 
@@ -338,7 +392,7 @@ pub fn emit(language: Language) -> Result<Vec<u8>, EmitError> {
         Language::Wgsl => unreachable!("returned above"),
         Language::Glsl => {
             // Binding b of group 0 as `layout(binding = b)`: the numbers the other languages use.
-            let binding_map = (0..5)
+            let binding_map = (0..6)
                 .map(|b| {
                     let target = naga::ResourceBinding {
                         group: 0,
@@ -387,8 +441,8 @@ pub fn emit(language: Language) -> Result<Vec<u8>, EmitError> {
         }
         Language::Msl => {
             // Binding b of group 0 as [[buffer(b)]] (binding 3, the values, writable), and the
-            // buffer-size table naga needs for the runtime-sized arrays at [[buffer(5)]].
-            let resources = (0..5)
+            // buffer-size table naga needs for the runtime-sized arrays at [[buffer(6)]].
+            let resources = (0..6)
                 .map(|b| {
                     let target = naga::back::msl::BindTarget {
                         buffer: Some(b as u8),
@@ -407,7 +461,7 @@ pub fn emit(language: Language) -> Result<Vec<u8>, EmitError> {
             let entry = naga::back::msl::EntryPointResources {
                 resources,
                 immediates_buffer: None,
-                sizes_buffer: Some(5),
+                sizes_buffer: Some(6),
             };
             let options = naga::back::msl::Options {
                 lang_version: (2, 0),

@@ -26,6 +26,9 @@ const NYQ_FILL_STRATIFIED_SAMPLER: u32 = 4u;
 const NYQ_FILL_PMJ02_SAMPLER: u32 = 5u;
 const NYQ_FILL_SOBOL_SAMPLER: u32 = 6u;
 const NYQ_FILL_HALTON_SAMPLER: u32 = 7u;
+const NYQ_FILL_OWEN_SOBOL_BN_SAMPLER: u32 = 8u;
+const NYQ_FILL_PMJ02_BN_SAMPLER: u32 = 9u;
+const NYQ_FILL_LATTICE_BN_SAMPLER: u32 = 10u;
 const NYQ_FILL_SOBOL: u32 = 16u;
 const NYQ_FILL_OWEN_SOBOL: u32 = 17u;
 const NYQ_FILL_PMJ02: u32 = 18u;
@@ -145,6 +148,20 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             nyq_halton_sampler_start(&s, pixel, q.z, q.w);
             let one = nyq_halton_sampler_get_1d(&s);
             nyq_fill_values(out, one, nyq_halton_sampler_get_2d(&s));
+        }
+        case 8u: {
+            var s = nyq_owen_sobol_bn_sampler(nyq_job.seed, nyq_job.frame);
+            nyq_fill_camera(out, nyq_owen_sobol_bn_camera_sample(&s, pixel, q.z));
+            nyq_owen_sobol_bn_start(&s, pixel, q.z, q.w);
+            let one = nyq_owen_sobol_bn_get_1d(&s);
+            nyq_fill_values(out, one, nyq_owen_sobol_bn_get_2d(&s));
+        }
+        case 10u: {
+            var s = nyq_lattice_bn_sampler(nyq_job.seed, nyq_job.frame);
+            nyq_fill_camera(out, nyq_lattice_bn_camera_sample(&s, pixel, q.z));
+            nyq_lattice_bn_start(&s, pixel, q.z, q.w);
+            let one = nyq_lattice_bn_get_1d(&s);
+            nyq_fill_values(out, one, nyq_lattice_bn_get_2d(&s));
         }
         case 16u: {
             let s = nyq_sobol(nyq_job.dims, nyq_job.scramble != 0u, nyq_job.seed);

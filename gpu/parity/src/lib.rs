@@ -14,8 +14,9 @@ use std::borrow::Cow;
 
 use nyquist::lattice::{FibonacciLattice, Korobov, Kronecker};
 use nyquist::sampler::{
-    HaltonSampler, Jitter, LatticeSampler, OwenSobolSampler, Pmj02Sampler, RandomSampler, Sampler,
-    SobolSampler, StratifiedSampler, ZSobolSampler,
+    HaltonSampler, Jitter, LatticeBlueSampler, LatticeSampler, OwenSobolBlueSampler,
+    OwenSobolSampler, Pmj02BlueSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler,
+    StratifiedSampler, ZSobolSampler,
 };
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{Halton, OwenSobol, Pmj02, ScrambledHalton, Sequence, Sobol};
@@ -168,6 +169,19 @@ pub enum Job {
         /// The seed.
         seed: u64,
     },
+    /// A screen-space blue-noise sampler: `OwenSobolBlueSampler`, `Pmj02BlueSampler` or
+    /// `LatticeBlueSampler` (`family` 0, 1, 2: the order of `nyquist_gpu::BLUE_FAMILIES`)
+    /// `::new(spp, seed).with_frame(frame)`.
+    BlueNoiseSampler {
+        /// 0 owen-sobol-bn, 1 pmj02-bn, 2 lattice-bn.
+        family: u32,
+        /// Samples per pixel (reported only; every index is a new sample).
+        spp: u32,
+        /// The seed.
+        seed: u64,
+        /// The animation frame.
+        frame: u32,
+    },
     /// `Halton::new(dims)` for `Scramble::None`, else
     /// `ScrambledHalton::with_strategy(dims, scramble, seed)`: point `index` in words 0..3 and
     /// the 64-bit point [`halton_high_index`] in words 4..7.
@@ -222,7 +236,7 @@ fn scramble_code(s: Scramble) -> u32 {
 }
 
 /// The sampler names [`Job::by_name`] knows, in the order the examples print them.
-pub const SAMPLER_NAMES: [&str; 10] = [
+pub const SAMPLER_NAMES: [&str; 13] = [
     "owen-sobol",
     "zsobol",
     "sobol",
@@ -233,6 +247,9 @@ pub const SAMPLER_NAMES: [&str; 10] = [
     "fibonacci",
     "korobov",
     "r2",
+    "owen-sobol-bn",
+    "pmj02-bn",
+    "lattice-bn",
 ];
 
 impl Job {
@@ -281,7 +298,12 @@ impl Job {
             "fibonacci" => Job::LatticeSampler { set: 0, spp, seed },
             "korobov" => Job::LatticeSampler { set: 1, spp, seed },
             "r2" => Job::LatticeSampler { set: 2, spp, seed },
-            _ => return None,
+            _ => Job::BlueNoiseSampler {
+                family: nyquist_gpu::BLUE_FAMILIES.iter().position(|&f| f == name)? as u32,
+                spp,
+                seed,
+                frame: 0,
+            },
         })
     }
 
@@ -289,6 +311,10 @@ impl Job {
     pub fn name(&self) -> String {
         match self {
             Job::OwenSobolSampler { .. } => "owen-sobol sampler".into(),
+            Job::BlueNoiseSampler { family, frame, .. } => format!(
+                "{} sampler (frame {frame})",
+                nyquist_gpu::BLUE_FAMILIES[*family as usize]
+            ),
             Job::ZSobolSampler { scramble, .. } => format!("zsobol sampler ({})", scramble.name()),
             Job::RandomSampler { .. } => "random sampler".into(),
             Job::LatticeSampler { set, .. } => {
@@ -332,6 +358,18 @@ impl Job {
         match *self {
             Job::OwenSobolSampler { spp, seed, frame } => FillJob {
                 kind: 0,
+                spp,
+                frame,
+                seed: seed_words(seed),
+                ..FillJob::default()
+            },
+            Job::BlueNoiseSampler {
+                family,
+                spp,
+                seed,
+                frame,
+            } => FillJob {
+                kind: 8 + family,
                 spp,
                 frame,
                 seed: seed_words(seed),
@@ -500,6 +538,31 @@ impl Job {
                     .with_frame(frame);
                 sampler_answers(s, requests)
             }
+            Job::BlueNoiseSampler {
+                family,
+                spp,
+                seed,
+                frame,
+            } => match family {
+                0 => sampler_answers(
+                    OwenSobolBlueSampler::new(spp, seed)
+                        .expect("valid sampler")
+                        .with_frame(frame),
+                    requests,
+                ),
+                1 => sampler_answers(
+                    Pmj02BlueSampler::new(spp, seed)
+                        .expect("valid sampler")
+                        .with_frame(frame),
+                    requests,
+                ),
+                _ => sampler_answers(
+                    LatticeBlueSampler::new(spp, seed)
+                        .expect("valid sampler")
+                        .with_frame(frame),
+                    requests,
+                ),
+            },
             Job::ZSobolSampler {
                 resolution,
                 spp,
@@ -689,7 +752,8 @@ fn sampler_answers<S: Sampler>(mut s: S, requests: &[Request]) -> Vec<Answer> {
         .collect()
 }
 
-/// A device, its queue and the tables (the Sobol matrices, the Halton bases) uploaded once.
+/// A device, its queue and the tables (the Sobol matrices, the Halton bases, the blue-noise
+/// tiles) uploaded once.
 #[derive(Debug)]
 pub struct Gpu {
     device: wgpu::Device,
@@ -697,6 +761,7 @@ pub struct Gpu {
     info: wgpu::AdapterInfo,
     matrices: wgpu::Buffer,
     halton_bases: wgpu::Buffer,
+    blue_tiles: wgpu::Buffer,
 }
 
 /// The kernel built from one [`Source`].
@@ -738,7 +803,12 @@ impl Gpu {
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("nyquist parity"),
             required_features: wgpu::Features::empty(),
-            required_limits: wgpu::Limits::downlevel_defaults(),
+            // nyq_fill reads five storage buffers (the three tables, the requests and the
+            // values): one more than the downlevel defaults' four, within WebGPU's default 8.
+            required_limits: wgpu::Limits {
+                max_storage_buffers_per_shader_stage: 5,
+                ..wgpu::Limits::downlevel_defaults()
+            },
             ..Default::default()
         }))
         .map_err(|e| format!("adapter {} refused a device: {e}", info.name))?;
@@ -754,12 +824,14 @@ impl Gpu {
         };
         let matrices = table("nyq_sobol_matrices", &nyquist_gpu::sobol_matrices());
         let halton_bases = table("nyq_halton_bases", &nyquist_gpu::halton_bases());
+        let blue_tiles = table("nyq_blue_tiles", &nyquist_gpu::blue_tiles());
         Ok(Gpu {
             device,
             queue,
             info,
             matrices,
             halton_bases,
+            blue_tiles,
         })
     }
 
@@ -939,6 +1011,7 @@ impl Gpu {
             (2, &reqs),
             (3, &values),
             (4, &self.halton_bases),
+            (5, &self.blue_tiles),
         ]
         .map(|(binding, buffer)| wgpu::BindGroupEntry {
             binding,
@@ -1046,6 +1119,41 @@ pub fn restrict_to_the_shaders_domain(job: &Job, requests: &mut [Request]) {
         if padded {
             q[3] %= 1000;
         }
+    }
+}
+
+/// Requests at the blue-noise samplers' edges: pixels at the tile's seams (127, 128, 255,
+/// 256) and next to `u32::MAX`, where `pixel + offset` wraps; sample indices at the rank's
+/// reach (255, 256), at the PMJ(0,2) epochs' seams (65535, 65536, 131072) and next to
+/// `u32::MAX`; dimensions in blocks 0 to 3 and far past them (up to `u32::MAX`).
+pub fn blue_edge_requests() -> Vec<Request> {
+    let mut out = Vec::new();
+    let pixels = [
+        [0, 0],
+        [127, 128],
+        [255, 256],
+        [1 << 24, 3],
+        [u32::MAX, u32::MAX],
+        [u32::MAX - 100, 7],
+    ];
+    for [x, y] in pixels {
+        for index in [0, 1, 255, 256, 65_535, 65_536, 131_072, 1 << 31, u32::MAX] {
+            for dim in [0, 1, 3, 4, 6, 7, 8, 11, 12, 13, 1000, u32::MAX - 3] {
+                out.push([x, y, index, dim]);
+            }
+        }
+    }
+    out
+}
+
+/// `requests` with a third of them (every third) moved to pixels anywhere in `u32` and sample
+/// indices anywhere (the blue-noise samplers take any `u32` pixel: their film coordinates are
+/// rounded from the bits).
+pub fn spread_requests(requests: &mut [Request], seed: u64) {
+    for (i, q) in requests.iter_mut().enumerate().step_by(3) {
+        let w = nyquist::hash::wyrand(seed ^ 0x626c_7565, i as u64);
+        q[0] = w as u32;
+        q[1] = (w >> 32) as u32;
     }
 }
 

@@ -2,14 +2,16 @@
 //! emitted SPIR-V and GLSL through wgpu's front ends), against the core, bit for bit: 2¹⁷
 //! random requests (2²⁰ values) for the first job of each sampler and sequence, 2¹⁴ for each
 //! further job of it (other scrambles, image shapes, seeds), fewer per Halton job but 2²⁰
-//! values or more per Halton sampler and sequence ([`halton_jobs`]). Where no adapter can be had the test says
+//! values or more per Halton sampler and sequence ([`halton_jobs`]); the blue-noise samplers'
+//! requests also take pixels anywhere in `u32` and edge cases ([`blue_edge_requests`]). Where no adapter can be had the test says
 //! so and passes (`.ci/run` prints `SKIPPED` before it gets here). `NYQUIST_PARITY_JOBS=halton`
 //! runs only the jobs whose name contains the string.
 
 use nyquist::sampler::Jitter;
 use nyquist::scramble::Scramble;
 use nyquist_gpu_parity::{
-    Gpu, Job, Request, Source, first_mismatch, random_requests, restrict_to_the_shaders_domain,
+    Gpu, Job, Request, Source, blue_edge_requests, first_mismatch, random_requests,
+    restrict_to_the_shaders_domain, spread_requests,
 };
 
 fn jobs() -> Vec<Job> {
@@ -210,6 +212,23 @@ fn jobs() -> Vec<Job> {
         scramble: Scramble::PermuteDigits,
         seed: 13,
     });
+    // The blue-noise samplers: frame 0 and later frames (R2 offsets wrapping), seeds 0 and
+    // next to u64::MAX; every family's first job gets 2^17 requests.
+    for family in [0u32, 2] {
+        for (spp, seed, frame) in [
+            (16, 7, 0),
+            (1, u64::MAX - 1, 1),
+            (64, 0, 12_345),
+            (4, 0x0123_4567_89ab_cdef, u32::MAX),
+        ] {
+            jobs.push(Job::BlueNoiseSampler {
+                family,
+                spp,
+                seed,
+                frame,
+            });
+        }
+    }
     jobs
 }
 
@@ -359,6 +378,7 @@ fn every_job_matches_the_core_from_every_source() {
         let family = match &job {
             Job::LatticeSampler { set, .. } => format!("lattice sampler {set}"),
             Job::Lattice { lattice, .. } => format!("lattice {lattice}"),
+            Job::BlueNoiseSampler { family, .. } => format!("blue-noise sampler {family}"),
             other => format!("{:?}", std::mem::discriminant(other)),
         };
         let count = if seen.contains(&family) { n >> 3 } else { n };
@@ -373,6 +393,10 @@ fn every_job_matches_the_core_from_every_source() {
         let mut requests = random_requests(count, j as u64);
         if let Job::HaltonSampler { .. } | Job::Halton { .. } = job {
             requests.extend(halton_edge_requests(&job));
+        }
+        if let Job::BlueNoiseSampler { .. } = job {
+            spread_requests(&mut requests, j as u64);
+            requests.extend(blue_edge_requests());
         }
         restrict_to_the_shaders_domain(&job, &mut requests);
         let t = std::time::Instant::now();
