@@ -305,14 +305,14 @@ uint2 nyq_add64_(uint2 a_2, uint2 b_2)
     return uint2(low_1, ((a_2.y + b_2.y) + ((low_1 < a_2.x) ? 1u : 0u)));
 }
 
-uint2 nyq_shr64_(uint2 a_3, uint s_10)
+uint2 nyq_shr64_(uint2 a_3, uint s_11)
 {
-    return uint2(((a_3.x >> s_10) | (a_3.y << (32u - s_10))), (a_3.y >> s_10));
+    return uint2(((a_3.x >> s_11) | (a_3.y << (32u - s_11))), (a_3.y >> s_11));
 }
 
-uint2 nyq_shl64_(uint2 a_4, uint s_11)
+uint2 nyq_shl64_(uint2 a_4, uint s_12)
 {
-    return uint2((a_4.x << s_11), ((a_4.y << s_11) | (a_4.x >> (32u - s_11))));
+    return uint2((a_4.x << s_12), ((a_4.y << s_12) | (a_4.x >> (32u - s_12))));
 }
 
 uint2 nyq_u64_(uint x)
@@ -402,9 +402,9 @@ float nyq_rev_to_f32_(uint w_rev)
     return _e2;
 }
 
-uint nyq_shr(uint x_3, uint s_12)
+uint nyq_shr(uint x_3, uint s_13)
 {
-    return ((s_12 >= 32u) ? 0u : (x_3 >> (s_12 & 31u)));
+    return ((s_13 >= 32u) ? 0u : (x_3 >> (s_13 & 31u)));
 }
 
 float nyq_film_coordinate(uint pixel, float offset)
@@ -564,24 +564,24 @@ NyqSobol nyq_sobol(uint dims, bool scrambled, uint2 seed_5)
     return nyqsobol;
 }
 
-uint nyq_sobol_sample_u32_(NyqSobol s_13, uint index_2, uint dim_2)
+uint nyq_sobol_sample_u32_(NyqSobol s_14, uint index_2, uint dim_2)
 {
     uint shift = 0u;
 
-    uint d_8 = naga_mod(dim_2, s_13.dims);
-    if ((s_13.scrambled != 0u)) {
-        const uint2 _e11 = nyq_u64_(d_8);
-        const uint2 _e12 = nyq_hash2_(s_13.seed, _e11);
+    uint d_9 = naga_mod(dim_2, s_14.dims);
+    if ((s_14.scrambled != 0u)) {
+        const uint2 _e11 = nyq_u64_(d_9);
+        const uint2 _e12 = nyq_hash2_(s_14.seed, _e11);
         shift = _e12.y;
     }
-    const uint _e14 = nyq_sobol_u32_(index_2, d_8);
+    const uint _e14 = nyq_sobol_u32_(index_2, d_9);
     uint _e15 = shift;
     return (_e14 ^ _e15);
 }
 
-float nyq_sobol_sample(NyqSobol s_14, uint index_3, uint dim_3)
+float nyq_sobol_sample(NyqSobol s_15, uint index_3, uint dim_3)
 {
-    const uint _e3 = nyq_sobol_sample_u32_(s_14, index_3, dim_3);
+    const uint _e3 = nyq_sobol_sample_u32_(s_15, index_3, dim_3);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -911,7 +911,7 @@ uint4 ZeroValueuint4() {
     return (uint4)0;
 }
 
-uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_15, uint t_in)
+uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in)
 {
     uint low = 0u;
     uint t = (uint)0;
@@ -929,53 +929,53 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_15, uint t_in)
         }
         {
             uint _e8 = t;
-            uint k_16 = min(32u, firstbitlow(_e8));
+            uint k_18 = min(32u, firstbitlow(_e8));
             four = ZeroValueuint4();
             bool should_continue = false;
-            switch((k_16 >> 2u)) {
+            switch((k_18 >> 2u)) {
                 case 0u: {
-                    uint4 _e15 = s_15.inverse0_;
+                    uint4 _e15 = s_16.inverse0_;
                     four = _e15;
                     break;
                 }
                 case 1u: {
-                    uint4 _e17 = s_15.inverse1_;
+                    uint4 _e17 = s_16.inverse1_;
                     four = _e17;
                     break;
                 }
                 case 2u: {
-                    uint4 _e19 = s_15.inverse2_;
+                    uint4 _e19 = s_16.inverse2_;
                     four = _e19;
                     break;
                 }
                 case 3u: {
-                    uint4 _e21 = s_15.inverse3_;
+                    uint4 _e21 = s_16.inverse3_;
                     four = _e21;
                     break;
                 }
                 case 4u: {
-                    uint4 _e23 = s_15.inverse4_;
+                    uint4 _e23 = s_16.inverse4_;
                     four = _e23;
                     break;
                 }
                 case 5u: {
-                    uint4 _e25 = s_15.inverse5_;
+                    uint4 _e25 = s_16.inverse5_;
                     four = _e25;
                     break;
                 }
                 case 6u: {
-                    uint4 _e27 = s_15.inverse6_;
+                    uint4 _e27 = s_16.inverse6_;
                     four = _e27;
                     break;
                 }
                 default: {
-                    uint4 _e29 = s_15.inverse7_;
+                    uint4 _e29 = s_16.inverse7_;
                     four = _e29;
                     break;
                 }
             }
             uint _e30 = low;
-            uint _e34 = four[min(uint((k_16 & 3u)), 3u)];
+            uint _e34 = four[min(uint((k_18 & 3u)), 3u)];
             low = (_e30 ^ _e34);
             uint _e36 = t;
             uint _e37 = t;
@@ -986,10 +986,10 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_15, uint t_in)
     return _e41;
 }
 
-uint nyq_sobol_sampler_index(inout NyqSobolSampler s_16, uint2 pixel_1, uint sample_index)
+uint nyq_sobol_sampler_index(inout NyqSobolSampler s_17, uint2 pixel_1, uint sample_index)
 {
-    uint m_5 = s_16.m;
-    uint _e6 = s_16.spp;
+    uint m_5 = s_17.m;
+    uint _e6 = s_17.spp;
     uint si = naga_mod(sample_index, _e6);
     uint high = (((2u * m_5) >= 32u) ? 0u : (si << ((2u * m_5) & 31u)));
     uint mask_1 = ((m_5 == 0u) ? 0u : (4294967295u >> ((32u - m_5) & 31u)));
@@ -999,22 +999,22 @@ uint nyq_sobol_sampler_index(inout NyqSobolSampler s_16, uint2 pixel_1, uint sam
     const uint _e41 = nyq_sobol_u32_(high, 1u);
     const uint _e42 = nyq_top(_e41, m_5);
     uint have = (_e39 | (_e42 << (m_5 & 31u)));
-    const uint _e48 = nyq_sobol_sampler_invert(s_16, (want ^ have));
+    const uint _e48 = nyq_sobol_sampler_invert(s_17, (want ^ have));
     return (high | _e48);
 }
 
-float nyq_sobol_sampler_value(inout NyqSobolSampler s_17, uint dim_4)
+float nyq_sobol_sampler_value(inout NyqSobolSampler s_18, uint dim_4)
 {
     uint v_3 = (uint)0;
     bool local_1 = (bool)0;
     bool local_2 = (bool)0;
 
-    uint d_9 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
-    uint2 seed_34 = s_17.seed;
-    uint _e7 = s_17.index;
-    const uint _e8 = nyq_sobol_u32_(_e7, d_9);
+    uint d_10 = naga_mod(dim_4, NYQ_SOBOL_DIMS);
+    uint2 seed_35 = s_18.seed;
+    uint _e7 = s_18.index;
+    const uint _e8 = nyq_sobol_u32_(_e7, d_10);
     v_3 = _e8;
-    uint how_3 = s_17.scramble;
+    uint how_3 = s_18.scramble;
     if (!((how_3 == NYQ_SCRAMBLE_FAST_OWEN))) {
         local_1 = (how_3 == NYQ_SCRAMBLE_OWEN);
     } else {
@@ -1024,31 +1024,31 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_17, uint dim_4)
     if (_e20) {
         uint _e21 = v_3;
         uint _e22 = v_3;
-        uint _e24 = s_17.m;
-        if ((d_9 < 2u)) {
-            uint _e33 = s_17.m;
+        uint _e24 = s_18.m;
+        if ((d_10 < 2u)) {
+            uint _e33 = s_18.m;
             local_2 = (_e33 < 32u);
         } else {
             local_2 = false;
         }
         bool _e37 = local_2;
         uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
-        const uint2 _e39 = nyq_u64_(d_9);
-        const uint2 _e40 = nyq_hash2_(seed_34, _e39);
+        const uint2 _e39 = nyq_u64_(d_10);
+        const uint2 _e40 = nyq_hash2_(seed_35, _e39);
         const uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         const float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
-    if ((d_9 < 2u)) {
+    if ((d_10 < 2u)) {
         uint _e46 = v_3;
-        uint _e49 = s_17.shift[min(uint(d_9), 1u)];
-        uint _e52 = s_17.m;
+        uint _e49 = s_18.shift[min(uint(d_10), 1u)];
+        uint _e52 = s_18.m;
         v_3 = ((_e46 ^ _e49) << _e52);
     } else {
         if ((how_3 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
             uint _e56 = v_3;
-            const uint2 _e57 = nyq_u64_(d_9);
-            const uint2 _e58 = nyq_hash2_(seed_34, _e57);
+            const uint2 _e57 = nyq_u64_(d_10);
+            const uint2 _e58 = nyq_hash2_(seed_35, _e57);
             v_3 = (_e56 ^ _e58.x);
         }
     }
@@ -1057,37 +1057,37 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_17, uint dim_4)
     return _e62;
 }
 
-void nyq_sobol_sampler_start(inout NyqSobolSampler s_18, uint2 pixel_2, uint sample_index_1, uint dim_5)
+void nyq_sobol_sampler_start(inout NyqSobolSampler s_19, uint2 pixel_2, uint sample_index_1, uint dim_5)
 {
-    const uint _e5 = nyq_sobol_sampler_index(s_18, pixel_2, sample_index_1);
-    s_18.index = _e5;
-    s_18.dim = dim_5;
+    const uint _e5 = nyq_sobol_sampler_index(s_19, pixel_2, sample_index_1);
+    s_19.index = _e5;
+    s_19.dim = dim_5;
     return;
 }
 
-float nyq_sobol_sampler_get_1d(inout NyqSobolSampler s_19)
+float nyq_sobol_sampler_get_1d(inout NyqSobolSampler s_20)
 {
-    uint d_10 = s_19.dim;
-    s_19.dim = (d_10 + 1u);
-    const float _e6 = nyq_sobol_sampler_value(s_19, d_10);
+    uint d_11 = s_20.dim;
+    s_20.dim = (d_11 + 1u);
+    const float _e6 = nyq_sobol_sampler_value(s_20, d_11);
     return _e6;
 }
 
-float2 nyq_sobol_sampler_get_2d(inout NyqSobolSampler s_20)
+float2 nyq_sobol_sampler_get_2d(inout NyqSobolSampler s_21)
 {
-    uint d_11 = s_20.dim;
-    s_20.dim = (d_11 + 2u);
-    const float _e6 = nyq_sobol_sampler_value(s_20, d_11);
-    const float _e9 = nyq_sobol_sampler_value(s_20, (d_11 + 1u));
+    uint d_12 = s_21.dim;
+    s_21.dim = (d_12 + 2u);
+    const float _e6 = nyq_sobol_sampler_value(s_21, d_12);
+    const float _e9 = nyq_sobol_sampler_value(s_21, (d_12 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_sobol_sampler_get_pixel_2d(inout NyqSobolSampler s_21)
+float2 nyq_sobol_sampler_get_pixel_2d(inout NyqSobolSampler s_22)
 {
-    uint _e3 = s_21.dim;
-    s_21.dim = max(_e3, 2u);
-    const float _e7 = nyq_sobol_sampler_value(s_21, 0u);
-    const float _e9 = nyq_sobol_sampler_value(s_21, 1u);
+    uint _e3 = s_22.dim;
+    s_22.dim = max(_e3, 2u);
+    const float _e7 = nyq_sobol_sampler_value(s_22, 0u);
+    const float _e9 = nyq_sobol_sampler_value(s_22, 1u);
     return float2(_e7, _e9);
 }
 
@@ -1099,12 +1099,12 @@ NyqCameraSample ConstructNyqCameraSample(float2 arg0, float2 arg1, float arg2) {
     return ret;
 }
 
-NyqCameraSample nyq_sobol_sampler_camera_sample(inout NyqSobolSampler s_22, uint2 pixel_3, uint sample_index_2)
+NyqCameraSample nyq_sobol_sampler_camera_sample(inout NyqSobolSampler s_23, uint2 pixel_3, uint sample_index_2)
 {
-    nyq_sobol_sampler_start(s_22, pixel_3, sample_index_2, 0u);
-    const float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_22);
-    const float _e5 = nyq_sobol_sampler_get_1d(s_22);
-    const float2 _e6 = nyq_sobol_sampler_get_2d(s_22);
+    nyq_sobol_sampler_start(s_23, pixel_3, sample_index_2, 0u);
+    const float2 _e4 = nyq_sobol_sampler_get_pixel_2d(s_23);
+    const float _e5 = nyq_sobol_sampler_get_1d(s_23);
+    const float2 _e6 = nyq_sobol_sampler_get_2d(s_23);
     const float _e9 = nyq_film_coordinate(pixel_3.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_3.y, _e4.y);
     float2 film = float2(_e9, _e12);
@@ -1150,28 +1150,28 @@ NyqOwenSobol nyq_owen_sobol(uint dims_1, uint2 seed_7)
     return nyqowensobol;
 }
 
-uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_23, uint index_5, uint dim_8)
+uint nyq_owen_sobol_sample_u32_(NyqOwenSobol s_24, uint index_5, uint dim_8)
 {
-    uint d_12 = naga_mod(dim_8, s_23.dims);
-    const uint _e6 = nyq_shuffle_rev(index_5, s_23.shuffle_seed);
-    const uint _e8 = nyq_dim_seed(s_23.key, d_12);
-    const uint _e9 = nyq_owen_sobol_rev(_e6, d_12, _e8);
+    uint d_13 = naga_mod(dim_8, s_24.dims);
+    const uint _e6 = nyq_shuffle_rev(index_5, s_24.shuffle_seed);
+    const uint _e8 = nyq_dim_seed(s_24.key, d_13);
+    const uint _e9 = nyq_owen_sobol_rev(_e6, d_13, _e8);
     return reversebits(_e9);
 }
 
-float nyq_owen_sobol_sample(NyqOwenSobol s_24, uint index_6, uint dim_9)
+float nyq_owen_sobol_sample(NyqOwenSobol s_25, uint index_6, uint dim_9)
 {
-    const uint _e3 = nyq_owen_sobol_sample_u32_(s_24, index_6, dim_9);
+    const uint _e3 = nyq_owen_sobol_sample_u32_(s_25, index_6, dim_9);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
 
-float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_25, uint index_7, uint first_dim)
+float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_26, uint index_7, uint first_dim)
 {
     float4 out_1 = (float4)0;
     uint k_7 = 0u;
 
-    const uint _e4 = nyq_shuffle_rev(index_7, s_25.shuffle_seed);
+    const uint _e4 = nyq_shuffle_rev(index_7, s_26.shuffle_seed);
     uint2 loop_bound_11 = uint2(4294967295u, 4294967295u);
     bool loop_init_9 = true;
     while(true) {
@@ -1189,10 +1189,10 @@ float4 nyq_owen_sobol_sample_4d(NyqOwenSobol s_25, uint index_7, uint first_dim)
         }
         {
             uint _e11 = k_7;
-            uint d_13 = naga_mod((first_dim + _e11), s_25.dims);
+            uint d_14 = naga_mod((first_dim + _e11), s_26.dims);
             uint _e15 = k_7;
-            const uint _e18 = nyq_dim_seed(s_25.key, d_13);
-            const uint _e19 = nyq_owen_sobol_rev(_e4, d_13, _e18);
+            const uint _e18 = nyq_dim_seed(s_26.key, d_14);
+            const uint _e19 = nyq_owen_sobol_rev(_e4, d_14, _e18);
             const float _e20 = nyq_rev_to_f32_(_e19);
             out_1[min(uint(_e15), 3u)] = _e20;
         }
@@ -1217,64 +1217,64 @@ NyqOwenSobolSampler nyq_owen_sobol_sampler(uint2 seed_8, uint frame)
     return nyqowensobolsampler;
 }
 
-void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_26, uint2 pixel_4, uint sample_index_3, uint dim_10)
+void nyq_owen_sobol_start(inout NyqOwenSobolSampler s_27, uint2 pixel_4, uint sample_index_3, uint dim_10)
 {
     const uint2 _e5 = nyq_u64_(pixel_4.x);
     const uint2 _e7 = nyq_u64_(pixel_4.y);
-    uint _e9 = s_26.frame;
+    uint _e9 = s_27.frame;
     const uint2 _e10 = nyq_u64_(_e9);
-    uint2 _e12 = s_26.seed;
+    uint2 _e12 = s_27.seed;
     const uint2 _e13 = nyq_hash4_(_e5, _e7, _e10, _e12);
-    s_26.key = _e13.x;
+    s_27.key = _e13.x;
     const uint _e18 = nyq_mix32_(_e13.y);
     const uint _e19 = nyq_shuffle_rev(sample_index_3, _e18);
-    s_26.r = _e19;
-    s_26.dim = dim_10;
+    s_27.r = _e19;
+    s_27.dim = dim_10;
     return;
 }
 
-float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_27, uint dim_11)
+float nyq_owen_sobol_value(inout NyqOwenSobolSampler s_28, uint dim_11)
 {
-    uint _e3 = s_27.r;
-    uint _e5 = s_27.key;
+    uint _e3 = s_28.r;
+    uint _e5 = s_28.key;
     const uint _e6 = nyq_dim_seed(_e5, dim_11);
     const uint _e7 = nyq_owen_sobol_rev(_e3, dim_11, _e6);
     const float _e8 = nyq_rev_to_f32_(_e7);
     return _e8;
 }
 
-float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_28)
+float nyq_owen_sobol_get_1d(inout NyqOwenSobolSampler s_29)
 {
-    uint d_14 = s_28.dim;
-    s_28.dim = (d_14 + 1u);
-    const float _e6 = nyq_owen_sobol_value(s_28, d_14);
+    uint d_15 = s_29.dim;
+    s_29.dim = (d_15 + 1u);
+    const float _e6 = nyq_owen_sobol_value(s_29, d_15);
     return _e6;
 }
 
-float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_29)
+float2 nyq_owen_sobol_get_2d(inout NyqOwenSobolSampler s_30)
 {
-    uint d_15 = s_29.dim;
-    s_29.dim = (d_15 + 2u);
-    const float _e6 = nyq_owen_sobol_value(s_29, d_15);
-    const float _e9 = nyq_owen_sobol_value(s_29, (d_15 + 1u));
+    uint d_16 = s_30.dim;
+    s_30.dim = (d_16 + 2u);
+    const float _e6 = nyq_owen_sobol_value(s_30, d_16);
+    const float _e9 = nyq_owen_sobol_value(s_30, (d_16 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_30)
+float2 nyq_owen_sobol_get_pixel_2d(inout NyqOwenSobolSampler s_31)
 {
-    uint _e3 = s_30.dim;
-    s_30.dim = max(_e3, 2u);
-    const float _e7 = nyq_owen_sobol_value(s_30, 0u);
-    const float _e9 = nyq_owen_sobol_value(s_30, 1u);
+    uint _e3 = s_31.dim;
+    s_31.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_value(s_31, 0u);
+    const float _e9 = nyq_owen_sobol_value(s_31, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_31, uint2 pixel_5, uint sample_index_4)
+NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_32, uint2 pixel_5, uint sample_index_4)
 {
     float v_4[5] = (float[5])0;
     uint d_1 = 0u;
 
-    nyq_owen_sobol_start(s_31, pixel_5, sample_index_4, 0u);
+    nyq_owen_sobol_start(s_32, pixel_5, sample_index_4, 0u);
     uint2 loop_bound_12 = uint2(4294967295u, 4294967295u);
     bool loop_init_10 = true;
     while(true) {
@@ -1293,11 +1293,11 @@ NyqCameraSample nyq_owen_sobol_camera_sample(inout NyqOwenSobolSampler s_31, uin
         {
             uint _e10 = d_1;
             uint _e12 = d_1;
-            const float _e13 = nyq_owen_sobol_value(s_31, _e12);
+            const float _e13 = nyq_owen_sobol_value(s_32, _e12);
             v_4[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_31.dim = 5u;
+    s_32.dim = 5u;
     float _e21 = v_4[0];
     const float _e22 = nyq_film_coordinate(pixel_5.x, _e21);
     float _e25 = v_4[1];
@@ -1359,9 +1359,9 @@ uint nyq_spread(uint x_in_2)
     return ((_e25 | (_e26 << 1u)) & 1431655765u);
 }
 
-uint nyq_zsobol_morton(NyqZSobolSampler s_32, uint2 pixel_6)
+uint nyq_zsobol_morton(NyqZSobolSampler s_33, uint2 pixel_6)
 {
-    uint mask_2 = ((s_32.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_32.log2_res) & 31u)));
+    uint mask_2 = ((s_33.log2_res == 0u) ? 0u : (4294967295u >> ((32u - s_33.log2_res) & 31u)));
     const uint _e16 = nyq_spread((pixel_6.x & mask_2));
     const uint _e19 = nyq_spread((pixel_6.y & mask_2));
     return (_e16 | (_e19 << 1u));
@@ -1409,13 +1409,13 @@ uint2 nyq_zsobol_nested_word(uint2 w, uint higher_1, uint shift_3)
     return _e17;
 }
 
-uint nyq_zsobol_index(NyqZSobolSampler s_33, uint morton, uint2 key_3)
+uint nyq_zsobol_index(NyqZSobolSampler s_34, uint morton, uint2 key_3)
 {
     uint index_8 = 0u;
     uint i_3 = (uint)0;
     uint i_4 = (uint)0;
 
-    i_3 = s_33.digits;
+    i_3 = s_34.digits;
     uint2 loop_bound_13 = uint2(4294967295u, 4294967295u);
     bool loop_init_11 = true;
     while(true) {
@@ -1427,13 +1427,13 @@ uint nyq_zsobol_index(NyqZSobolSampler s_33, uint morton, uint2 key_3)
         }
         loop_init_11 = false;
         uint _e7 = i_3;
-        if ((_e7 > s_33.sample_digits)) {
+        if ((_e7 > s_34.sample_digits)) {
         } else {
             break;
         }
         {
             uint _e11 = i_3;
-            uint shift_5 = ((2u * (_e11 - 1u)) + s_33.odd);
+            uint shift_5 = ((2u * (_e11 - 1u)) + s_34.odd);
             uint digit_2 = ((morton >> shift_5) & 3u);
             uint _e20 = index_8;
             const uint _e23 = nyq_shr(morton, (shift_5 + 2u));
@@ -1442,10 +1442,10 @@ uint nyq_zsobol_index(NyqZSobolSampler s_33, uint morton, uint2 key_3)
             index_8 = (_e20 | _e25);
         }
     }
-    const uint _e31 = nyq_shr(morton, s_33.log2_spp);
+    const uint _e31 = nyq_shr(morton, s_34.log2_spp);
     const uint2 _e32 = nyq_zsobol_pixel_word(_e31, key_3);
-    uint sample_ = (morton & (s_33.spp - 1u));
-    i_4 = s_33.sample_digits;
+    uint sample_ = (morton & (s_34.spp - 1u));
+    i_4 = s_34.sample_digits;
     uint2 loop_bound_14 = uint2(4294967295u, 4294967295u);
     bool loop_init_12 = true;
     while(true) {
@@ -1463,7 +1463,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_33, uint morton, uint2 key_3)
         }
         {
             uint _e43 = i_4;
-            uint shift_6 = ((2u * (_e43 - 1u)) + s_33.odd);
+            uint shift_6 = ((2u * (_e43 - 1u)) + s_34.odd);
             uint digit_3 = ((sample_ >> shift_6) & 3u);
             const uint _e54 = nyq_shr(sample_, (shift_6 + 2u));
             const uint2 _e55 = nyq_zsobol_nested_word(_e32, _e54, shift_6);
@@ -1473,7 +1473,7 @@ uint nyq_zsobol_index(NyqZSobolSampler s_33, uint morton, uint2 key_3)
             index_8 = (_e58 | _e61);
         }
     }
-    if ((s_33.odd == 1u)) {
+    if ((s_34.odd == 1u)) {
         uint _e69 = index_8;
         const uint2 _e75 = nyq_zsobol_nested_word(_e32, (sample_ >> 1u), 0u);
         index_8 = (_e69 | ((sample_ & 1u) ^ (_e75.y >> 31u)));
@@ -1482,12 +1482,12 @@ uint nyq_zsobol_index(NyqZSobolSampler s_33, uint morton, uint2 key_3)
     return _e81;
 }
 
-uint nyq_zsobol_sequence_index(NyqZSobolSampler s_34, uint2 pixel_7, uint sample_index_5, uint dim_13)
+uint nyq_zsobol_sequence_index(NyqZSobolSampler s_35, uint2 pixel_7, uint sample_index_5, uint dim_13)
 {
-    const uint _e4 = nyq_zsobol_morton(s_34, pixel_7);
-    uint morton_1 = ((_e4 << s_34.log2_spp) | (sample_index_5 & (s_34.spp - 1u)));
-    const uint2 _e13 = nyq_zsobol_dim_key(s_34.seed, dim_13);
-    const uint _e14 = nyq_zsobol_index(s_34, morton_1, _e13);
+    const uint _e4 = nyq_zsobol_morton(s_35, pixel_7);
+    uint morton_1 = ((_e4 << s_35.log2_spp) | (sample_index_5 & (s_35.spp - 1u)));
+    const uint2 _e13 = nyq_zsobol_dim_key(s_35.seed, dim_13);
+    const uint _e14 = nyq_zsobol_index(s_35, morton_1, _e13);
     return _e14;
 }
 
@@ -1501,38 +1501,38 @@ uint nyq_zsobol_dim0_(uint index_9, uint seed_11, uint how_1)
     return _e8;
 }
 
-float nyq_zsobol_value_1d(inout NyqZSobolSampler s_35, uint dim_14)
+float nyq_zsobol_value_1d(inout NyqZSobolSampler s_36, uint dim_14)
 {
-    uint2 _e3 = s_35.seed;
-    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_14);
-    NyqZSobolSampler _e5 = s_35;
-    uint _e7 = s_35.morton;
-    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
-    uint _e11 = s_35.scramble;
-    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    const float _e13 = nyq_fraction_to_f32_(_e12);
-    return _e13;
-}
-
-float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_36, uint dim_15)
-{
-    uint y = (uint)0;
-
     uint2 _e3 = s_36.seed;
-    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_15);
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_14);
     NyqZSobolSampler _e5 = s_36;
     uint _e7 = s_36.morton;
     const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
     uint _e11 = s_36.scramble;
     const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
-    uint _e15 = s_36.scramble;
+    const float _e13 = nyq_fraction_to_f32_(_e12);
+    return _e13;
+}
+
+float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_37, uint dim_15)
+{
+    uint y = (uint)0;
+
+    uint2 _e3 = s_37.seed;
+    const uint2 _e4 = nyq_zsobol_dim_key(_e3, dim_15);
+    NyqZSobolSampler _e5 = s_37;
+    uint _e7 = s_37.morton;
+    const uint _e8 = nyq_zsobol_index(_e5, _e7, _e4);
+    uint _e11 = s_37.scramble;
+    const uint _e12 = nyq_zsobol_dim0_(_e8, _e4.x, _e11);
+    uint _e15 = s_37.scramble;
     if ((_e15 == NYQ_SCRAMBLE_FAST_OWEN)) {
         const uint _e19 = nyq_sobol_u32_(_e8, 1u);
         const uint _e22 = nyq_lk_hash(reversebits(_e19), _e4.y);
         y = reversebits(_e22);
     } else {
         const uint _e25 = nyq_sobol_u32_(_e8, 1u);
-        uint _e28 = s_36.scramble;
+        uint _e28 = s_37.scramble;
         const uint _e29 = nyq_scramble_u32_(_e25, _e4.y, _e28);
         y = _e29;
     }
@@ -1542,48 +1542,48 @@ float2 nyq_zsobol_value_2d(inout NyqZSobolSampler s_36, uint dim_15)
     return float2(_e30, _e32);
 }
 
-void nyq_zsobol_start(inout NyqZSobolSampler s_37, uint2 pixel_8, uint sample_index_6, uint dim_16)
+void nyq_zsobol_start(inout NyqZSobolSampler s_38, uint2 pixel_8, uint sample_index_6, uint dim_16)
 {
-    NyqZSobolSampler _e5 = s_37;
+    NyqZSobolSampler _e5 = s_38;
     const uint _e6 = nyq_zsobol_morton(_e5, pixel_8);
-    uint _e8 = s_37.log2_spp;
-    uint _e11 = s_37.spp;
-    s_37.morton = ((_e6 << _e8) | (sample_index_6 & (_e11 - 1u)));
-    s_37.dim = dim_16;
+    uint _e8 = s_38.log2_spp;
+    uint _e11 = s_38.spp;
+    s_38.morton = ((_e6 << _e8) | (sample_index_6 & (_e11 - 1u)));
+    s_38.dim = dim_16;
     return;
 }
 
-float nyq_zsobol_get_1d(inout NyqZSobolSampler s_38)
-{
-    uint d_16 = s_38.dim;
-    s_38.dim = (d_16 + 1u);
-    const float _e6 = nyq_zsobol_value_1d(s_38, d_16);
-    return _e6;
-}
-
-float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_39)
+float nyq_zsobol_get_1d(inout NyqZSobolSampler s_39)
 {
     uint d_17 = s_39.dim;
-    s_39.dim = (d_17 + 2u);
-    const float2 _e6 = nyq_zsobol_value_2d(s_39, d_17);
+    s_39.dim = (d_17 + 1u);
+    const float _e6 = nyq_zsobol_value_1d(s_39, d_17);
     return _e6;
 }
 
-float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_40)
+float2 nyq_zsobol_get_2d(inout NyqZSobolSampler s_40)
 {
-    uint _e3 = s_40.dim;
-    s_40.dim = max(_e3, 2u);
-    const float2 _e7 = nyq_zsobol_value_2d(s_40, 0u);
+    uint d_18 = s_40.dim;
+    s_40.dim = (d_18 + 2u);
+    const float2 _e6 = nyq_zsobol_value_2d(s_40, d_18);
+    return _e6;
+}
+
+float2 nyq_zsobol_get_pixel_2d(inout NyqZSobolSampler s_41)
+{
+    uint _e3 = s_41.dim;
+    s_41.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_zsobol_value_2d(s_41, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_41, uint2 pixel_9, uint sample_index_7)
+NyqCameraSample nyq_zsobol_camera_sample(inout NyqZSobolSampler s_42, uint2 pixel_9, uint sample_index_7)
 {
-    nyq_zsobol_start(s_41, pixel_9, sample_index_7, 0u);
-    const float2 _e5 = nyq_zsobol_value_2d(s_41, 0u);
-    const float _e7 = nyq_zsobol_value_1d(s_41, 2u);
-    const float2 _e9 = nyq_zsobol_value_2d(s_41, 3u);
-    s_41.dim = 5u;
+    nyq_zsobol_start(s_42, pixel_9, sample_index_7, 0u);
+    const float2 _e5 = nyq_zsobol_value_2d(s_42, 0u);
+    const float _e7 = nyq_zsobol_value_1d(s_42, 2u);
+    const float2 _e9 = nyq_zsobol_value_2d(s_42, 3u);
+    s_42.dim = 5u;
     const float _e14 = nyq_film_coordinate(pixel_9.x, _e5.x);
     const float _e17 = nyq_film_coordinate(pixel_9.y, _e5.y);
     float2 film_1 = float2(_e14, _e17);
@@ -1696,11 +1696,11 @@ NyqRandomSampler nyq_random_sampler(uint2 seed_12)
     return nyqrandomsampler;
 }
 
-NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_42, uint dim_17)
+NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_43, uint dim_17)
 {
     NyqPcg32_ g_2 = (NyqPcg32_)0;
 
-    uint2 _e3 = s_42.base;
+    uint2 _e3 = s_43.base;
     const NyqPcg32_ _e4 = nyq_pcg32_(_e3);
     g_2 = _e4;
     if ((dim_17 != 0u)) {
@@ -1711,80 +1711,80 @@ NyqPcg32_ nyq_random_at(inout NyqRandomSampler s_42, uint dim_17)
     return nyqpcg32_1;
 }
 
-void nyq_random_start(inout NyqRandomSampler s_43, uint2 pixel_10, uint sample_index_8, uint dim_18)
+void nyq_random_start(inout NyqRandomSampler s_44, uint2 pixel_10, uint sample_index_8, uint dim_18)
 {
-    uint2 _e5 = s_43.seed;
+    uint2 _e5 = s_44.seed;
     const uint2 _e7 = nyq_u64_(1918987876u);
     const uint2 _e8 = nyq_hash3_(pixel_10, _e5, _e7);
     uint2 golden_2 = uint2(2135587861u, 2654435769u);
     const uint2 _e13 = nyq_u64_(sample_index_8);
     const uint2 _e14 = nyq_mul64_(_e13, golden_2);
     const uint2 _e16 = nyq_mix64_((_e8 ^ _e14));
-    s_43.base = _e16;
-    s_43.dim = dim_18;
-    const NyqPcg32_ _e19 = nyq_random_at(s_43, dim_18);
-    s_43.rng = _e19;
+    s_44.base = _e16;
+    s_44.dim = dim_18;
+    const NyqPcg32_ _e19 = nyq_random_at(s_44, dim_18);
+    s_44.rng = _e19;
     return;
 }
 
-float nyq_random_get_1d(inout NyqRandomSampler s_44)
+float nyq_random_get_1d(inout NyqRandomSampler s_45)
 {
     NyqPcg32_ g_3 = (NyqPcg32_)0;
 
-    NyqPcg32_ _e2 = s_44.rng;
+    NyqPcg32_ _e2 = s_45.rng;
     g_3 = _e2;
     const uint _e4 = nyq_pcg32_next(g_3);
     const float _e5 = nyq_fraction_to_f32_(_e4);
     NyqPcg32_ _e7 = g_3;
-    s_44.rng = _e7;
-    uint _e9 = s_44.dim;
-    s_44.dim = (_e9 + 1u);
-    uint _e13 = s_44.dim;
+    s_45.rng = _e7;
+    uint _e9 = s_45.dim;
+    s_45.dim = (_e9 + 1u);
+    uint _e13 = s_45.dim;
     if ((_e13 == 0u)) {
-        const NyqPcg32_ _e18 = nyq_random_at(s_44, 0u);
-        s_44.rng = _e18;
+        const NyqPcg32_ _e18 = nyq_random_at(s_45, 0u);
+        s_45.rng = _e18;
     }
     return _e5;
 }
 
-float2 nyq_random_get_2d(inout NyqRandomSampler s_45)
+float2 nyq_random_get_2d(inout NyqRandomSampler s_46)
 {
-    const float _e1 = nyq_random_get_1d(s_45);
-    const float _e2 = nyq_random_get_1d(s_45);
+    const float _e1 = nyq_random_get_1d(s_46);
+    const float _e2 = nyq_random_get_1d(s_46);
     return float2(_e1, _e2);
 }
 
-float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_46)
+float2 nyq_random_get_pixel_2d(inout NyqRandomSampler s_47)
 {
     NyqPcg32_ g_4 = (NyqPcg32_)0;
 
-    uint _e2 = s_46.dim;
+    uint _e2 = s_47.dim;
     if ((_e2 == 0u)) {
-        const float2 _e5 = nyq_random_get_2d(s_46);
+        const float2 _e5 = nyq_random_get_2d(s_47);
         return _e5;
     }
-    const NyqPcg32_ _e7 = nyq_random_at(s_46, 0u);
+    const NyqPcg32_ _e7 = nyq_random_at(s_47, 0u);
     g_4 = _e7;
     const uint _e9 = nyq_pcg32_next(g_4);
     const float _e10 = nyq_fraction_to_f32_(_e9);
     const uint _e11 = nyq_pcg32_next(g_4);
     const float _e12 = nyq_fraction_to_f32_(_e11);
     float2 p_3 = float2(_e10, _e12);
-    uint _e15 = s_46.dim;
+    uint _e15 = s_47.dim;
     if ((_e15 < 2u)) {
-        s_46.dim = 2u;
+        s_47.dim = 2u;
         NyqPcg32_ _e21 = g_4;
-        s_46.rng = _e21;
+        s_47.rng = _e21;
     }
     return p_3;
 }
 
-NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_47, uint2 pixel_11, uint sample_index_9)
+NyqCameraSample nyq_random_camera_sample(inout NyqRandomSampler s_48, uint2 pixel_11, uint sample_index_9)
 {
-    nyq_random_start(s_47, pixel_11, sample_index_9, 0u);
-    const float2 _e4 = nyq_random_get_pixel_2d(s_47);
-    const float _e5 = nyq_random_get_1d(s_47);
-    const float2 _e6 = nyq_random_get_2d(s_47);
+    nyq_random_start(s_48, pixel_11, sample_index_9, 0u);
+    const float2 _e4 = nyq_random_get_pixel_2d(s_48);
+    const float _e5 = nyq_random_get_1d(s_48);
+    const float2 _e6 = nyq_random_get_2d(s_48);
     const float _e9 = nyq_film_coordinate(pixel_11.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_11.y, _e4.y);
     float2 film_2 = float2(_e9, _e12);
@@ -1912,41 +1912,41 @@ NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_2, uint g_5, uint2 se
     return nyqlatticesampler;
 }
 
-float nyq_lattice_value(inout NyqLatticeSampler s_48, uint dim_19)
+float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19)
 {
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_9 = s_48.n;
-    uint _e5 = s_48.index;
-    uint k_17 = naga_mod(_e5, n_9);
+    uint n_9 = s_49.n;
+    uint _e5 = s_49.index;
+    uint k_19 = naga_mod(_e5, n_9);
     uint component = naga_mod(dim_19, 2u);
-    uint _e11 = s_48.lattice;
+    uint _e11 = s_49.lattice;
     switch(_e11) {
         case 2u: {
-            const uint2 _e15 = nyq_u64_(k_17);
+            const uint2 _e15 = nyq_u64_(k_19);
             const uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA[min(uint(component), 1u)]);
             const uint2 _e19 = nyq_add64_(uint2(0u, 2147483648u), _e18);
             base = _e19;
             break;
         }
         default: {
-            uint _e21 = s_48.g;
+            uint _e21 = s_49.g;
             g_6 = _e21;
             if ((component == 0u)) {
                 g_6 = naga_mod(1u, n_9);
             }
             uint _e27 = g_6;
-            const uint2 _e28 = nyq_mul_wide(k_17, _e27);
+            const uint2 _e28 = nyq_mul_wide(k_19, _e27);
             const uint _e29 = nyq_mod64_(_e28, n_9);
             const uint2 _e30 = nyq_fixed_ratio(_e29, n_9);
             base = _e30;
             break;
         }
     }
-    uint2 _e32 = s_48.pixel;
+    uint2 _e32 = s_49.pixel;
     const uint2 _e35 = nyq_u64_(naga_div(dim_19, 2u));
-    uint2 _e37 = s_48.seed;
+    uint2 _e37 = s_49.seed;
     const uint2 _e38 = nyq_hash3_(_e32, _e35, _e37);
     uint2 _e39 = base;
     const uint2 _e40 = nyq_u64_(component);
@@ -1956,46 +1956,46 @@ float nyq_lattice_value(inout NyqLatticeSampler s_48, uint dim_19)
     return _e43;
 }
 
-void nyq_lattice_start(inout NyqLatticeSampler s_49, uint2 pixel_12, uint sample_index_10, uint dim_20)
+void nyq_lattice_start(inout NyqLatticeSampler s_50, uint2 pixel_12, uint sample_index_10, uint dim_20)
 {
-    s_49.pixel = pixel_12;
-    s_49.index = sample_index_10;
-    s_49.dim = dim_20;
+    s_50.pixel = pixel_12;
+    s_50.index = sample_index_10;
+    s_50.dim = dim_20;
     return;
 }
 
-float nyq_lattice_get_1d(inout NyqLatticeSampler s_50)
+float nyq_lattice_get_1d(inout NyqLatticeSampler s_51)
 {
-    uint d_18 = s_50.dim;
-    s_50.dim = (d_18 + 1u);
-    const float _e6 = nyq_lattice_value(s_50, d_18);
+    uint d_19 = s_51.dim;
+    s_51.dim = (d_19 + 1u);
+    const float _e6 = nyq_lattice_value(s_51, d_19);
     return _e6;
 }
 
-float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_51)
+float2 nyq_lattice_get_2d(inout NyqLatticeSampler s_52)
 {
-    uint d_19 = s_51.dim;
-    s_51.dim = (d_19 + 2u);
-    const float _e6 = nyq_lattice_value(s_51, d_19);
-    const float _e9 = nyq_lattice_value(s_51, (d_19 + 1u));
+    uint d_20 = s_52.dim;
+    s_52.dim = (d_20 + 2u);
+    const float _e6 = nyq_lattice_value(s_52, d_20);
+    const float _e9 = nyq_lattice_value(s_52, (d_20 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_52)
+float2 nyq_lattice_get_pixel_2d(inout NyqLatticeSampler s_53)
 {
-    uint _e3 = s_52.dim;
-    s_52.dim = max(_e3, 2u);
-    const float _e7 = nyq_lattice_value(s_52, 0u);
-    const float _e9 = nyq_lattice_value(s_52, 1u);
+    uint _e3 = s_53.dim;
+    s_53.dim = max(_e3, 2u);
+    const float _e7 = nyq_lattice_value(s_53, 0u);
+    const float _e9 = nyq_lattice_value(s_53, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_53, uint2 pixel_13, uint sample_index_11)
+NyqCameraSample nyq_lattice_camera_sample(inout NyqLatticeSampler s_54, uint2 pixel_13, uint sample_index_11)
 {
-    nyq_lattice_start(s_53, pixel_13, sample_index_11, 0u);
-    const float2 _e4 = nyq_lattice_get_pixel_2d(s_53);
-    const float _e5 = nyq_lattice_get_1d(s_53);
-    const float2 _e6 = nyq_lattice_get_2d(s_53);
+    nyq_lattice_start(s_54, pixel_13, sample_index_11, 0u);
+    const float2 _e4 = nyq_lattice_get_pixel_2d(s_54);
+    const float _e5 = nyq_lattice_get_1d(s_54);
+    const float2 _e6 = nyq_lattice_get_2d(s_54);
     const float _e9 = nyq_film_coordinate(pixel_13.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_13.y, _e4.y);
     float2 film_3 = float2(_e9, _e12);
@@ -2065,9 +2065,9 @@ uint2 nyq_lattice_fixed(NyqLattice l, uint index_10, uint dim_21)
     uint2 shift_4 = uint2(0u, 0u);
     uint g_8 = (uint)0;
 
-    uint d_20 = naga_mod(dim_21, l.dims);
+    uint d_21 = naga_mod(dim_21, l.dims);
     if ((l.rotated != 0u)) {
-        const uint2 _e13 = nyq_u64_(d_20);
+        const uint2 _e13 = nyq_u64_(d_21);
         const uint2 _e14 = nyq_hash2_(l.seed, _e13);
         shift_4 = _e14;
     }
@@ -2075,16 +2075,16 @@ uint2 nyq_lattice_fixed(NyqLattice l, uint index_10, uint dim_21)
         uint2 _e21 = shift_4;
         uint2 start = ((l.rotated != 0u) ? _e21 : uint2(0u, 2147483648u));
         const uint2 _e26 = nyq_u64_(index_10);
-        const uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA[min(uint((d_20 & 1u)), 1u)]);
+        const uint2 _e31 = nyq_mul64_(_e26, NYQ_R2_ALPHA[min(uint((d_21 & 1u)), 1u)]);
         const uint2 _e32 = nyq_add64_(start, _e31);
         return _e32;
     }
     g_8 = l.g;
-    if ((d_20 == 0u)) {
+    if ((d_21 == 0u)) {
         g_8 = naga_mod(1u, l.n);
     } else {
-        if ((d_20 > 1u)) {
-            const uint _e44 = nyq_pow_mod(l.g, d_20, l.n);
+        if ((d_21 > 1u)) {
+            const uint _e44 = nyq_pow_mod(l.g, d_21, l.n);
             g_8 = _e44;
         }
     }
@@ -2121,12 +2121,12 @@ uint2 nyq_fixed_to_f64_bits(uint2 x_11)
     }
     uint e_2 = ((_e2.y != 0u) ? (63u - (31u - firstbithigh(_e2.y))) : (31u - (31u - firstbithigh(_e2.x))));
     frac_ = _e2;
-    uint s_94 = (52u - e_2);
-    if ((s_94 >= 32u)) {
-        frac_ = uint2(0u, (_e2.x << (s_94 - 32u)));
+    uint s_101 = (52u - e_2);
+    if ((s_101 >= 32u)) {
+        frac_ = uint2(0u, (_e2.x << (s_101 - 32u)));
     } else {
-        if ((s_94 > 0u)) {
-            const uint2 _e41 = nyq_shl64_(_e2, s_94);
+        if ((s_101 > 0u)) {
+            const uint2 _e41 = nyq_shl64_(_e2, s_101);
             frac_ = _e41;
         }
     }
@@ -2247,20 +2247,20 @@ uint3 nyq_mul64x32_(uint2 r_9, uint k_8)
     return uint3(_e3.x, _e9.x, _e9.y);
 }
 
-uint nyq_nibble(uint2 t_1, uint s_54)
+uint nyq_nibble(uint2 t_1, uint s_55)
 {
-    return ((((s_54 >= 32u) ? t_1.y : t_1.x) >> (s_54 & 31u)) & 15u);
+    return ((((s_55 >= 32u) ? t_1.y : t_1.x) >> (s_55 & 31u)) & 15u);
 }
 
-uint2 nyq_shl64_any(uint2 x_14, uint s_55)
+uint2 nyq_shl64_any(uint2 x_14, uint s_56)
 {
-    if ((s_55 == 0u)) {
+    if ((s_56 == 0u)) {
         return x_14;
     }
-    if ((s_55 >= 32u)) {
-        return uint2(0u, (x_14.x << (s_55 - 32u)));
+    if ((s_56 >= 32u)) {
+        return uint2(0u, (x_14.x << (s_56 - 32u)));
     }
-    const uint2 _e12 = nyq_shl64_(x_14, s_55);
+    const uint2 _e12 = nyq_shl64_(x_14, s_56);
     return _e12;
 }
 
@@ -2466,27 +2466,27 @@ uint nyq_stratified_dim_key(uint2 pixel_key, uint dim_23)
     return (_e6.x ^ _e6.y);
 }
 
-uint nyq_stratified_stratum(inout NyqStratifiedSampler s_56, uint dim_24)
+uint nyq_stratified_stratum(inout NyqStratifiedSampler s_57, uint dim_24)
 {
     if ((dim_24 == 0u)) {
-        uint _e5 = s_56.index;
-        uint _e7 = s_56.spp;
+        uint _e5 = s_57.index;
+        uint _e7 = s_57.spp;
         return naga_mod(_e5, _e7);
     }
-    uint _e10 = s_56.spp;
-    uint2 _e12 = s_56.pixel_key;
+    uint _e10 = s_57.spp;
+    uint2 _e12 = s_57.pixel_key;
     const uint _e13 = nyq_stratified_dim_key(_e12, dim_24);
     const NyqPermutation _e14 = nyq_permutation(_e10, _e13);
-    uint _e16 = s_56.index;
+    uint _e16 = s_57.index;
     const uint _e17 = nyq_permutation_apply(_e14, _e16);
     return _e17;
 }
 
-float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_57, uint dim_25)
+float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_58, uint dim_25)
 {
     bool local_11 = (bool)0;
 
-    uint _e3 = s_57.jitter;
+    uint _e3 = s_58.jitter;
     if ((_e3 != NYQ_JITTERED)) {
         return float2(0.5, 0.5);
     }
@@ -2497,7 +2497,7 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_57, uint dim_25)
     }
     bool _e17 = local_11;
     if (_e17) {
-        uint2 _e19 = s_57.sample_key;
+        uint2 _e19 = s_58.sample_key;
         const uint2 _e24 = nyq_mul64_(uint2(2u, 0u), NYQ_JITTER_STEP);
         const uint2 _e26 = nyq_mix64_((_e19 ^ _e24));
         if ((dim_25 == 2u)) {
@@ -2506,7 +2506,7 @@ float2 nyq_stratified_jitters(inout NyqStratifiedSampler s_57, uint dim_25)
         const uint2 _e40 = nyq_shr64_(_e26, 22u);
         return float2((float((_e40.x & 2097151u)) * 4.7683716e-7), (float(((_e26.x >> 1u) & 2097151u)) * 4.7683716e-7));
     }
-    uint2 _e55 = s_57.sample_key;
+    uint2 _e55 = s_58.sample_key;
     const uint2 _e56 = nyq_u64_(dim_25);
     const uint2 _e58 = nyq_mul64_(_e56, NYQ_JITTER_STEP);
     const uint2 _e60 = nyq_mix64_((_e55 ^ _e58));
@@ -2520,74 +2520,74 @@ float nyq_below_one(float x_16)
     return min(x_16, asfloat(1065353215u));
 }
 
-float2 nyq_stratified_cell(inout NyqStratifiedSampler s_58, uint st, float2 j)
+float2 nyq_stratified_cell(inout NyqStratifiedSampler s_59, uint st, float2 j)
 {
-    uint _e4 = s_58.xs;
+    uint _e4 = s_59.xs;
     uint cx = naga_mod(st, _e4);
-    uint _e7 = s_58.xs;
+    uint _e7 = s_59.xs;
     uint cy = naga_div(st, _e7);
     const float _e9 = nyq_u32_to_f32_(cx);
-    float _e14 = s_58.inv.x;
+    float _e14 = s_59.inv.x;
     const float _e16 = nyq_below_one(((_e9 + j.x) * _e14));
     const float _e17 = nyq_u32_to_f32_(cy);
-    float _e22 = s_58.inv.y;
+    float _e22 = s_59.inv.y;
     const float _e24 = nyq_below_one(((_e17 + j.y) * _e22));
     return float2(_e16, _e24);
 }
 
-void nyq_stratified_start(inout NyqStratifiedSampler s_59, uint2 pixel_14, uint sample_index_12, uint dim_26)
+void nyq_stratified_start(inout NyqStratifiedSampler s_60, uint2 pixel_14, uint sample_index_12, uint dim_26)
 {
-    uint2 _e6 = s_59.seed;
+    uint2 _e6 = s_60.seed;
     const uint2 _e8 = nyq_u64_(1937011297u);
     const uint2 _e9 = nyq_hash3_(pixel_14, _e6, _e8);
-    s_59.pixel_key = _e9;
-    s_59.index = sample_index_12;
-    uint2 _e13 = s_59.pixel_key;
+    s_60.pixel_key = _e9;
+    s_60.index = sample_index_12;
+    uint2 _e13 = s_60.pixel_key;
     const uint2 _e14 = nyq_u64_(sample_index_12);
     const uint2 _e16 = nyq_mul64_(_e14, NYQ_DIM_STEP);
-    s_59.sample_key = (_e13 ^ _e16);
-    s_59.dim = dim_26;
+    s_60.sample_key = (_e13 ^ _e16);
+    s_60.dim = dim_26;
     return;
 }
 
-float nyq_stratified_get_1d(inout NyqStratifiedSampler s_60)
+float nyq_stratified_get_1d(inout NyqStratifiedSampler s_61)
 {
-    uint d_21 = s_60.dim;
-    s_60.dim = (d_21 + 1u);
-    const uint _e6 = nyq_stratified_stratum(s_60, d_21);
+    uint d_22 = s_61.dim;
+    s_61.dim = (d_22 + 1u);
+    const uint _e6 = nyq_stratified_stratum(s_61, d_22);
     const float _e7 = nyq_u32_to_f32_(_e6);
-    const float2 _e8 = nyq_stratified_jitters(s_60, d_21);
-    float _e13 = s_60.inv.z;
+    const float2 _e8 = nyq_stratified_jitters(s_61, d_22);
+    float _e13 = s_61.inv.z;
     const float _e15 = nyq_below_one(((_e7 + _e8.x) * _e13));
     return _e15;
 }
 
-float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_61)
+float2 nyq_stratified_get_2d(inout NyqStratifiedSampler s_62)
 {
-    uint d_22 = s_61.dim;
-    s_61.dim = (d_22 + 2u);
-    const uint _e6 = nyq_stratified_stratum(s_61, d_22);
-    const float2 _e7 = nyq_stratified_jitters(s_61, d_22);
-    const float2 _e8 = nyq_stratified_cell(s_61, _e6, _e7);
+    uint d_23 = s_62.dim;
+    s_62.dim = (d_23 + 2u);
+    const uint _e6 = nyq_stratified_stratum(s_62, d_23);
+    const float2 _e7 = nyq_stratified_jitters(s_62, d_23);
+    const float2 _e8 = nyq_stratified_cell(s_62, _e6, _e7);
     return _e8;
 }
 
-float2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_62)
+float2 nyq_stratified_get_pixel_2d(inout NyqStratifiedSampler s_63)
 {
-    uint _e3 = s_62.dim;
-    s_62.dim = max(_e3, 2u);
-    const uint _e7 = nyq_stratified_stratum(s_62, 0u);
-    const float2 _e9 = nyq_stratified_jitters(s_62, 0u);
-    const float2 _e10 = nyq_stratified_cell(s_62, _e7, _e9);
+    uint _e3 = s_63.dim;
+    s_63.dim = max(_e3, 2u);
+    const uint _e7 = nyq_stratified_stratum(s_63, 0u);
+    const float2 _e9 = nyq_stratified_jitters(s_63, 0u);
+    const float2 _e10 = nyq_stratified_cell(s_63, _e7, _e9);
     return _e10;
 }
 
-NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_63, uint2 pixel_15, uint sample_index_13)
+NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_64, uint2 pixel_15, uint sample_index_13)
 {
-    nyq_stratified_start(s_63, pixel_15, sample_index_13, 0u);
-    const float2 _e4 = nyq_stratified_get_pixel_2d(s_63);
-    const float _e5 = nyq_stratified_get_1d(s_63);
-    const float2 _e6 = nyq_stratified_get_2d(s_63);
+    nyq_stratified_start(s_64, pixel_15, sample_index_13, 0u);
+    const float2 _e4 = nyq_stratified_get_pixel_2d(s_64);
+    const float _e5 = nyq_stratified_get_1d(s_64);
+    const float2 _e6 = nyq_stratified_get_2d(s_64);
     const float _e9 = nyq_film_coordinate(pixel_15.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_15.y, _e4.y);
     float2 film_4 = float2(_e9, _e12);
@@ -2652,9 +2652,9 @@ uint nyq_pmj02_point(uint2 seed_18, uint index_12, uint dim_27)
             known = (_e36 | low_2);
             uint _e38 = flips;
             flips = (_e38 ^ swap);
-            uint c_8 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
+            uint c_9 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
             uint _e51 = p_1;
-            p_1 = ((_e51 - (1u << level_1)) ^ c_8);
+            p_1 = ((_e51 - (1u << level_1)) ^ c_9);
         }
     }
     const uint2 _e57 = nyq_wyrand(seed_18, 0u);
@@ -2680,20 +2680,20 @@ NyqPmj02_ nyq_pmj02_(bool scrambled_1, uint2 seed_19)
     return nyqpmj02_;
 }
 
-uint nyq_pmj02_sample_u32_(NyqPmj02_ s_64, uint index_13, uint dim_28)
+uint nyq_pmj02_sample_u32_(NyqPmj02_ s_65, uint index_13, uint dim_28)
 {
-    uint d_23 = (dim_28 & 1u);
-    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_23);
-    if ((s_64.scrambled == 0u)) {
+    uint d_24 = (dim_28 & 1u);
+    const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_24);
+    if ((s_65.scrambled == 0u)) {
         return _e6;
     }
-    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_64.keys[min(uint(d_23), 1u)]);
+    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_65.keys[min(uint(d_24), 1u)]);
     return reversebits(_e13);
 }
 
-float nyq_pmj02_sample(NyqPmj02_ s_65, uint index_14, uint dim_29)
+float nyq_pmj02_sample(NyqPmj02_ s_66, uint index_14, uint dim_29)
 {
-    const uint _e3 = nyq_pmj02_sample_u32_(s_65, index_14, dim_29);
+    const uint _e3 = nyq_pmj02_sample_u32_(s_66, index_14, dim_29);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2718,9 +2718,9 @@ uint nyq_reverse16_(uint m_1)
     return (reversebits((m_1 & 65535u)) >> 16u);
 }
 
-uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_66, uint2 request)
+uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_67, uint2 request)
 {
-    uint2 _e3 = s_66.pixel_key;
+    uint2 _e3 = s_67.pixel_key;
     const uint2 _e7 = nyq_mul64_(request, uint2(2135587861u, 2654435769u));
     const uint2 _e9 = nyq_mix64_((_e3 ^ _e7));
     const uint2 _e14 = nyq_mix64_((_e9 ^ uint2(1781543545u, 28781u)));
@@ -2738,75 +2738,75 @@ float2 nyq_pmj02_keyed_point(uint3 k_10, uint i_10)
     return float2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_67, uint3 k_11)
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_68, uint3 k_11)
 {
-    uint _e3 = s_67.index_rev;
+    uint _e3 = s_68.index_rev;
     const uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return (_e5 >> 16u);
 }
 
-void nyq_pmj02_start(inout NyqPmj02Sampler s_68, uint2 pixel_16, uint sample_index_14, uint dim_30)
+void nyq_pmj02_start(inout NyqPmj02Sampler s_69, uint2 pixel_16, uint sample_index_14, uint dim_30)
 {
-    uint2 _e6 = s_68.seed;
+    uint2 _e6 = s_69.seed;
     const uint2 _e10 = nyq_hash3_(pixel_16, _e6, uint2(1835675698u, 112u));
-    s_68.pixel_key = _e10;
+    s_69.pixel_key = _e10;
     const uint _e12 = nyq_reverse16_(sample_index_14);
-    s_68.index_rev = (_e12 << 16u);
-    s_68.dim = dim_30;
+    s_69.index_rev = (_e12 << 16u);
+    s_69.dim = dim_30;
     return;
 }
 
-float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_69)
+float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_70)
 {
-    uint d_24 = s_69.dim;
-    s_69.dim = (d_24 + 1u);
-    const uint2 _e6 = nyq_u64_(d_24);
+    uint d_25 = s_70.dim;
+    s_70.dim = (d_25 + 1u);
+    const uint2 _e6 = nyq_u64_(d_25);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
     const uint2 _e12 = nyq_add64_(_e8, uint2(1u, 0u));
-    const uint3 _e13 = nyq_pmj02_keys(s_69, _e12);
-    const uint _e14 = nyq_pmj02_row(s_69, _e13);
+    const uint3 _e13 = nyq_pmj02_keys(s_70, _e12);
+    const uint _e14 = nyq_pmj02_row(s_70, _e13);
     const uint _e15 = nyq_reverse16_(_e14);
     const uint _e17 = nyq_lk_hash(_e15, _e13.y);
     const float _e18 = nyq_rev_to_f32_(_e17);
     return _e18;
 }
 
-float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_70)
+float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_71)
 {
-    uint d_25 = s_70.dim;
-    s_70.dim = (d_25 + 2u);
-    const uint2 _e6 = nyq_u64_(d_25);
+    uint d_26 = s_71.dim;
+    s_71.dim = (d_26 + 2u);
+    const uint2 _e6 = nyq_u64_(d_26);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
-    const uint3 _e9 = nyq_pmj02_keys(s_70, _e8);
-    if ((d_25 == 0u)) {
-        uint _e13 = s_70.index_rev;
+    const uint3 _e9 = nyq_pmj02_keys(s_71, _e8);
+    if ((d_26 == 0u)) {
+        uint _e13 = s_71.index_rev;
         const uint _e16 = nyq_reverse16_((_e13 >> 16u));
         const float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    const uint _e18 = nyq_pmj02_row(s_70, _e9);
+    const uint _e18 = nyq_pmj02_row(s_71, _e9);
     const uint _e19 = nyq_reverse16_(_e18);
     const float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
-float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_71)
+float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_72)
 {
-    uint _e3 = s_71.dim;
-    s_71.dim = max(_e3, 2u);
-    const uint3 _e9 = nyq_pmj02_keys(s_71, uint2(0u, 0u));
-    uint _e11 = s_71.index_rev;
+    uint _e3 = s_72.dim;
+    s_72.dim = max(_e3, 2u);
+    const uint3 _e9 = nyq_pmj02_keys(s_72, uint2(0u, 0u));
+    uint _e11 = s_72.index_rev;
     const uint _e14 = nyq_reverse16_((_e11 >> 16u));
     const float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
-NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_72, uint2 pixel_17, uint sample_index_15)
+NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_73, uint2 pixel_17, uint sample_index_15)
 {
-    nyq_pmj02_start(s_72, pixel_17, sample_index_15, 0u);
-    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_72);
-    const float _e5 = nyq_pmj02_get_1d(s_72);
-    const float2 _e6 = nyq_pmj02_get_2d(s_72);
+    nyq_pmj02_start(s_73, pixel_17, sample_index_15, 0u);
+    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_73);
+    const float _e5 = nyq_pmj02_get_1d(s_73);
+    const float2 _e6 = nyq_pmj02_get_2d(s_73);
     const float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
     float2 film_5 = float2(_e9, _e12);
@@ -2838,24 +2838,24 @@ uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
 
 uint4 nyq_add128_(uint4 a_10, uint4 b_9)
 {
-    uint4 s_95 = (a_10 + b_9);
-    uint4 c_9 = ((s_95 < a_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_2 = (s_95.y + c_9.x);
-    uint k1_ = (c_9.y + ((t1_2 < c_9.x) ? 1u : 0u));
-    uint t2_1 = (s_95.z + k1_);
-    uint k2_ = (c_9.z + ((t2_1 < k1_) ? 1u : 0u));
-    return uint4(s_95.x, t1_2, t2_1, (s_95.w + k2_));
+    uint4 s_102 = (a_10 + b_9);
+    uint4 c_10 = ((s_102 < a_10) ? (1u).xxxx : (0u).xxxx);
+    uint t1_2 = (s_102.y + c_10.x);
+    uint k1_ = (c_10.y + ((t1_2 < c_10.x) ? 1u : 0u));
+    uint t2_1 = (s_102.z + k1_);
+    uint k2_ = (c_10.z + ((t2_1 < k1_) ? 1u : 0u));
+    return uint4(s_102.x, t1_2, t2_1, (s_102.w + k2_));
 }
 
 uint4 nyq_sub128_(uint4 a_11, uint4 b_10)
 {
-    uint4 s_96 = (a_11 - b_10);
+    uint4 s_103 = (a_11 - b_10);
     uint4 o = ((a_11 < b_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_3 = (s_96.y - o.x);
-    uint k1_1 = (o.y + ((s_96.y < o.x) ? 1u : 0u));
-    uint t2_2 = (s_96.z - k1_1);
-    uint k2_1 = (o.z + ((s_96.z < k1_1) ? 1u : 0u));
-    return uint4(s_96.x, t1_3, t2_2, (s_96.w - k2_1));
+    uint t1_3 = (s_103.y - o.x);
+    uint k1_1 = (o.y + ((s_103.y < o.x) ? 1u : 0u));
+    uint t2_2 = (s_103.z - k1_1);
+    uint k2_1 = (o.z + ((s_103.z < k1_1) ? 1u : 0u));
+    return uint4(s_103.x, t1_3, t2_2, (s_103.w - k2_1));
 }
 
 bool nyq_lt128_(uint4 a_12, uint4 b_11)
@@ -2908,13 +2908,13 @@ uint nyq_clz128_(uint4 x_20)
     return (96u + (31u - firstbithigh(x_20.x)));
 }
 
-uint4 nyq_shl128_(uint4 x_21, uint s_73)
+uint4 nyq_shl128_(uint4 x_21, uint s_74)
 {
     uint4 v_5 = (uint4)0;
     uint k_13 = (uint)0;
 
     v_5 = x_21;
-    k_13 = s_73;
+    k_13 = s_74;
     uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
@@ -3109,7 +3109,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     const uint _e16 = nyq_clz128_(num_1);
     const uint _e17 = nyq_clz128_(den_1);
-    uint s_97 = (_e16 - _e17);
+    uint s_104 = (_e16 - _e17);
     uint steps = (twice_1 ? 55u : 26u);
     if ((den_1.z == 0u)) {
         local_23 = (den_1.w == 0u);
@@ -3124,8 +3124,8 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     bool _e44 = local_24;
     if (_e44) {
-        uint2 d_26 = den_1.xy;
-        const uint4 _e46 = nyq_shl128_(num_1, s_97);
+        uint2 d_27 = den_1.xy;
+        const uint4 _e46 = nyq_shl128_(num_1, s_104);
         r_11 = _e46.xy;
         uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
         bool loop_init_17 = true;
@@ -3148,11 +3148,11 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
                 uint _e62 = q_2.x;
                 q_2 = uint2((_e54 << 1u), ((_e58 << 1u) | (_e62 >> 31u)));
                 uint _e68 = r_11.y;
-                if (!((_e68 > d_26.y))) {
+                if (!((_e68 > d_27.y))) {
                     uint _e75 = r_11.y;
-                    if ((_e75 == d_26.y)) {
+                    if ((_e75 == d_27.y)) {
                         uint _e81 = r_11.x;
-                        local_26 = (_e81 >= d_26.x);
+                        local_26 = (_e81 >= d_27.x);
                     } else {
                         local_26 = false;
                     }
@@ -3164,7 +3164,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
                 bool _e87 = local_25;
                 if (_e87) {
                     uint2 _e88 = r_11;
-                    const uint2 _e89 = nyq_sub64_(_e88, d_26);
+                    const uint2 _e89 = nyq_sub64_(_e88, d_27);
                     r_11 = _e89;
                     uint _e91 = q_2.x;
                     q_2.x = (_e91 | 1u);
@@ -3185,7 +3185,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
         bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        const uint4 _e124 = nyq_shl128_(num_1, s_97);
+        const uint4 _e124 = nyq_shl128_(num_1, s_104);
         r_12 = _e124;
         uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
         bool loop_init_18 = true;
@@ -3231,7 +3231,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     uint2 _e193 = q_2;
     bool _e203 = sticky_1;
-    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_97)))), (_e203 ? 1u : 0u), tw, 0u);
+    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_104)))), (_e203 ? 1u : 0u), tw, 0u);
     return nyqrounding_1;
 }
 
@@ -3247,12 +3247,12 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14)
     uint2 rev = uint2(0u, 0u);
     uint i_13 = 0u;
 
-    uint b_17 = asuint(nyq_halton_bases.Load(t_3*4));
-    uint c_10 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
-    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_10, 4u))*4));
-    uint places = ((_e19 >> (8u * naga_mod(c_10, 4u))) & 255u);
-    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_10))*4));
-    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_10))*4));
+    uint b_18 = asuint(nyq_halton_bases.Load(t_3*4));
+    uint c_11 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
+    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_11, 4u))*4));
+    uint places = ((_e19 >> (8u * naga_mod(c_11, 4u))) & 255u);
+    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_11))*4));
+    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_11))*4));
     x_22 = a_14;
     uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
     bool loop_init_19 = true;
@@ -3271,11 +3271,11 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14)
         }
         {
             uint _e52 = x_22;
-            uint q_5 = naga_div(_e52, b_17);
+            uint q_5 = naga_div(_e52, b_18);
             uint2 _e54 = rev;
-            const uint3 _e55 = nyq_mul64x32_(_e54, b_17);
+            const uint3 _e55 = nyq_mul64x32_(_e54, b_18);
             uint _e57 = x_22;
-            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_17)), 0u));
+            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_18)), 0u));
             rev = _e62;
             x_22 = q_5;
         }
@@ -3307,7 +3307,7 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
     uint rev_1 = (uint)0;
     uint i_14 = (uint)0;
 
-    uint b_18 = asuint(nyq_halton_bases.Load(t_4*4));
+    uint b_19 = asuint(nyq_halton_bases.Load(t_4*4));
     uint chunk = asuint(nyq_halton_bases.Load((t_4 + 4u)*4));
     uint run = asuint(nyq_halton_bases.Load((t_4 + 5u)*4));
     x_23 = a_15;
@@ -3351,10 +3351,10 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = naga_div(_e49, b_18);
+                    uint q_6 = naga_div(_e49, b_19);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = ((_e51 * b_18) + (_e53 - (q_6 * b_18)));
+                    rev_1 = ((_e51 * b_19) + (_e53 - (q_6 * b_19)));
                     c_3 = q_6;
                 }
             }
@@ -3389,12 +3389,12 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     bool local_32 = (bool)0;
     bool local_33 = (bool)0;
 
-    uint b_19 = asuint(nyq_halton_bases.Load(t_5*4));
+    uint b_20 = asuint(nyq_halton_bases.Load(t_5*4));
     uint chunk_1 = asuint(nyq_halton_bases.Load((t_5 + 4u)*4));
     uint run_1 = asuint(nyq_halton_bases.Load((t_5 + 5u)*4));
-    const uint2 _e16 = nyq_u64_(b_19);
+    const uint2 _e16 = nyq_u64_(b_20);
     const uint2 _e17 = nyq_hash2_(seed_21, _e16);
-    const NyqPermutation _e21 = nyq_permutation(b_19, (_e17.x ^ _e17.y));
+    const NyqPermutation _e21 = nyq_permutation(b_20, (_e17.x ^ _e17.y));
     x_24 = a_16;
     uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
     while(true) {
@@ -3455,13 +3455,13 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = naga_div(_e77, b_19);
+                    uint q_7 = naga_div(_e77, b_20);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_19)));
-                    part = ((_e79 * b_19) + _e84);
+                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_20)));
+                    part = ((_e79 * b_20) + _e84);
                     uint _e86 = scale;
-                    scale = (_e86 * b_19);
+                    scale = (_e86 * b_20);
                     c_4 = q_7;
                 }
             }
@@ -3479,11 +3479,11 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     }
     const uint _e104 = nyq_permutation_apply(_e21, 0u);
     uint4 _e105 = num_3;
-    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_19 - 1u));
+    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_20 - 1u));
     const uint4 _e113 = nyq_add128_(_e108, uint4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     uint4 _e114 = den_3;
-    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_19 - 1u));
+    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_20 - 1u));
     den_3 = _e117;
     uint _e119 = den_3.w;
     if ((_e119 == 0u)) {
@@ -3502,7 +3502,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     bool small = local_33;
     uint4 _e138 = num_3;
     uint4 _e139 = den_3;
-    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_19 - 1u)) ? 1u : 0u));
+    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_20 - 1u)) ? 1u : 0u));
     return nyqfraction_1;
 }
 
@@ -3522,7 +3522,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
     bool local_34 = (bool)0;
     uint out_2 = (uint)0;
 
-    uint b_20 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
+    uint b_21 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
     const uint2 _e9 = nyq_u64_(d_4);
     const uint2 _e13 = nyq_hash3_(seed_22, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
     rest = a_17;
@@ -3548,7 +3548,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
             bool _e51 = local_34;
             if (_e51) {
                 uint2 _e52 = rest;
-                const uint3 _e53 = nyq_divmod64_small(_e52, b_20);
+                const uint3 _e53 = nyq_divmod64_small(_e52, b_21);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
@@ -3565,38 +3565,38 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
             uint2 _e69 = next;
             rest = _e69;
             uint2 _e70 = pow_;
-            const uint2 _e71 = nyq_u64_(b_20);
+            const uint2 _e71 = nyq_u64_(b_21);
             const uint2 _e72 = nyq_mul64_(_e70, _e71);
             pow_ = _e72;
             uint _e73 = level;
             level = (_e73 + 1u);
             out_2 = ZeroValueuint();
             if (affine) {
-                const uint3 _e78 = nyq_mul64x32_(_e68, b_20);
-                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_20 - 1u));
+                const uint3 _e78 = nyq_mul64x32_(_e68, b_21);
+                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_21 - 1u));
                 uint m_7 = (1u + _e83.z);
                 uint _e86 = digit_1;
-                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_20);
+                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_21);
             } else {
-                if ((b_20 <= 16u)) {
-                    const uint2 _e93 = nyq_packed_table(b_20, _e68);
+                if ((b_21 <= 16u)) {
+                    const uint2 _e93 = nyq_packed_table(b_21, _e68);
                     uint _e95 = digit_1;
                     const uint _e97 = nyq_nibble(_e93, (4u * _e95));
                     out_2 = _e97;
                 } else {
-                    const NyqPermutation _e101 = nyq_permutation(b_20, (_e68.x ^ _e68.y));
+                    const NyqPermutation _e101 = nyq_permutation(b_21, (_e68.x ^ _e68.y));
                     uint _e102 = digit_1;
                     const uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             uint2 _e104 = num_4;
-            const uint3 _e105 = nyq_mul64x32_(_e104, b_20);
+            const uint3 _e105 = nyq_mul64x32_(_e104, b_21);
             uint _e107 = out_2;
             const uint2 _e110 = nyq_add64_(_e105.xy, uint2(_e107, 0u));
             num_4 = _e110;
             uint2 _e111 = den_4;
-            const uint3 _e112 = nyq_mul64x32_(_e111, b_20);
+            const uint3 _e112 = nyq_mul64x32_(_e111, b_21);
             den_4 = _e112.xy;
         }
     }
@@ -3615,10 +3615,10 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint
     NyqFraction f = (NyqFraction)0;
     uint bits_2 = (uint)0;
 
-    uint d_27 = naga_mod(dim_32, NYQ_PRIME_COUNT);
-    uint t_8 = (NYQ_HALTON_WORDS * d_27);
+    uint d_28 = naga_mod(dim_32, NYQ_PRIME_COUNT);
+    uint t_8 = (NYQ_HALTON_WORDS * d_28);
     if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-        local_35 = (d_27 == 0u);
+        local_35 = (d_28 == 0u);
     } else {
         local_35 = false;
     }
@@ -3653,7 +3653,7 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint
                     const NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23);
                     f = _e60;
                 } else {
-                    const NyqFraction _e63 = nyq_nested_fraction(d_27, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    const NyqFraction _e63 = nyq_nested_fraction(d_28, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
                     f = _e63;
                 }
             }
@@ -3903,14 +3903,14 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
     return _e34;
 }
 
-uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_74, uint2 pixel_18, uint sample_index_16)
+uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_75, uint2 pixel_18, uint sample_index_16)
 {
     uint offset_1 = (uint)0;
 
-    uint stride = s_74.stride;
-    uint2 scales_1 = s_74.scales;
-    uint2 exponents = s_74.exponents;
-    uint2 basis_1 = s_74.basis;
+    uint stride = s_75.stride;
+    uint2 scales_1 = s_75.scales;
+    uint2 exponents = s_75.exponents;
+    uint2 basis_1 = s_75.basis;
     const uint _e16 = nyq_inverse_radical_inverse(2u, naga_mod(pixel_18.x, scales_1.x), exponents.x);
     offset_1 = naga_mod((_e16 * basis_1.x), stride);
     const uint _e26 = nyq_inverse_radical_inverse(3u, naga_mod(pixel_18.y, scales_1.y), exponents.y);
@@ -3923,50 +3923,50 @@ uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_74, uint2 pixel_18, uint
     return _e35;
 }
 
-float nyq_halton_sampler_value(inout NyqHaltonSampler s_75, uint dim_38)
+float nyq_halton_sampler_value(inout NyqHaltonSampler s_76, uint dim_38)
 {
     uint2 a_24 = (uint2)0;
 
-    uint d_28 = naga_mod(dim_38, NYQ_PRIME_COUNT);
-    uint2 index_19 = s_75.index;
+    uint d_29 = naga_mod(dim_38, NYQ_PRIME_COUNT);
+    uint2 index_19 = s_76.index;
     a_24 = index_19;
-    if ((d_28 == 0u)) {
-        uint e_6 = s_75.exponents.x;
+    if ((d_29 == 0u)) {
+        uint e_6 = s_76.exponents.x;
         if ((e_6 != 0u)) {
             const uint2 _e14 = nyq_shr64_(index_19, e_6);
             a_24 = _e14;
         }
     } else {
-        if ((d_28 == 1u)) {
-            uint _e19 = s_75.scales.y;
+        if ((d_29 == 1u)) {
+            uint _e19 = s_76.scales.y;
             const uint3 _e20 = nyq_divmod64_small(index_19, _e19);
             a_24 = _e20.xy;
         }
     }
     uint2 _e22 = a_24;
-    uint2 _e24 = s_75.seed;
-    uint _e26 = s_75.scramble;
-    const float _e27 = nyq_radical_inverse_scrambled(d_28, _e22, _e24, _e26);
+    uint2 _e24 = s_76.seed;
+    uint _e26 = s_76.scramble;
+    const float _e27 = nyq_radical_inverse_scrambled(d_29, _e22, _e24, _e26);
     return _e27;
 }
 
-void nyq_halton_sampler_start(inout NyqHaltonSampler s_76, uint2 pixel_19, uint sample_index_17, uint dim_39)
+void nyq_halton_sampler_start(inout NyqHaltonSampler s_77, uint2 pixel_19, uint sample_index_17, uint dim_39)
 {
-    const uint2 _e5 = nyq_halton_sampler_index(s_76, pixel_19, sample_index_17);
-    s_76.index = _e5;
-    s_76.dim = dim_39;
+    const uint2 _e5 = nyq_halton_sampler_index(s_77, pixel_19, sample_index_17);
+    s_77.index = _e5;
+    s_77.dim = dim_39;
     return;
 }
 
-float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_77)
+float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_78)
 {
-    uint d_29 = s_77.dim;
-    s_77.dim = (d_29 + 1u);
-    const float _e6 = nyq_halton_sampler_value(s_77, d_29);
+    uint d_30 = s_78.dim;
+    s_78.dim = (d_30 + 1u);
+    const float _e6 = nyq_halton_sampler_value(s_78, d_30);
     return _e6;
 }
 
-float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_78, uint dim_40)
+float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_79, uint dim_40)
 {
     float2 v_6 = float2(0.0, 0.0);
     uint k_15 = 0u;
@@ -3989,7 +3989,7 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_78, uint dim_40)
         {
             uint _e11 = k_15;
             uint _e13 = k_15;
-            const float _e15 = nyq_halton_sampler_value(s_78, (dim_40 + _e13));
+            const float _e15 = nyq_halton_sampler_value(s_79, (dim_40 + _e13));
             v_6[min(uint(_e11), 1u)] = _e15;
         }
     }
@@ -3997,29 +3997,29 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_78, uint dim_40)
     return _e19;
 }
 
-float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_79)
+float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_80)
 {
-    uint d_30 = s_79.dim;
-    s_79.dim = (d_30 + 2u);
-    const float2 _e6 = nyq_halton_sampler_pair(s_79, d_30);
+    uint d_31 = s_80.dim;
+    s_80.dim = (d_31 + 2u);
+    const float2 _e6 = nyq_halton_sampler_pair(s_80, d_31);
     return _e6;
 }
 
-float2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_80)
+float2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_81)
 {
-    uint _e3 = s_80.dim;
-    s_80.dim = max(_e3, 2u);
-    const float2 _e7 = nyq_halton_sampler_pair(s_80, 0u);
+    uint _e3 = s_81.dim;
+    s_81.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_halton_sampler_pair(s_81, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_81, uint2 pixel_20, uint sample_index_18)
+NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_82, uint2 pixel_20, uint sample_index_18)
 {
     float4 v_7 = float4(0.0, 0.0, 0.0, 0.0);
     float lens_y = 0.0;
     uint d_5 = 0u;
 
-    nyq_halton_sampler_start(s_81, pixel_20, sample_index_18, 5u);
+    nyq_halton_sampler_start(s_82, pixel_20, sample_index_18, 5u);
     uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
     bool loop_init_25 = true;
     while(true) {
@@ -4037,7 +4037,7 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_81, ui
         }
         {
             uint _e17 = d_5;
-            const float _e18 = nyq_halton_sampler_value(s_81, _e17);
+            const float _e18 = nyq_halton_sampler_value(s_82, _e17);
             uint _e19 = d_5;
             if ((_e19 < 4u)) {
                 uint _e22 = d_5;
@@ -4148,13 +4148,13 @@ NyqBlueSampler nyq_owen_sobol_bn_sampler(uint2 seed_32, uint frame_4)
     return nyqbluesampler_1;
 }
 
-void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_82, uint2 pixel_24, uint sample_index_19, uint dim_41)
+void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_83, uint2 pixel_24, uint sample_index_19, uint dim_41)
 {
     uint b_15 = 0u;
 
-    s_82.pixel = pixel_24;
-    s_82.index = sample_index_19;
-    s_82.dim = dim_41;
+    s_83.pixel = pixel_24;
+    s_83.index = sample_index_19;
+    s_83.dim = dim_41;
     uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
     bool loop_init_26 = true;
     while(true) {
@@ -4171,74 +4171,74 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_82, uint2 pixel_24, uint sam
             break;
         }
         {
-            uint2 _e14 = s_82.seed;
-            uint _e16 = s_82.frame;
+            uint2 _e14 = s_83.seed;
+            uint _e16 = s_83.frame;
             uint _e17 = b_15;
             const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e14, _e16, pixel_24, _e17);
             const uint _e19 = nyq_owen_sobol_bn_key(_e18);
             uint _e21 = b_15;
-            s_82.key[min(uint(_e21), 1u)] = _e19;
+            s_83.key[min(uint(_e21), 1u)] = _e19;
             uint _e24 = b_15;
             const uint _e26 = nyq_owen_sobol_bn_rev(_e18, _e19, sample_index_19);
-            s_82.prepared[min(uint(_e24), 1u)] = _e26;
+            s_83.prepared[min(uint(_e24), 1u)] = _e26;
         }
     }
     return;
 }
 
-float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_83, uint dim_42)
+float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_84, uint dim_42)
 {
-    uint b_21 = naga_div(dim_42, 4u);
-    uint c_11 = naga_mod(dim_42, 4u);
-    if ((b_21 < 2u)) {
-        uint _e10 = s_83.key[min(uint(b_21), 1u)];
-        uint _e13 = s_83.prepared[min(uint(b_21), 1u)];
-        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_11);
+    uint b_22 = naga_div(dim_42, 4u);
+    uint c_12 = naga_mod(dim_42, 4u);
+    if ((b_22 < 2u)) {
+        uint _e10 = s_84.key[min(uint(b_22), 1u)];
+        uint _e13 = s_84.prepared[min(uint(b_22), 1u)];
+        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_12);
         return _e14;
     }
-    uint2 _e17 = s_83.seed;
-    uint _e19 = s_83.frame;
-    uint2 _e21 = s_83.pixel;
-    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_21);
+    uint2 _e17 = s_84.seed;
+    uint _e19 = s_84.frame;
+    uint2 _e21 = s_84.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_22);
     const uint _e23 = nyq_owen_sobol_bn_key(_e22);
-    uint _e25 = s_83.index;
+    uint _e25 = s_84.index;
     const uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_11);
+    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_12);
     return _e27;
 }
 
-float nyq_owen_sobol_bn_get_1d(inout NyqBlueSampler s_84)
+float nyq_owen_sobol_bn_get_1d(inout NyqBlueSampler s_85)
 {
-    uint d_31 = s_84.dim;
-    s_84.dim = (d_31 + 1u);
-    const float _e6 = nyq_owen_sobol_bn_value(s_84, d_31);
+    uint d_32 = s_85.dim;
+    s_85.dim = (d_32 + 1u);
+    const float _e6 = nyq_owen_sobol_bn_value(s_85, d_32);
     return _e6;
 }
 
-float2 nyq_owen_sobol_bn_get_2d(inout NyqBlueSampler s_85)
+float2 nyq_owen_sobol_bn_get_2d(inout NyqBlueSampler s_86)
 {
-    uint d_32 = s_85.dim;
-    s_85.dim = (d_32 + 2u);
-    const float _e6 = nyq_owen_sobol_bn_value(s_85, d_32);
-    const float _e9 = nyq_owen_sobol_bn_value(s_85, (d_32 + 1u));
+    uint d_33 = s_86.dim;
+    s_86.dim = (d_33 + 2u);
+    const float _e6 = nyq_owen_sobol_bn_value(s_86, d_33);
+    const float _e9 = nyq_owen_sobol_bn_value(s_86, (d_33 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_owen_sobol_bn_get_pixel_2d(inout NyqBlueSampler s_86)
+float2 nyq_owen_sobol_bn_get_pixel_2d(inout NyqBlueSampler s_87)
 {
-    uint _e3 = s_86.dim;
-    s_86.dim = max(_e3, 2u);
-    const float _e7 = nyq_owen_sobol_bn_value(s_86, 0u);
-    const float _e9 = nyq_owen_sobol_bn_value(s_86, 1u);
+    uint _e3 = s_87.dim;
+    s_87.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_bn_value(s_87, 0u);
+    const float _e9 = nyq_owen_sobol_bn_value(s_87, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_87, uint2 pixel_25, uint sample_index_20)
+NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_88, uint2 pixel_25, uint sample_index_20)
 {
     float v_9[5] = (float[5])0;
     uint d_6 = 0u;
 
-    nyq_owen_sobol_bn_start(s_87, pixel_25, sample_index_20, 0u);
+    nyq_owen_sobol_bn_start(s_88, pixel_25, sample_index_20, 0u);
     uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
     bool loop_init_27 = true;
     while(true) {
@@ -4257,59 +4257,68 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_87, uint2
         {
             uint _e10 = d_6;
             uint _e12 = d_6;
-            const float _e13 = nyq_owen_sobol_bn_value(s_87, _e12);
+            const float _e13 = nyq_owen_sobol_bn_value(s_88, _e12);
             v_9[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_87.dim = 5u;
+    s_88.dim = 5u;
     float _e19[5] = v_9;
     const NyqCameraSample _e20 = nyq_blue_camera(pixel_25, _e19);
     const NyqCameraSample nyqcamerasample_9 = _e20;
     return nyqcamerasample_9;
 }
 
-uint nyq_lattice_bn_key(uint entry_2)
+uint nyq_pmj02_bn_key(uint entry_2, uint i_16)
 {
-    const uint _e5 = nyq_mix32_(((entry_2 >> 8u) ^ 1279349760u));
-    return _e5;
+    const uint _e6 = nyq_mix32_(((entry_2 >> 8u) ^ 1347242496u));
+    uint epoch = (i_16 >> 16u);
+    const uint _e9 = nyq_mix32_(epoch);
+    const uint _e11 = nyq_mix32_((_e6 ^ _e9));
+    return ((epoch == 0u) ? _e6 : _e11);
 }
 
-uint nyq_lattice_bn_rev(uint entry_3, uint key_6, uint index_18)
+uint nyq_pmj02_bn_points(uint k_16, uint i_17)
 {
-    const uint _e8 = nyq_mix32_((key_6 ^ 1397249350u));
-    const uint _e9 = nyq_shuffle_rev((index_18 ^ (entry_3 & 255u)), _e8);
-    return _e9;
+    const uint _e6 = nyq_mix32_((k_16 ^ 1397249350u));
+    const uint _e7 = nyq_shuffle_rev((i_17 & 65535u), _e6);
+    uint p0_ = (reversebits(_e7) & 65535u);
+    const uint _e15 = nyq_mix32_((k_16 ^ 1397249351u));
+    const uint _e16 = nyq_shuffle_rev((i_17 & 65535u), _e15);
+    uint p1_ = (reversebits(_e16) & 65535u);
+    return (p0_ | (p1_ << 16u));
 }
 
-float nyq_lattice_bn_value_at(uint key_7, uint rev_3, uint c_6)
+float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_6)
 {
-    const uint _e8 = nyq_mix32_((key_7 ^ ((c_6 + 1u) * 2654435769u)));
-    const float _e13 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[min(uint(c_6), 3u)]) + _e8));
-    return _e13;
+    uint point_ = ((points >> (16u * naga_div(c_6, 2u))) & 65535u);
+    const uint _e15 = nyq_mix32_((k_17 ^ ((c_6 + 1u) * 2654435769u)));
+    const uint _e19 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point_, naga_mod(c_6, 2u));
+    const float _e21 = nyq_fraction_to_f32_((_e19 ^ _e15));
+    return _e21;
 }
 
-NyqBlueSampler nyq_lattice_bn_sampler(uint2 seed_33, uint frame_5)
+NyqBlueSampler nyq_pmj02_bn_sampler(uint2 seed_33, uint frame_5)
 {
     const NyqBlueSampler _e2 = nyq_blue_sampler(seed_33, frame_5);
     const NyqBlueSampler nyqbluesampler_2 = _e2;
     return nyqbluesampler_2;
 }
 
-void nyq_lattice_bn_start(inout NyqBlueSampler s_88, uint2 pixel_26, uint sample_index_21, uint dim_43)
+void nyq_pmj02_bn_start(inout NyqBlueSampler s_89, uint2 pixel_26, uint sample_index_21, uint dim_43)
 {
     uint b_16 = 0u;
 
-    s_88.pixel = pixel_26;
-    s_88.index = sample_index_21;
-    s_88.dim = dim_43;
+    s_89.pixel = pixel_26;
+    s_89.index = sample_index_21;
+    s_89.dim = dim_43;
     uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
     bool loop_init_28 = true;
     while(true) {
         if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
         loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
         if (!loop_init_28) {
-            uint _e28 = b_16;
-            b_16 = (_e28 + 1u);
+            uint _e31 = b_16;
+            b_16 = (_e31 + 1u);
         }
         loop_init_28 = false;
         uint _e9 = b_16;
@@ -4318,74 +4327,76 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_88, uint2 pixel_26, uint sample
             break;
         }
         {
-            uint2 _e14 = s_88.seed;
-            uint _e16 = s_88.frame;
+            uint2 _e14 = s_89.seed;
+            uint _e16 = s_89.frame;
             uint _e17 = b_16;
-            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_26, _e17);
-            const uint _e19 = nyq_lattice_bn_key(_e18);
-            uint _e21 = b_16;
-            s_88.key[min(uint(_e21), 1u)] = _e19;
+            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e14, _e16, pixel_26, _e17);
+            uint i_19 = (sample_index_21 ^ (_e18 & 255u));
+            const uint _e22 = nyq_pmj02_bn_key(_e18, i_19);
             uint _e24 = b_16;
-            const uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_21);
-            s_88.prepared[min(uint(_e24), 1u)] = _e26;
+            s_89.key[min(uint(_e24), 1u)] = _e22;
+            uint _e27 = b_16;
+            const uint _e29 = nyq_pmj02_bn_points(_e22, i_19);
+            s_89.prepared[min(uint(_e27), 1u)] = _e29;
         }
     }
     return;
 }
 
-float nyq_lattice_bn_value(inout NyqBlueSampler s_89, uint dim_44)
+float nyq_pmj02_bn_value(inout NyqBlueSampler s_90, uint dim_44)
 {
-    uint b_22 = naga_div(dim_44, 4u);
-    uint c_12 = naga_mod(dim_44, 4u);
-    if ((b_22 < 2u)) {
-        uint _e10 = s_89.key[min(uint(b_22), 1u)];
-        uint _e13 = s_89.prepared[min(uint(b_22), 1u)];
-        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_12);
+    uint b_23 = naga_div(dim_44, 4u);
+    uint c_13 = naga_mod(dim_44, 4u);
+    if ((b_23 < 2u)) {
+        uint _e10 = s_90.key[min(uint(b_23), 1u)];
+        uint _e13 = s_90.prepared[min(uint(b_23), 1u)];
+        const float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_13);
         return _e14;
     }
-    uint2 _e17 = s_89.seed;
-    uint _e19 = s_89.frame;
-    uint2 _e21 = s_89.pixel;
-    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_22);
-    const uint _e23 = nyq_lattice_bn_key(_e22);
-    uint _e25 = s_89.index;
-    const uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_12);
-    return _e27;
+    uint2 _e17 = s_90.seed;
+    uint _e19 = s_90.frame;
+    uint2 _e21 = s_90.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e17, _e19, _e21, b_23);
+    uint _e24 = s_90.index;
+    uint i_20 = (_e24 ^ (_e22 & 255u));
+    const uint _e28 = nyq_pmj02_bn_key(_e22, i_20);
+    const uint _e29 = nyq_pmj02_bn_points(_e28, i_20);
+    const float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_13);
+    return _e30;
 }
 
-float nyq_lattice_bn_get_1d(inout NyqBlueSampler s_90)
+float nyq_pmj02_bn_get_1d(inout NyqBlueSampler s_91)
 {
-    uint d_33 = s_90.dim;
-    s_90.dim = (d_33 + 1u);
-    const float _e6 = nyq_lattice_bn_value(s_90, d_33);
+    uint d_34 = s_91.dim;
+    s_91.dim = (d_34 + 1u);
+    const float _e6 = nyq_pmj02_bn_value(s_91, d_34);
     return _e6;
 }
 
-float2 nyq_lattice_bn_get_2d(inout NyqBlueSampler s_91)
+float2 nyq_pmj02_bn_get_2d(inout NyqBlueSampler s_92)
 {
-    uint d_34 = s_91.dim;
-    s_91.dim = (d_34 + 2u);
-    const float _e6 = nyq_lattice_bn_value(s_91, d_34);
-    const float _e9 = nyq_lattice_bn_value(s_91, (d_34 + 1u));
+    uint d_35 = s_92.dim;
+    s_92.dim = (d_35 + 2u);
+    const float _e6 = nyq_pmj02_bn_value(s_92, d_35);
+    const float _e9 = nyq_pmj02_bn_value(s_92, (d_35 + 1u));
     return float2(_e6, _e9);
 }
 
-float2 nyq_lattice_bn_get_pixel_2d(inout NyqBlueSampler s_92)
+float2 nyq_pmj02_bn_get_pixel_2d(inout NyqBlueSampler s_93)
 {
-    uint _e3 = s_92.dim;
-    s_92.dim = max(_e3, 2u);
-    const float _e7 = nyq_lattice_bn_value(s_92, 0u);
-    const float _e9 = nyq_lattice_bn_value(s_92, 1u);
+    uint _e3 = s_93.dim;
+    s_93.dim = max(_e3, 2u);
+    const float _e7 = nyq_pmj02_bn_value(s_93, 0u);
+    const float _e9 = nyq_pmj02_bn_value(s_93, 1u);
     return float2(_e7, _e9);
 }
 
-NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_93, uint2 pixel_27, uint sample_index_22)
+NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_94, uint2 pixel_27, uint sample_index_22)
 {
     float v_10[5] = (float[5])0;
     uint d_7 = 0u;
 
-    nyq_lattice_bn_start(s_93, pixel_27, sample_index_22, 0u);
+    nyq_pmj02_bn_start(s_94, pixel_27, sample_index_22, 0u);
     uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
     bool loop_init_29 = true;
     while(true) {
@@ -4404,41 +4415,188 @@ NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_93, uint2 pi
         {
             uint _e10 = d_7;
             uint _e12 = d_7;
-            const float _e13 = nyq_lattice_bn_value(s_93, _e12);
+            const float _e13 = nyq_pmj02_bn_value(s_94, _e12);
             v_10[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_93.dim = 5u;
+    s_94.dim = 5u;
     float _e19[5] = v_10;
     const NyqCameraSample _e20 = nyq_blue_camera(pixel_27, _e19);
     const NyqCameraSample nyqcamerasample_10 = _e20;
     return nyqcamerasample_10;
 }
 
-uint4 nyq_fill_request(uint i_16)
+uint nyq_lattice_bn_key(uint entry_3)
+{
+    const uint _e5 = nyq_mix32_(((entry_3 >> 8u) ^ 1279349760u));
+    return _e5;
+}
+
+uint nyq_lattice_bn_rev(uint entry_4, uint key_6, uint index_18)
+{
+    const uint _e8 = nyq_mix32_((key_6 ^ 1397249350u));
+    const uint _e9 = nyq_shuffle_rev((index_18 ^ (entry_4 & 255u)), _e8);
+    return _e9;
+}
+
+float nyq_lattice_bn_value_at(uint key_7, uint rev_3, uint c_7)
+{
+    const uint _e8 = nyq_mix32_((key_7 ^ ((c_7 + 1u) * 2654435769u)));
+    const float _e13 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[min(uint(c_7), 3u)]) + _e8));
+    return _e13;
+}
+
+NyqBlueSampler nyq_lattice_bn_sampler(uint2 seed_34, uint frame_6)
+{
+    const NyqBlueSampler _e2 = nyq_blue_sampler(seed_34, frame_6);
+    const NyqBlueSampler nyqbluesampler_3 = _e2;
+    return nyqbluesampler_3;
+}
+
+void nyq_lattice_bn_start(inout NyqBlueSampler s_95, uint2 pixel_28, uint sample_index_23, uint dim_45)
+{
+    uint b_17 = 0u;
+
+    s_95.pixel = pixel_28;
+    s_95.index = sample_index_23;
+    s_95.dim = dim_45;
+    uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+    bool loop_init_30 = true;
+    while(true) {
+        if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+        if (!loop_init_30) {
+            uint _e28 = b_17;
+            b_17 = (_e28 + 1u);
+        }
+        loop_init_30 = false;
+        uint _e9 = b_17;
+        if ((_e9 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e14 = s_95.seed;
+            uint _e16 = s_95.frame;
+            uint _e17 = b_17;
+            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_28, _e17);
+            const uint _e19 = nyq_lattice_bn_key(_e18);
+            uint _e21 = b_17;
+            s_95.key[min(uint(_e21), 1u)] = _e19;
+            uint _e24 = b_17;
+            const uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_23);
+            s_95.prepared[min(uint(_e24), 1u)] = _e26;
+        }
+    }
+    return;
+}
+
+float nyq_lattice_bn_value(inout NyqBlueSampler s_96, uint dim_46)
+{
+    uint b_24 = naga_div(dim_46, 4u);
+    uint c_14 = naga_mod(dim_46, 4u);
+    if ((b_24 < 2u)) {
+        uint _e10 = s_96.key[min(uint(b_24), 1u)];
+        uint _e13 = s_96.prepared[min(uint(b_24), 1u)];
+        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_14);
+        return _e14;
+    }
+    uint2 _e17 = s_96.seed;
+    uint _e19 = s_96.frame;
+    uint2 _e21 = s_96.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_24);
+    const uint _e23 = nyq_lattice_bn_key(_e22);
+    uint _e25 = s_96.index;
+    const uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
+    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_14);
+    return _e27;
+}
+
+float nyq_lattice_bn_get_1d(inout NyqBlueSampler s_97)
+{
+    uint d_36 = s_97.dim;
+    s_97.dim = (d_36 + 1u);
+    const float _e6 = nyq_lattice_bn_value(s_97, d_36);
+    return _e6;
+}
+
+float2 nyq_lattice_bn_get_2d(inout NyqBlueSampler s_98)
+{
+    uint d_37 = s_98.dim;
+    s_98.dim = (d_37 + 2u);
+    const float _e6 = nyq_lattice_bn_value(s_98, d_37);
+    const float _e9 = nyq_lattice_bn_value(s_98, (d_37 + 1u));
+    return float2(_e6, _e9);
+}
+
+float2 nyq_lattice_bn_get_pixel_2d(inout NyqBlueSampler s_99)
+{
+    uint _e3 = s_99.dim;
+    s_99.dim = max(_e3, 2u);
+    const float _e7 = nyq_lattice_bn_value(s_99, 0u);
+    const float _e9 = nyq_lattice_bn_value(s_99, 1u);
+    return float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_100, uint2 pixel_29, uint sample_index_24)
+{
+    float v_11[5] = (float[5])0;
+    uint d_8 = 0u;
+
+    nyq_lattice_bn_start(s_100, pixel_29, sample_index_24, 0u);
+    uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
+    bool loop_init_31 = true;
+    while(true) {
+        if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
+        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e15 = d_8;
+            d_8 = (_e15 + 1u);
+        }
+        loop_init_31 = false;
+        uint _e7 = d_8;
+        if ((_e7 < 5u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e10 = d_8;
+            uint _e12 = d_8;
+            const float _e13 = nyq_lattice_bn_value(s_100, _e12);
+            v_11[min(uint(_e10), 4u)] = _e13;
+        }
+    }
+    s_100.dim = 5u;
+    float _e19[5] = v_11;
+    const NyqCameraSample _e20 = nyq_blue_camera(pixel_29, _e19);
+    const NyqCameraSample nyqcamerasample_11 = _e20;
+    return nyqcamerasample_11;
+}
+
+uint4 nyq_fill_request(uint i_18)
 {
     uint _e3 = nyq_job.implicit;
     if ((_e3 == 0u)) {
-        uint4 _e8 = asuint(nyq_requests.Load4(i_16*16));
+        uint4 _e8 = asuint(nyq_requests.Load4(i_18*16));
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_12 = (_e11 + i_16);
+    uint n_12 = (_e11 + i_18);
     uint _e15 = nyq_job.spp;
-    uint pixel_28 = naga_div(n_12, _e15);
+    uint pixel_30 = naga_div(n_12, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return uint4(naga_mod(pixel_28, _e20), naga_div(pixel_28, _e25), naga_mod(n_12, _e29), 5u);
+    return uint4(naga_mod(pixel_30, _e20), naga_div(pixel_30, _e25), naga_mod(n_12, _e29), 5u);
 }
 
-void nyq_fill_camera(uint out_3, NyqCameraSample c_7)
+void nyq_fill_camera(uint out_3, NyqCameraSample c_8)
 {
-    nyq_values.Store(out_3*4, asuint(asuint(c_7.p_film.x)));
-    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_7.p_film.y)));
-    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_7.time)));
-    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_7.lens.x)));
-    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_7.lens.y)));
+    nyq_values.Store(out_3*4, asuint(asuint(c_8.p_film.x)));
+    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_8.p_film.y)));
+    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_8.time)));
+    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_8.lens.x)));
+    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_8.lens.y)));
     return;
 }
 
@@ -4463,6 +4621,7 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
     NyqHaltonSampler s_7 = (NyqHaltonSampler)0;
     NyqBlueSampler s_8 = (NyqBlueSampler)0;
     NyqBlueSampler s_9 = (NyqBlueSampler)0;
+    NyqBlueSampler s_10 = (NyqBlueSampler)0;
     uint k = 0u;
     uint k_1 = 0u;
     uint k_2 = 0u;
@@ -4470,14 +4629,14 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
     uint k_4 = 0u;
     uint k_5 = 0u;
 
-    uint i_17 = id.x;
+    uint i_21 = id.x;
     uint _e4 = nyq_job.count;
-    if ((i_17 >= _e4)) {
+    if ((i_21 >= _e4)) {
         return;
     }
-    const uint4 _e6 = nyq_fill_request(i_17);
-    uint2 pixel_29 = _e6.xy;
-    uint out_5 = (8u * i_17);
+    const uint4 _e6 = nyq_fill_request(i_21);
+    uint2 pixel_31 = _e6.xy;
+    uint out_5 = (8u * i_21);
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -4485,9 +4644,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e18 = nyq_job.frame;
             const NyqOwenSobolSampler _e19 = nyq_owen_sobol_sampler(_e15, _e18);
             s = _e19;
-            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_29, _e6.z);
+            const NyqCameraSample _e22 = nyq_owen_sobol_camera_sample(s, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e22);
-            nyq_owen_sobol_start(s, pixel_29, _e6.z, _e6.w);
+            nyq_owen_sobol_start(s, pixel_31, _e6.z, _e6.w);
             const float _e25 = nyq_owen_sobol_get_1d(s);
             const float2 _e26 = nyq_owen_sobol_get_2d(s);
             nyq_fill_values(out_5, _e25, _e26);
@@ -4500,9 +4659,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e38 = nyq_job.seed;
             const NyqZSobolSampler _e39 = nyq_zsobol_sampler(_e29, _e32, _e35, _e38);
             s_1 = _e39;
-            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_29, _e6.z);
+            const NyqCameraSample _e42 = nyq_zsobol_camera_sample(s_1, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e42);
-            nyq_zsobol_start(s_1, pixel_29, _e6.z, _e6.w);
+            nyq_zsobol_start(s_1, pixel_31, _e6.z, _e6.w);
             const float _e45 = nyq_zsobol_get_1d(s_1);
             const float2 _e46 = nyq_zsobol_get_2d(s_1);
             nyq_fill_values(out_5, _e45, _e46);
@@ -4512,9 +4671,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e49 = nyq_job.seed;
             const NyqRandomSampler _e50 = nyq_random_sampler(_e49);
             s_2 = _e50;
-            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_29, _e6.z);
+            const NyqCameraSample _e53 = nyq_random_camera_sample(s_2, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e53);
-            nyq_random_start(s_2, pixel_29, _e6.z, _e6.w);
+            nyq_random_start(s_2, pixel_31, _e6.z, _e6.w);
             const float _e56 = nyq_random_get_1d(s_2);
             const float2 _e57 = nyq_random_get_2d(s_2);
             nyq_fill_values(out_5, _e56, _e57);
@@ -4527,9 +4686,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e69 = nyq_job.seed;
             const NyqLatticeSampler _e70 = nyq_lattice_sampler(_e60, _e63, _e66, _e69);
             s_3 = _e70;
-            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_29, _e6.z);
+            const NyqCameraSample _e73 = nyq_lattice_camera_sample(s_3, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e73);
-            nyq_lattice_start(s_3, pixel_29, _e6.z, _e6.w);
+            nyq_lattice_start(s_3, pixel_31, _e6.z, _e6.w);
             const float _e76 = nyq_lattice_get_1d(s_3);
             const float2 _e77 = nyq_lattice_get_2d(s_3);
             nyq_fill_values(out_5, _e76, _e77);
@@ -4542,9 +4701,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e91 = nyq_job.seed;
             const NyqStratifiedSampler _e92 = nyq_stratified_sampler(_e81, _e85, _e88, _e91);
             s_4 = _e92;
-            const NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_29, _e6.z);
+            const NyqCameraSample _e95 = nyq_stratified_camera_sample(s_4, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e95);
-            nyq_stratified_start(s_4, pixel_29, _e6.z, _e6.w);
+            nyq_stratified_start(s_4, pixel_31, _e6.z, _e6.w);
             const float _e98 = nyq_stratified_get_1d(s_4);
             const float2 _e99 = nyq_stratified_get_2d(s_4);
             nyq_fill_values(out_5, _e98, _e99);
@@ -4554,9 +4713,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e102 = nyq_job.seed;
             const NyqPmj02Sampler _e103 = nyq_pmj02_sampler(_e102);
             s_5 = _e103;
-            const NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_29, _e6.z);
+            const NyqCameraSample _e106 = nyq_pmj02_camera_sample(s_5, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e106);
-            nyq_pmj02_start(s_5, pixel_29, _e6.z, _e6.w);
+            nyq_pmj02_start(s_5, pixel_31, _e6.z, _e6.w);
             const float _e109 = nyq_pmj02_get_1d(s_5);
             const float2 _e110 = nyq_pmj02_get_2d(s_5);
             nyq_fill_values(out_5, _e109, _e110);
@@ -4569,9 +4728,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e122 = nyq_job.seed;
             const NyqSobolSampler _e123 = nyq_sobol_sampler(_e113, _e116, _e119, _e122);
             s_6 = _e123;
-            const NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_29, _e6.z);
+            const NyqCameraSample _e126 = nyq_sobol_sampler_camera_sample(s_6, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e126);
-            nyq_sobol_sampler_start(s_6, pixel_29, _e6.z, _e6.w);
+            nyq_sobol_sampler_start(s_6, pixel_31, _e6.z, _e6.w);
             const float _e129 = nyq_sobol_sampler_get_1d(s_6);
             const float2 _e130 = nyq_sobol_sampler_get_2d(s_6);
             nyq_fill_values(out_5, _e129, _e130);
@@ -4584,9 +4743,9 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e142 = nyq_job.seed;
             const NyqHaltonSampler _e143 = nyq_halton_sampler(_e133, _e136, _e139, _e142);
             s_7 = _e143;
-            const NyqCameraSample _e146 = nyq_halton_sampler_camera_sample(s_7, pixel_29, _e6.z);
+            const NyqCameraSample _e146 = nyq_halton_sampler_camera_sample(s_7, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e146);
-            nyq_halton_sampler_start(s_7, pixel_29, _e6.z, _e6.w);
+            nyq_halton_sampler_start(s_7, pixel_31, _e6.z, _e6.w);
             const float _e149 = nyq_halton_sampler_get_1d(s_7);
             const float2 _e150 = nyq_halton_sampler_get_2d(s_7);
             nyq_fill_values(out_5, _e149, _e150);
@@ -4597,215 +4756,228 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e156 = nyq_job.frame;
             const NyqBlueSampler _e157 = nyq_owen_sobol_bn_sampler(_e153, _e156);
             s_8 = _e157;
-            const NyqCameraSample _e160 = nyq_owen_sobol_bn_camera_sample(s_8, pixel_29, _e6.z);
+            const NyqCameraSample _e160 = nyq_owen_sobol_bn_camera_sample(s_8, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e160);
-            nyq_owen_sobol_bn_start(s_8, pixel_29, _e6.z, _e6.w);
+            nyq_owen_sobol_bn_start(s_8, pixel_31, _e6.z, _e6.w);
             const float _e163 = nyq_owen_sobol_bn_get_1d(s_8);
             const float2 _e164 = nyq_owen_sobol_bn_get_2d(s_8);
             nyq_fill_values(out_5, _e163, _e164);
             return;
         }
-        case 10u: {
+        case 9u: {
             uint2 _e167 = nyq_job.seed;
             uint _e170 = nyq_job.frame;
-            const NyqBlueSampler _e171 = nyq_lattice_bn_sampler(_e167, _e170);
+            const NyqBlueSampler _e171 = nyq_pmj02_bn_sampler(_e167, _e170);
             s_9 = _e171;
-            const NyqCameraSample _e174 = nyq_lattice_bn_camera_sample(s_9, pixel_29, _e6.z);
+            const NyqCameraSample _e174 = nyq_pmj02_bn_camera_sample(s_9, pixel_31, _e6.z);
             nyq_fill_camera(out_5, _e174);
-            nyq_lattice_bn_start(s_9, pixel_29, _e6.z, _e6.w);
-            const float _e177 = nyq_lattice_bn_get_1d(s_9);
-            const float2 _e178 = nyq_lattice_bn_get_2d(s_9);
+            nyq_pmj02_bn_start(s_9, pixel_31, _e6.z, _e6.w);
+            const float _e177 = nyq_pmj02_bn_get_1d(s_9);
+            const float2 _e178 = nyq_pmj02_bn_get_2d(s_9);
             nyq_fill_values(out_5, _e177, _e178);
             return;
         }
+        case 10u: {
+            uint2 _e181 = nyq_job.seed;
+            uint _e184 = nyq_job.frame;
+            const NyqBlueSampler _e185 = nyq_lattice_bn_sampler(_e181, _e184);
+            s_10 = _e185;
+            const NyqCameraSample _e188 = nyq_lattice_bn_camera_sample(s_10, pixel_31, _e6.z);
+            nyq_fill_camera(out_5, _e188);
+            nyq_lattice_bn_start(s_10, pixel_31, _e6.z, _e6.w);
+            const float _e191 = nyq_lattice_bn_get_1d(s_10);
+            const float2 _e192 = nyq_lattice_bn_get_2d(s_10);
+            nyq_fill_values(out_5, _e191, _e192);
+            return;
+        }
         case 16u: {
-            uint _e181 = nyq_job.dims;
-            uint _e184 = nyq_job.scramble;
-            uint2 _e189 = nyq_job.seed;
-            const NyqSobol _e190 = nyq_sobol(_e181, (_e184 != 0u), _e189);
-            uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-            bool loop_init_30 = true;
-            while(true) {
-                if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
-                loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-                if (!loop_init_30) {
-                    uint _e218 = k;
-                    k = (_e218 + 1u);
-                }
-                loop_init_30 = false;
-                uint _e193 = k;
-                if ((_e193 < 4u)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e197 = k;
-                    uint _e202 = k;
-                    const uint _e204 = nyq_sobol_sample_u32_(_e190, _e6.z, (_e6.w + _e202));
-                    nyq_values.Store((out_5 + _e197)*4, asuint(_e204));
-                    uint _e208 = k;
-                    uint _e213 = k;
-                    const float _e215 = nyq_sobol_sample(_e190, _e6.z, (_e6.w + _e213));
-                    nyq_values.Store(((out_5 + 4u) + _e208)*4, asuint(asuint(_e215)));
-                }
-            }
-            return;
-        }
-        case 17u: {
-            uint _e222 = nyq_job.dims;
-            uint2 _e225 = nyq_job.seed;
-            const NyqOwenSobol _e226 = nyq_owen_sobol(_e222, _e225);
-            const float4 _e229 = nyq_owen_sobol_sample_4d(_e226, _e6.z, _e6.w);
-            uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-            bool loop_init_31 = true;
-            while(true) {
-                if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
-                loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-                if (!loop_init_31) {
-                    uint _e254 = k_1;
-                    k_1 = (_e254 + 1u);
-                }
-                loop_init_31 = false;
-                uint _e232 = k_1;
-                if ((_e232 < 4u)) {
-                } else {
-                    break;
-                }
-                {
-                    uint _e236 = k_1;
-                    uint _e241 = k_1;
-                    const uint _e243 = nyq_owen_sobol_sample_u32_(_e226, _e6.z, (_e6.w + _e241));
-                    nyq_values.Store((out_5 + _e236)*4, asuint(_e243));
-                    uint _e247 = k_1;
-                    uint _e250 = k_1;
-                    nyq_values.Store(((out_5 + 4u) + _e247)*4, asuint(asuint(_e229[min(uint(_e250), 3u)])));
-                }
-            }
-            return;
-        }
-        case 18u: {
-            uint _e258 = nyq_job.scramble;
-            uint2 _e263 = nyq_job.seed;
-            const NyqPmj02_ _e264 = nyq_pmj02_((_e258 != 0u), _e263);
+            uint _e195 = nyq_job.dims;
+            uint _e198 = nyq_job.scramble;
+            uint2 _e203 = nyq_job.seed;
+            const NyqSobol _e204 = nyq_sobol(_e195, (_e198 != 0u), _e203);
             uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
             bool loop_init_32 = true;
             while(true) {
                 if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
                 loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
                 if (!loop_init_32) {
-                    uint _e292 = k_2;
-                    k_2 = (_e292 + 1u);
+                    uint _e232 = k;
+                    k = (_e232 + 1u);
                 }
                 loop_init_32 = false;
-                uint _e267 = k_2;
-                if ((_e267 < 4u)) {
+                uint _e207 = k;
+                if ((_e207 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e271 = k_2;
-                    uint _e276 = k_2;
-                    const uint _e278 = nyq_pmj02_sample_u32_(_e264, _e6.z, (_e6.w + _e276));
-                    nyq_values.Store((out_5 + _e271)*4, asuint(_e278));
-                    uint _e282 = k_2;
-                    uint _e287 = k_2;
-                    const float _e289 = nyq_pmj02_sample(_e264, _e6.z, (_e6.w + _e287));
-                    nyq_values.Store(((out_5 + 4u) + _e282)*4, asuint(asuint(_e289)));
+                    uint _e211 = k;
+                    uint _e216 = k;
+                    const uint _e218 = nyq_sobol_sample_u32_(_e204, _e6.z, (_e6.w + _e216));
+                    nyq_values.Store((out_5 + _e211)*4, asuint(_e218));
+                    uint _e222 = k;
+                    uint _e227 = k;
+                    const float _e229 = nyq_sobol_sample(_e204, _e6.z, (_e6.w + _e227));
+                    nyq_values.Store(((out_5 + 4u) + _e222)*4, asuint(asuint(_e229)));
                 }
             }
             return;
         }
-        case 19u: {
-            uint _e296 = nyq_job.dims;
-            uint _e299 = nyq_job.scramble;
-            uint2 _e302 = nyq_job.seed;
-            const NyqHalton _e303 = nyq_halton(_e296, _e299, _e302);
-            uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
+        case 17u: {
+            uint _e236 = nyq_job.dims;
+            uint2 _e239 = nyq_job.seed;
+            const NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
+            const float4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w);
             uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
             bool loop_init_33 = true;
             while(true) {
                 if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
                 loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
                 if (!loop_init_33) {
-                    uint _e337 = k_3;
-                    k_3 = (_e337 + 1u);
+                    uint _e268 = k_1;
+                    k_1 = (_e268 + 1u);
                 }
                 loop_init_33 = false;
-                uint _e315 = k_3;
-                if ((_e315 < 8u)) {
+                uint _e246 = k_1;
+                if ((_e246 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e320 = k_3;
-                    uint2 index_20 = uint2(_e6.z, ((_e320 >= 4u) ? high_2 : 0u));
-                    uint _e326 = k_3;
-                    uint _e330 = k_3;
-                    const float _e334 = nyq_halton_sample(_e303, index_20, (_e6.w + (_e330 & 3u)));
-                    nyq_values.Store((out_5 + _e326)*4, asuint(asuint(_e334)));
+                    uint _e250 = k_1;
+                    uint _e255 = k_1;
+                    const uint _e257 = nyq_owen_sobol_sample_u32_(_e240, _e6.z, (_e6.w + _e255));
+                    nyq_values.Store((out_5 + _e250)*4, asuint(_e257));
+                    uint _e261 = k_1;
+                    uint _e264 = k_1;
+                    nyq_values.Store(((out_5 + 4u) + _e261)*4, asuint(asuint(_e243[min(uint(_e264), 3u)])));
                 }
             }
             return;
         }
-        case 20u: {
-            uint _e341 = nyq_job.lattice;
-            uint _e344 = nyq_job.spp;
-            uint _e347 = nyq_job.generator;
-            uint _e350 = nyq_job.dims;
-            uint _e353 = nyq_job.scramble;
-            uint2 _e358 = nyq_job.seed;
-            const NyqLattice _e359 = nyq_lattice(_e341, _e344, _e347, _e350, (_e353 != 0u), _e358);
+        case 18u: {
+            uint _e272 = nyq_job.scramble;
+            uint2 _e277 = nyq_job.seed;
+            const NyqPmj02_ _e278 = nyq_pmj02_((_e272 != 0u), _e277);
             uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
             bool loop_init_34 = true;
             while(true) {
                 if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
                 loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
                 if (!loop_init_34) {
-                    uint _e376 = k_4;
-                    k_4 = (_e376 + 1u);
+                    uint _e306 = k_2;
+                    k_2 = (_e306 + 1u);
                 }
                 loop_init_34 = false;
-                uint _e362 = k_4;
-                if ((_e362 < 4u)) {
+                uint _e281 = k_2;
+                if ((_e281 < 4u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e366 = k_4;
-                    uint _e371 = k_4;
-                    const float _e373 = nyq_lattice_sample(_e359, _e6.z, (_e6.w + _e371));
-                    nyq_values.Store((out_5 + _e366)*4, asuint(asuint(_e373)));
+                    uint _e285 = k_2;
+                    uint _e290 = k_2;
+                    const uint _e292 = nyq_pmj02_sample_u32_(_e278, _e6.z, (_e6.w + _e290));
+                    nyq_values.Store((out_5 + _e285)*4, asuint(_e292));
+                    uint _e296 = k_2;
+                    uint _e301 = k_2;
+                    const float _e303 = nyq_pmj02_sample(_e278, _e6.z, (_e6.w + _e301));
+                    nyq_values.Store(((out_5 + 4u) + _e296)*4, asuint(asuint(_e303)));
                 }
             }
-            const uint2 _e380 = nyq_lattice_fixed(_e359, _e6.z, _e6.w);
-            const uint2 _e381 = nyq_fixed_to_f64_bits(_e380);
-            const uint2 _e386 = nyq_lattice_fixed(_e359, _e6.z, (_e6.w + 1u));
-            const uint2 _e387 = nyq_fixed_to_f64_bits(_e386);
-            nyq_values.Store((out_5 + 4u)*4, asuint(_e381.x));
-            nyq_values.Store((out_5 + 5u)*4, asuint(_e381.y));
-            nyq_values.Store((out_5 + 6u)*4, asuint(_e387.x));
-            nyq_values.Store((out_5 + 7u)*4, asuint(_e387.y));
             return;
         }
-        default: {
+        case 19u: {
+            uint _e310 = nyq_job.dims;
+            uint _e313 = nyq_job.scramble;
+            uint2 _e316 = nyq_job.seed;
+            const NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
+            uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
             uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
             bool loop_init_35 = true;
             while(true) {
                 if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
                 loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
                 if (!loop_init_35) {
-                    uint _e419 = k_5;
-                    k_5 = (_e419 + 1u);
+                    uint _e351 = k_3;
+                    k_3 = (_e351 + 1u);
                 }
                 loop_init_35 = false;
-                uint _e410 = k_5;
-                if ((_e410 < 8u)) {
+                uint _e329 = k_3;
+                if ((_e329 < 8u)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e414 = k_5;
-                    nyq_values.Store((out_5 + _e414)*4, asuint(4294967295u));
+                    uint _e334 = k_3;
+                    uint2 index_20 = uint2(_e6.z, ((_e334 >= 4u) ? high_2 : 0u));
+                    uint _e340 = k_3;
+                    uint _e344 = k_3;
+                    const float _e348 = nyq_halton_sample(_e317, index_20, (_e6.w + (_e344 & 3u)));
+                    nyq_values.Store((out_5 + _e340)*4, asuint(asuint(_e348)));
+                }
+            }
+            return;
+        }
+        case 20u: {
+            uint _e355 = nyq_job.lattice;
+            uint _e358 = nyq_job.spp;
+            uint _e361 = nyq_job.generator;
+            uint _e364 = nyq_job.dims;
+            uint _e367 = nyq_job.scramble;
+            uint2 _e372 = nyq_job.seed;
+            const NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, (_e367 != 0u), _e372);
+            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+            bool loop_init_36 = true;
+            while(true) {
+                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                if (!loop_init_36) {
+                    uint _e390 = k_4;
+                    k_4 = (_e390 + 1u);
+                }
+                loop_init_36 = false;
+                uint _e376 = k_4;
+                if ((_e376 < 4u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e380 = k_4;
+                    uint _e385 = k_4;
+                    const float _e387 = nyq_lattice_sample(_e373, _e6.z, (_e6.w + _e385));
+                    nyq_values.Store((out_5 + _e380)*4, asuint(asuint(_e387)));
+                }
+            }
+            const uint2 _e394 = nyq_lattice_fixed(_e373, _e6.z, _e6.w);
+            const uint2 _e395 = nyq_fixed_to_f64_bits(_e394);
+            const uint2 _e400 = nyq_lattice_fixed(_e373, _e6.z, (_e6.w + 1u));
+            const uint2 _e401 = nyq_fixed_to_f64_bits(_e400);
+            nyq_values.Store((out_5 + 4u)*4, asuint(_e395.x));
+            nyq_values.Store((out_5 + 5u)*4, asuint(_e395.y));
+            nyq_values.Store((out_5 + 6u)*4, asuint(_e401.x));
+            nyq_values.Store((out_5 + 7u)*4, asuint(_e401.y));
+            return;
+        }
+        default: {
+            uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+            bool loop_init_37 = true;
+            while(true) {
+                if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+                if (!loop_init_37) {
+                    uint _e433 = k_5;
+                    k_5 = (_e433 + 1u);
+                }
+                loop_init_37 = false;
+                uint _e424 = k_5;
+                if ((_e424 < 8u)) {
+                } else {
+                    break;
+                }
+                {
+                    uint _e428 = k_5;
+                    nyq_values.Store((out_5 + _e428)*4, asuint(4294967295u));
                 }
             }
             return;

@@ -156,6 +156,13 @@ fn nyq_fill(@builtin(global_invocation_id) id: vec3<u32>) {
             let one = nyq_owen_sobol_bn_get_1d(&s);
             nyq_fill_values(out, one, nyq_owen_sobol_bn_get_2d(&s));
         }
+        case 9u: {
+            var s = nyq_pmj02_bn_sampler(nyq_job.seed, nyq_job.frame);
+            nyq_fill_camera(out, nyq_pmj02_bn_camera_sample(&s, pixel, q.z));
+            nyq_pmj02_bn_start(&s, pixel, q.z, q.w);
+            let one = nyq_pmj02_bn_get_1d(&s);
+            nyq_fill_values(out, one, nyq_pmj02_bn_get_2d(&s));
+        }
         case 10u: {
             var s = nyq_lattice_bn_sampler(nyq_job.seed, nyq_job.frame);
             nyq_fill_camera(out, nyq_lattice_bn_camera_sample(&s, pixel, q.z));

@@ -171,6 +171,95 @@ fn nyq_owen_sobol_bn_camera_sample(s: ptr<function, NyqBlueSampler>, pixel: vec2
 }
 
 // ---------------------------------------------------------------------------------------------
+// pmj02-bn (core screen_blue/pmj02.rs): a block is two pairs, each a point of the PMJ(0,2)
+// table at a nested uniform shuffle of the index's low 16 bits, its coordinates XOR-ed with a
+// digital shift; shuffles and shifts are hashed from the entry's key and, past the first 65536
+// samples, from the epoch (index >> 16). The table's points are rebuilt as pmj02.wgsl does
+// (`nyq_pmj02_point`), not read.
+
+// The block key of an entry in the epoch of the (rank-XOR-ed) sample index `i`: core
+// `Pmj02Block::new`'s `k`.
+fn nyq_pmj02_bn_key(entry: u32, i: u32) -> u32 {
+    // "PMJ"
+    let key = nyq_mix32((entry >> 8u) ^ 0x504d4a00u);
+    let epoch = i >> 16u;
+    return select(nyq_mix32(key ^ nyq_mix32(epoch)), key, epoch == 0u);
+}
+
+// The table points of the two pairs of sample `i` (the rank XOR-ed in) under the epoch key `k`,
+// packed as two 16-bit halves: core `Pmj02Blue::index`.
+fn nyq_pmj02_bn_points(k: u32, i: u32) -> u32 {
+    // "SHUF", "SHUG"
+    let p0 = reverseBits(nyq_shuffle_rev(i & 0xffffu, nyq_mix32(k ^ 0x53485546u))) & 0xffffu;
+    let p1 = reverseBits(nyq_shuffle_rev(i & 0xffffu, nyq_mix32(k ^ 0x53485547u))) & 0xffffu;
+    return p0 | (p1 << 16u);
+}
+
+// Component `c` of the block of epoch key `k` at the packed points `points`: core
+// `Pmj02Blue::value`.
+fn nyq_pmj02_bn_value_at(k: u32, points: u32, c: u32) -> f32 {
+    let point = (points >> (16u * (c / 2u))) & 0xffffu;
+    let shift = nyq_mix32(k ^ ((c + 1u) * 0x9e3779b9u));
+    return nyq_fraction_to_f32(nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, c % 2u) ^ shift);
+}
+
+fn nyq_pmj02_bn_sampler(seed: vec2<u32>, frame: u32) -> NyqBlueSampler {
+    return nyq_blue_sampler(seed, frame);
+}
+
+fn nyq_pmj02_bn_start(s: ptr<function, NyqBlueSampler>, pixel: vec2<u32>, sample_index: u32, dim: u32) {
+    (*s).pixel = pixel;
+    (*s).index = sample_index;
+    (*s).dim = dim;
+    for (var b = 0u; b < 2u; b++) {
+        let e = nyq_blue_block_entry(NYQ_BLUE_PMJ02, (*s).seed, (*s).frame, pixel, b);
+        let i = sample_index ^ (e & 0xffu);
+        let k = nyq_pmj02_bn_key(e, i);
+        (*s).key[b] = k;
+        (*s).prepared[b] = nyq_pmj02_bn_points(k, i);
+    }
+}
+
+fn nyq_pmj02_bn_value(s: ptr<function, NyqBlueSampler>, dim: u32) -> f32 {
+    let b = dim / 4u;
+    let c = dim % 4u;
+    if b < 2u {
+        return nyq_pmj02_bn_value_at((*s).key[b], (*s).prepared[b], c);
+    }
+    let e = nyq_blue_block_entry(NYQ_BLUE_PMJ02, (*s).seed, (*s).frame, (*s).pixel, b);
+    let i = (*s).index ^ (e & 0xffu);
+    let k = nyq_pmj02_bn_key(e, i);
+    return nyq_pmj02_bn_value_at(k, nyq_pmj02_bn_points(k, i), c);
+}
+
+fn nyq_pmj02_bn_get_1d(s: ptr<function, NyqBlueSampler>) -> f32 {
+    let d = (*s).dim;
+    (*s).dim = d + 1u;
+    return nyq_pmj02_bn_value(s, d);
+}
+
+fn nyq_pmj02_bn_get_2d(s: ptr<function, NyqBlueSampler>) -> vec2<f32> {
+    let d = (*s).dim;
+    (*s).dim = d + 2u;
+    return vec2<f32>(nyq_pmj02_bn_value(s, d), nyq_pmj02_bn_value(s, d + 1u));
+}
+
+fn nyq_pmj02_bn_get_pixel_2d(s: ptr<function, NyqBlueSampler>) -> vec2<f32> {
+    (*s).dim = max((*s).dim, 2u);
+    return vec2<f32>(nyq_pmj02_bn_value(s, 0u), nyq_pmj02_bn_value(s, 1u));
+}
+
+fn nyq_pmj02_bn_camera_sample(s: ptr<function, NyqBlueSampler>, pixel: vec2<u32>, sample_index: u32) -> NyqCameraSample {
+    nyq_pmj02_bn_start(s, pixel, sample_index, 0u);
+    var v: array<f32, 5>;
+    for (var d = 0u; d < 5u; d++) {
+        v[d] = nyq_pmj02_bn_value(s, d);
+    }
+    (*s).dim = 5u;
+    return nyq_blue_camera(pixel, v);
+}
+
+// ---------------------------------------------------------------------------------------------
 // lattice-bn (core screen_blue/lattice.rs): sample i of a block is frac(φ₂(s(i)) · g + Δ), g the
 // 4-D generating vector, s a nested uniform shuffle and Δ a Cranley–Patterson shift hashed
 // from the entry's key, in 32-bit fixed point.

@@ -214,7 +214,7 @@ fn jobs() -> Vec<Job> {
     });
     // The blue-noise samplers: frame 0 and later frames (R2 offsets wrapping), seeds 0 and
     // next to u64::MAX; every family's first job gets 2^17 requests.
-    for family in [0u32, 2] {
+    for family in [0u32, 1, 2] {
         for (spp, seed, frame) in [
             (16, 7, 0),
             (1, u64::MAX - 1, 1),
