@@ -18,6 +18,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+// Entries in one tile: 128 × 128.
+#define NYQ_BLUE_TILE_ENTRIES 16384
+
 // Points per axis of a handle's lookup tables (the core's default `FilterTable` size).
 #define NYQ_FILTER_TABLE_SIZE 16
 
@@ -254,6 +257,22 @@ typedef float (*NyqFilterEval)(void *user, float x, float y);
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+// Writes the 128 × 128 tile of the blue-noise sampler `name` (`owen-sobol-bn`, `pmj02-bn` or
+// `lattice-bn`, any ASCII case) to `out[0..16384]`, row-major: `out[y·128 + x]` is pixel
+// `(x, y)`'s entry `key << 8 | rank` (a 24-bit key and an 8-bit rank), the core's
+// `BlueFamily::entry(x, y)`. This is the table the C++ header's `OwenSobolBlueSampler`,
+// `Pmj02BlueSampler` and `LatticeBlueSampler` read (64 KiB as `uint32_t`), and one third of
+// the shaders' `nyq_blue_tiles` buffer. Entries past 16384 in `out` are left untouched.
+//
+// # Errors
+// `NYQ_ERR_NULL` if `name` or `out` is null; `NYQ_ERR_PARSE` for another name (or non-UTF-8);
+// `NYQ_ERR_BUFFER` if `len < 16384` (or if `out` is misaligned).
+//
+// # Safety
+// `name` is null or a NUL-terminated string; `out` is null or valid for writing `len`
+// `uint32_t`s.
+enum NyqStatus nyq_blue_tile(const char *name, uint32_t *out, size_t len);
 
 // Writes the current sample of `sampler` as a domain to `*out`: its dimension `d` is the
 // sampler's dimension `d` (after `nyq_sampler_start_pixel_sample`).
@@ -682,7 +701,8 @@ enum NyqStatus nyq_inverse_radical_inverse(uint32_t dim,
 // spp/4 and spp samples per pixel, driven by [`nyq_sampler_report`]); `owen-sobol`
 // (Owen-scrambled Sobol per pixel); `owen-sobol-bn` (the same with blue-noise error across
 // pixels, from a 128 × 128 tile); `zsobol` (blue-noise ZSobol, fast Owen, spp rounded up to
-// a power of two); `pmj02` (up to 65536 spp); `bluenoise-dithered` (the zero-two set of pixel
+// a power of two); `pmj02` (up to 65536 spp); `pmj02-bn` and `lattice-bn` (PMJ(0,2) and a
+// rank-1 lattice per pixel with blue-noise error across pixels); `bluenoise-dithered` (the zero-two set of pixel
 // (0, 0) in every pixel, toroidally shifted by a built-in 64 × 64 blue-noise mask, spp rounded
 // up to a power of two); `fibonacci`, `r2` and `korobov` (the Fibonacci lattice, spp rounded up
 // to a Fibonacci number, R2, or the Korobov lattice of exactly spp points whose multiplier

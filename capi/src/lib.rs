@@ -52,6 +52,7 @@ extern crate alloc;
 #[cfg(feature = "std")]
 extern crate std;
 
+mod blue_tile;
 mod domain;
 mod ffi;
 mod filter;
@@ -66,6 +67,7 @@ mod sequence;
 mod status;
 mod stratify;
 
+pub use blue_tile::*;
 pub use domain::*;
 pub use filter::*;
 pub use mask::*;

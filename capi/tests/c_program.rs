@@ -452,6 +452,41 @@ fn error_lines(e: &mut Expected) {
     e.line(&format!("version {}", env!("CARGO_PKG_VERSION")));
 }
 
+/// The lines of `blue_tiles()`: per name, entries (0, 0), (127, 0), (5, 77) and (127, 127) of
+/// the core's tile, that its keys are a permutation of 0 … 16383 and that the entry past the
+/// tile was left alone; then the bad calls' statuses.
+fn blue_tile_lines(e: &mut Expected) {
+    use nyquist::sampler::screen_blue::{BlueFamily, LatticeBlue, OwenSobolBlue, Pmj02Blue};
+    fn line<F: BlueFamily>(e: &mut Expected, name: &str) {
+        let mut keys: Vec<u32> = (0..128 * 128)
+            .map(|i| F::entry(i % 128, i / 128) >> 8)
+            .collect();
+        keys.sort_unstable();
+        let permutation = keys.iter().copied().eq(0..128 * 128);
+        e.line(&format!(
+            "blue {name} {} {} {} {} {} 1",
+            F::entry(0, 0),
+            F::entry(127, 0),
+            F::entry(5, 77),
+            F::entry(127, 127),
+            i32::from(permutation)
+        ));
+    }
+    line::<OwenSobolBlue>(e, "owen-sobol-bn");
+    line::<Pmj02Blue>(e, "pmj02-bn");
+    line::<LatticeBlue>(e, "lattice-bn");
+    line::<LatticeBlue>(e, "LATTICE-BN");
+    for (key, code) in [
+        ("blue_null_name", NyqStatus::NYQ_ERR_NULL),
+        ("blue_null_out", NyqStatus::NYQ_ERR_NULL),
+        ("blue_bad_name", NyqStatus::NYQ_ERR_PARSE),
+        ("blue_short", NyqStatus::NYQ_ERR_BUFFER),
+        ("blue_zero", NyqStatus::NYQ_ERR_ZERO_SIZE),
+    ] {
+        e.status(key, code);
+    }
+}
+
 /// A C program of this package's tests, `capi/tests/c/NAME`.
 fn c_source(name: &str) -> std::path::PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -468,6 +503,7 @@ fn expected_c_output() -> String {
     sampler_lines(&mut e);
     filter_lines(&mut e);
     pixel_stats_lines(&mut e);
+    blue_tile_lines(&mut e);
     error_lines(&mut e);
     e.line("done");
     e.0

@@ -5,7 +5,8 @@
 //! `SKIPPED: …`), linked with the static library, and run. It compares the header with the C
 //! API over random (pixel, sample index, dimension, seed) queries, and with the values this
 //! test writes from the core for what the C API cannot name (other scrambles, animation
-//! frames, the Owen-Sobol sequence). Every sampler family gets at least 10⁶ values.
+//! frames, the Owen-Sobol sequence). Every sampler family gets at least 10⁶ values. The
+//! blue-noise samplers read their tiles through the C API's `nyq_blue_tile`.
 //!
 //! A second test holds the header's generated block (the Joe–Kuo parameters) to the data file.
 
@@ -17,7 +18,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use nyquist::sampler::{
-    HaltonSampler, OwenSobolSampler, Sampler, SobolSampler, ZSobolSampler, camera_sample,
+    HaltonSampler, LatticeBlueSampler, OwenSobolBlueSampler, OwenSobolSampler, Pmj02BlueSampler,
+    Sampler, SobolSampler, ZSobolSampler, camera_sample,
 };
 use nyquist::scramble::Scramble;
 use nyquist::sequence::{OwenSobol, Pmj02, Sequence};
@@ -165,6 +167,9 @@ const OWEN_SOBOL_SAMPLER: u32 = 0;
 const ZSOBOL_SAMPLER: u32 = 1;
 const SOBOL_SAMPLER: u32 = 2;
 const HALTON_SAMPLER: u32 = 3;
+/// A blue-noise sampler; the configuration's `dims` names the family (0 owen-sobol-bn,
+/// 1 pmj02-bn, 2 lattice-bn).
+const BLUE_NOISE_SAMPLER: u32 = 4;
 const OWEN_SOBOL_SEQUENCE: u32 = 10;
 const PMJ02_SEQUENCE: u32 = 11;
 
@@ -224,6 +229,37 @@ fn expected() -> Expected {
             let mut s = HaltonSampler::new(size, spp, scramble, seed).unwrap();
             e.config(HALTON_SAMPLER, scramble, size, spp, 0, 0, seed, queries);
             e.sampler(&mut s, queries, &mut r, None, Some(1000));
+        }
+    }
+    // The blue-noise samplers in frames the C API cannot ask for (up to u32::MAX, where the R2
+    // offsets wrap); pixels, indices and dimensions anywhere in u32.
+    for family in 0..3u32 {
+        for (k, frame) in [1u32, 7919, u32::MAX].into_iter().enumerate() {
+            let (spp, seed) = ([16u32, 1, 256][k], r.next());
+            e.config(
+                BLUE_NOISE_SAMPLER,
+                Scramble::FastOwen,
+                [1, 1],
+                spp,
+                frame,
+                family,
+                seed,
+                queries,
+            );
+            match family {
+                0 => {
+                    let s = OwenSobolBlueSampler::new(spp, seed).unwrap();
+                    e.sampler(&mut s.with_frame(frame), queries, &mut r, None, None);
+                }
+                1 => {
+                    let s = Pmj02BlueSampler::new(spp, seed).unwrap();
+                    e.sampler(&mut s.with_frame(frame), queries, &mut r, None, None);
+                }
+                _ => {
+                    let s = LatticeBlueSampler::new(spp, seed).unwrap();
+                    e.sampler(&mut s.with_frame(frame), queries, &mut r, None, None);
+                }
+            }
         }
     }
     for k in 0..4 {

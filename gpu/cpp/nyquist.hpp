@@ -35,6 +35,8 @@
 // each run-time table exists twice, in host and in device memory, chosen by `__CUDA_ARCH__`.
 // PMJ(0,2) needs no table: its points are rebuilt on the fly (Helmer, Christensen & Kensler
 // 2021's construction, the one the core bakes).
+// The blue-noise samplers' 128 × 128 tiles are not in the header (the core's optimiser
+// regenerates them): the caller passes a pointer to one, from the C API's `nyq_blue_tile`.
 //
 // Sources are named at each function (Joe & Kuo 2008; Burley 2020; Laine & Karras 2011 with
 // Vegdahl's 2021 constants; Owen 1995; SplitMix64; Wellons' lowbias32; wyrand; PCG32; Ahmed &
@@ -3161,6 +3163,178 @@ struct Pmj02Sampler {
         return detail::camera_by_parts(*this, px, py, s);
     }
 };
+
+// ---------------------------------------------------------------------------------------------
+// Screen-space blue-noise samplers (core/src/sampler/screen_blue/; Heitz, Belcour, Ostromoukhov,
+// Coeurjolly & Iehl 2019; Belcour & Heitz 2021).
+
+/// The side of a blue-noise tile, and its entries.
+constexpr std::uint32_t kBlueTileSize = 128;
+constexpr std::uint32_t kBlueTileEntries = kBlueTileSize * kBlueTileSize;
+
+namespace detail {
+
+/// The toroidal offset of 4-D block `block` in `frame` under `seed` (the core's
+/// `screen_blue::offset`): a hash of the seed and block plus the frame's point of Roberts' R2
+/// sequence in 32-bit fixed point, `round(2³²/φ₂)` and `round(2³²/φ₂²)`.
+NYQ_HD inline void blue_offset(std::uint64_t seed, std::uint32_t frame, std::uint32_t block,
+                               std::uint32_t out[2]) {
+    const std::uint64_t h = hash2(seed, std::uint64_t{block ^ 0x424c5545u});  // "BLUE"
+    out[0] = (static_cast<std::uint32_t>(h) + ((frame * 0xc13fa9a9u) >> 25)) & (kBlueTileSize - 1);
+    out[1] = (static_cast<std::uint32_t>(h >> 32) + ((frame * 0x91e10da6u) >> 25)) & (kBlueTileSize - 1);
+}
+
+/// What a block keeps for one sample: a key (the entry's hashed key, or the epoch's) and what
+/// the sample index became in the block.
+struct BluePrepared {
+    std::uint32_t key = 0, index = 0;
+};
+
+}  // namespace detail
+
+/// The Owen-scrambled Sobol family (the core's `OwenSobolBlue`): a block is Sobol dimensions
+/// 0 … 3, each Owen-scrambled by its own seed, the index shuffled by a nested uniform shuffle,
+/// all hashed from the entry's key. Table: the four dimensions' matrices (512 bytes).
+struct OwenSobolBlue {
+    static constexpr const char* name = "owen-sobol-bn";
+    NYQ_HD static detail::BluePrepared prepare(std::uint32_t entry, std::uint32_t index) {
+        detail::BluePrepared p;
+        p.key = mix32((entry >> 8) ^ 0x424c4b00u);  // "BLK"
+        p.index = IndexShuffle::make(mix32(p.key ^ 0x53485546u)).rev(index ^ (entry & 0xffu));  // "SHUF"
+        return p;
+    }
+    NYQ_HD static float value(const detail::BluePrepared& p, std::uint32_t c) {
+        return fraction_to_f32(
+            detail::reverse_bits(lk_hash(detail::sobol_product_rev<4>(c, p.index), detail::dim_seed(p.key, c))));
+    }
+};
+
+/// The PMJ(0,2) family (the core's `Pmj02Blue`): a block is two pairs, each a point of the
+/// PMJ(0,2) table at a nested uniform shuffle of the index's low 16 bits, its coordinates XOR-ed
+/// with a digital shift; shuffles and shifts hashed from the entry's key and, past 65536
+/// samples, the epoch (`index >> 16`). The points are rebuilt (`pmj02_point`), not read.
+struct Pmj02Blue {
+    static constexpr const char* name = "pmj02-bn";
+    NYQ_HD static detail::BluePrepared prepare(std::uint32_t entry, std::uint32_t index) {
+        const std::uint32_t i = index ^ (entry & 0xffu);
+        const std::uint32_t key = mix32((entry >> 8) ^ 0x504d4a00u);  // "PMJ"
+        const std::uint32_t epoch = i >> 16;
+        detail::BluePrepared p;
+        p.key = epoch == 0 ? key : mix32(key ^ mix32(epoch));
+        const std::uint32_t p0 =
+            detail::reverse_bits(IndexShuffle::make(mix32(p.key ^ 0x53485546u)).rev(i & 0xffffu)) & 0xffffu;
+        const std::uint32_t p1 =
+            detail::reverse_bits(IndexShuffle::make(mix32(p.key ^ 0x53485547u)).rev(i & 0xffffu)) & 0xffffu;
+        p.index = p0 | (p1 << 16);
+        return p;
+    }
+    NYQ_HD static float value(const detail::BluePrepared& p, std::uint32_t c) {
+        const std::uint32_t point = (p.index >> (16 * (c / 2))) & 0xffffu;
+        const std::uint32_t shift = mix32(p.key ^ ((c + 1) * 0x9e3779b9u));
+        return fraction_to_f32(pmj02_point(kPmj02TableSeed, point, c & 1) ^ shift);
+    }
+};
+
+/// The rank-1 lattice family (the core's `LatticeBlue`): sample i of a block is
+/// `frac(φ₂(s(i)) · g + Δ)`, `g` the generating vector (Hickernell, Kritzer, Kuo & Nuyens 2011),
+/// `s` a nested uniform shuffle and `Δ` a Cranley–Patterson shift hashed from the entry's key,
+/// in 32-bit fixed point.
+struct LatticeBlue {
+    static constexpr const char* name = "lattice-bn";
+    NYQ_HD static detail::BluePrepared prepare(std::uint32_t entry, std::uint32_t index) {
+        detail::BluePrepared p;
+        p.key = mix32((entry >> 8) ^ 0x4c415400u);  // "LAT"
+        p.index = IndexShuffle::make(mix32(p.key ^ 0x53485546u)).rev(index ^ (entry & 0xffu));
+        return p;
+    }
+    NYQ_HD static float value(const detail::BluePrepared& p, std::uint32_t c) {
+        const std::uint32_t g[4] = {1u, 364981u, 245389u, 97823u};
+        return fraction_to_f32(p.index * g[c] + mix32(p.key ^ ((c + 1) * 0x9e3779b9u)));
+    }
+};
+
+/// Samples whose error is blue noise across the screen (the core's `BlueNoiseSampler<F>`): each
+/// pixel's samples are one of family `F`'s randomised nets, laid out by `F`'s optimised
+/// 128 × 128 tile. Dimensions go in 4-D blocks; block `b` at pixel `p` reads the tile entry at
+/// `p + offset(seed, frame, b)`, toroidally. Every sample index is a new sample.
+///
+/// The header does not carry the tiles (48 KiB each in the core, regenerated by its optimiser):
+/// the caller passes a pointer to the family's 16384 entries, row-major, `key << 8 | rank` —
+/// `nyq_blue_tile(F::name, buf, 16384)` from the C API, or a third of `nyquist_gpu::blue_tiles()`
+/// — which must outlive the sampler (in a CUDA kernel: a device pointer). A null tile makes
+/// `valid()` false.
+template <class F>
+struct BlueNoiseSampler {
+    std::uint32_t spp = 0;
+    std::uint64_t seed = 0;
+    std::uint32_t frame = 0;
+    const std::uint32_t* tile = nullptr;
+    std::uint32_t offsets[2][2] = {};
+    std::uint32_t px = 0, py = 0, index = 0, dim = 0;
+    detail::BluePrepared blocks[2];
+
+    BlueNoiseSampler() = default;
+    NYQ_HD BlueNoiseSampler(std::uint32_t spp_, std::uint64_t seed_, const std::uint32_t* tile_,
+                            std::uint32_t frame_ = 0)
+        : spp(spp_), seed(seed_), frame(frame_), tile(tile_) {
+        detail::blue_offset(seed, frame, 0, offsets[0]);
+        detail::blue_offset(seed, frame, 1, offsets[1]);
+    }
+
+    NYQ_HD bool valid() const { return spp != 0 && tile != nullptr; }
+    NYQ_HD std::uint32_t samples_per_pixel() const { return spp; }
+
+    /// The tile entry at `(x, y)`, modulo the tile's side.
+    NYQ_HD std::uint32_t entry(std::uint32_t x, std::uint32_t y) const {
+        return tile[(y & (kBlueTileSize - 1)) * kBlueTileSize + (x & (kBlueTileSize - 1))];
+    }
+    NYQ_HD detail::BluePrepared block_at(const std::uint32_t off[2]) const {
+        return F::prepare(entry(px + off[0], py + off[1]), index);
+    }
+
+    NYQ_HD void start_pixel_sample(std::uint32_t x, std::uint32_t y, std::uint32_t sample_index,
+                                   std::uint32_t d) {
+        px = x;
+        py = y;
+        index = sample_index;
+        dim = d;
+        blocks[0] = block_at(offsets[0]);
+        blocks[1] = block_at(offsets[1]);
+    }
+
+    NYQ_HD float sample(std::uint32_t d) const {
+        const std::uint32_t b = d / 4, c = d % 4;
+        if (b < 2) return F::value(blocks[b], c);
+        std::uint32_t off[2];
+        detail::blue_offset(seed, frame, b, off);
+        return F::value(block_at(off), c);
+    }
+
+    NYQ_HD float get_1d() {
+        const std::uint32_t d = dim;
+        dim = d + 1;
+        return sample(d);
+    }
+    NYQ_HD Float2 get_2d() {
+        const std::uint32_t d = dim;
+        dim = d + 2;
+        return Float2{{sample(d), sample(d + 1)}};
+    }
+    NYQ_HD Float2 get_pixel_2d() {
+        if (dim < 2) dim = 2;
+        return Float2{{sample(0), sample(1)}};
+    }
+    NYQ_HD CameraSample camera_sample(std::uint32_t x, std::uint32_t y, std::uint32_t sample_index) {
+        return detail::camera_by_parts(*this, x, y, sample_index);
+    }
+};
+
+/// `owen-sobol-bn`: Owen-scrambled Sobol per pixel, blue-noise error across pixels.
+using OwenSobolBlueSampler = BlueNoiseSampler<OwenSobolBlue>;
+/// `pmj02-bn`: PMJ(0,2) per pixel (digitally shifted), blue-noise error across pixels.
+using Pmj02BlueSampler = BlueNoiseSampler<Pmj02Blue>;
+/// `lattice-bn`: a rank-1 lattice per pixel, blue-noise error across pixels.
+using LatticeBlueSampler = BlueNoiseSampler<LatticeBlue>;
 
 }  // namespace nyquist
 

@@ -5,6 +5,7 @@
 // 1. Samplers and sequences the C API builds (`nyq_sampler_create` by name,
 //    `nyq_sequence_sample`): random (pixel, sample index, dimension, seed) queries drawn here,
 //    each answered by libnyquist_capi.a and by the header, compared bit for bit.
+//    The blue-noise samplers take their tiles from the C API too (`nyq_blue_tile`).
 // 2. Configurations the C API cannot name (other scrambles, frames, the Owen-Sobol sequence):
 //    the Rust test wrote the queries and the core's answers to EXPECTED_FILE; the header must
 //    reproduce every value.
@@ -439,6 +440,58 @@ bool pmj02_capi(Rng& rng) {
     return true;
 }
 
+/// The blue-noise samplers' tiles, from the C API (`nyq_blue_tile`), in the order of
+/// `kBlueNames`.
+const char* const kBlueNames[3] = {"owen-sobol-bn", "pmj02-bn", "lattice-bn"};
+std::uint32_t g_blue_tiles[3][kBlueTileEntries];
+
+bool load_blue_tiles() {
+    for (int f = 0; f < 3; ++f)
+        if (!ok(nyq_blue_tile(kBlueNames[f], g_blue_tiles[f], kBlueTileEntries), kBlueNames[f]))
+            return false;
+    return true;
+}
+
+template <class S>
+bool blue_capi_family(std::uint32_t f, Rng& rng) {
+    char label[64];
+    std::snprintf(label, sizeof label, "%s (C API)", kBlueNames[f]);
+    Tally t(label);
+    const std::uint32_t spps[4] = {1, 16, 64, 1000};
+    for (std::uint32_t k = 0; k < 8; ++k) {
+        const std::uint64_t seed = k < 2 ? k : rng.next();
+        const std::uint32_t spp = spps[k % 4];
+        if (!capi_sampler(kBlueNames[f], 8, 8, spp, seed, S(spp, seed, g_blue_tiles[f]), kQueries / g_scale, rng))
+            return false;
+    }
+    t.print();
+    return true;
+}
+
+/// docs/gpu.md's blue-noise example, as written there (the pixel and index are the example's
+/// free names), held to the C API's sampler.
+bool blue_docs_example() {
+    const std::uint32_t px = 300, py = 7, sample_index = 5;
+    static std::uint32_t tile[nyquist::kBlueTileEntries];
+    nyq_blue_tile("pmj02-bn", tile, nyquist::kBlueTileEntries);      // NYQ_OK
+    nyquist::Pmj02BlueSampler b(/*spp*/ 16, /*seed*/ 7, tile, /*frame*/ 0);
+    nyquist::CameraSample cb = b.camera_sample(px, py, sample_index);
+    NyqSampler* h = nullptr;
+    NyqCameraSample c{};
+    bool good = b.valid() && ok(nyq_sampler_create("pmj02-bn", 8, 8, 16, 7, &h), "docs example") &&
+                ok(nyq_sampler_camera_sample(h, px, py, sample_index, &c), "docs example");
+    nyq_sampler_destroy(h);
+    good = good && same(c.p_film[0], cb.p_film[0]) && same(c.p_film[1], cb.p_film[1]) &&
+           same(c.time, cb.time) && same(c.lens[0], cb.lens[0]) && same(c.lens[1], cb.lens[1]);
+    if (!good) std::printf("MISMATCH: docs/gpu.md's blue-noise example\n");
+    return good;
+}
+
+bool blue_capi(Rng& rng) {
+    return load_blue_tiles() && blue_docs_example() && blue_capi_family<OwenSobolBlueSampler>(0, rng) &&
+           blue_capi_family<Pmj02BlueSampler>(1, rng) && blue_capi_family<LatticeBlueSampler>(2, rng);
+}
+
 // ---------------------------------------------------------------------------------------------
 // Part 2: the expected file.
 
@@ -454,6 +507,7 @@ enum Kind : std::uint32_t {
     kZSobolSampler = 1,
     kSobolSampler = 2,
     kHaltonSampler = 3,
+    kBlueNoiseSampler = 4,  // `dims` names the family: 0 owen-sobol-bn, 1 pmj02-bn, 2 lattice-bn
     kOwenSobolSequence = 10,
     kPmj02Sequence = 11,
 };
@@ -567,6 +621,13 @@ bool expected_file(const char* path) {
             case kHaltonSampler:
                 good = file_sampler(in, label, HaltonSampler<>(w, h, spp, how, seed), count);
                 break;
+            case kBlueNoiseSampler: {
+                const std::uint32_t* tile = dims < 3 ? g_blue_tiles[dims] : nullptr;
+                if (dims == 0) good = file_sampler(in, label, OwenSobolBlueSampler(spp, seed, tile, frame), count);
+                else if (dims == 1) good = file_sampler(in, label, Pmj02BlueSampler(spp, seed, tile, frame), count);
+                else good = file_sampler(in, label, LatticeBlueSampler(spp, seed, tile, frame), count);
+                break;
+            }
             case kPmj02Sequence:
                 good = file_pmj02_sequence(in, label, scramble != 0, seed, count);
                 break;
@@ -586,7 +647,8 @@ bool expected_file(const char* path) {
     }
     std::fclose(f);
     const char* names[16] = {"owen-sobol frames 1+ (core)", "zsobol none/permute-digits/owen (core)",
-                             "sobol fast-owen/owen (core)", "halton fast-owen/owen (core)"};
+                             "sobol fast-owen/owen (core)", "halton fast-owen/owen (core)",
+                             "owen-sobol-bn, pmj02-bn, lattice-bn frames 1+ (core)"};
     names[10] = "OwenSobol sequence sample + sample_4d (core)";
     names[11] = "Pmj02 sequence plain + scrambled (core)";
     for (int k = 0; k < 16; ++k)
@@ -607,7 +669,7 @@ int main(int argc, char** argv) {
                       sobol_sequence_capi(rng) && random_capi(rng) &&
                       stratified_capi(rng) && lattice_capi(rng) && lattice_sequences_capi(rng) &&
                       halton_capi(rng) && halton_sequence_capi(rng) && pmj02_capi(rng) &&
-                      expected_file(argv[1]);
+                      blue_capi(rng) && expected_file(argv[1]);
     std::printf("%s: %" PRIu64 " values compared\n", good ? "parity ok" : "parity FAILED", g_total);
     return good ? 0 : 1;
 }

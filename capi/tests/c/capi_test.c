@@ -375,6 +375,36 @@ static void pixel_stats(void) {
 
 /* ---- error codes ----------------------------------------------------------------------- */
 
+/* nyq_blue_tile: each blue-noise sampler's tile, a few entries, whether its keys are a
+   permutation of 0 .. 16383, whether the entry past the tile was left alone, and the statuses
+   of bad calls. */
+static uint32_t blue_tile_buf[NYQ_BLUE_TILE_ENTRIES + 1];
+static unsigned char blue_key_seen[NYQ_BLUE_TILE_ENTRIES];
+
+static void blue_tiles(void) {
+    const char *names[4] = {"owen-sobol-bn", "pmj02-bn", "lattice-bn", "LATTICE-BN"};
+    for (int k = 0; k < 4; ++k) {
+        blue_tile_buf[NYQ_BLUE_TILE_ENTRIES] = 0xdeadbeefu;
+        CHECK(nyq_blue_tile(names[k], blue_tile_buf, NYQ_BLUE_TILE_ENTRIES + 1));
+        memset(blue_key_seen, 0, sizeof blue_key_seen);
+        int permutation = 1;
+        for (size_t i = 0; i < NYQ_BLUE_TILE_ENTRIES; ++i) {
+            uint32_t key = blue_tile_buf[i] >> 8;
+            if (key >= NYQ_BLUE_TILE_ENTRIES || blue_key_seen[key]) permutation = 0;
+            else blue_key_seen[key] = 1;
+        }
+        printf("blue %s %" PRIu32 " %" PRIu32 " %" PRIu32 " %" PRIu32 " %d %d\n", names[k],
+               blue_tile_buf[0], blue_tile_buf[127], blue_tile_buf[77 * 128 + 5],
+               blue_tile_buf[NYQ_BLUE_TILE_ENTRIES - 1], permutation,
+               blue_tile_buf[NYQ_BLUE_TILE_ENTRIES] == 0xdeadbeefu);
+    }
+    put_status("blue_null_name", nyq_blue_tile(NULL, blue_tile_buf, NYQ_BLUE_TILE_ENTRIES));
+    put_status("blue_null_out", nyq_blue_tile("pmj02-bn", NULL, NYQ_BLUE_TILE_ENTRIES));
+    put_status("blue_bad_name", nyq_blue_tile("owen-sobol", blue_tile_buf, NYQ_BLUE_TILE_ENTRIES));
+    put_status("blue_short", nyq_blue_tile("pmj02-bn", blue_tile_buf, NYQ_BLUE_TILE_ENTRIES - 1));
+    put_status("blue_zero", nyq_blue_tile("pmj02-bn", blue_tile_buf, 0));
+}
+
 static int ignore_eval_calls;
 static float never_called(void *user, float x, float y) {
     (void)user;
@@ -479,6 +509,7 @@ int main(void) {
     samplers();
     filters();
     pixel_stats();
+    blue_tiles();
     errors();
     printf("done\n");
     return 0;
