@@ -131,7 +131,7 @@ pub fn crop(scene: Scene, size: [u32; 2]) -> [u32; 4] {
     let cw = w.div_ceil(2).min(MAX_CROP);
     let ch = h.div_ceil(2).min(MAX_CROP);
     let (x, y) = match scene {
-        Scene::Zoneplate | Scene::Disk | Scene::Stripes => (w / 2, h / 2),
+        Scene::Zoneplate | Scene::Disk | Scene::Stripes | Scene::Dots => (w / 2, h / 2),
         Scene::Checkerboard => (w / 2, ((h * 3) / 10).saturating_sub(ch / 8)),
         Scene::Edge => (w / 2 - cw / 2, h / 2 - ch / 2),
     };
@@ -472,6 +472,7 @@ mod tests {
             Scene::Disk,
             Scene::Edge,
             Scene::Stripes,
+            Scene::Dots,
         ] {
             for size in [[1, 1], [3, 7], [256, 256], [1000, 300]] {
                 let [x, y, w, h] = crop(scene, size);

@@ -573,9 +573,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                     ),
                     _ => "null".to_string(),
                 },
-                spectrum
-                    .as_ref()
-                    .map_or_else(|| "null".to_string(), |s| json_number(s.low_frequency_ratio)),
+                spectrum.as_ref().map_or_else(
+                    || "null".to_string(),
+                    |s| json_number(s.low_frequency_ratio)
+                ),
                 spectrum.as_ref().map_or_else(
                     || "null".to_string(),
                     |s| {
@@ -616,7 +617,13 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 let cells: Vec<String> = s
                     .radial
                     .iter()
-                    .map(|v| if v.is_finite() { format!("{v:.2}") } else { "-".into() })
+                    .map(|v| {
+                        if v.is_finite() {
+                            format!("{v:.2}")
+                        } else {
+                            "-".into()
+                        }
+                    })
                     .collect();
                 writeln!(
                     out,

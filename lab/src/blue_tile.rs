@@ -9,9 +9,13 @@
 //! from the seed.
 //!
 //! The energy is the Gaussian-weighted correlation of neighbouring pixels' errors,
-//! `E = Σ_p Σ_{q ≠ p, |q − p|∞ ≤ 6} exp(−|q − p|²/σ²) e_p · e_q` with `σ = 2.1` (Georgiev and
-//! Fajardo's σ), which is the error image's power seen through a low-pass filter: lowering it
-//! moves the error's power to high frequencies.
+//! `E = Σ_p Σ_{q ≠ p, |q − p|∞ ≤ 6} exp(−|q − p|²/σ²) e_p · e_q` with `σ = 3` pixels, which is
+//! the error image's power seen through a low-pass filter: lowering it moves the error's power
+//! to high frequencies. The filter's response is `exp(−π²σ²f²)`, 0.25 at `f = 1/8` cycle per
+//! pixel, the edge of the band the low-frequency ratio measures: Georgiev and Fajardo's
+//! `σ = 2.1` (response 0.51 there) spends more of the search on frequencies above the band,
+//! and `σ = 4` on a 17 × 17 window less; both left the held-out integrands' error less blue
+//! in the band (`docs/blue-noise.md`).
 //!
 //! **Key stage.** Swapping two pixels' keys swaps their error vectors, so this stage searches
 //! permutations. It keeps `S_p = Σ_q w(q − p) e_q`, so a proposed swap of `p` and `q` costs one
@@ -30,8 +34,8 @@ use nyquist::sampler::screen_blue::{
 
 /// Radius of the energy's window, in pixels (a 13 × 13 window).
 const RADIUS: i32 = 6;
-/// The energy kernel's σ, in pixels.
-const SIGMA: f64 = 2.1;
+/// The energy kernel's σ, in pixels (module docs).
+const SIGMA: f64 = 3.0;
 /// Oriented Heavisides over the first pair of dimensions (the image sample's, in the first
 /// block): most of the energy, as the first pair is what a renderer's error shows most.
 const FIRST_PAIR_HEAVISIDES: usize = 256;
@@ -319,42 +323,33 @@ pub fn optimise(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
     tile
 }
 
-/// The means of the test integrands over samples `0..2^level` of a pixel with `entry`.
-fn level_means(family: Family, tests: &[Test], entry: u32, level: u32) -> Vec<f64> {
-    let mut sums = vec![0f64; tests.len()];
-    let n = 1u32 << level;
-    for i in 0..n {
-        let x = family.values(entry, i);
-        for (s, t) in sums.iter_mut().zip(tests) {
-            *s += t.eval(&x);
-        }
-    }
-    sums.iter().map(|s| s / f64::from(n)).collect()
-}
+/// How many rank bits the rank stage chooses together, from the top ([`choose_ranks`]); bits
+/// past these are chosen one at a time.
+const RANK_CHUNKS: [u32; 3] = [4, 3, 1];
 
-/// Rank bits the rank stage chooses together, from the top ([`choose_ranks`]).
-const JOINT_BITS: u32 = 4;
-
-/// The rank stage's joint step: sets rank bits `low .. levels` of every entry, `low = levels −
-/// min(levels, JOINT_BITS)`, and returns `low`.
-fn choose_top_ranks(
+/// Sets rank bits `low .. high` of every entry (whose bits above are set and below are 0):
+/// each pixel chooses which aligned block of `2^low` of its first `2^high` samples comes
+/// first, by coordinate descent on the summed energy of the errors at levels `low .. high`.
+fn choose_rank_bits(
     spec: &TileSpec,
     tests: &[Test],
     entries: &mut [u32],
     rng: &mut nyquist::rng::DefaultRng,
-) -> u32 {
+    low: u32,
+    high: u32,
+) {
     let t = tests.len();
     let n = entries.len();
-    let top = spec.levels.min(JOINT_BITS);
-    let low = spec.levels - top;
+    let top = high - low;
     let options = 1usize << top;
     let levels = top as usize;
-    // Per pixel and option, the errors at levels low .. levels − 1: option `o` puts the first
-    // 2^l samples in the aligned block of 2^l containing sample o · 2^low.
+    // Per pixel and option, the errors at levels low .. high − 1: option `o` puts the first
+    // 2^l samples in the aligned block of 2^l containing sample o · 2^low (of the samples in
+    // the pixel's current order, whose rank bits from `high` up are set).
     let c = levels * t;
     let rows = per_key(entries, |entry| {
         let mut block = vec![0f64; options * t];
-        for i in 0..1u32 << spec.levels {
+        for i in 0..1u32 << high {
             let x = spec.family.values(entry, i);
             let b = (i >> low) as usize;
             for (j, test) in tests.iter().enumerate() {
@@ -432,17 +427,16 @@ fn choose_top_ranks(
     for (entry, o) in entries.iter_mut().zip(chosen) {
         *entry |= (o as u32) << low;
     }
-    low
 }
 
-/// The rank stage. First the top [`JOINT_BITS`] rank bits together: each pixel chooses which
-/// aligned block of `2^(levels − JOINT_BITS)` of its first `2^levels` samples comes first
-/// (sixteen choices for the shipped spec), to lower the summed energy of the errors at those
-/// levels (16 … 128 spp for the shipped spec), so that 16 and 32 spp get as many choices as
-/// 128 does rather than the one bit the levels above leave them. Then, for the levels below,
-/// from the top down, rank bit `log₂ n` alone (which of two aligned blocks of `n` points the
-/// first `n` samples are, given the bits above) for the level-`n` errors. Both by coordinate
-/// descent over the pixels (eight sweeps in a random order).
+/// The rank stage: rank bits in chunks from the top ([`RANK_CHUNKS`]: bits 4 … 7, then 1 … 3,
+/// then 0 for the shipped spec). For a chunk of bits `low .. high`, each pixel chooses which
+/// aligned block of `2^low` of its first `2^high` samples comes first (sixteen choices for the
+/// top chunk) to lower the summed energy of the errors at levels `low .. high`, by coordinate
+/// descent over the pixels (eight sweeps in a random order). Choosing bits together gives the
+/// lower levels of a chunk (16 and 32 spp in the top one) as many choices as its highest
+/// level, where one bit at a time, from the top, would leave each level the one bit the
+/// levels above had not fixed.
 ///
 /// Here the energy keeps each pixel's own term, `Σ_p |e_p|²` (the kernel's weight at distance
 /// 0 is 1): the key stage permutes the error vectors, which leaves that sum alone, but a rank
@@ -450,75 +444,13 @@ fn choose_top_ranks(
 /// neighbours would win.
 fn choose_ranks(spec: &TileSpec, entries: &mut [u32]) {
     let tests = tests(spec.seed);
-    let t = tests.len();
-    let size = spec.size;
-    let n = entries.len();
-    let win = window();
     let mut rng = default_rng(spec.seed ^ 0x5241_4e4b); // "RANK"
-    let low = choose_top_ranks(spec, &tests, entries, &mut rng);
-    for level in (0..low).rev() {
-        let bit = 1u32 << level;
-        let mut e0 = vec![0f32; n * t];
-        let mut e1 = vec![0f32; n * t];
-        let rows = per_key(entries, |entry| {
-            (
-                level_means(spec.family, &tests, entry, level),
-                level_means(spec.family, &tests, entry | bit, level),
-            )
-        });
-        for (p, (a, b)) in rows.into_iter().enumerate() {
-            for j in 0..t {
-                e0[p * t + j] = a[j] as f32;
-                e1[p * t + j] = b[j] as f32;
-            }
-        }
-        // One centring and scale per integrand, from both choices.
-        for j in 0..t {
-            let all = || (0..n).flat_map(|p| [e0[p * t + j], e1[p * t + j]]);
-            let mean = all().map(f64::from).sum::<f64>() / (2 * n) as f64;
-            let var = all().map(|v| (f64::from(v) - mean).powi(2)).sum::<f64>() / (2 * n) as f64;
-            let scale = if var > 0.0 { 1.0 / var.sqrt() } else { 0.0 };
-            for p in 0..n {
-                for e in [&mut e0, &mut e1] {
-                    e[p * t + j] = ((f64::from(e[p * t + j]) - mean) * scale) as f32;
-                }
-            }
-        }
-        let mut chosen = vec![false; n];
-        let mut s = blurred(&e0, t, size);
-        for _ in 0..8 {
-            for _ in 0..n {
-                let p = uniform_below(&mut rng, n as u32) as usize;
-                let (from, to) = if chosen[p] { (&e1, &e0) } else { (&e0, &e1) };
-                let d: Vec<f64> = (0..t)
-                    .map(|j| f64::from(to[p * t + j]) - f64::from(from[p * t + j]))
-                    .collect();
-                // The change of the filtered power with the pixel's own term (kernel weight 1
-                // at distance 0): without it a choice could lower the neighbours' correlation
-                // by raising its own error, and the per-pixel RMSE would grow.
-                let own: f64 = (0..t)
-                    .map(|j| f64::from(to[p * t + j]).powi(2) - f64::from(from[p * t + j]).powi(2))
-                    .sum();
-                let delta: f64 = 2.0 * (0..t).map(|j| d[j] * s[p * t + j]).sum::<f64>() + own;
-                if delta >= 0.0 {
-                    continue;
-                }
-                chosen[p] = !chosen[p];
-                let m = size as i32;
-                let (cx, cy) = ((p as i32) % m, (p as i32) / m);
-                for &(dx, dy, w) in &win {
-                    let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
-                    for j in 0..t {
-                        s[r * t + j] += w * d[j];
-                    }
-                }
-            }
-        }
-        for (e, c) in entries.iter_mut().zip(chosen) {
-            if c {
-                *e |= bit;
-            }
-        }
+    let mut high = spec.levels;
+    let mut chunks = RANK_CHUNKS.iter();
+    while high > 0 {
+        let low = high.saturating_sub(*chunks.next().unwrap_or(&1));
+        choose_rank_bits(spec, &tests, entries, &mut rng, low, high);
+        high = low;
     }
 }
 
@@ -695,10 +627,7 @@ pub fn held_out_ratios(spec: &TileSpec, keys: &[u32], max: u32) -> Vec<Vec<f64>>
                     let img: Vec<f64> = keys
                         .iter()
                         .map(|&k| {
-                            (0..n)
-                                .map(|i| f(&spec.family.values(k, i)))
-                                .sum::<f64>()
-                                / f64::from(n)
+                            (0..n).map(|i| f(&spec.family.values(k, i))).sum::<f64>() / f64::from(n)
                         })
                         .collect();
                     low_frequency_ratio(&img, size)

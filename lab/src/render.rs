@@ -681,6 +681,9 @@ pub fn render_bytes(scene: Scene, size: [u32; 2], metrics: bool) -> u64 {
 pub fn reference_kind(scene: Scene) -> String {
     match scene {
         Scene::Zoneplate => "exact pixel means (box filter, Fresnel integrals)".into(),
+        Scene::Dots => format!(
+            "exact pixel means ½ (box filter; other filters a {REFERENCE_STRATA}x{REFERENCE_STRATA} spp stratified render)"
+        ),
         _ => format!(
             "pixel means from a {REFERENCE_STRATA}x{REFERENCE_STRATA} spp stratified box render"
         ),
@@ -776,6 +779,10 @@ pub fn reference_with_source(
             crate::scene::zoneplate_filtered_reference(size[0], size[1], filter.as_dyn())
         };
         return Ok(exact.map(|r| (r, ReferenceSource::Exact)));
+    }
+    if scene == Scene::Dots && filter.to_string() == boxed.to_string() {
+        let n = size[0] as usize * size[1] as usize;
+        return Ok(Some((vec![0.5; n], ReferenceSource::Exact)));
     }
     let spec = filter.to_string();
     let key: String = spec

@@ -31,6 +31,10 @@ pub enum Scene {
     /// Stripes moving during the shutter (uses the time sample): motion blur vs strobing.
     #[cfg_attr(feature = "clap", value(alias = "moving-stripes"))]
     Stripes,
+    /// A disk of area ½ centred in every pixel: every pixel integrates the same function of its
+    /// image sample, so the error image shows how the sampler lays its errors out across
+    /// pixels (blue noise or white); exact pixel means ½.
+    Dots,
 }
 
 impl Scene {
@@ -42,6 +46,7 @@ impl Scene {
             Scene::Disk => "disk",
             Scene::Edge => "edge",
             Scene::Stripes => "stripes",
+            Scene::Dots => "dots",
         }
     }
 
@@ -76,9 +81,20 @@ impl Scene {
                 let u = (x - speed * t) / period;
                 if u - u.floor() < 0.5 { 1.0 } else { 0.0 }
             }
+            Scene::Dots => {
+                let (dx, dy) = (x - x.floor() - 0.5, y - y.floor() - 0.5);
+                if dx * dx + dy * dy < DOT_RADIUS2 {
+                    1.0
+                } else {
+                    0.0
+                }
+            }
         }
     }
 }
+
+/// The squared radius of [`Scene::Dots`]' disks: `1 / (2π)`, area ½.
+const DOT_RADIUS2: f64 = 0.5 / std::f64::consts::PI;
 
 /// What a scene shows at a film position besides its radiance, for the film's extra channels
 /// ([`Scene::surface`]).
@@ -422,6 +438,7 @@ mod tests {
             Scene::Disk,
             Scene::Edge,
             Scene::Stripes,
+            Scene::Dots,
         ] {
             for k in 0..500 {
                 let (x, y, t) = (k as f64 * 0.37 % 64.0, k as f64 * 0.71 % 48.0, 0.3);
@@ -436,6 +453,11 @@ mod tests {
         // Stripes: the top row does not move, the bottom row moves.
         let top = |t| Scene::Stripes.eval(1.0, 0.0, t, 64.0, 48.0);
         assert_eq!(top(0.0), top(0.9));
+        // Dots: a pixel's centre is inside, its corners outside, in every pixel.
+        assert_eq!(Scene::Dots.eval(7.5, 3.5, 0.0, 64.0, 48.0), 1.0);
+        assert_eq!(Scene::Dots.eval(7.01, 3.01, 0.0, 64.0, 48.0), 0.0);
+        assert_eq!(Scene::Dots.eval(7.5 + 0.398, 3.5, 0.0, 64.0, 48.0), 1.0);
+        assert_eq!(Scene::Dots.eval(7.5 + 0.399, 3.5, 0.0, 64.0, 48.0), 0.0);
     }
 
     #[test]

@@ -54,7 +54,11 @@ fn the_error_is_blue_where_the_plain_family_is_white<F: BlueFamily>() {
     for spp in [1, 4, 16] {
         for (k, (name, f)) in HELD_OUT.iter().enumerate() {
             let w = low_frequency_ratio(&plain_estimates::<F>(spp, *f), SIDE as usize);
-            assert!((0.75..1.25).contains(&w), "{} {name}, {spp} spp: {w}", F::NAME);
+            assert!(
+                (0.75..1.25).contains(&w),
+                "{} {name}, {spp} spp: {w}",
+                F::NAME
+            );
             for dim in [0, 4] {
                 let mut blue = BlueNoiseSampler::<F>::new(spp, 0).unwrap();
                 let b = low_frequency_ratio(&estimates(&mut blue, spp, dim, *f), SIDE as usize);
@@ -63,7 +67,11 @@ fn the_error_is_blue_where_the_plain_family_is_white<F: BlueFamily>() {
                     F::NAME
                 );
                 let bound = if k < 2 { 0.8 } else { 1.0 };
-                assert!(b < bound, "{} {name}, dimensions from {dim}, {spp} spp: {b}", F::NAME);
+                assert!(
+                    b < bound,
+                    "{} {name}, dimensions from {dim}, {spp} spp: {b}",
+                    F::NAME
+                );
             }
         }
     }

@@ -218,7 +218,10 @@ mod tests {
                     want.0 += v.0 * a.cos() - v.1 * a.sin();
                     want.1 += v.0 * a.sin() + v.1 * a.cos();
                 }
-                assert!((got.0 - want.0).abs() < 1e-9 && (got.1 - want.1).abs() < 1e-9, "{n} {k}");
+                assert!(
+                    (got.0 - want.0).abs() < 1e-9 && (got.1 - want.1).abs() < 1e-9,
+                    "{n} {k}"
+                );
             }
         }
     }

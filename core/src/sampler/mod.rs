@@ -132,10 +132,12 @@ pub use named::{
     canonical_name, continues, spp_limit, strata,
 };
 pub use owen_sobol::OwenSobolSampler;
-pub use screen_blue::{BlueNoiseSampler, LatticeBlueSampler, OwenSobolBlueSampler, Pmj02BlueSampler};
 pub(crate) use pmj02::Keys as Pmj02Keys;
 pub use pmj02::Pmj02Sampler;
 pub use random::RandomSampler;
+pub use screen_blue::{
+    BlueNoiseSampler, LatticeBlueSampler, OwenSobolBlueSampler, Pmj02BlueSampler,
+};
 pub use sobol::SobolSampler;
 pub use stratified::{Jitter, StratifiedSampler};
 pub use zero_two::ZeroTwoSampler;

@@ -5,8 +5,9 @@ use core::fmt;
 
 use super::{
     AdaptiveSampler, BestCandidateSampler, DitheredSampler, HaltonSampler, HammersleySampler,
-    Jitter, LatticeSampler, MaskView, OwenSobolBlueSampler, OwenSobolSampler, Pmj02Sampler, Pmj02BlueSampler, LatticeBlueSampler,
-    RandomSampler, Sampler, SobolSampler, StratifiedSampler, ZSobolSampler, ZeroTwoSampler,
+    Jitter, LatticeBlueSampler, LatticeSampler, MaskView, OwenSobolBlueSampler, OwenSobolSampler,
+    Pmj02BlueSampler, Pmj02Sampler, RandomSampler, Sampler, SobolSampler, StratifiedSampler,
+    ZSobolSampler, ZeroTwoSampler,
 };
 use crate::scramble::Scramble;
 

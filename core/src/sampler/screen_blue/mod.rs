@@ -63,7 +63,9 @@ fn read(tile: &TileBytes, x: u32, y: u32) -> u32 {
 /// let v = LatticeBlue::values(e, 0);
 /// assert!(v.iter().all(|x| (0.0..1.0).contains(x)));
 /// ```
-pub trait BlueFamily: sealed::Sealed + Copy + core::fmt::Debug + Default + Send + Sync + 'static {
+pub trait BlueFamily:
+    sealed::Sealed + Copy + core::fmt::Debug + Default + Send + Sync + 'static
+{
     /// A 4-D block's randomisation, built once per pixel and block from an entry.
     type Block: Copy + core::fmt::Debug + Default + Send + Sync;
     /// What a sample index becomes in a block before its four values are read (the shuffled

@@ -84,7 +84,8 @@ impl BlueFamily for Pmj02Blue {
     fn index(b: &Pmj02Block, index: u32) -> Pmj02Index {
         let index = index ^ b.rank;
         let epoch = index >> 16;
-        let point = |b: &Pmj02Block, p: usize| (b.shuffles[p].rev(index & 0xffff).reverse_bits()) as u16;
+        let point =
+            |b: &Pmj02Block, p: usize| (b.shuffles[p].rev(index & 0xffff).reverse_bits()) as u16;
         let points = if epoch == 0 {
             [point(b, 0), point(b, 1)]
         } else {
@@ -118,7 +119,7 @@ mod tests {
         let entry = Pmj02Blue::entry;
         assert_eq!(
             [entry(0, 0), entry(127, 0), entry(5, 77)],
-            [0x06_0344, 0x20_c19d, 0x0c_e40c]
+            [0x0a_0f06, 0x0d_f7c0, 0x26_8e01]
         );
         assert_eq!(entry(5 + 128, 77 + 256), entry(5, 77));
         let mut got: Vec<u32> = (0..TILE_SIZE * TILE_SIZE)

@@ -219,8 +219,13 @@ mod tests {
                         assert_eq!(cells.len(), n as usize, "{} {pixel:?} {block} {c}", F::NAME);
                     }
                     for &p in nets {
-                        let pair: Vec<[f32; 2]> = v.iter().map(|x| [x[2 * p], x[2 * p + 1]]).collect();
-                        assert!(is_zero_two_net(&pair), "{} {pixel:?} block {block} {n}", F::NAME);
+                        let pair: Vec<[f32; 2]> =
+                            v.iter().map(|x| [x[2 * p], x[2 * p + 1]]).collect();
+                        assert!(
+                            is_zero_two_net(&pair),
+                            "{} {pixel:?} block {block} {n}",
+                            F::NAME
+                        );
                     }
                 }
             }
@@ -288,49 +293,50 @@ mod tests {
             s.start_pixel_sample([3, 4], 5, 0);
             (0..10).map(|_| s.get_1d().to_bits()).collect()
         }
-        assert_eq!(
+        let got = [
             ten::<OwenSobolBlue>(),
-            [
-                0x3e5a_e6b4,
-                0x3f15_21e8,
-                0x3e03_05a0,
-                0x3f13_f8bb,
-                0x3eb3_a0a6,
-                0x3f6c_1d19,
-                0x3e9a_b0ac,
-                0x3f6c_2a72,
-                0x3d32_b310,
-                0x3f27_ee70
-            ]
-        );
-        assert_eq!(
             ten::<Pmj02Blue>(),
-            [
-                1_061_516_950,
-                1_059_494_548,
-                1_046_989_728,
-                1_060_253_398,
-                1_064_334_988,
-                1_059_299_732,
-                1_058_697_332,
-                1_050_304_910,
-                1_057_479_306,
-                1_058_857_318
-            ]
-        );
-        assert_eq!(
             ten::<LatticeBlue>(),
+        ];
+        assert_eq!(
+            got,
             [
-                1_060_228_315,
-                1_055_284_208,
-                1_050_922_756,
-                1_061_416_363,
-                1_058_803_810,
-                1_064_857_428,
-                1_043_712_032,
-                1_049_959_076,
-                1_059_951_959,
-                1_042_088_824
+                [
+                    0x3f71_0157,
+                    0x3f55_303b,
+                    0x3d4e_8d10,
+                    0x3f21_3c8c,
+                    0x3e92_b99e,
+                    0x3f51_fd77,
+                    0x3f14_3d0e,
+                    0x3f2a_a3cb,
+                    0x3f1e_21d4,
+                    0x3f31_505d
+                ],
+                [
+                    0x3e99_c838,
+                    0x3e19_7d28,
+                    0x3f58_6ada,
+                    0x3f6c_9901,
+                    0x3b9f_df00,
+                    0x3f5b_05c2,
+                    0x3f36_1e5a,
+                    0x3f57_4edf,
+                    0x3f39_e27c,
+                    0x3e8b_93d4
+                ],
+                [
+                    0x3f0a_2b7c,
+                    0x3d7f_4fc0,
+                    0x3f59_add2,
+                    0x3ec3_b9b0,
+                    0x3f40_5806,
+                    0x3efe_05b8,
+                    0x3ee3_ba24,
+                    0x3e10_f804,
+                    0x3ed0_c812,
+                    0x3f67_ee59
+                ]
             ]
         );
     }
