@@ -546,13 +546,13 @@ fn permute_keys(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
 }
 
 /// The low-frequency ratio of a `size`² image
-/// ([`ErrorSpectrum::low_frequency_ratio`](nyquist_film::error_spectrum::ErrorSpectrum)): the
+/// ([`ErrorSpectrum::low_frequency_ratio`](crate::error_spectrum::ErrorSpectrum)): the
 /// mean periodogram power at the frequencies `0 < |f| < size/8` (below a quarter of the Nyquist
 /// radius), divided by the mean over every frequency but 0, which is what white noise of the
 /// same variance has at every frequency. Blue error is well below 1; white error near 1. An
 /// image with no error has no spectrum: `NaN`.
 pub fn low_frequency_ratio(image: &[f64], size: usize) -> f64 {
-    nyquist_film::error_spectrum::error_spectrum(image, size as u32, size as u32)
+    crate::error_spectrum::error_spectrum(image, size as u32, size as u32)
         .map_or(f64::NAN, |s| s.low_frequency_ratio)
 }
 

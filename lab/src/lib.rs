@@ -21,6 +21,7 @@
 pub mod analysis;
 pub mod blue_tile;
 pub mod clock;
+pub mod error_spectrum;
 pub mod filter;
 pub mod flags;
 pub mod json;

@@ -14,7 +14,7 @@ use nyquist::sampler::{
     LatticeBlueSampler, OwenSobolBlueSampler, OwenSobolSampler, Pmj02BlueSampler, Pmj02Sampler,
     RandomSampler, Sampler,
 };
-use nyquist_film::error_spectrum::error_spectrum;
+use nyquist_lab::error_spectrum::error_spectrum;
 use nyquist_lab::blue_tile::{BlockIntegrand, HELD_OUT};
 
 /// Four values per (pixel, sample), pixel-major, for block `block` (dimensions `4b .. 4b+4`).

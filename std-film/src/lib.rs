@@ -19,7 +19,6 @@ pub mod adaptive;
 mod bounds;
 mod coverage;
 mod error;
-pub mod error_spectrum;
 pub mod extras;
 mod film;
 mod image;

@@ -13,14 +13,14 @@
 //! low radii, and a smooth error image far above 1 there.
 //!
 //! ```
-//! use nyquist_film::error_spectrum::error_spectrum;
+//! use nyquist_lab::error_spectrum::error_spectrum;
 //! // A checkerboard's power is all at the highest frequency: none below a quarter of Nyquist.
 //! let img: Vec<f64> = (0..64).map(|i| f64::from(((i % 8) + (i / 8)) % 2)).collect();
 //! let s = error_spectrum(&img, 8, 8).unwrap();
 //! assert!(s.low_frequency_ratio < 1e-12);
 //! ```
 
-use crate::Error;
+use nyquist_film::Error;
 
 /// Radius of the low band, in cycles per pixel: a quarter of the Nyquist radius.
 pub const LOW_RADIUS: f64 = 0.125;
@@ -54,7 +54,7 @@ pub struct ErrorSpectrum {
 /// has no spectrum (`Error::Config` too).
 ///
 /// ```
-/// use nyquist_film::error_spectrum::error_spectrum;
+/// use nyquist_lab::error_spectrum::error_spectrum;
 /// assert!(error_spectrum(&[0.0; 6], 3, 2).is_err()); // constant
 /// assert!(error_spectrum(&[0.0, 1.0], 3, 2).is_err()); // wrong length
 /// ```
