@@ -3,13 +3,29 @@
 use super::{BlueFamily, TileBytes, read};
 use crate::hash::mix32;
 use crate::math::fraction_to_f32;
-use crate::sequence::{IndexShuffle, PMJ02_TABLE};
+use crate::sequence::IndexShuffle;
+
+/// Coordinate `dim` of the pmj02 table's point `index` ([`PMJ02_TABLE`](crate::sequence::PMJ02_TABLE)):
+/// a read of the 512 KiB table, or, where the build keeps tables and code small (`lazy-tables`,
+/// `small-code`: the explorer, firmware), the point rebuilt from its construction
+/// ([`compact::Pmj02Sampler`](crate::compact::Pmj02Sampler)'s, at most 17 WyRand words), the
+/// same bits.
+#[cfg(not(any(feature = "lazy-tables", feature = "small-code")))]
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn table_point(index: u16, dim: usize) -> u32 {
+    crate::sequence::PMJ02_TABLE[usize::from(index)][dim]
+}
+
+#[cfg(any(feature = "lazy-tables", feature = "small-code"))]
+fn table_point(index: u16, dim: usize) -> u32 {
+    crate::compact::pmj02_point(crate::sequence::PMJ02_TABLE_SEED, u32::from(index), dim)
+}
 
 /// The optimised tile of [`Pmj02Blue`].
 static TILE: TileBytes = include!("pmj02_tile.in");
 
 /// Progressive multi-jittered (0,2) points in 4-D blocks: a block is two pairs, each a point
-/// of the baked pmj02 table ([`PMJ02_TABLE`]) at a nested uniform shuffle of the index, its
+/// of the baked pmj02 table ([`PMJ02_TABLE`](crate::sequence::PMJ02_TABLE)) at a nested uniform shuffle of the index, its
 /// coordinates XOR-ed with a random digital shift, with shuffles and shifts hashed from the
 /// entry's key and the pair. So each pair is a (0, k, 2)-net at every `2^k` (the shuffle maps
 /// the first `2^k` samples onto an aligned block of the table, which is a net, and a digital
@@ -102,8 +118,8 @@ impl BlueFamily for Pmj02Blue {
         } else {
             Pmj02Block::new(b.rank, b.key, i.epoch).shifts[c as usize]
         };
-        let point = PMJ02_TABLE[usize::from(i.points[(c / 2) as usize])];
-        fraction_to_f32(point[(c % 2) as usize] ^ shift)
+        let point = table_point(i.points[(c / 2) as usize], (c % 2) as usize);
+        fraction_to_f32(point ^ shift)
     }
 }
 
