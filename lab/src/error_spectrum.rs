@@ -260,7 +260,7 @@ mod tests {
             (state >> 11) as f64 / (1u64 << 53) as f64
         };
         let mut ratios = Vec::new();
-        let mut radial = vec![0.0; 16];
+        let mut radial = [0.0; 16];
         for _ in 0..16 {
             let img: Vec<f64> = (0..64 * 64).map(|_| next()).collect();
             let s = error_spectrum(&img, 64, 64).unwrap();
@@ -283,7 +283,7 @@ mod tests {
         assert!(error_spectrum(&[1.0, f64::NAN], 2, 1).is_err());
         assert!(error_spectrum(&[1.0, 2.0, 3.0], 2, 1).is_err());
         assert!(error_spectrum(&[2.0; 4], 2, 2).is_err());
-        assert!(error_spectrum(&vec![0.0; 2], MAX_SIDE + 1, 1).is_err());
+        assert!(error_spectrum(&[0.0; 2], MAX_SIDE + 1, 1).is_err());
         assert!(error_spectrum(&[1.0, 2.0], 2, 1).is_ok());
     }
 }

@@ -15,8 +15,8 @@ cd "$here"
 # Probe, budget in bytes, and whether it must be free of f64 routines (`f32`; `f64`: the
 # probe's constructor computes in f64, software routines on a single-precision FPU). The
 # `*_sampler` and `lattice_*` probes are camera-sample loops (`camera_sample`, `get_1d`,
-# `get_2d`): 16 KB each, 8 KB for Owen-Sobol and ZSobol; 64 KB for the blue-noise Owen-Sobol,
-# whose 48 KiB tile no other probe carries.
+# `get_2d`): 16 KB each, 8 KB for Owen-Sobol and ZSobol; 64 KB for the blue-noise Owen-Sobol and
+# lattice, each with its 48 KiB tile and no other probe with any.
 budgets=(
     "halton2 4096 f32"
     "halton16 8192 f32"
@@ -39,6 +39,7 @@ budgets=(
     "lattice_r2 16384 f64"
     "random_sampler 16384 f32"
     "owen_sobol_bn_sampler 65536 f32"
+    "lattice_bn_sampler 65536 f32"
 )
 wasm_budget=8192
 thumb=thumbv7em-none-eabihf

@@ -11,10 +11,10 @@ set -euo pipefail
 cd "$(dirname "$0")/../.."
 
 # The served module's size (after wasm-opt, which is installed here when missing) is held to
-# 484,000 bytes, so growth past it fails the test (docs/web.md has the breakdown and why the
+# 590,000 bytes, so growth past it fails the test (docs/web.md has the breakdown and why the
 # budget is what it is). Without
 # wasm-opt the unoptimised module is held to its own size plus a margin.
-wasm_target=484000
+wasm_target=590000
 playwright_version=1.64.1
 
 if ! command -v wasm-opt >/dev/null && [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null; then
@@ -27,7 +27,7 @@ if command -v wasm-opt >/dev/null; then
     wasm_budget=$wasm_target
 else
     echo "SKIPPED: wasm-opt could not be installed; the module is measured unoptimised"
-    wasm_budget=570000
+    wasm_budget=680000
 fi
 site=$(bash web/build.sh)
 wasm_bytes=$(wc -c <"$site/nyquist_web.wasm")

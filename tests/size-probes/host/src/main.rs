@@ -113,6 +113,12 @@ fn main() -> ExitCode {
                 .with_frame(2);
             indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
         }
+        "lattice_bn_sampler" => {
+            let mut s = nyquist::sampler::LatticeBlueSampler::new(16, 7)
+                .unwrap()
+                .with_frame(2);
+            indices.for_each(|i| camera_loop(&mut s, i, &mut emit));
+        }
         "mitchell" => {
             let t = SeparableTable::<16>::new(&Mitchell::default(), Interpolation::Linear).unwrap();
             for i in indices {

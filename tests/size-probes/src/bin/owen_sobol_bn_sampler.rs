@@ -1,5 +1,5 @@
 //! An `OwenSobolBlueSampler` camera-sample loop (`camera_sample`, `get_1d`, `get_2d`): the
-//! desktop type with its 48 KiB blue-noise tile, the one probe that links the tile.
+//! desktop type with its 48 KiB blue-noise tile, and none of the other families' tiles.
 #![no_std]
 #![no_main]
 use nyquist::sampler::OwenSobolBlueSampler;
