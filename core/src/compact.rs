@@ -691,7 +691,6 @@ impl<const N: usize> Sequence for OwenSobol<N> {
 mod halton_sampler;
 mod owen_sobol_sampler;
 mod pmj02_sampler;
-#[cfg(any(feature = "lazy-tables", feature = "small-code"))]
 pub(crate) use pmj02_sampler::pmj02_point;
 mod sobol_sampler;
 mod zsobol_sampler;

@@ -9,16 +9,14 @@ use crate::sequence::IndexShuffle;
 /// a read of the 512 KiB table, or, where the build keeps tables and code small (`lazy-tables`,
 /// `small-code`: the explorer, firmware), the point rebuilt from its construction
 /// ([`compact::Pmj02Sampler`](crate::compact::Pmj02Sampler)'s, at most 17 WyRand words), the
-/// same bits.
-#[cfg(not(any(feature = "lazy-tables", feature = "small-code")))]
+/// same bits. The branch is a constant, so an optimised build links one of the two.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn table_point(index: u16, dim: usize) -> u32 {
-    crate::sequence::PMJ02_TABLE[usize::from(index)][dim]
-}
-
-#[cfg(any(feature = "lazy-tables", feature = "small-code"))]
-fn table_point(index: u16, dim: usize) -> u32 {
-    crate::compact::pmj02_point(crate::sequence::PMJ02_TABLE_SEED, u32::from(index), dim)
+    if cfg!(any(feature = "lazy-tables", feature = "small-code")) {
+        crate::compact::pmj02_point(crate::sequence::PMJ02_TABLE_SEED, u32::from(index), dim)
+    } else {
+        crate::sequence::PMJ02_TABLE[usize::from(index)][dim]
+    }
 }
 
 /// The optimised tile of [`Pmj02Blue`].
@@ -149,9 +147,20 @@ mod tests {
     }
 
     /// Values past the first epoch differ from the first epoch's at the same index modulo
-    /// 65536, and stay in `[0, 1)`.
+    /// 65536, and stay in `[0, 1)`; one is pinned, and the table point it reads is the
+    /// construction's.
     #[test]
     fn epochs_are_hashed_anew() {
+        assert_eq!(
+            Pmj02Blue::values(initial_entry(9) | 3, (1 << 16) + 5).map(f32::to_bits),
+            [1_050_105_628, 1_064_155_641, 1_056_078_248, 1_057_951_820]
+        );
+        for (i, d) in [(0u16, 0usize), (1, 1), (777, 0), (65535, 1)] {
+            assert_eq!(
+                table_point(i, d),
+                crate::sequence::PMJ02_TABLE[usize::from(i)][d]
+            );
+        }
         let e = initial_entry(9) | 3;
         for i in [0u32, 1, 77] {
             let a = Pmj02Blue::values(e, i);
