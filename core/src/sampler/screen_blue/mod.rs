@@ -30,7 +30,7 @@ mod owen_sobol;
 mod pmj02;
 mod sampler;
 
-pub use lattice::LatticeBlue;
+pub use lattice::{LATTICE_GENERATOR, LatticeBlue};
 pub use owen_sobol::OwenSobolBlue;
 pub use pmj02::Pmj02Blue;
 pub use sampler::{BlueNoiseSampler, LatticeBlueSampler, OwenSobolBlueSampler, Pmj02BlueSampler};
