@@ -15,9 +15,12 @@
 //! ```
 //! use nyquist_lab::error_spectrum::error_spectrum;
 //! // A checkerboard's power is all at the highest frequency: none below a quarter of Nyquist.
-//! let img: Vec<f64> = (0..64).map(|i| f64::from(((i % 8) + (i / 8)) % 2)).collect();
-//! let s = error_spectrum(&img, 8, 8).unwrap();
+//! let img: Vec<f64> = (0..32 * 32).map(|i| f64::from(((i % 32) + (i / 32)) % 2)).collect();
+//! let s = error_spectrum(&img, 32, 32).unwrap();
 //! assert!(s.low_frequency_ratio < 1e-12);
+//! // Its one frequency, (½, ½) cycle per pixel, lies past the annuli (ρ = 0.71 > ½); the
+//! // innermost annulus has no frequency of a 32² grid (NaN).
+//! assert!(s.radial[0].is_nan() && s.radial[1..].iter().all(|&r| r < 1e-12));
 //! ```
 
 use nyquist_film::Error;
