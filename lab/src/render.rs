@@ -690,6 +690,23 @@ pub fn reference_kind(scene: Scene) -> String {
     }
 }
 
+/// Whether `scene`'s reference through `filter` is a closed form, which renders nothing: the
+/// zone plate's (any filter; `None` from [`reference_with_progress`] for a non-separable one)
+/// and, through the box filter, the dots' (½ in every pixel).
+///
+/// ```
+/// use nyquist::filter::FilterKind;
+/// use nyquist_lab::{render::exact_reference, scene::Scene};
+/// let boxed = FilterKind::parse("box").unwrap();
+/// let tent = FilterKind::parse("triangle").unwrap();
+/// assert!(exact_reference(Scene::Dots, &boxed) && !exact_reference(Scene::Dots, &tent));
+/// assert!(exact_reference(Scene::Zoneplate, &tent) && !exact_reference(Scene::Disk, &boxed));
+/// ```
+pub fn exact_reference(scene: Scene, filter: &FilterKind) -> bool {
+    let is_box = FilterKind::parse("box").is_ok_and(|b| b.to_string() == filter.to_string());
+    scene == Scene::Zoneplate || (scene == Scene::Dots && is_box)
+}
+
 /// Where a reference came from ([`reference_with_source`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ReferenceSource {
@@ -780,7 +797,7 @@ pub fn reference_with_source(
         };
         return Ok(exact.map(|r| (r, ReferenceSource::Exact)));
     }
-    if scene == Scene::Dots && filter.to_string() == boxed.to_string() {
+    if scene == Scene::Dots && exact_reference(scene, filter) {
         let n = size[0] as usize * size[1] as usize;
         return Ok(Some((vec![0.5; n], ReferenceSource::Exact)));
     }

@@ -378,7 +378,11 @@ pub fn aliasing(q: &Query, progress: &(dyn Fn(u32, u32) + Sync)) -> Result<Reply
     } else {
         let kept = |k: &String| REFERENCES.with_borrow(|r| r.iter().any(|(key, _)| key == k));
         let distinct = if keys[0] == keys[1] { 1 } else { 2 };
-        keys[..distinct].iter().filter(|k| !kept(k)).count() as u32
+        keys[..distinct]
+            .iter()
+            .zip([&boxed, &filter])
+            .filter(|(k, f)| !kept(k) && !render::exact_reference(scene, f))
+            .count() as u32
     };
     let total = tiles * (to_render + 1);
     let mut done = 0;
