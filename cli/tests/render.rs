@@ -241,13 +241,62 @@ fn other_scenes_measure_against_a_cached_reference() {
     assert!(json_field(&a, "rmse") > 0.0 && json_field(&a, "rmse") < 0.1);
 }
 
+/// The dots scene's error spectrum: blue for `owen-sobol-bn` and `lattice-bn`, white for
+/// `owen-sobol`, exact reference (nothing cached), and the radial power in 16 annuli. On the
+/// 128² tile the white ratio's standard deviation is about 1/√800 = 0.035 (800 frequencies in
+/// the band, half of them independent: ±0.05), so 0.75 … 1.25 is five deviations either side and
+/// a blue sampler's 0.48 … 0.55 (docs/blue-noise.md) sits far below 0.75.
+#[test]
+fn dots_measure_the_screen_space_error_spectrum() {
+    let cache = temp_dir("render-dots");
+    let ratio = |sampler: &str| {
+        let j = metrics(
+            &[
+                "--scene",
+                "dots",
+                "--sampler",
+                sampler,
+                "--spp",
+                "4",
+                "--size",
+                "128x128",
+            ],
+            &cache,
+        );
+        assert!(j.contains("\"error_radial_spectrum\":["), "{j}");
+        let radial = j.split("\"error_radial_spectrum\":[").nth(1).unwrap();
+        let radial = radial.split(']').next().unwrap();
+        assert_eq!(radial.split(',').count(), 16, "{radial}");
+        json_field(&j, "error_low_frequency_ratio")
+    };
+    for blue in ["owen-sobol-bn", "pmj02-bn", "lattice-bn"] {
+        let r = ratio(blue);
+        assert!(r < 0.75, "{blue}: {r}");
+    }
+    let white = ratio("owen-sobol");
+    assert!((0.75..1.25).contains(&white), "{white}");
+    let cached = cache.join("nyquist");
+    assert!(
+        !cached.exists() || files(&cached).is_empty(),
+        "the dots' reference is exact: nothing to cache"
+    );
+}
+
 #[test]
 fn human_metrics_print_every_number() {
     let cache = temp_dir("render-human");
     let o = nyquist_cached(&["render", "--size", "16x16", "--metrics"], &cache);
     assert!(o.status.success());
     let s = stdout(&o);
-    for key in ["rmse", "psnr", "sampling rmse", "samples/s", "rejected"] {
+    for key in [
+        "rmse",
+        "psnr",
+        "sampling rmse",
+        "error spectrum",
+        "radial power",
+        "samples/s",
+        "rejected",
+    ] {
         assert!(s.lines().any(|l| l.starts_with(key)), "{key} in {s}");
     }
 }
