@@ -238,22 +238,45 @@ pub fn error_vectors(spec: &TileSpec, keys: &[u32]) -> (Vec<f32>, usize) {
     }
     // Centre and scale each component over the keys (a constant shift of every pixel's error
     // does not change which permutation is best: the window's weights sum alike everywhere).
-    for j in 0..c {
-        let n = keys.len() as f64;
-        let mean = (0..keys.len())
-            .map(|k| f64::from(e[k * c + j]))
-            .sum::<f64>()
-            / n;
-        let var = (0..keys.len())
-            .map(|k| (f64::from(e[k * c + j]) - mean).powi(2))
-            .sum::<f64>()
-            / n;
+    standardise_columns(&mut e, c);
+    (e, c)
+}
+
+/// Centres every column of `e` (rows of `c` values) and scales it to unit variance over the
+/// rows; a column with no variance becomes 0.
+fn standardise_columns(e: &mut [f32], c: usize) {
+    let rows = e.len() / c;
+    let count = rows as f64;
+    for k in 0..c {
+        let all = || (0..rows).map(|r| f64::from(e[r * c + k]));
+        let mean = all().sum::<f64>() / count;
+        let var = all().map(|v| (v - mean).powi(2)).sum::<f64>() / count;
         let scale = if var > 0.0 { 1.0 / var.sqrt() } else { 0.0 };
-        for k in 0..keys.len() {
-            e[k * c + j] = ((f64::from(e[k * c + j]) - mean) * scale) as f32;
+        for r in 0..rows {
+            e[r * c + k] = ((f64::from(e[r * c + k]) - mean) * scale) as f32;
         }
     }
-    (e, c)
+}
+
+/// Adds `sign · w(q − p) · d` to `S_q` for every `q` of the window `win` around pixel `p` of the
+/// `size`² torus: how `S = blurred(e)` follows when `p`'s error vector moves by `d`.
+fn spread(
+    s: &mut [f64],
+    c: usize,
+    size: u32,
+    win: &[(i32, i32, f64)],
+    p: usize,
+    d: &[f64],
+    sign: f64,
+) {
+    let m = size as i32;
+    let (cx, cy) = ((p as i32) % m, (p as i32) / m);
+    for &(dx, dy, w) in win {
+        let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
+        for k in 0..c {
+            s[r * c + k] += sign * w * d[k];
+        }
+    }
 }
 
 /// `f` of every key, in order, on as many threads as the machine has (contiguous chunks, so
@@ -371,22 +394,12 @@ fn choose_rank_bits(
     });
     let mut e: Vec<f32> = rows.into_iter().flatten().collect();
     // One centring and scale per component, over every pixel and option.
-    for k in 0..c {
-        let all = || (0..n * options).map(|po| f64::from(e[po * c + k]));
-        let count = (n * options) as f64;
-        let mean = all().sum::<f64>() / count;
-        let var = all().map(|v| (v - mean).powi(2)).sum::<f64>() / count;
-        let scale = if var > 0.0 { 1.0 / var.sqrt() } else { 0.0 };
-        for po in 0..n * options {
-            e[po * c + k] = ((f64::from(e[po * c + k]) - mean) * scale) as f32;
-        }
-    }
+    standardise_columns(&mut e, c);
     let at = |p: usize, o: usize| &e[(p * options + o) * c..(p * options + o + 1) * c];
     let mut chosen = vec![0usize; n];
     let current: Vec<f32> = (0..n).flat_map(|p| at(p, 0).to_vec()).collect();
     let mut s = blurred(&current, c, spec.size);
     let win = window();
-    let m = spec.size as i32;
     let norm = |v: &[f32]| v.iter().map(|&x| f64::from(x).powi(2)).sum::<f64>();
     for _ in 0..8 {
         for _ in 0..n {
@@ -415,13 +428,7 @@ fn choose_rank_bits(
                 .map(|k| f64::from(to[k]) - f64::from(from[k]))
                 .collect();
             chosen[p] = best.1;
-            let (cx, cy) = ((p as i32) % m, (p as i32) / m);
-            for &(dx, dy, w) in &win {
-                let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
-                for k in 0..c {
-                    s[r * c + k] += w * d[k];
-                }
-            }
+            spread(&mut s, c, spec.size, &win, p, &d, 1.0);
         }
     }
     for (entry, o) in entries.iter_mut().zip(chosen) {
@@ -524,16 +531,8 @@ fn permute_keys(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
                 e.swap(p * c + j, q * c + j);
             }
             // S moves by +w·d around p and −w·d around q.
-            let m = size as i32;
-            for (centre, sign) in [(p, 1.0), (q, -1.0)] {
-                let (cx, cy) = ((centre as i32) % m, (centre as i32) / m);
-                for &(dx, dy, w) in &win {
-                    let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
-                    for j in 0..c {
-                        s[r * c + j] += sign * w * d[j];
-                    }
-                }
-            }
+            spread(&mut s, c, size, &win, p, &d, 1.0);
+            spread(&mut s, c, size, &win, q, &d, -1.0);
         }
         progress(sweep + 1, spec.sweeps);
     }
