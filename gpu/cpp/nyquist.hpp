@@ -3190,6 +3190,12 @@ struct BluePrepared {
     std::uint32_t key = 0, index = 0;
 };
 
+/// Shift `c` of a block whose hashed key is `key`: the digital shift of `pmj02-bn` and the
+/// Cranley–Patterson shift of `lattice-bn` (the core's `screen_blue::shift`).
+NYQ_HD inline std::uint32_t blue_shift(std::uint32_t key, std::uint32_t c) {
+    return mix32(key ^ ((c + 1) * 0x9e3779b9u));
+}
+
 }  // namespace detail
 
 /// The Owen-scrambled Sobol family (the core's `OwenSobolBlue`): a block is Sobol dimensions
@@ -3230,8 +3236,7 @@ struct Pmj02Blue {
     }
     NYQ_HD static float value(const detail::BluePrepared& p, std::uint32_t c) {
         const std::uint32_t point = (p.index >> (16 * (c / 2))) & 0xffffu;
-        const std::uint32_t shift = mix32(p.key ^ ((c + 1) * 0x9e3779b9u));
-        return fraction_to_f32(pmj02_point(kPmj02TableSeed, point, c & 1) ^ shift);
+        return fraction_to_f32(pmj02_point(kPmj02TableSeed, point, c & 1) ^ detail::blue_shift(p.key, c));
     }
 };
 
@@ -3249,7 +3254,7 @@ struct LatticeBlue {
     }
     NYQ_HD static float value(const detail::BluePrepared& p, std::uint32_t c) {
         const std::uint32_t g[4] = {1u, 364981u, 245389u, 97823u};
-        return fraction_to_f32(p.index * g[c] + mix32(p.key ^ ((c + 1) * 0x9e3779b9u)));
+        return fraction_to_f32(p.index * g[c] + detail::blue_shift(p.key, c));
     }
 };
 

@@ -2215,9 +2215,9 @@ uint nyq_pmj02_point(uvec2 seed_18, uint index_12, uint dim_27) {
             known = (_e36 | low_2);
             uint _e38 = flips;
             flips = (_e38 ^ swap);
-            uint c_9 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[(level_1 & 15u)] : NYQ_PMJ02_XOR_Y[(level_1 & 15u)]);
+            uint c_10 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[(level_1 & 15u)] : NYQ_PMJ02_XOR_Y[(level_1 & 15u)]);
             uint _e51 = p_1;
-            p_1 = ((_e51 - (1u << level_1)) ^ c_9);
+            p_1 = ((_e51 - (1u << level_1)) ^ c_10);
         }
     }
     uvec2 _e57 = nyq_wyrand(seed_18, 0u);
@@ -2367,11 +2367,11 @@ uvec3 nyq_divmod64_small(uvec2 x_18, uint d_3) {
 
 uvec4 nyq_add128_(uvec4 a_10, uvec4 b_9) {
     uvec4 s_102 = (a_10 + b_9);
-    uvec4 c_10 = mix(uvec4(0u), uvec4(1u), lessThan(s_102, a_10));
-    uint t1_2 = (s_102.y + c_10.x);
-    uint k1_ = (c_10.y + ((t1_2 < c_10.x) ? 1u : 0u));
+    uvec4 c_11 = mix(uvec4(0u), uvec4(1u), lessThan(s_102, a_10));
+    uint t1_2 = (s_102.y + c_11.x);
+    uint k1_ = (c_11.y + ((t1_2 < c_11.x) ? 1u : 0u));
     uint t2_1 = (s_102.z + k1_);
-    uint k2_ = (c_10.z + ((t2_1 < k1_) ? 1u : 0u));
+    uint k2_ = (c_11.z + ((t2_1 < k1_) ? 1u : 0u));
     return uvec4(s_102.x, t1_2, t2_1, (s_102.w + k2_));
 }
 
@@ -2741,11 +2741,11 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14) {
     uvec2 rev = uvec2(0u, 0u);
     uint i_13 = 0u;
     uint b_18 = _group_0_binding_4_cs[t_3];
-    uint c_11 = (((35u - uint(31 - findMSB(a_14))) / 4u) - 1u);
-    uint _e19 = _group_0_binding_4_cs[((t_3 + 2u) + (c_11 / 4u))];
-    uint places = ((_e19 >> (8u * (c_11 % 4u))) & 255u);
-    uint low_3 = _group_0_binding_4_cs[((t_3 + 8u) + (2u * c_11))];
-    uint high_1 = _group_0_binding_4_cs[((t_3 + 9u) + (2u * c_11))];
+    uint c_12 = (((35u - uint(31 - findMSB(a_14))) / 4u) - 1u);
+    uint _e19 = _group_0_binding_4_cs[((t_3 + 2u) + (c_12 / 4u))];
+    uint places = ((_e19 >> (8u * (c_12 % 4u))) & 255u);
+    uint low_3 = _group_0_binding_4_cs[((t_3 + 8u) + (2u * c_12))];
+    uint high_1 = _group_0_binding_4_cs[((t_3 + 9u) + (2u * c_12))];
     x_22 = a_14;
     bool loop_init_19 = true;
     while(true) {
@@ -3469,6 +3469,11 @@ NyqCameraSample nyq_blue_camera(uvec2 pixel_23, float v_8[5]) {
     return NyqCameraSample(p_5, vec2(v_8[3], v_8[4]), v_8[2]);
 }
 
+uint nyq_blue_shift(uint key_4, uint c_5) {
+    uint _e7 = nyq_mix32_((key_4 ^ ((c_5 + 1u) * 2654435769u)));
+    return _e7;
+}
+
 NyqBlueSampler nyq_blue_sampler(uvec2 seed_31, uint frame_3) {
     return NyqBlueSampler(seed_31, frame_3, uvec2(0u), 0u, 0u, uvec2(0u), uvec2(0u));
 }
@@ -3478,15 +3483,15 @@ uint nyq_owen_sobol_bn_key(uint entry) {
     return _e5;
 }
 
-uint nyq_owen_sobol_bn_rev(uint entry_1, uint key_4, uint index_17) {
-    uint _e8 = nyq_mix32_((key_4 ^ 1397249350u));
+uint nyq_owen_sobol_bn_rev(uint entry_1, uint key_5, uint index_17) {
+    uint _e8 = nyq_mix32_((key_5 ^ 1397249350u));
     uint _e9 = nyq_shuffle_rev((index_17 ^ (entry_1 & 255u)), _e8);
     return _e9;
 }
 
-float nyq_owen_sobol_bn_value_at(uint key_5, uint rev_2, uint c_5) {
-    uint _e3 = nyq_dim_seed(key_5, c_5);
-    uint _e4 = nyq_owen_sobol_rev(rev_2, c_5, _e3);
+float nyq_owen_sobol_bn_value_at(uint key_6, uint rev_2, uint c_6) {
+    uint _e3 = nyq_dim_seed(key_6, c_6);
+    uint _e4 = nyq_owen_sobol_rev(rev_2, c_6, _e3);
     float _e5 = nyq_rev_to_f32_(_e4);
     return _e5;
 }
@@ -3531,11 +3536,11 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_83, uvec2 pixel_24, uint sam
 
 float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_84, uint dim_42) {
     uint b_22 = (dim_42 / 4u);
-    uint c_12 = (dim_42 % 4u);
+    uint c_13 = (dim_42 % 4u);
     if ((b_22 < 2u)) {
         uint _e10 = s_84.key[b_22];
         uint _e13 = s_84.prepared[b_22];
-        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_12);
+        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13);
         return _e14;
     }
     uvec2 _e17 = s_84.seed;
@@ -3545,7 +3550,7 @@ float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_84, uint dim_42) {
     uint _e23 = nyq_owen_sobol_bn_key(_e22);
     uint _e25 = s_84.index;
     uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_12);
+    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13);
     return _e27;
 }
 
@@ -3619,12 +3624,12 @@ uint nyq_pmj02_bn_points(uint k_16, uint i_17) {
     return (p0_ | (p1_ << 16u));
 }
 
-float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_6) {
-    uint point = ((points >> (16u * (c_6 / 2u))) & 65535u);
-    uint _e15 = nyq_mix32_((k_17 ^ ((c_6 + 1u) * 2654435769u)));
-    uint _e19 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, (c_6 % 2u));
-    float _e21 = nyq_fraction_to_f32_((_e19 ^ _e15));
-    return _e21;
+float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_7) {
+    uint point = ((points >> (16u * (c_7 / 2u))) & 65535u);
+    uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, (c_7 % 2u));
+    uint _e14 = nyq_blue_shift(k_17, c_7);
+    float _e16 = nyq_fraction_to_f32_((_e13 ^ _e14));
+    return _e16;
 }
 
 NyqBlueSampler nyq_pmj02_bn_sampler(uvec2 seed_33, uint frame_5) {
@@ -3668,11 +3673,11 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_89, uvec2 pixel_26, uint sample_i
 
 float nyq_pmj02_bn_value(inout NyqBlueSampler s_90, uint dim_44) {
     uint b_23 = (dim_44 / 4u);
-    uint c_13 = (dim_44 % 4u);
+    uint c_14 = (dim_44 % 4u);
     if ((b_23 < 2u)) {
         uint _e10 = s_90.key[b_23];
         uint _e13 = s_90.prepared[b_23];
-        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_13);
+        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
         return _e14;
     }
     uvec2 _e17 = s_90.seed;
@@ -3683,7 +3688,7 @@ float nyq_pmj02_bn_value(inout NyqBlueSampler s_90, uint dim_44) {
     uint i_20 = (_e24 ^ (_e22 & 255u));
     uint _e28 = nyq_pmj02_bn_key(_e22, i_20);
     uint _e29 = nyq_pmj02_bn_points(_e28, i_20);
-    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_13);
+    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
     return _e30;
 }
 
@@ -3744,16 +3749,16 @@ uint nyq_lattice_bn_key(uint entry_3) {
     return _e5;
 }
 
-uint nyq_lattice_bn_rev(uint entry_4, uint key_6, uint index_18) {
-    uint _e8 = nyq_mix32_((key_6 ^ 1397249350u));
+uint nyq_lattice_bn_rev(uint entry_4, uint key_7, uint index_18) {
+    uint _e8 = nyq_mix32_((key_7 ^ 1397249350u));
     uint _e9 = nyq_shuffle_rev((index_18 ^ (entry_4 & 255u)), _e8);
     return _e9;
 }
 
-float nyq_lattice_bn_value_at(uint key_7, uint rev_3, uint c_7) {
-    uint _e8 = nyq_mix32_((key_7 ^ ((c_7 + 1u) * 2654435769u)));
-    float _e13 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_7]) + _e8));
-    return _e13;
+float nyq_lattice_bn_value_at(uint key_8, uint rev_3, uint c_8) {
+    uint _e6 = nyq_blue_shift(key_8, c_8);
+    float _e8 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_8]) + _e6));
+    return _e8;
 }
 
 NyqBlueSampler nyq_lattice_bn_sampler(uvec2 seed_34, uint frame_6) {
@@ -3796,11 +3801,11 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_95, uvec2 pixel_28, uint sample
 
 float nyq_lattice_bn_value(inout NyqBlueSampler s_96, uint dim_46) {
     uint b_24 = (dim_46 / 4u);
-    uint c_14 = (dim_46 % 4u);
+    uint c_15 = (dim_46 % 4u);
     if ((b_24 < 2u)) {
         uint _e10 = s_96.key[b_24];
         uint _e13 = s_96.prepared[b_24];
-        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_14);
+        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
     uvec2 _e17 = s_96.seed;
@@ -3810,7 +3815,7 @@ float nyq_lattice_bn_value(inout NyqBlueSampler s_96, uint dim_46) {
     uint _e23 = nyq_lattice_bn_key(_e22);
     uint _e25 = s_96.index;
     uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_14);
+    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
     return _e27;
 }
 
@@ -3882,12 +3887,12 @@ uvec4 nyq_fill_request(uint i_18) {
     return uvec4((pixel_30 % _e20), (pixel_30 / _e25), (n_12 % _e29), 5u);
 }
 
-void nyq_fill_camera(uint out_3, NyqCameraSample c_8) {
-    _group_0_binding_3_cs[out_3] = floatBitsToUint(c_8.p_film.x);
-    _group_0_binding_3_cs[(out_3 + 1u)] = floatBitsToUint(c_8.p_film.y);
-    _group_0_binding_3_cs[(out_3 + 2u)] = floatBitsToUint(c_8.time);
-    _group_0_binding_3_cs[(out_3 + 3u)] = floatBitsToUint(c_8.lens.x);
-    _group_0_binding_3_cs[(out_3 + 4u)] = floatBitsToUint(c_8.lens.y);
+void nyq_fill_camera(uint out_3, NyqCameraSample c_9) {
+    _group_0_binding_3_cs[out_3] = floatBitsToUint(c_9.p_film.x);
+    _group_0_binding_3_cs[(out_3 + 1u)] = floatBitsToUint(c_9.p_film.y);
+    _group_0_binding_3_cs[(out_3 + 2u)] = floatBitsToUint(c_9.time);
+    _group_0_binding_3_cs[(out_3 + 3u)] = floatBitsToUint(c_9.lens.x);
+    _group_0_binding_3_cs[(out_3 + 4u)] = floatBitsToUint(c_9.lens.y);
     return;
 }
 

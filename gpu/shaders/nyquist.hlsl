@@ -2652,9 +2652,9 @@ uint nyq_pmj02_point(uint2 seed_18, uint index_12, uint dim_27)
             known = (_e36 | low_2);
             uint _e38 = flips;
             flips = (_e38 ^ swap);
-            uint c_9 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
+            uint c_10 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
             uint _e51 = p_1;
-            p_1 = ((_e51 - (1u << level_1)) ^ c_9);
+            p_1 = ((_e51 - (1u << level_1)) ^ c_10);
         }
     }
     const uint2 _e57 = nyq_wyrand(seed_18, 0u);
@@ -2839,11 +2839,11 @@ uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
 uint4 nyq_add128_(uint4 a_10, uint4 b_9)
 {
     uint4 s_102 = (a_10 + b_9);
-    uint4 c_10 = ((s_102 < a_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_2 = (s_102.y + c_10.x);
-    uint k1_ = (c_10.y + ((t1_2 < c_10.x) ? 1u : 0u));
+    uint4 c_11 = ((s_102 < a_10) ? (1u).xxxx : (0u).xxxx);
+    uint t1_2 = (s_102.y + c_11.x);
+    uint k1_ = (c_11.y + ((t1_2 < c_11.x) ? 1u : 0u));
     uint t2_1 = (s_102.z + k1_);
-    uint k2_ = (c_10.z + ((t2_1 < k1_) ? 1u : 0u));
+    uint k2_ = (c_11.z + ((t2_1 < k1_) ? 1u : 0u));
     return uint4(s_102.x, t1_2, t2_1, (s_102.w + k2_));
 }
 
@@ -3248,11 +3248,11 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14)
     uint i_13 = 0u;
 
     uint b_18 = asuint(nyq_halton_bases.Load(t_3*4));
-    uint c_11 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
-    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_11, 4u))*4));
-    uint places = ((_e19 >> (8u * naga_mod(c_11, 4u))) & 255u);
-    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_11))*4));
-    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_11))*4));
+    uint c_12 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
+    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_12, 4u))*4));
+    uint places = ((_e19 >> (8u * naga_mod(c_12, 4u))) & 255u);
+    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_12))*4));
+    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_12))*4));
     x_22 = a_14;
     uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
     bool loop_init_19 = true;
@@ -4102,6 +4102,12 @@ NyqCameraSample nyq_blue_camera(uint2 pixel_23, float v_8[5])
     return nyqcamerasample_8;
 }
 
+uint nyq_blue_shift(uint key_4, uint c_5)
+{
+    const uint _e7 = nyq_mix32_((key_4 ^ ((c_5 + 1u) * 2654435769u)));
+    return _e7;
+}
+
 NyqBlueSampler ConstructNyqBlueSampler(uint2 arg0, uint arg1, uint2 arg2, uint arg3, uint arg4, uint2 arg5, uint2 arg6) {
     NyqBlueSampler ret = (NyqBlueSampler)0;
     ret.seed = arg0;
@@ -4126,17 +4132,17 @@ uint nyq_owen_sobol_bn_key(uint entry)
     return _e5;
 }
 
-uint nyq_owen_sobol_bn_rev(uint entry_1, uint key_4, uint index_17)
+uint nyq_owen_sobol_bn_rev(uint entry_1, uint key_5, uint index_17)
 {
-    const uint _e8 = nyq_mix32_((key_4 ^ 1397249350u));
+    const uint _e8 = nyq_mix32_((key_5 ^ 1397249350u));
     const uint _e9 = nyq_shuffle_rev((index_17 ^ (entry_1 & 255u)), _e8);
     return _e9;
 }
 
-float nyq_owen_sobol_bn_value_at(uint key_5, uint rev_2, uint c_5)
+float nyq_owen_sobol_bn_value_at(uint key_6, uint rev_2, uint c_6)
 {
-    const uint _e3 = nyq_dim_seed(key_5, c_5);
-    const uint _e4 = nyq_owen_sobol_rev(rev_2, c_5, _e3);
+    const uint _e3 = nyq_dim_seed(key_6, c_6);
+    const uint _e4 = nyq_owen_sobol_rev(rev_2, c_6, _e3);
     const float _e5 = nyq_rev_to_f32_(_e4);
     return _e5;
 }
@@ -4189,11 +4195,11 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_83, uint2 pixel_24, uint sam
 float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_84, uint dim_42)
 {
     uint b_22 = naga_div(dim_42, 4u);
-    uint c_12 = naga_mod(dim_42, 4u);
+    uint c_13 = naga_mod(dim_42, 4u);
     if ((b_22 < 2u)) {
         uint _e10 = s_84.key[min(uint(b_22), 1u)];
         uint _e13 = s_84.prepared[min(uint(b_22), 1u)];
-        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_12);
+        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13);
         return _e14;
     }
     uint2 _e17 = s_84.seed;
@@ -4203,7 +4209,7 @@ float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_84, uint dim_42)
     const uint _e23 = nyq_owen_sobol_bn_key(_e22);
     uint _e25 = s_84.index;
     const uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_12);
+    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13);
     return _e27;
 }
 
@@ -4288,13 +4294,13 @@ uint nyq_pmj02_bn_points(uint k_16, uint i_17)
     return (p0_ | (p1_ << 16u));
 }
 
-float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_6)
+float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_7)
 {
-    uint point_ = ((points >> (16u * naga_div(c_6, 2u))) & 65535u);
-    const uint _e15 = nyq_mix32_((k_17 ^ ((c_6 + 1u) * 2654435769u)));
-    const uint _e19 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point_, naga_mod(c_6, 2u));
-    const float _e21 = nyq_fraction_to_f32_((_e19 ^ _e15));
-    return _e21;
+    uint point_ = ((points >> (16u * naga_div(c_7, 2u))) & 65535u);
+    const uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point_, naga_mod(c_7, 2u));
+    const uint _e14 = nyq_blue_shift(k_17, c_7);
+    const float _e16 = nyq_fraction_to_f32_((_e13 ^ _e14));
+    return _e16;
 }
 
 NyqBlueSampler nyq_pmj02_bn_sampler(uint2 seed_33, uint frame_5)
@@ -4346,11 +4352,11 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_89, uint2 pixel_26, uint sample_i
 float nyq_pmj02_bn_value(inout NyqBlueSampler s_90, uint dim_44)
 {
     uint b_23 = naga_div(dim_44, 4u);
-    uint c_13 = naga_mod(dim_44, 4u);
+    uint c_14 = naga_mod(dim_44, 4u);
     if ((b_23 < 2u)) {
         uint _e10 = s_90.key[min(uint(b_23), 1u)];
         uint _e13 = s_90.prepared[min(uint(b_23), 1u)];
-        const float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_13);
+        const float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
         return _e14;
     }
     uint2 _e17 = s_90.seed;
@@ -4361,7 +4367,7 @@ float nyq_pmj02_bn_value(inout NyqBlueSampler s_90, uint dim_44)
     uint i_20 = (_e24 ^ (_e22 & 255u));
     const uint _e28 = nyq_pmj02_bn_key(_e22, i_20);
     const uint _e29 = nyq_pmj02_bn_points(_e28, i_20);
-    const float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_13);
+    const float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
     return _e30;
 }
 
@@ -4432,18 +4438,18 @@ uint nyq_lattice_bn_key(uint entry_3)
     return _e5;
 }
 
-uint nyq_lattice_bn_rev(uint entry_4, uint key_6, uint index_18)
+uint nyq_lattice_bn_rev(uint entry_4, uint key_7, uint index_18)
 {
-    const uint _e8 = nyq_mix32_((key_6 ^ 1397249350u));
+    const uint _e8 = nyq_mix32_((key_7 ^ 1397249350u));
     const uint _e9 = nyq_shuffle_rev((index_18 ^ (entry_4 & 255u)), _e8);
     return _e9;
 }
 
-float nyq_lattice_bn_value_at(uint key_7, uint rev_3, uint c_7)
+float nyq_lattice_bn_value_at(uint key_8, uint rev_3, uint c_8)
 {
-    const uint _e8 = nyq_mix32_((key_7 ^ ((c_7 + 1u) * 2654435769u)));
-    const float _e13 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[min(uint(c_7), 3u)]) + _e8));
-    return _e13;
+    const uint _e6 = nyq_blue_shift(key_8, c_8);
+    const float _e8 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[min(uint(c_8), 3u)]) + _e6));
+    return _e8;
 }
 
 NyqBlueSampler nyq_lattice_bn_sampler(uint2 seed_34, uint frame_6)
@@ -4494,11 +4500,11 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_95, uint2 pixel_28, uint sample
 float nyq_lattice_bn_value(inout NyqBlueSampler s_96, uint dim_46)
 {
     uint b_24 = naga_div(dim_46, 4u);
-    uint c_14 = naga_mod(dim_46, 4u);
+    uint c_15 = naga_mod(dim_46, 4u);
     if ((b_24 < 2u)) {
         uint _e10 = s_96.key[min(uint(b_24), 1u)];
         uint _e13 = s_96.prepared[min(uint(b_24), 1u)];
-        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_14);
+        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
     uint2 _e17 = s_96.seed;
@@ -4508,7 +4514,7 @@ float nyq_lattice_bn_value(inout NyqBlueSampler s_96, uint dim_46)
     const uint _e23 = nyq_lattice_bn_key(_e22);
     uint _e25 = s_96.index;
     const uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_14);
+    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
     return _e27;
 }
 
@@ -4590,13 +4596,13 @@ uint4 nyq_fill_request(uint i_18)
     return uint4(naga_mod(pixel_30, _e20), naga_div(pixel_30, _e25), naga_mod(n_12, _e29), 5u);
 }
 
-void nyq_fill_camera(uint out_3, NyqCameraSample c_8)
+void nyq_fill_camera(uint out_3, NyqCameraSample c_9)
 {
-    nyq_values.Store(out_3*4, asuint(asuint(c_8.p_film.x)));
-    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_8.p_film.y)));
-    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_8.time)));
-    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_8.lens.x)));
-    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_8.lens.y)));
+    nyq_values.Store(out_3*4, asuint(asuint(c_9.p_film.x)));
+    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_9.p_film.y)));
+    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_9.time)));
+    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_9.lens.x)));
+    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_9.lens.y)));
     return;
 }
 

@@ -2742,9 +2742,9 @@ uint nyq_pmj02_point(
             known = _e36 | low_2;
             uint _e38 = flips;
             flips = _e38 ^ swap;
-            uint c_9 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
+            uint c_10 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
             uint _e51 = p_1;
-            p_1 = (_e51 - (1u << level_1)) ^ c_9;
+            p_1 = (_e51 - (1u << level_1)) ^ c_10;
         }
     }
     metal::uint2 _e57 = nyq_wyrand(seed_18, 0u);
@@ -2942,11 +2942,11 @@ metal::uint4 nyq_add128_(
     metal::uint4 b_9
 ) {
     metal::uint4 s_102 = a_10 + b_9;
-    metal::uint4 c_10 = metal::select(metal::uint4(0u), metal::uint4(1u), s_102 < a_10);
-    uint t1_2 = s_102.y + c_10.x;
-    uint k1_ = c_10.y + ((t1_2 < c_10.x) ? 1u : 0u);
+    metal::uint4 c_11 = metal::select(metal::uint4(0u), metal::uint4(1u), s_102 < a_10);
+    uint t1_2 = s_102.y + c_11.x;
+    uint k1_ = c_11.y + ((t1_2 < c_11.x) ? 1u : 0u);
     uint t2_1 = s_102.z + k1_;
-    uint k2_ = c_10.z + ((t2_1 < k1_) ? 1u : 0u);
+    uint k2_ = c_11.z + ((t2_1 < k1_) ? 1u : 0u);
     return metal::uint4(s_102.x, t1_2, t2_1, s_102.w + k2_);
 }
 
@@ -3360,11 +3360,11 @@ NyqRounding nyq_phi_short(
     metal::uint2 rev = metal::uint2(0u, 0u);
     uint i_13 = 0u;
     uint b_18 = nyq_halton_bases[t_3];
-    uint c_11 = naga_div(35u - metal::clz(a_14), 4u) - 1u;
-    uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_11, 4u)];
-    uint places = (_e19 >> (8u * naga_mod(c_11, 4u))) & 255u;
-    uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_11)];
-    uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_11)];
+    uint c_12 = naga_div(35u - metal::clz(a_14), 4u) - 1u;
+    uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_12, 4u)];
+    uint places = (_e19 >> (8u * naga_mod(c_12, 4u))) & 255u;
+    uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_12)];
+    uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_12)];
     x_22 = a_14;
     uint2 loop_bound_26 = uint2(4294967295u);
     bool loop_init_19 = true;
@@ -4267,6 +4267,14 @@ NyqCameraSample nyq_blue_camera(
     return NyqCameraSample {p_5, metal::float2(v_8.inner[3], v_8.inner[4]), v_8.inner[2]};
 }
 
+uint nyq_blue_shift(
+    uint key_4,
+    uint c_5
+) {
+    uint _e7 = nyq_mix32_(key_4 ^ ((c_5 + 1u) * 2654435769u));
+    return _e7;
+}
+
 NyqBlueSampler nyq_blue_sampler(
     metal::uint2 seed_31,
     uint frame_3
@@ -4283,23 +4291,23 @@ uint nyq_owen_sobol_bn_key(
 
 uint nyq_owen_sobol_bn_rev(
     uint entry_1,
-    uint key_4,
+    uint key_5,
     uint index_17
 ) {
-    uint _e8 = nyq_mix32_(key_4 ^ 1397249350u);
+    uint _e8 = nyq_mix32_(key_5 ^ 1397249350u);
     uint _e9 = nyq_shuffle_rev(index_17 ^ (entry_1 & 255u), _e8);
     return _e9;
 }
 
 float nyq_owen_sobol_bn_value_at(
-    uint key_5,
+    uint key_6,
     uint rev_2,
-    uint c_5,
+    uint c_6,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_dim_seed(key_5, c_5);
-    uint _e4 = nyq_owen_sobol_rev(rev_2, c_5, _e3, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_dim_seed(key_6, c_6);
+    uint _e4 = nyq_owen_sobol_rev(rev_2, c_6, _e3, nyq_sobol_matrices, _buffer_sizes);
     float _e5 = nyq_rev_to_f32_(_e4);
     return _e5;
 }
@@ -4363,11 +4371,11 @@ float nyq_owen_sobol_bn_value(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint b_22 = naga_div(dim_42, 4u);
-    uint c_12 = naga_mod(dim_42, 4u);
+    uint c_13 = naga_mod(dim_42, 4u);
     if (b_22 < 2u) {
         uint _e10 = s_84.key[b_22];
         uint _e13 = s_84.prepared[b_22];
-        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_12, nyq_sobol_matrices, _buffer_sizes);
+        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13, nyq_sobol_matrices, _buffer_sizes);
         return _e14;
     }
     metal::uint2 _e17 = s_84.seed;
@@ -4377,7 +4385,7 @@ float nyq_owen_sobol_bn_value(
     uint _e23 = nyq_owen_sobol_bn_key(_e22);
     uint _e25 = s_84.index;
     uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_12, nyq_sobol_matrices, _buffer_sizes);
+    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13, nyq_sobol_matrices, _buffer_sizes);
     return _e27;
 }
 
@@ -4485,13 +4493,13 @@ uint nyq_pmj02_bn_points(
 float nyq_pmj02_bn_value_at(
     uint k_17,
     uint points,
-    uint c_6
+    uint c_7
 ) {
-    uint point = (points >> (16u * naga_div(c_6, 2u))) & 65535u;
-    uint _e15 = nyq_mix32_(k_17 ^ ((c_6 + 1u) * 2654435769u));
-    uint _e19 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, naga_mod(c_6, 2u));
-    float _e21 = nyq_fraction_to_f32_(_e19 ^ _e15);
-    return _e21;
+    uint point = (points >> (16u * naga_div(c_7, 2u))) & 65535u;
+    uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, naga_mod(c_7, 2u));
+    uint _e14 = nyq_blue_shift(k_17, c_7);
+    float _e16 = nyq_fraction_to_f32_(_e13 ^ _e14);
+    return _e16;
 }
 
 NyqBlueSampler nyq_pmj02_bn_sampler(
@@ -4553,11 +4561,11 @@ float nyq_pmj02_bn_value(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint b_23 = naga_div(dim_44, 4u);
-    uint c_13 = naga_mod(dim_44, 4u);
+    uint c_14 = naga_mod(dim_44, 4u);
     if (b_23 < 2u) {
         uint _e10 = s_90.key[b_23];
         uint _e13 = s_90.prepared[b_23];
-        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_13);
+        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
         return _e14;
     }
     metal::uint2 _e17 = s_90.seed;
@@ -4568,7 +4576,7 @@ float nyq_pmj02_bn_value(
     uint i_20 = _e24 ^ (_e22 & 255u);
     uint _e28 = nyq_pmj02_bn_key(_e22, i_20);
     uint _e29 = nyq_pmj02_bn_points(_e28, i_20);
-    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_13);
+    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
     return _e30;
 }
 
@@ -4654,22 +4662,22 @@ uint nyq_lattice_bn_key(
 
 uint nyq_lattice_bn_rev(
     uint entry_4,
-    uint key_6,
+    uint key_7,
     uint index_18
 ) {
-    uint _e8 = nyq_mix32_(key_6 ^ 1397249350u);
+    uint _e8 = nyq_mix32_(key_7 ^ 1397249350u);
     uint _e9 = nyq_shuffle_rev(index_18 ^ (entry_4 & 255u), _e8);
     return _e9;
 }
 
 float nyq_lattice_bn_value_at(
-    uint key_7,
+    uint key_8,
     uint rev_3,
-    uint c_7
+    uint c_8
 ) {
-    uint _e8 = nyq_mix32_(key_7 ^ ((c_7 + 1u) * 2654435769u));
-    float _e13 = nyq_fraction_to_f32_((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_7]) + _e8);
-    return _e13;
+    uint _e6 = nyq_blue_shift(key_8, c_8);
+    float _e8 = nyq_fraction_to_f32_((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_8]) + _e6);
+    return _e8;
 }
 
 NyqBlueSampler nyq_lattice_bn_sampler(
@@ -4730,11 +4738,11 @@ float nyq_lattice_bn_value(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint b_24 = naga_div(dim_46, 4u);
-    uint c_14 = naga_mod(dim_46, 4u);
+    uint c_15 = naga_mod(dim_46, 4u);
     if (b_24 < 2u) {
         uint _e10 = s_96.key[b_24];
         uint _e13 = s_96.prepared[b_24];
-        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_14);
+        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
     metal::uint2 _e17 = s_96.seed;
@@ -4744,7 +4752,7 @@ float nyq_lattice_bn_value(
     uint _e23 = nyq_lattice_bn_key(_e22);
     uint _e25 = s_96.index;
     uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_14);
+    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
     return _e27;
 }
 
@@ -4844,15 +4852,15 @@ metal::uint4 nyq_fill_request(
 
 void nyq_fill_camera(
     uint out_3,
-    NyqCameraSample c_8,
+    NyqCameraSample c_9,
     device type_4& nyq_values,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_values[out_3] = as_type<uint>(c_8.p_film.x);
-    nyq_values[out_3 + 1u] = as_type<uint>(c_8.p_film.y);
-    nyq_values[out_3 + 2u] = as_type<uint>(c_8.time);
-    nyq_values[out_3 + 3u] = as_type<uint>(c_8.lens.x);
-    nyq_values[out_3 + 4u] = as_type<uint>(c_8.lens.y);
+    nyq_values[out_3] = as_type<uint>(c_9.p_film.x);
+    nyq_values[out_3 + 1u] = as_type<uint>(c_9.p_film.y);
+    nyq_values[out_3 + 2u] = as_type<uint>(c_9.time);
+    nyq_values[out_3 + 3u] = as_type<uint>(c_9.lens.x);
+    nyq_values[out_3 + 4u] = as_type<uint>(c_9.lens.y);
     return;
 }
 

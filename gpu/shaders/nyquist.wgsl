@@ -2275,6 +2275,12 @@ fn nyq_blue_camera(pixel: vec2<u32>, v: array<f32, 5>) -> NyqCameraSample {
     return NyqCameraSample(p, vec2<f32>(v[3], v[4]), v[2]);
 }
 
+// Shift `c` of a block whose hashed key is `key`: the digital shift of pmj02-bn and the
+// Cranley–Patterson shift of lattice-bn (core `screen_blue::shift`).
+fn nyq_blue_shift(key: u32, c: u32) -> u32 {
+    return nyq_mix32(key ^ ((c + 1u) * 0x9e3779b9u));
+}
+
 // The state every blue-noise sampler keeps: the seed and frame, the current pixel, sample
 // index and dimension, and for blocks 0 and 1 (the camera's five dimensions and three more)
 // the entry's hashed key and what the sample index became in the block.
@@ -2408,8 +2414,7 @@ fn nyq_pmj02_bn_points(k: u32, i: u32) -> u32 {
 // `Pmj02Blue::value`.
 fn nyq_pmj02_bn_value_at(k: u32, points: u32, c: u32) -> f32 {
     let point = (points >> (16u * (c / 2u))) & 0xffffu;
-    let shift = nyq_mix32(k ^ ((c + 1u) * 0x9e3779b9u));
-    return nyq_fraction_to_f32(nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, c % 2u) ^ shift);
+    return nyq_fraction_to_f32(nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, c % 2u) ^ nyq_blue_shift(k, c));
 }
 
 fn nyq_pmj02_bn_sampler(seed: vec2<u32>, frame: u32) -> NyqBlueSampler {
@@ -2491,8 +2496,7 @@ fn nyq_lattice_bn_rev(entry: u32, key: u32, index: u32) -> u32 {
 // Component `c` of the block of key `key` at the reversed shuffled index `rev`: core
 // `LatticeBlue::value`.
 fn nyq_lattice_bn_value_at(key: u32, rev: u32, c: u32) -> f32 {
-    let shift = nyq_mix32(key ^ ((c + 1u) * 0x9e3779b9u));
-    return nyq_fraction_to_f32(rev * NYQ_LATTICE_BN_GENERATOR[c] + shift);
+    return nyq_fraction_to_f32(rev * NYQ_LATTICE_BN_GENERATOR[c] + nyq_blue_shift(key, c));
 }
 
 fn nyq_lattice_bn_sampler(seed: vec2<u32>, frame: u32) -> NyqBlueSampler {

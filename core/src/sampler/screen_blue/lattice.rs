@@ -1,6 +1,6 @@
 //! The rank-1 lattice family of the blue-noise samplers.
 
-use super::{BlueFamily, TileBytes, read};
+use super::{BlueFamily, TileBytes, read, shift};
 use crate::hash::mix32;
 use crate::math::fraction_to_f32;
 use crate::sequence::IndexShuffle;
@@ -66,7 +66,7 @@ impl BlueFamily for LatticeBlue {
         LatticeBlock {
             rank: entry & 0xff,
             shuffle: IndexShuffle::new(mix32(key ^ 0x5348_5546)), // "SHUF"
-            shift: [1u32, 2, 3, 4].map(|c| mix32(key ^ c.wrapping_mul(0x9e37_79b9))),
+            shift: [0, 1, 2, 3].map(|c| shift(key, c)),
         }
     }
 

@@ -102,6 +102,13 @@ mod sealed {
     impl Sealed for super::LatticeBlue {}
 }
 
+/// Shift `c` (0 … 3) of a block whose hashed key is `key`: `mix32(key ⊕ (c + 1)·0x9e3779b9)`,
+/// the Cranley–Patterson shift of `lattice-bn` and the digital shift of `pmj02-bn`.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+fn shift(key: u32, c: u32) -> u32 {
+    crate::hash::mix32(key ^ (c + 1).wrapping_mul(0x9e37_79b9))
+}
+
 /// The entry the optimiser starts slot `slot` with (key `slot`, rank 0): a tile's keys are a
 /// permutation of these.
 ///

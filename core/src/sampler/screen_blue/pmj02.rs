@@ -1,6 +1,6 @@
 //! The PMJ(0,2) family of the blue-noise samplers.
 
-use super::{BlueFamily, TileBytes, read};
+use super::{BlueFamily, TileBytes, read, shift};
 use crate::hash::mix32;
 use crate::math::fraction_to_f32;
 use crate::sequence::IndexShuffle;
@@ -65,7 +65,7 @@ impl Pmj02Block {
             rank,
             key,
             shuffles: [0x5348_5546u32, 0x5348_5547].map(|t| IndexShuffle::new(mix32(k ^ t))), // "SHUF"
-            shifts: [1u32, 2, 3, 4].map(|c| mix32(k ^ c.wrapping_mul(0x9e37_79b9))),
+            shifts: [0, 1, 2, 3].map(|c| shift(k, c)),
         }
     }
 }
