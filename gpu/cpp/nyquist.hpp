@@ -3033,8 +3033,8 @@ struct HaltonSampler {
 // ---------------------------------------------------------------------------------------------
 // PMJ(0,2) (core/src/sequence/pmj02.rs, core/src/sampler/pmj02.rs).
 
-/// The seed of the core's baked PMJ(0,2) table ("pmj02_ta").
-constexpr std::uint64_t kPmj02TableSeed = 0x706d6a30325f7461ull;
+/// The seed of the core's baked PMJ(0,2) table (PMJ02_TABLE_SEED, chosen by the lab's pmj02-seed).
+constexpr std::uint64_t kPmj02TableSeed = 716;
 
 namespace detail {
 

@@ -32,6 +32,7 @@ pub mod plot;
 #[cfg(target_family = "wasm")]
 #[path = "plot_unavailable.rs"]
 pub mod plot;
+pub mod pmj02_seed;
 pub mod points;
 pub mod raster;
 pub mod render;

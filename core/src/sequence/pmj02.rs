@@ -30,7 +30,10 @@ use crate::scramble::{
 /// ```
 pub const PMJ02_MAX_POINTS: usize = 1 << 16;
 
-/// The seed [`PMJ02_TABLE`] is built from.
+/// The seed [`PMJ02_TABLE`] is built from: of seeds 0 … 1023, the one whose table has the
+/// lowest error on centred radial integrands under `pmj02-bn`'s digital shift (the lab's
+/// `pmj02-seed`, which `--check`s this value). The Owen-scrambled [`Pmj02`] redraws the
+/// digits a seed sets, so its error does not depend on it.
 ///
 /// ```
 /// use nyquist::sequence::{pmj02_build, PMJ02_TABLE, PMJ02_TABLE_SEED};
@@ -38,7 +41,7 @@ pub const PMJ02_MAX_POINTS: usize = 1 << 16;
 /// pmj02_build(PMJ02_TABLE_SEED, &mut first).unwrap();
 /// assert_eq!(first, PMJ02_TABLE[..8]);
 /// ```
-pub const PMJ02_TABLE_SEED: u64 = 0x706d_6a30_325f_7461; // "pmj02_ta"
+pub const PMJ02_TABLE_SEED: u64 = 716;
 
 /// The per-level XOR constants for pmj02, dimension x then y, levels 0..15.
 ///

@@ -133,7 +133,7 @@ mod tests {
         let entry = Pmj02Blue::entry;
         assert_eq!(
             [entry(0, 0), entry(127, 0), entry(5, 77)],
-            [0x0a_0f06, 0x0d_f7c0, 0x26_8e01]
+            [0x31_0ad1, 0x28_a6d0, 0x1a_7a62]
         );
         assert_eq!(entry(5 + 128, 77 + 256), entry(5, 77));
         let mut got: Vec<u32> = (0..TILE_SIZE * TILE_SIZE)
@@ -153,7 +153,7 @@ mod tests {
     fn epochs_are_hashed_anew() {
         assert_eq!(
             Pmj02Blue::values(initial_entry(9) | 3, (1 << 16) + 5).map(f32::to_bits),
-            [1_050_105_628, 1_064_155_641, 1_056_078_248, 1_057_951_820]
+            [1_054_929_038, 1_061_877_959, 1_048_939_802, 1_059_521_018]
         );
         for (i, d) in [(0u16, 0usize), (1, 1), (777, 0), (65535, 1)] {
             assert_eq!(
