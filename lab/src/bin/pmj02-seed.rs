@@ -11,8 +11,13 @@ fn main() -> ExitCode {
     let check = match args.as_slice() {
         [] => false,
         [flag] if flag == "--check" => true,
-        _ => {
-            eprintln!("pmj02-seed: the only flag is --check");
+        [other, ..] => {
+            let what = if other == "--check" {
+                "given twice"
+            } else {
+                "not a flag"
+            };
+            eprintln!("pmj02-seed: {other:?}: {what} (the only flag is --check)");
             return ExitCode::from(2);
         }
     };
