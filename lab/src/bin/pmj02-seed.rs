@@ -11,11 +11,10 @@ fn main() -> ExitCode {
     let check = match args.as_slice() {
         [] => false,
         [flag] if flag == "--check" => true,
-        [other, ..] => {
-            let what = if other == "--check" {
-                "given twice"
-            } else {
-                "not a flag"
+        _ => {
+            let (other, what) = match args.iter().find(|a| *a != "--check") {
+                Some(a) => (a.as_str(), "not a flag"),
+                None => ("--check", "given twice"),
             };
             eprintln!("pmj02-seed: {other:?}: {what} (the only flag is --check)");
             return ExitCode::from(2);
