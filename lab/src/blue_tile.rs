@@ -23,9 +23,9 @@
 //! swap that lowers `E` and, under simulated annealing, some that raise it early on; half the
 //! proposals pair random pixels, half pixels at most 8 apart. All spp are optimised together.
 //!
-//! **Rank stage.** Then, from the top spp down, each pixel chooses one rank bit: which of two
-//! aligned blocks its first `n` samples are, as Heitz et al. (2019) and
-//! OpenQMC rank their pixels.
+//! **Rank stage.** Then, from the top spp down, each pixel chooses its rank bits, the top three
+//! together and then one at a time: which aligned block its first `n` samples are, as Heitz et
+//! al. (2019) and OpenQMC rank their pixels ([`choose_ranks`]).
 
 use nyquist::rng::{default_rng, uniform_below, uniform_f64};
 use nyquist::sampler::screen_blue::{
@@ -348,7 +348,7 @@ pub fn optimise(spec: &TileSpec, progress: &dyn Fn(u32, u32)) -> Tile {
 
 /// How many rank bits the rank stage chooses together, from the top ([`choose_ranks`]); bits
 /// past these are chosen one at a time.
-const RANK_CHUNKS: [u32; 3] = [4, 3, 1];
+const RANK_CHUNKS: [u32; 1] = [3];
 
 /// Sets rank bits `low .. high` of every entry (whose bits above are set and below are 0):
 /// each pixel chooses which aligned block of `2^low` of its first `2^high` samples comes
@@ -436,14 +436,16 @@ fn choose_rank_bits(
     }
 }
 
-/// The rank stage: rank bits in chunks from the top ([`RANK_CHUNKS`]: bits 4 … 7, then 1 … 3,
-/// then 0 for the shipped spec). For a chunk of bits `low .. high`, each pixel chooses which
-/// aligned block of `2^low` of its first `2^high` samples comes first (sixteen choices for the
-/// top chunk) to lower the summed energy of the errors at levels `low .. high`, by coordinate
-/// descent over the pixels (eight sweeps in a random order). Choosing bits together gives the
-/// lower levels of a chunk (16 and 32 spp in the top one) as many choices as its highest
-/// level, where one bit at a time, from the top, would leave each level the one bit the
-/// levels above had not fixed.
+/// The rank stage: rank bits in chunks from the top ([`RANK_CHUNKS`]: bits 5 … 7 together,
+/// then each of bits 4 … 0 alone, for the shipped spec). For a chunk of bits `low .. high`,
+/// each pixel chooses which aligned block of `2^low` of its first `2^high` samples comes first
+/// (eight choices for the top chunk) to lower the summed energy of the errors at levels
+/// `low .. high`, by coordinate descent over the pixels (eight sweeps in a random order). The
+/// top chunk gives 32 spp, the top of the band the comparison measures, eight choices, where
+/// one bit at a time from the top would leave it one. Below it each bit is chosen for its own
+/// level alone, as OpenQMC's optimiser chooses every bit: a chunk's top level has one bit of
+/// choice however the chunk is cut, and in a joint chunk the levels below it outweigh it
+/// (`docs/blue-noise.md` measures both).
 ///
 /// Here the energy keeps each pixel's own term, `Σ_p |e_p|²` (the kernel's weight at distance
 /// 0 is 1): the key stage permutes the error vectors, which leaves that sum alone, but a rank

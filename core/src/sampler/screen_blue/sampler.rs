@@ -302,40 +302,40 @@ mod tests {
             got,
             [
                 [
-                    0x3f71_0157,
-                    0x3f55_303b,
-                    0x3d4e_8d10,
-                    0x3f21_3c8c,
-                    0x3e92_b99e,
-                    0x3f51_fd77,
-                    0x3f14_3d0e,
-                    0x3f2a_a3cb,
-                    0x3f1e_21d4,
-                    0x3f31_505d
+                    0x3e63_40ec,
+                    0x3f24_e3da,
+                    0x3ec3_8748,
+                    0x3f76_c71b,
+                    0x3f34_a0d2,
+                    0x3f56_942a,
+                    0x3ea9_d92c,
+                    0x3ec0_3d92,
+                    0x3ec2_2e28,
+                    0x3f38_9d35
                 ],
                 [
-                    0x3f55_7250,
-                    0x3ed7_3ae8,
-                    0x3f55_2a0c,
-                    0x3e07_5a2c,
-                    0x3b16_fd00,
-                    0x3e6b_3b40,
-                    0x3f3f_018c,
-                    0x3e62_4358,
-                    0x3f26_c765,
-                    0x3f59_4d34
+                    0x3f65_ce49,
+                    0x3eaa_8534,
+                    0x3f5d_5e0a,
+                    0x3f37_7cbf,
+                    0x3f20_2013,
+                    0x3d35_24b0,
+                    0x3dd1_f9f8,
+                    0x3d1b_3000,
+                    0x3f61_3c14,
+                    0x3f01_e49b
                 ],
                 [
-                    0x3f0a_2b7c,
-                    0x3d7f_4fc0,
-                    0x3f59_add2,
-                    0x3ec3_b9b0,
-                    0x3f40_5806,
-                    0x3efe_05b8,
-                    0x3ee3_ba24,
-                    0x3e10_f804,
-                    0x3ed0_c812,
-                    0x3f67_ee59
+                    0x3f3f_2b7c,
+                    0x3f08_f4fc,
+                    0x3d2a_dd20,
+                    0x3f4c_dcd8,
+                    0x3d82_c030,
+                    0x3d70_2dc0,
+                    0x3f01_dd12,
+                    0x3f54_3e01,
+                    0x3db3_2048,
+                    0x3f6d_ee59
                 ]
             ]
         );
