@@ -25,7 +25,8 @@
 //!
 //! **Rank stage.** Then, from the top spp down, each pixel chooses its rank bits, the top three
 //! together and then one at a time: which aligned block its first `n` samples are, as Heitz et
-//! al. (2019) and OpenQMC rank their pixels. The top chunk gives 32 spp eight choices; below it each bit is chosen for its own level.
+//! al. (2019) and OpenQMC rank their pixels. The top chunk gives 32 spp eight choices; below
+//! it each bit is chosen for its own level.
 
 use nyquist::rng::{default_rng, uniform_below, uniform_f64};
 use nyquist::sampler::screen_blue::{
