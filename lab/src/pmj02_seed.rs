@@ -21,9 +21,11 @@
 //! gives with their integrals for a report.
 
 use crate::blue_tile::BlockIntegrand;
+use crate::parallel::map_tasks;
 use nyquist::hash::mix64;
 use nyquist::scramble::nested_uniform_shuffle;
 use nyquist::sequence::{PMJ02_MAX_POINTS, pmj02_build};
+use std::convert::Infallible;
 use std::f64::consts::PI;
 
 /// The seeds [`search`] tries for the shipped table: `0 .. SEEDS`.
@@ -237,42 +239,41 @@ pub struct Search {
     pub best_rmse: Vec<[f64; 5]>,
 }
 
-/// Scores the tables of `seeds` ([`rmse`] with `trials`, [`score`]) on every core and keeps
-/// the best (the lowest seed on a tie); `None` for an empty range.
-pub fn search(seeds: std::ops::Range<u64>, trials: u32) -> Option<Search> {
-    let all: Vec<u64> = seeds.collect();
-    let threads = std::thread::available_parallelism().map_or(1, usize::from);
-    let chunk = all.len().div_ceil(threads).max(1);
-    let integrands = training();
-    let integrands = &integrands;
-    let measured: Vec<(u64, Vec<[f64; 5]>)> = std::thread::scope(|scope| {
-        let handles: Vec<_> = all
-            .chunks(chunk)
-            .map(|part| {
-                scope.spawn(move || {
-                    part.iter()
-                        .map(|&s| (s, rmse(&table(s), integrands, trials)))
-                        .collect::<Vec<_>>()
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().expect("a seed worker panicked"))
-            .collect()
-    });
-    let mut reference = vec![[0f64; 5]; TRAINING.len()];
-    for (_, r) in &measured {
-        for (m, v) in reference.iter_mut().flatten().zip(r.iter().flatten()) {
-            *m += v * v / measured.len() as f64;
+/// Per cell, the root mean square of several tables' RMSE (`[table][integrand][count]`): the
+/// RMSE of the average table. Empty for no tables.
+pub fn root_mean_square(rmses: &[Vec<[f64; 5]>]) -> Vec<[f64; 5]> {
+    let Some(first) = rmses.first() else {
+        return Vec::new();
+    };
+    let mut out = vec![[0f64; 5]; first.len()];
+    for r in rmses {
+        for (m, v) in out.iter_mut().flatten().zip(r.iter().flatten()) {
+            *m += v * v / rmses.len() as f64;
         }
     }
-    for m in reference.iter_mut().flatten() {
+    for m in out.iter_mut().flatten() {
         *m = m.sqrt();
     }
-    let scores: Vec<(u64, f64)> = measured
+    out
+}
+
+/// Scores the tables of `seeds` ([`rmse`] with `trials`, [`score`]) on every core (the lab's
+/// work queue, [`map_tasks`]) and keeps the best (the lowest seed on a tie); `None` for an
+/// empty range.
+pub fn search(seeds: std::ops::Range<u64>, trials: u32) -> Option<Search> {
+    let all: Vec<u64> = seeds.collect();
+    let integrands = training();
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    let order: Vec<usize> = (0..all.len()).collect();
+    let measured = map_tasks(&order, threads, |i| {
+        Ok::<_, Infallible>(rmse(&table(all[i]), &integrands, trials))
+    })
+    .unwrap_or_else(|never| match never {});
+    let reference = root_mean_square(&measured);
+    let scores: Vec<(u64, f64)> = all
         .iter()
-        .map(|(s, r)| (*s, score(r, &reference)))
+        .zip(&measured)
+        .map(|(&s, r)| (s, score(r, &reference)))
         .collect();
     let (at, &(best, _)) = scores
         .iter()
@@ -280,7 +281,7 @@ pub fn search(seeds: std::ops::Range<u64>, trials: u32) -> Option<Search> {
         .min_by(|a, b| a.1.1.total_cmp(&b.1.1).then(a.1.0.cmp(&b.1.0)))?;
     Some(Search {
         best,
-        best_rmse: measured[at].1.clone(),
+        best_rmse: measured[at].clone(),
         scores,
         reference,
     })
@@ -359,6 +360,9 @@ mod tests {
         corner.fill([0, 0]);
         let bad = rmse(&corner, &training(), 400);
         assert!(search(5..5, 10).is_none());
+        assert!(root_mean_square(&[]).is_empty());
+        let rms = root_mean_square(&[vec![[3.0; 5]], vec![[4.0; 5]]]);
+        assert!((rms[0][2] - 12.5f64.sqrt()).abs() < 1e-12);
         assert!(rmse(&t, &training(), 0)[0][0].is_nan());
         assert!(score(&bad, &r) > 5.0);
         assert_eq!(score(&r, &r), 0.0);

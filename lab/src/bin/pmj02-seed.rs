@@ -3,7 +3,9 @@
 //! with status 1 unless the best is the shipped [`nyquist::sequence::PMJ02_TABLE_SEED`].
 
 use nyquist::sequence::PMJ02_TABLE_SEED;
-use nyquist_lab::pmj02_seed::{COUNTS, SEEDS, TRAINING, TRIALS, held_out, rmse, search, table};
+use nyquist_lab::pmj02_seed::{
+    COUNTS, SEEDS, TRAINING, TRIALS, held_out, rmse, root_mean_square, search, table,
+};
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -37,35 +39,32 @@ fn main() -> ExitCode {
         found.best,
         counts.join(", ")
     );
-    for ((t, best), reference) in TRAINING.iter().zip(&found.best_rmse).zip(&found.reference) {
+    // One line per integrand: the chosen table's RMSE / the average table's, per count.
+    let print = |name: &str, best: &[f64; 5], reference: &[f64; 5]| {
         let cells: Vec<String> = best
             .iter()
             .zip(reference)
             .map(|(b, r)| format!("{b:.4}/{r:.4}"))
             .collect();
-        eprintln!("pmj02-seed: {:>20}: {}", t.name, cells.join(" "));
+        eprintln!("pmj02-seed: {name:>20}: {}", cells.join(" "));
+    };
+    for ((t, best), reference) in TRAINING.iter().zip(&found.best_rmse).zip(&found.reference) {
+        print(t.name, best, reference);
     }
-    // The held-out integrands, which the search did not see: the chosen table's RMSE against
-    // that of the seeds' average table (the root mean square over the first 64 seeds).
+    // The held-out integrands, which the search did not see, against the average table of the
+    // first 64 seeds.
     let held = held_out();
     let integrands: Vec<_> = held.iter().map(|&(_, f, i)| (f, i)).collect();
     let chosen = rmse(&table(found.best), &integrands, TRIALS);
-    let mut mean = vec![[0f64; 5]; held.len()];
-    for seed in 0..64 {
-        for (m, r) in mean.iter_mut().zip(rmse(&table(seed), &integrands, TRIALS)) {
-            for (a, b) in m.iter_mut().zip(r) {
-                *a += b * b / 64.0;
-            }
-        }
-    }
+    let tables: Vec<_> = (0..64)
+        .map(|s| rmse(&table(s), &integrands, TRIALS))
+        .collect();
     eprintln!("pmj02-seed: held-out integrands, the same columns (the average of seeds 0 … 63):");
-    for ((name, _, _), (best, m)) in held.iter().zip(chosen.iter().zip(&mean)) {
-        let cells: Vec<String> = best
-            .iter()
-            .zip(m)
-            .map(|(b, r)| format!("{b:.4}/{:.4}", r.sqrt()))
-            .collect();
-        eprintln!("pmj02-seed: {name:>20}: {}", cells.join(" "));
+    for ((name, _, _), (best, reference)) in held
+        .iter()
+        .zip(chosen.iter().zip(&root_mean_square(&tables)))
+    {
+        print(name, best, reference);
     }
     println!("{}", found.best);
     if check && found.best != PMJ02_TABLE_SEED {
