@@ -93,10 +93,11 @@ fn lattice_bn_error_is_blue() {
 }
 
 /// Each pixel's estimate has the variance of the plain family: the mean squared error over
-/// the 16384 pixels agrees within 8 % (the two means' sampling error is a few per cent on the
-/// disk's 0/1 values). At 1 spp the bound is 10 %: there the rank stage picks which sample a
-/// pixel's first one is, and that choice raises `lattice-bn`'s mean squared error on the
-/// Gaussian by 8.0 % (by 6.6 % with the rank bits grouped 4–7, 1–3, 0).
+/// the 16384 pixels agrees within 6 % (the two means' sampling error is a few per cent on the
+/// disk's 0/1 values), at 1 spp too, where the rank stage picks which sample a pixel's first
+/// one is. The ratios printed range from 0.957 to 1.021 (`cargo test -p nyquist-lab --test
+/// screen_blue per_pixel -- --nocapture`); with the last rank bit chosen on the errors rather
+/// than their deviations, `lattice-bn`'s Gaussian at 1 spp was 1.080.
 fn per_pixel_error_is_the_plain_familys<F: BlueFamily>() {
     for spp in [1, 4, 16] {
         for (name, f) in HELD_OUT.iter().take(2) {
@@ -120,9 +121,13 @@ fn per_pixel_error_is_the_plain_familys<F: BlueFamily>() {
                 *f,
             ));
             let w = mse(plain_estimates::<F>(spp, *f));
-            let bound = if spp == 1 { 0.10 } else { 0.08 };
+            eprintln!(
+                "{} {name}, {spp} spp: mean squared error {:.4} of the plain family's",
+                F::NAME,
+                b / w
+            );
             assert!(
-                (b / w - 1.0).abs() < bound,
+                (b / w - 1.0).abs() < 0.06,
                 "{} {name}, {spp} spp: {b} against {w}",
                 F::NAME
             );

@@ -302,10 +302,10 @@ mod tests {
             got,
             [
                 [
-                    0x3e63_40ec,
-                    0x3f24_e3da,
-                    0x3ec3_8748,
-                    0x3f76_c71b,
+                    0x3f03_f046,
+                    0x3e7d_84dc,
+                    0x3f5f_3a74,
+                    0x3e5f_88ec,
                     0x3f34_a0d2,
                     0x3f56_942a,
                     0x3ea9_d92c,
