@@ -117,9 +117,9 @@ mod tests {
     #[test]
     fn the_tile_is_pinned_wraps_and_permutes_the_initial_keys() {
         let entry = OwenSobolBlue::entry;
-        assert_eq!(entry(0, 0), 0x3d_8100);
-        assert_eq!(entry(127, 0), 0x0c_1001);
-        assert_eq!(entry(5, 77), 0x21_8905);
+        assert_eq!(entry(0, 0), 0x3d_81ca);
+        assert_eq!(entry(127, 0), 0x0c_1057);
+        assert_eq!(entry(5, 77), 0x21_89b0);
         assert_eq!(entry(5 + 128, 77 + 256), entry(5, 77));
         assert_eq!(entry(128, 0), entry(0, 0));
         assert_eq!(entry(0, 128 * 7), entry(0, 0));
@@ -163,7 +163,7 @@ mod tests {
     fn values_are_pinned() {
         assert_eq!(
             OwenSobolBlue::values(OwenSobolBlue::entry(3, 4), 5).map(f32::to_bits),
-            [1_064_318_765, 1_045_588_108, 1_065_286_829, 1_036_343_016]
+            [1_064_477_725, 1_056_348_880, 1_058_578_648, 1_040_250_296]
         );
     }
 }

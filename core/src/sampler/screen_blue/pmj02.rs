@@ -133,7 +133,7 @@ mod tests {
         let entry = Pmj02Blue::entry;
         assert_eq!(
             [entry(0, 0), entry(127, 0), entry(5, 77)],
-            [0x31_0a00, 0x28_a607, 0x1a_7a61]
+            [0x0e_4d17, 0x35_7951, 0x07_50b8]
         );
         assert_eq!(entry(5 + 128, 77 + 256), entry(5, 77));
         let mut got: Vec<u32> = (0..TILE_SIZE * TILE_SIZE)

@@ -302,40 +302,40 @@ mod tests {
             got,
             [
                 [
-                    0x3f03_f046,
-                    0x3e7d_84dc,
-                    0x3f5f_3a74,
-                    0x3e5f_88ec,
-                    0x3f34_a0d2,
-                    0x3f56_942a,
-                    0x3ea9_d92c,
-                    0x3ec0_3d92,
-                    0x3ec2_2e28,
-                    0x3f38_9d35
+                    0x3f78_52d9,
+                    0x3f03_0fc3,
+                    0x3e77_16e8,
+                    0x3f5b_4063,
+                    0x3eb1_63cc,
+                    0x3f6c_a645,
+                    0x3ecc_5536,
+                    0x3f1a_3b71,
+                    0x3cff_8bc0,
+                    0x3f6d_dbd1
                 ],
                 [
-                    0x3f65_ce49,
-                    0x3eaa_8534,
-                    0x3f5d_5e0a,
-                    0x3f37_7cbf,
-                    0x3f20_2013,
-                    0x3d35_24b0,
-                    0x3dd1_f9f8,
-                    0x3d1b_3000,
-                    0x3f61_3c14,
-                    0x3f01_e49b
+                    0x3f2c_77c8,
+                    0x3f31_f486,
+                    0x3ea6_4138,
+                    0x3f47_da98,
+                    0x3eae_2d90,
+                    0x3e88_4df0,
+                    0x3f10_3fa4,
+                    0x3f37_49d3,
+                    0x3e7e_9adc,
+                    0x3f21_f498
                 ],
                 [
-                    0x3f3f_2b7c,
-                    0x3f08_f4fc,
-                    0x3d2a_dd20,
-                    0x3f4c_dcd8,
-                    0x3d82_c030,
-                    0x3d70_2dc0,
-                    0x3f01_dd12,
-                    0x3f54_3e01,
-                    0x3db3_2048,
-                    0x3f6d_ee59
+                    0x3dd9_5be0,
+                    0x3f14_f4fc,
+                    0x3f36_add2,
+                    0x3f70_dcd8,
+                    0x3f58_5806,
+                    0x3eee_05b8,
+                    0x3f29_dd12,
+                    0x3d43_e010,
+                    0x3ecc_c812,
+                    0x3efb_dcb2
                 ]
             ]
         );
