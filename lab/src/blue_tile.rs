@@ -26,9 +26,9 @@
 //! **Rank stage.** Then, from the top spp down, each pixel chooses its rank bits, the top three
 //! together and then one at a time: which aligned block its first `n` samples are, as Heitz et
 //! al. (2019) and OpenQMC rank their pixels, by simulated annealing on the same energy with each
-//! pixel's own term kept. The top chunk gives 32 spp eight choices; below
-//! it each bit is chosen for its own level, the last (1 spp) on the deviations of the pair's
-//! two samples from their mean, so that it cannot favour the larger error.
+//! pixel's own term kept. The top chunk gives 32 spp eight choices; below it each bit is
+//! chosen for its own level, the last (1 spp) on the deviations of the pair's two samples from
+//! their mean, so that it cannot favour the larger error.
 
 use nyquist::rng::{default_rng, uniform_below, uniform_f64};
 use nyquist::sampler::screen_blue::{
@@ -96,8 +96,8 @@ impl Family {
     /// The test integrands over the whole 4-D block: oriented Heavisides and Gaussians, 8 and 1,
     /// or 32 and 4 for `pmj02-bn`. Its two pairs are shuffled independently, so its 4-D
     /// errors follow its pairs' less than the other families' do: with 8 and 1 its held-out 4-D
-    /// Heaviside was white at 16 spp (ratio 1.01), with 32 and 4 it is 0.87
-    /// (`docs/blue-noise.md`).
+    /// Heaviside was white at 16 spp (ratio 1.01 on the lab test's 128² image), with 32 and 4
+    /// it is 0.87 (`docs/blue-noise.md`).
     pub fn block_integrands(self) -> (usize, usize) {
         match self {
             Family::Pmj02 => (32, 4),
@@ -373,11 +373,12 @@ fn accepts(delta: f64, temperature: f64, rng: &mut nyquist::rng::DefaultRng) -> 
 }
 
 /// Sweeps of the rank stage's annealing (each pixel proposes one other option per sweep on
-/// average), then of its coordinate descent (each pixel takes its best option): 128 and 8.
-/// Against coordinate descent alone, the annealing lowers the low-frequency ratio of
-/// integrands of the training families it was not trained on by 0.02 to 0.03 at 1 … 32 spp
-/// (`docs/blue-noise.md`).
+/// average). Against coordinate descent alone, the annealing lowers the mean low-frequency
+/// ratio at 1 … 32 spp of integrands of the training families it was not trained on by 0.02 to
+/// 0.03 (`docs/blue-noise.md`).
 const RANK_ANNEALED_SWEEPS: u32 = 128;
+/// Sweeps of the rank stage's coordinate descent after the annealing (each pixel takes its
+/// best option).
 const RANK_GREEDY_SWEEPS: u32 = 8;
 
 /// How many rank bits the rank stage chooses together, from the top ([`choose_ranks`]); bits
@@ -502,12 +503,11 @@ fn choose_rank_bits(
 /// (eight choices for the top chunk) to lower the summed energy of the errors at levels
 /// `low .. high`: by simulated annealing, each proposal a random pixel and another of its
 /// options ([`RANK_ANNEALED_SWEEPS`]), then by coordinate descent over the pixels in a random
-/// order ([`RANK_GREEDY_SWEEPS`]). The
-/// top chunk gives 32 spp, the top of the band the comparison measures, eight choices, where
-/// one bit at a time from the top would leave it one. Below it each bit is chosen for its own
-/// level alone, as OpenQMC's optimiser chooses every bit: a chunk's top level has one bit of
-/// choice however the chunk is cut, and in a joint chunk the levels below it outweigh it
-/// (`docs/blue-noise.md` measures both).
+/// order ([`RANK_GREEDY_SWEEPS`]). The top chunk gives 32 spp, the top of the band the
+/// comparison measures, eight choices, where one bit at a time from the top would leave it
+/// one. Below it each bit is chosen for its own level alone, as OpenQMC's optimiser chooses
+/// every bit: a chunk's top level has one bit of choice however the chunk is cut, and in a
+/// joint chunk the levels below it outweigh it (`docs/blue-noise.md` measures both).
 ///
 /// Here the energy keeps each pixel's own term, `Σ_p |e_p|²` (the kernel's weight at distance
 /// 0 is 1): the key stage permutes the error vectors, which leaves that sum alone, but a rank
@@ -518,8 +518,8 @@ fn choose_rank_bits(
 /// bit: a pixel's 1-spp error is its 2-spp error `m` plus or minus a deviation `d`, and the bit
 /// chooses the sign of `d` to make the image of the chosen deviations blue. Both options have
 /// the same `|d|`, so the choice cannot favour the larger error. Chosen on the errors
-/// themselves, the self term did not stop that: `lattice-bn`'s 1-spp RMSE on the held-out
-/// Gaussian was 2.6 % above the plain lattice's (`docs/blue-noise.md`).
+/// themselves, the self term did not stop that: `lattice-bn`'s 1-spp mean squared error on the
+/// held-out Gaussian was 8.0 % above the plain lattice's (`docs/blue-noise.md`).
 fn choose_ranks(spec: &TileSpec, entries: &mut [u32]) {
     let tests = tests(spec.family, spec.seed);
     let mut rng = default_rng(spec.seed ^ 0x5241_4e4b); // "RANK"
