@@ -287,8 +287,10 @@ fn spread(
     let (cx, cy) = ((p as i32) % m, (p as i32) / m);
     for &(dx, dy, w) in win {
         let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
-        for k in 0..c {
-            s[r * c + k] += sign * w * d[k];
+        let weight = sign * w;
+        // Slices rather than indices, so the loop has no bounds checks and vectorises.
+        for (x, dk) in s[r * c..(r + 1) * c].iter_mut().zip(&d[..c]) {
+            *x += weight * dk;
         }
     }
 }
@@ -447,14 +449,19 @@ fn choose_rank_bits(
     let mut s = blurred(&current, c, spec.size);
     let win = window();
     let norm = |v: &[f32]| v.iter().map(|&x| f64::from(x).powi(2)).sum::<f64>();
+    let norms: Vec<f64> = e.chunks_exact(c).map(norm).collect();
     // The energy's change when pixel `p` moves from its option to option `o`.
     let change = |s: &[f64], chosen: &[usize], p: usize, o: usize| {
         let (from, to) = (at(p, chosen[p]), at(p, o));
-        let dot: f64 = (0..c)
-            .map(|k| (f64::from(to[k]) - f64::from(from[k])) * s[p * c + k])
+        let dot: f64 = to
+            .iter()
+            .zip(from)
+            .zip(&s[p * c..(p + 1) * c])
+            .map(|((t, f), s)| (f64::from(*t) - f64::from(*f)) * s)
             .sum();
-        2.0 * dot + norm(to) - norm(from)
+        2.0 * dot + norms[p * options + o] - norms[p * options + chosen[p]]
     };
+    let mut d = vec![0f64; c];
     let mut scale = 0.0;
     for sweep in 0..RANK_ANNEALED_SWEEPS + RANK_GREEDY_SWEEPS {
         for t in 0..n {
@@ -485,9 +492,9 @@ fn choose_rank_bits(
                 continue;
             }
             let (from, to) = (at(p, chosen[p]), at(p, best.1));
-            let d: Vec<f64> = (0..c)
-                .map(|k| f64::from(to[k]) - f64::from(from[k]))
-                .collect();
+            for ((dk, t), f) in d.iter_mut().zip(to).zip(from) {
+                *dk = f64::from(*t) - f64::from(*f);
+            }
             chosen[p] = best.1;
             spread(&mut s, c, spec.size, &win, p, &d, 1.0);
         }
