@@ -98,7 +98,7 @@ impl Family {
     /// errors follow its pairs' less than the other families' do: with 8 and 1 its held-out 4-D
     /// Heaviside was white at 16 spp (ratio 1.01 on the lab test's 128² image), with 32 and 4
     /// it is 0.87 (`docs/blue-noise.md`).
-    pub fn block_integrands(self) -> (usize, usize) {
+    fn block_integrands(self) -> (usize, usize) {
         match self {
             Family::Pmj02 => (32, 4),
             Family::OwenSobol | Family::Lattice => (8, 1),
@@ -288,7 +288,7 @@ fn spread(
     for &(dx, dy, w) in win {
         let r = (((cy + dy) & (m - 1)) * m + ((cx + dx) & (m - 1))) as usize;
         let weight = sign * w;
-        // Slices rather than indices, so the loop has no bounds checks and vectorises.
+        // Over slices: one bounds check per row, none per component.
         for (x, dk) in s[r * c..(r + 1) * c].iter_mut().zip(&d[..c]) {
             *x += weight * dk;
         }

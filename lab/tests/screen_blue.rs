@@ -95,7 +95,7 @@ fn lattice_bn_error_is_blue() {
 /// Each pixel's estimate has the variance of the plain family: the mean squared error over
 /// the 16384 pixels agrees within 6 % (the two means' sampling error is a few per cent on the
 /// disk's 0/1 values), at 1 spp too, where the rank stage picks which sample a pixel's first
-/// one is. The ratios printed range from 0.957 to 1.021 (`cargo test -p nyquist-lab --test
+/// one is. The ratios printed range from 0.950 to 1.016 (`cargo test -p nyquist-lab --test
 /// screen_blue per_pixel -- --nocapture`); with the last rank bit chosen on the errors rather
 /// than their deviations, `lattice-bn`'s Gaussian at 1 spp was 1.080.
 fn per_pixel_error_is_the_plain_familys<F: BlueFamily>() {
