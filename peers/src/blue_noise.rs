@@ -7,15 +7,23 @@
 //! periodogram power below a quarter of the Nyquist radius over the mean power at every
 //! non-zero frequency: 1 for white error, lower for blue).
 //!
+//! A last table compares each nyquist blue-noise sampler's RMSE with OpenQMC's counterpart's:
+//! the ratio and how many standard errors apart they are. Every pixel integrates the same
+//! function, so an RMSE is a mean over the keys the image holds, and it varies with the draw
+//! of those keys. The standard error of a mean square is the standard deviation of the
+//! squared errors over the √ of the distinct pixels: one period of the sampler's tile (nyquist
+//! 128², OpenQMC 256²), every pixel for per-pixel seeds; the RMSE's is half of that over the
+//! RMSE (the delta method).
+//!
 //! `cargo run --release --manifest-path peers/Cargo.toml -- --blue-noise [--size N]
-//! [--frame F] [--images DIR]`
+//! [--frame F] [--images DIR] [--pmj-tables N]`
 
 use nyquist::sampler::{
     LatticeBlueSampler, OwenSobolBlueSampler, OwenSobolSampler, Pmj02BlueSampler, Pmj02Sampler,
     RandomSampler, Sampler,
 };
-use nyquist_lab::error_spectrum::error_spectrum;
 use nyquist_lab::blue_tile::{BlockIntegrand, HELD_OUT};
+use nyquist_lab::error_spectrum::error_spectrum;
 
 /// Four values per (pixel, sample), pixel-major, for block `block` (dimensions `4b .. 4b+4`).
 type Draw = Box<dyn Fn(u32, u32, u32, u32) -> Vec<f32>>;
@@ -45,43 +53,59 @@ fn openqmc_draw(kind: i32) -> Draw {
     Box::new(move |size, spp, frame, block| crate::openqmc::bn_draw(kind, size, frame, spp, block))
 }
 
+/// A sampler compared: its name, its draws, and the period of its tile in pixels (`u32::MAX`
+/// for one seed per pixel): the pixels of one period hold distinct keys.
+type Source = (&'static str, Draw, u32);
+
+/// The side of OpenQMC's blue-noise tables (`include/oqmc/bntables.h`: 2⁸ × 2⁸ pixels).
+#[cfg(peer_openqmc)]
+const OPENQMC_TILE: u32 = 256;
+
 /// The samplers compared, by name.
-fn sources(frame: u32) -> Vec<(&'static str, Draw)> {
+fn sources(frame: u32) -> Vec<Source> {
+    use nyquist::sampler::screen_blue::TILE_SIZE;
+    const PER_PIXEL: u32 = u32::MAX;
     #[cfg_attr(not(peer_openqmc), allow(unused_mut))]
-    let mut v: Vec<(&'static str, Draw)> = vec![
+    let mut v: Vec<Source> = vec![
         (
             "nyquist owen-sobol-bn",
             nyquist_draw(OwenSobolBlueSampler::new(1, 0).unwrap().with_frame(frame)),
+            TILE_SIZE,
         ),
         (
             "nyquist owen-sobol",
             nyquist_draw(OwenSobolSampler::new(1, 0).unwrap().with_frame(frame)),
+            PER_PIXEL,
         ),
         (
             "nyquist pmj02-bn",
             nyquist_draw(Pmj02BlueSampler::new(1, 0).unwrap().with_frame(frame)),
+            TILE_SIZE,
         ),
         (
             "nyquist pmj02",
             nyquist_draw(Pmj02Sampler::new(1, frame.into()).unwrap()),
+            PER_PIXEL,
         ),
         (
             "nyquist lattice-bn",
             nyquist_draw(LatticeBlueSampler::new(1, 0).unwrap().with_frame(frame)),
+            TILE_SIZE,
         ),
         (
             "white (random)",
             nyquist_draw(RandomSampler::new(1, 0).unwrap()),
+            PER_PIXEL,
         ),
     ];
     #[cfg(peer_openqmc)]
     {
-        v.push(("OpenQMC sobolbn", openqmc_draw(0)));
-        v.push(("OpenQMC pmjbn", openqmc_draw(1)));
-        v.push(("OpenQMC latticebn", openqmc_draw(2)));
-        v.push(("OpenQMC sobol", openqmc_draw(3)));
-        v.push(("OpenQMC pmj", openqmc_draw(4)));
-        v.push(("OpenQMC lattice", openqmc_draw(5)));
+        v.push(("OpenQMC sobolbn", openqmc_draw(0), OPENQMC_TILE));
+        v.push(("OpenQMC pmjbn", openqmc_draw(1), OPENQMC_TILE));
+        v.push(("OpenQMC latticebn", openqmc_draw(2), OPENQMC_TILE));
+        v.push(("OpenQMC sobol", openqmc_draw(3), PER_PIXEL));
+        v.push(("OpenQMC pmj", openqmc_draw(4), PER_PIXEL));
+        v.push(("OpenQMC lattice", openqmc_draw(5), PER_PIXEL));
     }
     #[cfg(not(peer_openqmc))]
     eprintln!("OpenQMC: not built (set NYQUIST_OPENQMC; README.md)");
@@ -132,15 +156,39 @@ fn low_frequency_ratio(image: &[f64], size: u32) -> f64 {
     error_spectrum(image, size, size).map_or(f64::NAN, |s| s.low_frequency_ratio)
 }
 
+/// The standard error of an image's RMSE (module docs): from the squared errors of the pixels
+/// of one `period × period` window (the whole image if the period is larger).
+fn rmse_standard_error(err: &[f64], size: u32, period: u32, rmse: f64) -> f64 {
+    let p = period.min(size) as usize;
+    let squares: Vec<f64> = (0..p)
+        .flat_map(|y| (0..p).map(move |x| y * size as usize + x))
+        .map(|i| err[i] * err[i])
+        .collect();
+    let n = squares.len() as f64;
+    let mean = squares.iter().sum::<f64>() / n;
+    let var = squares.iter().map(|q| (q - mean).powi(2)).sum::<f64>() / (n - 1.0);
+    (var / n).sqrt() / (2.0 * rmse)
+}
+
+/// The sample counts measured.
+const SPPS: [u32; 6] = [1, 2, 4, 8, 16, 32];
+
+/// One image's figures: RMSE, its standard error, and the low-frequency ratio.
+#[derive(Clone, Copy, Default)]
+struct Cell {
+    rmse: f64,
+    se: f64,
+    ratio: f64,
+}
+
 /// Runs the study and prints its tables.
-pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
-    const SPPS: [u32; 6] = [1, 2, 4, 8, 16, 32];
+pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: u64) {
     let integrands = integrands();
     let exact: Vec<f64> = integrands.iter().map(|g| reference(g.f)).collect();
     let sources = sources(frame);
-    // results[source][integrand][spp] = (rmse, ratio)
-    let mut results = vec![vec![vec![(0.0, 0.0); SPPS.len()]; integrands.len()]; sources.len()];
-    for (si, (name, draw)) in sources.iter().enumerate() {
+    // results[source][integrand][spp]
+    let mut results = vec![vec![[Cell::default(); SPPS.len()]; integrands.len()]; sources.len()];
+    for (si, (name, draw, period)) in sources.iter().enumerate() {
         eprintln!("blue noise: {name}");
         for (k, &spp) in SPPS.iter().enumerate() {
             for block in [0, 1] {
@@ -160,7 +208,11 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
                         })
                         .collect();
                     let rmse = (err.iter().map(|e| e * e).sum::<f64>() / err.len() as f64).sqrt();
-                    results[si][ii][k] = (rmse, low_frequency_ratio(&err, size));
+                    results[si][ii][k] = Cell {
+                        rmse,
+                        se: rmse_standard_error(&err, size, *period, rmse),
+                        ratio: low_frequency_ratio(&err, size),
+                    };
                     if let Some(dir) = images
                         && spp == 4
                         && ii == 1
@@ -175,22 +227,140 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>) {
         "Screen-space error, {size} × {size} pixels, frame {frame}: per-pixel RMSE and \
          low-frequency ratio (1 = white) at 1, 2, 4, 8, 16, 32 spp.\n"
     );
+    let header = SPPS.map(|s| format!("{s} spp")).join(" | ");
     for (ii, g) in integrands.iter().enumerate() {
         println!("### {}\n", g.name);
-        println!(
-            "| sampler | {} |",
-            SPPS.map(|s| format!("{s} spp")).join(" | ")
-        );
+        println!("| sampler | {header} |");
         println!("|---|{}", "---:|".repeat(SPPS.len()));
-        for (si, (name, _)) in sources.iter().enumerate() {
+        for (si, (name, _, _)) in sources.iter().enumerate() {
             let cells: Vec<String> = results[si][ii]
                 .iter()
-                .map(|(rmse, ratio)| format!("{rmse:.4} / {ratio:.2}"))
+                .map(|c| format!("{:.4} / {:.2}", c.rmse, c.ratio))
                 .collect();
             println!("| {name} | {} |", cells.join(" | "));
         }
         println!();
     }
+    print_rmse_against_openqmc(&sources, &integrands, &results, &header);
+    #[cfg(peer_openqmc)]
+    print_pmj_tables(pmj_tables);
+    #[cfg(not(peer_openqmc))]
+    let _ = pmj_tables;
+}
+
+/// `pmj02-bn`'s error is its table's (`docs/blue-noise.md`, "The table's seed"), and so is
+/// OpenQMC's `pmjbn`'s. This measures OpenQMC's table under `pmj02-bn`'s randomisation
+/// beside the tables of seeds `0 .. tables` of the same construction (`nyquist_lab::pmj02_seed::rmse`, the same pixels for every table), on the
+/// integrands of the tables above: per cell, the shipped table's RMSE, OpenQMC's, and how many
+/// of the seeds' tables are at or below OpenQMC's.
+#[cfg(peer_openqmc)]
+fn print_pmj_tables(tables: u64) {
+    use nyquist::sequence::PMJ02_TABLE_SEED;
+    use nyquist_lab::pmj02_seed::{COUNTS, TRIALS, held_out, rmse, score, search, table, training};
+    use std::convert::Infallible;
+    let integrands: Vec<(&str, BlockIntegrand, f64)> = held_out()
+        .into_iter()
+        .filter(|(name, _, _)| !name.contains("2-3"))
+        .collect();
+    let fs: Vec<(BlockIntegrand, f64)> = integrands.iter().map(|&(_, f, i)| (f, i)).collect();
+    let mut theirs = table(0);
+    theirs.copy_from_slice(&crate::openqmc::PmjTable::new().first_pair());
+    let openqmc = rmse(&theirs, &fs, TRIALS);
+    let seeds: Vec<usize> = (0..tables as usize).collect();
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    let all = nyquist_lab::parallel::map_tasks(&seeds, threads, |s| {
+        Ok::<_, Infallible>(rmse(&table(s as u64), &fs, TRIALS))
+    })
+    .unwrap_or_else(|never| match never {});
+    let shipped_table = table(PMJ02_TABLE_SEED);
+    let shipped = rmse(&shipped_table, &fs, TRIALS);
+    println!(
+        "### PMJ(0,2) tables under pmj02-bn's randomisation: the shipped table (seed \
+         {PMJ02_TABLE_SEED}) / OpenQMC's (RMSE, {TRIALS} pixels), and how many of the tables of \
+         seeds 0 … {} are at or below OpenQMC's\n",
+        tables - 1
+    );
+    println!(
+        "| integrand | {} |",
+        COUNTS.map(|n| format!("{n} spp")).join(" | ")
+    );
+    println!("|---|{}", "---:|".repeat(COUNTS.len()));
+    for (k, (name, _, _)) in integrands.iter().enumerate() {
+        let cells: Vec<String> = (0..COUNTS.len())
+            .map(|c| {
+                let below = all.iter().filter(|r| r[k][c] <= openqmc[k][c]).count();
+                format!("{:.4} / {:.4}, {below}", shipped[k][c], openqmc[k][c])
+            })
+            .collect();
+        println!("| {name} | {} |", cells.join(" | "));
+    }
+    let every = all
+        .iter()
+        .filter(|r| {
+            (0..integrands.len()).all(|k| (0..COUNTS.len()).all(|c| r[k][c] <= openqmc[k][c]))
+        })
+        .count();
+    println!("\nTables at or below OpenQMC's in every cell: {every} of {tables}.");
+    // The same tables on the integrands the seed was chosen by (`pmj02-seed`'s score: the sum
+    // of log RMSE ratios to the average table, lower is better).
+    let search = search(0..tables, TRIALS).expect("a non-empty range of seeds");
+    let theirs_score = score(&rmse(&theirs, &training(), TRIALS), &search.reference);
+    let below = search.scores.iter().filter(|s| s.1 < theirs_score).count();
+    let shipped_score = score(
+        &rmse(&shipped_table, &training(), TRIALS),
+        &search.reference,
+    );
+    println!(
+        "On pmj02-seed's training integrands: the shipped table scores {shipped_score:.2}, \
+         OpenQMC's {theirs_score:.2}; {below} of the {tables} tables score lower.\n"
+    );
+}
+
+/// The nyquist samplers and their OpenQMC counterparts in the RMSE comparison.
+const COUNTERPARTS: [(&str, &str); 3] = [
+    ("nyquist owen-sobol-bn", "OpenQMC sobolbn"),
+    ("nyquist pmj02-bn", "OpenQMC pmjbn"),
+    ("nyquist lattice-bn", "OpenQMC latticebn"),
+];
+
+/// For each pair of [`COUNTERPARTS`] that ran: per integrand and spp, nyquist's RMSE over
+/// OpenQMC's and the difference in standard errors of the difference (`z`; |z| > 2 is a
+/// difference the draw of the keys explains less than one time in twenty).
+fn print_rmse_against_openqmc(
+    sources: &[Source],
+    integrands: &[Integrand],
+    results: &[Vec<[Cell; SPPS.len()]>],
+    header: &str,
+) {
+    let index = |name: &str| sources.iter().position(|s| s.0 == name);
+    let pairs: Vec<(usize, usize)> = COUNTERPARTS
+        .iter()
+        .filter_map(|&(a, b)| Some((index(a)?, index(b)?)))
+        .collect();
+    if pairs.is_empty() {
+        return;
+    }
+    println!(
+        "### RMSE against OpenQMC's: nyquist / OpenQMC (z = difference / its standard error)\n"
+    );
+    println!("| integrand | sampler | {header} |");
+    println!("|---|---|{}", "---:|".repeat(SPPS.len()));
+    for (ii, g) in integrands.iter().enumerate() {
+        for &(a, b) in &pairs {
+            let cells: Vec<String> = results[a][ii]
+                .iter()
+                .zip(&results[b][ii])
+                .map(|(x, y)| {
+                    // At 1 spp a disk's error is ±½ in every pixel: no spread, no difference.
+                    let d = x.rmse - y.rmse;
+                    let z = if d == 0.0 { 0.0 } else { d / x.se.hypot(y.se) };
+                    format!("{:.3} ({z:+.1})", x.rmse / y.rmse)
+                })
+                .collect();
+            println!("| {} | {} | {} |", g.name, sources[a].0, cells.join(" | "));
+        }
+    }
+    println!();
 }
 
 /// `½ + 4·error` as grey, a PNG named after the sampler (the Gaussian of the first pair at 4

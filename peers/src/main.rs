@@ -26,6 +26,7 @@ fn main() {
     };
     let mut only: Vec<String> = Vec::new();
     let (mut blue, mut size, mut frame, mut images) = (false, 256u32, 0u32, None);
+    let mut pmj_tables = nyquist_lab::pmj02_seed::SEEDS;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         let mut value = || {
@@ -44,12 +45,13 @@ fn main() {
             "--size" => size = number(&value()) as u32,
             "--frame" => frame = number(&value()) as u32,
             "--images" => images = Some(std::path::PathBuf::from(value())),
+            "--pmj-tables" => pmj_tables = number(&value()).max(1) as u64,
             "-h" | "--help" => usage(""),
             _ => usage(&format!("unknown argument {a}")),
         }
     }
     if blue {
-        blue_noise::run(size, frame, images.as_deref());
+        blue_noise::run(size, frame, images.as_deref(), pmj_tables);
         return;
     }
     println!(
@@ -88,7 +90,7 @@ fn usage(err: &str) -> ! {
     eprintln!(
         "usage: nyquist-peers [--samples N (61)] [--runs N (3)] [--sample-ms MS (2)] \
          [--only TEXT]…\n       nyquist-peers --blue-noise [--size N (256)] [--frame F (0)] \
-         [--images DIR]"
+         [--images DIR] [--pmj-tables N (1024)]"
     );
     std::process::exit(if err.is_empty() { 0 } else { 2 })
 }

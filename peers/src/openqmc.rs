@@ -78,6 +78,14 @@ impl PmjTable {
         PmjTable(unsafe { peer_oqmc_pmj_table_new() })
     }
 
+    /// The table's first pair of dimensions, the points of OpenQMC's construction (its last two
+    /// columns are a randomisation of these).
+    pub fn first_pair(&self) -> Vec<[u32; 2]> {
+        // SAFETY: the table is live and holds 2^16 rows of 4 words.
+        let rows = unsafe { std::slice::from_raw_parts(self.0, 1 << 16) };
+        rows.iter().map(|r| [r[0], r[1]]).collect()
+    }
+
     /// The lookup core's 2-D values of `index` under `hash`, 2 floats per index.
     pub fn lookup_2d(&self, hash: u32, index: &[u32], out: &mut [f32]) {
         assert_eq!(out.len(), 2 * index.len());
