@@ -7,7 +7,10 @@
 //! periodogram power below a quarter of the Nyquist radius over the mean power at every
 //! non-zero frequency: 1 for white error, lower for blue).
 //!
-//! A last table compares each nyquist blue-noise sampler's RMSE with OpenQMC's counterpart's:
+//! Two more tables compare each nyquist blue-noise sampler with OpenQMC's counterpart. The
+//! low-frequency power is the ratio times the error's variance: what a low-pass filter leaves
+//! of the error, which the ratio alone does not say (a sampler with less error can have a
+//! higher ratio and less low-frequency power). And the RMSE:
 //! the ratio and how many standard errors apart they are. Every pixel integrates the same
 //! function, so an RMSE is a mean over the keys the image holds, and it varies with the draw
 //! of those keys. The standard error of a mean square is the standard deviation of the
@@ -173,12 +176,24 @@ fn rmse_standard_error(err: &[f64], size: u32, period: u32, rmse: f64) -> f64 {
 /// The sample counts measured.
 const SPPS: [u32; 6] = [1, 2, 4, 8, 16, 32];
 
-/// One image's figures: RMSE, its standard error, and the low-frequency ratio.
+/// One image's figures: RMSE, its standard error, the low-frequency ratio, and the error's
+/// variance over the pixels.
 #[derive(Clone, Copy, Default)]
 struct Cell {
     rmse: f64,
     se: f64,
     ratio: f64,
+    variance: f64,
+}
+
+impl Cell {
+    /// The error's mean power below a quarter of the Nyquist radius, in squared error: the
+    /// ratio times the mean power at every non-zero frequency, which is the variance. What a
+    /// low-pass filter (a denoiser, the eye) leaves of the error, where the ratio says only
+    /// how the error is spread.
+    fn low_frequency_power(&self) -> f64 {
+        self.ratio * self.variance
+    }
 }
 
 /// Runs the study and prints its tables.
@@ -207,11 +222,14 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
                                 - exact[ii]
                         })
                         .collect();
-                    let rmse = (err.iter().map(|e| e * e).sum::<f64>() / err.len() as f64).sqrt();
+                    let n = err.len() as f64;
+                    let rmse = (err.iter().map(|e| e * e).sum::<f64>() / n).sqrt();
+                    let mean = err.iter().sum::<f64>() / n;
                     results[si][ii][k] = Cell {
                         rmse,
                         se: rmse_standard_error(&err, size, *period, rmse),
                         ratio: low_frequency_ratio(&err, size),
+                        variance: err.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / n,
                     };
                     if let Some(dir) = images
                         && spp == 4
@@ -355,6 +373,26 @@ fn print_rmse_against_openqmc(
                     let d = x.rmse - y.rmse;
                     let z = if d == 0.0 { 0.0 } else { d / x.se.hypot(y.se) };
                     format!("{:.3} ({z:+.1})", x.rmse / y.rmse)
+                })
+                .collect();
+            println!("| {} | {} | {} |", g.name, sources[a].0, cells.join(" | "));
+        }
+    }
+    println!();
+    println!(
+        "### Low-frequency ratio and low-frequency power (the ratio × the error's variance): \
+         nyquist's over OpenQMC's\n"
+    );
+    println!("| integrand | sampler | {header} |");
+    println!("|---|---|{}", "---:|".repeat(SPPS.len()));
+    for (ii, g) in integrands.iter().enumerate() {
+        for &(a, b) in &pairs {
+            let cells: Vec<String> = results[a][ii]
+                .iter()
+                .zip(&results[b][ii])
+                .map(|(x, y)| {
+                    let power = x.low_frequency_power() / y.low_frequency_power();
+                    format!("{:.3} / {power:.3}", x.ratio / y.ratio)
                 })
                 .collect();
             println!("| {} | {} | {} |", g.name, sources[a].0, cells.join(" | "));
