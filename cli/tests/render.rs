@@ -267,6 +267,9 @@ fn dots_measure_the_screen_space_error_spectrum() {
         let radial = j.split("\"error_radial_spectrum\":[").nth(1).unwrap();
         let radial = radial.split(']').next().unwrap();
         assert_eq!(radial.split(',').count(), 16, "{radial}");
+        // What a low-pass leaves is part of the error: above 0, below the whole RMSE.
+        let left = json_field(&j, "error_low_frequency_rmse");
+        assert!(left > 0.0 && left < json_field(&j, "rmse"), "{j}");
         json_field(&j, "error_low_frequency_ratio")
     };
     for blue in ["owen-sobol-bn", "pmj02-bn", "lattice-bn"] {

@@ -17,7 +17,7 @@
 //! // A checkerboard's power is all at the highest frequency: none below a quarter of Nyquist.
 //! let img: Vec<f64> = (0..32 * 32).map(|i| f64::from(((i % 32) + (i / 32)) % 2)).collect();
 //! let s = error_spectrum(&img, 32, 32).unwrap();
-//! assert!(s.low_frequency_ratio < 1e-12);
+//! assert!(s.low_frequency_ratio < 1e-12 && s.low_frequency_rmse < 1e-12);
 //! // Its one frequency, (½, ½) cycle per pixel, lies past the annuli (ρ = 0.71 > ½); the
 //! // innermost annulus has no frequency of a 32² grid (NaN).
 //! assert!(s.radial[0].is_nan() && s.radial[1..].iter().all(|&r| r < 1e-12));
@@ -42,6 +42,11 @@ pub struct ErrorSpectrum {
     /// Mean power at the frequencies `0 < ρ < ¼ · ½` ([`LOW_RADIUS`]), over the mean power of
     /// every frequency but 0: about 1 for white error, well below 1 for blue error.
     pub low_frequency_ratio: f64,
+    /// The RMS of the error left by an ideal low-pass filter that keeps the same band (and not
+    /// the mean): what a denoiser or the eye cannot remove, in the image's units. The ratio
+    /// says how the error is spread; this says how much is left, so it compares samplers whose
+    /// errors differ in size (one with less error can have a higher ratio and less left).
+    pub low_frequency_rmse: f64,
     /// Mean power in each annulus `k · w ≤ ρ < (k + 1) · w` (`w` = [`ANNULUS_WIDTH`], `k` =
     /// 0 … 15, frequency 0 left out), over the same mean; `NaN` for an annulus the grid has
     /// no frequency in (the innermost ones of a small image).
@@ -133,8 +138,11 @@ pub fn error_spectrum(image: &[f64], width: u32, height: u32) -> Result<ErrorSpe
             sum / n as f64 / white
         }
     };
+    // Parseval: the filtered image's sum of squares is the band's power over the pixel count.
+    let pixels = (w * h) as f64;
     Ok(ErrorSpectrum {
         low_frequency_ratio: ratio(low, nlow),
+        low_frequency_rmse: (low / pixels).sqrt() / pixels.sqrt(),
         radial: ring.iter().map(|&(s, n)| ratio(s, n)).collect(),
     })
 }
@@ -230,7 +238,8 @@ mod tests {
     }
 
     /// A cosine's power lands in its annulus and the low band, nowhere else, on a square and
-    /// on a non-square grid (a side that is not a power of two takes the direct DFT).
+    /// on a non-square grid (a side that is not a power of two takes the direct DFT), and the
+    /// band's low-pass keeps all of it.
     #[test]
     fn a_cosine_lands_in_its_annulus_and_band() {
         for (w, h) in [(32u32, 32u32), (48, 20)] {
@@ -241,6 +250,11 @@ mod tests {
             let s = error_spectrum(&img, w, h).unwrap();
             let rho = 3.0 / f64::from(w);
             assert!(s.low_frequency_ratio > 10.0, "{w}×{h} {s:?}");
+            // The low-pass keeps the whole cosine: RMS 1/√2.
+            assert!(
+                (s.low_frequency_rmse - 0.5f64.sqrt()).abs() < 1e-9,
+                "{w}×{h} {s:?}"
+            );
             let k = (rho / ANNULUS_WIDTH) as usize;
             for (j, r) in s.radial.iter().enumerate() {
                 if j == k {

@@ -8,9 +8,10 @@
 //! non-zero frequency: 1 for white error, lower for blue).
 //!
 //! Two more tables compare each nyquist blue-noise sampler with OpenQMC's counterpart. The
-//! low-frequency power is the ratio times the error's variance: what a low-pass filter leaves
-//! of the error, which the ratio alone does not say (a sampler with less error can have a
-//! higher ratio and less low-frequency power). And the RMSE:
+//! low-frequency power is the square of the error that an ideal low-pass filter at a quarter
+//! of the Nyquist radius leaves (`ErrorSpectrum::low_frequency_rmse`), which the ratio alone
+//! does not say: a sampler with less error can have a higher ratio and less left. And the
+//! RMSE:
 //! the ratio and how many standard errors apart they are. Every pixel integrates the same
 //! function, so an RMSE is a mean over the keys the image holds, and it varies with the draw
 //! of those keys. The standard error of a mean square is the standard deviation of the
@@ -154,9 +155,12 @@ fn reference(f: BlockIntegrand) -> f64 {
     sum / f64::from(n)
 }
 
-/// The low-frequency ratio of a square error image (module docs).
-fn low_frequency_ratio(image: &[f64], size: u32) -> f64 {
-    error_spectrum(image, size, size).map_or(f64::NAN, |s| s.low_frequency_ratio)
+/// The low-frequency ratio and RMSE of a square error image (module docs;
+/// [`ErrorSpectrum`](nyquist_lab::error_spectrum::ErrorSpectrum)).
+fn low_frequency(image: &[f64], size: u32) -> (f64, f64) {
+    error_spectrum(image, size, size).map_or((f64::NAN, f64::NAN), |s| {
+        (s.low_frequency_ratio, s.low_frequency_rmse)
+    })
 }
 
 /// The standard error of an image's RMSE (module docs): from the squared errors of the pixels
@@ -176,23 +180,23 @@ fn rmse_standard_error(err: &[f64], size: u32, period: u32, rmse: f64) -> f64 {
 /// The sample counts measured.
 const SPPS: [u32; 6] = [1, 2, 4, 8, 16, 32];
 
-/// One image's figures: RMSE, its standard error, the low-frequency ratio, and the error's
-/// variance over the pixels.
+/// One image's figures: RMSE, its standard error, the low-frequency ratio, and the
+/// low-frequency RMSE (what an ideal low-pass filter at a quarter of the Nyquist radius leaves
+/// of the error).
 #[derive(Clone, Copy, Default)]
 struct Cell {
     rmse: f64,
     se: f64,
     ratio: f64,
-    variance: f64,
+    low_rmse: f64,
 }
 
 impl Cell {
-    /// The error's mean power below a quarter of the Nyquist radius, in squared error: the
-    /// ratio times the mean power at every non-zero frequency, which is the variance. What a
-    /// low-pass filter (a denoiser, the eye) leaves of the error, where the ratio says only
-    /// how the error is spread.
+    /// The power a low-pass filter (a denoiser, the eye) leaves of the error: the square of the
+    /// low-frequency RMSE, which is the ratio times the error's variance times the band's share
+    /// of the frequencies. The ratio says only how the error is spread.
     fn low_frequency_power(&self) -> f64 {
-        self.ratio * self.variance
+        self.low_rmse * self.low_rmse
     }
 }
 
@@ -222,14 +226,13 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
                                 - exact[ii]
                         })
                         .collect();
-                    let n = err.len() as f64;
-                    let rmse = (err.iter().map(|e| e * e).sum::<f64>() / n).sqrt();
-                    let mean = err.iter().sum::<f64>() / n;
+                    let rmse = (err.iter().map(|e| e * e).sum::<f64>() / err.len() as f64).sqrt();
+                    let (ratio, low_rmse) = low_frequency(&err, size);
                     results[si][ii][k] = Cell {
                         rmse,
                         se: rmse_standard_error(&err, size, *period, rmse),
-                        ratio: low_frequency_ratio(&err, size),
-                        variance: err.iter().map(|e| (e - mean).powi(2)).sum::<f64>() / n,
+                        ratio,
+                        low_rmse,
                     };
                     if let Some(dir) = images
                         && spp == 4
@@ -380,7 +383,7 @@ fn print_rmse_against_openqmc(
     }
     println!();
     println!(
-        "### Low-frequency ratio and low-frequency power (the ratio × the error's variance): \
+        "### Low-frequency ratio and low-frequency power (the low-frequency RMSE squared): \
          nyquist's over OpenQMC's\n"
     );
     println!("| integrand | sampler | {header} |");
