@@ -30,10 +30,12 @@
 //! chosen for its own level, the last (1 spp) on the deviations of the pair's two samples from
 //! their mean, so that it cannot favour the larger error.
 
+use crate::parallel::map_tasks;
 use nyquist::rng::{default_rng, uniform_below, uniform_f64};
 use nyquist::sampler::screen_blue::{
     BlueFamily, LatticeBlue, OwenSobolBlue, Pmj02Blue, initial_entry,
 };
+use std::convert::Infallible;
 
 /// Radius of the energy's window, in pixels (a 13 × 13 window).
 const RADIUS: i32 = 6;
@@ -295,21 +297,19 @@ fn spread(
     }
 }
 
-/// `f` of every key, in order, on as many threads as the machine has (contiguous chunks, so
-/// the result does not depend on the thread count).
+/// `f` of every key, in order, on as many threads as the machine has: the lab's work queue
+/// ([`map_tasks`]) over chunks of 256 keys, so the result does not depend on the thread count.
 fn per_key<T: Send>(keys: &[u32], f: impl Fn(u32) -> T + Sync) -> Vec<T> {
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
-    let chunk = keys.len().div_ceil(threads).max(1);
-    std::thread::scope(|scope| {
-        let handles: Vec<_> = keys
-            .chunks(chunk)
-            .map(|part| scope.spawn(|| part.iter().map(|&k| f(k)).collect::<Vec<T>>()))
-            .collect();
-        handles
-            .into_iter()
-            .flat_map(|h| h.join().expect("a tile worker panicked"))
-            .collect()
+    let chunks: Vec<&[u32]> = keys.chunks(256).collect();
+    let order: Vec<usize> = (0..chunks.len()).collect();
+    map_tasks(&order, threads, |i| {
+        Ok::<_, Infallible>(chunks[i].iter().map(|&k| f(k)).collect::<Vec<T>>())
     })
+    .unwrap_or_else(|never| match never {})
+    .into_iter()
+    .flatten()
+    .collect()
 }
 
 /// The window's offsets and weights (the centre left out).
