@@ -7,17 +7,19 @@
 //! periodogram power below a quarter of the Nyquist radius over the mean power at every
 //! non-zero frequency: 1 for white error, lower for blue).
 //!
-//! Two more tables compare each nyquist blue-noise sampler with OpenQMC's counterpart. The
-//! low-frequency power is the square of the error that an ideal low-pass filter at a quarter
-//! of the Nyquist radius leaves (`ErrorSpectrum::low_frequency_rmse`), which the ratio alone
-//! does not say: a sampler with less error can have a higher ratio and less left. And the
-//! RMSE:
-//! the ratio and how many standard errors apart they are. Every pixel integrates the same
-//! function, so an RMSE is a mean over the keys the image holds, and it varies with the draw
-//! of those keys. The standard error of a mean square is the standard deviation of the
-//! squared errors over the √ of the distinct pixels: one period of the sampler's tile (nyquist
-//! 128², OpenQMC 256²), every pixel for per-pixel seeds; the RMSE's is half of that over the
-//! RMSE (the delta method).
+//! Two more tables compare each nyquist blue-noise sampler with OpenQMC's counterpart:
+//! - the RMSE ratio and how many standard errors apart the two are. Every pixel integrates the
+//!   same function, so an RMSE is a mean over the keys the image holds, and it varies with the
+//!   draw of those keys. The standard error of a mean square is the standard deviation of the
+//!   squared errors over the √ of the distinct pixels: one period of the sampler's tile
+//!   (nyquist 128², OpenQMC 256²), every pixel for per-pixel seeds. The RMSE's is half of that
+//!   over the RMSE (the delta method);
+//! - the low-frequency ratio's ratio, and the low-frequency power's: the square of the error an
+//!   ideal low-pass filter at a quarter of the Nyquist radius leaves
+//!   (`ErrorSpectrum::low_frequency_rmse`), which the ratio alone does not say (a sampler with
+//!   less error can have a higher ratio and less left).
+//!
+//! With OpenQMC built, a last table measures the PMJ(0,2) tables (`print_pmj_tables`).
 //!
 //! `cargo run --release --manifest-path peers/Cargo.toml -- --blue-noise [--size N]
 //! [--frame F] [--images DIR] [--pmj-tables N]`
@@ -271,8 +273,9 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
 
 /// `pmj02-bn`'s error is its table's (`docs/blue-noise.md`, "The table's seed"), and so is
 /// OpenQMC's `pmjbn`'s. This measures OpenQMC's table under `pmj02-bn`'s randomisation
-/// beside the tables of seeds `0 .. tables` of the same construction (`nyquist_lab::pmj02_seed::rmse`, the same pixels for every table), on the
-/// integrands of the tables above: per cell, the shipped table's RMSE, OpenQMC's, and how many
+/// beside the tables of seeds `0 .. tables` of the same construction
+/// (`nyquist_lab::pmj02_seed::rmse`, the same pixels for every table), on the integrands of
+/// the tables above: per cell, the shipped table's RMSE, OpenQMC's, and how many
 /// of the seeds' tables are at or below OpenQMC's.
 #[cfg(peer_openqmc)]
 fn print_pmj_tables(tables: u64) {
