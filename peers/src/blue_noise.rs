@@ -264,7 +264,7 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
         }
         println!();
     }
-    print_rmse_against_openqmc(&sources, &integrands, &results, &header);
+    print_against_openqmc(&sources, &integrands, &results, &header);
     #[cfg(peer_openqmc)]
     print_pmj_tables(pmj_tables);
     #[cfg(not(peer_openqmc))]
@@ -347,10 +347,11 @@ const COUNTERPARTS: [(&str, &str); 3] = [
     ("nyquist lattice-bn", "OpenQMC latticebn"),
 ];
 
-/// For each pair of [`COUNTERPARTS`] that ran: per integrand and spp, nyquist's RMSE over
-/// OpenQMC's and the difference in standard errors of the difference (`z`; |z| > 2 is a
-/// difference the draw of the keys explains less than one time in twenty).
-fn print_rmse_against_openqmc(
+/// For each pair of [`COUNTERPARTS`] that ran, two tables per integrand and spp: nyquist's RMSE
+/// over OpenQMC's with the difference in standard errors of the difference (`z`; |z| > 2 is a
+/// difference the draw of the keys explains less than one time in twenty), and nyquist's
+/// low-frequency ratio and power over OpenQMC's.
+fn print_against_openqmc(
     sources: &[Source],
     integrands: &[Integrand],
     results: &[Vec<[Cell; SPPS.len()]>],
@@ -364,47 +365,40 @@ fn print_rmse_against_openqmc(
     if pairs.is_empty() {
         return;
     }
-    println!(
-        "### RMSE against OpenQMC's: nyquist / OpenQMC (z = difference / its standard error)\n"
-    );
-    println!("| integrand | sampler | {header} |");
-    println!("|---|---|{}", "---:|".repeat(SPPS.len()));
-    for (ii, g) in integrands.iter().enumerate() {
-        for &(a, b) in &pairs {
-            let cells: Vec<String> = results[a][ii]
-                .iter()
-                .zip(&results[b][ii])
-                .map(|(x, y)| {
-                    // At 1 spp a disk's error is ±½ in every pixel: no spread, no difference.
-                    let d = x.rmse - y.rmse;
-                    let z = if d == 0.0 { 0.0 } else { d / x.se.hypot(y.se) };
-                    format!("{:.3} ({z:+.1})", x.rmse / y.rmse)
-                })
-                .collect();
-            println!("| {} | {} | {} |", g.name, sources[a].0, cells.join(" | "));
+    // One table: a row per integrand and pair, a cell per spp from the two samplers' cells.
+    let table = |title: &str, cell: &dyn Fn(&Cell, &Cell) -> String| {
+        println!("### {title}\n");
+        println!("| integrand | sampler | {header} |");
+        println!("|---|---|{}", "---:|".repeat(SPPS.len()));
+        for (ii, g) in integrands.iter().enumerate() {
+            for &(a, b) in &pairs {
+                let cells: Vec<String> = results[a][ii]
+                    .iter()
+                    .zip(&results[b][ii])
+                    .map(|(x, y)| cell(x, y))
+                    .collect();
+                println!("| {} | {} | {} |", g.name, sources[a].0, cells.join(" | "));
+            }
         }
-    }
-    println!();
-    println!(
-        "### Low-frequency ratio and low-frequency power (the low-frequency RMSE squared): \
-         nyquist's over OpenQMC's\n"
+        println!();
+    };
+    table(
+        "RMSE against OpenQMC's: nyquist / OpenQMC (z = difference / its standard error)",
+        &|x, y| {
+            // At 1 spp a disk's error is ±½ in every pixel: no spread, no difference.
+            let d = x.rmse - y.rmse;
+            let z = if d == 0.0 { 0.0 } else { d / x.se.hypot(y.se) };
+            format!("{:.3} ({z:+.1})", x.rmse / y.rmse)
+        },
     );
-    println!("| integrand | sampler | {header} |");
-    println!("|---|---|{}", "---:|".repeat(SPPS.len()));
-    for (ii, g) in integrands.iter().enumerate() {
-        for &(a, b) in &pairs {
-            let cells: Vec<String> = results[a][ii]
-                .iter()
-                .zip(&results[b][ii])
-                .map(|(x, y)| {
-                    let power = x.low_frequency_power() / y.low_frequency_power();
-                    format!("{:.3} / {power:.3}", x.ratio / y.ratio)
-                })
-                .collect();
-            println!("| {} | {} | {} |", g.name, sources[a].0, cells.join(" | "));
-        }
-    }
-    println!();
+    table(
+        "Low-frequency ratio and low-frequency power (the low-frequency RMSE squared): \
+         nyquist's over OpenQMC's",
+        &|x, y| {
+            let power = x.low_frequency_power() / y.low_frequency_power();
+            format!("{:.3} / {power:.3}", x.ratio / y.ratio)
+        },
+    );
 }
 
 /// `½ + 4·error` as grey, a PNG named after the sampler (the Gaussian of the first pair at 4
