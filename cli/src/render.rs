@@ -548,7 +548,7 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             let predicted = |p: Option<f64>| p.map_or_else(|| "null".to_string(), json_number);
             writeln!(
                 out,
-                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"adaptive\":{},\"error_low_frequency_ratio\":{},\"error_low_frequency_rmse\":{},\"error_radial_spectrum\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
+                "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"adaptive\":{},\"error_low_frequency_ratio\":{},\"error_low_frequency_ratio_se\":{},\"error_low_frequency_rmse\":{},\"error_radial_spectrum\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
                 json_string(args.scene.name()),
                 args.size[0],
                 args.size[1],
@@ -576,6 +576,10 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 spectrum.as_ref().map_or_else(
                     || "null".to_string(),
                     |s| json_number(s.low_frequency_ratio)
+                ),
+                spectrum.as_ref().map_or_else(
+                    || "null".to_string(),
+                    |s| json_number(s.low_frequency_ratio_se)
                 ),
                 spectrum
                     .as_ref()
@@ -614,8 +618,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
             if let Some(s) = &spectrum {
                 writeln!(
                     out,
-                    "error spectrum low-frequency ratio {:.3} (mean power below ¼ Nyquist over white noise's: 1 white, below 1 blue)",
-                    s.low_frequency_ratio
+                    "error spectrum low-frequency ratio {:.3} ± {:.3} (mean power below ¼ Nyquist over white noise's: 1 white, below 1 blue; ± its standard error)",
+                    s.low_frequency_ratio, s.low_frequency_ratio_se
                 )?;
                 writeln!(
                     out,

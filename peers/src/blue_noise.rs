@@ -14,10 +14,16 @@
 //!   squared errors over the √ of the distinct pixels: one period of the sampler's tile
 //!   (nyquist 128², OpenQMC 256²), every pixel for per-pixel seeds. The RMSE's is half of that
 //!   over the RMSE (the delta method);
-//! - the low-frequency ratio's ratio, and the low-frequency power's: the square of the error an
-//!   ideal low-pass filter at a quarter of the Nyquist radius leaves
+//! - the low-frequency ratio's ratio with its `z` (the ratio's standard error from the
+//!   periodogram, `ErrorSpectrum::low_frequency_ratio_se`), and the low-frequency power's: the
+//!   square of the error an ideal low-pass filter at a quarter of the Nyquist radius leaves
 //!   (`ErrorSpectrum::low_frequency_rmse`), which the ratio alone does not say (a sampler with
 //!   less error can have a higher ratio and less left).
+//!
+//! Each table ends with a verdict per sampler: its largest `z` above OpenQMC and how often
+//! chance gives one as large over the cells compared (the one-sided normal tail times the
+//! number of cells, Bonferroni's bound); a cell is significantly above OpenQMC's when that is
+//! below 5 %, so two samplers that do not differ are called different at most one time in 20.
 //!
 //! With OpenQMC built, a last table measures the PMJ(0,2) tables (`print_pmj_tables`).
 //!
@@ -157,12 +163,40 @@ fn reference(f: BlockIntegrand) -> f64 {
     sum / f64::from(n)
 }
 
-/// The low-frequency ratio and RMSE of a square error image (module docs;
-/// [`ErrorSpectrum`](nyquist_lab::error_spectrum::ErrorSpectrum)).
-fn low_frequency(image: &[f64], size: u32) -> (f64, f64) {
-    error_spectrum(image, size, size).map_or((f64::NAN, f64::NAN), |s| {
-        (s.low_frequency_ratio, s.low_frequency_rmse)
+/// The low-frequency ratio, its standard error and the low-frequency RMSE of a square error
+/// image (module docs; [`ErrorSpectrum`](nyquist_lab::error_spectrum::ErrorSpectrum)).
+fn low_frequency(image: &[f64], size: u32) -> (f64, f64, f64) {
+    error_spectrum(image, size, size).map_or((f64::NAN, f64::NAN, f64::NAN), |s| {
+        (
+            s.low_frequency_ratio,
+            s.low_frequency_ratio_se,
+            s.low_frequency_rmse,
+        )
     })
+}
+
+/// The probability that a standard normal variable exceeds `z` (Simpson's rule on the
+/// density from `|z|` to `|z| + 12`; the tail past that is below 10⁻³³).
+fn normal_tail(z: f64) -> f64 {
+    if z < 0.0 {
+        return 1.0 - normal_tail(-z);
+    }
+    let density = |x: f64| (-x * x / 2.0).exp() / std::f64::consts::TAU.sqrt();
+    let (n, h) = (4096, 12.0 / 4096.0);
+    let inner: f64 = (1..n)
+        .map(|i| {
+            let w = if i % 2 == 1 { 4.0 } else { 2.0 };
+            w * density(z + f64::from(i) * h)
+        })
+        .sum();
+    (density(z) + inner + density(z + 12.0)) * h / 3.0
+}
+
+/// The difference of two estimates in standard errors of the difference; 0 where they are
+/// the same (a disk at 1 spp: ±½ in every pixel).
+fn z_score(a: f64, se_a: f64, b: f64, se_b: f64) -> f64 {
+    let d = a - b;
+    if d == 0.0 { 0.0 } else { d / se_a.hypot(se_b) }
 }
 
 /// The standard error of an image's RMSE (module docs): from the squared errors of the pixels
@@ -182,7 +216,7 @@ fn rmse_standard_error(err: &[f64], size: u32, period: u32, rmse: f64) -> f64 {
 /// The sample counts measured.
 const SPPS: [u32; 6] = [1, 2, 4, 8, 16, 32];
 
-/// One image's figures: RMSE, its standard error, the low-frequency ratio, and the
+/// One image's figures: RMSE, its standard error, the low-frequency ratio and its, and the
 /// low-frequency RMSE (what an ideal low-pass filter at a quarter of the Nyquist radius leaves
 /// of the error).
 #[derive(Clone, Copy, Default)]
@@ -190,6 +224,7 @@ struct Cell {
     rmse: f64,
     se: f64,
     ratio: f64,
+    ratio_se: f64,
     low_rmse: f64,
 }
 
@@ -229,11 +264,12 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
                         })
                         .collect();
                     let rmse = (err.iter().map(|e| e * e).sum::<f64>() / err.len() as f64).sqrt();
-                    let (ratio, low_rmse) = low_frequency(&err, size);
+                    let (ratio, ratio_se, low_rmse) = low_frequency(&err, size);
                     results[si][ii][k] = Cell {
                         rmse,
                         se: rmse_standard_error(&err, size, *period, rmse),
                         ratio,
+                        ratio_se,
                         low_rmse,
                     };
                     if let Some(dir) = images
@@ -365,8 +401,9 @@ fn print_against_openqmc(
     if pairs.is_empty() {
         return;
     }
-    // One table: a row per integrand and pair, a cell per spp from the two samplers' cells.
-    let table = |title: &str, cell: &dyn Fn(&Cell, &Cell) -> String| {
+    // One table: a row per integrand and pair, a cell per spp from the two samplers' cells
+    // (its text and its z), then the verdict per pair (module docs).
+    let table = |title: &str, cell: &dyn Fn(&Cell, &Cell) -> (String, f64)| {
         println!("### {title}\n");
         println!("| integrand | sampler | {header} |");
         println!("|---|---|{}", "---:|".repeat(SPPS.len()));
@@ -375,28 +412,62 @@ fn print_against_openqmc(
                 let cells: Vec<String> = results[a][ii]
                     .iter()
                     .zip(&results[b][ii])
-                    .map(|(x, y)| cell(x, y))
+                    .map(|(x, y)| cell(x, y).0)
                     .collect();
                 println!("| {} | {} | {} |", g.name, sources[a].0, cells.join(" | "));
             }
+        }
+        println!();
+        for &(a, b) in &pairs {
+            let mut zs: Vec<(f64, &str, u32)> = Vec::new();
+            for (ii, g) in integrands.iter().enumerate() {
+                for (k, (x, y)) in results[a][ii].iter().zip(&results[b][ii]).enumerate() {
+                    let z = cell(x, y).1;
+                    // Two figures that are the same compare nothing, and a cell that repeats
+                    // another up to rounding (the next block's first pair: both samplers
+                    // shift their tiles per block, which sums the same errors in another
+                    // order) is not a second test.
+                    let repeat = zs
+                        .iter()
+                        .any(|c| (c.0 - z).abs() <= 1e-9 * z.abs() && c.2 == SPPS[k]);
+                    if z != 0.0 && !repeat {
+                        zs.push((z, g.name, SPPS[k]));
+                    }
+                }
+            }
+            let Some(&(z, name, spp)) = zs.iter().max_by(|p, q| p.0.total_cmp(&q.0)) else {
+                continue;
+            };
+            let p = (normal_tail(z) * zs.len() as f64).min(1.0);
+            let above = zs
+                .iter()
+                .filter(|c| normal_tail(c.0) * (zs.len() as f64) < 0.05)
+                .count();
+            println!(
+                "{}: largest z {z:+.1} ({name}, {spp} spp); over its {} cells chance gives one as \
+                 large with probability at most {p:.3}; {above} cell{} significantly above \
+                 OpenQMC's (family-wise false-alarm rate 5 %).",
+                sources[a].0,
+                zs.len(),
+                if above == 1 { "" } else { "s" }
+            );
         }
         println!();
     };
     table(
         "RMSE against OpenQMC's: nyquist / OpenQMC (z = difference / its standard error)",
         &|x, y| {
-            // At 1 spp a disk's error is ±½ in every pixel: no spread, no difference.
-            let d = x.rmse - y.rmse;
-            let z = if d == 0.0 { 0.0 } else { d / x.se.hypot(y.se) };
-            format!("{:.3} ({z:+.1})", x.rmse / y.rmse)
+            let z = z_score(x.rmse, x.se, y.rmse, y.se);
+            (format!("{:.3} ({z:+.1})", x.rmse / y.rmse), z)
         },
     );
     table(
-        "Low-frequency ratio and low-frequency power (the low-frequency RMSE squared): \
+        "Low-frequency ratio (z) and low-frequency power (the low-frequency RMSE squared): \
          nyquist's over OpenQMC's",
         &|x, y| {
+            let z = z_score(x.ratio, x.ratio_se, y.ratio, y.ratio_se);
             let power = x.low_frequency_power() / y.low_frequency_power();
-            format!("{:.3} / {power:.3}", x.ratio / y.ratio)
+            (format!("{:.3} ({z:+.1}) / {power:.3}", x.ratio / y.ratio), z)
         },
     );
 }
@@ -419,4 +490,17 @@ fn write_error_image(dir: &std::path::Path, name: &str, err: &[f64], size: u32) 
     write_png_pixels(&mut out, &PngLayout::new(size, size, PngColor::Grey), &grey).unwrap();
     std::fs::write(&file, out).unwrap();
     eprintln!("wrote {}", file.display());
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The normal tail at published quantiles: ½ at 0, 0.025 at 1.959964, 0.001 at 3.090232.
+    #[test]
+    fn normal_tail_is_the_published_one() {
+        for (z, p) in [(0.0, 0.5), (1.959_964, 0.025), (3.090_232, 0.001), (-1.959_964, 0.975)] {
+            assert!((normal_tail(z) - p).abs() < 1e-6, "{z}: {}", normal_tail(z));
+        }
+    }
 }

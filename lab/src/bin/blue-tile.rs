@@ -3,7 +3,9 @@
 //! files are what the optimiser makes (exit status 1 if not).
 //!
 //! `--family NAME` (`owen-sobol-bn`, `pmj02-bn`, `lattice-bn`) does one family; the default is
-//! all three. `--out FILE` writes one family's tile elsewhere; `--sweeps N` changes the spec.
+//! all three. `--out FILE` writes one family's tile elsewhere; `--sweeps N` and `--seed N`
+//! change the spec (another seed gives another tile of the same quality: the spread of its
+//! figures over seeds is how much of a difference between two tiles is the draw).
 
 use nyquist_lab::blue_tile::{
     Family, HELD_OUT, TileSpec, held_out_ratios, level_ratios, optimise, source,
@@ -45,6 +47,17 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    let seed = match value("--seed").map(|v| v.parse::<u64>()) {
+        None => None,
+        Some(Ok(n)) => Some(n),
+        Some(_) => {
+            eprintln!(
+                "blue-tile: --seed: a whole number from 0 to {} is needed",
+                u64::MAX
+            );
+            return ExitCode::from(2);
+        }
+    };
     for family in families {
         let shipped = format!(
             "{}/../core/src/sampler/screen_blue/{}",
@@ -54,6 +67,9 @@ fn main() -> ExitCode {
         let mut spec = TileSpec::shipped(family);
         if let Some(n) = sweeps {
             spec.sweeps = n;
+        }
+        if let Some(n) = seed {
+            spec.seed = n;
         }
         let name = family.name();
         let start = std::time::Instant::now();
@@ -97,7 +113,7 @@ fn report(spec: &TileSpec, keys: &[u32]) {
     let trained = level_ratios(spec, keys);
     let held_out = level_ratios(
         &TileSpec {
-            seed: spec.seed + 1000,
+            seed: spec.seed.wrapping_add(1000),
             ..*spec
         },
         keys,
@@ -109,7 +125,7 @@ fn report(spec: &TileSpec, keys: &[u32]) {
         );
     }
     for ((integrand, _), r) in HELD_OUT.iter().zip(held_out_ratios(spec, keys, 5)) {
-        let cells: Vec<String> = r.iter().map(|v| format!("{v:.2}")).collect();
+        let cells: Vec<String> = r.iter().map(|v| format!("{v:.3}")).collect();
         eprintln!(
             "blue-tile: {name}: {integrand:>14}, 1 … 32 spp: {}",
             cells.join(" ")
