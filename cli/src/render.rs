@@ -616,10 +616,18 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 "sampling rmse  {sampling:.6} (against the same filter's converged image)"
             )?;
             if let Some(s) = &spectrum {
+                // An image of sides 8 or less has no frequency in the band: "-", as an annulus.
+                let ratio = if s.low_frequency_ratio.is_finite() {
+                    format!(
+                        "{:.3} ± {:.3}",
+                        s.low_frequency_ratio, s.low_frequency_ratio_se
+                    )
+                } else {
+                    "-".into()
+                };
                 writeln!(
                     out,
-                    "error spectrum low-frequency ratio {:.3} ± {:.3} (mean power below ¼ Nyquist over white noise's: 1 white, below 1 blue; ± its standard error)",
-                    s.low_frequency_ratio, s.low_frequency_ratio_se
+                    "error spectrum low-frequency ratio {ratio} (mean power below ¼ Nyquist over white noise's: 1 white, below 1 blue; ± its standard error)"
                 )?;
                 writeln!(
                     out,

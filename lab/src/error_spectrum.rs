@@ -12,16 +12,18 @@
 //! frequencies but 0. So white error measures about 1 everywhere, blue error well below 1 at
 //! low radii, and a smooth error image far above 1 there.
 //!
-//! The low-frequency ratio of one image is an estimate: the periodogram values of a stationary
-//! error are, for large images, independent exponentials about the spectrum, apart from the
-//! pairs `P(u, v) = P(−u, −v)`. So a sum `L = Σ P` over a set of frequencies has variance
-//! `4 Σ_pairs S²`, which is about `Σ P²`, since `S² ≈ P²/2` (an exponential's second moment is
-//! twice its mean squared). The ratio is `L/n` over `A/(W·H − 1)`, with `A` the sum over every
-//! frequency, which holds `L`; by the delta method its relative variance is
-//! `Q_L/L² + Q_A/A² − 2 Q_L/(L·A)`, with `Q` the sums of `P²`
-//! ([`ErrorSpectrum::low_frequency_ratio_se`]). Two images' ratios differ by more than the
-//! draw explains when `|r₁ − r₂| / √(se₁² + se₂²)` is large (above 2 about one time in 22 by
-//! chance).
+//! The low-frequency ratio of one image is an estimate. The periodogram values of a stationary
+//! error are, for large images, independent exponentials about its spectrum `S`, apart from the
+//! pairs `P(u, v) = P(−u, −v)`. So a sum `L = Σ P` over a set of frequencies closed under that
+//! pairing has variance `4 Σ_pairs S²`, and `Σ P²` over the set estimates it without bias
+//! (`E[P²] = 2S²` for an exponential). The ratio is `(L/n) / (A/(W·H − 1))`, with `L` the sum
+//! over the `n` band frequencies and `A` over every frequency, which holds `L`. With `R = A − L`
+//! and `Q_L`, `Q_R` the sums of `P²` in and out of the band, the delta method gives the ratio's
+//! variance as `(W·H − 1)² (Q_L R² + Q_R L²) / (n² A⁴)`
+//! ([`ErrorSpectrum::low_frequency_ratio_se`]). Two images' ratios differ by more than the draw
+//! explains when `|r₁ − r₂| / √(se₁² + se₂²)` is large (above 2 about one time in 22 by
+//! chance). An image whose error is not stationary (a render whose error sits on a few edges)
+//! varies more than this says.
 //!
 //! ```
 //! use nyquist_lab::error_spectrum::error_spectrum;
@@ -29,6 +31,7 @@
 //! let img: Vec<f64> = (0..32 * 32).map(|i| f64::from(((i % 32) + (i / 32)) % 2)).collect();
 //! let s = error_spectrum(&img, 32, 32).unwrap();
 //! assert!(s.low_frequency_ratio < 1e-12 && s.low_frequency_rmse < 1e-12);
+//! assert_eq!(s.low_frequency_ratio_se, 0.0); // no power in the band, no spread either
 //! // Its one frequency, (½, ½) cycle per pixel, lies past the annuli (ρ = 0.71 > ½); the
 //! // innermost annulus has no frequency of a 32² grid (NaN).
 //! assert!(s.radial[0].is_nan() && s.radial[1..].iter().all(|&r| r < 1e-12));
@@ -51,11 +54,13 @@ pub const MAX_SIDE: u32 = 8192;
 #[derive(Clone, Debug, PartialEq)]
 pub struct ErrorSpectrum {
     /// Mean power at the frequencies `0 < ρ < ¼ · ½` ([`LOW_RADIUS`]), over the mean power of
-    /// every frequency but 0: about 1 for white error, well below 1 for blue error.
+    /// every frequency but 0: about 1 for white error, well below 1 for blue error. `NaN` if
+    /// the band holds no frequency (both sides 8 or less).
     pub low_frequency_ratio: f64,
     /// The standard error of [`low_frequency_ratio`](Self::low_frequency_ratio) as an estimate
     /// of the error's spectrum (module docs): about `ratio / √(n/2)` for `n` band frequencies,
-    /// 0.10 for white error on a 64² image. An image that repeats a tile has the tile's.
+    /// 0.10 for white error on a 64² image; `NaN` where the ratio is. An image that repeats a
+    /// tile has the tile's; the model assumes the error is stationary across the image.
     pub low_frequency_ratio_se: f64,
     /// The RMS of the error left by an ideal low-pass filter that keeps the same band (and not
     /// the mean): what a denoiser or the eye cannot remove, in the image's units. The ratio
@@ -117,8 +122,9 @@ pub fn error_spectrum(image: &[f64], width: u32, height: u32) -> Result<ErrorSpe
         }
     }
     let annuli = (0.5 / ANNULUS_WIDTH) as usize;
-    let (mut all, mut low, mut nlow) = (0.0, 0.0, 0usize);
-    let (mut all_squares, mut low_squares) = (0.0, 0.0);
+    // The band's and the other frequencies' sums of powers and of squared powers.
+    let (mut low, mut low_squares, mut nlow) = (0.0, 0.0, 0usize);
+    let (mut rest, mut rest_squares) = (0.0, 0.0);
     let mut ring = vec![(0.0, 0usize); annuli];
     for v in 0..h {
         for u in 0..w {
@@ -127,14 +133,15 @@ pub fn error_spectrum(image: &[f64], width: u32, height: u32) -> Result<ErrorSpe
             }
             let (re, im) = data[v * w + u];
             let p = re * re + im * im;
-            all += p;
-            all_squares += p * p;
             let fold = |k: usize, n: usize| (if k > n / 2 { n - k } else { k }) as f64 / n as f64;
             let rho = fold(u, w).hypot(fold(v, h));
             if rho < LOW_RADIUS {
                 low += p;
                 low_squares += p * p;
                 nlow += 1;
+            } else {
+                rest += p;
+                rest_squares += p * p;
             }
             let k = (rho / ANNULUS_WIDTH) as usize;
             if k < annuli {
@@ -143,6 +150,7 @@ pub fn error_spectrum(image: &[f64], width: u32, height: u32) -> Result<ErrorSpe
             }
         }
     }
+    let all = low + rest;
     let white = all / (w * h - 1) as f64;
     if white <= 0.0 {
         return Err(Error::Config(
@@ -160,11 +168,11 @@ pub fn error_spectrum(image: &[f64], width: u32, height: u32) -> Result<ErrorSpe
     let pixels = (w * h) as f64;
     Ok(ErrorSpectrum {
         low_frequency_ratio: ratio(low, nlow),
-        low_frequency_ratio_se: ratio(low, nlow)
-            * (low_squares / (low * low) + all_squares / (all * all)
-                - 2.0 * low_squares / (low * all))
-                .max(0.0)
-                .sqrt(),
+        // The module docs' variance: (N − 1)/(n A²) = 1/(n · white · A).
+        low_frequency_ratio_se: ratio(
+            (low_squares * rest * rest + rest_squares * low * low).sqrt() / all,
+            nlow,
+        ),
         low_frequency_rmse: low.sqrt() / pixels,
         radial: ring.iter().map(|&(s, n)| ratio(s, n)).collect(),
     })
@@ -321,7 +329,8 @@ mod tests {
     /// low-pass (red: six neighbours summed, ratio 4.6), the ratios' standard deviation is
     /// within 10 % of the standard errors' RMS (measured: 1.012, 1.021, 1.009). The deviation
     /// from 1600 draws has a relative spread of 1/√3200 = 1.8 %, so a false alarm is a
-    /// 5.6-σ event. Without the delta method's covariance term the red case measures 0.79.
+    /// 4-σ event even with the 2 % the measured ratios are off by. Without the delta method's
+    /// covariance term the red case measures 0.79.
     #[test]
     fn the_ratio_standard_error_is_its_spread() {
         let mut state = 0x5eed_0f5e_u64;
@@ -356,6 +365,18 @@ mod tests {
                 (sd / se - 1.0).abs() < 0.1,
                 "{name}: mean {mean}, sd {sd}, se {se}"
             );
+        }
+    }
+
+    /// The band holds a frequency once a side is longer than 8 (`ρ = 1/9 < ⅛`); before that
+    /// the ratio and its standard error are NaN, as documented.
+    #[test]
+    fn an_image_of_sides_8_has_no_band() {
+        for (side, band) in [(8u32, false), (9, true)] {
+            let img: Vec<f64> = (0..side * side).map(|i| f64::from(i * 7 % 5)).collect();
+            let s = error_spectrum(&img, side, side).unwrap();
+            assert_eq!(s.low_frequency_ratio.is_finite(), band, "{side}: {s:?}");
+            assert_eq!(s.low_frequency_ratio_se.is_finite(), band, "{side}: {s:?}");
         }
     }
 

@@ -4,8 +4,9 @@
 //!
 //! `--family NAME` (`owen-sobol-bn`, `pmj02-bn`, `lattice-bn`) does one family; the default is
 //! all three. `--out FILE` writes one family's tile elsewhere; `--sweeps N` and `--seed N`
-//! change the spec (another seed gives another tile of the same quality: the spread of its
-//! figures over seeds is how much of a difference between two tiles is the draw).
+//! change the spec, and need `--out` (another seed gives another tile of the same quality: the
+//! spread of its figures over seeds is how much of a difference between two tiles is the
+//! draw).
 
 use nyquist_lab::blue_tile::{
     Family, HELD_OUT, TileSpec, held_out_ratios, level_ratios, optimise, source,
@@ -58,6 +59,13 @@ fn main() -> ExitCode {
             return ExitCode::from(2);
         }
     };
+    // Another spec makes another tile: it goes to --out, never over the shipped one.
+    if (sweeps.is_some() || seed.is_some()) && (out.is_none() || check) {
+        eprintln!(
+            "blue-tile: --sweeps and --seed make a tile other than the shipped one: give --out FILE, without --check"
+        );
+        return ExitCode::from(2);
+    }
     for family in families {
         let shipped = format!(
             "{}/../core/src/sampler/screen_blue/{}",
