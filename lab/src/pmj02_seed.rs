@@ -159,8 +159,13 @@ pub fn table(seed: u64) -> Box<Table> {
 /// shuffle of the sample index (within the table's 2¹⁶ points), XOR-ed with a random shift,
 /// the two pairs shuffled and shifted independently. `integrands` are functions with their
 /// integrals; the result is `[integrand][count]`, from `trials` pixels per count, the same
-/// pixels for every table (`trials = 0` measures nothing: NaN).
-pub fn rmse(table: &Table, integrands: &[(BlockIntegrand, f64)], trials: u32) -> Vec<[f64; 5]> {
+/// pixels for every table (`trials = 0` measures nothing: NaN). An integrand is any function
+/// of the four values: a [`BlockIntegrand`], or a closure with its parameters.
+pub fn rmse<F: Fn(&[f32; 4]) -> f64>(
+    table: &Table,
+    integrands: &[(F, f64)],
+    trials: u32,
+) -> Vec<[f64; 5]> {
     let mut out = vec![[0f64; 5]; integrands.len()];
     let mut sums = vec![0f64; integrands.len()];
     for (c, &n) in COUNTS.iter().enumerate() {

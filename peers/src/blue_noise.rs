@@ -26,7 +26,9 @@
 //! below 5 %, so a sampler that is no worse than OpenQMC's is called worse at most one time in
 //! 20 per table.
 //!
-//! With OpenQMC built, a last table measures the PMJ(0,2) tables (`print_pmj_tables`).
+//! With OpenQMC built, the last tables measure the PMJ(0,2) tables: on these integrands, on
+//! the seed search's, and on random families of disks and Gaussians (`print_pmj_tables`,
+//! `print_random_families`).
 //!
 //! `cargo run --release --manifest-path peers/Cargo.toml -- --blue-noise [--size N]
 //! [--frame F] [--images DIR] [--pmj-tables N]`
@@ -375,6 +377,119 @@ fn print_pmj_tables(tables: u64) {
         "On pmj02-seed's training integrands: the shipped table scores {shipped_score:.2}, \
          OpenQMC's {theirs_score:.2}; {below} of the {tables} tables score lower.\n"
     );
+    print_random_families(&shipped_table, &theirs, tables.min(64));
+}
+
+/// A sampler's integrand with its parameters, for [`print_random_families`].
+#[cfg(peer_openqmc)]
+type Bump = Box<dyn Fn(&[f32; 4]) -> f64 + Sync>;
+
+/// ∫₀¹ exp(−(x − c)² / (2σ²)) dx by Simpson's rule on 4096 intervals (the integrand is smooth;
+/// the rule's error is far below the RMSEs compared).
+#[cfg(peer_openqmc)]
+fn gaussian_integral(c: f64, sigma: f64) -> f64 {
+    let f = |x: f64| (-(x - c) * (x - c) / (2.0 * sigma * sigma)).exp();
+    let n = 4096;
+    let h = 1.0 / f64::from(n);
+    let inner: f64 = (1..n)
+        .map(|i| (if i % 2 == 1 { 4.0 } else { 2.0 }) * f(f64::from(i) * h))
+        .sum();
+    (f(0.0) + inner + f(1.0)) * h / 3.0
+}
+
+/// Families of integrands that neither the seed search nor the comparison saw, with
+/// parameters drawn from a fixed seed: 64 disks over dimensions 0–1 (centre anywhere the disk
+/// fits, radius 0.1 … 0.4), 64 Gaussians over dimensions 0–1 and 64 over all four (centre in
+/// `[0.2, 0.8)`, σ 0.05 … 0.3). Per family and spp: in how many the shipped table's RMSE is
+/// below OpenQMC's table's (both under `pmj02-bn`'s randomisation, the same pixels), and the
+/// geometric means of the shipped table's RMSE and of OpenQMC's over the average table's (the
+/// root mean square over the tables of seeds `0 .. tables`).
+#[cfg(peer_openqmc)]
+fn print_random_families(
+    shipped: &nyquist_lab::pmj02_seed::Table,
+    theirs: &nyquist_lab::pmj02_seed::Table,
+    tables: u64,
+) {
+    use nyquist::hash::mix64;
+    use nyquist_lab::pmj02_seed::{COUNTS, TRIALS, rmse, root_mean_square, table};
+    let mut state = 0x6661_6d69_6c79u64; // "family"
+    let mut next = move || {
+        state = mix64(state.wrapping_add(0x9e37_79b9_7f4a_7c15));
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut families: Vec<(&str, Vec<(Bump, f64)>)> = Vec::new();
+    let disks: Vec<(Bump, f64)> = (0..64)
+        .map(|_| {
+            let r = 0.1 + 0.3 * next();
+            let (cx, cy) = (r + (1.0 - 2.0 * r) * next(), r + (1.0 - 2.0 * r) * next());
+            let f: Bump = Box::new(move |v: &[f32; 4]| {
+                let (dx, dy) = (f64::from(v[0]) - cx, f64::from(v[1]) - cy);
+                f64::from(u8::from(dx * dx + dy * dy < r * r))
+            });
+            (f, std::f64::consts::PI * r * r)
+        })
+        .collect();
+    families.push(("disks, dims 0–1", disks));
+    for dims in [2usize, 4] {
+        let bumps: Vec<(Bump, f64)> = (0..64)
+            .map(|_| {
+                let sigma = 0.05 + 0.25 * next();
+                let c: Vec<f64> = (0..dims).map(|_| 0.2 + 0.6 * next()).collect();
+                let integral = c.iter().map(|&c| gaussian_integral(c, sigma)).product();
+                let f: Bump = Box::new(move |v: &[f32; 4]| {
+                    let d2: f64 = c
+                        .iter()
+                        .zip(v)
+                        .map(|(c, x)| (f64::from(*x) - c).powi(2))
+                        .sum();
+                    (-d2 / (2.0 * sigma * sigma)).exp()
+                });
+                (f, integral)
+            })
+            .collect();
+        families.push((
+            if dims == 2 {
+                "Gaussians, dims 0–1"
+            } else {
+                "Gaussians, 4-D"
+            },
+            bumps,
+        ));
+    }
+    println!(
+        "### PMJ(0,2) tables on random integrands: in how many of 64 the shipped table's RMSE is \
+         below OpenQMC's table's; the geometric means of the shipped table's RMSE and of \
+         OpenQMC's over the average of the tables of seeds 0 … {}\n",
+        tables - 1
+    );
+    println!(
+        "| family | {} |",
+        COUNTS.map(|n| format!("{n} spp")).join(" | ")
+    );
+    println!("|---|{}", "---:|".repeat(COUNTS.len()));
+    for (name, fs) in &families {
+        let ours = rmse(shipped, fs, TRIALS);
+        let other = rmse(theirs, fs, TRIALS);
+        let seeds: Vec<Vec<[f64; 5]>> = (0..tables).map(|s| rmse(&table(s), fs, TRIALS)).collect();
+        let average = root_mean_square(&seeds);
+        // The geometric mean over the family of a's RMSE over b's, at spp index c.
+        let ratio = |a: &[[f64; 5]], b: &[[f64; 5]], c: usize| {
+            let log: f64 = a.iter().zip(b).map(|(x, y)| (x[c] / y[c]).ln()).sum();
+            (log / a.len() as f64).exp()
+        };
+        let cells: Vec<String> = (0..COUNTS.len())
+            .map(|c| {
+                let below = ours.iter().zip(&other).filter(|(a, b)| a[c] < b[c]).count();
+                format!(
+                    "{below}, {:.3} / {:.3}",
+                    ratio(&ours, &average, c),
+                    ratio(&other, &average, c)
+                )
+            })
+            .collect();
+        println!("| {name} | {} |", cells.join(" | "));
+    }
+    println!();
 }
 
 /// The nyquist samplers and their OpenQMC counterparts in the RMSE comparison.
