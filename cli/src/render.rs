@@ -545,7 +545,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
         });
         let mut out = String::new();
         if args.json {
-            let predicted = |p: Option<f64>| p.map_or_else(|| "null".to_string(), json_number);
+            // A number, or null where there is none (no prediction, no spectrum).
+            let or_null = |p: Option<f64>| p.map_or_else(|| "null".to_string(), json_number);
             writeln!(
                 out,
                 "{{\"scene\":{},\"size\":[{},{}],\"sampler\":{},\"spp\":{},\"filter\":{},\"threads\":{threads},\"seed\":{},\"reference\":{},\"rmse\":{},\"psnr\":{},\"sampling_rmse\":{},\"predicted_rmse_variance\":{},\"predicted_rmse_halves\":{},\"adaptive\":{},\"error_low_frequency_ratio\":{},\"error_low_frequency_ratio_se\":{},\"error_low_frequency_rmse\":{},\"error_radial_spectrum\":{},\"samples\":{},\"rejected\":{},\"seconds\":{},\"samples_per_second\":{}}}",
@@ -560,8 +561,8 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                 json_number(e),
                 json_number(psnr(e)),
                 json_number(sampling),
-                predicted(by_variance),
-                predicted(by_halves),
+                or_null(by_variance),
+                or_null(by_halves),
                 match (&adaptive, &r.adaptive) {
                     (Some(a), Some(report)) => format!(
                         "{{\"threshold\":{},\"mean_spp\":{},\"passes\":{},\"converged\":{},\"largest_spp\":{}}}",
@@ -573,17 +574,9 @@ pub fn run(args: &RenderArgs) -> Result<()> {
                     ),
                     _ => "null".to_string(),
                 },
-                spectrum.as_ref().map_or_else(
-                    || "null".to_string(),
-                    |s| json_number(s.low_frequency_ratio)
-                ),
-                spectrum.as_ref().map_or_else(
-                    || "null".to_string(),
-                    |s| json_number(s.low_frequency_ratio_se)
-                ),
-                spectrum
-                    .as_ref()
-                    .map_or_else(|| "null".to_string(), |s| json_number(s.low_frequency_rmse)),
+                or_null(spectrum.as_ref().map(|s| s.low_frequency_ratio)),
+                or_null(spectrum.as_ref().map(|s| s.low_frequency_ratio_se)),
+                or_null(spectrum.as_ref().map(|s| s.low_frequency_rmse)),
                 spectrum.as_ref().map_or_else(
                     || "null".to_string(),
                     |s| {

@@ -15,6 +15,15 @@ fn metrics(args: &[&str], cache: &std::path::Path) -> String {
     stdout(&o)
 }
 
+/// `render --metrics ARGS`'s text, which must succeed.
+fn human_metrics(args: &[&str], cache: &std::path::Path) -> String {
+    let mut all = vec!["render", "--metrics"];
+    all.extend_from_slice(args);
+    let o = nyquist_cached(&all, cache);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    stdout(&o)
+}
+
 #[test]
 fn uniform_one_spp_box_is_the_zone_plate_at_pixel_centres_exactly() {
     let dir = temp_dir("render-exact");
@@ -293,9 +302,7 @@ fn dots_measure_the_screen_space_error_spectrum() {
 #[test]
 fn a_tiny_image_has_no_low_band_and_says_so() {
     let cache = temp_dir("render-tiny");
-    let o = nyquist_cached(&["render", "--size", "8x8", "--metrics"], &cache);
-    assert!(o.status.success());
-    let s = stdout(&o);
+    let s = human_metrics(&["--size", "8x8"], &cache);
     assert!(
         s.lines()
             .any(|l| l.starts_with("error spectrum low-frequency ratio - ")),
@@ -310,9 +317,7 @@ fn a_tiny_image_has_no_low_band_and_says_so() {
 #[test]
 fn human_metrics_print_every_number() {
     let cache = temp_dir("render-human");
-    let o = nyquist_cached(&["render", "--size", "16x16", "--metrics"], &cache);
-    assert!(o.status.success());
-    let s = stdout(&o);
+    let s = human_metrics(&["--size", "16x16"], &cache);
     for key in [
         "rmse",
         "psnr",

@@ -178,21 +178,28 @@ fn low_frequency(image: &[f64], size: u32) -> (f64, f64, f64) {
     })
 }
 
+/// `∫ₐᵇ f` by Simpson's rule on 4096 intervals (for the smooth integrands here its error is far
+/// below the figures printed).
+fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64) -> f64 {
+    let n = 4096;
+    let h = (b - a) / f64::from(n);
+    let inner: f64 = (1..n)
+        .map(|i| (if i % 2 == 1 { 4.0 } else { 2.0 }) * f(a + f64::from(i) * h))
+        .sum();
+    (f(a) + inner + f(b)) * h / 3.0
+}
+
 /// The probability that a standard normal variable exceeds `z` (Simpson's rule on the
 /// density from `|z|` to `|z| + 12`; the tail past that is below 10⁻³³).
 fn normal_tail(z: f64) -> f64 {
     if z < 0.0 {
         return 1.0 - normal_tail(-z);
     }
-    let density = |x: f64| (-x * x / 2.0).exp() / std::f64::consts::TAU.sqrt();
-    let (n, h) = (4096, 12.0 / 4096.0);
-    let inner: f64 = (1..n)
-        .map(|i| {
-            let w = if i % 2 == 1 { 4.0 } else { 2.0 };
-            w * density(z + f64::from(i) * h)
-        })
-        .sum();
-    (density(z) + inner + density(z + 12.0)) * h / 3.0
+    simpson(
+        |x| (-x * x / 2.0).exp() / std::f64::consts::TAU.sqrt(),
+        z,
+        z + 12.0,
+    )
 }
 
 /// The difference of two estimates in standard errors of the difference; 0 where they are
@@ -384,17 +391,14 @@ fn print_pmj_tables(tables: u64) {
 #[cfg(peer_openqmc)]
 type Bump = Box<dyn Fn(&[f32; 4]) -> f64 + Sync>;
 
-/// ∫₀¹ exp(−(x − c)² / (2σ²)) dx by Simpson's rule on 4096 intervals (the integrand is smooth;
-/// the rule's error is far below the RMSEs compared).
+/// ∫₀¹ exp(−(x − c)² / (2σ²)) dx ([`simpson`]).
 #[cfg(peer_openqmc)]
 fn gaussian_integral(c: f64, sigma: f64) -> f64 {
-    let f = |x: f64| (-(x - c) * (x - c) / (2.0 * sigma * sigma)).exp();
-    let n = 4096;
-    let h = 1.0 / f64::from(n);
-    let inner: f64 = (1..n)
-        .map(|i| (if i % 2 == 1 { 4.0 } else { 2.0 }) * f(f64::from(i) * h))
-        .sum();
-    (f(0.0) + inner + f(1.0)) * h / 3.0
+    simpson(
+        |x| (-(x - c) * (x - c) / (2.0 * sigma * sigma)).exp(),
+        0.0,
+        1.0,
+    )
 }
 
 /// Families of integrands that neither the seed search nor the comparison saw, with
@@ -538,6 +542,8 @@ fn print_against_openqmc(
             // (z, integrand, spp, the two cells): the distinct cells compared.
             let mut zs: Vec<(f64, &str, u32, &Cell, &Cell)> = Vec::new();
             let mut unmeasured = 0;
+            let close = |p: f64, q: f64| (p - q).abs() <= 1e-9 * p.abs().max(q.abs());
+            let same = |c: &Cell, d: &Cell| close(c.rmse, d.rmse) && close(c.ratio, d.ratio);
             for (ii, g) in integrands.iter().enumerate() {
                 for (k, (x, y)) in results[a][ii].iter().zip(&results[b][ii]).enumerate() {
                     let z = cell(x, y).1;
@@ -545,9 +551,6 @@ fn print_against_openqmc(
                     // another up to rounding (the next block's first pair: both samplers
                     // shift their tiles per block, which sums the same errors in another
                     // order) is not a second test.
-                    let close = |p: f64, q: f64| (p - q).abs() <= 1e-9 * p.abs().max(q.abs());
-                    let same =
-                        |c: &Cell, d: &Cell| close(c.rmse, d.rmse) && close(c.ratio, d.ratio);
                     let repeat = zs
                         .iter()
                         .any(|c| c.2 == SPPS[k] && same(c.3, x) && same(c.4, y));
