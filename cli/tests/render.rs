@@ -6,22 +6,23 @@ use common::{
     assert_one_line_error, files, json_field, nyquist, nyquist_cached, read_pfm, stdout, temp_dir,
 };
 
-/// `render --json` with the reference cache in `cache`; returns the JSON line.
-fn metrics(args: &[&str], cache: &std::path::Path) -> String {
-    let mut all = vec!["render", "--json"];
+/// `render FLAG ARGS` with the reference cache in `cache`, which must succeed; its stdout.
+fn render_with(flag: &str, args: &[&str], cache: &std::path::Path) -> String {
+    let mut all = vec!["render", flag];
     all.extend_from_slice(args);
     let o = nyquist_cached(&all, cache);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     stdout(&o)
 }
 
-/// `render --metrics ARGS`'s text, which must succeed.
+/// `render --json`: the JSON line.
+fn metrics(args: &[&str], cache: &std::path::Path) -> String {
+    render_with("--json", args, cache)
+}
+
+/// `render --metrics`: the text.
 fn human_metrics(args: &[&str], cache: &std::path::Path) -> String {
-    let mut all = vec!["render", "--metrics"];
-    all.extend_from_slice(args);
-    let o = nyquist_cached(&all, cache);
-    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    stdout(&o)
+    render_with("--metrics", args, cache)
 }
 
 #[test]
