@@ -432,6 +432,67 @@ pub fn permute(i: u32, n: u32, seed: u32) -> u32 {
     Permutation::new(n, seed).apply(i)
 }
 
+
+/// OpenQMC's generator for its PMJ(0,2) table: the 32-bit LCG `s ← 747796405·s + 2891336453`
+/// with the PCG-RXS-M-XS output (O'Neill 2014; the constants are OpenQMC's `pcg.h`). Draw `m`
+/// of seed `seed` is the output of the state `T^(m+1)(T(0) + seed)`; [`lcg_draw`] jumps there
+/// in three steps of 6-bit windows, so any draw costs three multiply-adds.
+const LCG_A: u32 = 747_796_405;
+const LCG_C: u32 = 2_891_336_453;
+
+/// `T^(d · 64^w)` as `(A, C)` (`T^n(s) = A·s + C`) for windows `w` 0 … 2 and digits `d`
+/// 0 … 63.
+const LCG_WINDOWS: [[(u32, u32); 64]; 3] = lcg_windows();
+
+const fn lcg_windows() -> [[(u32, u32); 64]; 3] {
+    let mut t = [[(1u32, 0u32); 64]; 3];
+    // The step of window w: T^(64^w).
+    let mut step = (LCG_A, LCG_C);
+    let mut w = 0;
+    while w < 3 {
+        let mut d = 1;
+        while d < 64 {
+            let (a, c) = t[w][d - 1];
+            t[w][d] = (step.0.wrapping_mul(a), step.0.wrapping_mul(c).wrapping_add(step.1));
+            d += 1;
+        }
+        let (a, c) = t[w][63];
+        step = (step.0.wrapping_mul(a), step.0.wrapping_mul(c).wrapping_add(step.1));
+        w += 1;
+    }
+    t
+}
+
+/// The PCG-RXS-M-XS output of an LCG state.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) const fn rxs_m_xs(state: u32) -> u32 {
+    let mut s = state;
+    s ^= s >> (4 + (s >> 28));
+    s = s.wrapping_mul(277_803_737);
+    s ^ (s >> 22)
+}
+
+/// The generator's next draw: steps `state` once and returns its output.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) const fn lcg_next(state: &mut u32) -> u32 {
+    *state = state.wrapping_mul(LCG_A).wrapping_add(LCG_C);
+    rxs_m_xs(*state)
+}
+
+/// Draw `m` (`m < 2¹⁸ − 1`) of OpenQMC's generator from seed `seed` (module docs above).
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) const fn lcg_draw(seed: u32, m: u32) -> u32 {
+    let mut s = LCG_C.wrapping_add(seed); // T(0) + seed
+    let n = m + 1;
+    let mut w = 0;
+    while w < 3 {
+        let (a, c) = LCG_WINDOWS[w][((n >> (6 * w)) & 63) as usize];
+        s = a.wrapping_mul(s).wrapping_add(c);
+        w += 1;
+    }
+    rxs_m_xs(s)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

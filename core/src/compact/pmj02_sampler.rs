@@ -2,7 +2,7 @@
 //! running the construction backwards, instead of the 512 KiB table.
 
 use crate::Error;
-use crate::hash::wyrand;
+use crate::hash::lcg_draw;
 use crate::sampler::{self, Pmj02Keys, Sampler};
 use crate::scramble::{rev_to_f32, reverse16};
 use crate::sequence::PMJ02_TABLE_SEED;
@@ -34,19 +34,20 @@ const XORS: [[u32; 16]; 2] = [
 /// construction; evaluating it backwards is what lets a sampler read any point alone).
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn pmj02_point(seed: u64, index: u32, dim: usize) -> u32 {
-    let half = |r: u64| if dim == 0 { r as u32 } else { (r >> 32) as u32 };
+    let seed = seed as u32;
+    let half = |p: u32| lcg_draw(seed, 2 * p + dim as u32);
     let (mut x, mut known, mut flips) = (0u32, 0u32, 0u32);
     let mut p = index & 0xffff;
     while p != 0 {
         let level = 31 - p.leading_zeros();
         let swap = 0x8000_0000u32 >> level;
         let low = swap - 1;
-        x |= half(wyrand(seed, u64::from(p))) & low & !known;
+        x |= half(p) & low & !known;
         known |= low;
         flips ^= swap;
         p = (p - (1 << level)) ^ XORS[dim][level as usize];
     }
-    (x | (half(wyrand(seed, 0)) & !known)) ^ flips
+    (x | (half(0) & !known)) ^ flips
 }
 
 /// Progressive multi-jittered (0,2) sampling without the table: bit for bit what

@@ -17,7 +17,7 @@
 
 use super::Sequence;
 use crate::Error;
-use crate::hash::{hash2, wyrand};
+use crate::hash::{hash2, lcg_next};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::scramble::{
     lk_hash_premixed, lk_premix, reverse16, reversed_to_f32, scramble_premixed_rev_f32x4,
@@ -41,7 +41,7 @@ pub const PMJ02_MAX_POINTS: usize = 1 << 16;
 /// pmj02_build(PMJ02_TABLE_SEED, &mut first).unwrap();
 /// assert_eq!(first, PMJ02_TABLE[..8]);
 /// ```
-pub const PMJ02_TABLE_SEED: u64 = 716;
+pub const PMJ02_TABLE_SEED: u64 = 0;
 
 /// The per-level XOR constants for pmj02, dimension x then y, levels 0..15.
 ///
@@ -66,8 +66,9 @@ const fn construct(seed: u64, out: &mut [[u32; 2]]) {
     if n == 0 {
         return;
     }
-    let r = wyrand(seed, 0);
-    out[0] = [r as u32, (r >> 32) as u32];
+    // OpenQMC's generator, drawn in order: two words a point (`lcg_draw` jumps to any one).
+    let mut state = 2_891_336_453u32.wrapping_add(seed as u32);
+    out[0] = [lcg_next(&mut state), lcg_next(&mut state)];
     let mut level = 0;
     let mut len = 1;
     while len < n {
@@ -78,10 +79,10 @@ const fn construct(seed: u64, out: &mut [[u32; 2]]) {
         let mut i2 = len;
         while i2 < end {
             let i1 = i2 - len;
-            let r = wyrand(seed, i2 as u64);
+            let (rx, ry) = (lcg_next(&mut state), lcg_next(&mut state));
             // Keep digits 1..=L of the paired old point, flip digit L + 1, draw the rest.
-            let x = ((out[i1 ^ cx][0] & !low) ^ swap) | (r as u32 & low);
-            let y = ((out[i1 ^ cy][1] & !low) ^ swap) | ((r >> 32) as u32 & low);
+            let x = ((out[i1 ^ cx][0] & !low) ^ swap) | (rx & low);
+            let y = ((out[i1 ^ cy][1] & !low) ^ swap) | (ry & low);
             out[i2] = [x, y];
             i2 += 1;
         }
