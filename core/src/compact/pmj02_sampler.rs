@@ -33,8 +33,7 @@ const XORS: [[u32; 16]; 2] = [
 /// At most 16 steps and 17 WyRand words (Helmer, Christensen & Kensler 2021 describe the
 /// construction; evaluating it backwards is what lets a sampler read any point alone).
 #[cfg_attr(not(feature = "small-code"), inline(always))]
-pub(crate) fn pmj02_point(seed: u64, index: u32, dim: usize) -> u32 {
-    let seed = seed as u32;
+pub(crate) fn pmj02_point(seed: u32, index: u32, dim: usize) -> u32 {
     let half = |p: u32| lcg_draw(seed, 2 * p + dim as u32);
     let (mut x, mut known, mut flips) = (0u32, 0u32, 0u32);
     let mut p = index & 0xffff;

@@ -307,7 +307,7 @@ fn pmj02_points_rebuilt_alone_equal_the_construction() {
         assert_eq!(pmj02_point(PMJ02_TABLE_SEED, j | 0xabc << 16, 1), p[1]);
     }
     let mut built = std::vec![[0u32; 2]; 4096];
-    for seed in [0u64, 1, 0xdead_beef, u64::MAX] {
+    for seed in [0u32, 1, 0xdead_beef, u32::MAX] {
         pmj02_build(seed, &mut built).unwrap();
         for (j, p) in built.iter().enumerate() {
             assert_eq!(

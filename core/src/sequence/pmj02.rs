@@ -41,7 +41,7 @@ pub const PMJ02_MAX_POINTS: usize = 1 << 16;
 /// pmj02_build(PMJ02_TABLE_SEED, &mut first).unwrap();
 /// assert_eq!(first, PMJ02_TABLE[..8]);
 /// ```
-pub const PMJ02_TABLE_SEED: u64 = 0;
+pub const PMJ02_TABLE_SEED: u32 = 0;
 
 /// The per-level XOR constants for pmj02, dimension x then y, levels 0..15.
 ///
@@ -61,13 +61,13 @@ const XORS: [[usize; 16]; 2] = [
 /// The construction into `out` (any length up to [`PMJ02_MAX_POINTS`]; the caller checks).
 /// Point `i`'s random digits are word `i` of the WyRand stream of `seed` (low half x, high half
 /// y), so a shorter buffer gets a prefix of a longer one.
-const fn construct(seed: u64, out: &mut [[u32; 2]]) {
+const fn construct(seed: u32, out: &mut [[u32; 2]]) {
     let n = out.len();
     if n == 0 {
         return;
     }
     // OpenQMC's generator, drawn in order: two words a point (`lcg_draw` jumps to any one).
-    let mut state = 2_891_336_453u32.wrapping_add(seed as u32);
+    let mut state = 2_891_336_453u32.wrapping_add(seed);
     out[0] = [lcg_next(&mut state), lcg_next(&mut state)];
     let mut level = 0;
     let mut len = 1;
@@ -115,7 +115,7 @@ const fn construct(seed: u64, out: &mut [[u32; 2]]) {
 /// assert_eq!((cols, rows), ([1; 16], [1; 16]));
 /// assert!(pmj02_build(7, &mut []).is_err());
 /// ```
-pub const fn pmj02_build(seed: u64, out: &mut [[u32; 2]]) -> Result<(), Error> {
+pub const fn pmj02_build(seed: u32, out: &mut [[u32; 2]]) -> Result<(), Error> {
     if out.is_empty() {
         return Err(Error::ZeroSize { what: "points" });
     }
@@ -398,7 +398,7 @@ mod tests {
     use std::vec;
     use std::vec::Vec;
 
-    const SEEDS: [u64; 6] = [0, 1, 5, 6, 10, 15];
+    const SEEDS: [u32; 6] = [0, 1, 5, 6, 10, 15];
 
     /// Whether `pts` (a power-of-two count `2^m`) has one point in every `2^a × 2^(m−a)`
     /// elementary interval.
@@ -419,7 +419,7 @@ mod tests {
         })
     }
 
-    fn built(seed: u64, n: usize) -> Vec<[u32; 2]> {
+    fn built(seed: u32, n: usize) -> Vec<[u32; 2]> {
         let mut v = vec![[0u32; 2]; n];
         pmj02_build(seed, &mut v).unwrap();
         v
@@ -446,7 +446,7 @@ mod tests {
 
     #[test]
     fn pmj02_built_prefixes_are_nets_at_every_power_of_two_for_many_seeds() {
-        for seed in SEEDS.into_iter().chain([2, 3, 99, u64::MAX]) {
+        for seed in SEEDS.into_iter().chain([2, 3, 99, u32::MAX]) {
             let pts = built(seed, PMJ02_MAX_POINTS);
             for m in 0..=16 {
                 assert!(is_net(&pts[..1 << m]), "seed {seed} 2^{m}");
@@ -570,7 +570,7 @@ mod tests {
         assert_eq!(reverse16(1), 0x8000);
         assert_eq!(reverse16(0x1_0003), 0xc000);
         for seed in SEEDS {
-            let s = Pmj02::scrambled(seed);
+            let s = Pmj02::scrambled(u64::from(seed));
             let [kx, ky] = s.keys.unwrap();
             for i in (0..70_000u32).step_by(7) {
                 let [x, y] = PMJ02_TABLE[i as usize & 0xffff];
@@ -588,7 +588,7 @@ mod tests {
     #[test]
     fn pmj02_scrambles_keep_nets_and_unit_range() {
         for seed in SEEDS {
-            let s = Pmj02::scrambled(seed);
+            let s = Pmj02::scrambled(u64::from(seed));
             let pts: Vec<[u32; 2]> = (0..1024).map(|i| s.sample_2d_u32(i)).collect();
             for m in 0..=10 {
                 assert!(is_net(&pts[..1 << m]), "seed {seed} 2^{m}");
@@ -674,7 +674,7 @@ mod tests {
                 proptest::prop_assert!((0.0..1.0).contains(&p.sample_f64(index, dim)));
             }
             let mut v = vec![[0u32; 2]; n.min(PMJ02_MAX_POINTS + 1)];
-            let r = pmj02_build(seed, &mut v);
+            let r = pmj02_build(seed as u32, &mut v);
             proptest::prop_assert_eq!(r.is_ok(), (1..=PMJ02_MAX_POINTS).contains(&v.len()));
         }
     }

@@ -133,7 +133,7 @@ mod tests {
         let entry = Pmj02Blue::entry;
         assert_eq!(
             [entry(0, 0), entry(127, 0), entry(5, 77)],
-            [0x0e_4d17, 0x35_7951, 0x07_50b8]
+            [0x29_8c48, 0x3f_81ac, 0x33_f477]
         );
         assert_eq!(entry(5 + 128, 77 + 256), entry(5, 77));
         let mut got: Vec<u32> = (0..TILE_SIZE * TILE_SIZE)
@@ -153,7 +153,7 @@ mod tests {
     fn epochs_are_hashed_anew() {
         assert_eq!(
             Pmj02Blue::values(initial_entry(9) | 3, (1 << 16) + 5).map(f32::to_bits),
-            [1_054_929_038, 1_061_877_959, 1_048_939_802, 1_059_521_018]
+            [1_064_906_222, 1_062_764_139, 1_061_935_310, 1_058_609_525]
         );
         for (i, d) in [(0u16, 0usize), (1, 1), (777, 0), (65535, 1)] {
             assert_eq!(

@@ -314,16 +314,16 @@ mod tests {
                     0x3f6d_dbd1
                 ],
                 [
-                    0x3f2c_77c8,
-                    0x3f31_f486,
-                    0x3ea6_4138,
-                    0x3f47_da98,
-                    0x3eae_2d90,
-                    0x3e88_4df0,
-                    0x3f10_3fa4,
-                    0x3f37_49d3,
-                    0x3e7e_9adc,
-                    0x3f21_f498
+                    0x3ebb_93fe,
+                    0x3e3f_62e4,
+                    0x3f5b_62e0,
+                    0x3f1f_411c,
+                    0x3f54_a6b1,
+                    0x3f0b_f7bd,
+                    0x3e29_6b9c,
+                    0x3f71_5fef,
+                    0x3f3f_7ec6,
+                    0x3e8c_45e0
                 ],
                 [
                     0x3dd9_5be0,
