@@ -199,7 +199,7 @@ fn substitute_tables() -> PathBuf {
          PBRT_CONST uint32_t pmj02bnSamples[nPMJ02bnSets][nPMJ02bnSamples][2] = {\n",
     );
     let mut points = vec![[0u32; 2]; nyquist::sequence::PMJ02_MAX_POINTS];
-    for set in 0..5u64 {
+    for set in 0..5u32 {
         let seed = nyquist::sequence::PMJ02_TABLE_SEED.wrapping_add(set);
         nyquist::sequence::pmj02_build(seed, &mut points).expect("a 2^16-point buffer");
         s.push('{');

@@ -432,7 +432,6 @@ pub fn permute(i: u32, n: u32, seed: u32) -> u32 {
     Permutation::new(n, seed).apply(i)
 }
 
-
 /// OpenQMC's generator for its PMJ(0,2) table: the 32-bit LCG `s ← 747796405·s + 2891336453`
 /// with the PCG-RXS-M-XS output (O'Neill 2014; the constants are OpenQMC's `pcg.h`). Draw `m`
 /// of seed `seed` is the output of the state `T^(m+1)(T(0) + seed)`; [`lcg_draw`] jumps there
@@ -453,11 +452,17 @@ const fn lcg_windows() -> [[(u32, u32); 64]; 3] {
         let mut d = 1;
         while d < 64 {
             let (a, c) = t[w][d - 1];
-            t[w][d] = (step.0.wrapping_mul(a), step.0.wrapping_mul(c).wrapping_add(step.1));
+            t[w][d] = (
+                step.0.wrapping_mul(a),
+                step.0.wrapping_mul(c).wrapping_add(step.1),
+            );
             d += 1;
         }
         let (a, c) = t[w][63];
-        step = (step.0.wrapping_mul(a), step.0.wrapping_mul(c).wrapping_add(step.1));
+        step = (
+            step.0.wrapping_mul(a),
+            step.0.wrapping_mul(c).wrapping_add(step.1),
+        );
         w += 1;
     }
     t

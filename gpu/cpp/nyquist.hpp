@@ -3033,10 +3033,80 @@ struct HaltonSampler {
 // ---------------------------------------------------------------------------------------------
 // PMJ(0,2) (core/src/sequence/pmj02.rs, core/src/sampler/pmj02.rs).
 
-/// The seed of the core's baked PMJ(0,2) table (PMJ02_TABLE_SEED, chosen by the lab's pmj02-seed).
-constexpr std::uint64_t kPmj02TableSeed = 716;
+/// The seed of the core's baked PMJ(0,2) table (PMJ02_TABLE_SEED: OpenQMC's table, state 0).
+constexpr std::uint32_t kPmj02TableSeed = 0;
 
 namespace detail {
+
+/// The PCG-RXS-M-XS output of an LCG state (O'Neill 2014; core `hash::rxs_m_xs`).
+NYQ_HD inline std::uint32_t rxs_m_xs(std::uint32_t s) {
+    s ^= s >> (4 + (s >> 28));
+    s *= 277803737u;
+    return s ^ (s >> 22);
+}
+
+/// Draw `m` of OpenQMC's generator (its pcg.h: the LCG s <- 747796405 s + 2891336453 and the
+/// PCG-RXS-M-XS output) from `seed`: the output of T^(m+1)(T(0) + seed), with T^n = (A, C)
+/// composed from three 6-bit windows of n (entry 64 w + d is T^(d 64^w)). Core `hash::lcg_draw`.
+NYQ_HD inline std::uint32_t lcg_draw(std::uint32_t seed, std::uint32_t m) {
+    const std::uint32_t windows[192][2] = {
+        0x00000001u, 0x00000000u, 0x2c9277b5u, 0xac564b05u, 0xfa6dc5f9u, 0x4712a88eu, 0xcaa5b80du, 0x21dd796bu,
+        0x83232c31u, 0x3463e0acu, 0xb15b05a5u, 0xd67c18a1u, 0x4914b0a9u, 0xb9588bdau, 0x1621767du, 0x1b478227u,
+        0x4306e161u, 0x21a37198u, 0xcbf37095u, 0x5763437du, 0x2d6ddc59u, 0x932e1d66u, 0x26dc29edu, 0x77c77e23u,
+        0x7650cf91u, 0x0bfabec4u, 0x84512885u, 0x2f144799u, 0x3f117909u, 0x84370932u, 0x49bfc25du, 0x930a095fu,
+        0x1cf7a6c1u, 0xf8f81430u, 0xdfae9d75u, 0xc87ee0f5u, 0x3a60b6b9u, 0xd0573b3eu, 0x3cd32fcdu, 0xf7e8ffdbu,
+        0xab7316f1u, 0xd1e7fddcu, 0x397b3f65u, 0x83d60b91u, 0x7235c569u, 0xe6bedf8au, 0x60aa623du, 0xbfe77d97u,
+        0x0eebd021u, 0x8a8147c8u, 0x894b7e55u, 0x022c036du, 0xd293d519u, 0x5b366216u, 0x6ed649adu, 0x29edde93u,
+        0xba6b8251u, 0x17d0fdf4u, 0x05c8ca45u, 0x6e4e4489u, 0xa45715c9u, 0xadaa6ee2u, 0xa554d61du, 0xc445becfu,
+        0x6d0cdd81u, 0x43666c60u, 0x94a19335u, 0x3ee18ae5u, 0x41e4b779u, 0x8bf7f1eeu, 0x5700f78du, 0xc5d5fa4bu,
+        0x612b91b1u, 0xa6bf1f0cu, 0x77794925u, 0x2dbdd281u, 0xecdaea29u, 0x79f8173au, 0xd1029dfdu, 0x729ead07u,
+        0x94944ee1u, 0x5af2e1f8u, 0xa5d85c15u, 0x608a575du, 0xf4c0ddd9u, 0x0bcc4ac6u, 0x853eb96du, 0xa7753303u,
+        0xd9b4c511u, 0x289fc124u, 0x441c3c05u, 0xfe999579u, 0x5eb6c289u, 0x1e6a3892u, 0x69c739ddu, 0xe900283fu,
+        0x61cba441u, 0x44160890u, 0xa76758f5u, 0xb00548d5u, 0x3e25c839u, 0xba67cc9eu, 0x7d4b0f4du, 0x91f368bbu,
+        0x70189c71u, 0xe1c4443cu, 0x569122e5u, 0xc20a6d71u, 0xee701ee9u, 0x8d0732eau, 0x608629bdu, 0xfc8c1077u,
+        0xe60c5da1u, 0x2ee34028u, 0x781609d5u, 0xeca53f4du, 0x5da0f699u, 0x2382d776u, 0xf4b1792du, 0xc34c7b73u,
+        0x587897d1u, 0x7a620854u, 0x1d077dc5u, 0xf56d3a69u, 0x981c7f49u, 0x54996642u, 0xeef2ed9du, 0x74f845afu,
+        0x00000001u, 0x00000000u, 0x5dbffb01u, 0x9a11e8c0u, 0x3b98f601u, 0x2a981180u, 0x1c8af101u, 0x6c527a40u,
+        0x8395ec01u, 0x5a012300u, 0xf3b9e701u, 0x2e640bc0u, 0xeff6e201u, 0x643b3480u, 0xfb4cdd01u, 0xb6469d40u,
+        0x98bbd801u, 0x1f464600u, 0x4b43d301u, 0xd9fa2ec0u, 0x95e4ce01u, 0x61225780u, 0xfb9ec901u, 0x6f7ec040u,
+        0xff71c401u, 0xffcf6900u, 0x245dbf01u, 0x4cd451c0u, 0xed62ba01u, 0xd14d7a80u, 0xdd80b501u, 0x47fae340u,
+        0x77b7b001u, 0xab9c8c00u, 0x3f07ab01u, 0x36f274c0u, 0xb670a601u, 0x64bc9d80u, 0x60f2a101u, 0xefbb0640u,
+        0xc18d9c01u, 0xd2adaf00u, 0x5b419701u, 0x485497c0u, 0xb10e9201u, 0xcb6fc080u, 0x45f48d01u, 0x16bf2940u,
+        0x9cf38801u, 0x2502d200u, 0x390b8301u, 0x30fabac0u, 0x9d3c7e01u, 0xb566e380u, 0x4c867901u, 0x6d074c40u,
+        0xc9e97401u, 0x529bf500u, 0x98656f01u, 0xa0e4ddc0u, 0x3afa6a01u, 0xd2a20680u, 0x34a86501u, 0xa2936f40u,
+        0x086f6001u, 0x0b791800u, 0x394f5b01u, 0x481300c0u, 0x4a485601u, 0xd3212980u, 0xbe5a5101u, 0x67639240u,
+        0x18854c01u, 0xff9a3b00u, 0xdbc94701u, 0xd68523c0u, 0x8b264201u, 0x66e44c80u, 0xa99c3d01u, 0x6b77b540u,
+        0xba2b3801u, 0xdeff5e00u, 0x3fd33301u, 0xfc3b46c0u, 0xbd942e01u, 0x3deb6f80u, 0xb66e2901u, 0x5ecfd840u,
+        0xad612401u, 0x59a88100u, 0x256d1f01u, 0x693569c0u, 0xa1921a01u, 0x08369280u, 0xa4d01501u, 0xf16bfb40u,
+        0xb2271001u, 0x1f95a400u, 0x4c970b01u, 0xcd738cc0u, 0xf7200601u, 0x75c5b580u, 0x34c20101u, 0xd34c1e40u,
+        0x887cfc01u, 0xe0c6c700u, 0x7550f701u, 0xd8f5afc0u, 0x7e3df201u, 0x3698d880u, 0x2643ed01u, 0xb4704140u,
+        0xf062e801u, 0x4d3bea00u, 0x5f9ae301u, 0x3bbbd2c0u, 0xf6ebde01u, 0xfaaffb80u, 0x3955d901u, 0x44d86440u,
+        0xa9d8d401u, 0x14f50d00u, 0xcb74cf01u, 0xa5c5f5c0u, 0x2129ca01u, 0x720b1e80u, 0x2df7c501u, 0x34848740u,
+        0x00000001u, 0x00000000u, 0x74dec001u, 0xe7f23000u, 0x79bd8001u, 0x13e46000u, 0x0e9c4001u, 0x83d69000u,
+        0x337b0001u, 0x37c8c000u, 0xe859c001u, 0x2fbaf000u, 0x2d388001u, 0x6bad2000u, 0x02174001u, 0xeb9f5000u,
+        0x66f60001u, 0xaf918000u, 0x5bd4c001u, 0xb783b000u, 0xe0b38001u, 0x0375e000u, 0xf5924001u, 0x93681000u,
+        0x9a710001u, 0x675a4000u, 0xcf4fc001u, 0x7f4c7000u, 0x942e8001u, 0xdb3ea000u, 0xe90d4001u, 0x7b30d000u,
+        0xcdec0001u, 0x5f230000u, 0x42cac001u, 0x87153000u, 0x47a98001u, 0xf3076000u, 0xdc884001u, 0xa2f99000u,
+        0x01670001u, 0x96ebc000u, 0xb645c001u, 0xceddf000u, 0xfb248001u, 0x4ad02000u, 0xd0034001u, 0x0ac25000u,
+        0x34e20001u, 0x0eb48000u, 0x29c0c001u, 0x56a6b000u, 0xae9f8001u, 0xe298e000u, 0xc37e4001u, 0xb28b1000u,
+        0x685d0001u, 0xc67d4000u, 0x9d3bc001u, 0x1e6f7000u, 0x621a8001u, 0xba61a000u, 0xb6f94001u, 0x9a53d000u,
+        0x9bd80001u, 0xbe460000u, 0x10b6c001u, 0x26383000u, 0x15958001u, 0xd22a6000u, 0xaa744001u, 0xc21c9000u,
+        0xcf530001u, 0xf60ec000u, 0x8431c001u, 0x6e00f000u, 0xc9108001u, 0x29f32000u, 0x9def4001u, 0x29e55000u,
+        0x02ce0001u, 0x6dd78000u, 0xf7acc001u, 0xf5c9b000u, 0x7c8b8001u, 0xc1bbe000u, 0x916a4001u, 0xd1ae1000u,
+        0x36490001u, 0x25a04000u, 0x6b27c001u, 0xbd927000u, 0x30068001u, 0x9984a000u, 0x84e54001u, 0xb976d000u,
+        0x69c40001u, 0x1d690000u, 0xdea2c001u, 0xc55b3000u, 0xe3818001u, 0xb14d6000u, 0x78604001u, 0xe13f9000u,
+        0x9d3f0001u, 0x5531c000u, 0x521dc001u, 0x0d23f000u, 0x96fc8001u, 0x09162000u, 0x6bdb4001u, 0x49085000u,
+        0xd0ba0001u, 0xccfa8000u, 0xc598c001u, 0x94ecb000u, 0x4a778001u, 0xa0dee000u, 0x5f564001u, 0xf0d11000u,
+        0x04350001u, 0x84c34000u, 0x3913c001u, 0x5cb57000u, 0xfdf28001u, 0x78a7a000u, 0x52d14001u, 0xd899d000u,
+    };
+    std::uint32_t s = 2891336453u + seed;
+    const std::uint32_t n = m + 1;
+    for (std::uint32_t w = 0; w < 3; ++w) {
+        const std::uint32_t* ac = windows[w * 64 + ((n >> (6 * w)) & 63)];
+        s = ac[0] * s + ac[1];
+    }
+    return rxs_m_xs(s);
+}
 
 /// The per-level XOR constants of the construction (Helmer, Christensen & Kensler 2021, as the
 /// core uses them): new point `2^L + i` pairs with old point `i ^ c[L]`.
@@ -3053,23 +3123,20 @@ NYQ_HD inline std::uint32_t pmj02_xor(std::uint32_t dim, std::uint32_t level) {
 /// Coordinate `dim` (0 or 1) of point `index mod 2¹⁶` of the progressive multi-jittered (0,2)
 /// sequence built from `seed`, as a 32-bit fraction, without a table: the stochastic
 /// construction (Helmer, Christensen & Kensler 2021) evaluated backwards along the chain of
-/// points a point copies its leading digits from — at most 17 WyRand words. With
-/// `kPmj02TableSeed` it is the core's `PMJ02_TABLE[index][dim]`.
-NYQ_HD inline std::uint32_t pmj02_point(std::uint64_t seed, std::uint32_t index, std::uint32_t dim) {
+/// points a point copies its leading digits from — at most 17 draws of OpenQMC's generator.
+/// With `kPmj02TableSeed` it is the core's `PMJ02_TABLE[index][dim]`.
+NYQ_HD inline std::uint32_t pmj02_point(std::uint32_t seed, std::uint32_t index, std::uint32_t dim) {
     std::uint32_t x = 0, known = 0, flips = 0;
     std::uint32_t p = index & 0xffffu;
     while (p != 0) {
         const std::uint32_t level = 31 - detail::clz32(p);
         const std::uint32_t swap = 0x80000000u >> level, low = swap - 1;
-        const std::uint64_t r = wyrand(seed, p);
-        const std::uint32_t bits = static_cast<std::uint32_t>(dim == 0 ? r : r >> 32);
-        x |= bits & low & ~known;
+        x |= detail::lcg_draw(seed, 2 * p + dim) & low & ~known;
         known |= low;
         flips ^= swap;
         p = (p - (1u << level)) ^ detail::pmj02_xor(dim, level);
     }
-    const std::uint64_t r0 = wyrand(seed, 0);
-    x |= static_cast<std::uint32_t>(dim == 0 ? r0 : r0 >> 32) & ~known;
+    x |= detail::lcg_draw(seed, dim) & ~known;
     return x ^ flips;
 }
 

@@ -183,9 +183,8 @@ const uint NYQ_JITTERED = 0u;
 const uint NYQ_CENTERED = 1u;
 const uvec2 NYQ_DIM_STEP = uvec2(2135587861u, 2654435769u);
 const uvec2 NYQ_JITTER_STEP = uvec2(668265295u, 3266489917u);
-const uvec2 NYQ_PMJ02_TABLE_SEED = uvec2(716u, 0u);
-const uvec2 NYQ_WYRAND_INC = uvec2(2025677871u, 2692095332u);
-const uvec2 NYQ_WYRAND_FOLD = uvec2(2696161499u, 3875765969u);
+const uint NYQ_PMJ02_TABLE_SEED = 0u;
+const uvec2 NYQ_LCG_WINDOWS[192] = uvec2[192](uvec2(1u, 0u), uvec2(747796405u, 2891336453u), uvec2(4201498105u, 1192405134u), uvec2(3399858189u, 568162667u), uvec2(2200120369u, 878960812u), uvec2(2975532453u, 3598456993u), uvec2(1226092713u, 3109587930u), uvec2(371291773u, 457671207u), uvec2(1124524385u, 564359576u), uvec2(3421728917u, 1466123133u), uvec2(762174553u, 2469272934u), uvec2(651962861u, 2009562659u), uvec2(1985007505u, 200982212u), uvec2(2219911301u, 789858201u), uvec2(1058109705u, 2218199346u), uvec2(1237303901u, 2466908511u), uvec2(485992129u, 4177007664u), uvec2(3752762741u, 3363758325u), uvec2(979416761u, 3495377726u), uvec2(1020473293u, 4159242203u), uvec2(2876446449u, 3521641948u), uvec2(964378469u, 2211842961u), uvec2(1916126569u, 3871268746u), uvec2(1621779005u, 3219619223u), uvec2(250335265u, 2323728328u), uvec2(2303426133u, 36438893u), uvec2(3532903705u, 1530290710u), uvec2(1859537325u, 703454867u), uvec2(3127607889u, 399572468u), uvec2(97045061u, 1850623113u), uvec2(2757170633u, 2913627874u), uvec2(2773800477u, 3292905167u), uvec2(1829559681u, 1130785888u), uvec2(2493616949u, 1054968549u), uvec2(1105508217u, 2348282350u), uvec2(1459681165u, 3319134795u), uvec2(1630245297u, 2797543180u), uvec2(2004437285u, 767414913u), uvec2(3973769769u, 2046302010u), uvec2(3506609661u, 1923001607u), uvec2(2492747489u, 1525867000u), uvec2(2782419989u, 1619679069u), uvec2(4106280409u, 197937862u), uvec2(2235480429u, 2809475843u), uvec2(3652502801u, 681558308u), uvec2(1142701061u, 4271478137u), uvec2(1589035657u, 510277778u), uvec2(1774664157u, 3909101631u), uvec2(1640735809u, 1142294672u), uvec2(2808568053u, 2953136341u), uvec2(1042663481u, 3127364766u), uvec2(2102071117u, 2448648379u), uvec2(1880661105u, 3787736124u), uvec2(1452352229u, 3255463281u), uvec2(4000325353u, 2366059242u), uvec2(1619405245u, 4237037687u), uvec2(3859570081u, 786645032u), uvec2(2014710229u, 3970252621u), uvec2(1570829977u, 595777398u), uvec2(4105271597u, 3276569459u), uvec2(1484298193u, 2053245012u), uvec2(487030213u, 4117576297u), uvec2(2552004425u, 1419339330u), uvec2(4008897949u, 1962427823u), uvec2(1u, 0u), uvec2(1572862721u, 2584864960u), uvec2(999880193u, 714609024u), uvec2(478867713u, 1817344576u), uvec2(2207640577u, 1510023936u), uvec2(4089046785u, 778308544u), uvec2(4025934337u, 1681601664u), uvec2(4216118529u, 3058081088u), uvec2(2562447361u, 524699136u), uvec2(1262736129u, 3657051840u), uvec2(2514800129u, 1629640576u), uvec2(4221487361u, 1870577728u), uvec2(4285645825u, 4291782912u), uvec2(610123521u, 1288982976u), uvec2(3982670337u, 3511515776u), uvec2(3716199681u, 1207624512u), uvec2(2008526849u, 2879163392u), uvec2(1057467137u, 921859264u), uvec2(3060835841u, 1690082688u), uvec2(1626513665u, 4022011456u), uvec2(3247283201u, 3534597888u), uvec2(1531025153u, 1213503424u), uvec2(2970522113u, 3413098624u), uvec2(1173654785u, 381626688u), uvec2(2633205761u, 620941824u), uvec2(957055745u, 821738176u), uvec2(2637987329u, 3043419008u), uvec2(1283881217u, 1829194816u), uvec2(3387520001u, 1385952512u), uvec2(2556784385u, 2699353536u), uvec2(989489665u, 3533833856u), uvec2(883451137u, 2727571264u), uvec2(141516801u, 192485376u), uvec2(961501953u, 1209204928u), uvec2(1246254593u, 3542165888u), uvec2(3193590017u, 1734578752u), uvec2(411388929u, 4288297728u), uvec2(3687401217u, 3599049664u), uvec2(2334540289u, 1726237824u), uvec2(2845588737u, 1803007296u), uvec2(3123394561u, 3741277696u), uvec2(1070805761u, 4231743168u), uvec2(3180604929u, 1038839680u), uvec2(3060672769u, 1590679616u), uvec2(2908824577u, 1504215296u), uvec2(627908353u, 1765108160u), uvec2(2710706689u, 137794176u), uvec2(2765100289u, 4050385728u), uvec2(2988904449u, 529900544u), uvec2(1284967169u, 3446901952u), uvec2(4146071041u, 1975891328u), uvec2(885129473u, 3544981056u), uvec2(2289892353u, 3771123456u), uvec2(1968240385u, 3639979968u), uvec2(2117988865u, 915986560u), uvec2(641985793u, 3027255616u), uvec2(4033013761u, 1295772160u), uvec2(1603986177u, 1002164928u), uvec2(4142652929u, 4205837184u), uvec2(961927425u, 1155032128u), uvec2(2849559553u, 351603968u), uvec2(3413430017u, 2781214144u), uvec2(556386817u, 1913331328u), uvec2(771212545u, 881100608u), uvec2(1u, 0u), uvec2(1960755201u, 3891408896u), uvec2(2042462209u, 333733888u), uvec2(245121025u, 2211876864u), uvec2(863698945u, 935903232u), uvec2(3898195969u, 800780288u), uvec2(758677505u, 1806508032u), uvec2(35078145u, 3953086464u), uvec2(1727397889u, 2945548288u), uvec2(1540669441u, 3078860800u), uvec2(3769860097u, 58056704u), uvec2(4120002561u, 2473070592u), uvec2(2591096833u, 1733967872u), uvec2(3478110209u, 2135715840u), uvec2(2486075393u, 3678314496u), uvec2(3909959681u, 2066796544u), uvec2(3454795777u, 1596129280u), uvec2(1120583681u, 2266312704u), uvec2(1202290689u, 4077346816u), uvec2(3699916801u, 2734264320u), uvec2(23527425u, 2532032512u), uvec2(3058024449u, 3470651392u), uvec2(4213473281u, 1255153664u), uvec2(3489873921u, 180506624u), uvec2(887226369u, 246710272u), uvec2(700497921u, 1453764608u), uvec2(2929688577u, 3801669632u), uvec2(3279831041u, 2995458048u), uvec2(1750925313u, 3330097152u), uvec2(2637938689u, 510619648u), uvec2(1645903873u, 3126960128u), uvec2(3069788161u, 2589184000u), uvec2(2614624257u, 3192258560u), uvec2(280412161u, 641216512u), uvec2(362119169u, 3525992448u), uvec2(2859745281u, 3256651776u), uvec2(3478323201u, 4128161792u), uvec2(2217852929u, 1845555200u), uvec2(3373301761u, 703799296u), uvec2(2649702401u, 702894080u), uvec2(47054849u, 1842839552u), uvec2(4155293697u, 4123635712u), uvec2(2089517057u, 3250315264u), uvec2(2439659521u, 3517845504u), uvec2(910753793u, 631259136u), uvec2(1797767169u, 3180490752u), uvec2(805732353u, 2575605760u), uvec2(2229616641u, 3111571456u), uvec2(1774452737u, 493420544u), uvec2(3735207937u, 3311087616u), uvec2(3816914945u, 2974638080u), uvec2(2019573761u, 3779039232u), uvec2(2638151681u, 1429323776u), uvec2(1377681409u, 220459008u), uvec2(2533130241u, 152444928u), uvec2(1809530881u, 1225281536u), uvec2(3501850625u, 3438968832u), uvec2(3315122177u, 2498539520u), uvec2(1249345537u, 2698960896u), uvec2(1599488001u, 4040232960u), uvec2(70582273u, 2227388416u), uvec2(957595649u, 1555394560u), uvec2(4260528129u, 2024251392u), uvec2(1389445121u, 3633958912u));
 const uint NYQ_PMJ02_XOR_X[16] = uint[16](0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u);
 const uint NYQ_PMJ02_XOR_Y[16] = uint[16](0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u);
 const uint NYQ_HALTON_WORDS = 24u;
@@ -225,7 +224,7 @@ layout(std430, binding = 5) readonly buffer type_4_block_2Compute { uint _group_
 
 layout(std140, binding = 1) uniform NyqFillJob_block_3Compute { NyqFillJob _group_0_binding_1_cs; };
 
-layout(std430, binding = 2) readonly buffer type_28_block_4Compute { uvec4 _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_29_block_4Compute { uvec4 _group_0_binding_2_cs[]; };
 
 layout(std430, binding = 3) buffer type_4_block_5Compute { uint _group_0_binding_3_cs[]; };
 
@@ -508,13 +507,13 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
     uint r_3 = 0u;
     uint _e4 = nyq_round_up_pow2_(spp_requested);
     uint side = max(resolution.x, resolution.y);
-    uint m_4 = (32u - uint(31 - findMSB((side - 1u))));
+    uint m_5 = (32u - uint(31 - findMSB((side - 1u))));
     seed_6 = seed_in;
     if ((scramble == NYQ_SCRAMBLE_NONE)) {
         seed_6 = uvec2(0u, 0u);
     }
     if ((scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-        uint mask = ((m_4 == 0u) ? 4294967295u : (4294967295u >> (m_4 & 31u)));
+        uint mask = ((m_5 == 0u) ? 4294967295u : (4294967295u >> (m_5 & 31u)));
         uvec2 _e33 = seed_6;
         uvec2 _e35 = nyq_u64_(0u);
         uvec2 _e36 = nyq_hash2_(_e33, _e35);
@@ -523,7 +522,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         uvec2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = uvec2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_8 = (2u * m_4);
+    uint n_8 = (2u * m_5);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
@@ -539,11 +538,11 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         {
             uint _e54 = c_1;
             uint _e57 = nyq_sobol_u32_((1u << _e54), 0u);
-            uint _e58 = nyq_top(_e57, m_4);
+            uint _e58 = nyq_top(_e57, m_5);
             uint _e60 = c_1;
             uint _e63 = nyq_sobol_u32_((1u << _e60), 1u);
-            uint _e64 = nyq_top(_e63, m_4);
-            uvec2 image_bits = uvec2((_e58 | (_e64 << (m_4 & 31u))), ((m_4 == 0u) ? 0u : (_e64 >> ((32u - m_4) & 31u))));
+            uint _e64 = nyq_top(_e63, m_5);
+            uvec2 image_bits = uvec2((_e58 | (_e64 << (m_5 & 31u))), ((m_5 == 0u) ? 0u : (_e64 >> ((32u - m_5) & 31u))));
             i = 0u;
             bool loop_init_2 = true;
             while(true) {
@@ -757,7 +756,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
     uvec4 v7_ = uvec4(_e292, _e294, _e296, _e298);
     uvec2 _e300 = seed_6;
     uvec2 _e301 = shift_1;
-    return NyqSobolSampler(_e4, m_4, scramble, _e300, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u);
+    return NyqSobolSampler(_e4, m_5, scramble, _e300, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u);
 }
 
 uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in) {
@@ -830,17 +829,17 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in) {
 }
 
 uint nyq_sobol_sampler_index(inout NyqSobolSampler s_17, uvec2 pixel_1, uint sample_index) {
-    uint m_5 = s_17.m;
+    uint m_6 = s_17.m;
     uint _e6 = s_17.spp;
     uint si = (sample_index % _e6);
-    uint high = (((2u * m_5) >= 32u) ? 0u : (si << ((2u * m_5) & 31u)));
-    uint mask_1 = ((m_5 == 0u) ? 0u : (4294967295u >> ((32u - m_5) & 31u)));
-    uint want = ((pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_5 & 31u)));
+    uint high = (((2u * m_6) >= 32u) ? 0u : (si << ((2u * m_6) & 31u)));
+    uint mask_1 = ((m_6 == 0u) ? 0u : (4294967295u >> ((32u - m_6) & 31u)));
+    uint want = ((pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_6 & 31u)));
     uint _e38 = nyq_sobol_u32_(high, 0u);
-    uint _e39 = nyq_top(_e38, m_5);
+    uint _e39 = nyq_top(_e38, m_6);
     uint _e41 = nyq_sobol_u32_(high, 1u);
-    uint _e42 = nyq_top(_e41, m_5);
-    uint have = (_e39 | (_e42 << (m_5 & 31u)));
+    uint _e42 = nyq_top(_e41, m_6);
+    uint have = (_e39 | (_e42 << (m_6 & 31u)));
     uint _e48 = nyq_sobol_sampler_invert(s_17, (want ^ have));
     return (high | _e48);
 }
@@ -872,10 +871,10 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_18, uint dim_4) {
             local_2 = false;
         }
         bool _e37 = local_2;
-        uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
+        uint w_2 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
         uvec2 _e39 = nyq_u64_(d_10);
         uvec2 _e40 = nyq_hash2_(seed_35, _e39);
-        uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
+        uint _e42 = nyq_scramble_u32_(w_2, _e40.y, how_3);
         float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
@@ -1762,12 +1761,12 @@ uvec2 nyq_fixed_to_f64_bits(uvec2 x_11) {
     }
     uint e_2 = ((_e2.y != 0u) ? (63u - uint(31 - findMSB(_e2.y))) : (31u - uint(31 - findMSB(_e2.x))));
     frac = _e2;
-    uint s_101 = (52u - e_2);
-    if ((s_101 >= 32u)) {
-        frac = uvec2(0u, (_e2.x << (s_101 - 32u)));
+    uint s_103 = (52u - e_2);
+    if ((s_103 >= 32u)) {
+        frac = uvec2(0u, (_e2.x << (s_103 - 32u)));
     } else {
-        if ((s_101 > 0u)) {
-            uvec2 _e41 = nyq_shl64_(_e2, s_101);
+        if ((s_103 > 0u)) {
+            uvec2 _e41 = nyq_shl64_(_e2, s_103);
             frac = _e41;
         }
     }
@@ -1816,9 +1815,9 @@ float nyq_recip_f32_(float x_13) {
     bool local_8 = false;
     bool local_9 = false;
     uint bits_4 = floatBitsToUint(x_13);
-    uint m_6 = ((bits_4 & 8388607u) | 8388608u);
+    uint m_7 = ((bits_4 & 8388607u) | 8388608u);
     int e_3 = (int((bits_4 >> 23u)) - 127);
-    if ((m_6 == 8388608u)) {
+    if ((m_7 == 8388608u)) {
         return uintBitsToFloat((uint((127 - e_3)) << 23u));
     }
     bool loop_init_15 = true;
@@ -1837,9 +1836,9 @@ float nyq_recip_f32_(float x_13) {
             uint _e28 = q_1;
             q_1 = (_e28 << 1u);
             uint _e31 = r_8;
-            if ((_e31 >= m_6)) {
+            if ((_e31 >= m_7)) {
                 uint _e33 = r_8;
-                r_8 = (_e33 - m_6);
+                r_8 = (_e33 - m_7);
                 uint _e35 = q_1;
                 q_1 = (_e35 | 1u);
             }
@@ -2165,30 +2164,51 @@ NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_64, uv
     return NyqCameraSample(film_4, _e6, _e5);
 }
 
-uvec2 nyq_mul64_high(uvec2 a_8, uvec2 b_7) {
-    uvec2 _e4 = nyq_mul_wide(a_8.x, b_7.x);
-    uvec2 _e7 = nyq_mul_wide(a_8.x, b_7.y);
-    uvec2 _e10 = nyq_mul_wide(a_8.y, b_7.x);
-    uvec2 _e13 = nyq_mul_wide(a_8.y, b_7.y);
-    uvec2 _e20 = nyq_add64_(uvec2(_e4.y, 0u), uvec2(_e7.x, 0u));
-    uvec2 _e24 = nyq_add64_(_e20, uvec2(_e10.x, 0u));
-    uvec2 _e28 = nyq_add64_(_e13, uvec2(_e7.y, 0u));
-    uvec2 _e35 = nyq_add64_(uvec2(_e10.y, 0u), uvec2(_e24.y, 0u));
-    uvec2 _e36 = nyq_add64_(_e28, _e35);
-    return _e36;
+uint nyq_rxs_m_xs(uint state_1) {
+    uint s_65 = 0u;
+    s_65 = state_1;
+    uint _e2 = s_65;
+    uint _e3 = s_65;
+    uint _e5 = s_65;
+    s_65 = (_e2 ^ (_e3 >> (4u + (_e5 >> 28u))));
+    uint _e11 = s_65;
+    s_65 = (_e11 * 277803737u);
+    uint _e14 = s_65;
+    uint _e15 = s_65;
+    return (_e14 ^ (_e15 >> 22u));
 }
 
-uvec2 nyq_wyrand(uvec2 seed_17, uint i_9) {
-    uvec2 _e5 = nyq_u64_((i_9 + 1u));
-    uvec2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
-    uvec2 _e7 = nyq_add64_(seed_17, _e6);
-    uvec2 t_7 = (_e7 ^ NYQ_WYRAND_FOLD);
-    uvec2 _e10 = nyq_mul64_high(_e7, t_7);
-    uvec2 _e11 = nyq_mul64_(_e7, t_7);
-    return (_e10 ^ _e11);
+uint nyq_lcg_draw(uint seed_17, uint m_1) {
+    uint s_66 = 0u;
+    uint w_1 = 0u;
+    s_66 = (2891336453u + seed_17);
+    uint n_12 = (m_1 + 1u);
+    bool loop_init_17 = true;
+    while(true) {
+        if (!loop_init_17) {
+            uint _e30 = w_1;
+            w_1 = (_e30 + 1u);
+        }
+        loop_init_17 = false;
+        uint _e9 = w_1;
+        if ((_e9 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = w_1;
+            uint _e17 = w_1;
+            uvec2 ac = NYQ_LCG_WINDOWS[((_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u))];
+            uint _e25 = s_66;
+            s_66 = ((ac.x * _e25) + ac.y);
+        }
+    }
+    uint _e32 = s_66;
+    uint _e33 = nyq_rxs_m_xs(_e32);
+    return _e33;
 }
 
-uint nyq_pmj02_point(uvec2 seed_18, uint index_12, uint dim_27) {
+uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27) {
     uint x_17 = 0u;
     uint known = 0u;
     uint flips = 0u;
@@ -2205,28 +2225,27 @@ uint nyq_pmj02_point(uvec2 seed_18, uint index_12, uint dim_27) {
             uint level_1 = (31u - uint(31 - findMSB(_e16)));
             uint swap = (2147483648u >> level_1);
             uint low_2 = (swap - 1u);
-            uint _e23 = p_1;
-            uvec2 _e24 = nyq_wyrand(seed_18, _e23);
-            uint bits_6 = ((dim_27 == 0u) ? _e24.x : _e24.y);
-            uint _e30 = x_17;
-            uint _e32 = known;
-            x_17 = (_e30 | ((bits_6 & low_2) & ~(_e32)));
-            uint _e36 = known;
-            known = (_e36 | low_2);
-            uint _e38 = flips;
-            flips = (_e38 ^ swap);
+            uint _e23 = x_17;
+            uint _e25 = p_1;
+            uint _e28 = nyq_lcg_draw(seed_18, ((2u * _e25) + dim_27));
+            uint _e30 = known;
+            x_17 = (_e23 | ((_e28 & low_2) & ~(_e30)));
+            uint _e34 = known;
+            known = (_e34 | low_2);
+            uint _e36 = flips;
+            flips = (_e36 ^ swap);
             uint c_10 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[(level_1 & 15u)] : NYQ_PMJ02_XOR_Y[(level_1 & 15u)]);
-            uint _e51 = p_1;
-            p_1 = ((_e51 - (1u << level_1)) ^ c_10);
+            uint _e49 = p_1;
+            p_1 = ((_e49 - (1u << level_1)) ^ c_10);
         }
     }
-    uvec2 _e57 = nyq_wyrand(seed_18, 0u);
-    uint _e58 = x_17;
-    uint _e64 = known;
-    x_17 = (_e58 | (((dim_27 == 0u) ? _e57.x : _e57.y) & ~(_e64)));
-    uint _e68 = x_17;
-    uint _e69 = flips;
-    return (_e68 ^ _e69);
+    uint _e54 = x_17;
+    uint _e55 = nyq_lcg_draw(seed_18, dim_27);
+    uint _e56 = known;
+    x_17 = (_e54 | (_e55 & ~(_e56)));
+    uint _e60 = x_17;
+    uint _e61 = flips;
+    return (_e60 ^ _e61);
 }
 
 NyqPmj02_ nyq_pmj02_(bool scrambled_1, uvec2 seed_19) {
@@ -2234,18 +2253,18 @@ NyqPmj02_ nyq_pmj02_(bool scrambled_1, uvec2 seed_19) {
     return NyqPmj02_((scrambled_1 ? 1u : 0u), _e5);
 }
 
-uint nyq_pmj02_sample_u32_(NyqPmj02_ s_65, uint index_13, uint dim_28) {
+uint nyq_pmj02_sample_u32_(NyqPmj02_ s_67, uint index_13, uint dim_28) {
     uint d_24 = (dim_28 & 1u);
     uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_24);
-    if ((s_65.scrambled == 0u)) {
+    if ((s_67.scrambled == 0u)) {
         return _e6;
     }
-    uint _e13 = nyq_lk_hash(bitfieldReverse(_e6), s_65.keys[d_24]);
+    uint _e13 = nyq_lk_hash(bitfieldReverse(_e6), s_67.keys[d_24]);
     return bitfieldReverse(_e13);
 }
 
-float nyq_pmj02_sample(NyqPmj02_ s_66, uint index_14, uint dim_29) {
-    uint _e3 = nyq_pmj02_sample_u32_(s_66, index_14, dim_29);
+float nyq_pmj02_sample(NyqPmj02_ s_68, uint index_14, uint dim_29) {
+    uint _e3 = nyq_pmj02_sample_u32_(s_68, index_14, dim_29);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2254,21 +2273,21 @@ NyqPmj02Sampler nyq_pmj02_sampler(uvec2 seed_20) {
     return NyqPmj02Sampler(seed_20, uvec2(0u, 0u), 0u, 0u);
 }
 
-uint nyq_reverse16_(uint m_1) {
-    return (bitfieldReverse((m_1 & 65535u)) >> 16u);
+uint nyq_reverse16_(uint m_2) {
+    return (bitfieldReverse((m_2 & 65535u)) >> 16u);
 }
 
-uvec3 nyq_pmj02_keys(inout NyqPmj02Sampler s_67, uvec2 request) {
-    uvec2 _e3 = s_67.pixel_key;
+uvec3 nyq_pmj02_keys(inout NyqPmj02Sampler s_69, uvec2 request) {
+    uvec2 _e3 = s_69.pixel_key;
     uvec2 _e7 = nyq_mul64_(request, uvec2(2135587861u, 2654435769u));
     uvec2 _e9 = nyq_mix64_((_e3 ^ _e7));
     uvec2 _e14 = nyq_mix64_((_e9 ^ uvec2(1781543545u, 28781u)));
     return uvec3(_e9.x, _e9.y, _e14.x);
 }
 
-vec2 nyq_pmj02_keyed_point(uvec3 k_10, uint i_10) {
-    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 0u);
-    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 1u);
+vec2 nyq_pmj02_keyed_point(uvec3 k_10, uint i_9) {
+    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 0u);
+    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 1u);
     uint _e10 = nyq_lk_hash(bitfieldReverse(_e4), k_10.y);
     float _e11 = nyq_rev_to_f32_(_e10);
     uint _e14 = nyq_lk_hash(bitfieldReverse(_e7), k_10.z);
@@ -2276,77 +2295,77 @@ vec2 nyq_pmj02_keyed_point(uvec3 k_10, uint i_10) {
     return vec2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_68, uvec3 k_11) {
-    uint _e3 = s_68.index_rev;
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_70, uvec3 k_11) {
+    uint _e3 = s_70.index_rev;
     uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return (_e5 >> 16u);
 }
 
-void nyq_pmj02_start(inout NyqPmj02Sampler s_69, uvec2 pixel_16, uint sample_index_14, uint dim_30) {
-    uvec2 _e6 = s_69.seed;
+void nyq_pmj02_start(inout NyqPmj02Sampler s_71, uvec2 pixel_16, uint sample_index_14, uint dim_30) {
+    uvec2 _e6 = s_71.seed;
     uvec2 _e10 = nyq_hash3_(pixel_16, _e6, uvec2(1835675698u, 112u));
-    s_69.pixel_key = _e10;
+    s_71.pixel_key = _e10;
     uint _e12 = nyq_reverse16_(sample_index_14);
-    s_69.index_rev = (_e12 << 16u);
-    s_69.dim = dim_30;
+    s_71.index_rev = (_e12 << 16u);
+    s_71.dim = dim_30;
     return;
 }
 
-float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_70) {
-    uint d_25 = s_70.dim;
-    s_70.dim = (d_25 + 1u);
+float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_72) {
+    uint d_25 = s_72.dim;
+    s_72.dim = (d_25 + 1u);
     uvec2 _e6 = nyq_u64_(d_25);
     uvec2 _e8 = nyq_shl64_(_e6, 1u);
     uvec2 _e12 = nyq_add64_(_e8, uvec2(1u, 0u));
-    uvec3 _e13 = nyq_pmj02_keys(s_70, _e12);
-    uint _e14 = nyq_pmj02_row(s_70, _e13);
+    uvec3 _e13 = nyq_pmj02_keys(s_72, _e12);
+    uint _e14 = nyq_pmj02_row(s_72, _e13);
     uint _e15 = nyq_reverse16_(_e14);
     uint _e17 = nyq_lk_hash(_e15, _e13.y);
     float _e18 = nyq_rev_to_f32_(_e17);
     return _e18;
 }
 
-vec2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_71) {
-    uint d_26 = s_71.dim;
-    s_71.dim = (d_26 + 2u);
+vec2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_73) {
+    uint d_26 = s_73.dim;
+    s_73.dim = (d_26 + 2u);
     uvec2 _e6 = nyq_u64_(d_26);
     uvec2 _e8 = nyq_shl64_(_e6, 1u);
-    uvec3 _e9 = nyq_pmj02_keys(s_71, _e8);
+    uvec3 _e9 = nyq_pmj02_keys(s_73, _e8);
     if ((d_26 == 0u)) {
-        uint _e13 = s_71.index_rev;
+        uint _e13 = s_73.index_rev;
         uint _e16 = nyq_reverse16_((_e13 >> 16u));
         vec2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    uint _e18 = nyq_pmj02_row(s_71, _e9);
+    uint _e18 = nyq_pmj02_row(s_73, _e9);
     uint _e19 = nyq_reverse16_(_e18);
     vec2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
-vec2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_72) {
-    uint _e3 = s_72.dim;
-    s_72.dim = max(_e3, 2u);
-    uvec3 _e9 = nyq_pmj02_keys(s_72, uvec2(0u, 0u));
-    uint _e11 = s_72.index_rev;
+vec2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_74) {
+    uint _e3 = s_74.dim;
+    s_74.dim = max(_e3, 2u);
+    uvec3 _e9 = nyq_pmj02_keys(s_74, uvec2(0u, 0u));
+    uint _e11 = s_74.index_rev;
     uint _e14 = nyq_reverse16_((_e11 >> 16u));
     vec2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
-NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_73, uvec2 pixel_17, uint sample_index_15) {
-    nyq_pmj02_start(s_73, pixel_17, sample_index_15, 0u);
-    vec2 _e4 = nyq_pmj02_get_pixel_2d(s_73);
-    float _e5 = nyq_pmj02_get_1d(s_73);
-    vec2 _e6 = nyq_pmj02_get_2d(s_73);
+NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_75, uvec2 pixel_17, uint sample_index_15) {
+    nyq_pmj02_start(s_75, pixel_17, sample_index_15, 0u);
+    vec2 _e4 = nyq_pmj02_get_pixel_2d(s_75);
+    float _e5 = nyq_pmj02_get_1d(s_75);
+    vec2 _e6 = nyq_pmj02_get_2d(s_75);
     float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
     vec2 film_5 = vec2(_e9, _e12);
     return NyqCameraSample(film_5, _e6, _e5);
 }
 
-uvec2 nyq_sub64_(uvec2 a_9, uvec2 b_8) {
-    return uvec2((a_9.x - b_8.x), ((a_9.y - b_8.y) - ((a_9.x < b_8.x) ? 1u : 0u)));
+uvec2 nyq_sub64_(uvec2 a_8, uvec2 b_7) {
+    return uvec2((a_8.x - b_7.x), ((a_8.y - b_7.y) - ((a_8.x < b_7.x) ? 1u : 0u)));
 }
 
 uvec3 nyq_divmod64_small(uvec2 x_18, uint d_3) {
@@ -2365,37 +2384,37 @@ uvec3 nyq_divmod64_small(uvec2 x_18, uint d_3) {
     return uvec3(((q1_ << 16u) | q0_), ((q3_ << 16u) | q2_), (t0_1 - (q0_ * d_3)));
 }
 
-uvec4 nyq_add128_(uvec4 a_10, uvec4 b_9) {
-    uvec4 s_102 = (a_10 + b_9);
-    uvec4 c_11 = mix(uvec4(0u), uvec4(1u), lessThan(s_102, a_10));
-    uint t1_2 = (s_102.y + c_11.x);
+uvec4 nyq_add128_(uvec4 a_9, uvec4 b_8) {
+    uvec4 s_104 = (a_9 + b_8);
+    uvec4 c_11 = mix(uvec4(0u), uvec4(1u), lessThan(s_104, a_9));
+    uint t1_2 = (s_104.y + c_11.x);
     uint k1_ = (c_11.y + ((t1_2 < c_11.x) ? 1u : 0u));
-    uint t2_1 = (s_102.z + k1_);
+    uint t2_1 = (s_104.z + k1_);
     uint k2_ = (c_11.z + ((t2_1 < k1_) ? 1u : 0u));
-    return uvec4(s_102.x, t1_2, t2_1, (s_102.w + k2_));
+    return uvec4(s_104.x, t1_2, t2_1, (s_104.w + k2_));
 }
 
-uvec4 nyq_sub128_(uvec4 a_11, uvec4 b_10) {
-    uvec4 s_103 = (a_11 - b_10);
-    uvec4 o = mix(uvec4(0u), uvec4(1u), lessThan(a_11, b_10));
-    uint t1_3 = (s_103.y - o.x);
-    uint k1_1 = (o.y + ((s_103.y < o.x) ? 1u : 0u));
-    uint t2_2 = (s_103.z - k1_1);
-    uint k2_1 = (o.z + ((s_103.z < k1_1) ? 1u : 0u));
-    return uvec4(s_103.x, t1_3, t2_2, (s_103.w - k2_1));
+uvec4 nyq_sub128_(uvec4 a_10, uvec4 b_9) {
+    uvec4 s_105 = (a_10 - b_9);
+    uvec4 o = mix(uvec4(0u), uvec4(1u), lessThan(a_10, b_9));
+    uint t1_3 = (s_105.y - o.x);
+    uint k1_1 = (o.y + ((s_105.y < o.x) ? 1u : 0u));
+    uint t2_2 = (s_105.z - k1_1);
+    uint k2_1 = (o.z + ((s_105.z < k1_1) ? 1u : 0u));
+    return uvec4(s_105.x, t1_3, t2_2, (s_105.w - k2_1));
 }
 
-bool nyq_lt128_(uvec4 a_12, uvec4 b_11) {
-    if ((a_12.w != b_11.w)) {
-        return (a_12.w < b_11.w);
+bool nyq_lt128_(uvec4 a_11, uvec4 b_10) {
+    if ((a_11.w != b_10.w)) {
+        return (a_11.w < b_10.w);
     }
-    if ((a_12.z != b_11.z)) {
-        return (a_12.z < b_11.z);
+    if ((a_11.z != b_10.z)) {
+        return (a_11.z < b_10.z);
     }
-    if ((a_12.y != b_11.y)) {
-        return (a_12.y < b_11.y);
+    if ((a_11.y != b_10.y)) {
+        return (a_11.y < b_10.y);
     }
-    return (a_12.x < b_11.x);
+    return (a_11.x < b_10.x);
 }
 
 uvec4 nyq_mul128_u32_(uvec4 x_19, uint k_12) {
@@ -2407,11 +2426,11 @@ uvec4 nyq_mul128_u32_(uvec4 x_19, uint k_12) {
     return uvec4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_12) + _e15.y));
 }
 
-uvec4 nyq_mul64_wide(uvec2 a_13, uvec2 b_12) {
-    uvec2 _e4 = nyq_mul_wide(a_13.x, b_12.x);
-    uvec2 _e7 = nyq_mul_wide(a_13.x, b_12.y);
-    uvec2 _e10 = nyq_mul_wide(a_13.y, b_12.x);
-    uvec2 _e13 = nyq_mul_wide(a_13.y, b_12.y);
+uvec4 nyq_mul64_wide(uvec2 a_12, uvec2 b_11) {
+    uvec2 _e4 = nyq_mul_wide(a_12.x, b_11.x);
+    uvec2 _e7 = nyq_mul_wide(a_12.x, b_11.y);
+    uvec2 _e10 = nyq_mul_wide(a_12.y, b_11.x);
+    uvec2 _e13 = nyq_mul_wide(a_12.y, b_11.y);
     uvec4 outer = uvec4(_e4.x, _e4.y, _e13.x, _e13.y);
     uvec4 _e24 = nyq_add128_(outer, uvec4(0u, _e7.x, _e7.y, 0u));
     uvec4 _e30 = nyq_add128_(_e24, uvec4(0u, _e10.x, _e10.y, 0u));
@@ -2431,11 +2450,11 @@ uint nyq_clz128_(uvec4 x_20) {
     return (96u + uint(31 - findMSB(x_20.x)));
 }
 
-uvec4 nyq_shl128_(uvec4 x_21, uint s_74) {
+uvec4 nyq_shl128_(uvec4 x_21, uint s_76) {
     uvec4 v_5 = uvec4(0u);
     uint k_13 = 0u;
     v_5 = x_21;
-    k_13 = s_74;
+    k_13 = s_76;
     while(true) {
         uint _e4 = k_13;
         if ((_e4 >= 32u)) {
@@ -2475,7 +2494,7 @@ uvec4 nyq_shl128_(uvec4 x_21, uint s_74) {
 uint nyq_round_bits(uvec4 x_in_3, int e_in_1, bool sticky, bool twice) {
     bool local_12 = false;
     bool local_13 = false;
-    uint m_2 = 0u;
+    uint m_3 = 0u;
     uint ml = 0u;
     uint mh = 0u;
     bool local_14 = false;
@@ -2537,12 +2556,12 @@ uint nyq_round_bits(uvec4 x_in_3, int e_in_1, bool sticky, bool twice) {
         }
         uint _e79 = mh;
         uint _e82 = ml;
-        m_2 = ((_e79 << 3u) | (_e82 >> 29u));
+        m_3 = ((_e79 << 3u) | (_e82 >> 29u));
         uint _e86 = ml;
         uint r2_ = (_e86 & 536870911u);
         if (!((r2_ > 268435456u))) {
             if ((r2_ == 268435456u)) {
-                uint _e98 = m_2;
+                uint _e98 = m_3;
                 local_18 = ((_e98 & 1u) == 1u);
             } else {
                 local_18 = false;
@@ -2554,11 +2573,11 @@ uint nyq_round_bits(uvec4 x_in_3, int e_in_1, bool sticky, bool twice) {
         }
         bool _e106 = local_17;
         if (_e106) {
-            uint _e107 = m_2;
-            m_2 = (_e107 + 1u);
+            uint _e107 = m_3;
+            m_3 = (_e107 + 1u);
         }
     } else {
-        m_2 = (_e10.w >> 8u);
+        m_3 = (_e10.w >> 8u);
         uint r_16 = (_e10.w & 255u);
         if (!((r_16 > 128u))) {
             if ((r_16 == 128u)) {
@@ -2569,7 +2588,7 @@ uint nyq_round_bits(uvec4 x_in_3, int e_in_1, bool sticky, bool twice) {
                 }
                 bool _e132 = local_21;
                 if (!(_e132)) {
-                    uint _e136 = m_2;
+                    uint _e136 = m_3;
                     local_22 = ((_e136 & 1u) == 1u);
                 } else {
                     local_22 = true;
@@ -2586,11 +2605,11 @@ uint nyq_round_bits(uvec4 x_in_3, int e_in_1, bool sticky, bool twice) {
         }
         bool _e146 = local_19;
         if (_e146) {
-            uint _e147 = m_2;
-            m_2 = (_e147 + 1u);
+            uint _e147 = m_3;
+            m_3 = (_e147 + 1u);
         }
     }
-    uint _e155 = m_2;
+    uint _e155 = m_3;
     return (((uint((e_4 + 254)) << 23u) + _e155) - 8388608u);
 }
 
@@ -2600,19 +2619,19 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
     bool local_23 = false;
     bool local_24 = false;
     uvec2 r_11 = uvec2(0u);
-    uint i_11 = 0u;
+    uint i_10 = 0u;
     bool local_25 = false;
     bool local_26 = false;
     bool local_27 = false;
     uvec4 r_12 = uvec4(0u);
-    uint i_12 = 0u;
+    uint i_11 = 0u;
     uint tw = (twice_1 ? 1u : 0u);
     if (all(equal(num_1, uvec4(0u)))) {
         return NyqRounding(uvec4(0u), 0, 0u, tw, 0u);
     }
     uint _e16 = nyq_clz128_(num_1);
     uint _e17 = nyq_clz128_(den_1);
-    uint s_104 = (_e16 - _e17);
+    uint s_106 = (_e16 - _e17);
     uint steps = (twice_1 ? 55u : 26u);
     if ((den_1.z == 0u)) {
         local_23 = (den_1.w == 0u);
@@ -2628,16 +2647,16 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
     bool _e44 = local_24;
     if (_e44) {
         uvec2 d_27 = den_1.xy;
-        uvec4 _e46 = nyq_shl128_(num_1, s_104);
+        uvec4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
-        bool loop_init_17 = true;
+        bool loop_init_18 = true;
         while(true) {
-            if (!loop_init_17) {
-                uint _e109 = i_11;
-                i_11 = (_e109 + 1u);
+            if (!loop_init_18) {
+                uint _e109 = i_10;
+                i_10 = (_e109 + 1u);
             }
-            loop_init_17 = false;
-            uint _e51 = i_11;
+            loop_init_18 = false;
+            uint _e51 = i_10;
             if ((_e51 < steps)) {
             } else {
                 break;
@@ -2685,16 +2704,16 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
         bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        uvec4 _e124 = nyq_shl128_(num_1, s_104);
+        uvec4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
-        bool loop_init_18 = true;
+        bool loop_init_19 = true;
         while(true) {
-            if (!loop_init_18) {
-                uint _e186 = i_12;
-                i_12 = (_e186 + 1u);
+            if (!loop_init_19) {
+                uint _e186 = i_11;
+                i_11 = (_e186 + 1u);
             }
-            loop_init_18 = false;
-            uint _e128 = i_12;
+            loop_init_19 = false;
+            uint _e128 = i_11;
             if ((_e128 < steps)) {
             } else {
                 break;
@@ -2728,7 +2747,7 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
     }
     uvec2 _e193 = q_2;
     bool _e203 = sticky_1;
-    return NyqRounding(uvec4(_e193, 0u, 0u), (1 - int((steps + s_104))), (_e203 ? 1u : 0u), tw, 0u);
+    return NyqRounding(uvec4(_e193, 0u, 0u), (1 - int((steps + s_106))), (_e203 ? 1u : 0u), tw, 0u);
 }
 
 uint nyq_prime(uint dim_31) {
@@ -2736,36 +2755,36 @@ uint nyq_prime(uint dim_31) {
     return _e7;
 }
 
-NyqRounding nyq_phi_short(uint t_3, uint a_14) {
+NyqRounding nyq_phi_short(uint t_3, uint a_13) {
     uint x_22 = 0u;
     uvec2 rev = uvec2(0u, 0u);
-    uint i_13 = 0u;
-    uint b_18 = _group_0_binding_4_cs[t_3];
-    uint c_12 = (((35u - uint(31 - findMSB(a_14))) / 4u) - 1u);
+    uint i_12 = 0u;
+    uint b_17 = _group_0_binding_4_cs[t_3];
+    uint c_12 = (((35u - uint(31 - findMSB(a_13))) / 4u) - 1u);
     uint _e19 = _group_0_binding_4_cs[((t_3 + 2u) + (c_12 / 4u))];
     uint places = ((_e19 >> (8u * (c_12 % 4u))) & 255u);
     uint low_3 = _group_0_binding_4_cs[((t_3 + 8u) + (2u * c_12))];
     uint high_1 = _group_0_binding_4_cs[((t_3 + 9u) + (2u * c_12))];
-    x_22 = a_14;
-    bool loop_init_19 = true;
+    x_22 = a_13;
+    bool loop_init_20 = true;
     while(true) {
-        if (!loop_init_19) {
-            uint _e64 = i_13;
-            i_13 = (_e64 + 1u);
+        if (!loop_init_20) {
+            uint _e64 = i_12;
+            i_12 = (_e64 + 1u);
         }
-        loop_init_19 = false;
-        uint _e50 = i_13;
+        loop_init_20 = false;
+        uint _e50 = i_12;
         if ((_e50 < places)) {
         } else {
             break;
         }
         {
             uint _e52 = x_22;
-            uint q_5 = (_e52 / b_18);
+            uint q_5 = (_e52 / b_17);
             uvec2 _e54 = rev;
-            uvec3 _e55 = nyq_mul64x32_(_e54, b_18);
+            uvec3 _e55 = nyq_mul64x32_(_e54, b_17);
             uint _e57 = x_22;
-            uvec2 _e62 = nyq_add64_(_e55.xy, uvec2((_e57 - (q_5 * b_18)), 0u));
+            uvec2 _e62 = nyq_add64_(_e55.xy, uvec2((_e57 - (q_5 * b_17)), 0u));
             rev = _e62;
             x_22 = q_5;
         }
@@ -2777,18 +2796,18 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14) {
     return NyqRounding(_e79, e_5, 0u, 1u, 0u);
 }
 
-NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_15) {
+NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_14) {
     uvec2 x_23 = uvec2(0u);
     uvec4 num_2 = uvec4(0u);
     uvec4 den_2 = uvec4(1u, 0u, 0u, 0u);
     bool local_28 = false;
     uint c_3 = 0u;
     uint rev_1 = 0u;
-    uint i_14 = 0u;
-    uint b_19 = _group_0_binding_4_cs[t_4];
+    uint i_13 = 0u;
+    uint b_18 = _group_0_binding_4_cs[t_4];
     uint chunk = _group_0_binding_4_cs[(t_4 + 4u)];
     uint run = _group_0_binding_4_cs[(t_4 + 5u)];
-    x_23 = a_15;
+    x_23 = a_14;
     while(true) {
         uint _e26 = x_23.x;
         if (!((_e26 != 0u))) {
@@ -2808,25 +2827,25 @@ NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_15) {
             x_23 = _e39.xy;
             c_3 = _e39.z;
             rev_1 = 0u;
-            i_14 = 0u;
-            bool loop_init_20 = true;
+            i_13 = 0u;
+            bool loop_init_21 = true;
             while(true) {
-                if (!loop_init_20) {
-                    uint _e58 = i_14;
-                    i_14 = (_e58 + 1u);
+                if (!loop_init_21) {
+                    uint _e58 = i_13;
+                    i_13 = (_e58 + 1u);
                 }
-                loop_init_20 = false;
-                uint _e47 = i_14;
+                loop_init_21 = false;
+                uint _e47 = i_13;
                 if ((_e47 < run)) {
                 } else {
                     break;
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = (_e49 / b_19);
+                    uint q_6 = (_e49 / b_18);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = ((_e51 * b_19) + (_e53 - (q_6 * b_19)));
+                    rev_1 = ((_e51 * b_18) + (_e53 - (q_6 * b_18)));
                     c_3 = q_6;
                 }
             }
@@ -2845,7 +2864,7 @@ NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_15) {
     return NyqFraction(_e70, _e71, 0u, 0u);
 }
 
-NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
+NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_15, uvec2 seed_21) {
     uvec2 x_24 = uvec2(0u);
     uvec4 num_3 = uvec4(0u);
     uvec4 den_3 = uvec4(1u, 0u, 0u, 0u);
@@ -2854,17 +2873,17 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
     uint c_4 = 0u;
     uint part = 0u;
     uint scale = 0u;
-    uint i_15 = 0u;
+    uint i_14 = 0u;
     bool local_31 = false;
     bool local_32 = false;
     bool local_33 = false;
-    uint b_20 = _group_0_binding_4_cs[t_5];
+    uint b_19 = _group_0_binding_4_cs[t_5];
     uint chunk_1 = _group_0_binding_4_cs[(t_5 + 4u)];
     uint run_1 = _group_0_binding_4_cs[(t_5 + 5u)];
-    uvec2 _e16 = nyq_u64_(b_20);
+    uvec2 _e16 = nyq_u64_(b_19);
     uvec2 _e17 = nyq_hash2_(seed_21, _e16);
-    NyqPermutation _e21 = nyq_permutation(b_20, (_e17.x ^ _e17.y));
-    x_24 = a_16;
+    NyqPermutation _e21 = nyq_permutation(b_19, (_e17.x ^ _e17.y));
+    x_24 = a_15;
     while(true) {
         uint _e33 = x_24.x;
         if (!((_e33 != 0u))) {
@@ -2893,15 +2912,15 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
             c_4 = _e46.z;
             part = 0u;
             scale = 1u;
-            i_15 = 0u;
-            bool loop_init_21 = true;
+            i_14 = 0u;
+            bool loop_init_22 = true;
             while(true) {
-                if (!loop_init_21) {
-                    uint _e89 = i_15;
-                    i_15 = (_e89 + 1u);
+                if (!loop_init_22) {
+                    uint _e89 = i_14;
+                    i_14 = (_e89 + 1u);
                 }
-                loop_init_21 = false;
-                uint _e68 = i_15;
+                loop_init_22 = false;
+                uint _e68 = i_14;
                 if ((_e68 < run_1)) {
                 } else {
                     break;
@@ -2918,13 +2937,13 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = (_e77 / b_20);
+                    uint q_7 = (_e77 / b_19);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_20)));
-                    part = ((_e79 * b_20) + _e84);
+                    uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_19)));
+                    part = ((_e79 * b_19) + _e84);
                     uint _e86 = scale;
-                    scale = (_e86 * b_20);
+                    scale = (_e86 * b_19);
                     c_4 = q_7;
                 }
             }
@@ -2942,11 +2961,11 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
     }
     uint _e104 = nyq_permutation_apply(_e21, 0u);
     uvec4 _e105 = num_3;
-    uvec4 _e108 = nyq_mul128_u32_(_e105, (b_20 - 1u));
+    uvec4 _e108 = nyq_mul128_u32_(_e105, (b_19 - 1u));
     uvec4 _e113 = nyq_add128_(_e108, uvec4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     uvec4 _e114 = den_3;
-    uvec4 _e117 = nyq_mul128_u32_(_e114, (b_20 - 1u));
+    uvec4 _e117 = nyq_mul128_u32_(_e114, (b_19 - 1u));
     den_3 = _e117;
     uint _e119 = den_3.w;
     if ((_e119 == 0u)) {
@@ -2965,10 +2984,10 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
     bool small = local_33;
     uvec4 _e138 = num_3;
     uvec4 _e139 = den_3;
-    return NyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_20 - 1u)) ? 1u : 0u));
+    return NyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_19 - 1u)) ? 1u : 0u));
 }
 
-NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_17, uvec2 seed_22, bool affine) {
+NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_16, uvec2 seed_22, bool affine) {
     uvec2 rest = uvec2(0u);
     uvec2 pow_ = uvec2(1u, 0u);
     uint level = 0u;
@@ -2978,10 +2997,10 @@ NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_17, uvec2 seed_22, bool affine
     uint digit_1 = 0u;
     bool local_34 = false;
     uint out_2 = 0u;
-    uint b_21 = _group_0_binding_4_cs[(NYQ_HALTON_WORDS * d_4)];
+    uint b_20 = _group_0_binding_4_cs[(NYQ_HALTON_WORDS * d_4)];
     uvec2 _e9 = nyq_u64_(d_4);
     uvec2 _e13 = nyq_hash3_(seed_22, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
-    rest = a_17;
+    rest = a_16;
     while(true) {
         uint _e30 = den_4.y;
         if ((_e30 == 0u)) {
@@ -3001,14 +3020,14 @@ NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_17, uvec2 seed_22, bool affine
             bool _e51 = local_34;
             if (_e51) {
                 uvec2 _e52 = rest;
-                uvec3 _e53 = nyq_divmod64_small(_e52, b_21);
+                uvec3 _e53 = nyq_divmod64_small(_e52, b_20);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
             uvec2 _e56 = rest;
             uvec2 _e57 = pow_;
             uvec2 _e58 = nyq_mul64_(_e56, _e57);
-            uvec2 _e59 = nyq_sub64_(a_17, _e58);
+            uvec2 _e59 = nyq_sub64_(a_16, _e58);
             uvec2 _e61 = nyq_mul64_(_e59, NYQ_OWEN_PREFIX_MUL);
             uint _e63 = level;
             uvec2 _e64 = nyq_u64_(_e63);
@@ -3018,38 +3037,38 @@ NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_17, uvec2 seed_22, bool affine
             uvec2 _e69 = next;
             rest = _e69;
             uvec2 _e70 = pow_;
-            uvec2 _e71 = nyq_u64_(b_21);
+            uvec2 _e71 = nyq_u64_(b_20);
             uvec2 _e72 = nyq_mul64_(_e70, _e71);
             pow_ = _e72;
             uint _e73 = level;
             level = (_e73 + 1u);
             out_2 = 0u;
             if (affine) {
-                uvec3 _e78 = nyq_mul64x32_(_e68, b_21);
-                uvec3 _e83 = nyq_mul64x32_(_e78.xy, (b_21 - 1u));
-                uint m_7 = (1u + _e83.z);
+                uvec3 _e78 = nyq_mul64x32_(_e68, b_20);
+                uvec3 _e83 = nyq_mul64x32_(_e78.xy, (b_20 - 1u));
+                uint m_8 = (1u + _e83.z);
                 uint _e86 = digit_1;
-                out_2 = (((m_7 * _e86) + _e78.z) % b_21);
+                out_2 = (((m_8 * _e86) + _e78.z) % b_20);
             } else {
-                if ((b_21 <= 16u)) {
-                    uvec2 _e93 = nyq_packed_table(b_21, _e68);
+                if ((b_20 <= 16u)) {
+                    uvec2 _e93 = nyq_packed_table(b_20, _e68);
                     uint _e95 = digit_1;
                     uint _e97 = nyq_nibble(_e93, (4u * _e95));
                     out_2 = _e97;
                 } else {
-                    NyqPermutation _e101 = nyq_permutation(b_21, (_e68.x ^ _e68.y));
+                    NyqPermutation _e101 = nyq_permutation(b_20, (_e68.x ^ _e68.y));
                     uint _e102 = digit_1;
                     uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             uvec2 _e104 = num_4;
-            uvec3 _e105 = nyq_mul64x32_(_e104, b_21);
+            uvec3 _e105 = nyq_mul64x32_(_e104, b_20);
             uint _e107 = out_2;
             uvec2 _e110 = nyq_add64_(_e105.xy, uvec2(_e107, 0u));
             num_4 = _e110;
             uvec2 _e111 = den_4;
-            uvec3 _e112 = nyq_mul64x32_(_e111, b_21);
+            uvec3 _e112 = nyq_mul64x32_(_e111, b_20);
             den_4 = _e112.xy;
         }
     }
@@ -3058,7 +3077,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_17, uvec2 seed_22, bool affine
     return NyqFraction(uvec4(_e114, 0u, 0u), uvec4(_e118, 0u, 0u), 1u, 0u);
 }
 
-float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_18, uvec2 seed_23, uint how_2) {
+float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_17, uvec2 seed_23, uint how_2) {
     NyqRounding r_13 = NyqRounding(uvec4(0u), 0, 0u, 0u, 0u);
     bool local_35 = false;
     bool local_36 = false;
@@ -3066,7 +3085,7 @@ float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_18, uvec2 seed_23, uint
     NyqFraction f = NyqFraction(uvec4(0u), uvec4(0u), 0u, 0u);
     uint bits_2 = 0u;
     uint d_28 = (dim_32 % NYQ_PRIME_COUNT);
-    uint t_8 = (NYQ_HALTON_WORDS * d_28);
+    uint t_7 = (NYQ_HALTON_WORDS * d_28);
     if ((how_2 == NYQ_SCRAMBLE_NONE)) {
         local_35 = (d_28 == 0u);
     } else {
@@ -3074,36 +3093,36 @@ float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_18, uvec2 seed_23, uint
     }
     bool _e16 = local_35;
     if (_e16) {
-        r_13 = NyqRounding(uvec4(bitfieldReverse(a_18.y), bitfieldReverse(a_18.x), 0u, 0u), -64, 0u, 0u, 0u);
+        r_13 = NyqRounding(uvec4(bitfieldReverse(a_17.y), bitfieldReverse(a_17.x), 0u, 0u), -64, 0u, 0u, 0u);
     } else {
         if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-            local_36 = (a_18.y == 0u);
+            local_36 = (a_17.y == 0u);
         } else {
             local_36 = false;
         }
         bool _e37 = local_36;
         if (_e37) {
-            uint _e45 = _group_0_binding_4_cs[(t_8 + 1u)];
-            local_37 = (a_18.x < _e45);
+            uint _e45 = _group_0_binding_4_cs[(t_7 + 1u)];
+            local_37 = (a_17.x < _e45);
         } else {
             local_37 = false;
         }
         bool _e48 = local_37;
         if (_e48) {
-            if ((a_18.x != 0u)) {
-                NyqRounding _e53 = nyq_phi_short(t_8, a_18.x);
+            if ((a_17.x != 0u)) {
+                NyqRounding _e53 = nyq_phi_short(t_7, a_17.x);
                 r_13 = _e53;
             }
         } else {
             if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-                NyqFraction _e57 = nyq_phi_fraction(t_8, a_18);
+                NyqFraction _e57 = nyq_phi_fraction(t_7, a_17);
                 f = _e57;
             } else {
                 if ((how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-                    NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23);
+                    NyqFraction _e60 = nyq_permuted_fraction(t_7, a_17, seed_23);
                     f = _e60;
                 } else {
-                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_17, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
                     f = _e63;
                 }
             }
@@ -3136,23 +3155,23 @@ float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_18, uvec2 seed_23, uint
     return uintBitsToFloat(min(_e104, NYQ_BELOW_ONE_BITS));
 }
 
-float nyq_radical_inverse(uint dim_33, uvec2 a_19) {
-    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, uvec2(0u, 0u), NYQ_SCRAMBLE_NONE);
+float nyq_radical_inverse(uint dim_33, uvec2 a_18) {
+    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_18, uvec2(0u, 0u), NYQ_SCRAMBLE_NONE);
     return _e6;
 }
 
-float nyq_scrambled_radical_inverse(uint dim_34, uvec2 a_20, uvec2 seed_24) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
+float nyq_scrambled_radical_inverse(uint dim_34, uvec2 a_19, uvec2 seed_24) {
+    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_19, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
     return _e4;
 }
 
-float nyq_owen_scrambled_radical_inverse(uint dim_35, uvec2 a_21, uvec2 seed_25) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN);
+float nyq_owen_scrambled_radical_inverse(uint dim_35, uvec2 a_20, uvec2 seed_25) {
+    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_20, seed_25, NYQ_SCRAMBLE_OWEN);
     return _e4;
 }
 
-float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uvec2 a_22, uvec2 seed_26) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
+float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uvec2 a_21, uvec2 seed_26) {
+    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_21, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
     return _e4;
 }
 
@@ -3165,14 +3184,14 @@ float nyq_halton_sample(NyqHalton h_1, uvec2 index_15, uint dim_37) {
     return _e7;
 }
 
-uint nyq_mod_inverse(uint a_23, uint n_6) {
+uint nyq_mod_inverse(uint a_22, uint n_6) {
     int r0_ = 0;
     int r1_ = 0;
     int t0_ = 0;
     int t1_ = 1;
-    int m_3 = 0;
+    int m_4 = 0;
     r0_ = int(n_6);
-    r1_ = int((a_23 % n_6));
+    r1_ = int((a_22 % n_6));
     while(true) {
         int _e11 = r1_;
         if ((_e11 != 0)) {
@@ -3198,17 +3217,17 @@ uint nyq_mod_inverse(uint a_23, uint n_6) {
         }
     }
     int _e27 = t0_;
-    m_3 = (_e27 % int(n_6));
-    int _e31 = m_3;
+    m_4 = (_e27 % int(n_6));
+    int _e31 = m_4;
     if ((_e31 < 0)) {
-        int _e34 = m_3;
-        m_3 = (_e34 + int(n_6));
+        int _e34 = m_4;
+        m_4 = (_e34 + int(n_6));
     }
-    int _e37 = m_3;
+    int _e37 = m_4;
     return uint(_e37);
 }
 
-uvec2 nyq_halton_scale(uint extent, uint b_13) {
+uvec2 nyq_halton_scale(uint extent, uint b_12) {
     uint scale_1 = 1u;
     uint e_1 = 0u;
     uint goal = min(extent, 128u);
@@ -3220,7 +3239,7 @@ uvec2 nyq_halton_scale(uint extent, uint b_13) {
         }
         {
             uint _e10 = scale_1;
-            scale_1 = (_e10 * b_13);
+            scale_1 = (_e10 * b_12);
             uint _e12 = e_1;
             e_1 = (_e12 + 1u);
         }
@@ -3240,19 +3259,19 @@ NyqHaltonSampler nyq_halton_sampler(uvec2 resolution_2, uint spp, uint scramble_
     return NyqHaltonSampler(spp, scramble_3, seed_28, uvec2(_e6.y, _e9.y), scales, (_e6.x * _e9.x), basis, uvec2(0u, 0u), 0u);
 }
 
-uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7) {
+uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7) {
     uint inverse_1 = 0u;
     uint index_16 = 0u;
     uint done = 0u;
     uint k_14 = 0u;
     inverse_1 = inverse_in;
-    bool loop_init_22 = true;
+    bool loop_init_23 = true;
     while(true) {
-        if (!loop_init_22) {
+        if (!loop_init_23) {
             uint _e32 = done;
             done = (_e32 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e8 = done;
         if ((_e8 < n_7)) {
         } else {
@@ -3263,13 +3282,13 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7) {
             if ((_e10 == 0u)) {
                 uint _e13 = done;
                 k_14 = _e13;
-                bool loop_init_23 = true;
+                bool loop_init_24 = true;
                 while(true) {
-                    if (!loop_init_23) {
+                    if (!loop_init_24) {
                         uint _e20 = k_14;
                         k_14 = (_e20 + 1u);
                     }
-                    loop_init_23 = false;
+                    loop_init_24 = false;
                     uint _e15 = k_14;
                     if ((_e15 < n_7)) {
                     } else {
@@ -3277,17 +3296,17 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7) {
                     }
                     {
                         uint _e17 = index_16;
-                        index_16 = (_e17 * b_14);
+                        index_16 = (_e17 * b_13);
                     }
                 }
                 uint _e22 = index_16;
                 return _e22;
             }
             uint _e23 = inverse_1;
-            uint q_9 = (_e23 / b_14);
+            uint q_9 = (_e23 / b_13);
             uint _e25 = index_16;
             uint _e27 = inverse_1;
-            index_16 = ((_e25 * b_14) + (_e27 - (q_9 * b_14)));
+            index_16 = ((_e25 * b_13) + (_e27 - (q_9 * b_13)));
             inverse_1 = q_9;
         }
     }
@@ -3295,12 +3314,12 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7) {
     return _e34;
 }
 
-uvec2 nyq_halton_sampler_index(inout NyqHaltonSampler s_75, uvec2 pixel_18, uint sample_index_16) {
+uvec2 nyq_halton_sampler_index(inout NyqHaltonSampler s_77, uvec2 pixel_18, uint sample_index_16) {
     uint offset_1 = 0u;
-    uint stride = s_75.stride;
-    uvec2 scales_1 = s_75.scales;
-    uvec2 exponents = s_75.exponents;
-    uvec2 basis_1 = s_75.basis;
+    uint stride = s_77.stride;
+    uvec2 scales_1 = s_77.scales;
+    uvec2 exponents = s_77.exponents;
+    uvec2 basis_1 = s_77.basis;
     uint _e16 = nyq_inverse_radical_inverse(2u, (pixel_18.x % scales_1.x), exponents.x);
     offset_1 = ((_e16 * basis_1.x) % stride);
     uint _e26 = nyq_inverse_radical_inverse(3u, (pixel_18.y % scales_1.y), exponents.y);
@@ -3313,55 +3332,55 @@ uvec2 nyq_halton_sampler_index(inout NyqHaltonSampler s_75, uvec2 pixel_18, uint
     return _e35;
 }
 
-float nyq_halton_sampler_value(inout NyqHaltonSampler s_76, uint dim_38) {
-    uvec2 a_24 = uvec2(0u);
+float nyq_halton_sampler_value(inout NyqHaltonSampler s_78, uint dim_38) {
+    uvec2 a_23 = uvec2(0u);
     uint d_29 = (dim_38 % NYQ_PRIME_COUNT);
-    uvec2 index_19 = s_76.index;
-    a_24 = index_19;
+    uvec2 index_19 = s_78.index;
+    a_23 = index_19;
     if ((d_29 == 0u)) {
-        uint e_6 = s_76.exponents.x;
+        uint e_6 = s_78.exponents.x;
         if ((e_6 != 0u)) {
             uvec2 _e14 = nyq_shr64_(index_19, e_6);
-            a_24 = _e14;
+            a_23 = _e14;
         }
     } else {
         if ((d_29 == 1u)) {
-            uint _e19 = s_76.scales.y;
+            uint _e19 = s_78.scales.y;
             uvec3 _e20 = nyq_divmod64_small(index_19, _e19);
-            a_24 = _e20.xy;
+            a_23 = _e20.xy;
         }
     }
-    uvec2 _e22 = a_24;
-    uvec2 _e24 = s_76.seed;
-    uint _e26 = s_76.scramble;
+    uvec2 _e22 = a_23;
+    uvec2 _e24 = s_78.seed;
+    uint _e26 = s_78.scramble;
     float _e27 = nyq_radical_inverse_scrambled(d_29, _e22, _e24, _e26);
     return _e27;
 }
 
-void nyq_halton_sampler_start(inout NyqHaltonSampler s_77, uvec2 pixel_19, uint sample_index_17, uint dim_39) {
-    uvec2 _e5 = nyq_halton_sampler_index(s_77, pixel_19, sample_index_17);
-    s_77.index = _e5;
-    s_77.dim = dim_39;
+void nyq_halton_sampler_start(inout NyqHaltonSampler s_79, uvec2 pixel_19, uint sample_index_17, uint dim_39) {
+    uvec2 _e5 = nyq_halton_sampler_index(s_79, pixel_19, sample_index_17);
+    s_79.index = _e5;
+    s_79.dim = dim_39;
     return;
 }
 
-float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_78) {
-    uint d_30 = s_78.dim;
-    s_78.dim = (d_30 + 1u);
-    float _e6 = nyq_halton_sampler_value(s_78, d_30);
+float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_80) {
+    uint d_30 = s_80.dim;
+    s_80.dim = (d_30 + 1u);
+    float _e6 = nyq_halton_sampler_value(s_80, d_30);
     return _e6;
 }
 
-vec2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_79, uint dim_40) {
+vec2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_81, uint dim_40) {
     vec2 v_6 = vec2(0.0, 0.0);
     uint k_15 = 0u;
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
+        if (!loop_init_25) {
             uint _e17 = k_15;
             k_15 = (_e17 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e8 = k_15;
         if ((_e8 < 2u)) {
         } else {
@@ -3370,7 +3389,7 @@ vec2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_79, uint dim_40) {
         {
             uint _e11 = k_15;
             uint _e13 = k_15;
-            float _e15 = nyq_halton_sampler_value(s_79, (dim_40 + _e13));
+            float _e15 = nyq_halton_sampler_value(s_81, (dim_40 + _e13));
             v_6[_e11] = _e15;
         }
     }
@@ -3378,32 +3397,32 @@ vec2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_79, uint dim_40) {
     return _e19;
 }
 
-vec2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_80) {
-    uint d_31 = s_80.dim;
-    s_80.dim = (d_31 + 2u);
-    vec2 _e6 = nyq_halton_sampler_pair(s_80, d_31);
+vec2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_82) {
+    uint d_31 = s_82.dim;
+    s_82.dim = (d_31 + 2u);
+    vec2 _e6 = nyq_halton_sampler_pair(s_82, d_31);
     return _e6;
 }
 
-vec2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_81) {
-    uint _e3 = s_81.dim;
-    s_81.dim = max(_e3, 2u);
-    vec2 _e7 = nyq_halton_sampler_pair(s_81, 0u);
+vec2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_83) {
+    uint _e3 = s_83.dim;
+    s_83.dim = max(_e3, 2u);
+    vec2 _e7 = nyq_halton_sampler_pair(s_83, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_82, uvec2 pixel_20, uint sample_index_18) {
+NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_84, uvec2 pixel_20, uint sample_index_18) {
     vec4 v_7 = vec4(0.0, 0.0, 0.0, 0.0);
     float lens_y = 0.0;
     uint d_5 = 0u;
-    nyq_halton_sampler_start(s_82, pixel_20, sample_index_18, 5u);
-    bool loop_init_25 = true;
+    nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
+        if (!loop_init_26) {
             uint _e25 = d_5;
             d_5 = (_e25 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e14 = d_5;
         if ((_e14 < 5u)) {
         } else {
@@ -3411,7 +3430,7 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_82, uv
         }
         {
             uint _e17 = d_5;
-            float _e18 = nyq_halton_sampler_value(s_82, _e17);
+            float _e18 = nyq_halton_sampler_value(s_84, _e17);
             uint _e19 = d_5;
             if ((_e19 < 4u)) {
                 uint _e22 = d_5;
@@ -3501,93 +3520,93 @@ NyqBlueSampler nyq_owen_sobol_bn_sampler(uvec2 seed_32, uint frame_4) {
     return _e2;
 }
 
-void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_83, uvec2 pixel_24, uint sample_index_19, uint dim_41) {
-    uint b_15 = 0u;
-    s_83.pixel = pixel_24;
-    s_83.index = sample_index_19;
-    s_83.dim = dim_41;
-    bool loop_init_26 = true;
+void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uvec2 pixel_24, uint sample_index_19, uint dim_41) {
+    uint b_14 = 0u;
+    s_85.pixel = pixel_24;
+    s_85.index = sample_index_19;
+    s_85.dim = dim_41;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_26) {
-            uint _e28 = b_15;
-            b_15 = (_e28 + 1u);
+        if (!loop_init_27) {
+            uint _e28 = b_14;
+            b_14 = (_e28 + 1u);
         }
-        loop_init_26 = false;
-        uint _e9 = b_15;
+        loop_init_27 = false;
+        uint _e9 = b_14;
         if ((_e9 < 2u)) {
         } else {
             break;
         }
         {
-            uvec2 _e14 = s_83.seed;
-            uint _e16 = s_83.frame;
-            uint _e17 = b_15;
+            uvec2 _e14 = s_85.seed;
+            uint _e16 = s_85.frame;
+            uint _e17 = b_14;
             uint _e18 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e14, _e16, pixel_24, _e17);
             uint _e19 = nyq_owen_sobol_bn_key(_e18);
-            uint _e21 = b_15;
-            s_83.key[_e21] = _e19;
-            uint _e24 = b_15;
+            uint _e21 = b_14;
+            s_85.key[_e21] = _e19;
+            uint _e24 = b_14;
             uint _e26 = nyq_owen_sobol_bn_rev(_e18, _e19, sample_index_19);
-            s_83.prepared[_e24] = _e26;
+            s_85.prepared[_e24] = _e26;
         }
     }
     return;
 }
 
-float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_84, uint dim_42) {
-    uint b_22 = (dim_42 / 4u);
+float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_86, uint dim_42) {
+    uint b_21 = (dim_42 / 4u);
     uint c_13 = (dim_42 % 4u);
-    if ((b_22 < 2u)) {
-        uint _e10 = s_84.key[b_22];
-        uint _e13 = s_84.prepared[b_22];
+    if ((b_21 < 2u)) {
+        uint _e10 = s_86.key[b_21];
+        uint _e13 = s_86.prepared[b_21];
         float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13);
         return _e14;
     }
-    uvec2 _e17 = s_84.seed;
-    uint _e19 = s_84.frame;
-    uvec2 _e21 = s_84.pixel;
-    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_22);
+    uvec2 _e17 = s_86.seed;
+    uint _e19 = s_86.frame;
+    uvec2 _e21 = s_86.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_21);
     uint _e23 = nyq_owen_sobol_bn_key(_e22);
-    uint _e25 = s_84.index;
+    uint _e25 = s_86.index;
     uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
     float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13);
     return _e27;
 }
 
-float nyq_owen_sobol_bn_get_1d(inout NyqBlueSampler s_85) {
-    uint d_32 = s_85.dim;
-    s_85.dim = (d_32 + 1u);
-    float _e6 = nyq_owen_sobol_bn_value(s_85, d_32);
+float nyq_owen_sobol_bn_get_1d(inout NyqBlueSampler s_87) {
+    uint d_32 = s_87.dim;
+    s_87.dim = (d_32 + 1u);
+    float _e6 = nyq_owen_sobol_bn_value(s_87, d_32);
     return _e6;
 }
 
-vec2 nyq_owen_sobol_bn_get_2d(inout NyqBlueSampler s_86) {
-    uint d_33 = s_86.dim;
-    s_86.dim = (d_33 + 2u);
-    float _e6 = nyq_owen_sobol_bn_value(s_86, d_33);
-    float _e9 = nyq_owen_sobol_bn_value(s_86, (d_33 + 1u));
+vec2 nyq_owen_sobol_bn_get_2d(inout NyqBlueSampler s_88) {
+    uint d_33 = s_88.dim;
+    s_88.dim = (d_33 + 2u);
+    float _e6 = nyq_owen_sobol_bn_value(s_88, d_33);
+    float _e9 = nyq_owen_sobol_bn_value(s_88, (d_33 + 1u));
     return vec2(_e6, _e9);
 }
 
-vec2 nyq_owen_sobol_bn_get_pixel_2d(inout NyqBlueSampler s_87) {
-    uint _e3 = s_87.dim;
-    s_87.dim = max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_bn_value(s_87, 0u);
-    float _e9 = nyq_owen_sobol_bn_value(s_87, 1u);
+vec2 nyq_owen_sobol_bn_get_pixel_2d(inout NyqBlueSampler s_89) {
+    uint _e3 = s_89.dim;
+    s_89.dim = max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_bn_value(s_89, 0u);
+    float _e9 = nyq_owen_sobol_bn_value(s_89, 1u);
     return vec2(_e7, _e9);
 }
 
-NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_88, uvec2 pixel_25, uint sample_index_20) {
+NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_90, uvec2 pixel_25, uint sample_index_20) {
     float v_9[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_6 = 0u;
-    nyq_owen_sobol_bn_start(s_88, pixel_25, sample_index_20, 0u);
-    bool loop_init_27 = true;
+    nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u);
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e15 = d_6;
             d_6 = (_e15 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e7 = d_6;
         if ((_e7 < 5u)) {
         } else {
@@ -3596,30 +3615,30 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_88, uvec2
         {
             uint _e10 = d_6;
             uint _e12 = d_6;
-            float _e13 = nyq_owen_sobol_bn_value(s_88, _e12);
+            float _e13 = nyq_owen_sobol_bn_value(s_90, _e12);
             v_9[_e10] = _e13;
         }
     }
-    s_88.dim = 5u;
+    s_90.dim = 5u;
     float _e19[5] = v_9;
     NyqCameraSample _e20 = nyq_blue_camera(pixel_25, _e19);
     return _e20;
 }
 
-uint nyq_pmj02_bn_key(uint entry_2, uint i_16) {
+uint nyq_pmj02_bn_key(uint entry_2, uint i_15) {
     uint _e6 = nyq_mix32_(((entry_2 >> 8u) ^ 1347242496u));
-    uint epoch = (i_16 >> 16u);
+    uint epoch = (i_15 >> 16u);
     uint _e9 = nyq_mix32_(epoch);
     uint _e11 = nyq_mix32_((_e6 ^ _e9));
     return ((epoch == 0u) ? _e6 : _e11);
 }
 
-uint nyq_pmj02_bn_points(uint k_16, uint i_17) {
+uint nyq_pmj02_bn_points(uint k_16, uint i_16) {
     uint _e6 = nyq_mix32_((k_16 ^ 1397249350u));
-    uint _e7 = nyq_shuffle_rev((i_17 & 65535u), _e6);
+    uint _e7 = nyq_shuffle_rev((i_16 & 65535u), _e6);
     uint p0_ = (bitfieldReverse(_e7) & 65535u);
     uint _e15 = nyq_mix32_((k_16 ^ 1397249351u));
-    uint _e16 = nyq_shuffle_rev((i_17 & 65535u), _e15);
+    uint _e16 = nyq_shuffle_rev((i_16 & 65535u), _e15);
     uint p1_ = (bitfieldReverse(_e16) & 65535u);
     return (p0_ | (p1_ << 16u));
 }
@@ -3637,95 +3656,95 @@ NyqBlueSampler nyq_pmj02_bn_sampler(uvec2 seed_33, uint frame_5) {
     return _e2;
 }
 
-void nyq_pmj02_bn_start(inout NyqBlueSampler s_89, uvec2 pixel_26, uint sample_index_21, uint dim_43) {
-    uint b_16 = 0u;
-    s_89.pixel = pixel_26;
-    s_89.index = sample_index_21;
-    s_89.dim = dim_43;
-    bool loop_init_28 = true;
+void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uvec2 pixel_26, uint sample_index_21, uint dim_43) {
+    uint b_15 = 0u;
+    s_91.pixel = pixel_26;
+    s_91.index = sample_index_21;
+    s_91.dim = dim_43;
+    bool loop_init_29 = true;
     while(true) {
-        if (!loop_init_28) {
-            uint _e31 = b_16;
-            b_16 = (_e31 + 1u);
+        if (!loop_init_29) {
+            uint _e31 = b_15;
+            b_15 = (_e31 + 1u);
         }
-        loop_init_28 = false;
-        uint _e9 = b_16;
+        loop_init_29 = false;
+        uint _e9 = b_15;
         if ((_e9 < 2u)) {
         } else {
             break;
         }
         {
-            uvec2 _e14 = s_89.seed;
-            uint _e16 = s_89.frame;
-            uint _e17 = b_16;
+            uvec2 _e14 = s_91.seed;
+            uint _e16 = s_91.frame;
+            uint _e17 = b_15;
             uint _e18 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e14, _e16, pixel_26, _e17);
-            uint i_19 = (sample_index_21 ^ (_e18 & 255u));
-            uint _e22 = nyq_pmj02_bn_key(_e18, i_19);
-            uint _e24 = b_16;
-            s_89.key[_e24] = _e22;
-            uint _e27 = b_16;
-            uint _e29 = nyq_pmj02_bn_points(_e22, i_19);
-            s_89.prepared[_e27] = _e29;
+            uint i_18 = (sample_index_21 ^ (_e18 & 255u));
+            uint _e22 = nyq_pmj02_bn_key(_e18, i_18);
+            uint _e24 = b_15;
+            s_91.key[_e24] = _e22;
+            uint _e27 = b_15;
+            uint _e29 = nyq_pmj02_bn_points(_e22, i_18);
+            s_91.prepared[_e27] = _e29;
         }
     }
     return;
 }
 
-float nyq_pmj02_bn_value(inout NyqBlueSampler s_90, uint dim_44) {
-    uint b_23 = (dim_44 / 4u);
+float nyq_pmj02_bn_value(inout NyqBlueSampler s_92, uint dim_44) {
+    uint b_22 = (dim_44 / 4u);
     uint c_14 = (dim_44 % 4u);
-    if ((b_23 < 2u)) {
-        uint _e10 = s_90.key[b_23];
-        uint _e13 = s_90.prepared[b_23];
+    if ((b_22 < 2u)) {
+        uint _e10 = s_92.key[b_22];
+        uint _e13 = s_92.prepared[b_22];
         float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
         return _e14;
     }
-    uvec2 _e17 = s_90.seed;
-    uint _e19 = s_90.frame;
-    uvec2 _e21 = s_90.pixel;
-    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e17, _e19, _e21, b_23);
-    uint _e24 = s_90.index;
-    uint i_20 = (_e24 ^ (_e22 & 255u));
-    uint _e28 = nyq_pmj02_bn_key(_e22, i_20);
-    uint _e29 = nyq_pmj02_bn_points(_e28, i_20);
+    uvec2 _e17 = s_92.seed;
+    uint _e19 = s_92.frame;
+    uvec2 _e21 = s_92.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e17, _e19, _e21, b_22);
+    uint _e24 = s_92.index;
+    uint i_19 = (_e24 ^ (_e22 & 255u));
+    uint _e28 = nyq_pmj02_bn_key(_e22, i_19);
+    uint _e29 = nyq_pmj02_bn_points(_e28, i_19);
     float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
     return _e30;
 }
 
-float nyq_pmj02_bn_get_1d(inout NyqBlueSampler s_91) {
-    uint d_34 = s_91.dim;
-    s_91.dim = (d_34 + 1u);
-    float _e6 = nyq_pmj02_bn_value(s_91, d_34);
+float nyq_pmj02_bn_get_1d(inout NyqBlueSampler s_93) {
+    uint d_34 = s_93.dim;
+    s_93.dim = (d_34 + 1u);
+    float _e6 = nyq_pmj02_bn_value(s_93, d_34);
     return _e6;
 }
 
-vec2 nyq_pmj02_bn_get_2d(inout NyqBlueSampler s_92) {
-    uint d_35 = s_92.dim;
-    s_92.dim = (d_35 + 2u);
-    float _e6 = nyq_pmj02_bn_value(s_92, d_35);
-    float _e9 = nyq_pmj02_bn_value(s_92, (d_35 + 1u));
+vec2 nyq_pmj02_bn_get_2d(inout NyqBlueSampler s_94) {
+    uint d_35 = s_94.dim;
+    s_94.dim = (d_35 + 2u);
+    float _e6 = nyq_pmj02_bn_value(s_94, d_35);
+    float _e9 = nyq_pmj02_bn_value(s_94, (d_35 + 1u));
     return vec2(_e6, _e9);
 }
 
-vec2 nyq_pmj02_bn_get_pixel_2d(inout NyqBlueSampler s_93) {
-    uint _e3 = s_93.dim;
-    s_93.dim = max(_e3, 2u);
-    float _e7 = nyq_pmj02_bn_value(s_93, 0u);
-    float _e9 = nyq_pmj02_bn_value(s_93, 1u);
+vec2 nyq_pmj02_bn_get_pixel_2d(inout NyqBlueSampler s_95) {
+    uint _e3 = s_95.dim;
+    s_95.dim = max(_e3, 2u);
+    float _e7 = nyq_pmj02_bn_value(s_95, 0u);
+    float _e9 = nyq_pmj02_bn_value(s_95, 1u);
     return vec2(_e7, _e9);
 }
 
-NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_94, uvec2 pixel_27, uint sample_index_22) {
+NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_96, uvec2 pixel_27, uint sample_index_22) {
     float v_10[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_7 = 0u;
-    nyq_pmj02_bn_start(s_94, pixel_27, sample_index_22, 0u);
-    bool loop_init_29 = true;
+    nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u);
+    bool loop_init_30 = true;
     while(true) {
-        if (!loop_init_29) {
+        if (!loop_init_30) {
             uint _e15 = d_7;
             d_7 = (_e15 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e7 = d_7;
         if ((_e7 < 5u)) {
         } else {
@@ -3734,11 +3753,11 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_94, uvec2 pixe
         {
             uint _e10 = d_7;
             uint _e12 = d_7;
-            float _e13 = nyq_pmj02_bn_value(s_94, _e12);
+            float _e13 = nyq_pmj02_bn_value(s_96, _e12);
             v_10[_e10] = _e13;
         }
     }
-    s_94.dim = 5u;
+    s_96.dim = 5u;
     float _e19[5] = v_10;
     NyqCameraSample _e20 = nyq_blue_camera(pixel_27, _e19);
     return _e20;
@@ -3766,93 +3785,93 @@ NyqBlueSampler nyq_lattice_bn_sampler(uvec2 seed_34, uint frame_6) {
     return _e2;
 }
 
-void nyq_lattice_bn_start(inout NyqBlueSampler s_95, uvec2 pixel_28, uint sample_index_23, uint dim_45) {
-    uint b_17 = 0u;
-    s_95.pixel = pixel_28;
-    s_95.index = sample_index_23;
-    s_95.dim = dim_45;
-    bool loop_init_30 = true;
+void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uvec2 pixel_28, uint sample_index_23, uint dim_45) {
+    uint b_16 = 0u;
+    s_97.pixel = pixel_28;
+    s_97.index = sample_index_23;
+    s_97.dim = dim_45;
+    bool loop_init_31 = true;
     while(true) {
-        if (!loop_init_30) {
-            uint _e28 = b_17;
-            b_17 = (_e28 + 1u);
+        if (!loop_init_31) {
+            uint _e28 = b_16;
+            b_16 = (_e28 + 1u);
         }
-        loop_init_30 = false;
-        uint _e9 = b_17;
+        loop_init_31 = false;
+        uint _e9 = b_16;
         if ((_e9 < 2u)) {
         } else {
             break;
         }
         {
-            uvec2 _e14 = s_95.seed;
-            uint _e16 = s_95.frame;
-            uint _e17 = b_17;
+            uvec2 _e14 = s_97.seed;
+            uint _e16 = s_97.frame;
+            uint _e17 = b_16;
             uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_28, _e17);
             uint _e19 = nyq_lattice_bn_key(_e18);
-            uint _e21 = b_17;
-            s_95.key[_e21] = _e19;
-            uint _e24 = b_17;
+            uint _e21 = b_16;
+            s_97.key[_e21] = _e19;
+            uint _e24 = b_16;
             uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_23);
-            s_95.prepared[_e24] = _e26;
+            s_97.prepared[_e24] = _e26;
         }
     }
     return;
 }
 
-float nyq_lattice_bn_value(inout NyqBlueSampler s_96, uint dim_46) {
-    uint b_24 = (dim_46 / 4u);
+float nyq_lattice_bn_value(inout NyqBlueSampler s_98, uint dim_46) {
+    uint b_23 = (dim_46 / 4u);
     uint c_15 = (dim_46 % 4u);
-    if ((b_24 < 2u)) {
-        uint _e10 = s_96.key[b_24];
-        uint _e13 = s_96.prepared[b_24];
+    if ((b_23 < 2u)) {
+        uint _e10 = s_98.key[b_23];
+        uint _e13 = s_98.prepared[b_23];
         float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
-    uvec2 _e17 = s_96.seed;
-    uint _e19 = s_96.frame;
-    uvec2 _e21 = s_96.pixel;
-    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_24);
+    uvec2 _e17 = s_98.seed;
+    uint _e19 = s_98.frame;
+    uvec2 _e21 = s_98.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_23);
     uint _e23 = nyq_lattice_bn_key(_e22);
-    uint _e25 = s_96.index;
+    uint _e25 = s_98.index;
     uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
     float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
     return _e27;
 }
 
-float nyq_lattice_bn_get_1d(inout NyqBlueSampler s_97) {
-    uint d_36 = s_97.dim;
-    s_97.dim = (d_36 + 1u);
-    float _e6 = nyq_lattice_bn_value(s_97, d_36);
+float nyq_lattice_bn_get_1d(inout NyqBlueSampler s_99) {
+    uint d_36 = s_99.dim;
+    s_99.dim = (d_36 + 1u);
+    float _e6 = nyq_lattice_bn_value(s_99, d_36);
     return _e6;
 }
 
-vec2 nyq_lattice_bn_get_2d(inout NyqBlueSampler s_98) {
-    uint d_37 = s_98.dim;
-    s_98.dim = (d_37 + 2u);
-    float _e6 = nyq_lattice_bn_value(s_98, d_37);
-    float _e9 = nyq_lattice_bn_value(s_98, (d_37 + 1u));
+vec2 nyq_lattice_bn_get_2d(inout NyqBlueSampler s_100) {
+    uint d_37 = s_100.dim;
+    s_100.dim = (d_37 + 2u);
+    float _e6 = nyq_lattice_bn_value(s_100, d_37);
+    float _e9 = nyq_lattice_bn_value(s_100, (d_37 + 1u));
     return vec2(_e6, _e9);
 }
 
-vec2 nyq_lattice_bn_get_pixel_2d(inout NyqBlueSampler s_99) {
-    uint _e3 = s_99.dim;
-    s_99.dim = max(_e3, 2u);
-    float _e7 = nyq_lattice_bn_value(s_99, 0u);
-    float _e9 = nyq_lattice_bn_value(s_99, 1u);
+vec2 nyq_lattice_bn_get_pixel_2d(inout NyqBlueSampler s_101) {
+    uint _e3 = s_101.dim;
+    s_101.dim = max(_e3, 2u);
+    float _e7 = nyq_lattice_bn_value(s_101, 0u);
+    float _e9 = nyq_lattice_bn_value(s_101, 1u);
     return vec2(_e7, _e9);
 }
 
-NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_100, uvec2 pixel_29, uint sample_index_24) {
+NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_102, uvec2 pixel_29, uint sample_index_24) {
     float v_11[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_8 = 0u;
-    nyq_lattice_bn_start(s_100, pixel_29, sample_index_24, 0u);
-    bool loop_init_31 = true;
+    nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u);
+    bool loop_init_32 = true;
     while(true) {
-        if (!loop_init_31) {
+        if (!loop_init_32) {
             uint _e15 = d_8;
             d_8 = (_e15 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e7 = d_8;
         if ((_e7 < 5u)) {
         } else {
@@ -3861,30 +3880,30 @@ NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_100, uvec2 p
         {
             uint _e10 = d_8;
             uint _e12 = d_8;
-            float _e13 = nyq_lattice_bn_value(s_100, _e12);
+            float _e13 = nyq_lattice_bn_value(s_102, _e12);
             v_11[_e10] = _e13;
         }
     }
-    s_100.dim = 5u;
+    s_102.dim = 5u;
     float _e19[5] = v_11;
     NyqCameraSample _e20 = nyq_blue_camera(pixel_29, _e19);
     return _e20;
 }
 
-uvec4 nyq_fill_request(uint i_18) {
+uvec4 nyq_fill_request(uint i_17) {
     uint _e3 = _group_0_binding_1_cs.implicit;
     if ((_e3 == 0u)) {
-        uvec4 _e8 = _group_0_binding_2_cs[i_18];
+        uvec4 _e8 = _group_0_binding_2_cs[i_17];
         return _e8;
     }
     uint _e11 = _group_0_binding_1_cs.first;
-    uint n_12 = (_e11 + i_18);
+    uint n_13 = (_e11 + i_17);
     uint _e15 = _group_0_binding_1_cs.spp;
-    uint pixel_30 = (n_12 / _e15);
+    uint pixel_30 = (n_13 / _e15);
     uint _e20 = _group_0_binding_1_cs.resolution.x;
     uint _e25 = _group_0_binding_1_cs.resolution.x;
     uint _e29 = _group_0_binding_1_cs.spp;
-    return uvec4((pixel_30 % _e20), (pixel_30 / _e25), (n_12 % _e29), 5u);
+    return uvec4((pixel_30 % _e20), (pixel_30 / _e25), (n_13 % _e29), 5u);
 }
 
 void nyq_fill_camera(uint out_3, NyqCameraSample c_9) {
@@ -3922,14 +3941,14 @@ void main() {
     uint k_3 = 0u;
     uint k_4 = 0u;
     uint k_5 = 0u;
-    uint i_21 = id.x;
+    uint i_20 = id.x;
     uint _e4 = _group_0_binding_1_cs.count;
-    if ((i_21 >= _e4)) {
+    if ((i_20 >= _e4)) {
         return;
     }
-    uvec4 _e6 = nyq_fill_request(i_21);
+    uvec4 _e6 = nyq_fill_request(i_20);
     uvec2 pixel_31 = _e6.xy;
-    uint out_5 = (8u * i_21);
+    uint out_5 = (8u * i_20);
     uint _e12 = _group_0_binding_1_cs.kind;
     switch(_e12) {
         case 0u: {
@@ -4088,13 +4107,13 @@ void main() {
             uint _e198 = _group_0_binding_1_cs.scramble;
             uvec2 _e203 = _group_0_binding_1_cs.seed;
             NyqSobol _e204 = nyq_sobol(_e195, (_e198 != 0u), _e203);
-            bool loop_init_32 = true;
+            bool loop_init_33 = true;
             while(true) {
-                if (!loop_init_32) {
+                if (!loop_init_33) {
                     uint _e232 = k;
                     k = (_e232 + 1u);
                 }
-                loop_init_32 = false;
+                loop_init_33 = false;
                 uint _e207 = k;
                 if ((_e207 < 4u)) {
                 } else {
@@ -4118,13 +4137,13 @@ void main() {
             uvec2 _e239 = _group_0_binding_1_cs.seed;
             NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             vec4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w);
-            bool loop_init_33 = true;
+            bool loop_init_34 = true;
             while(true) {
-                if (!loop_init_33) {
+                if (!loop_init_34) {
                     uint _e268 = k_1;
                     k_1 = (_e268 + 1u);
                 }
-                loop_init_33 = false;
+                loop_init_34 = false;
                 uint _e246 = k_1;
                 if ((_e246 < 4u)) {
                 } else {
@@ -4146,13 +4165,13 @@ void main() {
             uint _e272 = _group_0_binding_1_cs.scramble;
             uvec2 _e277 = _group_0_binding_1_cs.seed;
             NyqPmj02_ _e278 = nyq_pmj02_((_e272 != 0u), _e277);
-            bool loop_init_34 = true;
+            bool loop_init_35 = true;
             while(true) {
-                if (!loop_init_34) {
+                if (!loop_init_35) {
                     uint _e306 = k_2;
                     k_2 = (_e306 + 1u);
                 }
-                loop_init_34 = false;
+                loop_init_35 = false;
                 uint _e281 = k_2;
                 if ((_e281 < 4u)) {
                 } else {
@@ -4177,13 +4196,13 @@ void main() {
             uvec2 _e316 = _group_0_binding_1_cs.seed;
             NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
-            bool loop_init_35 = true;
+            bool loop_init_36 = true;
             while(true) {
-                if (!loop_init_35) {
+                if (!loop_init_36) {
                     uint _e351 = k_3;
                     k_3 = (_e351 + 1u);
                 }
-                loop_init_35 = false;
+                loop_init_36 = false;
                 uint _e329 = k_3;
                 if ((_e329 < 8u)) {
                 } else {
@@ -4208,13 +4227,13 @@ void main() {
             uint _e367 = _group_0_binding_1_cs.scramble;
             uvec2 _e372 = _group_0_binding_1_cs.seed;
             NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, (_e367 != 0u), _e372);
-            bool loop_init_36 = true;
+            bool loop_init_37 = true;
             while(true) {
-                if (!loop_init_36) {
+                if (!loop_init_37) {
                     uint _e390 = k_4;
                     k_4 = (_e390 + 1u);
                 }
-                loop_init_36 = false;
+                loop_init_37 = false;
                 uint _e376 = k_4;
                 if ((_e376 < 4u)) {
                 } else {
@@ -4238,13 +4257,13 @@ void main() {
             return;
         }
         default: {
-            bool loop_init_37 = true;
+            bool loop_init_38 = true;
             while(true) {
-                if (!loop_init_37) {
+                if (!loop_init_38) {
                     uint _e433 = k_5;
                     k_5 = (_e433 + 1u);
                 }
-                loop_init_37 = false;
+                loop_init_38 = false;
                 uint _e424 = k_5;
                 if ((_e424 < 8u)) {
                 } else {

@@ -215,6 +215,12 @@ ret_Constructarray32_uint_ Constructarray32_uint_(uint arg0, uint arg1, uint arg
     return ret;
 }
 
+typedef uint2 ret_Constructarray192_uint2_[192];
+ret_Constructarray192_uint2_ Constructarray192_uint2_(uint2 arg0, uint2 arg1, uint2 arg2, uint2 arg3, uint2 arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint2 arg8, uint2 arg9, uint2 arg10, uint2 arg11, uint2 arg12, uint2 arg13, uint2 arg14, uint2 arg15, uint2 arg16, uint2 arg17, uint2 arg18, uint2 arg19, uint2 arg20, uint2 arg21, uint2 arg22, uint2 arg23, uint2 arg24, uint2 arg25, uint2 arg26, uint2 arg27, uint2 arg28, uint2 arg29, uint2 arg30, uint2 arg31, uint2 arg32, uint2 arg33, uint2 arg34, uint2 arg35, uint2 arg36, uint2 arg37, uint2 arg38, uint2 arg39, uint2 arg40, uint2 arg41, uint2 arg42, uint2 arg43, uint2 arg44, uint2 arg45, uint2 arg46, uint2 arg47, uint2 arg48, uint2 arg49, uint2 arg50, uint2 arg51, uint2 arg52, uint2 arg53, uint2 arg54, uint2 arg55, uint2 arg56, uint2 arg57, uint2 arg58, uint2 arg59, uint2 arg60, uint2 arg61, uint2 arg62, uint2 arg63, uint2 arg64, uint2 arg65, uint2 arg66, uint2 arg67, uint2 arg68, uint2 arg69, uint2 arg70, uint2 arg71, uint2 arg72, uint2 arg73, uint2 arg74, uint2 arg75, uint2 arg76, uint2 arg77, uint2 arg78, uint2 arg79, uint2 arg80, uint2 arg81, uint2 arg82, uint2 arg83, uint2 arg84, uint2 arg85, uint2 arg86, uint2 arg87, uint2 arg88, uint2 arg89, uint2 arg90, uint2 arg91, uint2 arg92, uint2 arg93, uint2 arg94, uint2 arg95, uint2 arg96, uint2 arg97, uint2 arg98, uint2 arg99, uint2 arg100, uint2 arg101, uint2 arg102, uint2 arg103, uint2 arg104, uint2 arg105, uint2 arg106, uint2 arg107, uint2 arg108, uint2 arg109, uint2 arg110, uint2 arg111, uint2 arg112, uint2 arg113, uint2 arg114, uint2 arg115, uint2 arg116, uint2 arg117, uint2 arg118, uint2 arg119, uint2 arg120, uint2 arg121, uint2 arg122, uint2 arg123, uint2 arg124, uint2 arg125, uint2 arg126, uint2 arg127, uint2 arg128, uint2 arg129, uint2 arg130, uint2 arg131, uint2 arg132, uint2 arg133, uint2 arg134, uint2 arg135, uint2 arg136, uint2 arg137, uint2 arg138, uint2 arg139, uint2 arg140, uint2 arg141, uint2 arg142, uint2 arg143, uint2 arg144, uint2 arg145, uint2 arg146, uint2 arg147, uint2 arg148, uint2 arg149, uint2 arg150, uint2 arg151, uint2 arg152, uint2 arg153, uint2 arg154, uint2 arg155, uint2 arg156, uint2 arg157, uint2 arg158, uint2 arg159, uint2 arg160, uint2 arg161, uint2 arg162, uint2 arg163, uint2 arg164, uint2 arg165, uint2 arg166, uint2 arg167, uint2 arg168, uint2 arg169, uint2 arg170, uint2 arg171, uint2 arg172, uint2 arg173, uint2 arg174, uint2 arg175, uint2 arg176, uint2 arg177, uint2 arg178, uint2 arg179, uint2 arg180, uint2 arg181, uint2 arg182, uint2 arg183, uint2 arg184, uint2 arg185, uint2 arg186, uint2 arg187, uint2 arg188, uint2 arg189, uint2 arg190, uint2 arg191) {
+    uint2 ret[192] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63, arg64, arg65, arg66, arg67, arg68, arg69, arg70, arg71, arg72, arg73, arg74, arg75, arg76, arg77, arg78, arg79, arg80, arg81, arg82, arg83, arg84, arg85, arg86, arg87, arg88, arg89, arg90, arg91, arg92, arg93, arg94, arg95, arg96, arg97, arg98, arg99, arg100, arg101, arg102, arg103, arg104, arg105, arg106, arg107, arg108, arg109, arg110, arg111, arg112, arg113, arg114, arg115, arg116, arg117, arg118, arg119, arg120, arg121, arg122, arg123, arg124, arg125, arg126, arg127, arg128, arg129, arg130, arg131, arg132, arg133, arg134, arg135, arg136, arg137, arg138, arg139, arg140, arg141, arg142, arg143, arg144, arg145, arg146, arg147, arg148, arg149, arg150, arg151, arg152, arg153, arg154, arg155, arg156, arg157, arg158, arg159, arg160, arg161, arg162, arg163, arg164, arg165, arg166, arg167, arg168, arg169, arg170, arg171, arg172, arg173, arg174, arg175, arg176, arg177, arg178, arg179, arg180, arg181, arg182, arg183, arg184, arg185, arg186, arg187, arg188, arg189, arg190, arg191 };
+    return ret;
+}
+
 typedef uint ret_Constructarray16_uint_[16];
 ret_Constructarray16_uint_ Constructarray16_uint_(uint arg0, uint arg1, uint arg2, uint arg3, uint arg4, uint arg5, uint arg6, uint arg7, uint arg8, uint arg9, uint arg10, uint arg11, uint arg12, uint arg13, uint arg14, uint arg15) {
     uint ret[16] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15 };
@@ -238,9 +244,8 @@ static const uint NYQ_JITTERED = 0u;
 static const uint NYQ_CENTERED = 1u;
 static const uint2 NYQ_DIM_STEP = uint2(2135587861u, 2654435769u);
 static const uint2 NYQ_JITTER_STEP = uint2(668265295u, 3266489917u);
-static const uint2 NYQ_PMJ02_TABLE_SEED = uint2(716u, 0u);
-static const uint2 NYQ_WYRAND_INC = uint2(2025677871u, 2692095332u);
-static const uint2 NYQ_WYRAND_FOLD = uint2(2696161499u, 3875765969u);
+static const uint NYQ_PMJ02_TABLE_SEED = 0u;
+static const uint2 NYQ_LCG_WINDOWS[192] = Constructarray192_uint2_(uint2(1u, 0u), uint2(747796405u, 2891336453u), uint2(4201498105u, 1192405134u), uint2(3399858189u, 568162667u), uint2(2200120369u, 878960812u), uint2(2975532453u, 3598456993u), uint2(1226092713u, 3109587930u), uint2(371291773u, 457671207u), uint2(1124524385u, 564359576u), uint2(3421728917u, 1466123133u), uint2(762174553u, 2469272934u), uint2(651962861u, 2009562659u), uint2(1985007505u, 200982212u), uint2(2219911301u, 789858201u), uint2(1058109705u, 2218199346u), uint2(1237303901u, 2466908511u), uint2(485992129u, 4177007664u), uint2(3752762741u, 3363758325u), uint2(979416761u, 3495377726u), uint2(1020473293u, 4159242203u), uint2(2876446449u, 3521641948u), uint2(964378469u, 2211842961u), uint2(1916126569u, 3871268746u), uint2(1621779005u, 3219619223u), uint2(250335265u, 2323728328u), uint2(2303426133u, 36438893u), uint2(3532903705u, 1530290710u), uint2(1859537325u, 703454867u), uint2(3127607889u, 399572468u), uint2(97045061u, 1850623113u), uint2(2757170633u, 2913627874u), uint2(2773800477u, 3292905167u), uint2(1829559681u, 1130785888u), uint2(2493616949u, 1054968549u), uint2(1105508217u, 2348282350u), uint2(1459681165u, 3319134795u), uint2(1630245297u, 2797543180u), uint2(2004437285u, 767414913u), uint2(3973769769u, 2046302010u), uint2(3506609661u, 1923001607u), uint2(2492747489u, 1525867000u), uint2(2782419989u, 1619679069u), uint2(4106280409u, 197937862u), uint2(2235480429u, 2809475843u), uint2(3652502801u, 681558308u), uint2(1142701061u, 4271478137u), uint2(1589035657u, 510277778u), uint2(1774664157u, 3909101631u), uint2(1640735809u, 1142294672u), uint2(2808568053u, 2953136341u), uint2(1042663481u, 3127364766u), uint2(2102071117u, 2448648379u), uint2(1880661105u, 3787736124u), uint2(1452352229u, 3255463281u), uint2(4000325353u, 2366059242u), uint2(1619405245u, 4237037687u), uint2(3859570081u, 786645032u), uint2(2014710229u, 3970252621u), uint2(1570829977u, 595777398u), uint2(4105271597u, 3276569459u), uint2(1484298193u, 2053245012u), uint2(487030213u, 4117576297u), uint2(2552004425u, 1419339330u), uint2(4008897949u, 1962427823u), uint2(1u, 0u), uint2(1572862721u, 2584864960u), uint2(999880193u, 714609024u), uint2(478867713u, 1817344576u), uint2(2207640577u, 1510023936u), uint2(4089046785u, 778308544u), uint2(4025934337u, 1681601664u), uint2(4216118529u, 3058081088u), uint2(2562447361u, 524699136u), uint2(1262736129u, 3657051840u), uint2(2514800129u, 1629640576u), uint2(4221487361u, 1870577728u), uint2(4285645825u, 4291782912u), uint2(610123521u, 1288982976u), uint2(3982670337u, 3511515776u), uint2(3716199681u, 1207624512u), uint2(2008526849u, 2879163392u), uint2(1057467137u, 921859264u), uint2(3060835841u, 1690082688u), uint2(1626513665u, 4022011456u), uint2(3247283201u, 3534597888u), uint2(1531025153u, 1213503424u), uint2(2970522113u, 3413098624u), uint2(1173654785u, 381626688u), uint2(2633205761u, 620941824u), uint2(957055745u, 821738176u), uint2(2637987329u, 3043419008u), uint2(1283881217u, 1829194816u), uint2(3387520001u, 1385952512u), uint2(2556784385u, 2699353536u), uint2(989489665u, 3533833856u), uint2(883451137u, 2727571264u), uint2(141516801u, 192485376u), uint2(961501953u, 1209204928u), uint2(1246254593u, 3542165888u), uint2(3193590017u, 1734578752u), uint2(411388929u, 4288297728u), uint2(3687401217u, 3599049664u), uint2(2334540289u, 1726237824u), uint2(2845588737u, 1803007296u), uint2(3123394561u, 3741277696u), uint2(1070805761u, 4231743168u), uint2(3180604929u, 1038839680u), uint2(3060672769u, 1590679616u), uint2(2908824577u, 1504215296u), uint2(627908353u, 1765108160u), uint2(2710706689u, 137794176u), uint2(2765100289u, 4050385728u), uint2(2988904449u, 529900544u), uint2(1284967169u, 3446901952u), uint2(4146071041u, 1975891328u), uint2(885129473u, 3544981056u), uint2(2289892353u, 3771123456u), uint2(1968240385u, 3639979968u), uint2(2117988865u, 915986560u), uint2(641985793u, 3027255616u), uint2(4033013761u, 1295772160u), uint2(1603986177u, 1002164928u), uint2(4142652929u, 4205837184u), uint2(961927425u, 1155032128u), uint2(2849559553u, 351603968u), uint2(3413430017u, 2781214144u), uint2(556386817u, 1913331328u), uint2(771212545u, 881100608u), uint2(1u, 0u), uint2(1960755201u, 3891408896u), uint2(2042462209u, 333733888u), uint2(245121025u, 2211876864u), uint2(863698945u, 935903232u), uint2(3898195969u, 800780288u), uint2(758677505u, 1806508032u), uint2(35078145u, 3953086464u), uint2(1727397889u, 2945548288u), uint2(1540669441u, 3078860800u), uint2(3769860097u, 58056704u), uint2(4120002561u, 2473070592u), uint2(2591096833u, 1733967872u), uint2(3478110209u, 2135715840u), uint2(2486075393u, 3678314496u), uint2(3909959681u, 2066796544u), uint2(3454795777u, 1596129280u), uint2(1120583681u, 2266312704u), uint2(1202290689u, 4077346816u), uint2(3699916801u, 2734264320u), uint2(23527425u, 2532032512u), uint2(3058024449u, 3470651392u), uint2(4213473281u, 1255153664u), uint2(3489873921u, 180506624u), uint2(887226369u, 246710272u), uint2(700497921u, 1453764608u), uint2(2929688577u, 3801669632u), uint2(3279831041u, 2995458048u), uint2(1750925313u, 3330097152u), uint2(2637938689u, 510619648u), uint2(1645903873u, 3126960128u), uint2(3069788161u, 2589184000u), uint2(2614624257u, 3192258560u), uint2(280412161u, 641216512u), uint2(362119169u, 3525992448u), uint2(2859745281u, 3256651776u), uint2(3478323201u, 4128161792u), uint2(2217852929u, 1845555200u), uint2(3373301761u, 703799296u), uint2(2649702401u, 702894080u), uint2(47054849u, 1842839552u), uint2(4155293697u, 4123635712u), uint2(2089517057u, 3250315264u), uint2(2439659521u, 3517845504u), uint2(910753793u, 631259136u), uint2(1797767169u, 3180490752u), uint2(805732353u, 2575605760u), uint2(2229616641u, 3111571456u), uint2(1774452737u, 493420544u), uint2(3735207937u, 3311087616u), uint2(3816914945u, 2974638080u), uint2(2019573761u, 3779039232u), uint2(2638151681u, 1429323776u), uint2(1377681409u, 220459008u), uint2(2533130241u, 152444928u), uint2(1809530881u, 1225281536u), uint2(3501850625u, 3438968832u), uint2(3315122177u, 2498539520u), uint2(1249345537u, 2698960896u), uint2(1599488001u, 4040232960u), uint2(70582273u, 2227388416u), uint2(957595649u, 1555394560u), uint2(4260528129u, 2024251392u), uint2(1389445121u, 3633958912u));
 static const uint NYQ_PMJ02_XOR_X[16] = Constructarray16_uint_(0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u);
 static const uint NYQ_PMJ02_XOR_Y[16] = Constructarray16_uint_(0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u);
 static const uint NYQ_HALTON_WORDS = 24u;
@@ -630,13 +635,13 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
 
     const uint _e4 = nyq_round_up_pow2_(spp_requested);
     uint side = max(resolution.x, resolution.y);
-    uint m_4 = (32u - (31u - firstbithigh((side - 1u))));
+    uint m_5 = (32u - (31u - firstbithigh((side - 1u))));
     seed_6 = seed_in;
     if ((scramble == NYQ_SCRAMBLE_NONE)) {
         seed_6 = uint2(0u, 0u);
     }
     if ((scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-        uint mask = ((m_4 == 0u) ? 4294967295u : (4294967295u >> (m_4 & 31u)));
+        uint mask = ((m_5 == 0u) ? 4294967295u : (4294967295u >> (m_5 & 31u)));
         uint2 _e33 = seed_6;
         const uint2 _e35 = nyq_u64_(0u);
         const uint2 _e36 = nyq_hash2_(_e33, _e35);
@@ -645,7 +650,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         const uint2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = uint2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_8 = (2u * m_4);
+    uint n_8 = (2u * m_5);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -664,11 +669,11 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         {
             uint _e54 = c_1;
             const uint _e57 = nyq_sobol_u32_((1u << _e54), 0u);
-            const uint _e58 = nyq_top(_e57, m_4);
+            const uint _e58 = nyq_top(_e57, m_5);
             uint _e60 = c_1;
             const uint _e63 = nyq_sobol_u32_((1u << _e60), 1u);
-            const uint _e64 = nyq_top(_e63, m_4);
-            uint2 image_bits = uint2((_e58 | (_e64 << (m_4 & 31u))), ((m_4 == 0u) ? 0u : (_e64 >> ((32u - m_4) & 31u))));
+            const uint _e64 = nyq_top(_e63, m_5);
+            uint2 image_bits = uint2((_e58 | (_e64 << (m_5 & 31u))), ((m_5 == 0u) ? 0u : (_e64 >> ((32u - m_5) & 31u))));
             i = 0u;
             uint2 loop_bound_3 = uint2(4294967295u, 4294967295u);
             bool loop_init_2 = true;
@@ -903,7 +908,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
     uint4 v7_ = uint4(_e292, _e294, _e296, _e298);
     uint2 _e300 = seed_6;
     uint2 _e301 = shift_1;
-    const NyqSobolSampler nyqsobolsampler = ConstructNyqSobolSampler(_e4, m_4, scramble, _e300, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u);
+    const NyqSobolSampler nyqsobolsampler = ConstructNyqSobolSampler(_e4, m_5, scramble, _e300, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u);
     return nyqsobolsampler;
 }
 
@@ -988,17 +993,17 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in)
 
 uint nyq_sobol_sampler_index(inout NyqSobolSampler s_17, uint2 pixel_1, uint sample_index)
 {
-    uint m_5 = s_17.m;
+    uint m_6 = s_17.m;
     uint _e6 = s_17.spp;
     uint si = naga_mod(sample_index, _e6);
-    uint high = (((2u * m_5) >= 32u) ? 0u : (si << ((2u * m_5) & 31u)));
-    uint mask_1 = ((m_5 == 0u) ? 0u : (4294967295u >> ((32u - m_5) & 31u)));
-    uint want = ((pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_5 & 31u)));
+    uint high = (((2u * m_6) >= 32u) ? 0u : (si << ((2u * m_6) & 31u)));
+    uint mask_1 = ((m_6 == 0u) ? 0u : (4294967295u >> ((32u - m_6) & 31u)));
+    uint want = ((pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_6 & 31u)));
     const uint _e38 = nyq_sobol_u32_(high, 0u);
-    const uint _e39 = nyq_top(_e38, m_5);
+    const uint _e39 = nyq_top(_e38, m_6);
     const uint _e41 = nyq_sobol_u32_(high, 1u);
-    const uint _e42 = nyq_top(_e41, m_5);
-    uint have = (_e39 | (_e42 << (m_5 & 31u)));
+    const uint _e42 = nyq_top(_e41, m_6);
+    uint have = (_e39 | (_e42 << (m_6 & 31u)));
     const uint _e48 = nyq_sobol_sampler_invert(s_17, (want ^ have));
     return (high | _e48);
 }
@@ -1032,10 +1037,10 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_18, uint dim_4)
             local_2 = false;
         }
         bool _e37 = local_2;
-        uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
+        uint w_2 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
         const uint2 _e39 = nyq_u64_(d_10);
         const uint2 _e40 = nyq_hash2_(seed_35, _e39);
-        const uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
+        const uint _e42 = nyq_scramble_u32_(w_2, _e40.y, how_3);
         const float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
@@ -2121,12 +2126,12 @@ uint2 nyq_fixed_to_f64_bits(uint2 x_11)
     }
     uint e_2 = ((_e2.y != 0u) ? (63u - (31u - firstbithigh(_e2.y))) : (31u - (31u - firstbithigh(_e2.x))));
     frac_ = _e2;
-    uint s_101 = (52u - e_2);
-    if ((s_101 >= 32u)) {
-        frac_ = uint2(0u, (_e2.x << (s_101 - 32u)));
+    uint s_103 = (52u - e_2);
+    if ((s_103 >= 32u)) {
+        frac_ = uint2(0u, (_e2.x << (s_103 - 32u)));
     } else {
-        if ((s_101 > 0u)) {
-            const uint2 _e41 = nyq_shl64_(_e2, s_101);
+        if ((s_103 > 0u)) {
+            const uint2 _e41 = nyq_shl64_(_e2, s_103);
             frac_ = _e41;
         }
     }
@@ -2179,9 +2184,9 @@ float nyq_recip_f32_(float x_13)
     bool local_9 = (bool)0;
 
     uint bits_4 = asuint(x_13);
-    uint m_6 = ((bits_4 & 8388607u) | 8388608u);
+    uint m_7 = ((bits_4 & 8388607u) | 8388608u);
     int e_3 = asint(asuint(int((bits_4 >> 23u))) - asuint(int(127)));
-    if ((m_6 == 8388608u)) {
+    if ((m_7 == 8388608u)) {
         return asfloat((uint(asint(asuint(int(127)) - asuint(e_3))) << 23u));
     }
     uint2 loop_bound_19 = uint2(4294967295u, 4294967295u);
@@ -2203,9 +2208,9 @@ float nyq_recip_f32_(float x_13)
             uint _e28 = q_1;
             q_1 = (_e28 << 1u);
             uint _e31 = r_8;
-            if ((_e31 >= m_6)) {
+            if ((_e31 >= m_7)) {
                 uint _e33 = r_8;
-                r_8 = (_e33 - m_6);
+                r_8 = (_e33 - m_7);
                 uint _e35 = q_1;
                 q_1 = (_e35 | 1u);
             }
@@ -2595,32 +2600,58 @@ NyqCameraSample nyq_stratified_camera_sample(inout NyqStratifiedSampler s_64, ui
     return nyqcamerasample_5;
 }
 
-uint2 nyq_mul64_high(uint2 a_8, uint2 b_7)
+uint nyq_rxs_m_xs(uint state_1)
 {
-    const uint2 _e4 = nyq_mul_wide(a_8.x, b_7.x);
-    const uint2 _e7 = nyq_mul_wide(a_8.x, b_7.y);
-    const uint2 _e10 = nyq_mul_wide(a_8.y, b_7.x);
-    const uint2 _e13 = nyq_mul_wide(a_8.y, b_7.y);
-    const uint2 _e20 = nyq_add64_(uint2(_e4.y, 0u), uint2(_e7.x, 0u));
-    const uint2 _e24 = nyq_add64_(_e20, uint2(_e10.x, 0u));
-    const uint2 _e28 = nyq_add64_(_e13, uint2(_e7.y, 0u));
-    const uint2 _e35 = nyq_add64_(uint2(_e10.y, 0u), uint2(_e24.y, 0u));
-    const uint2 _e36 = nyq_add64_(_e28, _e35);
-    return _e36;
+    uint s_65 = (uint)0;
+
+    s_65 = state_1;
+    uint _e2 = s_65;
+    uint _e3 = s_65;
+    uint _e5 = s_65;
+    s_65 = (_e2 ^ (_e3 >> (4u + (_e5 >> 28u))));
+    uint _e11 = s_65;
+    s_65 = (_e11 * 277803737u);
+    uint _e14 = s_65;
+    uint _e15 = s_65;
+    return (_e14 ^ (_e15 >> 22u));
 }
 
-uint2 nyq_wyrand(uint2 seed_17, uint i_9)
+uint nyq_lcg_draw(uint seed_17, uint m_1)
 {
-    const uint2 _e5 = nyq_u64_((i_9 + 1u));
-    const uint2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
-    const uint2 _e7 = nyq_add64_(seed_17, _e6);
-    uint2 t_7 = (_e7 ^ NYQ_WYRAND_FOLD);
-    const uint2 _e10 = nyq_mul64_high(_e7, t_7);
-    const uint2 _e11 = nyq_mul64_(_e7, t_7);
-    return (_e10 ^ _e11);
+    uint s_66 = (uint)0;
+    uint w_1 = 0u;
+
+    s_66 = (2891336453u + seed_17);
+    uint n_12 = (m_1 + 1u);
+    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_17 = true;
+    while(true) {
+        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_17) {
+            uint _e30 = w_1;
+            w_1 = (_e30 + 1u);
+        }
+        loop_init_17 = false;
+        uint _e9 = w_1;
+        if ((_e9 < 3u)) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = w_1;
+            uint _e17 = w_1;
+            uint2 ac = NYQ_LCG_WINDOWS[min(uint(((_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u))), 191u)];
+            uint _e25 = s_66;
+            s_66 = ((ac.x * _e25) + ac.y);
+        }
+    }
+    uint _e32 = s_66;
+    const uint _e33 = nyq_rxs_m_xs(_e32);
+    return _e33;
 }
 
-uint nyq_pmj02_point(uint2 seed_18, uint index_12, uint dim_27)
+uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27)
 {
     uint x_17 = 0u;
     uint known = 0u;
@@ -2628,10 +2659,10 @@ uint nyq_pmj02_point(uint2 seed_18, uint index_12, uint dim_27)
     uint p_1 = (uint)0;
 
     p_1 = (index_12 & 65535u);
-    uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         uint _e12 = p_1;
         if ((_e12 != 0u)) {
         } else {
@@ -2642,28 +2673,27 @@ uint nyq_pmj02_point(uint2 seed_18, uint index_12, uint dim_27)
             uint level_1 = (31u - (31u - firstbithigh(_e16)));
             uint swap = (2147483648u >> level_1);
             uint low_2 = (swap - 1u);
-            uint _e23 = p_1;
-            const uint2 _e24 = nyq_wyrand(seed_18, _e23);
-            uint bits_6 = ((dim_27 == 0u) ? _e24.x : _e24.y);
-            uint _e30 = x_17;
-            uint _e32 = known;
-            x_17 = (_e30 | ((bits_6 & low_2) & ~(_e32)));
-            uint _e36 = known;
-            known = (_e36 | low_2);
-            uint _e38 = flips;
-            flips = (_e38 ^ swap);
+            uint _e23 = x_17;
+            uint _e25 = p_1;
+            const uint _e28 = nyq_lcg_draw(seed_18, ((2u * _e25) + dim_27));
+            uint _e30 = known;
+            x_17 = (_e23 | ((_e28 & low_2) & ~(_e30)));
+            uint _e34 = known;
+            known = (_e34 | low_2);
+            uint _e36 = flips;
+            flips = (_e36 ^ swap);
             uint c_10 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
-            uint _e51 = p_1;
-            p_1 = ((_e51 - (1u << level_1)) ^ c_10);
+            uint _e49 = p_1;
+            p_1 = ((_e49 - (1u << level_1)) ^ c_10);
         }
     }
-    const uint2 _e57 = nyq_wyrand(seed_18, 0u);
-    uint _e58 = x_17;
-    uint _e64 = known;
-    x_17 = (_e58 | (((dim_27 == 0u) ? _e57.x : _e57.y) & ~(_e64)));
-    uint _e68 = x_17;
-    uint _e69 = flips;
-    return (_e68 ^ _e69);
+    uint _e54 = x_17;
+    const uint _e55 = nyq_lcg_draw(seed_18, dim_27);
+    uint _e56 = known;
+    x_17 = (_e54 | (_e55 & ~(_e56)));
+    uint _e60 = x_17;
+    uint _e61 = flips;
+    return (_e60 ^ _e61);
 }
 
 NyqPmj02_ ConstructNyqPmj02_(uint arg0, uint2 arg1) {
@@ -2680,20 +2710,20 @@ NyqPmj02_ nyq_pmj02_(bool scrambled_1, uint2 seed_19)
     return nyqpmj02_;
 }
 
-uint nyq_pmj02_sample_u32_(NyqPmj02_ s_65, uint index_13, uint dim_28)
+uint nyq_pmj02_sample_u32_(NyqPmj02_ s_67, uint index_13, uint dim_28)
 {
     uint d_24 = (dim_28 & 1u);
     const uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_24);
-    if ((s_65.scrambled == 0u)) {
+    if ((s_67.scrambled == 0u)) {
         return _e6;
     }
-    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_65.keys[min(uint(d_24), 1u)]);
+    const uint _e13 = nyq_lk_hash(reversebits(_e6), s_67.keys[min(uint(d_24), 1u)]);
     return reversebits(_e13);
 }
 
-float nyq_pmj02_sample(NyqPmj02_ s_66, uint index_14, uint dim_29)
+float nyq_pmj02_sample(NyqPmj02_ s_68, uint index_14, uint dim_29)
 {
-    const uint _e3 = nyq_pmj02_sample_u32_(s_66, index_14, dim_29);
+    const uint _e3 = nyq_pmj02_sample_u32_(s_68, index_14, dim_29);
     const float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2713,24 +2743,24 @@ NyqPmj02Sampler nyq_pmj02_sampler(uint2 seed_20)
     return nyqpmj02sampler;
 }
 
-uint nyq_reverse16_(uint m_1)
+uint nyq_reverse16_(uint m_2)
 {
-    return (reversebits((m_1 & 65535u)) >> 16u);
+    return (reversebits((m_2 & 65535u)) >> 16u);
 }
 
-uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_67, uint2 request)
+uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_69, uint2 request)
 {
-    uint2 _e3 = s_67.pixel_key;
+    uint2 _e3 = s_69.pixel_key;
     const uint2 _e7 = nyq_mul64_(request, uint2(2135587861u, 2654435769u));
     const uint2 _e9 = nyq_mix64_((_e3 ^ _e7));
     const uint2 _e14 = nyq_mix64_((_e9 ^ uint2(1781543545u, 28781u)));
     return uint3(_e9.x, _e9.y, _e14.x);
 }
 
-float2 nyq_pmj02_keyed_point(uint3 k_10, uint i_10)
+float2 nyq_pmj02_keyed_point(uint3 k_10, uint i_9)
 {
-    const uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 0u);
-    const uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 1u);
+    const uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 0u);
+    const uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 1u);
     const uint _e10 = nyq_lk_hash(reversebits(_e4), k_10.y);
     const float _e11 = nyq_rev_to_f32_(_e10);
     const uint _e14 = nyq_lk_hash(reversebits(_e7), k_10.z);
@@ -2738,75 +2768,75 @@ float2 nyq_pmj02_keyed_point(uint3 k_10, uint i_10)
     return float2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_68, uint3 k_11)
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_70, uint3 k_11)
 {
-    uint _e3 = s_68.index_rev;
+    uint _e3 = s_70.index_rev;
     const uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return (_e5 >> 16u);
 }
 
-void nyq_pmj02_start(inout NyqPmj02Sampler s_69, uint2 pixel_16, uint sample_index_14, uint dim_30)
+void nyq_pmj02_start(inout NyqPmj02Sampler s_71, uint2 pixel_16, uint sample_index_14, uint dim_30)
 {
-    uint2 _e6 = s_69.seed;
+    uint2 _e6 = s_71.seed;
     const uint2 _e10 = nyq_hash3_(pixel_16, _e6, uint2(1835675698u, 112u));
-    s_69.pixel_key = _e10;
+    s_71.pixel_key = _e10;
     const uint _e12 = nyq_reverse16_(sample_index_14);
-    s_69.index_rev = (_e12 << 16u);
-    s_69.dim = dim_30;
+    s_71.index_rev = (_e12 << 16u);
+    s_71.dim = dim_30;
     return;
 }
 
-float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_70)
+float nyq_pmj02_get_1d(inout NyqPmj02Sampler s_72)
 {
-    uint d_25 = s_70.dim;
-    s_70.dim = (d_25 + 1u);
+    uint d_25 = s_72.dim;
+    s_72.dim = (d_25 + 1u);
     const uint2 _e6 = nyq_u64_(d_25);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
     const uint2 _e12 = nyq_add64_(_e8, uint2(1u, 0u));
-    const uint3 _e13 = nyq_pmj02_keys(s_70, _e12);
-    const uint _e14 = nyq_pmj02_row(s_70, _e13);
+    const uint3 _e13 = nyq_pmj02_keys(s_72, _e12);
+    const uint _e14 = nyq_pmj02_row(s_72, _e13);
     const uint _e15 = nyq_reverse16_(_e14);
     const uint _e17 = nyq_lk_hash(_e15, _e13.y);
     const float _e18 = nyq_rev_to_f32_(_e17);
     return _e18;
 }
 
-float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_71)
+float2 nyq_pmj02_get_2d(inout NyqPmj02Sampler s_73)
 {
-    uint d_26 = s_71.dim;
-    s_71.dim = (d_26 + 2u);
+    uint d_26 = s_73.dim;
+    s_73.dim = (d_26 + 2u);
     const uint2 _e6 = nyq_u64_(d_26);
     const uint2 _e8 = nyq_shl64_(_e6, 1u);
-    const uint3 _e9 = nyq_pmj02_keys(s_71, _e8);
+    const uint3 _e9 = nyq_pmj02_keys(s_73, _e8);
     if ((d_26 == 0u)) {
-        uint _e13 = s_71.index_rev;
+        uint _e13 = s_73.index_rev;
         const uint _e16 = nyq_reverse16_((_e13 >> 16u));
         const float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    const uint _e18 = nyq_pmj02_row(s_71, _e9);
+    const uint _e18 = nyq_pmj02_row(s_73, _e9);
     const uint _e19 = nyq_reverse16_(_e18);
     const float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
-float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_72)
+float2 nyq_pmj02_get_pixel_2d(inout NyqPmj02Sampler s_74)
 {
-    uint _e3 = s_72.dim;
-    s_72.dim = max(_e3, 2u);
-    const uint3 _e9 = nyq_pmj02_keys(s_72, uint2(0u, 0u));
-    uint _e11 = s_72.index_rev;
+    uint _e3 = s_74.dim;
+    s_74.dim = max(_e3, 2u);
+    const uint3 _e9 = nyq_pmj02_keys(s_74, uint2(0u, 0u));
+    uint _e11 = s_74.index_rev;
     const uint _e14 = nyq_reverse16_((_e11 >> 16u));
     const float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
-NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_73, uint2 pixel_17, uint sample_index_15)
+NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_75, uint2 pixel_17, uint sample_index_15)
 {
-    nyq_pmj02_start(s_73, pixel_17, sample_index_15, 0u);
-    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_73);
-    const float _e5 = nyq_pmj02_get_1d(s_73);
-    const float2 _e6 = nyq_pmj02_get_2d(s_73);
+    nyq_pmj02_start(s_75, pixel_17, sample_index_15, 0u);
+    const float2 _e4 = nyq_pmj02_get_pixel_2d(s_75);
+    const float _e5 = nyq_pmj02_get_1d(s_75);
+    const float2 _e6 = nyq_pmj02_get_2d(s_75);
     const float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
     const float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
     float2 film_5 = float2(_e9, _e12);
@@ -2814,9 +2844,9 @@ NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_73, uint2 pixel_
     return nyqcamerasample_6;
 }
 
-uint2 nyq_sub64_(uint2 a_9, uint2 b_8)
+uint2 nyq_sub64_(uint2 a_8, uint2 b_7)
 {
-    return uint2((a_9.x - b_8.x), ((a_9.y - b_8.y) - ((a_9.x < b_8.x) ? 1u : 0u)));
+    return uint2((a_8.x - b_7.x), ((a_8.y - b_7.y) - ((a_8.x < b_7.x) ? 1u : 0u)));
 }
 
 uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
@@ -2836,40 +2866,40 @@ uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
     return uint3(((q1_ << 16u) | q0_), ((q3_ << 16u) | q2_), (t0_1 - (q0_ * d_3)));
 }
 
-uint4 nyq_add128_(uint4 a_10, uint4 b_9)
+uint4 nyq_add128_(uint4 a_9, uint4 b_8)
 {
-    uint4 s_102 = (a_10 + b_9);
-    uint4 c_11 = ((s_102 < a_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_2 = (s_102.y + c_11.x);
+    uint4 s_104 = (a_9 + b_8);
+    uint4 c_11 = ((s_104 < a_9) ? (1u).xxxx : (0u).xxxx);
+    uint t1_2 = (s_104.y + c_11.x);
     uint k1_ = (c_11.y + ((t1_2 < c_11.x) ? 1u : 0u));
-    uint t2_1 = (s_102.z + k1_);
+    uint t2_1 = (s_104.z + k1_);
     uint k2_ = (c_11.z + ((t2_1 < k1_) ? 1u : 0u));
-    return uint4(s_102.x, t1_2, t2_1, (s_102.w + k2_));
+    return uint4(s_104.x, t1_2, t2_1, (s_104.w + k2_));
 }
 
-uint4 nyq_sub128_(uint4 a_11, uint4 b_10)
+uint4 nyq_sub128_(uint4 a_10, uint4 b_9)
 {
-    uint4 s_103 = (a_11 - b_10);
-    uint4 o = ((a_11 < b_10) ? (1u).xxxx : (0u).xxxx);
-    uint t1_3 = (s_103.y - o.x);
-    uint k1_1 = (o.y + ((s_103.y < o.x) ? 1u : 0u));
-    uint t2_2 = (s_103.z - k1_1);
-    uint k2_1 = (o.z + ((s_103.z < k1_1) ? 1u : 0u));
-    return uint4(s_103.x, t1_3, t2_2, (s_103.w - k2_1));
+    uint4 s_105 = (a_10 - b_9);
+    uint4 o = ((a_10 < b_9) ? (1u).xxxx : (0u).xxxx);
+    uint t1_3 = (s_105.y - o.x);
+    uint k1_1 = (o.y + ((s_105.y < o.x) ? 1u : 0u));
+    uint t2_2 = (s_105.z - k1_1);
+    uint k2_1 = (o.z + ((s_105.z < k1_1) ? 1u : 0u));
+    return uint4(s_105.x, t1_3, t2_2, (s_105.w - k2_1));
 }
 
-bool nyq_lt128_(uint4 a_12, uint4 b_11)
+bool nyq_lt128_(uint4 a_11, uint4 b_10)
 {
-    if ((a_12.w != b_11.w)) {
-        return (a_12.w < b_11.w);
+    if ((a_11.w != b_10.w)) {
+        return (a_11.w < b_10.w);
     }
-    if ((a_12.z != b_11.z)) {
-        return (a_12.z < b_11.z);
+    if ((a_11.z != b_10.z)) {
+        return (a_11.z < b_10.z);
     }
-    if ((a_12.y != b_11.y)) {
-        return (a_12.y < b_11.y);
+    if ((a_11.y != b_10.y)) {
+        return (a_11.y < b_10.y);
     }
-    return (a_12.x < b_11.x);
+    return (a_11.x < b_10.x);
 }
 
 uint4 nyq_mul128_u32_(uint4 x_19, uint k_12)
@@ -2882,12 +2912,12 @@ uint4 nyq_mul128_u32_(uint4 x_19, uint k_12)
     return uint4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_12) + _e15.y));
 }
 
-uint4 nyq_mul64_wide(uint2 a_13, uint2 b_12)
+uint4 nyq_mul64_wide(uint2 a_12, uint2 b_11)
 {
-    const uint2 _e4 = nyq_mul_wide(a_13.x, b_12.x);
-    const uint2 _e7 = nyq_mul_wide(a_13.x, b_12.y);
-    const uint2 _e10 = nyq_mul_wide(a_13.y, b_12.x);
-    const uint2 _e13 = nyq_mul_wide(a_13.y, b_12.y);
+    const uint2 _e4 = nyq_mul_wide(a_12.x, b_11.x);
+    const uint2 _e7 = nyq_mul_wide(a_12.x, b_11.y);
+    const uint2 _e10 = nyq_mul_wide(a_12.y, b_11.x);
+    const uint2 _e13 = nyq_mul_wide(a_12.y, b_11.y);
     uint4 outer = uint4(_e4.x, _e4.y, _e13.x, _e13.y);
     const uint4 _e24 = nyq_add128_(outer, uint4(0u, _e7.x, _e7.y, 0u));
     const uint4 _e30 = nyq_add128_(_e24, uint4(0u, _e10.x, _e10.y, 0u));
@@ -2908,17 +2938,17 @@ uint nyq_clz128_(uint4 x_20)
     return (96u + (31u - firstbithigh(x_20.x)));
 }
 
-uint4 nyq_shl128_(uint4 x_21, uint s_74)
+uint4 nyq_shl128_(uint4 x_21, uint s_76)
 {
     uint4 v_5 = (uint4)0;
     uint k_13 = (uint)0;
 
     v_5 = x_21;
-    k_13 = s_74;
-    uint2 loop_bound_23 = uint2(4294967295u, 4294967295u);
+    k_13 = s_76;
+    uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_23 == uint2(0u, 0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         uint _e4 = k_13;
         if ((_e4 >= 32u)) {
         } else {
@@ -2958,7 +2988,7 @@ uint nyq_round_bits(uint4 x_in_3, int e_in_1, bool sticky, bool twice)
 {
     bool local_12 = (bool)0;
     bool local_13 = (bool)0;
-    uint m_2 = (uint)0;
+    uint m_3 = (uint)0;
     uint ml = (uint)0;
     uint mh = (uint)0;
     bool local_14 = (bool)0;
@@ -3021,12 +3051,12 @@ uint nyq_round_bits(uint4 x_in_3, int e_in_1, bool sticky, bool twice)
         }
         uint _e79 = mh;
         uint _e82 = ml;
-        m_2 = ((_e79 << 3u) | (_e82 >> 29u));
+        m_3 = ((_e79 << 3u) | (_e82 >> 29u));
         uint _e86 = ml;
         uint r2_ = (_e86 & 536870911u);
         if (!((r2_ > 268435456u))) {
             if ((r2_ == 268435456u)) {
-                uint _e98 = m_2;
+                uint _e98 = m_3;
                 local_18 = ((_e98 & 1u) == 1u);
             } else {
                 local_18 = false;
@@ -3038,11 +3068,11 @@ uint nyq_round_bits(uint4 x_in_3, int e_in_1, bool sticky, bool twice)
         }
         bool _e106 = local_17;
         if (_e106) {
-            uint _e107 = m_2;
-            m_2 = (_e107 + 1u);
+            uint _e107 = m_3;
+            m_3 = (_e107 + 1u);
         }
     } else {
-        m_2 = (_e10.w >> 8u);
+        m_3 = (_e10.w >> 8u);
         uint r_16 = (_e10.w & 255u);
         if (!((r_16 > 128u))) {
             if ((r_16 == 128u)) {
@@ -3053,7 +3083,7 @@ uint nyq_round_bits(uint4 x_in_3, int e_in_1, bool sticky, bool twice)
                 }
                 bool _e132 = local_21;
                 if (!(_e132)) {
-                    uint _e136 = m_2;
+                    uint _e136 = m_3;
                     local_22 = ((_e136 & 1u) == 1u);
                 } else {
                     local_22 = true;
@@ -3070,11 +3100,11 @@ uint nyq_round_bits(uint4 x_in_3, int e_in_1, bool sticky, bool twice)
         }
         bool _e146 = local_19;
         if (_e146) {
-            uint _e147 = m_2;
-            m_2 = (_e147 + 1u);
+            uint _e147 = m_3;
+            m_3 = (_e147 + 1u);
         }
     }
-    uint _e155 = m_2;
+    uint _e155 = m_3;
     return (((uint(asint(asuint(e_4) + asuint(int(254)))) << 23u) + _e155) - 8388608u);
 }
 
@@ -3095,12 +3125,12 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     bool local_23 = (bool)0;
     bool local_24 = (bool)0;
     uint2 r_11 = (uint2)0;
-    uint i_11 = 0u;
+    uint i_10 = 0u;
     bool local_25 = (bool)0;
     bool local_26 = (bool)0;
     bool local_27 = (bool)0;
     uint4 r_12 = (uint4)0;
-    uint i_12 = 0u;
+    uint i_11 = 0u;
 
     uint tw = (twice_1 ? 1u : 0u);
     if (all((num_1 == (0u).xxxx))) {
@@ -3109,7 +3139,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     const uint _e16 = nyq_clz128_(num_1);
     const uint _e17 = nyq_clz128_(den_1);
-    uint s_104 = (_e16 - _e17);
+    uint s_106 = (_e16 - _e17);
     uint steps = (twice_1 ? 55u : 26u);
     if ((den_1.z == 0u)) {
         local_23 = (den_1.w == 0u);
@@ -3125,19 +3155,19 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     bool _e44 = local_24;
     if (_e44) {
         uint2 d_27 = den_1.xy;
-        const uint4 _e46 = nyq_shl128_(num_1, s_104);
+        const uint4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
-        uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
-        bool loop_init_17 = true;
+        uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
+        bool loop_init_18 = true;
         while(true) {
-            if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
-            loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-            if (!loop_init_17) {
-                uint _e109 = i_11;
-                i_11 = (_e109 + 1u);
+            if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
+            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+            if (!loop_init_18) {
+                uint _e109 = i_10;
+                i_10 = (_e109 + 1u);
             }
-            loop_init_17 = false;
-            uint _e51 = i_11;
+            loop_init_18 = false;
+            uint _e51 = i_10;
             if ((_e51 < steps)) {
             } else {
                 break;
@@ -3185,19 +3215,19 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
         bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        const uint4 _e124 = nyq_shl128_(num_1, s_104);
+        const uint4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
-        uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-        bool loop_init_18 = true;
+        uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
+        bool loop_init_19 = true;
         while(true) {
-            if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
-            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_18) {
-                uint _e186 = i_12;
-                i_12 = (_e186 + 1u);
+            if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
+            loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+            if (!loop_init_19) {
+                uint _e186 = i_11;
+                i_11 = (_e186 + 1u);
             }
-            loop_init_18 = false;
-            uint _e128 = i_12;
+            loop_init_19 = false;
+            uint _e128 = i_11;
             if ((_e128 < steps)) {
             } else {
                 break;
@@ -3231,7 +3261,7 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
     }
     uint2 _e193 = q_2;
     bool _e203 = sticky_1;
-    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_104)))), (_e203 ? 1u : 0u), tw, 0u);
+    const NyqRounding nyqrounding_1 = ConstructNyqRounding(uint4(_e193, 0u, 0u), asint(asuint(int(1)) - asuint(int((steps + s_106)))), (_e203 ? 1u : 0u), tw, 0u);
     return nyqrounding_1;
 }
 
@@ -3241,41 +3271,41 @@ uint nyq_prime(uint dim_31)
     return _e7;
 }
 
-NyqRounding nyq_phi_short(uint t_3, uint a_14)
+NyqRounding nyq_phi_short(uint t_3, uint a_13)
 {
     uint x_22 = (uint)0;
     uint2 rev = uint2(0u, 0u);
-    uint i_13 = 0u;
+    uint i_12 = 0u;
 
-    uint b_18 = asuint(nyq_halton_bases.Load(t_3*4));
-    uint c_12 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
+    uint b_17 = asuint(nyq_halton_bases.Load(t_3*4));
+    uint c_12 = (naga_div((35u - (31u - firstbithigh(a_13))), 4u) - 1u);
     uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_12, 4u))*4));
     uint places = ((_e19 >> (8u * naga_mod(c_12, 4u))) & 255u);
     uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_12))*4));
     uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_12))*4));
-    x_22 = a_14;
-    uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-    bool loop_init_19 = true;
+    x_22 = a_13;
+    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_19) {
-            uint _e64 = i_13;
-            i_13 = (_e64 + 1u);
+        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e64 = i_12;
+            i_12 = (_e64 + 1u);
         }
-        loop_init_19 = false;
-        uint _e50 = i_13;
+        loop_init_20 = false;
+        uint _e50 = i_12;
         if ((_e50 < places)) {
         } else {
             break;
         }
         {
             uint _e52 = x_22;
-            uint q_5 = naga_div(_e52, b_18);
+            uint q_5 = naga_div(_e52, b_17);
             uint2 _e54 = rev;
-            const uint3 _e55 = nyq_mul64x32_(_e54, b_18);
+            const uint3 _e55 = nyq_mul64x32_(_e54, b_17);
             uint _e57 = x_22;
-            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_18)), 0u));
+            const uint2 _e62 = nyq_add64_(_e55.xy, uint2((_e57 - (q_5 * b_17)), 0u));
             rev = _e62;
             x_22 = q_5;
         }
@@ -3297,7 +3327,7 @@ NyqFraction ConstructNyqFraction(uint4 arg0, uint4 arg1, uint arg2, uint arg3) {
     return ret;
 }
 
-NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
+NyqFraction nyq_phi_fraction(uint t_4, uint2 a_14)
 {
     uint2 x_23 = (uint2)0;
     uint4 num_2 = (0u).xxxx;
@@ -3305,16 +3335,16 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
     bool local_28 = (bool)0;
     uint c_3 = (uint)0;
     uint rev_1 = (uint)0;
-    uint i_14 = (uint)0;
+    uint i_13 = (uint)0;
 
-    uint b_19 = asuint(nyq_halton_bases.Load(t_4*4));
+    uint b_18 = asuint(nyq_halton_bases.Load(t_4*4));
     uint chunk = asuint(nyq_halton_bases.Load((t_4 + 4u)*4));
     uint run = asuint(nyq_halton_bases.Load((t_4 + 5u)*4));
-    x_23 = a_15;
-    uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
+    x_23 = a_14;
+    uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
         uint _e26 = x_23.x;
         if (!((_e26 != 0u))) {
             uint _e33 = x_23.y;
@@ -3333,28 +3363,28 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
             x_23 = _e39.xy;
             c_3 = _e39.z;
             rev_1 = 0u;
-            i_14 = 0u;
-            uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
-            bool loop_init_20 = true;
+            i_13 = 0u;
+            uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+            bool loop_init_21 = true;
             while(true) {
-                if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_20) {
-                    uint _e58 = i_14;
-                    i_14 = (_e58 + 1u);
+                if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_21) {
+                    uint _e58 = i_13;
+                    i_13 = (_e58 + 1u);
                 }
-                loop_init_20 = false;
-                uint _e47 = i_14;
+                loop_init_21 = false;
+                uint _e47 = i_13;
                 if ((_e47 < run)) {
                 } else {
                     break;
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = naga_div(_e49, b_19);
+                    uint q_6 = naga_div(_e49, b_18);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = ((_e51 * b_19) + (_e53 - (q_6 * b_19)));
+                    rev_1 = ((_e51 * b_18) + (_e53 - (q_6 * b_18)));
                     c_3 = q_6;
                 }
             }
@@ -3374,7 +3404,7 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
     return nyqfraction;
 }
 
-NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
+NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_15, uint2 seed_21)
 {
     uint2 x_24 = (uint2)0;
     uint4 num_3 = (0u).xxxx;
@@ -3384,22 +3414,22 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     uint c_4 = (uint)0;
     uint part = (uint)0;
     uint scale = (uint)0;
-    uint i_15 = (uint)0;
+    uint i_14 = (uint)0;
     bool local_31 = (bool)0;
     bool local_32 = (bool)0;
     bool local_33 = (bool)0;
 
-    uint b_20 = asuint(nyq_halton_bases.Load(t_5*4));
+    uint b_19 = asuint(nyq_halton_bases.Load(t_5*4));
     uint chunk_1 = asuint(nyq_halton_bases.Load((t_5 + 4u)*4));
     uint run_1 = asuint(nyq_halton_bases.Load((t_5 + 5u)*4));
-    const uint2 _e16 = nyq_u64_(b_20);
+    const uint2 _e16 = nyq_u64_(b_19);
     const uint2 _e17 = nyq_hash2_(seed_21, _e16);
-    const NyqPermutation _e21 = nyq_permutation(b_20, (_e17.x ^ _e17.y));
-    x_24 = a_16;
-    uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
+    const NyqPermutation _e21 = nyq_permutation(b_19, (_e17.x ^ _e17.y));
+    x_24 = a_15;
+    uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
-        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
         uint _e33 = x_24.x;
         if (!((_e33 != 0u))) {
             uint _e40 = x_24.y;
@@ -3427,18 +3457,18 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
             c_4 = _e46.z;
             part = 0u;
             scale = 1u;
-            i_15 = 0u;
-            uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
-            bool loop_init_21 = true;
+            i_14 = 0u;
+            uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+            bool loop_init_22 = true;
             while(true) {
-                if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
-                loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-                if (!loop_init_21) {
-                    uint _e89 = i_15;
-                    i_15 = (_e89 + 1u);
+                if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
+                loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+                if (!loop_init_22) {
+                    uint _e89 = i_14;
+                    i_14 = (_e89 + 1u);
                 }
-                loop_init_21 = false;
-                uint _e68 = i_15;
+                loop_init_22 = false;
+                uint _e68 = i_14;
                 if ((_e68 < run_1)) {
                 } else {
                     break;
@@ -3455,13 +3485,13 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = naga_div(_e77, b_20);
+                    uint q_7 = naga_div(_e77, b_19);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_20)));
-                    part = ((_e79 * b_20) + _e84);
+                    const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_19)));
+                    part = ((_e79 * b_19) + _e84);
                     uint _e86 = scale;
-                    scale = (_e86 * b_20);
+                    scale = (_e86 * b_19);
                     c_4 = q_7;
                 }
             }
@@ -3479,11 +3509,11 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     }
     const uint _e104 = nyq_permutation_apply(_e21, 0u);
     uint4 _e105 = num_3;
-    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_20 - 1u));
+    const uint4 _e108 = nyq_mul128_u32_(_e105, (b_19 - 1u));
     const uint4 _e113 = nyq_add128_(_e108, uint4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     uint4 _e114 = den_3;
-    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_20 - 1u));
+    const uint4 _e117 = nyq_mul128_u32_(_e114, (b_19 - 1u));
     den_3 = _e117;
     uint _e119 = den_3.w;
     if ((_e119 == 0u)) {
@@ -3502,7 +3532,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
     bool small = local_33;
     uint4 _e138 = num_3;
     uint4 _e139 = den_3;
-    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_20 - 1u)) ? 1u : 0u));
+    const NyqFraction nyqfraction_1 = ConstructNyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_19 - 1u)) ? 1u : 0u));
     return nyqfraction_1;
 }
 
@@ -3510,7 +3540,7 @@ uint ZeroValueuint() {
     return (uint)0;
 }
 
-NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine)
+NyqFraction nyq_nested_fraction(uint d_4, uint2 a_16, uint2 seed_22, bool affine)
 {
     uint2 rest = (uint2)0;
     uint2 pow_ = uint2(1u, 0u);
@@ -3522,14 +3552,14 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
     bool local_34 = (bool)0;
     uint out_2 = (uint)0;
 
-    uint b_21 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
+    uint b_20 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
     const uint2 _e9 = nyq_u64_(d_4);
     const uint2 _e13 = nyq_hash3_(seed_22, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
-    rest = a_17;
-    uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
+    rest = a_16;
+    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         uint _e30 = den_4.y;
         if ((_e30 == 0u)) {
         } else {
@@ -3548,14 +3578,14 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
             bool _e51 = local_34;
             if (_e51) {
                 uint2 _e52 = rest;
-                const uint3 _e53 = nyq_divmod64_small(_e52, b_21);
+                const uint3 _e53 = nyq_divmod64_small(_e52, b_20);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
             uint2 _e56 = rest;
             uint2 _e57 = pow_;
             const uint2 _e58 = nyq_mul64_(_e56, _e57);
-            const uint2 _e59 = nyq_sub64_(a_17, _e58);
+            const uint2 _e59 = nyq_sub64_(a_16, _e58);
             const uint2 _e61 = nyq_mul64_(_e59, NYQ_OWEN_PREFIX_MUL);
             uint _e63 = level;
             const uint2 _e64 = nyq_u64_(_e63);
@@ -3565,38 +3595,38 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
             uint2 _e69 = next;
             rest = _e69;
             uint2 _e70 = pow_;
-            const uint2 _e71 = nyq_u64_(b_21);
+            const uint2 _e71 = nyq_u64_(b_20);
             const uint2 _e72 = nyq_mul64_(_e70, _e71);
             pow_ = _e72;
             uint _e73 = level;
             level = (_e73 + 1u);
             out_2 = ZeroValueuint();
             if (affine) {
-                const uint3 _e78 = nyq_mul64x32_(_e68, b_21);
-                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_21 - 1u));
-                uint m_7 = (1u + _e83.z);
+                const uint3 _e78 = nyq_mul64x32_(_e68, b_20);
+                const uint3 _e83 = nyq_mul64x32_(_e78.xy, (b_20 - 1u));
+                uint m_8 = (1u + _e83.z);
                 uint _e86 = digit_1;
-                out_2 = naga_mod(((m_7 * _e86) + _e78.z), b_21);
+                out_2 = naga_mod(((m_8 * _e86) + _e78.z), b_20);
             } else {
-                if ((b_21 <= 16u)) {
-                    const uint2 _e93 = nyq_packed_table(b_21, _e68);
+                if ((b_20 <= 16u)) {
+                    const uint2 _e93 = nyq_packed_table(b_20, _e68);
                     uint _e95 = digit_1;
                     const uint _e97 = nyq_nibble(_e93, (4u * _e95));
                     out_2 = _e97;
                 } else {
-                    const NyqPermutation _e101 = nyq_permutation(b_21, (_e68.x ^ _e68.y));
+                    const NyqPermutation _e101 = nyq_permutation(b_20, (_e68.x ^ _e68.y));
                     uint _e102 = digit_1;
                     const uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             uint2 _e104 = num_4;
-            const uint3 _e105 = nyq_mul64x32_(_e104, b_21);
+            const uint3 _e105 = nyq_mul64x32_(_e104, b_20);
             uint _e107 = out_2;
             const uint2 _e110 = nyq_add64_(_e105.xy, uint2(_e107, 0u));
             num_4 = _e110;
             uint2 _e111 = den_4;
-            const uint3 _e112 = nyq_mul64x32_(_e111, b_21);
+            const uint3 _e112 = nyq_mul64x32_(_e111, b_20);
             den_4 = _e112.xy;
         }
     }
@@ -3606,7 +3636,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine
     return nyqfraction_2;
 }
 
-float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint how_2)
+float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_17, uint2 seed_23, uint how_2)
 {
     NyqRounding r_13 = (NyqRounding)0;
     bool local_35 = (bool)0;
@@ -3616,7 +3646,7 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint
     uint bits_2 = (uint)0;
 
     uint d_28 = naga_mod(dim_32, NYQ_PRIME_COUNT);
-    uint t_8 = (NYQ_HALTON_WORDS * d_28);
+    uint t_7 = (NYQ_HALTON_WORDS * d_28);
     if ((how_2 == NYQ_SCRAMBLE_NONE)) {
         local_35 = (d_28 == 0u);
     } else {
@@ -3624,36 +3654,36 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint
     }
     bool _e16 = local_35;
     if (_e16) {
-        r_13 = ConstructNyqRounding(uint4(reversebits(a_18.y), reversebits(a_18.x), 0u, 0u), int(-64), 0u, 0u, 0u);
+        r_13 = ConstructNyqRounding(uint4(reversebits(a_17.y), reversebits(a_17.x), 0u, 0u), int(-64), 0u, 0u, 0u);
     } else {
         if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-            local_36 = (a_18.y == 0u);
+            local_36 = (a_17.y == 0u);
         } else {
             local_36 = false;
         }
         bool _e37 = local_36;
         if (_e37) {
-            uint _e45 = asuint(nyq_halton_bases.Load((t_8 + 1u)*4));
-            local_37 = (a_18.x < _e45);
+            uint _e45 = asuint(nyq_halton_bases.Load((t_7 + 1u)*4));
+            local_37 = (a_17.x < _e45);
         } else {
             local_37 = false;
         }
         bool _e48 = local_37;
         if (_e48) {
-            if ((a_18.x != 0u)) {
-                const NyqRounding _e53 = nyq_phi_short(t_8, a_18.x);
+            if ((a_17.x != 0u)) {
+                const NyqRounding _e53 = nyq_phi_short(t_7, a_17.x);
                 r_13 = _e53;
             }
         } else {
             if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-                const NyqFraction _e57 = nyq_phi_fraction(t_8, a_18);
+                const NyqFraction _e57 = nyq_phi_fraction(t_7, a_17);
                 f = _e57;
             } else {
                 if ((how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-                    const NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23);
+                    const NyqFraction _e60 = nyq_permuted_fraction(t_7, a_17, seed_23);
                     f = _e60;
                 } else {
-                    const NyqFraction _e63 = nyq_nested_fraction(d_28, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    const NyqFraction _e63 = nyq_nested_fraction(d_28, a_17, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
                     f = _e63;
                 }
             }
@@ -3686,27 +3716,27 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint
     return asfloat(min(_e104, NYQ_BELOW_ONE_BITS));
 }
 
-float nyq_radical_inverse(uint dim_33, uint2 a_19)
+float nyq_radical_inverse(uint dim_33, uint2 a_18)
 {
-    const float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, uint2(0u, 0u), NYQ_SCRAMBLE_NONE);
+    const float _e6 = nyq_radical_inverse_scrambled(dim_33, a_18, uint2(0u, 0u), NYQ_SCRAMBLE_NONE);
     return _e6;
 }
 
-float nyq_scrambled_radical_inverse(uint dim_34, uint2 a_20, uint2 seed_24)
+float nyq_scrambled_radical_inverse(uint dim_34, uint2 a_19, uint2 seed_24)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_34, a_19, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
     return _e4;
 }
 
-float nyq_owen_scrambled_radical_inverse(uint dim_35, uint2 a_21, uint2 seed_25)
+float nyq_owen_scrambled_radical_inverse(uint dim_35, uint2 a_20, uint2 seed_25)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_35, a_20, seed_25, NYQ_SCRAMBLE_OWEN);
     return _e4;
 }
 
-float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uint2 a_22, uint2 seed_26)
+float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uint2 a_21, uint2 seed_26)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_36, a_21, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
     return _e4;
 }
 
@@ -3739,20 +3769,20 @@ int naga_mod(int lhs, int rhs) {
     return lhs - (lhs / divisor) * divisor;
 }
 
-uint nyq_mod_inverse(uint a_23, uint n_6)
+uint nyq_mod_inverse(uint a_22, uint n_6)
 {
     int r0_ = (int)0;
     int r1_ = (int)0;
     int t0_ = int(0);
     int t1_ = int(1);
-    int m_3 = (int)0;
+    int m_4 = (int)0;
 
     r0_ = int(n_6);
-    r1_ = int(naga_mod(a_23, n_6));
-    uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
+    r1_ = int(naga_mod(a_22, n_6));
+    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
-        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
+        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
         int _e11 = r1_;
         if ((_e11 != int(0))) {
         } else {
@@ -3777,26 +3807,26 @@ uint nyq_mod_inverse(uint a_23, uint n_6)
         }
     }
     int _e27 = t0_;
-    m_3 = naga_mod(_e27, int(n_6));
-    int _e31 = m_3;
+    m_4 = naga_mod(_e27, int(n_6));
+    int _e31 = m_4;
     if ((_e31 < int(0))) {
-        int _e34 = m_3;
-        m_3 = asint(asuint(_e34) + asuint(int(n_6)));
+        int _e34 = m_4;
+        m_4 = asint(asuint(_e34) + asuint(int(n_6)));
     }
-    int _e37 = m_3;
+    int _e37 = m_4;
     return uint(_e37);
 }
 
-uint2 nyq_halton_scale(uint extent, uint b_13)
+uint2 nyq_halton_scale(uint extent, uint b_12)
 {
     uint scale_1 = 1u;
     uint e_1 = 0u;
 
     uint goal = min(extent, 128u);
-    uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
+    uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
     while(true) {
-        if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
-        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+        if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         uint _e8 = scale_1;
         if ((_e8 < goal)) {
         } else {
@@ -3804,7 +3834,7 @@ uint2 nyq_halton_scale(uint extent, uint b_13)
         }
         {
             uint _e10 = scale_1;
-            scale_1 = (_e10 * b_13);
+            scale_1 = (_e10 * b_12);
             uint _e12 = e_1;
             e_1 = (_e12 + 1u);
         }
@@ -3840,7 +3870,7 @@ NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_
     return nyqhaltonsampler;
 }
 
-uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
+uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7)
 {
     uint inverse_1 = (uint)0;
     uint index_16 = 0u;
@@ -3848,16 +3878,16 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
     uint k_14 = (uint)0;
 
     inverse_1 = inverse_in;
-    uint2 loop_bound_34 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (all(loop_bound_34 == uint2(0u, 0u))) { break; }
-        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-        if (!loop_init_22) {
+        if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
+        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (!loop_init_23) {
             uint _e32 = done;
             done = (_e32 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e8 = done;
         if ((_e8 < n_7)) {
         } else {
@@ -3868,16 +3898,16 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
             if ((_e10 == 0u)) {
                 uint _e13 = done;
                 k_14 = _e13;
-                uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
-                bool loop_init_23 = true;
+                uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
+                bool loop_init_24 = true;
                 while(true) {
-                    if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
-                    loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-                    if (!loop_init_23) {
+                    if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
+                    loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+                    if (!loop_init_24) {
                         uint _e20 = k_14;
                         k_14 = (_e20 + 1u);
                     }
-                    loop_init_23 = false;
+                    loop_init_24 = false;
                     uint _e15 = k_14;
                     if ((_e15 < n_7)) {
                     } else {
@@ -3885,17 +3915,17 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
                     }
                     {
                         uint _e17 = index_16;
-                        index_16 = (_e17 * b_14);
+                        index_16 = (_e17 * b_13);
                     }
                 }
                 uint _e22 = index_16;
                 return _e22;
             }
             uint _e23 = inverse_1;
-            uint q_9 = naga_div(_e23, b_14);
+            uint q_9 = naga_div(_e23, b_13);
             uint _e25 = index_16;
             uint _e27 = inverse_1;
-            index_16 = ((_e25 * b_14) + (_e27 - (q_9 * b_14)));
+            index_16 = ((_e25 * b_13) + (_e27 - (q_9 * b_13)));
             inverse_1 = q_9;
         }
     }
@@ -3903,14 +3933,14 @@ uint nyq_inverse_radical_inverse(uint b_14, uint inverse_in, uint n_7)
     return _e34;
 }
 
-uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_75, uint2 pixel_18, uint sample_index_16)
+uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_77, uint2 pixel_18, uint sample_index_16)
 {
     uint offset_1 = (uint)0;
 
-    uint stride = s_75.stride;
-    uint2 scales_1 = s_75.scales;
-    uint2 exponents = s_75.exponents;
-    uint2 basis_1 = s_75.basis;
+    uint stride = s_77.stride;
+    uint2 scales_1 = s_77.scales;
+    uint2 exponents = s_77.exponents;
+    uint2 basis_1 = s_77.basis;
     const uint _e16 = nyq_inverse_radical_inverse(2u, naga_mod(pixel_18.x, scales_1.x), exponents.x);
     offset_1 = naga_mod((_e16 * basis_1.x), stride);
     const uint _e26 = nyq_inverse_radical_inverse(3u, naga_mod(pixel_18.y, scales_1.y), exponents.y);
@@ -3923,64 +3953,64 @@ uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_75, uint2 pixel_18, uint
     return _e35;
 }
 
-float nyq_halton_sampler_value(inout NyqHaltonSampler s_76, uint dim_38)
+float nyq_halton_sampler_value(inout NyqHaltonSampler s_78, uint dim_38)
 {
-    uint2 a_24 = (uint2)0;
+    uint2 a_23 = (uint2)0;
 
     uint d_29 = naga_mod(dim_38, NYQ_PRIME_COUNT);
-    uint2 index_19 = s_76.index;
-    a_24 = index_19;
+    uint2 index_19 = s_78.index;
+    a_23 = index_19;
     if ((d_29 == 0u)) {
-        uint e_6 = s_76.exponents.x;
+        uint e_6 = s_78.exponents.x;
         if ((e_6 != 0u)) {
             const uint2 _e14 = nyq_shr64_(index_19, e_6);
-            a_24 = _e14;
+            a_23 = _e14;
         }
     } else {
         if ((d_29 == 1u)) {
-            uint _e19 = s_76.scales.y;
+            uint _e19 = s_78.scales.y;
             const uint3 _e20 = nyq_divmod64_small(index_19, _e19);
-            a_24 = _e20.xy;
+            a_23 = _e20.xy;
         }
     }
-    uint2 _e22 = a_24;
-    uint2 _e24 = s_76.seed;
-    uint _e26 = s_76.scramble;
+    uint2 _e22 = a_23;
+    uint2 _e24 = s_78.seed;
+    uint _e26 = s_78.scramble;
     const float _e27 = nyq_radical_inverse_scrambled(d_29, _e22, _e24, _e26);
     return _e27;
 }
 
-void nyq_halton_sampler_start(inout NyqHaltonSampler s_77, uint2 pixel_19, uint sample_index_17, uint dim_39)
+void nyq_halton_sampler_start(inout NyqHaltonSampler s_79, uint2 pixel_19, uint sample_index_17, uint dim_39)
 {
-    const uint2 _e5 = nyq_halton_sampler_index(s_77, pixel_19, sample_index_17);
-    s_77.index = _e5;
-    s_77.dim = dim_39;
+    const uint2 _e5 = nyq_halton_sampler_index(s_79, pixel_19, sample_index_17);
+    s_79.index = _e5;
+    s_79.dim = dim_39;
     return;
 }
 
-float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_78)
+float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_80)
 {
-    uint d_30 = s_78.dim;
-    s_78.dim = (d_30 + 1u);
-    const float _e6 = nyq_halton_sampler_value(s_78, d_30);
+    uint d_30 = s_80.dim;
+    s_80.dim = (d_30 + 1u);
+    const float _e6 = nyq_halton_sampler_value(s_80, d_30);
     return _e6;
 }
 
-float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_79, uint dim_40)
+float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_81, uint dim_40)
 {
     float2 v_6 = float2(0.0, 0.0);
     uint k_15 = 0u;
 
-    uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
-        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-        if (!loop_init_24) {
+        if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
+        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+        if (!loop_init_25) {
             uint _e17 = k_15;
             k_15 = (_e17 + 1u);
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e8 = k_15;
         if ((_e8 < 2u)) {
         } else {
@@ -3989,7 +4019,7 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_79, uint dim_40)
         {
             uint _e11 = k_15;
             uint _e13 = k_15;
-            const float _e15 = nyq_halton_sampler_value(s_79, (dim_40 + _e13));
+            const float _e15 = nyq_halton_sampler_value(s_81, (dim_40 + _e13));
             v_6[min(uint(_e11), 1u)] = _e15;
         }
     }
@@ -3997,39 +4027,39 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_79, uint dim_40)
     return _e19;
 }
 
-float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_80)
+float2 nyq_halton_sampler_get_2d(inout NyqHaltonSampler s_82)
 {
-    uint d_31 = s_80.dim;
-    s_80.dim = (d_31 + 2u);
-    const float2 _e6 = nyq_halton_sampler_pair(s_80, d_31);
+    uint d_31 = s_82.dim;
+    s_82.dim = (d_31 + 2u);
+    const float2 _e6 = nyq_halton_sampler_pair(s_82, d_31);
     return _e6;
 }
 
-float2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_81)
+float2 nyq_halton_sampler_get_pixel_2d(inout NyqHaltonSampler s_83)
 {
-    uint _e3 = s_81.dim;
-    s_81.dim = max(_e3, 2u);
-    const float2 _e7 = nyq_halton_sampler_pair(s_81, 0u);
+    uint _e3 = s_83.dim;
+    s_83.dim = max(_e3, 2u);
+    const float2 _e7 = nyq_halton_sampler_pair(s_83, 0u);
     return _e7;
 }
 
-NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_82, uint2 pixel_20, uint sample_index_18)
+NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_84, uint2 pixel_20, uint sample_index_18)
 {
     float4 v_7 = float4(0.0, 0.0, 0.0, 0.0);
     float lens_y = 0.0;
     uint d_5 = 0u;
 
-    nyq_halton_sampler_start(s_82, pixel_20, sample_index_18, 5u);
-    uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
+    uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
-        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_26) {
             uint _e25 = d_5;
             d_5 = (_e25 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e14 = d_5;
         if ((_e14 < 5u)) {
         } else {
@@ -4037,7 +4067,7 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_82, ui
         }
         {
             uint _e17 = d_5;
-            const float _e18 = nyq_halton_sampler_value(s_82, _e17);
+            const float _e18 = nyq_halton_sampler_value(s_84, _e17);
             uint _e19 = d_5;
             if ((_e19 < 4u)) {
                 uint _e22 = d_5;
@@ -4154,107 +4184,107 @@ NyqBlueSampler nyq_owen_sobol_bn_sampler(uint2 seed_32, uint frame_4)
     return nyqbluesampler_1;
 }
 
-void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_83, uint2 pixel_24, uint sample_index_19, uint dim_41)
+void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uint2 pixel_24, uint sample_index_19, uint dim_41)
 {
-    uint b_15 = 0u;
+    uint b_14 = 0u;
 
-    s_83.pixel = pixel_24;
-    s_83.index = sample_index_19;
-    s_83.dim = dim_41;
-    uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
-    while(true) {
-        if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
-        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-        if (!loop_init_26) {
-            uint _e28 = b_15;
-            b_15 = (_e28 + 1u);
-        }
-        loop_init_26 = false;
-        uint _e9 = b_15;
-        if ((_e9 < 2u)) {
-        } else {
-            break;
-        }
-        {
-            uint2 _e14 = s_83.seed;
-            uint _e16 = s_83.frame;
-            uint _e17 = b_15;
-            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e14, _e16, pixel_24, _e17);
-            const uint _e19 = nyq_owen_sobol_bn_key(_e18);
-            uint _e21 = b_15;
-            s_83.key[min(uint(_e21), 1u)] = _e19;
-            uint _e24 = b_15;
-            const uint _e26 = nyq_owen_sobol_bn_rev(_e18, _e19, sample_index_19);
-            s_83.prepared[min(uint(_e24), 1u)] = _e26;
-        }
-    }
-    return;
-}
-
-float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_84, uint dim_42)
-{
-    uint b_22 = naga_div(dim_42, 4u);
-    uint c_13 = naga_mod(dim_42, 4u);
-    if ((b_22 < 2u)) {
-        uint _e10 = s_84.key[min(uint(b_22), 1u)];
-        uint _e13 = s_84.prepared[min(uint(b_22), 1u)];
-        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13);
-        return _e14;
-    }
-    uint2 _e17 = s_84.seed;
-    uint _e19 = s_84.frame;
-    uint2 _e21 = s_84.pixel;
-    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_22);
-    const uint _e23 = nyq_owen_sobol_bn_key(_e22);
-    uint _e25 = s_84.index;
-    const uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13);
-    return _e27;
-}
-
-float nyq_owen_sobol_bn_get_1d(inout NyqBlueSampler s_85)
-{
-    uint d_32 = s_85.dim;
-    s_85.dim = (d_32 + 1u);
-    const float _e6 = nyq_owen_sobol_bn_value(s_85, d_32);
-    return _e6;
-}
-
-float2 nyq_owen_sobol_bn_get_2d(inout NyqBlueSampler s_86)
-{
-    uint d_33 = s_86.dim;
-    s_86.dim = (d_33 + 2u);
-    const float _e6 = nyq_owen_sobol_bn_value(s_86, d_33);
-    const float _e9 = nyq_owen_sobol_bn_value(s_86, (d_33 + 1u));
-    return float2(_e6, _e9);
-}
-
-float2 nyq_owen_sobol_bn_get_pixel_2d(inout NyqBlueSampler s_87)
-{
-    uint _e3 = s_87.dim;
-    s_87.dim = max(_e3, 2u);
-    const float _e7 = nyq_owen_sobol_bn_value(s_87, 0u);
-    const float _e9 = nyq_owen_sobol_bn_value(s_87, 1u);
-    return float2(_e7, _e9);
-}
-
-NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_88, uint2 pixel_25, uint sample_index_20)
-{
-    float v_9[5] = (float[5])0;
-    uint d_6 = 0u;
-
-    nyq_owen_sobol_bn_start(s_88, pixel_25, sample_index_20, 0u);
+    s_85.pixel = pixel_24;
+    s_85.index = sample_index_19;
+    s_85.dim = dim_41;
     uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
     bool loop_init_27 = true;
     while(true) {
         if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
         loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
         if (!loop_init_27) {
+            uint _e28 = b_14;
+            b_14 = (_e28 + 1u);
+        }
+        loop_init_27 = false;
+        uint _e9 = b_14;
+        if ((_e9 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e14 = s_85.seed;
+            uint _e16 = s_85.frame;
+            uint _e17 = b_14;
+            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e14, _e16, pixel_24, _e17);
+            const uint _e19 = nyq_owen_sobol_bn_key(_e18);
+            uint _e21 = b_14;
+            s_85.key[min(uint(_e21), 1u)] = _e19;
+            uint _e24 = b_14;
+            const uint _e26 = nyq_owen_sobol_bn_rev(_e18, _e19, sample_index_19);
+            s_85.prepared[min(uint(_e24), 1u)] = _e26;
+        }
+    }
+    return;
+}
+
+float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_86, uint dim_42)
+{
+    uint b_21 = naga_div(dim_42, 4u);
+    uint c_13 = naga_mod(dim_42, 4u);
+    if ((b_21 < 2u)) {
+        uint _e10 = s_86.key[min(uint(b_21), 1u)];
+        uint _e13 = s_86.prepared[min(uint(b_21), 1u)];
+        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13);
+        return _e14;
+    }
+    uint2 _e17 = s_86.seed;
+    uint _e19 = s_86.frame;
+    uint2 _e21 = s_86.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_21);
+    const uint _e23 = nyq_owen_sobol_bn_key(_e22);
+    uint _e25 = s_86.index;
+    const uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
+    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13);
+    return _e27;
+}
+
+float nyq_owen_sobol_bn_get_1d(inout NyqBlueSampler s_87)
+{
+    uint d_32 = s_87.dim;
+    s_87.dim = (d_32 + 1u);
+    const float _e6 = nyq_owen_sobol_bn_value(s_87, d_32);
+    return _e6;
+}
+
+float2 nyq_owen_sobol_bn_get_2d(inout NyqBlueSampler s_88)
+{
+    uint d_33 = s_88.dim;
+    s_88.dim = (d_33 + 2u);
+    const float _e6 = nyq_owen_sobol_bn_value(s_88, d_33);
+    const float _e9 = nyq_owen_sobol_bn_value(s_88, (d_33 + 1u));
+    return float2(_e6, _e9);
+}
+
+float2 nyq_owen_sobol_bn_get_pixel_2d(inout NyqBlueSampler s_89)
+{
+    uint _e3 = s_89.dim;
+    s_89.dim = max(_e3, 2u);
+    const float _e7 = nyq_owen_sobol_bn_value(s_89, 0u);
+    const float _e9 = nyq_owen_sobol_bn_value(s_89, 1u);
+    return float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_90, uint2 pixel_25, uint sample_index_20)
+{
+    float v_9[5] = (float[5])0;
+    uint d_6 = 0u;
+
+    nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u);
+    uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
+    bool loop_init_28 = true;
+    while(true) {
+        if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
+        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e15 = d_6;
             d_6 = (_e15 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e7 = d_6;
         if ((_e7 < 5u)) {
         } else {
@@ -4263,33 +4293,33 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_88, uint2
         {
             uint _e10 = d_6;
             uint _e12 = d_6;
-            const float _e13 = nyq_owen_sobol_bn_value(s_88, _e12);
+            const float _e13 = nyq_owen_sobol_bn_value(s_90, _e12);
             v_9[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_88.dim = 5u;
+    s_90.dim = 5u;
     float _e19[5] = v_9;
     const NyqCameraSample _e20 = nyq_blue_camera(pixel_25, _e19);
     const NyqCameraSample nyqcamerasample_9 = _e20;
     return nyqcamerasample_9;
 }
 
-uint nyq_pmj02_bn_key(uint entry_2, uint i_16)
+uint nyq_pmj02_bn_key(uint entry_2, uint i_15)
 {
     const uint _e6 = nyq_mix32_(((entry_2 >> 8u) ^ 1347242496u));
-    uint epoch = (i_16 >> 16u);
+    uint epoch = (i_15 >> 16u);
     const uint _e9 = nyq_mix32_(epoch);
     const uint _e11 = nyq_mix32_((_e6 ^ _e9));
     return ((epoch == 0u) ? _e6 : _e11);
 }
 
-uint nyq_pmj02_bn_points(uint k_16, uint i_17)
+uint nyq_pmj02_bn_points(uint k_16, uint i_16)
 {
     const uint _e6 = nyq_mix32_((k_16 ^ 1397249350u));
-    const uint _e7 = nyq_shuffle_rev((i_17 & 65535u), _e6);
+    const uint _e7 = nyq_shuffle_rev((i_16 & 65535u), _e6);
     uint p0_ = (reversebits(_e7) & 65535u);
     const uint _e15 = nyq_mix32_((k_16 ^ 1397249351u));
-    const uint _e16 = nyq_shuffle_rev((i_17 & 65535u), _e15);
+    const uint _e16 = nyq_shuffle_rev((i_16 & 65535u), _e15);
     uint p1_ = (reversebits(_e16) & 65535u);
     return (p0_ | (p1_ << 16u));
 }
@@ -4310,109 +4340,109 @@ NyqBlueSampler nyq_pmj02_bn_sampler(uint2 seed_33, uint frame_5)
     return nyqbluesampler_2;
 }
 
-void nyq_pmj02_bn_start(inout NyqBlueSampler s_89, uint2 pixel_26, uint sample_index_21, uint dim_43)
+void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uint2 pixel_26, uint sample_index_21, uint dim_43)
 {
-    uint b_16 = 0u;
+    uint b_15 = 0u;
 
-    s_89.pixel = pixel_26;
-    s_89.index = sample_index_21;
-    s_89.dim = dim_43;
-    uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-    bool loop_init_28 = true;
-    while(true) {
-        if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
-        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_28) {
-            uint _e31 = b_16;
-            b_16 = (_e31 + 1u);
-        }
-        loop_init_28 = false;
-        uint _e9 = b_16;
-        if ((_e9 < 2u)) {
-        } else {
-            break;
-        }
-        {
-            uint2 _e14 = s_89.seed;
-            uint _e16 = s_89.frame;
-            uint _e17 = b_16;
-            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e14, _e16, pixel_26, _e17);
-            uint i_19 = (sample_index_21 ^ (_e18 & 255u));
-            const uint _e22 = nyq_pmj02_bn_key(_e18, i_19);
-            uint _e24 = b_16;
-            s_89.key[min(uint(_e24), 1u)] = _e22;
-            uint _e27 = b_16;
-            const uint _e29 = nyq_pmj02_bn_points(_e22, i_19);
-            s_89.prepared[min(uint(_e27), 1u)] = _e29;
-        }
-    }
-    return;
-}
-
-float nyq_pmj02_bn_value(inout NyqBlueSampler s_90, uint dim_44)
-{
-    uint b_23 = naga_div(dim_44, 4u);
-    uint c_14 = naga_mod(dim_44, 4u);
-    if ((b_23 < 2u)) {
-        uint _e10 = s_90.key[min(uint(b_23), 1u)];
-        uint _e13 = s_90.prepared[min(uint(b_23), 1u)];
-        const float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
-        return _e14;
-    }
-    uint2 _e17 = s_90.seed;
-    uint _e19 = s_90.frame;
-    uint2 _e21 = s_90.pixel;
-    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e17, _e19, _e21, b_23);
-    uint _e24 = s_90.index;
-    uint i_20 = (_e24 ^ (_e22 & 255u));
-    const uint _e28 = nyq_pmj02_bn_key(_e22, i_20);
-    const uint _e29 = nyq_pmj02_bn_points(_e28, i_20);
-    const float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
-    return _e30;
-}
-
-float nyq_pmj02_bn_get_1d(inout NyqBlueSampler s_91)
-{
-    uint d_34 = s_91.dim;
-    s_91.dim = (d_34 + 1u);
-    const float _e6 = nyq_pmj02_bn_value(s_91, d_34);
-    return _e6;
-}
-
-float2 nyq_pmj02_bn_get_2d(inout NyqBlueSampler s_92)
-{
-    uint d_35 = s_92.dim;
-    s_92.dim = (d_35 + 2u);
-    const float _e6 = nyq_pmj02_bn_value(s_92, d_35);
-    const float _e9 = nyq_pmj02_bn_value(s_92, (d_35 + 1u));
-    return float2(_e6, _e9);
-}
-
-float2 nyq_pmj02_bn_get_pixel_2d(inout NyqBlueSampler s_93)
-{
-    uint _e3 = s_93.dim;
-    s_93.dim = max(_e3, 2u);
-    const float _e7 = nyq_pmj02_bn_value(s_93, 0u);
-    const float _e9 = nyq_pmj02_bn_value(s_93, 1u);
-    return float2(_e7, _e9);
-}
-
-NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_94, uint2 pixel_27, uint sample_index_22)
-{
-    float v_10[5] = (float[5])0;
-    uint d_7 = 0u;
-
-    nyq_pmj02_bn_start(s_94, pixel_27, sample_index_22, 0u);
+    s_91.pixel = pixel_26;
+    s_91.index = sample_index_21;
+    s_91.dim = dim_43;
     uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
     bool loop_init_29 = true;
     while(true) {
         if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
         loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
         if (!loop_init_29) {
+            uint _e31 = b_15;
+            b_15 = (_e31 + 1u);
+        }
+        loop_init_29 = false;
+        uint _e9 = b_15;
+        if ((_e9 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e14 = s_91.seed;
+            uint _e16 = s_91.frame;
+            uint _e17 = b_15;
+            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e14, _e16, pixel_26, _e17);
+            uint i_18 = (sample_index_21 ^ (_e18 & 255u));
+            const uint _e22 = nyq_pmj02_bn_key(_e18, i_18);
+            uint _e24 = b_15;
+            s_91.key[min(uint(_e24), 1u)] = _e22;
+            uint _e27 = b_15;
+            const uint _e29 = nyq_pmj02_bn_points(_e22, i_18);
+            s_91.prepared[min(uint(_e27), 1u)] = _e29;
+        }
+    }
+    return;
+}
+
+float nyq_pmj02_bn_value(inout NyqBlueSampler s_92, uint dim_44)
+{
+    uint b_22 = naga_div(dim_44, 4u);
+    uint c_14 = naga_mod(dim_44, 4u);
+    if ((b_22 < 2u)) {
+        uint _e10 = s_92.key[min(uint(b_22), 1u)];
+        uint _e13 = s_92.prepared[min(uint(b_22), 1u)];
+        const float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
+        return _e14;
+    }
+    uint2 _e17 = s_92.seed;
+    uint _e19 = s_92.frame;
+    uint2 _e21 = s_92.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e17, _e19, _e21, b_22);
+    uint _e24 = s_92.index;
+    uint i_19 = (_e24 ^ (_e22 & 255u));
+    const uint _e28 = nyq_pmj02_bn_key(_e22, i_19);
+    const uint _e29 = nyq_pmj02_bn_points(_e28, i_19);
+    const float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
+    return _e30;
+}
+
+float nyq_pmj02_bn_get_1d(inout NyqBlueSampler s_93)
+{
+    uint d_34 = s_93.dim;
+    s_93.dim = (d_34 + 1u);
+    const float _e6 = nyq_pmj02_bn_value(s_93, d_34);
+    return _e6;
+}
+
+float2 nyq_pmj02_bn_get_2d(inout NyqBlueSampler s_94)
+{
+    uint d_35 = s_94.dim;
+    s_94.dim = (d_35 + 2u);
+    const float _e6 = nyq_pmj02_bn_value(s_94, d_35);
+    const float _e9 = nyq_pmj02_bn_value(s_94, (d_35 + 1u));
+    return float2(_e6, _e9);
+}
+
+float2 nyq_pmj02_bn_get_pixel_2d(inout NyqBlueSampler s_95)
+{
+    uint _e3 = s_95.dim;
+    s_95.dim = max(_e3, 2u);
+    const float _e7 = nyq_pmj02_bn_value(s_95, 0u);
+    const float _e9 = nyq_pmj02_bn_value(s_95, 1u);
+    return float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_96, uint2 pixel_27, uint sample_index_22)
+{
+    float v_10[5] = (float[5])0;
+    uint d_7 = 0u;
+
+    nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u);
+    uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
+    bool loop_init_30 = true;
+    while(true) {
+        if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
+        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+        if (!loop_init_30) {
             uint _e15 = d_7;
             d_7 = (_e15 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e7 = d_7;
         if ((_e7 < 5u)) {
         } else {
@@ -4421,11 +4451,11 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_94, uint2 pixe
         {
             uint _e10 = d_7;
             uint _e12 = d_7;
-            const float _e13 = nyq_pmj02_bn_value(s_94, _e12);
+            const float _e13 = nyq_pmj02_bn_value(s_96, _e12);
             v_10[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_94.dim = 5u;
+    s_96.dim = 5u;
     float _e19[5] = v_10;
     const NyqCameraSample _e20 = nyq_blue_camera(pixel_27, _e19);
     const NyqCameraSample nyqcamerasample_10 = _e20;
@@ -4459,107 +4489,107 @@ NyqBlueSampler nyq_lattice_bn_sampler(uint2 seed_34, uint frame_6)
     return nyqbluesampler_3;
 }
 
-void nyq_lattice_bn_start(inout NyqBlueSampler s_95, uint2 pixel_28, uint sample_index_23, uint dim_45)
+void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uint2 pixel_28, uint sample_index_23, uint dim_45)
 {
-    uint b_17 = 0u;
+    uint b_16 = 0u;
 
-    s_95.pixel = pixel_28;
-    s_95.index = sample_index_23;
-    s_95.dim = dim_45;
-    uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-    bool loop_init_30 = true;
-    while(true) {
-        if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
-        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_30) {
-            uint _e28 = b_17;
-            b_17 = (_e28 + 1u);
-        }
-        loop_init_30 = false;
-        uint _e9 = b_17;
-        if ((_e9 < 2u)) {
-        } else {
-            break;
-        }
-        {
-            uint2 _e14 = s_95.seed;
-            uint _e16 = s_95.frame;
-            uint _e17 = b_17;
-            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_28, _e17);
-            const uint _e19 = nyq_lattice_bn_key(_e18);
-            uint _e21 = b_17;
-            s_95.key[min(uint(_e21), 1u)] = _e19;
-            uint _e24 = b_17;
-            const uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_23);
-            s_95.prepared[min(uint(_e24), 1u)] = _e26;
-        }
-    }
-    return;
-}
-
-float nyq_lattice_bn_value(inout NyqBlueSampler s_96, uint dim_46)
-{
-    uint b_24 = naga_div(dim_46, 4u);
-    uint c_15 = naga_mod(dim_46, 4u);
-    if ((b_24 < 2u)) {
-        uint _e10 = s_96.key[min(uint(b_24), 1u)];
-        uint _e13 = s_96.prepared[min(uint(b_24), 1u)];
-        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
-        return _e14;
-    }
-    uint2 _e17 = s_96.seed;
-    uint _e19 = s_96.frame;
-    uint2 _e21 = s_96.pixel;
-    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_24);
-    const uint _e23 = nyq_lattice_bn_key(_e22);
-    uint _e25 = s_96.index;
-    const uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
-    return _e27;
-}
-
-float nyq_lattice_bn_get_1d(inout NyqBlueSampler s_97)
-{
-    uint d_36 = s_97.dim;
-    s_97.dim = (d_36 + 1u);
-    const float _e6 = nyq_lattice_bn_value(s_97, d_36);
-    return _e6;
-}
-
-float2 nyq_lattice_bn_get_2d(inout NyqBlueSampler s_98)
-{
-    uint d_37 = s_98.dim;
-    s_98.dim = (d_37 + 2u);
-    const float _e6 = nyq_lattice_bn_value(s_98, d_37);
-    const float _e9 = nyq_lattice_bn_value(s_98, (d_37 + 1u));
-    return float2(_e6, _e9);
-}
-
-float2 nyq_lattice_bn_get_pixel_2d(inout NyqBlueSampler s_99)
-{
-    uint _e3 = s_99.dim;
-    s_99.dim = max(_e3, 2u);
-    const float _e7 = nyq_lattice_bn_value(s_99, 0u);
-    const float _e9 = nyq_lattice_bn_value(s_99, 1u);
-    return float2(_e7, _e9);
-}
-
-NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_100, uint2 pixel_29, uint sample_index_24)
-{
-    float v_11[5] = (float[5])0;
-    uint d_8 = 0u;
-
-    nyq_lattice_bn_start(s_100, pixel_29, sample_index_24, 0u);
+    s_97.pixel = pixel_28;
+    s_97.index = sample_index_23;
+    s_97.dim = dim_45;
     uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
     bool loop_init_31 = true;
     while(true) {
         if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
         loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
         if (!loop_init_31) {
+            uint _e28 = b_16;
+            b_16 = (_e28 + 1u);
+        }
+        loop_init_31 = false;
+        uint _e9 = b_16;
+        if ((_e9 < 2u)) {
+        } else {
+            break;
+        }
+        {
+            uint2 _e14 = s_97.seed;
+            uint _e16 = s_97.frame;
+            uint _e17 = b_16;
+            const uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_28, _e17);
+            const uint _e19 = nyq_lattice_bn_key(_e18);
+            uint _e21 = b_16;
+            s_97.key[min(uint(_e21), 1u)] = _e19;
+            uint _e24 = b_16;
+            const uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_23);
+            s_97.prepared[min(uint(_e24), 1u)] = _e26;
+        }
+    }
+    return;
+}
+
+float nyq_lattice_bn_value(inout NyqBlueSampler s_98, uint dim_46)
+{
+    uint b_23 = naga_div(dim_46, 4u);
+    uint c_15 = naga_mod(dim_46, 4u);
+    if ((b_23 < 2u)) {
+        uint _e10 = s_98.key[min(uint(b_23), 1u)];
+        uint _e13 = s_98.prepared[min(uint(b_23), 1u)];
+        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
+        return _e14;
+    }
+    uint2 _e17 = s_98.seed;
+    uint _e19 = s_98.frame;
+    uint2 _e21 = s_98.pixel;
+    const uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_23);
+    const uint _e23 = nyq_lattice_bn_key(_e22);
+    uint _e25 = s_98.index;
+    const uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
+    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
+    return _e27;
+}
+
+float nyq_lattice_bn_get_1d(inout NyqBlueSampler s_99)
+{
+    uint d_36 = s_99.dim;
+    s_99.dim = (d_36 + 1u);
+    const float _e6 = nyq_lattice_bn_value(s_99, d_36);
+    return _e6;
+}
+
+float2 nyq_lattice_bn_get_2d(inout NyqBlueSampler s_100)
+{
+    uint d_37 = s_100.dim;
+    s_100.dim = (d_37 + 2u);
+    const float _e6 = nyq_lattice_bn_value(s_100, d_37);
+    const float _e9 = nyq_lattice_bn_value(s_100, (d_37 + 1u));
+    return float2(_e6, _e9);
+}
+
+float2 nyq_lattice_bn_get_pixel_2d(inout NyqBlueSampler s_101)
+{
+    uint _e3 = s_101.dim;
+    s_101.dim = max(_e3, 2u);
+    const float _e7 = nyq_lattice_bn_value(s_101, 0u);
+    const float _e9 = nyq_lattice_bn_value(s_101, 1u);
+    return float2(_e7, _e9);
+}
+
+NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_102, uint2 pixel_29, uint sample_index_24)
+{
+    float v_11[5] = (float[5])0;
+    uint d_8 = 0u;
+
+    nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u);
+    uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
+    bool loop_init_32 = true;
+    while(true) {
+        if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
+        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+        if (!loop_init_32) {
             uint _e15 = d_8;
             d_8 = (_e15 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e7 = d_8;
         if ((_e7 < 5u)) {
         } else {
@@ -4568,32 +4598,32 @@ NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_100, uint2 p
         {
             uint _e10 = d_8;
             uint _e12 = d_8;
-            const float _e13 = nyq_lattice_bn_value(s_100, _e12);
+            const float _e13 = nyq_lattice_bn_value(s_102, _e12);
             v_11[min(uint(_e10), 4u)] = _e13;
         }
     }
-    s_100.dim = 5u;
+    s_102.dim = 5u;
     float _e19[5] = v_11;
     const NyqCameraSample _e20 = nyq_blue_camera(pixel_29, _e19);
     const NyqCameraSample nyqcamerasample_11 = _e20;
     return nyqcamerasample_11;
 }
 
-uint4 nyq_fill_request(uint i_18)
+uint4 nyq_fill_request(uint i_17)
 {
     uint _e3 = nyq_job.implicit;
     if ((_e3 == 0u)) {
-        uint4 _e8 = asuint(nyq_requests.Load4(i_18*16));
+        uint4 _e8 = asuint(nyq_requests.Load4(i_17*16));
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_12 = (_e11 + i_18);
+    uint n_13 = (_e11 + i_17);
     uint _e15 = nyq_job.spp;
-    uint pixel_30 = naga_div(n_12, _e15);
+    uint pixel_30 = naga_div(n_13, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return uint4(naga_mod(pixel_30, _e20), naga_div(pixel_30, _e25), naga_mod(n_12, _e29), 5u);
+    return uint4(naga_mod(pixel_30, _e20), naga_div(pixel_30, _e25), naga_mod(n_13, _e29), 5u);
 }
 
 void nyq_fill_camera(uint out_3, NyqCameraSample c_9)
@@ -4635,14 +4665,14 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
     uint k_4 = 0u;
     uint k_5 = 0u;
 
-    uint i_21 = id.x;
+    uint i_20 = id.x;
     uint _e4 = nyq_job.count;
-    if ((i_21 >= _e4)) {
+    if ((i_20 >= _e4)) {
         return;
     }
-    const uint4 _e6 = nyq_fill_request(i_21);
+    const uint4 _e6 = nyq_fill_request(i_20);
     uint2 pixel_31 = _e6.xy;
-    uint out_5 = (8u * i_21);
+    uint out_5 = (8u * i_20);
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -4801,16 +4831,16 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e198 = nyq_job.scramble;
             uint2 _e203 = nyq_job.seed;
             const NyqSobol _e204 = nyq_sobol(_e195, (_e198 != 0u), _e203);
-            uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-            bool loop_init_32 = true;
+            uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
+            bool loop_init_33 = true;
             while(true) {
-                if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
-                loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-                if (!loop_init_32) {
+                if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
+                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                if (!loop_init_33) {
                     uint _e232 = k;
                     k = (_e232 + 1u);
                 }
-                loop_init_32 = false;
+                loop_init_33 = false;
                 uint _e207 = k;
                 if ((_e207 < 4u)) {
                 } else {
@@ -4834,16 +4864,16 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e239 = nyq_job.seed;
             const NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             const float4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w);
-            uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-            bool loop_init_33 = true;
+            uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
+            bool loop_init_34 = true;
             while(true) {
-                if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
-                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                if (!loop_init_33) {
+                if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
+                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                if (!loop_init_34) {
                     uint _e268 = k_1;
                     k_1 = (_e268 + 1u);
                 }
-                loop_init_33 = false;
+                loop_init_34 = false;
                 uint _e246 = k_1;
                 if ((_e246 < 4u)) {
                 } else {
@@ -4865,16 +4895,16 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e272 = nyq_job.scramble;
             uint2 _e277 = nyq_job.seed;
             const NyqPmj02_ _e278 = nyq_pmj02_((_e272 != 0u), _e277);
-            uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-            bool loop_init_34 = true;
+            uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
+            bool loop_init_35 = true;
             while(true) {
-                if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
-                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                if (!loop_init_34) {
+                if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_35) {
                     uint _e306 = k_2;
                     k_2 = (_e306 + 1u);
                 }
-                loop_init_34 = false;
+                loop_init_35 = false;
                 uint _e281 = k_2;
                 if ((_e281 < 4u)) {
                 } else {
@@ -4899,16 +4929,16 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e316 = nyq_job.seed;
             const NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
-            uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-            bool loop_init_35 = true;
+            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
+            bool loop_init_36 = true;
             while(true) {
-                if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
-                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_35) {
+                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
+                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                if (!loop_init_36) {
                     uint _e351 = k_3;
                     k_3 = (_e351 + 1u);
                 }
-                loop_init_35 = false;
+                loop_init_36 = false;
                 uint _e329 = k_3;
                 if ((_e329 < 8u)) {
                 } else {
@@ -4933,16 +4963,16 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint _e367 = nyq_job.scramble;
             uint2 _e372 = nyq_job.seed;
             const NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, (_e367 != 0u), _e372);
-            uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-            bool loop_init_36 = true;
+            uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
+            bool loop_init_37 = true;
             while(true) {
-                if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
-                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_36) {
+                if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
+                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+                if (!loop_init_37) {
                     uint _e390 = k_4;
                     k_4 = (_e390 + 1u);
                 }
-                loop_init_36 = false;
+                loop_init_37 = false;
                 uint _e376 = k_4;
                 if ((_e376 < 4u)) {
                 } else {
@@ -4966,16 +4996,16 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             return;
         }
         default: {
-            uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-            bool loop_init_37 = true;
+            uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
+            bool loop_init_38 = true;
             while(true) {
-                if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
-                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-                if (!loop_init_37) {
+                if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
+                loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+                if (!loop_init_38) {
                     uint _e433 = k_5;
                     k_5 = (_e433 + 1u);
                 }
-                loop_init_37 = false;
+                loop_init_38 = false;
                 uint _e424 = k_5;
                 if ((_e424 < 8u)) {
                 } else {

@@ -140,6 +140,9 @@ struct NyqStratifiedSampler {
     uint dim;
 };
 struct type_24 {
+    metal::uint2 inner[192];
+};
+struct type_25 {
     uint inner[16];
 };
 struct NyqPmj02_ {
@@ -211,7 +214,7 @@ struct NyqFillJob {
     uint pad0_;
     uint pad1_;
 };
-typedef metal::uint4 type_28[1];
+typedef metal::uint4 type_29[1];
 constant uint NYQ_SCRAMBLE_NONE = 0u;
 constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
@@ -229,11 +232,10 @@ constant uint NYQ_JITTERED = 0u;
 constant uint NYQ_CENTERED = 1u;
 constant metal::uint2 NYQ_DIM_STEP = metal::uint2(2135587861u, 2654435769u);
 constant metal::uint2 NYQ_JITTER_STEP = metal::uint2(668265295u, 3266489917u);
-constant metal::uint2 NYQ_PMJ02_TABLE_SEED = metal::uint2(716u, 0u);
-constant metal::uint2 NYQ_WYRAND_INC = metal::uint2(2025677871u, 2692095332u);
-constant metal::uint2 NYQ_WYRAND_FOLD = metal::uint2(2696161499u, 3875765969u);
-constant type_24 NYQ_PMJ02_XOR_X = type_24 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
-constant type_24 NYQ_PMJ02_XOR_Y = type_24 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
+constant uint NYQ_PMJ02_TABLE_SEED = 0u;
+constant type_24 NYQ_LCG_WINDOWS = type_24 {{metal::uint2(1u, 0u), metal::uint2(747796405u, 2891336453u), metal::uint2(4201498105u, 1192405134u), metal::uint2(3399858189u, 568162667u), metal::uint2(2200120369u, 878960812u), metal::uint2(2975532453u, 3598456993u), metal::uint2(1226092713u, 3109587930u), metal::uint2(371291773u, 457671207u), metal::uint2(1124524385u, 564359576u), metal::uint2(3421728917u, 1466123133u), metal::uint2(762174553u, 2469272934u), metal::uint2(651962861u, 2009562659u), metal::uint2(1985007505u, 200982212u), metal::uint2(2219911301u, 789858201u), metal::uint2(1058109705u, 2218199346u), metal::uint2(1237303901u, 2466908511u), metal::uint2(485992129u, 4177007664u), metal::uint2(3752762741u, 3363758325u), metal::uint2(979416761u, 3495377726u), metal::uint2(1020473293u, 4159242203u), metal::uint2(2876446449u, 3521641948u), metal::uint2(964378469u, 2211842961u), metal::uint2(1916126569u, 3871268746u), metal::uint2(1621779005u, 3219619223u), metal::uint2(250335265u, 2323728328u), metal::uint2(2303426133u, 36438893u), metal::uint2(3532903705u, 1530290710u), metal::uint2(1859537325u, 703454867u), metal::uint2(3127607889u, 399572468u), metal::uint2(97045061u, 1850623113u), metal::uint2(2757170633u, 2913627874u), metal::uint2(2773800477u, 3292905167u), metal::uint2(1829559681u, 1130785888u), metal::uint2(2493616949u, 1054968549u), metal::uint2(1105508217u, 2348282350u), metal::uint2(1459681165u, 3319134795u), metal::uint2(1630245297u, 2797543180u), metal::uint2(2004437285u, 767414913u), metal::uint2(3973769769u, 2046302010u), metal::uint2(3506609661u, 1923001607u), metal::uint2(2492747489u, 1525867000u), metal::uint2(2782419989u, 1619679069u), metal::uint2(4106280409u, 197937862u), metal::uint2(2235480429u, 2809475843u), metal::uint2(3652502801u, 681558308u), metal::uint2(1142701061u, 4271478137u), metal::uint2(1589035657u, 510277778u), metal::uint2(1774664157u, 3909101631u), metal::uint2(1640735809u, 1142294672u), metal::uint2(2808568053u, 2953136341u), metal::uint2(1042663481u, 3127364766u), metal::uint2(2102071117u, 2448648379u), metal::uint2(1880661105u, 3787736124u), metal::uint2(1452352229u, 3255463281u), metal::uint2(4000325353u, 2366059242u), metal::uint2(1619405245u, 4237037687u), metal::uint2(3859570081u, 786645032u), metal::uint2(2014710229u, 3970252621u), metal::uint2(1570829977u, 595777398u), metal::uint2(4105271597u, 3276569459u), metal::uint2(1484298193u, 2053245012u), metal::uint2(487030213u, 4117576297u), metal::uint2(2552004425u, 1419339330u), metal::uint2(4008897949u, 1962427823u), metal::uint2(1u, 0u), metal::uint2(1572862721u, 2584864960u), metal::uint2(999880193u, 714609024u), metal::uint2(478867713u, 1817344576u), metal::uint2(2207640577u, 1510023936u), metal::uint2(4089046785u, 778308544u), metal::uint2(4025934337u, 1681601664u), metal::uint2(4216118529u, 3058081088u), metal::uint2(2562447361u, 524699136u), metal::uint2(1262736129u, 3657051840u), metal::uint2(2514800129u, 1629640576u), metal::uint2(4221487361u, 1870577728u), metal::uint2(4285645825u, 4291782912u), metal::uint2(610123521u, 1288982976u), metal::uint2(3982670337u, 3511515776u), metal::uint2(3716199681u, 1207624512u), metal::uint2(2008526849u, 2879163392u), metal::uint2(1057467137u, 921859264u), metal::uint2(3060835841u, 1690082688u), metal::uint2(1626513665u, 4022011456u), metal::uint2(3247283201u, 3534597888u), metal::uint2(1531025153u, 1213503424u), metal::uint2(2970522113u, 3413098624u), metal::uint2(1173654785u, 381626688u), metal::uint2(2633205761u, 620941824u), metal::uint2(957055745u, 821738176u), metal::uint2(2637987329u, 3043419008u), metal::uint2(1283881217u, 1829194816u), metal::uint2(3387520001u, 1385952512u), metal::uint2(2556784385u, 2699353536u), metal::uint2(989489665u, 3533833856u), metal::uint2(883451137u, 2727571264u), metal::uint2(141516801u, 192485376u), metal::uint2(961501953u, 1209204928u), metal::uint2(1246254593u, 3542165888u), metal::uint2(3193590017u, 1734578752u), metal::uint2(411388929u, 4288297728u), metal::uint2(3687401217u, 3599049664u), metal::uint2(2334540289u, 1726237824u), metal::uint2(2845588737u, 1803007296u), metal::uint2(3123394561u, 3741277696u), metal::uint2(1070805761u, 4231743168u), metal::uint2(3180604929u, 1038839680u), metal::uint2(3060672769u, 1590679616u), metal::uint2(2908824577u, 1504215296u), metal::uint2(627908353u, 1765108160u), metal::uint2(2710706689u, 137794176u), metal::uint2(2765100289u, 4050385728u), metal::uint2(2988904449u, 529900544u), metal::uint2(1284967169u, 3446901952u), metal::uint2(4146071041u, 1975891328u), metal::uint2(885129473u, 3544981056u), metal::uint2(2289892353u, 3771123456u), metal::uint2(1968240385u, 3639979968u), metal::uint2(2117988865u, 915986560u), metal::uint2(641985793u, 3027255616u), metal::uint2(4033013761u, 1295772160u), metal::uint2(1603986177u, 1002164928u), metal::uint2(4142652929u, 4205837184u), metal::uint2(961927425u, 1155032128u), metal::uint2(2849559553u, 351603968u), metal::uint2(3413430017u, 2781214144u), metal::uint2(556386817u, 1913331328u), metal::uint2(771212545u, 881100608u), metal::uint2(1u, 0u), metal::uint2(1960755201u, 3891408896u), metal::uint2(2042462209u, 333733888u), metal::uint2(245121025u, 2211876864u), metal::uint2(863698945u, 935903232u), metal::uint2(3898195969u, 800780288u), metal::uint2(758677505u, 1806508032u), metal::uint2(35078145u, 3953086464u), metal::uint2(1727397889u, 2945548288u), metal::uint2(1540669441u, 3078860800u), metal::uint2(3769860097u, 58056704u), metal::uint2(4120002561u, 2473070592u), metal::uint2(2591096833u, 1733967872u), metal::uint2(3478110209u, 2135715840u), metal::uint2(2486075393u, 3678314496u), metal::uint2(3909959681u, 2066796544u), metal::uint2(3454795777u, 1596129280u), metal::uint2(1120583681u, 2266312704u), metal::uint2(1202290689u, 4077346816u), metal::uint2(3699916801u, 2734264320u), metal::uint2(23527425u, 2532032512u), metal::uint2(3058024449u, 3470651392u), metal::uint2(4213473281u, 1255153664u), metal::uint2(3489873921u, 180506624u), metal::uint2(887226369u, 246710272u), metal::uint2(700497921u, 1453764608u), metal::uint2(2929688577u, 3801669632u), metal::uint2(3279831041u, 2995458048u), metal::uint2(1750925313u, 3330097152u), metal::uint2(2637938689u, 510619648u), metal::uint2(1645903873u, 3126960128u), metal::uint2(3069788161u, 2589184000u), metal::uint2(2614624257u, 3192258560u), metal::uint2(280412161u, 641216512u), metal::uint2(362119169u, 3525992448u), metal::uint2(2859745281u, 3256651776u), metal::uint2(3478323201u, 4128161792u), metal::uint2(2217852929u, 1845555200u), metal::uint2(3373301761u, 703799296u), metal::uint2(2649702401u, 702894080u), metal::uint2(47054849u, 1842839552u), metal::uint2(4155293697u, 4123635712u), metal::uint2(2089517057u, 3250315264u), metal::uint2(2439659521u, 3517845504u), metal::uint2(910753793u, 631259136u), metal::uint2(1797767169u, 3180490752u), metal::uint2(805732353u, 2575605760u), metal::uint2(2229616641u, 3111571456u), metal::uint2(1774452737u, 493420544u), metal::uint2(3735207937u, 3311087616u), metal::uint2(3816914945u, 2974638080u), metal::uint2(2019573761u, 3779039232u), metal::uint2(2638151681u, 1429323776u), metal::uint2(1377681409u, 220459008u), metal::uint2(2533130241u, 152444928u), metal::uint2(1809530881u, 1225281536u), metal::uint2(3501850625u, 3438968832u), metal::uint2(3315122177u, 2498539520u), metal::uint2(1249345537u, 2698960896u), metal::uint2(1599488001u, 4040232960u), metal::uint2(70582273u, 2227388416u), metal::uint2(957595649u, 1555394560u), metal::uint2(4260528129u, 2024251392u), metal::uint2(1389445121u, 3633958912u)}};
+constant type_25 NYQ_PMJ02_XOR_X = type_25 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
+constant type_25 NYQ_PMJ02_XOR_Y = type_25 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
 constant uint NYQ_HALTON_WORDS = 24u;
 constant uint NYQ_BELOW_ONE_BITS = 1065353215u;
 constant uint NYQ_PRIME_COUNT = 1024u;
@@ -644,13 +646,13 @@ NyqSobolSampler nyq_sobol_sampler(
     uint r_3 = {};
     uint _e4 = nyq_round_up_pow2_(spp_requested);
     uint side = metal::max(resolution.x, resolution.y);
-    uint m_4 = 32u - metal::clz(side - 1u);
+    uint m_5 = 32u - metal::clz(side - 1u);
     seed_6 = seed_in;
     if (scramble == NYQ_SCRAMBLE_NONE) {
         seed_6 = metal::uint2(0u, 0u);
     }
     if (scramble == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
-        uint mask = (m_4 == 0u) ? 4294967295u : (4294967295u >> (m_4 & 31u));
+        uint mask = (m_5 == 0u) ? 4294967295u : (4294967295u >> (m_5 & 31u));
         metal::uint2 _e33 = seed_6;
         metal::uint2 _e35 = nyq_u64_(0u);
         metal::uint2 _e36 = nyq_hash2_(_e33, _e35);
@@ -659,7 +661,7 @@ NyqSobolSampler nyq_sobol_sampler(
         metal::uint2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = metal::uint2(_e36.x & mask, _e42.x & mask);
     }
-    uint n_8 = 2u * m_4;
+    uint n_8 = 2u * m_5;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -678,11 +680,11 @@ NyqSobolSampler nyq_sobol_sampler(
         {
             uint _e54 = c_1;
             uint _e57 = nyq_sobol_u32_(1u << _e54, 0u, nyq_sobol_matrices, _buffer_sizes);
-            uint _e58 = nyq_top(_e57, m_4);
+            uint _e58 = nyq_top(_e57, m_5);
             uint _e60 = c_1;
             uint _e63 = nyq_sobol_u32_(1u << _e60, 1u, nyq_sobol_matrices, _buffer_sizes);
-            uint _e64 = nyq_top(_e63, m_4);
-            metal::uint2 image_bits = metal::uint2(_e58 | (_e64 << (m_4 & 31u)), (m_4 == 0u) ? 0u : (_e64 >> ((32u - m_4) & 31u)));
+            uint _e64 = nyq_top(_e63, m_5);
+            metal::uint2 image_bits = metal::uint2(_e58 | (_e64 << (m_5 & 31u)), (m_5 == 0u) ? 0u : (_e64 >> ((32u - m_5) & 31u)));
             i = 0u;
             uint2 loop_bound_3 = uint2(4294967295u);
             bool loop_init_2 = true;
@@ -917,7 +919,7 @@ NyqSobolSampler nyq_sobol_sampler(
     metal::uint4 v7_ = metal::uint4(_e292, _e294, _e296, _e298);
     metal::uint2 _e300 = seed_6;
     metal::uint2 _e301 = shift_1;
-    return NyqSobolSampler {_e4, m_4, scramble, {}, _e300, {}, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u};
+    return NyqSobolSampler {_e4, m_5, scramble, {}, _e300, {}, v0_, v1_, v2_, v3_, v4_, v5_, v6_, v7_, _e301, 0u, 0u};
 }
 
 uint nyq_sobol_sampler_invert(
@@ -1002,17 +1004,17 @@ uint nyq_sobol_sampler_index(
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint m_5 = s_17.m;
+    uint m_6 = s_17.m;
     uint _e6 = s_17.spp;
     uint si = naga_mod(sample_index, _e6);
-    uint high = ((2u * m_5) >= 32u) ? 0u : (si << ((2u * m_5) & 31u));
-    uint mask_1 = (m_5 == 0u) ? 0u : (4294967295u >> ((32u - m_5) & 31u));
-    uint want = (pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_5 & 31u));
+    uint high = ((2u * m_6) >= 32u) ? 0u : (si << ((2u * m_6) & 31u));
+    uint mask_1 = (m_6 == 0u) ? 0u : (4294967295u >> ((32u - m_6) & 31u));
+    uint want = (pixel_1.x & mask_1) | ((pixel_1.y & mask_1) << (m_6 & 31u));
     uint _e38 = nyq_sobol_u32_(high, 0u, nyq_sobol_matrices, _buffer_sizes);
-    uint _e39 = nyq_top(_e38, m_5);
+    uint _e39 = nyq_top(_e38, m_6);
     uint _e41 = nyq_sobol_u32_(high, 1u, nyq_sobol_matrices, _buffer_sizes);
-    uint _e42 = nyq_top(_e41, m_5);
-    uint have = _e39 | (_e42 << (m_5 & 31u));
+    uint _e42 = nyq_top(_e41, m_6);
+    uint have = _e39 | (_e42 << (m_6 & 31u));
     uint _e48 = nyq_sobol_sampler_invert(s_17, want ^ have);
     return high | _e48;
 }
@@ -1049,10 +1051,10 @@ float nyq_sobol_sampler_value(
             local_2 = false;
         }
         bool _e37 = local_2;
-        uint w_1 = _e37 ? (_e22 << (_e24 & 31u)) : _e21;
+        uint w_2 = _e37 ? (_e22 << (_e24 & 31u)) : _e21;
         metal::uint2 _e39 = nyq_u64_(d_10);
         metal::uint2 _e40 = nyq_hash2_(seed_35, _e39);
-        uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
+        uint _e42 = nyq_scramble_u32_(w_2, _e40.y, how_3);
         float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
@@ -2210,12 +2212,12 @@ metal::uint2 nyq_fixed_to_f64_bits(
     }
     uint e_2 = (_e2.y != 0u) ? (63u - metal::clz(_e2.y)) : (31u - metal::clz(_e2.x));
     frac = _e2;
-    uint s_101 = 52u - e_2;
-    if (s_101 >= 32u) {
-        frac = metal::uint2(0u, _e2.x << (s_101 - 32u));
+    uint s_103 = 52u - e_2;
+    if (s_103 >= 32u) {
+        frac = metal::uint2(0u, _e2.x << (s_103 - 32u));
     } else {
-        if (s_101 > 0u) {
-            metal::uint2 _e41 = nyq_shl64_(_e2, s_101);
+        if (s_103 > 0u) {
+            metal::uint2 _e41 = nyq_shl64_(_e2, s_103);
             frac = _e41;
         }
     }
@@ -2268,9 +2270,9 @@ float nyq_recip_f32_(
     bool local_8 = {};
     bool local_9 = {};
     uint bits_4 = as_type<uint>(x_13);
-    uint m_6 = (bits_4 & 8388607u) | 8388608u;
+    uint m_7 = (bits_4 & 8388607u) | 8388608u;
     int e_3 = as_type<int>(as_type<uint>(static_cast<int>(bits_4 >> 23u)) - as_type<uint>(127));
-    if (m_6 == 8388608u) {
+    if (m_7 == 8388608u) {
         return as_type<float>(static_cast<uint>(as_type<int>(as_type<uint>(127) - as_type<uint>(e_3))) << 23u);
     }
     uint2 loop_bound_19 = uint2(4294967295u);
@@ -2292,9 +2294,9 @@ float nyq_recip_f32_(
             uint _e28 = q_1;
             q_1 = _e28 << 1u;
             uint _e31 = r_8;
-            if (_e31 >= m_6) {
+            if (_e31 >= m_7) {
                 uint _e33 = r_8;
-                r_8 = _e33 - m_6;
+                r_8 = _e33 - m_7;
                 uint _e35 = q_1;
                 q_1 = _e35 | 1u;
             }
@@ -2679,37 +2681,60 @@ NyqCameraSample nyq_stratified_camera_sample(
     return NyqCameraSample {film_4, _e6, _e5};
 }
 
-metal::uint2 nyq_mul64_high(
-    metal::uint2 a_8,
-    metal::uint2 b_7
+uint nyq_rxs_m_xs(
+    uint state_1
 ) {
-    metal::uint2 _e4 = nyq_mul_wide(a_8.x, b_7.x);
-    metal::uint2 _e7 = nyq_mul_wide(a_8.x, b_7.y);
-    metal::uint2 _e10 = nyq_mul_wide(a_8.y, b_7.x);
-    metal::uint2 _e13 = nyq_mul_wide(a_8.y, b_7.y);
-    metal::uint2 _e20 = nyq_add64_(metal::uint2(_e4.y, 0u), metal::uint2(_e7.x, 0u));
-    metal::uint2 _e24 = nyq_add64_(_e20, metal::uint2(_e10.x, 0u));
-    metal::uint2 _e28 = nyq_add64_(_e13, metal::uint2(_e7.y, 0u));
-    metal::uint2 _e35 = nyq_add64_(metal::uint2(_e10.y, 0u), metal::uint2(_e24.y, 0u));
-    metal::uint2 _e36 = nyq_add64_(_e28, _e35);
-    return _e36;
+    uint s_65 = {};
+    s_65 = state_1;
+    uint _e2 = s_65;
+    uint _e3 = s_65;
+    uint _e5 = s_65;
+    s_65 = _e2 ^ (_e3 >> (4u + (_e5 >> 28u)));
+    uint _e11 = s_65;
+    s_65 = _e11 * 277803737u;
+    uint _e14 = s_65;
+    uint _e15 = s_65;
+    return _e14 ^ (_e15 >> 22u);
 }
 
-metal::uint2 nyq_wyrand(
-    metal::uint2 seed_17,
-    uint i_9
+uint nyq_lcg_draw(
+    uint seed_17,
+    uint m_1
 ) {
-    metal::uint2 _e5 = nyq_u64_(i_9 + 1u);
-    metal::uint2 _e6 = nyq_mul64_(NYQ_WYRAND_INC, _e5);
-    metal::uint2 _e7 = nyq_add64_(seed_17, _e6);
-    metal::uint2 t_7 = _e7 ^ NYQ_WYRAND_FOLD;
-    metal::uint2 _e10 = nyq_mul64_high(_e7, t_7);
-    metal::uint2 _e11 = nyq_mul64_(_e7, t_7);
-    return _e10 ^ _e11;
+    uint s_66 = {};
+    uint w_1 = 0u;
+    s_66 = 2891336453u + seed_17;
+    uint n_12 = m_1 + 1u;
+    uint2 loop_bound_22 = uint2(4294967295u);
+    bool loop_init_17 = true;
+    while(true) {
+        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
+        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (!loop_init_17) {
+            uint _e30 = w_1;
+            w_1 = _e30 + 1u;
+        }
+        loop_init_17 = false;
+        uint _e9 = w_1;
+        if (_e9 < 3u) {
+        } else {
+            break;
+        }
+        {
+            uint _e13 = w_1;
+            uint _e17 = w_1;
+            metal::uint2 ac = NYQ_LCG_WINDOWS.inner[(_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u)];
+            uint _e25 = s_66;
+            s_66 = (NYQ_LCG_WINDOWS.inner[(_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u)].x * _e25) + NYQ_LCG_WINDOWS.inner[(_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u)].y;
+        }
+    }
+    uint _e32 = s_66;
+    uint _e33 = nyq_rxs_m_xs(_e32);
+    return _e33;
 }
 
 uint nyq_pmj02_point(
-    metal::uint2 seed_18,
+    uint seed_18,
     uint index_12,
     uint dim_27
 ) {
@@ -2718,10 +2743,10 @@ uint nyq_pmj02_point(
     uint flips = 0u;
     uint p_1 = {};
     p_1 = index_12 & 65535u;
-    uint2 loop_bound_22 = uint2(4294967295u);
+    uint2 loop_bound_23 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_22 == uint2(0u))) { break; }
-        loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
+        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
+        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
         uint _e12 = p_1;
         if (_e12 != 0u) {
         } else {
@@ -2732,28 +2757,27 @@ uint nyq_pmj02_point(
             uint level_1 = 31u - metal::clz(_e16);
             uint swap = 2147483648u >> level_1;
             uint low_2 = swap - 1u;
-            uint _e23 = p_1;
-            metal::uint2 _e24 = nyq_wyrand(seed_18, _e23);
-            uint bits_6 = (dim_27 == 0u) ? _e24.x : _e24.y;
-            uint _e30 = x_17;
-            uint _e32 = known;
-            x_17 = _e30 | ((bits_6 & low_2) & ~(_e32));
-            uint _e36 = known;
-            known = _e36 | low_2;
-            uint _e38 = flips;
-            flips = _e38 ^ swap;
+            uint _e23 = x_17;
+            uint _e25 = p_1;
+            uint _e28 = nyq_lcg_draw(seed_18, (2u * _e25) + dim_27);
+            uint _e30 = known;
+            x_17 = _e23 | ((_e28 & low_2) & ~(_e30));
+            uint _e34 = known;
+            known = _e34 | low_2;
+            uint _e36 = flips;
+            flips = _e36 ^ swap;
             uint c_10 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
-            uint _e51 = p_1;
-            p_1 = (_e51 - (1u << level_1)) ^ c_10;
+            uint _e49 = p_1;
+            p_1 = (_e49 - (1u << level_1)) ^ c_10;
         }
     }
-    metal::uint2 _e57 = nyq_wyrand(seed_18, 0u);
-    uint _e58 = x_17;
-    uint _e64 = known;
-    x_17 = _e58 | (((dim_27 == 0u) ? _e57.x : _e57.y) & ~(_e64));
-    uint _e68 = x_17;
-    uint _e69 = flips;
-    return _e68 ^ _e69;
+    uint _e54 = x_17;
+    uint _e55 = nyq_lcg_draw(seed_18, dim_27);
+    uint _e56 = known;
+    x_17 = _e54 | (_e55 & ~(_e56));
+    uint _e60 = x_17;
+    uint _e61 = flips;
+    return _e60 ^ _e61;
 }
 
 NyqPmj02_ nyq_pmj02_(
@@ -2765,25 +2789,25 @@ NyqPmj02_ nyq_pmj02_(
 }
 
 uint nyq_pmj02_sample_u32_(
-    NyqPmj02_ s_65,
+    NyqPmj02_ s_67,
     uint index_13,
     uint dim_28
 ) {
     uint d_24 = dim_28 & 1u;
     uint _e6 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, index_13, d_24);
-    if (s_65.scrambled == 0u) {
+    if (s_67.scrambled == 0u) {
         return _e6;
     }
-    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_65.keys[d_24]);
+    uint _e13 = nyq_lk_hash(metal::reverse_bits(_e6), s_67.keys[d_24]);
     return metal::reverse_bits(_e13);
 }
 
 float nyq_pmj02_sample(
-    NyqPmj02_ s_66,
+    NyqPmj02_ s_68,
     uint index_14,
     uint dim_29
 ) {
-    uint _e3 = nyq_pmj02_sample_u32_(s_66, index_14, dim_29);
+    uint _e3 = nyq_pmj02_sample_u32_(s_68, index_14, dim_29);
     float _e4 = nyq_fraction_to_f32_(_e3);
     return _e4;
 }
@@ -2795,16 +2819,16 @@ NyqPmj02Sampler nyq_pmj02_sampler(
 }
 
 uint nyq_reverse16_(
-    uint m_1
+    uint m_2
 ) {
-    return metal::reverse_bits(m_1 & 65535u) >> 16u;
+    return metal::reverse_bits(m_2 & 65535u) >> 16u;
 }
 
 metal::uint3 nyq_pmj02_keys(
-    thread NyqPmj02Sampler& s_67,
+    thread NyqPmj02Sampler& s_69,
     metal::uint2 request
 ) {
-    metal::uint2 _e3 = s_67.pixel_key;
+    metal::uint2 _e3 = s_69.pixel_key;
     metal::uint2 _e7 = nyq_mul64_(request, metal::uint2(2135587861u, 2654435769u));
     metal::uint2 _e9 = nyq_mix64_(_e3 ^ _e7);
     metal::uint2 _e14 = nyq_mix64_(_e9 ^ metal::uint2(1781543545u, 28781u));
@@ -2813,10 +2837,10 @@ metal::uint3 nyq_pmj02_keys(
 
 metal::float2 nyq_pmj02_keyed_point(
     metal::uint3 k_10,
-    uint i_10
+    uint i_9
 ) {
-    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 0u);
-    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_10, 1u);
+    uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 0u);
+    uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 1u);
     uint _e10 = nyq_lk_hash(metal::reverse_bits(_e4), k_10.y);
     float _e11 = nyq_rev_to_f32_(_e10);
     uint _e14 = nyq_lk_hash(metal::reverse_bits(_e7), k_10.z);
@@ -2825,39 +2849,39 @@ metal::float2 nyq_pmj02_keyed_point(
 }
 
 uint nyq_pmj02_row(
-    thread NyqPmj02Sampler& s_68,
+    thread NyqPmj02Sampler& s_70,
     metal::uint3 k_11
 ) {
-    uint _e3 = s_68.index_rev;
+    uint _e3 = s_70.index_rev;
     uint _e5 = nyq_lk_hash(_e3, k_11.x);
     return _e5 >> 16u;
 }
 
 void nyq_pmj02_start(
-    thread NyqPmj02Sampler& s_69,
+    thread NyqPmj02Sampler& s_71,
     metal::uint2 pixel_16,
     uint sample_index_14,
     uint dim_30
 ) {
-    metal::uint2 _e6 = s_69.seed;
+    metal::uint2 _e6 = s_71.seed;
     metal::uint2 _e10 = nyq_hash3_(pixel_16, _e6, metal::uint2(1835675698u, 112u));
-    s_69.pixel_key = _e10;
+    s_71.pixel_key = _e10;
     uint _e12 = nyq_reverse16_(sample_index_14);
-    s_69.index_rev = _e12 << 16u;
-    s_69.dim = dim_30;
+    s_71.index_rev = _e12 << 16u;
+    s_71.dim = dim_30;
     return;
 }
 
 float nyq_pmj02_get_1d(
-    thread NyqPmj02Sampler& s_70
+    thread NyqPmj02Sampler& s_72
 ) {
-    uint d_25 = s_70.dim;
-    s_70.dim = d_25 + 1u;
+    uint d_25 = s_72.dim;
+    s_72.dim = d_25 + 1u;
     metal::uint2 _e6 = nyq_u64_(d_25);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
     metal::uint2 _e12 = nyq_add64_(_e8, metal::uint2(1u, 0u));
-    metal::uint3 _e13 = nyq_pmj02_keys(s_70, _e12);
-    uint _e14 = nyq_pmj02_row(s_70, _e13);
+    metal::uint3 _e13 = nyq_pmj02_keys(s_72, _e12);
+    uint _e14 = nyq_pmj02_row(s_72, _e13);
     uint _e15 = nyq_reverse16_(_e14);
     uint _e17 = nyq_lk_hash(_e15, _e13.y);
     float _e18 = nyq_rev_to_f32_(_e17);
@@ -2865,46 +2889,46 @@ float nyq_pmj02_get_1d(
 }
 
 metal::float2 nyq_pmj02_get_2d(
-    thread NyqPmj02Sampler& s_71
+    thread NyqPmj02Sampler& s_73
 ) {
-    uint d_26 = s_71.dim;
-    s_71.dim = d_26 + 2u;
+    uint d_26 = s_73.dim;
+    s_73.dim = d_26 + 2u;
     metal::uint2 _e6 = nyq_u64_(d_26);
     metal::uint2 _e8 = nyq_shl64_(_e6, 1u);
-    metal::uint3 _e9 = nyq_pmj02_keys(s_71, _e8);
+    metal::uint3 _e9 = nyq_pmj02_keys(s_73, _e8);
     if (d_26 == 0u) {
-        uint _e13 = s_71.index_rev;
+        uint _e13 = s_73.index_rev;
         uint _e16 = nyq_reverse16_(_e13 >> 16u);
         metal::float2 _e17 = nyq_pmj02_keyed_point(_e9, _e16);
         return _e17;
     }
-    uint _e18 = nyq_pmj02_row(s_71, _e9);
+    uint _e18 = nyq_pmj02_row(s_73, _e9);
     uint _e19 = nyq_reverse16_(_e18);
     metal::float2 _e20 = nyq_pmj02_keyed_point(_e9, _e19);
     return _e20;
 }
 
 metal::float2 nyq_pmj02_get_pixel_2d(
-    thread NyqPmj02Sampler& s_72
+    thread NyqPmj02Sampler& s_74
 ) {
-    uint _e3 = s_72.dim;
-    s_72.dim = metal::max(_e3, 2u);
-    metal::uint3 _e9 = nyq_pmj02_keys(s_72, metal::uint2(0u, 0u));
-    uint _e11 = s_72.index_rev;
+    uint _e3 = s_74.dim;
+    s_74.dim = metal::max(_e3, 2u);
+    metal::uint3 _e9 = nyq_pmj02_keys(s_74, metal::uint2(0u, 0u));
+    uint _e11 = s_74.index_rev;
     uint _e14 = nyq_reverse16_(_e11 >> 16u);
     metal::float2 _e15 = nyq_pmj02_keyed_point(_e9, _e14);
     return _e15;
 }
 
 NyqCameraSample nyq_pmj02_camera_sample(
-    thread NyqPmj02Sampler& s_73,
+    thread NyqPmj02Sampler& s_75,
     metal::uint2 pixel_17,
     uint sample_index_15
 ) {
-    nyq_pmj02_start(s_73, pixel_17, sample_index_15, 0u);
-    metal::float2 _e4 = nyq_pmj02_get_pixel_2d(s_73);
-    float _e5 = nyq_pmj02_get_1d(s_73);
-    metal::float2 _e6 = nyq_pmj02_get_2d(s_73);
+    nyq_pmj02_start(s_75, pixel_17, sample_index_15, 0u);
+    metal::float2 _e4 = nyq_pmj02_get_pixel_2d(s_75);
+    float _e5 = nyq_pmj02_get_1d(s_75);
+    metal::float2 _e6 = nyq_pmj02_get_2d(s_75);
     float _e9 = nyq_film_coordinate(pixel_17.x, _e4.x);
     float _e12 = nyq_film_coordinate(pixel_17.y, _e4.y);
     metal::float2 film_5 = metal::float2(_e9, _e12);
@@ -2912,10 +2936,10 @@ NyqCameraSample nyq_pmj02_camera_sample(
 }
 
 metal::uint2 nyq_sub64_(
-    metal::uint2 a_9,
-    metal::uint2 b_8
+    metal::uint2 a_8,
+    metal::uint2 b_7
 ) {
-    return metal::uint2(a_9.x - b_8.x, (a_9.y - b_8.y) - ((a_9.x < b_8.x) ? 1u : 0u));
+    return metal::uint2(a_8.x - b_7.x, (a_8.y - b_7.y) - ((a_8.x < b_7.x) ? 1u : 0u));
 }
 
 metal::uint3 nyq_divmod64_small(
@@ -2938,45 +2962,45 @@ metal::uint3 nyq_divmod64_small(
 }
 
 metal::uint4 nyq_add128_(
-    metal::uint4 a_10,
-    metal::uint4 b_9
+    metal::uint4 a_9,
+    metal::uint4 b_8
 ) {
-    metal::uint4 s_102 = a_10 + b_9;
-    metal::uint4 c_11 = metal::select(metal::uint4(0u), metal::uint4(1u), s_102 < a_10);
-    uint t1_2 = s_102.y + c_11.x;
+    metal::uint4 s_104 = a_9 + b_8;
+    metal::uint4 c_11 = metal::select(metal::uint4(0u), metal::uint4(1u), s_104 < a_9);
+    uint t1_2 = s_104.y + c_11.x;
     uint k1_ = c_11.y + ((t1_2 < c_11.x) ? 1u : 0u);
-    uint t2_1 = s_102.z + k1_;
+    uint t2_1 = s_104.z + k1_;
     uint k2_ = c_11.z + ((t2_1 < k1_) ? 1u : 0u);
-    return metal::uint4(s_102.x, t1_2, t2_1, s_102.w + k2_);
+    return metal::uint4(s_104.x, t1_2, t2_1, s_104.w + k2_);
 }
 
 metal::uint4 nyq_sub128_(
-    metal::uint4 a_11,
-    metal::uint4 b_10
+    metal::uint4 a_10,
+    metal::uint4 b_9
 ) {
-    metal::uint4 s_103 = a_11 - b_10;
-    metal::uint4 o = metal::select(metal::uint4(0u), metal::uint4(1u), a_11 < b_10);
-    uint t1_3 = s_103.y - o.x;
-    uint k1_1 = o.y + ((s_103.y < o.x) ? 1u : 0u);
-    uint t2_2 = s_103.z - k1_1;
-    uint k2_1 = o.z + ((s_103.z < k1_1) ? 1u : 0u);
-    return metal::uint4(s_103.x, t1_3, t2_2, s_103.w - k2_1);
+    metal::uint4 s_105 = a_10 - b_9;
+    metal::uint4 o = metal::select(metal::uint4(0u), metal::uint4(1u), a_10 < b_9);
+    uint t1_3 = s_105.y - o.x;
+    uint k1_1 = o.y + ((s_105.y < o.x) ? 1u : 0u);
+    uint t2_2 = s_105.z - k1_1;
+    uint k2_1 = o.z + ((s_105.z < k1_1) ? 1u : 0u);
+    return metal::uint4(s_105.x, t1_3, t2_2, s_105.w - k2_1);
 }
 
 bool nyq_lt128_(
-    metal::uint4 a_12,
-    metal::uint4 b_11
+    metal::uint4 a_11,
+    metal::uint4 b_10
 ) {
-    if (a_12.w != b_11.w) {
-        return a_12.w < b_11.w;
+    if (a_11.w != b_10.w) {
+        return a_11.w < b_10.w;
     }
-    if (a_12.z != b_11.z) {
-        return a_12.z < b_11.z;
+    if (a_11.z != b_10.z) {
+        return a_11.z < b_10.z;
     }
-    if (a_12.y != b_11.y) {
-        return a_12.y < b_11.y;
+    if (a_11.y != b_10.y) {
+        return a_11.y < b_10.y;
     }
-    return a_12.x < b_11.x;
+    return a_11.x < b_10.x;
 }
 
 metal::uint4 nyq_mul128_u32_(
@@ -2992,13 +3016,13 @@ metal::uint4 nyq_mul128_u32_(
 }
 
 metal::uint4 nyq_mul64_wide(
-    metal::uint2 a_13,
-    metal::uint2 b_12
+    metal::uint2 a_12,
+    metal::uint2 b_11
 ) {
-    metal::uint2 _e4 = nyq_mul_wide(a_13.x, b_12.x);
-    metal::uint2 _e7 = nyq_mul_wide(a_13.x, b_12.y);
-    metal::uint2 _e10 = nyq_mul_wide(a_13.y, b_12.x);
-    metal::uint2 _e13 = nyq_mul_wide(a_13.y, b_12.y);
+    metal::uint2 _e4 = nyq_mul_wide(a_12.x, b_11.x);
+    metal::uint2 _e7 = nyq_mul_wide(a_12.x, b_11.y);
+    metal::uint2 _e10 = nyq_mul_wide(a_12.y, b_11.x);
+    metal::uint2 _e13 = nyq_mul_wide(a_12.y, b_11.y);
     metal::uint4 outer = metal::uint4(_e4.x, _e4.y, _e13.x, _e13.y);
     metal::uint4 _e24 = nyq_add128_(outer, metal::uint4(0u, _e7.x, _e7.y, 0u));
     metal::uint4 _e30 = nyq_add128_(_e24, metal::uint4(0u, _e10.x, _e10.y, 0u));
@@ -3022,16 +3046,16 @@ uint nyq_clz128_(
 
 metal::uint4 nyq_shl128_(
     metal::uint4 x_21,
-    uint s_74
+    uint s_76
 ) {
     metal::uint4 v_5 = {};
     uint k_13 = {};
     v_5 = x_21;
-    k_13 = s_74;
-    uint2 loop_bound_23 = uint2(4294967295u);
+    k_13 = s_76;
+    uint2 loop_bound_24 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_23 == uint2(0u))) { break; }
-        loop_bound_23 -= uint2(loop_bound_23.y == 0u, 1u);
+        if (metal::all(loop_bound_24 == uint2(0u))) { break; }
+        loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
         uint _e4 = k_13;
         if (_e4 >= 32u) {
         } else {
@@ -3075,7 +3099,7 @@ uint nyq_round_bits(
 ) {
     bool local_12 = {};
     bool local_13 = {};
-    uint m_2 = {};
+    uint m_3 = {};
     uint ml = {};
     uint mh = {};
     bool local_14 = {};
@@ -3137,12 +3161,12 @@ uint nyq_round_bits(
         }
         uint _e79 = mh;
         uint _e82 = ml;
-        m_2 = (_e79 << 3u) | (_e82 >> 29u);
+        m_3 = (_e79 << 3u) | (_e82 >> 29u);
         uint _e86 = ml;
         uint r2_ = _e86 & 536870911u;
         if (!((r2_ > 268435456u))) {
             if (r2_ == 268435456u) {
-                uint _e98 = m_2;
+                uint _e98 = m_3;
                 local_18 = (_e98 & 1u) == 1u;
             } else {
                 local_18 = false;
@@ -3154,11 +3178,11 @@ uint nyq_round_bits(
         }
         bool _e106 = local_17;
         if (_e106) {
-            uint _e107 = m_2;
-            m_2 = _e107 + 1u;
+            uint _e107 = m_3;
+            m_3 = _e107 + 1u;
         }
     } else {
-        m_2 = _e10.w >> 8u;
+        m_3 = _e10.w >> 8u;
         uint r_16 = _e10.w & 255u;
         if (!((r_16 > 128u))) {
             if (r_16 == 128u) {
@@ -3169,7 +3193,7 @@ uint nyq_round_bits(
                 }
                 bool _e132 = local_21;
                 if (!(_e132)) {
-                    uint _e136 = m_2;
+                    uint _e136 = m_3;
                     local_22 = (_e136 & 1u) == 1u;
                 } else {
                     local_22 = true;
@@ -3186,11 +3210,11 @@ uint nyq_round_bits(
         }
         bool _e146 = local_19;
         if (_e146) {
-            uint _e147 = m_2;
-            m_2 = _e147 + 1u;
+            uint _e147 = m_3;
+            m_3 = _e147 + 1u;
         }
     }
-    uint _e155 = m_2;
+    uint _e155 = m_3;
     return ((static_cast<uint>(as_type<int>(as_type<uint>(e_4) + as_type<uint>(254))) << 23u) + _e155) - 8388608u;
 }
 
@@ -3204,19 +3228,19 @@ NyqRounding nyq_divide(
     bool local_23 = {};
     bool local_24 = {};
     metal::uint2 r_11 = {};
-    uint i_11 = 0u;
+    uint i_10 = 0u;
     bool local_25 = {};
     bool local_26 = {};
     bool local_27 = {};
     metal::uint4 r_12 = {};
-    uint i_12 = 0u;
+    uint i_11 = 0u;
     uint tw = twice_1 ? 1u : 0u;
     if (metal::all(num_1 == metal::uint4(0u))) {
         return NyqRounding {metal::uint4(0u), 0, 0u, tw, 0u};
     }
     uint _e16 = nyq_clz128_(num_1);
     uint _e17 = nyq_clz128_(den_1);
-    uint s_104 = _e16 - _e17;
+    uint s_106 = _e16 - _e17;
     uint steps = twice_1 ? 55u : 26u;
     if (den_1.z == 0u) {
         local_23 = den_1.w == 0u;
@@ -3232,19 +3256,19 @@ NyqRounding nyq_divide(
     bool _e44 = local_24;
     if (_e44) {
         metal::uint2 d_27 = den_1.xy;
-        metal::uint4 _e46 = nyq_shl128_(num_1, s_104);
+        metal::uint4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
-        uint2 loop_bound_24 = uint2(4294967295u);
-        bool loop_init_17 = true;
+        uint2 loop_bound_25 = uint2(4294967295u);
+        bool loop_init_18 = true;
         while(true) {
-            if (metal::all(loop_bound_24 == uint2(0u))) { break; }
-            loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-            if (!loop_init_17) {
-                uint _e109 = i_11;
-                i_11 = _e109 + 1u;
+            if (metal::all(loop_bound_25 == uint2(0u))) { break; }
+            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
+            if (!loop_init_18) {
+                uint _e109 = i_10;
+                i_10 = _e109 + 1u;
             }
-            loop_init_17 = false;
-            uint _e51 = i_11;
+            loop_init_18 = false;
+            uint _e51 = i_10;
             if (_e51 < steps) {
             } else {
                 break;
@@ -3292,19 +3316,19 @@ NyqRounding nyq_divide(
         bool _e123 = local_27;
         sticky_1 = _e123;
     } else {
-        metal::uint4 _e124 = nyq_shl128_(num_1, s_104);
+        metal::uint4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
-        uint2 loop_bound_25 = uint2(4294967295u);
-        bool loop_init_18 = true;
+        uint2 loop_bound_26 = uint2(4294967295u);
+        bool loop_init_19 = true;
         while(true) {
-            if (metal::all(loop_bound_25 == uint2(0u))) { break; }
-            loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_18) {
-                uint _e186 = i_12;
-                i_12 = _e186 + 1u;
+            if (metal::all(loop_bound_26 == uint2(0u))) { break; }
+            loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
+            if (!loop_init_19) {
+                uint _e186 = i_11;
+                i_11 = _e186 + 1u;
             }
-            loop_init_18 = false;
-            uint _e128 = i_12;
+            loop_init_19 = false;
+            uint _e128 = i_11;
             if (_e128 < steps) {
             } else {
                 break;
@@ -3338,7 +3362,7 @@ NyqRounding nyq_divide(
     }
     metal::uint2 _e193 = q_2;
     bool _e203 = sticky_1;
-    return NyqRounding {metal::uint4(_e193, 0u, 0u), as_type<int>(as_type<uint>(1) - as_type<uint>(static_cast<int>(steps + s_104))), _e203 ? 1u : 0u, tw, 0u};
+    return NyqRounding {metal::uint4(_e193, 0u, 0u), as_type<int>(as_type<uint>(1) - as_type<uint>(static_cast<int>(steps + s_106))), _e203 ? 1u : 0u, tw, 0u};
 }
 
 uint nyq_prime(
@@ -3352,42 +3376,42 @@ uint nyq_prime(
 
 NyqRounding nyq_phi_short(
     uint t_3,
-    uint a_14,
+    uint a_13,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint x_22 = {};
     metal::uint2 rev = metal::uint2(0u, 0u);
-    uint i_13 = 0u;
-    uint b_18 = nyq_halton_bases[t_3];
-    uint c_12 = naga_div(35u - metal::clz(a_14), 4u) - 1u;
+    uint i_12 = 0u;
+    uint b_17 = nyq_halton_bases[t_3];
+    uint c_12 = naga_div(35u - metal::clz(a_13), 4u) - 1u;
     uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_12, 4u)];
     uint places = (_e19 >> (8u * naga_mod(c_12, 4u))) & 255u;
     uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_12)];
     uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_12)];
-    x_22 = a_14;
-    uint2 loop_bound_26 = uint2(4294967295u);
-    bool loop_init_19 = true;
+    x_22 = a_13;
+    uint2 loop_bound_27 = uint2(4294967295u);
+    bool loop_init_20 = true;
     while(true) {
-        if (metal::all(loop_bound_26 == uint2(0u))) { break; }
-        loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-        if (!loop_init_19) {
-            uint _e64 = i_13;
-            i_13 = _e64 + 1u;
+        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
+        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (!loop_init_20) {
+            uint _e64 = i_12;
+            i_12 = _e64 + 1u;
         }
-        loop_init_19 = false;
-        uint _e50 = i_13;
+        loop_init_20 = false;
+        uint _e50 = i_12;
         if (_e50 < places) {
         } else {
             break;
         }
         {
             uint _e52 = x_22;
-            uint q_5 = naga_div(_e52, b_18);
+            uint q_5 = naga_div(_e52, b_17);
             metal::uint2 _e54 = rev;
-            metal::uint3 _e55 = nyq_mul64x32_(_e54, b_18);
+            metal::uint3 _e55 = nyq_mul64x32_(_e54, b_17);
             uint _e57 = x_22;
-            metal::uint2 _e62 = nyq_add64_(_e55.xy, metal::uint2(_e57 - (q_5 * b_18), 0u));
+            metal::uint2 _e62 = nyq_add64_(_e55.xy, metal::uint2(_e57 - (q_5 * b_17), 0u));
             rev = _e62;
             x_22 = q_5;
         }
@@ -3401,7 +3425,7 @@ NyqRounding nyq_phi_short(
 
 NyqFraction nyq_phi_fraction(
     uint t_4,
-    metal::uint2 a_15,
+    metal::uint2 a_14,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -3411,15 +3435,15 @@ NyqFraction nyq_phi_fraction(
     bool local_28 = {};
     uint c_3 = {};
     uint rev_1 = {};
-    uint i_14 = {};
-    uint b_19 = nyq_halton_bases[t_4];
+    uint i_13 = {};
+    uint b_18 = nyq_halton_bases[t_4];
     uint chunk = nyq_halton_bases[t_4 + 4u];
     uint run = nyq_halton_bases[t_4 + 5u];
-    x_23 = a_15;
-    uint2 loop_bound_27 = uint2(4294967295u);
+    x_23 = a_14;
+    uint2 loop_bound_28 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_27 == uint2(0u))) { break; }
-        loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
+        if (metal::all(loop_bound_28 == uint2(0u))) { break; }
+        loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
         uint _e26 = x_23.x;
         if (!((_e26 != 0u))) {
             uint _e33 = x_23.y;
@@ -3438,28 +3462,28 @@ NyqFraction nyq_phi_fraction(
             x_23 = _e39.xy;
             c_3 = _e39.z;
             rev_1 = 0u;
-            i_14 = 0u;
-            uint2 loop_bound_28 = uint2(4294967295u);
-            bool loop_init_20 = true;
+            i_13 = 0u;
+            uint2 loop_bound_29 = uint2(4294967295u);
+            bool loop_init_21 = true;
             while(true) {
-                if (metal::all(loop_bound_28 == uint2(0u))) { break; }
-                loop_bound_28 -= uint2(loop_bound_28.y == 0u, 1u);
-                if (!loop_init_20) {
-                    uint _e58 = i_14;
-                    i_14 = _e58 + 1u;
+                if (metal::all(loop_bound_29 == uint2(0u))) { break; }
+                loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+                if (!loop_init_21) {
+                    uint _e58 = i_13;
+                    i_13 = _e58 + 1u;
                 }
-                loop_init_20 = false;
-                uint _e47 = i_14;
+                loop_init_21 = false;
+                uint _e47 = i_13;
                 if (_e47 < run) {
                 } else {
                     break;
                 }
                 {
                     uint _e49 = c_3;
-                    uint q_6 = naga_div(_e49, b_19);
+                    uint q_6 = naga_div(_e49, b_18);
                     uint _e51 = rev_1;
                     uint _e53 = c_3;
-                    rev_1 = (_e51 * b_19) + (_e53 - (q_6 * b_19));
+                    rev_1 = (_e51 * b_18) + (_e53 - (q_6 * b_18));
                     c_3 = q_6;
                 }
             }
@@ -3480,7 +3504,7 @@ NyqFraction nyq_phi_fraction(
 
 NyqFraction nyq_permuted_fraction(
     uint t_5,
-    metal::uint2 a_16,
+    metal::uint2 a_15,
     metal::uint2 seed_21,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
@@ -3493,21 +3517,21 @@ NyqFraction nyq_permuted_fraction(
     uint c_4 = {};
     uint part = {};
     uint scale = {};
-    uint i_15 = {};
+    uint i_14 = {};
     bool local_31 = {};
     bool local_32 = {};
     bool local_33 = {};
-    uint b_20 = nyq_halton_bases[t_5];
+    uint b_19 = nyq_halton_bases[t_5];
     uint chunk_1 = nyq_halton_bases[t_5 + 4u];
     uint run_1 = nyq_halton_bases[t_5 + 5u];
-    metal::uint2 _e16 = nyq_u64_(b_20);
+    metal::uint2 _e16 = nyq_u64_(b_19);
     metal::uint2 _e17 = nyq_hash2_(seed_21, _e16);
-    NyqPermutation _e21 = nyq_permutation(b_20, _e17.x ^ _e17.y);
-    x_24 = a_16;
-    uint2 loop_bound_29 = uint2(4294967295u);
+    NyqPermutation _e21 = nyq_permutation(b_19, _e17.x ^ _e17.y);
+    x_24 = a_15;
+    uint2 loop_bound_30 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_29 == uint2(0u))) { break; }
-        loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
+        if (metal::all(loop_bound_30 == uint2(0u))) { break; }
+        loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
         uint _e33 = x_24.x;
         if (!((_e33 != 0u))) {
             uint _e40 = x_24.y;
@@ -3535,18 +3559,18 @@ NyqFraction nyq_permuted_fraction(
             c_4 = _e46.z;
             part = 0u;
             scale = 1u;
-            i_15 = 0u;
-            uint2 loop_bound_30 = uint2(4294967295u);
-            bool loop_init_21 = true;
+            i_14 = 0u;
+            uint2 loop_bound_31 = uint2(4294967295u);
+            bool loop_init_22 = true;
             while(true) {
-                if (metal::all(loop_bound_30 == uint2(0u))) { break; }
-                loop_bound_30 -= uint2(loop_bound_30.y == 0u, 1u);
-                if (!loop_init_21) {
-                    uint _e89 = i_15;
-                    i_15 = _e89 + 1u;
+                if (metal::all(loop_bound_31 == uint2(0u))) { break; }
+                loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+                if (!loop_init_22) {
+                    uint _e89 = i_14;
+                    i_14 = _e89 + 1u;
                 }
-                loop_init_21 = false;
-                uint _e68 = i_15;
+                loop_init_22 = false;
+                uint _e68 = i_14;
                 if (_e68 < run_1) {
                 } else {
                     break;
@@ -3563,13 +3587,13 @@ NyqFraction nyq_permuted_fraction(
                         break;
                     }
                     uint _e77 = c_4;
-                    uint q_7 = naga_div(_e77, b_20);
+                    uint q_7 = naga_div(_e77, b_19);
                     uint _e79 = part;
                     uint _e81 = c_4;
-                    uint _e84 = nyq_permutation_apply(_e21, _e81 - (q_7 * b_20));
-                    part = (_e79 * b_20) + _e84;
+                    uint _e84 = nyq_permutation_apply(_e21, _e81 - (q_7 * b_19));
+                    part = (_e79 * b_19) + _e84;
                     uint _e86 = scale;
-                    scale = _e86 * b_20;
+                    scale = _e86 * b_19;
                     c_4 = q_7;
                 }
             }
@@ -3587,11 +3611,11 @@ NyqFraction nyq_permuted_fraction(
     }
     uint _e104 = nyq_permutation_apply(_e21, 0u);
     metal::uint4 _e105 = num_3;
-    metal::uint4 _e108 = nyq_mul128_u32_(_e105, b_20 - 1u);
+    metal::uint4 _e108 = nyq_mul128_u32_(_e105, b_19 - 1u);
     metal::uint4 _e113 = nyq_add128_(_e108, metal::uint4(_e104, 0u, 0u, 0u));
     num_3 = _e113;
     metal::uint4 _e114 = den_3;
-    metal::uint4 _e117 = nyq_mul128_u32_(_e114, b_20 - 1u);
+    metal::uint4 _e117 = nyq_mul128_u32_(_e114, b_19 - 1u);
     den_3 = _e117;
     uint _e119 = den_3.w;
     if (_e119 == 0u) {
@@ -3610,12 +3634,12 @@ NyqFraction nyq_permuted_fraction(
     bool small = local_33;
     metal::uint4 _e138 = num_3;
     metal::uint4 _e139 = den_3;
-    return NyqFraction {_e138, _e139, small ? 1u : 0u, (_e104 == (b_20 - 1u)) ? 1u : 0u};
+    return NyqFraction {_e138, _e139, small ? 1u : 0u, (_e104 == (b_19 - 1u)) ? 1u : 0u};
 }
 
 NyqFraction nyq_nested_fraction(
     uint d_4,
-    metal::uint2 a_17,
+    metal::uint2 a_16,
     metal::uint2 seed_22,
     bool affine,
     device type_4 const& nyq_halton_bases,
@@ -3630,14 +3654,14 @@ NyqFraction nyq_nested_fraction(
     uint digit_1 = {};
     bool local_34 = {};
     uint out_2 = {};
-    uint b_21 = nyq_halton_bases[NYQ_HALTON_WORDS * d_4];
+    uint b_20 = nyq_halton_bases[NYQ_HALTON_WORDS * d_4];
     metal::uint2 _e9 = nyq_u64_(d_4);
     metal::uint2 _e13 = nyq_hash3_(seed_22, _e9, affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM);
-    rest = a_17;
-    uint2 loop_bound_31 = uint2(4294967295u);
+    rest = a_16;
+    uint2 loop_bound_32 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_31 == uint2(0u))) { break; }
-        loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
+        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
+        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
         uint _e30 = den_4.y;
         if (_e30 == 0u) {
         } else {
@@ -3656,14 +3680,14 @@ NyqFraction nyq_nested_fraction(
             bool _e51 = local_34;
             if (_e51) {
                 metal::uint2 _e52 = rest;
-                metal::uint3 _e53 = nyq_divmod64_small(_e52, b_21);
+                metal::uint3 _e53 = nyq_divmod64_small(_e52, b_20);
                 next = _e53.xy;
                 digit_1 = _e53.z;
             }
             metal::uint2 _e56 = rest;
             metal::uint2 _e57 = pow;
             metal::uint2 _e58 = nyq_mul64_(_e56, _e57);
-            metal::uint2 _e59 = nyq_sub64_(a_17, _e58);
+            metal::uint2 _e59 = nyq_sub64_(a_16, _e58);
             metal::uint2 _e61 = nyq_mul64_(_e59, NYQ_OWEN_PREFIX_MUL);
             uint _e63 = level;
             metal::uint2 _e64 = nyq_u64_(_e63);
@@ -3673,38 +3697,38 @@ NyqFraction nyq_nested_fraction(
             metal::uint2 _e69 = next;
             rest = _e69;
             metal::uint2 _e70 = pow;
-            metal::uint2 _e71 = nyq_u64_(b_21);
+            metal::uint2 _e71 = nyq_u64_(b_20);
             metal::uint2 _e72 = nyq_mul64_(_e70, _e71);
             pow = _e72;
             uint _e73 = level;
             level = _e73 + 1u;
             out_2 = uint {};
             if (affine) {
-                metal::uint3 _e78 = nyq_mul64x32_(_e68, b_21);
-                metal::uint3 _e83 = nyq_mul64x32_(_e78.xy, b_21 - 1u);
-                uint m_7 = 1u + _e83.z;
+                metal::uint3 _e78 = nyq_mul64x32_(_e68, b_20);
+                metal::uint3 _e83 = nyq_mul64x32_(_e78.xy, b_20 - 1u);
+                uint m_8 = 1u + _e83.z;
                 uint _e86 = digit_1;
-                out_2 = naga_mod((m_7 * _e86) + _e78.z, b_21);
+                out_2 = naga_mod((m_8 * _e86) + _e78.z, b_20);
             } else {
-                if (b_21 <= 16u) {
-                    metal::uint2 _e93 = nyq_packed_table(b_21, _e68);
+                if (b_20 <= 16u) {
+                    metal::uint2 _e93 = nyq_packed_table(b_20, _e68);
                     uint _e95 = digit_1;
                     uint _e97 = nyq_nibble(_e93, 4u * _e95);
                     out_2 = _e97;
                 } else {
-                    NyqPermutation _e101 = nyq_permutation(b_21, _e68.x ^ _e68.y);
+                    NyqPermutation _e101 = nyq_permutation(b_20, _e68.x ^ _e68.y);
                     uint _e102 = digit_1;
                     uint _e103 = nyq_permutation_apply(_e101, _e102);
                     out_2 = _e103;
                 }
             }
             metal::uint2 _e104 = num_4;
-            metal::uint3 _e105 = nyq_mul64x32_(_e104, b_21);
+            metal::uint3 _e105 = nyq_mul64x32_(_e104, b_20);
             uint _e107 = out_2;
             metal::uint2 _e110 = nyq_add64_(_e105.xy, metal::uint2(_e107, 0u));
             num_4 = _e110;
             metal::uint2 _e111 = den_4;
-            metal::uint3 _e112 = nyq_mul64x32_(_e111, b_21);
+            metal::uint3 _e112 = nyq_mul64x32_(_e111, b_20);
             den_4 = _e112.xy;
         }
     }
@@ -3715,7 +3739,7 @@ NyqFraction nyq_nested_fraction(
 
 float nyq_radical_inverse_scrambled(
     uint dim_32,
-    metal::uint2 a_18,
+    metal::uint2 a_17,
     metal::uint2 seed_23,
     uint how_2,
     device type_4 const& nyq_halton_bases,
@@ -3728,7 +3752,7 @@ float nyq_radical_inverse_scrambled(
     NyqFraction f = {};
     uint bits_2 = {};
     uint d_28 = naga_mod(dim_32, NYQ_PRIME_COUNT);
-    uint t_8 = NYQ_HALTON_WORDS * d_28;
+    uint t_7 = NYQ_HALTON_WORDS * d_28;
     if (how_2 == NYQ_SCRAMBLE_NONE) {
         local_35 = d_28 == 0u;
     } else {
@@ -3736,36 +3760,36 @@ float nyq_radical_inverse_scrambled(
     }
     bool _e16 = local_35;
     if (_e16) {
-        r_13 = NyqRounding {metal::uint4(metal::reverse_bits(a_18.y), metal::reverse_bits(a_18.x), 0u, 0u), -64, 0u, 0u, 0u};
+        r_13 = NyqRounding {metal::uint4(metal::reverse_bits(a_17.y), metal::reverse_bits(a_17.x), 0u, 0u), -64, 0u, 0u, 0u};
     } else {
         if (how_2 == NYQ_SCRAMBLE_NONE) {
-            local_36 = a_18.y == 0u;
+            local_36 = a_17.y == 0u;
         } else {
             local_36 = false;
         }
         bool _e37 = local_36;
         if (_e37) {
-            uint _e45 = nyq_halton_bases[t_8 + 1u];
-            local_37 = a_18.x < _e45;
+            uint _e45 = nyq_halton_bases[t_7 + 1u];
+            local_37 = a_17.x < _e45;
         } else {
             local_37 = false;
         }
         bool _e48 = local_37;
         if (_e48) {
-            if (a_18.x != 0u) {
-                NyqRounding _e53 = nyq_phi_short(t_8, a_18.x, nyq_halton_bases, _buffer_sizes);
+            if (a_17.x != 0u) {
+                NyqRounding _e53 = nyq_phi_short(t_7, a_17.x, nyq_halton_bases, _buffer_sizes);
                 r_13 = _e53;
             }
         } else {
             if (how_2 == NYQ_SCRAMBLE_NONE) {
-                NyqFraction _e57 = nyq_phi_fraction(t_8, a_18, nyq_halton_bases, _buffer_sizes);
+                NyqFraction _e57 = nyq_phi_fraction(t_7, a_17, nyq_halton_bases, _buffer_sizes);
                 f = _e57;
             } else {
                 if (how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
-                    NyqFraction _e60 = nyq_permuted_fraction(t_8, a_18, seed_23, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e60 = nyq_permuted_fraction(t_7, a_17, seed_23, nyq_halton_bases, _buffer_sizes);
                     f = _e60;
                 } else {
-                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_18, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_17, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
                     f = _e63;
                 }
             }
@@ -3800,44 +3824,44 @@ float nyq_radical_inverse_scrambled(
 
 float nyq_radical_inverse(
     uint dim_33,
-    metal::uint2 a_19,
+    metal::uint2 a_18,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, metal::uint2(0u, 0u), NYQ_SCRAMBLE_NONE, nyq_halton_bases, _buffer_sizes);
+    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_18, metal::uint2(0u, 0u), NYQ_SCRAMBLE_NONE, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 float nyq_scrambled_radical_inverse(
     uint dim_34,
-    metal::uint2 a_20,
+    metal::uint2 a_19,
     metal::uint2 seed_24,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_19, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
 float nyq_owen_scrambled_radical_inverse(
     uint dim_35,
-    metal::uint2 a_21,
+    metal::uint2 a_20,
     metal::uint2 seed_25,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_20, seed_25, NYQ_SCRAMBLE_OWEN, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
 float nyq_fast_owen_scrambled_radical_inverse(
     uint dim_36,
-    metal::uint2 a_22,
+    metal::uint2 a_21,
     metal::uint2 seed_26,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_21, seed_26, NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
@@ -3870,20 +3894,20 @@ int naga_mod(int lhs, int rhs) {
 }
 
 uint nyq_mod_inverse(
-    uint a_23,
+    uint a_22,
     uint n_6
 ) {
     int r0_ = {};
     int r1_ = {};
     int t0_ = 0;
     int t1_ = 1;
-    int m_3 = {};
+    int m_4 = {};
     r0_ = static_cast<int>(n_6);
-    r1_ = static_cast<int>(naga_mod(a_23, n_6));
-    uint2 loop_bound_32 = uint2(4294967295u);
+    r1_ = static_cast<int>(naga_mod(a_22, n_6));
+    uint2 loop_bound_33 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_32 == uint2(0u))) { break; }
-        loop_bound_32 -= uint2(loop_bound_32.y == 0u, 1u);
+        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
+        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
         int _e11 = r1_;
         if (_e11 != 0) {
         } else {
@@ -3908,27 +3932,27 @@ uint nyq_mod_inverse(
         }
     }
     int _e27 = t0_;
-    m_3 = naga_mod(_e27, static_cast<int>(n_6));
-    int _e31 = m_3;
+    m_4 = naga_mod(_e27, static_cast<int>(n_6));
+    int _e31 = m_4;
     if (_e31 < 0) {
-        int _e34 = m_3;
-        m_3 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_6)));
+        int _e34 = m_4;
+        m_4 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_6)));
     }
-    int _e37 = m_3;
+    int _e37 = m_4;
     return static_cast<uint>(_e37);
 }
 
 metal::uint2 nyq_halton_scale(
     uint extent,
-    uint b_13
+    uint b_12
 ) {
     uint scale_1 = 1u;
     uint e_1 = 0u;
     uint goal = metal::min(extent, 128u);
-    uint2 loop_bound_33 = uint2(4294967295u);
+    uint2 loop_bound_34 = uint2(4294967295u);
     while(true) {
-        if (metal::all(loop_bound_33 == uint2(0u))) { break; }
-        loop_bound_33 -= uint2(loop_bound_33.y == 0u, 1u);
+        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
+        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
         uint _e8 = scale_1;
         if (_e8 < goal) {
         } else {
@@ -3936,7 +3960,7 @@ metal::uint2 nyq_halton_scale(
         }
         {
             uint _e10 = scale_1;
-            scale_1 = _e10 * b_13;
+            scale_1 = _e10 * b_12;
             uint _e12 = e_1;
             e_1 = _e12 + 1u;
         }
@@ -3962,7 +3986,7 @@ NyqHaltonSampler nyq_halton_sampler(
 }
 
 uint nyq_inverse_radical_inverse(
-    uint b_14,
+    uint b_13,
     uint inverse_in,
     uint n_7
 ) {
@@ -3971,16 +3995,16 @@ uint nyq_inverse_radical_inverse(
     uint done = 0u;
     uint k_14 = {};
     inverse_1 = inverse_in;
-    uint2 loop_bound_34 = uint2(4294967295u);
-    bool loop_init_22 = true;
+    uint2 loop_bound_35 = uint2(4294967295u);
+    bool loop_init_23 = true;
     while(true) {
-        if (metal::all(loop_bound_34 == uint2(0u))) { break; }
-        loop_bound_34 -= uint2(loop_bound_34.y == 0u, 1u);
-        if (!loop_init_22) {
+        if (metal::all(loop_bound_35 == uint2(0u))) { break; }
+        loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
+        if (!loop_init_23) {
             uint _e32 = done;
             done = _e32 + 1u;
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e8 = done;
         if (_e8 < n_7) {
         } else {
@@ -3991,16 +4015,16 @@ uint nyq_inverse_radical_inverse(
             if (_e10 == 0u) {
                 uint _e13 = done;
                 k_14 = _e13;
-                uint2 loop_bound_35 = uint2(4294967295u);
-                bool loop_init_23 = true;
+                uint2 loop_bound_36 = uint2(4294967295u);
+                bool loop_init_24 = true;
                 while(true) {
-                    if (metal::all(loop_bound_35 == uint2(0u))) { break; }
-                    loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-                    if (!loop_init_23) {
+                    if (metal::all(loop_bound_36 == uint2(0u))) { break; }
+                    loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
+                    if (!loop_init_24) {
                         uint _e20 = k_14;
                         k_14 = _e20 + 1u;
                     }
-                    loop_init_23 = false;
+                    loop_init_24 = false;
                     uint _e15 = k_14;
                     if (_e15 < n_7) {
                     } else {
@@ -4008,17 +4032,17 @@ uint nyq_inverse_radical_inverse(
                     }
                     {
                         uint _e17 = index_16;
-                        index_16 = _e17 * b_14;
+                        index_16 = _e17 * b_13;
                     }
                 }
                 uint _e22 = index_16;
                 return _e22;
             }
             uint _e23 = inverse_1;
-            uint q_9 = naga_div(_e23, b_14);
+            uint q_9 = naga_div(_e23, b_13);
             uint _e25 = index_16;
             uint _e27 = inverse_1;
-            index_16 = (_e25 * b_14) + (_e27 - (q_9 * b_14));
+            index_16 = (_e25 * b_13) + (_e27 - (q_9 * b_13));
             inverse_1 = q_9;
         }
     }
@@ -4027,15 +4051,15 @@ uint nyq_inverse_radical_inverse(
 }
 
 metal::uint2 nyq_halton_sampler_index(
-    thread NyqHaltonSampler& s_75,
+    thread NyqHaltonSampler& s_77,
     metal::uint2 pixel_18,
     uint sample_index_16
 ) {
     uint offset_1 = {};
-    uint stride = s_75.stride;
-    metal::uint2 scales_1 = s_75.scales;
-    metal::uint2 exponents = s_75.exponents;
-    metal::uint2 basis_1 = s_75.basis;
+    uint stride = s_77.stride;
+    metal::uint2 scales_1 = s_77.scales;
+    metal::uint2 exponents = s_77.exponents;
+    metal::uint2 basis_1 = s_77.basis;
     uint _e16 = nyq_inverse_radical_inverse(2u, naga_mod(pixel_18.x, scales_1.x), exponents.x);
     offset_1 = naga_mod(_e16 * basis_1.x, stride);
     uint _e26 = nyq_inverse_radical_inverse(3u, naga_mod(pixel_18.y, scales_1.y), exponents.y);
@@ -4049,76 +4073,76 @@ metal::uint2 nyq_halton_sampler_index(
 }
 
 float nyq_halton_sampler_value(
-    thread NyqHaltonSampler& s_76,
+    thread NyqHaltonSampler& s_78,
     uint dim_38,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::uint2 a_24 = {};
+    metal::uint2 a_23 = {};
     uint d_29 = naga_mod(dim_38, NYQ_PRIME_COUNT);
-    metal::uint2 index_19 = s_76.index;
-    a_24 = index_19;
+    metal::uint2 index_19 = s_78.index;
+    a_23 = index_19;
     if (d_29 == 0u) {
-        uint e_6 = s_76.exponents.x;
+        uint e_6 = s_78.exponents.x;
         if (e_6 != 0u) {
             metal::uint2 _e14 = nyq_shr64_(index_19, e_6);
-            a_24 = _e14;
+            a_23 = _e14;
         }
     } else {
         if (d_29 == 1u) {
-            uint _e19 = s_76.scales.y;
+            uint _e19 = s_78.scales.y;
             metal::uint3 _e20 = nyq_divmod64_small(index_19, _e19);
-            a_24 = _e20.xy;
+            a_23 = _e20.xy;
         }
     }
-    metal::uint2 _e22 = a_24;
-    metal::uint2 _e24 = s_76.seed;
-    uint _e26 = s_76.scramble;
+    metal::uint2 _e22 = a_23;
+    metal::uint2 _e24 = s_78.seed;
+    uint _e26 = s_78.scramble;
     float _e27 = nyq_radical_inverse_scrambled(d_29, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
     return _e27;
 }
 
 void nyq_halton_sampler_start(
-    thread NyqHaltonSampler& s_77,
+    thread NyqHaltonSampler& s_79,
     metal::uint2 pixel_19,
     uint sample_index_17,
     uint dim_39
 ) {
-    metal::uint2 _e5 = nyq_halton_sampler_index(s_77, pixel_19, sample_index_17);
-    s_77.index = _e5;
-    s_77.dim = dim_39;
+    metal::uint2 _e5 = nyq_halton_sampler_index(s_79, pixel_19, sample_index_17);
+    s_79.index = _e5;
+    s_79.dim = dim_39;
     return;
 }
 
 float nyq_halton_sampler_get_1d(
-    thread NyqHaltonSampler& s_78,
+    thread NyqHaltonSampler& s_80,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_30 = s_78.dim;
-    s_78.dim = d_30 + 1u;
-    float _e6 = nyq_halton_sampler_value(s_78, d_30, nyq_halton_bases, _buffer_sizes);
+    uint d_30 = s_80.dim;
+    s_80.dim = d_30 + 1u;
+    float _e6 = nyq_halton_sampler_value(s_80, d_30, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_halton_sampler_pair(
-    thread NyqHaltonSampler& s_79,
+    thread NyqHaltonSampler& s_81,
     uint dim_40,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     metal::float2 v_6 = metal::float2(0.0, 0.0);
     uint k_15 = 0u;
-    uint2 loop_bound_36 = uint2(4294967295u);
-    bool loop_init_24 = true;
+    uint2 loop_bound_37 = uint2(4294967295u);
+    bool loop_init_25 = true;
     while(true) {
-        if (metal::all(loop_bound_36 == uint2(0u))) { break; }
-        loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-        if (!loop_init_24) {
+        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
+        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
+        if (!loop_init_25) {
             uint _e17 = k_15;
             k_15 = _e17 + 1u;
         }
-        loop_init_24 = false;
+        loop_init_25 = false;
         uint _e8 = k_15;
         if (_e8 < 2u) {
         } else {
@@ -4127,7 +4151,7 @@ metal::float2 nyq_halton_sampler_pair(
         {
             uint _e11 = k_15;
             uint _e13 = k_15;
-            float _e15 = nyq_halton_sampler_value(s_79, dim_40 + _e13, nyq_halton_bases, _buffer_sizes);
+            float _e15 = nyq_halton_sampler_value(s_81, dim_40 + _e13, nyq_halton_bases, _buffer_sizes);
             v_6[_e11] = _e15;
         }
     }
@@ -4136,29 +4160,29 @@ metal::float2 nyq_halton_sampler_pair(
 }
 
 metal::float2 nyq_halton_sampler_get_2d(
-    thread NyqHaltonSampler& s_80,
+    thread NyqHaltonSampler& s_82,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint d_31 = s_80.dim;
-    s_80.dim = d_31 + 2u;
-    metal::float2 _e6 = nyq_halton_sampler_pair(s_80, d_31, nyq_halton_bases, _buffer_sizes);
+    uint d_31 = s_82.dim;
+    s_82.dim = d_31 + 2u;
+    metal::float2 _e6 = nyq_halton_sampler_pair(s_82, d_31, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 metal::float2 nyq_halton_sampler_get_pixel_2d(
-    thread NyqHaltonSampler& s_81,
+    thread NyqHaltonSampler& s_83,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_81.dim;
-    s_81.dim = metal::max(_e3, 2u);
-    metal::float2 _e7 = nyq_halton_sampler_pair(s_81, 0u, nyq_halton_bases, _buffer_sizes);
+    uint _e3 = s_83.dim;
+    s_83.dim = metal::max(_e3, 2u);
+    metal::float2 _e7 = nyq_halton_sampler_pair(s_83, 0u, nyq_halton_bases, _buffer_sizes);
     return _e7;
 }
 
 NyqCameraSample nyq_halton_sampler_camera_sample(
-    thread NyqHaltonSampler& s_82,
+    thread NyqHaltonSampler& s_84,
     metal::uint2 pixel_20,
     uint sample_index_18,
     device type_4 const& nyq_halton_bases,
@@ -4167,17 +4191,17 @@ NyqCameraSample nyq_halton_sampler_camera_sample(
     metal::float4 v_7 = metal::float4(0.0, 0.0, 0.0, 0.0);
     float lens_y = 0.0;
     uint d_5 = 0u;
-    nyq_halton_sampler_start(s_82, pixel_20, sample_index_18, 5u);
-    uint2 loop_bound_37 = uint2(4294967295u);
-    bool loop_init_25 = true;
+    nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
+    uint2 loop_bound_38 = uint2(4294967295u);
+    bool loop_init_26 = true;
     while(true) {
-        if (metal::all(loop_bound_37 == uint2(0u))) { break; }
-        loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (metal::all(loop_bound_38 == uint2(0u))) { break; }
+        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
+        if (!loop_init_26) {
             uint _e25 = d_5;
             d_5 = _e25 + 1u;
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e14 = d_5;
         if (_e14 < 5u) {
         } else {
@@ -4185,7 +4209,7 @@ NyqCameraSample nyq_halton_sampler_camera_sample(
         }
         {
             uint _e17 = d_5;
-            float _e18 = nyq_halton_sampler_value(s_82, _e17, nyq_halton_bases, _buffer_sizes);
+            float _e18 = nyq_halton_sampler_value(s_84, _e17, nyq_halton_bases, _buffer_sizes);
             uint _e19 = d_5;
             if (_e19 < 4u) {
                 uint _e22 = d_5;
@@ -4321,114 +4345,114 @@ NyqBlueSampler nyq_owen_sobol_bn_sampler(
 }
 
 void nyq_owen_sobol_bn_start(
-    thread NyqBlueSampler& s_83,
+    thread NyqBlueSampler& s_85,
     metal::uint2 pixel_24,
     uint sample_index_19,
     uint dim_41,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint b_15 = 0u;
-    s_83.pixel = pixel_24;
-    s_83.index = sample_index_19;
-    s_83.dim = dim_41;
-    uint2 loop_bound_38 = uint2(4294967295u);
-    bool loop_init_26 = true;
+    uint b_14 = 0u;
+    s_85.pixel = pixel_24;
+    s_85.index = sample_index_19;
+    s_85.dim = dim_41;
+    uint2 loop_bound_39 = uint2(4294967295u);
+    bool loop_init_27 = true;
     while(true) {
-        if (metal::all(loop_bound_38 == uint2(0u))) { break; }
-        loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-        if (!loop_init_26) {
-            uint _e28 = b_15;
-            b_15 = _e28 + 1u;
+        if (metal::all(loop_bound_39 == uint2(0u))) { break; }
+        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
+        if (!loop_init_27) {
+            uint _e28 = b_14;
+            b_14 = _e28 + 1u;
         }
-        loop_init_26 = false;
-        uint _e9 = b_15;
+        loop_init_27 = false;
+        uint _e9 = b_14;
         if (_e9 < 2u) {
         } else {
             break;
         }
         {
-            metal::uint2 _e14 = s_83.seed;
-            uint _e16 = s_83.frame;
-            uint _e17 = b_15;
+            metal::uint2 _e14 = s_85.seed;
+            uint _e16 = s_85.frame;
+            uint _e17 = b_14;
             uint _e18 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e14, _e16, pixel_24, _e17, nyq_blue_tiles, _buffer_sizes);
             uint _e19 = nyq_owen_sobol_bn_key(_e18);
-            uint _e21 = b_15;
-            s_83.key[_e21] = _e19;
-            uint _e24 = b_15;
+            uint _e21 = b_14;
+            s_85.key[_e21] = _e19;
+            uint _e24 = b_14;
             uint _e26 = nyq_owen_sobol_bn_rev(_e18, _e19, sample_index_19);
-            s_83.prepared[_e24] = _e26;
+            s_85.prepared[_e24] = _e26;
         }
     }
     return;
 }
 
 float nyq_owen_sobol_bn_value(
-    thread NyqBlueSampler& s_84,
+    thread NyqBlueSampler& s_86,
     uint dim_42,
     device type_4 const& nyq_sobol_matrices,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint b_22 = naga_div(dim_42, 4u);
+    uint b_21 = naga_div(dim_42, 4u);
     uint c_13 = naga_mod(dim_42, 4u);
-    if (b_22 < 2u) {
-        uint _e10 = s_84.key[b_22];
-        uint _e13 = s_84.prepared[b_22];
+    if (b_21 < 2u) {
+        uint _e10 = s_86.key[b_21];
+        uint _e13 = s_86.prepared[b_21];
         float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13, nyq_sobol_matrices, _buffer_sizes);
         return _e14;
     }
-    metal::uint2 _e17 = s_84.seed;
-    uint _e19 = s_84.frame;
-    metal::uint2 _e21 = s_84.pixel;
-    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_22, nyq_blue_tiles, _buffer_sizes);
+    metal::uint2 _e17 = s_86.seed;
+    uint _e19 = s_86.frame;
+    metal::uint2 _e21 = s_86.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_OWEN_SOBOL, _e17, _e19, _e21, b_21, nyq_blue_tiles, _buffer_sizes);
     uint _e23 = nyq_owen_sobol_bn_key(_e22);
-    uint _e25 = s_84.index;
+    uint _e25 = s_86.index;
     uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
     float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13, nyq_sobol_matrices, _buffer_sizes);
     return _e27;
 }
 
 float nyq_owen_sobol_bn_get_1d(
-    thread NyqBlueSampler& s_85,
-    device type_4 const& nyq_sobol_matrices,
-    device type_4 const& nyq_blue_tiles,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_32 = s_85.dim;
-    s_85.dim = d_32 + 1u;
-    float _e6 = nyq_owen_sobol_bn_value(s_85, d_32, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_owen_sobol_bn_get_2d(
-    thread NyqBlueSampler& s_86,
-    device type_4 const& nyq_sobol_matrices,
-    device type_4 const& nyq_blue_tiles,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_33 = s_86.dim;
-    s_86.dim = d_33 + 2u;
-    float _e6 = nyq_owen_sobol_bn_value(s_86, d_33, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_bn_value(s_86, d_33 + 1u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
-    return metal::float2(_e6, _e9);
-}
-
-metal::float2 nyq_owen_sobol_bn_get_pixel_2d(
     thread NyqBlueSampler& s_87,
     device type_4 const& nyq_sobol_matrices,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_87.dim;
-    s_87.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_owen_sobol_bn_value(s_87, 0u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
-    float _e9 = nyq_owen_sobol_bn_value(s_87, 1u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    uint d_32 = s_87.dim;
+    s_87.dim = d_32 + 1u;
+    float _e6 = nyq_owen_sobol_bn_value(s_87, d_32, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_owen_sobol_bn_get_2d(
+    thread NyqBlueSampler& s_88,
+    device type_4 const& nyq_sobol_matrices,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_33 = s_88.dim;
+    s_88.dim = d_33 + 2u;
+    float _e6 = nyq_owen_sobol_bn_value(s_88, d_33, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_bn_value(s_88, d_33 + 1u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_owen_sobol_bn_get_pixel_2d(
+    thread NyqBlueSampler& s_89,
+    device type_4 const& nyq_sobol_matrices,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_89.dim;
+    s_89.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_owen_sobol_bn_value(s_89, 0u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_owen_sobol_bn_value(s_89, 1u, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_owen_sobol_bn_camera_sample(
-    thread NyqBlueSampler& s_88,
+    thread NyqBlueSampler& s_90,
     metal::uint2 pixel_25,
     uint sample_index_20,
     device type_4 const& nyq_sobol_matrices,
@@ -4437,17 +4461,17 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(
 ) {
     type_12 v_9 = {};
     uint d_6 = 0u;
-    nyq_owen_sobol_bn_start(s_88, pixel_25, sample_index_20, 0u, nyq_blue_tiles, _buffer_sizes);
-    uint2 loop_bound_39 = uint2(4294967295u);
-    bool loop_init_27 = true;
+    nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u, nyq_blue_tiles, _buffer_sizes);
+    uint2 loop_bound_40 = uint2(4294967295u);
+    bool loop_init_28 = true;
     while(true) {
-        if (metal::all(loop_bound_39 == uint2(0u))) { break; }
-        loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (metal::all(loop_bound_40 == uint2(0u))) { break; }
+        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
+        if (!loop_init_28) {
             uint _e15 = d_6;
             d_6 = _e15 + 1u;
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e7 = d_6;
         if (_e7 < 5u) {
         } else {
@@ -4456,11 +4480,11 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(
         {
             uint _e10 = d_6;
             uint _e12 = d_6;
-            float _e13 = nyq_owen_sobol_bn_value(s_88, _e12, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
+            float _e13 = nyq_owen_sobol_bn_value(s_90, _e12, nyq_sobol_matrices, nyq_blue_tiles, _buffer_sizes);
             v_9.inner[_e10] = _e13;
         }
     }
-    s_88.dim = 5u;
+    s_90.dim = 5u;
     type_12 _e19 = v_9;
     NyqCameraSample _e20 = nyq_blue_camera(pixel_25, _e19);
     return _e20;
@@ -4468,10 +4492,10 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(
 
 uint nyq_pmj02_bn_key(
     uint entry_2,
-    uint i_16
+    uint i_15
 ) {
     uint _e6 = nyq_mix32_((entry_2 >> 8u) ^ 1347242496u);
-    uint epoch = i_16 >> 16u;
+    uint epoch = i_15 >> 16u;
     uint _e9 = nyq_mix32_(epoch);
     uint _e11 = nyq_mix32_(_e6 ^ _e9);
     return (epoch == 0u) ? _e6 : _e11;
@@ -4479,13 +4503,13 @@ uint nyq_pmj02_bn_key(
 
 uint nyq_pmj02_bn_points(
     uint k_16,
-    uint i_17
+    uint i_16
 ) {
     uint _e6 = nyq_mix32_(k_16 ^ 1397249350u);
-    uint _e7 = nyq_shuffle_rev(i_17 & 65535u, _e6);
+    uint _e7 = nyq_shuffle_rev(i_16 & 65535u, _e6);
     uint p0_ = metal::reverse_bits(_e7) & 65535u;
     uint _e15 = nyq_mix32_(k_16 ^ 1397249351u);
-    uint _e16 = nyq_shuffle_rev(i_17 & 65535u, _e15);
+    uint _e16 = nyq_shuffle_rev(i_16 & 65535u, _e15);
     uint p1_ = metal::reverse_bits(_e16) & 65535u;
     return p0_ | (p1_ << 16u);
 }
@@ -4511,112 +4535,112 @@ NyqBlueSampler nyq_pmj02_bn_sampler(
 }
 
 void nyq_pmj02_bn_start(
-    thread NyqBlueSampler& s_89,
+    thread NyqBlueSampler& s_91,
     metal::uint2 pixel_26,
     uint sample_index_21,
     uint dim_43,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint b_16 = 0u;
-    s_89.pixel = pixel_26;
-    s_89.index = sample_index_21;
-    s_89.dim = dim_43;
-    uint2 loop_bound_40 = uint2(4294967295u);
-    bool loop_init_28 = true;
+    uint b_15 = 0u;
+    s_91.pixel = pixel_26;
+    s_91.index = sample_index_21;
+    s_91.dim = dim_43;
+    uint2 loop_bound_41 = uint2(4294967295u);
+    bool loop_init_29 = true;
     while(true) {
-        if (metal::all(loop_bound_40 == uint2(0u))) { break; }
-        loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_28) {
-            uint _e31 = b_16;
-            b_16 = _e31 + 1u;
+        if (metal::all(loop_bound_41 == uint2(0u))) { break; }
+        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
+        if (!loop_init_29) {
+            uint _e31 = b_15;
+            b_15 = _e31 + 1u;
         }
-        loop_init_28 = false;
-        uint _e9 = b_16;
+        loop_init_29 = false;
+        uint _e9 = b_15;
         if (_e9 < 2u) {
         } else {
             break;
         }
         {
-            metal::uint2 _e14 = s_89.seed;
-            uint _e16 = s_89.frame;
-            uint _e17 = b_16;
+            metal::uint2 _e14 = s_91.seed;
+            uint _e16 = s_91.frame;
+            uint _e17 = b_15;
             uint _e18 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e14, _e16, pixel_26, _e17, nyq_blue_tiles, _buffer_sizes);
-            uint i_19 = sample_index_21 ^ (_e18 & 255u);
-            uint _e22 = nyq_pmj02_bn_key(_e18, i_19);
-            uint _e24 = b_16;
-            s_89.key[_e24] = _e22;
-            uint _e27 = b_16;
-            uint _e29 = nyq_pmj02_bn_points(_e22, i_19);
-            s_89.prepared[_e27] = _e29;
+            uint i_18 = sample_index_21 ^ (_e18 & 255u);
+            uint _e22 = nyq_pmj02_bn_key(_e18, i_18);
+            uint _e24 = b_15;
+            s_91.key[_e24] = _e22;
+            uint _e27 = b_15;
+            uint _e29 = nyq_pmj02_bn_points(_e22, i_18);
+            s_91.prepared[_e27] = _e29;
         }
     }
     return;
 }
 
 float nyq_pmj02_bn_value(
-    thread NyqBlueSampler& s_90,
+    thread NyqBlueSampler& s_92,
     uint dim_44,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint b_23 = naga_div(dim_44, 4u);
+    uint b_22 = naga_div(dim_44, 4u);
     uint c_14 = naga_mod(dim_44, 4u);
-    if (b_23 < 2u) {
-        uint _e10 = s_90.key[b_23];
-        uint _e13 = s_90.prepared[b_23];
+    if (b_22 < 2u) {
+        uint _e10 = s_92.key[b_22];
+        uint _e13 = s_92.prepared[b_22];
         float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
         return _e14;
     }
-    metal::uint2 _e17 = s_90.seed;
-    uint _e19 = s_90.frame;
-    metal::uint2 _e21 = s_90.pixel;
-    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e17, _e19, _e21, b_23, nyq_blue_tiles, _buffer_sizes);
-    uint _e24 = s_90.index;
-    uint i_20 = _e24 ^ (_e22 & 255u);
-    uint _e28 = nyq_pmj02_bn_key(_e22, i_20);
-    uint _e29 = nyq_pmj02_bn_points(_e28, i_20);
+    metal::uint2 _e17 = s_92.seed;
+    uint _e19 = s_92.frame;
+    metal::uint2 _e21 = s_92.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_PMJ02_, _e17, _e19, _e21, b_22, nyq_blue_tiles, _buffer_sizes);
+    uint _e24 = s_92.index;
+    uint i_19 = _e24 ^ (_e22 & 255u);
+    uint _e28 = nyq_pmj02_bn_key(_e22, i_19);
+    uint _e29 = nyq_pmj02_bn_points(_e28, i_19);
     float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
     return _e30;
 }
 
 float nyq_pmj02_bn_get_1d(
-    thread NyqBlueSampler& s_91,
-    device type_4 const& nyq_blue_tiles,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_34 = s_91.dim;
-    s_91.dim = d_34 + 1u;
-    float _e6 = nyq_pmj02_bn_value(s_91, d_34, nyq_blue_tiles, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_pmj02_bn_get_2d(
-    thread NyqBlueSampler& s_92,
-    device type_4 const& nyq_blue_tiles,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_35 = s_92.dim;
-    s_92.dim = d_35 + 2u;
-    float _e6 = nyq_pmj02_bn_value(s_92, d_35, nyq_blue_tiles, _buffer_sizes);
-    float _e9 = nyq_pmj02_bn_value(s_92, d_35 + 1u, nyq_blue_tiles, _buffer_sizes);
-    return metal::float2(_e6, _e9);
-}
-
-metal::float2 nyq_pmj02_bn_get_pixel_2d(
     thread NyqBlueSampler& s_93,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_93.dim;
-    s_93.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_pmj02_bn_value(s_93, 0u, nyq_blue_tiles, _buffer_sizes);
-    float _e9 = nyq_pmj02_bn_value(s_93, 1u, nyq_blue_tiles, _buffer_sizes);
+    uint d_34 = s_93.dim;
+    s_93.dim = d_34 + 1u;
+    float _e6 = nyq_pmj02_bn_value(s_93, d_34, nyq_blue_tiles, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_pmj02_bn_get_2d(
+    thread NyqBlueSampler& s_94,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_35 = s_94.dim;
+    s_94.dim = d_35 + 2u;
+    float _e6 = nyq_pmj02_bn_value(s_94, d_35, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_pmj02_bn_value(s_94, d_35 + 1u, nyq_blue_tiles, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_pmj02_bn_get_pixel_2d(
+    thread NyqBlueSampler& s_95,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_95.dim;
+    s_95.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_pmj02_bn_value(s_95, 0u, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_pmj02_bn_value(s_95, 1u, nyq_blue_tiles, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_pmj02_bn_camera_sample(
-    thread NyqBlueSampler& s_94,
+    thread NyqBlueSampler& s_96,
     metal::uint2 pixel_27,
     uint sample_index_22,
     device type_4 const& nyq_blue_tiles,
@@ -4624,17 +4648,17 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(
 ) {
     type_12 v_10 = {};
     uint d_7 = 0u;
-    nyq_pmj02_bn_start(s_94, pixel_27, sample_index_22, 0u, nyq_blue_tiles, _buffer_sizes);
-    uint2 loop_bound_41 = uint2(4294967295u);
-    bool loop_init_29 = true;
+    nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u, nyq_blue_tiles, _buffer_sizes);
+    uint2 loop_bound_42 = uint2(4294967295u);
+    bool loop_init_30 = true;
     while(true) {
-        if (metal::all(loop_bound_41 == uint2(0u))) { break; }
-        loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_29) {
+        if (metal::all(loop_bound_42 == uint2(0u))) { break; }
+        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
+        if (!loop_init_30) {
             uint _e15 = d_7;
             d_7 = _e15 + 1u;
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e7 = d_7;
         if (_e7 < 5u) {
         } else {
@@ -4643,11 +4667,11 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(
         {
             uint _e10 = d_7;
             uint _e12 = d_7;
-            float _e13 = nyq_pmj02_bn_value(s_94, _e12, nyq_blue_tiles, _buffer_sizes);
+            float _e13 = nyq_pmj02_bn_value(s_96, _e12, nyq_blue_tiles, _buffer_sizes);
             v_10.inner[_e10] = _e13;
         }
     }
-    s_94.dim = 5u;
+    s_96.dim = 5u;
     type_12 _e19 = v_10;
     NyqCameraSample _e20 = nyq_blue_camera(pixel_27, _e19);
     return _e20;
@@ -4689,110 +4713,110 @@ NyqBlueSampler nyq_lattice_bn_sampler(
 }
 
 void nyq_lattice_bn_start(
-    thread NyqBlueSampler& s_95,
+    thread NyqBlueSampler& s_97,
     metal::uint2 pixel_28,
     uint sample_index_23,
     uint dim_45,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint b_17 = 0u;
-    s_95.pixel = pixel_28;
-    s_95.index = sample_index_23;
-    s_95.dim = dim_45;
-    uint2 loop_bound_42 = uint2(4294967295u);
-    bool loop_init_30 = true;
+    uint b_16 = 0u;
+    s_97.pixel = pixel_28;
+    s_97.index = sample_index_23;
+    s_97.dim = dim_45;
+    uint2 loop_bound_43 = uint2(4294967295u);
+    bool loop_init_31 = true;
     while(true) {
-        if (metal::all(loop_bound_42 == uint2(0u))) { break; }
-        loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_30) {
-            uint _e28 = b_17;
-            b_17 = _e28 + 1u;
+        if (metal::all(loop_bound_43 == uint2(0u))) { break; }
+        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
+        if (!loop_init_31) {
+            uint _e28 = b_16;
+            b_16 = _e28 + 1u;
         }
-        loop_init_30 = false;
-        uint _e9 = b_17;
+        loop_init_31 = false;
+        uint _e9 = b_16;
         if (_e9 < 2u) {
         } else {
             break;
         }
         {
-            metal::uint2 _e14 = s_95.seed;
-            uint _e16 = s_95.frame;
-            uint _e17 = b_17;
+            metal::uint2 _e14 = s_97.seed;
+            uint _e16 = s_97.frame;
+            uint _e17 = b_16;
             uint _e18 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e14, _e16, pixel_28, _e17, nyq_blue_tiles, _buffer_sizes);
             uint _e19 = nyq_lattice_bn_key(_e18);
-            uint _e21 = b_17;
-            s_95.key[_e21] = _e19;
-            uint _e24 = b_17;
+            uint _e21 = b_16;
+            s_97.key[_e21] = _e19;
+            uint _e24 = b_16;
             uint _e26 = nyq_lattice_bn_rev(_e18, _e19, sample_index_23);
-            s_95.prepared[_e24] = _e26;
+            s_97.prepared[_e24] = _e26;
         }
     }
     return;
 }
 
 float nyq_lattice_bn_value(
-    thread NyqBlueSampler& s_96,
+    thread NyqBlueSampler& s_98,
     uint dim_46,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint b_24 = naga_div(dim_46, 4u);
+    uint b_23 = naga_div(dim_46, 4u);
     uint c_15 = naga_mod(dim_46, 4u);
-    if (b_24 < 2u) {
-        uint _e10 = s_96.key[b_24];
-        uint _e13 = s_96.prepared[b_24];
+    if (b_23 < 2u) {
+        uint _e10 = s_98.key[b_23];
+        uint _e13 = s_98.prepared[b_23];
         float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
-    metal::uint2 _e17 = s_96.seed;
-    uint _e19 = s_96.frame;
-    metal::uint2 _e21 = s_96.pixel;
-    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_24, nyq_blue_tiles, _buffer_sizes);
+    metal::uint2 _e17 = s_98.seed;
+    uint _e19 = s_98.frame;
+    metal::uint2 _e21 = s_98.pixel;
+    uint _e22 = nyq_blue_block_entry(NYQ_BLUE_LATTICE, _e17, _e19, _e21, b_23, nyq_blue_tiles, _buffer_sizes);
     uint _e23 = nyq_lattice_bn_key(_e22);
-    uint _e25 = s_96.index;
+    uint _e25 = s_98.index;
     uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
     float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
     return _e27;
 }
 
 float nyq_lattice_bn_get_1d(
-    thread NyqBlueSampler& s_97,
-    device type_4 const& nyq_blue_tiles,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_36 = s_97.dim;
-    s_97.dim = d_36 + 1u;
-    float _e6 = nyq_lattice_bn_value(s_97, d_36, nyq_blue_tiles, _buffer_sizes);
-    return _e6;
-}
-
-metal::float2 nyq_lattice_bn_get_2d(
-    thread NyqBlueSampler& s_98,
-    device type_4 const& nyq_blue_tiles,
-    constant _mslBufferSizes& _buffer_sizes
-) {
-    uint d_37 = s_98.dim;
-    s_98.dim = d_37 + 2u;
-    float _e6 = nyq_lattice_bn_value(s_98, d_37, nyq_blue_tiles, _buffer_sizes);
-    float _e9 = nyq_lattice_bn_value(s_98, d_37 + 1u, nyq_blue_tiles, _buffer_sizes);
-    return metal::float2(_e6, _e9);
-}
-
-metal::float2 nyq_lattice_bn_get_pixel_2d(
     thread NyqBlueSampler& s_99,
     device type_4 const& nyq_blue_tiles,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = s_99.dim;
-    s_99.dim = metal::max(_e3, 2u);
-    float _e7 = nyq_lattice_bn_value(s_99, 0u, nyq_blue_tiles, _buffer_sizes);
-    float _e9 = nyq_lattice_bn_value(s_99, 1u, nyq_blue_tiles, _buffer_sizes);
+    uint d_36 = s_99.dim;
+    s_99.dim = d_36 + 1u;
+    float _e6 = nyq_lattice_bn_value(s_99, d_36, nyq_blue_tiles, _buffer_sizes);
+    return _e6;
+}
+
+metal::float2 nyq_lattice_bn_get_2d(
+    thread NyqBlueSampler& s_100,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint d_37 = s_100.dim;
+    s_100.dim = d_37 + 2u;
+    float _e6 = nyq_lattice_bn_value(s_100, d_37, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_lattice_bn_value(s_100, d_37 + 1u, nyq_blue_tiles, _buffer_sizes);
+    return metal::float2(_e6, _e9);
+}
+
+metal::float2 nyq_lattice_bn_get_pixel_2d(
+    thread NyqBlueSampler& s_101,
+    device type_4 const& nyq_blue_tiles,
+    constant _mslBufferSizes& _buffer_sizes
+) {
+    uint _e3 = s_101.dim;
+    s_101.dim = metal::max(_e3, 2u);
+    float _e7 = nyq_lattice_bn_value(s_101, 0u, nyq_blue_tiles, _buffer_sizes);
+    float _e9 = nyq_lattice_bn_value(s_101, 1u, nyq_blue_tiles, _buffer_sizes);
     return metal::float2(_e7, _e9);
 }
 
 NyqCameraSample nyq_lattice_bn_camera_sample(
-    thread NyqBlueSampler& s_100,
+    thread NyqBlueSampler& s_102,
     metal::uint2 pixel_29,
     uint sample_index_24,
     device type_4 const& nyq_blue_tiles,
@@ -4800,17 +4824,17 @@ NyqCameraSample nyq_lattice_bn_camera_sample(
 ) {
     type_12 v_11 = {};
     uint d_8 = 0u;
-    nyq_lattice_bn_start(s_100, pixel_29, sample_index_24, 0u, nyq_blue_tiles, _buffer_sizes);
-    uint2 loop_bound_43 = uint2(4294967295u);
-    bool loop_init_31 = true;
+    nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u, nyq_blue_tiles, _buffer_sizes);
+    uint2 loop_bound_44 = uint2(4294967295u);
+    bool loop_init_32 = true;
     while(true) {
-        if (metal::all(loop_bound_43 == uint2(0u))) { break; }
-        loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (metal::all(loop_bound_44 == uint2(0u))) { break; }
+        loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
+        if (!loop_init_32) {
             uint _e15 = d_8;
             d_8 = _e15 + 1u;
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e7 = d_8;
         if (_e7 < 5u) {
         } else {
@@ -4819,35 +4843,35 @@ NyqCameraSample nyq_lattice_bn_camera_sample(
         {
             uint _e10 = d_8;
             uint _e12 = d_8;
-            float _e13 = nyq_lattice_bn_value(s_100, _e12, nyq_blue_tiles, _buffer_sizes);
+            float _e13 = nyq_lattice_bn_value(s_102, _e12, nyq_blue_tiles, _buffer_sizes);
             v_11.inner[_e10] = _e13;
         }
     }
-    s_100.dim = 5u;
+    s_102.dim = 5u;
     type_12 _e19 = v_11;
     NyqCameraSample _e20 = nyq_blue_camera(pixel_29, _e19);
     return _e20;
 }
 
 metal::uint4 nyq_fill_request(
-    uint i_18,
+    uint i_17,
     constant NyqFillJob& nyq_job,
-    device type_28 const& nyq_requests,
+    device type_29 const& nyq_requests,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = nyq_job.implicit;
     if (_e3 == 0u) {
-        metal::uint4 _e8 = nyq_requests[i_18];
+        metal::uint4 _e8 = nyq_requests[i_17];
         return _e8;
     }
     uint _e11 = nyq_job.first;
-    uint n_12 = _e11 + i_18;
+    uint n_13 = _e11 + i_17;
     uint _e15 = nyq_job.spp;
-    uint pixel_30 = naga_div(n_12, _e15);
+    uint pixel_30 = naga_div(n_13, _e15);
     uint _e20 = nyq_job.resolution.x;
     uint _e25 = nyq_job.resolution.x;
     uint _e29 = nyq_job.spp;
-    return metal::uint4(naga_mod(pixel_30, _e20), naga_div(pixel_30, _e25), naga_mod(n_12, _e29), 5u);
+    return metal::uint4(naga_mod(pixel_30, _e20), naga_div(pixel_30, _e25), naga_mod(n_13, _e29), 5u);
 }
 
 void nyq_fill_camera(
@@ -4885,7 +4909,7 @@ kernel void nyq_fill(
 , device type_4 const& nyq_halton_bases [[buffer(4)]]
 , device type_4 const& nyq_blue_tiles [[buffer(5)]]
 , constant NyqFillJob& nyq_job [[buffer(1)]]
-, device type_28 const& nyq_requests [[buffer(2)]]
+, device type_29 const& nyq_requests [[buffer(2)]]
 , device type_4& nyq_values [[buffer(3)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(6)]]
 ) {
@@ -4906,14 +4930,14 @@ kernel void nyq_fill(
     uint k_3 = 0u;
     uint k_4 = 0u;
     uint k_5 = 0u;
-    uint i_21 = id.x;
+    uint i_20 = id.x;
     uint _e4 = nyq_job.count;
-    if (i_21 >= _e4) {
+    if (i_20 >= _e4) {
         return;
     }
-    metal::uint4 _e6 = nyq_fill_request(i_21, nyq_job, nyq_requests, _buffer_sizes);
+    metal::uint4 _e6 = nyq_fill_request(i_20, nyq_job, nyq_requests, _buffer_sizes);
     metal::uint2 pixel_31 = _e6.xy;
-    uint out_5 = 8u * i_21;
+    uint out_5 = 8u * i_20;
     uint _e12 = nyq_job.kind;
     switch(_e12) {
         case 0u: {
@@ -5072,16 +5096,16 @@ kernel void nyq_fill(
             uint _e198 = nyq_job.scramble;
             metal::uint2 _e203 = nyq_job.seed;
             NyqSobol _e204 = nyq_sobol(_e195, _e198 != 0u, _e203);
-            uint2 loop_bound_44 = uint2(4294967295u);
-            bool loop_init_32 = true;
+            uint2 loop_bound_45 = uint2(4294967295u);
+            bool loop_init_33 = true;
             while(true) {
-                if (metal::all(loop_bound_44 == uint2(0u))) { break; }
-                loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-                if (!loop_init_32) {
+                if (metal::all(loop_bound_45 == uint2(0u))) { break; }
+                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
+                if (!loop_init_33) {
                     uint _e232 = k;
                     k = _e232 + 1u;
                 }
-                loop_init_32 = false;
+                loop_init_33 = false;
                 uint _e207 = k;
                 if (_e207 < 4u) {
                 } else {
@@ -5105,16 +5129,16 @@ kernel void nyq_fill(
             metal::uint2 _e239 = nyq_job.seed;
             NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             metal::float4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
-            uint2 loop_bound_45 = uint2(4294967295u);
-            bool loop_init_33 = true;
+            uint2 loop_bound_46 = uint2(4294967295u);
+            bool loop_init_34 = true;
             while(true) {
-                if (metal::all(loop_bound_45 == uint2(0u))) { break; }
-                loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                if (!loop_init_33) {
+                if (metal::all(loop_bound_46 == uint2(0u))) { break; }
+                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
+                if (!loop_init_34) {
                     uint _e268 = k_1;
                     k_1 = _e268 + 1u;
                 }
-                loop_init_33 = false;
+                loop_init_34 = false;
                 uint _e246 = k_1;
                 if (_e246 < 4u) {
                 } else {
@@ -5136,16 +5160,16 @@ kernel void nyq_fill(
             uint _e272 = nyq_job.scramble;
             metal::uint2 _e277 = nyq_job.seed;
             NyqPmj02_ _e278 = nyq_pmj02_(_e272 != 0u, _e277);
-            uint2 loop_bound_46 = uint2(4294967295u);
-            bool loop_init_34 = true;
+            uint2 loop_bound_47 = uint2(4294967295u);
+            bool loop_init_35 = true;
             while(true) {
-                if (metal::all(loop_bound_46 == uint2(0u))) { break; }
-                loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                if (!loop_init_34) {
+                if (metal::all(loop_bound_47 == uint2(0u))) { break; }
+                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
+                if (!loop_init_35) {
                     uint _e306 = k_2;
                     k_2 = _e306 + 1u;
                 }
-                loop_init_34 = false;
+                loop_init_35 = false;
                 uint _e281 = k_2;
                 if (_e281 < 4u) {
                 } else {
@@ -5170,16 +5194,16 @@ kernel void nyq_fill(
             metal::uint2 _e316 = nyq_job.seed;
             NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = ((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u);
-            uint2 loop_bound_47 = uint2(4294967295u);
-            bool loop_init_35 = true;
+            uint2 loop_bound_48 = uint2(4294967295u);
+            bool loop_init_36 = true;
             while(true) {
-                if (metal::all(loop_bound_47 == uint2(0u))) { break; }
-                loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_35) {
+                if (metal::all(loop_bound_48 == uint2(0u))) { break; }
+                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
+                if (!loop_init_36) {
                     uint _e351 = k_3;
                     k_3 = _e351 + 1u;
                 }
-                loop_init_35 = false;
+                loop_init_36 = false;
                 uint _e329 = k_3;
                 if (_e329 < 8u) {
                 } else {
@@ -5204,16 +5228,16 @@ kernel void nyq_fill(
             uint _e367 = nyq_job.scramble;
             metal::uint2 _e372 = nyq_job.seed;
             NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, _e367 != 0u, _e372);
-            uint2 loop_bound_48 = uint2(4294967295u);
-            bool loop_init_36 = true;
+            uint2 loop_bound_49 = uint2(4294967295u);
+            bool loop_init_37 = true;
             while(true) {
-                if (metal::all(loop_bound_48 == uint2(0u))) { break; }
-                loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_36) {
+                if (metal::all(loop_bound_49 == uint2(0u))) { break; }
+                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
+                if (!loop_init_37) {
                     uint _e390 = k_4;
                     k_4 = _e390 + 1u;
                 }
-                loop_init_36 = false;
+                loop_init_37 = false;
                 uint _e376 = k_4;
                 if (_e376 < 4u) {
                 } else {
@@ -5237,16 +5261,16 @@ kernel void nyq_fill(
             return;
         }
         default: {
-            uint2 loop_bound_49 = uint2(4294967295u);
-            bool loop_init_37 = true;
+            uint2 loop_bound_50 = uint2(4294967295u);
+            bool loop_init_38 = true;
             while(true) {
-                if (metal::all(loop_bound_49 == uint2(0u))) { break; }
-                loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-                if (!loop_init_37) {
+                if (metal::all(loop_bound_50 == uint2(0u))) { break; }
+                loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
+                if (!loop_init_38) {
                     uint _e433 = k_5;
                     k_5 = _e433 + 1u;
                 }
-                loop_init_37 = false;
+                loop_init_38 = false;
                 uint _e424 = k_5;
                 if (_e424 < 8u) {
                 } else {

@@ -1,4 +1,5 @@
-//! The choice of the pmj02 table's seed ([`nyquist::sequence::PMJ02_TABLE_SEED`]).
+//! How the pmj02 table's seed sets `pmj02-bn`'s error, and where the shipped table
+//! ([`nyquist::sequence::PMJ02_TABLE_SEED`], OpenQMC's) stands among the tables of other seeds.
 //!
 //! `pmj02-bn` reads the table through a nested uniform shuffle of the index and a digital
 //! shift (XOR), so a pixel's first `n` samples are an aligned block of `n` table points with
@@ -6,15 +7,16 @@
 //! point's strata, and those digits are not averaged away from block to block: a new point
 //! copies its leading digits from an older one, so the leading digits of *every* aligned
 //! block come from the random digits of the first few hundred points. The table's seed
-//! therefore sets its error on a given integrand: `cargo run --release -p nyquist-lab --bin
-//! pmj02-seed` prints, for the chosen seed 716, an RMSE of 0.0203 on the centred Gaussian of
-//! σ 0.22 at 4 spp, where the average table of seeds 0 … 1023 has 0.0746. (The Owen scramble
-//! of `pmj02` redraws those digits per pixel; its error does not depend on the seed.)
+//! therefore sets its error on a given integrand. (The Owen scramble of `pmj02` redraws those
+//! digits per pixel; its error does not depend on the seed.)
 //!
 //! [`search`] builds the table of every seed of a range, estimates each one's RMSE under
 //! `pmj02-bn`'s randomisation on the [`TRAINING`] integrands at 2 … 32 spp (sample counts
-//! where the leading digits decide the error), and keeps the seed of the lowest
-//! [`score`]. The training integrands are centred: radial ones, the shape of a pixel filter's
+//! where the leading digits decide the error), and ranks the seeds by [`score`]. A seed chosen
+//! this way fits these integrands: the one that scores best of 0 … 1023 is not better than
+//! the shipped table on integrands neither saw (`docs/blue-noise.md`, "The table's seed"), so
+//! the shipped table is OpenQMC's, and `cargo run --release -p nyquist-lab --bin pmj02-seed`
+//! prints where it ranks. The training integrands are centred: radial ones, the shape of a pixel filter's
 //! weight or of a light's lobe across a pixel, and half-planes and half-spaces through the
 //! centre, over one pair of dimensions and over both. None of them is one of the integrands the
 //! peer comparison measures ([`HELD_OUT`](crate::blue_tile::HELD_OUT)), which [`held_out`]
@@ -28,8 +30,8 @@ use nyquist::sequence::{PMJ02_MAX_POINTS, pmj02_build};
 use std::convert::Infallible;
 use std::f64::consts::PI;
 
-/// The seeds [`search`] tries for the shipped table: `0 .. SEEDS`.
-pub const SEEDS: u64 = 1024;
+/// The seeds `pmj02-seed` ranks: `0 .. SEEDS`.
+pub const SEEDS: u32 = 1024;
 
 /// Pixels per spp and table whose error [`rmse`] averages (the same pixels for every table,
 /// so the tables are compared on common random numbers).
@@ -145,7 +147,7 @@ pub fn held_out() -> Vec<(&'static str, BlockIntegrand, f64)> {
 pub type Table = [[u32; 2]; PMJ02_MAX_POINTS];
 
 /// The pmj02 table of `seed` ([`pmj02_build`]).
-pub fn table(seed: u64) -> Box<Table> {
+pub fn table(seed: u32) -> Box<Table> {
     let mut t: Box<Table> = vec![[0u32; 2]; PMJ02_MAX_POINTS]
         .into_boxed_slice()
         .try_into()
@@ -235,9 +237,9 @@ pub fn score(rmse: &[[f64; 5]], reference: &[[f64; 5]]) -> f64 {
 #[derive(Clone, Debug)]
 pub struct Search {
     /// The seed of the lowest score.
-    pub best: u64,
+    pub best: u32,
     /// Every seed's score, in seed order.
-    pub scores: Vec<(u64, f64)>,
+    pub scores: Vec<(u32, f64)>,
     /// Per cell, the RMSE of the mean squared error over the tables.
     pub reference: Vec<[f64; 5]>,
     /// The best table's RMSE.
@@ -265,8 +267,8 @@ pub fn root_mean_square(rmses: &[Vec<[f64; 5]>]) -> Vec<[f64; 5]> {
 /// Scores the tables of `seeds` ([`rmse`] with `trials`, [`score`]) on every core (the lab's
 /// work queue, [`map_tasks`]) and keeps the best (the lowest seed on a tie); `None` for an
 /// empty range.
-pub fn search(seeds: std::ops::Range<u64>, trials: u32) -> Option<Search> {
-    let all: Vec<u64> = seeds.collect();
+pub fn search(seeds: std::ops::Range<u32>, trials: u32) -> Option<Search> {
+    let all: Vec<u32> = seeds.collect();
     let integrands = training();
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     let order: Vec<usize> = (0..all.len()).collect();
@@ -275,7 +277,7 @@ pub fn search(seeds: std::ops::Range<u64>, trials: u32) -> Option<Search> {
     })
     .unwrap_or_else(|never| match never {});
     let reference = root_mean_square(&measured);
-    let scores: Vec<(u64, f64)> = all
+    let scores: Vec<(u32, f64)> = all
         .iter()
         .zip(&measured)
         .map(|(&s, r)| (s, score(r, &reference)))
@@ -335,21 +337,28 @@ mod tests {
         }
     }
 
-    /// The shipped seed is the full search's output (what `pmj02-seed --check` runs), and
-    /// its table beats the average table in most cells.
+    /// The shipped table (OpenQMC's) against the tables of seeds 0 … 1023 on the training
+    /// integrands: it scores below the average table (a negative score: −2.29, where 236 of
+    /// the 1024 seeds score lower) and beats it in 23 of the 45 cells, though it was not
+    /// chosen on them.
     #[test]
-    fn the_shipped_seed_is_the_searchs_best() {
+    fn the_shipped_table_beats_the_average_table() {
         let found = search(0..SEEDS, TRIALS).expect("seeds");
-        assert_eq!(found.best, nyquist::sequence::PMJ02_TABLE_SEED);
-        let better = found
-            .best_rmse
+        let shipped = rmse(
+            &table(nyquist::sequence::PMJ02_TABLE_SEED),
+            &training(),
+            TRIALS,
+        );
+        let better = shipped
             .iter()
             .flatten()
             .zip(found.reference.iter().flatten())
             .filter(|(b, r)| b < r)
             .count();
-        // 36 of the 45 cells.
-        assert!(better >= 34, "{better} of 45 cells");
+        let s = score(&shipped, &found.reference);
+        let rank = found.scores.iter().filter(|x| x.1 < s).count();
+        eprintln!("score {s}, better in {better} of 45 cells, {rank} seeds score lower");
+        assert!(s < 0.0 && better > 20, "score {s}, {better} of 45 cells");
     }
 
     /// The RMSE falls with the count (the table's prefixes are nets), and a table whose

@@ -248,7 +248,7 @@ impl Cell {
 }
 
 /// Runs the study and prints its tables.
-pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: u64) {
+pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: u32) {
     let integrands = integrands();
     let exact: Vec<f64> = integrands.iter().map(|g| reference(g.f)).collect();
     let sources = sources(frame);
@@ -324,7 +324,7 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
 /// the tables above: per cell, the shipped table's RMSE, OpenQMC's, and how many
 /// of the seeds' tables are at or below OpenQMC's.
 #[cfg(peer_openqmc)]
-fn print_pmj_tables(tables: u64) {
+fn print_pmj_tables(tables: u32) {
     use nyquist::sequence::PMJ02_TABLE_SEED;
     use nyquist_lab::pmj02_seed::{COUNTS, TRIALS, held_out, rmse, score, search, table, training};
     use std::convert::Infallible;
@@ -339,7 +339,7 @@ fn print_pmj_tables(tables: u64) {
     let seeds: Vec<usize> = (0..tables as usize).collect();
     let threads = std::thread::available_parallelism().map_or(1, usize::from);
     let all = nyquist_lab::parallel::map_tasks(&seeds, threads, |s| {
-        Ok::<_, Infallible>(rmse(&table(s as u64), &fs, TRIALS))
+        Ok::<_, Infallible>(rmse(&table(s as u32), &fs, TRIALS))
     })
     .unwrap_or_else(|never| match never {});
     let shipped_table = table(PMJ02_TABLE_SEED);
@@ -412,7 +412,7 @@ fn gaussian_integral(c: f64, sigma: f64) -> f64 {
 fn print_random_families(
     shipped: &nyquist_lab::pmj02_seed::Table,
     theirs: &nyquist_lab::pmj02_seed::Table,
-    tables: u64,
+    tables: u32,
 ) {
     use nyquist::hash::mix64;
     use nyquist_lab::pmj02_seed::{COUNTS, TRIALS, rmse, root_mean_square, table};

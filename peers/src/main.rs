@@ -45,7 +45,10 @@ fn main() {
             "--size" => size = number(&value()) as u32,
             "--frame" => frame = number(&value()) as u32,
             "--images" => images = Some(std::path::PathBuf::from(value())),
-            "--pmj-tables" => pmj_tables = number(&value()).max(1) as u64,
+            "--pmj-tables" => {
+                pmj_tables = u32::try_from(number(&value()).max(1))
+                    .unwrap_or_else(|_| usage("--pmj-tables: at most 4294967295"))
+            }
             "-h" | "--help" => usage(""),
             _ => usage(&format!("unknown argument {a}")),
         }

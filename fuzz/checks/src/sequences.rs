@@ -99,7 +99,7 @@ pub fn sequences(data: &[u8]) {
     // The in-place construction: any buffer length errs or builds a prefix of the baked table's
     // kind, every value a fraction.
     let mut buf = [[0u32; 2]; 96];
-    match pmj02_build(seed, &mut buf[..len]) {
+    match pmj02_build(seed as u32, &mut buf[..len]) {
         Ok(()) => assert!(len > 0),
         Err(e) => assert_eq!((len, e), (0, Error::ZeroSize { what: "points" })),
     }

@@ -1,27 +1,19 @@
-//! Chooses the pmj02 table's seed ([`nyquist_lab::pmj02_seed`]): scores the tables of seeds
-//! `0 … 1023` and prints the best, with its RMSE beside the average table's. `--check` exits
-//! with status 1 unless the best is the shipped [`nyquist::sequence::PMJ02_TABLE_SEED`].
+//! Ranks the pmj02 tables of seeds `0 … 1023` ([`nyquist_lab::pmj02_seed`]) and prints where
+//! the shipped table ([`nyquist::sequence::PMJ02_TABLE_SEED`]) stands, with its RMSE beside the
+//! average table's on the training and the held-out integrands.
 
 use nyquist::sequence::PMJ02_TABLE_SEED;
 use nyquist_lab::pmj02_seed::{
-    COUNTS, SEEDS, TRAINING, TRIALS, held_out, rmse, root_mean_square, search, table,
+    COUNTS, SEEDS, TRAINING, TRIALS, held_out, rmse, root_mean_square, score, search, table,
+    training,
 };
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let check = match args.as_slice() {
-        [] => false,
-        [flag] if flag == "--check" => true,
-        _ => {
-            let (other, what) = match args.iter().find(|a| *a != "--check") {
-                Some(a) => (a.as_str(), "not a flag"),
-                None => ("--check", "given twice"),
-            };
-            eprintln!("pmj02-seed: {other:?}: {what} (the only flag is --check)");
-            return ExitCode::from(2);
-        }
-    };
+    if let Some(flag) = std::env::args().nth(1) {
+        eprintln!("pmj02-seed: {flag:?}: not a flag (the command takes none)");
+        return ExitCode::from(2);
+    }
     let start = std::time::Instant::now();
     let found = search(0..SEEDS, TRIALS).expect("SEEDS is not 0");
     eprintln!(
@@ -33,10 +25,15 @@ fn main() -> ExitCode {
     for (seed, s) in ranked.iter().take(5) {
         eprintln!("pmj02-seed: seed {seed:>4}: score {s:.2}");
     }
+    let shipped = rmse(&table(PMJ02_TABLE_SEED), &training(), TRIALS);
+    let s = score(&shipped, &found.reference);
+    let lower = found.scores.iter().filter(|x| x.1 < s).count();
+    eprintln!(
+        "pmj02-seed: the shipped table (seed {PMJ02_TABLE_SEED}): score {s:.2}, {lower} seeds lower"
+    );
     let counts: Vec<String> = COUNTS.iter().map(u32::to_string).collect();
     eprintln!(
-        "pmj02-seed: RMSE of seed {} / of the average table, at {} spp:",
-        found.best,
+        "pmj02-seed: RMSE of the shipped table / of the average table, at {} spp:",
         counts.join(", ")
     );
     // One line per integrand: the chosen table's RMSE / the average table's, per count.
@@ -48,14 +45,14 @@ fn main() -> ExitCode {
             .collect();
         eprintln!("pmj02-seed: {name:>20}: {}", cells.join(" "));
     };
-    for ((t, best), reference) in TRAINING.iter().zip(&found.best_rmse).zip(&found.reference) {
+    for ((t, best), reference) in TRAINING.iter().zip(&shipped).zip(&found.reference) {
         print(t.name, best, reference);
     }
     // The held-out integrands, which the search did not see, against the average table of the
     // first 64 seeds.
     let held = held_out();
     let integrands: Vec<_> = held.iter().map(|&(_, f, i)| (f, i)).collect();
-    let chosen = rmse(&table(found.best), &integrands, TRIALS);
+    let chosen = rmse(&table(PMJ02_TABLE_SEED), &integrands, TRIALS);
     let tables: Vec<_> = (0..64)
         .map(|s| rmse(&table(s), &integrands, TRIALS))
         .collect();
@@ -67,12 +64,5 @@ fn main() -> ExitCode {
         print(name, best, reference);
     }
     println!("{}", found.best);
-    if check && found.best != PMJ02_TABLE_SEED {
-        eprintln!(
-            "pmj02-seed: the shipped PMJ02_TABLE_SEED is {PMJ02_TABLE_SEED}, the search's best {}",
-            found.best
-        );
-        return ExitCode::FAILURE;
-    }
     ExitCode::SUCCESS
 }

@@ -69,7 +69,7 @@ fn main() -> ExitCode {
         "pmj02" => {
             let mut points = [[0u32; 2]; 1024];
             for i in indices {
-                if pmj02_build(i >> 10, &mut points).is_ok() {
+                if pmj02_build((i >> 10) as u32, &mut points).is_ok() {
                     let [x, y] = points[(i & 1023) as usize];
                     emit(x);
                     emit(y);

@@ -9,7 +9,7 @@ extern "C" fn probe_main() -> ! {
     // The caller's buffer, on the stack.
     let mut points = [[0u32; 2]; 1024];
     run(|i| {
-        if pmj02_build(i >> 10, &mut points).is_ok() {
+        if pmj02_build((i >> 10) as u32, &mut points).is_ok() {
             let [x, y] = points[(i & 1023) as usize];
             emit(x);
             emit(y);
