@@ -3168,7 +3168,7 @@ struct Pmj02 {
 
 /// Progressive multi-jittered (0,2) samples per pixel (the core's `Pmj02Sampler`): the table's
 /// points index-shuffled and Owen-scrambled per pixel and request; spp up to 65536 (sample
-/// indices wrap modulo 2¹⁶). No table: each 2D request rebuilds one point (two WyRand chains).
+/// indices wrap modulo 2¹⁶). No table: each 2D request rebuilds one point (two chains of generator draws).
 struct Pmj02Sampler {
     std::uint32_t spp = 0;
     std::uint64_t seed = 0, pixel_key = 0;

@@ -27,10 +27,11 @@ const XORS: [[u32; 16]; 2] = [
 /// buffer.
 ///
 /// The construction makes point `p = 2^L + i` (level `L`) from old point `q = i ⊕ c[L]`: the
-/// first `L` digits of `q`, digit `L + 1` of `q` flipped, and the digits below from WyRand word
-/// `p`. So the digits of `p` are found by walking back along `p, q, …` to point 0: each point
+/// first `L` digits of `q`, digit `L + 1` of `q` flipped, and the digits below from the
+/// generator's draw for `p` (OpenQMC's 32-bit LCG, reached by a jump of three multiply-adds).
+/// So the digits of `p` are found by walking back along `p, q, …` to point 0: each point
 /// on the way gives the digits its level draws that no later point overrode, and flips one.
-/// At most 16 steps and 17 WyRand words (Helmer, Christensen & Kensler 2021 describe the
+/// At most 16 steps and 17 draws (Helmer, Christensen & Kensler 2021 describe the
 /// construction; evaluating it backwards is what lets a sampler read any point alone).
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) fn pmj02_point(seed: u32, index: u32, dim: usize) -> u32 {
@@ -56,8 +57,8 @@ pub(crate) fn pmj02_point(seed: u32, index: u32, dim: usize) -> u32 {
 /// [`pmj02_build`](crate::sequence::pmj02_build) for
 /// [`PMJ02_TABLE_SEED`](crate::sequence::PMJ02_TABLE_SEED)); this one rebuilds each point it
 /// needs by running that construction backwards from the point (Helmer, Christensen & Kensler
-/// 2021, "Stochastic Generation of (t, s) Sample Sequences"): at most 17 WyRand words per
-/// coordinate instead of a table read. The keys, shuffles and scrambles are the desktop
+/// 2021, "Stochastic Generation of (t, s) Sample Sequences"): at most 17 generator draws
+/// (three multiply-adds each) per coordinate instead of a table read. The keys, shuffles and scrambles are the desktop
 /// sampler's own. Allocates: no.
 ///
 /// ```

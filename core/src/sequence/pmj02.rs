@@ -59,8 +59,9 @@ const XORS: [[usize; 16]; 2] = [
 ];
 
 /// The construction into `out` (any length up to [`PMJ02_MAX_POINTS`]; the caller checks).
-/// Point `i`'s random digits are word `i` of the WyRand stream of `seed` (low half x, high half
-/// y), so a shorter buffer gets a prefix of a longer one.
+/// Point `i`'s random digits are draws `2i` (x) and `2i + 1` (y) of OpenQMC's generator from
+/// `seed` (`hash::lcg_draw`), so a shorter buffer gets a prefix of a longer one, and
+/// seed 0 gives OpenQMC's draws.
 const fn construct(seed: u32, out: &mut [[u32; 2]]) {
     let n = out.len();
     if n == 0 {

@@ -8,7 +8,7 @@ use crate::sequence::IndexShuffle;
 /// Coordinate `dim` of the pmj02 table's point `index` ([`PMJ02_TABLE`](crate::sequence::PMJ02_TABLE)):
 /// a read of the 512 KiB table, or, where the build keeps tables and code small (`lazy-tables`,
 /// `small-code`: the explorer, firmware), the point rebuilt from its construction
-/// ([`compact::Pmj02Sampler`](crate::compact::Pmj02Sampler)'s, at most 17 WyRand words), the
+/// ([`compact::Pmj02Sampler`](crate::compact::Pmj02Sampler)'s, at most 17 generator draws), the
 /// same bits. The branch is a constant, so an optimised build links one of the two.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 fn table_point(index: u16, dim: usize) -> u32 {
