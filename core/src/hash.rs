@@ -502,6 +502,43 @@ pub(crate) const fn lcg_draw(seed: u32, m: u32) -> u32 {
 mod tests {
     use super::*;
 
+    /// OpenQMC's generator as its own header draws it (`pcg.h` at commit 294d656: `pcg::rng`
+    /// from `pcg::init()` and from `pcg::init(12345)`, printed by a C++ program): the first
+    /// draws, and draw 2¹⁷ − 1, the last a pmj02 table of 2¹⁶ points takes.
+    #[test]
+    fn the_lcg_draws_are_openqmcs() {
+        let mut s = LCG_C; // pcg::init(): the state after one step from 0
+        let first = [
+            0x22b6_b6bc,
+            0x3bf6_e0b1,
+            0x572f_7439,
+            0x86fc_4ddc,
+            0x3465_9162,
+            0x6879_4667,
+        ];
+        for (m, v) in (0u32..).zip(first) {
+            assert_eq!(lcg_next(&mut s), v, "draw {m}");
+            assert_eq!(lcg_draw(0, m), v, "draw {m}");
+        }
+        let seeded = [0xc3f5_1e88, 0x6bee_3fec, 0x69d2_bcac, 0xb72e_164e];
+        for (m, v) in (0u32..).zip(seeded) {
+            assert_eq!(lcg_draw(12345, m), v, "seed 12345, draw {m}");
+        }
+        assert_eq!(lcg_draw(0, (1 << 17) - 1), 0x41af_cda3);
+    }
+
+    /// The jump through the three windows lands where stepping does at every draw it is
+    /// documented for (`m < 2¹⁸ − 1`: every digit of every window), from three seeds.
+    #[test]
+    fn the_lcg_jump_is_the_stepped_generator() {
+        for seed in [0u32, 1, 0x9e37_79b9] {
+            let mut s = LCG_C.wrapping_add(seed);
+            for m in 0..(1u32 << 18) - 1 {
+                assert_eq!(lcg_draw(seed, m), lcg_next(&mut s), "seed {seed}, draw {m}");
+            }
+        }
+    }
+
     /// Golden values: which permutation a seed picks is part of what a seeded render reproduces,
     /// and the keyed rounds past `TABLE_MAX` are this crate's own, so these images come from this
     /// code. A change to them must be deliberate (as for the CLI's golden hashes,
