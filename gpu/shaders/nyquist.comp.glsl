@@ -184,7 +184,6 @@ const uint NYQ_CENTERED = 1u;
 const uvec2 NYQ_DIM_STEP = uvec2(2135587861u, 2654435769u);
 const uvec2 NYQ_JITTER_STEP = uvec2(668265295u, 3266489917u);
 const uint NYQ_PMJ02_TABLE_SEED = 0u;
-const uvec2 NYQ_LCG_WINDOWS[192] = uvec2[192](uvec2(1u, 0u), uvec2(747796405u, 2891336453u), uvec2(4201498105u, 1192405134u), uvec2(3399858189u, 568162667u), uvec2(2200120369u, 878960812u), uvec2(2975532453u, 3598456993u), uvec2(1226092713u, 3109587930u), uvec2(371291773u, 457671207u), uvec2(1124524385u, 564359576u), uvec2(3421728917u, 1466123133u), uvec2(762174553u, 2469272934u), uvec2(651962861u, 2009562659u), uvec2(1985007505u, 200982212u), uvec2(2219911301u, 789858201u), uvec2(1058109705u, 2218199346u), uvec2(1237303901u, 2466908511u), uvec2(485992129u, 4177007664u), uvec2(3752762741u, 3363758325u), uvec2(979416761u, 3495377726u), uvec2(1020473293u, 4159242203u), uvec2(2876446449u, 3521641948u), uvec2(964378469u, 2211842961u), uvec2(1916126569u, 3871268746u), uvec2(1621779005u, 3219619223u), uvec2(250335265u, 2323728328u), uvec2(2303426133u, 36438893u), uvec2(3532903705u, 1530290710u), uvec2(1859537325u, 703454867u), uvec2(3127607889u, 399572468u), uvec2(97045061u, 1850623113u), uvec2(2757170633u, 2913627874u), uvec2(2773800477u, 3292905167u), uvec2(1829559681u, 1130785888u), uvec2(2493616949u, 1054968549u), uvec2(1105508217u, 2348282350u), uvec2(1459681165u, 3319134795u), uvec2(1630245297u, 2797543180u), uvec2(2004437285u, 767414913u), uvec2(3973769769u, 2046302010u), uvec2(3506609661u, 1923001607u), uvec2(2492747489u, 1525867000u), uvec2(2782419989u, 1619679069u), uvec2(4106280409u, 197937862u), uvec2(2235480429u, 2809475843u), uvec2(3652502801u, 681558308u), uvec2(1142701061u, 4271478137u), uvec2(1589035657u, 510277778u), uvec2(1774664157u, 3909101631u), uvec2(1640735809u, 1142294672u), uvec2(2808568053u, 2953136341u), uvec2(1042663481u, 3127364766u), uvec2(2102071117u, 2448648379u), uvec2(1880661105u, 3787736124u), uvec2(1452352229u, 3255463281u), uvec2(4000325353u, 2366059242u), uvec2(1619405245u, 4237037687u), uvec2(3859570081u, 786645032u), uvec2(2014710229u, 3970252621u), uvec2(1570829977u, 595777398u), uvec2(4105271597u, 3276569459u), uvec2(1484298193u, 2053245012u), uvec2(487030213u, 4117576297u), uvec2(2552004425u, 1419339330u), uvec2(4008897949u, 1962427823u), uvec2(1u, 0u), uvec2(1572862721u, 2584864960u), uvec2(999880193u, 714609024u), uvec2(478867713u, 1817344576u), uvec2(2207640577u, 1510023936u), uvec2(4089046785u, 778308544u), uvec2(4025934337u, 1681601664u), uvec2(4216118529u, 3058081088u), uvec2(2562447361u, 524699136u), uvec2(1262736129u, 3657051840u), uvec2(2514800129u, 1629640576u), uvec2(4221487361u, 1870577728u), uvec2(4285645825u, 4291782912u), uvec2(610123521u, 1288982976u), uvec2(3982670337u, 3511515776u), uvec2(3716199681u, 1207624512u), uvec2(2008526849u, 2879163392u), uvec2(1057467137u, 921859264u), uvec2(3060835841u, 1690082688u), uvec2(1626513665u, 4022011456u), uvec2(3247283201u, 3534597888u), uvec2(1531025153u, 1213503424u), uvec2(2970522113u, 3413098624u), uvec2(1173654785u, 381626688u), uvec2(2633205761u, 620941824u), uvec2(957055745u, 821738176u), uvec2(2637987329u, 3043419008u), uvec2(1283881217u, 1829194816u), uvec2(3387520001u, 1385952512u), uvec2(2556784385u, 2699353536u), uvec2(989489665u, 3533833856u), uvec2(883451137u, 2727571264u), uvec2(141516801u, 192485376u), uvec2(961501953u, 1209204928u), uvec2(1246254593u, 3542165888u), uvec2(3193590017u, 1734578752u), uvec2(411388929u, 4288297728u), uvec2(3687401217u, 3599049664u), uvec2(2334540289u, 1726237824u), uvec2(2845588737u, 1803007296u), uvec2(3123394561u, 3741277696u), uvec2(1070805761u, 4231743168u), uvec2(3180604929u, 1038839680u), uvec2(3060672769u, 1590679616u), uvec2(2908824577u, 1504215296u), uvec2(627908353u, 1765108160u), uvec2(2710706689u, 137794176u), uvec2(2765100289u, 4050385728u), uvec2(2988904449u, 529900544u), uvec2(1284967169u, 3446901952u), uvec2(4146071041u, 1975891328u), uvec2(885129473u, 3544981056u), uvec2(2289892353u, 3771123456u), uvec2(1968240385u, 3639979968u), uvec2(2117988865u, 915986560u), uvec2(641985793u, 3027255616u), uvec2(4033013761u, 1295772160u), uvec2(1603986177u, 1002164928u), uvec2(4142652929u, 4205837184u), uvec2(961927425u, 1155032128u), uvec2(2849559553u, 351603968u), uvec2(3413430017u, 2781214144u), uvec2(556386817u, 1913331328u), uvec2(771212545u, 881100608u), uvec2(1u, 0u), uvec2(1960755201u, 3891408896u), uvec2(2042462209u, 333733888u), uvec2(245121025u, 2211876864u), uvec2(863698945u, 935903232u), uvec2(3898195969u, 800780288u), uvec2(758677505u, 1806508032u), uvec2(35078145u, 3953086464u), uvec2(1727397889u, 2945548288u), uvec2(1540669441u, 3078860800u), uvec2(3769860097u, 58056704u), uvec2(4120002561u, 2473070592u), uvec2(2591096833u, 1733967872u), uvec2(3478110209u, 2135715840u), uvec2(2486075393u, 3678314496u), uvec2(3909959681u, 2066796544u), uvec2(3454795777u, 1596129280u), uvec2(1120583681u, 2266312704u), uvec2(1202290689u, 4077346816u), uvec2(3699916801u, 2734264320u), uvec2(23527425u, 2532032512u), uvec2(3058024449u, 3470651392u), uvec2(4213473281u, 1255153664u), uvec2(3489873921u, 180506624u), uvec2(887226369u, 246710272u), uvec2(700497921u, 1453764608u), uvec2(2929688577u, 3801669632u), uvec2(3279831041u, 2995458048u), uvec2(1750925313u, 3330097152u), uvec2(2637938689u, 510619648u), uvec2(1645903873u, 3126960128u), uvec2(3069788161u, 2589184000u), uvec2(2614624257u, 3192258560u), uvec2(280412161u, 641216512u), uvec2(362119169u, 3525992448u), uvec2(2859745281u, 3256651776u), uvec2(3478323201u, 4128161792u), uvec2(2217852929u, 1845555200u), uvec2(3373301761u, 703799296u), uvec2(2649702401u, 702894080u), uvec2(47054849u, 1842839552u), uvec2(4155293697u, 4123635712u), uvec2(2089517057u, 3250315264u), uvec2(2439659521u, 3517845504u), uvec2(910753793u, 631259136u), uvec2(1797767169u, 3180490752u), uvec2(805732353u, 2575605760u), uvec2(2229616641u, 3111571456u), uvec2(1774452737u, 493420544u), uvec2(3735207937u, 3311087616u), uvec2(3816914945u, 2974638080u), uvec2(2019573761u, 3779039232u), uvec2(2638151681u, 1429323776u), uvec2(1377681409u, 220459008u), uvec2(2533130241u, 152444928u), uvec2(1809530881u, 1225281536u), uvec2(3501850625u, 3438968832u), uvec2(3315122177u, 2498539520u), uvec2(1249345537u, 2698960896u), uvec2(1599488001u, 4040232960u), uvec2(70582273u, 2227388416u), uvec2(957595649u, 1555394560u), uvec2(4260528129u, 2024251392u), uvec2(1389445121u, 3633958912u));
 const uint NYQ_PMJ02_XOR_X[16] = uint[16](0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u);
 const uint NYQ_PMJ02_XOR_Y[16] = uint[16](0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u);
 const uint NYQ_HALTON_WORDS = 24u;
@@ -224,7 +223,7 @@ layout(std430, binding = 5) readonly buffer type_4_block_2Compute { uint _group_
 
 layout(std140, binding = 1) uniform NyqFillJob_block_3Compute { NyqFillJob _group_0_binding_1_cs; };
 
-layout(std430, binding = 2) readonly buffer type_29_block_4Compute { uvec4 _group_0_binding_2_cs[]; };
+layout(std430, binding = 2) readonly buffer type_28_block_4Compute { uvec4 _group_0_binding_2_cs[]; };
 
 layout(std430, binding = 3) buffer type_4_block_5Compute { uint _group_0_binding_3_cs[]; };
 
@@ -522,7 +521,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         uvec2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = uvec2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_8 = (2u * m_5);
+    uint n_9 = (2u * m_5);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
@@ -531,7 +530,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_1 = false;
         uint _e51 = c_1;
-        if ((_e51 < n_8)) {
+        if ((_e51 < n_9)) {
         } else {
             break;
         }
@@ -552,7 +551,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_2 = false;
                 uint _e81 = i;
-                if ((_e81 < n_8)) {
+                if ((_e81 < n_9)) {
                 } else {
                     break;
                 }
@@ -579,7 +578,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_3 = false;
         uint _e115 = i_1;
-        if ((_e115 < n_8)) {
+        if ((_e115 < n_9)) {
         } else {
             break;
         }
@@ -598,7 +597,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_4 = false;
         uint _e130 = col;
-        if ((_e130 < n_8)) {
+        if ((_e130 < n_9)) {
         } else {
             break;
         }
@@ -615,7 +614,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_5 = false;
                 uint _e136 = r_1;
-                if ((_e136 < n_8)) {
+                if ((_e136 < n_9)) {
                 } else {
                     break;
                 }
@@ -647,7 +646,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_6 = false;
                 uint _e164 = r_2;
-                if ((_e164 < n_8)) {
+                if ((_e164 < n_9)) {
                 } else {
                     break;
                 }
@@ -682,7 +681,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_7 = false;
         uint _e199 = i_2;
-        if ((_e199 < n_8)) {
+        if ((_e199 < n_9)) {
         } else {
             break;
         }
@@ -696,7 +695,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_8 = false;
                 uint _e203 = r_3;
-                if ((_e203 < n_8)) {
+                if ((_e203 < n_9)) {
                 } else {
                     break;
                 }
@@ -871,10 +870,10 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_18, uint dim_4) {
             local_2 = false;
         }
         bool _e37 = local_2;
-        uint w_2 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
+        uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
         uvec2 _e39 = nyq_u64_(d_10);
         uvec2 _e40 = nyq_hash2_(seed_35, _e39);
-        uint _e42 = nyq_scramble_u32_(w_2, _e40.y, how_3);
+        uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
@@ -1586,9 +1585,9 @@ NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_2, uint g_5, uvec2 se
 float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19) {
     uvec2 base = uvec2(0u);
     uint g_6 = 0u;
-    uint n_9 = s_49.n;
+    uint n_10 = s_49.n;
     uint _e5 = s_49.index;
-    uint k_19 = (_e5 % n_9);
+    uint k_19 = (_e5 % n_10);
     uint component = (dim_19 % 2u);
     uint _e11 = s_49.lattice;
     switch(_e11) {
@@ -1603,12 +1602,12 @@ float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19) {
             uint _e21 = s_49.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = (1u % n_9);
+                g_6 = (1u % n_10);
             }
             uint _e27 = g_6;
             uvec2 _e28 = nyq_mul_wide(k_19, _e27);
-            uint _e29 = nyq_mod64_(_e28, n_9);
-            uvec2 _e30 = nyq_fixed_ratio(_e29, n_9);
+            uint _e29 = nyq_mod64_(_e28, n_10);
+            uvec2 _e30 = nyq_fixed_ratio(_e29, n_10);
             base = _e30;
             break;
         }
@@ -1957,31 +1956,31 @@ uvec2 nyq_packed_table(uint n_5, uvec2 r_in) {
 }
 
 NyqPermutation nyq_permutation(uint n_in, uint seed_15) {
-    uint n_10 = max(n_in, 1u);
-    if ((n_10 <= 16u)) {
+    uint n_11 = max(n_in, 1u);
+    if ((n_11 <= 16u)) {
         uvec2 _e10 = nyq_mix64_(uvec2((seed_15 ^ 2242054355u), 608135816u));
-        uvec2 _e11 = nyq_packed_table(n_10, _e10);
-        return NyqPermutation(n_10, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        uvec2 _e11 = nyq_packed_table(n_11, _e10);
+        return NyqPermutation(n_11, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
     }
-    uint mask_3 = (4294967295u >> uint(31 - findMSB((n_10 - 1u))));
+    uint mask_3 = (4294967295u >> uint(31 - findMSB((n_11 - 1u))));
     uint bits_5 = (32u - uint(31 - findMSB(mask_3)));
     uint _e29 = nyq_mix32_((seed_15 ^ 1540483477u));
     uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    uvec2 _e36 = nyq_mul_wide(_e35, n_10);
+    uvec2 _e36 = nyq_mul_wide(_e35, n_11);
     uint offset_3 = _e36.y;
-    return NyqPermutation(n_10, mask_3, max(((bits_5 + 1u) / 2u), 1u), max((bits_5 / 3u), 1u), _e29, _e32, offset_3, uvec2(0u, 0u));
+    return NyqPermutation(n_11, mask_3, max(((bits_5 + 1u) / 2u), 1u), max((bits_5 / 3u), 1u), _e29, _e32, offset_3, uvec2(0u, 0u));
 }
 
 uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
     uint x_15 = 0u;
     bool local_10 = false;
-    uint n_11 = p.n;
-    if ((n_11 <= 16u)) {
-        uint _e11 = nyq_nibble(p.table, (4u * ((i_8 % n_11) & 15u)));
+    uint n_12 = p.n;
+    if ((n_12 <= 16u)) {
+        uint _e11 = nyq_nibble(p.table, (4u * ((i_8 % n_12) & 15u)));
         return _e11;
     }
-    x_15 = (i_8 % n_11);
+    x_15 = (i_8 % n_12);
     while(true) {
         uint _e14 = x_15;
         x_15 = (_e14 ^ (p.key & p.mask));
@@ -2010,7 +2009,7 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
         uint _e73 = x_15;
         x_15 = (_e72 ^ (_e73 >> p.third));
         uint _e77 = x_15;
-        if ((_e77 < n_11)) {
+        if ((_e77 < n_12)) {
             break;
         }
     }
@@ -2018,12 +2017,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
     uint q_3 = (_e79 + p.offset);
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = (q_3 >= n_11);
+        local_10 = (q_3 >= n_12);
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return (_e90 ? (q_3 - n_11) : q_3);
+    return (_e90 ? (q_3 - n_12) : q_3);
 }
 
 NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uvec2 seed_16) {
@@ -2180,32 +2179,38 @@ uint nyq_rxs_m_xs(uint state_1) {
 
 uint nyq_lcg_draw(uint seed_17, uint m_1) {
     uint s_66 = 0u;
-    uint w_1 = 0u;
+    uint n_6 = 0u;
+    uint a_8 = 747796405u;
+    uint c_3 = 2891336453u;
     s_66 = (2891336453u + seed_17);
-    uint n_12 = (m_1 + 1u);
-    bool loop_init_17 = true;
+    n_6 = (m_1 + 1u);
     while(true) {
-        if (!loop_init_17) {
-            uint _e30 = w_1;
-            w_1 = (_e30 + 1u);
-        }
-        loop_init_17 = false;
-        uint _e9 = w_1;
-        if ((_e9 < 3u)) {
+        uint _e12 = n_6;
+        if ((_e12 != 0u)) {
         } else {
             break;
         }
         {
-            uint _e13 = w_1;
-            uint _e17 = w_1;
-            uvec2 ac = NYQ_LCG_WINDOWS[((_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u))];
-            uint _e25 = s_66;
-            s_66 = ((ac.x * _e25) + ac.y);
+            uint _e15 = n_6;
+            if (((_e15 & 1u) != 0u)) {
+                uint _e20 = a_8;
+                uint _e21 = s_66;
+                uint _e23 = c_3;
+                s_66 = ((_e20 * _e21) + _e23);
+            }
+            uint _e25 = a_8;
+            uint _e28 = c_3;
+            c_3 = ((_e25 + 1u) * _e28);
+            uint _e30 = a_8;
+            uint _e31 = a_8;
+            a_8 = (_e30 * _e31);
+            uint _e33 = n_6;
+            n_6 = (_e33 >> 1u);
         }
     }
-    uint _e32 = s_66;
-    uint _e33 = nyq_rxs_m_xs(_e32);
-    return _e33;
+    uint _e36 = s_66;
+    uint _e37 = nyq_rxs_m_xs(_e36);
+    return _e37;
 }
 
 uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27) {
@@ -2234,9 +2239,9 @@ uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27) {
             known = (_e34 | low_2);
             uint _e36 = flips;
             flips = (_e36 ^ swap);
-            uint c_10 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[(level_1 & 15u)] : NYQ_PMJ02_XOR_Y[(level_1 & 15u)]);
+            uint c_11 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[(level_1 & 15u)] : NYQ_PMJ02_XOR_Y[(level_1 & 15u)]);
             uint _e49 = p_1;
-            p_1 = ((_e49 - (1u << level_1)) ^ c_10);
+            p_1 = ((_e49 - (1u << level_1)) ^ c_11);
         }
     }
     uint _e54 = x_17;
@@ -2364,8 +2369,8 @@ NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_75, uvec2 pixel_
     return NyqCameraSample(film_5, _e6, _e5);
 }
 
-uvec2 nyq_sub64_(uvec2 a_8, uvec2 b_7) {
-    return uvec2((a_8.x - b_7.x), ((a_8.y - b_7.y) - ((a_8.x < b_7.x) ? 1u : 0u)));
+uvec2 nyq_sub64_(uvec2 a_9, uvec2 b_7) {
+    return uvec2((a_9.x - b_7.x), ((a_9.y - b_7.y) - ((a_9.x < b_7.x) ? 1u : 0u)));
 }
 
 uvec3 nyq_divmod64_small(uvec2 x_18, uint d_3) {
@@ -2384,19 +2389,19 @@ uvec3 nyq_divmod64_small(uvec2 x_18, uint d_3) {
     return uvec3(((q1_ << 16u) | q0_), ((q3_ << 16u) | q2_), (t0_1 - (q0_ * d_3)));
 }
 
-uvec4 nyq_add128_(uvec4 a_9, uvec4 b_8) {
-    uvec4 s_104 = (a_9 + b_8);
-    uvec4 c_11 = mix(uvec4(0u), uvec4(1u), lessThan(s_104, a_9));
-    uint t1_2 = (s_104.y + c_11.x);
-    uint k1_ = (c_11.y + ((t1_2 < c_11.x) ? 1u : 0u));
+uvec4 nyq_add128_(uvec4 a_10, uvec4 b_8) {
+    uvec4 s_104 = (a_10 + b_8);
+    uvec4 c_12 = mix(uvec4(0u), uvec4(1u), lessThan(s_104, a_10));
+    uint t1_2 = (s_104.y + c_12.x);
+    uint k1_ = (c_12.y + ((t1_2 < c_12.x) ? 1u : 0u));
     uint t2_1 = (s_104.z + k1_);
-    uint k2_ = (c_11.z + ((t2_1 < k1_) ? 1u : 0u));
+    uint k2_ = (c_12.z + ((t2_1 < k1_) ? 1u : 0u));
     return uvec4(s_104.x, t1_2, t2_1, (s_104.w + k2_));
 }
 
-uvec4 nyq_sub128_(uvec4 a_10, uvec4 b_9) {
-    uvec4 s_105 = (a_10 - b_9);
-    uvec4 o = mix(uvec4(0u), uvec4(1u), lessThan(a_10, b_9));
+uvec4 nyq_sub128_(uvec4 a_11, uvec4 b_9) {
+    uvec4 s_105 = (a_11 - b_9);
+    uvec4 o = mix(uvec4(0u), uvec4(1u), lessThan(a_11, b_9));
     uint t1_3 = (s_105.y - o.x);
     uint k1_1 = (o.y + ((s_105.y < o.x) ? 1u : 0u));
     uint t2_2 = (s_105.z - k1_1);
@@ -2404,17 +2409,17 @@ uvec4 nyq_sub128_(uvec4 a_10, uvec4 b_9) {
     return uvec4(s_105.x, t1_3, t2_2, (s_105.w - k2_1));
 }
 
-bool nyq_lt128_(uvec4 a_11, uvec4 b_10) {
-    if ((a_11.w != b_10.w)) {
-        return (a_11.w < b_10.w);
+bool nyq_lt128_(uvec4 a_12, uvec4 b_10) {
+    if ((a_12.w != b_10.w)) {
+        return (a_12.w < b_10.w);
     }
-    if ((a_11.z != b_10.z)) {
-        return (a_11.z < b_10.z);
+    if ((a_12.z != b_10.z)) {
+        return (a_12.z < b_10.z);
     }
-    if ((a_11.y != b_10.y)) {
-        return (a_11.y < b_10.y);
+    if ((a_12.y != b_10.y)) {
+        return (a_12.y < b_10.y);
     }
-    return (a_11.x < b_10.x);
+    return (a_12.x < b_10.x);
 }
 
 uvec4 nyq_mul128_u32_(uvec4 x_19, uint k_12) {
@@ -2426,11 +2431,11 @@ uvec4 nyq_mul128_u32_(uvec4 x_19, uint k_12) {
     return uvec4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_12) + _e15.y));
 }
 
-uvec4 nyq_mul64_wide(uvec2 a_12, uvec2 b_11) {
-    uvec2 _e4 = nyq_mul_wide(a_12.x, b_11.x);
-    uvec2 _e7 = nyq_mul_wide(a_12.x, b_11.y);
-    uvec2 _e10 = nyq_mul_wide(a_12.y, b_11.x);
-    uvec2 _e13 = nyq_mul_wide(a_12.y, b_11.y);
+uvec4 nyq_mul64_wide(uvec2 a_13, uvec2 b_11) {
+    uvec2 _e4 = nyq_mul_wide(a_13.x, b_11.x);
+    uvec2 _e7 = nyq_mul_wide(a_13.x, b_11.y);
+    uvec2 _e10 = nyq_mul_wide(a_13.y, b_11.x);
+    uvec2 _e13 = nyq_mul_wide(a_13.y, b_11.y);
     uvec4 outer = uvec4(_e4.x, _e4.y, _e13.x, _e13.y);
     uvec4 _e24 = nyq_add128_(outer, uvec4(0u, _e7.x, _e7.y, 0u));
     uvec4 _e30 = nyq_add128_(_e24, uvec4(0u, _e10.x, _e10.y, 0u));
@@ -2649,13 +2654,13 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
         uvec2 d_27 = den_1.xy;
         uvec4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
-        bool loop_init_18 = true;
+        bool loop_init_17 = true;
         while(true) {
-            if (!loop_init_18) {
+            if (!loop_init_17) {
                 uint _e109 = i_10;
                 i_10 = (_e109 + 1u);
             }
-            loop_init_18 = false;
+            loop_init_17 = false;
             uint _e51 = i_10;
             if ((_e51 < steps)) {
             } else {
@@ -2706,13 +2711,13 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
     } else {
         uvec4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
-        bool loop_init_19 = true;
+        bool loop_init_18 = true;
         while(true) {
-            if (!loop_init_19) {
+            if (!loop_init_18) {
                 uint _e186 = i_11;
                 i_11 = (_e186 + 1u);
             }
-            loop_init_19 = false;
+            loop_init_18 = false;
             uint _e128 = i_11;
             if ((_e128 < steps)) {
             } else {
@@ -2755,24 +2760,24 @@ uint nyq_prime(uint dim_31) {
     return _e7;
 }
 
-NyqRounding nyq_phi_short(uint t_3, uint a_13) {
+NyqRounding nyq_phi_short(uint t_3, uint a_14) {
     uint x_22 = 0u;
     uvec2 rev = uvec2(0u, 0u);
     uint i_12 = 0u;
     uint b_17 = _group_0_binding_4_cs[t_3];
-    uint c_12 = (((35u - uint(31 - findMSB(a_13))) / 4u) - 1u);
-    uint _e19 = _group_0_binding_4_cs[((t_3 + 2u) + (c_12 / 4u))];
-    uint places = ((_e19 >> (8u * (c_12 % 4u))) & 255u);
-    uint low_3 = _group_0_binding_4_cs[((t_3 + 8u) + (2u * c_12))];
-    uint high_1 = _group_0_binding_4_cs[((t_3 + 9u) + (2u * c_12))];
-    x_22 = a_13;
-    bool loop_init_20 = true;
+    uint c_13 = (((35u - uint(31 - findMSB(a_14))) / 4u) - 1u);
+    uint _e19 = _group_0_binding_4_cs[((t_3 + 2u) + (c_13 / 4u))];
+    uint places = ((_e19 >> (8u * (c_13 % 4u))) & 255u);
+    uint low_3 = _group_0_binding_4_cs[((t_3 + 8u) + (2u * c_13))];
+    uint high_1 = _group_0_binding_4_cs[((t_3 + 9u) + (2u * c_13))];
+    x_22 = a_14;
+    bool loop_init_19 = true;
     while(true) {
-        if (!loop_init_20) {
+        if (!loop_init_19) {
             uint _e64 = i_12;
             i_12 = (_e64 + 1u);
         }
-        loop_init_20 = false;
+        loop_init_19 = false;
         uint _e50 = i_12;
         if ((_e50 < places)) {
         } else {
@@ -2796,18 +2801,18 @@ NyqRounding nyq_phi_short(uint t_3, uint a_13) {
     return NyqRounding(_e79, e_5, 0u, 1u, 0u);
 }
 
-NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_14) {
+NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_15) {
     uvec2 x_23 = uvec2(0u);
     uvec4 num_2 = uvec4(0u);
     uvec4 den_2 = uvec4(1u, 0u, 0u, 0u);
     bool local_28 = false;
-    uint c_3 = 0u;
+    uint c_4 = 0u;
     uint rev_1 = 0u;
     uint i_13 = 0u;
     uint b_18 = _group_0_binding_4_cs[t_4];
     uint chunk = _group_0_binding_4_cs[(t_4 + 4u)];
     uint run = _group_0_binding_4_cs[(t_4 + 5u)];
-    x_23 = a_14;
+    x_23 = a_15;
     while(true) {
         uint _e26 = x_23.x;
         if (!((_e26 != 0u))) {
@@ -2825,28 +2830,28 @@ NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_14) {
             uvec2 _e38 = x_23;
             uvec3 _e39 = nyq_divmod64_small(_e38, chunk);
             x_23 = _e39.xy;
-            c_3 = _e39.z;
+            c_4 = _e39.z;
             rev_1 = 0u;
             i_13 = 0u;
-            bool loop_init_21 = true;
+            bool loop_init_20 = true;
             while(true) {
-                if (!loop_init_21) {
+                if (!loop_init_20) {
                     uint _e58 = i_13;
                     i_13 = (_e58 + 1u);
                 }
-                loop_init_21 = false;
+                loop_init_20 = false;
                 uint _e47 = i_13;
                 if ((_e47 < run)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = c_3;
+                    uint _e49 = c_4;
                     uint q_6 = (_e49 / b_18);
                     uint _e51 = rev_1;
-                    uint _e53 = c_3;
+                    uint _e53 = c_4;
                     rev_1 = ((_e51 * b_18) + (_e53 - (q_6 * b_18)));
-                    c_3 = q_6;
+                    c_4 = q_6;
                 }
             }
             uvec4 _e60 = num_2;
@@ -2864,13 +2869,13 @@ NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_14) {
     return NyqFraction(_e70, _e71, 0u, 0u);
 }
 
-NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_15, uvec2 seed_21) {
+NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
     uvec2 x_24 = uvec2(0u);
     uvec4 num_3 = uvec4(0u);
     uvec4 den_3 = uvec4(1u, 0u, 0u, 0u);
     bool local_29 = false;
     bool local_30 = false;
-    uint c_4 = 0u;
+    uint c_5 = 0u;
     uint part = 0u;
     uint scale = 0u;
     uint i_14 = 0u;
@@ -2883,7 +2888,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_15, uvec2 seed_21) {
     uvec2 _e16 = nyq_u64_(b_19);
     uvec2 _e17 = nyq_hash2_(seed_21, _e16);
     NyqPermutation _e21 = nyq_permutation(b_19, (_e17.x ^ _e17.y));
-    x_24 = a_15;
+    x_24 = a_16;
     while(true) {
         uint _e33 = x_24.x;
         if (!((_e33 != 0u))) {
@@ -2909,17 +2914,17 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_15, uvec2 seed_21) {
                 local_30 = false;
             }
             bool last = local_30;
-            c_4 = _e46.z;
+            c_5 = _e46.z;
             part = 0u;
             scale = 1u;
             i_14 = 0u;
-            bool loop_init_22 = true;
+            bool loop_init_21 = true;
             while(true) {
-                if (!loop_init_22) {
+                if (!loop_init_21) {
                     uint _e89 = i_14;
                     i_14 = (_e89 + 1u);
                 }
-                loop_init_22 = false;
+                loop_init_21 = false;
                 uint _e68 = i_14;
                 if ((_e68 < run_1)) {
                 } else {
@@ -2927,7 +2932,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_15, uvec2 seed_21) {
                 }
                 {
                     if (last) {
-                        uint _e72 = c_4;
+                        uint _e72 = c_5;
                         local_31 = (_e72 == 0u);
                     } else {
                         local_31 = false;
@@ -2936,15 +2941,15 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_15, uvec2 seed_21) {
                     if (_e76) {
                         break;
                     }
-                    uint _e77 = c_4;
+                    uint _e77 = c_5;
                     uint q_7 = (_e77 / b_19);
                     uint _e79 = part;
-                    uint _e81 = c_4;
+                    uint _e81 = c_5;
                     uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_19)));
                     part = ((_e79 * b_19) + _e84);
                     uint _e86 = scale;
                     scale = (_e86 * b_19);
-                    c_4 = q_7;
+                    c_5 = q_7;
                 }
             }
             uvec4 _e91 = num_3;
@@ -2987,7 +2992,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_15, uvec2 seed_21) {
     return NyqFraction(_e138, _e139, (small ? 1u : 0u), ((_e104 == (b_19 - 1u)) ? 1u : 0u));
 }
 
-NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_16, uvec2 seed_22, bool affine) {
+NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_17, uvec2 seed_22, bool affine) {
     uvec2 rest = uvec2(0u);
     uvec2 pow_ = uvec2(1u, 0u);
     uint level = 0u;
@@ -3000,7 +3005,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_16, uvec2 seed_22, bool affine
     uint b_20 = _group_0_binding_4_cs[(NYQ_HALTON_WORDS * d_4)];
     uvec2 _e9 = nyq_u64_(d_4);
     uvec2 _e13 = nyq_hash3_(seed_22, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
-    rest = a_16;
+    rest = a_17;
     while(true) {
         uint _e30 = den_4.y;
         if ((_e30 == 0u)) {
@@ -3027,7 +3032,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_16, uvec2 seed_22, bool affine
             uvec2 _e56 = rest;
             uvec2 _e57 = pow_;
             uvec2 _e58 = nyq_mul64_(_e56, _e57);
-            uvec2 _e59 = nyq_sub64_(a_16, _e58);
+            uvec2 _e59 = nyq_sub64_(a_17, _e58);
             uvec2 _e61 = nyq_mul64_(_e59, NYQ_OWEN_PREFIX_MUL);
             uint _e63 = level;
             uvec2 _e64 = nyq_u64_(_e63);
@@ -3077,7 +3082,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uvec2 a_16, uvec2 seed_22, bool affine
     return NyqFraction(uvec4(_e114, 0u, 0u), uvec4(_e118, 0u, 0u), 1u, 0u);
 }
 
-float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_17, uvec2 seed_23, uint how_2) {
+float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_18, uvec2 seed_23, uint how_2) {
     NyqRounding r_13 = NyqRounding(uvec4(0u), 0, 0u, 0u, 0u);
     bool local_35 = false;
     bool local_36 = false;
@@ -3093,36 +3098,36 @@ float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_17, uvec2 seed_23, uint
     }
     bool _e16 = local_35;
     if (_e16) {
-        r_13 = NyqRounding(uvec4(bitfieldReverse(a_17.y), bitfieldReverse(a_17.x), 0u, 0u), -64, 0u, 0u, 0u);
+        r_13 = NyqRounding(uvec4(bitfieldReverse(a_18.y), bitfieldReverse(a_18.x), 0u, 0u), -64, 0u, 0u, 0u);
     } else {
         if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-            local_36 = (a_17.y == 0u);
+            local_36 = (a_18.y == 0u);
         } else {
             local_36 = false;
         }
         bool _e37 = local_36;
         if (_e37) {
             uint _e45 = _group_0_binding_4_cs[(t_7 + 1u)];
-            local_37 = (a_17.x < _e45);
+            local_37 = (a_18.x < _e45);
         } else {
             local_37 = false;
         }
         bool _e48 = local_37;
         if (_e48) {
-            if ((a_17.x != 0u)) {
-                NyqRounding _e53 = nyq_phi_short(t_7, a_17.x);
+            if ((a_18.x != 0u)) {
+                NyqRounding _e53 = nyq_phi_short(t_7, a_18.x);
                 r_13 = _e53;
             }
         } else {
             if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-                NyqFraction _e57 = nyq_phi_fraction(t_7, a_17);
+                NyqFraction _e57 = nyq_phi_fraction(t_7, a_18);
                 f = _e57;
             } else {
                 if ((how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-                    NyqFraction _e60 = nyq_permuted_fraction(t_7, a_17, seed_23);
+                    NyqFraction _e60 = nyq_permuted_fraction(t_7, a_18, seed_23);
                     f = _e60;
                 } else {
-                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_17, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
                     f = _e63;
                 }
             }
@@ -3155,23 +3160,23 @@ float nyq_radical_inverse_scrambled(uint dim_32, uvec2 a_17, uvec2 seed_23, uint
     return uintBitsToFloat(min(_e104, NYQ_BELOW_ONE_BITS));
 }
 
-float nyq_radical_inverse(uint dim_33, uvec2 a_18) {
-    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_18, uvec2(0u, 0u), NYQ_SCRAMBLE_NONE);
+float nyq_radical_inverse(uint dim_33, uvec2 a_19) {
+    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, uvec2(0u, 0u), NYQ_SCRAMBLE_NONE);
     return _e6;
 }
 
-float nyq_scrambled_radical_inverse(uint dim_34, uvec2 a_19, uvec2 seed_24) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_19, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
+float nyq_scrambled_radical_inverse(uint dim_34, uvec2 a_20, uvec2 seed_24) {
+    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
     return _e4;
 }
 
-float nyq_owen_scrambled_radical_inverse(uint dim_35, uvec2 a_20, uvec2 seed_25) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_20, seed_25, NYQ_SCRAMBLE_OWEN);
+float nyq_owen_scrambled_radical_inverse(uint dim_35, uvec2 a_21, uvec2 seed_25) {
+    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN);
     return _e4;
 }
 
-float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uvec2 a_21, uvec2 seed_26) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_21, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
+float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uvec2 a_22, uvec2 seed_26) {
+    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
     return _e4;
 }
 
@@ -3184,14 +3189,14 @@ float nyq_halton_sample(NyqHalton h_1, uvec2 index_15, uint dim_37) {
     return _e7;
 }
 
-uint nyq_mod_inverse(uint a_22, uint n_6) {
+uint nyq_mod_inverse(uint a_23, uint n_7) {
     int r0_ = 0;
     int r1_ = 0;
     int t0_ = 0;
     int t1_ = 1;
     int m_4 = 0;
-    r0_ = int(n_6);
-    r1_ = int((a_22 % n_6));
+    r0_ = int(n_7);
+    r1_ = int((a_23 % n_7));
     while(true) {
         int _e11 = r1_;
         if ((_e11 != 0)) {
@@ -3217,11 +3222,11 @@ uint nyq_mod_inverse(uint a_22, uint n_6) {
         }
     }
     int _e27 = t0_;
-    m_4 = (_e27 % int(n_6));
+    m_4 = (_e27 % int(n_7));
     int _e31 = m_4;
     if ((_e31 < 0)) {
         int _e34 = m_4;
-        m_4 = (_e34 + int(n_6));
+        m_4 = (_e34 + int(n_7));
     }
     int _e37 = m_4;
     return uint(_e37);
@@ -3259,21 +3264,21 @@ NyqHaltonSampler nyq_halton_sampler(uvec2 resolution_2, uint spp, uint scramble_
     return NyqHaltonSampler(spp, scramble_3, seed_28, uvec2(_e6.y, _e9.y), scales, (_e6.x * _e9.x), basis, uvec2(0u, 0u), 0u);
 }
 
-uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7) {
+uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_8) {
     uint inverse_1 = 0u;
     uint index_16 = 0u;
     uint done = 0u;
     uint k_14 = 0u;
     inverse_1 = inverse_in;
-    bool loop_init_23 = true;
+    bool loop_init_22 = true;
     while(true) {
-        if (!loop_init_23) {
+        if (!loop_init_22) {
             uint _e32 = done;
             done = (_e32 + 1u);
         }
-        loop_init_23 = false;
+        loop_init_22 = false;
         uint _e8 = done;
-        if ((_e8 < n_7)) {
+        if ((_e8 < n_8)) {
         } else {
             break;
         }
@@ -3282,15 +3287,15 @@ uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7) {
             if ((_e10 == 0u)) {
                 uint _e13 = done;
                 k_14 = _e13;
-                bool loop_init_24 = true;
+                bool loop_init_23 = true;
                 while(true) {
-                    if (!loop_init_24) {
+                    if (!loop_init_23) {
                         uint _e20 = k_14;
                         k_14 = (_e20 + 1u);
                     }
-                    loop_init_24 = false;
+                    loop_init_23 = false;
                     uint _e15 = k_14;
-                    if ((_e15 < n_7)) {
+                    if ((_e15 < n_8)) {
                     } else {
                         break;
                     }
@@ -3333,24 +3338,24 @@ uvec2 nyq_halton_sampler_index(inout NyqHaltonSampler s_77, uvec2 pixel_18, uint
 }
 
 float nyq_halton_sampler_value(inout NyqHaltonSampler s_78, uint dim_38) {
-    uvec2 a_23 = uvec2(0u);
+    uvec2 a_24 = uvec2(0u);
     uint d_29 = (dim_38 % NYQ_PRIME_COUNT);
     uvec2 index_19 = s_78.index;
-    a_23 = index_19;
+    a_24 = index_19;
     if ((d_29 == 0u)) {
         uint e_6 = s_78.exponents.x;
         if ((e_6 != 0u)) {
             uvec2 _e14 = nyq_shr64_(index_19, e_6);
-            a_23 = _e14;
+            a_24 = _e14;
         }
     } else {
         if ((d_29 == 1u)) {
             uint _e19 = s_78.scales.y;
             uvec3 _e20 = nyq_divmod64_small(index_19, _e19);
-            a_23 = _e20.xy;
+            a_24 = _e20.xy;
         }
     }
-    uvec2 _e22 = a_23;
+    uvec2 _e22 = a_24;
     uvec2 _e24 = s_78.seed;
     uint _e26 = s_78.scramble;
     float _e27 = nyq_radical_inverse_scrambled(d_29, _e22, _e24, _e26);
@@ -3374,13 +3379,13 @@ float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_80) {
 vec2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_81, uint dim_40) {
     vec2 v_6 = vec2(0.0, 0.0);
     uint k_15 = 0u;
-    bool loop_init_25 = true;
+    bool loop_init_24 = true;
     while(true) {
-        if (!loop_init_25) {
+        if (!loop_init_24) {
             uint _e17 = k_15;
             k_15 = (_e17 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_24 = false;
         uint _e8 = k_15;
         if ((_e8 < 2u)) {
         } else {
@@ -3416,13 +3421,13 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_84, uv
     float lens_y = 0.0;
     uint d_5 = 0u;
     nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
-    bool loop_init_26 = true;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_26) {
+        if (!loop_init_25) {
             uint _e25 = d_5;
             d_5 = (_e25 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_25 = false;
         uint _e14 = d_5;
         if ((_e14 < 5u)) {
         } else {
@@ -3488,8 +3493,8 @@ NyqCameraSample nyq_blue_camera(uvec2 pixel_23, float v_8[5]) {
     return NyqCameraSample(p_5, vec2(v_8[3], v_8[4]), v_8[2]);
 }
 
-uint nyq_blue_shift(uint key_4, uint c_5) {
-    uint _e7 = nyq_mix32_((key_4 ^ ((c_5 + 1u) * 2654435769u)));
+uint nyq_blue_shift(uint key_4, uint c_6) {
+    uint _e7 = nyq_mix32_((key_4 ^ ((c_6 + 1u) * 2654435769u)));
     return _e7;
 }
 
@@ -3508,9 +3513,9 @@ uint nyq_owen_sobol_bn_rev(uint entry_1, uint key_5, uint index_17) {
     return _e9;
 }
 
-float nyq_owen_sobol_bn_value_at(uint key_6, uint rev_2, uint c_6) {
-    uint _e3 = nyq_dim_seed(key_6, c_6);
-    uint _e4 = nyq_owen_sobol_rev(rev_2, c_6, _e3);
+float nyq_owen_sobol_bn_value_at(uint key_6, uint rev_2, uint c_7) {
+    uint _e3 = nyq_dim_seed(key_6, c_7);
+    uint _e4 = nyq_owen_sobol_rev(rev_2, c_7, _e3);
     float _e5 = nyq_rev_to_f32_(_e4);
     return _e5;
 }
@@ -3525,13 +3530,13 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uvec2 pixel_24, uint sam
     s_85.pixel = pixel_24;
     s_85.index = sample_index_19;
     s_85.dim = dim_41;
-    bool loop_init_27 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_26) {
             uint _e28 = b_14;
             b_14 = (_e28 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_26 = false;
         uint _e9 = b_14;
         if ((_e9 < 2u)) {
         } else {
@@ -3555,11 +3560,11 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uvec2 pixel_24, uint sam
 
 float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_86, uint dim_42) {
     uint b_21 = (dim_42 / 4u);
-    uint c_13 = (dim_42 % 4u);
+    uint c_14 = (dim_42 % 4u);
     if ((b_21 < 2u)) {
         uint _e10 = s_86.key[b_21];
         uint _e13 = s_86.prepared[b_21];
-        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13);
+        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_14);
         return _e14;
     }
     uvec2 _e17 = s_86.seed;
@@ -3569,7 +3574,7 @@ float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_86, uint dim_42) {
     uint _e23 = nyq_owen_sobol_bn_key(_e22);
     uint _e25 = s_86.index;
     uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13);
+    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_14);
     return _e27;
 }
 
@@ -3600,13 +3605,13 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_90, uvec2
     float v_9[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_6 = 0u;
     nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u);
-    bool loop_init_28 = true;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_28) {
+        if (!loop_init_27) {
             uint _e15 = d_6;
             d_6 = (_e15 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_27 = false;
         uint _e7 = d_6;
         if ((_e7 < 5u)) {
         } else {
@@ -3643,10 +3648,10 @@ uint nyq_pmj02_bn_points(uint k_16, uint i_16) {
     return (p0_ | (p1_ << 16u));
 }
 
-float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_7) {
-    uint point = ((points >> (16u * (c_7 / 2u))) & 65535u);
-    uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, (c_7 % 2u));
-    uint _e14 = nyq_blue_shift(k_17, c_7);
+float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_8) {
+    uint point = ((points >> (16u * (c_8 / 2u))) & 65535u);
+    uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, (c_8 % 2u));
+    uint _e14 = nyq_blue_shift(k_17, c_8);
     float _e16 = nyq_fraction_to_f32_((_e13 ^ _e14));
     return _e16;
 }
@@ -3661,13 +3666,13 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uvec2 pixel_26, uint sample_i
     s_91.pixel = pixel_26;
     s_91.index = sample_index_21;
     s_91.dim = dim_43;
-    bool loop_init_29 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_29) {
+        if (!loop_init_28) {
             uint _e31 = b_15;
             b_15 = (_e31 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_28 = false;
         uint _e9 = b_15;
         if ((_e9 < 2u)) {
         } else {
@@ -3692,11 +3697,11 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uvec2 pixel_26, uint sample_i
 
 float nyq_pmj02_bn_value(inout NyqBlueSampler s_92, uint dim_44) {
     uint b_22 = (dim_44 / 4u);
-    uint c_14 = (dim_44 % 4u);
+    uint c_15 = (dim_44 % 4u);
     if ((b_22 < 2u)) {
         uint _e10 = s_92.key[b_22];
         uint _e13 = s_92.prepared[b_22];
-        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
+        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
     uvec2 _e17 = s_92.seed;
@@ -3707,7 +3712,7 @@ float nyq_pmj02_bn_value(inout NyqBlueSampler s_92, uint dim_44) {
     uint i_19 = (_e24 ^ (_e22 & 255u));
     uint _e28 = nyq_pmj02_bn_key(_e22, i_19);
     uint _e29 = nyq_pmj02_bn_points(_e28, i_19);
-    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
+    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_15);
     return _e30;
 }
 
@@ -3738,13 +3743,13 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_96, uvec2 pixe
     float v_10[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_7 = 0u;
     nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u);
-    bool loop_init_30 = true;
+    bool loop_init_29 = true;
     while(true) {
-        if (!loop_init_30) {
+        if (!loop_init_29) {
             uint _e15 = d_7;
             d_7 = (_e15 + 1u);
         }
-        loop_init_30 = false;
+        loop_init_29 = false;
         uint _e7 = d_7;
         if ((_e7 < 5u)) {
         } else {
@@ -3774,9 +3779,9 @@ uint nyq_lattice_bn_rev(uint entry_4, uint key_7, uint index_18) {
     return _e9;
 }
 
-float nyq_lattice_bn_value_at(uint key_8, uint rev_3, uint c_8) {
-    uint _e6 = nyq_blue_shift(key_8, c_8);
-    float _e8 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_8]) + _e6));
+float nyq_lattice_bn_value_at(uint key_8, uint rev_3, uint c_9) {
+    uint _e6 = nyq_blue_shift(key_8, c_9);
+    float _e8 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_9]) + _e6));
     return _e8;
 }
 
@@ -3790,13 +3795,13 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uvec2 pixel_28, uint sample
     s_97.pixel = pixel_28;
     s_97.index = sample_index_23;
     s_97.dim = dim_45;
-    bool loop_init_31 = true;
+    bool loop_init_30 = true;
     while(true) {
-        if (!loop_init_31) {
+        if (!loop_init_30) {
             uint _e28 = b_16;
             b_16 = (_e28 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_30 = false;
         uint _e9 = b_16;
         if ((_e9 < 2u)) {
         } else {
@@ -3820,11 +3825,11 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uvec2 pixel_28, uint sample
 
 float nyq_lattice_bn_value(inout NyqBlueSampler s_98, uint dim_46) {
     uint b_23 = (dim_46 / 4u);
-    uint c_15 = (dim_46 % 4u);
+    uint c_16 = (dim_46 % 4u);
     if ((b_23 < 2u)) {
         uint _e10 = s_98.key[b_23];
         uint _e13 = s_98.prepared[b_23];
-        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
+        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_16);
         return _e14;
     }
     uvec2 _e17 = s_98.seed;
@@ -3834,7 +3839,7 @@ float nyq_lattice_bn_value(inout NyqBlueSampler s_98, uint dim_46) {
     uint _e23 = nyq_lattice_bn_key(_e22);
     uint _e25 = s_98.index;
     uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
+    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_16);
     return _e27;
 }
 
@@ -3865,13 +3870,13 @@ NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_102, uvec2 p
     float v_11[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_8 = 0u;
     nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u);
-    bool loop_init_32 = true;
+    bool loop_init_31 = true;
     while(true) {
-        if (!loop_init_32) {
+        if (!loop_init_31) {
             uint _e15 = d_8;
             d_8 = (_e15 + 1u);
         }
-        loop_init_32 = false;
+        loop_init_31 = false;
         uint _e7 = d_8;
         if ((_e7 < 5u)) {
         } else {
@@ -3906,12 +3911,12 @@ uvec4 nyq_fill_request(uint i_17) {
     return uvec4((pixel_30 % _e20), (pixel_30 / _e25), (n_13 % _e29), 5u);
 }
 
-void nyq_fill_camera(uint out_3, NyqCameraSample c_9) {
-    _group_0_binding_3_cs[out_3] = floatBitsToUint(c_9.p_film.x);
-    _group_0_binding_3_cs[(out_3 + 1u)] = floatBitsToUint(c_9.p_film.y);
-    _group_0_binding_3_cs[(out_3 + 2u)] = floatBitsToUint(c_9.time);
-    _group_0_binding_3_cs[(out_3 + 3u)] = floatBitsToUint(c_9.lens.x);
-    _group_0_binding_3_cs[(out_3 + 4u)] = floatBitsToUint(c_9.lens.y);
+void nyq_fill_camera(uint out_3, NyqCameraSample c_10) {
+    _group_0_binding_3_cs[out_3] = floatBitsToUint(c_10.p_film.x);
+    _group_0_binding_3_cs[(out_3 + 1u)] = floatBitsToUint(c_10.p_film.y);
+    _group_0_binding_3_cs[(out_3 + 2u)] = floatBitsToUint(c_10.time);
+    _group_0_binding_3_cs[(out_3 + 3u)] = floatBitsToUint(c_10.lens.x);
+    _group_0_binding_3_cs[(out_3 + 4u)] = floatBitsToUint(c_10.lens.y);
     return;
 }
 
@@ -4107,13 +4112,13 @@ void main() {
             uint _e198 = _group_0_binding_1_cs.scramble;
             uvec2 _e203 = _group_0_binding_1_cs.seed;
             NyqSobol _e204 = nyq_sobol(_e195, (_e198 != 0u), _e203);
-            bool loop_init_33 = true;
+            bool loop_init_32 = true;
             while(true) {
-                if (!loop_init_33) {
+                if (!loop_init_32) {
                     uint _e232 = k;
                     k = (_e232 + 1u);
                 }
-                loop_init_33 = false;
+                loop_init_32 = false;
                 uint _e207 = k;
                 if ((_e207 < 4u)) {
                 } else {
@@ -4137,13 +4142,13 @@ void main() {
             uvec2 _e239 = _group_0_binding_1_cs.seed;
             NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             vec4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w);
-            bool loop_init_34 = true;
+            bool loop_init_33 = true;
             while(true) {
-                if (!loop_init_34) {
+                if (!loop_init_33) {
                     uint _e268 = k_1;
                     k_1 = (_e268 + 1u);
                 }
-                loop_init_34 = false;
+                loop_init_33 = false;
                 uint _e246 = k_1;
                 if ((_e246 < 4u)) {
                 } else {
@@ -4165,13 +4170,13 @@ void main() {
             uint _e272 = _group_0_binding_1_cs.scramble;
             uvec2 _e277 = _group_0_binding_1_cs.seed;
             NyqPmj02_ _e278 = nyq_pmj02_((_e272 != 0u), _e277);
-            bool loop_init_35 = true;
+            bool loop_init_34 = true;
             while(true) {
-                if (!loop_init_35) {
+                if (!loop_init_34) {
                     uint _e306 = k_2;
                     k_2 = (_e306 + 1u);
                 }
-                loop_init_35 = false;
+                loop_init_34 = false;
                 uint _e281 = k_2;
                 if ((_e281 < 4u)) {
                 } else {
@@ -4196,13 +4201,13 @@ void main() {
             uvec2 _e316 = _group_0_binding_1_cs.seed;
             NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
-            bool loop_init_36 = true;
+            bool loop_init_35 = true;
             while(true) {
-                if (!loop_init_36) {
+                if (!loop_init_35) {
                     uint _e351 = k_3;
                     k_3 = (_e351 + 1u);
                 }
-                loop_init_36 = false;
+                loop_init_35 = false;
                 uint _e329 = k_3;
                 if ((_e329 < 8u)) {
                 } else {
@@ -4227,13 +4232,13 @@ void main() {
             uint _e367 = _group_0_binding_1_cs.scramble;
             uvec2 _e372 = _group_0_binding_1_cs.seed;
             NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, (_e367 != 0u), _e372);
-            bool loop_init_37 = true;
+            bool loop_init_36 = true;
             while(true) {
-                if (!loop_init_37) {
+                if (!loop_init_36) {
                     uint _e390 = k_4;
                     k_4 = (_e390 + 1u);
                 }
-                loop_init_37 = false;
+                loop_init_36 = false;
                 uint _e376 = k_4;
                 if ((_e376 < 4u)) {
                 } else {
@@ -4257,13 +4262,13 @@ void main() {
             return;
         }
         default: {
-            bool loop_init_38 = true;
+            bool loop_init_37 = true;
             while(true) {
-                if (!loop_init_38) {
+                if (!loop_init_37) {
                     uint _e433 = k_5;
                     k_5 = (_e433 + 1u);
                 }
-                loop_init_38 = false;
+                loop_init_37 = false;
                 uint _e424 = k_5;
                 if ((_e424 < 8u)) {
                 } else {

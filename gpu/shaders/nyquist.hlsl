@@ -215,12 +215,6 @@ ret_Constructarray32_uint_ Constructarray32_uint_(uint arg0, uint arg1, uint arg
     return ret;
 }
 
-typedef uint2 ret_Constructarray192_uint2_[192];
-ret_Constructarray192_uint2_ Constructarray192_uint2_(uint2 arg0, uint2 arg1, uint2 arg2, uint2 arg3, uint2 arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint2 arg8, uint2 arg9, uint2 arg10, uint2 arg11, uint2 arg12, uint2 arg13, uint2 arg14, uint2 arg15, uint2 arg16, uint2 arg17, uint2 arg18, uint2 arg19, uint2 arg20, uint2 arg21, uint2 arg22, uint2 arg23, uint2 arg24, uint2 arg25, uint2 arg26, uint2 arg27, uint2 arg28, uint2 arg29, uint2 arg30, uint2 arg31, uint2 arg32, uint2 arg33, uint2 arg34, uint2 arg35, uint2 arg36, uint2 arg37, uint2 arg38, uint2 arg39, uint2 arg40, uint2 arg41, uint2 arg42, uint2 arg43, uint2 arg44, uint2 arg45, uint2 arg46, uint2 arg47, uint2 arg48, uint2 arg49, uint2 arg50, uint2 arg51, uint2 arg52, uint2 arg53, uint2 arg54, uint2 arg55, uint2 arg56, uint2 arg57, uint2 arg58, uint2 arg59, uint2 arg60, uint2 arg61, uint2 arg62, uint2 arg63, uint2 arg64, uint2 arg65, uint2 arg66, uint2 arg67, uint2 arg68, uint2 arg69, uint2 arg70, uint2 arg71, uint2 arg72, uint2 arg73, uint2 arg74, uint2 arg75, uint2 arg76, uint2 arg77, uint2 arg78, uint2 arg79, uint2 arg80, uint2 arg81, uint2 arg82, uint2 arg83, uint2 arg84, uint2 arg85, uint2 arg86, uint2 arg87, uint2 arg88, uint2 arg89, uint2 arg90, uint2 arg91, uint2 arg92, uint2 arg93, uint2 arg94, uint2 arg95, uint2 arg96, uint2 arg97, uint2 arg98, uint2 arg99, uint2 arg100, uint2 arg101, uint2 arg102, uint2 arg103, uint2 arg104, uint2 arg105, uint2 arg106, uint2 arg107, uint2 arg108, uint2 arg109, uint2 arg110, uint2 arg111, uint2 arg112, uint2 arg113, uint2 arg114, uint2 arg115, uint2 arg116, uint2 arg117, uint2 arg118, uint2 arg119, uint2 arg120, uint2 arg121, uint2 arg122, uint2 arg123, uint2 arg124, uint2 arg125, uint2 arg126, uint2 arg127, uint2 arg128, uint2 arg129, uint2 arg130, uint2 arg131, uint2 arg132, uint2 arg133, uint2 arg134, uint2 arg135, uint2 arg136, uint2 arg137, uint2 arg138, uint2 arg139, uint2 arg140, uint2 arg141, uint2 arg142, uint2 arg143, uint2 arg144, uint2 arg145, uint2 arg146, uint2 arg147, uint2 arg148, uint2 arg149, uint2 arg150, uint2 arg151, uint2 arg152, uint2 arg153, uint2 arg154, uint2 arg155, uint2 arg156, uint2 arg157, uint2 arg158, uint2 arg159, uint2 arg160, uint2 arg161, uint2 arg162, uint2 arg163, uint2 arg164, uint2 arg165, uint2 arg166, uint2 arg167, uint2 arg168, uint2 arg169, uint2 arg170, uint2 arg171, uint2 arg172, uint2 arg173, uint2 arg174, uint2 arg175, uint2 arg176, uint2 arg177, uint2 arg178, uint2 arg179, uint2 arg180, uint2 arg181, uint2 arg182, uint2 arg183, uint2 arg184, uint2 arg185, uint2 arg186, uint2 arg187, uint2 arg188, uint2 arg189, uint2 arg190, uint2 arg191) {
-    uint2 ret[192] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15, arg16, arg17, arg18, arg19, arg20, arg21, arg22, arg23, arg24, arg25, arg26, arg27, arg28, arg29, arg30, arg31, arg32, arg33, arg34, arg35, arg36, arg37, arg38, arg39, arg40, arg41, arg42, arg43, arg44, arg45, arg46, arg47, arg48, arg49, arg50, arg51, arg52, arg53, arg54, arg55, arg56, arg57, arg58, arg59, arg60, arg61, arg62, arg63, arg64, arg65, arg66, arg67, arg68, arg69, arg70, arg71, arg72, arg73, arg74, arg75, arg76, arg77, arg78, arg79, arg80, arg81, arg82, arg83, arg84, arg85, arg86, arg87, arg88, arg89, arg90, arg91, arg92, arg93, arg94, arg95, arg96, arg97, arg98, arg99, arg100, arg101, arg102, arg103, arg104, arg105, arg106, arg107, arg108, arg109, arg110, arg111, arg112, arg113, arg114, arg115, arg116, arg117, arg118, arg119, arg120, arg121, arg122, arg123, arg124, arg125, arg126, arg127, arg128, arg129, arg130, arg131, arg132, arg133, arg134, arg135, arg136, arg137, arg138, arg139, arg140, arg141, arg142, arg143, arg144, arg145, arg146, arg147, arg148, arg149, arg150, arg151, arg152, arg153, arg154, arg155, arg156, arg157, arg158, arg159, arg160, arg161, arg162, arg163, arg164, arg165, arg166, arg167, arg168, arg169, arg170, arg171, arg172, arg173, arg174, arg175, arg176, arg177, arg178, arg179, arg180, arg181, arg182, arg183, arg184, arg185, arg186, arg187, arg188, arg189, arg190, arg191 };
-    return ret;
-}
-
 typedef uint ret_Constructarray16_uint_[16];
 ret_Constructarray16_uint_ Constructarray16_uint_(uint arg0, uint arg1, uint arg2, uint arg3, uint arg4, uint arg5, uint arg6, uint arg7, uint arg8, uint arg9, uint arg10, uint arg11, uint arg12, uint arg13, uint arg14, uint arg15) {
     uint ret[16] = { arg0, arg1, arg2, arg3, arg4, arg5, arg6, arg7, arg8, arg9, arg10, arg11, arg12, arg13, arg14, arg15 };
@@ -245,7 +239,6 @@ static const uint NYQ_CENTERED = 1u;
 static const uint2 NYQ_DIM_STEP = uint2(2135587861u, 2654435769u);
 static const uint2 NYQ_JITTER_STEP = uint2(668265295u, 3266489917u);
 static const uint NYQ_PMJ02_TABLE_SEED = 0u;
-static const uint2 NYQ_LCG_WINDOWS[192] = Constructarray192_uint2_(uint2(1u, 0u), uint2(747796405u, 2891336453u), uint2(4201498105u, 1192405134u), uint2(3399858189u, 568162667u), uint2(2200120369u, 878960812u), uint2(2975532453u, 3598456993u), uint2(1226092713u, 3109587930u), uint2(371291773u, 457671207u), uint2(1124524385u, 564359576u), uint2(3421728917u, 1466123133u), uint2(762174553u, 2469272934u), uint2(651962861u, 2009562659u), uint2(1985007505u, 200982212u), uint2(2219911301u, 789858201u), uint2(1058109705u, 2218199346u), uint2(1237303901u, 2466908511u), uint2(485992129u, 4177007664u), uint2(3752762741u, 3363758325u), uint2(979416761u, 3495377726u), uint2(1020473293u, 4159242203u), uint2(2876446449u, 3521641948u), uint2(964378469u, 2211842961u), uint2(1916126569u, 3871268746u), uint2(1621779005u, 3219619223u), uint2(250335265u, 2323728328u), uint2(2303426133u, 36438893u), uint2(3532903705u, 1530290710u), uint2(1859537325u, 703454867u), uint2(3127607889u, 399572468u), uint2(97045061u, 1850623113u), uint2(2757170633u, 2913627874u), uint2(2773800477u, 3292905167u), uint2(1829559681u, 1130785888u), uint2(2493616949u, 1054968549u), uint2(1105508217u, 2348282350u), uint2(1459681165u, 3319134795u), uint2(1630245297u, 2797543180u), uint2(2004437285u, 767414913u), uint2(3973769769u, 2046302010u), uint2(3506609661u, 1923001607u), uint2(2492747489u, 1525867000u), uint2(2782419989u, 1619679069u), uint2(4106280409u, 197937862u), uint2(2235480429u, 2809475843u), uint2(3652502801u, 681558308u), uint2(1142701061u, 4271478137u), uint2(1589035657u, 510277778u), uint2(1774664157u, 3909101631u), uint2(1640735809u, 1142294672u), uint2(2808568053u, 2953136341u), uint2(1042663481u, 3127364766u), uint2(2102071117u, 2448648379u), uint2(1880661105u, 3787736124u), uint2(1452352229u, 3255463281u), uint2(4000325353u, 2366059242u), uint2(1619405245u, 4237037687u), uint2(3859570081u, 786645032u), uint2(2014710229u, 3970252621u), uint2(1570829977u, 595777398u), uint2(4105271597u, 3276569459u), uint2(1484298193u, 2053245012u), uint2(487030213u, 4117576297u), uint2(2552004425u, 1419339330u), uint2(4008897949u, 1962427823u), uint2(1u, 0u), uint2(1572862721u, 2584864960u), uint2(999880193u, 714609024u), uint2(478867713u, 1817344576u), uint2(2207640577u, 1510023936u), uint2(4089046785u, 778308544u), uint2(4025934337u, 1681601664u), uint2(4216118529u, 3058081088u), uint2(2562447361u, 524699136u), uint2(1262736129u, 3657051840u), uint2(2514800129u, 1629640576u), uint2(4221487361u, 1870577728u), uint2(4285645825u, 4291782912u), uint2(610123521u, 1288982976u), uint2(3982670337u, 3511515776u), uint2(3716199681u, 1207624512u), uint2(2008526849u, 2879163392u), uint2(1057467137u, 921859264u), uint2(3060835841u, 1690082688u), uint2(1626513665u, 4022011456u), uint2(3247283201u, 3534597888u), uint2(1531025153u, 1213503424u), uint2(2970522113u, 3413098624u), uint2(1173654785u, 381626688u), uint2(2633205761u, 620941824u), uint2(957055745u, 821738176u), uint2(2637987329u, 3043419008u), uint2(1283881217u, 1829194816u), uint2(3387520001u, 1385952512u), uint2(2556784385u, 2699353536u), uint2(989489665u, 3533833856u), uint2(883451137u, 2727571264u), uint2(141516801u, 192485376u), uint2(961501953u, 1209204928u), uint2(1246254593u, 3542165888u), uint2(3193590017u, 1734578752u), uint2(411388929u, 4288297728u), uint2(3687401217u, 3599049664u), uint2(2334540289u, 1726237824u), uint2(2845588737u, 1803007296u), uint2(3123394561u, 3741277696u), uint2(1070805761u, 4231743168u), uint2(3180604929u, 1038839680u), uint2(3060672769u, 1590679616u), uint2(2908824577u, 1504215296u), uint2(627908353u, 1765108160u), uint2(2710706689u, 137794176u), uint2(2765100289u, 4050385728u), uint2(2988904449u, 529900544u), uint2(1284967169u, 3446901952u), uint2(4146071041u, 1975891328u), uint2(885129473u, 3544981056u), uint2(2289892353u, 3771123456u), uint2(1968240385u, 3639979968u), uint2(2117988865u, 915986560u), uint2(641985793u, 3027255616u), uint2(4033013761u, 1295772160u), uint2(1603986177u, 1002164928u), uint2(4142652929u, 4205837184u), uint2(961927425u, 1155032128u), uint2(2849559553u, 351603968u), uint2(3413430017u, 2781214144u), uint2(556386817u, 1913331328u), uint2(771212545u, 881100608u), uint2(1u, 0u), uint2(1960755201u, 3891408896u), uint2(2042462209u, 333733888u), uint2(245121025u, 2211876864u), uint2(863698945u, 935903232u), uint2(3898195969u, 800780288u), uint2(758677505u, 1806508032u), uint2(35078145u, 3953086464u), uint2(1727397889u, 2945548288u), uint2(1540669441u, 3078860800u), uint2(3769860097u, 58056704u), uint2(4120002561u, 2473070592u), uint2(2591096833u, 1733967872u), uint2(3478110209u, 2135715840u), uint2(2486075393u, 3678314496u), uint2(3909959681u, 2066796544u), uint2(3454795777u, 1596129280u), uint2(1120583681u, 2266312704u), uint2(1202290689u, 4077346816u), uint2(3699916801u, 2734264320u), uint2(23527425u, 2532032512u), uint2(3058024449u, 3470651392u), uint2(4213473281u, 1255153664u), uint2(3489873921u, 180506624u), uint2(887226369u, 246710272u), uint2(700497921u, 1453764608u), uint2(2929688577u, 3801669632u), uint2(3279831041u, 2995458048u), uint2(1750925313u, 3330097152u), uint2(2637938689u, 510619648u), uint2(1645903873u, 3126960128u), uint2(3069788161u, 2589184000u), uint2(2614624257u, 3192258560u), uint2(280412161u, 641216512u), uint2(362119169u, 3525992448u), uint2(2859745281u, 3256651776u), uint2(3478323201u, 4128161792u), uint2(2217852929u, 1845555200u), uint2(3373301761u, 703799296u), uint2(2649702401u, 702894080u), uint2(47054849u, 1842839552u), uint2(4155293697u, 4123635712u), uint2(2089517057u, 3250315264u), uint2(2439659521u, 3517845504u), uint2(910753793u, 631259136u), uint2(1797767169u, 3180490752u), uint2(805732353u, 2575605760u), uint2(2229616641u, 3111571456u), uint2(1774452737u, 493420544u), uint2(3735207937u, 3311087616u), uint2(3816914945u, 2974638080u), uint2(2019573761u, 3779039232u), uint2(2638151681u, 1429323776u), uint2(1377681409u, 220459008u), uint2(2533130241u, 152444928u), uint2(1809530881u, 1225281536u), uint2(3501850625u, 3438968832u), uint2(3315122177u, 2498539520u), uint2(1249345537u, 2698960896u), uint2(1599488001u, 4040232960u), uint2(70582273u, 2227388416u), uint2(957595649u, 1555394560u), uint2(4260528129u, 2024251392u), uint2(1389445121u, 3633958912u));
 static const uint NYQ_PMJ02_XOR_X[16] = Constructarray16_uint_(0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u);
 static const uint NYQ_PMJ02_XOR_Y[16] = Constructarray16_uint_(0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u);
 static const uint NYQ_HALTON_WORDS = 24u;
@@ -650,7 +643,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         const uint2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = uint2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_8 = (2u * m_5);
+    uint n_9 = (2u * m_5);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -662,7 +655,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_1 = false;
         uint _e51 = c_1;
-        if ((_e51 < n_8)) {
+        if ((_e51 < n_9)) {
         } else {
             break;
         }
@@ -686,7 +679,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_2 = false;
                 uint _e81 = i;
-                if ((_e81 < n_8)) {
+                if ((_e81 < n_9)) {
                 } else {
                     break;
                 }
@@ -716,7 +709,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_3 = false;
         uint _e115 = i_1;
-        if ((_e115 < n_8)) {
+        if ((_e115 < n_9)) {
         } else {
             break;
         }
@@ -738,7 +731,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_4 = false;
         uint _e130 = col;
-        if ((_e130 < n_8)) {
+        if ((_e130 < n_9)) {
         } else {
             break;
         }
@@ -758,7 +751,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_5 = false;
                 uint _e136 = r_1;
-                if ((_e136 < n_8)) {
+                if ((_e136 < n_9)) {
                 } else {
                     break;
                 }
@@ -793,7 +786,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_6 = false;
                 uint _e164 = r_2;
-                if ((_e164 < n_8)) {
+                if ((_e164 < n_9)) {
                 } else {
                     break;
                 }
@@ -831,7 +824,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_7 = false;
         uint _e199 = i_2;
-        if ((_e199 < n_8)) {
+        if ((_e199 < n_9)) {
         } else {
             break;
         }
@@ -848,7 +841,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_8 = false;
                 uint _e203 = r_3;
-                if ((_e203 < n_8)) {
+                if ((_e203 < n_9)) {
                 } else {
                     break;
                 }
@@ -1037,10 +1030,10 @@ float nyq_sobol_sampler_value(inout NyqSobolSampler s_18, uint dim_4)
             local_2 = false;
         }
         bool _e37 = local_2;
-        uint w_2 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
+        uint w_1 = (_e37 ? (_e22 << (_e24 & 31u)) : _e21);
         const uint2 _e39 = nyq_u64_(d_10);
         const uint2 _e40 = nyq_hash2_(seed_35, _e39);
-        const uint _e42 = nyq_scramble_u32_(w_2, _e40.y, how_3);
+        const uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         const float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
@@ -1922,9 +1915,9 @@ float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19)
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_9 = s_49.n;
+    uint n_10 = s_49.n;
     uint _e5 = s_49.index;
-    uint k_19 = naga_mod(_e5, n_9);
+    uint k_19 = naga_mod(_e5, n_10);
     uint component = naga_mod(dim_19, 2u);
     uint _e11 = s_49.lattice;
     switch(_e11) {
@@ -1939,12 +1932,12 @@ float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19)
             uint _e21 = s_49.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = naga_mod(1u, n_9);
+                g_6 = naga_mod(1u, n_10);
             }
             uint _e27 = g_6;
             const uint2 _e28 = nyq_mul_wide(k_19, _e27);
-            const uint _e29 = nyq_mod64_(_e28, n_9);
-            const uint2 _e30 = nyq_fixed_ratio(_e29, n_9);
+            const uint _e29 = nyq_mod64_(_e28, n_10);
+            const uint2 _e30 = nyq_fixed_ratio(_e29, n_10);
             base = _e30;
             break;
         }
@@ -2357,21 +2350,21 @@ NyqPermutation ConstructNyqPermutation(uint arg0, uint arg1, uint arg2, uint arg
 
 NyqPermutation nyq_permutation(uint n_in, uint seed_15)
 {
-    uint n_10 = max(n_in, 1u);
-    if ((n_10 <= 16u)) {
+    uint n_11 = max(n_in, 1u);
+    if ((n_11 <= 16u)) {
         const uint2 _e10 = nyq_mix64_(uint2((seed_15 ^ 2242054355u), 608135816u));
-        const uint2 _e11 = nyq_packed_table(n_10, _e10);
-        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_10, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        const uint2 _e11 = nyq_packed_table(n_11, _e10);
+        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_11, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
         return nyqpermutation;
     }
-    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_10 - 1u))));
+    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_11 - 1u))));
     uint bits_5 = (32u - (31u - firstbithigh(mask_3)));
     const uint _e29 = nyq_mix32_((seed_15 ^ 1540483477u));
     const uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     const uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    const uint2 _e36 = nyq_mul_wide(_e35, n_10);
+    const uint2 _e36 = nyq_mul_wide(_e35, n_11);
     uint offset_3 = _e36.y;
-    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_10, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, uint2(0u, 0u));
+    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_11, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, uint2(0u, 0u));
     return nyqpermutation_1;
 }
 
@@ -2380,12 +2373,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
     uint x_15 = (uint)0;
     bool local_10 = (bool)0;
 
-    uint n_11 = p.n;
-    if ((n_11 <= 16u)) {
-        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_11) & 15u)));
+    uint n_12 = p.n;
+    if ((n_12 <= 16u)) {
+        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_12) & 15u)));
         return _e11;
     }
-    x_15 = naga_mod(i_8, n_11);
+    x_15 = naga_mod(i_8, n_12);
     uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
@@ -2417,7 +2410,7 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
         uint _e73 = x_15;
         x_15 = (_e72 ^ (_e73 >> p.third));
         uint _e77 = x_15;
-        if ((_e77 < n_11)) {
+        if ((_e77 < n_12)) {
             break;
         }
     }
@@ -2425,12 +2418,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
     uint q_3 = (_e79 + p.offset);
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = (q_3 >= n_11);
+        local_10 = (q_3 >= n_12);
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return (_e90 ? (q_3 - n_11) : q_3);
+    return (_e90 ? (q_3 - n_12) : q_3);
 }
 
 NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint arg2, float3 arg3, uint arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint arg8, uint arg9) {
@@ -2619,36 +2612,42 @@ uint nyq_rxs_m_xs(uint state_1)
 uint nyq_lcg_draw(uint seed_17, uint m_1)
 {
     uint s_66 = (uint)0;
-    uint w_1 = 0u;
+    uint n_6 = (uint)0;
+    uint a_8 = 747796405u;
+    uint c_3 = 2891336453u;
 
     s_66 = (2891336453u + seed_17);
-    uint n_12 = (m_1 + 1u);
+    n_6 = (m_1 + 1u);
     uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
-    bool loop_init_17 = true;
     while(true) {
         if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_17) {
-            uint _e30 = w_1;
-            w_1 = (_e30 + 1u);
-        }
-        loop_init_17 = false;
-        uint _e9 = w_1;
-        if ((_e9 < 3u)) {
+        uint _e12 = n_6;
+        if ((_e12 != 0u)) {
         } else {
             break;
         }
         {
-            uint _e13 = w_1;
-            uint _e17 = w_1;
-            uint2 ac = NYQ_LCG_WINDOWS[min(uint(((_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u))), 191u)];
-            uint _e25 = s_66;
-            s_66 = ((ac.x * _e25) + ac.y);
+            uint _e15 = n_6;
+            if (((_e15 & 1u) != 0u)) {
+                uint _e20 = a_8;
+                uint _e21 = s_66;
+                uint _e23 = c_3;
+                s_66 = ((_e20 * _e21) + _e23);
+            }
+            uint _e25 = a_8;
+            uint _e28 = c_3;
+            c_3 = ((_e25 + 1u) * _e28);
+            uint _e30 = a_8;
+            uint _e31 = a_8;
+            a_8 = (_e30 * _e31);
+            uint _e33 = n_6;
+            n_6 = (_e33 >> 1u);
         }
     }
-    uint _e32 = s_66;
-    const uint _e33 = nyq_rxs_m_xs(_e32);
-    return _e33;
+    uint _e36 = s_66;
+    const uint _e37 = nyq_rxs_m_xs(_e36);
+    return _e37;
 }
 
 uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27)
@@ -2682,9 +2681,9 @@ uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27)
             known = (_e34 | low_2);
             uint _e36 = flips;
             flips = (_e36 ^ swap);
-            uint c_10 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
+            uint c_11 = ((dim_27 == 0u) ? NYQ_PMJ02_XOR_X[min(uint((level_1 & 15u)), 15u)] : NYQ_PMJ02_XOR_Y[min(uint((level_1 & 15u)), 15u)]);
             uint _e49 = p_1;
-            p_1 = ((_e49 - (1u << level_1)) ^ c_10);
+            p_1 = ((_e49 - (1u << level_1)) ^ c_11);
         }
     }
     uint _e54 = x_17;
@@ -2844,9 +2843,9 @@ NyqCameraSample nyq_pmj02_camera_sample(inout NyqPmj02Sampler s_75, uint2 pixel_
     return nyqcamerasample_6;
 }
 
-uint2 nyq_sub64_(uint2 a_8, uint2 b_7)
+uint2 nyq_sub64_(uint2 a_9, uint2 b_7)
 {
-    return uint2((a_8.x - b_7.x), ((a_8.y - b_7.y) - ((a_8.x < b_7.x) ? 1u : 0u)));
+    return uint2((a_9.x - b_7.x), ((a_9.y - b_7.y) - ((a_9.x < b_7.x) ? 1u : 0u)));
 }
 
 uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
@@ -2866,21 +2865,21 @@ uint3 nyq_divmod64_small(uint2 x_18, uint d_3)
     return uint3(((q1_ << 16u) | q0_), ((q3_ << 16u) | q2_), (t0_1 - (q0_ * d_3)));
 }
 
-uint4 nyq_add128_(uint4 a_9, uint4 b_8)
+uint4 nyq_add128_(uint4 a_10, uint4 b_8)
 {
-    uint4 s_104 = (a_9 + b_8);
-    uint4 c_11 = ((s_104 < a_9) ? (1u).xxxx : (0u).xxxx);
-    uint t1_2 = (s_104.y + c_11.x);
-    uint k1_ = (c_11.y + ((t1_2 < c_11.x) ? 1u : 0u));
+    uint4 s_104 = (a_10 + b_8);
+    uint4 c_12 = ((s_104 < a_10) ? (1u).xxxx : (0u).xxxx);
+    uint t1_2 = (s_104.y + c_12.x);
+    uint k1_ = (c_12.y + ((t1_2 < c_12.x) ? 1u : 0u));
     uint t2_1 = (s_104.z + k1_);
-    uint k2_ = (c_11.z + ((t2_1 < k1_) ? 1u : 0u));
+    uint k2_ = (c_12.z + ((t2_1 < k1_) ? 1u : 0u));
     return uint4(s_104.x, t1_2, t2_1, (s_104.w + k2_));
 }
 
-uint4 nyq_sub128_(uint4 a_10, uint4 b_9)
+uint4 nyq_sub128_(uint4 a_11, uint4 b_9)
 {
-    uint4 s_105 = (a_10 - b_9);
-    uint4 o = ((a_10 < b_9) ? (1u).xxxx : (0u).xxxx);
+    uint4 s_105 = (a_11 - b_9);
+    uint4 o = ((a_11 < b_9) ? (1u).xxxx : (0u).xxxx);
     uint t1_3 = (s_105.y - o.x);
     uint k1_1 = (o.y + ((s_105.y < o.x) ? 1u : 0u));
     uint t2_2 = (s_105.z - k1_1);
@@ -2888,18 +2887,18 @@ uint4 nyq_sub128_(uint4 a_10, uint4 b_9)
     return uint4(s_105.x, t1_3, t2_2, (s_105.w - k2_1));
 }
 
-bool nyq_lt128_(uint4 a_11, uint4 b_10)
+bool nyq_lt128_(uint4 a_12, uint4 b_10)
 {
-    if ((a_11.w != b_10.w)) {
-        return (a_11.w < b_10.w);
+    if ((a_12.w != b_10.w)) {
+        return (a_12.w < b_10.w);
     }
-    if ((a_11.z != b_10.z)) {
-        return (a_11.z < b_10.z);
+    if ((a_12.z != b_10.z)) {
+        return (a_12.z < b_10.z);
     }
-    if ((a_11.y != b_10.y)) {
-        return (a_11.y < b_10.y);
+    if ((a_12.y != b_10.y)) {
+        return (a_12.y < b_10.y);
     }
-    return (a_11.x < b_10.x);
+    return (a_12.x < b_10.x);
 }
 
 uint4 nyq_mul128_u32_(uint4 x_19, uint k_12)
@@ -2912,12 +2911,12 @@ uint4 nyq_mul128_u32_(uint4 x_19, uint k_12)
     return uint4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_12) + _e15.y));
 }
 
-uint4 nyq_mul64_wide(uint2 a_12, uint2 b_11)
+uint4 nyq_mul64_wide(uint2 a_13, uint2 b_11)
 {
-    const uint2 _e4 = nyq_mul_wide(a_12.x, b_11.x);
-    const uint2 _e7 = nyq_mul_wide(a_12.x, b_11.y);
-    const uint2 _e10 = nyq_mul_wide(a_12.y, b_11.x);
-    const uint2 _e13 = nyq_mul_wide(a_12.y, b_11.y);
+    const uint2 _e4 = nyq_mul_wide(a_13.x, b_11.x);
+    const uint2 _e7 = nyq_mul_wide(a_13.x, b_11.y);
+    const uint2 _e10 = nyq_mul_wide(a_13.y, b_11.x);
+    const uint2 _e13 = nyq_mul_wide(a_13.y, b_11.y);
     uint4 outer = uint4(_e4.x, _e4.y, _e13.x, _e13.y);
     const uint4 _e24 = nyq_add128_(outer, uint4(0u, _e7.x, _e7.y, 0u));
     const uint4 _e30 = nyq_add128_(_e24, uint4(0u, _e10.x, _e10.y, 0u));
@@ -3158,15 +3157,15 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
         const uint4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
         uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-        bool loop_init_18 = true;
+        bool loop_init_17 = true;
         while(true) {
             if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
             loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_18) {
+            if (!loop_init_17) {
                 uint _e109 = i_10;
                 i_10 = (_e109 + 1u);
             }
-            loop_init_18 = false;
+            loop_init_17 = false;
             uint _e51 = i_10;
             if ((_e51 < steps)) {
             } else {
@@ -3218,15 +3217,15 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
         const uint4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
         uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-        bool loop_init_19 = true;
+        bool loop_init_18 = true;
         while(true) {
             if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
             loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-            if (!loop_init_19) {
+            if (!loop_init_18) {
                 uint _e186 = i_11;
                 i_11 = (_e186 + 1u);
             }
-            loop_init_19 = false;
+            loop_init_18 = false;
             uint _e128 = i_11;
             if ((_e128 < steps)) {
             } else {
@@ -3271,29 +3270,29 @@ uint nyq_prime(uint dim_31)
     return _e7;
 }
 
-NyqRounding nyq_phi_short(uint t_3, uint a_13)
+NyqRounding nyq_phi_short(uint t_3, uint a_14)
 {
     uint x_22 = (uint)0;
     uint2 rev = uint2(0u, 0u);
     uint i_12 = 0u;
 
     uint b_17 = asuint(nyq_halton_bases.Load(t_3*4));
-    uint c_12 = (naga_div((35u - (31u - firstbithigh(a_13))), 4u) - 1u);
-    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_12, 4u))*4));
-    uint places = ((_e19 >> (8u * naga_mod(c_12, 4u))) & 255u);
-    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_12))*4));
-    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_12))*4));
-    x_22 = a_13;
+    uint c_13 = (naga_div((35u - (31u - firstbithigh(a_14))), 4u) - 1u);
+    uint _e19 = asuint(nyq_halton_bases.Load(((t_3 + 2u) + naga_div(c_13, 4u))*4));
+    uint places = ((_e19 >> (8u * naga_mod(c_13, 4u))) & 255u);
+    uint low_3 = asuint(nyq_halton_bases.Load(((t_3 + 8u) + (2u * c_13))*4));
+    uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_13))*4));
+    x_22 = a_14;
     uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_20 = true;
+    bool loop_init_19 = true;
     while(true) {
         if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
         loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_20) {
+        if (!loop_init_19) {
             uint _e64 = i_12;
             i_12 = (_e64 + 1u);
         }
-        loop_init_20 = false;
+        loop_init_19 = false;
         uint _e50 = i_12;
         if ((_e50 < places)) {
         } else {
@@ -3327,20 +3326,20 @@ NyqFraction ConstructNyqFraction(uint4 arg0, uint4 arg1, uint arg2, uint arg3) {
     return ret;
 }
 
-NyqFraction nyq_phi_fraction(uint t_4, uint2 a_14)
+NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
 {
     uint2 x_23 = (uint2)0;
     uint4 num_2 = (0u).xxxx;
     uint4 den_2 = uint4(1u, 0u, 0u, 0u);
     bool local_28 = (bool)0;
-    uint c_3 = (uint)0;
+    uint c_4 = (uint)0;
     uint rev_1 = (uint)0;
     uint i_13 = (uint)0;
 
     uint b_18 = asuint(nyq_halton_bases.Load(t_4*4));
     uint chunk = asuint(nyq_halton_bases.Load((t_4 + 4u)*4));
     uint run = asuint(nyq_halton_bases.Load((t_4 + 5u)*4));
-    x_23 = a_14;
+    x_23 = a_15;
     uint2 loop_bound_28 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_28 == uint2(0u, 0u))) { break; }
@@ -3361,31 +3360,31 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_14)
             uint2 _e38 = x_23;
             const uint3 _e39 = nyq_divmod64_small(_e38, chunk);
             x_23 = _e39.xy;
-            c_3 = _e39.z;
+            c_4 = _e39.z;
             rev_1 = 0u;
             i_13 = 0u;
             uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-            bool loop_init_21 = true;
+            bool loop_init_20 = true;
             while(true) {
                 if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
                 loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                if (!loop_init_21) {
+                if (!loop_init_20) {
                     uint _e58 = i_13;
                     i_13 = (_e58 + 1u);
                 }
-                loop_init_21 = false;
+                loop_init_20 = false;
                 uint _e47 = i_13;
                 if ((_e47 < run)) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = c_3;
+                    uint _e49 = c_4;
                     uint q_6 = naga_div(_e49, b_18);
                     uint _e51 = rev_1;
-                    uint _e53 = c_3;
+                    uint _e53 = c_4;
                     rev_1 = ((_e51 * b_18) + (_e53 - (q_6 * b_18)));
-                    c_3 = q_6;
+                    c_4 = q_6;
                 }
             }
             uint4 _e60 = num_2;
@@ -3404,14 +3403,14 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_14)
     return nyqfraction;
 }
 
-NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_15, uint2 seed_21)
+NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
 {
     uint2 x_24 = (uint2)0;
     uint4 num_3 = (0u).xxxx;
     uint4 den_3 = uint4(1u, 0u, 0u, 0u);
     bool local_29 = (bool)0;
     bool local_30 = (bool)0;
-    uint c_4 = (uint)0;
+    uint c_5 = (uint)0;
     uint part = (uint)0;
     uint scale = (uint)0;
     uint i_14 = (uint)0;
@@ -3425,7 +3424,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_15, uint2 seed_21)
     const uint2 _e16 = nyq_u64_(b_19);
     const uint2 _e17 = nyq_hash2_(seed_21, _e16);
     const NyqPermutation _e21 = nyq_permutation(b_19, (_e17.x ^ _e17.y));
-    x_24 = a_15;
+    x_24 = a_16;
     uint2 loop_bound_30 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_30 == uint2(0u, 0u))) { break; }
@@ -3454,20 +3453,20 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_15, uint2 seed_21)
                 local_30 = false;
             }
             bool last = local_30;
-            c_4 = _e46.z;
+            c_5 = _e46.z;
             part = 0u;
             scale = 1u;
             i_14 = 0u;
             uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
-            bool loop_init_22 = true;
+            bool loop_init_21 = true;
             while(true) {
                 if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
                 loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-                if (!loop_init_22) {
+                if (!loop_init_21) {
                     uint _e89 = i_14;
                     i_14 = (_e89 + 1u);
                 }
-                loop_init_22 = false;
+                loop_init_21 = false;
                 uint _e68 = i_14;
                 if ((_e68 < run_1)) {
                 } else {
@@ -3475,7 +3474,7 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_15, uint2 seed_21)
                 }
                 {
                     if (last) {
-                        uint _e72 = c_4;
+                        uint _e72 = c_5;
                         local_31 = (_e72 == 0u);
                     } else {
                         local_31 = false;
@@ -3484,15 +3483,15 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_15, uint2 seed_21)
                     if (_e76) {
                         break;
                     }
-                    uint _e77 = c_4;
+                    uint _e77 = c_5;
                     uint q_7 = naga_div(_e77, b_19);
                     uint _e79 = part;
-                    uint _e81 = c_4;
+                    uint _e81 = c_5;
                     const uint _e84 = nyq_permutation_apply(_e21, (_e81 - (q_7 * b_19)));
                     part = ((_e79 * b_19) + _e84);
                     uint _e86 = scale;
                     scale = (_e86 * b_19);
-                    c_4 = q_7;
+                    c_5 = q_7;
                 }
             }
             uint4 _e91 = num_3;
@@ -3540,7 +3539,7 @@ uint ZeroValueuint() {
     return (uint)0;
 }
 
-NyqFraction nyq_nested_fraction(uint d_4, uint2 a_16, uint2 seed_22, bool affine)
+NyqFraction nyq_nested_fraction(uint d_4, uint2 a_17, uint2 seed_22, bool affine)
 {
     uint2 rest = (uint2)0;
     uint2 pow_ = uint2(1u, 0u);
@@ -3555,7 +3554,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_16, uint2 seed_22, bool affine
     uint b_20 = asuint(nyq_halton_bases.Load((NYQ_HALTON_WORDS * d_4)*4));
     const uint2 _e9 = nyq_u64_(d_4);
     const uint2 _e13 = nyq_hash3_(seed_22, _e9, (affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM));
-    rest = a_16;
+    rest = a_17;
     uint2 loop_bound_32 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_32 == uint2(0u, 0u))) { break; }
@@ -3585,7 +3584,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_16, uint2 seed_22, bool affine
             uint2 _e56 = rest;
             uint2 _e57 = pow_;
             const uint2 _e58 = nyq_mul64_(_e56, _e57);
-            const uint2 _e59 = nyq_sub64_(a_16, _e58);
+            const uint2 _e59 = nyq_sub64_(a_17, _e58);
             const uint2 _e61 = nyq_mul64_(_e59, NYQ_OWEN_PREFIX_MUL);
             uint _e63 = level;
             const uint2 _e64 = nyq_u64_(_e63);
@@ -3636,7 +3635,7 @@ NyqFraction nyq_nested_fraction(uint d_4, uint2 a_16, uint2 seed_22, bool affine
     return nyqfraction_2;
 }
 
-float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_17, uint2 seed_23, uint how_2)
+float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_18, uint2 seed_23, uint how_2)
 {
     NyqRounding r_13 = (NyqRounding)0;
     bool local_35 = (bool)0;
@@ -3654,36 +3653,36 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_17, uint2 seed_23, uint
     }
     bool _e16 = local_35;
     if (_e16) {
-        r_13 = ConstructNyqRounding(uint4(reversebits(a_17.y), reversebits(a_17.x), 0u, 0u), int(-64), 0u, 0u, 0u);
+        r_13 = ConstructNyqRounding(uint4(reversebits(a_18.y), reversebits(a_18.x), 0u, 0u), int(-64), 0u, 0u, 0u);
     } else {
         if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-            local_36 = (a_17.y == 0u);
+            local_36 = (a_18.y == 0u);
         } else {
             local_36 = false;
         }
         bool _e37 = local_36;
         if (_e37) {
             uint _e45 = asuint(nyq_halton_bases.Load((t_7 + 1u)*4));
-            local_37 = (a_17.x < _e45);
+            local_37 = (a_18.x < _e45);
         } else {
             local_37 = false;
         }
         bool _e48 = local_37;
         if (_e48) {
-            if ((a_17.x != 0u)) {
-                const NyqRounding _e53 = nyq_phi_short(t_7, a_17.x);
+            if ((a_18.x != 0u)) {
+                const NyqRounding _e53 = nyq_phi_short(t_7, a_18.x);
                 r_13 = _e53;
             }
         } else {
             if ((how_2 == NYQ_SCRAMBLE_NONE)) {
-                const NyqFraction _e57 = nyq_phi_fraction(t_7, a_17);
+                const NyqFraction _e57 = nyq_phi_fraction(t_7, a_18);
                 f = _e57;
             } else {
                 if ((how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS)) {
-                    const NyqFraction _e60 = nyq_permuted_fraction(t_7, a_17, seed_23);
+                    const NyqFraction _e60 = nyq_permuted_fraction(t_7, a_18, seed_23);
                     f = _e60;
                 } else {
-                    const NyqFraction _e63 = nyq_nested_fraction(d_28, a_17, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
+                    const NyqFraction _e63 = nyq_nested_fraction(d_28, a_18, seed_23, (how_2 == NYQ_SCRAMBLE_FAST_OWEN));
                     f = _e63;
                 }
             }
@@ -3716,27 +3715,27 @@ float nyq_radical_inverse_scrambled(uint dim_32, uint2 a_17, uint2 seed_23, uint
     return asfloat(min(_e104, NYQ_BELOW_ONE_BITS));
 }
 
-float nyq_radical_inverse(uint dim_33, uint2 a_18)
+float nyq_radical_inverse(uint dim_33, uint2 a_19)
 {
-    const float _e6 = nyq_radical_inverse_scrambled(dim_33, a_18, uint2(0u, 0u), NYQ_SCRAMBLE_NONE);
+    const float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, uint2(0u, 0u), NYQ_SCRAMBLE_NONE);
     return _e6;
 }
 
-float nyq_scrambled_radical_inverse(uint dim_34, uint2 a_19, uint2 seed_24)
+float nyq_scrambled_radical_inverse(uint dim_34, uint2 a_20, uint2 seed_24)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_34, a_19, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS);
     return _e4;
 }
 
-float nyq_owen_scrambled_radical_inverse(uint dim_35, uint2 a_20, uint2 seed_25)
+float nyq_owen_scrambled_radical_inverse(uint dim_35, uint2 a_21, uint2 seed_25)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_35, a_20, seed_25, NYQ_SCRAMBLE_OWEN);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN);
     return _e4;
 }
 
-float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uint2 a_21, uint2 seed_26)
+float nyq_fast_owen_scrambled_radical_inverse(uint dim_36, uint2 a_22, uint2 seed_26)
 {
-    const float _e4 = nyq_radical_inverse_scrambled(dim_36, a_21, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
+    const float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN);
     return _e4;
 }
 
@@ -3769,7 +3768,7 @@ int naga_mod(int lhs, int rhs) {
     return lhs - (lhs / divisor) * divisor;
 }
 
-uint nyq_mod_inverse(uint a_22, uint n_6)
+uint nyq_mod_inverse(uint a_23, uint n_7)
 {
     int r0_ = (int)0;
     int r1_ = (int)0;
@@ -3777,8 +3776,8 @@ uint nyq_mod_inverse(uint a_22, uint n_6)
     int t1_ = int(1);
     int m_4 = (int)0;
 
-    r0_ = int(n_6);
-    r1_ = int(naga_mod(a_22, n_6));
+    r0_ = int(n_7);
+    r1_ = int(naga_mod(a_23, n_7));
     uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
@@ -3807,11 +3806,11 @@ uint nyq_mod_inverse(uint a_22, uint n_6)
         }
     }
     int _e27 = t0_;
-    m_4 = naga_mod(_e27, int(n_6));
+    m_4 = naga_mod(_e27, int(n_7));
     int _e31 = m_4;
     if ((_e31 < int(0))) {
         int _e34 = m_4;
-        m_4 = asint(asuint(_e34) + asuint(int(n_6)));
+        m_4 = asint(asuint(_e34) + asuint(int(n_7)));
     }
     int _e37 = m_4;
     return uint(_e37);
@@ -3870,7 +3869,7 @@ NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_
     return nyqhaltonsampler;
 }
 
-uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7)
+uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_8)
 {
     uint inverse_1 = (uint)0;
     uint index_16 = 0u;
@@ -3879,17 +3878,17 @@ uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7)
 
     inverse_1 = inverse_in;
     uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
-    bool loop_init_23 = true;
+    bool loop_init_22 = true;
     while(true) {
         if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
         loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-        if (!loop_init_23) {
+        if (!loop_init_22) {
             uint _e32 = done;
             done = (_e32 + 1u);
         }
-        loop_init_23 = false;
+        loop_init_22 = false;
         uint _e8 = done;
-        if ((_e8 < n_7)) {
+        if ((_e8 < n_8)) {
         } else {
             break;
         }
@@ -3899,17 +3898,17 @@ uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7)
                 uint _e13 = done;
                 k_14 = _e13;
                 uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
-                bool loop_init_24 = true;
+                bool loop_init_23 = true;
                 while(true) {
                     if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
                     loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-                    if (!loop_init_24) {
+                    if (!loop_init_23) {
                         uint _e20 = k_14;
                         k_14 = (_e20 + 1u);
                     }
-                    loop_init_24 = false;
+                    loop_init_23 = false;
                     uint _e15 = k_14;
-                    if ((_e15 < n_7)) {
+                    if ((_e15 < n_8)) {
                     } else {
                         break;
                     }
@@ -3955,25 +3954,25 @@ uint2 nyq_halton_sampler_index(inout NyqHaltonSampler s_77, uint2 pixel_18, uint
 
 float nyq_halton_sampler_value(inout NyqHaltonSampler s_78, uint dim_38)
 {
-    uint2 a_23 = (uint2)0;
+    uint2 a_24 = (uint2)0;
 
     uint d_29 = naga_mod(dim_38, NYQ_PRIME_COUNT);
     uint2 index_19 = s_78.index;
-    a_23 = index_19;
+    a_24 = index_19;
     if ((d_29 == 0u)) {
         uint e_6 = s_78.exponents.x;
         if ((e_6 != 0u)) {
             const uint2 _e14 = nyq_shr64_(index_19, e_6);
-            a_23 = _e14;
+            a_24 = _e14;
         }
     } else {
         if ((d_29 == 1u)) {
             uint _e19 = s_78.scales.y;
             const uint3 _e20 = nyq_divmod64_small(index_19, _e19);
-            a_23 = _e20.xy;
+            a_24 = _e20.xy;
         }
     }
-    uint2 _e22 = a_23;
+    uint2 _e22 = a_24;
     uint2 _e24 = s_78.seed;
     uint _e26 = s_78.scramble;
     const float _e27 = nyq_radical_inverse_scrambled(d_29, _e22, _e24, _e26);
@@ -4002,15 +4001,15 @@ float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_81, uint dim_40)
     uint k_15 = 0u;
 
     uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    bool loop_init_24 = true;
     while(true) {
         if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
         loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (!loop_init_24) {
             uint _e17 = k_15;
             k_15 = (_e17 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_24 = false;
         uint _e8 = k_15;
         if ((_e8 < 2u)) {
         } else {
@@ -4051,15 +4050,15 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_84, ui
 
     nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
     uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    bool loop_init_25 = true;
     while(true) {
         if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
         loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (!loop_init_25) {
             uint _e25 = d_5;
             d_5 = (_e25 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_25 = false;
         uint _e14 = d_5;
         if ((_e14 < 5u)) {
         } else {
@@ -4132,9 +4131,9 @@ NyqCameraSample nyq_blue_camera(uint2 pixel_23, float v_8[5])
     return nyqcamerasample_8;
 }
 
-uint nyq_blue_shift(uint key_4, uint c_5)
+uint nyq_blue_shift(uint key_4, uint c_6)
 {
-    const uint _e7 = nyq_mix32_((key_4 ^ ((c_5 + 1u) * 2654435769u)));
+    const uint _e7 = nyq_mix32_((key_4 ^ ((c_6 + 1u) * 2654435769u)));
     return _e7;
 }
 
@@ -4169,10 +4168,10 @@ uint nyq_owen_sobol_bn_rev(uint entry_1, uint key_5, uint index_17)
     return _e9;
 }
 
-float nyq_owen_sobol_bn_value_at(uint key_6, uint rev_2, uint c_6)
+float nyq_owen_sobol_bn_value_at(uint key_6, uint rev_2, uint c_7)
 {
-    const uint _e3 = nyq_dim_seed(key_6, c_6);
-    const uint _e4 = nyq_owen_sobol_rev(rev_2, c_6, _e3);
+    const uint _e3 = nyq_dim_seed(key_6, c_7);
+    const uint _e4 = nyq_owen_sobol_rev(rev_2, c_7, _e3);
     const float _e5 = nyq_rev_to_f32_(_e4);
     return _e5;
 }
@@ -4192,15 +4191,15 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uint2 pixel_24, uint sam
     s_85.index = sample_index_19;
     s_85.dim = dim_41;
     uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    bool loop_init_26 = true;
     while(true) {
         if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
         loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (!loop_init_26) {
             uint _e28 = b_14;
             b_14 = (_e28 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_26 = false;
         uint _e9 = b_14;
         if ((_e9 < 2u)) {
         } else {
@@ -4225,11 +4224,11 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uint2 pixel_24, uint sam
 float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_86, uint dim_42)
 {
     uint b_21 = naga_div(dim_42, 4u);
-    uint c_13 = naga_mod(dim_42, 4u);
+    uint c_14 = naga_mod(dim_42, 4u);
     if ((b_21 < 2u)) {
         uint _e10 = s_86.key[min(uint(b_21), 1u)];
         uint _e13 = s_86.prepared[min(uint(b_21), 1u)];
-        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13);
+        const float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_14);
         return _e14;
     }
     uint2 _e17 = s_86.seed;
@@ -4239,7 +4238,7 @@ float nyq_owen_sobol_bn_value(inout NyqBlueSampler s_86, uint dim_42)
     const uint _e23 = nyq_owen_sobol_bn_key(_e22);
     uint _e25 = s_86.index;
     const uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13);
+    const float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_14);
     return _e27;
 }
 
@@ -4276,15 +4275,15 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_90, uint2
 
     nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u);
     uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-    bool loop_init_28 = true;
+    bool loop_init_27 = true;
     while(true) {
         if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
         loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_28) {
+        if (!loop_init_27) {
             uint _e15 = d_6;
             d_6 = (_e15 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_27 = false;
         uint _e7 = d_6;
         if ((_e7 < 5u)) {
         } else {
@@ -4324,11 +4323,11 @@ uint nyq_pmj02_bn_points(uint k_16, uint i_16)
     return (p0_ | (p1_ << 16u));
 }
 
-float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_7)
+float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_8)
 {
-    uint point_ = ((points >> (16u * naga_div(c_7, 2u))) & 65535u);
-    const uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point_, naga_mod(c_7, 2u));
-    const uint _e14 = nyq_blue_shift(k_17, c_7);
+    uint point_ = ((points >> (16u * naga_div(c_8, 2u))) & 65535u);
+    const uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point_, naga_mod(c_8, 2u));
+    const uint _e14 = nyq_blue_shift(k_17, c_8);
     const float _e16 = nyq_fraction_to_f32_((_e13 ^ _e14));
     return _e16;
 }
@@ -4348,15 +4347,15 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uint2 pixel_26, uint sample_i
     s_91.index = sample_index_21;
     s_91.dim = dim_43;
     uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-    bool loop_init_29 = true;
+    bool loop_init_28 = true;
     while(true) {
         if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
         loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_29) {
+        if (!loop_init_28) {
             uint _e31 = b_15;
             b_15 = (_e31 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_28 = false;
         uint _e9 = b_15;
         if ((_e9 < 2u)) {
         } else {
@@ -4382,11 +4381,11 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uint2 pixel_26, uint sample_i
 float nyq_pmj02_bn_value(inout NyqBlueSampler s_92, uint dim_44)
 {
     uint b_22 = naga_div(dim_44, 4u);
-    uint c_14 = naga_mod(dim_44, 4u);
+    uint c_15 = naga_mod(dim_44, 4u);
     if ((b_22 < 2u)) {
         uint _e10 = s_92.key[min(uint(b_22), 1u)];
         uint _e13 = s_92.prepared[min(uint(b_22), 1u)];
-        const float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
+        const float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
     uint2 _e17 = s_92.seed;
@@ -4397,7 +4396,7 @@ float nyq_pmj02_bn_value(inout NyqBlueSampler s_92, uint dim_44)
     uint i_19 = (_e24 ^ (_e22 & 255u));
     const uint _e28 = nyq_pmj02_bn_key(_e22, i_19);
     const uint _e29 = nyq_pmj02_bn_points(_e28, i_19);
-    const float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
+    const float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_15);
     return _e30;
 }
 
@@ -4434,15 +4433,15 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_96, uint2 pixe
 
     nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u);
     uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-    bool loop_init_30 = true;
+    bool loop_init_29 = true;
     while(true) {
         if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
         loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_30) {
+        if (!loop_init_29) {
             uint _e15 = d_7;
             d_7 = (_e15 + 1u);
         }
-        loop_init_30 = false;
+        loop_init_29 = false;
         uint _e7 = d_7;
         if ((_e7 < 5u)) {
         } else {
@@ -4475,10 +4474,10 @@ uint nyq_lattice_bn_rev(uint entry_4, uint key_7, uint index_18)
     return _e9;
 }
 
-float nyq_lattice_bn_value_at(uint key_8, uint rev_3, uint c_8)
+float nyq_lattice_bn_value_at(uint key_8, uint rev_3, uint c_9)
 {
-    const uint _e6 = nyq_blue_shift(key_8, c_8);
-    const float _e8 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[min(uint(c_8), 3u)]) + _e6));
+    const uint _e6 = nyq_blue_shift(key_8, c_9);
+    const float _e8 = nyq_fraction_to_f32_(((rev_3 * NYQ_LATTICE_BN_GENERATOR[min(uint(c_9), 3u)]) + _e6));
     return _e8;
 }
 
@@ -4497,15 +4496,15 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uint2 pixel_28, uint sample
     s_97.index = sample_index_23;
     s_97.dim = dim_45;
     uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-    bool loop_init_31 = true;
+    bool loop_init_30 = true;
     while(true) {
         if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
         loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (!loop_init_30) {
             uint _e28 = b_16;
             b_16 = (_e28 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_30 = false;
         uint _e9 = b_16;
         if ((_e9 < 2u)) {
         } else {
@@ -4530,11 +4529,11 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uint2 pixel_28, uint sample
 float nyq_lattice_bn_value(inout NyqBlueSampler s_98, uint dim_46)
 {
     uint b_23 = naga_div(dim_46, 4u);
-    uint c_15 = naga_mod(dim_46, 4u);
+    uint c_16 = naga_mod(dim_46, 4u);
     if ((b_23 < 2u)) {
         uint _e10 = s_98.key[min(uint(b_23), 1u)];
         uint _e13 = s_98.prepared[min(uint(b_23), 1u)];
-        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
+        const float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_16);
         return _e14;
     }
     uint2 _e17 = s_98.seed;
@@ -4544,7 +4543,7 @@ float nyq_lattice_bn_value(inout NyqBlueSampler s_98, uint dim_46)
     const uint _e23 = nyq_lattice_bn_key(_e22);
     uint _e25 = s_98.index;
     const uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
+    const float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_16);
     return _e27;
 }
 
@@ -4581,15 +4580,15 @@ NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_102, uint2 p
 
     nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u);
     uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-    bool loop_init_32 = true;
+    bool loop_init_31 = true;
     while(true) {
         if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
         loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_32) {
+        if (!loop_init_31) {
             uint _e15 = d_8;
             d_8 = (_e15 + 1u);
         }
-        loop_init_32 = false;
+        loop_init_31 = false;
         uint _e7 = d_8;
         if ((_e7 < 5u)) {
         } else {
@@ -4626,13 +4625,13 @@ uint4 nyq_fill_request(uint i_17)
     return uint4(naga_mod(pixel_30, _e20), naga_div(pixel_30, _e25), naga_mod(n_13, _e29), 5u);
 }
 
-void nyq_fill_camera(uint out_3, NyqCameraSample c_9)
+void nyq_fill_camera(uint out_3, NyqCameraSample c_10)
 {
-    nyq_values.Store(out_3*4, asuint(asuint(c_9.p_film.x)));
-    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_9.p_film.y)));
-    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_9.time)));
-    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_9.lens.x)));
-    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_9.lens.y)));
+    nyq_values.Store(out_3*4, asuint(asuint(c_10.p_film.x)));
+    nyq_values.Store((out_3 + 1u)*4, asuint(asuint(c_10.p_film.y)));
+    nyq_values.Store((out_3 + 2u)*4, asuint(asuint(c_10.time)));
+    nyq_values.Store((out_3 + 3u)*4, asuint(asuint(c_10.lens.x)));
+    nyq_values.Store((out_3 + 4u)*4, asuint(asuint(c_10.lens.y)));
     return;
 }
 
@@ -4832,15 +4831,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e203 = nyq_job.seed;
             const NyqSobol _e204 = nyq_sobol(_e195, (_e198 != 0u), _e203);
             uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-            bool loop_init_33 = true;
+            bool loop_init_32 = true;
             while(true) {
                 if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
                 loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                if (!loop_init_33) {
+                if (!loop_init_32) {
                     uint _e232 = k;
                     k = (_e232 + 1u);
                 }
-                loop_init_33 = false;
+                loop_init_32 = false;
                 uint _e207 = k;
                 if ((_e207 < 4u)) {
                 } else {
@@ -4865,15 +4864,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             const NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             const float4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w);
             uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-            bool loop_init_34 = true;
+            bool loop_init_33 = true;
             while(true) {
                 if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
                 loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                if (!loop_init_34) {
+                if (!loop_init_33) {
                     uint _e268 = k_1;
                     k_1 = (_e268 + 1u);
                 }
-                loop_init_34 = false;
+                loop_init_33 = false;
                 uint _e246 = k_1;
                 if ((_e246 < 4u)) {
                 } else {
@@ -4896,15 +4895,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e277 = nyq_job.seed;
             const NyqPmj02_ _e278 = nyq_pmj02_((_e272 != 0u), _e277);
             uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-            bool loop_init_35 = true;
+            bool loop_init_34 = true;
             while(true) {
                 if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
                 loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_35) {
+                if (!loop_init_34) {
                     uint _e306 = k_2;
                     k_2 = (_e306 + 1u);
                 }
-                loop_init_35 = false;
+                loop_init_34 = false;
                 uint _e281 = k_2;
                 if ((_e281 < 4u)) {
                 } else {
@@ -4930,15 +4929,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             const NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
             uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-            bool loop_init_36 = true;
+            bool loop_init_35 = true;
             while(true) {
                 if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
                 loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_36) {
+                if (!loop_init_35) {
                     uint _e351 = k_3;
                     k_3 = (_e351 + 1u);
                 }
-                loop_init_36 = false;
+                loop_init_35 = false;
                 uint _e329 = k_3;
                 if ((_e329 < 8u)) {
                 } else {
@@ -4964,15 +4963,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e372 = nyq_job.seed;
             const NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, (_e367 != 0u), _e372);
             uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-            bool loop_init_37 = true;
+            bool loop_init_36 = true;
             while(true) {
                 if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
                 loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-                if (!loop_init_37) {
+                if (!loop_init_36) {
                     uint _e390 = k_4;
                     k_4 = (_e390 + 1u);
                 }
-                loop_init_37 = false;
+                loop_init_36 = false;
                 uint _e376 = k_4;
                 if ((_e376 < 4u)) {
                 } else {
@@ -4997,15 +4996,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
         }
         default: {
             uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
-            bool loop_init_38 = true;
+            bool loop_init_37 = true;
             while(true) {
                 if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
                 loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-                if (!loop_init_38) {
+                if (!loop_init_37) {
                     uint _e433 = k_5;
                     k_5 = (_e433 + 1u);
                 }
-                loop_init_38 = false;
+                loop_init_37 = false;
                 uint _e424 = k_5;
                 if ((_e424 < 8u)) {
                 } else {

@@ -140,9 +140,6 @@ struct NyqStratifiedSampler {
     uint dim;
 };
 struct type_24 {
-    metal::uint2 inner[192];
-};
-struct type_25 {
     uint inner[16];
 };
 struct NyqPmj02_ {
@@ -214,7 +211,7 @@ struct NyqFillJob {
     uint pad0_;
     uint pad1_;
 };
-typedef metal::uint4 type_29[1];
+typedef metal::uint4 type_28[1];
 constant uint NYQ_SCRAMBLE_NONE = 0u;
 constant uint NYQ_SCRAMBLE_PERMUTE_DIGITS = 1u;
 constant uint NYQ_SCRAMBLE_FAST_OWEN = 2u;
@@ -233,9 +230,8 @@ constant uint NYQ_CENTERED = 1u;
 constant metal::uint2 NYQ_DIM_STEP = metal::uint2(2135587861u, 2654435769u);
 constant metal::uint2 NYQ_JITTER_STEP = metal::uint2(668265295u, 3266489917u);
 constant uint NYQ_PMJ02_TABLE_SEED = 0u;
-constant type_24 NYQ_LCG_WINDOWS = type_24 {{metal::uint2(1u, 0u), metal::uint2(747796405u, 2891336453u), metal::uint2(4201498105u, 1192405134u), metal::uint2(3399858189u, 568162667u), metal::uint2(2200120369u, 878960812u), metal::uint2(2975532453u, 3598456993u), metal::uint2(1226092713u, 3109587930u), metal::uint2(371291773u, 457671207u), metal::uint2(1124524385u, 564359576u), metal::uint2(3421728917u, 1466123133u), metal::uint2(762174553u, 2469272934u), metal::uint2(651962861u, 2009562659u), metal::uint2(1985007505u, 200982212u), metal::uint2(2219911301u, 789858201u), metal::uint2(1058109705u, 2218199346u), metal::uint2(1237303901u, 2466908511u), metal::uint2(485992129u, 4177007664u), metal::uint2(3752762741u, 3363758325u), metal::uint2(979416761u, 3495377726u), metal::uint2(1020473293u, 4159242203u), metal::uint2(2876446449u, 3521641948u), metal::uint2(964378469u, 2211842961u), metal::uint2(1916126569u, 3871268746u), metal::uint2(1621779005u, 3219619223u), metal::uint2(250335265u, 2323728328u), metal::uint2(2303426133u, 36438893u), metal::uint2(3532903705u, 1530290710u), metal::uint2(1859537325u, 703454867u), metal::uint2(3127607889u, 399572468u), metal::uint2(97045061u, 1850623113u), metal::uint2(2757170633u, 2913627874u), metal::uint2(2773800477u, 3292905167u), metal::uint2(1829559681u, 1130785888u), metal::uint2(2493616949u, 1054968549u), metal::uint2(1105508217u, 2348282350u), metal::uint2(1459681165u, 3319134795u), metal::uint2(1630245297u, 2797543180u), metal::uint2(2004437285u, 767414913u), metal::uint2(3973769769u, 2046302010u), metal::uint2(3506609661u, 1923001607u), metal::uint2(2492747489u, 1525867000u), metal::uint2(2782419989u, 1619679069u), metal::uint2(4106280409u, 197937862u), metal::uint2(2235480429u, 2809475843u), metal::uint2(3652502801u, 681558308u), metal::uint2(1142701061u, 4271478137u), metal::uint2(1589035657u, 510277778u), metal::uint2(1774664157u, 3909101631u), metal::uint2(1640735809u, 1142294672u), metal::uint2(2808568053u, 2953136341u), metal::uint2(1042663481u, 3127364766u), metal::uint2(2102071117u, 2448648379u), metal::uint2(1880661105u, 3787736124u), metal::uint2(1452352229u, 3255463281u), metal::uint2(4000325353u, 2366059242u), metal::uint2(1619405245u, 4237037687u), metal::uint2(3859570081u, 786645032u), metal::uint2(2014710229u, 3970252621u), metal::uint2(1570829977u, 595777398u), metal::uint2(4105271597u, 3276569459u), metal::uint2(1484298193u, 2053245012u), metal::uint2(487030213u, 4117576297u), metal::uint2(2552004425u, 1419339330u), metal::uint2(4008897949u, 1962427823u), metal::uint2(1u, 0u), metal::uint2(1572862721u, 2584864960u), metal::uint2(999880193u, 714609024u), metal::uint2(478867713u, 1817344576u), metal::uint2(2207640577u, 1510023936u), metal::uint2(4089046785u, 778308544u), metal::uint2(4025934337u, 1681601664u), metal::uint2(4216118529u, 3058081088u), metal::uint2(2562447361u, 524699136u), metal::uint2(1262736129u, 3657051840u), metal::uint2(2514800129u, 1629640576u), metal::uint2(4221487361u, 1870577728u), metal::uint2(4285645825u, 4291782912u), metal::uint2(610123521u, 1288982976u), metal::uint2(3982670337u, 3511515776u), metal::uint2(3716199681u, 1207624512u), metal::uint2(2008526849u, 2879163392u), metal::uint2(1057467137u, 921859264u), metal::uint2(3060835841u, 1690082688u), metal::uint2(1626513665u, 4022011456u), metal::uint2(3247283201u, 3534597888u), metal::uint2(1531025153u, 1213503424u), metal::uint2(2970522113u, 3413098624u), metal::uint2(1173654785u, 381626688u), metal::uint2(2633205761u, 620941824u), metal::uint2(957055745u, 821738176u), metal::uint2(2637987329u, 3043419008u), metal::uint2(1283881217u, 1829194816u), metal::uint2(3387520001u, 1385952512u), metal::uint2(2556784385u, 2699353536u), metal::uint2(989489665u, 3533833856u), metal::uint2(883451137u, 2727571264u), metal::uint2(141516801u, 192485376u), metal::uint2(961501953u, 1209204928u), metal::uint2(1246254593u, 3542165888u), metal::uint2(3193590017u, 1734578752u), metal::uint2(411388929u, 4288297728u), metal::uint2(3687401217u, 3599049664u), metal::uint2(2334540289u, 1726237824u), metal::uint2(2845588737u, 1803007296u), metal::uint2(3123394561u, 3741277696u), metal::uint2(1070805761u, 4231743168u), metal::uint2(3180604929u, 1038839680u), metal::uint2(3060672769u, 1590679616u), metal::uint2(2908824577u, 1504215296u), metal::uint2(627908353u, 1765108160u), metal::uint2(2710706689u, 137794176u), metal::uint2(2765100289u, 4050385728u), metal::uint2(2988904449u, 529900544u), metal::uint2(1284967169u, 3446901952u), metal::uint2(4146071041u, 1975891328u), metal::uint2(885129473u, 3544981056u), metal::uint2(2289892353u, 3771123456u), metal::uint2(1968240385u, 3639979968u), metal::uint2(2117988865u, 915986560u), metal::uint2(641985793u, 3027255616u), metal::uint2(4033013761u, 1295772160u), metal::uint2(1603986177u, 1002164928u), metal::uint2(4142652929u, 4205837184u), metal::uint2(961927425u, 1155032128u), metal::uint2(2849559553u, 351603968u), metal::uint2(3413430017u, 2781214144u), metal::uint2(556386817u, 1913331328u), metal::uint2(771212545u, 881100608u), metal::uint2(1u, 0u), metal::uint2(1960755201u, 3891408896u), metal::uint2(2042462209u, 333733888u), metal::uint2(245121025u, 2211876864u), metal::uint2(863698945u, 935903232u), metal::uint2(3898195969u, 800780288u), metal::uint2(758677505u, 1806508032u), metal::uint2(35078145u, 3953086464u), metal::uint2(1727397889u, 2945548288u), metal::uint2(1540669441u, 3078860800u), metal::uint2(3769860097u, 58056704u), metal::uint2(4120002561u, 2473070592u), metal::uint2(2591096833u, 1733967872u), metal::uint2(3478110209u, 2135715840u), metal::uint2(2486075393u, 3678314496u), metal::uint2(3909959681u, 2066796544u), metal::uint2(3454795777u, 1596129280u), metal::uint2(1120583681u, 2266312704u), metal::uint2(1202290689u, 4077346816u), metal::uint2(3699916801u, 2734264320u), metal::uint2(23527425u, 2532032512u), metal::uint2(3058024449u, 3470651392u), metal::uint2(4213473281u, 1255153664u), metal::uint2(3489873921u, 180506624u), metal::uint2(887226369u, 246710272u), metal::uint2(700497921u, 1453764608u), metal::uint2(2929688577u, 3801669632u), metal::uint2(3279831041u, 2995458048u), metal::uint2(1750925313u, 3330097152u), metal::uint2(2637938689u, 510619648u), metal::uint2(1645903873u, 3126960128u), metal::uint2(3069788161u, 2589184000u), metal::uint2(2614624257u, 3192258560u), metal::uint2(280412161u, 641216512u), metal::uint2(362119169u, 3525992448u), metal::uint2(2859745281u, 3256651776u), metal::uint2(3478323201u, 4128161792u), metal::uint2(2217852929u, 1845555200u), metal::uint2(3373301761u, 703799296u), metal::uint2(2649702401u, 702894080u), metal::uint2(47054849u, 1842839552u), metal::uint2(4155293697u, 4123635712u), metal::uint2(2089517057u, 3250315264u), metal::uint2(2439659521u, 3517845504u), metal::uint2(910753793u, 631259136u), metal::uint2(1797767169u, 3180490752u), metal::uint2(805732353u, 2575605760u), metal::uint2(2229616641u, 3111571456u), metal::uint2(1774452737u, 493420544u), metal::uint2(3735207937u, 3311087616u), metal::uint2(3816914945u, 2974638080u), metal::uint2(2019573761u, 3779039232u), metal::uint2(2638151681u, 1429323776u), metal::uint2(1377681409u, 220459008u), metal::uint2(2533130241u, 152444928u), metal::uint2(1809530881u, 1225281536u), metal::uint2(3501850625u, 3438968832u), metal::uint2(3315122177u, 2498539520u), metal::uint2(1249345537u, 2698960896u), metal::uint2(1599488001u, 4040232960u), metal::uint2(70582273u, 2227388416u), metal::uint2(957595649u, 1555394560u), metal::uint2(4260528129u, 2024251392u), metal::uint2(1389445121u, 3633958912u)}};
-constant type_25 NYQ_PMJ02_XOR_X = type_25 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
-constant type_25 NYQ_PMJ02_XOR_Y = type_25 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
+constant type_24 NYQ_PMJ02_XOR_X = type_24 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
+constant type_24 NYQ_PMJ02_XOR_Y = type_24 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
 constant uint NYQ_HALTON_WORDS = 24u;
 constant uint NYQ_BELOW_ONE_BITS = 1065353215u;
 constant uint NYQ_PRIME_COUNT = 1024u;
@@ -661,7 +657,7 @@ NyqSobolSampler nyq_sobol_sampler(
         metal::uint2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = metal::uint2(_e36.x & mask, _e42.x & mask);
     }
-    uint n_8 = 2u * m_5;
+    uint n_9 = 2u * m_5;
     uint2 loop_bound_2 = uint2(4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -673,7 +669,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_1 = false;
         uint _e51 = c_1;
-        if (_e51 < n_8) {
+        if (_e51 < n_9) {
         } else {
             break;
         }
@@ -697,7 +693,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_2 = false;
                 uint _e81 = i;
-                if (_e81 < n_8) {
+                if (_e81 < n_9) {
                 } else {
                     break;
                 }
@@ -727,7 +723,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_3 = false;
         uint _e115 = i_1;
-        if (_e115 < n_8) {
+        if (_e115 < n_9) {
         } else {
             break;
         }
@@ -749,7 +745,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_4 = false;
         uint _e130 = col;
-        if (_e130 < n_8) {
+        if (_e130 < n_9) {
         } else {
             break;
         }
@@ -769,7 +765,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_5 = false;
                 uint _e136 = r_1;
-                if (_e136 < n_8) {
+                if (_e136 < n_9) {
                 } else {
                     break;
                 }
@@ -804,7 +800,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_6 = false;
                 uint _e164 = r_2;
-                if (_e164 < n_8) {
+                if (_e164 < n_9) {
                 } else {
                     break;
                 }
@@ -842,7 +838,7 @@ NyqSobolSampler nyq_sobol_sampler(
         }
         loop_init_7 = false;
         uint _e199 = i_2;
-        if (_e199 < n_8) {
+        if (_e199 < n_9) {
         } else {
             break;
         }
@@ -859,7 +855,7 @@ NyqSobolSampler nyq_sobol_sampler(
                 }
                 loop_init_8 = false;
                 uint _e203 = r_3;
-                if (_e203 < n_8) {
+                if (_e203 < n_9) {
                 } else {
                     break;
                 }
@@ -1051,10 +1047,10 @@ float nyq_sobol_sampler_value(
             local_2 = false;
         }
         bool _e37 = local_2;
-        uint w_2 = _e37 ? (_e22 << (_e24 & 31u)) : _e21;
+        uint w_1 = _e37 ? (_e22 << (_e24 & 31u)) : _e21;
         metal::uint2 _e39 = nyq_u64_(d_10);
         metal::uint2 _e40 = nyq_hash2_(seed_35, _e39);
-        uint _e42 = nyq_scramble_u32_(w_2, _e40.y, how_3);
+        uint _e42 = nyq_scramble_u32_(w_1, _e40.y, how_3);
         float _e43 = nyq_fraction_to_f32_(_e42);
         return _e43;
     }
@@ -1998,9 +1994,9 @@ float nyq_lattice_value(
 ) {
     metal::uint2 base = {};
     uint g_6 = {};
-    uint n_9 = s_49.n;
+    uint n_10 = s_49.n;
     uint _e5 = s_49.index;
-    uint k_19 = naga_mod(_e5, n_9);
+    uint k_19 = naga_mod(_e5, n_10);
     uint component = naga_mod(dim_19, 2u);
     uint _e11 = s_49.lattice;
     switch(_e11) {
@@ -2015,12 +2011,12 @@ float nyq_lattice_value(
             uint _e21 = s_49.g;
             g_6 = _e21;
             if (component == 0u) {
-                g_6 = naga_mod(1u, n_9);
+                g_6 = naga_mod(1u, n_10);
             }
             uint _e27 = g_6;
             metal::uint2 _e28 = nyq_mul_wide(k_19, _e27);
-            uint _e29 = nyq_mod64_(_e28, n_9);
-            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_9);
+            uint _e29 = nyq_mod64_(_e28, n_10);
+            metal::uint2 _e30 = nyq_fixed_ratio(_e29, n_10);
             base = _e30;
             break;
         }
@@ -2433,20 +2429,20 @@ NyqPermutation nyq_permutation(
     uint n_in,
     uint seed_15
 ) {
-    uint n_10 = metal::max(n_in, 1u);
-    if (n_10 <= 16u) {
+    uint n_11 = metal::max(n_in, 1u);
+    if (n_11 <= 16u) {
         metal::uint2 _e10 = nyq_mix64_(metal::uint2(seed_15 ^ 2242054355u, 608135816u));
-        metal::uint2 _e11 = nyq_packed_table(n_10, _e10);
-        return NyqPermutation {n_10, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
+        metal::uint2 _e11 = nyq_packed_table(n_11, _e10);
+        return NyqPermutation {n_11, 0u, 0u, 0u, 0u, 0u, 0u, {}, _e11};
     }
-    uint mask_3 = 4294967295u >> metal::clz(n_10 - 1u);
+    uint mask_3 = 4294967295u >> metal::clz(n_11 - 1u);
     uint bits_5 = 32u - metal::clz(mask_3);
     uint _e29 = nyq_mix32_(seed_15 ^ 1540483477u);
     uint _e32 = nyq_mix32_(_e29 + 1759714724u);
     uint _e35 = nyq_mix32_(_e32 ^ 625341585u);
-    metal::uint2 _e36 = nyq_mul_wide(_e35, n_10);
+    metal::uint2 _e36 = nyq_mul_wide(_e35, n_11);
     uint offset_3 = _e36.y;
-    return NyqPermutation {n_10, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, {}, metal::uint2(0u, 0u)};
+    return NyqPermutation {n_11, mask_3, metal::max(naga_div(bits_5 + 1u, 2u), 1u), metal::max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, {}, metal::uint2(0u, 0u)};
 }
 
 uint nyq_permutation_apply(
@@ -2455,12 +2451,12 @@ uint nyq_permutation_apply(
 ) {
     uint x_15 = {};
     bool local_10 = {};
-    uint n_11 = p.n;
-    if (n_11 <= 16u) {
-        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_8, n_11) & 15u));
+    uint n_12 = p.n;
+    if (n_12 <= 16u) {
+        uint _e11 = nyq_nibble(p.table, 4u * (naga_mod(i_8, n_12) & 15u));
         return _e11;
     }
-    x_15 = naga_mod(i_8, n_11);
+    x_15 = naga_mod(i_8, n_12);
     uint2 loop_bound_21 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_21 == uint2(0u))) { break; }
@@ -2492,7 +2488,7 @@ uint nyq_permutation_apply(
         uint _e73 = x_15;
         x_15 = _e72 ^ (_e73 >> p.third);
         uint _e77 = x_15;
-        if (_e77 < n_11) {
+        if (_e77 < n_12) {
             break;
         }
     }
@@ -2500,12 +2496,12 @@ uint nyq_permutation_apply(
     uint q_3 = _e79 + p.offset;
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = q_3 >= n_11;
+        local_10 = q_3 >= n_12;
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return _e90 ? (q_3 - n_11) : q_3;
+    return _e90 ? (q_3 - n_12) : q_3;
 }
 
 NyqStratifiedSampler nyq_stratified_sampler(
@@ -2702,35 +2698,41 @@ uint nyq_lcg_draw(
     uint m_1
 ) {
     uint s_66 = {};
-    uint w_1 = 0u;
+    uint n_6 = {};
+    uint a_8 = 747796405u;
+    uint c_3 = 2891336453u;
     s_66 = 2891336453u + seed_17;
-    uint n_12 = m_1 + 1u;
+    n_6 = m_1 + 1u;
     uint2 loop_bound_22 = uint2(4294967295u);
-    bool loop_init_17 = true;
     while(true) {
         if (metal::all(loop_bound_22 == uint2(0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        if (!loop_init_17) {
-            uint _e30 = w_1;
-            w_1 = _e30 + 1u;
-        }
-        loop_init_17 = false;
-        uint _e9 = w_1;
-        if (_e9 < 3u) {
+        uint _e12 = n_6;
+        if (_e12 != 0u) {
         } else {
             break;
         }
         {
-            uint _e13 = w_1;
-            uint _e17 = w_1;
-            metal::uint2 ac = NYQ_LCG_WINDOWS.inner[(_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u)];
-            uint _e25 = s_66;
-            s_66 = (NYQ_LCG_WINDOWS.inner[(_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u)].x * _e25) + NYQ_LCG_WINDOWS.inner[(_e13 * 64u) + ((n_12 >> (6u * _e17)) & 63u)].y;
+            uint _e15 = n_6;
+            if ((_e15 & 1u) != 0u) {
+                uint _e20 = a_8;
+                uint _e21 = s_66;
+                uint _e23 = c_3;
+                s_66 = (_e20 * _e21) + _e23;
+            }
+            uint _e25 = a_8;
+            uint _e28 = c_3;
+            c_3 = (_e25 + 1u) * _e28;
+            uint _e30 = a_8;
+            uint _e31 = a_8;
+            a_8 = _e30 * _e31;
+            uint _e33 = n_6;
+            n_6 = _e33 >> 1u;
         }
     }
-    uint _e32 = s_66;
-    uint _e33 = nyq_rxs_m_xs(_e32);
-    return _e33;
+    uint _e36 = s_66;
+    uint _e37 = nyq_rxs_m_xs(_e36);
+    return _e37;
 }
 
 uint nyq_pmj02_point(
@@ -2766,9 +2768,9 @@ uint nyq_pmj02_point(
             known = _e34 | low_2;
             uint _e36 = flips;
             flips = _e36 ^ swap;
-            uint c_10 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
+            uint c_11 = (dim_27 == 0u) ? NYQ_PMJ02_XOR_X.inner[level_1 & 15u] : NYQ_PMJ02_XOR_Y.inner[level_1 & 15u];
             uint _e49 = p_1;
-            p_1 = (_e49 - (1u << level_1)) ^ c_10;
+            p_1 = (_e49 - (1u << level_1)) ^ c_11;
         }
     }
     uint _e54 = x_17;
@@ -2936,10 +2938,10 @@ NyqCameraSample nyq_pmj02_camera_sample(
 }
 
 metal::uint2 nyq_sub64_(
-    metal::uint2 a_8,
+    metal::uint2 a_9,
     metal::uint2 b_7
 ) {
-    return metal::uint2(a_8.x - b_7.x, (a_8.y - b_7.y) - ((a_8.x < b_7.x) ? 1u : 0u));
+    return metal::uint2(a_9.x - b_7.x, (a_9.y - b_7.y) - ((a_9.x < b_7.x) ? 1u : 0u));
 }
 
 metal::uint3 nyq_divmod64_small(
@@ -2962,24 +2964,24 @@ metal::uint3 nyq_divmod64_small(
 }
 
 metal::uint4 nyq_add128_(
-    metal::uint4 a_9,
+    metal::uint4 a_10,
     metal::uint4 b_8
 ) {
-    metal::uint4 s_104 = a_9 + b_8;
-    metal::uint4 c_11 = metal::select(metal::uint4(0u), metal::uint4(1u), s_104 < a_9);
-    uint t1_2 = s_104.y + c_11.x;
-    uint k1_ = c_11.y + ((t1_2 < c_11.x) ? 1u : 0u);
+    metal::uint4 s_104 = a_10 + b_8;
+    metal::uint4 c_12 = metal::select(metal::uint4(0u), metal::uint4(1u), s_104 < a_10);
+    uint t1_2 = s_104.y + c_12.x;
+    uint k1_ = c_12.y + ((t1_2 < c_12.x) ? 1u : 0u);
     uint t2_1 = s_104.z + k1_;
-    uint k2_ = c_11.z + ((t2_1 < k1_) ? 1u : 0u);
+    uint k2_ = c_12.z + ((t2_1 < k1_) ? 1u : 0u);
     return metal::uint4(s_104.x, t1_2, t2_1, s_104.w + k2_);
 }
 
 metal::uint4 nyq_sub128_(
-    metal::uint4 a_10,
+    metal::uint4 a_11,
     metal::uint4 b_9
 ) {
-    metal::uint4 s_105 = a_10 - b_9;
-    metal::uint4 o = metal::select(metal::uint4(0u), metal::uint4(1u), a_10 < b_9);
+    metal::uint4 s_105 = a_11 - b_9;
+    metal::uint4 o = metal::select(metal::uint4(0u), metal::uint4(1u), a_11 < b_9);
     uint t1_3 = s_105.y - o.x;
     uint k1_1 = o.y + ((s_105.y < o.x) ? 1u : 0u);
     uint t2_2 = s_105.z - k1_1;
@@ -2988,19 +2990,19 @@ metal::uint4 nyq_sub128_(
 }
 
 bool nyq_lt128_(
-    metal::uint4 a_11,
+    metal::uint4 a_12,
     metal::uint4 b_10
 ) {
-    if (a_11.w != b_10.w) {
-        return a_11.w < b_10.w;
+    if (a_12.w != b_10.w) {
+        return a_12.w < b_10.w;
     }
-    if (a_11.z != b_10.z) {
-        return a_11.z < b_10.z;
+    if (a_12.z != b_10.z) {
+        return a_12.z < b_10.z;
     }
-    if (a_11.y != b_10.y) {
-        return a_11.y < b_10.y;
+    if (a_12.y != b_10.y) {
+        return a_12.y < b_10.y;
     }
-    return a_11.x < b_10.x;
+    return a_12.x < b_10.x;
 }
 
 metal::uint4 nyq_mul128_u32_(
@@ -3016,13 +3018,13 @@ metal::uint4 nyq_mul128_u32_(
 }
 
 metal::uint4 nyq_mul64_wide(
-    metal::uint2 a_12,
+    metal::uint2 a_13,
     metal::uint2 b_11
 ) {
-    metal::uint2 _e4 = nyq_mul_wide(a_12.x, b_11.x);
-    metal::uint2 _e7 = nyq_mul_wide(a_12.x, b_11.y);
-    metal::uint2 _e10 = nyq_mul_wide(a_12.y, b_11.x);
-    metal::uint2 _e13 = nyq_mul_wide(a_12.y, b_11.y);
+    metal::uint2 _e4 = nyq_mul_wide(a_13.x, b_11.x);
+    metal::uint2 _e7 = nyq_mul_wide(a_13.x, b_11.y);
+    metal::uint2 _e10 = nyq_mul_wide(a_13.y, b_11.x);
+    metal::uint2 _e13 = nyq_mul_wide(a_13.y, b_11.y);
     metal::uint4 outer = metal::uint4(_e4.x, _e4.y, _e13.x, _e13.y);
     metal::uint4 _e24 = nyq_add128_(outer, metal::uint4(0u, _e7.x, _e7.y, 0u));
     metal::uint4 _e30 = nyq_add128_(_e24, metal::uint4(0u, _e10.x, _e10.y, 0u));
@@ -3259,15 +3261,15 @@ NyqRounding nyq_divide(
         metal::uint4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
         uint2 loop_bound_25 = uint2(4294967295u);
-        bool loop_init_18 = true;
+        bool loop_init_17 = true;
         while(true) {
             if (metal::all(loop_bound_25 == uint2(0u))) { break; }
             loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_18) {
+            if (!loop_init_17) {
                 uint _e109 = i_10;
                 i_10 = _e109 + 1u;
             }
-            loop_init_18 = false;
+            loop_init_17 = false;
             uint _e51 = i_10;
             if (_e51 < steps) {
             } else {
@@ -3319,15 +3321,15 @@ NyqRounding nyq_divide(
         metal::uint4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
         uint2 loop_bound_26 = uint2(4294967295u);
-        bool loop_init_19 = true;
+        bool loop_init_18 = true;
         while(true) {
             if (metal::all(loop_bound_26 == uint2(0u))) { break; }
             loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-            if (!loop_init_19) {
+            if (!loop_init_18) {
                 uint _e186 = i_11;
                 i_11 = _e186 + 1u;
             }
-            loop_init_19 = false;
+            loop_init_18 = false;
             uint _e128 = i_11;
             if (_e128 < steps) {
             } else {
@@ -3376,7 +3378,7 @@ uint nyq_prime(
 
 NyqRounding nyq_phi_short(
     uint t_3,
-    uint a_13,
+    uint a_14,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -3384,22 +3386,22 @@ NyqRounding nyq_phi_short(
     metal::uint2 rev = metal::uint2(0u, 0u);
     uint i_12 = 0u;
     uint b_17 = nyq_halton_bases[t_3];
-    uint c_12 = naga_div(35u - metal::clz(a_13), 4u) - 1u;
-    uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_12, 4u)];
-    uint places = (_e19 >> (8u * naga_mod(c_12, 4u))) & 255u;
-    uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_12)];
-    uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_12)];
-    x_22 = a_13;
+    uint c_13 = naga_div(35u - metal::clz(a_14), 4u) - 1u;
+    uint _e19 = nyq_halton_bases[(t_3 + 2u) + naga_div(c_13, 4u)];
+    uint places = (_e19 >> (8u * naga_mod(c_13, 4u))) & 255u;
+    uint low_3 = nyq_halton_bases[(t_3 + 8u) + (2u * c_13)];
+    uint high_1 = nyq_halton_bases[(t_3 + 9u) + (2u * c_13)];
+    x_22 = a_14;
     uint2 loop_bound_27 = uint2(4294967295u);
-    bool loop_init_20 = true;
+    bool loop_init_19 = true;
     while(true) {
         if (metal::all(loop_bound_27 == uint2(0u))) { break; }
         loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_20) {
+        if (!loop_init_19) {
             uint _e64 = i_12;
             i_12 = _e64 + 1u;
         }
-        loop_init_20 = false;
+        loop_init_19 = false;
         uint _e50 = i_12;
         if (_e50 < places) {
         } else {
@@ -3425,7 +3427,7 @@ NyqRounding nyq_phi_short(
 
 NyqFraction nyq_phi_fraction(
     uint t_4,
-    metal::uint2 a_14,
+    metal::uint2 a_15,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
@@ -3433,13 +3435,13 @@ NyqFraction nyq_phi_fraction(
     metal::uint4 num_2 = metal::uint4(0u);
     metal::uint4 den_2 = metal::uint4(1u, 0u, 0u, 0u);
     bool local_28 = {};
-    uint c_3 = {};
+    uint c_4 = {};
     uint rev_1 = {};
     uint i_13 = {};
     uint b_18 = nyq_halton_bases[t_4];
     uint chunk = nyq_halton_bases[t_4 + 4u];
     uint run = nyq_halton_bases[t_4 + 5u];
-    x_23 = a_14;
+    x_23 = a_15;
     uint2 loop_bound_28 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_28 == uint2(0u))) { break; }
@@ -3460,31 +3462,31 @@ NyqFraction nyq_phi_fraction(
             metal::uint2 _e38 = x_23;
             metal::uint3 _e39 = nyq_divmod64_small(_e38, chunk);
             x_23 = _e39.xy;
-            c_3 = _e39.z;
+            c_4 = _e39.z;
             rev_1 = 0u;
             i_13 = 0u;
             uint2 loop_bound_29 = uint2(4294967295u);
-            bool loop_init_21 = true;
+            bool loop_init_20 = true;
             while(true) {
                 if (metal::all(loop_bound_29 == uint2(0u))) { break; }
                 loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                if (!loop_init_21) {
+                if (!loop_init_20) {
                     uint _e58 = i_13;
                     i_13 = _e58 + 1u;
                 }
-                loop_init_21 = false;
+                loop_init_20 = false;
                 uint _e47 = i_13;
                 if (_e47 < run) {
                 } else {
                     break;
                 }
                 {
-                    uint _e49 = c_3;
+                    uint _e49 = c_4;
                     uint q_6 = naga_div(_e49, b_18);
                     uint _e51 = rev_1;
-                    uint _e53 = c_3;
+                    uint _e53 = c_4;
                     rev_1 = (_e51 * b_18) + (_e53 - (q_6 * b_18));
-                    c_3 = q_6;
+                    c_4 = q_6;
                 }
             }
             metal::uint4 _e60 = num_2;
@@ -3504,7 +3506,7 @@ NyqFraction nyq_phi_fraction(
 
 NyqFraction nyq_permuted_fraction(
     uint t_5,
-    metal::uint2 a_15,
+    metal::uint2 a_16,
     metal::uint2 seed_21,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
@@ -3514,7 +3516,7 @@ NyqFraction nyq_permuted_fraction(
     metal::uint4 den_3 = metal::uint4(1u, 0u, 0u, 0u);
     bool local_29 = {};
     bool local_30 = {};
-    uint c_4 = {};
+    uint c_5 = {};
     uint part = {};
     uint scale = {};
     uint i_14 = {};
@@ -3527,7 +3529,7 @@ NyqFraction nyq_permuted_fraction(
     metal::uint2 _e16 = nyq_u64_(b_19);
     metal::uint2 _e17 = nyq_hash2_(seed_21, _e16);
     NyqPermutation _e21 = nyq_permutation(b_19, _e17.x ^ _e17.y);
-    x_24 = a_15;
+    x_24 = a_16;
     uint2 loop_bound_30 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_30 == uint2(0u))) { break; }
@@ -3556,20 +3558,20 @@ NyqFraction nyq_permuted_fraction(
                 local_30 = false;
             }
             bool last = local_30;
-            c_4 = _e46.z;
+            c_5 = _e46.z;
             part = 0u;
             scale = 1u;
             i_14 = 0u;
             uint2 loop_bound_31 = uint2(4294967295u);
-            bool loop_init_22 = true;
+            bool loop_init_21 = true;
             while(true) {
                 if (metal::all(loop_bound_31 == uint2(0u))) { break; }
                 loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-                if (!loop_init_22) {
+                if (!loop_init_21) {
                     uint _e89 = i_14;
                     i_14 = _e89 + 1u;
                 }
-                loop_init_22 = false;
+                loop_init_21 = false;
                 uint _e68 = i_14;
                 if (_e68 < run_1) {
                 } else {
@@ -3577,7 +3579,7 @@ NyqFraction nyq_permuted_fraction(
                 }
                 {
                     if (last) {
-                        uint _e72 = c_4;
+                        uint _e72 = c_5;
                         local_31 = _e72 == 0u;
                     } else {
                         local_31 = false;
@@ -3586,15 +3588,15 @@ NyqFraction nyq_permuted_fraction(
                     if (_e76) {
                         break;
                     }
-                    uint _e77 = c_4;
+                    uint _e77 = c_5;
                     uint q_7 = naga_div(_e77, b_19);
                     uint _e79 = part;
-                    uint _e81 = c_4;
+                    uint _e81 = c_5;
                     uint _e84 = nyq_permutation_apply(_e21, _e81 - (q_7 * b_19));
                     part = (_e79 * b_19) + _e84;
                     uint _e86 = scale;
                     scale = _e86 * b_19;
-                    c_4 = q_7;
+                    c_5 = q_7;
                 }
             }
             metal::uint4 _e91 = num_3;
@@ -3639,7 +3641,7 @@ NyqFraction nyq_permuted_fraction(
 
 NyqFraction nyq_nested_fraction(
     uint d_4,
-    metal::uint2 a_16,
+    metal::uint2 a_17,
     metal::uint2 seed_22,
     bool affine,
     device type_4 const& nyq_halton_bases,
@@ -3657,7 +3659,7 @@ NyqFraction nyq_nested_fraction(
     uint b_20 = nyq_halton_bases[NYQ_HALTON_WORDS * d_4];
     metal::uint2 _e9 = nyq_u64_(d_4);
     metal::uint2 _e13 = nyq_hash3_(seed_22, _e9, affine ? NYQ_OWEN_TAG_AFFINE : NYQ_OWEN_TAG_UNIFORM);
-    rest = a_16;
+    rest = a_17;
     uint2 loop_bound_32 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_32 == uint2(0u))) { break; }
@@ -3687,7 +3689,7 @@ NyqFraction nyq_nested_fraction(
             metal::uint2 _e56 = rest;
             metal::uint2 _e57 = pow;
             metal::uint2 _e58 = nyq_mul64_(_e56, _e57);
-            metal::uint2 _e59 = nyq_sub64_(a_16, _e58);
+            metal::uint2 _e59 = nyq_sub64_(a_17, _e58);
             metal::uint2 _e61 = nyq_mul64_(_e59, NYQ_OWEN_PREFIX_MUL);
             uint _e63 = level;
             metal::uint2 _e64 = nyq_u64_(_e63);
@@ -3739,7 +3741,7 @@ NyqFraction nyq_nested_fraction(
 
 float nyq_radical_inverse_scrambled(
     uint dim_32,
-    metal::uint2 a_17,
+    metal::uint2 a_18,
     metal::uint2 seed_23,
     uint how_2,
     device type_4 const& nyq_halton_bases,
@@ -3760,36 +3762,36 @@ float nyq_radical_inverse_scrambled(
     }
     bool _e16 = local_35;
     if (_e16) {
-        r_13 = NyqRounding {metal::uint4(metal::reverse_bits(a_17.y), metal::reverse_bits(a_17.x), 0u, 0u), -64, 0u, 0u, 0u};
+        r_13 = NyqRounding {metal::uint4(metal::reverse_bits(a_18.y), metal::reverse_bits(a_18.x), 0u, 0u), -64, 0u, 0u, 0u};
     } else {
         if (how_2 == NYQ_SCRAMBLE_NONE) {
-            local_36 = a_17.y == 0u;
+            local_36 = a_18.y == 0u;
         } else {
             local_36 = false;
         }
         bool _e37 = local_36;
         if (_e37) {
             uint _e45 = nyq_halton_bases[t_7 + 1u];
-            local_37 = a_17.x < _e45;
+            local_37 = a_18.x < _e45;
         } else {
             local_37 = false;
         }
         bool _e48 = local_37;
         if (_e48) {
-            if (a_17.x != 0u) {
-                NyqRounding _e53 = nyq_phi_short(t_7, a_17.x, nyq_halton_bases, _buffer_sizes);
+            if (a_18.x != 0u) {
+                NyqRounding _e53 = nyq_phi_short(t_7, a_18.x, nyq_halton_bases, _buffer_sizes);
                 r_13 = _e53;
             }
         } else {
             if (how_2 == NYQ_SCRAMBLE_NONE) {
-                NyqFraction _e57 = nyq_phi_fraction(t_7, a_17, nyq_halton_bases, _buffer_sizes);
+                NyqFraction _e57 = nyq_phi_fraction(t_7, a_18, nyq_halton_bases, _buffer_sizes);
                 f = _e57;
             } else {
                 if (how_2 == NYQ_SCRAMBLE_PERMUTE_DIGITS) {
-                    NyqFraction _e60 = nyq_permuted_fraction(t_7, a_17, seed_23, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e60 = nyq_permuted_fraction(t_7, a_18, seed_23, nyq_halton_bases, _buffer_sizes);
                     f = _e60;
                 } else {
-                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_17, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+                    NyqFraction _e63 = nyq_nested_fraction(d_28, a_18, seed_23, how_2 == NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
                     f = _e63;
                 }
             }
@@ -3824,44 +3826,44 @@ float nyq_radical_inverse_scrambled(
 
 float nyq_radical_inverse(
     uint dim_33,
-    metal::uint2 a_18,
+    metal::uint2 a_19,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_18, metal::uint2(0u, 0u), NYQ_SCRAMBLE_NONE, nyq_halton_bases, _buffer_sizes);
+    float _e6 = nyq_radical_inverse_scrambled(dim_33, a_19, metal::uint2(0u, 0u), NYQ_SCRAMBLE_NONE, nyq_halton_bases, _buffer_sizes);
     return _e6;
 }
 
 float nyq_scrambled_radical_inverse(
     uint dim_34,
-    metal::uint2 a_19,
+    metal::uint2 a_20,
     metal::uint2 seed_24,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_19, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_34, a_20, seed_24, NYQ_SCRAMBLE_PERMUTE_DIGITS, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
 float nyq_owen_scrambled_radical_inverse(
     uint dim_35,
-    metal::uint2 a_20,
+    metal::uint2 a_21,
     metal::uint2 seed_25,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_20, seed_25, NYQ_SCRAMBLE_OWEN, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_35, a_21, seed_25, NYQ_SCRAMBLE_OWEN, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
 float nyq_fast_owen_scrambled_radical_inverse(
     uint dim_36,
-    metal::uint2 a_21,
+    metal::uint2 a_22,
     metal::uint2 seed_26,
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_21, seed_26, NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
+    float _e4 = nyq_radical_inverse_scrambled(dim_36, a_22, seed_26, NYQ_SCRAMBLE_FAST_OWEN, nyq_halton_bases, _buffer_sizes);
     return _e4;
 }
 
@@ -3894,16 +3896,16 @@ int naga_mod(int lhs, int rhs) {
 }
 
 uint nyq_mod_inverse(
-    uint a_22,
-    uint n_6
+    uint a_23,
+    uint n_7
 ) {
     int r0_ = {};
     int r1_ = {};
     int t0_ = 0;
     int t1_ = 1;
     int m_4 = {};
-    r0_ = static_cast<int>(n_6);
-    r1_ = static_cast<int>(naga_mod(a_22, n_6));
+    r0_ = static_cast<int>(n_7);
+    r1_ = static_cast<int>(naga_mod(a_23, n_7));
     uint2 loop_bound_33 = uint2(4294967295u);
     while(true) {
         if (metal::all(loop_bound_33 == uint2(0u))) { break; }
@@ -3932,11 +3934,11 @@ uint nyq_mod_inverse(
         }
     }
     int _e27 = t0_;
-    m_4 = naga_mod(_e27, static_cast<int>(n_6));
+    m_4 = naga_mod(_e27, static_cast<int>(n_7));
     int _e31 = m_4;
     if (_e31 < 0) {
         int _e34 = m_4;
-        m_4 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_6)));
+        m_4 = as_type<int>(as_type<uint>(_e34) + as_type<uint>(static_cast<int>(n_7)));
     }
     int _e37 = m_4;
     return static_cast<uint>(_e37);
@@ -3988,7 +3990,7 @@ NyqHaltonSampler nyq_halton_sampler(
 uint nyq_inverse_radical_inverse(
     uint b_13,
     uint inverse_in,
-    uint n_7
+    uint n_8
 ) {
     uint inverse_1 = {};
     uint index_16 = 0u;
@@ -3996,17 +3998,17 @@ uint nyq_inverse_radical_inverse(
     uint k_14 = {};
     inverse_1 = inverse_in;
     uint2 loop_bound_35 = uint2(4294967295u);
-    bool loop_init_23 = true;
+    bool loop_init_22 = true;
     while(true) {
         if (metal::all(loop_bound_35 == uint2(0u))) { break; }
         loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-        if (!loop_init_23) {
+        if (!loop_init_22) {
             uint _e32 = done;
             done = _e32 + 1u;
         }
-        loop_init_23 = false;
+        loop_init_22 = false;
         uint _e8 = done;
-        if (_e8 < n_7) {
+        if (_e8 < n_8) {
         } else {
             break;
         }
@@ -4016,17 +4018,17 @@ uint nyq_inverse_radical_inverse(
                 uint _e13 = done;
                 k_14 = _e13;
                 uint2 loop_bound_36 = uint2(4294967295u);
-                bool loop_init_24 = true;
+                bool loop_init_23 = true;
                 while(true) {
                     if (metal::all(loop_bound_36 == uint2(0u))) { break; }
                     loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-                    if (!loop_init_24) {
+                    if (!loop_init_23) {
                         uint _e20 = k_14;
                         k_14 = _e20 + 1u;
                     }
-                    loop_init_24 = false;
+                    loop_init_23 = false;
                     uint _e15 = k_14;
-                    if (_e15 < n_7) {
+                    if (_e15 < n_8) {
                     } else {
                         break;
                     }
@@ -4078,24 +4080,24 @@ float nyq_halton_sampler_value(
     device type_4 const& nyq_halton_bases,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    metal::uint2 a_23 = {};
+    metal::uint2 a_24 = {};
     uint d_29 = naga_mod(dim_38, NYQ_PRIME_COUNT);
     metal::uint2 index_19 = s_78.index;
-    a_23 = index_19;
+    a_24 = index_19;
     if (d_29 == 0u) {
         uint e_6 = s_78.exponents.x;
         if (e_6 != 0u) {
             metal::uint2 _e14 = nyq_shr64_(index_19, e_6);
-            a_23 = _e14;
+            a_24 = _e14;
         }
     } else {
         if (d_29 == 1u) {
             uint _e19 = s_78.scales.y;
             metal::uint3 _e20 = nyq_divmod64_small(index_19, _e19);
-            a_23 = _e20.xy;
+            a_24 = _e20.xy;
         }
     }
-    metal::uint2 _e22 = a_23;
+    metal::uint2 _e22 = a_24;
     metal::uint2 _e24 = s_78.seed;
     uint _e26 = s_78.scramble;
     float _e27 = nyq_radical_inverse_scrambled(d_29, _e22, _e24, _e26, nyq_halton_bases, _buffer_sizes);
@@ -4134,15 +4136,15 @@ metal::float2 nyq_halton_sampler_pair(
     metal::float2 v_6 = metal::float2(0.0, 0.0);
     uint k_15 = 0u;
     uint2 loop_bound_37 = uint2(4294967295u);
-    bool loop_init_25 = true;
+    bool loop_init_24 = true;
     while(true) {
         if (metal::all(loop_bound_37 == uint2(0u))) { break; }
         loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (!loop_init_24) {
             uint _e17 = k_15;
             k_15 = _e17 + 1u;
         }
-        loop_init_25 = false;
+        loop_init_24 = false;
         uint _e8 = k_15;
         if (_e8 < 2u) {
         } else {
@@ -4193,15 +4195,15 @@ NyqCameraSample nyq_halton_sampler_camera_sample(
     uint d_5 = 0u;
     nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
     uint2 loop_bound_38 = uint2(4294967295u);
-    bool loop_init_26 = true;
+    bool loop_init_25 = true;
     while(true) {
         if (metal::all(loop_bound_38 == uint2(0u))) { break; }
         loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (!loop_init_25) {
             uint _e25 = d_5;
             d_5 = _e25 + 1u;
         }
-        loop_init_26 = false;
+        loop_init_25 = false;
         uint _e14 = d_5;
         if (_e14 < 5u) {
         } else {
@@ -4293,9 +4295,9 @@ NyqCameraSample nyq_blue_camera(
 
 uint nyq_blue_shift(
     uint key_4,
-    uint c_5
+    uint c_6
 ) {
-    uint _e7 = nyq_mix32_(key_4 ^ ((c_5 + 1u) * 2654435769u));
+    uint _e7 = nyq_mix32_(key_4 ^ ((c_6 + 1u) * 2654435769u));
     return _e7;
 }
 
@@ -4326,12 +4328,12 @@ uint nyq_owen_sobol_bn_rev(
 float nyq_owen_sobol_bn_value_at(
     uint key_6,
     uint rev_2,
-    uint c_6,
+    uint c_7,
     device type_4 const& nyq_sobol_matrices,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    uint _e3 = nyq_dim_seed(key_6, c_6);
-    uint _e4 = nyq_owen_sobol_rev(rev_2, c_6, _e3, nyq_sobol_matrices, _buffer_sizes);
+    uint _e3 = nyq_dim_seed(key_6, c_7);
+    uint _e4 = nyq_owen_sobol_rev(rev_2, c_7, _e3, nyq_sobol_matrices, _buffer_sizes);
     float _e5 = nyq_rev_to_f32_(_e4);
     return _e5;
 }
@@ -4357,15 +4359,15 @@ void nyq_owen_sobol_bn_start(
     s_85.index = sample_index_19;
     s_85.dim = dim_41;
     uint2 loop_bound_39 = uint2(4294967295u);
-    bool loop_init_27 = true;
+    bool loop_init_26 = true;
     while(true) {
         if (metal::all(loop_bound_39 == uint2(0u))) { break; }
         loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (!loop_init_26) {
             uint _e28 = b_14;
             b_14 = _e28 + 1u;
         }
-        loop_init_27 = false;
+        loop_init_26 = false;
         uint _e9 = b_14;
         if (_e9 < 2u) {
         } else {
@@ -4395,11 +4397,11 @@ float nyq_owen_sobol_bn_value(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint b_21 = naga_div(dim_42, 4u);
-    uint c_13 = naga_mod(dim_42, 4u);
+    uint c_14 = naga_mod(dim_42, 4u);
     if (b_21 < 2u) {
         uint _e10 = s_86.key[b_21];
         uint _e13 = s_86.prepared[b_21];
-        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_13, nyq_sobol_matrices, _buffer_sizes);
+        float _e14 = nyq_owen_sobol_bn_value_at(_e10, _e13, c_14, nyq_sobol_matrices, _buffer_sizes);
         return _e14;
     }
     metal::uint2 _e17 = s_86.seed;
@@ -4409,7 +4411,7 @@ float nyq_owen_sobol_bn_value(
     uint _e23 = nyq_owen_sobol_bn_key(_e22);
     uint _e25 = s_86.index;
     uint _e26 = nyq_owen_sobol_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_13, nyq_sobol_matrices, _buffer_sizes);
+    float _e27 = nyq_owen_sobol_bn_value_at(_e23, _e26, c_14, nyq_sobol_matrices, _buffer_sizes);
     return _e27;
 }
 
@@ -4463,15 +4465,15 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(
     uint d_6 = 0u;
     nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u, nyq_blue_tiles, _buffer_sizes);
     uint2 loop_bound_40 = uint2(4294967295u);
-    bool loop_init_28 = true;
+    bool loop_init_27 = true;
     while(true) {
         if (metal::all(loop_bound_40 == uint2(0u))) { break; }
         loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_28) {
+        if (!loop_init_27) {
             uint _e15 = d_6;
             d_6 = _e15 + 1u;
         }
-        loop_init_28 = false;
+        loop_init_27 = false;
         uint _e7 = d_6;
         if (_e7 < 5u) {
         } else {
@@ -4517,11 +4519,11 @@ uint nyq_pmj02_bn_points(
 float nyq_pmj02_bn_value_at(
     uint k_17,
     uint points,
-    uint c_7
+    uint c_8
 ) {
-    uint point = (points >> (16u * naga_div(c_7, 2u))) & 65535u;
-    uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, naga_mod(c_7, 2u));
-    uint _e14 = nyq_blue_shift(k_17, c_7);
+    uint point = (points >> (16u * naga_div(c_8, 2u))) & 65535u;
+    uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, naga_mod(c_8, 2u));
+    uint _e14 = nyq_blue_shift(k_17, c_8);
     float _e16 = nyq_fraction_to_f32_(_e13 ^ _e14);
     return _e16;
 }
@@ -4547,15 +4549,15 @@ void nyq_pmj02_bn_start(
     s_91.index = sample_index_21;
     s_91.dim = dim_43;
     uint2 loop_bound_41 = uint2(4294967295u);
-    bool loop_init_29 = true;
+    bool loop_init_28 = true;
     while(true) {
         if (metal::all(loop_bound_41 == uint2(0u))) { break; }
         loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_29) {
+        if (!loop_init_28) {
             uint _e31 = b_15;
             b_15 = _e31 + 1u;
         }
-        loop_init_29 = false;
+        loop_init_28 = false;
         uint _e9 = b_15;
         if (_e9 < 2u) {
         } else {
@@ -4585,11 +4587,11 @@ float nyq_pmj02_bn_value(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint b_22 = naga_div(dim_44, 4u);
-    uint c_14 = naga_mod(dim_44, 4u);
+    uint c_15 = naga_mod(dim_44, 4u);
     if (b_22 < 2u) {
         uint _e10 = s_92.key[b_22];
         uint _e13 = s_92.prepared[b_22];
-        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_14);
+        float _e14 = nyq_pmj02_bn_value_at(_e10, _e13, c_15);
         return _e14;
     }
     metal::uint2 _e17 = s_92.seed;
@@ -4600,7 +4602,7 @@ float nyq_pmj02_bn_value(
     uint i_19 = _e24 ^ (_e22 & 255u);
     uint _e28 = nyq_pmj02_bn_key(_e22, i_19);
     uint _e29 = nyq_pmj02_bn_points(_e28, i_19);
-    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_14);
+    float _e30 = nyq_pmj02_bn_value_at(_e28, _e29, c_15);
     return _e30;
 }
 
@@ -4650,15 +4652,15 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(
     uint d_7 = 0u;
     nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u, nyq_blue_tiles, _buffer_sizes);
     uint2 loop_bound_42 = uint2(4294967295u);
-    bool loop_init_30 = true;
+    bool loop_init_29 = true;
     while(true) {
         if (metal::all(loop_bound_42 == uint2(0u))) { break; }
         loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_30) {
+        if (!loop_init_29) {
             uint _e15 = d_7;
             d_7 = _e15 + 1u;
         }
-        loop_init_30 = false;
+        loop_init_29 = false;
         uint _e7 = d_7;
         if (_e7 < 5u) {
         } else {
@@ -4697,10 +4699,10 @@ uint nyq_lattice_bn_rev(
 float nyq_lattice_bn_value_at(
     uint key_8,
     uint rev_3,
-    uint c_8
+    uint c_9
 ) {
-    uint _e6 = nyq_blue_shift(key_8, c_8);
-    float _e8 = nyq_fraction_to_f32_((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_8]) + _e6);
+    uint _e6 = nyq_blue_shift(key_8, c_9);
+    float _e8 = nyq_fraction_to_f32_((rev_3 * NYQ_LATTICE_BN_GENERATOR[c_9]) + _e6);
     return _e8;
 }
 
@@ -4725,15 +4727,15 @@ void nyq_lattice_bn_start(
     s_97.index = sample_index_23;
     s_97.dim = dim_45;
     uint2 loop_bound_43 = uint2(4294967295u);
-    bool loop_init_31 = true;
+    bool loop_init_30 = true;
     while(true) {
         if (metal::all(loop_bound_43 == uint2(0u))) { break; }
         loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (!loop_init_30) {
             uint _e28 = b_16;
             b_16 = _e28 + 1u;
         }
-        loop_init_31 = false;
+        loop_init_30 = false;
         uint _e9 = b_16;
         if (_e9 < 2u) {
         } else {
@@ -4762,11 +4764,11 @@ float nyq_lattice_bn_value(
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint b_23 = naga_div(dim_46, 4u);
-    uint c_15 = naga_mod(dim_46, 4u);
+    uint c_16 = naga_mod(dim_46, 4u);
     if (b_23 < 2u) {
         uint _e10 = s_98.key[b_23];
         uint _e13 = s_98.prepared[b_23];
-        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_15);
+        float _e14 = nyq_lattice_bn_value_at(_e10, _e13, c_16);
         return _e14;
     }
     metal::uint2 _e17 = s_98.seed;
@@ -4776,7 +4778,7 @@ float nyq_lattice_bn_value(
     uint _e23 = nyq_lattice_bn_key(_e22);
     uint _e25 = s_98.index;
     uint _e26 = nyq_lattice_bn_rev(_e22, _e23, _e25);
-    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_15);
+    float _e27 = nyq_lattice_bn_value_at(_e23, _e26, c_16);
     return _e27;
 }
 
@@ -4826,15 +4828,15 @@ NyqCameraSample nyq_lattice_bn_camera_sample(
     uint d_8 = 0u;
     nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u, nyq_blue_tiles, _buffer_sizes);
     uint2 loop_bound_44 = uint2(4294967295u);
-    bool loop_init_32 = true;
+    bool loop_init_31 = true;
     while(true) {
         if (metal::all(loop_bound_44 == uint2(0u))) { break; }
         loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_32) {
+        if (!loop_init_31) {
             uint _e15 = d_8;
             d_8 = _e15 + 1u;
         }
-        loop_init_32 = false;
+        loop_init_31 = false;
         uint _e7 = d_8;
         if (_e7 < 5u) {
         } else {
@@ -4856,7 +4858,7 @@ NyqCameraSample nyq_lattice_bn_camera_sample(
 metal::uint4 nyq_fill_request(
     uint i_17,
     constant NyqFillJob& nyq_job,
-    device type_29 const& nyq_requests,
+    device type_28 const& nyq_requests,
     constant _mslBufferSizes& _buffer_sizes
 ) {
     uint _e3 = nyq_job.implicit;
@@ -4876,15 +4878,15 @@ metal::uint4 nyq_fill_request(
 
 void nyq_fill_camera(
     uint out_3,
-    NyqCameraSample c_9,
+    NyqCameraSample c_10,
     device type_4& nyq_values,
     constant _mslBufferSizes& _buffer_sizes
 ) {
-    nyq_values[out_3] = as_type<uint>(c_9.p_film.x);
-    nyq_values[out_3 + 1u] = as_type<uint>(c_9.p_film.y);
-    nyq_values[out_3 + 2u] = as_type<uint>(c_9.time);
-    nyq_values[out_3 + 3u] = as_type<uint>(c_9.lens.x);
-    nyq_values[out_3 + 4u] = as_type<uint>(c_9.lens.y);
+    nyq_values[out_3] = as_type<uint>(c_10.p_film.x);
+    nyq_values[out_3 + 1u] = as_type<uint>(c_10.p_film.y);
+    nyq_values[out_3 + 2u] = as_type<uint>(c_10.time);
+    nyq_values[out_3 + 3u] = as_type<uint>(c_10.lens.x);
+    nyq_values[out_3 + 4u] = as_type<uint>(c_10.lens.y);
     return;
 }
 
@@ -4909,7 +4911,7 @@ kernel void nyq_fill(
 , device type_4 const& nyq_halton_bases [[buffer(4)]]
 , device type_4 const& nyq_blue_tiles [[buffer(5)]]
 , constant NyqFillJob& nyq_job [[buffer(1)]]
-, device type_29 const& nyq_requests [[buffer(2)]]
+, device type_28 const& nyq_requests [[buffer(2)]]
 , device type_4& nyq_values [[buffer(3)]]
 , constant _mslBufferSizes& _buffer_sizes [[buffer(6)]]
 ) {
@@ -5097,15 +5099,15 @@ kernel void nyq_fill(
             metal::uint2 _e203 = nyq_job.seed;
             NyqSobol _e204 = nyq_sobol(_e195, _e198 != 0u, _e203);
             uint2 loop_bound_45 = uint2(4294967295u);
-            bool loop_init_33 = true;
+            bool loop_init_32 = true;
             while(true) {
                 if (metal::all(loop_bound_45 == uint2(0u))) { break; }
                 loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                if (!loop_init_33) {
+                if (!loop_init_32) {
                     uint _e232 = k;
                     k = _e232 + 1u;
                 }
-                loop_init_33 = false;
+                loop_init_32 = false;
                 uint _e207 = k;
                 if (_e207 < 4u) {
                 } else {
@@ -5130,15 +5132,15 @@ kernel void nyq_fill(
             NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             metal::float4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w, nyq_sobol_matrices, _buffer_sizes);
             uint2 loop_bound_46 = uint2(4294967295u);
-            bool loop_init_34 = true;
+            bool loop_init_33 = true;
             while(true) {
                 if (metal::all(loop_bound_46 == uint2(0u))) { break; }
                 loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                if (!loop_init_34) {
+                if (!loop_init_33) {
                     uint _e268 = k_1;
                     k_1 = _e268 + 1u;
                 }
-                loop_init_34 = false;
+                loop_init_33 = false;
                 uint _e246 = k_1;
                 if (_e246 < 4u) {
                 } else {
@@ -5161,15 +5163,15 @@ kernel void nyq_fill(
             metal::uint2 _e277 = nyq_job.seed;
             NyqPmj02_ _e278 = nyq_pmj02_(_e272 != 0u, _e277);
             uint2 loop_bound_47 = uint2(4294967295u);
-            bool loop_init_35 = true;
+            bool loop_init_34 = true;
             while(true) {
                 if (metal::all(loop_bound_47 == uint2(0u))) { break; }
                 loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_35) {
+                if (!loop_init_34) {
                     uint _e306 = k_2;
                     k_2 = _e306 + 1u;
                 }
-                loop_init_35 = false;
+                loop_init_34 = false;
                 uint _e281 = k_2;
                 if (_e281 < 4u) {
                 } else {
@@ -5195,15 +5197,15 @@ kernel void nyq_fill(
             NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = ((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u);
             uint2 loop_bound_48 = uint2(4294967295u);
-            bool loop_init_36 = true;
+            bool loop_init_35 = true;
             while(true) {
                 if (metal::all(loop_bound_48 == uint2(0u))) { break; }
                 loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_36) {
+                if (!loop_init_35) {
                     uint _e351 = k_3;
                     k_3 = _e351 + 1u;
                 }
-                loop_init_36 = false;
+                loop_init_35 = false;
                 uint _e329 = k_3;
                 if (_e329 < 8u) {
                 } else {
@@ -5229,15 +5231,15 @@ kernel void nyq_fill(
             metal::uint2 _e372 = nyq_job.seed;
             NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, _e367 != 0u, _e372);
             uint2 loop_bound_49 = uint2(4294967295u);
-            bool loop_init_37 = true;
+            bool loop_init_36 = true;
             while(true) {
                 if (metal::all(loop_bound_49 == uint2(0u))) { break; }
                 loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-                if (!loop_init_37) {
+                if (!loop_init_36) {
                     uint _e390 = k_4;
                     k_4 = _e390 + 1u;
                 }
-                loop_init_37 = false;
+                loop_init_36 = false;
                 uint _e376 = k_4;
                 if (_e376 < 4u) {
                 } else {
@@ -5262,15 +5264,15 @@ kernel void nyq_fill(
         }
         default: {
             uint2 loop_bound_50 = uint2(4294967295u);
-            bool loop_init_38 = true;
+            bool loop_init_37 = true;
             while(true) {
                 if (metal::all(loop_bound_50 == uint2(0u))) { break; }
                 loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-                if (!loop_init_38) {
+                if (!loop_init_37) {
                     uint _e433 = k_5;
                     k_5 = _e433 + 1u;
                 }
-                loop_init_38 = false;
+                loop_init_37 = false;
                 uint _e424 = k_5;
                 if (_e424 < 8u) {
                 } else {

@@ -156,11 +156,7 @@ const SAMPLERS: [(&str, &str, &str); 11] = [
         "halton_sampler",
         "Halton bases: 96 bytes per dimension",
     ),
-    (
-        "pmj02",
-        "pmj02",
-        "LCG windows: 3 × 8 bytes per draw, up to 17 draws per value",
-    ),
+    ("pmj02", "pmj02", "none"),
     ("random", "random", "none"),
     ("stratified", "stratified", "none"),
     ("fibonacci, korobov, r2", "lattice", "none"),
@@ -169,11 +165,7 @@ const SAMPLERS: [(&str, &str, &str); 11] = [
         "owen_sobol_bn",
         "blue tile: 4 bytes per 4-D block; Sobol matrices (dimensions 0–3): 4 bytes per set index bit per value",
     ),
-    (
-        "pmj02-bn",
-        "pmj02_bn",
-        "blue tile: 4 bytes per 4-D block; LCG windows: 3 × 8 bytes per draw, up to 17 draws per value",
-    ),
+    ("pmj02-bn", "pmj02_bn", "blue tile: 4 bytes per 4-D block"),
     (
         "lattice-bn",
         "lattice_bn",
