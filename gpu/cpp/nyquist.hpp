@@ -3052,12 +3052,12 @@ NYQ_HD inline std::uint32_t rxs_m_xs(std::uint32_t s) {
 /// `hash::lcg_draw` (which jumps through a table of windows; the draws are the same).
 NYQ_HD inline std::uint32_t lcg_draw(std::uint32_t seed, std::uint32_t m) {
     std::uint32_t s = 2891336453u + seed;
+    const std::uint32_t n = m + 1;
     std::uint32_t a = 747796405u;
     std::uint32_t c = 2891336453u;
-    for (std::uint32_t n = m + 1; n != 0; n >>= 1) {
-        if (n & 1u) {
-            s = a * s + c;
-        }
+    // A fixed count (n < 2^18), so a compiler can unroll the loop and fold (a, c) to constants.
+    for (std::uint32_t k = 0; k < 18; ++k) {
+        s = ((n >> k) & 1u) ? a * s + c : s;
         c = (a + 1u) * c;
         a *= a;
     }

@@ -521,7 +521,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         uvec2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = uvec2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_9 = (2u * m_5);
+    uint n_8 = (2u * m_5);
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
@@ -530,7 +530,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_1 = false;
         uint _e51 = c_1;
-        if ((_e51 < n_9)) {
+        if ((_e51 < n_8)) {
         } else {
             break;
         }
@@ -551,7 +551,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_2 = false;
                 uint _e81 = i;
-                if ((_e81 < n_9)) {
+                if ((_e81 < n_8)) {
                 } else {
                     break;
                 }
@@ -578,7 +578,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_3 = false;
         uint _e115 = i_1;
-        if ((_e115 < n_9)) {
+        if ((_e115 < n_8)) {
         } else {
             break;
         }
@@ -597,7 +597,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_4 = false;
         uint _e130 = col;
-        if ((_e130 < n_9)) {
+        if ((_e130 < n_8)) {
         } else {
             break;
         }
@@ -614,7 +614,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_5 = false;
                 uint _e136 = r_1;
-                if ((_e136 < n_9)) {
+                if ((_e136 < n_8)) {
                 } else {
                     break;
                 }
@@ -646,7 +646,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_6 = false;
                 uint _e164 = r_2;
-                if ((_e164 < n_9)) {
+                if ((_e164 < n_8)) {
                 } else {
                     break;
                 }
@@ -681,7 +681,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
         }
         loop_init_7 = false;
         uint _e199 = i_2;
-        if ((_e199 < n_9)) {
+        if ((_e199 < n_8)) {
         } else {
             break;
         }
@@ -695,7 +695,7 @@ NyqSobolSampler nyq_sobol_sampler(uvec2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_8 = false;
                 uint _e203 = r_3;
-                if ((_e203 < n_9)) {
+                if ((_e203 < n_8)) {
                 } else {
                     break;
                 }
@@ -771,9 +771,9 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in) {
         }
         {
             uint _e8 = t;
-            uint k_18 = min(uint(findLSB(_e8)), 32u);
+            uint k_19 = min(uint(findLSB(_e8)), 32u);
             four = uvec4(0u);
-            switch((k_18 >> 2u)) {
+            switch((k_19 >> 2u)) {
                 case 0u: {
                     uvec4 _e15 = s_16.inverse0_;
                     four = _e15;
@@ -816,7 +816,7 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in) {
                 }
             }
             uint _e30 = low;
-            uint _e34 = four[(k_18 & 3u)];
+            uint _e34 = four[(k_19 & 3u)];
             low = (_e30 ^ _e34);
             uint _e36 = t;
             uint _e37 = t;
@@ -1585,14 +1585,14 @@ NyqLatticeSampler nyq_lattice_sampler(uint lattice, uint n_2, uint g_5, uvec2 se
 float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19) {
     uvec2 base = uvec2(0u);
     uint g_6 = 0u;
-    uint n_10 = s_49.n;
+    uint n_9 = s_49.n;
     uint _e5 = s_49.index;
-    uint k_19 = (_e5 % n_10);
+    uint k_20 = (_e5 % n_9);
     uint component = (dim_19 % 2u);
     uint _e11 = s_49.lattice;
     switch(_e11) {
         case 2u: {
-            uvec2 _e15 = nyq_u64_(k_19);
+            uvec2 _e15 = nyq_u64_(k_20);
             uvec2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA[component]);
             uvec2 _e19 = nyq_add64_(uvec2(0u, 2147483648u), _e18);
             base = _e19;
@@ -1602,12 +1602,12 @@ float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19) {
             uint _e21 = s_49.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = (1u % n_10);
+                g_6 = (1u % n_9);
             }
             uint _e27 = g_6;
-            uvec2 _e28 = nyq_mul_wide(k_19, _e27);
-            uint _e29 = nyq_mod64_(_e28, n_10);
-            uvec2 _e30 = nyq_fixed_ratio(_e29, n_10);
+            uvec2 _e28 = nyq_mul_wide(k_20, _e27);
+            uint _e29 = nyq_mod64_(_e28, n_9);
+            uvec2 _e30 = nyq_fixed_ratio(_e29, n_9);
             base = _e30;
             break;
         }
@@ -1956,31 +1956,31 @@ uvec2 nyq_packed_table(uint n_5, uvec2 r_in) {
 }
 
 NyqPermutation nyq_permutation(uint n_in, uint seed_15) {
-    uint n_11 = max(n_in, 1u);
-    if ((n_11 <= 16u)) {
+    uint n_10 = max(n_in, 1u);
+    if ((n_10 <= 16u)) {
         uvec2 _e10 = nyq_mix64_(uvec2((seed_15 ^ 2242054355u), 608135816u));
-        uvec2 _e11 = nyq_packed_table(n_11, _e10);
-        return NyqPermutation(n_11, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        uvec2 _e11 = nyq_packed_table(n_10, _e10);
+        return NyqPermutation(n_10, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
     }
-    uint mask_3 = (4294967295u >> uint(31 - findMSB((n_11 - 1u))));
+    uint mask_3 = (4294967295u >> uint(31 - findMSB((n_10 - 1u))));
     uint bits_5 = (32u - uint(31 - findMSB(mask_3)));
     uint _e29 = nyq_mix32_((seed_15 ^ 1540483477u));
     uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    uvec2 _e36 = nyq_mul_wide(_e35, n_11);
+    uvec2 _e36 = nyq_mul_wide(_e35, n_10);
     uint offset_3 = _e36.y;
-    return NyqPermutation(n_11, mask_3, max(((bits_5 + 1u) / 2u), 1u), max((bits_5 / 3u), 1u), _e29, _e32, offset_3, uvec2(0u, 0u));
+    return NyqPermutation(n_10, mask_3, max(((bits_5 + 1u) / 2u), 1u), max((bits_5 / 3u), 1u), _e29, _e32, offset_3, uvec2(0u, 0u));
 }
 
 uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
     uint x_15 = 0u;
     bool local_10 = false;
-    uint n_12 = p.n;
-    if ((n_12 <= 16u)) {
-        uint _e11 = nyq_nibble(p.table, (4u * ((i_8 % n_12) & 15u)));
+    uint n_11 = p.n;
+    if ((n_11 <= 16u)) {
+        uint _e11 = nyq_nibble(p.table, (4u * ((i_8 % n_11) & 15u)));
         return _e11;
     }
-    x_15 = (i_8 % n_12);
+    x_15 = (i_8 % n_11);
     while(true) {
         uint _e14 = x_15;
         x_15 = (_e14 ^ (p.key & p.mask));
@@ -2009,7 +2009,7 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
         uint _e73 = x_15;
         x_15 = (_e72 ^ (_e73 >> p.third));
         uint _e77 = x_15;
-        if ((_e77 < n_12)) {
+        if ((_e77 < n_11)) {
             break;
         }
     }
@@ -2017,12 +2017,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8) {
     uint q_3 = (_e79 + p.offset);
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = (q_3 >= n_12);
+        local_10 = (q_3 >= n_11);
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return (_e90 ? (q_3 - n_12) : q_3);
+    return (_e90 ? (q_3 - n_11) : q_3);
 }
 
 NyqStratifiedSampler nyq_stratified_sampler(uint xs, uint ys, uint jitter, uvec2 seed_16) {
@@ -2179,38 +2179,41 @@ uint nyq_rxs_m_xs(uint state_1) {
 
 uint nyq_lcg_draw(uint seed_17, uint m_1) {
     uint s_66 = 0u;
-    uint n_6 = 0u;
     uint a_8 = 747796405u;
     uint c_3 = 2891336453u;
+    uint k_10 = 0u;
     s_66 = (2891336453u + seed_17);
-    n_6 = (m_1 + 1u);
+    uint n_12 = (m_1 + 1u);
+    bool loop_init_17 = true;
     while(true) {
-        uint _e12 = n_6;
-        if ((_e12 != 0u)) {
+        if (!loop_init_17) {
+            uint _e38 = k_10;
+            k_10 = (_e38 + 1u);
+        }
+        loop_init_17 = false;
+        uint _e13 = k_10;
+        if ((_e13 < 18u)) {
         } else {
             break;
         }
         {
-            uint _e15 = n_6;
-            if (((_e15 & 1u) != 0u)) {
-                uint _e20 = a_8;
-                uint _e21 = s_66;
-                uint _e23 = c_3;
-                s_66 = ((_e20 * _e21) + _e23);
-            }
-            uint _e25 = a_8;
-            uint _e28 = c_3;
-            c_3 = ((_e25 + 1u) * _e28);
-            uint _e30 = a_8;
-            uint _e31 = a_8;
-            a_8 = (_e30 * _e31);
-            uint _e33 = n_6;
-            n_6 = (_e33 >> 1u);
+            uint _e16 = s_66;
+            uint _e17 = a_8;
+            uint _e18 = s_66;
+            uint _e20 = c_3;
+            uint _e22 = k_10;
+            s_66 = ((((n_12 >> _e22) & 1u) != 0u) ? ((_e17 * _e18) + _e20) : _e16);
+            uint _e29 = a_8;
+            uint _e32 = c_3;
+            c_3 = ((_e29 + 1u) * _e32);
+            uint _e34 = a_8;
+            uint _e35 = a_8;
+            a_8 = (_e34 * _e35);
         }
     }
-    uint _e36 = s_66;
-    uint _e37 = nyq_rxs_m_xs(_e36);
-    return _e37;
+    uint _e40 = s_66;
+    uint _e41 = nyq_rxs_m_xs(_e40);
+    return _e41;
 }
 
 uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27) {
@@ -2290,19 +2293,19 @@ uvec3 nyq_pmj02_keys(inout NyqPmj02Sampler s_69, uvec2 request) {
     return uvec3(_e9.x, _e9.y, _e14.x);
 }
 
-vec2 nyq_pmj02_keyed_point(uvec3 k_10, uint i_9) {
+vec2 nyq_pmj02_keyed_point(uvec3 k_11, uint i_9) {
     uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 0u);
     uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 1u);
-    uint _e10 = nyq_lk_hash(bitfieldReverse(_e4), k_10.y);
+    uint _e10 = nyq_lk_hash(bitfieldReverse(_e4), k_11.y);
     float _e11 = nyq_rev_to_f32_(_e10);
-    uint _e14 = nyq_lk_hash(bitfieldReverse(_e7), k_10.z);
+    uint _e14 = nyq_lk_hash(bitfieldReverse(_e7), k_11.z);
     float _e15 = nyq_rev_to_f32_(_e14);
     return vec2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_70, uvec3 k_11) {
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_70, uvec3 k_12) {
     uint _e3 = s_70.index_rev;
-    uint _e5 = nyq_lk_hash(_e3, k_11.x);
+    uint _e5 = nyq_lk_hash(_e3, k_12.x);
     return (_e5 >> 16u);
 }
 
@@ -2422,13 +2425,13 @@ bool nyq_lt128_(uvec4 a_12, uvec4 b_10) {
     return (a_12.x < b_10.x);
 }
 
-uvec4 nyq_mul128_u32_(uvec4 x_19, uint k_12) {
-    uvec2 _e3 = nyq_mul_wide(x_19.x, k_12);
-    uvec2 _e5 = nyq_mul_wide(x_19.y, k_12);
+uvec4 nyq_mul128_u32_(uvec4 x_19, uint k_13) {
+    uvec2 _e3 = nyq_mul_wide(x_19.x, k_13);
+    uvec2 _e5 = nyq_mul_wide(x_19.y, k_13);
     uvec2 _e9 = nyq_add64_(_e5, uvec2(_e3.y, 0u));
-    uvec2 _e11 = nyq_mul_wide(x_19.z, k_12);
+    uvec2 _e11 = nyq_mul_wide(x_19.z, k_13);
     uvec2 _e15 = nyq_add64_(_e11, uvec2(_e9.y, 0u));
-    return uvec4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_12) + _e15.y));
+    return uvec4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_13) + _e15.y));
 }
 
 uvec4 nyq_mul64_wide(uvec2 a_13, uvec2 b_11) {
@@ -2457,11 +2460,11 @@ uint nyq_clz128_(uvec4 x_20) {
 
 uvec4 nyq_shl128_(uvec4 x_21, uint s_76) {
     uvec4 v_5 = uvec4(0u);
-    uint k_13 = 0u;
+    uint k_14 = 0u;
     v_5 = x_21;
-    k_13 = s_76;
+    k_14 = s_76;
     while(true) {
-        uint _e4 = k_13;
+        uint _e4 = k_14;
         if ((_e4 >= 32u)) {
         } else {
             break;
@@ -2471,27 +2474,27 @@ uvec4 nyq_shl128_(uvec4 x_21, uint s_76) {
             uint _e11 = v_5.y;
             uint _e13 = v_5.z;
             v_5 = uvec4(0u, _e9, _e11, _e13);
-            uint _e15 = k_13;
-            k_13 = (_e15 - 32u);
+            uint _e15 = k_14;
+            k_14 = (_e15 - 32u);
         }
     }
-    uint _e18 = k_13;
+    uint _e18 = k_14;
     if ((_e18 == 0u)) {
         uvec4 _e21 = v_5;
         return _e21;
     }
-    uint _e23 = k_13;
+    uint _e23 = k_14;
     uint r_14 = (32u - _e23);
     uint _e26 = v_5.x;
-    uint _e27 = k_13;
+    uint _e27 = k_14;
     uint _e30 = v_5.y;
-    uint _e31 = k_13;
+    uint _e31 = k_14;
     uint _e34 = v_5.x;
     uint _e38 = v_5.z;
-    uint _e39 = k_13;
+    uint _e39 = k_14;
     uint _e42 = v_5.y;
     uint _e46 = v_5.w;
-    uint _e47 = k_13;
+    uint _e47 = k_14;
     uint _e50 = v_5.z;
     return uvec4((_e26 << _e27), ((_e30 << _e31) | (_e34 >> r_14)), ((_e38 << _e39) | (_e42 >> r_14)), ((_e46 << _e47) | (_e50 >> r_14)));
 }
@@ -2654,13 +2657,13 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
         uvec2 d_27 = den_1.xy;
         uvec4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
-        bool loop_init_17 = true;
+        bool loop_init_18 = true;
         while(true) {
-            if (!loop_init_17) {
+            if (!loop_init_18) {
                 uint _e109 = i_10;
                 i_10 = (_e109 + 1u);
             }
-            loop_init_17 = false;
+            loop_init_18 = false;
             uint _e51 = i_10;
             if ((_e51 < steps)) {
             } else {
@@ -2711,13 +2714,13 @@ NyqRounding nyq_divide(uvec4 num_1, uvec4 den_1, bool twice_1) {
     } else {
         uvec4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
-        bool loop_init_18 = true;
+        bool loop_init_19 = true;
         while(true) {
-            if (!loop_init_18) {
+            if (!loop_init_19) {
                 uint _e186 = i_11;
                 i_11 = (_e186 + 1u);
             }
-            loop_init_18 = false;
+            loop_init_19 = false;
             uint _e128 = i_11;
             if ((_e128 < steps)) {
             } else {
@@ -2771,13 +2774,13 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14) {
     uint low_3 = _group_0_binding_4_cs[((t_3 + 8u) + (2u * c_13))];
     uint high_1 = _group_0_binding_4_cs[((t_3 + 9u) + (2u * c_13))];
     x_22 = a_14;
-    bool loop_init_19 = true;
+    bool loop_init_20 = true;
     while(true) {
-        if (!loop_init_19) {
+        if (!loop_init_20) {
             uint _e64 = i_12;
             i_12 = (_e64 + 1u);
         }
-        loop_init_19 = false;
+        loop_init_20 = false;
         uint _e50 = i_12;
         if ((_e50 < places)) {
         } else {
@@ -2833,13 +2836,13 @@ NyqFraction nyq_phi_fraction(uint t_4, uvec2 a_15) {
             c_4 = _e39.z;
             rev_1 = 0u;
             i_13 = 0u;
-            bool loop_init_20 = true;
+            bool loop_init_21 = true;
             while(true) {
-                if (!loop_init_20) {
+                if (!loop_init_21) {
                     uint _e58 = i_13;
                     i_13 = (_e58 + 1u);
                 }
-                loop_init_20 = false;
+                loop_init_21 = false;
                 uint _e47 = i_13;
                 if ((_e47 < run)) {
                 } else {
@@ -2918,13 +2921,13 @@ NyqFraction nyq_permuted_fraction(uint t_5, uvec2 a_16, uvec2 seed_21) {
             part = 0u;
             scale = 1u;
             i_14 = 0u;
-            bool loop_init_21 = true;
+            bool loop_init_22 = true;
             while(true) {
-                if (!loop_init_21) {
+                if (!loop_init_22) {
                     uint _e89 = i_14;
                     i_14 = (_e89 + 1u);
                 }
-                loop_init_21 = false;
+                loop_init_22 = false;
                 uint _e68 = i_14;
                 if ((_e68 < run_1)) {
                 } else {
@@ -3189,14 +3192,14 @@ float nyq_halton_sample(NyqHalton h_1, uvec2 index_15, uint dim_37) {
     return _e7;
 }
 
-uint nyq_mod_inverse(uint a_23, uint n_7) {
+uint nyq_mod_inverse(uint a_23, uint n_6) {
     int r0_ = 0;
     int r1_ = 0;
     int t0_ = 0;
     int t1_ = 1;
     int m_4 = 0;
-    r0_ = int(n_7);
-    r1_ = int((a_23 % n_7));
+    r0_ = int(n_6);
+    r1_ = int((a_23 % n_6));
     while(true) {
         int _e11 = r1_;
         if ((_e11 != 0)) {
@@ -3222,11 +3225,11 @@ uint nyq_mod_inverse(uint a_23, uint n_7) {
         }
     }
     int _e27 = t0_;
-    m_4 = (_e27 % int(n_7));
+    m_4 = (_e27 % int(n_6));
     int _e31 = m_4;
     if ((_e31 < 0)) {
         int _e34 = m_4;
-        m_4 = (_e34 + int(n_7));
+        m_4 = (_e34 + int(n_6));
     }
     int _e37 = m_4;
     return uint(_e37);
@@ -3264,21 +3267,21 @@ NyqHaltonSampler nyq_halton_sampler(uvec2 resolution_2, uint spp, uint scramble_
     return NyqHaltonSampler(spp, scramble_3, seed_28, uvec2(_e6.y, _e9.y), scales, (_e6.x * _e9.x), basis, uvec2(0u, 0u), 0u);
 }
 
-uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_8) {
+uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7) {
     uint inverse_1 = 0u;
     uint index_16 = 0u;
     uint done = 0u;
-    uint k_14 = 0u;
+    uint k_15 = 0u;
     inverse_1 = inverse_in;
-    bool loop_init_22 = true;
+    bool loop_init_23 = true;
     while(true) {
-        if (!loop_init_22) {
+        if (!loop_init_23) {
             uint _e32 = done;
             done = (_e32 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e8 = done;
-        if ((_e8 < n_8)) {
+        if ((_e8 < n_7)) {
         } else {
             break;
         }
@@ -3286,16 +3289,16 @@ uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_8) {
             uint _e10 = inverse_1;
             if ((_e10 == 0u)) {
                 uint _e13 = done;
-                k_14 = _e13;
-                bool loop_init_23 = true;
+                k_15 = _e13;
+                bool loop_init_24 = true;
                 while(true) {
-                    if (!loop_init_23) {
-                        uint _e20 = k_14;
-                        k_14 = (_e20 + 1u);
+                    if (!loop_init_24) {
+                        uint _e20 = k_15;
+                        k_15 = (_e20 + 1u);
                     }
-                    loop_init_23 = false;
-                    uint _e15 = k_14;
-                    if ((_e15 < n_8)) {
+                    loop_init_24 = false;
+                    uint _e15 = k_15;
+                    if ((_e15 < n_7)) {
                     } else {
                         break;
                     }
@@ -3378,22 +3381,22 @@ float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_80) {
 
 vec2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_81, uint dim_40) {
     vec2 v_6 = vec2(0.0, 0.0);
-    uint k_15 = 0u;
-    bool loop_init_24 = true;
+    uint k_16 = 0u;
+    bool loop_init_25 = true;
     while(true) {
-        if (!loop_init_24) {
-            uint _e17 = k_15;
-            k_15 = (_e17 + 1u);
+        if (!loop_init_25) {
+            uint _e17 = k_16;
+            k_16 = (_e17 + 1u);
         }
-        loop_init_24 = false;
-        uint _e8 = k_15;
+        loop_init_25 = false;
+        uint _e8 = k_16;
         if ((_e8 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e11 = k_15;
-            uint _e13 = k_15;
+            uint _e11 = k_16;
+            uint _e13 = k_16;
             float _e15 = nyq_halton_sampler_value(s_81, (dim_40 + _e13));
             v_6[_e11] = _e15;
         }
@@ -3421,13 +3424,13 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_84, uv
     float lens_y = 0.0;
     uint d_5 = 0u;
     nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
-    bool loop_init_25 = true;
+    bool loop_init_26 = true;
     while(true) {
-        if (!loop_init_25) {
+        if (!loop_init_26) {
             uint _e25 = d_5;
             d_5 = (_e25 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e14 = d_5;
         if ((_e14 < 5u)) {
         } else {
@@ -3530,13 +3533,13 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uvec2 pixel_24, uint sam
     s_85.pixel = pixel_24;
     s_85.index = sample_index_19;
     s_85.dim = dim_41;
-    bool loop_init_26 = true;
+    bool loop_init_27 = true;
     while(true) {
-        if (!loop_init_26) {
+        if (!loop_init_27) {
             uint _e28 = b_14;
             b_14 = (_e28 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e9 = b_14;
         if ((_e9 < 2u)) {
         } else {
@@ -3605,13 +3608,13 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_90, uvec2
     float v_9[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_6 = 0u;
     nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u);
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e15 = d_6;
             d_6 = (_e15 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e7 = d_6;
         if ((_e7 < 5u)) {
         } else {
@@ -3638,20 +3641,20 @@ uint nyq_pmj02_bn_key(uint entry_2, uint i_15) {
     return ((epoch == 0u) ? _e6 : _e11);
 }
 
-uint nyq_pmj02_bn_points(uint k_16, uint i_16) {
-    uint _e6 = nyq_mix32_((k_16 ^ 1397249350u));
+uint nyq_pmj02_bn_points(uint k_17, uint i_16) {
+    uint _e6 = nyq_mix32_((k_17 ^ 1397249350u));
     uint _e7 = nyq_shuffle_rev((i_16 & 65535u), _e6);
     uint p0_ = (bitfieldReverse(_e7) & 65535u);
-    uint _e15 = nyq_mix32_((k_16 ^ 1397249351u));
+    uint _e15 = nyq_mix32_((k_17 ^ 1397249351u));
     uint _e16 = nyq_shuffle_rev((i_16 & 65535u), _e15);
     uint p1_ = (bitfieldReverse(_e16) & 65535u);
     return (p0_ | (p1_ << 16u));
 }
 
-float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_8) {
+float nyq_pmj02_bn_value_at(uint k_18, uint points, uint c_8) {
     uint point = ((points >> (16u * (c_8 / 2u))) & 65535u);
     uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point, (c_8 % 2u));
-    uint _e14 = nyq_blue_shift(k_17, c_8);
+    uint _e14 = nyq_blue_shift(k_18, c_8);
     float _e16 = nyq_fraction_to_f32_((_e13 ^ _e14));
     return _e16;
 }
@@ -3666,13 +3669,13 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uvec2 pixel_26, uint sample_i
     s_91.pixel = pixel_26;
     s_91.index = sample_index_21;
     s_91.dim = dim_43;
-    bool loop_init_28 = true;
+    bool loop_init_29 = true;
     while(true) {
-        if (!loop_init_28) {
+        if (!loop_init_29) {
             uint _e31 = b_15;
             b_15 = (_e31 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_29 = false;
         uint _e9 = b_15;
         if ((_e9 < 2u)) {
         } else {
@@ -3743,13 +3746,13 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_96, uvec2 pixe
     float v_10[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_7 = 0u;
     nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u);
-    bool loop_init_29 = true;
+    bool loop_init_30 = true;
     while(true) {
-        if (!loop_init_29) {
+        if (!loop_init_30) {
             uint _e15 = d_7;
             d_7 = (_e15 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e7 = d_7;
         if ((_e7 < 5u)) {
         } else {
@@ -3795,13 +3798,13 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uvec2 pixel_28, uint sample
     s_97.pixel = pixel_28;
     s_97.index = sample_index_23;
     s_97.dim = dim_45;
-    bool loop_init_30 = true;
+    bool loop_init_31 = true;
     while(true) {
-        if (!loop_init_30) {
+        if (!loop_init_31) {
             uint _e28 = b_16;
             b_16 = (_e28 + 1u);
         }
-        loop_init_30 = false;
+        loop_init_31 = false;
         uint _e9 = b_16;
         if ((_e9 < 2u)) {
         } else {
@@ -3870,13 +3873,13 @@ NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_102, uvec2 p
     float v_11[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
     uint d_8 = 0u;
     nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u);
-    bool loop_init_31 = true;
+    bool loop_init_32 = true;
     while(true) {
-        if (!loop_init_31) {
+        if (!loop_init_32) {
             uint _e15 = d_8;
             d_8 = (_e15 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e7 = d_8;
         if ((_e7 < 5u)) {
         } else {
@@ -4112,13 +4115,13 @@ void main() {
             uint _e198 = _group_0_binding_1_cs.scramble;
             uvec2 _e203 = _group_0_binding_1_cs.seed;
             NyqSobol _e204 = nyq_sobol(_e195, (_e198 != 0u), _e203);
-            bool loop_init_32 = true;
+            bool loop_init_33 = true;
             while(true) {
-                if (!loop_init_32) {
+                if (!loop_init_33) {
                     uint _e232 = k;
                     k = (_e232 + 1u);
                 }
-                loop_init_32 = false;
+                loop_init_33 = false;
                 uint _e207 = k;
                 if ((_e207 < 4u)) {
                 } else {
@@ -4142,13 +4145,13 @@ void main() {
             uvec2 _e239 = _group_0_binding_1_cs.seed;
             NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             vec4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w);
-            bool loop_init_33 = true;
+            bool loop_init_34 = true;
             while(true) {
-                if (!loop_init_33) {
+                if (!loop_init_34) {
                     uint _e268 = k_1;
                     k_1 = (_e268 + 1u);
                 }
-                loop_init_33 = false;
+                loop_init_34 = false;
                 uint _e246 = k_1;
                 if ((_e246 < 4u)) {
                 } else {
@@ -4170,13 +4173,13 @@ void main() {
             uint _e272 = _group_0_binding_1_cs.scramble;
             uvec2 _e277 = _group_0_binding_1_cs.seed;
             NyqPmj02_ _e278 = nyq_pmj02_((_e272 != 0u), _e277);
-            bool loop_init_34 = true;
+            bool loop_init_35 = true;
             while(true) {
-                if (!loop_init_34) {
+                if (!loop_init_35) {
                     uint _e306 = k_2;
                     k_2 = (_e306 + 1u);
                 }
-                loop_init_34 = false;
+                loop_init_35 = false;
                 uint _e281 = k_2;
                 if ((_e281 < 4u)) {
                 } else {
@@ -4201,13 +4204,13 @@ void main() {
             uvec2 _e316 = _group_0_binding_1_cs.seed;
             NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
-            bool loop_init_35 = true;
+            bool loop_init_36 = true;
             while(true) {
-                if (!loop_init_35) {
+                if (!loop_init_36) {
                     uint _e351 = k_3;
                     k_3 = (_e351 + 1u);
                 }
-                loop_init_35 = false;
+                loop_init_36 = false;
                 uint _e329 = k_3;
                 if ((_e329 < 8u)) {
                 } else {
@@ -4232,13 +4235,13 @@ void main() {
             uint _e367 = _group_0_binding_1_cs.scramble;
             uvec2 _e372 = _group_0_binding_1_cs.seed;
             NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, (_e367 != 0u), _e372);
-            bool loop_init_36 = true;
+            bool loop_init_37 = true;
             while(true) {
-                if (!loop_init_36) {
+                if (!loop_init_37) {
                     uint _e390 = k_4;
                     k_4 = (_e390 + 1u);
                 }
-                loop_init_36 = false;
+                loop_init_37 = false;
                 uint _e376 = k_4;
                 if ((_e376 < 4u)) {
                 } else {
@@ -4262,13 +4265,13 @@ void main() {
             return;
         }
         default: {
-            bool loop_init_37 = true;
+            bool loop_init_38 = true;
             while(true) {
-                if (!loop_init_37) {
+                if (!loop_init_38) {
                     uint _e433 = k_5;
                     k_5 = (_e433 + 1u);
                 }
-                loop_init_37 = false;
+                loop_init_38 = false;
                 uint _e424 = k_5;
                 if ((_e424 < 8u)) {
                 } else {

@@ -643,7 +643,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         const uint2 _e42 = nyq_hash2_(_e39, _e41);
         shift_1 = uint2((_e36.x & mask), (_e42.x & mask));
     }
-    uint n_9 = (2u * m_5);
+    uint n_8 = (2u * m_5);
     uint2 loop_bound_2 = uint2(4294967295u, 4294967295u);
     bool loop_init_1 = true;
     while(true) {
@@ -655,7 +655,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_1 = false;
         uint _e51 = c_1;
-        if ((_e51 < n_9)) {
+        if ((_e51 < n_8)) {
         } else {
             break;
         }
@@ -679,7 +679,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_2 = false;
                 uint _e81 = i;
-                if ((_e81 < n_9)) {
+                if ((_e81 < n_8)) {
                 } else {
                     break;
                 }
@@ -709,7 +709,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_3 = false;
         uint _e115 = i_1;
-        if ((_e115 < n_9)) {
+        if ((_e115 < n_8)) {
         } else {
             break;
         }
@@ -731,7 +731,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_4 = false;
         uint _e130 = col;
-        if ((_e130 < n_9)) {
+        if ((_e130 < n_8)) {
         } else {
             break;
         }
@@ -751,7 +751,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_5 = false;
                 uint _e136 = r_1;
-                if ((_e136 < n_9)) {
+                if ((_e136 < n_8)) {
                 } else {
                     break;
                 }
@@ -786,7 +786,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_6 = false;
                 uint _e164 = r_2;
-                if ((_e164 < n_9)) {
+                if ((_e164 < n_8)) {
                 } else {
                     break;
                 }
@@ -824,7 +824,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
         }
         loop_init_7 = false;
         uint _e199 = i_2;
-        if ((_e199 < n_9)) {
+        if ((_e199 < n_8)) {
         } else {
             break;
         }
@@ -841,7 +841,7 @@ NyqSobolSampler nyq_sobol_sampler(uint2 resolution, uint spp_requested, uint scr
                 }
                 loop_init_8 = false;
                 uint _e203 = r_3;
-                if ((_e203 < n_9)) {
+                if ((_e203 < n_8)) {
                 } else {
                     break;
                 }
@@ -927,10 +927,10 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in)
         }
         {
             uint _e8 = t;
-            uint k_18 = min(32u, firstbitlow(_e8));
+            uint k_19 = min(32u, firstbitlow(_e8));
             four = ZeroValueuint4();
             bool should_continue = false;
-            switch((k_18 >> 2u)) {
+            switch((k_19 >> 2u)) {
                 case 0u: {
                     uint4 _e15 = s_16.inverse0_;
                     four = _e15;
@@ -973,7 +973,7 @@ uint nyq_sobol_sampler_invert(inout NyqSobolSampler s_16, uint t_in)
                 }
             }
             uint _e30 = low;
-            uint _e34 = four[min(uint((k_18 & 3u)), 3u)];
+            uint _e34 = four[min(uint((k_19 & 3u)), 3u)];
             low = (_e30 ^ _e34);
             uint _e36 = t;
             uint _e37 = t;
@@ -1915,14 +1915,14 @@ float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19)
     uint2 base = (uint2)0;
     uint g_6 = (uint)0;
 
-    uint n_10 = s_49.n;
+    uint n_9 = s_49.n;
     uint _e5 = s_49.index;
-    uint k_19 = naga_mod(_e5, n_10);
+    uint k_20 = naga_mod(_e5, n_9);
     uint component = naga_mod(dim_19, 2u);
     uint _e11 = s_49.lattice;
     switch(_e11) {
         case 2u: {
-            const uint2 _e15 = nyq_u64_(k_19);
+            const uint2 _e15 = nyq_u64_(k_20);
             const uint2 _e18 = nyq_mul64_(_e15, NYQ_R2_ALPHA[min(uint(component), 1u)]);
             const uint2 _e19 = nyq_add64_(uint2(0u, 2147483648u), _e18);
             base = _e19;
@@ -1932,12 +1932,12 @@ float nyq_lattice_value(inout NyqLatticeSampler s_49, uint dim_19)
             uint _e21 = s_49.g;
             g_6 = _e21;
             if ((component == 0u)) {
-                g_6 = naga_mod(1u, n_10);
+                g_6 = naga_mod(1u, n_9);
             }
             uint _e27 = g_6;
-            const uint2 _e28 = nyq_mul_wide(k_19, _e27);
-            const uint _e29 = nyq_mod64_(_e28, n_10);
-            const uint2 _e30 = nyq_fixed_ratio(_e29, n_10);
+            const uint2 _e28 = nyq_mul_wide(k_20, _e27);
+            const uint _e29 = nyq_mod64_(_e28, n_9);
+            const uint2 _e30 = nyq_fixed_ratio(_e29, n_9);
             base = _e30;
             break;
         }
@@ -2350,21 +2350,21 @@ NyqPermutation ConstructNyqPermutation(uint arg0, uint arg1, uint arg2, uint arg
 
 NyqPermutation nyq_permutation(uint n_in, uint seed_15)
 {
-    uint n_11 = max(n_in, 1u);
-    if ((n_11 <= 16u)) {
+    uint n_10 = max(n_in, 1u);
+    if ((n_10 <= 16u)) {
         const uint2 _e10 = nyq_mix64_(uint2((seed_15 ^ 2242054355u), 608135816u));
-        const uint2 _e11 = nyq_packed_table(n_11, _e10);
-        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_11, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
+        const uint2 _e11 = nyq_packed_table(n_10, _e10);
+        const NyqPermutation nyqpermutation = ConstructNyqPermutation(n_10, 0u, 0u, 0u, 0u, 0u, 0u, _e11);
         return nyqpermutation;
     }
-    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_11 - 1u))));
+    uint mask_3 = (4294967295u >> (31u - firstbithigh((n_10 - 1u))));
     uint bits_5 = (32u - (31u - firstbithigh(mask_3)));
     const uint _e29 = nyq_mix32_((seed_15 ^ 1540483477u));
     const uint _e32 = nyq_mix32_((_e29 + 1759714724u));
     const uint _e35 = nyq_mix32_((_e32 ^ 625341585u));
-    const uint2 _e36 = nyq_mul_wide(_e35, n_11);
+    const uint2 _e36 = nyq_mul_wide(_e35, n_10);
     uint offset_3 = _e36.y;
-    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_11, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, uint2(0u, 0u));
+    const NyqPermutation nyqpermutation_1 = ConstructNyqPermutation(n_10, mask_3, max(naga_div((bits_5 + 1u), 2u), 1u), max(naga_div(bits_5, 3u), 1u), _e29, _e32, offset_3, uint2(0u, 0u));
     return nyqpermutation_1;
 }
 
@@ -2373,12 +2373,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
     uint x_15 = (uint)0;
     bool local_10 = (bool)0;
 
-    uint n_12 = p.n;
-    if ((n_12 <= 16u)) {
-        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_12) & 15u)));
+    uint n_11 = p.n;
+    if ((n_11 <= 16u)) {
+        const uint _e11 = nyq_nibble(p.table, (4u * (naga_mod(i_8, n_11) & 15u)));
         return _e11;
     }
-    x_15 = naga_mod(i_8, n_12);
+    x_15 = naga_mod(i_8, n_11);
     uint2 loop_bound_21 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_21 == uint2(0u, 0u))) { break; }
@@ -2410,7 +2410,7 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
         uint _e73 = x_15;
         x_15 = (_e72 ^ (_e73 >> p.third));
         uint _e77 = x_15;
-        if ((_e77 < n_12)) {
+        if ((_e77 < n_11)) {
             break;
         }
     }
@@ -2418,12 +2418,12 @@ uint nyq_permutation_apply(NyqPermutation p, uint i_8)
     uint q_3 = (_e79 + p.offset);
     uint _e83 = x_15;
     if (!((q_3 < _e83))) {
-        local_10 = (q_3 >= n_12);
+        local_10 = (q_3 >= n_11);
     } else {
         local_10 = true;
     }
     bool _e90 = local_10;
-    return (_e90 ? (q_3 - n_12) : q_3);
+    return (_e90 ? (q_3 - n_11) : q_3);
 }
 
 NyqStratifiedSampler ConstructNyqStratifiedSampler(uint arg0, uint arg1, uint arg2, float3 arg3, uint arg4, uint2 arg5, uint2 arg6, uint2 arg7, uint arg8, uint arg9) {
@@ -2612,42 +2612,45 @@ uint nyq_rxs_m_xs(uint state_1)
 uint nyq_lcg_draw(uint seed_17, uint m_1)
 {
     uint s_66 = (uint)0;
-    uint n_6 = (uint)0;
     uint a_8 = 747796405u;
     uint c_3 = 2891336453u;
+    uint k_10 = 0u;
 
     s_66 = (2891336453u + seed_17);
-    n_6 = (m_1 + 1u);
+    uint n_12 = (m_1 + 1u);
     uint2 loop_bound_22 = uint2(4294967295u, 4294967295u);
+    bool loop_init_17 = true;
     while(true) {
         if (all(loop_bound_22 == uint2(0u, 0u))) { break; }
         loop_bound_22 -= uint2(loop_bound_22.y == 0u, 1u);
-        uint _e12 = n_6;
-        if ((_e12 != 0u)) {
+        if (!loop_init_17) {
+            uint _e38 = k_10;
+            k_10 = (_e38 + 1u);
+        }
+        loop_init_17 = false;
+        uint _e13 = k_10;
+        if ((_e13 < 18u)) {
         } else {
             break;
         }
         {
-            uint _e15 = n_6;
-            if (((_e15 & 1u) != 0u)) {
-                uint _e20 = a_8;
-                uint _e21 = s_66;
-                uint _e23 = c_3;
-                s_66 = ((_e20 * _e21) + _e23);
-            }
-            uint _e25 = a_8;
-            uint _e28 = c_3;
-            c_3 = ((_e25 + 1u) * _e28);
-            uint _e30 = a_8;
-            uint _e31 = a_8;
-            a_8 = (_e30 * _e31);
-            uint _e33 = n_6;
-            n_6 = (_e33 >> 1u);
+            uint _e16 = s_66;
+            uint _e17 = a_8;
+            uint _e18 = s_66;
+            uint _e20 = c_3;
+            uint _e22 = k_10;
+            s_66 = ((((n_12 >> _e22) & 1u) != 0u) ? ((_e17 * _e18) + _e20) : _e16);
+            uint _e29 = a_8;
+            uint _e32 = c_3;
+            c_3 = ((_e29 + 1u) * _e32);
+            uint _e34 = a_8;
+            uint _e35 = a_8;
+            a_8 = (_e34 * _e35);
         }
     }
-    uint _e36 = s_66;
-    const uint _e37 = nyq_rxs_m_xs(_e36);
-    return _e37;
+    uint _e40 = s_66;
+    const uint _e41 = nyq_rxs_m_xs(_e40);
+    return _e41;
 }
 
 uint nyq_pmj02_point(uint seed_18, uint index_12, uint dim_27)
@@ -2756,21 +2759,21 @@ uint3 nyq_pmj02_keys(inout NyqPmj02Sampler s_69, uint2 request)
     return uint3(_e9.x, _e9.y, _e14.x);
 }
 
-float2 nyq_pmj02_keyed_point(uint3 k_10, uint i_9)
+float2 nyq_pmj02_keyed_point(uint3 k_11, uint i_9)
 {
     const uint _e4 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 0u);
     const uint _e7 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, i_9, 1u);
-    const uint _e10 = nyq_lk_hash(reversebits(_e4), k_10.y);
+    const uint _e10 = nyq_lk_hash(reversebits(_e4), k_11.y);
     const float _e11 = nyq_rev_to_f32_(_e10);
-    const uint _e14 = nyq_lk_hash(reversebits(_e7), k_10.z);
+    const uint _e14 = nyq_lk_hash(reversebits(_e7), k_11.z);
     const float _e15 = nyq_rev_to_f32_(_e14);
     return float2(_e11, _e15);
 }
 
-uint nyq_pmj02_row(inout NyqPmj02Sampler s_70, uint3 k_11)
+uint nyq_pmj02_row(inout NyqPmj02Sampler s_70, uint3 k_12)
 {
     uint _e3 = s_70.index_rev;
-    const uint _e5 = nyq_lk_hash(_e3, k_11.x);
+    const uint _e5 = nyq_lk_hash(_e3, k_12.x);
     return (_e5 >> 16u);
 }
 
@@ -2901,14 +2904,14 @@ bool nyq_lt128_(uint4 a_12, uint4 b_10)
     return (a_12.x < b_10.x);
 }
 
-uint4 nyq_mul128_u32_(uint4 x_19, uint k_12)
+uint4 nyq_mul128_u32_(uint4 x_19, uint k_13)
 {
-    const uint2 _e3 = nyq_mul_wide(x_19.x, k_12);
-    const uint2 _e5 = nyq_mul_wide(x_19.y, k_12);
+    const uint2 _e3 = nyq_mul_wide(x_19.x, k_13);
+    const uint2 _e5 = nyq_mul_wide(x_19.y, k_13);
     const uint2 _e9 = nyq_add64_(_e5, uint2(_e3.y, 0u));
-    const uint2 _e11 = nyq_mul_wide(x_19.z, k_12);
+    const uint2 _e11 = nyq_mul_wide(x_19.z, k_13);
     const uint2 _e15 = nyq_add64_(_e11, uint2(_e9.y, 0u));
-    return uint4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_12) + _e15.y));
+    return uint4(_e3.x, _e9.x, _e15.x, ((x_19.w * k_13) + _e15.y));
 }
 
 uint4 nyq_mul64_wide(uint2 a_13, uint2 b_11)
@@ -2940,15 +2943,15 @@ uint nyq_clz128_(uint4 x_20)
 uint4 nyq_shl128_(uint4 x_21, uint s_76)
 {
     uint4 v_5 = (uint4)0;
-    uint k_13 = (uint)0;
+    uint k_14 = (uint)0;
 
     v_5 = x_21;
-    k_13 = s_76;
+    k_14 = s_76;
     uint2 loop_bound_24 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_24 == uint2(0u, 0u))) { break; }
         loop_bound_24 -= uint2(loop_bound_24.y == 0u, 1u);
-        uint _e4 = k_13;
+        uint _e4 = k_14;
         if ((_e4 >= 32u)) {
         } else {
             break;
@@ -2958,27 +2961,27 @@ uint4 nyq_shl128_(uint4 x_21, uint s_76)
             uint _e11 = v_5.y;
             uint _e13 = v_5.z;
             v_5 = uint4(0u, _e9, _e11, _e13);
-            uint _e15 = k_13;
-            k_13 = (_e15 - 32u);
+            uint _e15 = k_14;
+            k_14 = (_e15 - 32u);
         }
     }
-    uint _e18 = k_13;
+    uint _e18 = k_14;
     if ((_e18 == 0u)) {
         uint4 _e21 = v_5;
         return _e21;
     }
-    uint _e23 = k_13;
+    uint _e23 = k_14;
     uint r_14 = (32u - _e23);
     uint _e26 = v_5.x;
-    uint _e27 = k_13;
+    uint _e27 = k_14;
     uint _e30 = v_5.y;
-    uint _e31 = k_13;
+    uint _e31 = k_14;
     uint _e34 = v_5.x;
     uint _e38 = v_5.z;
-    uint _e39 = k_13;
+    uint _e39 = k_14;
     uint _e42 = v_5.y;
     uint _e46 = v_5.w;
-    uint _e47 = k_13;
+    uint _e47 = k_14;
     uint _e50 = v_5.z;
     return uint4((_e26 << _e27), ((_e30 << _e31) | (_e34 >> r_14)), ((_e38 << _e39) | (_e42 >> r_14)), ((_e46 << _e47) | (_e50 >> r_14)));
 }
@@ -3157,15 +3160,15 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
         const uint4 _e46 = nyq_shl128_(num_1, s_106);
         r_11 = _e46.xy;
         uint2 loop_bound_25 = uint2(4294967295u, 4294967295u);
-        bool loop_init_17 = true;
+        bool loop_init_18 = true;
         while(true) {
             if (all(loop_bound_25 == uint2(0u, 0u))) { break; }
             loop_bound_25 -= uint2(loop_bound_25.y == 0u, 1u);
-            if (!loop_init_17) {
+            if (!loop_init_18) {
                 uint _e109 = i_10;
                 i_10 = (_e109 + 1u);
             }
-            loop_init_17 = false;
+            loop_init_18 = false;
             uint _e51 = i_10;
             if ((_e51 < steps)) {
             } else {
@@ -3217,15 +3220,15 @@ NyqRounding nyq_divide(uint4 num_1, uint4 den_1, bool twice_1)
         const uint4 _e124 = nyq_shl128_(num_1, s_106);
         r_12 = _e124;
         uint2 loop_bound_26 = uint2(4294967295u, 4294967295u);
-        bool loop_init_18 = true;
+        bool loop_init_19 = true;
         while(true) {
             if (all(loop_bound_26 == uint2(0u, 0u))) { break; }
             loop_bound_26 -= uint2(loop_bound_26.y == 0u, 1u);
-            if (!loop_init_18) {
+            if (!loop_init_19) {
                 uint _e186 = i_11;
                 i_11 = (_e186 + 1u);
             }
-            loop_init_18 = false;
+            loop_init_19 = false;
             uint _e128 = i_11;
             if ((_e128 < steps)) {
             } else {
@@ -3284,15 +3287,15 @@ NyqRounding nyq_phi_short(uint t_3, uint a_14)
     uint high_1 = asuint(nyq_halton_bases.Load(((t_3 + 9u) + (2u * c_13))*4));
     x_22 = a_14;
     uint2 loop_bound_27 = uint2(4294967295u, 4294967295u);
-    bool loop_init_19 = true;
+    bool loop_init_20 = true;
     while(true) {
         if (all(loop_bound_27 == uint2(0u, 0u))) { break; }
         loop_bound_27 -= uint2(loop_bound_27.y == 0u, 1u);
-        if (!loop_init_19) {
+        if (!loop_init_20) {
             uint _e64 = i_12;
             i_12 = (_e64 + 1u);
         }
-        loop_init_19 = false;
+        loop_init_20 = false;
         uint _e50 = i_12;
         if ((_e50 < places)) {
         } else {
@@ -3364,15 +3367,15 @@ NyqFraction nyq_phi_fraction(uint t_4, uint2 a_15)
             rev_1 = 0u;
             i_13 = 0u;
             uint2 loop_bound_29 = uint2(4294967295u, 4294967295u);
-            bool loop_init_20 = true;
+            bool loop_init_21 = true;
             while(true) {
                 if (all(loop_bound_29 == uint2(0u, 0u))) { break; }
                 loop_bound_29 -= uint2(loop_bound_29.y == 0u, 1u);
-                if (!loop_init_20) {
+                if (!loop_init_21) {
                     uint _e58 = i_13;
                     i_13 = (_e58 + 1u);
                 }
-                loop_init_20 = false;
+                loop_init_21 = false;
                 uint _e47 = i_13;
                 if ((_e47 < run)) {
                 } else {
@@ -3458,15 +3461,15 @@ NyqFraction nyq_permuted_fraction(uint t_5, uint2 a_16, uint2 seed_21)
             scale = 1u;
             i_14 = 0u;
             uint2 loop_bound_31 = uint2(4294967295u, 4294967295u);
-            bool loop_init_21 = true;
+            bool loop_init_22 = true;
             while(true) {
                 if (all(loop_bound_31 == uint2(0u, 0u))) { break; }
                 loop_bound_31 -= uint2(loop_bound_31.y == 0u, 1u);
-                if (!loop_init_21) {
+                if (!loop_init_22) {
                     uint _e89 = i_14;
                     i_14 = (_e89 + 1u);
                 }
-                loop_init_21 = false;
+                loop_init_22 = false;
                 uint _e68 = i_14;
                 if ((_e68 < run_1)) {
                 } else {
@@ -3768,7 +3771,7 @@ int naga_mod(int lhs, int rhs) {
     return lhs - (lhs / divisor) * divisor;
 }
 
-uint nyq_mod_inverse(uint a_23, uint n_7)
+uint nyq_mod_inverse(uint a_23, uint n_6)
 {
     int r0_ = (int)0;
     int r1_ = (int)0;
@@ -3776,8 +3779,8 @@ uint nyq_mod_inverse(uint a_23, uint n_7)
     int t1_ = int(1);
     int m_4 = (int)0;
 
-    r0_ = int(n_7);
-    r1_ = int(naga_mod(a_23, n_7));
+    r0_ = int(n_6);
+    r1_ = int(naga_mod(a_23, n_6));
     uint2 loop_bound_33 = uint2(4294967295u, 4294967295u);
     while(true) {
         if (all(loop_bound_33 == uint2(0u, 0u))) { break; }
@@ -3806,11 +3809,11 @@ uint nyq_mod_inverse(uint a_23, uint n_7)
         }
     }
     int _e27 = t0_;
-    m_4 = naga_mod(_e27, int(n_7));
+    m_4 = naga_mod(_e27, int(n_6));
     int _e31 = m_4;
     if ((_e31 < int(0))) {
         int _e34 = m_4;
-        m_4 = asint(asuint(_e34) + asuint(int(n_7)));
+        m_4 = asint(asuint(_e34) + asuint(int(n_6)));
     }
     int _e37 = m_4;
     return uint(_e37);
@@ -3869,26 +3872,26 @@ NyqHaltonSampler nyq_halton_sampler(uint2 resolution_2, uint spp, uint scramble_
     return nyqhaltonsampler;
 }
 
-uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_8)
+uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_7)
 {
     uint inverse_1 = (uint)0;
     uint index_16 = 0u;
     uint done = 0u;
-    uint k_14 = (uint)0;
+    uint k_15 = (uint)0;
 
     inverse_1 = inverse_in;
     uint2 loop_bound_35 = uint2(4294967295u, 4294967295u);
-    bool loop_init_22 = true;
+    bool loop_init_23 = true;
     while(true) {
         if (all(loop_bound_35 == uint2(0u, 0u))) { break; }
         loop_bound_35 -= uint2(loop_bound_35.y == 0u, 1u);
-        if (!loop_init_22) {
+        if (!loop_init_23) {
             uint _e32 = done;
             done = (_e32 + 1u);
         }
-        loop_init_22 = false;
+        loop_init_23 = false;
         uint _e8 = done;
-        if ((_e8 < n_8)) {
+        if ((_e8 < n_7)) {
         } else {
             break;
         }
@@ -3896,19 +3899,19 @@ uint nyq_inverse_radical_inverse(uint b_13, uint inverse_in, uint n_8)
             uint _e10 = inverse_1;
             if ((_e10 == 0u)) {
                 uint _e13 = done;
-                k_14 = _e13;
+                k_15 = _e13;
                 uint2 loop_bound_36 = uint2(4294967295u, 4294967295u);
-                bool loop_init_23 = true;
+                bool loop_init_24 = true;
                 while(true) {
                     if (all(loop_bound_36 == uint2(0u, 0u))) { break; }
                     loop_bound_36 -= uint2(loop_bound_36.y == 0u, 1u);
-                    if (!loop_init_23) {
-                        uint _e20 = k_14;
-                        k_14 = (_e20 + 1u);
+                    if (!loop_init_24) {
+                        uint _e20 = k_15;
+                        k_15 = (_e20 + 1u);
                     }
-                    loop_init_23 = false;
-                    uint _e15 = k_14;
-                    if ((_e15 < n_8)) {
+                    loop_init_24 = false;
+                    uint _e15 = k_15;
+                    if ((_e15 < n_7)) {
                     } else {
                         break;
                     }
@@ -3998,26 +4001,26 @@ float nyq_halton_sampler_get_1d(inout NyqHaltonSampler s_80)
 float2 nyq_halton_sampler_pair(inout NyqHaltonSampler s_81, uint dim_40)
 {
     float2 v_6 = float2(0.0, 0.0);
-    uint k_15 = 0u;
+    uint k_16 = 0u;
 
     uint2 loop_bound_37 = uint2(4294967295u, 4294967295u);
-    bool loop_init_24 = true;
+    bool loop_init_25 = true;
     while(true) {
         if (all(loop_bound_37 == uint2(0u, 0u))) { break; }
         loop_bound_37 -= uint2(loop_bound_37.y == 0u, 1u);
-        if (!loop_init_24) {
-            uint _e17 = k_15;
-            k_15 = (_e17 + 1u);
+        if (!loop_init_25) {
+            uint _e17 = k_16;
+            k_16 = (_e17 + 1u);
         }
-        loop_init_24 = false;
-        uint _e8 = k_15;
+        loop_init_25 = false;
+        uint _e8 = k_16;
         if ((_e8 < 2u)) {
         } else {
             break;
         }
         {
-            uint _e11 = k_15;
-            uint _e13 = k_15;
+            uint _e11 = k_16;
+            uint _e13 = k_16;
             const float _e15 = nyq_halton_sampler_value(s_81, (dim_40 + _e13));
             v_6[min(uint(_e11), 1u)] = _e15;
         }
@@ -4050,15 +4053,15 @@ NyqCameraSample nyq_halton_sampler_camera_sample(inout NyqHaltonSampler s_84, ui
 
     nyq_halton_sampler_start(s_84, pixel_20, sample_index_18, 5u);
     uint2 loop_bound_38 = uint2(4294967295u, 4294967295u);
-    bool loop_init_25 = true;
+    bool loop_init_26 = true;
     while(true) {
         if (all(loop_bound_38 == uint2(0u, 0u))) { break; }
         loop_bound_38 -= uint2(loop_bound_38.y == 0u, 1u);
-        if (!loop_init_25) {
+        if (!loop_init_26) {
             uint _e25 = d_5;
             d_5 = (_e25 + 1u);
         }
-        loop_init_25 = false;
+        loop_init_26 = false;
         uint _e14 = d_5;
         if ((_e14 < 5u)) {
         } else {
@@ -4191,15 +4194,15 @@ void nyq_owen_sobol_bn_start(inout NyqBlueSampler s_85, uint2 pixel_24, uint sam
     s_85.index = sample_index_19;
     s_85.dim = dim_41;
     uint2 loop_bound_39 = uint2(4294967295u, 4294967295u);
-    bool loop_init_26 = true;
+    bool loop_init_27 = true;
     while(true) {
         if (all(loop_bound_39 == uint2(0u, 0u))) { break; }
         loop_bound_39 -= uint2(loop_bound_39.y == 0u, 1u);
-        if (!loop_init_26) {
+        if (!loop_init_27) {
             uint _e28 = b_14;
             b_14 = (_e28 + 1u);
         }
-        loop_init_26 = false;
+        loop_init_27 = false;
         uint _e9 = b_14;
         if ((_e9 < 2u)) {
         } else {
@@ -4275,15 +4278,15 @@ NyqCameraSample nyq_owen_sobol_bn_camera_sample(inout NyqBlueSampler s_90, uint2
 
     nyq_owen_sobol_bn_start(s_90, pixel_25, sample_index_20, 0u);
     uint2 loop_bound_40 = uint2(4294967295u, 4294967295u);
-    bool loop_init_27 = true;
+    bool loop_init_28 = true;
     while(true) {
         if (all(loop_bound_40 == uint2(0u, 0u))) { break; }
         loop_bound_40 -= uint2(loop_bound_40.y == 0u, 1u);
-        if (!loop_init_27) {
+        if (!loop_init_28) {
             uint _e15 = d_6;
             d_6 = (_e15 + 1u);
         }
-        loop_init_27 = false;
+        loop_init_28 = false;
         uint _e7 = d_6;
         if ((_e7 < 5u)) {
         } else {
@@ -4312,22 +4315,22 @@ uint nyq_pmj02_bn_key(uint entry_2, uint i_15)
     return ((epoch == 0u) ? _e6 : _e11);
 }
 
-uint nyq_pmj02_bn_points(uint k_16, uint i_16)
+uint nyq_pmj02_bn_points(uint k_17, uint i_16)
 {
-    const uint _e6 = nyq_mix32_((k_16 ^ 1397249350u));
+    const uint _e6 = nyq_mix32_((k_17 ^ 1397249350u));
     const uint _e7 = nyq_shuffle_rev((i_16 & 65535u), _e6);
     uint p0_ = (reversebits(_e7) & 65535u);
-    const uint _e15 = nyq_mix32_((k_16 ^ 1397249351u));
+    const uint _e15 = nyq_mix32_((k_17 ^ 1397249351u));
     const uint _e16 = nyq_shuffle_rev((i_16 & 65535u), _e15);
     uint p1_ = (reversebits(_e16) & 65535u);
     return (p0_ | (p1_ << 16u));
 }
 
-float nyq_pmj02_bn_value_at(uint k_17, uint points, uint c_8)
+float nyq_pmj02_bn_value_at(uint k_18, uint points, uint c_8)
 {
     uint point_ = ((points >> (16u * naga_div(c_8, 2u))) & 65535u);
     const uint _e13 = nyq_pmj02_point(NYQ_PMJ02_TABLE_SEED, point_, naga_mod(c_8, 2u));
-    const uint _e14 = nyq_blue_shift(k_17, c_8);
+    const uint _e14 = nyq_blue_shift(k_18, c_8);
     const float _e16 = nyq_fraction_to_f32_((_e13 ^ _e14));
     return _e16;
 }
@@ -4347,15 +4350,15 @@ void nyq_pmj02_bn_start(inout NyqBlueSampler s_91, uint2 pixel_26, uint sample_i
     s_91.index = sample_index_21;
     s_91.dim = dim_43;
     uint2 loop_bound_41 = uint2(4294967295u, 4294967295u);
-    bool loop_init_28 = true;
+    bool loop_init_29 = true;
     while(true) {
         if (all(loop_bound_41 == uint2(0u, 0u))) { break; }
         loop_bound_41 -= uint2(loop_bound_41.y == 0u, 1u);
-        if (!loop_init_28) {
+        if (!loop_init_29) {
             uint _e31 = b_15;
             b_15 = (_e31 + 1u);
         }
-        loop_init_28 = false;
+        loop_init_29 = false;
         uint _e9 = b_15;
         if ((_e9 < 2u)) {
         } else {
@@ -4433,15 +4436,15 @@ NyqCameraSample nyq_pmj02_bn_camera_sample(inout NyqBlueSampler s_96, uint2 pixe
 
     nyq_pmj02_bn_start(s_96, pixel_27, sample_index_22, 0u);
     uint2 loop_bound_42 = uint2(4294967295u, 4294967295u);
-    bool loop_init_29 = true;
+    bool loop_init_30 = true;
     while(true) {
         if (all(loop_bound_42 == uint2(0u, 0u))) { break; }
         loop_bound_42 -= uint2(loop_bound_42.y == 0u, 1u);
-        if (!loop_init_29) {
+        if (!loop_init_30) {
             uint _e15 = d_7;
             d_7 = (_e15 + 1u);
         }
-        loop_init_29 = false;
+        loop_init_30 = false;
         uint _e7 = d_7;
         if ((_e7 < 5u)) {
         } else {
@@ -4496,15 +4499,15 @@ void nyq_lattice_bn_start(inout NyqBlueSampler s_97, uint2 pixel_28, uint sample
     s_97.index = sample_index_23;
     s_97.dim = dim_45;
     uint2 loop_bound_43 = uint2(4294967295u, 4294967295u);
-    bool loop_init_30 = true;
+    bool loop_init_31 = true;
     while(true) {
         if (all(loop_bound_43 == uint2(0u, 0u))) { break; }
         loop_bound_43 -= uint2(loop_bound_43.y == 0u, 1u);
-        if (!loop_init_30) {
+        if (!loop_init_31) {
             uint _e28 = b_16;
             b_16 = (_e28 + 1u);
         }
-        loop_init_30 = false;
+        loop_init_31 = false;
         uint _e9 = b_16;
         if ((_e9 < 2u)) {
         } else {
@@ -4580,15 +4583,15 @@ NyqCameraSample nyq_lattice_bn_camera_sample(inout NyqBlueSampler s_102, uint2 p
 
     nyq_lattice_bn_start(s_102, pixel_29, sample_index_24, 0u);
     uint2 loop_bound_44 = uint2(4294967295u, 4294967295u);
-    bool loop_init_31 = true;
+    bool loop_init_32 = true;
     while(true) {
         if (all(loop_bound_44 == uint2(0u, 0u))) { break; }
         loop_bound_44 -= uint2(loop_bound_44.y == 0u, 1u);
-        if (!loop_init_31) {
+        if (!loop_init_32) {
             uint _e15 = d_8;
             d_8 = (_e15 + 1u);
         }
-        loop_init_31 = false;
+        loop_init_32 = false;
         uint _e7 = d_8;
         if ((_e7 < 5u)) {
         } else {
@@ -4831,15 +4834,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e203 = nyq_job.seed;
             const NyqSobol _e204 = nyq_sobol(_e195, (_e198 != 0u), _e203);
             uint2 loop_bound_45 = uint2(4294967295u, 4294967295u);
-            bool loop_init_32 = true;
+            bool loop_init_33 = true;
             while(true) {
                 if (all(loop_bound_45 == uint2(0u, 0u))) { break; }
                 loop_bound_45 -= uint2(loop_bound_45.y == 0u, 1u);
-                if (!loop_init_32) {
+                if (!loop_init_33) {
                     uint _e232 = k;
                     k = (_e232 + 1u);
                 }
-                loop_init_32 = false;
+                loop_init_33 = false;
                 uint _e207 = k;
                 if ((_e207 < 4u)) {
                 } else {
@@ -4864,15 +4867,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             const NyqOwenSobol _e240 = nyq_owen_sobol(_e236, _e239);
             const float4 _e243 = nyq_owen_sobol_sample_4d(_e240, _e6.z, _e6.w);
             uint2 loop_bound_46 = uint2(4294967295u, 4294967295u);
-            bool loop_init_33 = true;
+            bool loop_init_34 = true;
             while(true) {
                 if (all(loop_bound_46 == uint2(0u, 0u))) { break; }
                 loop_bound_46 -= uint2(loop_bound_46.y == 0u, 1u);
-                if (!loop_init_33) {
+                if (!loop_init_34) {
                     uint _e268 = k_1;
                     k_1 = (_e268 + 1u);
                 }
-                loop_init_33 = false;
+                loop_init_34 = false;
                 uint _e246 = k_1;
                 if ((_e246 < 4u)) {
                 } else {
@@ -4895,15 +4898,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e277 = nyq_job.seed;
             const NyqPmj02_ _e278 = nyq_pmj02_((_e272 != 0u), _e277);
             uint2 loop_bound_47 = uint2(4294967295u, 4294967295u);
-            bool loop_init_34 = true;
+            bool loop_init_35 = true;
             while(true) {
                 if (all(loop_bound_47 == uint2(0u, 0u))) { break; }
                 loop_bound_47 -= uint2(loop_bound_47.y == 0u, 1u);
-                if (!loop_init_34) {
+                if (!loop_init_35) {
                     uint _e306 = k_2;
                     k_2 = (_e306 + 1u);
                 }
-                loop_init_34 = false;
+                loop_init_35 = false;
                 uint _e281 = k_2;
                 if ((_e281 < 4u)) {
                 } else {
@@ -4929,15 +4932,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             const NyqHalton _e317 = nyq_halton(_e310, _e313, _e316);
             uint high_2 = (((_e6.x * 2654435769u) + _e6.y) >> (_e6.y & 31u));
             uint2 loop_bound_48 = uint2(4294967295u, 4294967295u);
-            bool loop_init_35 = true;
+            bool loop_init_36 = true;
             while(true) {
                 if (all(loop_bound_48 == uint2(0u, 0u))) { break; }
                 loop_bound_48 -= uint2(loop_bound_48.y == 0u, 1u);
-                if (!loop_init_35) {
+                if (!loop_init_36) {
                     uint _e351 = k_3;
                     k_3 = (_e351 + 1u);
                 }
-                loop_init_35 = false;
+                loop_init_36 = false;
                 uint _e329 = k_3;
                 if ((_e329 < 8u)) {
                 } else {
@@ -4963,15 +4966,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
             uint2 _e372 = nyq_job.seed;
             const NyqLattice _e373 = nyq_lattice(_e355, _e358, _e361, _e364, (_e367 != 0u), _e372);
             uint2 loop_bound_49 = uint2(4294967295u, 4294967295u);
-            bool loop_init_36 = true;
+            bool loop_init_37 = true;
             while(true) {
                 if (all(loop_bound_49 == uint2(0u, 0u))) { break; }
                 loop_bound_49 -= uint2(loop_bound_49.y == 0u, 1u);
-                if (!loop_init_36) {
+                if (!loop_init_37) {
                     uint _e390 = k_4;
                     k_4 = (_e390 + 1u);
                 }
-                loop_init_36 = false;
+                loop_init_37 = false;
                 uint _e376 = k_4;
                 if ((_e376 < 4u)) {
                 } else {
@@ -4996,15 +4999,15 @@ void nyq_fill(uint3 id : SV_DispatchThreadID)
         }
         default: {
             uint2 loop_bound_50 = uint2(4294967295u, 4294967295u);
-            bool loop_init_37 = true;
+            bool loop_init_38 = true;
             while(true) {
                 if (all(loop_bound_50 == uint2(0u, 0u))) { break; }
                 loop_bound_50 -= uint2(loop_bound_50.y == 0u, 1u);
-                if (!loop_init_37) {
+                if (!loop_init_38) {
                     uint _e433 = k_5;
                     k_5 = (_e433 + 1u);
                 }
-                loop_init_37 = false;
+                loop_init_38 = false;
                 uint _e424 = k_5;
                 if ((_e424 < 8u)) {
                 } else {

@@ -27,16 +27,14 @@ fn nyq_rxs_m_xs(state: u32) -> u32 {
 // Draw `m` of OpenQMC's generator from `seed`: core `hash::lcg_draw`.
 fn nyq_lcg_draw(seed: u32, m: u32) -> u32 {
     var s = 2891336453u + seed;
-    var n = m + 1u;
+    let n = m + 1u;
     var a = 747796405u;
     var c = 2891336453u;
-    while (n != 0u) {
-        if ((n & 1u) != 0u) {
-            s = a * s + c;
-        }
+    // A fixed count (n < 2^18), so a compiler can unroll the loop and fold (a, c) to constants.
+    for (var k = 0u; k < 18u; k++) {
+        s = select(s, a * s + c, ((n >> k) & 1u) != 0u);
         c = (a + 1u) * c;
         a *= a;
-        n >>= 1u;
     }
     return nyq_rxs_m_xs(s);
 }
