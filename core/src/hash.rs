@@ -432,12 +432,19 @@ pub fn permute(i: u32, n: u32, seed: u32) -> u32 {
     Permutation::new(n, seed).apply(i)
 }
 
-/// OpenQMC's generator for its PMJ(0,2) table: the 32-bit LCG `s ← 747796405·s + 2891336453`
-/// with the PCG-RXS-M-XS output (O'Neill 2014; the constants are OpenQMC's `pcg.h`). Draw `m`
-/// of seed `seed` is the output of the state `T^(m+1)(T(0) + seed)`; [`lcg_draw`] jumps there
-/// in three steps of 6-bit windows, so any draw costs three multiply-adds.
+// OpenQMC's generator for its PMJ(0,2) table (`lcg_draw`): the 32-bit LCG
+// `T(s) = LCG_A·s + LCG_C` with the PCG-RXS-M-XS output (O'Neill 2014; the constants are
+// OpenQMC's `pcg.h`).
 const LCG_A: u32 = 747_796_405;
 const LCG_C: u32 = 2_891_336_453;
+
+/// `f ∘ g` for affine maps `(A, C)`, `s ↦ A·s + C`: `g` first.
+const fn lcg_compose(f: (u32, u32), g: (u32, u32)) -> (u32, u32) {
+    (
+        f.0.wrapping_mul(g.0),
+        f.0.wrapping_mul(g.1).wrapping_add(f.1),
+    )
+}
 
 /// `T^(d · 64^w)` as `(A, C)` (`T^n(s) = A·s + C`) for windows `w` 0 … 2 and digits `d`
 /// 0 … 63.
@@ -451,18 +458,10 @@ const fn lcg_windows() -> [[(u32, u32); 64]; 3] {
     while w < 3 {
         let mut d = 1;
         while d < 64 {
-            let (a, c) = t[w][d - 1];
-            t[w][d] = (
-                step.0.wrapping_mul(a),
-                step.0.wrapping_mul(c).wrapping_add(step.1),
-            );
+            t[w][d] = lcg_compose(step, t[w][d - 1]);
             d += 1;
         }
-        let (a, c) = t[w][63];
-        step = (
-            step.0.wrapping_mul(a),
-            step.0.wrapping_mul(c).wrapping_add(step.1),
-        );
+        step = lcg_compose(step, t[w][63]);
         w += 1;
     }
     t
@@ -477,6 +476,13 @@ pub(crate) const fn rxs_m_xs(state: u32) -> u32 {
     s ^ (s >> 22)
 }
 
+/// The generator's state for `seed`, before its first draw: `T(0) + seed`, OpenQMC's
+/// `pcg::init(seed)`.
+#[cfg_attr(not(feature = "small-code"), inline(always))]
+pub(crate) const fn lcg_state(seed: u32) -> u32 {
+    LCG_C.wrapping_add(seed)
+}
+
 /// The generator's next draw: steps `state` once and returns its output.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) const fn lcg_next(state: &mut u32) -> u32 {
@@ -484,10 +490,12 @@ pub(crate) const fn lcg_next(state: &mut u32) -> u32 {
     rxs_m_xs(*state)
 }
 
-/// Draw `m` (`m < 2¹⁸ − 1`) of OpenQMC's generator from seed `seed` (module docs above).
+/// Draw `m` (`m < 2¹⁸ − 1`) of OpenQMC's generator from `seed`: the output of `T^(m+1)`
+/// applied to [`lcg_state`]`(seed)`, what the `(m + 1)`-th call of [`lcg_next`] returns. It
+/// jumps there in three 6-bit windows of `m + 1`, so any draw costs three multiply-adds.
 #[cfg_attr(not(feature = "small-code"), inline(always))]
 pub(crate) const fn lcg_draw(seed: u32, m: u32) -> u32 {
-    let mut s = LCG_C.wrapping_add(seed); // T(0) + seed
+    let mut s = lcg_state(seed);
     let n = m + 1;
     let mut w = 0;
     while w < 3 {
@@ -507,7 +515,7 @@ mod tests {
     /// draws, and draw 2¹⁷ − 1, the last a pmj02 table of 2¹⁶ points takes.
     #[test]
     fn the_lcg_draws_are_openqmcs() {
-        let mut s = LCG_C; // pcg::init(): the state after one step from 0
+        let mut s = lcg_state(0); // pcg::init(): the state after one step from 0
         let first = [
             0x22b6_b6bc,
             0x3bf6_e0b1,
@@ -532,7 +540,7 @@ mod tests {
     #[test]
     fn the_lcg_jump_is_the_stepped_generator() {
         for seed in [0u32, 1, 0x9e37_79b9] {
-            let mut s = LCG_C.wrapping_add(seed);
+            let mut s = lcg_state(seed);
             for m in 0..(1u32 << 18) - 1 {
                 assert_eq!(lcg_draw(seed, m), lcg_next(&mut s), "seed {seed}, draw {m}");
             }

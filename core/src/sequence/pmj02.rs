@@ -17,7 +17,7 @@
 
 use super::Sequence;
 use crate::Error;
-use crate::hash::{hash2, lcg_next};
+use crate::hash::{hash2, lcg_next, lcg_state};
 use crate::math::fraction_to_f32 as to_f32;
 use crate::scramble::{
     lk_hash_premixed, lk_premix, reverse16, reversed_to_f32, scramble_premixed_rev_f32x4,
@@ -68,7 +68,7 @@ const fn construct(seed: u32, out: &mut [[u32; 2]]) {
         return;
     }
     // OpenQMC's generator, drawn in order: two words a point (`lcg_draw` jumps to any one).
-    let mut state = 2_891_336_453u32.wrapping_add(seed);
+    let mut state = lcg_state(seed);
     out[0] = [lcg_next(&mut state), lcg_next(&mut state)];
     let mut level = 0;
     let mut len = 1;
