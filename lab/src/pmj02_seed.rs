@@ -14,7 +14,7 @@
 //! `pmj02-bn`'s randomisation on the [`TRAINING`] integrands at 2 … 32 spp (sample counts
 //! where the leading digits decide the error), and ranks the seeds by [`score`]. A seed chosen
 //! this way fits these integrands: the one that scores best of 0 … 1023 is not better than
-//! the shipped table on integrands neither saw (`docs/blue-noise.md`, "The table's seed"), so
+//! the shipped table on integrands neither saw (`docs/blue-noise.md`, "The table"), so
 //! the shipped table is OpenQMC's, and `cargo run --release -p nyquist-lab --bin pmj02-seed`
 //! prints where it ranks. The training integrands are centred: radial ones, the shape of a pixel filter's
 //! weight or of a light's lobe across a pixel, and half-planes and half-spaces through the
@@ -242,8 +242,15 @@ pub struct Search {
     pub scores: Vec<(u32, f64)>,
     /// Per cell, the RMSE of the mean squared error over the tables.
     pub reference: Vec<[f64; 5]>,
-    /// The best table's RMSE.
-    pub best_rmse: Vec<[f64; 5]>,
+}
+
+impl Search {
+    /// Where a table with RMSE `rmse` on the training integrands stands among the searched
+    /// ones: its [`score`] against the average table, and how many seeds score lower.
+    pub fn standing(&self, rmse: &[[f64; 5]]) -> (f64, usize) {
+        let s = score(rmse, &self.reference);
+        (s, self.scores.iter().filter(|x| x.1 < s).count())
+    }
 }
 
 /// Per cell, the root mean square of several tables' RMSE (`[table][integrand][count]`): the
@@ -282,13 +289,11 @@ pub fn search(seeds: std::ops::Range<u32>, trials: u32) -> Option<Search> {
         .zip(&measured)
         .map(|(&s, r)| (s, score(r, &reference)))
         .collect();
-    let (at, &(best, _)) = scores
+    let &(best, _) = scores
         .iter()
-        .enumerate()
-        .min_by(|a, b| a.1.1.total_cmp(&b.1.1).then(a.1.0.cmp(&b.1.0)))?;
+        .min_by(|a, b| a.1.total_cmp(&b.1).then(a.0.cmp(&b.0)))?;
     Some(Search {
         best,
-        best_rmse: measured[at].clone(),
         scores,
         reference,
     })
@@ -355,8 +360,7 @@ mod tests {
             .zip(found.reference.iter().flatten())
             .filter(|(b, r)| b < r)
             .count();
-        let s = score(&shipped, &found.reference);
-        let rank = found.scores.iter().filter(|x| x.1 < s).count();
+        let (s, rank) = found.standing(&shipped);
         eprintln!("score {s}, better in {better} of 45 cells, {rank} seeds score lower");
         assert!(s < 0.0 && better > 20, "score {s}, {better} of 45 cells");
     }

@@ -317,7 +317,7 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
     let _ = pmj_tables;
 }
 
-/// `pmj02-bn`'s error is its table's (`docs/blue-noise.md`, "The table's seed"), and so is
+/// `pmj02-bn`'s error is its table's (`docs/blue-noise.md`, "The table"), and so is
 /// OpenQMC's `pmjbn`'s. This measures OpenQMC's table under `pmj02-bn`'s randomisation
 /// beside the tables of seeds `0 .. tables` of the same construction
 /// (`nyquist_lab::pmj02_seed::rmse`, the same pixels for every table), on the integrands of
@@ -326,7 +326,7 @@ pub fn run(size: u32, frame: u32, images: Option<&std::path::Path>, pmj_tables: 
 #[cfg(peer_openqmc)]
 fn print_pmj_tables(tables: u32) {
     use nyquist::sequence::PMJ02_TABLE_SEED;
-    use nyquist_lab::pmj02_seed::{COUNTS, TRIALS, held_out, rmse, score, search, table, training};
+    use nyquist_lab::pmj02_seed::{COUNTS, TRIALS, held_out, rmse, search, table, training};
     use std::convert::Infallible;
     let integrands: Vec<(&str, BlockIntegrand, f64)> = held_out()
         .into_iter()
@@ -374,12 +374,8 @@ fn print_pmj_tables(tables: u32) {
     // The same tables on the integrands the seed was chosen by (`pmj02-seed`'s score: the sum
     // of log RMSE ratios to the average table, lower is better).
     let search = search(0..tables, TRIALS).expect("a non-empty range of seeds");
-    let theirs_score = score(&rmse(&theirs, &training(), TRIALS), &search.reference);
-    let below = search.scores.iter().filter(|s| s.1 < theirs_score).count();
-    let shipped_score = score(
-        &rmse(&shipped_table, &training(), TRIALS),
-        &search.reference,
-    );
+    let (theirs_score, below) = search.standing(&rmse(&theirs, &training(), TRIALS));
+    let (shipped_score, _) = search.standing(&rmse(&shipped_table, &training(), TRIALS));
     println!(
         "On pmj02-seed's training integrands: the shipped table scores {shipped_score:.2}, \
          OpenQMC's {theirs_score:.2}; {below} of the {tables} tables score lower.\n"

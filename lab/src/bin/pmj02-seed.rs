@@ -4,8 +4,7 @@
 
 use nyquist::sequence::PMJ02_TABLE_SEED;
 use nyquist_lab::pmj02_seed::{
-    COUNTS, SEEDS, TRAINING, TRIALS, held_out, rmse, root_mean_square, score, search, table,
-    training,
+    COUNTS, SEEDS, TRAINING, TRIALS, held_out, rmse, root_mean_square, search, table, training,
 };
 use std::process::ExitCode;
 
@@ -26,8 +25,7 @@ fn main() -> ExitCode {
         eprintln!("pmj02-seed: seed {seed:>4}: score {s:.2}");
     }
     let shipped = rmse(&table(PMJ02_TABLE_SEED), &training(), TRIALS);
-    let s = score(&shipped, &found.reference);
-    let lower = found.scores.iter().filter(|x| x.1 < s).count();
+    let (s, lower) = found.standing(&shipped);
     eprintln!(
         "pmj02-seed: the shipped table (seed {PMJ02_TABLE_SEED}): score {s:.2}, {lower} seeds lower"
     );
