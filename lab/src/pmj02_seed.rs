@@ -363,6 +363,14 @@ mod tests {
         let (s, rank) = found.standing(&shipped);
         eprintln!("score {s}, better in {better} of 45 cells, {rank} seeds score lower");
         assert!(s < 0.0 && better > 20, "score {s}, {better} of 45 cells");
+        // The best seed's own table stands first, at the score the search gave it.
+        let best = rmse(&table(found.best), &training(), TRIALS);
+        let (b, lower) = found.standing(&best);
+        assert_eq!(lower, 0);
+        assert_eq!(
+            Some(b),
+            found.scores.iter().find(|x| x.0 == found.best).map(|x| x.1)
+        );
     }
 
     /// The RMSE falls with the count (the table's prefixes are nets), and a table whose
