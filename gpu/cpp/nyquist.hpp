@@ -39,8 +39,9 @@
 // regenerates them): the caller passes a pointer to one, from the C API's `nyq_blue_tile`.
 //
 // Sources are named at each function (Joe & Kuo 2008; Burley 2020; Laine & Karras 2011 with
-// Vegdahl's 2021 constants; Owen 1995; SplitMix64; Wellons' lowbias32; wyrand; PCG32; Ahmed &
-// Wonka 2020; Kensler 2013; Roberts 2018; Korobov 1959). The code is this project's own.
+// Vegdahl's 2021 constants; Owen 1995; SplitMix64; Wellons' lowbias32; O'Neill 2014 (PCG32,
+// PCG-RXS-M-XS); Ahmed & Wonka 2020; Kensler 2013; Roberts 2018; Korobov 1959). The code is
+// this project's own.
 #ifndef NYQUIST_HPP
 #define NYQUIST_HPP
 
@@ -1348,13 +1349,6 @@ NYQ_HD constexpr std::uint64_t hash_slice(const std::uint64_t* values, std::uint
     std::uint64_t h = kGolden;
     for (std::uint32_t i = 0; i < n; ++i) h = hash2(h, values[i]);
     return h;
-}
-
-/// Word `i` of the WyRand stream of `seed` (Wang Yi's wyhash v4 generator, by index).
-NYQ_HD inline std::uint64_t wyrand(std::uint64_t seed, std::uint64_t i) {
-    const std::uint64_t s = seed + 0xa0761d6478bd642full * (i + 1);
-    const detail::U128 t = detail::mul_wide(s, s ^ 0xe7037ed1a0b428dbull);
-    return t.hi ^ t.lo;
 }
 
 /// A hash's top 24 bits as a float in [0, 1) (exact).
@@ -3051,10 +3045,10 @@ NYQ_HD inline std::uint32_t rxs_m_xs(std::uint32_t s) {
 /// (a, c) -> (a a, (a + 1) c) doubles it, so no table is read on the device. Core
 /// `hash::lcg_draw` (which jumps through a table of windows; the draws are the same).
 NYQ_HD inline std::uint32_t lcg_draw(std::uint32_t seed, std::uint32_t m) {
-    std::uint32_t s = 2891336453u + seed;
+    constexpr std::uint32_t kA = 747796405u, kC = 2891336453u;
+    std::uint32_t s = kC + seed;  // pcg::init(seed): T(0) + seed
     const std::uint32_t n = m + 1;
-    std::uint32_t a = 747796405u;
-    std::uint32_t c = 2891336453u;
+    std::uint32_t a = kA, c = kC;
     // A fixed count (n < 2^18), so a compiler can unroll the loop and fold (a, c) to constants.
     for (std::uint32_t k = 0; k < 18; ++k) {
         s = ((n >> k) & 1u) ? a * s + c : s;

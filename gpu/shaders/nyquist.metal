@@ -230,6 +230,8 @@ constant uint NYQ_CENTERED = 1u;
 constant metal::uint2 NYQ_DIM_STEP = metal::uint2(2135587861u, 2654435769u);
 constant metal::uint2 NYQ_JITTER_STEP = metal::uint2(668265295u, 3266489917u);
 constant uint NYQ_PMJ02_TABLE_SEED = 0u;
+constant uint NYQ_LCG_A = 747796405u;
+constant uint NYQ_LCG_C = 2891336453u;
 constant type_24 NYQ_PMJ02_XOR_X = type_24 {{0u, 0u, 2u, 6u, 6u, 14u, 54u, 78u, 22u, 46u, 630u, 1742u, 1814u, 3118u, 12406u, 16590u}};
 constant type_24 NYQ_PMJ02_XOR_Y = type_24 {{0u, 1u, 3u, 3u, 7u, 27u, 39u, 11u, 23u, 315u, 871u, 907u, 1559u, 6203u, 8295u, 139u}};
 constant uint NYQ_HALTON_WORDS = 24u;
@@ -2698,10 +2700,10 @@ uint nyq_lcg_draw(
     uint m_1
 ) {
     uint s_66 = {};
-    uint a_8 = 747796405u;
-    uint c_3 = 2891336453u;
+    uint a_8 = NYQ_LCG_A;
+    uint c_3 = NYQ_LCG_C;
     uint k_10 = 0u;
-    s_66 = 2891336453u + seed_17;
+    s_66 = NYQ_LCG_C + seed_17;
     uint n_12 = m_1 + 1u;
     uint2 loop_bound_22 = uint2(4294967295u);
     bool loop_init_17 = true;

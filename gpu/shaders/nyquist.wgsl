@@ -1404,6 +1404,10 @@ const NYQ_PMJ02_TABLE_SEED = 0u;
 // doubles it, so no table is read (a constant array indexed at run time is copied per call on
 // some drivers). The core jumps through a table of windows instead; the draws are the same.
 
+// The LCG's multiplier and increment (OpenQMC's pcg.h; core `hash::LCG_A`, `LCG_C`).
+const NYQ_LCG_A = 747796405u;
+const NYQ_LCG_C = 2891336453u;
+
 // The PCG-RXS-M-XS output of an LCG state (core `hash::rxs_m_xs`).
 fn nyq_rxs_m_xs(state: u32) -> u32 {
     var s = state;
@@ -1414,10 +1418,10 @@ fn nyq_rxs_m_xs(state: u32) -> u32 {
 
 // Draw `m` of OpenQMC's generator from `seed`: core `hash::lcg_draw`.
 fn nyq_lcg_draw(seed: u32, m: u32) -> u32 {
-    var s = 2891336453u + seed;
+    var s = NYQ_LCG_C + seed; // pcg::init(seed): T(0) + seed
     let n = m + 1u;
-    var a = 747796405u;
-    var c = 2891336453u;
+    var a = NYQ_LCG_A;
+    var c = NYQ_LCG_C;
     // A fixed count (n < 2^18), so a compiler can unroll the loop and fold (a, c) to constants.
     for (var k = 0u; k < 18u; k++) {
         s = select(s, a * s + c, ((n >> k) & 1u) != 0u);
