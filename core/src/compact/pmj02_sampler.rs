@@ -58,8 +58,8 @@ pub(crate) fn pmj02_point(seed: u32, index: u32, dim: usize) -> u32 {
 /// [`PMJ02_TABLE_SEED`](crate::sequence::PMJ02_TABLE_SEED)); this one rebuilds each point it
 /// needs by running that construction backwards from the point (Helmer, Christensen & Kensler
 /// 2021, "Stochastic Generation of (t, s) Sample Sequences"): at most 17 generator draws
-/// (three multiply-adds each) per coordinate instead of a table read. The keys, shuffles and scrambles are the desktop
-/// sampler's own. Allocates: no.
+/// (three multiply-adds each) per coordinate instead of a table read. The keys, shuffles and
+/// scrambles are the desktop sampler's own. Allocates: no.
 ///
 /// ```
 /// use nyquist::{compact, sampler::{self, Sampler}};
